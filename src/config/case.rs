@@ -1,0 +1,343 @@
+//! The case file: every input of the model, as the user writes it in TOML.
+//!
+//! Field names carry their unit (`_mm`, `_hz`, `_nm`, ...). Geometry is given in the
+//! millimetres engineers use; everything is converted to SI when the model objects are
+//! built (`geometry::GearPair::from_case`, ...). The defaults are the paper's case
+//! (Coatings 2022, 12, 1250, Tables 1-2 and section 4) with the readings of
+//! `shared/spec/NOTES.md`; each default that the paper does not give says so.
+
+use serde::{Deserialize, Serialize};
+
+/// A whole case. `Default` is the paper's case.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Case {
+    pub gear: GearSection,
+    pub materials: MaterialsSection,
+    pub operating: OperatingSection,
+    pub lubricant: LubricantSection,
+    pub surface: SurfaceSection,
+    pub dynamics: DynamicsSection,
+    pub stiffness: StiffnessSection,
+    pub contact: ContactSection,
+    pub friction: FrictionSection,
+    pub wear: WearSection,
+    pub numerics: NumericsSection,
+}
+
+/// Involute spur pair (paper Table 1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GearSection {
+    pub module_mm: f64,
+    pub teeth_pinion: i64,
+    pub teeth_gear: i64,
+    pub pressure_angle_deg: f64,
+    pub addendum_coefficient: f64,
+    pub dedendum_coefficient: f64,
+    pub profile_shift_pinion: f64,
+    pub profile_shift_gear: f64,
+    pub face_width_mm: f64,
+    /// Operating centre distance; absent means the one the profile shifts give.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub centre_distance_mm: Option<f64>,
+    pub hub_bore_radius_pinion_mm: f64,
+    pub hub_bore_radius_gear_mm: f64,
+    pub tool_tip_radius_coefficient: f64,
+}
+
+impl Default for GearSection {
+    fn default() -> Self {
+        Self {
+            module_mm: 2.0,
+            teeth_pinion: 19,
+            teeth_gear: 31,
+            pressure_angle_deg: 20.0,
+            addendum_coefficient: 1.0,
+            dedendum_coefficient: 1.25,
+            profile_shift_pinion: 0.0,
+            profile_shift_gear: 0.0,
+            face_width_mm: 20.0,
+            centre_distance_mm: None,
+            // Not in the paper: h_f = r_f / r_int ~ 2, mid-range of Sainsot's fit.
+            hub_bore_radius_pinion_mm: 8.0,
+            hub_bore_radius_gear_mm: 14.0,
+            // ISO 53 profile A rack tip radius 0.38 m.
+            tool_tip_radius_coefficient: 0.38,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MaterialsSection {
+    pub youngs_modulus_pinion_gpa: f64,
+    pub poisson_ratio_pinion: f64,
+    pub youngs_modulus_gear_gpa: f64,
+    pub poisson_ratio_gear: f64,
+}
+
+impl Default for MaterialsSection {
+    fn default() -> Self {
+        Self {
+            youngs_modulus_pinion_gpa: 205.0,
+            poisson_ratio_pinion: 0.3,
+            youngs_modulus_gear_gpa: 205.0,
+            poisson_ratio_gear: 0.3,
+        }
+    }
+}
+
+/// Which shaft the load torque is referred to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TorqueShaft {
+    Pinion,
+    Gear,
+}
+
+/// How the drivetrain's free rotation is held (NOTES.md, "rigid-body rotation mode").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpeedBoundary {
+    /// Motor angle imposed, theta_m = Omega t; brake torque constant.
+    MotorSpeedImposed,
+    /// Brake angle imposed; motor torque constant.
+    BrakeSpeedImposed,
+    /// Motor torque = mean torque + slip damping (Omega - dtheta_m/dt); brake torque constant.
+    MotorSlip,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OperatingSection {
+    pub input_speed_hz: f64,
+    pub load_torque_nm: f64,
+    pub load_torque_shaft: TorqueShaft,
+    pub speed_boundary: SpeedBoundary,
+    pub motor_slip_damping_nm_s_per_rad: f64,
+}
+
+impl Default for OperatingSection {
+    fn default() -> Self {
+        Self {
+            input_speed_hz: 30.0,
+            load_torque_nm: 60.0,
+            // NOTES.md: the paper's 3311 N mean force matches 60 N m / r_pb.
+            load_torque_shaft: TorqueShaft::Pinion,
+            speed_boundary: SpeedBoundary::MotorSpeedImposed,
+            motor_slip_damping_nm_s_per_rad: 50.0,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct LubricantSection {
+    /// Inlet absolute viscosity, centipoise (mPa s). Not in the paper.
+    pub viscosity_cp: f64,
+}
+
+impl Default for LubricantSection {
+    fn default() -> Self {
+        // ISO VG 100 mineral oil near 60 degC; the paper gives none.
+        Self { viscosity_cp: 40.0 }
+    }
+}
+
+/// Composite RMS roughness as a function of the maximum pinion wear depth (paper 4.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SurfaceSection {
+    /// Maximum pinion wear depth at the table points, um (ascending).
+    pub roughness_table_wear_um: Vec<f64>,
+    /// Composite RMS roughness at those points, um.
+    pub roughness_table_rms_um: Vec<f64>,
+}
+
+impl Default for SurfaceSection {
+    fn default() -> Self {
+        // The paper's 2.1 / 1.9 / 1.5 um read as 0.21 / 0.19 / 0.15 um with R in metres
+        // (NOTES.md, friction): the reading under which the paper's "slight" decrease holds.
+        Self {
+            roughness_table_wear_um: vec![0.1, 0.5, 1.0],
+            roughness_table_rms_um: vec![0.21, 0.19, 0.15],
+        }
+    }
+}
+
+/// Lumped parameters of paper Table 2 (units corrected as NOTES.md says).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DynamicsSection {
+    pub mass_pinion_kg: f64,
+    pub mass_gear_kg: f64,
+    pub inertia_pinion_kg_m2: f64,
+    pub inertia_gear_kg_m2: f64,
+    pub inertia_motor_kg_m2: f64,
+    pub inertia_brake_kg_m2: f64,
+    pub bearing_stiffness_pinion_n_per_m: f64,
+    pub bearing_stiffness_gear_n_per_m: f64,
+    pub bearing_damping_pinion_n_s_per_m: f64,
+    pub bearing_damping_gear_n_s_per_m: f64,
+    pub coupling_stiffness_motor_nm_per_rad: f64,
+    pub coupling_stiffness_brake_nm_per_rad: f64,
+    pub coupling_damping_motor_nm_s_per_rad: f64,
+    pub coupling_damping_brake_nm_s_per_rad: f64,
+    /// Mesh damping ratio zeta: c_m = 2 zeta sqrt(k_mean m_e). Not in the paper.
+    pub mesh_damping_ratio: f64,
+}
+
+impl Default for DynamicsSection {
+    fn default() -> Self {
+        Self {
+            mass_pinion_kg: 0.7,
+            mass_gear_kg: 1.822,
+            inertia_pinion_kg_m2: 2.331e-4,
+            inertia_gear_kg_m2: 1.392e-3,
+            inertia_motor_kg_m2: 2.1e-3,
+            inertia_brake_kg_m2: 1.05e-2,
+            bearing_stiffness_pinion_n_per_m: 5e8,
+            bearing_stiffness_gear_n_per_m: 5e8,
+            bearing_damping_pinion_n_s_per_m: 4e5,
+            bearing_damping_gear_n_s_per_m: 4e5,
+            coupling_stiffness_motor_nm_per_rad: 4e7,
+            coupling_stiffness_brake_nm_per_rad: 4e7,
+            coupling_damping_motor_nm_s_per_rad: 3e4,
+            coupling_damping_brake_nm_s_per_rad: 3e4,
+            mesh_damping_ratio: 0.05,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct StiffnessSection {
+    /// Include the Sainsot et al. (2004) fillet-foundation compliance.
+    pub fillet_foundation: bool,
+    /// Samples of the mesh-stiffness table over one mesh period.
+    pub table_points_per_mesh_period: i64,
+}
+
+impl Default for StiffnessSection {
+    fn default() -> Self {
+        Self {
+            fillet_foundation: true,
+            table_points_per_mesh_period: 400,
+        }
+    }
+}
+
+/// How the mesh force is split between two pairs in contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LoadSharingModel {
+    /// Paper eq. (7): Pedrero's piecewise-linear 1/3 - 2/3 law.
+    Pedrero,
+    /// Each pair's stiffness times its own deflection (gap from wear included).
+    Stiffness,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ContactSection {
+    pub load_sharing: LoadSharingModel,
+}
+
+impl Default for ContactSection {
+    fn default() -> Self {
+        Self {
+            load_sharing: LoadSharingModel::Pedrero,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FrictionModel {
+    /// Xu, Kahraman, Anderson & Maddock (2007), paper eq. (8-9).
+    Xu2007,
+    Constant,
+    None,
+}
+
+/// Unit in which the radius of curvature enters Xu's regression (NOTES.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LengthUnit {
+    M,
+    Mm,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FrictionSection {
+    pub model: FrictionModel,
+    /// Used by `model = "constant"`.
+    pub constant_coefficient: f64,
+    pub xu_radius_unit: LengthUnit,
+    /// Sliding speed over which the friction direction turns (tanh smoothing), m/s.
+    pub direction_smoothing_m_per_s: f64,
+}
+
+impl Default for FrictionSection {
+    fn default() -> Self {
+        Self {
+            model: FrictionModel::Xu2007,
+            constant_coefficient: 0.05,
+            xu_radius_unit: LengthUnit::M,
+            direction_smoothing_m_per_s: 0.01,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WearSection {
+    /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (NOTES.md).
+    pub coefficient_m2_per_n: f64,
+    /// Cycles m the per-cycle wear is held for (paper eq. 17).
+    pub block_cycles: f64,
+    /// Largest wear depth one block may add anywhere, um (paper's epsilon^m).
+    pub threshold_um: f64,
+    /// Pinion load cycles (revolutions) to simulate.
+    pub total_cycles: f64,
+    /// Points on each active profile.
+    pub points_per_profile: i64,
+}
+
+impl Default for WearSection {
+    fn default() -> Self {
+        Self {
+            coefficient_m2_per_n: 2.5e-16,
+            block_cycles: 1e4,
+            threshold_um: 0.5,
+            total_cycles: 4e4,
+            points_per_profile: 101,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct NumericsSection {
+    /// Integration steps per mesh period (fixed, aligned with the mesh events).
+    pub steps_per_mesh_period: i64,
+    /// Give up on steady state after this many mesh periods.
+    pub max_mesh_periods: i64,
+    /// Steady state: relative change of the state over one mesh period below this.
+    pub steady_state_tolerance: f64,
+    /// Mesh periods recorded once steady (signals, spectra).
+    pub evaluated_mesh_periods: i64,
+}
+
+impl Default for NumericsSection {
+    fn default() -> Self {
+        Self {
+            steps_per_mesh_period: 200,
+            max_mesh_periods: 2000,
+            steady_state_tolerance: 1e-6,
+            evaluated_mesh_periods: 16,
+        }
+    }
+}

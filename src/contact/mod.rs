@@ -1,0 +1,1 @@
+//! Contact mechanics: load sharing, Hertz, kinematics, friction.

@@ -1,0 +1,362 @@
+//! The involute spur pair: radii, operating pressure angle, path of contact, contact
+//! ratio, and the mappings between pinion rotation and position on the line of action.
+//!
+//! Positions on the line of action (LOA) are measured as the pinion's radius of
+//! curvature `rho1` (m): the distance from the pinion's tangency point N1. The gear's
+//! radius of curvature at the same contact is `rho2 = N1N2 - rho1` (paper eq. 4:
+//! r_gi = L - r_pi, with L = N1N2 = (r_pb + r_gb) tan(alpha_w)).
+//! Sources: ISO 21771 (cylindrical gear geometry); Litvin & Fuentes, *Gear Geometry and
+//! Applied Theory* (2004), ch. 10.
+
+use super::involute::{inv, inv_inverse};
+use crate::config::case::GearSection;
+use std::f64::consts::PI;
+
+/// One gear of the pair (SI units).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gear {
+    pub teeth: usize,
+    pub profile_shift: f64,
+    /// Reference (pitch) radius r = m z / 2, m.
+    pub pitch_radius_m: f64,
+    /// Base radius r_b = r cos(alpha), m.
+    pub base_radius_m: f64,
+    /// Tip radius r_a = r + m (h_a* + x), m.
+    pub tip_radius_m: f64,
+    /// Root radius r_f = r - m (h_f* - x), m.
+    pub root_radius_m: f64,
+    /// Half the angular tooth thickness at the base circle, rad:
+    /// alpha_2 = pi/(2z) + 2 x tan(alpha)/z + inv(alpha).
+    pub half_base_angle_rad: f64,
+    /// Radius of curvature of the lowest generated involute point (rack-cutter limit), m;
+    /// negative means undercut.
+    pub form_rho_m: f64,
+    /// Hub bore radius, m.
+    pub bore_radius_m: f64,
+}
+
+impl Gear {
+    /// Radius at a point of the involute with radius of curvature rho, m.
+    pub fn radius_at_rho(&self, rho_m: f64) -> f64 {
+        self.base_radius_m.hypot(rho_m)
+    }
+
+    /// Radius of curvature at the tip, m.
+    pub fn tip_rho_m(&self) -> f64 {
+        (self.tip_radius_m.powi(2) - self.base_radius_m.powi(2))
+            .max(0.0)
+            .sqrt()
+    }
+
+    /// Tooth thickness (arc) at radius r, m (ISO 21771):
+    /// s(r) = 2 r (alpha_2 - inv(alpha_r)), cos(alpha_r) = r_b / r.
+    pub fn thickness_at_radius_m(&self, r_m: f64) -> f64 {
+        let a = (self.base_radius_m / r_m).clamp(-1.0, 1.0).acos();
+        2.0 * r_m * (self.half_base_angle_rad - inv(a))
+    }
+}
+
+/// A meshing involute spur pair. Build with [`GearPair::from_case`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearPair {
+    pub module_m: f64,
+    pub pressure_angle_rad: f64,
+    pub face_width_m: f64,
+    pub pinion: Gear,
+    pub gear: Gear,
+    /// Operating centre distance a_w, m.
+    pub centre_distance_m: f64,
+    /// Operating pressure angle alpha_w, rad.
+    pub operating_pressure_angle_rad: f64,
+    /// Length N1N2 of the line of action between the tangency points, m.
+    pub loa_length_m: f64,
+    /// rho1 where contact starts (gear tip meets pinion flank, point A), m.
+    pub rho_start_m: f64,
+    /// rho1 where contact ends (pinion tip, point E), m.
+    pub rho_end_m: f64,
+    /// rho1 at the pitch point, r_b1 tan(alpha_w), m.
+    pub rho_pitch_m: f64,
+    /// Base pitch p_b = 2 pi r_b1 / z1, m.
+    pub base_pitch_m: f64,
+    /// Transverse contact ratio epsilon_alpha = (rho_end - rho_start) / p_b.
+    pub contact_ratio: f64,
+    /// Non-fatal findings (undercut, thin tips).
+    pub warnings: Vec<String>,
+}
+
+/// Geometry that cannot mesh.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GeometryError(pub Vec<String>);
+
+impl GearPair {
+    /// Build the pair from the case's `[gear]` section (lengths in mm there).
+    pub fn from_case(g: &GearSection) -> Result<Self, GeometryError> {
+        let mm = 1e-3;
+        let m = g.module_mm * mm;
+        let alpha = g.pressure_angle_deg.to_radians();
+        let z1 = g.teeth_pinion as f64;
+        let z2 = g.teeth_gear as f64;
+        let (x1, x2) = (g.profile_shift_pinion, g.profile_shift_gear);
+        let mut errors = Vec::new();
+        let mut warnings = Vec::new();
+
+        let make = |z: f64, x: f64, bore_mm: f64| -> Gear {
+            let r = m * z / 2.0;
+            let rb = r * alpha.cos();
+            // Lowest involute point the rack cutter generates (ISO 21771): the straight
+            // part of the rack flank ends (h_f* - rho_f*(1 - sin alpha)) m below the datum.
+            let h_straight = g.dedendum_coefficient - g.tool_tip_radius_coefficient * (1.0 - alpha.sin());
+            Gear {
+                teeth: z as usize,
+                profile_shift: x,
+                pitch_radius_m: r,
+                base_radius_m: rb,
+                tip_radius_m: r + m * (g.addendum_coefficient + x),
+                root_radius_m: r - m * (g.dedendum_coefficient - x),
+                half_base_angle_rad: PI / (2.0 * z) + 2.0 * x * alpha.tan() / z + inv(alpha),
+                form_rho_m: r * alpha.sin() - (h_straight - x) * m / alpha.sin(),
+                bore_radius_m: bore_mm * mm,
+            }
+        };
+        let pinion = make(z1, x1, g.hub_bore_radius_pinion_mm);
+        let gear = make(z2, x2, g.hub_bore_radius_gear_mm);
+
+        // Operating pressure angle: from the shifts (zero backlash) or from a given centre distance.
+        let rb_sum = pinion.base_radius_m + gear.base_radius_m;
+        let (alpha_w, a_w) = match g.centre_distance_mm {
+            None => {
+                let aw = inv_inverse(inv(alpha) + 2.0 * alpha.tan() * (x1 + x2) / (z1 + z2));
+                (aw, rb_sum / aw.cos())
+            }
+            Some(a_mm) => {
+                let a = a_mm * mm;
+                if a <= rb_sum {
+                    errors.push(format!(
+                        "`gear.centre_distance_mm` = {a_mm} is invalid: it must exceed the sum of the base radii, {:.4} mm",
+                        rb_sum / mm
+                    ));
+                    (alpha, rb_sum / alpha.cos())
+                } else {
+                    ((rb_sum / a).acos(), a)
+                }
+            }
+        };
+        let loa = a_w * alpha_w.sin();
+        let rho_end = pinion.tip_rho_m();
+        let rho_start = loa - gear.tip_rho_m();
+        let base_pitch = 2.0 * PI * pinion.base_radius_m / z1;
+        let rho_pitch = pinion.base_radius_m * alpha_w.tan();
+        let eps = (rho_end - rho_start) / base_pitch;
+
+        for (name, gr) in [("pinion", &pinion), ("gear", &gear)] {
+            let s_tip = gr.thickness_at_radius_m(gr.tip_radius_m);
+            if s_tip <= 0.0 {
+                errors.push(format!(
+                    "the {name}'s teeth are pointed (tip thickness {:.3} mm <= 0): reduce its profile shift or the addendum coefficient",
+                    s_tip / mm
+                ));
+            } else if s_tip < 0.2 * m {
+                warnings.push(format!(
+                    "the {name}'s tip is thin: {:.3} mm < 0.2 m",
+                    s_tip / mm
+                ));
+            }
+            if gr.form_rho_m < 0.0 {
+                warnings.push(format!(
+                    "the {name} is undercut by the generating rack (lowest involute point {:.3} mm below the base circle's tangency): the model keeps the involute-to-root beam of the uncut tooth",
+                    -gr.form_rho_m / mm
+                ));
+            }
+        }
+        // Tip interference: each tip must meet the mate inside its generated involute.
+        let pin_limit = pinion.form_rho_m.max(0.0);
+        if rho_start < pin_limit {
+            errors.push(format!(
+                "tip interference: the gear tip meets the pinion at rho1 = {:.3} mm, below the pinion's lowest involute point {:.3} mm (check profile shifts, addendum coefficient, centre distance)",
+                rho_start / mm,
+                pin_limit / mm
+            ));
+        }
+        let gear_limit = gear.form_rho_m.max(0.0);
+        if loa - rho_end < gear_limit {
+            errors.push(format!(
+                "tip interference: the pinion tip meets the gear at rho2 = {:.3} mm, below the gear's lowest involute point {:.3} mm",
+                (loa - rho_end) / mm,
+                gear_limit / mm
+            ));
+        }
+        if eps < 1.0 {
+            errors.push(format!(
+                "contact ratio {eps:.4} is below 1: the pair cannot mesh continuously (raise the addendum coefficient or the numbers of teeth)"
+            ));
+        }
+        if !errors.is_empty() {
+            return Err(GeometryError(errors));
+        }
+        Ok(Self {
+            module_m: m,
+            pressure_angle_rad: alpha,
+            face_width_m: g.face_width_mm * mm,
+            pinion,
+            gear,
+            centre_distance_m: a_w,
+            operating_pressure_angle_rad: alpha_w,
+            loa_length_m: loa,
+            rho_start_m: rho_start,
+            rho_end_m: rho_end,
+            rho_pitch_m: rho_pitch,
+            base_pitch_m: base_pitch,
+            contact_ratio: eps,
+            warnings,
+        })
+    }
+
+    /// Mesh period in pinion rotation, rad: 2 pi / z1.
+    pub fn mesh_angle_rad(&self) -> f64 {
+        2.0 * PI / self.pinion.teeth as f64
+    }
+
+    /// Gear ratio z2 / z1.
+    pub fn ratio(&self) -> f64 {
+        self.gear.teeth as f64 / self.pinion.teeth as f64
+    }
+
+    /// Gear's radius of curvature at the contact where the pinion's is rho1, m.
+    pub fn rho_gear(&self, rho1_m: f64) -> f64 {
+        self.loa_length_m - rho1_m
+    }
+
+    /// Length of the path of contact, m.
+    pub fn path_length_m(&self) -> f64 {
+        self.rho_end_m - self.rho_start_m
+    }
+
+    /// Largest number of pairs that can be in contact at once: ceil(epsilon).
+    pub fn max_pairs(&self) -> usize {
+        self.contact_ratio.ceil() as usize
+    }
+
+    /// Positions rho1 (m) of the pairs in contact at mesh phase `phase_rad` (pinion
+    /// rotation since the pair 0 entered contact at A, reduced to one mesh period).
+    ///
+    /// Pair k entered contact k mesh periods earlier: rho1 = rho_A + r_b1 phase + k p_b.
+    /// Returns (k, rho1) for every pair with rho1 <= rho_E.
+    pub fn pairs_in_contact(&self, phase_rad: f64) -> impl Iterator<Item = (usize, f64)> + '_ {
+        let phase = phase_rad.rem_euclid(self.mesh_angle_rad());
+        let rho0 = self.rho_start_m + self.pinion.base_radius_m * phase;
+        (0..self.max_pairs())
+            .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
+            .filter(move |(_, r)| *r <= self.rho_end_m + 1e-15)
+    }
+
+    /// Pinion roll angle (rad) at LOA position rho1: rho1 / r_b1.
+    pub fn pinion_roll_angle(&self, rho1_m: f64) -> f64 {
+        rho1_m / self.pinion.base_radius_m
+    }
+
+    /// Mesh-phase boundaries inside one period where the number of pairs changes,
+    /// rad of pinion rotation: [0, (eps - floor(eps)) * period].
+    pub fn contact_change_phases(&self) -> Vec<f64> {
+        let period = self.mesh_angle_rad();
+        let frac = self.contact_ratio - self.contact_ratio.floor();
+        let mut v = vec![0.0];
+        if frac > 1e-12 {
+            v.push(frac * period);
+        }
+        v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn paper() -> GearPair {
+        GearPair::from_case(&GearSection::default()).expect("paper pair is valid")
+    }
+
+    #[test]
+    fn paper_pair_matches_hand_values() {
+        // NOTES.md hand-derived values, quoted to 3 decimals (mm), 4 for the contact ratio.
+        let p = paper();
+        let mm = 1e3;
+        assert!((p.pinion.base_radius_m * mm - 17.854).abs() < 5e-4);
+        assert!((p.gear.base_radius_m * mm - 29.130).abs() < 5e-4);
+        assert!((p.pinion.tip_radius_m * mm - 21.0).abs() < 1e-9);
+        assert!((p.gear.tip_radius_m * mm - 33.0).abs() < 1e-9);
+        assert!((p.pinion.root_radius_m * mm - 16.5).abs() < 1e-9);
+        assert!((p.gear.root_radius_m * mm - 28.5).abs() < 1e-9);
+        assert!((p.centre_distance_m * mm - 50.0).abs() < 1e-9);
+        assert!((p.contact_ratio - 1.6022).abs() < 5e-4, "{}", p.contact_ratio);
+        assert!(p.pinion.root_radius_m < p.pinion.base_radius_m);
+        assert!(p.gear.root_radius_m < p.gear.base_radius_m);
+    }
+
+    #[test]
+    fn pitch_point_lies_on_path_and_splits_loa_by_ratio() {
+        // At the pitch point rho1/rho2 = r_b1/r_b2 = z1/z2 (similar triangles).
+        let p = paper();
+        let r1 = p.rho_pitch_m;
+        let r2 = p.rho_gear(r1);
+        assert!((r1 / r2 - 19.0 / 31.0).abs() < 1e-12);
+        assert!(p.rho_start_m < r1 && r1 < p.rho_end_m);
+    }
+
+    #[test]
+    fn shifted_pair_contact_ratio_against_iso_formula() {
+        // ISO 21771 closed form: eps = [sqrt(ra1^2-rb1^2)+sqrt(ra2^2-rb2^2) - a_w sin(alpha_w)] / p_b
+        let g = GearSection {
+            profile_shift_pinion: 0.3,
+            profile_shift_gear: -0.1,
+            ..Default::default()
+        };
+        let p = GearPair::from_case(&g).unwrap();
+        let eps = ((p.pinion.tip_radius_m.powi(2) - p.pinion.base_radius_m.powi(2)).sqrt()
+            + (p.gear.tip_radius_m.powi(2) - p.gear.base_radius_m.powi(2)).sqrt()
+            - p.centre_distance_m * p.operating_pressure_angle_rad.sin())
+            / (PI * p.module_m * p.pressure_angle_rad.cos());
+        assert!((p.contact_ratio - eps).abs() < 1e-12);
+        // Positive shift sum opens the centre distance.
+        assert!(p.centre_distance_m > 0.050);
+    }
+
+    #[test]
+    fn pairs_in_contact_counts_follow_contact_ratio() {
+        // Fraction of a mesh period in double contact = eps - 1.
+        let p = paper();
+        let n = 10_000;
+        let doubles = (0..n)
+            .filter(|i| {
+                p.pairs_in_contact(p.mesh_angle_rad() * (*i as f64 + 0.5) / n as f64)
+                    .count()
+                    == 2
+            })
+            .count();
+        let frac = doubles as f64 / n as f64;
+        assert!((frac - (p.contact_ratio - 1.0)).abs() < 2.0 / n as f64);
+    }
+
+    #[test]
+    fn too_short_addendum_gives_contact_ratio_error() {
+        let g = GearSection {
+            addendum_coefficient: 0.5,
+            teeth_pinion: 12,
+            teeth_gear: 13,
+            ..Default::default()
+        };
+        let e = GearPair::from_case(&g).unwrap_err();
+        assert!(e.0.iter().any(|m| m.contains("contact ratio")), "{e:?}");
+    }
+
+    #[test]
+    fn small_pinion_meeting_large_gear_interferes() {
+        // 8 teeth against 60 without shift: the classic interference case (z_min ~ 17).
+        let g = GearSection {
+            teeth_pinion: 8,
+            teeth_gear: 60,
+            ..Default::default()
+        };
+        let e = GearPair::from_case(&g).unwrap_err();
+        assert!(e.0.iter().any(|m| m.contains("interference")), "{e:?}");
+    }
+}

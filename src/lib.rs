@@ -1,0 +1,14 @@
+//! gearwear: dynamic wear prediction of spur gears.
+//!
+//! Implements the model of "A Dynamic Wear Prediction Model for Studying the Interactions
+//! between Surface Wear and Dynamic Response of Spur Gears", Coatings 2022, 12(9), 1250,
+//! with the corrections listed in `docs/MODEL.md`.
+//!
+//! Layers, each depending only on those before it:
+//! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
+//! -> `io` / `report` -> `cli`.
+
+pub mod config;
+pub mod contact;
+pub mod geometry;
+pub mod stiffness;

@@ -1,0 +1,1 @@
+//! Mesh stiffness: potential energy method, fillet foundation, ISO 6336 check.
