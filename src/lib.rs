@@ -12,3 +12,5 @@ pub mod config;
 pub mod contact;
 pub mod geometry;
 pub mod stiffness;
+pub mod dynamics;
+pub mod report;

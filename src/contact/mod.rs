@@ -1,1 +1,6 @@
-//! Contact mechanics: load sharing, Hertz, kinematics, friction.
+//! Contact mechanics: Hertz line contact, surface kinematics, friction, load sharing.
+
+pub mod friction;
+pub mod hertz;
+pub mod kinematics;
+pub mod load_sharing;

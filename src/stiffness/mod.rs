@@ -1,1 +1,8 @@
-//! Mesh stiffness: potential energy method, fillet foundation, ISO 6336 check.
+//! Mesh stiffness: potential energy method (bending, shear, axial, Hertz, fillet
+//! foundation), the single-pair stiffness along the path of contact, the mesh-period
+//! table, and the ISO 6336-1 Method B cross-check.
+
+pub mod fillet;
+pub mod iso6336;
+pub mod mesh;
+pub mod potential_energy;

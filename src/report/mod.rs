@@ -1,0 +1,3 @@
+//! Plots and the HTML report.
+
+pub mod plot;
