@@ -14,3 +14,5 @@ pub mod geometry;
 pub mod stiffness;
 pub mod dynamics;
 pub mod report;
+pub mod cli;
+pub mod io;

@@ -1,1 +1,5 @@
-fn main() {}
+//! The `gearwear` binary; all logic lives in the library (`gearwear::cli`).
+
+fn main() -> std::process::ExitCode {
+    gearwear::cli::main()
+}

@@ -354,3 +354,80 @@ pub fn markdown_reference(case: &Case) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_cover_every_key() {
+        assert!(check_all_ranges(&Case::default()).is_empty());
+        // Every spec key is a real field (template prints a value or the optional marker).
+        let t = commented_template(&Case::default());
+        for s in KEYS {
+            let key = s.key.split_once('.').unwrap().1;
+            assert!(t.contains(&format!("{key} =")), "{key} missing in template");
+        }
+    }
+
+    #[test]
+    fn template_parses_back_to_the_default() {
+        let t = commented_template(&Case::default());
+        assert_eq!(load_case(&t, &[]).unwrap(), Case::default());
+    }
+
+    #[test]
+    fn overrides_apply_and_integers_widen() {
+        let c = load_case(
+            "",
+            &[
+                "operating.input_speed_hz=45".into(),
+                "friction.model=constant".into(),
+            ],
+        )
+        .unwrap();
+        assert_eq!(c.operating.input_speed_hz, 45.0);
+        assert_eq!(c.friction.model, crate::config::case::FrictionModel::Constant);
+    }
+
+    #[test]
+    fn every_problem_is_reported_once_with_key_and_value() {
+        let e = load_case(
+            "[gear]\nmodule_mm = -2\nface_width_mm = 0\n[wear]\ncoefficient_m2_per_n = -1e-16\n",
+            &[],
+        )
+        .unwrap_err();
+        assert_eq!(e.problems.len(), 3, "{e}");
+        assert!(e.problems.iter().any(|p| p.contains("gear.module_mm") && p.contains("-2")));
+        assert!(e.problems.iter().any(|p| p.contains("wear.coefficient_m2_per_n")));
+    }
+
+    #[test]
+    fn unknown_key_names_the_valid_ones() {
+        let e = load_case("[operating]\nspeed_hz = 3\n", &[]).unwrap_err();
+        assert!(e.problems[0].contains("operating.speed_hz"));
+        assert!(e.problems[0].contains("operating.input_speed_hz"));
+        let e = load_case("[gears]\n", &[]).unwrap_err();
+        assert!(e.problems[0].contains("unknown section [gears]"));
+    }
+
+    #[test]
+    fn wrong_type_and_bad_choice() {
+        let e = load_case("[operating]\ninput_speed_hz = \"fast\"\n", &[]).unwrap_err();
+        assert!(e.problems[0].contains("is a string"), "{e}");
+        let e = load_case("", &["friction.model=coulomb".into()]).unwrap_err();
+        assert!(e.problems[0].contains("\"xu2007\""), "{e}");
+    }
+
+    #[test]
+    fn xu_needs_viscosity_above_one_cp() {
+        let e = load_case("", &["lubricant.viscosity_cp=0.8".into()]).unwrap_err();
+        assert!(e.problems[0].contains("lubricant.viscosity_cp"), "{e}");
+        // Fine without the Xu model.
+        load_case(
+            "",
+            &["lubricant.viscosity_cp=0.8".into(), "friction.model=none".into()],
+        )
+        .unwrap();
+    }
+}

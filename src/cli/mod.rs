@@ -1,0 +1,27 @@
+//! The `gearwear` command line. Thin: parses arguments, builds the model objects from a
+//! validated case, calls the solvers, hands results to the writers.
+
+mod args;
+mod config_cmd;
+mod error;
+
+pub use args::{CaseArgs, Cli, Command};
+pub use error::CliError;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+/// Entry point of the binary. Exit code 2 for bad input, 1 for a failed run.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Config(a) => config_cmd::run(a),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}

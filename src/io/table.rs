@@ -1,0 +1,71 @@
+//! Column tables written as CSV (header with units, one row per sample).
+
+use super::atomic::write_atomic;
+use std::path::Path;
+
+/// Named numeric columns of equal length. Column names carry their unit, e.g.
+/// `mesh_force_n`.
+#[derive(Debug, Clone, Default)]
+pub struct Table {
+    pub names: Vec<String>,
+    pub columns: Vec<Vec<f64>>,
+}
+
+impl Table {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Add a column (builder style).
+    pub fn col(mut self, name: &str, values: Vec<f64>) -> Self {
+        self.names.push(name.to_owned());
+        self.columns.push(values);
+        self
+    }
+
+    pub fn rows(&self) -> usize {
+        self.columns.iter().map(Vec::len).max().unwrap_or(0)
+    }
+
+    /// CSV text. Non-finite values are written as empty cells, never as NaN.
+    pub fn to_csv(&self) -> Result<Vec<u8>, csv::Error> {
+        let mut w = csv::Writer::from_writer(Vec::new());
+        w.write_record(&self.names)?;
+        let mut row = Vec::with_capacity(self.names.len());
+        for r in 0..self.rows() {
+            row.clear();
+            for c in &self.columns {
+                row.push(match c.get(r) {
+                    Some(v) if v.is_finite() => format!("{v:e}"),
+                    _ => String::new(),
+                });
+            }
+            w.write_record(&row)?;
+        }
+        w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
+    }
+
+    /// Write the CSV atomically.
+    pub fn save(&self, path: &Path) -> anyhow::Result<()> {
+        write_atomic(path, &self.to_csv()?)?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_round_trip_and_nan_cells() {
+        let t = Table::new()
+            .col("a_m", vec![1.0, 2.5])
+            .col("b_n", vec![f64::NAN, -3.0]);
+        let text = String::from_utf8(t.to_csv().unwrap()).unwrap();
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let rows: Vec<csv::StringRecord> = r.records().map(Result::unwrap).collect();
+        assert_eq!(rows[0].get(1), Some(""));
+        assert_eq!(rows[1].get(0).unwrap().parse::<f64>().unwrap(), 2.5);
+        assert!(!text.contains("NaN"));
+    }
+}
