@@ -69,13 +69,8 @@ impl HertzContact {
         rho2_m: f64,
         materials: &MaterialsSection,
     ) -> Self {
-        Self::with_modulus(
-            load_n,
-            face_width_m,
-            rho1_m,
-            rho2_m,
-            effective_modulus_of(materials),
-        )
+        let e_star_pa = effective_modulus_of(materials);
+        Self::with_modulus(load_n, face_width_m, rho1_m, rho2_m, e_star_pa)
     }
 
     /// As [`HertzContact::new`] with `E*` (Pa) computed once by the caller.
@@ -86,11 +81,11 @@ impl HertzContact {
         face_width_m: f64,
         rho1_m: f64,
         rho2_m: f64,
-        effective_modulus_pa: f64,
+        e_star_pa: f64,
     ) -> Self {
         let radius = effective_radius_m(rho1_m, rho2_m);
         let w = load_n / face_width_m; // N/m
-        let e_star = effective_modulus_pa;
+        let e_star = e_star_pa;
         if !(w > 0.0 && w.is_finite() && radius > 0.0 && e_star > 0.0 && e_star.is_finite()) {
             return Self {
                 effective_radius_m: radius,
