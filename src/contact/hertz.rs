@@ -1,6 +1,6 @@
-//! Hertz line contact of two parallel cylinders (Johnson, *Contact Mechanics*, 1985,
-//! ch. 4, sec. 4.2, eqs. 4.43-4.45): the tooth contact at one point of the path of
-//! contact, each flank replaced by its radius of curvature there.
+//! Hertz line contact of two parallel cylinders (Johnson, *Contact Mechanics*, 1985, ch. 4,
+//! sec. 4.2): the tooth contact at one point of the path of contact, each flank replaced by
+//! its radius of curvature there.
 //!
 //! Standard form used here (SI units):
 //! - effective modulus `1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2` (Pa);
@@ -21,7 +21,7 @@ use crate::config::case::MaterialsSection;
 use std::f64::consts::PI;
 
 /// Effective (contact) modulus `E*`, Pa: `1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2`
-/// (Johnson 1985, eq. 4.43 notation). Moduli in Pa.
+/// (Johnson 1985, ch. 4 notation). Moduli in Pa.
 pub fn effective_modulus_pa(e1_pa: f64, nu1: f64, e2_pa: f64, nu2: f64) -> f64 {
     1.0 / ((1.0 - nu1 * nu1) / e1_pa + (1.0 - nu2 * nu2) / e2_pa)
 }
