@@ -10,6 +10,7 @@
 //! root circle, S_f = 2 r_f theta_f, u_f the distance along the tooth centreline from the
 //! root circle to where the force line crosses it, alpha_m the angle of the force to the
 //! perpendicular of the centreline. Units: lengths in m, E in Pa, b in m, result in m/N.
+//! E is Young's modulus as in Sainsot et al. (no plane-strain factor, like the beam terms).
 //! The fit holds for 1.4 <= h_f <= 7 and 0.01 <= theta_f <= 0.12 rad; outside it the
 //! polynomial is extrapolated and a warning is returned.
 
