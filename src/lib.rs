@@ -16,3 +16,5 @@ pub mod dynamics;
 pub mod report;
 pub mod cli;
 pub mod io;
+pub mod study;
+pub mod wear;

@@ -17,6 +17,12 @@ pub struct Cli {
 pub enum Command {
     /// Print the default case (the paper's) as commented TOML.
     Config(ConfigArgs),
+    /// Mesh stiffness (potential energy method), ISO 6336 check, load sharing, static TE.
+    Stiffness(StiffnessArgs),
+    /// One steady-state evaluation of the 8-DOF tribo-dynamic model.
+    Dynamics(DynamicsArgs),
+    /// The coupled dynamics-wear study (and its quasi-static twin).
+    Wear(WearArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -50,4 +56,48 @@ pub struct ConfigArgs {
     /// Print the key reference as Markdown (docs/CONFIG.md) instead.
     #[arg(long)]
     pub markdown: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct StiffnessArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Output directory.
+    #[arg(long, default_value = "results/stiffness")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct DynamicsArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Geometric transmission error to add: CSV `pinion_angle_deg,error_um` over one mesh
+    /// period (positive adds to the mesh compression, paper eq. 2).
+    #[arg(long, value_name = "FILE")]
+    pub transmission_error: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long, default_value = "results/dynamics")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum WearModeArg {
+    Dynamic,
+    QuasiStatic,
+    Both,
+}
+
+#[derive(Debug, Args)]
+pub struct WearArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Which solver feeds the wear model.
+    #[arg(long, value_enum, default_value = "both")]
+    pub mode: WearModeArg,
+    /// Output directory.
+    #[arg(long, default_value = "results/wear")]
+    pub out: PathBuf,
+    /// Continue from the checkpoints in the output directory.
+    #[arg(long)]
+    pub resume: bool,
 }

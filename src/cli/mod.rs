@@ -3,7 +3,11 @@
 
 mod args;
 mod config_cmd;
+pub mod dynamics_cmd;
 mod error;
+pub mod output;
+mod stiffness_cmd;
+pub mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
 pub use error::CliError;
@@ -16,6 +20,9 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
+        Command::Stiffness(a) => stiffness_cmd::run(a),
+        Command::Dynamics(a) => dynamics_cmd::run(a),
+        Command::Wear(a) => wear_cmd::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -87,7 +87,8 @@ fn same_kind(want: &Value, got: &Value) -> bool {
 
 /// Check key names and value types against the default tree; widen integers to floats
 /// where the default is a float so that serde accepts `input_speed_hz = 30`.
-fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
+fn check_keys(user: &mut Table, problems: &mut Vec<String>) -> Vec<String> {
+    let mut bad_paths = Vec::new();
     let reference = default_tree();
     for (section, value) in user.iter_mut() {
         let Some(ref_section) = reference.get(section) else {
@@ -121,6 +122,7 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
                 continue;
             };
             if !same_kind(&want, v) {
+                bad_paths.push(path.clone());
                 problems.push(format!(
                     "`{path}` = {v} is {}, expected {}",
                     type_name(v),
@@ -142,6 +144,7 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
             }
         }
     }
+    bad_paths
 }
 
 /// Check one value against its spec.
@@ -242,17 +245,14 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
             Err(e) => problems.push(e),
         }
     }
-    check_keys(&mut user, &mut problems);
-    if !problems.is_empty() {
-        return Err(ConfigError { problems });
-    }
-    // Range checks on every key that was given (defaults are valid by construction,
-    // which a test checks).
+    let bad_types = check_keys(&mut user, &mut problems);
+    // Range checks on every known key that was given with the right type (defaults are
+    // valid, which a test checks).
     for (section, value) in &user {
         if let Value::Table(t) = value {
             for (key, v) in t {
                 let path = format!("{section}.{key}");
-                if let Some(s) = spec(&path) {
+                if let (Some(s), false) = (spec(&path), bad_types.contains(&path)) {
                     if let Some(p) = check_range(&path, v, s.valid) {
                         problems.push(p);
                     }

@@ -1,3 +1,14 @@
-//! The 8-DOF tribo-dynamic model (paper eq. 1-6), its integrator, steady state and signals.
+//! The 8-DOF tribo-dynamic model (paper eq. 1-6), its integrator, steady state,
+//! quasi-static twin, signals and modes.
 
+pub mod excitation;
+pub mod grid;
 pub mod integrator;
+pub mod modal;
+pub mod model;
+pub mod params;
+pub mod quasi_static;
+pub mod response;
+pub mod spectrum;
+pub mod steady;
+pub mod summary;

@@ -1,3 +1,4 @@
 //! Plots and the HTML report.
 
+pub mod figures;
 pub mod plot;

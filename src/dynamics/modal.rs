@@ -1,0 +1,55 @@
+//! Natural frequencies and mode shapes of the model linearised at the mean mesh
+//! stiffness: K phi = omega^2 M phi on the free coordinates (an imposed speed removes
+//! its coordinate), with K = K_bearings+couplings + k_mean g g^T (g = d delta/dq).
+//! Solved as the symmetric problem M^-1/2 K M^-1/2 (M is diagonal).
+
+use super::model::{GearSystem, NDOF};
+use nalgebra::{DMatrix, SymmetricEigen};
+
+/// Undamped modes, ascending in frequency.
+#[derive(Debug, Clone, Default)]
+pub struct Modes {
+    pub frequency_hz: Vec<f64>,
+    /// Mass-normalised shapes in the 8 coordinates (0 on an imposed coordinate).
+    pub shapes: Vec<[f64; NDOF]>,
+}
+
+/// Linearised mass (diagonal) and stiffness matrices of the free coordinates, and the
+/// indices of those coordinates.
+pub fn linearised_matrices(sys: &GearSystem) -> (Vec<f64>, DMatrix<f64>, Vec<usize>) {
+    let (k_lin, _, inv_mass) = sys.linear_parts();
+    let g = sys.mesh_gradient();
+    let k_mean = sys.mesh.mean_stiffness_n_per_m();
+    let free: Vec<usize> = (0..NDOF).filter(|i| inv_mass[*i] > 0.0).collect();
+    let n = free.len();
+    let mut k = DMatrix::zeros(n, n);
+    for (a, &i) in free.iter().enumerate() {
+        for (b, &j) in free.iter().enumerate() {
+            k[(a, b)] = k_lin[(i, j)] + k_mean * g[i] * g[j];
+        }
+    }
+    let m = free.iter().map(|&i| 1.0 / inv_mass[i]).collect();
+    (m, k, free)
+}
+
+pub fn modes(sys: &GearSystem) -> Modes {
+    let (m, k, free) = linearised_matrices(sys);
+    let n = m.len();
+    let s: Vec<f64> = m.iter().map(|x| 1.0 / x.sqrt()).collect();
+    let a = DMatrix::from_fn(n, n, |i, j| s[i] * k[(i, j)] * s[j]);
+    let eig = SymmetricEigen::new(a);
+    let mut idx: Vec<usize> = (0..n).collect();
+    idx.sort_by(|x, y| eig.eigenvalues[*x].total_cmp(&eig.eigenvalues[*y]));
+    let mut out = Modes::default();
+    for i in idx {
+        let lam = eig.eigenvalues[i].max(0.0);
+        out.frequency_hz
+            .push(lam.sqrt() / (2.0 * std::f64::consts::PI));
+        let mut shape = [0.0; NDOF];
+        for (a, &dof) in free.iter().enumerate() {
+            shape[dof] = eig.eigenvectors[(a, i)] * s[a];
+        }
+        out.shapes.push(shape);
+    }
+    out
+}

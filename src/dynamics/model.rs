@@ -1,0 +1,442 @@
+//! The 8-DOF translational-rotational tribo-dynamic model, paper eq. (1)-(6), with the
+//! corrections of `docs/MODEL.md`.
+//!
+//! Coordinates (generalised displacements q, SI):
+//! `[x_p, y_p, x_g, y_g, phi_m, phi_p, phi_g, phi_b]`, where the angles are deviations
+//! from the nominal rotation: theta_m = Omega_p t + phi_m, theta_p = Omega_p t + phi_p,
+//! theta_g = Omega_g t + phi_g, theta_b = Omega_g t + phi_b, Omega_g = Omega_p z1/z2.
+//! Working with deviations keeps the mesh deflection a difference of small numbers
+//! (r_pb theta_p - r_gb theta_g loses ~10 digits after a few seconds otherwise).
+//! State y = [q; dq/dt] (16 entries).
+//!
+//! Layout: pinion centre at the origin, gear centre on +x. The line of action points
+//! along d = (sin phi, cos phi) (phi the operating pressure angle, as in eq. 1), the
+//! pinion's surface velocity at the contact along -e with e = (cos phi, -sin phi).
+//! Mesh deflection (eq. 2 bracket without e_t):
+//!   delta = r_pb phi_p - r_gb phi_g + (x_p - x_g) sin phi + (y_p - y_g) cos phi.
+//! Forces on the pinion: -F d (mesh), +sum f_i e (friction); on the gear the opposite.
+//! Friction f_i = mu_i W_i tanh(u_s,i / v_s) (eq. 6) with u_s = u_p - u_g (eq. 5), so the
+//! friction power -sum f_i u_s,i is never positive. Torques: pinion -r_pb F - sum rho1_i f_i,
+//! gear +r_gb F + sum rho2_i f_i (eq. 3-4, radii of curvature as lever arms).
+
+use super::excitation::{ExternalError, PairGap};
+use super::params::DynamicParams;
+use crate::config::case::{LoadSharingModel, SpeedBoundary};
+use crate::contact::friction::Friction;
+use crate::contact::kinematics::SurfaceKinematics;
+use crate::contact::hertz::HertzContact;
+use crate::contact::load_sharing::pedrero_share;
+use crate::geometry::GearPair;
+use crate::stiffness::mesh::MeshStiffness;
+use nalgebra::{SMatrix, SVector};
+
+/// Number of generalised coordinates.
+pub const NDOF: usize = 8;
+/// Number of first-order states.
+pub const NSTATE: usize = 16;
+/// Largest number of pairs in contact handled (contact ratio < 4).
+pub const MAX_PAIRS: usize = 4;
+
+pub type State = SVector<f64, NSTATE>;
+pub type Matrix8 = SMatrix<f64, NDOF, NDOF>;
+
+/// Index of each coordinate in q.
+pub mod dof {
+    pub const XP: usize = 0;
+    pub const YP: usize = 1;
+    pub const XG: usize = 2;
+    pub const YG: usize = 3;
+    pub const PHI_M: usize = 4;
+    pub const PHI_P: usize = 5;
+    pub const PHI_G: usize = 6;
+    pub const PHI_B: usize = 7;
+}
+
+/// Everything the mesh does at one instant (for the right-hand side and for signals).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct MeshState {
+    pub n_pairs: usize,
+    /// Pair contact positions rho1, m.
+    pub rho1_m: [f64; MAX_PAIRS],
+    pub stiffness_n_per_m: [f64; MAX_PAIRS],
+    /// Share of the mesh force, kappa_i (eq. 7 or by stiffness).
+    pub share: [f64; MAX_PAIRS],
+    pub load_n: [f64; MAX_PAIRS],
+    pub pressure_pa: [f64; MAX_PAIRS],
+    pub half_width_m: [f64; MAX_PAIRS],
+    pub friction_coefficient: [f64; MAX_PAIRS],
+    /// Signed friction force f_i, N (positive when the pinion surface is faster).
+    pub friction_n: [f64; MAX_PAIRS],
+    /// Sliding velocity u_p - u_g, m/s.
+    pub sliding_m_per_s: [f64; MAX_PAIRS],
+    /// Mesh force F, N (>= 0).
+    pub force_n: f64,
+    /// Relative displacement along the line of action (dynamic transmission error), m.
+    pub deflection_m: f64,
+    /// Sum of the stiffnesses of the pairs in contact, N/m.
+    pub stiffness_total_n_per_m: f64,
+}
+
+/// The assembled model: immutable inputs for one dynamic evaluation.
+pub struct GearSystem<'a> {
+    pub pair: &'a GearPair,
+    pub mesh: &'a MeshStiffness,
+    pub params: &'a DynamicParams,
+    pub friction: &'a Friction,
+    /// Lubricant inlet viscosity for the friction law, cP.
+    pub viscosity_cp: f64,
+    pub gap: &'a PairGap,
+    pub external: &'a ExternalError,
+    pub load_sharing: LoadSharingModel,
+    /// Composite RMS roughness for the friction law, um.
+    pub roughness_um: f64,
+    /// Effective modulus E* of the contact, Pa.
+    pub effective_modulus_pa: f64,
+    /// Mesh damping c_m, N s/m.
+    pub mesh_damping_n_s_per_m: f64,
+    inv_mass: [f64; NDOF],
+    k_lin: Matrix8,
+    c_lin: Matrix8,
+    /// d delta / d q.
+    grad: SVector<f64, NDOF>,
+    /// Constant generalised forces (motor and brake torques).
+    q_ext: SVector<f64, NDOF>,
+}
+
+impl<'a> GearSystem<'a> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        pair: &'a GearPair,
+        mesh: &'a MeshStiffness,
+        params: &'a DynamicParams,
+        friction: &'a Friction,
+        viscosity_cp: f64,
+        gap: &'a PairGap,
+        external: &'a ExternalError,
+        load_sharing: LoadSharingModel,
+        roughness_um: f64,
+        effective_modulus_pa: f64,
+    ) -> Self {
+        use dof::*;
+        let p = params;
+        let mut inv_mass = [
+            1.0 / p.mass_pinion_kg,
+            1.0 / p.mass_pinion_kg,
+            1.0 / p.mass_gear_kg,
+            1.0 / p.mass_gear_kg,
+            1.0 / p.inertia_motor_kg_m2,
+            1.0 / p.inertia_pinion_kg_m2,
+            1.0 / p.inertia_gear_kg_m2,
+            1.0 / p.inertia_brake_kg_m2,
+        ];
+        let mut q_ext = SVector::<f64, NDOF>::zeros();
+        // An imposed angle is a coordinate with infinite inertia: zero acceleration.
+        match p.speed_boundary {
+            SpeedBoundary::MotorSpeedImposed => {
+                inv_mass[PHI_M] = 0.0;
+                q_ext[PHI_B] = -p.brake_torque_nm;
+            }
+            SpeedBoundary::BrakeSpeedImposed => {
+                inv_mass[PHI_B] = 0.0;
+                q_ext[PHI_M] = p.motor_torque_nm;
+            }
+            SpeedBoundary::MotorSlip => {
+                q_ext[PHI_M] = p.motor_torque_nm;
+                q_ext[PHI_B] = -p.brake_torque_nm;
+            }
+        }
+        let mut k = Matrix8::zeros();
+        let mut c = Matrix8::zeros();
+        for (i, kb, cb) in [
+            (XP, p.bearing_stiffness_pinion_n_per_m, p.bearing_damping_pinion_n_s_per_m),
+            (YP, p.bearing_stiffness_pinion_n_per_m, p.bearing_damping_pinion_n_s_per_m),
+            (XG, p.bearing_stiffness_gear_n_per_m, p.bearing_damping_gear_n_s_per_m),
+            (YG, p.bearing_stiffness_gear_n_per_m, p.bearing_damping_gear_n_s_per_m),
+        ] {
+            k[(i, i)] = kb;
+            c[(i, i)] = cb;
+        }
+        for (i, j, kc, cc) in [
+            (
+                PHI_M,
+                PHI_P,
+                p.coupling_stiffness_motor_nm_per_rad,
+                p.coupling_damping_motor_nm_s_per_rad,
+            ),
+            (
+                PHI_G,
+                PHI_B,
+                p.coupling_stiffness_brake_nm_per_rad,
+                p.coupling_damping_brake_nm_s_per_rad,
+            ),
+        ] {
+            for (m, val) in [(&mut k, kc), (&mut c, cc)] {
+                m[(i, i)] += val;
+                m[(j, j)] += val;
+                m[(i, j)] -= val;
+                m[(j, i)] -= val;
+            }
+        }
+        if p.speed_boundary == SpeedBoundary::MotorSlip {
+            // Motor torque T_0 + c_slip (Omega_p - dtheta_m/dt) = T_0 - c_slip dphi_m/dt.
+            c[(PHI_M, PHI_M)] += p.motor_slip_damping_nm_s_per_rad;
+        }
+        let phi = pair.operating_pressure_angle_rad;
+        let (s, co) = phi.sin_cos();
+        let mut grad = SVector::<f64, NDOF>::zeros();
+        grad[XP] = s;
+        grad[YP] = co;
+        grad[XG] = -s;
+        grad[YG] = -co;
+        grad[PHI_P] = pair.pinion.base_radius_m;
+        grad[PHI_G] = -pair.gear.base_radius_m;
+        let c_m = params.mesh_damping_n_s_per_m(pair, mesh.mean_stiffness_n_per_m());
+        Self {
+            pair,
+            mesh,
+            params,
+            friction,
+            viscosity_cp,
+            gap,
+            external,
+            load_sharing,
+            roughness_um,
+            effective_modulus_pa,
+            mesh_damping_n_s_per_m: c_m,
+            inv_mass,
+            k_lin: k,
+            c_lin: c,
+            grad,
+            q_ext,
+        }
+    }
+
+    /// d delta / dq: the mesh direction in generalised coordinates.
+    pub fn mesh_gradient(&self) -> &SVector<f64, NDOF> {
+        &self.grad
+    }
+
+    /// Linear (bearing, coupling) stiffness and damping matrices and inverse masses.
+    pub fn linear_parts(&self) -> (&Matrix8, &Matrix8, &[f64; NDOF]) {
+        (&self.k_lin, &self.c_lin, &self.inv_mass)
+    }
+
+    /// Constant generalised forces (motor/brake torques).
+    pub fn external_forces(&self) -> &SVector<f64, NDOF> {
+        &self.q_ext
+    }
+
+    /// Mesh phase (rad of pinion rotation) at time t: the nominal rotation Omega_p t.
+    ///
+    /// The stiffness and contact positions follow the nominal angle; the vibratory part
+    /// phi_p (~1e-5 rad against a 0.33 rad mesh period) is neglected there, the standard
+    /// time-varying-stiffness approximation (docs/MODEL.md).
+    #[inline]
+    pub fn phase_at(&self, t_s: f64) -> f64 {
+        self.params.pinion_speed_rad_s * t_s
+    }
+
+    /// Mesh state at time t for generalised displacements q and velocities v.
+    pub fn mesh_state(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
+        use dof::*;
+        let mut ms = MeshState::default();
+        let g = &self.grad;
+        let mut delta = 0.0;
+        let mut delta_dot = 0.0;
+        for i in 0..NDOF {
+            delta += g[i] * q[i];
+            delta_dot += g[i] * v[i];
+        }
+        ms.deflection_m = delta;
+        let phase = self.phase_at(t_s);
+        let omega_nom = self.params.pinion_speed_rad_s;
+        let rb1 = self.pair.pinion.base_radius_m;
+        let (e_ext, de_ext) = self.external.at(phase);
+
+        let mut elastic = 0.0;
+        let mut k_touch = 0.0;
+        let mut gap_rate_weighted = 0.0;
+        let mut compress = [0.0; MAX_PAIRS];
+        let mut n = 0;
+        for (_, rho1) in self.pair.pairs_in_contact(phase) {
+            if n == MAX_PAIRS {
+                break;
+            }
+            let k = self.mesh.pair_stiffness_n_per_m(rho1);
+            let (g_wear, dg_drho) = self.gap.at(rho1);
+            // Effective gap of this pair: wear gap minus the external error (eq. 2 sign).
+            let gap = g_wear - e_ext;
+            let gap_rate = dg_drho * rb1 * omega_nom - de_ext * omega_nom;
+            let c = delta - gap;
+            ms.rho1_m[n] = rho1;
+            ms.stiffness_n_per_m[n] = k;
+            ms.stiffness_total_n_per_m += k;
+            if c > 0.0 {
+                compress[n] = k * c;
+                elastic += k * c;
+                k_touch += k;
+                gap_rate_weighted += k * gap_rate;
+            }
+            n += 1;
+        }
+        ms.n_pairs = n;
+        // Mesh damping acts on the closing rate of the touching pairs (eq. 2, c_m term
+        // with de_t/dt); the mesh cannot pull: F >= 0 (contact loss).
+        let force = if k_touch > 0.0 {
+            let closing = delta_dot - gap_rate_weighted / k_touch;
+            (elastic + self.mesh_damping_n_s_per_m * closing).max(0.0)
+        } else {
+            0.0
+        };
+        ms.force_n = force;
+
+        let omega_p = omega_nom + v[PHI_P];
+        let omega_g = self.params.gear_speed_rad_s + v[PHI_G];
+        let stiffness_shares = if elastic > 0.0 {
+            let mut sh = [0.0; MAX_PAIRS];
+            for i in 0..n {
+                sh[i] = compress[i] / elastic;
+            }
+            Some(sh)
+        } else {
+            None
+        };
+        self.fill_contacts(&mut ms, stiffness_shares, omega_p, omega_g);
+        ms
+    }
+
+    /// Per-pair shares, loads, Hertz contact and friction for a mesh state whose pairs
+    /// (`rho1_m`, `n_pairs`) and force are set. `stiffness_shares` are the shares by
+    /// pair compression (used by `LoadSharingModel::Stiffness`); `omega_*` the actual
+    /// pinion and gear speeds, rad/s (eq. 5).
+    pub fn fill_contacts(
+        &self,
+        ms: &mut MeshState,
+        stiffness_shares: Option<[f64; MAX_PAIRS]>,
+        omega_p: f64,
+        omega_g: f64,
+    ) {
+        for i in 0..ms.n_pairs {
+            ms.share[i] = match self.load_sharing {
+                LoadSharingModel::Pedrero => pedrero_share(self.pair, ms.rho1_m[i]),
+                LoadSharingModel::Stiffness => stiffness_shares.map_or(0.0, |s| s[i]),
+            };
+            let w = ms.share[i] * ms.force_n;
+            ms.load_n[i] = w;
+            let rho1 = ms.rho1_m[i];
+            let rho2 = self.pair.rho_gear(rho1);
+            let hz = HertzContact::with_modulus(
+                w,
+                self.pair.face_width_m,
+                rho1,
+                rho2,
+                self.effective_modulus_pa,
+            );
+            ms.pressure_pa[i] = hz.max_pressure_pa;
+            ms.half_width_m[i] = hz.half_width_m;
+            let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);
+            let u_s = kin.sliding_velocity_m_per_s();
+            ms.sliding_m_per_s[i] = u_s;
+            let mu = self
+                .friction
+                .coefficient(&hz, &kin, self.viscosity_cp, self.roughness_um);
+            ms.friction_coefficient[i] = mu;
+            // Positive when the pinion surface is faster; acts on the pinion along +e.
+            ms.friction_n[i] = mu * w * self.friction.direction(u_s);
+        }
+    }
+
+    /// Generalised forces of the mesh (normal force and friction) for a mesh state.
+    #[inline]
+    pub fn mesh_forces(&self, ms: &MeshState) -> SVector<f64, NDOF> {
+        use dof::*;
+        let mut qf = -ms.force_n * self.grad;
+        let (s, c) = self.pair.operating_pressure_angle_rad.sin_cos();
+        let mut f_sum = 0.0;
+        let mut m_p = 0.0;
+        let mut m_g = 0.0;
+        for i in 0..ms.n_pairs {
+            let f = ms.friction_n[i];
+            f_sum += f;
+            m_p += ms.rho1_m[i] * f;
+            m_g += self.pair.rho_gear(ms.rho1_m[i]) * f;
+        }
+        // Friction along e = (cos phi, -sin phi) on the pinion, opposite on the gear.
+        qf[XP] += f_sum * c;
+        qf[YP] -= f_sum * s;
+        qf[XG] -= f_sum * c;
+        qf[YG] += f_sum * s;
+        qf[PHI_P] -= m_p;
+        qf[PHI_G] += m_g;
+        qf
+    }
+
+    /// Right-hand side dy/dt and the mesh state it used.
+    pub fn derivative(&self, t_s: f64, y: &State) -> (State, MeshState) {
+        let q = y.fixed_rows::<NDOF>(0).into_owned();
+        let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
+        let ms = self.mesh_state(t_s, q.as_slice(), v.as_slice());
+        let rhs = self.q_ext + self.mesh_forces(&ms) - self.k_lin * q - self.c_lin * v;
+        let mut dy = State::zeros();
+        for i in 0..NDOF {
+            dy[i] = v[i];
+            dy[NDOF + i] = rhs[i] * self.inv_mass[i];
+        }
+        (dy, ms)
+    }
+
+    /// Jacobian of the right-hand side: exact for the linear parts and the mesh spring
+    /// and damper of the pairs in contact; the friction's dependence on the state is
+    /// left out (a modified-Newton approximation: friction is < 10 % of the mesh force
+    /// and not stiff).
+    pub fn jacobian(&self, t_s: f64, y: &State) -> SMatrix<f64, NSTATE, NSTATE> {
+        let q = y.fixed_rows::<NDOF>(0).into_owned();
+        let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
+        let ms = self.mesh_state(t_s, q.as_slice(), v.as_slice());
+        let touching = ms.force_n > 0.0;
+        let (k_mesh, c_mesh) = if touching {
+            (ms.stiffness_total_n_per_m, self.mesh_damping_n_s_per_m)
+        } else {
+            (0.0, 0.0)
+        };
+        let gg = self.grad * self.grad.transpose();
+        let k = self.k_lin + gg * k_mesh;
+        let c = self.c_lin + gg * c_mesh;
+        let mut j = SMatrix::<f64, NSTATE, NSTATE>::zeros();
+        for i in 0..NDOF {
+            j[(i, NDOF + i)] = 1.0;
+            for l in 0..NDOF {
+                j[(NDOF + i, l)] = -k[(i, l)] * self.inv_mass[i];
+                j[(NDOF + i, NDOF + l)] = -c[(i, l)] * self.inv_mass[i];
+            }
+        }
+        j
+    }
+
+    /// Static equilibrium at the mean mesh stiffness, friction-free: the starting state
+    /// of a run (it removes most of the transient). A free drivetrain (motor slip) is
+    /// held at the motor for this solve only.
+    pub fn static_equilibrium(&self) -> State {
+        use dof::*;
+        let k_mean = self.mesh.mean_stiffness_n_per_m();
+        let mut k = self.k_lin + self.grad * self.grad.transpose() * k_mean;
+        let mut f = self.q_ext;
+        let fixed = match self.params.speed_boundary {
+            SpeedBoundary::BrakeSpeedImposed => PHI_B,
+            _ => PHI_M,
+        };
+        if self.params.speed_boundary == SpeedBoundary::MotorSlip {
+            f[PHI_M] = 0.0;
+        }
+        for l in 0..NDOF {
+            k[(fixed, l)] = 0.0;
+            k[(l, fixed)] = 0.0;
+        }
+        k[(fixed, fixed)] = 1.0;
+        f[fixed] = 0.0;
+        let q = k.lu().solve(&f).unwrap_or_else(SVector::zeros);
+        let mut y = State::zeros();
+        y.fixed_rows_mut::<NDOF>(0).copy_from(&q);
+        y
+    }
+}

@@ -1,0 +1,115 @@
+//! Lumped parameters of the 8-DOF model in SI units, built from the case
+//! (paper Table 2, units corrected as NOTES.md says), and the operating point.
+
+use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
+use crate::geometry::GearPair;
+use std::f64::consts::PI;
+
+/// Parameters of paper eq. (1), SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicParams {
+    pub mass_pinion_kg: f64,
+    pub mass_gear_kg: f64,
+    pub inertia_motor_kg_m2: f64,
+    pub inertia_pinion_kg_m2: f64,
+    pub inertia_gear_kg_m2: f64,
+    pub inertia_brake_kg_m2: f64,
+    pub bearing_stiffness_pinion_n_per_m: f64,
+    pub bearing_stiffness_gear_n_per_m: f64,
+    pub bearing_damping_pinion_n_s_per_m: f64,
+    pub bearing_damping_gear_n_s_per_m: f64,
+    pub coupling_stiffness_motor_nm_per_rad: f64,
+    pub coupling_stiffness_brake_nm_per_rad: f64,
+    pub coupling_damping_motor_nm_s_per_rad: f64,
+    pub coupling_damping_brake_nm_s_per_rad: f64,
+    pub mesh_damping_ratio: f64,
+    pub speed_boundary: SpeedBoundary,
+    pub motor_slip_damping_nm_s_per_rad: f64,
+    /// Nominal pinion speed Omega_p, rad/s.
+    pub pinion_speed_rad_s: f64,
+    /// Nominal gear speed Omega_g = Omega_p z1 / z2, rad/s.
+    pub gear_speed_rad_s: f64,
+    /// Load torque at the brake (gear shaft), N m: T_brk of eq. (1).
+    pub brake_torque_nm: f64,
+    /// The same load referred to the motor (pinion shaft), N m: r_pb / r_gb T_brk.
+    pub motor_torque_nm: f64,
+}
+
+impl DynamicParams {
+    pub fn from_case(case: &Case, pair: &GearPair) -> Self {
+        let d = &case.dynamics;
+        let o = &case.operating;
+        let rpb = pair.pinion.base_radius_m;
+        let rgb = pair.gear.base_radius_m;
+        // The load torque on its shaft, moved to the other through the base radii
+        // (friction-free torque ratio).
+        let (motor_t, brake_t) = match o.load_torque_shaft {
+            TorqueShaft::Pinion => (o.load_torque_nm, o.load_torque_nm * rgb / rpb),
+            TorqueShaft::Gear => (o.load_torque_nm * rpb / rgb, o.load_torque_nm),
+        };
+        let omega_p = 2.0 * PI * o.input_speed_hz;
+        Self {
+            mass_pinion_kg: d.mass_pinion_kg,
+            mass_gear_kg: d.mass_gear_kg,
+            inertia_motor_kg_m2: d.inertia_motor_kg_m2,
+            inertia_pinion_kg_m2: d.inertia_pinion_kg_m2,
+            inertia_gear_kg_m2: d.inertia_gear_kg_m2,
+            inertia_brake_kg_m2: d.inertia_brake_kg_m2,
+            bearing_stiffness_pinion_n_per_m: d.bearing_stiffness_pinion_n_per_m,
+            bearing_stiffness_gear_n_per_m: d.bearing_stiffness_gear_n_per_m,
+            bearing_damping_pinion_n_s_per_m: d.bearing_damping_pinion_n_s_per_m,
+            bearing_damping_gear_n_s_per_m: d.bearing_damping_gear_n_s_per_m,
+            coupling_stiffness_motor_nm_per_rad: d.coupling_stiffness_motor_nm_per_rad,
+            coupling_stiffness_brake_nm_per_rad: d.coupling_stiffness_brake_nm_per_rad,
+            coupling_damping_motor_nm_s_per_rad: d.coupling_damping_motor_nm_s_per_rad,
+            coupling_damping_brake_nm_s_per_rad: d.coupling_damping_brake_nm_s_per_rad,
+            mesh_damping_ratio: d.mesh_damping_ratio,
+            speed_boundary: o.speed_boundary,
+            motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
+            pinion_speed_rad_s: omega_p,
+            gear_speed_rad_s: omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64,
+            brake_torque_nm: brake_t,
+            motor_torque_nm: motor_t,
+        }
+    }
+
+    /// Equivalent mass of the mesh's torsional mode, kg (NOTES.md):
+    /// m_e = J_p J_g / (J_p r_gb^2 + J_g r_pb^2).
+    pub fn equivalent_mesh_mass_kg(&self, pair: &GearPair) -> f64 {
+        let (jp, jg) = (self.inertia_pinion_kg_m2, self.inertia_gear_kg_m2);
+        let (rp, rg) = (pair.pinion.base_radius_m, pair.gear.base_radius_m);
+        jp * jg / (jp * rg * rg + jg * rp * rp)
+    }
+
+    /// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m (the paper gives none; NOTES.md).
+    pub fn mesh_damping_n_s_per_m(&self, pair: &GearPair, mean_stiffness_n_per_m: f64) -> f64 {
+        2.0 * self.mesh_damping_ratio
+            * (mean_stiffness_n_per_m * self.equivalent_mesh_mass_kg(pair)).sqrt()
+    }
+
+    /// Mesh frequency f_m = z1 f_input, Hz.
+    pub fn mesh_frequency_hz(&self, pair: &GearPair) -> f64 {
+        self.pinion_speed_rad_s / (2.0 * PI) * pair.pinion.teeth as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_equivalent_mass_and_loads() {
+        let case = Case::default();
+        let pair = GearPair::from_case(&case.gear).unwrap();
+        let p = DynamicParams::from_case(&case, &pair);
+        // NOTES.md: m_e = 0.506 kg for the paper's inertias.
+        assert!((p.equivalent_mesh_mass_kg(&pair) - 0.506).abs() < 5e-4);
+        // 60 N m on the pinion: mesh force 60 / r_pb = 3361 N, both ways round.
+        let f_from_brake = p.brake_torque_nm / pair.gear.base_radius_m;
+        let f_from_motor = p.motor_torque_nm / pair.pinion.base_radius_m;
+        assert!((f_from_brake - 3360.6).abs() < 0.5, "{f_from_brake}");
+        assert!((f_from_brake - f_from_motor).abs() < 1e-9);
+        // Mesh frequency 19 x 30 Hz.
+        assert!((p.mesh_frequency_hz(&pair) - 570.0).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,179 @@
+//! Quasi-static twin of the dynamic model: the same mesh, friction and gaps without
+//! inertia or damping, in equilibrium at each mesh position (the baseline of the paper's
+//! section 4.2 and the static transmission error of the stiffness command).
+//!
+//! At equilibrium the loaded shaft balances the mesh force and the friction moments
+//! (paper eq. 1 with the time derivatives removed):
+//!   gear side (load at the brake):  r_gb F + sum rho2_i f_i = T_brk
+//!   pinion side (brake imposed):    r_pb F + sum rho1_i f_i = T_mor
+//! with f_i = mu_i kappa_i F tanh(u_s/v_s) at the nominal speeds; mu_i depends on the pair
+//! load through the Hertz pressure, so F is found by fixed-point iteration (friction is a
+//! few per cent of F, the iteration contracts by that factor). The mesh deflection then
+//! solves sum_i k_i max(delta - g_i, 0) = F exactly (pairs closing their gaps in order).
+
+use super::grid::period_nodes;
+use super::model::{GearSystem, MeshState, MAX_PAIRS};
+use super::response::{DynamicResponse, PathSample, Signals};
+use crate::config::case::SpeedBoundary;
+
+/// Mesh deflection delta (m) with sum k_i max(delta - g_i, 0) = force (N), k_i > 0.
+/// Returns the smallest gap when the force is zero.
+pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
+    let n = k.len();
+    let mut order: [usize; MAX_PAIRS] = [0, 1, 2, 3];
+    order[..n].sort_by(|a, b| gap[*a].total_cmp(&gap[*b]));
+    let (mut ksum, mut kg) = (0.0, 0.0);
+    for j in 0..n {
+        let i = order[j];
+        ksum += k[i];
+        kg += k[i] * gap[i];
+        let delta = (force_n + kg) / ksum;
+        if j + 1 == n || delta <= gap[order[j + 1]] {
+            return delta;
+        }
+    }
+    0.0
+}
+
+/// Equilibrium mesh state at mesh phase `phase_rad`.
+pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
+    let p = sys.params;
+    let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
+    let rb1 = sys.pair.pinion.base_radius_m;
+    let (e_ext, _) = sys.external.at(phase_rad);
+    let mut ms = MeshState::default();
+    let mut k = [0.0; MAX_PAIRS];
+    let mut gap = [0.0; MAX_PAIRS];
+    let mut n = 0;
+    for (_, rho1) in sys.pair.pairs_in_contact(phase_rad) {
+        if n == MAX_PAIRS {
+            break;
+        }
+        ms.rho1_m[n] = rho1;
+        k[n] = sys.mesh.pair_stiffness_n_per_m(rho1);
+        gap[n] = sys.gap.at(rho1).0 - e_ext;
+        ms.stiffness_n_per_m[n] = k[n];
+        ms.stiffness_total_n_per_m += k[n];
+        n += 1;
+    }
+    ms.n_pairs = n;
+    let (torque, on_gear) = match p.speed_boundary {
+        SpeedBoundary::BrakeSpeedImposed => (p.motor_torque_nm, false),
+        _ => (p.brake_torque_nm, true),
+    };
+    let arm = if on_gear {
+        sys.pair.gear.base_radius_m
+    } else {
+        rb1
+    };
+    let mut force = torque / arm;
+    for _ in 0..8 {
+        ms.force_n = force;
+        let delta = deflection_for_force(&k[..n], &gap[..n], force);
+        ms.deflection_m = delta;
+        let mut sh = [0.0; MAX_PAIRS];
+        for i in 0..n {
+            sh[i] = k[i] * (delta - gap[i]).max(0.0) / force.max(1e-300);
+        }
+        sys.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+        // Friction moment per unit mesh force on the loaded shaft.
+        let mut moment_per_n = 0.0;
+        for i in 0..n {
+            let lever = if on_gear {
+                sys.pair.rho_gear(ms.rho1_m[i])
+            } else {
+                ms.rho1_m[i]
+            };
+            moment_per_n += lever * ms.friction_n[i] / force.max(1e-300);
+        }
+        let next = torque / (arm + moment_per_n);
+        let done = (next - force).abs() <= 1e-12 * force;
+        force = next;
+        if done {
+            break;
+        }
+    }
+    ms.force_n = force;
+    ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], force);
+    let mut sh = [0.0; MAX_PAIRS];
+    for i in 0..n {
+        sh[i] = k[i] * (ms.deflection_m - gap[i]).max(0.0) / force;
+    }
+    sys.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+    ms
+}
+
+/// Quasi-static response over one mesh period on the same grid as the dynamic solver.
+pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
+    let omega = sys.params.pinion_speed_rad_s;
+    let nodes = period_nodes(sys.pair, omega, steps_per_mesh_period);
+    let mut sig = Signals::default();
+    let mut path = Vec::with_capacity(2 * nodes.len());
+    for t in &nodes[..nodes.len() - 1] {
+        let phase = sys.phase_at(*t);
+        let ms = equilibrium(sys, phase);
+        sig.time_s.push(*t);
+        sig.phase_rad.push(phase);
+        sig.dte_m.push(ms.deflection_m);
+        sig.mesh_force_n.push(ms.force_n);
+        sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
+        for j in 0..2 {
+            let on = j < ms.n_pairs;
+            sig.friction_coefficient[j].push(if on { ms.friction_coefficient[j] } else { 0.0 });
+            sig.friction_n[j].push(if on { ms.friction_n[j] } else { 0.0 });
+            sig.pair_load_n[j].push(if on { ms.load_n[j] } else { 0.0 });
+        }
+        for i in 0..ms.n_pairs {
+            let rho1 = ms.rho1_m[i];
+            path.push(PathSample {
+                rho1_m: rho1,
+                load_n: ms.load_n[i],
+                pressure_pa: ms.pressure_pa[i],
+                half_width_m: ms.half_width_m[i],
+                friction_coefficient: ms.friction_coefficient[i],
+                friction_n: ms.friction_n[i],
+                pinion_surface_speed_m_per_s: omega * rho1,
+                gear_surface_speed_m_per_s: sys.params.gear_speed_rad_s
+                    * sys.pair.rho_gear(rho1),
+            });
+        }
+    }
+    path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));
+    // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).
+    let (mut fi, mut di) = (0.0, 0.0);
+    for w in nodes.windows(2) {
+        let ms = equilibrium(sys, sys.phase_at(0.5 * (w[0] + w[1])));
+        fi += ms.force_n * (w[1] - w[0]);
+        di += ms.deflection_m * (w[1] - w[0]);
+    }
+    let period = *nodes.last().unwrap_or(&1.0);
+    DynamicResponse {
+        mean_mesh_force_n: fi / period,
+        mean_dte_m: di / period,
+        signals: sig,
+        path,
+        periods_to_converge: 0,
+        periodicity_error: 0.0,
+        mesh_period_s: *nodes.last().unwrap_or(&0.0),
+        ..Default::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn deflection_closes_gaps_in_order() {
+        // Two equal springs, second gap 1 um: below 1e8*1e-6 = 100 N only one touches.
+        let k = [1e8, 1e8];
+        let g = [0.0, 1e-6];
+        assert!((deflection_for_force(&k, &g, 50.0) - 5e-7).abs() < 1e-18);
+        // Above: both, delta = (F + k g2) / 2k.
+        let d = deflection_for_force(&k, &g, 300.0);
+        assert!((d - (300.0 + 100.0) / 2e8).abs() < 1e-18);
+        // The force is reproduced.
+        let f: f64 = k.iter().zip(&g).map(|(k, g)| k * (d - g).max(0.0)).sum();
+        assert!((f - 300.0).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,106 @@
+//! Result of a steady-state dynamic (or quasi-static) evaluation.
+
+use serde::Serialize;
+
+/// One contact along the path of contact: what a tooth pair sees when it is at rho1.
+///
+/// Over one steady mesh period every position of the path is visited by some pair, so
+/// these samples sorted by rho1 are the history of one tooth pair through its whole
+/// engagement (all teeth alike, as the paper assumes).
+#[derive(Debug, Clone, Copy, Serialize, Default)]
+pub struct PathSample {
+    pub rho1_m: f64,
+    pub load_n: f64,
+    pub pressure_pa: f64,
+    pub half_width_m: f64,
+    pub friction_coefficient: f64,
+    pub friction_n: f64,
+    /// Pinion and gear surface speeds perpendicular to the line of action, m/s.
+    pub pinion_surface_speed_m_per_s: f64,
+    pub gear_surface_speed_m_per_s: f64,
+}
+
+/// Time series over the evaluated window (whole mesh periods).
+#[derive(Debug, Clone, Default)]
+pub struct Signals {
+    pub time_s: Vec<f64>,
+    /// Mesh phase, rad of pinion rotation (reduced to one mesh period).
+    pub phase_rad: Vec<f64>,
+    /// Dynamic transmission error: relative displacement along the line of action, m.
+    pub dte_m: Vec<f64>,
+    pub mesh_force_n: Vec<f64>,
+    pub mesh_stiffness_n_per_m: Vec<f64>,
+    /// Generalised displacements q (8 per sample) and velocities.
+    pub displacement: Vec<[f64; 8]>,
+    pub velocity: Vec<[f64; 8]>,
+    pub acceleration: Vec<[f64; 8]>,
+    /// Friction coefficient and signed friction force of the pair that entered contact
+    /// last (pair 0) and of the one ahead of it (pair 1; 0 when out of contact).
+    pub friction_coefficient: [Vec<f64>; 2],
+    pub friction_n: [Vec<f64>; 2],
+    pub pair_load_n: [Vec<f64>; 2],
+}
+
+/// A steady-state response.
+#[derive(Debug, Clone, Default)]
+pub struct DynamicResponse {
+    pub signals: Signals,
+    /// Samples along the path of contact over the last mesh period, sorted by rho1.
+    pub path: Vec<PathSample>,
+    /// Mesh periods integrated before the response repeated itself.
+    pub periods_to_converge: usize,
+    /// Relative change of DTE and mesh force over the last period checked.
+    pub periodicity_error: f64,
+    pub mesh_period_s: f64,
+    /// Time means over the evaluated window by the midpoint rule on the step midpoints
+    /// (second order; the mesh force jumps at mesh events, which lie on grid nodes, so a
+    /// trapezoid on the nodes would split each jump and be first order only).
+    pub mean_mesh_force_n: f64,
+    pub mean_dte_m: f64,
+    /// Integrator work (for benchmarks and the performance notes).
+    pub steps: usize,
+    pub rhs_evaluations: usize,
+    pub factorizations: usize,
+}
+
+impl DynamicResponse {
+    /// Load a pair carries at LOA position rho1 (linear interpolation along the path).
+    pub fn path_at(&self, rho1_m: f64) -> PathSample {
+        interpolate_path(&self.path, rho1_m)
+    }
+}
+
+/// Linear interpolation of path samples (sorted by rho1) at rho1; clamped at the ends.
+pub fn interpolate_path(path: &[PathSample], rho1_m: f64) -> PathSample {
+    if path.is_empty() {
+        return PathSample::default();
+    }
+    let j = path.partition_point(|s| s.rho1_m < rho1_m);
+    if j == 0 {
+        return path[0];
+    }
+    if j == path.len() {
+        return path[path.len() - 1];
+    }
+    let (a, b) = (&path[j - 1], &path[j]);
+    let span = b.rho1_m - a.rho1_m;
+    let t = if span > 0.0 {
+        (rho1_m - a.rho1_m) / span
+    } else {
+        0.0
+    };
+    let l = |x: f64, y: f64| x + (y - x) * t;
+    PathSample {
+        rho1_m,
+        load_n: l(a.load_n, b.load_n),
+        pressure_pa: l(a.pressure_pa, b.pressure_pa),
+        half_width_m: l(a.half_width_m, b.half_width_m),
+        friction_coefficient: l(a.friction_coefficient, b.friction_coefficient),
+        friction_n: l(a.friction_n, b.friction_n),
+        pinion_surface_speed_m_per_s: l(
+            a.pinion_surface_speed_m_per_s,
+            b.pinion_surface_speed_m_per_s,
+        ),
+        gear_surface_speed_m_per_s: l(a.gear_surface_speed_m_per_s, b.gear_surface_speed_m_per_s),
+    }
+}

@@ -1,0 +1,103 @@
+//! Headline numbers of a response (the quantities of the paper's section 4.1).
+
+use super::model::dof;
+use super::response::DynamicResponse;
+use super::spectrum::{amplitude_spectrum, time_rms, Spectrum};
+use serde::{Deserialize, Serialize};
+
+/// Scalar results of one steady-state (or quasi-static) evaluation, SI units.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct ResponseSummary {
+    pub dte_max_m: f64,
+    pub dte_min_m: f64,
+    pub dte_mean_m: f64,
+    pub mesh_force_mean_n: f64,
+    pub mesh_force_max_n: f64,
+    pub mesh_force_min_n: f64,
+    /// max / mean mesh force.
+    pub dynamic_factor: f64,
+    pub velocity_y_pinion_rms_m_per_s: f64,
+    /// Amplitudes of the first four mesh harmonics of dy_p/dt, m/s.
+    pub velocity_y_pinion_harmonics_m_per_s: [f64; 4],
+    pub friction_coefficient_max: f64,
+    pub friction_coefficient_mean_in_contact: f64,
+    pub friction_force_max_n: f64,
+}
+
+fn max(x: &[f64]) -> f64 {
+    x.iter().fold(f64::NEG_INFINITY, |m, v| m.max(*v))
+}
+
+fn min(x: &[f64]) -> f64 {
+    x.iter().fold(f64::INFINITY, |m, v| m.min(*v))
+}
+
+/// Spectrum of the pinion's y velocity over the evaluated window.
+pub fn velocity_y_spectrum(r: &DynamicResponse) -> Spectrum {
+    let s = &r.signals;
+    let v: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP]).collect();
+    let window_periods = evaluated_periods(r);
+    amplitude_spectrum(&s.time_s, &v, r.mesh_period_s, window_periods)
+}
+
+/// Whole mesh periods in the evaluated window.
+pub fn evaluated_periods(r: &DynamicResponse) -> usize {
+    let s = &r.signals;
+    if s.time_s.len() < 2 || r.mesh_period_s <= 0.0 {
+        return 1;
+    }
+    // Samples start at a period boundary and stop one node short of the last one.
+    let span = s.time_s[s.time_s.len() - 1] - s.time_s[0];
+    ((span / r.mesh_period_s).ceil() as usize).max(1)
+}
+
+impl ResponseSummary {
+    pub fn of(r: &DynamicResponse) -> Self {
+        let s = &r.signals;
+        if s.time_s.is_empty() {
+            return Self::default();
+        }
+        let window = r.mesh_period_s * evaluated_periods(r) as f64;
+        let mean_f = r.mean_mesh_force_n;
+        let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP]).collect();
+        let has_velocity = vy.iter().any(|v| *v != 0.0);
+        let mut harm = [0.0; 4];
+        if has_velocity {
+            let spec = velocity_y_spectrum(r);
+            for (h, a) in harm.iter_mut().enumerate() {
+                *a = spec.harmonic(h + 1);
+            }
+        }
+        let mu_all: Vec<f64> = r.path.iter().map(|p| p.friction_coefficient).collect();
+        let mu_in: Vec<f64> = r
+            .path
+            .iter()
+            .filter(|p| p.load_n > 0.0)
+            .map(|p| p.friction_coefficient)
+            .collect();
+        let fr: Vec<f64> = r.path.iter().map(|p| p.friction_n.abs()).collect();
+        let f_max = max(&s.mesh_force_n);
+        Self {
+            dte_max_m: max(&s.dte_m),
+            dte_min_m: min(&s.dte_m),
+            dte_mean_m: r.mean_dte_m,
+            mesh_force_mean_n: mean_f,
+            mesh_force_max_n: f_max,
+            mesh_force_min_n: min(&s.mesh_force_n),
+            dynamic_factor: if mean_f > 0.0 { f_max / mean_f } else { 0.0 },
+            velocity_y_pinion_rms_m_per_s: if has_velocity {
+                time_rms(&s.time_s, &vy, window)
+            } else {
+                0.0
+            },
+            velocity_y_pinion_harmonics_m_per_s: harm,
+            friction_coefficient_max: if mu_all.is_empty() { 0.0 } else { max(&mu_all) },
+            friction_coefficient_mean_in_contact: if mu_in.is_empty() {
+                0.0
+            } else {
+                mu_in.iter().sum::<f64>() / mu_in.len() as f64
+            },
+            friction_force_max_n: if fr.is_empty() { 0.0 } else { max(&fr) },
+        }
+    }
+}

@@ -1,0 +1,7 @@
+//! Studies: the assembled model of a case, the coupled dynamics-wear loop and its
+//! quasi-static twin, the wear states of the paper's section 4.1.
+
+pub mod model;
+pub mod wear_loop;
+
+pub use model::{Model, ModelError};

@@ -1,0 +1,121 @@
+//! The immutable model objects of one case, built once from a validated `Case`.
+
+use crate::config::case::{Case, LoadSharingModel};
+use crate::contact::friction::Friction;
+use crate::contact::hertz::effective_modulus_of;
+use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::model::GearSystem;
+use crate::dynamics::params::DynamicParams;
+use crate::dynamics::quasi_static::solve_quasi_static;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::steady::{solve_steady_state, DynamicsError, SteadyStateSettings};
+use crate::geometry::{GearPair, ProfileGrid};
+use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::potential_energy::ElasticPair;
+use crate::wear::{RoughnessLaw, WearState};
+
+/// A case that cannot be modelled (bad geometry or an unusable combination of settings).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelError(pub Vec<String>);
+
+impl std::fmt::Display for ModelError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0.join("; "))
+    }
+}
+
+impl std::error::Error for ModelError {}
+
+/// Everything a solver needs, built once per case.
+pub struct Model {
+    pub case: Case,
+    pub pair: GearPair,
+    pub elastic: ElasticPair,
+    pub mesh: MeshStiffness,
+    pub params: DynamicParams,
+    pub friction: Friction,
+    pub roughness: RoughnessLaw,
+    pub grid: ProfileGrid,
+    pub settings: SteadyStateSettings,
+    pub effective_modulus_pa: f64,
+    /// Non-fatal findings (undercut, formulas outside their fitted range).
+    pub warnings: Vec<String>,
+}
+
+impl Model {
+    pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        let pair = GearPair::from_case(&case.gear).map_err(|e| ModelError(e.0))?;
+        let mut warnings = pair.warnings.clone();
+        if case.contact.load_sharing == LoadSharingModel::Pedrero && pair.contact_ratio >= 2.0 {
+            return Err(ModelError(vec![format!(
+                "`contact.load_sharing` = \"pedrero\" (paper eq. 7) is defined for contact ratios between 1 and 2; this pair has {:.3}: use \"stiffness\"",
+                pair.contact_ratio
+            )]));
+        }
+        let elastic = ElasticPair::from_case(&case.materials);
+        let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
+        let mesh = MeshStiffness::new(&pair, &elastic, n_table, case.stiffness.fillet_foundation)
+            .map_err(|e| ModelError(e.0))?;
+        warnings.extend(mesh.warnings().iter().cloned());
+        let params = DynamicParams::from_case(case, &pair);
+        let friction = Friction::from_case(&case.friction);
+        let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
+        Ok(Self {
+            case: case.clone(),
+            effective_modulus_pa: effective_modulus_of(&case.materials),
+            elastic,
+            mesh,
+            params,
+            friction,
+            roughness: RoughnessLaw::from_case(&case.surface),
+            grid,
+            settings: SteadyStateSettings::from_case(&case.numerics),
+            pair,
+            warnings,
+        })
+    }
+
+    /// The dynamic system for a wear state (gap), external error and roughness (um).
+    pub fn system<'a>(
+        &'a self,
+        gap: &'a PairGap,
+        external: &'a ExternalError,
+        roughness_um: f64,
+    ) -> GearSystem<'a> {
+        GearSystem::new(
+            &self.pair,
+            &self.mesh,
+            &self.params,
+            &self.friction,
+            self.case.lubricant.viscosity_cp,
+            gap,
+            external,
+            self.case.contact.load_sharing,
+            roughness_um,
+            self.effective_modulus_pa,
+        )
+    }
+
+    /// Roughness that goes with a wear state, um.
+    pub fn roughness_for(&self, wear: &WearState) -> f64 {
+        self.roughness.rms_um(wear.max_pinion_m())
+    }
+
+    /// Steady-state dynamic response of the worn pair.
+    pub fn dynamic(
+        &self,
+        wear: &WearState,
+        external: &ExternalError,
+    ) -> Result<DynamicResponse, DynamicsError> {
+        let gap = wear.pair_gap(&self.grid);
+        let sys = self.system(&gap, external, self.roughness_for(wear));
+        solve_steady_state(&sys, &self.settings)
+    }
+
+    /// Quasi-static response of the worn pair.
+    pub fn quasi_static(&self, wear: &WearState, external: &ExternalError) -> DynamicResponse {
+        let gap = wear.pair_gap(&self.grid);
+        let sys = self.system(&gap, external, self.roughness_for(wear));
+        solve_quasi_static(&sys, self.settings.steps_per_mesh_period)
+    }
+}
