@@ -1,0 +1,249 @@
+//! The tribo-dynamic model checked against facts independent of the code: force balance,
+//! the quasi-static limit, periodicity of the spectrum, an independent eigen-solution,
+//! energy conservation and dissipation, and step convergence.
+
+use gearwear::config::load_case;
+use gearwear::dynamics::excitation::{ExternalError, PairGap};
+use gearwear::dynamics::integrator::{Rk4, Stepper};
+use gearwear::dynamics::modal::{linearised_matrices, modes};
+use gearwear::dynamics::model::{dof, GearSystem, State, NDOF};
+use gearwear::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
+use gearwear::study::Model;
+use gearwear::wear::WearState;
+use nalgebra::DMatrix;
+
+fn model(sets: &[&str]) -> Model {
+    let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+    Model::from_case(&load_case("", &sets).expect("valid case")).expect("valid model")
+}
+
+fn dynamic(m: &Model) -> gearwear::dynamics::response::DynamicResponse {
+    m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
+        .expect("steady state")
+}
+
+#[test]
+fn without_friction_mean_mesh_force_is_load_over_base_radius() {
+    // Periodic steady state: every mean acceleration vanishes, so the brake coupling carries
+    // T_brk and the gear balances r_gb mean(F) = T_brk exactly. Tolerance 1e-5: the
+    // steady-state criterion is 1e-6 per period and the midpoint-rule mean is second order.
+    for (shaft, boundary) in [("pinion", "motor_speed_imposed"), ("gear", "brake_speed_imposed")] {
+        let m = model(&[
+            "friction.model=none",
+            &format!("operating.load_torque_shaft={shaft}"),
+            &format!("operating.speed_boundary={boundary}"),
+        ]);
+        let r = dynamic(&m);
+        let rb = if shaft == "pinion" {
+            m.pair.pinion.base_radius_m
+        } else {
+            m.pair.gear.base_radius_m
+        };
+        let expected = 60.0 / rb;
+        let got = r.mean_mesh_force_n;
+        assert!(
+            ((got - expected) / expected).abs() < 1e-5,
+            "{shaft}/{boundary}: mean force {got} vs {expected}"
+        );
+    }
+}
+
+#[test]
+fn at_very_low_speed_dte_matches_quasi_static_te() {
+    // 0.2 Hz input: mesh frequency 3.8 Hz against a lowest mode of ~500 Hz, so inertia and
+    // damping forces are ~(3.8/500)^2 ~ 6e-5 of the elastic ones. The stiffness jumps start
+    // free vibrations that decay in ~1/(zeta omega) = 3 ms, 0.6 % of the 0.5 s mesh period:
+    // compare nodes more than 5 % of a period away from any mesh event.
+    let m = model(&[
+        "operating.input_speed_hz=0.2",
+        "friction.model=none",
+        "dynamics.mesh_damping_ratio=0.1",
+        "numerics.steps_per_mesh_period=400",
+    ]);
+    let w = WearState::new(m.grid.len());
+    let dynr = m.dynamic(&w, &ExternalError::none()).unwrap();
+    let qs = m.quasi_static(&w, &ExternalError::none());
+    let period = m.pair.mesh_angle_rad();
+    let events = [0.0, (m.pair.contact_ratio - 1.0) * period, period];
+    let n = qs.signals.dte_m.len();
+    let mut compared = 0;
+    for k in 0..n {
+        let ph = qs.signals.phase_rad[k];
+        if events.iter().any(|e| (ph - e).abs() < 0.05 * period) {
+            continue;
+        }
+        let (a, b) = (dynr.signals.dte_m[k], qs.signals.dte_m[k]);
+        // 1e-3: the inertia share above, plus the residual of the decayed transients.
+        assert!(((a - b) / b).abs() < 1e-3, "node {k}: {a} vs {b}");
+        compared += 1;
+    }
+    assert!(compared > n / 2);
+}
+
+#[test]
+fn spectrum_of_the_periodic_response_sits_on_mesh_harmonics() {
+    // A mesh-periodic response has energy only at multiples of the mesh frequency. With
+    // a Hann window, a harmonic also shows in its two neighbouring bins.
+    let m = model(&[]);
+    let r = dynamic(&m);
+    let s = velocity_y_spectrum(&r);
+    let b = s.bins_per_harmonic;
+    assert!(b >= 2);
+    let total: f64 = s.amplitude.iter().map(|a| a * a).sum();
+    let on: f64 = s
+        .amplitude
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| {
+            let rem = k % b;
+            rem == 0 || rem == 1 || rem == b - 1
+        })
+        .map(|(_, a)| a * a)
+        .sum();
+    assert!(on / total > 0.999, "share on harmonics {}", on / total);
+    // The largest peak is at a mesh harmonic bin.
+    let kmax = (1..s.amplitude.len())
+        .max_by(|x, y| s.amplitude[*x].total_cmp(&s.amplitude[*y]))
+        .unwrap();
+    assert_eq!(kmax % b, 0, "peak at bin {kmax}");
+    let f_mesh = m.params.mesh_frequency_hz(&m.pair);
+    assert!((s.frequency_hz[b] - f_mesh).abs() < 1e-9 * f_mesh);
+}
+
+#[test]
+fn natural_frequencies_match_dense_first_order_eigenvalues() {
+    // Independent method: eigenvalues of the undamped first-order matrix
+    // [[0, I], [-M^-1 K, 0]] (non-symmetric, Schur-based) are +-i omega.
+    for boundary in ["motor_speed_imposed", "brake_speed_imposed", "motor_slip"] {
+        let m = model(&[&format!("operating.speed_boundary={boundary}")]);
+        let gap = PairGap::none();
+        let ext = ExternalError::none();
+        let sys = m.system(&gap, &ext, 0.2);
+        let (mass, k, _) = linearised_matrices(&sys);
+        let n = mass.len();
+        let a = DMatrix::from_fn(2 * n, 2 * n, |i, j| {
+            if i < n {
+                if j == n + i {
+                    1.0
+                } else {
+                    0.0
+                }
+            } else if j < n {
+                -k[(i - n, j)] / mass[i - n]
+            } else {
+                0.0
+            }
+        });
+        let mut omegas: Vec<f64> = a
+            .complex_eigenvalues()
+            .iter()
+            .filter(|z| z.im >= 0.0)
+            .map(|z| z.im / (2.0 * std::f64::consts::PI))
+            .collect();
+        omegas.sort_by(f64::total_cmp);
+        let modes = modes(&sys);
+        assert_eq!(omegas.len(), modes.frequency_hz.len(), "{boundary}");
+        for (a, b) in omegas.iter().zip(&modes.frequency_hz) {
+            // Both are double-precision eigen-solvers of a matrix with entries spanning
+            // 12 decades: agree to 1e-6 relative (or 1e-3 Hz for the rigid-body zero).
+            assert!((a - b).abs() < 1e-6 * b.max(1e3), "{boundary}: {a} vs {b}");
+        }
+    }
+}
+
+/// Total energy of the linear, time-invariant conservative system: kinetic + bearing and
+/// coupling springs + mesh spring - work potential of the constant torques.
+fn energy(sys: &GearSystem, y: &State, k_mesh: f64) -> f64 {
+    let (k_lin, _, inv_mass) = sys.linear_parts();
+    let q = y.fixed_rows::<NDOF>(0).into_owned();
+    let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
+    let mut e = 0.5 * (q.transpose() * k_lin * q)[(0, 0)] - sys.external_forces().dot(&q);
+    for i in 0..NDOF {
+        if inv_mass[i] > 0.0 {
+            e += 0.5 * v[i] * v[i] / inv_mass[i];
+        }
+    }
+    let delta = sys.mesh_gradient().dot(&q);
+    e + 0.5 * k_mesh * delta * delta
+}
+
+#[test]
+fn undamped_frictionless_model_conserves_energy() {
+    // All damping off, no friction, and so slow a rotation that the stiffness is constant
+    // over the test: the equations must then be conservative (symmetric stiffness, mesh
+    // force derived from its potential). RK4 at h = 2e-8 s against a fastest mode of
+    // ~66 kHz (omega h ~ 0.008): energy error per step ~ (omega h)^6 ~ 3e-13, far below 1e-9.
+    let m = model(&[
+        "operating.input_speed_hz=1e-6",
+        "friction.model=none",
+        "dynamics.mesh_damping_ratio=0",
+        "dynamics.bearing_damping_pinion_n_s_per_m=0",
+        "dynamics.bearing_damping_gear_n_s_per_m=0",
+        "dynamics.coupling_damping_motor_nm_s_per_rad=0",
+        "dynamics.coupling_damping_brake_nm_s_per_rad=0",
+    ]);
+    let gap = PairGap::none();
+    let ext = ExternalError::none();
+    let sys = m.system(&gap, &ext, 0.2);
+    let mut y = sys.static_equilibrium();
+    // Kick it: velocities on every free coordinate.
+    y[NDOF + dof::YP] = 1e-3;
+    y[NDOF + dof::XG] = -2e-3;
+    y[NDOF + dof::PHI_P] = 0.05;
+    y[NDOF + dof::PHI_B] = -0.01;
+    let k_mesh = sys.derivative(0.0, &y).1.stiffness_total_n_per_m;
+    let e0 = energy(&sys, &y, k_mesh);
+    let mut rk = Rk4::<16>::new(2e-8).unwrap();
+    let mut f = |t: f64, y: &State| sys.derivative(t, y).0;
+    let mut t = 0.0;
+    let mut drift: f64 = 0.0;
+    let scale = e0.abs().max(1e-30);
+    for _ in 0..50 {
+        rk.advance(&mut f, &mut t, &mut y, 1000).unwrap();
+        let ms = sys.derivative(t, &y).1;
+        assert!(ms.force_n > 0.0, "contact must hold for a linear test");
+        drift = drift.max((energy(&sys, &y, k_mesh) - e0).abs() / scale);
+    }
+    assert!(drift < 1e-9, "relative energy drift {drift}");
+}
+
+#[test]
+fn friction_forces_only_dissipate() {
+    // Power of the friction forces on the whole system (with the nominal rotation added to
+    // the angular velocities) must equal -sum f_i u_s,i <= 0 (paper eq. 3-6 derived).
+    let m = model(&[]);
+    let gap = PairGap::none();
+    let ext = ExternalError::none();
+    let sys = m.system(&gap, &ext, 0.21);
+    let y = sys.static_equilibrium();
+    let mut checked = 0;
+    for i in 0..50 {
+        let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.pinion_speed_rad_s;
+        let (_, mut ms) = sys.derivative(t, &y);
+        let expected: f64 = (0..ms.n_pairs)
+            .map(|j| -ms.friction_n[j] * ms.sliding_m_per_s[j])
+            .sum();
+        ms.force_n = 0.0; // keep only friction in the generalised forces
+        let qf = sys.mesh_forces(&ms);
+        let mut v = [0.0; NDOF];
+        v[dof::PHI_M] = m.params.pinion_speed_rad_s;
+        v[dof::PHI_P] = m.params.pinion_speed_rad_s;
+        v[dof::PHI_G] = m.params.gear_speed_rad_s;
+        v[dof::PHI_B] = m.params.gear_speed_rad_s;
+        let power: f64 = (0..NDOF).map(|k| qf[k] * v[k]).sum();
+        assert!(power <= 1e-12, "friction power {power} > 0");
+        assert!((power - expected).abs() <= 1e-9 * expected.abs().max(1.0));
+        checked += (expected < 0.0) as usize;
+    }
+    assert!(checked > 40, "friction must act somewhere");
+}
+
+#[test]
+fn halving_the_step_changes_max_dte_by_less_than_a_thousandth() {
+    let a = ResponseSummary::of(&dynamic(&model(&["numerics.steps_per_mesh_period=200"])));
+    let b = ResponseSummary::of(&dynamic(&model(&["numerics.steps_per_mesh_period=400"])));
+    let rel = ((a.dte_max_m - b.dte_max_m) / b.dte_max_m).abs();
+    assert!(rel < 1e-3, "max DTE {} vs {}: {rel}", a.dte_max_m, b.dte_max_m);
+    let rel_f = ((a.mesh_force_mean_n - b.mesh_force_mean_n) / b.mesh_force_mean_n).abs();
+    assert!(rel_f < 1e-3, "mean force: {rel_f}");
+}
