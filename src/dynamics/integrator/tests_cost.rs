@@ -1,6 +1,7 @@
 //! Cost measurement on a 16-state system shaped like the gear model (prints only, no
 //! assertion on timing). Run with
-//! `cargo test --release --lib dynamics::integrator::tests_cost -- --ignored --nocapture`.
+//! `cargo test --release --lib dynamics::integrator::tests_cost -- --ignored --nocapture
+//! --test-threads=1`. Work counts are deterministic; times depend on the machine's load.
 
 use std::hint::black_box;
 use std::time::Instant;
