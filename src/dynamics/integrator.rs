@@ -13,7 +13,14 @@
 //!
 //! Both implement [`Stepper`]. A step allocates nothing on the heap: all vectors and
 //! matrices are `SVector`/`SMatrix` on the stack and the LU factorisation is a fixed-size
-//! one ([`lu`]). Work counters ([`StepStats`]) are returned per step and accumulated.
+//! hand-written one (`lu.rs`). Work counters ([`StepStats`]) are returned per step and
+//! accumulated.
+//!
+//! Measured cost (`tests_cost.rs`, release build, one test thread, on a shared 2-core
+//! machine under load, so noisy): on a 16-state stiff linear chain with h = 1e-5 s,
+//! 0.9-1.7 us per SDIRK step (6 `rhs` calls and 6 matrix-vector products, no Jacobian
+//! after the first) against 0.26-0.5 us per RK4 step (4 `rhs` calls), which on the stiff
+//! system would need steps of ~1e-8 s.
 //!
 //! Units: `t` and `h` are in the system's time unit (seconds in gearwear); `y` in whatever
 //! units the system uses; the absolute Newton tolerance is in the units of `y`.
@@ -37,6 +44,8 @@ mod rk4;
 mod sdirk;
 pub mod tableau;
 
+#[cfg(test)]
+mod tests_cost;
 #[cfg(test)]
 mod tests_linear;
 #[cfg(test)]
