@@ -157,6 +157,9 @@ fn degenerate_data_renders_without_panic() {
         vec![line("nan", vec![nan, f64::INFINITY], vec![1.0, nan])],
         vec![line("short y", vec![1.0, 2.0, 3.0], vec![1.0])],
         vec![line("negative", vec![1.0, 2.0], vec![-1.0, -2.0])],
+        vec![line("600 decades", vec![1.0, 2.0], vec![1e-300, 1e300])],
+        vec![line("subnormal", vec![1.0, 2.0], vec![5e-324, 1e-310])],
+        vec![line("200 decades", vec![1.0, 2.0], vec![1e-100, 1e100])],
         vec![line(
             "huge",
             vec![-f64::MAX, 1.0, f64::MAX],
