@@ -84,7 +84,7 @@ pub struct Panel {
     pub series: Vec<Series>,
     /// Vertical markers `(x, label)`, drawn dashed grey across the panel.
     pub vlines: Vec<(f64, String)>,
-    /// Logarithmic y axis; points with y <= 0 are then skipped.
+    /// Logarithmic y axis; points with y outside [1e-100, 1e100] (e.g. y <= 0) are skipped.
     pub log_y: bool,
     pub kind: PanelKind,
 }
@@ -202,10 +202,15 @@ where
 /// overflows (i32 add) for points far outside the axis range.
 const LIM: f64 = 1e300;
 
-/// Plottable points of a series: |v| <= LIM (so finite), and y >= 1/LIM on a log axis.
+/// Log-axis data window: plotters' log ticks compute end/start, which overflows (and then
+/// loops ~usize::MAX times) beyond ~308 decades; 200 decades plus margins stay clear of it.
+const LOG_LIM: f64 = 1e100;
+
+/// Plottable points: |v| <= LIM (so finite), and y in [1/LOG_LIM, LOG_LIM] on a log axis.
 fn clean_points(s: &Series, log_y: bool) -> Vec<(f64, f64)> {
     let ok = |v: f64| v.abs() <= LIM; // false for NaN and inf too
-    let keep = |&(x, y): &(f64, f64)| ok(x) && ok(y) && (!log_y || y >= LIM.recip());
+    let log_ok = |y: f64| !log_y || (LOG_LIM.recip()..=LOG_LIM).contains(&y);
+    let keep = |&(x, y): &(f64, f64)| ok(x) && ok(y) && log_ok(y);
     s.x.iter()
         .zip(&s.y)
         .map(|(&x, &y)| (x, y))
@@ -226,7 +231,8 @@ fn padded_range(values: impl IntoIterator<Item = f64>, log: bool) -> (f64, f64) 
     }
     // Clamp so that spans and margins below cannot overflow to infinity.
     (lo, hi) = (lo.clamp(-LIM, LIM), hi.clamp(-LIM, LIM));
-    if !(hi - lo > 1e-9 * lo.abs().max(hi.abs()) && hi - lo > 1e-300) {
+    // Spans below 1e-6 of the magnitude would need ticks finer than 9-digit labels resolve.
+    if !(hi - lo > 1e-6 * lo.abs().max(hi.abs()) && hi - lo > 1e-300) {
         let half = 0.5 * if log || lo == 0.0 { 1.0 } else { lo.abs() };
         (lo, hi) = (lo - half, hi + half);
     }
@@ -234,11 +240,11 @@ fn padded_range(values: impl IntoIterator<Item = f64>, log: bool) -> (f64, f64) 
     (lo - margin, hi + margin)
 }
 
-/// Tick text: rounded to 6 significant digits (hides float noise such as 0.30000000000000004
+/// Tick text: rounded to 9 significant digits (hides float noise such as 0.30000000000000004
 /// and "-0.0"), "0" for |v| <= `zero_below` (plotters' ticks at zero can come out as
 /// ~1e-16), shortest form, exponent notation outside [1e-3, 1e5).
 fn tick_label(v: f64, zero_below: f64) -> String {
-    let r: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    let r: f64 = format!("{v:.8e}").parse().unwrap_or(v);
     match r.abs() {
         a if a <= zero_below => "0".to_string(),
         a if (1e-3..1e5).contains(&a) => format!("{r}"),
@@ -260,8 +266,7 @@ where
     b.margin(8).x_label_area_size(40).y_label_area_size(70);
     if panel.log_y {
         let (l0, l1) = padded_range(ys.map(f64::log10), true);
-        // Keep 10^l finite and nonzero: data lie in [1e-300, 1e300] (clean_points).
-        let (y0, y1) = (10f64.powf(l0.max(-300.0)), 10f64.powf(l1.min(300.0)));
+        let (y0, y1) = (10f64.powf(l0), 10f64.powf(l1));
         let chart = b.build_cartesian_2d(x0..x1, (y0..y1).log_scale());
         fill_chart(chart.map_err(draw_err)?, panel, &pts, y0)
     } else {
@@ -362,10 +367,10 @@ mod tests {
     /// Asserts `padded_range(v, log) == want`; 1e-12 is far above the rounding (~1e-15) of
     /// these few operations on O(1) decimals and far below the checked 0.05 differences.
     fn check(v: &[f64], log: bool, want: (f64, f64)) {
-        let got = padded_range(v.iter().copied(), log);
+        let (lo, hi) = padded_range(v.iter().copied(), log);
         assert!(
-            (got.0 - want.0).abs() < 1e-12 && (got.1 - want.1).abs() < 1e-12,
-            "{got:?}"
+            (lo - want.0).abs() < 1e-12 && (hi - want.1).abs() < 1e-12,
+            "{lo} {hi}"
         );
     }
 
@@ -376,6 +381,8 @@ mod tests {
         check(&[3.0, 3.0], false, (1.35, 4.65)); // constant: +-50 % to [1.5, 4.5], then margins
         check(&[0.0], false, (-0.55, 0.55)); // constant 0: +-0.5, then margins
         check(&[-2.0], true, (-2.55, -1.45)); // log axis (log10 values): +-half a decade
+        let (lo, hi) = padded_range([1.0, 1.0 + 1e-8], false); // span 1e-8 < 1e-6 relative:
+        assert!(hi - lo > 1.0); // widened by +-0.5 like a constant
         let inf = f64::INFINITY;
         let (lo, hi) = padded_range([f64::NAN, inf, -f64::MAX, f64::MAX], false);
         assert!(lo.is_finite() && hi.is_finite() && hi > lo);
@@ -383,15 +390,10 @@ mod tests {
 
     #[test]
     fn tick_labels_hide_float_noise() {
-        let cases = [
-            (0.1 + 0.2, "0.3"),
-            (-0.0, "0"),
-            (500.0, "500"),
-            (2.5e-6, "2.5e-6"),
-        ];
-        for (v, want) in cases {
-            assert_eq!(tick_label(v, 0.0), want);
-        }
+        assert_eq!(tick_label(0.1 + 0.2, 0.0), "0.3");
+        assert_eq!(tick_label(-0.0, 0.0), "0");
+        assert_eq!(tick_label(500.0, 0.0), "500");
+        assert_eq!(tick_label(2.5e-6, 0.0), "2.5e-6");
         assert_eq!(tick_label(2.220446049250313e-16, 1e-9), "0"); // noise on a unit-scale axis
     }
 }
