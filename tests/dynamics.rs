@@ -175,6 +175,8 @@ fn undamped_frictionless_model_conserves_energy() {
     // ~66 kHz (omega h ~ 0.008): energy error per step ~ (omega h)^6 ~ 3e-13, far below 1e-9.
     let m = model(&[
         "operating.input_speed_hz=1e-6",
+        // The motor's slip law is a damper; an imposed motor angle is conservative.
+        "operating.speed_boundary=motor_speed_imposed",
         "friction.model=none",
         "dynamics.mesh_damping_ratio=0",
         "dynamics.bearing_damping_pinion_n_s_per_m=0",
