@@ -8,13 +8,13 @@
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
 //! -> `io` / `report` -> `cli`.
 
+pub mod cli;
 pub mod config;
 pub mod contact;
-pub mod geometry;
-pub mod stiffness;
 pub mod dynamics;
-pub mod report;
-pub mod cli;
+pub mod geometry;
 pub mod io;
+pub mod report;
+pub mod stiffness;
 pub mod study;
 pub mod wear;

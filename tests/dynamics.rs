@@ -27,7 +27,10 @@ fn without_friction_mean_mesh_force_is_load_over_base_radius() {
     // Periodic steady state: every mean acceleration vanishes, so the brake coupling carries
     // T_brk and the gear balances r_gb mean(F) = T_brk exactly. Tolerance 1e-5: the
     // steady-state criterion is 1e-6 per period and the midpoint-rule mean is second order.
-    for (shaft, boundary) in [("pinion", "motor_speed_imposed"), ("gear", "brake_speed_imposed")] {
+    for (shaft, boundary) in [
+        ("pinion", "motor_speed_imposed"),
+        ("gear", "brake_speed_imposed"),
+    ] {
         let m = model(&[
             "friction.model=none",
             &format!("operating.load_torque_shaft={shaft}"),
@@ -245,7 +248,12 @@ fn halving_the_step_changes_max_dte_by_less_than_a_thousandth() {
     let a = ResponseSummary::of(&dynamic(&model(&["numerics.steps_per_mesh_period=200"])));
     let b = ResponseSummary::of(&dynamic(&model(&["numerics.steps_per_mesh_period=400"])));
     let rel = ((a.dte_max_m - b.dte_max_m) / b.dte_max_m).abs();
-    assert!(rel < 1e-3, "max DTE {} vs {}: {rel}", a.dte_max_m, b.dte_max_m);
+    assert!(
+        rel < 1e-3,
+        "max DTE {} vs {}: {rel}",
+        a.dte_max_m,
+        b.dte_max_m
+    );
     let rel_f = ((a.mesh_force_mean_n - b.mesh_force_mean_n) / b.mesh_force_mean_n).abs();
     assert!(rel_f < 1e-3, "mean force: {rel_f}");
 }

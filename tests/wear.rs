@@ -24,7 +24,11 @@ fn no_wear_at_the_pitch_point() {
     let m = model(&[]);
     let path = qs_path(&m);
     let mut grid = ProfileGrid::new(&m.pair, 3);
-    grid.rho_pinion_m = vec![m.pair.rho_start_m + 1e-4, m.pair.rho_pitch_m, m.pair.rho_end_m - 1e-4];
+    grid.rho_pinion_m = vec![
+        m.pair.rho_start_m + 1e-4,
+        m.pair.rho_pitch_m,
+        m.pair.rho_end_m - 1e-4,
+    ];
     let inc = per_cycle_wear(&grid, &path, 2.5e-16, 19.0 / 31.0);
     let scale = inc.pinion_m[0].max(inc.pinion_m[2]);
     assert!(scale > 0.0);
@@ -49,7 +53,10 @@ fn gear_to_pinion_wear_ratio_is_sliding_ratio_times_z1_over_z2() {
         let ug = wg * m.grid.rho_gear_m[i];
         let expected = up / ug * 19.0 / 31.0;
         let got = inc.gear_m[i] / inc.pinion_m[i];
-        assert!((got / expected - 1.0).abs() < 1e-12, "point {i}: {got} vs {expected}");
+        assert!(
+            (got / expected - 1.0).abs() < 1e-12,
+            "point {i}: {got} vs {expected}"
+        );
         checked += 1;
     }
     assert!(checked > 80);
@@ -103,7 +110,10 @@ fn transmission_error_of_known_wear_matches_hand_computation() {
             g0
         };
         // The gap table is linear between grid points, exact for linear wear.
-        assert!((e - expected).abs() < 1e-15 + 1e-12 * expected, "{phase}: {e} vs {expected}");
+        assert!(
+            (e - expected).abs() < 1e-15 + 1e-12 * expected,
+            "{phase}: {e} vs {expected}"
+        );
     }
 }
 
@@ -128,13 +138,19 @@ fn a_resumed_run_equals_an_uninterrupted_one() {
     let resumed = run_wear(&m, back, &mut |_| Ok(())).unwrap();
     // Bit-for-bit: the checkpoint must restore every double exactly (serde_json with
     // float_roundtrip) and the loop must be deterministic.
-    assert!(resumed == full, "resumed run differs from the uninterrupted one");
+    assert!(
+        resumed == full,
+        "resumed run differs from the uninterrupted one"
+    );
 }
 
 #[test]
 fn halving_block_and_threshold_changes_final_wear_by_less_than_two_percent() {
     let final_max = |block: &str, thr: &str| {
-        let m = model(&[&format!("wear.block_cycles={block}"), &format!("wear.threshold_um={thr}")]);
+        let m = model(&[
+            &format!("wear.block_cycles={block}"),
+            &format!("wear.threshold_um={thr}"),
+        ]);
         let r = run_wear(&m, WearRun::new(WearMode::Dynamic), &mut |_| Ok(())).unwrap();
         (r.last().unwrap().wear.max_pinion_m(), r.records.len())
     };

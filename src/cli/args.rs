@@ -7,7 +7,11 @@ use std::path::PathBuf;
 use super::CliError;
 
 #[derive(Debug, Parser)]
-#[command(name = "gearwear", version, about = "Dynamic wear prediction of spur gears (Coatings 2022, 12, 1250)")]
+#[command(
+    name = "gearwear",
+    version,
+    about = "Dynamic wear prediction of spur gears (Coatings 2022, 12, 1250)"
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,

@@ -16,7 +16,10 @@ use std::path::Path;
 
 /// Read a transmission-error file: CSV with header `pinion_angle_deg,error_um`, one row per
 /// sample over (at least) one mesh period; angles are reduced modulo the mesh period.
-pub fn read_transmission_error(path: &Path, mesh_angle_rad: f64) -> Result<ExternalError, CliError> {
+pub fn read_transmission_error(
+    path: &Path,
+    mesh_angle_rad: f64,
+) -> Result<ExternalError, CliError> {
     let bad = |m: String| CliError::input(format!("--transmission-error {}: {m}", path.display()));
     let mut r = csv::Reader::from_path(path).map_err(|e| bad(format!("cannot read: {e}")))?;
     let headers = r.headers().map_err(|e| bad(e.to_string()))?.clone();
@@ -57,7 +60,16 @@ pub fn write_dynamic_outputs(
     let ms = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
     let t_ms = ms(&s.time_s);
     let col = |k: usize, which: &Vec<[f64; 8]>| which.iter().map(|v| v[k]).collect::<Vec<_>>();
-    let names = ["x_pinion", "y_pinion", "x_gear", "y_gear", "phi_motor", "phi_pinion", "phi_gear", "phi_brake"];
+    let names = [
+        "x_pinion",
+        "y_pinion",
+        "x_gear",
+        "y_gear",
+        "phi_motor",
+        "phi_pinion",
+        "phi_gear",
+        "phi_brake",
+    ];
     let units = ["m", "m", "m", "m", "rad", "rad", "rad", "rad"];
     let mut t = Table::new()
         .col("time_s", s.time_s.clone())
@@ -65,33 +77,67 @@ pub fn write_dynamic_outputs(
         .col("dte_um", um(&s.dte_m))
         .col("mesh_force_n", s.mesh_force_n.clone())
         .col("mesh_stiffness_n_per_m", s.mesh_stiffness_n_per_m.clone())
-        .col("friction_coefficient_pair0", s.friction_coefficient[0].clone())
-        .col("friction_coefficient_pair1", s.friction_coefficient[1].clone())
+        .col(
+            "friction_coefficient_pair0",
+            s.friction_coefficient[0].clone(),
+        )
+        .col(
+            "friction_coefficient_pair1",
+            s.friction_coefficient[1].clone(),
+        )
         .col("friction_force_pair0_n", s.friction_n[0].clone())
         .col("friction_force_pair1_n", s.friction_n[1].clone())
         .col("load_pair0_n", s.pair_load_n[0].clone())
         .col("load_pair1_n", s.pair_load_n[1].clone());
     for k in 0..8 {
-        t = t.col(&format!("{}_{}", names[k], units[k]), col(k, &s.displacement));
+        t = t.col(
+            &format!("{}_{}", names[k], units[k]),
+            col(k, &s.displacement),
+        );
     }
     for k in 0..8 {
-        t = t.col(&format!("d{}_{}_per_s", names[k], units[k]), col(k, &s.velocity));
+        t = t.col(
+            &format!("d{}_{}_per_s", names[k], units[k]),
+            col(k, &s.velocity),
+        );
     }
     for k in 0..8 {
-        t = t.col(&format!("dd{}_{}_per_s2", names[k], units[k]), col(k, &s.acceleration));
+        t = t.col(
+            &format!("dd{}_{}_per_s2", names[k], units[k]),
+            col(k, &s.acceleration),
+        );
     }
     t.save(&dir.join("timeseries.csv"))?;
 
     let p = &r.path;
     Table::new()
         .col("rho1_mm", p.iter().map(|x| x.rho1_m * 1e3).collect())
-        .col("pinion_radius_mm", p.iter().map(|x| model.pair.pinion.radius_at_rho(x.rho1_m) * 1e3).collect())
+        .col(
+            "pinion_radius_mm",
+            p.iter()
+                .map(|x| model.pair.pinion.radius_at_rho(x.rho1_m) * 1e3)
+                .collect(),
+        )
         .col("load_n", p.iter().map(|x| x.load_n).collect())
-        .col("hertz_pressure_mpa", p.iter().map(|x| x.pressure_pa * 1e-6).collect())
-        .col("half_width_um", p.iter().map(|x| x.half_width_m * 1e6).collect())
-        .col("friction_coefficient", p.iter().map(|x| x.friction_coefficient).collect())
+        .col(
+            "hertz_pressure_mpa",
+            p.iter().map(|x| x.pressure_pa * 1e-6).collect(),
+        )
+        .col(
+            "half_width_um",
+            p.iter().map(|x| x.half_width_m * 1e6).collect(),
+        )
+        .col(
+            "friction_coefficient",
+            p.iter().map(|x| x.friction_coefficient).collect(),
+        )
         .col("friction_force_n", p.iter().map(|x| x.friction_n).collect())
-        .col("sliding_m_per_s", p.iter().map(|x| x.pinion_surface_speed_m_per_s - x.gear_surface_speed_m_per_s).collect())
+        .col(
+            "sliding_m_per_s",
+            p.iter()
+                .map(|x| x.pinion_surface_speed_m_per_s - x.gear_surface_speed_m_per_s)
+                .collect(),
+        )
         .save(&dir.join("path.csv"))?;
 
     let summary = ResponseSummary::of(r);
@@ -105,37 +151,80 @@ pub fn write_dynamic_outputs(
             .save(&dir.join("spectrum.csv"))?;
         let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
         save_png(
-            &single(&format!("Pinion y velocity ({label})"), panel("time (ms)", "dy_p/dt (mm/s)", vec![Curve::new("", t_ms.clone(), vy)])),
+            &single(
+                &format!("Pinion y velocity ({label})"),
+                panel(
+                    "time (ms)",
+                    "dy_p/dt (mm/s)",
+                    vec![Curve::new("", t_ms.clone(), vy)],
+                ),
+            ),
             &dir.join("velocity_y_pinion.png"),
         )?;
         save_png(
             &single(
                 &format!("Spectrum of dy_p/dt ({label})"),
-                spectrum_panel("amplitude (mm/s)", &spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh, f_mesh),
+                spectrum_panel(
+                    "amplitude (mm/s)",
+                    &spec.frequency_hz,
+                    &ms(&spec.amplitude),
+                    5.0 * f_mesh,
+                    f_mesh,
+                ),
             ),
             &dir.join("spectrum_velocity_y_pinion.png"),
         )?;
     }
     save_png(
-        &single(&format!("Dynamic transmission error ({label})"), panel("time (ms)", "DTE (um)", vec![Curve::new("", t_ms.clone(), um(&s.dte_m))])),
+        &single(
+            &format!("Dynamic transmission error ({label})"),
+            panel(
+                "time (ms)",
+                "DTE (um)",
+                vec![Curve::new("", t_ms.clone(), um(&s.dte_m))],
+            ),
+        ),
         &dir.join("dte.png"),
     )?;
     save_png(
-        &single(&format!("Mesh force ({label})"), panel("time (ms)", "F (N)", vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())])),
+        &single(
+            &format!("Mesh force ({label})"),
+            panel(
+                "time (ms)",
+                "F (N)",
+                vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
+            ),
+        ),
         &dir.join("mesh_force.png"),
     )?;
     let rho_mm: Vec<f64> = p.iter().map(|x| x.rho1_m * 1e3).collect();
     save_png(
         &single(
             &format!("Friction coefficient along the path of contact ({label})"),
-            panel("pinion roll distance rho1 (mm)", "mu (-)", vec![Curve::new("", rho_mm.clone(), p.iter().map(|x| x.friction_coefficient).collect())]),
+            panel(
+                "pinion roll distance rho1 (mm)",
+                "mu (-)",
+                vec![Curve::new(
+                    "",
+                    rho_mm.clone(),
+                    p.iter().map(|x| x.friction_coefficient).collect(),
+                )],
+            ),
         ),
         &dir.join("friction_coefficient.png"),
     )?;
     save_png(
         &single(
             &format!("Friction force along the path of contact ({label})"),
-            panel("pinion roll distance rho1 (mm)", "f (N)", vec![Curve::new("", rho_mm, p.iter().map(|x| x.friction_n).collect())]),
+            panel(
+                "pinion roll distance rho1 (mm)",
+                "f (N)",
+                vec![Curve::new(
+                    "",
+                    rho_mm,
+                    p.iter().map(|x| x.friction_n).collect(),
+                )],
+            ),
         ),
         &dir.join("friction_force.png"),
     )?;
@@ -180,17 +269,22 @@ pub fn run(a: &DynamicsArgs) -> Result<(), CliError> {
         None => ExternalError::none(),
     };
     let wear = crate::wear::WearState::new(model.grid.len());
-    let r = model.dynamic(&wear, &external).map_err(|e| CliError::Failed(e.into()))?;
+    let r = model
+        .dynamic(&wear, &external)
+        .map_err(|e| CliError::Failed(e.into()))?;
     std::fs::create_dir_all(&a.out)?;
     let mut v = write_dynamic_outputs(&model, &r, &a.out, "new teeth")?;
-    v["metadata"] = serde_json::to_value(RunMetadata::new("dynamics", &case)).map_err(anyhow::Error::from)?;
+    v["metadata"] =
+        serde_json::to_value(RunMetadata::new("dynamics", &case)).map_err(anyhow::Error::from)?;
     v["warnings"] = json!(model.warnings);
     json_write(&a.out.join("summary.json"), &v)?;
     eprintln!(
         "dynamics: max DTE {:.3} um, mean mesh force {:.1} N, RMS dy_p/dt {:.4} mm/s -> {}",
         v["dte"]["max_um"].as_f64().unwrap_or(f64::NAN),
         v["mesh_force"]["mean_n"].as_f64().unwrap_or(f64::NAN),
-        v["velocity_y_pinion"]["rms_mm_per_s"].as_f64().unwrap_or(f64::NAN),
+        v["velocity_y_pinion"]["rms_mm_per_s"]
+            .as_f64()
+            .unwrap_or(f64::NAN),
         a.out.display()
     );
     Ok(())

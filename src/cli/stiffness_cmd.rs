@@ -24,14 +24,26 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
     let gap = PairGap::none();
     let ext = ExternalError::none();
     let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
-    let mut cols: Vec<Vec<f64>> = vec![Vec::with_capacity(SAMPLES); 12];
+    let mut cols: Vec<Vec<f64>> = (0..12).map(|_| Vec::with_capacity(SAMPLES)).collect();
     for i in 0..SAMPLES {
         let phase = pair.mesh_angle_rad() * i as f64 / SAMPLES as f64;
         let eq = equilibrium(&sys, phase);
         let total: f64 = (0..eq.n_pairs).map(|j| eq.stiffness_n_per_m[j]).sum();
         let get = |a: &[f64; 4], j: usize| if j < eq.n_pairs { a[j] } else { f64::NAN };
-        let ped = |j: usize| if j < eq.n_pairs { pedrero_share(pair, eq.rho1_m[j]) } else { 0.0 };
-        let by_k = |j: usize| if j < eq.n_pairs { eq.stiffness_n_per_m[j] / total } else { 0.0 };
+        let ped = |j: usize| {
+            if j < eq.n_pairs {
+                pedrero_share(pair, eq.rho1_m[j])
+            } else {
+                0.0
+            }
+        };
+        let by_k = |j: usize| {
+            if j < eq.n_pairs {
+                eq.stiffness_n_per_m[j] / total
+            } else {
+                0.0
+            }
+        };
         let row = [
             phase.to_degrees(),
             get(&eq.rho1_m, 0) * 1e3,
@@ -104,7 +116,10 @@ pub fn figure2(model: &Model, t: &Table) -> Figure {
             ),
             panel(
                 "pinion angle within a mesh period (deg)",
-                &format!("quasi-static TE (um) at {:.0} N", model.params.brake_torque_nm / model.pair.gear.base_radius_m),
+                &format!(
+                    "quasi-static TE (um) at {:.0} N",
+                    model.params.brake_torque_nm / model.pair.gear.base_radius_m
+                ),
                 vec![Curve::new("", x, t.columns[10].clone())],
             ),
         ],
@@ -155,7 +170,8 @@ pub fn run(a: &StiffnessArgs) -> Result<(), CliError> {
         "pitch_point_rho1_mm": model.pair.rho_pitch_m * 1e3,
         "base_pitch_mm": model.pair.base_pitch_m * 1e3,
     });
-    v["metadata"] = serde_json::to_value(RunMetadata::new("stiffness", &case)).map_err(anyhow::Error::from)?;
+    v["metadata"] =
+        serde_json::to_value(RunMetadata::new("stiffness", &case)).map_err(anyhow::Error::from)?;
     v["warnings"] = json!(model.warnings);
     json_write(&a.out.join("summary.json"), &v)?;
     eprintln!(

@@ -32,7 +32,10 @@ fn load_checkpoint(dir: &Path, mode: WearMode, hash: &str) -> Result<WearRun, Cl
         return Ok(WearRun::new(mode));
     };
     let c: Checkpoint = serde_json::from_str(&text).map_err(|e| {
-        CliError::input(format!("--resume: {} is not a gearwear checkpoint: {e}", p.display()))
+        CliError::input(format!(
+            "--resume: {} is not a gearwear checkpoint: {e}",
+            p.display()
+        ))
     })?;
     if c.case_sha256 != hash {
         return Err(CliError::input(format!(
@@ -115,33 +118,72 @@ pub fn at_cycles(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 pub fn write_run_tables(model: &Model, run: &WearRun, dir: &Path) -> anyhow::Result<()> {
     let m = run.mode.name();
     let rec = &run.records;
-    let s = |f: &dyn Fn(&crate::study::wear_loop::UpdateRecord) -> f64| rec.iter().map(f).collect::<Vec<_>>();
+    let s = |f: &dyn Fn(&crate::study::wear_loop::UpdateRecord) -> f64| {
+        rec.iter().map(f).collect::<Vec<_>>()
+    };
     Table::new()
         .col("update", (0..rec.len()).map(|i| i as f64).collect())
         .col("cycles", s(&|r| r.wear.cycles))
         .col("max_wear_pinion_um", s(&|r| r.wear.max_pinion_m() * 1e6))
         .col("max_wear_gear_um", s(&|r| r.wear.max_gear_m() * 1e6))
-        .col("max_wear_rate_pinion_um_per_kcycle", s(&|r| r.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9))
+        .col(
+            "max_wear_rate_pinion_um_per_kcycle",
+            s(&|r| r.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9),
+        )
         .col("roughness_um", s(&|r| r.roughness_um))
         .col("mesh_force_mean_n", s(&|r| r.summary.mesh_force_mean_n))
         .col("mesh_force_max_n", s(&|r| r.summary.mesh_force_max_n))
         .col("dte_max_um", s(&|r| r.summary.dte_max_m * 1e6))
-        .col("velocity_y_pinion_rms_mm_per_s", s(&|r| r.summary.velocity_y_pinion_rms_m_per_s * 1e3))
-        .col("friction_coefficient_max", s(&|r| r.summary.friction_coefficient_max))
-        .col("mesh_harmonic1_mm_per_s", s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[0] * 1e3))
-        .col("mesh_harmonic2_mm_per_s", s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[1] * 1e3))
-        .col("mesh_harmonic3_mm_per_s", s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[2] * 1e3))
-        .col("mesh_harmonic4_mm_per_s", s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[3] * 1e3))
+        .col(
+            "velocity_y_pinion_rms_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_rms_m_per_s * 1e3),
+        )
+        .col(
+            "friction_coefficient_max",
+            s(&|r| r.summary.friction_coefficient_max),
+        )
+        .col(
+            "mesh_harmonic1_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[0] * 1e3),
+        )
+        .col(
+            "mesh_harmonic2_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[1] * 1e3),
+        )
+        .col(
+            "mesh_harmonic3_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[2] * 1e3),
+        )
+        .col(
+            "mesh_harmonic4_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[3] * 1e3),
+        )
         .save(&dir.join(format!("updates_{m}.csv")))?;
     let g = &model.grid;
-    let mut t = Table::new().col("rho1_mm", g.rho_pinion_m.iter().map(|x| x * 1e3).collect())
-        .col("pinion_radius_mm", g.radius_pinion_m.iter().map(|x| x * 1e3).collect())
-        .col("gear_radius_mm", g.radius_gear_m.iter().map(|x| x * 1e3).collect());
+    let mut t = Table::new()
+        .col("rho1_mm", g.rho_pinion_m.iter().map(|x| x * 1e3).collect())
+        .col(
+            "pinion_radius_mm",
+            g.radius_pinion_m.iter().map(|x| x * 1e3).collect(),
+        )
+        .col(
+            "gear_radius_mm",
+            g.radius_gear_m.iter().map(|x| x * 1e3).collect(),
+        );
     for (i, r) in rec.iter().enumerate() {
         t = t
-            .col(&format!("wear_pinion_um_u{i}"), r.wear.pinion_m.iter().map(|x| x * 1e6).collect())
-            .col(&format!("wear_gear_um_u{i}"), r.wear.gear_m.iter().map(|x| x * 1e6).collect())
-            .col(&format!("rate_pinion_um_per_kcycle_u{i}"), r.increment_pinion_m.iter().map(|x| x * 1e9).collect());
+            .col(
+                &format!("wear_pinion_um_u{i}"),
+                r.wear.pinion_m.iter().map(|x| x * 1e6).collect(),
+            )
+            .col(
+                &format!("wear_gear_um_u{i}"),
+                r.wear.gear_m.iter().map(|x| x * 1e6).collect(),
+            )
+            .col(
+                &format!("rate_pinion_um_per_kcycle_u{i}"),
+                r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+            );
     }
     t.save(&dir.join(format!("wear_profiles_{m}.csv")))
 }
@@ -156,24 +198,59 @@ pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<(&'static str, Figu
     for run in runs {
         let m = run.mode.name();
         if let Some(r0) = run.records.first() {
-            f11_force.push(Curve::new(format!("{m}"), r0.path_rho1_m.iter().map(|x| x * 1e3).collect(), r0.path_load_n.clone()));
-            f11_wear.push(Curve::new(format!("{m}"), rho_mm.clone(), r0.increment_pinion_m.iter().map(|x| x * 1e9).collect()));
+            f11_force.push(Curve::new(
+                m,
+                r0.path_rho1_m.iter().map(|x| x * 1e3).collect(),
+                r0.path_load_n.clone(),
+            ));
+            f11_wear.push(Curve::new(
+                m,
+                rho_mm.clone(),
+                r0.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+            ));
         }
         for (i, r) in run.records.iter().enumerate() {
             if i == 0 || i + 1 == run.records.len() || i % 2 == 0 {
-                f12.push(Curve::new(format!("{m} {:.0} cycles", r.wear.cycles), rho_mm.clone(), r.increment_pinion_m.iter().map(|x| x * 1e9).collect()));
+                f12.push(Curve::new(
+                    format!("{m} {:.0} cycles", r.wear.cycles),
+                    rho_mm.clone(),
+                    r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+                ));
             }
         }
-        f13.push(Curve::new(m, run.cycles(), run.max_wear_pinion_m().iter().map(|x| x * 1e6).collect()));
+        f13.push(Curve::new(
+            m,
+            run.cycles(),
+            run.max_wear_pinion_m().iter().map(|x| x * 1e6).collect(),
+        ));
     }
     let x = "pinion roll distance rho1 (mm)";
     vec![
-        ("fig11_force_and_wear_initial.png", Figure {
-            title: "Fig. 11: pair load and wear rate along the pinion profile, initial stage".into(),
-            panels: vec![panel(x, "pair load (N)", f11_force), panel(x, "wear rate (um per 1000 cycles)", f11_wear)],
-        }),
-        ("fig12_wear_rate_evolution.png", single("Fig. 12: wear rate distribution of the pinion as wear proceeds", panel(x, "wear rate (um per 1000 cycles)", f12))),
-        ("fig13_max_accumulated_wear.png", single("Fig. 13: maximum accumulated pinion wear depth", panel("cycles", "max wear depth (um)", f13))),
+        (
+            "fig11_force_and_wear_initial.png",
+            Figure {
+                title: "Fig. 11: pair load and wear rate along the pinion profile, initial stage"
+                    .into(),
+                panels: vec![
+                    panel(x, "pair load (N)", f11_force),
+                    panel(x, "wear rate (um per 1000 cycles)", f11_wear),
+                ],
+            },
+        ),
+        (
+            "fig12_wear_rate_evolution.png",
+            single(
+                "Fig. 12: wear rate distribution of the pinion as wear proceeds",
+                panel(x, "wear rate (um per 1000 cycles)", f12),
+            ),
+        ),
+        (
+            "fig13_max_accumulated_wear.png",
+            single(
+                "Fig. 13: maximum accumulated pinion wear depth",
+                panel("cycles", "max wear depth (um)", f13),
+            ),
+        ),
     ]
 }
 
@@ -183,12 +260,17 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
     let cycles = base.cycles();
     let series = |run: Option<&WearRun>, f: &dyn Fn(&WearRun) -> Vec<f64>| -> serde_json::Value {
         match run {
-            Some(r) => json!(cycles.iter().map(|c| at_cycles(&r.cycles(), &f(r), *c) * 1e6).collect::<Vec<_>>()),
+            Some(r) => json!(cycles
+                .iter()
+                .map(|c| at_cycles(&r.cycles(), &f(r), *c) * 1e6)
+                .collect::<Vec<_>>()),
             None => serde_json::Value::Null,
         }
     };
     let rate = |r: &WearRun| -> f64 {
-        r.last().map_or(0.0, |x| x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)))
+        r.last().map_or(0.0, |x| {
+            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
+        })
     };
     let mut v = json!({
         "cycles": cycles,
@@ -200,7 +282,10 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
         },
     });
     if let (Some(d), Some(q)) = (dynamic, qs) {
-        let (hd, hq) = (d.last().map_or(0.0, |r| r.wear.max_pinion_m()), q.last().map_or(0.0, |r| r.wear.max_pinion_m()));
+        let (hd, hq) = (
+            d.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+            q.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+        );
         v["ratio_max_wear_dynamic_to_static"] = json!(hd / hq);
         v["ratio_max_wear_rate_dynamic_to_static"] = json!(rate(d) / rate(q));
         v["ratio_notes"] = json!("ratio_max_wear_dynamic_to_static: maximum accumulated pinion wear depth at the final cycle count (paper: ~1.2). ratio_max_wear_rate_dynamic_to_static: maximum pinion wear depth per cycle of the final state (the paper's 'maximum wear depth', ~1.6).");
@@ -219,7 +304,10 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
         WearModeArg::Both => vec![WearMode::Dynamic, WearMode::QuasiStatic],
     };
     let multi = MultiProgress::new();
-    let bars: Vec<ProgressBar> = modes.iter().map(|m| bar(&multi, case.wear.total_cycles, *m)).collect();
+    let bars: Vec<ProgressBar> = modes
+        .iter()
+        .map(|m| bar(&multi, case.wear.total_cycles, *m))
+        .collect();
     let results: Vec<Result<WearRun, CliError>> = {
         use rayon::prelude::*;
         modes
@@ -246,7 +334,10 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
     v["warnings"] = json!(model.warnings);
     json_write(&a.out.join("summary.json"), &v)?;
     if let Some(x) = v.get("ratio_max_wear_dynamic_to_static") {
-        eprintln!("wear: dynamic/quasi-static maximum accumulated pinion wear {x:.3} -> {}", a.out.display());
+        eprintln!(
+            "wear: dynamic/quasi-static maximum accumulated pinion wear {x:.3} -> {}",
+            a.out.display()
+        );
     }
     Ok(())
 }

@@ -180,10 +180,8 @@ fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
         Valid::NonNegativeArray => match v.as_array() {
             Some(a)
                 if !a.is_empty()
-                    && a.iter().all(|x| {
-                        x.as_float()
-                            .is_some_and(|f| f.is_finite() && f >= 0.0)
-                    }) =>
+                    && a.iter()
+                        .all(|x| x.as_float().is_some_and(|f| f.is_finite() && f >= 0.0)) =>
             {
                 None
             }
@@ -208,7 +206,8 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
             s.roughness_table_wear_um
         ));
     }
-    if case.friction.model == super::case::FrictionModel::Xu2007 && case.lubricant.viscosity_cp <= 1.0
+    if case.friction.model == super::case::FrictionModel::Xu2007
+        && case.lubricant.viscosity_cp <= 1.0
     {
         problems.push(format!(
             "`lubricant.viscosity_cp` = {} is invalid with friction.model = \"xu2007\": Xu's regression uses log10 of the viscosity in cP and needs a value > 1",
@@ -227,7 +226,11 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
     let mut problems = Vec::new();
     let mut user: Table = match toml::from_str(toml_text) {
         Ok(t) => t,
-        Err(e) => return Err(ConfigError::one(format!("case file is not valid TOML: {e}"))),
+        Err(e) => {
+            return Err(ConfigError::one(format!(
+                "case file is not valid TOML: {e}"
+            )))
+        }
     };
     for o in overrides {
         match parse_override(o) {
@@ -387,7 +390,10 @@ mod tests {
         )
         .unwrap();
         assert_eq!(c.operating.input_speed_hz, 45.0);
-        assert_eq!(c.friction.model, crate::config::case::FrictionModel::Constant);
+        assert_eq!(
+            c.friction.model,
+            crate::config::case::FrictionModel::Constant
+        );
     }
 
     #[test]
@@ -398,8 +404,14 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.problems.len(), 3, "{e}");
-        assert!(e.problems.iter().any(|p| p.contains("gear.module_mm") && p.contains("-2")));
-        assert!(e.problems.iter().any(|p| p.contains("wear.coefficient_m2_per_n")));
+        assert!(e
+            .problems
+            .iter()
+            .any(|p| p.contains("gear.module_mm") && p.contains("-2")));
+        assert!(e
+            .problems
+            .iter()
+            .any(|p| p.contains("wear.coefficient_m2_per_n")));
     }
 
     #[test]
@@ -426,7 +438,10 @@ mod tests {
         // Fine without the Xu model.
         load_case(
             "",
-            &["lubricant.viscosity_cp=0.8".into(), "friction.model=none".into()],
+            &[
+                "lubricant.viscosity_cp=0.8".into(),
+                "friction.model=none".into(),
+            ],
         )
         .unwrap();
     }

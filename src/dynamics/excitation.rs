@@ -96,7 +96,11 @@ impl ExternalError {
                 let p = phase_rad.rem_euclid(self.period_rad);
                 let j = self.phase_rad.partition_point(|x| *x <= p);
                 // Segment from sample i0 to i1, wrapping around the period.
-                let (i0, i1) = if j == 0 || j == n { (n - 1, 0) } else { (j - 1, j) };
+                let (i0, i1) = if j == 0 || j == n {
+                    (n - 1, 0)
+                } else {
+                    (j - 1, j)
+                };
                 let mut p0 = self.phase_rad[i0];
                 let mut p1 = self.phase_rad[i1];
                 let mut pp = p;

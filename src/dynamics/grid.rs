@@ -66,7 +66,14 @@ mod tests {
         let leave = (p.contact_ratio - 1.0) * period;
         assert!(nodes.iter().any(|t| (t - leave).abs() < 1e-12 * period));
         let pitch = (p.rho_pitch_m - p.rho_start_m) / p.pinion.base_radius_m / w;
-        let pitch = if pitch > period { pitch - p.base_pitch_m / p.pinion.base_radius_m / w } else { pitch };
-        assert!(nodes.iter().any(|t| (t - pitch).abs() < 1e-12 * period), "pitch {pitch}");
+        let pitch = if pitch > period {
+            pitch - p.base_pitch_m / p.pinion.base_radius_m / w
+        } else {
+            pitch
+        };
+        assert!(
+            nodes.iter().any(|t| (t - pitch).abs() < 1e-12 * period),
+            "pitch {pitch}"
+        );
     }
 }

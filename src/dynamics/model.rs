@@ -23,8 +23,8 @@ use super::excitation::{ExternalError, PairGap};
 use super::params::DynamicParams;
 use crate::config::case::{LoadSharingModel, SpeedBoundary};
 use crate::contact::friction::Friction;
-use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::hertz::HertzContact;
+use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::load_sharing::pedrero_share;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
@@ -148,10 +148,26 @@ impl<'a> GearSystem<'a> {
         let mut k = Matrix8::zeros();
         let mut c = Matrix8::zeros();
         for (i, kb, cb) in [
-            (XP, p.bearing_stiffness_pinion_n_per_m, p.bearing_damping_pinion_n_s_per_m),
-            (YP, p.bearing_stiffness_pinion_n_per_m, p.bearing_damping_pinion_n_s_per_m),
-            (XG, p.bearing_stiffness_gear_n_per_m, p.bearing_damping_gear_n_s_per_m),
-            (YG, p.bearing_stiffness_gear_n_per_m, p.bearing_damping_gear_n_s_per_m),
+            (
+                XP,
+                p.bearing_stiffness_pinion_n_per_m,
+                p.bearing_damping_pinion_n_s_per_m,
+            ),
+            (
+                YP,
+                p.bearing_stiffness_pinion_n_per_m,
+                p.bearing_damping_pinion_n_s_per_m,
+            ),
+            (
+                XG,
+                p.bearing_stiffness_gear_n_per_m,
+                p.bearing_damping_gear_n_s_per_m,
+            ),
+            (
+                YG,
+                p.bearing_stiffness_gear_n_per_m,
+                p.bearing_damping_gear_n_s_per_m,
+            ),
         ] {
             k[(i, i)] = kb;
             c[(i, i)] = cb;

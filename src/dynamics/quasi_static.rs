@@ -133,8 +133,7 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
                 friction_coefficient: ms.friction_coefficient[i],
                 friction_n: ms.friction_n[i],
                 pinion_surface_speed_m_per_s: omega * rho1,
-                gear_surface_speed_m_per_s: sys.params.gear_speed_rad_s
-                    * sys.pair.rho_gear(rho1),
+                gear_surface_speed_m_per_s: sys.params.gear_speed_rad_s * sys.pair.rho_gear(rho1),
             });
         }
     }

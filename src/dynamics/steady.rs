@@ -74,7 +74,11 @@ fn relative_change(a: &[f64], b: &[f64]) -> f64 {
 /// velocities scaled by the fastest mesh-mode frequency; the truncation error of the
 /// fixed step (~1e-9 m) stays far above them.
 fn newton_abs_tol(sys: &GearSystem) -> State {
-    let r = sys.pair.pinion.base_radius_m.min(sys.pair.gear.base_radius_m);
+    let r = sys
+        .pair
+        .pinion
+        .base_radius_m
+        .min(sys.pair.gear.base_radius_m);
     let omega = 1e5; // rad/s, above the mesh mode
     let mut tol = State::zeros();
     for i in 0..NDOF {
@@ -98,7 +102,13 @@ impl GridStepper {
         Ok(Self { sdirk, h: h0 })
     }
 
-    fn step(&mut self, ode: &mut Ode, t: f64, h: f64, y: &mut State) -> Result<(), IntegratorError> {
+    fn step(
+        &mut self,
+        ode: &mut Ode,
+        t: f64,
+        h: f64,
+        y: &mut State,
+    ) -> Result<(), IntegratorError> {
         // Grid steps within a segment are equal to round-off; refactor only between segments.
         if (h - self.h).abs() > 1e-9 * self.h {
             self.sdirk.set_step_size(h)?;
@@ -117,9 +127,11 @@ pub fn solve_steady_state(
     let nodes = period_nodes(sys.pair, omega, settings.steps_per_mesh_period);
     let period = *nodes.last().unwrap_or(&0.0);
     let mut ode = Ode { sys };
-    let integ_err = |t: f64| move |e: IntegratorError| DynamicsError::Integrator {
-        time_s: t,
-        reason: e.to_string(),
+    let integ_err = |t: f64| {
+        move |e: IntegratorError| DynamicsError::Integrator {
+            time_s: t,
+            reason: e.to_string(),
+        }
     };
     let mut stepper = GridStepper::new(sys, nodes[1] - nodes[0]).map_err(integ_err(0.0))?;
     let mut y = sys.static_equilibrium();
@@ -139,7 +151,9 @@ pub fn solve_steady_state(
             let t = t0 + node;
             if k > 0 {
                 let h = t - (t0 + nodes[k - 1]);
-                stepper.step(&mut ode, t - h, h, &mut y).map_err(integ_err(t))?;
+                stepper
+                    .step(&mut ode, t - h, h, &mut y)
+                    .map_err(integ_err(t))?;
                 steps += 1;
                 if !y.iter().all(|v| v.is_finite()) {
                     return Err(DynamicsError::NonFinite(t));
@@ -180,7 +194,9 @@ pub fn solve_steady_state(
             if k > 0 {
                 let h = t - (t0 + nodes[k - 1]);
                 let y_prev = y;
-                stepper.step(&mut ode, t - h, h, &mut y).map_err(integ_err(t))?;
+                stepper
+                    .step(&mut ode, t - h, h, &mut y)
+                    .map_err(integ_err(t))?;
                 steps += 1;
                 let y_mid = (y_prev + y) * 0.5;
                 let (_, ms_mid) = sys.derivative(t - 0.5 * h, &y_mid);
@@ -191,7 +207,14 @@ pub fn solve_steady_state(
                 break;
             }
             let (dy, ms) = sys.derivative(t, &y);
-            record(&mut sig, t, sys.phase_at(t) % sys.pair.mesh_angle_rad(), &y, &dy, &ms);
+            record(
+                &mut sig,
+                t,
+                sys.phase_at(t) % sys.pair.mesh_angle_rad(),
+                &y,
+                &dy,
+                &ms,
+            );
             if last {
                 push_path(&mut path, sys, &y, &ms);
             }

@@ -105,7 +105,8 @@ impl GearPair {
             let rb = r * alpha.cos();
             // Lowest involute point the rack cutter generates (ISO 21771): the straight
             // part of the rack flank ends (h_f* - rho_f*(1 - sin alpha)) m below the datum.
-            let h_straight = g.dedendum_coefficient - g.tool_tip_radius_coefficient * (1.0 - alpha.sin());
+            let h_straight =
+                g.dedendum_coefficient - g.tool_tip_radius_coefficient * (1.0 - alpha.sin());
             Gear {
                 teeth: z as usize,
                 profile_shift: x,
@@ -287,7 +288,11 @@ mod tests {
         assert!((p.pinion.root_radius_m * mm - 16.5).abs() < 1e-9);
         assert!((p.gear.root_radius_m * mm - 28.5).abs() < 1e-9);
         assert!((p.centre_distance_m * mm - 50.0).abs() < 1e-9);
-        assert!((p.contact_ratio - 1.6022).abs() < 5e-4, "{}", p.contact_ratio);
+        assert!(
+            (p.contact_ratio - 1.6022).abs() < 5e-4,
+            "{}",
+            p.contact_ratio
+        );
         assert!(p.pinion.root_radius_m < p.pinion.base_radius_m);
         assert!(p.gear.root_radius_m < p.gear.base_radius_m);
     }

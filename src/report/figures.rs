@@ -56,7 +56,9 @@ pub fn spectrum_panel(
     f_max_hz: f64,
     mesh_hz: f64,
 ) -> Panel {
-    let keep: Vec<usize> = (0..freq_hz.len()).filter(|i| freq_hz[*i] <= f_max_hz).collect();
+    let keep: Vec<usize> = (0..freq_hz.len())
+        .filter(|i| freq_hz[*i] <= f_max_hz)
+        .collect();
     let mut vlines = Vec::new();
     let mut h = 1;
     while mesh_hz > 0.0 && h as f64 * mesh_hz <= f_max_hz && h <= 8 {

@@ -90,7 +90,11 @@ pub fn block_length(inc_max_m: f64, block_cycles: f64, threshold_m: f64, remaini
     n.min(remaining)
 }
 
-fn solve(model: &Model, mode: WearMode, wear: &WearState) -> Result<DynamicResponse, DynamicsError> {
+fn solve(
+    model: &Model,
+    mode: WearMode,
+    wear: &WearState,
+) -> Result<DynamicResponse, DynamicsError> {
     let none = ExternalError::none();
     match mode {
         WearMode::Dynamic => model.dynamic(wear, &none),

@@ -1,9 +1,9 @@
 //! Accumulated wear of both profiles on the shared grid, and the gap it opens.
 
 use crate::dynamics::excitation::PairGap;
+use crate::geometry::GearPair;
 use crate::geometry::ProfileGrid;
 use crate::stiffness::mesh::MeshStiffness;
-use crate::geometry::GearPair;
 use serde::{Deserialize, Serialize};
 
 use super::archard::WearIncrement;

@@ -1,0 +1,218 @@
+//! The command line as a user meets it: promised files and keys, and every class of bad
+//! input answered with a message naming the key and value, exit code 2, and no output.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn gearwear(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A bad input must exit 2, name what is wrong, and leave no output directory.
+fn assert_rejected(args: &[&str], needles: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut all: Vec<&str> = args.to_vec();
+    let out_s = out.to_str().unwrap().to_owned();
+    all.extend(["--out", &out_s]);
+    let o = gearwear(&all);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
+    }
+    assert!(!out.exists(), "{args:?}: output written despite the error");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn bad_inputs_exit_with_code_2_and_a_clear_message() {
+    // Unknown key: names it and the valid keys of its section.
+    assert_rejected(
+        &["stiffness", "--set", "operating.speed=3"],
+        &["operating.speed", "operating.input_speed_hz"],
+    );
+    // Wrong type.
+    assert_rejected(
+        &["stiffness", "--set", "gear.module_mm=\"two\""],
+        &["gear.module_mm", "a number > 0"],
+    );
+    // Out of range / non-physical.
+    assert_rejected(
+        &["dynamics", "--set", "dynamics.mass_pinion_kg=0"],
+        &["dynamics.mass_pinion_kg", "0"],
+    );
+    assert_rejected(
+        &["dynamics", "--set", "gear.face_width_mm=-20"],
+        &["gear.face_width_mm", "-20"],
+    );
+    assert_rejected(
+        &[
+            "dynamics",
+            "--set",
+            "dynamics.bearing_stiffness_gear_n_per_m=-5e8",
+        ],
+        &["dynamics.bearing_stiffness_gear_n_per_m"],
+    );
+    assert_rejected(
+        &["wear", "--set", "wear.coefficient_m2_per_n=-1e-16"],
+        &["wear.coefficient_m2_per_n", ">= 0"],
+    );
+    // Viscosity of 1 cP or less with the Xu model.
+    assert_rejected(
+        &["dynamics", "--set", "lubricant.viscosity_cp=1"],
+        &["lubricant.viscosity_cp", "> 1"],
+    );
+    // Contact ratio below 1.
+    assert_rejected(
+        &[
+            "stiffness",
+            "--set",
+            "gear.addendum_coefficient=0.5",
+            "--set",
+            "gear.teeth_pinion=12",
+            "--set",
+            "gear.teeth_gear=13",
+        ],
+        &["contact ratio"],
+    );
+    // Tip interference.
+    assert_rejected(
+        &[
+            "stiffness",
+            "--set",
+            "gear.teeth_pinion=8",
+            "--set",
+            "gear.teeth_gear=60",
+        ],
+        &["interference"],
+    );
+    // Several problems at once: one message each.
+    let o = gearwear(&[
+        "stiffness",
+        "--set",
+        "gear.module_mm=-1",
+        "--set",
+        "wear.total_cycles=0",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        err.contains("gear.module_mm") && err.contains("wear.total_cycles"),
+        "{err}"
+    );
+    // A missing case file.
+    assert_rejected(
+        &["stiffness", "--config", "/nonexistent/case.toml"],
+        &["/nonexistent/case.toml"],
+    );
+    // A malformed transmission-error file.
+    let dir = tempfile::tempdir().unwrap();
+    let te = dir.path().join("te.csv");
+    std::fs::write(&te, "angle,err\n1,2\n").unwrap();
+    assert_rejected(
+        &["dynamics", "--transmission-error", te.to_str().unwrap()],
+        &["pinion_angle_deg,error_um"],
+    );
+}
+
+#[test]
+fn undercut_is_a_warning_not_an_error() {
+    // 14 teeth on a 20 deg rack without shift is undercut (z_min = 2/sin^2(20 deg) = 17)
+    // but meshes with 20 teeth without interference.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s");
+    let o = gearwear(&[
+        "stiffness",
+        "--set",
+        "gear.teeth_pinion=14",
+        "--set",
+        "gear.teeth_gear=20",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("warning") && stderr(&o).contains("undercut"));
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn finite_numbers_only(v: &serde_json::Value) -> bool {
+    match v {
+        serde_json::Value::Null => false,
+        serde_json::Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+        serde_json::Value::Array(a) => a.iter().all(finite_numbers_only),
+        serde_json::Value::Object(o) => o.values().all(finite_numbers_only),
+        _ => true,
+    }
+}
+
+#[test]
+fn stiffness_command_writes_the_promised_files_and_keys() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s");
+    let o = gearwear(&["stiffness", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for f in ["summary.json", "mesh_stiffness.csv", "mesh_stiffness.png"] {
+        assert!(out.join(f).exists(), "{f} missing");
+    }
+    let s = json(&out.join("summary.json"));
+    for p in [
+        "/contact_ratio",
+        "/mesh_stiffness/min_n_per_m",
+        "/mesh_stiffness/max_n_per_m",
+        "/mesh_stiffness/mean_n_per_m",
+        "/iso6336/c_prime_n_per_mm_um",
+        "/iso6336/c_gamma_alpha_n_per_mm_um",
+        "/quasi_static_te/min_um",
+        "/quasi_static_te/max_um",
+        "/metadata/version",
+        "/metadata/case_sha256",
+        "/metadata/case/gear/module_mm",
+    ] {
+        assert!(s.pointer(p).is_some(), "{p} missing");
+    }
+    assert!((s["contact_ratio"].as_f64().unwrap() - 1.6022).abs() < 5e-4);
+    let mut no_meta = s.clone();
+    no_meta.as_object_mut().unwrap().remove("metadata");
+    assert!(finite_numbers_only(&no_meta));
+}
+
+#[test]
+fn same_case_gives_the_same_numbers_every_time() {
+    // Determinism: two runs write identical summaries.
+    let dir = tempfile::tempdir().unwrap();
+    let a = dir.path().join("a");
+    let b = dir.path().join("b");
+    for d in [&a, &b] {
+        let o = gearwear(&["dynamics", "--out", d.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let (mut x, mut y) = (json(&a.join("summary.json")), json(&b.join("summary.json")));
+    x.as_object_mut().unwrap().remove("metadata");
+    y.as_object_mut().unwrap().remove("metadata");
+    assert_eq!(x, y);
+    assert!(finite_numbers_only(&x));
+}
+
+#[test]
+fn config_reference_in_docs_is_current() {
+    // docs/CONFIG.md is generated from the schema; a stale copy fails here.
+    let o = gearwear(&["config", "--markdown"]);
+    let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/CONFIG.md"))
+        .unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        doc,
+        "regenerate: gearwear config --markdown > docs/CONFIG.md"
+    );
+}
