@@ -216,3 +216,51 @@ fn config_reference_in_docs_is_current() {
         "regenerate: gearwear config --markdown > docs/CONFIG.md"
     );
 }
+
+#[test]
+fn run_on_a_reduced_case_writes_every_promised_file_with_finite_numbers() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("r");
+    let o = gearwear(&[
+        "run",
+        "--set",
+        "wear.total_cycles=6000",
+        "--set",
+        "numerics.evaluated_mesh_periods=4",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let figs = [
+        "fig02_mesh_stiffness",
+        "fig04_dte",
+        "fig05_velocity_y_pinion",
+        "fig06_spectrum",
+        "fig07_mesh_harmonics",
+        "fig08_mesh_force",
+        "fig09_friction_coefficient",
+        "fig10_friction_force",
+        "fig11_force_and_wear_initial",
+        "fig12_wear_rate_evolution",
+        "fig13_max_accumulated_wear",
+    ];
+    for f in figs {
+        assert!(out.join(format!("{f}.png")).exists(), "{f}.png missing");
+        assert!(
+            out.join("csv").join(format!("{f}.csv")).exists(),
+            "{f}.csv missing"
+        );
+    }
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert_eq!(html.matches("data:image/png;base64,").count(), figs.len());
+    let mut s = json(&out.join("summary.json"));
+    s.as_object_mut().unwrap().remove("metadata");
+    assert!(finite_numbers_only(&s), "non-finite number in summary.json");
+    for k in [
+        "/paper_comparison/dte_max_um_at_0.5um_wear/ours",
+        "/paper_comparison/ratio_max_wear_dynamic_to_static/paper",
+        "/paper_comparison/mesh_force_mean_n_at_1um_wear/relative_deviation",
+    ] {
+        assert!(s.pointer(k).is_some(), "{k} missing");
+    }
+}

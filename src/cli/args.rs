@@ -27,6 +27,8 @@ pub enum Command {
     Dynamics(DynamicsArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
+    /// The paper's whole section 4 with a self-contained HTML report (the main job).
+    Run(RunArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -104,4 +106,13 @@ pub struct WearArgs {
     /// Continue from the checkpoints in the output directory.
     #[arg(long)]
     pub resume: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Output directory.
+    #[arg(long, default_value = "results")]
+    pub out: PathBuf,
 }

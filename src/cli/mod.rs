@@ -6,7 +6,8 @@ mod config_cmd;
 pub mod dynamics_cmd;
 mod error;
 pub mod output;
-mod stiffness_cmd;
+mod run_cmd;
+pub mod stiffness_cmd;
 pub mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
@@ -23,6 +24,7 @@ pub fn main() -> ExitCode {
         Command::Stiffness(a) => stiffness_cmd::run(a),
         Command::Dynamics(a) => dynamics_cmd::run(a),
         Command::Wear(a) => wear_cmd::run(a),
+        Command::Run(a) => run_cmd::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

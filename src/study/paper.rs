@@ -1,0 +1,88 @@
+//! The paper's section 4 as one study: the wear study of 4.2 (dynamic and quasi-static),
+//! and the dynamic response at the wear states of 4.1.
+//!
+//! A wear state "maximum wear depth X um" is the dynamic wear study's own profile (pinion
+//! and gear, from the first update whose maximum pinion wear reaches X, or the last one)
+//! scaled so that the maximum pinion wear is exactly X; its roughness is the case's
+//! roughness-versus-wear law at X (docs/MODEL.md).
+
+use super::model::Model;
+use super::wear_loop::{run_wear, WearMode, WearRun};
+use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::summary::ResponseSummary;
+use crate::wear::WearState;
+use rayon::prelude::*;
+
+/// The wear states of the paper's section 4.1, um.
+pub const PAPER_WEAR_STATES_UM: [f64; 3] = [0.1, 0.5, 1.0];
+
+/// The dynamic response at one wear state.
+pub struct WearStateResult {
+    pub max_wear_um: f64,
+    pub roughness_um: f64,
+    pub wear: WearState,
+    pub response: DynamicResponse,
+    pub summary: ResponseSummary,
+}
+
+/// Everything of the paper's section 4.
+pub struct PaperStudy {
+    pub dynamic: WearRun,
+    pub quasi_static: WearRun,
+    pub wear_states: Vec<WearStateResult>,
+}
+
+/// The wear profile of a state: the dynamic run's first record reaching `target_m` (or its
+/// last), scaled to `target_m`.
+pub fn wear_state_from_run(run: &WearRun, target_m: f64) -> WearState {
+    let rec = run
+        .records
+        .iter()
+        .find(|r| r.wear.max_pinion_m() >= target_m)
+        .or_else(|| run.records.last())
+        .expect("a run has records");
+    rec.wear.scaled_to_max_pinion(target_m)
+}
+
+/// Run the whole study; `on_update(mode, run)` after every wear update (progress,
+/// checkpoints). The two wear runs go in parallel, then the wear states.
+pub fn run_paper_study(
+    model: &Model,
+    start_dynamic: WearRun,
+    start_quasi_static: WearRun,
+    on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
+) -> anyhow::Result<PaperStudy> {
+    let (dynamic, quasi_static) = rayon::join(
+        || {
+            run_wear(model, start_dynamic, &mut |r| {
+                on_update(WearMode::Dynamic, r)
+            })
+        },
+        || {
+            run_wear(model, start_quasi_static, &mut |r| {
+                on_update(WearMode::QuasiStatic, r)
+            })
+        },
+    );
+    let (dynamic, quasi_static) = (dynamic?, quasi_static?);
+    let wear_states = PAPER_WEAR_STATES_UM
+        .par_iter()
+        .map(|um| -> anyhow::Result<WearStateResult> {
+            let wear = wear_state_from_run(&dynamic, um * 1e-6);
+            let response = model.dynamic(&wear, &ExternalError::none())?;
+            Ok(WearStateResult {
+                max_wear_um: *um,
+                roughness_um: model.roughness_for(&wear),
+                summary: ResponseSummary::of(&response),
+                wear,
+                response,
+            })
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    Ok(PaperStudy {
+        dynamic,
+        quasi_static,
+        wear_states,
+    })
+}
