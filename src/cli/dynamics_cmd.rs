@@ -140,6 +140,24 @@ pub fn write_dynamic_outputs(
         )
         .save(&dir.join("path.csv"))?;
 
+    // Natural frequencies and mass-normalised mode shapes of the linearised model.
+    let gap0 = crate::dynamics::excitation::PairGap::none();
+    let ext0 = ExternalError::none();
+    let m = modes(&model.system(&gap0, &ext0, model.roughness.rms_um(0.0)));
+    let mut mt = Table::new()
+        .col(
+            "mode",
+            (1..=m.frequency_hz.len()).map(|i| i as f64).collect(),
+        )
+        .col("frequency_hz", m.frequency_hz.clone());
+    for k in 0..8 {
+        mt = mt.col(
+            &format!("shape_{}", names[k]),
+            m.shapes.iter().map(|s| s[k]).collect(),
+        );
+    }
+    mt.save(&dir.join("modes.csv"))?;
+
     let summary = ResponseSummary::of(r);
     let f_mesh = model.params.mesh_frequency_hz(&model.pair);
     let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);

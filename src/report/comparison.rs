@@ -78,14 +78,14 @@ pub fn compare(study: &PaperStudy) -> Vec<Compared> {
     }
     let (rate, acc) = wear_ratios(study);
     out.push(Compared {
-        key: "ratio_max_wear_dynamic_to_static".into(),
+        key: "ratio_max_wear_rate_dynamic_to_static".into(),
         quantity: "max pinion wear depth per cycle, dynamic / quasi-static, 4e4 cycles (-)".into(),
         ours: rate,
         paper: PAPER_RATIO_MAX_WEAR,
         explanation: RATE_WHY,
     });
     out.push(Compared {
-        key: "ratio_max_accumulated_wear_dynamic_to_static".into(),
+        key: "ratio_max_wear_dynamic_to_static".into(),
         quantity: "max accumulated pinion wear, dynamic / quasi-static, 4e4 cycles (-)".into(),
         ours: acc,
         paper: PAPER_RATIO_ACCUMULATED_WEAR,
