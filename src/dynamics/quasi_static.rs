@@ -117,25 +117,14 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
         sig.dte_m.push(ms.deflection_m);
         sig.mesh_force_n.push(ms.force_n);
         sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
-        for j in 0..2 {
-            let on = j < ms.n_pairs;
-            sig.friction_coefficient[j].push(if on { ms.friction_coefficient[j] } else { 0.0 });
-            sig.friction_n[j].push(if on { ms.friction_n[j] } else { 0.0 });
-            sig.pair_load_n[j].push(if on { ms.load_n[j] } else { 0.0 });
-        }
-        for i in 0..ms.n_pairs {
-            let rho1 = ms.rho1_m[i];
-            path.push(PathSample {
-                rho1_m: rho1,
-                load_n: ms.load_n[i],
-                pressure_pa: ms.pressure_pa[i],
-                half_width_m: ms.half_width_m[i],
-                friction_coefficient: ms.friction_coefficient[i],
-                friction_n: ms.friction_n[i],
-                pinion_surface_speed_m_per_s: omega * rho1,
-                gear_surface_speed_m_per_s: sys.params.gear_speed_rad_s * sys.pair.rho_gear(rho1),
-            });
-        }
+        sig.push_pairs(&ms);
+        PathSample::push_contacts(
+            &mut path,
+            &ms,
+            sys.pair.loa_length_m,
+            omega,
+            sys.params.gear_speed_rad_s,
+        );
     }
     path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));
     // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).

@@ -20,6 +20,31 @@ pub struct PathSample {
     pub gear_surface_speed_m_per_s: f64,
 }
 
+impl PathSample {
+    /// The contacts of a mesh state, with the pinion and gear speeds (rad/s) that made them.
+    pub fn push_contacts(
+        path: &mut Vec<PathSample>,
+        ms: &super::model::MeshState,
+        loa_length_m: f64,
+        omega_pinion_rad_s: f64,
+        omega_gear_rad_s: f64,
+    ) {
+        for i in 0..ms.n_pairs {
+            let rho1 = ms.rho1_m[i];
+            path.push(PathSample {
+                rho1_m: rho1,
+                load_n: ms.load_n[i],
+                pressure_pa: ms.pressure_pa[i],
+                half_width_m: ms.half_width_m[i],
+                friction_coefficient: ms.friction_coefficient[i],
+                friction_n: ms.friction_n[i],
+                pinion_surface_speed_m_per_s: omega_pinion_rad_s * rho1,
+                gear_surface_speed_m_per_s: omega_gear_rad_s * (loa_length_m - rho1),
+            });
+        }
+    }
+}
+
 /// Time series over the evaluated window (whole mesh periods).
 #[derive(Debug, Clone, Default)]
 pub struct Signals {
@@ -39,6 +64,19 @@ pub struct Signals {
     pub friction_coefficient: [Vec<f64>; 2],
     pub friction_n: [Vec<f64>; 2],
     pub pair_load_n: [Vec<f64>; 2],
+}
+
+impl Signals {
+    /// Per-pair friction and load of the first two pairs (0 when a pair is out of contact).
+    pub fn push_pairs(&mut self, ms: &super::model::MeshState) {
+        for j in 0..2 {
+            let on = j < ms.n_pairs;
+            let pick = |a: &[f64; super::model::MAX_PAIRS]| if on { a[j] } else { 0.0 };
+            self.friction_coefficient[j].push(pick(&ms.friction_coefficient));
+            self.friction_n[j].push(pick(&ms.friction_n));
+            self.pair_load_n[j].push(pick(&ms.load_n));
+        }
+    }
 }
 
 /// A steady-state response.

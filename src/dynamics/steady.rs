@@ -254,28 +254,11 @@ fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &Mes
     sig.displacement.push(q);
     sig.velocity.push(v);
     sig.acceleration.push(a);
-    for j in 0..2 {
-        let on = j < ms.n_pairs;
-        sig.friction_coefficient[j].push(if on { ms.friction_coefficient[j] } else { 0.0 });
-        sig.friction_n[j].push(if on { ms.friction_n[j] } else { 0.0 });
-        sig.pair_load_n[j].push(if on { ms.load_n[j] } else { 0.0 });
-    }
+    sig.push_pairs(ms);
 }
 
 fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
     let omega_p = sys.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
     let omega_g = sys.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
-    for i in 0..ms.n_pairs {
-        let rho1 = ms.rho1_m[i];
-        path.push(PathSample {
-            rho1_m: rho1,
-            load_n: ms.load_n[i],
-            pressure_pa: ms.pressure_pa[i],
-            half_width_m: ms.half_width_m[i],
-            friction_coefficient: ms.friction_coefficient[i],
-            friction_n: ms.friction_n[i],
-            pinion_surface_speed_m_per_s: omega_p * rho1,
-            gear_surface_speed_m_per_s: omega_g * sys.pair.rho_gear(rho1),
-        });
-    }
+    PathSample::push_contacts(path, ms, sys.pair.loa_length_m, omega_p, omega_g);
 }
