@@ -12,8 +12,9 @@
 //! - `scaling_*`: cost against steps per mesh period, wear grid points and total cycles.
 //!
 //! The work counts that explain the times (integrator steps, rhs calls, LU
-//! factorisations, number of wear-loop evaluations) are printed once per group, before
-//! it is timed: timing alone cannot tell "more work" from "slower work".
+//! factorisations, number of wear-loop evaluations) are printed once per benchmark,
+//! before it is timed (and only if the filter selects it): timing alone cannot tell
+//! "more work" from "slower work".
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -40,6 +41,35 @@ fn wear_study(model: &Model, mode: WearMode) -> WearRun {
     run_wear(model, WearRun::new(mode), &mut |_| Ok(())).expect("the paper's case runs")
 }
 
+/// Runs `f` the first time only: criterion calls a benchmark's closure several times
+/// (warm-up, samples), the work counts need printing once.
+fn once(done: &mut bool, f: impl FnOnce()) {
+    if !*done {
+        *done = true;
+        f();
+    }
+}
+
+/// Prints the integrator work of one steady-state evaluation.
+fn print_steady_work(label: &str, model: &Model, wear: &WearState) {
+    let r = model
+        .dynamic(wear, &ExternalError::none())
+        .expect("steady state");
+    println!(
+        "{label} work: {} steps, {} rhs calls, {} LU factorisations, {} periods to converge",
+        r.steps, r.rhs_evaluations, r.factorizations, r.periods_to_converge
+    );
+}
+
+/// Prints the number of evaluations (records, the initial one included) of a wear study.
+fn print_wear_work(label: &str, model: &Model, mode: WearMode) {
+    println!(
+        "{label} {} evaluations (records, initial included): {}",
+        mode.name(),
+        wear_study(model, mode).records.len()
+    );
+}
+
 /// Criterion settings for a 2-core machine: 10 samples, short warm-up and measurement.
 /// Criterion stretches the measurement time by itself when 10 samples do not fit.
 fn quick() -> Criterion {
@@ -56,9 +86,7 @@ fn stiffness(c: &mut Criterion) {
     let points = case.stiffness.table_points_per_mesh_period as usize;
     let mut g = c.benchmark_group("stiffness");
     g.bench_function("mesh_table_400_fillet", |b| {
-        b.iter(|| {
-            MeshStiffness::new(black_box(&pair), &elastic, points, true).expect("valid pair")
-        })
+        b.iter(|| MeshStiffness::new(black_box(&pair), &elastic, points, true).expect("valid pair"))
     });
     g.finish();
 }
@@ -67,14 +95,17 @@ fn evaluation(c: &mut Criterion) {
     let model = model_with(|_| {});
     let wear = WearState::new(model.grid.len());
     let none = ExternalError::none();
-    let r = model.dynamic(&wear, &none).expect("steady state");
-    println!(
-        "evaluation/steady_state_dynamic work: {} steps, {} rhs calls, {} LU factorisations, {} periods to converge",
-        r.steps, r.rhs_evaluations, r.factorizations, r.periods_to_converge
-    );
     let mut g = c.benchmark_group("evaluation");
+    let mut printed = false;
     g.bench_function("steady_state_dynamic", |b| {
-        b.iter(|| model.dynamic(black_box(&wear), &none).expect("steady state"))
+        once(&mut printed, || {
+            print_steady_work("evaluation/steady_state_dynamic", &model, &wear)
+        });
+        b.iter(|| {
+            model
+                .dynamic(black_box(&wear), &none)
+                .expect("steady state")
+        })
     });
     g.bench_function("quasi_static", |b| {
         b.iter(|| model.quasi_static(black_box(&wear), &none))
@@ -84,21 +115,18 @@ fn evaluation(c: &mut Criterion) {
 
 fn wear_studies(c: &mut Criterion) {
     let model = model_with(|_| {});
-    for mode in [WearMode::Dynamic, WearMode::QuasiStatic] {
-        println!(
-            "wear_study/{} evaluations (records, initial included): {}",
-            mode.name(),
-            wear_study(&model, mode).records.len()
-        );
-    }
     let mut g = c.benchmark_group("wear_study");
     g.sampling_mode(SamplingMode::Flat);
-    g.bench_function("dynamic_4e4", |b| {
-        b.iter(|| wear_study(black_box(&model), WearMode::Dynamic))
-    });
-    g.bench_function("quasi_static_4e4", |b| {
-        b.iter(|| wear_study(black_box(&model), WearMode::QuasiStatic))
-    });
+    for (name, mode) in [
+        ("dynamic_4e4", WearMode::Dynamic),
+        ("quasi_static_4e4", WearMode::QuasiStatic),
+    ] {
+        let mut printed = false;
+        g.bench_function(name, |b| {
+            once(&mut printed, || print_wear_work("wear_study", &model, mode));
+            b.iter(|| wear_study(black_box(&model), mode))
+        });
+    }
     // What `gearwear wear` computes (sequentially here, no output files): build the model,
     // then both studies.
     g.bench_function("model_and_both_modes_4e4", |b| {
@@ -119,12 +147,10 @@ fn scaling_steps(c: &mut Criterion) {
         let model = model_with(|c| c.numerics.steps_per_mesh_period = steps);
         let wear = WearState::new(model.grid.len());
         let none = ExternalError::none();
-        let r = model.dynamic(&wear, &none).expect("steady state");
-        println!(
-            "scaling_steps_per_mesh_period/{steps} work: {} steps, {} rhs calls, {} LU factorisations, {} periods to converge",
-            r.steps, r.rhs_evaluations, r.factorizations, r.periods_to_converge
-        );
+        let label = format!("scaling_steps_per_mesh_period/{steps}");
+        let mut printed = false;
         g.bench_with_input(BenchmarkId::from_parameter(steps), &model, |b, m| {
+            once(&mut printed, || print_steady_work(&label, m, &wear));
             b.iter(|| m.dynamic(black_box(&wear), &none).expect("steady state"))
         });
     }
@@ -132,7 +158,7 @@ fn scaling_steps(c: &mut Criterion) {
 }
 
 /// Dynamic wear study with one wear-section setting changed; prints the number of
-/// evaluations (the cost driver) first.
+/// evaluations (the cost driver) before timing.
 fn scaling_wear<T: Copy + std::fmt::Display>(
     c: &mut Criterion,
     name: &str,
@@ -143,9 +169,12 @@ fn scaling_wear<T: Copy + std::fmt::Display>(
     g.sampling_mode(SamplingMode::Flat);
     for &v in values {
         let model = model_with(|c| edit(c, v));
-        let evaluations = wear_study(&model, WearMode::Dynamic).records.len();
-        println!("{name}/{v} dynamic evaluations (records, initial included): {evaluations}");
+        let label = format!("{name}/{v}");
+        let mut printed = false;
         g.bench_with_input(BenchmarkId::from_parameter(v), &model, |b, m| {
+            once(&mut printed, || {
+                print_wear_work(&label, m, WearMode::Dynamic)
+            });
             b.iter(|| wear_study(black_box(m), WearMode::Dynamic))
         });
     }
@@ -153,9 +182,12 @@ fn scaling_wear<T: Copy + std::fmt::Display>(
 }
 
 fn scaling_points(c: &mut Criterion) {
-    scaling_wear(c, "scaling_points_per_profile", &[51_i64, 101, 201], |c, v| {
-        c.wear.points_per_profile = v
-    });
+    scaling_wear(
+        c,
+        "scaling_points_per_profile",
+        &[51_i64, 101, 201],
+        |c, v| c.wear.points_per_profile = v,
+    );
 }
 
 fn scaling_cycles(c: &mut Criterion) {
