@@ -7,6 +7,7 @@ pub mod dynamics_cmd;
 mod error;
 pub mod output;
 mod stiffness_cmd;
+pub mod sweep_cmd;
 pub mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
@@ -23,6 +24,8 @@ pub fn main() -> ExitCode {
         Command::Stiffness(a) => stiffness_cmd::run(a),
         Command::Dynamics(a) => dynamics_cmd::run(a),
         Command::Wear(a) => wear_cmd::run(a),
+        Command::Sweep(a) => sweep_cmd::run(a),
+        Command::SweepMerge(a) => sweep_cmd::merge(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -2,6 +2,7 @@
 //! quasi-static twin, the wear states of the paper's section 4.1.
 
 pub mod model;
+pub mod sweep;
 pub mod wear_loop;
 
 pub use model::{Model, ModelError};
