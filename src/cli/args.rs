@@ -118,7 +118,11 @@ pub struct SweepArgs {
     pub case: CaseArgs,
     /// A varied key: KEY=START:STOP:STEP (STOP included when the range lands on it) or
     /// KEY=v1,v2,... (repeatable; the first --vary varies slowest).
-    #[arg(long = "vary", value_name = "KEY=START:STOP:STEP|KEY=V1,V2,...", required = true)]
+    #[arg(
+        long = "vary",
+        value_name = "KEY=START:STOP:STEP|KEY=V1,V2,...",
+        required = true
+    )]
     pub vary: Vec<String>,
     /// What each case runs: one dynamic evaluation, or the wear study (both modes).
     #[arg(long, value_enum, default_value = "dynamics")]

@@ -17,8 +17,8 @@ use crate::io::{write_atomic, RunMetadata};
 use crate::report::figures::{panel, Curve};
 use crate::report::plot::{render_png, Figure};
 use crate::study::sweep::{
-    crossings, parse_vary, run_case, CaseError, CaseRecord, Crossing, Shard, SweepPlan, SweepRun, SweepTable,
-    SPEED_KEY,
+    crossings, parse_vary, run_case, CaseError, CaseRecord, Crossing, Shard, SweepPlan, SweepRun,
+    SweepTable, SPEED_KEY,
 };
 use crate::study::Model;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -77,7 +77,11 @@ fn plan_of(a: &SweepArgs, text: &str) -> Result<SweepPlan, CliError> {
             let mut sets = a.case.set.clone();
             sets.push(format!("{}={v}", axis.key));
             if let Err(e) = load_case(text, &sets) {
-                problems.extend(e.problems.iter().map(|p| format!("--vary {}: value `{v}`: {p}", axis.key)));
+                problems.extend(
+                    e.problems
+                        .iter()
+                        .map(|p| format!("--vary {}: value `{v}`: {p}", axis.key)),
+                );
                 if unknown_key {
                     break; // the same message for every value
                 }
@@ -99,7 +103,8 @@ fn case_path(dir: &Path, id: usize) -> PathBuf {
 fn finished(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Option<CaseRecord> {
     let text = std::fs::read_to_string(case_path(dir, p.id)).ok()?;
     let r: CaseRecord = serde_json::from_str(&text).ok()?;
-    r.is_result_of(p.id, &p.hash, run, keys, &p.values).then_some(r)
+    r.is_result_of(p.id, &p.hash, run, keys, &p.values)
+        .then_some(r)
 }
 
 fn progress_bar(n: usize) -> ProgressBar {
@@ -110,15 +115,22 @@ fn progress_bar(n: usize) -> ProgressBar {
     };
     let pb = ProgressBar::with_draw_target(Some(n as u64), target);
     pb.set_style(
-        ProgressStyle::with_template("sweep [{bar:30}] {pos}/{len} cases (elapsed {elapsed}, eta {eta})")
-            .unwrap_or_else(|_| ProgressStyle::default_bar())
-            .progress_chars("=> "),
+        ProgressStyle::with_template(
+            "sweep [{bar:30}] {pos}/{len} cases (elapsed {elapsed}, eta {eta})",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar())
+        .progress_chars("=> "),
     );
     pb
 }
 
 /// Run one case and write its record; the record is the first and only file a case writes.
-fn run_one(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Result<Vec<String>, CaseError> {
+fn run_one(
+    dir: &Path,
+    p: &Planned,
+    run: SweepRun,
+    keys: &[String],
+) -> Result<Vec<String>, CaseError> {
     let o = run_case(&p.case, run)?;
     let rec = CaseRecord {
         case_id: p.id,
@@ -127,7 +139,11 @@ fn run_one(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Result<Ve
         keys: keys.to_vec(),
         values: p.values.clone(),
         columns: run.columns(),
-        results: o.results.iter().map(|x| x.is_finite().then_some(*x)).collect(),
+        results: o
+            .results
+            .iter()
+            .map(|x| x.is_finite().then_some(*x))
+            .collect(),
     };
     let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
     write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
@@ -161,21 +177,33 @@ fn speed_figure(t: &SweepTable, marks: &[Crossing]) -> Option<Figure> {
     let (dte, df) = (t.column("dte_max_um")?, t.column("dynamic_factor")?);
     let mut groups: BTreeMap<String, Vec<(f64, f64, f64)>> = BTreeMap::new();
     for r in &t.rows {
-        let Ok(speed) = r.values[ks].parse::<f64>() else { continue };
+        let Ok(speed) = r.values[ks].parse::<f64>() else {
+            continue;
+        };
         let others: Vec<String> = (0..t.keys.len())
             .filter(|i| *i != ks)
             .map(|i| format!("{}={}", t.keys[i], r.values[i]))
             .collect();
-        groups.entry(others.join(", ")).or_default().push((speed, r.results[dte], r.results[df]));
+        groups
+            .entry(others.join(", "))
+            .or_default()
+            .push((speed, r.results[dte], r.results[df]));
     }
     let (mut c_dte, mut c_df) = (Vec::new(), Vec::new());
     for (name, mut pts) in groups {
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
-        c_dte.push(Curve::new(name.clone(), x.clone(), pts.iter().map(|p| p.1).collect()));
+        c_dte.push(Curve::new(
+            name.clone(),
+            x.clone(),
+            pts.iter().map(|p| p.1).collect(),
+        ));
         c_df.push(Curve::new(name, x, pts.iter().map(|p| p.2).collect()));
     }
-    let vlines: Vec<(f64, String)> = marks.iter().map(|c| (c.input_speed_hz, c.label())).collect();
+    let vlines: Vec<(f64, String)> = marks
+        .iter()
+        .map(|c| (c.input_speed_hz, c.label()))
+        .collect();
     let x = "input speed (Hz)";
     let mut p1 = panel(x, "max DTE (um)", c_dte);
     let mut p2 = panel(x, "dynamic factor (-)", c_df);
@@ -217,18 +245,27 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             let mut sets = a.case.set.clone();
             sets.extend(plan.overrides_of(id));
             let what = || format!("case {id} ({})", describe(&keys, &values));
-            let case = load_case(&text, &sets).map_err(|e| format!("{}: {}", what(), e.problems.join("; ")))?;
+            let case = load_case(&text, &sets)
+                .map_err(|e| format!("{}: {}", what(), e.problems.join("; ")))?;
             let hash = RunMetadata::new("sweep", &case).case_sha256;
-            Ok(Planned { id, values, case, hash })
+            Ok(Planned {
+                id,
+                values,
+                case,
+                hash,
+            })
         })
         .collect();
     let (ok, bad): (Vec<_>, Vec<_>) = resolved.into_iter().partition(Result::is_ok);
     if !bad.is_empty() {
-        return Err(CliError::Input(bad.into_iter().filter_map(Result::err).collect()));
+        return Err(CliError::Input(
+            bad.into_iter().filter_map(Result::err).collect(),
+        ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
-    let (done, pending): (Vec<&Planned>, Vec<&Planned>) =
-        planned.iter().partition(|p| finished(&a.out, p, run_kind, &keys).is_some());
+    let (done, pending): (Vec<&Planned>, Vec<&Planned>) = planned
+        .iter()
+        .partition(|p| finished(&a.out, p, run_kind, &keys).is_some());
     let model_problems: Vec<String> = pending
         .par_iter()
         .filter_map(|p| {
@@ -267,8 +304,11 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let mut failed = Vec::new();
     for (id, r) in outcomes {
         match r {
-            Ok(w) => w.into_iter().for_each(|w| *warnings.entry(w).or_default() += 1),
-            Err(e) => failed.push(json!({"case_id": id, "values": plan.values_of(id), "error": e.to_string()})),
+            Ok(w) => w
+                .into_iter()
+                .for_each(|w| *warnings.entry(w).or_default() += 1),
+            Err(e) => failed
+                .push(json!({"case_id": id, "values": plan.values_of(id), "error": e.to_string()})),
         }
     }
     for (w, n) in &warnings {
@@ -276,7 +316,10 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     }
 
     // The table is rebuilt from the case files, so a rerun's table holds every case.
-    let records: Vec<CaseRecord> = planned.iter().filter_map(|p| finished(&a.out, p, run_kind, &keys)).collect();
+    let records: Vec<CaseRecord> = planned
+        .iter()
+        .filter_map(|p| finished(&a.out, p, run_kind, &keys))
+        .collect();
     let table = SweepTable::from_records(keys.clone(), run_kind.columns(), &records);
     let stem = shard.stem();
     let csv_path = a.out.join(format!("{stem}.csv"));
@@ -319,7 +362,10 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     if failed.is_empty() {
         Ok(())
     } else {
-        let list: Vec<String> = failed.iter().map(|f| format!("case {}: {}", f["case_id"], f["error"])).collect();
+        let list: Vec<String> = failed
+            .iter()
+            .map(|f| format!("case {}: {}", f["case_id"], f["error"]))
+            .collect();
         Err(CliError::Failed(anyhow::anyhow!(
             "{} of {} cases failed (rerun to retry them; finished cases are skipped):\n  {}",
             failed.len(),
@@ -336,7 +382,10 @@ fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, CliError> {
         return Ok(vec![input.to_path_buf()]);
     }
     if !input.is_dir() {
-        return Err(CliError::input(format!("sweep-merge: {} does not exist", input.display())));
+        return Err(CliError::input(format!(
+            "sweep-merge: {} does not exist",
+            input.display()
+        )));
     }
     let mut found: Vec<PathBuf> = std::fs::read_dir(input)?
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -363,7 +412,8 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
             let src = csv.display().to_string();
             let text = std::fs::read_to_string(&csv)
                 .map_err(|e| CliError::input(format!("sweep-merge: {src}: cannot read: {e}")))?;
-            let t = SweepTable::from_csv(&text).map_err(|e| CliError::input(format!("sweep-merge: {src}: {e}")))?;
+            let t = SweepTable::from_csv(&text)
+                .map_err(|e| CliError::input(format!("sweep-merge: {src}: {e}")))?;
             if let Some(m) = std::fs::read_to_string(csv.with_extension("json"))
                 .ok()
                 .and_then(|s| serde_json::from_str::<serde_json::Value>(&s).ok())
@@ -373,11 +423,17 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
             tables.push((src, t));
         }
     }
-    let merged = SweepTable::merge(&tables).map_err(|e| CliError::input(format!("sweep-merge: {e}")))?;
+    let merged =
+        SweepTable::merge(&tables).map_err(|e| CliError::input(format!("sweep-merge: {e}")))?;
     // Descriptions present must agree on the sweep itself (axes, run, base case): shards
     // of different sweeps can have disjoint case ids and would otherwise merge silently.
     let identity = |m: &serde_json::Value| {
-        json!([m["vary"], m["run"], m["base"]["case_sha256"], m["total_cases"]])
+        json!([
+            m["vary"],
+            m["run"],
+            m["base"]["case_sha256"],
+            m["total_cases"]
+        ])
     };
     if let Some((src0, m0)) = metas.iter().find(|(_, m)| m["command"] == "sweep") {
         for (src, m) in metas.iter().filter(|(_, m)| m["command"] == "sweep") {
@@ -389,15 +445,27 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
         }
     }
     let (csv_path, png_path, meta_path) = if a.out.extension().is_some_and(|e| e == "csv") {
-        (a.out.clone(), a.out.with_extension("png"), a.out.with_extension("json"))
+        (
+            a.out.clone(),
+            a.out.with_extension("png"),
+            a.out.with_extension("json"),
+        )
     } else {
-        (a.out.join("sweep.csv"), a.out.join("sweep.png"), a.out.join("sweep.json"))
+        (
+            a.out.join("sweep.csv"),
+            a.out.join("sweep.png"),
+            a.out.join("sweep.json"),
+        )
     };
     write_atomic(&csv_path, &merged.to_csv().map_err(anyhow::Error::from)?)?;
 
-    let total = metas.iter().find_map(|(_, m)| m["total_cases"].as_u64()).map(|n| n as usize);
+    let total = metas
+        .iter()
+        .find_map(|(_, m)| m["total_cases"].as_u64())
+        .map(|n| n as usize);
     let have: std::collections::BTreeSet<usize> = merged.rows.iter().map(|r| r.case_id).collect();
-    let missing: Vec<usize> = total.map_or_else(Vec::new, |n| (0..n).filter(|i| !have.contains(i)).collect());
+    let missing: Vec<usize> =
+        total.map_or_else(Vec::new, |n| (0..n).filter(|i| !have.contains(i)).collect());
     if !missing.is_empty() {
         eprintln!(
             "warning: {} of {} cases missing from the merged table (first: {:?}); rerun their shards",
@@ -412,7 +480,10 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     if let Some(fig) = speed_figure(&merged, marks.as_deref().unwrap_or(&[])) {
         save_figure(&fig, &png_path)?;
     }
-    let first = metas.iter().find(|(_, m)| m["command"] == "sweep").map(|(_, m)| m.clone());
+    let first = metas
+        .iter()
+        .find(|(_, m)| m["command"] == "sweep")
+        .map(|(_, m)| m.clone());
     json_write(
         &meta_path,
         &json!({

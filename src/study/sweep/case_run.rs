@@ -161,7 +161,14 @@ pub struct CaseRecord {
 impl CaseRecord {
     /// Whether this record is the finished result of the given case: same id, resolved
     /// case, run kind, varied keys and values, and the columns this version writes.
-    pub fn is_result_of(&self, case_id: usize, hash: &str, run: SweepRun, keys: &[String], values: &[String]) -> bool {
+    pub fn is_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        run: SweepRun,
+        keys: &[String],
+        values: &[String],
+    ) -> bool {
         self.case_id == case_id
             && self.case_sha256 == hash
             && self.run == run

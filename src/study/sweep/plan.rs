@@ -27,7 +27,11 @@ pub fn parse_vary(text: &str) -> Result<Axis, String> {
     let spec = spec.trim();
     match key.split_once('.') {
         Some((s, k)) if !s.is_empty() && !k.is_empty() && !k.contains('.') => {}
-        _ => return Err(format!("--vary \"{text}\": the key `{key}` must be section.key")),
+        _ => {
+            return Err(format!(
+                "--vary \"{text}\": the key `{key}` must be section.key"
+            ))
+        }
     }
     if spec.is_empty() {
         return Err(format!("--vary {key}: no values given ({form})"));
@@ -35,7 +39,9 @@ pub fn parse_vary(text: &str) -> Result<Axis, String> {
     let values = if spec.contains(':') && !spec.contains(',') {
         let parts: Vec<&str> = spec.split(':').map(str::trim).collect();
         let [a, b, c] = parts[..] else {
-            return Err(format!("--vary {key}={spec}: a range is START:STOP:STEP (three numbers)"));
+            return Err(format!(
+                "--vary {key}={spec}: a range is START:STOP:STEP (three numbers)"
+            ));
         };
         let num = |s: &str, what: &str| -> Result<f64, String> {
             s.parse::<f64>()
@@ -82,7 +88,7 @@ pub fn range_values(start: f64, stop: f64, step: f64) -> Result<Vec<f64>, String
     }
     let lands = (q - q.round()).abs() <= tol;
     let n = if lands { q.round() } else { q.floor() }.max(0.0);
-    if !(n < MAX_CASES as f64) {
+    if n >= MAX_CASES as f64 {
         return Err(format!("{} values (more than {MAX_CASES})", n + 1.0));
     }
     let n = n as usize;
@@ -224,9 +230,15 @@ mod tests {
         let v = range_values(0.1, 0.5, 0.1).unwrap();
         assert_eq!(v, vec![0.1, 0.2, 0.3, 0.4, 0.5]);
         // (0.9 - 0.3) / 0.2 = 2.9999999999999996: within 1e-9 of 3, so 0.9 is in.
-        assert_eq!(range_values(0.3, 0.9, 0.2).unwrap(), vec![0.3, 0.5, 0.7, 0.9]);
+        assert_eq!(
+            range_values(0.3, 0.9, 0.2).unwrap(),
+            vec![0.3, 0.5, 0.7, 0.9]
+        );
         // Not landing: stops below STOP.
-        assert_eq!(range_values(10.0, 20.0, 4.0).unwrap(), vec![10.0, 14.0, 18.0]);
+        assert_eq!(
+            range_values(10.0, 20.0, 4.0).unwrap(),
+            vec![10.0, 14.0, 18.0]
+        );
         // START = STOP: one value.
         assert_eq!(range_values(30.0, 30.0, 5.0).unwrap(), vec![30.0]);
     }
@@ -245,7 +257,14 @@ mod tests {
         assert_eq!(a.values, vec!["20", "25", "30"]);
         let a = parse_vary(" friction.model = xu2007, constant ").unwrap();
         assert_eq!((a.key.as_str(), a.values.len()), ("friction.model", 2));
-        for bad in ["operating.input_speed_hz=1:2", "operating.input_speed_hz=5:1:1", "operating.input_speed_hz=1:2:0", "operating.input_speed_hz=a:2:1", "operating.input_speed_hz=1,,2", "operating.input_speed_hz="] {
+        for bad in [
+            "operating.input_speed_hz=1:2",
+            "operating.input_speed_hz=5:1:1",
+            "operating.input_speed_hz=1:2:0",
+            "operating.input_speed_hz=a:2:1",
+            "operating.input_speed_hz=1,,2",
+            "operating.input_speed_hz=",
+        ] {
             let e = parse_vary(bad).unwrap_err();
             assert!(e.contains("operating.input_speed_hz"), "{bad}: {e}");
         }
@@ -276,11 +295,17 @@ mod tests {
         // Every id in exactly one shard, for several shard counts (including more shards
         // than cases).
         for n in 1..=8 {
-            let mut all: Vec<usize> = (1..=n).flat_map(|i| Shard { index: i, count: n }.ids(6)).collect();
+            let mut all: Vec<usize> = (1..=n)
+                .flat_map(|i| Shard { index: i, count: n }.ids(6))
+                .collect();
             all.sort_unstable();
             assert_eq!(all, (0..6).collect::<Vec<_>>(), "N = {n}");
         }
-        assert!(SweepPlan::new(vec![parse_vary("a.x=1").unwrap(), parse_vary("a.x=2").unwrap()]).is_err());
+        assert!(SweepPlan::new(vec![
+            parse_vary("a.x=1").unwrap(),
+            parse_vary("a.x=2").unwrap()
+        ])
+        .is_err());
     }
 
     #[test]

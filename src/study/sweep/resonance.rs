@@ -26,7 +26,13 @@ impl Crossing {
 /// Crossings of harmonics 1..=`max_harmonic` with the natural frequencies (Hz) whose
 /// input speed lies in [lo_hz, hi_hz], sorted by speed. Rigid-body modes (f_n ~ 0) are
 /// skipped.
-pub fn crossings(natural_hz: &[f64], pinion_teeth: usize, max_harmonic: u32, lo_hz: f64, hi_hz: f64) -> Vec<Crossing> {
+pub fn crossings(
+    natural_hz: &[f64],
+    pinion_teeth: usize,
+    max_harmonic: u32,
+    lo_hz: f64,
+    hi_hz: f64,
+) -> Vec<Crossing> {
     let mut out = Vec::new();
     if pinion_teeth == 0 {
         return out;
@@ -61,10 +67,15 @@ mod tests {
         // z1 = 19: f_n = 1900 Hz is met by harmonic 1 at 100 rev/s, 2 at 50, 3 at 33.3.
         let c = crossings(&[0.0, 1900.0], 19, 3, 40.0, 120.0);
         assert_eq!(c.len(), 2);
-        assert_eq!((c[0].harmonic, c[0].mode, c[0].input_speed_hz), (2, 2, 50.0));
+        assert_eq!(
+            (c[0].harmonic, c[0].mode, c[0].input_speed_hz),
+            (2, 2, 50.0)
+        );
         assert_eq!((c[1].harmonic, c[1].input_speed_hz), (1, 100.0));
         for x in &c {
-            assert!((x.harmonic as f64 * 19.0 * x.input_speed_hz - x.natural_frequency_hz).abs() < 1e-9);
+            assert!(
+                (x.harmonic as f64 * 19.0 * x.input_speed_hz - x.natural_frequency_hz).abs() < 1e-9
+            );
         }
         assert!(crossings(&[1900.0], 19, 3, 101.0, 200.0).is_empty());
     }

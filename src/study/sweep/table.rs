@@ -50,7 +50,11 @@ impl SweepTable {
             })
             .collect();
         rows.sort_by_key(|r| r.case_id);
-        Self { keys, columns, rows }
+        Self {
+            keys,
+            columns,
+            rows,
+        }
     }
 
     /// Index of a result column.
@@ -106,13 +110,14 @@ impl SweepTable {
                 .parse()
                 .map_err(|_| format!("row {row}: case_id `{}` is not a whole number", cell(at)))?;
             let mut results = Vec::with_capacity(t.columns.len());
-            for i in at + 1..header.len() {
+            for (i, name) in header.iter().enumerate().skip(at + 1) {
                 let s = cell(i);
                 results.push(if s.is_empty() {
                     f64::NAN
                 } else {
-                    s.parse()
-                        .map_err(|_| format!("row {row}, column {}: `{s}` is not a number", header[i]))?
+                    s.parse().map_err(|_| {
+                        format!("row {row}, column {name}: `{s}` is not a number")
+                    })?
                 });
             }
             t.rows.push(SweepRow {
@@ -193,7 +198,8 @@ mod tests {
     #[test]
     fn csv_round_trip_is_exact() {
         let t = table(&[0, 1, 2], 1.0 / 3.0);
-        let back = SweepTable::from_csv(std::str::from_utf8(&t.to_csv().unwrap()).unwrap()).unwrap();
+        let back =
+            SweepTable::from_csv(std::str::from_utf8(&t.to_csv().unwrap()).unwrap()).unwrap();
         assert_eq!(back.keys, t.keys);
         assert_eq!(back.columns, t.columns);
         for (a, b) in back.rows.iter().zip(&t.rows) {
@@ -203,13 +209,25 @@ mod tests {
 
     #[test]
     fn merge_sorts_dedupes_and_rejects_conflicts() {
-        let m = SweepTable::merge(&[("b".into(), table(&[1, 3], 0.0)), ("a".into(), table(&[0, 2, 3], 0.0))]).unwrap();
-        assert_eq!(m.rows.iter().map(|r| r.case_id).collect::<Vec<_>>(), vec![0, 1, 2, 3]);
-        let e = SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), table(&[1], 1e-9))]).unwrap_err();
+        let m = SweepTable::merge(&[
+            ("b".into(), table(&[1, 3], 0.0)),
+            ("a".into(), table(&[0, 2, 3], 0.0)),
+        ])
+        .unwrap();
+        assert_eq!(
+            m.rows.iter().map(|r| r.case_id).collect::<Vec<_>>(),
+            vec![0, 1, 2, 3]
+        );
+        let e = SweepTable::merge(&[
+            ("a".into(), table(&[1], 0.0)),
+            ("b".into(), table(&[1], 1e-9)),
+        ])
+        .unwrap_err();
         assert!(e.contains("case_id 1"), "{e}");
         let mut other = table(&[5], 0.0);
         other.keys = vec!["operating.load_torque_nm".into()];
-        let e = SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), other)]).unwrap_err();
+        let e =
+            SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), other)]).unwrap_err();
         assert!(e.contains("mixed sweeps"), "{e}");
     }
 }
