@@ -115,9 +115,8 @@ impl SweepTable {
                 results.push(if s.is_empty() {
                     f64::NAN
                 } else {
-                    s.parse().map_err(|_| {
-                        format!("row {row}, column {name}: `{s}` is not a number")
-                    })?
+                    s.parse()
+                        .map_err(|_| format!("row {row}, column {name}: `{s}` is not a number"))?
                 });
             }
             t.rows.push(SweepRow {
