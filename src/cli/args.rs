@@ -29,6 +29,10 @@ pub enum Command {
     Wear(WearArgs),
     /// The paper's whole section 4 with a self-contained HTML report (the main job).
     Run(RunArgs),
+    /// Run the cross product of varied keys (in parallel; resumable; shardable).
+    Sweep(SweepArgs),
+    /// Join the tables of sweep shards into one, sorted by case id.
+    SweepMerge(SweepMergeArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -114,5 +118,45 @@ pub struct RunArgs {
     pub case: CaseArgs,
     /// Output directory.
     #[arg(long, default_value = "results")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SweepRunArg {
+    Dynamics,
+    Wear,
+}
+
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// A varied key: KEY=START:STOP:STEP (STOP included when the range lands on it) or
+    /// KEY=v1,v2,... (repeatable; the first --vary varies slowest).
+    #[arg(
+        long = "vary",
+        value_name = "KEY=START:STOP:STEP|KEY=V1,V2,...",
+        required = true
+    )]
+    pub vary: Vec<String>,
+    /// What each case runs: one dynamic evaluation, or the wear study (both modes).
+    #[arg(long, value_enum, default_value = "dynamics")]
+    pub run: SweepRunArg,
+    /// Output directory (cases/<case_id>.json, sweep.csv, sweep.json, sweep.png).
+    #[arg(long, default_value = "results/sweep")]
+    pub out: PathBuf,
+    /// Run only shard I of N (1-based; round-robin: case ids with id mod N = I-1);
+    /// outputs are then named sweep_shard_I_of_N.*.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+}
+
+#[derive(Debug, Args)]
+pub struct SweepMergeArgs {
+    /// Sweep output directories (their sweep.csv and sweep_shard_*_of_*.csv) or CSV files.
+    #[arg(required = true, value_name = "DIR_OR_CSV")]
+    pub inputs: Vec<PathBuf>,
+    /// Output directory (writes sweep.csv there), or a .csv file path.
+    #[arg(long)]
     pub out: PathBuf,
 }

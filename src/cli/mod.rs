@@ -8,6 +8,8 @@ mod error;
 pub mod output;
 mod run_cmd;
 pub mod stiffness_cmd;
+
+pub mod sweep_cmd;
 pub mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
@@ -25,6 +27,8 @@ pub fn main() -> ExitCode {
         Command::Dynamics(a) => dynamics_cmd::run(a),
         Command::Wear(a) => wear_cmd::run(a),
         Command::Run(a) => run_cmd::run(a),
+        Command::Sweep(a) => sweep_cmd::run(a),
+        Command::SweepMerge(a) => sweep_cmd::merge(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

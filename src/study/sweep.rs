@@ -1,0 +1,20 @@
+//! Parameter sweeps: the cross product of `--vary` axes over a base case, run case by
+//! case, each case reduced to one row of headline results.
+//!
+//! Pieces: [`plan`] (axes, case ids, shards), [`case_run`] (one case -> one row, and the
+//! record it leaves on disk so a rerun can skip it), [`table`] (rows, CSV, merge of
+//! shards), [`resonance`] (speeds where a mesh harmonic meets a natural frequency).
+//! File handling, parallelism and progress are the CLI's (`gearwear sweep`).
+
+pub mod case_run;
+pub mod plan;
+pub mod resonance;
+pub mod table;
+
+pub use case_run::{run_case, CaseError, CaseRecord, SweepRun};
+pub use plan::{parse_vary, Axis, Shard, SweepPlan};
+pub use resonance::{crossings, Crossing};
+pub use table::{SweepRow, SweepTable};
+
+/// The varied key of a speed sweep (gets the resonance plot).
+pub const SPEED_KEY: &str = "operating.input_speed_hz";

@@ -1,0 +1,219 @@
+//! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
+//! sweep row; and the record a finished case leaves on disk.
+
+use crate::config::Case;
+use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::summary::ResponseSummary;
+use crate::study::model::{Model, ModelError};
+use crate::study::wear_loop::{run_wear, WearMode, WearRun};
+use crate::wear::WearState;
+use serde::{Deserialize, Serialize};
+
+/// What each case runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepRun {
+    /// One steady-state evaluation of the new teeth (as `gearwear dynamics`).
+    Dynamics,
+    /// The wear study in both modes (as `gearwear wear --mode both`); the dynamics
+    /// columns are those of its first update, which is the new-teeth evaluation.
+    Wear,
+}
+
+/// Result columns of a dynamics row, display units in the names.
+const DYNAMICS_COLUMNS: [&str; 9] = [
+    "dte_max_um",
+    "velocity_y_pinion_rms_mm_per_s",
+    "mesh_force_mean_n",
+    "mesh_force_max_n",
+    "dynamic_factor",
+    "mesh_harmonic1_mm_per_s",
+    "mesh_harmonic2_mm_per_s",
+    "mesh_harmonic3_mm_per_s",
+    "mesh_harmonic4_mm_per_s",
+];
+
+/// Extra columns of a wear row: final maximum wear depths and update counts per mode.
+const WEAR_COLUMNS: [&str; 6] = [
+    "wear_max_pinion_dynamic_um",
+    "wear_max_gear_dynamic_um",
+    "wear_updates_dynamic",
+    "wear_max_pinion_quasi_static_um",
+    "wear_max_gear_quasi_static_um",
+    "wear_updates_quasi_static",
+];
+
+impl SweepRun {
+    pub fn name(&self) -> &'static str {
+        match self {
+            SweepRun::Dynamics => "dynamics",
+            SweepRun::Wear => "wear",
+        }
+    }
+
+    /// Names of the result columns, in row order.
+    pub fn columns(&self) -> Vec<String> {
+        let mut c: Vec<String> = DYNAMICS_COLUMNS.iter().map(|s| s.to_string()).collect();
+        if *self == SweepRun::Wear {
+            c.extend(WEAR_COLUMNS.iter().map(|s| s.to_string()));
+        }
+        c
+    }
+}
+
+/// The dynamics columns of a response summary. Unit conversions are written as in
+/// `gearwear dynamics`' summary.json (x 1e6 for um, x 1e3 for mm/s), so the numbers are
+/// bit-identical to it.
+pub fn dynamics_results(s: &ResponseSummary) -> Vec<f64> {
+    let h = s.velocity_y_pinion_harmonics_m_per_s;
+    vec![
+        s.dte_max_m * 1e6,
+        s.velocity_y_pinion_rms_m_per_s * 1e3,
+        s.mesh_force_mean_n,
+        s.mesh_force_max_n,
+        s.dynamic_factor,
+        h[0] * 1e3,
+        h[1] * 1e3,
+        h[2] * 1e3,
+        h[3] * 1e3,
+    ]
+}
+
+/// Why a case produced no row.
+#[derive(Debug)]
+pub enum CaseError {
+    /// The case cannot be modelled (geometry, settings): an input problem.
+    Model(ModelError),
+    /// A solver failed.
+    Solve(anyhow::Error),
+}
+
+impl std::fmt::Display for CaseError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CaseError::Model(e) => write!(f, "{e}"),
+            CaseError::Solve(e) => write!(f, "{e:#}"),
+        }
+    }
+}
+
+/// Results of one case (in [`SweepRun::columns`] order) and the model's warnings.
+pub struct CaseOutcome {
+    pub results: Vec<f64>,
+    pub warnings: Vec<String>,
+}
+
+/// Build the model of `case` and run it.
+pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+    let model = Model::from_case(case).map_err(CaseError::Model)?;
+    let results = match run {
+        SweepRun::Dynamics => {
+            let wear = WearState::new(model.grid.len());
+            let r = model
+                .dynamic(&wear, &ExternalError::none())
+                .map_err(|e| CaseError::Solve(e.into()))?;
+            dynamics_results(&ResponseSummary::of(&r))
+        }
+        SweepRun::Wear => {
+            let one = |mode| run_wear(&model, WearRun::new(mode), &mut |_| Ok(()));
+            let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
+            let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
+            wear_results(&d, &q)
+        }
+    };
+    Ok(CaseOutcome {
+        results,
+        warnings: model.warnings,
+    })
+}
+
+/// Dynamics columns of the dynamic run's first update (new teeth), then the wear columns.
+fn wear_results(d: &WearRun, q: &WearRun) -> Vec<f64> {
+    let mut v = d
+        .records
+        .first()
+        .map(|r| dynamics_results(&r.summary))
+        .unwrap_or_else(|| vec![f64::NAN; DYNAMICS_COLUMNS.len()]);
+    for run in [d, q] {
+        let last = run.last();
+        v.push(last.map_or(f64::NAN, |r| r.wear.max_pinion_m() * 1e6));
+        v.push(last.map_or(f64::NAN, |r| r.wear.max_gear_m() * 1e6));
+        v.push(run.records.len().saturating_sub(1) as f64);
+    }
+    v
+}
+
+/// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
+/// tell whether it belongs to the sweep being run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CaseRecord {
+    pub case_id: usize,
+    /// SHA-256 of the resolved case (`RunMetadata::case_sha256`).
+    pub case_sha256: String,
+    pub run: SweepRun,
+    pub keys: Vec<String>,
+    pub values: Vec<String>,
+    pub columns: Vec<String>,
+    /// In `columns` order; null for a non-finite number.
+    pub results: Vec<Option<f64>>,
+}
+
+impl CaseRecord {
+    /// Whether this record is the finished result of the given case: same id, resolved
+    /// case, run kind, varied keys and values, and the columns this version writes.
+    pub fn is_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        run: SweepRun,
+        keys: &[String],
+        values: &[String],
+    ) -> bool {
+        self.case_id == case_id
+            && self.case_sha256 == hash
+            && self.run == run
+            && self.keys == keys
+            && self.values == values
+            && self.columns == run.columns()
+            && self.results.len() == self.columns.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_match_results() {
+        let s = ResponseSummary {
+            dte_max_m: 2e-5,
+            velocity_y_pinion_harmonics_m_per_s: [1e-3, 2e-3, 3e-3, 4e-3],
+            ..Default::default()
+        };
+        let v = dynamics_results(&s);
+        assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
+        // 2e-5 m is 20 um; 4e-3 m/s is 4 mm/s (to rounding of the unit factors).
+        assert!((v[0] - 20.0).abs() < 1e-12 && (v[8] - 4.0).abs() < 1e-12);
+        assert_eq!(SweepRun::Wear.columns().len(), v.len() + 6);
+    }
+
+    #[test]
+    fn record_matches_only_its_case() {
+        let keys = vec!["operating.input_speed_hz".to_string()];
+        let values = vec!["30".to_string()];
+        let r = CaseRecord {
+            case_id: 3,
+            case_sha256: "abc".into(),
+            run: SweepRun::Dynamics,
+            keys: keys.clone(),
+            values: values.clone(),
+            columns: SweepRun::Dynamics.columns(),
+            results: vec![Some(1.0); 9],
+        };
+        assert!(r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(4, "abc", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(3, "abd", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(3, "abc", SweepRun::Wear, &keys, &values));
+        assert!(!r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &["31".to_string()]));
+    }
+}

@@ -1,0 +1,232 @@
+//! The sweep table: one row per case (varied values as text, `case_id`, result numbers),
+//! its CSV form, and the merge of shard tables.
+
+use super::case_run::CaseRecord;
+use std::collections::BTreeMap;
+
+/// One case's row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepRow {
+    pub case_id: usize,
+    /// Varied values, as given to `--set`.
+    pub values: Vec<String>,
+    /// Result numbers; NaN where a number was not finite (an empty CSV cell).
+    pub results: Vec<f64>,
+}
+
+impl SweepRow {
+    /// Same case id, values and numbers (NaN equal to NaN, bit for bit otherwise).
+    fn same_as(&self, o: &SweepRow) -> bool {
+        self.case_id == o.case_id
+            && self.values == o.values
+            && self.results.len() == o.results.len()
+            && self
+                .results
+                .iter()
+                .zip(&o.results)
+                .all(|(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()))
+    }
+}
+
+/// Rows of one sweep (or shard), sorted by case id.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SweepTable {
+    /// Varied keys: the columns before `case_id`.
+    pub keys: Vec<String>,
+    /// Result columns: the columns after `case_id`.
+    pub columns: Vec<String>,
+    pub rows: Vec<SweepRow>,
+}
+
+impl SweepTable {
+    /// Table of case records (which must share keys and columns), sorted by case id.
+    pub fn from_records(keys: Vec<String>, columns: Vec<String>, records: &[CaseRecord]) -> Self {
+        let mut rows: Vec<SweepRow> = records
+            .iter()
+            .map(|r| SweepRow {
+                case_id: r.case_id,
+                values: r.values.clone(),
+                results: r.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect(),
+            })
+            .collect();
+        rows.sort_by_key(|r| r.case_id);
+        Self {
+            keys,
+            columns,
+            rows,
+        }
+    }
+
+    /// Index of a result column.
+    pub fn column(&self, name: &str) -> Option<usize> {
+        self.columns.iter().position(|c| c == name)
+    }
+
+    /// CSV: header `keys..., case_id, columns...`; numbers in shortest round-trip
+    /// exponent form (`{:e}`, as `io::Table`), non-finite numbers as empty cells.
+    pub fn to_csv(&self) -> Result<Vec<u8>, csv::Error> {
+        let mut w = csv::Writer::from_writer(Vec::new());
+        let mut header = self.keys.clone();
+        header.push("case_id".into());
+        header.extend(self.columns.iter().cloned());
+        w.write_record(&header)?;
+        for r in &self.rows {
+            let mut rec = r.values.clone();
+            rec.push(r.case_id.to_string());
+            rec.extend(r.results.iter().map(|v| {
+                if v.is_finite() {
+                    format!("{v:e}")
+                } else {
+                    String::new()
+                }
+            }));
+            w.write_record(&rec)?;
+        }
+        w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
+    }
+
+    /// Read a table written by [`SweepTable::to_csv`].
+    pub fn from_csv(text: &str) -> Result<Self, String> {
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let header: Vec<String> = r
+            .headers()
+            .map_err(|e| e.to_string())?
+            .iter()
+            .map(str::to_owned)
+            .collect();
+        let Some(at) = header.iter().position(|h| h == "case_id") else {
+            return Err("no `case_id` column: not a gearwear sweep table".into());
+        };
+        let mut t = SweepTable {
+            keys: header[..at].to_vec(),
+            columns: header[at + 1..].to_vec(),
+            rows: Vec::new(),
+        };
+        for (line, rec) in r.records().enumerate() {
+            let rec = rec.map_err(|e| e.to_string())?;
+            let row = line + 2;
+            let cell = |i: usize| rec.get(i).unwrap_or("").trim();
+            let case_id = cell(at)
+                .parse()
+                .map_err(|_| format!("row {row}: case_id `{}` is not a whole number", cell(at)))?;
+            let mut results = Vec::with_capacity(t.columns.len());
+            for (i, name) in header.iter().enumerate().skip(at + 1) {
+                let s = cell(i);
+                results.push(if s.is_empty() {
+                    f64::NAN
+                } else {
+                    s.parse()
+                        .map_err(|_| format!("row {row}, column {name}: `{s}` is not a number"))?
+                });
+            }
+            t.rows.push(SweepRow {
+                case_id,
+                values: (0..at).map(|i| cell(i).to_owned()).collect(),
+                results,
+            });
+        }
+        t.rows.sort_by_key(|r| r.case_id);
+        Ok(t)
+    }
+
+    /// Join tables (each named by its source for messages) into one sorted by case id.
+    /// A case present in several tables must have identical rows there. Tables with other
+    /// varied keys (or in another order) or other result columns are another sweep: error.
+    pub fn merge(tables: &[(String, SweepTable)]) -> Result<SweepTable, String> {
+        let Some((first_src, first)) = tables.first() else {
+            return Err("sweep-merge: no tables to merge".into());
+        };
+        let mut rows: BTreeMap<usize, (&str, &SweepRow)> = BTreeMap::new();
+        for (src, t) in tables {
+            if t.keys != first.keys {
+                return Err(format!(
+                    "mixed sweeps: {src} varies [{}], {first_src} varies [{}]",
+                    t.keys.join(", "),
+                    first.keys.join(", ")
+                ));
+            }
+            if t.columns != first.columns {
+                return Err(format!(
+                    "mixed sweeps: {src} and {first_src} have different result columns (a `--run dynamics` and a `--run wear` sweep?)"
+                ));
+            }
+            for r in &t.rows {
+                match rows.get(&r.case_id) {
+                    Some((other, o)) if !o.same_as(r) => {
+                        return Err(format!(
+                            "case_id {} differs between {other} and {src} (values [{}] vs [{}]): not the same sweep, or results of different program versions",
+                            r.case_id,
+                            o.values.join(", "),
+                            r.values.join(", ")
+                        ));
+                    }
+                    Some(_) => {}
+                    None => {
+                        rows.insert(r.case_id, (src, r));
+                    }
+                }
+            }
+        }
+        Ok(SweepTable {
+            keys: first.keys.clone(),
+            columns: first.columns.clone(),
+            rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn table(ids: &[usize], bump: f64) -> SweepTable {
+        SweepTable {
+            keys: vec!["operating.input_speed_hz".into()],
+            columns: vec!["dte_max_um".into(), "dynamic_factor".into()],
+            rows: ids
+                .iter()
+                .map(|&i| SweepRow {
+                    case_id: i,
+                    values: vec![format!("{}", 20 + i)],
+                    results: vec![0.1 * i as f64 + bump, if i == 1 { f64::NAN } else { 1.5 }],
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn csv_round_trip_is_exact() {
+        let t = table(&[0, 1, 2], 1.0 / 3.0);
+        let back =
+            SweepTable::from_csv(std::str::from_utf8(&t.to_csv().unwrap()).unwrap()).unwrap();
+        assert_eq!(back.keys, t.keys);
+        assert_eq!(back.columns, t.columns);
+        for (a, b) in back.rows.iter().zip(&t.rows) {
+            assert!(a.same_as(b), "{a:?} != {b:?}");
+        }
+    }
+
+    #[test]
+    fn merge_sorts_dedupes_and_rejects_conflicts() {
+        let m = SweepTable::merge(&[
+            ("b".into(), table(&[1, 3], 0.0)),
+            ("a".into(), table(&[0, 2, 3], 0.0)),
+        ])
+        .unwrap();
+        assert_eq!(
+            m.rows.iter().map(|r| r.case_id).collect::<Vec<_>>(),
+            vec![0, 1, 2, 3]
+        );
+        let e = SweepTable::merge(&[
+            ("a".into(), table(&[1], 0.0)),
+            ("b".into(), table(&[1], 1e-9)),
+        ])
+        .unwrap_err();
+        assert!(e.contains("case_id 1"), "{e}");
+        let mut other = table(&[5], 0.0);
+        other.keys = vec!["operating.load_torque_nm".into()];
+        let e =
+            SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), other)]).unwrap_err();
+        assert!(e.contains("mixed sweeps"), "{e}");
+    }
+}
