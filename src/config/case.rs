@@ -340,7 +340,7 @@ impl Default for NumericsSection {
             steps_per_mesh_period: 200,
             max_mesh_periods: 2000,
             steady_state_tolerance: 1e-6,
-            evaluated_mesh_periods: 16,
+            evaluated_mesh_periods: 4,
         }
     }
 }

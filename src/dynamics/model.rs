@@ -29,6 +29,7 @@ use crate::contact::load_sharing::pedrero_share;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
 use nalgebra::{SMatrix, SVector};
+use std::cell::Cell;
 
 /// Number of generalised coordinates.
 pub const NDOF: usize = 8;
@@ -101,6 +102,11 @@ pub struct GearSystem<'a> {
     grad: SVector<f64, NDOF>,
     /// Constant generalised forces (motor and brake torques).
     q_ext: SVector<f64, NDOF>,
+    /// sin and cos of the operating pressure angle.
+    sin_cos_phi: (f64, f64),
+    /// Time at which the set of pairs in contact is decided (the middle of the current
+    /// integration step), or None for the time of each evaluation.
+    contact_decision_time_s: Cell<Option<f64>>,
 }
 
 impl<'a> GearSystem<'a> {
@@ -224,7 +230,16 @@ impl<'a> GearSystem<'a> {
             c_lin: c,
             grad,
             q_ext,
+            sin_cos_phi: (s, co),
+            contact_decision_time_s: Cell::new(None),
         }
+    }
+
+    /// Decide the pairs in contact at time `t_s` for the following evaluations (the
+    /// integrator sets the middle of each step, so no stage of a step straddles a mesh
+    /// event); `None` restores the evaluation time.
+    pub fn set_contact_decision_time(&self, t_s: Option<f64>) {
+        self.contact_decision_time_s.set(t_s);
     }
 
     /// d delta / dq: the mesh direction in generalised coordinates.
@@ -274,7 +289,11 @@ impl<'a> GearSystem<'a> {
         let mut gap_rate_weighted = 0.0;
         let mut compress = [0.0; MAX_PAIRS];
         let mut n = 0;
-        for (_, rho1) in self.pair.pairs_in_contact(phase) {
+        let decide = self
+            .contact_decision_time_s
+            .get()
+            .map_or(phase, |t| self.phase_at(t));
+        for (_, rho1) in self.pair.pairs_in_contact_decided(phase, decide) {
             if n == MAX_PAIRS {
                 break;
             }
@@ -367,7 +386,7 @@ impl<'a> GearSystem<'a> {
     pub fn mesh_forces(&self, ms: &MeshState) -> SVector<f64, NDOF> {
         use dof::*;
         let mut qf = -ms.force_n * self.grad;
-        let (s, c) = self.pair.operating_pressure_angle_rad.sin_cos();
+        let (s, c) = self.sin_cos_phi;
         let mut f_sum = 0.0;
         let mut m_p = 0.0;
         let mut m_g = 0.0;

@@ -114,7 +114,10 @@ impl GridStepper {
             self.sdirk.set_step_size(h)?;
             self.h = h;
         }
-        self.sdirk.step(ode, t, y).map(|_| ())
+        ode.sys.set_contact_decision_time(Some(t + 0.5 * h));
+        let r = self.sdirk.step(ode, t, y).map(|_| ());
+        ode.sys.set_contact_decision_time(None);
+        r
     }
 }
 

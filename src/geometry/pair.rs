@@ -243,11 +243,27 @@ impl GearPair {
     /// Pair k entered contact k mesh periods earlier: rho1 = rho_A + r_b1 phase + k p_b.
     /// Returns (k, rho1) for every pair with rho1 <= rho_E.
     pub fn pairs_in_contact(&self, phase_rad: f64) -> impl Iterator<Item = (usize, f64)> + '_ {
-        let phase = phase_rad.rem_euclid(self.mesh_angle_rad());
-        let rho0 = self.rho_start_m + self.pinion.base_radius_m * phase;
+        self.pairs_in_contact_decided(phase_rad, phase_rad)
+    }
+
+    /// As [`GearPair::pairs_in_contact`], but which pairs touch is decided at the phase
+    /// `decide_rad` (e.g. the middle of an integration step) while their positions follow
+    /// `phase_rad`. A step that ends exactly on a pair entering or leaving contact then
+    /// sees one contact set on all its stages, so the stiffness jump falls between steps.
+    pub fn pairs_in_contact_decided(
+        &self,
+        phase_rad: f64,
+        decide_rad: f64,
+    ) -> impl Iterator<Item = (usize, f64)> + '_ {
+        let period = self.mesh_angle_rad();
+        // floor-based reduction: f64::rem_euclid is a slow software fmod.
+        let base = (decide_rad / period).floor() * period;
+        let rb1 = self.pinion.base_radius_m;
+        let rho_decide = self.rho_start_m + rb1 * (decide_rad - base);
+        let rho0 = self.rho_start_m + rb1 * (phase_rad - base);
         (0..self.max_pairs())
+            .filter(move |k| rho_decide + *k as f64 * self.base_pitch_m <= self.rho_end_m + 1e-15)
             .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
-            .filter(move |(_, r)| *r <= self.rho_end_m + 1e-15)
     }
 
     /// Pinion roll angle (rad) at LOA position rho1: rho1 / r_b1.
