@@ -21,7 +21,7 @@ impl Compared {
     }
 }
 
-const DTE_WHY: &str = "The paper gives neither the mesh damping, the speed boundary condition, the viscosity nor the hub bores; with ours (zeta = 0.05, motor slip law, 40 cP, 8/14 mm) the lowest torsional mode sits at ~850 Hz above the 570 Hz mesh frequency. The trend with wear is reproduced when the wear gap grows faster than the roughness falls (see docs/REPRODUCTION.md).";
+const DTE_WHY: &str = "The paper gives neither the mesh damping, the speed boundary condition, the viscosity nor the hub bores; with ours (zeta = 0.05, motor slip law, 40 cP, 8/14 mm) the lowest oscillatory mode sits at ~850 Hz, above the 570 Hz mesh frequency. Our max DTE barely moves with wear: Archard wear vanishes at the pitch point, inside the single-contact zone where the maximum occurs (docs/REPRODUCTION.md).";
 const VEL_WHY: &str = "The y velocity is dominated by the response of the lowest oscillatory mode to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (NOTES.md). Our value scales with them as docs/REPRODUCTION.md shows.";
 const FORCE_WHY: &str = "In periodic steady state the mean mesh force is fixed by the load torque: r_gb mean(F) + mean friction moment = T_brk (docs/MODEL.md). Ours departs from 60 N m / r_pb = 3361 N only by the friction moment. The paper's 12 % rise of the mean with wear cannot come from a balanced drivetrain (NOTES.md).";
 const RATE_WHY: &str = "Ratio of the maximum pinion wear per cycle, dynamic to quasi-static, at 4e4 cycles. It follows the dynamic factor of the mesh force, which depends on the speed boundary condition and damping (docs/REPRODUCTION.md).";
