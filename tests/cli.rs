@@ -264,3 +264,48 @@ fn run_on_a_reduced_case_writes_every_promised_file_with_finite_numbers() {
         assert!(s.pointer(k).is_some(), "{k} missing");
     }
 }
+
+#[test]
+fn wear_resume_from_a_truncated_checkpoint_reaches_the_same_numbers() {
+    // Simulate a kill after the second update: keep only the first records of the
+    // checkpoint, resume, and compare with the uninterrupted run.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("w");
+    let o = out.to_str().unwrap();
+    let args = [
+        "wear",
+        "--mode",
+        "dynamic",
+        "--set",
+        "wear.total_cycles=1.5e4",
+        "--out",
+        o,
+    ];
+    assert!(gearwear(&args).status.success());
+    let full = json(&out.join("summary.json"));
+    let ck = out.join("checkpoint_dynamic.json");
+    let mut c = json(&ck);
+    let records = c["run"]["records"].as_array_mut().unwrap();
+    assert!(records.len() > 3);
+    records.truncate(2);
+    std::fs::write(&ck, serde_json::to_string(&c).unwrap()).unwrap();
+    let mut resumed_args = args.to_vec();
+    resumed_args.push("--resume");
+    assert!(gearwear(&resumed_args).status.success());
+    let resumed = json(&out.join("summary.json"));
+    for k in ["cycles", "max_wear_pinion_um", "max_wear_gear_um"] {
+        assert_eq!(full[k], resumed[k], "{k}");
+    }
+    // A checkpoint of another case is refused.
+    let o2 = gearwear(&[
+        "wear",
+        "--mode",
+        "dynamic",
+        "--resume",
+        "--set",
+        "wear.total_cycles=2e4",
+        "--out",
+        o,
+    ]);
+    assert_eq!(o2.status.code(), Some(2), "{}", stderr(&o2));
+}

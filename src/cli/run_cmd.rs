@@ -3,7 +3,9 @@
 use super::args::RunArgs;
 use super::output::{build_model, json_write, PLOT_H, PLOT_W};
 use super::stiffness_cmd::{figure2, stiffness_table};
-use super::wear_cmd::{wear_figures, wear_summary, write_run_tables};
+use super::wear_cmd::{
+    checkpoint_path, load_checkpoint, wear_figures, wear_summary, write_run_tables,
+};
 use super::CliError;
 use crate::dynamics::model::dof;
 use crate::dynamics::summary::velocity_y_spectrum;
@@ -202,24 +204,31 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         progress(&multi, case.wear.total_cycles, "quasi-static"),
     ];
     let ckpt = |mode: WearMode, run: &WearRun| -> anyhow::Result<()> {
-        let (i, name) = match mode {
-            WearMode::Dynamic => (0, "checkpoint_dynamic.json"),
-            WearMode::QuasiStatic => (1, "checkpoint_quasi_static.json"),
+        let i = match mode {
+            WearMode::Dynamic => 0,
+            WearMode::QuasiStatic => 1,
         };
         let c = json!({"case_sha256": meta.case_sha256, "run": run});
-        write_atomic(&out.join(name), serde_json::to_string(&c)?.as_bytes())?;
+        write_atomic(
+            &checkpoint_path(out, mode),
+            serde_json::to_string(&c)?.as_bytes(),
+        )?;
         if let Some(r) = run.last() {
             bars[i].set_position(r.wear.cycles as u64);
         }
         Ok(())
     };
-    let study = run_paper_study(
-        &model,
-        WearRun::new(WearMode::Dynamic),
-        WearRun::new(WearMode::QuasiStatic),
-        &ckpt,
-    )
-    .map_err(CliError::Failed)?;
+    // Each wear run starts afresh, or from its checkpoint with --resume (a checkpoint of
+    // another case is an input error).
+    let start = |mode| -> Result<WearRun, CliError> {
+        if a.resume {
+            load_checkpoint(out, mode, &meta.case_sha256)
+        } else {
+            Ok(WearRun::new(mode))
+        }
+    };
+    let (d0, q0) = (start(WearMode::Dynamic)?, start(WearMode::QuasiStatic)?);
+    let study = run_paper_study(&model, d0, q0, &ckpt).map_err(CliError::Failed)?;
     for b in &bars {
         b.finish_and_clear();
     }

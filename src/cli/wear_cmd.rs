@@ -20,13 +20,13 @@ struct Checkpoint {
     run: WearRun,
 }
 
-fn checkpoint_path(dir: &Path, mode: WearMode) -> PathBuf {
+pub fn checkpoint_path(dir: &Path, mode: WearMode) -> PathBuf {
     dir.join(format!("checkpoint_{}.json", mode.name()))
 }
 
 /// Load a checkpoint for `--resume`; a missing file starts afresh, a file of another
 /// case is an input error.
-fn load_checkpoint(dir: &Path, mode: WearMode, hash: &str) -> Result<WearRun, CliError> {
+pub fn load_checkpoint(dir: &Path, mode: WearMode, hash: &str) -> Result<WearRun, CliError> {
     let p = checkpoint_path(dir, mode);
     let Ok(text) = std::fs::read_to_string(&p) else {
         return Ok(WearRun::new(mode));
