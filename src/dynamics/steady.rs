@@ -145,6 +145,13 @@ pub fn solve_steady_state(
     let mut dte = vec![0.0; n];
     let mut force = vec![0.0; n];
     let mut converged_after = None;
+    let mut quiet = 0;
+    // A quarter of the shortest step: far from any other event, far above round-off.
+    let eps_t = 0.25
+        * nodes
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min);
     let mut change = f64::INFINITY;
     let mut t0 = 0.0;
     let mut steps = 0usize;
@@ -162,14 +169,24 @@ pub fn solve_steady_state(
                     return Err(DynamicsError::NonFinite(t));
                 }
             }
+            // A node can be a mesh event: sample its left limit, the same on every
+            // period whatever the round-off in t (the right limit is recorded below).
+            sys.set_contact_decision_time(Some(t - eps_t));
             let (_, ms) = sys.derivative(t, &y);
+            sys.set_contact_decision_time(None);
             dte[k] = ms.deflection_m;
             force[k] = ms.force_n;
         }
         t0 += period;
         if p >= 1 {
             change = relative_change(&dte, &prev_dte).max(relative_change(&force, &prev_force));
-            if change < settings.tolerance {
+            // Two consecutive periods under the tolerance: one quiet period can be chance.
+            quiet = if change < settings.tolerance {
+                quiet + 1
+            } else {
+                0
+            };
+            if quiet >= 2 {
                 converged_after = Some(p + 1);
                 break;
             }
@@ -209,7 +226,9 @@ pub fn solve_steady_state(
             if k + 1 == n {
                 break;
             }
+            sys.set_contact_decision_time(Some(t + eps_t));
             let (dy, ms) = sys.derivative(t, &y);
+            sys.set_contact_decision_time(None);
             record(
                 &mut sig,
                 t,
