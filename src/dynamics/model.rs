@@ -76,6 +76,8 @@ pub struct MeshState {
     pub deflection_m: f64,
     /// Sum of the stiffnesses of the pairs in contact, N/m.
     pub stiffness_total_n_per_m: f64,
+    /// Sum of the stiffnesses of the pairs actually touching (gap closed), N/m.
+    pub stiffness_touching_n_per_m: f64,
 }
 
 /// The assembled model: immutable inputs for one dynamic evaluation.
@@ -315,6 +317,7 @@ impl<'a> GearSystem<'a> {
             n += 1;
         }
         ms.n_pairs = n;
+        ms.stiffness_touching_n_per_m = k_touch;
         // Mesh damping acts on the closing rate of the touching pairs (eq. 2, c_m term
         // with de_t/dt); the mesh cannot pull: F >= 0 (contact loss).
         let force = if k_touch > 0.0 {
@@ -430,7 +433,7 @@ impl<'a> GearSystem<'a> {
         let ms = self.mesh_state(t_s, q.as_slice(), v.as_slice());
         let touching = ms.force_n > 0.0;
         let (k_mesh, c_mesh) = if touching {
-            (ms.stiffness_total_n_per_m, self.mesh_damping_n_s_per_m)
+            (ms.stiffness_touching_n_per_m, self.mesh_damping_n_s_per_m)
         } else {
             (0.0, 0.0)
         };

@@ -3,8 +3,8 @@
 //!
 //! Update scheme (paper eq. 17 and the text around it): the per-cycle wear of the current
 //! state is held for a block of m cycles; if the block would add more than the threshold
-//! epsilon^m at any point of either profile, it is shortened so that it adds exactly
-//! epsilon^m there; then the gap, the roughness and the response are renewed. The loop
+//! epsilon^m at any point of either profile, it is shortened to the whole number of cycles
+//! that adds at most epsilon^m there (at least one cycle); then the gap, the roughness and the response are renewed. The loop
 //! runs to the case's total number of cycles (the last block is cut to land on it).
 //!
 //! Every update is a record; the records are the whole state of the run, so a checkpoint
