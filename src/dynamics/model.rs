@@ -128,14 +128,14 @@ impl<'a> GearSystem<'a> {
         use dof::*;
         let p = params;
         let mut inv_mass = [
-            1.0 / p.mass_pinion_kg,
-            1.0 / p.mass_pinion_kg,
-            1.0 / p.mass_gear_kg,
-            1.0 / p.mass_gear_kg,
-            1.0 / p.inertia_motor_kg_m2,
-            1.0 / p.inertia_pinion_kg_m2,
-            1.0 / p.inertia_gear_kg_m2,
-            1.0 / p.inertia_brake_kg_m2,
+            1.0 / p.lumped.mass_pinion_kg,
+            1.0 / p.lumped.mass_pinion_kg,
+            1.0 / p.lumped.mass_gear_kg,
+            1.0 / p.lumped.mass_gear_kg,
+            1.0 / p.lumped.inertia_motor_kg_m2,
+            1.0 / p.lumped.inertia_pinion_kg_m2,
+            1.0 / p.lumped.inertia_gear_kg_m2,
+            1.0 / p.lumped.inertia_brake_kg_m2,
         ];
         let mut q_ext = SVector::<f64, NDOF>::zeros();
         // An imposed angle is a coordinate with infinite inertia: zero acceleration.
@@ -158,23 +158,23 @@ impl<'a> GearSystem<'a> {
         for (i, kb, cb) in [
             (
                 XP,
-                p.bearing_stiffness_pinion_n_per_m,
-                p.bearing_damping_pinion_n_s_per_m,
+                p.lumped.bearing_stiffness_pinion_n_per_m,
+                p.lumped.bearing_damping_pinion_n_s_per_m,
             ),
             (
                 YP,
-                p.bearing_stiffness_pinion_n_per_m,
-                p.bearing_damping_pinion_n_s_per_m,
+                p.lumped.bearing_stiffness_pinion_n_per_m,
+                p.lumped.bearing_damping_pinion_n_s_per_m,
             ),
             (
                 XG,
-                p.bearing_stiffness_gear_n_per_m,
-                p.bearing_damping_gear_n_s_per_m,
+                p.lumped.bearing_stiffness_gear_n_per_m,
+                p.lumped.bearing_damping_gear_n_s_per_m,
             ),
             (
                 YG,
-                p.bearing_stiffness_gear_n_per_m,
-                p.bearing_damping_gear_n_s_per_m,
+                p.lumped.bearing_stiffness_gear_n_per_m,
+                p.lumped.bearing_damping_gear_n_s_per_m,
             ),
         ] {
             k[(i, i)] = kb;
@@ -184,14 +184,14 @@ impl<'a> GearSystem<'a> {
             (
                 PHI_M,
                 PHI_P,
-                p.coupling_stiffness_motor_nm_per_rad,
-                p.coupling_damping_motor_nm_s_per_rad,
+                p.lumped.coupling_stiffness_motor_nm_per_rad,
+                p.lumped.coupling_damping_motor_nm_s_per_rad,
             ),
             (
                 PHI_G,
                 PHI_B,
-                p.coupling_stiffness_brake_nm_per_rad,
-                p.coupling_damping_brake_nm_s_per_rad,
+                p.lumped.coupling_stiffness_brake_nm_per_rad,
+                p.lumped.coupling_damping_brake_nm_s_per_rad,
             ),
         ] {
             for (m, val) in [(&mut k, kc), (&mut c, cc)] {

@@ -1,28 +1,16 @@
 //! Lumped parameters of the 8-DOF model in SI units, built from the case
 //! (paper Table 2, units corrected as NOTES.md says), and the operating point.
 
-use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
+use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
 use crate::geometry::GearPair;
 use std::f64::consts::PI;
 
-/// Parameters of paper eq. (1), SI.
+/// Parameters of paper eq. (1), SI: the lumped masses, inertias, bearing and coupling
+/// stiffness and damping of the case (already SI, units in their names), and the
+/// operating point derived from the case and the pair.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicParams {
-    pub mass_pinion_kg: f64,
-    pub mass_gear_kg: f64,
-    pub inertia_motor_kg_m2: f64,
-    pub inertia_pinion_kg_m2: f64,
-    pub inertia_gear_kg_m2: f64,
-    pub inertia_brake_kg_m2: f64,
-    pub bearing_stiffness_pinion_n_per_m: f64,
-    pub bearing_stiffness_gear_n_per_m: f64,
-    pub bearing_damping_pinion_n_s_per_m: f64,
-    pub bearing_damping_gear_n_s_per_m: f64,
-    pub coupling_stiffness_motor_nm_per_rad: f64,
-    pub coupling_stiffness_brake_nm_per_rad: f64,
-    pub coupling_damping_motor_nm_s_per_rad: f64,
-    pub coupling_damping_brake_nm_s_per_rad: f64,
-    pub mesh_damping_ratio: f64,
+    pub lumped: DynamicsSection,
     pub speed_boundary: SpeedBoundary,
     pub motor_slip_damping_nm_s_per_rad: f64,
     /// Nominal pinion speed Omega_p, rad/s.
@@ -49,21 +37,7 @@ impl DynamicParams {
         };
         let omega_p = 2.0 * PI * o.input_speed_hz;
         Self {
-            mass_pinion_kg: d.mass_pinion_kg,
-            mass_gear_kg: d.mass_gear_kg,
-            inertia_motor_kg_m2: d.inertia_motor_kg_m2,
-            inertia_pinion_kg_m2: d.inertia_pinion_kg_m2,
-            inertia_gear_kg_m2: d.inertia_gear_kg_m2,
-            inertia_brake_kg_m2: d.inertia_brake_kg_m2,
-            bearing_stiffness_pinion_n_per_m: d.bearing_stiffness_pinion_n_per_m,
-            bearing_stiffness_gear_n_per_m: d.bearing_stiffness_gear_n_per_m,
-            bearing_damping_pinion_n_s_per_m: d.bearing_damping_pinion_n_s_per_m,
-            bearing_damping_gear_n_s_per_m: d.bearing_damping_gear_n_s_per_m,
-            coupling_stiffness_motor_nm_per_rad: d.coupling_stiffness_motor_nm_per_rad,
-            coupling_stiffness_brake_nm_per_rad: d.coupling_stiffness_brake_nm_per_rad,
-            coupling_damping_motor_nm_s_per_rad: d.coupling_damping_motor_nm_s_per_rad,
-            coupling_damping_brake_nm_s_per_rad: d.coupling_damping_brake_nm_s_per_rad,
-            mesh_damping_ratio: d.mesh_damping_ratio,
+            lumped: d.clone(),
             speed_boundary: o.speed_boundary,
             motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
             pinion_speed_rad_s: omega_p,
@@ -76,14 +50,17 @@ impl DynamicParams {
     /// Equivalent mass of the mesh's torsional mode, kg (NOTES.md):
     /// m_e = J_p J_g / (J_p r_gb^2 + J_g r_pb^2).
     pub fn equivalent_mesh_mass_kg(&self, pair: &GearPair) -> f64 {
-        let (jp, jg) = (self.inertia_pinion_kg_m2, self.inertia_gear_kg_m2);
+        let (jp, jg) = (
+            self.lumped.inertia_pinion_kg_m2,
+            self.lumped.inertia_gear_kg_m2,
+        );
         let (rp, rg) = (pair.pinion.base_radius_m, pair.gear.base_radius_m);
         jp * jg / (jp * rg * rg + jg * rp * rp)
     }
 
     /// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m (the paper gives none; NOTES.md).
     pub fn mesh_damping_n_s_per_m(&self, pair: &GearPair, mean_stiffness_n_per_m: f64) -> f64 {
-        2.0 * self.mesh_damping_ratio
+        2.0 * self.lumped.mesh_damping_ratio
             * (mean_stiffness_n_per_m * self.equivalent_mesh_mass_kg(pair)).sqrt()
     }
 
