@@ -214,9 +214,6 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
             case.lubricant.viscosity_cp
         ));
     }
-    if case.wear.threshold_um <= 0.0 {
-        // Range check reports it; nothing more here.
-    }
 }
 
 /// Build a case from TOML text (empty for the default) and `--set` overrides.
