@@ -95,6 +95,11 @@ pub struct DynamicResponse {
     /// trapezoid on the nodes would split each jump and be first order only).
     pub mean_mesh_force_n: f64,
     pub mean_dte_m: f64,
+    /// State y = [q; dq/dt] (SI, `dynamics::model` coordinates) at the end of the
+    /// evaluated window, a mesh-period boundary (mesh phase 0). Passing it as the start
+    /// of another evaluation (`steady::solve_steady_state_from`) warm-starts that one from
+    /// this periodic state: wear updates, continuation along a parameter.
+    pub end_state: [f64; 16],
     /// Integrator work (for benchmarks and the performance notes).
     pub steps: usize,
     pub rhs_evaluations: usize,

@@ -121,10 +121,22 @@ impl GridStepper {
     }
 }
 
-/// Integrate `sys` to its mesh-periodic steady state and record the evaluated window.
+/// Integrate `sys` to its mesh-periodic steady state and record the evaluated window,
+/// starting from the static equilibrium.
 pub fn solve_steady_state(
     sys: &GearSystem,
     settings: &SteadyStateSettings,
+) -> Result<DynamicResponse, DynamicsError> {
+    solve_steady_state_from(sys, settings, None)
+}
+
+/// As [`solve_steady_state`], starting at mesh phase 0 from `start` (a state at a
+/// mesh-period boundary, e.g. [`DynamicResponse::end_state`] of a neighbouring case)
+/// instead of the static equilibrium.
+pub fn solve_steady_state_from(
+    sys: &GearSystem,
+    settings: &SteadyStateSettings,
+    start: Option<&[f64; NSTATE]>,
 ) -> Result<DynamicResponse, DynamicsError> {
     let omega = sys.params.pinion_speed_rad_s;
     let nodes = period_nodes(sys.pair, omega, settings.steps_per_mesh_period);
@@ -137,7 +149,10 @@ pub fn solve_steady_state(
         }
     };
     let mut stepper = GridStepper::new(sys, nodes[1] - nodes[0]).map_err(integ_err(0.0))?;
-    let mut y = sys.static_equilibrium();
+    let mut y = match start {
+        Some(s) => State::from_column_slice(s),
+        None => sys.static_equilibrium(),
+    };
     let n = nodes.len();
 
     let mut prev_dte = vec![f64::NAN; n];
@@ -253,6 +268,7 @@ pub fn solve_steady_state(
         mesh_period_s: period,
         mean_mesh_force_n: force_int / (period * settings.evaluated_mesh_periods as f64),
         mean_dte_m: dte_int / (period * settings.evaluated_mesh_periods as f64),
+        end_state: std::array::from_fn(|i| y[i]),
         steps,
         rhs_evaluations: stats.rhs_calls as usize,
         factorizations: stats.lu_factorizations as usize,

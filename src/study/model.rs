@@ -5,10 +5,11 @@ use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::GearSystem;
+use crate::dynamics::model::NSTATE;
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
-use crate::dynamics::steady::{solve_steady_state, DynamicsError, SteadyStateSettings};
+use crate::dynamics::steady::{solve_steady_state_from, DynamicsError, SteadyStateSettings};
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::MeshStiffness;
 use crate::stiffness::potential_energy::ElasticPair;
@@ -107,9 +108,21 @@ impl Model {
         wear: &WearState,
         external: &ExternalError,
     ) -> Result<DynamicResponse, DynamicsError> {
+        self.dynamic_from(wear, external, None)
+    }
+
+    /// As [`Model::dynamic`], warm-started from `start` (the `end_state` of an earlier
+    /// response, e.g. the previous wear update or continuation point); `None` starts from
+    /// the static equilibrium.
+    pub fn dynamic_from(
+        &self,
+        wear: &WearState,
+        external: &ExternalError,
+        start: Option<&[f64; NSTATE]>,
+    ) -> Result<DynamicResponse, DynamicsError> {
         let gap = wear.pair_gap(&self.grid);
         let sys = self.system(&gap, external, self.roughness_for(wear));
-        solve_steady_state(&sys, &self.settings)
+        solve_steady_state_from(&sys, &self.settings, start)
     }
 
     /// Quasi-static response of the worn pair.
