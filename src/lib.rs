@@ -12,6 +12,7 @@ pub mod cli;
 pub mod config;
 pub mod contact;
 pub mod dynamics;
+pub mod format;
 pub mod geometry;
 pub mod io;
 pub mod report;

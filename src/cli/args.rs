@@ -13,6 +13,10 @@ use super::CliError;
     about = "Dynamic wear prediction of spur gears (Coatings 2022, 12, 1250)"
 )]
 pub struct Cli {
+    /// Print no results on standard output (errors, warnings and progress still go to
+    /// standard error).
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
     #[command(subcommand)]
     pub command: Command,
 }

@@ -2,13 +2,19 @@
 
 use crate::config::ConfigError;
 use crate::geometry::GeometryError;
+use crate::io::checkpoint::CheckpointError;
+use crate::io::lock::LockError;
+use crate::io::transmission_error::TransmissionErrorInput;
+use crate::io::OutputError;
+use crate::report::artifacts::WriteError;
 use std::fmt;
 
 #[derive(Debug)]
 pub enum CliError {
-    /// The input is wrong (case file, overrides, a file argument): exit code 2.
+    /// The input is wrong (case file, overrides, a file argument, the output folder):
+    /// exit code 2. The user can fix it.
     Input(Vec<String>),
-    /// The run failed for another reason (I/O, a solver that did not converge): exit code 1.
+    /// The run failed for another reason (a solver that did not converge): exit code 1.
     Failed(anyhow::Error),
 }
 
@@ -55,12 +61,45 @@ impl From<GeometryError> for CliError {
 
 impl From<anyhow::Error> for CliError {
     fn from(e: anyhow::Error) -> Self {
-        CliError::Failed(e)
+        // An output problem raised inside a study's callback (a checkpoint write) is still
+        // the user's to fix.
+        match e.downcast::<OutputError>() {
+            Ok(o) => o.into(),
+            Err(e) => CliError::Failed(e),
+        }
     }
 }
 
-impl From<std::io::Error> for CliError {
-    fn from(e: std::io::Error) -> Self {
-        CliError::Failed(e.into())
+/// Problems with the output folder name the path: exit 2.
+impl From<OutputError> for CliError {
+    fn from(e: OutputError) -> Self {
+        CliError::input(e.to_string())
+    }
+}
+
+impl From<LockError> for CliError {
+    fn from(e: LockError) -> Self {
+        CliError::input(e.to_string())
+    }
+}
+
+impl From<CheckpointError> for CliError {
+    fn from(e: CheckpointError) -> Self {
+        CliError::input(e.to_string())
+    }
+}
+
+impl From<TransmissionErrorInput> for CliError {
+    fn from(e: TransmissionErrorInput) -> Self {
+        CliError::input(format!("--transmission-error {e}"))
+    }
+}
+
+impl From<WriteError> for CliError {
+    fn from(e: WriteError) -> Self {
+        match e {
+            WriteError::Output(o) => o.into(),
+            other => CliError::Failed(other.into()),
+        }
     }
 }

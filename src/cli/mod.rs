@@ -3,14 +3,15 @@
 
 mod args;
 mod config_cmd;
-pub mod dynamics_cmd;
+mod dynamics_cmd;
 mod error;
-pub mod output;
+mod output;
+mod progress;
+mod resume;
 mod run_cmd;
-pub mod stiffness_cmd;
-
-pub mod sweep_cmd;
-pub mod wear_cmd;
+mod stiffness_cmd;
+mod sweep_cmd;
+mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
 pub use error::CliError;
@@ -21,6 +22,7 @@ use std::process::ExitCode;
 /// Entry point of the binary. Exit code 2 for bad input, 1 for a failed run.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    output::set_quiet(cli.quiet);
     let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a),

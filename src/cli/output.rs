@@ -1,15 +1,31 @@
-//! Helpers shared by the commands: model building with warnings, JSON and PNG writing.
+//! What every command does around its study: build the model (warnings to stderr), open
+//! the output set, write and publish the artifacts, print the headline.
+//!
+//! Streams: results (the headline numbers) go to standard output, so `gearwear run >
+//! out.txt` keeps them; progress bars, warnings and log lines go to standard error.
+//! `--quiet` drops the headline.
 
 use super::CliError;
 use crate::config::Case;
-use crate::io::write_atomic;
-use crate::report::plot::{render_png, Figure};
+use crate::io::{OutputDir, RunMetadata};
+use crate::report::{write_artifacts, Artifacts};
 use crate::study::Model;
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
 
-/// Plot size, px.
-pub const PLOT_W: u32 = 900;
-pub const PLOT_H: u32 = 420;
+static QUIET: AtomicBool = AtomicBool::new(false);
+
+/// Set by `--quiet`.
+pub fn set_quiet(q: bool) {
+    QUIET.store(q, Ordering::Relaxed);
+}
+
+/// Print results to standard output unless `--quiet`.
+pub fn say(text: &str) {
+    if !QUIET.load(Ordering::Relaxed) && !text.is_empty() {
+        println!("{text}");
+    }
+}
 
 /// Build the model; geometry problems are input errors (exit 2); warnings go to stderr.
 pub fn build_model(case: &Case) -> Result<Model, CliError> {
@@ -20,22 +36,21 @@ pub fn build_model(case: &Case) -> Result<Model, CliError> {
     Ok(m)
 }
 
-/// Pretty JSON, written atomically. Non-finite numbers become null (serde_json's rule),
-/// never "NaN".
-pub fn json_write(path: &Path, v: &serde_json::Value) -> anyhow::Result<()> {
-    let text = serde_json::to_string_pretty(v)?;
-    write_atomic(path, text.as_bytes())?;
-    Ok(())
+/// Open the output folder for `command` (one set per folder).
+pub fn open_out(out: &Path, command: &str) -> Result<OutputDir, CliError> {
+    Ok(OutputDir::open(out, None, command)?)
 }
 
-/// A figure as PNG, written atomically.
-pub fn save_png(fig: &Figure, path: &Path) -> anyhow::Result<()> {
-    let bytes = render_png(fig, PLOT_W, PLOT_H)?;
-    write_atomic(path, &bytes)?;
+/// Stamp the metadata on the summary, stage everything, publish the set, print the
+/// headline (stdout) and where the files went (stderr).
+pub fn finish(mut out: OutputDir, mut a: Artifacts, meta: &RunMetadata) -> Result<(), CliError> {
+    if a.summary.get("metadata").is_none() {
+        a.summary["metadata"] = serde_json::to_value(meta).map_err(anyhow::Error::from)?;
+    }
+    write_artifacts(&mut out, &a)?;
+    let root = out.root().to_path_buf();
+    out.publish()?;
+    say(&a.headline);
+    eprintln!("{}: results -> {}", meta.command, root.display());
     Ok(())
-}
-
-/// Metres to micrometres.
-pub fn um(v: &[f64]) -> Vec<f64> {
-    v.iter().map(|x| x * 1e6).collect()
 }

@@ -8,14 +8,15 @@
 //! natural frequencies, failures), `STEM.png` (speed sweeps only).
 
 use super::args::{CaseArgs, SweepArgs, SweepMergeArgs, SweepRunArg};
-use super::output::{json_write, PLOT_W};
+use super::output::say;
 use super::CliError;
 use crate::config::{load_case, schema, Case};
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::modal::modes;
-use crate::io::{write_atomic, RunMetadata};
-use crate::report::figures::{panel, Curve};
-use crate::report::plot::{render_png, Figure};
+use crate::io::atomic::ensure_real_dir;
+use crate::io::{write_atomic, OutputDir, RunMetadata};
+use crate::report::artifacts::{stage_figures, Artifacts};
+use crate::report::sweep::{speed_figure, SWEEP_FIGURE_PX};
 use crate::study::sweep::{
     crossings, parse_vary, run_case, CaseError, CaseRecord, Crossing, Shard, SweepPlan, SweepRun,
     SweepTable, SPEED_KEY,
@@ -170,57 +171,6 @@ fn speed_crossings(base: &Case, plan: &SweepPlan) -> Option<(Vec<f64>, Vec<Cross
     Some((f_n, c))
 }
 
-/// Max DTE and dynamic factor against input speed, one curve per combination of the other
-/// varied keys, with the crossing speeds marked.
-fn speed_figure(t: &SweepTable, marks: &[Crossing]) -> Option<Figure> {
-    let ks = t.keys.iter().position(|k| k == SPEED_KEY)?;
-    let (dte, df) = (t.column("dte_max_um")?, t.column("dynamic_factor")?);
-    let mut groups: BTreeMap<String, Vec<(f64, f64, f64)>> = BTreeMap::new();
-    for r in &t.rows {
-        let Ok(speed) = r.values[ks].parse::<f64>() else {
-            continue;
-        };
-        let others: Vec<String> = (0..t.keys.len())
-            .filter(|i| *i != ks)
-            .map(|i| format!("{}={}", t.keys[i], r.values[i]))
-            .collect();
-        groups
-            .entry(others.join(", "))
-            .or_default()
-            .push((speed, r.results[dte], r.results[df]));
-    }
-    let (mut c_dte, mut c_df) = (Vec::new(), Vec::new());
-    for (name, mut pts) in groups {
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
-        c_dte.push(Curve::new(
-            name.clone(),
-            x.clone(),
-            pts.iter().map(|p| p.1).collect(),
-        ));
-        c_df.push(Curve::new(name, x, pts.iter().map(|p| p.2).collect()));
-    }
-    let vlines: Vec<(f64, String)> = marks
-        .iter()
-        .map(|c| (c.input_speed_hz, c.label()))
-        .collect();
-    let x = "input speed (Hz)";
-    let mut p1 = panel(x, "max DTE (um)", c_dte);
-    let mut p2 = panel(x, "dynamic factor (-)", c_df);
-    p1.vlines = vlines.clone();
-    p2.vlines = vlines;
-    Some(Figure {
-        title: "Speed sweep (markers: h x z1 x f_in = natural frequency f_n, h = 1..3)".into(),
-        panels: vec![p1, p2],
-    })
-}
-
-/// The two-panel sweep figure as PNG (taller than the one-panel default), atomically.
-fn save_figure(fig: &Figure, path: &Path) -> anyhow::Result<()> {
-    write_atomic(path, &render_png(fig, PLOT_W, 640)?)?;
-    Ok(())
-}
-
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let started = Instant::now();
     let run_kind = match a.run {
@@ -277,7 +227,9 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     if !model_problems.is_empty() {
         return Err(CliError::Input(model_problems));
     }
-    std::fs::create_dir_all(a.out.join("cases"))?;
+    let stem = shard.stem();
+    let mut out = OutputDir::open(&a.out, Some(&stem), "sweep")?;
+    ensure_real_dir(&a.out, &a.out.join("cases"))?;
 
     eprintln!(
         "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
@@ -320,15 +272,24 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         .iter()
         .filter_map(|p| finished(&a.out, p, run_kind, &keys))
         .collect();
+    for p in &planned {
+        if records.iter().any(|r| r.case_id == p.id) {
+            out.keep_state(&format!("cases/{}.json", p.id));
+        }
+    }
     let table = SweepTable::from_records(keys.clone(), run_kind.columns(), &records);
-    let stem = shard.stem();
     let csv_path = a.out.join(format!("{stem}.csv"));
-    write_atomic(&csv_path, &table.to_csv().map_err(anyhow::Error::from)?)?;
+    let mut art = Artifacts::default();
+    out.stage(
+        &format!("{stem}.csv"),
+        &table.to_csv().map_err(anyhow::Error::from)?,
+    )?;
 
     let speed = speed_crossings(&base, &plan);
     if let Some((_, marks)) = &speed {
         if let Some(fig) = speed_figure(&table, marks) {
-            save_figure(&fig, &a.out.join(format!("{stem}.png")))?;
+            let (w, h) = SWEEP_FIGURE_PX;
+            art.figure_sized(format!("{stem}.png"), fig, w, h);
         }
     }
     let wall_s = started.elapsed().as_secs_f64();
@@ -349,7 +310,16 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         "threads": rayon::current_num_threads(),
         "base": RunMetadata::new("sweep", &base),
     });
-    json_write(&a.out.join(format!("{stem}.json")), &meta)?;
+    out.stage_json(&format!("{stem}.json"), &meta)?;
+    stage_figures(&mut out, &art.figures)?;
+    out.publish()?;
+    say(&format!(
+        "sweep: {} rows ({} computed, {} skipped, {} failed)",
+        table.rows.len(),
+        pending.len() - failed.len(),
+        done.len(),
+        failed.len()
+    ));
     eprintln!(
         "sweep: {} rows -> {} ({} computed, {} skipped, {} failed; {:.1} s)",
         table.rows.len(),
@@ -387,7 +357,8 @@ fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, CliError> {
             input.display()
         )));
     }
-    let mut found: Vec<PathBuf> = std::fs::read_dir(input)?
+    let mut found: Vec<PathBuf> = std::fs::read_dir(input)
+        .map_err(|e| CliError::input(format!("sweep-merge: cannot read {}: {e}", input.display())))?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| {
             let n = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
@@ -444,20 +415,29 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
             }
         }
     }
-    let (csv_path, png_path, meta_path) = if a.out.extension().is_some_and(|e| e == "csv") {
-        (
-            a.out.clone(),
-            a.out.with_extension("png"),
-            a.out.with_extension("json"),
-        )
+    // `--out DIR` writes DIR/sweep.*; `--out FILE.csv` writes FILE.* beside it.
+    let (dir, stem) = if a.out.extension().is_some_and(|e| e == "csv") {
+        let dir = a
+            .out
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .unwrap_or(Path::new("."))
+            .to_path_buf();
+        let stem = a
+            .out
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "sweep".into());
+        (dir, stem)
     } else {
-        (
-            a.out.join("sweep.csv"),
-            a.out.join("sweep.png"),
-            a.out.join("sweep.json"),
-        )
+        (a.out.clone(), "sweep".to_owned())
     };
-    write_atomic(&csv_path, &merged.to_csv().map_err(anyhow::Error::from)?)?;
+    let mut out = OutputDir::open(&dir, Some(&stem), "sweep-merge")?;
+    let csv_path = dir.join(format!("{stem}.csv"));
+    out.stage(
+        &format!("{stem}.csv"),
+        &merged.to_csv().map_err(anyhow::Error::from)?,
+    )?;
 
     let total = metas
         .iter()
@@ -477,16 +457,17 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     let marks: Option<Vec<Crossing>> = metas
         .iter()
         .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
+    let mut art = Artifacts::default();
     if let Some(fig) = speed_figure(&merged, marks.as_deref().unwrap_or(&[])) {
-        save_figure(&fig, &png_path)?;
+        let (w, h) = SWEEP_FIGURE_PX;
+        art.figure_sized(format!("{stem}.png"), fig, w, h);
     }
+    stage_figures(&mut out, &art.figures)?;
     let first = metas
         .iter()
         .find(|(_, m)| m["command"] == "sweep")
         .map(|(_, m)| m.clone());
-    json_write(
-        &meta_path,
-        &json!({
+    let meta = json!({
             "command": "sweep-merge",
             "inputs": tables.iter().map(|(s, _)| s.clone()).collect::<Vec<_>>(),
             "rows": merged.rows.len(),
@@ -496,8 +477,14 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
             "run": first.as_ref().map(|m| m["run"].clone()),
             "resonance_crossings": first.as_ref().map(|m| m["resonance_crossings"].clone()),
             "base": first.as_ref().map(|m| m["base"].clone()),
-        }),
-    )?;
+    });
+    out.stage_json(&format!("{stem}.json"), &meta)?;
+    out.publish()?;
+    say(&format!(
+        "sweep-merge: {} rows from {} table(s)",
+        merged.rows.len(),
+        tables.len()
+    ));
     eprintln!(
         "sweep-merge: {} table(s), {} rows -> {}",
         tables.len(),

@@ -1,9 +1,18 @@
-//! Output: atomic file writes, CSV tables, run metadata.
+//! Output: atomic file writes, output folders published as one set, CSV tables, run
+//! metadata.
 
 pub mod atomic;
+pub mod checkpoint;
+pub mod error;
+pub mod lock;
 pub mod metadata;
+pub mod output_dir;
 pub mod table;
+pub mod transmission_error;
 
+pub use crate::format::format_number;
 pub use atomic::write_atomic;
+pub use error::OutputError;
 pub use metadata::RunMetadata;
+pub use output_dir::{Manifest, OutputDir};
 pub use table::Table;

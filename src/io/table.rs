@@ -1,8 +1,5 @@
 //! Column tables written as CSV (header with units, one row per sample).
 
-use super::atomic::write_atomic;
-use std::path::Path;
-
 /// Named numeric columns of equal length. Column names carry their unit, e.g.
 /// `mesh_force_n`.
 #[derive(Debug, Clone, Default)]
@@ -36,7 +33,7 @@ impl Table {
             row.clear();
             for c in &self.columns {
                 row.push(match c.get(r) {
-                    Some(v) if v.is_finite() => format!("{v:e}"),
+                    Some(v) if v.is_finite() => crate::format::format_number(*v),
                     _ => String::new(),
                 });
             }
@@ -45,10 +42,16 @@ impl Table {
         w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
     }
 
-    /// Write the CSV atomically.
-    pub fn save(&self, path: &Path) -> anyhow::Result<()> {
-        write_atomic(path, &self.to_csv()?)?;
-        Ok(())
+    /// The columns of `other` added after these.
+    pub fn append(mut self, other: Table) -> Self {
+        self.names.extend(other.names);
+        self.columns.extend(other.columns);
+        self
+    }
+
+    /// Index of the column named `name`.
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
     }
 }
 

@@ -1,6 +1,15 @@
-//! Plots and the HTML report.
+//! Everything a command shows or writes, built from results by pure functions that the
+//! command line and the Python binding share: summaries, tables, figures, the HTML report.
 
+pub mod artifacts;
 pub mod comparison;
+pub mod dynamics;
 pub mod figures;
 pub mod html;
+pub mod paper;
 pub mod plot;
+pub mod stiffness;
+pub mod sweep;
+pub mod wear;
+
+pub use artifacts::{write_artifacts, Artifacts};

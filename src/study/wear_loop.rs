@@ -33,6 +33,14 @@ impl WearMode {
             WearMode::QuasiStatic => "quasi_static",
         }
     }
+
+    /// The mode in words, for figures and messages.
+    pub fn label(&self) -> &'static str {
+        match self {
+            WearMode::Dynamic => "dynamic",
+            WearMode::QuasiStatic => "quasi-static",
+        }
+    }
 }
 
 /// One update: the wear state reached, the response computed on it, and the per-cycle
@@ -155,6 +163,24 @@ pub fn run_wear(
         on_update(&run)?;
     }
     Ok(run)
+}
+
+/// Run (or continue) several wear runs in parallel (e.g. the dynamic study and its
+/// quasi-static twin); `on_update(mode, run)` after every update of each. Results in the
+/// order of `starts`.
+pub fn run_wear_modes(
+    model: &Model,
+    starts: Vec<WearRun>,
+    on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
+) -> anyhow::Result<Vec<WearRun>> {
+    use rayon::prelude::*;
+    starts
+        .into_par_iter()
+        .map(|start| {
+            let mode = start.mode;
+            run_wear(model, start, &mut |r| on_update(mode, r))
+        })
+        .collect()
 }
 
 #[cfg(test)]

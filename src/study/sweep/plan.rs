@@ -106,17 +106,7 @@ fn round_sig(x: f64, digits: usize) -> f64 {
     format!("{x:.*e}", digits - 1).parse().unwrap_or(x)
 }
 
-/// A number as TOML text that reads back to the same f64: plain decimal when short
-/// (`30`, `32.5`; a whole number reads as an integer, which float keys accept), exponent
-/// form for very large or small magnitudes.
-pub fn format_number(x: f64) -> String {
-    let a = x.abs();
-    if a != 0.0 && !(1e-4..1e15).contains(&a) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
+pub use crate::format::format_number;
 
 /// The cross product of the axes. Case ids number it with the first axis varying
 /// slowest (row-major), so ids do not depend on sharding.

@@ -62,8 +62,8 @@ impl SweepTable {
         self.columns.iter().position(|c| c == name)
     }
 
-    /// CSV: header `keys..., case_id, columns...`; numbers in shortest round-trip
-    /// exponent form (`{:e}`, as `io::Table`), non-finite numbers as empty cells.
+    /// CSV: header `keys..., case_id, columns...`; numbers as `crate::format` writes them
+    /// (shortest round trip, plain where short), non-finite numbers as empty cells.
     pub fn to_csv(&self) -> Result<Vec<u8>, csv::Error> {
         let mut w = csv::Writer::from_writer(Vec::new());
         let mut header = self.keys.clone();
@@ -75,7 +75,7 @@ impl SweepTable {
             rec.push(r.case_id.to_string());
             rec.extend(r.results.iter().map(|v| {
                 if v.is_finite() {
-                    format!("{v:e}")
+                    crate::format::format_number(*v)
                 } else {
                     String::new()
                 }

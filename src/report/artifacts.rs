@@ -1,0 +1,119 @@
+//! What a command produces, before it is written: the summary, the tables, the figures,
+//! other documents, and the short text a user sees. Built by pure functions of the results
+//! (`report::{stiffness, dynamics, wear, paper, sweep}`) that the command line and the
+//! Python binding share; written by [`write_artifacts`] into an output set.
+
+use super::plot::{render_png, Figure, PlotError};
+use crate::io::{OutputDir, OutputError, Table};
+use rayon::prelude::*;
+
+/// Default plot size, px.
+pub const PLOT_W: u32 = 900;
+pub const PLOT_H: u32 = 420;
+
+/// A figure and the file it goes to.
+pub struct FigureFile {
+    /// Path relative to the output folder, ending in `.png`.
+    pub path: String,
+    pub figure: Figure,
+    pub width_px: u32,
+    pub height_px: u32,
+}
+
+/// Everything one command writes.
+#[derive(Default)]
+pub struct Artifacts {
+    /// The content of `summary.json` (the numbers a user or a script reads).
+    pub summary: serde_json::Value,
+    /// CSV tables by relative path.
+    pub tables: Vec<(String, Table)>,
+    pub figures: Vec<FigureFile>,
+    /// Other files (e.g. `report.html`) by relative path.
+    pub documents: Vec<(String, Vec<u8>)>,
+    /// A few lines for standard output: the headline results.
+    pub headline: String,
+}
+
+impl Artifacts {
+    pub fn table(&mut self, path: impl Into<String>, t: Table) {
+        self.tables.push((path.into(), t));
+    }
+
+    /// Add a figure of the default size.
+    pub fn figure(&mut self, path: impl Into<String>, figure: Figure) {
+        self.figure_sized(path, figure, PLOT_W, PLOT_H);
+    }
+
+    pub fn figure_sized(&mut self, path: impl Into<String>, figure: Figure, w: u32, h: u32) {
+        self.figures.push(FigureFile {
+            path: path.into(),
+            figure,
+            width_px: w,
+            height_px: h,
+        });
+    }
+
+    /// The table at `path`, if present.
+    pub fn table_at(&self, path: &str) -> Option<&Table> {
+        self.tables.iter().find(|(p, _)| p == path).map(|(_, t)| t)
+    }
+}
+
+/// Why artifacts could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum WriteError {
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    #[error("cannot draw {path}: {source}")]
+    Plot { path: String, source: PlotError },
+    #[error("cannot format {path}: {reason}")]
+    Format { path: String, reason: String },
+}
+
+/// Render figures in parallel (PNG bytes, in the order given).
+pub fn render_figures(figures: &[FigureFile]) -> Result<Vec<Vec<u8>>, WriteError> {
+    figures
+        .par_iter()
+        .map(|f| {
+            render_png(&f.figure, f.width_px, f.height_px).map_err(|source| WriteError::Plot {
+                path: f.path.clone(),
+                source,
+            })
+        })
+        .collect()
+}
+
+/// Stage every artifact into `out` (`summary.json`, tables, figures, documents). The
+/// caller publishes the set.
+pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteError> {
+    let text = serde_json::to_string_pretty(&a.summary).map_err(|e| WriteError::Format {
+        path: "summary.json".into(),
+        reason: e.to_string(),
+    })?;
+    out.stage("summary.json", text.as_bytes())?;
+    for (path, t) in &a.tables {
+        let bytes = t.to_csv().map_err(|e| WriteError::Format {
+            path: path.clone(),
+            reason: e.to_string(),
+        })?;
+        out.stage(path, &bytes)?;
+    }
+    stage_figures(out, &a.figures)?;
+    for (path, bytes) in &a.documents {
+        out.stage(path, bytes)?;
+    }
+    Ok(())
+}
+
+/// Render and stage figures into `out`.
+pub fn stage_figures(out: &mut OutputDir, figures: &[FigureFile]) -> Result<(), WriteError> {
+    for (f, png) in figures.iter().zip(render_figures(figures)?) {
+        out.stage(&f.path, &png)?;
+    }
+    Ok(())
+}
+
+/// Metres to micrometres.
+pub fn um(v: &[f64]) -> Vec<f64> {
+    v.iter().map(|x| x * 1e6).collect()
+}

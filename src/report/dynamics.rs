@@ -1,0 +1,261 @@
+//! Results of one steady-state dynamic evaluation (`gearwear dynamics`): the time
+//! series, the path of contact, the modes, the spectrum, their figures and the summary.
+
+use super::artifacts::{um, Artifacts};
+use super::figures::{panel, single, spectrum_panel, Curve};
+use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::modal::modes;
+use crate::dynamics::model::dof;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
+use crate::io::Table;
+use crate::study::Model;
+use serde_json::json;
+
+/// Names and units of the 8 generalised coordinates, in `dynamics::model::dof` order.
+pub const COORDINATE_NAMES: [&str; 8] = [
+    "x_pinion",
+    "y_pinion",
+    "x_gear",
+    "y_gear",
+    "phi_motor",
+    "phi_pinion",
+    "phi_gear",
+    "phi_brake",
+];
+pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad", "rad"];
+
+/// Everything `gearwear dynamics` writes for one evaluation (`label` names the state in
+/// figure titles, e.g. "new teeth").
+pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
+    let mut a = Artifacts::default();
+    let s = &r.signals;
+    let ms = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
+    let t_ms = ms(&s.time_s);
+    let col = |k: usize, which: &Vec<[f64; 8]>| which.iter().map(|v| v[k]).collect::<Vec<_>>();
+    let (names, units) = (COORDINATE_NAMES, COORDINATE_UNITS);
+    let mut t = Table::new()
+        .col("time_s", s.time_s.clone())
+        .col("mesh_phase_rad", s.phase_rad.clone())
+        .col("dte_um", um(&s.dte_m))
+        .col("mesh_force_n", s.mesh_force_n.clone())
+        .col("mesh_stiffness_n_per_m", s.mesh_stiffness_n_per_m.clone())
+        .col(
+            "friction_coefficient_pair0",
+            s.friction_coefficient[0].clone(),
+        )
+        .col(
+            "friction_coefficient_pair1",
+            s.friction_coefficient[1].clone(),
+        )
+        .col("friction_force_pair0_n", s.friction_n[0].clone())
+        .col("friction_force_pair1_n", s.friction_n[1].clone())
+        .col("load_pair0_n", s.pair_load_n[0].clone())
+        .col("load_pair1_n", s.pair_load_n[1].clone());
+    for k in 0..8 {
+        t = t.col(
+            &format!("{}_{}", names[k], units[k]),
+            col(k, &s.displacement),
+        );
+    }
+    for k in 0..8 {
+        t = t.col(
+            &format!("d{}_{}_per_s", names[k], units[k]),
+            col(k, &s.velocity),
+        );
+    }
+    for k in 0..8 {
+        t = t.col(
+            &format!("dd{}_{}_per_s2", names[k], units[k]),
+            col(k, &s.acceleration),
+        );
+    }
+    a.table("timeseries.csv", t);
+
+    let p = &r.path;
+    let path_table = Table::new()
+        .col("rho1_mm", p.iter().map(|x| x.rho1_m * 1e3).collect())
+        .col(
+            "pinion_radius_mm",
+            p.iter()
+                .map(|x| model.pair.pinion.radius_at_rho(x.rho1_m) * 1e3)
+                .collect(),
+        )
+        .col("load_n", p.iter().map(|x| x.load_n).collect())
+        .col(
+            "hertz_pressure_mpa",
+            p.iter().map(|x| x.pressure_pa * 1e-6).collect(),
+        )
+        .col(
+            "half_width_um",
+            p.iter().map(|x| x.half_width_m * 1e6).collect(),
+        )
+        .col(
+            "friction_coefficient",
+            p.iter().map(|x| x.friction_coefficient).collect(),
+        )
+        .col("friction_force_n", p.iter().map(|x| x.friction_n).collect())
+        .col(
+            "sliding_m_per_s",
+            p.iter()
+                .map(|x| x.pinion_surface_speed_m_per_s - x.gear_surface_speed_m_per_s)
+                .collect(),
+        );
+    a.table("path.csv", path_table);
+
+    // Natural frequencies and mass-normalised mode shapes of the linearised model.
+    let gap0 = PairGap::none();
+    let ext0 = ExternalError::none();
+    let m = modes(&model.system(&gap0, &ext0, model.roughness.rms_um(0.0)));
+    let mut mt = Table::new()
+        .col(
+            "mode",
+            (1..=m.frequency_hz.len()).map(|i| i as f64).collect(),
+        )
+        .col("frequency_hz", m.frequency_hz.clone());
+    for k in 0..8 {
+        mt = mt.col(
+            &format!("shape_{}", names[k]),
+            m.shapes.iter().map(|s| s[k]).collect(),
+        );
+    }
+    a.table("modes.csv", mt);
+
+    let f_mesh = model.params.mesh_frequency_hz(&model.pair);
+    let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
+    if has_velocity {
+        let spec = velocity_y_spectrum(r);
+        a.table(
+            "spectrum.csv",
+            Table::new()
+                .col("frequency_hz", spec.frequency_hz.clone())
+                .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
+        );
+        let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
+        a.figure(
+            "velocity_y_pinion.png",
+            single(
+                &format!("Pinion y velocity ({label})"),
+                panel(
+                    "time (ms)",
+                    "dy_p/dt (mm/s)",
+                    vec![Curve::new("", t_ms.clone(), vy)],
+                ),
+            ),
+        );
+        a.figure(
+            "spectrum_velocity_y_pinion.png",
+            single(
+                &format!("Spectrum of dy_p/dt ({label})"),
+                spectrum_panel(
+                    "amplitude (mm/s)",
+                    &spec.frequency_hz,
+                    &ms(&spec.amplitude),
+                    5.0 * f_mesh,
+                    f_mesh,
+                ),
+            ),
+        );
+    }
+    a.figure(
+        "dte.png",
+        single(
+            &format!("Dynamic transmission error ({label})"),
+            panel(
+                "time (ms)",
+                "DTE (um)",
+                vec![Curve::new("", t_ms.clone(), um(&s.dte_m))],
+            ),
+        ),
+    );
+    a.figure(
+        "mesh_force.png",
+        single(
+            &format!("Mesh force ({label})"),
+            panel(
+                "time (ms)",
+                "F (N)",
+                vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
+            ),
+        ),
+    );
+    let rho_mm: Vec<f64> = p.iter().map(|x| x.rho1_m * 1e3).collect();
+    a.figure(
+        "friction_coefficient.png",
+        single(
+            &format!("Friction coefficient along the path of contact ({label})"),
+            panel(
+                "pinion roll distance rho1 (mm)",
+                "mu (-)",
+                vec![Curve::new(
+                    "",
+                    rho_mm.clone(),
+                    p.iter().map(|x| x.friction_coefficient).collect(),
+                )],
+            ),
+        ),
+    );
+    a.figure(
+        "friction_force.png",
+        single(
+            &format!("Friction force along the path of contact ({label})"),
+            panel(
+                "pinion roll distance rho1 (mm)",
+                "f (N)",
+                vec![Curve::new(
+                    "",
+                    rho_mm,
+                    p.iter().map(|x| x.friction_n).collect(),
+                )],
+            ),
+        ),
+    );
+    a.summary = dynamics_summary(model, r);
+    a.headline = dynamics_headline(&a.summary);
+    a
+}
+
+/// The summary of one dynamic evaluation (the keys of `summary.json`, display units in
+/// the names).
+pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value {
+    let s = &ResponseSummary::of(r);
+    let gap = PairGap::none();
+    let ext = ExternalError::none();
+    let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
+    let m = modes(&sys);
+    json!({
+        "mesh_frequency_hz": model.params.mesh_frequency_hz(&model.pair),
+        "natural_frequencies_hz": m.frequency_hz,
+        "mesh_damping_n_s_per_m": sys.mesh_damping_n_s_per_m,
+        "dte": {"max_um": s.dte_max_m * 1e6, "min_um": s.dte_min_m * 1e6, "mean_um": s.dte_mean_m * 1e6},
+        "mesh_force": {"mean_n": s.mesh_force_mean_n, "max_n": s.mesh_force_max_n, "min_n": s.mesh_force_min_n, "dynamic_factor": s.dynamic_factor},
+        "velocity_y_pinion": {"rms_mm_per_s": s.velocity_y_pinion_rms_m_per_s * 1e3},
+        "mesh_harmonics": {
+            "unit": "mm/s (amplitude of dy_p/dt at 1-4 x mesh frequency)",
+            "velocity_y_pinion": s.velocity_y_pinion_harmonics_m_per_s.iter().map(|a| a * 1e3).collect::<Vec<_>>(),
+        },
+        "friction_coefficient": {"max": s.friction_coefficient_max, "mean_in_contact": s.friction_coefficient_mean_in_contact},
+        "friction_force": {"max_abs_n": s.friction_force_max_n},
+        "steady_state": {
+            "periods_to_converge": r.periods_to_converge,
+            "periodicity_error": r.periodicity_error,
+            "mesh_period_s": r.mesh_period_s,
+            "integrator_steps": r.steps,
+            "rhs_evaluations": r.rhs_evaluations,
+            "lu_factorizations": r.factorizations,
+        },
+        "warnings": model.warnings,
+    })
+}
+
+/// One line of headline numbers from a dynamics summary.
+pub fn dynamics_headline(v: &serde_json::Value) -> String {
+    let f = |p: &str| v.pointer(p).and_then(|x| x.as_f64()).unwrap_or(f64::NAN);
+    format!(
+        "max DTE {:.4} um, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
+        f("/dte/max_um"),
+        f("/mesh_force/mean_n"),
+        f("/mesh_force/dynamic_factor"),
+        f("/velocity_y_pinion/rms_mm_per_s"),
+    )
+}

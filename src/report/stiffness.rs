@@ -1,0 +1,199 @@
+//! Results of the mesh-stiffness study (`gearwear stiffness`, Fig. 2 of `run`): the mesh
+//! stiffness over a mesh period, load sharing, the quasi-static transmission error, the
+//! ISO 6336 cross-check, the pair's geometry.
+
+use super::artifacts::Artifacts;
+use super::figures::{panel, Curve};
+use super::plot::Figure;
+use crate::contact::load_sharing::pedrero_share;
+use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::quasi_static::equilibrium;
+use crate::io::Table;
+use crate::stiffness::iso6336::Iso6336Input;
+use crate::stiffness::mesh::MeshStiffness;
+use crate::study::Model;
+use serde_json::json;
+
+/// Samples over one mesh period in the CSV and plot.
+const SAMPLES: usize = 720;
+
+/// Columns of `mesh_stiffness.csv` over one mesh period and the summary numbers.
+pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
+    let pair = &model.pair;
+    let gap = PairGap::none();
+    let ext = ExternalError::none();
+    let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
+    let mut cols: Vec<Vec<f64>> = (0..12).map(|_| Vec::with_capacity(SAMPLES)).collect();
+    for i in 0..SAMPLES {
+        let phase = pair.mesh_angle_rad() * i as f64 / SAMPLES as f64;
+        let eq = equilibrium(&sys, phase);
+        let total: f64 = (0..eq.n_pairs).map(|j| eq.stiffness_n_per_m[j]).sum();
+        let get = |a: &[f64; 4], j: usize| if j < eq.n_pairs { a[j] } else { f64::NAN };
+        let ped = |j: usize| {
+            if j < eq.n_pairs {
+                pedrero_share(pair, eq.rho1_m[j])
+            } else {
+                0.0
+            }
+        };
+        let by_k = |j: usize| {
+            if j < eq.n_pairs {
+                eq.stiffness_n_per_m[j] / total
+            } else {
+                0.0
+            }
+        };
+        let row = [
+            phase.to_degrees(),
+            get(&eq.rho1_m, 0) * 1e3,
+            get(&eq.rho1_m, 1) * 1e3,
+            get(&eq.stiffness_n_per_m, 0),
+            get(&eq.stiffness_n_per_m, 1),
+            total,
+            ped(0),
+            ped(1),
+            by_k(0),
+            by_k(1),
+            eq.deflection_m * 1e6,
+            eq.force_n,
+        ];
+        for (c, v) in cols.iter_mut().zip(row) {
+            c.push(v);
+        }
+    }
+    let names = [
+        "pinion_angle_deg",
+        "rho1_pair0_mm",
+        "rho1_pair1_mm",
+        "stiffness_pair0_n_per_m",
+        "stiffness_pair1_n_per_m",
+        "stiffness_total_n_per_m",
+        "load_share_pedrero_pair0",
+        "load_share_pedrero_pair1",
+        "load_share_stiffness_pair0",
+        "load_share_stiffness_pair1",
+        "quasi_static_te_um",
+        "quasi_static_mesh_force_n",
+    ];
+    let mut t = Table::new();
+    for (n, c) in names.iter().zip(cols.iter()) {
+        t = t.col(n, c.clone());
+    }
+    let mesh = &model.mesh;
+    let te = &cols[10];
+    let v = json!({
+        "contact_ratio": pair.contact_ratio,
+        "mesh_stiffness": {
+            "min_n_per_m": mesh.min_stiffness_n_per_m(),
+            "max_n_per_m": mesh.max_stiffness_n_per_m(),
+            "mean_n_per_m": mesh.mean_stiffness_n_per_m(),
+            "fillet_foundation": model.case.stiffness.fillet_foundation,
+        },
+        "quasi_static_te": {
+            "min_um": te.iter().fold(f64::INFINITY, |a, b| a.min(*b)),
+            "max_um": te.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)),
+        },
+    });
+    (t, v)
+}
+
+/// The paper's Figure 2 (single-pair and total mesh stiffness over pinion rotation).
+pub fn figure2(model: &Model, t: &Table) -> Figure {
+    let x = t.columns[0].clone();
+    let scale = |c: &Vec<f64>| c.iter().map(|v| v * 1e-8).collect::<Vec<_>>();
+    Figure {
+        title: "Fig. 2: time-varying mesh stiffness (potential energy method)".into(),
+        panels: vec![
+            panel(
+                "pinion angle within a mesh period (deg)",
+                "stiffness (1e8 N/m)",
+                vec![
+                    Curve::new("total k_m", x.clone(), scale(&t.columns[5])),
+                    Curve::new("pair 0", x.clone(), scale(&t.columns[3])),
+                    Curve::new("pair 1", x.clone(), scale(&t.columns[4])),
+                ],
+            ),
+            panel(
+                "pinion angle within a mesh period (deg)",
+                &format!(
+                    "quasi-static TE (um) at {:.0} N",
+                    model.params.brake_torque_nm / model.pair.gear.base_radius_m
+                ),
+                vec![Curve::new("", x, t.columns[10].clone())],
+            ),
+        ],
+    }
+}
+
+/// ISO 6336-1 Method B beside the potential-energy result (or why it cannot be evaluated).
+pub fn iso6336_json(model: &Model) -> serde_json::Value {
+    match Iso6336Input::from_pair(&model.pair, 1.0, None).evaluate() {
+        Ok(iso) => {
+            let b_mm = model.pair.face_width_m * 1e3;
+            let c_n_per_m = iso.mesh_alpha_n_per_mm_um * b_mm * 1e6;
+            json!({
+                "c_prime_th_n_per_mm_um": iso.theoretical_single_n_per_mm_um,
+                "c_prime_n_per_mm_um": iso.single_n_per_mm_um,
+                "c_gamma_alpha_n_per_mm_um": iso.mesh_alpha_n_per_mm_um,
+                "c_gamma_alpha_n_per_m": c_n_per_m,
+                "ratio_potential_energy_mean_to_c_gamma_alpha": model.mesh.mean_stiffness_n_per_m() / c_n_per_m,
+                "warnings": iso.warnings,
+            })
+        }
+        Err(e) => json!({ "error": e.to_string() }),
+    }
+}
+
+/// The pair's geometry, mm and deg.
+pub fn geometry_json(model: &Model) -> serde_json::Value {
+    let p = &model.pair;
+    json!({
+        "base_radius_mm": [p.pinion.base_radius_m * 1e3, p.gear.base_radius_m * 1e3],
+        "tip_radius_mm": [p.pinion.tip_radius_m * 1e3, p.gear.tip_radius_m * 1e3],
+        "root_radius_mm": [p.pinion.root_radius_m * 1e3, p.gear.root_radius_m * 1e3],
+        "centre_distance_mm": p.centre_distance_m * 1e3,
+        "operating_pressure_angle_deg": p.operating_pressure_angle_rad.to_degrees(),
+        "path_of_contact_mm": [p.rho_start_m * 1e3, p.rho_end_m * 1e3],
+        "pitch_point_rho1_mm": p.rho_pitch_m * 1e3,
+        "base_pitch_mm": p.base_pitch_m * 1e3,
+    })
+}
+
+/// Everything `gearwear stiffness` writes: `summary.json` content, `mesh_stiffness.csv`,
+/// `mesh_stiffness.png`.
+pub fn stiffness_artifacts(model: &Model) -> Artifacts {
+    let (table, mut v) = stiffness_table(model);
+    v["iso6336"] = iso6336_json(model);
+    // The same pair with the other fillet-foundation setting, for comparison.
+    let fillet = !model.case.stiffness.fillet_foundation;
+    v["mesh_stiffness_other_fillet_setting"] = match MeshStiffness::new(
+        &model.pair,
+        &model.elastic,
+        model.case.stiffness.table_points_per_mesh_period.max(16) as usize,
+        fillet,
+    ) {
+        Ok(other) => json!({
+            "fillet_foundation": fillet,
+            "min_n_per_m": other.min_stiffness_n_per_m(),
+            "max_n_per_m": other.max_stiffness_n_per_m(),
+            "mean_n_per_m": other.mean_stiffness_n_per_m(),
+        }),
+        Err(e) => json!({ "fillet_foundation": fillet, "error": e.to_string() }),
+    };
+    v["geometry"] = geometry_json(model);
+    v["warnings"] = json!(model.warnings);
+    let mut a = Artifacts {
+        headline: format!(
+            "contact ratio {:.4}; mesh stiffness min {:.4e}, mean {:.4e}, max {:.4e} N/m",
+            model.pair.contact_ratio,
+            model.mesh.min_stiffness_n_per_m(),
+            model.mesh.mean_stiffness_n_per_m(),
+            model.mesh.max_stiffness_n_per_m(),
+        ),
+        summary: v,
+        ..Default::default()
+    };
+    a.figure("mesh_stiffness.png", figure2(model, &table));
+    a.table("mesh_stiffness.csv", table);
+    a
+}

@@ -1,0 +1,253 @@
+//! Results of the wear study (`gearwear wear`, section 4.2 of `run`): a row per update,
+//! the profiles of every update, Fig. 11-13 and the summary.
+
+use super::artifacts::Artifacts;
+use super::figures::{panel, single, Curve};
+use super::plot::Figure;
+use crate::io::Table;
+use crate::study::wear_loop::{UpdateRecord, WearRun};
+use crate::study::Model;
+use serde_json::json;
+
+/// Value of a piecewise-linear series (x ascending) at x; wear grows linearly in cycles
+/// within a block, so this is exact between updates.
+pub fn at_cycles(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    if xs.is_empty() {
+        return f64::NAN;
+    }
+    let j = xs.partition_point(|v| *v < x);
+    if j == 0 {
+        return ys[0];
+    }
+    if j == xs.len() {
+        return ys[ys.len() - 1];
+    }
+    let t = (x - xs[j - 1]) / (xs[j] - xs[j - 1]);
+    ys[j - 1] + (ys[j] - ys[j - 1]) * t
+}
+
+/// The tables of one run: `updates_MODE.csv` (a row per update) and
+/// `wear_profiles_MODE.csv` (the profiles of every update), file names relative.
+pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
+    let m = run.mode.name();
+    let rec = &run.records;
+    let s = |f: &dyn Fn(&UpdateRecord) -> f64| rec.iter().map(f).collect::<Vec<_>>();
+    let updates = Table::new()
+        .col("update", (0..rec.len()).map(|i| i as f64).collect())
+        .col("cycles", s(&|r| r.wear.cycles))
+        .col("max_wear_pinion_um", s(&|r| r.wear.max_pinion_m() * 1e6))
+        .col("max_wear_gear_um", s(&|r| r.wear.max_gear_m() * 1e6))
+        .col(
+            "max_wear_rate_pinion_um_per_kcycle",
+            s(&|r| r.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9),
+        )
+        .col("roughness_um", s(&|r| r.roughness_um))
+        .col("mesh_force_mean_n", s(&|r| r.summary.mesh_force_mean_n))
+        .col("mesh_force_max_n", s(&|r| r.summary.mesh_force_max_n))
+        .col("dte_max_um", s(&|r| r.summary.dte_max_m * 1e6))
+        .col(
+            "velocity_y_pinion_rms_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_rms_m_per_s * 1e3),
+        )
+        .col(
+            "friction_coefficient_max",
+            s(&|r| r.summary.friction_coefficient_max),
+        )
+        .col(
+            "mesh_harmonic1_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[0] * 1e3),
+        )
+        .col(
+            "mesh_harmonic2_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[1] * 1e3),
+        )
+        .col(
+            "mesh_harmonic3_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[2] * 1e3),
+        )
+        .col(
+            "mesh_harmonic4_mm_per_s",
+            s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[3] * 1e3),
+        );
+    let g = &model.grid;
+    let mut t = Table::new()
+        .col("rho1_mm", g.rho_pinion_m.iter().map(|x| x * 1e3).collect())
+        .col(
+            "pinion_radius_mm",
+            g.radius_pinion_m.iter().map(|x| x * 1e3).collect(),
+        )
+        .col(
+            "gear_radius_mm",
+            g.radius_gear_m.iter().map(|x| x * 1e3).collect(),
+        );
+    for (i, r) in rec.iter().enumerate() {
+        t = t
+            .col(
+                &format!("wear_pinion_um_u{i}"),
+                r.wear.pinion_m.iter().map(|x| x * 1e6).collect(),
+            )
+            .col(
+                &format!("wear_gear_um_u{i}"),
+                r.wear.gear_m.iter().map(|x| x * 1e6).collect(),
+            )
+            .col(
+                &format!("rate_pinion_um_per_kcycle_u{i}"),
+                r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+            );
+    }
+    vec![
+        (format!("updates_{m}.csv"), updates),
+        (format!("wear_profiles_{m}.csv"), t),
+    ]
+}
+
+/// Figures 11-13 from the runs present.
+pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<(&'static str, Figure)> {
+    let rho_mm: Vec<f64> = model.grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
+    let mut f11_force = Vec::new();
+    let mut f11_wear = Vec::new();
+    let mut f12 = Vec::new();
+    let mut f13 = Vec::new();
+    for run in runs {
+        let m = run.mode.name();
+        if let Some(r0) = run.records.first() {
+            f11_force.push(Curve::new(
+                m,
+                r0.path_rho1_m.iter().map(|x| x * 1e3).collect(),
+                r0.path_load_n.clone(),
+            ));
+            f11_wear.push(Curve::new(
+                m,
+                rho_mm.clone(),
+                r0.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+            ));
+        }
+        for (i, r) in run.records.iter().enumerate() {
+            if i == 0 || i + 1 == run.records.len() || i % 2 == 0 {
+                f12.push(Curve::new(
+                    format!("{m} {:.0} cycles", r.wear.cycles),
+                    rho_mm.clone(),
+                    r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
+                ));
+            }
+        }
+        f13.push(Curve::new(
+            m,
+            run.cycles(),
+            run.max_wear_pinion_m().iter().map(|x| x * 1e6).collect(),
+        ));
+    }
+    let x = "pinion roll distance rho1 (mm)";
+    vec![
+        (
+            "fig11_force_and_wear_initial.png",
+            Figure {
+                title: "Fig. 11: pair load and wear rate along the pinion profile, initial stage"
+                    .into(),
+                panels: vec![
+                    panel(x, "pair load (N)", f11_force),
+                    panel(x, "wear rate (um per 1000 cycles)", f11_wear),
+                ],
+            },
+        ),
+        (
+            "fig12_wear_rate_evolution.png",
+            single(
+                "Fig. 12: wear rate distribution of the pinion as wear proceeds",
+                panel(x, "wear rate (um per 1000 cycles)", f12),
+            ),
+        ),
+        (
+            "fig13_max_accumulated_wear.png",
+            single(
+                "Fig. 13: maximum accumulated pinion wear depth",
+                panel("cycles", "max wear depth (um)", f13),
+            ),
+        ),
+    ]
+}
+
+/// summary.json content of the wear study (promised keys).
+pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_json::Value {
+    let Some(base) = dynamic.or(qs) else {
+        return json!({});
+    };
+    let cycles = base.cycles();
+    let series = |run: Option<&WearRun>, f: &dyn Fn(&WearRun) -> Vec<f64>| -> serde_json::Value {
+        match run {
+            Some(r) => json!(cycles
+                .iter()
+                .map(|c| at_cycles(&r.cycles(), &f(r), *c) * 1e6)
+                .collect::<Vec<_>>()),
+            None => serde_json::Value::Null,
+        }
+    };
+    let rate = |r: &WearRun| -> f64 {
+        r.last().map_or(0.0, |x| {
+            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
+        })
+    };
+    let mut v = json!({
+        "cycles": cycles,
+        "max_wear_pinion_um": {"dynamic": series(dynamic, &|r| r.max_wear_pinion_m()), "quasi_static": series(qs, &|r| r.max_wear_pinion_m())},
+        "max_wear_gear_um": {"dynamic": series(dynamic, &|r| r.max_wear_gear_m()), "quasi_static": series(qs, &|r| r.max_wear_gear_m())},
+        "updates": {
+            "dynamic": dynamic.map(|r| r.records.len() - 1),
+            "quasi_static": qs.map(|r| r.records.len() - 1),
+        },
+    });
+    if let (Some(d), Some(q)) = (dynamic, qs) {
+        let (hd, hq) = (
+            d.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+            q.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+        );
+        v["ratio_max_wear_dynamic_to_static"] = json!(hd / hq);
+        v["ratio_max_wear_rate_dynamic_to_static"] = json!(rate(d) / rate(q));
+        v["ratio_notes"] = json!("ratio_max_wear_dynamic_to_static: maximum accumulated pinion wear depth at the final cycle count (paper: ~1.2). ratio_max_wear_rate_dynamic_to_static: maximum pinion wear depth per cycle of the final state (the paper's 'maximum wear depth', ~1.6).");
+    }
+    v
+}
+
+/// Everything `gearwear wear` writes for the runs present (one or both modes).
+pub fn wear_artifacts(model: &Model, runs: &[&WearRun]) -> Artifacts {
+    use crate::study::wear_loop::WearMode;
+    let mut a = Artifacts::default();
+    for r in runs {
+        for (name, t) in run_tables(model, r) {
+            a.table(name, t);
+        }
+    }
+    for (name, fig) in wear_figures(model, runs) {
+        a.figure(name, fig);
+    }
+    let find = |m: WearMode| runs.iter().copied().find(|r| r.mode == m);
+    let mut v = wear_summary(find(WearMode::Dynamic), find(WearMode::QuasiStatic));
+    v["warnings"] = json!(model.warnings);
+    a.headline = wear_headline(runs, &v);
+    a.summary = v;
+    a
+}
+
+/// A line per mode (final cycles, maximum pinion wear), and the ratio when both ran.
+pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
+    let mut lines: Vec<String> = runs
+        .iter()
+        .filter_map(|r| {
+            r.last().map(|l| {
+                format!(
+                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} um",
+                    r.mode.label(),
+                    r.records.len() - 1,
+                    crate::io::format_number(l.wear.cycles),
+                    l.wear.max_pinion_m() * 1e6
+                )
+            })
+        })
+        .collect();
+    if let Some(x) = v["ratio_max_wear_dynamic_to_static"].as_f64() {
+        lines.push(format!(
+            "dynamic / quasi-static maximum accumulated pinion wear: {x:.4}"
+        ));
+    }
+    lines.join("\n")
+}
