@@ -190,6 +190,19 @@ impl OutputDir {
         Ok(())
     }
 
+    /// The path of state file `rel` inside the folder (its folders created, checked to be
+    /// real folders), listed in the manifest; the caller writes it (e.g. an append-only
+    /// checkpoint).
+    pub fn state_path(&mut self, rel: &str) -> Result<PathBuf, OutputError> {
+        check_relative(rel)?;
+        let path = self.root.join(rel);
+        if let Some(parent) = path.parent() {
+            ensure_real_dir(&self.root, parent)?;
+        }
+        self.state.insert(rel.to_owned());
+        Ok(path)
+    }
+
     /// Declare a state file that exists already (e.g. a finished sweep case kept from an
     /// earlier run) as part of this set.
     pub fn keep_state(&mut self, rel: &str) {

@@ -4,6 +4,7 @@
 pub mod model;
 pub mod paper;
 pub mod sweep;
+pub mod wear_check;
 pub mod wear_loop;
 
 pub use model::{Model, ModelError};
