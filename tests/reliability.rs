@@ -312,3 +312,63 @@ fn links_planted_in_the_output_folder_are_not_followed() {
         assert!(!m.file_type().is_symlink(), "{name} is still a link");
     }
 }
+
+/// Every file the manifest of `dir` lists is present with its checksum.
+fn consistent_with_manifest(dir: &Path) -> bool {
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
+            .unwrap();
+    m["files"].as_array().unwrap().iter().all(|f| {
+        std::fs::read(dir.join(f["path"].as_str().unwrap())).is_ok_and(|b| {
+            gearwear::io::output_dir::sha256_hex(&b) == f["sha256"].as_str().unwrap()
+        })
+    })
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_write_failure_mid_run_leaves_the_previous_complete_set() {
+    use std::os::unix::process::CommandExt;
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("r");
+    let o = out.to_str().unwrap();
+    let base = ["run", "-q", "--set", "wear.total_cycles=5e3", "--out", o];
+    assert!(gearwear(&base).status.success());
+    let before = std::fs::read(out.join("summary.json")).unwrap();
+    // Rerun at 40 Hz with files limited to 64 kB: the first large file (a figure, the
+    // report) fails with EFBIG, as a full disk fails a write. SIGXFSZ is ignored so that
+    // the write returns the error instead of killing the process (an ignored signal stays
+    // ignored across exec).
+    let mut cmd = bin();
+    cmd.args(base).args(["--set", "operating.input_speed_hz=40"]);
+    unsafe {
+        cmd.pre_exec(|| {
+            libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+            let lim = libc::rlimit {
+                rlim_cur: 64 * 1024,
+                rlim_max: 64 * 1024,
+            };
+            if libc::setrlimit(libc::RLIMIT_FSIZE, &lim) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let failed = cmd.output().unwrap();
+    let e = err(&failed);
+    assert_eq!(failed.status.code(), Some(2), "{e}");
+    assert!(e.contains("cannot write") && e.contains(o), "names the path: {e}");
+    // The folder still holds the complete 30 Hz set.
+    assert_eq!(std::fs::read(out.join("summary.json")).unwrap(), before);
+    assert!(consistent_with_manifest(&out));
+    assert!(!out.join("INCOMPLETE").exists());
+    // And the next run cleans up after the failed one.
+    assert!(gearwear(&base).status.success());
+    let strays: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".gearwear-staging") || n.starts_with(".gearwear-tmp"))
+        .collect();
+    assert!(strays.is_empty(), "{strays:?}");
+}
