@@ -316,8 +316,7 @@ fn links_planted_in_the_output_folder_are_not_followed() {
 /// Every file the manifest of `dir` lists is present with its checksum.
 fn consistent_with_manifest(dir: &Path) -> bool {
     let m: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap()).unwrap();
     m["files"].as_array().unwrap().iter().all(|f| {
         std::fs::read(dir.join(f["path"].as_str().unwrap())).is_ok_and(|b| {
             gearwear::io::output_dir::sha256_hex(&b) == f["sha256"].as_str().unwrap()
@@ -340,7 +339,8 @@ fn a_write_failure_mid_run_leaves_the_previous_complete_set() {
     // the write returns the error instead of killing the process (an ignored signal stays
     // ignored across exec).
     let mut cmd = bin();
-    cmd.args(base).args(["--set", "operating.input_speed_hz=40"]);
+    cmd.args(base)
+        .args(["--set", "operating.input_speed_hz=40"]);
     unsafe {
         cmd.pre_exec(|| {
             libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
@@ -357,7 +357,10 @@ fn a_write_failure_mid_run_leaves_the_previous_complete_set() {
     let failed = cmd.output().unwrap();
     let e = err(&failed);
     assert_eq!(failed.status.code(), Some(2), "{e}");
-    assert!(e.contains("cannot write") && e.contains(o), "names the path: {e}");
+    assert!(
+        e.contains("cannot write") && e.contains(o),
+        "names the path: {e}"
+    );
     // The folder still holds the complete 30 Hz set.
     assert_eq!(std::fs::read(out.join("summary.json")).unwrap(), before);
     assert!(consistent_with_manifest(&out));

@@ -165,22 +165,50 @@ pub fn run_wear(
     Ok(run)
 }
 
+/// Marks a run stopped because a sibling run of [`run_wear_modes`] failed.
+#[derive(Debug, thiserror::Error)]
+#[error("stopped because a parallel wear run failed")]
+pub struct SiblingFailed;
+
 /// Run (or continue) several wear runs in parallel (e.g. the dynamic study and its
 /// quasi-static twin); `on_update(mode, run)` after every update of each. Results in the
-/// order of `starts`.
+/// order of `starts`. When one run fails, the others stop at their next update, so the
+/// failure is reported at once rather than after the slower run has finished; the error
+/// returned is the first run's own, not a sibling's stop.
 pub fn run_wear_modes(
     model: &Model,
     starts: Vec<WearRun>,
     on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
 ) -> anyhow::Result<Vec<WearRun>> {
     use rayon::prelude::*;
-    starts
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let failed = AtomicBool::new(false);
+    let results: Vec<anyhow::Result<WearRun>> = starts
         .into_par_iter()
         .map(|start| {
             let mode = start.mode;
-            run_wear(model, start, &mut |r| on_update(mode, r))
+            let r = run_wear(model, start, &mut |r| {
+                if failed.load(Ordering::Relaxed) {
+                    return Err(SiblingFailed.into());
+                }
+                on_update(mode, r)
+            });
+            if r.is_err() {
+                failed.store(true, Ordering::Relaxed);
+            }
+            r
         })
-        .collect()
+        .collect();
+    let (ok, errors): (Vec<_>, Vec<_>) = results.into_iter().partition(Result::is_ok);
+    let mut errors = errors.into_iter().filter_map(Result::err);
+    if let Some(first) = errors.next() {
+        return Err(if first.is::<SiblingFailed>() {
+            errors.find(|e| !e.is::<SiblingFailed>()).unwrap_or(first)
+        } else {
+            first
+        });
+    }
+    Ok(ok.into_iter().filter_map(Result::ok).collect())
 }
 
 #[cfg(test)]
