@@ -4,14 +4,14 @@ use super::args::DynamicsArgs;
 use super::output::{build_model, json_write, save_png, um};
 use super::CliError;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::modal::modes;
 use crate::dynamics::model::dof;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::io::{RunMetadata, Table};
 use crate::report::figures::{panel, single, spectrum_panel, Curve};
-use crate::study::Model;
-use serde_json::json;
+use crate::report::modes::{self as report_modes, modes_json};
+use crate::study::{ModalAnalysis, Model};
+use serde_json::{json, Value};
 use std::path::Path;
 
 /// Read a transmission-error file: CSV with header `pinion_angle_deg,error_um`, one row per
@@ -140,23 +140,10 @@ pub fn write_dynamic_outputs(
         )
         .save(&dir.join("path.csv"))?;
 
-    // Natural frequencies and mass-normalised mode shapes of the linearised model.
-    let gap0 = crate::dynamics::excitation::PairGap::none();
-    let ext0 = ExternalError::none();
-    let m = modes(&model.system(&gap0, &ext0, model.roughness.rms_um(0.0)));
-    let mut mt = Table::new()
-        .col(
-            "mode",
-            (1..=m.frequency_hz.len()).map(|i| i as f64).collect(),
-        )
-        .col("frequency_hz", m.frequency_hz.clone());
-    for k in 0..8 {
-        mt = mt.col(
-            &format!("shape_{}", names[k]),
-            m.shapes.iter().map(|s| s[k]).collect(),
-        );
-    }
-    mt.save(&dir.join("modes.csv"))?;
+    // Damped poles and undamped modes of the linearised model.
+    let modal = ModalAnalysis::of(model);
+    report_modes::damped_table(&modal).save(&dir.join("modes.csv"))?;
+    report_modes::undamped_table(&modal).save(&dir.join("modes_undamped.csv"))?;
 
     let summary = ResponseSummary::of(r);
     let f_mesh = model.params.mesh_frequency_hz(&model.pair);
@@ -251,14 +238,12 @@ pub fn write_dynamic_outputs(
 
 /// The promised summary keys of one dynamic evaluation.
 pub fn summary_json(model: &Model, r: &DynamicResponse, s: &ResponseSummary) -> serde_json::Value {
-    let gap = crate::dynamics::excitation::PairGap::none();
-    let ext = ExternalError::none();
-    let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
-    let m = modes(&sys);
-    json!({
+    let c_m = model
+        .params
+        .mesh_damping_n_s_per_m(&model.pair, model.mesh.mean_stiffness_n_per_m());
+    let mut v = json!({
         "mesh_frequency_hz": model.params.mesh_frequency_hz(&model.pair),
-        "natural_frequencies_hz": m.frequency_hz,
-        "mesh_damping_n_s_per_m": sys.mesh_damping_n_s_per_m,
+        "mesh_damping_n_s_per_m": c_m,
         "dte": {"max_um": s.dte_max_m * 1e6, "min_um": s.dte_min_m * 1e6, "mean_um": s.dte_mean_m * 1e6},
         "mesh_force": {"mean_n": s.mesh_force_mean_n, "max_n": s.mesh_force_max_n, "min_n": s.mesh_force_min_n, "dynamic_factor": s.dynamic_factor},
         "velocity_y_pinion": {"rms_mm_per_s": s.velocity_y_pinion_rms_m_per_s * 1e3},
@@ -276,7 +261,12 @@ pub fn summary_json(model: &Model, r: &DynamicResponse, s: &ResponseSummary) -> 
             "rhs_evaluations": r.rhs_evaluations,
             "lu_factorizations": r.factorizations,
         },
-    })
+    });
+    if let (Some(v), Value::Object(m)) = (v.as_object_mut(), modes_json(&ModalAnalysis::of(model)))
+    {
+        v.extend(m);
+    }
+    v
 }
 
 pub fn run(a: &DynamicsArgs) -> Result<(), CliError> {

@@ -3,4 +3,5 @@
 pub mod comparison;
 pub mod figures;
 pub mod html;
+pub mod modes;
 pub mod plot;
