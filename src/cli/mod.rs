@@ -10,6 +10,7 @@ mod run_cmd;
 pub mod stiffness_cmd;
 
 pub mod sweep_cmd;
+mod sweep_continuation;
 pub mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};

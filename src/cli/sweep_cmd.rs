@@ -1,24 +1,26 @@
 //! `gearwear sweep`: the cross product of `--vary` axes, run in parallel, one row per
-//! case; resumable (finished cases are skipped) and shardable. `gearwear sweep-merge`:
-//! joins shard tables.
+//! case; resumable (finished cases are skipped) and shardable; or, with `--continuation`,
+//! one axis followed in order along its solution branches (`sweep_continuation`).
+//! `gearwear sweep-merge`: joins shard tables.
 //!
 //! Output directory layout (STEM = `sweep`, or `sweep_shard_I_of_N` with `--shard`):
 //! `cases/<case_id>.json` (one per finished case, written first, atomically),
 //! `STEM.csv` (this shard's rows by case id), `STEM.json` (what was run: axes, base case,
-//! natural frequencies, failures), `STEM.png` (speed sweeps only).
+//! modes, failures), `STEM.png` (speed and continuation sweeps).
 
 use super::args::{CaseArgs, SweepArgs, SweepMergeArgs, SweepRunArg};
 use super::output::{json_write, PLOT_W};
+use super::sweep_continuation::{continuation_of, run_branches};
 use super::CliError;
 use crate::config::{load_case, schema, Case};
-use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::modal::modes;
 use crate::io::{write_atomic, RunMetadata};
-use crate::report::figures::{panel, Curve};
+use crate::report::modes::modes_json;
 use crate::report::plot::{render_png, Figure};
+use crate::report::sweep_figure::figure_for;
+use crate::study::sweep::resonance::speed_marks;
 use crate::study::sweep::{
-    crossings, parse_vary, run_case, CaseError, CaseRecord, Crossing, Shard, SweepPlan, SweepRun,
-    SweepTable, SPEED_KEY,
+    parse_vary, run_case, CaseError, CaseRecord, ContinuationLink, Crossing, Shard, SweepPlan,
+    SweepRun, SweepTable,
 };
 use crate::study::Model;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -29,16 +31,16 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// Mesh harmonics whose crossings with the natural frequencies are marked.
-const MARKED_HARMONICS: u32 = 3;
-
 /// One case of this shard, resolved and validated.
-struct Planned {
-    id: usize,
-    values: Vec<String>,
-    case: Case,
-    hash: String,
+pub(super) struct Planned {
+    pub id: usize,
+    pub values: Vec<String>,
+    pub case: Case,
+    pub hash: String,
 }
+
+/// What ran now: each case id with its warnings or its error.
+pub(super) type Outcomes = Vec<(usize, Result<Vec<String>, CaseError>)>;
 
 fn describe(keys: &[String], values: &[String]) -> String {
     keys.iter()
@@ -95,7 +97,7 @@ fn plan_of(a: &SweepArgs, text: &str) -> Result<SweepPlan, CliError> {
     }
 }
 
-fn case_path(dir: &Path, id: usize) -> PathBuf {
+pub(super) fn case_path(dir: &Path, id: usize) -> PathBuf {
     dir.join("cases").join(format!("{id}.json"))
 }
 
@@ -124,14 +126,16 @@ fn progress_bar(n: usize) -> ProgressBar {
     pb
 }
 
-/// Run one case and write its record; the record is the first and only file a case writes.
-fn run_one(
+/// Write the record of a finished case (or continuation point); the record is the first
+/// and only file a case writes.
+pub(super) fn write_record(
     dir: &Path,
     p: &Planned,
     run: SweepRun,
     keys: &[String],
-) -> Result<Vec<String>, CaseError> {
-    let o = run_case(&p.case, run)?;
+    results: &[f64],
+    continuation: Option<ContinuationLink>,
+) -> Result<CaseRecord, CaseError> {
     let rec = CaseRecord {
         case_id: p.id,
         case_sha256: p.hash.clone(),
@@ -139,80 +143,27 @@ fn run_one(
         keys: keys.to_vec(),
         values: p.values.clone(),
         columns: run.columns(),
-        results: o
-            .results
+        results: results
             .iter()
             .map(|x| x.is_finite().then_some(*x))
             .collect(),
+        continuation,
     };
     let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
     write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
+    Ok(rec)
+}
+
+/// Run one case and write its record.
+fn run_one(
+    dir: &Path,
+    p: &Planned,
+    run: SweepRun,
+    keys: &[String],
+) -> Result<Vec<String>, CaseError> {
+    let o = run_case(&p.case, run)?;
+    write_record(dir, p, run, keys, &o.results, None)?;
     Ok(o.warnings)
-}
-
-/// Natural frequencies of the base case (modes of the model linearised at the mean mesh
-/// stiffness, new teeth) and the crossings h z1 f_in = f_n inside the swept speed range.
-fn speed_crossings(base: &Case, plan: &SweepPlan) -> Option<(Vec<f64>, Vec<Crossing>)> {
-    let axis = plan.axes.iter().find(|x| x.key == SPEED_KEY)?;
-    let speeds: Vec<f64> = axis.values.iter().filter_map(|v| v.parse().ok()).collect();
-    let lo = speeds.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = speeds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let model = match Model::from_case(base) {
-        Ok(m) => m,
-        Err(e) => {
-            eprintln!("warning: no resonance markers: the base case has no model: {e}");
-            return None;
-        }
-    };
-    let (gap, ext) = (PairGap::none(), ExternalError::none());
-    let f_n = modes(&model.system(&gap, &ext, model.roughness.rms_um(0.0))).frequency_hz;
-    let c = crossings(&f_n, model.pair.pinion.teeth, MARKED_HARMONICS, lo, hi);
-    Some((f_n, c))
-}
-
-/// Max DTE and dynamic factor against input speed, one curve per combination of the other
-/// varied keys, with the crossing speeds marked.
-fn speed_figure(t: &SweepTable, marks: &[Crossing]) -> Option<Figure> {
-    let ks = t.keys.iter().position(|k| k == SPEED_KEY)?;
-    let (dte, df) = (t.column("dte_max_um")?, t.column("dynamic_factor")?);
-    let mut groups: BTreeMap<String, Vec<(f64, f64, f64)>> = BTreeMap::new();
-    for r in &t.rows {
-        let Ok(speed) = r.values[ks].parse::<f64>() else {
-            continue;
-        };
-        let others: Vec<String> = (0..t.keys.len())
-            .filter(|i| *i != ks)
-            .map(|i| format!("{}={}", t.keys[i], r.values[i]))
-            .collect();
-        groups
-            .entry(others.join(", "))
-            .or_default()
-            .push((speed, r.results[dte], r.results[df]));
-    }
-    let (mut c_dte, mut c_df) = (Vec::new(), Vec::new());
-    for (name, mut pts) in groups {
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
-        c_dte.push(Curve::new(
-            name.clone(),
-            x.clone(),
-            pts.iter().map(|p| p.1).collect(),
-        ));
-        c_df.push(Curve::new(name, x, pts.iter().map(|p| p.2).collect()));
-    }
-    let vlines: Vec<(f64, String)> = marks
-        .iter()
-        .map(|c| (c.input_speed_hz, c.label()))
-        .collect();
-    let x = "input speed (Hz)";
-    let mut p1 = panel(x, "max DTE (um)", c_dte);
-    let mut p2 = panel(x, "dynamic factor (-)", c_df);
-    p1.vlines = vlines.clone();
-    p2.vlines = vlines;
-    Some(Figure {
-        title: "Speed sweep (markers: h x z1 x f_in = natural frequency f_n, h = 1..3)".into(),
-        panels: vec![p1, p2],
-    })
 }
 
 /// The two-panel sweep figure as PNG (taller than the one-panel default), atomically.
@@ -234,16 +185,25 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         Some(s) => Shard::parse(s).map_err(CliError::input)?,
         None => Shard::ALL,
     };
+    let continuation = continuation_of(a, &plan)?;
     let keys = plan.keys();
-    let ids = shard.ids(plan.len());
+    // Case ids with their plan index: a continuation point's id numbers it in run order.
+    let ids: Vec<(usize, usize)> = match &continuation {
+        None => shard.ids(plan.len()).into_iter().map(|i| (i, i)).collect(),
+        Some(c) => c
+            .branches
+            .iter()
+            .flat_map(|(_, p)| p.iter().map(|x| (x.case_id, x.value_index)))
+            .collect(),
+    };
 
     // Resolve and validate every case of the shard (and its model) before running any.
     let resolved: Vec<Result<Planned, String>> = ids
         .par_iter()
-        .map(|&id| {
-            let values = plan.values_of(id);
+        .map(|&(id, index)| {
+            let values = plan.values_of(index);
             let mut sets = a.case.set.clone();
-            sets.extend(plan.overrides_of(id));
+            sets.extend(plan.overrides_of(index));
             let what = || format!("case {id} ({})", describe(&keys, &values));
             let case = load_case(&text, &sets)
                 .map_err(|e| format!("{}: {}", what(), e.problems.join("; ")))?;
@@ -279,57 +239,95 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     }
     std::fs::create_dir_all(a.out.join("cases"))?;
 
-    eprintln!(
-        "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
-        plan.len(),
-        planned.len(),
-        shard.index,
-        shard.count,
-        done.len(),
-        pending.len(),
-        rayon::current_num_threads()
-    );
-    let pb = progress_bar(pending.len());
-    let outcomes: Vec<(usize, Result<Vec<String>, CaseError>)> = pending
-        .par_iter()
-        .map(|p| {
-            let r = run_one(&a.out, p, run_kind, &keys);
-            pb.inc(1);
-            (p.id, r)
+    let (outcomes, records, skipped) = if let Some(c) = &continuation {
+        eprintln!(
+            "sweep: continuation along {} ({} branch(es), {} points; points finished from the same start state are skipped)",
+            keys.join(", "),
+            c.branches.len(),
+            c.len()
+        );
+        let pb = progress_bar(c.len());
+        let r = run_branches(&a.out, c, &planned, &keys, &pb);
+        pb.finish_and_clear();
+        r
+    } else {
+        eprintln!(
+            "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
+            plan.len(),
+            planned.len(),
+            shard.index,
+            shard.count,
+            done.len(),
+            pending.len(),
+            rayon::current_num_threads()
+        );
+        let pb = progress_bar(pending.len());
+        let outcomes: Outcomes = pending
+            .par_iter()
+            .map(|p| {
+                let r = run_one(&a.out, p, run_kind, &keys);
+                pb.inc(1);
+                (p.id, r)
+            })
+            .collect();
+        pb.finish_and_clear();
+        // The table is rebuilt from the case files, so a rerun's table holds every case.
+        let records: Vec<CaseRecord> = planned
+            .iter()
+            .filter_map(|p| finished(&a.out, p, run_kind, &keys))
+            .collect();
+        (outcomes, records, done.len())
+    };
+    let values_of: BTreeMap<usize, &Vec<String>> =
+        planned.iter().map(|p| (p.id, &p.values)).collect();
+    let branch_of = |id: usize| {
+        continuation.as_ref().and_then(|c| {
+            c.branches
+                .iter()
+                .find(|(_, p)| p.iter().any(|x| x.case_id == id))
+                .map(|(b, _)| b.name())
         })
-        .collect();
-    pb.finish_and_clear();
+    };
 
     let mut warnings: BTreeMap<String, usize> = BTreeMap::new();
     let mut failed = Vec::new();
+    let ran = outcomes.len();
     for (id, r) in outcomes {
         match r {
             Ok(w) => w
                 .into_iter()
                 .for_each(|w| *warnings.entry(w).or_default() += 1),
-            Err(e) => failed
-                .push(json!({"case_id": id, "values": plan.values_of(id), "error": e.to_string()})),
+            Err(e) => failed.push(json!({
+                "case_id": id,
+                "values": values_of.get(&id),
+                "branch": branch_of(id),
+                "error": e.to_string(),
+            })),
         }
     }
     for (w, n) in &warnings {
         eprintln!("warning ({n} case(s)): {w}");
     }
 
-    // The table is rebuilt from the case files, so a rerun's table holds every case.
-    let records: Vec<CaseRecord> = planned
-        .iter()
-        .filter_map(|p| finished(&a.out, p, run_kind, &keys))
-        .collect();
+    let computed = ran - failed.len();
     let table = SweepTable::from_records(keys.clone(), run_kind.columns(), &records);
     let stem = shard.stem();
     let csv_path = a.out.join(format!("{stem}.csv"));
     write_atomic(&csv_path, &table.to_csv().map_err(anyhow::Error::from)?)?;
 
-    let speed = speed_crossings(&base, &plan);
-    if let Some((_, marks)) = &speed {
-        if let Some(fig) = speed_figure(&table, marks) {
-            save_figure(&fig, &a.out.join(format!("{stem}.png")))?;
+    let speed = match Model::from_case(&base) {
+        Ok(m) => speed_marks(&m, &plan),
+        Err(e) => {
+            eprintln!("warning: no resonance markers: the base case has no model: {e}");
+            None
         }
+    };
+    let poles = speed
+        .as_ref()
+        .map_or_else(Vec::new, |m| m.modal.mesh_pole_frequencies_hz());
+    let marks = speed.as_ref().map_or(&[][..], |m| &m.crossings[..]);
+    if let Some(fig) = figure_for(&table, marks, &poles) {
+        save_figure(&fig, &a.out.join(format!("{stem}.png")))?;
     }
     let wall_s = started.elapsed().as_secs_f64();
     let meta = json!({
@@ -339,12 +337,13 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         "total_cases": plan.len(),
         "shard": {"index": shard.index, "count": shard.count, "scheme": "round-robin: case_id mod count = index - 1"},
         "cases_in_shard": planned.len(),
-        "skipped_finished": done.len(),
-        "computed": pending.len() - failed.len(),
+        "continuation": a.continuation.map(|c| format!("{c:?}").to_lowercase()),
+        "skipped_finished": skipped,
+        "computed": computed,
         "failed": failed,
         "rows": table.rows.len(),
-        "natural_frequencies_hz": speed.as_ref().map(|s| s.0.clone()),
-        "resonance_crossings": speed.as_ref().map(|s| s.1.clone()),
+        "modes": speed.as_ref().map(|s| modes_json(&s.modal)),
+        "resonance_crossings": speed.as_ref().map(|s| s.crossings.clone()),
         "wall_time_s": wall_s,
         "threads": rayon::current_num_threads(),
         "base": RunMetadata::new("sweep", &base),
@@ -354,8 +353,8 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         "sweep: {} rows -> {} ({} computed, {} skipped, {} failed; {:.1} s)",
         table.rows.len(),
         csv_path.display(),
-        pending.len() - failed.len(),
-        done.len(),
+        computed,
+        skipped,
         failed.len(),
         wall_s
     );
@@ -366,8 +365,13 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             .iter()
             .map(|f| format!("case {}: {}", f["case_id"], f["error"]))
             .collect();
+        let rerun = if continuation.is_some() {
+            "each branch went on from the last point that succeeded; rerun to retry them"
+        } else {
+            "rerun to retry them; finished cases are skipped"
+        };
         Err(CliError::Failed(anyhow::anyhow!(
-            "{} of {} cases failed (rerun to retry them; finished cases are skipped):\n  {}",
+            "{} of {} cases failed ({rerun}):\n  {}",
             failed.len(),
             planned.len(),
             list.join("\n  ")
@@ -432,7 +436,8 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
             m["vary"],
             m["run"],
             m["base"]["case_sha256"],
-            m["total_cases"]
+            m["total_cases"],
+            m["continuation"]
         ])
     };
     if let Some((src0, m0)) = metas.iter().find(|(_, m)| m["command"] == "sweep") {
@@ -477,7 +482,15 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     let marks: Option<Vec<Crossing>> = metas
         .iter()
         .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
-    if let Some(fig) = speed_figure(&merged, marks.as_deref().unwrap_or(&[])) {
+    let poles: Vec<f64> = metas
+        .iter()
+        .find_map(|(_, m)| m["modes"]["mesh_poles"].as_array().cloned())
+        .unwrap_or_default()
+        .iter()
+        .filter_map(|p| p["damped_frequency_hz"].as_f64())
+        .collect();
+    let fig = figure_for(&merged, marks.as_deref().unwrap_or(&[]), &poles);
+    if let Some(fig) = fig {
         save_figure(&fig, &png_path)?;
     }
     let first = metas

@@ -5,3 +5,4 @@ pub mod figures;
 pub mod html;
 pub mod modes;
 pub mod plot;
+pub mod sweep_figure;
