@@ -375,3 +375,41 @@ fn a_write_failure_mid_run_leaves_the_previous_complete_set() {
         .collect();
     assert!(strays.is_empty(), "{strays:?}");
 }
+
+#[test]
+fn a_merge_of_a_merge_and_a_shard_of_another_sweep_is_refused() {
+    let d = tempfile::tempdir().unwrap();
+    let s = |p: &Path| p.to_str().unwrap().to_owned();
+    let (a, b, m1, m2) = (
+        d.path().join("a"),
+        d.path().join("b"),
+        d.path().join("m1"),
+        d.path().join("m2"),
+    );
+    let sweep = |out: &Path, load: &str, shard: &str| {
+        let o = gearwear(&[
+            "sweep",
+            "-q",
+            "--set",
+            &format!("operating.load_torque_nm={load}"),
+            "--vary",
+            "operating.input_speed_hz=20,25,30,35",
+            "--shard",
+            shard,
+            "--out",
+            &s(out),
+        ]);
+        assert!(o.status.success(), "{}", err(&o));
+    };
+    sweep(&a, "60", "1/2");
+    sweep(&b, "50", "2/2");
+    // A partial merge of the 60 N m sweep ...
+    assert!(gearwear(&["sweep-merge", "-q", &s(&a), "--out", &s(&m1)])
+        .status
+        .success());
+    // ... merged with a shard of the 50 N m sweep: disjoint case ids, different sweeps.
+    let o = gearwear(&["sweep-merge", &s(&m1), &s(&b), "--out", &s(&m2)]);
+    assert_eq!(o.status.code(), Some(2), "{}", err(&o));
+    assert!(err(&o).contains("different sweeps"), "{}", err(&o));
+    assert!(!m2.join("sweep.csv").exists());
+}

@@ -335,14 +335,32 @@ where
     }
 
     let grey = RGBColor(90, 90, 90);
-    for (x, label) in panel.vlines.iter().filter(|v| xr.contains(&v.0)) {
+    let marks: Vec<&(f64, String)> = panel.vlines.iter().filter(|v| xr.contains(&v.0)).collect();
+    let font = (FONT, 12).into_font().color(&grey);
+    let spans: Vec<(i32, i32)> = marks
+        .iter()
+        .map(|(x, label)| {
+            let left = chart.backend_coord(&(*x, yr.end)).0 + 3;
+            let width = match label.is_empty() {
+                true => 0,
+                false => chart
+                    .plotting_area()
+                    .estimate_text_size(label, &font)
+                    .map_or(7 * label.len() as u32, |s| s.0),
+            };
+            (left, left + i32::try_from(width).unwrap_or(i32::MAX / 2))
+        })
+        .collect();
+    let rows = label_rows(&spans, 4);
+    for ((x, label), row) in marks.iter().zip(rows) {
         let ends = [(*x, yr.start), (*x, yr.end)];
         chart
             .draw_series(DashedLineSeries::new(ends, 6, 4, grey.stroke_width(1)))
             .map_err(draw_err)?;
         if !label.is_empty() {
-            let text = EmptyElement::at((*x, yr.end))
-                + Text::new(label.clone(), (3, 3), (FONT, 12).into_font().color(&grey));
+            let dy = 3 + LABEL_ROW_PX * i32::try_from(row).unwrap_or(0);
+            let text =
+                EmptyElement::at((*x, yr.end)) + Text::new(label.clone(), (3, dy), font.clone());
             chart.draw_series(std::iter::once(text)).map_err(draw_err)?;
         }
     }
@@ -360,9 +378,58 @@ where
     Ok(())
 }
 
+/// Line height of the marker labels, px (12 px text plus 2 px).
+const LABEL_ROW_PX: i32 = 14;
+
+/// Row of each marker label (0 = top) so that no two labels in a row overlap: labels are
+/// placed left to right, each in the first row whose last label ends at least `gap_px`
+/// before it starts. `spans` are the labels' pixel extents (left, right); empty labels
+/// (left == right) take row 0 and block nothing.
+fn label_rows(spans: &[(i32, i32)], gap_px: i32) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..spans.len()).collect();
+    order.sort_by_key(|&i| spans[i].0);
+    let mut row_end: Vec<i32> = Vec::new();
+    let mut rows = vec![0; spans.len()];
+    for i in order {
+        let (l, r) = spans[i];
+        if r <= l {
+            continue;
+        }
+        let row = match row_end.iter().position(|&end| end + gap_px <= l) {
+            Some(k) => k,
+            None => {
+                row_end.push(i32::MIN / 2);
+                row_end.len() - 1
+            }
+        };
+        row_end[row] = r;
+        rows[i] = row;
+    }
+    rows
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn marker_labels_never_overlap_in_a_row() {
+        // Three labels 40 px wide at 0, 20 and 100 px, and one at 30: the first and the
+        // one at 100 share the top row; 20 and 30 overlap it and each other.
+        let spans = [(0, 40), (20, 60), (100, 140), (30, 70)];
+        let rows = label_rows(&spans, 4);
+        assert_eq!(rows, vec![0, 1, 0, 2]);
+        for i in 0..spans.len() {
+            for j in 0..i {
+                if rows[i] == rows[j] {
+                    let (a, b) = (spans[i], spans[j]);
+                    assert!(a.1 + 4 <= b.0 || b.1 + 4 <= a.0, "{a:?} {b:?}");
+                }
+            }
+        }
+        // A label that starts 4 px after the previous one ends shares its row.
+        assert_eq!(label_rows(&[(0, 40), (44, 80)], 4), vec![0, 0]);
+    }
 
     /// Asserts `padded_range(v, log) == want`; 1e-12 is far above the rounding (~1e-15) of
     /// these few operations on O(1) decimals and far below the checked 0.05 differences.

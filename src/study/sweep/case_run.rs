@@ -1,8 +1,10 @@
 //! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
 //! sweep row; and the record a finished case leaves on disk.
 
+use super::continuation::Branch;
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::model::NSTATE;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
 use crate::study::wear_loop::{run_wear, WearMode, WearRun};
@@ -105,26 +107,40 @@ pub struct CaseOutcome {
 
 /// Build the model of `case` and run it.
 pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
-    let model = Model::from_case(case).map_err(CaseError::Model)?;
-    let results = match run {
-        SweepRun::Dynamics => {
-            let wear = WearState::new(model.grid.len());
-            let r = model
-                .dynamic(&wear, &ExternalError::none())
-                .map_err(|e| CaseError::Solve(e.into()))?;
-            dynamics_results(&ResponseSummary::of(&r))
-        }
+    match run {
+        SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
+            let model = Model::from_case(case).map_err(CaseError::Model)?;
             let one = |mode| run_wear(&model, WearRun::new(mode), &mut |_| Ok(()));
             let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
             let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
-            wear_results(&d, &q)
+            Ok(CaseOutcome {
+                results: wear_results(&d, &q),
+                warnings: model.warnings,
+            })
         }
-    };
-    Ok(CaseOutcome {
-        results,
+    }
+}
+
+/// One steady-state evaluation of `case` with new teeth (a `--run dynamics` row), started
+/// from `start` (a periodic state of a neighbouring case, [`DynamicResponse::end_state`])
+/// or, with `None`, from the static equilibrium; also returns the end state.
+///
+/// [`DynamicResponse::end_state`]: crate::dynamics::response::DynamicResponse::end_state
+pub fn run_dynamics_from(
+    case: &Case,
+    start: Option<&[f64; NSTATE]>,
+) -> Result<(CaseOutcome, [f64; NSTATE]), CaseError> {
+    let model = Model::from_case(case).map_err(CaseError::Model)?;
+    let wear = WearState::new(model.grid.len());
+    let r = model
+        .dynamic_from(&wear, &ExternalError::none(), start)
+        .map_err(|e| CaseError::Solve(e.into()))?;
+    let outcome = CaseOutcome {
+        results: dynamics_results(&ResponseSummary::of(&r)),
         warnings: model.warnings,
-    })
+    };
+    Ok((outcome, r.end_state))
 }
 
 /// Dynamics columns of the dynamic run's first update (new teeth), then the wear columns.
@@ -156,11 +172,52 @@ pub struct CaseRecord {
     pub columns: Vec<String>,
     /// In `columns` order; null for a non-finite number.
     pub results: Vec<Option<f64>>,
+    /// Continuation sweeps only: the branch, and the state the point started from
+    /// (absent: static equilibrium) and ended in, as the bits of each f64 (exact in JSON).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub continuation: Option<ContinuationLink>,
+}
+
+/// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ContinuationLink {
+    pub branch: Branch,
+    /// `f64::to_bits` of the start state; `None` for the static equilibrium.
+    pub start_state_bits: Option<Vec<u64>>,
+    /// `f64::to_bits` of the end state (the next point's start).
+    pub end_state_bits: Vec<u64>,
+}
+
+impl ContinuationLink {
+    pub fn new(branch: Branch, start: Option<&[f64; NSTATE]>, end: &[f64; NSTATE]) -> Self {
+        Self {
+            branch,
+            start_state_bits: start.map(state_bits),
+            end_state_bits: state_bits(end),
+        }
+    }
+
+    /// The end state, if the record holds a whole one.
+    pub fn end_state(&self) -> Option<[f64; NSTATE]> {
+        (self.end_state_bits.len() == NSTATE)
+            .then(|| std::array::from_fn(|i| f64::from_bits(self.end_state_bits[i])))
+    }
+
+    /// Whether this point was started from `start` (bit for bit).
+    pub fn started_from(&self, start: Option<&[f64; NSTATE]>) -> bool {
+        self.start_state_bits == start.map(state_bits)
+    }
+}
+
+fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
+    s.iter().map(|x| x.to_bits()).collect()
 }
 
 impl CaseRecord {
     /// Whether this record is the finished result of the given case: same id, resolved
-    /// case, run kind, varied keys and values, and the columns this version writes.
+    /// case, run kind, varied keys and values, and the columns this version writes. A
+    /// continuation point is not the result of an ordinary case (see
+    /// [`CaseRecord::continuation`] for its own check).
     pub fn is_result_of(
         &self,
         case_id: usize,
@@ -176,6 +233,33 @@ impl CaseRecord {
             && self.values == values
             && self.columns == run.columns()
             && self.results.len() == self.columns.len()
+            && self.continuation.is_none()
+    }
+
+    /// Whether this record is the finished result of continuation point `case_id` on
+    /// `branch`, started from `start`: [`CaseRecord::is_result_of`] apart from the link,
+    /// and the same branch and start state, so that a resumed branch follows the same
+    /// path as an uninterrupted one.
+    pub fn is_continuation_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        keys: &[String],
+        values: &[String],
+        branch: Branch,
+        start: Option<&[f64; NSTATE]>,
+    ) -> bool {
+        let Some(link) = &self.continuation else {
+            return false;
+        };
+        let plain = CaseRecord {
+            continuation: None,
+            ..self.clone()
+        };
+        plain.is_result_of(case_id, hash, SweepRun::Dynamics, keys, values)
+            && link.branch == branch
+            && link.started_from(start)
+            && link.end_state().is_some()
     }
 }
 
@@ -209,6 +293,7 @@ mod tests {
             values: values.clone(),
             columns: SweepRun::Dynamics.columns(),
             results: vec![Some(1.0); 9],
+            continuation: None,
         };
         assert!(r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &values));
         assert!(!r.is_result_of(4, "abc", SweepRun::Dynamics, &keys, &values));
