@@ -15,6 +15,7 @@
 mod common;
 
 use common::{gearwear, read_csv, sweep};
+use gearwear::study::sweep::CaseRecord;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -153,11 +154,17 @@ fn resumed_branches_skip_finished_points_and_follow_the_same_path() {
 
     // A point whose record says it started elsewhere is not reused: edit the start
     // state of point 2 and it is computed again (and comes out the same).
+    // The record is re-sealed, as a well-formed record of another start would be (an
+    // edit without a new checksum is refused outright: tests/reliability.rs).
     let path = out.join("cases/2.json");
-    let mut rec: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-    rec["continuation"]["start_state_bits"][0] = serde_json::json!(0u64);
-    std::fs::write(&path, serde_json::to_string(&rec).unwrap()).unwrap();
+    let mut rec = CaseRecord::read(&path).unwrap().unwrap();
+    rec.continuation
+        .as_mut()
+        .unwrap()
+        .start_state_bits
+        .as_mut()
+        .unwrap()[0] = 0;
+    std::fs::write(&path, serde_json::to_string(&rec.sealed()).unwrap()).unwrap();
     let third = sweep(&args, &out);
     assert!(third.contains("1 computed, 2 skipped"), "{third}");
     assert_eq!(std::fs::read(out.join("sweep.csv")).unwrap(), table);

@@ -413,3 +413,35 @@ fn a_merge_of_a_merge_and_a_shard_of_another_sweep_is_refused() {
     assert!(err(&o).contains("different sweeps"), "{}", err(&o));
     assert!(!m2.join("sweep.csv").exists());
 }
+
+#[test]
+fn an_edited_sweep_case_file_is_refused_naming_it() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("s");
+    let o = out.to_str().unwrap();
+    let args = [
+        "sweep",
+        "-q",
+        "--vary",
+        "operating.input_speed_hz=20,25",
+        "--out",
+        o,
+    ];
+    assert!(gearwear(&args).status.success());
+    let case = out.join("cases").join("1.json");
+    let text = std::fs::read_to_string(&case).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let x = v["results"][0].as_f64().unwrap();
+    v["results"][0] = serde_json::json!(x * 1.5);
+    std::fs::write(&case, serde_json::to_string_pretty(&v).unwrap()).unwrap();
+    let r = gearwear(&args);
+    assert_eq!(r.status.code(), Some(2), "{}", err(&r));
+    assert!(
+        err(&r).contains("1.json") && err(&r).contains("checksum"),
+        "{}",
+        err(&r)
+    );
+    // Restored, it is used again (skipped, not recomputed).
+    std::fs::write(&case, text).unwrap();
+    assert!(gearwear(&args).status.success());
+}

@@ -104,10 +104,25 @@ pub(super) fn case_path(dir: &Path, id: usize) -> PathBuf {
 
 /// The record of a finished case, if `cases/<id>.json` holds this very case's result.
 fn finished(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Option<CaseRecord> {
-    let text = std::fs::read_to_string(case_path(dir, p.id)).ok()?;
-    let r: CaseRecord = serde_json::from_str(&text).ok()?;
+    let r = CaseRecord::read(&case_path(dir, p.id)).ok()??;
     r.is_result_of(p.id, &p.hash, run, keys, &p.values)
         .then_some(r)
+}
+
+/// Every case file of the plan that exists must read back whole and unedited
+/// (`CaseRecord::verify`); a record of another case (changed base case or values) is
+/// fine: it is recomputed and replaced.
+fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), CliError> {
+    let problems: Vec<String> = planned
+        .iter()
+        .filter_map(|p| CaseRecord::read(&case_path(dir, p.id)).err())
+        .map(|e| format!("{e}; delete it to recompute that case"))
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Input(problems))
+    }
 }
 
 fn progress_bar(n: usize) -> ProgressBar {
@@ -149,7 +164,9 @@ pub(super) fn write_record(
             .map(|x| x.is_finite().then_some(*x))
             .collect(),
         continuation,
-    };
+        checksum: None,
+    }
+    .sealed();
     let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
     write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
     Ok(rec)
@@ -218,6 +235,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
+    check_case_files(&a.out, &planned)?;
     let (done, pending): (Vec<&Planned>, Vec<&Planned>) = planned
         .iter()
         .partition(|p| finished(&a.out, p, run_kind, &keys).is_some());

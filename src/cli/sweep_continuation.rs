@@ -78,8 +78,7 @@ pub fn run_branches(
     let outcomes = Mutex::new(Vec::new());
     let finished = |b: Branch, id: usize, start: Option<&[f64; NSTATE]>| {
         let p = by_id.get(&id)?;
-        let text = std::fs::read_to_string(case_path(dir, id)).ok()?;
-        let r: CaseRecord = serde_json::from_str(&text).ok()?;
+        let r = CaseRecord::read(&case_path(dir, id)).ok()??;
         if !r.is_continuation_result_of(id, &p.hash, keys, &p.values, b, start) {
             return None;
         }

@@ -176,6 +176,10 @@ pub struct CaseRecord {
     /// (absent: static equilibrium) and ended in, as the bits of each f64 (exact in JSON).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub continuation: Option<ContinuationLink>,
+    /// SHA-256 of the record's JSON without this field ([`CaseRecord::sealed`]), so an
+    /// edited record is detected ([`CaseRecord::verify`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checksum: Option<String>,
 }
 
 /// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
@@ -214,6 +218,56 @@ fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
 }
 
 impl CaseRecord {
+    fn content_checksum(&self) -> String {
+        let plain = CaseRecord {
+            checksum: None,
+            ..self.clone()
+        };
+        crate::checksum::sha256_hex(serde_json::to_string(&plain).unwrap_or_default().as_bytes())
+    }
+
+    /// The record with its checksum set, ready to be written.
+    pub fn sealed(mut self) -> Self {
+        self.checksum = Some(self.content_checksum());
+        self
+    }
+
+    /// Read back: the checksum matches the content, and the results match the columns.
+    pub fn verify(&self) -> Result<(), String> {
+        match &self.checksum {
+            None => return Err("has no checksum".into()),
+            Some(c) if *c != self.content_checksum() => {
+                return Err("does not match its checksum: the file was changed".into())
+            }
+            Some(_) => {}
+        }
+        if self.results.len() != self.columns.len() {
+            return Err(format!(
+                "holds {} results for {} columns",
+                self.results.len(),
+                self.columns.len()
+            ));
+        }
+        if self.keys.len() != self.values.len() {
+            return Err("its varied keys and values differ in number".into());
+        }
+        Ok(())
+    }
+
+    /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
+    /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
+    pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
+        let bytes = match std::fs::read(path) {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+            Err(e) => return Err(format!("{}: cannot read: {e}", path.display())),
+        };
+        let r: CaseRecord = serde_json::from_slice(&bytes)
+            .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;
+        r.verify().map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(Some(r))
+    }
+
     /// Whether this record is the finished result of the given case: same id, resolved
     /// case, run kind, varied keys and values, and the columns this version writes. A
     /// continuation point is not the result of an ordinary case (see
@@ -254,6 +308,7 @@ impl CaseRecord {
         };
         let plain = CaseRecord {
             continuation: None,
+            checksum: None,
             ..self.clone()
         };
         plain.is_result_of(case_id, hash, SweepRun::Dynamics, keys, values)
@@ -294,6 +349,7 @@ mod tests {
             columns: SweepRun::Dynamics.columns(),
             results: vec![Some(1.0); 9],
             continuation: None,
+            checksum: None,
         };
         assert!(r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &values));
         assert!(!r.is_result_of(4, "abc", SweepRun::Dynamics, &keys, &values));
