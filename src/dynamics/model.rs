@@ -25,7 +25,7 @@ use crate::config::case::{LoadSharingModel, SpeedBoundary};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::HertzContact;
 use crate::contact::kinematics::SurfaceKinematics;
-use crate::contact::load_sharing::pedrero_share;
+use crate::contact::load_sharing::pedrero_shares;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
 use nalgebra::{SMatrix, SVector};
@@ -354,11 +354,17 @@ impl<'a> GearSystem<'a> {
         omega_p: f64,
         omega_g: f64,
     ) {
-        for i in 0..ms.n_pairs {
-            ms.share[i] = match self.load_sharing {
-                LoadSharingModel::Pedrero => pedrero_share(self.pair, ms.rho1_m[i]),
-                LoadSharingModel::Stiffness => stiffness_shares.map_or(0.0, |s| s[i]),
-            };
+        let n = ms.n_pairs;
+        match self.load_sharing {
+            // By the contact set decided (pairs ordered from the last to enter).
+            LoadSharingModel::Pedrero => {
+                pedrero_shares(self.pair, &ms.rho1_m[..n], &mut ms.share[..n])
+            }
+            LoadSharingModel::Stiffness => {
+                ms.share[..n].copy_from_slice(&stiffness_shares.unwrap_or_default()[..n])
+            }
+        }
+        for i in 0..n {
             let w = ms.share[i] * ms.force_n;
             ms.load_n[i] = w;
             let rho1 = ms.rho1_m[i];
