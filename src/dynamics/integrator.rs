@@ -52,7 +52,7 @@ mod tests_linear;
 mod tests_nonlinear;
 
 pub use rk4::Rk4;
-pub use sdirk::{Sdirk, SdirkOptions};
+pub use sdirk::{Sdirk, SdirkOptions, Trial};
 
 /// A first-order ODE system `y' = f(t, y)` of fixed size `N`.
 ///

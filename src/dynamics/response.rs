@@ -85,9 +85,11 @@ pub struct DynamicResponse {
     pub signals: Signals,
     /// Samples along the path of contact over the last mesh period, sorted by rho1.
     pub path: Vec<PathSample>,
-    /// Mesh periods integrated before the response repeated itself.
+    /// Mesh periods integrated before the periodic state was found (the recorded
+    /// window not included).
     pub periods_to_converge: usize,
-    /// Relative change of DTE and mesh force over the last period checked.
+    /// Largest change of the state over one recorded period, relative to the state's
+    /// scales (`period::state_scales`): how periodic the recorded window is.
     pub periodicity_error: f64,
     pub mesh_period_s: f64,
     /// Time means over the evaluated window by the midpoint rule on the step midpoints
@@ -100,10 +102,13 @@ pub struct DynamicResponse {
     /// of another evaluation (`steady::solve_steady_state_from`) warm-starts that one from
     /// this periodic state: wear updates, continuation along a parameter.
     pub end_state: [f64; 16],
-    /// Integrator work (for benchmarks and the performance notes).
+    /// Integrator work (for benchmarks and the performance notes): accepted steps over
+    /// all periods integrated, rhs calls, LU factorisations, and the step counts in
+    /// detail (rejections, contact switches).
     pub steps: usize,
     pub rhs_evaluations: usize,
     pub factorizations: usize,
+    pub step_counts: super::period::StepCounts,
 }
 
 impl DynamicResponse {
