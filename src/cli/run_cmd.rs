@@ -4,7 +4,7 @@ use super::args::RunArgs;
 use super::output::{build_model, json_write, PLOT_H, PLOT_W};
 use super::stiffness_cmd::{figure2, stiffness_table};
 use super::wear_cmd::{
-    checkpoint_path, load_checkpoint, wear_figures, wear_summary, write_run_tables,
+    checkpoint_path, load_checkpoint, report_stops, wear_figures, wear_summary, write_run_tables,
 };
 use super::CliError;
 use crate::dynamics::model::dof;
@@ -329,7 +329,7 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         "run: report, summary.json, figures and csv/ -> {}",
         out.display()
     );
-    Ok(())
+    report_stops(&[&study.dynamic, &study.quasi_static])
 }
 
 fn build_report(

@@ -6,7 +6,7 @@ use super::CliError;
 use crate::io::{write_atomic, RunMetadata, Table};
 use crate::report::figures::{panel, single, Curve};
 use crate::report::plot::Figure;
-use crate::study::wear_loop::{run_wear, WearMode, WearRun};
+use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
 use crate::study::Model;
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
@@ -281,10 +281,21 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
             "quasi_static": qs.map(|r| r.records.len() - 1),
         },
     });
+    // The runs that stopped early, by mode (empty when both reached the total cycles).
+    let mut stopped = serde_json::Map::new();
+    for r in [dynamic, qs].into_iter().flatten() {
+        if let Some(stop) = &r.stopped {
+            stopped.insert(r.mode.name().into(), json!(stop));
+        }
+    }
+    v["stopped"] = serde_json::Value::Object(stopped);
     if let (Some(d), Some(q)) = (dynamic, qs) {
+        // At the same cycles: a run that stopped early ends before the other.
+        let end = d.cycles().last().copied().unwrap_or(0.0);
+        let end = end.min(q.cycles().last().copied().unwrap_or(0.0));
         let (hd, hq) = (
-            d.last().map_or(0.0, |r| r.wear.max_pinion_m()),
-            q.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+            at_cycles(&d.cycles(), &d.max_wear_pinion_m(), end),
+            at_cycles(&q.cycles(), &q.max_wear_pinion_m(), end),
         );
         v["ratio_max_wear_dynamic_to_static"] = json!(hd / hq);
         v["ratio_max_wear_rate_dynamic_to_static"] = json!(rate(d) / rate(q));
@@ -339,5 +350,33 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
             a.out.display()
         );
     }
-    Ok(())
+    report_stops(&refs)
+}
+
+/// Warns about every wear run that stopped early (its outputs are written up to the
+/// stop). A stop because the worn teeth left the model's domain is a result (exit code
+/// 0, `stopped` in summary.json); one for want of a steady state is a failure of the
+/// solver the user should act on (exit code 1, after all outputs are written).
+pub fn report_stops(runs: &[&WearRun]) -> Result<(), CliError> {
+    let mut failed = None;
+    for run in runs {
+        if let Some(stop) = &run.stopped {
+            eprintln!(
+                "warning: the {} wear run stopped early: {}",
+                run.mode.name(),
+                stop.reason
+            );
+            if stop.kind == StopKind::Numerical {
+                failed = Some(format!(
+                    "the {} wear run stopped early: {}",
+                    run.mode.name(),
+                    stop.reason
+                ));
+            }
+        }
+    }
+    match failed {
+        Some(m) => Err(CliError::Failed(anyhow::anyhow!(m))),
+        None => Ok(()),
+    }
 }

@@ -112,6 +112,25 @@ pub struct DynamicResponse {
 }
 
 impl DynamicResponse {
+    /// Fraction of the evaluated window during which the mesh transmits no force
+    /// (contact loss), from the samples: the intervals whose both ends carry none.
+    pub fn contact_loss_fraction(&self) -> f64 {
+        let s = &self.signals;
+        let (mut off, mut total) = (0.0, 0.0);
+        for k in 1..s.time_s.len() {
+            let dt = s.time_s[k] - s.time_s[k - 1];
+            total += dt;
+            if s.mesh_force_n[k] <= 0.0 && s.mesh_force_n[k - 1] <= 0.0 {
+                off += dt;
+            }
+        }
+        if total > 0.0 {
+            off / total
+        } else {
+            0.0
+        }
+    }
+
     /// Load a pair carries at LOA position rho1 (linear interpolation along the path).
     pub fn path_at(&self, rho1_m: f64) -> PathSample {
         interpolate_path(&self.path, rho1_m)
