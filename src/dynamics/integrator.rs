@@ -47,6 +47,8 @@ pub mod tableau;
 #[cfg(test)]
 mod tests_cost;
 #[cfg(test)]
+mod tests_esdirk;
+#[cfg(test)]
 mod tests_linear;
 #[cfg(test)]
 mod tests_nonlinear;
