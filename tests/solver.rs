@@ -31,6 +31,15 @@ fn dynamic(m: &Model) -> DynamicResponse {
         .expect("steady state")
 }
 
+/// Index of the recorded sample at time `t` (every grid node is one, with its exact time).
+fn sample_at(r: &DynamicResponse, t: f64) -> usize {
+    r.signals
+        .time_s
+        .iter()
+        .position(|s| *s == t)
+        .expect("a grid node")
+}
+
 /// Max DTE, DTE RMS, dynamic factor, RMS pinion y velocity.
 fn headline(m: &Model, r: &DynamicResponse) -> [f64; 4] {
     let s = ResponseSummary::of(r);
@@ -154,12 +163,7 @@ fn linear_limit_equals_a_direct_periodic_solution() {
         let (c, f) = (&coarse_y[4 * k], &fine_y[8 * k]);
         let ref_dte = (4.0 * dte(f) - dte(c)) / 3.0;
         let ref_v = (4.0 * vy(f) - vy(c)) / 3.0;
-        let j = r
-            .signals
-            .time_s
-            .iter()
-            .position(|s| s == t)
-            .expect("a node");
+        let j = sample_at(&r, *t);
         err_dte = err_dte.max((r.signals.dte_m[j] - ref_dte).abs());
         err_v =
             err_v.max((r.signals.velocity[j][gearwear::dynamics::model::dof::YP] - ref_v).abs());
@@ -235,12 +239,7 @@ fn contact_loss_resonance_is_solved_at_every_point() {
                     // The periodic solution is the linear one, at every grid node (measured:
                     // within 1e-5 of the load).
                     for (t, f_lin) in &lin {
-                        let j = r
-                            .signals
-                            .time_s
-                            .iter()
-                            .position(|s| s == t)
-                            .expect("a node");
+                        let j = sample_at(&r, *t);
                         let f_dyn = r.signals.mesh_force_n[j];
                         worst = worst.max((f_dyn - f_lin).abs() / load);
                         assert!(
