@@ -45,7 +45,11 @@ impl PathSample {
     }
 }
 
-/// Time series over the evaluated window (whole mesh periods).
+/// Time series over the evaluated window (whole mesh periods). A sample at every grid
+/// node (right limit at a mesh event) and at every integration step between nodes, so
+/// the spacing is not uniform: it is short where the error control shortened the steps
+/// (after each mesh event, near contact switches). The dynamic solver integrates one
+/// period of the periodic solution and repeats it over the window.
 #[derive(Debug, Clone, Default)]
 pub struct Signals {
     pub time_s: Vec<f64>,

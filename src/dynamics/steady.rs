@@ -4,9 +4,10 @@
 //! ([`super::shooting`]) from the static equilibrium or from a given periodic state
 //! (warm start), each iteration one mesh period of the error-controlled integration of
 //! [`super::period`]. It stops when the estimated distance of the start state from the
-//! periodic orbit, relative to the state's scales, is below the case's tolerance; the
-//! evaluated window is then integrated and recorded, and its own periodicity (the change
-//! of the state over each recorded period) is reported.
+//! periodic orbit, relative to the state's scales, is below the case's tolerance. One
+//! period of the orbit is recorded (the last search period when it started close enough,
+//! else one more) and repeated over the evaluated window; its periodicity (the change of
+//! the state over that period) is reported.
 
 use super::grid::period_nodes;
 use super::model::{ContactMode, GearSystem, MeshState, State, NDOF};
