@@ -50,7 +50,7 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use super::lu::StaticLu;
+use super::lu::{second_order_inverse, StaticLu};
 use super::tableau::{Tableau, ALEXANDER3, MAX_STAGES};
 use super::{finite_difference_jacobian, IntegratorError, OdeSystem, StepStats, Stepper};
 
@@ -482,10 +482,17 @@ impl<const N: usize> Sdirk<N> {
             .jac
             .as_ref()
             .ok_or(IntegratorError::SingularMatrix { t })?;
-        let m = SMatrix::<f64, N, N>::identity() - (h * self.tab.gamma) * jac;
-        let lu = StaticLu::factor(&m).ok_or(IntegratorError::SingularMatrix { t })?;
+        let c = h * self.tab.gamma;
         st.lu_factorizations += 1;
-        let m_inv = lu.inverse();
+        let m_inv = match second_order_inverse(jac, c) {
+            Some(inv) => inv,
+            None => {
+                let m = SMatrix::<f64, N, N>::identity() - c * jac;
+                StaticLu::factor(&m)
+                    .ok_or(IntegratorError::SingularMatrix { t })?
+                    .inverse()
+            }
+        };
         // A nearly singular matrix can pass the pivot test and still overflow here.
         if !m_inv.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::SingularMatrix { t });
