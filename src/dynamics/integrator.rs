@@ -43,6 +43,7 @@ use nalgebra::{SMatrix, SVector};
 use thiserror::Error;
 
 mod lu;
+mod options;
 mod rk4;
 mod sdirk;
 pub mod tableau;

@@ -51,64 +51,11 @@
 use nalgebra::{SMatrix, SVector};
 
 use super::lu::{second_order_inverse, StaticLu};
+pub use super::options::SdirkOptions;
+
+mod newton;
 use super::tableau::{Tableau, ALEXANDER3, MAX_STAGES};
 use super::{finite_difference_jacobian, IntegratorError, OdeSystem, StepStats, Stepper};
-
-/// Settings of the Newton iteration of [`Sdirk`]. These set how accurately the implicit
-/// stage equations are solved, not the truncation error of the step: keep them well
-/// below the accuracy you expect from the step size.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SdirkOptions {
-    /// Absolute Newton tolerance, units of `y`, > 0 (same for all components; use
-    /// [`Sdirk::set_abs_tol`] for per-component values, e.g. m and m/s).
-    pub abs_tol: f64,
-    /// Relative Newton tolerance, dimensionless, >= 0.
-    pub rel_tol: f64,
-    /// Newton iterations allowed per stage, >= 1.
-    pub max_newton_iters: usize,
-    /// Contraction rate in (0, 1) above which the Jacobian and LU are refreshed before
-    /// the next step. Default 0.1: on a 16-state system with a +-30 % switching mesh
-    /// stiffness (`tests_cost.rs`) it needed 6.1 Newton iterations per step against 6.5
-    /// for 0.3-0.9, with the same number of Jacobians.
-    pub refresh_rate: f64,
-}
-
-impl Default for SdirkOptions {
-    fn default() -> Self {
-        Self {
-            abs_tol: 1e-12,
-            rel_tol: 1e-9,
-            max_newton_iters: 10,
-            refresh_rate: 0.1,
-        }
-    }
-}
-
-impl SdirkOptions {
-    fn validate(&self) -> Result<(), IntegratorError> {
-        if !(self.abs_tol > 0.0 && self.abs_tol.is_finite()) {
-            return Err(IntegratorError::InvalidSetting(
-                "abs_tol must be finite and > 0",
-            ));
-        }
-        if !(self.rel_tol >= 0.0 && self.rel_tol.is_finite()) {
-            return Err(IntegratorError::InvalidSetting(
-                "rel_tol must be finite and >= 0",
-            ));
-        }
-        if self.max_newton_iters == 0 {
-            return Err(IntegratorError::InvalidSetting(
-                "max_newton_iters must be >= 1",
-            ));
-        }
-        if !(self.refresh_rate > 0.0 && self.refresh_rate < 1.0) {
-            return Err(IntegratorError::InvalidSetting(
-                "refresh_rate must be in (0, 1)",
-            ));
-        }
-        Ok(())
-    }
-}
 
 /// Jacobian re-evaluations allowed per stage after Newton failures, before giving up.
 const MAX_STAGE_REFRESHES: usize = 2;
@@ -501,81 +448,6 @@ impl<const N: usize> Sdirk<N> {
         self.m_inv_h = h;
         self.eta = 1.0; // new matrix: measure the contraction again before trusting it
         Ok(())
-    }
-    /// Solves the stage equation `Y = base + h gamma f(t_i, Y)` by simplified Newton
-    /// from `*start` with the current iteration matrix. Returns `Y` and the largest
-    /// contraction rate seen. On failure `*start` holds the last iterate reached while contracting (a
-    /// better point for a new Jacobian). With `early_abort`, gives up as soon as the
-    /// tolerance looks out of reach in the iterations left (a refresh is cheaper).
-    #[allow(clippy::too_many_arguments)]
-    fn solve_stage<S: OdeSystem<N>>(
-        &mut self,
-        sys: &mut S,
-        t_i: f64,
-        hg: f64,
-        inv_scale: &SVector<f64, N>,
-        base: &SVector<f64, N>,
-        start: &mut SVector<f64, N>,
-        early_abort: bool,
-        st: &mut StepStats,
-    ) -> Result<(SVector<f64, N>, f64), Failure> {
-        let max_iter = self.opts.max_newton_iters;
-        let mut y_stage = *start;
-        // Before a rate is measured, assume the worst one the refresh policy tolerates
-        // (or the last measured one if worse): a first correction is accepted alone
-        // only if it is already within ~1/eta tolerances.
-        let eta_floor = self.opts.refresh_rate / (1.0 - self.opts.refresh_rate);
-        let mut eta = self.eta.max(eta_floor);
-        let mut prev_norm = 0.0;
-        let mut rate = f64::NAN;
-        let mut max_rate: f64 = 0.0;
-        for iters in 1..=max_iter {
-            let f = sys.rhs(t_i, &y_stage);
-            st.rhs_calls += 1;
-            st.newton_iterations += 1;
-            let delta = self.m_inv * (base + hg * f - y_stage);
-            // Weighted RMS norm of the correction.
-            let norm = (delta.component_mul(inv_scale).norm_squared() / N as f64).sqrt();
-            if !norm.is_finite() {
-                return Err(Failure::NonFinite);
-            }
-            if iters > 1 {
-                rate = norm / prev_norm;
-                max_rate = max_rate.max(rate);
-                st.max_rate = st.max_rate.max(rate);
-                if rate.is_nan() || rate >= 0.99 {
-                    return Err(Failure::Newton {
-                        iterations: iters,
-                        rate,
-                    });
-                }
-                eta = rate / (1.0 - rate);
-            }
-            y_stage += delta;
-            prev_norm = norm;
-            if iters > 1 {
-                *start = y_stage;
-            }
-            if eta * norm <= 1.0 {
-                if !y_stage.iter().all(|v| v.is_finite()) {
-                    return Err(Failure::NonFinite);
-                }
-                self.eta = eta;
-                return Ok((y_stage, max_rate));
-            }
-            // Predicted error after the remaining iterations (Hairer & Wanner II, IV.8).
-            let left = (max_iter - iters) as i32;
-            if early_abort && iters > 1 && eta * norm * rate.powi(left) > 1.0 {
-                return Err(Failure::Newton {
-                    iterations: iters,
-                    rate,
-                });
-            }
-        }
-        Err(Failure::Newton {
-            iterations: max_iter,
-            rate,
-        })
     }
 }
 
