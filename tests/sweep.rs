@@ -146,6 +146,12 @@ fn wear_row_equals_single_wear_run() {
         num(&m, "wear_updates_quasi_static"),
         s["updates"]["quasi_static"].as_f64().unwrap()
     );
+    // Neither run stopped early (summary.json lists none), so both reach the case's
+    // total cycles.
+    assert_eq!(s["stopped"], serde_json::json!({}));
+    for col in ["wear_cycles_dynamic", "wear_cycles_quasi_static"] {
+        assert_eq!(num(&m, col), last(&s["cycles"]), "{col}");
+    }
     assert!(
         num(&m, "wear_updates_dynamic") >= 1.0,
         "a wear run has updates"

@@ -10,6 +10,7 @@ mod progress;
 mod resume;
 mod run_cmd;
 mod stiffness_cmd;
+mod stops;
 mod sweep_cmd;
 mod sweep_continuation;
 mod sweep_merge_cmd;

@@ -4,6 +4,7 @@ use super::args::RunArgs;
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
 use super::resume::{starting_runs, Checkpoints};
+use super::stops::report_stops;
 use super::CliError;
 use crate::io::RunMetadata;
 use crate::report::paper::run_artifacts;
@@ -35,5 +36,6 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
         b.finish_and_clear();
     }
     drop(checkpoints);
-    finish(out, run_artifacts(&model, &study, &meta), &meta)
+    finish(out, run_artifacts(&model, &study, &meta), &meta)?;
+    report_stops(&[&study.dynamic, &study.quasi_static])
 }

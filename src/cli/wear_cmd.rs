@@ -5,6 +5,7 @@ use super::args::{WearArgs, WearModeArg};
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
 use super::resume::{starting_runs, Checkpoints};
+use super::stops::report_stops;
 use super::CliError;
 use crate::io::RunMetadata;
 use crate::report::wear::wear_artifacts;
@@ -43,5 +44,6 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
     }
     drop(checkpoints);
     let refs: Vec<&WearRun> = runs.iter().collect();
-    finish(out, wear_artifacts(&model, &refs), &meta)
+    finish(out, wear_artifacts(&model, &refs), &meta)?;
+    report_stops(&refs)
 }

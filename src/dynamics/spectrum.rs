@@ -4,8 +4,9 @@
 //! harmonic h falls exactly on DFT bin h P and a periodic signal has nothing in the bins
 //! between. That holds only if the samples themselves repeat from period to period:
 //! the signal is resampled (linearly) onto a uniform grid of a whole number m of points
-//! per mesh period (the integrator's grid is uniform only between mesh events, and it is
-//! the same in every period), so sample i + m is the same phase as sample i. No window
+//! per mesh period (the integrator's step is adaptive, with mesh events and contact
+//! changes as nodes, so its grid is neither uniform nor necessarily the same in every
+//! period), so sample i + m is the same phase as sample i. No window
 //! is applied: over a whole number of periods the rectangular window is exact (a window
 //! such as Hann would spread each harmonic into the bins h P +- 1, i.e. side lines at
 //! +- f_mesh / P at half the harmonic's height, which look like modulation sidebands).

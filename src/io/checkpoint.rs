@@ -130,7 +130,11 @@ pub fn load_checkpoint(
         return Err(err("has no header line".into()));
     }
     Ok(Some(LoadedCheckpoint {
-        run: WearRun { mode, records },
+        run: WearRun {
+            mode,
+            records,
+            stopped: None,
+        },
         valid_len: valid_len as u64,
     }))
 }
@@ -228,6 +232,8 @@ mod tests {
                 increment_gear_m: vec![0.0; 3],
                 path_rho1_m: vec![],
                 path_load_n: vec![],
+                // Digits JSON must carry exactly for a resumed run to match.
+                end_state: Some(vec![std::f64::consts::PI / (i + 3) as f64; 16]),
             });
         }
         run

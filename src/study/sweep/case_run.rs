@@ -7,7 +7,7 @@ use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::model::NSTATE;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
-use crate::study::wear_loop::{run_wear, WearMode, WearRun};
+use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
 use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
 
@@ -35,14 +35,18 @@ const DYNAMICS_COLUMNS: [&str; 9] = [
     "mesh_harmonic4_mm_per_s",
 ];
 
-/// Extra columns of a wear row: final maximum wear depths and update counts per mode.
-const WEAR_COLUMNS: [&str; 6] = [
+/// Extra columns of a wear row, per mode: final maximum wear depths, update count, and
+/// the cycles reached (below the case's total when the run stopped at the edge of the
+/// model's domain, [`crate::study::wear_loop::WearStop`]).
+const WEAR_COLUMNS: [&str; 8] = [
     "wear_max_pinion_dynamic_um",
     "wear_max_gear_dynamic_um",
     "wear_updates_dynamic",
+    "wear_cycles_dynamic",
     "wear_max_pinion_quasi_static_um",
     "wear_max_gear_quasi_static_um",
     "wear_updates_quasi_static",
+    "wear_cycles_quasi_static",
 ];
 
 impl SweepRun {
@@ -114,6 +118,17 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             let one = |mode| run_wear(&model, WearRun::new(mode), &mut |_| Ok(()));
             let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
             let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
+            // A run the solver gave up on is a failed case; one that left the model's
+            // domain is a result (its cycles column says where it stopped).
+            for r in [&d, &q] {
+                if let Some(stop) = r.stopped.as_ref().filter(|s| s.kind == StopKind::Numerical) {
+                    return Err(CaseError::Solve(anyhow::anyhow!(
+                        "the {} wear run stopped early: {}",
+                        r.mode.name(),
+                        stop.reason
+                    )));
+                }
+            }
             Ok(CaseOutcome {
                 results: wear_results(&d, &q),
                 warnings: model.warnings,
@@ -155,6 +170,7 @@ fn wear_results(d: &WearRun, q: &WearRun) -> Vec<f64> {
         v.push(last.map_or(f64::NAN, |r| r.wear.max_pinion_m() * 1e6));
         v.push(last.map_or(f64::NAN, |r| r.wear.max_gear_m() * 1e6));
         v.push(run.records.len().saturating_sub(1) as f64);
+        v.push(last.map_or(f64::NAN, |r| r.wear.cycles));
     }
     v
 }
@@ -333,7 +349,11 @@ mod tests {
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
         // 2e-5 m is 20 um; 4e-3 m/s is 4 mm/s (to rounding of the unit factors).
         assert!((v[0] - 20.0).abs() < 1e-12 && (v[8] - 4.0).abs() < 1e-12);
-        assert_eq!(SweepRun::Wear.columns().len(), v.len() + 6);
+        let (d, q) = (
+            WearRun::new(WearMode::Dynamic),
+            WearRun::new(WearMode::QuasiStatic),
+        );
+        assert_eq!(SweepRun::Wear.columns().len(), wear_results(&d, &q).len());
     }
 
     #[test]
