@@ -305,6 +305,52 @@ mod tests {
     }
 
     #[test]
+    fn fillet_junction_angle_of_the_paper_pair_by_hand() {
+        // ISO 6336-3's E for the rack (h_fP = 1.25 m, rho_fP = 0.38 m, alpha = 20 deg):
+        // E/m = pi/4 - 1.25 tan 20 - 0.38 (1 - sin 20)/cos 20
+        //     = 0.785398 - 0.454963 - 0.266079 = 0.064357;
+        // theta_f = (pi/2 - E/m) 2/z: pinion 1.506440 x 2/19 = 0.158573, gear 0.097190.
+        // Tolerance 2e-6: the hand values carry 6 digits.
+        let p = GearPair::from_case(&GearSection::default()).unwrap();
+        assert!((p.pinion.fillet_junction_half_angle_rad - 0.158573).abs() < 2e-6);
+        assert!((p.gear.fillet_junction_half_angle_rad - 0.097190).abs() < 2e-6);
+        // The footing at the fillet junction is wider than at the flank's extension, and
+        // both lie within the half pitch pi/z.
+        for g in [&p.pinion, &p.gear] {
+            let beam = ToothBeam::new(g, p.face_width_m, 205e9, 0.3);
+            let (junction, flank) = (g.fillet_junction_half_angle_rad, beam.root_half_angle_rad());
+            assert!(flank < junction && junction < std::f64::consts::PI / g.teeth as f64);
+        }
+    }
+
+    #[test]
+    fn a_wider_footing_stiffens_and_a_smaller_bore_softens_the_foundation() {
+        // Sainsot's fit over its whole range (alpha_m = 0.3): for a fixed load point the
+        // body's compliance falls as theta_f (the tooth's footing) grows; for a fixed
+        // proportion u_f/S_f of a tooth (0.25-1.5) it rises with h_f = r_f/r_int: the body is
+        // held at the bore in Sainsot's model, so a smaller bore moves the support away from
+        // the tooth. (At theta_f = 0.01 and u_f/S_f > 5, no tooth's proportion, the h_f
+        // trend reverses.)
+        let at = |h: f64, t: f64, u: f64| {
+            FilletFoundation::new("t", 0.0165, 0.0165 / h, t, 2.05e11, 0.02)
+                .compliance_m_per_n(u, 0.3)
+        };
+        for (h, t) in grid() {
+            for u in [0.5e-3, 2e-3, 4e-3] {
+                if t + 0.01 <= THETA_F_RANGE_RAD.1 {
+                    assert!(at(h, t + 0.01, u) < at(h, t, u), "theta {t} h {h} u {u}");
+                }
+            }
+            for x in [0.25, 0.5, 1.0, 1.5] {
+                let u = x * 2.0 * 0.0165 * t;
+                if h + 0.4 <= H_F_RANGE.1 {
+                    assert!(at(h + 0.4, t, u) > at(h, t, u), "h {h} theta {t} u/S {x}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn out_of_range_geometry_warns_but_evaluates() {
         let big_bore = FilletFoundation::new("pinion", 0.02, 0.018, 0.08, 2e11, 0.02);
         assert!(big_bore.warning.as_deref().unwrap().contains("h_f"));
