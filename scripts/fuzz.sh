@@ -3,11 +3,14 @@
 # "Input domain and fuzzing"). Not part of .ci/run by default: it needs cargo-fuzz and a
 # nightly toolchain (or RUSTC_BOOTSTRAP=1 on stable), and its first build takes minutes.
 #
-# Usage: scripts/fuzz.sh [RUNS]        (default 1000000 executions)
+# Usage: scripts/fuzz.sh [RUNS]        (default 1000000 executions of each target)
+#        FUZZ_TARGET=case_values scripts/fuzz.sh   (one target; default: both in turn)
 #        FUZZ_TOOLCHAIN=nightly-2026-05-15 scripts/fuzz.sh 200000
-#        FUZZ_SECONDS=120 scripts/fuzz.sh (a bounded time instead of a number of runs)
-# The corpus grows in fuzz/corpus/case_input (seeded from fuzz/seeds); a crash is saved in
-# fuzz/artifacts/case_input and makes this script fail.
+#        FUZZ_SECONDS=120 scripts/fuzz.sh (a bounded time per target instead of a number of runs)
+# Targets: case_input (TOML text, --set, --vary; seeded from fuzz/seeds) and case_values
+# (schema keys with values mostly in range, so most inputs reach the model). The corpora
+# grow in fuzz/corpus/TARGET; a crash is saved in fuzz/artifacts/TARGET and makes this
+# script fail.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-1000000}"
@@ -23,15 +26,19 @@ else
     export RUSTC_BOOTSTRAP=1
     cargo_cmd=(cargo)
 fi
-corpus=fuzz/corpus/case_input
-mkdir -p "$corpus"
-cp -n fuzz/seeds/* "$corpus"/ 2>/dev/null || true
 limit=(-runs="$runs")
 if [[ -n "${FUZZ_SECONDS:-}" ]]; then
     limit=(-max_total_time="$FUZZ_SECONDS")
 fi
-# No sanitizer: gearwear has no unsafe code of its own; what the fuzzer looks for is a
-# panic (debug assertions are on), an abort, a hang (-timeout) or a memory blow-up
-# (-rss_limit_mb), and an uninstrumented build runs several times faster.
-"${cargo_cmd[@]}" fuzz run --sanitizer none case_input "$corpus" -- \
-    "${limit[@]}" -max_len=16384 -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
+for target in ${FUZZ_TARGET:-case_input case_values}; do
+    corpus="fuzz/corpus/$target"
+    mkdir -p "$corpus"
+    if [[ "$target" == case_input ]]; then
+        cp -n fuzz/seeds/* "$corpus"/ 2>/dev/null || true
+    fi
+    # No sanitizer: gearwear has no unsafe code of its own; what the fuzzer looks for is a
+    # panic (debug assertions are on), an abort, a hang (-timeout) or a memory blow-up
+    # (-rss_limit_mb), and an uninstrumented build runs several times faster.
+    "${cargo_cmd[@]}" fuzz run --sanitizer none "$target" "$corpus" -- \
+        "${limit[@]}" -max_len=16384 -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
+done

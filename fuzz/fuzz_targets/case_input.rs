@@ -9,19 +9,11 @@
 
 #![no_main]
 
-use gearwear::config::load_case;
-use gearwear::dynamics::excitation::ExternalError;
-use gearwear::study::budget::{estimate, Budget, Job};
-use gearwear::study::sweep::{parse_vary, SweepPlan};
-use gearwear::study::Model;
-use gearwear::wear::WearState;
-use libfuzzer_sys::fuzz_target;
+mod common;
 
-/// What one fuzz input may cost: a quarter of a second, 256 MB.
-const FUZZ_BUDGET: Budget = Budget {
-    memory_bytes: 256e6,
-    seconds: 0.25,
-};
+use gearwear::config::load_case;
+use gearwear::study::sweep::{parse_vary, SweepPlan};
+use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
@@ -47,35 +39,5 @@ fuzz_target!(|data: &[u8]| {
             let _ = load_case(case_text, &s);
         }
     }
-    let Ok(case) = load_case(case_text, &sets) else {
-        return;
-    };
-    let cost = estimate(&case, Job::Stiffness);
-    assert!(cost.seconds().is_finite() && cost.memory_bytes().is_finite());
-    if cost.check(&FUZZ_BUDGET).is_err() {
-        return;
-    }
-    let Ok(model) = Model::from_case(&case) else {
-        return;
-    };
-    let mesh = &model.mesh;
-    for k in [
-        mesh.min_stiffness_n_per_m(),
-        mesh.mean_stiffness_n_per_m(),
-        mesh.max_stiffness_n_per_m(),
-    ] {
-        assert!(k.is_finite() && k > 0.0, "mesh stiffness {k}");
-    }
-    let r = model.quasi_static(&WearState::new(model.grid.len()), &ExternalError::none());
-    assert!(r.mean_mesh_force_n.is_finite() && r.mean_mesh_force_n > 0.0);
-    assert!(r.mean_dte_m.is_finite());
-    for x in r.signals.dte_m.iter().chain(&r.signals.mesh_force_n) {
-        assert!(x.is_finite(), "non-finite quasi-static signal");
-    }
-    for p in &r.path {
-        assert!(
-            p.load_n.is_finite() && p.pressure_pa.is_finite() && p.friction_n.is_finite(),
-            "non-finite path sample {p:?}"
-        );
-    }
+    common::check_case(case_text, &sets);
 });

@@ -2,7 +2,7 @@
 
 use crate::config::{load_case, Case};
 use crate::study::budget::{estimate, Budget, Job};
-use crate::study::sweep::{parse_vary, SweepPlan, SweepRun};
+use crate::study::sweep::{parse_vary, Shard, SweepPlan, SweepRun};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -80,7 +80,16 @@ fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
         SweepRunArg::Dynamics => SweepRun::Dynamics,
         SweepRunArg::Wear => SweepRun::Wear,
     });
-    let over: Vec<String> = (0..plan.len())
+    let shard = match &a.shard {
+        Some(s) => match Shard::parse(s) {
+            Ok(s) => s,
+            Err(_) => return Ok(()), // the sweep reports a bad --shard itself
+        },
+        None => Shard::ALL,
+    };
+    let over: Vec<String> = shard
+        .ids(plan.len())
+        .into_iter()
         .filter_map(|id| {
             let mut sets = a.case.set.clone();
             sets.extend(plan.overrides_of(id));

@@ -38,7 +38,7 @@ pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
     );
     if h.max_pressure_pa.is_nan() || h.max_pressure_pa > MAX_PITCH_PRESSURE_PA {
         problems.push(format!(
-            "`operating.load_torque_nm` = {} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {:.3e} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
+            "`operating.load_torque_nm` = {} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {:.1} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
             o.load_torque_nm,
             h.max_pressure_pa * 1e-9,
             MAX_PITCH_PRESSURE_PA * 1e-9
