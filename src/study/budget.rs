@@ -37,12 +37,10 @@
 //! check. A sweep checks each case against the budget (its number of cases is the user's
 //! explicit choice; it is resumable and shardable).
 
+use super::domain::nominal_contacts;
 use super::sweep::SweepRun;
 use crate::config::case::Case;
-use crate::contact::hertz::{effective_modulus_of, HertzContact};
-use crate::contact::load_sharing::pedrero_share;
 use crate::geometry::GearPair;
-use std::f64::consts::PI;
 
 /// Integrator step on the reference machine, s.
 pub const SECONDS_PER_STEP: f64 = 3e-6;
@@ -213,37 +211,21 @@ fn duration(s: f64) -> String {
 /// Largest Archard wear per pinion cycle on either profile at the nominal load and speeds,
 /// m (quasi-static; see the module docs).
 pub fn nominal_wear_per_cycle_m(case: &Case, pair: &GearPair) -> f64 {
-    let o = &case.operating;
-    let rb = match o.load_torque_shaft {
-        crate::config::case::TorqueShaft::Pinion => pair.pinion.base_radius_m,
-        crate::config::case::TorqueShaft::Gear => pair.gear.base_radius_m,
-    };
-    let force = o.load_torque_nm / rb;
-    let e_star = effective_modulus_of(&case.materials);
-    let omega_p = 2.0 * PI * o.input_speed_hz;
-    let omega_g = omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64;
     let ratio = pair.pinion.teeth as f64 / pair.gear.teeth as f64;
     let k = case.wear.coefficient_m2_per_n;
-    let n = 64;
-    (0..=n)
-        .map(|i| {
-            let rho1 = pair.rho_start_m + pair.path_length_m() * i as f64 / n as f64;
-            let rho2 = pair.rho_gear(rho1);
-            let share = if pair.contact_ratio > 1.0 && pair.contact_ratio < 2.0 {
-                pedrero_share(pair, rho1)
-            } else {
-                1.0 / pair.contact_ratio.floor().max(1.0)
-            };
-            let h =
-                HertzContact::with_modulus(force * share, pair.face_width_m, rho1, rho2, e_star);
-            let (up, ug) = (omega_p * rho1, omega_g * rho2);
+    nominal_contacts(case, pair, 64)
+        .iter()
+        .map(|c| {
+            let (up, ug) = (
+                c.kinematics.pinion_velocity_m_per_s,
+                c.kinematics.gear_velocity_m_per_s,
+            );
             if !(up > 0.0 && ug > 0.0) {
                 return 0.0;
             }
-            let slide = 2.0 * h.half_width_m * (up - ug).abs();
-            let pinion = k * h.max_pressure_pa * slide / up;
-            let gear = ratio * k * h.max_pressure_pa * slide / ug;
-            pinion.max(gear)
+            let slide = 2.0 * c.hertz.half_width_m * (up - ug).abs();
+            let p0 = c.hertz.max_pressure_pa;
+            (k * p0 * slide / up).max(ratio * k * p0 * slide / ug)
         })
         .fold(0.0, f64::max)
 }

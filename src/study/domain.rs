@@ -4,11 +4,67 @@
 //! Also the values the model resolves from the geometry (`"derived"` hub bores, masses and
 //! inertias), reported by [`ResolvedParameters`] and compared with what a case gives.
 
-use crate::config::case::{BodyValues, Case, DynamicsSection};
+use crate::config::case::{BodyValues, Case, DynamicsSection, FrictionModel, TorqueShaft};
+use crate::contact::friction::Friction;
 use crate::contact::hertz::{effective_modulus_of, HertzContact};
+use crate::contact::kinematics::SurfaceKinematics;
+use crate::contact::load_sharing::pedrero_share;
 use crate::geometry::GearPair;
 use crate::stiffness::fillet::FilletFoundation;
 use serde::Serialize;
+use std::f64::consts::PI;
+
+/// Largest friction coefficient accepted at the nominal operating point. Dry steel on
+/// steel reaches ~0.8; a lubricated gear contact stays below ~0.1. Xu's regression is
+/// unbounded outside the conditions it was fitted on (it exponentiates the roughness and
+/// grows with the viscosity): above 1 it describes no contact, and the quasi-static
+/// equilibrium (gear moment r_gb F + sum rho2 f = T) loses its meaning as mu rho2 nears
+/// r_gb.
+pub const MAX_FRICTION_COEFFICIENT: f64 = 1.0;
+
+/// One contact along the path of contact at the nominal operating point.
+#[derive(Debug, Clone, Copy)]
+pub struct NominalContact {
+    pub rho1_m: f64,
+    pub hertz: HertzContact,
+    pub kinematics: SurfaceKinematics,
+}
+
+/// `n` + 1 contacts evenly along the path at the nominal load, shared between pairs by
+/// paper eq. (7) (equally when the contact ratio is 2 or more), and at the nominal speeds.
+pub fn nominal_contacts(case: &Case, pair: &GearPair, n: usize) -> Vec<NominalContact> {
+    let o = &case.operating;
+    let rb = match o.load_torque_shaft {
+        TorqueShaft::Pinion => pair.pinion.base_radius_m,
+        TorqueShaft::Gear => pair.gear.base_radius_m,
+    };
+    let force = o.load_torque_nm / rb;
+    let e_star = effective_modulus_of(&case.materials);
+    let omega_p = 2.0 * PI * o.input_speed_hz;
+    let omega_g = omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64;
+    (0..=n)
+        .map(|i| {
+            let rho1 = pair.rho_start_m + pair.path_length_m() * i as f64 / n as f64;
+            let rho2 = pair.rho_gear(rho1);
+            let share = if pair.contact_ratio > 1.0 && pair.contact_ratio < 2.0 {
+                pedrero_share(pair, rho1)
+            } else {
+                1.0 / pair.contact_ratio.floor().max(1.0)
+            };
+            NominalContact {
+                rho1_m: rho1,
+                hertz: HertzContact::with_modulus(
+                    force * share,
+                    pair.face_width_m,
+                    rho1,
+                    rho2,
+                    e_star,
+                ),
+                kinematics: SurfaceKinematics::new(omega_p, omega_g, rho1, rho2),
+            }
+        })
+        .collect()
+}
 
 /// Largest nominal Hertz pressure accepted at the pitch point, Pa. No steel stays elastic
 /// far beyond ~2.5 GPa (case-hardened flanks, ISO 6336-5 allowable contact stresses stay
@@ -24,8 +80,8 @@ pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
     let mut problems = Vec::new();
     let o = &case.operating;
     let base_radius = match o.load_torque_shaft {
-        crate::config::case::TorqueShaft::Pinion => pair.pinion.base_radius_m,
-        crate::config::case::TorqueShaft::Gear => pair.gear.base_radius_m,
+        TorqueShaft::Pinion => pair.pinion.base_radius_m,
+        TorqueShaft::Gear => pair.gear.base_radius_m,
     };
     let force = o.load_torque_nm / base_radius;
     let rho1 = pair.rho_pitch_m;
@@ -43,6 +99,34 @@ pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
             h.max_pressure_pa * 1e-9,
             MAX_PITCH_PRESSURE_PA * 1e-9
         ));
+    }
+    if case.friction.model == FrictionModel::Xu2007 && problems.is_empty() {
+        let friction = Friction::from_case(&case.friction);
+        let roughness = case
+            .surface
+            .roughness_table_rms_um
+            .iter()
+            .fold(0.0_f64, |a, b| a.max(*b));
+        let mu = nominal_contacts(case, pair, 64)
+            .iter()
+            .map(|c| {
+                friction.coefficient(
+                    &c.hertz,
+                    &c.kinematics,
+                    case.lubricant.viscosity_cp,
+                    roughness,
+                )
+            })
+            .fold(
+                0.0_f64,
+                |a, b| if b.is_nan() { f64::INFINITY } else { a.max(b) },
+            );
+        if mu > MAX_FRICTION_COEFFICIENT {
+            problems.push(format!(
+                "`friction.model` = \"xu2007\" gives a friction coefficient of {mu:.3} on this case's flanks at the nominal load and speed (with `lubricant.viscosity_cp` = {} and a roughness of {roughness} um from `surface.roughness_table_rms_um`): above {MAX_FRICTION_COEFFICIENT}, no lubricated or dry steel contact; the conditions lie outside those Xu et al. fitted. Use friction.model = \"constant\", or a viscosity and roughness the regression covers",
+                case.lubricant.viscosity_cp
+            ));
+        }
     }
     problems
 }
@@ -198,6 +282,38 @@ mod tests {
                 .iter()
                 .all(|m| !m.contains("mass_pinion"))
         );
+    }
+
+    #[test]
+    fn friction_beyond_any_contact_is_refused() {
+        // Xu's coefficient on the paper's pair: a few hundredths by default (docs/MODEL.md);
+        // with a cold heavy oil (72 000 cP) it passes 4.
+        let pair = GearPair::from_case(&Case::default().gear).unwrap();
+        let case = load_case("", &["lubricant.viscosity_cp=72000".into()]).unwrap();
+        let p = domain_problems(&case, &pair);
+        assert!(
+            p[0].contains("friction.model") && p[0].contains("lubricant.viscosity_cp"),
+            "{p:?}"
+        );
+        // The fuzzer's case (fuzz target case_values): a 1 GPa pinion in that oil gave a
+        // negative quasi-static mesh force; refused now, before any model is built.
+        let fuzzed = load_case(
+            "",
+            &[
+                "lubricant.viscosity_cp=72000".into(),
+                "materials.youngs_modulus_pinion_gpa=1.0000077".into(),
+                "dynamics.coupling_damping_motor_nm_s_per_rad=9.96e6".into(),
+            ],
+        )
+        .unwrap();
+        let e = crate::study::Model::from_case(&fuzzed).err().unwrap();
+        assert!(e.0[0].contains("friction coefficient"), "{e}");
+        let paper_mm = load_case(
+            "[friction]\nxu_radius_unit = \"mm\"\n[surface]\nroughness_table_rms_um = [2.1, 1.9, 1.5]\n",
+            &[],
+        )
+        .unwrap();
+        assert!(domain_problems(&paper_mm, &pair).is_empty());
     }
 
     #[test]
