@@ -83,8 +83,8 @@ const FORM: &str = "\
   inertias: the model computes them from the geometry (`gearwear config --new-pair` prints
   a case that uses it; docs/MODEL.md, section 7).
 - Beyond these ranges, a case is checked against its geometry (a bore inside the root
-  circle, teeth that touch, a Hertz pressure below 10 GPa, Sainsot's fitted range) and
-  its cost against the run budget (`--budget-scale`, `--no-budget`;
+  circle, teeth that touch, a Hertz pressure below 10 GPa, a friction coefficient below 1,
+  Sainsot's fitted range) and its cost against the run budget (`--budget-scale`, `--no-budget`;
   docs/RELIABILITY.md) before anything is computed. Every problem exits with code 2 and a
   message naming the key.
 

@@ -161,7 +161,7 @@ use Valid::*;
 
 const MASS: Range = Range::closed(1e-4, 1e5);
 const INERTIA: Range = Range::closed(1e-10, 1e5);
-const BORE: Range = Range::above(0.0, 1e4);
+const BORE: Range = Range::closed(0.1, 1e4);
 
 /// Every key, in the order the template prints them.
 pub const KEYS: &[KeySpec] = &[
@@ -186,7 +186,7 @@ pub const KEYS: &[KeySpec] = &[
     k("gear.centre_distance_mm", "mm", Num(Range::closed(0.1, 1e5)), "Operating centre distance; omit for the one the profile shifts give (paper: 50 mm).",
       "Checked against the pair: the tooth tips must reach each other (contact ratio >= 1) without interfering."),
     k("gear.hub_bore_radius_pinion_mm", "mm", NumOrDerived(BORE), "Pinion hub bore radius r_int for the fillet foundation (not in the paper; 8 mm gives h_f = r_f/r_int ~ 2). \"derived\": r_f/2.",
-      "A bore must lie inside the root circle (checked with the geometry); \"derived\" puts h_f = 2, mid-range of Sainsot's fit (1.4-7)."),
+      "At least 0.1 mm (a smaller bore is a solid blank, which Sainsot's ring model does not describe) and inside the root circle (checked with the geometry); \"derived\" puts h_f = 2, inside Sainsot's fit (1.4-7)."),
     k("gear.hub_bore_radius_gear_mm", "mm", NumOrDerived(BORE), "Gear hub bore radius r_int (not in the paper; 14 mm gives h_f ~ 2). \"derived\": r_f/2.",
       "As for the pinion."),
     k("gear.tool_tip_radius_coefficient", "-", Num(Range::closed(0.0, 0.6)), "Rack-cutter tip radius / m: the root fillet, the undercut check and Sainsot's theta_f (ISO 53 profile A: 0.38).",
@@ -303,6 +303,7 @@ mod tests {
         assert!(!o.contains(0.0) && !o.contains(0.5) && o.contains(0.3));
         assert!(!Range::closed(-1.0, f64::INFINITY).contains(f64::INFINITY));
         assert_eq!(Range::above(0.0, 1e4).describe(), "(0, 10000]");
+        assert_eq!(Range::closed(0.1, 1e4).describe(), "[0.1, 10000]");
         assert_eq!(Range::closed(0.0, 1e-11).describe(), "[0, 1e-11]");
         assert_eq!(Range::closed(1e-12, 0.5).describe(), "[1e-12, 0.5]");
     }

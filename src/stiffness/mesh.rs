@@ -14,6 +14,12 @@ use super::potential_energy::{hertz_stiffness_n_per_m, ElasticPair, ToothBeam, T
 use crate::geometry::GearPair;
 use thiserror::Error;
 
+/// Largest ratio of the fillet foundation's compliance to the rest of the pair's (teeth and
+/// Hertz) accepted from an extrapolated fit. Inside Sainsot's range the paper's pair has
+/// ~0.6-0.8; the peer's pair extrapolated to h_f = 11.5 (0.35 times ISO 6336) about 4;
+/// beyond 10 the extrapolated polynomial, not the body, sets the stiffness.
+pub const MAX_EXTRAPOLATED_FOUNDATION_RATIO: f64 = 10.0;
+
 /// Inputs the stiffness model cannot use.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[error("mesh stiffness: {}", .0.join("; "))]
@@ -157,15 +163,39 @@ impl MeshStiffness {
             max_n_per_m: 0.0,
             warnings,
         };
+        // Largest ratio of the foundation's compliance to the rest of the pair's.
+        let mut foundation_ratio = 0.0_f64;
         me.values = (0..n_points)
             .map(|i| {
-                me.compliances_at(pair.rho_start_m + i as f64 * me.step_m)
-                    .stiffness_n_per_m()
+                let c = me.compliances_at(pair.rho_start_m + i as f64 * me.step_m);
+                let fillet = c.pinion_fillet_m_per_n + c.gear_fillet_m_per_n;
+                foundation_ratio = foundation_ratio.max(fillet / (c.total_m_per_n() - fillet));
+                c.stiffness_n_per_m()
             })
             .collect();
-        if let Some(k) = me.values.iter().find(|k| !(k.is_finite() && **k > 0.0)) {
+        let extrapolated = me
+            .fillets
+            .iter()
+            .flatten()
+            .any(FilletFoundation::outside_fit);
+        let bad = me.values.iter().find(|k| !(k.is_finite() && **k > 0.0));
+        if bad.is_some()
+            || (extrapolated && !(foundation_ratio <= MAX_EXTRAPOLATED_FOUNDATION_RATIO))
+        {
             return Err(StiffnessError(vec![format!(
-                "the pair stiffness comes out {k:e} N/m on this geometry (the fillet-foundation fit, extrapolated, gives a non-positive compliance); keep the hub bores inside Sainsot's range or set `stiffness.fillet_foundation` = false"
+                "Sainsot's fillet-foundation fit, extrapolated to this geometry (h_f = {}), gives no usable compliance ({}); keep the hub bores and the tooth form near the fit's range, or set `stiffness.fillet_foundation` = false",
+                me.fillets
+                    .iter()
+                    .flatten()
+                    .map(|f| format!("{:.3}", f.h_f))
+                    .collect::<Vec<_>>()
+                    .join(" / "),
+                match bad {
+                    Some(k) => format!("a pair stiffness of {k:e} N/m"),
+                    None => format!(
+                        "the body would be {foundation_ratio:.3e} times as compliant as tooth and contact together, above {MAX_EXTRAPOLATED_FOUNDATION_RATIO}"
+                    ),
+                }
             )]));
         }
         me.curvature = clamped_spline_curvature(&me.values, me.step_m);
