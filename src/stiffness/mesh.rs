@@ -180,7 +180,9 @@ impl MeshStiffness {
             .any(FilletFoundation::outside_fit);
         let bad = me.values.iter().find(|k| !(k.is_finite() && **k > 0.0));
         if bad.is_some()
-            || (extrapolated && !(foundation_ratio <= MAX_EXTRAPOLATED_FOUNDATION_RATIO))
+            || (extrapolated
+                && (foundation_ratio.is_nan()
+                    || foundation_ratio > MAX_EXTRAPOLATED_FOUNDATION_RATIO))
         {
             return Err(StiffnessError(vec![format!(
                 "Sainsot's fillet-foundation fit, extrapolated to this geometry (h_f = {}), gives no usable compliance ({}); keep the hub bores and the tooth form near the fit's range, or set `stiffness.fillet_foundation` = false",
