@@ -152,3 +152,24 @@ fn the_fillet_junction_convention_stiffens_the_paper_pair_by_a_fifth() {
     let iso = 3.553e8;
     assert!(flank.mean_stiffness_n_per_m() < iso && iso < junction.mean_stiffness_n_per_m());
 }
+
+#[test]
+fn an_extrapolated_fit_may_not_swamp_the_pair() {
+    // The fuzzer's case (7e-15 mm bore) is out of the bore's range now; 0.1 mm on the
+    // pinion (h_f = 165) makes Sainsot's polynomial 2.4e4 times the tooth and contact
+    // compliance: refused even with extrapolation allowed. h_f = 11.5 (ratio ~4) runs.
+    let case = |bore: &str| {
+        load_case(
+            "",
+            &[
+                format!("gear.hub_bore_radius_pinion_mm={bore}"),
+                "stiffness.allow_fillet_extrapolation=true".into(),
+            ],
+        )
+    };
+    assert!(case("7e-15").is_err());
+    let e = Model::from_case(&case("0.1").unwrap()).err().unwrap();
+    assert!(e.0[0].contains("times as compliant"), "{e}");
+    let m = Model::from_case(&case("1.435").unwrap()).unwrap();
+    assert!(m.mesh.min_stiffness_n_per_m() > 0.0);
+}
