@@ -14,6 +14,7 @@ pub mod contact;
 pub mod dynamics;
 pub mod geometry;
 pub mod io;
+pub mod prognostics;
 pub mod report;
 pub mod stiffness;
 pub mod study;

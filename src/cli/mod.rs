@@ -2,10 +2,12 @@
 //! validated case, calls the solvers, hands results to the writers.
 
 mod args;
+mod calibrate_cmd;
 mod config_cmd;
 pub mod dynamics_cmd;
 mod error;
 pub mod output;
+mod predict_cmd;
 mod run_cmd;
 pub mod stiffness_cmd;
 
@@ -29,6 +31,9 @@ pub fn main() -> ExitCode {
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),
         Command::SweepMerge(a) => sweep_cmd::merge(a),
+        Command::Calibrate(a) => calibrate_cmd::run(a),
+        Command::Predict(a) => predict_cmd::run(a),
+        Command::PredictMerge(a) => predict_cmd::merge(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

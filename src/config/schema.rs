@@ -127,6 +127,14 @@ pub const KEYS: &[KeySpec] = &[
     k("numerics.max_mesh_periods", "-", IntAtLeast(2), "Mesh periods after which the search for steady state gives up."),
     k("numerics.steady_state_tolerance", "-", Open(0.0, 1.0), "Steady state: largest change of the state over one mesh period, relative to its scale."),
     k("numerics.evaluated_mesh_periods", "-", IntAtLeast(1), "Mesh periods recorded once steady (signals and spectra)."),
+    k("calibration.wear_coefficient_min_m2_per_n", "m^2/N", Positive, "Lower bound of the log-uniform prior of the wear coefficient k (`gearwear calibrate`/`predict`); omit for the case's k / 100."),
+    k("calibration.wear_coefficient_max_m2_per_n", "m^2/N", Positive, "Upper bound of the log-uniform prior of k; omit for the case's k x 100. Equal bounds hold k fixed."),
+    k("calibration.roughness_scale_min", "-", Positive, "Lower bound of the uniform prior of the factor applied to `surface.roughness_table_rms_um` (1 and 1: not calibrated)."),
+    k("calibration.roughness_scale_max", "-", Positive, "Upper bound of the uniform prior of the roughness factor."),
+    k("calibration.load_torque_min_nm", "N m", Positive, "Lower bound of the uniform prior of `operating.load_torque_nm`; omit (with the max) to hold the case's torque fixed."),
+    k("calibration.load_torque_max_nm", "N m", Positive, "Upper bound of the uniform prior of the load torque."),
+    k("calibration.grid_points", "-", IntAtLeast(16), "Cells per parameter of the exact grid posterior (used with one or two uncertain parameters)."),
+    k("calibration.surrogate_nodes", "-", IntAtLeast(2), "Reference wear runs per uncertain parameter other than k (roughness factor, load torque); the surrogate interpolates linearly between them."),
 ];
 
 /// Look up a key's spec.

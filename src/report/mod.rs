@@ -4,3 +4,4 @@ pub mod comparison;
 pub mod figures;
 pub mod html;
 pub mod plot;
+pub mod prognostics;
