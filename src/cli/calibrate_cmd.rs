@@ -94,6 +94,13 @@ pub(super) fn thetas_json(t: &[Theta]) -> Value {
         .collect::<Vec<_>>())
 }
 
+/// Most reference runs a chain can hold (progress bar length; chains usually stop
+/// earlier).
+pub(super) fn max_chain(p: &Prior) -> u64 {
+    let k = &p.params[0];
+    ((k.hi / k.lo).ln() / crate::prognostics::surrogate::K_NODE_RATIO.ln()).ceil() as u64 + 1
+}
+
 /// The parameters at posterior quantile p of k, the others at their medians.
 fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
     let mut t = [
@@ -192,8 +199,8 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
     pb.finish_and_clear();
     for (t, until, msg) in sur.failures() {
         eprintln!(
-            "warning: the reference run at roughness factor {}, load torque {} N m stopped at a wear exposure k N = {until:.3e} m^2/N ({msg}); parameters that need more count as failed samples",
-            t[1], t[2]
+            "warning: the reference run at k = {:.3e} m^2/N, roughness factor {}, load torque {} N m stopped at a wear exposure k N = {until:.3e} m^2/N ({msg}); parameters that need more count as failed samples",
+            t[0], t[1], t[2]
         );
     }
     let settings = CalibrationSettings {
@@ -285,9 +292,9 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
             "noise_scale_at_posterior_median": s,
         })).collect::<Vec<_>>(),
         "forward_model": {
-            "kind": "surrogate: reference runs read at N k / k_ref cycles (docs/PROGNOSTICS.md)",
-            "reference_k_m2_per_n": sur.reference_k,
-            "reference_runs": sur.nodes.len(),
+            "kind": "surrogate: reference runs read at the same exposure k N, interpolated in ln k (docs/PROGNOSTICS.md)",
+            "reference_k_m2_per_n": sur.chains.iter().map(|c| c.k.clone()).collect::<Vec<_>>(),
+            "reference_runs": sur.runs(),
             "reference_run_failures": sur.failures().iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
         },
         "failed_samples": {

@@ -3,7 +3,7 @@
 //! Thin: reads the inputs, calls `prognostics`, writes what it returns.
 
 use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
-use super::calibrate_cmd::{bands_table, figure, progress, thetas_json};
+use super::calibrate_cmd::{bands_table, figure, max_chain, progress, thetas_json};
 use super::output::{build_model, json_write};
 use super::CliError;
 use crate::config::Case;
@@ -219,8 +219,8 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     let sur = match a.forward {
         ForwardArg::Surrogate => {
             let nodes = case.calibration.surrogate_nodes.max(2) as usize;
-            let n_ref = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
-            let pb = progress(n_ref as u64, "reference runs");
+            let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
+            let pb = progress(chains as u64 * max_chain(&span), "reference runs");
             let s = Surrogate::build(&case, &span, a.cycles, nodes, &|| pb.inc(1))
                 .map_err(|e| CliError::Input(e.0))?;
             pb.finish_and_clear();

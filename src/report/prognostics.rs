@@ -64,19 +64,27 @@ pub fn posterior_figure(cal: &Calibration) -> Figure {
     }
 }
 
-/// A band panel: median, 50 % and 90 % bands as lines (5/25/50/75/95 %).
+/// The outline of a band as one closed line: along the lower edge, back along the upper
+/// (one series, so one colour for both edges).
+fn outline(x: &[f64], lower: &[f64], upper: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let xs = x.iter().chain(x.iter().rev()).copied().collect();
+    let ys = lower.iter().chain(upper.iter().rev()).copied().collect();
+    (xs, ys)
+}
+
+/// A band panel: the median, and the 50 % (25-75 %) and 90 % (5-95 %) bands as outlines.
 pub fn band_panel(q: Quantity, b: &Band, x_scale: f64, x_label: &str) -> Panel {
     let x: Vec<f64> = b.cycles.iter().map(|c| c / x_scale).collect();
     let p = &b.percentiles;
+    let (x50, y50) = outline(&x, &p[1], &p[3]);
+    let (x90, y90) = outline(&x, &p[0], &p[4]);
     Panel {
         x_label: x_label.into(),
         y_label: q.label(),
         series: vec![
             series("median", x.clone(), p[2].clone(), LineStyle::Solid),
-            series("50 % band", x.clone(), p[1].clone(), LineStyle::Dashed),
-            series("", x.clone(), p[3].clone(), LineStyle::Dashed),
-            series("90 % band", x.clone(), p[0].clone(), LineStyle::Dotted),
-            series("", x, p[4].clone(), LineStyle::Dotted),
+            series("50 % band", x50, y50, LineStyle::Dashed),
+            series("90 % band", x90, y90, LineStyle::Dotted),
         ],
         ..Default::default()
     }
