@@ -155,7 +155,7 @@ fn surrogate_check(
                         let sd = model_sd.hypot(sigma);
                         let err = sur.max_error_against(&truth, &theta, s.quantity, &[*c]).unwrap_or(f64::NAN);
                         let ratio = if err == 0.0 { 0.0 } else { err / sd };
-                        if !(ratio <= worst.1) {
+                        if ratio.is_nan() || ratio > worst.1 {
                             worst = (err, ratio);
                         }
                     }

@@ -13,7 +13,7 @@ use crate::prognostics::forward::{run_trajectory, Crossing};
 use crate::prognostics::predict::{
     fans, run_sample, Forward, LifeSummary, PredictSettings, SampleOutcome, SampleSource,
 };
-use crate::prognostics::prior::{apply, ParamPrior, Prior, Theta};
+use crate::prognostics::prior::{apply, Prior, Theta};
 use crate::prognostics::samples::read_samples;
 use crate::prognostics::{Quantity, Surrogate};
 use crate::report::html::{render, Report};
@@ -62,23 +62,6 @@ fn within(c: Crossing, n: f64) -> Crossing {
     match c {
         Crossing::Reached(x) if x > n => Crossing::NotReached,
         c => c,
-    }
-}
-
-/// The prior whose bounds span `rows` (what the surrogate must cover).
-fn span_of(rows: &[Theta]) -> Prior {
-    let p = |i: usize, log| {
-        let lo = rows.iter().map(|t| t[i]).fold(f64::INFINITY, f64::min);
-        let hi = rows.iter().map(|t| t[i]).fold(0.0, f64::max);
-        ParamPrior {
-            parameter: crate::prognostics::prior::PARAMETERS[i],
-            lo,
-            hi,
-            log,
-        }
-    };
-    Prior {
-        params: [p(0, true), p(1, false), p(2, false)],
     }
 }
 
@@ -174,7 +157,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
                 .map_err(|e| CliError::input(format!("--posterior {src}: cannot read: {e}")))?;
             let rows = read_samples(&text, &src, defaults).map_err(CliError::Input)?;
             let n = a.samples.unwrap_or(rows.len());
-            let span = span_of(&rows);
+            let span = Prior::spanning(&rows);
             let id = format!("{:x}", Sha256::digest(text.as_bytes()));
             (
                 SampleSource::Posterior {

@@ -81,7 +81,7 @@ impl GridPosterior {
         loop {
             let pts = centres(&lo, &hi, cells);
             let thetas: Vec<Theta> = pts.iter().map(|u| prior.theta_at(u)).collect();
-            let ll: Vec<Option<f64>> = thetas.par_iter().map(|t| loglik(t)).collect();
+            let ll: Vec<Option<f64>> = thetas.par_iter().map(loglik).collect();
             done();
             let n_failed = ll.iter().filter(|x| x.is_none()).count();
             failed.extend(

@@ -7,6 +7,7 @@
 //!   and is integrated out: int sigma^(-n-1) exp(-S / (2 sigma^2)) d sigma ~ S^(-n/2), so
 //!   log L_q = -(n/2) ln S with S = sum_i (y_i - f_i)^2 (a multivariate Student-t form;
 //!   Gelman et al., Bayesian Data Analysis, 3rd ed., section 3.2). It needs n >= 2.
+//!
 //! Quantities add their log-likelihoods (independent noise).
 
 use super::observations::Observations;

@@ -37,6 +37,9 @@ pub struct McmcRun {
     pub evaluations: usize,
 }
 
+/// A proposal: walker, position, its log density, accepted, failed parameters.
+type Move = (usize, Vec<f64>, f64, bool, Option<Theta>);
+
 /// z from g(z) ~ 1/sqrt(z) on [1/a, a]: z = ((a - 1) u + 1)^2 / a (inverse CDF).
 fn stretch(u: f64) -> f64 {
     ((STRETCH_A - 1.0) * u + 1.0).powi(2) / STRETCH_A
@@ -100,7 +103,7 @@ pub fn ensemble_sample(
             } else {
                 (half..w, 0..half)
             };
-            let moves: Vec<(usize, Vec<f64>, f64, bool, Option<Theta>)> = active
+            let moves: Vec<Move> = active
                 .into_par_iter()
                 .map(|k| {
                     let mut r = rng::stream(s.seed, (t * w + k) as u64);

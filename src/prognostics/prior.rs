@@ -166,6 +166,20 @@ impl Prior {
         })
     }
 
+    /// The prior whose bounds just span `rows` (log-uniform k): the range a surrogate
+    /// must cover to predict from those samples.
+    pub fn spanning(rows: &[Theta]) -> Self {
+        let p = |i: usize, log| ParamPrior {
+            parameter: PARAMETERS[i],
+            lo: rows.iter().map(|t| t[i]).fold(f64::INFINITY, f64::min),
+            hi: rows.iter().map(|t| t[i]).fold(0.0, f64::max),
+            log,
+        };
+        Self {
+            params: [p(0, true), p(1, false), p(2, false)],
+        }
+    }
+
     /// Indices of the parameters that are not fixed.
     pub fn free(&self) -> Vec<usize> {
         (0..3).filter(|i| !self.params[*i].is_fixed()).collect()

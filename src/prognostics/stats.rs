@@ -78,8 +78,8 @@ pub fn autocorrelation_time(chains: &[Vec<f64>]) -> f64 {
         return f64::NAN;
     }
     let mut tau = 1.0;
-    for m in 1..n / 2 {
-        tau += 2.0 * acf[m] / norm;
+    for (m, a) in acf.iter().enumerate().take(n / 2).skip(1) {
+        tau += 2.0 * a / norm;
         if m as f64 >= 5.0 * tau {
             break;
         }
