@@ -6,7 +6,7 @@
 //!
 //! Layers, each depending only on those before it:
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `io` / `report` -> `cli`.
+//! -> `prognostics` -> `io` / `report` -> `cli`.
 
 pub mod cli;
 pub mod config;

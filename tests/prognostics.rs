@@ -8,8 +8,7 @@
 
 use gearwear::config::Case;
 use gearwear::prognostics::calibrate::{calibrate, CalibrationSettings};
-use gearwear::prognostics::forward::{run_trajectory, Crossing, Trajectory};
-use gearwear::prognostics::grid::GridPosterior;
+use gearwear::prognostics::forward::{run_trajectory, Trajectory};
 use gearwear::prognostics::likelihood::log_likelihood;
 use gearwear::prognostics::mcmc::{ensemble_sample, McmcSettings};
 use gearwear::prognostics::observations::{Observations, Series};
@@ -408,6 +407,4 @@ fn results_do_not_depend_on_the_thread_count() {
         mean(&a.samples.iter().map(|t| t[0]).collect::<Vec<_>>()),
         mean(&b.samples.iter().map(|t| t[0]).collect::<Vec<_>>())
     );
-    let _ = Crossing::NotReached;
-    let _ = GridPosterior::compute;
 }

@@ -6,17 +6,15 @@ use super::output::{build_model, json_write};
 use super::CliError;
 use crate::io::{write_atomic, RunMetadata, Table};
 use crate::prognostics::band::Band;
-use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
-use crate::prognostics::forward::run_trajectory;
+use crate::prognostics::calibrate::{calibrate, model_band, CalibrationSettings};
+use crate::prognostics::check::{check_calibration, theta_at_k_quantile, worst_ratio};
 use crate::prognostics::likelihood::noise_scales;
-use crate::prognostics::prior::{apply, Prior, Theta};
-use crate::prognostics::samples::samples_table;
-use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
+use crate::prognostics::prior::{Prior, Theta};
+use crate::prognostics::{parse_observations, Quantity, Surrogate};
 use crate::report::html::{render, FigureBlock, Report};
 use crate::report::plot::{render_png, Figure};
 use crate::report::prognostics::{calibration_section, posterior_figure, predictive_figure};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::io::IsTerminal;
 use std::path::Path;
@@ -25,6 +23,16 @@ use std::path::Path;
 const BAND_POINTS: usize = 101;
 /// Failed parameter sets listed in summary.json (all are counted).
 const LISTED_FAILURES: usize = 100;
+
+/// The posterior samples CSV: `sample` and every parameter (fixed ones included), the
+/// format `prognostics::samples::read_samples` reads.
+fn samples_table(samples: &[Theta]) -> Table {
+    let mut t = Table::new().col("sample", (0..samples.len()).map(|i| i as f64).collect());
+    for (i, p) in crate::prognostics::prior::PARAMETERS.iter().enumerate() {
+        t = t.col(p.column(), samples.iter().map(|s| s[i]).collect());
+    }
+    t
+}
 
 /// A progress bar on stderr, hidden when stderr is not a terminal.
 pub(super) fn progress(len: u64, what: &str) -> ProgressBar {
@@ -99,73 +107,6 @@ pub(super) fn thetas_json(t: &[Theta]) -> Value {
 pub(super) fn max_chain(p: &Prior) -> u64 {
     let k = &p.params[0];
     ((k.hi / k.lo).ln() / crate::prognostics::surrogate::K_NODE_RATIO.ln()).ceil() as u64 + 1
-}
-
-/// The parameters at posterior quantile p of k, the others at their medians.
-fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
-    let mut t = [
-        cal.prior.params[0].lo,
-        cal.prior.params[1].lo,
-        cal.prior.params[2].lo,
-    ];
-    for s in &cal.summary {
-        let i = crate::prognostics::prior::PARAMETERS
-            .iter()
-            .position(|x| *x == s.parameter)
-            .unwrap_or(0);
-        t[i] = match (i, p) {
-            (0, p) if p < 0.5 => s.ci05,
-            (0, p) if p > 0.5 => s.ci95,
-            _ => s.median,
-        };
-    }
-    t
-}
-
-/// True wear runs at the posterior's 5/50/95 % of k against the surrogate, at the
-/// observed cycle counts: largest error and its ratio to the spread of the posterior
-/// predictive distribution of an observation there (model spread over the posterior and
-/// the noise scale `noise`, added in quadrature).
-fn surrogate_check(
-    case: &crate::config::Case,
-    sur: &Surrogate,
-    cal: &Calibration,
-    obs: &Observations,
-    noise: &[(Quantity, bool, f64)],
-    n: usize,
-) -> Value {
-    let ps: Vec<f64> = [0.5, 0.05, 0.95].into_iter().take(n).collect();
-    let rows: Vec<Value> = ps
-        .par_iter()
-        .map(|p| {
-            let theta = theta_at_k_quantile(cal, *p);
-            let truth = match run_trajectory(&apply(case, &theta), None, obs.max_cycles()) {
-                Ok(t) => t,
-                Err(e) => return json!({"posterior_quantile_of_k": p, "error": e.to_string()}),
-            };
-            let per_q: Vec<Value> = obs
-                .series
-                .iter()
-                .map(|s| {
-                    let mut worst = (0.0_f64, 0.0_f64);
-                    for c in &s.cycles {
-                        let members: Vec<Vec<Option<f64>>> = cal.samples.iter().map(|t| vec![sur.value(s.quantity, t, *c)]).collect();
-                        let model_sd = Band::spread(&members, 0);
-                        let sigma = noise.iter().find(|x| x.0 == s.quantity).map_or(0.0, |x| x.2);
-                        let sd = model_sd.hypot(sigma);
-                        let err = sur.max_error_against(&truth, &theta, s.quantity, &[*c]).unwrap_or(f64::NAN);
-                        let ratio = if err == 0.0 { 0.0 } else { err / sd };
-                        if ratio.is_nan() || ratio > worst.1 {
-                            worst = (err, ratio);
-                        }
-                    }
-                    json!({"quantity": s.quantity.name(), "max_abs_error": worst.0, "max_error_over_predictive_sd": worst.1})
-                })
-                .collect();
-            json!({"posterior_quantile_of_k": p, "theta": thetas_json(&[theta])[0], "true_run_failure": truth.failure, "quantities": per_q})
-        })
-        .collect();
-    json!(rows)
 }
 
 pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
@@ -244,22 +185,14 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
         .collect();
     let median_theta = theta_at_k_quantile(&cal, 0.5);
     let noise = noise_scales(&obs, &|q, c| sur.value(q, &median_theta, c));
-    let check = if a.check_runs > 0 {
+    if a.check_runs > 0 {
         eprintln!(
             "calibrate: checking the surrogate against {} true wear run(s)",
             a.check_runs.min(3)
         );
-        surrogate_check(&case, &sur, &cal, &obs, &noise, a.check_runs)
-    } else {
-        Value::Null
-    };
-    let worst = check
-        .as_array()
-        .into_iter()
-        .flatten()
-        .flat_map(|r| r["quantities"].as_array().cloned().unwrap_or_default())
-        .filter_map(|q| q["max_error_over_predictive_sd"].as_f64())
-        .fold(0.0, f64::max);
+    }
+    let check = check_calibration(&case, &sur, &cal, &obs, &noise, a.check_runs);
+    let worst = worst_ratio(&check);
     if worst > 0.1 {
         eprintln!("warning: the surrogate's error reaches {worst:.3} of the posterior predictive spread (target < 0.1); see summary.json surrogate_check");
     }
@@ -324,6 +257,17 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
         ..Default::default()
     };
     write_atomic(&a.out.join("report.html"), render(&report).as_bytes())?;
+    for s in cal
+        .summary
+        .iter()
+        .filter(|s| s.rhat.is_some_and(|r| r > 1.05))
+    {
+        eprintln!(
+            "warning: {}: split R-hat {:.3} > 1.05, the walkers have not mixed: rerun with more --steps",
+            s.parameter.column(),
+            s.rhat.unwrap_or(f64::NAN)
+        );
+    }
     for s in &cal.summary {
         eprintln!(
             "calibrate: {} median {:.4e}, 90 % interval [{:.4e}, {:.4e}]",

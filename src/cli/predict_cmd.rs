@@ -6,14 +6,13 @@ use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
 use super::calibrate_cmd::{bands_table, figure, max_chain, progress, thetas_json};
 use super::output::{build_model, json_write};
 use super::CliError;
-use crate::config::Case;
 use crate::io::{write_atomic, RunMetadata, Table};
-use crate::prognostics::band::cycles_grid;
-use crate::prognostics::forward::{run_trajectory, Crossing};
+use crate::prognostics::check::{check_prediction, PredictionCheck};
+use crate::prognostics::forward::Crossing;
 use crate::prognostics::predict::{
     fans, run_sample, Forward, LifeSummary, PredictSettings, SampleOutcome, SampleSource,
 };
-use crate::prognostics::prior::{apply, Prior, Theta};
+use crate::prognostics::prior::{Prior, Theta};
 use crate::prognostics::samples::read_samples;
 use crate::prognostics::{Quantity, Surrogate};
 use crate::report::html::{render, Report};
@@ -35,17 +34,6 @@ struct Identity {
     case_sha256: String,
 }
 
-/// A true run against the surrogate at one sample.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-struct Check {
-    theta: Theta,
-    life_surrogate: Crossing,
-    life_true: Crossing,
-    /// Largest |surrogate - true| over the fan grid, per fan quantity (None: no overlap).
-    max_abs_error: Vec<(String, Option<f64>)>,
-    true_run_failure: Option<String>,
-}
-
 /// What a shard writes.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 struct ShardFile {
@@ -53,72 +41,9 @@ struct ShardFile {
     shard: (usize, usize),
     /// `RunMetadata` of the run, as JSON.
     metadata: Value,
-    checks: Vec<Check>,
+    checks: Vec<PredictionCheck>,
     reference_failures: Vec<(Theta, f64, String)>,
     outcomes: Vec<SampleOutcome>,
-}
-
-fn within(c: Crossing, n: f64) -> Crossing {
-    match c {
-        Crossing::Reached(x) if x > n => Crossing::NotReached,
-        c => c,
-    }
-}
-
-/// True runs at the samples nearest the 50/5/95 % of the life (or of k if none reaches
-/// the limit) against the surrogate.
-fn checks(
-    case: &Case,
-    sur: &Surrogate,
-    outcomes: &[SampleOutcome],
-    set: &PredictSettings,
-    n: usize,
-) -> Vec<Check> {
-    let mut by: Vec<(f64, Theta)> = outcomes
-        .iter()
-        .filter_map(|o| match o.life {
-            Crossing::Reached(c) => Some((c, o.theta)),
-            _ => None,
-        })
-        .collect();
-    if by.is_empty() {
-        by = outcomes.iter().map(|o| (o.theta[0], o.theta)).collect();
-    }
-    by.sort_by(|a, b| a.0.total_cmp(&b.0));
-    if by.is_empty() {
-        return Vec::new();
-    }
-    let picks: Vec<Theta> = [0.5, 0.05, 0.95]
-        .iter()
-        .take(n)
-        .map(|p| by[((by.len() - 1) as f64 * p).round() as usize].1)
-        .collect();
-    let grid = cycles_grid(set.cycles, set.grid_points);
-    picks
-        .par_iter()
-        .filter_map(|theta| {
-            let truth = run_trajectory(&apply(case, theta), None, set.cycles).ok()?;
-            let errs = crate::prognostics::predict::FAN_QUANTITIES
-                .iter()
-                .map(|q| {
-                    let e = grid
-                        .iter()
-                        .filter_map(|c| {
-                            Some((sur.value(*q, theta, *c)? - truth.value(*q, *c)?).abs())
-                        })
-                        .fold(None, |m: Option<f64>, e| Some(m.map_or(e, |m| m.max(e))));
-                    (q.name().to_string(), e)
-                })
-                .collect();
-            Some(Check {
-                theta: *theta,
-                life_surrogate: within(sur.cycles_to_wear(theta, set.limit_um), set.cycles),
-                life_true: within(truth.cycles_to_wear(set.limit_um), set.cycles),
-                max_abs_error: errs,
-                true_run_failure: truth.failure.clone(),
-            })
-        })
-        .collect()
 }
 
 pub fn run(a: &PredictArgs) -> Result<(), CliError> {
@@ -236,7 +161,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     pb.finish_and_clear();
     let outcomes = outcomes.map_err(|e| CliError::Input(e.0))?;
     let checks = match (&sur, shard.index, a.check_runs) {
-        (Some(s), 1, n) if n > 0 => checks(&case, s, &outcomes, &set, n),
+        (Some(s), 1, n) if n > 0 => check_prediction(&case, s, &outcomes, &set, n),
         _ => Vec::new(),
     };
     let file = ShardFile {
@@ -325,7 +250,7 @@ pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
             &missing[..missing.len().min(10)]
         );
     }
-    let checks: Vec<Check> = files.iter().flat_map(|f| f.1.checks.clone()).collect();
+    let checks: Vec<PredictionCheck> = files.iter().flat_map(|f| f.1.checks.clone()).collect();
     std::fs::create_dir_all(&a.out)?;
     finish(
         &a.out,
@@ -386,11 +311,7 @@ fn finish(out: &Path, f: ShardFile, missing: Vec<usize>) -> Result<(), CliError>
         .checks
         .iter()
         .map(|c| {
-            let (s, t) = (life_of(c.life_surrogate), life_of(c.life_true));
-            let err = match (s, t) {
-                (Some(s), Some(t)) => Some((s - t).abs()),
-                _ => None,
-            };
+            let err = c.life_error();
             json!({
                 "theta": thetas_json(&[c.theta])[0],
                 "life_surrogate": c.life_surrogate,

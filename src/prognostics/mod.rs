@@ -13,6 +13,7 @@
 
 pub mod band;
 pub mod calibrate;
+pub mod check;
 pub mod forward;
 pub mod grid;
 pub mod likelihood;
