@@ -20,27 +20,37 @@ pub struct Band {
 
 impl Band {
     /// Band of `values[m][g]` (member m, grid point g; None: no value, the run failed
-    /// before). With `unknown_is_above`, a missing value counts as larger than every
-    /// known one (true of a wear depth, which never decreases, past a failure that
-    /// happened at a larger depth): percentiles that fall among them are undetermined
-    /// (NaN). Otherwise missing members are left out.
-    pub fn of(cycles: &[f64], values: &[Vec<Option<f64>>], unknown_is_above: bool) -> Self {
+    /// before). With `monotone` (a wear depth, which never decreases), a missing value
+    /// lies between the member's last known value and +inf: each percentile is computed
+    /// with both ends and kept where they agree, else undetermined (NaN). Otherwise
+    /// missing members are left out.
+    pub fn of(cycles: &[f64], values: &[Vec<Option<f64>>], monotone: bool) -> Self {
         let n = values.len();
         let mut percentiles = vec![vec![f64::NAN; cycles.len()]; PERCENTILES.len()];
         let mut valid = vec![0; cycles.len()];
         for g in 0..cycles.len() {
-            let mut v: Vec<f64> = values
+            let known: Vec<f64> = values
                 .iter()
                 .filter_map(|m| m.get(g).copied().flatten())
                 .collect();
-            valid[g] = v.len();
-            if unknown_is_above {
-                v.resize(n, f64::INFINITY);
+            valid[g] = known.len();
+            let (mut lower, mut upper) = (known.clone(), known);
+            if monotone {
+                for m in values
+                    .iter()
+                    .filter(|m| m.get(g).copied().flatten().is_none())
+                {
+                    let last = m[..g.min(m.len())].iter().rev().find_map(|x| *x);
+                    lower.push(last.unwrap_or(f64::NEG_INFINITY));
+                }
+                upper.resize(n, f64::INFINITY);
             }
-            v.sort_by(f64::total_cmp);
+            lower.sort_by(f64::total_cmp);
+            upper.sort_by(f64::total_cmp);
             for (i, p) in PERCENTILES.iter().enumerate() {
-                let q = quantile_sorted(&v, p / 100.0);
-                percentiles[i][g] = if q.is_finite() { q } else { f64::NAN };
+                let a = quantile_sorted(&lower, p / 100.0);
+                let b = quantile_sorted(&upper, p / 100.0);
+                percentiles[i][g] = if a == b && a.is_finite() { a } else { f64::NAN };
             }
         }
         Self {
@@ -75,21 +85,27 @@ mod tests {
     use super::*;
 
     #[test]
-    fn unknown_members_sit_above_for_wear() {
-        // Members 1..=4 and one failed: as a wear, the failed one is above all; the
-        // median of (1, 2, 3, 4, inf) is 3 and the 95 % point is undetermined.
+    fn unknown_members_bound_the_percentiles_of_a_wear() {
+        // At the second grid point, members 1..=4 and one whose run failed after a last
+        // known value of 3.5: its value lies in [3.5, inf). The median of (1, 2, 3, 4, x)
+        // is 3 for every x >= 3.5: determined. The 95 % point is not.
         let vals: Vec<Vec<Option<f64>>> = vec![
-            vec![Some(1.0)],
-            vec![Some(2.0)],
-            vec![Some(3.0)],
-            vec![Some(4.0)],
-            vec![None],
+            vec![Some(0.0), Some(1.0)],
+            vec![Some(0.0), Some(2.0)],
+            vec![Some(0.0), Some(3.0)],
+            vec![Some(0.0), Some(4.0)],
+            vec![Some(3.5), None],
         ];
-        let b = Band::of(&[0.0], &vals, true);
-        assert_eq!(b.percentiles[2][0], 3.0);
-        assert!(b.percentiles[4][0].is_nan());
-        // Left out: the median of (1, 2, 3, 4) is 2.5.
-        let b = Band::of(&[0.0], &vals, false);
-        assert_eq!((b.percentiles[2][0], b.valid[0]), (2.5, 4));
+        let b = Band::of(&[0.0, 1.0], &vals, true);
+        assert_eq!(b.percentiles[2][1], 3.0);
+        assert!(b.percentiles[4][1].is_nan());
+        // A failure at a small depth (0.5 instead of 3.5) leaves the median open too:
+        // x in [0.5, inf) moves it between 2 and 3.
+        let mut early = vals.clone();
+        early[4][0] = Some(0.5);
+        assert!(Band::of(&[0.0, 1.0], &early, true).percentiles[2][1].is_nan());
+        // Left out (not monotone): the median of (1, 2, 3, 4) is 2.5.
+        let b = Band::of(&[0.0, 1.0], &vals, false);
+        assert_eq!((b.percentiles[2][1], b.valid[1]), (2.5, 4));
     }
 }

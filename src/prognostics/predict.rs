@@ -82,6 +82,8 @@ pub struct SampleOutcome {
     pub values: Vec<Vec<Option<f64>>>,
     /// Why the run stopped before the horizon.
     pub failure: Option<String>,
+    /// Cycles up to which the run is known (>= the horizon when it did not fail).
+    pub valid_until: f64,
 }
 
 /// Life within the horizon, or NotReached beyond it.
@@ -100,7 +102,7 @@ pub fn run_sample(
     set: &PredictSettings,
 ) -> Result<SampleOutcome, ModelError> {
     let grid = cycles_grid(set.cycles, set.grid_points);
-    let (life, values, failure) = match fw {
+    let (life, values, failure, valid_until) = match fw {
         Forward::Surrogate(s) => {
             let life = within(s.cycles_to_wear(&theta, set.limit_um), set.cycles);
             let vals = FAN_QUANTITIES
@@ -113,7 +115,7 @@ pub fn run_sample(
                     "the reference run behind this sample failed; the surrogate is known to {until:.0} cycles at this k"
                 )
             });
-            (life, vals, failure)
+            (life, vals, failure, until)
         }
         Forward::Exact(case) => {
             let t: Trajectory = run_trajectory(&apply(case, &theta), None, set.cycles)?;
@@ -122,7 +124,7 @@ pub fn run_sample(
                 .iter()
                 .map(|q| grid.iter().map(|c| t.value(*q, *c)).collect())
                 .collect();
-            (life, vals, t.failure.clone())
+            (life, vals, t.failure.clone(), t.valid_until())
         }
     };
     Ok(SampleOutcome {
@@ -131,6 +133,7 @@ pub fn run_sample(
         life,
         values,
         failure,
+        valid_until,
     })
 }
 
@@ -144,8 +147,9 @@ pub struct LifeSummary {
     pub beyond_horizon: usize,
     /// Samples whose forward run failed before the limit (life unknown).
     pub unknown: usize,
-    /// Percentiles of the cycles to the limit; None: beyond the horizon (or, with
-    /// unknown samples, not determined).
+    /// Percentiles of the cycles to the limit; None: beyond the horizon, or not
+    /// determined (an unknown life lies between its run's last known cycle count and
+    /// +inf; a percentile is kept where both ends give the same value).
     pub p05: Option<f64>,
     pub median: Option<f64>,
     pub p95: Option<f64>,
@@ -176,12 +180,20 @@ impl LifeSummary {
         }
         let n = outcomes.len();
         let finite: Vec<f64> = known.iter().copied().filter(|x| x.is_finite()).collect();
-        // Unknown lives lie beyond the failure, above the known ones at that depth:
-        // with any unknown, only percentiles below all of them are determined; count
-        // them as +inf and report None where a percentile lands among them.
+        let mut lower = known.clone();
+        lower.extend(
+            outcomes
+                .iter()
+                .filter(|o| o.life == Crossing::Unknown)
+                .map(|o| o.valid_until),
+        );
         known.resize(n, f64::INFINITY);
         known.sort_by(f64::total_cmp);
-        let q = |p: f64| Some(quantile_sorted(&known, p)).filter(|x| x.is_finite());
+        lower.sort_by(f64::total_cmp);
+        let q = |p: f64| {
+            let (a, b) = (quantile_sorted(&lower, p), quantile_sorted(&known, p));
+            Some(b).filter(|x| x.is_finite() && *x == a)
+        };
         let n_known = (reached + beyond) as f64;
         Self {
             samples: n,
@@ -220,4 +232,43 @@ pub fn fans(outcomes: &[SampleOutcome], set: &PredictSettings) -> Vec<(Quantity,
             (*q, Band::of(&grid, &v, q.is_wear()))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(life: Crossing, valid_until: f64) -> SampleOutcome {
+        SampleOutcome {
+            index: 0,
+            theta: [1.0, 1.0, 1.0],
+            life,
+            values: vec![],
+            failure: None,
+            valid_until,
+        }
+    }
+
+    #[test]
+    fn unknown_lives_bound_the_percentiles() {
+        // Lives 1..=19 and one unknown whose run stopped at 25 cycles (its life is > 25):
+        // the median (between the 10th and 11th of 20) is 10.5 whatever that life is;
+        // the 95 % point (19.05th) depends on it: undetermined.
+        let mut o: Vec<SampleOutcome> = (1..=19)
+            .map(|i| outcome(Crossing::Reached(i as f64), 100.0))
+            .collect();
+        o.push(outcome(Crossing::Unknown, 25.0));
+        let l = LifeSummary::of(&o);
+        assert_eq!(l.median, Some(10.5));
+        assert_eq!(l.p95, None);
+        assert_eq!((l.reached, l.unknown), (19, 1));
+        // The unknown run stopped at 5 cycles instead: its life in (5, inf) now moves
+        // the median too.
+        o[19].valid_until = 5.0;
+        assert_eq!(LifeSummary::of(&o).median, None);
+        // Beyond the horizon: counted in P(life > N).
+        o[19].life = Crossing::NotReached;
+        let l = LifeSummary::of(&o);
+        assert_eq!((l.prob_beyond_horizon, l.median), (0.05, Some(10.5)));
+    }
 }
