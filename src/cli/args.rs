@@ -40,6 +40,11 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
     }
 }
 
+const DYNAMIC_WEAR: Job = Job::Wear {
+    dynamic: true,
+    quasi_static: false,
+};
+
 impl Cli {
     /// The budget the flags ask for; None without one.
     pub fn budget(&self) -> Option<Budget> {
@@ -50,7 +55,11 @@ impl Cli {
     /// (`study::budget`). Cases that do not load are left to the command's own messages.
     pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
         let (case, job) = match &self.command {
-            Command::Config(_) | Command::SweepMerge(_) => return Ok(()),
+            Command::Config(_) | Command::SweepMerge(_) | Command::PredictMerge(_) => return Ok(()),
+            // Each forward run of an ensemble is a dynamic wear study of the case (at
+            // its sampled parameters); the number of runs is the user's explicit choice.
+            Command::Calibrate(a) => (&a.case, DYNAMIC_WEAR),
+            Command::Predict(a) => (&a.case, DYNAMIC_WEAR),
             Command::Stiffness(a) => (&a.case, Job::Stiffness),
             Command::Dynamics(a) => (&a.case, Job::Dynamics),
             Command::Wear(a) => (
@@ -130,6 +139,13 @@ pub enum Command {
     Sweep(SweepArgs),
     /// Join the tables of sweep shards into one, sorted by case id.
     SweepMerge(SweepMergeArgs),
+    /// Posterior of the wear coefficient (and optionally roughness factor, load torque)
+    /// given observations of a running gearbox.
+    Calibrate(CalibrateArgs),
+    /// Monte Carlo prediction of wear, vibration indicators and remaining life.
+    Predict(PredictArgs),
+    /// Join the shards of a sharded `predict` and write its outputs.
+    PredictMerge(PredictMergeArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -279,6 +295,89 @@ pub struct SweepMergeArgs {
     #[arg(required = true, value_name = "DIR_OR_CSV")]
     pub inputs: Vec<PathBuf>,
     /// Output directory (writes sweep.csv there), or a .csv file path.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct CalibrateArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV), optional
+    /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
+    #[arg(long, value_name = "FILE")]
+    pub observations: PathBuf,
+    /// Output directory.
+    #[arg(long, default_value = "results/calibrate")]
+    pub out: PathBuf,
+    /// Seed of every random draw.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Posterior samples to write.
+    #[arg(long, default_value_t = 2000)]
+    pub samples: usize,
+    /// Walkers of the ensemble sampler (three parameters).
+    #[arg(long, default_value_t = 32)]
+    pub walkers: usize,
+    /// Steps of the ensemble sampler (the first half is burn-in).
+    #[arg(long, default_value_t = 2000)]
+    pub steps: usize,
+    /// True wear runs to check the surrogate against (at the posterior's 5/50/95 %).
+    #[arg(long, default_value_t = 3)]
+    pub check_runs: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ForwardArg {
+    /// Reference runs and the k x N invariance (fast).
+    Surrogate,
+    /// One true wear study per sample (slow; shard it).
+    Exact,
+}
+
+#[derive(Debug, Args)]
+pub struct PredictArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Posterior samples CSV (from `calibrate`); omitted: sample the case's prior.
+    #[arg(long, value_name = "FILE")]
+    pub posterior: Option<PathBuf>,
+    /// Wear limit on the maximum pinion wear depth, um.
+    #[arg(long, value_name = "L")]
+    pub limit_um: f64,
+    /// Horizon, pinion cycles.
+    #[arg(long, value_name = "N")]
+    pub cycles: f64,
+    /// Output directory.
+    #[arg(long, default_value = "results/predict")]
+    pub out: PathBuf,
+    /// Seed of every random draw.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Ensemble size (default: every posterior row, or 2000 prior draws); with a posterior
+    /// of another size its rows are drawn with replacement.
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// Cycle counts of the fan charts, from 0 to N.
+    #[arg(long, default_value_t = 101)]
+    pub grid_points: usize,
+    /// Forward model.
+    #[arg(long, value_enum, default_value = "surrogate")]
+    pub forward: ForwardArg,
+    /// Run only shard I of N (samples with index mod N = I-1); then join with predict-merge.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
+    #[arg(long, default_value_t = 3)]
+    pub check_runs: usize,
+}
+
+#[derive(Debug, Args)]
+pub struct PredictMergeArgs {
+    /// Shard files (predict_shard_I_of_N.json) or directories holding them.
+    #[arg(required = true, value_name = "DIR_OR_JSON")]
+    pub inputs: Vec<PathBuf>,
+    /// Output directory.
     #[arg(long)]
     pub out: PathBuf,
 }

@@ -2,10 +2,12 @@
 //! validated case, calls the solvers, hands results to the writers.
 
 mod args;
+mod calibrate_cmd;
 mod config_cmd;
 mod dynamics_cmd;
 mod error;
 mod output;
+mod predict_cmd;
 mod progress;
 mod resume;
 mod run_cmd;
@@ -38,6 +40,9 @@ pub fn main() -> ExitCode {
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),
         Command::SweepMerge(a) => sweep_merge_cmd::merge(a),
+        Command::Calibrate(a) => calibrate_cmd::run(a),
+        Command::Predict(a) => predict_cmd::run(a),
+        Command::PredictMerge(a) => predict_cmd::merge(a),
     });
     match result {
         Ok(()) => ExitCode::SUCCESS,

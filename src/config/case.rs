@@ -29,6 +29,7 @@ pub struct Case {
     pub friction: FrictionSection,
     pub wear: WearSection,
     pub numerics: NumericsSection,
+    pub calibration: CalibrationSection,
 }
 
 /// Involute spur pair (paper Table 1).
@@ -502,5 +503,46 @@ impl Case {
         c.dynamics.inertia_pinion_kg_m2 = Derivable::Derived;
         c.dynamics.inertia_gear_kg_m2 = Derivable::Derived;
         c
+    }
+}
+
+/// Priors of the uncertain parameters for `gearwear calibrate` / `predict` (issue 12).
+/// A parameter whose bounds are equal is held fixed. Absent optional bounds are derived
+/// from the case (see `prognostics::prior`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CalibrationSection {
+    /// Lower bound of the log-uniform prior of k; absent: the case's k / 100.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wear_coefficient_min_m2_per_n: Option<f64>,
+    /// Upper bound of the log-uniform prior of k; absent: the case's k x 100.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wear_coefficient_max_m2_per_n: Option<f64>,
+    /// Uniform prior of the factor on the roughness table (1, 1: fixed).
+    pub roughness_scale_min: f64,
+    pub roughness_scale_max: f64,
+    /// Uniform prior of the load torque, N m; absent: the case's torque (fixed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_torque_min_nm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_torque_max_nm: Option<f64>,
+    /// Cells per parameter of the exact grid posterior (one or two parameters).
+    pub grid_points: i64,
+    /// Reference runs per uncertain parameter other than k (surrogate nodes).
+    pub surrogate_nodes: i64,
+}
+
+impl Default for CalibrationSection {
+    fn default() -> Self {
+        Self {
+            wear_coefficient_min_m2_per_n: None,
+            wear_coefficient_max_m2_per_n: None,
+            roughness_scale_min: 1.0,
+            roughness_scale_max: 1.0,
+            load_torque_min_nm: None,
+            load_torque_max_nm: None,
+            grid_points: 400,
+            surrogate_nodes: 5,
+        }
     }
 }

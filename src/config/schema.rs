@@ -285,6 +285,22 @@ pub const KEYS: &[KeySpec] = &[
       "Below ~1e-12 the change between periods is round-off and may never settle; above 0.5 nothing is periodic."),
     k("numerics.evaluated_mesh_periods", "-", Int(1, 100_000), "Mesh periods recorded once steady (signals and spectra).",
       "At least one period; the memory of more is checked by the run budget."),
+    k("calibration.wear_coefficient_min_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Lower bound of the log-uniform prior of the wear coefficient k (`gearwear calibrate`/`predict`); omit for the case's k / 100.",
+      "Inside the wear coefficient's own range (up to 1e-11); 1e-22 is far below any measured gear wear coefficient."),
+    k("calibration.wear_coefficient_max_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Upper bound of the log-uniform prior of k; omit for the case's k x 100. Equal bounds hold k fixed.",
+      "As for the lower bound."),
+    k("calibration.roughness_scale_min", "-", Num(Range::closed(0.01, 10.0)), "Lower bound of the uniform prior of the factor applied to `surface.roughness_table_rms_um` (1 and 1: not calibrated).",
+      "A factor of 100 either way covers any ground or hobbed finish from the table's values."),
+    k("calibration.roughness_scale_max", "-", Num(Range::closed(0.01, 10.0)), "Upper bound of the uniform prior of the roughness factor.",
+      "As for the lower bound."),
+    k("calibration.load_torque_min_nm", "N m", Num(Range::closed(1e-3, 1e7)), "Lower bound of the uniform prior of `operating.load_torque_nm`; omit (with the max) to hold the case's torque fixed.",
+      "As for `operating.load_torque_nm`."),
+    k("calibration.load_torque_max_nm", "N m", Num(Range::closed(1e-3, 1e7)), "Upper bound of the uniform prior of the load torque.",
+      "As for `operating.load_torque_nm`."),
+    k("calibration.grid_points", "-", Int(16, 10_000), "Cells per parameter of the exact grid posterior (used with one or two uncertain parameters).",
+      "16 cells resolve a smooth posterior; the surrogate makes cells cheap, but 1e4 per parameter (1e8 for two) is beyond any use."),
+    k("calibration.surrogate_nodes", "-", Int(2, 50), "Reference wear runs per uncertain parameter other than k (roughness factor, load torque); the surrogate interpolates linearly between them.",
+      "Linear interpolation needs two; each node is a whole wear study, and 50 resolve any smooth response."),
 ];
 
 /// Look up a key's spec.

@@ -9,6 +9,7 @@ pub mod html;
 pub mod modes;
 pub mod paper;
 pub mod plot;
+pub mod prognostics;
 pub mod stiffness;
 pub mod sweep_figure;
 pub mod wear;
