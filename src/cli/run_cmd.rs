@@ -5,12 +5,11 @@ use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
 use super::resume::starting_runs;
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_bytes, checkpoint_name};
+use crate::io::checkpoint::CheckpointWriter;
 use crate::io::RunMetadata;
 use crate::report::paper::run_artifacts;
 use crate::study::paper::run_paper_study;
 use crate::study::wear_loop::{WearMode, WearRun};
-use std::sync::Mutex;
 
 pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
@@ -25,12 +24,9 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     );
     let bars_group = multi();
     let bars = modes.map(|m| wear_bar(&bars_group, case.wear.total_cycles, m));
-    let out = Mutex::new(out);
+    let writer = CheckpointWriter::new(out, &meta.case_sha256);
     let ckpt = |mode: WearMode, run: &WearRun| -> anyhow::Result<()> {
-        let bytes = checkpoint_bytes(&meta.case_sha256, run);
-        out.lock()
-            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
-            .write_state(&checkpoint_name(mode), &bytes)?;
+        writer.write(mode, run)?;
         show_wear(&bars[usize::from(mode == WearMode::QuasiStatic)], run);
         Ok(())
     };
@@ -38,8 +34,6 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     for b in &bars {
         b.finish_and_clear();
     }
-    let out = out
-        .into_inner()
-        .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
+    let out = writer.into_inner()?;
     finish(out, run_artifacts(&model, &study, &meta), &meta)
 }

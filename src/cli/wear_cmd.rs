@@ -6,11 +6,10 @@ use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
 use super::resume::starting_runs;
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_bytes, checkpoint_name};
+use crate::io::checkpoint::CheckpointWriter;
 use crate::io::RunMetadata;
 use crate::report::wear::wear_artifacts;
 use crate::study::wear_loop::{run_wear_modes, WearMode, WearRun};
-use std::sync::Mutex;
 
 pub fn run(a: &WearArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
@@ -28,12 +27,9 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
         .iter()
         .map(|m| (*m, wear_bar(&bars_group, case.wear.total_cycles, *m)))
         .collect();
-    let out = Mutex::new(out);
+    let ckpt = CheckpointWriter::new(out, &meta.case_sha256);
     let runs = run_wear_modes(&model, starts, &|mode, run: &WearRun| {
-        let bytes = checkpoint_bytes(&meta.case_sha256, run);
-        out.lock()
-            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
-            .write_state(&checkpoint_name(mode), &bytes)?;
+        ckpt.write(mode, run)?;
         if let Some((_, pb)) = bars.iter().find(|(m, _)| *m == mode) {
             show_wear(pb, run);
         }
@@ -42,9 +38,7 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
     for (_, pb) in &bars {
         pb.finish_and_clear();
     }
-    let out = out
-        .into_inner()
-        .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
+    let out = ckpt.into_inner()?;
     let refs: Vec<&WearRun> = runs.iter().collect();
     finish(out, wear_artifacts(&model, &refs), &meta)
 }

@@ -1,9 +1,11 @@
 //! Checkpoints of wear runs: the case they belong to and every update so far, so an
 //! interrupted study resumes where it stopped and reaches the same numbers.
 
+use super::OutputDir;
 use crate::study::wear_loop::{WearMode, WearRun};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
+use std::sync::Mutex;
 
 /// What a checkpoint file holds.
 #[derive(Serialize, Deserialize)]
@@ -32,6 +34,40 @@ pub fn checkpoint_bytes(case_sha256: &str, run: &WearRun) -> Vec<u8> {
         run: run.clone(),
     };
     serde_json::to_vec(&c).unwrap_or_default()
+}
+
+/// Writes each wear run's checkpoint into an output set after every update, for runs going
+/// on in parallel (the wear commands and the Python binding share it).
+pub struct CheckpointWriter {
+    out: Mutex<OutputDir>,
+    case_sha256: String,
+}
+
+impl CheckpointWriter {
+    pub fn new(out: OutputDir, case_sha256: &str) -> Self {
+        Self {
+            out: Mutex::new(out),
+            case_sha256: case_sha256.to_owned(),
+        }
+    }
+
+    /// Write the checkpoint of `run` (a state file of the set). A failed write is an
+    /// `OutputError` inside the returned error, so callers can tell it from a solver error.
+    pub fn write(&self, mode: WearMode, run: &WearRun) -> anyhow::Result<()> {
+        let bytes = checkpoint_bytes(&self.case_sha256, run);
+        self.out
+            .lock()
+            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
+            .write_state(&checkpoint_name(mode), &bytes)?;
+        Ok(())
+    }
+
+    /// The output set back, to publish the results into.
+    pub fn into_inner(self) -> anyhow::Result<OutputDir> {
+        self.out
+            .into_inner()
+            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))
+    }
 }
 
 fn short(s: &str) -> String {

@@ -12,4 +12,4 @@ pub mod stiffness;
 pub mod sweep;
 pub mod wear;
 
-pub use artifacts::{write_artifacts, Artifacts};
+pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};
