@@ -8,7 +8,7 @@
 use super::CliError;
 use crate::config::Case;
 use crate::io::{OutputDir, RunMetadata};
-use crate::report::{write_artifacts, Artifacts};
+use crate::report::{publish_artifacts, Artifacts};
 use crate::study::Model;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -43,13 +43,9 @@ pub fn open_out(out: &Path, command: &str) -> Result<OutputDir, CliError> {
 
 /// Stamp the metadata on the summary, stage everything, publish the set, print the
 /// headline (stdout) and where the files went (stderr).
-pub fn finish(mut out: OutputDir, mut a: Artifacts, meta: &RunMetadata) -> Result<(), CliError> {
-    if a.summary.get("metadata").is_none() {
-        a.summary["metadata"] = serde_json::to_value(meta).map_err(anyhow::Error::from)?;
-    }
-    write_artifacts(&mut out, &a)?;
-    let root = out.root().to_path_buf();
-    out.publish()?;
+pub fn finish(out: OutputDir, mut a: Artifacts, meta: &RunMetadata) -> Result<(), CliError> {
+    a.stamp_metadata(meta).map_err(anyhow::Error::from)?;
+    let root = publish_artifacts(out, &a)?;
     say(&a.headline);
     eprintln!("{}: results -> {}", meta.command, root.display());
     Ok(())

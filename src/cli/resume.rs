@@ -3,13 +3,13 @@
 //! after every update.
 
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_name, load_checkpoint, CheckpointLog, LoadedCheckpoint};
+use crate::io::checkpoint::{checkpoint_name, load_checkpoint, LoadedCheckpoint};
+use crate::io::checkpoint_set::CheckpointSet;
 use crate::io::OutputDir;
 use crate::study::wear_check::check_wear_run;
 use crate::study::wear_loop::{WearMode, WearRun};
 use crate::study::Model;
 use std::path::Path;
-use std::sync::Mutex;
 
 /// The start of one mode's run.
 pub struct Start {
@@ -73,37 +73,12 @@ pub fn starting_runs(
     Ok(starts)
 }
 
-/// The checkpoint logs of a command's runs, one per mode.
-pub struct Checkpoints {
-    logs: Vec<(WearMode, Mutex<CheckpointLog>)>,
-}
-
-impl Checkpoints {
-    /// Open (resumed) or start (fresh) the checkpoint of every start in `out`.
-    pub fn open(
-        out: &mut OutputDir,
-        starts: &[Start],
-        case_sha256: &str,
-    ) -> Result<Self, CliError> {
-        let mut logs = Vec::new();
-        for s in starts {
-            let path = out.state_path(&checkpoint_name(s.run.mode))?;
-            let log = match &s.loaded {
-                Some(l) => CheckpointLog::resume(&path, l)?,
-                None => CheckpointLog::create(&path, case_sha256, &s.run)?,
-            };
-            logs.push((s.run.mode, Mutex::new(log)));
-        }
-        Ok(Self { logs })
-    }
-
-    /// Append the new updates of `run`.
-    pub fn record(&self, run: &WearRun) -> anyhow::Result<()> {
-        if let Some((_, log)) = self.logs.iter().find(|(m, _)| *m == run.mode) {
-            log.lock()
-                .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
-                .append_new(run)?;
-        }
-        Ok(())
-    }
+/// The checkpoint logs of the runs that start at `starts`, in `out`.
+pub fn open_checkpoints(
+    out: &mut OutputDir,
+    starts: &[Start],
+    case_sha256: &str,
+) -> Result<CheckpointSet, CliError> {
+    let runs: Vec<_> = starts.iter().map(|s| (&s.run, s.loaded.as_ref())).collect();
+    Ok(CheckpointSet::open(out, &runs, case_sha256)?)
 }

@@ -3,7 +3,7 @@
 use super::args::RunArgs;
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
-use super::resume::{starting_runs, Checkpoints};
+use super::resume::{open_checkpoints, starting_runs};
 use super::stops::report_stops;
 use super::CliError;
 use crate::io::RunMetadata;
@@ -18,7 +18,7 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let modes = [WearMode::Dynamic, WearMode::QuasiStatic];
     let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
     let mut out = open_out(&a.out, "run")?;
-    let checkpoints = Checkpoints::open(&mut out, &starts, &meta.case_sha256)?;
+    let checkpoints = open_checkpoints(&mut out, &starts, &meta.case_sha256)?;
     let mut runs = starts.into_iter().map(|s| s.run);
     let (d0, q0) = (
         runs.next().unwrap_or(WearRun::new(WearMode::Dynamic)),

@@ -4,7 +4,7 @@
 use super::args::{WearArgs, WearModeArg};
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
-use super::resume::{starting_runs, Checkpoints};
+use super::resume::{open_checkpoints, starting_runs};
 use super::stops::report_stops;
 use super::CliError;
 use crate::io::RunMetadata;
@@ -22,7 +22,7 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
     };
     let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
     let mut out = open_out(&a.out, "wear")?;
-    let checkpoints = Checkpoints::open(&mut out, &starts, &meta.case_sha256)?;
+    let checkpoints = open_checkpoints(&mut out, &starts, &meta.case_sha256)?;
     let bars_group = multi();
     let bars: Vec<_> = modes
         .iter()

@@ -3,6 +3,7 @@
 
 pub mod atomic;
 pub mod checkpoint;
+pub mod checkpoint_set;
 pub mod error;
 pub mod lock;
 pub mod metadata;

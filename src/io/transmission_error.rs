@@ -69,6 +69,20 @@ pub fn transmission_error_from_samples(
     Ok(ExternalError::new(samples, mesh_angle_rad))
 }
 
+/// As [`transmission_error_from_samples`], from samples in the file's units: (pinion
+/// angle deg, error um).
+pub fn transmission_error_from_deg_um(
+    samples_deg_um: &[(f64, f64)],
+    mesh_angle_rad: f64,
+    source_name: &str,
+) -> Result<ExternalError, TransmissionErrorInput> {
+    let si: Vec<(f64, f64)> = samples_deg_um
+        .iter()
+        .map(|(deg, um)| (deg.to_radians(), um * 1e-6))
+        .collect();
+    transmission_error_from_samples(&si, mesh_angle_rad, source_name)
+}
+
 /// Read a transmission-error CSV file (see the module docs).
 pub fn read_transmission_error(
     path: &Path,
@@ -98,9 +112,9 @@ pub fn read_transmission_error(
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| bad(format!("row {}: `{s}` is not a finite number", line + 2)))
         };
-        samples.push((parse(ia)?.to_radians(), parse(ie)? * 1e-6));
+        samples.push((parse(ia)?, parse(ie)?));
     }
-    transmission_error_from_samples(&samples, mesh_angle_rad, &name)
+    transmission_error_from_deg_um(&samples, mesh_angle_rad, &name)
 }
 
 #[cfg(test)]

@@ -4,8 +4,9 @@
 //! Python binding share; written by [`write_artifacts`] into an output set.
 
 use super::plot::{render_png, Figure, PlotError};
-use crate::io::{OutputDir, OutputError, Table};
+use crate::io::{OutputDir, OutputError, RunMetadata, Table};
 use rayon::prelude::*;
+use std::path::PathBuf;
 
 /// Default plot size, px.
 pub const PLOT_W: u32 = 900;
@@ -57,6 +58,16 @@ impl Artifacts {
     pub fn table_at(&self, path: &str) -> Option<&Table> {
         self.tables.iter().find(|(p, _)| p == path).map(|(_, t)| t)
     }
+
+    /// Stamp the run's metadata on the summary as `metadata` (unless the builder already
+    /// did, as `run` does for its report footer). The command line and the Python binding
+    /// both call this, so they hand out the same summary.
+    pub fn stamp_metadata(&mut self, meta: &RunMetadata) -> Result<(), serde_json::Error> {
+        if self.summary.get("metadata").is_none() {
+            self.summary["metadata"] = serde_json::to_value(meta)?;
+        }
+        Ok(())
+    }
 }
 
 /// Why artifacts could not be written.
@@ -103,6 +114,14 @@ pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteEr
         out.stage(path, bytes)?;
     }
     Ok(())
+}
+
+/// Stage every artifact into `out` and publish the set; returns the folder.
+pub fn publish_artifacts(mut out: OutputDir, a: &Artifacts) -> Result<PathBuf, WriteError> {
+    write_artifacts(&mut out, a)?;
+    let root = out.root().to_path_buf();
+    out.publish()?;
+    Ok(root)
 }
 
 /// Render and stage figures into `out`.

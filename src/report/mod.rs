@@ -14,4 +14,4 @@ pub mod stiffness;
 pub mod sweep_figure;
 pub mod wear;
 
-pub use artifacts::{write_artifacts, Artifacts};
+pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

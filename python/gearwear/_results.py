@@ -1,0 +1,469 @@
+"""Result objects of the studies: the summary (a dict, the keys and numbers of the
+command line's summary.json), the tables (the CSV files the command line writes, as
+numpy columns with their units in the names) and named views of their columns.
+
+Nothing here computes: every number comes from the Rust library; the views only pick
+and stack columns.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
+
+import numpy as np
+
+from . import _gearwear
+
+__all__ = [
+    "Table",
+    "StiffnessResult",
+    "DynamicsResult",
+    "WearRunResult",
+    "WearResult",
+    "RunResult",
+    "SweepResult",
+]
+
+#: The 8 generalised coordinates of the dynamic model, in the column order of
+#: ``displacement``, ``velocity``, ``acceleration`` and ``mode_shapes``, and their SI units.
+COORDINATES: Tuple[str, ...] = tuple(_gearwear.COORDINATES)
+COORDINATE_UNITS: Tuple[str, ...] = tuple(_gearwear.COORDINATE_UNITS)
+
+
+def _pandas():
+    try:
+        import pandas
+    except ImportError as e:  # pandas is optional
+        raise ImportError(
+            "to_pandas() needs pandas, which gearwear does not install: "
+            "pip install pandas (or pip install './python[pandas]')"
+        ) from e
+    return pandas
+
+
+class Table(Mapping[str, np.ndarray]):
+    """A table of named float64 columns, units in the names (``time_s``,
+    ``mesh_force_n``): the CSV file of the same name that the command line writes.
+
+    A read-only mapping ``{column: 1-D array}``; ``to_numpy()`` stacks the columns,
+    ``to_pandas()`` makes a DataFrame (pandas optional).
+    """
+
+    def __init__(self, name: str, columns: Sequence[str], data: np.ndarray, lengths: Sequence[int]):
+        #: The table's name (its CSV file name without ``.csv``).
+        self.name = name
+        # Column i is data[i, :lengths[i]] (the rest NaN padding).
+        self._index = {c: i for i, c in enumerate(columns)}
+        self._data = data
+        self._lengths = list(lengths)
+        data.flags.writeable = False
+
+    @classmethod
+    def from_columns(cls, name: str, columns: Mapping[str, np.ndarray]) -> "Table":
+        """A table of the given 1-D columns (copied)."""
+        cols = {c: np.asarray(a, dtype=np.float64) for c, a in columns.items()}
+        n = max((len(a) for a in cols.values()), default=0)
+        data = np.full((len(cols), n), np.nan)
+        for i, a in enumerate(cols.values()):
+            data[i, : len(a)] = a
+        return cls(name, list(cols), data, [len(a) for a in cols.values()])
+
+    @property
+    def columns(self) -> List[str]:
+        """Column names, in file order."""
+        return list(self._index)
+
+    @property
+    def n_rows(self) -> int:
+        """Number of rows (the longest column; the CSV leaves shorter ones empty)."""
+        return self._data.shape[1]
+
+    def __getitem__(self, column: str) -> np.ndarray:
+        try:
+            i = self._index[column]
+        except KeyError:
+            raise KeyError(
+                f"table {self.name!r} has no column {column!r}; columns: {', '.join(self._index)}"
+            ) from None
+        return self._data[i, : self._lengths[i]]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._index)
+
+    def __len__(self) -> int:
+        return len(self._index)
+
+    def to_numpy(self) -> np.ndarray:
+        """The columns side by side: shape (n_rows, n_columns), NaN where a column is
+        shorter."""
+        return self._data.T.copy()
+
+    def to_pandas(self) -> Any:
+        """A ``pandas.DataFrame`` of the table (needs pandas)."""
+        return _pandas().DataFrame(self._data.T.copy(), columns=self.columns)
+
+    def __repr__(self) -> str:
+        return f"<gearwear.Table {self.name!r}: {self.n_rows} rows x {len(self)} columns>"
+
+
+class _Result:
+    """What every study returns: ``summary``, ``tables``, ``headline``."""
+
+    def __init__(self, summary: Dict[str, Any], tables: Dict[str, Tuple[List[str], np.ndarray, List[int]]], headline: str):
+        #: The summary: the keys and numbers of the command's summary.json (display units
+        #: in the key names), with ``metadata`` (program, version, command, the resolved
+        #: case and its SHA-256).
+        self.summary: Dict[str, Any] = summary
+        #: The tables by name (the CSV file names without ``.csv``).
+        self.tables: Dict[str, Table] = {n: Table(n, *t) for n, t in tables.items()}
+        #: The lines the command line prints as its result.
+        self.headline: str = headline
+
+    def to_pandas(self, table: Optional[str] = None) -> Any:
+        """One table as a ``pandas.DataFrame``, or with no name, a dict of all of them
+        (needs pandas)."""
+        if table is None:
+            return {n: t.to_pandas() for n, t in self.tables.items()}
+        if table not in self.tables:
+            raise KeyError(f"no table {table!r}; tables: {', '.join(self.tables)}")
+        return self.tables[table].to_pandas()
+
+    @property
+    def warnings(self) -> List[str]:
+        """The model's warnings (undercut, formulas used outside their fitted range)."""
+        return list(self.summary.get("warnings", []))
+
+    def __repr__(self) -> str:
+        return f"<gearwear.{type(self).__name__}: {self.headline}>"
+
+
+def _stack(table: Table, names: Sequence[str]) -> np.ndarray:
+    return np.column_stack([table[n] for n in names])
+
+
+class StiffnessResult(_Result):
+    """Mesh stiffness over one mesh period (potential energy method), load sharing, the
+    quasi-static transmission error, the ISO 6336-1 cross-check and the pair's geometry:
+    what ``gearwear stiffness`` writes. Table: ``mesh_stiffness`` (720 samples over one
+    mesh period)."""
+
+    @property
+    def table(self) -> Table:
+        """The ``mesh_stiffness`` table."""
+        return self.tables["mesh_stiffness"]
+
+    @property
+    def pinion_angle_deg(self) -> np.ndarray:
+        """Pinion rotation within one mesh period (0 .. 360/z1), deg; shape (n,)."""
+        return self.table["pinion_angle_deg"]
+
+    @property
+    def stiffness_total_n_per_m(self) -> np.ndarray:
+        """Total mesh stiffness k_m, N/m; shape (n,)."""
+        return self.table["stiffness_total_n_per_m"]
+
+    @property
+    def stiffness_pair_n_per_m(self) -> np.ndarray:
+        """Stiffness of each of the (up to) two pairs in contact, N/m, NaN where a pair is
+        out of contact; shape (n, 2)."""
+        return _stack(self.table, ["stiffness_pair0_n_per_m", "stiffness_pair1_n_per_m"])
+
+    @property
+    def quasi_static_te_um(self) -> np.ndarray:
+        """Quasi-static transmission error under the case's load, um; shape (n,)."""
+        return self.table["quasi_static_te_um"]
+
+
+class DynamicsResult(_Result):
+    """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth): what
+    ``gearwear dynamics`` writes. Tables: ``timeseries`` (the recorded mesh periods),
+    ``path`` (contacts along the path of contact over one mesh period), ``modes`` (poles
+    of the damped linearised model: frequencies, damping ratios, mesh energy shares,
+    complex shapes), ``modes_undamped`` (natural frequencies and mass-normalised shapes)
+    and ``spectrum`` (of dy_p/dt)."""
+
+    def _ts(self, column: str) -> np.ndarray:
+        return self.tables["timeseries"][column]
+
+    @property
+    def time_s(self) -> np.ndarray:
+        """Time, s; shape (n,)."""
+        return self._ts("time_s")
+
+    @property
+    def mesh_phase_rad(self) -> np.ndarray:
+        """Mesh phase (pinion rotation reduced to one mesh period), rad; shape (n,)."""
+        return self._ts("mesh_phase_rad")
+
+    @property
+    def dte_um(self) -> np.ndarray:
+        """Dynamic transmission error (relative displacement along the line of action),
+        um; shape (n,). Its maximum is ``summary["dte"]["max_um"]``."""
+        return self._ts("dte_um")
+
+    @property
+    def mesh_force_n(self) -> np.ndarray:
+        """Mesh force, N; shape (n,)."""
+        return self._ts("mesh_force_n")
+
+    @property
+    def mesh_stiffness_n_per_m(self) -> np.ndarray:
+        """Mesh stiffness along the response, N/m; shape (n,)."""
+        return self._ts("mesh_stiffness_n_per_m")
+
+    def _coords(self, prefix: str, suffix: str) -> np.ndarray:
+        names = [f"{prefix}{c}_{u}{suffix}" for c, u in zip(COORDINATES, COORDINATE_UNITS)]
+        return _stack(self.tables["timeseries"], names)
+
+    @property
+    def displacement(self) -> np.ndarray:
+        """Generalised displacements q, shape (n, 8), SI units: x, y of pinion and gear
+        in m, then the rotations of motor, pinion, gear and brake in rad (``COORDINATES``,
+        ``COORDINATE_UNITS``)."""
+        return self._coords("", "")
+
+    @property
+    def velocity(self) -> np.ndarray:
+        """Generalised velocities dq/dt, shape (n, 8): m/s and rad/s (order as
+        ``displacement``)."""
+        return self._coords("d", "_per_s")
+
+    @property
+    def acceleration(self) -> np.ndarray:
+        """Generalised accelerations, shape (n, 8): m/s^2 and rad/s^2."""
+        return self._coords("dd", "_per_s2")
+
+    @property
+    def friction_coefficient(self) -> np.ndarray:
+        """Friction coefficient of pair 0 (the one that entered contact last) and pair 1,
+        0 out of contact; shape (n, 2)."""
+        return _stack(
+            self.tables["timeseries"], ["friction_coefficient_pair0", "friction_coefficient_pair1"]
+        )
+
+    @property
+    def friction_force_n(self) -> np.ndarray:
+        """Signed friction force of pairs 0 and 1, N; shape (n, 2)."""
+        return _stack(self.tables["timeseries"], ["friction_force_pair0_n", "friction_force_pair1_n"])
+
+    @property
+    def pair_load_n(self) -> np.ndarray:
+        """Normal load of pairs 0 and 1, N; shape (n, 2)."""
+        return _stack(self.tables["timeseries"], ["load_pair0_n", "load_pair1_n"])
+
+    @property
+    def spectrum_frequency_hz(self) -> Optional[np.ndarray]:
+        """Frequencies of the dy_p/dt spectrum, Hz; shape (m,) (None without a y
+        velocity)."""
+        t = self.tables.get("spectrum")
+        return None if t is None else t["frequency_hz"]
+
+    @property
+    def spectrum_velocity_y_pinion_mm_per_s(self) -> Optional[np.ndarray]:
+        """Amplitude spectrum of dy_p/dt, mm/s; shape (m,)."""
+        t = self.tables.get("spectrum")
+        return None if t is None else t["velocity_y_pinion_amplitude_mm_per_s"]
+
+    @property
+    def natural_frequencies_hz(self) -> np.ndarray:
+        """Undamped natural frequencies of the model linearised at the mean mesh
+        stiffness, ascending, Hz; shape (k,) (k = 8 less the coordinates an imposed speed
+        removes). With the case's damping most of these modes are overdamped: see
+        ``damped_frequency_hz`` and ``mesh_pole``."""
+        return self.tables["modes_undamped"]["undamped_frequency_hz"]
+
+    @property
+    def mode_shapes(self) -> np.ndarray:
+        """Mass-normalised undamped mode shapes, one row per natural frequency, columns
+        as ``COORDINATES`` (0 on an imposed coordinate); shape (k, 8)."""
+        return _stack(self.tables["modes_undamped"], [f"shape_{c}" for c in COORDINATES])
+
+    @property
+    def damped_frequency_hz(self) -> np.ndarray:
+        """Damped frequency |Im lambda| / 2 pi of each pole of the damped linearised
+        model (one per conjugate pair; 0 for a real, overdamped pole), Hz; shape (p,)."""
+        return self.tables["modes"]["damped_frequency_hz"]
+
+    @property
+    def damping_ratio(self) -> np.ndarray:
+        """Damping ratio -Re lambda / |lambda| of each pole, dimensionless; shape (p,)."""
+        return self.tables["modes"]["damping_ratio"]
+
+    @property
+    def mesh_pole(self) -> np.ndarray:
+        """Whether each pole is a mesh pole (oscillatory, with most of its strain energy
+        in the mesh: where the response peaks when a mesh harmonic meets it); booleans as
+        1.0 / 0.0, shape (p,)."""
+        return self.tables["modes"]["mesh_pole"]
+
+
+class WearRunResult:
+    """One wear run (dynamic or quasi-static): a row per update in ``updates``, the
+    profiles of every update in ``profiles``, and views of them."""
+
+    def __init__(self, mode: str, updates: Table, profiles: Table):
+        #: ``"dynamic"`` or ``"quasi_static"``.
+        self.mode = mode
+        #: One row per update: cycles, maximum wear depths (um), wear rate (um per 1000
+        #: cycles), roughness (um), mesh force (N), DTE (um), dy_p/dt RMS and harmonics
+        #: (mm/s), friction coefficient.
+        self.updates = updates
+        #: Per profile point: rho1 and radii (mm), then per update i the pinion and gear
+        #: wear depth (``wear_pinion_um_u{i}``, um) and pinion wear rate (um/kcycle).
+        self.profiles = profiles
+
+    @property
+    def cycles(self) -> np.ndarray:
+        """Pinion load cycles at each update (0 first); shape (u,)."""
+        return self.updates["cycles"]
+
+    @property
+    def max_wear_pinion_um(self) -> np.ndarray:
+        """Largest pinion wear depth at each update, um; shape (u,) (the paper's
+        Fig. 13)."""
+        return self.updates["max_wear_pinion_um"]
+
+    @property
+    def max_wear_gear_um(self) -> np.ndarray:
+        """Largest gear wear depth at each update, um; shape (u,)."""
+        return self.updates["max_wear_gear_um"]
+
+    @property
+    def rho1_mm(self) -> np.ndarray:
+        """Profile points as pinion roll distance along the line of action, mm; shape
+        (p,)."""
+        return self.profiles["rho1_mm"]
+
+    def _per_update(self, stem: str) -> np.ndarray:
+        n = len(self.cycles)
+        return np.vstack([self.profiles[f"{stem}_u{i}"] for i in range(n)])
+
+    @property
+    def wear_pinion_um(self) -> np.ndarray:
+        """Pinion wear depth profile at each update, um; shape (u, p)."""
+        return self._per_update("wear_pinion_um")
+
+    @property
+    def wear_gear_um(self) -> np.ndarray:
+        """Gear wear depth at the same profile points (the gear point meeting each pinion
+        point), um; shape (u, p)."""
+        return self._per_update("wear_gear_um")
+
+    @property
+    def wear_rate_pinion_um_per_kcycle(self) -> np.ndarray:
+        """Pinion wear per 1000 cycles of the state at each update, um; shape (u, p)."""
+        return self._per_update("rate_pinion_um_per_kcycle")
+
+    def __repr__(self) -> str:
+        return f"<gearwear.WearRunResult {self.mode}: {len(self.cycles)} records>"
+
+
+class WearResult(_Result):
+    """The wear study (dynamic and/or quasi-static): what ``gearwear wear`` writes.
+    Tables ``updates_MODE`` and ``wear_profiles_MODE`` per mode; ``runs`` views them."""
+
+    @property
+    def runs(self) -> Dict[str, WearRunResult]:
+        """The runs present by mode (``"dynamic"``, ``"quasi_static"``)."""
+        out = {}
+        for mode in ("dynamic", "quasi_static"):
+            u, p = self.tables.get(f"updates_{mode}"), self.tables.get(f"wear_profiles_{mode}")
+            if u is not None and p is not None:
+                out[mode] = WearRunResult(mode, u, p)
+        return out
+
+    @property
+    def dynamic(self) -> Optional[WearRunResult]:
+        """The dynamic run (None if not run)."""
+        return self.runs.get("dynamic")
+
+    @property
+    def quasi_static(self) -> Optional[WearRunResult]:
+        """The quasi-static run (None if not run)."""
+        return self.runs.get("quasi_static")
+
+
+class RunResult(WearResult):
+    """The paper's whole section 4 (``gearwear run``): the summary with the paper
+    comparison, every figure's table (``fig02_mesh_stiffness`` ... ``fig13_...``), the
+    wear runs (as ``WearResult``), the figures as PNG and the HTML report."""
+
+    def __init__(self, summary, tables, headline, documents: Dict[str, bytes], out: Optional[Path]):
+        super().__init__(summary, tables, headline)
+        #: PNG bytes of each figure by file name (``fig13_max_accumulated_wear.png``).
+        self.figures_png: Dict[str, bytes] = {
+            n: b for n, b in documents.items() if n.endswith(".png")
+        }
+        #: The self-contained HTML report.
+        self.report_html: str = documents.get("report.html", b"").decode("utf-8")
+        #: The output folder written, or None.
+        self.out: Optional[Path] = out
+
+
+def _as_numbers(values: Sequence[str]) -> np.ndarray:
+    try:
+        return np.array([float(v) for v in values], dtype=np.float64)
+    except ValueError:
+        return np.array(values, dtype=object)
+
+
+class SweepResult:
+    """A parameter sweep (``gearwear sweep``, without files): one row per case."""
+
+    def __init__(self, summary, keys, columns, case_ids, values, results):
+        #: What was run: ``vary`` (keys and values), ``run``, ``total_cases``, ``failed``
+        #: (case id, values, error of each case without a row), ``base`` (metadata of
+        #: the base case), wall time and threads.
+        self.summary: Dict[str, Any] = summary
+        #: The varied keys, in the order given.
+        self.keys: List[str] = list(keys)
+        #: The result columns (display units in the names, e.g. ``dte_max_um``).
+        self.columns: List[str] = list(columns)
+        #: Case ids (first key varying slowest), shape (n,).
+        self.case_ids: np.ndarray = case_ids.astype(np.int64)
+        #: The varied values by key: float64 arrays for numbers, else object arrays of
+        #: the text given; shape (n,).
+        self.values: Dict[str, np.ndarray] = {
+            k: _as_numbers([v[i] for v in values]) for i, k in enumerate(self.keys)
+        }
+        #: The results, shape (n, len(columns)); NaN where not finite.
+        self.results: np.ndarray = results
+        self.results.flags.writeable = False
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """A varied key's values or a result column, e.g. ``s["dte_max_um"]``."""
+        if name in self.values:
+            return self.values[name]
+        if name in self.columns:
+            return self.results[:, self.columns.index(name)]
+        raise KeyError(f"no column {name!r}; keys: {self.keys}; columns: {self.columns}")
+
+    @property
+    def table(self) -> Table:
+        """The numeric columns as a ``Table``: the varied keys (numeric ones), ``case_id``,
+        the results (the layout of sweep.csv)."""
+        cols: Dict[str, np.ndarray] = {
+            k: v for k, v in self.values.items() if v.dtype == np.float64
+        }
+        cols["case_id"] = self.case_ids.astype(np.float64)
+        for j, c in enumerate(self.columns):
+            cols[c] = np.ascontiguousarray(self.results[:, j])
+        return Table.from_columns("sweep", cols)
+
+    def to_pandas(self) -> Any:
+        """The sweep table as a ``pandas.DataFrame`` (every varied key, ``case_id``,
+        the results; needs pandas)."""
+        pd = _pandas()
+        data: Dict[str, Any] = dict(self.values)
+        data["case_id"] = self.case_ids
+        for j, c in enumerate(self.columns):
+            data[c] = self.results[:, j]
+        return pd.DataFrame(data)
+
+    def __len__(self) -> int:
+        return len(self.case_ids)
+
+    def __repr__(self) -> str:
+        return f"<gearwear.SweepResult: {len(self)} cases x {len(self.columns)} results, varied {self.keys}>"
+

@@ -1,0 +1,160 @@
+//! The exceptions of the package and the conversion of the library's errors to them.
+
+use crate::convert::toml_to_py;
+use gearwear::config::Problem as LibProblem;
+use gearwear::io::OutputError;
+use pyo3::create_exception;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+create_exception!(
+    gearwear,
+    CaseError,
+    PyValueError,
+    "The case is invalid. `problems` lists every problem (gearwear.Problem: key, value, \
+     valid, message), as the command line's exit-2 messages do."
+);
+create_exception!(
+    gearwear,
+    StudyError,
+    PyRuntimeError,
+    "A study failed on a valid case (e.g. no periodic steady state was found within \
+     numerics.max_mesh_periods); the command line exits 1 for these."
+);
+
+/// One problem of a case (see `gearwear.CaseError`).
+#[pyclass(frozen, get_all, module = "gearwear")]
+pub struct Problem {
+    /// Dotted key (`section.key`), or None when the message names none.
+    key: Option<String>,
+    /// The value given (a Python value read from its TOML text), or None.
+    value: Py<PyAny>,
+    /// What would be valid (a range, the choices, the valid keys, a condition), or None.
+    valid: Option<String>,
+    /// The whole message, as the command line prints it.
+    message: String,
+}
+
+#[pymethods]
+impl Problem {
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let r = |o: Bound<'_, PyAny>| -> PyResult<String> { Ok(o.repr()?.to_string()) };
+        Ok(format!(
+            "Problem(key={}, value={}, valid={}, message={})",
+            r(self.key.clone().into_pyobject(py)?)?,
+            r(self.value.bind(py).clone())?,
+            r(self.valid.clone().into_pyobject(py)?)?,
+            r(self.message.clone().into_pyobject(py)?.into_any())?,
+        ))
+    }
+
+    fn __str__(&self) -> String {
+        self.message.clone()
+    }
+
+    /// The fields as a dict.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("key", &self.key)?;
+        d.set_item("value", self.value.bind(py))?;
+        d.set_item("valid", &self.valid)?;
+        d.set_item("message", &self.message)?;
+        Ok(d)
+    }
+}
+
+/// A value's TOML text as a Python value (the text itself when it does not parse).
+fn value_of(py: Python<'_>, text: &str) -> PyResult<Py<PyAny>> {
+    let parsed = toml::from_str::<toml::Table>(&format!("v = {text}"))
+        .ok()
+        .and_then(|mut t| t.remove("v"));
+    Ok(match parsed {
+        Some(v) => toml_to_py(py, &v)?.unbind(),
+        None => text.into_pyobject(py)?.into_any().unbind(),
+    })
+}
+
+/// `CaseError` carrying every problem (message as the command line prints it).
+pub fn case_error(py: Python<'_>, messages: &[String]) -> PyErr {
+    let build = || -> PyResult<PyErr> {
+        let mut problems = Vec::with_capacity(messages.len());
+        for m in messages {
+            let p = LibProblem::from_message(m);
+            problems.push(Problem {
+                value: match &p.value {
+                    Some(t) => value_of(py, t)?,
+                    None => py.None(),
+                },
+                key: p.key,
+                valid: p.valid,
+                message: p.message,
+            });
+        }
+        let text = if messages.len() == 1 {
+            messages[0].clone()
+        } else {
+            let lines: Vec<String> = messages.iter().map(|m| format!("  - {m}")).collect();
+            format!(
+                "invalid case ({} problems):\n{}",
+                messages.len(),
+                lines.join("\n")
+            )
+        };
+        let err = CaseError::new_err(text);
+        err.value(py).setattr("problems", problems)?;
+        Ok(err)
+    };
+    build().unwrap_or_else(|e| e)
+}
+
+/// Why a study gave no result.
+#[derive(Debug)]
+pub enum Failure {
+    /// The case cannot be modelled (geometry, settings): `CaseError`.
+    Case(Vec<String>),
+    /// Another input is wrong (a transmission-error array, sweep axes): `ValueError`.
+    Input(String),
+    /// The output folder cannot be used: `OSError`.
+    Output(String),
+    /// Stopped by Ctrl-C (or a progress callback that raised).
+    Interrupted,
+    /// A solver failed: `StudyError`.
+    Failed(anyhow::Error),
+}
+
+/// The error a study's callbacks return once the study is told to stop (Ctrl-C).
+#[derive(Debug)]
+pub struct Interrupt;
+
+impl std::fmt::Display for Interrupt {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "interrupted")
+    }
+}
+
+impl std::error::Error for Interrupt {}
+
+impl From<anyhow::Error> for Failure {
+    fn from(e: anyhow::Error) -> Self {
+        if e.is::<Interrupt>() {
+            return Failure::Interrupted;
+        }
+        match e.downcast::<OutputError>() {
+            Ok(o) => Failure::Output(o.to_string()),
+            Err(e) => Failure::Failed(e),
+        }
+    }
+}
+
+impl Failure {
+    pub fn into_pyerr(self, py: Python<'_>) -> PyErr {
+        match self {
+            Failure::Case(p) => case_error(py, &p),
+            Failure::Input(m) => PyValueError::new_err(m),
+            Failure::Output(m) => PyOSError::new_err(m),
+            Failure::Interrupted => PyKeyboardInterrupt::new_err("study interrupted"),
+            Failure::Failed(e) => StudyError::new_err(format!("{e:#}")),
+        }
+    }
+}

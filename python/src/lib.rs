@@ -1,0 +1,55 @@
+//! Python binding of gearwear (`import gearwear`): converts types, computes nothing.
+//!
+//! The native module `gearwear._gearwear`; the package `gearwear` (python/gearwear/)
+//! wraps its tuples in result objects. Layout: [`case`] (the `Case` class), [`studies`]
+//! (the study functions), [`worker`] (a study on its own thread: GIL released, progress,
+//! Ctrl-C), [`errors`] (exceptions), [`convert`] (JSON, TOML and tables to Python).
+
+use pyo3::prelude::*;
+
+mod case;
+mod convert;
+mod errors;
+mod studies;
+mod worker;
+
+/// Every key of a case file: `[{key, unit, valid, doc, default}]` (docs/CONFIG.md).
+#[pyfunction]
+fn keys(py: Python<'_>) -> PyResult<Vec<Bound<'_, pyo3::types::PyDict>>> {
+    let paper = case::Case {
+        inner: gearwear::config::Case::default(),
+    };
+    gearwear::config::schema::KEYS
+        .iter()
+        .map(|s| {
+            let d = pyo3::types::PyDict::new(py);
+            d.set_item("key", s.key)?;
+            d.set_item("unit", s.unit)?;
+            d.set_item("valid", s.valid.describe())?;
+            d.set_item("doc", s.doc)?;
+            d.set_item("default", paper.get(py, s.key)?)?;
+            Ok(d)
+        })
+        .collect()
+}
+
+#[pymodule]
+fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    use gearwear::report::dynamics::{COORDINATE_NAMES, COORDINATE_UNITS};
+    m.add("COORDINATES", COORDINATE_NAMES)?;
+    m.add("COORDINATE_UNITS", COORDINATE_UNITS)?;
+    m.add_class::<case::Case>()?;
+    m.add_class::<errors::Problem>()?;
+    m.add("CaseError", py.get_type::<errors::CaseError>())?;
+    m.add("StudyError", py.get_type::<errors::StudyError>())?;
+    m.add_function(wrap_pyfunction!(keys, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::wear, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::run, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::_time_rust_dynamics, m)?)?;
+    Ok(())
+}
