@@ -12,6 +12,7 @@ fn line(name: &str, x: Vec<f64>, y: Vec<f64>) -> Series {
         x,
         y,
         style: LineStyle::Solid,
+        ..Default::default()
     }
 }
 

@@ -2,12 +2,14 @@
 //! command line and the Python binding share: summaries, tables, figures, the HTML report.
 
 pub mod artifacts;
+pub mod case;
 pub mod comparison;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
 pub mod paper;
 pub mod plot;
+pub mod run_report;
 pub mod stiffness;
 pub mod sweep;
 pub mod wear;
