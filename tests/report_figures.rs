@@ -46,7 +46,10 @@ fn all_artifacts() -> Vec<(&'static str, Artifacts)> {
     vec![
         ("run", run_artifacts(model, study, &meta)),
         ("stiffness", stiffness_artifacts(model)),
-        ("dynamics", dynamics_artifacts(model, &new_teeth, "new teeth")),
+        (
+            "dynamics",
+            dynamics_artifacts(model, &new_teeth, "new teeth"),
+        ),
         (
             "wear",
             wear_artifacts(model, &[&study.dynamic, &study.quasi_static]),
@@ -61,7 +64,11 @@ fn csv_columns(bytes: &[u8]) -> Vec<(String, Vec<f64>)> {
     let mut cols = vec![Vec::new(); names.len()];
     for rec in r.records() {
         for (c, cell) in cols.iter_mut().zip(rec.unwrap().iter()) {
-            c.push(if cell.is_empty() { f64::NAN } else { cell.parse().unwrap() });
+            c.push(if cell.is_empty() {
+                f64::NAN
+            } else {
+                cell.parse().unwrap()
+            });
         }
     }
     names.into_iter().zip(cols).collect()
@@ -84,7 +91,10 @@ fn every_figure_has_a_csv_with_exactly_its_plotted_numbers() {
     for (command, a) in all_artifacts() {
         assert!(!a.figures.is_empty(), "{command}: no figures");
         for f in &a.figures {
-            let csv = f.data.as_deref().unwrap_or_else(|| panic!("{command} {}: no CSV", f.path));
+            let csv = f
+                .data
+                .as_deref()
+                .unwrap_or_else(|| panic!("{command} {}: no CSV", f.path));
             let table = a
                 .table_at(csv)
                 .unwrap_or_else(|| panic!("{command} {}: {csv} not written", f.path));
@@ -113,13 +123,23 @@ fn wear_figures_have_distinct_tables() {
     // Fig. 11, 12 and 13 once shared one table; each now has its own columns.
     let (model, study) = paper();
     let a = run_artifacts(model, study, &RunMetadata::new("run", &model.case));
-    let header = |stem: &str| a.table_at(&format!("csv/{stem}.csv")).unwrap().names.clone();
+    let header = |stem: &str| {
+        a.table_at(&format!("csv/{stem}.csv"))
+            .unwrap()
+            .names
+            .clone()
+    };
     let h11 = header("fig11_force_and_wear_initial");
     let h12 = header("fig12_wear_rate_evolution");
     let h13 = header("fig13_max_accumulated_wear");
     assert!(h11.iter().any(|n| n == "pair_load_n_dynamic"), "{h11:?}");
-    assert!(h12.iter().any(|n| n.starts_with("wear_rate_um_per_kcycle_quasi_static_at_")));
-    assert!(h13.iter().any(|n| n == "max_wear_pinion_um_dynamic"), "{h13:?}");
+    assert!(h12
+        .iter()
+        .any(|n| n.starts_with("wear_rate_um_per_kcycle_quasi_static_at_")));
+    assert!(
+        h13.iter().any(|n| n == "max_wear_pinion_um_dynamic"),
+        "{h13:?}"
+    );
     assert!(h11 != h12 && h12 != h13 && h11 != h13);
 }
 
@@ -132,17 +152,30 @@ fn check_layout(what: &str, f: &FigureFile, lays: &[PanelLayout]) {
     for (i, (panel, lay)) in f.figure.panels.iter().zip(lays).enumerate() {
         let named = panel.series.iter().filter(|s| !s.name.is_empty()).count();
         assert_eq!(lay.legend.is_some(), named > 1, "{what} panel {i}: legend");
-        assert_eq!(lay.color_bar.is_some(), panel.color_bar.is_some(), "{what} panel {i}");
+        assert_eq!(
+            lay.color_bar.is_some(),
+            panel.color_bar.is_some(),
+            "{what} panel {i}"
+        );
         // Lines are 2 px wide and markers 4 px in radius around their point.
         let plot = lay.plot.inflate(5);
-        assert!(lay.marks.iter().all(|m| plot.contains(*m)), "{what} panel {i}: mark outside");
+        assert!(
+            lay.marks.iter().all(|m| plot.contains(*m)),
+            "{what} panel {i}: mark outside"
+        );
         for (kind, r) in [("legend", lay.legend), ("colour bar", lay.color_bar)] {
             let Some(r) = r else { continue };
             assert!(image.x0 <= r.x0 && r.x1 <= image.x1 && image.y0 <= r.y0 && r.y1 <= image.y1);
             let hit = lay.marks.iter().find(|m| r.contains(**m));
-            assert!(hit.is_none(), "{what} panel {i}: {kind} {r:?} covers a point at {hit:?}");
+            assert!(
+                hit.is_none(),
+                "{what} panel {i}: {kind} {r:?} covers a point at {hit:?}"
+            );
             let label = lay.labels.iter().find(|l| l.intersects(&r));
-            assert!(label.is_none(), "{what} panel {i}: {kind} covers label {label:?}");
+            assert!(
+                label.is_none(),
+                "{what} panel {i}: {kind} covers label {label:?}"
+            );
         }
         for (j, a) in lay.labels.iter().enumerate() {
             for b in &lay.labels[j + 1..] {
@@ -182,13 +215,16 @@ fn no_legend_covers_data_in_the_sweep_figure() {
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let table = SweepTable::from_csv(&std::fs::read_to_string(out.join("sweep.csv")).unwrap())
-        .unwrap();
+    let table =
+        SweepTable::from_csv(&std::fs::read_to_string(out.join("sweep.csv")).unwrap()).unwrap();
     let meta: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("sweep.json")).unwrap()).unwrap();
     let marks: Vec<Crossing> =
         serde_json::from_value(meta["resonance_crossings"].clone()).unwrap_or_default();
-    assert!(!marks.is_empty(), "the sweep should cross a resonance: {meta}");
+    assert!(
+        !marks.is_empty(),
+        "the sweep should cross a resonance: {meta}"
+    );
     let figure = speed_figure(&table, &marks).expect("a speed sweep has a figure");
     let (w, h) = SWEEP_FIGURE_PX;
     let f = FigureFile {
@@ -221,5 +257,8 @@ fn the_built_in_case_keeps_its_paper_comparison() {
     assert!(html.contains("beside the paper&#39;s"));
     // The paper's own operating point, as the paper prints it (Table 1, section 4.1):
     // 19 teeth at 30 Hz is a 570 Hz mesh frequency.
-    assert!(html.contains("570 Hz mesh frequency"), "mesh frequency sentence");
+    assert!(
+        html.contains("570 Hz mesh frequency"),
+        "mesh frequency sentence"
+    );
 }

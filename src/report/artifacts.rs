@@ -109,12 +109,12 @@ pub fn render_figures(figures: &[FigureFile]) -> Result<Vec<Vec<u8>>, WriteError
         .par_iter()
         .map(|f| match &f.png {
             Some(png) => Ok(png.clone()),
-            None => render_png(&f.figure, f.width_px, f.height_px).map_err(|source| {
-                WriteError::Plot {
+            None => {
+                render_png(&f.figure, f.width_px, f.height_px).map_err(|source| WriteError::Plot {
                     path: f.path.clone(),
                     source,
-                }
-            }),
+                })
+            }
         })
         .collect()
 }

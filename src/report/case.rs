@@ -65,7 +65,11 @@ pub fn paper_case_differences(case: &Case) -> Vec<String> {
     let same = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs());
     let mut out: Vec<String> = PAPER_CASE
         .iter()
-        .filter(|(key, paper)| !get(key).and_then(Value::as_f64).is_some_and(|x| same(x, *paper)))
+        .filter(|(key, paper)| {
+            !get(key)
+                .and_then(Value::as_f64)
+                .is_some_and(|x| same(x, *paper))
+        })
         .map(|(key, _)| key.to_string())
         .collect();
     let centre = get("gear.centre_distance_mm").and_then(Value::as_f64);
@@ -232,7 +236,11 @@ mod tests {
         // Every key of the list, moved by 1 %, is a different case, named as such.
         for (key, paper) in PAPER_CASE {
             let moved = if paper == 0.0 { 0.01 } else { paper * 1.01 };
-            let moved = if key.contains("teeth") { paper + 1.0 } else { moved };
+            let moved = if key.contains("teeth") {
+                paper + 1.0
+            } else {
+                moved
+            };
             let c = case(&[&format!("{key}={moved}")]);
             assert_eq!(paper_case_differences(&c), vec![key.to_string()], "{key}");
         }

@@ -137,7 +137,11 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             "velocity_y_pinion.png",
             single(
                 &format!("Pinion velocity in y ({label})"),
-                panel(time, "pinion y velocity (mm/s)", vec![Curve::new("", t_ms.clone(), vy.clone())]),
+                panel(
+                    time,
+                    "pinion y velocity (mm/s)",
+                    vec![Curve::new("", t_ms.clone(), vy.clone())],
+                ),
             ),
             Table::new()
                 .col("time_ms", t_ms.clone())
@@ -160,15 +164,25 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         "dte.png",
         single(
             &format!("Dynamic transmission error ({label})"),
-            panel(time, "dynamic transmission error (µm)", vec![Curve::new("", t_ms.clone(), dte_um.clone())]),
+            panel(
+                time,
+                "dynamic transmission error (µm)",
+                vec![Curve::new("", t_ms.clone(), dte_um.clone())],
+            ),
         ),
-        Table::new().col("time_ms", t_ms.clone()).col("dte_um", dte_um),
+        Table::new()
+            .col("time_ms", t_ms.clone())
+            .col("dte_um", dte_um),
     );
     a.figure_with_data(
         "mesh_force.png",
         single(
             &format!("Mesh force ({label})"),
-            panel(time, "mesh force (N)", vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())]),
+            panel(
+                time,
+                "mesh force (N)",
+                vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
+            ),
         ),
         Table::new()
             .col("time_ms", t_ms)
@@ -181,7 +195,11 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         "friction_coefficient.png",
         single(
             &format!("Friction coefficient along the path of contact ({label})"),
-            panel(along, "friction coefficient (-)", vec![Curve::new("", rho_mm.clone(), mu.clone())]),
+            panel(
+                along,
+                "friction coefficient (-)",
+                vec![Curve::new("", rho_mm.clone(), mu.clone())],
+            ),
         ),
         Table::new()
             .col("rho1_mm", rho_mm.clone())
@@ -192,7 +210,11 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         "friction_force.png",
         single(
             &format!("Friction force along the path of contact ({label})"),
-            panel(along, "friction force (N)", vec![Curve::new("", rho_mm.clone(), friction.clone())]),
+            panel(
+                along,
+                "friction force (N)",
+                vec![Curve::new("", rho_mm.clone(), friction.clone())],
+            ),
         ),
         Table::new()
             .col("rho1_mm", rho_mm)

@@ -1,6 +1,8 @@
 //! Builders of the paper's figures (2, 4-13) from results. Pure: data in, `Figure` out.
 
-use super::plot::{sequential_color, ColorBar, Figure, LineStyle, Marker, Panel, PanelKind, Series};
+use super::plot::{
+    sequential_color, ColorBar, Figure, LineStyle, Marker, Panel, PanelKind, Series,
+};
 
 /// A labelled curve (x, y), already in display units.
 pub struct Curve {
@@ -20,7 +22,12 @@ impl Curve {
 }
 
 const STYLES: [LineStyle; 3] = [LineStyle::Solid, LineStyle::Dashed, LineStyle::Dotted];
-const MARKERS: [Marker; 4] = [Marker::Circle, Marker::Square, Marker::Triangle, Marker::Cross];
+const MARKERS: [Marker; 4] = [
+    Marker::Circle,
+    Marker::Square,
+    Marker::Triangle,
+    Marker::Cross,
+];
 
 /// One panel of curves, cycling line styles (and palette colours).
 pub fn panel(x_label: &str, y_label: &str, curves: Vec<Curve>) -> Panel {

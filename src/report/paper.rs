@@ -130,7 +130,10 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
             "Spectrum of the pinion y velocity at {} µm wear",
             mid.max_wear_um
         );
-        let figure = single(&title, spectrum_panel("amplitude (mm/s)", &fr, &amp, f_mesh));
+        let figure = single(
+            &title,
+            spectrum_panel("amplitude (mm/s)", &fr, &amp, f_mesh),
+        );
         let table = Table::new()
             .col("frequency_hz", fr)
             .col("amplitude_mm_per_s", amp);

@@ -3,8 +3,7 @@
 //! case, a summary of the case that was run. Every number comes from the run.
 
 use super::case::{
-    cycles_words, load_sentence, load_words, mesh_frequency_hz, poles_sentence,
-    static_mesh_force_n,
+    cycles_words, load_sentence, load_words, mesh_frequency_hz, poles_sentence, static_mesh_force_n,
 };
 use super::comparison::Compared;
 use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
@@ -90,7 +89,10 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
             s.velocity_y_pinion_rms_m_per_s * 1e3
         ));
     }
-    let (d, q) = (final_wear_um(&study.dynamic), final_wear_um(&study.quasi_static));
+    let (d, q) = (
+        final_wear_um(&study.dynamic),
+        final_wear_um(&study.quasi_static),
+    );
     lines.push(format!(
         "after {} cycles: maximum pinion wear {d:.4} um dynamic, {q:.4} um quasi-static (ratio {:.4})",
         cycles_words(c.wear.total_cycles),
@@ -108,11 +110,23 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
     let c = &model.case;
     let mut rows = vec![
         value_row("gear pair", pair_words(model)),
-        value_row("pressure angle (deg)", format!("{}", c.gear.pressure_angle_deg)),
-        value_row("contact ratio (-)", format!("{:.4}", model.pair.contact_ratio)),
+        value_row(
+            "pressure angle (deg)",
+            format!("{}", c.gear.pressure_angle_deg),
+        ),
+        value_row(
+            "contact ratio (-)",
+            format!("{:.4}", model.pair.contact_ratio),
+        ),
         value_row("load", load_words(c)),
-        value_row("input speed (Hz)", format!("{}", c.operating.input_speed_hz)),
-        value_row("mesh frequency (Hz)", format!("{:.1}", mesh_frequency_hz(model))),
+        value_row(
+            "input speed (Hz)",
+            format!("{}", c.operating.input_speed_hz),
+        ),
+        value_row(
+            "mesh frequency (Hz)",
+            format!("{:.1}", mesh_frequency_hz(model)),
+        ),
         value_row(
             "mean mesh force without friction (N)",
             format!("{:.1}", static_mesh_force_n(model)),
@@ -244,7 +258,13 @@ pub fn build_report(
             Section { heading: "The case and its key results".into(), tables: vec![case_table(model, study)], ..Default::default() },
         )
     };
-    let tag = |s: &str| if paper { format!(" (paper section {s})") } else { String::new() };
+    let tag = |s: &str| {
+        if paper {
+            format!(" (paper section {s})")
+        } else {
+            String::new()
+        }
+    };
     let method = if c.stiffness.fillet_foundation {
         "Potential energy method with the Sainsot fillet foundation"
     } else {
@@ -252,7 +272,11 @@ pub fn build_report(
     };
     let states = &study.wear_states;
     let list = |f: &dyn Fn(&crate::study::paper::WearStateResult) -> f64| {
-        states.iter().map(|s| format!("{}", f(s))).collect::<Vec<_>>().join(", ")
+        states
+            .iter()
+            .map(|s| format!("{}", f(s)))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
     let (d, q) = (&study.dynamic, &study.quasi_static);
     Report {

@@ -100,7 +100,11 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
 /// The paper's Figure 2: single-pair and total mesh stiffness over one mesh period, and
 /// the quasi-static transmission error, drawn from the columns of `t` (`stiffness_table`).
 pub fn figure2(model: &Model, t: &Table) -> Figure {
-    let col = |name: &str| t.index_of(name).map(|i| t.columns[i].clone()).unwrap_or_default();
+    let col = |name: &str| {
+        t.index_of(name)
+            .map(|i| t.columns[i].clone())
+            .unwrap_or_default()
+    };
     let x = col("pinion_angle_deg");
     let angle = "pinion angle within a mesh period (deg)";
     let source = if model.case.stiffness.fillet_foundation {
@@ -115,7 +119,11 @@ pub fn figure2(model: &Model, t: &Table) -> Figure {
                 angle,
                 "mesh stiffness (N/m)",
                 vec![
-                    Curve::new("all pairs in contact", x.clone(), col("stiffness_total_n_per_m")),
+                    Curve::new(
+                        "all pairs in contact",
+                        x.clone(),
+                        col("stiffness_total_n_per_m"),
+                    ),
                     Curve::new("first pair", x.clone(), col("stiffness_pair0_n_per_m")),
                     Curve::new("second pair", x.clone(), col("stiffness_pair1_n_per_m")),
                 ],

@@ -114,7 +114,8 @@ pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<WearFigure> {
     let rho_mm: Vec<f64> = model.grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
     let along = "pinion roll distance along the path of contact (mm)";
     let rate = "wear rate (µm per 1000 cycles)";
-    let (mut t11, mut load, mut wear) = (Table::new().col("rho1_mm", rho_mm.clone()), vec![], vec![]);
+    let (mut t11, mut load, mut wear) =
+        (Table::new().col("rho1_mm", rho_mm.clone()), vec![], vec![]);
     let radius_mm = model.grid.radius_pinion_m.iter().map(|x| x * 1e3).collect();
     let mut t12 = Table::new()
         .col("rho1_mm", rho_mm.clone())
@@ -154,7 +155,9 @@ pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<WearFigure> {
     }
     // One colour scale for both panels of Fig. 12: the same colour is the same cycle count.
     let all = panels12.iter().flat_map(|p| p.1.iter().map(|c| c.0));
-    let (lo, hi) = all.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c), b.max(c)));
+    let (lo, hi) = all.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+        (a.min(c), b.max(c))
+    });
     let panels12 = panels12
         .into_iter()
         .map(|(label, curves)| scale_panel(label, along, rate, curves, ("load cycles", lo, hi)))

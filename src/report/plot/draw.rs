@@ -11,8 +11,7 @@ use plotters::prelude::*;
 
 use super::layout::{free_corner, sample_polyline, stack_labels, PanelLayout, Rect};
 use super::legend::{
-    draw_bar, draw_legend, marker_of, measure_bar, measure_legend, series_color,
-    GAP,
+    draw_bar, draw_legend, marker_of, measure_bar, measure_legend, series_color, GAP,
 };
 use super::{ensure_font, Figure, LineStyle, Marker, Panel, PanelKind, PlotError, Series, FONT};
 
@@ -201,7 +200,12 @@ where
             _ => lay.plot.y0,
         };
         let h = u32::try_from(lay.plot.y1 - top).unwrap_or(0);
-        lay.color_bar = Some(Rect::at(lay.plot.x1 + GAP, top, b.band_w - 2 * GAP as u32, h));
+        lay.color_bar = Some(Rect::at(
+            lay.plot.x1 + GAP,
+            top,
+            b.band_w - 2 * GAP as u32,
+            h,
+        ));
     }
 
     draw_chart(&mut chart, &screen, panel, pts, base, &lay)?;
@@ -272,7 +276,11 @@ fn shown_vlines<'p>(
 }
 
 /// What a legend must also keep clear of: the marker labels and the marker lines.
-fn blocked_by_markers<DB, Y>(chart: &Chart<'_, DB, Y>, panel: &Panel, lay: &PanelLayout) -> Vec<Rect>
+fn blocked_by_markers<DB, Y>(
+    chart: &Chart<'_, DB, Y>,
+    panel: &Panel,
+    lay: &PanelLayout,
+) -> Vec<Rect>
 where
     DB: DrawingBackend,
     Y: Ranged<ValueType = f64>,
@@ -280,7 +288,11 @@ where
     let xr = chart.x_range();
     let lines = shown_vlines(panel, &xr).map(|(x, _)| {
         let px = chart.backend_coord(&(*x, chart.y_range().end)).0;
-        Rect { x0: px - 1, x1: px + 2, ..lay.plot }
+        Rect {
+            x0: px - 1,
+            x1: px + 2,
+            ..lay.plot
+        }
     });
     lay.labels.iter().copied().chain(lines).collect()
 }

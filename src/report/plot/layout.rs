@@ -16,7 +16,10 @@ pub struct Rect {
 impl Rect {
     /// The rectangle of width `w` and height `h` with its top-left corner at (x, y).
     pub fn at(x: i32, y: i32, w: u32, h: u32) -> Self {
-        let (w, h) = (i32::try_from(w).unwrap_or(i32::MAX), i32::try_from(h).unwrap_or(0));
+        let (w, h) = (
+            i32::try_from(w).unwrap_or(i32::MAX),
+            i32::try_from(h).unwrap_or(0),
+        );
         Self {
             x0: x,
             y0: y,

@@ -213,7 +213,10 @@ pub fn draw_bar<DB: DrawingBackend>(
     let span = f64::from((bottom - top).max(1));
     for y in top..=bottom {
         let [cr, cg, cb] = sequential_color(f64::from(bottom - y) / span);
-        let px = Rectangle::new([(r.x0, y), (r.x0 + BAR_PX, y + 1)], RGBColor(cr, cg, cb).filled());
+        let px = Rectangle::new(
+            [(r.x0, y), (r.x0 + BAR_PX, y + 1)],
+            RGBColor(cr, cg, cb).filled(),
+        );
         screen.draw(&px).map_err(draw_err)?;
     }
     let frame = Rectangle::new(

@@ -232,4 +232,3 @@ fn ensure_font() -> Result<(), PlotError> {
     });
     ok.then_some(()).ok_or(PlotError::Font)
 }
-
