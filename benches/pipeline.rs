@@ -6,7 +6,9 @@
 //!
 //! Groups:
 //! - `stiffness`: the mesh-stiffness table (400 points, fillet foundation on);
-//! - `evaluation`: one steady-state dynamic and one quasi-static evaluation of new teeth;
+//! - `evaluation`: one steady-state dynamic and one quasi-static evaluation of new teeth,
+//!   a warm-started dynamic one, and dynamic ones at 2 Hz and at the contact-loss
+//!   resonance (50 Hz, brake speed imposed);
 //! - `wear_study`: `run_wear` to 4e4 cycles, each mode, and both modes including the
 //!   model build (the figure the < 1 s target is about);
 //! - `scaling_*`: cost against steps per mesh period, wear grid points and total cycles.
@@ -110,6 +112,43 @@ fn evaluation(c: &mut Criterion) {
     g.bench_function("quasi_static", |b| {
         b.iter(|| model.quasi_static(black_box(&wear), &none))
     });
+    // Warm start from the periodic state of the same case (a wear update or continuation
+    // step starts from a neighbouring one).
+    let start = model.dynamic(&wear, &none).expect("steady state").end_state;
+    g.bench_function("steady_state_dynamic_warm", |b| {
+        b.iter(|| {
+            model
+                .dynamic_from(black_box(&wear), &none, Some(&start))
+                .expect("steady state")
+        })
+    });
+    // Low speed (error-controlled steps in the boundary layers after each mesh event) and
+    // the contact-loss resonance of the brake-imposed boundary (contact switches located
+    // as events, slow convergence of the search).
+    for (name, sets) in [
+        (
+            "steady_state_dynamic_2hz",
+            vec!["operating.input_speed_hz=2"],
+        ),
+        (
+            "steady_state_dynamic_contact_loss_50hz",
+            vec![
+                "operating.input_speed_hz=50",
+                "operating.speed_boundary=brake_speed_imposed",
+            ],
+        ),
+    ] {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        let case = gearwear::config::load_case("", &sets).expect("valid case");
+        let m = Model::from_case(&case).expect("valid model");
+        let mut printed = false;
+        g.bench_function(name, |b| {
+            once(&mut printed, || {
+                print_steady_work(&format!("evaluation/{name}"), &m, &wear)
+            });
+            b.iter(|| m.dynamic(black_box(&wear), &none).expect("steady state"))
+        });
+    }
     g.finish();
 }
 

@@ -8,6 +8,7 @@
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
 //! -> `io` / `report` -> `cli`.
 
+pub mod checksum;
 pub mod cli;
 pub mod config;
 pub mod contact;

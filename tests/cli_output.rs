@@ -95,7 +95,7 @@ fn a_rerun_with_fewer_modes_leaves_no_files_of_the_earlier_run() {
     for f in [
         "updates_quasi_static.csv",
         "wear_profiles_quasi_static.csv",
-        "checkpoint_quasi_static.json",
+        "checkpoint_quasi_static.jsonl",
     ] {
         assert!(!out.join(f).exists(), "{f} of the earlier run left behind");
     }

@@ -75,7 +75,15 @@ fn at_very_low_speed_dte_matches_quasi_static_te() {
         if events.iter().any(|e| (ph - e).abs() < 0.05 * period) {
             continue;
         }
-        let (a, b) = (dynr.signals.dte_m[k], qs.signals.dte_m[k]);
+        // The dynamic samples hold every grid node (and the steps between them).
+        let t = qs.signals.time_s[k];
+        let j = dynr
+            .signals
+            .time_s
+            .iter()
+            .position(|s| *s == t)
+            .expect("a node");
+        let (a, b) = (dynr.signals.dte_m[j], qs.signals.dte_m[k]);
         // 1e-3: the inertia share above, plus the residual of the decayed transients.
         assert!(((a - b) / b).abs() < 1e-3, "node {k}: {a} vs {b}");
         compared += 1;
@@ -85,25 +93,30 @@ fn at_very_low_speed_dte_matches_quasi_static_te() {
 
 #[test]
 fn spectrum_of_the_periodic_response_sits_on_mesh_harmonics() {
-    // A mesh-periodic response has energy only at multiples of the mesh frequency. With
-    // a Hann window, a harmonic also shows in its two neighbouring bins.
+    // A mesh-periodic response has energy only at multiples of the mesh frequency: the
+    // bins between harmonics hold only the response's departure from periodicity. The
+    // steady state is declared when a period changes the signals by less than 1e-6 of
+    // their peak, so the recorded periods differ by about that much and the energy off
+    // the harmonics is of order (1e-6)^2 of the total: 1e-9 leaves a wide margin (with
+    // the former Hann window it was 1/3: side lines at +-f_mesh / P of half height).
     let m = model(&[]);
     let r = dynamic(&m);
     let s = velocity_y_spectrum(&r);
     let b = s.bins_per_harmonic;
     assert!(b >= 2);
     let total: f64 = s.amplitude.iter().map(|a| a * a).sum();
-    let on: f64 = s
+    let off: f64 = s
         .amplitude
         .iter()
         .enumerate()
-        .filter(|(k, _)| {
-            let rem = k % b;
-            rem == 0 || rem == 1 || rem == b - 1
-        })
+        .filter(|(k, _)| k % b != 0)
         .map(|(_, a)| a * a)
         .sum();
-    assert!(on / total > 0.999, "share on harmonics {}", on / total);
+    assert!(
+        off / total < 1e-9,
+        "share off the harmonics {:e}",
+        off / total
+    );
     // The largest peak is at a mesh harmonic bin.
     let kmax = (1..s.amplitude.len())
         .max_by(|x, y| s.amplitude[*x].total_cmp(&s.amplitude[*y]))

@@ -10,7 +10,7 @@ use gearwear::dynamics::excitation::ExternalError;
 use gearwear::io::RunMetadata;
 use gearwear::report::artifacts::FigureFile;
 use gearwear::report::plot::{layout, PanelLayout};
-use gearwear::report::sweep::{speed_figure, SWEEP_FIGURE_PX};
+use gearwear::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use gearwear::report::{
     dynamics::dynamics_artifacts, paper::run_artifacts, stiffness::stiffness_artifacts,
     wear::wear_artifacts, Artifacts,
@@ -225,7 +225,15 @@ fn no_legend_covers_data_in_the_sweep_figure() {
         !marks.is_empty(),
         "the sweep should cross a resonance: {meta}"
     );
-    let figure = speed_figure(&table, &marks).expect("a speed sweep has a figure");
+    let poles: Vec<f64> = meta["modes"]["mesh_poles"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .filter_map(|p| p["damped_frequency_hz"].as_f64())
+                .collect()
+        })
+        .unwrap_or_default();
+    let figure = figure_for(&table, &marks, &poles).expect("a speed sweep has a figure");
     let (w, h) = SWEEP_FIGURE_PX;
     let f = FigureFile {
         path: "sweep.png".into(),

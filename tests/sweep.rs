@@ -4,52 +4,10 @@
 //! commands (`gearwear dynamics`, `gearwear wear`) run on the same case. Cases are kept
 //! cheap (coarse time and stiffness grids, two evaluated mesh periods).
 
+mod common;
+
+use common::{gearwear, ok, read_csv, sweep, CHEAP};
 use std::collections::BTreeMap;
-use std::path::Path;
-use std::process::{Command, Output};
-
-const CHEAP: [&str; 6] = [
-    "--set",
-    "numerics.steps_per_mesh_period=60",
-    "--set",
-    "numerics.evaluated_mesh_periods=2",
-    "--set",
-    "stiffness.table_points_per_mesh_period=60",
-];
-
-fn gearwear(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gearwear"))
-        .args(args)
-        .output()
-        .expect("the gearwear binary runs")
-}
-
-/// Run and require success; returns stderr.
-fn ok(args: &[&str]) -> String {
-    let o = gearwear(args);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(o.status.success(), "gearwear {args:?} failed: {err}");
-    err
-}
-
-fn sweep(extra: &[&str], out: &Path) -> String {
-    let mut a = vec!["sweep"];
-    a.extend(CHEAP);
-    a.extend(extra);
-    a.extend(["--out", out.to_str().unwrap()]);
-    ok(&a)
-}
-
-/// CSV as header and rows of cells.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut r = csv::Reader::from_path(path).unwrap();
-    let h = r.headers().unwrap().iter().map(str::to_owned).collect();
-    let rows = r
-        .records()
-        .map(|x| x.unwrap().iter().map(str::to_owned).collect())
-        .collect();
-    (h, rows)
-}
 
 /// One row as column -> cell.
 fn row_map(h: &[String], row: &[String]) -> BTreeMap<String, String> {
@@ -188,6 +146,12 @@ fn wear_row_equals_single_wear_run() {
         num(&m, "wear_updates_quasi_static"),
         s["updates"]["quasi_static"].as_f64().unwrap()
     );
+    // Neither run stopped early (summary.json lists none), so both reach the case's
+    // total cycles.
+    assert_eq!(s["stopped"], serde_json::json!({}));
+    for col in ["wear_cycles_dynamic", "wear_cycles_quasi_static"] {
+        assert_eq!(num(&m, col), last(&s["cycles"]), "{col}");
+    }
     assert!(
         num(&m, "wear_updates_dynamic") >= 1.0,
         "a wear run has updates"
@@ -422,14 +386,14 @@ fn merge_rejects_conflicting_rows_and_mixed_sweeps() {
 }
 
 #[test]
-fn speed_sweep_marks_harmonic_crossings_of_the_base_modes() {
+fn speed_sweep_marks_harmonic_crossings_of_the_damped_mesh_poles() {
     let d = tempfile::tempdir().unwrap();
     let out = d.path().join("sw");
     sweep(&["--vary", "operating.input_speed_hz=10:60:25"], &out);
     assert!(out.join("sweep.png").exists());
     let meta: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("sweep.json")).unwrap()).unwrap();
-    // Natural frequencies of the base case as `gearwear dynamics` reports them.
+    // Modes of the base case as `gearwear dynamics` reports them.
     let single = d.path().join("single");
     let mut a = vec!["dynamics"];
     a.extend(CHEAP);
@@ -438,33 +402,37 @@ fn speed_sweep_marks_harmonic_crossings_of_the_base_modes() {
     let s: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(single.join("summary.json")).unwrap())
             .unwrap();
-    let fs: Vec<f64> = s["natural_frequencies_hz"]
+    assert_eq!(meta["modes"]["mesh_poles"], s["mesh_poles"]);
+    assert_eq!(
+        meta["modes"]["undamped_natural_frequencies_hz"],
+        s["undamped_natural_frequencies_hz"]
+    );
+    let poles: Vec<f64> = s["mesh_poles"]
         .as_array()
         .unwrap()
         .iter()
-        .map(|v| v.as_f64().unwrap())
+        .map(|p| p["damped_frequency_hz"].as_f64().unwrap())
         .collect();
-    assert_eq!(meta["natural_frequencies_hz"], s["natural_frequencies_hz"]);
-    // Expected: every (mode, h) with f_n / (h z1) in [10, 60] Hz, z1 = 19 (the default).
+    // Expected: every (pole, k) with f_p / (k z1) in [10, 60] Hz, z1 = 19 (the default),
+    // k = 1..4.
     let mut want: Vec<(usize, u64)> = Vec::new();
-    for (i, f) in fs.iter().enumerate() {
-        for h in 1..=3u64 {
-            let v = f / (h as f64 * 19.0);
-            if *f > 1e-3 && (10.0..=60.0).contains(&v) {
-                want.push((i + 1, h));
+    for (i, f) in poles.iter().enumerate() {
+        for k in 1..=4u64 {
+            if (10.0..=60.0).contains(&(f / (k as f64 * 19.0))) {
+                want.push((i + 1, k));
             }
         }
     }
     let got = meta["resonance_crossings"].as_array().unwrap();
     assert!(
-        !want.is_empty(),
-        "the default case has modes in reach of 10-60 Hz x 19 x 1..3"
+        want.len() >= 2,
+        "the default case's mesh pole is in reach of 10-60 Hz x 19 x 1..4"
     );
     let mut got_pairs: Vec<(usize, u64)> = got
         .iter()
         .map(|c| {
             (
-                c["mode"].as_u64().unwrap() as usize,
+                c["pole"].as_u64().unwrap() as usize,
                 c["harmonic"].as_u64().unwrap(),
             )
         })
@@ -473,12 +441,12 @@ fn speed_sweep_marks_harmonic_crossings_of_the_base_modes() {
     want.sort_unstable();
     assert_eq!(got_pairs, want);
     for c in got {
-        let (h, v, f) = (
+        let (k, v, f) = (
             c["harmonic"].as_f64().unwrap(),
             c["input_speed_hz"].as_f64().unwrap(),
-            c["natural_frequency_hz"].as_f64().unwrap(),
+            c["pole_frequency_hz"].as_f64().unwrap(),
         );
-        // h z1 f_in = f_n to rounding (one multiply and one divide).
-        assert!((h * 19.0 * v - f).abs() <= 1e-12 * f, "{c}");
+        // k z1 f_in = f_p to rounding (one multiply and one divide).
+        assert!((k * 19.0 * v - f).abs() <= 1e-12 * f, "{c}");
     }
 }

@@ -160,3 +160,44 @@ fn halving_block_and_threshold_changes_final_wear_by_less_than_two_percent() {
     let rel = (a - b).abs() / b;
     assert!(rel < 0.02, "final max wear {a} vs {b}: {rel}");
 }
+
+#[test]
+fn a_failing_wear_run_stops_its_sibling_and_its_own_error_is_reported() {
+    // The dynamic run fails at its first update (as a failed checkpoint write would); the
+    // quasi-static twin, which would take 1e4 updates, must stop at its next update and
+    // the error returned must be the dynamic run's own.
+    use gearwear::study::wear_loop::run_wear_modes;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let m = Model::from_case(
+        &load_case(
+            "",
+            &[
+                "wear.total_cycles=1e8".into(),
+                "wear.block_cycles=1e4".into(),
+            ],
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let qs_updates = AtomicUsize::new(0);
+    let r = run_wear_modes(
+        &m,
+        vec![
+            WearRun::new(WearMode::Dynamic),
+            WearRun::new(WearMode::QuasiStatic),
+        ],
+        &|mode, _| {
+            if mode == WearMode::Dynamic {
+                anyhow::bail!("disk full (injected)");
+            }
+            qs_updates.fetch_add(1, Ordering::Relaxed);
+            Ok(())
+        },
+    );
+    let e = r.expect_err("the dynamic failure is reported");
+    assert!(e.to_string().contains("injected"), "{e}");
+    // The dynamic run's first update costs one steady state (tens of ms); the
+    // quasi-static one costs well under a millisecond per update, so it may get a few
+    // hundred updates in, never the 1e4 of the whole study.
+    assert!(qs_updates.load(Ordering::Relaxed) < 5000);
+}

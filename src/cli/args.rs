@@ -134,6 +134,14 @@ pub enum SweepRunArg {
     Wear,
 }
 
+/// `--continuation`: which solution branches a one-parameter sweep follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ContinuationArg {
+    Up,
+    Down,
+    Both,
+}
+
 #[derive(Debug, Args)]
 pub struct SweepArgs {
     #[command(flatten)]
@@ -156,6 +164,12 @@ pub struct SweepArgs {
     /// outputs are then named sweep_shard_I_of_N.*.
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
+    /// Follow solution branches: run the single --vary axis in order (up: rising values,
+    /// down: falling, both: the two branches), each point started from the periodic state
+    /// of the point before; sweep.csv gets a `branch` column. One --vary, --run dynamics,
+    /// no --shard.
+    #[arg(long, value_enum, value_name = "BRANCHES")]
+    pub continuation: Option<ContinuationArg>,
 }
 
 #[derive(Debug, Args)]

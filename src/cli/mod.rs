@@ -10,7 +10,10 @@ mod progress;
 mod resume;
 mod run_cmd;
 mod stiffness_cmd;
+mod stops;
 mod sweep_cmd;
+mod sweep_continuation;
+mod sweep_merge_cmd;
 mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
@@ -30,7 +33,7 @@ pub fn main() -> ExitCode {
         Command::Wear(a) => wear_cmd::run(a),
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),
-        Command::SweepMerge(a) => sweep_cmd::merge(a),
+        Command::SweepMerge(a) => sweep_merge_cmd::merge(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

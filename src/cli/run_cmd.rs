@@ -3,43 +3,39 @@
 use super::args::RunArgs;
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
-use super::resume::starting_runs;
+use super::resume::{starting_runs, Checkpoints};
+use super::stops::report_stops;
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_bytes, checkpoint_name};
 use crate::io::RunMetadata;
 use crate::report::paper::run_artifacts;
 use crate::study::paper::run_paper_study;
 use crate::study::wear_loop::{WearMode, WearRun};
-use std::sync::Mutex;
 
 pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
     let model = build_model(&case)?;
     let meta = RunMetadata::new("run", &case);
     let modes = [WearMode::Dynamic, WearMode::QuasiStatic];
-    let mut starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256)?.into_iter();
-    let out = open_out(&a.out, "run")?;
+    let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
+    let mut out = open_out(&a.out, "run")?;
+    let checkpoints = Checkpoints::open(&mut out, &starts, &meta.case_sha256)?;
+    let mut runs = starts.into_iter().map(|s| s.run);
     let (d0, q0) = (
-        starts.next().unwrap_or(WearRun::new(WearMode::Dynamic)),
-        starts.next().unwrap_or(WearRun::new(WearMode::QuasiStatic)),
+        runs.next().unwrap_or(WearRun::new(WearMode::Dynamic)),
+        runs.next().unwrap_or(WearRun::new(WearMode::QuasiStatic)),
     );
     let bars_group = multi();
     let bars = modes.map(|m| wear_bar(&bars_group, case.wear.total_cycles, m));
-    let out = Mutex::new(out);
-    let ckpt = |mode: WearMode, run: &WearRun| -> anyhow::Result<()> {
-        let bytes = checkpoint_bytes(&meta.case_sha256, run);
-        out.lock()
-            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
-            .write_state(&checkpoint_name(mode), &bytes)?;
+    let on_update = |mode: WearMode, run: &WearRun| -> anyhow::Result<()> {
+        checkpoints.record(run)?;
         show_wear(&bars[usize::from(mode == WearMode::QuasiStatic)], run);
         Ok(())
     };
-    let study = run_paper_study(&model, d0, q0, &ckpt)?;
+    let study = run_paper_study(&model, d0, q0, &on_update)?;
     for b in &bars {
         b.finish_and_clear();
     }
-    let out = out
-        .into_inner()
-        .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
-    finish(out, run_artifacts(&model, &study, &meta), &meta)
+    drop(checkpoints);
+    finish(out, run_artifacts(&model, &study, &meta), &meta)?;
+    report_stops(&[&study.dynamic, &study.quasi_static])
 }

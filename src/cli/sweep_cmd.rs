@@ -1,25 +1,27 @@
 //! `gearwear sweep`: the cross product of `--vary` axes, run in parallel, one row per
-//! case; resumable (finished cases are skipped) and shardable. `gearwear sweep-merge`:
-//! joins shard tables.
+//! case; resumable (finished cases are skipped) and shardable; or, with `--continuation`,
+//! one axis followed in order along its solution branches (`sweep_continuation`).
+//! `gearwear sweep-merge` (`sweep_merge_cmd`) joins shard tables.
 //!
 //! Output directory layout (STEM = `sweep`, or `sweep_shard_I_of_N` with `--shard`):
 //! `cases/<case_id>.json` (one per finished case, written first, atomically),
 //! `STEM.csv` (this shard's rows by case id), `STEM.json` (what was run: axes, base case,
-//! natural frequencies, failures), `STEM.png` (speed sweeps only).
+//! modes, failures), `STEM.png` (speed and continuation sweeps).
 
-use super::args::{CaseArgs, SweepArgs, SweepMergeArgs, SweepRunArg};
+use super::args::{CaseArgs, SweepArgs, SweepRunArg};
 use super::output::say;
+use super::sweep_continuation::{continuation_of, run_branches};
 use super::CliError;
 use crate::config::{load_case, schema, Case};
-use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::modal::modes;
 use crate::io::atomic::ensure_real_dir;
 use crate::io::{write_atomic, OutputDir, RunMetadata};
 use crate::report::artifacts::{stage_figures, Artifacts};
-use crate::report::sweep::{speed_figure, SWEEP_FIGURE_PX};
+use crate::report::modes::modes_json;
+use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
+use crate::study::sweep::resonance::speed_marks;
 use crate::study::sweep::{
-    crossings, parse_vary, run_case, CaseError, CaseRecord, Crossing, Shard, SweepPlan, SweepRun,
-    SweepTable, SPEED_KEY,
+    parse_vary, run_case, CaseError, CaseRecord, ContinuationLink, Shard, SweepPlan, SweepRun,
+    SweepTable,
 };
 use crate::study::Model;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -30,16 +32,16 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// Mesh harmonics whose crossings with the natural frequencies are marked.
-const MARKED_HARMONICS: u32 = 3;
-
 /// One case of this shard, resolved and validated.
-struct Planned {
-    id: usize,
-    values: Vec<String>,
-    case: Case,
-    hash: String,
+pub(super) struct Planned {
+    pub id: usize,
+    pub values: Vec<String>,
+    pub case: Case,
+    pub hash: String,
 }
+
+/// What ran now: each case id with its warnings or its error.
+pub(super) type Outcomes = Vec<(usize, Result<Vec<String>, CaseError>)>;
 
 fn describe(keys: &[String], values: &[String]) -> String {
     keys.iter()
@@ -96,16 +98,31 @@ fn plan_of(a: &SweepArgs, text: &str) -> Result<SweepPlan, CliError> {
     }
 }
 
-fn case_path(dir: &Path, id: usize) -> PathBuf {
+pub(super) fn case_path(dir: &Path, id: usize) -> PathBuf {
     dir.join("cases").join(format!("{id}.json"))
 }
 
 /// The record of a finished case, if `cases/<id>.json` holds this very case's result.
 fn finished(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Option<CaseRecord> {
-    let text = std::fs::read_to_string(case_path(dir, p.id)).ok()?;
-    let r: CaseRecord = serde_json::from_str(&text).ok()?;
+    let r = CaseRecord::read(&case_path(dir, p.id)).ok()??;
     r.is_result_of(p.id, &p.hash, run, keys, &p.values)
         .then_some(r)
+}
+
+/// Every case file of the plan that exists must read back whole and unedited
+/// (`CaseRecord::verify`); a record of another case (changed base case or values) is
+/// fine: it is recomputed and replaced.
+fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), CliError> {
+    let problems: Vec<String> = planned
+        .iter()
+        .filter_map(|p| CaseRecord::read(&case_path(dir, p.id)).err())
+        .map(|e| format!("{e}; delete it to recompute that case"))
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Input(problems))
+    }
 }
 
 fn progress_bar(n: usize) -> ProgressBar {
@@ -125,14 +142,16 @@ fn progress_bar(n: usize) -> ProgressBar {
     pb
 }
 
-/// Run one case and write its record; the record is the first and only file a case writes.
-fn run_one(
+/// Write the record of a finished case (or continuation point); the record is the first
+/// and only file a case writes.
+pub(super) fn write_record(
     dir: &Path,
     p: &Planned,
     run: SweepRun,
     keys: &[String],
-) -> Result<Vec<String>, CaseError> {
-    let o = run_case(&p.case, run)?;
+    results: &[f64],
+    continuation: Option<ContinuationLink>,
+) -> Result<CaseRecord, CaseError> {
     let rec = CaseRecord {
         case_id: p.id,
         case_sha256: p.hash.clone(),
@@ -140,35 +159,29 @@ fn run_one(
         keys: keys.to_vec(),
         values: p.values.clone(),
         columns: run.columns(),
-        results: o
-            .results
+        results: results
             .iter()
             .map(|x| x.is_finite().then_some(*x))
             .collect(),
-    };
+        continuation,
+        checksum: None,
+    }
+    .sealed();
     let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
     write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
-    Ok(o.warnings)
+    Ok(rec)
 }
 
-/// Natural frequencies of the base case (modes of the model linearised at the mean mesh
-/// stiffness, new teeth) and the crossings h z1 f_in = f_n inside the swept speed range.
-fn speed_crossings(base: &Case, plan: &SweepPlan) -> Option<(Vec<f64>, Vec<Crossing>)> {
-    let axis = plan.axes.iter().find(|x| x.key == SPEED_KEY)?;
-    let speeds: Vec<f64> = axis.values.iter().filter_map(|v| v.parse().ok()).collect();
-    let lo = speeds.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = speeds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let model = match Model::from_case(base) {
-        Ok(m) => m,
-        Err(e) => {
-            eprintln!("warning: no resonance markers: the base case has no model: {e}");
-            return None;
-        }
-    };
-    let (gap, ext) = (PairGap::none(), ExternalError::none());
-    let f_n = modes(&model.system(&gap, &ext, model.roughness.rms_um(0.0))).frequency_hz;
-    let c = crossings(&f_n, model.pair.pinion.teeth, MARKED_HARMONICS, lo, hi);
-    Some((f_n, c))
+/// Run one case and write its record.
+fn run_one(
+    dir: &Path,
+    p: &Planned,
+    run: SweepRun,
+    keys: &[String],
+) -> Result<Vec<String>, CaseError> {
+    let o = run_case(&p.case, run)?;
+    write_record(dir, p, run, keys, &o.results, None)?;
+    Ok(o.warnings)
 }
 
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
@@ -184,16 +197,25 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         Some(s) => Shard::parse(s).map_err(CliError::input)?,
         None => Shard::ALL,
     };
+    let continuation = continuation_of(a, &plan)?;
     let keys = plan.keys();
-    let ids = shard.ids(plan.len());
+    // Case ids with their plan index: a continuation point's id numbers it in run order.
+    let ids: Vec<(usize, usize)> = match &continuation {
+        None => shard.ids(plan.len()).into_iter().map(|i| (i, i)).collect(),
+        Some(c) => c
+            .branches
+            .iter()
+            .flat_map(|(_, p)| p.iter().map(|x| (x.case_id, x.value_index)))
+            .collect(),
+    };
 
     // Resolve and validate every case of the shard (and its model) before running any.
     let resolved: Vec<Result<Planned, String>> = ids
         .par_iter()
-        .map(|&id| {
-            let values = plan.values_of(id);
+        .map(|&(id, index)| {
+            let values = plan.values_of(index);
             let mut sets = a.case.set.clone();
-            sets.extend(plan.overrides_of(id));
+            sets.extend(plan.overrides_of(index));
             let what = || format!("case {id} ({})", describe(&keys, &values));
             let case = load_case(&text, &sets)
                 .map_err(|e| format!("{}: {}", what(), e.problems.join("; ")))?;
@@ -213,6 +235,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
+    check_case_files(&a.out, &planned)?;
     let (done, pending): (Vec<&Planned>, Vec<&Planned>) = planned
         .iter()
         .partition(|p| finished(&a.out, p, run_kind, &keys).is_some());
@@ -231,66 +254,102 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let mut out = OutputDir::open(&a.out, Some(&stem), "sweep")?;
     ensure_real_dir(&a.out, &a.out.join("cases"))?;
 
-    eprintln!(
-        "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
-        plan.len(),
-        planned.len(),
-        shard.index,
-        shard.count,
-        done.len(),
-        pending.len(),
-        rayon::current_num_threads()
-    );
-    let pb = progress_bar(pending.len());
-    let outcomes: Vec<(usize, Result<Vec<String>, CaseError>)> = pending
-        .par_iter()
-        .map(|p| {
-            let r = run_one(&a.out, p, run_kind, &keys);
-            pb.inc(1);
-            (p.id, r)
+    let (outcomes, records, skipped) = if let Some(c) = &continuation {
+        eprintln!(
+            "sweep: continuation along {} ({} branch(es), {} points; points finished from the same start state are skipped)",
+            keys.join(", "),
+            c.branches.len(),
+            c.len()
+        );
+        let pb = progress_bar(c.len());
+        let r = run_branches(&a.out, c, &planned, &keys, &pb);
+        pb.finish_and_clear();
+        r
+    } else {
+        eprintln!(
+            "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
+            plan.len(),
+            planned.len(),
+            shard.index,
+            shard.count,
+            done.len(),
+            pending.len(),
+            rayon::current_num_threads()
+        );
+        let pb = progress_bar(pending.len());
+        let outcomes: Outcomes = pending
+            .par_iter()
+            .map(|p| {
+                let r = run_one(&a.out, p, run_kind, &keys);
+                pb.inc(1);
+                (p.id, r)
+            })
+            .collect();
+        pb.finish_and_clear();
+        // The table is rebuilt from the case files, so a rerun's table holds every case.
+        let records: Vec<CaseRecord> = planned
+            .iter()
+            .filter_map(|p| finished(&a.out, p, run_kind, &keys))
+            .collect();
+        (outcomes, records, done.len())
+    };
+    let values_of: BTreeMap<usize, &Vec<String>> =
+        planned.iter().map(|p| (p.id, &p.values)).collect();
+    let branch_of = |id: usize| {
+        continuation.as_ref().and_then(|c| {
+            c.branches
+                .iter()
+                .find(|(_, p)| p.iter().any(|x| x.case_id == id))
+                .map(|(b, _)| b.name())
         })
-        .collect();
-    pb.finish_and_clear();
+    };
 
     let mut warnings: BTreeMap<String, usize> = BTreeMap::new();
     let mut failed = Vec::new();
+    let ran = outcomes.len();
     for (id, r) in outcomes {
         match r {
             Ok(w) => w
                 .into_iter()
                 .for_each(|w| *warnings.entry(w).or_default() += 1),
-            Err(e) => failed
-                .push(json!({"case_id": id, "values": plan.values_of(id), "error": e.to_string()})),
+            Err(e) => failed.push(json!({
+                "case_id": id,
+                "values": values_of.get(&id),
+                "branch": branch_of(id),
+                "error": e.to_string(),
+            })),
         }
     }
     for (w, n) in &warnings {
         eprintln!("warning ({n} case(s)): {w}");
     }
 
-    // The table is rebuilt from the case files, so a rerun's table holds every case.
-    let records: Vec<CaseRecord> = planned
-        .iter()
-        .filter_map(|p| finished(&a.out, p, run_kind, &keys))
-        .collect();
-    for p in &planned {
-        if records.iter().any(|r| r.case_id == p.id) {
-            out.keep_state(&format!("cases/{}.json", p.id));
-        }
+    let computed = ran - failed.len();
+    for r in &records {
+        out.keep_state(&format!("cases/{}.json", r.case_id));
     }
     let table = SweepTable::from_records(keys.clone(), run_kind.columns(), &records);
     let csv_path = a.out.join(format!("{stem}.csv"));
-    let mut art = Artifacts::default();
     out.stage(
         &format!("{stem}.csv"),
         &table.to_csv().map_err(anyhow::Error::from)?,
     )?;
 
-    let speed = speed_crossings(&base, &plan);
-    if let Some((_, marks)) = &speed {
-        if let Some(fig) = speed_figure(&table, marks) {
-            let (w, h) = SWEEP_FIGURE_PX;
-            art.figure_sized(format!("{stem}.png"), fig, w, h);
+    let speed = match Model::from_case(&base) {
+        Ok(m) => speed_marks(&m, &plan),
+        Err(e) => {
+            eprintln!("warning: no resonance markers: the base case has no model: {e}");
+            None
         }
+    };
+    let poles = speed
+        .as_ref()
+        .map_or_else(Vec::new, |m| m.modal.mesh_pole_frequencies_hz());
+    let marks = speed.as_ref().map_or(&[][..], |m| &m.crossings[..]);
+    let mut art = Artifacts::default();
+    if let Some(fig) = figure_for(&table, marks, &poles) {
+        let (w, h) = SWEEP_FIGURE_PX;
+        art.figure_sized(format!("{stem}.png"), fig, w, h);
     }
     let wall_s = started.elapsed().as_secs_f64();
     let meta = json!({
@@ -300,12 +359,13 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         "total_cases": plan.len(),
         "shard": {"index": shard.index, "count": shard.count, "scheme": "round-robin: case_id mod count = index - 1"},
         "cases_in_shard": planned.len(),
-        "skipped_finished": done.len(),
-        "computed": pending.len() - failed.len(),
+        "continuation": a.continuation.map(|c| format!("{c:?}").to_lowercase()),
+        "skipped_finished": skipped,
+        "computed": computed,
         "failed": failed,
         "rows": table.rows.len(),
-        "natural_frequencies_hz": speed.as_ref().map(|s| s.0.clone()),
-        "resonance_crossings": speed.as_ref().map(|s| s.1.clone()),
+        "modes": speed.as_ref().map(|s| modes_json(&s.modal)),
+        "resonance_crossings": speed.as_ref().map(|s| s.crossings.clone()),
         "wall_time_s": wall_s,
         "threads": rayon::current_num_threads(),
         "base": RunMetadata::new("sweep", &base),
@@ -316,16 +376,16 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     say(&format!(
         "sweep: {} rows ({} computed, {} skipped, {} failed)",
         table.rows.len(),
-        pending.len() - failed.len(),
-        done.len(),
+        computed,
+        skipped,
         failed.len()
     ));
     eprintln!(
         "sweep: {} rows -> {} ({} computed, {} skipped, {} failed; {:.1} s)",
         table.rows.len(),
         csv_path.display(),
-        pending.len() - failed.len(),
-        done.len(),
+        computed,
+        skipped,
         failed.len(),
         wall_s
     );
@@ -336,160 +396,16 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             .iter()
             .map(|f| format!("case {}: {}", f["case_id"], f["error"]))
             .collect();
+        let rerun = if continuation.is_some() {
+            "each branch went on from the last point that succeeded; rerun to retry them"
+        } else {
+            "rerun to retry them; finished cases are skipped"
+        };
         Err(CliError::Failed(anyhow::anyhow!(
-            "{} of {} cases failed (rerun to retry them; finished cases are skipped):\n  {}",
+            "{} of {} cases failed ({rerun}):\n  {}",
             failed.len(),
             planned.len(),
             list.join("\n  ")
         )))
     }
-}
-
-/// The sweep tables of a merge input: a CSV file, or a directory's `sweep.csv` and
-/// `sweep_shard_*_of_*.csv`. Each comes with its `.json` description when present.
-fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, CliError> {
-    if input.is_file() {
-        return Ok(vec![input.to_path_buf()]);
-    }
-    if !input.is_dir() {
-        return Err(CliError::input(format!(
-            "sweep-merge: {} does not exist",
-            input.display()
-        )));
-    }
-    let mut found: Vec<PathBuf> = std::fs::read_dir(input)
-        .map_err(|e| CliError::input(format!("sweep-merge: cannot read {}: {e}", input.display())))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            let n = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
-            n == "sweep.csv" || (n.starts_with("sweep_shard_") && n.ends_with(".csv"))
-        })
-        .collect();
-    found.sort();
-    if found.is_empty() {
-        return Err(CliError::input(format!(
-            "sweep-merge: {} holds no sweep.csv or sweep_shard_*_of_*.csv",
-            input.display()
-        )));
-    }
-    Ok(found)
-}
-
-pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
-    let mut tables = Vec::new();
-    let mut metas: Vec<(String, serde_json::Value)> = Vec::new();
-    for input in &a.inputs {
-        for csv in merge_inputs(input)? {
-            let src = csv.display().to_string();
-            let text = std::fs::read_to_string(&csv)
-                .map_err(|e| CliError::input(format!("sweep-merge: {src}: cannot read: {e}")))?;
-            let t = SweepTable::from_csv(&text)
-                .map_err(|e| CliError::input(format!("sweep-merge: {src}: {e}")))?;
-            if let Some(m) = std::fs::read_to_string(csv.with_extension("json"))
-                .ok()
-                .and_then(|s| serde_json::from_str::<serde_json::Value>(&s).ok())
-            {
-                metas.push((src.clone(), m));
-            }
-            tables.push((src, t));
-        }
-    }
-    let merged =
-        SweepTable::merge(&tables).map_err(|e| CliError::input(format!("sweep-merge: {e}")))?;
-    // Descriptions present must agree on the sweep itself (axes, run, base case): shards
-    // of different sweeps can have disjoint case ids and would otherwise merge silently.
-    let identity = |m: &serde_json::Value| {
-        json!([
-            m["vary"],
-            m["run"],
-            m["base"]["case_sha256"],
-            m["total_cases"]
-        ])
-    };
-    if let Some((src0, m0)) = metas.iter().find(|(_, m)| m["command"] == "sweep") {
-        for (src, m) in metas.iter().filter(|(_, m)| m["command"] == "sweep") {
-            if identity(m) != identity(m0) {
-                return Err(CliError::input(format!(
-                    "sweep-merge: mixed sweeps: {src} and {src0} come from different sweeps (axes, run kind, base case or size differ)"
-                )));
-            }
-        }
-    }
-    // `--out DIR` writes DIR/sweep.*; `--out FILE.csv` writes FILE.* beside it.
-    let (dir, stem) = if a.out.extension().is_some_and(|e| e == "csv") {
-        let dir = a
-            .out
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .unwrap_or(Path::new("."))
-            .to_path_buf();
-        let stem = a
-            .out
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_else(|| "sweep".into());
-        (dir, stem)
-    } else {
-        (a.out.clone(), "sweep".to_owned())
-    };
-    let mut out = OutputDir::open(&dir, Some(&stem), "sweep-merge")?;
-    let csv_path = dir.join(format!("{stem}.csv"));
-    out.stage(
-        &format!("{stem}.csv"),
-        &merged.to_csv().map_err(anyhow::Error::from)?,
-    )?;
-
-    let total = metas
-        .iter()
-        .find_map(|(_, m)| m["total_cases"].as_u64())
-        .map(|n| n as usize);
-    let have: std::collections::BTreeSet<usize> = merged.rows.iter().map(|r| r.case_id).collect();
-    let missing: Vec<usize> =
-        total.map_or_else(Vec::new, |n| (0..n).filter(|i| !have.contains(i)).collect());
-    if !missing.is_empty() {
-        eprintln!(
-            "warning: {} of {} cases missing from the merged table (first: {:?}); rerun their shards",
-            missing.len(),
-            total.unwrap_or(0),
-            &missing[..missing.len().min(10)]
-        );
-    }
-    let marks: Option<Vec<Crossing>> = metas
-        .iter()
-        .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
-    let mut art = Artifacts::default();
-    if let Some(fig) = speed_figure(&merged, marks.as_deref().unwrap_or(&[])) {
-        let (w, h) = SWEEP_FIGURE_PX;
-        art.figure_sized(format!("{stem}.png"), fig, w, h);
-    }
-    stage_figures(&mut out, &art.figures)?;
-    let first = metas
-        .iter()
-        .find(|(_, m)| m["command"] == "sweep")
-        .map(|(_, m)| m.clone());
-    let meta = json!({
-            "command": "sweep-merge",
-            "inputs": tables.iter().map(|(s, _)| s.clone()).collect::<Vec<_>>(),
-            "rows": merged.rows.len(),
-            "total_cases": total,
-            "missing_case_ids": missing,
-            "vary": first.as_ref().map(|m| m["vary"].clone()),
-            "run": first.as_ref().map(|m| m["run"].clone()),
-            "resonance_crossings": first.as_ref().map(|m| m["resonance_crossings"].clone()),
-            "base": first.as_ref().map(|m| m["base"].clone()),
-    });
-    out.stage_json(&format!("{stem}.json"), &meta)?;
-    out.publish()?;
-    say(&format!(
-        "sweep-merge: {} rows from {} table(s)",
-        merged.rows.len(),
-        tables.len()
-    ));
-    eprintln!(
-        "sweep-merge: {} table(s), {} rows -> {}",
-        tables.len(),
-        merged.rows.len(),
-        csv_path.display()
-    );
-    Ok(())
 }

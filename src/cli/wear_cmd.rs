@@ -4,13 +4,12 @@
 use super::args::{WearArgs, WearModeArg};
 use super::output::{build_model, finish, open_out};
 use super::progress::{multi, show_wear, wear_bar};
-use super::resume::starting_runs;
+use super::resume::{starting_runs, Checkpoints};
+use super::stops::report_stops;
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_bytes, checkpoint_name};
 use crate::io::RunMetadata;
 use crate::report::wear::wear_artifacts;
 use crate::study::wear_loop::{run_wear_modes, WearMode, WearRun};
-use std::sync::Mutex;
 
 pub fn run(a: &WearArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
@@ -21,30 +20,30 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
         WearModeArg::QuasiStatic => vec![WearMode::QuasiStatic],
         WearModeArg::Both => vec![WearMode::Dynamic, WearMode::QuasiStatic],
     };
-    let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256)?;
-    let out = open_out(&a.out, "wear")?;
+    let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
+    let mut out = open_out(&a.out, "wear")?;
+    let checkpoints = Checkpoints::open(&mut out, &starts, &meta.case_sha256)?;
     let bars_group = multi();
     let bars: Vec<_> = modes
         .iter()
         .map(|m| (*m, wear_bar(&bars_group, case.wear.total_cycles, *m)))
         .collect();
-    let out = Mutex::new(out);
-    let runs = run_wear_modes(&model, starts, &|mode, run: &WearRun| {
-        let bytes = checkpoint_bytes(&meta.case_sha256, run);
-        out.lock()
-            .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?
-            .write_state(&checkpoint_name(mode), &bytes)?;
-        if let Some((_, pb)) = bars.iter().find(|(m, _)| *m == mode) {
-            show_wear(pb, run);
-        }
-        Ok(())
-    })?;
+    let runs = run_wear_modes(
+        &model,
+        starts.into_iter().map(|s| s.run).collect(),
+        &|mode, run: &WearRun| {
+            checkpoints.record(run)?;
+            if let Some((_, pb)) = bars.iter().find(|(m, _)| *m == mode) {
+                show_wear(pb, run);
+            }
+            Ok(())
+        },
+    )?;
     for (_, pb) in &bars {
         pb.finish_and_clear();
     }
-    let out = out
-        .into_inner()
-        .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
+    drop(checkpoints);
     let refs: Vec<&WearRun> = runs.iter().collect();
-    finish(out, wear_artifacts(&model, &refs), &meta)
+    finish(out, wear_artifacts(&model, &refs), &meta)?;
+    report_stops(&refs)
 }

@@ -324,8 +324,11 @@ impl Default for WearSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct NumericsSection {
-    /// Integration steps per mesh period (fixed, aligned with the mesh events).
+    /// Grid nodes per mesh period, aligned with the mesh events: the longest step and
+    /// the fewest recorded samples per period.
     pub steps_per_mesh_period: i64,
+    /// Local error per integration step relative to the state's scales.
+    pub integration_tolerance: f64,
     /// Give up on steady state after this many mesh periods.
     pub max_mesh_periods: i64,
     /// Steady state: relative change of the state over one mesh period below this.
@@ -338,6 +341,7 @@ impl Default for NumericsSection {
     fn default() -> Self {
         Self {
             steps_per_mesh_period: 200,
+            integration_tolerance: 1e-5,
             max_mesh_periods: 2000,
             steady_state_tolerance: 1e-6,
             evaluated_mesh_periods: 4,

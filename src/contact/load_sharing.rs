@@ -14,24 +14,48 @@
 
 use crate::geometry::GearPair;
 
-/// Share of the mesh force carried by the pair at LOA position `rho1_m`, paper eq. (7).
+/// Share of the mesh force of the pair in its approach ramp (the pair that entered
+/// contact last, in double contact), paper eq. (7) first line:
+/// kappa = 1/3 (1 + (zeta - zeta_ini) / (epsilon - 1)), from 1/3 at entry to 2/3.
+fn approach_share(pair: &GearPair, rho1_m: f64) -> f64 {
+    let zeta = (rho1_m - pair.rho_start_m) / pair.base_pitch_m;
+    (1.0 + zeta / (pair.contact_ratio - 1.0)) / 3.0
+}
+
+/// Share of the pair in its recess ramp (the pair about to leave, in double contact),
+/// paper eq. (7) third line: kappa = 1/3 (1 + (zeta - zeta_a) / (1 - epsilon)), from 2/3
+/// down to 1/3 at exit.
+fn recess_share(pair: &GearPair, rho1_m: f64) -> f64 {
+    let zeta_to_exit = (rho1_m - pair.rho_end_m) / pair.base_pitch_m;
+    (1.0 + zeta_to_exit / (1.0 - pair.contact_ratio)) / 3.0
+}
+
+/// Shares of the mesh force of the pairs in contact at one instant, paper eq. (7).
 ///
-/// Positions outside the path of contact return 0. Dimensionless, in [1/3, 1].
-pub fn pedrero_share(pair: &GearPair, rho1_m: f64) -> f64 {
-    let pb = pair.base_pitch_m;
-    let zeta = rho1_m / pb;
-    let zeta_ini = pair.rho_start_m / pb;
-    let zeta_a = zeta_ini + pair.contact_ratio;
-    let eps = pair.contact_ratio;
-    let tol = 1e-12;
-    if zeta < zeta_ini - tol || zeta > zeta_a + tol {
-        0.0
-    } else if zeta <= zeta_a - 1.0 {
-        (1.0 + (zeta - zeta_ini) / (eps - 1.0)) / 3.0
-    } else if zeta <= zeta_ini + 1.0 {
-        1.0
-    } else {
-        (1.0 + (zeta - zeta_a) / (1.0 - eps)) / 3.0
+/// `rho1_m` lists the positions of the pairs of the contact set actually decided, from
+/// the pair that entered last (smallest rho1) to the one ahead of it; the shares are
+/// written to `out` (dimensionless). The set decides the branch of eq. (7), not the
+/// positions: one pair carries the whole load (the middle line), of two pairs the one
+/// behind is on the approach ramp and the one ahead on the recess ramp. At a mesh event
+/// (pair entry or exit) the positions sit exactly on the boundary between two branches
+/// and round-off would otherwise pick either; by the set, the shares always sum to 1
+/// (kappa(zeta) + kappa(zeta + 1) = 1 holds identically for the two ramps).
+/// Defined for 1 < epsilon < 2, so at most two pairs (`study::Model` rejects other pairs
+/// for this law).
+pub fn pedrero_shares(pair: &GearPair, rho1_m: &[f64], out: &mut [f64]) {
+    match rho1_m.len() {
+        0 => {}
+        1 => out[0] = 1.0,
+        2 => {
+            out[0] = approach_share(pair, rho1_m[0]);
+            out[1] = recess_share(pair, rho1_m[1]);
+        }
+        n => {
+            // Outside eq. (7)'s range: an equal split keeps the sum (never reached).
+            for o in out.iter_mut().take(n) {
+                *o = 1.0 / n as f64;
+            }
+        }
     }
 }
 
@@ -60,29 +84,54 @@ mod tests {
         GearPair::from_case(&GearSection::default()).unwrap()
     }
 
+    /// Pedrero shares of the contact set at `phase` decided at `decide` (rad).
+    fn shares_at(p: &GearPair, phase: f64, decide: f64) -> Vec<f64> {
+        let rho: Vec<f64> = p
+            .pairs_in_contact_decided(phase, decide)
+            .map(|(_, r)| r)
+            .collect();
+        let mut out = vec![0.0; rho.len()];
+        pedrero_shares(p, &rho, &mut out);
+        out
+    }
+
     #[test]
-    fn pedrero_shares_sum_to_one_in_double_contact() {
-        // Invariant of eq. (7): the two pairs carry the whole load.
+    fn pedrero_shares_sum_to_one_everywhere_including_mesh_events() {
+        // Invariant of eq. (7): the pairs in contact carry the whole load. The mesh events
+        // (entry at phase 0, exit at (eps - 1) period) are checked exactly, with the set
+        // decided on either side of them, as the solvers record them.
         let p = pair();
-        let n = 200;
-        for i in 0..=n {
-            let phase = p.mesh_angle_rad() * i as f64 / n as f64;
-            let s: f64 = p
-                .pairs_in_contact(phase)
-                .map(|(_, r)| pedrero_share(&p, r))
-                .sum();
-            assert!((s - 1.0).abs() < 1e-9, "phase {phase}: {s}");
+        let period = p.mesh_angle_rad();
+        let exit = (p.contact_ratio - 1.0) * period;
+        let d = 1e-9 * period;
+        let mut phases: Vec<(f64, f64)> = (0..=200)
+            .map(|i| period * i as f64 / 200.0)
+            .map(|ph| (ph, ph))
+            .collect();
+        for ev in [0.0, exit, period] {
+            phases.extend([(ev, ev - d), (ev, ev + d), (ev, ev)]);
+        }
+        for (phase, decide) in phases {
+            let s: f64 = shares_at(&p, phase, decide).iter().sum();
+            assert!((s - 1.0).abs() < 1e-12, "phase {phase}: {s}");
         }
     }
 
     #[test]
     fn pedrero_end_values() {
-        // 1/3 where a pair enters and leaves, 2/3 at the inner ends of double contact.
+        // 1/3 where a pair enters and leaves, 2/3 at the inner ends of double contact,
+        // 1 in single contact.
         let p = pair();
-        assert!((pedrero_share(&p, p.rho_start_m) - 1.0 / 3.0).abs() < 1e-12);
-        assert!((pedrero_share(&p, p.rho_end_m) - 1.0 / 3.0).abs() < 1e-12);
-        let inner = p.rho_end_m - p.base_pitch_m;
-        assert!((pedrero_share(&p, inner - 1e-12) - 2.0 / 3.0).abs() < 1e-9);
+        let period = p.mesh_angle_rad();
+        let exit = (p.contact_ratio - 1.0) * period;
+        let d = 1e-9 * period;
+        // Right after entry: the new pair 1/3, the pair ahead 2/3.
+        let s = shares_at(&p, 0.0, d);
+        assert!((s[0] - 1.0 / 3.0).abs() < 1e-12 && (s[1] - 2.0 / 3.0).abs() < 1e-12);
+        // Right before exit: 2/3 and 1/3; right after it one pair carries all.
+        let s = shares_at(&p, exit, exit - d);
+        assert!((s[0] - 2.0 / 3.0).abs() < 1e-12 && (s[1] - 1.0 / 3.0).abs() < 1e-12);
+        assert_eq!(shares_at(&p, exit, exit + d), vec![1.0]);
     }
 
     #[test]

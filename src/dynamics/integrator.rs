@@ -1,13 +1,16 @@
-//! Fixed-step integrators for small first-order ODE systems `y' = f(t, y)` with
+//! One-step integrators for small first-order ODE systems `y' = f(t, y)` with
 //! `y` an `nalgebra::SVector<f64, N>` (`N = 16` for the 8-DOF gear model: 8 displacements
 //! and 8 velocities).
 //!
-//! * [`Sdirk`]: 3-stage, order-3, L-stable, stiffly accurate SDIRK (Alexander 1977, see
-//!   [`tableau`]) with simplified Newton iterations. Meant for the stiff gear model whose
-//!   eigenvalues reach about -1.4e8 1/s while the step is a mesh period / 100-400
-//!   (~1e-5 s), i.e. `h*lambda ~ -1e3`: explicit methods are unstable there and A-stable
-//!   but not L-stable methods (trapezoidal rule) leave the stiff modes ringing with
-//!   `|R| -> 1`.
+//! * [`Sdirk`]: L-stable, stiffly accurate diagonally implicit Runge-Kutta methods with
+//!   simplified Newton iterations, for the tableaux of [`tableau`]: Alexander's 3-stage
+//!   order-3 SDIRK (fixed steps, [`Sdirk::new`]) and the ESDIRK3(2) pair of Kennedy &
+//!   Carpenter, whose embedded solution estimates the local error for step size control
+//!   ([`Sdirk::try_step`], [`Sdirk::accept`]; the gear model's solver,
+//!   `dynamics::period`). Meant for the stiff gear model whose eigenvalues reach about
+//!   -1.4e8 1/s while steps are ~1e-6-1e-4 s, i.e. `h*lambda ~ -1e2 to -1e4`: explicit
+//!   methods are unstable there and A-stable but not L-stable methods (trapezoidal rule)
+//!   leave the stiff modes ringing with `|R| -> 1`.
 //! * [`Rk4`]: the classical explicit fourth-order Runge-Kutta method, for non-stiff
 //!   problems and as a second method in tests.
 //!
@@ -40,6 +43,7 @@ use nalgebra::{SMatrix, SVector};
 use thiserror::Error;
 
 mod lu;
+mod options;
 mod rk4;
 mod sdirk;
 pub mod tableau;
@@ -47,12 +51,14 @@ pub mod tableau;
 #[cfg(test)]
 mod tests_cost;
 #[cfg(test)]
+mod tests_esdirk;
+#[cfg(test)]
 mod tests_linear;
 #[cfg(test)]
 mod tests_nonlinear;
 
 pub use rk4::Rk4;
-pub use sdirk::{Sdirk, SdirkOptions};
+pub use sdirk::{Sdirk, SdirkOptions, Trial};
 
 /// A first-order ODE system `y' = f(t, y)` of fixed size `N`.
 ///

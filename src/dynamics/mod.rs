@@ -1,14 +1,17 @@
 //! The 8-DOF tribo-dynamic model (paper eq. 1-6), its integrator, steady state,
 //! quasi-static twin, signals and modes.
 
+pub mod damped_modes;
 pub mod excitation;
 pub mod grid;
 pub mod integrator;
 pub mod modal;
 pub mod model;
 pub mod params;
+pub mod period;
 pub mod quasi_static;
 pub mod response;
+pub mod shooting;
 pub mod spectrum;
 pub mod steady;
 pub mod summary;

@@ -25,11 +25,15 @@ use crate::config::case::{LoadSharingModel, SpeedBoundary};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::HertzContact;
 use crate::contact::kinematics::SurfaceKinematics;
-use crate::contact::load_sharing::pedrero_share;
+use crate::contact::load_sharing::pedrero_shares;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
 use nalgebra::{SMatrix, SVector};
 use std::cell::Cell;
+
+mod contact_mode;
+mod linear;
+pub use contact_mode::{ContactMode, ModeSwitch, FORCE_SWITCH, SWITCHES};
 
 /// Number of generalised coordinates.
 pub const NDOF: usize = 8;
@@ -78,6 +82,35 @@ pub struct MeshState {
     pub stiffness_total_n_per_m: f64,
     /// Sum of the stiffnesses of the pairs actually touching (gap closed), N/m.
     pub stiffness_touching_n_per_m: f64,
+    /// Compression of each pair, delta - g_i (m; > 0: the gap is closed).
+    pub compression_m: [f64; MAX_PAIRS],
+    /// Spring and damper force of the touching pairs before the mesh-cannot-pull limit,
+    /// N (0 when none touches): F = this when it is positive.
+    pub force_unclipped_n: f64,
+    /// Whether the mesh pushes (F given by its springs and damper) or not (F = 0).
+    pub pushing: bool,
+}
+
+/// The elastic part of the mesh at one instant ([`GearSystem::springs`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct MeshSprings {
+    pub n_pairs: usize,
+    /// Pair contact positions rho1, m.
+    pub rho1_m: [f64; MAX_PAIRS],
+    pub stiffness_n_per_m: [f64; MAX_PAIRS],
+    /// delta - g_i, m.
+    pub compression_m: [f64; MAX_PAIRS],
+    /// Pairs counted as touching (gap closed, or as the frozen contact mode says).
+    pub touching: [bool; MAX_PAIRS],
+    pub stiffness_touching_n_per_m: f64,
+    /// sum of k_i (delta - g_i) over the touching pairs, N.
+    pub elastic_n: f64,
+    /// Spring and damper force of the touching pairs, N (0 when none touches).
+    pub force_unclipped_n: f64,
+    pub pushing: bool,
+    /// delta and d delta / dt (m, m/s).
+    pub deflection_m: f64,
+    pub deflection_rate_m_per_s: f64,
 }
 
 /// The assembled model: immutable inputs for one dynamic evaluation.
@@ -109,6 +142,9 @@ pub struct GearSystem<'a> {
     /// Time at which the set of pairs in contact is decided (the middle of the current
     /// integration step), or None for the time of each evaluation.
     contact_decision_time_s: Cell<Option<f64>>,
+    /// Contact mode held fixed during an integration step (`contact_mode.rs`), or None
+    /// to decide it from the state at each evaluation.
+    contact_mode: Cell<Option<ContactMode>>,
 }
 
 impl<'a> GearSystem<'a> {
@@ -234,6 +270,7 @@ impl<'a> GearSystem<'a> {
             q_ext,
             sin_cos_phi: (s, co),
             contact_decision_time_s: Cell::new(None),
+            contact_mode: Cell::new(None),
         }
     }
 
@@ -269,33 +306,27 @@ impl<'a> GearSystem<'a> {
         self.params.pinion_speed_rad_s * t_s
     }
 
-    /// Mesh state at time t for generalised displacements q and velocities v.
-    pub fn mesh_state(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
-        use dof::*;
-        let mut ms = MeshState::default();
-        let g = &self.grad;
-        let mut delta = 0.0;
-        let mut delta_dot = 0.0;
+    /// The pairs in contact at time t and the force of their springs and damper, for
+    /// generalised displacements q and velocities v (paper eq. 2 with the wear gaps and
+    /// the external error): what decides the contact mode and the mesh force.
+    pub fn springs(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshSprings {
+        let mut sp = MeshSprings::default();
         for i in 0..NDOF {
-            delta += g[i] * q[i];
-            delta_dot += g[i] * v[i];
+            sp.deflection_m += self.grad[i] * q[i];
+            sp.deflection_rate_m_per_s += self.grad[i] * v[i];
         }
-        ms.deflection_m = delta;
         let phase = self.phase_at(t_s);
         let omega_nom = self.params.pinion_speed_rad_s;
         let rb1 = self.pair.pinion.base_radius_m;
         let (e_ext, de_ext) = self.external.at(phase);
-
-        let mut elastic = 0.0;
-        let mut k_touch = 0.0;
-        let mut gap_rate_weighted = 0.0;
-        let mut compress = [0.0; MAX_PAIRS];
-        let mut n = 0;
+        let frozen = self.contact_mode.get();
         let decide = self
             .contact_decision_time_s
             .get()
             .map_or(phase, |t| self.phase_at(t));
+        let mut gap_rate_weighted = 0.0;
         for (_, rho1) in self.pair.pairs_in_contact_decided(phase, decide) {
+            let n = sp.n_pairs;
             if n == MAX_PAIRS {
                 break;
             }
@@ -303,42 +334,62 @@ impl<'a> GearSystem<'a> {
             let (g_wear, dg_drho) = self.gap.at(rho1);
             // Effective gap of this pair: wear gap minus the external error (eq. 2 sign).
             let gap = g_wear - e_ext;
-            let gap_rate = dg_drho * rb1 * omega_nom - de_ext * omega_nom;
-            let c = delta - gap;
-            ms.rho1_m[n] = rho1;
-            ms.stiffness_n_per_m[n] = k;
-            ms.stiffness_total_n_per_m += k;
-            if c > 0.0 {
-                compress[n] = k * c;
-                elastic += k * c;
-                k_touch += k;
-                gap_rate_weighted += k * gap_rate;
+            let c = sp.deflection_m - gap;
+            sp.rho1_m[n] = rho1;
+            sp.stiffness_n_per_m[n] = k;
+            sp.compression_m[n] = c;
+            if frozen.map_or(c > 0.0, |m| m.touches(n)) {
+                sp.touching[n] = true;
+                sp.elastic_n += k * c;
+                sp.stiffness_touching_n_per_m += k;
+                gap_rate_weighted += k * (dg_drho * rb1 * omega_nom - de_ext * omega_nom);
             }
-            n += 1;
+            sp.n_pairs += 1;
         }
-        ms.n_pairs = n;
-        ms.stiffness_touching_n_per_m = k_touch;
         // Mesh damping acts on the closing rate of the touching pairs (eq. 2, c_m term
-        // with de_t/dt); the mesh cannot pull: F >= 0 (contact loss).
-        let force = if k_touch > 0.0 {
-            let closing = delta_dot - gap_rate_weighted / k_touch;
-            (elastic + self.mesh_damping_n_s_per_m * closing).max(0.0)
-        } else {
-            0.0
-        };
-        ms.force_n = force;
+        // with de_t/dt); the mesh cannot pull: F >= 0 (contact loss). Within a step of
+        // frozen mode the laws continue smoothly past their switches (F may go slightly
+        // negative) until the step is cut at the switch (docs/MODEL.md, section 4).
+        let k_touch = sp.stiffness_touching_n_per_m;
+        if k_touch > 0.0 {
+            let closing = sp.deflection_rate_m_per_s - gap_rate_weighted / k_touch;
+            sp.force_unclipped_n = sp.elastic_n + self.mesh_damping_n_s_per_m * closing;
+        }
+        sp.pushing = k_touch > 0.0 && frozen.map_or(sp.force_unclipped_n > 0.0, |m| m.pushing);
+        sp
+    }
 
-        let omega_p = omega_nom + v[PHI_P];
-        let omega_g = self.params.gear_speed_rad_s + v[PHI_G];
-        let stiffness_shares = if elastic > 0.0 {
-            let mut sh = [0.0; MAX_PAIRS];
-            for i in 0..n {
-                sh[i] = compress[i] / elastic;
-            }
-            Some(sh)
-        } else {
-            None
+    /// Mesh state at time t for generalised displacements q and velocities v.
+    pub fn mesh_state(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
+        use dof::*;
+        let sp = self.springs(t_s, q, v);
+        let n = sp.n_pairs;
+        let mut ms = MeshState {
+            n_pairs: n,
+            rho1_m: sp.rho1_m,
+            stiffness_n_per_m: sp.stiffness_n_per_m,
+            deflection_m: sp.deflection_m,
+            stiffness_total_n_per_m: sp.stiffness_n_per_m[..n].iter().sum(),
+            stiffness_touching_n_per_m: sp.stiffness_touching_n_per_m,
+            compression_m: sp.compression_m,
+            force_unclipped_n: sp.force_unclipped_n,
+            pushing: sp.pushing,
+            force_n: if sp.pushing {
+                sp.force_unclipped_n
+            } else {
+                0.0
+            },
+            ..MeshState::default()
         };
+        let omega_p = self.params.pinion_speed_rad_s + v[PHI_P];
+        let omega_g = self.params.gear_speed_rad_s + v[PHI_G];
+        let stiffness_shares = (sp.elastic_n > 0.0).then(|| {
+            let mut sh = [0.0; MAX_PAIRS];
+            for i in (0..n).filter(|i| sp.touching[*i]) {
+                sh[i] = sp.stiffness_n_per_m[i] * sp.compression_m[i] / sp.elastic_n;
+            }
+            sh
+        });
         self.fill_contacts(&mut ms, stiffness_shares, omega_p, omega_g);
         ms
     }
@@ -354,12 +405,20 @@ impl<'a> GearSystem<'a> {
         omega_p: f64,
         omega_g: f64,
     ) {
-        for i in 0..ms.n_pairs {
-            ms.share[i] = match self.load_sharing {
-                LoadSharingModel::Pedrero => pedrero_share(self.pair, ms.rho1_m[i]),
-                LoadSharingModel::Stiffness => stiffness_shares.map_or(0.0, |s| s[i]),
-            };
-            let w = ms.share[i] * ms.force_n;
+        let n = ms.n_pairs;
+        match self.load_sharing {
+            // By the contact set decided (pairs ordered from the last to enter).
+            LoadSharingModel::Pedrero => {
+                pedrero_shares(self.pair, &ms.rho1_m[..n], &mut ms.share[..n])
+            }
+            LoadSharingModel::Stiffness => {
+                ms.share[..n].copy_from_slice(&stiffness_shares.unwrap_or_default()[..n])
+            }
+        }
+        for i in 0..n {
+            // A pair load below zero exists only inside a step whose frozen contact mode
+            // is about to switch; the contact and friction see no load then.
+            let w = (ms.share[i] * ms.force_n).max(0.0);
             ms.load_n[i] = w;
             let rho1 = ms.rho1_m[i];
             let rho2 = self.pair.rho_gear(rho1);
@@ -421,60 +480,5 @@ impl<'a> GearSystem<'a> {
             dy[NDOF + i] = rhs[i] * self.inv_mass[i];
         }
         (dy, ms)
-    }
-
-    /// Jacobian of the right-hand side: exact for the linear parts and the mesh spring
-    /// and damper of the pairs in contact; the friction's dependence on the state is
-    /// left out (a modified-Newton approximation: friction is < 10 % of the mesh force
-    /// and not stiff).
-    pub fn jacobian(&self, t_s: f64, y: &State) -> SMatrix<f64, NSTATE, NSTATE> {
-        let q = y.fixed_rows::<NDOF>(0).into_owned();
-        let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
-        let ms = self.mesh_state(t_s, q.as_slice(), v.as_slice());
-        let touching = ms.force_n > 0.0;
-        let (k_mesh, c_mesh) = if touching {
-            (ms.stiffness_touching_n_per_m, self.mesh_damping_n_s_per_m)
-        } else {
-            (0.0, 0.0)
-        };
-        let gg = self.grad * self.grad.transpose();
-        let k = self.k_lin + gg * k_mesh;
-        let c = self.c_lin + gg * c_mesh;
-        let mut j = SMatrix::<f64, NSTATE, NSTATE>::zeros();
-        for i in 0..NDOF {
-            j[(i, NDOF + i)] = 1.0;
-            for l in 0..NDOF {
-                j[(NDOF + i, l)] = -k[(i, l)] * self.inv_mass[i];
-                j[(NDOF + i, NDOF + l)] = -c[(i, l)] * self.inv_mass[i];
-            }
-        }
-        j
-    }
-
-    /// Static equilibrium at the mean mesh stiffness, friction-free: the starting state
-    /// of a run (it removes most of the transient). A free drivetrain (motor slip) is
-    /// held at the motor for this solve only.
-    pub fn static_equilibrium(&self) -> State {
-        use dof::*;
-        let k_mean = self.mesh.mean_stiffness_n_per_m();
-        let mut k = self.k_lin + self.grad * self.grad.transpose() * k_mean;
-        let mut f = self.q_ext;
-        let fixed = match self.params.speed_boundary {
-            SpeedBoundary::BrakeSpeedImposed => PHI_B,
-            _ => PHI_M,
-        };
-        if self.params.speed_boundary == SpeedBoundary::MotorSlip {
-            f[PHI_M] = 0.0;
-        }
-        for l in 0..NDOF {
-            k[(fixed, l)] = 0.0;
-            k[(l, fixed)] = 0.0;
-        }
-        k[(fixed, fixed)] = 1.0;
-        f[fixed] = 0.0;
-        let q = k.lu().solve(&f).unwrap_or_else(SVector::zeros);
-        let mut y = State::zeros();
-        y.fixed_rows_mut::<NDOF>(0).copy_from(&q);
-        y
     }
 }

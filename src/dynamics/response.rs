@@ -45,7 +45,11 @@ impl PathSample {
     }
 }
 
-/// Time series over the evaluated window (whole mesh periods).
+/// Time series over the evaluated window (whole mesh periods). A sample at every grid
+/// node (right limit at a mesh event) and at every integration step between nodes, so
+/// the spacing is not uniform: it is short where the error control shortened the steps
+/// (after each mesh event, near contact switches). The dynamic solver integrates one
+/// period of the periodic solution and repeats it over the window.
 #[derive(Debug, Clone, Default)]
 pub struct Signals {
     pub time_s: Vec<f64>,
@@ -85,9 +89,11 @@ pub struct DynamicResponse {
     pub signals: Signals,
     /// Samples along the path of contact over the last mesh period, sorted by rho1.
     pub path: Vec<PathSample>,
-    /// Mesh periods integrated before the response repeated itself.
+    /// Mesh periods integrated before the periodic state was found (the recorded
+    /// window not included).
     pub periods_to_converge: usize,
-    /// Relative change of DTE and mesh force over the last period checked.
+    /// Largest change of the state over one recorded period, relative to the state's
+    /// scales (`period::state_scales`): how periodic the recorded window is.
     pub periodicity_error: f64,
     pub mesh_period_s: f64,
     /// Time means over the evaluated window by the midpoint rule on the step midpoints
@@ -100,13 +106,35 @@ pub struct DynamicResponse {
     /// of another evaluation (`steady::solve_steady_state_from`) warm-starts that one from
     /// this periodic state: wear updates, continuation along a parameter.
     pub end_state: [f64; 16],
-    /// Integrator work (for benchmarks and the performance notes).
+    /// Integrator work (for benchmarks and the performance notes): accepted steps over
+    /// all periods integrated, rhs calls, LU factorisations, and the step counts in
+    /// detail (rejections, contact switches).
     pub steps: usize,
     pub rhs_evaluations: usize,
     pub factorizations: usize,
+    pub step_counts: super::period::StepCounts,
 }
 
 impl DynamicResponse {
+    /// Fraction of the evaluated window during which the mesh transmits no force
+    /// (contact loss), from the samples: the intervals whose both ends carry none.
+    pub fn contact_loss_fraction(&self) -> f64 {
+        let s = &self.signals;
+        let (mut off, mut total) = (0.0, 0.0);
+        for k in 1..s.time_s.len() {
+            let dt = s.time_s[k] - s.time_s[k - 1];
+            total += dt;
+            if s.mesh_force_n[k] <= 0.0 && s.mesh_force_n[k - 1] <= 0.0 {
+                off += dt;
+            }
+        }
+        if total > 0.0 {
+            off / total
+        } else {
+            0.0
+        }
+    }
+
     /// Load a pair carries at LOA position rho1 (linear interpolation along the path).
     pub fn path_at(&self, rho1_m: f64) -> PathSample {
         interpolate_path(&self.path, rho1_m)

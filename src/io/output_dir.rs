@@ -24,7 +24,6 @@ use super::atomic::{ensure_real_dir, write_atomic, TEMP_PREFIX};
 use super::error::OutputError;
 use super::lock::{LockError, OutputLock};
 use serde::{Deserialize, Serialize};
-use sha2::{Digest, Sha256};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -66,14 +65,7 @@ pub struct OutputDir {
     _lock: OutputLock,
 }
 
-fn hex(bytes: &[u8]) -> String {
-    bytes.iter().map(|b| format!("{b:02x}")).collect()
-}
-
-/// SHA-256 of bytes, lowercase hex.
-pub fn sha256_hex(bytes: &[u8]) -> String {
-    hex(&Sha256::digest(bytes))
-}
+pub use crate::checksum::sha256_hex;
 
 /// A relative output path must stay inside the folder: no absolute path, no `..`.
 fn check_relative(rel: &str) -> Result<(), OutputError> {
@@ -188,6 +180,19 @@ impl OutputDir {
         write_atomic(&path, bytes)?;
         self.state.insert(rel.to_owned());
         Ok(())
+    }
+
+    /// The path of state file `rel` inside the folder (its folders created, checked to be
+    /// real folders), listed in the manifest; the caller writes it (e.g. an append-only
+    /// checkpoint).
+    pub fn state_path(&mut self, rel: &str) -> Result<PathBuf, OutputError> {
+        check_relative(rel)?;
+        let path = self.root.join(rel);
+        if let Some(parent) = path.parent() {
+            ensure_real_dir(&self.root, parent)?;
+        }
+        self.state.insert(rel.to_owned());
+        Ok(path)
     }
 
     /// Declare a state file that exists already (e.g. a finished sweep case kept from an

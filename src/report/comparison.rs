@@ -4,6 +4,7 @@
 //! number in an explanation comes from the run.
 
 use super::case::{cycles_words, load_sentence, open_choices_words, poles_sentence};
+use super::wear::at_cycles;
 use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;
@@ -40,9 +41,18 @@ fn final_rate(r: &WearRun) -> f64 {
     })
 }
 
-/// Ratios of the final state: (max wear rate ratio, max accumulated wear ratio).
+/// Load cycles both wear runs reached: the case's total unless a run stopped early
+/// (then the comparison is at the shorter run's end).
+pub fn cycles_reached(study: &PaperStudy) -> f64 {
+    let end = |r: &WearRun| r.cycles().last().copied().unwrap_or(0.0);
+    end(&study.dynamic).min(end(&study.quasi_static))
+}
+
+/// Ratios, dynamic to quasi-static: (max wear rate of each run's final state, max
+/// accumulated wear at the cycles both reached).
 pub fn wear_ratios(study: &PaperStudy) -> (f64, f64) {
-    let acc = |r: &WearRun| r.last().map_or(0.0, |x| x.wear.max_pinion_m());
+    let end = cycles_reached(study);
+    let acc = |r: &WearRun| at_cycles(&r.cycles(), &r.max_wear_pinion_m(), end);
     (
         final_rate(&study.dynamic) / final_rate(&study.quasi_static),
         acc(&study.dynamic) / acc(&study.quasi_static),
@@ -69,7 +79,7 @@ struct Why {
 
 fn explanations(model: &Model, study: &PaperStudy) -> Why {
     let poles = poles_sentence(model);
-    let cycles = cycles_words(model.case.wear.total_cycles);
+    let cycles = cycles_words(cycles_reached(study));
     let df = initial_dynamic_factor(study);
     let states = &study.wear_states;
     let dte_change = match (states.first(), states.last()) {
@@ -88,7 +98,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
             open_choices_words(&model.case)
         ),
         velocity: format!(
-            "The y velocity is dominated by the response of the lowest oscillatory modes to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."
+            "The y velocity is dominated by the response of the damped mesh pole to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."
         ),
         force: format!(
             "In periodic steady state the mean mesh force is fixed by the load torque: r_gb mean(F) + mean friction moment = T_brk (docs/MODEL.md). {} Ours departs from it only by the friction moment. The paper's {paper_rise:.0} % rise of the mean with wear cannot come from a balanced drivetrain (docs/PAPER_NOTES.md).",
@@ -132,7 +142,7 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
         });
     }
     let (rate, acc) = wear_ratios(study);
-    let cycles = cycles_words(model.case.wear.total_cycles);
+    let cycles = cycles_words(cycles_reached(study));
     out.push(Compared {
         key: "ratio_max_wear_rate_dynamic_to_static".into(),
         quantity: format!(

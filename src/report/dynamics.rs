@@ -3,14 +3,13 @@
 
 use super::artifacts::{um, Artifacts};
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
-use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::modal::modes;
+use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::io::Table;
-use crate::study::Model;
-use serde_json::json;
+use crate::study::{ModalAnalysis, Model};
+use serde_json::{json, Value};
 
 /// Names and units of the 8 generalised coordinates, in `dynamics::model::dof` order.
 pub const COORDINATE_NAMES: [&str; 8] = [
@@ -103,23 +102,10 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         );
     a.table("path.csv", path_table);
 
-    // Natural frequencies and mass-normalised mode shapes of the linearised model.
-    let gap0 = PairGap::none();
-    let ext0 = ExternalError::none();
-    let m = modes(&model.system(&gap0, &ext0, model.roughness.rms_um(0.0)));
-    let mut mt = Table::new()
-        .col(
-            "mode",
-            (1..=m.frequency_hz.len()).map(|i| i as f64).collect(),
-        )
-        .col("frequency_hz", m.frequency_hz.clone());
-    for k in 0..8 {
-        mt = mt.col(
-            &format!("shape_{}", names[k]),
-            m.shapes.iter().map(|s| s[k]).collect(),
-        );
-    }
-    a.table("modes.csv", mt);
+    // Damped poles and undamped modes of the linearised model.
+    let modal = ModalAnalysis::of(model);
+    a.table("modes.csv", report_modes::damped_table(&modal));
+    a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
 
     let f_mesh = model.params.mesh_frequency_hz(&model.pair);
     let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
@@ -229,14 +215,12 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
 /// the names).
 pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value {
     let s = &ResponseSummary::of(r);
-    let gap = PairGap::none();
-    let ext = ExternalError::none();
-    let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
-    let m = modes(&sys);
-    json!({
+    let c_m = model
+        .params
+        .mesh_damping_n_s_per_m(&model.pair, model.mesh.mean_stiffness_n_per_m());
+    let mut v = json!({
         "mesh_frequency_hz": model.params.mesh_frequency_hz(&model.pair),
-        "natural_frequencies_hz": m.frequency_hz,
-        "mesh_damping_n_s_per_m": sys.mesh_damping_n_s_per_m,
+        "mesh_damping_n_s_per_m": c_m,
         "dte": {"max_um": s.dte_max_m * 1e6, "min_um": s.dte_min_m * 1e6, "mean_um": s.dte_mean_m * 1e6},
         "mesh_force": {"mean_n": s.mesh_force_mean_n, "max_n": s.mesh_force_max_n, "min_n": s.mesh_force_min_n, "dynamic_factor": s.dynamic_factor},
         "velocity_y_pinion": {"rms_mm_per_s": s.velocity_y_pinion_rms_m_per_s * 1e3},
@@ -255,7 +239,12 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
             "lu_factorizations": r.factorizations,
         },
         "warnings": model.warnings,
-    })
+    });
+    if let (Some(v), Value::Object(m)) = (v.as_object_mut(), modes_json(&ModalAnalysis::of(model)))
+    {
+        v.extend(m);
+    }
+    v
 }
 
 /// One line of headline numbers from a dynamics summary.

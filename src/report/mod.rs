@@ -7,11 +7,12 @@ pub mod comparison;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
+pub mod modes;
 pub mod paper;
 pub mod plot;
 pub mod run_report;
 pub mod stiffness;
-pub mod sweep;
+pub mod sweep_figure;
 pub mod wear;
 
 pub use artifacts::{write_artifacts, Artifacts};

@@ -5,7 +5,7 @@
 use super::case::{
     cycles_words, load_sentence, load_words, mesh_frequency_hz, poles_sentence, static_mesh_force_n,
 };
-use super::comparison::Compared;
+use super::comparison::{cycles_reached, Compared};
 use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
 use crate::io::RunMetadata;
 use crate::study::paper::PaperStudy;
@@ -95,7 +95,7 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     );
     lines.push(format!(
         "after {} cycles: maximum pinion wear {d:.4} um dynamic, {q:.4} um quasi-static (ratio {:.4})",
-        cycles_words(c.wear.total_cycles),
+        cycles_words(cycles_reached(study)),
         d / q
     ));
     lines.join("\n")
@@ -159,7 +159,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
             html::format_value(s.velocity_y_pinion_rms_m_per_s * 1e3),
         ));
     }
-    let cycles = cycles_words(c.wear.total_cycles);
+    let cycles = cycles_words(cycles_reached(study));
     let (d, q) = (&study.dynamic, &study.quasi_static);
     rows.push(value_row(
         &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (um)"),
@@ -313,7 +313,7 @@ pub fn build_report(
                 heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
                 paragraphs: vec![format!(
                     "Wear study to {} cycles: {} dynamic updates and {} quasi-static ones; maximum pinion wear {} um dynamic and {} um quasi-static.",
-                    cycles_words(c.wear.total_cycles),
+                    cycles_words(cycles_reached(study)),
                     d.records.len().saturating_sub(1),
                     q.records.len().saturating_sub(1),
                     html::format_value(final_wear_um(d)),

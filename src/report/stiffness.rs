@@ -5,7 +5,7 @@
 use super::artifacts::Artifacts;
 use super::figures::{panel, Curve};
 use super::plot::{Figure, Panel};
-use crate::contact::load_sharing::pedrero_share;
+use crate::contact::load_sharing::pedrero_shares;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::quasi_static::equilibrium;
 use crate::io::Table;
@@ -29,13 +29,9 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
         let eq = equilibrium(&sys, phase);
         let total: f64 = (0..eq.n_pairs).map(|j| eq.stiffness_n_per_m[j]).sum();
         let get = |a: &[f64; 4], j: usize| if j < eq.n_pairs { a[j] } else { f64::NAN };
-        let ped = |j: usize| {
-            if j < eq.n_pairs {
-                pedrero_share(pair, eq.rho1_m[j])
-            } else {
-                0.0
-            }
-        };
+        let mut shares = [0.0; 4];
+        pedrero_shares(pair, &eq.rho1_m[..eq.n_pairs], &mut shares[..eq.n_pairs]);
+        let ped = |j: usize| shares[j];
         let by_k = |j: usize| {
             if j < eq.n_pairs {
                 eq.stiffness_n_per_m[j] / total

@@ -222,10 +222,21 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
             "quasi_static": qs.map(|r| r.records.len() - 1),
         },
     });
+    // The runs that stopped early, by mode (empty when all reached the total cycles).
+    let mut stopped = serde_json::Map::new();
+    for r in [dynamic, qs].into_iter().flatten() {
+        if let Some(stop) = &r.stopped {
+            stopped.insert(r.mode.name().into(), json!(stop));
+        }
+    }
+    v["stopped"] = serde_json::Value::Object(stopped);
     if let (Some(d), Some(q)) = (dynamic, qs) {
+        // At the same cycles: a run that stopped early ends before the other.
+        let end = d.cycles().last().copied().unwrap_or(0.0);
+        let end = end.min(q.cycles().last().copied().unwrap_or(0.0));
         let (hd, hq) = (
-            d.last().map_or(0.0, |r| r.wear.max_pinion_m()),
-            q.last().map_or(0.0, |r| r.wear.max_pinion_m()),
+            at_cycles(&d.cycles(), &d.max_wear_pinion_m(), end),
+            at_cycles(&q.cycles(), &q.max_wear_pinion_m(), end),
         );
         v["ratio_max_wear_dynamic_to_static"] = json!(hd / hq);
         v["ratio_max_wear_rate_dynamic_to_static"] = json!(rate(d) / rate(q));

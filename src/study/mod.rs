@@ -2,8 +2,11 @@
 //! quasi-static twin, the wear states of the paper's section 4.1.
 
 pub mod model;
+pub mod modes;
 pub mod paper;
 pub mod sweep;
+pub mod wear_check;
 pub mod wear_loop;
 
 pub use model::{Model, ModelError};
+pub use modes::ModalAnalysis;

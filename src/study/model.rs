@@ -120,9 +120,21 @@ impl Model {
         external: &ExternalError,
         start: Option<&[f64; NSTATE]>,
     ) -> Result<DynamicResponse, DynamicsError> {
+        self.dynamic_with(wear, external, start, &self.settings)
+    }
+
+    /// As [`Model::dynamic_from`] with other numerical settings (e.g. a retry with a
+    /// tighter integration tolerance).
+    pub fn dynamic_with(
+        &self,
+        wear: &WearState,
+        external: &ExternalError,
+        start: Option<&[f64; NSTATE]>,
+        settings: &SteadyStateSettings,
+    ) -> Result<DynamicResponse, DynamicsError> {
         let gap = wear.pair_gap(&self.grid);
         let sys = self.system(&gap, external, self.roughness_for(wear));
-        solve_steady_state_from(&sys, &self.settings, start)
+        solve_steady_state_from(&sys, settings, start)
     }
 
     /// Quasi-static response of the worn pair.

@@ -7,7 +7,7 @@
 //! roughness-versus-wear law at X (docs/MODEL.md).
 
 use super::model::Model;
-use super::wear_loop::{run_wear, WearMode, WearRun};
+use super::wear_loop::{run_wear_modes, WearMode, WearRun};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
@@ -53,19 +53,10 @@ pub fn run_paper_study(
     start_quasi_static: WearRun,
     on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
 ) -> anyhow::Result<PaperStudy> {
-    let (dynamic, quasi_static) = rayon::join(
-        || {
-            run_wear(model, start_dynamic, &mut |r| {
-                on_update(WearMode::Dynamic, r)
-            })
-        },
-        || {
-            run_wear(model, start_quasi_static, &mut |r| {
-                on_update(WearMode::QuasiStatic, r)
-            })
-        },
-    );
-    let (dynamic, quasi_static) = (dynamic?, quasi_static?);
+    let mut runs = run_wear_modes(model, vec![start_dynamic, start_quasi_static], on_update)?;
+    let (Some(quasi_static), Some(dynamic)) = (runs.pop(), runs.pop()) else {
+        anyhow::bail!("the wear runs returned no result");
+    };
     let wear_states = PAPER_WEAR_STATES_UM
         .par_iter()
         .map(|um| -> anyhow::Result<WearStateResult> {

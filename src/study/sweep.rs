@@ -2,16 +2,19 @@
 //! case, each case reduced to one row of headline results.
 //!
 //! Pieces: [`plan`] (axes, case ids, shards), [`case_run`] (one case -> one row, and the
-//! record it leaves on disk so a rerun can skip it), [`table`] (rows, CSV, merge of
-//! shards), [`resonance`] (speeds where a mesh harmonic meets a natural frequency).
+//! record it leaves on disk so a rerun can skip it), [`continuation`] (a one-axis sweep
+//! run in order, each point warm-started from the previous one), [`table`] (rows, CSV,
+//! merge of shards), [`resonance`] (speeds where a mesh harmonic meets a damped mesh pole).
 //! File handling, parallelism and progress are the CLI's (`gearwear sweep`).
 
 pub mod case_run;
+pub mod continuation;
 pub mod plan;
 pub mod resonance;
 pub mod table;
 
-pub use case_run::{run_case, CaseError, CaseRecord, SweepRun};
+pub use case_run::{run_case, CaseError, CaseRecord, ContinuationLink, SweepRun};
+pub use continuation::{Branch, Continuation, ContinuationPlan};
 pub use plan::{parse_vary, Axis, Shard, SweepPlan};
 pub use resonance::{crossings, Crossing};
 pub use table::{SweepRow, SweepTable};

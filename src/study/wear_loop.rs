@@ -8,10 +8,22 @@
 //! runs to the case's total number of cycles (the last block is cut to land on it).
 //!
 //! Every update is a record; the records are the whole state of the run, so a checkpoint
-//! after each update lets an interrupted run resume and reach the same numbers.
+//! after each update lets an interrupted run resume and reach the same numbers. A record
+//! keeps the periodic state its response ended on: the next update starts its search for
+//! the periodic orbit there (the gap changes by at most the threshold between updates).
+//!
+//! The run never aborts for numerical reasons: an update whose steady state is not found
+//! is retried from the static equilibrium, then with a ten times tighter integration
+//! tolerance, twice the grid nodes and periods. It stops early, keeping every record so
+//! far and saying why in [`WearRun::stopped`], when the retries fail too or when the
+//! worn teeth leave the model's domain: the mesh out of contact for more than
+//! [`MAX_CONTACT_LOSS_FRACTION`] of the mesh period (Archard's law over a steady Hertz
+//! contact per pass, and the quasi-static-in-the-gap wear update of eq. 17, no longer
+//! describe teeth that mostly fly apart and impact).
 
 use super::model::Model;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::model::NSTATE;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::steady::DynamicsError;
 use crate::dynamics::summary::ResponseSummary;
@@ -55,6 +67,34 @@ pub struct UpdateRecord {
     /// Mesh force and pair load along the path (rho1, load) for the wear-depth figures.
     pub path_rho1_m: Vec<f64>,
     pub path_load_n: Vec<f64>,
+    /// Periodic state (SI, `dynamics::model` coordinates) at a mesh-period boundary of the
+    /// dynamic response: where the next update's search starts. Absent for the
+    /// quasi-static mode and in checkpoints written before it existed (cold start then).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end_state: Option<Vec<f64>>,
+}
+
+/// Most of the mesh period the teeth may be apart before a wear run stops (model
+/// validity, see the module docs).
+pub const MAX_CONTACT_LOSS_FRACTION: f64 = 0.5;
+
+/// Why a wear run stopped before its total cycles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StopKind {
+    /// The worn teeth left the model's domain (a result, not a failure).
+    ModelValidity,
+    /// No steady state even after the retries (a solver limitation).
+    Numerical,
+}
+
+/// Where and why a wear run stopped early.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WearStop {
+    /// Cycles of the update that could not be kept (the last record is before it).
+    pub cycles: f64,
+    pub kind: StopKind,
+    pub reason: String,
 }
 
 /// A wear run: its mode and every update so far.
@@ -62,6 +102,9 @@ pub struct UpdateRecord {
 pub struct WearRun {
     pub mode: WearMode,
     pub records: Vec<UpdateRecord>,
+    /// Set when the run stopped before the case's total cycles.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stopped: Option<WearStop>,
 }
 
 impl WearRun {
@@ -69,6 +112,7 @@ impl WearRun {
         Self {
             mode,
             records: Vec::new(),
+            stopped: None,
         }
     }
 
@@ -98,19 +142,35 @@ pub fn block_length(inc_max_m: f64, block_cycles: f64, threshold_m: f64, remaini
     n.min(remaining)
 }
 
+/// The response of a wear state: dynamic (warm-started from `start`, retried as the
+/// module docs say) or quasi-static.
 fn solve(
     model: &Model,
     mode: WearMode,
     wear: &WearState,
+    start: Option<&[f64; NSTATE]>,
 ) -> Result<DynamicResponse, DynamicsError> {
     let none = ExternalError::none();
-    match mode {
-        WearMode::Dynamic => model.dynamic(wear, &none),
-        WearMode::QuasiStatic => Ok(model.quasi_static(wear, &none)),
+    if mode == WearMode::QuasiStatic {
+        return Ok(model.quasi_static(wear, &none));
     }
+    let first = model.dynamic_from(wear, &none, start);
+    if first.is_ok() {
+        return first;
+    }
+    if start.is_some() {
+        if let Ok(r) = model.dynamic(wear, &none) {
+            return Ok(r);
+        }
+    }
+    let mut tight = model.settings;
+    tight.integration_tolerance *= 0.1;
+    tight.steps_per_mesh_period *= 2;
+    tight.max_mesh_periods *= 2;
+    model.dynamic_with(wear, &none, None, &tight)
 }
 
-fn record(model: &Model, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
+fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
     let inc: WearIncrement = per_cycle_wear(
         &model.grid,
         &r.path,
@@ -125,12 +185,20 @@ fn record(model: &Model, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
         increment_gear_m: inc.gear_m,
         path_rho1_m: r.path.iter().map(|p| p.rho1_m).collect(),
         path_load_n: r.path.iter().map(|p| p.load_n).collect(),
+        end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
     }
+}
+
+/// The warm start a record offers.
+fn start_of(rec: &UpdateRecord) -> Option<[f64; NSTATE]> {
+    let s = rec.end_state.as_ref()?;
+    (s.len() == NSTATE).then(|| std::array::from_fn(|i| s[i]))
 }
 
 /// Run (or continue) a wear study to the case's total cycles. `on_update` is called after
 /// every update with the run so far (checkpointing, progress); an error it returns stops
-/// the run.
+/// the run. The returned run may have stopped early ([`WearRun::stopped`]); only the
+/// response of new teeth failing is an error.
 pub fn run_wear(
     model: &Model,
     mut run: WearRun,
@@ -140,11 +208,11 @@ pub fn run_wear(
     let threshold_m = w.threshold_um * 1e-6;
     if run.records.is_empty() {
         let state = WearState::new(model.grid.len());
-        let r = solve(model, run.mode, &state)?;
-        run.records.push(record(model, state, &r));
+        let r = solve(model, run.mode, &state, None)?;
+        run.records.push(record(model, run.mode, state, &r));
         on_update(&run)?;
     }
-    loop {
+    while run.stopped.is_none() {
         let last = run.records.last().expect("at least one record");
         let remaining = w.total_cycles - last.wear.cycles;
         if remaining <= 0.5 {
@@ -158,29 +226,83 @@ pub fn run_wear(
         let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
         let mut state = last.wear.clone();
         state.advance(&inc, n);
-        let r = solve(model, run.mode, &state)?;
-        run.records.push(record(model, state, &r));
+        let start = start_of(last);
+        match solve(model, run.mode, &state, start.as_ref()) {
+            Ok(r) if r.contact_loss_fraction() > MAX_CONTACT_LOSS_FRACTION => {
+                run.stopped = Some(WearStop {
+                    cycles: state.cycles,
+                    kind: StopKind::ModelValidity,
+                    reason: format!(
+                        "at {:.0} cycles (maximum pinion wear {:.2} um) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact no longer applies",
+                        state.cycles,
+                        state.max_pinion_m() * 1e6,
+                        100.0 * r.contact_loss_fraction(),
+                        100.0 * MAX_CONTACT_LOSS_FRACTION
+                    ),
+                });
+            }
+            Ok(r) => run.records.push(record(model, run.mode, state, &r)),
+            Err(e) => {
+                run.stopped = Some(WearStop {
+                    cycles: state.cycles,
+                    kind: StopKind::Numerical,
+                    reason: format!(
+                        "at {:.0} cycles (maximum pinion wear {:.2} um) no steady state was found, even from the static equilibrium with a 10x tighter numerics.integration_tolerance and 2x the numerics.steps_per_mesh_period: {e}",
+                        state.cycles,
+                        state.max_pinion_m() * 1e6
+                    ),
+                });
+            }
+        }
         on_update(&run)?;
     }
     Ok(run)
 }
 
+/// Marks a run stopped because a sibling run of [`run_wear_modes`] failed.
+#[derive(Debug, thiserror::Error)]
+#[error("stopped because a parallel wear run failed")]
+pub struct SiblingFailed;
+
 /// Run (or continue) several wear runs in parallel (e.g. the dynamic study and its
 /// quasi-static twin); `on_update(mode, run)` after every update of each. Results in the
-/// order of `starts`.
+/// order of `starts`. When one run fails, the others stop at their next update, so the
+/// failure is reported at once rather than after the slower run has finished; the error
+/// returned is the first run's own, not a sibling's stop.
 pub fn run_wear_modes(
     model: &Model,
     starts: Vec<WearRun>,
     on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
 ) -> anyhow::Result<Vec<WearRun>> {
     use rayon::prelude::*;
-    starts
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let failed = AtomicBool::new(false);
+    let results: Vec<anyhow::Result<WearRun>> = starts
         .into_par_iter()
         .map(|start| {
             let mode = start.mode;
-            run_wear(model, start, &mut |r| on_update(mode, r))
+            let r = run_wear(model, start, &mut |r| {
+                if failed.load(Ordering::Relaxed) {
+                    return Err(SiblingFailed.into());
+                }
+                on_update(mode, r)
+            });
+            if r.is_err() {
+                failed.store(true, Ordering::Relaxed);
+            }
+            r
         })
-        .collect()
+        .collect();
+    let (ok, errors): (Vec<_>, Vec<_>) = results.into_iter().partition(Result::is_ok);
+    let mut errors = errors.into_iter().filter_map(Result::err);
+    if let Some(first) = errors.next() {
+        return Err(if first.is::<SiblingFailed>() {
+            errors.find(|e| !e.is::<SiblingFailed>()).unwrap_or(first)
+        } else {
+            first
+        });
+    }
+    Ok(ok.into_iter().filter_map(Result::ok).collect())
 }
 
 #[cfg(test)]

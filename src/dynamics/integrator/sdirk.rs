@@ -1,5 +1,7 @@
-//! Fixed-step SDIRK3 stepper (Alexander 1977, tableau in [`super::tableau`]) with a
-//! simplified Newton iteration.
+//! Diagonally implicit Runge-Kutta stepper with a simplified Newton iteration, for the
+//! tableaux of [`super::tableau`]: Alexander's SDIRK3 (fixed steps, the default of
+//! [`Sdirk::new`]) and the ESDIRK3(2) pair of Kennedy & Carpenter, whose embedded
+//! solution gives a local error estimate for step size control ([`Sdirk::try_step`]).
 //!
 //! Stage `i` solves `Y_i = y_n + h sum_{j<i} a_ij k_j + h gamma f(t_n + c_i h, Y_i)` with
 //! the simplified Newton iteration (Hairer & Wanner II, Sect. IV.8, for one stage)
@@ -11,7 +13,17 @@
 //! The stage derivative is recovered as `k_i = (Y_i - y_n - h sum_{j<i} a_ij k_j) / (h gamma)`
 //! rather than `f(Y_i)`: this avoids an extra `rhs` call and does not amplify the Newton
 //! residual by the stiff Jacobian (Hairer & Wanner II, Sect. IV.8).
-//! The method is stiffly accurate, so `y_{n+1} = Y_3`.
+//! Both methods are stiffly accurate, so `y_{n+1}` is the last stage value. An explicit
+//! first stage (ESDIRK) is `Y_1 = y_n`, `k_1 = f(t_n, y_n)`: the last stage derivative of
+//! the step that ended at `(t_n, y_n)` (first same as last), unless the caller declared
+//! the system changed ([`Sdirk::invalidate_jacobian`]).
+//!
+//! Error estimate (embedded pair only): `err = (I - h gamma J)^{-1} h sum_i (b_i - b_hat_i)
+//! k_i`, the difference of the two solutions filtered by the iteration matrix, as Hairer
+//! & Wanner II (Sect. IV.8, eq. 8.19-8.20) advise for stiff problems: without the filter
+//! the estimate of a stiff component is `|h lambda|` times too large and the step would be
+//! cut for modes that the L-stable method damps correctly. Its size is the weighted RMS
+//! norm with the weights of [`Sdirk::set_error_tolerance`].
 //!
 //! Newton stopping rule (Hairer & Wanner II, Sect. IV.8): with the
 //! contraction rate `theta_k = |dY_k| / |dY_(k-1)|` and `eta_k = theta_k / (1 - theta_k)`,
@@ -38,121 +50,119 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use super::lu::StaticLu;
-use super::tableau::{A, C, GAMMA, STAGES};
+use super::lu::{second_order_inverse, StaticLu};
+pub use super::options::SdirkOptions;
+
+mod newton;
+use super::tableau::{Tableau, ALEXANDER3, MAX_STAGES};
 use super::{finite_difference_jacobian, IntegratorError, OdeSystem, StepStats, Stepper};
-
-/// Settings of the Newton iteration of [`Sdirk`]. These set how accurately the implicit
-/// stage equations are solved, not the (uncontrolled) truncation error of the fixed step:
-/// keep them well below the accuracy you expect from the step size.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SdirkOptions {
-    /// Absolute Newton tolerance, units of `y`, > 0 (same for all components; use
-    /// [`Sdirk::set_abs_tol`] for per-component values, e.g. m and m/s).
-    pub abs_tol: f64,
-    /// Relative Newton tolerance, dimensionless, >= 0.
-    pub rel_tol: f64,
-    /// Newton iterations allowed per stage, >= 1.
-    pub max_newton_iters: usize,
-    /// Contraction rate in (0, 1) above which the Jacobian and LU are refreshed before
-    /// the next step. Default 0.1: on a 16-state system with a +-30 % switching mesh
-    /// stiffness (`tests_cost.rs`) it needed 6.1 Newton iterations per step against 6.5
-    /// for 0.3-0.9, with the same number of Jacobians.
-    pub refresh_rate: f64,
-}
-
-impl Default for SdirkOptions {
-    fn default() -> Self {
-        Self {
-            abs_tol: 1e-12,
-            rel_tol: 1e-9,
-            max_newton_iters: 10,
-            refresh_rate: 0.1,
-        }
-    }
-}
-
-impl SdirkOptions {
-    fn validate(&self) -> Result<(), IntegratorError> {
-        if !(self.abs_tol > 0.0 && self.abs_tol.is_finite()) {
-            return Err(IntegratorError::InvalidSetting(
-                "abs_tol must be finite and > 0",
-            ));
-        }
-        if !(self.rel_tol >= 0.0 && self.rel_tol.is_finite()) {
-            return Err(IntegratorError::InvalidSetting(
-                "rel_tol must be finite and >= 0",
-            ));
-        }
-        if self.max_newton_iters == 0 {
-            return Err(IntegratorError::InvalidSetting(
-                "max_newton_iters must be >= 1",
-            ));
-        }
-        if !(self.refresh_rate > 0.0 && self.refresh_rate < 1.0) {
-            return Err(IntegratorError::InvalidSetting(
-                "refresh_rate must be in (0, 1)",
-            ));
-        }
-        Ok(())
-    }
-}
 
 /// Jacobian re-evaluations allowed per stage after Newton failures, before giving up.
 const MAX_STAGE_REFRESHES: usize = 2;
 
-/// End of the previous successful step, used to predict the first stage of the next one.
+/// End of the previous accepted step, used to predict (SDIRK) or supply (ESDIRK, first
+/// same as last) the first stage of the next one.
 #[derive(Debug, Clone, Copy)]
 struct LastStep<const N: usize> {
     t_end: f64,
     y_end: SVector<f64, N>,
-    /// Last stage derivative `k_3`, which approximates `f(t_end, y_end)`.
+    /// Last stage derivative `k_s`, which approximates `f(t_end, y_end)`.
     k_end: SVector<f64, N>,
 }
 
-/// Why one attempt at a step failed (mapped to [`IntegratorError`] if it is final).
+impl<const N: usize> LastStep<N> {
+    /// Whether a step starting at `(t, y)` continues this one.
+    fn continues(&self, t: f64, y: &SVector<f64, N>, h: f64) -> bool {
+        (t - self.t_end).abs() <= 1e-6 * h && *y == self.y_end
+    }
+}
+
+/// Why one attempt at a stage failed (mapped to [`IntegratorError`] if it is final).
 enum Failure {
     NonFinite,
     Newton { iterations: usize, rate: f64 },
 }
 
-/// Fixed-step, L-stable SDIRK3 stepper for stiff systems (see module docs). Holds the
-/// factorised iteration matrix between steps; use one per independent trajectory.
+/// A computed but not yet accepted step (see [`Sdirk::try_step`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Trial<const N: usize> {
+    /// Start time and size of the step.
+    pub t: f64,
+    pub h: f64,
+    /// Solution at `t + h`.
+    pub y: SVector<f64, N>,
+    /// Weighted RMS norm of the local error estimate (<= 1: within tolerance); 0 for a
+    /// tableau without an embedded solution.
+    pub error: f64,
+    /// Work spent on this attempt.
+    pub stats: StepStats,
+    k_end: SVector<f64, N>,
+}
+
+/// L-stable DIRK stepper for stiff systems (see module docs). Holds the factorised
+/// iteration matrix between steps; use one per independent trajectory.
 #[derive(Debug, Clone)]
 pub struct Sdirk<const N: usize> {
+    tab: &'static Tableau,
     h: f64,
     opts: SdirkOptions,
     abs_tol: SVector<f64, N>,
-    /// `(I - h gamma J)^{-1}`, built from an LU factorisation (see [`super::lu`] for why
-    /// the inverse rather than triangular solves).
+    /// Error weights `err_abs_i + err_rel_i max(|y_n,i|, |y_n+1,i|)`.
+    err_abs: SVector<f64, N>,
+    err_rel: SVector<f64, N>,
+    /// The last Jacobian evaluated, if still valid.
+    jac: Option<SMatrix<f64, N, N>>,
+    /// `(I - h gamma J)^{-1}` for `m_inv_h`, built from an LU factorisation (see
+    /// [`super::lu`] for why the inverse rather than triangular solves).
     m_inv: SMatrix<f64, N, N>,
-    /// `m_inv` must be (re)computed before the next step.
+    m_inv_h: f64,
+    /// A new Jacobian must be evaluated before the next step.
     refresh: bool,
     /// Hairer's `eta = theta / (1 - theta)` carried between stages and steps.
     eta: f64,
     last: Option<LastStep<N>>,
+    /// `f(t, y)` of the last explicit first stage computed, for repeated attempts from
+    /// the same point (rejected steps, event location).
+    first_stage: Option<(f64, SVector<f64, N>, SVector<f64, N>)>,
     stats: StepStats,
 }
 
 impl<const N: usize> Sdirk<N> {
-    /// A stepper with step `h` (time units, finite and > 0) and Newton settings `opts`.
+    /// Alexander's SDIRK3 with step `h` (time units, finite and > 0) and Newton
+    /// settings `opts`.
     pub fn new(h: f64, opts: SdirkOptions) -> Result<Self, IntegratorError> {
+        Self::with_tableau(&ALEXANDER3, h, opts)
+    }
+
+    /// The stepper of tableau `tab` (see [`super::tableau`]).
+    pub fn with_tableau(
+        tab: &'static Tableau,
+        h: f64,
+        opts: SdirkOptions,
+    ) -> Result<Self, IntegratorError> {
         opts.validate()?;
-        if !(h > 0.0 && h.is_finite()) {
-            return Err(IntegratorError::InvalidSetting(
-                "step size must be finite and > 0",
-            ));
-        }
+        check_step(h)?;
         Ok(Self {
+            tab,
             h,
             opts,
             abs_tol: SVector::repeat(opts.abs_tol),
+            err_abs: SVector::repeat(opts.abs_tol),
+            err_rel: SVector::repeat(opts.rel_tol),
+            jac: None,
             m_inv: SMatrix::identity(),
+            m_inv_h: f64::NAN,
             refresh: true,
             eta: 1.0,
             last: None,
+            first_stage: None,
             stats: StepStats::default(),
         })
+    }
+
+    /// The tableau in use.
+    pub fn tableau(&self) -> &'static Tableau {
+        self.tab
     }
 
     /// Per-component absolute Newton tolerances (units of each `y_i`, all finite and > 0).
@@ -166,23 +176,39 @@ impl<const N: usize> Sdirk<N> {
         Ok(())
     }
 
-    /// Changes the step size; the iteration matrix is rebuilt at the next step.
-    pub fn set_step_size(&mut self, h: f64) -> Result<(), IntegratorError> {
-        if !(h > 0.0 && h.is_finite()) {
+    /// Weights of the local error norm: component `i` may err by
+    /// `abs_i + rel_i max(|y_n,i|, |y_n+1,i|)` (units of `y_i`; `abs_i > 0`, `rel_i >= 0`).
+    pub fn set_error_tolerance(
+        &mut self,
+        abs: SVector<f64, N>,
+        rel: SVector<f64, N>,
+    ) -> Result<(), IntegratorError> {
+        if !abs.iter().all(|a| *a > 0.0 && a.is_finite())
+            || !rel.iter().all(|r| *r >= 0.0 && r.is_finite())
+        {
             return Err(IntegratorError::InvalidSetting(
-                "step size must be finite and > 0",
+                "error tolerances must be finite, abs > 0 and rel >= 0",
             ));
         }
-        self.h = h;
-        self.invalidate_jacobian();
+        self.err_abs = abs;
+        self.err_rel = rel;
         Ok(())
     }
 
-    /// Forces a Jacobian evaluation and LU at the next step, e.g. after the caller changed
-    /// the system (a known discontinuity such as loss of gear contact).
+    /// Changes the default step size of [`Sdirk::step`].
+    pub fn set_step_size(&mut self, h: f64) -> Result<(), IntegratorError> {
+        check_step(h)?;
+        self.h = h;
+        Ok(())
+    }
+
+    /// Forces a Jacobian evaluation and LU at the next step and forgets the previous
+    /// step, e.g. after the caller changed the system (a known discontinuity such as a
+    /// change of the set of teeth in contact).
     pub fn invalidate_jacobian(&mut self) {
         self.refresh = true;
         self.last = None;
+        self.first_stage = None;
     }
 
     /// The Newton settings.
@@ -191,7 +217,7 @@ impl<const N: usize> Sdirk<N> {
     }
 
     /// Counters accumulated since creation or the last [`Sdirk::reset_stats`], including
-    /// the work of failed steps (which do not count in `steps`).
+    /// the work of failed and rejected steps (which do not count in `steps`).
     pub fn stats(&self) -> StepStats {
         self.stats
     }
@@ -201,60 +227,118 @@ impl<const N: usize> Sdirk<N> {
         self.stats = StepStats::default();
     }
 
-    /// One step `y(t) -> y(t + h)`. On error `y` is unchanged (never NaN).
+    /// One step `y(t) -> y(t + h)` of the default size. On error `y` is unchanged
+    /// (never NaN).
     pub fn step<S: OdeSystem<N>>(
         &mut self,
         sys: &mut S,
         t: f64,
         y: &mut SVector<f64, N>,
     ) -> Result<StepStats, IntegratorError> {
-        let mut st = StepStats::default();
-        let result = self.step_inner(sys, t, y, &mut st);
-        self.stats.accumulate(&st);
-        result.map(|()| st)
+        let trial = self.try_step(sys, t, y, self.h)?;
+        self.accept(&trial);
+        *y = trial.y;
+        let mut st = trial.stats;
+        st.steps = 1;
+        Ok(st)
     }
 
-    fn step_inner<S: OdeSystem<N>>(
+    /// Computes a step of size `h` from `(t, y)` with its error estimate, without
+    /// committing it: pass it to [`Sdirk::accept`] to continue from it, or try again
+    /// (e.g. with a smaller `h`) from the same point.
+    pub fn try_step<S: OdeSystem<N>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &SVector<f64, N>,
+        h: f64,
+    ) -> Result<Trial<N>, IntegratorError> {
+        check_step(h)?;
+        let mut st = StepStats::default();
+        let result = self.try_step_inner(sys, t, y, h, &mut st);
+        self.stats.accumulate(&st);
+        result.map(|(y_new, k_end, error)| Trial {
+            t,
+            h,
+            y: y_new,
+            error,
+            stats: st,
+            k_end,
+        })
+    }
+
+    /// Makes `trial` the last step: the next one starting at its end continues it.
+    pub fn accept(&mut self, trial: &Trial<N>) {
+        self.last = Some(LastStep {
+            t_end: trial.t + trial.h,
+            y_end: trial.y,
+            k_end: trial.k_end,
+        });
+        self.stats.steps += 1;
+    }
+
+    fn try_step_inner<S: OdeSystem<N>>(
+        &mut self,
+        sys: &mut S,
+        t: f64,
+        y: &SVector<f64, N>,
+        h: f64,
         st: &mut StepStats,
-    ) -> Result<(), IntegratorError> {
+    ) -> Result<(SVector<f64, N>, SVector<f64, N>, f64), IntegratorError> {
         if !t.is_finite() || !y.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::NonFinite { t });
         }
-        if self.refresh {
-            self.refresh_matrix(sys, t, y, st)?;
+        if self.refresh || self.jac.is_none() {
+            self.refresh_matrix(sys, t, y, h, st)?;
+        } else if (h - self.m_inv_h).abs() > 1e-9 * h {
+            // (A step that differs by round-off only, e.g. node intervals computed as
+            // differences of times, keeps the matrix: it only steers Newton.)
+            self.factor(t, h, st)?;
         }
-        let h = self.h;
-        let hg = h * GAMMA;
-        // Predictor: stage derivative k_i ~ k_(i-1); for stage 1 the last stage of the
-        // previous step if this step continues it, else k = 0 (Y = y_n).
-        let mut k_guess = match &self.last {
-            Some(l) if (t - l.t_end).abs() <= 1e-6 * h && *y == l.y_end => l.k_end,
-            _ => SVector::zeros(),
-        };
-        self.last = None;
+        let tab = self.tab;
+        let hg = h * tab.gamma;
+        let continues = self.last.as_ref().filter(|l| l.continues(t, y, h));
+        let mut k = [SVector::<f64, N>::zeros(); MAX_STAGES];
+        let explicit = tab.explicit_first_stage();
+        // Predictor: stage derivative k_i ~ k_(i-1); for the first implicit stage the last
+        // stage of the previous step if this step continues it (else the explicit stage
+        // derivative, else k = 0, i.e. Y = y_n).
+        let mut k_guess = continues.map_or(SVector::zeros(), |l| l.k_end);
+        if explicit {
+            k[0] = match (continues, &self.first_stage) {
+                (Some(l), _) => l.k_end,
+                (None, Some((t0, y0, f0))) if *t0 == t && y0 == y => *f0,
+                _ => {
+                    let f0 = sys.rhs(t, y);
+                    st.rhs_calls += 1;
+                    if !f0.iter().all(|v| v.is_finite()) {
+                        return Err(IntegratorError::NonFinite { t });
+                    }
+                    self.first_stage = Some((t, *y, f0));
+                    f0
+                }
+            };
+            k_guess = k[0];
+        }
         // Inverse weights of the Newton norm (see module docs).
         let inv_scale = SVector::<f64, N>::from_fn(|i, _| {
             1.0 / (self.abs_tol[i] + self.opts.rel_tol * y[i].abs())
         });
-        let mut k = [SVector::<f64, N>::zeros(); STAGES];
         let mut y_stage = *y;
         let mut max_rate: f64 = 0.0;
-        for i in 0..STAGES {
+        for i in usize::from(explicit)..tab.stages {
             let mut base = *y;
             for (j, kj) in k.iter().enumerate().take(i) {
-                base += (h * A[i][j]) * kj;
+                base += (h * tab.a[i][j]) * kj;
             }
-            let t_i = t + C[i] * h;
+            let t_i = t + tab.c[i] * h;
             // Newton start; on failure, moved to the last contracting iterate.
             let mut start = base + hg * k_guess;
             let mut refreshes = 0;
             y_stage = loop {
                 let can_refresh = refreshes < MAX_STAGE_REFRESHES;
-                match self.solve_stage(sys, t_i, &inv_scale, &base, &mut start, can_refresh, st) {
+                match self.solve_stage(sys, t_i, hg, &inv_scale, &base, &mut start, can_refresh, st)
+                {
                     Ok((y_i, rate)) => {
                         max_rate = max_rate.max(rate);
                         break y_i;
@@ -264,7 +348,7 @@ impl<const N: usize> Sdirk<N> {
                     Err(_) if can_refresh => {
                         refreshes += 1;
                         st.retries += 1;
-                        self.refresh_matrix(sys, t_i, &start, st)?;
+                        self.refresh_matrix(sys, t_i, &start, h, st)?;
                     }
                     Err(Failure::NonFinite) => return Err(IntegratorError::NonFinite { t }),
                     Err(Failure::Newton { iterations, rate }) => {
@@ -280,16 +364,30 @@ impl<const N: usize> Sdirk<N> {
             k[i] = (y_stage - base) / hg;
             k_guess = k[i];
         }
-        *y = y_stage;
-        st.steps = 1;
         // Slow contraction in this step: refresh the Jacobian before the next one.
         self.refresh = max_rate > self.opts.refresh_rate;
-        self.last = Some(LastStep {
-            t_end: t + h,
-            y_end: y_stage,
-            k_end: k[STAGES - 1],
-        });
-        Ok(())
+        let error = match tab.b_hat {
+            Some(bh) => {
+                let mut e = SVector::<f64, N>::zeros();
+                for (i, ki) in k.iter().enumerate().take(tab.stages) {
+                    e += (h * (tab.b[i] - bh[i])) * ki;
+                }
+                let e = self.m_inv * e;
+                let sum: f64 = (0..N)
+                    .map(|i| {
+                        let sc =
+                            self.err_abs[i] + self.err_rel[i] * y[i].abs().max(y_stage[i].abs());
+                        (e[i] / sc).powi(2)
+                    })
+                    .sum();
+                (sum / N as f64).sqrt()
+            }
+            None => 0.0,
+        };
+        if !error.is_finite() {
+            return Err(IntegratorError::NonFinite { t });
+        }
+        Ok((y_stage, k[tab.stages - 1], error))
     }
 
     /// Evaluates `J` at `(t, y)` and factorises `I - h gamma J`.
@@ -298,6 +396,7 @@ impl<const N: usize> Sdirk<N> {
         sys: &mut S,
         t: f64,
         y: &SVector<f64, N>,
+        h: f64,
         st: &mut StepStats,
     ) -> Result<(), IntegratorError> {
         let jac = match sys.jacobian(t, y) {
@@ -319,94 +418,36 @@ impl<const N: usize> Sdirk<N> {
         if !jac.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::NonFinite { t });
         }
-        let m = SMatrix::<f64, N, N>::identity() - (self.h * GAMMA) * jac;
-        let lu = StaticLu::factor(&m).ok_or(IntegratorError::SingularMatrix { t })?;
+        self.jac = Some(jac);
+        self.refresh = false;
+        self.factor(t, h, st)
+    }
+
+    /// Factorises `I - h gamma J` with the stored Jacobian (`t` only names the error).
+    fn factor(&mut self, t: f64, h: f64, st: &mut StepStats) -> Result<(), IntegratorError> {
+        let jac = self
+            .jac
+            .as_ref()
+            .ok_or(IntegratorError::SingularMatrix { t })?;
+        let c = h * self.tab.gamma;
         st.lu_factorizations += 1;
-        let m_inv = lu.inverse();
+        let m_inv = match second_order_inverse(jac, c) {
+            Some(inv) => inv,
+            None => {
+                let m = SMatrix::<f64, N, N>::identity() - c * jac;
+                StaticLu::factor(&m)
+                    .ok_or(IntegratorError::SingularMatrix { t })?
+                    .inverse()
+            }
+        };
         // A nearly singular matrix can pass the pivot test and still overflow here.
         if !m_inv.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::SingularMatrix { t });
         }
         self.m_inv = m_inv;
-        self.refresh = false;
+        self.m_inv_h = h;
         self.eta = 1.0; // new matrix: measure the contraction again before trusting it
         Ok(())
-    }
-
-    /// Solves the stage equation `Y = base + h gamma f(t_i, Y)` by simplified Newton
-    /// from `*start` with the current iteration matrix. Returns `Y` and the largest
-    /// contraction rate seen. On failure `*start` holds the last iterate reached while contracting (a
-    /// better point for a new Jacobian). With `early_abort`, gives up as soon as the
-    /// tolerance looks out of reach in the iterations left (a refresh is cheaper).
-    #[allow(clippy::too_many_arguments)]
-    fn solve_stage<S: OdeSystem<N>>(
-        &mut self,
-        sys: &mut S,
-        t_i: f64,
-        inv_scale: &SVector<f64, N>,
-        base: &SVector<f64, N>,
-        start: &mut SVector<f64, N>,
-        early_abort: bool,
-        st: &mut StepStats,
-    ) -> Result<(SVector<f64, N>, f64), Failure> {
-        let hg = self.h * GAMMA;
-        let max_iter = self.opts.max_newton_iters;
-        let mut y_stage = *start;
-        // Before a rate is measured, assume the worst one the refresh policy tolerates
-        // (or the last measured one if worse): a first correction is accepted alone
-        // only if it is already within ~1/eta tolerances.
-        let eta_floor = self.opts.refresh_rate / (1.0 - self.opts.refresh_rate);
-        let mut eta = self.eta.max(eta_floor);
-        let mut prev_norm = 0.0;
-        let mut rate = f64::NAN;
-        let mut max_rate: f64 = 0.0;
-        for iters in 1..=max_iter {
-            let f = sys.rhs(t_i, &y_stage);
-            st.rhs_calls += 1;
-            st.newton_iterations += 1;
-            let delta = self.m_inv * (base + hg * f - y_stage);
-            // Weighted RMS norm of the correction.
-            let norm = (delta.component_mul(inv_scale).norm_squared() / N as f64).sqrt();
-            if !norm.is_finite() {
-                return Err(Failure::NonFinite);
-            }
-            if iters > 1 {
-                rate = norm / prev_norm;
-                max_rate = max_rate.max(rate);
-                st.max_rate = st.max_rate.max(rate);
-                if rate.is_nan() || rate >= 0.99 {
-                    return Err(Failure::Newton {
-                        iterations: iters,
-                        rate,
-                    });
-                }
-                eta = rate / (1.0 - rate);
-            }
-            y_stage += delta;
-            prev_norm = norm;
-            if iters > 1 {
-                *start = y_stage;
-            }
-            if eta * norm <= 1.0 {
-                if !y_stage.iter().all(|v| v.is_finite()) {
-                    return Err(Failure::NonFinite);
-                }
-                self.eta = eta;
-                return Ok((y_stage, max_rate));
-            }
-            // Predicted error after the remaining iterations (Hairer & Wanner II, IV.8).
-            let left = (max_iter - iters) as i32;
-            if early_abort && iters > 1 && eta * norm * rate.powi(left) > 1.0 {
-                return Err(Failure::Newton {
-                    iterations: iters,
-                    rate,
-                });
-            }
-        }
-        Err(Failure::Newton {
-            iterations: max_iter,
-            rate,
-        })
     }
 }
 
@@ -422,5 +463,15 @@ impl<const N: usize> Stepper<N> for Sdirk<N> {
         y: &mut SVector<f64, N>,
     ) -> Result<StepStats, IntegratorError> {
         Sdirk::step(self, sys, t, y)
+    }
+}
+
+fn check_step(h: f64) -> Result<(), IntegratorError> {
+    if h > 0.0 && h.is_finite() {
+        Ok(())
+    } else {
+        Err(IntegratorError::InvalidSetting(
+            "step size must be finite and > 0",
+        ))
     }
 }

@@ -1,11 +1,13 @@
 //! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
 //! sweep row; and the record a finished case leaves on disk.
 
+use super::continuation::Branch;
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::model::NSTATE;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
-use crate::study::wear_loop::{run_wear, WearMode, WearRun};
+use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
 use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
 
@@ -33,14 +35,18 @@ const DYNAMICS_COLUMNS: [&str; 9] = [
     "mesh_harmonic4_mm_per_s",
 ];
 
-/// Extra columns of a wear row: final maximum wear depths and update counts per mode.
-const WEAR_COLUMNS: [&str; 6] = [
+/// Extra columns of a wear row, per mode: final maximum wear depths, update count, and
+/// the cycles reached (below the case's total when the run stopped at the edge of the
+/// model's domain, [`crate::study::wear_loop::WearStop`]).
+const WEAR_COLUMNS: [&str; 8] = [
     "wear_max_pinion_dynamic_um",
     "wear_max_gear_dynamic_um",
     "wear_updates_dynamic",
+    "wear_cycles_dynamic",
     "wear_max_pinion_quasi_static_um",
     "wear_max_gear_quasi_static_um",
     "wear_updates_quasi_static",
+    "wear_cycles_quasi_static",
 ];
 
 impl SweepRun {
@@ -105,26 +111,51 @@ pub struct CaseOutcome {
 
 /// Build the model of `case` and run it.
 pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
-    let model = Model::from_case(case).map_err(CaseError::Model)?;
-    let results = match run {
-        SweepRun::Dynamics => {
-            let wear = WearState::new(model.grid.len());
-            let r = model
-                .dynamic(&wear, &ExternalError::none())
-                .map_err(|e| CaseError::Solve(e.into()))?;
-            dynamics_results(&ResponseSummary::of(&r))
-        }
+    match run {
+        SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
+            let model = Model::from_case(case).map_err(CaseError::Model)?;
             let one = |mode| run_wear(&model, WearRun::new(mode), &mut |_| Ok(()));
             let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
             let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
-            wear_results(&d, &q)
+            // A run the solver gave up on is a failed case; one that left the model's
+            // domain is a result (its cycles column says where it stopped).
+            for r in [&d, &q] {
+                if let Some(stop) = r.stopped.as_ref().filter(|s| s.kind == StopKind::Numerical) {
+                    return Err(CaseError::Solve(anyhow::anyhow!(
+                        "the {} wear run stopped early: {}",
+                        r.mode.name(),
+                        stop.reason
+                    )));
+                }
+            }
+            Ok(CaseOutcome {
+                results: wear_results(&d, &q),
+                warnings: model.warnings,
+            })
         }
-    };
-    Ok(CaseOutcome {
-        results,
+    }
+}
+
+/// One steady-state evaluation of `case` with new teeth (a `--run dynamics` row), started
+/// from `start` (a periodic state of a neighbouring case, [`DynamicResponse::end_state`])
+/// or, with `None`, from the static equilibrium; also returns the end state.
+///
+/// [`DynamicResponse::end_state`]: crate::dynamics::response::DynamicResponse::end_state
+pub fn run_dynamics_from(
+    case: &Case,
+    start: Option<&[f64; NSTATE]>,
+) -> Result<(CaseOutcome, [f64; NSTATE]), CaseError> {
+    let model = Model::from_case(case).map_err(CaseError::Model)?;
+    let wear = WearState::new(model.grid.len());
+    let r = model
+        .dynamic_from(&wear, &ExternalError::none(), start)
+        .map_err(|e| CaseError::Solve(e.into()))?;
+    let outcome = CaseOutcome {
+        results: dynamics_results(&ResponseSummary::of(&r)),
         warnings: model.warnings,
-    })
+    };
+    Ok((outcome, r.end_state))
 }
 
 /// Dynamics columns of the dynamic run's first update (new teeth), then the wear columns.
@@ -139,6 +170,7 @@ fn wear_results(d: &WearRun, q: &WearRun) -> Vec<f64> {
         v.push(last.map_or(f64::NAN, |r| r.wear.max_pinion_m() * 1e6));
         v.push(last.map_or(f64::NAN, |r| r.wear.max_gear_m() * 1e6));
         v.push(run.records.len().saturating_sub(1) as f64);
+        v.push(last.map_or(f64::NAN, |r| r.wear.cycles));
     }
     v
 }
@@ -156,11 +188,106 @@ pub struct CaseRecord {
     pub columns: Vec<String>,
     /// In `columns` order; null for a non-finite number.
     pub results: Vec<Option<f64>>,
+    /// Continuation sweeps only: the branch, and the state the point started from
+    /// (absent: static equilibrium) and ended in, as the bits of each f64 (exact in JSON).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub continuation: Option<ContinuationLink>,
+    /// SHA-256 of the record's JSON without this field ([`CaseRecord::sealed`]), so an
+    /// edited record is detected ([`CaseRecord::verify`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checksum: Option<String>,
+}
+
+/// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ContinuationLink {
+    pub branch: Branch,
+    /// `f64::to_bits` of the start state; `None` for the static equilibrium.
+    pub start_state_bits: Option<Vec<u64>>,
+    /// `f64::to_bits` of the end state (the next point's start).
+    pub end_state_bits: Vec<u64>,
+}
+
+impl ContinuationLink {
+    pub fn new(branch: Branch, start: Option<&[f64; NSTATE]>, end: &[f64; NSTATE]) -> Self {
+        Self {
+            branch,
+            start_state_bits: start.map(state_bits),
+            end_state_bits: state_bits(end),
+        }
+    }
+
+    /// The end state, if the record holds a whole one.
+    pub fn end_state(&self) -> Option<[f64; NSTATE]> {
+        (self.end_state_bits.len() == NSTATE)
+            .then(|| std::array::from_fn(|i| f64::from_bits(self.end_state_bits[i])))
+    }
+
+    /// Whether this point was started from `start` (bit for bit).
+    pub fn started_from(&self, start: Option<&[f64; NSTATE]>) -> bool {
+        self.start_state_bits == start.map(state_bits)
+    }
+}
+
+fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
+    s.iter().map(|x| x.to_bits()).collect()
 }
 
 impl CaseRecord {
+    fn content_checksum(&self) -> String {
+        let plain = CaseRecord {
+            checksum: None,
+            ..self.clone()
+        };
+        crate::checksum::sha256_hex(serde_json::to_string(&plain).unwrap_or_default().as_bytes())
+    }
+
+    /// The record with its checksum set, ready to be written.
+    pub fn sealed(mut self) -> Self {
+        self.checksum = Some(self.content_checksum());
+        self
+    }
+
+    /// Read back: the checksum matches the content, and the results match the columns.
+    pub fn verify(&self) -> Result<(), String> {
+        match &self.checksum {
+            None => return Err("has no checksum".into()),
+            Some(c) if *c != self.content_checksum() => {
+                return Err("does not match its checksum: the file was changed".into())
+            }
+            Some(_) => {}
+        }
+        if self.results.len() != self.columns.len() {
+            return Err(format!(
+                "holds {} results for {} columns",
+                self.results.len(),
+                self.columns.len()
+            ));
+        }
+        if self.keys.len() != self.values.len() {
+            return Err("its varied keys and values differ in number".into());
+        }
+        Ok(())
+    }
+
+    /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
+    /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
+    pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
+        let bytes = match std::fs::read(path) {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+            Err(e) => return Err(format!("{}: cannot read: {e}", path.display())),
+        };
+        let r: CaseRecord = serde_json::from_slice(&bytes)
+            .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;
+        r.verify().map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(Some(r))
+    }
+
     /// Whether this record is the finished result of the given case: same id, resolved
-    /// case, run kind, varied keys and values, and the columns this version writes.
+    /// case, run kind, varied keys and values, and the columns this version writes. A
+    /// continuation point is not the result of an ordinary case (see
+    /// [`CaseRecord::continuation`] for its own check).
     pub fn is_result_of(
         &self,
         case_id: usize,
@@ -176,6 +303,34 @@ impl CaseRecord {
             && self.values == values
             && self.columns == run.columns()
             && self.results.len() == self.columns.len()
+            && self.continuation.is_none()
+    }
+
+    /// Whether this record is the finished result of continuation point `case_id` on
+    /// `branch`, started from `start`: [`CaseRecord::is_result_of`] apart from the link,
+    /// and the same branch and start state, so that a resumed branch follows the same
+    /// path as an uninterrupted one.
+    pub fn is_continuation_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        keys: &[String],
+        values: &[String],
+        branch: Branch,
+        start: Option<&[f64; NSTATE]>,
+    ) -> bool {
+        let Some(link) = &self.continuation else {
+            return false;
+        };
+        let plain = CaseRecord {
+            continuation: None,
+            checksum: None,
+            ..self.clone()
+        };
+        plain.is_result_of(case_id, hash, SweepRun::Dynamics, keys, values)
+            && link.branch == branch
+            && link.started_from(start)
+            && link.end_state().is_some()
     }
 }
 
@@ -194,7 +349,11 @@ mod tests {
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
         // 2e-5 m is 20 um; 4e-3 m/s is 4 mm/s (to rounding of the unit factors).
         assert!((v[0] - 20.0).abs() < 1e-12 && (v[8] - 4.0).abs() < 1e-12);
-        assert_eq!(SweepRun::Wear.columns().len(), v.len() + 6);
+        let (d, q) = (
+            WearRun::new(WearMode::Dynamic),
+            WearRun::new(WearMode::QuasiStatic),
+        );
+        assert_eq!(SweepRun::Wear.columns().len(), wear_results(&d, &q).len());
     }
 
     #[test]
@@ -209,6 +368,8 @@ mod tests {
             values: values.clone(),
             columns: SweepRun::Dynamics.columns(),
             results: vec![Some(1.0); 9],
+            continuation: None,
+            checksum: None,
         };
         assert!(r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &values));
         assert!(!r.is_result_of(4, "abc", SweepRun::Dynamics, &keys, &values));

@@ -1,7 +1,12 @@
 //! The sweep table: one row per case (varied values as text, `case_id`, result numbers),
 //! its CSV form, and the merge of shard tables.
+//!
+//! A continuation sweep's rows also carry their branch: the CSV then has a `branch`
+//! column (`up` or `down`) right after `case_id`. Ordinary sweeps have no such column, so
+//! their tables are the same as before continuation existed.
 
 use super::case_run::CaseRecord;
+use super::continuation::Branch;
 use std::collections::BTreeMap;
 
 /// One case's row.
@@ -12,6 +17,8 @@ pub struct SweepRow {
     pub values: Vec<String>,
     /// Result numbers; NaN where a number was not finite (an empty CSV cell).
     pub results: Vec<f64>,
+    /// The branch of a continuation point; `None` in an ordinary sweep.
+    pub branch: Option<Branch>,
 }
 
 impl SweepRow {
@@ -19,6 +26,7 @@ impl SweepRow {
     fn same_as(&self, o: &SweepRow) -> bool {
         self.case_id == o.case_id
             && self.values == o.values
+            && self.branch == o.branch
             && self.results.len() == o.results.len()
             && self
                 .results
@@ -47,6 +55,7 @@ impl SweepTable {
                 case_id: r.case_id,
                 values: r.values.clone(),
                 results: r.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect(),
+                branch: r.continuation.as_ref().map(|c| c.branch),
             })
             .collect();
         rows.sort_by_key(|r| r.case_id);
@@ -62,17 +71,30 @@ impl SweepTable {
         self.columns.iter().position(|c| c == name)
     }
 
-    /// CSV: header `keys..., case_id, columns...`; numbers as `crate::format` writes them
-    /// (shortest round trip, plain where short), non-finite numbers as empty cells.
+    /// Whether the rows carry branches (a continuation sweep).
+    pub fn has_branches(&self) -> bool {
+        self.rows.iter().any(|r| r.branch.is_some())
+    }
+
+    /// CSV: header `keys..., case_id, [branch,] columns...`; numbers as
+    /// `crate::format` writes them (shortest round trip, plain where short), non-finite
+    /// numbers as empty cells. The `branch` column is written only for a continuation sweep.
     pub fn to_csv(&self) -> Result<Vec<u8>, csv::Error> {
         let mut w = csv::Writer::from_writer(Vec::new());
+        let branches = self.has_branches();
         let mut header = self.keys.clone();
         header.push("case_id".into());
+        if branches {
+            header.push("branch".into());
+        }
         header.extend(self.columns.iter().cloned());
         w.write_record(&header)?;
         for r in &self.rows {
             let mut rec = r.values.clone();
             rec.push(r.case_id.to_string());
+            if branches {
+                rec.push(r.branch.map_or("", |b| b.name()).to_string());
+            }
             rec.extend(r.results.iter().map(|v| {
                 if v.is_finite() {
                     crate::format::format_number(*v)
@@ -97,9 +119,12 @@ impl SweepTable {
         let Some(at) = header.iter().position(|h| h == "case_id") else {
             return Err("no `case_id` column: not a gearwear sweep table".into());
         };
+        let branch_at =
+            (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
+        let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let mut t = SweepTable {
             keys: header[..at].to_vec(),
-            columns: header[at + 1..].to_vec(),
+            columns: header[first_result..].to_vec(),
             rows: Vec::new(),
         };
         for (line, rec) in r.records().enumerate() {
@@ -109,8 +134,14 @@ impl SweepTable {
             let case_id = cell(at)
                 .parse()
                 .map_err(|_| format!("row {row}: case_id `{}` is not a whole number", cell(at)))?;
+            let branch = match branch_at.map(cell) {
+                None | Some("") => None,
+                Some(b) => Some(Branch::parse(b).ok_or_else(|| {
+                    format!("row {row}: branch `{b}` is neither `up` nor `down`")
+                })?),
+            };
             let mut results = Vec::with_capacity(t.columns.len());
-            for (i, name) in header.iter().enumerate().skip(at + 1) {
+            for (i, name) in header.iter().enumerate().skip(first_result) {
                 let s = cell(i);
                 results.push(if s.is_empty() {
                     f64::NAN
@@ -123,6 +154,7 @@ impl SweepTable {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
                 results,
+                branch,
             });
         }
         t.rows.sort_by_key(|r| r.case_id);
@@ -189,6 +221,7 @@ mod tests {
                     case_id: i,
                     values: vec![format!("{}", 20 + i)],
                     results: vec![0.1 * i as f64 + bump, if i == 1 { f64::NAN } else { 1.5 }],
+                    branch: None,
                 })
                 .collect(),
         }
@@ -204,6 +237,30 @@ mod tests {
         for (a, b) in back.rows.iter().zip(&t.rows) {
             assert!(a.same_as(b), "{a:?} != {b:?}");
         }
+    }
+
+    #[test]
+    fn branch_column_only_for_continuation_and_round_trips() {
+        let plain = table(&[0, 1], 0.0);
+        let text = String::from_utf8(plain.to_csv().unwrap()).unwrap();
+        assert!(!text.contains("branch"), "{text}");
+        let mut cont = table(&[0, 1, 2], 0.25);
+        for (r, b) in cont
+            .rows
+            .iter_mut()
+            .zip([Branch::Up, Branch::Up, Branch::Down])
+        {
+            r.branch = Some(b);
+        }
+        let text = String::from_utf8(cont.to_csv().unwrap()).unwrap();
+        assert!(text.starts_with("operating.input_speed_hz,case_id,branch,dte_max_um"));
+        let back = SweepTable::from_csv(&text).unwrap();
+        assert_eq!(back.columns, cont.columns);
+        for (a, b) in back.rows.iter().zip(&cont.rows) {
+            assert!(a.same_as(b), "{a:?} != {b:?}");
+        }
+        let bad = text.replacen(",down,", ",sideways,", 1);
+        assert!(SweepTable::from_csv(&bad).unwrap_err().contains("sideways"));
     }
 
     #[test]

@@ -1,0 +1,453 @@
+//! Integration of the gear model over one mesh period: error-controlled steps between
+//! the grid nodes, contact-mode events located inside steps, and what is recorded.
+//!
+//! Steps. The grid nodes of [`super::grid::period_nodes`] (the mesh events, where a pair
+//! enters or leaves contact or passes the pitch point, and `steps_per_mesh_period` nodes
+//! in all) bound the steps: no step crosses a node, so the stiffness jumps never fall
+//! inside a step, and the node spacing is the largest step. Inside each node interval
+//! the ESDIRK3(2) pair ([`super::integrator::tableau::ESDIRK32`]) chooses the step from
+//! its embedded error estimate (Hairer, Norsett & Wanner I, Sect. II.4; the standard
+//! controller h_new = h min(5, max(0.2, 0.9 err^(-1/3))), exponent 1/(embedded order + 1)).
+//! After a stiffness jump the bearing velocities settle within a few microseconds; at
+//! low input speed a node interval is hundreds of microseconds, so the controller takes
+//! small steps there and long ones on the quasi-static stretches.
+//!
+//! Contact mode. Each step holds the contact mode fixed ([`super::model::ContactMode`]);
+//! a step that ends across a switch is cut back to the switch by the Illinois variant of
+//! regula falsi on the step length (each trial is a step from the same start, so the
+//! located point is a point of the discrete solution), and the next step starts in the
+//! new mode. A Newton failure rejects the step and halves it, down to a floor.
+
+use super::integrator::tableau::ESDIRK32;
+use super::integrator::{IntegratorError, OdeSystem, Sdirk, SdirkOptions, Trial};
+use super::model::SWITCHES;
+use super::model::{dof, ContactMode, GearSystem, ModeSwitch, State, NDOF, NSTATE};
+use nalgebra::SMatrix;
+
+/// Why an integration over a mesh period failed.
+#[derive(Debug, Clone, thiserror::Error)]
+#[error(
+    "the integrator failed at t = {time_s:.6e} s (mesh phase {phase_deg:.3} deg of the \
+     mesh period; DTE {dte_um:.4} um, mesh force {force_n:.1} N): {reason}; \
+     lower numerics.integration_tolerance or raise numerics.steps_per_mesh_period"
+)]
+pub struct StepFailure {
+    pub time_s: f64,
+    pub phase_deg: f64,
+    pub dte_um: f64,
+    pub force_n: f64,
+    pub reason: String,
+}
+
+/// What a caller sees of the solution over a period.
+pub trait PeriodObserver {
+    /// A point of the solution: the period start and every accepted step's end but the
+    /// period's last. `decide` is a time inside the node interval the point opens (the
+    /// right limit at a mesh event).
+    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State);
+    /// An accepted step from `(t, y0)` to `(t + h, y1)`, taken in contact mode `mode`.
+    fn step(&mut self, sys: &GearSystem, t: f64, h: f64, y0: &State, y1: &State, mode: ContactMode);
+}
+
+/// Observes nothing (the periods of the steady-state search).
+impl PeriodObserver for () {
+    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &State) {}
+    fn step(&mut self, _: &GearSystem, _: f64, _: f64, _: &State, _: &State, _: ContactMode) {}
+}
+
+/// Work counters of the period integrations.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct StepCounts {
+    pub accepted: usize,
+    /// Steps rejected by the error test.
+    pub rejected: usize,
+    /// Steps rejected because Newton failed.
+    pub newton_failures: usize,
+    /// Contact-mode switches located, and the trial steps that located them.
+    pub events: usize,
+    pub event_trials: usize,
+}
+
+/// Scales of the state of the gear model, SI: the mesh deflection under the nominal load
+/// (m) for every displacement along the line of action, and the same at the mesh
+/// frequency (m/s) for the velocities; angles through their shaft's base radius.
+pub fn state_scales(sys: &GearSystem) -> State {
+    let p = sys.params;
+    let f_nominal = p.brake_torque_nm / sys.pair.gear.base_radius_m;
+    let delta_ref = f_nominal / sys.mesh.mean_stiffness_n_per_m();
+    let omega_mesh = p.pinion_speed_rad_s * sys.pair.pinion.teeth as f64;
+    let (rp, rg) = (sys.pair.pinion.base_radius_m, sys.pair.gear.base_radius_m);
+    let mut s = State::zeros();
+    for i in 0..NDOF {
+        let lever = match i {
+            dof::PHI_M | dof::PHI_P => rp,
+            dof::PHI_G | dof::PHI_B => rg,
+            _ => 1.0,
+        };
+        s[i] = delta_ref / lever;
+        s[NDOF + i] = delta_ref * omega_mesh / lever;
+    }
+    s
+}
+
+/// The model seen by the integrator.
+struct Ode<'s, 'a> {
+    sys: &'s GearSystem<'a>,
+}
+
+impl OdeSystem<NSTATE> for Ode<'_, '_> {
+    fn rhs(&mut self, t: f64, y: &State) -> State {
+        self.sys.derivative(t, y).0
+    }
+    fn jacobian(&mut self, t: f64, y: &State) -> Option<SMatrix<f64, NSTATE, NSTATE>> {
+        Some(self.sys.jacobian(t, y))
+    }
+}
+
+/// Steps the gear model over whole mesh periods (see module docs).
+pub struct PeriodStepper<'s, 'a> {
+    sys: &'s GearSystem<'a>,
+    stepper: Sdirk<NSTATE>,
+    /// Node times within a period, s, from 0 to the period.
+    nodes: Vec<f64>,
+    /// Node k changes the set of pairs in contact (a pair enters or leaves).
+    set_change: Vec<bool>,
+    /// A time offset far inside any node interval, s (for deciding right limits).
+    eps_t: f64,
+    h_min: f64,
+    /// Step ends (times within the period, s) recorded by a [`PlanMode::Build`] period.
+    plan: Vec<f64>,
+    plan_mode: PlanMode,
+    pub counts: StepCounts,
+}
+
+/// How the steps of a period are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlanMode {
+    /// By the error control alone.
+    Free,
+    /// By the error control, and the step ends are kept as the plan.
+    Build,
+    /// Along the plan (refined where the error test fails, never coarsened), so that
+    /// the one-period map is the same smooth function of the start state in every
+    /// period: with steps chosen afresh, the accept/reject decisions would change with
+    /// the state and make the map jump by the size of the local errors, which a
+    /// fixed-point iteration cannot converge through.
+    Replay,
+}
+
+impl<'s, 'a> PeriodStepper<'s, 'a> {
+    /// A stepper over `nodes` (times within a period, 0 and the period included) with
+    /// the relative local error `tolerance` (dimensionless, of the state scales).
+    pub fn new(
+        sys: &'s GearSystem<'a>,
+        nodes: Vec<f64>,
+        tolerance: f64,
+    ) -> Result<Self, IntegratorError> {
+        let min_gap = nodes
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min);
+        let eps_t = 0.25 * min_gap;
+        let set_change = nodes
+            .iter()
+            .map(|t| {
+                let (a, b) = (sys.phase_at(t - eps_t), sys.phase_at(t + eps_t));
+                let count = |d: f64| sys.pair.pairs_in_contact_decided(d, d).count();
+                // The period boundary is pair entry: the set changes there too.
+                count(a) != count(b) || *t == 0.0 || *t == *nodes.last().unwrap_or(&0.0)
+            })
+            .collect();
+        let scales = state_scales(sys);
+        let mut rel = State::zeros();
+        for i in NDOF..NSTATE {
+            rel[i] = tolerance;
+        }
+        let mut stepper = Sdirk::with_tableau(&ESDIRK32, min_gap, SdirkOptions::default())?;
+        stepper.set_error_tolerance(scales * tolerance, rel)?;
+        // Newton solves the stages two decades below the local error tolerance
+        // (Hairer & Wanner II, Sect. IV.8: kappa ~ 1e-2).
+        stepper.set_abs_tol(scales * (1e-2 * tolerance))?;
+        Ok(Self {
+            sys,
+            stepper,
+            h_min: 1e-7 * min_gap,
+            plan: Vec::new(),
+            plan_mode: PlanMode::Free,
+            nodes,
+            set_change,
+            eps_t,
+            counts: StepCounts::default(),
+        })
+    }
+
+    /// How the following periods choose their steps.
+    pub fn set_plan_mode(&mut self, mode: PlanMode) {
+        self.plan_mode = mode;
+    }
+
+    pub fn plan_mode(&self) -> PlanMode {
+        self.plan_mode
+    }
+
+    /// The mesh period, s.
+    pub fn period(&self) -> f64 {
+        *self.nodes.last().unwrap_or(&0.0)
+    }
+
+    /// Work counters of the underlying stepper (rhs calls, LU factorisations).
+    pub fn integrator_stats(&self) -> super::integrator::StepStats {
+        self.stepper.stats()
+    }
+
+    /// Integrates `y` over the mesh period starting at `t0` (a mesh-period boundary),
+    /// showing the solution to `obs`.
+    pub fn integrate(
+        &mut self,
+        t0: f64,
+        y: &mut State,
+        obs: &mut dyn PeriodObserver,
+    ) -> Result<(), StepFailure> {
+        let sys = self.sys;
+        let n = self.nodes.len();
+        // Every period starts alike (a pair enters): the step sequence depends on the
+        // state only, so a periodic solution is stepped the same way in every period.
+        let mut h_prop = self.nodes[1] - self.nodes[0];
+        let mut decide = t0 + self.eps_t;
+        let mut mode = sys.natural_mode_decided(t0, decide, y);
+        self.stepper.invalidate_jacobian();
+        obs.point(sys, t0, decide, y);
+        let max_events = 100 * n;
+        let events_before = self.counts.events;
+        if self.plan_mode == PlanMode::Build {
+            self.plan.clear();
+        }
+        // Next point of the plan not yet passed (replay).
+        let mut next_plan = 0;
+        for k in 1..n {
+            let tb = t0 + self.nodes[k];
+            let mut t = t0 + self.nodes[k - 1];
+            while t < tb {
+                let rest = tb - t;
+                let mut target = tb;
+                let h = if self.plan_mode == PlanMode::Replay {
+                    while next_plan < self.plan.len() && t0 + self.plan[next_plan] <= t {
+                        next_plan += 1;
+                    }
+                    if next_plan < self.plan.len() && t0 + self.plan[next_plan] < tb {
+                        target = t0 + self.plan[next_plan];
+                    }
+                    target - t
+                } else if rest <= 1.05 * h_prop {
+                    // Land on the node without leaving a sliver for the next step.
+                    rest
+                } else if rest < 2.0 * h_prop {
+                    0.5 * rest
+                } else {
+                    h_prop
+                };
+                let (trial, event) = self.step(t, y, h, mode, &mut h_prop)?;
+                let t_new = if trial.h == h && h == target - t {
+                    target
+                } else {
+                    t + trial.h
+                };
+                match self.plan_mode {
+                    // A step the error test cut: the plan keeps the finer point.
+                    PlanMode::Replay if !event && trial.h < h => {
+                        self.plan.insert(next_plan, t_new - t0)
+                    }
+                    PlanMode::Build if !event && t_new < tb => self.plan.push(t_new - t0),
+                    _ => {}
+                }
+                let y0 = *y;
+                *y = trial.y;
+                obs.step(sys, t, t_new - t, &y0, y, mode);
+                decide = if t_new == tb { tb + self.eps_t } else { t_new };
+                if event {
+                    mode = sys.natural_mode_decided(t_new, decide, y);
+                    self.stepper.invalidate_jacobian();
+                    if self.counts.events - events_before > max_events {
+                        return Err(self.failure(
+                            t_new,
+                            y,
+                            "the contact opens and closes without end (chatter)".into(),
+                        ));
+                    }
+                }
+                t = t_new;
+                if t < tb {
+                    obs.point(sys, t, decide, y);
+                }
+            }
+            if self.set_change[k] && k + 1 < n {
+                mode = sys.natural_mode_decided(tb, decide, y);
+                self.stepper.invalidate_jacobian();
+            }
+            if k + 1 < n {
+                obs.point(sys, tb, decide, y);
+            }
+        }
+        Ok(())
+    }
+
+    /// One accepted step from `(t, y)` of size `h` or less (error test, Newton
+    /// failure, contact event). Returns the step and whether it ended on a located
+    /// mode switch; updates the proposed next step `h_prop`.
+    fn step(
+        &mut self,
+        t: f64,
+        y: &State,
+        mut h: f64,
+        mode: ContactMode,
+        h_prop: &mut f64,
+    ) -> Result<(Trial<NSTATE>, bool), StepFailure> {
+        loop {
+            match self.trial(t, y, h, mode) {
+                Err(e) => {
+                    self.counts.newton_failures += 1;
+                    h *= 0.5;
+                    if h < self.h_min {
+                        return Err(self.failure(
+                            t,
+                            y,
+                            format!("{e} (step halved to {:.2e} s)", h),
+                        ));
+                    }
+                }
+                Ok(tr) if tr.error > 1.0 => {
+                    self.counts.rejected += 1;
+                    h *= (0.9 * tr.error.powf(-1.0 / 3.0)).clamp(0.2, 0.9);
+                    if h < self.h_min {
+                        return Err(self.failure(
+                            t,
+                            y,
+                            format!(
+                                "local error {:.2e} of tolerance at step {:.2e} s",
+                                tr.error, h
+                            ),
+                        ));
+                    }
+                }
+                Ok(tr) => {
+                    *h_prop = h * (0.9 * tr.error.max(1e-10).powf(-1.0 / 3.0)).clamp(0.2, 5.0);
+                    let sw = self.switches(mode, t + h, &tr.y, t + 0.5 * h);
+                    if !sw.any_crossed() {
+                        self.stepper.accept(&tr);
+                        self.counts.accepted += 1;
+                        return Ok((tr, false));
+                    }
+                    let located = self.locate(t, y, mode, tr, sw)?;
+                    self.stepper.accept(&located);
+                    self.counts.accepted += 1;
+                    self.counts.events += 1;
+                    return Ok((located, true));
+                }
+            }
+        }
+    }
+
+    /// A trial step in a frozen contact mode, the contact set decided at its middle.
+    fn trial(
+        &mut self,
+        t: f64,
+        y: &State,
+        h: f64,
+        mode: ContactMode,
+    ) -> Result<Trial<NSTATE>, IntegratorError> {
+        self.sys.set_contact_decision_time(Some(t + 0.5 * h));
+        self.sys.set_contact_mode(Some(mode));
+        let r = self.stepper.try_step(&mut Ode { sys: self.sys }, t, y, h);
+        self.sys.set_contact_mode(None);
+        self.sys.set_contact_decision_time(None);
+        r
+    }
+
+    fn switches(&self, mode: ContactMode, t: f64, y: &State, decide: f64) -> ModeSwitch {
+        self.sys.set_contact_decision_time(Some(decide));
+        let s = self.sys.mode_switch(mode, t, y);
+        self.sys.set_contact_decision_time(None);
+        s
+    }
+
+    /// Cuts the step `full` from `(t, y)` back to the first switch of `mode` it
+    /// crossed (`sw_full` at its end): Illinois regula falsi on the step length, on the
+    /// switch whose linear root estimate comes first. Returns the step ending just past
+    /// the switch (on the new side), within 1e-6 of the step length.
+    fn locate(
+        &mut self,
+        t: f64,
+        y: &State,
+        mode: ContactMode,
+        full: Trial<NSTATE>,
+        sw_full: ModeSwitch,
+    ) -> Result<Trial<NSTATE>, StepFailure> {
+        let h = full.h;
+        let (mut lo, mut m_lo) = (0.0, self.switches(mode, t, y, t + 0.5 * h));
+        let (mut hi, mut m_hi, mut best) = (h, sw_full, full);
+        let tol = (1e-6 * h).max(4.0 * f64::EPSILON * t.abs());
+        // Illinois weights: the end kept twice in a row has its value halved.
+        let (mut w_lo, mut w_hi, mut last_kept_lo) = (1.0, 1.0, None);
+        for _ in 0..60 {
+            if hi - lo <= tol {
+                break;
+            }
+            let mut tau = hi;
+            for j in (0..SWITCHES).filter(|j| m_hi.crossed(*j)) {
+                let (a, b) = (
+                    m_lo.margin(j).max(0.0) * w_lo,
+                    m_hi.margin(j).min(0.0) * w_hi,
+                );
+                if a - b > 0.0 {
+                    tau = tau.min(lo + (hi - lo) * a / (a - b));
+                }
+            }
+            let span = hi - lo;
+            tau = tau.clamp(lo + 1e-3 * span, hi - 1e-3 * span);
+            self.counts.event_trials += 1;
+            let tr = match self.trial(t, y, tau, mode) {
+                Ok(tr) => tr,
+                Err(_) => {
+                    tau = lo + 0.5 * span;
+                    self.trial(t, y, tau, mode).map_err(|e| {
+                        self.failure(t, y, format!("{e} while locating a contact switch"))
+                    })?
+                }
+            };
+            let sw = self.switches(mode, t + tau, &tr.y, t + 0.5 * tau);
+            if sw.any_crossed() {
+                (hi, m_hi, best) = (tau, sw, tr);
+                w_hi = 1.0;
+                w_lo = if last_kept_lo == Some(true) {
+                    0.5 * w_lo
+                } else {
+                    1.0
+                };
+                last_kept_lo = Some(true);
+            } else {
+                (lo, m_lo) = (tau, sw);
+                w_lo = 1.0;
+                w_hi = if last_kept_lo == Some(false) {
+                    0.5 * w_hi
+                } else {
+                    1.0
+                };
+                last_kept_lo = Some(false);
+            }
+        }
+        Ok(best)
+    }
+
+    fn failure(&self, t: f64, y: &State, reason: String) -> StepFailure {
+        let (_, ms) = self.sys.derivative(t, y);
+        let period_rad = self.sys.pair.mesh_angle_rad();
+        let phase = self.sys.phase_at(t) % period_rad;
+        StepFailure {
+            time_s: t,
+            phase_deg: phase / period_rad * 360.0,
+            dte_um: ms.deflection_m * 1e6,
+            force_n: ms.force_n,
+            reason,
+        }
+    }
+}

@@ -1,0 +1,129 @@
+//! The figure of a one-parameter sweep: max DTE and dynamic factor against the varied
+//! parameter, one curve per combination of the other varied keys and per continuation
+//! branch, with the speeds where a mesh harmonic meets a damped mesh pole marked.
+
+use super::figures::{panel, Curve};
+use super::plot::{Figure, LineStyle};
+use crate::study::sweep::{Branch, Crossing, SweepTable, SPEED_KEY};
+use std::collections::BTreeMap;
+
+/// One curve: legend name, branch, and points (x, max DTE, dynamic factor).
+type Group = (String, Option<Branch>, Vec<(f64, f64, f64)>);
+
+/// Line style of a branch: `up` solid, `down` dashed (ordinary curves keep the cycle).
+fn branch_style(b: Option<Branch>) -> Option<LineStyle> {
+    b.map(|b| match b {
+        Branch::Up => LineStyle::Solid,
+        Branch::Down => LineStyle::Dashed,
+    })
+}
+
+/// Legend name of a branch.
+fn branch_name(b: Branch, x_key: &str) -> String {
+    let what = if x_key == SPEED_KEY {
+        "speed"
+    } else {
+        "parameter"
+    };
+    match b {
+        Branch::Up => format!("up (rising {what})"),
+        Branch::Down => format!("down (falling {what})"),
+    }
+}
+
+/// Max DTE and dynamic factor against `x_key` (a varied key of `t` with numeric values).
+/// `marks` (with `poles_hz`, the damped mesh-pole frequencies) are drawn as labelled
+/// vertical lines. `None` when `x_key` is not varied or the result columns are missing.
+pub fn sweep_figure(
+    t: &SweepTable,
+    x_key: &str,
+    marks: &[Crossing],
+    poles_hz: &[f64],
+) -> Option<Figure> {
+    let kx = t.keys.iter().position(|k| k == x_key)?;
+    let (dte, df) = (t.column("dte_max_um")?, t.column("dynamic_factor")?);
+    // Curves keyed by the other keys' values, then the branch (up before down).
+    let mut groups: BTreeMap<(String, Option<u8>), Group> = BTreeMap::new();
+    for r in &t.rows {
+        let Ok(x) = r.values[kx].parse::<f64>() else {
+            continue;
+        };
+        let others: Vec<String> = (0..t.keys.len())
+            .filter(|i| *i != kx)
+            .map(|i| format!("{}={}", t.keys[i], r.values[i]))
+            .collect();
+        let others = others.join(", ");
+        let name = match (r.branch, others.is_empty()) {
+            (Some(b), true) => branch_name(b, x_key),
+            (Some(b), false) => format!("{others}, {}", branch_name(b, x_key)),
+            (None, _) => others.clone(),
+        };
+        groups
+            .entry((others, r.branch.map(|b| b as u8)))
+            .or_insert_with(|| (name, r.branch, Vec::new()))
+            .2
+            .push((x, r.results[dte], r.results[df]));
+    }
+    let (mut c_dte, mut c_df, mut styles) = (Vec::new(), Vec::new(), Vec::new());
+    for (name, branch, mut pts) in groups.into_values() {
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
+        c_dte.push(Curve::new(
+            name.clone(),
+            x.clone(),
+            pts.iter().map(|p| p.1).collect(),
+        ));
+        c_df.push(Curve::new(name, x, pts.iter().map(|p| p.2).collect()));
+        styles.push(branch_style(branch));
+    }
+    let several = poles_hz.len() > 1;
+    let vlines: Vec<(f64, String)> = marks
+        .iter()
+        .map(|c| (c.input_speed_hz, c.label(several)))
+        .collect();
+    let x_label = if x_key == SPEED_KEY {
+        "input speed (Hz)".to_string()
+    } else {
+        x_key.to_string()
+    };
+    let mut p1 = panel(&x_label, "max DTE (um)", c_dte);
+    let mut p2 = panel(&x_label, "dynamic factor (-)", c_df);
+    for p in [&mut p1, &mut p2] {
+        for (s, style) in p.series.iter_mut().zip(&styles) {
+            if let Some(st) = style {
+                s.style = *st;
+            }
+        }
+        p.vlines = vlines.clone();
+    }
+    let poles: Vec<String> = poles_hz.iter().map(|f| format!("{f:.0} Hz")).collect();
+    let title = if x_key == SPEED_KEY && !poles.is_empty() {
+        format!(
+            "Speed sweep (markers: k x z1 x f_in = damped mesh pole {}, k = 1..4)",
+            poles.join(", ")
+        )
+    } else if x_key == SPEED_KEY {
+        "Speed sweep".to_string()
+    } else {
+        format!("Sweep of {x_key}")
+    };
+    Some(Figure {
+        title,
+        panels: vec![p1, p2],
+    })
+}
+
+/// The figure of a sweep table: a speed sweep's (with `marks`, see [`sweep_figure`]) or a
+/// continuation sweep's (its branches against the varied value); `None` for other sweeps.
+pub fn figure_for(t: &SweepTable, marks: &[Crossing], poles_hz: &[f64]) -> Option<Figure> {
+    if t.keys.iter().any(|k| k == SPEED_KEY) {
+        sweep_figure(t, SPEED_KEY, marks, poles_hz)
+    } else if t.has_branches() {
+        sweep_figure(t, t.keys.first()?, &[], &[])
+    } else {
+        None
+    }
+}
+
+/// Size of the two-panel sweep figure, px (taller than the one-panel default).
+pub const SWEEP_FIGURE_PX: (u32, u32) = (900, 640);

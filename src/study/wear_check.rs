@@ -1,0 +1,103 @@
+//! Is a stored wear run one that this model could have produced? Checked before a run is
+//! resumed from a checkpoint, so an edited, truncated, reordered or foreign file is an
+//! error rather than a silently wrong result.
+//!
+//! The facts checked follow from the update scheme (`wear_loop`, paper eq. 17): a run
+//! starts with new teeth at cycle 0; every profile has one value per grid point; cycles
+//! increase and stay within the study's total; wear and per-cycle increments are finite
+//! and non-negative; each record's wear is the previous record's wear advanced by the
+//! previous increment over the cycles between them; the roughness is the case's law at
+//! the record's wear depth.
+
+use super::model::Model;
+use super::wear_loop::WearRun;
+
+/// Relative tolerance of the chain check: the advance is recomputed with the same
+/// floating-point operations, so only the rounding of the cycle difference (exact for
+/// whole cycles below 2^53) can differ; 1e-9 leaves room for that and still catches any
+/// edit of a value by more than a part in a billion.
+const CHAIN_TOL: f64 = 1e-9;
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= CHAIN_TOL * a.abs().max(b.abs()) + 1e-30
+}
+
+/// Check `run` against `model` (see the module docs); the error says which record and
+/// what is wrong.
+pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
+    let n = model.grid.len();
+    let total = model.case.wear.total_cycles;
+    let Some(first) = run.records.first() else {
+        return Err("holds no update".into());
+    };
+    if first.wear.cycles != 0.0
+        || first.wear.max_pinion_m() != 0.0
+        || first.wear.max_gear_m() != 0.0
+    {
+        return Err("its first update is not the new teeth at cycle 0".into());
+    }
+    for (i, r) in run.records.iter().enumerate() {
+        let at = |what: String| format!("update {i}: {what}");
+        for (name, v) in [
+            ("pinion wear", &r.wear.pinion_m),
+            ("gear wear", &r.wear.gear_m),
+            ("pinion wear increment", &r.increment_pinion_m),
+            ("gear wear increment", &r.increment_gear_m),
+        ] {
+            if v.len() != n {
+                return Err(at(format!(
+                    "{name} has {} points, the case's profile grid has {n}",
+                    v.len()
+                )));
+            }
+            if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
+                return Err(at(format!("{name} holds {x}, not a finite value >= 0")));
+            }
+        }
+        if r.path_rho1_m.len() != r.path_load_n.len() {
+            return Err(at("path positions and loads differ in length".into()));
+        }
+        if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
+            return Err(at(format!(
+                "cycles {} outside 0..{total} (wear.total_cycles)",
+                r.wear.cycles
+            )));
+        }
+        if !close(r.roughness_um, model.roughness_for(&r.wear)) {
+            return Err(at(format!(
+                "roughness {} um is not the case's {} um at this wear depth",
+                r.roughness_um,
+                model.roughness_for(&r.wear)
+            )));
+        }
+        if i == 0 {
+            continue;
+        }
+        let prev = &run.records[i - 1];
+        let dn = r.wear.cycles - prev.wear.cycles;
+        if dn <= 0.0 {
+            return Err(at(format!(
+                "cycles {} do not follow the previous update's {}",
+                r.wear.cycles, prev.wear.cycles
+            )));
+        }
+        let advanced = |h0: &[f64], d: &[f64], h1: &[f64]| {
+            h0.iter()
+                .zip(d)
+                .zip(h1)
+                .position(|((a, d), b)| !close(a + dn * d, *b))
+        };
+        if let Some(j) = advanced(
+            &prev.wear.pinion_m,
+            &prev.increment_pinion_m,
+            &r.wear.pinion_m,
+        )
+        .or_else(|| advanced(&prev.wear.gear_m, &prev.increment_gear_m, &r.wear.gear_m))
+        {
+            return Err(at(format!(
+                "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
+            )));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,50 @@
+//! Helpers shared by the sweep tests (through the binary).
+#![allow(dead_code)]
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+/// Coarse time and stiffness grids, two evaluated mesh periods: cheap cases.
+pub const CHEAP: [&str; 6] = [
+    "--set",
+    "numerics.steps_per_mesh_period=60",
+    "--set",
+    "numerics.evaluated_mesh_periods=2",
+    "--set",
+    "stiffness.table_points_per_mesh_period=60",
+];
+
+pub fn gearwear(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(args)
+        .output()
+        .expect("the gearwear binary runs")
+}
+
+/// Run and require success; returns stderr.
+pub fn ok(args: &[&str]) -> String {
+    let o = gearwear(args);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(o.status.success(), "gearwear {args:?} failed: {err}");
+    err
+}
+
+/// `gearwear sweep` with the cheap settings, `extra` arguments and `--out out`.
+pub fn sweep(extra: &[&str], out: &Path) -> String {
+    let mut a = vec!["sweep"];
+    a.extend(CHEAP);
+    a.extend(extra);
+    a.extend(["--out", out.to_str().unwrap()]);
+    ok(&a)
+}
+
+/// CSV as header and rows of cells.
+pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let h = r.headers().unwrap().iter().map(str::to_owned).collect();
+    let rows = r
+        .records()
+        .map(|x| x.unwrap().iter().map(str::to_owned).collect())
+        .collect();
+    (h, rows)
+}

@@ -1,0 +1,358 @@
+//! The steady-state solver checked against independent facts: convergence with the step,
+//! a second method for the linear limit (exponential propagation and a direct solve of
+//! the periodic boundary value problem), contact loss through a resonance, warm starts,
+//! and load shares at the recorded samples.
+
+use gearwear::config::load_case;
+use gearwear::dynamics::excitation::{ExternalError, PairGap};
+use gearwear::dynamics::grid::period_nodes;
+use gearwear::dynamics::model::{GearSystem, State, NDOF, NSTATE};
+use gearwear::dynamics::response::DynamicResponse;
+use gearwear::dynamics::spectrum::time_rms;
+use gearwear::dynamics::summary::ResponseSummary;
+use gearwear::study::Model;
+use gearwear::wear::WearState;
+use nalgebra::{DMatrix, DVector, SMatrix};
+
+fn model(sets: &[String]) -> Model {
+    Model::from_case(&load_case("", sets).expect("valid case")).expect("valid model")
+}
+
+fn sets(s: &[&str]) -> Vec<String> {
+    s.iter().map(|x| x.to_string()).collect()
+}
+
+fn new_teeth(m: &Model) -> WearState {
+    WearState::new(m.grid.len())
+}
+
+fn dynamic(m: &Model) -> DynamicResponse {
+    m.dynamic(&new_teeth(m), &ExternalError::none())
+        .expect("steady state")
+}
+
+/// Index of the recorded sample at time `t` (every grid node is one, with its exact time).
+fn sample_at(r: &DynamicResponse, t: f64) -> usize {
+    r.signals
+        .time_s
+        .iter()
+        .position(|s| *s == t)
+        .expect("a grid node")
+}
+
+/// Max DTE, DTE RMS, dynamic factor, RMS pinion y velocity.
+fn headline(m: &Model, r: &DynamicResponse) -> [f64; 4] {
+    let s = ResponseSummary::of(r);
+    let window = r.mesh_period_s * m.settings.evaluated_mesh_periods as f64;
+    [
+        s.dte_max_m,
+        time_rms(&r.signals.time_s, &r.signals.dte_m, window),
+        s.dynamic_factor,
+        s.velocity_y_pinion_rms_m_per_s,
+    ]
+}
+
+#[test]
+fn default_steps_agree_with_a_step_converged_solution_at_every_speed() {
+    // The reference takes a 1e-4 times tighter local error tolerance: steps ~20 times
+    // shorter where the error control sets them (third-order method), all grid nodes
+    // kept. Measured, it agrees with the old fixed-step SDIRK3 at 16x its default steps
+    // to 1e-4 wherever that one had converged (docs/MODEL.md). The requirement is 0.5 %;
+    // the measured differences are below 1e-3.
+    for f in ["0.5", "2", "5", "10", "30", "60", "150"] {
+        let base = format!("operating.input_speed_hz={f}");
+        let m = model(&sets(&[&base]));
+        let fine = model(&sets(&[&base, "numerics.integration_tolerance=1e-9"]));
+        let (a, b) = (headline(&m, &dynamic(&m)), headline(&fine, &dynamic(&fine)));
+        for (name, (x, y)) in ["max DTE", "DTE RMS", "dynamic factor", "RMS vy"]
+            .iter()
+            .zip(a.iter().zip(&b))
+        {
+            let rel = (x - y).abs() / y.abs();
+            assert!(rel < 5e-3, "{f} Hz, {name}: {x:e} vs {y:e} ({rel:.1e})");
+        }
+    }
+}
+
+/// Node states of the periodic solution of the linear time-periodic model (every pair
+/// touching, no friction) by a second method: over each interval of `grid` the state
+/// matrix is frozen at the interval's middle and propagated exactly (exponential midpoint
+/// rule, second-order Magnus, with the constant forcing as a 17th state), and the periodic
+/// boundary value problem y(T) = y(0) is solved directly for the free coordinates. The
+/// coordinate `held` (an imposed speed) keeps its value and zero velocity.
+fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State> {
+    let y_touch = sys.static_equilibrium();
+    let steps: Vec<SMatrix<f64, 17, 17>> = grid
+        .windows(2)
+        .map(|w| {
+            let (t, h) = (0.5 * (w[0] + w[1]), w[1] - w[0]);
+            let a = sys.jacobian(t, &y_touch);
+            let b = sys.derivative(t, &y_touch).0 - a * y_touch;
+            let mut z = SMatrix::<f64, 17, 17>::zeros();
+            z.fixed_view_mut::<16, 16>(0, 0).copy_from(&a);
+            z.fixed_view_mut::<16, 1>(0, 16).copy_from(&b);
+            (z * h).exp()
+        })
+        .collect();
+    let monodromy = steps
+        .iter()
+        .fold(SMatrix::<f64, 17, 17>::identity(), |m, e| e * m);
+    let free: Vec<usize> = (0..NSTATE)
+        .filter(|i| *i != held && *i != NDOF + held)
+        .collect();
+    let n = free.len();
+    let a = DMatrix::from_fn(n, n, |i, j| {
+        f64::from(u8::from(i == j)) - monodromy[(free[i], free[j])]
+    });
+    let rhs = DVector::from_fn(n, |i, _| {
+        monodromy[(free[i], 16)] + monodromy[(free[i], held)] * y_touch[held]
+    });
+    let x = a.lu().solve(&rhs).expect("no eigenvalue 1");
+    let mut y = y_touch;
+    for (k, i) in free.iter().enumerate() {
+        y[*i] = x[k];
+    }
+    y[NDOF + held] = 0.0;
+    let mut out = vec![y];
+    for e in &steps {
+        let mut z = nalgebra::SVector::<f64, 17>::zeros();
+        z.fixed_rows_mut::<16>(0).copy_from(out.last().unwrap());
+        z[16] = 1.0;
+        out.push((e * z).fixed_rows::<16>(0).into_owned());
+    }
+    out
+}
+
+#[test]
+fn linear_limit_equals_a_direct_periodic_solution() {
+    // Frictionless, light mesh damping, 20 Hz input: the mesh never opens, so the model is
+    // linear and time-periodic. Second method: linear_periodic on the solver's grid and
+    // on the grid with every interval halved, combined by Richardson extrapolation (the
+    // exponential midpoint rule is second order: the combination removes the h^2 term).
+    let m = model(&sets(&[
+        "friction.model=none",
+        "dynamics.mesh_damping_ratio=0.02",
+        "operating.input_speed_hz=20",
+        "operating.speed_boundary=motor_speed_imposed",
+    ]));
+    let r = dynamic(&m);
+    assert!(
+        ResponseSummary::of(&r).mesh_force_min_n > 0.0,
+        "contact must hold"
+    );
+    let (gap, ext) = (PairGap::none(), ExternalError::none());
+    let sys = m.system(&gap, &ext, 0.2);
+    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    // Every interval of the solver's grid cut into `n` equal ones.
+    let refine = |n: usize| -> Vec<f64> {
+        grid.windows(2)
+            .flat_map(|w| (0..n).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / n as f64))
+            .chain([*grid.last().unwrap()])
+            .collect()
+    };
+    let held = gearwear::dynamics::model::dof::PHI_M;
+    let (coarse_y, fine_y) = (
+        linear_periodic(&sys, &refine(4), held),
+        linear_periodic(&sys, &refine(8), held),
+    );
+    let g = sys.mesh_gradient();
+    let dte = |y: &State| g.dot(&y.fixed_rows::<NDOF>(0).into_owned());
+    let vy = |y: &State| y[NDOF + gearwear::dynamics::model::dof::YP];
+    let (mut err_dte, mut err_v, mut peak_dte, mut peak_v) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    for (k, t) in grid.iter().enumerate().take(grid.len() - 1) {
+        let (c, f) = (&coarse_y[4 * k], &fine_y[8 * k]);
+        let ref_dte = (4.0 * dte(f) - dte(c)) / 3.0;
+        let ref_v = (4.0 * vy(f) - vy(c)) / 3.0;
+        let j = sample_at(&r, *t);
+        err_dte = err_dte.max((r.signals.dte_m[j] - ref_dte).abs());
+        err_v =
+            err_v.max((r.signals.velocity[j][gearwear::dynamics::model::dof::YP] - ref_v).abs());
+        peak_dte = peak_dte.max(ref_dte.abs());
+        peak_v = peak_v.max(ref_v.abs());
+    }
+    println!(
+        "linear limit: DTE {:.2e}, vy {:.2e} of the peak",
+        err_dte / peak_dte,
+        err_v / peak_v
+    );
+    // 1e-4 of the peak, the requirement; measured 9e-6 (DTE) and 2.5e-5 (velocity), and
+    // 1.5e-6 with a 1e-4 times tighter integration tolerance: the two methods agree to
+    // the accuracy of the reference.
+    assert!(err_dte < 1e-4 * peak_dte, "DTE {err_dte:e} of {peak_dte:e}");
+    assert!(err_v < 1e-4 * peak_v, "vy {err_v:e} of {peak_v:e}");
+}
+
+/// Mesh force the linear model (every pair pushing, F = k(t) delta + c_m d delta/dt, N)
+/// predicts at the solver's grid nodes, from its periodic solution; with the node times.
+fn linear_forces(m: &Model, held: usize) -> Vec<(f64, f64)> {
+    let (gap, ext) = (PairGap::none(), ExternalError::none());
+    let sys = m.system(&gap, &ext, 0.2);
+    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let ys = linear_periodic(&sys, &grid, held);
+    let g = sys.mesh_gradient();
+    grid.iter()
+        .zip(&ys)
+        .take(grid.len() - 1)
+        .map(|(t, y)| {
+            let (q, v) = (y.fixed_rows::<NDOF>(0), y.fixed_rows::<NDOF>(NDOF));
+            // The pairs just after the node, as the solver records a mesh event.
+            sys.set_contact_decision_time(Some(t + 1e-9 * grid[grid.len() - 1]));
+            let k = sys
+                .mesh_state(*t, q.as_slice(), v.as_slice())
+                .stiffness_total_n_per_m;
+            sys.set_contact_decision_time(None);
+            (*t, k * g.dot(&q) + sys.mesh_damping_n_s_per_m * g.dot(&v))
+        })
+        .collect()
+}
+
+#[test]
+fn contact_loss_resonance_is_solved_at_every_point() {
+    // brake_speed_imposed puts the damped mesh pole near 1140 Hz, crossed by the mesh
+    // frequency (19 x input) near 55-60 Hz: a softening resonance where the teeth
+    // separate. Every point of a 0.5 Hz sweep must have a steady state. Where the linear
+    // model (second method above, frictionless) needs a pulling mesh (its force below
+    // -5 % of the load), the mesh must open: minimum force 0; where it stays above +5 %,
+    // the mesh stays closed and the frictionless solution is the linear one.
+    let held = gearwear::dynamics::model::dof::PHI_B;
+    let (mut opened, mut closed, mut worst) = (0, 0, 0.0_f64);
+    for i in 0..=52 {
+        let f = 40.0 + 0.5 * i as f64;
+        for friction in ["xu2007", "none"] {
+            let m = model(&sets(&[
+                &format!("operating.input_speed_hz={f}"),
+                "operating.speed_boundary=brake_speed_imposed",
+                &format!("friction.model={friction}"),
+            ]));
+            let r = m
+                .dynamic(&new_teeth(&m), &ExternalError::none())
+                .unwrap_or_else(|e| panic!("{f} Hz, friction {friction}: {e}"));
+            let s = ResponseSummary::of(&r);
+            let load = m.params.brake_torque_nm / m.pair.gear.base_radius_m;
+            if friction == "none" {
+                let lin = linear_forces(&m, held);
+                let lin_min = lin.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+                if lin_min < -0.05 * load {
+                    assert_eq!(s.mesh_force_min_n, 0.0, "{f} Hz: the mesh must open");
+                    opened += 1;
+                } else if lin_min > 0.05 * load {
+                    // The periodic solution is the linear one, at every grid node (measured:
+                    // within 1e-5 of the load).
+                    for (t, f_lin) in &lin {
+                        let j = sample_at(&r, *t);
+                        let f_dyn = r.signals.mesh_force_n[j];
+                        worst = worst.max((f_dyn - f_lin).abs() / load);
+                        assert!(
+                            (f_dyn - f_lin).abs() < 1e-4 * load,
+                            "{f} Hz, t = {t}: force {f_dyn} vs linear {f_lin}"
+                        );
+                    }
+                    closed += 1;
+                }
+            }
+        }
+    }
+    println!("contact loss sweep: {opened} opened, {closed} closed, worst {worst:.1e} of the load");
+    // The sweep crosses the resonance: both kinds of points occur.
+    assert!(
+        opened >= 5 && closed >= 20,
+        "opened {opened}, closed {closed}"
+    );
+}
+
+#[test]
+fn every_speed_boundary_and_friction_has_a_steady_state_from_5_to_400_hz() {
+    // A coarse grid (25 Hz); a 2.5 Hz grid over the same range and a 0.5 Hz grid over
+    // 40-66 Hz were checked the same way by hand (docs/MODEL.md).
+    for boundary in ["motor_slip", "motor_speed_imposed", "brake_speed_imposed"] {
+        for friction in ["xu2007", "none"] {
+            for i in 0..=16 {
+                let f = 5.0 + 25.0 * i as f64;
+                let f = f.min(400.0);
+                let m = model(&sets(&[
+                    &format!("operating.input_speed_hz={f}"),
+                    &format!("operating.speed_boundary={boundary}"),
+                    &format!("friction.model={friction}"),
+                ]));
+                let r = m.dynamic(&new_teeth(&m), &ExternalError::none());
+                let r = r.unwrap_or_else(|e| panic!("{boundary}, {friction}, {f} Hz: {e}"));
+                // Periodic to the steady-state tolerance over the recorded period.
+                assert!(
+                    r.periodicity_error < 1e-5,
+                    "{boundary} {friction} {f}: {r:?}",
+                    r = r.periodicity_error
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn warm_start_from_a_periodic_state_converges_at_once() {
+    let m = model(&[]);
+    let none = ExternalError::none();
+    let cold = dynamic(&m);
+    // From the orbit itself: one period shows it periodic.
+    let warm = m
+        .dynamic_from(&new_teeth(&m), &none, Some(&cold.end_state))
+        .unwrap();
+    assert!(
+        warm.periods_to_converge <= 2,
+        "{}",
+        warm.periods_to_converge
+    );
+    assert!(cold.periods_to_converge > warm.periods_to_converge);
+    // The same response: both are periodic to the steady-state tolerance (1e-6 of the
+    // state scales), far below 1e-5 of the headline numbers.
+    for (a, b) in headline(&m, &cold).iter().zip(headline(&m, &warm).iter()) {
+        assert!((a - b).abs() < 1e-5 * b.abs(), "{a} vs {b}");
+    }
+    // A wear update (the gap changes by the 0.5 um threshold): from the previous orbit it
+    // takes at most 3 periods, and the same response as from the static equilibrium.
+    let inc = gearwear::wear::per_cycle_wear(
+        &m.grid,
+        &cold.path,
+        m.case.wear.coefficient_m2_per_n,
+        m.pair.pinion.teeth as f64 / m.pair.gear.teeth as f64,
+    );
+    let mut worn = new_teeth(&m);
+    worn.advance(&inc, 0.5e-6 / inc.max_m());
+    let from_cold = m.dynamic(&worn, &none).unwrap();
+    let from_warm = m.dynamic_from(&worn, &none, Some(&cold.end_state)).unwrap();
+    assert!(
+        from_warm.periods_to_converge <= 3,
+        "{}",
+        from_warm.periods_to_converge
+    );
+    for (a, b) in headline(&m, &from_cold)
+        .iter()
+        .zip(headline(&m, &from_warm).iter())
+    {
+        assert!((a - b).abs() < 1e-5 * b.abs(), "{a} vs {b}");
+    }
+}
+
+/// Largest |sum of the pair loads / mesh force - 1| over the samples that carry load.
+fn share_sum_error(r: &DynamicResponse) -> f64 {
+    let s = &r.signals;
+    (0..s.time_s.len())
+        .filter(|k| s.mesh_force_n[*k] > 0.0)
+        .map(|k| ((s.pair_load_n[0][k] + s.pair_load_n[1][k]) / s.mesh_force_n[k] - 1.0).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn load_shares_sum_to_one_at_every_recorded_sample() {
+    // The samples include every mesh event (pair entry and exit), where the pairs' share
+    // of eq. (7) changes branch; the paper's contact ratio is below 2, so at most two
+    // pairs carry load and the two recorded pair loads hold it all. Round-off only.
+    for law in ["pedrero", "stiffness"] {
+        let m = model(&sets(&[&format!("contact.load_sharing={law}")]));
+        let none = ExternalError::none();
+        assert!(share_sum_error(&dynamic(&m)) < 1e-12, "{law} dynamic");
+        assert!(
+            share_sum_error(&m.quasi_static(&new_teeth(&m), &none)) < 1e-12,
+            "{law} quasi-static"
+        );
+    }
+}
