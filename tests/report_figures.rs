@@ -270,3 +270,51 @@ fn the_built_in_case_keeps_its_paper_comparison() {
         "mesh frequency sentence"
     );
 }
+
+/// The figure of `run` whose file stem is `stem`.
+fn run_figure(stem: &str) -> gearwear::report::plot::Figure {
+    let (model, study) = paper();
+    let a = run_artifacts(model, study, &RunMetadata::new("run", &model.case));
+    a.figures
+        .iter()
+        .find(|f| f.path == format!("{stem}.png"))
+        .unwrap_or_else(|| panic!("{stem} missing"))
+        .figure
+        .clone()
+}
+
+#[test]
+fn fig7_draws_its_three_wear_states_as_markers() {
+    use gearwear::report::plot::{LineStyle, Marker};
+    let f = run_figure("fig07_mesh_harmonics");
+    for s in &f.panels[0].series {
+        assert_eq!(s.x.len(), 3, "{}: one point per wear state", s.name);
+        assert_eq!(s.style, LineStyle::Points, "{}: no connecting line", s.name);
+        assert_ne!(s.marker, Marker::None, "{}", s.name);
+    }
+    // Distinct marker shapes, so the four harmonics differ in grey print too.
+    let shapes: std::collections::BTreeSet<String> = f.panels[0]
+        .series
+        .iter()
+        .map(|s| format!("{:?}", s.marker))
+        .collect();
+    assert_eq!(shapes.len(), f.panels[0].series.len());
+}
+
+#[test]
+fn fig12_curves_have_distinct_colours_on_a_labelled_scale() {
+    let f = run_figure("fig12_wear_rate_evolution");
+    for p in &f.panels {
+        let bar = p.color_bar.as_ref().expect("a colour bar");
+        assert!(bar.label.contains("cycles"), "{}", bar.label);
+        assert!(bar.max > bar.min);
+        // The dynamic run of the paper's case has one curve per update (11 at 4e4
+        // cycles): every curve its own colour, so the updates can be told apart.
+        let colours: Vec<[u8; 3]> = p.series.iter().map(|s| s.color.unwrap()).collect();
+        let distinct: std::collections::BTreeSet<[u8; 3]> = colours.iter().copied().collect();
+        if p.title == "dynamic" {
+            assert!(colours.len() >= 10, "{}", colours.len());
+            assert_eq!(distinct.len(), colours.len(), "{colours:?}");
+        }
+    }
+}

@@ -8,7 +8,7 @@ use super::case::{case_json, is_paper_case, paper_case_differences};
 use super::comparison::{compare, comparison_json};
 use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::html::{self, FigureBlock};
-use super::plot::Figure;
+use super::plot::{Figure, LineStyle};
 use super::run_report::{build_report, case_headline, comparison_headline, results_json};
 use super::stiffness::{figure2, stiffness_table};
 use super::wear::{wear_figures, wear_summary};
@@ -152,9 +152,15 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
         let name = super::figures::harmonic_label(h + 1);
         curves.push(Curve::new(name, wear.clone(), a));
     }
+    // Three wear states are three points each: markers only, no line between them that
+    // would suggest values at wear depths that were not computed.
+    let mut harmonics = points_panel("maximum pinion wear depth (µm)", "amplitude (mm/s)", curves);
+    for s in &mut harmonics.series {
+        s.style = LineStyle::Points;
+    }
     let figure = single(
         "Mesh-harmonic amplitudes of the pinion y velocity against wear",
-        points_panel("maximum pinion wear depth (µm)", "amplitude (mm/s)", curves),
+        harmonics,
     );
     out.push(fig("fig07_mesh_harmonics", 7, figure, table));
     let (f, t) = time_figure(
