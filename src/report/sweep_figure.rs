@@ -167,6 +167,9 @@ fn axis_words(key: &str) -> String {
     }
 }
 
+/// Size of the two-panel sweep figure, px (taller than the one-panel default).
+pub const SWEEP_FIGURE_PX: (u32, u32) = (900, 640);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -186,6 +189,3 @@ mod tests {
         );
     }
 }
-
-/// Size of the two-panel sweep figure, px (taller than the one-panel default).
-pub const SWEEP_FIGURE_PX: (u32, u32) = (900, 640);
