@@ -4,7 +4,7 @@
 //! millimetres engineers use; everything is converted to SI when the model objects are
 //! built (`geometry::GearPair::from_case`, ...). The defaults are the paper's case
 //! (Coatings 2022, 12, 1250, Tables 1-2 and section 4) with the readings of
-//! `shared/spec/NOTES.md`; each default that the paper does not give says so.
+//! docs/PAPER_NOTES.md; each default that the paper does not give says so.
 
 use serde::{Deserialize, Serialize};
 
@@ -96,7 +96,7 @@ pub enum TorqueShaft {
     Gear,
 }
 
-/// How the drivetrain's free rotation is held (NOTES.md, "rigid-body rotation mode").
+/// How the drivetrain's free rotation is held (docs/PAPER_NOTES.md, "Drivetrain rotation and speed boundary").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SpeedBoundary {
@@ -123,7 +123,7 @@ impl Default for OperatingSection {
         Self {
             input_speed_hz: 30.0,
             load_torque_nm: 60.0,
-            // NOTES.md: the paper's 3311 N mean force matches 60 N m / r_pb.
+            // docs/PAPER_NOTES.md: the paper's 3311 N mean force matches 60 N m / r_pb.
             load_torque_shaft: TorqueShaft::Pinion,
             // Paper eq. (1) keeps the motor as a free inertia driven by T_mor: a motor
             // torque law with a speed term is the closest reading (docs/MODEL.md).
@@ -161,7 +161,7 @@ pub struct SurfaceSection {
 impl Default for SurfaceSection {
     fn default() -> Self {
         // The paper's 2.1 / 1.9 / 1.5 um read as 0.21 / 0.19 / 0.15 um with R in metres
-        // (NOTES.md, friction): the reading under which the paper's "slight" decrease holds.
+        // (docs/PAPER_NOTES.md, friction): the reading under which the paper's "slight" decrease holds.
         Self {
             roughness_table_wear_um: vec![0.1, 0.5, 1.0],
             roughness_table_rms_um: vec![0.21, 0.19, 0.15],
@@ -169,7 +169,7 @@ impl Default for SurfaceSection {
     }
 }
 
-/// Lumped parameters of paper Table 2 (units corrected as NOTES.md says).
+/// Lumped parameters of paper Table 2 (units corrected as docs/PAPER_NOTES.md says).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct DynamicsSection {
@@ -264,7 +264,7 @@ pub enum FrictionModel {
     None,
 }
 
-/// Unit in which the radius of curvature enters Xu's regression (NOTES.md).
+/// Unit in which the radius of curvature enters Xu's regression (docs/PAPER_NOTES.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LengthUnit {
@@ -297,7 +297,7 @@ impl Default for FrictionSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct WearSection {
-    /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (NOTES.md).
+    /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (docs/PAPER_NOTES.md).
     pub coefficient_m2_per_n: f64,
     /// Cycles m the per-cycle wear is held for (paper eq. 17).
     pub block_cycles: f64,

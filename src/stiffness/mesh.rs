@@ -1,5 +1,5 @@
 //! Time-varying mesh stiffness of the spur pair (paper eq. 12-13 as corrected in
-//! NOTES.md): the single-pair stiffness along the path of contact, tabulated once and
+//! docs/PAPER_NOTES.md): the single-pair stiffness along the path of contact, tabulated once and
 //! interpolated by a clamped cubic spline (O(1) per call), and the total stiffness of the
 //! pairs in contact, which act in parallel.
 //!
@@ -173,7 +173,7 @@ impl MeshStiffness {
     }
 
     /// Total mesh stiffness k_m at mesh phase `phase_rad` (pinion rotation since a pair
-    /// entered contact), N/m: the pairs in contact act in parallel (NOTES.md).
+    /// entered contact), N/m: the pairs in contact act in parallel (docs/PAPER_NOTES.md).
     pub fn total_stiffness_n_per_m(&self, phase_rad: f64) -> f64 {
         self.pair
             .pairs_in_contact(phase_rad)
