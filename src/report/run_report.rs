@@ -101,6 +101,12 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     lines.join("\n")
 }
 
+/// "1 dynamic update", "4 quasi-static updates".
+fn updates_words(n: usize, mode: &str) -> String {
+    let s = if n == 1 { "" } else { "s" };
+    format!("{n} {mode} update{s}")
+}
+
 fn value_row(quantity: &str, value: String) -> Vec<String> {
     vec![quantity.to_string(), value]
 }
@@ -312,10 +318,10 @@ pub fn build_report(
             Section {
                 heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
                 paragraphs: vec![format!(
-                    "Wear study to {} cycles: {} dynamic updates and {} quasi-static ones; maximum pinion wear {} um dynamic and {} um quasi-static.",
+                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} um dynamic and {} um quasi-static.",
                     cycles_words(cycles_reached(study)),
-                    d.records.len().saturating_sub(1),
-                    q.records.len().saturating_sub(1),
+                    updates_words(d.records.len().saturating_sub(1), "dynamic"),
+                    updates_words(q.records.len().saturating_sub(1), "quasi-static"),
                     html::format_value(final_wear_um(d)),
                     html::format_value(final_wear_um(q)),
                 )],
