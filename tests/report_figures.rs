@@ -185,6 +185,32 @@ fn check_layout(what: &str, f: &FigureFile, lays: &[PanelLayout]) {
     }
 }
 
+/// Every text of a figure a reader sees: title, panel titles, axis labels, legend names,
+/// colour-bar label and marker labels.
+fn figure_texts(f: &gearwear::report::plot::Figure) -> Vec<String> {
+    let mut out = vec![f.title.clone()];
+    for p in &f.panels {
+        out.extend([p.title.clone(), p.x_label.clone(), p.y_label.clone()]);
+        out.extend(p.series.iter().map(|s| s.name.clone()));
+        out.extend(p.color_bar.iter().map(|b| b.label.clone()));
+        out.extend(p.vlines.iter().map(|v| v.1.clone()));
+    }
+    out
+}
+
+#[test]
+fn figure_labels_are_words_not_identifiers() {
+    // Code names join words with underscores ("quasi_static", "load_torque_nm"); labels
+    // a reader sees use words and unit symbols.
+    for (command, a) in all_artifacts() {
+        for f in &a.figures {
+            for t in figure_texts(&f.figure) {
+                assert!(!t.contains('_'), "{command} {}: label {t:?}", f.path);
+            }
+        }
+    }
+}
+
 #[test]
 fn no_legend_covers_data_in_any_figure_of_the_commands() {
     for (command, a) in all_artifacts() {
@@ -245,6 +271,9 @@ fn no_legend_covers_data_in_the_sweep_figure() {
     };
     let lays = layout(&f.figure, w, h).unwrap();
     check_layout("sweep", &f, &lays);
+    for t in figure_texts(&f.figure) {
+        assert!(!t.contains('_'), "sweep: label {t:?}");
+    }
 }
 
 #[test]

@@ -186,14 +186,14 @@ fn ordinal(k: i32) -> String {
 }
 
 /// The choices the paper leaves open, as this run made them: "zeta = 0.05, motor slip law,
-/// 40 cP, hub bores 8/14 mm".
+/// 40 cP, hub bore radii 8/14 mm".
 pub fn open_choices_words(case: &Case) -> String {
     let boundary = serde_json::to_value(case.operating.speed_boundary)
         .ok()
         .and_then(|v| v.as_str().map(|s| s.replace('_', " ")))
         .unwrap_or_default();
     format!(
-        "mesh damping ratio {}, speed boundary condition \"{boundary}\", {} cP, hub bores {}/{} mm",
+        "mesh damping ratio {}, speed boundary condition \"{boundary}\", {} cP, hub bore radii {}/{} mm",
         case.dynamics.mesh_damping_ratio,
         case.lubricant.viscosity_cp,
         case.gear.hub_bore_radius_pinion_mm,

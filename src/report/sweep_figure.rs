@@ -95,7 +95,7 @@ pub fn sweep_figure(
     let poles: Vec<String> = poles_hz.iter().map(|f| format!("{f:.0} Hz")).collect();
     let title = if x_key == SPEED_KEY && !poles.is_empty() {
         format!(
-            "Speed sweep (markers: k x z1 x f_in = damped mesh pole {}, k = 1..4)",
+            "Speed sweep (markers: k × mesh frequency = damped mesh pole {}, k = 1..4)",
             poles.join(", ")
         )
     } else if x_key == SPEED_KEY {
