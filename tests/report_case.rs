@@ -42,6 +42,16 @@ fn the_report_of_another_pair_describes_that_pair() {
         "operating.load_torque_nm=100",
         // A short wear study (one block) keeps the test well under a second.
         "wear.total_cycles=3000",
+        // The pinion's theta_f (0.1205 rad) lies just outside Sainsot's fitted range:
+        // a user opts in to the extrapolation by name.
+        "stiffness.allow_fillet_extrapolation=true",
+        // The parameters the geometry gives, as for a pair of one's own.
+        "gear.hub_bore_radius_pinion_mm=derived",
+        "gear.hub_bore_radius_gear_mm=derived",
+        "dynamics.mass_pinion_kg=derived",
+        "dynamics.mass_gear_kg=derived",
+        "dynamics.inertia_pinion_kg_m2=derived",
+        "dynamics.inertia_gear_kg_m2=derived",
     ];
     let mut args = vec!["run".to_string()];
     for s in sets {

@@ -1,6 +1,8 @@
 //! Command-line arguments (clap derive).
 
 use crate::config::{load_case, Case};
+use crate::study::budget::{estimate, Budget, Job};
+use crate::study::sweep::{parse_vary, Shard, SweepPlan, SweepRun};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -19,11 +21,111 @@ pub struct Cli {
     pub quiet: bool,
     #[command(subcommand)]
     pub command: Command,
+    /// Multiply the run budget (2 GB of memory, 10 minutes on one core of the reference
+    /// machine; docs/RELIABILITY.md) by X, to run a larger case knowingly.
+    #[arg(long, global = true, value_name = "X", value_parser = parse_budget_scale)]
+    pub budget_scale: Option<f64>,
+    /// Run without the budget check.
+    #[arg(long, global = true, conflicts_with = "budget_scale")]
+    pub no_budget: bool,
+}
+
+fn parse_budget_scale(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x.is_normal() && x > 0.0 && x <= 1e9 => Ok(x),
+        _ => Err(format!(
+            "--budget-scale {}: expected a number in (0, 1e9]",
+            crate::config::load::clip(text, crate::config::load::SHOWN_CHARS)
+        )),
+    }
+}
+
+const DYNAMIC_WEAR: Job = Job::Wear {
+    dynamic: true,
+    quasi_static: false,
+};
+
+impl Cli {
+    /// The budget the flags ask for; None without one.
+    pub fn budget(&self) -> Option<Budget> {
+        (!self.no_budget).then(|| Budget::scaled(self.budget_scale.unwrap_or(1.0)))
+    }
+
+    /// Refuse, before anything is computed, a command whose case is over `budget`
+    /// (`study::budget`). Cases that do not load are left to the command's own messages.
+    pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
+        let (case, job) = match &self.command {
+            Command::Config(_) | Command::SweepMerge(_) | Command::PredictMerge(_) => return Ok(()),
+            // Each forward run of an ensemble is a dynamic wear study of the case (at
+            // its sampled parameters); the number of runs is the user's explicit choice.
+            Command::Calibrate(a) => (&a.case, DYNAMIC_WEAR),
+            Command::Predict(a) => (&a.case, DYNAMIC_WEAR),
+            Command::Stiffness(a) => (&a.case, Job::Stiffness),
+            Command::Dynamics(a) => (&a.case, Job::Dynamics),
+            Command::Wear(a) => (
+                &a.case,
+                Job::Wear {
+                    dynamic: a.mode != WearModeArg::QuasiStatic,
+                    quasi_static: a.mode != WearModeArg::Dynamic,
+                },
+            ),
+            Command::Run(a) => (&a.case, Job::Run),
+            Command::Sweep(a) => return sweep_budget(a, budget),
+        };
+        match case.load() {
+            Ok(c) => estimate(&c, job).check(budget).map_err(CliError::input),
+            Err(_) => Ok(()),
+        }
+    }
+}
+
+/// Every case of a sweep against the budget (the cases that load; the sweep reports the
+/// others itself).
+fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
+    let Ok(text) = a.case.text() else {
+        return Ok(());
+    };
+    let axes: Result<Vec<_>, _> = a.vary.iter().map(|v| parse_vary(v)).collect();
+    let Some(plan) = axes.ok().and_then(|x| SweepPlan::new(x).ok()) else {
+        return Ok(());
+    };
+    let job = Job::SweepCase(match a.run {
+        SweepRunArg::Dynamics => SweepRun::Dynamics,
+        SweepRunArg::Wear => SweepRun::Wear,
+    });
+    let shard = match &a.shard {
+        Some(s) => match Shard::parse(s) {
+            Ok(s) => s,
+            Err(_) => return Ok(()), // the sweep reports a bad --shard itself
+        },
+        None => Shard::ALL,
+    };
+    let over: Vec<String> = shard
+        .ids(plan.len())
+        .into_iter()
+        .filter_map(|id| {
+            let mut sets = a.case.set.clone();
+            sets.extend(plan.overrides_of(id));
+            let case = load_case(&text, &sets).ok()?;
+            let e = estimate(&case, job).check(budget).err()?;
+            Some(format!(
+                "case {id} ({}): {e}",
+                plan.overrides_of(id).join(", ")
+            ))
+        })
+        .take(10)
+        .collect();
+    if over.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Input(over))
+    }
 }
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Print the default case (the paper's) as commented TOML.
+    /// Print the default case (the paper's) as commented TOML, or with --new-pair a case
+    /// whose bores, masses and inertias follow the geometry.
     Config(ConfigArgs),
     /// Mesh stiffness (potential energy method), ISO 6336 check, load sharing, static TE.
     Stiffness(StiffnessArgs),
@@ -37,6 +139,13 @@ pub enum Command {
     Sweep(SweepArgs),
     /// Join the tables of sweep shards into one, sorted by case id.
     SweepMerge(SweepMergeArgs),
+    /// Posterior of the wear coefficient (and optionally roughness factor, load torque)
+    /// given observations of a running gearbox.
+    Calibrate(CalibrateArgs),
+    /// Monte Carlo prediction of wear, vibration indicators and remaining life.
+    Predict(PredictArgs),
+    /// Join the shards of a sharded `predict` and write its outputs.
+    PredictMerge(PredictMergeArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -51,15 +160,19 @@ pub struct CaseArgs {
 }
 
 impl CaseArgs {
-    /// Read, merge and validate the case.
-    pub fn load(&self) -> Result<Case, CliError> {
-        let text = match &self.config {
+    /// The case file's text (empty without --config).
+    pub fn text(&self) -> Result<String, CliError> {
+        match &self.config {
             Some(p) => std::fs::read_to_string(p).map_err(|e| {
                 CliError::input(format!("--config {}: cannot read: {e}", p.display()))
-            })?,
-            None => String::new(),
-        };
-        Ok(load_case(&text, &self.set)?)
+            }),
+            None => Ok(String::new()),
+        }
+    }
+
+    /// Read, merge and validate the case.
+    pub fn load(&self) -> Result<Case, CliError> {
+        Ok(load_case(&self.text()?, &self.set)?)
     }
 }
 
@@ -68,8 +181,12 @@ pub struct ConfigArgs {
     #[command(flatten)]
     pub case: CaseArgs,
     /// Print the key reference as Markdown (docs/CONFIG.md) instead.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "new_pair")]
     pub markdown: bool,
+    /// Print a starting case for a pair of one's own: hub bores, masses and inertias of
+    /// pinion and gear set to "derived", so they follow the [gear] section.
+    #[arg(long)]
+    pub new_pair: bool,
 }
 
 #[derive(Debug, Args)]
@@ -178,6 +295,89 @@ pub struct SweepMergeArgs {
     #[arg(required = true, value_name = "DIR_OR_CSV")]
     pub inputs: Vec<PathBuf>,
     /// Output directory (writes sweep.csv there), or a .csv file path.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct CalibrateArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV), optional
+    /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
+    #[arg(long, value_name = "FILE")]
+    pub observations: PathBuf,
+    /// Output directory.
+    #[arg(long, default_value = "results/calibrate")]
+    pub out: PathBuf,
+    /// Seed of every random draw.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Posterior samples to write.
+    #[arg(long, default_value_t = 2000)]
+    pub samples: usize,
+    /// Walkers of the ensemble sampler (three parameters).
+    #[arg(long, default_value_t = 32)]
+    pub walkers: usize,
+    /// Steps of the ensemble sampler (the first half is burn-in).
+    #[arg(long, default_value_t = 2000)]
+    pub steps: usize,
+    /// True wear runs to check the surrogate against (at the posterior's 5/50/95 %).
+    #[arg(long, default_value_t = 3)]
+    pub check_runs: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ForwardArg {
+    /// Reference runs and the k x N invariance (fast).
+    Surrogate,
+    /// One true wear study per sample (slow; shard it).
+    Exact,
+}
+
+#[derive(Debug, Args)]
+pub struct PredictArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Posterior samples CSV (from `calibrate`); omitted: sample the case's prior.
+    #[arg(long, value_name = "FILE")]
+    pub posterior: Option<PathBuf>,
+    /// Wear limit on the maximum pinion wear depth, um.
+    #[arg(long, value_name = "L")]
+    pub limit_um: f64,
+    /// Horizon, pinion cycles.
+    #[arg(long, value_name = "N")]
+    pub cycles: f64,
+    /// Output directory.
+    #[arg(long, default_value = "results/predict")]
+    pub out: PathBuf,
+    /// Seed of every random draw.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Ensemble size (default: every posterior row, or 2000 prior draws); with a posterior
+    /// of another size its rows are drawn with replacement.
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// Cycle counts of the fan charts, from 0 to N.
+    #[arg(long, default_value_t = 101)]
+    pub grid_points: usize,
+    /// Forward model.
+    #[arg(long, value_enum, default_value = "surrogate")]
+    pub forward: ForwardArg,
+    /// Run only shard I of N (samples with index mod N = I-1); then join with predict-merge.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
+    #[arg(long, default_value_t = 3)]
+    pub check_runs: usize,
+}
+
+#[derive(Debug, Args)]
+pub struct PredictMergeArgs {
+    /// Shard files (predict_shard_I_of_N.json) or directories holding them.
+    #[arg(required = true, value_name = "DIR_OR_JSON")]
+    pub inputs: Vec<PathBuf>,
+    /// Output directory.
     #[arg(long)]
     pub out: PathBuf,
 }

@@ -2,10 +2,12 @@
 //! validated case, calls the solvers, hands results to the writers.
 
 mod args;
+mod calibrate_cmd;
 mod config_cmd;
 mod dynamics_cmd;
 mod error;
 mod output;
+mod predict_cmd;
 mod progress;
 mod resume;
 mod run_cmd;
@@ -26,7 +28,11 @@ use std::process::ExitCode;
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
-    let result = match &cli.command {
+    let budget = match cli.budget() {
+        Some(b) => cli.check_budget(&b),
+        None => Ok(()),
+    };
+    let result = budget.and_then(|()| match &cli.command {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a),
         Command::Dynamics(a) => dynamics_cmd::run(a),
@@ -34,7 +40,10 @@ pub fn main() -> ExitCode {
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),
         Command::SweepMerge(a) => sweep_merge_cmd::merge(a),
-    };
+        Command::Calibrate(a) => calibrate_cmd::run(a),
+        Command::Predict(a) => predict_cmd::run(a),
+        Command::PredictMerge(a) => predict_cmd::merge(a),
+    });
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

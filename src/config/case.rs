@@ -3,10 +3,16 @@
 //! Field names carry their unit (`_mm`, `_hz`, `_nm`, ...). Geometry is given in the
 //! millimetres engineers use; everything is converted to SI when the model objects are
 //! built (`geometry::GearPair::from_case`, ...). The defaults are the paper's case
-//! (Coatings 2022, 12, 1250, Tables 1-2 and section 4) with the readings of
-//! docs/PAPER_NOTES.md; each default that the paper does not give says so.
+//! (Coatings 2022, 12, 1250, Tables 1-2 and section 4) with the readings documented in
+//! `docs/MODEL.md`; each default that the paper does not give says so.
+//!
+//! Masses, rotary inertias and hub bores may be given as the string `"derived"`
+//! ([`Derivable`]): the model then computes them from the geometry once, when it is built
+//! (`study::Model::resolved_parameters`).
 
 use serde::{Deserialize, Serialize};
+
+pub use super::derivable::Derivable;
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -23,6 +29,7 @@ pub struct Case {
     pub friction: FrictionSection,
     pub wear: WearSection,
     pub numerics: NumericsSection,
+    pub calibration: CalibrationSection,
 }
 
 /// Involute spur pair (paper Table 1).
@@ -41,9 +48,35 @@ pub struct GearSection {
     /// Operating centre distance; absent means the one the profile shifts give.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub centre_distance_mm: Option<f64>,
-    pub hub_bore_radius_pinion_mm: f64,
-    pub hub_bore_radius_gear_mm: f64,
+    /// Hub bore radius; `"derived"`: r_f / 2 (h_f = 2, mid-range of Sainsot's fit).
+    pub hub_bore_radius_pinion_mm: Derivable,
+    pub hub_bore_radius_gear_mm: Derivable,
     pub tool_tip_radius_coefficient: f64,
+}
+
+impl GearSection {
+    /// Whether both gears have the same tooth form as `other`'s: numbers of teeth,
+    /// reference profile and profile shifts (everything a tooth's shape, and Sainsot's
+    /// root angle theta_f, depends on; not the size, width, bores or centre distance).
+    pub fn same_tooth_form(&self, other: &GearSection) -> bool {
+        self.teeth_pinion == other.teeth_pinion
+            && self.teeth_gear == other.teeth_gear
+            && self.pressure_angle_deg == other.pressure_angle_deg
+            && self.addendum_coefficient == other.addendum_coefficient
+            && self.dedendum_coefficient == other.dedendum_coefficient
+            && self.profile_shift_pinion == other.profile_shift_pinion
+            && self.profile_shift_gear == other.profile_shift_gear
+            && self.tool_tip_radius_coefficient == other.tool_tip_radius_coefficient
+    }
+
+    /// Whether this is the same pair as `other` in every dimension that sets the blanks'
+    /// size (tooth form, module, face width, centre distance); bores excluded.
+    pub fn same_pair(&self, other: &GearSection) -> bool {
+        self.same_tooth_form(other)
+            && self.module_mm == other.module_mm
+            && self.face_width_mm == other.face_width_mm
+            && self.centre_distance_mm == other.centre_distance_mm
+    }
 }
 
 impl Default for GearSection {
@@ -60,8 +93,8 @@ impl Default for GearSection {
             face_width_mm: 20.0,
             centre_distance_mm: None,
             // Not in the paper: h_f = r_f / r_int ~ 2, mid-range of Sainsot's fit.
-            hub_bore_radius_pinion_mm: 8.0,
-            hub_bore_radius_gear_mm: 14.0,
+            hub_bore_radius_pinion_mm: Derivable::Given(8.0),
+            hub_bore_radius_gear_mm: Derivable::Given(14.0),
             // ISO 53 profile A rack tip radius 0.38 m.
             tool_tip_radius_coefficient: 0.38,
         }
@@ -96,7 +129,7 @@ pub enum TorqueShaft {
     Gear,
 }
 
-/// How the drivetrain's free rotation is held (docs/PAPER_NOTES.md, "Drivetrain rotation and speed boundary").
+/// How the drivetrain's free rotation is held (docs/MODEL.md, "Speed boundary condition").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SpeedBoundary {
@@ -123,7 +156,7 @@ impl Default for OperatingSection {
         Self {
             input_speed_hz: 30.0,
             load_torque_nm: 60.0,
-            // docs/PAPER_NOTES.md: the paper's 3311 N mean force matches 60 N m / r_pb.
+            // The paper's 3311 N mean force matches 60 N m / r_pb (docs/MODEL.md).
             load_torque_shaft: TorqueShaft::Pinion,
             // Paper eq. (1) keeps the motor as a free inertia driven by T_mor: a motor
             // torque law with a speed term is the closest reading (docs/MODEL.md).
@@ -161,7 +194,7 @@ pub struct SurfaceSection {
 impl Default for SurfaceSection {
     fn default() -> Self {
         // The paper's 2.1 / 1.9 / 1.5 um read as 0.21 / 0.19 / 0.15 um with R in metres
-        // (docs/PAPER_NOTES.md, friction): the reading under which the paper's "slight" decrease holds.
+        // (docs/MODEL.md, friction): the reading under which the paper's "slight" decrease holds.
         Self {
             roughness_table_wear_um: vec![0.1, 0.5, 1.0],
             roughness_table_rms_um: vec![0.21, 0.19, 0.15],
@@ -169,14 +202,28 @@ impl Default for SurfaceSection {
     }
 }
 
-/// Lumped parameters of paper Table 2 (units corrected as docs/PAPER_NOTES.md says).
+/// Lumped parameters of paper Table 2 (units corrected as docs/MODEL.md says).
+///
+/// `P` is the type of the four values the geometry can give (masses and inertias of
+/// pinion and gear): [`Derivable`] in a case, `f64` once resolved
+/// ([`DynamicsSection::resolve`]). Motor and brake inertias, which the geometry cannot
+/// give, are always numbers.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct DynamicsSection {
-    pub mass_pinion_kg: f64,
-    pub mass_gear_kg: f64,
-    pub inertia_pinion_kg_m2: f64,
-    pub inertia_gear_kg_m2: f64,
+#[serde(
+    deny_unknown_fields,
+    default,
+    bound(
+        serialize = "P: Serialize",
+        deserialize = "P: Deserialize<'de>, DynamicsSection<P>: Default"
+    )
+)]
+pub struct DynamicsSection<P = Derivable> {
+    pub mass_pinion_kg: P,
+    pub mass_gear_kg: P,
+    pub inertia_pinion_kg_m2: P,
+    pub inertia_gear_kg_m2: P,
+    /// Density of the blanks for the derived values, kg/m^3.
+    pub blank_density_kg_per_m3: f64,
     pub inertia_motor_kg_m2: f64,
     pub inertia_brake_kg_m2: f64,
     pub bearing_stiffness_pinion_n_per_m: f64,
@@ -191,13 +238,87 @@ pub struct DynamicsSection {
     pub mesh_damping_ratio: f64,
 }
 
+/// Masses (kg) and polar inertias (kg m^2) of pinion and gear, as numbers: what the
+/// geometry estimates, or what a case resolves to.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct BodyValues {
+    pub mass_pinion_kg: f64,
+    pub mass_gear_kg: f64,
+    pub inertia_pinion_kg_m2: f64,
+    pub inertia_gear_kg_m2: f64,
+}
+
+impl BodyValues {
+    /// (key, value) pairs in schema order, for messages.
+    pub fn named(&self) -> [(&'static str, f64); 4] {
+        [
+            ("dynamics.mass_pinion_kg", self.mass_pinion_kg),
+            ("dynamics.mass_gear_kg", self.mass_gear_kg),
+            ("dynamics.inertia_pinion_kg_m2", self.inertia_pinion_kg_m2),
+            ("dynamics.inertia_gear_kg_m2", self.inertia_gear_kg_m2),
+        ]
+    }
+}
+
+impl DynamicsSection {
+    /// The given masses and inertias (`None` where derived), in [`BodyValues::named`] order.
+    pub fn given_body_values(&self) -> [Option<f64>; 4] {
+        [
+            self.mass_pinion_kg.given(),
+            self.mass_gear_kg.given(),
+            self.inertia_pinion_kg_m2.given(),
+            self.inertia_gear_kg_m2.given(),
+        ]
+    }
+
+    /// The section with every `"derived"` value replaced by the geometry's `estimate`.
+    pub fn resolve(&self, estimate: &BodyValues) -> DynamicsSection<f64> {
+        DynamicsSection {
+            mass_pinion_kg: self.mass_pinion_kg.or_derived(estimate.mass_pinion_kg),
+            mass_gear_kg: self.mass_gear_kg.or_derived(estimate.mass_gear_kg),
+            inertia_pinion_kg_m2: self
+                .inertia_pinion_kg_m2
+                .or_derived(estimate.inertia_pinion_kg_m2),
+            inertia_gear_kg_m2: self
+                .inertia_gear_kg_m2
+                .or_derived(estimate.inertia_gear_kg_m2),
+            blank_density_kg_per_m3: self.blank_density_kg_per_m3,
+            inertia_motor_kg_m2: self.inertia_motor_kg_m2,
+            inertia_brake_kg_m2: self.inertia_brake_kg_m2,
+            bearing_stiffness_pinion_n_per_m: self.bearing_stiffness_pinion_n_per_m,
+            bearing_stiffness_gear_n_per_m: self.bearing_stiffness_gear_n_per_m,
+            bearing_damping_pinion_n_s_per_m: self.bearing_damping_pinion_n_s_per_m,
+            bearing_damping_gear_n_s_per_m: self.bearing_damping_gear_n_s_per_m,
+            coupling_stiffness_motor_nm_per_rad: self.coupling_stiffness_motor_nm_per_rad,
+            coupling_stiffness_brake_nm_per_rad: self.coupling_stiffness_brake_nm_per_rad,
+            coupling_damping_motor_nm_s_per_rad: self.coupling_damping_motor_nm_s_per_rad,
+            coupling_damping_brake_nm_s_per_rad: self.coupling_damping_brake_nm_s_per_rad,
+            mesh_damping_ratio: self.mesh_damping_ratio,
+        }
+    }
+}
+
+impl DynamicsSection<f64> {
+    /// The four values the geometry could give.
+    pub fn body_values(&self) -> BodyValues {
+        BodyValues {
+            mass_pinion_kg: self.mass_pinion_kg,
+            mass_gear_kg: self.mass_gear_kg,
+            inertia_pinion_kg_m2: self.inertia_pinion_kg_m2,
+            inertia_gear_kg_m2: self.inertia_gear_kg_m2,
+        }
+    }
+}
+
 impl Default for DynamicsSection {
     fn default() -> Self {
         Self {
-            mass_pinion_kg: 0.7,
-            mass_gear_kg: 1.822,
-            inertia_pinion_kg_m2: 2.331e-4,
-            inertia_gear_kg_m2: 1.392e-3,
+            mass_pinion_kg: Derivable::Given(0.7),
+            mass_gear_kg: Derivable::Given(1.822),
+            inertia_pinion_kg_m2: Derivable::Given(2.331e-4),
+            inertia_gear_kg_m2: Derivable::Given(1.392e-3),
+            // Structural steel.
+            blank_density_kg_per_m3: 7850.0,
             inertia_motor_kg_m2: 2.1e-3,
             inertia_brake_kg_m2: 1.05e-2,
             bearing_stiffness_pinion_n_per_m: 5e8,
@@ -218,14 +339,33 @@ impl Default for DynamicsSection {
 pub struct StiffnessSection {
     /// Include the Sainsot et al. (2004) fillet-foundation compliance.
     pub fillet_foundation: bool,
+    /// Where Sainsot's root half angle theta_f is taken.
+    pub fillet_root_angle: FilletRootAngle,
+    /// Use Sainsot's fit outside its published range (warning instead of error).
+    pub allow_fillet_extrapolation: bool,
     /// Samples of the mesh-stiffness table over one mesh period.
     pub table_points_per_mesh_period: i64,
+}
+
+/// Where the fillet-foundation formula's root half angle theta_f (and its root
+/// thickness S_f = 2 r_f theta_f) is taken (docs/MODEL.md, section 2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FilletRootAngle {
+    /// Where the root fillet meets the root circle: the tooth's whole footing on the
+    /// gear body (Sainsot, Velex & Duverger 2004; Chen & Shao 2011).
+    FilletJunction,
+    /// Where the flank's extension (the involute, or its radial continuation below the
+    /// base circle) meets the root circle.
+    FlankExtension,
 }
 
 impl Default for StiffnessSection {
     fn default() -> Self {
         Self {
             fillet_foundation: true,
+            fillet_root_angle: FilletRootAngle::FilletJunction,
+            allow_fillet_extrapolation: false,
             table_points_per_mesh_period: 400,
         }
     }
@@ -264,7 +404,7 @@ pub enum FrictionModel {
     None,
 }
 
-/// Unit in which the radius of curvature enters Xu's regression (docs/PAPER_NOTES.md).
+/// Unit in which the radius of curvature enters Xu's regression (docs/MODEL.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LengthUnit {
@@ -297,7 +437,7 @@ impl Default for FrictionSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct WearSection {
-    /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (docs/PAPER_NOTES.md).
+    /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (docs/MODEL.md).
     pub coefficient_m2_per_n: f64,
     /// Cycles m the per-cycle wear is held for (paper eq. 17).
     pub block_cycles: f64,
@@ -345,6 +485,64 @@ impl Default for NumericsSection {
             max_mesh_periods: 2000,
             steady_state_tolerance: 1e-6,
             evaluated_mesh_periods: 4,
+        }
+    }
+}
+
+impl Case {
+    /// A starting point for a pair of one's own (`gearwear config --new-pair`): the
+    /// built-in case with every value the geometry can give set to `"derived"` (hub bores,
+    /// masses and inertias of pinion and gear), so that they follow the `[gear]` section
+    /// the user edits.
+    pub fn new_pair_template() -> Self {
+        let mut c = Case::default();
+        c.gear.hub_bore_radius_pinion_mm = Derivable::Derived;
+        c.gear.hub_bore_radius_gear_mm = Derivable::Derived;
+        c.dynamics.mass_pinion_kg = Derivable::Derived;
+        c.dynamics.mass_gear_kg = Derivable::Derived;
+        c.dynamics.inertia_pinion_kg_m2 = Derivable::Derived;
+        c.dynamics.inertia_gear_kg_m2 = Derivable::Derived;
+        c
+    }
+}
+
+/// Priors of the uncertain parameters for `gearwear calibrate` / `predict` (issue 12).
+/// A parameter whose bounds are equal is held fixed. Absent optional bounds are derived
+/// from the case (see `prognostics::prior`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CalibrationSection {
+    /// Lower bound of the log-uniform prior of k; absent: the case's k / 100.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wear_coefficient_min_m2_per_n: Option<f64>,
+    /// Upper bound of the log-uniform prior of k; absent: the case's k x 100.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wear_coefficient_max_m2_per_n: Option<f64>,
+    /// Uniform prior of the factor on the roughness table (1, 1: fixed).
+    pub roughness_scale_min: f64,
+    pub roughness_scale_max: f64,
+    /// Uniform prior of the load torque, N m; absent: the case's torque (fixed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_torque_min_nm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_torque_max_nm: Option<f64>,
+    /// Cells per parameter of the exact grid posterior (one or two parameters).
+    pub grid_points: i64,
+    /// Reference runs per uncertain parameter other than k (surrogate nodes).
+    pub surrogate_nodes: i64,
+}
+
+impl Default for CalibrationSection {
+    fn default() -> Self {
+        Self {
+            wear_coefficient_min_m2_per_n: None,
+            wear_coefficient_max_m2_per_n: None,
+            roughness_scale_min: 1.0,
+            roughness_scale_max: 1.0,
+            load_torque_min_nm: None,
+            load_torque_max_nm: None,
+            grid_points: 400,
+            surrogate_nodes: 5,
         }
     }
 }

@@ -1,8 +1,11 @@
 //! The case file: schema, defaults (the paper's case), loading and validation.
 
 pub mod case;
+pub mod derivable;
+mod docs;
 pub mod load;
 pub mod schema;
 
 pub use case::Case;
-pub use load::{commented_template, load_case, markdown_reference, ConfigError};
+pub use docs::{commented_template, markdown_reference, new_pair_template};
+pub use load::{load_case, ConfigError};

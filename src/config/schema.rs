@@ -1,38 +1,119 @@
-//! One table describing every key of the case file: its unit, meaning and valid range.
+//! One table describing every key of the case file: its unit, meaning, valid range and
+//! the reason for that range.
 //!
 //! The same table prints the commented default (`gearwear config`), validates a loaded
-//! case, and writes `docs/CONFIG.md`, so the three cannot drift apart.
+//! case, and writes `docs/CONFIG.md`, so the three cannot drift apart. Every numeric key
+//! has a finite range: values outside it are physically meaningless for a spur pair, or
+//! make a run that cannot finish (issue 13). What a range cannot express (a bore inside
+//! the root circle, a load the flanks cannot carry) is checked where the geometry is
+//! known (`geometry::GearPair`, `study::domain`), and the cost of a run by
+//! `study::budget`.
+
+/// An interval of numbers; `open_lo` / `open_hi` exclude an end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
+    pub lo: f64,
+    pub hi: f64,
+    pub open_lo: bool,
+    pub open_hi: bool,
+}
+
+impl Range {
+    /// [lo, hi].
+    pub const fn closed(lo: f64, hi: f64) -> Self {
+        Self {
+            lo,
+            hi,
+            open_lo: false,
+            open_hi: false,
+        }
+    }
+
+    /// (lo, hi].
+    pub const fn above(lo: f64, hi: f64) -> Self {
+        Self {
+            lo,
+            hi,
+            open_lo: true,
+            open_hi: false,
+        }
+    }
+
+    /// (lo, hi).
+    pub const fn open(lo: f64, hi: f64) -> Self {
+        Self {
+            lo,
+            hi,
+            open_lo: true,
+            open_hi: true,
+        }
+    }
+
+    /// Whether `x` is a normal (finite, not subnormal) number inside the interval. Zero
+    /// is normal here; subnormal numbers (below 2.2e-308 in magnitude) are not: no
+    /// quantity of a gear case lies there, and they overflow the solvers' divisions.
+    pub fn contains(&self, x: f64) -> bool {
+        let normal = x == 0.0 || x.is_normal();
+        let lo_ok = if self.open_lo {
+            x > self.lo
+        } else {
+            x >= self.lo
+        };
+        let hi_ok = if self.open_hi {
+            x < self.hi
+        } else {
+            x <= self.hi
+        };
+        normal && lo_ok && hi_ok
+    }
+
+    /// "[0.1, 50]", "(0, 0.5)", ...
+    pub fn describe(&self) -> String {
+        format!(
+            "{}{}, {}{}",
+            if self.open_lo { "(" } else { "[" },
+            number(self.lo),
+            number(self.hi),
+            if self.open_hi { ")" } else { "]" }
+        )
+    }
+}
+
+/// A number as people write it: 0.1, 50, 1e-11, 1e6.
+pub fn number(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && !(1e-3..1e5).contains(&a) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
 
 /// What values a key accepts.
 #[derive(Debug, Clone, Copy)]
 pub enum Valid {
-    /// Strictly positive number.
-    Positive,
-    /// Zero or more.
-    NonNegative,
-    /// Closed interval [lo, hi].
-    Closed(f64, f64),
-    /// Open interval (lo, hi).
-    Open(f64, f64),
-    /// Whole number at least this.
-    IntAtLeast(i64),
+    /// A finite number in the range.
+    Num(Range),
+    /// A number in the range, or the string "derived" (the model computes it from the
+    /// geometry).
+    NumOrDerived(Range),
+    /// A whole number in [lo, hi] (written 25 or 25.0).
+    Int(i64, i64),
     /// One of these strings.
     Choice(&'static [&'static str]),
     /// true or false.
     Bool,
-    /// Array of numbers, each zero or more.
-    NonNegativeArray,
+    /// A non-empty array of numbers, each in the range.
+    NumArray(Range),
 }
 
 impl Valid {
-    /// Human text of the valid range, used in messages and docs.
+    /// Human text of the valid values, used in messages and docs.
     pub fn describe(&self) -> String {
         match self {
-            Valid::Positive => "a number > 0".into(),
-            Valid::NonNegative => "a number >= 0".into(),
-            Valid::Closed(a, b) => format!("a number in [{a}, {b}]"),
-            Valid::Open(a, b) => format!("a number in ({a}, {b})"),
-            Valid::IntAtLeast(n) => format!("a whole number >= {n}"),
+            Valid::Num(r) => format!("a number in {}", r.describe()),
+            Valid::NumOrDerived(r) => format!("a number in {}, or \"derived\"", r.describe()),
+            Valid::Int(a, b) => format!("a whole number in [{a}, {}]", number(*b as f64)),
             Valid::Choice(c) => format!(
                 "one of {}",
                 c.iter()
@@ -41,7 +122,7 @@ impl Valid {
                     .join(", ")
             ),
             Valid::Bool => "true or false".into(),
-            Valid::NonNegativeArray => "an array of numbers >= 0".into(),
+            Valid::NumArray(r) => format!("an array of numbers in {}", r.describe()),
         }
     }
 }
@@ -56,81 +137,214 @@ pub struct KeySpec {
     /// What it is, and the source of its default.
     pub doc: &'static str,
     pub valid: Valid,
+    /// Why the valid range is what it is.
+    pub reason: &'static str,
 }
 
-const fn k(key: &'static str, unit: &'static str, valid: Valid, doc: &'static str) -> KeySpec {
+const fn k(
+    key: &'static str,
+    unit: &'static str,
+    valid: Valid,
+    doc: &'static str,
+    reason: &'static str,
+) -> KeySpec {
     KeySpec {
         key,
         unit,
         doc,
         valid,
+        reason,
     }
 }
 
 use Valid::*;
 
+const MASS: Range = Range::closed(1e-4, 1e5);
+const INERTIA: Range = Range::closed(1e-10, 1e5);
+const BORE: Range = Range::closed(0.1, 1e4);
+
 /// Every key, in the order the template prints them.
 pub const KEYS: &[KeySpec] = &[
-    k("gear.module_mm", "mm", Positive, "Module m (paper Table 1: 2 mm)."),
-    k("gear.teeth_pinion", "-", IntAtLeast(6), "Pinion teeth z1 (paper: 19)."),
-    k("gear.teeth_gear", "-", IntAtLeast(6), "Gear teeth z2 (paper: 31)."),
-    k("gear.pressure_angle_deg", "deg", Closed(10.0, 35.0), "Reference pressure angle alpha (paper: 20)."),
-    k("gear.addendum_coefficient", "-", Closed(0.5, 1.5), "Addendum coefficient h_a* (paper: 1.00 m)."),
-    k("gear.dedendum_coefficient", "-", Closed(0.8, 2.0), "Dedendum coefficient h_f* (paper: 1.25 m)."),
-    k("gear.profile_shift_pinion", "-", Closed(-1.0, 1.5), "Profile shift coefficient x1 (paper: 0)."),
-    k("gear.profile_shift_gear", "-", Closed(-1.0, 1.5), "Profile shift coefficient x2 (paper: 0)."),
-    k("gear.face_width_mm", "mm", Positive, "Face width b (paper: 20 mm)."),
-    k("gear.centre_distance_mm", "mm", Positive, "Operating centre distance; omit for the one the profile shifts give (paper: 50 mm)."),
-    k("gear.hub_bore_radius_pinion_mm", "mm", Positive, "Pinion hub bore radius r_int for the fillet foundation (not in the paper; 8 mm gives h_f = r_f/r_int ~ 2)."),
-    k("gear.hub_bore_radius_gear_mm", "mm", Positive, "Gear hub bore radius r_int (not in the paper; 14 mm gives h_f ~ 2)."),
-    k("gear.tool_tip_radius_coefficient", "-", Closed(0.0, 0.6), "Rack-cutter tip radius / m, for the undercut check (ISO 53 profile A: 0.38)."),
-    k("materials.youngs_modulus_pinion_gpa", "GPa", Positive, "Pinion Young's modulus (paper: 205 GPa)."),
-    k("materials.poisson_ratio_pinion", "-", Open(0.0, 0.5), "Pinion Poisson's ratio (paper: 0.3)."),
-    k("materials.youngs_modulus_gear_gpa", "GPa", Positive, "Gear Young's modulus (paper: 205 GPa)."),
-    k("materials.poisson_ratio_gear", "-", Open(0.0, 0.5), "Gear Poisson's ratio (paper: 0.3)."),
-    k("operating.input_speed_hz", "Hz", Positive, "Pinion (input) shaft speed (paper 4.1: 30 Hz)."),
-    k("operating.load_torque_nm", "N m", Positive, "Load torque (paper: 60 N m)."),
-    k("operating.load_torque_shaft", "-", Choice(&["pinion", "gear"]), "Shaft the load torque is referred to; \"pinion\" matches the paper's 3311 N mean force (docs/PAPER_NOTES.md)."),
-    k("operating.speed_boundary", "-", Choice(&["motor_speed_imposed", "brake_speed_imposed", "motor_slip"]), "How the mean speed is held: a motor torque law T_0 - c_slip (dtheta_m/dt - Omega) (default, paper eq. 1 keeps the motor as a torque-driven inertia), motor angle imposed, or brake angle imposed. Moves the lowest modes (docs/MODEL.md)."),
-    k("operating.motor_slip_damping_nm_s_per_rad", "N m s/rad", Positive, "Slope c_slip of the motor torque-speed law, used by speed_boundary = \"motor_slip\" (10: induction motor with ~3 % rated slip at 60 N m, 30 Hz)."),
-    k("lubricant.viscosity_cp", "cP", Positive, "Inlet absolute viscosity nu_0 (not in the paper; 40 cP, ISO VG 100 near 60 degC). Must exceed 1 cP with the Xu model."),
-    k("surface.roughness_table_wear_um", "um", NonNegativeArray, "Maximum pinion wear depth at the roughness table points, ascending (paper 4.1: 0.1, 0.5, 1 um)."),
-    k("surface.roughness_table_rms_um", "um", NonNegativeArray, "Composite RMS roughness S at those points; linear in between, constant outside (paper's 2.1/1.9/1.5 read as 0.21/0.19/0.15, see docs/MODEL.md)."),
-    k("dynamics.mass_pinion_kg", "kg", Positive, "Pinion mass m_p (paper Table 2: 0.7)."),
-    k("dynamics.mass_gear_kg", "kg", Positive, "Gear mass m_g (paper: 1.822)."),
-    k("dynamics.inertia_pinion_kg_m2", "kg m^2", Positive, "Pinion inertia J_p (paper: 2.331e-4)."),
-    k("dynamics.inertia_gear_kg_m2", "kg m^2", Positive, "Gear inertia J_g (paper: 1.392e-3)."),
-    k("dynamics.inertia_motor_kg_m2", "kg m^2", Positive, "Motor inertia J_m (paper: 2.1e-3)."),
-    k("dynamics.inertia_brake_kg_m2", "kg m^2", Positive, "Brake inertia J_b (paper: 1.05e-2)."),
-    k("dynamics.bearing_stiffness_pinion_n_per_m", "N/m", Positive, "Pinion bearing stiffness, x and y (paper: 5e8; printed unit N m read as N/m)."),
-    k("dynamics.bearing_stiffness_gear_n_per_m", "N/m", Positive, "Gear bearing stiffness, x and y (paper: 5e8)."),
-    k("dynamics.bearing_damping_pinion_n_s_per_m", "N s/m", NonNegative, "Pinion bearing damping, x and y (paper: 4e5)."),
-    k("dynamics.bearing_damping_gear_n_s_per_m", "N s/m", NonNegative, "Gear bearing damping, x and y (paper: 4e5)."),
-    k("dynamics.coupling_stiffness_motor_nm_per_rad", "N m/rad", Positive, "Motor-pinion coupling torsional stiffness k_mp (paper: 4e7)."),
-    k("dynamics.coupling_stiffness_brake_nm_per_rad", "N m/rad", Positive, "Gear-brake coupling torsional stiffness k_bg (paper: 4e7)."),
-    k("dynamics.coupling_damping_motor_nm_s_per_rad", "N m s/rad", NonNegative, "Motor-pinion coupling torsional damping c_mp (paper: 3e4)."),
-    k("dynamics.coupling_damping_brake_nm_s_per_rad", "N m s/rad", NonNegative, "Gear-brake coupling torsional damping c_bg (paper: 3e4)."),
-    k("dynamics.mesh_damping_ratio", "-", Closed(0.0, 1.0), "Mesh damping ratio zeta, c_m = 2 zeta sqrt(k_mean m_e) (not in the paper; 0.05, docs/PAPER_NOTES.md gives 0.03-0.1)."),
-    k("stiffness.fillet_foundation", "-", Bool, "Include the Sainsot (2004) fillet-foundation compliance."),
-    k("stiffness.table_points_per_mesh_period", "-", IntAtLeast(16), "Samples of the mesh-stiffness table over one mesh period (cubic interpolation in between)."),
-    k("contact.load_sharing", "-", Choice(&["pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero) or by pair stiffness and deflection."),
-    k("friction.model", "-", Choice(&["xu2007", "constant", "none"]), "Friction coefficient: Xu et al. (2007) regression (paper eq. 8-9), a constant, or none."),
-    k("friction.constant_coefficient", "-", Closed(0.0, 1.0), "Coefficient used with model = \"constant\"."),
-    k("friction.xu_radius_unit", "-", Choice(&["m", "mm"]), "Unit of the radius of curvature R in Xu's regression (docs/PAPER_NOTES.md; Xu et al. use m)."),
-    k("friction.direction_smoothing_m_per_s", "m/s", Positive, "Sliding speed over which the friction direction turns through the pitch point (tanh)."),
-    k("wear.coefficient_m2_per_n", "m^2/N", NonNegative, "Archard wear coefficient k (paper's 2.5e-12 read as cm^2/N = 2.5e-16 m^2/N)."),
-    k("wear.block_cycles", "cycles", Positive, "Cycles m the per-cycle wear is held for between dynamic updates (paper eq. 17: 1e4)."),
-    k("wear.threshold_um", "um", Positive, "Largest wear depth one block may add at any point (paper's epsilon^m: 0.5 um)."),
-    k("wear.total_cycles", "cycles", Positive, "Pinion load cycles (revolutions) of the wear study (paper Fig. 13: 4e4)."),
-    k("wear.points_per_profile", "-", IntAtLeast(11), "Points on each active profile for the wear bookkeeping."),
-    k("numerics.steps_per_mesh_period", "-", IntAtLeast(20), "Grid nodes per mesh period, aligned with the mesh events: the longest integration step and the fewest recorded samples per period."),
-    k("numerics.integration_tolerance", "-", Open(0.0, 1.0), "Local error per integration step, relative to the state's scales (static mesh deflection, and its rate at the mesh frequency); the error control adds steps where the dynamics need them."),
-    k("numerics.max_mesh_periods", "-", IntAtLeast(2), "Mesh periods after which the search for steady state gives up."),
-    k("numerics.steady_state_tolerance", "-", Open(0.0, 1.0), "Steady state: largest change of the state over one mesh period, relative to its scale."),
-    k("numerics.evaluated_mesh_periods", "-", IntAtLeast(1), "Mesh periods recorded once steady (signals and spectra)."),
+    k("gear.module_mm", "mm", Num(Range::closed(0.1, 50.0)), "Module m (paper Table 1: 2 mm).",
+      "From instrument gears (0.1 mm) to the largest modules of ISO 54 (50 mm); below, a tooth is a few grains of steel and the continuum beam and Hertz models of a tooth no longer hold."),
+    k("gear.teeth_pinion", "-", Int(6, 1000), "Pinion teeth z1 (paper: 19).",
+      "Below 6 teeth no standard pair meshes; 1000 covers the largest bull gears."),
+    k("gear.teeth_gear", "-", Int(6, 1000), "Gear teeth z2 (paper: 31).",
+      "As for the pinion."),
+    k("gear.pressure_angle_deg", "deg", Num(Range::closed(10.0, 35.0)), "Reference pressure angle alpha (paper: 20).",
+      "Standard racks use 14.5 to 25 deg; outside 10-35 deg teeth undercut or point for any usual tooth count."),
+    k("gear.addendum_coefficient", "-", Num(Range::closed(0.5, 1.5)), "Addendum coefficient h_a* (paper: 1.00 m).",
+      "Stub (0.8) to long-addendum (1.2-1.4) systems; beyond, tips point or the contact ratio falls below 1."),
+    k("gear.dedendum_coefficient", "-", Num(Range::closed(0.8, 2.0)), "Dedendum coefficient h_f* (paper: 1.25 m).",
+      "Stub teeth (~1.0) to deep-root racks (~1.6), with room either side."),
+    k("gear.profile_shift_pinion", "-", Num(Range::closed(-1.0, 1.5)), "Profile shift coefficient x1 (paper: 0).",
+      "Beyond these shifts teeth point (positive) or are cut away (negative) for any tooth count the model accepts."),
+    k("gear.profile_shift_gear", "-", Num(Range::closed(-1.0, 1.5)), "Profile shift coefficient x2 (paper: 0).",
+      "As for the pinion."),
+    k("gear.face_width_mm", "mm", Num(Range::closed(0.1, 2000.0)), "Face width b (paper: 20 mm).",
+      "Instrument gears to mill drives; the pair also needs 1 <= b/m <= 100 (checked with the module): a narrower tooth is a plate, a wider one cannot bear evenly."),
+    k("gear.centre_distance_mm", "mm", Num(Range::closed(0.1, 1e5)), "Operating centre distance; omit for the one the profile shifts give (paper: 50 mm).",
+      "Checked against the pair: the tooth tips must reach each other (contact ratio >= 1) without interfering."),
+    k("gear.hub_bore_radius_pinion_mm", "mm", NumOrDerived(BORE), "Pinion hub bore radius r_int for the fillet foundation (not in the paper; 8 mm gives h_f = r_f/r_int ~ 2). \"derived\": r_f/2.",
+      "At least 0.1 mm (a smaller bore is a solid blank, which Sainsot's ring model does not describe) and inside the root circle (checked with the geometry); \"derived\" puts h_f = 2, inside Sainsot's fit (1.4-7)."),
+    k("gear.hub_bore_radius_gear_mm", "mm", NumOrDerived(BORE), "Gear hub bore radius r_int (not in the paper; 14 mm gives h_f ~ 2). \"derived\": r_f/2.",
+      "As for the pinion."),
+    k("gear.tool_tip_radius_coefficient", "-", Num(Range::closed(0.0, 0.6)), "Rack-cutter tip radius / m: the root fillet, the undercut check and Sainsot's theta_f (ISO 53 profile A: 0.38).",
+      "ISO 53 racks use 0.25-0.4; a larger radius no longer fits the rack's tip for usual dedendums."),
+    k("materials.youngs_modulus_pinion_gpa", "GPa", Num(Range::closed(1.0, 1000.0)), "Pinion Young's modulus (paper: 205 GPa).",
+      "Engineering polymers (~1-3 GPa) to cemented carbide (~650 GPa)."),
+    k("materials.poisson_ratio_pinion", "-", Num(Range::open(0.0, 0.5)), "Pinion Poisson's ratio (paper: 0.3).",
+      "Isotropic solids with a positive ratio; 0.5 (incompressible) divides by zero in the shear modulus' uses."),
+    k("materials.youngs_modulus_gear_gpa", "GPa", Num(Range::closed(1.0, 1000.0)), "Gear Young's modulus (paper: 205 GPa).",
+      "As for the pinion."),
+    k("materials.poisson_ratio_gear", "-", Num(Range::open(0.0, 0.5)), "Gear Poisson's ratio (paper: 0.3).",
+      "As for the pinion."),
+    k("operating.input_speed_hz", "Hz", Num(Range::closed(1e-6, 1000.0)), "Pinion (input) shaft speed (paper 4.1: 30 Hz).",
+      "From a turn in 12 days (the quasi-static limit, used by tests of the model) to 60000 rpm; high-speed turbine gears stay below ~500 Hz."),
+    k("operating.load_torque_nm", "N m", Num(Range::closed(1e-3, 1e7)), "Load torque (paper: 60 N m).",
+      "Instrument drives (mN m) to rolling-mill drives (10 MN m); the Hertz pressure it gives on this pair must also stay below 10 GPa (checked with the geometry), far beyond any steel's elastic limit."),
+    k("operating.load_torque_shaft", "-", Choice(&["pinion", "gear"]), "Shaft the load torque is referred to; \"pinion\" matches the paper's 3311 N mean force (docs/MODEL.md).",
+      "-"),
+    k("operating.speed_boundary", "-", Choice(&["motor_speed_imposed", "brake_speed_imposed", "motor_slip"]), "How the mean speed is held: a motor torque law T_0 - c_slip (dtheta_m/dt - Omega) (default, paper eq. 1 keeps the motor as a torque-driven inertia), motor angle imposed, or brake angle imposed. Moves the lowest modes (docs/MODEL.md).",
+      "-"),
+    k("operating.motor_slip_damping_nm_s_per_rad", "N m s/rad", Num(Range::closed(1e-3, 1e6)), "Slope c_slip of the motor torque-speed law, used by speed_boundary = \"motor_slip\" (10: induction motor with ~3 % rated slip at 60 N m, 30 Hz).",
+      "Torque-speed slopes of real motors, from small servo motors to multi-MW drives."),
+    k("lubricant.viscosity_cp", "cP", Num(Range::closed(0.1, 1e5)), "Inlet absolute viscosity nu_0 (not in the paper; 40 cP, ISO VG 100 near 60 degC). Must exceed 1 cP with the Xu model.",
+      "Light solvents (~0.3 cP) to cold heavy gear oil (~1e4 cP); Xu's regression also needs > 1 cP (checked)."),
+    k("surface.roughness_table_wear_um", "um", NumArray(Range::closed(0.0, 1000.0)), "Maximum pinion wear depth at the roughness table points, ascending (paper 4.1: 0.1, 0.5, 1 um).",
+      "Up to a millimetre of wear, far beyond the small-wear model; the table must ascend (checked)."),
+    k("surface.roughness_table_rms_um", "um", NumArray(Range::closed(0.0, 5.0)), "Composite RMS roughness S at those points; linear in between, constant outside (paper's 2.1/1.9/1.5 read as 0.21/0.19/0.15, see docs/MODEL.md).",
+      "Ground to rough-hobbed flanks; Xu's regression grows as exp(e^S) and overflows near S = 7 um."),
+    k("dynamics.mass_pinion_kg", "kg", NumOrDerived(MASS), "Pinion mass m_p (paper Table 2: 0.7). \"derived\": a solid blank of the face width between bore and pitch circle.",
+      "0.1 g to 100 t; a value more than 2 times off the geometry's estimate is warned about."),
+    k("dynamics.mass_gear_kg", "kg", NumOrDerived(MASS), "Gear mass m_g (paper: 1.822). \"derived\" as for the pinion.",
+      "As for the pinion."),
+    k("dynamics.inertia_pinion_kg_m2", "kg m^2", NumOrDerived(INERTIA), "Pinion inertia J_p (paper: 2.331e-4). \"derived\": the blank's polar inertia.",
+      "A 1 mm steel disk (~1e-10) to a 100 t, 2 m wheel; a value more than 2 times off the geometry's estimate is warned about."),
+    k("dynamics.inertia_gear_kg_m2", "kg m^2", NumOrDerived(INERTIA), "Gear inertia J_g (paper: 1.392e-3). \"derived\" as for the pinion.",
+      "As for the pinion."),
+    k("dynamics.blank_density_kg_per_m3", "kg/m^3", Num(Range::closed(500.0, 25000.0)), "Density of both gear blanks, used by the \"derived\" masses and inertias (steel: 7850).",
+      "Polymers (~900-1400) to tungsten alloys (~19000)."),
+    k("dynamics.inertia_motor_kg_m2", "kg m^2", Num(INERTIA), "Motor inertia J_m (paper: 2.1e-3).",
+      "As for the gears; the geometry cannot give it."),
+    k("dynamics.inertia_brake_kg_m2", "kg m^2", Num(INERTIA), "Brake inertia J_b (paper: 1.05e-2).",
+      "As for the motor."),
+    k("dynamics.bearing_stiffness_pinion_n_per_m", "N/m", Num(Range::closed(1e4, 1e12)), "Pinion bearing stiffness, x and y (paper: 5e8; printed unit N m read as N/m).",
+      "Compliant mounts to the stiffest rolling bearings (~1e10 N/m), with margin."),
+    k("dynamics.bearing_stiffness_gear_n_per_m", "N/m", Num(Range::closed(1e4, 1e12)), "Gear bearing stiffness, x and y (paper: 5e8).",
+      "As for the pinion."),
+    k("dynamics.bearing_damping_pinion_n_s_per_m", "N s/m", Num(Range::closed(0.0, 1e8)), "Pinion bearing damping, x and y (paper: 4e5).",
+      "Undamped to 100 times the paper's heavily damped bearings."),
+    k("dynamics.bearing_damping_gear_n_s_per_m", "N s/m", Num(Range::closed(0.0, 1e8)), "Gear bearing damping, x and y (paper: 4e5).",
+      "As for the pinion."),
+    k("dynamics.coupling_stiffness_motor_nm_per_rad", "N m/rad", Num(Range::closed(1.0, 1e10)), "Motor-pinion coupling torsional stiffness k_mp (paper: 4e7).",
+      "Soft elastomer couplings (~1e2) to rigid shafts of large drives."),
+    k("dynamics.coupling_stiffness_brake_nm_per_rad", "N m/rad", Num(Range::closed(1.0, 1e10)), "Gear-brake coupling torsional stiffness k_bg (paper: 4e7).",
+      "As for the motor coupling."),
+    k("dynamics.coupling_damping_motor_nm_s_per_rad", "N m s/rad", Num(Range::closed(0.0, 1e7)), "Motor-pinion coupling torsional damping c_mp (paper: 3e4).",
+      "Undamped to 300 times the paper's value."),
+    k("dynamics.coupling_damping_brake_nm_s_per_rad", "N m s/rad", Num(Range::closed(0.0, 1e7)), "Gear-brake coupling torsional damping c_bg (paper: 3e4).",
+      "As for the motor coupling."),
+    k("dynamics.mesh_damping_ratio", "-", Num(Range::closed(0.0, 1.0)), "Mesh damping ratio zeta, c_m = 2 zeta sqrt(k_mean m_e) (not in the paper; 0.05, measured gears show 0.03-0.1).",
+      "Undamped to critically damped."),
+    k("stiffness.fillet_foundation", "-", Bool, "Include the Sainsot (2004) fillet-foundation compliance.",
+      "-"),
+    k("stiffness.fillet_root_angle", "-", Choice(&["fillet_junction", "flank_extension"]), "Where Sainsot's root half angle theta_f (and S_f = 2 r_f theta_f) is taken: where the root fillet meets the root circle (Sainsot et al. 2004; Chen & Shao 2011; default), or where the flank's extension meets it (gearwear before issue 10). docs/MODEL.md.",
+      "-"),
+    k("stiffness.allow_fillet_extrapolation", "-", Bool, "Use Sainsot's fit outside its published range (1.4 <= h_f <= 7, 0.01 <= theta_f <= 0.12 rad), with a warning; false makes it an error. The built-in pair's pinion is exempt (docs/MODEL.md).",
+      "-"),
+    k("stiffness.table_points_per_mesh_period", "-", Int(16, 100_000), "Samples of the mesh-stiffness table over one mesh period (cubic interpolation in between).",
+      "16 points resolve the curve to ~1e-4; beyond 1e5 only round-off changes."),
+    k("contact.load_sharing", "-", Choice(&["pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero) or by pair stiffness and deflection.",
+      "-"),
+    k("friction.model", "-", Choice(&["xu2007", "constant", "none"]), "Friction coefficient: Xu et al. (2007) regression (paper eq. 8-9), a constant, or none.",
+      "-"),
+    k("friction.constant_coefficient", "-", Num(Range::closed(0.0, 1.0)), "Coefficient used with model = \"constant\".",
+      "Frictionless to dry steel on steel (~0.8)."),
+    k("friction.xu_radius_unit", "-", Choice(&["m", "mm"]), "Unit of the radius of curvature R in Xu's regression (docs/MODEL.md; Xu et al. use m).",
+      "-"),
+    k("friction.direction_smoothing_m_per_s", "m/s", Num(Range::closed(1e-6, 10.0)), "Sliding speed over which the friction direction turns through the pitch point (tanh).",
+      "A micrometre per second (a sign switch) to 10 m/s (smoother than any real sliding)."),
+    k("wear.coefficient_m2_per_n", "m^2/N", Num(Range::closed(0.0, 1e-11)), "Archard wear coefficient k (paper's 2.5e-12 read as cm^2/N = 2.5e-16 m^2/N).",
+      "Archard's dimensionless coefficient K <= 1e-2 (severe adhesive wear) over a hardness >= 1 GPa gives k <= 1e-11 m^2/N; lubricated gears lie near 1e-18 to 1e-15."),
+    k("wear.block_cycles", "cycles", Num(Range::closed(1.0, 1e11)), "Cycles m the per-cycle wear is held for between dynamic updates (paper eq. 17: 1e4).",
+      "A block holds at least one load cycle; the number of updates it makes is checked by the run budget."),
+    k("wear.threshold_um", "um", Num(Range::closed(1e-3, 1e6)), "Largest wear depth one block may add at any point (paper's epsilon^m: 0.5 um).",
+      "From 1 nm (atomic layers) up; a threshold of a metre is never reached and turns the cut off. The number of updates it makes is checked by the run budget."),
+    k("wear.total_cycles", "cycles", Num(Range::closed(1.0, 1e11)), "Pinion load cycles (revolutions) of the wear study (paper Fig. 13: 4e4).",
+      "1e10 revolutions is about 30 years of running at 10 Hz; the run's cost is checked by the run budget."),
+    k("wear.points_per_profile", "-", Int(11, 100_000), "Points on each active profile for the wear bookkeeping.",
+      "11 points resolve the wear profile's shape; 1e5 points are 0.1 um apart on a 10 mm path."),
+    k("numerics.steps_per_mesh_period", "-", Int(20, 1_000_000), "Grid nodes per mesh period, aligned with the mesh events: the longest integration step and the fewest recorded samples per period.",
+      "Below 20 the mesh events are barely resolved (docs/MODEL.md, convergence); the cost of more is checked by the run budget."),
+    k("numerics.integration_tolerance", "-", Num(Range::closed(1e-9, 0.1)), "Local error per integration step, relative to the state's scales (static mesh deflection, and its rate at the mesh frequency); the error control adds steps where the dynamics need them.",
+      "Below 1e-9 round-off in the error estimate exceeds the tolerance (measured: 1e-10 fails at the first step at 0.5 Hz); near the bound, slow speeds on coarse grids can fail too (1e-8 at 0.5 Hz with 20 grid nodes per period), with a message naming this key. Above 0.1 the grid nodes, not the error control, set every step. The steps it adds are checked by the run budget."),
+    k("numerics.max_mesh_periods", "-", Int(2, 1_000_000), "Mesh periods after which the search for steady state gives up.",
+      "Two periods are the least a comparison needs; the cost of more is checked by the run budget."),
+    k("numerics.steady_state_tolerance", "-", Num(Range::closed(1e-12, 0.5)), "Steady state: largest change of the state over one mesh period, relative to its scale.",
+      "Below ~1e-12 the change between periods is round-off and may never settle; above 0.5 nothing is periodic."),
+    k("numerics.evaluated_mesh_periods", "-", Int(1, 100_000), "Mesh periods recorded once steady (signals and spectra).",
+      "At least one period; the memory of more is checked by the run budget."),
+    k("calibration.wear_coefficient_min_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Lower bound of the log-uniform prior of the wear coefficient k (`gearwear calibrate`/`predict`); omit for the case's k / 100.",
+      "Inside the wear coefficient's own range (up to 1e-11); 1e-22 is far below any measured gear wear coefficient."),
+    k("calibration.wear_coefficient_max_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Upper bound of the log-uniform prior of k; omit for the case's k x 100. Equal bounds hold k fixed.",
+      "As for the lower bound."),
+    k("calibration.roughness_scale_min", "-", Num(Range::closed(0.01, 10.0)), "Lower bound of the uniform prior of the factor applied to `surface.roughness_table_rms_um` (1 and 1: not calibrated).",
+      "A factor of 100 either way covers any ground or hobbed finish from the table's values."),
+    k("calibration.roughness_scale_max", "-", Num(Range::closed(0.01, 10.0)), "Upper bound of the uniform prior of the roughness factor.",
+      "As for the lower bound."),
+    k("calibration.load_torque_min_nm", "N m", Num(Range::closed(1e-3, 1e7)), "Lower bound of the uniform prior of `operating.load_torque_nm`; omit (with the max) to hold the case's torque fixed.",
+      "As for `operating.load_torque_nm`."),
+    k("calibration.load_torque_max_nm", "N m", Num(Range::closed(1e-3, 1e7)), "Upper bound of the uniform prior of the load torque.",
+      "As for `operating.load_torque_nm`."),
+    k("calibration.grid_points", "-", Int(16, 10_000), "Cells per parameter of the exact grid posterior (used with one or two uncertain parameters).",
+      "16 cells resolve a smooth posterior; the surrogate makes cells cheap, but 1e4 per parameter (1e8 for two) is beyond any use."),
+    k("calibration.surrogate_nodes", "-", Int(2, 50), "Reference wear runs per uncertain parameter other than k (roughness factor, load torque); the surrogate interpolates linearly between them.",
+      "Linear interpolation needs two; each node is a whole wear study, and 50 resolve any smooth response."),
 ];
 
 /// Look up a key's spec.
 pub fn spec(key: &str) -> Option<&'static KeySpec> {
     KEYS.iter().find(|s| s.key == key)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_include_their_closed_ends_and_exclude_open_ends_and_subnormals() {
+        let r = Range::closed(0.0, 1.0);
+        assert!(r.contains(0.0) && r.contains(1.0) && r.contains(0.5));
+        assert!(!r.contains(5e-324) && !r.contains(f64::NAN) && !r.contains(1.0 + 1e-15));
+        let o = Range::open(0.0, 0.5);
+        assert!(!o.contains(0.0) && !o.contains(0.5) && o.contains(0.3));
+        assert!(!Range::closed(-1.0, f64::INFINITY).contains(f64::INFINITY));
+        assert_eq!(Range::above(0.0, 1e4).describe(), "(0, 10000]");
+        assert_eq!(Range::closed(0.1, 1e4).describe(), "[0.1, 10000]");
+        assert_eq!(Range::closed(0.0, 1e-11).describe(), "[0, 1e-11]");
+        assert_eq!(Range::closed(1e-12, 0.5).describe(), "[1e-12, 0.5]");
+    }
+
+    #[test]
+    fn every_numeric_key_has_a_finite_range_and_a_reason() {
+        for s in KEYS {
+            let r = match s.valid {
+                Num(r) | NumOrDerived(r) | NumArray(r) => Some(r),
+                Int(lo, hi) => {
+                    assert!(lo <= hi, "{}", s.key);
+                    None
+                }
+                Choice(_) | Bool => None,
+            };
+            if let Some(r) = r {
+                assert!(
+                    r.lo.is_finite() && r.hi.is_finite() && r.lo < r.hi,
+                    "{}",
+                    s.key
+                );
+                assert!(s.reason.len() > 10, "{} needs a reason", s.key);
+            }
+        }
+    }
 }

@@ -30,6 +30,21 @@ fn recess_share(pair: &GearPair, rho1_m: f64) -> f64 {
     (1.0 + zeta_to_exit / (1.0 - pair.contact_ratio)) / 3.0
 }
 
+/// Share of a pair at position `rho1_m` along the path of contact, by position alone
+/// (paper eq. 7 as a function of zeta): the profile's view, used where no contact set is
+/// decided (nominal load along the path). At the two zone boundaries, where a set would
+/// decide, it gives the single-pair value 1. Dimensionless.
+pub fn pedrero_share_at(pair: &GearPair, rho1_m: f64) -> f64 {
+    let zeta = (rho1_m - pair.rho_start_m) / pair.base_pitch_m;
+    if zeta < pair.contact_ratio - 1.0 {
+        approach_share(pair, rho1_m)
+    } else if zeta <= 1.0 {
+        1.0
+    } else {
+        recess_share(pair, rho1_m)
+    }
+}
+
 /// Shares of the mesh force of the pairs in contact at one instant, paper eq. (7).
 ///
 /// `rho1_m` lists the positions of the pairs of the contact set actually decided, from
@@ -115,6 +130,23 @@ mod tests {
             let s: f64 = shares_at(&p, phase, decide).iter().sum();
             assert!((s - 1.0).abs() < 1e-12, "phase {phase}: {s}");
         }
+    }
+
+    #[test]
+    fn share_by_position_is_complementary_one_base_pitch_apart() {
+        // Eq. (7)'s invariant kappa(zeta) + kappa(zeta + 1) = 1 inside the first double
+        // contact zone, 1 in single contact, 1/3 at the very start of contact.
+        let p = pair();
+        let pb = p.base_pitch_m;
+        let double = (p.contact_ratio - 1.0) * pb;
+        for i in 1..50 {
+            let rho = p.rho_start_m + double * i as f64 / 50.0;
+            let sum = pedrero_share_at(&p, rho) + pedrero_share_at(&p, rho + pb);
+            assert!((sum - 1.0).abs() < 1e-12, "{rho}: {sum}");
+        }
+        let single = p.rho_start_m + 0.5 * (double + pb);
+        assert_eq!(pedrero_share_at(&p, single), 1.0);
+        assert!((pedrero_share_at(&p, p.rho_start_m) - 1.0 / 3.0).abs() < 1e-12);
     }
 
     #[test]

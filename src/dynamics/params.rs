@@ -10,7 +10,8 @@ use std::f64::consts::PI;
 /// operating point derived from the case and the pair.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicParams {
-    pub lumped: DynamicsSection,
+    /// With every `"derived"` mass and inertia resolved from the pair's blanks.
+    pub lumped: DynamicsSection<f64>,
     pub speed_boundary: SpeedBoundary,
     pub motor_slip_damping_nm_s_per_rad: f64,
     /// Nominal pinion speed Omega_p, rad/s.
@@ -37,7 +38,7 @@ impl DynamicParams {
         };
         let omega_p = 2.0 * PI * o.input_speed_hz;
         Self {
-            lumped: d.clone(),
+            lumped: d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3)),
             speed_boundary: o.speed_boundary,
             motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
             pinion_speed_rad_s: omega_p,

@@ -19,6 +19,10 @@ pub struct ResponseSummary {
     pub velocity_y_pinion_rms_m_per_s: f64,
     /// Amplitudes of the first four mesh harmonics of dy_p/dt, m/s.
     pub velocity_y_pinion_harmonics_m_per_s: [f64; 4],
+    /// Amplitude of the first mesh harmonic of the DTE, m (what a pair of encoders gives;
+    /// absent in checkpoints written before it existed, hence the serde default).
+    #[serde(default)]
+    pub dte_harmonic1_m: f64,
     pub friction_coefficient_max: f64,
     pub friction_coefficient_mean_in_contact: f64,
     pub friction_force_max_n: f64,
@@ -68,6 +72,8 @@ impl ResponseSummary {
                 *a = spec.harmonic(h + 1);
             }
         }
+        let dte_spec =
+            amplitude_spectrum(&s.time_s, &s.dte_m, r.mesh_period_s, evaluated_periods(r));
         let mu_all: Vec<f64> = r.path.iter().map(|p| p.friction_coefficient).collect();
         let mu_in: Vec<f64> = r
             .path
@@ -91,6 +97,7 @@ impl ResponseSummary {
                 0.0
             },
             velocity_y_pinion_harmonics_m_per_s: harm,
+            dte_harmonic1_m: dte_spec.harmonic(1),
             friction_coefficient_max: if mu_all.is_empty() { 0.0 } else { max(&mu_all) },
             friction_coefficient_mean_in_contact: if mu_in.is_empty() {
                 0.0

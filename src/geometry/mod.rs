@@ -1,5 +1,6 @@
 //! Involute spur-pair geometry: radii, path of contact, profile points.
 
+pub mod blank;
 pub mod involute;
 pub mod pair;
 pub mod profile;

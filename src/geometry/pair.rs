@@ -9,7 +9,7 @@
 //! Applied Theory* (2004), ch. 10.
 
 use super::involute::{inv, inv_inverse};
-use crate::config::case::GearSection;
+use crate::config::case::{Derivable, GearSection};
 use std::f64::consts::PI;
 
 /// One gear of the pair (SI units).
@@ -31,8 +31,44 @@ pub struct Gear {
     /// Radius of curvature of the lowest generated involute point (rack-cutter limit), m;
     /// negative means undercut.
     pub form_rho_m: f64,
-    /// Hub bore radius, m.
+    /// Hub bore radius, m: the case's, or r_f / 2 when `"derived"`.
     pub bore_radius_m: f64,
+    /// Half the angle the tooth's footing spans on the root circle, measured to where the
+    /// root fillet meets the root circle (rad); see [`fillet_junction_half_angle_rad`].
+    pub fillet_junction_half_angle_rad: f64,
+}
+
+/// h_f = r_f / r_int of a `"derived"` hub bore: 2, well inside Sainsot's fitted range
+/// 1.4 <= h_f <= 7 and what the built-in case's own bores give (8 / 16.5 mm: 2.06;
+/// 14 / 28.5 mm: 2.04). A bore of half the root radius leaves a rim as deep as the teeth
+/// are long on the sizes of the built-in pair.
+pub const DERIVED_BORE_H_F: f64 = 2.0;
+
+/// Half angle (rad) of a generated tooth's footing on the root circle: from the tooth
+/// centreline to where the root fillet meets the root circle.
+///
+/// The rack cutter's flat tip generates the root circle; each of its corners, rounded with
+/// radius rho_fP = `tool_tip_coefficient` m, generates a fillet, which meets the root
+/// circle at the point the corner's tangency with the tip line generates. That point lies
+/// E from the rack tooth's centreline (ISO 6336-3, tooth form factor, with no protuberance):
+///   E = pi m / 4 - h_fP tan(alpha) - rho_fP (1 - sin alpha) / cos(alpha),
+/// h_fP = `dedendum_coefficient` m the rack's addendum. The rack tooth's centreline is the
+/// middle of a tooth space, pi m / 2 from the gear tooth's centreline along the rolling
+/// line, and rolling maps a distance s along it to the angle s / r (r = m z / 2), so
+///   theta_f = (pi m / 2 - E) / r  =  (2 / z) [pi/4 + h_f* tan(alpha) + rho* (1 - sin alpha) / cos(alpha)].
+/// The profile shift moves the rack radially and so cancels out. If the two corner radii
+/// overlap (E < 0) the fillets of neighbouring teeth meet on the root circle: theta_f = pi / z.
+pub fn fillet_junction_half_angle_rad(
+    teeth: f64,
+    pressure_angle_rad: f64,
+    dedendum_coefficient: f64,
+    tool_tip_coefficient: f64,
+) -> f64 {
+    let a = pressure_angle_rad;
+    let e_over_m = PI / 4.0
+        - dedendum_coefficient * a.tan()
+        - tool_tip_coefficient * (1.0 - a.sin()) / a.cos();
+    (PI / 2.0 - e_over_m.max(0.0)) * 2.0 / teeth
 }
 
 impl Gear {
@@ -100,8 +136,9 @@ impl GearPair {
         let mut errors = Vec::new();
         let mut warnings = Vec::new();
 
-        let make = |z: f64, x: f64, bore_mm: f64| -> Gear {
+        let make = |z: f64, x: f64, bore: Derivable| -> Gear {
             let r = m * z / 2.0;
+            let r_f = r - m * (g.dedendum_coefficient - x);
             let rb = r * alpha.cos();
             // Lowest involute point the rack cutter generates (ISO 21771): the straight
             // part of the rack flank ends (h_f* - rho_f*(1 - sin alpha)) m below the datum.
@@ -113,14 +150,36 @@ impl GearPair {
                 pitch_radius_m: r,
                 base_radius_m: rb,
                 tip_radius_m: r + m * (g.addendum_coefficient + x),
-                root_radius_m: r - m * (g.dedendum_coefficient - x),
+                root_radius_m: r_f,
                 half_base_angle_rad: PI / (2.0 * z) + 2.0 * x * alpha.tan() / z + inv(alpha),
                 form_rho_m: r * alpha.sin() - (h_straight - x) * m / alpha.sin(),
-                bore_radius_m: bore_mm * mm,
+                bore_radius_m: bore.given().map_or(r_f / DERIVED_BORE_H_F, |b| b * mm),
+                fillet_junction_half_angle_rad: fillet_junction_half_angle_rad(
+                    z,
+                    alpha,
+                    g.dedendum_coefficient,
+                    g.tool_tip_radius_coefficient,
+                ),
             }
         };
         let pinion = make(z1, x1, g.hub_bore_radius_pinion_mm);
         let gear = make(z2, x2, g.hub_bore_radius_gear_mm);
+        for (name, gr) in [("pinion", &pinion), ("gear", &gear)] {
+            if gr.root_radius_m <= 0.0 {
+                errors.push(format!(
+                    "the {name} has no body: its root radius m (z/2 - h_f* + x) = {:.4} mm is not positive (raise its number of teeth or its profile shift, or lower the dedendum coefficient)",
+                    gr.root_radius_m / mm
+                ));
+            } else if gr.bore_radius_m.partial_cmp(&gr.root_radius_m)
+                != Some(std::cmp::Ordering::Less)
+            {
+                errors.push(format!(
+                    "`gear.hub_bore_radius_{name}_mm` = {} is invalid: the bore must lie inside the {name}'s root circle, radius {:.4} mm (\"derived\" gives half of it)",
+                    gr.bore_radius_m / mm,
+                    gr.root_radius_m / mm
+                ));
+            }
+        }
 
         // Operating pressure angle: from the shifts (zero backlash) or from a given centre distance.
         let rb_sum = pinion.base_radius_m + gear.base_radius_m;
@@ -186,10 +245,30 @@ impl GearPair {
                 gear_limit / mm
             ));
         }
-        if eps < 1.0 {
-            errors.push(format!(
+        match g.centre_distance_mm {
+            Some(a_mm) if eps < 1.0 && a_w > rb_sum => {
+                // sqrt(a^2 - (r_b1 + r_b2)^2) = N1N2 = T1 + T2 - eps p_b, T_i the tips'
+                // reach along the line of action, so eps = c at a = sqrt(rb^2 + (T - c p_b)^2).
+                let reach = pinion.tip_rho_m() + gear.tip_rho_m();
+                let at = |c: f64| rb_sum.hypot(reach - c * base_pitch) / mm;
+                errors.push(if eps <= 0.0 {
+                    format!(
+                        "`gear.centre_distance_mm` = {a_mm} is too large: at this centre distance the teeth do not touch at all (their tips fall {:.3} mm short of each other along the line of action); they touch below {:.4} mm and mesh continuously (contact ratio >= 1) below {:.4} mm",
+                        (rho_start - rho_end) / mm,
+                        at(0.0),
+                        at(1.0)
+                    )
+                } else {
+                    format!(
+                        "`gear.centre_distance_mm` = {a_mm} is too large: the teeth touch, but each pair leaves contact before the next one engages (contact ratio {eps:.3} < 1); the pair meshes continuously below {:.4} mm",
+                        at(1.0)
+                    )
+                });
+            }
+            _ if eps < 1.0 => errors.push(format!(
                 "contact ratio {eps:.4} is below 1: the pair cannot mesh continuously (raise the addendum coefficient or the numbers of teeth)"
-            ));
+            )),
+            _ => {}
         }
         if !errors.is_empty() {
             return Err(GeometryError(errors));

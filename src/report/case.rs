@@ -185,19 +185,28 @@ fn ordinal(k: i32) -> String {
     }
 }
 
-/// The choices the paper leaves open, as this run made them: "zeta = 0.05, motor slip law,
-/// 40 cP, hub bore radii 8/14 mm".
-pub fn open_choices_words(case: &Case) -> String {
+/// The choices the paper leaves open, as this run made them: "mesh damping ratio 0.05,
+/// speed boundary condition "motor slip", 40 cP, hub bore radii 8/14 mm" (bores as the
+/// model uses them, "derived" when the geometry gave them).
+pub fn open_choices_words(model: &Model) -> String {
+    let case = &model.case;
     let boundary = serde_json::to_value(case.operating.speed_boundary)
         .ok()
         .and_then(|v| v.as_str().map(|s| s.replace('_', " ")))
         .unwrap_or_default();
+    // To the micrometre: a derived bore is not a round number.
+    let mm = |m: f64| (m * 1e6).round() / 1e3;
+    let g = &case.gear;
+    let derived = [g.hub_bore_radius_pinion_mm, g.hub_bore_radius_gear_mm]
+        .iter()
+        .any(|b| b.given().is_none());
     format!(
-        "mesh damping ratio {}, speed boundary condition \"{boundary}\", {} cP, hub bore radii {}/{} mm",
+        "mesh damping ratio {}, speed boundary condition \"{boundary}\", {} cP, hub bore radii {}/{} mm{}",
         case.dynamics.mesh_damping_ratio,
         case.lubricant.viscosity_cp,
-        case.gear.hub_bore_radius_pinion_mm,
-        case.gear.hub_bore_radius_gear_mm,
+        mm(model.pair.pinion.bore_radius_m),
+        mm(model.pair.gear.bore_radius_m),
+        if derived { " (derived from the geometry)" } else { "" },
     )
 }
 

@@ -95,7 +95,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
     Why {
         dte: format!(
             "The paper gives neither the mesh damping, the speed boundary condition, the viscosity nor the hub bores; this run takes {}. {poles} {dte_change}: Archard wear vanishes at the pitch point, inside the single-contact zone where the maximum occurs (docs/REPRODUCTION.md).",
-            open_choices_words(&model.case)
+            open_choices_words(model)
         ),
         velocity: format!(
             "The y velocity is dominated by the response of the damped mesh pole to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."

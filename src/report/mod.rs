@@ -10,6 +10,7 @@ pub mod html;
 pub mod modes;
 pub mod paper;
 pub mod plot;
+pub mod prognostics;
 pub mod run_report;
 pub mod stiffness;
 pub mod sweep_figure;

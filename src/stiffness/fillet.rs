@@ -6,13 +6,20 @@
 //!   1/k_f = cos^2(alpha_m) / (E b) * [L* (u_f/S_f)^2 + M* (u_f/S_f) + P* (1 + Q* tan^2(alpha_m))]
 //!   X* = A/theta_f^2 + B h_f^2 + C h_f/theta_f + D/theta_f + E h_f + F,  X = L, M, P, Q,
 //!
-//! with h_f = r_f / r_int (root over hub bore radius), theta_f the tooth's half angle at the
-//! root circle, S_f = 2 r_f theta_f, u_f the distance along the tooth centreline from the
-//! root circle to where the force line crosses it, alpha_m the angle of the force to the
-//! perpendicular of the centreline. Units: lengths in m, E in Pa, b in m, result in m/N.
-//! E is Young's modulus as in Sainsot et al. (no plane-strain factor, like the beam terms).
-//! The fit holds for 1.4 <= h_f <= 7 and 0.01 <= theta_f <= 0.12 rad; outside it the
-//! polynomial is extrapolated and a warning is returned.
+//! with h_f = r_f / r_int (root over hub bore radius), theta_f the half angle of the tooth's
+//! footing on the root circle, S_f = 2 r_f theta_f, u_f the distance along the tooth
+//! centreline from the root circle to where the force line crosses it, alpha_m the angle of
+//! the force to the perpendicular of the centreline. Units: lengths in m, E in Pa, b in m,
+//! result in m/N. E is Young's modulus as in Sainsot et al. (no plane-strain factor, like
+//! the beam terms). Where theta_f is measured (the fillet's junction with the root circle,
+//! or the flank's extension) is the caller's choice ([`FilletSettings`],
+//! docs/MODEL.md section 2). The fit holds for 1.4 <= h_f <= 7 and
+//! 0.01 <= theta_f <= 0.12 rad; outside it the polynomial is extrapolated, which the
+//! caller may refuse ([`FilletFoundation::outside_fit`]).
+
+use super::potential_energy::ToothBeam;
+use crate::config::case::{FilletRootAngle, StiffnessSection};
+use crate::geometry::Gear;
 
 /// Rows L*, M*, P*, Q*; columns A, B, C, D, E, F (Sainsot et al. 2004).
 ///
@@ -57,6 +64,9 @@ pub struct FilletFoundation {
     face_width_m: f64,
     /// Set when the geometry lies outside the fit's validity range.
     pub warning: Option<String>,
+    /// Which of h_f and theta_f lie outside the fit's range (then extrapolated).
+    pub h_f_outside_fit: bool,
+    pub theta_f_outside_fit: bool,
 }
 
 impl FilletFoundation {
@@ -72,6 +82,7 @@ impl FilletFoundation {
         face_width_m: f64,
     ) -> Self {
         let mut notes = Vec::new();
+        let (mut h_out, mut t_out) = (false, false);
         let mut h_f = root_radius_m / bore_radius_m;
         if !(bore_radius_m > 0.0 && bore_radius_m < root_radius_m && h_f.is_finite()) {
             notes.push(format!(
@@ -87,6 +98,7 @@ impl FilletFoundation {
                 H_F_RANGE.1
             };
         } else if !(H_F_RANGE.0..=H_F_RANGE.1).contains(&h_f) {
+            h_out = true;
             notes.push(format!(
                 "h_f = r_f/r_int = {h_f:.3} is outside [{}, {}] (extrapolated)",
                 H_F_RANGE.0, H_F_RANGE.1
@@ -100,6 +112,7 @@ impl FilletFoundation {
             ));
             theta = THETA_F_RANGE_RAD.0;
         } else if !(THETA_F_RANGE_RAD.0..=THETA_F_RANGE_RAD.1).contains(&theta) {
+            t_out = true;
             notes.push(format!(
                 "theta_f = {theta:.4} rad is outside [{}, {}] (extrapolated)",
                 THETA_F_RANGE_RAD.0, THETA_F_RANGE_RAD.1
@@ -120,7 +133,14 @@ impl FilletFoundation {
             youngs_modulus_pa,
             face_width_m,
             warning,
+            h_f_outside_fit: h_out,
+            theta_f_outside_fit: t_out,
         }
+    }
+
+    /// Whether the fit is extrapolated here (h_f or theta_f outside its range).
+    pub fn outside_fit(&self) -> bool {
+        self.h_f_outside_fit || self.theta_f_outside_fit
     }
 
     /// 1/k_f (m/N) for a force whose line crosses the centreline u_f (m) above the root
@@ -132,6 +152,79 @@ impl FilletFoundation {
         let t = alpha_m_rad.tan();
         c * c / (self.youngs_modulus_pa * self.face_width_m)
             * (l * x * x + m * x + p * (1.0 + q * t * t))
+    }
+}
+
+/// How the fillet foundation (Sainsot et al. 2004) enters the mesh stiffness.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilletSettings {
+    /// Where the root half angle theta_f is taken.
+    pub root_angle: FilletRootAngle,
+    /// Extrapolate the fit outside its range (a warning) instead of refusing (an error).
+    pub allow_extrapolation: bool,
+    /// Extrapolate in theta_f only (the built-in pair's exemption, `study::Model`).
+    pub allow_theta_f_extrapolation: bool,
+}
+
+impl FilletSettings {
+    /// The case's choice; `None` when the fillet foundation is off.
+    pub fn from_case(s: &StiffnessSection) -> Option<Self> {
+        s.fillet_foundation.then_some(Self {
+            root_angle: s.fillet_root_angle,
+            allow_extrapolation: s.allow_fillet_extrapolation,
+            allow_theta_f_extrapolation: false,
+        })
+    }
+
+    /// The default convention, extrapolating with a warning ([`MeshStiffness::new`]).
+    pub fn lenient() -> Self {
+        Self {
+            root_angle: StiffnessSection::default().fillet_root_angle,
+            allow_extrapolation: true,
+            allow_theta_f_extrapolation: true,
+        }
+    }
+
+    /// theta_f of `gear` (whose tooth beam is `beam`) under this convention, rad.
+    pub fn root_half_angle_rad(&self, gear: &Gear, beam: &ToothBeam) -> f64 {
+        match self.root_angle {
+            FilletRootAngle::FilletJunction => gear.fillet_junction_half_angle_rad,
+            FilletRootAngle::FlankExtension => beam.root_half_angle_rad(),
+        }
+    }
+
+    /// Why `f` cannot be used under these settings, if it cannot.
+    pub(crate) fn refusal(&self, f: &FilletFoundation, name: &str) -> Option<String> {
+        let refuse_h = f.h_f_outside_fit && !self.allow_extrapolation;
+        let refuse_t = f.theta_f_outside_fit
+            && !(self.allow_extrapolation || self.allow_theta_f_extrapolation);
+        let mut what = Vec::new();
+        if refuse_h {
+            what.push(format!(
+                "h_f = r_f/r_int = {:.3} is outside [{}, {}] (set the hub bore, `gear.hub_bore_radius_{name}_mm`, or \"derived\" for h_f = 2)",
+                f.h_f, H_F_RANGE.0, H_F_RANGE.1
+            ));
+        }
+        if refuse_t {
+            what.push(format!(
+                "theta_f = {:.4} rad (taken {}, `stiffness.fillet_root_angle`) is outside [{}, {}]",
+                f.root_half_angle_rad,
+                match self.root_angle {
+                    FilletRootAngle::FilletJunction =>
+                        "where the root fillet meets the root circle",
+                    FilletRootAngle::FlankExtension =>
+                        "where the flank's extension meets the root circle",
+                },
+                THETA_F_RANGE_RAD.0,
+                THETA_F_RANGE_RAD.1
+            ));
+        }
+        (!what.is_empty()).then(|| {
+            format!(
+                "the {name}'s fillet foundation lies outside the range Sainsot et al. (2004) fitted: {}; set `stiffness.allow_fillet_extrapolation` = true to extrapolate the fit knowingly, or `stiffness.fillet_foundation` = false",
+                what.join("; ")
+            )
+        })
     }
 }
 
@@ -208,6 +301,52 @@ mod tests {
                 f.root_half_angle_rad
             );
             assert!(f.warning.is_none());
+        }
+    }
+
+    #[test]
+    fn fillet_junction_angle_of_the_paper_pair_by_hand() {
+        // ISO 6336-3's E for the rack (h_fP = 1.25 m, rho_fP = 0.38 m, alpha = 20 deg):
+        // E/m = pi/4 - 1.25 tan 20 - 0.38 (1 - sin 20)/cos 20
+        //     = 0.785398 - 0.454963 - 0.266079 = 0.064357;
+        // theta_f = (pi/2 - E/m) 2/z: pinion 1.506440 x 2/19 = 0.158573, gear 0.097190.
+        // Tolerance 2e-6: the hand values carry 6 digits.
+        let p = GearPair::from_case(&GearSection::default()).unwrap();
+        assert!((p.pinion.fillet_junction_half_angle_rad - 0.158573).abs() < 2e-6);
+        assert!((p.gear.fillet_junction_half_angle_rad - 0.097190).abs() < 2e-6);
+        // The footing at the fillet junction is wider than at the flank's extension, and
+        // both lie within the half pitch pi/z.
+        for g in [&p.pinion, &p.gear] {
+            let beam = ToothBeam::new(g, p.face_width_m, 205e9, 0.3);
+            let (junction, flank) = (g.fillet_junction_half_angle_rad, beam.root_half_angle_rad());
+            assert!(flank < junction && junction < std::f64::consts::PI / g.teeth as f64);
+        }
+    }
+
+    #[test]
+    fn a_wider_footing_stiffens_and_a_smaller_bore_softens_the_foundation() {
+        // Sainsot's fit over its whole range (alpha_m = 0.3): for a fixed load point the
+        // body's compliance falls as theta_f (the tooth's footing) grows; for a fixed
+        // proportion u_f/S_f of a tooth (0.25-1.5) it rises with h_f = r_f/r_int: the body is
+        // held at the bore in Sainsot's model, so a smaller bore moves the support away from
+        // the tooth. (At theta_f = 0.01 and u_f/S_f > 5, no tooth's proportion, the h_f
+        // trend reverses.)
+        let at = |h: f64, t: f64, u: f64| {
+            FilletFoundation::new("t", 0.0165, 0.0165 / h, t, 2.05e11, 0.02)
+                .compliance_m_per_n(u, 0.3)
+        };
+        for (h, t) in grid() {
+            for u in [0.5e-3, 2e-3, 4e-3] {
+                if t + 0.01 <= THETA_F_RANGE_RAD.1 {
+                    assert!(at(h, t + 0.01, u) < at(h, t, u), "theta {t} h {h} u {u}");
+                }
+            }
+            for x in [0.25, 0.5, 1.0, 1.5] {
+                let u = x * 2.0 * 0.0165 * t;
+                if h + 0.4 <= H_F_RANGE.1 {
+                    assert!(at(h + 0.4, t, u) > at(h, t, u), "h {h} theta {t} u/S {x}");
+                }
+            }
         }
     }
 

@@ -1,5 +1,5 @@
 //! Time-varying mesh stiffness of the spur pair (paper eq. 12-13 as corrected in
-//! docs/PAPER_NOTES.md): the single-pair stiffness along the path of contact, tabulated once and
+//! docs/MODEL.md): the single-pair stiffness along the path of contact, tabulated once and
 //! interpolated by a clamped cubic spline (O(1) per call), and the total stiffness of the
 //! pairs in contact, which act in parallel.
 //!
@@ -9,9 +9,16 @@
 //! compliances of both pairs in series, which is wrong).
 
 use super::fillet::FilletFoundation;
+pub use super::fillet::FilletSettings;
 use super::potential_energy::{hertz_stiffness_n_per_m, ElasticPair, ToothBeam, ToothCompliance};
 use crate::geometry::GearPair;
 use thiserror::Error;
+
+/// Largest ratio of the fillet foundation's compliance to the rest of the pair's (teeth and
+/// Hertz) accepted from an extrapolated fit. Inside Sainsot's range the paper's pair has
+/// ~0.6-0.8; the peer's pair extrapolated to h_f = 11.5 (0.35 times ISO 6336) about 4;
+/// beyond 10 the extrapolated polynomial, not the body, sets the stiffness.
+pub const MAX_EXTRAPOLATED_FOUNDATION_RATIO: f64 = 10.0;
 
 /// Inputs the stiffness model cannot use.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -68,12 +75,32 @@ pub struct MeshStiffness {
 impl MeshStiffness {
     /// Tabulate k_pair at `n_points` (>= 5) uniform positions on [rho_start, rho_end]
     /// (the path of contact, epsilon_alpha base pitches long; the case's
-    /// `stiffness.table_points_per_mesh_period` is the intended value).
+    /// `stiffness.table_points_per_mesh_period` is the intended value), with the fillet
+    /// foundation in the default convention, extrapolated with a warning outside
+    /// Sainsot's range ([`FilletSettings::lenient`]); a case's own settings go through
+    /// [`MeshStiffness::with_fillet`].
     pub fn new(
         pair: &GearPair,
         elastic: &ElasticPair,
         n_points: usize,
         include_fillet: bool,
+    ) -> Result<Self, StiffnessError> {
+        Self::with_fillet(
+            pair,
+            elastic,
+            n_points,
+            include_fillet.then(FilletSettings::lenient),
+        )
+    }
+
+    /// As [`MeshStiffness::new`] with the fillet foundation as `fillet` says (`None`: off).
+    /// A fit outside its range that the settings do not allow, or one that gives a
+    /// non-positive compliance, is an error.
+    pub fn with_fillet(
+        pair: &GearPair,
+        elastic: &ElasticPair,
+        n_points: usize,
+        fillet: Option<FilletSettings>,
     ) -> Result<Self, StiffnessError> {
         let mut errs = elastic.validate();
         if n_points < 5 {
@@ -89,21 +116,34 @@ impl MeshStiffness {
             ToothBeam::new(&pair.pinion, b, elastic.e_pinion_pa, elastic.nu_pinion),
             ToothBeam::new(&pair.gear, b, elastic.e_gear_pa, elastic.nu_gear),
         ];
-        let fillet = |name, g: &crate::geometry::Gear, t: &ToothBeam| {
-            FilletFoundation::new(
-                name,
-                g.root_radius_m,
-                g.bore_radius_m,
-                t.root_half_angle_rad(),
-                t.youngs_modulus_pa,
-                b,
-            )
-        };
-        let fillets = include_fillet.then(|| {
-            [
-                fillet("pinion", &pair.pinion, &teeth[0]),
-                fillet("gear", &pair.gear, &teeth[1]),
-            ]
+        let fillets = fillet.map(|set| {
+            [("pinion", &pair.pinion), ("gear", &pair.gear)]
+                .iter()
+                .zip(&teeth)
+                .map(|((name, g), t)| {
+                    let f = FilletFoundation::new(
+                        name,
+                        g.root_radius_m,
+                        g.bore_radius_m,
+                        set.root_half_angle_rad(g, t),
+                        t.youngs_modulus_pa,
+                        b,
+                    );
+                    (set.refusal(&f, name), f)
+                })
+                .collect::<Vec<_>>()
+        });
+        let refusals: Vec<String> = fillets
+            .iter()
+            .flatten()
+            .filter_map(|(r, _)| r.clone())
+            .collect();
+        if !refusals.is_empty() {
+            return Err(StiffnessError(refusals));
+        }
+        let fillets = fillets.map(|v| {
+            let mut it = v.into_iter().map(|(_, f)| f);
+            [it.next(), it.next()].map(|f| f.expect("two gears"))
         });
         let warnings = fillets
             .iter()
@@ -123,12 +163,43 @@ impl MeshStiffness {
             max_n_per_m: 0.0,
             warnings,
         };
+        // Largest ratio of the foundation's compliance to the rest of the pair's.
+        let mut foundation_ratio = 0.0_f64;
         me.values = (0..n_points)
             .map(|i| {
-                me.compliances_at(pair.rho_start_m + i as f64 * me.step_m)
-                    .stiffness_n_per_m()
+                let c = me.compliances_at(pair.rho_start_m + i as f64 * me.step_m);
+                let fillet = c.pinion_fillet_m_per_n + c.gear_fillet_m_per_n;
+                foundation_ratio = foundation_ratio.max(fillet / (c.total_m_per_n() - fillet));
+                c.stiffness_n_per_m()
             })
             .collect();
+        let extrapolated = me
+            .fillets
+            .iter()
+            .flatten()
+            .any(FilletFoundation::outside_fit);
+        let bad = me.values.iter().find(|k| !(k.is_finite() && **k > 0.0));
+        if bad.is_some()
+            || (extrapolated
+                && (foundation_ratio.is_nan()
+                    || foundation_ratio > MAX_EXTRAPOLATED_FOUNDATION_RATIO))
+        {
+            return Err(StiffnessError(vec![format!(
+                "Sainsot's fillet-foundation fit, extrapolated to this geometry (h_f = {}), gives no usable compliance ({}); keep the hub bores and the tooth form near the fit's range, or set `stiffness.fillet_foundation` = false",
+                me.fillets
+                    .iter()
+                    .flatten()
+                    .map(|f| format!("{:.3}", f.h_f))
+                    .collect::<Vec<_>>()
+                    .join(" / "),
+                match bad {
+                    Some(k) => format!("a pair stiffness of {k:e} N/m"),
+                    None => format!(
+                        "the body would be {foundation_ratio:.3e} times as compliant as tooth and contact together, above {MAX_EXTRAPOLATED_FOUNDATION_RATIO}"
+                    ),
+                }
+            )]));
+        }
         me.curvature = clamped_spline_curvature(&me.values, me.step_m);
         me.mean_n_per_m = me.path_integral() / pair.base_pitch_m;
         (me.min_n_per_m, me.max_n_per_m) = me.period_extrema(20 * n_points);
@@ -173,7 +244,7 @@ impl MeshStiffness {
     }
 
     /// Total mesh stiffness k_m at mesh phase `phase_rad` (pinion rotation since a pair
-    /// entered contact), N/m: the pairs in contact act in parallel (docs/PAPER_NOTES.md).
+    /// entered contact), N/m: the pairs in contact act in parallel (docs/MODEL.md).
     pub fn total_stiffness_n_per_m(&self, phase_rad: f64) -> f64 {
         self.pair
             .pairs_in_contact(phase_rad)
@@ -200,6 +271,11 @@ impl MeshStiffness {
     /// Warnings from the fillet-foundation fit (validity range).
     pub fn warnings(&self) -> &[String] {
         &self.warnings
+    }
+
+    /// The fillet foundations of pinion and gear, when included.
+    pub fn fillets(&self) -> Option<&[FilletFoundation; 2]> {
+        self.fillets.as_ref()
     }
 
     /// The pair geometry the table was built for.
@@ -421,7 +497,8 @@ mod tests {
     fn pitch_point_stiffness_against_iso_6336_single_stiffness() {
         // ISO 6336-1 Method B: c' ~ 14 N/(mm um) for solid steel spur gears, times
         // b = 20 mm gives 2.8e8 N/m. The potential energy method with the gear body
-        // (fillet foundation) typically lands within 20-40 % of it; we get 2.37e8.
+        // (fillet foundation) typically lands within 20-40 % of it; we get 2.37e8 with
+        // theta_f at the flank's extension, 2.82e8 at the fillet's junction.
         let m = paper(true);
         let k = m.pair_stiffness_n_per_m(m.pair().rho_pitch_m);
         assert!((k / 2.8e8 - 1.0).abs() < 0.4, "{k:e}");
@@ -429,7 +506,10 @@ mod tests {
         for ((r, a), (_, b)) in m.table().zip(paper(false).table()) {
             assert!(a < b, "{r}");
         }
-        assert!(m.warnings().is_empty());
+        // Only the pinion's theta_f (0.159 rad at the fillet junction) lies outside
+        // Sainsot's fit, [0.01, 0.12].
+        assert_eq!(m.warnings().len(), 1);
+        assert!(m.warnings()[0].contains("pinion") && m.warnings()[0].contains("theta_f"));
     }
 
     #[test]

@@ -1,6 +1,8 @@
 //! Studies: the assembled model of a case, the coupled dynamics-wear loop and its
 //! quasi-static twin, the wear states of the paper's section 4.1.
 
+pub mod budget;
+pub mod domain;
 pub mod model;
 pub mod modes;
 pub mod paper;

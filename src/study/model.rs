@@ -1,6 +1,7 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
-use crate::config::case::{Case, LoadSharingModel};
+use super::domain::{body_value_warnings, domain_problems, ResolvedParameters};
+use crate::config::case::{Case, GearSection, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
@@ -11,7 +12,7 @@ use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::steady::{solve_steady_state_from, DynamicsError, SteadyStateSettings};
 use crate::geometry::{GearPair, ProfileGrid};
-use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
 use crate::wear::{RoughnessLaw, WearState};
 
@@ -44,6 +45,9 @@ pub struct Model {
 }
 
 impl Model {
+    /// Build the model of a validated case: the geometry (with `"derived"` bores), the
+    /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
+    /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         let pair = GearPair::from_case(&case.gear).map_err(|e| ModelError(e.0))?;
         let mut warnings = pair.warnings.clone();
@@ -53,12 +57,20 @@ impl Model {
                 pair.contact_ratio
             )]));
         }
+        let problems = domain_problems(case, &pair);
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
         let elastic = ElasticPair::from_case(&case.materials);
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-        let mesh = MeshStiffness::new(&pair, &elastic, n_table, case.stiffness.fillet_foundation)
+        let mesh = MeshStiffness::with_fillet(&pair, &elastic, n_table, fillet_settings(case))
             .map_err(|e| ModelError(e.0))?;
         warnings.extend(mesh.warnings().iter().cloned());
         let params = DynamicParams::from_case(case, &pair);
+        warnings.extend(body_value_warnings(
+            case,
+            &pair.blank_estimates(case.dynamics.blank_density_kg_per_m3),
+        ));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
         Ok(Self {
@@ -74,6 +86,18 @@ impl Model {
             pair,
             warnings,
         })
+    }
+
+    /// The values the case may leave to the geometry (hub bores, masses and inertias of
+    /// pinion and gear) as the model uses them, with the geometry's estimates and
+    /// Sainsot's h_f and theta_f: for summaries and reports.
+    pub fn resolved_parameters(&self) -> ResolvedParameters {
+        ResolvedParameters::new(
+            &self.case,
+            &self.pair,
+            &self.params.lumped,
+            self.mesh.fillets(),
+        )
     }
 
     /// The dynamic system for a wear state (gap), external error and roughness (um).
@@ -143,4 +167,17 @@ impl Model {
         let sys = self.system(&gap, external, self.roughness_for(wear));
         solve_quasi_static(&sys, self.settings.steps_per_mesh_period)
     }
+}
+
+/// The case's fillet-foundation settings. The built-in pair is exempt from the theta_f
+/// limit of Sainsot's fit: under the fillet-junction convention its 19-tooth pinion has
+/// theta_f = 0.159 rad, above the fit's 0.12 (docs/MODEL.md, section 2), and the built-in
+/// case must run as the paper's case; every case with the built-in tooth form (teeth,
+/// reference profile, shifts; theta_f depends on nothing else) shares the exemption and
+/// the warning. h_f stays checked.
+fn fillet_settings(case: &Case) -> Option<FilletSettings> {
+    FilletSettings::from_case(&case.stiffness).map(|mut s| {
+        s.allow_theta_f_extrapolation = case.gear.same_tooth_form(&GearSection::default());
+        s
+    })
 }

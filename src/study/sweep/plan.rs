@@ -36,7 +36,13 @@ pub fn parse_vary(text: &str) -> Result<Axis, String> {
     if spec.is_empty() {
         return Err(format!("--vary {key}: no values given ({form})"));
     }
-    let values = if spec.contains(':') && !spec.contains(',') {
+    let array_key = matches!(
+        crate::config::schema::spec(key).map(|s| s.valid),
+        Some(crate::config::schema::Valid::NumArray(_))
+    );
+    let values = if array_key {
+        array_values(key, spec)?
+    } else if spec.contains(':') && !spec.contains(',') {
         let parts: Vec<&str> = spec.split(':').map(str::trim).collect();
         let [a, b, c] = parts[..] else {
             return Err(format!(
@@ -60,17 +66,72 @@ pub fn parse_vary(text: &str) -> Result<Axis, String> {
         if items.iter().any(String::is_empty) {
             return Err(format!("--vary {key}={spec}: empty value in the list"));
         }
-        for (i, v) in items.iter().enumerate() {
-            if items[..i].contains(v) {
-                return Err(format!("--vary {key}={spec}: value `{v}` is listed twice"));
-            }
-        }
         items
     };
+    no_repeats(key, &values)?;
     Ok(Axis {
         key: key.to_owned(),
         values,
     })
+}
+
+/// The values of an array key: `[a, b, c],[d, e, f],...` (each value in brackets; the
+/// commas inside brackets belong to the value).
+fn array_values(key: &str, spec: &str) -> Result<Vec<String>, String> {
+    let bad = || {
+        format!(
+            "--vary {key}={spec}: the key takes an array; give each value in brackets, e.g. --vary {key}=[0.21,0.19,0.15],[0.3,0.25,0.2]"
+        )
+    };
+    let mut values = Vec::new();
+    let mut rest = spec.trim();
+    while !rest.is_empty() {
+        if !rest.starts_with('[') {
+            return Err(bad());
+        }
+        let end = rest.find(']').ok_or_else(bad)?;
+        values.push(rest[..=end].to_owned());
+        rest = rest[end + 1..].trim_start();
+        if let Some(r) = rest.strip_prefix(',') {
+            rest = r.trim_start();
+            if rest.is_empty() {
+                return Err(format!("--vary {key}={spec}: empty value in the list"));
+            }
+        } else if !rest.is_empty() {
+            return Err(bad());
+        }
+    }
+    Ok(values)
+}
+
+/// A value as the case reads it: numbers compared as numbers (`30` = `30.0` = `3e1`),
+/// arrays element by element, anything else as its text.
+fn canonical(v: &str) -> String {
+    let num = |x: &toml::Value| x.as_float().or_else(|| x.as_integer().map(|i| i as f64));
+    match toml::from_str::<toml::Table>(&format!("v = {v}"))
+        .ok()
+        .and_then(|t| t.get("v").cloned())
+    {
+        Some(x) if num(&x).is_some() => format!("{:?}", num(&x)),
+        Some(toml::Value::Array(a)) if a.iter().all(|x| num(x).is_some()) => {
+            format!("{:?}", a.iter().filter_map(num).collect::<Vec<_>>())
+        }
+        _ => v.trim().to_owned(),
+    }
+}
+
+/// Error when two values of an axis are the same value (which would run one case twice).
+fn no_repeats(key: &str, values: &[String]) -> Result<(), String> {
+    let canon: Vec<String> = values.iter().map(|v| canonical(v)).collect();
+    for (i, c) in canon.iter().enumerate() {
+        if let Some(j) = canon[..i].iter().position(|d| d == c) {
+            return Err(format!(
+                "--vary {key}: value `{}` is the same as `{}`: each value may be listed once (the case would run twice)",
+                values[i], values[j]
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// `start, start + step, ...` up to `stop`. `stop` is included (exactly) when
@@ -260,6 +321,32 @@ mod tests {
         }
         assert!(parse_vary("speed").is_err());
         assert!(parse_vary("speed=1,2").unwrap_err().contains("section.key"));
+    }
+
+    #[test]
+    fn equal_values_are_listed_once() {
+        for bad in ["a.x=30,30.0", "a.x=30,3e1", "friction.model=none,none"] {
+            let e = parse_vary(bad).unwrap_err();
+            assert!(e.contains("same as"), "{bad}: {e}");
+        }
+        assert_eq!(parse_vary("a.x=30,30.5").unwrap().values.len(), 2);
+    }
+
+    #[test]
+    fn array_keys_take_bracketed_values() {
+        let key = "surface.roughness_table_rms_um";
+        let a = parse_vary(&format!("{key}=[0.21,0.19,0.15], [0.3, 0.2, 0.1]")).unwrap();
+        assert_eq!(a.values, vec!["[0.21,0.19,0.15]", "[0.3, 0.2, 0.1]"]);
+        for bad in ["1,2", "0.1:0.3:0.1", "[1,2],3", "[1,2", "[1],"] {
+            let e = parse_vary(&format!("{key}={bad}")).unwrap_err();
+            assert!(e.contains(key), "{bad}: {e}");
+        }
+        let e = parse_vary(&format!("{key}=1,2")).unwrap_err();
+        assert!(
+            e.contains("takes an array") && !e.contains("integer"),
+            "{e}"
+        );
+        assert!(parse_vary(&format!("{key}=[1,2],[1.0,2.0]")).is_err());
     }
 
     #[test]

@@ -1,0 +1,162 @@
+//! The schema as text: the commented case (`gearwear config`, `--new-pair`) and the key
+//! reference `docs/CONFIG.md` (`gearwear config --markdown`).
+
+use super::case::Case;
+use super::schema::KEYS;
+use toml::{Table, Value};
+
+fn tree_of(case: &Case) -> Table {
+    match Value::try_from(case) {
+        Ok(Value::Table(t)) => t,
+        _ => Table::new(),
+    }
+}
+
+/// `case` as commented TOML under `header`: every key with its unit, meaning and range.
+fn commented(case: &Case, header: &str) -> String {
+    let tree = tree_of(case);
+    let mut out = String::from(header);
+    let mut current = "";
+    for s in KEYS {
+        let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
+        if section != current {
+            out.push_str(&format!("\n[{section}]\n"));
+            current = section;
+        }
+        out.push_str(&format!(
+            "# {} [{}] Valid: {}.\n",
+            s.doc,
+            s.unit,
+            s.valid.describe()
+        ));
+        match tree.get(section).and_then(|t| t.get(key)) {
+            Some(v) => out.push_str(&format!("{key} = {v}\n")),
+            None => out.push_str(&format!("# {key} = (unset)\n")),
+        }
+    }
+    out
+}
+
+/// The case as commented TOML (`gearwear config`).
+pub fn commented_template(case: &Case) -> String {
+    commented(
+        case,
+        "# gearwear case file. Defaults: the paper's case (Coatings 2022, 12, 1250).\n\
+         # Every key is optional; an omitted key takes the value shown.\n",
+    )
+}
+
+/// A case for a pair of one's own (`gearwear config --new-pair`): the built-in case with
+/// the hub bores, masses and inertias of pinion and gear set to "derived".
+pub fn new_pair_template() -> String {
+    commented(
+        &Case::new_pair_template(),
+        "# gearwear case file for a new gear pair: edit [gear] (and the operating point).\n\
+         # Values set to \"derived\" follow the geometry: hub bores r_int = r_f / 2\n\
+         # (h_f = 2, mid-range of Sainsot's fillet-foundation fit); masses and polar\n\
+         # inertias of solid blanks of the face width between the bore and the pitch\n\
+         # circle, with dynamics.blank_density_kg_per_m3 (docs/MODEL.md, section 7).\n\
+         # Give a number instead to use your own value. The other values are the paper's\n\
+         # (Coatings 2022, 12, 1250); motor and brake inertias cannot follow the geometry:\n\
+         # set them for your drive. Every key is optional; an omitted key takes the\n\
+         # built-in (paper's) value, not the one shown here.\n",
+    )
+}
+
+/// How a case may be written, for the reference page.
+const FORM: &str = "\
+## Form of a case
+
+- A case is a TOML file (`--config`) and/or `--set section.key=value` overrides on top of
+  the built-in case (the paper's). Every key is optional.
+- A section may be written as a `[section]` table, an inline table
+  (`gear = { module_mm = 3 }`) or dotted keys (`gear.module_mm = 3`): TOML defines the
+  three as the same table, so they give the same case. Anything else in a section's place
+  (a number, an array of tables `[[gear]]`) is an error, as are unknown sections and keys.
+- Number keys accept integers (`30`) and decimals (`30.0`); whole-number keys accept
+  `25` and `25.0`, not `25.5`. Infinite, NaN and subnormal numbers (below 2.2e-308 in
+  magnitude) are rejected everywhere, arrays included.
+- A `--set` value is one line of TOML (a bare word is read as a string). A line break or
+  another control character in it is an error: multi-line values belong in a `--config`
+  file. Values echoed in error messages are cut to 80 characters.
+- `\"derived\"` is accepted by the hub bores and the pinion's and gear's masses and
+  inertias: the model computes them from the geometry (`gearwear config --new-pair` prints
+  a case that uses it; docs/MODEL.md, section 7).
+- Beyond these ranges, a case is checked against its geometry (a bore inside the root
+  circle, teeth that touch, a Hertz pressure below 10 GPa, a friction coefficient below 1,
+  Sainsot's fitted range) and its cost against the run budget (`--budget-scale`, `--no-budget`;
+  docs/RELIABILITY.md) before anything is computed. Every problem exits with code 2 and a
+  message naming the key.
+
+## Keys
+
+";
+
+/// `docs/CONFIG.md` body: how a case is written, and a table of every key.
+pub fn markdown_reference(case: &Case) -> String {
+    let tree = tree_of(case);
+    let mut out = String::from(
+        "# Case file reference\n\n\
+         Generated from `src/config/schema.rs` by `gearwear config --markdown`; \
+         a test keeps this file equal to that output.\n\n",
+    );
+    out.push_str(FORM);
+    out.push_str(
+        "| key | unit | default | valid | meaning | why this range |\n|---|---|---|---|---|---|\n",
+    );
+    for s in KEYS {
+        let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
+        let default = tree
+            .get(section)
+            .and_then(|t| t.get(key))
+            .map(|v| v.to_string())
+            .unwrap_or_else(|| "(derived)".into());
+        out.push_str(&format!(
+            "| `{}` | {} | `{}` | {} | {} | {} |\n",
+            s.key,
+            s.unit,
+            default,
+            s.valid.describe(),
+            s.doc.replace('|', "\\|"),
+            s.reason.replace('|', "\\|")
+        ));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::load_case;
+
+    #[test]
+    fn templates_parse_back_to_their_cases() {
+        let t = commented_template(&Case::default());
+        assert_eq!(load_case(&t, &[]).unwrap(), Case::default());
+        assert_eq!(
+            load_case(&new_pair_template(), &[]).unwrap(),
+            Case::new_pair_template()
+        );
+        // Every spec key is a real field (the template prints a value or the optional marker).
+        for s in KEYS {
+            let key = s.key.split_once('.').unwrap().1;
+            assert!(t.contains(&format!("{key} =")), "{key} missing in template");
+        }
+    }
+
+    #[test]
+    fn new_pair_template_says_derived_where_the_geometry_gives_the_value() {
+        let t = new_pair_template();
+        for key in [
+            "hub_bore_radius_pinion_mm",
+            "hub_bore_radius_gear_mm",
+            "mass_pinion_kg",
+            "mass_gear_kg",
+            "inertia_pinion_kg_m2",
+            "inertia_gear_kg_m2",
+        ] {
+            assert!(t.contains(&format!("{key} = \"derived\"")), "{key}");
+        }
+        assert!(t.contains("inertia_motor_kg_m2 = 0.0021"));
+    }
+}

@@ -1,0 +1,221 @@
+//! Calibration: the posterior of the uncertain parameters given observations, by the
+//! exact grid (one or two free parameters) or the ensemble sampler (three), on the
+//! surrogate forward model.
+
+use super::band::{cycles_grid, Band};
+use super::grid::GridPosterior;
+use super::likelihood::log_likelihood;
+use super::mcmc::{ensemble_sample, McmcSettings};
+use super::observations::Observations;
+use super::prior::{Parameter, Prior, Theta};
+use super::stats::{autocorrelation_time, quantile, split_rhat};
+use super::surrogate::Surrogate;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+#[derive(Debug, Clone, Copy)]
+pub struct CalibrationSettings {
+    /// Posterior samples to return.
+    pub samples: usize,
+    pub seed: u64,
+    /// Grid cells per parameter.
+    pub grid_cells: usize,
+    pub walkers: usize,
+    pub steps: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// Exact posterior on a (refined) grid.
+    Grid,
+    /// Affine-invariant ensemble MCMC (Goodman & Weare 2010).
+    EnsembleMcmc,
+}
+
+/// Posterior summary of one parameter.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ParamSummary {
+    pub parameter: Parameter,
+    pub median: f64,
+    /// 90 % equal-tailed credible interval.
+    pub ci05: f64,
+    pub ci95: f64,
+    /// Effective sample size of the returned samples.
+    pub ess: f64,
+    /// Split R-hat over walkers (MCMC only).
+    pub rhat: Option<f64>,
+}
+
+/// Marginal posterior density of one parameter against its plotting coordinate
+/// (log10 k for k, the value otherwise).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Density {
+    pub parameter: Parameter,
+    pub x: Vec<f64>,
+    pub density: Vec<f64>,
+    /// The prior's density in the same coordinate (uniform).
+    pub prior_density: f64,
+}
+
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Calibration {
+    pub prior: Prior,
+    pub method: Method,
+    pub samples: Vec<Theta>,
+    pub summary: Vec<ParamSummary>,
+    pub densities: Vec<Density>,
+    /// Parameters at which the forward model failed (grid points or proposals).
+    pub failed: Vec<Theta>,
+    /// Grid: prior mass of the failed cells; posterior mass neglected outside the box.
+    pub prior_mass_failed: Option<f64>,
+    pub mass_outside: Option<f64>,
+    pub grid_levels: Option<usize>,
+    pub acceptance: Option<f64>,
+}
+
+/// Width of one unit coordinate in the plotting coordinate.
+fn unit_span(prior: &Prior, i: usize) -> f64 {
+    let p = &prior.params[i];
+    if p.log {
+        (p.hi / p.lo).log10()
+    } else {
+        p.hi - p.lo
+    }
+}
+
+/// Plotting coordinate of a unit coordinate.
+fn plot_x(prior: &Prior, i: usize, u: f64) -> f64 {
+    let p = &prior.params[i];
+    if p.log {
+        p.from_unit(u).log10()
+    } else {
+        p.from_unit(u)
+    }
+}
+
+/// The posterior given the observations. `done` is called as work progresses.
+pub fn calibrate(
+    prior: &Prior,
+    obs: &Observations,
+    sur: &Surrogate,
+    set: &CalibrationSettings,
+    done: &(dyn Fn() + Sync),
+) -> Result<Calibration, String> {
+    let free = prior.free();
+    if free.is_empty() {
+        return Err(
+            "nothing to calibrate: every parameter of [calibration] is fixed (equal bounds)".into(),
+        );
+    }
+    let loglik = |t: &Theta| log_likelihood(obs, &|q, c| sur.value(q, t, c));
+    let mut out = Calibration {
+        prior: prior.clone(),
+        method: Method::Grid,
+        samples: Vec::new(),
+        summary: Vec::new(),
+        densities: Vec::new(),
+        failed: Vec::new(),
+        prior_mass_failed: None,
+        mass_outside: None,
+        grid_levels: None,
+        acceptance: None,
+    };
+    if free.len() <= 2 {
+        let g = GridPosterior::compute(prior, &loglik, set.grid_cells, done)?;
+        let draws = g.draw(set.samples, set.seed);
+        out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
+        for (a, &i) in free.iter().enumerate() {
+            let q = |p| prior.params[i].from_unit(g.quantile_unit(a, p));
+            out.summary.push(ParamSummary {
+                parameter: prior.params[i].parameter,
+                median: q(0.5),
+                ci05: q(0.05),
+                ci95: q(0.95),
+                ess: set.samples as f64,
+                rhat: None,
+            });
+            let (u, dens) = g.density_unit(a);
+            let span = unit_span(prior, i);
+            out.densities.push(Density {
+                parameter: prior.params[i].parameter,
+                x: u.iter().map(|v| plot_x(prior, i, *v)).collect(),
+                density: dens.iter().map(|d| d / span).collect(),
+                prior_density: 1.0 / span,
+            });
+        }
+        out.prior_mass_failed = Some(g.prior_mass_failed);
+        out.mass_outside = Some(g.mass_outside);
+        out.grid_levels = Some(g.levels);
+        out.failed = g.failed;
+        return Ok(out);
+    }
+    let s = McmcSettings {
+        walkers: set.walkers,
+        steps: set.steps,
+        burn_in: set.steps / 2,
+        seed: set.seed,
+    };
+    let run = ensemble_sample(prior, &loglik, &s, done)?;
+    out.method = Method::EnsembleMcmc;
+    out.acceptance = Some(run.acceptance);
+    let flat = run.flat();
+    // Evenly thinned to the requested count (deterministic).
+    let n = set.samples.min(flat.len()).max(1);
+    out.samples = (0..n)
+        .map(|i| prior.theta_at(&flat[i * flat.len() / n]))
+        .collect();
+    for (a, &i) in free.iter().enumerate() {
+        let c = run.coordinate(a);
+        let all: Vec<f64> = flat.iter().map(|u| u[a]).collect();
+        let tau = autocorrelation_time(&c);
+        let q = |p| prior.params[i].from_unit(quantile(&all, p));
+        out.summary.push(ParamSummary {
+            parameter: prior.params[i].parameter,
+            median: q(0.5),
+            ci05: q(0.05),
+            ci95: q(0.95),
+            ess: (all.len() as f64 / tau).min(all.len() as f64),
+            rhat: Some(split_rhat(&c)),
+        });
+        // Histogram of 40 bins over the sampled range.
+        let (lo, hi) = (quantile(&all, 0.0), quantile(&all, 1.0));
+        let bins = 40;
+        let w = ((hi - lo) / bins as f64).max(1e-12);
+        let mut h = vec![0.0; bins];
+        for u in &all {
+            h[(((u - lo) / w) as usize).min(bins - 1)] += 1.0;
+        }
+        let span = unit_span(prior, i);
+        out.densities.push(Density {
+            parameter: prior.params[i].parameter,
+            x: (0..bins)
+                .map(|b| plot_x(prior, i, lo + w * (b as f64 + 0.5)))
+                .collect(),
+            density: h
+                .iter()
+                .map(|c| c / (all.len() as f64 * w * span))
+                .collect(),
+            prior_density: 1.0 / span,
+        });
+    }
+    out.failed = run.failed;
+    Ok(out)
+}
+
+/// The model's band over the posterior samples for quantity `q` on `points` cycle counts
+/// from 0 to `max_cycles` (noise-free model values; the observations carry noise).
+pub fn model_band(
+    sur: &Surrogate,
+    samples: &[Theta],
+    q: super::quantity::Quantity,
+    max_cycles: f64,
+    points: usize,
+) -> (Band, Vec<Vec<Option<f64>>>) {
+    let grid = cycles_grid(max_cycles, points);
+    let values: Vec<Vec<Option<f64>>> = samples
+        .par_iter()
+        .map(|t| grid.iter().map(|c| sur.value(q, t, *c)).collect())
+        .collect();
+    (Band::of(&grid, &values, q.is_wear()), values)
+}

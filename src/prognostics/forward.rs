@@ -1,0 +1,227 @@
+//! One forward run: a dynamic wear study of a case, kept as its update records, and the
+//! observable quantities it gives at any cycle count.
+//!
+//! Between updates (paper eq. 17) the wear grows linearly in cycles at the per-cycle
+//! increment of the last update, so the maximum wear depth at n cycles after update j is
+//! exactly max_i (h_ij + n inc_ij) (the maximum of straight lines, convex in n). The
+//! response (vibration, DTE) is computed only at the updates; between two updates it is
+//! interpolated linearly in cycles (the wear state moves linearly between them, and the
+//! response of an intermediate state lies between theirs). A step (the response of the
+//! last update held until the next) would make every observable jump where an update
+//! falls, and the likelihood jagged in k; the linear reading keeps it continuous, so a
+//! shift of the update points (another k, another block rounding) changes it little.
+//!
+//! A run that fails (today the integrator can fail at large wear) keeps the records it
+//! reached and says why: it is valid up to its last record and unknown after it.
+
+use super::quantity::Quantity;
+use crate::config::Case;
+use crate::study::model::{Model, ModelError};
+use crate::study::wear_loop::{run_wear, UpdateRecord, WearMode, WearRun};
+use serde::{Deserialize, Serialize};
+
+/// A dynamic wear study's records.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Trajectory {
+    /// Wear coefficient of the run, m^2/N.
+    pub coefficient_m2_per_n: f64,
+    /// Cycle count the run was asked to reach.
+    pub requested_cycles: f64,
+    pub records: Vec<UpdateRecord>,
+    /// Why the run stopped before `requested_cycles` (None: it reached them).
+    pub failure: Option<String>,
+}
+
+/// Where a wear trajectory reaches a limit.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Crossing {
+    /// At this many cycles (continuous: the exact crossing within a block).
+    Reached(f64),
+    /// Not within the cycles the run covered.
+    NotReached,
+    /// The run failed before reaching the limit: unknown.
+    Unknown,
+}
+
+/// Largest value of h_i + n inc_i, m.
+fn max_after(h: &[f64], inc: &[f64], n: f64) -> f64 {
+    h.iter()
+        .zip(inc)
+        .fold(0.0_f64, |m, (a, d)| m.max(a + n * d))
+}
+
+impl Trajectory {
+    /// Cycles up to which the run is known.
+    pub fn valid_until(&self) -> f64 {
+        match (&self.failure, self.records.last()) {
+            (None, Some(_)) => self.requested_cycles,
+            (Some(_), Some(r)) => r.wear.cycles,
+            (_, None) => -1.0,
+        }
+    }
+
+    /// Index of the last update at or before `cycles`; None beyond the valid range.
+    fn update_at(&self, cycles: f64) -> Option<usize> {
+        let tol = 1e-9 * self.valid_until().abs().max(1.0);
+        if self.records.is_empty() || cycles > self.valid_until() + tol || cycles < 0.0 {
+            return None;
+        }
+        let j = self.records.partition_point(|r| r.wear.cycles <= cycles);
+        Some(j.max(1) - 1)
+    }
+
+    /// Value of `q` at `cycles` (display units), None beyond the valid range.
+    pub fn value(&self, q: Quantity, cycles: f64) -> Option<f64> {
+        let j = self.update_at(cycles)?;
+        let r = &self.records[j];
+        let n = (cycles - r.wear.cycles).max(0.0);
+        Some(match q {
+            Quantity::MaxWearPinion => max_after(&r.wear.pinion_m, &r.increment_pinion_m, n) * 1e6,
+            Quantity::MaxWearGear => max_after(&r.wear.gear_m, &r.increment_gear_m, n) * 1e6,
+            _ => match self.records.get(j + 1) {
+                Some(next) if next.wear.cycles > r.wear.cycles => {
+                    let t = (n / (next.wear.cycles - r.wear.cycles)).min(1.0);
+                    let (a, b) = (q.of_summary(&r.summary), q.of_summary(&next.summary));
+                    a + t * (b - a)
+                }
+                _ => q.of_summary(&r.summary),
+            },
+        })
+    }
+
+    /// Cycles at which the maximum pinion wear first reaches `limit_um`.
+    pub fn cycles_to_wear(&self, limit_um: f64) -> Crossing {
+        let limit_m = limit_um * 1e-6;
+        let end = self.valid_until();
+        for (j, r) in self.records.iter().enumerate() {
+            let h = &r.wear.pinion_m;
+            if h.iter().any(|x| *x >= limit_m) {
+                return Crossing::Reached(r.wear.cycles);
+            }
+            let block_end = self.records.get(j + 1).map_or(end, |x| x.wear.cycles);
+            // First point to reach the limit: min over rising points of (L - h_i) / inc_i.
+            let t = h
+                .iter()
+                .zip(&r.increment_pinion_m)
+                .filter(|(_, d)| **d > 0.0)
+                .map(|(a, d)| (limit_m - a) / d)
+                .fold(f64::INFINITY, f64::min);
+            if r.wear.cycles + t <= block_end {
+                return Crossing::Reached(r.wear.cycles + t);
+            }
+        }
+        if self.failure.is_some() {
+            Crossing::Unknown
+        } else {
+            Crossing::NotReached
+        }
+    }
+}
+
+/// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
+/// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
+/// Why a wear run ended before its total cycles, if it did: an error, or an early stop
+/// (the solver gave up, or the teeth left the model's domain; [`WearRun::stopped`]).
+pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
+    match result {
+        Err(e) => Some(format!("{e:#}")),
+        Ok(run) => run.stopped.map(|s| s.reason),
+    }
+}
+
+pub fn run_trajectory(
+    case: &Case,
+    block_cycles: Option<f64>,
+    total_cycles: f64,
+) -> Result<Trajectory, ModelError> {
+    let mut c = case.clone();
+    c.wear.total_cycles = total_cycles;
+    if let Some(b) = block_cycles {
+        c.wear.block_cycles = b;
+    }
+    let model = Model::from_case(&c)?;
+    let mut records: Vec<UpdateRecord> = Vec::new();
+    let result = run_wear(&model, WearRun::new(WearMode::Dynamic), &mut |run| {
+        if let Some(r) = run.records.last() {
+            records.push(r.clone());
+        }
+        Ok(())
+    });
+    Ok(Trajectory {
+        coefficient_m2_per_n: c.wear.coefficient_m2_per_n,
+        requested_cycles: total_cycles,
+        records,
+        failure: run_failure(result),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wear::WearState;
+
+    /// Two updates of a two-point profile: point 0 wears 1 nm/cycle, point 1 2 nm/cycle
+    /// for 100 cycles, then both 1 nm/cycle.
+    fn toy() -> Trajectory {
+        let rec = |cycles: f64, h: [f64; 2], inc: [f64; 2], v: f64| UpdateRecord {
+            wear: WearState {
+                cycles,
+                pinion_m: h.to_vec(),
+                gear_m: vec![0.0; 2],
+            },
+            roughness_um: 0.2,
+            summary: crate::dynamics::summary::ResponseSummary {
+                velocity_y_pinion_rms_m_per_s: v,
+                ..Default::default()
+            },
+            increment_pinion_m: inc.to_vec(),
+            increment_gear_m: vec![0.0; 2],
+            path_rho1_m: vec![],
+            path_load_n: vec![],
+            end_state: None,
+        };
+        Trajectory {
+            coefficient_m2_per_n: 1e-16,
+            requested_cycles: 300.0,
+            records: vec![
+                rec(0.0, [0.0, 0.0], [1e-9, 2e-9], 1e-3),
+                rec(100.0, [1e-7, 2e-7], [1e-9, 1e-9], 2e-3),
+            ],
+            failure: None,
+        }
+    }
+
+    #[test]
+    fn values_between_updates() {
+        let t = toy();
+        // 50 cycles at 2 nm/cycle: 0.1 um; 200 cycles: 0.2 um + 100 x 1 nm = 0.3 um.
+        let w = |c| t.value(Quantity::MaxWearPinion, c).unwrap();
+        assert!((w(50.0) - 0.1).abs() < 1e-12 && (w(200.0) - 0.3).abs() < 1e-12);
+        // Response: linear between updates (1 mm/s at 0, 2 mm/s at 100 cycles), then that
+        // of the last update.
+        let v = |c| t.value(Quantity::VelocityRms, c).unwrap();
+        assert!((v(25.0) - 1.25).abs() < 1e-12);
+        assert_eq!((v(100.0), v(300.0)), (2.0, 2.0));
+        assert_eq!(t.value(Quantity::VelocityRms, 301.0), None);
+    }
+
+    #[test]
+    fn crossing_is_exact_within_a_block() {
+        let t = toy();
+        // 0.15 um at 2 nm/cycle: 75 cycles; 0.25 um: 100 + 0.05 um / 1 nm = 150 cycles.
+        // 1e-9 cycles: far above the rounding of (L - h) / inc, far below one cycle.
+        let at = |l| match t.cycles_to_wear(l) {
+            Crossing::Reached(c) => c,
+            c => panic!("{c:?}"),
+        };
+        assert!((at(0.15) - 75.0).abs() < 1e-9);
+        assert!((at(0.25) - 150.0).abs() < 1e-9);
+        // 0.2 + 200 x 1 nm = 0.4 um at the end: 0.5 um is not reached.
+        assert_eq!(t.cycles_to_wear(0.5), Crossing::NotReached);
+        let mut f = toy();
+        f.failure = Some("integrator failed".into());
+        assert_eq!(f.cycles_to_wear(0.5), Crossing::Unknown);
+        assert_eq!(f.value(Quantity::VelocityRms, 150.0), None);
+    }
+}

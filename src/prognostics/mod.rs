@@ -1,0 +1,34 @@
+//! Prognostics (issue 12): calibrate the wear model to a gearbox's observations and
+//! predict its wear and remaining useful life with uncertainty.
+//!
+//! Pieces, data flowing down: [`observations`] (the CSV of measurements) and [`prior`]
+//! (the `[calibration]` table) -> [`forward`] (one true wear study, read at any cycle
+//! count) -> [`surrogate`] (reference runs that stand for every wear coefficient, by the
+//! k x N invariance of Archard wear) -> [`likelihood`] (the noise model) -> [`grid`]
+//! (exact posterior of one or two parameters) or [`mcmc`] (ensemble sampler) ->
+//! [`calibrate`] -> [`predict`] (Monte Carlo ensemble, fans, remaining life). Randomness
+//! comes from [`rng`]: one stream per sample index, so runs are reproducible and
+//! independent of the thread count and of sharding. docs/PROGNOSTICS.md states the
+//! method and its measured accuracy.
+
+pub mod band;
+pub mod calibrate;
+pub mod check;
+pub mod forward;
+pub mod grid;
+pub mod likelihood;
+pub mod mcmc;
+pub mod observations;
+pub mod predict;
+pub mod prior;
+pub mod quantity;
+pub mod rng;
+pub mod samples;
+pub mod stats;
+pub mod surrogate;
+
+pub use forward::{Crossing, Trajectory};
+pub use observations::{parse_observations, Observations};
+pub use prior::{Parameter, Prior, Theta};
+pub use quantity::Quantity;
+pub use surrogate::Surrogate;

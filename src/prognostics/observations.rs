@@ -1,0 +1,255 @@
+//! Observations of a running gearbox: `obs.csv` with a `cycles` column, one column per
+//! observed quantity (named as in the updates CSV) and optional `sigma_<name>` columns
+//! with the standard deviation of each measurement's noise (same unit).
+//!
+//! An empty cell means "not measured at this row" (a wear measurement is rarer than a
+//! vibration reading). Every problem is reported with its row (1-based data row, and the
+//! file line) and column.
+
+use super::quantity::Quantity;
+
+/// The measurements of one quantity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub quantity: Quantity,
+    /// Pinion cycles of each measurement.
+    pub cycles: Vec<f64>,
+    /// Measured values, display units (the quantity's name says which).
+    pub values: Vec<f64>,
+    /// Noise standard deviation of each measurement; `None`: unknown, inferred.
+    pub sigma: Option<Vec<f64>>,
+}
+
+/// All observations of one file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Observations {
+    pub series: Vec<Series>,
+}
+
+impl Observations {
+    /// Largest observed cycle count.
+    pub fn max_cycles(&self) -> f64 {
+        self.series
+            .iter()
+            .flat_map(|s| s.cycles.iter().copied())
+            .fold(0.0, f64::max)
+    }
+
+    /// Number of measured values.
+    pub fn len(&self) -> usize {
+        self.series.iter().map(|s| s.values.len()).sum()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Fewest values of a quantity whose noise is inferred: with one value the marginal
+/// likelihood 1/|residual| has no scale to learn from (docs/PROGNOSTICS.md).
+pub const MIN_VALUES_UNKNOWN_SIGMA: usize = 2;
+
+/// A finite number, or why not.
+fn number(cell: &str) -> Result<f64, String> {
+    match cell.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(x),
+        Ok(x) => Err(format!("`{cell}` is not finite ({x})")),
+        Err(_) => Err(format!("`{cell}` is not a number")),
+    }
+}
+
+/// Parse the observations CSV. `source` names the file in messages. Returns every
+/// problem found.
+pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
+    let mut problems = Vec::new();
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_reader(text.as_bytes());
+    let header: Vec<String> = match rdr.headers() {
+        Ok(h) => h.iter().map(str::to_owned).collect(),
+        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")]),
+    };
+    let Some(cycles_col) = header.iter().position(|h| h == "cycles") else {
+        return Err(vec![format!(
+            "{source}: no `cycles` column (header: {})",
+            header.join(",")
+        )]);
+    };
+    // Quantity columns and their sigma columns.
+    let mut value_cols: Vec<(Quantity, usize)> = Vec::new();
+    let mut sigma_cols: Vec<(String, usize)> = Vec::new();
+    for (j, h) in header.iter().enumerate() {
+        if j == cycles_col {
+            continue;
+        }
+        if header[..j].contains(h) {
+            problems.push(format!("{source}: column `{h}` appears twice"));
+        } else if let Some(name) = h.strip_prefix("sigma_") {
+            sigma_cols.push((name.to_owned(), j));
+        } else if let Some(q) = Quantity::parse(h) {
+            value_cols.push((q, j));
+        } else {
+            problems.push(format!(
+                "{source}: unknown column `{h}`; valid quantities: {} (each optionally with a sigma_<name> column)",
+                Quantity::valid_names()
+            ));
+        }
+    }
+    let mut sigma_of: Vec<Option<usize>> = vec![None; value_cols.len()];
+    for (name, j) in &sigma_cols {
+        match value_cols.iter().position(|(q, _)| q.name() == name) {
+            Some(i) => sigma_of[i] = Some(*j),
+            None => problems.push(format!(
+                "{source}: column `sigma_{name}` has no matching quantity column `{name}`"
+            )),
+        }
+    }
+    if value_cols.is_empty() && problems.is_empty() {
+        problems.push(format!(
+            "{source}: no observed quantity; give one or more of: {}",
+            Quantity::valid_names()
+        ));
+    }
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+
+    let mut series: Vec<Series> = value_cols
+        .iter()
+        .zip(&sigma_of)
+        .map(|((q, _), s)| Series {
+            quantity: *q,
+            cycles: Vec::new(),
+            values: Vec::new(),
+            sigma: s.map(|_| Vec::new()),
+        })
+        .collect();
+    let mut previous: Option<f64> = None;
+    let mut rows = 0;
+    for (r, rec) in rdr.records().enumerate() {
+        let at = format!("{source}: row {} (line {})", r + 1, r + 2);
+        let rec = match rec {
+            Ok(x) => x,
+            Err(e) => {
+                problems.push(format!("{at}: {e}"));
+                continue;
+            }
+        };
+        rows += 1;
+        let cell = |j: usize| rec.get(j).unwrap_or("").trim();
+        let cycles = match number(cell(cycles_col)) {
+            Ok(c) if c < 0.0 => {
+                problems.push(format!("{at}: `cycles` = {c} is negative"));
+                continue;
+            }
+            Ok(c) => c,
+            Err(e) => {
+                problems.push(format!("{at}: `cycles`: {e}"));
+                continue;
+            }
+        };
+        if let Some(p) = previous.filter(|p| cycles < *p) {
+            problems.push(format!(
+                "{at}: `cycles` = {cycles} is below the previous row's {p}: rows must be in non-decreasing order of cycles"
+            ));
+        }
+        previous = Some(cycles);
+        for (i, (q, j)) in value_cols.iter().enumerate() {
+            let raw = cell(*j);
+            if raw.is_empty() {
+                continue;
+            }
+            let v = match number(raw) {
+                Ok(v) => v,
+                Err(e) => {
+                    problems.push(format!("{at}: column `{}`: {e}", q.name()));
+                    continue;
+                }
+            };
+            if let Some(sj) = sigma_of[i] {
+                match number(cell(sj)) {
+                    Ok(s) if s > 0.0 => series[i].sigma.get_or_insert_with(Vec::new).push(s),
+                    Ok(s) => {
+                        problems.push(format!("{at}: `sigma_{}` = {s} must be > 0", q.name()));
+                        continue;
+                    }
+                    Err(e) => {
+                        problems.push(format!(
+                            "{at}: `sigma_{}`: {e} (a measured value needs its sigma)",
+                            q.name()
+                        ));
+                        continue;
+                    }
+                }
+            }
+            series[i].cycles.push(cycles);
+            series[i].values.push(v);
+        }
+    }
+    if rows == 0 {
+        problems.push(format!("{source}: no data rows"));
+    }
+    for s in &series {
+        let n = s.values.len();
+        if s.sigma.is_none() && n < MIN_VALUES_UNKNOWN_SIGMA && rows > 0 {
+            problems.push(format!(
+                "{source}: column `{}` has {n} value(s); inferring its noise needs at least {MIN_VALUES_UNKNOWN_SIGMA}, or give a `sigma_{}` column",
+                s.quantity.name(),
+                s.quantity.name()
+            ));
+        }
+    }
+    if problems.is_empty() {
+        Ok(Observations { series })
+    } else {
+        Err(problems)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(text: &str) -> String {
+        parse_observations(text, "obs.csv").unwrap_err().join("\n")
+    }
+
+    #[test]
+    fn reads_values_sigmas_and_missing_cells() {
+        let o = parse_observations(
+            "cycles,max_wear_pinion_um,sigma_max_wear_pinion_um,velocity_y_pinion_rms_mm_per_s\n\
+             0,,,1.6\n1e4,1.5,0.1,1.5\n2e4,3.0,0.2,1.4\n",
+            "obs.csv",
+        )
+        .unwrap();
+        assert_eq!(o.series.len(), 2);
+        assert_eq!(o.series[0].cycles, vec![1e4, 2e4]);
+        assert_eq!(o.series[0].sigma, Some(vec![0.1, 0.2]));
+        assert_eq!(o.series[1].values, vec![1.6, 1.5, 1.4]);
+        assert_eq!(o.len(), 5);
+        assert_eq!(o.max_cycles(), 2e4);
+    }
+
+    #[test]
+    fn errors_name_row_and_column() {
+        let e = err("cycles,dte_max_um\n0,17\n-5,17\n");
+        assert!(
+            e.contains("row 2 (line 3)") && e.contains("negative"),
+            "{e}"
+        );
+        let e = err("cycles,dte_max_um\n10,17\n5,17\n");
+        assert!(e.contains("row 2") && e.contains("non-decreasing"), "{e}");
+        let e = err("cycles,dte_max_um\n0,17\n5,nan\n");
+        assert!(e.contains("row 2") && e.contains("dte_max_um") && e.contains("not finite"));
+        let e = err("cycles,vibration\n0,1\n");
+        assert!(e.contains("unknown column `vibration`"), "{e}");
+        let e = err("cycles,sigma_dte_max_um\n0,1\n");
+        assert!(e.contains("sigma_dte_max_um"), "{e}");
+        let e = err("cycles,dte_max_um,sigma_dte_max_um\n0,17,0\n");
+        assert!(e.contains("must be > 0"), "{e}");
+        let e = err("cycles,dte_max_um\n0,17\n");
+        assert!(e.contains("at least 2"), "{e}");
+        assert!(err("x\n1\n").contains("no `cycles` column"));
+        assert!(err("cycles,dte_max_um\n").contains("no data rows"));
+    }
+}

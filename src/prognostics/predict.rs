@@ -1,0 +1,274 @@
+//! Prediction: Monte Carlo forward runs over posterior (or prior) samples, to a horizon
+//! of N cycles; fan charts of wear and vibration indicators, and the distribution of the
+//! cycles at which the maximum pinion wear reaches a limit (remaining useful life).
+
+use super::band::{cycles_grid, Band};
+use super::forward::{run_trajectory, Crossing, Trajectory};
+use super::prior::{apply, Prior, Theta};
+use super::quantity::Quantity;
+use super::rng;
+use super::stats::{quantile_sorted, std_dev};
+use super::surrogate::Surrogate;
+use crate::config::Case;
+use crate::study::model::ModelError;
+use serde::{Deserialize, Serialize};
+
+/// Quantities of the fan charts: the wear and what the monitoring engineer will see.
+pub const FAN_QUANTITIES: [Quantity; 6] = [
+    Quantity::MaxWearPinion,
+    Quantity::VelocityRms,
+    Quantity::MeshHarmonic(1),
+    Quantity::MeshHarmonic(2),
+    Quantity::DtePeakToPeak,
+    Quantity::DteHarmonic1,
+];
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PredictSettings {
+    /// Wear limit on the maximum pinion wear depth, um.
+    pub limit_um: f64,
+    /// Horizon, cycles.
+    pub cycles: f64,
+    pub grid_points: usize,
+    pub seed: u64,
+    /// Ensemble size.
+    pub samples: usize,
+}
+
+/// Where the parameter samples come from.
+#[derive(Debug, Clone)]
+pub enum SampleSource {
+    Prior(Prior),
+    /// Posterior rows; `resample`: draw with replacement (else row i is sample i).
+    Posterior {
+        rows: Vec<Theta>,
+        resample: bool,
+    },
+}
+
+impl SampleSource {
+    /// Parameters of sample `index` (depends only on seed and index).
+    pub fn draw(&self, index: usize, seed: u64) -> Theta {
+        let mut r = rng::stream(seed, index as u64);
+        match self {
+            SampleSource::Prior(p) => p.draw(&mut r),
+            SampleSource::Posterior { rows, resample } => {
+                if *resample {
+                    rows[((rng::uniform(&mut r) * rows.len() as f64) as usize).min(rows.len() - 1)]
+                } else {
+                    rows[index % rows.len()]
+                }
+            }
+        }
+    }
+}
+
+/// The forward model of a prediction.
+pub enum Forward<'a> {
+    Surrogate(&'a Surrogate),
+    /// One true wear study per sample (the case's block scheme).
+    Exact(&'a Case),
+}
+
+/// What one sample predicts.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SampleOutcome {
+    pub index: usize,
+    pub theta: Theta,
+    /// Cycles to the wear limit (NotReached: beyond the horizon; Unknown: the forward
+    /// run failed before).
+    pub life: Crossing,
+    /// values[f][g]: FAN_QUANTITIES[f] at grid point g; None past a failure.
+    pub values: Vec<Vec<Option<f64>>>,
+    /// Why the run stopped before the horizon.
+    pub failure: Option<String>,
+    /// Cycles up to which the run is known (>= the horizon when it did not fail).
+    pub valid_until: f64,
+}
+
+/// Life within the horizon, or NotReached beyond it.
+fn within(c: Crossing, horizon: f64) -> Crossing {
+    match c {
+        Crossing::Reached(x) if x > horizon => Crossing::NotReached,
+        c => c,
+    }
+}
+
+/// Predict one sample.
+pub fn run_sample(
+    fw: &Forward,
+    theta: Theta,
+    index: usize,
+    set: &PredictSettings,
+) -> Result<SampleOutcome, ModelError> {
+    let grid = cycles_grid(set.cycles, set.grid_points);
+    let (life, values, failure, valid_until) = match fw {
+        Forward::Surrogate(s) => {
+            let life = within(s.cycles_to_wear(&theta, set.limit_um), set.cycles);
+            let vals = FAN_QUANTITIES
+                .iter()
+                .map(|q| grid.iter().map(|c| s.value(*q, &theta, *c)).collect())
+                .collect();
+            let until = s.valid_until(&theta);
+            let failure = (until < set.cycles).then(|| {
+                format!(
+                    "the reference run behind this sample failed; the surrogate is known to {until:.0} cycles at this k"
+                )
+            });
+            (life, vals, failure, until)
+        }
+        Forward::Exact(case) => {
+            let t: Trajectory = run_trajectory(&apply(case, &theta), None, set.cycles)?;
+            let life = within(t.cycles_to_wear(set.limit_um), set.cycles);
+            let vals = FAN_QUANTITIES
+                .iter()
+                .map(|q| grid.iter().map(|c| t.value(*q, *c)).collect())
+                .collect();
+            (life, vals, t.failure.clone(), t.valid_until())
+        }
+    };
+    Ok(SampleOutcome {
+        index,
+        theta,
+        life,
+        values,
+        failure,
+        valid_until,
+    })
+}
+
+/// The remaining-life distribution.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LifeSummary {
+    pub samples: usize,
+    /// Samples whose wear reaches the limit within the horizon.
+    pub reached: usize,
+    /// Samples whose wear stays below the limit over the horizon.
+    pub beyond_horizon: usize,
+    /// Samples whose forward run failed before the limit (life unknown).
+    pub unknown: usize,
+    /// Percentiles of the cycles to the limit; None: beyond the horizon, or not
+    /// determined (an unknown life lies between its run's last known cycle count and
+    /// +inf; a percentile is kept where both ends give the same value).
+    pub p05: Option<f64>,
+    pub median: Option<f64>,
+    pub p95: Option<f64>,
+    /// P(life > horizon) over the samples with a known life.
+    pub prob_beyond_horizon: f64,
+    /// Bounds on it when the unknown samples are counted as all below / all beyond.
+    pub prob_beyond_horizon_bounds: (f64, f64),
+    /// Standard deviation of the life over the samples that reach the limit.
+    pub spread_reached: f64,
+}
+
+impl LifeSummary {
+    pub fn of(outcomes: &[SampleOutcome]) -> Self {
+        let mut known: Vec<f64> = Vec::new();
+        let (mut reached, mut beyond, mut unknown) = (0, 0, 0);
+        for o in outcomes {
+            match o.life {
+                Crossing::Reached(c) => {
+                    reached += 1;
+                    known.push(c);
+                }
+                Crossing::NotReached => {
+                    beyond += 1;
+                    known.push(f64::INFINITY);
+                }
+                Crossing::Unknown => unknown += 1,
+            }
+        }
+        let n = outcomes.len();
+        let finite: Vec<f64> = known.iter().copied().filter(|x| x.is_finite()).collect();
+        let mut lower = known.clone();
+        lower.extend(
+            outcomes
+                .iter()
+                .filter(|o| o.life == Crossing::Unknown)
+                .map(|o| o.valid_until),
+        );
+        known.resize(n, f64::INFINITY);
+        known.sort_by(f64::total_cmp);
+        lower.sort_by(f64::total_cmp);
+        let q = |p: f64| {
+            let (a, b) = (quantile_sorted(&lower, p), quantile_sorted(&known, p));
+            Some(b).filter(|x| x.is_finite() && *x == a)
+        };
+        let n_known = (reached + beyond) as f64;
+        Self {
+            samples: n,
+            reached,
+            beyond_horizon: beyond,
+            unknown,
+            p05: q(0.05),
+            median: q(0.5),
+            p95: q(0.95),
+            prob_beyond_horizon: if n_known > 0.0 {
+                beyond as f64 / n_known
+            } else {
+                f64::NAN
+            },
+            prob_beyond_horizon_bounds: (
+                beyond as f64 / n.max(1) as f64,
+                (beyond + unknown) as f64 / n.max(1) as f64,
+            ),
+            spread_reached: if finite.len() > 1 {
+                std_dev(&finite)
+            } else {
+                f64::NAN
+            },
+        }
+    }
+}
+
+/// Fan charts of every fan quantity.
+pub fn fans(outcomes: &[SampleOutcome], set: &PredictSettings) -> Vec<(Quantity, Band)> {
+    let grid = cycles_grid(set.cycles, set.grid_points);
+    FAN_QUANTITIES
+        .iter()
+        .enumerate()
+        .map(|(f, q)| {
+            let v: Vec<Vec<Option<f64>>> = outcomes.iter().map(|o| o.values[f].clone()).collect();
+            (*q, Band::of(&grid, &v, q.is_wear()))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(life: Crossing, valid_until: f64) -> SampleOutcome {
+        SampleOutcome {
+            index: 0,
+            theta: [1.0, 1.0, 1.0],
+            life,
+            values: vec![],
+            failure: None,
+            valid_until,
+        }
+    }
+
+    #[test]
+    fn unknown_lives_bound_the_percentiles() {
+        // Lives 1..=19 and one unknown whose run stopped at 25 cycles (its life is > 25):
+        // the median (between the 10th and 11th of 20) is 10.5 whatever that life is;
+        // the 95 % point (19.05th) depends on it: undetermined.
+        let mut o: Vec<SampleOutcome> = (1..=19)
+            .map(|i| outcome(Crossing::Reached(i as f64), 100.0))
+            .collect();
+        o.push(outcome(Crossing::Unknown, 25.0));
+        let l = LifeSummary::of(&o);
+        assert_eq!(l.median, Some(10.5));
+        assert_eq!(l.p95, None);
+        assert_eq!((l.reached, l.unknown), (19, 1));
+        // The unknown run stopped at 5 cycles instead: its life in (5, inf) now moves
+        // the median too.
+        o[19].valid_until = 5.0;
+        assert_eq!(LifeSummary::of(&o).median, None);
+        // Beyond the horizon: counted in P(life > N).
+        o[19].life = Crossing::NotReached;
+        let l = LifeSummary::of(&o);
+        assert_eq!((l.prob_beyond_horizon, l.median), (0.05, Some(10.5)));
+    }
+}

@@ -1,0 +1,128 @@
+//! The observable quantities of a wear study, named as the columns of the updates CSV that
+//! `gearwear wear` writes (display units in the names).
+
+use crate::dynamics::summary::ResponseSummary;
+use serde::{Deserialize, Serialize};
+
+/// One observable quantity of a dynamic wear study.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Quantity {
+    /// Maximum accumulated wear depth of the pinion profile, um (a profile measurement).
+    MaxWearPinion,
+    /// Maximum accumulated wear depth of the gear profile, um.
+    MaxWearGear,
+    /// RMS of the pinion's y velocity, mm/s (an accelerometer on the bearing, integrated).
+    VelocityRms,
+    /// Amplitude of mesh harmonic h (1..=4) of the pinion's y velocity, mm/s.
+    MeshHarmonic(usize),
+    /// Maximum of the dynamic transmission error, um.
+    DteMax,
+    /// Peak-to-peak of the DTE over the evaluated window, um (encoder-based measurement).
+    DtePeakToPeak,
+    /// Amplitude of the first mesh harmonic of the DTE, um.
+    DteHarmonic1,
+}
+
+/// Every quantity, in the order tables list them.
+pub const ALL: [Quantity; 10] = [
+    Quantity::MaxWearPinion,
+    Quantity::MaxWearGear,
+    Quantity::VelocityRms,
+    Quantity::MeshHarmonic(1),
+    Quantity::MeshHarmonic(2),
+    Quantity::MeshHarmonic(3),
+    Quantity::MeshHarmonic(4),
+    Quantity::DteMax,
+    Quantity::DtePeakToPeak,
+    Quantity::DteHarmonic1,
+];
+
+impl Quantity {
+    /// Column name (as in `updates_dynamic.csv`).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Quantity::MaxWearPinion => "max_wear_pinion_um",
+            Quantity::MaxWearGear => "max_wear_gear_um",
+            Quantity::VelocityRms => "velocity_y_pinion_rms_mm_per_s",
+            Quantity::MeshHarmonic(1) => "mesh_harmonic1_mm_per_s",
+            Quantity::MeshHarmonic(2) => "mesh_harmonic2_mm_per_s",
+            Quantity::MeshHarmonic(3) => "mesh_harmonic3_mm_per_s",
+            Quantity::MeshHarmonic(_) => "mesh_harmonic4_mm_per_s",
+            Quantity::DteMax => "dte_max_um",
+            Quantity::DtePeakToPeak => "dte_peak_to_peak_um",
+            Quantity::DteHarmonic1 => "dte_harmonic1_um",
+        }
+    }
+
+    /// Axis label with unit.
+    pub fn label(&self) -> String {
+        match self {
+            Quantity::MaxWearPinion => "max pinion wear (um)".into(),
+            Quantity::MaxWearGear => "max gear wear (um)".into(),
+            Quantity::VelocityRms => "RMS dy_p/dt (mm/s)".into(),
+            Quantity::MeshHarmonic(h) => format!("mesh harmonic {h} of dy_p/dt (mm/s)"),
+            Quantity::DteMax => "max DTE (um)".into(),
+            Quantity::DtePeakToPeak => "DTE peak-to-peak (um)".into(),
+            Quantity::DteHarmonic1 => "DTE 1st mesh harmonic (um)".into(),
+        }
+    }
+
+    pub fn parse(name: &str) -> Option<Self> {
+        ALL.iter().copied().find(|q| q.name() == name)
+    }
+
+    /// Names of every quantity, comma separated (for error messages).
+    pub fn valid_names() -> String {
+        ALL.iter().map(|q| q.name()).collect::<Vec<_>>().join(", ")
+    }
+
+    /// Whether the quantity is a wear depth (known exactly between updates: the wear
+    /// grows linearly in cycles within a block) rather than a response (that of the last
+    /// update until the next).
+    pub fn is_wear(&self) -> bool {
+        matches!(self, Quantity::MaxWearPinion | Quantity::MaxWearGear)
+    }
+
+    /// Value of a response quantity in display units (the updates CSV's conversions:
+    /// x 1e6 for um, x 1e3 for mm/s). NaN for the wear depths, which come from the profile.
+    pub fn of_summary(&self, s: &ResponseSummary) -> f64 {
+        match self {
+            Quantity::MaxWearPinion | Quantity::MaxWearGear => f64::NAN,
+            Quantity::VelocityRms => s.velocity_y_pinion_rms_m_per_s * 1e3,
+            Quantity::MeshHarmonic(h) => {
+                s.velocity_y_pinion_harmonics_m_per_s[(*h).clamp(1, 4) - 1] * 1e3
+            }
+            Quantity::DteMax => s.dte_max_m * 1e6,
+            Quantity::DtePeakToPeak => (s.dte_max_m - s.dte_min_m) * 1e6,
+            Quantity::DteHarmonic1 => s.dte_harmonic1_m * 1e6,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_are_distinct() {
+        for (i, q) in ALL.iter().enumerate() {
+            assert_eq!(Quantity::parse(q.name()), Some(*q));
+            assert!(ALL[..i].iter().all(|p| p.name() != q.name()));
+        }
+        assert_eq!(Quantity::parse("velocity"), None);
+    }
+
+    #[test]
+    fn summary_units() {
+        let s = ResponseSummary {
+            dte_max_m: 20e-6,
+            dte_min_m: 5e-6,
+            velocity_y_pinion_harmonics_m_per_s: [1e-3, 2e-3, 3e-3, 4e-3],
+            ..Default::default()
+        };
+        // 15e-6 m peak-to-peak is 15 um; 4e-3 m/s is 4 mm/s (to rounding of the factors).
+        assert!((Quantity::DtePeakToPeak.of_summary(&s) - 15.0).abs() < 1e-9);
+        assert!((Quantity::MeshHarmonic(4).of_summary(&s) - 4.0).abs() < 1e-12);
+        assert!(Quantity::MaxWearPinion.of_summary(&s).is_nan());
+    }
+}

@@ -1,0 +1,294 @@
+//! The input domain as a user meets it (issues 10 and 13): one test per class of bad
+//! input, each exiting with code 2, naming the key, writing nothing; and the input forms
+//! that are accepted on purpose.
+
+use std::process::{Command, Output};
+
+fn gearwear(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// `args` (a command and its options, `--out` added) must exit 2, with a message holding
+/// every needle, no panic, and no output folder.
+fn rejected(args: &[&str], needles: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut all = args.to_vec();
+    all.extend(["--out", out.to_str().unwrap()]);
+    let o = gearwear(&all);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
+    }
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(!out.exists(), "{args:?}: output written despite the error");
+    err
+}
+
+/// `args` must succeed; returns stderr.
+fn accepted(args: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let mut all = args.to_vec();
+    let out = dir.path().join("out");
+    all.extend(["--out", out.to_str().unwrap()]);
+    let o = gearwear(&all);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    stderr(&o)
+}
+
+#[test]
+fn whole_numbers_accept_a_decimal_point_but_not_a_fraction() {
+    accepted(&[
+        "stiffness",
+        "--set",
+        "gear.teeth_pinion=25.0",
+        "--set",
+        "stiffness.allow_fillet_extrapolation=true",
+    ]);
+    rejected(
+        &["stiffness", "--set", "gear.teeth_pinion=25.5"],
+        &["gear.teeth_pinion", "25.5", "whole number"],
+    );
+}
+
+#[test]
+fn non_finite_and_subnormal_numbers_are_refused() {
+    for v in ["nan", "inf", "5e-324"] {
+        rejected(
+            &["dynamics", "--set", &format!("wear.block_cycles={v}")],
+            &["wear.block_cycles"],
+        );
+    }
+    rejected(
+        &[
+            "stiffness",
+            "--set",
+            "surface.roughness_table_rms_um=[0.2, nan, 0.1]",
+        ],
+        &["surface.roughness_table_rms_um"],
+    );
+}
+
+#[test]
+fn values_outside_their_physical_range_are_refused_with_the_range() {
+    // Values of issue 13 that hung, ran out of memory or panicked.
+    for (set, key, range) in [
+        ("gear.module_mm=1e-6", "gear.module_mm", "[0.1, 50]"),
+        (
+            "gear.face_width_mm=1e-9",
+            "gear.face_width_mm",
+            "[0.1, 2000]",
+        ),
+        (
+            "wear.coefficient_m2_per_n=1e308",
+            "wear.coefficient_m2_per_n",
+            "[0, 1e-11]",
+        ),
+        (
+            "wear.threshold_um=1e-9",
+            "wear.threshold_um",
+            "[0.001, 1e6]",
+        ),
+        ("wear.total_cycles=1e12", "wear.total_cycles", "[1, 1e11]"),
+        (
+            "numerics.steps_per_mesh_period=9223372036854775807",
+            "numerics.steps_per_mesh_period",
+            "[20, 1e6]",
+        ),
+        (
+            "stiffness.table_points_per_mesh_period=9223372036854775807",
+            "stiffness.table_points_per_mesh_period",
+            "[16, 1e5]",
+        ),
+    ] {
+        rejected(&["run", "--set", set], &[key, range]);
+    }
+}
+
+#[test]
+fn impossible_geometry_is_refused_in_the_users_terms() {
+    // A bore at or beyond the root circle (r_f = 16.5 mm).
+    for bore in ["16.5", "1000"] {
+        rejected(
+            &[
+                "stiffness",
+                "--set",
+                &format!("gear.hub_bore_radius_pinion_mm={bore}"),
+            ],
+            &["gear.hub_bore_radius_pinion_mm", "root circle", "16.5"],
+        );
+    }
+    // A centre distance at which the teeth never touch: the limits follow from
+    // sqrt(a^2 - (r_b1 + r_b2)^2) = reach of the tips - eps p_b (docs/MODEL.md).
+    let e = rejected(
+        &["stiffness", "--set", "gear.centre_distance_mm=60"],
+        &["gear.centre_distance_mm", "do not touch"],
+    );
+    assert!(!e.contains("contact ratio -"), "{e}");
+    // A face width that is not a tooth.
+    rejected(
+        &["stiffness", "--set", "gear.face_width_mm=0.5"],
+        &["gear.face_width_mm", "gear.module_mm"],
+    );
+    // A load no flank carries.
+    rejected(
+        &["dynamics", "--set", "operating.load_torque_nm=1e7"],
+        &["operating.load_torque_nm", "GPa"],
+    );
+}
+
+#[test]
+fn sainsot_fit_outside_its_range_needs_the_opt_in() {
+    // 25 teeth: theta_f = 0.1205 rad at the fillet junction, just above the fit's 0.12.
+    rejected(
+        &["stiffness", "--set", "gear.teeth_pinion=25"],
+        &["stiffness.allow_fillet_extrapolation", "theta_f"],
+    );
+    // h_f = 16.5 / 1 = 16.5 > 7, on the built-in pair (whose theta_f is exempt).
+    rejected(
+        &["stiffness", "--set", "gear.hub_bore_radius_pinion_mm=1"],
+        &["stiffness.allow_fillet_extrapolation", "h_f"],
+    );
+    let warn = accepted(&[
+        "stiffness",
+        "--set",
+        "gear.teeth_pinion=25",
+        "--set",
+        "stiffness.allow_fillet_extrapolation=true",
+    ]);
+    assert!(
+        warn.contains("warning") && warn.contains("theta_f"),
+        "{warn}"
+    );
+    // The built-in case runs (its pinion is exempt, with a warning).
+    assert!(accepted(&["stiffness"]).contains("theta_f = 0.1586"));
+}
+
+#[test]
+fn runs_over_the_budget_are_refused_naming_the_keys_and_the_flag() {
+    rejected(
+        &["dynamics", "--set", "numerics.evaluated_mesh_periods=1e5"],
+        &["numerics.evaluated_mesh_periods", "GB", "--budget-scale"],
+    );
+    rejected(
+        &["wear", "--set", "wear.block_cycles=1"],
+        &["wear.block_cycles", "--no-budget"],
+    );
+    rejected(
+        &["sweep", "--vary", "numerics.steps_per_mesh_period=200,1e6"],
+        &["case 1", "numerics.steps_per_mesh_period"],
+    );
+    // The flag moves the limit both ways: a tiny budget refuses the built-in case.
+    rejected(&["--budget-scale", "1e-4", "dynamics"], &["budget"]);
+    rejected(&["dynamics", "--budget-scale", "0"], &["--budget-scale"]);
+}
+
+#[test]
+fn set_values_are_one_line_and_long_values_are_cut() {
+    rejected(
+        &[
+            "stiffness",
+            "--set",
+            "gear.module_mm=3\n[gear]\nmodule_mm = 5",
+        ],
+        &["--set", "line break"],
+    );
+    // A 10 MB value (in a file: one argument may hold only 128 kB) and a 100 kB one.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("huge.toml");
+    let huge = "x".repeat(10_000_000);
+    std::fs::write(&file, format!("[friction]\nmodel = \"{huge}\"\n")).unwrap();
+    let e = rejected(
+        &["stiffness", "--config", file.to_str().unwrap()],
+        &["friction.model", "characters)"],
+    );
+    assert!(e.len() < 2000, "{} bytes of message", e.len());
+    let long = format!("friction.model={}", &huge[..100_000]);
+    let e = rejected(
+        &["stiffness", "--set", &long],
+        &["friction.model", "characters)"],
+    );
+    assert!(e.len() < 2000, "{} bytes of message", e.len());
+}
+
+#[test]
+fn toml_forms_of_a_section_are_accepted_and_others_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let inline = dir.path().join("inline.toml");
+    std::fs::write(&inline, "gear = { face_width_mm = 25 }\n").unwrap();
+    accepted(&["stiffness", "--config", inline.to_str().unwrap()]);
+    let array = dir.path().join("array.toml");
+    std::fs::write(&array, "[[gear]]\nface_width_mm = 25\n").unwrap();
+    rejected(
+        &["stiffness", "--config", array.to_str().unwrap()],
+        &["[gear] must be a table"],
+    );
+}
+
+#[test]
+fn sweep_axes_name_array_keys_and_refuse_repeated_values() {
+    let e = rejected(
+        &["sweep", "--vary", "surface.roughness_table_rms_um=1,2"],
+        &["surface.roughness_table_rms_um", "brackets"],
+    );
+    assert!(!e.contains("is an integer"), "{e}");
+    rejected(
+        &["sweep", "--vary", "operating.input_speed_hz=30,30.0"],
+        &["operating.input_speed_hz", "30.0", "same as"],
+    );
+}
+
+#[test]
+fn derived_is_refused_where_the_geometry_cannot_give_the_value() {
+    rejected(
+        &["dynamics", "--set", "dynamics.inertia_motor_kg_m2=derived"],
+        &["dynamics.inertia_motor_kg_m2"],
+    );
+}
+
+#[test]
+fn new_pair_prints_a_case_that_follows_the_geometry() {
+    let o = gearwear(&["config", "--new-pair"]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(text.contains("mass_pinion_kg = \"derived\""));
+    // Edited to the 25/50 pair of issue 10, it runs and warns about nothing but the
+    // fit's range, which it opts into.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("pair.toml");
+    let edited = text
+        .replace("module_mm = 2.0", "module_mm = 3.0")
+        .replace("teeth_pinion = 19", "teeth_pinion = 25")
+        .replace("teeth_gear = 31", "teeth_gear = 50")
+        .replace("face_width_mm = 20.0", "face_width_mm = 30.0")
+        .replace(
+            "allow_fillet_extrapolation = false",
+            "allow_fillet_extrapolation = true",
+        );
+    std::fs::write(&file, edited).unwrap();
+    let err = accepted(&["stiffness", "--config", file.to_str().unwrap()]);
+    assert!(!err.contains("times"), "no factor-2 warning: {err}");
+    rejected(
+        &["config", "--new-pair", "--set", "gear.module_mm=3"],
+        &["--new-pair"],
+    );
+}
+
+#[test]
+fn explicit_masses_far_from_the_geometry_are_warned_about() {
+    let err = accepted(&["stiffness", "--set", "dynamics.mass_pinion_kg=0.05"]);
+    assert!(
+        err.contains("dynamics.mass_pinion_kg")
+            && err.contains("5.0000e-2")
+            && err.contains("1.4649e-1"),
+        "{err}"
+    );
+}

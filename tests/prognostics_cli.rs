@@ -1,0 +1,266 @@
+//! `gearwear calibrate`, `predict` and `predict-merge` as a user meets them: every class
+//! of bad input answered with exit code 2 and a message naming the row or key, the
+//! promised files, and a sharded prediction merged back to the unsharded one.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn gearwear(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A cheap case: coarser numerics than the paper's defaults (the commands' plumbing is
+/// under test here, not the physics) and a prior of k over [k0/2, 2 k0].
+const CASE: &str = "[numerics]\nsteps_per_mesh_period = 60\nevaluated_mesh_periods = 2\n\
+[wear]\npoints_per_profile = 31\n\
+[calibration]\nwear_coefficient_min_m2_per_n = 1.25e-16\nwear_coefficient_max_m2_per_n = 5e-16\n";
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_owned()
+}
+
+/// Exit 2, every needle in the message, no output directory.
+fn assert_rejected(args: &[&str], needles: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut all = args.to_vec();
+    let out_s = out.to_str().unwrap().to_owned();
+    all.extend(["--out", &out_s]);
+    let o = gearwear(&all);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
+    }
+    assert!(!out.exists(), "{args:?}: output written despite the error");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn bad_inputs_exit_2_naming_the_row_or_key() {
+    let d = tempfile::tempdir().unwrap();
+    let obs = |name: &str, text: &str| write(d.path(), name, text);
+    let cases = [
+        (
+            obs(
+                "neg.csv",
+                "cycles,max_wear_pinion_um,sigma_max_wear_pinion_um\n0,0,0.1\n-10,1,0.1\n",
+            ),
+            vec!["row 2", "negative"],
+        ),
+        (
+            obs("order.csv", "cycles,dte_max_um\n0,17\n2e4,17.1\n1e4,17.2\n"),
+            vec!["row 3", "non-decreasing"],
+        ),
+        (
+            obs("name.csv", "cycles,wear_um\n0,0\n1e4,1\n"),
+            vec!["unknown column `wear_um`", "max_wear_pinion_um"],
+        ),
+        (
+            obs(
+                "nan.csv",
+                "cycles,velocity_y_pinion_rms_mm_per_s\n0,1.6\n1e4,inf\n",
+            ),
+            vec!["row 2", "velocity_y_pinion_rms_mm_per_s", "not finite"],
+        ),
+        (
+            obs("sigma.csv", "cycles,dte_max_um,sigma_dte_max_um\n0,17,-1\n"),
+            vec!["row 1", "sigma_dte_max_um"],
+        ),
+    ];
+    for (file, needles) in &cases {
+        assert_rejected(&["calibrate", "--observations", file], needles);
+    }
+    let good = obs("good.csv", "cycles,max_wear_pinion_um\n1e4,1.5\n2e4,3\n");
+    // A prior with no support names both keys.
+    assert_rejected(
+        &[
+            "calibrate",
+            "--observations",
+            &good,
+            "--set",
+            "calibration.wear_coefficient_min_m2_per_n=1e-15",
+            "--set",
+            "calibration.wear_coefficient_max_m2_per_n=1e-16",
+        ],
+        &[
+            "calibration.wear_coefficient_min_m2_per_n",
+            "calibration.wear_coefficient_max_m2_per_n",
+            "no support",
+        ],
+    );
+    assert_rejected(
+        &[
+            "calibrate",
+            "--observations",
+            &good,
+            "--set",
+            "calibration.roughness_scale_min=0",
+        ],
+        &["calibration.roughness_scale_min"],
+    );
+    assert_rejected(
+        &["calibrate", "--observations", "missing.csv"],
+        &["missing.csv"],
+    );
+    // predict: the flags and the posterior file.
+    assert_rejected(
+        &["predict", "--limit-um", "-1", "--cycles", "1e5"],
+        &["--limit-um"],
+    );
+    assert_rejected(
+        &["predict", "--limit-um", "10", "--cycles", "0"],
+        &["--cycles"],
+    );
+    let post = obs(
+        "post.csv",
+        "sample,wear_coefficient_m2_per_n\n0,2.5e-16\n1,nan\n",
+    );
+    assert_rejected(
+        &[
+            "predict",
+            "--posterior",
+            &post,
+            "--limit-um",
+            "10",
+            "--cycles",
+            "1e5",
+        ],
+        &["row 2", "wear_coefficient_m2_per_n"],
+    );
+    assert_rejected(
+        &[
+            "predict",
+            "--limit-um",
+            "10",
+            "--cycles",
+            "1e5",
+            "--shard",
+            "3/2",
+        ],
+        &["--shard"],
+    );
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn calibrate_then_predict_sharded_and_merged() {
+    let d = tempfile::tempdir().unwrap();
+    let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
+    let case = write(d.path(), "case.toml", CASE);
+    // Wear measurements near what k0 gives (~0.15 um per 1000 cycles).
+    let obs = write(
+        d.path(),
+        "obs.csv",
+        "cycles,max_wear_pinion_um,sigma_max_wear_pinion_um,velocity_y_pinion_rms_mm_per_s\n\
+         5000,,,1.5\n10000,1.5,0.2,1.45\n15000,,,1.4\n20000,3.0,0.2,1.38\n",
+    );
+    let o = gearwear(&[
+        "calibrate",
+        "--config",
+        &case,
+        "--observations",
+        &obs,
+        "--out",
+        &p("cal"),
+        "--samples",
+        "300",
+        "--check-runs",
+        "1",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for f in [
+        "posterior_samples.csv",
+        "posterior_band.csv",
+        "summary.json",
+        "posterior.png",
+        "posterior_band.png",
+        "report.html",
+    ] {
+        assert!(d.path().join("cal").join(f).exists(), "{f}");
+    }
+    let s = json(&d.path().join("cal/summary.json"));
+    let k = &s["parameters"][0];
+    let (lo, med, hi) = (
+        k["ci90"][0].as_f64().unwrap(),
+        k["median"].as_f64().unwrap(),
+        k["ci90"][1].as_f64().unwrap(),
+    );
+    assert!(1.25e-16 < lo && lo < med && med < hi && hi < 5e-16, "{k}");
+    assert_eq!(s["method"], "grid");
+    assert_eq!(
+        s["observations"][1]["noise"],
+        "inferred (Jeffreys prior, marginalised)"
+    );
+
+    let post = p("cal/posterior_samples.csv");
+    let common = [
+        "predict",
+        "--config",
+        &case,
+        "--posterior",
+        &post,
+        "--limit-um",
+        "2.5",
+        "--cycles",
+        "4e4",
+        "--seed",
+        "7",
+        "--samples",
+        "120",
+        "--grid-points",
+        "21",
+        "--check-runs",
+        "1",
+    ];
+    let run = |extra: &[&str]| {
+        let mut a: Vec<&str> = common.to_vec();
+        a.extend(extra);
+        let o = gearwear(&a);
+        assert!(o.status.success(), "{}", stderr(&o));
+    };
+    run(&["--out", &p("whole")]);
+    run(&["--out", &p("shards"), "--shard", "1/2"]);
+    run(&["--out", &p("shards"), "--shard", "2/2"]);
+    let o = gearwear(&["predict-merge", &p("shards"), "--out", &p("merged")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for f in [
+        "life_samples.csv",
+        "fan_wear.csv",
+        "fan_vibration.csv",
+        "fan_wear.png",
+        "life.png",
+        "fan_vibration.png",
+        "report.html",
+        "summary.json",
+    ] {
+        assert!(d.path().join("whole").join(f).exists(), "{f}");
+    }
+    // Samples depend on (seed, index) only: the merged shards are the unsharded run.
+    for f in ["life_samples.csv", "fan_wear.csv", "fan_vibration.csv"] {
+        let a = std::fs::read_to_string(d.path().join("whole").join(f)).unwrap();
+        let b = std::fs::read_to_string(d.path().join("merged").join(f)).unwrap();
+        assert_eq!(a, b, "{f}");
+    }
+    let w = json(&d.path().join("whole/summary.json"));
+    let m = json(&d.path().join("merged/summary.json"));
+    assert_eq!(w["remaining_life_cycles"], m["remaining_life_cycles"]);
+    assert!(w["remaining_life_cycles"]["median"].as_f64().unwrap() > 0.0);
+    assert!(
+        !std::fs::read_to_string(d.path().join("whole/life_samples.csv"))
+            .unwrap()
+            .contains("NaN")
+    );
+}
