@@ -27,17 +27,20 @@ fn sine_png(title: &str, width: u32, height: u32) -> Vec<u8> {
                     x: x.clone(),
                     y: wave(f64::sin),
                     style: LineStyle::Solid,
+                    ..Default::default()
                 },
                 Series {
                     name: "cos".into(),
                     x: x.clone(),
                     y: wave(f64::cos),
                     style: LineStyle::Dashed,
+                    ..Default::default()
                 },
             ],
             vlines: vec![(0.5, "half period".into())],
             log_y: false,
             kind: PanelKind::Lines,
+            ..Default::default()
         }],
     };
     render_png(&fig, width, height).expect("plot renders")

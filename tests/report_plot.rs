@@ -12,6 +12,7 @@ fn line(name: &str, x: Vec<f64>, y: Vec<f64>) -> Series {
         x,
         y,
         style: LineStyle::Solid,
+        ..Default::default()
     }
 }
 
@@ -265,4 +266,55 @@ fn renders_from_four_threads_at_once() {
             assert!(svg.unwrap().contains("Mesh force history"));
         }
     });
+}
+
+/// Point lists of the <polyline> elements stroked in `color`, in SVG pixels.
+fn polyline_points(svg: &str, color: &str) -> Vec<Vec<(f64, f64)>> {
+    svg.split("<polyline")
+        .skip(1)
+        .map(|p| p.split('>').next().unwrap_or(""))
+        .filter(|tag| tag.contains(color))
+        .map(|tag| {
+            let pts = tag.split("points=\"").nth(1).unwrap_or("");
+            let pts = pts.split('"').next().unwrap_or("");
+            pts.split_whitespace()
+                .filter_map(|xy| {
+                    let (x, y) = xy.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn legend_swatches_are_drawn_in_the_series_line_style() {
+    // Solid, dashed and dotted series: inside the legend box (which covers no data, as the
+    // layout tests check), each colour draws its swatch as 1, 2 or 5 horizontal pieces,
+    // the dash pattern of its data line.
+    let mut fig = sine_figure();
+    fig.panels[0].series[1].style = LineStyle::Dashed;
+    fig.panels[0].series[2].style = LineStyle::Dotted;
+    let (w, h) = (640, 360);
+    let svg = render_svg(&fig, w, h).unwrap();
+    let legend = layout(&fig, w, h).unwrap()[0]
+        .legend
+        .expect("three named series");
+    let inside = |p: &(f64, f64)| {
+        let (x, y) = (p.0.round() as i32, p.1.round() as i32);
+        legend.contains((x, y))
+    };
+    for (color, pieces) in [("#1F77B4", 1), ("#FF7F0E", 2), ("#2CA02C", 5)] {
+        let swatch: Vec<Vec<(f64, f64)>> = polyline_points(&svg, color)
+            .into_iter()
+            .filter(|l| !l.is_empty() && l.iter().all(inside))
+            .collect();
+        assert_eq!(swatch.len(), pieces, "{color}: {swatch:?}");
+        for piece in &swatch {
+            assert!(
+                piece.iter().all(|p| p.1 == piece[0].1),
+                "{color}: not level"
+            );
+        }
+    }
 }

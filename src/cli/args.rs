@@ -133,7 +133,7 @@ pub enum Command {
     Dynamics(DynamicsArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
-    /// The paper's whole section 4 with a self-contained HTML report (the main job).
+    /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).
     Run(RunArgs),
     /// Run the cross product of varied keys (in parallel; resumable; shardable).
     Sweep(SweepArgs),

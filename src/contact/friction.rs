@@ -9,7 +9,7 @@
 //! `rho1 f_p` and `rho2 f_g` (power = moment x omega = force x surface speed), and the power
 //! of the pair is `f_p u_p + f_g u_g = f_p u_s = -mu W u_s tanh(u_s/v) <= 0`: friction only
 //! dissipates. `tanh` with the smoothing speed `v` keeps the right-hand side continuous
-//! through the pitch point, where the direction flips (NOTES.md, "Friction"). Allocation-free
+//! through the pitch point, where the direction flips (docs/PAPER_NOTES.md, "Friction"). Allocation-free
 //! and cheap: evaluated inside the dynamics right-hand side.
 
 use super::hertz::HertzContact;
@@ -49,7 +49,7 @@ pub fn xu2007_coefficient(p_h_gpa: f64, sr: f64, v_e: f64, nu0_cp: f64, r: f64, 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum FrictionLaw {
     /// Xu et al. (2007) with the factor taking R from m to the unit it enters the
-    /// regression in (1 for m, 1000 for mm; NOTES.md, "Friction").
+    /// regression in (1 for m, 1000 for mm; docs/PAPER_NOTES.md, "Friction").
     Xu2007(f64),
     /// A constant coefficient (direction still from the sliding velocity).
     Constant(f64),
@@ -223,7 +223,7 @@ mod tests {
         }
     }
 
-    /// Paper case (NOTES.md): 30 Hz, 60 N m on the pinion (W = 60 / r_b1 = 3361 N, one pair),
+    /// Paper case (docs/PAPER_NOTES.md): 30 Hz, 60 N m on the pinion (W = 60 / r_b1 = 3361 N, one pair),
     /// nu0 = 40 cP; printed for both R units and both roughness readings. Asserted only for
     /// the default reading (R in m, S/10): lubricated steel gear contacts run at mu = 0.01-0.1.
     #[test]

@@ -13,7 +13,7 @@
 //! The paper's eq. (15), `P_h = sqrt(F kappa E / (2 b pi r_eq))`, is this `p0` for equal
 //! materials with `E* = E / (2 (1 - nu^2))` except that it drops the `(1 - nu^2)`: it is
 //! `sqrt(1 - nu^2)` (0.954 for nu = 0.3) times the standard value. We use the standard
-//! form (NOTES.md, "Wear").
+//! form (docs/PAPER_NOTES.md, "Wear").
 //!
 //! Everything here is allocation-free and cheap: it runs inside the dynamics right-hand side.
 

@@ -64,7 +64,7 @@ impl SurfaceKinematics {
     }
 
     /// Single-point-observation sliding distances per passage through a band of
-    /// half-width `a` (Flodin & Andersson, Wear 207 (1997) 16; NOTES.md, "Wear"):
+    /// half-width `a` (Flodin & Andersson, Wear 207 (1997) 16; docs/PAPER_NOTES.md, "Wear"):
     /// a flank point stays in the band for `2a / |u|` and slides `|u_p - u_g|` meanwhile, so
     /// `s_p = 2a |u_p - u_g| / |u_p|`, `s_g = 2a |u_p - u_g| / |u_g|` (m).
     ///

@@ -1,5 +1,5 @@
 //! Lumped parameters of the 8-DOF model in SI units, built from the case
-//! (paper Table 2, units corrected as NOTES.md says), and the operating point.
+//! (paper Table 2, units corrected as docs/PAPER_NOTES.md says), and the operating point.
 
 use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
 use crate::geometry::GearPair;
@@ -48,7 +48,7 @@ impl DynamicParams {
         }
     }
 
-    /// Equivalent mass of the mesh's torsional mode, kg (NOTES.md):
+    /// Equivalent mass of the mesh's torsional mode, kg (docs/PAPER_NOTES.md):
     /// m_e = J_p J_g / (J_p r_gb^2 + J_g r_pb^2).
     pub fn equivalent_mesh_mass_kg(&self, pair: &GearPair) -> f64 {
         let (jp, jg) = (
@@ -59,7 +59,7 @@ impl DynamicParams {
         jp * jg / (jp * rg * rg + jg * rp * rp)
     }
 
-    /// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m (the paper gives none; NOTES.md).
+    /// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m (the paper gives none; docs/PAPER_NOTES.md).
     pub fn mesh_damping_n_s_per_m(&self, pair: &GearPair, mean_stiffness_n_per_m: f64) -> f64 {
         2.0 * self.lumped.mesh_damping_ratio
             * (mean_stiffness_n_per_m * self.equivalent_mesh_mass_kg(pair)).sqrt()
@@ -80,7 +80,7 @@ mod tests {
         let case = Case::default();
         let pair = GearPair::from_case(&case.gear).unwrap();
         let p = DynamicParams::from_case(&case, &pair);
-        // NOTES.md: m_e = 0.506 kg for the paper's inertias.
+        // docs/PAPER_NOTES.md: m_e = 0.506 kg for the paper's inertias.
         assert!((p.equivalent_mesh_mass_kg(&pair) - 0.506).abs() < 5e-4);
         // 60 N m on the pinion: mesh force 60 / r_pb = 3361 N, both ways round.
         let f_from_brake = p.brake_torque_nm / pair.gear.base_radius_m;

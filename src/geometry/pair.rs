@@ -373,7 +373,7 @@ mod tests {
 
     #[test]
     fn paper_pair_matches_hand_values() {
-        // NOTES.md hand-derived values, quoted to 3 decimals (mm), 4 for the contact ratio.
+        // docs/PAPER_NOTES.md hand-derived values, quoted to 3 decimals (mm), 4 for the contact ratio.
         let p = paper();
         let mm = 1e3;
         assert!((p.pinion.base_radius_m * mm - 17.854).abs() < 5e-4);

@@ -8,9 +8,19 @@ use crate::io::{OutputDir, OutputError, RunMetadata, Table};
 use rayon::prelude::*;
 use std::path::PathBuf;
 
-/// Default plot size, px.
+/// Default plot size, px (one panel).
 pub const PLOT_W: u32 = 900;
 pub const PLOT_H: u32 = 420;
+
+/// Height of a figure of `panels` stacked panels, px: [`PLOT_H`] for one, 300 px a panel
+/// plus the title band for more.
+pub fn plot_height(panels: usize) -> u32 {
+    match u32::try_from(panels) {
+        Ok(0 | 1) => PLOT_H,
+        Ok(n) => 40 + 300 * n.min(20),
+        Err(_) => PLOT_H,
+    }
+}
 
 /// A figure and the file it goes to.
 pub struct FigureFile {
@@ -19,6 +29,12 @@ pub struct FigureFile {
     pub figure: Figure,
     pub width_px: u32,
     pub height_px: u32,
+    /// The table (its path in [`Artifacts::tables`]) that holds exactly the plotted
+    /// numbers, each curve's x and y a column in the plotted unit.
+    pub data: Option<String>,
+    /// The PNG, when already rendered (the run's report embeds each figure, and the
+    /// same bytes are written once).
+    pub png: Option<Vec<u8>>,
 }
 
 /// Everything one command writes.
@@ -40,9 +56,10 @@ impl Artifacts {
         self.tables.push((path.into(), t));
     }
 
-    /// Add a figure of the default size.
+    /// Add a figure of the default size for its number of panels.
     pub fn figure(&mut self, path: impl Into<String>, figure: Figure) {
-        self.figure_sized(path, figure, PLOT_W, PLOT_H);
+        let h = plot_height(figure.panels.len());
+        self.figure_sized(path, figure, PLOT_W, h);
     }
 
     pub fn figure_sized(&mut self, path: impl Into<String>, figure: Figure, w: u32, h: u32) {
@@ -51,7 +68,22 @@ impl Artifacts {
             figure,
             width_px: w,
             height_px: h,
+            data: None,
+            png: None,
         });
+    }
+
+    /// Add a figure of the default size and the table of its data, at `csv/STEM.csv` for a
+    /// figure `STEM.png`.
+    pub fn figure_with_data(&mut self, path: impl Into<String>, figure: Figure, data: Table) {
+        let path = path.into();
+        let stem = path.trim_end_matches(".png");
+        let csv = format!("csv/{}.csv", stem.rsplit('/').next().unwrap_or(stem));
+        self.figure(path.clone(), figure);
+        if let Some(f) = self.figures.last_mut() {
+            f.data = Some(csv.clone());
+        }
+        self.table(csv, data);
     }
 
     /// The table at `path`, if present.
@@ -81,15 +113,19 @@ pub enum WriteError {
     Format { path: String, reason: String },
 }
 
-/// Render figures in parallel (PNG bytes, in the order given).
+/// Render figures in parallel (PNG bytes, in the order given); figures rendered before
+/// give their bytes.
 pub fn render_figures(figures: &[FigureFile]) -> Result<Vec<Vec<u8>>, WriteError> {
     figures
         .par_iter()
-        .map(|f| {
-            render_png(&f.figure, f.width_px, f.height_px).map_err(|source| WriteError::Plot {
-                path: f.path.clone(),
-                source,
-            })
+        .map(|f| match &f.png {
+            Some(png) => Ok(png.clone()),
+            None => {
+                render_png(&f.figure, f.width_px, f.height_px).map_err(|source| WriteError::Plot {
+                    path: f.path.clone(),
+                    source,
+                })
+            }
         })
         .collect()
 }

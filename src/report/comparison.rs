@@ -1,7 +1,13 @@
 //! Our headline numbers beside the paper's (sections 4.1 and 4.2), with the reason for
-//! each deviation. The paper's values are quoted from its text (see NOTES.md's table).
+//! each deviation. Shown only for the paper's case (`case::is_paper_case`). The paper's
+//! values are quoted from its text (docs/PAPER_NOTES.md, "Published numbers"); every
+//! number in an explanation comes from the run.
 
+use super::case::{cycles_words, load_sentence, open_choices_words, poles_sentence};
+use super::wear::at_cycles;
 use crate::study::paper::PaperStudy;
+use crate::study::wear_loop::WearRun;
+use crate::study::Model;
 use serde_json::{json, Value};
 
 /// One compared quantity.
@@ -12,7 +18,7 @@ pub struct Compared {
     pub quantity: String,
     pub ours: f64,
     pub paper: f64,
-    pub explanation: &'static str,
+    pub explanation: String,
 }
 
 impl Compared {
@@ -21,12 +27,6 @@ impl Compared {
     }
 }
 
-const DTE_WHY: &str = "The paper gives neither the mesh damping, the speed boundary condition, the viscosity nor the hub bores; with ours (zeta = 0.05, motor slip law, 40 cP, 8/14 mm) the damped mesh pole (the resonance of the mesh with all damping included) sits at ~1250 Hz, zeta ~0.29, so the second harmonic of the 570 Hz mesh frequency lies close below it (docs/MODEL.md, Modes). Our max DTE barely moves with wear: Archard wear vanishes at the pitch point, inside the single-contact zone where the maximum occurs (docs/REPRODUCTION.md).";
-const VEL_WHY: &str = "The y velocity is dominated by the response of the damped mesh pole to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (NOTES.md). Our value scales with them as docs/REPRODUCTION.md shows.";
-const FORCE_WHY: &str = "In periodic steady state the mean mesh force is fixed by the load torque: r_gb mean(F) + mean friction moment = T_brk (docs/MODEL.md). Ours departs from 60 N m / r_pb = 3361 N only by the friction moment. The paper's 12 % rise of the mean with wear cannot come from a balanced drivetrain (NOTES.md).";
-const RATE_WHY: &str = "Ratio of the maximum pinion wear per cycle, dynamic to quasi-static, at 4e4 cycles. It follows the dynamic factor of the mesh force, which depends on the speed boundary condition and damping (docs/REPRODUCTION.md).";
-const ACC_WHY: &str = "Ratio of the maximum accumulated pinion wear depth at 4e4 cycles. Our dynamic loads exceed the static ones from the first cycle (dynamic factor ~1.6), so the accumulated ratio is close to the rate ratio; the paper's initial stage is 'quite approximate' (dynamic ~ static), which needs a smaller dynamic factor than our parameters give.";
-
 /// The paper's section 4.1 values at 0.1 / 0.5 / 1 um wear and 4.2 ratios.
 pub const PAPER_DTE_MAX_UM: [f64; 3] = [16.70, 18.08, 19.47];
 pub const PAPER_VEL_RMS_MM_S: [f64; 3] = [1.10, 1.19, 1.28];
@@ -34,62 +34,132 @@ pub const PAPER_FORCE_MEAN_N: [f64; 3] = [3311.2, 3431.9, 3697.6];
 pub const PAPER_RATIO_MAX_WEAR: f64 = 1.6;
 pub const PAPER_RATIO_ACCUMULATED_WEAR: f64 = 1.2;
 
-/// Ratios of the final state: (max wear rate ratio, max accumulated wear ratio).
+/// Largest per-cycle pinion wear of a run's final state, m.
+fn final_rate(r: &WearRun) -> f64 {
+    r.last().map_or(0.0, |x| {
+        x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
+    })
+}
+
+/// Load cycles both wear runs reached: the case's total unless a run stopped early
+/// (then the comparison is at the shorter run's end).
+pub fn cycles_reached(study: &PaperStudy) -> f64 {
+    let end = |r: &WearRun| r.cycles().last().copied().unwrap_or(0.0);
+    end(&study.dynamic).min(end(&study.quasi_static))
+}
+
+/// Ratios, dynamic to quasi-static: (max wear rate of each run's final state, max
+/// accumulated wear at the cycles both reached).
 pub fn wear_ratios(study: &PaperStudy) -> (f64, f64) {
-    let rate = |r: &crate::study::wear_loop::WearRun| {
-        r.last().map_or(0.0, |x| {
-            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-        })
-    };
-    let acc =
-        |r: &crate::study::wear_loop::WearRun| r.last().map_or(0.0, |x| x.wear.max_pinion_m());
+    let end = cycles_reached(study);
+    let acc = |r: &WearRun| at_cycles(&r.cycles(), &r.max_wear_pinion_m(), end);
     (
-        rate(&study.dynamic) / rate(&study.quasi_static),
+        final_rate(&study.dynamic) / final_rate(&study.quasi_static),
         acc(&study.dynamic) / acc(&study.quasi_static),
     )
 }
 
+/// Dynamic factor (max / mean mesh force) on new teeth: the first dynamic update.
+fn initial_dynamic_factor(study: &PaperStudy) -> f64 {
+    study
+        .dynamic
+        .records
+        .first()
+        .map_or(f64::NAN, |r| r.summary.dynamic_factor)
+}
+
+/// Why our numbers differ from the paper's, quantity by quantity, with this run's numbers.
+struct Why {
+    dte: String,
+    velocity: String,
+    force: String,
+    rate: String,
+    accumulated: String,
+}
+
+fn explanations(model: &Model, study: &PaperStudy) -> Why {
+    let poles = poles_sentence(model);
+    let cycles = cycles_words(cycles_reached(study));
+    let df = initial_dynamic_factor(study);
+    let states = &study.wear_states;
+    let dte_change = match (states.first(), states.last()) {
+        (Some(a), Some(b)) => format!(
+            "Our max DTE changes by {:+.2} um between {} and {} um of wear",
+            (b.summary.dte_max_m - a.summary.dte_max_m) * 1e6,
+            a.max_wear_um,
+            b.max_wear_um
+        ),
+        _ => "Our max DTE barely moves with wear".into(),
+    };
+    let paper_rise = 100.0 * (PAPER_FORCE_MEAN_N[2] / PAPER_FORCE_MEAN_N[0] - 1.0);
+    Why {
+        dte: format!(
+            "The paper gives neither the mesh damping, the speed boundary condition, the viscosity nor the hub bores; this run takes {}. {poles} {dte_change}: Archard wear vanishes at the pitch point, inside the single-contact zone where the maximum occurs (docs/REPRODUCTION.md).",
+            open_choices_words(model)
+        ),
+        velocity: format!(
+            "The y velocity is dominated by the response of the damped mesh pole to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."
+        ),
+        force: format!(
+            "In periodic steady state the mean mesh force is fixed by the load torque: r_gb mean(F) + mean friction moment = T_brk (docs/MODEL.md). {} Ours departs from it only by the friction moment. The paper's {paper_rise:.0} % rise of the mean with wear cannot come from a balanced drivetrain (docs/PAPER_NOTES.md).",
+            load_sentence(model)
+        ),
+        rate: format!(
+            "Ratio of the maximum pinion wear per cycle, dynamic to quasi-static, at {cycles} cycles. It follows the dynamic factor of the mesh force ({df:.2} on new teeth in this run), which depends on the speed boundary condition and damping (docs/REPRODUCTION.md)."
+        ),
+        accumulated: format!(
+            "Ratio of the maximum accumulated pinion wear depth at {cycles} cycles. Our dynamic loads exceed the static ones from the first cycle (dynamic factor {df:.2}), so the accumulated ratio is close to the rate ratio; the paper's initial stage is 'quite approximate' (dynamic ~ static), which needs a smaller dynamic factor than our parameters give."
+        ),
+    }
+}
+
 /// Every compared number.
-pub fn compare(study: &PaperStudy) -> Vec<Compared> {
+pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
+    let why = explanations(model, study);
     let mut out = Vec::new();
-    for (i, s) in study.wear_states.iter().enumerate() {
+    for (i, s) in study.wear_states.iter().enumerate().take(3) {
         let w = s.max_wear_um;
         out.push(Compared {
             key: format!("dte_max_um_at_{w}um_wear"),
             quantity: format!("max DTE at {w} um wear (um)"),
             ours: s.summary.dte_max_m * 1e6,
             paper: PAPER_DTE_MAX_UM[i],
-            explanation: DTE_WHY,
+            explanation: why.dte.clone(),
         });
         out.push(Compared {
             key: format!("velocity_y_pinion_rms_mm_per_s_at_{w}um_wear"),
             quantity: format!("RMS of dy_p/dt at {w} um wear (mm/s)"),
             ours: s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
             paper: PAPER_VEL_RMS_MM_S[i],
-            explanation: VEL_WHY,
+            explanation: why.velocity.clone(),
         });
         out.push(Compared {
             key: format!("mesh_force_mean_n_at_{w}um_wear"),
             quantity: format!("mean mesh force at {w} um wear (N)"),
             ours: s.summary.mesh_force_mean_n,
             paper: PAPER_FORCE_MEAN_N[i],
-            explanation: FORCE_WHY,
+            explanation: why.force.clone(),
         });
     }
     let (rate, acc) = wear_ratios(study);
+    let cycles = cycles_words(cycles_reached(study));
     out.push(Compared {
         key: "ratio_max_wear_rate_dynamic_to_static".into(),
-        quantity: "max pinion wear depth per cycle, dynamic / quasi-static, 4e4 cycles (-)".into(),
+        quantity: format!(
+            "max pinion wear depth per cycle, dynamic / quasi-static, {cycles} cycles (-)"
+        ),
         ours: rate,
         paper: PAPER_RATIO_MAX_WEAR,
-        explanation: RATE_WHY,
+        explanation: why.rate,
     });
     out.push(Compared {
         key: "ratio_max_wear_dynamic_to_static".into(),
-        quantity: "max accumulated pinion wear, dynamic / quasi-static, 4e4 cycles (-)".into(),
+        quantity: format!(
+            "max accumulated pinion wear, dynamic / quasi-static, {cycles} cycles (-)"
+        ),
         ours: acc,
         paper: PAPER_RATIO_ACCUMULATED_WEAR,
-        explanation: ACC_WHY,
+        explanation: why.accumulated,
     });
     out
 }

@@ -2,7 +2,7 @@
 //! series, the path of contact, the modes, the spectrum, their figures and the summary.
 
 use super::artifacts::{um, Artifacts};
-use super::figures::{panel, single, spectrum_panel, Curve};
+use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
 use crate::dynamics::response::DynamicResponse;
@@ -109,6 +109,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
 
     let f_mesh = model.params.mesh_frequency_hz(&model.pair);
     let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
+    let time = "time (ms)";
     if has_velocity {
         let spec = velocity_y_spectrum(r);
         a.table(
@@ -118,83 +119,92 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
                 .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
         );
         let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
-        a.figure(
+        a.figure_with_data(
             "velocity_y_pinion.png",
             single(
-                &format!("Pinion y velocity ({label})"),
+                &format!("Pinion velocity in y ({label})"),
                 panel(
-                    "time (ms)",
-                    "dy_p/dt (mm/s)",
-                    vec![Curve::new("", t_ms.clone(), vy)],
+                    time,
+                    "pinion y velocity (mm/s)",
+                    vec![Curve::new("", t_ms.clone(), vy.clone())],
                 ),
             ),
+            Table::new()
+                .col("time_ms", t_ms.clone())
+                .col("velocity_y_pinion_mm_per_s", vy),
         );
-        a.figure(
+        let (f, amp) = spectrum_rows(&spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh);
+        a.figure_with_data(
             "spectrum_velocity_y_pinion.png",
             single(
-                &format!("Spectrum of dy_p/dt ({label})"),
-                spectrum_panel(
-                    "amplitude (mm/s)",
-                    &spec.frequency_hz,
-                    &ms(&spec.amplitude),
-                    5.0 * f_mesh,
-                    f_mesh,
-                ),
+                &format!("Spectrum of the pinion y velocity ({label})"),
+                spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
             ),
+            Table::new()
+                .col("frequency_hz", f)
+                .col("velocity_y_pinion_amplitude_mm_per_s", amp),
         );
     }
-    a.figure(
+    let dte_um = um(&s.dte_m);
+    a.figure_with_data(
         "dte.png",
         single(
             &format!("Dynamic transmission error ({label})"),
             panel(
-                "time (ms)",
-                "DTE (um)",
-                vec![Curve::new("", t_ms.clone(), um(&s.dte_m))],
+                time,
+                "dynamic transmission error (µm)",
+                vec![Curve::new("", t_ms.clone(), dte_um.clone())],
             ),
         ),
+        Table::new()
+            .col("time_ms", t_ms.clone())
+            .col("dte_um", dte_um),
     );
-    a.figure(
+    a.figure_with_data(
         "mesh_force.png",
         single(
             &format!("Mesh force ({label})"),
             panel(
-                "time (ms)",
-                "F (N)",
+                time,
+                "mesh force (N)",
                 vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
             ),
         ),
+        Table::new()
+            .col("time_ms", t_ms)
+            .col("mesh_force_n", s.mesh_force_n.clone()),
     );
     let rho_mm: Vec<f64> = p.iter().map(|x| x.rho1_m * 1e3).collect();
-    a.figure(
+    let along = "pinion roll distance along the path of contact (mm)";
+    let mu: Vec<f64> = p.iter().map(|x| x.friction_coefficient).collect();
+    a.figure_with_data(
         "friction_coefficient.png",
         single(
             &format!("Friction coefficient along the path of contact ({label})"),
             panel(
-                "pinion roll distance rho1 (mm)",
-                "mu (-)",
-                vec![Curve::new(
-                    "",
-                    rho_mm.clone(),
-                    p.iter().map(|x| x.friction_coefficient).collect(),
-                )],
+                along,
+                "friction coefficient (-)",
+                vec![Curve::new("", rho_mm.clone(), mu.clone())],
             ),
         ),
+        Table::new()
+            .col("rho1_mm", rho_mm.clone())
+            .col("friction_coefficient", mu),
     );
-    a.figure(
+    let friction: Vec<f64> = p.iter().map(|x| x.friction_n).collect();
+    a.figure_with_data(
         "friction_force.png",
         single(
             &format!("Friction force along the path of contact ({label})"),
             panel(
-                "pinion roll distance rho1 (mm)",
-                "f (N)",
-                vec![Curve::new(
-                    "",
-                    rho_mm,
-                    p.iter().map(|x| x.friction_n).collect(),
-                )],
+                along,
+                "friction force (N)",
+                vec![Curve::new("", rho_mm.clone(), friction.clone())],
             ),
         ),
+        Table::new()
+            .col("rho1_mm", rho_mm)
+            .col("friction_force_n", friction),
     );
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);

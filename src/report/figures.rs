@@ -1,6 +1,8 @@
 //! Builders of the paper's figures (2, 4-13) from results. Pure: data in, `Figure` out.
 
-use super::plot::{Figure, LineStyle, Panel, PanelKind, Series};
+use super::plot::{
+    sequential_color, ColorBar, Figure, LineStyle, Marker, Panel, PanelKind, Series,
+};
 
 /// A labelled curve (x, y), already in display units.
 pub struct Curve {
@@ -20,8 +22,14 @@ impl Curve {
 }
 
 const STYLES: [LineStyle; 3] = [LineStyle::Solid, LineStyle::Dashed, LineStyle::Dotted];
+const MARKERS: [Marker; 4] = [
+    Marker::Circle,
+    Marker::Square,
+    Marker::Triangle,
+    Marker::Cross,
+];
 
-/// One panel of curves, cycling line styles.
+/// One panel of curves, cycling line styles (and palette colours).
 pub fn panel(x_label: &str, y_label: &str, curves: Vec<Curve>) -> Panel {
     Panel {
         x_label: x_label.into(),
@@ -34,8 +42,53 @@ pub fn panel(x_label: &str, y_label: &str, curves: Vec<Curve>) -> Panel {
                 x: c.x,
                 y: c.y,
                 style: STYLES[i % STYLES.len()],
+                ..Default::default()
             })
             .collect(),
+        ..Default::default()
+    }
+}
+
+/// A panel of curves through a few points each: every point drawn as a marker (a
+/// different shape per curve) on the curve's line.
+pub fn points_panel(x_label: &str, y_label: &str, curves: Vec<Curve>) -> Panel {
+    let mut p = panel(x_label, y_label, curves);
+    for (i, s) in p.series.iter_mut().enumerate() {
+        s.marker = MARKERS[i % MARKERS.len()];
+    }
+    p
+}
+
+/// A panel of many curves, each coloured by a value on a sequential scale shown as a
+/// colour bar; `scale` is (what the value is, with unit; value at the bottom; at the top).
+/// The curves have no legend entries.
+pub fn scale_panel(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    curves: Vec<(f64, Curve)>,
+    scale: (&str, f64, f64),
+) -> Panel {
+    let (label, min, max) = scale;
+    let span = if max > min { max - min } else { 1.0 };
+    Panel {
+        title: title.into(),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        series: curves
+            .into_iter()
+            .map(|(v, c)| Series {
+                x: c.x,
+                y: c.y,
+                color: Some(sequential_color((v - min) / span)),
+                ..Default::default()
+            })
+            .collect(),
+        color_bar: (min.is_finite() && max.is_finite()).then(|| ColorBar {
+            label: label.into(),
+            min,
+            max,
+        }),
         ..Default::default()
     }
 }
@@ -48,34 +101,47 @@ pub fn single(title: &str, p: Panel) -> Figure {
     }
 }
 
-/// A one-sided amplitude spectrum as stems, with mesh-harmonic markers.
-pub fn spectrum_panel(
-    y_label: &str,
-    freq_hz: &[f64],
-    amp: &[f64],
-    f_max_hz: f64,
-    mesh_hz: f64,
-) -> Panel {
-    let keep: Vec<usize> = (0..freq_hz.len())
-        .filter(|i| freq_hz[*i] <= f_max_hz)
-        .collect();
+/// Relative tolerance on a frequency limit: a bin computed as k / T lands on h f_mesh
+/// only up to round-off (~1e-15 relative), far below this.
+const FREQ_TOL: f64 = 1e-9;
+
+/// The rows of a spectrum up to `f_max_hz` (what [`spectrum_panel`] shows).
+pub fn spectrum_rows(freq_hz: &[f64], amp: &[f64], f_max_hz: f64) -> (Vec<f64>, Vec<f64>) {
+    freq_hz
+        .iter()
+        .zip(amp)
+        .filter(|(f, _)| **f <= f_max_hz * (1.0 + FREQ_TOL))
+        .map(|(f, a)| (*f, *a))
+        .unzip()
+}
+
+/// A one-sided amplitude spectrum as stems, with the mesh harmonics in its range marked.
+pub fn spectrum_panel(y_label: &str, freq_hz: &[f64], amp: &[f64], mesh_hz: f64) -> Panel {
+    let f_max_hz = freq_hz.iter().fold(0.0_f64, |a, b| a.max(*b)) * (1.0 + FREQ_TOL);
     let mut vlines = Vec::new();
     let mut h = 1;
     while mesh_hz > 0.0 && h as f64 * mesh_hz <= f_max_hz && h <= 8 {
-        vlines.push((h as f64 * mesh_hz, format!("{h} MF")));
+        vlines.push((h as f64 * mesh_hz, harmonic_label(h)));
         h += 1;
     }
     Panel {
         x_label: "frequency (Hz)".into(),
         y_label: y_label.into(),
         series: vec![Series {
-            name: String::new(),
-            x: keep.iter().map(|i| freq_hz[*i]).collect(),
-            y: keep.iter().map(|i| amp[*i]).collect(),
-            style: LineStyle::Solid,
+            x: freq_hz.to_vec(),
+            y: amp.to_vec(),
+            ..Default::default()
         }],
         vlines,
-        log_y: false,
         kind: PanelKind::Bars,
+        ..Default::default()
+    }
+}
+
+/// "mesh frequency", "2 x mesh frequency", ... for harmonic `h` (1-based).
+pub fn harmonic_label(h: usize) -> String {
+    match h {
+        1 => "mesh frequency".into(),
+        _ => format!("{h} × mesh frequency"),
     }
 }

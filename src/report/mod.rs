@@ -2,6 +2,7 @@
 //! command line and the Python binding share: summaries, tables, figures, the HTML report.
 
 pub mod artifacts;
+pub mod case;
 pub mod comparison;
 pub mod dynamics;
 pub mod figures;
@@ -10,6 +11,7 @@ pub mod modes;
 pub mod paper;
 pub mod plot;
 pub mod prognostics;
+pub mod run_report;
 pub mod stiffness;
 pub mod sweep_figure;
 pub mod wear;

@@ -16,6 +16,7 @@ fn series(name: &str, x: Vec<f64>, y: Vec<f64>, style: LineStyle) -> Series {
         x,
         y,
         style,
+        ..Default::default()
     }
 }
 

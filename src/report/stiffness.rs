@@ -4,7 +4,7 @@
 
 use super::artifacts::Artifacts;
 use super::figures::{panel, Curve};
-use super::plot::Figure;
+use super::plot::{Figure, Panel};
 use crate::contact::load_sharing::pedrero_shares;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::quasi_static::equilibrium;
@@ -93,30 +93,48 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
     (t, v)
 }
 
-/// The paper's Figure 2 (single-pair and total mesh stiffness over pinion rotation).
+/// The paper's Figure 2: single-pair and total mesh stiffness over one mesh period, and
+/// the quasi-static transmission error, drawn from the columns of `t` (`stiffness_table`).
 pub fn figure2(model: &Model, t: &Table) -> Figure {
-    let x = t.columns[0].clone();
-    let scale = |c: &Vec<f64>| c.iter().map(|v| v * 1e-8).collect::<Vec<_>>();
+    let col = |name: &str| {
+        t.index_of(name)
+            .map(|i| t.columns[i].clone())
+            .unwrap_or_default()
+    };
+    let x = col("pinion_angle_deg");
+    let angle = "pinion angle within a mesh period (deg)";
+    let source = if model.case.stiffness.fillet_foundation {
+        "potential energy method with fillet foundation"
+    } else {
+        "potential energy method"
+    };
     Figure {
-        title: "Fig. 2: time-varying mesh stiffness (potential energy method)".into(),
+        title: format!("Time-varying mesh stiffness ({source})"),
         panels: vec![
             panel(
-                "pinion angle within a mesh period (deg)",
-                "stiffness (1e8 N/m)",
+                angle,
+                "mesh stiffness (N/m)",
                 vec![
-                    Curve::new("total k_m", x.clone(), scale(&t.columns[5])),
-                    Curve::new("pair 0", x.clone(), scale(&t.columns[3])),
-                    Curve::new("pair 1", x.clone(), scale(&t.columns[4])),
+                    Curve::new(
+                        "all pairs in contact",
+                        x.clone(),
+                        col("stiffness_total_n_per_m"),
+                    ),
+                    Curve::new("first pair", x.clone(), col("stiffness_pair0_n_per_m")),
+                    Curve::new("second pair", x.clone(), col("stiffness_pair1_n_per_m")),
                 ],
             ),
-            panel(
-                "pinion angle within a mesh period (deg)",
-                &format!(
-                    "quasi-static TE (um) at {:.0} N",
+            Panel {
+                title: format!(
+                    "quasi-static transmission error at a mean mesh force of {:.0} N",
                     model.params.brake_torque_nm / model.pair.gear.base_radius_m
                 ),
-                vec![Curve::new("", x, t.columns[10].clone())],
-            ),
+                ..panel(
+                    angle,
+                    "transmission error (µm)",
+                    vec![Curve::new("", x, col("quasi_static_te_um"))],
+                )
+            },
         ],
     }
 }
@@ -190,6 +208,9 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
         ..Default::default()
     };
     a.figure("mesh_stiffness.png", figure2(model, &table));
+    if let Some(f) = a.figures.last_mut() {
+        f.data = Some("mesh_stiffness.csv".into());
+    }
     a.table("mesh_stiffness.csv", table);
     a
 }

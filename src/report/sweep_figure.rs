@@ -50,7 +50,7 @@ pub fn sweep_figure(
         };
         let others: Vec<String> = (0..t.keys.len())
             .filter(|i| *i != kx)
-            .map(|i| format!("{}={}", t.keys[i], r.values[i]))
+            .map(|i| value_words(&t.keys[i], &r.values[i]))
             .collect();
         let others = others.join(", ");
         let name = match (r.branch, others.is_empty()) {
@@ -81,12 +81,8 @@ pub fn sweep_figure(
         .iter()
         .map(|c| (c.input_speed_hz, c.label(several)))
         .collect();
-    let x_label = if x_key == SPEED_KEY {
-        "input speed (Hz)".to_string()
-    } else {
-        x_key.to_string()
-    };
-    let mut p1 = panel(&x_label, "max DTE (um)", c_dte);
+    let x_label = axis_words(x_key);
+    let mut p1 = panel(&x_label, "max DTE (µm)", c_dte);
     let mut p2 = panel(&x_label, "dynamic factor (-)", c_df);
     for p in [&mut p1, &mut p2] {
         for (s, style) in p.series.iter_mut().zip(&styles) {
@@ -99,13 +95,13 @@ pub fn sweep_figure(
     let poles: Vec<String> = poles_hz.iter().map(|f| format!("{f:.0} Hz")).collect();
     let title = if x_key == SPEED_KEY && !poles.is_empty() {
         format!(
-            "Speed sweep (markers: k x z1 x f_in = damped mesh pole {}, k = 1..4)",
+            "Speed sweep (markers: k × mesh frequency = damped mesh pole {}, k = 1..4)",
             poles.join(", ")
         )
     } else if x_key == SPEED_KEY {
         "Speed sweep".to_string()
     } else {
-        format!("Sweep of {x_key}")
+        format!("Sweep of the {}", key_words(x_key).0)
     };
     Some(Figure {
         title,
@@ -125,5 +121,71 @@ pub fn figure_for(t: &SweepTable, marks: &[Crossing], poles_hz: &[f64]) -> Optio
     }
 }
 
+/// Unit suffixes of case keys (the config's naming rule) and their symbols, longest first
+/// so that `_n_s_per_m` is not read as `_m`.
+const UNITS: [(&str, &str); 14] = [
+    ("_nm_s_per_rad", "N m s/rad"),
+    ("_nm_per_rad", "N m/rad"),
+    ("_n_s_per_m", "N s/m"),
+    ("_m2_per_n", "m²/N"),
+    ("_n_per_m", "N/m"),
+    ("_kg_m2", "kg m²"),
+    ("_gpa", "GPa"),
+    ("_deg", "deg"),
+    ("_kg", "kg"),
+    ("_nm", "N m"),
+    ("_hz", "Hz"),
+    ("_mm", "mm"),
+    ("_um", "µm"),
+    ("_cp", "cP"),
+];
+
+/// A case key in words and its unit: "operating.load_torque_nm" -> ("load torque", "N m");
+/// a key without a unit suffix keeps an empty unit.
+pub fn key_words(key: &str) -> (String, &'static str) {
+    let field = key.rsplit('.').next().unwrap_or(key);
+    let (stem, unit) = UNITS
+        .iter()
+        .find_map(|(suffix, unit)| field.strip_suffix(suffix).map(|s| (s, *unit)))
+        .unwrap_or((field, ""));
+    (stem.replace('_', " "), unit)
+}
+
+/// "load torque 40 N m" for the key and a value of it.
+fn value_words(key: &str, value: &str) -> String {
+    match key_words(key) {
+        (name, "") => format!("{name} {value}"),
+        (name, unit) => format!("{name} {value} {unit}"),
+    }
+}
+
+/// The axis label of a key: "input speed (Hz)".
+fn axis_words(key: &str) -> String {
+    match key_words(key) {
+        (name, "") => name,
+        (name, unit) => format!("{name} ({unit})"),
+    }
+}
+
 /// Size of the two-panel sweep figure, px (taller than the one-panel default).
 pub const SWEEP_FIGURE_PX: (u32, u32) = (900, 640);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_read_as_words_with_their_units() {
+        assert_eq!(axis_words(SPEED_KEY), "input speed (Hz)");
+        assert_eq!(
+            value_words("operating.load_torque_nm", "40"),
+            "load torque 40 N m"
+        );
+        let damping = "dynamics.bearing_damping_pinion_n_s_per_m";
+        assert_eq!(axis_words(damping), "bearing damping pinion (N s/m)");
+        assert_eq!(
+            value_words("dynamics.mesh_damping_ratio", "0.1"),
+            "mesh damping ratio 0.1"
+        );
+    }
+}

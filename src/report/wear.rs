@@ -2,7 +2,7 @@
 //! the profiles of every update, Fig. 11-13 and the summary.
 
 use super::artifacts::Artifacts;
-use super::figures::{panel, single, Curve};
+use super::figures::{panel, points_panel, scale_panel, single, Curve};
 use super::plot::Figure;
 use crate::io::Table;
 use crate::study::wear_loop::{UpdateRecord, WearRun};
@@ -101,69 +101,95 @@ pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
     ]
 }
 
-/// Figures 11-13 from the runs present.
-pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<(&'static str, Figure)> {
+/// A figure of the wear study, its file stem and the table of exactly its data.
+pub struct WearFigure {
+    pub stem: &'static str,
+    pub figure: Figure,
+    pub table: Table,
+}
+
+/// Figures 11-13 from the runs present, each with its own table: the curves are drawn
+/// from the table's columns, so a figure shows what its CSV holds.
+pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<WearFigure> {
     let rho_mm: Vec<f64> = model.grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
-    let mut f11_force = Vec::new();
-    let mut f11_wear = Vec::new();
-    let mut f12 = Vec::new();
+    let along = "pinion roll distance along the path of contact (mm)";
+    let rate = "wear rate (µm per 1000 cycles)";
+    let (mut t11, mut load, mut wear) =
+        (Table::new().col("rho1_mm", rho_mm.clone()), vec![], vec![]);
+    let radius_mm = model.grid.radius_pinion_m.iter().map(|x| x * 1e3).collect();
+    let mut t12 = Table::new()
+        .col("rho1_mm", rho_mm.clone())
+        .col("pinion_radius_mm", radius_mm);
+    let mut panels12 = Vec::new();
+    let mut t13 = Table::new();
     let mut f13 = Vec::new();
     for run in runs {
-        let m = run.mode.name();
+        let (m, label) = (run.mode.name(), run.mode.label());
         if let Some(r0) = run.records.first() {
-            f11_force.push(Curve::new(
-                m,
-                r0.path_rho1_m.iter().map(|x| x * 1e3).collect(),
-                r0.path_load_n.clone(),
-            ));
-            f11_wear.push(Curve::new(
-                m,
-                rho_mm.clone(),
-                r0.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
-            ));
+            let x: Vec<f64> = r0.path_rho1_m.iter().map(|x| x * 1e3).collect();
+            let w: Vec<f64> = r0.increment_pinion_m.iter().map(|x| x * 1e9).collect();
+            t11 = t11
+                .col(&format!("path_rho1_mm_{m}"), x.clone())
+                .col(&format!("pair_load_n_{m}"), r0.path_load_n.clone())
+                .col(&format!("wear_rate_um_per_kcycle_{m}"), w.clone());
+            load.push(Curve::new(label, x, r0.path_load_n.clone()));
+            wear.push(Curve::new(label, rho_mm.clone(), w));
         }
-        for (i, r) in run.records.iter().enumerate() {
-            if i == 0 || i + 1 == run.records.len() || i % 2 == 0 {
-                f12.push(Curve::new(
-                    format!("{m} {:.0} cycles", r.wear.cycles),
-                    rho_mm.clone(),
-                    r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
-                ));
-            }
+        let mut curves = Vec::new();
+        for r in &run.records {
+            let w: Vec<f64> = r.increment_pinion_m.iter().map(|x| x * 1e9).collect();
+            let cycles = r.wear.cycles;
+            let name = format!(
+                "wear_rate_um_per_kcycle_{m}_at_{}_cycles",
+                crate::io::format_number(cycles)
+            );
+            t12 = t12.col(&name, w.clone());
+            curves.push((cycles, Curve::new("", rho_mm.clone(), w)));
         }
-        f13.push(Curve::new(
-            m,
-            run.cycles(),
-            run.max_wear_pinion_m().iter().map(|x| x * 1e6).collect(),
-        ));
+        panels12.push((label, curves));
+        let max_um: Vec<f64> = run.max_wear_pinion_m().iter().map(|x| x * 1e6).collect();
+        t13 = t13
+            .col(&format!("cycles_{m}"), run.cycles())
+            .col(&format!("max_wear_pinion_um_{m}"), max_um.clone());
+        f13.push(Curve::new(label, run.cycles(), max_um));
     }
-    let x = "pinion roll distance rho1 (mm)";
+    // One colour scale for both panels of Fig. 12: the same colour is the same cycle count.
+    let all = panels12.iter().flat_map(|p| p.1.iter().map(|c| c.0));
+    let (lo, hi) = all.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+        (a.min(c), b.max(c))
+    });
+    let panels12 = panels12
+        .into_iter()
+        .map(|(label, curves)| scale_panel(label, along, rate, curves, ("load cycles", lo, hi)))
+        .collect();
     vec![
-        (
-            "fig11_force_and_wear_initial.png",
-            Figure {
-                title: "Fig. 11: pair load and wear rate along the pinion profile, initial stage"
-                    .into(),
+        WearFigure {
+            stem: "fig11_force_and_wear_initial",
+            figure: Figure {
+                title: "Pair load and wear rate along the pinion profile, new teeth".into(),
                 panels: vec![
-                    panel(x, "pair load (N)", f11_force),
-                    panel(x, "wear rate (um per 1000 cycles)", f11_wear),
+                    panel(along, "pair load (N)", load),
+                    panel(along, rate, wear),
                 ],
             },
-        ),
-        (
-            "fig12_wear_rate_evolution.png",
-            single(
-                "Fig. 12: wear rate distribution of the pinion as wear proceeds",
-                panel(x, "wear rate (um per 1000 cycles)", f12),
+            table: t11,
+        },
+        WearFigure {
+            stem: "fig12_wear_rate_evolution",
+            figure: Figure {
+                title: "Wear rate along the pinion profile as wear proceeds".into(),
+                panels: panels12,
+            },
+            table: t12,
+        },
+        WearFigure {
+            stem: "fig13_max_accumulated_wear",
+            figure: single(
+                "Maximum accumulated pinion wear depth",
+                points_panel("pinion load cycles", "maximum pinion wear depth (µm)", f13),
             ),
-        ),
-        (
-            "fig13_max_accumulated_wear.png",
-            single(
-                "Fig. 13: maximum accumulated pinion wear depth",
-                panel("cycles", "max wear depth (um)", f13),
-            ),
-        ),
+            table: t13,
+        },
     ]
 }
 
@@ -228,8 +254,8 @@ pub fn wear_artifacts(model: &Model, runs: &[&WearRun]) -> Artifacts {
             a.table(name, t);
         }
     }
-    for (name, fig) in wear_figures(model, runs) {
-        a.figure(name, fig);
+    for f in wear_figures(model, runs) {
+        a.figure_with_data(format!("{}.png", f.stem), f.figure, f.table);
     }
     let find = |m: WearMode| runs.iter().copied().find(|r| r.mode == m);
     let mut v = wear_summary(find(WearMode::Dynamic), find(WearMode::QuasiStatic));

@@ -354,7 +354,7 @@ mod tests {
         // Hand evaluation: q' = C1 + C2/19 + C3/31, C_B = 0.975 (h_fP = 1.25 m_n).
         let single = 0.8 * 0.975 / (0.04723 + 0.15551 / 19.0 + 0.25791 / 31.0);
         assert!((s.single_n_per_mm_um - single).abs() < 1e-12);
-        // NOTES.md eps_alpha = 1.6022 to 4 decimals (+-5e-5): c_gamma_alpha to 0.75 c' 5e-5.
+        // docs/PAPER_NOTES.md eps_alpha = 1.6022 to 4 decimals (+-5e-5): c_gamma_alpha to 0.75 c' 5e-5.
         let mesh_notes = single * (0.75 * 1.6022 + 0.25);
         assert!((s.mesh_alpha_n_per_mm_um - mesh_notes).abs() < 0.75 * single * 5e-5);
         eprintln!(

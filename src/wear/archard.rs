@@ -4,9 +4,9 @@
 //! Andersson, Wear 207 (1997) 16): while a profile point passes through the Hertz band
 //! of width 2a it slides over the mate by s_p = 2a |u_p - u_g| / u_p (pinion) and
 //! s_g = 2a |u_p - u_g| / u_g (gear), with p the Hertz pressure at its contact (eq. 15,
-//! standard form p0 = sqrt(w E*/(pi R)), NOTES.md). One pinion cycle (revolution) loads
+//! standard form p0 = sqrt(w E*/(pi R)), docs/PAPER_NOTES.md). One pinion cycle (revolution) loads
 //! each pinion tooth once and each gear tooth z1/z2 times on average, hence the factor
-//! z1/z2 on the gear (eq. 17, NOTES.md: eq. 16 has a typo).
+//! z1/z2 on the gear (eq. 17, docs/PAPER_NOTES.md: eq. 16 has a typo).
 
 use crate::dynamics::response::{interpolate_path, PathSample};
 use crate::geometry::ProfileGrid;

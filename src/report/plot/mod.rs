@@ -1,0 +1,234 @@
+//! Plotting layer on `plotters`: a `Figure` of vertically stacked `Panel`s of `Series`,
+//! rendered to PNG bytes / files or SVG text. With plotters' `ab_glyph` feature there is no
+//! system font lookup, and drawing text panics unless a font has been registered, so
+//! DejaVu Sans (`dejavu` crate) is registered once, thread-safely. Bad points are dropped;
+//! degenerate ranges get a width.
+//!
+//! Legends never cover data: a legend goes into a corner of the plot area that the data
+//! leave free, or else into a band right of it (`draw.rs`); [`layout`] returns where the
+//! renderer put every legend and which pixels the data cover, so tests check what is drawn.
+
+mod draw;
+pub mod layout;
+mod legend;
+
+use std::path::{Path, PathBuf};
+use std::sync::{atomic::AtomicU64, atomic::Ordering, OnceLock};
+
+use plotters::prelude::*;
+use plotters::style::register_font;
+
+use draw::draw_figure;
+pub use layout::{sequential_color, PanelLayout, Rect};
+
+/// Largest accepted image side in pixels (keeps the RGB buffer below ~200 MB and `w*h` in u32).
+pub const MAX_SIDE_PX: u32 = 8192;
+
+/// Font family name under which DejaVu Sans is registered; plotters' own defaults
+/// (tick labels) also ask for "sans-serif".
+const FONT: &str = "sans-serif";
+
+/// Smallest panel (w, h) in pixels: the axis label areas (70 px left, 40 px below) plus
+/// margins, with room left to plot. Smaller areas make plotters' layout arithmetic overflow.
+pub const MIN_PANEL_PX: (u32, u32) = (120, 80);
+
+/// Height reserved for a title (20 px font plus padding) when checking the minimum size.
+const TITLE_PX: u32 = 40;
+
+/// Height added to a panel with its own title (14 px font plus padding).
+const PANEL_TITLE_PX: u32 = 24;
+
+/// Fixed palette (Tableau 10 order), cycled by series index within a panel.
+#[rustfmt::skip]
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180), RGBColor(255, 127, 14), RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40), RGBColor(148, 103, 189), RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194), RGBColor(127, 127, 127),
+];
+
+/// Errors of the plotting layer (never a panic).
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// `got` and `min` are (width, height) in pixels.
+    #[error("image size {got:?} px: this figure needs >= {min:?}, <= {MAX_SIDE_PX} a side")]
+    Size { got: (u32, u32), min: (u32, u32) },
+    #[error("the embedded DejaVu font could not be registered with plotters")]
+    Font,
+    #[error("drawing failed: {0}")]
+    Draw(String),
+    #[error("I/O error on {}: {}", .0.display(), .1)]
+    Io(PathBuf, #[source] std::io::Error),
+}
+
+/// Line style of one series.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LineStyle {
+    #[default]
+    Solid,
+    Dashed,
+    Dotted,
+    /// Markers only, no connecting line (circles unless the series names a marker).
+    Points,
+}
+
+/// Marker drawn at every point of a series (with or without its line).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Marker {
+    #[default]
+    None,
+    Circle,
+    Square,
+    Triangle,
+    Cross,
+}
+
+/// How the series of a panel are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PanelKind {
+    #[default]
+    Lines,
+    /// Vertical stems from the baseline (0, or the bottom of a log axis) to each point: spectra.
+    Bars,
+}
+
+/// One named data series; `x` and `y` are paired up to the shorter length.
+#[derive(Debug, Clone, Default)]
+pub struct Series {
+    /// Legend entry; empty = not in the legend.
+    pub name: String,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub style: LineStyle,
+    pub marker: Marker,
+    /// Colour (r, g, b); `None` takes the palette colour of the series' index.
+    pub color: Option<[u8; 3]>,
+}
+
+/// A colour scale for series coloured by a value (see [`sequential_color`]): drawn as a
+/// bar with its range and label right of the plot area.
+#[derive(Debug, Clone, Default)]
+pub struct ColorBar {
+    /// What the colour stands for, with unit (e.g. "load cycles").
+    pub label: String,
+    /// Values at the bottom (t = 0) and top (t = 1) of the scale.
+    pub min: f64,
+    pub max: f64,
+}
+
+/// One chart: axes, series and labelled vertical markers.
+#[derive(Debug, Clone, Default)]
+pub struct Panel {
+    /// Small heading above the chart; empty = none.
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+    /// Vertical markers `(x, label)`, drawn dashed grey across the panel.
+    pub vlines: Vec<(f64, String)>,
+    /// Logarithmic y axis; points with y outside [1e-100, 1e100] (e.g. y <= 0) are skipped.
+    pub log_y: bool,
+    pub kind: PanelKind,
+    pub color_bar: Option<ColorBar>,
+}
+
+/// A figure: a title over panels stacked vertically with equal heights.
+#[derive(Debug, Clone, Default)]
+pub struct Figure {
+    pub title: String,
+    pub panels: Vec<Panel>,
+}
+
+/// Render `fig` as PNG bytes in memory (e.g. for base64 embedding in HTML).
+///
+/// plotters encodes PNG only when saving to a path (its `image` dependency is not ours to
+/// name), so this draws to a uniquely named temporary file, reads it back and removes it.
+pub fn render_png(fig: &Figure, width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
+    check_size(fig, width, height)?;
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    let name = format!("gearwear-plot-{}-{n}.png", std::process::id());
+    let tmp = TempFile(std::env::temp_dir().join(name));
+    draw_figure(
+        &BitMapBackend::new(&tmp.0, (width, height)).into_drawing_area(),
+        fig,
+    )?;
+    std::fs::read(&tmp.0).map_err(|e| PlotError::Io(tmp.0.clone(), e))
+}
+
+/// Render `fig` as PNG and write it to `path` (any extension).
+pub fn save_png(fig: &Figure, path: &Path, width: u32, height: u32) -> Result<(), PlotError> {
+    write_file(path, &render_png(fig, width, height)?)
+}
+
+/// Where the renderer puts each panel's plot area, legend, colour bar and marker labels,
+/// and the pixels its data cover, for an image of `width` x `height` (the same as
+/// [`render_png`] and [`render_svg`] draw: the layout comes from drawing the figure).
+pub fn layout(fig: &Figure, width: u32, height: u32) -> Result<Vec<PanelLayout>, PlotError> {
+    check_size(fig, width, height)?;
+    let mut svg = String::new();
+    let layouts = draw_figure(
+        &SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area(),
+        fig,
+    );
+    layouts
+}
+
+/// Render `fig` as an SVG document.
+pub fn render_svg(fig: &Figure, width: u32, height: u32) -> Result<String, PlotError> {
+    check_size(fig, width, height)?;
+    let mut svg = String::new();
+    draw_figure(
+        &SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area(),
+        fig,
+    )?;
+    Ok(svg)
+}
+
+/// Render `fig` as SVG and write it to `path`.
+pub fn save_svg(fig: &Figure, path: &Path, width: u32, height: u32) -> Result<(), PlotError> {
+    write_file(path, render_svg(fig, width, height)?.as_bytes())
+}
+
+/// Removes the temporary PNG on every exit path of `render_png`.
+struct TempFile(PathBuf);
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+fn write_file(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
+    std::fs::write(path, bytes).map_err(|e| PlotError::Io(path.to_path_buf(), e))
+}
+
+/// Smallest image (width, height) in pixels that can hold `fig`: a title band plus
+/// `MIN_PANEL_PX` per panel (and `PANEL_TITLE_PX` per panel title). Panels share the
+/// height equally, so the tallest need counts for each.
+pub fn min_size(fig: &Figure) -> (u32, u32) {
+    let n = u32::try_from(fig.panels.len()).unwrap_or(u32::MAX);
+    let title = if fig.title.is_empty() { 0 } else { TITLE_PX };
+    let titled = fig.panels.iter().any(|p| !p.title.is_empty());
+    let panel_h = MIN_PANEL_PX.1 + if titled { PANEL_TITLE_PX } else { 0 };
+    let panels_h = n.saturating_mul(panel_h);
+    let w = if n > 0 { MIN_PANEL_PX.0 } else { 1 };
+    (w, title.saturating_add(panels_h).max(1))
+}
+
+fn check_size(fig: &Figure, width: u32, height: u32) -> Result<(), PlotError> {
+    let min = min_size(fig);
+    let ok = (min.0..=MAX_SIDE_PX).contains(&width) && (min.1..=MAX_SIDE_PX).contains(&height);
+    ok.then_some(()).ok_or(PlotError::Size {
+        got: (width, height),
+        min,
+    })
+}
+
+/// Registers DejaVu Sans (regular + bold) once per process; safe from any thread.
+fn ensure_font() -> Result<(), PlotError> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| {
+        register_font(FONT, FontStyle::Normal, dejavu::sans::regular()).is_ok()
+            && register_font(FONT, FontStyle::Bold, dejavu::sans::bold()).is_ok()
+    });
+    ok.then_some(()).ok_or(PlotError::Font)
+}

@@ -1,0 +1,334 @@
+//! The text of `gearwear run`: the HTML report's sections and the headline on standard
+//! output. For the paper's case, the comparison with the paper's numbers; for any other
+//! case, a summary of the case that was run. Every number comes from the run.
+
+use super::case::{
+    cycles_words, load_sentence, load_words, mesh_frequency_hz, poles_sentence, static_mesh_force_n,
+};
+use super::comparison::{cycles_reached, Compared};
+use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
+use crate::io::RunMetadata;
+use crate::study::paper::PaperStudy;
+use crate::study::wear_loop::WearRun;
+use crate::study::Model;
+use serde_json::{json, Value};
+
+/// Maximum accumulated pinion wear at the end of a run, um.
+fn final_wear_um(r: &WearRun) -> f64 {
+    r.last().map_or(f64::NAN, |x| x.wear.max_pinion_m() * 1e6)
+}
+
+/// Largest per-cycle pinion wear of a run's final state, um per 1000 cycles.
+fn final_rate_um_per_kcycle(r: &WearRun) -> f64 {
+    r.last().map_or(f64::NAN, |x| {
+        x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9
+    })
+}
+
+/// The key results of a run (new teeth, end of the wear study), display units in the names.
+pub fn results_json(study: &PaperStudy) -> Value {
+    let new = study.dynamic.records.first().map(|r| &r.summary);
+    let (d, q) = (&study.dynamic, &study.quasi_static);
+    json!({
+        "new_teeth": new.map(|s| json!({
+            "dte_max_um": s.dte_max_m * 1e6,
+            "mesh_force_mean_n": s.mesh_force_mean_n,
+            "mesh_force_max_n": s.mesh_force_max_n,
+            "dynamic_factor": s.dynamic_factor,
+            "velocity_y_pinion_rms_mm_per_s": s.velocity_y_pinion_rms_m_per_s * 1e3,
+        })),
+        "max_wear_pinion_um": {"dynamic": final_wear_um(d), "quasi_static": final_wear_um(q)},
+        "max_wear_rate_pinion_um_per_kcycle": {
+            "dynamic": final_rate_um_per_kcycle(d),
+            "quasi_static": final_rate_um_per_kcycle(q),
+        },
+        "ratio_max_wear_dynamic_to_static": final_wear_um(d) / final_wear_um(q),
+    })
+}
+
+/// "z = 25/50, m = 3 mm, b = 30 mm".
+fn pair_words(model: &Model) -> String {
+    let g = &model.case.gear;
+    format!(
+        "z = {}/{}, m = {} mm, b = {} mm",
+        g.teeth_pinion, g.teeth_gear, g.module_mm, g.face_width_mm
+    )
+}
+
+/// The run's headline for the paper's case: the comparison, one line per number.
+pub fn comparison_headline(rows: &[Compared]) -> String {
+    let line = |r: &Compared| {
+        format!(
+            "{:<74} ours {:>10.4}  paper {:>8.3}  ({:+.1} %)",
+            r.quantity,
+            r.ours,
+            r.paper,
+            100.0 * r.relative_deviation()
+        )
+    };
+    rows.iter().map(line).collect::<Vec<_>>().join("\n")
+}
+
+/// The run's headline for any other case: the case, the new teeth, the end of the study.
+pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
+    let c = &model.case;
+    let mut lines = vec![format!(
+        "case: {}, {}, {} Hz input, mesh frequency {:.0} Hz, {} cycles",
+        pair_words(model),
+        load_words(c),
+        c.operating.input_speed_hz,
+        mesh_frequency_hz(model),
+        cycles_words(c.wear.total_cycles)
+    )];
+    if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
+        lines.push(format!(
+            "new teeth: max DTE {:.4} um, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
+            s.dte_max_m * 1e6,
+            s.mesh_force_mean_n,
+            s.dynamic_factor,
+            s.velocity_y_pinion_rms_m_per_s * 1e3
+        ));
+    }
+    let (d, q) = (
+        final_wear_um(&study.dynamic),
+        final_wear_um(&study.quasi_static),
+    );
+    lines.push(format!(
+        "after {} cycles: maximum pinion wear {d:.4} um dynamic, {q:.4} um quasi-static (ratio {:.4})",
+        cycles_words(cycles_reached(study)),
+        d / q
+    ));
+    lines.join("\n")
+}
+
+/// "1 dynamic update", "4 quasi-static updates".
+fn updates_words(n: usize, mode: &str) -> String {
+    let s = if n == 1 { "" } else { "s" };
+    format!("{n} {mode} update{s}")
+}
+
+fn value_row(quantity: &str, value: String) -> Vec<String> {
+    vec![quantity.to_string(), value]
+}
+
+/// The table that takes the comparison's place for a case that is not the paper's.
+fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
+    let c = &model.case;
+    let mut rows = vec![
+        value_row("gear pair", pair_words(model)),
+        value_row(
+            "pressure angle (deg)",
+            format!("{}", c.gear.pressure_angle_deg),
+        ),
+        value_row(
+            "contact ratio (-)",
+            format!("{:.4}", model.pair.contact_ratio),
+        ),
+        value_row("load", load_words(c)),
+        value_row(
+            "input speed (Hz)",
+            format!("{}", c.operating.input_speed_hz),
+        ),
+        value_row(
+            "mesh frequency (Hz)",
+            format!("{:.1}", mesh_frequency_hz(model)),
+        ),
+        value_row(
+            "mean mesh force without friction (N)",
+            format!("{:.1}", static_mesh_force_n(model)),
+        ),
+        value_row(
+            "mean mesh stiffness (N/m)",
+            html::format_value(model.mesh.mean_stiffness_n_per_m()),
+        ),
+        value_row(
+            "wear coefficient (m^2/N)",
+            format!("{:e}", c.wear.coefficient_m2_per_n),
+        ),
+        value_row("load cycles", cycles_words(c.wear.total_cycles)),
+    ];
+    if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
+        rows.push(value_row(
+            "max DTE, new teeth (um)",
+            html::format_value(s.dte_max_m * 1e6),
+        ));
+        rows.push(value_row(
+            "mean mesh force, new teeth (N)",
+            html::format_value(s.mesh_force_mean_n),
+        ));
+        rows.push(value_row(
+            "dynamic factor (max / mean mesh force), new teeth (-)",
+            html::format_value(s.dynamic_factor),
+        ));
+        rows.push(value_row(
+            "RMS of dy_p/dt, new teeth (mm/s)",
+            html::format_value(s.velocity_y_pinion_rms_m_per_s * 1e3),
+        ));
+    }
+    let cycles = cycles_words(cycles_reached(study));
+    let (d, q) = (&study.dynamic, &study.quasi_static);
+    rows.push(value_row(
+        &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (um)"),
+        format!(
+            "{} / {}",
+            html::format_value(final_wear_um(d)),
+            html::format_value(final_wear_um(q))
+        ),
+    ));
+    rows.push(value_row(
+        &format!("max pinion wear per 1000 cycles at {cycles} cycles, dynamic / quasi-static (um)"),
+        format!(
+            "{} / {}",
+            html::format_value(final_rate_um_per_kcycle(d)),
+            html::format_value(final_rate_um_per_kcycle(q))
+        ),
+    ));
+    TableBlock {
+        caption: "The case that was run and its key results.".into(),
+        header: vec!["quantity".into(), "value".into()],
+        rows,
+        highlight_col: None,
+    }
+}
+
+/// The dynamic response at the three wear states, as a table.
+fn states_table(study: &PaperStudy) -> TableBlock {
+    let f = html::format_value;
+    TableBlock {
+        caption: "Dynamic response at the three wear states.".into(),
+        header: [
+            "max pinion wear (um)",
+            "roughness (um)",
+            "max DTE (um)",
+            "RMS of dy_p/dt (mm/s)",
+            "mean mesh force (N)",
+            "dynamic factor (-)",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: study
+            .wear_states
+            .iter()
+            .map(|s| {
+                vec![
+                    f(s.max_wear_um),
+                    f(s.roughness_um),
+                    f(s.summary.dte_max_m * 1e6),
+                    f(s.summary.velocity_y_pinion_rms_m_per_s * 1e3),
+                    f(s.summary.mesh_force_mean_n),
+                    f(s.summary.dynamic_factor),
+                ]
+            })
+            .collect(),
+        highlight_col: None,
+    }
+}
+
+/// The HTML report of a run. `rows` is the paper comparison (empty for a case that is not
+/// the paper's: then the case summary takes its place).
+pub fn build_report(
+    model: &Model,
+    study: &PaperStudy,
+    rows: &[Compared],
+    figs: Vec<FigureBlock>,
+    meta: &RunMetadata,
+) -> Report {
+    let paper = !rows.is_empty();
+    let c = &model.case;
+    let mut it = figs.into_iter();
+    let mut take = |n: usize| it.by_ref().take(n).collect::<Vec<_>>();
+    let source = "<em>A Dynamic Wear Prediction Model for Studying the Interactions between Surface Wear and Dynamic Response of Spur Gears</em>, Coatings 2022, 12(9), 1250";
+    let case_words = format!(
+        "{}, {} Hz input (mesh frequency {:.0} Hz), {}, wear coefficient {:.2e} m²/N, {} cycles",
+        pair_words(model),
+        c.operating.input_speed_hz,
+        mesh_frequency_hz(model),
+        load_words(c),
+        c.wear.coefficient_m2_per_n,
+        cycles_words(c.wear.total_cycles)
+    );
+    let (title, intro, first) = if paper {
+        let table = html::comparison_table(
+            "Our headline numbers beside the paper's (sections 4.1 and 4.2). Deviations are discussed in docs/REPRODUCTION.md.",
+            &rows.iter().map(|r| ComparisonRow { quantity: r.quantity.clone(), ours: r.ours, paper: r.paper, explanation: r.explanation.clone() }).collect::<Vec<_>>(),
+        );
+        (
+            "gearwear: dynamic wear prediction of the paper's spur pair".to_string(),
+            format!("<p>Reproduction of section 4 of {source}: {}. The model as implemented and every choice where the paper is silent or wrong: docs/MODEL.md.</p>", html::escape(&case_words)),
+            Section { heading: "Headline numbers".into(), tables: vec![table], ..Default::default() },
+        )
+    } else {
+        (
+            format!("gearwear: dynamic wear prediction, {}", pair_words(model)),
+            format!("<p>Dynamic wear study of a spur pair with the tribo-dynamic wear model of {source}, as gearwear implements it (docs/MODEL.md): {}.</p>", html::escape(&case_words)),
+            Section { heading: "The case and its key results".into(), tables: vec![case_table(model, study)], ..Default::default() },
+        )
+    };
+    let tag = |s: &str| {
+        if paper {
+            format!(" (paper section {s})")
+        } else {
+            String::new()
+        }
+    };
+    let method = if c.stiffness.fillet_foundation {
+        "Potential energy method with the Sainsot fillet foundation"
+    } else {
+        "Potential energy method without the fillet foundation"
+    };
+    let states = &study.wear_states;
+    let list = |f: &dyn Fn(&crate::study::paper::WearStateResult) -> f64| {
+        states
+            .iter()
+            .map(|s| format!("{}", f(s)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let (d, q) = (&study.dynamic, &study.quasi_static);
+    Report {
+        title,
+        intro_html: intro,
+        sections: vec![
+            first,
+            Section {
+                heading: format!("Mesh stiffness{}", tag("2")),
+                paragraphs: vec![format!(
+                    "{method}: k_m from {:.3e} to {:.3e} N/m, mean {:.3e} N/m; contact ratio {:.4}.",
+                    model.mesh.min_stiffness_n_per_m(),
+                    model.mesh.max_stiffness_n_per_m(),
+                    model.mesh.mean_stiffness_n_per_m(),
+                    model.pair.contact_ratio
+                )],
+                figures: take(1),
+                tables: vec![],
+            },
+            Section {
+                heading: format!("Effects of wear on the dynamic response{}", tag("4.1")),
+                paragraphs: vec![
+                    format!(
+                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} um, with the composite roughness the case's law gives at that depth ({} um).",
+                        list(&|s| s.max_wear_um),
+                        list(&|s| (s.roughness_um * 1e4).round() / 1e4),
+                    ),
+                    format!("{} {}", load_sentence(model), poles_sentence(model)),
+                ],
+                figures: take(7),
+                tables: vec![states_table(study)],
+            },
+            Section {
+                heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
+                paragraphs: vec![format!(
+                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} um dynamic and {} um quasi-static.",
+                    cycles_words(cycles_reached(study)),
+                    updates_words(d.records.len().saturating_sub(1), "dynamic"),
+                    updates_words(q.records.len().saturating_sub(1), "quasi-static"),
+                    html::format_value(final_wear_um(d)),
+                    html::format_value(final_wear_um(q)),
+                )],
+                figures: take(3),
+                tables: vec![],
+            },
+        ],
+        footer: format!("gearwear {} | case sha256 {} | command: run", meta.version, meta.case_sha256),
+    }
+}
