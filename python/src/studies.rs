@@ -203,6 +203,12 @@ pub fn run<'py>(
     for (name, bytes) in &a.documents {
         docs.set_item(name, PyBytes::new(py, bytes))?;
     }
+    // The run's figures are rendered once, for its report: the same PNG bytes.
+    for f in &a.figures {
+        if let Some(png) = &f.png {
+            docs.set_item(&f.path, PyBytes::new(py, png))?;
+        }
+    }
     let t = to_py(py, a)?;
     let mut items: Vec<Bound<'py, PyAny>> = t.iter().collect();
     items.push(docs.into_any());

@@ -47,7 +47,12 @@ def test_to_pandas():
     assert isinstance(df, pd.DataFrame)
     assert list(df.columns) == d.tables["timeseries"].columns
     np.testing.assert_array_equal(df["dte_um"].to_numpy(), d.dte_um)
-    assert set(d.to_pandas()) == {"timeseries", "path", "modes", "modes_undamped", "spectrum"}
+    # Every table the CLI writes, by file stem: the data tables and each figure's own
+    # (csv/dte.csv as "dte").
+    names = {"timeseries", "path", "modes", "modes_undamped", "spectrum"}
+    names |= {"dte", "mesh_force", "velocity_y_pinion", "spectrum_velocity_y_pinion",
+              "friction_coefficient", "friction_force"}
+    assert set(d.to_pandas()) == names
     s = gw.sweep(gw.Case.paper(), {"operating.input_speed_hz": [25, 30]})
     assert list(s.to_pandas()["operating.input_speed_hz"]) == [25.0, 30.0]
     assert d.tables["path"].to_numpy().shape == (d.tables["path"].n_rows, len(d.tables["path"]))
