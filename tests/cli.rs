@@ -2,35 +2,9 @@
 //! input answered with a message naming the key and value, exit code 2, and no output.
 
 use std::path::Path;
-use std::process::{Command, Output};
+mod common;
 
-fn gearwear(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gearwear"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// A bad input must exit 2, name what is wrong, and leave no output directory.
-fn assert_rejected(args: &[&str], needles: &[&str]) {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("out");
-    let mut all: Vec<&str> = args.to_vec();
-    let out_s = out.to_str().unwrap().to_owned();
-    all.extend(["--out", &out_s]);
-    let o = gearwear(&all);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
-    }
-    assert!(!out.exists(), "{args:?}: output written despite the error");
-    assert!(!err.contains("panicked"), "{err}");
-}
+use common::{gearwear, rejected as assert_rejected, stderr};
 
 #[test]
 fn bad_inputs_exit_with_code_2_and_a_clear_message() {

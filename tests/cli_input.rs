@@ -2,36 +2,9 @@
 //! input, each exiting with code 2, naming the key, writing nothing; and the input forms
 //! that are accepted on purpose.
 
-use std::process::{Command, Output};
+mod common;
 
-fn gearwear(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gearwear"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// `args` (a command and its options, `--out` added) must exit 2, with a message holding
-/// every needle, no panic, and no output folder.
-fn rejected(args: &[&str], needles: &[&str]) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("out");
-    let mut all = args.to_vec();
-    all.extend(["--out", out.to_str().unwrap()]);
-    let o = gearwear(&all);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
-    }
-    assert!(!err.contains("panicked"), "{err}");
-    assert!(!out.exists(), "{args:?}: output written despite the error");
-    err
-}
+use common::{gearwear, rejected, stderr};
 
 /// `args` must succeed; returns stderr.
 fn accepted(args: &[&str]) -> String {

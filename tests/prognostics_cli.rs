@@ -3,18 +3,9 @@
 //! promised files, and a sharded prediction merged back to the unsharded one.
 
 use std::path::Path;
-use std::process::{Command, Output};
+mod common;
 
-fn gearwear(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gearwear"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use common::{gearwear, rejected as assert_rejected, stderr};
 
 /// A cheap case: coarser numerics than the paper's defaults (the commands' plumbing is
 /// under test here, not the physics) and a prior of k over [k0/2, 2 k0].
@@ -26,23 +17,6 @@ fn write(dir: &Path, name: &str, text: &str) -> String {
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();
     p.to_str().unwrap().to_owned()
-}
-
-/// Exit 2, every needle in the message, no output directory.
-fn assert_rejected(args: &[&str], needles: &[&str]) {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("out");
-    let mut all = args.to_vec();
-    let out_s = out.to_str().unwrap().to_owned();
-    all.extend(["--out", &out_s]);
-    let o = gearwear(&all);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
-    }
-    assert!(!out.exists(), "{args:?}: output written despite the error");
-    assert!(!err.contains("panicked"), "{err}");
 }
 
 #[test]

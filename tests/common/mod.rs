@@ -1,4 +1,4 @@
-//! Helpers shared by the sweep tests (through the binary).
+//! Helpers shared by the tests that run the binary.
 #![allow(dead_code)]
 
 use std::path::Path;
@@ -47,4 +47,27 @@ pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
         .map(|x| x.unwrap().iter().map(str::to_owned).collect())
         .collect();
     (h, rows)
+}
+
+/// Standard error as text.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// `args` (a command and its options, `--out` added) must exit 2 with a message holding
+/// every needle, no panic, and no output folder; returns the message.
+pub fn rejected(args: &[&str], needles: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut all = args.to_vec();
+    all.extend(["--out", out.to_str().unwrap()]);
+    let o = gearwear(&all);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: message lacks `{n}`: {err}");
+    }
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(!out.exists(), "{args:?}: output written despite the error");
+    err
 }
