@@ -178,6 +178,16 @@ fn a_quasi_static_checkpoint_copied_over_the_dynamic_one_is_refused() {
     )
     .unwrap();
     refused(&out, "not a dynamic");
+    // With the header forged to say "dynamic", the records still give it away: a
+    // quasi-static update has no periodic end state to warm-start the next one from.
+    let ck = out.join("checkpoint_dynamic.jsonl");
+    let text = std::fs::read_to_string(&ck).unwrap();
+    let (head, rest) = text.split_once('\n').unwrap();
+    assert!(head.contains("quasi_static"), "{head}");
+    let (_, json) = head.split_once(' ').unwrap();
+    let json = json.replace("quasi_static", "dynamic");
+    std::fs::write(&ck, format!("{} {json}\n{rest}", sha(&json))).unwrap();
+    refused(&out, "periodic end state");
 }
 
 /// Start `args`, kill it (SIGKILL) once `ready(out)` holds, then return.

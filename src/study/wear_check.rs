@@ -7,10 +7,12 @@
 //! increase and stay within the study's total; wear and per-cycle increments are finite
 //! and non-negative; each record's wear is the previous record's wear advanced by the
 //! previous increment over the cycles between them; the roughness is the case's law at
-//! the record's wear depth.
+//! the record's wear depth; a dynamic record holds its periodic end state (16 finite
+//! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
 
 use super::model::Model;
-use super::wear_loop::WearRun;
+use super::wear_loop::{WearMode, WearRun};
+use crate::dynamics::model::NSTATE;
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
 /// floating-point operations, so only the rounding of the cycle difference (exact for
@@ -56,6 +58,22 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
         }
         if r.path_rho1_m.len() != r.path_load_n.len() {
             return Err(at("path positions and loads differ in length".into()));
+        }
+        // A dynamic update keeps the periodic state its response ended on (the next
+        // update's warm start); a quasi-static one has none.
+        match (run.mode, &r.end_state) {
+            (WearMode::Dynamic, Some(y)) if y.len() == NSTATE && y.iter().all(|v| v.is_finite()) => {}
+            (WearMode::Dynamic, _) => {
+                return Err(at(format!(
+                    "a dynamic update must hold its periodic end state ({NSTATE} finite numbers): this is not a dynamic run's record"
+                )))
+            }
+            (WearMode::QuasiStatic, None) => {}
+            (WearMode::QuasiStatic, Some(_)) => {
+                return Err(at(
+                    "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one".into(),
+                ))
+            }
         }
         if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
             return Err(at(format!(
