@@ -120,23 +120,34 @@ fn impossible_geometry_is_refused_in_the_users_terms() {
 
 #[test]
 fn sainsot_fit_outside_its_range_needs_the_opt_in() {
-    // 25 teeth: theta_f = 0.1205 rad at the fillet junction, just above the fit's 0.12.
+    // 10 teeth with x = 0.5: theta_f = 0.301 rad at the fillet junction, beyond the 0.25
+    // rad to which the fit is extrapolated without the opt-in.
+    let ten = [
+        "stiffness",
+        "--set",
+        "gear.teeth_pinion=10",
+        "--set",
+        "gear.profile_shift_pinion=0.5",
+    ];
     rejected(
-        &["stiffness", "--set", "gear.teeth_pinion=25"],
-        &["stiffness.allow_fillet_extrapolation", "theta_f"],
+        &ten,
+        &["stiffness.allow_fillet_extrapolation", "theta_f = 0.3013"],
+    );
+    // 25 teeth: theta_f = 0.1205 rad, just above the fit's 0.12: extrapolated with a
+    // warning, no opt-in needed.
+    let warn = accepted(&["stiffness", "--set", "gear.teeth_pinion=25"]);
+    assert!(
+        warn.contains("warning") && warn.contains("theta_f = 0.1205"),
+        "{warn}"
     );
     // h_f = 16.5 / 1 = 16.5 > 7, on the built-in pair (whose theta_f is exempt).
     rejected(
         &["stiffness", "--set", "gear.hub_bore_radius_pinion_mm=1"],
         &["stiffness.allow_fillet_extrapolation", "h_f"],
     );
-    let warn = accepted(&[
-        "stiffness",
-        "--set",
-        "gear.teeth_pinion=25",
-        "--set",
-        "stiffness.allow_fillet_extrapolation=true",
-    ]);
+    let mut opted = ten.to_vec();
+    opted.extend(["--set", "stiffness.allow_fillet_extrapolation=true"]);
+    let warn = accepted(&opted);
     assert!(
         warn.contains("warning") && warn.contains("theta_f"),
         "{warn}"

@@ -42,9 +42,6 @@ fn the_report_of_another_pair_describes_that_pair() {
         "operating.load_torque_nm=100",
         // A short wear study (one block) keeps the test well under a second.
         "wear.total_cycles=3000",
-        // The pinion's theta_f (0.1205 rad) lies just outside Sainsot's fitted range:
-        // a user opts in to the extrapolation by name.
-        "stiffness.allow_fillet_extrapolation=true",
         // The parameters the geometry gives, as for a pair of one's own.
         "gear.hub_bore_radius_pinion_mm=derived",
         "gear.hub_bore_radius_gear_mm=derived",

@@ -57,8 +57,6 @@ CASES = {
             "gear.face_width_mm": 30,
             "operating.input_speed_hz": 40,
             "operating.load_torque_nm": 100,
-            # Its pinion's theta_f (0.1205 rad) lies just past Sainsot's fitted 0.12.
-            "stiffness.allow_fillet_extrapolation": True,
         }
     ),
 }

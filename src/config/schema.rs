@@ -251,7 +251,7 @@ pub const KEYS: &[KeySpec] = &[
       "-"),
     k("stiffness.fillet_root_angle", "-", Choice(&["fillet_junction", "flank_extension"]), "Where Sainsot's root half angle theta_f (and S_f = 2 r_f theta_f) is taken: where the root fillet meets the root circle (Sainsot et al. 2004; Chen & Shao 2011; default), or where the flank's extension meets it (gearwear before issue 10). docs/MODEL.md.",
       "-"),
-    k("stiffness.allow_fillet_extrapolation", "-", Bool, "Use Sainsot's fit outside its published range (1.4 <= h_f <= 7, 0.01 <= theta_f <= 0.12 rad), with a warning; false makes it an error. The built-in pair's pinion is exempt (docs/MODEL.md).",
+    k("stiffness.allow_fillet_extrapolation", "-", Bool, "Use Sainsot's fit outside its published range (1.4 <= h_f <= 7, 0.01 <= theta_f <= 0.12 rad), with a warning; false makes it an error, except for theta_f up to 0.25 rad (pinions of fewer than 26 teeth), which is extrapolated with a warning (docs/MODEL.md).",
       "-"),
     k("stiffness.table_points_per_mesh_period", "-", Int(16, 100_000), "Samples of the mesh-stiffness table over one mesh period (cubic interpolation in between).",
       "16 points resolve the curve to ~1e-4; beyond 1e5 only round-off changes."),

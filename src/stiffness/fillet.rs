@@ -40,6 +40,15 @@ pub const SAINSOT_COEFFICIENTS: [[f64; 6]; 4] = [
 pub const H_F_RANGE: (f64, f64) = (1.4, 7.0);
 /// Validity range of theta_f, rad.
 pub const THETA_F_RANGE_RAD: (f64, f64) = (0.01, 0.12);
+/// Largest theta_f, rad, to which the fit is extrapolated without the opt-in (with a
+/// warning). At the fillet junction theta_f ~ 3/z, so every pinion of fewer than 26 teeth
+/// lies beyond the fitted 0.12; measured on the paper's pair with derived bores, the
+/// potential-energy mean stiffness over ISO 6336's c_gamma_alpha moves smoothly from 1.11
+/// (40 teeth, inside the fit) through 1.125 (25 teeth, 0.1205 rad), 1.137 (17 teeth,
+/// 0.177 rad) and 1.178 (15 teeth with x = 0.2, 0.201 rad) to 1.217 (12 teeth with
+/// x = 0.4, 0.251 rad): no sign of the polynomial running away. Beyond 0.25 rad (about
+/// twice the fitted span) the opt-in is required.
+pub const THETA_F_EXTRAPOLATION_LIMIT_RAD: f64 = 0.25;
 
 /// [L*, M*, P*, Q*] at (h_f, theta_f).
 pub fn sainsot_coefficients(h_f: f64, theta_f_rad: f64) -> [f64; 4] {
@@ -196,8 +205,10 @@ impl FilletSettings {
     /// Why `f` cannot be used under these settings, if it cannot.
     pub(crate) fn refusal(&self, f: &FilletFoundation, name: &str) -> Option<String> {
         let refuse_h = f.h_f_outside_fit && !self.allow_extrapolation;
+        let mild = (THETA_F_RANGE_RAD.0..=THETA_F_EXTRAPOLATION_LIMIT_RAD)
+            .contains(&f.root_half_angle_rad);
         let refuse_t = f.theta_f_outside_fit
-            && !(self.allow_extrapolation || self.allow_theta_f_extrapolation);
+            && !(mild || self.allow_extrapolation || self.allow_theta_f_extrapolation);
         let mut what = Vec::new();
         if refuse_h {
             what.push(format!(
@@ -207,7 +218,7 @@ impl FilletSettings {
         }
         if refuse_t {
             what.push(format!(
-                "theta_f = {:.4} rad (taken {}, `stiffness.fillet_root_angle`) is outside [{}, {}]",
+                "theta_f = {:.4} rad (taken {}, `stiffness.fillet_root_angle`) is outside [{}, {}] and beyond {} rad, as far as it is extrapolated without the opt-in",
                 f.root_half_angle_rad,
                 match self.root_angle {
                     FilletRootAngle::FilletJunction =>
@@ -216,7 +227,8 @@ impl FilletSettings {
                         "where the flank's extension meets the root circle",
                 },
                 THETA_F_RANGE_RAD.0,
-                THETA_F_RANGE_RAD.1
+                THETA_F_RANGE_RAD.1,
+                THETA_F_EXTRAPOLATION_LIMIT_RAD
             ));
         }
         (!what.is_empty()).then(|| {
