@@ -3,111 +3,23 @@
 
 use super::args::CalibrateArgs;
 use super::output::{build_model, finish, open_out};
+use super::progress::count_bar;
 use super::CliError;
-use crate::io::{RunMetadata, Table};
+use crate::io::RunMetadata;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, CalibrationSettings};
 use crate::prognostics::check::{check_calibration, theta_at_k_quantile, worst_ratio};
 use crate::prognostics::likelihood::noise_scales;
-use crate::prognostics::prior::{Prior, Theta};
+use crate::prognostics::prior::Prior;
 use crate::prognostics::{parse_observations, Quantity, Surrogate};
-use crate::report::html::{render, FigureBlock, Report};
-use crate::report::plot::{render_png, Figure};
+use crate::report::html::{render, Report};
 use crate::report::prognostics::{calibration_section, posterior_figure, predictive_figure};
+use crate::report::prognostics_tables::{bands_table, figure, samples_table, thetas_json};
 use crate::report::Artifacts;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use serde_json::{json, Value};
-use std::io::IsTerminal;
+use serde_json::json;
 
 /// Cycle counts of the posterior band.
 const BAND_POINTS: usize = 101;
-/// Failed parameter sets listed in summary.json (all are counted).
-const LISTED_FAILURES: usize = 100;
-
-/// The posterior samples CSV: `sample` and every parameter (fixed ones included), the
-/// format `prognostics::samples::read_samples` reads.
-fn samples_table(samples: &[Theta]) -> Table {
-    let mut t = Table::new().col("sample", (0..samples.len()).map(|i| i as f64).collect());
-    for (i, p) in crate::prognostics::prior::PARAMETERS.iter().enumerate() {
-        t = t.col(p.column(), samples.iter().map(|s| s[i]).collect());
-    }
-    t
-}
-
-/// A progress bar on stderr, hidden when stderr is not a terminal.
-pub(super) fn progress(len: u64, what: &str) -> ProgressBar {
-    let target = if std::io::stderr().is_terminal() {
-        ProgressDrawTarget::stderr()
-    } else {
-        ProgressDrawTarget::hidden()
-    };
-    let pb = ProgressBar::with_draw_target(Some(len), target);
-    let template =
-        format!("{what:>16} [{{bar:30}}] {{pos}}/{{len}} (elapsed {{elapsed}}, eta {{eta}})");
-    pb.set_style(
-        ProgressStyle::with_template(&template)
-            .unwrap_or_else(|_| ProgressStyle::default_bar())
-            .progress_chars("=> "),
-    );
-    pb
-}
-
-/// A multi-panel figure as PNG bytes (260 px per panel).
-pub(super) fn png(fig: &Figure) -> anyhow::Result<Vec<u8>> {
-    let h = (60 + 260 * fig.panels.len().max(1)) as u32;
-    Ok(render_png(fig, 900, h)?)
-}
-
-/// The PNG staged as `name` in `art` and returned as a report figure.
-pub(super) fn figure(
-    art: &mut Artifacts,
-    name: &str,
-    fig: &Figure,
-    caption: &str,
-    csv: Option<&str>,
-) -> anyhow::Result<FigureBlock> {
-    let bytes = png(fig)?;
-    art.documents.push((name.to_string(), bytes.clone()));
-    Ok(FigureBlock {
-        caption: caption.into(),
-        png: bytes,
-        csv_name: csv.map(String::from),
-    })
-}
-
-/// Bands as one CSV: cycles, then `<quantity>_p05` ... `_p95` per quantity.
-pub(super) fn bands_table(bands: &[(Quantity, Band)]) -> Table {
-    let mut t = Table::new().col(
-        "cycles",
-        bands.first().map_or_else(Vec::new, |b| b.1.cycles.clone()),
-    );
-    for (q, b) in bands {
-        for (i, p) in ["p05", "p25", "p50", "p75", "p95"].iter().enumerate() {
-            t = t.col(&format!("{}_{p}", q.name()), b.percentiles[i].clone());
-        }
-        t = t.col(
-            &format!("{}_members_with_value", q.name()),
-            b.valid.iter().map(|v| *v as f64).collect(),
-        );
-    }
-    t
-}
-
-/// Parameter sets as JSON objects (at most LISTED_FAILURES of them).
-pub(super) fn thetas_json(t: &[Theta]) -> Value {
-    json!(t
-        .iter()
-        .take(LISTED_FAILURES)
-        .map(|x| json!({"wear_coefficient_m2_per_n": x[0], "roughness_scale": x[1], "load_torque_nm": x[2]}))
-        .collect::<Vec<_>>())
-}
-
-/// Most reference runs a chain can hold (progress bar length; chains usually stop
-/// earlier).
-pub(super) fn max_chain(p: &Prior) -> u64 {
-    let k = &p.params[0];
-    ((k.hi / k.lo).ln() / crate::prognostics::surrogate::K_NODE_RATIO.ln()).ceil() as u64 + 1
-}
 
 pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
@@ -134,7 +46,7 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
         "calibrate: {n_ref} reference wear run(s) on {} threads",
         rayon::current_num_threads()
     );
-    let pb = progress(n_ref as u64, "reference runs");
+    let pb = count_bar(n_ref as u64, "reference runs");
     let sur = Surrogate::build(&case, &prior, obs.max_cycles(), nodes, &|| pb.inc(1))
         .map_err(|e| CliError::Input(e.0))?;
     pb.finish_and_clear();
@@ -151,7 +63,7 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
         walkers: a.walkers,
         steps: a.steps,
     };
-    let pb = progress(
+    let pb = count_bar(
         if prior.free().len() <= 2 {
             8
         } else {

@@ -16,6 +16,7 @@ mod stops;
 mod sweep_cmd;
 mod sweep_continuation;
 mod sweep_merge_cmd;
+mod sweep_records;
 mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};

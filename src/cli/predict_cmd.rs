@@ -3,8 +3,8 @@
 //! Thin: reads the inputs, calls `prognostics`, writes what it returns.
 
 use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
-use super::calibrate_cmd::{bands_table, figure, max_chain, progress, thetas_json};
 use super::output::{build_model, open_out};
+use super::progress::count_bar;
 use super::CliError;
 use crate::io::{OutputDir, RunMetadata, Table};
 use crate::prognostics::check::{check_prediction, PredictionCheck};
@@ -14,9 +14,11 @@ use crate::prognostics::predict::{
 };
 use crate::prognostics::prior::{Prior, Theta};
 use crate::prognostics::samples::read_samples;
+use crate::prognostics::surrogate::max_chain_runs;
 use crate::prognostics::{Quantity, Surrogate};
 use crate::report::html::{render, Report};
 use crate::report::prognostics::{fan_figure, life_figure, prediction_section};
+use crate::report::prognostics_tables::{bands_table, figure, thetas_json};
 use crate::report::Artifacts;
 use crate::study::sweep::Shard;
 use rayon::prelude::*;
@@ -131,7 +133,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
         ForwardArg::Surrogate => {
             let nodes = case.calibration.surrogate_nodes.max(2) as usize;
             let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
-            let pb = progress(chains as u64 * max_chain(&span), "reference runs");
+            let pb = count_bar(chains as u64 * max_chain_runs(&span), "reference runs");
             let s = Surrogate::build(&case, &span, a.cycles, nodes, &|| pb.inc(1))
                 .map_err(|e| CliError::Input(e.0))?;
             pb.finish_and_clear();
@@ -152,7 +154,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
         a.cycles,
         rayon::current_num_threads()
     );
-    let pb = progress(ids.len() as u64, "samples");
+    let pb = count_bar(ids.len() as u64, "samples");
     let outcomes: Result<Vec<SampleOutcome>, _> = ids
         .par_iter()
         .map(|&i| {

@@ -39,3 +39,21 @@ pub fn show_wear(pb: &ProgressBar, run: &WearRun) {
         ));
     }
 }
+
+/// A bar over `len` items of `what` (cases, samples, reference runs).
+pub fn count_bar(len: u64, what: &str) -> ProgressBar {
+    let target = if std::io::stderr().is_terminal() {
+        ProgressDrawTarget::stderr()
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    let pb = ProgressBar::with_draw_target(Some(len), target);
+    let template =
+        format!("{what:>16} [{{bar:30}}] {{pos}}/{{len}} (elapsed {{elapsed}}, eta {{eta}})");
+    pb.set_style(
+        ProgressStyle::with_template(&template)
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> "),
+    );
+    pb
+}

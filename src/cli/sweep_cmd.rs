@@ -10,38 +10,26 @@
 
 use super::args::{CaseArgs, SweepArgs, SweepRunArg};
 use super::output::say;
+use super::progress::count_bar;
 use super::sweep_continuation::{continuation_of, run_branches};
+use super::sweep_records::{case_path, write_record, Outcomes, Planned};
 use super::CliError;
-use crate::config::{load_case, schema, Case};
+use crate::config::{load_case, schema};
 use crate::io::atomic::ensure_real_dir;
-use crate::io::{write_atomic, OutputDir, RunMetadata};
+use crate::io::{OutputDir, RunMetadata};
 use crate::report::artifacts::{stage_figures, Artifacts};
 use crate::report::modes::modes_json;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::study::sweep::resonance::speed_marks;
 use crate::study::sweep::{
-    parse_vary, run_case, CaseError, CaseRecord, ContinuationLink, Shard, SweepPlan, SweepRun,
-    SweepTable,
+    parse_vary, run_case, CaseError, CaseRecord, Shard, SweepPlan, SweepRun, SweepTable,
 };
 use crate::study::Model;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use serde_json::json;
 use std::collections::BTreeMap;
-use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
-
-/// One case of this shard, resolved and validated.
-pub(super) struct Planned {
-    pub id: usize,
-    pub values: Vec<String>,
-    pub case: Case,
-    pub hash: String,
-}
-
-/// What ran now: each case id with its warnings or its error.
-pub(super) type Outcomes = Vec<(usize, Result<Vec<String>, CaseError>)>;
 
 fn describe(keys: &[String], values: &[String]) -> String {
     keys.iter()
@@ -98,10 +86,6 @@ fn plan_of(a: &SweepArgs, text: &str) -> Result<SweepPlan, CliError> {
     }
 }
 
-pub(super) fn case_path(dir: &Path, id: usize) -> PathBuf {
-    dir.join("cases").join(format!("{id}.json"))
-}
-
 /// The record of a finished case, if `cases/<id>.json` holds this very case's result.
 fn finished(dir: &Path, p: &Planned, run: SweepRun, keys: &[String]) -> Option<CaseRecord> {
     let r = CaseRecord::read(&case_path(dir, p.id)).ok()??;
@@ -123,53 +107,6 @@ fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), CliError> {
     } else {
         Err(CliError::Input(problems))
     }
-}
-
-fn progress_bar(n: usize) -> ProgressBar {
-    let target = if std::io::stderr().is_terminal() {
-        ProgressDrawTarget::stderr()
-    } else {
-        ProgressDrawTarget::hidden()
-    };
-    let pb = ProgressBar::with_draw_target(Some(n as u64), target);
-    pb.set_style(
-        ProgressStyle::with_template(
-            "sweep [{bar:30}] {pos}/{len} cases (elapsed {elapsed}, eta {eta})",
-        )
-        .unwrap_or_else(|_| ProgressStyle::default_bar())
-        .progress_chars("=> "),
-    );
-    pb
-}
-
-/// Write the record of a finished case (or continuation point); the record is the first
-/// and only file a case writes.
-pub(super) fn write_record(
-    dir: &Path,
-    p: &Planned,
-    run: SweepRun,
-    keys: &[String],
-    results: &[f64],
-    continuation: Option<ContinuationLink>,
-) -> Result<CaseRecord, CaseError> {
-    let rec = CaseRecord {
-        case_id: p.id,
-        case_sha256: p.hash.clone(),
-        run,
-        keys: keys.to_vec(),
-        values: p.values.clone(),
-        columns: run.columns(),
-        results: results
-            .iter()
-            .map(|x| x.is_finite().then_some(*x))
-            .collect(),
-        continuation,
-        checksum: None,
-    }
-    .sealed();
-    let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
-    write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
-    Ok(rec)
 }
 
 /// Run one case and write its record.
@@ -261,7 +198,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             c.branches.len(),
             c.len()
         );
-        let pb = progress_bar(c.len());
+        let pb = count_bar(c.len() as u64, "sweep cases");
         let r = run_branches(&a.out, c, &planned, &keys, &pb);
         pb.finish_and_clear();
         r
@@ -276,7 +213,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             pending.len(),
             rayon::current_num_threads()
         );
-        let pb = progress_bar(pending.len());
+        let pb = count_bar(pending.len() as u64, "sweep cases");
         let outcomes: Outcomes = pending
             .par_iter()
             .map(|p| {

@@ -7,7 +7,7 @@
 //! bit, as an uninterrupted one.
 
 use super::args::{ContinuationArg, SweepArgs, SweepRunArg};
-use super::sweep_cmd::{case_path, write_record, Outcomes, Planned};
+use super::sweep_records::{case_path, write_record, Outcomes, Planned};
 use super::CliError;
 use crate::config::Case;
 use crate::dynamics::model::NSTATE;

@@ -33,6 +33,14 @@ use serde::{Deserialize, Serialize};
 /// Ratio of neighbouring reference wear coefficients in the block-limited range.
 pub const K_NODE_RATIO: f64 = 2.0;
 
+/// Most reference runs one chain over the prior of k can hold (k_hi / k_lo in steps of
+/// [`K_NODE_RATIO`], both ends included): a progress bar's length, chains usually stop
+/// earlier.
+pub fn max_chain_runs(p: &super::prior::Prior) -> u64 {
+    let k = &p.params[0];
+    ((k.hi / k.lo).ln() / K_NODE_RATIO.ln()).ceil() as u64 + 1
+}
+
 /// One chain of reference runs (increasing k) at fixed other parameters.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Chain {

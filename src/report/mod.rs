@@ -11,6 +11,7 @@ pub mod modes;
 pub mod paper;
 pub mod plot;
 pub mod prognostics;
+pub mod prognostics_tables;
 pub mod run_report;
 pub mod stiffness;
 pub mod sweep_figure;
