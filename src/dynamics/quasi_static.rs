@@ -45,6 +45,20 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
 /// Equilibrium mesh state at mesh phase `phase_rad` (pinion rotation since t = 0: with a
 /// tooth-resolved mesh it also says which teeth meet, and the time the run-out has).
 pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
+    let omega_p = sys.parts.params.pinion_speed_rad_s;
+    let cycle = sys.parts.pair.mesh_cycle(phase_rad);
+    equilibrium_in_cycle(sys, phase_rad, cycle, phase_rad / omega_p)
+}
+
+/// As [`equilibrium`] at phase `phase_rad` of mesh cycle `cycle_now` (given, so that a
+/// node on a period boundary belongs to the cycle it opens whatever the round-off of
+/// the absolute phase), time `t_s` for the run-out.
+pub fn equilibrium_in_cycle(
+    sys: &GearSystem,
+    phase_rad: f64,
+    cycle_now: i64,
+    t_s: f64,
+) -> MeshState {
     let p = sys.parts.params;
     let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
     let rb1 = sys.parts.pair.pinion.base_radius_m;
@@ -53,11 +67,7 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
     let mut k = [0.0; MAX_PAIRS];
     let mut gap = [0.0; MAX_PAIRS];
     let mut n = 0;
-    let cycle_now = sys.parts.pair.mesh_cycle(phase_rad);
-    let e_run = sys
-        .parts
-        .teeth
-        .map_or(0.0, |tm| tm.runout_at(phase_rad / omega_p).0);
+    let e_run = sys.parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
     for (pair_k, rho1) in sys.parts.pair.pairs_in_contact(phase_rad) {
         if n == MAX_PAIRS {
             break;
@@ -141,17 +151,19 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
     let one = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
     let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
     let t_mesh = *one.last().unwrap_or(&0.0);
-    let mut nodes = one.clone();
-    for c in 1..periods {
-        let t0 = c as f64 * t_mesh;
-        nodes.extend(one[1..].iter().map(|t| t0 + t));
-    }
+    // Nodes as (cycle, time within it): each period's nodes but its last, then the end.
+    let mut nodes: Vec<(i64, f64)> = (0..periods as i64)
+        .flat_map(|c| one[..one.len() - 1].iter().map(move |t| (c, *t)))
+        .collect();
+    nodes.push((periods as i64 - 1, t_mesh));
+    let abs = |(c, t): (i64, f64)| c as f64 * t_mesh + t;
+    let at = |node: (i64, f64)| equilibrium_in_cycle(sys, sys.phase_at(node.1), node.0, abs(node));
     let mut sig = Signals::default();
     let mut path = Vec::with_capacity(2 * nodes.len());
-    for t in &nodes[..nodes.len() - 1] {
-        let phase = sys.phase_at(*t);
-        let ms = equilibrium(sys, phase);
-        sig.time_s.push(*t);
+    for node in &nodes[..nodes.len() - 1] {
+        let (t, phase) = (abs(*node), sys.phase_at(node.1));
+        let ms = at(*node);
+        sig.time_s.push(t);
         sig.phase_rad.push(phase);
         sig.dte_m.push(ms.deflection_m);
         sig.mesh_force_n.push(ms.force_n);
@@ -169,11 +181,12 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
     // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).
     let (mut fi, mut di) = (0.0, 0.0);
     for w in nodes.windows(2) {
-        let ms = equilibrium(sys, sys.phase_at(0.5 * (w[0] + w[1])));
-        fi += ms.force_n * (w[1] - w[0]);
-        di += ms.deflection_m * (w[1] - w[0]);
+        let (a, b) = (w[0], (w[0].0, w[1].1 + (w[1].0 - w[0].0) as f64 * t_mesh));
+        let ms = at((a.0, 0.5 * (a.1 + b.1)));
+        fi += ms.force_n * (b.1 - a.1);
+        di += ms.deflection_m * (b.1 - a.1);
     }
-    let period = *nodes.last().unwrap_or(&1.0);
+    let period = abs(*nodes.last().unwrap_or(&(0, 1.0)));
     DynamicResponse {
         mean_mesh_force_n: fi / period,
         mean_dte_m: di / period,
