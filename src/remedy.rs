@@ -66,6 +66,31 @@ pub enum Arg {
 pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
+    /// Every argument.
+    pub const ALL: [Arg; 21] = [
+        Arg::Override,
+        Arg::CaseFile,
+        Arg::Out,
+        Arg::Resume,
+        Arg::Vary,
+        Arg::Shard,
+        Arg::Continuation,
+        Arg::SweepRun,
+        Arg::TransmissionError,
+        Arg::Observations,
+        Arg::Posterior,
+        Arg::Samples,
+        Arg::Walkers,
+        Arg::Steps,
+        Arg::CheckRuns,
+        Arg::GridPoints,
+        Arg::LimitUm,
+        Arg::Cycles,
+        Arg::BudgetScale,
+        Arg::NoBudget,
+        Arg::Inputs,
+    ];
+
     /// Plain words for the argument, naming no front end's syntax.
     pub fn plain(self) -> &'static str {
         match self {

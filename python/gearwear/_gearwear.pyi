@@ -176,3 +176,7 @@ def predict_merge(inputs: Sequence[Union[str, PathLike[str]]], out: _Path = None
 
 def _time_rust_dynamics(case: Case, repeats: int) -> List[float]:
     """Seconds of each of ``repeats`` Rust-only runs of what ``dynamics(case)`` runs."""
+
+def _running_jobs() -> int:
+    """Jobs still running on the pool, including an interrupted evaluation finishing in
+    the background (for tests)."""

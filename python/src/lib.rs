@@ -57,5 +57,6 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jobs::predict, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::predict_merge, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::_time_rust_dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(worker::_running_jobs, m)?)?;
     Ok(())
 }

@@ -16,10 +16,20 @@ use crate::errors::job_error;
 use gearwear::app::{Job, JobError, Observer, Task};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
+
+/// Jobs running now, including those whose caller has returned (an interrupted single
+/// evaluation finishing in the background).
+static RUNNING: AtomicUsize = AtomicUsize::new(0);
+
+/// Number of jobs still running on the pool (see [`RUNNING`]).
+#[pyfunction]
+pub fn _running_jobs() -> usize {
+    RUNNING.load(Ordering::Relaxed)
+}
 
 /// Longest wait between two checks for Ctrl-C.
 const POLL: Duration = Duration::from_millis(20);
@@ -103,6 +113,7 @@ pub fn run_job<J: Job + 'static>(
     // On rayon's pool rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
     // 5-10 % of a dynamics call. A panic is caught here (rayon would abort the process)
     // and becomes an error of the call.
+    RUNNING.fetch_add(1, Ordering::Relaxed);
     rayon::spawn(move || {
         let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.run(&ctx)))
             .unwrap_or_else(|_| {
@@ -114,6 +125,7 @@ pub fn run_job<J: Job + 'static>(
         if let Ok(tx) = ctx.tx.lock() {
             let _ = tx.send(Msg::Done(r.map(|o| (o, warnings))));
         }
+        RUNNING.fetch_sub(1, Ordering::Relaxed);
     });
     loop {
         let (got, back) = recv(py, rx, POLL);
