@@ -105,13 +105,14 @@ pub fn build_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobErr
     Ok(m)
 }
 
-/// The model and the jobs are shared across threads; this fails to compile
-/// if one of them stops being `Send + Sync` (for instance a solver type that gains a
-/// `Cell`).
+/// The model, the dynamic system built from it and the jobs are shared across threads;
+/// this fails to compile if one of them stops being `Send + Sync` (for instance a solver
+/// type that gains a `Cell`).
 #[allow(dead_code)]
 const fn assert_send_sync<T: Send + Sync + ?Sized>() {}
 const _: () = {
     assert_send_sync::<Model>();
+    assert_send_sync::<crate::dynamics::model::GearSystem<'static>>();
     assert_send_sync::<StiffnessJob>();
     assert_send_sync::<DynamicsJob>();
     assert_send_sync::<WearJob>();
