@@ -10,7 +10,9 @@ use crate::config::Case;
 use crate::io::RunMetadata;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
-use crate::prognostics::check::{check_calibration, theta_at_k_quantile, worst_ratio};
+use crate::prognostics::check::{
+    check_calibration, theta_at_k_quantile, worst_ratio, CalibrationCheck,
+};
 use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
 use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
@@ -164,17 +166,24 @@ pub fn counted<T>(
     r
 }
 
+/// The checks of a calibration: the model's band over the posterior against each
+/// observed quantity, the noise scales, and the surrogate against true wear runs.
+struct Checked {
+    bands: Vec<(Quantity, Band)>,
+    noise: Vec<(Quantity, bool, f64)>,
+    check: Vec<CalibrationCheck>,
+    worst: f64,
+}
+
 impl CalibrateJob {
-    /// The summary, tables, figures and report of a calibration.
-    fn artifacts(
+    /// The bands, the noise scales and the surrogate's check against true runs.
+    fn check(
         &self,
         obs: &Observations,
-        src: &str,
         sur: &Surrogate,
         cal: &Calibration,
-        meta: &RunMetadata,
         observer: &dyn Observer,
-    ) -> Result<Artifacts, JobError> {
+    ) -> Checked {
         let o = &self.options;
         let horizon = obs.max_cycles().max(1.0);
         let bands: Vec<(Quantity, Band)> = obs
@@ -200,15 +209,28 @@ impl CalibrateJob {
         if worst > 0.1 {
             observer.warning(&format!("the surrogate's error reaches {worst:.3} of the posterior predictive spread (target < 0.1); see summary.json surrogate_check"));
         }
+        Checked {
+            bands,
+            noise,
+            check,
+            worst,
+        }
+    }
 
-        let mut art = Artifacts::default();
-        art.table("posterior_samples.csv", samples_table(&cal.samples));
-        art.table("posterior_band.csv", bands_table(&bands));
-        let figs = vec![
-            figure(&mut art, "posterior.png", &posterior_figure(cal), "Marginal posterior density of each calibrated parameter (solid) and its prior (dashed).", Some("posterior_samples.csv"))?,
-            figure(&mut art, "posterior_band.png", &predictive_figure(obs, &bands), "Observations (points) against the model's band over the posterior samples: median, 50 % and 90 % bands of the noise-free model values.", Some("posterior_band.csv"))?,
-        ];
-        art.summary = json!({
+    /// The summary of a calibration (`summary.json`).
+    #[allow(clippy::too_many_arguments)]
+    fn summary(
+        &self,
+        cal: &Calibration,
+        obs: &Observations,
+        sur: &Surrogate,
+        noise: &[(Quantity, bool, f64)],
+        check: &[CalibrationCheck],
+        worst: f64,
+        meta: &RunMetadata,
+    ) -> serde_json::Value {
+        let o = &self.options;
+        json!({
             "method": cal.method,
             "parameters": cal.summary.iter().map(|s| json!({
                 "parameter": s.parameter.column(),
@@ -244,7 +266,34 @@ impl CalibrateJob {
             "surrogate_check": check,
             "surrogate_check_max_error_over_predictive_sd": worst,
             "metadata": meta,
-        });
+        })
+    }
+
+    /// The summary, tables, figures and report of a calibration.
+    fn artifacts(
+        &self,
+        obs: &Observations,
+        src: &str,
+        sur: &Surrogate,
+        cal: &Calibration,
+        meta: &RunMetadata,
+        observer: &dyn Observer,
+    ) -> Result<Artifacts, JobError> {
+        let horizon = obs.max_cycles().max(1.0);
+        let Checked {
+            bands,
+            noise,
+            check,
+            worst,
+        } = self.check(obs, sur, cal, observer);
+        let mut art = Artifacts::default();
+        art.table("posterior_samples.csv", samples_table(&cal.samples));
+        art.table("posterior_band.csv", bands_table(&bands));
+        let figs = vec![
+            figure(&mut art, "posterior.png", &posterior_figure(cal), "Marginal posterior density of each calibrated parameter (solid) and its prior (dashed).", Some("posterior_samples.csv"))?,
+            figure(&mut art, "posterior_band.png", &predictive_figure(obs, &bands), "Observations (points) against the model's band over the posterior samples: median, 50 % and 90 % bands of the noise-free model values.", Some("posterior_band.csv"))?,
+        ];
+        art.summary = self.summary(cal, obs, sur, &noise, &check, worst, meta);
         let notes = vec![format!(
             "Observations: {} values of {} quantities from {src}, up to {} cycles.",
             obs.len(),

@@ -8,6 +8,7 @@ use super::observer::{Observer, Task};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::{RunMetadata, Table};
+use crate::prognostics::band::Band;
 use crate::prognostics::check::{check_prediction, PredictionCheck};
 use crate::prognostics::forward::Crossing;
 use crate::prognostics::predict::{
@@ -305,6 +306,66 @@ const FAN_AT_HORIZON: [Quantity; 4] = [
     Quantity::DtePeakToPeak,
 ];
 
+/// The summary of a prediction (`summary.json`).
+fn prediction_summary(
+    f: &ShardFile,
+    life: &LifeSummary,
+    fans: &[(Quantity, Band)],
+    failed: &[&SampleOutcome],
+    missing: Vec<usize>,
+) -> Value {
+    let set = f.identity.settings;
+    // Surrogate error relative to the ensemble's spread of the life.
+    let check_rows: Vec<Value> = f
+        .checks
+        .iter()
+        .map(|c| {
+            let err = c.life_error();
+            json!({
+                "theta": thetas_json(&[c.theta])[0],
+                "life_surrogate": c.life_surrogate,
+                "life_true": c.life_true,
+                "life_abs_error": err,
+                "life_error_over_spread": err.map(|e| e / life.spread_reached),
+                "max_abs_error_over_fan_grid": c.max_abs_error.iter().map(|(q, e)| json!({"quantity": q, "error": e})).collect::<Vec<_>>(),
+                "true_run_failure": c.true_run_failure,
+            })
+        })
+        .collect();
+    let at_horizon = |q: Quantity| {
+        fans.iter().find(|b| b.0 == q).map(|(_, b)| {
+            let g = b.cycles.len() - 1;
+            json!({"p05": b.percentiles[0][g], "p25": b.percentiles[1][g], "median": b.percentiles[2][g], "p75": b.percentiles[3][g], "p95": b.percentiles[4][g], "samples_with_value": b.valid[g]})
+        })
+    };
+    json!({
+        "limit_um": set.limit_um,
+        "horizon_cycles": set.cycles,
+        "samples": set.samples,
+        "seed": set.seed,
+        "forward_model": f.identity.forward,
+        "source": f.identity.source,
+        "remaining_life_cycles": {
+            "p05": life.p05, "median": life.median, "p95": life.p95,
+            "prob_beyond_horizon": life.prob_beyond_horizon,
+            "prob_beyond_horizon_bounds_with_failed_samples": life.prob_beyond_horizon_bounds,
+            "reached": life.reached, "beyond_horizon": life.beyond_horizon, "unknown": life.unknown,
+            "note": "cycles from 0 (new teeth) to the first cycle at which the maximum pinion wear reaches the limit; null percentiles lie beyond the horizon (or among samples whose forward run failed)",
+        },
+        "at_horizon": FAN_AT_HORIZON.iter().map(|q| json!({"quantity": q.name(), "band": at_horizon(*q)})).collect::<Vec<_>>(),
+        "failed_samples": {
+            "count": failed.len(),
+            "parameters": thetas_json(&failed.iter().map(|s| s.theta).collect::<Vec<_>>()),
+            "first_error": failed.first().and_then(|s| s.failure.clone()),
+            "note": "samples whose forward run stopped before the horizon: their values after it are unknown (the wear fan counts them as above every known value), their life is unknown if the limit was not reached first",
+        },
+        "reference_run_failures": f.reference_failures.iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
+        "surrogate_check": check_rows,
+        "missing_samples": missing,
+        "metadata": f.metadata,
+    })
+}
+
 /// Every output of a prediction from its outcomes (`missing`: sample indices no shard
 /// had).
 pub fn prediction_artifacts(f: ShardFile, missing: Vec<usize>) -> Result<Artifacts, JobError> {
@@ -342,56 +403,8 @@ pub fn prediction_artifacts(f: ShardFile, missing: Vec<usize>) -> Result<Artifac
         figure(&mut art, "life.png", &life_figure(&lives, &life, set.cycles), "Distribution of the cycles at which the maximum pinion wear reaches the limit (samples that reach it within the horizon).", Some("life_samples.csv"))?,
         figure(&mut art, "fan_vibration.png", &fan_figure("Vibration and transmission-error indicators: median, 50 % and 90 % bands", &fans[1..], None), "Fan charts of the indicators a monitoring system sees: RMS and mesh harmonics of the pinion's y velocity, DTE peak-to-peak and first mesh harmonic.", Some("fan_vibration.csv"))?,
     ];
-    // Surrogate error relative to the ensemble's spread of the life.
-    let check_rows: Vec<Value> = f
-        .checks
-        .iter()
-        .map(|c| {
-            let err = c.life_error();
-            json!({
-                "theta": thetas_json(&[c.theta])[0],
-                "life_surrogate": c.life_surrogate,
-                "life_true": c.life_true,
-                "life_abs_error": err,
-                "life_error_over_spread": err.map(|e| e / life.spread_reached),
-                "max_abs_error_over_fan_grid": c.max_abs_error.iter().map(|(q, e)| json!({"quantity": q, "error": e})).collect::<Vec<_>>(),
-                "true_run_failure": c.true_run_failure,
-            })
-        })
-        .collect();
     let failed: Vec<&SampleOutcome> = o.iter().filter(|s| s.failure.is_some()).collect();
-    let at_horizon = |q: Quantity| {
-        fans.iter().find(|b| b.0 == q).map(|(_, b)| {
-            let g = b.cycles.len() - 1;
-            json!({"p05": b.percentiles[0][g], "p25": b.percentiles[1][g], "median": b.percentiles[2][g], "p75": b.percentiles[3][g], "p95": b.percentiles[4][g], "samples_with_value": b.valid[g]})
-        })
-    };
-    art.summary = json!({
-        "limit_um": set.limit_um,
-        "horizon_cycles": set.cycles,
-        "samples": set.samples,
-        "seed": set.seed,
-        "forward_model": f.identity.forward,
-        "source": f.identity.source,
-        "remaining_life_cycles": {
-            "p05": life.p05, "median": life.median, "p95": life.p95,
-            "prob_beyond_horizon": life.prob_beyond_horizon,
-            "prob_beyond_horizon_bounds_with_failed_samples": life.prob_beyond_horizon_bounds,
-            "reached": life.reached, "beyond_horizon": life.beyond_horizon, "unknown": life.unknown,
-            "note": "cycles from 0 (new teeth) to the first cycle at which the maximum pinion wear reaches the limit; null percentiles lie beyond the horizon (or among samples whose forward run failed)",
-        },
-        "at_horizon": FAN_AT_HORIZON.iter().map(|q| json!({"quantity": q.name(), "band": at_horizon(*q)})).collect::<Vec<_>>(),
-        "failed_samples": {
-            "count": failed.len(),
-            "parameters": thetas_json(&failed.iter().map(|s| s.theta).collect::<Vec<_>>()),
-            "first_error": failed.first().and_then(|s| s.failure.clone()),
-            "note": "samples whose forward run stopped before the horizon: their values after it are unknown (the wear fan counts them as above every known value), their life is unknown if the limit was not reached first",
-        },
-        "reference_run_failures": f.reference_failures.iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
-        "surrogate_check": check_rows,
-        "missing_samples": missing,
-        "metadata": f.metadata,
-    });
+    art.summary = prediction_summary(&f, &life, &fans, &failed, missing);
     let mut notes = vec![format!(
         "{} samples, forward model: {}, seed {}.",
         set.samples, f.identity.forward, set.seed

@@ -178,6 +178,45 @@ impl SweepJob {
     }
 }
 
+/// The failed cases of `outcomes` as summary entries (id, values, branch, error); the
+/// warnings of the others go to `observer` once each, with their number of cases.
+fn failures(
+    outcomes: Outcomes,
+    planned: &[Planned],
+    continuation: Option<&ContinuationPlan>,
+    observer: &dyn Observer,
+) -> Vec<serde_json::Value> {
+    let labels_of: BTreeMap<usize, &Vec<String>> =
+        planned.iter().map(|p| (p.id, &p.labels)).collect();
+    let branch_of = |id: usize| {
+        continuation.and_then(|c| {
+            c.branches
+                .iter()
+                .find(|(_, p)| p.iter().any(|x| x.case_id == id))
+                .map(|(b, _)| b.name())
+        })
+    };
+    let mut warnings: BTreeMap<String, usize> = BTreeMap::new();
+    let mut failed = Vec::new();
+    for (id, r) in outcomes {
+        match r {
+            Ok(w) => w
+                .into_iter()
+                .for_each(|w| *warnings.entry(w).or_default() += 1),
+            Err(e) => failed.push(json!({
+                "case_id": id,
+                "values": labels_of.get(&id),
+                "branch": branch_of(id),
+                "error": e.to_string(),
+            })),
+        }
+    }
+    for (w, n) in &warnings {
+        observer.warning(&format!("{w} ({n} case(s))"));
+    }
+    failed
+}
+
 impl Job for SweepJob {
     type Output = SweepOutput;
 
@@ -269,58 +308,15 @@ impl Job for SweepJob {
 }
 
 impl SweepJob {
-    /// The table, the summary, the figure and the warnings of a sweep that ran; published
-    /// when the sweep has an output folder.
-    fn finish(
+    /// The figure of the sweep (with the base case's resonance crossings on a speed
+    /// axis), the marks, and the base case's metadata.
+    fn figure(
         &self,
-        mut out: Option<crate::io::OutputDir>,
-        ran: Ran,
-        planned: &[Planned],
-        continuation: Option<&ContinuationPlan>,
-        started: Instant,
+        table: &SweepTable,
+        stem: &str,
         observer: &dyn Observer,
-    ) -> Result<SweepOutput, JobError> {
+    ) -> (Artifacts, Option<SpeedMarks>, RunMetadata) {
         let plan = &self.plan;
-        let labels_of: BTreeMap<usize, &Vec<String>> =
-            planned.iter().map(|p| (p.id, &p.labels)).collect();
-        let branch_of = |id: usize| {
-            continuation.and_then(|c| {
-                c.branches
-                    .iter()
-                    .find(|(_, p)| p.iter().any(|x| x.case_id == id))
-                    .map(|(b, _)| b.name())
-            })
-        };
-        let mut warnings: BTreeMap<String, usize> = BTreeMap::new();
-        let mut failed = Vec::new();
-        let computed_now = ran.outcomes.len();
-        for (id, r) in ran.outcomes {
-            match r {
-                Ok(w) => w
-                    .into_iter()
-                    .for_each(|w| *warnings.entry(w).or_default() += 1),
-                Err(e) => failed.push(json!({
-                    "case_id": id,
-                    "values": labels_of.get(&id),
-                    "branch": branch_of(id),
-                    "error": e.to_string(),
-                })),
-            }
-        }
-        for (w, n) in &warnings {
-            observer.warning(&format!("{w} ({n} case(s))"));
-        }
-        let computed = computed_now - failed.len();
-        let mut table = SweepTable::new(plan.keys(), self.run);
-        table.rows = ran.rows;
-        table.rows.sort_by_key(|r| r.case_id);
-        let stem = self.shard.stem();
-        if let Some(o) = out.as_mut() {
-            for r in &table.rows {
-                o.keep_state(&format!("cases/{}.json", r.case_id));
-            }
-        }
-
         let base_model = Model::from_case(&self.base);
         let speed: Option<SpeedMarks> = match &base_model {
             Ok(m) => speed_marks(m, plan),
@@ -336,15 +332,44 @@ impl SweepJob {
             .map_or_else(Vec::new, |m| m.modal.mesh_pole_frequencies_hz());
         let marks = speed.as_ref().map_or(&[][..], |m| &m.crossings[..]);
         let mut art = Artifacts::default();
-        if let Some(fig) = figure_for(&table, marks, &poles) {
+        if let Some(fig) = figure_for(table, marks, &poles) {
             let (w, h) = SWEEP_FIGURE_PX;
             art.figure_sized(format!("{stem}.png"), fig, w, h);
         }
-        let wall_s = started.elapsed().as_secs_f64();
         let base = match &base_model {
             Ok(m) => RunMetadata::of_model("sweep", m),
             Err(_) => RunMetadata::new("sweep", &self.base),
         };
+        (art, speed, base)
+    }
+
+    /// The table, the summary, the figure and the warnings of a sweep that ran; published
+    /// when the sweep has an output folder.
+    fn finish(
+        &self,
+        mut out: Option<crate::io::OutputDir>,
+        ran: Ran,
+        planned: &[Planned],
+        continuation: Option<&ContinuationPlan>,
+        started: Instant,
+        observer: &dyn Observer,
+    ) -> Result<SweepOutput, JobError> {
+        let plan = &self.plan;
+        let computed_now = ran.outcomes.len();
+        let failed = failures(ran.outcomes, planned, continuation, observer);
+        let computed = computed_now - failed.len();
+        let mut table = SweepTable::new(plan.keys(), self.run);
+        table.rows = ran.rows;
+        table.rows.sort_by_key(|r| r.case_id);
+        let stem = self.shard.stem();
+        if let Some(o) = out.as_mut() {
+            for r in &table.rows {
+                o.keep_state(&format!("cases/{}.json", r.case_id));
+            }
+        }
+
+        let (mut art, speed, base) = self.figure(&table, &stem, observer);
+        let wall_s = started.elapsed().as_secs_f64();
         art.summary = json!({
             "command": "sweep",
             "run": self.run,
