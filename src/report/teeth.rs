@@ -269,7 +269,7 @@ pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)
 /// shafts' frequencies marked (resolved over the excitation period of a tooth-resolved
 /// response: bins of f_mesh / P).
 pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figure, Table) {
-    let f_mesh = model.params.mesh_frequency_hz(&model.pair);
+    let f_mesh = model.params.mesh_frequency_hz;
     let f_p = model.params.pinion_speed_rad_s / std::f64::consts::TAU;
     let f_g = model.params.gear_speed_rad_s / std::f64::consts::TAU;
     let spec = velocity_y_spectrum(r);
