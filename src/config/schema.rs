@@ -355,7 +355,7 @@ pub const KEYS: &[KeySpec] = &[
       "Checked against the tooth with the geometry."),
     k("fault.crack_angle_deg", "deg", Num(Range::above(0.0, 90.0)), "Crack: angle of its path to the tooth centreline (absent: 45, Chen & Shao 2011).",
       "A crack along the centreline (0) removes nothing; 90 runs straight across the tooth."),
-    k("fault.crack_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Crack: share of the face width it has run across from one face, its depth falling to zero as a parabola there (absent: 1, through the face).",
+    k("fault.crack_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Crack: share of the face width it has run across at its depth, from one face (absent: 1, through the face).",
       "From a crack at one face to one through the whole face."),
     k("fault.spall_position_mm", "mm", Num(Range::closed(-100.0, 100.0)), "Spall: roll distance of its centre from the pitch point along the profile, positive towards the tip (required for a spall).",
       "Checked against the active profile with the geometry."),
