@@ -277,6 +277,8 @@ pub const KEYS: &[KeySpec] = &[
       "1e10 revolutions is about 30 years of running at 10 Hz; the run's cost is checked by the run budget."),
     k("wear.points_per_profile", "-", Int(11, 100_000), "Points on each active profile for the wear bookkeeping.",
       "11 points resolve the wear profile's shape; 1e5 points are 0.1 um apart on a 10 mm path."),
+    k("wear.worn_geometry", "-", Choice(&["involute", "worn"]), "What the contact sees of a worn flank: \"involute\" (absent; the paper's model: wear only opens gaps) or \"worn\" (severe wear: the teeth thinned by their wear in the potential-energy integrals, the Hertz curvature of the worn flank, loads shared by compression; docs/MODEL.md, section 9).",
+      "-"),
     k("numerics.steps_per_mesh_period", "-", Int(20, 1_000_000), "Grid nodes per mesh period, aligned with the mesh events: the longest integration step and the fewest recorded samples per period.",
       "Below 20 the mesh events are barely resolved (docs/MODEL.md, convergence); the cost of more is checked by the run budget."),
     k("numerics.integration_tolerance", "-", Num(Range::closed(1e-9, 0.1)), "Local error per integration step, relative to the state's scales (static mesh deflection, and its rate at the mesh frequency); the error control adds steps where the dynamics need them.",
