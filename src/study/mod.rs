@@ -8,6 +8,7 @@ pub mod modes;
 pub mod paper;
 pub mod sweep;
 pub mod teeth;
+pub mod teeth_budget;
 pub mod wear_check;
 pub mod wear_loop;
 

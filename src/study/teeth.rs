@@ -612,3 +612,4 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
     }
     p
 }
+
