@@ -612,4 +612,3 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
     }
     p
 }
-
