@@ -18,6 +18,7 @@ pub mod geometry;
 pub mod io;
 pub mod prognostics;
 pub mod report;
+pub mod signals;
 pub mod stiffness;
 pub mod study;
 pub mod wear;
