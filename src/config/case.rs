@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::signals::SignalsSection;
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -30,6 +31,10 @@ pub struct Case {
     pub wear: WearSection,
     pub numerics: NumericsSection,
     pub calibration: CalibrationSection,
+    /// What a sensor records (`gearwear signals`, datasets); left out of a case's
+    /// serialisation while it holds the defaults.
+    #[serde(skip_serializing_if = "SignalsSection::is_default")]
+    pub signals: SignalsSection,
 }
 
 /// Involute spur pair (paper Table 1).

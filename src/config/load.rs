@@ -259,6 +259,7 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
             g.face_width_mm, g.module_mm
         ));
     }
+    problems.extend(super::signals::relation_problems(case));
 }
 
 /// Merge the `--set` overrides into the user's tree.

@@ -8,6 +8,7 @@ pub mod error;
 pub mod lock;
 pub mod metadata;
 pub mod output_dir;
+pub mod parquet;
 pub mod table;
 pub mod transmission_error;
 

@@ -1,54 +1,10 @@
 //! The signal chain of a record: transfer path, acquisition, tachometer, record length.
 
 use super::transfer::TransferPath;
+pub use crate::config::signals::{ChannelUnit, Shaft};
 use serde::{Deserialize, Serialize};
 
-/// Standard gravity, m/s^2 (CGPM 1901): 1 g.
-pub const STANDARD_GRAVITY: f64 = 9.80665;
-
-/// Unit of the recorded acceleration channels.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum ChannelUnit {
-    /// m/s^2.
-    #[serde(rename = "m/s^2")]
-    MetrePerSecond2,
-    /// Standard gravity, 9.80665 m/s^2.
-    #[serde(rename = "g")]
-    G,
-    /// The sensor's output voltage, mV (sensitivity times acceleration in g).
-    #[serde(rename = "mV")]
-    MilliVolt,
-}
-
-impl ChannelUnit {
-    /// The unit as written in files.
-    pub fn symbol(&self) -> &'static str {
-        match self {
-            ChannelUnit::MetrePerSecond2 => "m/s^2",
-            ChannelUnit::G => "g",
-            ChannelUnit::MilliVolt => "mV",
-        }
-    }
-
-    /// Suffix of column names: `m_per_s2`, `g`, `mv`.
-    pub fn suffix(&self) -> &'static str {
-        match self {
-            ChannelUnit::MetrePerSecond2 => "m_per_s2",
-            ChannelUnit::G => "g",
-            ChannelUnit::MilliVolt => "mv",
-        }
-    }
-
-    /// Factor from m/s^2 to this unit, for a sensor of `sensitivity_mv_per_g`.
-    pub fn factor(&self, sensitivity_mv_per_g: f64) -> f64 {
-        match self {
-            ChannelUnit::MetrePerSecond2 => 1.0,
-            ChannelUnit::G => 1.0 / STANDARD_GRAVITY,
-            ChannelUnit::MilliVolt => sensitivity_mv_per_g / STANDARD_GRAVITY,
-        }
-    }
-}
-
+pub use crate::config::signals::STANDARD_GRAVITY;
 /// Additive measurement noise.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -70,33 +26,6 @@ pub struct Acquisition {
     pub sensitivity_mv_per_g: f64,
     pub noise: NoiseSpec,
     pub noise_seed: u64,
-}
-
-/// A shaft of the pair.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Shaft {
-    /// The pinion's (input) shaft.
-    Pinion,
-    /// The gear's (output) shaft.
-    Gear,
-}
-
-impl Shaft {
-    pub fn name(&self) -> &'static str {
-        match self {
-            Shaft::Pinion => "pinion",
-            Shaft::Gear => "gear",
-        }
-    }
-
-    /// Teeth of this shaft's gear, for a pair of `z1` / `z2` teeth.
-    pub fn teeth(&self, z1: usize, z2: usize) -> usize {
-        match self {
-            Shaft::Pinion => z1,
-            Shaft::Gear => z2,
-        }
-    }
 }
 
 /// The tachometer.

@@ -7,6 +7,7 @@
 //! time-synchronous average ([`tsa`], [`interp`]), its derived signals ([`components`])
 //! and the condition indicators ([`indicators`]).
 
+pub mod analysis;
 pub mod antialias;
 pub mod bearing;
 pub mod chain;
@@ -17,6 +18,10 @@ pub mod interp;
 pub mod noise;
 pub mod periodic;
 pub mod record;
+pub mod setup;
 pub mod tachometer;
 pub mod transfer;
 pub mod tsa;
+
+#[cfg(test)]
+mod tests_acquisition;

@@ -6,6 +6,7 @@ pub mod domain;
 pub mod model;
 pub mod modes;
 pub mod paper;
+pub mod signal_record;
 pub mod sweep;
 pub mod wear_check;
 pub mod wear_loop;
