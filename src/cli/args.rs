@@ -62,6 +62,7 @@ impl Cli {
             Command::Predict(a) => (&a.case, DYNAMIC_WEAR),
             Command::Stiffness(a) => (&a.case, Job::Stiffness),
             Command::Dynamics(a) => (&a.case, Job::Dynamics),
+            Command::Signals(a) => (&a.case, Job::Dynamics),
             Command::Wear(a) => (
                 &a.case,
                 Job::Wear {
@@ -131,6 +132,9 @@ pub enum Command {
     Stiffness(StiffnessArgs),
     /// One steady-state evaluation of the 8-DOF tribo-dynamic model.
     Dynamics(DynamicsArgs),
+    /// One record of what a sensor sees: housing accelerations at named sensors and a
+    /// tachometer, with condition indicators and figures.
+    Signals(super::signals_args::SignalsArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
     /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).

@@ -11,6 +11,8 @@ mod predict_cmd;
 mod progress;
 mod resume;
 mod run_cmd;
+mod signals_args;
+mod signals_cmd;
 mod stiffness_cmd;
 mod stops;
 mod sweep_cmd;
@@ -37,6 +39,7 @@ pub fn main() -> ExitCode {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a),
         Command::Dynamics(a) => dynamics_cmd::run(a),
+        Command::Signals(a) => signals_cmd::run(a),
         Command::Wear(a) => wear_cmd::run(a),
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),

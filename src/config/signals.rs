@@ -173,3 +173,12 @@ pub fn relation_problems(case: &super::Case) -> Vec<String> {
     }
     out
 }
+
+impl SignalsSection {
+    /// The highest input speed a record of `case` sees, Hz (a ramp's end or the
+    /// operating speed).
+    pub fn max_input_speed_hz(&self, case: &super::Case) -> f64 {
+        let f = case.operating.input_speed_hz;
+        self.ramp_end_speed_hz.map_or(f, |e| e.max(f))
+    }
+}

@@ -10,6 +10,7 @@ pub mod metadata;
 pub mod output_dir;
 pub mod parquet;
 pub mod table;
+pub mod transfer_path;
 pub mod transmission_error;
 
 pub use crate::format::format_number;

@@ -74,3 +74,13 @@ pub fn steady_record(
     let p = periodic_record(model, setup, &r);
     Ok(record_from(model, setup, &p, ResponseSummary::of(&r)))
 }
+
+/// The record of a case's `[signals]` section for `wear`: the steady state (a transient
+/// for a ramp or a torque fluctuation, once they are in).
+pub fn record_case(
+    model: &Model,
+    setup: &ChainSetup,
+    wear: &WearState,
+) -> Result<SignalRecord, DynamicsError> {
+    steady_record(model, setup, wear, &ExternalError::none())
+}
