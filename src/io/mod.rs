@@ -4,6 +4,7 @@
 pub mod atomic;
 pub mod checkpoint;
 pub mod checkpoint_set;
+pub mod columns_csv;
 pub mod error;
 pub mod lock;
 pub mod metadata;

@@ -2,6 +2,7 @@
 //! quasi-static twin, the wear states of the paper's section 4.1.
 
 pub mod budget;
+pub mod dataset;
 pub mod domain;
 pub mod model;
 pub mod modes;
