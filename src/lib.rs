@@ -16,6 +16,7 @@ pub mod dynamics;
 pub mod format;
 pub mod geometry;
 pub mod io;
+pub mod jobs;
 pub mod prognostics;
 pub mod report;
 pub mod signals;

@@ -56,6 +56,8 @@ impl Cli {
     pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
         let (case, job) = match &self.command {
             Command::Config(_) | Command::SweepMerge(_) | Command::PredictMerge(_) => return Ok(()),
+            // A dataset checks its disk budget itself; its size is the design's choice.
+            Command::Dataset(_) | Command::DatasetMerge(_) => return Ok(()),
             // Each forward run of an ensemble is a dynamic wear study of the case (at
             // its sampled parameters); the number of runs is the user's explicit choice.
             Command::Calibrate(a) => (&a.case, DYNAMIC_WEAR),
@@ -135,6 +137,11 @@ pub enum Command {
     /// One record of what a sensor sees: housing accelerations at named sensors and a
     /// tachometer, with condition indicators and figures.
     Signals(super::signals_args::SignalsArgs),
+    /// A labelled dataset from a study design: run-to-failure states, fault conditions,
+    /// speeds, loads and noise realisations, one record each (shardable, resumable).
+    Dataset(super::signals_args::DatasetArgs),
+    /// Join the shards of a dataset into one, with its index and metadata.
+    DatasetMerge(super::signals_args::DatasetMergeArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
     /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).

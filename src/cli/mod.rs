@@ -4,6 +4,7 @@
 mod args;
 mod calibrate_cmd;
 mod config_cmd;
+mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
 mod output;
@@ -40,6 +41,8 @@ pub fn main() -> ExitCode {
         Command::Stiffness(a) => stiffness_cmd::run(a),
         Command::Dynamics(a) => dynamics_cmd::run(a),
         Command::Signals(a) => signals_cmd::run(a),
+        Command::Dataset(a) => dataset_cmd::run(a),
+        Command::DatasetMerge(a) => dataset_cmd::merge(a),
         Command::Wear(a) => wear_cmd::run(a),
         Command::Run(a) => run_cmd::run(a),
         Command::Sweep(a) => sweep_cmd::run(a),

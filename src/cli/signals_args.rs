@@ -16,3 +16,28 @@ pub struct SignalsArgs {
     #[arg(long, default_value = "results/signals")]
     pub out: PathBuf,
 }
+
+#[derive(Debug, Args)]
+pub struct DatasetArgs {
+    /// Study design (TOML): the case, run-to-failure states, fault conditions, speeds,
+    /// loads, noise realisations (docs/SIGNALS.md, "Datasets").
+    #[arg(long, value_name = "FILE")]
+    pub design: PathBuf,
+    /// Run only shard I of N (round-robin over the physical states; merge the shards
+    /// with `gearwear dataset-merge`).
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// Output directory (shards may share one).
+    #[arg(long, default_value = "results/dataset")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct DatasetMergeArgs {
+    /// Dataset folders of the shards (or one folder they share).
+    #[arg(required = true, value_name = "DIR")]
+    pub inputs: Vec<PathBuf>,
+    /// Output directory of the merged dataset (may be the shards' shared folder).
+    #[arg(long)]
+    pub out: PathBuf,
+}

@@ -156,39 +156,73 @@ fn merge(base: &mut Table, over: &Table) {
 
 /// Parse and validate a design. `name` names the file in messages; `read` returns the
 /// text of the `case` file it names (the caller resolves it against the design's folder).
-pub fn parse_design(text: &str, name: &str, read: &dyn Fn(&str) -> Result<String, String>) -> Result<DatasetDesign, DesignErrors> {
-    let f: DesignFile = toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message().trim())])?;
+pub fn parse_design(
+    text: &str,
+    name: &str,
+    read: &dyn Fn(&str) -> Result<String, String>,
+) -> Result<DatasetDesign, DesignErrors> {
+    let f: DesignFile =
+        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message().trim())])?;
     let mut p = Vec::new();
     let key = |k: &str| format!("{name}: `{k}`");
     let base_text = match &f.case {
         Some(path) => match read(path) {
             Ok(t) => t,
-            Err(e) => return Err(vec![format!("{}: cannot read the case file {path}: {e}", key("case"))]),
+            Err(e) => {
+                return Err(vec![format!(
+                    "{}: cannot read the case file {path}: {e}",
+                    key("case")
+                )])
+            }
         },
         None => String::new(),
     };
     let base: Table = match toml::from_str(&base_text) {
         Ok(t) => t,
-        Err(e) => return Err(vec![format!("{}: the case file is not valid TOML: {}", key("case"), e.message().trim())]),
+        Err(e) => {
+            return Err(vec![format!(
+                "{}: the case file is not valid TOML: {}",
+                key("case"),
+                e.message().trim()
+            )])
+        }
     };
     let base_case = match load_case(&base_text, &f.set) {
         Ok(c) => c,
-        Err(e) => return Err(e.problems.iter().map(|m| format!("{name}: case: {m}")).collect()),
+        Err(e) => {
+            return Err(e
+                .problems
+                .iter()
+                .map(|m| format!("{name}: case: {m}"))
+                .collect())
+        }
     };
     let r = &f.run_to_failure;
     let states = match (&r.states, &r.cycles) {
         (Some(_), Some(_)) => {
-            p.push(format!("{} and `run_to_failure.cycles` are both given: choose one", key("run_to_failure.states")));
+            p.push(format!(
+                "{} and `run_to_failure.cycles` are both given: choose one",
+                key("run_to_failure.states")
+            ));
             StateChoice::Count(1)
         }
         (Some(n), None) if !(1..=10_000).contains(n) => {
-            p.push(format!("{} = {n} is invalid: expected a whole number in [1, 10000]", key("run_to_failure.states")));
+            p.push(format!(
+                "{} = {n} is invalid: expected a whole number in [1, 10000]",
+                key("run_to_failure.states")
+            ));
             StateChoice::Count(1)
         }
         (Some(n), None) => StateChoice::Count(*n as usize),
         (None, Some(c)) => {
-            if c.is_empty() || c.iter().any(|x| !x.is_finite() || *x < 0.0) || c.windows(2).any(|w| w[1] <= w[0]) {
-                p.push(format!("{} = {c:?} is invalid: expected non-negative cycle counts, strictly ascending", key("run_to_failure.cycles")));
+            if c.is_empty()
+                || c.iter().any(|x| !x.is_finite() || *x < 0.0)
+                || c.windows(2).any(|w| w[1] <= w[0])
+            {
+                p.push(format!(
+                    "{} = {c:?} is invalid: expected non-negative cycle counts, strictly ascending",
+                    key("run_to_failure.cycles")
+                ));
             }
             StateChoice::Cycles(c.clone())
         }
@@ -196,46 +230,99 @@ pub fn parse_design(text: &str, name: &str, read: &dyn Fn(&str) -> Result<String
     };
     let max_cycles = r.max_cycles.unwrap_or(base_case.wear.total_cycles);
     if !(1.0..=1e11).contains(&max_cycles) {
-        p.push(format!("{} = {max_cycles} is invalid: expected a number in [1, 1e11]", key("run_to_failure.max_cycles")));
+        p.push(format!(
+            "{} = {max_cycles} is invalid: expected a number in [1, 1e11]",
+            key("run_to_failure.max_cycles")
+        ));
     }
     if let StateChoice::Cycles(c) = &states {
         if c.last().is_some_and(|l| *l > max_cycles) {
-            p.push(format!("{} ends at {} cycles, beyond `run_to_failure.max_cycles` = {max_cycles}", key("run_to_failure.cycles"), c[c.len() - 1]));
+            p.push(format!(
+                "{} ends at {} cycles, beyond `run_to_failure.max_cycles` = {max_cycles}",
+                key("run_to_failure.cycles"),
+                c[c.len() - 1]
+            ));
         }
     }
     let wear_limit_um = r.wear_limit_um.unwrap_or(10.0);
     if !(wear_limit_um > 0.0 && wear_limit_um <= 1000.0) {
-        p.push(format!("{} = {wear_limit_um} is invalid: expected a number in (0, 1000]", key("run_to_failure.wear_limit_um")));
+        p.push(format!(
+            "{} = {wear_limit_um} is invalid: expected a number in (0, 1000]",
+            key("run_to_failure.wear_limit_um")
+        ));
     }
-    let axis = |k: &str, v: &Option<Vec<f64>>, dflt: f64, lo: f64, hi: f64, p: &mut Vec<String>| -> Vec<f64> {
+    let axis = |k: &str,
+                v: &Option<Vec<f64>>,
+                dflt: f64,
+                lo: f64,
+                hi: f64,
+                p: &mut Vec<String>|
+     -> Vec<f64> {
         match v {
             None => vec![dflt],
             Some(v) if v.is_empty() || v.iter().any(|x| !(lo..=hi).contains(x)) => {
-                p.push(format!("{} = {v:?} is invalid: expected a non-empty list of numbers in [{lo}, {hi}]", key(k)));
+                p.push(format!(
+                    "{} = {v:?} is invalid: expected a non-empty list of numbers in [{lo}, {hi}]",
+                    key(k)
+                ));
                 vec![dflt]
             }
             Some(v) => v.clone(),
         }
     };
-    let speeds_hz = axis("operating.input_speed_hz", &f.operating.input_speed_hz, base_case.operating.input_speed_hz, 1e-6, 1000.0, &mut p);
-    let torques_nm = axis("operating.load_torque_nm", &f.operating.load_torque_nm, base_case.operating.load_torque_nm, 1e-3, 1e7, &mut p);
+    let speeds_hz = axis(
+        "operating.input_speed_hz",
+        &f.operating.input_speed_hz,
+        base_case.operating.input_speed_hz,
+        1e-6,
+        1000.0,
+        &mut p,
+    );
+    let torques_nm = axis(
+        "operating.load_torque_nm",
+        &f.operating.load_torque_nm,
+        base_case.operating.load_torque_nm,
+        1e-3,
+        1e7,
+        &mut p,
+    );
     let rec = &f.records;
     if !(1..=1_000_000).contains(&rec.noise_realisations) {
-        p.push(format!("{} = {} is invalid: expected a whole number in [1, 1000000]", key("records.noise_realisations"), rec.noise_realisations));
+        p.push(format!(
+            "{} = {} is invalid: expected a whole number in [1, 1000000]",
+            key("records.noise_realisations"),
+            rec.noise_realisations
+        ));
     }
     if !(rec.disk_budget_gib > 0.0 && rec.disk_budget_gib <= 1e6) {
-        p.push(format!("{} = {} is invalid: expected a number in (0, 1e6]", key("records.disk_budget_gib"), rec.disk_budget_gib));
+        p.push(format!(
+            "{} = {} is invalid: expected a number in (0, 1e6]",
+            key("records.disk_budget_gib"),
+            rec.disk_budget_gib
+        ));
     }
     let mut conditions = Vec::new();
     let files = if f.condition.is_empty() {
-        vec![ConditionFile { name: "healthy".into(), fault: none(), severity: 0.0, case: Table::new() }]
+        vec![ConditionFile {
+            name: "healthy".into(),
+            fault: none(),
+            severity: 0.0,
+            case: Table::new(),
+        }]
     } else {
         f.condition.clone()
     };
     for (i, c) in files.iter().enumerate() {
         let at = format!("{name}: condition {} (`{}`)", i + 1, c.name);
-        if c.name.is_empty() || !c.name.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_' || ch == '-') {
-            p.push(format!("{at}: `name` must be a non-empty word of letters, digits, _ and -"));
+        if c.name.is_empty()
+            || !c
+                .name
+                .chars()
+                .all(|ch| ch.is_ascii_alphanumeric() || ch == '_' || ch == '-')
+        {
+            p.push(format!(
+                "{at}: `name` must be a non-empty word of letters, digits, _ and -"
+            ));
         }
         if files[..i].iter().any(|o| o.name == c.name) {
             p.push(format!("{at}: `name` is used twice"));
@@ -247,7 +334,12 @@ pub fn parse_design(text: &str, name: &str, read: &dyn Fn(&str) -> Result<String
         merge(&mut t, &c.case);
         let text = toml::to_string(&t).unwrap_or_default();
         match load_case(&text, &f.set) {
-            Ok(case) => conditions.push(Condition { name: c.name.clone(), fault: c.fault.clone(), severity: c.severity, case }),
+            Ok(case) => conditions.push(Condition {
+                name: c.name.clone(),
+                fault: c.fault.clone(),
+                severity: c.severity,
+                case,
+            }),
             Err(e) => p.extend(e.problems.iter().map(|m| format!("{at}: {m}"))),
         }
     }
@@ -302,7 +394,10 @@ roughness_table_rms_um = [0.42, 0.38, 0.30]
 "#;
         let d = parse_design(text, "design.toml", &no_file).unwrap();
         assert_eq!(d.conditions.len(), 2);
-        assert_eq!(d.conditions[1].case.surface.roughness_table_rms_um, vec![0.42, 0.38, 0.30]);
+        assert_eq!(
+            d.conditions[1].case.surface.roughness_table_rms_um,
+            vec![0.42, 0.38, 0.30]
+        );
         assert_eq!(d.conditions[0].case.signals.snr_db, Some(25.0));
         assert_eq!(d.speeds_hz, vec![20.0, 30.0]);
         assert_eq!(d.torques_nm, vec![60.0]);
@@ -311,11 +406,31 @@ roughness_table_rms_um = [0.42, 0.38, 0.30]
 
     #[test]
     fn bad_designs_name_the_key() {
-        let e = parse_design("[run_to_failure]\ncycles = [2, 1]\n[records]\nnoise_realisations = 0\n", "d.toml", &no_file).unwrap_err();
-        assert!(e.iter().any(|m| m.contains("`run_to_failure.cycles`")), "{e:?}");
-        assert!(e.iter().any(|m| m.contains("`records.noise_realisations` = 0")), "{e:?}");
-        let e = parse_design("[[condition]]\nname = \"x\"\n[condition.case.gear]\nmodule_mm = -1\n", "d.toml", &no_file).unwrap_err();
-        assert!(e[0].contains("condition 1") && e[0].contains("gear.module_mm"), "{e:?}");
+        let e = parse_design(
+            "[run_to_failure]\ncycles = [2, 1]\n[records]\nnoise_realisations = 0\n",
+            "d.toml",
+            &no_file,
+        )
+        .unwrap_err();
+        assert!(
+            e.iter().any(|m| m.contains("`run_to_failure.cycles`")),
+            "{e:?}"
+        );
+        assert!(
+            e.iter()
+                .any(|m| m.contains("`records.noise_realisations` = 0")),
+            "{e:?}"
+        );
+        let e = parse_design(
+            "[[condition]]\nname = \"x\"\n[condition.case.gear]\nmodule_mm = -1\n",
+            "d.toml",
+            &no_file,
+        )
+        .unwrap_err();
+        assert!(
+            e[0].contains("condition 1") && e[0].contains("gear.module_mm"),
+            "{e:?}"
+        );
         let e = parse_design("sed = 1\n", "d.toml", &no_file).unwrap_err();
         assert!(e[0].contains("sed"), "{e:?}");
     }

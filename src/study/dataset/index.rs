@@ -64,7 +64,12 @@ fn shaft_value(s: &ShaftIndicators, name: &str) -> f64 {
 
 /// A run of records for the NA4/NB4 trend (module docs).
 fn run_key(l: &RecordLabels) -> (String, u64, u64, usize) {
-    (l.condition.clone(), l.input_speed_hz.to_bits(), l.load_torque_nm.to_bits(), l.realisation)
+    (
+        l.condition.clone(),
+        l.input_speed_hz.to_bits(),
+        l.load_torque_nm.to_bits(),
+        l.realisation,
+    )
 }
 
 /// NA4 and NB4 of every record (by position in `rows`) for channel `c` and shaft
@@ -84,7 +89,12 @@ fn trends(rows: &[RecordLabels], c: usize, pinion: bool) -> Vec<(f64, f64)> {
     }
     let mut out = vec![(0.0, 0.0); rows.len()];
     for members in runs.values_mut() {
-        members.sort_by(|a, b| rows[*a].cycles.total_cmp(&rows[*b].cycles).then(rows[*a].record_id.cmp(&rows[*b].record_id)));
+        members.sort_by(|a, b| {
+            rows[*a]
+                .cycles
+                .total_cmp(&rows[*b].cycles)
+                .then(rows[*a].record_id.cmp(&rows[*b].record_id))
+        });
         let (mut sum_r, mut sum_e) = (0.0, 0.0);
         for (k, &i) in members.iter().enumerate() {
             let Some(s) = shaft(&rows[i]) else { continue };
@@ -92,15 +102,27 @@ fn trends(rows: &[RecordLabels], c: usize, pinion: bool) -> Vec<(f64, f64)> {
             sum_e += s.envelope_variance;
             let n = (k + 1) as f64;
             // NA4 alone is m4 / var^2: rescale to m4 / (mean variance)^2.
-            let rescale = |alone: f64, var: f64, mean: f64| if mean > 0.0 { alone * (var / mean).powi(2) } else { 0.0 };
-            out[i] = (rescale(s.na4, s.residual_variance, sum_r / n), rescale(s.nb4, s.envelope_variance, sum_e / n));
+            let rescale = |alone: f64, var: f64, mean: f64| {
+                if mean > 0.0 {
+                    alone * (var / mean).powi(2)
+                } else {
+                    0.0
+                }
+            };
+            out[i] = (
+                rescale(s.na4, s.residual_variance, sum_r / n),
+                rescale(s.nb4, s.envelope_variance, sum_e / n),
+            );
         }
     }
     out
 }
 
 /// The index columns of `rows` (sorted by record id) and each column's unit.
-pub fn index_columns(rows: &[RecordLabels], channel_unit: &str) -> (Vec<Column>, Vec<(String, String)>) {
+pub fn index_columns(
+    rows: &[RecordLabels],
+    channel_unit: &str,
+) -> (Vec<Column>, Vec<(String, String)>) {
     use ColumnData::*;
     let f = |g: &dyn Fn(&RecordLabels) -> f64| F64(rows.iter().map(g).collect());
     let i = |g: &dyn Fn(&RecordLabels) -> i64| I64(rows.iter().map(g).collect());
@@ -124,13 +146,26 @@ pub fn index_columns(rows: &[RecordLabels], channel_unit: &str) -> (Vec<Column>,
         i(&|l| l.realisation as i64),
         i(&|l| l.noise_seed as i64),
     ];
-    let mut cols: Vec<Column> = LABEL_COLUMNS.iter().zip(data).map(|((n, _), d)| Column::new(*n, d)).collect();
-    let mut units: Vec<(String, String)> = LABEL_COLUMNS.iter().map(|(n, u)| (n.to_string(), u.to_string())).collect();
-    let channels: Vec<String> = rows.first().map_or(Vec::new(), |l| l.indicators.iter().map(|c| c.channel.clone()).collect());
+    let mut cols: Vec<Column> = LABEL_COLUMNS
+        .iter()
+        .zip(data)
+        .map(|((n, _), d)| Column::new(*n, d))
+        .collect();
+    let mut units: Vec<(String, String)> = LABEL_COLUMNS
+        .iter()
+        .map(|(n, u)| (n.to_string(), u.to_string()))
+        .collect();
+    let channels: Vec<String> = rows.first().map_or(Vec::new(), |l| {
+        l.indicators.iter().map(|c| c.channel.clone()).collect()
+    });
     for (c, name) in channels.iter().enumerate() {
         let ch = |l: &RecordLabels| l.indicators.get(c).map(|x| x.signal).unwrap_or_default();
         for (col, unit, g) in [
-            ("rms", channel_unit, &(|l: &RecordLabels| ch(l).rms) as &dyn Fn(&RecordLabels) -> f64),
+            (
+                "rms",
+                channel_unit,
+                &(|l: &RecordLabels| ch(l).rms) as &dyn Fn(&RecordLabels) -> f64,
+            ),
             ("crest_factor", "-", &|l: &RecordLabels| ch(l).crest_factor),
             ("kurtosis", "-", &|l: &RecordLabels| ch(l).kurtosis),
         ] {
@@ -144,7 +179,10 @@ pub fn index_columns(rows: &[RecordLabels], channel_unit: &str) -> (Vec<Column>,
                     .iter()
                     .enumerate()
                     .map(|(k, l)| {
-                        let s = l.indicators.get(c).and_then(|x| if pinion { x.pinion } else { x.gear });
+                        let s =
+                            l.indicators
+                                .get(c)
+                                .and_then(|x| if pinion { x.pinion } else { x.gear });
                         match (col, s) {
                             ("na4", Some(_)) => tr[k].0,
                             ("nb4", Some(_)) => tr[k].1,
@@ -154,7 +192,14 @@ pub fn index_columns(rows: &[RecordLabels], channel_unit: &str) -> (Vec<Column>,
                     })
                     .collect();
                 let name = format!("{name}_{shaft}_{col}");
-                units.push((name.clone(), if with_unit { channel_unit.to_string() } else { "-".to_string() }));
+                units.push((
+                    name.clone(),
+                    if with_unit {
+                        channel_unit.to_string()
+                    } else {
+                        "-".to_string()
+                    },
+                ));
                 cols.push(Column::new(name, F64(values)));
             }
         }

@@ -84,11 +84,19 @@ mod tests {
 
     #[test]
     fn ids_round_trip_and_shards_partition_the_states() {
-        let plan = Plan { conditions: 2, states: 5, speeds: 3, loads: 2, realisations: 10 };
+        let plan = Plan {
+            conditions: 2,
+            states: 5,
+            speeds: 3,
+            loads: 2,
+            realisations: 10,
+        };
         for p in 0..plan.physical_states() {
             assert_eq!(plan.physical_id(plan.state_index(p)), p);
         }
-        let mut all: Vec<usize> = (1..=3).flat_map(|i| plan.shard_states(Shard { index: i, count: 3 })).collect();
+        let mut all: Vec<usize> = (1..=3)
+            .flat_map(|i| plan.shard_states(Shard { index: i, count: 3 }))
+            .collect();
         all.sort_unstable();
         assert_eq!(all, (0..60).collect::<Vec<_>>());
         // SplitMix64's published first output for seed 0 (state advanced once).

@@ -72,10 +72,13 @@ pub fn state_records(
     index: StateIndex,
     emit: &mut dyn FnMut(RecordLabels, Record) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
-    let wear = inp
-        .trajectory
-        .state_at(inp.cycles)
-        .ok_or_else(|| anyhow::anyhow!("state at {} cycles lies beyond the trajectory's end ({} cycles)", inp.cycles, inp.trajectory.end_cycles))?;
+    let wear = inp.trajectory.state_at(inp.cycles).ok_or_else(|| {
+        anyhow::anyhow!(
+            "state at {} cycles lies beyond the trajectory's end ({} cycles)",
+            inp.cycles,
+            inp.trajectory.end_cycles
+        )
+    })?;
     let r = inp
         .model
         .dynamic(&wear, &ExternalError::none())

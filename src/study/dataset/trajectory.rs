@@ -90,7 +90,11 @@ pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::R
             hi
         })
     });
-    let failure_cycles = failure_cycles.or_else(|| records.first().and_then(|r| (deepest_m(&r.wear) >= limit_m).then_some(0.0)));
+    let failure_cycles = failure_cycles.or_else(|| {
+        records
+            .first()
+            .and_then(|r| (deepest_m(&r.wear) >= limit_m).then_some(0.0))
+    });
     Ok(Trajectory {
         stopped: run.stopped.map(|s| s.reason),
         end_cycles: end,
@@ -105,7 +109,10 @@ impl Trajectory {
         if cycles > self.end_cycles * (1.0 + 1e-12) || self.records.is_empty() {
             return None;
         }
-        let i = self.records.partition_point(|r| r.wear.cycles <= cycles).saturating_sub(1);
+        let i = self
+            .records
+            .partition_point(|r| r.wear.cycles <= cycles)
+            .saturating_sub(1);
         let r = &self.records[i];
         let mut s = r.wear.clone();
         let extra = cycles - r.wear.cycles;
@@ -118,11 +125,16 @@ impl Trajectory {
     /// The cycle counts of `count` states evenly spaced from 0 to the trajectory's end
     /// (to the failure, when it was reached).
     pub fn even_states(&self, count: usize) -> Vec<f64> {
-        let end = self.failure_cycles.unwrap_or(self.end_cycles).min(self.end_cycles);
+        let end = self
+            .failure_cycles
+            .unwrap_or(self.end_cycles)
+            .min(self.end_cycles);
         if count <= 1 {
             return vec![0.0];
         }
-        (0..count).map(|i| (end * i as f64 / (count - 1) as f64).round()).collect()
+        (0..count)
+            .map(|i| (end * i as f64 / (count - 1) as f64).round())
+            .collect()
     }
 
     /// Remaining cycles to failure from `cycles`, and whether that is censored (the
