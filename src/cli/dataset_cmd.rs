@@ -7,7 +7,7 @@ use super::signals_args::{DatasetArgs, DatasetMergeArgs};
 use super::CliError;
 use crate::io::OutputDir;
 use crate::jobs::dataset::{
-    merge_datasets, run_dataset, DatasetError, DatasetOutcome, DatasetRequest,
+    check_dataset, merge_datasets, run_dataset, DatasetError, DatasetOutcome, DatasetRequest,
 };
 use crate::jobs::Progress;
 use crate::signals::path_file::parse_transfer_path;
@@ -86,17 +86,18 @@ pub fn run(a: &DatasetArgs) -> Result<(), CliError> {
         Some(s) => Shard::parse(s).map_err(CliError::input)?,
         None => Shard::ALL,
     };
-    let set =
-        (shard.count > 1).then(|| format!("dataset_shard_{}_of_{}", shard.index, shard.count));
-    let out = OutputDir::open(&a.out, set.as_deref(), "dataset")?;
-    let bar = Bar(count_bar(0, "records"));
     let req = DatasetRequest {
         design: &design,
         path,
         path_bytes,
         shard,
     };
-    let o = run_dataset(&req, &a.out, out, &bar).map_err(failed);
+    let checked = check_dataset(&req).map_err(failed)?;
+    let set =
+        (shard.count > 1).then(|| format!("dataset_shard_{}_of_{}", shard.index, shard.count));
+    let out = OutputDir::open(&a.out, set.as_deref(), "dataset")?;
+    let bar = Bar(count_bar(0, "records"));
+    let o = run_dataset(&req, checked, &a.out, out, &bar).map_err(failed);
     bar.0.finish_and_clear();
     report(&o?, "dataset", &a.out)
 }

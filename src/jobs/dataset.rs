@@ -192,21 +192,17 @@ fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str) -> Value 
     })
 }
 
-/// Run (a shard of) a dataset into `root`. `out` is the folder's output set (the shard's,
-/// or the whole dataset's).
-pub fn run_dataset(
-    req: &DatasetRequest,
-    root: &Path,
-    mut out: OutputDir,
-    obs: &dyn Progress,
-) -> Result<DatasetOutcome, DatasetError> {
+/// A request checked before anything is written: the chain of every condition and the
+/// estimated size against the disk budget.
+pub struct Checked {
+    setups: Vec<ChainSetup>,
+    estimated_bytes: f64,
+}
+
+/// Check `req` (module docs, first step).
+pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
     let d = req.design;
     let setups = setups(req).map_err(DatasetError::Input)?;
-    for s in &setups {
-        for w in &s.warnings {
-            obs.warning(w);
-        }
-    }
     let estimated = estimate_bytes(d, &setups);
     let budget = d.disk_budget_gib * 1024f64.powi(3);
     if estimated > budget {
@@ -216,6 +212,31 @@ pub fn run_dataset(
             plan_of(d).records(),
             d.disk_budget_gib
         )]));
+    }
+    Ok(Checked {
+        setups,
+        estimated_bytes: estimated,
+    })
+}
+
+/// Run (a shard of) a checked dataset into `root`. `out` is the folder's output set (the
+/// shard's, or the whole dataset's).
+pub fn run_dataset(
+    req: &DatasetRequest,
+    checked: Checked,
+    root: &Path,
+    mut out: OutputDir,
+    obs: &dyn Progress,
+) -> Result<DatasetOutcome, DatasetError> {
+    let d = req.design;
+    let Checked {
+        setups,
+        estimated_bytes: estimated,
+    } = checked;
+    for s in &setups {
+        for w in &s.warnings {
+            obs.warning(w);
+        }
     }
     let key = dataset_key(d, &req.path_bytes);
     let plan = plan_of(d);
