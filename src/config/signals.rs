@@ -171,6 +171,11 @@ pub fn relation_problems(case: &super::Case) -> Vec<String> {
             torque / 3.5
         ));
     }
+    if s.ramp_end_speed_hz.is_some() && s.record_length_unit == LengthUnit::Revolutions {
+        out.push(
+            "`signals.record_length_unit` = \"revolutions\" is invalid with `signals.ramp_end_speed_hz`: a ramp's record is given in seconds (\"s\")".into(),
+        );
+    }
     out
 }
 

@@ -2,6 +2,7 @@
 //! quasi-static twin, signals and modes.
 
 pub mod damped_modes;
+pub mod drive;
 pub mod excitation;
 pub mod grid;
 pub mod integrator;
@@ -15,3 +16,4 @@ pub mod shooting;
 pub mod spectrum;
 pub mod steady;
 pub mod summary;
+pub mod transient;

@@ -97,6 +97,10 @@ pub fn signals_artifacts(
             a.table(format!("tsa_{}.csv", shaft.name()), t);
         }
     }
+    if rec.input_speed_hz.0 != rec.input_speed_hz.1 {
+        let runup = super::runup::runup_artifacts(&mut a, rec, chain, mesh_harmonics, unit_label);
+        a.summary["runup"] = runup;
+    }
     a.figure_sized(
         "tsa.png",
         tsa_figure(&rec.analysis, unit_label, label),

@@ -108,6 +108,23 @@ impl AntiAliasFilter {
                     .sum::<f64>()
     }
 
+    /// The zero-phase response at the `n / 2 + 1` frequencies k r / n of an `n`-point
+    /// transform at the internal rate r (exactly `response` there, by one FFT).
+    pub fn response_grid(&self, n: usize) -> Vec<f64> {
+        let c = self.half_length();
+        let mut a = vec![0.0; n];
+        for (m, h) in self.taps.iter().enumerate() {
+            let k = (m as isize - c as isize).rem_euclid(n as isize) as usize;
+            a[k] += h;
+        }
+        let mut planner = realfft::RealFftPlanner::<f64>::new();
+        let fft = planner.plan_fft_forward(n);
+        let mut spec = fft.make_output_vec();
+        fft.process(&mut a, &mut spec)
+            .expect("FFT buffers sized by the plan");
+        spec.iter().map(|c| c.re).collect()
+    }
+
     /// Half the filter length in internal samples (its delay).
     pub fn half_length(&self) -> usize {
         self.taps.len() / 2
@@ -166,6 +183,17 @@ mod tests {
         for k in 0..=2000 {
             let fr = 12_800.0 + (f.internal_rate_hz / 2.0 - 12_800.0) * k as f64 / 2000.0;
             assert!(f.response(fr).abs() < limit, "{fr}: {:e}", f.response(fr));
+        }
+    }
+
+    #[test]
+    fn response_grid_is_the_response_at_the_grid_frequencies() {
+        let f = AntiAliasFilter::design(25_600.0, 80.0);
+        let n = 3000;
+        let g = f.response_grid(n);
+        for k in [0, 17, 300, 1499] {
+            let fr = k as f64 * f.internal_rate_hz / n as f64;
+            assert!((g[k] - f.response(fr)).abs() < 1e-12, "{k}");
         }
     }
 

@@ -9,6 +9,7 @@
 
 pub mod analysis;
 pub mod antialias;
+pub mod area;
 pub mod bearing;
 pub mod chain;
 pub mod components;
@@ -17,6 +18,7 @@ pub mod frf_table;
 pub mod indicators;
 pub mod interp;
 pub mod noise;
+pub mod order;
 pub mod path_file;
 pub mod periodic;
 pub mod record;
@@ -24,6 +26,7 @@ pub mod record_spectrum;
 pub mod setup;
 pub mod tachometer;
 pub mod transfer;
+pub mod transient_record;
 pub mod tsa;
 
 #[cfg(test)]

@@ -12,7 +12,7 @@
 //! four-point Lagrange cubic: for content below f_s / 2 the grid holds >= 32 points per
 //! cycle, where the cubic's amplitude error is below 3e-6.
 
-use crate::dynamics::spectrum::resample_periodic;
+use super::area::{box_response, cell_means};
 use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
@@ -29,10 +29,16 @@ pub struct PeriodicSignal {
 
 impl PeriodicSignal {
     /// From samples `(t, x)` over one period starting at `t[0]` (the period closes on
-    /// the first sample). Harmonics up to half the resampled grid are kept.
+    /// the first sample): the Fourier series of their piecewise-linear interpolant, from
+    /// its means over a uniform grid of at least 4 cells per sample (`super::area`: the
+    /// area of every short-lived layer kept) with the cells' box filter divided out.
+    /// Harmonics up to half the grid are kept.
     pub fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
-        let n = t.len().next_power_of_two().max(16);
-        let mut u = resample_periodic(t, x, period_s, n);
+        let n = (4 * t.len()).next_power_of_two().max(16);
+        let w = period_s / n as f64;
+        let t0 = t.first().copied().unwrap_or(0.0);
+        // Cell i is centred on t0 + i w.
+        let mut u = cell_means(t, x, t0 - 0.5 * w, w, n, Some(period_s));
         let mut planner = RealFftPlanner::<f64>::new();
         let fft = planner.plan_fft_forward(n);
         let mut spec = fft.make_output_vec();
@@ -40,18 +46,15 @@ impl PeriodicSignal {
         fft.process(&mut u, &mut spec)
             .expect("FFT buffers sized by the plan");
         // The series starts at t[0]: shift every harmonic to time 0.
-        let t0 = t.first().copied().unwrap_or(0.0);
         let coefficients = spec
             .iter()
             .enumerate()
             .take(n / 2)
             .map(|(k, c)| {
                 let scale = if k == 0 { 1.0 } else { 2.0 } / n as f64;
-                let shift = Complex64::from_polar(
-                    1.0,
-                    -2.0 * std::f64::consts::PI * k as f64 * t0 / period_s,
-                );
-                c * scale * shift
+                let f = k as f64 / period_s;
+                let shift = Complex64::from_polar(1.0, -2.0 * std::f64::consts::PI * f * t0);
+                c * scale * shift / box_response(f, w)
             })
             .collect();
         Self {
@@ -152,11 +155,13 @@ mod tests {
             .map(|t| 1.0 + 2.0 * (w * t + 0.3).cos() - 0.5 * (3.0 * w * t).sin())
             .collect();
         let p = PeriodicSignal::from_samples(&t, &x, period);
-        // The resampling is exact on the sample grid itself (n points, n a power of 2).
+        // The series is that of the samples' linear interpolant: harmonic k of a smooth
+        // signal is scaled by sinc^2(pi k / N) (the interpolation's triangle filter), N =
+        // 4096 samples: 1 - 1.8e-6 at k = 3.
         assert!((p.coefficients[0].re - 1.0).abs() < 1e-12);
-        assert!((p.coefficients[1] - Complex64::from_polar(2.0, 0.3)).norm() < 1e-12);
-        assert!((p.coefficients[3] - Complex64::new(0.0, 0.5)).norm() < 1e-12);
-        assert!((p.at(0.1 * period) - x_of(0.1 * period, w)).abs() < 1e-12);
+        assert!((p.coefficients[1] - Complex64::from_polar(2.0, 0.3)).norm() < 1e-5);
+        assert!((p.coefficients[3] - Complex64::new(0.0, 0.5)).norm() < 1e-5);
+        assert!((p.at(0.1 * period) - x_of(0.1 * period, w)).abs() < 1e-5);
         // Sampling at an incommensurate rate: the Lagrange cubic's error (module docs).
         let fs = 51_200.0 / 1.37;
         let s = p.sample(0.25e-3, fs, 500);

@@ -20,7 +20,12 @@ pub struct SignalRecord {
     /// The record as written: noise included.
     pub record: Record,
     pub analysis: Vec<ChannelAnalysis>,
+    /// Headline numbers of the steady state (at the starting speed of a transient).
     pub response: ResponseSummary,
+    /// Nominal input speed at the start and end of the record, Hz (equal when steady).
+    pub input_speed_hz: (f64, f64),
+    /// Damped frequencies of the model's mesh poles, Hz (`docs/MODEL.md`, Modes).
+    pub mesh_poles_hz: Vec<f64>,
 }
 
 /// Shaft speeds and teeth of the model at its operating point.
@@ -56,10 +61,12 @@ pub fn record_from(
     add_noise(&mut record, chain);
     let analysis = analyse(&record, &kin, &chain.tachometer, setup.components);
     SignalRecord {
+        input_speed_hz: (kin.pinion_hz, kin.pinion_hz),
         kinematics: kin,
         record,
         analysis,
         response,
+        mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
     }
 }
 
@@ -75,12 +82,31 @@ pub fn steady_record(
     Ok(record_from(model, setup, &p, ResponseSummary::of(&r)))
 }
 
-/// The record of a case's `[signals]` section for `wear`: the steady state (a transient
-/// for a ramp or a torque fluctuation, once they are in).
+/// The record of a case's `[signals]` section for `wear`: the steady state, or the
+/// transient of a ramp or a load fluctuation (`study::transient_signals`).
 pub fn record_case(
     model: &Model,
     setup: &ChainSetup,
     wear: &WearState,
 ) -> Result<SignalRecord, DynamicsError> {
-    steady_record(model, setup, wear, &ExternalError::none())
+    use super::transient_signals::{is_transient, transient_clean_record};
+    if !is_transient(&model.case) {
+        return steady_record(model, setup, wear, &ExternalError::none());
+    }
+    let (mut record, speeds) = transient_clean_record(model, setup, wear)?;
+    let response = ResponseSummary::of(&model.dynamic(wear, &ExternalError::none())?);
+    add_noise(&mut record, &setup.chain);
+    let kin = kinematics(model);
+    let analysis = analyse(&record, &kin, &setup.chain.tachometer, setup.components);
+    Ok(SignalRecord {
+        input_speed_hz: (
+            speeds.first().copied().unwrap_or(kin.pinion_hz),
+            speeds.last().copied().unwrap_or(kin.pinion_hz),
+        ),
+        kinematics: kin,
+        record,
+        analysis,
+        response,
+        mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+    })
 }
