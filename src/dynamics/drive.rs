@@ -6,8 +6,8 @@
 //! theta_p = Theta_p(t) + phi_p with Theta_p(t) = Omega_0 t + alpha t^2 / 2 on the pinion
 //! side (motor and pinion) and (z1/z2) Theta_p(t) on the gear side (gear and brake). With
 //! a nominal acceleration alpha the equations of motion of the deviations gain the
-//! inertial term -J alpha (-J alpha z1/z2 on the gear side): d^2 phi / dt^2 = (torques) / J
-//! - d^2 Theta / dt^2. A coordinate held to the nominal rotation (an imposed speed) keeps
+//! inertial term -J alpha (-J alpha z1/z2 on the gear side): d^2 phi / dt^2 equals
+//! (torques) / J minus d^2 Theta / dt^2. A coordinate held to the nominal rotation (an imposed speed) keeps
 //! phi = 0. The motor slip law T_0 - c_slip dphi_m/dt follows the ramp (its synchronous
 //! reference is the nominal speed), so the slip supplies the accelerating torque.
 //!

@@ -265,7 +265,7 @@ mod tests {
             let m = fast_len(n);
             let mut r = m;
             for p in [2, 3, 5] {
-                while r % p == 0 {
+                while r.is_multiple_of(p) {
                     r /= p;
                 }
             }
