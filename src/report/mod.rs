@@ -17,6 +17,7 @@ pub mod runup;
 pub mod signals;
 pub mod stiffness;
 pub mod sweep_figure;
+pub mod teeth;
 pub mod wear;
 
 pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

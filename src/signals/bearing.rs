@@ -22,9 +22,10 @@ pub struct BearingForces {
 }
 
 /// Period of a periodic steady-state response, s: the period its recorded window
-/// repeats (one mesh period for identical teeth).
+/// repeats (one mesh period for identical teeth, the tooth-resolved mesh's period, up to
+/// the hunting period lcm(z1, z2) mesh periods, otherwise).
 pub fn response_period_s(r: &DynamicResponse) -> f64 {
-    r.mesh_period_s
+    r.mesh_period_s * r.excitation_periods.max(1) as f64
 }
 
 /// The bearing forces over the first period of the response's recorded window.
@@ -34,7 +35,7 @@ pub fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingFor
     let t0 = s.time_s.first().copied().unwrap_or(0.0);
     // The window holds whole periods; keep the samples of the first (a sample within
     // 1e-9 of a period of the next period's start belongs to the next).
-    let n = if evaluated_periods(r) > 1 {
+    let n = if evaluated_periods(r) > r.excitation_periods.max(1) {
         s.time_s
             .partition_point(|t| *t < t0 + period * (1.0 - 1e-9))
     } else {

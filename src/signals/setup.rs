@@ -131,8 +131,8 @@ mod tests {
         assert_eq!(c.length, RecordLength::Revolutions(20.0));
         let e = load_case("[signals]\ntachometer_shaft = \"motor\"\n", &[]).unwrap_err();
         assert!(
-            e.problems[0].contains("`signals.tachometer_shaft`")
-                && e.problems[0].contains("\"pinion\", \"gear\""),
+            e.problems[0].to_string().contains("`signals.tachometer_shaft`")
+                && e.problems[0].to_string().contains("\"pinion\", \"gear\""),
             "{e}"
         );
         let e = load_case(
@@ -140,6 +140,6 @@ mod tests {
             &[],
         )
         .unwrap_err();
-        assert!(e.problems[0].contains("both given"), "{e}");
+        assert!(e.problems[0].to_string().contains("both given"), "{e}");
     }
 }

@@ -9,6 +9,7 @@ pub mod modes;
 pub mod paper;
 pub mod signal_record;
 pub mod sweep;
+pub mod teeth;
 pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;

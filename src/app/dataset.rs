@@ -1,5 +1,6 @@
-//! The dataset job: a study design to a folder of labelled records (`jobs::dataset_dir`
-//! for the layout), sharded, resumable, streamed to disk; and the merge of shards.
+//! The dataset jobs: a study design to a folder of labelled records (`app::dataset_dir`
+//! for the layout), sharded, resumable, streamed to disk ([`DatasetJob`]); and the merge
+//! of shards ([`DatasetMergeJob`]).
 //!
 //! Steps: check the design against the signal chain and the disk budget (before any
 //! work); run the trajectories the shard needs (kept in `state/`, reused when present);
@@ -12,13 +13,18 @@ use super::dataset_dir::{
     csv_rel, finished, put, sidecar_rel, stage_index_and_metadata, trajectory_rel, Sidecar,
     TrajectoryFile, DATASET_REL,
 };
-use super::Progress;
+use super::observer::{Observer, Task};
+use super::{publish, Job, JobError, Outcome};
 use crate::checksum::sha256_hex;
 use crate::io::OutputDir;
+use crate::remedy::{Arg, Problem};
 use crate::report::signals::chain_json;
+use crate::report::Artifacts;
 use crate::signals::files::{record_parquet, record_table, units};
+use crate::signals::path_file::parse_transfer_path;
 use crate::signals::setup::{chain_of, ChainSetup};
 use crate::signals::transfer::TransferPath;
+use crate::study::dataset::parse_design;
 use crate::study::dataset::plan::{Plan, Shard};
 use crate::study::dataset::records::{state_records, StateInputs};
 use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
@@ -28,9 +34,10 @@ use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 use std::path::Path;
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Why a dataset job failed: bad input (the design, its files, the budget) or a run
+/// Why a dataset step failed: bad input (the design, its files, the budget) or a run
 /// that could not finish.
 #[derive(Debug, thiserror::Error)]
 pub enum DatasetError {
@@ -38,6 +45,15 @@ pub enum DatasetError {
     Input(Vec<String>),
     #[error(transparent)]
     Failed(#[from] anyhow::Error),
+}
+
+impl From<DatasetError> for JobError {
+    fn from(e: DatasetError) -> Self {
+        match e {
+            DatasetError::Input(m) => JobError::Input(m.into_iter().map(Problem::new).collect()),
+            DatasetError::Failed(e) => JobError::Failed(e),
+        }
+    }
 }
 
 /// What a dataset job did.
@@ -226,7 +242,7 @@ pub fn run_dataset(
     checked: Checked,
     root: &Path,
     mut out: OutputDir,
-    obs: &dyn Progress,
+    obs: &dyn Observer,
 ) -> Result<DatasetOutcome, DatasetError> {
     let d = req.design;
     let Checked {
@@ -238,6 +254,7 @@ pub fn run_dataset(
             obs.warning(w);
         }
     }
+
     let key = dataset_key(d, &req.path_bytes);
     let plan = plan_of(d);
     for dir in ["signals", "records", "state", "csv"] {
@@ -264,16 +281,18 @@ pub fn run_dataset(
         .collect::<Result<_, DatasetError>>()?;
     let done = AtomicUsize::new(0);
     let reused = AtomicUsize::new(0);
-    obs.progress(0, shard_records as u64);
+    let task = Task::items("records", "records", shard_records);
+    obs.start(&task);
     let results: Vec<Result<(), String>> = states
         .par_iter()
         .map(|&p| {
             let r = one_state(req, &plan, p, &setups, &trajectories, root, &key, &reused);
             let n = done.fetch_add(plan.realisations, Ordering::Relaxed) + plan.realisations;
-            obs.progress(n as u64, shard_records as u64);
+            obs.advance(&task, n as f64, "");
             r.map_err(|e| format!("physical state {p}: {e:#}"))
         })
         .collect();
+    obs.finish(&task);
     let failures: Vec<String> = results.into_iter().filter_map(Result::err).collect();
     keep_files(&mut out, root, &plan, &states, &key, d);
     for rel in ["signals/.keep", "records/.keep", "state/.keep", "csv/.keep"] {
@@ -499,4 +518,163 @@ pub fn merge_datasets(
         missing,
         estimated_bytes: 0.0,
     })
+}
+
+/// A study design and where it was read from (its folder resolves the design's relative
+/// paths: the case file and the transfer-path file).
+#[derive(Debug, Clone)]
+pub struct DesignSource {
+    pub text: String,
+    /// The design's name in messages (its file name).
+    pub name: String,
+    pub folder: PathBuf,
+}
+
+impl DesignSource {
+    /// The design in `path`.
+    pub fn file(path: &Path) -> Result<Self, JobError> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            JobError::input(Problem::given(
+                Arg::Design,
+                &name,
+                format!("cannot read it: {e}"),
+            ))
+        })?;
+        Ok(Self {
+            text,
+            name,
+            folder: path
+                .parent()
+                .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+        })
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct DatasetJob {
+    pub design: DesignSource,
+    pub shard: Shard,
+    pub out: PathBuf,
+}
+
+fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
+    let mut artifacts = Artifacts {
+        summary: serde_json::json!({
+            "records": o.total_records,
+            "records_of_this_run": o.shard_records,
+            "computed": o.computed,
+            "reused": o.reused,
+            "failures": o.failures,
+            "missing": o.missing,
+            "estimated_bytes": o.estimated_bytes,
+        }),
+        ..Default::default()
+    };
+    artifacts.headline = format!(
+        "{what}: {} of {} records ({} computed, {} reused){}",
+        o.shard_records,
+        o.total_records,
+        o.computed,
+        o.reused,
+        if o.missing.is_empty() {
+            String::new()
+        } else {
+            format!("; {} records missing from the index", o.missing.len())
+        }
+    );
+    Outcome {
+        artifacts,
+        published: Some(root.to_path_buf()),
+        incomplete: (!o.failures.is_empty()).then(|| {
+            format!(
+                "{} physical states failed:\n  {}",
+                o.failures.len(),
+                o.failures.join("\n  ")
+            )
+        }),
+    }
+}
+
+impl Job for DatasetJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "dataset"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let d = &self.design;
+        let read =
+            |rel: &str| std::fs::read_to_string(d.folder.join(rel)).map_err(|e| e.to_string());
+        let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
+            JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
+        })?;
+        let (path, path_bytes) = match &design.transfer_path {
+            Some(rel) => {
+                let p = d.folder.join(rel);
+                let shown = p.display().to_string();
+                let bytes = std::fs::read(&p).map_err(|e| {
+                    JobError::input(Problem::given(
+                        Arg::TransferPath,
+                        &shown,
+                        format!("cannot read it: {e}"),
+                    ))
+                })?;
+                let path =
+                    parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
+                        JobError::Input(
+                            m.into_iter()
+                                .map(|m| Problem::of(Arg::TransferPath, m))
+                                .collect(),
+                        )
+                    })?;
+                (Some(path), bytes)
+            }
+            None => (None, Vec::new()),
+        };
+        let req = DatasetRequest {
+            design: &design,
+            path,
+            path_bytes,
+            shard: self.shard,
+        };
+        let checked = check_dataset(&req)?;
+        let set = (self.shard.count > 1)
+            .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
+        let out = publish::open(&self.out, set.as_deref(), self.name())?;
+        let o = run_dataset(&req, checked, &self.out, out, observer)?;
+        observer.note(&format!("dataset: results -> {}", self.out.display()));
+        Ok(outcome(&o, &self.out, "dataset"))
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct DatasetMergeJob {
+    pub inputs: Vec<PathBuf>,
+    pub out: PathBuf,
+}
+
+impl Job for DatasetMergeJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "dataset-merge"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        if self.inputs.is_empty() {
+            return Err(JobError::input(Problem::of(
+                Arg::Inputs,
+                "no dataset folders given",
+            )));
+        }
+        let out = publish::open(&self.out, None, self.name())?;
+        let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
+        let o = merge_datasets(&inputs, &self.out, out)?;
+        observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
+        Ok(outcome(&o, &self.out, "dataset-merge"))
+    }
 }
