@@ -131,7 +131,9 @@ mod tests {
         assert_eq!(c.length, RecordLength::Revolutions(20.0));
         let e = load_case("[signals]\ntachometer_shaft = \"motor\"\n", &[]).unwrap_err();
         assert!(
-            e.problems[0].to_string().contains("`signals.tachometer_shaft`")
+            e.problems[0]
+                .to_string()
+                .contains("`signals.tachometer_shaft`")
                 && e.problems[0].to_string().contains("\"pinion\", \"gear\""),
             "{e}"
         );
