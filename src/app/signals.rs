@@ -112,7 +112,13 @@ impl Job for SignalsJob {
         let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
             .map_err(|e| JobError::Failed(e.into()))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
-        let artifacts = signals_artifacts(&rec, &setup.chain, harmonics, "new teeth");
+        let c = &self.case;
+        let label = if c.teeth.is_empty() && c.modification.is_empty() && c.fault.is_empty() {
+            "new teeth"
+        } else {
+            "the case's tooth errors, modifications and faults"
+        };
+        let artifacts = signals_artifacts(&rec, &setup.chain, harmonics, label);
         let meta = RunMetadata::of_model(self.name(), &model);
         publish::publish(out, artifacts, Some(&meta), observer)
     }

@@ -179,16 +179,36 @@ fn spectrum_figure(
         log_y: true,
         ..Default::default()
     };
+    // Around the strongest mesh harmonic of the recorded band (where the housing
+    // carries the mesh best), its sidebands at the shaft speeds marked.
+    // A tone between bins spreads over its neighbours (Hann main lobe): the
+    // largest of the three bins around each harmonic stands for its level.
+    let df = r.sampling_rate_hz / x.len() as f64;
+    let level = |f: f64| {
+        let b = (f / df).round() as usize;
+        amp[b.saturating_sub(1)..(b + 2).min(amp.len())]
+            .iter()
+            .fold(0.0_f64, |m, a| m.max(*a))
+    };
+    let strongest = (1..)
+        .map(|h| h as f64 * fm)
+        .take_while(|f| *f <= band)
+        .max_by(|a, b| level(*a).total_cmp(&level(*b)))
+        .unwrap_or(fm);
+    let h0 = (strongest / fm).round() as usize;
     let span = 4.5 * k.pinion_hz.max(k.gear_hz);
-    let (zx, zy) = keep(fm - span, fm + span);
-    let mut side = vec![(fm, "mesh".to_string())];
-    for (sh, fs) in [("pinion", k.pinion_hz), ("gear", k.gear_hz)] {
+    let (zx, zy) = keep(strongest - span, strongest + span);
+    let mut side = vec![(strongest, harmonic_label(h0))];
+    for (sh, f) in [("pinion", k.pinion_hz), ("gear", k.gear_hz)] {
         for n in [-2.0, -1.0, 1.0, 2.0] {
-            side.push((fm + n * fs, format!("{:+} {sh}", n as i32)));
+            side.push((strongest + n * f, format!("{:+} {sh}", n as i32)));
         }
     }
     let zoom = Panel {
-        title: "around the mesh frequency: sidebands at multiples of the shaft speeds".into(),
+        title: format!(
+            "around the strongest mesh harmonic ({}): sidebands at the shaft speeds",
+            harmonic_label(h0)
+        ),
         x_label: "frequency (Hz)".into(),
         y_label: format!("amplitude ({unit})"),
         series: vec![stems(zx, zy)],
