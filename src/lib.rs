@@ -6,12 +6,13 @@
 //!
 //! Layers, each depending only on those before it:
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `prognostics` -> `io` / `report` -> `cli`.
+//! -> `duty` -> `prognostics` -> `io` / `report` -> `cli`.
 
 pub mod checksum;
 pub mod cli;
 pub mod config;
 pub mod contact;
+pub mod duty;
 pub mod dynamics;
 pub mod format;
 pub mod geometry;

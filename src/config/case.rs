@@ -30,6 +30,9 @@ pub struct Case {
     pub wear: WearSection,
     pub numerics: NumericsSection,
     pub calibration: CalibrationSection,
+    /// The duty cycle (issue 20); absent: the single operating point of `operating`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
 }
 
 /// Involute spur pair (paper Table 1).

@@ -109,7 +109,7 @@ fn as_number(v: &Value) -> Option<f64> {
 
 /// Bring `v` to the type `valid` wants (integers to floats for number keys, whole floats to
 /// integers for count keys), or say why it cannot be: Err(problem).
-fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
+pub(super) fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
     let wrong = |v: &Value| {
         format!(
             "`{path}` = {} is {}, expected {}",
@@ -152,7 +152,7 @@ fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
 }
 
 /// Check one (normalised) value against its spec.
-fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
+pub(super) fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
     let in_range = |r: Range| as_number(v).is_some_and(|x| r.contains(x));
     let ok = match valid {
         Valid::Num(r) => in_range(r),
@@ -227,6 +227,9 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
     }
 }
 
+/// The section read apart by [`super::load_spectrum`].
+const LOAD_SPECTRUM: &str = "load_spectrum";
+
 /// Checks that involve more than one key of the case file itself.
 fn check_relations(case: &Case, problems: &mut Vec<String>) {
     let s = &case.surface;
@@ -297,20 +300,37 @@ fn toml_error(e: &toml::de::Error) -> String {
 
 /// Build a case from TOML text (empty for the default) and `--set` overrides.
 ///
-/// Returns every problem at once; the case is only returned when there is none.
+/// Returns every problem at once; the case is only returned when there is none. A
+/// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
+/// another).
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
+    load_case_in(toml_text, overrides, std::path::Path::new("."))
+}
+
+/// As [`load_case`], with the folder a relative `load_spectrum.file` is read from (the
+/// case file's own folder).
+pub fn load_case_in(
+    toml_text: &str,
+    overrides: &[String],
+    dir: &std::path::Path,
+) -> Result<Case, ConfigError> {
     let mut problems = Vec::new();
     let mut user: Table = toml::from_str(toml_text).map_err(|e| {
         ConfigError::one(format!("case file is not valid TOML: {}", toml_error(&e)))
     })?;
     apply_overrides(&mut user, overrides, &mut problems);
+    // The spectrum's bins are tables or a file, not schema keys: read apart.
+    let spectrum = user
+        .remove(LOAD_SPECTRUM)
+        .and_then(|v| super::load_spectrum::parse_section(v, dir, &mut problems));
     check_keys(&mut user, &mut problems);
     if !problems.is_empty() {
         return Err(ConfigError { problems });
     }
-    let case: Case = Value::Table(user)
+    let mut case: Case = Value::Table(user)
         .try_into()
         .map_err(|e: toml::de::Error| ConfigError::one(format!("case file: {}", toml_error(&e))))?;
+    case.load_spectrum = spectrum;
     check_relations(&case, &mut problems);
     if problems.is_empty() {
         Ok(case)
@@ -338,6 +358,7 @@ pub fn check_all_ranges(case: &Case) -> Vec<String> {
         }
     }
     check_relations(case, &mut problems);
+    problems.extend(super::load_spectrum::spectrum_problems(case));
     problems
 }
 
