@@ -208,3 +208,35 @@ fn the_early_stop_watches_every_bin_and_names_it() {
     let last = s.last().unwrap();
     assert!(stop.cycles > last.wear.cycles && s.records.len() > 3);
 }
+
+#[test]
+fn life_of_identical_bins_is_the_single_point_life_and_heavier_bins_live_shorter() {
+    use gearwear::duty::life::life_table;
+    // Two identical bins: the spectrum's life, each bin's and the linear mix are the
+    // operating point's (the block split changes only rounding, as above).
+    let two = case(&two_bins(60.0, 60.0, 0.3, 30.0), &[]);
+    let t = life_table(&two, WearMode::Dynamic, 2.0, 1e9).unwrap();
+    let l = t.bins[0].life.cycles().unwrap();
+    assert_eq!(t.bins[1].life.cycles(), Some(l));
+    let s = t.spectrum.cycles().unwrap();
+    // Relative 1e-9: the rounding bound of the split (1e-12 of the depth) over the
+    // smallest wear rate ratio along a block.
+    assert!((s - l).abs() < 1e-9 * l, "{s} {l}");
+    assert!((t.linear_mix_cycles.unwrap() - l).abs() < 1e-12 * l);
+    // Hours at 30 Hz.
+    assert!((t.spectrum_hours.unwrap() - s / 30.0 / 3600.0).abs() < 1e-12 * s);
+    // 40 and 90 N m at 30 Hz: the heavier bin wears faster; the mix lies between.
+    let t = life_table(
+        &case(&two_bins(40.0, 90.0, 0.5, 30.0), &[]),
+        WearMode::Dynamic,
+        2.0,
+        1e9,
+    )
+    .unwrap();
+    let (l1, l2) = (
+        t.bins[0].life.cycles().unwrap(),
+        t.bins[1].life.cycles().unwrap(),
+    );
+    let s = t.spectrum.cycles().unwrap();
+    assert!(l2 < s && s < l1, "{l1} {s} {l2}");
+}

@@ -143,7 +143,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     };
     let fw = match &sur {
         Some(s) => Forward::Surrogate(s),
-        None => Forward::Exact(&case),
+        None => Forward::Exact(&case, None),
     };
     let ids = shard.ids(n);
     eprintln!(

@@ -3,36 +3,38 @@
 //! flanks wear, and the run as one sequence of updates for the single-point readers
 //! (tables, figures, prognostics).
 
-use super::wear::SpectrumRun;
+use super::wear::{SpectrumRecord, SpectrumRun};
 use crate::study::wear_loop::{UpdateRecord, WearRun};
 use serde::Serialize;
 
-/// The run as single-point updates: the shared wear state, the spectrum's per-cycle
-/// wear sum_i s_i inc_i (so wear between updates grows exactly as in the run), and the
-/// response of bin `observed` (the monitoring bin: what a sensor records at its reference
-/// condition).
+/// One update of `run` as a single-point update: the shared wear state, the spectrum's
+/// per-cycle wear sum_i s_i inc_i (so wear between updates grows exactly as in the run),
+/// and the response of bin `observed` (the monitoring bin: what a sensor records at its
+/// reference condition).
+pub fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
+    let (inc_p, inc_g) = r.increment(&run.shares);
+    let b = &r.bins[observed.min(r.bins.len() - 1)];
+    UpdateRecord {
+        wear: r.wear.clone(),
+        roughness_um: r.roughness_um,
+        summary: b.summary,
+        increment_pinion_m: inc_p,
+        increment_gear_m: inc_g,
+        path_rho1_m: b.path_rho1_m.clone(),
+        path_load_n: b.path_load_n.clone(),
+        end_state: None,
+    }
+}
+
+/// The run as single-point updates ([`combined_record`] of each).
 pub fn combined_run(run: &SpectrumRun, observed: usize) -> WearRun {
-    let records = run
-        .records
-        .iter()
-        .map(|r| {
-            let (inc_p, inc_g) = r.increment(&run.shares);
-            let b = &r.bins[observed.min(r.bins.len() - 1)];
-            UpdateRecord {
-                wear: r.wear.clone(),
-                roughness_um: r.roughness_um,
-                summary: b.summary,
-                increment_pinion_m: inc_p,
-                increment_gear_m: inc_g,
-                path_rho1_m: b.path_rho1_m.clone(),
-                path_load_n: b.path_load_n.clone(),
-                end_state: None,
-            }
-        })
-        .collect();
     WearRun {
         mode: run.mode,
-        records,
+        records: run
+            .records
+            .iter()
+            .map(|r| combined_record(run, r, observed))
+            .collect(),
         stopped: run.stopped.clone(),
     }
 }

@@ -168,6 +168,51 @@ fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> SpectrumRecord {
     next
 }
 
+/// The first record of a run on `state`: every bin's response, cold-started (from the
+/// static equilibrium), and no wear attributed to any bin yet. An error names the bin
+/// whose response fails or leaves the model's domain.
+fn first_record(
+    sm: &SpectrumModel,
+    mode: WearMode,
+    state: WearState,
+) -> anyhow::Result<SpectrumRecord> {
+    let nbins = sm.len();
+    let bins = respond(sm, mode, &state, &vec![None; nbins]).map_err(|(i, f)| match f {
+        BinFailure::Solver(e) => anyhow::anyhow!("{}: {e}", sm.label(i)),
+        BinFailure::Validity(x) => anyhow::anyhow!(
+            "{}: at {:.0} cycles (maximum pinion wear {:.2} um) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact does not apply",
+            sm.label(i),
+            state.cycles,
+            state.max_pinion_m() * 1e6,
+            100.0 * x,
+            100.0 * MAX_CONTACT_LOSS_FRACTION
+        ),
+    })?;
+    let zeros = vec![vec![0.0; state.pinion_m.len()]; nbins];
+    Ok(SpectrumRecord {
+        roughness_um: sm.bins[0].roughness_for(&state),
+        wear: state,
+        bins,
+        by_bin_pinion_m: zeros.clone(),
+        by_bin_gear_m: zeros,
+    })
+}
+
+impl SpectrumRun {
+    /// A run under `sm`'s spectrum that starts from the worn `state` (e.g. the end of a
+    /// run under another spectrum: a change of duty), its first record that state with
+    /// every bin's response on it; wear attributed to the bins counts from there.
+    pub fn starting_at(
+        sm: &SpectrumModel,
+        mode: WearMode,
+        state: WearState,
+    ) -> anyhow::Result<Self> {
+        let mut run = Self::new(mode, sm.shares.clone());
+        run.records.push(first_record(sm, mode, state)?);
+        Ok(run)
+    }
+}
+
 /// Run (or continue) a wear study under `sm`'s spectrum to the case's total cycles.
 /// `on_update` is called after every update (checkpoints, progress); an error it returns
 /// stops the run. The run may stop early ([`SpectrumRun::stopped`], naming the bin); only
@@ -179,27 +224,9 @@ pub fn run_spectrum_wear(
 ) -> anyhow::Result<SpectrumRun> {
     let w = &sm.case.wear;
     let threshold_m = w.threshold_um * 1e-6;
-    let nbins = sm.len();
     if run.records.is_empty() {
         let state = WearState::new(sm.bins[0].grid.len());
-        let none = vec![None; nbins];
-        let bins = respond(sm, run.mode, &state, &none).map_err(|(i, f)| match f {
-            BinFailure::Solver(e) => anyhow::anyhow!("{}: {e}", sm.label(i)),
-            BinFailure::Validity(x) => anyhow::anyhow!(
-                "{}: the new teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact does not apply",
-                sm.label(i),
-                100.0 * x,
-                100.0 * MAX_CONTACT_LOSS_FRACTION
-            ),
-        })?;
-        let zeros = vec![vec![0.0; state.pinion_m.len()]; nbins];
-        run.records.push(SpectrumRecord {
-            roughness_um: sm.bins[0].roughness_for(&state),
-            wear: state,
-            bins,
-            by_bin_pinion_m: zeros.clone(),
-            by_bin_gear_m: zeros,
-        });
+        run.records.push(first_record(sm, run.mode, state)?);
         on_update(&run)?;
     }
     while run.stopped.is_none() {
