@@ -192,6 +192,29 @@ fn chain(
     })
 }
 
+/// The first cycles in [lo, hi] where `wear` (non-decreasing, below `limit_um` at lo and
+/// at or above it at hi) reaches `limit_um`, by bisection to 1e-12 relative; Unknown
+/// where `wear` has no value.
+pub(super) fn bisect_crossing(
+    wear: &dyn Fn(f64) -> Option<f64>,
+    limit_um: f64,
+    mut lo: f64,
+    mut hi: f64,
+) -> Crossing {
+    for _ in 0..200 {
+        if hi - lo <= 1e-12 * hi.max(1.0) {
+            break;
+        }
+        let mid = 0.5 * (lo + hi);
+        match wear(mid) {
+            Some(v) if v >= limit_um => hi = mid,
+            Some(_) => lo = mid,
+            None => return Crossing::Unknown,
+        }
+    }
+    Crossing::Reached(hi)
+}
+
 impl Surrogate {
     /// Reference runs for the parameter ranges of `prior` (its bounds; fixed parameters
     /// stay fixed) up to `max_cycles` cycles at the largest k. `nodes_per_axis` chains per
@@ -360,8 +383,8 @@ impl Surrogate {
             })
             .collect();
         let first = reached.iter().copied().fold(f64::INFINITY, f64::min);
-        let mut lo = if first.is_finite() { first } else { 0.0 };
-        let mut hi = if reached.len() == crossings.len() {
+        let lo = if first.is_finite() { first } else { 0.0 };
+        let hi = if reached.len() == crossings.len() {
             reached.iter().copied().fold(0.0, f64::max)
         } else {
             let end = self.valid_until(theta);
@@ -372,18 +395,7 @@ impl Surrogate {
             }
         };
         // The weighted wear is non-decreasing in cycles (each run's is): bisection.
-        for _ in 0..200 {
-            if hi - lo <= 1e-12 * hi.max(1.0) {
-                break;
-            }
-            let mid = 0.5 * (lo + hi);
-            match wear(mid) {
-                Some(v) if v >= limit_um => hi = mid,
-                Some(_) => lo = mid,
-                None => return Crossing::Unknown,
-            }
-        }
-        Crossing::Reached(hi)
+        bisect_crossing(&wear, limit_um, lo, hi)
     }
 
     /// Largest |surrogate - true run| of `q` over `cycles` for `theta` (the true run made

@@ -5,7 +5,7 @@
 use super::forward::{Crossing, FutureDuty};
 use super::prior::Theta;
 use super::quantity::Quantity;
-use super::surrogate::Surrogate;
+use super::surrogate::{bisect_crossing, Surrogate};
 
 /// One run read for a sample: chain, run, weight, and the run's cycles.
 type Reading = (usize, usize, f64, f64);
@@ -86,21 +86,9 @@ impl Surrogate {
                 Crossing::NotReached
             };
         }
-        let (mut lo, mut hi) = (0.0, end);
-        if matches!(wear(lo), Some(v) if v >= limit_um) {
+        if matches!(wear(0.0), Some(v) if v >= limit_um) {
             return Crossing::Reached(0.0);
         }
-        for _ in 0..200 {
-            if hi - lo <= 1e-12 * hi.max(1.0) {
-                break;
-            }
-            let mid = 0.5 * (lo + hi);
-            match wear(mid) {
-                Some(v) if v >= limit_um => hi = mid,
-                Some(_) => lo = mid,
-                None => return Crossing::Unknown,
-            }
-        }
-        Crossing::Reached(hi)
+        bisect_crossing(&wear, limit_um, 0.0, end)
     }
 }
