@@ -53,10 +53,20 @@ pub struct LoadSpectrumSection {
     /// the largest share (the first of equals).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub monitoring_bin: Option<i64>,
+    /// Maximum pinion wear depth that ends the flanks' life in the `run` report's life
+    /// table (under the spectrum and at each bin alone), um.
+    #[serde(default = "default_life_limit")]
+    pub life_wear_limit_um: f64,
 }
 
 fn one() -> f64 {
     1.0
+}
+
+/// 10 um: a fifth of a 2 mm module's 0.05 m wear allowance, the limit of
+/// docs/PROGNOSTICS.md's worked example.
+fn default_life_limit() -> f64 {
+    10.0
 }
 
 /// Largest number of bins: each is a dynamic evaluation per wear update (the run budget
@@ -77,6 +87,7 @@ impl LoadSpectrumSection {
             torque_scale: 1.0,
             speed_scale: 1.0,
             monitoring_bin: None,
+            life_wear_limit_um: default_life_limit(),
         }
     }
 
@@ -265,11 +276,12 @@ pub fn spectrum_problems(case: &Case) -> Vec<String> {
 
 /// The keys of the section as written, besides the scalar schema keys.
 const TABLE_KEYS: [&str; 2] = ["bins", "file"];
-const SCALAR_KEYS: [&str; 4] = [
+const SCALAR_KEYS: [&str; 5] = [
     "torque_shaft",
     "torque_scale",
     "speed_scale",
     "monitoring_bin",
+    "life_wear_limit_um",
 ];
 
 fn as_number(v: &Value) -> Option<f64> {
@@ -561,6 +573,7 @@ pub(super) fn parse_section(
             "torque_scale" => section.torque_scale = as_number(&value).unwrap_or(1.0),
             "speed_scale" => section.speed_scale = as_number(&value).unwrap_or(1.0),
             "monitoring_bin" => section.monitoring_bin = value.as_integer(),
+            "life_wear_limit_um" => section.life_wear_limit_um = as_number(&value).unwrap_or(10.0),
             _ => {
                 section.torque_shaft = Some(match value.as_str() {
                     Some("gear") => TorqueShaft::Gear,

@@ -7,7 +7,7 @@
 //! built in parallel, and all of them before anything is solved: one bad bin refuses the
 //! whole spectrum, naming the bin.
 
-use crate::config::Case;
+use crate::config::{Case, LoadSpectrumSection, SpectrumBin};
 use crate::study::model::{Model, ModelError};
 use rayon::prelude::*;
 
@@ -91,6 +91,20 @@ impl SpectrumModel {
             }
         }
         w
+    }
+
+    /// The spectrum as used: the case's, or one bin at its operating point.
+    pub fn spectrum(&self) -> LoadSpectrumSection {
+        self.case.load_spectrum.clone().unwrap_or_else(|| {
+            let o = &self.case.operating;
+            let mut s = LoadSpectrumSection::of_bins(vec![SpectrumBin {
+                torque_nm: o.load_torque_nm,
+                input_speed_hz: o.input_speed_hz,
+                share: 1.0,
+            }]);
+            s.torque_shaft = Some(o.load_torque_shaft);
+            s
+        })
     }
 
     /// Label of bin `i` for messages.
