@@ -1,8 +1,7 @@
 //! Command-line arguments (clap derive).
 
 use crate::config::{load_case, Case};
-use crate::study::budget::{estimate, Budget, Job};
-use crate::study::sweep::{parse_vary, Shard, SweepPlan, SweepRun};
+use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -40,85 +39,10 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
     }
 }
 
-const DYNAMIC_WEAR: Job = Job::Wear {
-    dynamic: true,
-    quasi_static: false,
-};
-
 impl Cli {
     /// The budget the flags ask for; None without one.
     pub fn budget(&self) -> Option<Budget> {
         (!self.no_budget).then(|| Budget::scaled(self.budget_scale.unwrap_or(1.0)))
-    }
-
-    /// Refuse, before anything is computed, a command whose case is over `budget`
-    /// (`study::budget`). Cases that do not load are left to the command's own messages.
-    pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
-        let (case, job) = match &self.command {
-            Command::Config(_) | Command::SweepMerge(_) | Command::PredictMerge(_) => return Ok(()),
-            // Each forward run of an ensemble is a dynamic wear study of the case (at
-            // its sampled parameters); the number of runs is the user's explicit choice.
-            Command::Calibrate(a) => (&a.case, DYNAMIC_WEAR),
-            Command::Predict(a) => (&a.case, DYNAMIC_WEAR),
-            Command::Stiffness(a) => (&a.case, Job::Stiffness),
-            Command::Dynamics(a) => (&a.case, Job::Dynamics),
-            Command::Wear(a) => (
-                &a.case,
-                Job::Wear {
-                    dynamic: a.mode != WearModeArg::QuasiStatic,
-                    quasi_static: a.mode != WearModeArg::Dynamic,
-                },
-            ),
-            Command::Run(a) => (&a.case, Job::Run),
-            Command::Sweep(a) => return sweep_budget(a, budget),
-        };
-        match case.load() {
-            Ok(c) => estimate(&c, job).check(budget).map_err(CliError::input),
-            Err(_) => Ok(()),
-        }
-    }
-}
-
-/// Every case of a sweep against the budget (the cases that load; the sweep reports the
-/// others itself).
-fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
-    let Ok(text) = a.case.text() else {
-        return Ok(());
-    };
-    let axes: Result<Vec<_>, _> = a.vary.iter().map(|v| parse_vary(v)).collect();
-    let Some(plan) = axes.ok().and_then(|x| SweepPlan::new(x).ok()) else {
-        return Ok(());
-    };
-    let job = Job::SweepCase(match a.run {
-        SweepRunArg::Dynamics => SweepRun::Dynamics,
-        SweepRunArg::Wear => SweepRun::Wear,
-    });
-    let shard = match &a.shard {
-        Some(s) => match Shard::parse(s) {
-            Ok(s) => s,
-            Err(_) => return Ok(()), // the sweep reports a bad --shard itself
-        },
-        None => Shard::ALL,
-    };
-    let over: Vec<String> = shard
-        .ids(plan.len())
-        .into_iter()
-        .filter_map(|id| {
-            let mut sets = a.case.set.clone();
-            sets.extend(plan.overrides_of(id));
-            let case = load_case(&text, &sets).ok()?;
-            let e = estimate(&case, job).check(budget).err()?;
-            Some(format!(
-                "case {id} ({}): {e}",
-                plan.overrides_of(id).join(", ")
-            ))
-        })
-        .take(10)
-        .collect();
-    if over.is_empty() {
-        Ok(())
-    } else {
-        Err(CliError::Input(over))
     }
 }
 

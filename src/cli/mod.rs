@@ -1,5 +1,7 @@
-//! The `gearwear` command line. Thin: parses arguments, builds the model objects from a
-//! validated case, calls the solvers, hands results to the writers.
+//! The `gearwear` command line. Thin: each command parses its arguments into a job of
+//! the application layer (`crate::app`), runs it with a terminal observer (progress bars,
+//! warnings on standard error) and prints its headline; errors are worded with the
+//! command line's flags (`error::flag`).
 
 mod args;
 mod calibrate_cmd;
@@ -9,18 +11,14 @@ mod error;
 mod output;
 mod predict_cmd;
 mod progress;
-mod resume;
 mod run_cmd;
 mod stiffness_cmd;
-mod stops;
 mod sweep_cmd;
-mod sweep_continuation;
-mod sweep_merge_cmd;
-mod sweep_records;
 mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
-pub use error::CliError;
+pub use error::{flag, CliError};
+pub use progress::Terminal;
 
 use clap::Parser;
 use std::process::ExitCode;
@@ -29,22 +27,19 @@ use std::process::ExitCode;
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
-    let budget = match cli.budget() {
-        Some(b) => cli.check_budget(&b),
-        None => Ok(()),
-    };
-    let result = budget.and_then(|()| match &cli.command {
+    let budget = cli.budget();
+    let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
-        Command::Stiffness(a) => stiffness_cmd::run(a),
-        Command::Dynamics(a) => dynamics_cmd::run(a),
-        Command::Wear(a) => wear_cmd::run(a),
-        Command::Run(a) => run_cmd::run(a),
-        Command::Sweep(a) => sweep_cmd::run(a),
-        Command::SweepMerge(a) => sweep_merge_cmd::merge(a),
-        Command::Calibrate(a) => calibrate_cmd::run(a),
-        Command::Predict(a) => predict_cmd::run(a),
+        Command::Stiffness(a) => stiffness_cmd::run(a, budget),
+        Command::Dynamics(a) => dynamics_cmd::run(a, budget),
+        Command::Wear(a) => wear_cmd::run(a, budget),
+        Command::Run(a) => run_cmd::run(a, budget),
+        Command::Sweep(a) => sweep_cmd::run(a, budget),
+        Command::SweepMerge(a) => sweep_cmd::merge(a),
+        Command::Calibrate(a) => calibrate_cmd::run(a, budget),
+        Command::Predict(a) => predict_cmd::run(a, budget),
         Command::PredictMerge(a) => predict_cmd::merge(a),
-    });
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

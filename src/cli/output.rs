@@ -1,16 +1,13 @@
-//! What every command does around its study: build the model (warnings to stderr), open
-//! the output set, write and publish the artifacts, print the headline.
+//! Running a job from the command line: the terminal observer attached, the headline
+//! printed, an incomplete result turned into exit code 1.
 //!
 //! Streams: results (the headline numbers) go to standard output, so `gearwear run >
 //! out.txt` keeps them; progress bars, warnings and log lines go to standard error.
 //! `--quiet` drops the headline.
 
+use super::progress::Terminal;
 use super::CliError;
-use crate::config::Case;
-use crate::io::{OutputDir, RunMetadata};
-use crate::report::{publish_artifacts, Artifacts};
-use crate::study::Model;
-use std::path::Path;
+use crate::app::{Job, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);
@@ -27,26 +24,18 @@ pub fn say(text: &str) {
     }
 }
 
-/// Build the model; geometry problems are input errors (exit 2); warnings go to stderr.
-pub fn build_model(case: &Case) -> Result<Model, CliError> {
-    let m = Model::from_case(case).map_err(|e| CliError::Input(e.0))?;
-    for w in &m.warnings {
-        eprintln!("warning: {w}");
+/// Run `job` with progress bars, print its headline; a result that is incomplete (a wear
+/// run the solver gave up on, failed sweep cases) is an error after its outputs are
+/// written.
+pub fn execute<J: Job>(job: &J) -> Result<(), CliError>
+where
+    J::Output: AsRef<Outcome>,
+{
+    let output = job.run(&Terminal::new())?;
+    let o = output.as_ref();
+    say(&o.artifacts.headline);
+    match &o.incomplete {
+        Some(m) => Err(CliError::Failed(anyhow::anyhow!("{m}"))),
+        None => Ok(()),
     }
-    Ok(m)
-}
-
-/// Open the output folder for `command` (one set per folder).
-pub fn open_out(out: &Path, command: &str) -> Result<OutputDir, CliError> {
-    Ok(OutputDir::open(out, None, command)?)
-}
-
-/// Stamp the metadata on the summary, stage everything, publish the set, print the
-/// headline (stdout) and where the files went (stderr).
-pub fn finish(out: OutputDir, mut a: Artifacts, meta: &RunMetadata) -> Result<(), CliError> {
-    a.stamp_metadata(meta).map_err(anyhow::Error::from)?;
-    let root = publish_artifacts(out, &a)?;
-    say(&a.headline);
-    eprintln!("{}: results -> {}", meta.command, root.display());
-    Ok(())
 }

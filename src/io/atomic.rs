@@ -9,6 +9,7 @@
 //! the way must be real folders, not links (`ensure_real_dir`).
 
 use super::error::OutputError;
+use crate::remedy::Remedy;
 use std::io::Write;
 use std::path::Path;
 
@@ -29,7 +30,7 @@ pub fn ensure_real_dir(root: &Path, dir: &Path) -> Result<(), OutputError> {
             "use",
             root,
             "it is a file, not a folder",
-            "choose another --out",
+            Some(Remedy::output("choose another folder")),
         ));
     }
     let mut cur = root.to_path_buf();
@@ -40,8 +41,8 @@ pub fn ensure_real_dir(root: &Path, dir: &Path) -> Result<(), OutputError> {
                 return Err(OutputError::new(
                     "write into",
                     &cur,
-                    "it is a symbolic link; gearwear writes only inside --out",
-                    "remove the link or choose another --out",
+                    "it is a symbolic link; gearwear writes only inside the output folder",
+                    Some(Remedy::output("remove the link or choose another folder")),
                 ))
             }
             Ok(m) if !m.is_dir() => {
@@ -49,7 +50,7 @@ pub fn ensure_real_dir(root: &Path, dir: &Path) -> Result<(), OutputError> {
                     "write into",
                     &cur,
                     "it is a file, not a folder",
-                    "move it away or choose another --out",
+                    Some(Remedy::output("move it away or choose another folder")),
                 ))
             }
             Ok(_) => {}

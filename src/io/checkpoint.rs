@@ -17,6 +17,7 @@
 use super::error::OutputError;
 use super::output_dir::sha256_hex;
 use super::write_atomic;
+use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
@@ -42,10 +43,23 @@ pub fn checkpoint_name(mode: WearMode) -> String {
 
 /// Why a checkpoint cannot be used (an input problem: the message names the file).
 #[derive(Debug, thiserror::Error)]
-#[error("--resume: {path}: {reason}")]
+#[error("{}", self.problem())]
 pub struct CheckpointError {
     pub path: String,
     pub reason: String,
+    /// What to do, when more than replacing the file (`crate::remedy`).
+    pub remedy: Option<Box<Remedy>>,
+}
+
+impl CheckpointError {
+    /// The error as a problem of resuming: `resuming: PATH: REASON; REMEDY`.
+    pub fn problem(&self) -> Problem {
+        let p = Problem::of(Arg::Resume, format!("{}: {}", self.path, self.reason));
+        match &self.remedy {
+            Some(r) => p.remedy((**r).clone().path(&self.path)),
+            None => p,
+        }
+    }
 }
 
 fn line_of(json: &str) -> String {
@@ -73,6 +87,7 @@ pub fn load_checkpoint(
     let err = |reason: String| CheckpointError {
         path: path.display().to_string(),
         reason,
+        remedy: None,
     };
     let bytes = match std::fs::read(path) {
         Ok(b) => b,
@@ -114,11 +129,19 @@ pub fn load_checkpoint(
                 )));
             }
             if h.case_sha256 != case_sha256 {
-                return Err(err(format!(
-                    "belongs to another case (hash {} != {}); rerun without --resume or with the same case",
-                    short(&h.case_sha256),
-                    short(case_sha256)
-                )));
+                return Err(CheckpointError {
+                    remedy: Some(Box::new(Remedy::new(
+                        Words::new()
+                            .text("rerun without ")
+                            .arg(Arg::Resume)
+                            .text(" or with the same case"),
+                    ))),
+                    ..err(format!(
+                        "belongs to another case (hash {} != {})",
+                        short(&h.case_sha256),
+                        short(case_sha256)
+                    ))
+                });
             }
         } else {
             let r: UpdateRecord = serde_json::from_str(json)
@@ -168,7 +191,7 @@ impl CheckpointLog {
             case_sha256: case_sha256.into(),
         };
         let json = serde_json::to_string(&header)
-            .map_err(|e| OutputError::new("write", path, e.to_string(), ""))?;
+            .map_err(|e| OutputError::new("write", path, e.to_string(), None))?;
         write_atomic(path, line_of(&json).as_bytes())?;
         let file = open_append(path).map_err(|e| OutputError::io("open", path, &e))?;
         let mut log = Self {
@@ -200,7 +223,7 @@ impl CheckpointLog {
         let mut text = String::new();
         for r in &run.records[self.written..] {
             let json = serde_json::to_string(r)
-                .map_err(|e| OutputError::new("write", &self.path, e.to_string(), ""))?;
+                .map_err(|e| OutputError::new("write", &self.path, e.to_string(), None))?;
             text.push_str(&line_of(&json));
         }
         use std::io::{Seek, SeekFrom};

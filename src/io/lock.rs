@@ -6,6 +6,7 @@
 //! told whom it waits for. It is opened without following a symbolic link.
 
 use super::error::OutputError;
+use crate::remedy::{Problem, Remedy};
 use std::fs::{File, OpenOptions};
 use std::io::{Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -21,10 +22,26 @@ pub struct OutputLock {
 #[derive(Debug, thiserror::Error)]
 pub enum LockError {
     /// Another process holds it.
-    #[error("{path} is being written by another gearwear ({holder}); wait for it to finish, or choose another --out")]
+    #[error("{}", self.problem())]
     Held { path: PathBuf, holder: String },
     #[error(transparent)]
     Io(#[from] OutputError),
+}
+
+impl LockError {
+    /// The error as a problem of the output folder (`crate::remedy`).
+    pub fn problem(&self) -> Problem {
+        match self {
+            LockError::Held { path, holder } => Problem::new(format!(
+                "{} is being written by another gearwear ({holder})",
+                path.display()
+            ))
+            .remedy(Remedy::output(
+                "wait for it to finish, or choose another folder",
+            )),
+            LockError::Io(e) => e.problem(),
+        }
+    }
 }
 
 fn open_no_follow(path: &Path) -> std::io::Result<File> {

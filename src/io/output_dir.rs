@@ -80,7 +80,7 @@ fn check_relative(rel: &str) -> Result<(), OutputError> {
             "write",
             p,
             "not a plain path inside the output folder",
-            "",
+            None,
         ))
     }
 }
@@ -150,6 +150,11 @@ impl OutputDir {
         &self.root
     }
 
+    /// The command whose set this is.
+    pub fn command(&self) -> &str {
+        &self.command
+    }
+
     /// Stage an output file `rel` (relative path, `/`-separated) with `bytes`.
     pub fn stage(&mut self, rel: &str, bytes: &[u8]) -> Result<(), OutputError> {
         check_relative(rel)?;
@@ -166,7 +171,7 @@ impl OutputDir {
     /// Stage `value` as pretty JSON at `rel`.
     pub fn stage_json(&mut self, rel: &str, value: &serde_json::Value) -> Result<(), OutputError> {
         let text = serde_json::to_string_pretty(value)
-            .map_err(|e| OutputError::new("write", Path::new(rel), e.to_string(), ""))?;
+            .map_err(|e| OutputError::new("write", Path::new(rel), e.to_string(), None))?;
         self.stage(rel, text.as_bytes())
     }
 
@@ -266,7 +271,7 @@ impl OutputDir {
                 "write",
                 &self.root.join(&self.manifest_name),
                 e.to_string(),
-                "",
+                None,
             )
         })?;
         write_atomic(&self.root.join(&self.manifest_name), text.as_bytes())?;

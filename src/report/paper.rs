@@ -117,7 +117,7 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
         ),
     );
     out.push(fig("fig05_velocity_y_pinion", 5, f, t));
-    let f_mesh = model.params.mesh_frequency_hz(&model.pair);
+    let f_mesh = model.params.operating.mesh_frequency_hz;
     if let Some(mid) = study
         .wear_states
         .iter()

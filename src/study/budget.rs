@@ -179,8 +179,10 @@ impl Estimate {
         if over.is_empty() {
             Ok(())
         } else {
+            // The remedy (lower those keys, or raise the budget) names arguments of the
+            // front ends: the job layer adds it (`app::budget`).
             Err(format!(
-                "the run is over its budget (nothing was computed): {}. Lower those keys, or raise the budget knowingly with --budget-scale X (or drop it with --no-budget)",
+                "the run is over its budget (nothing was computed): {}",
                 over.join("; ")
             ))
         }
@@ -536,7 +538,7 @@ mod tests {
                 .check(&Budget::DEFAULT)
                 .expect_err(&format!("{sets:?}"));
             assert!(
-                e.contains(key) && e.contains("--budget-scale"),
+                e.contains(key) && e.contains("over its budget"),
                 "{sets:?}: {e}"
             );
         }

@@ -1,6 +1,6 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
-use super::domain::{body_value_warnings, domain_problems, ResolvedParameters};
+use super::domain::{body_value_warnings, domain_problems, Resolved, ResolvedParameters};
 use crate::config::case::{Case, GearSection, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
@@ -98,6 +98,15 @@ impl Model {
             &self.params.lumped,
             self.mesh.fillets(),
         )
+    }
+
+    /// [`Model::resolved_parameters`] and the operating point: `metadata.resolved` of
+    /// every summary.
+    pub fn resolved(&self) -> Resolved {
+        Resolved {
+            parameters: self.resolved_parameters(),
+            operating_point: self.params.operating,
+        }
     }
 
     /// The dynamic system for a wear state (gap), external error and roughness (um).
