@@ -34,6 +34,8 @@
 pub mod budget;
 pub mod calibrate;
 pub mod checkpoints;
+pub mod duty;
+pub mod duty_runs;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;

@@ -17,6 +17,7 @@ pub mod history;
 pub mod ldd;
 pub mod life;
 pub mod model;
+pub mod resume;
 pub mod study;
 pub mod wear;
 

@@ -133,7 +133,7 @@ fn respond(
 
 /// The state after a block of `n` cycles from `last`: each bin adds s_i n inc_i, in bin
 /// order (module docs, step 2).
-fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> SpectrumRecord {
+pub(super) fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> SpectrumRecord {
     let mut next = SpectrumRecord {
         wear: last.wear.clone(),
         roughness_um: last.roughness_um,

@@ -53,7 +53,7 @@ pub fn duty_summary(sm: &SpectrumModel, runs: &[&SpectrumRun], life: Option<&Lif
                 "torque_nm": m.case.operating.load_torque_nm,
                 "torque_shaft": m.case.operating.load_torque_shaft,
                 "input_speed_hz": m.case.operating.input_speed_hz,
-                "mesh_frequency_hz": m.params.mesh_frequency_hz(&m.pair),
+                "mesh_frequency_hz": m.params.operating.mesh_frequency_hz,
                 "share_of_cycles": sm.shares[i],
                 "share_of_time": time.get(i),
             })
@@ -264,4 +264,60 @@ pub fn duty_section(
         figures: figs,
         tables,
     }
+}
+
+/// Everything `run` writes under a load spectrum: the paper's section 4 on the spectrum's
+/// runs (responses at the monitoring bin, never set beside the paper's numbers: the paper
+/// runs one operating point), the duty figures with their data, the spectrum's tables,
+/// summary.json's `load_spectrum`, and the report with its duty-cycle section.
+pub fn duty_run_artifacts(
+    sm: &SpectrumModel,
+    study: &crate::duty::study::DutyStudy,
+    meta: &crate::io::RunMetadata,
+) -> Option<Artifacts> {
+    use super::artifacts::{embed_figures, EmbeddedFigure};
+    let paper = study.paper.as_ref()?;
+    let monitor = &sm.bins[sm.monitoring];
+    let (mut a, mut report) = super::paper::run_artifacts_and_report(monitor, paper, meta, false);
+    let runs: Vec<&SpectrumRun> = study.runs.iter().collect();
+    let figs = duty_figures(sm, &runs, study.life.as_ref());
+    let blocks = embed_figures(
+        &mut a,
+        figs.into_iter()
+            .map(|f| EmbeddedFigure {
+                caption: format!("{}.", f.figure.title),
+                stem: f.stem,
+                figure: f.figure,
+                table: f.table,
+            })
+            .collect(),
+    );
+    for r in &runs {
+        a.table(
+            format!("csv/duty_bins_{}.csv", r.mode.name()),
+            ranking_table(sm, &ranking(r)),
+        );
+    }
+    let main = study.run(WearMode::Dynamic).or(runs.first().copied())?;
+    report
+        .sections
+        .push(duty_section(sm, main, study.life.as_ref(), blocks));
+    report.title = format!("{} under a load spectrum", report.title);
+    a.summary["differs_from_paper_case_in"] = json!(super::case::paper_case_differences(&sm.case));
+    a.summary["load_spectrum"] = duty_summary(sm, &runs, study.life.as_ref());
+    a.summary["warnings"] = json!(sm.warnings());
+    a.headline.push_str(&duty_headline(sm, &runs));
+    if let Some(l) = &study.life {
+        a.headline.push_str(&format!(
+            "\nlife to {} um: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
+            l.limit_um,
+            life_words(&l.spectrum),
+            l.linear_mix_cycles.map_or("-".into(), format_value)
+        ));
+    }
+    a.documents.push((
+        "report.html".into(),
+        super::html::render(&report).into_bytes(),
+    ));
+    Some(a)
 }

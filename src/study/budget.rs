@@ -316,6 +316,15 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         kept
     };
     let (dynamic_modes, quasi_modes) = (dynamic_modes * bins, quasi_modes * bins);
+    // `run` under a spectrum adds the life table: a run to the wear limit under the
+    // spectrum (every bin) and one at each bin alone, blocks cut by the threshold only.
+    let extra_evals = match (&case.load_spectrum, job) {
+        (Some(s), Job::Run) => {
+            let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
+            extra_evals + 2.0 * bins * per_run
+        }
+        _ => extra_evals,
+    };
     let checkpoints = matches!(job, Job::Wear { .. } | Job::Run);
     let record_numbers = 4.0 * grid + 4.0 * s_dyn;
     let mut terms = vec![Term {
@@ -456,7 +465,7 @@ mod tests {
         // Ten bins at the operating point (shares 0.1): the same wear rate and updates,
         // ten times the evaluations.
         let one = estimate(&Case::default(), Job::Run);
-        let bins = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.1}"; 10].join(", ");
+        let bins = ["{torque_nm = 60, input_speed_hz = 30, share = 0.1}"; 10].join(", ");
         let ten = load_case(&format!("[load_spectrum]\nbins = [{bins}]\n"), &[]).unwrap();
         let e = estimate(&ten, Job::Run);
         assert!((e.wear_per_cycle_m.unwrap() / one.wear_per_cycle_m.unwrap() - 1.0).abs() < 1e-12);
@@ -468,13 +477,12 @@ mod tests {
                 .unwrap()
                 .seconds
         };
-        // Run: 1 wear study of U updates plus 3 wear states; ten bins: 10 U + 3.
+        // Run: 1 wear study of U updates plus 3 wear states; ten bins: 10 U + 3, and the
+        // life runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
         let u = one.wear_updates_dynamic;
         let ratio = dyn_s(&e) / dyn_s(&one);
-        assert!(
-            (ratio - (10.0 * u + 3.0) / (u + 3.0)).abs() < 1e-12,
-            "{ratio}"
-        );
+        let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (u + 3.0);
+        assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
         // A long spectrum over the budget names the bins.
         let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
         let big = load_case(
