@@ -93,9 +93,9 @@ def test_ctrl_c_during_one_long_evaluation_returns_within_a_second():
     with pytest.raises(KeyboardInterrupt):
         gw.dynamics(slow)
     assert time.perf_counter() - sent["t"] < 1.0
-    # It does go on in the background; let it end, so that it neither holds a thread
-    # nor grows the memory the next tests measure.
-    assert gw._native._running_jobs() >= 1
+    # It may go on in the background (or have seen the stop flag already, on a fast
+    # machine); let it end, so that it neither holds a thread nor grows the memory the
+    # next tests measure.
     deadline = time.perf_counter() + 120
     while gw._native._running_jobs() and time.perf_counter() < deadline:
         time.sleep(0.1)

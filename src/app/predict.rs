@@ -274,12 +274,11 @@ impl Job for PredictJob {
             outcomes,
         };
         if let Some(stem) = stem {
-            let mut art = Artifacts {
+            let art = Artifacts {
                 summary: serde_json::to_value(&file).map_err(|e| JobError::Failed(e.into()))?,
                 summary_file: Some(format!("{stem}.json")),
                 ..Default::default()
             };
-            art.headline = String::new();
             let outcome = publish::publish(out, art, None, observer)?;
             observer.note(&format!(
                 "predict: shard {}/{} of the samples; join the shards to get the prediction",

@@ -14,7 +14,7 @@
 //! - Values echoed in messages are cut to [`SHOWN_CHARS`] characters with an ellipsis.
 
 use super::case::Case;
-use super::schema::{spec, KeySpec, Range, Valid, KEYS};
+use super::schema::{spec, KeySpec, Range, Valid, KEYS, TABLE_ARRAYS};
 use crate::remedy::{Arg, Words};
 use std::fmt;
 use toml::{Table, Value};
@@ -224,6 +224,10 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
             ));
             continue;
         }
+        if TABLE_ARRAYS.contains(&section.as_str()) {
+            check_table_array(section, value, problems);
+            continue;
+        }
         let Value::Table(table) = value else {
             problems.push(format!(
                 "[{name}] must be a table of keys (a [{name}] section or an inline table), not {}",
@@ -231,15 +235,54 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
             ));
             continue;
         };
-        for (key, v) in table.iter_mut() {
-            let path = format!("{section}.{key}");
-            let Some(s) = spec(&path) else {
-                problems.push(unknown_key(section, &path));
-                continue;
-            };
-            match normalise(&path, v, s.valid) {
-                Ok(()) => problems.extend(check_range(&path, v, s.valid)),
-                Err(p) => problems.push(p),
+        check_table(section, table, "", problems);
+    }
+}
+
+/// Check the keys of one table of `section`, normalising and range-checking in place;
+/// `which` is appended to range problems (the entry of an array of tables).
+fn check_table(section: &str, table: &mut Table, which: &str, problems: &mut Vec<String>) {
+    for (key, v) in table.iter_mut() {
+        let path = format!("{section}.{key}");
+        let Some(s) = spec(&path) else {
+            problems.push(unknown_key(section, &path));
+            continue;
+        };
+        match normalise(&path, v, s.valid) {
+            Ok(()) => problems.extend(check_range(&path, v, s.valid).map(|p| p + which)),
+            Err(p) => problems.push(p),
+        }
+    }
+}
+
+/// Check an array-of-tables section (`[[fault]]`): every element a table whose keys are
+/// the section's schema keys, normalised and range-checked in place. A single table
+/// (`[fault]`) is taken as an array of one.
+fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String>) {
+    if let Value::Table(t) = value {
+        *value = Value::Array(vec![Value::Table(std::mem::take(t))]);
+    }
+    let Value::Array(items) = value else {
+        problems.push(format!(
+            "[[{section}]] must be tables of keys (`[[{section}]]` sections), not {}",
+            type_name(value)
+        ));
+        return;
+    };
+    for (i, item) in items.iter_mut().enumerate() {
+        let Value::Table(table) = item else {
+            problems.push(format!(
+                "[[{section}]] entry {i} must be a table of keys, not {}",
+                type_name(item)
+            ));
+            continue;
+        };
+        check_table(section, table, &format!(" ({section} {i})"), problems);
+        for required in ["kind", "gear", "tooth"] {
+            if !table.contains_key(required) {
+                problems.push(format!(
+                    "`{section}.{required}` is required in every [[{section}]] table ({section} {i} has none)"
+                ));
             }
         }
     }
@@ -248,8 +291,48 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
 /// The section read apart by [`super::load_spectrum`].
 const LOAD_SPECTRUM: &str = "load_spectrum";
 
+/// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
+/// the key of the section's only table, made when there is none. With several tables
+/// the override cannot say which one it means.
+fn set_table_array_value(
+    user: &mut Table,
+    section: &str,
+    key: &str,
+    value: Value,
+) -> Result<(), String> {
+    let entry = user
+        .entry(section.to_owned())
+        .or_insert_with(|| Value::Array(Vec::new()));
+    if let Value::Table(t) = entry {
+        *entry = Value::Array(vec![Value::Table(std::mem::take(t))]);
+    }
+    let Value::Array(items) = entry else {
+        return Err(format!("[[{section}]] is not an array of tables"));
+    };
+    if items.is_empty() {
+        items.push(Value::Table(Table::new()));
+    }
+    match items.as_mut_slice() {
+        [Value::Table(t)] => {
+            t.insert(key.to_owned(), value);
+            Ok(())
+        }
+        _ => Err(format!(
+            "the case has {} [[{section}]] tables: an override of `{section}.{key}` applies to a case with at most one (write the tables in the case file)",
+            items.len()
+        )),
+    }
+}
+
 /// Checks that involve more than one key of the case file itself.
 fn check_relations(case: &Case, problems: &mut Vec<String>) {
+    problems.extend(super::teeth::teeth_problems(
+        &case.teeth,
+        &case.modification,
+        &case.fault,
+        case.gear.teeth_pinion,
+        case.gear.teeth_gear,
+    ));
     let s = &case.surface;
     if s.roughness_table_wear_um.len() != s.roughness_table_rms_um.len() {
         problems.push(format!(
@@ -287,12 +370,12 @@ fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Wo
     for o in overrides {
         match parse_override(o) {
             Ok((path, value)) => {
-                if !set_value(user, &path[0], &path[1], value) {
-                    problems.push(Words::new().arg(Arg::Override).text(format!(
-                        " {}: [{}] is not a table",
-                        clip(o, SHOWN_CHARS),
-                        clip(&path[0], SHOWN_CHARS)
-                    )))
+                if let Err(e) = set_value(user, &path[0], &path[1], value) {
+                    problems.push(
+                        Words::new()
+                            .arg(Arg::Override)
+                            .text(format!(" {}: {e}", clip(o, SHOWN_CHARS))),
+                    )
                 }
             }
             Err(e) => problems.push(e),
@@ -300,17 +383,21 @@ fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Wo
     }
 }
 
-/// Set `section.key` in the tree; false when the section is not a table.
-fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> bool {
+/// Set `section.key` in the tree (the only table of an array-of-tables section); the
+/// problem when the section is not a table.
+fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result<(), String> {
+    if TABLE_ARRAYS.contains(&section) {
+        return set_table_array_value(user, section, key, value);
+    }
     let entry = user
         .entry(section.to_owned())
         .or_insert_with(|| Value::Table(Table::new()));
     match entry {
         Value::Table(t) => {
             t.insert(key.to_owned(), value);
-            true
+            Ok(())
         }
-        _ => false,
+        _ => Err(format!("[{}] is not a table", clip(section, SHOWN_CHARS))),
     }
 }
 
@@ -367,9 +454,7 @@ pub fn case_with(base: &Case, values: &[(&str, Value)]) -> Result<Case, ConfigEr
     };
     for (key, value) in values {
         let (section, k) = key.split_once('.').unwrap_or((key, ""));
-        if !set_value(&mut user, section, k, value.clone()) {
-            return Err(ConfigError::one(format!("[{section}] is not a table")));
-        }
+        set_value(&mut user, section, k, value.clone()).map_err(ConfigError::one)?;
     }
     // A resolved case holds its spectrum's bins inline: no file to read.
     validate(user, std::path::Path::new("."))

@@ -12,14 +12,15 @@ use serde::Serialize;
 /// and the response of bin `observed` (the monitoring bin: what a sensor records at its
 /// reference condition).
 pub fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
-    let (inc_p, inc_g) = r.increment(&run.shares);
+    let inc = r.increment(&run.shares);
     let b = &r.bins[observed.min(r.bins.len() - 1)];
     UpdateRecord {
         wear: r.wear.clone(),
         roughness_um: r.roughness_um,
         summary: b.summary,
-        increment_pinion_m: inc_p,
-        increment_gear_m: inc_g,
+        increment_pinion_m: inc.pinion_m,
+        increment_gear_m: inc.gear_m,
+        increment_teeth: inc.teeth,
         path_rho1_m: b.path_rho1_m.clone(),
         path_load_n: b.path_load_n.clone(),
         end_state: None,

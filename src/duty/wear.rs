@@ -32,7 +32,7 @@ use crate::study::wear_loop::{
     block_length, record, solve, start_of, StopKind, UpdateRecord, WearMode, WearStop,
     MAX_CONTACT_LOSS_FRACTION,
 };
-use crate::wear::{WearIncrement, WearState};
+use crate::wear::{ToothWear, WearIncrement, WearState};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -52,19 +52,39 @@ pub struct SpectrumRecord {
 }
 
 impl SpectrumRecord {
-    /// The spectrum's per-cycle wear on pinion and gear: sum_i s_i inc_i, m per cycle.
-    pub fn increment(&self, shares: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    /// The spectrum's per-cycle wear: sum_i s_i inc_i, m per cycle, on the common profiles
+    /// and, when every bin's increment is per tooth, on every tooth.
+    pub fn increment(&self, shares: &[f64]) -> WearIncrement {
         let n = self.wear.pinion_m.len();
         let (mut p, mut g) = (vec![0.0; n], vec![0.0; n]);
-        for (b, s) in self.bins.iter().zip(shares) {
-            for (x, d) in p.iter_mut().zip(&b.increment_pinion_m) {
+        let add = |to: &mut [f64], from: &[f64], s: f64| {
+            for (x, d) in to.iter_mut().zip(from) {
                 *x += s * d;
             }
-            for (x, d) in g.iter_mut().zip(&b.increment_gear_m) {
-                *x += s * d;
+        };
+        let per_tooth =
+            !self.bins.is_empty() && self.bins.iter().all(|b| b.increment_teeth.is_some());
+        let mut teeth: Option<ToothWear> = None;
+        for (b, s) in self.bins.iter().zip(shares) {
+            add(&mut p, &b.increment_pinion_m, *s);
+            add(&mut g, &b.increment_gear_m, *s);
+            if let (true, Some(t)) = (per_tooth, &b.increment_teeth) {
+                let sum = teeth
+                    .get_or_insert_with(|| ToothWear::new(n, t.pinion_m.len(), t.gear_m.len()));
+                for (to, from) in sum.pinion_m.iter_mut().zip(&t.pinion_m) {
+                    add(to, from, *s);
+                }
+                for (to, from) in sum.gear_m.iter_mut().zip(&t.gear_m) {
+                    add(to, from, *s);
+                }
             }
         }
-        (p, g)
+        WearIncrement {
+            pinion_m: p,
+            gear_m: g,
+            teeth,
+            ..Default::default()
+        }
     }
 }
 
@@ -143,28 +163,26 @@ pub(super) fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> Spectrum
     };
     for (i, (b, s)) in last.bins.iter().zip(shares).enumerate() {
         let cycles = s * n;
-        for ((h, w), d) in next
-            .wear
-            .pinion_m
+        // Paper eq. 17 for this bin: every tooth its own when the mesh is tooth-resolved.
+        let inc = WearIncrement {
+            pinion_m: b.increment_pinion_m.clone(),
+            gear_m: b.increment_gear_m.clone(),
+            teeth: b.increment_teeth.clone(),
+            ..Default::default()
+        };
+        next.wear.advance(&inc, cycles);
+        for (w, d) in next.by_bin_pinion_m[i]
             .iter_mut()
-            .zip(next.by_bin_pinion_m[i].iter_mut())
             .zip(&b.increment_pinion_m)
         {
-            *h += cycles * d;
             *w += cycles * d;
         }
-        for ((h, w), d) in next
-            .wear
-            .gear_m
-            .iter_mut()
-            .zip(next.by_bin_gear_m[i].iter_mut())
-            .zip(&b.increment_gear_m)
-        {
-            *h += cycles * d;
+        for (w, d) in next.by_bin_gear_m[i].iter_mut().zip(&b.increment_gear_m) {
             *w += cycles * d;
         }
     }
-    next.wear.cycles += n;
+    // The block is n cycles whatever the rounding of sum_i s_i n.
+    next.wear.cycles = last.wear.cycles + n;
     next
 }
 
@@ -225,7 +243,7 @@ pub fn run_spectrum_wear(
     let w = &sm.case.wear;
     let threshold_m = w.threshold_um * 1e-6;
     if run.records.is_empty() {
-        let state = WearState::new(sm.bins[0].grid.len());
+        let state = sm.bins[0].new_wear_state();
         run.records.push(first_record(sm, run.mode, state)?);
         on_update(&run)?;
     }
@@ -235,12 +253,7 @@ pub fn run_spectrum_wear(
         if remaining <= 0.5 {
             break;
         }
-        let (pinion_m, gear_m) = last.increment(&run.shares);
-        let inc = WearIncrement {
-            pinion_m,
-            gear_m,
-            ..Default::default()
-        };
+        let inc = last.increment(&run.shares);
         let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
         let mut next = advance(last, &run.shares, n);
         let starts: Vec<Option<[f64; NSTATE]>> = last.bins.iter().map(start_of).collect();

@@ -208,6 +208,8 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
     );
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);
+    super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
     a
 }
 

@@ -211,6 +211,7 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
     for (n, w) in (11..).zip(wear_figures(model, &runs)) {
         figs.push(fig(w.stem, n, w.figure, w.table));
     }
+    figs.extend(super::teeth::run_teeth_figures(model, study));
     figs
 }
 
@@ -285,6 +286,9 @@ pub fn run_artifacts_and_report(
         a.headline = case_headline(model, study);
         Vec::new()
     };
+    if let Some(t) = super::teeth::teeth_json(model) {
+        summary["teeth"] = t;
+    }
     summary["metadata"] = serde_json::to_value(meta).unwrap_or_default();
     let report = build_report(model, study, &rows, blocks, meta);
     a.summary = summary;

@@ -357,7 +357,10 @@ pub fn build_report(
                 figures: take(3),
                 tables: vec![],
             },
-        ],
+        ]
+        .into_iter()
+        .chain(super::teeth::teeth_section(model, take(usize::MAX)))
+        .collect(),
         footer: format!("gearwear {} | case sha256 {} | command: run", meta.version, meta.case_sha256),
     }
 }

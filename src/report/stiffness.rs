@@ -212,5 +212,6 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
         f.data = Some("mesh_stiffness.csv".into());
     }
     a.table("mesh_stiffness.csv", table);
+    super::teeth::add_teeth_artifacts(model, &mut a);
     a
 }

@@ -268,6 +268,16 @@ impl MeshStiffness {
         self.max_n_per_m
     }
 
+    /// The tooth beams of pinion (0) and gear (1).
+    pub fn tooth_beams(&self) -> &[ToothBeam; 2] {
+        &self.teeth
+    }
+
+    /// Hertz compliance 1/k_h of a pair over the whole face width (paper eq. 11), m/N.
+    pub fn hertz_compliance_m_per_n(&self) -> f64 {
+        self.hertz_m_per_n
+    }
+
     /// Warnings from the fillet-foundation fit (validity range).
     pub fn warnings(&self) -> &[String] {
         &self.warnings

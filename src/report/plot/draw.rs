@@ -246,7 +246,7 @@ where
                     sample_polyline(&[to_px(&(x, base)), to_px(&(x, y))], &mut marks);
                 }
             }
-            (_, LineStyle::Points) => marks.extend(p.iter().map(to_px)),
+            (PanelKind::Cells, _) | (_, LineStyle::Points) => marks.extend(p.iter().map(to_px)),
             _ => sample_polyline(&p.iter().map(to_px).collect::<Vec<_>>(), &mut marks),
         }
     }
@@ -340,6 +340,14 @@ where
                         .map(|&(x, y)| PathElement::new(vec![(x, base), (x, y)], line)),
                 )
                 .map(|_| ()),
+            (PanelKind::Cells, _) => {
+                let (w, h) = (0.5 * panel.cell_size.0, 0.5 * panel.cell_size.1);
+                chart
+                    .draw_series(p.iter().map(|&(x, y)| {
+                        Rectangle::new([(x - w, y - h), (x + w, y + h)], color.filled())
+                    }))
+                    .map(|_| ())
+            }
             (_, LineStyle::Solid) => chart
                 .draw_series(LineSeries::new(p.iter().copied(), line))
                 .map(|_| ()),
