@@ -38,6 +38,9 @@ pub struct Case {
     /// serialisation while it holds the defaults.
     #[serde(skip_serializing_if = "SignalsSection::is_default")]
     pub signals: SignalsSection,
+    /// The duty cycle (issue 20); absent: the single operating point of `operating`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
     /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
     #[serde(skip_serializing_if = "TeethSection::is_empty")]
     pub teeth: TeethSection,
