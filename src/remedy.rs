@@ -60,6 +60,10 @@ pub enum Arg {
     NoBudget,
     /// The inputs of a merge.
     Inputs,
+    /// A transfer-path file of the signal chain.
+    TransferPath,
+    /// The study design of a dataset.
+    Design,
 }
 
 /// How a front end spells an argument in its messages.
@@ -67,7 +71,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 21] = [
+    pub const ALL: [Arg; 23] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -89,6 +93,8 @@ impl Arg {
         Arg::BudgetScale,
         Arg::NoBudget,
         Arg::Inputs,
+        Arg::TransferPath,
+        Arg::Design,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -115,6 +121,8 @@ impl Arg {
             Arg::BudgetScale => "a budget scale",
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
+            Arg::TransferPath => "the transfer-path file",
+            Arg::Design => "the dataset design",
         }
     }
 }

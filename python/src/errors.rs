@@ -135,6 +135,8 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::BudgetScale => "`budget_scale`",
         Arg::NoBudget => "`budget_scale=math.inf`",
         Arg::Inputs => "`inputs`",
+        Arg::TransferPath => "`transfer_path`",
+        Arg::Design => "`design`",
     }
 }
 

@@ -39,6 +39,8 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::BudgetScale => "--budget-scale",
         Arg::NoBudget => "--no-budget",
         Arg::Inputs => "input",
+        Arg::TransferPath => "--transfer-path",
+        Arg::Design => "--design",
     }
 }
 

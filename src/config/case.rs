@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::signals::SignalsSection;
 pub use super::teeth::{
     FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
 };
@@ -33,6 +34,13 @@ pub struct Case {
     pub wear: WearSection,
     pub numerics: NumericsSection,
     pub calibration: CalibrationSection,
+    /// What a sensor records (`gearwear signals`, datasets); left out of a case's
+    /// serialisation while it holds the defaults.
+    #[serde(skip_serializing_if = "SignalsSection::is_default")]
+    pub signals: SignalsSection,
+    /// The duty cycle (issue 20); absent: the single operating point of `operating`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
     /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
     #[serde(skip_serializing_if = "TeethSection::is_empty")]
     pub teeth: TeethSection,
