@@ -39,6 +39,8 @@ pub mod calibrate;
 pub mod checkpoints;
 pub mod dataset;
 pub mod dataset_dir;
+pub mod duty;
+pub mod duty_runs;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;

@@ -1,6 +1,6 @@
 //! Command-line arguments (clap derive).
 
-use crate::config::{load_case, Case};
+use crate::config::{load_case_in, Case};
 use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -102,9 +102,15 @@ impl CaseArgs {
         }
     }
 
-    /// Read, merge and validate the case.
+    /// Read, merge and validate the case; a relative `load_spectrum.file` is read from the
+    /// case file's folder.
     pub fn load(&self) -> Result<Case, CliError> {
-        Ok(load_case(&self.text()?, &self.set)?)
+        let dir = self
+            .config
+            .as_deref()
+            .and_then(std::path::Path::parent)
+            .unwrap_or(std::path::Path::new("."));
+        Ok(load_case_in(&self.text()?, &self.set, dir)?)
     }
 }
 

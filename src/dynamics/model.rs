@@ -94,6 +94,8 @@ pub struct MeshState {
     pub cycle: [i64; MAX_PAIRS],
     /// Share of the face width missing from each pair's contact line (a spall).
     pub width_loss: [f64; MAX_PAIRS],
+    /// Change of each pair's Hertz 1/R by its flanks' wear, 1/m (severe wear).
+    pub curvature_change: [f64; MAX_PAIRS],
 }
 
 /// The elastic part of the mesh at one instant ([`GearSystem::springs`]).
@@ -119,6 +121,7 @@ pub struct MeshSprings {
     /// Mesh cycle of each pair and the share of its face width lost (tooth-resolved).
     pub cycle: [i64; MAX_PAIRS],
     pub width_loss: [f64; MAX_PAIRS],
+    pub curvature_change: [f64; MAX_PAIRS],
 }
 
 /// The inputs a [`GearSystem`] is assembled from (borrowed model objects and the
@@ -141,6 +144,15 @@ pub struct GearSystemParts<'a> {
     /// The tooth-resolved mesh, when the teeth differ or are modified (None: every tooth
     /// the paper's, with `gap`).
     pub teeth: Option<&'a ToothMesh>,
+}
+
+/// Effective radius (m) of a contact whose flanks' curvature changed by `dk` (1/m) from
+/// the involutes' 1/rho1 + 1/rho2 (severe wear, `contact::worn_curvature`). A worn flank
+/// that turns conformal has no Hertz line contact: 1/R is kept at least a tenth of the
+/// involutes' (the radius at most ten times theirs; docs/MODEL.md, section 9).
+fn worn_radius(rho1: f64, rho2: f64, dk: f64) -> f64 {
+    let k0 = 1.0 / rho1 + 1.0 / rho2;
+    1.0 / (k0 + dk).max(0.1 * k0)
 }
 
 /// The assembled model: immutable inputs for one dynamic evaluation. It holds no
@@ -438,6 +450,7 @@ impl<'a> GearSystem<'a> {
             sp.compression_m[n] = c;
             sp.cycle[n] = cycle;
             sp.width_loss[n] = pp.width_loss;
+            sp.curvature_change[n] = pp.curvature_change_per_m;
             if frozen.map_or(c > 0.0, |m| m.touches(n)) {
                 let k = pp.stiffness_n_per_m;
                 sp.touching[n] = true;
@@ -474,6 +487,7 @@ impl<'a> GearSystem<'a> {
             },
             cycle: sp.cycle,
             width_loss: sp.width_loss,
+            curvature_change: sp.curvature_change,
             ..MeshState::default()
         };
         let (nominal_p, nominal_g) = self.nominal_speeds(t_s);
@@ -518,13 +532,12 @@ impl<'a> GearSystem<'a> {
             ms.load_n[i] = w;
             let rho1 = ms.rho1_m[i];
             let rho2 = self.parts.pair.rho_gear(rho1);
-            let hz = HertzContact::with_modulus(
-                w,
-                self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]),
-                rho1,
-                rho2,
-                self.parts.effective_modulus_pa,
-            );
+            let width = self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]);
+            let e_star = self.parts.effective_modulus_pa;
+            let hz = match ms.curvature_change[i] {
+                0.0 => HertzContact::with_modulus(w, width, rho1, rho2, e_star),
+                dk => HertzContact::with_radius(w, width, worn_radius(rho1, rho2, dk), e_star),
+            };
             ms.pressure_pa[i] = hz.max_pressure_pa;
             ms.half_width_m[i] = hz.half_width_m;
             let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);

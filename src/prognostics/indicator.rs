@@ -139,7 +139,7 @@ pub fn indicators_of(qs: &[Quantity]) -> Vec<u16> {
 }
 
 /// Compute the indicators `qs` asks for at every update of `t` (those not there yet), for
-/// the run's `case`. The values stop at the first update whose record fails (the
+/// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the first update whose record fails (the
 /// trajectory then reads the indicator as unknown from there on).
 pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
     let wanted: Vec<u16> = indicators_of(qs)
@@ -149,6 +149,12 @@ pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), St
     if wanted.is_empty() || t.records.is_empty() {
         return Ok(());
     }
+    // Under a load spectrum the sensor records at the monitoring bin, as the response
+    // quantities are read there (`forward::run_trajectory`).
+    let case = &match &case.load_spectrum {
+        Some(s) => case.at_bin(s.monitoring_index()),
+        None => case.clone(),
+    };
     let model = Model::from_case(case).map_err(|e| e.to_string())?;
     let mut setup =
         chain_of(case, None, case.signals.max_input_speed_hz(case)).map_err(|m| m.join("; "))?;

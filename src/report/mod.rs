@@ -4,6 +4,8 @@
 pub mod artifacts;
 pub mod case;
 pub mod comparison;
+pub mod duty;
+pub mod duty_figures;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
