@@ -60,6 +60,14 @@ pub enum Arg {
     NoBudget,
     /// The inputs of a merge.
     Inputs,
+    /// A measured load-time history.
+    History,
+    /// Torque classes of a load duration distribution.
+    TorqueClasses,
+    /// Speed classes of a load duration distribution.
+    SpeedClasses,
+    /// The longest interval of a history, in median intervals.
+    GapFactor,
 }
 
 /// How a front end spells an argument in its messages.
@@ -67,7 +75,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 21] = [
+    pub const ALL: [Arg; 25] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -89,6 +97,10 @@ impl Arg {
         Arg::BudgetScale,
         Arg::NoBudget,
         Arg::Inputs,
+        Arg::History,
+        Arg::TorqueClasses,
+        Arg::SpeedClasses,
+        Arg::GapFactor,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -115,6 +127,10 @@ impl Arg {
             Arg::BudgetScale => "a budget scale",
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
+            Arg::History => "the load-time history",
+            Arg::TorqueClasses => "torque classes",
+            Arg::SpeedClasses => "speed classes",
+            Arg::GapFactor => "the gap limit",
         }
     }
 }

@@ -19,6 +19,7 @@
 //! | [`CalibrateJob`] | posterior of the wear coefficient given observations | [`Outcome`] |
 //! | [`PredictJob`] | Monte Carlo prediction of wear, vibration and remaining life | [`Outcome`] |
 //! | [`PredictMergeJob`] | the shards of a prediction joined | [`Outcome`] |
+//! | [`LoadSpectrumJob`] | a measured torque / speed history -> load duration distribution and spectrum | [`Outcome`] |
 //!
 //! Every job implements [`Job`]: `run(&self, &dyn Observer)`. A job is plain data (its
 //! validated case and typed options), `Send + Sync`, so a front end may run it on any
@@ -39,6 +40,7 @@ pub mod duty_runs;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;
+pub mod load_spectrum;
 pub mod observer;
 pub mod predict;
 pub mod predict_merge;
@@ -52,6 +54,7 @@ pub use calibrate::{CalibrateJob, CalibrationOptions};
 pub use dynamics::{DynamicsJob, TransmissionErrorSource};
 pub use error::JobError;
 pub use inputs::TableSource;
+pub use load_spectrum::LoadSpectrumJob;
 pub use observer::{Observer, Task, Unit};
 pub use predict::{ForwardModel, PredictJob, PredictOptions};
 pub use predict_merge::PredictMergeJob;
