@@ -150,7 +150,7 @@ fn at_low_speed_shallow_wear_is_the_share_weighted_mean_of_single_bins() {
             .fold(0.0_f64, |m, ((s, x), y)| {
                 m.max((s - (a * x + (1.0 - a) * y)).abs())
             });
-        // The 1 %; measured 2.7e-5 (dynamic) of the depth (docs/DUTY_CYCLE.md).
+        // The 1 %; measured 2.7e-5 (dynamic) of the depth (docs/MODEL.md, section 10).
         println!(
             "{mode:?}: depth {scale:e} m, deviation {:.2e} of it",
             dev / scale
