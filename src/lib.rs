@@ -23,6 +23,7 @@ pub mod io;
 pub mod prognostics;
 pub mod remedy;
 pub mod report;
+pub mod signals;
 pub mod stiffness;
 pub mod study;
 pub mod wear;

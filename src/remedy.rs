@@ -68,6 +68,10 @@ pub enum Arg {
     SpeedClasses,
     /// The longest interval of a history, in median intervals.
     GapFactor,
+    /// A transfer-path file of the signal chain.
+    TransferPath,
+    /// The study design of a dataset.
+    Design,
 }
 
 /// How a front end spells an argument in its messages.
@@ -75,7 +79,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 25] = [
+    pub const ALL: [Arg; 27] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -101,6 +105,8 @@ impl Arg {
         Arg::TorqueClasses,
         Arg::SpeedClasses,
         Arg::GapFactor,
+        Arg::TransferPath,
+        Arg::Design,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -131,6 +137,8 @@ impl Arg {
             Arg::TorqueClasses => "torque classes",
             Arg::SpeedClasses => "speed classes",
             Arg::GapFactor => "the gap limit",
+            Arg::TransferPath => "the transfer-path file",
+            Arg::Design => "the dataset design",
         }
     }
 }

@@ -69,10 +69,12 @@ from ._results import (
     COORDINATES,
     CalibrationResult,
     DutyResult,
+    DatasetResult,
     DynamicsResult,
     LoadSpectrumResult,
     PredictionResult,
     RunResult,
+    SignalsResult,
     StiffnessResult,
     SweepResult,
     Table,
@@ -97,6 +99,9 @@ __all__ = [
     "predict",
     "predict_merge",
     "load_spectrum",
+    "signals",
+    "dataset",
+    "dataset_merge",
     "Table",
     "StiffnessResult",
     "DynamicsResult",
@@ -108,6 +113,8 @@ __all__ = [
     "PredictionResult",
     "LoadSpectrumResult",
     "DutyResult",
+    "SignalsResult",
+    "DatasetResult",
     "COORDINATES",
     "COORDINATE_UNITS",
     "__version__",
@@ -115,7 +122,7 @@ __all__ = [
 
 #: ``progress(task, done, total)``: ``task`` is ``"dynamic"`` or ``"quasi_static"`` (wear
 #: runs; done and total in load cycles), ``"sweep"`` (cases), ``"reference_runs"``,
-#: ``"posterior"`` or ``"samples"`` (prognostics).
+#: ``"posterior"`` or ``"samples"`` (prognostics), ``"records"`` (a dataset).
 Progress = _Callable[[str, float, float], _Any]
 PathLike = _Union[str, "_os.PathLike[str]"]
 
@@ -447,7 +454,6 @@ def predict_merge(inputs: _Sequence[PathLike], out: _Optional[PathLike] = None) 
     return _done(PredictionResult(**n), n)
 
 
-
 def load_spectrum(
     history: _Any,
     *,
@@ -488,3 +494,49 @@ def load_spectrum(
         out=_path(out),
     )
     return _done(LoadSpectrumResult(**n), n)
+
+
+def signals(
+    case: Case,
+    *,
+    transfer_path: _Optional[PathLike] = None,
+    out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+) -> SignalsResult:
+    """One record of what a sensor sees, as ``gearwear signals [--transfer-path FILE]``.
+
+    The case's ``[signals]`` section sets the acquisition (sampling rate, anti-alias
+    filter, unit, sensitivity, measurement noise, tachometer, record length) and the
+    operating variation (``ramp_end_speed_hz`` for a run-up or coast-down,
+    ``torque_fluctuation_rms_nm`` for a fluctuating load). ``transfer_path``: an FRF table
+    (.csv) or modal description (.toml); default: the built-in generic housing.
+    """
+    n = _native.signals(
+        _check_case(case),
+        transfer_path=_path(transfer_path),
+        out=_path(out),
+        budget_scale=budget_scale,
+    )
+    return _done(SignalsResult(**n), n)
+
+
+def dataset(
+    design: PathLike,
+    out: PathLike,
+    *,
+    shard: _Optional[_Sequence[int]] = None,
+    progress: _Optional[Progress] = None,
+) -> DatasetResult:
+    """A labelled dataset from the study design file ``design``, as ``gearwear dataset``:
+    written to ``out`` record by record (resumable: a rerun keeps finished records).
+    ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``."""
+    sh = None if shard is None else (int(shard[0]), int(shard[1]))
+    n = _native.dataset(_os.fspath(design), _os.fspath(out), shard=sh, progress=progress)
+    return _done(DatasetResult(**n), n)
+
+
+def dataset_merge(inputs: _Sequence[PathLike], out: PathLike) -> DatasetResult:
+    """The shards of a dataset joined into ``out`` with its index and metadata, as
+    ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes."""
+    n = _native.dataset_merge([_os.fspath(p) for p in inputs], _os.fspath(out))
+    return _done(DatasetResult(**n), n)

@@ -139,6 +139,8 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::TorqueClasses => "`torque_classes`",
         Arg::SpeedClasses => "`speed_classes`",
         Arg::GapFactor => "`gap_factor`",
+        Arg::TransferPath => "`transfer_path`",
+        Arg::Design => "`design`",
     }
 }
 

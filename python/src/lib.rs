@@ -14,6 +14,7 @@ mod convert;
 mod duty;
 mod errors;
 mod jobs;
+mod signals;
 mod worker;
 
 /// Every key of a case file: `[{key, unit, valid, doc, default}]` (docs/CONFIG.md).
@@ -59,6 +60,9 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jobs::predict_merge, m)?)?;
     m.add_function(wrap_pyfunction!(duty::load_spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(duty::_case_with_spectrum, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::signals, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::dataset, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::dataset_merge, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::_time_rust_dynamics, m)?)?;
     m.add_function(wrap_pyfunction!(worker::_running_jobs, m)?)?;
     Ok(())

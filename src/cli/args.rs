@@ -55,6 +55,14 @@ pub enum Command {
     Stiffness(StiffnessArgs),
     /// One steady-state evaluation of the 8-DOF tribo-dynamic model.
     Dynamics(DynamicsArgs),
+    /// One record of what a sensor sees: housing accelerations at named sensors and a
+    /// tachometer, with condition indicators and figures.
+    Signals(super::signals_args::SignalsArgs),
+    /// A labelled dataset from a study design: run-to-failure states, fault conditions,
+    /// speeds, loads and noise realisations, one record each (shardable, resumable).
+    Dataset(super::signals_args::DatasetArgs),
+    /// Join the shards of a dataset into one, with its index and metadata.
+    DatasetMerge(super::signals_args::DatasetMergeArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
     /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).

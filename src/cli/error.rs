@@ -43,6 +43,8 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::TorqueClasses => "--torque-classes",
         Arg::SpeedClasses => "--speed-classes",
         Arg::GapFactor => "--gap-factor",
+        Arg::TransferPath => "--transfer-path",
+        Arg::Design => "--design",
     }
 }
 

@@ -15,10 +15,17 @@ fn absent_default(section: &str) -> &'static str {
 use toml::{Table, Value};
 
 fn tree_of(case: &Case) -> Table {
-    match Value::try_from(case) {
+    let mut t = match Value::try_from(case) {
         Ok(Value::Table(t)) => t,
         _ => Table::new(),
+    };
+    // A section left out of the serialisation while it holds its defaults is shown too.
+    if !t.contains_key("signals") {
+        if let Ok(v) = Value::try_from(&case.signals) {
+            t.insert("signals".into(), v);
+        }
     }
+    t
 }
 
 /// `case` as commented TOML under `header`: every key with its unit, meaning and range.

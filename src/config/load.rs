@@ -363,6 +363,7 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
             g.face_width_mm, g.module_mm
         ));
     }
+    problems.extend(super::signals::relation_problems(case));
 }
 
 /// Merge the overrides (`section.key=value` texts) into the user's tree.

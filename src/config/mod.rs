@@ -7,6 +7,7 @@ pub mod load;
 pub mod load_spectrum;
 pub mod problem;
 pub mod schema;
+pub mod signals;
 pub mod teeth;
 
 pub use case::Case;

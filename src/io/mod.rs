@@ -4,11 +4,14 @@
 pub mod atomic;
 pub mod checkpoint;
 pub mod checkpoint_set;
+pub mod columns_csv;
 pub mod error;
 pub mod lock;
 pub mod metadata;
 pub mod output_dir;
+pub mod parquet;
 pub mod table;
+pub mod transfer_path;
 pub mod transmission_error;
 
 pub use crate::format::format_number;

@@ -16,6 +16,8 @@ pub mod plot;
 pub mod prognostics;
 pub mod prognostics_tables;
 pub mod run_report;
+pub mod runup;
+pub mod signals;
 pub mod stiffness;
 pub mod sweep_figure;
 pub mod teeth;

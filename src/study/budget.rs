@@ -28,6 +28,11 @@
 //!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
 //!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log; docs/RELIABILITY.md)
 //!   written at 100 MB/s, plus 2 ms of fsync per update;
+//! - a tooth-resolved case (per-tooth inputs) adds one term (`study::teeth_budget::budget_term`):
+//!   its excitation repeats over P mesh periods (up to lcm(z1, z2)), so each dynamic
+//!   evaluation integrates P - 1 more periods and a run-in, each quasi-static one P - 1
+//!   more, a kept response records P periods with its contacts, and each wear record
+//!   holds every tooth's profile;
 //! - memory = 64 MB + kept responses x S_d P_e x 560 bytes (280 bytes a recorded sample,
 //!   doubled for vector growth and the output tables) + per mode U records of
 //!   (4 G + 4 S_d) numbers at 8 bytes.
@@ -414,6 +419,15 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
             ],
         });
     }
+    terms.extend(super::teeth_budget::budget_term(
+        case,
+        evals,
+        quasi_modes * u_q,
+        kept,
+        records,
+        s_dyn,
+        s,
+    ));
     Estimate {
         steps_per_evaluation: s_dyn * (p_c + p_e),
         steps_to_give_up: if evals > 0.0 {
