@@ -244,7 +244,7 @@ pub struct SweepMergeArgs {
 pub struct CalibrateArgs {
     #[command(flatten)]
     pub case: CaseArgs,
-    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV), optional
+    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV, or condition indicators such as `input_rms`), optional
     /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
     #[arg(long, value_name = "FILE")]
     pub observations: PathBuf,

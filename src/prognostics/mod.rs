@@ -16,6 +16,7 @@ pub mod calibrate;
 pub mod check;
 pub mod forward;
 pub mod grid;
+pub mod indicator;
 pub mod likelihood;
 pub mod mcmc;
 pub mod observations;
