@@ -353,7 +353,7 @@ pub struct LoadSpectrumArgs {
     pub history: PathBuf,
     /// Output directory: spectrum.csv (for load_spectrum.file), load_spectrum.toml (the
     /// section to paste into a case), ldd.csv, the figures and summary.json.
-    #[arg(long)]
+    #[arg(long, default_value = "results/load-spectrum")]
     pub out: PathBuf,
     /// Equal torque classes over [0, max torque].
     #[arg(long, default_value_t = 10)]
