@@ -60,6 +60,14 @@ pub enum Arg {
     NoBudget,
     /// The inputs of a merge.
     Inputs,
+    /// A measured load-time history.
+    History,
+    /// Torque classes of a load duration distribution.
+    TorqueClasses,
+    /// Speed classes of a load duration distribution.
+    SpeedClasses,
+    /// The longest interval of a history, in median intervals.
+    GapFactor,
     /// A transfer-path file of the signal chain.
     TransferPath,
     /// The study design of a dataset.
@@ -71,7 +79,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 23] = [
+    pub const ALL: [Arg; 27] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -93,6 +101,10 @@ impl Arg {
         Arg::BudgetScale,
         Arg::NoBudget,
         Arg::Inputs,
+        Arg::History,
+        Arg::TorqueClasses,
+        Arg::SpeedClasses,
+        Arg::GapFactor,
         Arg::TransferPath,
         Arg::Design,
     ];
@@ -121,6 +133,10 @@ impl Arg {
             Arg::BudgetScale => "a budget scale",
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
+            Arg::History => "the load-time history",
+            Arg::TorqueClasses => "torque classes",
+            Arg::SpeedClasses => "speed classes",
+            Arg::GapFactor => "the gap limit",
             Arg::TransferPath => "the transfer-path file",
             Arg::Design => "the dataset design",
         }

@@ -135,6 +135,10 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::BudgetScale => "`budget_scale`",
         Arg::NoBudget => "`budget_scale=math.inf`",
         Arg::Inputs => "`inputs`",
+        Arg::History => "`history`",
+        Arg::TorqueClasses => "`torque_classes`",
+        Arg::SpeedClasses => "`speed_classes`",
+        Arg::GapFactor => "`gap_factor`",
         Arg::TransferPath => "`transfer_path`",
         Arg::Design => "`design`",
     }

@@ -39,6 +39,10 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::BudgetScale => "--budget-scale",
         Arg::NoBudget => "--no-budget",
         Arg::Inputs => "input",
+        Arg::History => "--history",
+        Arg::TorqueClasses => "--torque-classes",
+        Arg::SpeedClasses => "--speed-classes",
+        Arg::GapFactor => "--gap-factor",
         Arg::TransferPath => "--transfer-path",
         Arg::Design => "--design",
     }

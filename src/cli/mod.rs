@@ -9,6 +9,7 @@ mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
+mod load_spectrum_cmd;
 mod output;
 mod predict_cmd;
 mod progress;
@@ -45,6 +46,7 @@ pub fn main() -> ExitCode {
         Command::Calibrate(a) => calibrate_cmd::run(a, budget),
         Command::Predict(a) => predict_cmd::run(a, budget),
         Command::PredictMerge(a) => predict_cmd::merge(a),
+        Command::LoadSpectrum(a) => load_spectrum_cmd::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

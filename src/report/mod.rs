@@ -10,6 +10,7 @@ pub mod duty_figures;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
+pub mod ldd;
 pub mod modes;
 pub mod paper;
 pub mod plot;

@@ -19,6 +19,7 @@ pub use merge::SweepMergeJob;
 use super::observer::{Observer, Task};
 use super::{publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::duty::study::run_sweep_case;
 use crate::io::atomic::ensure_real_dir;
 use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem, Words};
@@ -28,8 +29,8 @@ use crate::report::Artifacts;
 use crate::study::budget::Budget;
 use crate::study::sweep::resonance::{speed_marks, SpeedMarks};
 use crate::study::sweep::{
-    run_case, CaseError, CaseRecord, Continuation, ContinuationPlan, Shard, SweepPlan, SweepRow,
-    SweepRun, SweepTable,
+    CaseError, CaseRecord, Continuation, ContinuationPlan, Shard, SweepPlan, SweepRow, SweepRun,
+    SweepTable,
 };
 use crate::study::Model;
 use cases::{check_models, check_values, resolve, Planned};
@@ -140,7 +141,7 @@ impl SweepJob {
                     let e = CaseError::Solve(anyhow::anyhow!("stopped before it ran"));
                     return (p.id, Err(e));
                 }
-                let r = run_case(&p.case, self.run).and_then(|o| {
+                let r = run_sweep_case(&p.case, self.run).and_then(|o| {
                     let row = match dir {
                         Some(d) => row_of(&write_record(d, p, keys, &o.results, None)?),
                         None => Some(SweepRow {
