@@ -178,9 +178,8 @@ pub fn run<'py>(
             Some(dir) => {
                 let mut set = OutputDir::open(dir, None, "run")
                     .map_err(|e| Failure::Output(e.to_string()))?;
-                let logs =
-                    CheckpointSet::open(&mut set, &[(&d0, None), (&q0, None)], &meta.case_sha256)
-                        .map_err(|e| Failure::Output(e.to_string()))?;
+                let logs = CheckpointSet::open(&mut set, &[&d0, &q0], &meta.case_sha256)
+                    .map_err(|e| Failure::Output(e.to_string()))?;
                 Some((set, logs))
             }
             None => None,

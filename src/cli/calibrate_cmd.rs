@@ -33,8 +33,12 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
         return Err(CliError::input("--samples must be at least 1"));
     }
     let src = a.observations.display().to_string();
-    let text = std::fs::read_to_string(&a.observations)
-        .map_err(|e| CliError::input(format!("--observations {src}: cannot read: {e}")))?;
+    let text = crate::io::read_input_text(
+        &a.observations,
+        "observations file",
+        crate::io::input::MAX_OBSERVATIONS_BYTES,
+    )
+    .map_err(|e| CliError::input(format!("--observations {e}")))?;
     let obs = parse_observations(&text, &src).map_err(CliError::Input)?;
     build_model(&case)?;
     let out = open_out(&a.out, "calibrate")?;

@@ -79,6 +79,15 @@ impl From<OutputError> for CliError {
 
 impl From<LockError> for CliError {
     fn from(e: LockError) -> Self {
+        match e {
+            LockError::OtherCommand { .. } => CliError::input(format!("{e} (--replace)")),
+            e => CliError::input(e.to_string()),
+        }
+    }
+}
+
+impl From<crate::io::InputError> for CliError {
+    fn from(e: crate::io::InputError) -> Self {
         CliError::input(e.to_string())
     }
 }

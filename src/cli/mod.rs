@@ -1,5 +1,20 @@
 //! The `gearwear` command line. Thin: parses arguments, builds the model objects from a
 //! validated case, calls the solvers, hands results to the writers.
+//!
+//! Exit codes: 0 success; 1 a run that failed on valid input (a solver); 2 bad input (the
+//! case, a file argument, the output folder, the budget); 3 the command ran to its end
+//! but standard output or standard error could not be written (`io::console`).
+
+// In the command line, `println!` and `eprintln!` are these: they never panic when a
+// stream fails (`/dev/full`, a closed pipe); `io::console` remembers the failure and the
+// command says so once at its end. Defined before the modules so that they see them.
+#[allow(unused_macros)]
+macro_rules! println {
+    ($($t:tt)*) => { $crate::io::console::out_line(&format!($($t)*)) };
+}
+macro_rules! eprintln {
+    ($($t:tt)*) => { $crate::io::console::err_line(&format!($($t)*)) };
+}
 
 mod args;
 mod calibrate_cmd;
@@ -25,10 +40,20 @@ pub use error::CliError;
 use clap::Parser;
 use std::process::ExitCode;
 
-/// Entry point of the binary. Exit code 2 for bad input, 1 for a failed run.
+/// Entry point of the binary (exit codes: see the module docs).
 pub fn main() -> ExitCode {
+    crate::io::runtime::catch_file_size_signal();
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
+    output::set_replace(cli.replace);
+    match crate::io::runtime::init_threads() {
+        Ok(Some(note)) => eprintln!("note: {note}"),
+        Ok(None) => {}
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(crate::io::console::finish().unwrap_or(1));
+        }
+    }
     let budget = match cli.budget() {
         Some(b) => cli.check_budget(&b),
         None => Ok(()),
@@ -45,11 +70,12 @@ pub fn main() -> ExitCode {
         Command::Predict(a) => predict_cmd::run(a),
         Command::PredictMerge(a) => predict_cmd::merge(a),
     });
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
+    let code = match result {
+        Ok(()) => 0,
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::from(e.exit_code())
+            e.exit_code()
         }
-    }
+    };
+    ExitCode::from(crate::io::console::finish().unwrap_or(code))
 }

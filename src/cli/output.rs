@@ -7,23 +7,30 @@
 
 use super::CliError;
 use crate::config::Case;
-use crate::io::{OutputDir, RunMetadata};
+use crate::io::{OtherSet, OutputDir, RunMetadata};
 use crate::report::{publish_artifacts, Artifacts};
 use crate::study::Model;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);
+static REPLACE: AtomicBool = AtomicBool::new(false);
+
+/// Set by `--replace`: an output folder holding another command's results may be
+/// replaced.
+pub fn set_replace(r: bool) {
+    REPLACE.store(r, Ordering::Relaxed);
+}
 
 /// Set by `--quiet`.
 pub fn set_quiet(q: bool) {
     QUIET.store(q, Ordering::Relaxed);
 }
 
-/// Print results to standard output unless `--quiet`.
+/// Print results to standard output unless `--quiet` (never a panic: `io::console`).
 pub fn say(text: &str) {
     if !QUIET.load(Ordering::Relaxed) && !text.is_empty() {
-        println!("{text}");
+        crate::io::console::out_line(text);
     }
 }
 
@@ -38,7 +45,18 @@ pub fn build_model(case: &Case) -> Result<Model, CliError> {
 
 /// Open the output folder for `command` (one set per folder).
 pub fn open_out(out: &Path, command: &str) -> Result<OutputDir, CliError> {
-    Ok(OutputDir::open(out, None, command)?)
+    open_set(out, None, command)
+}
+
+/// Open the output set `set` of `out` for `command`, replacing another command's set
+/// only with `--replace`.
+pub fn open_set(out: &Path, set: Option<&str>, command: &str) -> Result<OutputDir, CliError> {
+    let other = if REPLACE.load(Ordering::Relaxed) {
+        OtherSet::Replace
+    } else {
+        OtherSet::Refuse
+    };
+    Ok(OutputDir::open_with(out, set, command, other)?)
 }
 
 /// Stamp the metadata on the summary, stage everything, publish the set, print the

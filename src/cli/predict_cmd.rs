@@ -81,8 +81,12 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     let (source, span, source_id, n) = match &a.posterior {
         Some(p) => {
             let src = p.display().to_string();
-            let text = std::fs::read_to_string(p)
-                .map_err(|e| CliError::input(format!("--posterior {src}: cannot read: {e}")))?;
+            let text = crate::io::read_input_text(
+                p,
+                "posterior samples file",
+                crate::io::input::MAX_POSTERIOR_BYTES,
+            )
+            .map_err(|e| CliError::input(format!("--posterior {e}")))?;
             let rows = read_samples(&text, &src, defaults).map_err(CliError::Input)?;
             let n = a.samples.unwrap_or(rows.len());
             let span = Prior::spanning(&rows);
@@ -114,7 +118,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     build_model(&case)?;
     let stem =
         (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
-    let mut out = OutputDir::open(&a.out, stem.as_deref(), "predict")?;
+    let mut out = super::output::open_set(&a.out, stem.as_deref(), "predict")?;
     let set = PredictSettings {
         limit_um: a.limit_um,
         cycles: a.cycles,
@@ -224,8 +228,12 @@ pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
     for input in &a.inputs {
         for p in shard_files(input)? {
             let src = p.display().to_string();
-            let text = std::fs::read_to_string(&p)
-                .map_err(|e| CliError::input(format!("predict-merge: {src}: {e}")))?;
+            let text = crate::io::read_input_text(
+                &p,
+                "prediction shard",
+                crate::io::input::MAX_PREDICT_SHARD_BYTES,
+            )
+            .map_err(|e| CliError::input(format!("predict-merge: {e}")))?;
             let f: ShardFile = serde_json::from_str(&text).map_err(|e| {
                 CliError::input(format!("predict-merge: {src} is not a predict shard: {e}"))
             })?;

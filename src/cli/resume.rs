@@ -1,84 +1,48 @@
 //! Where each wear run of a command starts (afresh, or with `--resume` from its
-//! checkpoint, checked before anything is computed), and the checkpoint logs appended to
-//! after every update.
+//! checkpoint, checked and recomputed before anything else is computed), and the
+//! checkpoint logs appended to after every update. The logic is the library's
+//! (`io::checkpoint_set`).
 
 use super::CliError;
-use crate::io::checkpoint::{checkpoint_name, load_checkpoint, LoadedCheckpoint};
 use crate::io::checkpoint_set::CheckpointSet;
 use crate::io::OutputDir;
-use crate::study::wear_check::check_wear_run;
 use crate::study::wear_loop::{WearMode, WearRun};
 use crate::study::Model;
-use std::path::Path;
 
-/// The start of one mode's run.
-pub struct Start {
-    pub run: WearRun,
-    loaded: Option<LoadedCheckpoint>,
+/// With `resume`, the output folder must exist (checked before it would be created).
+pub fn require_folder(out: &std::path::Path, resume: bool) -> Result<(), CliError> {
+    if resume && !out.is_dir() {
+        return Err(CliError::input(format!(
+            "--resume: no checkpoint to resume from in {}: the folder does not exist; run without --resume to start afresh",
+            out.display()
+        )));
+    }
+    Ok(())
 }
 
-/// The starting runs of `modes`. With `resume`, each mode continues from its checkpoint in
-/// `dir`, which must belong to this case and mode and hold a run this model could have
-/// produced (`study::wear_check`); every checkpoint is checked before anything runs. A
-/// mode without a checkpoint (or with only its header: killed before its first update)
-/// starts afresh, but finding none at all is an error: the user asked to resume something
-/// that is not there.
+/// The starting runs of `modes` (see `io::checkpoint_set::starting_runs`).
 pub fn starting_runs(
-    dir: &Path,
+    out: &OutputDir,
     modes: &[WearMode],
     resume: bool,
     case_sha256: &str,
     model: &Model,
-) -> Result<Vec<Start>, CliError> {
-    let fresh = |m: WearMode| Start {
-        run: WearRun::new(m),
-        loaded: None,
-    };
-    if !resume {
-        return Ok(modes.iter().map(|m| fresh(*m)).collect());
+) -> Result<Vec<WearRun>, CliError> {
+    let (runs, notes) =
+        crate::io::checkpoint_set::starting_runs(out, modes, resume, case_sha256, model)
+            .map_err(|e| CliError::input(e.replace("resuming:", "--resume:")))?;
+    for n in notes {
+        eprintln!("note: {n}");
     }
-    let mut starts = Vec::new();
-    for m in modes {
-        let path = dir.join(checkpoint_name(*m));
-        match load_checkpoint(&path, *m, case_sha256)? {
-            Some(l) if !l.run.records.is_empty() => {
-                check_wear_run(&l.run, model).map_err(|e| {
-                    CliError::input(format!(
-                        "--resume: {}: {e}; it cannot be resumed: rerun without --resume",
-                        path.display()
-                    ))
-                })?;
-                starts.push(Start {
-                    run: l.run.clone(),
-                    loaded: Some(l),
-                });
-            }
-            _ => starts.push(fresh(*m)),
-        }
-    }
-    if starts.iter().all(|s| s.loaded.is_none()) {
-        let names: Vec<String> = modes.iter().map(|m| checkpoint_name(*m)).collect();
-        return Err(CliError::input(format!(
-            "--resume: no checkpoint to resume from in {} (looked for {}); run without --resume to start afresh",
-            dir.display(),
-            names.join(", ")
-        )));
-    }
-    for s in starts.iter().filter(|s| s.loaded.is_none()) {
-        eprintln!(
-            "note: no {} checkpoint: that run starts afresh",
-            s.run.mode.label()
-        );
-    }
-    Ok(starts)
+    Ok(runs)
 }
 
-/// The checkpoint logs of the runs that start at `starts`, in `out`.
+/// The checkpoint logs of the runs that start at `runs`, in `out`.
 pub fn open_checkpoints(
     out: &mut OutputDir,
-    starts: &[Start],
+    runs: &[WearRun],
     case_sha256: &str,
 ) -> Result<CheckpointSet, CliError> {
-    let runs: Vec<_> = starts.iter().map(|s| (&s.run, s.loaded.as_ref())).collect();
-    Ok(CheckpointSet::open(out, &runs, case_sha256)?)
+    let refs: Vec<&WearRun> = runs.iter().collect();
+    Ok(CheckpointSet::open(out, &refs, case_sha256)?)
 }

@@ -16,10 +16,11 @@ pub fn run(a: &RunArgs) -> Result<(), CliError> {
     let model = build_model(&case)?;
     let meta = RunMetadata::new("run", &case);
     let modes = [WearMode::Dynamic, WearMode::QuasiStatic];
-    let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
+    super::resume::require_folder(&a.out, a.resume)?;
     let mut out = open_out(&a.out, "run")?;
+    let starts = starting_runs(&out, &modes, a.resume, &meta.case_sha256, &model)?;
     let checkpoints = open_checkpoints(&mut out, &starts, &meta.case_sha256)?;
-    let mut runs = starts.into_iter().map(|s| s.run);
+    let mut runs = starts.into_iter();
     let (d0, q0) = (
         runs.next().unwrap_or(WearRun::new(WearMode::Dynamic)),
         runs.next().unwrap_or(WearRun::new(WearMode::QuasiStatic)),

@@ -15,8 +15,8 @@ use super::sweep_continuation::{continuation_of, run_branches};
 use super::sweep_records::{case_path, write_record, Outcomes, Planned};
 use super::CliError;
 use crate::config::{load_case, schema};
-use crate::io::atomic::ensure_real_dir;
-use crate::io::{OutputDir, RunMetadata};
+use crate::io::output_dir::StateFolder;
+use crate::io::RunMetadata;
 use crate::report::artifacts::{stage_figures, Artifacts};
 use crate::report::modes::modes_json;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
@@ -40,11 +40,7 @@ fn describe(keys: &[String], values: &[String]) -> String {
 }
 
 fn read_config(c: &CaseArgs) -> Result<String, CliError> {
-    match &c.config {
-        Some(p) => std::fs::read_to_string(p)
-            .map_err(|e| CliError::input(format!("--config {}: cannot read: {e}", p.display()))),
-        None => Ok(String::new()),
-    }
+    c.text()
 }
 
 /// Parse the axes and check every value of every axis on the base case, so a bad value
@@ -111,13 +107,13 @@ fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), CliError> {
 
 /// Run one case and write its record.
 fn run_one(
-    dir: &Path,
+    cases: &StateFolder,
     p: &Planned,
     run: SweepRun,
     keys: &[String],
 ) -> Result<Vec<String>, CaseError> {
     let o = run_case(&p.case, run)?;
-    write_record(dir, p, run, keys, &o.results, None)?;
+    write_record(cases, p, run, keys, &o.results, None)?;
     Ok(o.warnings)
 }
 
@@ -188,8 +184,8 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         return Err(CliError::Input(model_problems));
     }
     let stem = shard.stem();
-    let mut out = OutputDir::open(&a.out, Some(&stem), "sweep")?;
-    ensure_real_dir(&a.out, &a.out.join("cases"))?;
+    let mut out = super::output::open_set(&a.out, Some(&stem), "sweep")?;
+    let cases = out.state_folder("cases")?;
 
     let (outcomes, records, skipped) = if let Some(c) = &continuation {
         eprintln!(
@@ -199,7 +195,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
             c.len()
         );
         let pb = count_bar(c.len() as u64, "sweep cases");
-        let r = run_branches(&a.out, c, &planned, &keys, &pb);
+        let r = run_branches(&a.out, &cases, c, &planned, &keys, &pb);
         pb.finish_and_clear();
         r
     } else {
@@ -217,7 +213,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         let outcomes: Outcomes = pending
             .par_iter()
             .map(|p| {
-                let r = run_one(&a.out, p, run_kind, &keys);
+                let r = run_one(&cases, p, run_kind, &keys);
                 pb.inc(1);
                 (p.id, r)
             })

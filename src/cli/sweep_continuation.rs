@@ -11,6 +11,7 @@ use super::sweep_records::{case_path, write_record, Outcomes, Planned};
 use super::CliError;
 use crate::config::Case;
 use crate::dynamics::model::NSTATE;
+use crate::io::output_dir::StateFolder;
 use crate::study::sweep::continuation::{run_continuation, PointRun};
 use crate::study::sweep::{
     Branch, CaseRecord, Continuation, ContinuationLink, ContinuationPlan, SweepPlan, SweepRun,
@@ -55,6 +56,7 @@ pub fn continuation_of(
 /// number of points skipped.
 pub fn run_branches(
     dir: &Path,
+    cases_folder: &StateFolder,
     c: &ContinuationPlan,
     planned: &[Planned],
     keys: &[String],
@@ -100,7 +102,7 @@ pub fn run_branches(
             } => {
                 let link = ContinuationLink::new(b, start.as_ref(), &end_state);
                 write_record(
-                    dir,
+                    cases_folder,
                     p,
                     SweepRun::Dynamics,
                     keys,

@@ -4,7 +4,6 @@
 use super::args::SweepMergeArgs;
 use super::output::say;
 use super::CliError;
-use crate::io::OutputDir;
 use crate::report::artifacts::{stage_figures, Artifacts};
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::study::sweep::{Crossing, SweepTable};
@@ -47,16 +46,9 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     for input in &a.inputs {
         for csv in merge_inputs(input)? {
             let src = csv.display().to_string();
-            let text = std::fs::read_to_string(&csv)
-                .map_err(|e| CliError::input(format!("sweep-merge: {src}: cannot read: {e}")))?;
-            let t = SweepTable::from_csv(&text)
-                .map_err(|e| CliError::input(format!("sweep-merge: {src}: {e}")))?;
-            if let Some(m) = std::fs::read_to_string(csv.with_extension("json"))
-                .ok()
-                .and_then(|s| serde_json::from_str::<serde_json::Value>(&s).ok())
-            {
-                metas.push((src.clone(), m));
-            }
+            let (t, m) = crate::io::sweep_inputs::merge_input(&csv)
+                .map_err(|e| CliError::input(format!("sweep-merge: {e}")))?;
+            metas.push((src.clone(), m));
             tables.push((src, t));
         }
     }
@@ -103,7 +95,7 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     } else {
         (a.out.clone(), "sweep".to_owned())
     };
-    let mut out = OutputDir::open(&dir, Some(&stem), "sweep-merge")?;
+    let mut out = super::output::open_set(&dir, Some(&stem), "sweep-merge")?;
     let csv_path = dir.join(format!("{stem}.csv"));
     out.stage(
         &format!("{stem}.csv"),
@@ -115,6 +107,8 @@ pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
         .find_map(|(_, m)| m["total_cases"].as_u64())
         .map(|n| n as usize);
     let have: std::collections::BTreeSet<usize> = merged.rows.iter().map(|r| r.case_id).collect();
+    // Bounded by the plan's limit (a description is an input: it could claim any size).
+    let total = total.filter(|n| *n <= crate::study::sweep::plan::MAX_CASES);
     let missing: Vec<usize> =
         total.map_or_else(Vec::new, |n| (0..n).filter(|i| !have.contains(i)).collect());
     if !missing.is_empty() {

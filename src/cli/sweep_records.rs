@@ -3,7 +3,7 @@
 //! computed. Shared by `sweep_cmd` (parallel cases) and `sweep_continuation` (branches).
 
 use crate::config::Case;
-use crate::io::write_atomic;
+use crate::io::output_dir::StateFolder;
 use crate::study::sweep::{CaseError, CaseRecord, ContinuationLink, SweepRun};
 use std::path::{Path, PathBuf};
 
@@ -23,10 +23,17 @@ pub fn case_path(dir: &Path, id: usize) -> PathBuf {
     dir.join("cases").join(format!("{id}.json"))
 }
 
-/// Write the record of a finished case (or continuation point); the record is the first
-/// and only file a case writes.
+/// Whether the first bytes of a file are a sweep case record's (so a new record may
+/// replace it).
+pub fn is_case_record(b: &[u8]) -> bool {
+    let t = String::from_utf8_lossy(b);
+    t.trim_start().starts_with('{') && t.contains("\"case_id\"") && t.contains("\"case_sha256\"")
+}
+
+/// Write the record of a finished case (or continuation point) into `cases` (the set's
+/// `cases` folder); the record is the first and only file a case writes.
 pub fn write_record(
-    dir: &Path,
+    cases: &StateFolder,
     p: &Planned,
     run: SweepRun,
     keys: &[String],
@@ -49,6 +56,8 @@ pub fn write_record(
     }
     .sealed();
     let text = serde_json::to_string_pretty(&rec).map_err(|e| CaseError::Solve(e.into()))?;
-    write_atomic(&case_path(dir, p.id), text.as_bytes()).map_err(|e| CaseError::Solve(e.into()))?;
+    cases
+        .write(&format!("{}.json", p.id), text.as_bytes(), is_case_record)
+        .map_err(|e| CaseError::Solve(e.into()))?;
     Ok(rec)
 }

@@ -20,25 +20,22 @@ pub fn run(a: &WearArgs) -> Result<(), CliError> {
         WearModeArg::QuasiStatic => vec![WearMode::QuasiStatic],
         WearModeArg::Both => vec![WearMode::Dynamic, WearMode::QuasiStatic],
     };
-    let starts = starting_runs(&a.out, &modes, a.resume, &meta.case_sha256, &model)?;
+    super::resume::require_folder(&a.out, a.resume)?;
     let mut out = open_out(&a.out, "wear")?;
+    let starts = starting_runs(&out, &modes, a.resume, &meta.case_sha256, &model)?;
     let checkpoints = open_checkpoints(&mut out, &starts, &meta.case_sha256)?;
     let bars_group = multi();
     let bars: Vec<_> = modes
         .iter()
         .map(|m| (*m, wear_bar(&bars_group, case.wear.total_cycles, *m)))
         .collect();
-    let runs = run_wear_modes(
-        &model,
-        starts.into_iter().map(|s| s.run).collect(),
-        &|mode, run: &WearRun| {
-            checkpoints.record(run)?;
-            if let Some((_, pb)) = bars.iter().find(|(m, _)| *m == mode) {
-                show_wear(pb, run);
-            }
-            Ok(())
-        },
-    )?;
+    let runs = run_wear_modes(&model, starts, &|mode, run: &WearRun| {
+        checkpoints.record(run)?;
+        if let Some((_, pb)) = bars.iter().find(|(m, _)| *m == mode) {
+            show_wear(pb, run);
+        }
+        Ok(())
+    })?;
     for (_, pb) in &bars {
         pb.finish_and_clear();
     }

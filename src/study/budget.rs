@@ -249,6 +249,34 @@ pub fn wear_updates(case: &Case, rate_m: f64) -> f64 {
     1.0 + (w.total_cycles / block).ceil()
 }
 
+/// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
+/// never read beyond what the run could have written: 16 times the estimated number of
+/// updates (the estimate takes the nominal load; a run's actual updates stay well within
+/// that margin) of (4 G + 4 S_d) numbers at [`CHECKPOINT_BYTES_PER_NUMBER`] bytes, and at
+/// least 64 MiB.
+pub fn max_checkpoint_bytes(case: &Case, mode: crate::study::wear_loop::WearMode) -> u64 {
+    use crate::study::wear_loop::WearMode;
+    let dynamic = mode == WearMode::Dynamic;
+    let e = estimate(
+        case,
+        Job::Wear {
+            dynamic,
+            quasi_static: !dynamic,
+        },
+    );
+    let updates = if dynamic {
+        e.wear_updates_dynamic
+    } else {
+        e.wear_updates_quasi_static
+    };
+    let s_dyn = (case.numerics.steps_per_mesh_period as f64).max(adaptive_steps_per_period(
+        case.numerics.integration_tolerance,
+    ));
+    let numbers = 4.0 * case.wear.points_per_profile as f64 + 4.0 * s_dyn;
+    let bytes = 16.0 * updates * numbers * CHECKPOINT_BYTES_PER_NUMBER;
+    bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
+}
+
 /// Steps per mesh period the error control of the dynamic solver takes, at most, at the
 /// local error tolerance `tol` (dimensionless): [`ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE`]
 /// x (1e-5 / tol)^(1/3), the step of a third-order method scaling as tol^(1/3).

@@ -11,7 +11,7 @@
 //! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
 
 use super::model::Model;
-use super::wear_loop::{WearMode, WearRun};
+use super::wear_loop::{next_update, Next, WearMode, WearRun};
 use crate::dynamics::model::NSTATE;
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
@@ -115,6 +115,47 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
             return Err(at(format!(
                 "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
             )));
+        }
+    }
+    Ok(())
+}
+
+/// Check `run` as [`check_wear_run`] does, then recompute its last update from the record
+/// before it (its first, from new teeth, when it holds one record) and require the
+/// recomputed record to equal the stored one bit for bit (compared as their JSON, which
+/// carries every double exactly). A record that this case's model does not reproduce (an
+/// edit with recomputed checksums, a record of another case under this case's header, a
+/// spliced tail) is refused, naming its line in the checkpoint (the header is line 1).
+/// The first update is recomputed too when it is not the last: a foreign start cannot
+/// hide behind consistent later records. The cost is one or two updates.
+pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
+    check_wear_run(run, model)?;
+    let n = run.records.len();
+    let mut to_check = vec![n - 1];
+    if n > 1 {
+        to_check.push(0);
+    }
+    for i in to_check {
+        let prev = i.checked_sub(1).map(|j| &run.records[j]);
+        let line = i + 2;
+        let again = match next_update(model, run.mode, prev) {
+            Ok(Next::Record(r)) => *r,
+            Ok(_) | Err(_) => {
+                return Err(format!(
+                    "line {line} (update {i}): this case's model does not produce an update there when it is recomputed from the record before it: the record is not this case's"
+                ))
+            }
+        };
+        let same =
+            serde_json::to_string(&again).ok() == serde_json::to_string(&run.records[i]).ok();
+        if !same {
+            return Err(format!(
+                "line {line} (update {i}) is not what this case's model computes from the record before it (recomputed: max pinion wear {:.6e} m, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the record is not this case's, or was edited",
+                again.wear.max_pinion_m(),
+                again.summary.mesh_force_mean_n,
+                run.records[i].wear.max_pinion_m(),
+                run.records[i].summary.mesh_force_mean_n,
+            ));
         }
     }
     Ok(())
