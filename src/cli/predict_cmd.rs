@@ -200,8 +200,8 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
 
 /// Shard files of a merge input: a file, or a directory's predict_shard_*_of_*.json.
 fn shard_files(input: &Path) -> Result<Vec<PathBuf>, CliError> {
-    if input.is_file() {
-        return Ok(vec![input.to_path_buf()]);
+    if !input.is_dir() {
+        return Ok(vec![input.to_path_buf()]); // read_input says what it is if not a file
     }
     let mut found: Vec<PathBuf> = std::fs::read_dir(input)
         .map_err(|e| CliError::input(format!("predict-merge: {}: {e}", input.display())))?

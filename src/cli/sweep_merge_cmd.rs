@@ -13,14 +13,14 @@ use std::path::{Path, PathBuf};
 /// The sweep tables of a merge input: a CSV file, or a directory's `sweep.csv` and
 /// `sweep_shard_*_of_*.csv`. Each comes with its `.json` description when present.
 fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, CliError> {
-    if input.is_file() {
-        return Ok(vec![input.to_path_buf()]);
-    }
-    if !input.is_dir() {
+    if !input.exists() {
         return Err(CliError::input(format!(
             "sweep-merge: {} does not exist",
             input.display()
         )));
+    }
+    if !input.is_dir() {
+        return Ok(vec![input.to_path_buf()]); // read_input says what it is if not a file
     }
     let mut found: Vec<PathBuf> = std::fs::read_dir(input)
         .map_err(|e| CliError::input(format!("sweep-merge: cannot read {}: {e}", input.display())))?

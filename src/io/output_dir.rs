@@ -396,18 +396,22 @@ impl OutputDir {
         let mut conflicts = Vec::new();
         let mut targets = Vec::new();
         for rel in self.staged.keys() {
-            let (dir, name) = self.root.descend(rel, true)?;
-            if let Err(e) =
-                check_replaceable(&dir, &name, Ours::Recorded(self.previous.output(rel)))
-            {
-                conflicts.push(e.to_string());
+            let checked = self.root.descend(rel, true).and_then(|(dir, name)| {
+                check_replaceable(&dir, &name, Ours::Recorded(self.previous.output(rel)))?;
+                Ok((dir, name))
+            });
+            match checked {
+                Ok((dir, name)) => targets.push((rel.clone(), dir, name)),
+                Err(e) => conflicts.push(e.to_string()),
             }
-            targets.push((rel.clone(), dir, name));
         }
         for (_, to, recognise) in &self.at_publish {
-            let (dir, name) = self.root.descend(to, true)?;
             let ours = Ours::Format(self.previous.state_file(to), *recognise);
-            if let Err(e) = check_replaceable(&dir, &name, ours) {
+            let checked = self
+                .root
+                .descend(to, true)
+                .and_then(|(dir, name)| check_replaceable(&dir, &name, ours));
+            if let Err(e) = checked {
                 conflicts.push(e.to_string());
             }
         }
