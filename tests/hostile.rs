@@ -50,10 +50,17 @@ fn s(p: &Path) -> &str {
 
 /// A short `run` (a few updates).
 fn run_args(out: &Path) -> Vec<String> {
-    ["run", "-q", "--set", "wear.total_cycles=5e3", "--out", s(out)]
-        .iter()
-        .map(|x| x.to_string())
-        .collect()
+    [
+        "run",
+        "-q",
+        "--set",
+        "wear.total_cycles=5e3",
+        "--out",
+        s(out),
+    ]
+    .iter()
+    .map(|x| x.to_string())
+    .collect()
 }
 
 fn run_in(out: &Path, extra: &[&str]) -> std::process::Output {
@@ -141,11 +148,16 @@ fn a_linked_subfolder_is_refused_and_never_written_through() {
     assert!(stderr(&r).contains("symbolic link"), "{}", stderr(&r));
     assert_eq!(snapshot(&o), before);
     // Its results are not lost: they are kept in a visible folder of the output folder.
-    let kept = std::fs::read_dir(&out)
-        .unwrap()
-        .flatten()
-        .any(|e| e.file_name().to_string_lossy().starts_with("gearwear-unpublished-"));
-    assert!(kept || stderr(&r).contains("could not be kept"), "{}", stderr(&r));
+    let kept = std::fs::read_dir(&out).unwrap().flatten().any(|e| {
+        e.file_name()
+            .to_string_lossy()
+            .starts_with("gearwear-unpublished-")
+    });
+    assert!(
+        kept || stderr(&r).contains("could not be kept"),
+        "{}",
+        stderr(&r)
+    );
 }
 
 #[test]
@@ -227,7 +239,10 @@ fn no_file_is_made_in_the_temporary_folder() {
     let tmp = d.path().join("tmp");
     std::fs::create_dir(&tmp).unwrap();
     for n in 0..64 {
-        let _ = std::os::unix::fs::symlink(o.join("victim.txt"), tmp.join(format!("gearwear-plot-{n}-0.png")));
+        let _ = std::os::unix::fs::symlink(
+            o.join("victim.txt"),
+            tmp.join(format!("gearwear-plot-{n}-0.png")),
+        );
     }
     let before = (snapshot(&o), snapshot(&tmp));
     let out = d.path().join("out");
@@ -251,12 +266,30 @@ fn fifos_and_devices_as_inputs_are_refused_at_once() {
     let o = s(&out);
     for args in [
         vec!["dynamics", "--config", f, "--out", o],
-        vec!["sweep", "--config", f, "--vary", "operating.input_speed_hz=20,30", "--out", o],
+        vec![
+            "sweep",
+            "--config",
+            f,
+            "--vary",
+            "operating.input_speed_hz=20,30",
+            "--out",
+            o,
+        ],
         vec!["dynamics", "--transmission-error", f, "--out", o],
         vec!["dynamics", "--transmission-error", "/dev/zero", "--out", o],
         vec!["calibrate", "--observations", f, "--out", o],
         vec!["calibrate", "--observations", "/dev/zero", "--out", o],
-        vec!["predict", "--posterior", f, "--limit-um", "10", "--cycles", "1e5", "--out", o],
+        vec![
+            "predict",
+            "--posterior",
+            f,
+            "--limit-um",
+            "10",
+            "--cycles",
+            "1e5",
+            "--out",
+            o,
+        ],
         vec!["predict-merge", f, "--out", o],
     ] {
         let r = within(&args, 20);
@@ -274,8 +307,14 @@ fn fifos_in_the_output_folder_are_refused_at_once() {
         (".gearwear.lock", vec!["dynamics"]),
         (".gearwear-state.json", vec!["dynamics"]),
         ("manifest.json", vec!["dynamics"]),
-        ("checkpoint_dynamic.jsonl", vec!["wear", "--mode", "dynamic", "--resume"]),
-        ("cases/0.json", vec!["sweep", "--vary", "operating.input_speed_hz=20,30"]),
+        (
+            "checkpoint_dynamic.jsonl",
+            vec!["wear", "--mode", "dynamic", "--resume"],
+        ),
+        (
+            "cases/0.json",
+            vec!["sweep", "--vary", "operating.input_speed_hz=20,30"],
+        ),
     ] {
         let out = d.path().join(name.replace(['.', '/'], "_"));
         std::fs::create_dir_all(out.join("cases")).unwrap();

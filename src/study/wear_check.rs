@@ -120,29 +120,48 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
     Ok(())
 }
 
-/// Check `run` as [`check_wear_run`] does, then recompute its last update from the record
-/// before it (its first, from new teeth, when it holds one record) and require the
-/// recomputed record to equal the stored one bit for bit (compared as their JSON, which
-/// carries every double exactly). A record that this case's model does not reproduce (an
-/// edit with recomputed checksums, a record of another case under this case's header, a
-/// spliced tail) is refused, naming its line in the checkpoint (the header is line 1).
-/// The first update is recomputed too when it is not the last: a foreign start cannot
-/// hide behind consistent later records. The cost is one or two updates.
+/// Most records recomputed when a checkpoint is resumed (the first, the last, and a
+/// random sample of the others): each costs one update, so resuming costs at most this
+/// many updates whatever the run's length.
+pub const MAX_RECOMPUTED: usize = 16;
+
+/// Which records to recompute: all of a run of at most [`MAX_RECOMPUTED`] records, else
+/// the first, the last and a sample of the others drawn from the operating system's
+/// randomness (a forger cannot know which), in increasing order.
+fn records_to_recompute(n: usize) -> Vec<usize> {
+    if n <= MAX_RECOMPUTED {
+        return (0..n).collect();
+    }
+    use std::hash::{BuildHasher, Hasher};
+    let seed = std::collections::hash_map::RandomState::new();
+    let mut picked = std::collections::BTreeSet::from([0, n - 1]);
+    let mut k = 0u64;
+    while picked.len() < MAX_RECOMPUTED {
+        let mut h = seed.build_hasher();
+        h.write_u64(k);
+        k += 1;
+        picked.insert(1 + (h.finish() % (n as u64 - 2)) as usize);
+    }
+    picked.into_iter().collect()
+}
+
+/// Check `run` as [`check_wear_run`] does, then recompute records from the record before
+/// each (the first from new teeth) and require each recomputed record to equal the stored
+/// one bit for bit (compared as their JSON, which carries every double exactly): every
+/// record of a run of up to [`MAX_RECOMPUTED`] records, else the first, the last and a
+/// random sample. A record that this case's model does not reproduce (an edit with
+/// recomputed checksums, a record of another case under this case's header, a spliced
+/// tail) is refused, naming its line in the checkpoint (the header is line 1).
 pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
     check_wear_run(run, model)?;
-    let n = run.records.len();
-    let mut to_check = vec![n - 1];
-    if n > 1 {
-        to_check.push(0);
-    }
-    for i in to_check {
+    for i in records_to_recompute(run.records.len()) {
         let prev = i.checked_sub(1).map(|j| &run.records[j]);
         let line = i + 2;
         let again = match next_update(model, run.mode, prev) {
             Ok(Next::Record(r)) => *r,
             Ok(_) | Err(_) => {
                 return Err(format!(
-                    "line {line} (update {i}): this case's model does not produce an update there when it is recomputed from the record before it: the record is not this case's"
+                    "line {line} (update {i}): this case's model makes no such update when it is recomputed from the record before it: the record is not this case's"
                 ))
             }
         };
