@@ -29,8 +29,17 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
             "nothing to calibrate: every prior of [calibration] has equal bounds (give calibration.wear_coefficient_min_m2_per_n < ..._max_m2_per_n)",
         ));
     }
-    if a.samples == 0 {
-        return Err(CliError::input("--samples must be at least 1"));
+    let bad = crate::prognostics::limits::check_calibrate(
+        a.samples,
+        a.walkers,
+        a.steps,
+        a.check_runs,
+        prior.free().len(),
+    );
+    if !bad.is_empty() {
+        return Err(CliError::Input(
+            bad.iter().map(super::error::flag_problem).collect(),
+        ));
     }
     let src = a.observations.display().to_string();
     let text = crate::io::read_input_text(
@@ -40,6 +49,19 @@ pub fn run(a: &CalibrateArgs) -> Result<(), CliError> {
     )
     .map_err(|e| CliError::input(format!("--observations {e}")))?;
     let obs = parse_observations(&text, &src).map_err(CliError::Input)?;
+    super::output::check_budget(&crate::prognostics::budget::estimate_calibration(
+        &case,
+        &prior,
+        &crate::prognostics::budget::CalibrationJob {
+            values: obs.len(),
+            quantities: obs.series.len(),
+            max_cycles: obs.max_cycles(),
+            samples: a.samples,
+            walkers: a.walkers,
+            steps: a.steps,
+            check_runs: a.check_runs,
+        },
+    ))?;
     build_model(&case)?;
     let out = open_out(&a.out, "calibrate")?;
     let meta = RunMetadata::new("calibrate", &case);

@@ -47,6 +47,11 @@ impl fmt::Display for CliError {
     }
 }
 
+/// A setting's problem as the command line says it: the flag, then the message.
+pub fn flag_problem(p: &crate::prognostics::limits::Problem) -> String {
+    format!("--{}: {}", p.setting.replace('_', "-"), p.message)
+}
+
 impl From<ConfigError> for CliError {
     fn from(e: ConfigError) -> Self {
         CliError::Input(e.problems)

@@ -46,6 +46,7 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
     output::set_replace(cli.replace);
+    output::set_budget(cli.budget());
     match crate::io::runtime::init_threads() {
         Ok(Some(note)) => eprintln!("note: {note}"),
         Ok(None) => {}

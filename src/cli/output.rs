@@ -15,6 +15,24 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);
 static REPLACE: AtomicBool = AtomicBool::new(false);
+static BUDGET: std::sync::Mutex<Option<crate::study::budget::Budget>> = std::sync::Mutex::new(None);
+
+/// The run budget the flags ask for (None: `--no-budget`).
+pub fn set_budget(b: Option<crate::study::budget::Budget>) {
+    if let Ok(mut g) = BUDGET.lock() {
+        *g = b;
+    }
+}
+
+/// Refuse, before it computes, a job whose estimate (made once its inputs are read:
+/// observations, posterior, shards) is over the run budget.
+pub fn check_budget(e: &crate::study::budget::Estimate) -> Result<(), CliError> {
+    let b = BUDGET.lock().ok().and_then(|g| *g);
+    match b {
+        Some(b) => e.check(&b).map_err(CliError::input),
+        None => Ok(()),
+    }
+}
 
 /// Set by `--replace`: an output folder holding another command's results may be
 /// replaced.

@@ -51,27 +51,17 @@ struct ShardFile {
 
 pub fn run(a: &PredictArgs) -> Result<(), CliError> {
     let case = a.case.load()?;
-    let mut bad = Vec::new();
-    if !(a.limit_um.is_finite() && a.limit_um > 0.0) {
-        bad.push(format!(
-            "--limit-um {}: expected a wear depth > 0 um",
-            a.limit_um
-        ));
-    }
-    if !(a.cycles.is_finite() && a.cycles > 0.0) {
-        bad.push(format!("--cycles {}: expected a cycle count > 0", a.cycles));
-    }
-    if a.grid_points < 2 {
-        bad.push(format!(
-            "--grid-points {}: expected at least 2",
-            a.grid_points
-        ));
-    }
-    if a.samples == Some(0) {
-        bad.push("--samples 0: expected at least 1".into());
-    }
+    let bad = crate::prognostics::limits::check_predict(
+        a.limit_um,
+        a.cycles,
+        a.samples,
+        a.grid_points,
+        a.check_runs,
+    );
     if !bad.is_empty() {
-        return Err(CliError::Input(bad));
+        return Err(CliError::Input(
+            bad.iter().map(super::error::flag_problem).collect(),
+        ));
     }
     let defaults = [
         case.wear.coefficient_m2_per_n,
@@ -115,6 +105,22 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
         Some(s) => Shard::parse(s).map_err(CliError::input)?,
         None => Shard::ALL,
     };
+    super::output::check_budget(&crate::prognostics::budget::estimate_prediction(
+        &case,
+        &span,
+        &crate::prognostics::budget::PredictionJob {
+            samples_in_shard: n.div_ceil(shard.count.max(1)),
+            grid_points: a.grid_points,
+            cycles: a.cycles,
+            exact: a.forward == ForwardArg::Exact,
+            sharded: shard.count > 1,
+            check_runs: if shard.index == 1 { a.check_runs } else { 0 },
+            posterior_rows: match &source {
+                SampleSource::Posterior { rows, .. } => rows.len(),
+                SampleSource::Prior(_) => 0,
+            },
+        },
+    ))?;
     build_model(&case)?;
     let stem =
         (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
@@ -194,7 +200,7 @@ pub fn run(a: &PredictArgs) -> Result<(), CliError> {
         );
         return Ok(());
     }
-    let art = prediction_artifacts(file, Vec::new())?;
+    let art = prediction_artifacts(file, (0, Vec::new()))?;
     publish(out, art, "predict")
 }
 
@@ -225,8 +231,10 @@ fn shard_files(input: &Path) -> Result<Vec<PathBuf>, CliError> {
 
 pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
     let mut files: Vec<(String, ShardFile)> = Vec::new();
+    let mut bytes = 0u64;
     for input in &a.inputs {
         for p in shard_files(input)? {
+            bytes += std::fs::metadata(&p).map_or(0, |m| m.len());
             let src = p.display().to_string();
             let text = crate::io::read_input_text(
                 &p,
@@ -234,6 +242,8 @@ pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
                 crate::io::input::MAX_PREDICT_SHARD_BYTES,
             )
             .map_err(|e| CliError::input(format!("predict-merge: {e}")))?;
+            // The text itself must fit the budget before it is parsed.
+            super::output::check_budget(&crate::prognostics::budget::estimate_merge(bytes, 0, 0))?;
             let f: ShardFile = serde_json::from_str(&text).map_err(|e| {
                 CliError::input(format!("predict-merge: {src} is not a predict shard: {e}"))
             })?;
@@ -242,24 +252,33 @@ pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
     }
     let (src0, first) = files[0].clone();
     for (src, f) in &files {
+        crate::prognostics::predict::check_shard(&f.identity.settings, f.shard, &f.outcomes)
+            .map_err(|e| CliError::input(format!("predict-merge: {src}: {e}")))?;
         if f.identity != first.identity {
             return Err(CliError::input(format!(
                 "predict-merge: {src} and {src0} come from different predictions (settings, forward model, samples or case differ)"
             )));
         }
     }
+    super::output::check_budget(&crate::prognostics::budget::estimate_merge(
+        bytes,
+        first.identity.settings.samples,
+        first.identity.settings.grid_points,
+    ))?;
     let mut outcomes: Vec<SampleOutcome> =
         files.iter().flat_map(|f| f.1.outcomes.clone()).collect();
     outcomes.sort_by_key(|o| o.index);
     outcomes.dedup_by_key(|o| o.index);
     let have: std::collections::BTreeSet<usize> = outcomes.iter().map(|o| o.index).collect();
+    // Counted, not listed: a shard may claim up to 1e7 samples.
+    let n_missing = first.identity.settings.samples - have.len();
     let missing: Vec<usize> = (0..first.identity.settings.samples)
         .filter(|i| !have.contains(i))
+        .take(100)
         .collect();
-    if !missing.is_empty() {
+    if n_missing > 0 {
         eprintln!(
-            "warning: {} of {} samples missing (first: {:?}); run their shards and merge again",
-            missing.len(),
+            "warning: {n_missing} of {} samples missing (first: {:?}); run their shards and merge again",
             first.identity.settings.samples,
             &missing[..missing.len().min(10)]
         );
@@ -273,7 +292,7 @@ pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
             shard: (1, 1),
             ..first
         },
-        missing,
+        (n_missing, missing),
     )?;
     publish(out, art, "predict-merge")
 }
@@ -296,7 +315,7 @@ fn publish(mut out: OutputDir, art: Artifacts, command: &str) -> Result<(), CliE
 }
 
 /// Every output of a prediction from its outcomes.
-fn prediction_artifacts(f: ShardFile, missing: Vec<usize>) -> Result<Artifacts, CliError> {
+fn prediction_artifacts(f: ShardFile, missing: (usize, Vec<usize>)) -> Result<Artifacts, CliError> {
     let mut art = Artifacts::default();
     let set = f.identity.settings;
     let o = &f.outcomes;
@@ -378,7 +397,7 @@ fn prediction_artifacts(f: ShardFile, missing: Vec<usize>) -> Result<Artifacts, 
         },
         "reference_run_failures": f.reference_failures.iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
         "surrogate_check": check_rows,
-        "missing_samples": missing,
+        "missing_samples": {"count": missing.0, "first": missing.1},
         "metadata": f.metadata,
     });
     art.summary = summary;
