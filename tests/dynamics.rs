@@ -6,7 +6,7 @@ use gearwear::config::load_case;
 use gearwear::dynamics::excitation::{ExternalError, PairGap};
 use gearwear::dynamics::integrator::{Rk4, Stepper};
 use gearwear::dynamics::modal::{linearised_matrices, modes};
-use gearwear::dynamics::model::{dof, GearSystem, State, NDOF};
+use gearwear::dynamics::model::{dof, ContactFrame, GearSystem, State, NDOF};
 use gearwear::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use gearwear::study::Model;
 use gearwear::wear::WearState;
@@ -212,16 +212,19 @@ fn undamped_frictionless_model_conserves_energy() {
     y[NDOF + dof::XG] = -2e-3;
     y[NDOF + dof::PHI_P] = 0.05;
     y[NDOF + dof::PHI_B] = -0.01;
-    let k_mesh = sys.derivative(0.0, &y).1.stiffness_total_n_per_m;
+    let k_mesh = sys
+        .derivative(ContactFrame::NATURAL, 0.0, &y)
+        .1
+        .stiffness_total_n_per_m;
     let e0 = energy(&sys, &y, k_mesh);
     let mut rk = Rk4::<16>::new(2e-8).unwrap();
-    let mut f = |t: f64, y: &State| sys.derivative(t, y).0;
+    let mut f = |t: f64, y: &State| sys.derivative(ContactFrame::NATURAL, t, y).0;
     let mut t = 0.0;
     let mut drift: f64 = 0.0;
     let scale = e0.abs().max(1e-30);
     for _ in 0..50 {
         rk.advance(&mut f, &mut t, &mut y, 1000).unwrap();
-        let ms = sys.derivative(t, &y).1;
+        let ms = sys.derivative(ContactFrame::NATURAL, t, &y).1;
         assert!(ms.force_n > 0.0, "contact must hold for a linear test");
         drift = drift.max((energy(&sys, &y, k_mesh) - e0).abs() / scale);
     }
@@ -240,7 +243,7 @@ fn friction_forces_only_dissipate() {
     let mut checked = 0;
     for i in 0..50 {
         let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.pinion_speed_rad_s;
-        let (_, mut ms) = sys.derivative(t, &y);
+        let (_, mut ms) = sys.derivative(ContactFrame::NATURAL, t, &y);
         let expected: f64 = (0..ms.n_pairs)
             .map(|j| -ms.friction_n[j] * ms.sliding_m_per_s[j])
             .sum();

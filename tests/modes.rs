@@ -32,7 +32,7 @@ fn linear_of(sys: &GearSystem) -> Linear {
     let (k_lin, c_lin, inv_mass) = sys.linear_parts();
     let free: Vec<usize> = (0..NDOF).filter(|i| inv_mass[*i] > 0.0).collect();
     let g: Vec<f64> = free.iter().map(|&i| sys.mesh_gradient()[i]).collect();
-    let k_mean = sys.mesh.mean_stiffness_n_per_m();
+    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
     let c_mesh = sys.mesh_damping_n_s_per_m;
     let n = free.len();
     Linear {

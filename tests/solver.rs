@@ -6,7 +6,7 @@
 use gearwear::config::load_case;
 use gearwear::dynamics::excitation::{ExternalError, PairGap};
 use gearwear::dynamics::grid::period_nodes;
-use gearwear::dynamics::model::{GearSystem, State, NDOF, NSTATE};
+use gearwear::dynamics::model::{ContactFrame, GearSystem, State, NDOF, NSTATE};
 use gearwear::dynamics::response::DynamicResponse;
 use gearwear::dynamics::spectrum::time_rms;
 use gearwear::dynamics::summary::ResponseSummary;
@@ -86,8 +86,8 @@ fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State> {
         .windows(2)
         .map(|w| {
             let (t, h) = (0.5 * (w[0] + w[1]), w[1] - w[0]);
-            let a = sys.jacobian(t, &y_touch);
-            let b = sys.derivative(t, &y_touch).0 - a * y_touch;
+            let a = sys.jacobian(ContactFrame::NATURAL, t, &y_touch);
+            let b = sys.derivative(ContactFrame::NATURAL, t, &y_touch).0 - a * y_touch;
             let mut z = SMatrix::<f64, 17, 17>::zeros();
             z.fixed_view_mut::<16, 16>(0, 0).copy_from(&a);
             z.fixed_view_mut::<16, 1>(0, 16).copy_from(&b);
@@ -196,11 +196,10 @@ fn linear_forces(m: &Model, held: usize) -> Vec<(f64, f64)> {
         .map(|(t, y)| {
             let (q, v) = (y.fixed_rows::<NDOF>(0), y.fixed_rows::<NDOF>(NDOF));
             // The pairs just after the node, as the solver records a mesh event.
-            sys.set_contact_decision_time(Some(t + 1e-9 * grid[grid.len() - 1]));
+            let frame = ContactFrame::decided_at(t + 1e-9 * grid[grid.len() - 1]);
             let k = sys
-                .mesh_state(*t, q.as_slice(), v.as_slice())
+                .mesh_state(frame, *t, q.as_slice(), v.as_slice())
                 .stiffness_total_n_per_m;
-            sys.set_contact_decision_time(None);
             (*t, k * g.dot(&q) + sys.mesh_damping_n_s_per_m * g.dot(&v))
         })
         .collect()

@@ -133,7 +133,7 @@ pub fn damped_modes(sys: &GearSystem) -> DampedModes {
     }
     let eig = a.complex_eigenvalues();
     let g = sys.mesh_gradient();
-    let k_mean = sys.mesh.mean_stiffness_n_per_m();
+    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
     let mut out = Vec::new();
     for lam in eig.iter().copied() {
         if lam.im < 0.0 {

@@ -19,7 +19,7 @@ pub struct Modes {
 pub fn linearised_matrices(sys: &GearSystem) -> (Vec<f64>, DMatrix<f64>, Vec<usize>) {
     let (k_lin, _, inv_mass) = sys.linear_parts();
     let g = sys.mesh_gradient();
-    let k_mean = sys.mesh.mean_stiffness_n_per_m();
+    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
     let free: Vec<usize> = (0..NDOF).filter(|i| inv_mass[*i] > 0.0).collect();
     let n = free.len();
     let mut k = DMatrix::zeros(n, n);

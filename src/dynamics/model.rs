@@ -29,11 +29,10 @@ use crate::contact::load_sharing::pedrero_shares;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
 use nalgebra::{SMatrix, SVector};
-use std::cell::Cell;
 
 mod contact_mode;
 mod linear;
-pub use contact_mode::{ContactMode, ModeSwitch, FORCE_SWITCH, SWITCHES};
+pub use contact_mode::{ContactFrame, ContactMode, ModeSwitch, FORCE_SWITCH, SWITCHES};
 
 /// Number of generalised coordinates.
 pub const NDOF: usize = 8;
@@ -113,8 +112,10 @@ pub struct MeshSprings {
     pub deflection_rate_m_per_s: f64,
 }
 
-/// The assembled model: immutable inputs for one dynamic evaluation.
-pub struct GearSystem<'a> {
+/// The inputs a [`GearSystem`] is assembled from (borrowed model objects and the
+/// values of one evaluation).
+#[derive(Clone, Copy)]
+pub struct GearSystemParts<'a> {
     pub pair: &'a GearPair,
     pub mesh: &'a MeshStiffness,
     pub params: &'a DynamicParams,
@@ -128,6 +129,14 @@ pub struct GearSystem<'a> {
     pub roughness_um: f64,
     /// Effective modulus E* of the contact, Pa.
     pub effective_modulus_pa: f64,
+}
+
+/// The assembled model: immutable inputs for one dynamic evaluation. It holds no
+/// evaluation state: how the contact is decided travels with each call as a
+/// [`ContactFrame`], so one system may be shared between threads.
+pub struct GearSystem<'a> {
+    /// What the system was assembled from.
+    pub parts: GearSystemParts<'a>,
     /// Mesh damping c_m, N s/m.
     pub mesh_damping_n_s_per_m: f64,
     inv_mass: [f64; NDOF],
@@ -139,29 +148,20 @@ pub struct GearSystem<'a> {
     q_ext: SVector<f64, NDOF>,
     /// sin and cos of the operating pressure angle.
     sin_cos_phi: (f64, f64),
-    /// Time at which the set of pairs in contact is decided (the middle of the current
-    /// integration step), or None for the time of each evaluation.
-    contact_decision_time_s: Cell<Option<f64>>,
-    /// Contact mode held fixed during an integration step (`contact_mode.rs`), or None
-    /// to decide it from the state at each evaluation.
-    contact_mode: Cell<Option<ContactMode>>,
 }
 
+// The system is shared read-only (e.g. by parallel studies): it must stay Send + Sync.
+const _: () = {
+    const fn assert_send_sync<T: Send + Sync>() {}
+    assert_send_sync::<GearSystem<'static>>();
+};
+
 impl<'a> GearSystem<'a> {
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(
-        pair: &'a GearPair,
-        mesh: &'a MeshStiffness,
-        params: &'a DynamicParams,
-        friction: &'a Friction,
-        viscosity_cp: f64,
-        gap: &'a PairGap,
-        external: &'a ExternalError,
-        load_sharing: LoadSharingModel,
-        roughness_um: f64,
-        effective_modulus_pa: f64,
-    ) -> Self {
+    pub fn new(parts: GearSystemParts<'a>) -> Self {
         use dof::*;
+        let GearSystemParts {
+            pair, mesh, params, ..
+        } = parts;
         let p = params;
         let mut inv_mass = [
             1.0 / p.lumped.mass_pinion_kg,
@@ -252,16 +252,7 @@ impl<'a> GearSystem<'a> {
         grad[PHI_G] = -pair.gear.base_radius_m;
         let c_m = params.mesh_damping_n_s_per_m(pair, mesh.mean_stiffness_n_per_m());
         Self {
-            pair,
-            mesh,
-            params,
-            friction,
-            viscosity_cp,
-            gap,
-            external,
-            load_sharing,
-            roughness_um,
-            effective_modulus_pa,
+            parts,
             mesh_damping_n_s_per_m: c_m,
             inv_mass,
             k_lin: k,
@@ -269,16 +260,7 @@ impl<'a> GearSystem<'a> {
             grad,
             q_ext,
             sin_cos_phi: (s, co),
-            contact_decision_time_s: Cell::new(None),
-            contact_mode: Cell::new(None),
         }
-    }
-
-    /// Decide the pairs in contact at time `t_s` for the following evaluations (the
-    /// integrator sets the middle of each step, so no stage of a step straddles a mesh
-    /// event); `None` restores the evaluation time.
-    pub fn set_contact_decision_time(&self, t_s: Option<f64>) {
-        self.contact_decision_time_s.set(t_s);
     }
 
     /// d delta / dq: the mesh direction in generalised coordinates.
@@ -303,35 +285,33 @@ impl<'a> GearSystem<'a> {
     /// time-varying-stiffness approximation (docs/MODEL.md).
     #[inline]
     pub fn phase_at(&self, t_s: f64) -> f64 {
-        self.params.pinion_speed_rad_s * t_s
+        self.parts.params.pinion_speed_rad_s * t_s
     }
 
     /// The pairs in contact at time t and the force of their springs and damper, for
     /// generalised displacements q and velocities v (paper eq. 2 with the wear gaps and
-    /// the external error): what decides the contact mode and the mesh force.
-    pub fn springs(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshSprings {
+    /// the external error): what decides the contact mode and the mesh force. The pairs
+    /// and the mode are decided as `frame` says.
+    pub fn springs(&self, frame: ContactFrame, t_s: f64, q: &[f64], v: &[f64]) -> MeshSprings {
         let mut sp = MeshSprings::default();
         for i in 0..NDOF {
             sp.deflection_m += self.grad[i] * q[i];
             sp.deflection_rate_m_per_s += self.grad[i] * v[i];
         }
         let phase = self.phase_at(t_s);
-        let omega_nom = self.params.pinion_speed_rad_s;
-        let rb1 = self.pair.pinion.base_radius_m;
-        let (e_ext, de_ext) = self.external.at(phase);
-        let frozen = self.contact_mode.get();
-        let decide = self
-            .contact_decision_time_s
-            .get()
-            .map_or(phase, |t| self.phase_at(t));
+        let omega_nom = self.parts.params.pinion_speed_rad_s;
+        let rb1 = self.parts.pair.pinion.base_radius_m;
+        let (e_ext, de_ext) = self.parts.external.at(phase);
+        let frozen = frame.mode;
+        let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
         let mut gap_rate_weighted = 0.0;
-        for (_, rho1) in self.pair.pairs_in_contact_decided(phase, decide) {
+        for (_, rho1) in self.parts.pair.pairs_in_contact_decided(phase, decide) {
             let n = sp.n_pairs;
             if n == MAX_PAIRS {
                 break;
             }
-            let k = self.mesh.pair_stiffness_n_per_m(rho1);
-            let (g_wear, dg_drho) = self.gap.at(rho1);
+            let k = self.parts.mesh.pair_stiffness_n_per_m(rho1);
+            let (g_wear, dg_drho) = self.parts.gap.at(rho1);
             // Effective gap of this pair: wear gap minus the external error (eq. 2 sign).
             let gap = g_wear - e_ext;
             let c = sp.deflection_m - gap;
@@ -359,10 +339,11 @@ impl<'a> GearSystem<'a> {
         sp
     }
 
-    /// Mesh state at time t for generalised displacements q and velocities v.
-    pub fn mesh_state(&self, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
+    /// Mesh state at time t for generalised displacements q and velocities v, the
+    /// contact decided as `frame` says.
+    pub fn mesh_state(&self, frame: ContactFrame, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
         use dof::*;
-        let sp = self.springs(t_s, q, v);
+        let sp = self.springs(frame, t_s, q, v);
         let n = sp.n_pairs;
         let mut ms = MeshState {
             n_pairs: n,
@@ -381,8 +362,8 @@ impl<'a> GearSystem<'a> {
             },
             ..MeshState::default()
         };
-        let omega_p = self.params.pinion_speed_rad_s + v[PHI_P];
-        let omega_g = self.params.gear_speed_rad_s + v[PHI_G];
+        let omega_p = self.parts.params.pinion_speed_rad_s + v[PHI_P];
+        let omega_g = self.parts.params.gear_speed_rad_s + v[PHI_G];
         let stiffness_shares = (sp.elastic_n > 0.0).then(|| {
             let mut sh = [0.0; MAX_PAIRS];
             for i in (0..n).filter(|i| sp.touching[*i]) {
@@ -406,10 +387,10 @@ impl<'a> GearSystem<'a> {
         omega_g: f64,
     ) {
         let n = ms.n_pairs;
-        match self.load_sharing {
+        match self.parts.load_sharing {
             // By the contact set decided (pairs ordered from the last to enter).
             LoadSharingModel::Pedrero => {
-                pedrero_shares(self.pair, &ms.rho1_m[..n], &mut ms.share[..n])
+                pedrero_shares(self.parts.pair, &ms.rho1_m[..n], &mut ms.share[..n])
             }
             LoadSharingModel::Stiffness => {
                 ms.share[..n].copy_from_slice(&stiffness_shares.unwrap_or_default()[..n])
@@ -421,25 +402,28 @@ impl<'a> GearSystem<'a> {
             let w = (ms.share[i] * ms.force_n).max(0.0);
             ms.load_n[i] = w;
             let rho1 = ms.rho1_m[i];
-            let rho2 = self.pair.rho_gear(rho1);
+            let rho2 = self.parts.pair.rho_gear(rho1);
             let hz = HertzContact::with_modulus(
                 w,
-                self.pair.face_width_m,
+                self.parts.pair.face_width_m,
                 rho1,
                 rho2,
-                self.effective_modulus_pa,
+                self.parts.effective_modulus_pa,
             );
             ms.pressure_pa[i] = hz.max_pressure_pa;
             ms.half_width_m[i] = hz.half_width_m;
             let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);
             let u_s = kin.sliding_velocity_m_per_s();
             ms.sliding_m_per_s[i] = u_s;
-            let mu = self
-                .friction
-                .coefficient(&hz, &kin, self.viscosity_cp, self.roughness_um);
+            let mu = self.parts.friction.coefficient(
+                &hz,
+                &kin,
+                self.parts.viscosity_cp,
+                self.parts.roughness_um,
+            );
             ms.friction_coefficient[i] = mu;
             // Positive when the pinion surface is faster; acts on the pinion along +e.
-            ms.friction_n[i] = mu * w * self.friction.direction(u_s);
+            ms.friction_n[i] = mu * w * self.parts.friction.direction(u_s);
         }
     }
 
@@ -456,7 +440,7 @@ impl<'a> GearSystem<'a> {
             let f = ms.friction_n[i];
             f_sum += f;
             m_p += ms.rho1_m[i] * f;
-            m_g += self.pair.rho_gear(ms.rho1_m[i]) * f;
+            m_g += self.parts.pair.rho_gear(ms.rho1_m[i]) * f;
         }
         // Friction along e = (cos phi, -sin phi) on the pinion, opposite on the gear.
         qf[XP] += f_sum * c;
@@ -468,11 +452,12 @@ impl<'a> GearSystem<'a> {
         qf
     }
 
-    /// Right-hand side dy/dt and the mesh state it used.
-    pub fn derivative(&self, t_s: f64, y: &State) -> (State, MeshState) {
+    /// Right-hand side dy/dt and the mesh state it used, the contact decided as `frame`
+    /// says.
+    pub fn derivative(&self, frame: ContactFrame, t_s: f64, y: &State) -> (State, MeshState) {
         let q = y.fixed_rows::<NDOF>(0).into_owned();
         let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
-        let ms = self.mesh_state(t_s, q.as_slice(), v.as_slice());
+        let ms = self.mesh_state(frame, t_s, q.as_slice(), v.as_slice());
         let rhs = self.q_ext + self.mesh_forces(&ms) - self.k_lin * q - self.c_lin * v;
         let mut dy = State::zeros();
         for i in 0..NDOF {

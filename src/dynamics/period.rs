@@ -21,7 +21,7 @@
 use super::integrator::tableau::ESDIRK32;
 use super::integrator::{IntegratorError, OdeSystem, Sdirk, SdirkOptions, Trial};
 use super::model::SWITCHES;
-use super::model::{dof, ContactMode, GearSystem, ModeSwitch, State, NDOF, NSTATE};
+use super::model::{dof, ContactFrame, ContactMode, GearSystem, ModeSwitch, State, NDOF, NSTATE};
 use nalgebra::SMatrix;
 
 /// Why an integration over a mesh period failed.
@@ -72,11 +72,14 @@ pub struct StepCounts {
 /// (m) for every displacement along the line of action, and the same at the mesh
 /// frequency (m/s) for the velocities; angles through their shaft's base radius.
 pub fn state_scales(sys: &GearSystem) -> State {
-    let p = sys.params;
-    let f_nominal = p.brake_torque_nm / sys.pair.gear.base_radius_m;
-    let delta_ref = f_nominal / sys.mesh.mean_stiffness_n_per_m();
-    let omega_mesh = p.pinion_speed_rad_s * sys.pair.pinion.teeth as f64;
-    let (rp, rg) = (sys.pair.pinion.base_radius_m, sys.pair.gear.base_radius_m);
+    let p = sys.parts.params;
+    let f_nominal = p.brake_torque_nm / sys.parts.pair.gear.base_radius_m;
+    let delta_ref = f_nominal / sys.parts.mesh.mean_stiffness_n_per_m();
+    let omega_mesh = p.pinion_speed_rad_s * sys.parts.pair.pinion.teeth as f64;
+    let (rp, rg) = (
+        sys.parts.pair.pinion.base_radius_m,
+        sys.parts.pair.gear.base_radius_m,
+    );
     let mut s = State::zeros();
     for i in 0..NDOF {
         let lever = match i {
@@ -90,17 +93,19 @@ pub fn state_scales(sys: &GearSystem) -> State {
     s
 }
 
-/// The model seen by the integrator.
+/// The model seen by the integrator during one trial step: the system and the contact
+/// frame of that step (pairs decided at its middle, its contact mode frozen).
 struct Ode<'s, 'a> {
     sys: &'s GearSystem<'a>,
+    frame: ContactFrame,
 }
 
 impl OdeSystem<NSTATE> for Ode<'_, '_> {
     fn rhs(&mut self, t: f64, y: &State) -> State {
-        self.sys.derivative(t, y).0
+        self.sys.derivative(self.frame, t, y).0
     }
     fn jacobian(&mut self, t: f64, y: &State) -> Option<SMatrix<f64, NSTATE, NSTATE>> {
-        Some(self.sys.jacobian(t, y))
+        Some(self.sys.jacobian(self.frame, t, y))
     }
 }
 
@@ -153,7 +158,7 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             .iter()
             .map(|t| {
                 let (a, b) = (sys.phase_at(t - eps_t), sys.phase_at(t + eps_t));
-                let count = |d: f64| sys.pair.pairs_in_contact_decided(d, d).count();
+                let count = |d: f64| sys.parts.pair.pairs_in_contact_decided(d, d).count();
                 // The period boundary is pair entry: the set changes there too.
                 count(a) != count(b) || *t == 0.0 || *t == *nodes.last().unwrap_or(&0.0)
             })
@@ -355,19 +360,15 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
         h: f64,
         mode: ContactMode,
     ) -> Result<Trial<NSTATE>, IntegratorError> {
-        self.sys.set_contact_decision_time(Some(t + 0.5 * h));
-        self.sys.set_contact_mode(Some(mode));
-        let r = self.stepper.try_step(&mut Ode { sys: self.sys }, t, y, h);
-        self.sys.set_contact_mode(None);
-        self.sys.set_contact_decision_time(None);
-        r
+        let mut ode = Ode {
+            sys: self.sys,
+            frame: ContactFrame::frozen(t + 0.5 * h, mode),
+        };
+        self.stepper.try_step(&mut ode, t, y, h)
     }
 
     fn switches(&self, mode: ContactMode, t: f64, y: &State, decide: f64) -> ModeSwitch {
-        self.sys.set_contact_decision_time(Some(decide));
-        let s = self.sys.mode_switch(mode, t, y);
-        self.sys.set_contact_decision_time(None);
-        s
+        self.sys.mode_switch(mode, t, decide, y)
     }
 
     /// Cuts the step `full` from `(t, y)` back to the first switch of `mode` it
@@ -439,8 +440,8 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
     }
 
     fn failure(&self, t: f64, y: &State, reason: String) -> StepFailure {
-        let (_, ms) = self.sys.derivative(t, y);
-        let period_rad = self.sys.pair.mesh_angle_rad();
+        let (_, ms) = self.sys.derivative(ContactFrame::NATURAL, t, y);
+        let period_rad = self.sys.parts.pair.mesh_angle_rad();
         let phase = self.sys.phase_at(t) % period_rad;
         StepFailure {
             time_s: t,

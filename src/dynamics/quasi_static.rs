@@ -37,21 +37,21 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
 
 /// Equilibrium mesh state at mesh phase `phase_rad`.
 pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
-    let p = sys.params;
+    let p = sys.parts.params;
     let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
-    let rb1 = sys.pair.pinion.base_radius_m;
-    let (e_ext, _) = sys.external.at(phase_rad);
+    let rb1 = sys.parts.pair.pinion.base_radius_m;
+    let (e_ext, _) = sys.parts.external.at(phase_rad);
     let mut ms = MeshState::default();
     let mut k = [0.0; MAX_PAIRS];
     let mut gap = [0.0; MAX_PAIRS];
     let mut n = 0;
-    for (_, rho1) in sys.pair.pairs_in_contact(phase_rad) {
+    for (_, rho1) in sys.parts.pair.pairs_in_contact(phase_rad) {
         if n == MAX_PAIRS {
             break;
         }
         ms.rho1_m[n] = rho1;
-        k[n] = sys.mesh.pair_stiffness_n_per_m(rho1);
-        gap[n] = sys.gap.at(rho1).0 - e_ext;
+        k[n] = sys.parts.mesh.pair_stiffness_n_per_m(rho1);
+        gap[n] = sys.parts.gap.at(rho1).0 - e_ext;
         ms.stiffness_n_per_m[n] = k[n];
         ms.stiffness_total_n_per_m += k[n];
         n += 1;
@@ -62,7 +62,7 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
         _ => (p.brake_torque_nm, true),
     };
     let arm = if on_gear {
-        sys.pair.gear.base_radius_m
+        sys.parts.pair.gear.base_radius_m
     } else {
         rb1
     };
@@ -80,7 +80,7 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
         let mut moment_per_n = 0.0;
         for i in 0..n {
             let lever = if on_gear {
-                sys.pair.rho_gear(ms.rho1_m[i])
+                sys.parts.pair.rho_gear(ms.rho1_m[i])
             } else {
                 ms.rho1_m[i]
             };
@@ -105,8 +105,8 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
 
 /// Quasi-static response over one mesh period on the same grid as the dynamic solver.
 pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
-    let omega = sys.params.pinion_speed_rad_s;
-    let nodes = period_nodes(sys.pair, omega, steps_per_mesh_period);
+    let omega = sys.parts.params.pinion_speed_rad_s;
+    let nodes = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
     let mut sig = Signals::default();
     let mut path = Vec::with_capacity(2 * nodes.len());
     for t in &nodes[..nodes.len() - 1] {
@@ -121,9 +121,9 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
         PathSample::push_contacts(
             &mut path,
             &ms,
-            sys.pair.loa_length_m,
+            sys.parts.pair.loa_length_m,
             omega,
-            sys.params.gear_speed_rad_s,
+            sys.parts.params.gear_speed_rad_s,
         );
     }
     path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));

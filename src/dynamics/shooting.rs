@@ -47,7 +47,7 @@ impl Reduction {
                 rigid: None,
             },
             None => {
-                let ratio = sys.pair.pinion.base_radius_m / sys.pair.gear.base_radius_m;
+                let ratio = sys.parts.pair.pinion.base_radius_m / sys.parts.pair.gear.base_radius_m;
                 let mut r = State::zeros();
                 r[dof::PHI_M] = 1.0;
                 r[dof::PHI_P] = 1.0;

@@ -10,7 +10,7 @@
 //! the state over that period) is reported.
 
 use super::grid::period_nodes;
-use super::model::{ContactMode, GearSystem, MeshState, State, NDOF};
+use super::model::{ContactFrame, ContactMode, GearSystem, MeshState, State, NDOF};
 use super::period::{
     state_scales, PeriodObserver, PeriodStepper, PlanMode, StepCounts, StepFailure,
 };
@@ -74,8 +74,8 @@ pub fn solve_steady_state_from(
     start: Option<&[f64; 16]>,
 ) -> Result<DynamicResponse, DynamicsError> {
     let nodes = period_nodes(
-        sys.pair,
-        sys.params.pinion_speed_rad_s,
+        sys.parts.pair,
+        sys.parts.params.pinion_speed_rad_s,
         settings.steps_per_mesh_period,
     );
     let mut ps = PeriodStepper::new(sys, nodes, settings.integration_tolerance)
@@ -241,13 +241,11 @@ impl Recorder {
 
 impl PeriodObserver for Recorder {
     fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State) {
-        sys.set_contact_decision_time(Some(decide));
-        let (dy, ms) = sys.derivative(t, y);
-        sys.set_contact_decision_time(None);
+        let (dy, ms) = sys.derivative(ContactFrame::decided_at(decide), t, y);
         record(
             &mut self.sig,
             t,
-            sys.phase_at(t) % sys.pair.mesh_angle_rad(),
+            sys.phase_at(t) % sys.parts.pair.mesh_angle_rad(),
             y,
             &dy,
             &ms,
@@ -267,14 +265,11 @@ impl PeriodObserver for Recorder {
         // Simpson's rule on the step, with the midpoint state from the cubic Hermite
         // interpolant of the step's ends (fourth order; the force is smooth inside a
         // step, which never crosses a mesh event or a contact switch).
-        sys.set_contact_decision_time(Some(t + 0.5 * h));
-        sys.set_contact_mode(Some(mode));
-        let (f0, ms0) = sys.derivative(t, y0);
-        let (f1, ms1) = sys.derivative(t + h, y1);
+        let frame = ContactFrame::frozen(t + 0.5 * h, mode);
+        let (f0, ms0) = sys.derivative(frame, t, y0);
+        let (f1, ms1) = sys.derivative(frame, t + h, y1);
         let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
-        let (_, ms) = sys.derivative(t + 0.5 * h, &y_mid);
-        sys.set_contact_mode(None);
-        sys.set_contact_decision_time(None);
+        let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
         let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
         self.force_int += simpson(ms0.force_n, ms.force_n, ms1.force_n);
         self.dte_int += simpson(ms0.deflection_m, ms.deflection_m, ms1.deflection_m);
@@ -302,7 +297,7 @@ fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &Mes
 }
 
 fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
-    let omega_p = sys.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
-    let omega_g = sys.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
-    PathSample::push_contacts(path, ms, sys.pair.loa_length_m, omega_p, omega_g);
+    let omega_p = sys.parts.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
+    let omega_g = sys.parts.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
+    PathSample::push_contacts(path, ms, sys.parts.pair.loa_length_m, omega_p, omega_g);
 }

@@ -5,8 +5,8 @@ use crate::config::case::{Case, GearSection, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::model::GearSystem;
 use crate::dynamics::model::NSTATE;
+use crate::dynamics::model::{GearSystem, GearSystemParts};
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
@@ -107,18 +107,18 @@ impl Model {
         external: &'a ExternalError,
         roughness_um: f64,
     ) -> GearSystem<'a> {
-        GearSystem::new(
-            &self.pair,
-            &self.mesh,
-            &self.params,
-            &self.friction,
-            self.case.lubricant.viscosity_cp,
+        GearSystem::new(GearSystemParts {
+            pair: &self.pair,
+            mesh: &self.mesh,
+            params: &self.params,
+            friction: &self.friction,
+            viscosity_cp: self.case.lubricant.viscosity_cp,
             gap,
             external,
-            self.case.contact.load_sharing,
+            load_sharing: self.case.contact.load_sharing,
             roughness_um,
-            self.effective_modulus_pa,
-        )
+            effective_modulus_pa: self.effective_modulus_pa,
+        })
     }
 
     /// Roughness that goes with a wear state, um.

@@ -42,6 +42,46 @@ impl ContactMode {
     }
 }
 
+/// How one evaluation of the right-hand side decides the contact: the time at which the
+/// set of pairs in contact is decided, and the contact mode held fixed, if any. The
+/// integrator's problem adaptor carries it for each trial step (decided at the step's
+/// middle, so no stage of a step straddles a mesh event, and the step's mode frozen);
+/// observers build their own. A value passed with each call, never state of the model.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactFrame {
+    /// Time at which the pairs in contact are decided, s; None: the evaluation time.
+    pub decision_time_s: Option<f64>,
+    /// The contact mode held fixed; None: decided from the state at each evaluation,
+    /// as the physics does.
+    pub mode: Option<ContactMode>,
+}
+
+impl ContactFrame {
+    /// Everything decided at the evaluation itself (time and state).
+    pub const NATURAL: Self = Self {
+        decision_time_s: None,
+        mode: None,
+    };
+
+    /// The pairs in contact decided at `decide_s` (e.g. just after a mesh event), the
+    /// mode from the state.
+    pub fn decided_at(decide_s: f64) -> Self {
+        Self {
+            decision_time_s: Some(decide_s),
+            mode: None,
+        }
+    }
+
+    /// The pairs decided at `decide_s` and the contact mode held at `mode` (a step of
+    /// the integrator).
+    pub fn frozen(decide_s: f64, mode: ContactMode) -> Self {
+        Self {
+            decision_time_s: Some(decide_s),
+            mode: Some(mode),
+        }
+    }
+}
+
 /// Number of switching functions: one per pair (its compression) and the mesh force.
 pub const SWITCHES: usize = MAX_PAIRS + 1;
 
@@ -80,36 +120,25 @@ impl ModeSwitch {
 }
 
 impl GearSystem<'_> {
-    /// Hold the contact mode fixed for the following evaluations (`None`: decide it
-    /// from the state at each evaluation, as the physics does).
-    pub fn set_contact_mode(&self, mode: Option<ContactMode>) {
-        self.contact_mode.set(mode);
-    }
-
-    fn springs_in(&self, mode: Option<ContactMode>, t_s: f64, y: &State) -> MeshSprings {
-        let saved = self.contact_mode.replace(mode);
-        let sp = self.springs(t_s, &y.as_slice()[..NDOF], &y.as_slice()[NDOF..]);
-        self.contact_mode.set(saved);
-        sp
+    fn springs_of(&self, frame: ContactFrame, t_s: f64, y: &State) -> MeshSprings {
+        self.springs(frame, t_s, &y.as_slice()[..NDOF], &y.as_slice()[NDOF..])
     }
 
     /// The contact mode the state is in at time t.
     pub fn natural_mode(&self, t_s: f64, y: &State) -> ContactMode {
-        ContactMode::of(&self.springs_in(None, t_s, y))
+        ContactMode::of(&self.springs_of(ContactFrame::NATURAL, t_s, y))
     }
 
     /// As [`GearSystem::natural_mode`] with the pairs in contact decided at `decide_s`
     /// (e.g. just after a mesh event).
     pub fn natural_mode_decided(&self, t_s: f64, decide_s: f64, y: &State) -> ContactMode {
-        let saved = self.contact_decision_time_s.replace(Some(decide_s));
-        let m = self.natural_mode(t_s, y);
-        self.contact_decision_time_s.set(saved);
-        m
+        ContactMode::of(&self.springs_of(ContactFrame::decided_at(decide_s), t_s, y))
     }
 
-    /// The switching functions of `mode` at (t, y).
-    pub fn mode_switch(&self, mode: ContactMode, t_s: f64, y: &State) -> ModeSwitch {
-        let sp = self.springs_in(Some(mode), t_s, y);
+    /// The switching functions of `mode` at (t, y), the pairs in contact decided at
+    /// `decide_s`.
+    pub fn mode_switch(&self, mode: ContactMode, t_s: f64, decide_s: f64, y: &State) -> ModeSwitch {
+        let sp = self.springs_of(ContactFrame::frozen(decide_s, mode), t_s, y);
         let mut s = ModeSwitch::default();
         for i in 0..sp.n_pairs {
             let c = sp.compression_m[i];
@@ -144,7 +173,7 @@ mod tests {
         // Loaded at rest: every pair in contact touches and the mesh pushes.
         let mode = sys.natural_mode(t, &y);
         assert!(mode.touches(0) && mode.pushing);
-        assert!(!sys.mode_switch(mode, t, &y).any_crossed());
+        assert!(!sys.mode_switch(mode, t, t, &y).any_crossed());
         // Pull the gear away along the line of action (rigidly, so only the mesh
         // deflection changes) until the single pair opens: its switch is crossed,
         // and the natural mode is "no contact".
@@ -152,10 +181,10 @@ mod tests {
             .mesh_gradient()
             .dot(&y.fixed_rows::<NDOF>(0).into_owned());
         y[super::super::dof::XG] += 2.0 * delta / sys.mesh_gradient()[super::super::dof::XP];
-        let open = sys.mode_switch(mode, t, &y);
+        let open = sys.mode_switch(mode, t, t, &y);
         assert!(open.crossed(0) && open.margin(0) < 0.0);
         let natural = sys.natural_mode(t, &y);
         assert!(!natural.in_contact() && !natural.pushing);
-        assert!(!sys.mode_switch(natural, t, &y).any_crossed());
+        assert!(!sys.mode_switch(natural, t, t, &y).any_crossed());
     }
 }

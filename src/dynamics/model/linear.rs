@@ -1,7 +1,7 @@
 //! The model's linear parts: the Jacobian of the right-hand side (for the implicit
 //! integrator) and the static equilibrium (the cold start of a steady-state search).
 
-use super::{dof, GearSystem, State, NDOF, NSTATE};
+use super::{dof, ContactFrame, GearSystem, State, NDOF, NSTATE};
 use crate::config::case::SpeedBoundary;
 use nalgebra::{SMatrix, SVector};
 
@@ -9,11 +9,16 @@ impl GearSystem<'_> {
     /// Jacobian of the right-hand side: exact for the linear parts and the mesh spring
     /// and damper of the pairs in contact; the friction's dependence on the state is
     /// left out (a modified-Newton approximation: friction is < 10 % of the mesh force
-    /// and not stiff).
-    pub fn jacobian(&self, t_s: f64, y: &State) -> SMatrix<f64, NSTATE, NSTATE> {
+    /// and not stiff). The contact is decided as `frame` says.
+    pub fn jacobian(
+        &self,
+        frame: ContactFrame,
+        t_s: f64,
+        y: &State,
+    ) -> SMatrix<f64, NSTATE, NSTATE> {
         let q = y.fixed_rows::<NDOF>(0).into_owned();
         let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
-        let sp = self.springs(t_s, q.as_slice(), v.as_slice());
+        let sp = self.springs(frame, t_s, q.as_slice(), v.as_slice());
         let (k_mesh, c_mesh) = if sp.pushing {
             (sp.stiffness_touching_n_per_m, self.mesh_damping_n_s_per_m)
         } else {
@@ -27,7 +32,7 @@ impl GearSystem<'_> {
     /// linear part, 1/s.
     pub fn mean_state_matrix(&self) -> SMatrix<f64, NSTATE, NSTATE> {
         self.state_matrix(
-            self.mesh.mean_stiffness_n_per_m(),
+            self.parts.mesh.mean_stiffness_n_per_m(),
             self.mesh_damping_n_s_per_m,
         )
     }
@@ -54,14 +59,14 @@ impl GearSystem<'_> {
     /// held at the motor for this solve only.
     pub fn static_equilibrium(&self) -> State {
         use dof::*;
-        let k_mean = self.mesh.mean_stiffness_n_per_m();
+        let k_mean = self.parts.mesh.mean_stiffness_n_per_m();
         let mut k = self.k_lin + self.grad * self.grad.transpose() * k_mean;
         let mut f = self.q_ext;
-        let fixed = match self.params.speed_boundary {
+        let fixed = match self.parts.params.speed_boundary {
             SpeedBoundary::BrakeSpeedImposed => PHI_B,
             _ => PHI_M,
         };
-        if self.params.speed_boundary == SpeedBoundary::MotorSlip {
+        if self.parts.params.speed_boundary == SpeedBoundary::MotorSlip {
             f[PHI_M] = 0.0;
         }
         for l in 0..NDOF {
