@@ -1,7 +1,7 @@
 //! Command-line arguments (clap derive).
 
 use crate::config::{load_case, Case};
-use crate::study::budget::{estimate, Budget, Job};
+use crate::study::budget::{estimate, estimate_sweep, Budget, Job};
 use crate::study::sweep::{parse_vary, Shard, SweepPlan, SweepRun};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -82,8 +82,9 @@ impl Cli {
     }
 }
 
-/// Every case of a sweep against the budget (the cases that load; the sweep reports the
-/// others itself).
+/// A sweep against the budget, in milliseconds whatever its size
+/// (`study::budget::estimate_sweep`): its costliest case alone, and its shard's cases
+/// together. Cases that do not load are left to the sweep's own messages.
 fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
     let Ok(text) = a.case.text() else {
         return Ok(());
@@ -103,26 +104,34 @@ fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
         },
         None => Shard::ALL,
     };
-    let over: Vec<String> = shard
-        .ids(plan.len())
-        .into_iter()
-        .filter_map(|id| {
-            let mut sets = a.case.set.clone();
-            sets.extend(plan.overrides_of(id));
-            let case = load_case(&text, &sets).ok()?;
-            let e = estimate(&case, job).check(budget).err()?;
-            Some(format!(
-                "case {id} ({}): {e}",
-                plan.overrides_of(id).join(", ")
-            ))
-        })
-        .take(10)
+    let axes: Vec<(String, Vec<String>)> = plan
+        .axes
+        .iter()
+        .map(|x| (x.key.clone(), x.values.clone()))
         .collect();
-    if over.is_empty() {
-        Ok(())
-    } else {
-        Err(CliError::Input(over))
-    }
+    let load = |extra: &[String]| {
+        let mut sets = a.case.set.clone();
+        sets.extend_from_slice(extra);
+        load_case(&text, &sets).ok()
+    };
+    let cases = plan
+        .len()
+        .saturating_sub(shard.index - 1)
+        .div_ceil(shard.count);
+    let Some(e) = estimate_sweep(&load, &axes, job, cases, rayon::current_num_threads()) else {
+        return Ok(());
+    };
+    e.worst_case.check(budget).map_err(|m| {
+        CliError::input(format!(
+            "the sweep's costliest case ({}): {m}",
+            e.worst_overrides.join(", ")
+        ))
+    })?;
+    e.total.check(budget).map_err(|m| {
+        CliError::input(format!(
+            "the sweep of {cases} case(s) as one run: {m}; or split it with --shard I/N (each shard is one run)"
+        ))
+    })
 }
 
 #[derive(Debug, Subcommand)]

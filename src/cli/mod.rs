@@ -47,14 +47,25 @@ pub fn main() -> ExitCode {
     output::set_quiet(cli.quiet);
     output::set_replace(cli.replace);
     output::set_budget(cli.budget());
-    match crate::io::runtime::init_threads() {
-        Ok(Some(note)) => eprintln!("note: {note}"),
-        Ok(None) => {}
+    let pool = match crate::io::runtime::thread_pool() {
+        Ok((pool, note)) => {
+            if let Some(n) = note {
+                eprintln!("note: {n}");
+            }
+            pool
+        }
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::from(crate::io::console::finish().unwrap_or(1));
         }
-    }
+    };
+    // Every parallel loop of the command runs on this pool.
+    let code = pool.install(|| run(&cli));
+    ExitCode::from(crate::io::console::finish().unwrap_or(code))
+}
+
+/// Run the command `cli` names; its exit code.
+fn run(cli: &Cli) -> u8 {
     let budget = match cli.budget() {
         Some(b) => cli.check_budget(&b),
         None => Ok(()),
@@ -71,12 +82,11 @@ pub fn main() -> ExitCode {
         Command::Predict(a) => predict_cmd::run(a),
         Command::PredictMerge(a) => predict_cmd::merge(a),
     });
-    let code = match result {
+    match result {
         Ok(()) => 0,
         Err(e) => {
             eprintln!("error: {e}");
             e.exit_code()
         }
-    };
-    ExitCode::from(crate::io::console::finish().unwrap_or(code))
+    }
 }

@@ -105,6 +105,35 @@ fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), CliError> {
     }
 }
 
+/// Recompute a random sample of the finished cases (`study::sweep::verify`): a record
+/// edited with a recomputed checksum is refused, naming it.
+fn verify_finished(
+    dir: &Path,
+    done: &[&Planned],
+    run: SweepRun,
+    keys: &[String],
+) -> Result<(), CliError> {
+    use crate::study::sweep::verify::{cases_to_recompute, verify_record};
+    let problems: Vec<String> = cases_to_recompute(done.len())
+        .into_par_iter()
+        .filter_map(|i| {
+            let p = done[i];
+            let rec = finished(dir, p, run, keys)?;
+            verify_record(&p.case, run, &rec).err().map(|e| {
+                format!(
+                    "{}: {e}; delete it to recompute that case",
+                    case_path(dir, p.id).display()
+                )
+            })
+        })
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Input(problems))
+    }
+}
+
 /// Run one case and write its record.
 fn run_one(
     cases: &StateFolder,
@@ -172,6 +201,7 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     let (done, pending): (Vec<&Planned>, Vec<&Planned>) = planned
         .iter()
         .partition(|p| finished(&a.out, p, run_kind, &keys).is_some());
+    verify_finished(&a.out, &done, run_kind, &keys)?;
     let model_problems: Vec<String> = pending
         .par_iter()
         .filter_map(|p| {
@@ -293,14 +323,10 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
         "shard": {"index": shard.index, "count": shard.count, "scheme": "round-robin: case_id mod count = index - 1"},
         "cases_in_shard": planned.len(),
         "continuation": a.continuation.map(|c| format!("{c:?}").to_lowercase()),
-        "skipped_finished": skipped,
-        "computed": computed,
         "failed": failed,
         "rows": table.rows.len(),
         "modes": speed.as_ref().map(|s| modes_json(&s.modal)),
         "resonance_crossings": speed.as_ref().map(|s| s.crossings.clone()),
-        "wall_time_s": wall_s,
-        "threads": rayon::current_num_threads(),
         "base": RunMetadata::new("sweep", &base),
     });
     out.stage_json(&format!("{stem}.json"), &meta)?;

@@ -1,10 +1,10 @@
 //! Process limits met at start: the thread pool and the file-size limit.
 //!
-//! - **Threads.** Rayon's global pool is built here, once, with the number of threads
-//!   asked for (`RAYON_NUM_THREADS`, else one per core), at most [`MAX_THREADS_PER_CORE`]
-//!   per core; when the system refuses threads (a process-count limit, `ulimit -u`), it is
-//!   built with half as many, down to one. Rayon's own lazy build would panic instead
-//!   ("the global thread pool has not been initialized").
+//! - **Threads.** The thread pool is built here with the number of threads asked for
+//!   (`RAYON_NUM_THREADS`, else one per core), at most [`MAX_THREADS_PER_CORE`] per core;
+//!   when the system refuses threads (a process-count limit, `ulimit -u`), it is built
+//!   with half as many, down to one. Rayon's own lazy build of its global pool would
+//!   panic instead ("the global thread pool has not been initialized").
 //! - **File size.** Exceeding `ulimit -f` sends SIGXFSZ, whose default action kills the
 //!   process without a word. The signal is caught (and otherwise ignored), so the write
 //!   fails with EFBIG instead, and the error names the file.
@@ -13,11 +13,13 @@
 /// cores only add memory (a model per case in flight) and contention.
 pub const MAX_THREADS_PER_CORE: usize = 8;
 
-/// Build rayon's global pool (see the module docs). Returns a note for the user when the
-/// pool has fewer threads than asked, or when `RAYON_NUM_THREADS` was not understood.
-/// Harmless when the pool exists already (a second call, or another library). An error
-/// when not even one thread can be started.
-pub fn init_threads() -> Result<Option<String>, String> {
+/// Build the thread pool a command runs in (see the module docs): a pool of its own, not
+/// rayon's global one, because a failed global build cannot be retried (rayon then
+/// panics at the first parallel loop); work run through `ThreadPool::install` or
+/// `ThreadPool::spawn` uses this pool for every parallel loop inside. Returns the pool and
+/// a note for the user when it has fewer threads than asked, or when `RAYON_NUM_THREADS`
+/// was not understood; an error when not even one thread can be started.
+pub fn thread_pool() -> Result<(rayon::ThreadPool, Option<String>), String> {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let cap = cores.saturating_mul(MAX_THREADS_PER_CORE);
     let mut notes = Vec::new();
@@ -41,30 +43,30 @@ pub fn init_threads() -> Result<Option<String>, String> {
             "RAYON_NUM_THREADS={asked} is more than {MAX_THREADS_PER_CORE} threads for each of the {cores} cores: using {n}"
         ));
     }
-    let refused = |asked: usize, n: usize| {
-        format!("the system refused {asked} threads (a limit on processes?): running on {n}")
-    };
+    let tried = n;
     loop {
-        match rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build_global()
-        {
-            Ok(()) => break,
-            // No source: the pool exists already (built before, or by another library).
-            Err(e) if std::error::Error::source(&e).is_none() => break,
+        match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
+            Ok(pool) => {
+                if n < tried {
+                    notes.push(format!(
+                        "the system refused {tried} threads (a limit on processes?): running on {n}"
+                    ));
+                }
+                return Ok((pool, (!notes.is_empty()).then(|| notes.join("; "))));
+            }
             Err(e) if n == 1 => {
                 return Err(format!(
                     "no thread could be started ({e}): raise the limit on processes (ulimit -u)"
                 ))
             }
             Err(_) => {
+                // The threads of the failed attempt are ending; they count against the
+                // limit until they have.
+                std::thread::sleep(std::time::Duration::from_millis(50));
                 n /= 2;
-                notes.retain(|l| !l.starts_with("the system refused"));
-                notes.push(refused(asked, n));
             }
         }
     }
-    Ok((!notes.is_empty()).then(|| notes.join("; ")))
 }
 
 /// Catch SIGXFSZ so that exceeding the file-size limit is an EFBIG error naming the file

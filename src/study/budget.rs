@@ -423,6 +423,112 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     }
 }
 
+/// Values of an axis at which a sweep's cost is sampled: the first and last, the
+/// numerically smallest and largest, and up to [`SAMPLED_VALUES`] spread between, so that
+/// estimating a sweep costs milliseconds however many values an axis has.
+pub const SAMPLED_VALUES: usize = 8;
+
+fn sampled_indices(values: &[String]) -> Vec<usize> {
+    let n = values.len();
+    let mut idx: std::collections::BTreeSet<usize> = (0..SAMPLED_VALUES.min(n))
+        .map(|i| i * (n - 1) / (SAMPLED_VALUES - 1).max(1))
+        .collect();
+    idx.insert(n - 1);
+    let num = |i: &usize| values[*i].trim().parse::<f64>().ok();
+    let numbered: Vec<(usize, f64)> = (0..n).filter_map(|i| num(&i).map(|x| (i, x))).collect();
+    if let Some(lo) = numbered.iter().min_by(|a, b| a.1.total_cmp(&b.1)) {
+        idx.insert(lo.0);
+    }
+    if let Some(hi) = numbered.iter().max_by(|a, b| a.1.total_cmp(&b.1)) {
+        idx.insert(hi.0);
+    }
+    idx.into_iter().collect()
+}
+
+/// Memory a sweep holds per case besides the cases in flight: the resolved case, its
+/// record and its row, bytes.
+pub const BYTES_PER_SWEEP_CASE: f64 = 16e3;
+
+/// What a sweep's estimate found.
+#[derive(Debug, Clone)]
+pub struct SweepEstimate {
+    /// The sweep as one job: every case of the shard, one after the other (time), and the
+    /// cases in flight on `threads` threads plus the records (memory).
+    pub total: Estimate,
+    /// One case with every axis at its costliest sampled value, and its overrides.
+    pub worst_case: Estimate,
+    pub worst_overrides: Vec<String>,
+}
+
+/// Estimate a sweep of `cases` cases (those of its shard) over `axes` (key, values) on
+/// `threads` threads without resolving every case: `load(overrides)` gives the case of a
+/// set of overrides (None when it does not load: the sweep reports those itself). The
+/// cost per case is sampled at a few values of each axis (the others at the base case);
+/// the total is the base cost times, per axis, the mean ratio of its sampled values to the
+/// base (exact when the cost does not depend on a varied key, and when it is a product of
+/// per-axis factors); the worst case puts every axis at its costliest sampled value.
+pub fn estimate_sweep(
+    load: &dyn Fn(&[String]) -> Option<Case>,
+    axes: &[(String, Vec<String>)],
+    job: Job,
+    cases: usize,
+    threads: usize,
+) -> Option<SweepEstimate> {
+    let base = estimate(&load(&[])?, job);
+    let (base_s, base_b) = (base.seconds().max(1e-9), base.memory_bytes());
+    let mut ratio = 1.0;
+    let mut worst = Vec::new();
+    for (key, values) in axes {
+        let mut sum = 0.0;
+        let mut n = 0.0;
+        let mut costliest: Option<(f64, String)> = None;
+        for i in sampled_indices(values) {
+            let set = format!("{key}={}", values[i]);
+            let Some(c) = load(std::slice::from_ref(&set)) else {
+                continue;
+            };
+            let e = estimate(&c, job);
+            let cost = e.seconds() / base_s + e.memory_bytes() / base_b;
+            sum += e.seconds() / base_s;
+            n += 1.0;
+            if costliest.as_ref().is_none_or(|(c0, _)| cost > *c0) {
+                costliest = Some((cost, set));
+            }
+        }
+        if n > 0.0 {
+            ratio *= sum / n;
+        }
+        worst.extend(costliest.map(|(_, s)| s));
+    }
+    let worst_case = estimate(&load(&worst).or_else(|| load(&[]))?, job);
+    let cases_f = cases as f64;
+    let in_flight = (threads.max(1) as f64).min(cases_f);
+    let total = Estimate {
+        terms: vec![
+            Term {
+                what: "the sweep's cases, one after the other",
+                seconds: cases_f * base_s * ratio,
+                bytes: 0.0,
+                keys: &["the number of cases of the shard", "the varied keys"],
+            },
+            Term {
+                what: "the cases in flight, and every case's record",
+                seconds: 0.0,
+                bytes: in_flight * (worst_case.memory_bytes() - BASE_BYTES)
+                    + cases_f * BYTES_PER_SWEEP_CASE,
+                keys: &["the number of cases of the shard", "the varied keys"],
+            },
+        ],
+        steps_to_give_up: worst_case.steps_to_give_up,
+        ..worst_case.clone()
+    };
+    Some(SweepEstimate {
+        total,
+        worst_case,
+        worst_overrides: worst,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

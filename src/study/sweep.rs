@@ -14,6 +14,7 @@ pub mod in_memory;
 pub mod plan;
 pub mod resonance;
 pub mod table;
+pub mod verify;
 
 pub use case_run::{run_case, CaseError, CaseRecord, ContinuationLink, SweepRun};
 pub use continuation::{Branch, Continuation, ContinuationPlan};

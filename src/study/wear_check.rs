@@ -125,24 +125,31 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
 /// many updates whatever the run's length.
 pub const MAX_RECOMPUTED: usize = 16;
 
-/// Which records to recompute: all of a run of at most [`MAX_RECOMPUTED`] records, else
-/// the first, the last and a sample of the others drawn from the operating system's
-/// randomness (a forger cannot know which), in increasing order.
-fn records_to_recompute(n: usize) -> Vec<usize> {
-    if n <= MAX_RECOMPUTED {
+/// `k` distinct indices of `0..n` drawn from the operating system's randomness (a forger
+/// cannot know which), always including those in `always`; all of them when `n <= k`.
+/// In increasing order.
+pub fn random_sample(n: usize, k: usize, always: &[usize]) -> Vec<usize> {
+    if n <= k {
         return (0..n).collect();
     }
     use std::hash::{BuildHasher, Hasher};
     let seed = std::collections::hash_map::RandomState::new();
-    let mut picked = std::collections::BTreeSet::from([0, n - 1]);
-    let mut k = 0u64;
-    while picked.len() < MAX_RECOMPUTED {
+    let mut picked: std::collections::BTreeSet<usize> =
+        always.iter().copied().filter(|i| *i < n).collect();
+    let mut j = 0u64;
+    while picked.len() < k {
         let mut h = seed.build_hasher();
-        h.write_u64(k);
-        k += 1;
-        picked.insert(1 + (h.finish() % (n as u64 - 2)) as usize);
+        h.write_u64(j);
+        j += 1;
+        picked.insert((h.finish() % n as u64) as usize);
     }
     picked.into_iter().collect()
+}
+
+/// Which records to recompute: all of a run of at most [`MAX_RECOMPUTED`] records, else
+/// the first, the last and a random sample of the others.
+fn records_to_recompute(n: usize) -> Vec<usize> {
+    random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)])
 }
 
 /// Check `run` as [`check_wear_run`] does, then recompute records from the record before

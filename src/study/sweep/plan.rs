@@ -121,10 +121,12 @@ fn canonical(v: &str) -> String {
 }
 
 /// Error when two values of an axis are the same value (which would run one case twice).
+/// Linear in the number of values (a hash of the canonical forms).
 fn no_repeats(key: &str, values: &[String]) -> Result<(), String> {
-    let canon: Vec<String> = values.iter().map(|v| canonical(v)).collect();
-    for (i, c) in canon.iter().enumerate() {
-        if let Some(j) = canon[..i].iter().position(|d| d == c) {
+    let mut seen: std::collections::HashMap<String, usize> =
+        std::collections::HashMap::with_capacity(values.len());
+    for (i, v) in values.iter().enumerate() {
+        if let Some(j) = seen.insert(canonical(v), i) {
             return Err(format!(
                 "--vary {key}: value `{}` is the same as `{}`: each value may be listed once (the case would run twice)",
                 values[i], values[j]
