@@ -32,6 +32,11 @@ on the calling thread as ``progress(what, done, total)``.
 
 Invalid input raises ``CaseError`` (a ``ValueError``) listing every problem with its key,
 value and valid range; a solver failure raises ``StudyError`` (a ``RuntimeError``).
+
+Every study is checked against the run budget before it starts, as on the command line
+(2 GiB and 10 minutes on one core of the reference machine; docs/RELIABILITY.md): one
+over it raises ``CaseError`` naming the keys that drive its cost. ``budget_scale=X``
+multiplies the budget knowingly, ``no_budget=True`` drops it.
 """
 
 from __future__ import annotations
@@ -106,7 +111,7 @@ def _warn(summary: Mapping[str, Any]) -> None:
         _warnings.warn(w, GearwearWarning, stacklevel=3)
 
 
-def stiffness(case: Case) -> StiffnessResult:
+def stiffness(case: Case, *, budget_scale: Optional[float] = None, no_budget: bool = False) -> StiffnessResult:
     """Mesh stiffness over one mesh period, as ``gearwear stiffness``.
 
     Potential energy method (bending, shear, axial compression, Hertz, Sainsot fillet
@@ -114,12 +119,18 @@ def stiffness(case: Case) -> StiffnessResult:
     the ISO 6336-1 Method B cross-check and the pair's geometry. Table
     ``mesh_stiffness``: 720 samples over one mesh period (360/z1 deg of pinion rotation).
     """
-    r = StiffnessResult(*_native.stiffness(_check_case(case)))
+    r = StiffnessResult(*_native.stiffness(_check_case(case), budget_scale, no_budget))
     _warn(r.summary)
     return r
 
 
-def dynamics(case: Case, transmission_error: Optional[Any] = None) -> DynamicsResult:
+def dynamics(
+    case: Case,
+    transmission_error: Optional[Any] = None,
+    *,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
+) -> DynamicsResult:
     """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth), as
     ``gearwear dynamics [--transmission-error FILE]``.
 
@@ -143,12 +154,19 @@ def dynamics(case: Case, transmission_error: Optional[Any] = None) -> DynamicsRe
                 "transmission_error: expected shape (n, 2) (pinion angle deg, error um), "
                 f"got {te.shape}"
             )
-    r = DynamicsResult(*_native.dynamics(_check_case(case), te))
+    r = DynamicsResult(*_native.dynamics(_check_case(case), te, budget_scale, no_budget))
     _warn(r.summary)
     return r
 
 
-def wear(case: Case, mode: str = "both", progress: Optional[Progress] = None) -> WearResult:
+def wear(
+    case: Case,
+    mode: str = "both",
+    progress: Optional[Progress] = None,
+    *,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
+) -> WearResult:
     """The coupled dynamics-wear study and/or its quasi-static twin, as ``gearwear wear
     --mode MODE``, to ``wear.total_cycles`` load cycles (no checkpoints).
 
@@ -156,7 +174,7 @@ def wear(case: Case, mode: str = "both", progress: Optional[Progress] = None) ->
     ``"quasi_static"`` (``"quasi-static"`` also accepted). ``progress(mode, cycles,
     total_cycles)`` after every update of each run, e.g. to move a tqdm bar.
     """
-    r = WearResult(*_native.wear(_check_case(case), mode, progress))
+    r = WearResult(*_native.wear(_check_case(case), mode, progress, budget_scale, no_budget))
     _warn(r.summary)
     return r
 
@@ -165,6 +183,9 @@ def run(
     case: Case,
     out: Optional[Union[str, "os.PathLike[str]"]] = None,
     progress: Optional[Progress] = None,
+    *,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> RunResult:
     """The paper's whole section 4, as ``gearwear run``: mesh stiffness, the dynamic and
     quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 um of wear, the
@@ -175,7 +196,9 @@ def run(
     nothing (the figures and report are still in the result).
     """
     out_path = None if out is None else Path(os.fspath(out))
-    r = RunResult(*_native.run(_check_case(case), out_path, progress), out=out_path)
+    r = RunResult(
+        *_native.run(_check_case(case), out_path, progress, budget_scale, no_budget), out=out_path
+    )
     _warn(r.summary)
     return r
 
@@ -209,6 +232,9 @@ def sweep(
     vary: Mapping[str, Union[str, Sequence[Any], np.ndarray]],
     run: str = "dynamics",
     progress: Optional[Progress] = None,
+    *,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> SweepResult:
     """A parameter study, as ``gearwear sweep --vary KEY=... [--run RUN]`` (without
     files, resumption or shards): the cross product of ``vary`` on ``case``, run in
@@ -223,6 +249,6 @@ def sweep(
     Rows of cases whose solver failed are missing; ``summary["failed"]`` says why.
     """
     axes = [(str(k), _axis_text(str(k), v)) for k, v in vary.items()]
-    r = SweepResult(*_native.sweep(_check_case(case), axes, run, progress))
+    r = SweepResult(*_native.sweep(_check_case(case), axes, run, progress, budget_scale, no_budget))
     _warn(r.summary)
     return r

@@ -80,22 +80,35 @@ class StudyError(RuntimeError):
 def keys() -> List[Dict[str, Any]]:
     """Every key of a case: ``{key, unit, valid, doc, default}`` each."""
 
-def stiffness(case: Case) -> Tuple[Dict[str, Any], _Tables, str]:
+def stiffness(
+    case: Case, budget_scale: Optional[float] = None, no_budget: bool = False
+) -> Tuple[Dict[str, Any], _Tables, str]:
     """(summary, tables, headline) of ``gearwear stiffness``."""
 
 def dynamics(
-    case: Case, transmission_error: Optional[npt.NDArray[np.float64]] = None
+    case: Case,
+    transmission_error: Optional[npt.NDArray[np.float64]] = None,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> Tuple[Dict[str, Any], _Tables, str]:
     """(summary, tables, headline) of ``gearwear dynamics``; ``transmission_error`` of
     shape (n, 2): pinion angle deg, error um."""
 
 def wear(
-    case: Case, mode: str = "both", progress: Optional[_Progress] = None
+    case: Case,
+    mode: str = "both",
+    progress: Optional[_Progress] = None,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> Tuple[Dict[str, Any], _Tables, str]:
     """(summary, tables, headline) of ``gearwear wear --mode MODE``."""
 
 def run(
-    case: Case, out: Optional[PathLike[str]] = None, progress: Optional[_Progress] = None
+    case: Case,
+    out: Optional[PathLike[str]] = None,
+    progress: Optional[_Progress] = None,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> Tuple[Dict[str, Any], _Tables, str, Dict[str, bytes]]:
     """(summary, tables, headline, documents) of ``gearwear run``."""
 
@@ -104,6 +117,8 @@ def sweep(
     vary: Sequence[Tuple[str, str]],
     run: str = "dynamics",
     progress: Optional[_Progress] = None,
+    budget_scale: Optional[float] = None,
+    no_budget: bool = False,
 ) -> Tuple[
     Dict[str, Any],
     List[str],

@@ -7,9 +7,11 @@
 
 use pyo3::prelude::*;
 
+mod budget;
 mod case;
 mod convert;
 mod errors;
+mod pool;
 mod studies;
 mod worker;
 

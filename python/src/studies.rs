@@ -5,6 +5,7 @@
 //! Each returns `(summary, tables, headline)` (plus the rendered documents for `run`);
 //! the Python package wraps them in result objects.
 
+use crate::budget::{budget_of, check, check_sweep};
 use crate::case::Case;
 use crate::convert::{json_to_py, matrix_to_py, tables_to_py};
 use crate::errors::Failure;
@@ -19,6 +20,7 @@ use gearwear::report::paper::run_artifacts;
 use gearwear::report::stiffness::stiffness_artifacts;
 use gearwear::report::wear::wear_artifacts;
 use gearwear::report::{publish_artifacts, Artifacts};
+use gearwear::study::budget::Job;
 use gearwear::study::paper::run_paper_study;
 use gearwear::study::sweep::{
     parse_vary, resolve_cases, run_cases, SweepOutcome, SweepPlan, SweepRun,
@@ -61,7 +63,15 @@ fn to_py<'py>(py: Python<'py>, a: Artifacts) -> PyResult<Bound<'py, PyTuple>> {
 /// Mesh stiffness over a mesh period, ISO 6336 check, load sharing, quasi-static TE
 /// (as `gearwear stiffness`).
 #[pyfunction]
-pub fn stiffness<'py>(py: Python<'py>, case: &Case) -> PyResult<Bound<'py, PyTuple>> {
+#[pyo3(signature = (case, budget_scale=None, no_budget=false))]
+pub fn stiffness<'py>(
+    py: Python<'py>,
+    case: &Case,
+    budget_scale: Option<f64>,
+    no_budget: bool,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let b = budget_of(budget_scale, no_budget)?;
+    check(py, &case.inner, Job::Stiffness, b)?;
     let c = case.inner.clone();
     let a = run_study(py, None, move |_| {
         stamped(stiffness_artifacts(&model_of(&c)?), "stiffness", &c)
@@ -104,12 +114,16 @@ fn samples_of(te: Option<PyReadonlyArray2<'_, f64>>) -> PyResult<Option<Vec<(f64
 }
 
 #[pyfunction]
-#[pyo3(signature = (case, transmission_error=None))]
+#[pyo3(signature = (case, transmission_error=None, budget_scale=None, no_budget=false))]
 pub fn dynamics<'py>(
     py: Python<'py>,
     case: &Case,
     transmission_error: Option<PyReadonlyArray2<'py, f64>>,
+    budget_scale: Option<f64>,
+    no_budget: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
+    let b = budget_of(budget_scale, no_budget)?;
+    check(py, &case.inner, Job::Dynamics, b)?;
     let c = case.inner.clone();
     let te = samples_of(transmission_error)?;
     let a = run_study(py, None, move |_| dynamics_of(&c, te.as_deref()))?;
@@ -134,15 +148,22 @@ fn cycles_of(run: &WearRun) -> f64 {
 }
 
 #[pyfunction]
-#[pyo3(signature = (case, mode="both", progress=None))]
+#[pyo3(signature = (case, mode="both", progress=None, budget_scale=None, no_budget=false))]
 pub fn wear<'py>(
     py: Python<'py>,
     case: &Case,
     mode: &str,
     progress: Option<Bound<'py, PyAny>>,
+    budget_scale: Option<f64>,
+    no_budget: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let c = case.inner.clone();
     let modes = modes_of(mode)?;
+    let job = Job::Wear {
+        dynamic: modes.contains(&WearMode::Dynamic),
+        quasi_static: modes.contains(&WearMode::QuasiStatic),
+    };
+    check(py, &c, job, budget_of(budget_scale, no_budget)?)?;
     let a = run_study(py, progress, move |ctx| {
         let model = model_of(&c)?;
         let total = c.wear.total_cycles;
@@ -159,13 +180,21 @@ pub fn wear<'py>(
 /// The paper's whole section 4 (as `gearwear run`); with `out`, the same output set with
 /// checkpoints, figures and report.
 #[pyfunction]
-#[pyo3(signature = (case, out=None, progress=None))]
+#[pyo3(signature = (case, out=None, progress=None, budget_scale=None, no_budget=false))]
 pub fn run<'py>(
     py: Python<'py>,
     case: &Case,
     out: Option<PathBuf>,
     progress: Option<Bound<'py, PyAny>>,
+    budget_scale: Option<f64>,
+    no_budget: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
+    check(
+        py,
+        &case.inner,
+        Job::Run,
+        budget_of(budget_scale, no_budget)?,
+    )?;
     let c = case.inner.clone();
     let a = run_study(py, progress, move |ctx| {
         let model = model_of(&c)?;
@@ -194,7 +223,12 @@ pub fn run<'py>(
         let a = stamped(run_artifacts(&model, &study, &meta), "run", &c)?;
         if let Some((set, logs)) = writer.take() {
             drop(logs);
-            publish_artifacts(set, &a).map_err(|e| Failure::Failed(e.into()))?;
+            publish_artifacts(set, &a).map_err(|e| match e {
+                gearwear::report::artifacts::WriteError::Output(o) => {
+                    Failure::Output(o.to_string())
+                }
+                e => Failure::Failed(e.into()),
+            })?;
         }
         Ok(a)
     })?;
@@ -228,14 +262,17 @@ fn sweep_run_of(run: &str) -> PyResult<SweepRun> {
 /// or `v1,v2,...`) on `case`, run in parallel (as `gearwear sweep`, without files).
 /// Returns `(summary, keys, columns, case_ids, values, results)`.
 #[pyfunction]
-#[pyo3(signature = (case, vary, run="dynamics", progress=None))]
+#[pyo3(signature = (case, vary, run="dynamics", progress=None, budget_scale=None, no_budget=false))]
 pub fn sweep<'py>(
     py: Python<'py>,
     case: &Case,
     vary: Vec<(String, String)>,
     run: &str,
     progress: Option<Bound<'py, PyAny>>,
+    budget_scale: Option<f64>,
+    no_budget: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
+    let budget = budget_of(budget_scale, no_budget)?;
     let kind = sweep_run_of(run)?;
     let mut axes = Vec::new();
     let mut problems = Vec::new();
@@ -249,6 +286,7 @@ pub fn sweep<'py>(
         return Err(crate::errors::case_error(py, &problems));
     }
     let plan = SweepPlan::new(axes).map_err(|e| crate::errors::case_error(py, &[e]))?;
+    check_sweep(py, &case.inner, &plan, kind, budget)?;
     let base = case.inner.clone();
     let plan2 = plan.clone();
     let (outcome, wall_s): (SweepOutcome, f64) = run_study(py, progress, move |ctx| {

@@ -66,7 +66,8 @@ fn recv<T: Send>(
     py.detach(move || (rx.recv_timeout(wait), rx))
 }
 
-/// Tell the study to stop and give it `GRACE` to do so.
+/// Tell the study to stop and give it `GRACE` to do so; if it has not ended by then, its
+/// pool is abandoned to it (`pool::abandon`), so the next call does not wait behind it.
 fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Msg<T>>) {
     stop.store(true, Ordering::Relaxed);
     let deadline = Instant::now() + GRACE;
@@ -75,9 +76,11 @@ fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Ms
         rx = back;
         match got {
             Ok(Msg::Progress(..)) => continue,
-            _ => break,
+            Ok(Msg::Done(_)) | Err(RecvTimeoutError::Disconnected) => return,
+            Err(RecvTimeoutError::Timeout) => break,
         }
     }
+    crate::pool::abandon();
 }
 
 /// Run `job` on its own thread with the GIL released (see the module docs); `progress`
@@ -97,7 +100,8 @@ where
     // On rayon's pool rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
     // 5-10 % of a dynamics call. A panic is caught here (rayon would abort the process)
     // and becomes an error of the call.
-    rayon::spawn(move || {
+    let pool = crate::pool::current().map_err(PyRuntimeError::new_err)?;
+    pool.spawn(move || {
         let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&ctx)))
             .unwrap_or_else(|_| {
                 Err(Failure::Failed(anyhow::anyhow!(

@@ -285,14 +285,20 @@ fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<St
     }
 }
 
-/// A TOML parse error with every line cut to a readable length (the parser quotes the
-/// offending line, which may be megabytes long).
-fn toml_error(e: &toml::de::Error) -> String {
-    e.to_string()
-        .lines()
-        .map(|l| clip(l, 2 * SHOWN_CHARS))
-        .collect::<Vec<_>>()
-        .join("\n")
+/// A TOML parse error by its place (line, column) and the parser's words, never quoting
+/// the text: a file that is not a case file at all (`/etc/passwd`) must not have its
+/// content echoed into a message or a log.
+fn toml_error(e: &toml::de::Error, text: &str) -> String {
+    let place = e
+        .span()
+        .filter(|_| !text.is_empty())
+        .map_or(String::new(), |s| {
+            let before = &text.as_bytes()[..s.start.min(text.len())];
+            let line = before.iter().filter(|b| **b == b'\n').count() + 1;
+            let col = before.iter().rev().take_while(|b| **b != b'\n').count() + 1;
+            format!(" at line {line}, column {col}")
+        });
+    format!("{place}: {}", clip(e.message().trim(), 2 * SHOWN_CHARS))
 }
 
 /// Build a case from TOML text (empty for the default) and `--set` overrides.
@@ -301,7 +307,10 @@ fn toml_error(e: &toml::de::Error) -> String {
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
     let mut problems = Vec::new();
     let mut user: Table = toml::from_str(toml_text).map_err(|e| {
-        ConfigError::one(format!("case file is not valid TOML: {}", toml_error(&e)))
+        ConfigError::one(format!(
+            "case file is not valid TOML{}",
+            toml_error(&e, toml_text)
+        ))
     })?;
     apply_overrides(&mut user, overrides, &mut problems);
     check_keys(&mut user, &mut problems);
@@ -310,7 +319,9 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
     }
     let case: Case = Value::Table(user)
         .try_into()
-        .map_err(|e: toml::de::Error| ConfigError::one(format!("case file: {}", toml_error(&e))))?;
+        .map_err(|e: toml::de::Error| {
+            ConfigError::one(format!("case file{}", toml_error(&e, "")))
+        })?;
     check_relations(&case, &mut problems);
     if problems.is_empty() {
         Ok(case)

@@ -427,6 +427,8 @@ impl OutputDir {
             }
         }
         if !conflicts.is_empty() {
+            conflicts.sort();
+            conflicts.dedup();
             return Err(self.keep_unpublished(conflicts));
         }
         // 2. Mark, move into place, rename the logs.
@@ -563,7 +565,7 @@ impl OutputDir {
             "publish into",
             self.root.path(),
             format!(
-                "{} name(s) hold files that gearwear may not replace: {}; nothing was replaced, and {where_}",
+                "this run's files cannot all be put in place ({} problem(s)): {}; nothing was replaced, and {where_}",
                 conflicts.len(),
                 conflicts.join("; ")
             ),
