@@ -43,11 +43,6 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
     }
 }
 
-const DYNAMIC_WEAR: Job = Job::Wear {
-    dynamic: true,
-    quasi_static: false,
-};
-
 impl Cli {
     /// The budget the flags ask for; None without one.
     pub fn budget(&self) -> Option<Budget> {
@@ -58,11 +53,13 @@ impl Cli {
     /// (`study::budget`). Cases that do not load are left to the command's own messages.
     pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
         let (case, job) = match &self.command {
-            Command::Config(_) | Command::SweepMerge(_) | Command::PredictMerge(_) => return Ok(()),
-            // Each forward run of an ensemble is a dynamic wear study of the case (at
-            // its sampled parameters); the number of runs is the user's explicit choice.
-            Command::Calibrate(a) => (&a.case, DYNAMIC_WEAR),
-            Command::Predict(a) => (&a.case, DYNAMIC_WEAR),
+            // These are estimated once their inputs are read (`prognostics::budget`, and
+            // the merges' inputs' sizes), in the commands.
+            Command::Config(_)
+            | Command::SweepMerge(_)
+            | Command::PredictMerge(_)
+            | Command::Calibrate(_)
+            | Command::Predict(_) => return Ok(()),
             Command::Stiffness(a) => (&a.case, Job::Stiffness),
             Command::Dynamics(a) => (&a.case, Job::Dynamics),
             Command::Wear(a) => (

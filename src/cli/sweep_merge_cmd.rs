@@ -43,8 +43,11 @@ fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, CliError> {
 pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
     let mut tables = Vec::new();
     let mut metas: Vec<(String, serde_json::Value)> = Vec::new();
+    let mut bytes = 0u64;
     for input in &a.inputs {
         for csv in merge_inputs(input)? {
+            bytes += std::fs::metadata(&csv).map_or(0, |m| m.len());
+            super::output::check_budget(&crate::study::budget::estimate_sweep_merge(bytes))?;
             let src = csv.display().to_string();
             let (t, m) = crate::io::sweep_inputs::merge_input(&csv)
                 .map_err(|e| CliError::input(format!("sweep-merge: {e}")))?;

@@ -301,6 +301,31 @@ fn toml_error(e: &toml::de::Error, text: &str) -> String {
     format!("{place}: {}", clip(e.message().trim(), 2 * SHOWN_CHARS))
 }
 
+/// `operating.input_speed_rpm` (checked against its range already): the input speed in
+/// revolutions per minute, the unit engineers think in, as an alternative to
+/// `operating.input_speed_hz`. Replaced by `input_speed_hz` = rpm / 60 here, so a case
+/// given in rpm is the very case (and hash) given in Hz; both at once is an error.
+fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
+    let Some(Value::Table(op)) = user.get_mut("operating") else {
+        return;
+    };
+    let Some(rpm) = op.remove("input_speed_rpm") else {
+        return;
+    };
+    if op.contains_key("input_speed_hz") {
+        problems.push(
+            "`operating.input_speed_rpm` and `operating.input_speed_hz` are both given: give the input speed once, in rpm or in Hz".into(),
+        );
+        return;
+    }
+    if let Some(x) = rpm
+        .as_float()
+        .or_else(|| rpm.as_integer().map(|i| i as f64))
+    {
+        op.insert("input_speed_hz".into(), Value::Float(x / 60.0));
+    }
+}
+
 /// Build a case from TOML text (empty for the default) and `--set` overrides.
 ///
 /// Returns every problem at once; the case is only returned when there is none.
@@ -314,6 +339,7 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
     })?;
     apply_overrides(&mut user, overrides, &mut problems);
     check_keys(&mut user, &mut problems);
+    speed_in_rpm(&mut user, &mut problems);
     if !problems.is_empty() {
         return Err(ConfigError { problems });
     }

@@ -28,9 +28,11 @@
 //!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
 //!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log; docs/RELIABILITY.md)
 //!   written at 100 MB/s, plus 2 ms of fsync per update;
-//! - memory = 64 MB + kept responses x S_d P_e x 560 bytes (280 bytes a recorded sample,
-//!   doubled for vector growth and the output tables) + per mode U records of
-//!   (4 G + 4 S_d) numbers at 8 bytes.
+//! - memory = 64 MB + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (280 bytes a
+//!   recorded sample, with vector growth, the output tables and their CSV text) + per mode U records of
+//!   (4 G + 4 S_d) numbers at 8 bytes + for `wear` and `run` the outputs of every record's
+//!   profiles, [`OUTPUT_BYTES_PER_PROFILE_POINT`] per grid point (and
+//!   [`OUTPUT_SECONDS_PER_PROFILE_POINT`] of time).
 //!
 //! # Default budget
 //!
@@ -58,10 +60,19 @@ pub const PERIODS_TO_SETTLE_PER_DECADE: f64 = 5.0;
 /// 200 at 300 Hz (the grid nodes). At 1e-7, 1e-8 and 1e-9 the measured counts (2733,
 /// 5761, 12412 at 0.5 Hz) stay below this bound's 3250, 7000 and 15080.
 pub const ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE: f64 = 700.0;
-/// Bytes of one recorded sample of a dynamic response, with growth and copies.
-pub const BYTES_PER_SAMPLE: f64 = 560.0;
+/// Bytes of one recorded sample of a dynamic response, with growth, copies and the output
+/// tables and their CSV text: measured 1500 for `gearwear dynamics` at 2e4 steps per
+/// mesh period (280 of them the response itself); 2000 leaves margin.
+pub const BYTES_PER_SAMPLE: f64 = 2000.0;
 /// Dynamic wear per cycle over the quasi-static estimate (dynamic factor margin).
 pub const DYNAMIC_WEAR_FACTOR: f64 = 1.5;
+/// Memory of the outputs per profile grid point of each wear record (the wear profiles'
+/// and Fig. 12's tables, their CSV text and the figure's curves): measured 106-109 bytes
+/// (`wear.points_per_profile` = 1e5, 21 and 175 records); 160 leaves margin.
+pub const OUTPUT_BYTES_PER_PROFILE_POINT: f64 = 160.0;
+/// Time of the outputs per profile grid point of each wear record (four CSV cells and
+/// the figure's data), s.
+pub const OUTPUT_SECONDS_PER_PROFILE_POINT: f64 = 1e-6;
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 const BASE_BYTES: f64 = 64e6;
 const CHECKPOINT_BYTES_PER_NUMBER: f64 = 32.0;
@@ -394,6 +405,20 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         });
     }
     if checkpoints && records > 0.0 {
+        // `wear` and `run` write the profiles of every record (and Python's wear and run
+        // build the same tables).
+        let points = records * grid;
+        terms.push(Term {
+            what: "the wear profiles' tables and figures",
+            seconds: points * OUTPUT_SECONDS_PER_PROFILE_POINT,
+            bytes: points * OUTPUT_BYTES_PER_PROFILE_POINT,
+            keys: &[
+                "wear.points_per_profile",
+                "wear.threshold_um",
+                "wear.block_cycles",
+                "wear.total_cycles",
+            ],
+        });
         let written = records * record_numbers * CHECKPOINT_BYTES_PER_NUMBER;
         terms.push(Term {
             what: "writing the checkpoints",
@@ -443,6 +468,26 @@ fn sampled_indices(values: &[String]) -> Vec<usize> {
         idx.insert(hi.0);
     }
     idx.into_iter().collect()
+}
+
+/// The estimated cost of `sweep-merge` of tables of `bytes` in all: the text, the rows
+/// parsed (their values as text and numbers) and the merged table's CSV, about four times
+/// the text.
+pub fn estimate_sweep_merge(bytes: u64) -> Estimate {
+    Estimate {
+        steps_per_evaluation: 0.0,
+        steps_to_give_up: 0.0,
+        recorded_samples: 0.0,
+        wear_per_cycle_m: None,
+        wear_updates_dynamic: 0.0,
+        wear_updates_quasi_static: 0.0,
+        terms: vec![Term {
+            what: "the tables read and merged",
+            seconds: bytes as f64 * 2e-8,
+            bytes: 4.0 * bytes as f64,
+            keys: &["the size of the tables merged"],
+        }],
+    }
 }
 
 /// Memory a sweep holds per case besides the cases in flight: the resolved case, its
