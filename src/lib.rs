@@ -6,8 +6,11 @@
 //!
 //! Layers, each depending only on those before it:
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `prognostics` -> `io` / `report` -> `cli`.
+//! -> `prognostics` -> `io` / `report` -> `app` (one job per study) -> `cli` (and the
+//! Python binding in `python/`). `remedy` (problems and their remedies) and `format`
+//! sit below them all.
 
+pub mod app;
 pub mod checksum;
 pub mod cli;
 pub mod config;
@@ -17,6 +20,7 @@ pub mod format;
 pub mod geometry;
 pub mod io;
 pub mod prognostics;
+pub mod remedy;
 pub mod report;
 pub mod stiffness;
 pub mod study;

@@ -157,7 +157,7 @@ proptest! {
         let case = match load_case("", &sets) {
             Ok(c) => c,
             Err(e) => {
-                prop_assert!(!e.problems.is_empty() && e.problems.iter().all(|p| p.contains('`')), "{e}");
+                prop_assert!(!e.problems.is_empty() && e.messages().iter().all(|p| p.contains('`')), "{e}");
                 return Ok(());
             }
         };

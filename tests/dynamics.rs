@@ -122,7 +122,7 @@ fn spectrum_of_the_periodic_response_sits_on_mesh_harmonics() {
         .max_by(|x, y| s.amplitude[*x].total_cmp(&s.amplitude[*y]))
         .unwrap();
     assert_eq!(kmax % b, 0, "peak at bin {kmax}");
-    let f_mesh = m.params.mesh_frequency_hz(&m.pair);
+    let f_mesh = m.params.operating.mesh_frequency_hz;
     assert!((s.frequency_hz[b] - f_mesh).abs() < 1e-9 * f_mesh);
 }
 

@@ -173,3 +173,86 @@ fn an_extrapolated_fit_may_not_swamp_the_pair() {
     let m = Model::from_case(&case("1.435").unwrap()).unwrap();
     assert!(m.mesh.min_stiffness_n_per_m() > 0.0);
 }
+
+#[test]
+fn a_dynamics_run_with_derived_masses_states_the_derived_values_in_summary_json() {
+    // `gearwear config --new-pair` prints the paper's pair (m = 2 mm, z = 19 / 31,
+    // b = 20 mm, dedendum 1.25 m, no shift) with bores, masses and inertias "derived",
+    // steel blanks of 7850 kg/m^3.
+    let d = tempfile::tempdir().unwrap();
+    let case_file = d.path().join("new_pair.toml");
+    let bin = env!("CARGO_BIN_EXE_gearwear");
+    let t = std::process::Command::new(bin)
+        .args(["config", "--new-pair"])
+        .output()
+        .unwrap();
+    std::fs::write(&case_file, &t.stdout).unwrap();
+    let out = d.path().join("dynamics");
+    let o = std::process::Command::new(bin)
+        .args(["dynamics", "-q", "--config", case_file.to_str().unwrap()])
+        .args(["--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    // Beside the case as given ("derived") ...
+    assert_eq!(
+        s["metadata"]["case"]["dynamics"]["mass_pinion_kg"],
+        "derived"
+    );
+    // ... the values used, by key.
+    let r = &s["metadata"]["resolved"];
+    let value = |key: &str| {
+        let v = r["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|v| v["key"] == key)
+            .unwrap_or_else(|| panic!("{key} not in {r}"));
+        assert_eq!(v["derived"], true, "{key}");
+        v["value"].as_f64().unwrap()
+    };
+    // The radii the model states: the derived bore is half the root radius (h_f = 2,
+    // `metadata.resolved.fillet_h_f`): r_f = m (z/2 - 1.25) = 16.5 / 28.5 mm, so 8.25 /
+    // 14.25 mm, as the summary says.
+    assert_eq!(r["fillet_h_f"], serde_json::json!([2.0, 2.0]));
+    let bore = [
+        value("gear.hub_bore_radius_pinion_mm") * 1e-3,
+        value("gear.hub_bore_radius_gear_mm") * 1e-3,
+    ];
+    for (b, r_f) in bore.iter().zip([16.5e-3, 28.5e-3]) {
+        assert!((b - r_f / 2.0).abs() < 1e-15, "bore {b} m");
+    }
+    // The disk's outer radius is the reference (pitch) radius r = m z / 2, not the tip
+    // radius: the toothed rim between root and tip circle is about half steel (tooth and
+    // space equally wide at the pitch circle), and half of that ring has nearly the area
+    // of the ring from the root to the pitch circle (geometry::blank, docs/MODEL.md
+    // section 7). Steel disk with a bore (Gere & Goodno, hollow circular cylinder):
+    // m = rho pi (r^2 - r_i^2) b, J = m (r^2 + r_i^2) / 2.
+    let (rho, b) = (7850.0, 20e-3);
+    for (i, (gear, z)) in [("pinion", 19.0), ("gear", 31.0)].into_iter().enumerate() {
+        let (r_o, r_i) = (2e-3 * z / 2.0, bore[i]);
+        let mass = rho * std::f64::consts::PI * (r_o * r_o - r_i * r_i) * b;
+        let inertia = mass * (r_o * r_o + r_i * r_i) / 2.0;
+        // The same formula evaluated in another order: a few ulp apart at most.
+        let m_got = value(&format!("dynamics.mass_{gear}_kg"));
+        let j_got = value(&format!("dynamics.inertia_{gear}_kg_m2"));
+        assert!(
+            (m_got / mass - 1.0).abs() < 1e-12,
+            "{gear}: {m_got} vs {mass} kg"
+        );
+        assert!(
+            (j_got / inertia - 1.0).abs() < 1e-12,
+            "{gear}: {j_got} vs {inertia}"
+        );
+    }
+    // By hand for the pinion: 7850 pi (0.019^2 - 0.00825^2) 0.02 = 0.144486 kg.
+    assert!((value("dynamics.mass_pinion_kg") - 0.144486).abs() < 1e-6);
+    // The operating point beside them: 30 Hz on the pinion, 60 N m on its shaft.
+    let op = &r["operating_point"];
+    assert_eq!(op["motor_torque_nm"], 60.0);
+    let w = op["pinion_speed_rad_s"].as_f64().unwrap();
+    assert!((w - 2.0 * std::f64::consts::PI * 30.0).abs() < 1e-12);
+    assert!((op["mesh_frequency_hz"].as_f64().unwrap() - 570.0).abs() < 1e-9);
+}

@@ -112,6 +112,19 @@ fn the_report_of_another_pair_describes_that_pair() {
         );
     }
 
+    // The case table lists the values the model used where the case said "derived":
+    // the blank of the pinion, a steel disk out to its pitch radius r = 37.5 mm with a
+    // bore of half its root radius (33.75 / 2 mm), 30 mm wide: m = 7850 pi (37.5^2 -
+    // 16.875^2) mm^2 x 30 mm = 0.8297 kg, as geometry::blank's hand check.
+    for phrase in [
+        "gear.hub_bore_radius_pinion_mm (mm) 16.88 (derived)",
+        "dynamics.mass_pinion_kg (kg) 0.8297 (derived)",
+        "torque on the pinion / gear shaft (N m) 100.0 / 200.0",
+    ] {
+        let squeezed = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(squeezed.contains(phrase), "case table lacks {phrase:?}");
+    }
+
     // summary.json: not the paper's case, with the keys that differ and the case itself.
     let s: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();

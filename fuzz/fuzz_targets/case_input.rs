@@ -11,6 +11,7 @@
 
 mod common;
 
+use gearwear::config::load::case_with;
 use gearwear::config::load_case;
 use gearwear::study::sweep::{parse_vary, SweepPlan};
 use libfuzzer_sys::fuzz_target;
@@ -31,12 +32,10 @@ fuzz_target!(|data: &[u8]| {
             None => sets.push(c.to_owned()),
         }
     }
-    if let Ok(plan) = SweepPlan::new(axes) {
+    if let (Ok(plan), Ok(base)) = (SweepPlan::new(axes), load_case(case_text, &sets)) {
         // Each case of a small plan must load or be refused, never panic.
         for id in 0..plan.len().min(4) {
-            let mut s = sets.clone();
-            s.extend(plan.overrides_of(id));
-            let _ = load_case(case_text, &s);
+            let _ = case_with(&base, &plan.settings_of(id));
         }
     }
     common::check_case(case_text, &sets);

@@ -10,51 +10,63 @@ Coatings 2022, 12(9), 1250, with the corrections of docs/MODEL.md), called direc
 >>> d.summary["dte"]["max_um"] == d.dte_um.max()
 True
 
-Every study mirrors a command and returns its summary (a dict with the keys and numbers
-of that command's summary.json), its tables (the CSV files it writes, as numpy columns
-with units in their names) and named views of them:
+Every study runs the same job of the library as the command of the same name (the
+application layer, ``src/app``) and returns a named result: its summary (a dict with the
+keys and numbers of that command's summary.json), its tables (the CSV files it writes, as
+numpy columns with units in their names) and named views of them:
 
-==========================  ====================  ===================
-function                    command               returns
-==========================  ====================  ===================
-``stiffness(case)``         gearwear stiffness    ``StiffnessResult``
-``dynamics(case, te)``      gearwear dynamics     ``DynamicsResult``
-``wear(case, mode)``        gearwear wear         ``WearResult``
-``run(case, out)``          gearwear run          ``RunResult``
-``sweep(case, vary, run)``  gearwear sweep        ``SweepResult``
-==========================  ====================  ===================
+====================================  ========================  ======================
+function                              command                   returns
+====================================  ========================  ======================
+``stiffness(case)``                   gearwear stiffness        ``StiffnessResult``
+``dynamics(case, te)``                gearwear dynamics         ``DynamicsResult``
+``wear(case, mode)``                  gearwear wear             ``WearResult``
+``run(case, out)``                    gearwear run              ``RunResult``
+``sweep(case, vary, run)``            gearwear sweep            ``SweepResult``
+``sweep_merge(inputs)``               gearwear sweep-merge      ``SweepResult``
+``calibrate(case, observations)``     gearwear calibrate        ``CalibrationResult``
+``predict(case, posterior, ...)``     gearwear predict          ``PredictionResult``
+``predict_merge(inputs)``             gearwear predict-merge    ``PredictionResult``
+====================================  ========================  ======================
+
+``out=FOLDER`` writes the command's output set there (checkpoints and ``resume=True``
+for wear studies, finished cases skipped on a rerun of a sweep); without it nothing is
+written; a folder that holds another command's results is refused unless
+``replace=True``. ``budget_scale`` raises the run budget (docs/RELIABILITY.md) knowingly;
+``math.inf`` drops the check.
 
 The computation runs in Rust with the GIL released (other Python threads go on), sweeps
 and the two wear runs in parallel (rayon; ``RAYON_NUM_THREADS`` sets the threads).
 Ctrl-C (KeyboardInterrupt) stops a study: a wear study at its next update (milliseconds);
 control returns within about half a second in any case. ``progress=callable`` is called
-on the calling thread as ``progress(what, done, total)``.
+on the calling thread as ``progress(task, done, total)``.
 
 Invalid input raises ``CaseError`` (a ``ValueError``) listing every problem with its key,
-value and valid range; a solver failure raises ``StudyError`` (a ``RuntimeError``).
-
-Every study is checked against the run budget before it starts, as on the command line
-(2 GiB and 10 minutes on one core of the reference machine; docs/RELIABILITY.md): one
-over it raises ``CaseError`` naming the keys that drive its cost. ``budget_scale=X``
-multiplies the budget knowingly, ``no_budget=True`` drops it.
+value and valid range; a solver failure raises ``StudyError`` (a ``RuntimeError``); the
+model's findings (undercut, formulas outside their fitted range) are ``GearwearWarning``s.
 """
 
 from __future__ import annotations
 
-import os
+import os as _os
 import warnings as _warnings
-from numbers import Integral, Real
-from pathlib import Path
-from typing import Any, Callable, Mapping, Optional, Sequence, Union
+from typing import Any as _Any
+from typing import Callable as _Callable
+from typing import Mapping as _Mapping
+from typing import Optional as _Optional
+from typing import Sequence as _Sequence
+from typing import Union as _Union
 
-import numpy as np
+import numpy as _np
 
 from . import _gearwear as _native
 from ._gearwear import Case, CaseError, Problem, StudyError, __version__, keys
 from ._results import (
     COORDINATE_UNITS,
     COORDINATES,
+    CalibrationResult,
     DynamicsResult,
+    PredictionResult,
     RunResult,
     StiffnessResult,
     SweepResult,
@@ -75,6 +87,10 @@ __all__ = [
     "wear",
     "run",
     "sweep",
+    "sweep_merge",
+    "calibrate",
+    "predict",
+    "predict_merge",
     "Table",
     "StiffnessResult",
     "DynamicsResult",
@@ -82,22 +98,32 @@ __all__ = [
     "WearRunResult",
     "RunResult",
     "SweepResult",
+    "CalibrationResult",
+    "PredictionResult",
     "COORDINATES",
     "COORDINATE_UNITS",
     "__version__",
 ]
 
-#: ``progress(what, done, total)``: ``what`` is ``"dynamic"`` or ``"quasi_static"``
-#: (wear runs; done and total in load cycles) or ``"sweep"`` (cases).
-Progress = Callable[[str, float, float], Any]
+#: ``progress(task, done, total)``: ``task`` is ``"dynamic"`` or ``"quasi_static"`` (wear
+#: runs; done and total in load cycles), ``"sweep"`` (cases), ``"reference_runs"``,
+#: ``"posterior"`` or ``"samples"`` (prognostics).
+Progress = _Callable[[str, float, float], _Any]
+PathLike = _Union[str, "_os.PathLike[str]"]
 
 
 class GearwearWarning(UserWarning):
     """A finding of the model that does not stop it (undercut, thin tips, formulas used
-    outside their fitted range); the command line prints these as ``warning:``."""
+    outside their fitted range, a wear run that stopped early); the command line prints
+    these as ``warning:``."""
 
 
-def _check_case(case: Any) -> Case:
+def __dir__() -> list:
+    """The public API only."""
+    return sorted(__all__)
+
+
+def _check_case(case: _Any) -> Case:
     if not isinstance(case, Case):
         raise TypeError(
             f"expected a gearwear.Case, got {type(case).__name__}: "
@@ -106,12 +132,22 @@ def _check_case(case: Any) -> Case:
     return case
 
 
-def _warn(summary: Mapping[str, Any]) -> None:
-    for w in summary.get("warnings") or []:
+def _path(out: _Optional[PathLike]) -> _Optional[str]:
+    return None if out is None else _os.fspath(out)
+
+
+def _done(result: _Any, native: _Mapping[str, _Any]) -> _Any:
+    """Warn about the study's findings and return its result."""
+    for w in native["warnings"]:
         _warnings.warn(w, GearwearWarning, stacklevel=3)
+    if native["incomplete"]:
+        _warnings.warn(native["incomplete"], GearwearWarning, stacklevel=3)
+    return result
 
 
-def stiffness(case: Case, *, budget_scale: Optional[float] = None, no_budget: bool = False) -> StiffnessResult:
+def stiffness(
+    case: Case, *, out: _Optional[PathLike] = None, budget_scale: float = 1.0, replace: bool = False
+) -> StiffnessResult:
     """Mesh stiffness over one mesh period, as ``gearwear stiffness``.
 
     Potential energy method (bending, shear, axial compression, Hertz, Sainsot fillet
@@ -119,17 +155,17 @@ def stiffness(case: Case, *, budget_scale: Optional[float] = None, no_budget: bo
     the ISO 6336-1 Method B cross-check and the pair's geometry. Table
     ``mesh_stiffness``: 720 samples over one mesh period (360/z1 deg of pinion rotation).
     """
-    r = StiffnessResult(*_native.stiffness(_check_case(case), budget_scale, no_budget))
-    _warn(r.summary)
-    return r
+    n = _native.stiffness(_check_case(case), out=_path(out), budget_scale=budget_scale, replace=replace)
+    return _done(StiffnessResult(**n), n)
 
 
 def dynamics(
     case: Case,
-    transmission_error: Optional[Any] = None,
+    transmission_error: _Optional[_Any] = None,
     *,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
+    out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> DynamicsResult:
     """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth), as
     ``gearwear dynamics [--transmission-error FILE]``.
@@ -148,44 +184,49 @@ def dynamics(
     """
     te = None
     if transmission_error is not None:
-        te = np.ascontiguousarray(transmission_error, dtype=np.float64)
+        te = _np.ascontiguousarray(transmission_error, dtype=_np.float64)
         if te.ndim != 2 or te.shape[1] != 2:
             raise ValueError(
                 "transmission_error: expected shape (n, 2) (pinion angle deg, error um), "
                 f"got {te.shape}"
             )
-    r = DynamicsResult(*_native.dynamics(_check_case(case), te, budget_scale, no_budget))
-    _warn(r.summary)
-    return r
+    n = _native.dynamics(_check_case(case), te, out=_path(out), budget_scale=budget_scale, replace=replace)
+    return _done(DynamicsResult(**n), n)
 
 
 def wear(
     case: Case,
     mode: str = "both",
-    progress: Optional[Progress] = None,
+    progress: _Optional[Progress] = None,
     *,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
+    out: _Optional[PathLike] = None,
+    resume: bool = False,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> WearResult:
     """The coupled dynamics-wear study and/or its quasi-static twin, as ``gearwear wear
-    --mode MODE``, to ``wear.total_cycles`` load cycles (no checkpoints).
+    --mode MODE``, to ``wear.total_cycles`` load cycles.
 
     ``mode``: ``"both"`` (default; the two runs in parallel), ``"dynamic"`` or
     ``"quasi_static"`` (``"quasi-static"`` also accepted). ``progress(mode, cycles,
-    total_cycles)`` after every update of each run, e.g. to move a tqdm bar.
+    total_cycles)`` after every update of each run, e.g. to move a tqdm bar. ``out``: a
+    folder for the command's output set, with a checkpoint after every update;
+    ``resume=True`` continues from the checkpoints there.
     """
-    r = WearResult(*_native.wear(_check_case(case), mode, progress, budget_scale, no_budget))
-    _warn(r.summary)
-    return r
+    n = _native.wear(
+        _check_case(case), mode, progress, out=_path(out), resume=resume, budget_scale=budget_scale, replace=replace
+    )
+    return _done(WearResult(**n), n)
 
 
 def run(
     case: Case,
-    out: Optional[Union[str, "os.PathLike[str]"]] = None,
-    progress: Optional[Progress] = None,
+    out: _Optional[PathLike] = None,
+    progress: _Optional[Progress] = None,
     *,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
+    resume: bool = False,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> RunResult:
     """The paper's whole section 4, as ``gearwear run``: mesh stiffness, the dynamic and
     quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 um of wear, the
@@ -193,52 +234,40 @@ def run(
 
     ``out``: a folder to write the same output set as ``gearwear run --out DIR`` (summary,
     figures, CSVs, report, checkpoints, manifest), published as one set; None writes
-    nothing (the figures and report are still in the result).
+    nothing (the figures and report are still in the result). ``resume=True`` continues
+    the wear studies from the checkpoints in ``out``.
     """
-    out_path = None if out is None else Path(os.fspath(out))
-    r = RunResult(
-        *_native.run(_check_case(case), out_path, progress, budget_scale, no_budget), out=out_path
+    n = _native.run(
+        _check_case(case), _path(out), progress, resume=resume, budget_scale=budget_scale, replace=replace
     )
-    _warn(r.summary)
-    return r
+    return _done(RunResult(**n), n)
 
 
-def _value_text(v: Any) -> str:
-    """A value as ``--vary`` list text (numbers in their shortest exact form)."""
-    if isinstance(v, (bool, np.bool_)):
-        return "true" if v else "false"
-    if isinstance(v, Integral):
-        return str(int(v))
-    if isinstance(v, Real):
-        return repr(float(v))
-    if isinstance(v, str):
-        return v
-    raise TypeError(f"sweep: cannot vary over a {type(v).__name__} value ({v!r})")
-
-
-def _axis_text(key: str, spec: Any) -> str:
+def _axis(spec: _Any) -> _Any:
+    """A sweep axis as the native module takes it: range/list text, or a list of values."""
     if isinstance(spec, str):
         return spec
-    if isinstance(spec, (Sequence, np.ndarray, range)):
-        values = [_value_text(v) for v in np.asarray(spec, dtype=object).ravel()]
-        if not values:
-            raise ValueError(f"sweep: no values given for {key}")
-        return ",".join(values)
-    return _value_text(spec)
+    if isinstance(spec, _np.ndarray):
+        return spec.tolist()
+    if isinstance(spec, (_Sequence, range)):
+        return [v.tolist() if isinstance(v, (_np.ndarray, _np.generic)) else v for v in spec]
+    return [spec]
 
 
 def sweep(
     case: Case,
-    vary: Mapping[str, Union[str, Sequence[Any], np.ndarray]],
+    vary: _Mapping[str, _Union[str, _Sequence[_Any], _np.ndarray]],
     run: str = "dynamics",
-    progress: Optional[Progress] = None,
+    progress: _Optional[Progress] = None,
     *,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
+    out: _Optional[PathLike] = None,
+    shard: _Optional[_Union[str, tuple]] = None,
+    continuation: _Optional[str] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> SweepResult:
-    """A parameter study, as ``gearwear sweep --vary KEY=... [--run RUN]`` (without
-    files, resumption or shards): the cross product of ``vary`` on ``case``, run in
-    parallel.
+    """A parameter study, as ``gearwear sweep --vary KEY=... [--run RUN]``: the cross
+    product of ``vary`` on ``case``, run in parallel.
 
     ``vary``: ``{key: values}``; values a ``"START:STOP:STEP"`` range (STOP included when
     the range lands on it), a ``"v1,v2,..."`` list, or a sequence/array of numbers or
@@ -246,9 +275,193 @@ def sweep(
     value raises ``CaseError`` naming the case, the key and the value.
     ``run``: ``"dynamics"`` (one steady-state evaluation per case) or ``"wear"`` (the wear
     study in both modes). ``progress("sweep", cases_done, cases_total)``.
-    Rows of cases whose solver failed are missing; ``summary["failed"]`` says why.
+    ``out``: a folder for the sweep's files (a case record per finished case: a rerun
+    skips them); ``shard``: ``"I/N"`` or ``(I, N)``, the cases with id mod N = I - 1;
+    ``continuation``: ``"up"``, ``"down"`` or ``"both"``, one axis followed along its
+    solution branches. Rows of cases whose solver failed are missing;
+    ``summary["failed"]`` says why.
     """
-    axes = [(str(k), _axis_text(str(k), v)) for k, v in vary.items()]
-    r = SweepResult(*_native.sweep(_check_case(case), axes, run, progress, budget_scale, no_budget))
-    _warn(r.summary)
-    return r
+    axes = [(str(k), _axis(v)) for k, v in vary.items()]
+    n = _native.sweep(
+        _check_case(case),
+        axes,
+        run,
+        progress,
+        out=_path(out),
+        shard=shard,
+        continuation=continuation,
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(SweepResult(**n), n)
+
+
+def sweep_merge(
+    inputs: _Sequence[PathLike],
+    out: _Optional[PathLike] = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> SweepResult:
+    """The tables of sweep shards (or of earlier merges) joined into one sorted by case
+    id, as ``gearwear sweep-merge``; ``inputs``: sweep folders or CSV files. Inputs of
+    different sweeps are refused."""
+    n = _native.sweep_merge(
+        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+    )
+    return _done(SweepResult(**n), n)
+
+
+def _table(data: _Any, what: str, columns: _Optional[_Sequence[str]] = None) -> _Any:
+    """An input table as the native module takes it: a path, or (names, float64 arrays).
+
+    Accepted: a path (str or os.PathLike) to a CSV file; a pandas DataFrame; a mapping of
+    column name to 1-D array; a numpy structured array; a 2-D array with ``columns``; a
+    result whose ``tables`` hold it (``CalibrationResult``: its posterior samples)."""
+    if isinstance(data, (str, _os.PathLike)):
+        return _os.fspath(data)
+    if isinstance(data, CalibrationResult):
+        data = data.tables["posterior_samples"]
+    if hasattr(data, "columns") and hasattr(data, "to_numpy") and not isinstance(data, _np.ndarray):
+        if isinstance(data, Table):
+            names = list(data.columns)
+            arrays = [data[c] for c in names]
+        else:  # a pandas DataFrame
+            names = [str(c) for c in data.columns]
+            arrays = [data[c].to_numpy(dtype=_np.float64, na_value=_np.nan) for c in data.columns]
+    elif isinstance(data, _Mapping):
+        names = [str(k) for k in data]
+        arrays = [data[k] for k in data]
+    elif isinstance(data, _np.ndarray) and data.dtype.names:
+        names = list(data.dtype.names)
+        arrays = [data[n] for n in names]
+    elif isinstance(data, _np.ndarray) and data.ndim == 2:
+        if columns is None or len(columns) != data.shape[1]:
+            raise ValueError(
+                f"{what}: a 2-D array needs `columns`, one name per column ({data.shape[1]})"
+            )
+        names = [str(c) for c in columns]
+        arrays = [data[:, j] for j in range(data.shape[1])]
+    else:
+        raise TypeError(
+            f"{what}: expected a CSV path, a pandas DataFrame, a mapping of columns, a "
+            f"structured array or a 2-D array with `columns`, got {type(data).__name__}"
+        )
+    cols = []
+    for name, a in zip(names, arrays):
+        a = _np.ascontiguousarray(a, dtype=_np.float64)
+        if a.ndim != 1:
+            raise ValueError(f"{what}: column {name!r} is not one-dimensional")
+        cols.append(a)
+    return (names, cols)
+
+
+def calibrate(
+    case: Case,
+    observations: _Any,
+    *,
+    columns: _Optional[_Sequence[str]] = None,
+    seed: int = 1,
+    samples: int = 2000,
+    walkers: int = 32,
+    steps: int = 2000,
+    check_runs: int = 3,
+    out: _Optional[PathLike] = None,
+    progress: _Optional[Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> CalibrationResult:
+    """The posterior of the wear coefficient (and, where the case's ``[calibration]``
+    leaves them free, the roughness factor and load torque) given observations of a
+    running gearbox, as ``gearwear calibrate --observations FILE``.
+
+    ``observations``: a pandas DataFrame, a mapping of columns, a structured array, a 2-D
+    array with ``columns=[...]``, or a CSV path: a ``cycles`` column (pinion load
+    cycles), one column per observed quantity (named as the wear study's ``updates``
+    table: ``max_wear_pinion_um``, ``velocity_y_pinion_rms_mm_per_s``, ...), optional
+    ``sigma_<name>`` columns (the measurement noise, same unit); NaN where a quantity was
+    not measured (docs/PROGNOSTICS.md). ``seed`` seeds every random draw; ``samples``
+    posterior samples; ``walkers`` and ``steps`` of the ensemble sampler (the first half
+    burn-in); ``check_runs`` true wear runs checked against the surrogate.
+    """
+    obs = _table(observations, "observations", columns)
+    n = _native.calibrate(
+        _check_case(case),
+        obs,
+        seed=seed,
+        samples=samples,
+        walkers=walkers,
+        steps=steps,
+        check_runs=check_runs,
+        out=_path(out),
+        progress=progress,
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(CalibrationResult(**n), n)
+
+
+def predict(
+    case: Case,
+    posterior: _Any = None,
+    *,
+    limit_um: float,
+    cycles: float,
+    seed: int = 1,
+    samples: _Optional[int] = None,
+    grid_points: int = 101,
+    forward: str = "surrogate",
+    shard: _Optional[_Union[str, tuple]] = None,
+    check_runs: int = 3,
+    out: _Optional[PathLike] = None,
+    progress: _Optional[Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> PredictionResult:
+    """Monte Carlo prediction of wear, vibration indicators and remaining life, as
+    ``gearwear predict --limit-um L --cycles N [--posterior FILE]``.
+
+    ``posterior``: None (samples of the case's prior), a ``CalibrationResult``, or its
+    samples as a DataFrame, mapping, structured array or CSV path (columns
+    ``wear_coefficient_m2_per_n`` and optionally ``roughness_scale``,
+    ``load_torque_nm``). ``limit_um``: the wear limit on the maximum pinion wear depth,
+    um; ``cycles``: the horizon, pinion load cycles. ``samples``: ensemble size (default:
+    every posterior row, or 2000 prior draws); ``grid_points`` cycle counts of the fan
+    charts; ``forward``: ``"surrogate"`` (fast) or ``"exact"`` (one wear study per
+    sample); ``shard``: ``"I/N"`` or ``(I, N)`` (join the shards' ``out`` folders with
+    ``predict_merge``).
+    """
+    post = None if posterior is None else _table(posterior, "posterior")
+    n = _native.predict(
+        _check_case(case),
+        post,
+        limit_um=float(limit_um),
+        cycles=float(cycles),
+        seed=seed,
+        samples=samples,
+        grid_points=grid_points,
+        forward=forward,
+        shard=shard,
+        check_runs=check_runs,
+        out=_path(out),
+        progress=progress,
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(PredictionResult(**n), n)
+
+
+def predict_merge(
+    inputs: _Sequence[PathLike],
+    out: _Optional[PathLike] = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> PredictionResult:
+    """The shards of a sharded ``predict`` joined, as ``gearwear predict-merge``;
+    ``inputs``: shard files (``predict_shard_I_of_N.json``) or folders holding them."""
+    n = _native.predict_merge(
+        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+    )
+    return _done(PredictionResult(**n), n)
+

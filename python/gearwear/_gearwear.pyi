@@ -1,5 +1,8 @@
 """The native module of gearwear (Rust, PyO3). Use it through the package ``gearwear``,
-which wraps these tuples in result objects."""
+which wraps these dicts in result objects. Each study function runs the job of the
+library's application layer that the command of the same name runs, and returns a dict
+``{summary, tables, headline, documents, warnings, out, incomplete}`` (sweeps add
+``keys, columns, case_ids, values, branches, results``)."""
 
 from os import PathLike
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union, overload
@@ -80,54 +83,120 @@ class StudyError(RuntimeError):
 def keys() -> List[Dict[str, Any]]:
     """Every key of a case: ``{key, unit, valid, doc, default}`` each."""
 
+_Result = Dict[str, Any]
+_Path = Optional[Union[str, PathLike[str]]]
+# A CSV path, or (column names, one float64 array per column; NaN: not measured).
+_TableIn = Union[str, PathLike[str], Tuple[List[str], List[npt.NDArray[np.float64]]]]
+
 def stiffness(
-    case: Case, budget_scale: Optional[float] = None, no_budget: bool = False
-) -> Tuple[Dict[str, Any], _Tables, str]:
-    """(summary, tables, headline) of ``gearwear stiffness``."""
+    case: Case, *, out: _Path = None, budget_scale: float = 1.0, replace: bool = False
+) -> _Result:
+    """``gearwear stiffness``."""
 
 def dynamics(
     case: Case,
     transmission_error: Optional[npt.NDArray[np.float64]] = None,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
-) -> Tuple[Dict[str, Any], _Tables, str]:
-    """(summary, tables, headline) of ``gearwear dynamics``; ``transmission_error`` of
-    shape (n, 2): pinion angle deg, error um."""
+    *,
+    out: _Path = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear dynamics``; ``transmission_error`` of shape (n, 2): pinion angle deg,
+    error um."""
 
 def wear(
     case: Case,
     mode: str = "both",
     progress: Optional[_Progress] = None,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
-) -> Tuple[Dict[str, Any], _Tables, str]:
-    """(summary, tables, headline) of ``gearwear wear --mode MODE``."""
+    *,
+    out: _Path = None,
+    resume: bool = False,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear wear --mode MODE``."""
 
 def run(
     case: Case,
-    out: Optional[PathLike[str]] = None,
+    out: _Path = None,
     progress: Optional[_Progress] = None,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
-) -> Tuple[Dict[str, Any], _Tables, str, Dict[str, bytes]]:
-    """(summary, tables, headline, documents) of ``gearwear run``."""
+    *,
+    resume: bool = False,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear run``."""
 
 def sweep(
     case: Case,
-    vary: Sequence[Tuple[str, str]],
+    vary: Sequence[Tuple[str, Union[str, Sequence[Any]]]],
     run: str = "dynamics",
     progress: Optional[_Progress] = None,
-    budget_scale: Optional[float] = None,
-    no_budget: bool = False,
-) -> Tuple[
-    Dict[str, Any],
-    List[str],
-    List[str],
-    npt.NDArray[np.float64],
-    List[List[str]],
-    npt.NDArray[np.float64],
-]:
-    """(summary, keys, columns, case_ids, values, results) of ``gearwear sweep``."""
+    *,
+    out: _Path = None,
+    shard: Optional[Union[str, Tuple[int, int]]] = None,
+    continuation: Optional[str] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear sweep``."""
+
+def sweep_merge(
+    inputs: Sequence[Union[str, PathLike[str]]],
+    out: _Path = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear sweep-merge``."""
+
+def calibrate(
+    case: Case,
+    observations: _TableIn,
+    *,
+    seed: int = 1,
+    samples: int = 2000,
+    walkers: int = 32,
+    steps: int = 2000,
+    check_runs: int = 3,
+    out: _Path = None,
+    progress: Optional[_Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear calibrate``."""
+
+def predict(
+    case: Case,
+    posterior: Optional[_TableIn] = None,
+    *,
+    limit_um: float,
+    cycles: float,
+    seed: int = 1,
+    samples: Optional[int] = None,
+    grid_points: int = 101,
+    forward: str = "surrogate",
+    shard: Optional[Union[str, Tuple[int, int]]] = None,
+    check_runs: int = 3,
+    out: _Path = None,
+    progress: Optional[_Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear predict``."""
+
+def predict_merge(
+    inputs: Sequence[Union[str, PathLike[str]]],
+    out: _Path = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear predict-merge``."""
 
 def _time_rust_dynamics(case: Case, repeats: int) -> List[float]:
     """Seconds of each of ``repeats`` Rust-only runs of what ``dynamics(case)`` runs."""
+
+def _running_jobs() -> int:
+    """Jobs still running on the pool, including an interrupted evaluation finishing in
+    the background (for tests)."""

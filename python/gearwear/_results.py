@@ -23,6 +23,8 @@ __all__ = [
     "WearResult",
     "RunResult",
     "SweepResult",
+    "CalibrationResult",
+    "PredictionResult",
 ]
 
 #: The 8 generalised coordinates of the dynamic model, in the column order of
@@ -108,17 +110,35 @@ class Table(Mapping[str, np.ndarray]):
 
 
 class _Result:
-    """What every study returns: ``summary``, ``tables``, ``headline``."""
+    """What every study returns: ``summary``, ``tables``, ``headline``, and where the
+    output set went (``out``)."""
 
-    def __init__(self, summary: Dict[str, Any], tables: Dict[str, Tuple[List[str], np.ndarray, List[int]]], headline: str):
+    def __init__(
+        self,
+        summary: Dict[str, Any],
+        tables: Dict[str, Tuple[List[str], np.ndarray, List[int]]],
+        headline: str,
+        documents: Optional[Dict[str, bytes]] = None,
+        warnings: Sequence[str] = (),
+        out: Optional[str] = None,
+        incomplete: Optional[str] = None,
+    ):
         #: The summary: the keys and numbers of the command's summary.json (display units
         #: in the key names), with ``metadata`` (program, version, command, the resolved
-        #: case and its SHA-256).
+        #: case and its SHA-256, and ``resolved``: the values the model used for the
+        #: ``"derived"`` keys and the operating point).
         self.summary: Dict[str, Any] = summary
         #: The tables by name (the CSV file names without ``.csv``).
         self.tables: Dict[str, Table] = {n: Table(n, *t) for n, t in tables.items()}
         #: The lines the command line prints as its result.
         self.headline: str = headline
+        #: The output folder written, or None.
+        self.out: Optional[Path] = None if out is None else Path(out)
+        #: Why the result is incomplete (a wear run the solver gave up on, failed sweep
+        #: cases), or None; the command line exits 1 for these.
+        self.incomplete: Optional[str] = incomplete
+        self._documents: Dict[str, bytes] = dict(documents or {})
+        self._warnings: List[str] = list(warnings)
 
     def to_pandas(self, table: Optional[str] = None) -> Any:
         """One table as a ``pandas.DataFrame``, or with no name, a dict of all of them
@@ -131,8 +151,20 @@ class _Result:
 
     @property
     def warnings(self) -> List[str]:
-        """The model's warnings (undercut, formulas used outside their fitted range)."""
-        return list(self.summary.get("warnings", []))
+        """The study's warnings (undercut, formulas used outside their fitted range, a
+        wear run that stopped early), also issued as ``GearwearWarning``."""
+        return list(self._warnings)
+
+    @property
+    def figures_png(self) -> Dict[str, bytes]:
+        """PNG bytes of each figure rendered for the report, by file name."""
+        return {n: b for n, b in self._documents.items() if n.endswith(".png")}
+
+    @property
+    def report_html(self) -> Optional[str]:
+        """The self-contained HTML report, for the studies that write one."""
+        html = self._documents.get("report.html")
+        return None if html is None else html.decode("utf-8")
 
     def __repr__(self) -> str:
         return f"<gearwear.{type(self).__name__}: {self.headline}>"
@@ -387,18 +419,40 @@ class WearResult(_Result):
 class RunResult(WearResult):
     """The paper's whole section 4 (``gearwear run``): the summary with the paper
     comparison, every figure's table (``fig02_mesh_stiffness`` ... ``fig13_...``), the
-    wear runs (as ``WearResult``), the figures as PNG and the HTML report."""
+    wear runs (as ``WearResult``), the figures as PNG (``figures_png``) and the HTML
+    report (``report_html``)."""
 
-    def __init__(self, summary, tables, headline, documents: Dict[str, bytes], out: Optional[Path]):
-        super().__init__(summary, tables, headline)
-        #: PNG bytes of each figure by file name (``fig13_max_accumulated_wear.png``).
-        self.figures_png: Dict[str, bytes] = {
-            n: b for n, b in documents.items() if n.endswith(".png")
-        }
-        #: The self-contained HTML report.
-        self.report_html: str = documents.get("report.html", b"").decode("utf-8")
-        #: The output folder written, or None.
-        self.out: Optional[Path] = out
+
+class CalibrationResult(_Result):
+    """The posterior of a calibration (``gearwear calibrate``): the summary (each
+    parameter's median, 90 % interval, ESS and R-hat, the noise of each observed
+    quantity, the surrogate check), the tables ``posterior_samples`` (one row per sample)
+    and ``posterior_band`` (the model's band against the observations), figures and
+    report. Pass it to ``predict`` as the posterior."""
+
+    @property
+    def samples(self) -> Table:
+        """The posterior samples: ``wear_coefficient_m2_per_n`` (m^2/N) and, when
+        calibrated, ``roughness_scale`` and ``load_torque_nm``."""
+        return self.tables["posterior_samples"]
+
+    @property
+    def parameters(self) -> Dict[str, Dict[str, Any]]:
+        """Each calibrated parameter's summary by column name: median, ci90, ess, rhat."""
+        return {p["parameter"]: p for p in self.summary["parameters"]}
+
+
+class PredictionResult(_Result):
+    """A prediction (``gearwear predict`` / ``predict-merge``): the summary (remaining
+    life percentiles, the bands at the horizon, failed samples, the surrogate check), the
+    tables ``life_samples`` (per sample: parameters, cycles to the limit, status),
+    ``fan_wear`` and ``fan_vibration`` (percentile bands over the cycle grid), figures and
+    report."""
+
+    @property
+    def life(self) -> Dict[str, Any]:
+        """Cycles to the wear limit: p05, median, p95, probability beyond the horizon."""
+        return self.summary["remaining_life_cycles"]
 
 
 def _as_numbers(values: Sequence[str]) -> np.ndarray:
@@ -409,12 +463,27 @@ def _as_numbers(values: Sequence[str]) -> np.ndarray:
 
 
 class SweepResult:
-    """A parameter sweep (``gearwear sweep``, without files): one row per case."""
+    """A parameter sweep (``gearwear sweep``, ``sweep-merge``): one row per case."""
 
-    def __init__(self, summary, keys, columns, case_ids, values, results):
-        #: What was run: ``vary`` (keys and values), ``run``, ``total_cases``, ``failed``
-        #: (case id, values, error of each case without a row), ``base`` (metadata of
-        #: the base case), wall time and threads.
+    def __init__(
+        self,
+        summary: Dict[str, Any],
+        keys: Sequence[str],
+        columns: Sequence[str],
+        case_ids: np.ndarray,
+        values: Sequence[Sequence[str]],
+        branches: Sequence[Optional[str]],
+        results: np.ndarray,
+        tables: Optional[Dict[str, Any]] = None,
+        headline: str = "",
+        documents: Optional[Dict[str, bytes]] = None,
+        warnings: Sequence[str] = (),
+        out: Optional[str] = None,
+        incomplete: Optional[str] = None,
+    ):
+        #: What was run (sweep.json): ``vary`` (keys and values), ``run``,
+        #: ``total_cases``, ``failed`` (case id, values, error of each case without a
+        #: row), ``base`` (metadata of the base case), modes and resonance crossings.
         self.summary: Dict[str, Any] = summary
         #: The varied keys, in the order given.
         self.keys: List[str] = list(keys)
@@ -427,9 +496,18 @@ class SweepResult:
         self.values: Dict[str, np.ndarray] = {
             k: _as_numbers([v[i] for v in values]) for i, k in enumerate(self.keys)
         }
+        #: The branch of each row of a continuation sweep (``"up"``/``"down"``), else None.
+        self.branches: List[Optional[str]] = list(branches)
         #: The results, shape (n, len(columns)); NaN where not finite.
         self.results: np.ndarray = results
         self.results.flags.writeable = False
+        #: The line the command line prints as its result.
+        self.headline: str = headline
+        #: The output folder written, or None.
+        self.out: Optional[Path] = None if out is None else Path(out)
+        #: Why the sweep is incomplete (failed cases), or None.
+        self.incomplete: Optional[str] = incomplete
+        self.warnings: List[str] = list(warnings)
 
     def __getitem__(self, name: str) -> np.ndarray:
         """A varied key's values or a result column, e.g. ``s["dte_max_um"]``."""

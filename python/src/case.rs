@@ -4,6 +4,7 @@
 
 use crate::convert::{py_to_toml, toml_to_py};
 use crate::errors::case_error;
+use crate::errors::config_error;
 use gearwear::config::schema::{spec, KEYS};
 use gearwear::config::{commented_template, load_case, Case as LibCase};
 use gearwear::io::input::MAX_CASE_BYTES;
@@ -39,7 +40,7 @@ fn tree(c: &LibCase) -> toml::Table {
 fn load(py: Python<'_>, text: &str, sets: &[String]) -> PyResult<Case> {
     load_case(text, sets)
         .map(|inner| Case { inner })
-        .map_err(|e| case_error(py, &e.problems))
+        .map_err(|e| config_error(py, &e.problems))
 }
 
 /// Whether a string is TOML text rather than a file name: it has a line break, a `=` or

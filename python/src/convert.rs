@@ -1,11 +1,14 @@
 //! Conversions between the library's values and Python objects: JSON summaries to dicts,
-//! TOML values both ways, report tables to numpy arrays. Nothing else.
+//! TOML values both ways, report tables to numpy arrays, a job's outcome to a dict of
+//! named fields, input tables from numpy columns. Nothing else.
 
+use gearwear::app::{Outcome, SweepOutput, TableSource};
 use gearwear::io::Table;
-use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyList, PyMapping, PyString};
+use pyo3::types::{PyBool, PyBytes, PyDict, PyList, PyMapping, PyString};
+use std::path::PathBuf;
 
 /// A JSON value as the Python object `json.loads` would give for its text (the same
 /// floats: serde_json writes the shortest round-trip form, so this is exact). Written by
@@ -201,4 +204,82 @@ pub fn matrix_to_py<'py>(
     let n = rows.len();
     let flat: Vec<f64> = rows.into_iter().flatten().collect();
     PyArray1::from_vec(py, flat).reshape([n, n_cols])
+}
+
+/// A job's outcome as a dict: `summary`, `tables`, `headline`, `documents` (file name ->
+/// bytes: the report, the figures' PNGs when rendered), `warnings`, `out` (the folder
+/// written, or None) and `incomplete` (why the result is incomplete, or None).
+pub fn outcome_to_py<'py>(
+    py: Python<'py>,
+    o: Outcome,
+    warnings: Vec<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let a = o.artifacts;
+    let d = PyDict::new(py);
+    d.set_item("summary", json_to_py(py, &a.summary)?)?;
+    let docs = PyDict::new(py);
+    for (name, bytes) in &a.documents {
+        docs.set_item(name, PyBytes::new(py, bytes))?;
+    }
+    // A figure rendered for a report has its PNG: the same bytes the folder gets.
+    for f in &a.figures {
+        if let Some(png) = &f.png {
+            docs.set_item(&f.path, PyBytes::new(py, png))?;
+        }
+    }
+    d.set_item("tables", tables_to_py(py, a.tables)?)?;
+    d.set_item("headline", a.headline)?;
+    d.set_item("documents", docs)?;
+    d.set_item("warnings", warnings)?;
+    d.set_item("out", o.published)?;
+    d.set_item("incomplete", o.incomplete)?;
+    Ok(d)
+}
+
+/// A sweep's output as a dict: the outcome's fields (`summary` is sweep.json's content)
+/// and the table: `keys`, `columns`, `case_ids`, `values` (the labels of the varied
+/// values, a list per row), `branches` (per row, or None), `results` (rows x columns).
+pub fn sweep_to_py<'py>(
+    py: Python<'py>,
+    s: SweepOutput,
+    warnings: Vec<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let t = s.table;
+    let d = outcome_to_py(py, s.outcome, warnings)?;
+    let columns = t.columns();
+    let n_cols = columns.len();
+    let ids: Vec<f64> = t.rows.iter().map(|r| r.case_id as f64).collect();
+    let values: Vec<Vec<String>> = t.rows.iter().map(|r| r.values.clone()).collect();
+    let branches: Vec<Option<&str>> = t.rows.iter().map(|r| r.branch.map(|b| b.name())).collect();
+    let results = matrix_to_py(
+        py,
+        t.rows.iter().map(|r| r.results.values()).collect(),
+        n_cols,
+    )?;
+    d.set_item("keys", t.keys)?;
+    d.set_item("columns", columns)?;
+    d.set_item("case_ids", PyArray1::from_vec(py, ids))?;
+    d.set_item("values", values)?;
+    d.set_item("branches", branches)?;
+    d.set_item("results", results)?;
+    Ok(d)
+}
+
+/// An input table: a path (`str` or `os.PathLike`) to a CSV file, or `(names, columns)`
+/// with one 1-D float64 array per name (NaN: not measured).
+pub fn path_or_columns(obj: &Bound<'_, PyAny>) -> PyResult<TableSource> {
+    if let Ok((names, columns)) = obj.extract::<(Vec<String>, Vec<PyReadonlyArray1<'_, f64>>)>() {
+        let mut t = Table::new();
+        for (n, c) in names.iter().zip(columns) {
+            t = t.col(n, c.as_array().to_vec());
+        }
+        return Ok(TableSource::Columns(t));
+    }
+    match obj.extract::<PathBuf>() {
+        Ok(p) => Ok(TableSource::File(p)),
+        Err(_) => Err(PyTypeError::new_err(format!(
+            "expected a path to a CSV file or (column names, arrays), got {}",
+            obj.get_type().name()?
+        ))),
+    }
 }

@@ -1,8 +1,9 @@
 //! The exceptions of the package and the conversion of the library's errors to them.
 
 use crate::convert::toml_to_py;
+use gearwear::app::JobError;
 use gearwear::config::Problem as LibProblem;
-use gearwear::io::OutputError;
+use gearwear::remedy::{Arg, Words};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -12,8 +13,9 @@ create_exception!(
     gearwear,
     CaseError,
     PyValueError,
-    "The case is invalid. `problems` lists every problem (gearwear.Problem: key, value, \
-     valid, message), as the command line's exit-2 messages do."
+    "The input is invalid (the case, an argument, an input table). `problems` lists every \
+     problem (gearwear.Problem: key, value, valid, message), as the command line's exit-2 \
+     messages do."
 );
 create_exception!(
     gearwear,
@@ -108,53 +110,49 @@ pub fn case_error(py: Python<'_>, messages: &[String]) -> PyErr {
     build().unwrap_or_else(|e| e)
 }
 
-/// Why a study gave no result.
-#[derive(Debug)]
-pub enum Failure {
-    /// The case cannot be modelled (geometry, settings): `CaseError`.
-    Case(Vec<String>),
-    /// Another input is wrong (a transmission-error array, sweep axes): `ValueError`.
-    Input(String),
-    /// The output folder cannot be used: `OSError`.
-    Output(String),
-    /// Stopped by Ctrl-C (or a progress callback that raised).
-    Interrupted,
-    /// A solver failed: `StudyError`.
-    Failed(anyhow::Error),
-}
-
-/// The error a study's callbacks return once the study is told to stop (Ctrl-C).
-#[derive(Debug)]
-pub struct Interrupt;
-
-impl std::fmt::Display for Interrupt {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "interrupted")
+/// How Python spells a job's arguments in messages (`gearwear::remedy`): keyword
+/// arguments of the study functions, in backticks.
+pub fn spell(a: Arg) -> &'static str {
+    match a {
+        Arg::Override => "`Case.set`",
+        Arg::CaseFile => "`Case.from_toml`",
+        Arg::Out => "`out`",
+        Arg::Resume => "`resume`",
+        Arg::Vary => "`vary`",
+        Arg::Shard => "`shard`",
+        Arg::Continuation => "`continuation`",
+        Arg::SweepRun => "`run`",
+        Arg::TransmissionError => "`transmission_error`",
+        Arg::Observations => "`observations`",
+        Arg::Posterior => "`posterior`",
+        Arg::Samples => "`samples`",
+        Arg::Walkers => "`walkers`",
+        Arg::Steps => "`steps`",
+        Arg::CheckRuns => "`check_runs`",
+        Arg::GridPoints => "`grid_points`",
+        Arg::LimitUm => "`limit_um`",
+        Arg::Cycles => "`cycles`",
+        Arg::BudgetScale => "`budget_scale`",
+        Arg::NoBudget => "`budget_scale=math.inf`",
+        Arg::Inputs => "`inputs`",
+        Arg::Replace => "`replace=True`",
     }
 }
 
-impl std::error::Error for Interrupt {}
-
-impl From<anyhow::Error> for Failure {
-    fn from(e: anyhow::Error) -> Self {
-        if e.is::<Interrupt>() {
-            return Failure::Interrupted;
-        }
-        match e.downcast::<OutputError>() {
-            Ok(o) => Failure::Output(o.to_string()),
-            Err(e) => Failure::Failed(e),
-        }
-    }
+/// `CaseError` for the problems of a case (`ConfigError`), worded for Python.
+pub fn config_error(py: Python<'_>, problems: &[Words]) -> PyErr {
+    let m: Vec<String> = problems.iter().map(|w| w.render(spell)).collect();
+    case_error(py, &m)
 }
 
-impl Failure {
-    pub fn into_pyerr(self, py: Python<'_>) -> PyErr {
-        match self {
-            Failure::Case(p) => case_error(py, &p),
-            Failure::Input(m) => PyValueError::new_err(m),
-            Failure::Output(m) => PyOSError::new_err(m),
-            Failure::Interrupted => PyKeyboardInterrupt::new_err("study interrupted"),
-            Failure::Failed(e) => StudyError::new_err(format!("{e:#}")),
-        }
+/// A job's error as the Python exception: input problems as `CaseError` (a `ValueError`,
+/// every problem in `problems`), the output folder as `OSError`, a stop on request as
+/// `KeyboardInterrupt`, a solver failure as `StudyError`.
+pub fn job_error(py: Python<'_>, e: JobError) -> PyErr {
+    match e {
+        JobError::Input(_) => case_error(py, &e.messages(spell)),
+        JobError::Output(p) => PyOSError::new_err(p.render(spell)),
+        JobError::Cancelled => PyKeyboardInterrupt::new_err("study interrupted"),
+        JobError::Failed(e) => StudyError::new_err(format!("{e:#}")),
     }
 }

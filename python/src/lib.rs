@@ -1,18 +1,19 @@
 //! Python binding of gearwear (`import gearwear`): converts types, computes nothing.
 //!
 //! The native module `gearwear._gearwear`; the package `gearwear` (python/gearwear/)
-//! wraps its tuples in result objects. Layout: [`case`] (the `Case` class), [`studies`]
-//! (the study functions), [`worker`] (a study on its own thread: GIL released, progress,
-//! Ctrl-C), [`errors`] (exceptions), [`convert`] (JSON, TOML and tables to Python).
+//! wraps its dicts in result objects. Layout: [`case`] (the `Case` class), [`jobs`]
+//! (the study functions: arguments to a job of `gearwear::app`, the command line's
+//! jobs), [`worker`] (a job on its own thread: GIL released, progress, Ctrl-C),
+//! [`errors`] (exceptions, and how messages spell the arguments), [`convert`] (JSON,
+//! TOML, tables and outcomes to Python, input tables from Python).
 
 use pyo3::prelude::*;
 
-mod budget;
 mod case;
 mod convert;
 mod errors;
+mod jobs;
 mod pool;
-mod studies;
 mod worker;
 
 /// Every key of a case file: `[{key, unit, valid, doc, default}]` (docs/CONFIG.md).
@@ -47,11 +48,16 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CaseError", py.get_type::<errors::CaseError>())?;
     m.add("StudyError", py.get_type::<errors::StudyError>())?;
     m.add_function(wrap_pyfunction!(keys, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::stiffness, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::dynamics, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::wear, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::run, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(studies::_time_rust_dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::wear, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::run, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::sweep_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::calibrate, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::predict, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::predict_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::_time_rust_dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(worker::_running_jobs, m)?)?;
     Ok(())
 }

@@ -1,58 +1,74 @@
-//! Running a study from Python: on a thread of rayon's pool with the GIL released, while the
-//! calling thread waits, calls the progress callback and watches for Ctrl-C.
+//! Running a job from Python: on a thread of a pool of its own (`pool`: built with fewer
+//! threads when the system refuses them, replaced after an interrupted call) with the GIL
+//! released, while the calling thread waits, calls the progress callback and watches for
+//! Ctrl-C.
 //!
 //! Why a thread: Python runs signal handlers (KeyboardInterrupt) only on its main thread,
-//! and only when that thread checks for them; the study's own updates happen on rayon's
-//! threads. So the caller waits in short slices (`POLL`), checks for signals between
+//! and only when that thread checks for them; the job's own updates happen on the
+//! pool's threads. So the caller waits in short slices (`POLL`), checks for signals between
 //! them, and calls the progress callable itself (Python code only ever runs on the
-//! calling thread). On Ctrl-C it sets the stop flag, which the study's per-update callback
-//! turns into an error that ends the study at its next update; it waits up to `GRACE` for
+//! calling thread). The job's observer ([`Ctx`]) sends progress here, keeps its warnings,
+//! and tells the job to stop once asked: on Ctrl-C the caller sets the stop flag, which
+//! the job sees at its next update (`Observer::cancelled`); it waits up to `GRACE` for
 //! that, then raises KeyboardInterrupt. A single evaluation has no update to stop at: if
 //! it is still running after `GRACE`, the caller returns all the same and the evaluation
 //! finishes in the background, its result dropped.
 
-use crate::errors::{Failure, Interrupt};
+use crate::errors::job_error;
+use gearwear::app::{Job, JobError, Observer, Task};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
+
+/// Jobs running now, including those whose caller has returned (an interrupted single
+/// evaluation finishing in the background).
+static RUNNING: AtomicUsize = AtomicUsize::new(0);
+
+/// Number of jobs still running on the pool (see [`RUNNING`]).
+#[pyfunction]
+pub fn _running_jobs() -> usize {
+    RUNNING.load(Ordering::Relaxed)
+}
 
 /// Longest wait between two checks for Ctrl-C.
 const POLL: Duration = Duration::from_millis(20);
-/// How long an interrupted study gets to stop before control returns anyway.
+/// How long an interrupted job gets to stop before control returns anyway.
 const GRACE: Duration = Duration::from_millis(500);
 
 enum Msg<T> {
     Progress(&'static str, f64, f64),
-    Done(Result<T, Failure>),
+    Done(Result<T, JobError>),
 }
 
-/// What the study's thread holds: where to send progress, and whether to stop.
-pub struct Ctx<T> {
-    tx: Sender<Msg<T>>,
+/// The job's observer: where to send progress, the warnings, and whether to stop.
+struct Ctx<T> {
+    tx: Mutex<Sender<Msg<T>>>,
     stop: Arc<AtomicBool>,
     progress: bool,
+    warnings: Mutex<Vec<String>>,
 }
 
-impl<T> Ctx<T> {
-    /// Whether the study was told to stop.
-    pub fn stopped(&self) -> bool {
-        self.stop.load(Ordering::Relaxed)
+impl<T: Send> Observer for Ctx<T> {
+    fn advance(&self, task: &Task, done: f64, _status: &str) {
+        if self.progress {
+            if let Ok(tx) = self.tx.lock() {
+                // The receiver is gone only when the caller has returned: nothing to report to.
+                let _ = tx.send(Msg::Progress(task.id, done, task.total));
+            }
+        }
     }
 
-    /// After each update: report progress (`what`, done, total) and stop the study (an
-    /// [`Interrupt`] error) once told to.
-    pub fn update(&self, what: &'static str, done: f64, total: f64) -> anyhow::Result<()> {
-        if self.stopped() {
-            return Err(Interrupt.into());
+    fn warning(&self, text: &str) {
+        if let Ok(mut w) = self.warnings.lock() {
+            w.push(text.to_owned());
         }
-        if self.progress {
-            // The receiver is gone only when the caller has returned: nothing to report to.
-            let _ = self.tx.send(Msg::Progress(what, done, total));
-        }
-        Ok(())
+    }
+
+    fn cancelled(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
     }
 }
 
@@ -66,7 +82,7 @@ fn recv<T: Send>(
     py.detach(move || (rx.recv_timeout(wait), rx))
 }
 
-/// Tell the study to stop and give it `GRACE` to do so; if it has not ended by then, its
+/// Tell the job to stop and give it `GRACE` to do so; if it has not ended by then, its
 /// pool is abandoned to it (`pool::abandon`), so the next call does not wait behind it.
 fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Msg<T>>) {
     stop.store(true, Ordering::Relaxed);
@@ -84,37 +100,44 @@ fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Ms
 }
 
 /// Run `job` on its own thread with the GIL released (see the module docs); `progress`
-/// is called as `progress(what, done, total)` on the calling thread.
-pub fn run_study<T, F>(py: Python<'_>, progress: Option<Bound<'_, PyAny>>, job: F) -> PyResult<T>
-where
-    T: Send + 'static,
-    F: FnOnce(&Ctx<T>) -> Result<T, Failure> + Send + 'static,
-{
-    let (tx, mut rx) = channel();
+/// is called as `progress(task, done, total)` on the calling thread. Returns the job's
+/// output and its warnings.
+pub fn run_job<J: Job + 'static>(
+    py: Python<'_>,
+    job: J,
+    progress: Option<Bound<'_, PyAny>>,
+) -> PyResult<(J::Output, Vec<String>)> {
+    let (tx, mut rx) = channel::<Msg<(J::Output, Vec<String>)>>();
     let stop = Arc::new(AtomicBool::new(false));
     let ctx = Ctx {
-        tx,
+        tx: Mutex::new(tx),
         stop: stop.clone(),
         progress: progress.is_some(),
+        warnings: Mutex::new(Vec::new()),
     };
-    // On rayon's pool rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
+    // On a pool (`pool`) rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
     // 5-10 % of a dynamics call. A panic is caught here (rayon would abort the process)
     // and becomes an error of the call.
     let pool = crate::pool::current().map_err(PyRuntimeError::new_err)?;
+    RUNNING.fetch_add(1, Ordering::Relaxed);
     pool.spawn(move || {
-        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&ctx)))
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.run(&ctx)))
             .unwrap_or_else(|_| {
-                Err(Failure::Failed(anyhow::anyhow!(
+                Err(JobError::Failed(anyhow::anyhow!(
                     "the study panicked (a bug: please report it)"
                 )))
             });
-        let _ = ctx.tx.send(Msg::Done(r));
+        let warnings = ctx.warnings.lock().map(|w| w.clone()).unwrap_or_default();
+        if let Ok(tx) = ctx.tx.lock() {
+            let _ = tx.send(Msg::Done(r.map(|o| (o, warnings))));
+        }
+        RUNNING.fetch_sub(1, Ordering::Relaxed);
     });
     loop {
         let (got, back) = recv(py, rx, POLL);
         rx = back;
         match got {
-            Ok(Msg::Done(r)) => return r.map_err(|f| f.into_pyerr(py)),
+            Ok(Msg::Done(r)) => return r.map_err(|e| job_error(py, e)),
             Ok(Msg::Progress(what, done, total)) => {
                 if let Some(cb) = &progress {
                     if let Err(e) = cb.call1((what, done, total)) {

@@ -69,3 +69,34 @@ def test_notebook_is_valid_and_runs(tmp_path, monkeypatch):
         "".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"
     )
     exec(compile(code, "notebook", "exec"), {"__name__": "__notebook__"})
+
+
+def test_dir_shows_the_public_api_only():
+    assert dir(gearwear) == sorted(gearwear.__all__)
+    for name in gearwear.__all__:
+        assert hasattr(gearwear, name), name
+    # Every study of the command line, each documented with its command.
+    for name, command in [("sweep_merge", "sweep-merge"), ("calibrate", "calibrate"),
+                          ("predict", "predict"), ("predict_merge", "predict-merge")]:
+        assert f"gearwear {command}" in getattr(gearwear, name).__doc__
+
+
+def test_results_are_named_objects_not_tuples():
+    case = gearwear.Case.paper()
+    s = gearwear.sweep(case, {"operating.input_speed_hz": [25, 30]})
+    assert isinstance(s, gearwear.SweepResult) and not isinstance(s, tuple)
+    assert s.keys == ["operating.input_speed_hz"] and s.branches == [None, None]
+    assert s.summary["rows"] == 2 and s.headline.startswith("sweep: 2 rows")
+    d = gearwear.dynamics(case)
+    assert isinstance(d, gearwear.DynamicsResult) and d.out is None and d.incomplete is None
+
+
+def test_the_run_budget_applies_and_is_raised_by_argument():
+    """The budget of the command line holds in Python too, named in Python's terms."""
+    big = gearwear.Case.paper().set("numerics.evaluated_mesh_periods", 1e5)
+    with pytest.raises(gearwear.CaseError) as e:
+        gearwear.dynamics(big)
+    msg = str(e.value)
+    assert "over its budget" in msg and "`budget_scale`" in msg and "--" not in msg
+    with pytest.raises(ValueError, match="budget_scale"):
+        gearwear.dynamics(gearwear.Case.paper(), budget_scale=0)

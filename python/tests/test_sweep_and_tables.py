@@ -65,3 +65,29 @@ def test_to_pandas_without_pandas_says_what_to_install(monkeypatch):
         d.to_pandas("mesh_stiffness")
     # Everything else works without it.
     assert d.table["stiffness_total_n_per_m"].shape == (720,)
+
+
+def test_sweep_to_a_folder_is_the_cli_sweep_and_merges(cli, tmp_path):
+    """With `out`, the sweep writes the command line's files (shards, case records), and
+    `sweep_merge` joins them as `gearwear sweep-merge` does."""
+    case = gw.Case.paper()
+    vary = {"operating.input_speed_hz": "20:40:10"}
+    for i in (1, 2):
+        gw.sweep(case, vary, out=tmp_path / "py", shard=f"{i}/2")
+    merged = gw.sweep_merge([tmp_path / "py"], out=tmp_path / "py_merged")
+    whole = gw.sweep(case, vary)
+    np.testing.assert_array_equal(merged.results, whole.results)
+    assert list(merged.case_ids) == [0, 1, 2]
+    ref = run_cli(cli, tmp_path, "sweep", case, "--vary", "operating.input_speed_hz=20:40:10")
+    assert (tmp_path / "py_merged" / "sweep.csv").read_text() == (ref / "sweep.csv").read_text()
+    # A rerun into the same folder skips every finished case.
+    again = gw.sweep(case, vary, out=tmp_path / "py", shard=(1, 2))
+    assert again.summary["skipped_finished"] == 2 and again.summary["computed"] == 0
+
+
+def test_continuation_from_python():
+    s = gw.sweep(gw.Case.paper(), {"operating.input_speed_hz": [30, 35]}, continuation="both")
+    assert s.branches == ["up", "up", "down", "down"]
+    with pytest.raises(gw.CaseError, match="`continuation`"):
+        gw.sweep(gw.Case.paper(), {"operating.input_speed_hz": [30, 35]}, run="wear",
+                 continuation="up")

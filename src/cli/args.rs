@@ -1,8 +1,7 @@
 //! Command-line arguments (clap derive).
 
 use crate::config::{load_case, Case};
-use crate::study::budget::{estimate, estimate_sweep, Budget, Job};
-use crate::study::sweep::{parse_vary, Shard, SweepPlan, SweepRun};
+use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -48,87 +47,6 @@ impl Cli {
     pub fn budget(&self) -> Option<Budget> {
         (!self.no_budget).then(|| Budget::scaled(self.budget_scale.unwrap_or(1.0)))
     }
-
-    /// Refuse, before anything is computed, a command whose case is over `budget`
-    /// (`study::budget`). Cases that do not load are left to the command's own messages.
-    pub fn check_budget(&self, budget: &Budget) -> Result<(), CliError> {
-        let (case, job) = match &self.command {
-            // These are estimated once their inputs are read (`prognostics::budget`, and
-            // the merges' inputs' sizes), in the commands.
-            Command::Config(_)
-            | Command::SweepMerge(_)
-            | Command::PredictMerge(_)
-            | Command::Calibrate(_)
-            | Command::Predict(_) => return Ok(()),
-            Command::Stiffness(a) => (&a.case, Job::Stiffness),
-            Command::Dynamics(a) => (&a.case, Job::Dynamics),
-            Command::Wear(a) => (
-                &a.case,
-                Job::Wear {
-                    dynamic: a.mode != WearModeArg::QuasiStatic,
-                    quasi_static: a.mode != WearModeArg::Dynamic,
-                },
-            ),
-            Command::Run(a) => (&a.case, Job::Run),
-            Command::Sweep(a) => return sweep_budget(a, budget),
-        };
-        match case.load() {
-            Ok(c) => estimate(&c, job).check(budget).map_err(CliError::input),
-            Err(_) => Ok(()),
-        }
-    }
-}
-
-/// A sweep against the budget, in milliseconds whatever its size
-/// (`study::budget::estimate_sweep`): its costliest case alone, and its shard's cases
-/// together. Cases that do not load are left to the sweep's own messages.
-fn sweep_budget(a: &SweepArgs, budget: &Budget) -> Result<(), CliError> {
-    let Ok(text) = a.case.text() else {
-        return Ok(());
-    };
-    let axes: Result<Vec<_>, _> = a.vary.iter().map(|v| parse_vary(v)).collect();
-    let Some(plan) = axes.ok().and_then(|x| SweepPlan::new(x).ok()) else {
-        return Ok(());
-    };
-    let job = Job::SweepCase(match a.run {
-        SweepRunArg::Dynamics => SweepRun::Dynamics,
-        SweepRunArg::Wear => SweepRun::Wear,
-    });
-    let shard = match &a.shard {
-        Some(s) => match Shard::parse(s) {
-            Ok(s) => s,
-            Err(_) => return Ok(()), // the sweep reports a bad --shard itself
-        },
-        None => Shard::ALL,
-    };
-    let axes: Vec<(String, Vec<String>)> = plan
-        .axes
-        .iter()
-        .map(|x| (x.key.clone(), x.values.clone()))
-        .collect();
-    let load = |extra: &[String]| {
-        let mut sets = a.case.set.clone();
-        sets.extend_from_slice(extra);
-        load_case(&text, &sets).ok()
-    };
-    let cases = plan
-        .len()
-        .saturating_sub(shard.index - 1)
-        .div_ceil(shard.count);
-    let Some(e) = estimate_sweep(&load, &axes, job, cases, rayon::current_num_threads()) else {
-        return Ok(());
-    };
-    e.worst_case.check(budget).map_err(|m| {
-        CliError::input(format!(
-            "the sweep's costliest case ({}): {m}",
-            e.worst_overrides.join(", ")
-        ))
-    })?;
-    e.total.check(budget).map_err(|m| {
-        CliError::input(format!(
-            "the sweep of {cases} case(s) as one run: {m}; or split it with --shard I/N (each shard is one run)"
-        ))
-    })
 }
 
 #[derive(Debug, Subcommand)]
@@ -173,6 +91,7 @@ impl CaseArgs {
     pub fn text(&self) -> Result<String, CliError> {
         use crate::io::input::{read_input_text, MAX_CASE_BYTES};
         match &self.config {
+            // Only a regular file of bounded size (a FIFO or a device is refused at once).
             Some(p) => read_input_text(p, "case file", MAX_CASE_BYTES)
                 .map_err(|e| CliError::input(format!("--config {e}"))),
             None => Ok(String::new()),

@@ -1,12 +1,9 @@
-//! Errors of a command, and the exit code each maps to.
+//! Errors of a command, worded with the command line's flags, and the exit code each maps
+//! to.
 
+use crate::app::JobError;
 use crate::config::ConfigError;
-use crate::geometry::GeometryError;
-use crate::io::checkpoint::CheckpointError;
-use crate::io::lock::LockError;
-use crate::io::transmission_error::TransmissionErrorInput;
-use crate::io::OutputError;
-use crate::report::artifacts::WriteError;
+use crate::remedy::Arg;
 use std::fmt;
 
 #[derive(Debug)]
@@ -16,6 +13,34 @@ pub enum CliError {
     Input(Vec<String>),
     /// The run failed for another reason (a solver that did not converge): exit code 1.
     Failed(anyhow::Error),
+}
+
+/// How the command line spells a job's arguments in messages (`crate::remedy`).
+pub fn flag(a: Arg) -> &'static str {
+    match a {
+        Arg::Override => "--set",
+        Arg::CaseFile => "--config",
+        Arg::Out => "--out",
+        Arg::Resume => "--resume",
+        Arg::Vary => "--vary",
+        Arg::Shard => "--shard",
+        Arg::Continuation => "--continuation",
+        Arg::SweepRun => "--run",
+        Arg::TransmissionError => "--transmission-error",
+        Arg::Observations => "--observations",
+        Arg::Posterior => "--posterior",
+        Arg::Samples => "--samples",
+        Arg::Walkers => "--walkers",
+        Arg::Steps => "--steps",
+        Arg::CheckRuns => "--check-runs",
+        Arg::GridPoints => "--grid-points",
+        Arg::LimitUm => "--limit-um",
+        Arg::Cycles => "--cycles",
+        Arg::BudgetScale => "--budget-scale",
+        Arg::NoBudget => "--no-budget",
+        Arg::Inputs => "input",
+        Arg::Replace => "--replace",
+    }
 }
 
 impl CliError {
@@ -47,73 +72,18 @@ impl fmt::Display for CliError {
     }
 }
 
-/// A setting's problem as the command line says it: the flag, then the message.
-pub fn flag_problem(p: &crate::prognostics::limits::Problem) -> String {
-    format!("--{}: {}", p.setting.replace('_', "-"), p.message)
-}
-
 impl From<ConfigError> for CliError {
     fn from(e: ConfigError) -> Self {
-        CliError::Input(e.problems)
+        CliError::Input(e.problems.iter().map(|w| w.render(flag)).collect())
     }
 }
 
-impl From<GeometryError> for CliError {
-    fn from(e: GeometryError) -> Self {
-        CliError::Input(e.0)
-    }
-}
-
-impl From<anyhow::Error> for CliError {
-    fn from(e: anyhow::Error) -> Self {
-        // An output problem raised inside a study's callback (a checkpoint write) is still
-        // the user's to fix.
-        match e.downcast::<OutputError>() {
-            Ok(o) => o.into(),
-            Err(e) => CliError::Failed(e),
-        }
-    }
-}
-
-/// Problems with the output folder name the path: exit 2.
-impl From<OutputError> for CliError {
-    fn from(e: OutputError) -> Self {
-        CliError::input(e.to_string())
-    }
-}
-
-impl From<LockError> for CliError {
-    fn from(e: LockError) -> Self {
+impl From<JobError> for CliError {
+    fn from(e: JobError) -> Self {
         match e {
-            LockError::OtherCommand { .. } => CliError::input(format!("{e} (--replace)")),
-            e => CliError::input(e.to_string()),
-        }
-    }
-}
-
-impl From<crate::io::InputError> for CliError {
-    fn from(e: crate::io::InputError) -> Self {
-        CliError::input(e.to_string())
-    }
-}
-
-impl From<CheckpointError> for CliError {
-    fn from(e: CheckpointError) -> Self {
-        CliError::input(e.to_string())
-    }
-}
-
-impl From<TransmissionErrorInput> for CliError {
-    fn from(e: TransmissionErrorInput) -> Self {
-        CliError::input(format!("--transmission-error {e}"))
-    }
-}
-
-impl From<WriteError> for CliError {
-    fn from(e: WriteError) -> Self {
-        match e {
-            WriteError::Output(o) => o.into(),
-            other => CliError::Failed(other.into()),
+            JobError::Input(_) | JobError::Output(_) => CliError::Input(e.messages(flag)),
+            JobError::Cancelled => CliError::Failed(anyhow::anyhow!("stopped on request")),
+            JobError::Failed(e) => CliError::Failed(e),
         }
     }
 }

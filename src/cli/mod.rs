@@ -1,5 +1,7 @@
-//! The `gearwear` command line. Thin: parses arguments, builds the model objects from a
-//! validated case, calls the solvers, hands results to the writers.
+//! The `gearwear` command line. Thin: each command parses its arguments into a job of
+//! the application layer (`crate::app`), runs it with a terminal observer (progress bars,
+//! warnings on standard error) and prints its headline; errors are worded with the
+//! command line's flags (`error::flag`).
 //!
 //! Exit codes: 0 success; 1 a run that failed on valid input (a solver); 2 bad input (the
 //! case, a file argument, the output folder, the budget); 3 the command ran to its end
@@ -24,18 +26,14 @@ mod error;
 mod output;
 mod predict_cmd;
 mod progress;
-mod resume;
 mod run_cmd;
 mod stiffness_cmd;
-mod stops;
 mod sweep_cmd;
-mod sweep_continuation;
-mod sweep_merge_cmd;
-mod sweep_records;
 mod wear_cmd;
 
 pub use args::{CaseArgs, Cli, Command};
-pub use error::CliError;
+pub use error::{flag, CliError};
+pub use progress::Terminal;
 
 use clap::Parser;
 use std::process::ExitCode;
@@ -46,7 +44,6 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
     output::set_replace(cli.replace);
-    output::set_budget(cli.budget());
     let pool = match crate::io::runtime::thread_pool() {
         Ok((pool, note)) => {
             if let Some(n) = note {
@@ -66,22 +63,19 @@ pub fn main() -> ExitCode {
 
 /// Run the command `cli` names; its exit code.
 fn run(cli: &Cli) -> u8 {
-    let budget = match cli.budget() {
-        Some(b) => cli.check_budget(&b),
-        None => Ok(()),
-    };
-    let result = budget.and_then(|()| match &cli.command {
+    let budget = cli.budget();
+    let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
-        Command::Stiffness(a) => stiffness_cmd::run(a),
-        Command::Dynamics(a) => dynamics_cmd::run(a),
-        Command::Wear(a) => wear_cmd::run(a),
-        Command::Run(a) => run_cmd::run(a),
-        Command::Sweep(a) => sweep_cmd::run(a),
-        Command::SweepMerge(a) => sweep_merge_cmd::merge(a),
-        Command::Calibrate(a) => calibrate_cmd::run(a),
-        Command::Predict(a) => predict_cmd::run(a),
-        Command::PredictMerge(a) => predict_cmd::merge(a),
-    });
+        Command::Stiffness(a) => stiffness_cmd::run(a, budget),
+        Command::Dynamics(a) => dynamics_cmd::run(a, budget),
+        Command::Wear(a) => wear_cmd::run(a, budget),
+        Command::Run(a) => run_cmd::run(a, budget),
+        Command::Sweep(a) => sweep_cmd::run(a, budget),
+        Command::SweepMerge(a) => sweep_cmd::merge(a, budget),
+        Command::Calibrate(a) => calibrate_cmd::run(a, budget),
+        Command::Predict(a) => predict_cmd::run(a, budget),
+        Command::PredictMerge(a) => predict_cmd::merge(a, budget),
+    };
     match result {
         Ok(()) => 0,
         Err(e) => {

@@ -2,18 +2,16 @@
 //! sharing and the quasi-static transmission error (paper Figure 2).
 
 use super::args::StiffnessArgs;
-use super::output::{build_model, finish, open_out};
+use super::output::execute;
 use super::CliError;
-use crate::io::RunMetadata;
-use crate::report::stiffness::stiffness_artifacts;
+use crate::app::StiffnessJob;
+use crate::study::budget::Budget;
 
-pub fn run(a: &StiffnessArgs) -> Result<(), CliError> {
-    let case = a.case.load()?;
-    let model = build_model(&case)?;
-    let out = open_out(&a.out, "stiffness")?;
-    finish(
-        out,
-        stiffness_artifacts(&model),
-        &RunMetadata::new("stiffness", &case),
-    )
+pub fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
+    execute(&StiffnessJob {
+        case: a.case.load()?,
+        out: Some(a.out.clone()),
+        replace: super::output::replace(),
+        budget,
+    })
 }

@@ -13,6 +13,9 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::teeth::{
+    FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
+};
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -30,6 +33,15 @@ pub struct Case {
     pub wear: WearSection,
     pub numerics: NumericsSection,
     pub calibration: CalibrationSection,
+    /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
+    #[serde(skip_serializing_if = "TeethSection::is_empty")]
+    pub teeth: TeethSection,
+    /// Profile modifications of every tooth (absent: true involutes).
+    #[serde(skip_serializing_if = "ModificationSection::is_empty")]
+    pub modification: ModificationSection,
+    /// Tooth faults (`[[fault]]` tables; none by default).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub fault: Vec<FaultSpec>,
 }
 
 /// Involute spur pair (paper Table 1).

@@ -2,7 +2,16 @@
 //! reference `docs/CONFIG.md` (`gearwear config --markdown`).
 
 use super::case::Case;
-use super::schema::KEYS;
+use super::schema::{KEYS, TABLE_ARRAYS};
+
+/// How the key reference shows the default of a key the default case leaves out: the
+/// per-tooth inputs are absent (perfect teeth), the others derived by the model.
+fn absent_default(section: &str) -> &'static str {
+    match section {
+        "teeth" | "modification" | "fault" => "(none)",
+        _ => "(derived)",
+    }
+}
 use toml::{Table, Value};
 
 fn tree_of(case: &Case) -> Table {
@@ -20,7 +29,13 @@ fn commented(case: &Case, header: &str) -> String {
     for s in KEYS {
         let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
         if section != current {
-            out.push_str(&format!("\n[{section}]\n"));
+            if TABLE_ARRAYS.contains(&section) {
+                out.push_str(&format!(
+                    "\n# [[{section}]]  (one table per {section}, none by default; uncomment to add one)\n"
+                ));
+            } else {
+                out.push_str(&format!("\n[{section}]\n"));
+            }
             current = section;
         }
         out.push_str(&format!(
@@ -73,6 +88,14 @@ const FORM: &str = "\
   (`gear = { module_mm = 3 }`) or dotted keys (`gear.module_mm = 3`): TOML defines the
   three as the same table, so they give the same case. Anything else in a section's place
   (a number, an array of tables `[[gear]]`) is an error, as are unknown sections and keys.
+- Tooth faults are the one array of tables: one `[[fault]]` table per fault, each with
+  `kind`, `gear`, `tooth` and its kind's own keys (below). An override
+  `--set fault.KEY=value` sets the key of the case's only fault (and makes one when there
+  is none), so a sweep can vary a fault's size; with several faults, write them in the
+  case file.
+- The per-tooth inputs (`[teeth]`, `[modification]`, `[[fault]]`) are absent by default:
+  the paper's perfect, identical teeth. Arrays of one value per tooth must have as many
+  values as the gear has teeth (an error names both numbers).
 - Number keys accept integers (`30`) and decimals (`30.0`); whole-number keys accept
   `25` and `25.0`, not `25.5`. Infinite, NaN and subnormal numbers (below 2.2e-308 in
   magnitude) are rejected everywhere, arrays included.
@@ -110,7 +133,7 @@ pub fn markdown_reference(case: &Case) -> String {
             .get(section)
             .and_then(|t| t.get(key))
             .map(|v| v.to_string())
-            .unwrap_or_else(|| "(derived)".into());
+            .unwrap_or_else(|| absent_default(section).into());
         out.push_str(&format!(
             "| `{}` | {} | `{}` | {} | {} | {} |\n",
             s.key,

@@ -1,4 +1,4 @@
-//! Reading a case: TOML text, `--set key=value` overrides, key and type checks, ranges.
+//! Reading a case: TOML text, `section.key=value` overrides, key and type checks, ranges.
 //!
 //! Every problem found becomes one line of [`ConfigError`]; nothing is computed from a
 //! case that has any.
@@ -9,19 +9,21 @@
 //!   them as the same table, so they are the same case. Anything else where a section
 //!   belongs (a number, an array of tables `[[gear]]`) is an error.
 //! - A whole-number key accepts `25` and `25.0`; a number key accepts `30` and `30.0`.
-//! - A `--set` value is one line: a newline or another control character in it is an
-//!   error (multi-line values belong in a `--config` file), never silently cut.
+//! - An override is one line: a newline or another control character in it is an error
+//!   (multi-line values belong in the case file), never silently cut.
 //! - Values echoed in messages are cut to [`SHOWN_CHARS`] characters with an ellipsis.
 
 use super::case::Case;
-use super::schema::{spec, Range, Valid, KEYS};
+use super::schema::{spec, KeySpec, Range, Valid, KEYS, TABLE_ARRAYS};
+use crate::remedy::{Arg, Words};
 use std::fmt;
 use toml::{Table, Value};
 
-/// All problems found in a case, one message each.
+/// All problems found in a case, one message each. A message about an override names
+/// the override argument through [`Words`], which each front end spells its own way.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConfigError {
-    pub problems: Vec<String>,
+    pub problems: Vec<Words>,
 }
 
 impl fmt::Display for ConfigError {
@@ -39,8 +41,19 @@ impl std::error::Error for ConfigError {}
 impl ConfigError {
     pub fn one(msg: impl Into<String>) -> Self {
         Self {
-            problems: vec![msg.into()],
+            problems: vec![Words::from(msg.into())],
         }
+    }
+
+    fn of(problems: Vec<String>) -> Self {
+        Self {
+            problems: problems.into_iter().map(Words::from).collect(),
+        }
+    }
+
+    /// The messages in plain words.
+    pub fn messages(&self) -> Vec<String> {
+        self.problems.iter().map(Words::to_string).collect()
     }
 }
 
@@ -63,31 +76,45 @@ fn show(v: &Value) -> String {
     }
 }
 
-/// Parse `section.key=value`; the value is read as TOML, or as a bare string.
-fn parse_override(text: &str) -> Result<(Vec<String>, Value), String> {
-    let shown = clip(text, SHOWN_CHARS);
-    if text.chars().any(char::is_control) {
-        return Err(format!(
-            "--set \"{}\": the value holds a line break or another control character; a --set value is one line (put multi-line values in a --config file)",
-            shown.escape_debug()
-        ));
-    }
-    let (key, raw) = text
-        .split_once('=')
-        .ok_or_else(|| format!("--set \"{shown}\": expected section.key=value"))?;
-    let key = key.trim();
+/// A value as an override reads it: one TOML value, or else the text as a bare string
+/// (`friction.model=none`).
+pub fn override_value(raw: &str) -> Value {
     let raw = raw.trim();
-    let path: Vec<String> = key.split('.').map(str::to_owned).collect();
-    if path.len() != 2 || path.iter().any(String::is_empty) {
-        return Err(format!("--set \"{shown}\": the key must be section.key"));
-    }
     // One value: exactly the table {v = ...}; anything else is a bare string.
-    let value = match toml::from_str::<Table>(&format!("v = {raw}")) {
+    match toml::from_str::<Table>(&format!("v = {raw}")) {
         Ok(t) if t.len() == 1 => t.get("v").cloned(),
         _ => None,
     }
-    .unwrap_or_else(|| Value::String(raw.into()));
-    Ok((path, value))
+    .unwrap_or_else(|| Value::String(raw.into()))
+}
+
+/// Parse `section.key=value`; the value is read as TOML, or as a bare string.
+fn parse_override(text: &str) -> Result<(Vec<String>, Value), Words> {
+    let shown = clip(text, SHOWN_CHARS);
+    let problem = |quoted: String, what: &str| {
+        Words::new()
+            .arg(Arg::Override)
+            .text(format!(" \"{quoted}\": {what}"))
+    };
+    if text.chars().any(char::is_control) {
+        return Err(problem(
+            shown.escape_debug().to_string(),
+            "the value holds a line break or another control character; each ",
+        )
+        .arg(Arg::Override)
+        .text(" is one line (put multi-line values in ")
+        .arg(Arg::CaseFile)
+        .text(")"));
+    }
+    let (key, raw) = text
+        .split_once('=')
+        .ok_or_else(|| problem(shown.clone(), "expected section.key=value"))?;
+    let key = key.trim();
+    let path: Vec<String> = key.split('.').map(str::to_owned).collect();
+    if path.len() != 2 || path.iter().any(String::is_empty) {
+        return Err(problem(shown, "the key must be section.key"));
+    }
+    Ok((path, override_value(raw)))
 }
 
 fn type_name(v: &Value) -> &'static str {
@@ -197,6 +224,10 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
             ));
             continue;
         }
+        if TABLE_ARRAYS.contains(&section.as_str()) {
+            check_table_array(section, value, problems);
+            continue;
+        }
         let Value::Table(table) = value else {
             problems.push(format!(
                 "[{name}] must be a table of keys (a [{name}] section or an inline table), not {}",
@@ -204,31 +235,101 @@ fn check_keys(user: &mut Table, problems: &mut Vec<String>) {
             ));
             continue;
         };
-        for (key, v) in table.iter_mut() {
-            let path = format!("{section}.{key}");
-            let Some(s) = spec(&path) else {
-                let valid: Vec<&str> = KEYS
-                    .iter()
-                    .filter(|s| s.key.starts_with(&format!("{section}.")))
-                    .map(|s| s.key)
-                    .collect();
+        check_table(section, table, "", problems);
+    }
+}
+
+/// Check the keys of one table of `section`, normalising and range-checking in place;
+/// `which` is appended to range problems (the entry of an array of tables).
+fn check_table(section: &str, table: &mut Table, which: &str, problems: &mut Vec<String>) {
+    for (key, v) in table.iter_mut() {
+        let path = format!("{section}.{key}");
+        let Some(s) = spec(&path) else {
+            problems.push(unknown_key(section, &path));
+            continue;
+        };
+        match normalise(&path, v, s.valid) {
+            Ok(()) => problems.extend(check_range(&path, v, s.valid).map(|p| p + which)),
+            Err(p) => problems.push(p),
+        }
+    }
+}
+
+/// Check an array-of-tables section (`[[fault]]`): every element a table whose keys are
+/// the section's schema keys, normalised and range-checked in place. A single table
+/// (`[fault]`) is taken as an array of one.
+fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String>) {
+    if let Value::Table(t) = value {
+        *value = Value::Array(vec![Value::Table(std::mem::take(t))]);
+    }
+    let Value::Array(items) = value else {
+        problems.push(format!(
+            "[[{section}]] must be tables of keys (`[[{section}]]` sections), not {}",
+            type_name(value)
+        ));
+        return;
+    };
+    for (i, item) in items.iter_mut().enumerate() {
+        let Value::Table(table) = item else {
+            problems.push(format!(
+                "[[{section}]] entry {i} must be a table of keys, not {}",
+                type_name(item)
+            ));
+            continue;
+        };
+        check_table(section, table, &format!(" ({section} {i})"), problems);
+        for required in ["kind", "gear", "tooth"] {
+            if !table.contains_key(required) {
                 problems.push(format!(
-                    "unknown key `{}`; valid keys in [{section}]: {}",
-                    clip(&path, SHOWN_CHARS),
-                    valid.join(", ")
+                    "`{section}.{required}` is required in every [[{section}]] table ({section} {i} has none)"
                 ));
-                continue;
-            };
-            match normalise(&path, v, s.valid) {
-                Ok(()) => problems.extend(check_range(&path, v, s.valid)),
-                Err(p) => problems.push(p),
             }
         }
     }
 }
 
+/// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
+/// the key of the section's only table, made when there is none. With several tables
+/// the override cannot say which one it means.
+fn set_table_array_value(
+    user: &mut Table,
+    section: &str,
+    key: &str,
+    value: Value,
+) -> Result<(), String> {
+    let entry = user
+        .entry(section.to_owned())
+        .or_insert_with(|| Value::Array(Vec::new()));
+    if let Value::Table(t) = entry {
+        *entry = Value::Array(vec![Value::Table(std::mem::take(t))]);
+    }
+    let Value::Array(items) = entry else {
+        return Err(format!("[[{section}]] is not an array of tables"));
+    };
+    if items.is_empty() {
+        items.push(Value::Table(Table::new()));
+    }
+    match items.as_mut_slice() {
+        [Value::Table(t)] => {
+            t.insert(key.to_owned(), value);
+            Ok(())
+        }
+        _ => Err(format!(
+            "the case has {} [[{section}]] tables: an override of `{section}.{key}` applies to a case with at most one (write the tables in the case file)",
+            items.len()
+        )),
+    }
+}
+
 /// Checks that involve more than one key of the case file itself.
 fn check_relations(case: &Case, problems: &mut Vec<String>) {
+    problems.extend(super::teeth::teeth_problems(
+        &case.teeth,
+        &case.modification,
+        &case.fault,
+        case.gear.teeth_pinion,
+        case.gear.teeth_gear,
+    ));
     let s = &case.surface;
     if s.roughness_table_wear_um.len() != s.roughness_table_rms_um.len() {
         problems.push(format!(
@@ -261,23 +362,17 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
     }
 }
 
-/// Merge the `--set` overrides into the user's tree.
-fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<String>) {
+/// Merge the overrides (`section.key=value` texts) into the user's tree.
+fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Words>) {
     for o in overrides {
         match parse_override(o) {
             Ok((path, value)) => {
-                let section = user
-                    .entry(path[0].clone())
-                    .or_insert_with(|| Value::Table(Table::new()));
-                match section {
-                    Value::Table(t) => {
-                        t.insert(path[1].clone(), value);
-                    }
-                    _ => problems.push(format!(
-                        "--set {}: [{}] is not a table",
-                        clip(o, SHOWN_CHARS),
-                        clip(&path[0], SHOWN_CHARS)
-                    )),
+                if let Err(e) = set_value(user, &path[0], &path[1], value) {
+                    problems.push(
+                        Words::new()
+                            .arg(Arg::Override)
+                            .text(format!(" {}: {e}", clip(o, SHOWN_CHARS))),
+                    )
                 }
             }
             Err(e) => problems.push(e),
@@ -326,22 +421,75 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     }
 }
 
-/// Build a case from TOML text (empty for the default) and `--set` overrides.
+/// Set `section.key` in the tree (the only table of an array-of-tables section); the
+/// problem when the section is not a table.
+fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result<(), String> {
+    if TABLE_ARRAYS.contains(&section) {
+        return set_table_array_value(user, section, key, value);
+    }
+    let entry = user
+        .entry(section.to_owned())
+        .or_insert_with(|| Value::Table(Table::new()));
+    match entry {
+        Value::Table(t) => {
+            t.insert(key.to_owned(), value);
+            Ok(())
+        }
+        _ => Err(format!("[{}] is not a table", clip(section, SHOWN_CHARS))),
+    }
+}
+
+/// Build a case from TOML text (empty for the default) and overrides (`section.key=value`
+/// texts: the command line's `--set`).
 ///
 /// Returns every problem at once; the case is only returned when there is none.
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
-    let mut problems = Vec::new();
     let mut user: Table = toml::from_str(toml_text).map_err(|e| {
         ConfigError::one(format!(
             "case file is not valid TOML{}",
             toml_error(&e, toml_text)
         ))
     })?;
+    let mut problems = Vec::new();
     apply_overrides(&mut user, overrides, &mut problems);
+    if !problems.is_empty() {
+        // Check the keys too, so every problem is reported at once.
+        let mut more = Vec::new();
+        check_keys(&mut user, &mut more);
+        problems.extend(more.into_iter().map(Words::from));
+        return Err(ConfigError { problems });
+    }
+    validate(user)
+}
+
+/// The case `base` with the typed `values` set (key, value as an override reads it),
+/// validated as [`load_case`] validates. A sweep builds its cases so: each value is typed
+/// once, when the sweep is planned, not read from text again for every case.
+pub fn case_with(base: &Case, values: &[(&str, Value)]) -> Result<Case, ConfigError> {
+    let mut user = match Value::try_from(base) {
+        Ok(Value::Table(t)) => t,
+        _ => return Err(ConfigError::one("the base case does not serialise")),
+    };
+    for (key, value) in values {
+        let (section, k) = key.split_once('.').unwrap_or((key, ""));
+        if *key == "operating.input_speed_rpm" {
+            // The base case's speed is in Hz: the varied speed in rpm replaces it.
+            if let Some(Value::Table(op)) = user.get_mut("operating") {
+                op.remove("input_speed_hz");
+            }
+        }
+        set_value(&mut user, section, k, value.clone()).map_err(ConfigError::one)?;
+    }
+    validate(user)
+}
+
+/// Key, type and range checks of a tree, then the case and the checks across keys.
+fn validate(mut user: Table) -> Result<Case, ConfigError> {
+    let mut problems = Vec::new();
     check_keys(&mut user, &mut problems);
     speed_in_rpm(&mut user, &mut problems);
     if !problems.is_empty() {
-        return Err(ConfigError { problems });
+        return Err(ConfigError::of(problems));
     }
     let case: Case = Value::Table(user)
         .try_into()
@@ -352,8 +500,40 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
     if problems.is_empty() {
         Ok(case)
     } else {
-        Err(ConfigError { problems })
+        Err(ConfigError::of(problems))
     }
+}
+
+/// Whether `key` is a key of the case file: its entry in the schema, or the problem as
+/// [`load_case`] words it (unknown section or key, with the valid ones).
+pub fn known_key(key: &str) -> Result<&'static KeySpec, String> {
+    if let Some(s) = spec(key) {
+        return Ok(s);
+    }
+    let (section, _) = key.split_once('.').unwrap_or((key, ""));
+    let valid_sections = sections();
+    if !valid_sections.contains(&section) {
+        return Err(format!(
+            "unknown section [{}]; valid sections: {}",
+            clip(section, SHOWN_CHARS),
+            valid_sections.join(", ")
+        ));
+    }
+    Err(unknown_key(section, key))
+}
+
+/// "unknown key `section.key`; valid keys in [section]: ...".
+fn unknown_key(section: &str, path: &str) -> String {
+    let valid: Vec<&str> = KEYS
+        .iter()
+        .filter(|s| s.key.starts_with(&format!("{section}.")))
+        .map(|s| s.key)
+        .collect();
+    format!(
+        "unknown key `{}`; valid keys in [{section}]: {}",
+        clip(path, SHOWN_CHARS),
+        valid.join(", ")
+    )
 }
 
 /// Validate every key of an already built case against the schema (used on defaults and
@@ -445,14 +625,11 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.problems.len(), 3, "{e}");
-        assert!(e
-            .problems
+        let m = e.messages();
+        assert!(m
             .iter()
             .any(|p| p.contains("gear.module_mm") && p.contains("-2")));
-        assert!(e
-            .problems
-            .iter()
-            .any(|p| p.contains("wear.coefficient_m2_per_n")));
+        assert!(m.iter().any(|p| p.contains("wear.coefficient_m2_per_n")));
     }
 
     #[test]

@@ -6,6 +6,7 @@ mod docs;
 pub mod load;
 pub mod problem;
 pub mod schema;
+pub mod teeth;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};

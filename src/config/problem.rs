@@ -94,7 +94,7 @@ mod tests {
         let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
         let e = load_case(toml, &sets).unwrap_err();
         assert_eq!(e.problems.len(), 1, "{e}");
-        Problem::from_message(&e.problems[0])
+        Problem::from_message(&e.problems[0].to_string())
     }
 
     #[test]

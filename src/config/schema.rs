@@ -162,6 +162,8 @@ use Valid::*;
 const MASS: Range = Range::closed(1e-4, 1e5);
 const INERTIA: Range = Range::closed(1e-10, 1e5);
 const BORE: Range = Range::closed(0.1, 1e4);
+/// Per-tooth errors and deviations, um.
+const TOOTH_ERROR: Range = Range::closed(-1000.0, 1000.0);
 
 /// Every key, in the order the template prints them.
 pub const KEYS: &[KeySpec] = &[
@@ -303,7 +305,75 @@ pub const KEYS: &[KeySpec] = &[
       "16 cells resolve a smooth posterior; the surrogate makes cells cheap, but 1e4 per parameter (1e8 for two) is beyond any use."),
     k("calibration.surrogate_nodes", "-", Int(2, 50), "Reference wear runs per uncertain parameter other than k (roughness factor, load torque); the surrogate interpolates linearly between them.",
       "Linear interpolation needs two; each node is a whole wear study, and 50 resolve any smooth response."),
+    k("teeth.pitch_error_pinion_um", "um", NumArray(TOOTH_ERROR), "Position (pitch) error of each pinion tooth, z1 values: how far its loaded flank stands ahead of its ideal position towards the gear (positive: earlier contact), an arc on the reference circle. The single pitch deviations of ISO 1328-1 are the differences of neighbours. Absent: perfect spacing (docs/MODEL.md, section 9).",
+      "A millimetre either way is far beyond the coarsest ISO 1328-1 class for any gear the model takes."),
+    k("teeth.pitch_error_gear_um", "um", NumArray(TOOTH_ERROR), "Position (pitch) error of each gear tooth, z2 values (positive towards the pinion).",
+      "As for the pinion."),
+    k("teeth.accuracy_grade", "-", Int(1, 12), "ISO 1328-1 flank tolerance class: pitch, profile slope and profile form errors not given explicitly are drawn (seeded) from its tolerances (docs/MODEL.md, section 9). Absent: none drawn.",
+      "ISO 1328-1:2013 defines classes 1 to 11; 12 is the 1995 edition's coarsest grade, one more step of sqrt(2)."),
+    k("teeth.error_seed", "-", Int(0, 1_000_000_000_000), "Seed of the random draw for `teeth.accuracy_grade` (absent: 0); the same seed gives the same teeth.",
+      "Any whole number up to 1e12."),
+    k("teeth.runout_pinion_um", "um", Num(Range::closed(0.0, 1000.0)), "Radial run-out F_r of the pinion (twice its eccentricity): a displacement along the line of action turning once per pinion revolution. Absent: 0.",
+      "A millimetre is far beyond any ISO 1328 class for the gears the model takes."),
+    k("teeth.runout_gear_um", "um", Num(Range::closed(0.0, 1000.0)), "Radial run-out F_r of the gear (twice its eccentricity). Absent: 0.",
+      "As for the pinion."),
+    k("teeth.runout_pinion_phase_deg", "deg", Num(Range::closed(-360.0, 360.0)), "Pinion rotation from the entry of its tooth 0 until its eccentricity points along the line of action towards the gear. Absent: 0.",
+      "One turn either way."),
+    k("teeth.runout_gear_phase_deg", "deg", Num(Range::closed(-360.0, 360.0)), "Gear rotation from the entry of its tooth 0 until its eccentricity points along the line of action towards the pinion. Absent: 0.",
+      "One turn either way."),
+    k("teeth.profile_slope_pinion_um", "um", NumArray(TOOTH_ERROR), "Profile slope deviation f_Halpha of the pinion teeth: linear along the active profile, positive adds material at the tip; one value for every tooth or z1 values.",
+      "As for the pitch errors."),
+    k("teeth.profile_slope_gear_um", "um", NumArray(TOOTH_ERROR), "Profile slope deviation f_Halpha of the gear teeth (one value or z2 values).",
+      "As for the pitch errors."),
+    k("teeth.profile_form_pinion_um", "um", NumArray(TOOTH_ERROR), "Profile form deviation f_falpha of the pinion teeth: a parabola along the active profile, positive bulges out at its middle; one value or z1 values.",
+      "As for the pitch errors."),
+    k("teeth.profile_form_gear_um", "um", NumArray(TOOTH_ERROR), "Profile form deviation f_falpha of the gear teeth (one value or z2 values).",
+      "As for the pitch errors."),
+    k("modification.tip_relief_um", "um", Num(Range::closed(0.0, 1000.0)), "Tip relief of every tooth of both gears: material removed at the tip (Tavakoli & Houser 1986). Absent: none.",
+      "Reliefs are tens of micrometres; a millimetre is beyond any design. Its length is checked against the addendum."),
+    k("modification.tip_relief_length_mm", "mm", Num(Range::above(0.0, 100.0)), "Length of the tip relief along the line of action (roll length), from the tip's contact point; at most the addendum's roll length (checked).",
+      "Checked against each gear's addendum with the geometry."),
+    k("modification.root_relief_um", "um", Num(Range::closed(0.0, 1000.0)), "Root relief of every tooth: material removed at the start of the active profile. Absent: none.",
+      "As for the tip relief."),
+    k("modification.root_relief_length_mm", "mm", Num(Range::above(0.0, 100.0)), "Length of the root relief along the line of action, from the start of the active profile; at most the active dedendum's roll length (checked).",
+      "Checked against each gear's active dedendum with the geometry."),
+    k("modification.shape", "-", Choice(&["linear", "parabolic"]), "Shape of the reliefs along their length (absent: \"linear\").",
+      "-"),
+    k("modification.profile_roll_pinion_deg", "deg", NumArray(Range::closed(0.0, 180.0)), "Roll angles (rho / r_b) of a user profile deviation of the pinion, ascending; with `modification.profile_deviation_pinion_um`.",
+      "Roll angles of an involute lie well inside half a turn."),
+    k("modification.profile_deviation_pinion_um", "um", NumArray(TOOTH_ERROR), "Profile deviation of every pinion tooth at those roll angles (material removed positive), linear in between, constant beyond.",
+      "As for the pitch errors."),
+    k("modification.profile_roll_gear_deg", "deg", NumArray(Range::closed(0.0, 180.0)), "Roll angles of a user profile deviation of the gear, ascending.",
+      "As for the pinion."),
+    k("modification.profile_deviation_gear_um", "um", NumArray(TOOTH_ERROR), "Profile deviation of every gear tooth at those roll angles (material removed positive).",
+      "As for the pitch errors."),
+    k("fault.kind", "-", Choice(&["crack", "spall", "broken_tip"]), "Kind of a tooth fault, one `[[fault]]` table each: a root crack (Chen & Shao 2011), a spall (Saxena et al. 2016) or a broken tip (docs/MODEL.md, section 9).",
+      "-"),
+    k("fault.gear", "-", Choice(&["pinion", "gear"]), "The gear whose tooth has the fault.",
+      "-"),
+    k("fault.tooth", "-", Int(0, 999), "0-based index of the faulty tooth (checked against the gear's teeth).",
+      "Teeth are numbered 0 to z - 1; z is at most 1000."),
+    k("fault.crack_depth_mm", "mm", Num(Range::closed(0.0, 100.0)), "Crack: depth from the root along its path (required for a crack); its reach across the tooth is checked against the root thickness.",
+      "Checked against the tooth with the geometry."),
+    k("fault.crack_angle_deg", "deg", Num(Range::above(0.0, 90.0)), "Crack: angle of its path to the tooth centreline (absent: 45, Chen & Shao 2011).",
+      "A crack along the centreline (0) removes nothing; 90 runs straight across the tooth."),
+    k("fault.crack_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Crack: share of the face width it has run across from one face, its depth falling to zero as a parabola there (absent: 1, through the face).",
+      "From a crack at one face to one through the whole face."),
+    k("fault.spall_position_mm", "mm", Num(Range::closed(-100.0, 100.0)), "Spall: roll distance of its centre from the pitch point along the profile, positive towards the tip (required for a spall).",
+      "Checked against the active profile with the geometry."),
+    k("fault.spall_length_mm", "mm", Num(Range::above(0.0, 100.0)), "Spall: length along the profile (roll length; required).",
+      "The spall must lie on the active profile (checked with the geometry)."),
+    k("fault.spall_depth_um", "um", Num(Range::above(0.0, 10_000.0)), "Spall: depth of the pit (required).",
+      "Pits are tens to hundreds of micrometres deep; 1 cm is beyond any tooth the model takes."),
+    k("fault.spall_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Spall: share of the face width it covers (absent: 1, across the whole face).",
+      "From a pit of no width to one across the face."),
+    k("fault.removed_height_mm", "mm", Num(Range::above(0.0, 100.0)), "Broken tip: radial height removed from the tip (required); at most the tooth's height above the root circle (checked).",
+      "Checked against the tooth with the geometry."),
 ];
+
+/// Sections written as arrays of tables (`[[fault]]`), each table keyed as the schema's
+/// `section.key` entries.
+pub const TABLE_ARRAYS: &[&str] = &["fault"];
 
 /// Look up a key's spec.
 pub fn spec(key: &str) -> Option<&'static KeySpec> {

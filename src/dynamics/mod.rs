@@ -4,14 +4,17 @@
 pub mod damped_modes;
 pub mod excitation;
 pub mod grid;
+pub mod hunting;
 pub mod integrator;
 pub mod modal;
 pub mod model;
 pub mod params;
 pub mod period;
 pub mod quasi_static;
+pub mod recorder;
 pub mod response;
 pub mod shooting;
 pub mod spectrum;
 pub mod steady;
 pub mod summary;
+pub mod tooth_mesh;

@@ -21,6 +21,7 @@
 
 use super::excitation::{ExternalError, PairGap};
 use super::params::DynamicParams;
+use super::tooth_mesh::ToothMesh;
 use crate::config::case::{LoadSharingModel, SpeedBoundary};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::HertzContact;
@@ -88,6 +89,10 @@ pub struct MeshState {
     pub force_unclipped_n: f64,
     /// Whether the mesh pushes (F given by its springs and damper) or not (F = 0).
     pub pushing: bool,
+    /// Mesh cycle of each pair (tooth-resolved mesh only; 0 otherwise).
+    pub cycle: [i64; MAX_PAIRS],
+    /// Share of the face width missing from each pair's contact line (a spall).
+    pub width_loss: [f64; MAX_PAIRS],
 }
 
 /// The elastic part of the mesh at one instant ([`GearSystem::springs`]).
@@ -110,6 +115,9 @@ pub struct MeshSprings {
     /// delta and d delta / dt (m, m/s).
     pub deflection_m: f64,
     pub deflection_rate_m_per_s: f64,
+    /// Mesh cycle of each pair and the share of its face width lost (tooth-resolved).
+    pub cycle: [i64; MAX_PAIRS],
+    pub width_loss: [f64; MAX_PAIRS],
 }
 
 /// The inputs a [`GearSystem`] is assembled from (borrowed model objects and the
@@ -129,6 +137,9 @@ pub struct GearSystemParts<'a> {
     pub roughness_um: f64,
     /// Effective modulus E* of the contact, Pa.
     pub effective_modulus_pa: f64,
+    /// The tooth-resolved mesh, when the teeth differ or are modified (None: every tooth
+    /// the paper's, with `gap`).
+    pub teeth: Option<&'a ToothMesh>,
 }
 
 /// The assembled model: immutable inputs for one dynamic evaluation. It holds no
@@ -298,6 +309,9 @@ impl<'a> GearSystem<'a> {
             sp.deflection_m += self.grad[i] * q[i];
             sp.deflection_rate_m_per_s += self.grad[i] * v[i];
         }
+        if let Some(tm) = self.parts.teeth {
+            return self.springs_resolved(tm, frame, t_s, sp);
+        }
         let phase = self.phase_at(t_s);
         let omega_nom = self.parts.params.pinion_speed_rad_s;
         let rb1 = self.parts.pair.pinion.base_radius_m;
@@ -326,6 +340,17 @@ impl<'a> GearSystem<'a> {
             }
             sp.n_pairs += 1;
         }
+        self.close_springs(sp, gap_rate_weighted, frozen)
+    }
+
+    /// The force of the touching pairs' springs and damper and whether the mesh pushes,
+    /// given their stiffness-weighted gap rate (N/s).
+    fn close_springs(
+        &self,
+        mut sp: MeshSprings,
+        gap_rate_weighted: f64,
+        frozen: Option<ContactMode>,
+    ) -> MeshSprings {
         // Mesh damping acts on the closing rate of the touching pairs (eq. 2, c_m term
         // with de_t/dt); the mesh cannot pull: F >= 0 (contact loss). Within a step of
         // frozen mode the laws continue smoothly past their switches (F may go slightly
@@ -337,6 +362,51 @@ impl<'a> GearSystem<'a> {
         }
         sp.pushing = k_touch > 0.0 && frozen.map_or(sp.force_unclipped_n > 0.0, |m| m.pushing);
         sp
+    }
+
+    /// [`GearSystem::springs`] of a tooth-resolved mesh: each pair's teeth from its mesh
+    /// cycle (`dynamics::tooth_mesh`), the run-out common to all pairs.
+    fn springs_resolved(
+        &self,
+        tm: &ToothMesh,
+        frame: ContactFrame,
+        t_s: f64,
+        mut sp: MeshSprings,
+    ) -> MeshSprings {
+        let phase = self.phase_at(t_s);
+        let omega_nom = self.parts.params.pinion_speed_rad_s;
+        let rb1 = self.parts.pair.pinion.base_radius_m;
+        let (e_ext, de_ext) = self.parts.external.at(phase);
+        let (e_run, de_run) = tm.runout_at(t_s);
+        let frozen = frame.mode;
+        let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
+        let cycle_now = self.parts.pair.mesh_cycle(decide);
+        let mut gap_rate_weighted = 0.0;
+        for (k, rho1) in self.parts.pair.pairs_in_contact_decided(phase, decide) {
+            let n = sp.n_pairs;
+            if n == MAX_PAIRS {
+                break;
+            }
+            let cycle = cycle_now - k as i64;
+            let pp = tm.pair(self.parts.mesh, cycle, rho1);
+            let gap = pp.gap_m - e_ext - e_run;
+            let c = sp.deflection_m - gap;
+            sp.rho1_m[n] = rho1;
+            sp.stiffness_n_per_m[n] = pp.stiffness_n_per_m;
+            sp.compression_m[n] = c;
+            sp.cycle[n] = cycle;
+            sp.width_loss[n] = pp.width_loss;
+            if frozen.map_or(c > 0.0, |m| m.touches(n)) {
+                let k = pp.stiffness_n_per_m;
+                sp.touching[n] = true;
+                sp.elastic_n += k * c;
+                sp.stiffness_touching_n_per_m += k;
+                gap_rate_weighted +=
+                    k * (pp.gap_slope * rb1 * omega_nom - de_ext * omega_nom - de_run);
+            }
+            sp.n_pairs += 1;
+        }
+        self.close_springs(sp, gap_rate_weighted, frozen)
     }
 
     /// Mesh state at time t for generalised displacements q and velocities v, the
@@ -360,6 +430,8 @@ impl<'a> GearSystem<'a> {
             } else {
                 0.0
             },
+            cycle: sp.cycle,
+            width_loss: sp.width_loss,
             ..MeshState::default()
         };
         let omega_p = self.parts.params.pinion_speed_rad_s + v[PHI_P];
@@ -405,7 +477,7 @@ impl<'a> GearSystem<'a> {
             let rho2 = self.parts.pair.rho_gear(rho1);
             let hz = HertzContact::with_modulus(
                 w,
-                self.parts.pair.face_width_m,
+                self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]),
                 rho1,
                 rho2,
                 self.parts.effective_modulus_pa,

@@ -1,9 +1,53 @@
 //! Lumped parameters of the 8-DOF model in SI units, built from the case
 //! (paper Table 2, units corrected as docs/PAPER_NOTES.md says), and the operating point.
 
-use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
+use crate::config::case::{Case, DynamicsSection, OperatingSection, SpeedBoundary, TorqueShaft};
 use crate::geometry::GearPair;
+use serde::Serialize;
 use std::f64::consts::PI;
+
+/// The nominal operating point of a pair: speed and torque on each shaft and the mesh
+/// frequency, computed once from the case's `[operating]` section and the pair
+/// ([`OperatingPoint::of`]) and used by the model, the checks of a case against its
+/// geometry (`study::domain`), the run budget and the reports.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct OperatingPoint {
+    /// Nominal pinion speed Omega_p = 2 pi f_in, rad/s.
+    pub pinion_speed_rad_s: f64,
+    /// Nominal gear speed Omega_g = Omega_p z1 / z2, rad/s.
+    pub gear_speed_rad_s: f64,
+    /// Load torque at the brake (gear shaft), N m: T_brk of paper eq. (1).
+    pub brake_torque_nm: f64,
+    /// The same load referred to the motor (pinion shaft), N m: r_pb / r_gb T_brk.
+    pub motor_torque_nm: f64,
+    /// Mesh frequency f_m = z1 f_in, Hz.
+    pub mesh_frequency_hz: f64,
+    /// Mean mesh force without friction, N: the load torque over the base radius of its
+    /// shaft (T_brk / r_gb = T_motor / r_pb; docs/MODEL.md, "Mean balance").
+    pub static_mesh_force_n: f64,
+}
+
+impl OperatingPoint {
+    /// The operating point of `op` on `pair`. The load torque on its shaft is moved to the
+    /// other through the base radii (the friction-free torque ratio, r_gb / r_pb).
+    pub fn of(op: &OperatingSection, pair: &GearPair) -> Self {
+        let rpb = pair.pinion.base_radius_m;
+        let rgb = pair.gear.base_radius_m;
+        let (motor_t, brake_t) = match op.load_torque_shaft {
+            TorqueShaft::Pinion => (op.load_torque_nm, op.load_torque_nm * rgb / rpb),
+            TorqueShaft::Gear => (op.load_torque_nm * rpb / rgb, op.load_torque_nm),
+        };
+        let omega_p = 2.0 * PI * op.input_speed_hz;
+        Self {
+            pinion_speed_rad_s: omega_p,
+            gear_speed_rad_s: omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64,
+            brake_torque_nm: brake_t,
+            motor_torque_nm: motor_t,
+            mesh_frequency_hz: omega_p / (2.0 * PI) * pair.pinion.teeth as f64,
+            static_mesh_force_n: brake_t / rgb,
+        }
+    }
+}
 
 /// Parameters of paper eq. (1), SI: the lumped masses, inertias, bearing and coupling
 /// stiffness and damping of the case (already SI, units in their names), and the
@@ -14,37 +58,28 @@ pub struct DynamicParams {
     pub lumped: DynamicsSection<f64>,
     pub speed_boundary: SpeedBoundary,
     pub motor_slip_damping_nm_s_per_rad: f64,
-    /// Nominal pinion speed Omega_p, rad/s.
-    pub pinion_speed_rad_s: f64,
-    /// Nominal gear speed Omega_g = Omega_p z1 / z2, rad/s.
-    pub gear_speed_rad_s: f64,
-    /// Load torque at the brake (gear shaft), N m: T_brk of eq. (1).
-    pub brake_torque_nm: f64,
-    /// The same load referred to the motor (pinion shaft), N m: r_pb / r_gb T_brk.
-    pub motor_torque_nm: f64,
+    pub operating: OperatingPoint,
+}
+
+/// The solver reads the operating point's speeds and torques as `params.pinion_speed_rad_s`
+/// and so on; they are the [`OperatingPoint`]'s, stored once.
+impl std::ops::Deref for DynamicParams {
+    type Target = OperatingPoint;
+
+    fn deref(&self) -> &OperatingPoint {
+        &self.operating
+    }
 }
 
 impl DynamicParams {
     pub fn from_case(case: &Case, pair: &GearPair) -> Self {
         let d = &case.dynamics;
         let o = &case.operating;
-        let rpb = pair.pinion.base_radius_m;
-        let rgb = pair.gear.base_radius_m;
-        // The load torque on its shaft, moved to the other through the base radii
-        // (friction-free torque ratio).
-        let (motor_t, brake_t) = match o.load_torque_shaft {
-            TorqueShaft::Pinion => (o.load_torque_nm, o.load_torque_nm * rgb / rpb),
-            TorqueShaft::Gear => (o.load_torque_nm * rpb / rgb, o.load_torque_nm),
-        };
-        let omega_p = 2.0 * PI * o.input_speed_hz;
         Self {
             lumped: d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3)),
             speed_boundary: o.speed_boundary,
             motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
-            pinion_speed_rad_s: omega_p,
-            gear_speed_rad_s: omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64,
-            brake_torque_nm: brake_t,
-            motor_torque_nm: motor_t,
+            operating: OperatingPoint::of(o, pair),
         }
     }
 
@@ -63,11 +98,6 @@ impl DynamicParams {
     pub fn mesh_damping_n_s_per_m(&self, pair: &GearPair, mean_stiffness_n_per_m: f64) -> f64 {
         2.0 * self.lumped.mesh_damping_ratio
             * (mean_stiffness_n_per_m * self.equivalent_mesh_mass_kg(pair)).sqrt()
-    }
-
-    /// Mesh frequency f_m = z1 f_input, Hz.
-    pub fn mesh_frequency_hz(&self, pair: &GearPair) -> f64 {
-        self.pinion_speed_rad_s / (2.0 * PI) * pair.pinion.teeth as f64
     }
 }
 
@@ -88,6 +118,8 @@ mod tests {
         assert!((f_from_brake - 3360.6).abs() < 0.5, "{f_from_brake}");
         assert!((f_from_brake - f_from_motor).abs() < 1e-9);
         // Mesh frequency 19 x 30 Hz.
-        assert!((p.mesh_frequency_hz(&pair) - 570.0).abs() < 1e-9);
+        assert!((p.operating.mesh_frequency_hz - 570.0).abs() < 1e-9);
+        // The static mesh force is the same from either shaft's torque.
+        assert!((p.operating.static_mesh_force_n - f_from_brake).abs() < 1e-9);
     }
 }

@@ -139,6 +139,10 @@ pub enum PlanMode {
     /// the state and make the map jump by the size of the local errors, which a
     /// fixed-point iteration cannot converge through.
     Replay,
+    /// Along the plan, refined where the error test fails but without keeping the
+    /// refinements: the periods of a tooth-resolved mesh differ from the one the plan was
+    /// built on, and each period's own refinements would only add steps to the others.
+    ReplayFixed,
 }
 
 impl<'s, 'a> PeriodStepper<'s, 'a> {
@@ -184,6 +188,11 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             eps_t,
             counts: StepCounts::default(),
         })
+    }
+
+    /// The system stepped.
+    pub fn system(&self) -> &'s GearSystem<'a> {
+        self.sys
     }
 
     /// How the following periods choose their steps.
@@ -235,7 +244,8 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             while t < tb {
                 let rest = tb - t;
                 let mut target = tb;
-                let h = if self.plan_mode == PlanMode::Replay {
+                let replay = matches!(self.plan_mode, PlanMode::Replay | PlanMode::ReplayFixed);
+                let h = if replay {
                     while next_plan < self.plan.len() && t0 + self.plan[next_plan] <= t {
                         next_plan += 1;
                     }

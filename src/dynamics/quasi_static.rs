@@ -16,17 +16,24 @@ use super::model::{GearSystem, MeshState, MAX_PAIRS};
 use super::response::{DynamicResponse, PathSample, Signals};
 use crate::config::case::SpeedBoundary;
 
-/// Mesh deflection delta (m) with sum k_i max(delta - g_i, 0) = force (N), k_i > 0.
-/// Returns the smallest gap when the force is zero.
+/// Mesh deflection delta (m) with sum k_i max(delta - g_i, 0) = force (N), k_i >= 0
+/// (a pair of zero stiffness, a contact a broken tip removed, carries nothing). Returns
+/// the smallest gap when no pair can carry the force.
 pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
     let n = k.len();
     let mut order: [usize; MAX_PAIRS] = [0, 1, 2, 3];
     order[..n].sort_by(|a, b| gap[*a].total_cmp(&gap[*b]));
+    if k.iter().all(|k| *k <= 0.0) {
+        return gap.iter().fold(f64::INFINITY, |m, g| m.min(*g)).min(1.0);
+    }
     let (mut ksum, mut kg) = (0.0, 0.0);
     for j in 0..n {
         let i = order[j];
         ksum += k[i];
         kg += k[i] * gap[i];
+        if ksum <= 0.0 {
+            continue;
+        }
         let delta = (force_n + kg) / ksum;
         if j + 1 == n || delta <= gap[order[j + 1]] {
             return delta;
@@ -35,8 +42,23 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
     0.0
 }
 
-/// Equilibrium mesh state at mesh phase `phase_rad`.
+/// Equilibrium mesh state at mesh phase `phase_rad` (pinion rotation since t = 0: with a
+/// tooth-resolved mesh it also says which teeth meet, and the time the run-out has).
 pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
+    let omega_p = sys.parts.params.pinion_speed_rad_s;
+    let cycle = sys.parts.pair.mesh_cycle(phase_rad);
+    equilibrium_in_cycle(sys, phase_rad, cycle, phase_rad / omega_p)
+}
+
+/// As [`equilibrium`] at phase `phase_rad` of mesh cycle `cycle_now` (given, so that a
+/// node on a period boundary belongs to the cycle it opens whatever the round-off of
+/// the absolute phase), time `t_s` for the run-out.
+pub fn equilibrium_in_cycle(
+    sys: &GearSystem,
+    phase_rad: f64,
+    cycle_now: i64,
+    t_s: f64,
+) -> MeshState {
     let p = sys.parts.params;
     let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
     let rb1 = sys.parts.pair.pinion.base_radius_m;
@@ -45,18 +67,37 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
     let mut k = [0.0; MAX_PAIRS];
     let mut gap = [0.0; MAX_PAIRS];
     let mut n = 0;
-    for (_, rho1) in sys.parts.pair.pairs_in_contact(phase_rad) {
+    let e_run = sys.parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
+    for (pair_k, rho1) in sys.parts.pair.pairs_in_contact(phase_rad) {
         if n == MAX_PAIRS {
             break;
         }
         ms.rho1_m[n] = rho1;
-        k[n] = sys.parts.mesh.pair_stiffness_n_per_m(rho1);
-        gap[n] = sys.parts.gap.at(rho1).0 - e_ext;
+        match sys.parts.teeth {
+            None => {
+                k[n] = sys.parts.mesh.pair_stiffness_n_per_m(rho1);
+                gap[n] = sys.parts.gap.at(rho1).0 - e_ext;
+            }
+            Some(tm) => {
+                let cycle = cycle_now - pair_k as i64;
+                let pp = tm.pair(sys.parts.mesh, cycle, rho1);
+                k[n] = pp.stiffness_n_per_m;
+                gap[n] = pp.gap_m - e_ext - e_run;
+                ms.cycle[n] = cycle;
+                ms.width_loss[n] = pp.width_loss;
+            }
+        }
         ms.stiffness_n_per_m[n] = k[n];
         ms.stiffness_total_n_per_m += k[n];
         n += 1;
     }
     ms.n_pairs = n;
+    if k[..n].iter().all(|k| *k <= 0.0) {
+        // No pair can carry the load (a broken tip's removed contact in single contact):
+        // the quasi-static mesh has lost contact there.
+        ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], 0.0);
+        return ms;
+    }
     let (torque, on_gear) = match p.speed_boundary {
         SpeedBoundary::BrakeSpeedImposed => (p.motor_torque_nm, false),
         _ => (p.brake_torque_nm, true),
@@ -103,16 +144,26 @@ pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
     ms
 }
 
-/// Quasi-static response over one mesh period on the same grid as the dynamic solver.
+/// Quasi-static response over one mesh period on the same grid as the dynamic solver,
+/// or over the tooth-resolved mesh's period of several (`ToothMesh::periods`).
 pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
     let omega = sys.parts.params.pinion_speed_rad_s;
-    let nodes = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
+    let one = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
+    let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
+    let t_mesh = *one.last().unwrap_or(&0.0);
+    // Nodes as (cycle, time within it): each period's nodes but its last, then the end.
+    let mut nodes: Vec<(i64, f64)> = (0..periods as i64)
+        .flat_map(|c| one[..one.len() - 1].iter().map(move |t| (c, *t)))
+        .collect();
+    nodes.push((periods as i64 - 1, t_mesh));
+    let abs = |(c, t): (i64, f64)| c as f64 * t_mesh + t;
+    let at = |node: (i64, f64)| equilibrium_in_cycle(sys, sys.phase_at(node.1), node.0, abs(node));
     let mut sig = Signals::default();
     let mut path = Vec::with_capacity(2 * nodes.len());
-    for t in &nodes[..nodes.len() - 1] {
-        let phase = sys.phase_at(*t);
-        let ms = equilibrium(sys, phase);
-        sig.time_s.push(*t);
+    for node in &nodes[..nodes.len() - 1] {
+        let (t, phase) = (abs(*node), sys.phase_at(node.1));
+        let ms = at(*node);
+        sig.time_s.push(t);
         sig.phase_rad.push(phase);
         sig.dte_m.push(ms.deflection_m);
         sig.mesh_force_n.push(ms.force_n);
@@ -130,11 +181,12 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
     // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).
     let (mut fi, mut di) = (0.0, 0.0);
     for w in nodes.windows(2) {
-        let ms = equilibrium(sys, sys.phase_at(0.5 * (w[0] + w[1])));
-        fi += ms.force_n * (w[1] - w[0]);
-        di += ms.deflection_m * (w[1] - w[0]);
+        let (a, b) = (w[0], (w[0].0, w[1].1 + (w[1].0 - w[0].0) as f64 * t_mesh));
+        let ms = at((a.0, 0.5 * (a.1 + b.1)));
+        fi += ms.force_n * (b.1 - a.1);
+        di += ms.deflection_m * (b.1 - a.1);
     }
-    let period = *nodes.last().unwrap_or(&1.0);
+    let period = abs(*nodes.last().unwrap_or(&(0, 1.0)));
     DynamicResponse {
         mean_mesh_force_n: fi / period,
         mean_dte_m: di / period,
@@ -142,7 +194,8 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
         path,
         periods_to_converge: 0,
         periodicity_error: 0.0,
-        mesh_period_s: *nodes.last().unwrap_or(&0.0),
+        mesh_period_s: t_mesh,
+        excitation_periods: periods,
         ..Default::default()
     }
 }

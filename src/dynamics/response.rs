@@ -18,6 +18,9 @@ pub struct PathSample {
     /// Pinion and gear surface speeds perpendicular to the line of action, m/s.
     pub pinion_surface_speed_m_per_s: f64,
     pub gear_surface_speed_m_per_s: f64,
+    /// Mesh cycle of the pair (tooth-resolved mesh; 0 otherwise): its teeth and its
+    /// engagement within the excitation period.
+    pub cycle: i64,
 }
 
 impl PathSample {
@@ -40,6 +43,7 @@ impl PathSample {
                 friction_n: ms.friction_n[i],
                 pinion_surface_speed_m_per_s: omega_pinion_rad_s * rho1,
                 gear_surface_speed_m_per_s: omega_gear_rad_s * (loa_length_m - rho1),
+                cycle: ms.cycle[i],
             });
         }
     }
@@ -96,6 +100,9 @@ pub struct DynamicResponse {
     /// scales (`period::state_scales`): how periodic the recorded window is.
     pub periodicity_error: f64,
     pub mesh_period_s: f64,
+    /// Mesh periods after which the response repeats: 1 when every tooth is alike, else
+    /// the tooth-resolved mesh's period (`ToothMesh::periods`, lcm(z1, z2) at most).
+    pub excitation_periods: usize,
     /// Time means over the evaluated window by the midpoint rule on the step midpoints
     /// (second order; the mesh force jumps at mesh events, which lie on grid nodes, so a
     /// trapezoid on the nodes would split each jump and be first order only).
@@ -173,5 +180,6 @@ pub fn interpolate_path(path: &[PathSample], rho1_m: f64) -> PathSample {
             b.pinion_surface_speed_m_per_s,
         ),
         gear_surface_speed_m_per_s: l(a.gear_surface_speed_m_per_s, b.gear_surface_speed_m_per_s),
+        cycle: a.cycle,
     }
 }

@@ -10,12 +10,12 @@
 //! the state over that period) is reported.
 
 use super::grid::period_nodes;
-use super::model::{ContactFrame, ContactMode, GearSystem, MeshState, State, NDOF};
-use super::period::{
-    state_scales, PeriodObserver, PeriodStepper, PlanMode, StepCounts, StepFailure,
-};
-use super::response::{DynamicResponse, PathSample, Signals};
+use super::model::{GearSystem, State};
+use super::period::{state_scales, PeriodStepper, PlanMode, StepCounts, StepFailure};
+use super::recorder::Recorder;
+use super::response::DynamicResponse;
 use super::shooting::{scaled_max, Reduction, Shooting};
+use nalgebra::DVector;
 
 /// Numerical settings of a steady-state evaluation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,237 +67,178 @@ pub fn solve_steady_state(
 
 /// As [`solve_steady_state`], starting at mesh phase 0 from `start` (a state at a
 /// mesh-period boundary, e.g. [`DynamicResponse::end_state`] of a neighbouring case)
-/// instead of the static equilibrium.
+/// instead of the static equilibrium. A tooth-resolved mesh whose teeth differ repeats
+/// only over several mesh periods: its steady state is found over those
+/// ([`super::hunting`]).
 pub fn solve_steady_state_from(
     sys: &GearSystem,
     settings: &SteadyStateSettings,
     start: Option<&[f64; 16]>,
 ) -> Result<DynamicResponse, DynamicsError> {
-    let nodes = period_nodes(
-        sys.parts.pair,
-        sys.parts.params.pinion_speed_rad_s,
-        settings.steps_per_mesh_period,
-    );
-    let mut ps = PeriodStepper::new(sys, nodes, settings.integration_tolerance)
-        .map_err(|e| DynamicsError::Setting(e.to_string()))?;
-    let period = ps.period();
-    let template = match start {
-        Some(s) => State::from_column_slice(s),
-        None => sys.static_equilibrium(),
-    };
-    let red = Reduction::new(sys);
-    let scales = state_scales(sys);
-    let red_scales = red.scales(&scales);
-    let mut shooting = Shooting::new(sys, &red, period, &scales);
-    let mut z = red.reduce(&template);
-    let mut distance = f64::INFINITY;
-    let mut periods = 0;
-    // The last period integrated, recorded when it was likely to be the last one
-    // needed: the first from a warm start, or once the search is close.
-    let mut recorded: Option<(Recorder, State, State)> = None;
-    // Every period starts at t = 0: the one-period map is the same function in every
-    // iteration (the model depends on time through the mesh phase only).
-    while distance >= settings.tolerance {
-        if periods == settings.max_mesh_periods {
-            return Err(DynamicsError::NotPeriodic {
-                periods,
-                change: distance,
-                tolerance: settings.tolerance,
-            });
-        }
-        let y0 = red.embed(&z, &template);
-        let mut y = y0;
-        // Close to the orbit (or warm), fix the step sequence: build it once, then replay.
-        let close = distance < 1e-2 || (periods == 0 && start.is_some());
-        match ps.plan_mode() {
-            PlanMode::Free if close => ps.set_plan_mode(PlanMode::Build),
-            PlanMode::Build => ps.set_plan_mode(PlanMode::Replay),
-            _ => {}
-        }
-        let speculative =
-            distance < 100.0 * settings.tolerance || (periods == 0 && start.is_some());
-        if speculative {
-            let mut rec = Recorder::default();
-            ps.integrate(0.0, &mut y, &mut rec)?;
-            recorded = Some((rec, y0, y));
-        } else {
-            ps.integrate(0.0, &mut y, &mut ())?;
-            recorded = None;
-        }
-        periods += 1;
-        let (next, d) = shooting.next(&z, &red.reduce(&y));
-        z = next;
-        distance = d;
+    let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
+    if periods > 1 {
+        return super::hunting::solve_hunting(sys, settings, start, periods);
     }
+    let mut search = MeshPeriodSearch::new(sys, settings, start)?;
+    let recorded = search.run(settings, start.is_some(), true)?;
     let (rec, y_start, y_end) = match recorded {
         Some(r) => r,
         None => {
-            if ps.plan_mode() == PlanMode::Build {
-                ps.set_plan_mode(PlanMode::Replay);
-            }
-            let y0 = red.embed(&z, &template);
+            search.replay();
+            let y0 = search.start_state();
             let mut y = y0;
-            let mut rec = Recorder::default();
-            ps.integrate(0.0, &mut y, &mut rec)?;
+            let mut rec = Recorder::new(1);
+            search.ps.integrate(0.0, &mut y, &mut rec)?;
             (rec, y0, y)
         }
     };
-    let periodicity = scaled_max(&(red.reduce(&y_end) - red.reduce(&y_start)), &red_scales);
-    let n_eval = settings.evaluated_mesh_periods;
-    let (signals, path) = rec.window(period, n_eval, &y_start, &y_end);
-    let stats = ps.integrator_stats();
-    let StepCounts { accepted, .. } = ps.counts;
-    Ok(DynamicResponse {
-        signals,
-        path,
-        periods_to_converge: periods,
-        periodicity_error: periodicity,
-        mesh_period_s: period,
-        mean_mesh_force_n: rec.force_int / period,
-        mean_dte_m: rec.dte_int / period,
-        end_state: std::array::from_fn(|i| y_end[i]),
-        steps: accepted,
-        rhs_evaluations: stats.rhs_calls as usize,
-        factorizations: stats.lu_factorizations as usize,
-        step_counts: ps.counts,
-    })
+    let periodicity = search.distance_between(&y_start, &y_end);
+    let period = search.ps.period();
+    let (signals, path) = rec.window(period, settings.evaluated_mesh_periods, &y_start, &y_end);
+    Ok(search.response(signals, path, &rec, period, 1, periodicity, &y_end))
 }
 
-/// Change of the displacements over one period of the periodic orbit: the drift of the
-/// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise.
-fn drift(y_start: &State, y_end: &State) -> State {
-    let mut d = y_end - y_start;
-    for i in NDOF..2 * NDOF {
-        d[i] = 0.0;
-    }
-    d
+/// The search for the mesh-periodic orbit: quasi-Newton shooting on the one-period map
+/// (module docs), each iteration one period from t = 0 (so with a tooth-resolved mesh,
+/// the orbit of the teeth of mesh cycle 0 meeting again and again).
+pub struct MeshPeriodSearch<'s, 'a> {
+    pub ps: PeriodStepper<'s, 'a>,
+    pub red: Reduction,
+    template: State,
+    z: DVector<f64>,
+    red_scales: DVector<f64>,
+    /// Mesh periods integrated so far.
+    pub periods: usize,
 }
 
-/// Records one period of the periodic solution: a sample at every point of the solution
-/// (the grid nodes and every step between them), the path of contact, and the time
-/// integrals of the mesh force and DTE step by step (a trapezoid on the points would
-/// split the force's jumps at the mesh events).
-#[derive(Default)]
-struct Recorder {
-    sig: Signals,
-    path: Vec<PathSample>,
-    force_int: f64,
-    dte_int: f64,
-}
-
-impl Recorder {
-    /// The evaluated window of `periods` periods from the one period recorded (periodic
-    /// to the steady-state tolerance, so every later period repeats it; the rigid
-    /// rotation's drift is carried on), and the path of contact sorted by rho1.
-    fn window(
-        &self,
-        period: f64,
-        periods: usize,
-        y_start: &State,
-        y_end: &State,
-    ) -> (Signals, Vec<PathSample>) {
-        // Destructured in full: a new signal must be repeated here too.
-        let Signals {
-            time_s,
-            phase_rad,
-            dte_m,
-            mesh_force_n,
-            mesh_stiffness_n_per_m,
-            displacement,
-            velocity,
-            acceleration,
-            friction_coefficient,
-            friction_n,
-            pair_load_n,
-        } = &self.sig;
-        let mut sig = self.sig.clone();
-        let d = drift(y_start, y_end);
-        for p in 1..periods {
-            let shift = p as f64 * period;
-            sig.time_s.extend(time_s.iter().map(|t| t + shift));
-            sig.displacement.extend(
-                displacement
-                    .iter()
-                    .map(|q| -> [f64; NDOF] { std::array::from_fn(|i| q[i] + p as f64 * d[i]) }),
-            );
-            sig.phase_rad.extend_from_slice(phase_rad);
-            sig.dte_m.extend_from_slice(dte_m);
-            sig.mesh_force_n.extend_from_slice(mesh_force_n);
-            sig.mesh_stiffness_n_per_m
-                .extend_from_slice(mesh_stiffness_n_per_m);
-            sig.velocity.extend_from_slice(velocity);
-            sig.acceleration.extend_from_slice(acceleration);
-            for j in 0..2 {
-                sig.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
-                sig.friction_n[j].extend_from_slice(&friction_n[j]);
-                sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
-            }
-        }
-        let mut path = self.path.clone();
-        path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));
-        (sig, path)
-    }
-}
-
-impl PeriodObserver for Recorder {
-    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State) {
-        let (dy, ms) = sys.derivative(ContactFrame::decided_at(decide), t, y);
-        record(
-            &mut self.sig,
-            t,
-            sys.phase_at(t) % sys.parts.pair.mesh_angle_rad(),
-            y,
-            &dy,
-            &ms,
+impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
+    pub fn new(
+        sys: &'s GearSystem<'a>,
+        settings: &SteadyStateSettings,
+        start: Option<&[f64; 16]>,
+    ) -> Result<Self, DynamicsError> {
+        let nodes = period_nodes(
+            sys.parts.pair,
+            sys.parts.params.pinion_speed_rad_s,
+            settings.steps_per_mesh_period,
         );
-        push_path(&mut self.path, sys, y, &ms);
+        let ps = PeriodStepper::new(sys, nodes, settings.integration_tolerance)
+            .map_err(|e| DynamicsError::Setting(e.to_string()))?;
+        let template = match start {
+            Some(s) => State::from_column_slice(s),
+            None => sys.static_equilibrium(),
+        };
+        let red = Reduction::new(sys);
+        let red_scales = red.scales(&state_scales(sys));
+        let z = red.reduce(&template);
+        Ok(Self {
+            ps,
+            z,
+            template,
+            red_scales,
+            red,
+            periods: 0,
+        })
     }
 
-    fn step(
+    /// Runs the search to the case's tolerance. With `record`, the last period
+    /// integrated is recorded when it is likely to be the last one needed (the first
+    /// from a warm start, or once the search is close) and returned with its start and
+    /// end states.
+    pub fn run(
         &mut self,
-        sys: &GearSystem,
-        t: f64,
-        h: f64,
-        y0: &State,
-        y1: &State,
-        mode: ContactMode,
-    ) {
-        // Simpson's rule on the step, with the midpoint state from the cubic Hermite
-        // interpolant of the step's ends (fourth order; the force is smooth inside a
-        // step, which never crosses a mesh event or a contact switch).
-        let frame = ContactFrame::frozen(t + 0.5 * h, mode);
-        let (f0, ms0) = sys.derivative(frame, t, y0);
-        let (f1, ms1) = sys.derivative(frame, t + h, y1);
-        let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
-        let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
-        let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
-        self.force_int += simpson(ms0.force_n, ms.force_n, ms1.force_n);
-        self.dte_int += simpson(ms0.deflection_m, ms.deflection_m, ms1.deflection_m);
+        settings: &SteadyStateSettings,
+        warm: bool,
+        record: bool,
+    ) -> Result<Option<(Recorder, State, State)>, DynamicsError> {
+        let sys = self.ps.system();
+        let period = self.ps.period();
+        let mut shooting = Shooting::new(sys, &self.red, period, &state_scales(sys));
+        let mut distance = f64::INFINITY;
+        let mut recorded = None;
+        // Every period starts at t = 0: the one-period map is the same function in every
+        // iteration (the model depends on time through the mesh phase only).
+        while distance >= settings.tolerance {
+            if self.periods == settings.max_mesh_periods {
+                return Err(DynamicsError::NotPeriodic {
+                    periods: self.periods,
+                    change: distance,
+                    tolerance: settings.tolerance,
+                });
+            }
+            let y0 = self.start_state();
+            let mut y = y0;
+            // Close to the orbit (or warm), fix the step sequence: build it once, then
+            // replay.
+            let first = self.periods == 0;
+            let close = distance < 1e-2 || (first && warm);
+            match self.ps.plan_mode() {
+                PlanMode::Free if close => self.ps.set_plan_mode(PlanMode::Build),
+                PlanMode::Build => self.ps.set_plan_mode(PlanMode::Replay),
+                _ => {}
+            }
+            let speculative = record && (distance < 100.0 * settings.tolerance || (first && warm));
+            if speculative {
+                let mut rec = Recorder::new(1);
+                self.ps.integrate(0.0, &mut y, &mut rec)?;
+                recorded = Some((rec, y0, y));
+            } else {
+                self.ps.integrate(0.0, &mut y, &mut ())?;
+                recorded = None;
+            }
+            self.periods += 1;
+            let (next, d) = shooting.next(&self.z, &self.red.reduce(&y));
+            self.z = next;
+            distance = d;
+        }
+        Ok(recorded)
     }
-}
 
-fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &MeshState) {
-    let mut q = [0.0; NDOF];
-    let mut v = [0.0; NDOF];
-    let mut a = [0.0; NDOF];
-    for i in 0..NDOF {
-        q[i] = y[i];
-        v[i] = y[NDOF + i];
-        a[i] = dy[NDOF + i];
+    /// Replay the step plan from now on (built by the search once it was close).
+    pub fn replay(&mut self) {
+        if self.ps.plan_mode() == PlanMode::Build {
+            self.ps.set_plan_mode(PlanMode::Replay);
+        }
     }
-    sig.time_s.push(t);
-    sig.phase_rad.push(phase);
-    sig.dte_m.push(ms.deflection_m);
-    sig.mesh_force_n.push(ms.force_n);
-    sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
-    sig.displacement.push(q);
-    sig.velocity.push(v);
-    sig.acceleration.push(a);
-    sig.push_pairs(ms);
-}
 
-fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
-    let omega_p = sys.parts.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
-    let omega_g = sys.parts.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
-    PathSample::push_contacts(path, ms, sys.parts.pair.loa_length_m, omega_p, omega_g);
+    /// The state the search has reached, at a mesh-period boundary.
+    pub fn start_state(&self) -> State {
+        self.red.embed(&self.z, &self.template)
+    }
+
+    /// Largest change between two states in the unknowns, relative to their scales.
+    pub fn distance_between(&self, a: &State, b: &State) -> f64 {
+        scaled_max(&(self.red.reduce(b) - self.red.reduce(a)), &self.red_scales)
+    }
+
+    /// The response from a recorded window.
+    #[allow(clippy::too_many_arguments)]
+    pub fn response(
+        &self,
+        signals: super::response::Signals,
+        path: Vec<super::response::PathSample>,
+        rec: &Recorder,
+        recorded_s: f64,
+        excitation_periods: usize,
+        periodicity: f64,
+        y_end: &State,
+    ) -> DynamicResponse {
+        let stats = self.ps.integrator_stats();
+        let StepCounts { accepted, .. } = self.ps.counts;
+        DynamicResponse {
+            signals,
+            path,
+            periods_to_converge: self.periods,
+            periodicity_error: periodicity,
+            mesh_period_s: self.ps.period(),
+            excitation_periods,
+            mean_mesh_force_n: rec.force_int / recorded_s,
+            mean_dte_m: rec.dte_int / recorded_s,
+            end_state: std::array::from_fn(|i| y_end[i]),
+            steps: accepted,
+            rhs_evaluations: stats.rhs_calls as usize,
+            factorizations: stats.lu_factorizations as usize,
+            step_counts: self.ps.counts,
+        }
+    }
 }

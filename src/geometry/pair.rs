@@ -345,6 +345,15 @@ impl GearPair {
             .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
     }
 
+    /// The mesh cycle under way at pinion rotation `decide_rad` (rad since t = 0): the
+    /// pair that entered contact at the start of the current mesh period, as
+    /// [`GearPair::pairs_in_contact_decided`] counts it (pair k of the contact set is
+    /// cycle n - k).
+    #[inline]
+    pub fn mesh_cycle(&self, decide_rad: f64) -> i64 {
+        (decide_rad / self.mesh_angle_rad()).floor() as i64
+    }
+
     /// Pinion roll angle (rad) at LOA position rho1: rho1 / r_b1.
     pub fn pinion_roll_angle(&self, rho1_m: f64) -> f64 {
         rho1_m / self.pinion.base_radius_m

@@ -23,6 +23,7 @@
 
 use super::error::OutputError;
 use super::output_dir::{sha256_hex, OutputDir};
+use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
 use std::fs::File;
@@ -63,10 +64,23 @@ pub fn is_checkpoint(bytes: &[u8]) -> bool {
 
 /// Why a checkpoint cannot be used (an input problem: the message names the file).
 #[derive(Debug, thiserror::Error)]
-#[error("resuming: {path}: {reason}")]
+#[error("{}", self.problem())]
 pub struct CheckpointError {
     pub path: String,
     pub reason: String,
+    /// What to do, when more than replacing the file (`crate::remedy`).
+    pub remedy: Option<Box<Remedy>>,
+}
+
+impl CheckpointError {
+    /// The error as a problem of resuming: `resuming: PATH: REASON; REMEDY`.
+    pub fn problem(&self) -> Problem {
+        let p = Problem::of(Arg::Resume, format!("{}: {}", self.path, self.reason));
+        match &self.remedy {
+            Some(r) => p.remedy((**r).clone().path(&self.path)),
+            None => p,
+        }
+    }
 }
 
 fn line_of(json: &str) -> String {
@@ -96,6 +110,7 @@ pub fn parse_checkpoint(
     let err = |reason: String| CheckpointError {
         path: source.to_owned(),
         reason,
+        remedy: None,
     };
     // Whole lines only: a last line without its newline is an interrupted append.
     let valid_len = bytes.iter().rposition(|b| *b == b'\n').map_or(0, |i| i + 1);
@@ -133,11 +148,19 @@ pub fn parse_checkpoint(
                 )));
             }
             if h.case_sha256 != case_sha256 {
-                return Err(err(format!(
-                    "belongs to another case (hash {} != {}); start afresh, or resume with the same case",
-                    short(&h.case_sha256),
-                    short(case_sha256)
-                )));
+                return Err(CheckpointError {
+                    remedy: Some(Box::new(Remedy::new(
+                        Words::new()
+                            .text("start afresh (without ")
+                            .arg(Arg::Resume)
+                            .text("), or resume with the same case"),
+                    ))),
+                    ..err(format!(
+                        "belongs to another case (hash {} != {})",
+                        short(&h.case_sha256),
+                        short(case_sha256)
+                    ))
+                });
             }
         } else {
             let r: UpdateRecord = serde_json::from_str(json)
@@ -168,6 +191,7 @@ pub fn load_checkpoint(
             .map_err(|e| CheckpointError {
                 path: source.clone(),
                 reason: e.to_string(),
+                remedy: None,
             })?;
         if let Some(b) = bytes {
             let run = parse_checkpoint(&b, &source, mode, case_sha256)?;
@@ -189,7 +213,7 @@ fn lines_of(records: &[UpdateRecord], name: &str) -> Result<String, OutputError>
     let mut text = String::new();
     for r in records {
         let json = serde_json::to_string(r).map_err(|e| {
-            OutputError::new("write", std::path::Path::new(name), e.to_string(), "")
+            OutputError::new("write", std::path::Path::new(name), e.to_string(), None)
         })?;
         text.push_str(&line_of(&json));
     }
@@ -212,7 +236,7 @@ impl CheckpointLog {
             case_sha256: case_sha256.into(),
         };
         let json = serde_json::to_string(&header)
-            .map_err(|e| OutputError::new("write", &out.root().join(&name), e.to_string(), ""))?;
+            .map_err(|e| OutputError::new("write", &out.root().join(&name), e.to_string(), None))?;
         let mut text = line_of(&json);
         text.push_str(&lines_of(&run.records, &name)?);
         let file = out.create_log(
@@ -259,6 +283,7 @@ mod tests {
                 summary: Default::default(),
                 increment_pinion_m: vec![0.0; 3],
                 increment_gear_m: vec![0.0; 3],
+                increment_teeth: None,
                 path_rho1_m: vec![],
                 path_load_n: vec![],
                 // Digits JSON must carry exactly for a resumed run to match.

@@ -4,6 +4,7 @@
 
 use super::checkpoint::CheckpointLog;
 use super::{OutputDir, OutputError};
+use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{WearMode, WearRun};
 use std::sync::Mutex;
 
@@ -53,7 +54,7 @@ pub fn starting_runs(
     resume: bool,
     case_sha256: &str,
     model: &crate::study::Model,
-) -> Result<(Vec<WearRun>, Vec<String>), String> {
+) -> Result<(Vec<WearRun>, Vec<String>), Problem> {
     use super::checkpoint::{checkpoint_name, load_checkpoint};
     if !resume {
         return Ok((modes.iter().map(|m| WearRun::new(*m)).collect(), Vec::new()));
@@ -63,14 +64,15 @@ pub fn starting_runs(
     let mut found = false;
     for m in modes {
         let max = crate::study::budget::max_checkpoint_bytes(&model.case, *m);
-        match load_checkpoint(out, *m, case_sha256, max).map_err(|e| e.to_string())? {
+        match load_checkpoint(out, *m, case_sha256, max).map_err(|e| e.problem())? {
             Some(l) if !l.run.records.is_empty() => {
                 let path = out.root().join(&l.rel);
                 crate::study::wear_check::verify_resumable(&l.run, model).map_err(|e| {
-                    format!(
-                        "resuming: {}: {e}; it cannot be resumed: start afresh",
-                        path.display()
+                    Problem::of(
+                        Arg::Resume,
+                        format!("{}: {e}; it cannot be resumed", path.display()),
                     )
+                    .remedy(Remedy::start_afresh().path(&path))
                 })?;
                 found = true;
                 runs.push(l.run);
@@ -86,10 +88,22 @@ pub fn starting_runs(
     }
     if !found {
         let names: Vec<String> = modes.iter().map(|m| checkpoint_name(*m)).collect();
-        return Err(format!(
-            "resuming: no checkpoint to resume from in {} (looked for {} and their .partial files); start afresh",
-            out.root().display(),
-            names.join(", ")
+        return Err(Problem::of(
+            Arg::Resume,
+            format!(
+                "no checkpoint to resume from in {} (looked for {} and their .partial files)",
+                out.root().display(),
+                names.join(", ")
+            ),
+        )
+        .remedy(
+            Remedy::new(
+                Words::new()
+                    .text("run without ")
+                    .arg(Arg::Resume)
+                    .text(" to start afresh"),
+            )
+            .path(out.root()),
         ));
     }
     Ok((runs, notes))

@@ -14,6 +14,7 @@
 //!   elsewhere is refused.
 
 use super::error::OutputError;
+use crate::remedy::Remedy;
 use rustix::fs::{self as rfs, AtFlags, FileType, Mode, OFlags};
 use serde::{Deserialize, Serialize};
 use std::fs::File;
@@ -128,7 +129,7 @@ fn check_name(name: &str, at: &Path) -> Result<(), OutputError> {
             "use",
             &at.join(name),
             "not a plain name inside the output folder",
-            "",
+            None,
         ))
     }
 }
@@ -143,7 +144,7 @@ impl Dir {
                     "use",
                     path,
                     "it is a file, not a folder",
-                    "choose another output folder",
+                    Some(Remedy::output("choose another folder")),
                 ))
             }
             Ok(_) => {}
@@ -211,7 +212,7 @@ impl Dir {
                         "it is {}, not a folder; gearwear never follows links inside the output folder",
                         x.kind.words()
                     ),
-                    "move it away or choose another output folder",
+                    Some(Remedy::output("move it away or choose another folder")),
                 ),
                 _ => OutputError::io("open the folder", &path, &e.into()),
             }),
@@ -260,7 +261,7 @@ impl Dir {
             "create a file in",
             &self.path,
             format!("{CREATE_TRIES} fresh names were all taken"),
-            "",
+            None,
         ))
     }
 
@@ -278,7 +279,7 @@ impl Dir {
             "create a folder in",
             &self.path,
             format!("{CREATE_TRIES} fresh names were all taken"),
-            "",
+            None,
         ))
     }
 
@@ -412,7 +413,7 @@ pub fn not_ours(path: &Path, why: &str) -> OutputError {
         "use",
         path,
         format!("{why}; gearwear changes only files it created itself in the output folder"),
-        "move it away or choose another output folder",
+        Some(Remedy::output("move it away or choose another folder")),
     )
 }
 

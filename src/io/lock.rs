@@ -12,6 +12,7 @@
 
 use super::dir::{check_plain, entry_of_file, Dir};
 use super::error::OutputError;
+use crate::remedy::{Arg, Problem, Remedy, Words};
 use rustix::fs::{self as rfs, Mode, OFlags};
 use std::fs::File;
 use std::io::{Read, Seek, SeekFrom, Write};
@@ -28,10 +29,10 @@ pub struct OutputLock {
 #[derive(Debug, thiserror::Error)]
 pub enum LockError {
     /// Another process holds it.
-    #[error("{path} is being written by another gearwear ({holder}); wait for it to finish, or choose another output folder")]
+    #[error("{}", self.problem())]
     Held { path: PathBuf, holder: String },
     /// The folder holds another command's results, and replacing them was not allowed.
-    #[error("{path} holds the results of `gearwear {held}` ({files} files); this command would replace them: choose another output folder, or allow replacing them")]
+    #[error("{}", self.problem())]
     OtherCommand {
         path: PathBuf,
         held: String,
@@ -39,6 +40,34 @@ pub enum LockError {
     },
     #[error(transparent)]
     Io(#[from] OutputError),
+}
+
+impl LockError {
+    /// The error as a problem of the output folder (`crate::remedy`).
+    pub fn problem(&self) -> Problem {
+        match self {
+            LockError::Held { path, holder } => Problem::new(format!(
+                "{} is being written by another gearwear ({holder})",
+                path.display()
+            ))
+            .remedy(Remedy::output(
+                "wait for it to finish, or choose another folder",
+            )),
+            LockError::OtherCommand { path, held, files } => Problem::new(format!(
+                "{} holds the results of `gearwear {held}` ({files} files); this command would replace them",
+                path.display()
+            ))
+            .remedy(Remedy::new(
+                Words::new()
+                    .text("choose another folder (")
+                    .arg(Arg::Out)
+                    .text("), or allow replacing them (")
+                    .arg(Arg::Replace)
+                    .text(")"),
+            )),
+            LockError::Io(e) => e.problem(),
+        }
+    }
 }
 
 /// Longest holder line (a lock file larger than this is not gearwear's).

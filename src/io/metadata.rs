@@ -1,7 +1,11 @@
 //! Run metadata written into every `summary.json`: program version, the whole resolved
-//! case, and a hash of it, so a result can always be traced to its inputs.
+//! case, and a hash of it, so a result can always be traced to its inputs; and beside the
+//! case as given, the values the model used for its `"derived"` keys and the operating
+//! point.
 
 use crate::config::Case;
+use crate::study::domain::Resolved;
+use crate::study::Model;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
@@ -13,6 +17,11 @@ pub struct RunMetadata {
     /// SHA-256 of the resolved case serialised as canonical TOML.
     pub case_sha256: String,
     pub case: Case,
+    /// The values the model used where the case leaves them to the geometry (hub bores,
+    /// masses, inertias: `"derived"` or given), and the operating point; absent when no
+    /// model was built.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resolved: Option<Resolved>,
 }
 
 impl RunMetadata {
@@ -25,6 +34,15 @@ impl RunMetadata {
             command: command.to_owned(),
             case_sha256: hash.iter().map(|b| format!("{b:02x}")).collect(),
             case: case.clone(),
+            resolved: None,
+        }
+    }
+
+    /// The metadata of a run of `model` (its case, with what it resolved).
+    pub fn of_model(command: &str, model: &Model) -> Self {
+        Self {
+            resolved: Some(model.resolved()),
+            ..Self::new(command, &model.case)
         }
     }
 }

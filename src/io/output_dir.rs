@@ -120,7 +120,7 @@ fn check_relative(rel: &str) -> Result<(), OutputError> {
             "write",
             Path::new(rel),
             "not a plain path inside the output folder",
-            "",
+            None,
         ))
     }
 }
@@ -251,12 +251,17 @@ impl OutputDir {
                 "write",
                 &self.root.join(&self.state_name),
                 e.to_string(),
-                "",
+                None,
             )
         })?;
         self.root
             .write_new(&self.staging, &self.state_name, &text)?;
         Ok(())
+    }
+
+    /// The command whose set this is.
+    pub fn command(&self) -> &str {
+        &self.command
     }
 
     /// Stage an output file `rel` (relative path, `/`-separated) with `bytes`.
@@ -278,7 +283,7 @@ impl OutputDir {
     /// Stage `value` as pretty JSON at `rel`.
     pub fn stage_json(&mut self, rel: &str, value: &serde_json::Value) -> Result<(), OutputError> {
         let text = serde_json::to_string_pretty(value)
-            .map_err(|e| OutputError::new("write", Path::new(rel), e.to_string(), ""))?;
+            .map_err(|e| OutputError::new("write", Path::new(rel), e.to_string(), None))?;
         self.stage(rel, text.as_bytes())
     }
 
@@ -376,7 +381,7 @@ impl OutputDir {
                     "it holds {} bytes, more than the {max} this run can have written",
                     e.bytes
                 ),
-                "",
+                None,
             ));
         }
         read_all(f, max)
@@ -515,7 +520,7 @@ impl OutputDir {
                 "write",
                 &self.root.join(&self.manifest_name),
                 e.to_string(),
-                "",
+                None,
             )
         })?;
         let me = self
@@ -569,7 +574,7 @@ impl OutputDir {
                 conflicts.len(),
                 conflicts.join("; ")
             ),
-            "",
+            None,
         )
     }
 }

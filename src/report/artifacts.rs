@@ -42,6 +42,9 @@ pub struct FigureFile {
 pub struct Artifacts {
     /// The content of `summary.json` (the numbers a user or a script reads).
     pub summary: serde_json::Value,
+    /// The file the summary is written to, when not `summary.json` (a sweep's
+    /// `sweep.json`, a prediction shard's `predict_shard_I_of_N.json`).
+    pub summary_file: Option<String>,
     /// CSV tables by relative path.
     pub tables: Vec<(String, Table)>,
     pub figures: Vec<FigureFile>,
@@ -133,11 +136,12 @@ pub fn render_figures(figures: &[FigureFile]) -> Result<Vec<Vec<u8>>, WriteError
 /// Stage every artifact into `out` (`summary.json`, tables, figures, documents). The
 /// caller publishes the set.
 pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteError> {
+    let name = a.summary_file.as_deref().unwrap_or("summary.json");
     let text = serde_json::to_string_pretty(&a.summary).map_err(|e| WriteError::Format {
-        path: "summary.json".into(),
+        path: name.into(),
         reason: e.to_string(),
     })?;
-    out.stage("summary.json", text.as_bytes())?;
+    out.stage(name, text.as_bytes())?;
     for (path, t) in &a.tables {
         let bytes = t.to_csv().map_err(|e| WriteError::Format {
             path: path.clone(),

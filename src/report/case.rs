@@ -85,14 +85,14 @@ pub fn is_paper_case(case: &Case) -> bool {
 
 /// Mesh frequency z1 f_in, Hz.
 pub fn mesh_frequency_hz(model: &Model) -> f64 {
-    model.params.mesh_frequency_hz(&model.pair)
+    model.params.operating.mesh_frequency_hz
 }
 
 /// Mean mesh force without friction, N: the brake torque over the gear's base radius
 /// (docs/MODEL.md, "Mean balance"), which is the load torque over the base radius of the
 /// shaft it acts on.
 pub fn static_mesh_force_n(model: &Model) -> f64 {
-    model.params.brake_torque_nm / model.pair.gear.base_radius_m
+    model.params.operating.static_mesh_force_n
 }
 
 /// "100 N m on the pinion".

@@ -107,7 +107,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
     a.table("modes.csv", report_modes::damped_table(&modal));
     a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
 
-    let f_mesh = model.params.mesh_frequency_hz(&model.pair);
+    let f_mesh = model.params.operating.mesh_frequency_hz;
     let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
     let time = "time (ms)";
     if has_velocity {
@@ -208,6 +208,8 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
     );
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);
+    super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
     a
 }
 
@@ -219,7 +221,7 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
         .params
         .mesh_damping_n_s_per_m(&model.pair, model.mesh.mean_stiffness_n_per_m());
     let mut v = json!({
-        "mesh_frequency_hz": model.params.mesh_frequency_hz(&model.pair),
+        "mesh_frequency_hz": model.params.operating.mesh_frequency_hz,
         "mesh_damping_n_s_per_m": c_m,
         "dte": {"max_um": s.dte_max_m * 1e6, "min_um": s.dte_min_m * 1e6, "mean_um": s.dte_mean_m * 1e6},
         "mesh_force": {"mean_n": s.mesh_force_mean_n, "max_n": s.mesh_force_max_n, "min_n": s.mesh_force_min_n, "dynamic_factor": s.dynamic_factor},

@@ -15,6 +15,7 @@ pub mod prognostics_tables;
 pub mod run_report;
 pub mod stiffness;
 pub mod sweep_figure;
+pub mod teeth;
 pub mod wear;
 
 pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

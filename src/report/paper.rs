@@ -117,7 +117,7 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
         ),
     );
     out.push(fig("fig05_velocity_y_pinion", 5, f, t));
-    let f_mesh = model.params.mesh_frequency_hz(&model.pair);
+    let f_mesh = model.params.operating.mesh_frequency_hz;
     if let Some(mid) = study
         .wear_states
         .iter()
@@ -211,6 +211,7 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
     for (n, w) in (11..).zip(wear_figures(model, &runs)) {
         figs.push(fig(w.stem, n, w.figure, w.table));
     }
+    figs.extend(super::teeth::run_teeth_figures(model, study));
     figs
 }
 
@@ -287,6 +288,9 @@ pub fn run_artifacts(model: &Model, study: &PaperStudy, meta: &RunMetadata) -> A
         a.headline = case_headline(model, study);
         Vec::new()
     };
+    if let Some(t) = super::teeth::teeth_json(model) {
+        summary["teeth"] = t;
+    }
     summary["metadata"] = serde_json::to_value(meta).unwrap_or_default();
     let report = build_report(model, study, &rows, blocks, meta);
     a.documents

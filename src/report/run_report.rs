@@ -138,6 +138,35 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
             format!("{:.1}", static_mesh_force_n(model)),
         ),
         value_row(
+            "pinion / gear speed (rad/s)",
+            format!(
+                "{} / {}",
+                html::format_value(model.params.operating.pinion_speed_rad_s),
+                html::format_value(model.params.operating.gear_speed_rad_s)
+            ),
+        ),
+        value_row(
+            "torque on the pinion / gear shaft (N m)",
+            format!(
+                "{} / {}",
+                html::format_value(model.params.operating.motor_torque_nm),
+                html::format_value(model.params.operating.brake_torque_nm)
+            ),
+        ),
+    ];
+    // The values the case may leave to the geometry, as the model used them.
+    for v in model.resolved_parameters().values {
+        rows.push(value_row(
+            &format!("{} ({})", v.key, v.unit),
+            format!(
+                "{}{}",
+                html::format_value(v.value),
+                if v.derived { " (derived)" } else { "" }
+            ),
+        ));
+    }
+    rows.extend([
+        value_row(
             "mean mesh stiffness (N/m)",
             html::format_value(model.mesh.mean_stiffness_n_per_m()),
         ),
@@ -146,7 +175,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
             format!("{:e}", c.wear.coefficient_m2_per_n),
         ),
         value_row("load cycles", cycles_words(c.wear.total_cycles)),
-    ];
+    ]);
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         rows.push(value_row(
             "max DTE, new teeth (um)",
@@ -328,7 +357,10 @@ pub fn build_report(
                 figures: take(3),
                 tables: vec![],
             },
-        ],
+        ]
+        .into_iter()
+        .chain(super::teeth::teeth_section(model, take(usize::MAX)))
+        .collect(),
         footer: format!("gearwear {} | case sha256 {} | command: run", meta.version, meta.case_sha256),
     }
 }

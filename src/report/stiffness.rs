@@ -127,7 +127,7 @@ pub fn figure2(model: &Model, t: &Table) -> Figure {
             Panel {
                 title: format!(
                     "quasi-static transmission error at a mean mesh force of {:.0} N",
-                    model.params.brake_torque_nm / model.pair.gear.base_radius_m
+                    model.params.operating.static_mesh_force_n
                 ),
                 ..panel(
                     angle,
@@ -212,5 +212,6 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
         f.data = Some("mesh_stiffness.csv".into());
     }
     a.table("mesh_stiffness.csv", table);
+    super::teeth::add_teeth_artifacts(model, &mut a);
     a
 }

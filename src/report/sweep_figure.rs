@@ -33,7 +33,7 @@ fn branch_name(b: Branch, x_key: &str) -> String {
 
 /// Max DTE and dynamic factor against `x_key` (a varied key of `t` with numeric values).
 /// `marks` (with `poles_hz`, the damped mesh-pole frequencies) are drawn as labelled
-/// vertical lines. `None` when `x_key` is not varied or the result columns are missing.
+/// vertical lines. `None` when `x_key` is not varied.
 pub fn sweep_figure(
     t: &SweepTable,
     x_key: &str,
@@ -41,7 +41,6 @@ pub fn sweep_figure(
     poles_hz: &[f64],
 ) -> Option<Figure> {
     let kx = t.keys.iter().position(|k| k == x_key)?;
-    let (dte, df) = (t.column("dte_max_um")?, t.column("dynamic_factor")?);
     // Curves keyed by the other keys' values, then the branch (up before down).
     let mut groups: BTreeMap<(String, Option<u8>), Group> = BTreeMap::new();
     for r in &t.rows {
@@ -62,7 +61,11 @@ pub fn sweep_figure(
             .entry((others, r.branch.map(|b| b as u8)))
             .or_insert_with(|| (name, r.branch, Vec::new()))
             .2
-            .push((x, r.results[dte], r.results[df]));
+            .push((
+                x,
+                r.results.dynamics.dte_max_um,
+                r.results.dynamics.dynamic_factor,
+            ));
     }
     let (mut c_dte, mut c_df, mut styles) = (Vec::new(), Vec::new(), Vec::new());
     for (name, branch, mut pts) in groups.into_values() {

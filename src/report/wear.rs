@@ -262,6 +262,8 @@ pub fn wear_artifacts(model: &Model, runs: &[&WearRun]) -> Artifacts {
     v["warnings"] = json!(model.warnings);
     a.headline = wear_headline(runs, &v);
     a.summary = v;
+    super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_tooth_wear_artifacts(model, runs, &mut a);
     a
 }
 

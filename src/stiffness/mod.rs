@@ -6,3 +6,4 @@ pub mod fillet;
 pub mod iso6336;
 pub mod mesh;
 pub mod potential_energy;
+pub mod tooth_faults;

@@ -236,6 +236,15 @@ impl ToothBeam {
         }
     }
 
+    /// Half-thickness and height (m) of the section at the root circle, where the beam
+    /// is clamped (and where a root crack starts).
+    pub fn root_section(&self) -> (f64, f64) {
+        match self.straight {
+            Some((y_root, _, hb)) => (hb, y_root),
+            None => self.involute_point(self.alpha_start),
+        }
+    }
+
     /// Height above the gear centre (m) where the force line through the contact at rho
     /// crosses the tooth centreline: y_c - h_c tan(alpha_1).
     pub fn force_centreline_crossing_m(&self, rho_m: f64) -> f64 {
@@ -257,19 +266,28 @@ impl ToothBeam {
     ///   1/k_b = int M^2/(F^2 E I) dy,  1/k_s = int 1.2 cos^2(a1)/(G A) dy,
     ///   1/k_a = int sin^2(a1)/(E A) dy,   from the root circle to the contact.
     pub fn compliance_with_rule(&self, rho_m: f64, rule: &GaussLegendre) -> ToothCompliance {
+        let b = self.face_width_m;
+        self.compliance_with_section(rho_m, rule, |h, _| (2.0 * h * b, 2.0 * h * h * h * b / 3.0))
+    }
+
+    /// As [`Self::compliance_with_rule`] with the cross-section at each height given by
+    /// `section(h, y) -> (area m^2, second moment m^4)` (h the flank's half-thickness and
+    /// y the height, m) instead of the full 2h x b rectangle: a cracked or pitted tooth
+    /// (`stiffness::tooth_faults`). The moment arm stays measured from the centreline.
+    pub fn compliance_with_section(
+        &self,
+        rho_m: f64,
+        rule: &GaussLegendre,
+        section: impl Fn(f64, f64) -> (f64, f64),
+    ) -> ToothCompliance {
         let a1 = self.contact_angle_rad(rho_m);
         let (hc, yc) = self.involute_point(a1);
         let (s1, c1) = a1.sin_cos();
-        let (e, g, b) = (
-            self.youngs_modulus_pa,
-            self.shear_modulus_pa,
-            self.face_width_m,
-        );
+        let (e, g) = (self.youngs_modulus_pa, self.shear_modulus_pa);
         // Integrands per unit dy at half-thickness h and height y.
         let per_dy = |h: f64, y: f64| -> [f64; 3] {
             let m = c1 * (yc - y) - s1 * hc;
-            let area = 2.0 * h * b;
-            let inertia = 2.0 * h * h * h * b / 3.0;
+            let (area, inertia) = section(h, y);
             [
                 m * m / (e * inertia),
                 SHEAR_FACTOR * c1 * c1 / (g * area),

@@ -42,8 +42,10 @@
 //! explicit choice; it is resumable and shardable).
 
 use super::domain::nominal_contacts;
+use super::sweep::plan::{AxisValue, SweepPlan};
 use super::sweep::SweepRun;
 use crate::config::case::Case;
+use crate::config::load::case_with;
 use crate::geometry::GearPair;
 
 /// Integrator step on the reference machine, s.
@@ -190,8 +192,10 @@ impl Estimate {
         if over.is_empty() {
             Ok(())
         } else {
+            // The remedy (lower those keys, or raise the budget) names arguments of the
+            // front ends: the job layer adds it (`app::budget`).
             Err(format!(
-                "the run is over its budget (nothing was computed): {}. Lower those keys, or raise the budget knowingly with --budget-scale X (or drop it with --no-budget)",
+                "the run is over its budget (nothing was computed): {}",
                 over.join("; ")
             ))
         }
@@ -453,14 +457,23 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
 /// estimating a sweep costs milliseconds however many values an axis has.
 pub const SAMPLED_VALUES: usize = 8;
 
-fn sampled_indices(values: &[String]) -> Vec<usize> {
+fn sampled_indices(values: &[AxisValue]) -> Vec<usize> {
     let n = values.len();
+    if n == 0 {
+        return Vec::new();
+    }
     let mut idx: std::collections::BTreeSet<usize> = (0..SAMPLED_VALUES.min(n))
         .map(|i| i * (n - 1) / (SAMPLED_VALUES - 1).max(1))
         .collect();
     idx.insert(n - 1);
-    let num = |i: &usize| values[*i].trim().parse::<f64>().ok();
-    let numbered: Vec<(usize, f64)> = (0..n).filter_map(|i| num(&i).map(|x| (i, x))).collect();
+    let num = |v: &AxisValue| {
+        v.value
+            .as_float()
+            .or_else(|| v.value.as_integer().map(|i| i as f64))
+    };
+    let numbered: Vec<(usize, f64)> = (0..n)
+        .filter_map(|i| num(&values[i]).map(|x| (i, x)))
+        .collect();
     if let Some(lo) = numbered.iter().min_by(|a, b| a.1.total_cmp(&b.1)) {
         idx.insert(lo.0);
     }
@@ -513,23 +526,24 @@ pub struct SweepEstimate {
 /// base (exact when the cost does not depend on a varied key, and when it is a product of
 /// per-axis factors); the worst case puts every axis at its costliest sampled value.
 pub fn estimate_sweep(
-    load: &dyn Fn(&[String]) -> Option<Case>,
-    axes: &[(String, Vec<String>)],
+    base: &Case,
+    plan: &SweepPlan,
     job: Job,
     cases: usize,
     threads: usize,
 ) -> Option<SweepEstimate> {
-    let base = estimate(&load(&[])?, job);
-    let (base_s, base_b) = (base.seconds().max(1e-9), base.memory_bytes());
+    let load = |settings: &[(&str, toml::Value)]| case_with(base, settings).ok();
+    let base_e = estimate(&load(&[])?, job);
+    let (base_s, base_b) = (base_e.seconds().max(1e-9), base_e.memory_bytes());
     let mut ratio = 1.0;
-    let mut worst = Vec::new();
-    for (key, values) in axes {
+    let mut worst: Vec<(&str, toml::Value)> = Vec::new();
+    let mut worst_overrides = Vec::new();
+    for axis in &plan.axes {
         let mut sum = 0.0;
         let mut n = 0.0;
-        let mut costliest: Option<(f64, String)> = None;
-        for i in sampled_indices(values) {
-            let set = format!("{key}={}", values[i]);
-            let Some(c) = load(std::slice::from_ref(&set)) else {
+        let mut costliest: Option<(f64, usize)> = None;
+        for i in sampled_indices(&axis.values) {
+            let Some(c) = load(&[(axis.key, axis.values[i].value.clone())]) else {
                 continue;
             };
             let e = estimate(&c, job);
@@ -537,13 +551,16 @@ pub fn estimate_sweep(
             sum += e.seconds() / base_s;
             n += 1.0;
             if costliest.as_ref().is_none_or(|(c0, _)| cost > *c0) {
-                costliest = Some((cost, set));
+                costliest = Some((cost, i));
             }
         }
         if n > 0.0 {
             ratio *= sum / n;
         }
-        worst.extend(costliest.map(|(_, s)| s));
+        if let Some((_, i)) = costliest {
+            worst.push((axis.key, axis.values[i].value.clone()));
+            worst_overrides.push(format!("{}={}", axis.key, axis.values[i].label));
+        }
     }
     let worst_case = estimate(&load(&worst).or_else(|| load(&[]))?, job);
     let cases_f = cases as f64;
@@ -570,7 +587,7 @@ pub fn estimate_sweep(
     Some(SweepEstimate {
         total,
         worst_case,
-        worst_overrides: worst,
+        worst_overrides,
     })
 }
 
@@ -655,7 +672,7 @@ mod tests {
                 .check(&Budget::DEFAULT)
                 .expect_err(&format!("{sets:?}"));
             assert!(
-                e.contains(key) && e.contains("--budget-scale"),
+                e.contains(key) && e.contains("over its budget"),
                 "{sets:?}: {e}"
             );
         }

@@ -4,15 +4,15 @@
 //! Also the values the model resolves from the geometry (`"derived"` hub bores, masses and
 //! inertias), reported by [`ResolvedParameters`] and compared with what a case gives.
 
-use crate::config::case::{BodyValues, Case, DynamicsSection, FrictionModel, TorqueShaft};
+use crate::config::case::{BodyValues, Case, DynamicsSection, FrictionModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::{effective_modulus_of, HertzContact};
 use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::load_sharing::pedrero_share_at;
+use crate::dynamics::params::OperatingPoint;
 use crate::geometry::GearPair;
 use crate::stiffness::fillet::FilletFoundation;
 use serde::Serialize;
-use std::f64::consts::PI;
 
 /// Largest friction coefficient accepted at the nominal operating point. Dry steel on
 /// steel reaches ~0.8; a lubricated gear contact stays below ~0.1. Xu's regression is
@@ -33,15 +33,10 @@ pub struct NominalContact {
 /// `n` + 1 contacts evenly along the path at the nominal load, shared between pairs by
 /// paper eq. (7) (equally when the contact ratio is 2 or more), and at the nominal speeds.
 pub fn nominal_contacts(case: &Case, pair: &GearPair, n: usize) -> Vec<NominalContact> {
-    let o = &case.operating;
-    let rb = match o.load_torque_shaft {
-        TorqueShaft::Pinion => pair.pinion.base_radius_m,
-        TorqueShaft::Gear => pair.gear.base_radius_m,
-    };
-    let force = o.load_torque_nm / rb;
+    let op = OperatingPoint::of(&case.operating, pair);
+    let force = op.static_mesh_force_n;
     let e_star = effective_modulus_of(&case.materials);
-    let omega_p = 2.0 * PI * o.input_speed_hz;
-    let omega_g = omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64;
+    let (omega_p, omega_g) = (op.pinion_speed_rad_s, op.gear_speed_rad_s);
     (0..=n)
         .map(|i| {
             let rho1 = pair.rho_start_m + pair.path_length_m() * i as f64 / n as f64;
@@ -79,11 +74,7 @@ pub const BODY_VALUE_FACTOR: f64 = 2.0;
 pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
     let mut problems = Vec::new();
     let o = &case.operating;
-    let base_radius = match o.load_torque_shaft {
-        TorqueShaft::Pinion => pair.pinion.base_radius_m,
-        TorqueShaft::Gear => pair.gear.base_radius_m,
-    };
-    let force = o.load_torque_nm / base_radius;
+    let force = OperatingPoint::of(o, pair).static_mesh_force_n;
     let rho1 = pair.rho_pitch_m;
     let h = HertzContact::with_modulus(
         force,
@@ -214,6 +205,15 @@ impl ResolvedParameters {
                 .map(|f| [f[0].root_half_angle_rad, f[1].root_half_angle_rad]),
         }
     }
+}
+
+/// What a summary records beside the case as given (`metadata.resolved`): the values the
+/// model used where the case may leave them to the geometry, and the operating point.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Resolved {
+    #[serde(flatten)]
+    pub parameters: ResolvedParameters,
+    pub operating_point: OperatingPoint,
 }
 
 /// Warnings for masses and inertias given more than [`BODY_VALUE_FACTOR`] from the

@@ -7,6 +7,7 @@ pub mod model;
 pub mod modes;
 pub mod paper;
 pub mod sweep;
+pub mod teeth;
 pub mod wear_check;
 pub mod wear_loop;
 

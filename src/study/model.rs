@@ -1,6 +1,7 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
-use super::domain::{body_value_warnings, domain_problems, ResolvedParameters};
+use super::domain::{body_value_warnings, domain_problems, Resolved, ResolvedParameters};
+use super::teeth::ToothInputs;
 use crate::config::case::{Case, GearSection, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
@@ -11,6 +12,7 @@ use crate::dynamics::params::DynamicParams;
 use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::steady::{solve_steady_state_from, DynamicsError, SteadyStateSettings};
+use crate::dynamics::tooth_mesh::ToothMesh;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
@@ -40,6 +42,9 @@ pub struct Model {
     pub grid: ProfileGrid,
     pub settings: SteadyStateSettings,
     pub effective_modulus_pa: f64,
+    /// The teeth of a case with per-tooth inputs (errors, modifications, faults); None:
+    /// every tooth the paper's.
+    pub teeth: Option<ToothInputs>,
     /// Non-fatal findings (undercut, formulas outside their fitted range).
     pub warnings: Vec<String>,
 }
@@ -93,7 +98,16 @@ impl Model {
         warnings.extend(pitch_line_velocity_warning(case, &pair));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
+        let teeth = ToothInputs::from_case(
+            case,
+            &pair,
+            &mesh,
+            &grid,
+            [params.pinion_speed_rad_s, params.gear_speed_rad_s],
+        )
+        .map_err(ModelError)?;
         Ok(Self {
+            teeth,
             case: case.clone(),
             effective_modulus_pa: effective_modulus_of(&case.materials),
             elastic,
@@ -120,13 +134,39 @@ impl Model {
         )
     }
 
-    /// The dynamic system for a wear state (gap), external error and roughness (um).
+    /// [`Model::resolved_parameters`] and the operating point: `metadata.resolved` of
+    /// every summary.
+    pub fn resolved(&self) -> Resolved {
+        Resolved {
+            parameters: self.resolved_parameters(),
+            operating_point: self.params.operating,
+        }
+    }
+
+    /// The dynamic system for a wear state (gap), external error and roughness (um),
+    /// every tooth alike.
     pub fn system<'a>(
         &'a self,
         gap: &'a PairGap,
         external: &'a ExternalError,
         roughness_um: f64,
     ) -> GearSystem<'a> {
+        self.system_for(gap, external, roughness_um, None)
+    }
+
+    /// As [`Model::system`] with a tooth-resolved mesh (its pairs' loads then follow
+    /// their own compressions: Pedrero's law of eq. 7 is for identical, perfect teeth).
+    pub fn system_for<'a>(
+        &'a self,
+        gap: &'a PairGap,
+        external: &'a ExternalError,
+        roughness_um: f64,
+        teeth: Option<&'a ToothMesh>,
+    ) -> GearSystem<'a> {
+        let load_sharing = match teeth {
+            Some(_) => LoadSharingModel::Stiffness,
+            None => self.case.contact.load_sharing,
+        };
         GearSystem::new(GearSystemParts {
             pair: &self.pair,
             mesh: &self.mesh,
@@ -135,10 +175,28 @@ impl Model {
             viscosity_cp: self.case.lubricant.viscosity_cp,
             gap,
             external,
-            load_sharing: self.case.contact.load_sharing,
+            load_sharing,
             roughness_um,
             effective_modulus_pa: self.effective_modulus_pa,
+            teeth,
         })
+    }
+
+    /// The tooth-resolved mesh of a wear state (None when every tooth is the paper's).
+    pub fn tooth_mesh(&self, wear: &WearState) -> Option<ToothMesh> {
+        self.teeth.as_ref().map(|t| t.mesh_for(wear))
+    }
+
+    /// New teeth: a wear state with a profile per tooth when the teeth differ.
+    pub fn new_wear_state(&self) -> WearState {
+        match &self.teeth {
+            Some(_) => WearState::per_tooth(
+                self.grid.len(),
+                self.pair.pinion.teeth,
+                self.pair.gear.teeth,
+            ),
+            None => WearState::new(self.grid.len()),
+        }
     }
 
     /// Roughness that goes with a wear state, um.
@@ -177,14 +235,16 @@ impl Model {
         settings: &SteadyStateSettings,
     ) -> Result<DynamicResponse, DynamicsError> {
         let gap = wear.pair_gap(&self.grid);
-        let sys = self.system(&gap, external, self.roughness_for(wear));
+        let teeth = self.tooth_mesh(wear);
+        let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_steady_state_from(&sys, settings, start)
     }
 
     /// Quasi-static response of the worn pair.
     pub fn quasi_static(&self, wear: &WearState, external: &ExternalError) -> DynamicResponse {
         let gap = wear.pair_gap(&self.grid);
-        let sys = self.system(&gap, external, self.roughness_for(wear));
+        let teeth = self.tooth_mesh(wear);
+        let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_quasi_static(&sys, self.settings.steps_per_mesh_period)
     }
 }

@@ -1,25 +1,27 @@
-//! Parameter sweeps: the cross product of `--vary` axes over a base case, run case by
-//! case, each case reduced to one row of headline results.
+//! Parameter sweeps: the cross product of varied keys over a base case, run case by case,
+//! each case reduced to one row of headline results.
 //!
-//! Pieces: [`plan`] (axes, case ids, shards), [`case_run`] (one case -> one row, and the
-//! record it leaves on disk so a rerun can skip it), [`continuation`] (a one-axis sweep
-//! run in order, each point warm-started from the previous one), [`table`] (rows, CSV,
-//! merge of shards), [`resonance`] (speeds where a mesh harmonic meets a damped mesh pole),
-//! [`in_memory`] (a whole sweep without files, for the Python binding).
-//! File handling, parallelism and progress are the CLI's (`gearwear sweep`).
+//! Pieces: [`plan`] (axes with typed values, case ids, shards), [`case_run`] (one case ->
+//! one row of [`CaseResults`], and the record it leaves on disk so a rerun can skip it),
+//! [`continuation`] (a one-axis sweep run in order, each point warm-started from the
+//! previous one), [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds where a
+//! mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
+//! run in parallel or along branches, in memory or to a folder with its case records,
+//! progress) is the job `app::sweep::SweepJob`, the one path of both front ends.
 
 pub mod case_run;
 pub mod continuation;
-pub mod in_memory;
 pub mod plan;
 pub mod resonance;
 pub mod table;
 pub mod verify;
 
-pub use case_run::{run_case, CaseError, CaseRecord, ContinuationLink, SweepRun};
+pub use case_run::{
+    run_case, CaseError, CaseOutcome, CaseRecord, CaseResults, ContinuationLink, DynamicsRow,
+    SweepRun, WearEnd,
+};
 pub use continuation::{Branch, Continuation, ContinuationPlan};
-pub use in_memory::{resolve_cases, run_cases, ResolvedCase, SweepOutcome};
-pub use plan::{parse_vary, Axis, Shard, SweepPlan};
+pub use plan::{parse_axis, parse_vary, Axis, AxisValue, Shard, SweepPlan};
 pub use resonance::{crossings, Crossing};
 pub use table::{SweepRow, SweepTable};
 

@@ -56,6 +56,9 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
                 return Err(at(format!("{name} holds {x}, not a finite value >= 0")));
             }
         }
+        if let Some(problem) = tooth_problem(model, r) {
+            return Err(at(problem));
+        }
         if r.path_rho1_m.len() != r.path_load_n.len() {
             return Err(at("path positions and loads differ in length".into()));
         }
@@ -115,6 +118,21 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
             return Err(at(format!(
                 "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
             )));
+        }
+        if let (Some(t0), Some(d), Some(t1)) =
+            (&prev.wear.teeth, &prev.increment_teeth, &r.wear.teeth)
+        {
+            let teeth = |a: &[Vec<f64>], d: &[Vec<f64>], b: &[Vec<f64>]| {
+                (0..a.len()).find_map(|t| advanced(&a[t], &d[t], &b[t]).map(|j| (t, j)))
+            };
+            let bad = teeth(&t0.pinion_m, &d.pinion_m, &t1.pinion_m)
+                .map(|(t, j)| ("pinion", t, j))
+                .or_else(|| teeth(&t0.gear_m, &d.gear_m, &t1.gear_m).map(|(t, j)| ("gear", t, j)));
+            if let Some((g, t, j)) = bad {
+                return Err(at(format!(
+                    "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
+                )));
+            }
         }
     }
     Ok(())
@@ -185,4 +203,42 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The per-tooth profiles of a record against the model: present exactly when the model
+/// resolves the teeth, one profile per tooth of the grid's length, finite and >= 0.
+fn tooth_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
+    let resolved = model.teeth.is_some();
+    if resolved != r.wear.teeth.is_some() || resolved != r.increment_teeth.is_some() {
+        return Some(if resolved {
+            "holds no per-tooth wear, but the case resolves the teeth (per-tooth inputs)".into()
+        } else {
+            "holds per-tooth wear, but the case's teeth are all alike".into()
+        });
+    }
+    let (n, z1, z2) = (
+        model.grid.len(),
+        model.pair.pinion.teeth,
+        model.pair.gear.teeth,
+    );
+    for (what, t) in [("wear", &r.wear.teeth), ("increment", &r.increment_teeth)] {
+        let Some(t) = t else { continue };
+        for (g, profiles, z) in [("pinion", &t.pinion_m, z1), ("gear", &t.gear_m, z2)] {
+            if profiles.len() != z || profiles.iter().any(|p| p.len() != n) {
+                return Some(format!(
+                    "per-tooth {g} {what} is not {z} profiles of {n} points"
+                ));
+            }
+            if profiles
+                .iter()
+                .flatten()
+                .any(|x| !x.is_finite() || *x < 0.0)
+            {
+                return Some(format!(
+                    "per-tooth {g} {what} holds a value that is not finite and >= 0"
+                ));
+            }
+        }
+    }
+    None
 }

@@ -27,7 +27,8 @@ use crate::dynamics::model::NSTATE;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::steady::DynamicsError;
 use crate::dynamics::summary::ResponseSummary;
-use crate::wear::{per_cycle_wear, WearIncrement, WearState};
+use crate::wear::per_tooth::per_tooth_wear;
+use crate::wear::{per_cycle_wear, ToothWear, WearIncrement, WearState};
 use serde::{Deserialize, Serialize};
 
 /// Which solver feeds the wear model.
@@ -64,7 +65,11 @@ pub struct UpdateRecord {
     pub summary: ResponseSummary,
     pub increment_pinion_m: Vec<f64>,
     pub increment_gear_m: Vec<f64>,
-    /// Mesh force and pair load along the path (rho1, load) for the wear-depth figures.
+    /// Per-tooth increments of a tooth-resolved mesh (the two above are their means).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub increment_teeth: Option<ToothWear>,
+    /// Mesh force and pair load along the path (rho1, load) for the wear-depth figures
+    /// (with a tooth-resolved mesh: the mean load over the engagements at the grid points).
     pub path_rho1_m: Vec<f64>,
     pub path_load_n: Vec<f64>,
     /// Periodic state (SI, `dynamics::model` coordinates) at a mesh-period boundary of the
@@ -171,22 +176,51 @@ fn solve(
 }
 
 fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
-    let inc: WearIncrement = per_cycle_wear(
-        &model.grid,
-        &r.path,
-        model.case.wear.coefficient_m2_per_n,
-        model.pair.pinion.teeth as f64 / model.pair.gear.teeth as f64,
-    );
+    let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
+    let k = model.case.wear.coefficient_m2_per_n;
+    let inc: WearIncrement = match &model.teeth {
+        Some(_) => per_tooth_wear(&model.grid, &r.path, r.excitation_periods, z1, z2, k),
+        None => per_cycle_wear(&model.grid, &r.path, k, z1 as f64 / z2 as f64),
+    };
+    let (path_rho1_m, path_load_n) = match &model.teeth {
+        Some(_) => mean_load_along_path(model, r),
+        None => (
+            r.path.iter().map(|p| p.rho1_m).collect(),
+            r.path.iter().map(|p| p.load_n).collect(),
+        ),
+    };
     UpdateRecord {
         roughness_um: model.roughness_for(&wear),
         wear,
         summary: ResponseSummary::of(r),
         increment_pinion_m: inc.pinion_m,
         increment_gear_m: inc.gear_m,
-        path_rho1_m: r.path.iter().map(|p| p.rho1_m).collect(),
-        path_load_n: r.path.iter().map(|p| p.load_n).collect(),
+        increment_teeth: inc.teeth,
+        path_rho1_m,
+        path_load_n,
         end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
     }
+}
+
+/// The pair load at the grid points, averaged over the engagements of the excitation
+/// period (the path of a tooth-resolved response holds every engagement's samples).
+fn mean_load_along_path(model: &Model, r: &DynamicResponse) -> (Vec<f64>, Vec<f64>) {
+    let periods = r.excitation_periods.max(1);
+    let mut by: Vec<Vec<crate::dynamics::response::PathSample>> = vec![Vec::new(); periods];
+    for s in &r.path {
+        by[s.cycle.rem_euclid(periods as i64) as usize].push(*s);
+    }
+    let rho = model.grid.rho_pinion_m.clone();
+    let load = rho
+        .iter()
+        .map(|x| {
+            by.iter()
+                .map(|p| crate::dynamics::response::interpolate_path(p, *x).load_n)
+                .sum::<f64>()
+                / periods as f64
+        })
+        .collect();
+    (rho, load)
 }
 
 /// The warm start a record offers.
@@ -217,7 +251,7 @@ pub fn next_update(
 ) -> Result<Next, DynamicsError> {
     let w = &model.case.wear;
     let Some(last) = last else {
-        let state = WearState::new(model.grid.len());
+        let state = model.new_wear_state();
         let r = solve(model, mode, &state, None)?;
         return Ok(Next::Record(Box::new(record(model, mode, state, &r))));
     };
@@ -229,6 +263,7 @@ pub fn next_update(
     let inc = WearIncrement {
         pinion_m: last.increment_pinion_m.clone(),
         gear_m: last.increment_gear_m.clone(),
+        teeth: last.increment_teeth.clone(),
         ..Default::default()
     };
     let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);

@@ -8,6 +8,7 @@
 //! each pinion tooth once and each gear tooth z1/z2 times on average, hence the factor
 //! z1/z2 on the gear (eq. 17, docs/PAPER_NOTES.md: eq. 16 has a typo).
 
+use super::profile_wear::ToothWear;
 use crate::dynamics::response::{interpolate_path, PathSample};
 use crate::geometry::ProfileGrid;
 
@@ -19,15 +20,22 @@ pub struct WearIncrement {
     /// Sliding distances per passage, m (for output and tests).
     pub sliding_pinion_m: Vec<f64>,
     pub sliding_gear_m: Vec<f64>,
+    /// Per-tooth increments of a tooth-resolved mesh (`pinion_m`, `gear_m` then hold
+    /// their means over the teeth).
+    pub teeth: Option<ToothWear>,
 }
 
 impl WearIncrement {
-    /// Largest increment on either profile, m per cycle.
+    /// Largest increment on either profile, m per cycle (of any tooth when per tooth).
     pub fn max_m(&self) -> f64 {
-        self.pinion_m
+        let common = self
+            .pinion_m
             .iter()
             .chain(&self.gear_m)
-            .fold(0.0_f64, |m, x| m.max(*x))
+            .fold(0.0_f64, |m, x| m.max(*x));
+        self.teeth
+            .as_ref()
+            .map_or(common, |t| t.max_m().max(common))
     }
 }
 
@@ -47,6 +55,7 @@ pub fn per_cycle_wear(
         gear_m: vec![0.0; n],
         sliding_pinion_m: vec![0.0; n],
         sliding_gear_m: vec![0.0; n],
+        teeth: None,
     };
     for i in 0..n {
         let s = interpolate_path(path, grid.rho_pinion_m[i]);

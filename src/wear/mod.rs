@@ -2,9 +2,10 @@
 //! transmission error it causes, and the roughness that goes with it.
 
 pub mod archard;
+pub mod per_tooth;
 pub mod profile_wear;
 pub mod roughness;
 
 pub use archard::{per_cycle_wear, WearIncrement};
-pub use profile_wear::WearState;
+pub use profile_wear::{ToothWear, WearState};
 pub use roughness::RoughnessLaw;

@@ -10,11 +10,52 @@ use super::archard::WearIncrement;
 
 /// Accumulated wear depth at each grid point (pinion point i and its conjugate gear
 /// point i), m, after `cycles` pinion cycles.
+///
+/// With a tooth-resolved mesh every tooth has its own profile (`teeth`); `pinion_m` and
+/// `gear_m` are then the mean over the teeth of each gear.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct WearState {
     pub cycles: f64,
     pub pinion_m: Vec<f64>,
     pub gear_m: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub teeth: Option<ToothWear>,
+}
+
+/// Wear of every tooth on the shared grid (tooth t's profile at `pinion_m[t]`), m.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct ToothWear {
+    pub pinion_m: Vec<Vec<f64>>,
+    pub gear_m: Vec<Vec<f64>>,
+}
+
+impl ToothWear {
+    /// No wear on z1 pinion and z2 gear teeth of `points` grid points.
+    pub fn new(points: usize, z1: usize, z2: usize) -> Self {
+        Self {
+            pinion_m: vec![vec![0.0; points]; z1],
+            gear_m: vec![vec![0.0; points]; z2],
+        }
+    }
+
+    /// Largest depth on any tooth of either gear, m.
+    pub fn max_m(&self) -> f64 {
+        max_of(&self.pinion_m).max(max_of(&self.gear_m))
+    }
+}
+
+/// Largest entry of every profile, m (0 for none).
+pub fn max_of(profiles: &[Vec<f64>]) -> f64 {
+    profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))
+}
+
+/// Mean profile of several teeth.
+pub fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
+    let n = profiles.first().map_or(0, Vec::len);
+    let z = profiles.len().max(1) as f64;
+    (0..n)
+        .map(|i| profiles.iter().map(|p| p[i]).sum::<f64>() / z)
+        .collect()
 }
 
 impl WearState {
@@ -23,26 +64,59 @@ impl WearState {
             cycles: 0.0,
             pinion_m: vec![0.0; points],
             gear_m: vec![0.0; points],
+            teeth: None,
         }
     }
 
-    /// Paper eq. (17): hold the per-cycle increment for `cycles` cycles.
-    pub fn advance(&mut self, inc: &WearIncrement, cycles: f64) {
-        for (h, d) in self.pinion_m.iter_mut().zip(&inc.pinion_m) {
-            *h += cycles * d;
+    /// No wear on every tooth of z1 pinion and z2 gear teeth (a tooth-resolved run).
+    pub fn per_tooth(points: usize, z1: usize, z2: usize) -> Self {
+        Self {
+            teeth: Some(ToothWear::new(points, z1, z2)),
+            ..Self::new(points)
         }
-        for (h, d) in self.gear_m.iter_mut().zip(&inc.gear_m) {
-            *h += cycles * d;
+    }
+
+    /// Paper eq. (17): hold the per-cycle increment for `cycles` cycles (every tooth its
+    /// own when both state and increment are per tooth).
+    pub fn advance(&mut self, inc: &WearIncrement, cycles: f64) {
+        let add = |h: &mut [f64], d: &[f64]| {
+            for (h, d) in h.iter_mut().zip(d) {
+                *h += cycles * d;
+            }
+        };
+        match (&mut self.teeth, &inc.teeth) {
+            (Some(t), Some(i)) => {
+                for (h, d) in t.pinion_m.iter_mut().zip(&i.pinion_m) {
+                    add(h, d);
+                }
+                for (h, d) in t.gear_m.iter_mut().zip(&i.gear_m) {
+                    add(h, d);
+                }
+                self.pinion_m = mean_profile(&t.pinion_m);
+                self.gear_m = mean_profile(&t.gear_m);
+            }
+            _ => {
+                add(&mut self.pinion_m, &inc.pinion_m);
+                add(&mut self.gear_m, &inc.gear_m);
+            }
         }
         self.cycles += cycles;
     }
 
+    /// Largest pinion wear depth, m (over every tooth when per tooth).
     pub fn max_pinion_m(&self) -> f64 {
-        self.pinion_m.iter().fold(0.0_f64, |m, x| m.max(*x))
+        match &self.teeth {
+            Some(t) => max_of(&t.pinion_m),
+            None => self.pinion_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
+        }
     }
 
+    /// Largest gear wear depth, m (over every tooth when per tooth).
     pub fn max_gear_m(&self) -> f64 {
-        self.gear_m.iter().fold(0.0_f64, |m, x| m.max(*x))
+        match &self.teeth {
+            Some(t) => max_of(&t.gear_m),
+            None => self.gear_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
+        }
     }
 
     /// Gap a pair must close at each contact position: pinion wear plus the wear of the
@@ -61,10 +135,15 @@ impl WearState {
     pub fn scaled_to_max_pinion(&self, target_m: f64) -> Self {
         let m = self.max_pinion_m();
         let f = if m > 0.0 { target_m / m } else { 0.0 };
+        let scale = |v: &[f64]| v.iter().map(|x| x * f).collect::<Vec<_>>();
         Self {
             cycles: self.cycles * f,
-            pinion_m: self.pinion_m.iter().map(|x| x * f).collect(),
-            gear_m: self.gear_m.iter().map(|x| x * f).collect(),
+            pinion_m: scale(&self.pinion_m),
+            gear_m: scale(&self.gear_m),
+            teeth: self.teeth.as_ref().map(|t| ToothWear {
+                pinion_m: t.pinion_m.iter().map(|p| scale(p)).collect(),
+                gear_m: t.gear_m.iter().map(|p| scale(p)).collect(),
+            }),
         }
     }
 }

@@ -1,6 +1,8 @@
 //! Helpers shared by the tests that run the binary.
 #![allow(dead_code)]
 
+pub mod linear;
+
 use std::path::Path;
 use std::process::{Command, Output};
 

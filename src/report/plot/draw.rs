@@ -301,7 +301,7 @@ where
                     sample_polyline(&[to_px(&(x, base)), to_px(&(x, y))], &mut marks);
                 }
             }
-            (_, LineStyle::Points) => marks.extend(p.iter().map(to_px)),
+            (PanelKind::Cells, _) | (_, LineStyle::Points) => marks.extend(p.iter().map(to_px)),
             _ => sample_polyline(&p.iter().map(to_px).collect::<Vec<_>>(), &mut marks),
         }
     }
@@ -395,6 +395,14 @@ where
                         .map(|&(x, y)| PathElement::new(vec![(x, base), (x, y)], line)),
                 )
                 .map(|_| ()),
+            (PanelKind::Cells, _) => {
+                let (w, h) = (0.5 * panel.cell_size.0, 0.5 * panel.cell_size.1);
+                chart
+                    .draw_series(p.iter().map(|&(x, y)| {
+                        Rectangle::new([(x - w, y - h), (x + w, y + h)], color.filled())
+                    }))
+                    .map(|_| ())
+            }
             // Segment by segment: a wide polyline's miter joins spike far beyond the data
             // where the line turns back on itself (a force jump), as plotters draws them.
             (_, LineStyle::Solid) => chart

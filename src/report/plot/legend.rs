@@ -44,7 +44,7 @@ pub fn series_color(i: usize, s: &Series) -> RGBColor {
 /// circles; spectra draw stems only).
 pub fn marker_of(kind: PanelKind, s: &Series) -> Marker {
     match (kind, s.style, s.marker) {
-        (PanelKind::Bars, _, _) => Marker::None,
+        (PanelKind::Bars | PanelKind::Cells, _, _) => Marker::None,
         (_, LineStyle::Points, Marker::None) => Marker::Circle,
         (_, _, m) => m,
     }

@@ -89,6 +89,9 @@ pub enum PanelKind {
     Lines,
     /// Vertical stems from the baseline (0, or the bottom of a log axis) to each point: spectra.
     Bars,
+    /// A filled cell of [`Panel::cell_size`] centred on each point: heat maps (each
+    /// series one colour, with a [`ColorBar`]).
+    Cells,
 }
 
 /// One named data series; `x` and `y` are paired up to the shorter length.
@@ -129,6 +132,8 @@ pub struct Panel {
     pub log_y: bool,
     pub kind: PanelKind,
     pub color_bar: Option<ColorBar>,
+    /// Width and height of a cell in data units (`PanelKind::Cells`).
+    pub cell_size: (f64, f64),
 }
 
 /// A figure: a title over panels stacked vertically with equal heights.

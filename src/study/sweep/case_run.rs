@@ -65,24 +65,169 @@ impl SweepRun {
         }
         c
     }
+
+    /// The run whose result columns are `columns`, if any.
+    pub fn of_columns(columns: &[String]) -> Option<Self> {
+        [SweepRun::Dynamics, SweepRun::Wear]
+            .into_iter()
+            .find(|r| r.columns() == columns)
+    }
 }
 
-/// The dynamics columns of a response summary. Unit conversions are written as in
+/// The headline numbers of one dynamic evaluation, as a sweep row holds them (display
+/// units; NaN where a number is not finite). Unit conversions are written as in
 /// `gearwear dynamics`' summary.json (x 1e6 for um, x 1e3 for mm/s), so the numbers are
 /// bit-identical to it.
-pub fn dynamics_results(s: &ResponseSummary) -> Vec<f64> {
-    let h = s.velocity_y_pinion_harmonics_m_per_s;
-    vec![
-        s.dte_max_m * 1e6,
-        s.velocity_y_pinion_rms_m_per_s * 1e3,
-        s.mesh_force_mean_n,
-        s.mesh_force_max_n,
-        s.dynamic_factor,
-        h[0] * 1e3,
-        h[1] * 1e3,
-        h[2] * 1e3,
-        h[3] * 1e3,
-    ]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DynamicsRow {
+    pub dte_max_um: f64,
+    pub velocity_y_pinion_rms_mm_per_s: f64,
+    pub mesh_force_mean_n: f64,
+    pub mesh_force_max_n: f64,
+    pub dynamic_factor: f64,
+    /// First to fourth mesh harmonic of dy_p/dt, mm/s.
+    pub mesh_harmonics_mm_per_s: [f64; 4],
+}
+
+impl DynamicsRow {
+    pub fn of(s: &ResponseSummary) -> Self {
+        let h = s.velocity_y_pinion_harmonics_m_per_s;
+        Self {
+            dte_max_um: s.dte_max_m * 1e6,
+            velocity_y_pinion_rms_mm_per_s: s.velocity_y_pinion_rms_m_per_s * 1e3,
+            mesh_force_mean_n: s.mesh_force_mean_n,
+            mesh_force_max_n: s.mesh_force_max_n,
+            dynamic_factor: s.dynamic_factor,
+            mesh_harmonics_mm_per_s: [h[0] * 1e3, h[1] * 1e3, h[2] * 1e3, h[3] * 1e3],
+        }
+    }
+
+    fn values(&self) -> [f64; 9] {
+        let h = self.mesh_harmonics_mm_per_s;
+        [
+            self.dte_max_um,
+            self.velocity_y_pinion_rms_mm_per_s,
+            self.mesh_force_mean_n,
+            self.mesh_force_max_n,
+            self.dynamic_factor,
+            h[0],
+            h[1],
+            h[2],
+            h[3],
+        ]
+    }
+
+    fn from_values(v: &[f64]) -> Self {
+        Self {
+            dte_max_um: v[0],
+            velocity_y_pinion_rms_mm_per_s: v[1],
+            mesh_force_mean_n: v[2],
+            mesh_force_max_n: v[3],
+            dynamic_factor: v[4],
+            mesh_harmonics_mm_per_s: [v[5], v[6], v[7], v[8]],
+        }
+    }
+}
+
+/// Where one wear run of a sweep case ended.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WearEnd {
+    pub max_wear_pinion_um: f64,
+    pub max_wear_gear_um: f64,
+    /// Updates after the first (new-teeth) record.
+    pub updates: f64,
+    /// Cycles reached.
+    pub cycles: f64,
+}
+
+impl WearEnd {
+    pub fn of(run: &WearRun) -> Self {
+        let last = run.last();
+        Self {
+            max_wear_pinion_um: last.map_or(f64::NAN, |r| r.wear.max_pinion_m() * 1e6),
+            max_wear_gear_um: last.map_or(f64::NAN, |r| r.wear.max_gear_m() * 1e6),
+            updates: run.records.len().saturating_sub(1) as f64,
+            cycles: last.map_or(f64::NAN, |r| r.wear.cycles),
+        }
+    }
+
+    fn values(&self) -> [f64; 4] {
+        [
+            self.max_wear_pinion_um,
+            self.max_wear_gear_um,
+            self.updates,
+            self.cycles,
+        ]
+    }
+
+    fn from_values(v: &[f64]) -> Self {
+        Self {
+            max_wear_pinion_um: v[0],
+            max_wear_gear_um: v[1],
+            updates: v[2],
+            cycles: v[3],
+        }
+    }
+}
+
+/// The results of one sweep case: a row of the sweep table after its varied values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CaseResults {
+    /// The new teeth's response (of the dynamic wear run's first update for a wear row).
+    pub dynamics: DynamicsRow,
+    /// The ends of the dynamic and quasi-static wear runs (a `wear` sweep).
+    pub wear: Option<[WearEnd; 2]>,
+}
+
+impl CaseResults {
+    /// What the case ran.
+    pub fn run(&self) -> SweepRun {
+        if self.wear.is_some() {
+            SweepRun::Wear
+        } else {
+            SweepRun::Dynamics
+        }
+    }
+
+    /// The numbers in [`SweepRun::columns`] order.
+    pub fn values(&self) -> Vec<f64> {
+        let mut v = self.dynamics.values().to_vec();
+        for w in self.wear.iter().flatten() {
+            v.extend(w.values());
+        }
+        v
+    }
+
+    /// From numbers in the column order of `run`; `None` when their count is not it.
+    pub fn from_values(run: SweepRun, v: &[f64]) -> Option<Self> {
+        if v.len() != run.columns().len() {
+            return None;
+        }
+        Some(Self {
+            dynamics: DynamicsRow::from_values(&v[..9]),
+            wear: (run == SweepRun::Wear).then(|| {
+                [
+                    WearEnd::from_values(&v[9..13]),
+                    WearEnd::from_values(&v[13..17]),
+                ]
+            }),
+        })
+    }
+
+    /// The number of column `name`, if the row has it.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        let i = self.run().columns().iter().position(|c| c == name)?;
+        self.values().get(i).copied()
+    }
+
+    /// Whether both rows hold the same numbers, bit for bit (NaN equal to NaN).
+    pub fn same_as(&self, o: &CaseResults) -> bool {
+        let (a, b) = (self.values(), o.values());
+        a.len() == b.len()
+            && a.iter()
+                .zip(&b)
+                .all(|(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()))
+    }
 }
 
 /// Why a case produced no row.
@@ -103,9 +248,9 @@ impl std::fmt::Display for CaseError {
     }
 }
 
-/// Results of one case (in [`SweepRun::columns`] order) and the model's warnings.
+/// Results of one case and the model's warnings.
 pub struct CaseOutcome {
-    pub results: Vec<f64>,
+    pub results: CaseResults,
     pub warnings: Vec<String>,
 }
 
@@ -137,7 +282,7 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     }
 }
 
-/// One steady-state evaluation of `case` with new teeth (a `--run dynamics` row), started
+/// One steady-state evaluation of `case` with new teeth (a dynamics row), started
 /// from `start` (a periodic state of a neighbouring case, [`DynamicResponse::end_state`])
 /// or, with `None`, from the static equilibrium; also returns the end state.
 ///
@@ -152,27 +297,27 @@ pub fn run_dynamics_from(
         .dynamic_from(&wear, &ExternalError::none(), start)
         .map_err(|e| CaseError::Solve(e.into()))?;
     let outcome = CaseOutcome {
-        results: dynamics_results(&ResponseSummary::of(&r)),
+        results: CaseResults {
+            dynamics: DynamicsRow::of(&ResponseSummary::of(&r)),
+            wear: None,
+        },
         warnings: model.warnings,
     };
     Ok((outcome, r.end_state))
 }
 
 /// Dynamics columns of the dynamic run's first update (new teeth), then the wear columns.
-fn wear_results(d: &WearRun, q: &WearRun) -> Vec<f64> {
-    let mut v = d
+fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
+    let dynamics = d
         .records
         .first()
-        .map(|r| dynamics_results(&r.summary))
-        .unwrap_or_else(|| vec![f64::NAN; DYNAMICS_COLUMNS.len()]);
-    for run in [d, q] {
-        let last = run.last();
-        v.push(last.map_or(f64::NAN, |r| r.wear.max_pinion_m() * 1e6));
-        v.push(last.map_or(f64::NAN, |r| r.wear.max_gear_m() * 1e6));
-        v.push(run.records.len().saturating_sub(1) as f64);
-        v.push(last.map_or(f64::NAN, |r| r.wear.cycles));
+        .map_or(DynamicsRow::from_values(&[f64::NAN; 9]), |r| {
+            DynamicsRow::of(&r.summary)
+        });
+    CaseResults {
+        dynamics,
+        wear: Some([WearEnd::of(d), WearEnd::of(q)]),
     }
-    v
 }
 
 /// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
@@ -234,6 +379,44 @@ fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
 }
 
 impl CaseRecord {
+    /// The record of case `case_id` (resolved case `case_sha256`, value labels `values`
+    /// of `keys`) with `results`, sealed.
+    pub fn of(
+        case_id: usize,
+        case_sha256: &str,
+        keys: &[String],
+        values: &[String],
+        results: &CaseResults,
+        continuation: Option<ContinuationLink>,
+    ) -> Self {
+        let run = results.run();
+        CaseRecord {
+            case_id,
+            case_sha256: case_sha256.to_owned(),
+            run,
+            keys: keys.to_vec(),
+            values: values.to_vec(),
+            columns: run.columns(),
+            results: results
+                .values()
+                .iter()
+                .map(|x| x.is_finite().then_some(*x))
+                .collect(),
+            continuation,
+            checksum: None,
+        }
+        .sealed()
+    }
+
+    /// The record's results (null numbers as NaN), if its columns are this version's.
+    pub fn case_results(&self) -> Option<CaseResults> {
+        if self.columns != self.run.columns() {
+            return None;
+        }
+        let v: Vec<f64> = self.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect();
+        CaseResults::from_values(self.run, &v)
+    }
+
     fn content_checksum(&self) -> String {
         let plain = CaseRecord {
             checksum: None,
@@ -346,15 +529,30 @@ mod tests {
             velocity_y_pinion_harmonics_m_per_s: [1e-3, 2e-3, 3e-3, 4e-3],
             ..Default::default()
         };
-        let v = dynamics_results(&s);
+        let r = CaseResults {
+            dynamics: DynamicsRow::of(&s),
+            wear: None,
+        };
+        let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
         // 2e-5 m is 20 um; 4e-3 m/s is 4 mm/s (to rounding of the unit factors).
         assert!((v[0] - 20.0).abs() < 1e-12 && (v[8] - 4.0).abs() < 1e-12);
+        assert_eq!(r.get("mesh_harmonic4_mm_per_s"), Some(v[8]));
+        assert_eq!(CaseResults::from_values(SweepRun::Dynamics, &v), Some(r));
         let (d, q) = (
             WearRun::new(WearMode::Dynamic),
             WearRun::new(WearMode::QuasiStatic),
         );
-        assert_eq!(SweepRun::Wear.columns().len(), wear_results(&d, &q).len());
+        let w = wear_results(&d, &q);
+        assert_eq!(SweepRun::Wear.columns().len(), w.values().len());
+        assert_eq!(w.run(), SweepRun::Wear);
+        assert!(CaseResults::from_values(SweepRun::Wear, &w.values())
+            .unwrap()
+            .same_as(&w));
+        assert_eq!(
+            SweepRun::of_columns(&SweepRun::Wear.columns()),
+            Some(SweepRun::Wear)
+        );
     }
 
     #[test]

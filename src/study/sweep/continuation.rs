@@ -17,6 +17,7 @@ use super::case_run::{run_dynamics_from, CaseError, CaseOutcome};
 use super::plan::SweepPlan;
 use crate::config::Case;
 use crate::dynamics::model::NSTATE;
+use crate::remedy::{Arg, Problem, Words};
 use serde::{Deserialize, Serialize};
 
 /// Direction of a branch along the varied parameter.
@@ -83,22 +84,32 @@ pub struct ContinuationPlan {
 impl ContinuationPlan {
     /// Order the single axis of `plan` by its numeric values. Errors: more than one axis,
     /// or a value that is not a finite number (named).
-    pub fn new(plan: &SweepPlan, c: Continuation) -> Result<Self, String> {
+    pub fn new(plan: &SweepPlan, c: Continuation) -> Result<Self, Problem> {
         let [axis] = &plan.axes[..] else {
-            return Err(format!(
-                "--continuation follows one parameter: give exactly one --vary (got {}: {})",
-                plan.axes.len(),
-                plan.keys().join(", ")
+            return Err(Problem::of(
+                Arg::Continuation,
+                Words::new()
+                    .text("a continuation follows one parameter: give exactly one ")
+                    .arg(Arg::Vary)
+                    .text(format!(
+                        " (got {}: {})",
+                        plan.axes.len(),
+                        plan.keys().join(", ")
+                    )),
             ));
         };
         let mut numbers = Vec::with_capacity(axis.values.len());
         for v in &axis.values {
-            match v.parse::<f64>() {
-                Ok(x) if x.is_finite() => numbers.push(x),
-                _ => {
-                    return Err(format!(
-                        "--continuation --vary {}: value `{v}` is not a number (a branch is followed along a numeric parameter)",
-                        axis.key
+            match v.as_number() {
+                Some(x) => numbers.push(x),
+                None => {
+                    return Err(Problem::given(
+                        Arg::Vary,
+                        axis.key,
+                        format!(
+                            "value `{}` is not a number (a continuation follows a branch along a numeric parameter)",
+                            v.label
+                        ),
                     ))
                 }
             }
@@ -158,7 +169,7 @@ pub enum PointRun {
     /// Computed now from `start` (`None`: the static equilibrium).
     Computed {
         start: Option<[f64; NSTATE]>,
-        outcome: CaseOutcome,
+        outcome: Box<CaseOutcome>,
         end_state: [f64; NSTATE],
     },
     /// The solver failed (or the case could not be modelled) from `start`.
@@ -178,9 +189,13 @@ pub fn run_branch(
     points: &[(usize, &Case)],
     finished: &FinishedLookup,
     report: &mut dyn FnMut(usize, PointRun),
+    keep_going: &dyn Fn() -> bool,
 ) {
     let mut start: Option<[f64; NSTATE]> = None;
     for &(case_id, case) in points {
+        if !keep_going() {
+            return;
+        }
         if let Some(end_state) = finished(case_id, start.as_ref()) {
             start = Some(end_state);
             report(case_id, PointRun::Finished { end_state });
@@ -194,7 +209,7 @@ pub fn run_branch(
                     case_id,
                     PointRun::Computed {
                         start: from,
-                        outcome,
+                        outcome: Box::new(outcome),
                         end_state,
                     },
                 );
@@ -206,12 +221,14 @@ pub fn run_branch(
 
 /// Run every branch of `plan` (side by side on the rayon pool), `cases[i]` being the
 /// resolved case of value `i` of the axis. `finished(branch, case_id, start)` and
-/// `report(branch, case_id, run)` as in [`run_branch`].
+/// `report(branch, case_id, run)` as in [`run_branch`]; a branch stops before its next
+/// point once `keep_going()` says no.
 pub fn run_continuation(
     plan: &ContinuationPlan,
     cases: &[Case],
     finished: &BranchFinishedLookup,
     report: &(dyn Fn(Branch, usize, PointRun) + Sync),
+    keep_going: &(dyn Fn() -> bool + Sync),
 ) {
     use rayon::prelude::*;
     plan.branches.par_iter().for_each(|(branch, points)| {
@@ -223,6 +240,7 @@ pub fn run_continuation(
             &points,
             &|id, start| finished(*branch, id, start),
             &mut |id, run| report(*branch, id, run),
+            keep_going,
         );
     });
 }
@@ -261,10 +279,13 @@ mod tests {
         ])
         .unwrap();
         let e = ContinuationPlan::new(&two, Continuation::Up).unwrap_err();
-        assert!(e.contains("exactly one --vary"), "{e}");
+        assert_eq!(e.arg, Some(Arg::Continuation));
+        assert!(e.to_string().contains("exactly one sweep axis"), "{e}");
         let words =
             SweepPlan::new(vec![parse_vary("friction.model=none,xu2007").unwrap()]).unwrap();
-        let e = ContinuationPlan::new(&words, Continuation::Up).unwrap_err();
+        let e = ContinuationPlan::new(&words, Continuation::Up)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("`none`") && e.contains("friction.model"), "{e}");
     }
 }

@@ -1,135 +1,232 @@
-//! The case list of a sweep: `--vary` axes, their cross product in a stable order, and
-//! shards of it.
+//! The case list of a sweep: its axes (varied keys and their values), their cross product
+//! in a stable order, and shards of it.
 //!
-//! Every value is kept as the text handed to `load_case` as `--set KEY=value`, so a sweep
-//! case is exactly the case `gearwear dynamics --set KEY=value ...` would run.
+//! Each axis names a key of the case file, resolved against the schema when the sweep is
+//! planned (an unknown key is refused there), and holds its values typed once (numbers,
+//! strings, arrays of numbers, read as an override reads them), each with the label it
+//! goes by in tables and case records (the text as given, or the shortest form of a
+//! range's number). A case of the sweep is the base case with its values set
+//! (`config::load::case_with`), so it is exactly the case an override
+//! `KEY=value` of the same value gives.
+
+use crate::config::load::{clip, known_key, override_value, SHOWN_CHARS};
+use crate::remedy::{Arg, Problem, Remedy, Words};
+use toml::Value;
 
 /// Largest cross product accepted (a guard against typos such as a step of 1e-9).
 pub const MAX_CASES: usize = 1_000_000;
 
-/// One varied key and its values, in the order given.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Axis {
-    /// Dotted case key, `section.key`.
-    pub key: String,
-    /// Values as `--set` text (TOML value or bare string).
-    pub values: Vec<String>,
+/// One value of an axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisValue {
+    /// The value as the case reads it.
+    pub value: Value,
+    /// How the value is shown: in sweep tables, case records and messages.
+    pub label: String,
 }
 
-/// Parse `KEY=START:STOP:STEP` (numbers, STOP included when the range lands on it) or
-/// `KEY=v1,v2,...` (any values the key accepts). Errors name the key.
-pub fn parse_vary(text: &str) -> Result<Axis, String> {
+impl AxisValue {
+    /// A number (a range's value), labelled in its shortest exact form.
+    pub fn number(x: f64) -> Self {
+        Self {
+            value: Value::Float(x),
+            label: format_number(x),
+        }
+    }
+
+    /// A value given as text, read as an override reads it.
+    pub fn text(t: &str) -> Self {
+        Self {
+            value: override_value(t),
+            label: t.trim().to_owned(),
+        }
+    }
+
+    /// The value as a finite number, if it is one.
+    pub fn as_number(&self) -> Option<f64> {
+        number_of(&self.value).filter(|x| x.is_finite())
+    }
+}
+
+fn number_of(v: &Value) -> Option<f64> {
+    v.as_float().or_else(|| v.as_integer().map(|i| i as f64))
+}
+
+/// One varied key and its values, in the order given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// Dotted case key, `section.key`, as the schema spells it.
+    pub key: &'static str,
+    pub values: Vec<AxisValue>,
+}
+
+impl Axis {
+    /// An axis of `key` with `values` (repeats refused, key checked against the schema).
+    pub fn new(key: &str, values: Vec<AxisValue>) -> Result<Self, Problem> {
+        let spec =
+            known_key(key).map_err(|e| Problem::given(Arg::Vary, clip(key, SHOWN_CHARS), e))?;
+        if values.is_empty() {
+            return Err(Problem::given(Arg::Vary, spec.key, "no values given"));
+        }
+        no_repeats(spec.key, &values)?;
+        Ok(Self {
+            key: spec.key,
+            values,
+        })
+    }
+
+    /// The value labels, in order.
+    pub fn labels(&self) -> Vec<String> {
+        self.values.iter().map(|v| v.label.clone()).collect()
+    }
+}
+
+/// Parse `KEY=START:STOP:STEP` or `KEY=v1,v2,...` (the command line's form; see
+/// [`parse_axis`]).
+pub fn parse_vary(text: &str) -> Result<Axis, Problem> {
     let form = "expected KEY=START:STOP:STEP or KEY=v1,v2,...";
     let Some((key, spec)) = text.split_once('=') else {
-        return Err(format!("--vary \"{text}\": {form}"));
+        return Err(Problem::given(
+            Arg::Vary,
+            format!("\"{}\"", clip(text, SHOWN_CHARS)),
+            form,
+        ));
     };
+    parse_axis(key, spec)
+}
+
+/// An axis from its key and values text: `START:STOP:STEP` (numbers, STOP included when
+/// the range lands on it) or `v1,v2,...` (any values the key accepts; an array key takes
+/// `[a, b],[c, d]`). Errors name the key.
+pub fn parse_axis(key: &str, spec: &str) -> Result<Axis, Problem> {
     let key = key.trim();
     let spec = spec.trim();
+    let form = "expected KEY=START:STOP:STEP or KEY=v1,v2,...";
     match key.split_once('.') {
         Some((s, k)) if !s.is_empty() && !k.is_empty() && !k.contains('.') => {}
         _ => {
-            return Err(format!(
-                "--vary \"{text}\": the key `{key}` must be section.key"
+            return Err(Problem::given(
+                Arg::Vary,
+                format!("\"{}={}\"", clip(key, SHOWN_CHARS), clip(spec, SHOWN_CHARS)),
+                format!("the key `{}` must be section.key", clip(key, SHOWN_CHARS)),
             ))
         }
     }
+    let spec_of =
+        known_key(key).map_err(|e| Problem::given(Arg::Vary, clip(key, SHOWN_CHARS), e))?;
+    let key = spec_of.key;
     if spec.is_empty() {
-        return Err(format!("--vary {key}: no values given ({form})"));
+        return Err(Problem::given(
+            Arg::Vary,
+            key,
+            format!("no values given ({form})"),
+        ));
     }
-    let array_key = matches!(
-        crate::config::schema::spec(key).map(|s| s.valid),
-        Some(crate::config::schema::Valid::NumArray(_))
-    );
+    let given = format!("{key}={}", clip(spec, SHOWN_CHARS));
+    let bad = |what: String| Problem::given(Arg::Vary, given.clone(), what);
+    let array_key = matches!(spec_of.valid, crate::config::schema::Valid::NumArray(_));
     let values = if array_key {
-        array_values(key, spec)?
+        array_values(spec).map_err(|e| e.into_problem(&given))?
     } else if spec.contains(':') && !spec.contains(',') {
         let parts: Vec<&str> = spec.split(':').map(str::trim).collect();
         let [a, b, c] = parts[..] else {
-            return Err(format!(
-                "--vary {key}={spec}: a range is START:STOP:STEP (three numbers)"
-            ));
+            return Err(bad("a range is START:STOP:STEP (three numbers)".into()));
         };
-        let num = |s: &str, what: &str| -> Result<f64, String> {
+        let num = |s: &str, what: &str| -> Result<f64, Problem> {
             s.parse::<f64>()
                 .ok()
                 .filter(|x| x.is_finite())
-                .ok_or_else(|| format!("--vary {key}={spec}: {what} `{s}` is not a finite number"))
+                .ok_or_else(|| bad(format!("{what} `{s}` is not a finite number")))
         };
         let (start, stop, step) = (num(a, "START")?, num(b, "STOP")?, num(c, "STEP")?);
         range_values(start, stop, step)
-            .map_err(|m| format!("--vary {key}={spec}: {m}"))?
+            .map_err(bad)?
             .into_iter()
-            .map(format_number)
+            .map(AxisValue::number)
             .collect()
     } else {
-        let items: Vec<String> = spec.split(',').map(|s| s.trim().to_owned()).collect();
-        if items.iter().any(String::is_empty) {
-            return Err(format!("--vary {key}={spec}: empty value in the list"));
+        let items: Vec<&str> = spec.split(',').map(str::trim).collect();
+        if items.iter().any(|s| s.is_empty()) {
+            return Err(bad("empty value in the list".into()));
         }
-        items
+        items.into_iter().map(AxisValue::text).collect()
     };
-    no_repeats(key, &values)?;
-    Ok(Axis {
-        key: key.to_owned(),
-        values,
-    })
+    Axis::new(key, values)
+}
+
+/// Why an array key's values do not parse.
+enum ArrayError {
+    Form,
+    Empty,
+}
+
+impl ArrayError {
+    fn into_problem(self, given: &str) -> Problem {
+        match self {
+            ArrayError::Empty => Problem::given(Arg::Vary, given, "empty value in the list"),
+            ArrayError::Form => {
+                let key = given.split('=').next().unwrap_or(given);
+                Problem::given(Arg::Vary, given, "the key takes an array").remedy(Remedy::new(
+                    Words::new()
+                        .text("give each value in brackets, e.g. ")
+                        .arg(Arg::Vary)
+                        .text(format!(" {key}=[0.21,0.19,0.15],[0.3,0.25,0.2]")),
+                ))
+            }
+        }
+    }
 }
 
 /// The values of an array key: `[a, b, c],[d, e, f],...` (each value in brackets; the
 /// commas inside brackets belong to the value).
-fn array_values(key: &str, spec: &str) -> Result<Vec<String>, String> {
-    let bad = || {
-        format!(
-            "--vary {key}={spec}: the key takes an array; give each value in brackets, e.g. --vary {key}=[0.21,0.19,0.15],[0.3,0.25,0.2]"
-        )
-    };
+fn array_values(spec: &str) -> Result<Vec<AxisValue>, ArrayError> {
     let mut values = Vec::new();
     let mut rest = spec.trim();
     while !rest.is_empty() {
         if !rest.starts_with('[') {
-            return Err(bad());
+            return Err(ArrayError::Form);
         }
-        let end = rest.find(']').ok_or_else(bad)?;
-        values.push(rest[..=end].to_owned());
+        let end = rest.find(']').ok_or(ArrayError::Form)?;
+        values.push(AxisValue::text(&rest[..=end]));
         rest = rest[end + 1..].trim_start();
         if let Some(r) = rest.strip_prefix(',') {
             rest = r.trim_start();
             if rest.is_empty() {
-                return Err(format!("--vary {key}={spec}: empty value in the list"));
+                return Err(ArrayError::Empty);
             }
         } else if !rest.is_empty() {
-            return Err(bad());
+            return Err(ArrayError::Form);
         }
     }
     Ok(values)
 }
 
-/// A value as the case reads it: numbers compared as numbers (`30` = `30.0` = `3e1`),
-/// arrays element by element, anything else as its text.
-fn canonical(v: &str) -> String {
-    let num = |x: &toml::Value| x.as_float().or_else(|| x.as_integer().map(|i| i as f64));
-    match toml::from_str::<toml::Table>(&format!("v = {v}"))
-        .ok()
-        .and_then(|t| t.get("v").cloned())
-    {
-        Some(x) if num(&x).is_some() => format!("{:?}", num(&x)),
-        Some(toml::Value::Array(a)) if a.iter().all(|x| num(x).is_some()) => {
-            format!("{:?}", a.iter().filter_map(num).collect::<Vec<_>>())
+/// A value as the case reads it, for comparison: numbers as numbers (`30` = `30.0` =
+/// `3e1`), arrays element by element, anything else as its text.
+fn canonical(v: &AxisValue) -> String {
+    match &v.value {
+        x if number_of(x).is_some() => format!("{:?}", number_of(x)),
+        Value::Array(a) if a.iter().all(|x| number_of(x).is_some()) => {
+            format!("{:?}", a.iter().filter_map(number_of).collect::<Vec<_>>())
         }
-        _ => v.trim().to_owned(),
+        _ => v.label.clone(),
     }
 }
 
 /// Error when two values of an axis are the same value (which would run one case twice).
 /// Linear in the number of values (a hash of the canonical forms).
-fn no_repeats(key: &str, values: &[String]) -> Result<(), String> {
+fn no_repeats(key: &str, values: &[AxisValue]) -> Result<(), Problem> {
     let mut seen: std::collections::HashMap<String, usize> =
         std::collections::HashMap::with_capacity(values.len());
     for (i, v) in values.iter().enumerate() {
         if let Some(j) = seen.insert(canonical(v), i) {
-            return Err(format!(
-                "--vary {key}: value `{}` is the same as `{}`: each value may be listed once (the case would run twice)",
-                values[i], values[j]
+            return Err(Problem::given(
+                Arg::Vary,
+                key,
+                format!(
+                    "value `{}` is the same as `{}`: each value may be listed once (the case would run twice)",
+                    values[i].label, values[j].label
+                ),
             ));
         }
     }
@@ -173,20 +270,24 @@ pub use crate::format::format_number;
 
 /// The cross product of the axes. Case ids number it with the first axis varying
 /// slowest (row-major), so ids do not depend on sharding.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SweepPlan {
     pub axes: Vec<Axis>,
 }
 
 impl SweepPlan {
     /// Checks: at least one axis, no key twice, at most [`MAX_CASES`] cases.
-    pub fn new(axes: Vec<Axis>) -> Result<Self, String> {
+    pub fn new(axes: Vec<Axis>) -> Result<Self, Problem> {
         if axes.is_empty() {
-            return Err("sweep: give at least one --vary".into());
+            return Err(Problem::new(
+                Words::new()
+                    .text("a sweep needs at least one ")
+                    .arg(Arg::Vary),
+            ));
         }
         for (i, a) in axes.iter().enumerate() {
             if axes[..i].iter().any(|b| b.key == a.key) {
-                return Err(format!("--vary {}: the key is varied twice", a.key));
+                return Err(Problem::given(Arg::Vary, a.key, "the key is varied twice"));
             }
         }
         let mut n: usize = 1;
@@ -194,7 +295,7 @@ impl SweepPlan {
             n = n
                 .checked_mul(a.values.len())
                 .filter(|n| *n <= MAX_CASES)
-                .ok_or_else(|| format!("sweep: more than {MAX_CASES} cases"))?;
+                .ok_or_else(|| Problem::new(format!("a sweep of more than {MAX_CASES} cases")))?;
         }
         Ok(Self { axes })
     }
@@ -209,31 +310,47 @@ impl SweepPlan {
     }
 
     pub fn keys(&self) -> Vec<String> {
-        self.axes.iter().map(|a| a.key.clone()).collect()
+        self.axes.iter().map(|a| a.key.to_owned()).collect()
     }
 
     /// Values of case `id` (< len), one per axis.
-    pub fn values_of(&self, id: usize) -> Vec<String> {
+    pub fn values_of(&self, id: usize) -> Vec<&AxisValue> {
         let mut rest = id;
-        let mut out = vec![String::new(); self.axes.len()];
-        for (i, a) in self.axes.iter().enumerate().rev() {
-            out[i] = a.values[rest % a.values.len()].clone();
+        let mut out = Vec::with_capacity(self.axes.len());
+        for a in self.axes.iter().rev() {
+            out.push(&a.values[rest % a.values.len()]);
             rest /= a.values.len();
         }
+        out.reverse();
         out
     }
 
-    /// `--set` overrides of case `id`.
-    pub fn overrides_of(&self, id: usize) -> Vec<String> {
+    /// The value labels of case `id`, one per axis.
+    pub fn labels_of(&self, id: usize) -> Vec<String> {
+        self.values_of(id).iter().map(|v| v.label.clone()).collect()
+    }
+
+    /// The (key, value) settings of case `id` (`config::load::case_with`).
+    pub fn settings_of(&self, id: usize) -> Vec<(&'static str, Value)> {
         self.axes
             .iter()
             .zip(self.values_of(id))
-            .map(|(a, v)| format!("{}={v}", a.key))
+            .map(|(a, v)| (a.key, v.value.clone()))
             .collect()
+    }
+
+    /// "KEY=label, KEY=label" of case `id`, for messages.
+    pub fn describe(&self, id: usize) -> String {
+        self.axes
+            .iter()
+            .zip(self.values_of(id))
+            .map(|(a, v)| format!("{}={}", a.key, v.label))
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 }
 
-/// `--shard I/N`: the I-th (1-based) of N round-robin slices, i.e. the case ids with
+/// A shard `I/N`: the I-th (1-based) of N round-robin slices, i.e. the case ids with
 /// id mod N = I - 1. Round-robin, not contiguous: neighbouring cases of a sweep cost
 /// about the same, so interleaving gives every shard a similar mix.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -246,8 +363,14 @@ impl Shard {
     /// The whole sweep as one shard.
     pub const ALL: Shard = Shard { index: 1, count: 1 };
 
-    pub fn parse(text: &str) -> Result<Self, String> {
-        let bad = || format!("--shard {text}: expected I/N with whole numbers 1 <= I <= N");
+    pub fn parse(text: &str) -> Result<Self, Problem> {
+        let bad = || {
+            Problem::given(
+                Arg::Shard,
+                clip(text, SHOWN_CHARS),
+                "expected I/N with whole numbers 1 <= I <= N",
+            )
+        };
         let (i, n) = text.split_once('/').ok_or_else(bad)?;
         let i: usize = i.trim().parse().map_err(|_| bad())?;
         let n: usize = n.trim().parse().map_err(|_| bad())?;
@@ -304,12 +427,18 @@ mod tests {
         assert!(range_values(0.0, 1.0, 1e-12).is_err());
     }
 
+    fn labels(a: &Axis) -> Vec<String> {
+        a.labels()
+    }
+
     #[test]
     fn parse_forms_and_errors_name_the_key() {
         let a = parse_vary("operating.input_speed_hz=20:30:5").unwrap();
-        assert_eq!(a.values, vec!["20", "25", "30"]);
+        assert_eq!(labels(&a), vec!["20", "25", "30"]);
+        assert_eq!(a.values[1].value, Value::Float(25.0));
         let a = parse_vary(" friction.model = xu2007, constant ").unwrap();
-        assert_eq!((a.key.as_str(), a.values.len()), ("friction.model", 2));
+        assert_eq!((a.key, a.values.len()), ("friction.model", 2));
+        assert_eq!(a.values[0].value, Value::String("xu2007".into()));
         for bad in [
             "operating.input_speed_hz=1:2",
             "operating.input_speed_hz=5:1:1",
@@ -317,33 +446,56 @@ mod tests {
             "operating.input_speed_hz=a:2:1",
             "operating.input_speed_hz=1,,2",
             "operating.input_speed_hz=",
+            "operating.speed_hz=1,2",
         ] {
-            let e = parse_vary(bad).unwrap_err();
-            assert!(e.contains("operating.input_speed_hz"), "{bad}: {e}");
+            let e = parse_vary(bad).unwrap_err().to_string();
+            assert!(
+                e.contains(bad.split(['=', '.']).nth(1).unwrap()),
+                "{bad}: {e}"
+            );
+            assert!(e.contains("operating."), "{bad}: {e}");
         }
         assert!(parse_vary("speed").is_err());
-        assert!(parse_vary("speed=1,2").unwrap_err().contains("section.key"));
+        let e = parse_vary("speed=1,2").unwrap_err().to_string();
+        assert!(e.contains("section.key"), "{e}");
+        let e = parse_vary("operating.speed_hz=1,2")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("unknown key") && e.contains("operating.input_speed_hz"),
+            "{e}"
+        );
     }
 
     #[test]
     fn equal_values_are_listed_once() {
-        for bad in ["a.x=30,30.0", "a.x=30,3e1", "friction.model=none,none"] {
-            let e = parse_vary(bad).unwrap_err();
+        for bad in [
+            "operating.input_speed_hz=30,30.0",
+            "operating.input_speed_hz=30,3e1",
+            "friction.model=none,none",
+        ] {
+            let e = parse_vary(bad).unwrap_err().to_string();
             assert!(e.contains("same as"), "{bad}: {e}");
         }
-        assert_eq!(parse_vary("a.x=30,30.5").unwrap().values.len(), 2);
+        assert_eq!(
+            parse_vary("operating.input_speed_hz=30,30.5")
+                .unwrap()
+                .values
+                .len(),
+            2
+        );
     }
 
     #[test]
     fn array_keys_take_bracketed_values() {
         let key = "surface.roughness_table_rms_um";
         let a = parse_vary(&format!("{key}=[0.21,0.19,0.15], [0.3, 0.2, 0.1]")).unwrap();
-        assert_eq!(a.values, vec!["[0.21,0.19,0.15]", "[0.3, 0.2, 0.1]"]);
+        assert_eq!(labels(&a), vec!["[0.21,0.19,0.15]", "[0.3, 0.2, 0.1]"]);
         for bad in ["1,2", "0.1:0.3:0.1", "[1,2],3", "[1,2", "[1],"] {
-            let e = parse_vary(&format!("{key}={bad}")).unwrap_err();
+            let e = parse_vary(&format!("{key}={bad}")).unwrap_err().to_string();
             assert!(e.contains(key), "{bad}: {e}");
         }
-        let e = parse_vary(&format!("{key}=1,2")).unwrap_err();
+        let e = parse_vary(&format!("{key}=1,2")).unwrap_err().to_string();
         assert!(
             e.contains("takes an array") && !e.contains("integer"),
             "{e}"
@@ -362,15 +514,21 @@ mod tests {
     #[test]
     fn first_axis_varies_slowest_and_shards_partition() {
         let p = SweepPlan::new(vec![
-            parse_vary("a.x=1,2").unwrap(),
-            parse_vary("b.y=p,q,r").unwrap(),
+            parse_vary("operating.input_speed_hz=1,2").unwrap(),
+            parse_vary("friction.model=none,constant,xu2007").unwrap(),
         ])
         .unwrap();
         assert_eq!(p.len(), 6);
-        assert_eq!(p.values_of(0), vec!["1", "p"]);
-        assert_eq!(p.values_of(2), vec!["1", "r"]);
-        assert_eq!(p.values_of(3), vec!["2", "p"]);
-        assert_eq!(p.overrides_of(5), vec!["a.x=2", "b.y=r"]);
+        assert_eq!(p.labels_of(0), vec!["1", "none"]);
+        assert_eq!(p.labels_of(2), vec!["1", "xu2007"]);
+        assert_eq!(p.labels_of(3), vec!["2", "none"]);
+        assert_eq!(
+            p.settings_of(5),
+            vec![
+                ("operating.input_speed_hz", Value::Integer(2)),
+                ("friction.model", Value::String("xu2007".into()))
+            ]
+        );
         // Every id in exactly one shard, for several shard counts (including more shards
         // than cases).
         for n in 1..=8 {
@@ -381,8 +539,8 @@ mod tests {
             assert_eq!(all, (0..6).collect::<Vec<_>>(), "N = {n}");
         }
         assert!(SweepPlan::new(vec![
-            parse_vary("a.x=1").unwrap(),
-            parse_vary("a.x=2").unwrap()
+            parse_vary("operating.input_speed_hz=1").unwrap(),
+            parse_vary("operating.input_speed_hz=2").unwrap()
         ])
         .is_err());
     }

@@ -86,7 +86,7 @@ pub struct SpeedMarks {
 /// mesh poles crossed by harmonics 1..=[`MARKED_HARMONICS`] within the swept range.
 pub fn speed_marks(base: &Model, plan: &SweepPlan) -> Option<SpeedMarks> {
     let axis = plan.axes.iter().find(|x| x.key == SPEED_KEY)?;
-    let speeds: Vec<f64> = axis.values.iter().filter_map(|v| v.parse().ok()).collect();
+    let speeds: Vec<f64> = axis.values.iter().filter_map(|v| v.as_number()).collect();
     let lo = speeds.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = speeds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let modal = ModalAnalysis::of(base);

@@ -1,11 +1,11 @@
-//! The sweep table: one row per case (varied values as text, `case_id`, result numbers),
-//! its CSV form, and the merge of shard tables.
+//! The sweep table: one row per case (the labels of its varied values, `case_id`, its
+//! results), its CSV form, and the merge of shard tables.
 //!
 //! A continuation sweep's rows also carry their branch: the CSV then has a `branch`
 //! column (`up` or `down`) right after `case_id`. Ordinary sweeps have no such column, so
 //! their tables are the same as before continuation existed.
 
-use super::case_run::CaseRecord;
+use super::case_run::{CaseRecord, CaseResults, SweepRun};
 use super::continuation::Branch;
 use std::collections::BTreeMap;
 
@@ -13,10 +13,9 @@ use std::collections::BTreeMap;
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
     pub case_id: usize,
-    /// Varied values, as given to `--set`.
+    /// Labels of the varied values (`study::sweep::plan::AxisValue::label`).
     pub values: Vec<String>,
-    /// Result numbers; NaN where a number was not finite (an empty CSV cell).
-    pub results: Vec<f64>,
+    pub results: CaseResults,
     /// The branch of a continuation point; `None` in an ordinary sweep.
     pub branch: Option<Branch>,
 }
@@ -27,48 +26,56 @@ impl SweepRow {
         self.case_id == o.case_id
             && self.values == o.values
             && self.branch == o.branch
-            && self.results.len() == o.results.len()
-            && self
-                .results
-                .iter()
-                .zip(&o.results)
-                .all(|(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()))
+            && self.results.same_as(&o.results)
     }
 }
 
 /// Rows of one sweep (or shard), sorted by case id.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SweepTable {
     /// Varied keys: the columns before `case_id`.
     pub keys: Vec<String>,
-    /// Result columns: the columns after `case_id`.
-    pub columns: Vec<String>,
+    /// What each case ran, which sets the result columns after `case_id`.
+    pub run: SweepRun,
     pub rows: Vec<SweepRow>,
 }
 
 impl SweepTable {
-    /// Table of case records (which must share keys and columns), sorted by case id.
-    pub fn from_records(keys: Vec<String>, columns: Vec<String>, records: &[CaseRecord]) -> Self {
-        let mut rows: Vec<SweepRow> = records
-            .iter()
-            .map(|r| SweepRow {
-                case_id: r.case_id,
-                values: r.values.clone(),
-                results: r.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect(),
-                branch: r.continuation.as_ref().map(|c| c.branch),
-            })
-            .collect();
-        rows.sort_by_key(|r| r.case_id);
+    /// An empty table.
+    pub fn new(keys: Vec<String>, run: SweepRun) -> Self {
         Self {
             keys,
-            columns,
-            rows,
+            run,
+            rows: Vec::new(),
         }
     }
 
-    /// Index of a result column.
-    pub fn column(&self, name: &str) -> Option<usize> {
-        self.columns.iter().position(|c| c == name)
+    /// Table of case records (which must share keys and run), sorted by case id; records
+    /// of another version's columns are left out.
+    pub fn from_records(keys: Vec<String>, run: SweepRun, records: &[CaseRecord]) -> Self {
+        let mut rows: Vec<SweepRow> = records
+            .iter()
+            .filter_map(|r| {
+                Some(SweepRow {
+                    case_id: r.case_id,
+                    values: r.values.clone(),
+                    results: r.case_results()?,
+                    branch: r.continuation.as_ref().map(|c| c.branch),
+                })
+            })
+            .collect();
+        rows.sort_by_key(|r| r.case_id);
+        Self { keys, run, rows }
+    }
+
+    /// The result columns.
+    pub fn columns(&self) -> Vec<String> {
+        self.run.columns()
+    }
+
+    /// Whether the rows have result column `name`.
+    pub fn has_column(&self, name: &str) -> bool {
+        self.columns().iter().any(|c| c == name)
     }
 
     /// Whether the rows carry branches (a continuation sweep).
@@ -87,7 +94,7 @@ impl SweepTable {
         if branches {
             header.push("branch".into());
         }
-        header.extend(self.columns.iter().cloned());
+        header.extend(self.columns());
         w.write_record(&header)?;
         for r in &self.rows {
             let mut rec = r.values.clone();
@@ -95,7 +102,7 @@ impl SweepTable {
             if branches {
                 rec.push(r.branch.map_or("", |b| b.name()).to_string());
             }
-            rec.extend(r.results.iter().map(|v| {
+            rec.extend(r.results.values().iter().map(|v| {
                 if v.is_finite() {
                     crate::format::format_number(*v)
                 } else {
@@ -122,11 +129,16 @@ impl SweepTable {
         let branch_at =
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
-        let mut t = SweepTable {
-            keys: header[..at].to_vec(),
-            columns: header[first_result..].to_vec(),
-            rows: Vec::new(),
+        let columns = header[first_result..].to_vec();
+        let Some(run) = SweepRun::of_columns(&columns) else {
+            return Err(format!(
+                "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}])",
+                columns.join(", "),
+                SweepRun::Dynamics.columns().join(", "),
+                SweepRun::Wear.columns()[SweepRun::Dynamics.columns().len()..].join(", ")
+            ));
         };
+        let mut t = SweepTable::new(header[..at].to_vec(), run);
         for (line, rec) in r.records().enumerate() {
             let rec = rec.map_err(|e| e.to_string())?;
             let row = line + 2;
@@ -140,7 +152,7 @@ impl SweepTable {
                     format!("row {row}: branch `{b}` is neither `up` nor `down`")
                 })?),
             };
-            let mut results = Vec::with_capacity(t.columns.len());
+            let mut results = Vec::with_capacity(columns.len());
             for (i, name) in header.iter().enumerate().skip(first_result) {
                 let s = cell(i);
                 results.push(if s.is_empty() {
@@ -153,7 +165,8 @@ impl SweepTable {
             t.rows.push(SweepRow {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
-                results,
+                results: CaseResults::from_values(run, &results)
+                    .ok_or_else(|| format!("row {row}: not one number per column"))?,
                 branch,
             });
         }
@@ -166,7 +179,7 @@ impl SweepTable {
     /// varied keys (or in another order) or other result columns are another sweep: error.
     pub fn merge(tables: &[(String, SweepTable)]) -> Result<SweepTable, String> {
         let Some((first_src, first)) = tables.first() else {
-            return Err("sweep-merge: no tables to merge".into());
+            return Err("no tables to merge".into());
         };
         let mut rows: BTreeMap<usize, (&str, &SweepRow)> = BTreeMap::new();
         for (src, t) in tables {
@@ -177,9 +190,9 @@ impl SweepTable {
                     first.keys.join(", ")
                 ));
             }
-            if t.columns != first.columns {
+            if t.run != first.run {
                 return Err(format!(
-                    "mixed sweeps: {src} and {first_src} have different result columns (a `--run dynamics` and a `--run wear` sweep?)"
+                    "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear?)"
                 ));
             }
             for r in &t.rows {
@@ -201,7 +214,7 @@ impl SweepTable {
         }
         Ok(SweepTable {
             keys: first.keys.clone(),
-            columns: first.columns.clone(),
+            run: first.run,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
     }
@@ -212,19 +225,24 @@ mod tests {
     use super::*;
 
     fn table(ids: &[usize], bump: f64) -> SweepTable {
-        SweepTable {
-            keys: vec!["operating.input_speed_hz".into()],
-            columns: vec!["dte_max_um".into(), "dynamic_factor".into()],
-            rows: ids
-                .iter()
-                .map(|&i| SweepRow {
+        let mut t = SweepTable::new(vec!["operating.input_speed_hz".into()], SweepRun::Dynamics);
+        t.rows = ids
+            .iter()
+            .map(|&i| {
+                let mut v = [1.5; 9];
+                v[0] = 0.1 * i as f64 + bump;
+                if i == 1 {
+                    v[4] = f64::NAN;
+                }
+                SweepRow {
                     case_id: i,
                     values: vec![format!("{}", 20 + i)],
-                    results: vec![0.1 * i as f64 + bump, if i == 1 { f64::NAN } else { 1.5 }],
+                    results: CaseResults::from_values(SweepRun::Dynamics, &v).unwrap(),
                     branch: None,
-                })
-                .collect(),
-        }
+                }
+            })
+            .collect();
+        t
     }
 
     #[test]
@@ -233,7 +251,7 @@ mod tests {
         let back =
             SweepTable::from_csv(std::str::from_utf8(&t.to_csv().unwrap()).unwrap()).unwrap();
         assert_eq!(back.keys, t.keys);
-        assert_eq!(back.columns, t.columns);
+        assert_eq!(back.run, t.run);
         for (a, b) in back.rows.iter().zip(&t.rows) {
             assert!(a.same_as(b), "{a:?} != {b:?}");
         }
@@ -255,7 +273,7 @@ mod tests {
         let text = String::from_utf8(cont.to_csv().unwrap()).unwrap();
         assert!(text.starts_with("operating.input_speed_hz,case_id,branch,dte_max_um"));
         let back = SweepTable::from_csv(&text).unwrap();
-        assert_eq!(back.columns, cont.columns);
+        assert_eq!(back.run, cont.run);
         for (a, b) in back.rows.iter().zip(&cont.rows) {
             assert!(a.same_as(b), "{a:?} != {b:?}");
         }

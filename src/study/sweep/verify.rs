@@ -24,6 +24,7 @@ pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(),
     })?;
     let now: Vec<Option<u64>> = again
         .results
+        .values()
         .iter()
         .map(|x| x.is_finite().then_some(x.to_bits()))
         .collect();

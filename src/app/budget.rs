@@ -1,0 +1,77 @@
+//! The run budget in every job (`study::budget` estimates the cost): a job over its
+//! budget is refused before anything is computed, naming the keys that drive the cost
+//! and how to raise the budget. A job takes the budget as `Option<Budget>`: `None` runs
+//! without the check, a scaled [`Budget`] raises it knowingly.
+
+use super::JobError;
+use crate::config::Case;
+use crate::remedy::{Arg, Problem, Remedy, Words};
+use crate::study::budget::{estimate, Budget, Job};
+
+/// The budget a front end passes by default.
+pub const DEFAULT: Option<Budget> = Some(Budget::DEFAULT);
+
+/// The remedy of a run over budget.
+pub fn over_budget(message: String) -> Problem {
+    Problem::new(message).remedy(Remedy::new(
+        Words::new()
+            .text("lower those keys, or raise the budget knowingly with ")
+            .arg(Arg::BudgetScale)
+            .text(" X (or drop the check with ")
+            .arg(Arg::NoBudget)
+            .text(")"),
+    ))
+}
+
+/// Refuse `job` on `case` if it is over `budget` (`None`: no check).
+pub fn check(case: &Case, job: Job, budget: Option<&Budget>) -> Result<(), JobError> {
+    match budget {
+        Some(b) => estimate(case, job)
+            .check(b)
+            .map_err(|m| JobError::input(over_budget(m))),
+        None => Ok(()),
+    }
+}
+
+/// Refuse a job whose estimate, made once its inputs are read (observations, posterior,
+/// shards, tables), is over `budget` (`None`: no check).
+pub fn check_estimate(
+    e: &crate::study::budget::Estimate,
+    budget: Option<&Budget>,
+) -> Result<(), JobError> {
+    match budget {
+        Some(b) => e.check(b).map_err(|m| JobError::input(over_budget(m))),
+        None => Ok(()),
+    }
+}
+
+/// The argument a prognostics setting is given as (`prognostics::limits`).
+fn arg_of(setting: &str) -> Option<Arg> {
+    Some(match setting {
+        "samples" => Arg::Samples,
+        "walkers" => Arg::Walkers,
+        "steps" => Arg::Steps,
+        "check_runs" => Arg::CheckRuns,
+        "grid_points" => Arg::GridPoints,
+        "limit_um" => Arg::LimitUm,
+        "cycles" => Arg::Cycles,
+        _ => return None,
+    })
+}
+
+/// Settings out of their ranges (`prognostics::limits`), each as a problem of its
+/// argument; every one at once.
+pub fn check_settings(problems: Vec<crate::prognostics::limits::Problem>) -> Result<(), JobError> {
+    if problems.is_empty() {
+        return Ok(());
+    }
+    Err(JobError::Input(
+        problems
+            .into_iter()
+            .map(|p| match arg_of(p.setting) {
+                Some(a) => Problem::of(a, p.message),
+                None => Problem::new(p.message),
+            })
+            .collect(),
+    ))
+}

@@ -1,0 +1,78 @@
+//! The dynamics job: one steady-state evaluation of the tribo-dynamic model with new
+//! teeth, optionally with an external transmission error.
+
+use super::observer::Observer;
+use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::Case;
+use crate::dynamics::excitation::ExternalError;
+use crate::io::transmission_error::{read_transmission_error, transmission_error_from_deg_um};
+use crate::io::RunMetadata;
+use crate::remedy::Arg;
+use crate::report::dynamics::dynamics_artifacts;
+use crate::study::budget::{Budget, Job as Cost};
+use crate::wear::WearState;
+use std::path::PathBuf;
+
+/// An external transmission error over one mesh period (positive adds to the mesh
+/// compression, paper eq. 2).
+#[derive(Debug, Clone)]
+pub enum TransmissionErrorSource {
+    /// A CSV file `pinion_angle_deg,error_um`.
+    File(PathBuf),
+    /// Samples (pinion angle deg, error um).
+    Samples(Vec<(f64, f64)>),
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct DynamicsJob {
+    pub case: Case,
+    pub transmission_error: Option<TransmissionErrorSource>,
+    /// Output folder; `None` writes nothing.
+    pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    pub budget: Option<Budget>,
+}
+
+impl Job for DynamicsJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "dynamics"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
+        let model = build_model(&self.case, observer)?;
+        let period = model.pair.mesh_angle_rad();
+        let external = match &self.transmission_error {
+            Some(TransmissionErrorSource::File(p)) => read_transmission_error(p, period)?,
+            Some(TransmissionErrorSource::Samples(s)) => transmission_error_from_deg_um(
+                s,
+                period,
+                Arg::TransmissionError.plain(),
+            )
+            .map_err(|e| {
+                JobError::input(crate::remedy::Problem::of(Arg::TransmissionError, e.reason))
+            })?,
+            None => ExternalError::none(),
+        };
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let r = model
+            .dynamic(&WearState::new(model.grid.len()), &external)
+            .map_err(|e| JobError::Failed(e.into()))?;
+        let label = if self.transmission_error.is_some() {
+            "new teeth, external transmission error"
+        } else {
+            "new teeth"
+        };
+        let meta = RunMetadata::of_model(self.name(), &model);
+        publish::publish(
+            out,
+            dynamics_artifacts(&model, &r, label),
+            Some(&meta),
+            observer,
+        )
+    }
+}

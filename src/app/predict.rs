@@ -1,0 +1,457 @@
+//! The predict job: Monte Carlo prediction of wear, vibration indicators and remaining
+//! life over posterior (or prior) samples, to a wear limit and a horizon; whole, or one
+//! shard of it ([`crate::app::PredictMergeJob`] joins the shards).
+
+use super::calibrate::counted;
+use super::inputs::TableSource;
+use super::observer::{Observer, Task};
+use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::Case;
+use crate::io::{RunMetadata, Table};
+use crate::prognostics::band::Band;
+use crate::prognostics::check::{check_prediction, PredictionCheck};
+use crate::prognostics::forward::Crossing;
+use crate::prognostics::predict::{
+    fans, run_sample, Forward, LifeSummary, PredictSettings, SampleOutcome, SampleSource,
+};
+use crate::prognostics::prior::{Prior, Theta};
+use crate::prognostics::samples::read_samples;
+use crate::prognostics::surrogate::max_chain_runs;
+use crate::prognostics::{Quantity, Surrogate};
+use crate::remedy::{Arg, Problem};
+use crate::report::html::{render, Report};
+use crate::report::prognostics::{fan_figure, life_figure, prediction_section};
+use crate::report::prognostics_tables::{bands_table, figure, thetas_json};
+use crate::report::Artifacts;
+use crate::study::budget::Budget;
+use crate::study::sweep::Shard;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use sha2::{Digest, Sha256};
+use std::path::PathBuf;
+
+/// The forward model of each sample.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ForwardModel {
+    /// Reference runs and the k x N invariance (fast).
+    Surrogate,
+    /// One true wear study per sample (slow; shard it).
+    Exact,
+}
+
+/// What to predict and how.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PredictOptions {
+    /// Wear limit on the maximum pinion wear depth, um.
+    pub limit_um: f64,
+    /// Horizon, pinion cycles.
+    pub cycles: f64,
+    /// Seed of every random draw.
+    pub seed: u64,
+    /// Ensemble size (`None`: every posterior row, or 2000 prior draws); with a posterior
+    /// of another size its rows are drawn with replacement.
+    pub samples: Option<usize>,
+    /// Cycle counts of the fan charts, from 0 to the horizon.
+    pub grid_points: usize,
+    pub forward: ForwardModel,
+    /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
+    pub check_runs: usize,
+}
+
+impl PredictOptions {
+    /// The defaults for a limit and a horizon.
+    pub fn new(limit_um: f64, cycles: f64) -> Self {
+        Self {
+            limit_um,
+            cycles,
+            seed: 1,
+            samples: None,
+            grid_points: 101,
+            forward: ForwardModel::Surrogate,
+            check_runs: 3,
+        }
+    }
+
+    /// Every problem of the options: each within its range (`prognostics::limits`).
+    fn check(&self) -> Result<(), JobError> {
+        budget::check_settings(crate::prognostics::limits::check_predict(
+            self.limit_um,
+            self.cycles,
+            self.samples,
+            self.grid_points,
+            self.check_runs,
+        ))
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct PredictJob {
+    pub case: Case,
+    /// Posterior samples (from a calibration); `None` samples the case's prior.
+    pub posterior: Option<TableSource>,
+    pub options: PredictOptions,
+    /// One shard of the samples ([`Shard::ALL`]: all of them).
+    pub shard: Shard,
+    /// Output folder; `None` writes nothing.
+    pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    pub budget: Option<Budget>,
+}
+
+/// What makes shards parts of one prediction.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Identity {
+    pub settings: PredictSettings,
+    pub forward: String,
+    /// SHA-256 of the posterior samples' CSV text, or "prior".
+    pub source: String,
+    pub case_sha256: String,
+}
+
+/// What a shard writes (`predict_shard_I_of_N.json`), and what a whole prediction is
+/// built from.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ShardFile {
+    pub identity: Identity,
+    pub shard: (usize, usize),
+    /// `RunMetadata` of the run, as JSON.
+    pub metadata: Value,
+    pub checks: Vec<PredictionCheck>,
+    pub reference_failures: Vec<(Theta, f64, String)>,
+    pub outcomes: Vec<SampleOutcome>,
+}
+
+impl PredictJob {
+    /// Where the samples come from: (source, the span of the surrogate, the source's
+    /// identity, the ensemble size).
+    fn source(&self) -> Result<(SampleSource, Prior, String, usize), JobError> {
+        let case = &self.case;
+        let defaults = [
+            case.wear.coefficient_m2_per_n,
+            1.0,
+            case.operating.load_torque_nm,
+        ];
+        Ok(match &self.posterior {
+            Some(p) => {
+                let (src, text) = p.read(Arg::Posterior, crate::io::input::MAX_POSTERIOR_BYTES)?;
+                let rows = read_samples(&text, &src, defaults)
+                    .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+                let n = self.options.samples.unwrap_or(rows.len());
+                let span = Prior::spanning(&rows);
+                let id = format!("{:x}", Sha256::digest(text.as_bytes()));
+                (
+                    SampleSource::Posterior {
+                        resample: n != rows.len(),
+                        rows,
+                    },
+                    span,
+                    id,
+                    n,
+                )
+            }
+            None => {
+                let prior = Prior::from_case(case)
+                    .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+                (
+                    SampleSource::Prior(prior.clone()),
+                    prior,
+                    "prior".to_string(),
+                    self.options.samples.unwrap_or(2000),
+                )
+            }
+        })
+    }
+}
+
+impl Job for PredictJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "predict"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let o = &self.options;
+        o.check()?;
+        let case = &self.case;
+        let (source, span, source_id, n) = self.source()?;
+        let shard = self.shard;
+        // The budget, now that the samples' source and number are known.
+        let e = crate::prognostics::budget::estimate_prediction(
+            case,
+            &span,
+            &crate::prognostics::budget::PredictionJob {
+                samples_in_shard: n.div_ceil(shard.count.max(1)),
+                grid_points: o.grid_points,
+                cycles: o.cycles,
+                exact: o.forward == ForwardModel::Exact,
+                sharded: shard.count > 1,
+                check_runs: if shard.index == 1 { o.check_runs } else { 0 },
+                posterior_rows: match &source {
+                    SampleSource::Posterior { rows, .. } => rows.len(),
+                    SampleSource::Prior(_) => 0,
+                },
+            },
+        );
+        budget::check_estimate(&e, self.budget.as_ref())?;
+        let model = build_model(case, observer)?;
+        let stem =
+            (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
+        let out = publish::open_if(
+            self.out.as_deref(),
+            stem.as_deref(),
+            self.name(),
+            self.replace,
+        )?;
+        let set = PredictSettings {
+            limit_um: o.limit_um,
+            cycles: o.cycles,
+            grid_points: o.grid_points,
+            seed: o.seed,
+            samples: n,
+        };
+        let meta = RunMetadata::of_model(self.name(), &model);
+        let identity = Identity {
+            settings: set,
+            forward: format!("{:?}", o.forward).to_lowercase(),
+            source: source_id,
+            case_sha256: meta.case_sha256.clone(),
+        };
+        let sur = match o.forward {
+            ForwardModel::Surrogate => {
+                let nodes = case.calibration.surrogate_nodes.max(2) as usize;
+                let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
+                let runs = chains * max_chain_runs(&span) as usize;
+                Some(counted(
+                    observer,
+                    Task::items("reference_runs", "reference runs", runs),
+                    |tick| Surrogate::build(case, &span, o.cycles, nodes, tick),
+                )?)
+            }
+            ForwardModel::Exact => None,
+        };
+        let fw = match &sur {
+            Some(s) => Forward::Surrogate(s),
+            None => Forward::Exact(case),
+        };
+        let ids = shard.ids(n);
+        observer.note(&format!(
+            "predict: {} of {n} samples (shard {}/{}) to {} cycles on {} threads",
+            ids.len(),
+            shard.index,
+            shard.count,
+            o.cycles,
+            rayon::current_num_threads()
+        ));
+        let outcomes = counted(
+            observer,
+            Task::items("samples", "samples", ids.len()),
+            |tick| {
+                ids.par_iter()
+                    .map(|&i| {
+                        if observer.cancelled() {
+                            return Err(JobError::Cancelled);
+                        }
+                        let r = run_sample(&fw, source.draw(i, o.seed), i, &set);
+                        tick();
+                        r.map_err(JobError::from)
+                    })
+                    .collect::<Result<Vec<SampleOutcome>, JobError>>()
+            },
+        )?;
+        let checks = match (&sur, shard.index, o.check_runs) {
+            (Some(s), 1, n) if n > 0 => check_prediction(case, s, &outcomes, &set, n),
+            _ => Vec::new(),
+        };
+        let file = ShardFile {
+            identity,
+            shard: (shard.index, shard.count),
+            metadata: serde_json::to_value(&meta).map_err(|e| JobError::Failed(e.into()))?,
+            checks,
+            reference_failures: sur.as_ref().map_or_else(Vec::new, |s| s.failures()),
+            outcomes,
+        };
+        if let Some(stem) = stem {
+            let art = Artifacts {
+                summary: serde_json::to_value(&file).map_err(|e| JobError::Failed(e.into()))?,
+                summary_file: Some(format!("{stem}.json")),
+                ..Default::default()
+            };
+            let outcome = publish::publish(out, art, None, observer)?;
+            observer.note(&format!(
+                "predict: shard {}/{} of the samples; join the shards to get the prediction",
+                shard.index, shard.count
+            ));
+            return Ok(outcome);
+        }
+        publish::publish(
+            out,
+            prediction_artifacts(file, (0, Vec::new()))?,
+            None,
+            observer,
+        )
+    }
+}
+
+fn life_of(c: Crossing) -> Option<f64> {
+    match c {
+        Crossing::Reached(x) => Some(x),
+        _ => None,
+    }
+}
+
+/// Quantities whose band at the horizon goes into summary.json.
+const FAN_AT_HORIZON: [Quantity; 4] = [
+    Quantity::MaxWearPinion,
+    Quantity::VelocityRms,
+    Quantity::MeshHarmonic(1),
+    Quantity::DtePeakToPeak,
+];
+
+/// The summary of a prediction (`summary.json`).
+fn prediction_summary(
+    f: &ShardFile,
+    life: &LifeSummary,
+    fans: &[(Quantity, Band)],
+    failed: &[&SampleOutcome],
+    missing: (usize, Vec<usize>),
+) -> Value {
+    let set = f.identity.settings;
+    // Surrogate error relative to the ensemble's spread of the life.
+    let check_rows: Vec<Value> = f
+        .checks
+        .iter()
+        .map(|c| {
+            let err = c.life_error();
+            json!({
+                "theta": thetas_json(&[c.theta])[0],
+                "life_surrogate": c.life_surrogate,
+                "life_true": c.life_true,
+                "life_abs_error": err,
+                "life_error_over_spread": err.map(|e| e / life.spread_reached),
+                "max_abs_error_over_fan_grid": c.max_abs_error.iter().map(|(q, e)| json!({"quantity": q, "error": e})).collect::<Vec<_>>(),
+                "true_run_failure": c.true_run_failure,
+            })
+        })
+        .collect();
+    let at_horizon = |q: Quantity| {
+        fans.iter().find(|b| b.0 == q).map(|(_, b)| {
+            let g = b.cycles.len() - 1;
+            json!({"p05": b.percentiles[0][g], "p25": b.percentiles[1][g], "median": b.percentiles[2][g], "p75": b.percentiles[3][g], "p95": b.percentiles[4][g], "samples_with_value": b.valid[g]})
+        })
+    };
+    json!({
+        "limit_um": set.limit_um,
+        "horizon_cycles": set.cycles,
+        "samples": set.samples,
+        "seed": set.seed,
+        "forward_model": f.identity.forward,
+        "source": f.identity.source,
+        "remaining_life_cycles": {
+            "p05": life.p05, "median": life.median, "p95": life.p95,
+            "prob_beyond_horizon": life.prob_beyond_horizon,
+            "prob_beyond_horizon_bounds_with_failed_samples": life.prob_beyond_horizon_bounds,
+            "reached": life.reached, "beyond_horizon": life.beyond_horizon, "unknown": life.unknown,
+            "note": "cycles from 0 (new teeth) to the first cycle at which the maximum pinion wear reaches the limit; null percentiles lie beyond the horizon (or among samples whose forward run failed)",
+        },
+        "at_horizon": FAN_AT_HORIZON.iter().map(|q| json!({"quantity": q.name(), "band": at_horizon(*q)})).collect::<Vec<_>>(),
+        "failed_samples": {
+            "count": failed.len(),
+            "parameters": thetas_json(&failed.iter().map(|s| s.theta).collect::<Vec<_>>()),
+            "first_error": failed.first().and_then(|s| s.failure.clone()),
+            "note": "samples whose forward run stopped before the horizon: their values after it are unknown (the wear fan counts them as above every known value), their life is unknown if the limit was not reached first",
+        },
+        "reference_run_failures": f.reference_failures.iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
+        "surrogate_check": check_rows,
+        "missing_samples": {"count": missing.0, "first": missing.1},
+        "metadata": f.metadata,
+    })
+}
+
+/// Every output of a prediction from its outcomes (`missing`: how many sample indices no
+/// shard had, and the first of them).
+pub fn prediction_artifacts(
+    f: ShardFile,
+    missing: (usize, Vec<usize>),
+) -> Result<Artifacts, JobError> {
+    let mut art = Artifacts::default();
+    let set = f.identity.settings;
+    let o = &f.outcomes;
+    let life = LifeSummary::of(o);
+    let fans = fans(o, &set);
+    let lives: Vec<f64> = o.iter().filter_map(|s| life_of(s.life)).collect();
+    let status = |c: Crossing| match c {
+        Crossing::Reached(_) => 0.0,
+        Crossing::NotReached => 1.0,
+        Crossing::Unknown => 2.0,
+    };
+    let life_table = Table::new()
+        .col("sample", o.iter().map(|s| s.index as f64).collect())
+        .col(
+            "wear_coefficient_m2_per_n",
+            o.iter().map(|s| s.theta[0]).collect(),
+        )
+        .col("roughness_scale", o.iter().map(|s| s.theta[1]).collect())
+        .col("load_torque_nm", o.iter().map(|s| s.theta[2]).collect())
+        .col(
+            "cycles_to_limit",
+            o.iter()
+                .map(|s| life_of(s.life).unwrap_or(f64::NAN))
+                .collect(),
+        )
+        .col("life_status", o.iter().map(|s| status(s.life)).collect());
+    art.table("life_samples.csv", life_table);
+    art.table("fan_wear.csv", bands_table(&fans[..1]));
+    art.table("fan_vibration.csv", bands_table(&fans[1..]));
+    let figs = vec![
+        figure(&mut art, "fan_wear.png", &fan_figure("Maximum pinion wear: median, 50 % and 90 % bands", &fans[..1], Some(set.limit_um)), "Fan chart of the maximum pinion wear depth over the ensemble, with the wear limit.", Some("fan_wear.csv"))?,
+        figure(&mut art, "life.png", &life_figure(&lives, &life, set.cycles), "Distribution of the cycles at which the maximum pinion wear reaches the limit (samples that reach it within the horizon).", Some("life_samples.csv"))?,
+        figure(&mut art, "fan_vibration.png", &fan_figure("Vibration and transmission-error indicators: median, 50 % and 90 % bands", &fans[1..], None), "Fan charts of the indicators a monitoring system sees: RMS and mesh harmonics of the pinion's y velocity, DTE peak-to-peak and first mesh harmonic.", Some("fan_vibration.csv"))?,
+    ];
+    let failed: Vec<&SampleOutcome> = o.iter().filter(|s| s.failure.is_some()).collect();
+    art.summary = prediction_summary(&f, &life, &fans, &failed, missing);
+    let mut notes = vec![format!(
+        "{} samples, forward model: {}, seed {}.",
+        set.samples, f.identity.forward, set.seed
+    )];
+    if !failed.is_empty() {
+        notes.push(format!(
+            "{} sample(s) had a forward run that stopped before the horizon (listed in summary.json).",
+            failed.len()
+        ));
+    }
+    let report = Report {
+        title: "gearwear prediction".into(),
+        sections: vec![prediction_section(
+            &life,
+            set.limit_um,
+            set.cycles,
+            notes,
+            figs,
+        )],
+        footer: format!(
+            "gearwear {} | case sha256 {}",
+            f.metadata["version"].as_str().unwrap_or("?"),
+            f.metadata["case_sha256"].as_str().unwrap_or("?")
+        ),
+        ..Default::default()
+    };
+    art.documents
+        .push(("report.html".into(), render(&report).into_bytes()));
+    let fmt =
+        |c: Option<f64>| c.map_or_else(|| format!("> {:.3e}", set.cycles), |x| format!("{x:.4e}"));
+    art.headline = format!(
+        "cycles to {} um: median {}, 90 % [{}, {}], P(> {:.3e}) = {:.3}; {} failed sample(s)",
+        set.limit_um,
+        fmt(life.median),
+        fmt(life.p05),
+        fmt(life.p95),
+        set.cycles,
+        life.prob_beyond_horizon,
+        failed.len(),
+    );
+    Ok(art)
+}

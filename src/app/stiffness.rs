@@ -1,0 +1,37 @@
+//! The stiffness job: mesh stiffness over a mesh period, the ISO 6336 cross-check, load
+//! sharing and the quasi-static transmission error (paper Figure 2).
+
+use super::observer::Observer;
+use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::Case;
+use crate::io::RunMetadata;
+use crate::report::stiffness::stiffness_artifacts;
+use crate::study::budget::{Budget, Job as Cost};
+use std::path::PathBuf;
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct StiffnessJob {
+    pub case: Case,
+    /// Output folder; `None` writes nothing.
+    pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    pub budget: Option<Budget>,
+}
+
+impl Job for StiffnessJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "stiffness"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
+        let model = build_model(&self.case, observer)?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::of_model(self.name(), &model);
+        publish::publish(out, stiffness_artifacts(&model), Some(&meta), observer)
+    }
+}

@@ -1,0 +1,123 @@
+//! The cases of a sweep, resolved and checked before any runs: every value of every axis
+//! on the base case (a bad value is named once, with its key), every case of the shard
+//! (its resolved case and hash), the budget of each, and the model of each case still to
+//! run. Every problem is reported at once.
+
+use super::super::{budget, JobError};
+use crate::config::load::case_with;
+use crate::config::Case;
+use crate::io::RunMetadata;
+use crate::remedy::{Arg, Problem};
+use crate::study::budget::{Budget, Job as Cost};
+use crate::study::sweep::{SweepPlan, SweepRun};
+use crate::study::Model;
+use rayon::prelude::*;
+
+/// One case of the shard, resolved and validated.
+pub struct Planned {
+    pub id: usize,
+    /// Labels of its values, one per axis.
+    pub labels: Vec<String>,
+    pub case: Case,
+    /// SHA-256 of the resolved case (`RunMetadata::case_sha256`).
+    pub hash: String,
+}
+
+/// Every value of every axis set on the base case alone, so a bad value is reported
+/// (key and value named) before anything runs, once however many cases share it.
+pub fn check_values(base: &Case, plan: &SweepPlan) -> Result<(), JobError> {
+    let mut problems = Vec::new();
+    for axis in &plan.axes {
+        for v in &axis.values {
+            if let Err(e) = case_with(base, &[(axis.key, v.value.clone())]) {
+                problems.extend(e.problems.into_iter().map(|p| {
+                    Problem::given(Arg::Vary, axis.key, p)
+                        .in_context(&format!("value `{}`: ", v.label))
+                }));
+            }
+        }
+    }
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(JobError::Input(problems))
+    }
+}
+
+/// The cases `ids` (case id, index in the plan) resolved, each within the budget.
+pub fn resolve(
+    base: &Case,
+    plan: &SweepPlan,
+    ids: &[(usize, usize)],
+    run: SweepRun,
+    limit: Option<&Budget>,
+) -> Result<Vec<Planned>, JobError> {
+    let resolved: Vec<Result<Planned, Problem>> = ids
+        .par_iter()
+        .map(|&(id, index)| {
+            let what = || format!("case {id} ({})", plan.describe(index));
+            let case = case_with(base, &plan.settings_of(index)).map_err(|e| {
+                let list: Vec<String> = e.problems.iter().map(|p| p.to_string()).collect();
+                Problem::new(format!("{}: {}", what(), list.join("; ")))
+            })?;
+            let hash = RunMetadata::new("sweep", &case).case_sha256;
+            Ok(Planned {
+                id,
+                labels: plan.labels_of(index),
+                case,
+                hash,
+            })
+        })
+        .collect();
+    let (ok, bad): (Vec<_>, Vec<_>) = resolved.into_iter().partition(Result::is_ok);
+    if !bad.is_empty() {
+        return Err(JobError::Input(
+            bad.into_iter().filter_map(Result::err).collect(),
+        ));
+    }
+    let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
+    // Each case against the budget (the number of cases is the user's explicit choice).
+    let over: Vec<Problem> = planned
+        .iter()
+        .filter_map(|p| {
+            let e = budget::check(&p.case, Cost::SweepCase(run), limit).err()?;
+            let JobError::Input(mut problems) = e else {
+                return None;
+            };
+            let first = problems.pop()?;
+            Some(first.in_context(&format!("case {} ({}): ", p.id, describe(plan, p))))
+        })
+        .take(10)
+        .collect();
+    if !over.is_empty() {
+        return Err(JobError::Input(over));
+    }
+    Ok(planned)
+}
+
+/// "KEY=label, ..." of a planned case.
+pub fn describe(plan: &SweepPlan, p: &Planned) -> String {
+    plan.keys()
+        .iter()
+        .zip(&p.labels)
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The models of the cases still to run build (geometry, settings), or every problem.
+pub fn check_models(plan: &SweepPlan, pending: &[&Planned]) -> Result<(), JobError> {
+    let problems: Vec<Problem> = pending
+        .par_iter()
+        .filter_map(|p| {
+            Model::from_case(&p.case)
+                .err()
+                .map(|e| Problem::new(format!("case {} ({}): {e}", p.id, describe(plan, p))))
+        })
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(JobError::Input(problems))
+    }
+}

@@ -1,0 +1,167 @@
+//! The wear job: the coupled dynamics-wear study and/or its quasi-static twin, with a
+//! checkpoint after every update when it has an output folder (and resumable from it).
+
+use super::checkpoints::{open_checkpoints, starting_runs};
+use super::observer::{keep_going, Observer, Task, Unit};
+use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::Case;
+use crate::io::checkpoint::checkpoint_name;
+use crate::io::checkpoint_set::CheckpointSet;
+use crate::io::RunMetadata;
+use crate::report::wear::wear_artifacts;
+use crate::study::budget::{Budget, Job as Cost};
+use crate::study::wear_loop::{run_wear_modes, StopKind, WearMode, WearRun};
+use crate::study::Model;
+use std::path::PathBuf;
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct WearJob {
+    pub case: Case,
+    /// The modes to run, in order (the two run in parallel).
+    pub modes: Vec<WearMode>,
+    /// Output folder (checkpoints, then the results); `None` writes nothing.
+    pub out: Option<PathBuf>,
+    /// Continue from the checkpoints in the output folder.
+    pub resume: bool,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    pub budget: Option<Budget>,
+}
+
+impl Job for WearJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "wear"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let cost = Cost::Wear {
+            dynamic: self.modes.contains(&WearMode::Dynamic),
+            quasi_static: self.modes.contains(&WearMode::QuasiStatic),
+        };
+        budget::check(&self.case, cost, self.budget.as_ref())?;
+        let model = build_model(&self.case, observer)?;
+        let meta = RunMetadata::of_model(self.name(), &model);
+        let runs = run_modes(
+            self.name(),
+            &model,
+            &self.modes,
+            &meta,
+            (self.out.as_deref(), self.resume, self.replace),
+            observer,
+            |model, starts, on_update| run_wear_modes(model, starts, on_update),
+        )?;
+        let refs: Vec<&WearRun> = runs.runs.iter().collect();
+        let mut outcome = publish::publish(
+            runs.out,
+            wear_artifacts(&model, &refs),
+            Some(&meta),
+            observer,
+        )?;
+        outcome.incomplete = stops(&refs, observer);
+        Ok(outcome)
+    }
+}
+
+/// The wear runs of a job, and its output folder still to publish.
+pub struct Runs<T> {
+    pub runs: T,
+    pub out: Option<crate::io::OutputDir>,
+}
+
+/// The steps every wear study shares (the wear job, the paper's study): where each run
+/// starts (afresh, or from its checkpoint), the output folder with its checkpoint logs,
+/// a progress task per mode, and `study` run with a callback that checkpoints, reports
+/// progress and stops on request after every update.
+pub fn run_modes<T>(
+    command: &str,
+    model: &Model,
+    modes: &[WearMode],
+    meta: &RunMetadata,
+    (out, resume, replace): (Option<&std::path::Path>, bool, bool),
+    observer: &dyn Observer,
+    study: impl FnOnce(
+        &Model,
+        Vec<WearRun>,
+        &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
+    ) -> anyhow::Result<T>,
+) -> Result<Runs<T>, JobError> {
+    if let (Some(o), true) = (out, resume) {
+        super::checkpoints::require_folder(o)?;
+    }
+    // The folder first (locked, its state read through its handle), then the checkpoints
+    // in it, each verified before anything runs.
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let starts = starting_runs(
+        dir.as_ref(),
+        modes,
+        resume,
+        &meta.case_sha256,
+        model,
+        observer,
+    )?;
+    let logs: Option<CheckpointSet> = match dir.as_mut() {
+        Some(d) => Some(open_checkpoints(d, &starts, &meta.case_sha256)?),
+        None => None,
+    };
+    let root = dir.as_ref().map(|d| d.root().to_path_buf());
+    let tasks: Vec<Task> = modes
+        .iter()
+        .map(|m| Task {
+            id: m.name(),
+            label: m.label(),
+            total: model.case.wear.total_cycles,
+            unit: Unit::Cycles,
+        })
+        .collect();
+    for t in &tasks {
+        observer.start(t);
+    }
+    let on_update = |mode: WearMode, run: &WearRun| -> anyhow::Result<()> {
+        if let (Some(logs), Some(root)) = (&logs, &root) {
+            logs.record(run)?;
+            observer.checkpoint(&root.join(checkpoint_name(mode)));
+        }
+        if let (Some(t), Some(r)) = (tasks.iter().find(|t| t.id == mode.name()), run.last()) {
+            let status = format!(
+                "{} updates, max pinion wear {:.3} um",
+                run.records.len() - 1,
+                r.wear.max_pinion_m() * 1e6
+            );
+            observer.advance(t, r.wear.cycles, &status);
+        }
+        keep_going(observer)
+    };
+    let result = study(model, starts, &on_update);
+    for t in &tasks {
+        observer.finish(t);
+    }
+    drop(logs);
+    Ok(Runs {
+        runs: result?,
+        out: dir,
+    })
+}
+
+/// Tell `observer` about every wear run that stopped early (its outputs are written up to
+/// the stop). A stop because the worn teeth left the model's domain is a result; one for
+/// want of a steady state is a failure of the solver the user should act on: returned.
+pub fn stops(runs: &[&WearRun], observer: &dyn Observer) -> Option<String> {
+    let mut failed = None;
+    for run in runs {
+        if let Some(stop) = &run.stopped {
+            let message = format!(
+                "the {} wear run stopped early: {}",
+                run.mode.name(),
+                stop.reason
+            );
+            observer.warning(&message);
+            if stop.kind == StopKind::Numerical {
+                failed = Some(message);
+            }
+        }
+    }
+    failed
+}

@@ -1,0 +1,263 @@
+//! The tooth-resolved mesh: every tooth of both gears with its own flank, position,
+//! compliance and contact, and which teeth meet in which mesh cycle.
+//!
+//! Mesh cycle n (the pair that enters contact at pinion rotation n times the mesh angle
+//! after t = 0) engages pinion tooth n mod z1 and gear tooth n mod z2. Pair i of the
+//! contact set entered i cycles before the current one. Per tooth:
+//! - the material removed from its flank along the line of action (m, positive removed:
+//!   wear, reliefs, user deviation, minus the slope and form deviations, plus the gap of a
+//!   full-width spall), tabulated on the wear grid (`geometry::ProfileGrid`, indexed by
+//!   the pair's pinion rho1: a gear tooth's table holds its conjugate points, as the wear
+//!   state does) and interpolated linearly;
+//! - its position error along the line of action (m, positive proud: earlier contact);
+//! - the compliance its faults add (m/N, cracks and spalls), on the same grid;
+//! - the share of the face a spall takes from the contact line, on the same grid;
+//! - where a broken tip ends its contact (own radius of curvature, m).
+//!
+//! A pair's gap is its two flanks' removed material minus their position errors, minus
+//! the run-out of both gears (a rigid displacement of each gear's base circle, so common
+//! to every pair at an instant: e_c cos(Omega t - phi) per gear, e_c = F_r / 2 its
+//! eccentricity), with the sign of paper eq. (2) (a positive error adds compression). Its
+//! stiffness is the healthy pair's k(rho1) with the fault compliances added in series.
+//!
+//! The excitation repeats after [`ToothMesh::periods`] mesh periods: lcm(z1, z2) when both
+//! gears have teeth that differ (or run out), z1 or z2 when only one does, 1 when every
+//! tooth is alike.
+
+use crate::stiffness::mesh::MeshStiffness;
+
+/// Gap of a contact a broken tip has removed, m: far beyond any mesh deflection, so the
+/// pair never touches there.
+pub const REMOVED_GAP_M: f64 = 1e-3;
+
+/// One tooth's data (see the module docs).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ToothFlank {
+    /// Material removed at each grid point, m.
+    pub removed_m: Vec<f64>,
+    /// Position error along the line of action, m (positive: earlier contact).
+    pub position_m: f64,
+    /// Compliance added by faults at each grid point, m/N (None: healthy).
+    pub compliance_m_per_n: Option<Vec<f64>>,
+    /// Share of the face width a spall removes from the contact at each grid point.
+    pub width_loss: Option<Vec<f64>>,
+    /// A broken tip: the pinion rho1 beyond which this tooth makes no contact (pinion:
+    /// rho1 above it; gear: rho1 below it, its own tip side), m.
+    pub contact_limit_rho1_m: Option<f64>,
+}
+
+/// Run-out of one gear: eccentricity (m along the line of action) turning with the shaft.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Runout {
+    pub eccentricity_m: f64,
+    pub phase_rad: f64,
+    /// Nominal shaft speed, rad/s.
+    pub shaft_speed_rad_s: f64,
+}
+
+impl Runout {
+    /// Displacement along the line of action (m, positive compresses) and its rate (m/s).
+    #[inline]
+    pub fn at(&self, t_s: f64) -> (f64, f64) {
+        if self.eccentricity_m == 0.0 {
+            return (0.0, 0.0);
+        }
+        let (s, c) = (self.shaft_speed_rad_s * t_s - self.phase_rad).sin_cos();
+        (
+            self.eccentricity_m * c,
+            -self.eccentricity_m * self.shaft_speed_rad_s * s,
+        )
+    }
+}
+
+/// What one pair of teeth is at a contact position.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PairProps {
+    pub stiffness_n_per_m: f64,
+    /// Gap the pair must close, m (flanks and position errors; run-out not included).
+    pub gap_m: f64,
+    /// d gap / d rho1 (dimensionless).
+    pub gap_slope: f64,
+    /// Share of the face width missing from the contact line.
+    pub width_loss: f64,
+    pub pinion_tooth: usize,
+    pub gear_tooth: usize,
+}
+
+/// The tooth-resolved mesh of one evaluation (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ToothMesh {
+    /// Pinion flanks (z1) and gear flanks (z2).
+    pub pinion: Vec<ToothFlank>,
+    pub gear: Vec<ToothFlank>,
+    pub runout: [Runout; 2],
+    /// The grid: first pinion rho1 and spacing, m; points per table.
+    rho_start_m: f64,
+    spacing_m: f64,
+    points: usize,
+    periods: usize,
+}
+
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
+}
+
+/// Least common multiple.
+pub fn lcm(a: usize, b: usize) -> usize {
+    if a == 0 || b == 0 {
+        0
+    } else {
+        a / gcd(a, b) * b
+    }
+}
+
+impl ToothMesh {
+    /// The mesh from its teeth on the grid `rho_start_m + i spacing_m`, `points` points.
+    pub fn new(
+        pinion: Vec<ToothFlank>,
+        gear: Vec<ToothFlank>,
+        runout: [Runout; 2],
+        rho_start_m: f64,
+        spacing_m: f64,
+        points: usize,
+    ) -> Self {
+        let varies =
+            |f: &[ToothFlank], r: &Runout| r.eccentricity_m != 0.0 || f.iter().any(|t| t != &f[0]);
+        let p = if varies(&pinion, &runout[0]) {
+            pinion.len()
+        } else {
+            1
+        };
+        let g = if varies(&gear, &runout[1]) {
+            gear.len()
+        } else {
+            1
+        };
+        Self {
+            periods: lcm(p.max(1), g.max(1)),
+            pinion,
+            gear,
+            runout,
+            rho_start_m,
+            spacing_m,
+            points,
+        }
+    }
+
+    /// Mesh periods after which the excitation repeats (1: every tooth alike).
+    pub fn periods(&self) -> usize {
+        self.periods
+    }
+
+    /// Whether pinion (0) or gear (1) teeth differ from each other (or run out).
+    pub fn varies(&self, member: usize) -> bool {
+        let z = [self.pinion.len(), self.gear.len()][member];
+        z > 1 && self.periods.is_multiple_of(z)
+    }
+
+    /// Teeth of pinion and gear.
+    pub fn teeth(&self) -> [usize; 2] {
+        [self.pinion.len(), self.gear.len()]
+    }
+
+    /// Pinion and gear tooth of mesh cycle n.
+    #[inline]
+    pub fn teeth_of(&self, cycle: i64) -> (usize, usize) {
+        (
+            cycle.rem_euclid(self.pinion.len() as i64) as usize,
+            cycle.rem_euclid(self.gear.len() as i64) as usize,
+        )
+    }
+
+    /// Run-out of both gears at time t: displacement along the line of action (m,
+    /// positive compresses) and its rate (m/s).
+    #[inline]
+    pub fn runout_at(&self, t_s: f64) -> (f64, f64) {
+        let (a, da) = self.runout[0].at(t_s);
+        let (b, db) = self.runout[1].at(t_s);
+        (a + b, da + db)
+    }
+
+    /// The pair of mesh cycle `cycle` at pinion rho1 (m).
+    #[inline]
+    pub fn pair(&self, mesh: &MeshStiffness, cycle: i64, rho1_m: f64) -> PairProps {
+        let (a, b) = self.teeth_of(cycle);
+        let (fp, fg) = (&self.pinion[a], &self.gear[b]);
+        let n = self.points;
+        let u = ((rho1_m - self.rho_start_m) / self.spacing_m).clamp(0.0, (n - 1) as f64);
+        let i = (u as usize).min(n - 2);
+        let w = u - i as f64;
+        let lerp = |v: &[f64]| v[i] + (v[i + 1] - v[i]) * w;
+        let (rp, rg) = (&fp.removed_m, &fg.removed_m);
+        let mut gap = lerp(rp) + lerp(rg) - fp.position_m - fg.position_m;
+        let slope = (rp[i + 1] - rp[i] + rg[i + 1] - rg[i]) / self.spacing_m;
+        let mut compliance = 0.0;
+        let mut width_loss = 0.0;
+        for f in [fp, fg] {
+            if let Some(c) = &f.compliance_m_per_n {
+                compliance += lerp(c);
+            }
+            if let Some(l) = &f.width_loss {
+                width_loss += lerp(l);
+            }
+        }
+        let k0 = mesh.pair_stiffness_n_per_m(rho1_m);
+        let mut k = if compliance == 0.0 {
+            k0
+        } else {
+            1.0 / (1.0 / k0 + compliance)
+        };
+        let cut = fp.contact_limit_rho1_m.is_some_and(|l| rho1_m > l)
+            || fg.contact_limit_rho1_m.is_some_and(|l| rho1_m < l);
+        if cut {
+            k = 0.0;
+            gap = REMOVED_GAP_M;
+        }
+        PairProps {
+            stiffness_n_per_m: k,
+            gap_m: gap,
+            gap_slope: if cut { 0.0 } else { slope },
+            width_loss: width_loss.clamp(0.0, 0.95),
+            pinion_tooth: a,
+            gear_tooth: b,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn flank(removed: f64, pos: f64) -> ToothFlank {
+        ToothFlank {
+            removed_m: vec![removed; 3],
+            position_m: pos,
+            ..Default::default()
+        }
+    }
+
+    #[test]
+    fn periods_follow_the_teeth_that_differ() {
+        let same = |z: usize| vec![flank(0.0, 0.0); z];
+        let mut one = same(19);
+        one[4].position_m = 1e-6;
+        let r = [Runout::default(); 2];
+        let m = |p: Vec<ToothFlank>, g: Vec<ToothFlank>, r: [Runout; 2]| {
+            ToothMesh::new(p, g, r, 0.0, 1.0, 3).periods()
+        };
+        assert_eq!(m(same(19), same(31), r), 1);
+        assert_eq!(m(one.clone(), same(31), r), 19);
+        let mut gear_runout = r;
+        gear_runout[1].eccentricity_m = 1e-6;
+        assert_eq!(m(same(19), same(31), gear_runout), 31);
+        assert_eq!(m(one, same(31), gear_runout), 589);
+        assert_eq!(lcm(20, 40), 40);
+        let tm = ToothMesh::new(same(19), same(31), r, 0.0, 1.0, 3);
+        assert_eq!(tm.teeth_of(589 + 20), (1, 20));
+        assert_eq!(tm.teeth_of(-1), (18, 30));
+    }
+}

@@ -1,0 +1,436 @@
+//! Outputs of a tooth-resolved mesh (cases with `[teeth]`, `[modification]` or `[[fault]]`):
+//! the teeth as given or drawn, the mesh stiffness of every tooth pair over the excitation
+//! period with the faults marked, each tooth's wear (table and heat map of tooth against
+//! roll angle) and the spectrum around the mesh frequency with the shaft-frequency
+//! sidebands marked. Added to the stiffness, dynamics, wear and run outputs by
+//! [`add_teeth_artifacts`] and friends, so both front ends get them.
+
+use super::artifacts::Artifacts;
+use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
+use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
+use crate::config::case::{FaultKind, Member};
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::summary::velocity_y_spectrum;
+use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviations};
+use crate::io::Table;
+use crate::study::wear_loop::WearRun;
+use crate::study::Model;
+use serde_json::{json, Value};
+
+/// Samples of the mesh stiffness per mesh period in the per-tooth table.
+const TVMS_SAMPLES: usize = 64;
+
+/// Colour levels of a heat map.
+const LEVELS: usize = 32;
+
+/// The per-tooth inputs of one gear as a table (`teeth_pinion.csv`, `teeth_gear.csv`).
+pub fn teeth_table(model: &Model, member: Member) -> Option<Table> {
+    let t = model.teeth.as_ref()?;
+    let i = member as usize;
+    let e = &t.errors[i];
+    let z = e.position_um.len();
+    let fault = |kind: FaultKind, f: &dyn Fn(&crate::config::case::FaultSpec) -> Option<f64>| {
+        (0..z)
+            .map(|tooth| {
+                t.faults
+                    .iter()
+                    .filter(|x| x.gear == member && x.kind == kind && x.tooth as usize == tooth)
+                    .filter_map(f)
+                    .sum()
+            })
+            .collect()
+    };
+    Some(
+        Table::new()
+            .col("tooth", (0..z).map(|t| t as f64).collect())
+            .col("position_error_um", e.position_um.clone())
+            .col(
+                "single_pitch_deviation_um",
+                single_pitch_deviations(&e.position_um),
+            )
+            .col("profile_slope_um", e.profile_slope_um.clone())
+            .col("profile_form_um", e.profile_form_um.clone())
+            .col(
+                "crack_depth_mm",
+                fault(FaultKind::Crack, &|f| f.crack_depth_mm),
+            )
+            .col(
+                "spall_depth_um",
+                fault(FaultKind::Spall, &|f| f.spall_depth_um),
+            )
+            .col(
+                "broken_tip_removed_mm",
+                fault(FaultKind::BrokenTip, &|f| f.removed_height_mm),
+            ),
+    )
+}
+
+/// The `teeth` entry of summaries: what each gear's teeth were given (ISO values derived
+/// from them, the class's tolerances when drawn) and the faults.
+pub fn teeth_json(model: &Model) -> Option<Value> {
+    let t = model.teeth.as_ref()?;
+    let gear = |i: usize| {
+        let e = &t.errors[i];
+        let fpt = single_pitch_deviations(&e.position_um);
+        json!({
+            "max_single_pitch_deviation_um": fpt.iter().fold(0.0_f64, |a, b| a.max(b.abs())),
+            "cumulative_pitch_deviation_um": cumulative_pitch_deviation(&e.position_um),
+            "runout_um": e.runout_um,
+            "iso1328_tolerances_um": e.tolerances,
+        })
+    };
+    let tm = model.tooth_mesh(&model.new_wear_state())?;
+    Some(json!({
+        "excitation_mesh_periods": tm.periods(),
+        "hunting_mesh_periods": crate::dynamics::tooth_mesh::lcm(model.pair.pinion.teeth, model.pair.gear.teeth),
+        "pinion": gear(0),
+        "gear": gear(1),
+        "faults": t.faults,
+        "load_sharing": "by each pair's compression (per-tooth inputs)",
+    }))
+}
+
+/// Mesh stiffness over the excitation period of new teeth, per pair (its teeth and
+/// stiffness) and in total beside the healthy mesh's, with the engagements of faulty
+/// teeth marked: the table and its figure.
+pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
+    let tm = model.tooth_mesh(&model.new_wear_state())?;
+    let pair = &model.pair;
+    let period = pair.mesh_angle_rad();
+    let cols = 10;
+    let mut c: Vec<Vec<f64>> = vec![Vec::new(); cols];
+    for cycle in 0..tm.periods() as i64 {
+        for s in 0..TVMS_SAMPLES {
+            let local = period * s as f64 / TVMS_SAMPLES as f64;
+            let (mut total, mut healthy) = (0.0, 0.0);
+            let mut row = [f64::NAN; 6];
+            for (j, (k, rho1)) in pair.pairs_in_contact(local).enumerate() {
+                let p = tm.pair(&model.mesh, cycle - k as i64, rho1);
+                total += p.stiffness_n_per_m;
+                healthy += model.mesh.pair_stiffness_n_per_m(rho1);
+                if j < 2 {
+                    row[3 * j] = p.pinion_tooth as f64;
+                    row[3 * j + 1] = p.gear_tooth as f64;
+                    row[3 * j + 2] = p.stiffness_n_per_m;
+                }
+            }
+            let values = [(cycle as f64 * period + local).to_degrees(), cycle as f64];
+            for (k, v) in values
+                .iter()
+                .chain(&row)
+                .chain(&[total, healthy])
+                .enumerate()
+            {
+                c[k].push(*v);
+            }
+        }
+    }
+    let names = [
+        "pinion_angle_deg",
+        "mesh_cycle",
+        "pinion_tooth_pair0",
+        "gear_tooth_pair0",
+        "stiffness_pair0_n_per_m",
+        "pinion_tooth_pair1",
+        "gear_tooth_pair1",
+        "stiffness_pair1_n_per_m",
+        "stiffness_total_n_per_m",
+        "stiffness_total_healthy_n_per_m",
+    ];
+    let mut table = Table::new();
+    for (n, v) in names.iter().zip(&c) {
+        table = table.col(n, v.clone());
+    }
+    // The figure shows a readable window: 8 mesh periods around the first engagement of
+    // the first faulty tooth, else the first pinion revolution (the table holds all).
+    let t = model.teeth.as_ref()?;
+    let [z1, z2] = tm.teeth();
+    let first_fault = t.faults.first().map(|f| f.tooth.max(0) as usize);
+    let (lo, hi) = match first_fault {
+        Some(c0) => (c0.saturating_sub(2), (c0 + 6).min(tm.periods())),
+        None => (0, z1.min(tm.periods())),
+    };
+    let rows = lo * TVMS_SAMPLES..hi * TVMS_SAMPLES;
+    let shown = |k: usize| c[k][rows.clone()].to_vec();
+    let mut p = panel(
+        "pinion rotation (deg)",
+        "mesh stiffness (N/m)",
+        vec![
+            Curve::new("healthy teeth", shown(0), shown(9)),
+            Curve::new("these teeth", shown(0), shown(8)),
+        ],
+    );
+    // Mark the start of each engagement of a faulty tooth in the window.
+    for f in &t.faults {
+        let z = match f.gear {
+            Member::Pinion => z1,
+            Member::Gear => z2,
+        };
+        for cycle in (f.tooth.max(0) as usize..hi).step_by(z.max(1)) {
+            if cycle >= lo {
+                let label = format!("{} {} tooth {}", f.kind.name(), f.gear.name(), f.tooth);
+                p.vlines.push(((cycle as f64 * period).to_degrees(), label));
+            }
+        }
+    }
+    let fig = single(
+        &format!(
+            "Mesh stiffness of the tooth pairs, mesh cycles {lo} to {} of {} (faulty teeth's engagements marked)",
+            hi - 1,
+            tm.periods()
+        ),
+        p,
+    );
+    Some((fig, table))
+}
+
+/// The per-tooth wear of the last record of `run` (`wear_teeth_MODE.csv`, a column per
+/// tooth) and its heat map, tooth index against the tooth's own roll angle.
+pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)> {
+    let last = run.last()?;
+    let teeth = last.wear.teeth.as_ref()?;
+    let g = &model.grid;
+    let (rb1, rb2) = (
+        model.pair.pinion.base_radius_m,
+        model.pair.gear.base_radius_m,
+    );
+    let roll_p: Vec<f64> = g
+        .rho_pinion_m
+        .iter()
+        .map(|r| (r / rb1).to_degrees())
+        .collect();
+    let roll_g: Vec<f64> = g
+        .rho_gear_m
+        .iter()
+        .map(|r| (r / rb2).to_degrees())
+        .collect();
+    let mut table = Table::new()
+        .col("rho1_mm", g.rho_pinion_m.iter().map(|r| r * 1e3).collect())
+        .col("pinion_roll_deg", roll_p.clone())
+        .col("gear_roll_deg", roll_g.clone());
+    for (name, profiles) in [("pinion", &teeth.pinion_m), ("gear", &teeth.gear_m)] {
+        for (t, p) in profiles.iter().enumerate() {
+            table = table.col(
+                &format!("{name}_tooth{t}_um"),
+                p.iter().map(|h| h * 1e6).collect(),
+            );
+        }
+    }
+    let max = teeth.max_m() * 1e6;
+    let heat = |title: &str, roll: &[f64], profiles: &[Vec<f64>]| -> Panel {
+        let mut series: Vec<Series> = (0..LEVELS)
+            .map(|l| Series {
+                color: Some(sequential_color((l as f64 + 0.5) / LEVELS as f64)),
+                ..Default::default()
+            })
+            .collect();
+        for (t, p) in profiles.iter().enumerate() {
+            for (x, h) in roll.iter().zip(p) {
+                let level = if max > 0.0 {
+                    ((h * 1e6 / max * LEVELS as f64) as usize).min(LEVELS - 1)
+                } else {
+                    0
+                };
+                series[level].x.push(*x);
+                series[level].y.push(t as f64);
+            }
+        }
+        let dx = (roll[roll.len() - 1] - roll[0]).abs() / (roll.len() - 1).max(1) as f64;
+        Panel {
+            title: title.into(),
+            x_label: "roll angle of the tooth's own profile (deg)".into(),
+            y_label: "tooth".into(),
+            series,
+            kind: PanelKind::Cells,
+            cell_size: (dx, 1.0),
+            color_bar: Some(ColorBar {
+                label: "wear depth (µm)".into(),
+                min: 0.0,
+                max,
+            }),
+            ..Default::default()
+        }
+    };
+    let fig = Figure {
+        title: format!(
+            "Wear of every tooth after {} cycles ({} study)",
+            crate::io::format_number(last.wear.cycles),
+            run.mode.label()
+        ),
+        panels: vec![
+            heat("pinion", &roll_p, &teeth.pinion_m),
+            heat("gear", &roll_g, &teeth.gear_m),
+        ],
+    };
+    Some((fig, table))
+}
+
+/// The pinion-velocity spectrum around the mesh frequency, with the sidebands of both
+/// shafts' frequencies marked (resolved over the excitation period of a tooth-resolved
+/// response: bins of f_mesh / P).
+pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figure, Table) {
+    let f_mesh = model.params.mesh_frequency_hz;
+    let f_p = model.params.pinion_speed_rad_s / std::f64::consts::TAU;
+    let f_g = model.params.gear_speed_rad_s / std::f64::consts::TAU;
+    let spec = velocity_y_spectrum(r);
+    let (f, a) = spectrum_rows(&spec.frequency_hz, &spec.amplitude, f_mesh + 5.5 * f_p);
+    let (f, a): (Vec<f64>, Vec<f64>) = f
+        .into_iter()
+        .zip(a)
+        .filter(|(x, _)| *x >= f_mesh - 5.5 * f_p)
+        .map(|(x, y)| (x, y * 1e3))
+        .unzip();
+    let mut p = spectrum_panel("amplitude (mm/s)", &f, &a, f_mesh);
+    // Sidebands are decades below the mesh harmonic: a log axis shows them.
+    p.log_y = true;
+    for (k, name) in [(1.0, ""), (2.0, "2 ")] {
+        for (fs, shaft) in [(f_p, "f_p"), (f_g, "f_g")] {
+            for sign in [-1.0, 1.0] {
+                let lab = if sign > 0.0 {
+                    format!("+{name}{shaft}")
+                } else {
+                    String::new()
+                };
+                p.vlines.push((f_mesh + sign * k * fs, lab));
+            }
+        }
+    }
+    let fig = single(
+        &format!("Pinion velocity around the mesh frequency, shaft sidebands f_p, f_g ({label})"),
+        p,
+    );
+    let table = Table::new()
+        .col("frequency_hz", f)
+        .col("velocity_y_pinion_amplitude_mm_per_s", a);
+    (fig, table)
+}
+
+/// Adds the teeth tables, the summary entry and the per-tooth mesh stiffness to `a`
+/// (stiffness, dynamics and wear outputs of a tooth-resolved case; nothing otherwise).
+pub fn add_teeth_artifacts(model: &Model, a: &mut Artifacts) {
+    if model.teeth.is_none() {
+        return;
+    }
+    for (m, name) in [
+        (Member::Pinion, "teeth_pinion.csv"),
+        (Member::Gear, "teeth_gear.csv"),
+    ] {
+        if let Some(t) = teeth_table(model, m) {
+            a.table(name, t);
+        }
+    }
+    if let Some(v) = teeth_json(model) {
+        a.summary["teeth"] = v;
+    }
+    if let Some((fig, table)) = tvms_figure(model) {
+        a.figure_with_data("mesh_stiffness_teeth.png", fig, table);
+    }
+}
+
+/// Adds the sideband spectrum of a tooth-resolved dynamic response to `a`.
+pub fn add_sideband_artifacts(model: &Model, r: &DynamicResponse, label: &str, a: &mut Artifacts) {
+    if model.teeth.is_none() || r.signals.velocity.is_empty() {
+        return;
+    }
+    let (fig, table) = sideband_figure(model, r, label);
+    a.figure_with_data("spectrum_sidebands.png", fig, table);
+    a.summary["excitation_mesh_periods"] = json!(r.excitation_periods);
+}
+
+/// Adds each run's per-tooth wear table and heat map to `a`.
+pub fn add_tooth_wear_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifacts) {
+    for run in runs {
+        if let Some((fig, table)) = tooth_wear_figure(model, run) {
+            a.figure_with_data(format!("wear_teeth_{}.png", run.mode.name()), fig, table);
+        }
+    }
+}
+
+/// The figures of the run report's section on the teeth (after the paper's): the mesh
+/// stiffness of the tooth pairs, the sidebands of the first wear state's response and
+/// each tooth's wear at the end of the dynamic study. None for identical teeth.
+pub fn run_teeth_figures(
+    model: &Model,
+    study: &crate::study::paper::PaperStudy,
+) -> Vec<super::paper::Fig> {
+    let mut figs = Vec::new();
+    if model.teeth.is_none() {
+        return figs;
+    }
+    let mut push = |file: &str, caption: String, (figure, table): (Figure, Table)| {
+        figs.push(super::paper::Fig {
+            file: file.into(),
+            paper_figure: 0,
+            caption,
+            figure,
+            table,
+        })
+    };
+    if let Some(t) = tvms_figure(model) {
+        push(
+            "teeth_mesh_stiffness",
+            "Mesh stiffness of the tooth pairs of new teeth, beside identical healthy teeth".into(),
+            t,
+        );
+    }
+    if let Some(s) = study.wear_states.first() {
+        let label = format!("{} µm wear state", s.max_wear_um);
+        push(
+            "teeth_spectrum_sidebands",
+            format!("Pinion velocity spectrum around the mesh frequency over the excitation period ({label}): the shaft-frequency sidebands"),
+            sideband_figure(model, &s.response, &label),
+        );
+    }
+    if let Some(w) = tooth_wear_figure(model, &study.dynamic) {
+        push(
+            "teeth_wear_dynamic",
+            "Wear of every tooth at the end of the dynamic wear study".into(),
+            w,
+        );
+    }
+    figs
+}
+
+/// The run report's section on the teeth: what they were given and the figures.
+pub fn teeth_section(
+    model: &Model,
+    figures: Vec<super::html::FigureBlock>,
+) -> Option<super::html::Section> {
+    let t = model.teeth.as_ref()?;
+    let tm = model.tooth_mesh(&model.new_wear_state())?;
+    let mut paragraphs = vec![format!(
+        "Every tooth has its own flank: mesh cycle n engages pinion tooth n mod {} and gear tooth n mod {}; the excitation repeats after {} mesh periods and the steady state is found over them (docs/MODEL.md, section 9). Pair loads follow each pair's compression.",
+        model.pair.pinion.teeth,
+        model.pair.gear.teeth,
+        tm.periods()
+    )];
+    for (i, name) in ["pinion", "gear"].iter().enumerate() {
+        let e = &t.errors[i];
+        paragraphs.push(format!(
+            "{name}: cumulative pitch deviation {:.3} um, largest single pitch deviation {:.3} um, run-out {} um{}.",
+            cumulative_pitch_deviation(&e.position_um),
+            single_pitch_deviations(&e.position_um)
+                .iter()
+                .fold(0.0_f64, |a, b| a.max(b.abs())),
+            e.runout_um,
+            e.tolerances.map_or(String::new(), |tol| format!(
+                " (drawn for ISO 1328-1 class {}: f_pT {:.2} um, F_pT {:.2} um)",
+                tol.class, tol.single_pitch_um, tol.cumulative_pitch_um
+            ))
+        ));
+    }
+    for f in &t.faults {
+        paragraphs.push(format!(
+            "Fault: {} on {} tooth {}.",
+            f.kind.name(),
+            f.gear.name(),
+            f.tooth
+        ));
+    }
+    Some(super::html::Section {
+        heading: "Tooth-resolved mesh".into(),
+        paragraphs,
+        figures,
+        tables: vec![],
+    })
+}

@@ -1,0 +1,263 @@
+//! The compliance a tooth fault adds to the potential energy integrals of one tooth
+//! (`potential_energy::ToothBeam`), as a function of the contact position.
+//!
+//! **Root crack** (Chen & Shao, Eng. Fail. Anal. 18 (2011) 2149; the cracked section of
+//! Tian 2004 and Wu, Zuo & Parey, J. Sound Vib. 317 (2008) 608). A straight crack starts
+//! at the root circle on the loaded flank's side and runs into the tooth at angle nu to
+//! the centreline over a depth q, so its tip lies h_q = h_r - q sin(nu) from the
+//! centreline (h_r the root's half-thickness; h_q < 0 past the centreline). Material on
+//! the cracked side outside a limit line through the crack tip carries no stress; the
+//! section at height y is t(y) = h(y) + min(h(y), l(y)) thick (area t b, second moment
+//! t^3 b / 12, the moment arm still from the centreline as in the sources), and no
+//! section loses more than the crack's reach q sin(nu) (the involute flank bulges out
+//! above the base circle, by 0.16 % of the half-thickness on the paper's pinion, and a
+//! line through a vanishing crack's tip would otherwise cut that bulge off). The limit
+//! line: Chen & Shao's parallel to the centreline, l = h_q, while the crack leaves the
+//! cracked side thicker than the tip (h_q >= h_tip); for deeper cracks, where that line
+//! would leave no section above the crack, the line from the crack tip to the tip corner
+//! of the cracked flank, the limit line Mohammed, Rantatalo & Aidanpaa (Eng. Fail. Anal.
+//! 34 (2013) 235) proposed for large cracks; the two agree at h_q = h_tip, so the
+//! compliance is continuous in q. The crack's own height (q cos nu) is not modelled,
+//! as in the sources: the section is reduced from the root up. At q = 0 the section is
+//! the uncracked one, so the compliance is exactly the healthy tooth's.
+//!   Partial face width (Chen & Shao 2011): a crack that has run across a share w of the
+//! face from one side, its depth falling as q(z) = q sqrt(1 - z / (w b)) towards its
+//! front; the face's slices act in parallel, k = (1/b) int k_slice(q(z)) dz
+//! = (1 - w) k(0) + w int_0^1 k(q sqrt(1 - s)) ds (8-point Gauss-Legendre in s).
+//!
+//! **Spall** (Saxena, Parey & Chouksey, Eng. Fail. Anal. 70 (2016) 200; Ma et al.,
+//! Mech. Syst. Signal Process. 2015 review): a pit of depth d over a share f of the face
+//! width and a length along the profile. Over its heights the section loses the pit's
+//! rectangle at the loaded flank (area f b d, second moment about the shifted centroid),
+//! which softens the tooth for every contact above the pit's lower edge; with the contact
+//! inside it the Hertz line contact is (1 - f) b long (k_h scaled by 1 - f). A pit across
+//! the whole face (f = 1) leaves the contact on its edges instead (full length) and opens
+//! a gap (`dynamics::tooth_mesh`).
+
+use super::potential_energy::{GaussLegendre, ToothBeam};
+use std::f64::consts::PI;
+
+/// A root crack (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crack {
+    pub depth_m: f64,
+    /// Angle of the crack path to the tooth centreline, rad.
+    pub angle_rad: f64,
+    /// Share of the face width the crack has run across (1: through the face).
+    pub width_fraction: f64,
+}
+
+impl Crack {
+    /// Largest depth that leaves the tooth attached: the crack's reach across the root,
+    /// q sin(nu), below the root's full thickness 2 h_r.
+    pub fn max_depth_m(beam: &ToothBeam, angle_rad: f64) -> f64 {
+        2.0 * beam.root_section().0 / angle_rad.sin()
+    }
+}
+
+/// Beam compliance (bending + shear + axial, m/N) of `beam` at contact rho with a
+/// through-face crack of depth `depth_m` at `angle_rad`; `tip_rho_m` locates the tip
+/// corner of the flank.
+fn cracked_beam_compliance(
+    beam: &ToothBeam,
+    tip_rho_m: f64,
+    depth_m: f64,
+    angle_rad: f64,
+    rho_m: f64,
+) -> f64 {
+    let rule = GaussLegendre::default_rule();
+    let b = beam.face_width_m;
+    let (h_root, y_root) = beam.root_section();
+    let (h_tip, y_tip) = beam.involute_point(beam.contact_angle_rad(tip_rho_m));
+    let reach = depth_m * angle_rad.sin();
+    let h_q = h_root - reach;
+    let limit = |y: f64| {
+        if h_q >= h_tip || y_tip <= y_root {
+            h_q
+        } else {
+            h_q + (h_tip - h_q) * ((y - y_root) / (y_tip - y_root)).clamp(0.0, 1.0)
+        }
+    };
+    beam.compliance_with_section(rho_m, rule, |h, y| {
+        let cracked_side = h.min(limit(y).max(h - reach));
+        let t = (h + cracked_side).max(1e-9 * h_root);
+        (t * b, t * t * t * b / 12.0)
+    })
+    .total_m_per_n()
+}
+
+/// 8-point Gauss-Legendre rule for the face-width integral.
+fn width_rule() -> &'static GaussLegendre {
+    static RULE: std::sync::OnceLock<GaussLegendre> = std::sync::OnceLock::new();
+    RULE.get_or_init(|| GaussLegendre::new(8))
+}
+
+/// Compliance (m/N) the crack adds to the tooth at contact rho (its own radius of
+/// curvature, m): 1/k_cracked - 1/k_healthy of the tooth beam, slices of a partial crack
+/// in parallel (module docs). Zero for a crack of zero depth.
+pub fn crack_compliance_m_per_n(
+    beam: &ToothBeam,
+    tip_rho_m: f64,
+    crack: &Crack,
+    rho_m: f64,
+) -> f64 {
+    if crack.depth_m <= 0.0 {
+        return 0.0;
+    }
+    let c0 = beam.compliance(rho_m).total_m_per_n();
+    let k_of = |q: f64| 1.0 / cracked_beam_compliance(beam, tip_rho_m, q, crack.angle_rad, rho_m);
+    let w = crack.width_fraction.clamp(0.0, 1.0);
+    let k = if w >= 1.0 {
+        k_of(crack.depth_m)
+    } else {
+        let slices = width_rule().integrate3(0.0, 1.0, |s| {
+            [k_of(crack.depth_m * (1.0 - s).max(0.0).sqrt()), 0.0, 0.0]
+        })[0];
+        (1.0 - w) / c0 + w * slices
+    };
+    1.0 / k - c0
+}
+
+/// A spall on one flank (SI; positions as the gear's own radius of curvature).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spall {
+    pub rho_lo_m: f64,
+    pub rho_hi_m: f64,
+    pub depth_m: f64,
+    /// Share of the face width it covers.
+    pub width_fraction: f64,
+}
+
+impl Spall {
+    pub fn contains(&self, rho_m: f64) -> bool {
+        rho_m >= self.rho_lo_m && rho_m <= self.rho_hi_m
+    }
+}
+
+/// Compliance (m/N) the spall adds to the tooth beam and, with the contact inside a
+/// partial-width spall, to the Hertz contact (`hertz_m_per_n` = 1/k_h of the full face),
+/// at contact rho (own radius of curvature, m).
+pub fn spall_compliance_m_per_n(
+    beam: &ToothBeam,
+    spall: &Spall,
+    hertz_m_per_n: f64,
+    rho_m: f64,
+) -> f64 {
+    let rule = GaussLegendre::default_rule();
+    let b = beam.face_width_m;
+    let f = spall.width_fraction.clamp(0.0, 1.0);
+    let y_of = |rho: f64| beam.involute_point(beam.contact_angle_rad(rho)).1;
+    let (y_lo, y_hi) = (y_of(spall.rho_lo_m), y_of(spall.rho_hi_m));
+    let pitted = beam.compliance_with_section(rho_m, rule, |h, y| {
+        let full = (2.0 * h * b, 2.0 * h * h * h * b / 3.0);
+        if y < y_lo || y > y_hi || f <= 0.0 {
+            return full;
+        }
+        // The pit u in [h - d, h] over width f b, u across the thickness from the centreline.
+        let d = spall.depth_m.min(1.9 * h);
+        let pit_area = f * b * d;
+        let area = full.0 - pit_area;
+        let first = -pit_area * (h - 0.5 * d);
+        let second = full.1 - f * b * (h.powi(3) - (h - d).powi(3)) / 3.0;
+        let u_bar = first / area;
+        (area, second - area * u_bar * u_bar)
+    });
+    let mut extra = pitted.total_m_per_n() - beam.compliance(rho_m).total_m_per_n();
+    if spall.contains(rho_m) && f < 1.0 {
+        extra += hertz_m_per_n * f / (1.0 - f);
+    }
+    extra
+}
+
+/// The gap a spall across the whole face opens at own rho: the depth a convex mate of
+/// relative radius of curvature `radius_m` sinks into a slot of the spall's length,
+/// pivoting on its nearer edge, min(d, x^2 / (2 R)) with x the distance to that edge
+/// (the sagitta of the mate's curvature; d the pit's depth), m. Zero outside the spall
+/// and for a partial-width spall (the contact stays on the intact width).
+pub fn spall_gap_m(spall: &Spall, radius_m: f64, rho_m: f64) -> f64 {
+    if spall.width_fraction < 1.0 || !spall.contains(rho_m) || radius_m <= 0.0 {
+        return 0.0;
+    }
+    let x = (rho_m - spall.rho_lo_m).min(spall.rho_hi_m - rho_m);
+    spall.depth_m.min(x * x / (2.0 * radius_m))
+}
+
+/// Degrees to radians.
+pub fn deg(x: f64) -> f64 {
+    x * PI / 180.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::case::GearSection;
+    use crate::geometry::GearPair;
+
+    fn beam() -> (GearPair, ToothBeam) {
+        let p = GearPair::from_case(&GearSection::default()).unwrap();
+        let b = ToothBeam::new(&p.pinion, p.face_width_m, 205e9, 0.3);
+        (p, b)
+    }
+
+    #[test]
+    fn crack_compliance_is_zero_at_zero_depth_and_grows_with_depth() {
+        let (p, b) = beam();
+        let tip = p.pinion.tip_rho_m();
+        let rho = p.rho_pitch_m;
+        let crack = |q: f64, w: f64| Crack {
+            depth_m: q,
+            angle_rad: deg(45.0),
+            width_fraction: w,
+        };
+        assert_eq!(
+            crack_compliance_m_per_n(&b, tip, &crack(0.0, 1.0), rho),
+            0.0
+        );
+        // A vanishing crack: no section loses more than its reach (1e-9 m of ~1.7 mm),
+        // so the compliance changes by ~3 x 1e-9 / 1.7e-3 relative at most.
+        let tiny = crack_compliance_m_per_n(&b, tip, &crack(1e-9, 1.0), rho);
+        assert!(
+            tiny.abs() < 1e-5 * b.compliance(rho).total_m_per_n(),
+            "{tiny}"
+        );
+        let qmax = Crack::max_depth_m(&b, deg(45.0));
+        let mut last = 0.0;
+        for i in 1..=9 {
+            let q = qmax * i as f64 / 10.0;
+            let c = crack_compliance_m_per_n(&b, tip, &crack(q, 1.0), rho);
+            assert!(c > last, "depth {q}: {c} <= {last}");
+            // A partial crack adds less than a through crack of the same depth.
+            let part = crack_compliance_m_per_n(&b, tip, &crack(q, 0.5), rho);
+            assert!(part > 0.0 && part < c);
+            last = c;
+        }
+    }
+
+    #[test]
+    fn spall_softens_only_contacts_at_or_above_it_and_its_gap_is_the_sagitta() {
+        let (p, b) = beam();
+        let s = Spall {
+            rho_lo_m: p.rho_pitch_m,
+            rho_hi_m: p.rho_pitch_m + 1e-3,
+            depth_m: 50e-6,
+            width_fraction: 0.5,
+        };
+        let kh = 1.0 / 3.5e9;
+        assert!(spall_compliance_m_per_n(&b, &s, kh, s.rho_lo_m - 0.5e-3).abs() < 1e-20);
+        let inside = spall_compliance_m_per_n(&b, &s, kh, s.rho_lo_m + 0.5e-3);
+        // Inside: at least the Hertz part k_h (1 - f) -> f/(1-f) / k_h.
+        assert!(inside > kh);
+        let above = spall_compliance_m_per_n(&b, &s, kh, s.rho_hi_m + 0.5e-3);
+        assert!(above > 0.0 && above < kh);
+        // Gap of a full-width spall: x^2 / 2R by the edge, capped by the depth.
+        let full = Spall {
+            width_fraction: 1.0,
+            ..s
+        };
+        let r = 5e-3;
+        assert!((spall_gap_m(&full, r, s.rho_lo_m + 0.1e-3) - 1e-8 / 1e-2).abs() < 1e-18);
+        // Mid-slot: (0.5 mm)^2 / (2 x 5 mm) = 25 um, below the 50 um depth.
+        assert!((spall_gap_m(&full, r, s.rho_lo_m + 0.5e-3) - 25e-6).abs() < 1e-15);
+        assert_eq!(spall_gap_m(&s, r, s.rho_lo_m + 0.5e-3), 0.0);
+    }
+}
