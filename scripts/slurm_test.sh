@@ -110,3 +110,50 @@ else
     cat "$WORK"/logs/*.log
     exit 1
 fi
+
+# The dataset recipe of docs/SCALING.md: a small design as an array of N shards into one
+# directory, merged in place by a dependent job, against the same dataset unsharded.
+cat > "$WORK/design.toml" <<DESIGN
+seed = 5
+set = ["signals.snr_db=30", "signals.record_length=0.1", "numerics.steps_per_mesh_period=60",
+       "stiffness.table_points_per_mesh_period=60"]
+[run_to_failure]
+cycles = [0, 1e4]
+max_cycles = 1e4
+[operating]
+input_speed_hz = [25, 30]
+[records]
+noise_realisations = 2
+DESIGN
+cat > "$WORK/dataset.sbatch" <<SCRIPT
+#!/bin/bash
+#SBATCH --job-name=gearwear-dataset
+#SBATCH --cpus-per-task=1
+#SBATCH --time=00:10:00
+#SBATCH --output=$WORK/logs/dataset_%A_%a.log
+set -euo pipefail
+N=$N
+export RAYON_NUM_THREADS=\${SLURM_CPUS_PER_TASK}
+"$BIN" dataset --design "$WORK/design.toml" \\
+    --shard "\${SLURM_ARRAY_TASK_ID}/\${N}" --out "$WORK/dataset1"
+SCRIPT
+jid=$(sbatch --parsable --array=1-$N "$WORK/dataset.sbatch")
+mid=$(sbatch --parsable --dependency=afterany:"$jid" --output="$WORK/logs/dataset_merge.log" \
+    --wrap "\"$BIN\" dataset-merge \"$WORK/dataset1\" --out \"$WORK/dataset1\"")
+for _ in $(seq 1 300); do
+    [ -z "$(squeue -h -j "$jid,$mid" 2>/dev/null)" ] && break
+    sleep 1
+done
+"$BIN" --quiet dataset --design "$WORK/design.toml" --out "$WORK/dataset_unsharded" 2>/dev/null
+same=1
+for f in index.parquet index.csv metadata.json; do
+    cmp -s "$WORK/dataset1/$f" "$WORK/dataset_unsharded/$f" || same=0
+done
+diff -rq "$WORK/dataset1/signals" "$WORK/dataset_unsharded/signals" >/dev/null || same=0
+if [ "$same" = 1 ]; then
+    echo "PASS: the merge of $N Slurm array shards of a dataset equals the unsharded dataset byte for byte ($(ls "$WORK/dataset1/signals" | wc -l) records)"
+else
+    echo "FAIL: merged and unsharded datasets differ"
+    cat "$WORK"/logs/*.log
+    exit 1
+fi

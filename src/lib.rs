@@ -6,15 +6,16 @@
 //!
 //! Layers, each depending only on those before it:
 //! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `prognostics` -> `io` / `report` -> `app` (one job per study) -> `cli` (and the
-//! Python binding in `python/`). `remedy` (problems and their remedies) and `format`
-//! sit below them all.
+//! -> `duty` -> `prognostics` -> `io` / `report` -> `app` (one job per study) -> `cli`
+//! (and the Python binding in `python/`). `remedy` (problems and their remedies) and
+//! `format` sit below them all.
 
 pub mod app;
 pub mod checksum;
 pub mod cli;
 pub mod config;
 pub mod contact;
+pub mod duty;
 pub mod dynamics;
 pub mod format;
 pub mod geometry;
@@ -22,6 +23,7 @@ pub mod io;
 pub mod prognostics;
 pub mod remedy;
 pub mod report;
+pub mod signals;
 pub mod stiffness;
 pub mod study;
 pub mod wear;

@@ -62,6 +62,10 @@ pub enum Arg {
     Inputs,
     /// Replacing an output folder that holds another command's results.
     Replace,
+    /// A transfer-path file of the signal chain.
+    TransferPath,
+    /// The study design of a dataset.
+    Design,
 }
 
 /// How a front end spells an argument in its messages.
@@ -69,7 +73,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 22] = [
+    pub const ALL: [Arg; 24] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -92,6 +96,8 @@ impl Arg {
         Arg::NoBudget,
         Arg::Inputs,
         Arg::Replace,
+        Arg::TransferPath,
+        Arg::Design,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -119,6 +125,8 @@ impl Arg {
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
             Arg::Replace => "replacing another command's results",
+            Arg::TransferPath => "the transfer-path file",
+            Arg::Design => "the dataset design",
         }
     }
 }

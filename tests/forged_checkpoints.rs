@@ -194,3 +194,38 @@ fn twenty_two_forged_checkpoints_are_refused_naming_the_line() {
     let r = wear(&a, &[], &["--resume"]);
     assert!(r.status.success(), "{}", stderr(&r));
 }
+
+/// Under a load spectrum each bin has its own log: case A's headers kept, case B's records
+/// (another wear coefficient) appended to every bin's log, each line's checksum valid.
+#[test]
+fn spectrum_bin_logs_of_another_case_are_refused() {
+    let d = tempfile::tempdir().unwrap();
+    let case = d.path().join("two.toml");
+    std::fs::write(
+        &case,
+        "[load_spectrum]\nbins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 60, input_speed_hz = 30, share = 0.5}]\n",
+    )
+    .unwrap();
+    let config = ["--config", case.to_str().unwrap()];
+    let (a, b) = (d.path().join("a"), d.path().join("b"));
+    assert!(wear(&a, &[], &config).status.success());
+    let other = wear(&b, &["wear.coefficient_m2_per_n=3e-16"], &config);
+    assert!(other.status.success(), "{}", stderr(&other));
+    let published = std::fs::read(a.join("updates_dynamic.csv")).unwrap();
+    for bin in [1, 2] {
+        let name = format!("checkpoint_dynamic_bin{bin}.jsonl");
+        let (la, lb) = (lines(&a.join(&name)), lines(&b.join(&name)));
+        let mut spliced = vec![la[0].clone()];
+        spliced.extend(lb[1..].iter().cloned());
+        let text: String = spliced.iter().map(|(s, j)| format!("{s} {j}\n")).collect();
+        std::fs::write(a.join(&name), text).unwrap();
+    }
+    let o = wear(&a, &[], &[&config[..], &["--resume"]].concat());
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("cannot be resumed") && e.contains("line"), "{e}");
+    assert_eq!(
+        std::fs::read(a.join("updates_dynamic.csv")).unwrap(),
+        published
+    );
+}

@@ -328,3 +328,130 @@ fn fifos_in_the_output_folder_are_refused_at_once() {
         assert!(e.contains("FIFO") || e.contains("no record"), "{name}: {e}");
     }
 }
+
+/// A small dataset design: one condition, two states, one speed, one record each.
+const SMALL_DESIGN: &str = r#"
+seed = 3
+set = ["signals.record_length=0.05", "numerics.steps_per_mesh_period=60",
+       "stiffness.table_points_per_mesh_period=60", "wear.block_cycles=5e3"]
+[run_to_failure]
+states = 2
+max_cycles = 1e4
+wear_limit_um = 2
+[records]
+noise_realisations = 1
+"#;
+
+fn design_in(d: &Path, text: &str) -> PathBuf {
+    let p = d.join("design.toml");
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn the_signal_and_duty_jobs_refuse_fifo_inputs_at_once() {
+    let d = tempfile::tempdir().unwrap();
+    let fifo = d.path().join("fifo");
+    mkfifo(&fifo);
+    let out = d.path().join("out");
+    // A case whose load spectrum is read from the FIFO, and a design naming it as its case.
+    let case = d.path().join("spectrum.toml");
+    std::fs::write(&case, "[load_spectrum]\nfile = \"fifo\"\n").unwrap();
+    let design = d.path().join("d.toml");
+    std::fs::write(&design, "case = \"fifo\"\n").unwrap();
+    let (f, o) = (s(&fifo), s(&out));
+    for args in [
+        vec!["dataset", "--design", f, "--out", o],
+        vec!["dataset", "--design", s(&design), "--out", o],
+        vec!["signals", "--transfer-path", f, "--out", o],
+        vec!["wear", "--config", s(&case), "--out", o],
+    ] {
+        let r = within(&args, 20);
+        let e = stderr(&r);
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {e}");
+        assert!(e.contains("FIFO"), "{args:?}: {e}");
+    }
+    assert!(!out.exists(), "a refused job wrote its folder");
+}
+
+#[test]
+fn a_dataset_over_the_run_budget_is_refused_before_it_starts() {
+    let d = tempfile::tempdir().unwrap();
+    // 1e9 cycles in blocks of 1: far over ten minutes of trajectories.
+    let text = SMALL_DESIGN
+        .replace("wear.block_cycles=5e3", "wear.block_cycles=1")
+        .replace("max_cycles = 1e4", "max_cycles = 1e9");
+    let design = design_in(d.path(), &text);
+    let out = d.path().join("ds");
+    let r = within(&["dataset", "--design", s(&design), "--out", s(&out)], 20);
+    let e = stderr(&r);
+    assert_eq!(r.status.code(), Some(2), "{e}");
+    assert!(e.contains("budget") && e.contains("--budget-scale"), "{e}");
+    assert!(!out.exists(), "a refused dataset wrote its folder");
+}
+
+#[test]
+fn a_dataset_folder_never_writes_through_planted_files_links_or_forged_sidecars() {
+    let d = tempfile::tempdir().unwrap();
+    let o = outside(d.path());
+    let before = snapshot(&o);
+    let design = design_in(d.path(), SMALL_DESIGN);
+    let args = |out: &Path| {
+        vec![
+            "dataset".to_string(),
+            "--design".into(),
+            s(&design).into(),
+            "--out".into(),
+            s(out).into(),
+        ]
+    };
+    let go = |out: &Path| {
+        let a = args(out);
+        let refs: Vec<&str> = a.iter().map(String::as_str).collect();
+        gearwear(&refs)
+    };
+    // 1. `signals/` a link to the outside folder: refused, nothing written through it.
+    let linked = d.path().join("linked");
+    std::fs::create_dir_all(&linked).unwrap();
+    std::os::unix::fs::symlink(&o, linked.join("signals")).unwrap();
+    let r = go(&linked);
+    assert!(
+        !r.status.success(),
+        "a linked signals/ folder was written through"
+    );
+    assert_eq!(snapshot(&o), before);
+    // 2. A user's file and a hard link to an outside file at record names: left alone.
+    let planted = d.path().join("planted");
+    std::fs::create_dir_all(planted.join("records")).unwrap();
+    std::fs::create_dir_all(planted.join("signals")).unwrap();
+    std::fs::write(planted.join("records/0000000.json"), b"my notes").unwrap();
+    std::fs::hard_link(
+        o.join("victim.txt"),
+        planted.join("signals/0000001.parquet"),
+    )
+    .unwrap();
+    let _ = go(&planted);
+    assert_eq!(
+        std::fs::read(planted.join("records/0000000.json")).unwrap(),
+        b"my notes"
+    );
+    assert_eq!(snapshot(&o), before);
+    // 3. A finished dataset whose sidecar is edited to name (and hash) an outside file:
+    //    the sidecar is not trusted, the record is computed again, the file untouched.
+    let ds = d.path().join("ds");
+    let r = go(&ds);
+    assert!(r.status.success(), "{}", stderr(&r));
+    let car = ds.join("records/0000000.json");
+    let mut v: serde_json::Value = serde_json::from_slice(&std::fs::read(&car).unwrap()).unwrap();
+    let victim = o.join("victim.txt");
+    v["labels"]["file"] = serde_json::json!(s(&victim));
+    v["signal_sha256"] = serde_json::json!(gearwear::checksum::sha256_hex(b"precious"));
+    std::fs::write(&car, serde_json::to_vec_pretty(&v).unwrap()).unwrap();
+    let r = go(&ds);
+    assert!(r.status.success(), "{}", stderr(&r));
+    let said = String::from_utf8_lossy(&r.stdout).into_owned();
+    assert!(said.contains("(1 computed, 1 reused)"), "{said}");
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&car).unwrap()).unwrap();
+    assert_eq!(v["labels"]["file"], "signals/0000000.parquet");
+    assert_eq!(snapshot(&o), before);
+}

@@ -329,7 +329,7 @@ fn point_mass_posterior_gives_the_deterministic_life() {
         rows: rows.clone(),
         resample: false,
     };
-    for fw in [Forward::Surrogate(&sur), Forward::Exact(&f.case)] {
+    for fw in [Forward::Surrogate(&sur), Forward::Exact(&f.case, None)] {
         let out: Vec<_> = (0..rows.len())
             .map(|i| run_sample(&fw, source.draw(i, 1), i, &set).unwrap())
             .collect();

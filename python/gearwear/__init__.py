@@ -65,9 +65,11 @@ from ._results import (
     COORDINATE_UNITS,
     COORDINATES,
     CalibrationResult,
+    DatasetResult,
     DynamicsResult,
     PredictionResult,
     RunResult,
+    SignalsResult,
     StiffnessResult,
     SweepResult,
     Table,
@@ -91,6 +93,9 @@ __all__ = [
     "calibrate",
     "predict",
     "predict_merge",
+    "signals",
+    "dataset",
+    "dataset_merge",
     "Table",
     "StiffnessResult",
     "DynamicsResult",
@@ -100,6 +105,8 @@ __all__ = [
     "SweepResult",
     "CalibrationResult",
     "PredictionResult",
+    "SignalsResult",
+    "DatasetResult",
     "COORDINATES",
     "COORDINATE_UNITS",
     "__version__",
@@ -107,7 +114,7 @@ __all__ = [
 
 #: ``progress(task, done, total)``: ``task`` is ``"dynamic"`` or ``"quasi_static"`` (wear
 #: runs; done and total in load cycles), ``"sweep"`` (cases), ``"reference_runs"``,
-#: ``"posterior"`` or ``"samples"`` (prognostics).
+#: ``"posterior"`` or ``"samples"`` (prognostics), ``"records"`` (a dataset).
 Progress = _Callable[[str, float, float], _Any]
 PathLike = _Union[str, "_os.PathLike[str]"]
 
@@ -465,3 +472,60 @@ def predict_merge(
     )
     return _done(PredictionResult(**n), n)
 
+
+
+def signals(
+    case: Case,
+    *,
+    transfer_path: _Optional[PathLike] = None,
+    out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> SignalsResult:
+    """One record of what a sensor sees, as ``gearwear signals [--transfer-path FILE]``.
+
+    The case's ``[signals]`` section sets the acquisition (sampling rate, anti-alias
+    filter, unit, sensitivity, measurement noise, tachometer, record length) and the
+    operating variation (``ramp_end_speed_hz`` for a run-up or coast-down,
+    ``torque_fluctuation_rms_nm`` for a fluctuating load). ``transfer_path``: an FRF table
+    (.csv) or modal description (.toml); default: the built-in generic housing.
+    """
+    n = _native.signals(
+        _check_case(case),
+        transfer_path=_path(transfer_path),
+        out=_path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(SignalsResult(**n), n)
+
+
+def dataset(
+    design: PathLike,
+    out: PathLike,
+    *,
+    shard: _Optional[_Sequence[int]] = None,
+    progress: _Optional[Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> DatasetResult:
+    """A labelled dataset from the study design file ``design``, as ``gearwear dataset``:
+    written to ``out`` record by record (resumable: a rerun keeps finished records).
+    ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``."""
+    sh = None if shard is None else (int(shard[0]), int(shard[1]))
+    n = _native.dataset(
+        _os.fspath(design),
+        _os.fspath(out),
+        shard=sh,
+        progress=progress,
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(DatasetResult(**n), n)
+
+
+def dataset_merge(inputs: _Sequence[PathLike], out: PathLike, *, replace: bool = False) -> DatasetResult:
+    """The shards of a dataset joined into ``out`` with its index and metadata, as
+    ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes."""
+    n = _native.dataset_merge([_os.fspath(p) for p in inputs], _os.fspath(out), replace=replace)
+    return _done(DatasetResult(**n), n)

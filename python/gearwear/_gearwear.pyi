@@ -194,6 +194,32 @@ def predict_merge(
 ) -> _Result:
     """``gearwear predict-merge``."""
 
+def signals(
+    case: Case,
+    *,
+    transfer_path: _Path = None,
+    out: _Path = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear signals``."""
+
+def dataset(
+    design: Union[str, PathLike[str]],
+    out: Union[str, PathLike[str]],
+    *,
+    shard: Optional[Tuple[int, int]] = None,
+    progress: Optional[Callable[[str, float, float], Any]] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear dataset``."""
+
+def dataset_merge(
+    inputs: Sequence[Union[str, PathLike[str]]], out: Union[str, PathLike[str]], *, replace: bool = False
+) -> _Result:
+    """``gearwear dataset-merge``."""
+
 def _time_rust_dynamics(case: Case, repeats: int) -> List[float]:
     """Seconds of each of ``repeats`` Rust-only runs of what ``dynamics(case)`` runs."""
 

@@ -545,3 +545,47 @@ class SweepResult:
     def __repr__(self) -> str:
         return f"<gearwear.SweepResult: {len(self)} cases x {len(self.columns)} results, varied {self.keys}>"
 
+
+
+class SignalsResult(_Result):
+    """One record of what a sensor sees (``gearwear signals``): the accelerometer channels
+    and the tachometer at the sampling rate, their spectrum, the time-synchronous average
+    of each shaft, and the condition indicators. Tables: ``record`` (``time_s``, one
+    column per sensor with its unit in the name, ``tachometer_v``), ``spectrum``,
+    ``tsa_pinion``, ``tsa_gear``. See docs/SIGNALS.md."""
+
+    @property
+    def record(self) -> Table:
+        """The record: ``time_s``, the channels, ``tachometer_v``."""
+        return self.tables["record"]
+
+    @property
+    def sampling_rate_hz(self) -> float:
+        return float(self.summary["record"]["sampling_rate_hz"])
+
+    @property
+    def channel_unit(self) -> str:
+        """Unit of the accelerometer channels: ``m/s^2``, ``g`` or ``mV``."""
+        return str(self.summary["record"]["channel_unit"])
+
+    @property
+    def indicators(self) -> List[Dict[str, Any]]:
+        """Per channel: ``rms``, ``crest_factor``, ``kurtosis``, and ``pinion`` / ``gear``
+        dicts of the TSA indicators (``fm0``, ``fm4``, ``m6a``, ``m8a``, ``na4``,
+        ``nb4``, ``energy_ratio``, ``sideband_level_factor``, ``sideband_index``, ...)."""
+        return list(self.summary["indicators"])
+
+
+class DatasetResult(_Result):
+    """A labelled dataset written to a folder (``gearwear dataset`` / ``dataset-merge``):
+    the summary counts the records (computed, reused, failed, missing from the index).
+    The dataset itself is in the folder ``out``: ``index.parquet`` (or ``index.csv``),
+    ``signals/<id>.parquet``, ``metadata.json`` (docs/SIGNALS.md, "Datasets")."""
+
+    @property
+    def index_path(self) -> Optional[Path]:
+        """The index table (Parquet), when the run wrote one (not for a shard)."""
+        if self.out is None:
+            return None
+        p = self.out / "index.parquet"
+        return p if p.exists() else None

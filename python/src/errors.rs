@@ -136,6 +136,8 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::NoBudget => "`budget_scale=math.inf`",
         Arg::Inputs => "`inputs`",
         Arg::Replace => "`replace=True`",
+        Arg::TransferPath => "`transfer_path`",
+        Arg::Design => "`design`",
     }
 }
 

@@ -28,7 +28,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 /// The budget of `budget_scale`: the default times the scale; infinity drops the check.
-fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
+pub(crate) fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
     if scale == f64::INFINITY {
         return Ok(None);
     }

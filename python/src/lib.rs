@@ -14,6 +14,7 @@ mod convert;
 mod errors;
 mod jobs;
 mod pool;
+mod signals;
 mod worker;
 
 /// Every key of a case file: `[{key, unit, valid, doc, default}]` (docs/CONFIG.md).
@@ -57,6 +58,9 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jobs::calibrate, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::predict, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::predict_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::signals, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::dataset, m)?)?;
+    m.add_function(wrap_pyfunction!(signals::dataset_merge, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::_time_rust_dynamics, m)?)?;
     m.add_function(wrap_pyfunction!(worker::_running_jobs, m)?)?;
     Ok(())

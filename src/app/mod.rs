@@ -19,6 +19,9 @@
 //! | [`CalibrateJob`] | posterior of the wear coefficient given observations | [`Outcome`] |
 //! | [`PredictJob`] | Monte Carlo prediction of wear, vibration and remaining life | [`Outcome`] |
 //! | [`PredictMergeJob`] | the shards of a prediction joined | [`Outcome`] |
+//! | [`SignalsJob`] | one record of what a sensor sees, its indicators and figures | [`Outcome`] |
+//! | [`DatasetJob`] | a labelled dataset from a study design (sharded, resumable) | [`Outcome`] |
+//! | [`DatasetMergeJob`] | the shards of a dataset joined | [`Outcome`] |
 //!
 //! Every job implements [`Job`]: `run(&self, &dyn Observer)`. A job is plain data (its
 //! validated case and typed options), `Send + Sync`, so a front end may run it on any
@@ -34,6 +37,10 @@
 pub mod budget;
 pub mod calibrate;
 pub mod checkpoints;
+pub mod dataset;
+pub mod dataset_dir;
+pub mod duty;
+pub mod duty_runs;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;
@@ -42,11 +49,13 @@ pub mod predict;
 pub mod predict_merge;
 pub mod publish;
 pub mod run;
+pub mod signals;
 pub mod stiffness;
 pub mod sweep;
 pub mod wear;
 
 pub use calibrate::{CalibrateJob, CalibrationOptions};
+pub use dataset::{DatasetJob, DatasetMergeJob, DesignSource};
 pub use dynamics::{DynamicsJob, TransmissionErrorSource};
 pub use error::JobError;
 pub use inputs::TableSource;
@@ -54,6 +63,7 @@ pub use observer::{Observer, Task, Unit};
 pub use predict::{ForwardModel, PredictJob, PredictOptions};
 pub use predict_merge::PredictMergeJob;
 pub use run::RunJob;
+pub use signals::{SignalsJob, TransferPathSource};
 pub use stiffness::StiffnessJob;
 pub use sweep::{SweepJob, SweepMergeJob, SweepOutput};
 pub use wear::WearJob;
@@ -122,4 +132,7 @@ const _: () = {
     assert_send_sync::<CalibrateJob>();
     assert_send_sync::<PredictJob>();
     assert_send_sync::<PredictMergeJob>();
+    assert_send_sync::<SignalsJob>();
+    assert_send_sync::<DatasetJob>();
+    assert_send_sync::<DatasetMergeJob>();
 };

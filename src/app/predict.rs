@@ -235,7 +235,7 @@ impl Job for PredictJob {
         };
         let fw = match &sur {
             Some(s) => Forward::Surrogate(s),
-            None => Forward::Exact(case),
+            None => Forward::Exact(case, None),
         };
         let ids = shard.ids(n);
         observer.note(&format!(

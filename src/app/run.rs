@@ -35,6 +35,10 @@ impl Job for RunJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
+        if self.case.load_spectrum.is_some() {
+            let out = (self.out.as_deref(), self.resume, self.replace);
+            return super::duty::run_under_spectrum(self.name(), &self.case, out, observer);
+        }
         let model = build_model(&self.case, observer)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let modes = [WearMode::Dynamic, WearMode::QuasiStatic];

@@ -42,6 +42,16 @@ impl Job for WearJob {
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),
         };
         budget::check(&self.case, cost, self.budget.as_ref())?;
+        if self.case.load_spectrum.is_some() {
+            let out = (self.out.as_deref(), self.resume, self.replace);
+            return super::duty::wear_under_spectrum(
+                self.name(),
+                &self.case,
+                &self.modes,
+                out,
+                observer,
+            );
+        }
         let model = build_model(&self.case, observer)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let runs = run_modes(
@@ -107,15 +117,7 @@ pub fn run_modes<T>(
         None => None,
     };
     let root = dir.as_ref().map(|d| d.root().to_path_buf());
-    let tasks: Vec<Task> = modes
-        .iter()
-        .map(|m| Task {
-            id: m.name(),
-            label: m.label(),
-            total: model.case.wear.total_cycles,
-            unit: Unit::Cycles,
-        })
-        .collect();
+    let tasks = mode_tasks(modes, model.case.wear.total_cycles);
     for t in &tasks {
         observer.start(t);
     }
@@ -124,13 +126,8 @@ pub fn run_modes<T>(
             logs.record(run)?;
             observer.checkpoint(&root.join(checkpoint_name(mode)));
         }
-        if let (Some(t), Some(r)) = (tasks.iter().find(|t| t.id == mode.name()), run.last()) {
-            let status = format!(
-                "{} updates, max pinion wear {:.3} um",
-                run.records.len() - 1,
-                r.wear.max_pinion_m() * 1e6
-            );
-            observer.advance(t, r.wear.cycles, &status);
+        if let Some(r) = run.last() {
+            report_update(observer, &tasks, mode, run.records.len() - 1, &r.wear);
         }
         keep_going(observer)
     };
@@ -143,6 +140,36 @@ pub fn run_modes<T>(
         runs: result?,
         out: dir,
     })
+}
+
+/// A progress task per wear mode, in load cycles up to `total`.
+pub fn mode_tasks(modes: &[WearMode], total: f64) -> Vec<Task> {
+    modes
+        .iter()
+        .map(|m| Task {
+            id: m.name(),
+            label: m.label(),
+            total,
+            unit: Unit::Cycles,
+        })
+        .collect()
+}
+
+/// Progress of `mode`'s run: `updates` made, now at `wear`.
+pub fn report_update(
+    observer: &dyn Observer,
+    tasks: &[Task],
+    mode: WearMode,
+    updates: usize,
+    wear: &crate::wear::WearState,
+) {
+    if let Some(t) = tasks.iter().find(|t| t.id == mode.name()) {
+        let status = format!(
+            "{updates} updates, max pinion wear {:.3} um",
+            wear.max_pinion_m() * 1e6
+        );
+        observer.advance(t, wear.cycles, &status);
+    }
 }
 
 /// Tell `observer` about every wear run that stopped early (its outputs are written up to

@@ -1,6 +1,6 @@
 //! Command-line arguments (clap derive).
 
-use crate::config::{load_case, Case};
+use crate::config::{load_case_in, Case};
 use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -58,6 +58,14 @@ pub enum Command {
     Stiffness(StiffnessArgs),
     /// One steady-state evaluation of the 8-DOF tribo-dynamic model.
     Dynamics(DynamicsArgs),
+    /// One record of what a sensor sees: housing accelerations at named sensors and a
+    /// tachometer, with condition indicators and figures.
+    Signals(super::signals_args::SignalsArgs),
+    /// A labelled dataset from a study design: run-to-failure states, fault conditions,
+    /// speeds, loads and noise realisations, one record each (shardable, resumable).
+    Dataset(super::signals_args::DatasetArgs),
+    /// Join the shards of a dataset into one, with its index and metadata.
+    DatasetMerge(super::signals_args::DatasetMergeArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
     /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).
@@ -98,9 +106,15 @@ impl CaseArgs {
         }
     }
 
-    /// Read, merge and validate the case.
+    /// Read, merge and validate the case; a relative `load_spectrum.file` is read from the
+    /// case file's folder.
     pub fn load(&self) -> Result<Case, CliError> {
-        Ok(load_case(&self.text()?, &self.set)?)
+        let dir = self
+            .config
+            .as_deref()
+            .and_then(std::path::Path::parent)
+            .unwrap_or(std::path::Path::new("."));
+        Ok(load_case_in(&self.text()?, &self.set, dir)?)
     }
 }
 

@@ -40,6 +40,8 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::NoBudget => "--no-budget",
         Arg::Inputs => "input",
         Arg::Replace => "--replace",
+        Arg::TransferPath => "--transfer-path",
+        Arg::Design => "--design",
     }
 }
 

@@ -21,12 +21,15 @@ macro_rules! eprintln {
 mod args;
 mod calibrate_cmd;
 mod config_cmd;
+mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
 mod output;
 mod predict_cmd;
 mod progress;
 mod run_cmd;
+mod signals_args;
+mod signals_cmd;
 mod stiffness_cmd;
 mod sweep_cmd;
 mod wear_cmd;
@@ -68,6 +71,9 @@ fn run(cli: &Cli) -> u8 {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a, budget),
         Command::Dynamics(a) => dynamics_cmd::run(a, budget),
+        Command::Signals(a) => signals_cmd::run(a, budget),
+        Command::Dataset(a) => dataset_cmd::run(a, budget),
+        Command::DatasetMerge(a) => dataset_cmd::merge(a),
         Command::Wear(a) => wear_cmd::run(a, budget),
         Command::Run(a) => run_cmd::run(a, budget),
         Command::Sweep(a) => sweep_cmd::run(a, budget),

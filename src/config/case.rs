@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::signals::SignalsSection;
 pub use super::teeth::{
     FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
 };
@@ -33,6 +34,13 @@ pub struct Case {
     pub wear: WearSection,
     pub numerics: NumericsSection,
     pub calibration: CalibrationSection,
+    /// What a sensor records (`gearwear signals`, datasets); left out of a case's
+    /// serialisation while it holds the defaults.
+    #[serde(skip_serializing_if = "SignalsSection::is_default")]
+    pub signals: SignalsSection,
+    /// The duty cycle (issue 20); absent: the single operating point of `operating`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
     /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
     #[serde(skip_serializing_if = "TeethSection::is_empty")]
     pub teeth: TeethSection,
@@ -459,6 +467,28 @@ pub struct WearSection {
     pub total_cycles: f64,
     /// Points on each active profile.
     pub points_per_profile: i64,
+    /// Which flank geometry the contact sees as wear proceeds (absent: the involute's,
+    /// the paper's model).
+    #[serde(skip_serializing_if = "WornGeometry::is_involute")]
+    pub worn_geometry: WornGeometry,
+}
+
+/// The geometry of a worn flank the stiffness, the Hertz contact and the load sharing see
+/// (docs/MODEL.md, section 9, "Severe wear").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum WornGeometry {
+    /// The involute's (the paper's): wear only opens gaps.
+    #[default]
+    Involute,
+    /// The worn profile's: thinner teeth, the worn flank's curvature, loads by compression.
+    Worn,
+}
+
+impl WornGeometry {
+    pub fn is_involute(&self) -> bool {
+        *self == WornGeometry::Involute
+    }
 }
 
 impl Default for WearSection {
@@ -469,6 +499,7 @@ impl Default for WearSection {
             threshold_um: 0.5,
             total_cycles: 4e4,
             points_per_profile: 101,
+            worn_geometry: WornGeometry::Involute,
         }
     }
 }

@@ -15,10 +15,17 @@ fn absent_default(section: &str) -> &'static str {
 use toml::{Table, Value};
 
 fn tree_of(case: &Case) -> Table {
-    match Value::try_from(case) {
+    let mut t = match Value::try_from(case) {
         Ok(Value::Table(t)) => t,
         _ => Table::new(),
+    };
+    // A section left out of the serialisation while it holds its defaults is shown too.
+    if !t.contains_key("signals") {
+        if let Ok(v) = Value::try_from(&case.signals) {
+            t.insert("signals".into(), v);
+        }
     }
+    t
 }
 
 /// `case` as commented TOML under `header`: every key with its unit, meaning and range.
@@ -105,6 +112,18 @@ const FORM: &str = "\
 - `\"derived\"` is accepted by the hub bores and the pinion's and gear's masses and
   inertias: the model computes them from the geometry (`gearwear config --new-pair` prints
   a case that uses it; docs/MODEL.md, section 7).
+- `[load_spectrum]` (optional) gives the duty cycle as bins of torque, speed and share
+  instead of the single operating point (docs/DUTY_CYCLE.md):
+  `bins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, {torque_nm = 80, input_speed_hz = 45, share = 0.3}]`,
+  or `file = \"spectrum.csv\"` with a header of those names (a relative path is read from the
+  case file's folder). Per bin, `input_speed_rpm` may replace `input_speed_hz`
+  (Hz = rpm / 60) and `hours` may replace `share` (the cycles of bin i are 3600 h_i f_i,
+  its share h_i f_i / sum h_j f_j), the same choice at every bin. Torques are on
+  `load_spectrum.torque_shaft`; the shares must sum to 1 (within 1e-6), the hours to more
+  than 0; each bin's torque and speed, scales applied, must lie in the ranges of
+  `operating.load_torque_nm` and `operating.input_speed_hz`. A resolved case (every
+  `summary.json`) holds the bins inline, in Hz and shares. The studies that accumulate wear
+  use the spectrum; `stiffness` and `dynamics` use `[operating]`.
 - Beyond these ranges, a case is checked against its geometry (a bore inside the root
   circle, teeth that touch, a Hertz pressure below 10 GPa, a friction coefficient below 1,
   Sainsot's fitted range) and its cost against the run budget (`--budget-scale`, `--no-budget`;
@@ -117,7 +136,12 @@ const FORM: &str = "\
 
 /// `docs/CONFIG.md` body: how a case is written, and a table of every key.
 pub fn markdown_reference(case: &Case) -> String {
-    let tree = tree_of(case);
+    // The spectrum's scalar keys show their defaults (the section is absent by default).
+    let mut shown = case.clone();
+    if shown.load_spectrum.is_none() {
+        shown.load_spectrum = Some(super::LoadSpectrumSection::of_bins(Vec::new()));
+    }
+    let tree = tree_of(&shown);
     let mut out = String::from(
         "# Case file reference\n\n\
          Generated from `src/config/schema.rs` by `gearwear config --markdown`; \

@@ -136,7 +136,7 @@ fn as_number(v: &Value) -> Option<f64> {
 
 /// Bring `v` to the type `valid` wants (integers to floats for number keys, whole floats to
 /// integers for count keys), or say why it cannot be: Err(problem).
-fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
+pub(super) fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
     let wrong = |v: &Value| {
         format!(
             "`{path}` = {} is {}, expected {}",
@@ -179,7 +179,7 @@ fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
 }
 
 /// Check one (normalised) value against its spec.
-fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
+pub(super) fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
     let in_range = |r: Range| as_number(v).is_some_and(|x| r.contains(x));
     let ok = match valid {
         Valid::Num(r) => in_range(r),
@@ -288,6 +288,9 @@ fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String
     }
 }
 
+/// The section read apart by [`super::load_spectrum`].
+const LOAD_SPECTRUM: &str = "load_spectrum";
+
 /// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
 /// the key of the section's only table, made when there is none. With several tables
 /// the override cannot say which one it means.
@@ -360,6 +363,7 @@ fn check_relations(case: &Case, problems: &mut Vec<String>) {
             g.face_width_mm, g.module_mm
         ));
     }
+    problems.extend(super::signals::relation_problems(case));
 }
 
 /// Merge the overrides (`section.key=value` texts) into the user's tree.
@@ -442,8 +446,20 @@ fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result
 /// Build a case from TOML text (empty for the default) and overrides (`section.key=value`
 /// texts: the command line's `--set`).
 ///
-/// Returns every problem at once; the case is only returned when there is none.
+/// Returns every problem at once; the case is only returned when there is none. A
+/// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
+/// another).
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
+    load_case_in(toml_text, overrides, std::path::Path::new("."))
+}
+
+/// As [`load_case`], with the folder a relative `load_spectrum.file` is read from (the
+/// case file's own folder).
+pub fn load_case_in(
+    toml_text: &str,
+    overrides: &[String],
+    dir: &std::path::Path,
+) -> Result<Case, ConfigError> {
     let mut user: Table = toml::from_str(toml_text).map_err(|e| {
         ConfigError::one(format!(
             "case file is not valid TOML{}",
@@ -455,11 +471,12 @@ pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigEr
     if !problems.is_empty() {
         // Check the keys too, so every problem is reported at once.
         let mut more = Vec::new();
+        spectrum_section(&mut user, dir, &mut more);
         check_keys(&mut user, &mut more);
         problems.extend(more.into_iter().map(Words::from));
         return Err(ConfigError { problems });
     }
-    validate(user)
+    validate(user, dir)
 }
 
 /// The case `base` with the typed `values` set (key, value as an override reads it),
@@ -480,22 +497,36 @@ pub fn case_with(base: &Case, values: &[(&str, Value)]) -> Result<Case, ConfigEr
         }
         set_value(&mut user, section, k, value.clone()).map_err(ConfigError::one)?;
     }
-    validate(user)
+    // A resolved case holds its spectrum's bins inline: no file to read.
+    validate(user, std::path::Path::new("."))
+}
+
+/// The `[load_spectrum]` section taken out of `user` and read: its bins are tables or a
+/// file, not schema keys.
+fn spectrum_section(
+    user: &mut Table,
+    dir: &std::path::Path,
+    problems: &mut Vec<String>,
+) -> Option<super::load_spectrum::LoadSpectrumSection> {
+    user.remove(LOAD_SPECTRUM)
+        .and_then(|v| super::load_spectrum::parse_section(v, dir, problems))
 }
 
 /// Key, type and range checks of a tree, then the case and the checks across keys.
-fn validate(mut user: Table) -> Result<Case, ConfigError> {
+fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError> {
     let mut problems = Vec::new();
+    let spectrum = spectrum_section(&mut user, dir, &mut problems);
     check_keys(&mut user, &mut problems);
     speed_in_rpm(&mut user, &mut problems);
     if !problems.is_empty() {
         return Err(ConfigError::of(problems));
     }
-    let case: Case = Value::Table(user)
+    let mut case: Case = Value::Table(user)
         .try_into()
         .map_err(|e: toml::de::Error| {
             ConfigError::one(format!("case file{}", toml_error(&e, "")))
         })?;
+    case.load_spectrum = spectrum;
     check_relations(&case, &mut problems);
     if problems.is_empty() {
         Ok(case)
@@ -555,6 +586,7 @@ pub fn check_all_ranges(case: &Case) -> Vec<String> {
         }
     }
     check_relations(case, &mut problems);
+    problems.extend(super::load_spectrum::spectrum_problems(case));
     problems
 }
 

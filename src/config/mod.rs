@@ -4,11 +4,14 @@ pub mod case;
 pub mod derivable;
 mod docs;
 pub mod load;
+pub mod load_spectrum;
 pub mod problem;
 pub mod schema;
+pub mod signals;
 pub mod teeth;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};
-pub use load::{load_case, ConfigError};
+pub use load::{load_case, load_case_in, ConfigError};
+pub use load_spectrum::{LoadSpectrumSection, SpectrumBin};
 pub use problem::Problem;

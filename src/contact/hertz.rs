@@ -83,7 +83,17 @@ impl HertzContact {
         rho2_m: f64,
         e_star_pa: f64,
     ) -> Self {
-        let radius = effective_radius_m(rho1_m, rho2_m);
+        Self::with_radius(
+            load_n,
+            face_width_m,
+            effective_radius_m(rho1_m, rho2_m),
+            e_star_pa,
+        )
+    }
+
+    /// As [`HertzContact::with_modulus`] with the effective radius `radius` (m) given:
+    /// flanks that are no longer involutes (worn), whose curvature is not 1/rho.
+    pub fn with_radius(load_n: f64, face_width_m: f64, radius: f64, e_star_pa: f64) -> Self {
         let w = load_n / face_width_m; // N/m
         let e_star = e_star_pa;
         if !(w > 0.0 && w.is_finite() && radius > 0.0 && e_star > 0.0 && e_star.is_finite()) {

@@ -4,3 +4,4 @@ pub mod friction;
 pub mod hertz;
 pub mod kinematics;
 pub mod load_sharing;
+pub mod worn_curvature;

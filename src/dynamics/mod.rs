@@ -2,6 +2,7 @@
 //! quasi-static twin, signals and modes.
 
 pub mod damped_modes;
+pub mod drive;
 pub mod excitation;
 pub mod grid;
 pub mod hunting;
@@ -18,3 +19,4 @@ pub mod spectrum;
 pub mod steady;
 pub mod summary;
 pub mod tooth_mesh;
+pub mod transient;

@@ -19,6 +19,7 @@
 //! friction power -sum f_i u_s,i is never positive. Torques: pinion -r_pb F - sum rho1_i f_i,
 //! gear +r_gb F + sum rho2_i f_i (eq. 3-4, radii of curvature as lever arms).
 
+use super::drive::Drive;
 use super::excitation::{ExternalError, PairGap};
 use super::params::DynamicParams;
 use super::tooth_mesh::ToothMesh;
@@ -93,6 +94,8 @@ pub struct MeshState {
     pub cycle: [i64; MAX_PAIRS],
     /// Share of the face width missing from each pair's contact line (a spall).
     pub width_loss: [f64; MAX_PAIRS],
+    /// Change of each pair's Hertz 1/R by its flanks' wear, 1/m (severe wear).
+    pub curvature_change: [f64; MAX_PAIRS],
 }
 
 /// The elastic part of the mesh at one instant ([`GearSystem::springs`]).
@@ -118,6 +121,7 @@ pub struct MeshSprings {
     /// Mesh cycle of each pair and the share of its face width lost (tooth-resolved).
     pub cycle: [i64; MAX_PAIRS],
     pub width_loss: [f64; MAX_PAIRS],
+    pub curvature_change: [f64; MAX_PAIRS],
 }
 
 /// The inputs a [`GearSystem`] is assembled from (borrowed model objects and the
@@ -142,6 +146,15 @@ pub struct GearSystemParts<'a> {
     pub teeth: Option<&'a ToothMesh>,
 }
 
+/// Effective radius (m) of a contact whose flanks' curvature changed by `dk` (1/m) from
+/// the involutes' 1/rho1 + 1/rho2 (severe wear, `contact::worn_curvature`). A worn flank
+/// that turns conformal has no Hertz line contact: 1/R is kept at least a tenth of the
+/// involutes' (the radius at most ten times theirs; docs/MODEL.md, section 9).
+fn worn_radius(rho1: f64, rho2: f64, dk: f64) -> f64 {
+    let k0 = 1.0 / rho1 + 1.0 / rho2;
+    1.0 / (k0 + dk).max(0.1 * k0)
+}
+
 /// The assembled model: immutable inputs for one dynamic evaluation. It holds no
 /// evaluation state: how the contact is decided travels with each call as a
 /// [`ContactFrame`], so one system may be shared between threads.
@@ -159,6 +172,9 @@ pub struct GearSystem<'a> {
     q_ext: SVector<f64, NDOF>,
     /// sin and cos of the operating pressure angle.
     sin_cos_phi: (f64, f64),
+    /// A time-varying nominal speed and load (transient simulations), or None for the
+    /// constant operating point of `params`.
+    drive: Option<&'a Drive>,
 }
 
 // The system is shared read-only (e.g. by parallel studies): it must stay Send + Sync.
@@ -271,6 +287,41 @@ impl<'a> GearSystem<'a> {
             grad,
             q_ext,
             sin_cos_phi: (s, co),
+            drive: None,
+        }
+    }
+
+    /// The same system driven by `drive` (`dynamics::drive`): nominal speed ramp and load
+    /// fluctuation. The steady-state solvers use systems without a drive.
+    pub fn with_drive(mut self, drive: &'a Drive) -> Self {
+        self.drive = Some(drive);
+        self
+    }
+
+    /// Run-out of a tooth-resolved mesh at time t (`ToothMesh::runout_at`, which follows
+    /// the constant operating speed): under a drive, at the time the constant speed
+    /// reaches the drive's angle, its rate scaled by the drive's speed.
+    fn runout_at(&self, tm: &ToothMesh, t_s: f64) -> (f64, f64) {
+        match self.drive {
+            None => tm.runout_at(t_s),
+            Some(d) => {
+                let w = self.parts.params.pinion_speed_rad_s;
+                let (e, de) = tm.runout_at(d.angle(t_s) / w);
+                (e, de * d.speed(t_s) / w)
+            }
+        }
+    }
+
+    /// Nominal pinion and gear speeds at time t, rad/s.
+    #[inline]
+    pub fn nominal_speeds(&self, t_s: f64) -> (f64, f64) {
+        let p = self.parts.params;
+        match self.drive {
+            Some(d) => {
+                let w = d.speed(t_s);
+                (w, w * p.gear_speed_rad_s / p.pinion_speed_rad_s)
+            }
+            None => (p.pinion_speed_rad_s, p.gear_speed_rad_s),
         }
     }
 
@@ -296,7 +347,10 @@ impl<'a> GearSystem<'a> {
     /// time-varying-stiffness approximation (docs/MODEL.md).
     #[inline]
     pub fn phase_at(&self, t_s: f64) -> f64 {
-        self.parts.params.pinion_speed_rad_s * t_s
+        match self.drive {
+            Some(d) => d.angle(t_s),
+            None => self.parts.params.pinion_speed_rad_s * t_s,
+        }
     }
 
     /// The pairs in contact at time t and the force of their springs and damper, for
@@ -313,7 +367,7 @@ impl<'a> GearSystem<'a> {
             return self.springs_resolved(tm, frame, t_s, sp);
         }
         let phase = self.phase_at(t_s);
-        let omega_nom = self.parts.params.pinion_speed_rad_s;
+        let omega_nom = self.nominal_speeds(t_s).0;
         let rb1 = self.parts.pair.pinion.base_radius_m;
         let (e_ext, de_ext) = self.parts.external.at(phase);
         let frozen = frame.mode;
@@ -374,10 +428,10 @@ impl<'a> GearSystem<'a> {
         mut sp: MeshSprings,
     ) -> MeshSprings {
         let phase = self.phase_at(t_s);
-        let omega_nom = self.parts.params.pinion_speed_rad_s;
+        let omega_nom = self.nominal_speeds(t_s).0;
         let rb1 = self.parts.pair.pinion.base_radius_m;
         let (e_ext, de_ext) = self.parts.external.at(phase);
-        let (e_run, de_run) = tm.runout_at(t_s);
+        let (e_run, de_run) = self.runout_at(tm, t_s);
         let frozen = frame.mode;
         let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
         let cycle_now = self.parts.pair.mesh_cycle(decide);
@@ -396,6 +450,7 @@ impl<'a> GearSystem<'a> {
             sp.compression_m[n] = c;
             sp.cycle[n] = cycle;
             sp.width_loss[n] = pp.width_loss;
+            sp.curvature_change[n] = pp.curvature_change_per_m;
             if frozen.map_or(c > 0.0, |m| m.touches(n)) {
                 let k = pp.stiffness_n_per_m;
                 sp.touching[n] = true;
@@ -432,10 +487,12 @@ impl<'a> GearSystem<'a> {
             },
             cycle: sp.cycle,
             width_loss: sp.width_loss,
+            curvature_change: sp.curvature_change,
             ..MeshState::default()
         };
-        let omega_p = self.parts.params.pinion_speed_rad_s + v[PHI_P];
-        let omega_g = self.parts.params.gear_speed_rad_s + v[PHI_G];
+        let (nominal_p, nominal_g) = self.nominal_speeds(t_s);
+        let omega_p = nominal_p + v[PHI_P];
+        let omega_g = nominal_g + v[PHI_G];
         let stiffness_shares = (sp.elastic_n > 0.0).then(|| {
             let mut sh = [0.0; MAX_PAIRS];
             for i in (0..n).filter(|i| sp.touching[*i]) {
@@ -475,13 +532,12 @@ impl<'a> GearSystem<'a> {
             ms.load_n[i] = w;
             let rho1 = ms.rho1_m[i];
             let rho2 = self.parts.pair.rho_gear(rho1);
-            let hz = HertzContact::with_modulus(
-                w,
-                self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]),
-                rho1,
-                rho2,
-                self.parts.effective_modulus_pa,
-            );
+            let width = self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]);
+            let e_star = self.parts.effective_modulus_pa;
+            let hz = match ms.curvature_change[i] {
+                0.0 => HertzContact::with_modulus(w, width, rho1, rho2, e_star),
+                dk => HertzContact::with_radius(w, width, worn_radius(rho1, rho2, dk), e_star),
+            };
             ms.pressure_pa[i] = hz.max_pressure_pa;
             ms.half_width_m[i] = hz.half_width_m;
             let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);
@@ -536,6 +592,32 @@ impl<'a> GearSystem<'a> {
             dy[i] = v[i];
             dy[NDOF + i] = rhs[i] * self.inv_mass[i];
         }
+        if let Some(d) = self.drive {
+            self.add_drive(d, t_s, &mut dy);
+        }
         (dy, ms)
+    }
+
+    /// The drive's terms in dy/dt (`dynamics::drive`): the nominal acceleration
+    /// -d^2 Theta/dt^2 on every free angle, and the load fluctuation on the shaft where
+    /// the load acts.
+    fn add_drive(&self, d: &Drive, t_s: f64, dy: &mut State) {
+        use dof::*;
+        let p = self.parts.params;
+        let ratio = p.gear_speed_rad_s / p.pinion_speed_rad_s;
+        let a = d.accel(t_s);
+        for (i, r) in [(PHI_M, 1.0), (PHI_P, 1.0), (PHI_G, ratio), (PHI_B, ratio)] {
+            if self.inv_mass[i] > 0.0 {
+                dy[NDOF + i] -= a * r;
+            }
+        }
+        let dt = d.torque_at(t_s);
+        if dt != 0.0 {
+            if p.speed_boundary == SpeedBoundary::BrakeSpeedImposed {
+                dy[NDOF + PHI_M] += dt * self.inv_mass[PHI_M];
+            } else {
+                dy[NDOF + PHI_B] -= dt * self.inv_mass[PHI_B];
+            }
+        }
     }
 }

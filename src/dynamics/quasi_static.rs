@@ -85,6 +85,7 @@ pub fn equilibrium_in_cycle(
                 gap[n] = pp.gap_m - e_ext - e_run;
                 ms.cycle[n] = cycle;
                 ms.width_loss[n] = pp.width_loss;
+                ms.curvature_change[n] = pp.curvature_change_per_m;
             }
         }
         ms.stiffness_n_per_m[n] = k[n];

@@ -44,6 +44,9 @@ pub struct ToothFlank {
     /// A broken tip: the pinion rho1 beyond which this tooth makes no contact (pinion:
     /// rho1 above it; gear: rho1 below it, its own tip side), m.
     pub contact_limit_rho1_m: Option<f64>,
+    /// Change of the flank's curvature by its wear at each grid point, 1/m (severe wear,
+    /// `wear.worn_geometry = "worn"`; None: the involute's).
+    pub curvature_change_per_m: Option<Vec<f64>>,
 }
 
 /// Run-out of one gear: eccentricity (m along the line of action) turning with the shaft.
@@ -80,6 +83,8 @@ pub struct PairProps {
     pub gap_slope: f64,
     /// Share of the face width missing from the contact line.
     pub width_loss: f64,
+    /// Change of 1/R of the Hertz contact by the flanks' wear, 1/m (0: involutes).
+    pub curvature_change_per_m: f64,
     pub pinion_tooth: usize,
     pub gear_tooth: usize,
 }
@@ -197,12 +202,16 @@ impl ToothMesh {
         let slope = (rp[i + 1] - rp[i] + rg[i + 1] - rg[i]) / self.spacing_m;
         let mut compliance = 0.0;
         let mut width_loss = 0.0;
+        let mut curvature = 0.0;
         for f in [fp, fg] {
             if let Some(c) = &f.compliance_m_per_n {
                 compliance += lerp(c);
             }
             if let Some(l) = &f.width_loss {
                 width_loss += lerp(l);
+            }
+            if let Some(k) = &f.curvature_change_per_m {
+                curvature += lerp(k);
             }
         }
         let k0 = mesh.pair_stiffness_n_per_m(rho1_m);
@@ -222,6 +231,7 @@ impl ToothMesh {
             gap_m: gap,
             gap_slope: if cut { 0.0 } else { slope },
             width_loss: width_loss.clamp(0.0, 0.95),
+            curvature_change_per_m: curvature,
             pinion_tooth: a,
             gear_tooth: b,
         }

@@ -48,7 +48,15 @@ pub fn checkpoint_name(mode: WearMode) -> String {
 
 /// File name of a mode's checkpoint while its run is in progress.
 pub fn partial_checkpoint_name(mode: WearMode) -> String {
-    format!("checkpoint_{}.partial.jsonl", mode.name())
+    partial_of(&checkpoint_name(mode))
+}
+
+/// The name a checkpoint `NAME.jsonl` has while its run goes on: `NAME.partial.jsonl`.
+pub fn partial_of(name: &str) -> String {
+    match name.strip_suffix(".jsonl") {
+        Some(stem) => format!("{stem}.partial.jsonl"),
+        None => format!("{name}.partial"),
+    }
 }
 
 /// Whether `bytes` begin like a gearwear checkpoint (its header line), so a file at a
@@ -184,7 +192,18 @@ pub fn load_checkpoint(
     case_sha256: &str,
     max_bytes: u64,
 ) -> Result<Option<LoadedCheckpoint>, CheckpointError> {
-    for rel in [partial_checkpoint_name(mode), checkpoint_name(mode)] {
+    load_checkpoint_named(out, &checkpoint_name(mode), mode, case_sha256, max_bytes)
+}
+
+/// As [`load_checkpoint`], for the checkpoint published as `name`.
+pub fn load_checkpoint_named(
+    out: &OutputDir,
+    name: &str,
+    mode: WearMode,
+    case_sha256: &str,
+    max_bytes: u64,
+) -> Result<Option<LoadedCheckpoint>, CheckpointError> {
+    for rel in [partial_of(name), name.to_owned()] {
         let source = out.root().join(&rel).display().to_string();
         let bytes = out
             .read_file(&rel, max_bytes)
@@ -228,26 +247,34 @@ impl CheckpointLog {
         case_sha256: &str,
         run: &WearRun,
     ) -> Result<Self, OutputError> {
-        let name = partial_checkpoint_name(run.mode);
+        let name = checkpoint_name(run.mode);
+        Self::create_named(out, &name, case_sha256, run)
+    }
+
+    /// As [`CheckpointLog::create`], for the checkpoint published as `name` (written as
+    /// its `.partial.jsonl` until the set is published).
+    pub fn create_named(
+        out: &mut OutputDir,
+        name: &str,
+        case_sha256: &str,
+        run: &WearRun,
+    ) -> Result<Self, OutputError> {
+        let partial = partial_of(name);
         let header = Header {
             format: FORMAT.into(),
             schema: SCHEMA,
             mode: run.mode,
             case_sha256: case_sha256.into(),
         };
-        let json = serde_json::to_string(&header)
-            .map_err(|e| OutputError::new("write", &out.root().join(&name), e.to_string(), None))?;
+        let json = serde_json::to_string(&header).map_err(|e| {
+            OutputError::new("write", &out.root().join(&partial), e.to_string(), None)
+        })?;
         let mut text = line_of(&json);
-        text.push_str(&lines_of(&run.records, &name)?);
-        let file = out.create_log(
-            &name,
-            Some(&checkpoint_name(run.mode)),
-            text.as_bytes(),
-            is_checkpoint,
-        )?;
+        text.push_str(&lines_of(&run.records, &partial)?);
+        let file = out.create_log(&partial, Some(name), text.as_bytes(), is_checkpoint)?;
         Ok(Self {
             file,
-            path: out.root().join(&name),
+            path: out.root().join(&partial),
             written: run.records.len(),
         })
     }

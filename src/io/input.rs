@@ -22,6 +22,13 @@ pub const MAX_OBSERVATIONS_BYTES: u64 = 64 << 20;
 pub const MAX_POSTERIOR_BYTES: u64 = 128 << 20;
 /// Largest transmission-error file: 1e6 samples of two numbers.
 pub const MAX_TRANSMISSION_ERROR_BYTES: u64 = 64 << 20;
+/// Largest transfer-path file (FRF table or modal TOML): 1e5 frequency lines of a few
+/// numbers.
+pub const MAX_TRANSFER_PATH_BYTES: u64 = 64 << 20;
+/// Largest load spectrum file (CSV of bins): 1e5 bins of a few numbers.
+pub const MAX_LOAD_SPECTRUM_BYTES: u64 = 64 << 20;
+/// Largest dataset design file (TOML).
+pub const MAX_DESIGN_BYTES: u64 = 16 << 20;
 /// Largest sweep case record (`cases/N.json`): one case's results and states, a few kB.
 pub const MAX_CASE_RECORD_BYTES: u64 = 16 << 20;
 /// Largest sweep table or its JSON (`sweep-merge` inputs): 1e6 cases of a few hundred

@@ -5,6 +5,7 @@
 
 pub mod checkpoint;
 pub mod checkpoint_set;
+pub mod columns_csv;
 pub mod console;
 pub mod dir;
 pub mod error;
@@ -12,10 +13,12 @@ pub mod input;
 pub mod lock;
 pub mod metadata;
 pub mod output_dir;
+pub mod parquet;
 pub mod runtime;
 pub mod set_state;
 pub mod sweep_inputs;
 pub mod table;
+pub mod transfer_path;
 pub mod transmission_error;
 
 pub use crate::format::format_number;

@@ -235,6 +235,11 @@ impl OutputDir {
         &self.root
     }
 
+    /// What gearwear recorded in the folder before this run (its outputs and state files).
+    pub fn previous_state(&self) -> &SetState {
+        &self.previous
+    }
+
     /// The command whose set the folder held before this run.
     pub fn previous_command(&self) -> &str {
         &self.previous.command

@@ -3,7 +3,7 @@
 
 use super::band::{cycles_grid, Band};
 use super::calibrate::Calibration;
-use super::forward::{run_trajectory, Crossing};
+use super::forward::{run_duty_trajectory, run_trajectory, Crossing};
 use super::observations::Observations;
 use super::predict::{PredictSettings, SampleOutcome, FAN_QUANTITIES};
 use super::prior::{apply, Theta, PARAMETERS};
@@ -175,7 +175,9 @@ pub fn check_prediction(
     picks
         .par_iter()
         .filter_map(|theta| {
-            let truth = run_trajectory(&apply(case, theta), None, set.cycles).ok()?;
+            let truth =
+                run_duty_trajectory(&apply(case, theta), sur.future.as_ref(), None, set.cycles)
+                    .ok()?;
             let max_abs_error = FAN_QUANTITIES
                 .iter()
                 .map(|q| {

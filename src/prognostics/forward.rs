@@ -16,6 +16,11 @@
 
 use super::quantity::Quantity;
 use crate::config::Case;
+use crate::config::LoadSpectrumSection;
+use crate::duty::contribution::combined_record;
+use crate::duty::life::first_crossing;
+use crate::duty::wear::{run_spectrum_wear, SpectrumRun};
+use crate::duty::SpectrumModel;
 use crate::study::model::{Model, ModelError};
 use crate::study::wear_loop::{run_wear, UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
@@ -92,35 +97,14 @@ impl Trajectory {
 
     /// Cycles at which the maximum pinion wear first reaches `limit_um`.
     pub fn cycles_to_wear(&self, limit_um: f64) -> Crossing {
-        let limit_m = limit_um * 1e-6;
-        let end = self.valid_until();
-        for (j, r) in self.records.iter().enumerate() {
-            let h = &r.wear.pinion_m;
-            if h.iter().any(|x| *x >= limit_m) {
-                return Crossing::Reached(r.wear.cycles);
-            }
-            let block_end = self.records.get(j + 1).map_or(end, |x| x.wear.cycles);
-            // First point to reach the limit: min over rising points of (L - h_i) / inc_i.
-            let t = h
-                .iter()
-                .zip(&r.increment_pinion_m)
-                .filter(|(_, d)| **d > 0.0)
-                .map(|(a, d)| (limit_m - a) / d)
-                .fold(f64::INFINITY, f64::min);
-            if r.wear.cycles + t <= block_end {
-                return Crossing::Reached(r.wear.cycles + t);
-            }
-        }
-        if self.failure.is_some() {
-            Crossing::Unknown
-        } else {
-            Crossing::NotReached
+        match first_crossing(&self.records, self.valid_until(), limit_um * 1e-6) {
+            Some(c) => Crossing::Reached(c),
+            None if self.failure.is_some() => Crossing::Unknown,
+            None => Crossing::NotReached,
         }
     }
 }
 
-/// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
-/// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
 /// Why a wear run ended before its total cycles, if it did: an error, or an early stop
 /// (the solver gave up, or the teeth left the model's domain; [`WearRun::stopped`]).
 pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
@@ -130,8 +114,32 @@ pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
     }
 }
 
+/// A change of duty: from `from_cycles` on, the gearbox runs under `spectrum` instead of
+/// the case's own spectrum (or operating point), e.g. a heavier duty from next year.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FutureDuty {
+    pub from_cycles: f64,
+    pub spectrum: LoadSpectrumSection,
+}
+
+/// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
+/// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
+/// Under a load spectrum the records are the spectrum's ([`combined_record`]: its wear
+/// per cycle, the monitoring bin's response).
 pub fn run_trajectory(
     case: &Case,
+    block_cycles: Option<f64>,
+    total_cycles: f64,
+) -> Result<Trajectory, ModelError> {
+    run_duty_trajectory(case, None, block_cycles, total_cycles)
+}
+
+/// As [`run_trajectory`], the duty changing to `future` at its cycles: the run under the
+/// case's duty to there, then, from the worn state it reached, under the future
+/// spectrum (whose monitoring bin the response is read at from then on).
+pub fn run_duty_trajectory(
+    case: &Case,
+    future: Option<&FutureDuty>,
     block_cycles: Option<f64>,
     total_cycles: f64,
 ) -> Result<Trajectory, ModelError> {
@@ -140,20 +148,76 @@ pub fn run_trajectory(
     if let Some(b) = block_cycles {
         c.wear.block_cycles = b;
     }
-    let model = Model::from_case(&c)?;
-    let mut records: Vec<UpdateRecord> = Vec::new();
-    let result = run_wear(&model, WearRun::new(WearMode::Dynamic), &mut |run| {
-        if let Some(r) = run.records.last() {
-            records.push(r.clone());
-        }
-        Ok(())
-    });
-    Ok(Trajectory {
+    let traj = |records, failure| Trajectory {
         coefficient_m2_per_n: c.wear.coefficient_m2_per_n,
         requested_cycles: total_cycles,
         records,
-        failure: run_failure(result),
-    })
+        failure,
+    };
+    if future.is_none() && c.load_spectrum.is_none() {
+        let model = Model::from_case(&c)?;
+        let mut records: Vec<UpdateRecord> = Vec::new();
+        let result = run_wear(&model, WearRun::new(WearMode::Dynamic), &mut |run| {
+            if let Some(r) = run.records.last() {
+                records.push(r.clone());
+            }
+            Ok(())
+        });
+        return Ok(traj(records, run_failure(result)));
+    }
+    let switch = future.map_or(total_cycles, |f| f.from_cycles.clamp(0.0, total_cycles));
+    let mut now = c.clone();
+    now.wear.total_cycles = switch;
+    let sm = SpectrumModel::from_case(&now)?;
+    let mut records = Vec::new();
+    let first = SpectrumRun::new(WearMode::Dynamic, sm.shares.clone());
+    let (run, failure) = spectrum_records(&sm, first, &mut records);
+    let (Some(f), Some(run), None) = (future, run, &failure) else {
+        return Ok(traj(records, failure));
+    };
+    if switch >= total_cycles {
+        return Ok(traj(records, failure));
+    }
+    let mut then = c.clone();
+    then.load_spectrum = Some(f.spectrum.clone());
+    let sm = SpectrumModel::from_case(&then)?;
+    let state = run.last().map(|r| r.wear.clone()).unwrap_or_default();
+    // The record at the switch holds the new duty's response and wear rate.
+    records.pop();
+    let failure = match SpectrumRun::starting_at(&sm, WearMode::Dynamic, state) {
+        Ok(start) => spectrum_records(&sm, start, &mut records).1,
+        Err(e) => Some(format!("{e:#}")),
+    };
+    Ok(traj(records, failure))
+}
+
+/// Run `start` under `sm`, appending each new update to `records` as a single-point
+/// record; the run and why it ended early, if it did.
+fn spectrum_records(
+    sm: &SpectrumModel,
+    start: SpectrumRun,
+    records: &mut Vec<UpdateRecord>,
+) -> (Option<SpectrumRun>, Option<String>) {
+    let mut keep = |run: &SpectrumRun| {
+        if let Some(r) = run.records.last() {
+            if records.last().map(|x| x.wear.cycles) != Some(r.wear.cycles) {
+                records.push(combined_record(run, r, sm.monitoring));
+            }
+        }
+    };
+    // A run that starts from a given state has its first record already.
+    keep(&start);
+    let result = run_spectrum_wear(sm, start, &mut |run| {
+        keep(run);
+        Ok(())
+    });
+    match result {
+        Err(e) => (None, Some(format!("{e:#}"))),
+        Ok(run) => {
+            let stop = run.stopped.as_ref().map(|s| s.reason.clone());
+            (Some(run), stop)
+        }
+    }
 }
 
 #[cfg(test)]

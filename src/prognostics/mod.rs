@@ -28,6 +28,7 @@ pub mod rng;
 pub mod samples;
 pub mod stats;
 pub mod surrogate;
+mod surrogate_duty;
 
 pub use forward::{Crossing, Trajectory};
 pub use observations::{parse_observations, Observations};

@@ -3,7 +3,7 @@
 //! cycles at which the maximum pinion wear reaches a limit (remaining useful life).
 
 use super::band::{cycles_grid, Band};
-use super::forward::{run_trajectory, Crossing, Trajectory};
+use super::forward::{run_duty_trajectory, Crossing, FutureDuty, Trajectory};
 use super::prior::{apply, Prior, Theta};
 use super::quantity::Quantity;
 use super::rng;
@@ -66,8 +66,9 @@ impl SampleSource {
 /// The forward model of a prediction.
 pub enum Forward<'a> {
     Surrogate(&'a Surrogate),
-    /// One true wear study per sample (the case's block scheme).
-    Exact(&'a Case),
+    /// One true wear study per sample (the case's block scheme), following a change of
+    /// duty if one is given.
+    Exact(&'a Case, Option<&'a FutureDuty>),
 }
 
 /// What one sample predicts.
@@ -117,8 +118,9 @@ pub fn run_sample(
             });
             (life, vals, failure, until)
         }
-        Forward::Exact(case) => {
-            let t: Trajectory = run_trajectory(&apply(case, &theta), None, set.cycles)?;
+        Forward::Exact(case, future) => {
+            let t: Trajectory =
+                run_duty_trajectory(&apply(case, &theta), *future, None, set.cycles)?;
             let life = within(t.cycles_to_wear(set.limit_um), set.cycles);
             let vals = FAN_QUANTITIES
                 .iter()

@@ -207,12 +207,18 @@ impl Prior {
 }
 
 /// The case with the parameters applied: k, the roughness table times the factor, and
-/// the load torque.
+/// the load torque. Under a load spectrum the torque is a level relative to the
+/// operating torque: every bin's torque is scaled by T / `operating.load_torque_nm`.
 pub fn apply(case: &Case, theta: &Theta) -> Case {
     let mut c = case.clone();
     c.wear.coefficient_m2_per_n = theta[0];
     for r in &mut c.surface.roughness_table_rms_um {
         *r *= theta[1];
+    }
+    if let Some(s) = c.load_spectrum.as_mut() {
+        if theta[2] != case.operating.load_torque_nm {
+            s.torque_scale *= theta[2] / case.operating.load_torque_nm;
+        }
     }
     c.operating.load_torque_nm = theta[2];
     c

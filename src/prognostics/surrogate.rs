@@ -17,11 +17,27 @@
 //! linearly in ln k. The error left against true runs is measured in
 //! docs/PROGNOSTICS.md and by `tests/prognostics.rs`.
 //!
+//! **A load spectrum.** Under a spectrum with fixed shares every bin's wear per cycle is
+//! proportional to k, so the spectrum's wear per cycle sum_i s_i inc_i is too, and the
+//! blocks are cut by the threshold on it: the invariance holds as it does for one
+//! operating point, N counting the spectrum's cycles (each bin's s_i N). A test checks it.
+//!
+//! **A change of duty** ([`FutureDuty`], a future spectrum from N0 cycles on) breaks it:
+//! the switch falls at the exposure k N0, which depends on k. So with a future duty every
+//! node of k is its own run (nothing stands for the larger k), on a finer grid
+//! ([`future_node_ratio`]), and the runs are read in two phases
+//! (`prognostics::surrogate_duty`): before the switch at the same exposure from the node
+//! at or above k (its switch comes later in exposure, so it is still in the first phase:
+//! exact by the invariance), after it at the same exposure since the switch, weighted
+//! linearly in k between the two nodes around it (they differ by their state at the
+//! switch, W(k_j N0), about linear in k). Checked against true runs by a test and by
+//! every `predict`.
+//!
 //! **Other parameters.** The roughness factor and the load torque have no such
 //! invariance: one chain of reference runs per node of a regular grid over them, and
 //! multilinear interpolation between nodes.
 
-use super::forward::{run_failure, run_trajectory, Crossing, Trajectory};
+use super::forward::{run_duty_trajectory, run_failure, Crossing, FutureDuty, Trajectory};
 use super::prior::{apply, Prior, Theta};
 use super::quantity::Quantity;
 use crate::config::Case;
@@ -32,6 +48,12 @@ use serde::{Deserialize, Serialize};
 
 /// Ratio of neighbouring reference wear coefficients in the block-limited range.
 pub const K_NODE_RATIO: f64 = 2.0;
+
+/// Ratio of neighbouring k nodes under a change of duty: 2^(1/4), or coarser so that a
+/// chain holds at most 17 runs (a prior-only prediction spans four decades).
+pub fn future_node_ratio(k_lo: f64, k_hi: f64) -> f64 {
+    2f64.powf(0.25).max((k_hi / k_lo).powf(1.0 / 16.0))
+}
 
 /// Most reference runs one chain over the prior of k can hold (k_hi / k_lo in steps of
 /// [`K_NODE_RATIO`], both ends included): a progress bar's length, chains usually stop
@@ -56,6 +78,9 @@ pub struct Surrogate {
     pub axes: Vec<(usize, Vec<f64>)>,
     /// One chain per node of the axes, row-major (first axis slowest).
     pub chains: Vec<Chain>,
+    /// The change of duty the runs follow, if any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub future: Option<FutureDuty>,
 }
 
 /// `n` evenly spaced values from lo to hi.
@@ -76,8 +101,12 @@ fn threshold_cut(t: &Trajectory, block_cycles: f64) -> bool {
             .all(|w| w[1] - w[0] < block_cycles)
 }
 
-/// Continue a run to `total` cycles (run_wear resumes from the records it is given).
+/// Continue a run to `total` cycles (run_wear resumes from the records it is given); a run
+/// under a spectrum is made again to `total`.
 fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelError> {
+    if case.load_spectrum.is_some() {
+        return run_duty_trajectory(case, None, None, total);
+    }
     let mut c = case.clone();
     c.wear.total_cycles = total;
     let model = Model::from_case(&c)?;
@@ -107,15 +136,24 @@ fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelEr
 /// chain does not depend on the thread count.
 fn chain(
     case: &Case,
+    future: Option<&FutureDuty>,
     theta: Theta,
     k_lo: f64,
     k_hi: f64,
     horizon: f64,
     done: &(dyn Fn() + Sync),
 ) -> Result<Chain, ModelError> {
+    let ratio = match future {
+        None => K_NODE_RATIO,
+        Some(_) => future_node_ratio(k_lo, k_hi),
+    };
     let mut ks = vec![k_lo];
-    while *ks.last().unwrap_or(&k_hi) * K_NODE_RATIO < k_hi * (1.0 - 1e-12) {
-        ks.push(ks[ks.len() - 1] * K_NODE_RATIO);
+    while *ks.last().unwrap_or(&k_hi) * ratio < k_hi * (1.0 - 1e-12) {
+        ks.push(ks[ks.len() - 1] * ratio);
+    }
+    if future.is_some() && k_hi > k_lo {
+        // Every node its own run, the last at k_hi.
+        ks.push(k_hi);
     }
     let block = case.wear.block_cycles;
     let batch = rayon::current_num_threads().max(1);
@@ -127,13 +165,13 @@ fn chain(
             .map(|i| {
                 let next = ks.get(i + 1).copied().unwrap_or(k_hi);
                 let t = [ks[i], theta[1], theta[2]];
-                let r = run_trajectory(&apply(case, &t), None, horizon * next / ks[i]);
+                let r = run_duty_trajectory(&apply(case, &t), future, None, horizon * next / ks[i]);
                 done();
                 r
             })
             .collect();
         for r in made? {
-            let last = r.failure.is_some() || threshold_cut(&r, block);
+            let last = future.is_none() && (r.failure.is_some() || threshold_cut(&r, block));
             runs.push(r);
             if last {
                 break 'outer;
@@ -154,12 +192,47 @@ fn chain(
     })
 }
 
+/// The first cycles in [lo, hi] where `wear` (non-decreasing, below `limit_um` at lo and
+/// at or above it at hi) reaches `limit_um`, by bisection to 1e-12 relative; Unknown
+/// where `wear` has no value.
+pub(super) fn bisect_crossing(
+    wear: &dyn Fn(f64) -> Option<f64>,
+    limit_um: f64,
+    mut lo: f64,
+    mut hi: f64,
+) -> Crossing {
+    for _ in 0..200 {
+        if hi - lo <= 1e-12 * hi.max(1.0) {
+            break;
+        }
+        let mid = 0.5 * (lo + hi);
+        match wear(mid) {
+            Some(v) if v >= limit_um => hi = mid,
+            Some(_) => lo = mid,
+            None => return Crossing::Unknown,
+        }
+    }
+    Crossing::Reached(hi)
+}
+
 impl Surrogate {
     /// Reference runs for the parameter ranges of `prior` (its bounds; fixed parameters
     /// stay fixed) up to `max_cycles` cycles at the largest k. `nodes_per_axis` chains per
     /// free parameter other than k; `done` is called after each run (progress).
     pub fn build(
         case: &Case,
+        prior: &Prior,
+        max_cycles: f64,
+        nodes_per_axis: usize,
+        done: &(dyn Fn() + Sync),
+    ) -> Result<Self, ModelError> {
+        Self::build_for_duty(case, None, prior, max_cycles, nodes_per_axis, done)
+    }
+
+    /// As [`Surrogate::build`], the runs following the change of duty `future`.
+    pub fn build_for_duty(
+        case: &Case,
+        future: Option<&FutureDuty>,
         prior: &Prior,
         max_cycles: f64,
         nodes_per_axis: usize,
@@ -190,11 +263,12 @@ impl Surrogate {
         let horizon = max_cycles.max(1.0);
         let chains: Result<Vec<Chain>, ModelError> = thetas
             .par_iter()
-            .map(|t| chain(case, *t, k.lo, k.hi, horizon, done))
+            .map(|t| chain(case, future, *t, k.lo, k.hi, horizon, done))
             .collect();
         Ok(Self {
             axes,
             chains: chains?,
+            future: future.cloned(),
         })
     }
 
@@ -218,7 +292,7 @@ impl Surrogate {
     }
 
     /// Reference runs and weights for `theta`: (chain, run, weight), weights > 0.
-    fn weights(&self, theta: &Theta) -> Vec<(usize, usize, f64)> {
+    pub(super) fn weights(&self, theta: &Theta) -> Vec<(usize, usize, f64)> {
         let mut st = vec![(0_usize, 1.0)];
         for (i, values) in &self.axes {
             let n = values.len();
@@ -240,7 +314,13 @@ impl Surrogate {
                 if j == 0 || j >= n {
                     return vec![(c, j.clamp(1, n) - 1, w)];
                 }
-                let t = ((k / ks[j - 1]).ln() / (ks[j] / ks[j - 1]).ln()).clamp(0.0, 1.0);
+                let t = match self.future {
+                    // After a change of duty the runs differ by the state at their switch,
+                    // W(k_j N0), about linear in k (module docs).
+                    Some(_) => (k - ks[j - 1]) / (ks[j] - ks[j - 1]),
+                    None => (k / ks[j - 1]).ln() / (ks[j] / ks[j - 1]).ln(),
+                }
+                .clamp(0.0, 1.0);
                 vec![(c, j - 1, w * (1.0 - t)), (c, j, w * t)]
             })
             .filter(|x| x.2 > 0.0)
@@ -254,6 +334,9 @@ impl Surrogate {
 
     /// Value of `q` at `cycles` for parameters `theta`; None beyond the reference runs.
     pub fn value(&self, q: Quantity, theta: &Theta, cycles: f64) -> Option<f64> {
+        if let Some(f) = &self.future {
+            return self.value_after_change(f, q, theta, cycles);
+        }
         self.weights(theta).iter().try_fold(0.0, |acc, (c, r, w)| {
             let (t, s) = self.run(*c, *r, theta[0]);
             Some(acc + w * t.value(q, cycles * s)?)
@@ -262,6 +345,9 @@ impl Surrogate {
 
     /// Cycles up to which the surrogate is known for `theta`.
     pub fn valid_until(&self, theta: &Theta) -> f64 {
+        if let Some(f) = &self.future {
+            return self.valid_until_after_change(f, theta);
+        }
         self.weights(theta)
             .iter()
             .map(|(c, r, _)| {
@@ -273,6 +359,9 @@ impl Surrogate {
 
     /// Cycles at which the maximum pinion wear reaches `limit_um`, for `theta`.
     pub fn cycles_to_wear(&self, theta: &Theta, limit_um: f64) -> Crossing {
+        if self.future.is_some() {
+            return self.cycles_to_wear_after_change(theta, limit_um);
+        }
         let w = self.weights(theta);
         let mapped = |(c, r, _): &(usize, usize, f64)| {
             let (t, s) = self.run(*c, *r, theta[0]);
@@ -294,8 +383,8 @@ impl Surrogate {
             })
             .collect();
         let first = reached.iter().copied().fold(f64::INFINITY, f64::min);
-        let mut lo = if first.is_finite() { first } else { 0.0 };
-        let mut hi = if reached.len() == crossings.len() {
+        let lo = if first.is_finite() { first } else { 0.0 };
+        let hi = if reached.len() == crossings.len() {
             reached.iter().copied().fold(0.0, f64::max)
         } else {
             let end = self.valid_until(theta);
@@ -306,18 +395,7 @@ impl Surrogate {
             }
         };
         // The weighted wear is non-decreasing in cycles (each run's is): bisection.
-        for _ in 0..200 {
-            if hi - lo <= 1e-12 * hi.max(1.0) {
-                break;
-            }
-            let mid = 0.5 * (lo + hi);
-            match wear(mid) {
-                Some(v) if v >= limit_um => hi = mid,
-                Some(_) => lo = mid,
-                None => return Crossing::Unknown,
-            }
-        }
-        Crossing::Reached(hi)
+        bisect_crossing(&wear, limit_um, lo, hi)
     }
 
     /// Largest |surrogate - true run| of `q` over `cycles` for `theta` (the true run made
@@ -352,6 +430,7 @@ mod tests {
         let s = Surrogate {
             axes: vec![(1, vec![0.5, 1.0, 1.5]), (2, vec![40.0, 80.0])],
             chains: (0..6).map(|_| empty_chain(vec![1.0])).collect(),
+            future: None,
         };
         let w = s.weights(&[1.0, 0.75, 50.0]);
         // Halfway between nodes 0 and 1 of the first axis, a quarter of the way along the
@@ -371,6 +450,7 @@ mod tests {
         let s = Surrogate {
             axes: vec![],
             chains: vec![empty_chain(vec![1.0, 2.0, 4.0])],
+            future: None,
         };
         // sqrt(2) is halfway between 1 and 2 in ln k; above the last node: the last run.
         let w = s.weights(&[2f64.sqrt(), 1.0, 1.0]);

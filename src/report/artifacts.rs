@@ -105,6 +105,49 @@ impl Artifacts {
     }
 }
 
+/// A figure of a report: its file stem, the figure, the table of exactly its data, and
+/// its caption.
+pub struct EmbeddedFigure {
+    pub stem: String,
+    pub figure: Figure,
+    pub table: Table,
+    pub caption: String,
+}
+
+/// Render `figs` once (in parallel) and add each to `a` as `STEM.png` with its data at
+/// `csv/STEM.csv`; the blocks that embed the same bytes in a report, in order.
+pub fn embed_figures(
+    a: &mut Artifacts,
+    figs: Vec<EmbeddedFigure>,
+) -> Vec<super::html::FigureBlock> {
+    let mut files: Vec<FigureFile> = figs
+        .iter()
+        .map(|f| FigureFile {
+            path: format!("{}.png", f.stem),
+            figure: f.figure.clone(),
+            width_px: PLOT_W,
+            height_px: plot_height(f.figure.panels.len()),
+            data: Some(format!("csv/{}.csv", f.stem)),
+            png: None,
+        })
+        .collect();
+    let pngs = render_figures(&files).unwrap_or_default();
+    let mut blocks = Vec::new();
+    for (i, (f, file)) in figs.into_iter().zip(files.iter_mut()).enumerate() {
+        let png = pngs.get(i).cloned().unwrap_or_default();
+        file.png = Some(png.clone());
+        let csv = format!("csv/{}.csv", f.stem);
+        a.table(csv.clone(), f.table);
+        blocks.push(super::html::FigureBlock {
+            caption: f.caption,
+            png,
+            csv_name: Some(csv),
+        });
+    }
+    a.figures.extend(files);
+    blocks
+}
+
 /// Why artifacts could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum WriteError {

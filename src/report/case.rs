@@ -74,6 +74,10 @@ pub fn paper_case_differences(case: &Case) -> Vec<String> {
     if centre.is_some_and(|c| !same(c, PAPER_CENTRE_DISTANCE_MM)) {
         out.push("gear.centre_distance_mm".into());
     }
+    // The paper runs one operating point.
+    if case.load_spectrum.is_some() {
+        out.push("load_spectrum".into());
+    }
     out
 }
 

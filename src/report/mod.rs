@@ -4,6 +4,8 @@
 pub mod artifacts;
 pub mod case;
 pub mod comparison;
+pub mod duty;
+pub mod duty_figures;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
@@ -13,6 +15,8 @@ pub mod plot;
 pub mod prognostics;
 pub mod prognostics_tables;
 pub mod run_report;
+pub mod runup;
+pub mod signals;
 pub mod stiffness;
 pub mod sweep_figure;
 pub mod teeth;

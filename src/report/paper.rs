@@ -3,11 +3,11 @@
 //! paper comparison appears only when the case is the paper's (`case::is_paper_case`);
 //! otherwise a summary of the case that was run takes its place (`run_report`).
 
-use super::artifacts::{plot_height, render_figures, Artifacts, FigureFile, PLOT_W};
+use super::artifacts::{embed_figures, Artifacts, EmbeddedFigure};
 use super::case::{case_json, is_paper_case, paper_case_differences};
 use super::comparison::{compare, comparison_json};
 use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve};
-use super::html::{self, FigureBlock};
+use super::html;
 use super::plot::{Figure, LineStyle};
 use super::run_report::{build_report, case_headline, comparison_headline, results_json};
 use super::stiffness::{figure2, stiffness_table};
@@ -219,7 +219,20 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
 /// wear-study tables, `summary.json` and `report.html`. `meta` is stamped on the summary and
 /// the report footer.
 pub fn run_artifacts(model: &Model, study: &PaperStudy, meta: &RunMetadata) -> Artifacts {
-    let paper = is_paper_case(&model.case);
+    let (mut a, report) = run_artifacts_and_report(model, study, meta, is_paper_case(&model.case));
+    a.documents
+        .push(("report.html".into(), html::render(&report).into_bytes()));
+    a
+}
+
+/// [`run_artifacts`] with the report not yet rendered (a caller may add sections);
+/// `paper`: whether the results are set beside the paper's.
+pub fn run_artifacts_and_report(
+    model: &Model,
+    study: &PaperStudy,
+    meta: &RunMetadata,
+    paper: bool,
+) -> (Artifacts, html::Report) {
     let (st_table, st_json) = stiffness_table(model);
     let figs = run_figures(model, study, st_table);
     let mut a = Artifacts::default();
@@ -228,35 +241,20 @@ pub fn run_artifacts(model: &Model, study: &PaperStudy, meta: &RunMetadata) -> A
             a.table(format!("csv/{name}"), t);
         }
     }
-    let mut files: Vec<FigureFile> = figs
-        .iter()
-        .map(|f| FigureFile {
-            path: format!("{}.png", f.file),
-            figure: f.figure.clone(),
-            width_px: PLOT_W,
-            height_px: plot_height(f.figure.panels.len()),
-            data: Some(format!("csv/{}.csv", f.file)),
-            png: None,
-        })
-        .collect();
-    // Rendered once: embedded in the report and written as files.
-    let pngs = render_figures(&files).unwrap_or_default();
-    let mut blocks = Vec::new();
-    for (i, (f, file)) in figs.iter().zip(files.iter_mut()).enumerate() {
-        let png = pngs.get(i).cloned().unwrap_or_default();
-        file.png = Some(png.clone());
-        a.table(format!("csv/{}.csv", f.file), f.table.clone());
-        let caption = match paper {
-            true => format!("{} (paper Fig. {}).", f.caption, f.paper_figure),
-            false => format!("{}.", f.caption),
-        };
-        blocks.push(FigureBlock {
-            caption,
-            png,
-            csv_name: Some(format!("csv/{}.csv", f.file)),
-        });
-    }
-    a.figures = files;
+    let blocks = embed_figures(
+        &mut a,
+        figs.into_iter()
+            .map(|f| EmbeddedFigure {
+                caption: match paper {
+                    true => format!("{} (paper Fig. {}).", f.caption, f.paper_figure),
+                    false => format!("{}.", f.caption),
+                },
+                stem: f.file.to_string(),
+                figure: f.figure,
+                table: f.table,
+            })
+            .collect(),
+    );
     let mut summary = json!({
         "paper_case": paper,
         "stiffness": st_json,
@@ -293,8 +291,6 @@ pub fn run_artifacts(model: &Model, study: &PaperStudy, meta: &RunMetadata) -> A
     }
     summary["metadata"] = serde_json::to_value(meta).unwrap_or_default();
     let report = build_report(model, study, &rows, blocks, meta);
-    a.documents
-        .push(("report.html".into(), html::render(&report).into_bytes()));
     a.summary = summary;
-    a
+    (a, report)
 }

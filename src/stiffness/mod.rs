@@ -7,3 +7,4 @@ pub mod iso6336;
 pub mod mesh;
 pub mod potential_energy;
 pub mod tooth_faults;
+pub mod worn_tooth;

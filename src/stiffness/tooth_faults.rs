@@ -20,10 +20,12 @@
 //! compliance is continuous in q. The crack's own height (q cos nu) is not modelled,
 //! as in the sources: the section is reduced from the root up. At q = 0 the section is
 //! the uncracked one, so the compliance is exactly the healthy tooth's.
-//!   Partial face width (Chen & Shao 2011): a crack that has run across a share w of the
-//! face from one side, its depth falling as q(z) = q sqrt(1 - z / (w b)) towards its
-//! front; the face's slices act in parallel, k = (1/b) int k_slice(q(z)) dz
-//! = (1 - w) k(0) + w int_0^1 k(q sqrt(1 - s)) ds (8-point Gauss-Legendre in s).
+//!   Partial face width: the face cut into slices that act in parallel, each with the
+//! crack depth it has (Chen & Shao 2011), k = (1/b) int k_slice(q(z)) dz. A crack that
+//! has run at its depth q across a share w of the face from one side gives
+//! k = (1 - w) k(0) + w k(q), continuous into the through crack at w = 1 (Chen & Shao
+//! also let the depth fall towards the crack front; a uniform depth over the covered
+//! width keeps one depth per crack, as the case file gives it).
 //!
 //! **Spall** (Saxena, Parey & Chouksey, Eng. Fail. Anal. 70 (2016) 200; Ma et al.,
 //! Mech. Syst. Signal Process. 2015 review): a pit of depth d over a share f of the face
@@ -86,12 +88,6 @@ fn cracked_beam_compliance(
     .total_m_per_n()
 }
 
-/// 8-point Gauss-Legendre rule for the face-width integral.
-fn width_rule() -> &'static GaussLegendre {
-    static RULE: std::sync::OnceLock<GaussLegendre> = std::sync::OnceLock::new();
-    RULE.get_or_init(|| GaussLegendre::new(8))
-}
-
 /// Compliance (m/N) the crack adds to the tooth at contact rho (its own radius of
 /// curvature, m): 1/k_cracked - 1/k_healthy of the tooth beam, slices of a partial crack
 /// in parallel (module docs). Zero for a crack of zero depth.
@@ -110,10 +106,7 @@ pub fn crack_compliance_m_per_n(
     let k = if w >= 1.0 {
         k_of(crack.depth_m)
     } else {
-        let slices = width_rule().integrate3(0.0, 1.0, |s| {
-            [k_of(crack.depth_m * (1.0 - s).max(0.0).sqrt()), 0.0, 0.0]
-        })[0];
-        (1.0 - w) / c0 + w * slices
+        (1.0 - w) / c0 + w * k_of(crack.depth_m)
     };
     1.0 / k - c0
 }

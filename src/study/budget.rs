@@ -28,6 +28,11 @@
 //!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
 //!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log; docs/RELIABILITY.md)
 //!   written at 100 MB/s, plus 2 ms of fsync per update;
+//! - a tooth-resolved case (per-tooth inputs) adds one term (`study::teeth_budget::budget_term`):
+//!   its excitation repeats over P mesh periods (up to lcm(z1, z2)), so each dynamic
+//!   evaluation integrates P - 1 more periods and a run-in, each quasi-static one P - 1
+//!   more, a kept response records P periods with its contacts, and each wear record
+//!   holds every tooth's profile;
 //! - memory = 64 MB + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (280 bytes a
 //!   recorded sample, with vector growth, the output tables and their CSV text) + per mode U records of
 //!   (4 G + 4 S_d) numbers at 8 bytes + for `wear` and `run` the outputs of every record's
@@ -66,6 +71,12 @@ pub const ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE: f64 = 700.0;
 /// tables and their CSV text: measured 1500 for `gearwear dynamics` at 2e4 steps per
 /// mesh period (280 of them the response itself); 2000 leaves margin.
 pub const BYTES_PER_SAMPLE: f64 = 2000.0;
+/// Bytes of one recorded sample of the response alone (280 bytes, doubled for vector
+/// growth), without the output tables counted in [`BYTES_PER_SAMPLE`]: the periods a
+/// tooth-resolved response records beyond `numerics.evaluated_mesh_periods`
+/// (`study::teeth_budget`). Measured peaks of the paper's pair at
+/// `teeth.accuracy_grade = 5` (589 periods): `dynamics` 258 MB, `run` 417 MB.
+pub const RESPONSE_BYTES_PER_SAMPLE: f64 = 560.0;
 /// Dynamic wear per cycle over the quasi-static estimate (dynamic factor margin).
 pub const DYNAMIC_WEAR_FACTOR: f64 = 1.5;
 /// Memory of the outputs per profile grid point of each wear record (the wear profiles'
@@ -312,9 +323,24 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         .min((PERIODS_TO_SETTLE_PER_DECADE * (1.0 / nm.steady_state_tolerance).log10()).max(2.0));
     let table = case.stiffness.table_points_per_mesh_period as f64;
     let grid = case.wear.points_per_profile as f64;
+    // Under a load spectrum each bin has its model (and table), every update evaluates
+    // every bin, and the block is cut on the spectrum's wear per cycle, bounded by
+    // sum_i s_i (each bin's largest).
+    let bins = case
+        .load_spectrum
+        .as_ref()
+        .map_or(1.0, |s| s.bins.len() as f64);
     let rate = GearPair::from_case(&case.gear)
         .ok()
-        .map(|pair| nominal_wear_per_cycle_m(case, &pair));
+        .map(|pair| match &case.load_spectrum {
+            Some(s) => s
+                .bins
+                .iter()
+                .enumerate()
+                .map(|(i, b)| b.share * nominal_wear_per_cycle_m(&case.at_bin(i), &pair))
+                .sum(),
+            None => nominal_wear_per_cycle_m(case, &pair),
+        });
     let r = rate.unwrap_or(0.0);
     let (u_d, u_q) = (
         wear_updates(case, DYNAMIC_WEAR_FACTOR * r),
@@ -335,11 +361,27 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         Job::Run => (1.0, 1.0, 3.0, 5.0),
         Job::SweepCase(SweepRun::Wear) => (1.0, 1.0, 0.0, 2.0),
     };
+    // The bins' responses of an update are in memory together.
+    let kept = if dynamic_modes > 0.0 {
+        kept * bins
+    } else {
+        kept
+    };
+    let (dynamic_modes, quasi_modes) = (dynamic_modes * bins, quasi_modes * bins);
+    // `run` under a spectrum adds the life table: a run to the wear limit under the
+    // spectrum (every bin) and one at each bin alone, blocks cut by the threshold only.
+    let extra_evals = match (&case.load_spectrum, job) {
+        (Some(s), Job::Run) => {
+            let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
+            extra_evals + 2.0 * bins * per_run
+        }
+        _ => extra_evals,
+    };
     let checkpoints = matches!(job, Job::Wear { .. } | Job::Run);
     let record_numbers = 4.0 * grid + 4.0 * s_dyn;
     let mut terms = vec![Term {
         what: "the mesh-stiffness table",
-        seconds: 2.0 * table * SECONDS_PER_TABLE_POINT,
+        seconds: 2.0 * table * SECONDS_PER_TABLE_POINT * bins,
         bytes: 16.0 * table,
         keys: &["stiffness.table_points_per_mesh_period"],
     }];
@@ -356,6 +398,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
                     "wear.block_cycles",
                     "wear.threshold_um",
                     "wear.coefficient_m2_per_n",
+                    "load_spectrum.bins",
                 ]
             } else {
                 &[
@@ -437,6 +480,15 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
             ],
         });
     }
+    terms.extend(super::teeth_budget::budget_term(
+        case,
+        evals,
+        quasi_modes * u_q,
+        kept,
+        records,
+        s_dyn,
+        s,
+    ));
     Estimate {
         steps_per_evaluation: s_dyn * (p_c + p_e),
         steps_to_give_up: if evals > 0.0 {
@@ -620,6 +672,42 @@ mod tests {
             // upper bound of the right order.
             assert!(e.seconds() < 20.0, "{job:?}: {}", e.seconds());
         }
+    }
+
+    #[test]
+    fn every_bin_of_a_spectrum_is_counted() {
+        // Ten bins at the operating point (shares 0.1): the same wear rate and updates,
+        // ten times the evaluations.
+        let one = estimate(&Case::default(), Job::Run);
+        let bins = ["{torque_nm = 60, input_speed_hz = 30, share = 0.1}"; 10].join(", ");
+        let ten = load_case(&format!("[load_spectrum]\nbins = [{bins}]\n"), &[]).unwrap();
+        let e = estimate(&ten, Job::Run);
+        assert!((e.wear_per_cycle_m.unwrap() / one.wear_per_cycle_m.unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(e.wear_updates_dynamic, one.wear_updates_dynamic);
+        let dyn_s = |e: &Estimate| {
+            e.terms
+                .iter()
+                .find(|t| t.what == "the dynamic evaluations")
+                .unwrap()
+                .seconds
+        };
+        // Run: 1 wear study of U updates plus 3 wear states; ten bins: 10 U + 3, and the
+        // life runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
+        let u = one.wear_updates_dynamic;
+        let ratio = dyn_s(&e) / dyn_s(&one);
+        let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (u + 3.0);
+        assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
+        // A long spectrum over the budget names the bins.
+        let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
+        let big = load_case(
+            &format!("[load_spectrum]\nbins = [{many}]\n"),
+            &["wear.total_cycles=1e6".into()],
+        )
+        .unwrap();
+        let msg = estimate(&big, Job::Run)
+            .check(&Budget::DEFAULT)
+            .unwrap_err();
+        assert!(msg.contains("load_spectrum.bins"), "{msg}");
     }
 
     #[test]

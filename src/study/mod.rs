@@ -2,12 +2,16 @@
 //! quasi-static twin, the wear states of the paper's section 4.1.
 
 pub mod budget;
+pub mod dataset;
 pub mod domain;
 pub mod model;
 pub mod modes;
 pub mod paper;
+pub mod signal_record;
 pub mod sweep;
 pub mod teeth;
+pub mod teeth_budget;
+pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;
 

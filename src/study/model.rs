@@ -104,6 +104,7 @@ impl Model {
             &mesh,
             &grid,
             [params.pinion_speed_rad_s, params.gear_speed_rad_s],
+            params.static_mesh_force_n,
         )
         .map_err(ModelError)?;
         Ok(Self {

@@ -45,6 +45,25 @@ pub fn wear_state_from_run(run: &WearRun, target_m: f64) -> WearState {
     rec.wear.scaled_to_max_pinion(target_m)
 }
 
+/// The dynamic response at the wear states of section 4.1, taken from the dynamic run, in
+/// parallel.
+pub fn paper_wear_states(model: &Model, dynamic: &WearRun) -> anyhow::Result<Vec<WearStateResult>> {
+    PAPER_WEAR_STATES_UM
+        .par_iter()
+        .map(|um| -> anyhow::Result<WearStateResult> {
+            let wear = wear_state_from_run(dynamic, um * 1e-6);
+            let response = model.dynamic(&wear, &ExternalError::none())?;
+            Ok(WearStateResult {
+                max_wear_um: *um,
+                roughness_um: model.roughness_for(&wear),
+                summary: ResponseSummary::of(&response),
+                wear,
+                response,
+            })
+        })
+        .collect()
+}
+
 /// Run the whole study; `on_update(mode, run)` after every wear update (progress,
 /// checkpoints). The two wear runs go in parallel, then the wear states.
 pub fn run_paper_study(
@@ -57,20 +76,7 @@ pub fn run_paper_study(
     let (Some(quasi_static), Some(dynamic)) = (runs.pop(), runs.pop()) else {
         anyhow::bail!("the wear runs returned no result");
     };
-    let wear_states = PAPER_WEAR_STATES_UM
-        .par_iter()
-        .map(|um| -> anyhow::Result<WearStateResult> {
-            let wear = wear_state_from_run(&dynamic, um * 1e-6);
-            let response = model.dynamic(&wear, &ExternalError::none())?;
-            Ok(WearStateResult {
-                max_wear_um: *um,
-                roughness_um: model.roughness_for(&wear),
-                summary: ResponseSummary::of(&response),
-                wear,
-                response,
-            })
-        })
-        .collect::<anyhow::Result<Vec<_>>>()?;
+    let wear_states = paper_wear_states(model, &dynamic)?;
     Ok(PaperStudy {
         dynamic,
         quasi_static,

@@ -6,7 +6,8 @@
 //! spall off the active profile, a relief longer than the addendum or dedendum, a broken
 //! tip below the root circle; each names the key, the tooth and the valid range.
 
-use crate::config::case::{Case, FaultKind, FaultSpec, Member, ReliefShape};
+use crate::config::case::{Case, FaultKind, FaultSpec, Member, ReliefShape, WornGeometry};
+use crate::contact::worn_curvature::curvature_change_per_m;
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
 use crate::geometry::flank_shape::{
     slope_form_added_m, ActiveFlank, FlankModification, Relief, Side,
@@ -14,9 +15,11 @@ use crate::geometry::flank_shape::{
 use crate::geometry::iso1328::{draw_gear, flank_tolerances, FlankTolerances};
 use crate::geometry::{Gear, GearPair, ProfileGrid};
 use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::potential_energy::ToothBeam;
 use crate::stiffness::tooth_faults::{
     crack_compliance_m_per_n, deg, spall_compliance_m_per_n, spall_gap_m, Crack, Spall,
 };
+use crate::stiffness::worn_tooth::worn_compliance_m_per_n;
 use crate::wear::WearState;
 use serde::Serialize;
 
@@ -68,6 +71,19 @@ pub struct ToothInputs {
     pub faults: Vec<FaultSpec>,
     rho_start_m: f64,
     spacing_m: f64,
+    /// Severe wear (`wear.worn_geometry = "worn"`): the tooth beams and base radii, the
+    /// own radii of curvature of the grid points (ascending) of pinion and gear, and the
+    /// nominal Hertz half-width, for the worn flanks' stiffness and curvature.
+    worn: Option<WornFlanks>,
+}
+
+/// What the worn flanks of severe wear are computed from (see [`ToothInputs`]).
+#[derive(Debug, Clone, PartialEq)]
+struct WornFlanks {
+    beams: [ToothBeam; 2],
+    /// Own rho of the grid points, ascending, and the grid index of each.
+    rho_m: [Vec<f64>; 2],
+    half_width_m: f64,
 }
 
 fn member_gear(pair: &GearPair, m: Member) -> &Gear {
@@ -105,6 +121,7 @@ impl ToothInputs {
         mesh: &MeshStiffness,
         grid: &ProfileGrid,
         shaft_speeds_rad_s: [f64; 2],
+        static_force_n: f64,
     ) -> Result<Option<Self>, Vec<String>> {
         let mut problems = geometry_problems(case, pair, mesh);
         if !problems.is_empty() {
@@ -210,40 +227,124 @@ impl ToothInputs {
             faults: case.fault.clone(),
             rho_start_m: grid.rho_pinion_m[0],
             spacing_m: grid.spacing_m,
+            worn: (case.wear.worn_geometry == WornGeometry::Worn).then(|| {
+                let r = crate::contact::hertz::effective_radius_m(
+                    pair.rho_pitch_m,
+                    pair.rho_gear(pair.rho_pitch_m),
+                );
+                WornFlanks {
+                    beams: mesh.tooth_beams().clone(),
+                    rho_m: [
+                        grid.rho_pinion_m.clone(),
+                        grid.rho_gear_m.iter().rev().copied().collect(),
+                    ],
+                    half_width_m: crate::contact::hertz::HertzContact::with_radius(
+                        static_force_n,
+                        pair.face_width_m,
+                        r,
+                        crate::contact::hertz::effective_modulus_of(&case.materials),
+                    )
+                    .half_width_m,
+                }
+            }),
         };
         let perfect = |f: &[ToothFlank]| f.iter().all(|t| t == &ToothFlank::perfect(n));
         let trivial = perfect(&me.pinion)
             && perfect(&me.gear)
-            && me.runout.iter().all(|r| r.eccentricity_m == 0.0);
+            && me.runout.iter().all(|r| r.eccentricity_m == 0.0)
+            && me.worn.is_none();
         Ok((!trivial).then_some(me))
     }
 
     /// The tooth-resolved mesh of a wear state: each tooth's own wear (or the common
     /// profile of a state without per-tooth wear) added to its flank.
     pub fn mesh_for(&self, wear: &WearState) -> ToothMesh {
-        let add = |flanks: &[ToothFlank], common: &[f64], own: Option<&Vec<Vec<f64>>>| {
-            flanks
-                .iter()
-                .enumerate()
-                .map(|(t, f)| {
-                    let w = own.and_then(|o| o.get(t)).map_or(common, |v| v.as_slice());
-                    let mut f = f.clone();
-                    for (r, h) in f.removed_m.iter_mut().zip(w) {
-                        *r += h;
-                    }
-                    f
-                })
-                .collect()
-        };
+        let add =
+            |side: usize, flanks: &[ToothFlank], common: &[f64], own: Option<&Vec<Vec<f64>>>| {
+                // Teeth worn alike share their worn stiffness and curvature (computed once).
+                let mut memo: Vec<(&[f64], WornTables)> = Vec::new();
+                flanks
+                    .iter()
+                    .enumerate()
+                    .map(|(t, f)| {
+                        let w = own.and_then(|o| o.get(t)).map_or(common, |v| v.as_slice());
+                        let mut f = f.clone();
+                        for (r, h) in f.removed_m.iter_mut().zip(w) {
+                            *r += h;
+                        }
+                        if let Some(worn) = &self.worn {
+                            let tables = match memo.iter().find(|(m, _)| *m == w) {
+                                Some((_, t)) => t.clone(),
+                                None => {
+                                    let t = worn.tables(side, w);
+                                    memo.push((w, t.clone()));
+                                    t
+                                }
+                            };
+                            tables.apply(&mut f);
+                        }
+                        f
+                    })
+                    .collect()
+            };
         let teeth = wear.teeth.as_ref();
         ToothMesh::new(
-            add(&self.pinion, &wear.pinion_m, teeth.map(|t| &t.pinion_m)),
-            add(&self.gear, &wear.gear_m, teeth.map(|t| &t.gear_m)),
+            add(0, &self.pinion, &wear.pinion_m, teeth.map(|t| &t.pinion_m)),
+            add(1, &self.gear, &wear.gear_m, teeth.map(|t| &t.gear_m)),
             self.runout,
             self.rho_start_m,
             self.spacing_m,
             self.pinion.first().map_or(2, |f| f.removed_m.len()),
         )
+    }
+}
+
+/// The added compliance and the curvature change of one worn flank on the grid.
+#[derive(Debug, Clone, PartialEq)]
+struct WornTables {
+    compliance_m_per_n: Vec<f64>,
+    curvature_change_per_m: Vec<f64>,
+}
+
+impl WornTables {
+    fn apply(self, f: &mut ToothFlank) {
+        if self.compliance_m_per_n.iter().all(|c| *c == 0.0) {
+            return;
+        }
+        let table = f
+            .compliance_m_per_n
+            .get_or_insert_with(|| vec![0.0; self.compliance_m_per_n.len()]);
+        for (a, b) in table.iter_mut().zip(&self.compliance_m_per_n) {
+            *a += b;
+        }
+        f.curvature_change_per_m = Some(self.curvature_change_per_m);
+    }
+}
+
+impl WornFlanks {
+    /// The tables of a flank of gear `side` worn by `wear_m` (grid order: the pinion's
+    /// ascending rho1, the gear's conjugate points).
+    fn tables(&self, side: usize, wear_m: &[f64]) -> WornTables {
+        let rho = &self.rho_m[side];
+        // The wear in ascending own rho (the gear's grid runs the other way).
+        let w: Vec<f64> = match side {
+            0 => wear_m.to_vec(),
+            _ => wear_m.iter().rev().copied().collect(),
+        };
+        let beam = &self.beams[side];
+        let compliance: Vec<f64> = rho
+            .iter()
+            .map(|r| worn_compliance_m_per_n(beam, rho, &w, *r))
+            .collect();
+        let curvature = curvature_change_per_m(rho, &w, beam.base_radius_m, self.half_width_m);
+        let grid_order = |v: Vec<f64>| match side {
+            0 => v,
+            _ => v.into_iter().rev().collect(),
+        };
+        WornTables {
+            compliance_m_per_n: grid_order(compliance),
+            curvature_change_per_m: grid_order(curvature),
+        }
     }
 }
 

@@ -149,7 +149,7 @@ pub fn block_length(inc_max_m: f64, block_cycles: f64, threshold_m: f64, remaini
 
 /// The response of a wear state: dynamic (warm-started from `start`, retried as the
 /// module docs say) or quasi-static.
-fn solve(
+pub fn solve(
     model: &Model,
     mode: WearMode,
     wear: &WearState,
@@ -175,7 +175,10 @@ fn solve(
     model.dynamic_with(wear, &none, None, &tight)
 }
 
-fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
+/// The record of a response on `wear`: its summary, the per-cycle wear it gives (paper
+/// eq. 14-17; per tooth when the mesh is tooth-resolved) and the state the next search
+/// starts from.
+pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
     let k = model.case.wear.coefficient_m2_per_n;
     let inc: WearIncrement = match &model.teeth {
@@ -224,7 +227,7 @@ fn mean_load_along_path(model: &Model, r: &DynamicResponse) -> (Vec<f64>, Vec<f6
 }
 
 /// The warm start a record offers.
-fn start_of(rec: &UpdateRecord) -> Option<[f64; NSTATE]> {
+pub fn start_of(rec: &UpdateRecord) -> Option<[f64; NSTATE]> {
     let s = rec.end_state.as_ref()?;
     (s.len() == NSTATE).then(|| std::array::from_fn(|i| s[i]))
 }

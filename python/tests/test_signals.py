@@ -1,0 +1,60 @@
+"""The signal studies from Python: the same summaries and files as the command line."""
+
+import json
+import subprocess
+
+import numpy as np
+
+import gearwear as gw
+from conftest import cli_summary
+
+
+def _case() -> gw.Case:
+    return gw.Case.paper().set("signals.record_length", 0.25).set("signals.snr_db", 30.0)
+
+
+def test_signals_equals_cli_and_holds_the_record(cli, tmp_path):
+    case = _case()
+    r = gw.signals(case)
+    assert r.summary == cli_summary(cli, tmp_path, "signals", case)
+    rec = r.record
+    assert rec.columns == ["time_s", "input_m_per_s2", "output_m_per_s2", "tachometer_v"]
+    assert len(rec["time_s"]) == int(0.25 * r.sampling_rate_hz)
+    assert r.channel_unit == "m/s^2"
+    ind = r.indicators[0]
+    assert ind["channel"] == "input" and ind["pinion"]["revolutions"] >= 6
+    # The tachometer swings between 0 and 5 V (its filtered edges ring a little beyond).
+    tach = rec["tachometer_v"]
+    assert -0.5 < tach.min() < 0.5 and 4.5 < tach.max() < 5.5
+
+
+def test_dataset_and_merge_from_python_equal_the_cli(cli, tmp_path):
+    design = tmp_path / "design.toml"
+    design.write_text(
+        'seed = 3\nset = ["signals.record_length=0.1", "signals.snr_db=30", '
+        '"numerics.steps_per_mesh_period=60", "stiffness.table_points_per_mesh_period=60"]\n'
+        "[run_to_failure]\ncycles = [0, 5000]\nmax_cycles = 5000\n"
+        "[records]\nnoise_realisations = 2\n"
+    )
+    py_out = tmp_path / "py"
+    r = gw.dataset(design, py_out)
+    assert r.summary["records"] == 4 and r.summary["computed"] == 4
+    assert r.index_path is not None
+    ref = tmp_path / "cli"
+    subprocess.run(
+        [str(cli), "-q", "dataset", "--design", str(design), "--out", str(ref)],
+        check=True,
+        timeout=300,
+    )
+    for f in ["index.csv", "index.parquet", "metadata.json", "signals/0000003.parquet"]:
+        assert (py_out / f).read_bytes() == (ref / f).read_bytes(), f
+    # Two shards from Python, merged: the same dataset.
+    for i in (1, 2):
+        gw.dataset(design, tmp_path / f"s{i}", shard=(i, 2))
+    m = gw.dataset_merge([tmp_path / "s1", tmp_path / "s2"], tmp_path / "merged")
+    assert m.summary["missing"] == []
+    assert (tmp_path / "merged" / "index.parquet").read_bytes() == (ref / "index.parquet").read_bytes()
+    meta = json.loads((ref / "metadata.json").read_text())
+    assert meta["records_present"] == 4
+    idx = np.genfromtxt(ref / "index.csv", delimiter=",", names=True, dtype=None, encoding="utf-8")
+    assert list(idx["cycles"]) == [0.0, 0.0, 5000.0, 5000.0]

@@ -1,0 +1,196 @@
+//! The wear runs of a job under a load spectrum: where each starts (afresh, or resumed
+//! from its bin logs, checked before anything is computed: `duty::resume`), a checkpoint
+//! log per mode and bin appended after every update, progress per mode, cancellation.
+
+use super::observer::{keep_going, Observer};
+use super::wear::{mode_tasks, report_update, Runs};
+use super::{publish, JobError};
+use crate::duty::resume::{bin_runs, from_bin_runs};
+use crate::duty::wear::SpectrumRun;
+use crate::duty::SpectrumModel;
+use crate::io::checkpoint::{load_checkpoint_named, CheckpointLog};
+use crate::io::{OutputDir, RunMetadata};
+use crate::remedy::{Arg, Problem, Remedy};
+use crate::study::wear_loop::WearMode;
+use std::path::Path;
+use std::sync::Mutex;
+
+/// File name of the checkpoint of bin `i` (0-based) of a mode's spectrum run.
+pub fn bin_checkpoint_name(mode: WearMode, i: usize) -> String {
+    format!("checkpoint_{}_bin{}.jsonl", mode.name(), i + 1)
+}
+
+/// The runs of `modes`: fresh, or (resuming from `dir`) read back from their bin logs.
+fn starting_runs(
+    sm: &SpectrumModel,
+    modes: &[WearMode],
+    resume_from: Option<&OutputDir>,
+    case_sha256: &str,
+    observer: &dyn Observer,
+) -> Result<Vec<SpectrumRun>, JobError> {
+    let fresh = |m: WearMode| SpectrumRun::new(m, sm.shares.clone());
+    let Some(out) = resume_from else {
+        return Ok(modes.iter().map(|m| fresh(*m)).collect());
+    };
+    let dir = out.root();
+    let mut starts = Vec::new();
+    let mut found = false;
+    for m in modes {
+        let mut logs = Vec::new();
+        for i in 0..sm.len() {
+            let max = crate::study::budget::max_checkpoint_bytes(&sm.case, *m);
+            let name = bin_checkpoint_name(*m, i);
+            if let Some(l) = load_checkpoint_named(out, &name, *m, case_sha256, max)? {
+                logs.push(l.run);
+            }
+        }
+        if logs.iter().all(|l| l.records.is_empty()) {
+            observer.note(&format!(
+                "note: no {} checkpoint: that run starts afresh",
+                m.label()
+            ));
+            starts.push(fresh(*m));
+            continue;
+        }
+        found = true;
+        let run = from_bin_runs(sm, *m, &logs).map_err(|e| {
+            Problem::of(
+                Arg::Resume,
+                format!(
+                    "{}: the {} checkpoints of the spectrum's bins: {e}; they cannot be resumed",
+                    dir.display(),
+                    m.label()
+                ),
+            )
+            .remedy(Remedy::start_afresh().path(dir))
+        })?;
+        crate::duty::verify::verify_spectrum_run(sm, &run).map_err(|e| {
+            Problem::of(
+                Arg::Resume,
+                format!(
+                    "{}: the {} checkpoints of the spectrum's bins: {e}; they cannot be resumed",
+                    dir.display(),
+                    m.label()
+                ),
+            )
+            .remedy(Remedy::start_afresh().path(dir))
+        })?;
+        starts.push(run);
+    }
+    if !found {
+        return Err(Problem::of(
+            Arg::Resume,
+            format!(
+                "no checkpoint to resume from in {} (looked for {})",
+                dir.display(),
+                bin_checkpoint_name(modes[0], 0)
+            ),
+        )
+        .remedy(Remedy::start_afresh().path(dir))
+        .into());
+    }
+    Ok(starts)
+}
+
+/// One log per mode and bin, rewritten from the run it starts at (a resumed run's logs
+/// are cut back to the updates every bin holds).
+struct Logs {
+    logs: Vec<(WearMode, Mutex<Vec<CheckpointLog>>)>,
+}
+
+impl Logs {
+    fn open(
+        out: &mut OutputDir,
+        runs: &[SpectrumRun],
+        case_sha256: &str,
+    ) -> Result<Self, JobError> {
+        let mut logs = Vec::new();
+        for run in runs {
+            let mut per_bin = Vec::new();
+            for (i, b) in bin_runs(run).iter().enumerate() {
+                let name = bin_checkpoint_name(run.mode, i);
+                per_bin.push(CheckpointLog::create_named(out, &name, case_sha256, b)?);
+            }
+            if per_bin.is_empty() {
+                // A fresh run: the logs start with the first update.
+                for i in 0..run.shares.len() {
+                    let name = bin_checkpoint_name(run.mode, i);
+                    let empty = crate::study::wear_loop::WearRun::new(run.mode);
+                    per_bin.push(CheckpointLog::create_named(
+                        out,
+                        &name,
+                        case_sha256,
+                        &empty,
+                    )?);
+                }
+            }
+            logs.push((run.mode, Mutex::new(per_bin)));
+        }
+        Ok(Self { logs })
+    }
+
+    fn record(&self, run: &SpectrumRun) -> anyhow::Result<()> {
+        if let Some((_, logs)) = self.logs.iter().find(|(m, _)| *m == run.mode) {
+            let mut logs = logs
+                .lock()
+                .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
+            for (log, b) in logs.iter_mut().zip(bin_runs(run)) {
+                log.append_new(&b)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// As `app::wear::run_modes` for a spectrum: the starting runs, the output folder with a
+/// checkpoint log per mode and bin, a progress task per mode, and `study` run with a
+/// callback that checkpoints, reports progress and stops on request after every update.
+pub fn run_spectrum_job_modes<T>(
+    command: &str,
+    sm: &SpectrumModel,
+    modes: &[WearMode],
+    meta: &RunMetadata,
+    (out, resume, replace): (Option<&Path>, bool, bool),
+    observer: &dyn Observer,
+    study: impl FnOnce(
+        &SpectrumModel,
+        Vec<SpectrumRun>,
+        &(dyn Fn(WearMode, &SpectrumRun) -> anyhow::Result<()> + Sync),
+    ) -> anyhow::Result<T>,
+) -> Result<Runs<T>, JobError> {
+    if let (Some(o), true) = (out, resume) {
+        super::checkpoints::require_folder(o)?;
+    }
+    // The folder first, then the checkpoints in it (read through its handle).
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let resume_from = dir.as_ref().filter(|_| resume);
+    let starts = starting_runs(sm, modes, resume_from, &meta.case_sha256, observer)?;
+    let logs = match dir.as_mut() {
+        Some(d) => Some(Logs::open(d, &starts, &meta.case_sha256)?),
+        None => None,
+    };
+    let root = dir.as_ref().map(|d| d.root().to_path_buf());
+    let tasks = mode_tasks(modes, sm.case.wear.total_cycles);
+    for t in &tasks {
+        observer.start(t);
+    }
+    let on_update = |mode: WearMode, run: &SpectrumRun| -> anyhow::Result<()> {
+        if let (Some(logs), Some(root)) = (&logs, &root) {
+            logs.record(run)?;
+            observer.checkpoint(&root.join(bin_checkpoint_name(mode, 0)));
+        }
+        if let Some(r) = run.last() {
+            report_update(observer, &tasks, mode, run.records.len() - 1, &r.wear);
+        }
+        keep_going(observer)
+    };
+    let result = study(sm, starts, &on_update);
+    for t in &tasks {
+        observer.finish(t);
+    }
+    drop(logs);
+    Ok(Runs {
+        runs: result?,
+        out: dir,
+    })
+}

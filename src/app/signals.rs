@@ -1,0 +1,127 @@
+//! The signals job: one record of the case as a sensor records it (the steady state, or
+//! the transient of a ramp or a load fluctuation), its indicators and figures
+//! (docs/SIGNALS.md).
+
+use super::observer::Observer;
+use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::Case;
+use crate::io::transfer_path::read_transfer_path;
+use crate::io::RunMetadata;
+use crate::remedy::{Arg, Problem};
+use crate::report::signals::signals_artifacts;
+use crate::signals::setup::chain_of;
+use crate::signals::transfer::TransferPath;
+use crate::study::budget::{Budget, Job as Cost};
+use crate::study::signal_record::record_case;
+use crate::study::transient_signals::is_transient;
+use crate::wear::WearState;
+use std::path::PathBuf;
+
+/// Where the transfer path comes from (absent: the built-in generic housing).
+#[derive(Debug, Clone)]
+pub enum TransferPathSource {
+    /// An FRF table (`.csv`) or a modal description (`.toml`).
+    File(PathBuf),
+    /// A path built by the caller.
+    Path(TransferPath),
+}
+
+/// The transfer path of `source`; a file's problems name it.
+pub fn transfer_path_of(
+    source: Option<&TransferPathSource>,
+) -> Result<Option<TransferPath>, JobError> {
+    match source {
+        None => Ok(None),
+        Some(TransferPathSource::Path(p)) => Ok(Some(p.clone())),
+        Some(TransferPathSource::File(f)) => read_transfer_path(f).map(Some).map_err(|m| {
+            JobError::Input(
+                m.into_iter()
+                    .map(|m| Problem::of(Arg::TransferPath, m))
+                    .collect(),
+            )
+        }),
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct SignalsJob {
+    pub case: Case,
+    pub transfer_path: Option<TransferPathSource>,
+    /// Output folder; `None` writes nothing.
+    pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    pub budget: Option<Budget>,
+}
+
+/// Bytes of memory per recorded second and sample rate: the record's channels, their
+/// analysis, and for a transient the internal grid (8 samples a sample, four forces, their
+/// spectra): measured about 1.5 kB per record sample for a transient, 0.2 kB steady.
+const BYTES_PER_SAMPLE_STEADY: f64 = 400.0;
+const BYTES_PER_SAMPLE_TRANSIENT: f64 = 3000.0;
+
+/// The record's memory against the budget (the dynamic evaluation itself is checked as
+/// the dynamics job's).
+fn check_record(case: &Case, b: Option<&Budget>) -> Result<(), JobError> {
+    let Some(b) = b else { return Ok(()) };
+    let s = &case.signals;
+    let seconds = match s.record_length_unit {
+        crate::config::signals::LengthUnit::S => s.record_length,
+        crate::config::signals::LengthUnit::Revolutions => {
+            s.record_length / case.operating.input_speed_hz.max(1e-9)
+        }
+    };
+    let per = if is_transient(case) {
+        BYTES_PER_SAMPLE_TRANSIENT
+    } else {
+        BYTES_PER_SAMPLE_STEADY
+    };
+    let bytes = seconds * s.sampling_rate_hz * per;
+    if bytes > b.memory_bytes {
+        return Err(JobError::input(budget::over_budget(format!(
+            "a record of {seconds} s at {} Hz needs about {:.2} GiB of memory, more than the budget's {:.2} GiB: `signals.record_length` and `signals.sampling_rate_hz` set it",
+            s.sampling_rate_hz,
+            bytes / 1024f64.powi(3),
+            b.memory_bytes / 1024f64.powi(3)
+        ))));
+    }
+    Ok(())
+}
+
+impl Job for SignalsJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "signals"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
+        check_record(&self.case, self.budget.as_ref())?;
+        let model = build_model(&self.case, observer)?;
+        let path = transfer_path_of(self.transfer_path.as_ref())?;
+        let setup = chain_of(
+            &self.case,
+            path,
+            self.case.signals.max_input_speed_hz(&self.case),
+        )
+        .map_err(|m| JobError::Input(m.into_iter().map(Problem::new).collect()))?;
+        for w in &setup.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
+            .map_err(|e| JobError::Failed(e.into()))?;
+        let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
+        let c = &self.case;
+        let label = if c.teeth.is_empty() && c.modification.is_empty() && c.fault.is_empty() {
+            "new teeth"
+        } else {
+            "the case's tooth errors, modifications and faults"
+        };
+        let artifacts = signals_artifacts(&rec, &setup.chain, harmonics, label);
+        let meta = RunMetadata::of_model(self.name(), &model);
+        publish::publish(out, artifacts, Some(&meta), observer)
+    }
+}

@@ -1,0 +1,31 @@
+//! `gearwear dataset` and `gearwear dataset-merge`: parse, run the job, print.
+
+use super::error::flag;
+use super::output::execute;
+use super::signals_args::{DatasetArgs, DatasetMergeArgs};
+use super::CliError;
+use crate::app::{DatasetJob, DatasetMergeJob, DesignSource};
+use crate::study::budget::Budget;
+use crate::study::dataset::Shard;
+
+pub fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
+    let shard = match &a.shard {
+        Some(s) => Shard::parse(s).map_err(|p| CliError::input(p.render(flag)))?,
+        None => Shard::ALL,
+    };
+    execute(&DatasetJob {
+        design: DesignSource::file(&a.design)?,
+        shard,
+        out: a.out.clone(),
+        replace: super::output::replace(),
+        budget,
+    })
+}
+
+pub fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
+    execute(&DatasetMergeJob {
+        inputs: a.inputs.clone(),
+        out: a.out.clone(),
+        replace: super::output::replace(),
+    })
+}

@@ -1,0 +1,43 @@
+//! Arguments of `gearwear signals`, `gearwear dataset` and `gearwear dataset-merge`.
+
+use super::args::CaseArgs;
+use clap::Args;
+use std::path::PathBuf;
+
+#[derive(Debug, Args)]
+pub struct SignalsArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Transfer path from the bearing forces to the sensors: an FRF table (.csv) or a
+    /// modal description (.toml), docs/SIGNALS.md. Default: the built-in generic housing.
+    #[arg(long, value_name = "FILE")]
+    pub transfer_path: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long, default_value = "results/signals")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct DatasetArgs {
+    /// Study design (TOML): the case, run-to-failure states, fault conditions, speeds,
+    /// loads, noise realisations (docs/SIGNALS.md, "Datasets").
+    #[arg(long, value_name = "FILE")]
+    pub design: PathBuf,
+    /// Run only shard I of N (round-robin over the physical states; merge the shards
+    /// with `gearwear dataset-merge`).
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// Output directory (shards may share one).
+    #[arg(long, default_value = "results/dataset")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct DatasetMergeArgs {
+    /// Dataset folders of the shards (or one folder they share).
+    #[arg(required = true, value_name = "DIR")]
+    pub inputs: Vec<PathBuf>,
+    /// Output directory of the merged dataset (may be the shards' shared folder).
+    #[arg(long)]
+    pub out: PathBuf,
+}

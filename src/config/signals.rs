@@ -1,0 +1,189 @@
+//! The `[signals]` section of a case: what a sensor records (acquisition, tachometer,
+//! record length, measurement noise, operating variation). Used by `gearwear signals`
+//! and datasets; the other studies ignore it. docs/SIGNALS.md describes the chain.
+
+use serde::{Deserialize, Serialize};
+
+/// Standard gravity, m/s^2 (CGPM 1901): 1 g.
+pub const STANDARD_GRAVITY: f64 = 9.80665;
+
+/// Unit of the recorded acceleration channels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ChannelUnit {
+    /// m/s^2.
+    #[serde(rename = "m/s^2")]
+    MetrePerSecond2,
+    /// Standard gravity, 9.80665 m/s^2.
+    #[serde(rename = "g")]
+    G,
+    /// The sensor's output voltage, mV (sensitivity times acceleration in g).
+    #[serde(rename = "mV")]
+    MilliVolt,
+}
+
+impl ChannelUnit {
+    /// The unit as written in files.
+    pub fn symbol(&self) -> &'static str {
+        match self {
+            ChannelUnit::MetrePerSecond2 => "m/s^2",
+            ChannelUnit::G => "g",
+            ChannelUnit::MilliVolt => "mV",
+        }
+    }
+
+    /// Suffix of column names: `m_per_s2`, `g`, `mv`.
+    pub fn suffix(&self) -> &'static str {
+        match self {
+            ChannelUnit::MetrePerSecond2 => "m_per_s2",
+            ChannelUnit::G => "g",
+            ChannelUnit::MilliVolt => "mv",
+        }
+    }
+
+    /// Factor from m/s^2 to this unit, for a sensor of `sensitivity_mv_per_g`.
+    pub fn factor(&self, sensitivity_mv_per_g: f64) -> f64 {
+        match self {
+            ChannelUnit::MetrePerSecond2 => 1.0,
+            ChannelUnit::G => 1.0 / STANDARD_GRAVITY,
+            ChannelUnit::MilliVolt => sensitivity_mv_per_g / STANDARD_GRAVITY,
+        }
+    }
+}
+
+/// A shaft of the pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Shaft {
+    /// The pinion's (input) shaft.
+    Pinion,
+    /// The gear's (output) shaft.
+    Gear,
+}
+
+impl Shaft {
+    pub fn name(&self) -> &'static str {
+        match self {
+            Shaft::Pinion => "pinion",
+            Shaft::Gear => "gear",
+        }
+    }
+
+    /// Teeth of this shaft's gear, for a pair of `z1` / `z2` teeth.
+    pub fn teeth(&self, z1: usize, z2: usize) -> usize {
+        match self {
+            Shaft::Pinion => z1,
+            Shaft::Gear => z2,
+        }
+    }
+}
+
+/// Unit of `record_length`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LengthUnit {
+    /// Seconds.
+    S,
+    /// Revolutions of the tachometer's shaft.
+    Revolutions,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SignalsSection {
+    pub sampling_rate_hz: f64,
+    /// Record length, in `record_length_unit`.
+    pub record_length: f64,
+    pub record_length_unit: LengthUnit,
+    /// Stopband attenuation of the anti-alias filter at and above f_s / 2, dB.
+    pub anti_alias_attenuation_db: f64,
+    pub channel_unit: ChannelUnit,
+    pub sensitivity_mv_per_g: f64,
+    /// Measurement noise as a signal-to-noise ratio (dB); absent: no SNR noise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub snr_db: Option<f64>,
+    /// Measurement noise as an amplitude spectral density; absent: none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub noise_density_ug_per_sqrt_hz: Option<f64>,
+    pub noise_seed: i64,
+    pub tachometer_shaft: Shaft,
+    pub tachometer_pulses_per_revolution: i64,
+    /// Mesh harmonics analysed (FM0, spectrum labels); the highest must be recorded.
+    pub mesh_harmonics: i64,
+    /// RMS of the seeded random load-torque fluctuation, N m (0: none).
+    pub torque_fluctuation_rms_nm: f64,
+    pub torque_fluctuation_bandwidth_hz: f64,
+    pub torque_fluctuation_seed: i64,
+    /// Input speed at the end of the record for a run-up or coast-down (from
+    /// `operating.input_speed_hz` at its start); absent: steady speed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ramp_end_speed_hz: Option<f64>,
+}
+
+impl Default for SignalsSection {
+    fn default() -> Self {
+        Self {
+            // 2.56 x 10 kHz, the usual analyser setting for gearbox vibration.
+            sampling_rate_hz: 25_600.0,
+            record_length: 1.0,
+            record_length_unit: LengthUnit::S,
+            anti_alias_attenuation_db: 100.0,
+            channel_unit: ChannelUnit::MetrePerSecond2,
+            // A general-purpose IEPE accelerometer.
+            sensitivity_mv_per_g: 100.0,
+            snr_db: None,
+            noise_density_ug_per_sqrt_hz: None,
+            noise_seed: 0,
+            tachometer_shaft: Shaft::Pinion,
+            tachometer_pulses_per_revolution: 1,
+            mesh_harmonics: 4,
+            torque_fluctuation_rms_nm: 0.0,
+            torque_fluctuation_bandwidth_hz: 20.0,
+            torque_fluctuation_seed: 0,
+            ramp_end_speed_hz: None,
+        }
+    }
+}
+
+impl SignalsSection {
+    /// Whether the section is all defaults (then a case's serialisation leaves it out,
+    /// so cases without signals keep their form and hash).
+    pub fn is_default(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
+/// Checks between keys of the case that involve the `[signals]` section.
+pub fn relation_problems(case: &super::Case) -> Vec<String> {
+    let s = &case.signals;
+    let mut out = Vec::new();
+    if s.snr_db.is_some() && s.noise_density_ug_per_sqrt_hz.is_some() {
+        out.push(
+            "`signals.snr_db` and `signals.noise_density_ug_per_sqrt_hz` are both given: measurement noise is one or the other, remove one".into(),
+        );
+    }
+    // A Gaussian fluctuation exceeds 3.5 sigma once in ~2000 samples: keep the torque
+    // positive with margin.
+    let torque = case.operating.load_torque_nm;
+    if 3.5 * s.torque_fluctuation_rms_nm >= torque {
+        out.push(format!(
+            "`signals.torque_fluctuation_rms_nm` = {} is invalid with `operating.load_torque_nm` = {torque}: expected below {} (3.5 standard deviations must stay below the mean torque, or the load would reverse)",
+            s.torque_fluctuation_rms_nm,
+            torque / 3.5
+        ));
+    }
+    if s.ramp_end_speed_hz.is_some() && s.record_length_unit == LengthUnit::Revolutions {
+        out.push(
+            "`signals.record_length_unit` = \"revolutions\" is invalid with `signals.ramp_end_speed_hz`: a ramp's record is given in seconds (\"s\")".into(),
+        );
+    }
+    out
+}
+
+impl SignalsSection {
+    /// The highest input speed a record of `case` sees, Hz (a ramp's end or the
+    /// operating speed).
+    pub fn max_input_speed_hz(&self, case: &super::Case) -> f64 {
+        let f = case.operating.input_speed_hz;
+        self.ramp_end_speed_hz.map_or(f, |e| e.max(f))
+    }
+}

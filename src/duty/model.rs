@@ -1,0 +1,117 @@
+//! The models of a spectrum: one per bin, each the case at the bin's operating point.
+//!
+//! A bin differs from the case only in its torque, speed and torque shaft
+//! (`Case::at_bin`), so every check a case gets (the Hertz pressure the flanks can carry,
+//! Xu's friction range, Sainsot's fit) is made for every bin, and a bin equal to the
+//! operating point gives the model of the case itself, bit for bit. The bins' models are
+//! built in parallel, and all of them before anything is solved: one bad bin refuses the
+//! whole spectrum, naming the bin.
+
+use crate::config::{Case, LoadSpectrumSection, SpectrumBin};
+use crate::study::model::{Model, ModelError};
+use rayon::prelude::*;
+
+/// The models of every bin of a case's spectrum and the bins' shares of the cycles.
+pub struct SpectrumModel {
+    /// The case with its spectrum (or without: one bin, the operating point).
+    pub case: Case,
+    /// One model per bin, in the spectrum's order.
+    pub bins: Vec<Model>,
+    /// Share of the load cycles of each bin (sum 1).
+    pub shares: Vec<f64>,
+    /// Bin at which vibration is observed (0-based).
+    pub monitoring: usize,
+}
+
+/// A bin in words, for messages: "load_spectrum bin 3 (80 N m, 45 Hz)".
+pub fn bin_label(case: &Case, i: usize) -> String {
+    let c = case.at_bin(i);
+    format!(
+        "load_spectrum bin {} ({} N m, {} Hz)",
+        i + 1,
+        c.operating.load_torque_nm,
+        c.operating.input_speed_hz
+    )
+}
+
+impl SpectrumModel {
+    /// The models of `case`'s bins; a case without a spectrum is one bin of share 1 at its
+    /// operating point. Every bin's problems are collected, each naming its bin.
+    pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        let Some(spectrum) = case.load_spectrum.as_ref() else {
+            return Ok(Self {
+                case: case.clone(),
+                bins: vec![Model::from_case(case)?],
+                shares: vec![1.0],
+                monitoring: 0,
+            });
+        };
+        let built: Vec<Result<Model, ModelError>> = (0..spectrum.bins.len())
+            .into_par_iter()
+            .map(|i| Model::from_case(&case.at_bin(i)))
+            .collect();
+        let mut bins = Vec::with_capacity(built.len());
+        let mut problems = Vec::new();
+        for (i, b) in built.into_iter().enumerate() {
+            match b {
+                Ok(m) => bins.push(m),
+                Err(e) => {
+                    problems.extend(e.0.iter().map(|p| format!("{}: {p}", bin_label(case, i))))
+                }
+            }
+        }
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
+        Ok(Self {
+            case: case.clone(),
+            bins,
+            shares: spectrum.bins.iter().map(|b| b.share).collect(),
+            monitoring: spectrum.monitoring_index(),
+        })
+    }
+
+    /// Number of bins.
+    pub fn len(&self) -> usize {
+        self.bins.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.bins.is_empty()
+    }
+
+    /// The warnings of every bin, each once (bins share most of them).
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w: Vec<String> = Vec::new();
+        for m in &self.bins {
+            for x in &m.warnings {
+                if !w.contains(x) {
+                    w.push(x.clone());
+                }
+            }
+        }
+        w
+    }
+
+    /// The spectrum as used: the case's, or one bin at its operating point.
+    pub fn spectrum(&self) -> LoadSpectrumSection {
+        self.case.load_spectrum.clone().unwrap_or_else(|| {
+            let o = &self.case.operating;
+            let mut s = LoadSpectrumSection::of_bins(vec![SpectrumBin {
+                torque_nm: o.load_torque_nm,
+                input_speed_hz: o.input_speed_hz,
+                share: 1.0,
+            }]);
+            s.torque_shaft = Some(o.load_torque_shaft);
+            s
+        })
+    }
+
+    /// Label of bin `i` for messages.
+    pub fn label(&self, i: usize) -> String {
+        if self.case.load_spectrum.is_none() {
+            return "the operating point".into();
+        }
+        bin_label(&self.case, i)
+    }
+}

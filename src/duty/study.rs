@@ -1,0 +1,70 @@
+//! The studies of a duty cycle: the wear study under the spectrum in both modes (what
+//! `wear` computes), and with it the paper's section 4 read at the monitoring bin and the
+//! life table (what `run` computes).
+
+use super::contribution::combined_run;
+use super::life::{life_table, LifeTable};
+use super::model::SpectrumModel;
+use super::wear::{run_spectrum_modes, SpectrumRun};
+use crate::study::paper::{paper_wear_states, PaperStudy};
+use crate::study::wear_loop::WearMode;
+
+/// Life runs stop here at the latest: 1e15 pinion revolutions are 30 000 years at 1 kHz,
+/// beyond any machine's life, so a bin that has not worn to the limit by then never will.
+pub const LIFE_CYCLE_CAP: f64 = 1e15;
+
+/// The wear study under the spectrum and what `run` adds to it.
+pub struct DutyStudy {
+    /// The spectrum runs, in the order of the modes asked for.
+    pub runs: Vec<SpectrumRun>,
+    /// The paper's section 4 on the spectrum runs, responses at the monitoring bin.
+    pub paper: Option<PaperStudy>,
+    /// Lives to `load_spectrum.life_wear_limit_um` (dynamic), under the spectrum and at
+    /// each bin alone.
+    pub life: Option<LifeTable>,
+}
+
+impl DutyStudy {
+    pub fn run(&self, mode: WearMode) -> Option<&SpectrumRun> {
+        self.runs.iter().find(|r| r.mode == mode)
+    }
+}
+
+/// `run` under a spectrum: the dynamic and quasi-static spectrum runs in parallel
+/// (continuing `starts`), then the wear states of section 4.1 on the dynamic run's
+/// profile at the monitoring bin, and the life table.
+pub fn run_duty_study(
+    sm: &SpectrumModel,
+    starts: Vec<SpectrumRun>,
+    on_update: &(dyn Fn(WearMode, &SpectrumRun) -> anyhow::Result<()> + Sync),
+) -> anyhow::Result<DutyStudy> {
+    let runs = run_spectrum_modes(sm, starts, on_update)?;
+    let (Some(d), Some(q)) = (
+        runs.iter().find(|r| r.mode == WearMode::Dynamic),
+        runs.iter().find(|r| r.mode == WearMode::QuasiStatic),
+    ) else {
+        anyhow::bail!("the duty-cycle study needs a dynamic and a quasi-static run");
+    };
+    let (d, q) = (
+        combined_run(d, sm.monitoring),
+        combined_run(q, sm.monitoring),
+    );
+    let monitor = &sm.bins[sm.monitoring];
+    let wear_states = paper_wear_states(monitor, &d)?;
+    let limit = sm
+        .case
+        .load_spectrum
+        .as_ref()
+        .map_or(10.0, |s| s.life_wear_limit_um);
+    let life = life_table(&sm.case, WearMode::Dynamic, limit, LIFE_CYCLE_CAP)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok(DutyStudy {
+        runs,
+        paper: Some(PaperStudy {
+            dynamic: d,
+            quasi_static: q,
+            wear_states,
+        }),
+        life: Some(life),
+    })
+}

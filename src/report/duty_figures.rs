@@ -1,0 +1,237 @@
+//! Figures of a duty cycle, each with the table of exactly its data: the spectrum, the
+//! wear each bin added along the profile, the dynamic factor of each bin as the flanks
+//! wear, and the lives under the spectrum and at each bin alone.
+
+use super::figures::{panel, points_panel, Curve};
+use super::plot::{
+    sequential_color, ColorBar, Figure, LineStyle, Marker, Panel, PanelKind, Series,
+};
+use crate::config::LoadSpectrumSection;
+use crate::duty::contribution::{dynamic_factors, BinWear};
+use crate::duty::life::LifeTable;
+use crate::duty::wear::SpectrumRun;
+use crate::geometry::ProfileGrid;
+use crate::io::Table;
+
+/// A figure, its file stem and the table of exactly its data.
+pub struct DutyFigure {
+    pub stem: String,
+    pub figure: Figure,
+    pub table: Table,
+}
+
+/// Share of the time of each bin: (s_i / f_i) / sum_j (s_j / f_j).
+pub fn time_shares(s: &LoadSpectrumSection) -> Vec<f64> {
+    let total = s.seconds_per_cycle();
+    (0..s.bins.len())
+        .map(|i| s.bins[i].share / s.input_speed_hz(i) / total)
+        .collect()
+}
+
+/// The spectrum: the bins on the torque x speed plane coloured by their share of the
+/// cycles, and the shares of cycles, time and (when a run is given) pinion wear per bin.
+pub fn spectrum_figure(s: &LoadSpectrumSection, ranking: Option<&[BinWear]>) -> DutyFigure {
+    let n = s.bins.len();
+    let bin_no: Vec<f64> = (1..=n).map(|i| i as f64).collect();
+    let torque: Vec<f64> = (0..n).map(|i| s.torque_nm(i)).collect();
+    let speed: Vec<f64> = (0..n).map(|i| s.input_speed_hz(i)).collect();
+    let cycles: Vec<f64> = s.bins.iter().map(|b| 100.0 * b.share).collect();
+    let time: Vec<f64> = time_shares(s).iter().map(|x| 100.0 * x).collect();
+    let top = cycles.iter().fold(0.0_f64, |a, b| a.max(*b)).max(1e-12);
+    let plane = Panel {
+        title: "bins (colour: share of the load cycles)".into(),
+        x_label: "input speed (Hz)".into(),
+        y_label: "torque (N m)".into(),
+        series: (0..n)
+            .map(|i| Series {
+                x: vec![speed[i]],
+                y: vec![torque[i]],
+                style: LineStyle::Points,
+                marker: Marker::Circle,
+                color: Some(sequential_color(cycles[i] / top)),
+                ..Default::default()
+            })
+            .collect(),
+        color_bar: Some(ColorBar {
+            label: "share of cycles (%)".into(),
+            min: 0.0,
+            max: top,
+        }),
+        ..Default::default()
+    };
+    // Stems side by side: cycles at the bin number, time and wear just right of it.
+    let mut shares = vec![
+        Series {
+            name: "share of cycles".into(),
+            x: bin_no.clone(),
+            y: cycles.clone(),
+            ..Default::default()
+        },
+        Series {
+            name: "share of time".into(),
+            x: bin_no.iter().map(|b| b + 0.15).collect(),
+            y: time.clone(),
+            ..Default::default()
+        },
+    ];
+    let mut table = Table::new()
+        .col("bin", bin_no.clone())
+        .col("torque_nm", torque)
+        .col("input_speed_hz", speed)
+        .col("share_of_cycles_percent", cycles)
+        .col("share_of_time_percent", time);
+    if let Some(r) = ranking {
+        let mut wear = vec![0.0; n];
+        for b in r {
+            wear[b.bin - 1] = 100.0 * b.share_of_pinion_wear;
+        }
+        shares.push(Series {
+            name: "share of pinion wear".into(),
+            x: bin_no.iter().map(|b| b + 0.3).collect(),
+            y: wear.clone(),
+            ..Default::default()
+        });
+        table = table.col("share_of_pinion_wear_percent", wear);
+    }
+    DutyFigure {
+        stem: "duty_spectrum".into(),
+        figure: Figure {
+            title: "Load spectrum".into(),
+            panels: vec![
+                plane,
+                Panel {
+                    x_label: "bin".into(),
+                    y_label: "share (%)".into(),
+                    series: shares,
+                    kind: PanelKind::Bars,
+                    ..Default::default()
+                },
+            ],
+        },
+        table,
+    }
+}
+
+/// Pinion and gear wear along the profile at the end of `run`: the total and what each
+/// bin added.
+pub fn wear_by_bin_figure(grid: &ProfileGrid, run: &SpectrumRun) -> Option<DutyFigure> {
+    let last = run.records.last()?;
+    let m = run.mode.name();
+    let rho: Vec<f64> = grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
+    let um = |v: &[f64]| v.iter().map(|x| x * 1e6).collect::<Vec<f64>>();
+    let mut table = Table::new()
+        .col("rho1_mm", rho.clone())
+        .col("wear_pinion_total_um", um(&last.wear.pinion_m))
+        .col("wear_gear_total_um", um(&last.wear.gear_m));
+    let mut panels = Vec::new();
+    for (name, total, parts) in [
+        ("pinion", &last.wear.pinion_m, &last.by_bin_pinion_m),
+        ("gear", &last.wear.gear_m, &last.by_bin_gear_m),
+    ] {
+        let mut curves = vec![Curve::new("all bins", rho.clone(), um(total))];
+        for (i, p) in parts.iter().enumerate() {
+            curves.push(Curve::new(format!("bin {}", i + 1), rho.clone(), um(p)));
+            table = table.col(&format!("wear_{name}_bin{}_um", i + 1), um(p));
+        }
+        panels.push(panel(
+            "pinion roll distance along the path of contact (mm)",
+            &format!("{name} wear depth (µm)"),
+            curves,
+        ));
+    }
+    Some(DutyFigure {
+        stem: format!("duty_wear_by_bin_{m}"),
+        figure: Figure {
+            title: format!(
+                "Wear added by each bin of the spectrum, {} cycles ({})",
+                crate::io::format_number(last.wear.cycles),
+                run.mode.label()
+            ),
+            panels,
+        },
+        table,
+    })
+}
+
+/// The dynamic factor (max / mean mesh force) of each bin at every update.
+pub fn dynamic_factor_figure(run: &SpectrumRun) -> DutyFigure {
+    let cycles = run.cycles();
+    let df = dynamic_factors(run);
+    let nb = df.first().map_or(0, Vec::len);
+    let mut table = Table::new().col("cycles", cycles.clone());
+    let mut curves = Vec::new();
+    for i in 0..nb {
+        let y: Vec<f64> = df.iter().map(|r| r[i]).collect();
+        table = table.col(&format!("dynamic_factor_bin{}", i + 1), y.clone());
+        curves.push(Curve::new(format!("bin {}", i + 1), cycles.clone(), y));
+    }
+    DutyFigure {
+        stem: format!("duty_dynamic_factor_{}", run.mode.name()),
+        figure: Figure {
+            title: format!(
+                "Dynamic factor of each bin as the flanks wear ({})",
+                run.mode.label()
+            ),
+            panels: vec![points_panel(
+                "load cycles of the spectrum",
+                "dynamic factor (max / mean mesh force)",
+                curves,
+            )],
+        },
+        table,
+    }
+}
+
+/// Lives to the wear limit: under the spectrum, at each bin alone, and the linear mix.
+pub fn life_figure(life: &LifeTable) -> DutyFigure {
+    let n = life.bins.len();
+    let x: Vec<f64> = (1..=n).map(|i| i as f64).collect();
+    let bins: Vec<f64> = life
+        .bins
+        .iter()
+        .map(|b| b.life.cycles().unwrap_or(f64::NAN))
+        .collect();
+    let spectrum = life.spectrum.cycles().unwrap_or(f64::NAN);
+    let mix = life.linear_mix_cycles.unwrap_or(f64::NAN);
+    let table = Table::new()
+        .col("bin", x.clone())
+        .col("life_at_bin_alone_cycles", bins.clone())
+        .col("life_under_spectrum_cycles", vec![spectrum; n])
+        .col("life_linear_mix_cycles", vec![mix; n]);
+    let flat = |v: f64, name: &str, style| Series {
+        name: name.into(),
+        x: vec![0.5, n as f64 + 0.5],
+        y: vec![v, v],
+        style,
+        ..Default::default()
+    };
+    DutyFigure {
+        stem: "duty_life".into(),
+        figure: Figure {
+            title: format!(
+                "Cycles to {} µm of pinion wear ({})",
+                life.limit_um,
+                life.mode.label()
+            ),
+            panels: vec![Panel {
+                x_label: "bin".into(),
+                y_label: "load cycles to the limit".into(),
+                series: vec![
+                    Series {
+                        name: "each bin alone".into(),
+                        x,
+                        y: bins,
+                        style: LineStyle::Points,
+                        marker: Marker::Square,
+                        ..Default::default()
+                    },
+                    flat(spectrum, "under the spectrum", LineStyle::Solid),
+                    flat(mix, "linear mix of the bins", LineStyle::Dashed),
+                ],
+                log_y: true,
+                ..Default::default()
+            }],
+        },
+        table,
+    }
+}

@@ -1,0 +1,95 @@
+//! What a monitoring system computes from a record: per accelerometer channel, the
+//! indicators of the whole signal and, per shaft, the TSA by tachometer angle with its
+//! derived signals and indicators.
+
+use super::chain::{Shaft, TachometerSpec};
+use super::components::{components, ComponentSettings, Components};
+use super::indicators::{ShaftIndicators, SignalIndicators};
+use super::record::{Kinematics, Record};
+use super::tachometer::rising_edges;
+use super::tsa::{synchronous_average, Tsa};
+use serde::{Deserialize, Serialize};
+
+/// The TSA of one shaft on one channel, its derived signals and indicators.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShaftAnalysis {
+    pub shaft: Shaft,
+    pub tsa: Tsa,
+    pub components: Components,
+    pub indicators: ShaftIndicators,
+}
+
+/// One channel's analysis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChannelAnalysis {
+    pub name: String,
+    pub signal: SignalIndicators,
+    /// Pinion and gear shafts, where the record holds a complete revolution.
+    pub shafts: Vec<ShaftAnalysis>,
+}
+
+/// The indicators of a channel, as written to summaries and index tables.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ChannelIndicators {
+    pub channel: String,
+    #[serde(flatten)]
+    pub signal: SignalIndicators,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pinion: Option<ShaftIndicators>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gear: Option<ShaftIndicators>,
+}
+
+impl ChannelAnalysis {
+    pub fn indicators(&self) -> ChannelIndicators {
+        let of = |s: Shaft| {
+            self.shafts
+                .iter()
+                .find(|a| a.shaft == s)
+                .map(|a| a.indicators)
+        };
+        ChannelIndicators {
+            channel: self.name.clone(),
+            signal: self.signal,
+            pinion: of(Shaft::Pinion),
+            gear: of(Shaft::Gear),
+        }
+    }
+}
+
+/// Analyse every channel of `record`: the tachometer's pulse times, then per channel
+/// the signal indicators and the TSA of each shaft (mesh order = that shaft's teeth).
+pub fn analyse(
+    record: &Record,
+    kin: &Kinematics,
+    tach: &TachometerSpec,
+    settings: ComponentSettings,
+) -> Vec<ChannelAnalysis> {
+    let fs = record.sampling_rate_hz;
+    let edges = rising_edges(&record.tachometer_v, fs);
+    record
+        .channels
+        .iter()
+        .map(|(name, x)| ChannelAnalysis {
+            name: name.clone(),
+            signal: SignalIndicators::of(x),
+            shafts: [Shaft::Pinion, Shaft::Gear]
+                .into_iter()
+                .filter_map(|shaft| {
+                    let ratio = kin.ratio(shaft, tach.shaft);
+                    let tsa =
+                        synchronous_average(x, fs, &edges, tach.pulses_per_revolution, ratio)?;
+                    let z = shaft.teeth(kin.teeth_pinion, kin.teeth_gear);
+                    let c = components(&tsa.values, z, settings);
+                    let indicators = ShaftIndicators::of(&tsa.values, &c, tsa.revolutions);
+                    Some(ShaftAnalysis {
+                        shaft,
+                        tsa,
+                        components: c,
+                        indicators,
+                    })
+                })
+                .collect(),
+        })
+        .collect()
+}

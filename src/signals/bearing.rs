@@ -1,0 +1,77 @@
+//! The forces the shafts exert on the housing through their bearings: what drives the
+//! transfer path to the sensors.
+//!
+//! The bearings of paper eq. (1) are springs and dampers between each gear's centre and
+//! the housing, in x and y: the force on the housing is +k_b q + c_b dq/dt for q = x_p,
+//! y_p (pinion bearing) and x_g, y_g (gear bearing), the reaction of the restoring force
+//! -k_b q - c_b dq/dt on the gear body.
+
+use crate::dynamics::model::dof;
+use crate::dynamics::params::DynamicParams;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::summary::evaluated_periods;
+
+/// Bearing forces on the housing over one period of a periodic response, N, in
+/// `signals::transfer::INPUTS` order, with the times of the samples.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BearingForces {
+    pub time_s: Vec<f64>,
+    pub force_n: [Vec<f64>; 4],
+    /// Length of the period, s.
+    pub period_s: f64,
+}
+
+/// Period of a periodic steady-state response, s: the period its recorded window
+/// repeats (one mesh period for identical teeth, the tooth-resolved mesh's period, up to
+/// the hunting period lcm(z1, z2) mesh periods, otherwise).
+pub fn response_period_s(r: &DynamicResponse) -> f64 {
+    r.mesh_period_s * r.excitation_periods.max(1) as f64
+}
+
+/// The bearing forces over the first period of the response's recorded window.
+pub fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
+    let s = &r.signals;
+    let period = response_period_s(r);
+    let t0 = s.time_s.first().copied().unwrap_or(0.0);
+    // The window holds whole periods; keep the samples of the first (a sample within
+    // 1e-9 of a period of the next period's start belongs to the next).
+    let n = if evaluated_periods(r) > r.excitation_periods.max(1) {
+        s.time_s
+            .partition_point(|t| *t < t0 + period * (1.0 - 1e-9))
+    } else {
+        s.time_s.len()
+    };
+    let l = &params.lumped;
+    let spring = [
+        (
+            dof::XP,
+            l.bearing_stiffness_pinion_n_per_m,
+            l.bearing_damping_pinion_n_s_per_m,
+        ),
+        (
+            dof::YP,
+            l.bearing_stiffness_pinion_n_per_m,
+            l.bearing_damping_pinion_n_s_per_m,
+        ),
+        (
+            dof::XG,
+            l.bearing_stiffness_gear_n_per_m,
+            l.bearing_damping_gear_n_s_per_m,
+        ),
+        (
+            dof::YG,
+            l.bearing_stiffness_gear_n_per_m,
+            l.bearing_damping_gear_n_s_per_m,
+        ),
+    ];
+    let force_n = spring.map(|(i, k, c)| {
+        (0..n)
+            .map(|m| k * s.displacement[m][i] + c * s.velocity[m][i])
+            .collect()
+    });
+    BearingForces {
+        time_s: s.time_s[..n].to_vec(),
+        force_n,
+        period_s: period,
+    }
+}

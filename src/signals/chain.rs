@@ -1,0 +1,87 @@
+//! The signal chain of a record: transfer path, acquisition, tachometer, record length.
+
+use super::transfer::TransferPath;
+pub use crate::config::signals::{ChannelUnit, Shaft};
+use serde::{Deserialize, Serialize};
+
+pub use crate::config::signals::STANDARD_GRAVITY;
+/// Additive measurement noise.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NoiseSpec {
+    None,
+    /// Signal-to-noise ratio of each channel, dB (powers).
+    SnrDb(f64),
+    /// One-sided amplitude spectral density, ug/sqrt(Hz) (accelerometer data sheets).
+    DensityUgPerSqrtHz(f64),
+}
+
+/// Sampling and conversion.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Acquisition {
+    pub sampling_rate_hz: f64,
+    /// Stopband attenuation of the anti-alias filter at and above f_s / 2, dB.
+    pub anti_alias_attenuation_db: f64,
+    pub unit: ChannelUnit,
+    pub sensitivity_mv_per_g: f64,
+    pub noise: NoiseSpec,
+    pub noise_seed: u64,
+}
+
+/// The tachometer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct TachometerSpec {
+    pub shaft: Shaft,
+    pub pulses_per_revolution: usize,
+}
+
+/// How long a record is.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RecordLength {
+    Seconds(f64),
+    /// Revolutions of the tachometer's shaft.
+    Revolutions(f64),
+}
+
+/// Everything between the gear pair and a recorded file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SignalChain {
+    pub path: TransferPath,
+    pub acquisition: Acquisition,
+    pub tachometer: TachometerSpec,
+    pub length: RecordLength,
+}
+
+impl SignalChain {
+    /// The default chain: generic housing, 25.6 kHz, 100 dB anti-alias filter, m/s^2,
+    /// 100 mV/g, no noise, one pulse per pinion revolution, 1 s.
+    pub fn default_chain() -> Self {
+        Self {
+            path: TransferPath::generic_housing(),
+            acquisition: Acquisition {
+                sampling_rate_hz: 25_600.0,
+                anti_alias_attenuation_db: 100.0,
+                unit: ChannelUnit::MetrePerSecond2,
+                sensitivity_mv_per_g: 100.0,
+                noise: NoiseSpec::None,
+                noise_seed: 0,
+            },
+            tachometer: TachometerSpec {
+                shaft: Shaft::Pinion,
+                pulses_per_revolution: 1,
+            },
+            length: RecordLength::Seconds(1.0),
+        }
+    }
+
+    /// Samples of a record for a tachometer shaft turning at `shaft_hz`.
+    pub fn samples(&self, shaft_hz: f64) -> usize {
+        let fs = self.acquisition.sampling_rate_hz;
+        let seconds = match self.length {
+            RecordLength::Seconds(s) => s,
+            RecordLength::Revolutions(r) => r / shaft_hz,
+        };
+        (seconds * fs).ceil().max(1.0) as usize
+    }
+}

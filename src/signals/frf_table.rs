@@ -1,0 +1,227 @@
+//! A measured transfer path: a table of accelerances (FRFs) from the bearing-force inputs
+//! to the sensors, read from CSV.
+//!
+//! Format (one row per frequency, sensor and input; `#` starts a comment line):
+//!
+//! ```text
+//! frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n
+//! 0,input,pinion_y,0,0
+//! 100,input,pinion_y,-0.0012,0.0001
+//! ...
+//! ```
+//!
+//! `input` is one of `pinion_x`, `pinion_y`, `gear_x`, `gear_y`; sensors are named freely
+//! and become the channels, in the order they first appear. For each sensor and input
+//! the frequencies must be non-negative and strictly increasing. A pair that is absent
+//! transmits nothing. Between rows the real and imaginary parts are interpolated
+//! linearly; below the first frequency the accelerance falls as f^2 (that of any
+//! structure held to the ground, A ~ -omega^2 / k at low frequency); above the last it is
+//! taken as zero (the table says nothing there, and the caller warns when the recorded
+//! band reaches beyond it).
+
+use super::transfer::INPUTS;
+use realfft::num_complex::Complex64;
+
+/// One FRF: frequencies (ascending) and complex accelerances.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Frf {
+    pub frequency_hz: Vec<f64>,
+    pub value: Vec<Complex64>,
+}
+
+impl Frf {
+    /// Accelerance at `f_hz` (module docs for the ends).
+    pub fn at(&self, f_hz: f64) -> Complex64 {
+        let f = &self.frequency_hz;
+        let Some((&first, &last)) = f.first().zip(f.last()) else {
+            return Complex64::new(0.0, 0.0);
+        };
+        if f_hz > last {
+            return Complex64::new(0.0, 0.0);
+        }
+        if f_hz <= first {
+            return if first > 0.0 {
+                self.value[0] * (f_hz / first).powi(2)
+            } else {
+                self.value[0]
+            };
+        }
+        let j = f.partition_point(|x| *x < f_hz);
+        let w = (f_hz - f[j - 1]) / (f[j] - f[j - 1]);
+        self.value[j - 1] * (1.0 - w) + self.value[j] * w
+    }
+}
+
+/// A table of FRFs per sensor and input.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrfTable {
+    pub sensors: Vec<String>,
+    /// `frf[s][j]`: sensor s, input j ([`INPUTS`] order).
+    pub frf: Vec<[Frf; 4]>,
+}
+
+impl FrfTable {
+    pub fn at(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
+        self.frf[s][j].at(f_hz)
+    }
+
+    /// Highest frequency any FRF of the table covers, Hz.
+    pub fn max_frequency_hz(&self) -> f64 {
+        self.frf
+            .iter()
+            .flat_map(|row| row.iter())
+            .filter_map(|f| f.frequency_hz.last().copied())
+            .fold(0.0, f64::max)
+    }
+}
+
+const HEADER: [&str; 5] = [
+    "frequency_hz",
+    "sensor",
+    "input",
+    "real_m_per_s2_per_n",
+    "imag_m_per_s2_per_n",
+];
+
+/// Parse an FRF table; `source` names the file in messages. Every problem is returned,
+/// each with its line.
+pub fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(text.as_bytes());
+    let header: Vec<String> = match rdr.headers() {
+        Ok(h) => h.iter().map(str::to_owned).collect(),
+        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")]),
+    };
+    if header != HEADER {
+        return Err(vec![format!(
+            "{source}: the header is `{}`, expected `{}`",
+            header.join(","),
+            HEADER.join(",")
+        )]);
+    }
+    let mut problems = Vec::new();
+    let mut table = FrfTable {
+        sensors: Vec::new(),
+        frf: Vec::new(),
+    };
+    for rec in rdr.records() {
+        let rec = match rec {
+            Ok(r) => r,
+            Err(e) => {
+                problems.push(format!("{source}: {e}"));
+                continue;
+            }
+        };
+        let line = rec.position().map_or(0, |p| p.line());
+        let at = format!("{source}, line {line}");
+        let num = |i: usize, what: &str, problems: &mut Vec<String>| -> Option<f64> {
+            match rec[i].parse::<f64>() {
+                Ok(x) if x.is_finite() => Some(x),
+                _ => {
+                    problems.push(format!(
+                        "{at}: `{what}` = `{}` is not a finite number",
+                        &rec[i]
+                    ));
+                    None
+                }
+            }
+        };
+        let (f, re, im) = (
+            num(0, HEADER[0], &mut problems),
+            num(3, HEADER[3], &mut problems),
+            num(4, HEADER[4], &mut problems),
+        );
+        let Some(j) = INPUTS.iter().position(|n| *n == &rec[2]) else {
+            problems.push(format!(
+                "{at}: `input` = `{}` is not a bearing-force input; expected one of {}",
+                &rec[2],
+                INPUTS.join(", ")
+            ));
+            continue;
+        };
+        if rec[1].is_empty() {
+            problems.push(format!("{at}: `sensor` is empty"));
+            continue;
+        }
+        let (Some(f), Some(re), Some(im)) = (f, re, im) else {
+            continue;
+        };
+        let s = match table.sensors.iter().position(|n| n == &rec[1]) {
+            Some(s) => s,
+            None => {
+                table.sensors.push(rec[1].to_owned());
+                table.frf.push(Default::default());
+                table.sensors.len() - 1
+            }
+        };
+        let frf = &mut table.frf[s][j];
+        if f < 0.0 {
+            problems.push(format!(
+                "{at}: `frequency_hz` = {f} is negative; frequencies must be >= 0"
+            ));
+            continue;
+        }
+        if let Some(&prev) = frf.frequency_hz.last() {
+            if f <= prev {
+                problems.push(format!(
+                    "{at}: `frequency_hz` = {f} for sensor `{}`, input `{}` is not above the previous row's {prev}; frequencies must increase strictly",
+                    &rec[1], &rec[2]
+                ));
+                continue;
+            }
+        }
+        frf.frequency_hz.push(f);
+        frf.value.push(Complex64::new(re, im));
+    }
+    if table.sensors.is_empty() && problems.is_empty() {
+        problems.push(format!("{source}: no rows"));
+    }
+    if problems.is_empty() {
+        Ok(table)
+    } else {
+        Err(problems)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolates_and_extends_as_documented() {
+        let text = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n\
+                    # a comment\n\
+                    100,top,pinion_y,1,0\n200,top,pinion_y,3,-2\n";
+        let t = parse_frf_table(text, "frf.csv").unwrap();
+        assert_eq!(t.sensors, vec!["top".to_string()]);
+        let v = t.at(0, 1, 150.0);
+        assert!((v - Complex64::new(2.0, -1.0)).norm() < 1e-15);
+        // f^2 below the first row, zero above the last, zero for an absent pair.
+        assert!((t.at(0, 1, 50.0) - Complex64::new(0.25, 0.0)).norm() < 1e-15);
+        assert_eq!(t.at(0, 1, 201.0), Complex64::new(0.0, 0.0));
+        assert_eq!(t.at(0, 0, 150.0), Complex64::new(0.0, 0.0));
+        assert_eq!(t.max_frequency_hz(), 200.0);
+    }
+
+    #[test]
+    fn unsorted_and_negative_frequencies_are_refused_with_their_lines() {
+        let text = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n\
+                    -5,top,pinion_y,1,0\n100,top,pinion_y,1,0\n90,top,pinion_y,1,0\n\
+                    10,top,shaft,1,0\n";
+        let e = parse_frf_table(text, "frf.csv").unwrap_err();
+        assert_eq!(e.len(), 3, "{e:?}");
+        assert!(
+            e[0].contains("line 2") && e[0].contains("negative"),
+            "{}",
+            e[0]
+        );
+        assert!(
+            e[1].contains("line 4") && e[1].contains("increase strictly"),
+            "{}",
+            e[1]
+        );
+        assert!(e[2].contains("`shaft`"), "{}", e[2]);
+    }
+}

@@ -1,0 +1,264 @@
+//! Condition indicators: the standard definitions (docs/SIGNALS.md lists them with their
+//! sources).
+//!
+//! With x̄ the mean and N samples, the normalised moment of order p is
+//! N^(p/2 - 1) sum (x - x̄)^p / (sum (x - x̄)^2)^(p/2).
+//!
+//! Of the recorded signal (Večeř, Kreidl & Šmíd 2005, Acta Polytechnica 45(6)):
+//! - RMS = sqrt(mean x^2); crest factor CF = max |x| / RMS; kurtosis = moment 4
+//!   (1.5 for a sine, 3 for Gaussian noise).
+//!
+//! Of the TSA of a shaft and its derived signals (`super::components`):
+//! - FM0 = (max - min of the TSA) / sum_h A(h z) (Stewart 1977; Zakrajsek et al. 1993),
+//!   A the amplitude of the mesh harmonics in the TSA's band: 2 for a pure mesh tone;
+//! - FM4 = moment 4 of the difference signal (Stewart 1977);
+//! - M6A, M8A = moments 6 and 8 of the difference signal (Martin 1989);
+//! - NA4 = N sum (r - r̄)^4 / [(1/M) sum_j sum_i (r_ij - r̄_j)^2]^2, r the residual
+//!   signal of the current record and the mean in brackets over the residual variances
+//!   of the M records of the run so far, the current one included (Zakrajsek 1993): with
+//!   M = 1 it is the residual's kurtosis;
+//! - NB4 = NA4 with the envelope of the band-pass signal in place of the residual
+//!   (Zakrajsek, Handschuh & Decker 1994);
+//! - ER = RMS(difference) / RMS(regular) (energy ratio, Swansson 1980);
+//! - a derived signal with nothing above round-off (RMS below 1e-12 of the TSA's) has
+//!   no shape, and its moment indicators are reported as 0;
+//! - sideband level factor SLF = (A(z - 1) + A(z + 1)) / RMS(TSA) and sideband index
+//!   SI = (A(z - 1) + A(z + 1)) / 2, the first-order sidebands of the mesh fundamental
+//!   (Lebold et al. 2000).
+
+use super::components::Components;
+use serde::{Deserialize, Serialize};
+
+/// Mean of `x`.
+fn mean(x: &[f64]) -> f64 {
+    x.iter().sum::<f64>() / x.len().max(1) as f64
+}
+
+/// sum (x - x̄)^p.
+fn central_sum(x: &[f64], p: i32) -> f64 {
+    let m = mean(x);
+    x.iter().map(|v| (v - m).powi(p)).sum()
+}
+
+/// Normalised central moment of order `p` (module docs); 0 for a constant signal.
+pub fn normalised_moment(x: &[f64], p: i32) -> f64 {
+    let n = x.len() as f64;
+    let s2 = central_sum(x, 2);
+    if s2 <= 0.0 {
+        return 0.0;
+    }
+    n.powi(p / 2 - 1) * central_sum(x, p) / s2.powi(p / 2)
+}
+
+pub fn rms(x: &[f64]) -> f64 {
+    (x.iter().map(|v| v * v).sum::<f64>() / x.len().max(1) as f64).sqrt()
+}
+
+pub fn crest_factor(x: &[f64]) -> f64 {
+    let r = rms(x);
+    if r > 0.0 {
+        x.iter().fold(0.0, |m: f64, v| m.max(v.abs())) / r
+    } else {
+        0.0
+    }
+}
+
+pub fn kurtosis(x: &[f64]) -> f64 {
+    normalised_moment(x, 4)
+}
+
+/// Variance of `x` about its mean (for NA4's and NB4's history).
+pub fn variance(x: &[f64]) -> f64 {
+    central_sum(x, 2) / x.len().max(1) as f64
+}
+
+/// NA4 (or NB4) of `x` given the variances of the earlier records of the run; the
+/// current record's variance is added to the mean (module docs).
+pub fn na4(x: &[f64], earlier_variances: &[f64]) -> f64 {
+    let v = variance(x);
+    let mean_var =
+        (earlier_variances.iter().sum::<f64>() + v) / (earlier_variances.len() + 1) as f64;
+    if mean_var <= 0.0 {
+        return 0.0;
+    }
+    central_sum(x, 4) / x.len().max(1) as f64 / (mean_var * mean_var)
+}
+
+/// Indicators of the whole recorded signal.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct SignalIndicators {
+    pub rms: f64,
+    pub crest_factor: f64,
+    pub kurtosis: f64,
+}
+
+impl SignalIndicators {
+    pub fn of(x: &[f64]) -> Self {
+        Self {
+            rms: rms(x),
+            crest_factor: crest_factor(x),
+            kurtosis: kurtosis(x),
+        }
+    }
+}
+
+/// Indicators of the TSA of one shaft. NA4 and NB4 are those of the record alone (M = 1);
+/// `residual_variance` and `envelope_variance` let a run's later records form theirs.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct ShaftIndicators {
+    pub revolutions: usize,
+    pub tsa_rms: f64,
+    pub fm0: f64,
+    pub fm4: f64,
+    pub m6a: f64,
+    pub m8a: f64,
+    pub na4: f64,
+    pub nb4: f64,
+    pub energy_ratio: f64,
+    pub sideband_level_factor: f64,
+    pub sideband_index: f64,
+    pub residual_variance: f64,
+    pub envelope_variance: f64,
+}
+
+impl ShaftIndicators {
+    /// The indicators of a TSA (its samples and derived signals), `revolutions` averaged.
+    pub fn of(tsa: &[f64], c: &Components, revolutions: usize) -> Self {
+        let pp = tsa.iter().fold(f64::MIN, |m, v| m.max(*v))
+            - tsa.iter().fold(f64::MAX, |m, v| m.min(*v));
+        let mesh_sum: f64 = c.mesh_harmonics().map(|k| c.order_amplitude(k)).sum();
+        let z = c.mesh_order;
+        let sidebands = c.order_amplitude(z - 1) + c.order_amplitude(z + 1);
+        let tsa_rms = {
+            let m = mean(tsa);
+            (tsa.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / tsa.len().max(1) as f64).sqrt()
+        };
+        let regular_rms = rms(&c.regular);
+        // A derived signal with nothing above round-off has no shape: its moments are
+        // ratios of rounding errors. Below 1e-12 of the TSA's RMS they are reported as 0.
+        let floor = 1e-12 * tsa_rms;
+        let shaped = |x: &[f64]| variance(x).sqrt() > floor;
+        let moment = |x: &[f64], p: i32| {
+            if shaped(x) {
+                normalised_moment(x, p)
+            } else {
+                0.0
+            }
+        };
+        Self {
+            revolutions,
+            tsa_rms,
+            fm0: if mesh_sum > 0.0 { pp / mesh_sum } else { 0.0 },
+            fm4: moment(&c.difference, 4),
+            m6a: moment(&c.difference, 6),
+            m8a: moment(&c.difference, 8),
+            na4: if shaped(&c.residual) {
+                na4(&c.residual, &[])
+            } else {
+                0.0
+            },
+            nb4: if shaped(&c.envelope) {
+                na4(&c.envelope, &[])
+            } else {
+                0.0
+            },
+            energy_ratio: if regular_rms > 0.0 {
+                rms(&c.difference) / regular_rms
+            } else {
+                0.0
+            },
+            sideband_level_factor: if tsa_rms > 0.0 {
+                sidebands / tsa_rms
+            } else {
+                0.0
+            },
+            sideband_index: 0.5 * sidebands,
+            residual_variance: variance(&c.residual),
+            envelope_variance: variance(&c.envelope),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::signals::components::{components, ComponentSettings};
+    use crate::signals::noise::standard_normal;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn kurtosis_of_a_sine_is_1_5_and_of_gaussian_noise_3() {
+        // A sine over whole periods: mean(sin^4) / mean(sin^2)^2 = (3/8) / (1/4) = 1.5,
+        // exact on equally spaced samples of whole periods (round-off only).
+        let x: Vec<f64> = (0..4096)
+            .map(|i| (2.0 * PI * 7.0 * i as f64 / 4096.0).sin())
+            .collect();
+        assert!((kurtosis(&x) - 1.5).abs() < 1e-12, "{}", kurtosis(&x));
+        assert!((crest_factor(&x) - 2f64.sqrt()).abs() < 1e-12);
+        // Gaussian: 3, with standard error sqrt(24 / N) = 0.0049 at N = 1e6; 4 sigma.
+        let g = standard_normal(1, 0, 1_000_000);
+        assert!((kurtosis(&g) - 3.0).abs() < 0.02, "{}", kurtosis(&g));
+        // Moments 6 and 8 of a Gaussian: 15 and 105 (slower estimates: 10 % and 25 %).
+        assert!((normalised_moment(&g, 6) - 15.0).abs() < 1.5);
+        assert!((normalised_moment(&g, 8) - 105.0).abs() < 25.0);
+    }
+
+    #[test]
+    fn fm0_of_a_pure_mesh_tone_is_two() {
+        // TSA = A cos(z theta) with M = 1024, z = 19: peak-to-peak 2A, one mesh harmonic
+        // of amplitude A: FM0 = 2.
+        let (m, z, a) = (1024, 19, 3.7);
+        let x: Vec<f64> = (0..m)
+            .map(|i| a * (2.0 * PI * z as f64 * i as f64 / m as f64).cos())
+            .collect();
+        let c = components(&x, z, ComponentSettings::default());
+        let ind = ShaftIndicators::of(&x, &c, 1);
+        // The sampled minimum misses -A by at most A (1 - cos(pi z / M)) = 1.7e-3 A.
+        assert!((ind.fm0 - 2.0).abs() < 1.7e-3, "{}", ind.fm0);
+        // Nothing but the mesh tone: no difference signal, no sidebands.
+        assert_eq!(ind.fm4, 0.0);
+        assert!(ind.sideband_index < 1e-12 && ind.energy_ratio < 1e-12);
+    }
+
+    #[test]
+    fn na4_matches_a_hand_computation_on_a_short_signal() {
+        // r = [1, -2, 3, 0] (mean 0.5): deviations 0.5, -2.5, 2.5, -0.5;
+        // sum d^4 = 0.0625 + 39.0625 + 39.0625 + 0.0625 = 78.25; variance = 13 / 4 = 3.25.
+        // Alone: NA4 = 4 x 78.25 / 13^2 = 1.852071...
+        let r = [1.0, -2.0, 3.0, 0.0];
+        assert!((na4(&r, &[]) - 4.0 * 78.25 / 169.0).abs() < 1e-14);
+        // After two earlier records of residual variance 1 and 2: mean variance
+        // (1 + 2 + 3.25) / 3 = 2.0833..., NA4 = (78.25 / 4) / 2.0833^2 = 4.5072.
+        let want = (78.25 / 4.0) / ((6.25f64 / 3.0) * (6.25 / 3.0));
+        assert!(
+            (na4(&r, &[1.0, 2.0]) - want).abs() < 1e-13,
+            "{}",
+            na4(&r, &[1.0, 2.0])
+        );
+    }
+
+    #[test]
+    fn sidebands_and_energy_ratio_by_hand() {
+        // TSA = 2 cos(19 a) + 0.4 cos(18 a) + 0.6 cos(20 a) + 0.1 cos(7 a).
+        let (m, z) = (512, 19);
+        let x: Vec<f64> = (0..m)
+            .map(|i| {
+                let a = 2.0 * PI * i as f64 / m as f64;
+                2.0 * (19.0 * a).cos()
+                    + 0.4 * (18.0 * a).cos()
+                    + 0.6 * (20.0 * a).cos()
+                    + 0.1 * (7.0 * a).cos()
+            })
+            .collect();
+        let c = components(&x, z, ComponentSettings::default());
+        let ind = ShaftIndicators::of(&x, &c, 1);
+        let tsa_rms = ((4.0 + 0.16 + 0.36 + 0.01) / 2.0f64).sqrt();
+        assert!((ind.sideband_index - 0.5).abs() < 1e-12);
+        assert!((ind.sideband_level_factor - 1.0 / tsa_rms).abs() < 1e-12);
+        // Difference = 0.1 cos(7a); regular = the rest: ER = 0.1 / sqrt(4 + 0.16 + 0.36).
+        let er = 0.1 / (4.0f64 + 0.16 + 0.36).sqrt();
+        assert!((ind.energy_ratio - er).abs() < 1e-12);
+        // FM4 of a single sine in the difference signal: 1.5.
+        assert!((ind.fm4 - 1.5).abs() < 1e-9);
+    }
+}

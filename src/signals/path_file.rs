@@ -1,0 +1,121 @@
+//! A transfer-path file: a measured FRF table (CSV, `super::frf_table`) or a modal
+//! description (TOML):
+//!
+//! ```toml
+//! sensors = ["input", "output"]
+//! [[mode]]
+//! frequency_hz = 2100.0
+//! damping_ratio = 0.02
+//! # modal constant G_rsj per sensor (rows, in `sensors` order) and bearing-force input
+//! # (columns: pinion_x, pinion_y, gear_x, gear_y), 1/kg = m/s^2 per N above the mode
+//! gains_per_kg = [[0.0075, 0.025, 0.005, 0.02], [0.006, 0.02, 0.004, 0.016]]
+//! ```
+
+use super::frf_table::parse_frf_table;
+use super::transfer::{PathModel, StructuralMode, TransferPath};
+use serde::Deserialize;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ModalFile {
+    sensors: Vec<String>,
+    #[serde(rename = "mode")]
+    modes: Vec<ModeEntry>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ModeEntry {
+    frequency_hz: f64,
+    damping_ratio: f64,
+    gains_per_kg: Vec<Vec<f64>>,
+}
+
+/// Parse a transfer path from the text of `name` (`.csv`: FRF table, otherwise modal
+/// TOML). Every problem names the file and the entry.
+pub fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<String>> {
+    if name.to_ascii_lowercase().ends_with(".csv") {
+        let t = parse_frf_table(text, name)?;
+        return Ok(TransferPath {
+            sensors: t.sensors.clone(),
+            model: PathModel::Table(t),
+            description: format!("FRF table {name}"),
+        });
+    }
+    let f: ModalFile =
+        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message())])?;
+    let mut problems = Vec::new();
+    if f.sensors.is_empty() {
+        problems.push(format!(
+            "{name}: `sensors` is empty: name at least one sensor"
+        ));
+    }
+    if f.modes.is_empty() {
+        problems.push(format!("{name}: no [[mode]]: give at least one mode"));
+    }
+    let mut modes = Vec::new();
+    for (r, m) in f.modes.iter().enumerate() {
+        let at = format!("{name}, mode {}", r + 1);
+        if !(m.frequency_hz.is_finite() && m.frequency_hz > 0.0 && m.frequency_hz <= 1e7) {
+            problems.push(format!(
+                "{at}: `frequency_hz` = {} is invalid: expected a number in (0, 1e7]",
+                m.frequency_hz
+            ));
+        }
+        if !(m.damping_ratio.is_finite() && m.damping_ratio > 0.0 && m.damping_ratio < 1.0) {
+            problems.push(format!(
+                "{at}: `damping_ratio` = {} is invalid: expected a number in (0, 1)",
+                m.damping_ratio
+            ));
+        }
+        if m.gains_per_kg.len() != f.sensors.len() {
+            problems.push(format!(
+                "{at}: `gains_per_kg` has {} rows for {} sensors: expected one row per sensor",
+                m.gains_per_kg.len(),
+                f.sensors.len()
+            ));
+            continue;
+        }
+        let mut rows = Vec::new();
+        for (s, row) in m.gains_per_kg.iter().enumerate() {
+            if row.len() != 4 || row.iter().any(|g| !g.is_finite() || g.abs() > 1e6) {
+                problems.push(format!(
+                    "{at}: `gains_per_kg` row {} ({}) is invalid: expected 4 finite numbers within +-1e6 1/kg (pinion_x, pinion_y, gear_x, gear_y)",
+                    s + 1,
+                    f.sensors[s]
+                ));
+                continue;
+            }
+            rows.push([row[0], row[1], row[2], row[3]]);
+        }
+        modes.push(StructuralMode {
+            frequency_hz: m.frequency_hz,
+            damping_ratio: m.damping_ratio,
+            gains_per_kg: rows,
+        });
+    }
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    Ok(TransferPath {
+        sensors: f.sensors,
+        model: PathModel::Modal(modes),
+        description: format!("modal path {name}"),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn modal_file_reads_and_bad_entries_are_named() {
+        let ok = "sensors = [\"top\"]\n[[mode]]\nfrequency_hz = 3000\ndamping_ratio = 0.03\ngains_per_kg = [[0, 0.1, 0, 0.05]]\n";
+        let p = parse_transfer_path(ok, "path.toml").unwrap();
+        assert_eq!(p.sensors, vec!["top".to_string()]);
+        let bad = "sensors = [\"top\"]\n[[mode]]\nfrequency_hz = -3\ndamping_ratio = 1.5\ngains_per_kg = [[0, 0.1]]\n";
+        let e = parse_transfer_path(bad, "path.toml").unwrap_err();
+        assert_eq!(e.len(), 3, "{e:?}");
+        assert!(e[0].contains("mode 1") && e[0].contains("`frequency_hz` = -3"));
+    }
+}

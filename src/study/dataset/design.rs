@@ -1,0 +1,437 @@
+//! The study design of a labelled dataset (`design.toml`, docs/SIGNALS.md "Datasets").
+//!
+//! ```toml
+//! case = "case.toml"            # optional, relative to the design; default: built-in case
+//! set = ["signals.snr_db=30"]   # optional case overrides, as --set
+//! transfer_path = "frf.csv"     # optional; default: the generic housing
+//! seed = 7                      # every record's noise seed derives from it
+//!
+//! [run_to_failure]
+//! states = 5                    # states evenly spaced from 0 to the trajectory's end, or
+//! cycles = [0, 1e4, 2e4]        # ... the pinion cycle counts of the states
+//! max_cycles = 4e4              # longest trajectory (default: the case's wear.total_cycles)
+//! wear_limit_um = 10            # failure: the deepest wear (pinion or gear) reaches this
+//!
+//! [operating]                   # every state is recorded at each speed x load
+//! input_speed_hz = [20, 30]     # default: the case's
+//! load_torque_nm = [40, 60]     # default: the case's
+//!
+//! [records]
+//! noise_realisations = 10       # records per physical state, each its own noise
+//! csv = false                   # a PHM 2009-style CSV per record as well
+//! disk_budget_gib = 10          # refuse a dataset estimated larger than this
+//!
+//! [[condition]]                 # fault types and severities (default: one, "none")
+//! name = "healthy"
+//! fault = "none"
+//! severity = 0.0
+//! [condition.case]              # merged into the case: any keys of the case file
+//! ```
+
+use crate::config::{load_case, Case};
+use serde::Deserialize;
+use toml::{Table, Value};
+
+/// Problems of a design, one message each, naming the key (`design.toml: key ...`).
+pub type DesignErrors = Vec<String>;
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct DesignFile {
+    case: Option<String>,
+    #[serde(default)]
+    set: Vec<String>,
+    transfer_path: Option<String>,
+    #[serde(default)]
+    seed: u64,
+    #[serde(default)]
+    run_to_failure: RunToFailureFile,
+    #[serde(default)]
+    operating: OperatingFile,
+    #[serde(default)]
+    records: RecordsFile,
+    #[serde(default)]
+    condition: Vec<ConditionFile>,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RunToFailureFile {
+    states: Option<i64>,
+    cycles: Option<Vec<f64>>,
+    max_cycles: Option<f64>,
+    wear_limit_um: Option<f64>,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct OperatingFile {
+    input_speed_hz: Option<Vec<f64>>,
+    load_torque_nm: Option<Vec<f64>>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct RecordsFile {
+    noise_realisations: i64,
+    csv: bool,
+    disk_budget_gib: f64,
+}
+
+impl Default for RecordsFile {
+    fn default() -> Self {
+        Self {
+            noise_realisations: 1,
+            csv: false,
+            disk_budget_gib: 10.0,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ConditionFile {
+    name: String,
+    #[serde(default = "none")]
+    fault: String,
+    #[serde(default)]
+    severity: f64,
+    #[serde(default)]
+    case: Table,
+}
+
+fn none() -> String {
+    "none".into()
+}
+
+/// Which states of a wear trajectory are recorded.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StateChoice {
+    /// This many, evenly spaced in cycles from 0 to the trajectory's end.
+    Count(usize),
+    /// At these pinion cycle counts (ascending).
+    Cycles(Vec<f64>),
+}
+
+/// A fault type and severity: the case it is modelled by, and its labels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    pub name: String,
+    pub fault: String,
+    pub severity: f64,
+    /// The resolved case of this condition at the design's base operating point.
+    pub case: Case,
+}
+
+/// A validated design.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DatasetDesign {
+    pub seed: u64,
+    /// The transfer-path file, as written in the design (resolved against its folder).
+    pub transfer_path: Option<std::path::PathBuf>,
+    pub states: StateChoice,
+    pub max_cycles: f64,
+    pub wear_limit_um: f64,
+    pub speeds_hz: Vec<f64>,
+    pub torques_nm: Vec<f64>,
+    pub noise_realisations: usize,
+    pub csv: bool,
+    pub disk_budget_gib: f64,
+    pub conditions: Vec<Condition>,
+    /// The design's text, for the metadata.
+    pub text: String,
+}
+
+/// Deep merge of `over` into `base` (tables merged key by key, other values replaced).
+fn merge(base: &mut Table, over: &Table) {
+    for (k, v) in over {
+        match (base.get_mut(k), v) {
+            (Some(Value::Table(b)), Value::Table(o)) => merge(b, o),
+            _ => {
+                base.insert(k.clone(), v.clone());
+            }
+        }
+    }
+}
+
+/// Parse and validate a design. `name` names the file in messages; `read` returns the
+/// text of the `case` file it names (the caller resolves it against the design's folder).
+pub fn parse_design(
+    text: &str,
+    name: &str,
+    read: &dyn Fn(&str) -> Result<String, String>,
+) -> Result<DatasetDesign, DesignErrors> {
+    let f: DesignFile =
+        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message().trim())])?;
+    let mut p = Vec::new();
+    let key = |k: &str| format!("{name}: `{k}`");
+    let base_text = match &f.case {
+        Some(path) => match read(path) {
+            Ok(t) => t,
+            Err(e) => {
+                return Err(vec![format!(
+                    "{}: cannot read the case file {path}: {e}",
+                    key("case")
+                )])
+            }
+        },
+        None => String::new(),
+    };
+    let base: Table = match toml::from_str(&base_text) {
+        Ok(t) => t,
+        Err(e) => {
+            return Err(vec![format!(
+                "{}: the case file is not valid TOML: {}",
+                key("case"),
+                e.message().trim()
+            )])
+        }
+    };
+    let base_case = match load_case(&base_text, &f.set) {
+        Ok(c) => c,
+        Err(e) => {
+            return Err(e
+                .problems
+                .iter()
+                .map(|m| format!("{name}: case: {m}"))
+                .collect())
+        }
+    };
+    let r = &f.run_to_failure;
+    let states = match (&r.states, &r.cycles) {
+        (Some(_), Some(_)) => {
+            p.push(format!(
+                "{} and `run_to_failure.cycles` are both given: choose one",
+                key("run_to_failure.states")
+            ));
+            StateChoice::Count(1)
+        }
+        (Some(n), None) if !(1..=10_000).contains(n) => {
+            p.push(format!(
+                "{} = {n} is invalid: expected a whole number in [1, 10000]",
+                key("run_to_failure.states")
+            ));
+            StateChoice::Count(1)
+        }
+        (Some(n), None) => StateChoice::Count(*n as usize),
+        (None, Some(c)) => {
+            if c.is_empty()
+                || c.iter().any(|x| !x.is_finite() || *x < 0.0)
+                || c.windows(2).any(|w| w[1] <= w[0])
+            {
+                p.push(format!(
+                    "{} = {c:?} is invalid: expected non-negative cycle counts, strictly ascending",
+                    key("run_to_failure.cycles")
+                ));
+            }
+            StateChoice::Cycles(c.clone())
+        }
+        (None, None) => StateChoice::Count(1),
+    };
+    let max_cycles = r.max_cycles.unwrap_or(base_case.wear.total_cycles);
+    if !(1.0..=1e11).contains(&max_cycles) {
+        p.push(format!(
+            "{} = {max_cycles} is invalid: expected a number in [1, 1e11]",
+            key("run_to_failure.max_cycles")
+        ));
+    }
+    if let StateChoice::Cycles(c) = &states {
+        if c.last().is_some_and(|l| *l > max_cycles) {
+            p.push(format!(
+                "{} ends at {} cycles, beyond `run_to_failure.max_cycles` = {max_cycles}",
+                key("run_to_failure.cycles"),
+                c[c.len() - 1]
+            ));
+        }
+    }
+    let wear_limit_um = r.wear_limit_um.unwrap_or(10.0);
+    if !(wear_limit_um > 0.0 && wear_limit_um <= 1000.0) {
+        p.push(format!(
+            "{} = {wear_limit_um} is invalid: expected a number in (0, 1000]",
+            key("run_to_failure.wear_limit_um")
+        ));
+    }
+    let axis = |k: &str,
+                v: &Option<Vec<f64>>,
+                dflt: f64,
+                lo: f64,
+                hi: f64,
+                p: &mut Vec<String>|
+     -> Vec<f64> {
+        match v {
+            None => vec![dflt],
+            Some(v) if v.is_empty() || v.iter().any(|x| !(lo..=hi).contains(x)) => {
+                p.push(format!(
+                    "{} = {v:?} is invalid: expected a non-empty list of numbers in [{lo}, {hi}]",
+                    key(k)
+                ));
+                vec![dflt]
+            }
+            Some(v) => v.clone(),
+        }
+    };
+    let speeds_hz = axis(
+        "operating.input_speed_hz",
+        &f.operating.input_speed_hz,
+        base_case.operating.input_speed_hz,
+        1e-6,
+        1000.0,
+        &mut p,
+    );
+    let torques_nm = axis(
+        "operating.load_torque_nm",
+        &f.operating.load_torque_nm,
+        base_case.operating.load_torque_nm,
+        1e-3,
+        1e7,
+        &mut p,
+    );
+    let rec = &f.records;
+    if !(1..=1_000_000).contains(&rec.noise_realisations) {
+        p.push(format!(
+            "{} = {} is invalid: expected a whole number in [1, 1000000]",
+            key("records.noise_realisations"),
+            rec.noise_realisations
+        ));
+    }
+    if !(rec.disk_budget_gib > 0.0 && rec.disk_budget_gib <= 1e6) {
+        p.push(format!(
+            "{} = {} is invalid: expected a number in (0, 1e6]",
+            key("records.disk_budget_gib"),
+            rec.disk_budget_gib
+        ));
+    }
+    let mut conditions = Vec::new();
+    let files = if f.condition.is_empty() {
+        vec![ConditionFile {
+            name: "healthy".into(),
+            fault: none(),
+            severity: 0.0,
+            case: Table::new(),
+        }]
+    } else {
+        f.condition.clone()
+    };
+    for (i, c) in files.iter().enumerate() {
+        let at = format!("{name}: condition {} (`{}`)", i + 1, c.name);
+        if c.name.is_empty()
+            || !c
+                .name
+                .chars()
+                .all(|ch| ch.is_ascii_alphanumeric() || ch == '_' || ch == '-')
+        {
+            p.push(format!(
+                "{at}: `name` must be a non-empty word of letters, digits, _ and -"
+            ));
+        }
+        if files[..i].iter().any(|o| o.name == c.name) {
+            p.push(format!("{at}: `name` is used twice"));
+        }
+        if !c.severity.is_finite() {
+            p.push(format!("{at}: `severity` must be a finite number"));
+        }
+        let mut t = base.clone();
+        merge(&mut t, &c.case);
+        let text = toml::to_string(&t).unwrap_or_default();
+        match load_case(&text, &f.set) {
+            Ok(case) => conditions.push(Condition {
+                name: c.name.clone(),
+                fault: c.fault.clone(),
+                severity: c.severity,
+                case,
+            }),
+            Err(e) => p.extend(e.problems.iter().map(|m| format!("{at}: {m}"))),
+        }
+    }
+    if !p.is_empty() {
+        return Err(p);
+    }
+    Ok(DatasetDesign {
+        seed: f.seed,
+        transfer_path: f.transfer_path.map(Into::into),
+        states,
+        max_cycles,
+        wear_limit_um,
+        speeds_hz,
+        torques_nm,
+        noise_realisations: rec.noise_realisations as usize,
+        csv: rec.csv,
+        disk_budget_gib: rec.disk_budget_gib,
+        conditions,
+        text: text.to_owned(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn no_file(_: &str) -> Result<String, String> {
+        Err("no files in this test".into())
+    }
+
+    #[test]
+    fn a_full_design_parses_and_conditions_merge_into_the_case() {
+        let text = r#"
+seed = 3
+set = ["signals.snr_db=25"]
+[run_to_failure]
+cycles = [0, 1e4]
+max_cycles = 2e4
+wear_limit_um = 5
+[operating]
+input_speed_hz = [20, 30]
+[records]
+noise_realisations = 4
+[[condition]]
+name = "healthy"
+[[condition]]
+name = "rough"
+fault = "roughness"
+severity = 2.0
+[condition.case.surface]
+roughness_table_rms_um = [0.42, 0.38, 0.30]
+"#;
+        let d = parse_design(text, "design.toml", &no_file).unwrap();
+        assert_eq!(d.conditions.len(), 2);
+        assert_eq!(
+            d.conditions[1].case.surface.roughness_table_rms_um,
+            vec![0.42, 0.38, 0.30]
+        );
+        assert_eq!(d.conditions[0].case.signals.snr_db, Some(25.0));
+        assert_eq!(d.speeds_hz, vec![20.0, 30.0]);
+        assert_eq!(d.torques_nm, vec![60.0]);
+        assert_eq!(d.states, StateChoice::Cycles(vec![0.0, 1e4]));
+    }
+
+    #[test]
+    fn bad_designs_name_the_key() {
+        let e = parse_design(
+            "[run_to_failure]\ncycles = [2, 1]\n[records]\nnoise_realisations = 0\n",
+            "d.toml",
+            &no_file,
+        )
+        .unwrap_err();
+        assert!(
+            e.iter().any(|m| m.contains("`run_to_failure.cycles`")),
+            "{e:?}"
+        );
+        assert!(
+            e.iter()
+                .any(|m| m.contains("`records.noise_realisations` = 0")),
+            "{e:?}"
+        );
+        let e = parse_design(
+            "[[condition]]\nname = \"x\"\n[condition.case.gear]\nmodule_mm = -1\n",
+            "d.toml",
+            &no_file,
+        )
+        .unwrap_err();
+        assert!(
+            e[0].contains("condition 1") && e[0].contains("gear.module_mm"),
+            "{e:?}"
+        );
+        let e = parse_design("sed = 1\n", "d.toml", &no_file).unwrap_err();
+        assert!(e[0].contains("sed"), "{e:?}");
+    }
+}

@@ -1,0 +1,112 @@
+//! One record of a case (`gearwear signals`): the steady-state response of a wear state,
+//! through the signal chain to a record, and its analysis.
+
+use super::model::Model;
+use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::steady::DynamicsError;
+use crate::dynamics::summary::ResponseSummary;
+use crate::signals::analysis::{analyse, ChannelAnalysis};
+use crate::signals::bearing::bearing_forces;
+use crate::signals::record::{add_noise, Kinematics, PeriodicRecord, Record};
+use crate::signals::setup::ChainSetup;
+use crate::wear::WearState;
+use std::f64::consts::PI;
+
+/// A record and what was computed from it.
+#[derive(Debug, Clone)]
+pub struct SignalRecord {
+    pub kinematics: Kinematics,
+    /// The record as written: noise included.
+    pub record: Record,
+    pub analysis: Vec<ChannelAnalysis>,
+    /// Headline numbers of the steady state (at the starting speed of a transient).
+    pub response: ResponseSummary,
+    /// Nominal input speed at the start and end of the record, Hz (equal when steady).
+    pub input_speed_hz: (f64, f64),
+    /// Damped frequencies of the model's mesh poles, Hz (`docs/MODEL.md`, Modes).
+    pub mesh_poles_hz: Vec<f64>,
+}
+
+/// Shaft speeds and teeth of the model at its operating point.
+pub fn kinematics(model: &Model) -> Kinematics {
+    Kinematics {
+        pinion_hz: model.params.pinion_speed_rad_s / (2.0 * PI),
+        gear_hz: model.params.gear_speed_rad_s / (2.0 * PI),
+        teeth_pinion: model.pair.pinion.teeth,
+        teeth_gear: model.pair.gear.teeth,
+    }
+}
+
+/// The noise-free periodic signals of a steady-state response.
+pub fn periodic_record(model: &Model, setup: &ChainSetup, r: &DynamicResponse) -> PeriodicRecord {
+    PeriodicRecord::new(
+        &bearing_forces(r, &model.params),
+        &kinematics(model),
+        &setup.chain,
+    )
+}
+
+/// Render, add noise and analyse a record of the periodic signals `p`.
+pub fn record_from(
+    model: &Model,
+    setup: &ChainSetup,
+    p: &PeriodicRecord,
+    response: ResponseSummary,
+) -> SignalRecord {
+    let kin = kinematics(model);
+    let chain = &setup.chain;
+    let n = chain.samples(kin.shaft_hz(chain.tachometer.shaft));
+    let mut record = p.render(chain, n);
+    add_noise(&mut record, chain);
+    let analysis = analyse(&record, &kin, &chain.tachometer, setup.components);
+    SignalRecord {
+        input_speed_hz: (kin.pinion_hz, kin.pinion_hz),
+        kinematics: kin,
+        record,
+        analysis,
+        response,
+        mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+    }
+}
+
+/// The record of the steady state of `wear` (with an external transmission error).
+pub fn steady_record(
+    model: &Model,
+    setup: &ChainSetup,
+    wear: &WearState,
+    external: &ExternalError,
+) -> Result<SignalRecord, DynamicsError> {
+    let r = model.dynamic(wear, external)?;
+    let p = periodic_record(model, setup, &r);
+    Ok(record_from(model, setup, &p, ResponseSummary::of(&r)))
+}
+
+/// The record of a case's `[signals]` section for `wear`: the steady state, or the
+/// transient of a ramp or a load fluctuation (`study::transient_signals`).
+pub fn record_case(
+    model: &Model,
+    setup: &ChainSetup,
+    wear: &WearState,
+) -> Result<SignalRecord, DynamicsError> {
+    use super::transient_signals::{is_transient, transient_clean_record};
+    if !is_transient(&model.case) {
+        return steady_record(model, setup, wear, &ExternalError::none());
+    }
+    let (mut record, speeds) = transient_clean_record(model, setup, wear)?;
+    let response = ResponseSummary::of(&model.dynamic(wear, &ExternalError::none())?);
+    add_noise(&mut record, &setup.chain);
+    let kin = kinematics(model);
+    let analysis = analyse(&record, &kin, &setup.chain.tachometer, setup.components);
+    Ok(SignalRecord {
+        input_speed_hz: (
+            speeds.first().copied().unwrap_or(kin.pinion_hz),
+            speeds.last().copied().unwrap_or(kin.pinion_hz),
+        ),
+        kinematics: kin,
+        record,
+        analysis,
+        response,
+        mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+    })
+}

@@ -1,0 +1,166 @@
+//! The run budget's view of a tooth-resolved case: the mesh periods its excitation
+//! repeats over, read from the case alone before any model is built, and the cost that
+//! period adds to a run (`study::budget::estimate` adds the term).
+
+use crate::config::case::{Case, Member, WornGeometry};
+
+/// Whether the values of a per-tooth array differ from tooth to tooth.
+fn differ(v: &Option<Vec<f64>>) -> bool {
+    v.as_ref().is_some_and(|v| v.iter().any(|x| *x != v[0]))
+}
+
+/// Mesh periods the excitation of `case` repeats over, from the case alone (the run
+/// budget's estimate, before any model is built): z of each gear whose teeth differ
+/// (errors given or drawn, a fault on one of its teeth, run-out), their lcm. Modified or
+/// worn teeth alike on a gear keep it at one. With per-tooth wear, teeth that differ keep
+/// differing, so this holds for the whole wear study.
+pub fn excitation_periods_of(case: &Case) -> usize {
+    let t = &case.teeth;
+    let drawn = t.accuracy_grade.is_some();
+    let fault_on = |m: Member| case.fault.iter().any(|f| f.gear == m);
+    let pinion = drawn
+        || differ(&t.pitch_error_pinion_um)
+        || differ(&t.profile_slope_pinion_um)
+        || differ(&t.profile_form_pinion_um)
+        || t.runout_pinion_um.is_some_and(|r| r > 0.0)
+        || fault_on(Member::Pinion);
+    let gear = drawn
+        || differ(&t.pitch_error_gear_um)
+        || differ(&t.profile_slope_gear_um)
+        || differ(&t.profile_form_gear_um)
+        || t.runout_gear_um.is_some_and(|r| r > 0.0)
+        || fault_on(Member::Gear);
+    let z = |varies: bool, z: i64| if varies { z.max(1) as usize } else { 1 };
+    crate::dynamics::tooth_mesh::lcm(
+        z(pinion, case.gear.teeth_pinion),
+        z(gear, case.gear.teeth_gear),
+    )
+}
+
+/// Mesh periods of run-in the budget allows a tooth-resolved evaluation (the measured
+/// run-in of the paper's case is 8; slow decay at high speed raises it).
+const RUN_IN_PERIODS: f64 = 30.0;
+
+/// Bytes of the path samples of a recorded sample (two pairs of 72 bytes, doubled for
+/// growth), on top of the response's `RESPONSE_BYTES_PER_SAMPLE`.
+const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
+
+/// The run budget's term for a tooth-resolved case (None when every tooth is alike):
+/// every dynamic evaluation integrates P - 1 more mesh periods and a run-in of
+/// [`RUN_IN_PERIODS`], each quasi-static one solves P - 1 more periods, a kept response
+/// records P periods instead of `numerics.evaluated_mesh_periods` (with its contacts'
+/// path), and each wear record holds every tooth's profile and increment.
+/// `dyn_evals`, `quasi_evals`: evaluations; `kept`: responses kept at once; `records`:
+/// wear records; `s_dyn`, `s`: steps of a dynamic and a quasi-static mesh period.
+pub fn budget_term(
+    case: &Case,
+    dyn_evals: f64,
+    quasi_evals: f64,
+    kept: f64,
+    records: f64,
+    s_dyn: f64,
+    s: f64,
+) -> Option<super::budget::Term> {
+    use super::budget::{
+        RESPONSE_BYTES_PER_SAMPLE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
+    };
+    let per_tooth = !case.teeth.is_empty()
+        || !case.modification.is_empty()
+        || !case.fault.is_empty()
+        || case.wear.worn_geometry == WornGeometry::Worn;
+    if !per_tooth {
+        return None;
+    }
+    let p = excitation_periods_of(case) as f64;
+    let extra = (p - 1.0).max(0.0);
+    let run_in = if p > 1.0 { RUN_IN_PERIODS } else { 0.0 };
+    let p_e = case.numerics.evaluated_mesh_periods as f64;
+    let recorded = s_dyn * p.max(p_e);
+    let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
+    let grid = case.wear.points_per_profile as f64;
+    Some(super::budget::Term {
+        what: "the tooth-resolved mesh (every tooth's own excitation over its period)",
+        seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
+            + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP,
+        bytes: kept
+            * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
+                - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
+            + records * teeth * grid * 2.0 * 8.0,
+        keys: &[
+            "teeth.pitch_error_pinion_um",
+            "teeth.pitch_error_gear_um",
+            "teeth.accuracy_grade",
+            "teeth.runout_pinion_um",
+            "teeth.runout_gear_um",
+            "fault.tooth",
+            "numerics.steps_per_mesh_period",
+        ],
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::load_case;
+    use crate::study::budget::{estimate, Budget, Job};
+
+    fn case(sets: &[&str]) -> Case {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        load_case("", &sets).unwrap()
+    }
+
+    #[test]
+    fn excitation_periods_follow_the_inputs_and_the_model() {
+        for (sets, want) in [
+            (vec![], 1),
+            (
+                vec![
+                    "modification.tip_relief_um=5",
+                    "modification.tip_relief_length_mm=1",
+                ],
+                1,
+            ),
+            (vec!["teeth.runout_gear_um=3"], 31),
+            (vec!["teeth.accuracy_grade=5"], 589),
+            (
+                vec![
+                    "fault.kind=crack",
+                    "fault.gear=pinion",
+                    "fault.tooth=3",
+                    "fault.crack_depth_mm=1",
+                ],
+                19,
+            ),
+        ] {
+            let c = case(&sets);
+            assert_eq!(excitation_periods_of(&c), want, "{sets:?}");
+            let m = crate::study::Model::from_case(&c).unwrap();
+            let p = m.tooth_mesh(&m.new_wear_state()).map_or(1, |t| t.periods());
+            assert_eq!(p, want, "model, {sets:?}");
+        }
+    }
+
+    #[test]
+    fn the_budget_counts_the_excitation_period() {
+        // The paper's pair with every tooth drawn (589 periods) fits the default budget;
+        // a 97/101 pair (9797 periods) does not, and the message names the teeth keys.
+        let g5 = case(&["teeth.accuracy_grade=5"]);
+        assert!(estimate(&g5, Job::Run).check(&Budget::DEFAULT).is_ok());
+        let plain = estimate(&case(&[]), Job::Dynamics).memory_bytes();
+        assert!(estimate(&g5, Job::Dynamics).memory_bytes() > 50.0 * (plain - 64e6));
+        let big = case(&[
+            "teeth.accuracy_grade=5",
+            "gear.teeth_pinion=97",
+            "gear.teeth_gear=101",
+            "gear.module_mm=1",
+        ]);
+        assert_eq!(excitation_periods_of(&big), 9797);
+        let e = estimate(&big, Job::Run)
+            .check(&Budget::DEFAULT)
+            .unwrap_err();
+        assert!(
+            e.contains("tooth-resolved") && e.contains("teeth.accuracy_grade"),
+            "{e}"
+        );
+    }
+}

@@ -1,0 +1,131 @@
+//! Records of a transient: a run-up or coast-down (`signals.ramp_end_speed_hz`) or a
+//! fluctuating load (`signals.torque_fluctuation_rms_nm`), simulated as one trajectory
+//! from the periodic steady state at the starting speed (`dynamics::transient`), then
+//! recorded (`signals::transient_record`).
+
+use super::model::Model;
+use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
+use crate::dynamics::drive::{Drive, Tabulated};
+use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::model::State;
+use crate::dynamics::steady::DynamicsError;
+use crate::dynamics::transient::integrate_transient;
+use crate::signals::antialias::OVERSAMPLING;
+use crate::signals::bearing::bearing_forces;
+use crate::signals::chain::{RecordLength, Shaft};
+use crate::signals::noise::band_limited;
+use crate::signals::record::Record;
+use crate::signals::setup::ChainSetup;
+use crate::signals::transient_record::{transient_record, ForceSampler, TAIL_S};
+use crate::wear::WearState;
+use std::f64::consts::PI;
+
+/// Whether the case's `[signals]` asks for a transient.
+pub fn is_transient(case: &Case) -> bool {
+    case.signals.ramp_end_speed_hz.is_some() || case.signals.torque_fluctuation_rms_nm > 0.0
+}
+
+/// Duration of the record, s (a ramp's record is given in seconds: checked with the case).
+pub fn duration_s(case: &Case, setup: &ChainSetup) -> f64 {
+    match setup.chain.length {
+        RecordLength::Seconds(s) => s,
+        RecordLength::Revolutions(r) => {
+            let f = case.operating.input_speed_hz;
+            let shaft_hz = match setup.chain.tachometer.shaft {
+                Shaft::Pinion => f,
+                Shaft::Gear => f * case.gear.teeth_pinion as f64 / case.gear.teeth_gear as f64,
+            };
+            r / shaft_hz
+        }
+    }
+}
+
+/// The drive of the case over `duration` s (`dynamics::drive`): the ramp from the
+/// operating speed to `signals.ramp_end_speed_hz`, and the load fluctuation moved to the
+/// shaft where the load acts (through the base radii, as the mean load is).
+pub fn drive_of(case: &Case, model: &Model, duration: f64) -> Drive {
+    let s = &case.signals;
+    let w0 = 2.0 * PI * case.operating.input_speed_hz;
+    let w1 = s.ramp_end_speed_hz.map_or(w0, |f| 2.0 * PI * f);
+    let torque = (s.torque_fluctuation_rms_nm > 0.0).then(|| {
+        let p = &model.params;
+        // Torque on the shaft it is given on -> on the shaft where the load acts.
+        let on_gear_side = p.speed_boundary != SpeedBoundary::BrakeSpeedImposed;
+        let per_given = match (case.operating.load_torque_shaft, on_gear_side) {
+            (TorqueShaft::Pinion, true) => p.brake_torque_nm / p.motor_torque_nm,
+            (TorqueShaft::Gear, false) => p.motor_torque_nm / p.brake_torque_nm,
+            _ => 1.0,
+        };
+        let rate = (20.0 * s.torque_fluctuation_bandwidth_hz).max(1000.0);
+        let n = ((duration + 2.0 * TAIL_S) * rate).ceil() as usize + 4;
+        let seed = s.torque_fluctuation_seed.max(0) as u64;
+        let values = band_limited(
+            seed,
+            0,
+            n,
+            rate,
+            s.torque_fluctuation_bandwidth_hz,
+            s.torque_fluctuation_rms_nm * per_given,
+        );
+        Tabulated {
+            rate_hz: rate,
+            values,
+        }
+    });
+    Drive {
+        start_rad_s: w0,
+        accel_rad_s2: (w1 - w0) / duration,
+        ramp_s: duration,
+        torque_nm: torque,
+    }
+}
+
+/// The noise-free record of the case's transient for `wear`, with the nominal input
+/// speed at each record sample (Hz).
+pub fn transient_clean_record(
+    model: &Model,
+    setup: &ChainSetup,
+    wear: &WearState,
+) -> Result<(Record, Vec<f64>), DynamicsError> {
+    let case = &model.case;
+    let duration = duration_s(case, setup);
+    let drive = drive_of(case, model, duration);
+    // The steady state at the starting speed: the start state and the lead-in.
+    let r0 = model.dynamic(wear, &ExternalError::none())?;
+    let lead = bearing_forces(&r0, &model.params);
+    let start = State::from_column_slice(&r0.end_state);
+    // The transient's system: the case at its fastest speed, so that the error control's
+    // velocity scale (`period::state_scales`) suits the whole ramp.
+    let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);
+    let mut fast_case = case.clone();
+    fast_case.operating.input_speed_hz = fastest;
+    let fast = Model::from_case(&fast_case).map_err(|e| DynamicsError::Setting(e.to_string()))?;
+    let gap = wear.pair_gap(&fast.grid);
+    let none = ExternalError::none();
+    let sys = fast
+        .system(&gap, &none, fast.roughness_for(wear))
+        .with_drive(&drive);
+    let chain = &setup.chain;
+    let rate = chain.acquisition.sampling_rate_hz * OVERSAMPLING as f64;
+    let mut sampler = ForceSampler::new(rate, &fast.params);
+    let settings = &model.settings;
+    integrate_transient(
+        &sys,
+        &drive,
+        &start,
+        duration + TAIL_S,
+        settings.steps_per_mesh_period,
+        settings.integration_tolerance,
+        &mut sampler,
+    )?;
+    let ratio = match chain.tachometer.shaft {
+        Shaft::Pinion => 1.0,
+        Shaft::Gear => model.params.gear_speed_rad_s / model.params.pinion_speed_rad_s,
+    };
+    let samples = (duration * chain.acquisition.sampling_rate_hz).ceil() as usize;
+    let record = transient_record(&sampler, &lead, chain, &|t| ratio * drive.angle(t), samples);
+    let speeds = (0..samples)
+        .map(|i| drive.speed(i as f64 / chain.acquisition.sampling_rate_hz) / (2.0 * PI))
+        .collect();
+    Ok((record, speeds))
+}

@@ -1,0 +1,220 @@
+//! Datasets from a study design: shards merged equal the unsharded dataset byte for
+//! byte, the same seed gives the same bytes, every label is the value of the study that
+//! produced it, a resumed run only computes what is missing, and a dataset over its disk
+//! budget is refused before it starts.
+
+mod common;
+
+use common::{gearwear, ok, stderr};
+use gearwear::study::dataset::parse_design;
+use gearwear::study::dataset::trajectory::run_trajectory;
+use gearwear::study::Model;
+use std::path::Path;
+
+const DESIGN: &str = r#"
+seed = 11
+set = ["signals.snr_db=30", "signals.record_length=0.12", "numerics.steps_per_mesh_period=60",
+       "stiffness.table_points_per_mesh_period=60", "wear.block_cycles=5e3"]
+[run_to_failure]
+states = 3
+max_cycles = 3e4
+wear_limit_um = 2
+[operating]
+input_speed_hz = [28, 32]
+[records]
+noise_realisations = 2
+[[condition]]
+name = "healthy"
+[[condition]]
+name = "rough"
+fault = "roughness"
+severity = 2.0
+[condition.case.surface]
+roughness_table_rms_um = [0.42, 0.38, 0.30]
+"#;
+
+fn write_design(dir: &Path, text: &str) -> String {
+    std::fs::create_dir_all(dir).unwrap();
+    let p = dir.join("design.toml");
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_owned()
+}
+
+fn dataset(design: &str, out: &Path, extra: &[&str]) -> String {
+    let mut a = vec![
+        "dataset",
+        "--design",
+        design,
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    a.extend(extra);
+    ok(&a)
+}
+
+/// Every file of the dataset proper (not manifests, locks or shard summaries), by path.
+fn files(root: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    for sub in ["signals", "records", "state"] {
+        let mut names: Vec<_> = std::fs::read_dir(root.join(sub))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .collect();
+        names.sort();
+        for n in names {
+            let rel = format!("{sub}/{n}");
+            out.push((rel.clone(), std::fs::read(root.join(&rel)).unwrap()));
+        }
+    }
+    for f in ["index.parquet", "index.csv", "metadata.json"] {
+        out.push((f.into(), std::fs::read(root.join(f)).unwrap()));
+    }
+    out
+}
+
+#[test]
+fn shards_merge_to_the_unsharded_dataset_and_the_same_seed_gives_the_same_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = write_design(dir.path(), DESIGN);
+    let whole = dir.path().join("whole");
+    dataset(&design, &whole, &[]);
+    // Three shards in separate folders (no shared file system), merged.
+    let shards: Vec<_> = (1..=3).map(|i| dir.path().join(format!("s{i}"))).collect();
+    for (i, s) in shards.iter().enumerate() {
+        dataset(&design, s, &["--shard", &format!("{}/3", i + 1)]);
+    }
+    let merged = dir.path().join("merged");
+    let mut a = vec!["dataset-merge"];
+    a.extend(shards.iter().map(|s| s.to_str().unwrap()));
+    a.extend(["--out", merged.to_str().unwrap()]);
+    ok(&a);
+    let (fw, fm) = (files(&whole), files(&merged));
+    assert_eq!(fw.len(), fm.len());
+    // 2 conditions x 3 states x 2 speeds x 2 realisations = 24 records.
+    assert_eq!(
+        fw.iter().filter(|(p, _)| p.starts_with("signals/")).count(),
+        24
+    );
+    for ((pw, bw), (pm, bm)) in fw.iter().zip(&fm) {
+        assert_eq!(pw, pm);
+        assert!(
+            bw == bm,
+            "{pw} differs between the unsharded and the merged dataset"
+        );
+    }
+    // The same design and seed again: the same bytes.
+    let again = dir.path().join("again");
+    dataset(&design, &again, &[]);
+    assert!(files(&again) == fw, "a rerun gave other bytes");
+    // Another seed: other noise, the same labels otherwise.
+    let other = dir.path().join("other");
+    let design2 = write_design(
+        &dir.path().join("o"),
+        &DESIGN.replace("seed = 11", "seed = 12"),
+    );
+    dataset(&design2, &other, &[]);
+    let sig = |root: &Path| std::fs::read(root.join("signals/0000005.parquet")).unwrap();
+    assert_ne!(sig(&other), sig(&whole));
+}
+
+#[test]
+fn every_label_is_the_value_of_the_study_that_produced_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = write_design(dir.path(), DESIGN);
+    let out = dir.path().join("ds");
+    dataset(&design, &out, &[]);
+    let d = parse_design(DESIGN, "design.toml", &|_| Err("none".into())).unwrap();
+    let (h, rows) = common::read_csv(&out.join("index.csv"));
+    let col = |name: &str| h.iter().position(|x| x == name).unwrap();
+    assert_eq!(rows.len(), 24);
+    for (c, cond) in d.conditions.iter().enumerate() {
+        // The trajectory, run again independently of the dataset job.
+        let model = Model::from_case(&cond.case).unwrap();
+        let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6).unwrap();
+        let states = t.even_states(3);
+        for row in rows.iter().filter(|r| r[col("condition")] == cond.name) {
+            let id: usize = row[col("record_id")].parse().unwrap();
+            // id = (((c x 3 + s) x 2 + v) x 1 + l) x 2 + r.
+            let (r, v, s) = (id % 2, (id / 2) % 2, (id / 4) % 3);
+            assert_eq!(id / 12, c);
+            let num = |k: &str| row[col(k)].parse::<f64>().unwrap();
+            assert_eq!(num("cycles"), states[s]);
+            let w = t.state_at(states[s]).unwrap();
+            assert_eq!(num("max_wear_pinion_um"), w.max_pinion_m() * 1e6);
+            assert_eq!(num("max_wear_gear_um"), w.max_gear_m() * 1e6);
+            let (rem, censored) = t.remaining(states[s]);
+            assert_eq!(num("remaining_cycles"), rem);
+            assert_eq!(
+                row[col("failure_censored")],
+                if censored { "1" } else { "0" }
+            );
+            assert_eq!(num("input_speed_hz"), d.speeds_hz[v]);
+            assert_eq!(num("load_torque_nm"), 60.0);
+            assert_eq!(num("realisation") as usize, r);
+            assert_eq!(row[col("fault")], cond.fault);
+            assert_eq!(num("severity"), cond.severity);
+            assert_eq!(num("mesh_hz"), 19.0 * d.speeds_hz[v]);
+        }
+    }
+}
+
+#[test]
+fn a_resumed_dataset_computes_only_what_is_missing() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = write_design(dir.path(), DESIGN);
+    let out = dir.path().join("ds");
+    dataset(&design, &out, &[]);
+    let before = files(&out);
+    // A killed run: two records lost, one signal file damaged.
+    std::fs::remove_file(out.join("records/0000003.json")).unwrap();
+    std::fs::remove_file(out.join("signals/0000010.parquet")).unwrap();
+    std::fs::write(out.join("signals/0000017.parquet"), b"damaged").unwrap();
+    let o = gearwear(&[
+        "dataset",
+        "--design",
+        &design,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Records are computed per physical state (both realisations): 3 states, 6 records.
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(said.contains("(6 computed, 18 reused)"), "{said}");
+    assert!(files(&out) == before, "the resumed dataset differs");
+}
+
+#[test]
+fn a_dataset_over_its_disk_budget_or_with_a_bad_design_is_refused_before_it_starts() {
+    let dir = tempfile::tempdir().unwrap();
+    let big = DESIGN.replace(
+        "noise_realisations = 2",
+        "noise_realisations = 20000\ndisk_budget_gib = 1",
+    );
+    let design = write_design(dir.path(), &big);
+    let out = dir.path().join("ds");
+    let o = gearwear(&[
+        "dataset",
+        "--design",
+        &design,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("`records.disk_budget_gib` = 1") && err.contains("GiB"),
+        "{err}"
+    );
+    assert!(!out.exists(), "a refused dataset wrote its folder");
+    let bad = write_design(
+        &dir.path().join("b"),
+        "[operating]\ninput_speed_hz = [-3]\n",
+    );
+    let o = gearwear(&["dataset", "--design", &bad, "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("`operating.input_speed_hz`"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -1,0 +1,163 @@
+//! Tooth faults checked against independent facts: the cracked tooth's compliance
+//! against the closed form of a uniform cantilever of the cracked section, its trend with
+//! depth, a spall's reduced Hertz line, a broken tip's lost contact.
+
+use gearwear::config::load_case;
+use gearwear::dynamics::excitation::ExternalError;
+use gearwear::stiffness::potential_energy::ToothBeam;
+use gearwear::stiffness::tooth_faults::{crack_compliance_m_per_n, deg, Crack};
+use gearwear::study::Model;
+
+fn model(sets: &[&str]) -> Model {
+    let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+    Model::from_case(&load_case("", &sets).expect("valid case")).expect("valid model")
+}
+
+/// Bending, shear and axial compliance (m/N) of a uniform cantilever of thickness t
+/// (section t x b) and length l loaded at its end, at angle alpha_1 to the normal of its
+/// axis, at a lever h_c from its axis (Timoshenko beam energy, the healthy tooth's
+/// straight root part at rho = 0; Yang & Sun 1985):
+/// int_0^l (c u - s h_c)^2 du = c^2 l^3 / 3 - c s h_c l^2 + s^2 h_c^2 l, over E t^3 b / 12.
+fn uniform_cantilever(beam: &ToothBeam, t: f64, l: f64, hc: f64) -> f64 {
+    let (s1, c1) = (-beam.half_base_angle_rad).sin_cos();
+    let (e, g, b) = (
+        beam.youngs_modulus_pa,
+        beam.shear_modulus_pa,
+        beam.face_width_m,
+    );
+    let bend = (c1 * c1 * l.powi(3) / 3.0 - c1 * s1 * hc * l * l + (s1 * hc).powi(2) * l)
+        / (e * t.powi(3) * b / 12.0);
+    let shear = 1.2 * c1 * c1 * l / (g * t * b);
+    let axial = s1 * s1 * l / (e * t * b);
+    bend + shear + axial
+}
+
+#[test]
+fn a_root_crack_loads_the_tooth_as_a_cantilever_of_the_cracked_section() {
+    // Contact at the base circle (rho = 0): the beam is the straight root part of
+    // half-thickness h_r alone, and a crack of reach q sin(nu) leaves it h_r + h_q thick
+    // (h_q = h_r - q sin nu) over its whole length while h_q stays above the tip's
+    // half-thickness (the parallel limit line of Chen & Shao 2011). So the cracked
+    // compliance is the closed form of that cantilever; the quadrature is exact for the
+    // polynomial integrands to round-off (1e-12).
+    let m = model(&[]);
+    let beam = &m.mesh.tooth_beams()[1];
+    let tip = m.pair.gear.tip_rho_m();
+    let (h_r, y_root) = beam.root_section();
+    let (hc, yc) = beam.involute_point(beam.contact_angle_rad(0.0));
+    assert!((hc - h_r).abs() < 1e-15);
+    let healthy = uniform_cantilever(beam, 2.0 * h_r, yc - y_root, hc);
+    assert!((beam.compliance(0.0).total_m_per_n() / healthy - 1.0).abs() < 1e-12);
+    for q_mm in [0.2, 0.5, 0.8] {
+        let crack = Crack {
+            depth_m: q_mm * 1e-3,
+            angle_rad: deg(45.0),
+            width_fraction: 1.0,
+        };
+        let h_q = h_r - crack.depth_m * crack.angle_rad.sin();
+        let cracked = uniform_cantilever(beam, h_r + h_q, yc - y_root, hc);
+        let model_value = healthy + crack_compliance_m_per_n(beam, tip, &crack, 0.0);
+        assert!(
+            (model_value / cracked - 1.0).abs() < 1e-12,
+            "{q_mm} mm: {model_value:e} vs {cracked:e}"
+        );
+    }
+}
+
+#[test]
+fn crack_stiffness_loss_starts_at_zero_and_grows_with_depth_most_near_the_tip() {
+    // The published trend (Chen & Shao 2011; Mohammed et al. 2013): no loss without a
+    // crack, a loss growing monotonically with the depth, and larger for contacts near
+    // the tip (longer lever over the cracked root).
+    let m = model(&[]);
+    let beam = &m.mesh.tooth_beams()[0];
+    let tip = m.pair.pinion.tip_rho_m();
+    let q_max = Crack::max_depth_m(beam, deg(45.0));
+    let loss = |q: f64, rho: f64| {
+        let k0 = m.mesh.pair_stiffness_n_per_m(rho);
+        let c = Crack {
+            depth_m: q,
+            angle_rad: deg(45.0),
+            width_fraction: 1.0,
+        };
+        1.0 - 1.0 / (1.0 / k0 + crack_compliance_m_per_n(beam, tip, &c, rho)) / k0
+    };
+    let (root, pitch, tip_rho) = (m.pair.rho_start_m, m.pair.rho_pitch_m, m.pair.rho_end_m);
+    assert_eq!(loss(0.0, pitch), 0.0);
+    let mut last = [0.0; 3];
+    for i in 1..20 {
+        let q = q_max * i as f64 / 20.0;
+        let now = [loss(q, root), loss(q, pitch), loss(q, tip_rho)];
+        for j in 0..3 {
+            assert!(now[j] > last[j], "depth {q}: {now:?} after {last:?}");
+        }
+        assert!(now[0] < now[1] && now[1] < now[2], "{now:?}");
+        last = now;
+    }
+    println!(
+        "pinion pair stiffness loss at the pitch point, 45 deg crack: 0.5 mm {:.1} %, 1 mm {:.1} %, 2 mm {:.1} %",
+        100.0 * loss(0.5e-3, pitch),
+        100.0 * loss(1e-3, pitch),
+        100.0 * loss(2e-3, pitch)
+    );
+}
+
+#[test]
+fn a_broken_tip_carries_nothing_beyond_its_cut() {
+    // Pinion tooth 4 loses 0.8 mm of its tip: its contacts at a pinion radius above
+    // r_a - 0.8 mm carry no load, those below are untouched.
+    let m = model(&[
+        "friction.model=none",
+        "fault.kind=broken_tip",
+        "fault.gear=pinion",
+        "fault.tooth=4",
+        "fault.removed_height_mm=0.8",
+    ]);
+    let r = m.quasi_static(&m.new_wear_state(), &ExternalError::none());
+    let cut = m.pair.pinion.tip_radius_m - 0.8e-3;
+    let rho_cut = (cut * cut - m.pair.pinion.base_radius_m.powi(2)).sqrt();
+    let (mut beyond, mut below) = (0, 0);
+    for s in r.path.iter().filter(|s| s.cycle.rem_euclid(19) == 4) {
+        if s.rho1_m > rho_cut + 1e-9 {
+            assert_eq!(s.load_n, 0.0, "at rho1 {}", s.rho1_m);
+            beyond += 1;
+        } else if s.rho1_m < rho_cut - 1e-9 {
+            assert!(s.load_n > 0.0);
+            below += 1;
+        }
+    }
+    assert!(beyond > 5 && below > 50, "{beyond} {below}");
+}
+
+#[test]
+fn a_partial_spall_shortens_the_hertz_line_over_its_extent() {
+    // A spall over half the face of gear tooth 7: with the contact inside it the Hertz
+    // stiffness is that of half the line, k_h / 2, so the pair compliance gains 1/k_h
+    // there (the section's pit adds a little more); outside its heights nothing changes.
+    let m = model(&[
+        "fault.kind=spall",
+        "fault.gear=gear",
+        "fault.tooth=7",
+        "fault.spall_position_mm=0",
+        "fault.spall_length_mm=1",
+        "fault.spall_depth_um=30",
+        "fault.spall_width_fraction=0.5",
+    ]);
+    let tm = m.tooth_mesh(&m.new_wear_state()).unwrap();
+    let kh = 1.0 / m.mesh.hertz_compliance_m_per_n();
+    let at = |rho1: f64| {
+        let k0 = m.mesh.pair_stiffness_n_per_m(rho1);
+        let k = tm.pair(&m.mesh, 7, rho1).stiffness_n_per_m;
+        1.0 / k - 1.0 / k0
+    };
+    let pitch = m.pair.rho_pitch_m;
+    let inside = at(pitch);
+    assert!(
+        inside > 1.0 / kh && inside < 1.3 / kh,
+        "{inside:e} vs {:e}",
+        1.0 / kh
+    );
+    // Far below the spall on the gear's flank (its root side is the pinion's tip side).
+    assert!(at(m.pair.rho_end_m - 0.2e-3).abs() < 1e-6 / kh);
+    assert_eq!(tm.pair(&m.mesh, 7, pitch).width_loss, 0.5);
+}
