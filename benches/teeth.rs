@@ -3,7 +3,9 @@
 //! Run: `cargo bench --bench teeth`. Groups:
 //! - `hunting`: the steady state of the paper's pair with a pitch error on every tooth of
 //!   both gears (ISO 1328-1 class 5 drawn, seed 1): 589 mesh periods, one core (target
-//!   < 0.5 s), beside one warm mesh period of identical teeth;
+//!   < 0.5 s), beside one warm mesh period of identical teeth, and the cold steady state
+//!   of the paper case beside the same case with every per-tooth input zero (identical
+//!   teeth stay on the one-period path);
 //! - `tooth_wear`: the per-tooth wear study of that pair to 4e4 cycles, dynamic and
 //!   quasi-static in parallel on 2 threads (target < 10 s).
 //!
@@ -48,6 +50,26 @@ fn hunting(c: &mut Criterion) {
         .dynamic(&new, &ExternalError::none())
         .unwrap()
         .end_state;
+    // Identical teeth stay on the paper's path (issue 18): a case whose per-tooth inputs are
+    // all zero builds no tooth-resolved mesh, so its cold steady state costs what the
+    // paper case's does (test `zero_per_tooth_inputs_are_the_paper_case_bit_for_bit`
+    // checks the numbers are the same bit for bit).
+    let mut zero_case = Case::default();
+    zero_case.teeth.pitch_error_pinion_um = Some(vec![0.0; 19]);
+    zero_case.teeth.runout_gear_um = Some(0.0);
+    let zero = Model::from_case(&zero_case).unwrap();
+    assert!(zero.teeth.is_none());
+    g.bench_function("cold_paper_case", |b| {
+        b.iter(|| black_box(plain.dynamic(&new, &ExternalError::none()).unwrap()))
+    });
+    g.bench_function("cold_zero_per_tooth_inputs", |b| {
+        b.iter(|| {
+            black_box(
+                zero.dynamic(&zero.new_wear_state(), &ExternalError::none())
+                    .unwrap(),
+            )
+        })
+    });
     g.bench_function("warm_mesh_period_identical_teeth", |b| {
         b.iter(|| {
             black_box(

@@ -62,6 +62,14 @@ pub enum Arg {
     Inputs,
     /// Replacing an output folder that holds another command's results.
     Replace,
+    /// A measured load-time history.
+    History,
+    /// Torque classes of a load duration distribution.
+    TorqueClasses,
+    /// Speed classes of a load duration distribution.
+    SpeedClasses,
+    /// The longest interval of a history, in median intervals.
+    GapFactor,
     /// A transfer-path file of the signal chain.
     TransferPath,
     /// The study design of a dataset.
@@ -73,7 +81,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 24] = [
+    pub const ALL: [Arg; 28] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -96,6 +104,10 @@ impl Arg {
         Arg::NoBudget,
         Arg::Inputs,
         Arg::Replace,
+        Arg::History,
+        Arg::TorqueClasses,
+        Arg::SpeedClasses,
+        Arg::GapFactor,
         Arg::TransferPath,
         Arg::Design,
     ];
@@ -125,6 +137,10 @@ impl Arg {
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
             Arg::Replace => "replacing another command's results",
+            Arg::History => "the load-time history",
+            Arg::TorqueClasses => "torque classes",
+            Arg::SpeedClasses => "speed classes",
+            Arg::GapFactor => "the gap limit",
             Arg::TransferPath => "the transfer-path file",
             Arg::Design => "the dataset design",
         }

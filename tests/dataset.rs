@@ -1,7 +1,8 @@
 //! Datasets from a study design: shards merged equal the unsharded dataset byte for
 //! byte, the same seed gives the same bytes, every label is the value of the study that
-//! produced it, a resumed run only computes what is missing, and a dataset over its disk
-//! budget is refused before it starts.
+//! produced it (per-tooth wear included), the indicator trends are the index's means
+//! along each trajectory, a resumed run only computes what is missing, and a dataset
+//! over its disk budget is refused before it starts.
 
 mod common;
 
@@ -66,7 +67,13 @@ fn files(root: &Path) -> Vec<(String, Vec<u8>)> {
             out.push((rel.clone(), std::fs::read(root.join(&rel)).unwrap()));
         }
     }
-    for f in ["index.parquet", "index.csv", "metadata.json"] {
+    for f in [
+        "index.parquet",
+        "index.csv",
+        "metadata.json",
+        "indicator_trends.csv",
+        "indicator_trends.png",
+    ] {
         out.push((f.into(), std::fs::read(root.join(f)).unwrap()));
     }
     out
@@ -217,4 +224,152 @@ fn a_dataset_over_its_disk_budget_or_with_a_bad_design_is_refused_before_it_star
         "{}",
         stderr(&o)
     );
+}
+
+/// A tooth-resolved condition: pinion tooth 3 stands 4 um proud (excitation period 19
+/// mesh periods), states between the wear loop's updates.
+const TEETH_DESIGN: &str = r#"
+seed = 5
+set = ["signals.record_length=0.12", "numerics.steps_per_mesh_period=60",
+       "stiffness.table_points_per_mesh_period=60", "wear.block_cycles=5e3",
+       "teeth.pitch_error_pinion_um=[0,0,0,4,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0]"]
+[run_to_failure]
+cycles = [0, 7e3, 1.3e4]
+max_cycles = 2e4
+wear_limit_um = 50
+[records]
+noise_realisations = 1
+"#;
+
+#[test]
+fn per_tooth_wear_labels_are_each_tooths_own_wear_between_updates() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = write_design(dir.path(), TEETH_DESIGN);
+    let out = dir.path().join("ds");
+    dataset(&design, &out, &[]);
+    let d = parse_design(TEETH_DESIGN, "design.toml", &|_| Err("none".into())).unwrap();
+    // The wear loop run again independently; between two of its updates each grid point
+    // of each tooth wears linearly in cycles (the loop holds the per-cycle wear of the
+    // earlier update for the block, paper eq. 17), so the state at c cycles is the
+    // interpolation of the two updates' own states.
+    let model = Model::from_case(&d.conditions[0].case).unwrap();
+    let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6).unwrap();
+    let teeth = |i: usize| t.records[i].wear.teeth.clone().expect("per-tooth wear");
+    let mut spread = 0.0_f64;
+    for (id, &c) in [0.0, 7e3, 1.3e4].iter().enumerate() {
+        let text = std::fs::read(out.join(format!("records/{id:07}.json"))).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&text).unwrap();
+        let labels = &v["labels"];
+        assert_eq!(labels["cycles"].as_f64().unwrap(), c);
+        let i = t.records.partition_point(|r| r.wear.cycles <= c) - 1;
+        let (c0, c1) = (t.records[i].wear.cycles, t.records[i + 1].wear.cycles);
+        let s = (c - c0) / (c1 - c0);
+        for (key, gear) in [
+            ("wear_pinion_tooth_um", true),
+            ("wear_gear_tooth_um", false),
+        ] {
+            let (a, b) = (teeth(i), teeth(i + 1));
+            let (a, b) = if gear {
+                (a.pinion_m, b.pinion_m)
+            } else {
+                (a.gear_m, b.gear_m)
+            };
+            let got: Vec<f64> = labels[key]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect();
+            assert_eq!(got.len(), if gear { 19 } else { 31 });
+            for (tooth, (pa, pb)) in a.iter().zip(&b).enumerate() {
+                let want = pa
+                    .iter()
+                    .zip(pb)
+                    .map(|(x, y)| x + s * (y - x))
+                    .fold(0.0_f64, f64::max)
+                    * 1e6;
+                // Round-off of the advance (a sum of a few products) only.
+                assert!(
+                    (got[tooth] - want).abs() <= 1e-9 * want.max(1e-3),
+                    "{key}[{tooth}] at {c} cycles: {} against {want}",
+                    got[tooth]
+                );
+            }
+            let max = got.iter().fold(0.0_f64, |m, x| m.max(*x));
+            let min = got.iter().fold(f64::INFINITY, |m, x| m.min(*x));
+            spread = spread.max(max - min);
+            let deepest = labels[if gear {
+                "max_wear_pinion_um"
+            } else {
+                "max_wear_gear_um"
+            }]
+            .as_f64()
+            .unwrap();
+            assert_eq!(max, deepest);
+        }
+    }
+    // The proud tooth wears unlike its neighbours: the labels are not one value repeated.
+    assert!(spread > 0.01, "per-tooth wear spread {spread} um");
+}
+
+#[test]
+fn indicator_trends_are_the_index_means_along_each_trajectory() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = write_design(dir.path(), DESIGN);
+    let out = dir.path().join("ds");
+    dataset(&design, &out, &[]);
+    let (h, rows) = common::read_csv(&out.join("index.csv"));
+    let col = |name: &str| h.iter().position(|x| x == name).unwrap();
+    let (th, trend) = common::read_csv(&out.join("indicator_trends.csv"));
+    let tcol = |name: &str| th.iter().position(|x| x == name).unwrap();
+    // 2 conditions x 2 speeds, 3 states each.
+    assert_eq!(trend.len(), 12);
+    let followed = [
+        "max_wear_pinion_um",
+        "max_wear_gear_um",
+        "input_rms",
+        "input_kurtosis",
+        "input_pinion_fm0",
+        "input_pinion_fm4",
+        "input_pinion_na4",
+        "input_pinion_sideband_level_factor",
+    ];
+    for (k, t) in trend.iter().enumerate() {
+        // The index rows of this condition, speed and state: the 2 noise realisations.
+        let members: Vec<&Vec<String>> = rows
+            .iter()
+            .filter(|r| {
+                r[col("condition")] == t[tcol("condition")]
+                    && r[col("input_speed_hz")] == t[tcol("input_speed_hz")]
+                    && r[col("trajectory_state")] == t[tcol("trajectory_state")]
+            })
+            .collect();
+        assert_eq!(members.len(), 2);
+        assert_eq!(t[tcol("realisations")], "2");
+        assert_eq!(t[tcol("cycles")], members[0][col("cycles")]);
+        for name in followed {
+            let mean = members
+                .iter()
+                .map(|r| r[col(name)].parse::<f64>().unwrap())
+                .sum::<f64>()
+                / 2.0;
+            let got: f64 = t[tcol(name)].parse().unwrap();
+            // The same two numbers summed and halved: equal to the last bit or the CSV
+            // digits' round trip.
+            assert!(
+                (got - mean).abs() <= 1e-12 * mean.abs().max(1e-300),
+                "{name}, row {k}: {got} against {mean}"
+            );
+        }
+        // States of a trajectory in order of cycles, wear growing along it.
+        if k % 3 > 0 {
+            let prev = &trend[k - 1];
+            assert_eq!(prev[tcol("condition")], t[tcol("condition")]);
+            let c = |r: &Vec<String>, n: &str| r[tcol(n)].parse::<f64>().unwrap();
+            assert!(c(t, "cycles") > c(prev, "cycles"));
+            assert!(c(t, "max_wear_pinion_um") > c(prev, "max_wear_pinion_um"));
+        }
+    }
+    let png = std::fs::read(out.join("indicator_trends.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
 }

@@ -86,6 +86,12 @@ fn two_identical_bins_split_0_3_0_7_are_the_single_point() {
         let depth = p.last().unwrap().wear.max_pinion_m();
         let bound = 100.0 * 4.0 * c.records.len() as f64 * f64::EPSILON * depth;
         let d = max_diff(&c, &p);
+        println!(
+            "{mode:?}: {} updates, difference {:.2e} of the depth (bound {:.2e})",
+            c.records.len(),
+            d / depth,
+            bound / depth
+        );
         assert!(d <= bound, "{mode:?}: {d:e} m > {bound:e} m");
         // Each bin's wear is its share of the whole (same response, same cycles).
         for b in ranking(&s) {
@@ -150,7 +156,7 @@ fn at_low_speed_shallow_wear_is_the_share_weighted_mean_of_single_bins() {
             .fold(0.0_f64, |m, ((s, x), y)| {
                 m.max((s - (a * x + (1.0 - a) * y)).abs())
             });
-        // The 1 %; measured 2.7e-5 (dynamic) of the depth (docs/DUTY_CYCLE.md).
+        // The 1 %; measured 2.7e-5 (dynamic) of the depth (docs/MODEL.md, section 10).
         println!(
             "{mode:?}: depth {scale:e} m, deviation {:.2e} of it",
             dev / scale
@@ -176,6 +182,7 @@ fn results_converge_as_blocks_shrink() {
         finals.push((r.records.len(), r.last().unwrap().wear.max_pinion_m()));
     }
     let changes: Vec<f64> = finals.windows(2).map(|w| (w[1].1 - w[0].1).abs()).collect();
+    println!("(records, final max pinion wear m): {finals:?}; changes {changes:?}");
     // Measured: 3.73e-8, 1.92e-8, 9.86e-9 m (ratios 0.515, 0.512) of 5.03 um. First order
     // gives 1/2; 0.6 leaves room for the rounding of blocks to whole cycles.
     for w in changes.windows(2) {
@@ -238,5 +245,9 @@ fn life_of_identical_bins_is_the_single_point_life_and_heavier_bins_live_shorter
         t.bins[1].life.cycles().unwrap(),
     );
     let s = t.spectrum.cycles().unwrap();
+    println!(
+        "lives to 2 um: 40 N m {l1:.0}, 90 N m {l2:.0}, spectrum {s:.0}, linear mix {:.0}",
+        t.linear_mix_cycles.unwrap()
+    );
     assert!(l2 < s && s < l1, "{l1} {s} {l2}");
 }

@@ -365,6 +365,7 @@ fn the_signal_and_duty_jobs_refuse_fifo_inputs_at_once() {
         vec!["dataset", "--design", s(&design), "--out", o],
         vec!["signals", "--transfer-path", f, "--out", o],
         vec!["wear", "--config", s(&case), "--out", o],
+        vec!["load-spectrum", "--history", f, "--out", o],
     ] {
         let r = within(&args, 20);
         let e = stderr(&r);

@@ -27,7 +27,11 @@ function                              command                   returns
 ``calibrate(case, observations)``     gearwear calibrate        ``CalibrationResult``
 ``predict(case, posterior, ...)``     gearwear predict          ``PredictionResult``
 ``predict_merge(inputs)``             gearwear predict-merge    ``PredictionResult``
+``load_spectrum(history)``            gearwear load-spectrum    ``LoadSpectrumResult``
 ====================================  ========================  ======================
+
+A case with a ``[load_spectrum]`` runs ``wear``, ``run``, ``calibrate``, ``predict`` and
+wear sweeps under its spectrum; ``WearResult.duty`` then views what each bin did.
 
 ``out=FOLDER`` writes the command's output set there (checkpoints and ``resume=True``
 for wear studies, finished cases skipped on a rerun of a sweep); without it nothing is
@@ -65,8 +69,10 @@ from ._results import (
     COORDINATE_UNITS,
     COORDINATES,
     CalibrationResult,
+    DutyResult,
     DatasetResult,
     DynamicsResult,
+    LoadSpectrumResult,
     PredictionResult,
     RunResult,
     SignalsResult,
@@ -93,6 +99,7 @@ __all__ = [
     "calibrate",
     "predict",
     "predict_merge",
+    "load_spectrum",
     "signals",
     "dataset",
     "dataset_merge",
@@ -105,6 +112,8 @@ __all__ = [
     "SweepResult",
     "CalibrationResult",
     "PredictionResult",
+    "LoadSpectrumResult",
+    "DutyResult",
     "SignalsResult",
     "DatasetResult",
     "COORDINATES",
@@ -472,6 +481,51 @@ def predict_merge(
     )
     return _done(PredictionResult(**n), n)
 
+
+def load_spectrum(
+    history: _Any,
+    *,
+    columns: _Optional[_Sequence[str]] = None,
+    torque_classes: int = 10,
+    speed_classes: int = 5,
+    interpolation: str = "linear",
+    level: str = "mean",
+    torque_shaft: str = "pinion",
+    gap_factor: float = 10.0,
+    out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> LoadSpectrumResult:
+    """The load spectrum of a measured torque / speed history, as ``gearwear
+    load-spectrum --history FILE``: its load duration distribution (time at level on a
+    torque x speed grid, ISO 6336-6) and the spectrum for a case (``result.apply(case)``,
+    ``result.toml``, or with ``out`` the files ``spectrum.csv`` and
+    ``load_spectrum.toml``), with the time-at-level histogram.
+
+    ``history``: a CSV path, a pandas DataFrame, a mapping of columns, a structured array
+    or a 2-D array with ``columns=[...]``: ``time_s`` (s, strictly increasing),
+    ``torque_nm`` (N m on ``torque_shaft``) and ``input_speed_hz`` (Hz) or
+    ``input_speed_rpm``; other columns are ignored; NaN is a gap in the record (an
+    error). ``torque_classes`` and ``speed_classes`` equal classes from 0 to the largest
+    value; ``interpolation``: ``"linear"`` between samples (a ramp counts exactly) or
+    ``"hold"`` (sample and hold); ``level``: each bin's torque the cell's
+    revolution-weighted ``"mean"`` (keeps its wear) or the class's ``"upper"`` edge;
+    ``gap_factor``: the longest interval accepted, in median intervals.
+    """
+    h = _table(history, "history", columns)
+    n = _native.load_spectrum(
+        h,
+        torque_classes=torque_classes,
+        speed_classes=speed_classes,
+        interpolation=interpolation,
+        level=level,
+        torque_shaft=torque_shaft,
+        gap_factor=gap_factor,
+        out=_path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+    )
+    return _done(LoadSpectrumResult(**n), n)
 
 
 def signals(

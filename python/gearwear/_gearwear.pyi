@@ -226,3 +226,20 @@ def _time_rust_dynamics(case: Case, repeats: int) -> List[float]:
 def _running_jobs() -> int:
     """Jobs still running on the pool, including an interrupted evaluation finishing in
     the background (for tests)."""
+
+def load_spectrum(
+    history: _TableIn,
+    *,
+    torque_classes: int = 10,
+    speed_classes: int = 5,
+    interpolation: str = "linear",
+    level: str = "mean",
+    torque_shaft: str = "pinion",
+    gap_factor: float = 10.0,
+    out: _Path = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
+    """``gearwear load-spectrum``."""
+
+def _case_with_spectrum(case: Case, section: str) -> Case: ...

@@ -25,6 +25,8 @@ __all__ = [
     "SweepResult",
     "CalibrationResult",
     "PredictionResult",
+    "LoadSpectrumResult",
+    "DutyResult",
 ]
 
 #: The 8 generalised coordinates of the dynamic model, in the column order of
@@ -391,9 +393,62 @@ class WearRunResult:
         return f"<gearwear.WearRunResult {self.mode}: {len(self.cycles)} records>"
 
 
+class DutyResult:
+    """What a wear study under a load spectrum (a case with ``[load_spectrum]``) adds:
+    the spectrum, what each bin did per run, and (``run`` only) the lives to the wear
+    limit. The runs themselves (``WearResult.runs``) hold the shared wear state and the
+    response at the monitoring bin."""
+
+    def __init__(self, tables: Mapping[str, Table], summary: Mapping[str, Any]):
+        self._tables = tables
+        #: The summary's ``load_spectrum``: the bins as used, the monitoring bin, per run
+        #: the ranking and wear per bin, and with ``run`` the life table.
+        self.summary: Mapping[str, Any] = summary
+
+    @property
+    def spectrum(self) -> Table:
+        """One row per bin: ``bin``, ``torque_nm``, ``input_speed_hz`` (scales applied),
+        and the shares of cycles, time and (of the first run) pinion wear, percent."""
+        return self._tables["duty_spectrum"]
+
+    def ranking(self, mode: str = "dynamic") -> Table:
+        """The bins of run ``mode`` ranked by their share of the pinion's wear (largest
+        first): ``rank``, ``bin``, torque, speed, the shares of cycles, pinion wear, gear
+        wear and wear at the deepest point, the largest depth the bin added (um) and the
+        wear intensity (share of wear / share of cycles)."""
+        return self._tables[f"bins_{mode}"]
+
+    def wear_by_bin(self, mode: str = "dynamic") -> Table:
+        """Wear depth along the profile at the end of run ``mode``: ``rho1_mm``, the
+        totals and what each bin added (``wear_pinion_bin{i}_um``, ``wear_gear_bin{i}_um``)."""
+        return self._tables[f"duty_wear_by_bin_{mode}"]
+
+    def dynamic_factor(self, mode: str = "dynamic") -> Table:
+        """The dynamic factor (max / mean mesh force) of each bin at every update of run
+        ``mode``: ``cycles``, ``dynamic_factor_bin{i}``."""
+        return self._tables[f"duty_dynamic_factor_{mode}"]
+
+    @property
+    def life(self) -> Optional[Table]:
+        """Cycles to the wear limit at each bin alone, under the spectrum and by the
+        linear mix (``run`` only; None after ``wear``)."""
+        return self._tables.get("duty_life")
+
+    def __repr__(self) -> str:
+        return f"<gearwear.DutyResult: {self.spectrum.n_rows} bins>"
+
+
 class WearResult(_Result):
     """The wear study (dynamic and/or quasi-static): what ``gearwear wear`` writes.
-    Tables ``updates_MODE`` and ``wear_profiles_MODE`` per mode; ``runs`` views them."""
+    Tables ``updates_MODE`` and ``wear_profiles_MODE`` per mode; ``runs`` views them;
+    under a load spectrum ``duty`` views what each bin did."""
+
+    @property
+    def duty(self) -> Optional[DutyResult]:
+        """The duty-cycle results of a case with a load spectrum, else None."""
+        if "duty_spectrum" not in self.tables:
+            return None
+        return DutyResult(self.tables, self.summary.get("load_spectrum", {}))
 
     @property
     def runs(self) -> Dict[str, WearRunResult]:
@@ -453,6 +508,37 @@ class PredictionResult(_Result):
     def life(self) -> Dict[str, Any]:
         """Cycles to the wear limit: p05, median, p95, probability beyond the horizon."""
         return self.summary["remaining_life_cycles"]
+
+
+class LoadSpectrumResult(_Result):
+    """The load spectrum of a measured history (``gearwear load-spectrum``): the summary
+    (time under load and idle, revolutions, the counting method and classes, the bins),
+    the tables ``spectrum`` (one row per bin: ``torque_nm``, ``input_speed_hz``,
+    ``share``; the CSV a case's ``load_spectrum.file`` reads), ``ldd`` (every torque x
+    speed cell: class edges, ``time_s``, ``cycles``, ``mean_torque_nm``) and
+    ``ldd_time_at_level`` (the histogram's data, in hours)."""
+
+    @property
+    def bins(self) -> Table:
+        """The spectrum's bins: ``torque_nm``, ``input_speed_hz``, ``share`` (of the
+        pinion revolutions)."""
+        return self.tables["spectrum"]
+
+    @property
+    def ldd(self) -> Table:
+        """The load duration distribution: one row per torque x speed cell (torque class
+        slowest), with its time (s), revolutions and mean torque (N m)."""
+        return self.tables["ldd"]
+
+    @property
+    def toml(self) -> str:
+        """The spectrum as a ``[load_spectrum]`` section of a case file, bins inline."""
+        return self._documents["load_spectrum.toml"].decode("utf-8")
+
+    def apply(self, case: Any) -> Any:
+        """``case`` with this spectrum as its ``[load_spectrum]`` (any spectrum it had is
+        replaced); a new, validated ``Case``."""
+        return _gearwear._case_with_spectrum(case, self.toml)
 
 
 def _as_numbers(values: Sequence[str]) -> np.ndarray:

@@ -136,6 +136,10 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::NoBudget => "`budget_scale=math.inf`",
         Arg::Inputs => "`inputs`",
         Arg::Replace => "`replace=True`",
+        Arg::History => "`history`",
+        Arg::TorqueClasses => "`torque_classes`",
+        Arg::SpeedClasses => "`speed_classes`",
+        Arg::GapFactor => "`gap_factor`",
         Arg::TransferPath => "`transfer_path`",
         Arg::Design => "`design`",
     }

@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 
 mod case;
 mod convert;
+mod duty;
 mod errors;
 mod jobs;
 mod pool;
@@ -58,6 +59,8 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jobs::calibrate, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::predict, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::predict_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(duty::load_spectrum, m)?)?;
+    m.add_function(wrap_pyfunction!(duty::_case_with_spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(signals::signals, m)?)?;
     m.add_function(wrap_pyfunction!(signals::dataset, m)?)?;
     m.add_function(wrap_pyfunction!(signals::dataset_merge, m)?)?;

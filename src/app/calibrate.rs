@@ -13,6 +13,7 @@ use crate::prognostics::calibrate::{calibrate, model_band, Calibration, Calibrat
 use crate::prognostics::check::{
     check_calibration, theta_at_k_quantile, worst_ratio, CalibrationCheck,
 };
+use crate::prognostics::indicator::indicators_of;
 use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
 use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
@@ -133,11 +134,24 @@ impl Job for CalibrateJob {
             "calibrate: {n_ref} reference wear run(s) on {} threads",
             rayon::current_num_threads()
         ));
-        let sur = counted(
+        let mut sur = counted(
             observer,
             Task::items("reference_runs", "reference runs", n_ref),
             |tick| Surrogate::build(case, &prior, obs.max_cycles(), nodes, tick),
         )?;
+        let observed: Vec<Quantity> = obs.series.iter().map(|s| s.quantity).collect();
+        if !indicators_of(&observed).is_empty() {
+            counted(
+                observer,
+                Task::items(
+                    "indicators",
+                    "indicators of the reference runs",
+                    sur.run_count(),
+                ),
+                |tick| sur.attach_indicators(case, &observed, tick),
+            )
+            .map_err(|e| JobError::Failed(anyhow::anyhow!("condition indicators: {e}")))?;
+        }
         for (t, until, msg) in sur.failures() {
             observer.warning(&format!(
                 "the reference run at k = {:.3e} m^2/N, roughness factor {}, load torque {} N m stopped at a wear exposure k N = {until:.3e} m^2/N ({msg}); parameters that need more count as failed samples",

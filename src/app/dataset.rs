@@ -208,6 +208,8 @@ fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str) -> Value 
             "csv/<record_id>.csv": "the same record as CSV with time_s (when the design asks)",
             "records/<record_id>.json": "labels and indicators of one record",
             "index.parquet": "one row per record: labels and indicators (index.csv: the same as CSV)",
+            "indicator_trends.csv": "the first channel's indicators along each trajectory (condition x speed x load), mean over the noise realisations of each state",
+            "indicator_trends.png": "the same as a figure, against the pinion load cycles",
             "state/": "the dataset's description and run-to-failure trajectories (used by resumes and merges)",
         },
     })

@@ -6,6 +6,8 @@
 //!   SHA-256 of its signal file (written last: a record is finished when this exists);
 //! - `state/dataset.json`: the dataset's description (design, cases, chain, axes);
 //! - `state/trajectory_<condition>.json`: the condition's run-to-failure trajectory;
+//! - `indicator_trends.csv`, `indicator_trends.png`: the condition indicators along each
+//!   trajectory (`study::dataset::trends`);
 //! - `index.parquet`, `index.csv`: one row per record; `metadata.json`: everything
 //!   needed to read and reproduce the dataset. Built from the files above, by the same
 //!   code for an unsharded run and a merge, so the two are byte for byte equal.
@@ -16,9 +18,12 @@ use crate::io::dir::Dir;
 use crate::io::parquet::parquet_bytes;
 use crate::io::set_state::{check_replaceable, read_all, Ours, SetState};
 use crate::io::{OutputDir, OutputError};
+use crate::report::dataset_trends::trend_figure;
+use crate::report::plot::render_png;
 use crate::study::dataset::index::index_columns;
 use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::Trajectory;
+use crate::study::dataset::trends::{trend_columns, trends};
 use crate::study::dataset::RecordLabels;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -225,6 +230,15 @@ pub fn stage_index_and_metadata(
     out.stage("index.parquet", &pq)?;
     let csv = columns_csv(&cols).map_err(|e| BuildError::Format(format!("index.csv: {e}")))?;
     out.stage("index.csv", &csv)?;
+    if let Some(t) = trends(&cols) {
+        let table = columns_csv(&trend_columns(&t))
+            .map_err(|e| BuildError::Format(format!("indicator_trends.csv: {e}")))?;
+        out.stage("indicator_trends.csv", &table)?;
+        let fig = trend_figure(&t, &unit);
+        let png = render_png(&fig, 900, 1500)
+            .map_err(|e| BuildError::Format(format!("indicator_trends.png: {e}")))?;
+        out.stage("indicator_trends.png", &png)?;
+    }
     let mut metadata = body;
     metadata["index_columns"] = Value::Object(units_json);
     metadata["trajectories"] = json!(trajectories(root)

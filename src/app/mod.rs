@@ -19,6 +19,7 @@
 //! | [`CalibrateJob`] | posterior of the wear coefficient given observations | [`Outcome`] |
 //! | [`PredictJob`] | Monte Carlo prediction of wear, vibration and remaining life | [`Outcome`] |
 //! | [`PredictMergeJob`] | the shards of a prediction joined | [`Outcome`] |
+//! | [`LoadSpectrumJob`] | a measured torque / speed history -> load duration distribution and spectrum | [`Outcome`] |
 //! | [`SignalsJob`] | one record of what a sensor sees, its indicators and figures | [`Outcome`] |
 //! | [`DatasetJob`] | a labelled dataset from a study design (sharded, resumable) | [`Outcome`] |
 //! | [`DatasetMergeJob`] | the shards of a dataset joined | [`Outcome`] |
@@ -44,6 +45,7 @@ pub mod duty_runs;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;
+pub mod load_spectrum;
 pub mod observer;
 pub mod predict;
 pub mod predict_merge;
@@ -59,6 +61,7 @@ pub use dataset::{DatasetJob, DatasetMergeJob, DesignSource};
 pub use dynamics::{DynamicsJob, TransmissionErrorSource};
 pub use error::JobError;
 pub use inputs::TableSource;
+pub use load_spectrum::LoadSpectrumJob;
 pub use observer::{Observer, Task, Unit};
 pub use predict::{ForwardModel, PredictJob, PredictOptions};
 pub use predict_merge::PredictMergeJob;

@@ -81,6 +81,9 @@ pub enum Command {
     Predict(PredictArgs),
     /// Join the shards of a sharded `predict` and write its outputs.
     PredictMerge(PredictMergeArgs),
+    /// The load spectrum of a measured torque / speed history (time at level, ISO 6336-6),
+    /// for a case's [load_spectrum], with the time-at-level histogram.
+    LoadSpectrum(LoadSpectrumArgs),
 }
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
@@ -245,7 +248,7 @@ pub struct SweepMergeArgs {
 pub struct CalibrateArgs {
     #[command(flatten)]
     pub case: CaseArgs,
-    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV), optional
+    /// Observations CSV: `cycles`, observed quantities (names of the updates CSV, or condition indicators such as `input_rms`), optional
     /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
     #[arg(long, value_name = "FILE")]
     pub observations: PathBuf,
@@ -322,4 +325,57 @@ pub struct PredictMergeArgs {
     /// Output directory.
     #[arg(long)]
     pub out: PathBuf,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum InterpolationArg {
+    /// Piecewise linear between samples (a ramp counts exactly).
+    Linear,
+    /// Each sample held until the next (a logger's sample-and-hold).
+    Hold,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LevelArg {
+    /// Revolution-weighted mean torque of the cell (keeps the cell's wear).
+    Mean,
+    /// Upper edge of the torque class (conservative rating).
+    Upper,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ShaftArg {
+    Pinion,
+    Gear,
+}
+
+#[derive(Debug, Args)]
+pub struct LoadSpectrumArgs {
+    /// CSV with columns time_s (s), torque_nm (N m) and input_speed_hz (Hz) or
+    /// input_speed_rpm (rpm); other columns are ignored.
+    #[arg(long, value_name = "CSV")]
+    pub history: PathBuf,
+    /// Output directory: spectrum.csv (for load_spectrum.file), load_spectrum.toml (the
+    /// section to paste into a case), ldd.csv, the figures and summary.json.
+    #[arg(long, default_value = "results/load-spectrum")]
+    pub out: PathBuf,
+    /// Equal torque classes over [0, max torque].
+    #[arg(long, default_value_t = 10)]
+    pub torque_classes: usize,
+    /// Equal speed classes over [0, max speed].
+    #[arg(long, default_value_t = 5)]
+    pub speed_classes: usize,
+    /// How the history runs between samples.
+    #[arg(long, value_enum, default_value = "linear")]
+    pub interpolation: InterpolationArg,
+    /// The torque each bin gets.
+    #[arg(long, value_enum, default_value = "mean")]
+    pub level: LevelArg,
+    /// Shaft the torque was measured on.
+    #[arg(long, value_enum, default_value = "pinion")]
+    pub torque_shaft: ShaftArg,
+    /// Longest interval accepted between samples, in median intervals (longer: a gap,
+    /// an error).
+    #[arg(long, default_value_t = 10.0)]
+    pub gap_factor: f64,
 }

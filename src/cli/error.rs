@@ -40,6 +40,10 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::NoBudget => "--no-budget",
         Arg::Inputs => "input",
         Arg::Replace => "--replace",
+        Arg::History => "--history",
+        Arg::TorqueClasses => "--torque-classes",
+        Arg::SpeedClasses => "--speed-classes",
+        Arg::GapFactor => "--gap-factor",
         Arg::TransferPath => "--transfer-path",
         Arg::Design => "--design",
     }

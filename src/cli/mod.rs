@@ -24,6 +24,7 @@ mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
+mod load_spectrum_cmd;
 mod output;
 mod predict_cmd;
 mod progress;
@@ -81,6 +82,7 @@ fn run(cli: &Cli) -> u8 {
         Command::Calibrate(a) => calibrate_cmd::run(a, budget),
         Command::Predict(a) => predict_cmd::run(a, budget),
         Command::PredictMerge(a) => predict_cmd::merge(a, budget),
+        Command::LoadSpectrum(a) => load_spectrum_cmd::run(a, budget),
     };
     match result {
         Ok(()) => 0,

@@ -113,7 +113,7 @@ const FORM: &str = "\
   inertias: the model computes them from the geometry (`gearwear config --new-pair` prints
   a case that uses it; docs/MODEL.md, section 7).
 - `[load_spectrum]` (optional) gives the duty cycle as bins of torque, speed and share
-  instead of the single operating point (docs/DUTY_CYCLE.md):
+  instead of the single operating point (docs/MODEL.md, section 10):
   `bins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, {torque_nm = 80, input_speed_hz = 45, share = 0.3}]`,
   or `file = \"spectrum.csv\"` with a header of those names (a relative path is read from the
   case file's folder). Per bin, `input_speed_rpm` may replace `input_speed_hz`
@@ -123,7 +123,11 @@ const FORM: &str = "\
   than 0; each bin's torque and speed, scales applied, must lie in the ranges of
   `operating.load_torque_nm` and `operating.input_speed_hz`. A resolved case (every
   `summary.json`) holds the bins inline, in Hz and shares. The studies that accumulate wear
-  use the spectrum; `stiffness` and `dynamics` use `[operating]`.
+  use the spectrum (wear, run, calibrate, predict, sweeps with `--run wear`, where
+  `load_spectrum.torque_scale` and `speed_scale` are sweep axes); `stiffness` and
+  `dynamics` use `[operating]`. `gearwear load-spectrum --history FILE --out DIR` turns a
+  measured torque / speed history into `spectrum.csv` for `file` and `load_spectrum.toml`
+  to paste (example: examples/duty_cycle/).
 - Beyond these ranges, a case is checked against its geometry (a bore inside the root
   circle, teeth that touch, a Hertz pressure below 10 GPa, a friction coefficient below 1,
   Sainsot's fitted range) and its cost against the run budget (`--budget-scale`, `--no-budget`;

@@ -23,7 +23,7 @@
 //! cycles exact); its torque is, by default (`mean`), the revolution-weighted mean torque of
 //! the cell. That keeps the wear of the cell exact in the quasi-static limit, because
 //! Archard wear per cycle is linear in the load (p0 ~ W^1/2 times the band 2a ~ W^1/2;
-//! docs/DUTY_CYCLE.md). `upper` takes the class's upper edge instead: the conservative
+//! docs/MODEL.md, section 10). `upper` takes the class's upper edge instead: the conservative
 //! choice of rating, which overstates wear by up to one class width.
 //!
 //! **Why no rainflow count.** Rainflow counting (ASTM E1049) pairs the reversals of a

@@ -10,7 +10,7 @@
 //! [`study`] puts them together as the `wear` and `run` jobs use them.
 //! [`history`] reads a measured time series of torque and speed and [`ldd`] turns it into
 //! a load duration distribution (time at level, ISO 6336-6) and a spectrum.
-//! docs/DUTY_CYCLE.md states the method and its checks.
+//! docs/MODEL.md, section 10 states the method and its checks.
 
 pub mod contribution;
 pub mod history;

@@ -6,8 +6,10 @@ use super::contribution::combined_run;
 use super::life::{life_table, LifeTable};
 use super::model::SpectrumModel;
 use super::wear::{run_spectrum_modes, SpectrumRun};
+use crate::config::Case;
 use crate::study::paper::{paper_wear_states, PaperStudy};
-use crate::study::wear_loop::WearMode;
+use crate::study::sweep::{wear_results, CaseError, CaseOutcome, SweepRun};
+use crate::study::wear_loop::{StopKind, WearMode};
 
 /// Life runs stop here at the latest: 1e15 pinion revolutions are 30 000 years at 1 kHz,
 /// beyond any machine's life, so a bin that has not worn to the limit by then never will.
@@ -66,5 +68,41 @@ pub fn run_duty_study(
             wear_states,
         }),
         life: Some(life),
+    })
+}
+
+/// A case of a sweep: under the case's spectrum when it has one and the sweep runs wear
+/// studies (so `load_spectrum.torque_scale` and `speed_scale` are sweep axes), else the
+/// single-point case ([`crate::study::sweep::run_case`]). The row is read as the
+/// spectrum's single-point view: the dynamics columns are the monitoring bin's new-teeth
+/// response, the wear columns those of the shared wear state.
+pub fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+    if run != SweepRun::Wear || case.load_spectrum.is_none() {
+        return crate::study::sweep::run_case(case, run);
+    }
+    let sm = SpectrumModel::from_case(case).map_err(CaseError::Model)?;
+    let starts = vec![
+        SpectrumRun::new(WearMode::Dynamic, sm.shares.clone()),
+        SpectrumRun::new(WearMode::QuasiStatic, sm.shares.clone()),
+    ];
+    let runs = run_spectrum_modes(&sm, starts, &|_, _| Ok(())).map_err(CaseError::Solve)?;
+    // A run the solver gave up on is a failed case; one that left the model's domain is a
+    // result (its cycles column says where it stopped), as for one operating point.
+    for r in &runs {
+        if let Some(stop) = r.stopped.as_ref().filter(|s| s.kind == StopKind::Numerical) {
+            return Err(CaseError::Solve(anyhow::anyhow!(
+                "the {} wear run stopped early: {}",
+                r.mode.name(),
+                stop.reason
+            )));
+        }
+    }
+    let (d, q) = (
+        combined_run(&runs[0], sm.monitoring),
+        combined_run(&runs[1], sm.monitoring),
+    );
+    Ok(CaseOutcome {
+        results: wear_results(&d, &q),
+        warnings: sm.warnings(),
     })
 }

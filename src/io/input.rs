@@ -27,6 +27,8 @@ pub const MAX_TRANSMISSION_ERROR_BYTES: u64 = 64 << 20;
 pub const MAX_TRANSFER_PATH_BYTES: u64 = 64 << 20;
 /// Largest load spectrum file (CSV of bins): 1e5 bins of a few numbers.
 pub const MAX_LOAD_SPECTRUM_BYTES: u64 = 64 << 20;
+/// Largest load-time history (`load-spectrum` input): 1e7 samples of a few numbers.
+pub const MAX_HISTORY_BYTES: u64 = 512 << 20;
 /// Largest dataset design file (TOML).
 pub const MAX_DESIGN_BYTES: u64 = 16 << 20;
 /// Largest sweep case record (`cases/N.json`): one case's results and states, a few kB.

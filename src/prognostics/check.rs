@@ -67,7 +67,10 @@ pub fn check_calibration(
     ps.par_iter()
         .filter_map(|p| {
             let theta = theta_at_k_quantile(cal, *p);
-            let truth = run_trajectory(&apply(case, &theta), None, obs.max_cycles()).ok()?;
+            let c = apply(case, &theta);
+            let mut truth = run_trajectory(&c, None, obs.max_cycles()).ok()?;
+            let observed: Vec<Quantity> = obs.series.iter().map(|s| s.quantity).collect();
+            super::indicator::attach(&mut truth, &c, &observed).ok()?;
             let quantities = obs
                 .series
                 .iter()

@@ -24,6 +24,7 @@ use crate::duty::SpectrumModel;
 use crate::study::model::{Model, ModelError};
 use crate::study::wear_loop::{run_wear, UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 
 /// A dynamic wear study's records.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -35,6 +36,9 @@ pub struct Trajectory {
     pub records: Vec<UpdateRecord>,
     /// Why the run stopped before `requested_cycles` (None: it reached them).
     pub failure: Option<String>,
+    /// Condition indicators at the first updates, by name (`super::indicator::attach`).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub indicators: BTreeMap<String, Vec<f64>>,
 }
 
 /// Where a wear trajectory reaches a limit.
@@ -87,12 +91,25 @@ impl Trajectory {
             _ => match self.records.get(j + 1) {
                 Some(next) if next.wear.cycles > r.wear.cycles => {
                     let t = (n / (next.wear.cycles - r.wear.cycles)).min(1.0);
-                    let (a, b) = (q.of_summary(&r.summary), q.of_summary(&next.summary));
+                    let (a, b) = (self.response(q, j)?, self.response(q, j + 1)?);
                     a + t * (b - a)
                 }
-                _ => q.of_summary(&r.summary),
+                _ => self.response(q, j)?,
             },
         })
+    }
+
+    /// Value of a response quantity at update `j`; None for an indicator not attached
+    /// there.
+    fn response(&self, q: Quantity, j: usize) -> Option<f64> {
+        match q {
+            Quantity::Indicator(i) => self
+                .indicators
+                .get(super::indicator::name(i))?
+                .get(j)
+                .copied(),
+            _ => Some(q.of_summary(&self.records[j].summary)),
+        }
     }
 
     /// Cycles at which the maximum pinion wear first reaches `limit_um`.
@@ -153,6 +170,7 @@ pub fn run_duty_trajectory(
         requested_cycles: total_cycles,
         records,
         failure,
+        indicators: BTreeMap::new(),
     };
     if future.is_none() && c.load_spectrum.is_none() {
         let model = Model::from_case(&c)?;
@@ -255,6 +273,7 @@ mod tests {
                 rec(100.0, [1e-7, 2e-7], [1e-9, 1e-9], 2e-3),
             ],
             failure: None,
+            indicators: BTreeMap::new(),
         }
     }
 

@@ -17,6 +17,7 @@ pub mod calibrate;
 pub mod check;
 pub mod forward;
 pub mod grid;
+pub mod indicator;
 pub mod likelihood;
 pub mod limits;
 pub mod mcmc;

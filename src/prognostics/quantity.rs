@@ -21,6 +21,9 @@ pub enum Quantity {
     DtePeakToPeak,
     /// Amplitude of the first mesh harmonic of the DTE, um.
     DteHarmonic1,
+    /// A condition indicator of the recorded housing vibration (`super::indicator`: the
+    /// index of its name), in the unit of `signals.channel_unit` or dimensionless.
+    Indicator(u16),
 }
 
 /// Every quantity, in the order tables list them.
@@ -51,6 +54,7 @@ impl Quantity {
             Quantity::DteMax => "dte_max_um",
             Quantity::DtePeakToPeak => "dte_peak_to_peak_um",
             Quantity::DteHarmonic1 => "dte_harmonic1_um",
+            Quantity::Indicator(i) => super::indicator::name(*i),
         }
     }
 
@@ -64,16 +68,21 @@ impl Quantity {
             Quantity::DteMax => "max DTE (um)".into(),
             Quantity::DtePeakToPeak => "DTE peak-to-peak (um)".into(),
             Quantity::DteHarmonic1 => "DTE 1st mesh harmonic (um)".into(),
+            Quantity::Indicator(i) => format!("indicator {}", super::indicator::name(*i)),
         }
     }
 
     pub fn parse(name: &str) -> Option<Self> {
-        ALL.iter().copied().find(|q| q.name() == name)
+        ALL.iter()
+            .copied()
+            .find(|q| q.name() == name)
+            .or_else(|| super::indicator::parse(name).map(Quantity::Indicator))
     }
 
     /// Names of every quantity, comma separated (for error messages).
     pub fn valid_names() -> String {
-        ALL.iter().map(|q| q.name()).collect::<Vec<_>>().join(", ")
+        let names = ALL.iter().map(|q| q.name()).collect::<Vec<_>>().join(", ");
+        format!("{names}, and the {}", super::indicator::pattern())
     }
 
     /// Whether the quantity is a wear depth (known exactly between updates: the wear
@@ -84,10 +93,11 @@ impl Quantity {
     }
 
     /// Value of a response quantity in display units (the updates CSV's conversions:
-    /// x 1e6 for um, x 1e3 for mm/s). NaN for the wear depths, which come from the profile.
+    /// x 1e6 for um, x 1e3 for mm/s). NaN for the wear depths, which come from the
+    /// profile, and for the indicators, which come from a record (`super::indicator`).
     pub fn of_summary(&self, s: &ResponseSummary) -> f64 {
         match self {
-            Quantity::MaxWearPinion | Quantity::MaxWearGear => f64::NAN,
+            Quantity::MaxWearPinion | Quantity::MaxWearGear | Quantity::Indicator(_) => f64::NAN,
             Quantity::VelocityRms => s.velocity_y_pinion_rms_m_per_s * 1e3,
             Quantity::MeshHarmonic(h) => {
                 s.velocity_y_pinion_harmonics_m_per_s[(*h).clamp(1, 4) - 1] * 1e3

@@ -127,6 +127,7 @@ fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelEr
         requested_cycles: total,
         records,
         failure: run_failure(result),
+        indicators: Default::default(),
     })
 }
 
@@ -330,6 +331,31 @@ impl Surrogate {
     /// The run behind a weight and the factor from sample cycles to its cycles.
     fn run(&self, c: usize, r: usize, k: f64) -> (&Trajectory, f64) {
         (&self.chains[c].runs[r], k / self.chains[c].k[r])
+    }
+
+    /// Compute the condition indicators among `qs` at every update of every reference run
+    /// (`super::indicator`), each run with its own parameters; `done` is called per run.
+    pub fn attach_indicators(
+        &mut self,
+        case: &Case,
+        qs: &[Quantity],
+        done: &(dyn Fn() + Sync),
+    ) -> Result<(), String> {
+        for chain in &mut self.chains {
+            let c = apply(case, &chain.theta);
+            for run in &mut chain.runs {
+                let mut rc = c.clone();
+                rc.wear.coefficient_m2_per_n = run.coefficient_m2_per_n;
+                super::indicator::attach(run, &rc, qs)?;
+                done();
+            }
+        }
+        Ok(())
+    }
+
+    /// Reference runs in all chains.
+    pub fn run_count(&self) -> usize {
+        self.chains.iter().map(|c| c.runs.len()).sum()
     }
 
     /// Value of `q` at `cycles` for parameters `theta`; None beyond the reference runs.

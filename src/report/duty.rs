@@ -63,7 +63,7 @@ pub fn duty_summary(sm: &SpectrumModel, runs: &[&SpectrumRun], life: Option<&Lif
         "bins": bins,
         "monitoring_bin": sm.monitoring + 1,
         "seconds_per_cycle": s.seconds_per_cycle(),
-        "notes": "Each update advances every bin by its share of the block's cycles on the shared worn profile (docs/DUTY_CYCLE.md). The single-point outputs (updates_*.csv, wear_profiles_*.csv, Fig. 11-13) hold the spectrum's wear and the response at the monitoring bin.",
+        "notes": "Each update advances every bin by its share of the block's cycles on the shared worn profile (docs/MODEL.md, section 10). The single-point outputs (updates_*.csv, wear_profiles_*.csv, Fig. 11-13) hold the spectrum's wear and the response at the monitoring bin.",
     });
     for r in runs {
         let df = crate::duty::contribution::dynamic_factors(r);
@@ -212,7 +212,7 @@ pub fn duty_section(
     };
     let mut tables = vec![spectrum];
     let mut paragraphs = vec![format!(
-        "The gearbox runs through {} operating bins. Every wear update advances all of them on the shared worn profile, each by its share of the block's cycles (docs/DUTY_CYCLE.md); the single-point figures above show the spectrum's wear and the response at bin {} (the monitoring bin). A bin whose share of the wear exceeds its share of the cycles wears the flanks faster than its time suggests.",
+        "The gearbox runs through {} operating bins. Every wear update advances all of them on the shared worn profile, each by its share of the block's cycles (docs/MODEL.md, section 10); the single-point figures above show the spectrum's wear and the response at bin {} (the monitoring bin). A bin whose share of the wear exceeds its share of the cycles wears the flanks faster than its time suggests.",
         sm.len(),
         sm.monitoring + 1
     )];

@@ -4,11 +4,13 @@
 pub mod artifacts;
 pub mod case;
 pub mod comparison;
+pub mod dataset_trends;
 pub mod duty;
 pub mod duty_figures;
 pub mod dynamics;
 pub mod figures;
 pub mod html;
+pub mod ldd;
 pub mod modes;
 pub mod paper;
 pub mod plot;

@@ -184,7 +184,7 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
     Some((fig, table))
 }
 
-/// The per-tooth wear of the last record of `run` (`wear_teeth_MODE.csv`, a column per
+/// The per-tooth wear of the last record of `run` (`teeth_wear_MODE.csv`, a column per
 /// tooth) and its heat map, tooth index against the tooth's own roll angle.
 pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)> {
     let last = run.last()?;
@@ -323,7 +323,7 @@ pub fn add_teeth_artifacts(model: &Model, a: &mut Artifacts) {
         a.summary["teeth"] = v;
     }
     if let Some((fig, table)) = tvms_figure(model) {
-        a.figure_with_data("mesh_stiffness_teeth.png", fig, table);
+        a.figure_with_data("teeth_mesh_stiffness.png", fig, table);
     }
 }
 
@@ -333,7 +333,7 @@ pub fn add_sideband_artifacts(model: &Model, r: &DynamicResponse, label: &str, a
         return;
     }
     let (fig, table) = sideband_figure(model, r, label);
-    a.figure_with_data("spectrum_sidebands.png", fig, table);
+    a.figure_with_data("teeth_spectrum_sidebands.png", fig, table);
     a.summary["excitation_mesh_periods"] = json!(r.excitation_periods);
 }
 
@@ -341,7 +341,7 @@ pub fn add_sideband_artifacts(model: &Model, r: &DynamicResponse, label: &str, a
 pub fn add_tooth_wear_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifacts) {
     for run in runs {
         if let Some((fig, table)) = tooth_wear_figure(model, run) {
-            a.figure_with_data(format!("wear_teeth_{}.png", run.mode.name()), fig, table);
+            a.figure_with_data(format!("teeth_wear_{}.png", run.mode.name()), fig, table);
         }
     }
 }

@@ -555,6 +555,27 @@ pub fn estimate_sweep_merge(bytes: u64) -> Estimate {
     }
 }
 
+/// The estimated cost of `load-spectrum` on a history of `bytes` of text: read, parsed
+/// into its columns and counted in one pass, about three times the text in memory, and
+/// 2e-8 s a byte (a 1e6-sample history, about 30 MB of text, counts in 0.39 s:
+/// docs/PERFORMANCE.md, duty-cycle benchmark).
+pub fn estimate_history(bytes: u64) -> Estimate {
+    Estimate {
+        steps_per_evaluation: 0.0,
+        steps_to_give_up: 0.0,
+        recorded_samples: 0.0,
+        wear_per_cycle_m: None,
+        wear_updates_dynamic: 0.0,
+        wear_updates_quasi_static: 0.0,
+        terms: vec![Term {
+            what: "the history read and counted",
+            seconds: bytes as f64 * 2e-8,
+            bytes: 3.0 * bytes as f64,
+            keys: &["the size of the history"],
+        }],
+    }
+}
+
 /// Memory a sweep holds per case besides the cases in flight: the resolved case, its
 /// record and its row, bytes.
 pub const BYTES_PER_SWEEP_CASE: f64 = 16e3;

@@ -17,8 +17,8 @@ pub mod table;
 pub mod verify;
 
 pub use case_run::{
-    run_case, CaseError, CaseOutcome, CaseRecord, CaseResults, ContinuationLink, DynamicsRow,
-    SweepRun, WearEnd,
+    run_case, wear_results, CaseError, CaseOutcome, CaseRecord, CaseResults, ContinuationLink,
+    DynamicsRow, SweepRun, WearEnd,
 };
 pub use continuation::{Branch, Continuation, ContinuationPlan};
 pub use plan::{parse_axis, parse_vary, Axis, AxisValue, Shard, SweepPlan};

@@ -12,7 +12,7 @@ use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
 use crate::geometry::flank_shape::{
     slope_form_added_m, ActiveFlank, FlankModification, Relief, Side,
 };
-use crate::geometry::iso1328::{draw_gear, flank_tolerances, FlankTolerances};
+use crate::geometry::iso1328::{draw_gear, flank_tolerances, round_iso, FlankTolerances};
 use crate::geometry::{Gear, GearPair, ProfileGrid};
 use crate::stiffness::mesh::MeshStiffness;
 use crate::stiffness::potential_energy::ToothBeam;
@@ -36,7 +36,8 @@ pub struct GearErrors {
     pub tolerances: Option<FlankTolerancesReport>,
 }
 
-/// ISO 1328-1 tolerances of one gear, for reports (um).
+/// ISO 1328-1 tolerances of one gear, for reports (um, rounded as the standard publishes
+/// them, 5.2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FlankTolerancesReport {
     pub class: i64,
@@ -51,11 +52,11 @@ impl From<FlankTolerances> for FlankTolerancesReport {
     fn from(t: FlankTolerances) -> Self {
         Self {
             class: t.class,
-            single_pitch_um: t.single_pitch_um,
-            cumulative_pitch_um: t.cumulative_pitch_um,
-            profile_slope_um: t.profile_slope_um,
-            profile_form_um: t.profile_form_um,
-            runout_um: t.runout_um,
+            single_pitch_um: round_iso(t.single_pitch_um),
+            cumulative_pitch_um: round_iso(t.cumulative_pitch_um),
+            profile_slope_um: round_iso(t.profile_slope_um),
+            profile_form_um: round_iso(t.profile_form_um),
+            runout_um: round_iso(t.runout_um),
         }
     }
 }

@@ -20,6 +20,7 @@ use super::budget::over_budget;
 use super::observer::{Observer, Task};
 use super::{publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::duty::study::run_sweep_case;
 use crate::io::output_dir::StateFolder;
 use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem, Words};
@@ -29,8 +30,8 @@ use crate::report::Artifacts;
 use crate::study::budget::{estimate_sweep, Budget, Job as Cost};
 use crate::study::sweep::resonance::{speed_marks, SpeedMarks};
 use crate::study::sweep::{
-    run_case, CaseError, CaseRecord, Continuation, ContinuationPlan, Shard, SweepPlan, SweepRow,
-    SweepRun, SweepTable,
+    CaseError, CaseRecord, Continuation, ContinuationPlan, Shard, SweepPlan, SweepRow, SweepRun,
+    SweepTable,
 };
 use crate::study::Model;
 use cases::{check_models, check_values, resolve, Planned};
@@ -186,7 +187,7 @@ impl SweepJob {
                     let e = CaseError::Solve(anyhow::anyhow!("stopped before it ran"));
                     return (p.id, Err(e));
                 }
-                let r = run_case(&p.case, self.run).and_then(|o| {
+                let r = run_sweep_case(&p.case, self.run).and_then(|o| {
                     let row = match cases {
                         Some(c) => row_of(&write_record(c, p, keys, &o.results, None)?),
                         None => Some(SweepRow {

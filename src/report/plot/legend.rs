@@ -183,7 +183,10 @@ pub fn measure_bar<'p, DB: DrawingBackend>(
         return Ok(None);
     };
     let mid = 0.5 * (bar.min + bar.max);
-    let ticks = [(0.0, bar.min), (0.5, mid), (1.0, bar.max)].map(|(t, v)| (t, tick_label(v, 0.0)));
+    // Three significant digits: a colour is read to a few per cent at best.
+    let three = |v: f64| format!("{v:.2e}").parse().unwrap_or(v);
+    let ticks =
+        [(0.0, bar.min), (0.5, mid), (1.0, bar.max)].map(|(t, v)| (t, tick_label(three(v), 0.0)));
     let (label_w, label_h) = text_size(screen, &bar.label)?;
     let (mut tick_w, mut tick_h) = (0, 0);
     for (_, s) in &ticks {

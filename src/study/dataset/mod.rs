@@ -8,6 +8,7 @@ pub mod index;
 pub mod plan;
 pub mod records;
 pub mod trajectory;
+pub mod trends;
 
 pub use design::{parse_design, Condition, DatasetDesign, StateChoice};
 pub use plan::{Plan, Shard};

@@ -5,6 +5,7 @@
 use super::design::Condition;
 use super::plan::{record_seed, Plan, StateIndex};
 use super::trajectory::Trajectory;
+use crate::config::teeth::Member;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::steady::DynamicsError;
 use crate::signals::analysis::{analyse, ChannelIndicators};
@@ -12,6 +13,7 @@ use crate::signals::record::{add_noise, Record};
 use crate::signals::setup::ChainSetup;
 use crate::study::signal_record::{kinematics, periodic_record};
 use crate::study::Model;
+use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
 
 /// The labels of a record: everything the study knows about it.
@@ -29,7 +31,8 @@ pub struct RecordLabels {
     pub cycles: f64,
     pub max_wear_pinion_um: f64,
     pub max_wear_gear_um: f64,
-    /// Maximum wear depth of each tooth, um (all teeth alike in the identical-tooth model).
+    /// Maximum wear depth of each tooth, um (each tooth its own with a tooth-resolved
+    /// mesh; all teeth alike in the identical-tooth model).
     pub wear_pinion_tooth_um: Vec<f64>,
     pub wear_gear_tooth_um: Vec<f64>,
     pub wear_limit_um: f64,
@@ -57,6 +60,18 @@ pub struct StateInputs<'a> {
     pub cycles: f64,
     pub wear_limit_um: f64,
     pub design_seed: u64,
+}
+
+/// Deepest wear of each of the `z` teeth of `member`, um: each tooth's own profile with
+/// a tooth-resolved mesh, else the common profile's (all teeth alike).
+pub fn tooth_max_um(wear: &WearState, member: Member, z: usize) -> Vec<f64> {
+    let um = |p: &[f64]| p.iter().fold(0.0_f64, |m, x| m.max(*x)) * 1e6;
+    match (&wear.teeth, member) {
+        (Some(t), Member::Pinion) => t.pinion_m.iter().map(|p| um(p)).collect(),
+        (Some(t), Member::Gear) => t.gear_m.iter().map(|p| um(p)).collect(),
+        (None, Member::Pinion) => vec![um(&wear.pinion_m); z],
+        (None, Member::Gear) => vec![um(&wear.gear_m); z],
+    }
 }
 
 /// Signal file of record `id`.
@@ -107,8 +122,8 @@ pub fn state_records(
             cycles: inp.cycles,
             max_wear_pinion_um: wear.max_pinion_m() * 1e6,
             max_wear_gear_um: wear.max_gear_m() * 1e6,
-            wear_pinion_tooth_um: vec![wear.max_pinion_m() * 1e6; z1],
-            wear_gear_tooth_um: vec![wear.max_gear_m() * 1e6; z2],
+            wear_pinion_tooth_um: tooth_max_um(&wear, Member::Pinion, z1),
+            wear_gear_tooth_um: tooth_max_um(&wear, Member::Gear, z2),
             wear_limit_um: inp.wear_limit_um,
             remaining_cycles: remaining,
             failure_censored: censored,

@@ -32,10 +32,13 @@ pub fn deepest_m(w: &WearState) -> f64 {
     w.max_pinion_m().max(w.max_gear_m())
 }
 
+/// The per-cycle wear the loop held after update `r` (every tooth's own with a
+/// tooth-resolved mesh, so that a state between updates advances each tooth).
 fn increment(r: &UpdateRecord) -> WearIncrement {
     WearIncrement {
         pinion_m: r.increment_pinion_m.clone(),
         gear_m: r.increment_gear_m.clone(),
+        teeth: r.increment_teeth.clone(),
         ..Default::default()
     }
 }

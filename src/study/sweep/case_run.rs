@@ -307,7 +307,7 @@ pub fn run_dynamics_from(
 }
 
 /// Dynamics columns of the dynamic run's first update (new teeth), then the wear columns.
-fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
+pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
     let dynamics = d
         .records
         .first()

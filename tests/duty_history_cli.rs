@@ -1,0 +1,164 @@
+//! `gearwear load-spectrum`: a measured history to the spectrum a case reads, checked
+//! against a history whose time at level is known exactly; bad histories and options exit
+//! 2 naming the row, the column or the option, and write nothing.
+
+mod common;
+use common::gearwear;
+use gearwear::config::load::load_case_in;
+use std::path::Path;
+
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A square wave, 3 s at 20 N m then 1 s at 80 N m, ten periods, at 1500 rpm (25 Hz),
+/// sampled every 0.5 s so that the switches fall on samples.
+fn square_wave() -> String {
+    let mut t = String::from("time_s,torque_nm,input_speed_rpm,oil_temp_c\n");
+    for i in 0..=80 {
+        let s = 0.5 * i as f64;
+        let q = if s % 4.0 < 3.0 { 20 } else { 80 };
+        t.push_str(&format!("{s},{q},1500,40\n"));
+    }
+    t
+}
+
+#[test]
+fn a_history_becomes_the_spectrum_a_case_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let h = dir.path().join("history.csv");
+    std::fs::write(&h, square_wave()).unwrap();
+    let out = dir.path().join("ls");
+    let o = gearwear(&[
+        "load-spectrum",
+        "--history",
+        h.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--interpolation",
+        "hold",
+        "--torque-shaft",
+        "gear",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Held between samples, the counts are exact (30 s and 10 s at 25 Hz: 750 and 250
+    // revolutions), so the shares 0.75 / 0.25 and the torques are exact binary numbers.
+    let s: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["time"]["under_load_s"], 40.0);
+    assert_eq!(s["time"]["idle_s"], 0.0);
+    assert_eq!(s["time"]["span_s"], 40.0);
+    assert_eq!(s["pinion_revolutions_under_load"], 1000.0);
+    for f in [
+        "ldd_time_at_level.png",
+        "ldd.csv",
+        "csv/ldd_time_at_level.csv",
+    ] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    // The CSV, read as a case's load_spectrum.file (relative to the case's folder), and
+    // the TOML section, pasted into a case, give the same bins.
+    let by_file = load_case_in(
+        "[load_spectrum]\nfile = \"ls/spectrum.csv\"\ntorque_shaft = \"gear\"\n",
+        &[],
+        dir.path(),
+    )
+    .unwrap();
+    let toml = std::fs::read_to_string(out.join("load_spectrum.toml")).unwrap();
+    let pasted = load_case_in(&toml, &[], Path::new(".")).unwrap();
+    let (a, b) = (
+        by_file.load_spectrum.unwrap(),
+        pasted.load_spectrum.unwrap(),
+    );
+    assert_eq!(a, b);
+    assert_eq!(a.bins.len(), 2);
+    assert_eq!(
+        (
+            a.bins[0].torque_nm,
+            a.bins[0].input_speed_hz,
+            a.bins[0].share
+        ),
+        (20.0, 25.0, 0.75)
+    );
+    assert_eq!(
+        (
+            a.bins[1].torque_nm,
+            a.bins[1].input_speed_hz,
+            a.bins[1].share
+        ),
+        (80.0, 25.0, 0.25)
+    );
+    assert_eq!(
+        a.torque_shaft,
+        Some(gearwear::config::case::TorqueShaft::Gear)
+    );
+}
+
+#[test]
+fn bad_histories_and_options_exit_2_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("never");
+    let header = "time_s,torque_nm,input_speed_hz\n";
+    for (body, expect) in [
+        (
+            "0,10,30\n1,nan,30\n2,10,30\n",
+            "row 2 (line 3): `torque_nm`",
+        ),
+        (
+            "0,10,30\n2,10,30\n1,10,30\n",
+            "row 3 (line 4): `time_s` = 1",
+        ),
+        (
+            "0,10,30\n1,10,30\n2,10,\n",
+            "row 3 (line 4): `input_speed_hz`",
+        ),
+        ("0,-5,30\n1,-5,30\n", "no time under load"),
+    ] {
+        let h = dir.path().join("h.csv");
+        std::fs::write(&h, format!("{header}{body}")).unwrap();
+        let o = gearwear(&[
+            "load-spectrum",
+            "--history",
+            h.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{body}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(e.contains("--history") && e.contains(expect), "{e}");
+        assert!(!out.exists());
+    }
+    // 1 s sampling with a 60 s hole: a gap, named by its rows.
+    let mut t = String::from(header);
+    for i in (0..20).chain(80..100) {
+        t.push_str(&format!("{i},10,30\n"));
+    }
+    let h = dir.path().join("gap.csv");
+    std::fs::write(&h, t).unwrap();
+    let o = gearwear(&[
+        "load-spectrum",
+        "--history",
+        h.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--speed-classes",
+        "51",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    // The options are checked first, all of them.
+    assert!(
+        e.contains("--speed-classes 51") && e.contains("[1, 50]"),
+        "{e}"
+    );
+    let o = gearwear(&[
+        "load-spectrum",
+        "--history",
+        h.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("rows 20 and 21"), "{}", stderr(&o));
+    assert!(!out.exists());
+}
