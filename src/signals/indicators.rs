@@ -201,6 +201,13 @@ mod tests {
         // Moments 6 and 8 of a Gaussian: 15 and 105 (slower estimates: 10 % and 25 %).
         assert!((normalised_moment(&g, 6) - 15.0).abs() < 1.5);
         assert!((normalised_moment(&g, 8) - 105.0).abs() < 25.0);
+        println!(
+            "kurtosis: sine {:.15}, Gaussian (1e6 samples) {:.4}; moments 6, 8 of the Gaussian {:.2}, {:.1}",
+            kurtosis(&x),
+            kurtosis(&g),
+            normalised_moment(&g, 6),
+            normalised_moment(&g, 8)
+        );
     }
 
     #[test]
@@ -215,6 +222,7 @@ mod tests {
         let ind = ShaftIndicators::of(&x, &c, 1);
         // The sampled minimum misses -A by at most A (1 - cos(pi z / M)) = 1.7e-3 A.
         assert!((ind.fm0 - 2.0).abs() < 1.7e-3, "{}", ind.fm0);
+        println!("FM0 of a pure mesh tone: {:.6}", ind.fm0);
         // Nothing but the mesh tone: no difference signal, no sidebands.
         assert_eq!(ind.fm4, 0.0);
         assert!(ind.sideband_index < 1e-12 && ind.energy_ratio < 1e-12);
@@ -230,6 +238,12 @@ mod tests {
         // After two earlier records of residual variance 1 and 2: mean variance
         // (1 + 2 + 3.25) / 3 = 2.0833..., NA4 = (78.25 / 4) / 2.0833^2 = 4.5072.
         let want = (78.25 / 4.0) / ((6.25f64 / 3.0) * (6.25 / 3.0));
+        println!(
+            "NA4: alone {:.15} (hand {:.15}); after two records {:.15} (hand {want:.15})",
+            na4(&r, &[]),
+            4.0 * 78.25 / 169.0,
+            na4(&r, &[1.0, 2.0])
+        );
         assert!(
             (na4(&r, &[1.0, 2.0]) - want).abs() < 1e-13,
             "{}",
@@ -260,5 +274,13 @@ mod tests {
         assert!((ind.energy_ratio - er).abs() < 1e-12);
         // FM4 of a single sine in the difference signal: 1.5.
         assert!((ind.fm4 - 1.5).abs() < 1e-9);
+        println!(
+            "sideband index {:.15} (0.5), SLF {:.15} ({:.15}), ER {:.15} ({er:.15}), FM4 {:.12} (1.5)",
+            ind.sideband_index,
+            ind.sideband_level_factor,
+            1.0 / tsa_rms,
+            ind.energy_ratio,
+            ind.fm4
+        );
     }
 }

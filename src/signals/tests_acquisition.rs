@@ -95,6 +95,7 @@ fn tones_above_the_new_nyquist_frequency_are_attenuated_by_the_stated_amount() {
             let bound = -a_db + 0.5;
             assert!(db < bound, "A = {a_db} dB, tone {f} Hz: {db:.1} dB");
         }
+        println!("anti-alias filter A = {a_db} dB: worst alias at {worst_db:.1} dB");
         // And not by accident: the worst tone lies within 12 dB of the stated level (the
         // stopband ripple of a Kaiser design peaks near its edge).
         assert!(
@@ -122,6 +123,11 @@ fn noise_at_a_stated_snr_has_that_snr() {
         // Power ratio within 5 % (the issue); the estimate's scatter over 102400 samples
         // is sqrt(2 / N) = 0.44 %.
         let want = 10f64.powf(snr / 10.0);
+        println!(
+            "SNR {snr} dB: measured {:.3} dB (power ratio {:+.2} %)",
+            10.0 * ratio.log10(),
+            100.0 * (ratio / want - 1.0)
+        );
         assert!(
             (ratio / want - 1.0).abs() < 0.05,
             "SNR {snr}: {ratio} vs {want}"
@@ -148,5 +154,9 @@ fn noise_density_sets_the_noise_power_over_the_band() {
         .sum::<f64>()
         / n;
     let want = (100e-6 * STANDARD_GRAVITY).powi(2) * fs / 2.0;
+    println!(
+        "noise density: variance {:+.2} % of d^2 f_s / 2",
+        100.0 * (var / want - 1.0)
+    );
     assert!((var / want - 1.0).abs() < 0.05, "{var} vs {want}");
 }
