@@ -4,11 +4,13 @@
 # nightly toolchain (or RUSTC_BOOTSTRAP=1 on stable), and its first build takes minutes.
 #
 # Usage: scripts/fuzz.sh [RUNS]        (default 1000000 executions of each target)
-#        FUZZ_TARGET=case_values scripts/fuzz.sh   (one target; default: both in turn)
+#        FUZZ_TARGET=case_values scripts/fuzz.sh   (one target; default: all in turn)
 #        FUZZ_TOOLCHAIN=nightly-2026-05-15 scripts/fuzz.sh 200000
 #        FUZZ_SECONDS=120 scripts/fuzz.sh (a bounded time per target instead of a number of runs)
-# Targets: case_input (TOML text, --set, --vary; seeded from fuzz/seeds) and case_values
-# (schema keys with values mostly in range, so most inputs reach the model). The corpora
+# Targets: case_input (TOML text, --set, --vary), case_values (schema keys with values
+# mostly in range, so most inputs reach the model), observations and posterior (the CSV
+# files of calibrate and predict), checkpoint (a wear checkpoint, checked against the
+# model); each seeded from fuzz/seeds/TARGET where that exists. The corpora
 # grow in fuzz/corpus/TARGET; a crash is saved in fuzz/artifacts/TARGET and makes this
 # script fail.
 set -euo pipefail
@@ -30,11 +32,11 @@ limit=(-runs="$runs")
 if [[ -n "${FUZZ_SECONDS:-}" ]]; then
     limit=(-max_total_time="$FUZZ_SECONDS")
 fi
-for target in ${FUZZ_TARGET:-case_input case_values}; do
+for target in ${FUZZ_TARGET:-case_input case_values observations posterior checkpoint}; do
     corpus="fuzz/corpus/$target"
     mkdir -p "$corpus"
-    if [[ "$target" == case_input ]]; then
-        cp -n fuzz/seeds/* "$corpus"/ 2>/dev/null || true
+    if [[ -d "fuzz/seeds/$target" ]]; then
+        cp -n "fuzz/seeds/$target"/* "$corpus"/ 2>/dev/null || true
     fi
     # No sanitizer: gearwear has no unsafe code of its own; what the fuzzer looks for is a
     # panic (debug assertions are on), an abort, a hang (-timeout) or a memory blow-up

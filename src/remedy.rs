@@ -60,6 +60,8 @@ pub enum Arg {
     NoBudget,
     /// The inputs of a merge.
     Inputs,
+    /// Replacing an output folder that holds another command's results.
+    Replace,
     /// A measured load-time history.
     History,
     /// Torque classes of a load duration distribution.
@@ -79,7 +81,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 27] = [
+    pub const ALL: [Arg; 28] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -101,6 +103,7 @@ impl Arg {
         Arg::BudgetScale,
         Arg::NoBudget,
         Arg::Inputs,
+        Arg::Replace,
         Arg::History,
         Arg::TorqueClasses,
         Arg::SpeedClasses,
@@ -133,6 +136,7 @@ impl Arg {
             Arg::BudgetScale => "a budget scale",
             Arg::NoBudget => "no budget check",
             Arg::Inputs => "inputs",
+            Arg::Replace => "replacing another command's results",
             Arg::History => "the load-time history",
             Arg::TorqueClasses => "torque classes",
             Arg::SpeedClasses => "speed classes",

@@ -13,7 +13,6 @@ use gearwear::app::{
     WearJob,
 };
 use gearwear::config::{load_case, Case};
-use gearwear::io::checkpoint::load_checkpoint;
 use gearwear::io::lock::OutputLock;
 use gearwear::io::OutputError;
 use gearwear::remedy::Arg;
@@ -227,14 +226,26 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
         plain.push(e.to_string());
         cli.push((e.render(gearwear::cli::flag), "--out"));
     }
-    let lock = d.path().join(".lock");
-    let _held = OutputLock::acquire(&lock, "wear").unwrap();
-    let e = OutputLock::acquire(&lock, "run").unwrap_err();
+    let root = gearwear::io::dir::Dir::open_root(d.path()).unwrap();
+    let _held = OutputLock::acquire(&root, ".lock", "wear").unwrap();
+    let e = OutputLock::acquire(&root, ".lock", "run").unwrap_err();
     plain.push(e.to_string());
     cli.push((e.problem().render(gearwear::cli::flag), "--out"));
-    let ck = d.path().join("checkpoint_dynamic.jsonl");
-    std::fs::write(&ck, "x y\n").unwrap();
-    let e = load_checkpoint(&ck, WearMode::Dynamic, "abc").unwrap_err();
+    // A folder holding another command's results, refused unless replacing is allowed.
+    let other = d.path().join("other");
+    let mut set = gearwear::io::OutputDir::open(&other, None, "stiffness").unwrap();
+    set.stage("a.txt", b"a").unwrap();
+    set.publish().unwrap();
+    let e = gearwear::io::OutputDir::open(&other, None, "wear").unwrap_err();
+    plain.push(e.to_string());
+    cli.push((e.problem().render(gearwear::cli::flag), "--replace"));
+    let e = gearwear::io::checkpoint::parse_checkpoint(
+        b"x y\n",
+        "checkpoint_dynamic.jsonl",
+        WearMode::Dynamic,
+        "abc",
+    )
+    .unwrap_err();
     plain.push(e.to_string());
     cli.push((e.problem().render(gearwear::cli::flag), "--resume"));
 
@@ -253,6 +264,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 case: over,
                 modes: vec![WearMode::Dynamic],
                 out: None,
+                replace: false,
                 resume: false,
                 budget: Some(Budget::DEFAULT),
             }),
@@ -263,6 +275,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 case: case.clone(),
                 modes: vec![WearMode::Dynamic],
                 out: Some(d.path().join("nothing")),
+                replace: false,
                 resume: true,
                 budget: None,
             }),
@@ -277,6 +290,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 shard: Shard::ALL,
                 continuation: Some(Continuation::Up),
                 out: None,
+                replace: false,
                 budget: None,
             }),
             "--run",
@@ -286,6 +300,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 case: case.clone(),
                 transmission_error: Some(TransmissionErrorSource::Samples(vec![(0.0, 1.0)])),
                 out: None,
+                replace: false,
                 budget: None,
             }),
             "--transmission-error",
@@ -300,6 +315,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 },
                 shard: Shard::ALL,
                 out: None,
+                replace: false,
                 budget: None,
             }),
             "--limit-um",
@@ -325,6 +341,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
         shard: Shard::ALL,
         continuation: Some(Continuation::Up),
         out: None,
+        replace: false,
         budget: None,
     }
     .run(&())

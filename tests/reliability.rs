@@ -245,7 +245,10 @@ fn killed_long_commands_resume_to_the_same_bytes() {
         let full_args = args(&full);
         let refs: Vec<&str> = full_args.iter().map(String::as_str).collect();
         assert!(gearwear(&refs).status.success());
-        kill_when(&args(&cut), &lines(cut.join("checkpoint_dynamic.jsonl")));
+        kill_when(
+            &args(&cut),
+            &lines(cut.join("checkpoint_dynamic.partial.jsonl")),
+        );
         let mut resume = args(&cut);
         resume.push("--resume".into());
         let refs: Vec<&str> = resume.iter().map(String::as_str).collect();
@@ -295,8 +298,9 @@ fn a_second_writer_of_a_folder_is_refused_and_told_who_holds_it() {
     let out = d.path().join("w");
     std::fs::create_dir(&out).unwrap();
     // Hold the folder's lock as a running gearwear would.
+    let dir = gearwear::io::dir::Dir::open_root(&out).unwrap();
     let lock =
-        gearwear::io::lock::OutputLock::acquire(&out.join(".gearwear.lock"), "wear").expect("lock");
+        gearwear::io::lock::OutputLock::acquire(&dir, ".gearwear.lock", "wear").expect("lock");
     let o = run_wear(&out, &[]);
     assert_eq!(o.status.code(), Some(2), "{}", err(&o));
     assert!(err(&o).contains("another gearwear"), "{}", err(&o));
@@ -306,21 +310,37 @@ fn a_second_writer_of_a_folder_is_refused_and_told_who_holds_it() {
 
 #[cfg(unix)]
 #[test]
-fn links_planted_in_the_output_folder_are_not_followed() {
+fn links_planted_in_the_output_folder_are_neither_followed_nor_removed() {
+    use std::os::unix::fs::MetadataExt;
     let d = tempfile::tempdir().unwrap();
     let victim = d.path().join("victim.txt");
     std::fs::write(&victim, b"precious").unwrap();
+    let ino = std::fs::metadata(&victim).unwrap().ino();
     let out = d.path().join("w");
     std::fs::create_dir(&out).unwrap();
-    for name in ["summary.json", "checkpoint_dynamic.jsonl", "manifest.json"] {
-        std::os::unix::fs::symlink(&victim, out.join(name)).unwrap();
+    for names in [
+        &["summary.json", "checkpoint_dynamic.jsonl"][..],
+        &["manifest.json"][..],
+    ] {
+        for name in names {
+            std::os::unix::fs::symlink(&victim, out.join(name)).unwrap();
+        }
+        let o = run_wear(&out, &[]);
+        assert_eq!(o.status.code(), Some(2), "{}", err(&o));
+        assert!(
+            err(&o).contains("symbolic link") || err(&o).contains("no record"),
+            "{}",
+            err(&o)
+        );
+        assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
+        assert_eq!(std::fs::metadata(&victim).unwrap().ino(), ino);
+        for name in names {
+            let m = std::fs::symlink_metadata(out.join(name)).unwrap();
+            assert!(m.file_type().is_symlink(), "{name}: the link was removed");
+            std::fs::remove_file(out.join(name)).unwrap();
+        }
     }
     assert!(run_wear(&out, &[]).status.success());
-    assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
-    for name in ["summary.json", "checkpoint_dynamic.jsonl", "manifest.json"] {
-        let m = std::fs::symlink_metadata(out.join(name)).unwrap();
-        assert!(!m.file_type().is_symlink(), "{name} is still a link");
-    }
 }
 
 /// Every file the manifest of `dir` lists is present with its checksum.

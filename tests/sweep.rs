@@ -336,32 +336,28 @@ fn merge_rejects_conflicting_rows_and_mixed_sweeps() {
     assert_ne!(changed, text);
     let bad = d.path().join("bad.csv");
     std::fs::write(&bad, changed).unwrap();
-    let o = gearwear(&[
-        "sweep-merge",
-        a.to_str().unwrap(),
-        bad.to_str().unwrap(),
-        "--out",
-        d.path().join("m").to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        String::from_utf8_lossy(&o.stderr).contains("case_id 1"),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    // A merge of two inputs must fail with exit 2 saying `needle`.
+    let refused = |x: &std::path::Path, y: &std::path::Path, needle: &str| {
+        let o = gearwear(&[
+            "sweep-merge",
+            x.to_str().unwrap(),
+            y.to_str().unwrap(),
+            "--out",
+            d.path().join("m").to_str().unwrap(),
+        ]);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{e}");
+        assert!(e.contains(needle), "{needle}: {e}");
+    };
+    // Without its sweep description, a table cannot be placed: refused.
+    refused(&a, &bad, "no description");
+    std::fs::copy(a.join("sweep.json"), d.path().join("bad.json")).unwrap();
+    refused(&a, &bad, "case_id 1");
 
     // Another varied key.
     let b = d.path().join("b");
     sweep(&["--vary", "operating.load_torque_nm=50"], &b);
-    let o = gearwear(&[
-        "sweep-merge",
-        a.to_str().unwrap(),
-        b.to_str().unwrap(),
-        "--out",
-        d.path().join("m").to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("mixed sweeps"));
+    refused(&a, &b, "mixed sweeps");
 
     // Same key, other values: shards 1/2 and 2/2 of two different sweeps have disjoint
     // case ids, so only the sweep descriptions can tell them apart.
@@ -374,15 +370,7 @@ fn merge_rejects_conflicting_rows_and_mixed_sweeps() {
         &["--vary", "operating.input_speed_hz=50,60", "--shard", "2/2"],
         &q,
     );
-    let o = gearwear(&[
-        "sweep-merge",
-        p.to_str().unwrap(),
-        q.to_str().unwrap(),
-        "--out",
-        d.path().join("m").to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("mixed sweeps"));
+    refused(&p, &q, "mixed sweeps");
 }
 
 #[test]

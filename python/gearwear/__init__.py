@@ -35,7 +35,8 @@ wear sweeps under its spectrum; ``WearResult.duty`` then views what each bin did
 
 ``out=FOLDER`` writes the command's output set there (checkpoints and ``resume=True``
 for wear studies, finished cases skipped on a rerun of a sweep); without it nothing is
-written. ``budget_scale`` raises the run budget (docs/RELIABILITY.md) knowingly;
+written; a folder that holds another command's results is refused unless
+``replace=True``. ``budget_scale`` raises the run budget (docs/RELIABILITY.md) knowingly;
 ``math.inf`` drops the check.
 
 The computation runs in Rust with the GIL released (other Python threads go on), sweeps
@@ -160,7 +161,9 @@ def _done(result: _Any, native: _Mapping[str, _Any]) -> _Any:
     return result
 
 
-def stiffness(case: Case, *, out: _Optional[PathLike] = None, budget_scale: float = 1.0) -> StiffnessResult:
+def stiffness(
+    case: Case, *, out: _Optional[PathLike] = None, budget_scale: float = 1.0, replace: bool = False
+) -> StiffnessResult:
     """Mesh stiffness over one mesh period, as ``gearwear stiffness``.
 
     Potential energy method (bending, shear, axial compression, Hertz, Sainsot fillet
@@ -168,7 +171,7 @@ def stiffness(case: Case, *, out: _Optional[PathLike] = None, budget_scale: floa
     the ISO 6336-1 Method B cross-check and the pair's geometry. Table
     ``mesh_stiffness``: 720 samples over one mesh period (360/z1 deg of pinion rotation).
     """
-    n = _native.stiffness(_check_case(case), out=_path(out), budget_scale=budget_scale)
+    n = _native.stiffness(_check_case(case), out=_path(out), budget_scale=budget_scale, replace=replace)
     return _done(StiffnessResult(**n), n)
 
 
@@ -178,6 +181,7 @@ def dynamics(
     *,
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> DynamicsResult:
     """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth), as
     ``gearwear dynamics [--transmission-error FILE]``.
@@ -202,7 +206,7 @@ def dynamics(
                 "transmission_error: expected shape (n, 2) (pinion angle deg, error um), "
                 f"got {te.shape}"
             )
-    n = _native.dynamics(_check_case(case), te, out=_path(out), budget_scale=budget_scale)
+    n = _native.dynamics(_check_case(case), te, out=_path(out), budget_scale=budget_scale, replace=replace)
     return _done(DynamicsResult(**n), n)
 
 
@@ -214,6 +218,7 @@ def wear(
     out: _Optional[PathLike] = None,
     resume: bool = False,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> WearResult:
     """The coupled dynamics-wear study and/or its quasi-static twin, as ``gearwear wear
     --mode MODE``, to ``wear.total_cycles`` load cycles.
@@ -225,7 +230,7 @@ def wear(
     ``resume=True`` continues from the checkpoints there.
     """
     n = _native.wear(
-        _check_case(case), mode, progress, out=_path(out), resume=resume, budget_scale=budget_scale
+        _check_case(case), mode, progress, out=_path(out), resume=resume, budget_scale=budget_scale, replace=replace
     )
     return _done(WearResult(**n), n)
 
@@ -237,6 +242,7 @@ def run(
     *,
     resume: bool = False,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> RunResult:
     """The paper's whole section 4, as ``gearwear run``: mesh stiffness, the dynamic and
     quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 um of wear, the
@@ -248,7 +254,7 @@ def run(
     the wear studies from the checkpoints in ``out``.
     """
     n = _native.run(
-        _check_case(case), _path(out), progress, resume=resume, budget_scale=budget_scale
+        _check_case(case), _path(out), progress, resume=resume, budget_scale=budget_scale, replace=replace
     )
     return _done(RunResult(**n), n)
 
@@ -274,6 +280,7 @@ def sweep(
     shard: _Optional[_Union[str, tuple]] = None,
     continuation: _Optional[str] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> SweepResult:
     """A parameter study, as ``gearwear sweep --vary KEY=... [--run RUN]``: the cross
     product of ``vary`` on ``case``, run in parallel.
@@ -300,15 +307,24 @@ def sweep(
         shard=shard,
         continuation=continuation,
         budget_scale=budget_scale,
+        replace=replace,
     )
     return _done(SweepResult(**n), n)
 
 
-def sweep_merge(inputs: _Sequence[PathLike], out: _Optional[PathLike] = None) -> SweepResult:
+def sweep_merge(
+    inputs: _Sequence[PathLike],
+    out: _Optional[PathLike] = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> SweepResult:
     """The tables of sweep shards (or of earlier merges) joined into one sorted by case
     id, as ``gearwear sweep-merge``; ``inputs``: sweep folders or CSV files. Inputs of
     different sweeps are refused."""
-    n = _native.sweep_merge([_os.fspath(p) for p in inputs], _path(out))
+    n = _native.sweep_merge(
+        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+    )
     return _done(SweepResult(**n), n)
 
 
@@ -369,6 +385,7 @@ def calibrate(
     out: _Optional[PathLike] = None,
     progress: _Optional[Progress] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> CalibrationResult:
     """The posterior of the wear coefficient (and, where the case's ``[calibration]``
     leaves them free, the roughness factor and load torque) given observations of a
@@ -395,6 +412,7 @@ def calibrate(
         out=_path(out),
         progress=progress,
         budget_scale=budget_scale,
+        replace=replace,
     )
     return _done(CalibrationResult(**n), n)
 
@@ -414,6 +432,7 @@ def predict(
     out: _Optional[PathLike] = None,
     progress: _Optional[Progress] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> PredictionResult:
     """Monte Carlo prediction of wear, vibration indicators and remaining life, as
     ``gearwear predict --limit-um L --cycles N [--posterior FILE]``.
@@ -443,14 +462,23 @@ def predict(
         out=_path(out),
         progress=progress,
         budget_scale=budget_scale,
+        replace=replace,
     )
     return _done(PredictionResult(**n), n)
 
 
-def predict_merge(inputs: _Sequence[PathLike], out: _Optional[PathLike] = None) -> PredictionResult:
+def predict_merge(
+    inputs: _Sequence[PathLike],
+    out: _Optional[PathLike] = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> PredictionResult:
     """The shards of a sharded ``predict`` joined, as ``gearwear predict-merge``;
     ``inputs``: shard files (``predict_shard_I_of_N.json``) or folders holding them."""
-    n = _native.predict_merge([_os.fspath(p) for p in inputs], _path(out))
+    n = _native.predict_merge(
+        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+    )
     return _done(PredictionResult(**n), n)
 
 
@@ -465,6 +493,8 @@ def load_spectrum(
     torque_shaft: str = "pinion",
     gap_factor: float = 10.0,
     out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> LoadSpectrumResult:
     """The load spectrum of a measured torque / speed history, as ``gearwear
     load-spectrum --history FILE``: its load duration distribution (time at level on a
@@ -492,6 +522,8 @@ def load_spectrum(
         torque_shaft=torque_shaft,
         gap_factor=gap_factor,
         out=_path(out),
+        budget_scale=budget_scale,
+        replace=replace,
     )
     return _done(LoadSpectrumResult(**n), n)
 
@@ -502,6 +534,7 @@ def signals(
     transfer_path: _Optional[PathLike] = None,
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> SignalsResult:
     """One record of what a sensor sees, as ``gearwear signals [--transfer-path FILE]``.
 
@@ -516,6 +549,7 @@ def signals(
         transfer_path=_path(transfer_path),
         out=_path(out),
         budget_scale=budget_scale,
+        replace=replace,
     )
     return _done(SignalsResult(**n), n)
 
@@ -526,17 +560,26 @@ def dataset(
     *,
     shard: _Optional[_Sequence[int]] = None,
     progress: _Optional[Progress] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> DatasetResult:
     """A labelled dataset from the study design file ``design``, as ``gearwear dataset``:
     written to ``out`` record by record (resumable: a rerun keeps finished records).
     ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``."""
     sh = None if shard is None else (int(shard[0]), int(shard[1]))
-    n = _native.dataset(_os.fspath(design), _os.fspath(out), shard=sh, progress=progress)
+    n = _native.dataset(
+        _os.fspath(design),
+        _os.fspath(out),
+        shard=sh,
+        progress=progress,
+        budget_scale=budget_scale,
+        replace=replace,
+    )
     return _done(DatasetResult(**n), n)
 
 
-def dataset_merge(inputs: _Sequence[PathLike], out: PathLike) -> DatasetResult:
+def dataset_merge(inputs: _Sequence[PathLike], out: PathLike, *, replace: bool = False) -> DatasetResult:
     """The shards of a dataset joined into ``out`` with its index and metadata, as
     ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes."""
-    n = _native.dataset_merge([_os.fspath(p) for p in inputs], _os.fspath(out))
+    n = _native.dataset_merge([_os.fspath(p) for p in inputs], _os.fspath(out), replace=replace)
     return _done(DatasetResult(**n), n)

@@ -88,7 +88,9 @@ _Path = Optional[Union[str, PathLike[str]]]
 # A CSV path, or (column names, one float64 array per column; NaN: not measured).
 _TableIn = Union[str, PathLike[str], Tuple[List[str], List[npt.NDArray[np.float64]]]]
 
-def stiffness(case: Case, *, out: _Path = None, budget_scale: float = 1.0) -> _Result:
+def stiffness(
+    case: Case, *, out: _Path = None, budget_scale: float = 1.0, replace: bool = False
+) -> _Result:
     """``gearwear stiffness``."""
 
 def dynamics(
@@ -97,6 +99,7 @@ def dynamics(
     *,
     out: _Path = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear dynamics``; ``transmission_error`` of shape (n, 2): pinion angle deg,
     error um."""
@@ -109,6 +112,7 @@ def wear(
     out: _Path = None,
     resume: bool = False,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear wear --mode MODE``."""
 
@@ -119,6 +123,7 @@ def run(
     *,
     resume: bool = False,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear run``."""
 
@@ -132,10 +137,17 @@ def sweep(
     shard: Optional[Union[str, Tuple[int, int]]] = None,
     continuation: Optional[str] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear sweep``."""
 
-def sweep_merge(inputs: Sequence[Union[str, PathLike[str]]], out: _Path = None) -> _Result:
+def sweep_merge(
+    inputs: Sequence[Union[str, PathLike[str]]],
+    out: _Path = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
     """``gearwear sweep-merge``."""
 
 def calibrate(
@@ -150,6 +162,7 @@ def calibrate(
     out: _Path = None,
     progress: Optional[_Progress] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear calibrate``."""
 
@@ -168,10 +181,17 @@ def predict(
     out: _Path = None,
     progress: Optional[_Progress] = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear predict``."""
 
-def predict_merge(inputs: Sequence[Union[str, PathLike[str]]], out: _Path = None) -> _Result:
+def predict_merge(
+    inputs: Sequence[Union[str, PathLike[str]]],
+    out: _Path = None,
+    *,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+) -> _Result:
     """``gearwear predict-merge``."""
 
 def signals(
@@ -180,6 +200,7 @@ def signals(
     transfer_path: _Path = None,
     out: _Path = None,
     budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear signals``."""
 
@@ -189,10 +210,14 @@ def dataset(
     *,
     shard: Optional[Tuple[int, int]] = None,
     progress: Optional[Callable[[str, float, float], Any]] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear dataset``."""
 
-def dataset_merge(inputs: Sequence[Union[str, PathLike[str]]], out: Union[str, PathLike[str]]) -> _Result:
+def dataset_merge(
+    inputs: Sequence[Union[str, PathLike[str]]], out: Union[str, PathLike[str]], *, replace: bool = False
+) -> _Result:
     """``gearwear dataset-merge``."""
 
 def _time_rust_dynamics(case: Case, repeats: int) -> List[float]:
@@ -212,6 +237,8 @@ def load_spectrum(
     torque_shaft: str = "pinion",
     gap_factor: float = 10.0,
     out: _Path = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
 ) -> _Result:
     """``gearwear load-spectrum``."""
 

@@ -3,10 +3,12 @@
 //! line's `--config` and `--set` do, so a case is valid exactly when the CLI accepts it.
 
 use crate::convert::{py_to_toml, toml_to_py};
+use crate::errors::case_error;
 use crate::errors::config_error;
 use gearwear::config::schema::{spec, KEYS};
 use gearwear::config::{commented_template, load_case, Case as LibCase};
-use gearwear::io::RunMetadata;
+use gearwear::io::input::MAX_CASE_BYTES;
+use gearwear::io::{read_input_text, RunMetadata};
 use pyo3::exceptions::{PyKeyError, PyOSError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyMapping, PyString, PyTuple};
@@ -93,9 +95,10 @@ impl Case {
                 let path: PathBuf = source.extract().map_err(|_| {
                     PyTypeError::new_err("from_toml takes TOML text or a path to a case file")
                 })?;
-                std::fs::read_to_string(&path).map_err(|e| {
-                    PyOSError::new_err(format!("case file {}: cannot read: {e}", path.display()))
-                })?
+                // A regular file of bounded size only (a FIFO or /dev/zero is refused at
+                // once); a file that is not TOML is named, never quoted.
+                read_input_text(&path, "case file", MAX_CASE_BYTES)
+                    .map_err(|e| PyOSError::new_err(format!("case file {e}")))?
             }
         };
         load(py, &text, &[])
@@ -103,8 +106,11 @@ impl Case {
 
     /// A new case with keys changed, as ``--set key=value``: ``case.set(key, value)`` or
     /// ``case.set({key: value, ...})`` (several keys at once, checked together, e.g. the
-    /// two roughness tables). A value of None removes the key, which then takes its
-    /// default (``gear.centre_distance_mm``: the one the profile shifts give).
+    /// two roughness tables). None unsets an optional key (one with no value in the
+    /// paper's case, e.g. ``gear.centre_distance_mm``: then the one the profile shifts
+    /// give); for any other key it is refused. Values are converted before anything is
+    /// built: NaN, infinities, nesting deeper than 4 levels and arrays of more than 1e5
+    /// items are refused.
     #[pyo3(signature = (*args))]
     fn set(&self, py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Self> {
         let pairs: Vec<(String, Bound<'_, PyAny>)> = match args.len() {
@@ -129,16 +135,31 @@ impl Case {
         };
         let mut t = tree(&self.inner);
         let mut sets = Vec::new();
+        let paper = tree(&LibCase::default());
+        let mut problems = Vec::new();
         for (key, value) in pairs {
+            let (s, k) = key.split_once('.').unwrap_or((&key, ""));
             if value.is_none() {
-                if let Some((s, k)) = key.split_once('.') {
-                    if let Some(toml::Value::Table(sec)) = t.get_mut(s) {
-                        sec.remove(k);
-                    }
+                let optional =
+                    spec(&key).is_some() && paper.get(s).and_then(|x| x.get(k)).is_none();
+                if !optional {
+                    problems.push(format!(
+                        "`{key}` = None: only an optional key (one the paper's case leaves unset) can be unset; give a value"
+                    ));
+                    continue;
+                }
+                if let Some(toml::Value::Table(sec)) = t.get_mut(s) {
+                    sec.remove(k);
                 }
                 continue;
             }
-            sets.push(format!("{key}={}", py_to_toml(&value)?));
+            match py_to_toml(&value) {
+                Ok(v) => sets.push(format!("{key}={v}")),
+                Err(e) => problems.push(format!("`{key}`: {}", e.value(py))),
+            }
+        }
+        if !problems.is_empty() {
+            return Err(case_error(py, &problems));
         }
         let text = toml::to_string(&t).map_err(|e| PyTypeError::new_err(e.to_string()))?;
         load(py, &text, &sets)

@@ -5,9 +5,9 @@
 use gearwear::app::{Outcome, SweepOutput, TableSource};
 use gearwear::io::Table;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
-use pyo3::exceptions::PyTypeError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyBytes, PyDict, PyList, PyString};
+use pyo3::types::{PyBool, PyBytes, PyDict, PyList, PyMapping, PyString};
 use std::path::PathBuf;
 
 /// A JSON value as the Python object `json.loads` would give for its text (the same
@@ -67,24 +67,100 @@ pub fn toml_to_py<'py>(py: Python<'py>, v: &toml::Value) -> PyResult<Bound<'py, 
     })
 }
 
-/// A Python value as a TOML value: bool, str, anything with `__index__` (int, numpy
-/// integers) as an integer, anything `float()` takes as a float, iterables as arrays.
+/// Deepest nesting of a case value: a number in an array of a table in an array of
+/// tables is depth 3; anything deeper (a self-referential list) is refused before it
+/// recurses.
+pub const MAX_DEPTH: usize = 4;
+/// Most items of an array (or entries of a table) in a case value: the longest array a
+/// case takes is far shorter; a longer one (or an endless iterator) is refused before it
+/// is read whole.
+pub const MAX_ITEMS: usize = 100_000;
+/// Longest string in a case value (a model name, a file name).
+pub const MAX_STRING: usize = 4096;
+
+/// Whether `obj` is numpy's boolean scalar (`np.bool_`), which has `__index__` and would
+/// otherwise pass for the integer 1 where `True` is refused.
+fn is_numpy_bool(obj: &Bound<'_, PyAny>) -> PyResult<bool> {
+    let t = obj.get_type();
+    let module: String = t.module()?.extract().unwrap_or_default();
+    let name = t.name()?.to_string();
+    Ok(module == "numpy" && (name == "bool_" || name == "bool"))
+}
+
+/// A Python value as a TOML value: bool (numpy's too), str, anything with `__index__`
+/// (int, numpy integers) as an integer, anything `float()` takes as a finite float,
+/// mappings as tables and iterables as arrays, within [`MAX_DEPTH`], [`MAX_ITEMS`] and
+/// [`MAX_STRING`]. None, NaN and infinities are refused here, before anything is built.
 pub fn py_to_toml(obj: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    to_toml(obj, 0)
+}
+
+fn to_toml(obj: &Bound<'_, PyAny>, depth: usize) -> PyResult<toml::Value> {
     use toml::Value;
+    if depth > MAX_DEPTH {
+        return Err(PyValueError::new_err(format!(
+            "a case value nested more than {MAX_DEPTH} levels deep (a list that contains itself?)"
+        )));
+    }
+    if obj.is_none() {
+        return Err(PyTypeError::new_err("None is not a case value"));
+    }
     if let Ok(b) = obj.cast::<PyBool>() {
         return Ok(Value::Boolean(b.is_true()));
     }
+    if is_numpy_bool(obj)? {
+        return Ok(Value::Boolean(obj.is_truthy()?));
+    }
     if let Ok(s) = obj.cast::<PyString>() {
-        return Ok(Value::String(s.to_cow()?.into_owned()));
+        let s = s.to_cow()?;
+        if s.chars().count() > MAX_STRING {
+            return Err(PyValueError::new_err(format!(
+                "a string of more than {MAX_STRING} characters is not a case value"
+            )));
+        }
+        return Ok(Value::String(s.into_owned()));
     }
     if obj.hasattr("__index__")? {
-        return Ok(Value::Integer(obj.extract::<i64>()?));
+        return obj
+            .extract::<i64>()
+            .map(Value::Integer)
+            .map_err(|_| PyValueError::new_err("an integer beyond 64 bits is not a case value"));
     }
     if let Ok(f) = obj.extract::<f64>() {
+        if !f.is_finite() {
+            return Err(PyValueError::new_err(format!(
+                "{f} is not a finite number: a case value must be"
+            )));
+        }
         return Ok(Value::Float(f));
     }
+    let too_many = || {
+        PyValueError::new_err(format!(
+            "more than {MAX_ITEMS} items: no case value is that long (an endless iterator?)"
+        ))
+    };
+    if let Ok(m) = obj.cast::<PyMapping>() {
+        if m.len()? > MAX_ITEMS {
+            return Err(too_many());
+        }
+        let mut t = toml::Table::new();
+        for item in m.items()?.iter() {
+            let (k, v): (String, Bound<'_, PyAny>) = item.extract()?;
+            t.insert(k, to_toml(&v, depth + 1)?);
+        }
+        return Ok(Value::Table(t));
+    }
+    if obj.len().is_ok_and(|n| n > MAX_ITEMS) {
+        return Err(too_many());
+    }
     if let Ok(it) = obj.try_iter() {
-        let items = it.map(|x| py_to_toml(&x?)).collect::<PyResult<Vec<_>>>()?;
+        let mut items = Vec::new();
+        for x in it {
+            if items.len() == MAX_ITEMS {
+                return Err(too_many());
+            }
+            items.push(to_toml(&x?, depth + 1)?);
+        }
         return Ok(Value::Array(items));
     }
     Err(PyTypeError::new_err(format!(

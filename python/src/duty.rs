@@ -46,7 +46,7 @@ fn shaft_of(s: &str) -> PyResult<TorqueShaft> {
 
 /// The load spectrum of a measured history (as `gearwear load-spectrum`).
 #[pyfunction]
-#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, out=None))]
+#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, out=None, budget_scale=1.0, replace=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn load_spectrum<'py>(
     py: Python<'py>,
@@ -58,6 +58,8 @@ pub fn load_spectrum<'py>(
     torque_shaft: &str,
     gap_factor: f64,
     out: Option<PathBuf>,
+    budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = LoadSpectrumJob {
         history: path_or_columns(&history)?,
@@ -70,6 +72,8 @@ pub fn load_spectrum<'py>(
         torque_shaft: shaft_of(torque_shaft)?,
         gap_factor,
         out,
+        replace,
+        budget: crate::jobs::budget_of(budget_scale)?,
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)

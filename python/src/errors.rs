@@ -135,6 +135,7 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::BudgetScale => "`budget_scale`",
         Arg::NoBudget => "`budget_scale=math.inf`",
         Arg::Inputs => "`inputs`",
+        Arg::Replace => "`replace=True`",
         Arg::History => "`history`",
         Arg::TorqueClasses => "`torque_classes`",
         Arg::SpeedClasses => "`speed_classes`",

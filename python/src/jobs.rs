@@ -28,7 +28,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 /// The budget of `budget_scale`: the default times the scale; infinity drops the check.
-fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
+pub(crate) fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
     if scale == f64::INFINITY {
         return Ok(None);
     }
@@ -42,16 +42,18 @@ fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
 
 /// Mesh stiffness, ISO 6336 check, load sharing, quasi-static TE (as `gearwear stiffness`).
 #[pyfunction]
-#[pyo3(signature = (case, *, out=None, budget_scale=1.0))]
+#[pyo3(signature = (case, *, out=None, budget_scale=1.0, replace=false))]
 pub fn stiffness<'py>(
     py: Python<'py>,
     case: &Case,
     out: Option<PathBuf>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = StiffnessJob {
         case: case.inner.clone(),
         out,
+        replace,
         budget: budget_of(budget_scale)?,
     };
     let (o, w) = run_job(py, job, None)?;
@@ -76,30 +78,34 @@ pub fn dynamics_job(
     case: &Case,
     te: Option<Vec<(f64, f64)>>,
     out: Option<PathBuf>,
+    replace: bool,
     budget: Option<Budget>,
 ) -> DynamicsJob {
     DynamicsJob {
         case: case.inner.clone(),
         transmission_error: te.map(TransmissionErrorSource::Samples),
         out,
+        replace,
         budget,
     }
 }
 
 /// One steady-state evaluation of new teeth (as `gearwear dynamics`).
 #[pyfunction]
-#[pyo3(signature = (case, transmission_error=None, *, out=None, budget_scale=1.0))]
+#[pyo3(signature = (case, transmission_error=None, *, out=None, budget_scale=1.0, replace=false))]
 pub fn dynamics<'py>(
     py: Python<'py>,
     case: &Case,
     transmission_error: Option<PyReadonlyArray2<'py, f64>>,
     out: Option<PathBuf>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = dynamics_job(
         case,
         samples_of(transmission_error)?,
         out,
+        replace,
         budget_of(budget_scale)?,
     );
     let (o, w) = run_job(py, job, None)?;
@@ -120,7 +126,8 @@ fn modes_of(mode: &str) -> PyResult<Vec<WearMode>> {
 
 /// The wear study (as `gearwear wear`).
 #[pyfunction]
-#[pyo3(signature = (case, mode="both", progress=None, *, out=None, resume=false, budget_scale=1.0))]
+#[pyo3(signature = (case, mode="both", progress=None, *, out=None, resume=false, budget_scale=1.0, replace=false))]
+#[allow(clippy::too_many_arguments)]
 pub fn wear<'py>(
     py: Python<'py>,
     case: &Case,
@@ -129,11 +136,13 @@ pub fn wear<'py>(
     out: Option<PathBuf>,
     resume: bool,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = WearJob {
         case: case.inner.clone(),
         modes: modes_of(mode)?,
         out,
+        replace,
         resume,
         budget: budget_of(budget_scale)?,
     };
@@ -143,7 +152,8 @@ pub fn wear<'py>(
 
 /// The paper's whole section 4 (as `gearwear run`).
 #[pyfunction]
-#[pyo3(signature = (case, out=None, progress=None, *, resume=false, budget_scale=1.0))]
+#[pyo3(signature = (case, out=None, progress=None, *, resume=false, budget_scale=1.0, replace=false))]
+#[allow(clippy::too_many_arguments)]
 pub fn run<'py>(
     py: Python<'py>,
     case: &Case,
@@ -151,10 +161,12 @@ pub fn run<'py>(
     progress: Option<Bound<'py, PyAny>>,
     resume: bool,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = RunJob {
         case: case.inner.clone(),
         out,
+        replace,
         resume,
         budget: budget_of(budget_scale)?,
     };
@@ -222,7 +234,7 @@ fn shard_of(shard: Option<&Bound<'_, PyAny>>) -> PyResult<Result<Shard, String>>
 /// The cross product of `vary` on `case` (as `gearwear sweep`): in memory, or with `out`
 /// resumable and shardable; or one axis followed along its branches.
 #[pyfunction]
-#[pyo3(signature = (case, vary, run="dynamics", progress=None, *, out=None, shard=None, continuation=None, budget_scale=1.0))]
+#[pyo3(signature = (case, vary, run="dynamics", progress=None, *, out=None, shard=None, continuation=None, budget_scale=1.0, replace=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -234,6 +246,7 @@ pub fn sweep<'py>(
     shard: Option<Bound<'py, PyAny>>,
     continuation: Option<String>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let kind = match run {
         "dynamics" => SweepRun::Dynamics,
@@ -266,6 +279,7 @@ pub fn sweep<'py>(
         shard: shard.unwrap_or(Shard::ALL),
         continuation: continuation_of(continuation.as_deref())?,
         out,
+        replace,
         budget: budget_of(budget_scale)?,
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -274,20 +288,28 @@ pub fn sweep<'py>(
 
 /// The tables of sweep shards joined (as `gearwear sweep-merge`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out=None))]
+#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false))]
 pub fn sweep_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: Option<PathBuf>,
+    budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (o, w) = run_job(py, SweepMergeJob { inputs, out }, None)?;
+    let job = SweepMergeJob {
+        inputs,
+        out,
+        replace,
+        budget: budget_of(budget_scale)?,
+    };
+    let (o, w) = run_job(py, job, None)?;
     sweep_to_py(py, o, w)
 }
 
 /// The posterior of the wear coefficient given observations (as `gearwear calibrate`).
 /// `observations`: a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0))]
+#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate<'py>(
     py: Python<'py>,
@@ -301,6 +323,7 @@ pub fn calibrate<'py>(
     out: Option<PathBuf>,
     progress: Option<Bound<'py, PyAny>>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = CalibrateJob {
         case: case.inner.clone(),
@@ -313,6 +336,7 @@ pub fn calibrate<'py>(
             check_runs,
         },
         out,
+        replace,
         budget: budget_of(budget_scale)?,
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -322,7 +346,7 @@ pub fn calibrate<'py>(
 /// Monte Carlo prediction of wear, vibration and remaining life (as `gearwear predict`).
 /// `posterior`: None (the case's prior), a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0))]
+#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn predict<'py>(
     py: Python<'py>,
@@ -339,6 +363,7 @@ pub fn predict<'py>(
     out: Option<PathBuf>,
     progress: Option<Bound<'py, PyAny>>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let forward = match forward {
         "surrogate" => ForwardModel::Surrogate,
@@ -364,6 +389,7 @@ pub fn predict<'py>(
         },
         shard,
         out,
+        replace,
         budget: budget_of(budget_scale)?,
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -372,13 +398,21 @@ pub fn predict<'py>(
 
 /// The shards of a prediction joined (as `gearwear predict-merge`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out=None))]
+#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false))]
 pub fn predict_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: Option<PathBuf>,
+    budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (o, w) = run_job(py, PredictMergeJob { inputs, out }, None)?;
+    let job = PredictMergeJob {
+        inputs,
+        out,
+        replace,
+        budget: budget_of(budget_scale)?,
+    };
+    let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)
 }
 
@@ -387,7 +421,7 @@ pub fn predict_merge<'py>(
 #[pyfunction]
 pub fn _time_rust_dynamics(py: Python<'_>, case: &Case, repeats: usize) -> PyResult<Vec<f64>> {
     use gearwear::app::Job;
-    let job = dynamics_job(case, None, None, None);
+    let job = dynamics_job(case, None, None, false, None);
     Ok(py.detach(move || {
         (0..repeats)
             .map(|_| {

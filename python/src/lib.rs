@@ -14,6 +14,7 @@ mod convert;
 mod duty;
 mod errors;
 mod jobs;
+mod pool;
 mod signals;
 mod worker;
 

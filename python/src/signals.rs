@@ -5,7 +5,6 @@ use crate::case::Case;
 use crate::convert::outcome_to_py;
 use crate::worker::run_job;
 use gearwear::app::{DatasetJob, DatasetMergeJob, DesignSource, SignalsJob, TransferPathSource};
-use gearwear::study::budget::Budget;
 use gearwear::study::dataset::Shard;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -14,27 +13,21 @@ use std::path::PathBuf;
 
 /// One record of what a sensor sees (as `gearwear signals`).
 #[pyfunction]
-#[pyo3(signature = (case, *, transfer_path=None, out=None, budget_scale=1.0))]
+#[pyo3(signature = (case, *, transfer_path=None, out=None, budget_scale=1.0, replace=false))]
 pub fn signals<'py>(
     py: Python<'py>,
     case: &Case,
     transfer_path: Option<PathBuf>,
     out: Option<PathBuf>,
     budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let budget = if budget_scale == f64::INFINITY {
-        None
-    } else if budget_scale.is_normal() && budget_scale > 0.0 {
-        Some(Budget::scaled(budget_scale))
-    } else {
-        return Err(PyValueError::new_err(format!(
-            "budget_scale = {budget_scale}: expected a number > 0 (math.inf: no budget check)"
-        )));
-    };
+    let budget = crate::jobs::budget_of(budget_scale)?;
     let job = SignalsJob {
         case: case.inner.clone(),
         transfer_path: transfer_path.map(TransferPathSource::File),
         out,
+        replace,
         budget,
     };
     let (o, w) = run_job(py, job, None)?;
@@ -44,14 +37,17 @@ pub fn signals<'py>(
 /// A labelled dataset from a study design file (as `gearwear dataset`); `shard` is
 /// `(i, n)` for shard i of n.
 #[pyfunction]
-#[pyo3(signature = (design, out, *, shard=None, progress=None))]
+#[pyo3(signature = (design, out, *, shard=None, progress=None, budget_scale=1.0, replace=false))]
 pub fn dataset<'py>(
     py: Python<'py>,
     design: PathBuf,
     out: PathBuf,
     shard: Option<(usize, usize)>,
     progress: Option<Bound<'py, PyAny>>,
+    budget_scale: f64,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let budget = crate::jobs::budget_of(budget_scale)?;
     let shard = match shard {
         None => Shard::ALL,
         Some((index, count)) if index >= 1 && index <= count => Shard { index, count },
@@ -62,17 +58,31 @@ pub fn dataset<'py>(
         }
     };
     let design = DesignSource::file(&design).map_err(|e| crate::errors::job_error(py, e))?;
-    let (o, w) = run_job(py, DatasetJob { design, shard, out }, progress)?;
+    let job = DatasetJob {
+        design,
+        shard,
+        out,
+        replace,
+        budget,
+    };
+    let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
 }
 
 /// The shards of a dataset joined (as `gearwear dataset-merge`).
 #[pyfunction]
+#[pyo3(signature = (inputs, out, *, replace=false))]
 pub fn dataset_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: PathBuf,
+    replace: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (o, w) = run_job(py, DatasetMergeJob { inputs, out }, None)?;
+    let job = DatasetMergeJob {
+        inputs,
+        out,
+        replace,
+    };
+    let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)
 }

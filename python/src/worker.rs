@@ -1,9 +1,11 @@
-//! Running a job from Python: on a thread of rayon's pool with the GIL released, while the
-//! calling thread waits, calls the progress callback and watches for Ctrl-C.
+//! Running a job from Python: on a thread of a pool of its own (`pool`: built with fewer
+//! threads when the system refuses them, replaced after an interrupted call) with the GIL
+//! released, while the calling thread waits, calls the progress callback and watches for
+//! Ctrl-C.
 //!
 //! Why a thread: Python runs signal handlers (KeyboardInterrupt) only on its main thread,
-//! and only when that thread checks for them; the job's own updates happen on rayon's
-//! threads. So the caller waits in short slices (`POLL`), checks for signals between
+//! and only when that thread checks for them; the job's own updates happen on the
+//! pool's threads. So the caller waits in short slices (`POLL`), checks for signals between
 //! them, and calls the progress callable itself (Python code only ever runs on the
 //! calling thread). The job's observer ([`Ctx`]) sends progress here, keeps its warnings,
 //! and tells the job to stop once asked: on Ctrl-C the caller sets the stop flag, which
@@ -80,7 +82,8 @@ fn recv<T: Send>(
     py.detach(move || (rx.recv_timeout(wait), rx))
 }
 
-/// Tell the job to stop and give it `GRACE` to do so.
+/// Tell the job to stop and give it `GRACE` to do so; if it has not ended by then, its
+/// pool is abandoned to it (`pool::abandon`), so the next call does not wait behind it.
 fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Msg<T>>) {
     stop.store(true, Ordering::Relaxed);
     let deadline = Instant::now() + GRACE;
@@ -89,9 +92,11 @@ fn stop_and_wait<T: Send>(py: Python<'_>, stop: &AtomicBool, mut rx: Receiver<Ms
         rx = back;
         match got {
             Ok(Msg::Progress(..)) => continue,
-            _ => break,
+            Ok(Msg::Done(_)) | Err(RecvTimeoutError::Disconnected) => return,
+            Err(RecvTimeoutError::Timeout) => break,
         }
     }
+    crate::pool::abandon();
 }
 
 /// Run `job` on its own thread with the GIL released (see the module docs); `progress`
@@ -110,11 +115,12 @@ pub fn run_job<J: Job + 'static>(
         progress: progress.is_some(),
         warnings: Mutex::new(Vec::new()),
     };
-    // On rayon's pool rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
+    // On a pool (`pool`) rather than a new thread: spawning one per call cost ~0.1-0.2 ms,
     // 5-10 % of a dynamics call. A panic is caught here (rayon would abort the process)
     // and becomes an error of the call.
+    let pool = crate::pool::current().map_err(PyRuntimeError::new_err)?;
     RUNNING.fetch_add(1, Ordering::Relaxed);
-    rayon::spawn(move || {
+    pool.spawn(move || {
         let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.run(&ctx)))
             .unwrap_or_else(|_| {
                 Err(JobError::Failed(anyhow::anyhow!(

@@ -8,14 +8,6 @@ use crate::config::Case;
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::budget::{estimate, Budget, Job};
 
-/// The cost of a prognostics job (calibrate, predict): each of its forward runs is a
-/// dynamic wear study of the case at its sampled parameters, and the number of runs is
-/// the user's explicit choice.
-pub const FORWARD_RUN: Job = Job::Wear {
-    dynamic: true,
-    quasi_static: false,
-};
-
 /// The budget a front end passes by default.
 pub const DEFAULT: Option<Budget> = Some(Budget::DEFAULT);
 
@@ -39,4 +31,47 @@ pub fn check(case: &Case, job: Job, budget: Option<&Budget>) -> Result<(), JobEr
             .map_err(|m| JobError::input(over_budget(m))),
         None => Ok(()),
     }
+}
+
+/// Refuse a job whose estimate, made once its inputs are read (observations, posterior,
+/// shards, tables), is over `budget` (`None`: no check).
+pub fn check_estimate(
+    e: &crate::study::budget::Estimate,
+    budget: Option<&Budget>,
+) -> Result<(), JobError> {
+    match budget {
+        Some(b) => e.check(b).map_err(|m| JobError::input(over_budget(m))),
+        None => Ok(()),
+    }
+}
+
+/// The argument a prognostics setting is given as (`prognostics::limits`).
+fn arg_of(setting: &str) -> Option<Arg> {
+    Some(match setting {
+        "samples" => Arg::Samples,
+        "walkers" => Arg::Walkers,
+        "steps" => Arg::Steps,
+        "check_runs" => Arg::CheckRuns,
+        "grid_points" => Arg::GridPoints,
+        "limit_um" => Arg::LimitUm,
+        "cycles" => Arg::Cycles,
+        _ => return None,
+    })
+}
+
+/// Settings out of their ranges (`prognostics::limits`), each as a problem of its
+/// argument; every one at once.
+pub fn check_settings(problems: Vec<crate::prognostics::limits::Problem>) -> Result<(), JobError> {
+    if problems.is_empty() {
+        return Ok(());
+    }
+    Err(JobError::Input(
+        problems
+            .into_iter()
+            .map(|p| match arg_of(p.setting) {
+                Some(a) => Problem::of(a, p.message),
+                None => Problem::new(p.message),
+            })
+            .collect(),
+    ))
 }

@@ -66,6 +66,8 @@ pub struct CalibrateJob {
     pub options: CalibrationOptions,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -79,12 +81,34 @@ impl CalibrateJob {
                 "nothing to calibrate: every prior of [calibration] has equal bounds (give calibration.wear_coefficient_min_m2_per_n < ..._max_m2_per_n)",
             ));
         }
-        if self.options.samples == 0 {
-            return Err(Problem::given(Arg::Samples, "0", "expected at least 1").into());
-        }
-        let (src, text) = self.observations.read(Arg::Observations)?;
+        let o = &self.options;
+        budget::check_settings(crate::prognostics::limits::check_calibrate(
+            o.samples,
+            o.walkers,
+            o.steps,
+            o.check_runs,
+            prior.free().len(),
+        ))?;
+        let (src, text) = self
+            .observations
+            .read(Arg::Observations, crate::io::input::MAX_OBSERVATIONS_BYTES)?;
         let obs = parse_observations(&text, &src)
             .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+        // The budget, now that the observations say how far the reference runs go.
+        let e = crate::prognostics::budget::estimate_calibration(
+            &self.case,
+            &prior,
+            &crate::prognostics::budget::CalibrationJob {
+                values: obs.len(),
+                quantities: obs.series.len(),
+                max_cycles: obs.max_cycles(),
+                samples: o.samples,
+                walkers: o.walkers,
+                steps: o.steps,
+                check_runs: o.check_runs,
+            },
+        );
+        budget::check_estimate(&e, self.budget.as_ref())?;
         Ok((prior, obs, src))
     }
 }
@@ -97,10 +121,9 @@ impl Job for CalibrateJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
-        budget::check(&self.case, budget::FORWARD_RUN, self.budget.as_ref())?;
         let (prior, obs, src) = self.inputs()?;
         let model = build_model(&self.case, observer)?;
-        let out = publish::open_if(self.out.as_deref(), None, self.name())?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let o = &self.options;
         let case = &self.case;

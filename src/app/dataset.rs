@@ -10,12 +10,16 @@
 //! same dataset key, with its signal file intact) is not computed again.
 
 use super::dataset_dir::{
-    csv_rel, finished, put, sidecar_rel, stage_index_and_metadata, trajectory_rel, Sidecar,
-    TrajectoryFile, DATASET_REL,
+    csv_rel, finished, is_file_in, make_folder, put, read_in, sidecar_rel,
+    stage_index_and_metadata, trajectory_rel, Sidecar, TrajectoryFile, DATASET_REL,
 };
 use super::observer::{Observer, Task};
-use super::{publish, Job, JobError, Outcome};
+use super::{budget, publish, Job, JobError, Outcome};
 use crate::checksum::sha256_hex;
+use crate::io::input::{
+    read_input, read_input_text, MAX_CASE_BYTES, MAX_DESIGN_BYTES, MAX_TRANSFER_PATH_BYTES,
+};
+use crate::io::set_state::SetState;
 use crate::io::OutputDir;
 use crate::remedy::{Arg, Problem};
 use crate::report::signals::chain_json;
@@ -24,6 +28,7 @@ use crate::signals::files::{record_parquet, record_table, units};
 use crate::signals::path_file::parse_transfer_path;
 use crate::signals::setup::{chain_of, ChainSetup};
 use crate::signals::transfer::TransferPath;
+use crate::study::budget::{estimate, Budget, Estimate, Job as Cost, Term};
 use crate::study::dataset::parse_design;
 use crate::study::dataset::plan::{Plan, Shard};
 use crate::study::dataset::records::{state_records, StateInputs};
@@ -237,6 +242,70 @@ pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
     })
 }
 
+/// The cost of (a shard of) a dataset against the run budget, before anything is
+/// computed (the disk has its own budget): each condition's run-to-failure trajectory
+/// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear
+/// limit), each physical state of the shard one dynamic evaluation at its speed and load
+/// (the costliest of the lowest and highest speed and load of its condition). Memory: the
+/// costliest single study on each of `threads` threads.
+pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Estimate {
+    let states = plan_of(d).shard_states(shard).len() as f64;
+    let ends = |v: &[f64]| {
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        [lo, hi]
+    };
+    let (mut trajectories_s, mut state_s, mut bytes) = (0.0, 0.0f64, 0.0f64);
+    for c in &d.conditions {
+        let mut case = c.case.clone();
+        case.wear.total_cycles = d.max_cycles;
+        let w = estimate(
+            &case,
+            Cost::Wear {
+                dynamic: true,
+                quasi_static: false,
+            },
+        );
+        trajectories_s += w.seconds();
+        bytes = bytes.max(w.memory_bytes());
+        for speed in ends(&d.speeds_hz) {
+            for torque in ends(&d.torques_nm) {
+                let mut case = c.case.clone();
+                case.operating.input_speed_hz = speed;
+                case.operating.load_torque_nm = torque;
+                let e = estimate(&case, Cost::Dynamics);
+                state_s = state_s.max(e.seconds());
+                bytes = bytes.max(e.memory_bytes());
+            }
+        }
+    }
+    Estimate {
+        steps_per_evaluation: 0.0,
+        steps_to_give_up: 0.0,
+        recorded_samples: 0.0,
+        wear_per_cycle_m: None,
+        wear_updates_dynamic: 0.0,
+        wear_updates_quasi_static: 0.0,
+        terms: vec![
+            Term {
+                what: "the conditions' run-to-failure trajectories",
+                seconds: trajectories_s,
+                bytes: 0.0,
+                keys: &["run_to_failure.max_cycles", "the conditions' wear keys"],
+            },
+            Term {
+                what: "the physical states' dynamic evaluations",
+                seconds: states * state_s,
+                bytes: threads.max(1) as f64 * (bytes - 64e6),
+                keys: &[
+                    "the number of conditions, states, speeds and loads",
+                    "the conditions' numerics keys",
+                ],
+            },
+        ],
+    }
+}
+
 /// Run (a shard of) a checked dataset into `root`. `out` is the folder's output set (the
 /// shard's, or the whole dataset's).
 pub fn run_dataset(
@@ -261,12 +330,13 @@ pub fn run_dataset(
     let plan = plan_of(d);
     for dir in ["signals", "records", "state", "csv"] {
         if dir != "csv" || d.csv {
-            put(root, &format!("{dir}/.keep"), b"").map_err(|e| DatasetError::Failed(e.into()))?;
+            make_folder(root, dir).map_err(|e| DatasetError::Failed(e.into()))?;
         }
     }
     let desc =
         serde_json::to_vec_pretty(&description(req, &setups, &key)).map_err(anyhow::Error::from)?;
-    put(root, DATASET_REL, &desc).map_err(|e| DatasetError::Failed(e.into()))?;
+    let prev = out.previous_state().clone();
+    put(root, DATASET_REL, &desc, &prev).map_err(|e| DatasetError::Failed(e.into()))?;
     let states = plan.shard_states(req.shard);
     let shard_records = states.len() * plan.realisations;
     // Trajectories of the conditions this shard records.
@@ -279,7 +349,7 @@ pub fn run_dataset(
     needed.dedup();
     let trajectories: BTreeMap<usize, Trajectory> = needed
         .par_iter()
-        .map(|&c| trajectory(d, c, root, &key).map(|t| (c, t)))
+        .map(|&c| trajectory(d, c, (root, &prev), &key).map(|t| (c, t)))
         .collect::<Result<_, DatasetError>>()?;
     let done = AtomicUsize::new(0);
     let reused = AtomicUsize::new(0);
@@ -288,7 +358,16 @@ pub fn run_dataset(
     let results: Vec<Result<(), String>> = states
         .par_iter()
         .map(|&p| {
-            let r = one_state(req, &plan, p, &setups, &trajectories, root, &key, &reused);
+            let r = one_state(
+                req,
+                &plan,
+                p,
+                &setups,
+                &trajectories,
+                (root, &prev),
+                &key,
+                &reused,
+            );
             let n = done.fetch_add(plan.realisations, Ordering::Relaxed) + plan.realisations;
             obs.advance(&task, n as f64, "");
             r.map_err(|e| format!("physical state {p}: {e:#}"))
@@ -297,9 +376,6 @@ pub fn run_dataset(
     obs.finish(&task);
     let failures: Vec<String> = results.into_iter().filter_map(Result::err).collect();
     keep_files(&mut out, root, &plan, &states, &key, d);
-    for rel in ["signals/.keep", "records/.keep", "state/.keep", "csv/.keep"] {
-        let _ = std::fs::remove_file(root.join(rel));
-    }
     let missing = if req.shard.count == 1 {
         stage_index_and_metadata(&mut out, root, plan.records())
             .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?
@@ -328,13 +404,12 @@ pub fn run_dataset(
 fn trajectory(
     d: &DatasetDesign,
     c: usize,
-    root: &Path,
+    (root, prev): (&Path, &SetState),
     key: &str,
 ) -> Result<Trajectory, DatasetError> {
     let cond = &d.conditions[c];
     let rel = trajectory_rel(&cond.name);
-    if let Some(t) = std::fs::read(root.join(&rel))
-        .ok()
+    if let Some(t) = read_in(root, &rel)
         .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
         .filter(|t| t.dataset_key == key)
     {
@@ -358,6 +433,7 @@ fn trajectory(
         root,
         &rel,
         &serde_json::to_vec(&file).map_err(anyhow::Error::from)?,
+        prev,
     )
     .map_err(|e| DatasetError::Failed(e.into()))?;
     Ok(t)
@@ -371,7 +447,7 @@ fn one_state(
     p: usize,
     setups: &[ChainSetup],
     trajectories: &BTreeMap<usize, Trajectory>,
-    root: &Path,
+    (root, prev): (&Path, &SetState),
     key: &str,
     reused: &AtomicUsize,
 ) -> anyhow::Result<()> {
@@ -408,16 +484,26 @@ fn one_state(
     state_records(&inputs, plan, p, ix, &mut |labels, rec| {
         let id = labels.record_id;
         let pq = record_parquet(&rec, unit, Some(&serde_json::to_value(&labels)?))?;
-        put(root, &labels.file, &pq)?;
+        put(root, &labels.file, &pq, prev)?;
         if d.csv {
-            put(root, &csv_rel(id), &record_table(&rec, unit).to_csv()?)?;
+            put(
+                root,
+                &csv_rel(id),
+                &record_table(&rec, unit).to_csv()?,
+                prev,
+            )?;
         }
         let car = Sidecar {
             dataset_key: key.to_owned(),
             signal_sha256: sha256_hex(&pq),
             labels,
         };
-        put(root, &sidecar_rel(id), &serde_json::to_vec_pretty(&car)?)?;
+        put(
+            root,
+            &sidecar_rel(id),
+            &serde_json::to_vec_pretty(&car)?,
+            prev,
+        )?;
         Ok(())
     })
 }
@@ -434,7 +520,7 @@ fn keep_files(
 ) {
     out.keep_state(DATASET_REL);
     for c in &d.conditions {
-        if root.join(trajectory_rel(&c.name)).exists() {
+        if is_file_in(root, &trajectory_rel(&c.name)) {
             out.keep_state(&trajectory_rel(&c.name));
         }
     }
@@ -463,9 +549,8 @@ pub fn merge_datasets(
     let mut key: Option<(String, usize)> = None;
     let mut problems = Vec::new();
     for dir in inputs {
-        let body: Option<Value> = std::fs::read(dir.join(DATASET_REL))
-            .ok()
-            .and_then(|b| serde_json::from_slice(&b).ok());
+        let body: Option<Value> =
+            read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice(&b).ok());
         let Some(body) = body else {
             problems.push(format!(
                 "{}: no {DATASET_REL}: not a dataset folder (or not started)",
@@ -491,7 +576,7 @@ pub fn merge_datasets(
     };
     let mut copied = 0;
     for dir in inputs {
-        copied += super::dataset_dir::copy_dataset(dir, root, &key)
+        copied += super::dataset_dir::copy_dataset(dir, root, &key, out.previous_state())
             .map_err(|e| DatasetError::Failed(e.into()))?;
     }
     let missing = stage_index_and_metadata(&mut out, root, total)
@@ -503,7 +588,7 @@ pub fn merge_datasets(
     {
         out.keep_state(&s.labels.file);
         out.keep_state(&sidecar_rel(s.labels.record_id));
-        if root.join(csv_rel(s.labels.record_id)).exists() {
+        if is_file_in(root, &csv_rel(s.labels.record_id)) {
             out.keep_state(&csv_rel(s.labels.record_id));
         }
     }
@@ -536,13 +621,8 @@ impl DesignSource {
     /// The design in `path`.
     pub fn file(path: &Path) -> Result<Self, JobError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            JobError::input(Problem::given(
-                Arg::Design,
-                &name,
-                format!("cannot read it: {e}"),
-            ))
-        })?;
+        let text = read_input_text(path, "study design", MAX_DESIGN_BYTES)
+            .map_err(|e| JobError::input(Problem::given(Arg::Design, &name, e.reason)))?;
         Ok(Self {
             text,
             name,
@@ -559,6 +639,10 @@ pub struct DatasetJob {
     pub design: DesignSource,
     pub shard: Shard,
     pub out: PathBuf,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    /// The run budget (`None`: no check).
+    pub budget: Option<Budget>,
 }
 
 fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
@@ -608,8 +692,9 @@ impl Job for DatasetJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let d = &self.design;
-        let read =
-            |rel: &str| std::fs::read_to_string(d.folder.join(rel)).map_err(|e| e.to_string());
+        let read = |rel: &str| {
+            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+        };
         let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
             JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
         })?;
@@ -617,13 +702,10 @@ impl Job for DatasetJob {
             Some(rel) => {
                 let p = d.folder.join(rel);
                 let shown = p.display().to_string();
-                let bytes = std::fs::read(&p).map_err(|e| {
-                    JobError::input(Problem::given(
-                        Arg::TransferPath,
-                        &shown,
-                        format!("cannot read it: {e}"),
-                    ))
-                })?;
+                let bytes =
+                    read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
+                        JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
+                    })?;
                 let path =
                     parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
                         JobError::Input(
@@ -643,9 +725,14 @@ impl Job for DatasetJob {
             shard: self.shard,
         };
         let checked = check_dataset(&req)?;
+        let threads = rayon::current_num_threads();
+        budget::check_estimate(
+            &estimate_dataset(&design, self.shard, threads),
+            self.budget.as_ref(),
+        )?;
         let set = (self.shard.count > 1)
             .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
-        let out = publish::open(&self.out, set.as_deref(), self.name())?;
+        let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
         let o = run_dataset(&req, checked, &self.out, out, observer)?;
         observer.note(&format!("dataset: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset"))
@@ -657,6 +744,8 @@ impl Job for DatasetJob {
 pub struct DatasetMergeJob {
     pub inputs: Vec<PathBuf>,
     pub out: PathBuf,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
 }
 
 impl Job for DatasetMergeJob {
@@ -673,7 +762,7 @@ impl Job for DatasetMergeJob {
                 "no dataset folders given",
             )));
         }
-        let out = publish::open(&self.out, None, self.name())?;
+        let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let o = merge_datasets(&inputs, &self.out, out)?;
         observer.note(&format!("dataset-merge: results -> {}", self.out.display()));

@@ -13,13 +13,15 @@
 //!   code for an unsharded run and a merge, so the two are byte for byte equal.
 
 use crate::checksum::sha256_hex;
-use crate::io::atomic::{ensure_real_dir, write_atomic};
 use crate::io::columns_csv::columns_csv;
+use crate::io::dir::Dir;
 use crate::io::parquet::parquet_bytes;
+use crate::io::set_state::{check_replaceable, read_all, Ours, SetState};
 use crate::io::{OutputDir, OutputError};
 use crate::report::dataset_trends::trend_figure;
 use crate::report::plot::render_png;
 use crate::study::dataset::index::index_columns;
+use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::Trajectory;
 use crate::study::dataset::trends::{trend_columns, trends};
 use crate::study::dataset::RecordLabels;
@@ -59,36 +61,103 @@ pub fn trajectory_rel(condition: &str) -> String {
 
 pub const DATASET_REL: &str = "state/dataset.json";
 
-/// Write `bytes` at `rel` inside `root` atomically (folders created, checked real).
-pub fn put(root: &Path, rel: &str, bytes: &[u8]) -> Result<(), OutputError> {
-    let path = root.join(rel);
-    if let Some(parent) = path.parent() {
-        ensure_real_dir(root, parent)?;
+/// Largest file of a dataset folder read back (a record's signal file, its sidecar, a
+/// trajectory, the description): far above a record of the longest valid length.
+pub const MAX_DATASET_FILE_BYTES: u64 = 1 << 30;
+
+/// Whether the first bytes of a file are one of a dataset's own files (a Parquet record,
+/// a record's CSV, a sidecar, trajectory or description), so `put` may replace it: a
+/// file of a killed run is rewritten, anything else at that name is left alone.
+fn is_dataset_file(b: &[u8]) -> bool {
+    let json = || {
+        let t = String::from_utf8_lossy(b);
+        t.starts_with('{') && (t.contains("\"dataset_key\"") || t.contains("\"axes\""))
+    };
+    b.starts_with(b"PAR1") || b.starts_with(b"time_s,") || json()
+}
+
+/// Write `bytes` at `rel` inside `root`: a new file renamed into place, every folder on the
+/// way opened relative to `root` without following a link (`io::dir`). What `rel` held
+/// must be a dataset file: one the folder's set recorded (`prev`, even if damaged since),
+/// or one in a dataset file's format; a user's file, a link or a hard link there is
+/// refused.
+pub fn put(root: &Path, rel: &str, bytes: &[u8], prev: &SetState) -> Result<(), OutputError> {
+    let top = Dir::open_root(root)?;
+    let (dir, name) = top.descend(rel, true)?;
+    check_replaceable(
+        &dir,
+        &name,
+        Ours::Format(prev.state_file(rel), is_dataset_file),
+    )?;
+    dir.write_new(&dir, &name, bytes)?;
+    Ok(())
+}
+
+/// Create the sub-folder `folder` of `root` (never through a link).
+pub fn make_folder(root: &Path, folder: &str) -> Result<(), OutputError> {
+    Dir::open_root(root)?.sub(folder, true).map(|_| ())
+}
+
+/// The bytes of `rel` in `root`, read without following a link or blocking, only from a
+/// regular single-link file of at most [`MAX_DATASET_FILE_BYTES`]; None otherwise (a
+/// missing, foreign or unreadable file counts as absent: the record is recomputed).
+pub fn read_in(root: &Path, rel: &str) -> Option<Vec<u8>> {
+    let top = Dir::open_root(root).ok()?;
+    let (dir, name) = top.descend(rel, false).ok()?;
+    let (f, e) = dir.open_existing(&name, false).ok()??;
+    if e.bytes > MAX_DATASET_FILE_BYTES {
+        return None;
     }
-    write_atomic(&path, bytes)
+    read_all(f, MAX_DATASET_FILE_BYTES).ok()
+}
+
+/// Whether `rel` in `root` is a regular single-link file (no link followed).
+pub fn is_file_in(root: &Path, rel: &str) -> bool {
+    use crate::io::dir::Kind;
+    let entry = Dir::open_root(root)
+        .and_then(|top| top.descend(rel, false))
+        .and_then(|(dir, name)| dir.entry(&name));
+    matches!(entry, Ok(Some(e)) if e.kind == Kind::File && e.links == 1)
+}
+
+/// Names in the sub-folder `folder` of `root` (not through a link).
+fn names_in(root: &Path, folder: &str) -> Vec<String> {
+    Dir::open_root(root)
+        .and_then(|d| d.sub(folder, false))
+        .and_then(|d| d.names())
+        .unwrap_or_default()
+}
+
+/// A sidecar is only trusted for the files of its own record id: a sidecar naming another
+/// file (edited or planted) is ignored.
+fn own_files(s: &Sidecar) -> bool {
+    s.labels.file == signal_file(s.labels.record_id)
 }
 
 /// The sidecar of record `id` in `root`, if it exists, reads, and its signal file is
 /// present with the recorded checksum.
 pub fn finished(root: &Path, id: usize, key: &str) -> Option<Sidecar> {
-    let text = std::fs::read(root.join(sidecar_rel(id))).ok()?;
+    let text = read_in(root, &sidecar_rel(id))?;
     let s: Sidecar = serde_json::from_slice(&text).ok()?;
-    if s.dataset_key != key {
+    if s.dataset_key != key || s.labels.record_id != id || !own_files(&s) {
         return None;
     }
-    let bytes = std::fs::read(root.join(&s.labels.file)).ok()?;
+    let bytes = read_in(root, &s.labels.file)?;
     (sha256_hex(&bytes) == s.signal_sha256).then_some(s)
 }
 
 /// Every readable sidecar of `root`, by record id.
 pub fn sidecars(root: &Path) -> Vec<Sidecar> {
-    let Ok(entries) = std::fs::read_dir(root.join("records")) else {
-        return Vec::new();
-    };
-    let mut out: Vec<Sidecar> = entries
-        .filter_map(|e| e.ok())
-        .filter(|e| e.file_name().to_string_lossy().ends_with(".json"))
-        .filter_map(|e| serde_json::from_slice(&std::fs::read(e.path()).ok()?).ok())
+    let mut out: Vec<Sidecar> = names_in(root, "records")
+        .into_iter()
+        .filter(|n| n.ends_with(".json"))
+        .filter_map(|n| {
+            let s: Sidecar =
+                serde_json::from_slice(&read_in(root, &format!("records/{n}"))?).ok()?;
+            // Only under its own name, naming its own signal file.
+            (sidecar_rel(s.labels.record_id) == format!("records/{n}") && own_files(&s))
+                .then_some(s)
+        })
         .collect();
     out.sort_by_key(|s| s.labels.record_id);
     out
@@ -96,16 +165,19 @@ pub fn sidecars(root: &Path) -> Vec<Sidecar> {
 
 /// Trajectory files of `root`.
 pub fn trajectories(root: &Path) -> Vec<TrajectoryFile> {
-    let Ok(entries) = std::fs::read_dir(root.join("state")) else {
-        return Vec::new();
-    };
-    let mut out: Vec<TrajectoryFile> = entries
-        .filter_map(|e| e.ok())
-        .filter(|e| e.file_name().to_string_lossy().starts_with("trajectory_"))
-        .filter_map(|e| serde_json::from_slice(&std::fs::read(e.path()).ok()?).ok())
+    let mut out: Vec<TrajectoryFile> = names_in(root, "state")
+        .into_iter()
+        .filter(|n| n.starts_with("trajectory_"))
+        .filter_map(|n| serde_json::from_slice(&read_in(root, &format!("state/{n}"))?).ok())
+        .filter(|t: &TrajectoryFile| check_name_only(&t.condition))
         .collect();
     out.sort_by(|a, b| a.condition.cmp(&b.condition));
     out
+}
+
+/// A condition name that makes a plain file name (`trajectory_<condition>.json`).
+fn check_name_only(condition: &str) -> bool {
+    !condition.is_empty() && !condition.contains(['/', '\\']) && condition != ".."
 }
 
 /// Why the index and metadata could not be built.
@@ -125,8 +197,7 @@ pub fn stage_index_and_metadata(
     root: &Path,
     total: usize,
 ) -> Result<Vec<usize>, BuildError> {
-    let body: Value = std::fs::read(root.join(DATASET_REL))
-        .ok()
+    let body: Value = read_in(root, DATASET_REL)
         .and_then(|b| serde_json::from_slice(&b).ok())
         .ok_or_else(|| {
             BuildError::Format(format!(
@@ -191,22 +262,38 @@ pub fn stage_index_and_metadata(
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`
 /// into `to` (no-op for the same folder). Returns how many records were copied.
-pub fn copy_dataset(from: &Path, to: &Path, key: &str) -> Result<usize, OutputError> {
+pub fn copy_dataset(
+    from: &Path,
+    to: &Path,
+    key: &str,
+    prev: &SetState,
+) -> Result<usize, OutputError> {
     if same_dir(from, to) {
         return Ok(0);
     }
+    // Read as the folder's own files are: no link followed, regular files of bounded size.
+    let read = |rel: &str| {
+        read_in(from, rel).ok_or_else(|| {
+            OutputError::new(
+                "read",
+                &from.join(rel),
+                "missing, not a regular single-link file, or too large",
+                None,
+            )
+        })
+    };
     let mut n = 0;
     for s in sidecars(from).into_iter().filter(|s| s.dataset_key == key) {
         let id = s.labels.record_id;
-        let mut rels = vec![s.labels.file.clone(), sidecar_rel(id)];
-        if from.join(csv_rel(id)).exists() {
-            rels.insert(1, csv_rel(id));
+        let signal = read(&s.labels.file)?;
+        if sha256_hex(&signal) != s.signal_sha256 {
+            continue;
         }
-        for rel in rels {
-            let bytes = std::fs::read(from.join(&rel))
-                .map_err(|e| OutputError::io("read", &from.join(&rel), &e))?;
-            put(to, &rel, &bytes)?;
+        put(to, &s.labels.file, &signal, prev)?;
+        if let Some(csv) = read_in(from, &csv_rel(id)) {
+            put(to, &csv_rel(id), &csv, prev)?;
         }
+        put(to, &sidecar_rel(id), &read(&sidecar_rel(id))?, prev)?;
         n += 1;
     }
     for t in trajectories(from)
@@ -214,13 +301,9 @@ pub fn copy_dataset(from: &Path, to: &Path, key: &str) -> Result<usize, OutputEr
         .filter(|t| t.dataset_key == key)
     {
         let rel = trajectory_rel(&t.condition);
-        let bytes = std::fs::read(from.join(&rel))
-            .map_err(|e| OutputError::io("read", &from.join(&rel), &e))?;
-        put(to, &rel, &bytes)?;
+        put(to, &rel, &read(&rel)?, prev)?;
     }
-    let bytes = std::fs::read(from.join(DATASET_REL))
-        .map_err(|e| OutputError::io("read", &from.join(DATASET_REL), &e))?;
-    put(to, DATASET_REL, &bytes)?;
+    put(to, DATASET_REL, &read(DATASET_REL)?, prev)?;
     Ok(n)
 }
 

@@ -58,7 +58,7 @@ pub fn wear_under_spectrum(
     command: &str,
     case: &crate::config::Case,
     modes: &[WearMode],
-    (out, resume): (Option<&Path>, bool),
+    (out, resume, replace): (Option<&Path>, bool, bool),
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let sm = build_spectrum_model(case, observer)?;
@@ -68,7 +68,7 @@ pub fn wear_under_spectrum(
         &sm,
         modes,
         &meta,
-        (out, resume),
+        (out, resume, replace),
         observer,
         |sm, starts, on_update| run_spectrum_modes(sm, starts, on_update),
     )?;
@@ -87,7 +87,7 @@ pub fn wear_under_spectrum(
 pub fn run_under_spectrum(
     command: &str,
     case: &crate::config::Case,
-    (out, resume): (Option<&Path>, bool),
+    (out, resume, replace): (Option<&Path>, bool, bool),
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let sm = build_spectrum_model(case, observer)?;
@@ -98,7 +98,7 @@ pub fn run_under_spectrum(
         &sm,
         &modes,
         &meta,
-        (out, resume),
+        (out, resume, replace),
         observer,
         run_duty_study,
     )?;

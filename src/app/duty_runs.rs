@@ -8,7 +8,7 @@ use super::{publish, JobError};
 use crate::duty::resume::{bin_runs, from_bin_runs};
 use crate::duty::wear::SpectrumRun;
 use crate::duty::SpectrumModel;
-use crate::io::checkpoint::{load_checkpoint, CheckpointLog};
+use crate::io::checkpoint::{load_checkpoint_named, CheckpointLog};
 use crate::io::{OutputDir, RunMetadata};
 use crate::remedy::{Arg, Problem, Remedy};
 use crate::study::wear_loop::WearMode;
@@ -24,21 +24,23 @@ pub fn bin_checkpoint_name(mode: WearMode, i: usize) -> String {
 fn starting_runs(
     sm: &SpectrumModel,
     modes: &[WearMode],
-    resume_from: Option<&Path>,
+    resume_from: Option<&OutputDir>,
     case_sha256: &str,
     observer: &dyn Observer,
 ) -> Result<Vec<SpectrumRun>, JobError> {
     let fresh = |m: WearMode| SpectrumRun::new(m, sm.shares.clone());
-    let Some(dir) = resume_from else {
+    let Some(out) = resume_from else {
         return Ok(modes.iter().map(|m| fresh(*m)).collect());
     };
+    let dir = out.root();
     let mut starts = Vec::new();
     let mut found = false;
     for m in modes {
         let mut logs = Vec::new();
         for i in 0..sm.len() {
-            let path = dir.join(bin_checkpoint_name(*m, i));
-            if let Some(l) = load_checkpoint(&path, *m, case_sha256)? {
+            let max = crate::study::budget::max_checkpoint_bytes(&sm.case, *m);
+            let name = bin_checkpoint_name(*m, i);
+            if let Some(l) = load_checkpoint_named(out, &name, *m, case_sha256, max)? {
                 logs.push(l.run);
             }
         }
@@ -52,6 +54,17 @@ fn starting_runs(
         }
         found = true;
         let run = from_bin_runs(sm, *m, &logs).map_err(|e| {
+            Problem::of(
+                Arg::Resume,
+                format!(
+                    "{}: the {} checkpoints of the spectrum's bins: {e}; they cannot be resumed",
+                    dir.display(),
+                    m.label()
+                ),
+            )
+            .remedy(Remedy::start_afresh().path(dir))
+        })?;
+        crate::duty::verify::verify_spectrum_run(sm, &run).map_err(|e| {
             Problem::of(
                 Arg::Resume,
                 format!(
@@ -95,15 +108,20 @@ impl Logs {
         for run in runs {
             let mut per_bin = Vec::new();
             for (i, b) in bin_runs(run).iter().enumerate() {
-                let path = out.state_path(&bin_checkpoint_name(run.mode, i))?;
-                per_bin.push(CheckpointLog::create(&path, case_sha256, b)?);
+                let name = bin_checkpoint_name(run.mode, i);
+                per_bin.push(CheckpointLog::create_named(out, &name, case_sha256, b)?);
             }
             if per_bin.is_empty() {
                 // A fresh run: the logs start with the first update.
                 for i in 0..run.shares.len() {
-                    let path = out.state_path(&bin_checkpoint_name(run.mode, i))?;
+                    let name = bin_checkpoint_name(run.mode, i);
                     let empty = crate::study::wear_loop::WearRun::new(run.mode);
-                    per_bin.push(CheckpointLog::create(&path, case_sha256, &empty)?);
+                    per_bin.push(CheckpointLog::create_named(
+                        out,
+                        &name,
+                        case_sha256,
+                        &empty,
+                    )?);
                 }
             }
             logs.push((run.mode, Mutex::new(per_bin)));
@@ -132,7 +150,7 @@ pub fn run_spectrum_job_modes<T>(
     sm: &SpectrumModel,
     modes: &[WearMode],
     meta: &RunMetadata,
-    (out, resume): (Option<&Path>, bool),
+    (out, resume, replace): (Option<&Path>, bool, bool),
     observer: &dyn Observer,
     study: impl FnOnce(
         &SpectrumModel,
@@ -140,9 +158,13 @@ pub fn run_spectrum_job_modes<T>(
         &(dyn Fn(WearMode, &SpectrumRun) -> anyhow::Result<()> + Sync),
     ) -> anyhow::Result<T>,
 ) -> Result<Runs<T>, JobError> {
-    let resume_from = out.filter(|_| resume);
+    if let (Some(o), true) = (out, resume) {
+        super::checkpoints::require_folder(o)?;
+    }
+    // The folder first, then the checkpoints in it (read through its handle).
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let resume_from = dir.as_ref().filter(|_| resume);
     let starts = starting_runs(sm, modes, resume_from, &meta.case_sha256, observer)?;
-    let mut dir = publish::open_if(out, None, command)?;
     let logs = match dir.as_mut() {
         Some(d) => Some(Logs::open(d, &starts, &meta.case_sha256)?),
         None => None,

@@ -30,6 +30,8 @@ pub struct DynamicsJob {
     pub transmission_error: Option<TransmissionErrorSource>,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -56,7 +58,7 @@ impl Job for DynamicsJob {
             })?,
             None => ExternalError::none(),
         };
-        let out = publish::open_if(self.out.as_deref(), None, self.name())?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let r = model
             .dynamic(&WearState::new(model.grid.len()), &external)
             .map_err(|e| JobError::Failed(e.into()))?;

@@ -22,13 +22,14 @@ pub enum TableSource {
 impl TableSource {
     /// The table's name in messages and its CSV text. `arg` is the job argument it was
     /// given as (named in a problem with the file).
-    pub fn read(&self, arg: Arg) -> Result<(String, String), JobError> {
+    /// A file is read only if it is a regular file of at most `max_bytes`
+    /// (`io::read_input_text`: a FIFO or a device is refused at once).
+    pub fn read(&self, arg: Arg, max_bytes: u64) -> Result<(String, String), JobError> {
         match self {
             TableSource::File(p) => {
                 let src = p.display().to_string();
-                let text = std::fs::read_to_string(p).map_err(|e| {
-                    JobError::input(Problem::given(arg, &src, format!("cannot read: {e}")))
-                })?;
+                let text = crate::io::read_input_text(p, arg.plain(), max_bytes)
+                    .map_err(|e| JobError::input(Problem::of(arg, e.to_string())))?;
                 Ok((src, text))
             }
             TableSource::Columns(t) => {
@@ -56,6 +57,15 @@ impl TableSource {
                     }
                 }
                 let bytes = t.to_csv().map_err(|e| JobError::Failed(e.into()))?;
+                if bytes.len() as u64 > max_bytes {
+                    return Err(JobError::input(Problem::of(
+                        arg,
+                        format!(
+                            "the table's text is {} bytes, more than the {max_bytes} a file may have",
+                            bytes.len()
+                        ),
+                    )));
+                }
                 let text = String::from_utf8(bytes).map_err(|e| JobError::Failed(e.into()))?;
                 Ok((arg.plain().to_owned(), text))
             }

@@ -5,14 +5,16 @@
 
 use super::inputs::TableSource;
 use super::observer::Observer;
-use super::{publish, Job, JobError, Outcome};
+use super::{budget, publish, Job, JobError, Outcome};
 use crate::config::case::TorqueShaft;
 use crate::duty::history::{parse_history, DEFAULT_GAP_FACTOR};
 use crate::duty::ldd::{
     load_duration_distribution, LddSettings, MAX_SPEED_CLASSES, MAX_TORQUE_CLASSES,
 };
+use crate::io::input::MAX_HISTORY_BYTES;
 use crate::remedy::{Arg, Problem};
 use crate::report::ldd::ldd_artifacts;
+use crate::study::budget::{estimate_history, Budget};
 use sha2::{Digest, Sha256};
 use std::path::PathBuf;
 
@@ -28,6 +30,10 @@ pub struct LoadSpectrumJob {
     pub gap_factor: f64,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    /// The run budget (`None`: no check).
+    pub budget: Option<Budget>,
 }
 
 impl LoadSpectrumJob {
@@ -40,6 +46,8 @@ impl LoadSpectrumJob {
             torque_shaft: TorqueShaft::Pinion,
             gap_factor: DEFAULT_GAP_FACTOR,
             out: None,
+            replace: false,
+            budget: Some(Budget::DEFAULT),
         }
     }
 
@@ -84,7 +92,8 @@ impl Job for LoadSpectrumJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         self.check()?;
-        let (source, text) = self.history.read(Arg::History)?;
+        let (source, text) = self.history.read(Arg::History, MAX_HISTORY_BYTES)?;
+        budget::check_estimate(&estimate_history(text.len() as u64), self.budget.as_ref())?;
         let history = parse_history(text.as_bytes(), self.gap_factor).map_err(|e| {
             JobError::Input(
                 e.problems
@@ -101,7 +110,7 @@ impl Job for LoadSpectrumJob {
                 "no time under load (torque and speed both above zero): there is no spectrum to count",
             )));
         };
-        let out = publish::open_if(self.out.as_deref(), None, self.name())?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let mut a = ldd_artifacts(
             &source,
             history.time_s.len(),

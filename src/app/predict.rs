@@ -73,38 +73,15 @@ impl PredictOptions {
         }
     }
 
-    /// Every problem of the options.
+    /// Every problem of the options: each within its range (`prognostics::limits`).
     fn check(&self) -> Result<(), JobError> {
-        let mut bad = Vec::new();
-        if !(self.limit_um.is_finite() && self.limit_um > 0.0) {
-            bad.push(Problem::given(
-                Arg::LimitUm,
-                self.limit_um.to_string(),
-                "expected a wear depth > 0 um",
-            ));
-        }
-        if !(self.cycles.is_finite() && self.cycles > 0.0) {
-            bad.push(Problem::given(
-                Arg::Cycles,
-                self.cycles.to_string(),
-                "expected a cycle count > 0",
-            ));
-        }
-        if self.grid_points < 2 {
-            bad.push(Problem::given(
-                Arg::GridPoints,
-                self.grid_points.to_string(),
-                "expected at least 2",
-            ));
-        }
-        if self.samples == Some(0) {
-            bad.push(Problem::given(Arg::Samples, "0", "expected at least 1"));
-        }
-        if bad.is_empty() {
-            Ok(())
-        } else {
-            Err(JobError::Input(bad))
-        }
+        budget::check_settings(crate::prognostics::limits::check_predict(
+            self.limit_um,
+            self.cycles,
+            self.samples,
+            self.grid_points,
+            self.check_runs,
+        ))
     }
 }
 
@@ -119,6 +96,8 @@ pub struct PredictJob {
     pub shard: Shard,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -157,7 +136,7 @@ impl PredictJob {
         ];
         Ok(match &self.posterior {
             Some(p) => {
-                let (src, text) = p.read(Arg::Posterior)?;
+                let (src, text) = p.read(Arg::Posterior, crate::io::input::MAX_POSTERIOR_BYTES)?;
                 let rows = read_samples(&text, &src, defaults)
                     .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
                 let n = self.options.samples.unwrap_or(rows.len());
@@ -195,16 +174,38 @@ impl Job for PredictJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
-        budget::check(&self.case, budget::FORWARD_RUN, self.budget.as_ref())?;
         let o = &self.options;
         o.check()?;
         let case = &self.case;
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
+        // The budget, now that the samples' source and number are known.
+        let e = crate::prognostics::budget::estimate_prediction(
+            case,
+            &span,
+            &crate::prognostics::budget::PredictionJob {
+                samples_in_shard: n.div_ceil(shard.count.max(1)),
+                grid_points: o.grid_points,
+                cycles: o.cycles,
+                exact: o.forward == ForwardModel::Exact,
+                sharded: shard.count > 1,
+                check_runs: if shard.index == 1 { o.check_runs } else { 0 },
+                posterior_rows: match &source {
+                    SampleSource::Posterior { rows, .. } => rows.len(),
+                    SampleSource::Prior(_) => 0,
+                },
+            },
+        );
+        budget::check_estimate(&e, self.budget.as_ref())?;
         let model = build_model(case, observer)?;
         let stem =
             (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
-        let out = publish::open_if(self.out.as_deref(), stem.as_deref(), self.name())?;
+        let out = publish::open_if(
+            self.out.as_deref(),
+            stem.as_deref(),
+            self.name(),
+            self.replace,
+        )?;
         let set = PredictSettings {
             limit_um: o.limit_um,
             cycles: o.cycles,
@@ -286,7 +287,12 @@ impl Job for PredictJob {
             ));
             return Ok(outcome);
         }
-        publish::publish(out, prediction_artifacts(file, Vec::new())?, None, observer)
+        publish::publish(
+            out,
+            prediction_artifacts(file, (0, Vec::new()))?,
+            None,
+            observer,
+        )
     }
 }
 
@@ -311,7 +317,7 @@ fn prediction_summary(
     life: &LifeSummary,
     fans: &[(Quantity, Band)],
     failed: &[&SampleOutcome],
-    missing: Vec<usize>,
+    missing: (usize, Vec<usize>),
 ) -> Value {
     let set = f.identity.settings;
     // Surrogate error relative to the ensemble's spread of the life.
@@ -360,14 +366,17 @@ fn prediction_summary(
         },
         "reference_run_failures": f.reference_failures.iter().map(|(t, e, m)| json!({"theta": thetas_json(&[*t])[0], "exposure_reached_m2_per_n": e, "error": m})).collect::<Vec<_>>(),
         "surrogate_check": check_rows,
-        "missing_samples": missing,
+        "missing_samples": {"count": missing.0, "first": missing.1},
         "metadata": f.metadata,
     })
 }
 
-/// Every output of a prediction from its outcomes (`missing`: sample indices no shard
-/// had).
-pub fn prediction_artifacts(f: ShardFile, missing: Vec<usize>) -> Result<Artifacts, JobError> {
+/// Every output of a prediction from its outcomes (`missing`: how many sample indices no
+/// shard had, and the first of them).
+pub fn prediction_artifacts(
+    f: ShardFile,
+    missing: (usize, Vec<usize>),
+) -> Result<Artifacts, JobError> {
     let mut art = Artifacts::default();
     let set = f.identity.settings;
     let o = &f.outcomes;

@@ -9,14 +9,25 @@
 
 use super::observer::Observer;
 use super::{JobError, Outcome};
-use crate::io::{OutputDir, RunMetadata};
+use crate::io::{OtherSet, OutputDir, RunMetadata};
 use crate::report::{write_artifacts, Artifacts};
 use std::path::Path;
 
 /// Open `dir` for the output set of `command`: `set` names the set when several share
-/// the folder (sweep and prediction shards), `None` is the folder's one set.
-pub fn open(dir: &Path, set: Option<&str>, command: &str) -> Result<OutputDir, JobError> {
-    Ok(OutputDir::open(dir, set, command)?)
+/// the folder (sweep and prediction shards), `None` is the folder's one set. A folder
+/// holding another command's results is refused unless `replace` (`io::OtherSet`).
+pub fn open(
+    dir: &Path,
+    set: Option<&str>,
+    command: &str,
+    replace: bool,
+) -> Result<OutputDir, JobError> {
+    let other = if replace {
+        OtherSet::Replace
+    } else {
+        OtherSet::Refuse
+    };
+    Ok(OutputDir::open_with(dir, set, command, other)?)
 }
 
 /// Open `dir` if given (see [`open`]).
@@ -24,8 +35,9 @@ pub fn open_if(
     dir: Option<&Path>,
     set: Option<&str>,
     command: &str,
+    replace: bool,
 ) -> Result<Option<OutputDir>, JobError> {
-    dir.map(|d| open(d, set, command)).transpose()
+    dir.map(|d| open(d, set, command, replace)).transpose()
 }
 
 /// Finish a job: stamp `meta` on the summary (unless the summary carries its own), then,

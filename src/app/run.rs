@@ -19,6 +19,8 @@ pub struct RunJob {
     pub case: Case,
     /// Output folder (checkpoints, then the results); `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     /// Continue the wear studies from the checkpoints in the output folder.
     pub resume: bool,
     pub budget: Option<Budget>,
@@ -34,7 +36,7 @@ impl Job for RunJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {
-            let out = (self.out.as_deref(), self.resume);
+            let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::run_under_spectrum(self.name(), &self.case, out, observer);
         }
         let model = build_model(&self.case, observer)?;
@@ -45,7 +47,7 @@ impl Job for RunJob {
             &model,
             &modes,
             &meta,
-            (self.out.as_deref(), self.resume),
+            (self.out.as_deref(), self.resume, self.replace),
             observer,
             |model, starts, on_update| {
                 let mut s = starts.into_iter();

@@ -50,6 +50,8 @@ pub struct SignalsJob {
     pub transfer_path: Option<TransferPathSource>,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -108,7 +110,7 @@ impl Job for SignalsJob {
         for w in &setup.warnings {
             observer.warning(w);
         }
-        let out = publish::open_if(self.out.as_deref(), None, self.name())?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
             .map_err(|e| JobError::Failed(e.into()))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;

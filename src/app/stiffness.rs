@@ -15,6 +15,8 @@ pub struct StiffnessJob {
     pub case: Case,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -28,7 +30,7 @@ impl Job for StiffnessJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
         let model = build_model(&self.case, observer)?;
-        let out = publish::open_if(self.out.as_deref(), None, self.name())?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         publish::publish(out, stiffness_artifacts(&model), Some(&meta), observer)
     }

@@ -24,6 +24,8 @@ pub struct WearJob {
     pub out: Option<PathBuf>,
     /// Continue from the checkpoints in the output folder.
     pub resume: bool,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     pub budget: Option<Budget>,
 }
 
@@ -41,7 +43,7 @@ impl Job for WearJob {
         };
         budget::check(&self.case, cost, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {
-            let out = (self.out.as_deref(), self.resume);
+            let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::wear_under_spectrum(
                 self.name(),
                 &self.case,
@@ -57,7 +59,7 @@ impl Job for WearJob {
             &model,
             &self.modes,
             &meta,
-            (self.out.as_deref(), self.resume),
+            (self.out.as_deref(), self.resume, self.replace),
             observer,
             |model, starts, on_update| run_wear_modes(model, starts, on_update),
         )?;
@@ -88,7 +90,7 @@ pub fn run_modes<T>(
     model: &Model,
     modes: &[WearMode],
     meta: &RunMetadata,
-    (out, resume): (Option<&std::path::Path>, bool),
+    (out, resume, replace): (Option<&std::path::Path>, bool, bool),
     observer: &dyn Observer,
     study: impl FnOnce(
         &Model,
@@ -96,9 +98,20 @@ pub fn run_modes<T>(
         &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
     ) -> anyhow::Result<T>,
 ) -> Result<Runs<T>, JobError> {
-    let resume_from = out.filter(|_| resume);
-    let starts = starting_runs(modes, resume_from, &meta.case_sha256, model, observer)?;
-    let mut dir = publish::open_if(out, None, command)?;
+    if let (Some(o), true) = (out, resume) {
+        super::checkpoints::require_folder(o)?;
+    }
+    // The folder first (locked, its state read through its handle), then the checkpoints
+    // in it, each verified before anything runs.
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let starts = starting_runs(
+        dir.as_ref(),
+        modes,
+        resume,
+        &meta.case_sha256,
+        model,
+        observer,
+    )?;
     let logs: Option<CheckpointSet> = match dir.as_mut() {
         Some(d) => Some(open_checkpoints(d, &starts, &meta.case_sha256)?),
         None => None,
@@ -118,11 +131,7 @@ pub fn run_modes<T>(
         }
         keep_going(observer)
     };
-    let result = study(
-        model,
-        starts.into_iter().map(|s| s.run).collect(),
-        &on_update,
-    );
+    let result = study(model, starts, &on_update);
     for t in &tasks {
         observer.finish(t);
     }

@@ -27,6 +27,9 @@ pub struct Cli {
     /// Run without the budget check.
     #[arg(long, global = true, conflicts_with = "budget_scale")]
     pub no_budget: bool,
+    /// Replace the results of another command in the output folder (refused otherwise).
+    #[arg(long, global = true)]
+    pub replace: bool,
 }
 
 fn parse_budget_scale(text: &str) -> Result<f64, String> {
@@ -97,10 +100,11 @@ pub struct CaseArgs {
 impl CaseArgs {
     /// The case file's text (empty without --config).
     pub fn text(&self) -> Result<String, CliError> {
+        use crate::io::input::{read_input_text, MAX_CASE_BYTES};
         match &self.config {
-            Some(p) => std::fs::read_to_string(p).map_err(|e| {
-                CliError::input(format!("--config {}: cannot read: {e}", p.display()))
-            }),
+            // Only a regular file of bounded size (a FIFO or a device is refused at once).
+            Some(p) => read_input_text(p, "case file", MAX_CASE_BYTES)
+                .map_err(|e| CliError::input(format!("--config {e}"))),
             None => Ok(String::new()),
         }
     }

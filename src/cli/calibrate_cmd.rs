@@ -18,6 +18,7 @@ pub fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
             check_runs: a.check_runs,
         },
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }

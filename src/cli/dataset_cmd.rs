@@ -5,9 +5,10 @@ use super::output::execute;
 use super::signals_args::{DatasetArgs, DatasetMergeArgs};
 use super::CliError;
 use crate::app::{DatasetJob, DatasetMergeJob, DesignSource};
+use crate::study::budget::Budget;
 use crate::study::dataset::Shard;
 
-pub fn run(a: &DatasetArgs) -> Result<(), CliError> {
+pub fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let shard = match &a.shard {
         Some(s) => Shard::parse(s).map_err(|p| CliError::input(p.render(flag)))?,
         None => Shard::ALL,
@@ -16,6 +17,8 @@ pub fn run(a: &DatasetArgs) -> Result<(), CliError> {
         design: DesignSource::file(&a.design)?,
         shard,
         out: a.out.clone(),
+        replace: super::output::replace(),
+        budget,
     })
 }
 
@@ -23,5 +26,6 @@ pub fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
     execute(&DatasetMergeJob {
         inputs: a.inputs.clone(),
         out: a.out.clone(),
+        replace: super::output::replace(),
     })
 }

@@ -14,6 +14,7 @@ pub fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
             .clone()
             .map(TransmissionErrorSource::File),
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }

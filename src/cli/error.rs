@@ -39,6 +39,7 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::BudgetScale => "--budget-scale",
         Arg::NoBudget => "--no-budget",
         Arg::Inputs => "input",
+        Arg::Replace => "--replace",
         Arg::History => "--history",
         Arg::TorqueClasses => "--torque-classes",
         Arg::SpeedClasses => "--speed-classes",

@@ -6,8 +6,9 @@ use super::CliError;
 use crate::app::{LoadSpectrumJob, TableSource};
 use crate::config::case::TorqueShaft;
 use crate::duty::ldd::{Interpolation, LddSettings, Level};
+use crate::study::budget::Budget;
 
-pub fn run(a: &LoadSpectrumArgs) -> Result<(), CliError> {
+pub fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&LoadSpectrumJob {
         history: TableSource::File(a.history.clone()),
         settings: LddSettings {
@@ -28,5 +29,7 @@ pub fn run(a: &LoadSpectrumArgs) -> Result<(), CliError> {
         },
         gap_factor: a.gap_factor,
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
+        budget,
     })
 }

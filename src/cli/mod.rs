@@ -2,6 +2,21 @@
 //! the application layer (`crate::app`), runs it with a terminal observer (progress bars,
 //! warnings on standard error) and prints its headline; errors are worded with the
 //! command line's flags (`error::flag`).
+//!
+//! Exit codes: 0 success; 1 a run that failed on valid input (a solver); 2 bad input (the
+//! case, a file argument, the output folder, the budget); 3 the command ran to its end
+//! but standard output or standard error could not be written (`io::console`).
+
+// In the command line, `println!` and `eprintln!` are these: they never panic when a
+// stream fails (`/dev/full`, a closed pipe); `io::console` remembers the failure and the
+// command says so once at its end. Defined before the modules so that they see them.
+#[allow(unused_macros)]
+macro_rules! println {
+    ($($t:tt)*) => { $crate::io::console::out_line(&format!($($t)*)) };
+}
+macro_rules! eprintln {
+    ($($t:tt)*) => { $crate::io::console::err_line(&format!($($t)*)) };
+}
 
 mod args;
 mod calibrate_cmd;
@@ -27,32 +42,53 @@ pub use progress::Terminal;
 use clap::Parser;
 use std::process::ExitCode;
 
-/// Entry point of the binary. Exit code 2 for bad input, 1 for a failed run.
+/// Entry point of the binary (exit codes: see the module docs).
 pub fn main() -> ExitCode {
+    crate::io::runtime::catch_file_size_signal();
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
+    output::set_replace(cli.replace);
+    let pool = match crate::io::runtime::thread_pool() {
+        Ok((pool, note)) => {
+            if let Some(n) = note {
+                eprintln!("note: {n}");
+            }
+            pool
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(crate::io::console::finish().unwrap_or(1));
+        }
+    };
+    // Every parallel loop of the command runs on this pool.
+    let code = pool.install(|| run(&cli));
+    ExitCode::from(crate::io::console::finish().unwrap_or(code))
+}
+
+/// Run the command `cli` names; its exit code.
+fn run(cli: &Cli) -> u8 {
     let budget = cli.budget();
     let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a, budget),
         Command::Dynamics(a) => dynamics_cmd::run(a, budget),
         Command::Signals(a) => signals_cmd::run(a, budget),
-        Command::Dataset(a) => dataset_cmd::run(a),
+        Command::Dataset(a) => dataset_cmd::run(a, budget),
         Command::DatasetMerge(a) => dataset_cmd::merge(a),
         Command::Wear(a) => wear_cmd::run(a, budget),
         Command::Run(a) => run_cmd::run(a, budget),
         Command::Sweep(a) => sweep_cmd::run(a, budget),
-        Command::SweepMerge(a) => sweep_cmd::merge(a),
+        Command::SweepMerge(a) => sweep_cmd::merge(a, budget),
         Command::Calibrate(a) => calibrate_cmd::run(a, budget),
         Command::Predict(a) => predict_cmd::run(a, budget),
-        Command::PredictMerge(a) => predict_cmd::merge(a),
-        Command::LoadSpectrum(a) => load_spectrum_cmd::run(a),
+        Command::PredictMerge(a) => predict_cmd::merge(a, budget),
+        Command::LoadSpectrum(a) => load_spectrum_cmd::run(a, budget),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(()) => 0,
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::from(e.exit_code())
+            e.exit_code()
         }
     }
 }

@@ -11,6 +11,18 @@ use crate::app::{Job, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);
+static REPLACE: AtomicBool = AtomicBool::new(false);
+
+/// Set by `--replace`: an output folder holding another command's results may be
+/// replaced.
+pub fn set_replace(r: bool) {
+    REPLACE.store(r, Ordering::Relaxed);
+}
+
+/// Whether `--replace` was given.
+pub fn replace() -> bool {
+    REPLACE.load(Ordering::Relaxed)
+}
 
 /// Set by `--quiet`.
 pub fn set_quiet(q: bool) {

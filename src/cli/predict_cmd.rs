@@ -31,13 +31,16 @@ pub fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
         },
         shard,
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }
 
-pub fn merge(a: &PredictMergeArgs) -> Result<(), CliError> {
+pub fn merge(a: &PredictMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&PredictMergeJob {
         inputs: a.inputs.clone(),
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
+        budget,
     })
 }

@@ -10,6 +10,7 @@ pub fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&RunJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         resume: a.resume,
         budget,
     })

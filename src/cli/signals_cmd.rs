@@ -11,6 +11,7 @@ pub fn run(a: &SignalsArgs, budget: Option<Budget>) -> Result<(), CliError> {
         case: a.case.load()?,
         transfer_path: a.transfer_path.clone().map(TransferPathSource::File),
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }

@@ -11,6 +11,7 @@ pub fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&StiffnessJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }

@@ -42,13 +42,16 @@ pub fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
             ContinuationArg::Both => Continuation::Both,
         }),
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         budget,
     })
 }
 
-pub fn merge(a: &SweepMergeArgs) -> Result<(), CliError> {
+pub fn merge(a: &SweepMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&SweepMergeJob {
         inputs: a.inputs.clone(),
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
+        budget,
     })
 }

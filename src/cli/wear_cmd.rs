@@ -18,6 +18,7 @@ pub fn run(a: &WearArgs, budget: Option<Budget>) -> Result<(), CliError> {
         case: a.case.load()?,
         modes,
         out: Some(a.out.clone()),
+        replace: super::output::replace(),
         resume: a.resume,
         budget,
     })

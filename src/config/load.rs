@@ -384,6 +384,47 @@ fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Wo
     }
 }
 
+/// A TOML parse error by its place (line, column) and the parser's words, never quoting
+/// the text: a file that is not a case file at all (`/etc/passwd`) must not have its
+/// content echoed into a message or a log.
+fn toml_error(e: &toml::de::Error, text: &str) -> String {
+    let place = e
+        .span()
+        .filter(|_| !text.is_empty())
+        .map_or(String::new(), |s| {
+            let before = &text.as_bytes()[..s.start.min(text.len())];
+            let line = before.iter().filter(|b| **b == b'\n').count() + 1;
+            let col = before.iter().rev().take_while(|b| **b != b'\n').count() + 1;
+            format!(" at line {line}, column {col}")
+        });
+    format!("{place}: {}", clip(e.message().trim(), 2 * SHOWN_CHARS))
+}
+
+/// `operating.input_speed_rpm` (checked against its range already): the input speed in
+/// revolutions per minute, the unit engineers think in, as an alternative to
+/// `operating.input_speed_hz`. Replaced by `input_speed_hz` = rpm / 60 here, so a case
+/// given in rpm is the very case (and hash) given in Hz; both at once is an error.
+fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
+    let Some(Value::Table(op)) = user.get_mut("operating") else {
+        return;
+    };
+    let Some(rpm) = op.remove("input_speed_rpm") else {
+        return;
+    };
+    if op.contains_key("input_speed_hz") {
+        problems.push(
+            "`operating.input_speed_rpm` and `operating.input_speed_hz` are both given: give the input speed once, in rpm or in Hz".into(),
+        );
+        return;
+    }
+    if let Some(x) = rpm
+        .as_float()
+        .or_else(|| rpm.as_integer().map(|i| i as f64))
+    {
+        op.insert("input_speed_hz".into(), Value::Float(x / 60.0));
+    }
+}
+
 /// Set `section.key` in the tree (the only table of an array-of-tables section); the
 /// problem when the section is not a table.
 fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result<(), String> {
@@ -400,16 +441,6 @@ fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result
         }
         _ => Err(format!("[{}] is not a table", clip(section, SHOWN_CHARS))),
     }
-}
-
-/// A TOML parse error with every line cut to a readable length (the parser quotes the
-/// offending line, which may be megabytes long).
-fn toml_error(e: &toml::de::Error) -> String {
-    e.to_string()
-        .lines()
-        .map(|l| clip(l, 2 * SHOWN_CHARS))
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 /// Build a case from TOML text (empty for the default) and overrides (`section.key=value`
@@ -430,7 +461,10 @@ pub fn load_case_in(
     dir: &std::path::Path,
 ) -> Result<Case, ConfigError> {
     let mut user: Table = toml::from_str(toml_text).map_err(|e| {
-        ConfigError::one(format!("case file is not valid TOML: {}", toml_error(&e)))
+        ConfigError::one(format!(
+            "case file is not valid TOML{}",
+            toml_error(&e, toml_text)
+        ))
     })?;
     let mut problems = Vec::new();
     apply_overrides(&mut user, overrides, &mut problems);
@@ -455,6 +489,12 @@ pub fn case_with(base: &Case, values: &[(&str, Value)]) -> Result<Case, ConfigEr
     };
     for (key, value) in values {
         let (section, k) = key.split_once('.').unwrap_or((key, ""));
+        if *key == "operating.input_speed_rpm" {
+            // The base case's speed is in Hz: the varied speed in rpm replaces it.
+            if let Some(Value::Table(op)) = user.get_mut("operating") {
+                op.remove("input_speed_hz");
+            }
+        }
         set_value(&mut user, section, k, value.clone()).map_err(ConfigError::one)?;
     }
     // A resolved case holds its spectrum's bins inline: no file to read.
@@ -477,12 +517,15 @@ fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError>
     let mut problems = Vec::new();
     let spectrum = spectrum_section(&mut user, dir, &mut problems);
     check_keys(&mut user, &mut problems);
+    speed_in_rpm(&mut user, &mut problems);
     if !problems.is_empty() {
         return Err(ConfigError::of(problems));
     }
     let mut case: Case = Value::Table(user)
         .try_into()
-        .map_err(|e: toml::de::Error| ConfigError::one(format!("case file: {}", toml_error(&e))))?;
+        .map_err(|e: toml::de::Error| {
+            ConfigError::one(format!("case file{}", toml_error(&e, "")))
+        })?;
     case.load_spectrum = spectrum;
     check_relations(&case, &mut problems);
     if problems.is_empty() {

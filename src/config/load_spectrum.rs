@@ -399,18 +399,24 @@ fn inline_bins(v: &Value, problems: &mut Vec<String>) -> Vec<RawBin> {
 
 /// Bins from a CSV file (header: the bin keys).
 fn file_bins(path: &Path, shown: &str, problems: &mut Vec<String>) -> Vec<RawBin> {
-    let mut rdr = match csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .from_path(path)
-    {
-        Ok(r) => r,
+    // Only a regular file of bounded size (a FIFO or device would block or stream).
+    let text = match crate::io::input::read_input_text(
+        path,
+        "load spectrum file",
+        crate::io::input::MAX_LOAD_SPECTRUM_BYTES,
+    ) {
+        Ok(t) => t,
         Err(e) => {
             problems.push(format!(
-                "`load_spectrum.file` = \"{shown}\": cannot read: {e}"
+                "`load_spectrum.file` = \"{shown}\": cannot read: {}",
+                e.reason
             ));
             return Vec::new();
         }
     };
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_reader(text.as_bytes());
     let header: Vec<String> = match rdr.headers() {
         Ok(h) => h.iter().map(str::to_owned).collect(),
         Err(e) => {

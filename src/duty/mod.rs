@@ -19,6 +19,7 @@ pub mod life;
 pub mod model;
 pub mod resume;
 pub mod study;
+pub mod verify;
 pub mod wear;
 
 pub use model::SpectrumModel;

@@ -118,7 +118,7 @@ impl SpectrumRun {
 }
 
 /// Why a bin's response cannot be kept.
-enum BinFailure {
+pub(super) enum BinFailure {
     /// Out of contact too long: the model's domain is left.
     Validity(f64),
     Solver(DynamicsError),
@@ -126,7 +126,7 @@ enum BinFailure {
 
 /// Every bin's response on `wear`, in parallel; `starts[i]` warm-starts bin i. The first
 /// failing bin (lowest index) and why, if any.
-fn respond(
+pub(super) fn respond(
     sm: &SpectrumModel,
     mode: WearMode,
     wear: &WearState,
@@ -189,7 +189,7 @@ pub(super) fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> Spectrum
 /// The first record of a run on `state`: every bin's response, cold-started (from the
 /// static equilibrium), and no wear attributed to any bin yet. An error names the bin
 /// whose response fails or leaves the model's domain.
-fn first_record(
+pub(super) fn first_record(
     sm: &SpectrumModel,
     mode: WearMode,
     state: WearState,

@@ -8,21 +8,26 @@
 //!   "case_sha256": ...}`;
 //! - then one `UpdateRecord` per line, in order.
 //!
+//! A run in progress writes `checkpoint_MODE.partial.jsonl`; publishing the run's set
+//! renames it to `checkpoint_MODE.jsonl`, so a folder's published results and its
+//! checkpoints always belong to one case, even when a later run of another case was
+//! interrupted there. A resumed run continues the partial file if there is one, else the
+//! published one; it writes a new file (the records read, then its own), never into the
+//! file it read.
+//!
 //! Loading checks the checksum of every line, the schema, the mode and the case; a last
-//! line without its newline is what a killed write leaves and is dropped (the file is cut
-//! back to the last whole line when the run resumes); anything else that does not check
-//! out is an error naming the file and the line, never a silent restart. The records'
-//! physics is checked by `study::wear_check` against the model.
+//! line without its newline is what a killed write leaves and is dropped; anything else
+//! that does not check out is an error naming the file and the line, never a silent
+//! restart. The records' physics is checked by `study::wear_check` against the model,
+//! and the last update is recomputed.
 
 use super::error::OutputError;
-use super::output_dir::sha256_hex;
-use super::write_atomic;
+use super::output_dir::{sha256_hex, OutputDir};
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
-use std::fs::{File, OpenOptions};
+use std::fs::File;
 use std::io::Write;
-use std::path::{Path, PathBuf};
 
 const FORMAT: &str = "gearwear-wear-checkpoint";
 /// Version of the format; a file of another version is refused with a clear message.
@@ -36,9 +41,33 @@ struct Header {
     case_sha256: String,
 }
 
-/// File name of a mode's checkpoint, relative to the output folder.
+/// File name of a mode's published checkpoint, relative to the output folder.
 pub fn checkpoint_name(mode: WearMode) -> String {
     format!("checkpoint_{}.jsonl", mode.name())
+}
+
+/// File name of a mode's checkpoint while its run is in progress.
+pub fn partial_checkpoint_name(mode: WearMode) -> String {
+    partial_of(&checkpoint_name(mode))
+}
+
+/// The name a checkpoint `NAME.jsonl` has while its run goes on: `NAME.partial.jsonl`.
+pub fn partial_of(name: &str) -> String {
+    match name.strip_suffix(".jsonl") {
+        Some(stem) => format!("{stem}.partial.jsonl"),
+        None => format!("{name}.partial"),
+    }
+}
+
+/// Whether `bytes` begin like a gearwear checkpoint (its header line), so a file at a
+/// checkpoint's name may be replaced by a new checkpoint.
+pub fn is_checkpoint(bytes: &[u8]) -> bool {
+    let line = bytes.split(|b| *b == b'\n').next().unwrap_or(&[]);
+    let text = String::from_utf8_lossy(line);
+    text.split_once(' ').is_some_and(|(sum, json)| {
+        sha256_hex(json.as_bytes()) == sum
+            && serde_json::from_str::<Header>(json).is_ok_and(|h| h.format == FORMAT)
+    })
 }
 
 /// Why a checkpoint cannot be used (an input problem: the message names the file).
@@ -70,37 +99,34 @@ fn short(s: &str) -> String {
     s.chars().take(12).collect()
 }
 
-/// A checkpoint read back: the run, and the length of the file up to its last whole line.
+/// A checkpoint read back, and where it was read.
 #[derive(Debug)]
 pub struct LoadedCheckpoint {
     pub run: WearRun,
-    pub valid_len: u64,
+    /// Its path relative to the output folder.
+    pub rel: String,
 }
 
-/// Load the checkpoint `path` of `mode` for the case with hash `case_sha256`: `Ok(None)`
-/// when there is none, an error when it cannot be trusted.
-pub fn load_checkpoint(
-    path: &Path,
+/// Parse the checkpoint `bytes` (named `source` in messages) of `mode` for the case with
+/// hash `case_sha256`. A last line without its newline is dropped.
+pub fn parse_checkpoint(
+    bytes: &[u8],
+    source: &str,
     mode: WearMode,
     case_sha256: &str,
-) -> Result<Option<LoadedCheckpoint>, CheckpointError> {
+) -> Result<WearRun, CheckpointError> {
     let err = |reason: String| CheckpointError {
-        path: path.display().to_string(),
+        path: source.to_owned(),
         reason,
         remedy: None,
     };
-    let bytes = match std::fs::read(path) {
-        Ok(b) => b,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(err(format!("cannot read: {e}"))),
-    };
     // Whole lines only: a last line without its newline is an interrupted append.
     let valid_len = bytes.iter().rposition(|b| *b == b'\n').map_or(0, |i| i + 1);
+    if valid_len == 0 {
+        return Err(err("has no header line".into()));
+    }
     let mut records = Vec::new();
-    for (i, raw) in bytes[..valid_len].split(|b| *b == b'\n').enumerate() {
-        if i > 0 && raw.is_empty() {
-            continue; // the end of the last line
-        }
+    for (i, raw) in bytes[..valid_len - 1].split(|b| *b == b'\n').enumerate() {
         let line_no = i + 1;
         let text = std::str::from_utf8(raw)
             .map_err(|_| err(format!("line {line_no} is not UTF-8 text")))?;
@@ -114,11 +140,12 @@ pub fn load_checkpoint(
         }
         if i == 0 {
             let h: Header = serde_json::from_str(json)
-                .map_err(|e| err(format!("not a gearwear checkpoint: {e}")))?;
+                .map_err(|_| err("line 1 is not a gearwear checkpoint header".into()))?;
             if h.format != FORMAT || h.schema != SCHEMA {
                 return Err(err(format!(
                     "format {} version {} is not {FORMAT} version {SCHEMA}",
-                    h.format, h.schema
+                    short(&h.format),
+                    h.schema
                 )));
             }
             if h.mode != mode {
@@ -132,9 +159,9 @@ pub fn load_checkpoint(
                 return Err(CheckpointError {
                     remedy: Some(Box::new(Remedy::new(
                         Words::new()
-                            .text("rerun without ")
+                            .text("start afresh (without ")
                             .arg(Arg::Resume)
-                            .text(" or with the same case"),
+                            .text("), or resume with the same case"),
                     ))),
                     ..err(format!(
                         "belongs to another case (hash {} != {})",
@@ -149,69 +176,106 @@ pub fn load_checkpoint(
             records.push(r);
         }
     }
-    if valid_len == 0 {
-        return Err(err("has no header line".into()));
+    Ok(WearRun {
+        mode,
+        records,
+        stopped: None,
+    })
+}
+
+/// The checkpoint of `mode` to resume from in `out`: the partial one of an interrupted
+/// run if there is one, else the published one; None when there is neither. A file that
+/// is not a regular single-link file, or holds more than `max_bytes`, is refused.
+pub fn load_checkpoint(
+    out: &OutputDir,
+    mode: WearMode,
+    case_sha256: &str,
+    max_bytes: u64,
+) -> Result<Option<LoadedCheckpoint>, CheckpointError> {
+    load_checkpoint_named(out, &checkpoint_name(mode), mode, case_sha256, max_bytes)
+}
+
+/// As [`load_checkpoint`], for the checkpoint published as `name`.
+pub fn load_checkpoint_named(
+    out: &OutputDir,
+    name: &str,
+    mode: WearMode,
+    case_sha256: &str,
+    max_bytes: u64,
+) -> Result<Option<LoadedCheckpoint>, CheckpointError> {
+    for rel in [partial_of(name), name.to_owned()] {
+        let source = out.root().join(&rel).display().to_string();
+        let bytes = out
+            .read_file(&rel, max_bytes)
+            .map_err(|e| CheckpointError {
+                path: source.clone(),
+                reason: e.to_string(),
+                remedy: None,
+            })?;
+        if let Some(b) = bytes {
+            let run = parse_checkpoint(&b, &source, mode, case_sha256)?;
+            return Ok(Some(LoadedCheckpoint { run, rel }));
+        }
     }
-    Ok(Some(LoadedCheckpoint {
-        run: WearRun {
-            mode,
-            records,
-            stopped: None,
-        },
-        valid_len: valid_len as u64,
-    }))
+    Ok(None)
 }
 
 /// An open checkpoint, appended to after every update.
 pub struct CheckpointLog {
     file: File,
-    path: PathBuf,
+    path: std::path::PathBuf,
     /// Records already in the file.
     written: usize,
 }
 
-fn open_append(path: &Path) -> std::io::Result<File> {
-    let mut o = OpenOptions::new();
-    o.write(true);
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::OpenOptionsExt;
-        o.custom_flags(libc::O_NOFOLLOW);
+fn lines_of(records: &[UpdateRecord], name: &str) -> Result<String, OutputError> {
+    let mut text = String::new();
+    for r in records {
+        let json = serde_json::to_string(r).map_err(|e| {
+            OutputError::new("write", std::path::Path::new(name), e.to_string(), None)
+        })?;
+        text.push_str(&line_of(&json));
     }
-    o.open(path)
+    Ok(text)
 }
 
 impl CheckpointLog {
-    /// Start a new checkpoint at `path` (replacing any earlier one) for `run` so far.
-    pub fn create(path: &Path, case_sha256: &str, run: &WearRun) -> Result<Self, OutputError> {
+    /// Start the checkpoint of `run` (a new run, or one resumed with its records) in
+    /// `out`, as the partial file that publishing renames to the checkpoint's name.
+    pub fn create(
+        out: &mut OutputDir,
+        case_sha256: &str,
+        run: &WearRun,
+    ) -> Result<Self, OutputError> {
+        let name = checkpoint_name(run.mode);
+        Self::create_named(out, &name, case_sha256, run)
+    }
+
+    /// As [`CheckpointLog::create`], for the checkpoint published as `name` (written as
+    /// its `.partial.jsonl` until the set is published).
+    pub fn create_named(
+        out: &mut OutputDir,
+        name: &str,
+        case_sha256: &str,
+        run: &WearRun,
+    ) -> Result<Self, OutputError> {
+        let partial = partial_of(name);
         let header = Header {
             format: FORMAT.into(),
             schema: SCHEMA,
             mode: run.mode,
             case_sha256: case_sha256.into(),
         };
-        let json = serde_json::to_string(&header)
-            .map_err(|e| OutputError::new("write", path, e.to_string(), None))?;
-        write_atomic(path, line_of(&json).as_bytes())?;
-        let file = open_append(path).map_err(|e| OutputError::io("open", path, &e))?;
-        let mut log = Self {
-            file,
-            path: path.to_path_buf(),
-            written: 0,
-        };
-        log.append_new(run)?;
-        Ok(log)
-    }
-
-    /// Continue a loaded checkpoint: cut it back to its last whole line.
-    pub fn resume(path: &Path, loaded: &LoadedCheckpoint) -> Result<Self, OutputError> {
-        let file = open_append(path).map_err(|e| OutputError::io("open", path, &e))?;
-        file.set_len(loaded.valid_len)
-            .map_err(|e| OutputError::io("write", path, &e))?;
+        let json = serde_json::to_string(&header).map_err(|e| {
+            OutputError::new("write", &out.root().join(&partial), e.to_string(), None)
+        })?;
+        let mut text = line_of(&json);
+        text.push_str(&lines_of(&run.records, &partial)?);
+        let file = out.create_log(&partial, Some(name), text.as_bytes(), is_checkpoint)?;
         Ok(Self {
             file,
-            path: path.to_path_buf(),
-            written: loaded.run.records.len(),
+            path: out.root().join(&partial),
+            written: run.records.len(),
         })
     }
 
@@ -220,16 +284,9 @@ impl CheckpointLog {
         if run.records.len() <= self.written {
             return Ok(());
         }
-        let mut text = String::new();
-        for r in &run.records[self.written..] {
-            let json = serde_json::to_string(r)
-                .map_err(|e| OutputError::new("write", &self.path, e.to_string(), None))?;
-            text.push_str(&line_of(&json));
-        }
-        use std::io::{Seek, SeekFrom};
+        let text = lines_of(&run.records[self.written..], &self.path.to_string_lossy())?;
         self.file
-            .seek(SeekFrom::End(0))
-            .and_then(|_| self.file.write_all(text.as_bytes()))
+            .write_all(text.as_bytes())
             .and_then(|_| self.file.sync_data())
             .map_err(|e| OutputError::io("write", &self.path, &e))?;
         self.written = run.records.len();
@@ -264,54 +321,65 @@ mod tests {
     }
 
     #[test]
-    fn appends_round_trip_and_a_torn_last_line_is_dropped() {
+    fn appends_round_trip_a_torn_last_line_is_dropped_and_publishing_renames() {
         let d = tempfile::tempdir().unwrap();
-        let p = d.path().join(checkpoint_name(WearMode::Dynamic));
+        let mut out = OutputDir::open(d.path(), None, "wear").unwrap();
         let full = run_of(3);
-        let mut log = CheckpointLog::create(&p, "abc", &run_of(1)).unwrap();
+        let mut log = CheckpointLog::create(&mut out, "abc", &run_of(1)).unwrap();
         log.append_new(&run_of(2)).unwrap();
         log.append_new(&full).unwrap();
-        let l = load_checkpoint(&p, WearMode::Dynamic, "abc")
+        let l = load_checkpoint(&out, WearMode::Dynamic, "abc", 1 << 20)
             .unwrap()
             .unwrap();
         assert_eq!(l.run, full);
-        // A killed append leaves half a line: it is dropped, and resuming cuts it off.
-        let mut f = OpenOptions::new().append(true).open(&p).unwrap();
+        assert_eq!(l.rel, partial_checkpoint_name(WearMode::Dynamic));
+        // A killed append leaves half a line: it is dropped.
+        let p = d.path().join(&l.rel);
+        let mut f = std::fs::OpenOptions::new().append(true).open(&p).unwrap();
         f.write_all(b"0123 {\"wear\":").unwrap();
-        let l = load_checkpoint(&p, WearMode::Dynamic, "abc")
+        let l = load_checkpoint(&out, WearMode::Dynamic, "abc", 1 << 20)
             .unwrap()
             .unwrap();
         assert_eq!(l.run, full);
-        CheckpointLog::resume(&p, &l).unwrap();
-        assert_eq!(std::fs::metadata(&p).unwrap().len(), l.valid_len);
+        assert!(is_checkpoint(&std::fs::read(&p).unwrap()));
+        out.publish().unwrap();
+        assert!(!p.exists());
+        let text = std::fs::read(d.path().join(checkpoint_name(WearMode::Dynamic))).unwrap();
+        let run = parse_checkpoint(&text, "c", WearMode::Dynamic, "abc").unwrap();
+        assert_eq!(run, full);
     }
 
     #[test]
     fn edits_modes_and_cases_are_refused_with_the_line() {
         let d = tempfile::tempdir().unwrap();
-        let p = d.path().join("c.jsonl");
-        CheckpointLog::create(&p, "abc", &run_of(3)).unwrap();
-        let e = load_checkpoint(&p, WearMode::QuasiStatic, "abc").unwrap_err();
-        assert!(e.to_string().contains("not a quasi-static"), "{e}");
-        let e = load_checkpoint(&p, WearMode::Dynamic, "xyz").unwrap_err();
-        assert!(e.to_string().contains("another case"), "{e}");
+        let mut out = OutputDir::open(d.path(), None, "wear").unwrap();
+        CheckpointLog::create(&mut out, "abc", &run_of(3)).unwrap();
+        let p = d.path().join(partial_checkpoint_name(WearMode::Dynamic));
         let text = std::fs::read_to_string(&p).unwrap();
-        std::fs::write(&p, text.replacen("0.21", "0.31", 1)).unwrap();
-        let e = load_checkpoint(&p, WearMode::Dynamic, "abc").unwrap_err();
-        assert!(
-            e.to_string().contains("line 2") && e.to_string().contains("checksum"),
-            "{e}"
+        let parse = |b: &[u8], m, h: &str| {
+            parse_checkpoint(b, "c.jsonl", m, h)
+                .unwrap_err()
+                .to_string()
+        };
+        let e = parse(text.as_bytes(), WearMode::QuasiStatic, "abc");
+        assert!(e.contains("not a quasi-static"), "{e}");
+        let e = parse(text.as_bytes(), WearMode::Dynamic, "xyz");
+        assert!(e.contains("another case"), "{e}");
+        let e = parse(
+            text.replacen("0.21", "0.31", 1).as_bytes(),
+            WearMode::Dynamic,
+            "abc",
         );
-        let mut bytes = text.into_bytes();
+        assert!(e.contains("line 2") && e.contains("checksum"), "{e}");
+        let mut bytes = text.clone().into_bytes();
         let at = bytes.len() - 5;
         bytes[at] = 0xff;
-        std::fs::write(&p, &bytes).unwrap();
-        let e = load_checkpoint(&p, WearMode::Dynamic, "abc").unwrap_err();
-        assert!(e.to_string().contains("UTF-8"), "{e}");
+        let e = parse(&bytes, WearMode::Dynamic, "abc");
+        assert!(e.contains("UTF-8"), "{e}");
         // A multibyte character in the stored hash is named, never a panic.
         let h = r#"{"format":"gearwear-wear-checkpoint","schema":2,"mode":"dynamic","case_sha256":"ééééééééééééé"}"#;
-        std::fs::write(&p, line_of(h)).unwrap();
-        let e = load_checkpoint(&p, WearMode::Dynamic, "abc").unwrap_err();
-        assert!(e.to_string().contains("another case"), "{e}");
+        let e = parse(line_of(h).as_bytes(), WearMode::Dynamic, "abc");
+        assert!(e.contains("another case"), "{e}");
+        assert!(!is_checkpoint(b"my notes\n"));
     }
 }

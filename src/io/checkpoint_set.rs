@@ -2,8 +2,9 @@
 //! update while the runs go on in parallel (the wear commands and the Python binding
 //! share it).
 
-use super::checkpoint::{checkpoint_name, CheckpointLog, LoadedCheckpoint};
+use super::checkpoint::CheckpointLog;
 use super::{OutputDir, OutputError};
+use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{WearMode, WearRun};
 use std::sync::Mutex;
 
@@ -13,20 +14,16 @@ pub struct CheckpointSet {
 }
 
 impl CheckpointSet {
-    /// Start the log of every run in `out` (a fresh run, or one resumed from the
-    /// checkpoint it was loaded from).
+    /// Start the log of every run in `out`: a fresh run, or one resumed with the records
+    /// it was loaded with (written into a new file: see `checkpoint.rs`).
     pub fn open(
         out: &mut OutputDir,
-        runs: &[(&WearRun, Option<&LoadedCheckpoint>)],
+        runs: &[&WearRun],
         case_sha256: &str,
     ) -> Result<Self, OutputError> {
         let mut logs = Vec::new();
-        for (run, loaded) in runs {
-            let path = out.state_path(&checkpoint_name(run.mode))?;
-            let log = match loaded {
-                Some(l) => CheckpointLog::resume(&path, l)?,
-                None => CheckpointLog::create(&path, case_sha256, run)?,
-            };
+        for run in runs {
+            let log = CheckpointLog::create(out, case_sha256, run)?;
             logs.push((run.mode, Mutex::new(log)));
         }
         Ok(Self { logs })
@@ -42,4 +39,72 @@ impl CheckpointSet {
         }
         Ok(())
     }
+}
+
+/// Where each mode's run starts. Without `resume`, afresh. With it, each mode continues
+/// from its checkpoint in `out` (`checkpoint::load_checkpoint`), which must belong to this
+/// case and mode, hold a run this model could have produced (`study::wear_check`), and
+/// reproduce its last update bit for bit when that update is recomputed; every checkpoint
+/// is checked before anything runs. A mode without a checkpoint (or with only its header:
+/// killed before its first update) starts afresh, with a note; finding none at all is an
+/// error: the user asked to resume something that is not there.
+pub fn starting_runs(
+    out: &OutputDir,
+    modes: &[WearMode],
+    resume: bool,
+    case_sha256: &str,
+    model: &crate::study::Model,
+) -> Result<(Vec<WearRun>, Vec<String>), Problem> {
+    use super::checkpoint::{checkpoint_name, load_checkpoint};
+    if !resume {
+        return Ok((modes.iter().map(|m| WearRun::new(*m)).collect(), Vec::new()));
+    }
+    let mut runs = Vec::new();
+    let mut notes = Vec::new();
+    let mut found = false;
+    for m in modes {
+        let max = crate::study::budget::max_checkpoint_bytes(&model.case, *m);
+        match load_checkpoint(out, *m, case_sha256, max).map_err(|e| e.problem())? {
+            Some(l) if !l.run.records.is_empty() => {
+                let path = out.root().join(&l.rel);
+                crate::study::wear_check::verify_resumable(&l.run, model).map_err(|e| {
+                    Problem::of(
+                        Arg::Resume,
+                        format!("{}: {e}; it cannot be resumed", path.display()),
+                    )
+                    .remedy(Remedy::start_afresh().path(&path))
+                })?;
+                found = true;
+                runs.push(l.run);
+            }
+            _ => {
+                notes.push(format!(
+                    "no {} checkpoint: that run starts afresh",
+                    m.label()
+                ));
+                runs.push(WearRun::new(*m));
+            }
+        }
+    }
+    if !found {
+        let names: Vec<String> = modes.iter().map(|m| checkpoint_name(*m)).collect();
+        return Err(Problem::of(
+            Arg::Resume,
+            format!(
+                "no checkpoint to resume from in {} (looked for {} and their .partial files)",
+                out.root().display(),
+                names.join(", ")
+            ),
+        )
+        .remedy(
+            Remedy::new(
+                Words::new()
+                    .text("run without ")
+                    .arg(Arg::Resume)
+                    .text(" to start afresh"),
+            )
+            .path(out.root()),
+        ));
+    }
+    Ok((runs, notes))
 }

@@ -1,13 +1,20 @@
 //! One writer per output set: an advisory lock on a file in the output folder.
 //!
-//! The lock is the operating system's (`flock` through `File::try_lock`), so it is
-//! released when the holder exits, even when it is killed: no stale locks to clean up by
-//! hand. The file holds who holds it (process, host, command), so a second writer can be
-//! told whom it waits for. It is opened without following a symbolic link.
+//! The lock is the operating system's (`flock`), so it is released when the holder exits,
+//! even when it is killed: no stale locks to clean up by hand. The file holds who holds it
+//! (process, host, command), so a second writer can be told whom it waits for.
+//!
+//! The lock file is opened relative to the folder, without following a link, without
+//! truncating and without blocking on a FIFO; it is used only when it is a regular file
+//! with one link holding nothing or a holder line gearwear wrote. Anything else at its
+//! name (a link, a hard link to a file elsewhere, a user's file) is refused and left as
+//! it is.
 
+use super::dir::{check_plain, entry_of_file, Dir};
 use super::error::OutputError;
-use crate::remedy::{Problem, Remedy};
-use std::fs::{File, OpenOptions};
+use crate::remedy::{Arg, Problem, Remedy, Words};
+use rustix::fs::{self as rfs, Mode, OFlags};
+use std::fs::File;
 use std::io::{Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
@@ -24,6 +31,13 @@ pub enum LockError {
     /// Another process holds it.
     #[error("{}", self.problem())]
     Held { path: PathBuf, holder: String },
+    /// The folder holds another command's results, and replacing them was not allowed.
+    #[error("{}", self.problem())]
+    OtherCommand {
+        path: PathBuf,
+        held: String,
+        files: usize,
+    },
     #[error(transparent)]
     Io(#[from] OutputError),
 }
@@ -39,42 +53,77 @@ impl LockError {
             .remedy(Remedy::output(
                 "wait for it to finish, or choose another folder",
             )),
+            LockError::OtherCommand { path, held, files } => Problem::new(format!(
+                "{} holds the results of `gearwear {held}` ({files} files); this command would replace them",
+                path.display()
+            ))
+            .remedy(Remedy::new(
+                Words::new()
+                    .text("choose another folder (")
+                    .arg(Arg::Out)
+                    .text("), or allow replacing them (")
+                    .arg(Arg::Replace)
+                    .text(")"),
+            )),
             LockError::Io(e) => e.problem(),
         }
     }
 }
 
-fn open_no_follow(path: &Path) -> std::io::Result<File> {
-    let mut o = OpenOptions::new();
-    o.read(true).write(true).create(true).truncate(false);
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::OpenOptionsExt;
-        o.custom_flags(libc::O_NOFOLLOW);
-    }
-    o.open(path)
+/// Longest holder line (a lock file larger than this is not gearwear's).
+const MAX_HOLDER_BYTES: u64 = 1024;
+
+/// Whether `text` is what gearwear writes into a lock file (or nothing).
+fn is_holder_line(text: &str) -> bool {
+    text.is_empty() || (text.starts_with("process ") && text.contains(", `gearwear "))
 }
 
 fn host_name() -> String {
     std::fs::read_to_string("/proc/sys/kernel/hostname")
         .or_else(|_| std::fs::read_to_string("/etc/hostname"))
-        .map(|s| s.trim().to_owned())
+        .map(|s| s.trim().chars().take(100).collect())
         .unwrap_or_else(|_| "unknown host".into())
 }
 
 impl OutputLock {
-    /// Take the lock at `path` (created if missing) for `command`, without waiting.
-    pub fn acquire(path: &Path, command: &str) -> Result<Self, LockError> {
-        let mut file =
-            open_no_follow(path).map_err(|e| OutputError::io("open the lock file", path, &e))?;
-        match file.try_lock() {
+    /// Take the lock `name` in `dir` (created if missing) for `command`, without waiting.
+    pub fn acquire(dir: &Dir, name: &str, command: &str) -> Result<Self, LockError> {
+        let path = dir.join(name);
+        // Not a follow, not a truncate, not a block (FIFO): checked below before use.
+        let fd = rfs::openat(
+            dir,
+            name,
+            OFlags::RDWR
+                | OFlags::CREATE
+                | OFlags::NOFOLLOW
+                | OFlags::NONBLOCK
+                | OFlags::NOCTTY
+                | OFlags::CLOEXEC,
+            Mode::from_raw_mode(0o666),
+        )
+        .map_err(|e| match e {
+            rustix::io::Errno::LOOP => super::dir::not_ours(&path, "it is a symbolic link"),
+            e => OutputError::io("open the lock file", &path, &e.into()),
+        })?;
+        let mut file = File::from(fd);
+        let e = entry_of_file(&file).map_err(|e| OutputError::io("inspect", &path, &e))?;
+        check_plain(&path, &e)?;
+        let mut text = String::new();
+        let ours = e.bytes <= MAX_HOLDER_BYTES
+            && (&file)
+                .take(MAX_HOLDER_BYTES)
+                .read_to_string(&mut text)
+                .is_ok()
+            && is_holder_line(text.trim());
+        if !ours {
+            return Err(super::dir::not_ours(&path, "it is not a gearwear lock file").into());
+        }
+        match rfs::flock(&file, rfs::FlockOperation::NonBlockingLockExclusive) {
             Ok(()) => {}
-            Err(std::fs::TryLockError::WouldBlock) => {
-                let mut holder = String::new();
-                let _ = file.read_to_string(&mut holder);
-                let holder = holder.trim();
+            Err(rustix::io::Errno::WOULDBLOCK) => {
+                let holder = text.trim();
                 return Err(LockError::Held {
-                    path: path.to_path_buf(),
+                    path,
                     holder: if holder.is_empty() {
                         "holder unknown".into()
                     } else {
@@ -82,23 +131,19 @@ impl OutputLock {
                     },
                 });
             }
-            Err(std::fs::TryLockError::Error(e)) => {
-                return Err(OutputError::io("lock", path, &e).into());
-            }
+            Err(e) => return Err(OutputError::io("lock", &path, &e.into()).into()),
         }
         let who = format!(
             "process {} on {}, `gearwear {command}`",
             std::process::id(),
             host_name()
         );
+        // Ours (checked above, under the lock now): rewrite the holder line.
         file.set_len(0)
             .and_then(|_| file.seek(SeekFrom::Start(0)))
             .and_then(|_| file.write_all(who.as_bytes()))
-            .map_err(|e| OutputError::io("write", path, &e))?;
-        Ok(Self {
-            file,
-            path: path.to_path_buf(),
-        })
+            .map_err(|e| OutputError::io("write", &path, &e))?;
+        Ok(Self { file, path })
     }
 
     pub fn path(&self) -> &Path {
@@ -117,29 +162,41 @@ impl Drop for OutputLock {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::os::unix::fs::MetadataExt;
+
+    fn root() -> (tempfile::TempDir, Dir) {
+        let d = tempfile::tempdir().unwrap();
+        let r = Dir::open_root(d.path()).unwrap();
+        (d, r)
+    }
 
     #[test]
     fn a_second_writer_is_refused_and_told_who_holds_it() {
-        let d = tempfile::tempdir().unwrap();
-        let p = d.path().join(".lock");
-        let first = OutputLock::acquire(&p, "wear").unwrap();
-        let e = OutputLock::acquire(&p, "run").unwrap_err();
+        let (_d, r) = root();
+        let first = OutputLock::acquire(&r, ".lock", "wear").unwrap();
+        let e = OutputLock::acquire(&r, ".lock", "run").unwrap_err();
         let msg = e.to_string();
         assert!(msg.contains("gearwear wear"), "{msg}");
         assert!(msg.contains(&std::process::id().to_string()), "{msg}");
         drop(first);
-        OutputLock::acquire(&p, "run").expect("free again once released");
+        OutputLock::acquire(&r, ".lock", "run").expect("free again once released");
     }
 
-    #[cfg(unix)]
     #[test]
-    fn a_planted_link_is_not_followed() {
-        let d = tempfile::tempdir().unwrap();
+    fn links_hard_links_and_foreign_files_are_refused_and_untouched() {
+        let (d, r) = root();
         let outside = d.path().join("outside");
         std::fs::write(&outside, b"keep").unwrap();
-        let p = d.path().join(".lock");
-        std::os::unix::fs::symlink(&outside, &p).unwrap();
-        assert!(OutputLock::acquire(&p, "x").is_err());
+        let ino = std::fs::metadata(&outside).unwrap().ino();
+        std::os::unix::fs::symlink(&outside, d.path().join(".soft")).unwrap();
+        std::fs::hard_link(&outside, d.path().join(".hard")).unwrap();
+        std::fs::write(d.path().join(".mine"), b"my notes").unwrap();
+        for name in [".soft", ".hard", ".mine"] {
+            let e = OutputLock::acquire(&r, name, "x").unwrap_err().to_string();
+            assert!(e.contains("gearwear changes only files"), "{name}: {e}");
+        }
         assert_eq!(std::fs::read(&outside).unwrap(), b"keep");
+        assert_eq!(std::fs::metadata(&outside).unwrap().ino(), ino);
+        assert_eq!(std::fs::read(d.path().join(".mine")).unwrap(), b"my notes");
     }
 }

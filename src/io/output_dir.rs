@@ -1,35 +1,49 @@
-//! The output folder of a command: results are staged, then published as one set with a
-//! manifest, so a folder never mixes the files of two runs.
+//! The output folder of a command: results are staged, then published as one set, so a
+//! folder never mixes the files of two runs, and gearwear never deletes, truncates or
+//! follows anything it did not create itself in the folder.
 //!
 //! - **One writer.** Opening takes the set's lock (`lock.rs`); a second writer of the same
 //!   set is refused with the holder named.
-//! - **Staging.** Outputs are written into a private staging folder inside `--out`, so a
-//!   run that fails (a solver error, a full disk) leaves the previous complete set as it
-//!   was.
-//! - **Publishing.** The staged files are renamed into place, files that the previous
-//!   run of this set listed but this one does not produce are removed, and the manifest
-//!   (`manifest.json`, or `STEM.manifest.json` for a named set such as a sweep shard) is
-//!   written last, listing every file with its SHA-256. While publishing, a file
-//!   `INCOMPLETE` marks the folder; it is removed when the manifest is written, so a
-//!   folder interrupted in the middle says so.
-//! - **State files** (checkpoints, finished sweep cases) are written at once, atomically,
-//!   outside the staging, because an interrupted run resumes from them; the manifest lists
-//!   them by name so a later run that does not produce them removes them.
-//! - **Orphans.** Staging folders and temporary files left by a killed run are removed
-//!   when the set is next opened (under the lock, so they cannot be another writer's).
-//! - Nothing is written outside `--out`: every write is an exclusive create or a rename
-//!   inside it, and sub-folders that are symbolic links are refused (`atomic.rs`).
+//! - **Its own record.** The set's state file (`set_state.rs`) lists what gearwear wrote
+//!   here, with each file's identity. Only a file still exactly as recorded is replaced or
+//!   removed; a name holding anything else (a user's file, a link, a hard link, a file
+//!   edited since) is left alone and the run says so. A folder holding another command's
+//!   set is refused unless replacing it is allowed.
+//! - **Staging.** Outputs are written into a private staging folder inside the output
+//!   folder, so a run that fails (a solver error, a full disk) leaves the previous
+//!   complete set as it was.
+//! - **Publishing.** Every target name is checked first; then the staged files are renamed
+//!   into place, the files of the previous set that this one does not produce are removed
+//!   (if still as recorded), and `manifest.json` (or `STEM.manifest.json`) and the state
+//!   file are written. While publishing, a file `INCOMPLETE` marks the folder, so a folder
+//!   interrupted in the middle says so. If a target name holds something gearwear may not
+//!   replace, nothing is published and the staged results are kept in a visible folder.
+//! - **State files** (checkpoints, finished sweep cases) are written at once (a new file
+//!   renamed into place), because an interrupted run resumes from them.
+//! - **Orphans.** The staging folder of a killed run is recorded in the state file and
+//!   removed when the set is next opened (only if it is still the folder recorded).
+//! - Every operation is relative to an open folder handle (`dir.rs`): no link is followed
+//!   below the folder the user named, no file is truncated, no FIFO is opened blocking.
 
-use super::atomic::{ensure_real_dir, write_atomic, TEMP_PREFIX};
+use super::dir::{remove_tree, Dir, Entry};
 use super::error::OutputError;
 use super::lock::{LockError, OutputLock};
+use super::set_state::{
+    check_replaceable, is_recorded_output, is_recorded_place, read_all, read_state, Ours,
+    OutputRecord, PlaceRecord, Recognise, SetState,
+};
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs::File;
 use std::path::{Path, PathBuf};
 
 const STAGING_PREFIX: &str = ".gearwear-staging-";
 /// Name of the marker of a folder whose publishing was interrupted.
 pub const INCOMPLETE_MARKER: &str = "INCOMPLETE";
+/// First words of the marker (how gearwear recognises its own).
+const MARKER_TEXT: &str = "gearwear was interrupted while publishing";
+/// Prefix of the folder that keeps a run's results when they could not be published.
+pub const UNPUBLISHED_PREFIX: &str = "gearwear-unpublished-";
 
 /// One published file.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
@@ -40,7 +54,7 @@ pub struct ManifestEntry {
     pub bytes: u64,
 }
 
-/// What a published set holds.
+/// What a published set holds (for people and scripts; gearwear acts on its state file).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Manifest {
     pub program: String,
@@ -53,101 +67,201 @@ pub struct Manifest {
     pub state_files: Vec<String>,
 }
 
+/// Whether a folder holding another command's set may be replaced.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum OtherSet {
+    /// Refuse it (the default).
+    #[default]
+    Refuse,
+    /// Replace it (the user asked to).
+    Replace,
+}
+
+struct Staged {
+    entry: Entry,
+    sha256: String,
+    bytes: u64,
+}
+
 /// An open output set (see the module docs).
-#[derive(Debug)]
 pub struct OutputDir {
-    root: PathBuf,
+    root: Dir,
     manifest_name: String,
+    state_name: String,
     command: String,
-    staging: tempfile::TempDir,
-    staged: BTreeSet<String>,
+    staging: Dir,
+    staging_name: String,
+    staged: BTreeMap<String, Staged>,
     state: BTreeSet<String>,
+    at_publish: Vec<(String, String, Recognise)>,
+    previous: SetState,
+    published: bool,
     _lock: OutputLock,
+}
+
+impl std::fmt::Debug for OutputDir {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "OutputDir({})", self.root.path().display())
+    }
 }
 
 pub use crate::checksum::sha256_hex;
 
-/// A relative output path must stay inside the folder: no absolute path, no `..`.
+/// A relative output path must stay inside the folder: plain names separated by `/`.
 fn check_relative(rel: &str) -> Result<(), OutputError> {
-    let p = Path::new(rel);
     let ok = !rel.is_empty()
-        && p.components()
-            .all(|c| matches!(c, std::path::Component::Normal(_)));
+        && rel
+            .split('/')
+            .all(|c| !c.is_empty() && c != "." && c != ".." && !c.contains('\\'));
     if ok {
         Ok(())
     } else {
         Err(OutputError::new(
             "write",
-            p,
+            Path::new(rel),
             "not a plain path inside the output folder",
             None,
         ))
     }
 }
 
-/// Temporary files older than this are orphans even in a folder shared by several sets
-/// (a live write finishes within seconds).
-const ORPHAN_AGE: std::time::Duration = std::time::Duration::from_secs(600);
+fn is_marker(b: &[u8]) -> bool {
+    b.starts_with(MARKER_TEXT.as_bytes())
+}
 
-/// Remove what a killed run of this set left in `dir`: its staging folders (their names
-/// carry the set, `staging_prefix`), and temporary files, all of them when the folder has
-/// one set (`shared == false`, and we hold its lock) or only old ones when sets share it.
-fn remove_orphans(dir: &Path, staging_prefix: &str, shared: bool) {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    for e in entries.flatten() {
-        let name = e.file_name().to_string_lossy().into_owned();
-        let Ok(ft) = e.file_type() else { continue };
-        if name.starts_with(staging_prefix) && ft.is_dir() {
-            let _ = std::fs::remove_dir_all(e.path());
-        } else if name.starts_with(TEMP_PREFIX) && ft.is_file() {
-            let old = e
-                .metadata()
-                .and_then(|m| m.modified())
-                .ok()
-                .and_then(|t| t.elapsed().ok())
-                .is_some_and(|age| age > ORPHAN_AGE);
-            if !shared || old {
-                let _ = std::fs::remove_file(e.path());
-            }
-        } else if ft.is_dir() && name == "cases" {
-            remove_orphans(&e.path(), staging_prefix, shared);
-        }
-    }
+fn is_state_format(b: &[u8]) -> bool {
+    String::from_utf8_lossy(b).contains("\"gearwear-output-state\"")
 }
 
 impl OutputDir {
     /// Open `root` for the output set `set` (`None`: the folder's one set, manifest
     /// `manifest.json`; `Some(stem)`: `STEM.manifest.json`, so that several sets, such as
-    /// sweep shards, can share a folder) of `command`.
+    /// sweep shards, can share a folder) of `command`, refusing another command's set.
     pub fn open(root: &Path, set: Option<&str>, command: &str) -> Result<Self, LockError> {
-        ensure_real_dir(root, root)?;
-        let (lock_name, manifest_name) = match set {
-            None => (".gearwear.lock".to_owned(), "manifest.json".to_owned()),
-            Some(s) => (format!(".{s}.lock"), format!("{s}.manifest.json")),
+        Self::open_with(root, set, command, OtherSet::Refuse)
+    }
+
+    /// As [`OutputDir::open`], with the choice for another command's set.
+    pub fn open_with(
+        root_path: &Path,
+        set: Option<&str>,
+        command: &str,
+        other: OtherSet,
+    ) -> Result<Self, LockError> {
+        let root = Dir::open_root(root_path)?;
+        let (lock_name, manifest_name, state_name) = match set {
+            None => (
+                ".gearwear.lock".to_owned(),
+                "manifest.json".to_owned(),
+                ".gearwear-state.json".to_owned(),
+            ),
+            Some(s) => {
+                check_relative(s)?;
+                (
+                    format!(".{s}.lock"),
+                    format!("{s}.manifest.json"),
+                    format!(".{s}.gearwear-state.json"),
+                )
+            }
         };
-        let lock = OutputLock::acquire(&root.join(lock_name), command)?;
-        let staging_prefix = format!("{STAGING_PREFIX}{}-", set.unwrap_or("set"));
-        remove_orphans(root, &staging_prefix, set.is_some());
-        let staging = tempfile::Builder::new()
-            .prefix(&staging_prefix)
-            .tempdir_in(root)
-            .map_err(|e| OutputError::io("create a staging folder in", root, &e))?;
-        Ok(Self {
-            root: root.to_path_buf(),
+        let lock = OutputLock::acquire(&root, &lock_name, command)?;
+        let folder = root.entry_self()?.inode;
+        let previous =
+            read_state(&root, &state_name)?.unwrap_or_else(|| SetState::new(folder, command));
+        // A manifest gearwear has no record of writing: results of an earlier version,
+        // another tool, or a copy. Refused now rather than after the run.
+        if root.entry(&manifest_name)?.is_some() {
+            let recorded = previous
+                .output(&manifest_name)
+                .map(|r| is_recorded_output(&root, &manifest_name, r))
+                .transpose()?
+                .unwrap_or(false);
+            if !recorded {
+                return Err(super::dir::not_ours(
+                    &root.join(&manifest_name),
+                    "it lists results that gearwear has no record of writing in this folder (an earlier gearwear, another tool, a copy, or an edit)",
+                )
+                .into());
+            }
+        }
+        if previous.command != command && !previous.outputs.is_empty() && other == OtherSet::Refuse
+        {
+            return Err(LockError::OtherCommand {
+                path: root_path.to_path_buf(),
+                held: previous.command.clone(),
+                files: previous.outputs.len(),
+            });
+        }
+        // Staging folders of killed runs of this set, if still the ones recorded.
+        for s in &previous.staging {
+            if matches!(root.entry(&s.path)?, Some(e) if e.kind == super::dir::Kind::Folder && e.inode == s.inode)
+            {
+                let _ = remove_tree(&root, &s.path);
+            }
+        }
+        let prefix = format!("{STAGING_PREFIX}{}-", set.unwrap_or("set"));
+        let (staging, staging_name) = root.create_private_folder(&prefix)?;
+        let out = Self {
             manifest_name,
+            state_name,
             command: command.to_owned(),
-            staging,
-            staged: BTreeSet::new(),
+            staging_name,
+            staged: BTreeMap::new(),
             state: BTreeSet::new(),
+            at_publish: Vec::new(),
+            previous,
+            published: false,
             _lock: lock,
-        })
+            staging,
+            root,
+        };
+        let staging_rec = PlaceRecord {
+            path: out.staging_name.clone(),
+            inode: out.staging.entry_self()?.inode,
+        };
+        let mut st = out.previous.clone();
+        st.staging = vec![staging_rec];
+        out.write_state_file(&st)?;
+        Ok(out)
     }
 
     /// The output folder.
     pub fn root(&self) -> &Path {
+        self.root.path()
+    }
+
+    /// The open output folder.
+    pub fn dir(&self) -> &Dir {
         &self.root
+    }
+
+    /// What gearwear recorded in the folder before this run (its outputs and state files).
+    pub fn previous_state(&self) -> &SetState {
+        &self.previous
+    }
+
+    /// The command whose set the folder held before this run.
+    pub fn previous_command(&self) -> &str {
+        &self.previous.command
+    }
+
+    fn write_state_file(&self, st: &SetState) -> Result<(), OutputError> {
+        check_replaceable(
+            &self.root,
+            &self.state_name,
+            Ours::Format(None, is_state_format),
+        )?;
+        let text = serde_json::to_vec_pretty(st).map_err(|e| {
+            OutputError::new(
+                "write",
+                &self.root.join(&self.state_name),
+                e.to_string(),
+                None,
+            )
+        })?;
+        self.root
+            .write_new(&self.staging, &self.state_name, &text)?;
+        Ok(())
     }
 
     /// The command whose set this is.
@@ -158,13 +272,16 @@ impl OutputDir {
     /// Stage an output file `rel` (relative path, `/`-separated) with `bytes`.
     pub fn stage(&mut self, rel: &str, bytes: &[u8]) -> Result<(), OutputError> {
         check_relative(rel)?;
-        let dst = self.staging.path().join(rel);
-        if let Some(parent) = dst.parent() {
-            std::fs::create_dir_all(parent)
-                .map_err(|e| OutputError::io("create the folder", parent, &e))?;
-        }
-        std::fs::write(&dst, bytes).map_err(|e| OutputError::io("write", &dst, &e))?;
-        self.staged.insert(rel.to_owned());
+        let (dir, name) = self.staging.descend(rel, true)?;
+        let entry = dir.write_new(&dir, &name, bytes)?;
+        self.staged.insert(
+            rel.to_owned(),
+            Staged {
+                entry,
+                sha256: sha256_hex(bytes),
+                bytes: bytes.len() as u64,
+            },
+        );
         Ok(())
     }
 
@@ -175,29 +292,106 @@ impl OutputDir {
         self.stage(rel, text.as_bytes())
     }
 
-    /// Write a state file `rel` now, atomically, and list it in the manifest.
-    pub fn write_state(&mut self, rel: &str, bytes: &[u8]) -> Result<(), OutputError> {
+    /// A handle for writing state files into the sub-folder `folder` (created if
+    /// missing), from several threads at once (finished sweep cases).
+    pub fn state_folder(&self, folder: &str) -> Result<StateFolder, OutputError> {
+        check_relative(folder)?;
+        let (parent, name) = self.root.descend(folder, true)?;
+        let dir = parent.sub(&name, true)?;
+        Ok(StateFolder {
+            dir,
+            scratch: self.staging.try_clone()?,
+            folder: folder.to_owned(),
+        })
+    }
+
+    /// Write a state file `rel` now (a new file renamed into place) and keep it in the
+    /// set. What `rel` held must be gearwear's: recorded, or recognised by `recognise`.
+    pub fn write_state(
+        &mut self,
+        rel: &str,
+        bytes: &[u8],
+        recognise: Recognise,
+    ) -> Result<(), OutputError> {
         check_relative(rel)?;
-        let path = self.root.join(rel);
-        if let Some(parent) = path.parent() {
-            ensure_real_dir(&self.root, parent)?;
-        }
-        write_atomic(&path, bytes)?;
+        let (dir, name) = self.root.descend(rel, true)?;
+        check_replaceable(
+            &dir,
+            &name,
+            Ours::Format(self.previous.state_file(rel), recognise),
+        )?;
+        dir.write_new(&self.staging, &name, bytes)?;
         self.state.insert(rel.to_owned());
         Ok(())
     }
 
-    /// The path of state file `rel` inside the folder (its folders created, checked to be
-    /// real folders), listed in the manifest; the caller writes it (e.g. an append-only
-    /// checkpoint).
-    pub fn state_path(&mut self, rel: &str) -> Result<PathBuf, OutputError> {
+    /// Start an append-only state file `rel` with `bytes` (a new file renamed into place,
+    /// as [`OutputDir::write_state`]); returns it open for appending. It joins the set
+    /// under `rel`, or under `final_rel` (renamed when the set is published) when given.
+    pub fn create_log(
+        &mut self,
+        rel: &str,
+        final_rel: Option<&str>,
+        bytes: &[u8],
+        recognise: Recognise,
+    ) -> Result<File, OutputError> {
+        use std::io::Write;
         check_relative(rel)?;
-        let path = self.root.join(rel);
-        if let Some(parent) = path.parent() {
-            ensure_real_dir(&self.root, parent)?;
+        let (dir, name) = self.root.descend(rel, true)?;
+        check_replaceable(
+            &dir,
+            &name,
+            Ours::Format(self.previous.state_file(rel), recognise),
+        )?;
+        let (mut f, tmp) = self.staging.create_new(super::dir::TEMP_PREFIX)?;
+        f.write_all(bytes)
+            .and_then(|_| f.sync_all())
+            .map_err(|e| OutputError::io("write", &dir.join(&name), &e))?;
+        self.staging.rename_to(&tmp, &dir, &name)?;
+        match final_rel {
+            Some(to) => {
+                check_relative(to)?;
+                self.at_publish
+                    .push((rel.to_owned(), to.to_owned(), recognise));
+            }
+            None => {
+                self.state.insert(rel.to_owned());
+            }
         }
-        self.state.insert(rel.to_owned());
-        Ok(path)
+        Ok(f)
+    }
+
+    /// Read the file `rel` of the folder (a state file to resume from): None when there is
+    /// none; refused when it is not a regular single-link file, or is larger than `max`.
+    pub fn read_file(&self, rel: &str, max: u64) -> Result<Option<Vec<u8>>, OutputError> {
+        check_relative(rel)?;
+        let (dir, name) = match self.root.descend(rel, false) {
+            Ok(x) => x,
+            Err(e) => {
+                return match self.root.entry(rel.split('/').next().unwrap_or(rel))? {
+                    None => Ok(None),
+                    Some(_) => Err(e),
+                }
+            }
+        };
+        let Some((f, e)) = dir.open_existing(&name, false)? else {
+            return Ok(None);
+        };
+        let path = dir.join(&name);
+        if e.bytes > max {
+            return Err(OutputError::new(
+                "read",
+                &path,
+                format!(
+                    "it holds {} bytes, more than the {max} this run can have written",
+                    e.bytes
+                ),
+                None,
+            ));
+        }
+        read_all(f, max)
+            .map(Some)
+            .map_err(|x| OutputError::io("read", &path, &x))
     }
 
     /// Declare a state file that exists already (e.g. a finished sweep case kept from an
@@ -206,59 +400,119 @@ impl OutputDir {
         self.state.insert(rel.to_owned());
     }
 
-    /// The manifest of the set as last published in this folder, if any.
-    pub fn previous_manifest(&self) -> Option<Manifest> {
-        let text = std::fs::read_to_string(self.root.join(&self.manifest_name)).ok()?;
-        serde_json::from_str(&text).ok()
-    }
-
     /// Publish the staged files as the folder's new set; returns its manifest.
-    pub fn publish(self) -> Result<Manifest, OutputError> {
-        let previous = self.previous_manifest();
-        let marker = self.root.join(INCOMPLETE_MARKER);
-        write_atomic(
-            &marker,
-            format!(
-                "gearwear {} was interrupted while publishing its results into this folder: \
-                 the files here may belong to different runs. Run the command again.\n",
-                self.command
-            )
-            .as_bytes(),
-        )?;
-        let mut files = Vec::with_capacity(self.staged.len());
-        for rel in &self.staged {
-            let src = self.staging.path().join(rel);
-            let dst = self.root.join(rel);
-            let bytes = std::fs::read(&src).map_err(|e| OutputError::io("read", &src, &e))?;
-            std::fs::File::open(&src)
-                .and_then(|f| f.sync_all())
-                .map_err(|e| OutputError::io("write", &src, &e))?;
-            if let Some(parent) = dst.parent() {
-                ensure_real_dir(&self.root, parent)?;
+    pub fn publish(mut self) -> Result<Manifest, OutputError> {
+        // 1. Every target must be free, or gearwear's own as recorded.
+        let mut conflicts = Vec::new();
+        let mut targets = Vec::new();
+        for rel in self.staged.keys() {
+            let checked = self.root.descend(rel, true).and_then(|(dir, name)| {
+                check_replaceable(&dir, &name, Ours::Recorded(self.previous.output(rel)))?;
+                Ok((dir, name))
+            });
+            match checked {
+                Ok((dir, name)) => targets.push((rel.clone(), dir, name)),
+                Err(e) => conflicts.push(e.to_string()),
             }
-            std::fs::rename(&src, &dst).map_err(|e| OutputError::io("write", &dst, &e))?;
+        }
+        for (_, to, recognise) in &self.at_publish {
+            let ours = Ours::Format(self.previous.state_file(to), *recognise);
+            let checked = self
+                .root
+                .descend(to, true)
+                .and_then(|(dir, name)| check_replaceable(&dir, &name, ours));
+            if let Err(e) = checked {
+                conflicts.push(e.to_string());
+            }
+        }
+        for (name, ours) in [
+            (
+                self.manifest_name.as_str(),
+                Ours::Recorded(self.previous.output(&self.manifest_name)),
+            ),
+            (INCOMPLETE_MARKER, Ours::Format(None, is_marker)),
+        ] {
+            if let Err(e) = check_replaceable(&self.root, name, ours) {
+                conflicts.push(e.to_string());
+            }
+        }
+        if !conflicts.is_empty() {
+            conflicts.sort();
+            conflicts.dedup();
+            return Err(self.keep_unpublished(conflicts));
+        }
+        // 2. Mark, move into place, rename the logs.
+        let marker = format!(
+            "{MARKER_TEXT} its results into this folder (`gearwear {}`): the files here may belong to different runs. Run the command again.\n",
+            self.command
+        );
+        let marker_entry =
+            self.root
+                .write_new(&self.staging, INCOMPLETE_MARKER, marker.as_bytes())?;
+        let mut st = SetState::new(self.root.entry_self()?.inode, &self.command);
+        let mut files = Vec::with_capacity(targets.len() + 1);
+        for (rel, dir, name) in &targets {
+            let (sdir, sname) = self.staging.descend(rel, false)?;
+            sdir.rename_to(&sname, dir, name)?;
+            let s = &self.staged[rel];
+            st.outputs.push(OutputRecord {
+                path: rel.clone(),
+                inode: s.entry.inode,
+                bytes: s.bytes,
+                sha256: s.sha256.clone(),
+            });
             files.push(ManifestEntry {
                 path: rel.clone(),
-                sha256: sha256_hex(&bytes),
-                bytes: bytes.len() as u64,
+                sha256: s.sha256.clone(),
+                bytes: s.bytes,
             });
         }
-        if let Some(prev) = previous {
-            let now: BTreeSet<&str> = self
-                .staged
-                .iter()
-                .chain(self.state.iter())
-                .map(String::as_str)
-                .collect();
-            let old = prev
-                .files
-                .iter()
-                .map(|f| f.path.as_str())
-                .chain(prev.state_files.iter().map(String::as_str));
-            for rel in old.filter(|r| !now.contains(r) && check_relative(r).is_ok()) {
-                let _ = std::fs::remove_file(self.root.join(rel));
+        for (from, to, _) in std::mem::take(&mut self.at_publish) {
+            let (fdir, fname) = self.root.descend(&from, false)?;
+            let (tdir, tname) = self.root.descend(&to, true)?;
+            if fdir.entry(&fname)?.is_some() {
+                fdir.rename_to(&fname, &tdir, &tname)?;
+            }
+            self.state.insert(to);
+        }
+        for rel in &self.state {
+            if let Ok((dir, name)) = self.root.descend(rel, false) {
+                if let Some(e) = dir.entry(&name)? {
+                    st.state_files.push(PlaceRecord {
+                        path: rel.clone(),
+                        inode: e.inode,
+                    });
+                }
             }
         }
+        // 3. The previous set's files this one does not produce, if still as recorded.
+        let now: BTreeSet<&str> = self
+            .staged
+            .keys()
+            .chain(self.state.iter())
+            .map(String::as_str)
+            .collect();
+        for rec in &self.previous.outputs {
+            if now.contains(rec.path.as_str()) || rec.path == self.manifest_name {
+                continue;
+            }
+            if let Ok((dir, name)) = self.root.descend(&rec.path, false) {
+                if is_recorded_output(&dir, &name, rec)? {
+                    dir.remove_file(&name)?;
+                }
+            }
+        }
+        for rec in &self.previous.state_files {
+            if now.contains(rec.path.as_str()) {
+                continue;
+            }
+            if let Ok((dir, name)) = self.root.descend(&rec.path, false) {
+                if is_recorded_place(&dir, &name, rec)? {
+                    dir.remove_file(&name)?;
+                }
+            }
+        }
+        // 4. The manifest, the state, then the marker goes.
         let manifest = Manifest {
             program: "gearwear".into(),
             version: env!("CARGO_PKG_VERSION").into(),
@@ -274,10 +528,101 @@ impl OutputDir {
                 None,
             )
         })?;
-        write_atomic(&self.root.join(&self.manifest_name), text.as_bytes())?;
-        std::fs::remove_file(&marker).map_err(|e| OutputError::io("remove", &marker, &e))?;
+        let me = self
+            .root
+            .write_new(&self.staging, &self.manifest_name, text.as_bytes())?;
+        st.outputs.push(OutputRecord {
+            path: self.manifest_name.clone(),
+            inode: me.inode,
+            bytes: text.len() as u64,
+            sha256: sha256_hex(text.as_bytes()),
+        });
+        self.write_state_file(&st)?;
+        if matches!(self.root.entry(INCOMPLETE_MARKER)?, Some(e) if e.inode == marker_entry.inode) {
+            self.root.remove_file(INCOMPLETE_MARKER)?;
+        }
+        self.root.sync()?;
+        self.published = true;
+        let _ = remove_tree(&self.root, &self.staging_name);
         Ok(manifest)
     }
+
+    /// Keep the staged results in a visible folder when they cannot be published; the
+    /// error says why and where they are.
+    fn keep_unpublished(&mut self, conflicts: Vec<String>) -> OutputError {
+        let kept = format!(
+            "{UNPUBLISHED_PREFIX}{}-{}",
+            self.command,
+            std::process::id()
+        );
+        let where_ = match self.root.entry(&kept) {
+            Ok(None) => match self.root.rename_to(&self.staging_name, &self.root, &kept) {
+                Ok(()) => {
+                    self.published = true;
+                    let mut st = self.previous.clone();
+                    st.staging.clear();
+                    let _ = self.write_state_file(&st);
+                    format!(
+                        "this run's results are kept in {}",
+                        self.root.join(&kept).display()
+                    )
+                }
+                Err(_) => "this run's results could not be kept".into(),
+            },
+            _ => "this run's results could not be kept".into(),
+        };
+        OutputError::new(
+            "publish into",
+            self.root.path(),
+            format!(
+                "this run's files cannot all be put in place ({} problem(s)): {}; nothing was replaced, and {where_}",
+                conflicts.len(),
+                conflicts.join("; ")
+            ),
+            None,
+        )
+    }
+}
+
+impl Drop for OutputDir {
+    fn drop(&mut self) {
+        if !self.published {
+            let _ = remove_tree(&self.root, &self.staging_name);
+        }
+    }
+}
+
+/// A sub-folder of an output set for state files written from several threads (see
+/// [`OutputDir::state_folder`]).
+pub struct StateFolder {
+    dir: Dir,
+    scratch: Dir,
+    folder: String,
+}
+
+impl StateFolder {
+    /// Write the state file `name` of this folder now; what it held must be free, or a
+    /// file `recognise` accepts as gearwear's.
+    pub fn write(&self, name: &str, bytes: &[u8], recognise: Recognise) -> Result<(), OutputError> {
+        check_replaceable(&self.dir, name, Ours::Format(None, recognise))?;
+        self.dir.write_new(&self.scratch, name, bytes)?;
+        Ok(())
+    }
+
+    /// The folder's path relative to the output folder.
+    pub fn folder(&self) -> &str {
+        &self.folder
+    }
+
+    /// The open folder.
+    pub fn dir(&self) -> &Dir {
+        &self.dir
+    }
+}
+
+/// Path of `rel` in `root` (for messages and reading).
+pub fn path_in(root: &Path, rel: &str) -> PathBuf {
+    root.join(rel)
 }
 
 #[cfg(test)]
@@ -290,29 +635,64 @@ mod tests {
             .unwrap()
             .flatten()
             .map(|e| e.file_name().to_string_lossy().into_owned())
-            .filter(|n| !n.starts_with(".gearwear"))
+            .filter(|n| !n.starts_with(".gearwear") && !n.starts_with('.'))
             .collect()
     }
 
+    fn any(_: &[u8]) -> bool {
+        true
+    }
+    const ANY: Recognise = any;
+
     #[test]
-    fn a_rerun_removes_what_it_no_longer_produces() {
+    fn a_rerun_removes_what_it_no_longer_produces_and_nothing_else() {
         let d = tempfile::tempdir().unwrap();
         let mut o = OutputDir::open(d.path(), None, "wear").unwrap();
         o.stage("a.csv", b"1").unwrap();
-        o.stage("b.csv", b"2").unwrap();
-        o.write_state("checkpoint_b.json", b"{}").unwrap();
+        o.stage("csv/b.csv", b"2").unwrap();
+        o.write_state("checkpoint_b.json", b"{}", ANY).unwrap();
         o.publish().unwrap();
         fs::write(d.path().join("user_notes.txt"), b"mine").unwrap();
         let mut o = OutputDir::open(d.path(), None, "wear").unwrap();
         o.stage("a.csv", b"3").unwrap();
         let m = o.publish().unwrap();
-        let expect: BTreeSet<String> = ["a.csv", "manifest.json", "user_notes.txt"]
+        let expect: BTreeSet<String> = ["a.csv", "csv", "manifest.json", "user_notes.txt"]
             .iter()
             .map(|s| s.to_string())
             .collect();
         assert_eq!(names(d.path()), expect);
+        assert!(!d.path().join("csv/b.csv").exists());
         assert_eq!(fs::read(d.path().join("a.csv")).unwrap(), b"3");
+        assert_eq!(fs::read(d.path().join("user_notes.txt")).unwrap(), b"mine");
         assert_eq!(m.files[0].sha256, sha256_hex(b"3"));
+    }
+
+    #[test]
+    fn an_edited_output_is_left_alone_and_blocks_its_replacement() {
+        let d = tempfile::tempdir().unwrap();
+        let mut o = OutputDir::open(d.path(), None, "run").unwrap();
+        o.stage("a.csv", b"1").unwrap();
+        o.stage("b.csv", b"2").unwrap();
+        o.publish().unwrap();
+        fs::write(d.path().join("a.csv"), b"edited by hand").unwrap();
+        fs::write(d.path().join("b.csv"), b"edited too").unwrap();
+        // A rerun that no longer writes b.csv leaves it; one that writes a.csv is refused.
+        let mut o = OutputDir::open(d.path(), None, "run").unwrap();
+        o.stage("a.csv", b"3").unwrap();
+        let e = o.publish().unwrap_err().to_string();
+        assert!(e.contains("a.csv") && e.contains("kept in"), "{e}");
+        assert_eq!(fs::read(d.path().join("a.csv")).unwrap(), b"edited by hand");
+        assert_eq!(fs::read(d.path().join("b.csv")).unwrap(), b"edited too");
+        let kept = fs::read_dir(d.path())
+            .unwrap()
+            .flatten()
+            .find(|e| {
+                e.file_name()
+                    .to_string_lossy()
+                    .starts_with(UNPUBLISHED_PREFIX)
+            })
+            .expect("the results are kept");
+        assert_eq!(fs::read(kept.path().join("a.csv")).unwrap(), b"3");
     }
 
     #[test]
@@ -337,13 +717,20 @@ mod tests {
     }
 
     #[test]
-    fn orphans_of_a_killed_run_are_removed() {
+    fn the_staging_folder_of_a_killed_run_is_removed_but_a_planted_one_is_not() {
         let d = tempfile::tempdir().unwrap();
-        fs::create_dir(d.path().join(format!("{STAGING_PREFIX}set-x"))).unwrap();
-        fs::write(d.path().join(format!("{TEMP_PREFIX}y")), b"half").unwrap();
-        let o = OutputDir::open(d.path(), None, "x").unwrap();
+        let mut o = OutputDir::open(d.path(), None, "x").unwrap();
+        o.stage("a.csv", b"half").unwrap();
+        let staging = o.staging_name.clone();
+        o.published = true; // as if killed: the staging folder stays
         drop(o);
-        assert!(names(d.path()).is_empty(), "{:?}", names(d.path()));
+        assert!(d.path().join(&staging).exists());
+        let planted = d.path().join(format!("{STAGING_PREFIX}set-planted"));
+        fs::create_dir(&planted).unwrap();
+        fs::write(planted.join("mine.txt"), b"mine").unwrap();
+        drop(OutputDir::open(d.path(), None, "x").unwrap());
+        assert!(!d.path().join(&staging).exists());
+        assert_eq!(fs::read(planted.join("mine.txt")).unwrap(), b"mine");
     }
 
     #[test]
@@ -352,7 +739,7 @@ mod tests {
         let mut o = OutputDir::open(d.path(), None, "x").unwrap();
         assert!(o.stage("../escape.txt", b"x").is_err());
         assert!(o.stage("/etc/passwd", b"x").is_err());
-        assert!(o.write_state("a/../../b", b"x").is_err());
+        assert!(o.write_state("a/../../b", b"x", ANY).is_err());
     }
 
     #[test]
@@ -367,5 +754,37 @@ mod tests {
         assert!(d.path().join("sweep_shard_1_of_2.manifest.json").exists());
         assert!(d.path().join("sweep_shard_2_of_2.csv").exists());
         assert!(OutputDir::open(d.path(), Some("sweep_shard_1_of_2"), "sweep").is_ok());
+    }
+
+    #[test]
+    fn another_commands_set_is_refused_unless_replacing_is_allowed() {
+        let d = tempfile::tempdir().unwrap();
+        let mut o = OutputDir::open(d.path(), None, "run").unwrap();
+        o.stage("report.html", b"r").unwrap();
+        o.publish().unwrap();
+        let e = OutputDir::open(d.path(), None, "dynamics")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("gearwear run") && e.contains("2 files"), "{e}");
+        let mut o = OutputDir::open_with(d.path(), None, "dynamics", OtherSet::Replace).unwrap();
+        o.stage("summary.json", b"s").unwrap();
+        o.publish().unwrap();
+        assert!(!d.path().join("report.html").exists());
+    }
+
+    #[test]
+    fn a_planted_manifest_is_refused_and_nothing_it_lists_is_touched() {
+        let d = tempfile::tempdir().unwrap();
+        fs::write(d.path().join("notes.txt"), b"mine").unwrap();
+        let m = r#"{"program":"gearwear","version":"0","command":"run","files":[{"path":"notes.txt","sha256":"x","bytes":4}],"state_files":["notes.txt"]}"#;
+        fs::write(d.path().join("manifest.json"), m).unwrap();
+        let e = OutputDir::open(d.path(), None, "run")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("manifest.json") && e.contains("no record"),
+            "{e}"
+        );
+        assert_eq!(fs::read(d.path().join("notes.txt")).unwrap(), b"mine");
     }
 }

@@ -83,7 +83,12 @@ pub fn transmission_error_from_deg_um(
     transmission_error_from_samples(&si, mesh_angle_rad, source_name)
 }
 
-/// Read a transmission-error CSV file (see the module docs).
+/// Most samples of a transmission error over one mesh period (a million points resolve
+/// any profile error a gear can have).
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// Read a transmission-error CSV file (see the module docs): a regular file of bounded
+/// size (`io::input`).
 pub fn read_transmission_error(
     path: &Path,
     mesh_angle_rad: f64,
@@ -93,7 +98,13 @@ pub fn read_transmission_error(
         source_name: name.clone(),
         reason,
     };
-    let mut r = csv::Reader::from_path(path).map_err(|e| bad(format!("cannot read: {e}")))?;
+    let bytes = super::input::read_input(
+        path,
+        "transmission-error file",
+        super::input::MAX_TRANSMISSION_ERROR_BYTES,
+    )
+    .map_err(|e| bad(e.reason))?;
+    let mut r = csv::Reader::from_reader(bytes.as_slice());
     let headers = r.headers().map_err(|e| bad(e.to_string()))?.clone();
     let col = |n: &str| headers.iter().position(|h| h.trim() == n);
     let (Some(ia), Some(ie)) = (col("pinion_angle_deg"), col("error_um")) else {
@@ -104,6 +115,11 @@ pub fn read_transmission_error(
     };
     let mut samples = Vec::new();
     for (line, rec) in r.records().enumerate() {
+        if line >= MAX_SAMPLES {
+            return Err(bad(format!(
+                "more than {MAX_SAMPLES} samples: one mesh period needs far fewer"
+            )));
+        }
         let rec = rec.map_err(|e| bad(e.to_string()))?;
         let parse = |i: usize| -> Result<f64, TransmissionErrorInput> {
             let s = rec.get(i).unwrap_or("").trim();

@@ -121,8 +121,28 @@ pub fn calibrate(
         grid_levels: None,
         acceptance: None,
     };
+    // Why no parameter could be weighed, in the terms of the data: how far the
+    // reference runs reach against the last observation.
+    let explain = |e: String| {
+        let reach = sur
+            .chains
+            .iter()
+            .map(|c| sur.valid_until(&[c.k[0], c.theta[1], c.theta[2]]))
+            .fold(0.0_f64, f64::max);
+        let last = obs.max_cycles();
+        if reach < last {
+            format!(
+                "{e}: the reference runs reach at most {reach:.4e} cycles (at the prior's smallest k; faster wear stops sooner: {}), but the last observation is at {last:.4e} cycles",
+                sur.failures()
+                    .first()
+                    .map_or("no failure recorded".into(), |f| f.2.clone())
+            )
+        } else {
+            e
+        }
+    };
     if free.len() <= 2 {
-        let g = GridPosterior::compute(prior, &loglik, set.grid_cells, done)?;
+        let g = GridPosterior::compute(prior, &loglik, set.grid_cells, done).map_err(explain)?;
         let draws = g.draw(set.samples, set.seed);
         out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
         for (a, &i) in free.iter().enumerate() {
@@ -156,7 +176,7 @@ pub fn calibrate(
         burn_in: set.steps / 2,
         seed: set.seed,
     };
-    let run = ensemble_sample(prior, &loglik, &s, done)?;
+    let run = ensemble_sample(prior, &loglik, &s, done).map_err(explain)?;
     out.method = Method::EnsembleMcmc;
     out.acceptance = Some(run.acceptance);
     let flat = run.flat();

@@ -100,10 +100,17 @@ impl GridPosterior {
                 .copied()
                 .fold(f64::NEG_INFINITY, f64::max);
             if !max.is_finite() {
-                return Err(format!(
-                    "no forward run succeeded on the grid ({n_failed} failed of {}): the prior only covers parameters the model cannot run",
-                    ll.len()
-                ));
+                return Err(if n_failed == ll.len() {
+                    format!(
+                        "no forward run reached the observations on the grid ({n_failed} of {} failed)",
+                        ll.len()
+                    )
+                } else {
+                    format!(
+                        "the observations have zero likelihood at every one of the {} grid points ({n_failed} runs failed, the others are too far from the data for their noise): check the observations' units, values and sigmas",
+                        ll.len()
+                    )
+                });
             }
             let w: Vec<f64> = ll
                 .iter()

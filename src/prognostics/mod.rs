@@ -12,12 +12,14 @@
 //! method and its measured accuracy.
 
 pub mod band;
+pub mod budget;
 pub mod calibrate;
 pub mod check;
 pub mod forward;
 pub mod grid;
 pub mod indicator;
 pub mod likelihood;
+pub mod limits;
 pub mod mcmc;
 pub mod observations;
 pub mod predict;

@@ -45,16 +45,44 @@ impl Observations {
     }
 }
 
+/// Most data rows: a reading every 1000 cycles for 1e8 cycles. The likelihood sums over
+/// every row at every step of the sampler, so rows multiply the calibration's cost.
+pub const MAX_ROWS: usize = 100_000;
+/// Largest cycle count of an observation: the range of `wear.total_cycles`.
+pub const MAX_CYCLES: f64 = 1e11;
+/// Largest magnitude of an observed value in its display unit (um, mm/s): a metre of
+/// wear or of transmission error, a kilometre per second; no gearbox comes near.
+pub const MAX_VALUE: f64 = 1e6;
+/// Range of a given noise standard deviation, display units: below 1e-9 the noise is
+/// under the model's own floating-point resolution and any model error makes the
+/// likelihood underflow to zero; above 1e6 it is not a measurement.
+pub const SIGMA_RANGE: (f64, f64) = (1e-9, 1e6);
+
 /// Fewest values of a quantity whose noise is inferred: with one value the marginal
 /// likelihood 1/|residual| has no scale to learn from (docs/PROGNOSTICS.md).
 pub const MIN_VALUES_UNKNOWN_SIGMA: usize = 2;
+
+/// A cell shown in a message: cut, control characters escaped.
+fn shown(cell: &str) -> String {
+    crate::config::load::clip(&cell.escape_debug().to_string(), 40)
+}
 
 /// A finite number, or why not.
 fn number(cell: &str) -> Result<f64, String> {
     match cell.trim().parse::<f64>() {
         Ok(x) if x.is_finite() => Ok(x),
-        Ok(x) => Err(format!("`{cell}` is not finite ({x})")),
-        Err(_) => Err(format!("`{cell}` is not a number")),
+        Ok(x) => Err(format!("`{}` is not finite ({x})", shown(cell))),
+        Err(_) => Err(format!("`{}` is not a number", shown(cell))),
+    }
+}
+
+/// A number in `[lo, hi]`, or why not (`why` says what the range is).
+fn in_range(cell: &str, lo: f64, hi: f64, why: &str) -> Result<f64, String> {
+    let x = number(cell)?;
+    if (lo..=hi).contains(&x) {
+        Ok(x)
+    } else {
+        Err(format!("{x:e} is outside [{lo:e}, {hi:e}] ({why})"))
     }
 }
 
@@ -136,10 +164,31 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
             }
         };
         rows += 1;
+        if rows > MAX_ROWS {
+            problems.push(format!(
+                "{source}: more than {MAX_ROWS} data rows (a reading every 1000 cycles for 1e8 cycles; each row is summed at every step of the sampler): thin the record"
+            ));
+            break;
+        }
+        // A quoted line break or another control character is never part of a number:
+        // refused, not silently cut.
+        if let Some(j) = rec.iter().position(|c| c.chars().any(char::is_control)) {
+            problems.push(format!(
+                "{at}: the cell in column {} holds a line break or another control character",
+                j + 1
+            ));
+            continue;
+        }
         let cell = |j: usize| rec.get(j).unwrap_or("").trim();
         let cycles = match number(cell(cycles_col)) {
             Ok(c) if c < 0.0 => {
                 problems.push(format!("{at}: `cycles` = {c} is negative"));
+                continue;
+            }
+            Ok(c) if c > MAX_CYCLES => {
+                problems.push(format!(
+                    "{at}: `cycles` = {c:e} is beyond {MAX_CYCLES:e}, the range of wear.total_cycles"
+                ));
                 continue;
             }
             Ok(c) => c,
@@ -159,7 +208,12 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
             if raw.is_empty() {
                 continue;
             }
-            let v = match number(raw) {
+            let v = match in_range(
+                raw,
+                -MAX_VALUE,
+                MAX_VALUE,
+                "no gearbox's value in this unit",
+            ) {
                 Ok(v) => v,
                 Err(e) => {
                     problems.push(format!("{at}: column `{}`: {e}", q.name()));
@@ -168,11 +222,20 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
             };
             if let Some(sj) = sigma_of[i] {
                 match number(cell(sj)) {
-                    Ok(s) if s > 0.0 => series[i].sigma.get_or_insert_with(Vec::new).push(s),
-                    Ok(s) => {
+                    Ok(s) if s <= 0.0 => {
                         problems.push(format!("{at}: `sigma_{}` = {s} must be > 0", q.name()));
                         continue;
                     }
+                    Ok(s) if !(SIGMA_RANGE.0..=SIGMA_RANGE.1).contains(&s) => {
+                        problems.push(format!(
+                            "{at}: `sigma_{}` = {s:e} is outside [{:e}, {:e}] (below, any model error makes the likelihood underflow; above, it is not a measurement)",
+                            q.name(),
+                            SIGMA_RANGE.0,
+                            SIGMA_RANGE.1
+                        ));
+                        continue;
+                    }
+                    Ok(s) => series[i].sigma.get_or_insert_with(Vec::new).push(s),
                     Err(e) => {
                         problems.push(format!(
                             "{at}: `sigma_{}`: {e} (a measured value needs its sigma)",
@@ -191,6 +254,13 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
     }
     for s in &series {
         let n = s.values.len();
+        if n == 0 && rows > 0 {
+            problems.push(format!(
+                "{source}: column `{}` has no value (every cell is empty)",
+                s.quantity.name()
+            ));
+            continue;
+        }
         if s.sigma.is_none() && n < MIN_VALUES_UNKNOWN_SIGMA && rows > 0 {
             problems.push(format!(
                 "{source}: column `{}` has {n} value(s); inferring its noise needs at least {MIN_VALUES_UNKNOWN_SIGMA}, or give a `sigma_{}` column",

@@ -223,6 +223,55 @@ impl LifeSummary {
     }
 }
 
+/// Check what a prediction shard claims (it is an input file): settings within their
+/// ranges (`limits`), a shard `index` of `count` with 1 <= index <= count <= samples, at
+/// most its share of the samples, each with an index below the ensemble size and one
+/// value per fan quantity and grid point.
+pub fn check_shard(
+    set: &PredictSettings,
+    (index, count): (usize, usize),
+    outcomes: &[SampleOutcome],
+) -> Result<(), String> {
+    let bad = super::limits::check_predict(
+        set.limit_um,
+        set.cycles,
+        Some(set.samples),
+        set.grid_points,
+        0,
+    );
+    if let Some(p) = bad.first() {
+        return Err(p.message.clone());
+    }
+    if !(1 <= index && index <= count && count <= set.samples) {
+        return Err(format!(
+            "shard {index} of {count} is not a shard of {} samples",
+            set.samples
+        ));
+    }
+    if outcomes.len() > set.samples.div_ceil(count) {
+        return Err(format!(
+            "holds {} samples, more than shard {index} of {count} of {} samples can",
+            outcomes.len(),
+            set.samples
+        ));
+    }
+    for o in outcomes {
+        if o.index >= set.samples
+            || o.values.len() != FAN_QUANTITIES.len()
+            || o.values.iter().any(|v| v.len() != set.grid_points)
+        {
+            return Err(format!(
+                "sample {} does not fit the prediction ({} samples, {} fan quantities of {} points)",
+                o.index,
+                set.samples,
+                FAN_QUANTITIES.len(),
+                set.grid_points
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Fan charts of every fan quantity.
 pub fn fans(outcomes: &[SampleOutcome], set: &PredictSettings) -> Vec<(Quantity, Band)> {
     let grid = cycles_grid(set.cycles, set.grid_points);

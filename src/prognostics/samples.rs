@@ -3,6 +3,15 @@
 
 use super::prior::{Parameter, Theta, PARAMETERS};
 
+/// Most rows of a samples file: `calibrate` writes at most 1e6
+/// (`limits::CALIBRATE_SAMPLES`).
+pub const MAX_ROWS: usize = 1_000_000;
+
+/// The valid range of each parameter, as the case's keys: k as `wear.coefficient_m2_per_n`
+/// and the prior's bounds (1e-22 to 1e-11 m^2/N), the roughness factor as the prior's
+/// (0.01 to 10), the torque as `operating.load_torque_nm` (1e-3 to 1e7 N m).
+pub const RANGES: [(f64, f64); 3] = [(1e-22, 1e-11), (0.01, 10.0), (1e-3, 1e7)];
+
 /// Read a samples CSV. Parameters without a column take `defaults`. Errors name the row
 /// and column.
 pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<Theta>, Vec<String>> {
@@ -16,6 +25,10 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
     let mut problems = Vec::new();
     let mut cols: Vec<(usize, usize)> = Vec::new();
     for (j, h) in header.iter().enumerate() {
+        if header[..j].contains(h) {
+            problems.push(format!("{source}: column `{h}` appears twice"));
+            continue;
+        }
         match Parameter::parse(h) {
             Some(p) => cols.push((PARAMETERS.iter().position(|x| *x == p).unwrap_or(0), j)),
             None if h == "sample" => {}
@@ -33,6 +46,15 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
     }
     let mut out = Vec::new();
     for (r, rec) in rdr.records().enumerate() {
+        if r >= MAX_ROWS {
+            problems.push(format!(
+                "{source}: more than {MAX_ROWS} rows (calibrate writes at most that many)"
+            ));
+            break;
+        }
+        if problems.len() >= 100 {
+            break; // enough to go on with
+        }
         let at = format!("{source}: row {} (line {})", r + 1, r + 2);
         let rec = match rec {
             Ok(x) => x,
@@ -44,11 +66,13 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
         let mut t = defaults;
         for (i, j) in &cols {
             let cell = rec.get(*j).unwrap_or("");
+            let (lo, hi) = RANGES[*i];
             match cell.parse::<f64>() {
-                Ok(x) if x.is_finite() && x > 0.0 => t[*i] = x,
+                Ok(x) if (lo..=hi).contains(&x) => t[*i] = x,
                 _ => problems.push(format!(
-                    "{at}: `{}` = `{cell}` is not a finite number > 0",
-                    PARAMETERS[*i].column()
+                    "{at}: `{}` = `{}` is not a number in [{lo:e}, {hi:e}]",
+                    PARAMETERS[*i].column(),
+                    crate::config::load::clip(&cell.escape_debug().to_string(), 40)
                 )),
             }
         }
@@ -85,5 +109,20 @@ mod tests {
         assert!(e.unwrap_err()[0].contains("row 2 (line 3)"));
         let e = read_samples("k\n1\n", "p.csv", [0.0; 3]).unwrap_err();
         assert!(e[0].contains("unknown column `k`"));
+        // Outside the case's ranges, subnormal, or a column twice.
+        for bad in ["1e-9", "5e-324", "0"] {
+            let e = read_samples(
+                &format!("wear_coefficient_m2_per_n\n{bad}\n"),
+                "p.csv",
+                [0.0; 3],
+            );
+            assert!(e.unwrap_err()[0].contains("1e-22"), "{bad}");
+        }
+        let e = read_samples(
+            "wear_coefficient_m2_per_n,wear_coefficient_m2_per_n\n1e-16,1e-16\n",
+            "p.csv",
+            [0.0; 3],
+        );
+        assert!(e.unwrap_err()[0].contains("twice"));
     }
 }

@@ -517,9 +517,9 @@ mod tests {
             assert!(a < b, "{r}");
         }
         // Only the pinion's theta_f (0.159 rad at the fillet junction) lies outside
-        // Sainsot's fit, [0.01, 0.12].
-        assert_eq!(m.warnings().len(), 1);
-        assert!(m.warnings()[0].contains("pinion") && m.warnings()[0].contains("theta_f"));
+        // Sainsot's fit, [0.01, 0.12], inside the band extrapolated without a warning
+        // (up to 0.25 rad, docs/MODEL.md): the built-in case warns of nothing.
+        assert!(m.warnings().is_empty(), "{:?}", m.warnings());
     }
 
     #[test]

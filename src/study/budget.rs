@@ -33,9 +33,11 @@
 //!   evaluation integrates P - 1 more periods and a run-in, each quasi-static one P - 1
 //!   more, a kept response records P periods with its contacts, and each wear record
 //!   holds every tooth's profile;
-//! - memory = 64 MB + kept responses x S_d P_e x 560 bytes (280 bytes a recorded sample,
-//!   doubled for vector growth and the output tables) + per mode U records of
-//!   (4 G + 4 S_d) numbers at 8 bytes.
+//! - memory = 64 MB + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (280 bytes a
+//!   recorded sample, with vector growth, the output tables and their CSV text) + per mode U records of
+//!   (4 G + 4 S_d) numbers at 8 bytes + for `wear` and `run` the outputs of every record's
+//!   profiles, [`OUTPUT_BYTES_PER_PROFILE_POINT`] per grid point (and
+//!   [`OUTPUT_SECONDS_PER_PROFILE_POINT`] of time).
 //!
 //! # Default budget
 //!
@@ -45,8 +47,10 @@
 //! explicit choice; it is resumable and shardable).
 
 use super::domain::nominal_contacts;
+use super::sweep::plan::{AxisValue, SweepPlan};
 use super::sweep::SweepRun;
 use crate::config::case::Case;
+use crate::config::load::case_with;
 use crate::geometry::GearPair;
 
 /// Integrator step on the reference machine, s.
@@ -63,10 +67,25 @@ pub const PERIODS_TO_SETTLE_PER_DECADE: f64 = 5.0;
 /// 200 at 300 Hz (the grid nodes). At 1e-7, 1e-8 and 1e-9 the measured counts (2733,
 /// 5761, 12412 at 0.5 Hz) stay below this bound's 3250, 7000 and 15080.
 pub const ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE: f64 = 700.0;
-/// Bytes of one recorded sample of a dynamic response, with growth and copies.
-pub const BYTES_PER_SAMPLE: f64 = 560.0;
+/// Bytes of one recorded sample of a dynamic response, with growth, copies and the output
+/// tables and their CSV text: measured 1500 for `gearwear dynamics` at 2e4 steps per
+/// mesh period (280 of them the response itself); 2000 leaves margin.
+pub const BYTES_PER_SAMPLE: f64 = 2000.0;
+/// Bytes of one recorded sample of the response alone (280 bytes, doubled for vector
+/// growth), without the output tables counted in [`BYTES_PER_SAMPLE`]: the periods a
+/// tooth-resolved response records beyond `numerics.evaluated_mesh_periods`
+/// (`study::teeth_budget`). Measured peaks of the paper's pair at
+/// `teeth.accuracy_grade = 5` (589 periods): `dynamics` 258 MB, `run` 417 MB.
+pub const RESPONSE_BYTES_PER_SAMPLE: f64 = 560.0;
 /// Dynamic wear per cycle over the quasi-static estimate (dynamic factor margin).
 pub const DYNAMIC_WEAR_FACTOR: f64 = 1.5;
+/// Memory of the outputs per profile grid point of each wear record (the wear profiles'
+/// and Fig. 12's tables, their CSV text and the figure's curves): measured 106-109 bytes
+/// (`wear.points_per_profile` = 1e5, 21 and 175 records); 160 leaves margin.
+pub const OUTPUT_BYTES_PER_PROFILE_POINT: f64 = 160.0;
+/// Time of the outputs per profile grid point of each wear record (four CSV cells and
+/// the figure's data), s.
+pub const OUTPUT_SECONDS_PER_PROFILE_POINT: f64 = 1e-6;
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 const BASE_BYTES: f64 = 64e6;
 const CHECKPOINT_BYTES_PER_NUMBER: f64 = 32.0;
@@ -256,6 +275,34 @@ pub fn wear_updates(case: &Case, rate_m: f64) -> f64 {
     1.0 + (w.total_cycles / block).ceil()
 }
 
+/// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
+/// never read beyond what the run could have written: 16 times the estimated number of
+/// updates (the estimate takes the nominal load; a run's actual updates stay well within
+/// that margin) of (4 G + 4 S_d) numbers at [`CHECKPOINT_BYTES_PER_NUMBER`] bytes, and at
+/// least 64 MiB.
+pub fn max_checkpoint_bytes(case: &Case, mode: crate::study::wear_loop::WearMode) -> u64 {
+    use crate::study::wear_loop::WearMode;
+    let dynamic = mode == WearMode::Dynamic;
+    let e = estimate(
+        case,
+        Job::Wear {
+            dynamic,
+            quasi_static: !dynamic,
+        },
+    );
+    let updates = if dynamic {
+        e.wear_updates_dynamic
+    } else {
+        e.wear_updates_quasi_static
+    };
+    let s_dyn = (case.numerics.steps_per_mesh_period as f64).max(adaptive_steps_per_period(
+        case.numerics.integration_tolerance,
+    ));
+    let numbers = 4.0 * case.wear.points_per_profile as f64 + 4.0 * s_dyn;
+    let bytes = 16.0 * updates * numbers * CHECKPOINT_BYTES_PER_NUMBER;
+    bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
+}
+
 /// Steps per mesh period the error control of the dynamic solver takes, at most, at the
 /// local error tolerance `tol` (dimensionless): [`ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE`]
 /// x (1e-5 / tol)^(1/3), the step of a third-order method scaling as tol^(1/3).
@@ -405,6 +452,20 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         });
     }
     if checkpoints && records > 0.0 {
+        // `wear` and `run` write the profiles of every record (and Python's wear and run
+        // build the same tables).
+        let points = records * grid;
+        terms.push(Term {
+            what: "the wear profiles' tables and figures",
+            seconds: points * OUTPUT_SECONDS_PER_PROFILE_POINT,
+            bytes: points * OUTPUT_BYTES_PER_PROFILE_POINT,
+            keys: &[
+                "wear.points_per_profile",
+                "wear.threshold_um",
+                "wear.block_cycles",
+                "wear.total_cycles",
+            ],
+        });
         let written = records * record_numbers * CHECKPOINT_BYTES_PER_NUMBER;
         terms.push(Term {
             what: "writing the checkpoints",
@@ -441,6 +502,166 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         wear_updates_quasi_static: u_q,
         terms,
     }
+}
+
+/// Values of an axis at which a sweep's cost is sampled: the first and last, the
+/// numerically smallest and largest, and up to [`SAMPLED_VALUES`] spread between, so that
+/// estimating a sweep costs milliseconds however many values an axis has.
+pub const SAMPLED_VALUES: usize = 8;
+
+fn sampled_indices(values: &[AxisValue]) -> Vec<usize> {
+    let n = values.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let mut idx: std::collections::BTreeSet<usize> = (0..SAMPLED_VALUES.min(n))
+        .map(|i| i * (n - 1) / (SAMPLED_VALUES - 1).max(1))
+        .collect();
+    idx.insert(n - 1);
+    let num = |v: &AxisValue| {
+        v.value
+            .as_float()
+            .or_else(|| v.value.as_integer().map(|i| i as f64))
+    };
+    let numbered: Vec<(usize, f64)> = (0..n)
+        .filter_map(|i| num(&values[i]).map(|x| (i, x)))
+        .collect();
+    if let Some(lo) = numbered.iter().min_by(|a, b| a.1.total_cmp(&b.1)) {
+        idx.insert(lo.0);
+    }
+    if let Some(hi) = numbered.iter().max_by(|a, b| a.1.total_cmp(&b.1)) {
+        idx.insert(hi.0);
+    }
+    idx.into_iter().collect()
+}
+
+/// The estimated cost of `sweep-merge` of tables of `bytes` in all: the text, the rows
+/// parsed (their values as text and numbers) and the merged table's CSV, about four times
+/// the text.
+pub fn estimate_sweep_merge(bytes: u64) -> Estimate {
+    Estimate {
+        steps_per_evaluation: 0.0,
+        steps_to_give_up: 0.0,
+        recorded_samples: 0.0,
+        wear_per_cycle_m: None,
+        wear_updates_dynamic: 0.0,
+        wear_updates_quasi_static: 0.0,
+        terms: vec![Term {
+            what: "the tables read and merged",
+            seconds: bytes as f64 * 2e-8,
+            bytes: 4.0 * bytes as f64,
+            keys: &["the size of the tables merged"],
+        }],
+    }
+}
+
+/// The estimated cost of `load-spectrum` on a history of `bytes` of text: read, parsed
+/// into its columns and counted in one pass, about three times the text in memory, and
+/// 2e-8 s a byte (a 1e6-sample history, about 30 MB of text, counts in 0.39 s:
+/// docs/PERFORMANCE.md, duty-cycle benchmark).
+pub fn estimate_history(bytes: u64) -> Estimate {
+    Estimate {
+        steps_per_evaluation: 0.0,
+        steps_to_give_up: 0.0,
+        recorded_samples: 0.0,
+        wear_per_cycle_m: None,
+        wear_updates_dynamic: 0.0,
+        wear_updates_quasi_static: 0.0,
+        terms: vec![Term {
+            what: "the history read and counted",
+            seconds: bytes as f64 * 2e-8,
+            bytes: 3.0 * bytes as f64,
+            keys: &["the size of the history"],
+        }],
+    }
+}
+
+/// Memory a sweep holds per case besides the cases in flight: the resolved case, its
+/// record and its row, bytes.
+pub const BYTES_PER_SWEEP_CASE: f64 = 16e3;
+
+/// What a sweep's estimate found.
+#[derive(Debug, Clone)]
+pub struct SweepEstimate {
+    /// The sweep as one job: every case of the shard, one after the other (time), and the
+    /// cases in flight on `threads` threads plus the records (memory).
+    pub total: Estimate,
+    /// One case with every axis at its costliest sampled value, and its overrides.
+    pub worst_case: Estimate,
+    pub worst_overrides: Vec<String>,
+}
+
+/// Estimate a sweep of `cases` cases (those of its shard) over `axes` (key, values) on
+/// `threads` threads without resolving every case: `load(overrides)` gives the case of a
+/// set of overrides (None when it does not load: the sweep reports those itself). The
+/// cost per case is sampled at a few values of each axis (the others at the base case);
+/// the total is the base cost times, per axis, the mean ratio of its sampled values to the
+/// base (exact when the cost does not depend on a varied key, and when it is a product of
+/// per-axis factors); the worst case puts every axis at its costliest sampled value.
+pub fn estimate_sweep(
+    base: &Case,
+    plan: &SweepPlan,
+    job: Job,
+    cases: usize,
+    threads: usize,
+) -> Option<SweepEstimate> {
+    let load = |settings: &[(&str, toml::Value)]| case_with(base, settings).ok();
+    let base_e = estimate(&load(&[])?, job);
+    let (base_s, base_b) = (base_e.seconds().max(1e-9), base_e.memory_bytes());
+    let mut ratio = 1.0;
+    let mut worst: Vec<(&str, toml::Value)> = Vec::new();
+    let mut worst_overrides = Vec::new();
+    for axis in &plan.axes {
+        let mut sum = 0.0;
+        let mut n = 0.0;
+        let mut costliest: Option<(f64, usize)> = None;
+        for i in sampled_indices(&axis.values) {
+            let Some(c) = load(&[(axis.key, axis.values[i].value.clone())]) else {
+                continue;
+            };
+            let e = estimate(&c, job);
+            let cost = e.seconds() / base_s + e.memory_bytes() / base_b;
+            sum += e.seconds() / base_s;
+            n += 1.0;
+            if costliest.as_ref().is_none_or(|(c0, _)| cost > *c0) {
+                costliest = Some((cost, i));
+            }
+        }
+        if n > 0.0 {
+            ratio *= sum / n;
+        }
+        if let Some((_, i)) = costliest {
+            worst.push((axis.key, axis.values[i].value.clone()));
+            worst_overrides.push(format!("{}={}", axis.key, axis.values[i].label));
+        }
+    }
+    let worst_case = estimate(&load(&worst).or_else(|| load(&[]))?, job);
+    let cases_f = cases as f64;
+    let in_flight = (threads.max(1) as f64).min(cases_f);
+    let total = Estimate {
+        terms: vec![
+            Term {
+                what: "the sweep's cases, one after the other",
+                seconds: cases_f * base_s * ratio,
+                bytes: 0.0,
+                keys: &["the number of cases of the shard", "the varied keys"],
+            },
+            Term {
+                what: "the cases in flight, and every case's record",
+                seconds: 0.0,
+                bytes: in_flight * (worst_case.memory_bytes() - BASE_BYTES)
+                    + cases_f * BYTES_PER_SWEEP_CASE,
+                keys: &["the number of cases of the shard", "the varied keys"],
+            },
+        ],
+        steps_to_give_up: worst_case.steps_to_give_up,
+        ..worst_case.clone()
+    };
+    Some(SweepEstimate {
+        total,
+        worst_case,
+        worst_overrides,
+    })
 }
 
 #[cfg(test)]

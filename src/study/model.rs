@@ -49,6 +49,25 @@ pub struct Model {
     pub warnings: Vec<String>,
 }
 
+/// Pitch-line velocity above which a spur pair is implausible, m/s: ground, precision
+/// spur gears run to about 40 m/s (ISO 6336's and AGMA's accuracy grades for high speed;
+/// beyond it helical gears are used). A speed given in Hz where rpm was meant (900 Hz for
+/// 900 rpm: 54 000 rpm) lands far above it.
+pub const MAX_PITCH_LINE_VELOCITY_M_PER_S: f64 = 40.0;
+
+/// A warning when the pinion's pitch-line velocity, v = 2 pi f r_p, is above
+/// [`MAX_PITCH_LINE_VELOCITY_M_PER_S`] (the case runs; the speed may be meant).
+pub fn pitch_line_velocity_warning(case: &Case, pair: &GearPair) -> Option<String> {
+    let f = case.operating.input_speed_hz;
+    let v = 2.0 * std::f64::consts::PI * f * pair.pinion.pitch_radius_m;
+    (v > MAX_PITCH_LINE_VELOCITY_M_PER_S).then(|| {
+        format!(
+            "`operating.input_speed_hz` = {f} Hz ({:.0} rpm) gives a pitch-line velocity of {v:.1} m/s on this pair, above the {MAX_PITCH_LINE_VELOCITY_M_PER_S} m/s of any spur gear; if the speed was meant in rpm, give it as `operating.input_speed_rpm`",
+            f * 60.0
+        )
+    })
+}
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
@@ -76,6 +95,7 @@ impl Model {
             case,
             &pair.blank_estimates(case.dynamics.blank_density_kg_per_m3),
         ));
+        warnings.extend(pitch_line_velocity_warning(case, &pair));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
         let teeth = ToothInputs::from_case(

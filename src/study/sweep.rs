@@ -14,6 +14,7 @@ pub mod continuation;
 pub mod plan;
 pub mod resonance;
 pub mod table;
+pub mod verify;
 
 pub use case_run::{
     run_case, wear_results, CaseError, CaseOutcome, CaseRecord, CaseResults, ContinuationLink,

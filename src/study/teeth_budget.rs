@@ -42,7 +42,7 @@ pub fn excitation_periods_of(case: &Case) -> usize {
 const RUN_IN_PERIODS: f64 = 30.0;
 
 /// Bytes of the path samples of a recorded sample (two pairs of 72 bytes, doubled for
-/// growth), on top of the signals' `BYTES_PER_SAMPLE`.
+/// growth), on top of the response's `RESPONSE_BYTES_PER_SAMPLE`.
 const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
 
 /// The run budget's term for a tooth-resolved case (None when every tooth is alike):
@@ -61,7 +61,9 @@ pub fn budget_term(
     s_dyn: f64,
     s: f64,
 ) -> Option<super::budget::Term> {
-    use super::budget::{BYTES_PER_SAMPLE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP};
+    use super::budget::{
+        RESPONSE_BYTES_PER_SAMPLE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
+    };
     let per_tooth = !case.teeth.is_empty()
         || !case.modification.is_empty()
         || !case.fault.is_empty()
@@ -81,8 +83,8 @@ pub fn budget_term(
         seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
             + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP,
         bytes: kept
-            * (recorded * (BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
-                - s_dyn * p_e * BYTES_PER_SAMPLE)
+            * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
+                - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
             + records * teeth * grid * 2.0 * 8.0,
         keys: &[
             "teeth.pitch_error_pinion_um",

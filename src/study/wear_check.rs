@@ -11,7 +11,7 @@
 //! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
 
 use super::model::Model;
-use super::wear_loop::{WearMode, WearRun};
+use super::wear_loop::{next_update, Next, WearMode, WearRun};
 use crate::dynamics::model::NSTATE;
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
@@ -133,6 +133,73 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
                     "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
                 )));
             }
+        }
+    }
+    Ok(())
+}
+
+/// Most records recomputed when a checkpoint is resumed (the first, the last, and a
+/// random sample of the others): each costs one update, so resuming costs at most this
+/// many updates whatever the run's length.
+pub const MAX_RECOMPUTED: usize = 16;
+
+/// `k` distinct indices of `0..n` drawn from the operating system's randomness (a forger
+/// cannot know which), always including those in `always`; all of them when `n <= k`.
+/// In increasing order.
+pub fn random_sample(n: usize, k: usize, always: &[usize]) -> Vec<usize> {
+    if n <= k {
+        return (0..n).collect();
+    }
+    use std::hash::{BuildHasher, Hasher};
+    let seed = std::collections::hash_map::RandomState::new();
+    let mut picked: std::collections::BTreeSet<usize> =
+        always.iter().copied().filter(|i| *i < n).collect();
+    let mut j = 0u64;
+    while picked.len() < k {
+        let mut h = seed.build_hasher();
+        h.write_u64(j);
+        j += 1;
+        picked.insert((h.finish() % n as u64) as usize);
+    }
+    picked.into_iter().collect()
+}
+
+/// Which records to recompute: all of a run of at most [`MAX_RECOMPUTED`] records, else
+/// the first, the last and a random sample of the others.
+fn records_to_recompute(n: usize) -> Vec<usize> {
+    random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)])
+}
+
+/// Check `run` as [`check_wear_run`] does, then recompute records from the record before
+/// each (the first from new teeth) and require each recomputed record to equal the stored
+/// one bit for bit (compared as their JSON, which carries every double exactly): every
+/// record of a run of up to [`MAX_RECOMPUTED`] records, else the first, the last and a
+/// random sample. A record that this case's model does not reproduce (an edit with
+/// recomputed checksums, a record of another case under this case's header, a spliced
+/// tail) is refused, naming its line in the checkpoint (the header is line 1).
+pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
+    check_wear_run(run, model)?;
+    for i in records_to_recompute(run.records.len()) {
+        let prev = i.checked_sub(1).map(|j| &run.records[j]);
+        let line = i + 2;
+        let again = match next_update(model, run.mode, prev) {
+            Ok(Next::Record(r)) => *r,
+            Ok(_) | Err(_) => {
+                return Err(format!(
+                    "line {line} (update {i}): this case's model makes no such update when it is recomputed from the record before it: the record is not this case's"
+                ))
+            }
+        };
+        let same =
+            serde_json::to_string(&again).ok() == serde_json::to_string(&run.records[i]).ok();
+        if !same {
+            return Err(format!(
+                "line {line} (update {i}) is not what this case's model computes from the record before it (recomputed: max pinion wear {:.6e} m, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the record is not this case's, or was edited",
+                again.wear.max_pinion_m(),
+                again.summary.mesh_force_mean_n,
+                run.records[i].wear.max_pinion_m(),
+                run.records[i].summary.mesh_force_mean_n,
+            ));
         }
     }
     Ok(())

@@ -232,6 +232,72 @@ pub fn start_of(rec: &UpdateRecord) -> Option<[f64; NSTATE]> {
     (s.len() == NSTATE).then(|| std::array::from_fn(|i| s[i]))
 }
 
+/// What the update after a record gives.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Next {
+    /// A new record.
+    Record(Box<UpdateRecord>),
+    /// The run stops before this update (it is not recorded).
+    Stop(WearStop),
+    /// The total cycles are reached.
+    Finished,
+}
+
+/// The update after `last` (`None`: the first update, new teeth at cycle 0), exactly as
+/// [`run_wear`] makes it: the loop's one step, also used to verify a checkpoint by
+/// recomputing its last update (`study::wear_check`). Only the first update's failure is
+/// an error; a later one is a stop.
+pub fn next_update(
+    model: &Model,
+    mode: WearMode,
+    last: Option<&UpdateRecord>,
+) -> Result<Next, DynamicsError> {
+    let w = &model.case.wear;
+    let Some(last) = last else {
+        let state = model.new_wear_state();
+        let r = solve(model, mode, &state, None)?;
+        return Ok(Next::Record(Box::new(record(model, mode, state, &r))));
+    };
+    let threshold_m = w.threshold_um * 1e-6;
+    let remaining = w.total_cycles - last.wear.cycles;
+    if remaining <= 0.5 {
+        return Ok(Next::Finished);
+    }
+    let inc = WearIncrement {
+        pinion_m: last.increment_pinion_m.clone(),
+        gear_m: last.increment_gear_m.clone(),
+        teeth: last.increment_teeth.clone(),
+        ..Default::default()
+    };
+    let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
+    let mut state = last.wear.clone();
+    state.advance(&inc, n);
+    let start = start_of(last);
+    Ok(match solve(model, mode, &state, start.as_ref()) {
+        Ok(r) if r.contact_loss_fraction() > MAX_CONTACT_LOSS_FRACTION => Next::Stop(WearStop {
+            cycles: state.cycles,
+            kind: StopKind::ModelValidity,
+            reason: format!(
+                "at {:.0} cycles (maximum pinion wear {:.2} µm) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact no longer applies",
+                state.cycles,
+                state.max_pinion_m() * 1e6,
+                100.0 * r.contact_loss_fraction(),
+                100.0 * MAX_CONTACT_LOSS_FRACTION
+            ),
+        }),
+        Ok(r) => Next::Record(Box::new(record(model, mode, state, &r))),
+        Err(e) => Next::Stop(WearStop {
+            cycles: state.cycles,
+            kind: StopKind::Numerical,
+            reason: format!(
+                "at {:.0} cycles (maximum pinion wear {:.2} µm) no steady state was found, even from the static equilibrium with a 10x tighter numerics.integration_tolerance and 2x the numerics.steps_per_mesh_period: {e}",
+                state.cycles,
+                state.max_pinion_m() * 1e6
+            ),
+        }),
+    })
+}
+
 /// Run (or continue) a wear study to the case's total cycles. `on_update` is called after
 /// every update with the run so far (checkpointing, progress); an error it returns stops
 /// the run. The returned run may have stopped early ([`WearRun::stopped`]); only the
@@ -241,56 +307,17 @@ pub fn run_wear(
     mut run: WearRun,
     on_update: &mut dyn FnMut(&WearRun) -> anyhow::Result<()>,
 ) -> anyhow::Result<WearRun> {
-    let w = &model.case.wear;
-    let threshold_m = w.threshold_um * 1e-6;
     if run.records.is_empty() {
-        let state = model.new_wear_state();
-        let r = solve(model, run.mode, &state, None)?;
-        run.records.push(record(model, run.mode, state, &r));
+        if let Next::Record(r) = next_update(model, run.mode, None)? {
+            run.records.push(*r);
+        }
         on_update(&run)?;
     }
     while run.stopped.is_none() {
-        let last = run.records.last().expect("at least one record");
-        let remaining = w.total_cycles - last.wear.cycles;
-        if remaining <= 0.5 {
-            break;
-        }
-        let inc = WearIncrement {
-            pinion_m: last.increment_pinion_m.clone(),
-            gear_m: last.increment_gear_m.clone(),
-            teeth: last.increment_teeth.clone(),
-            ..Default::default()
-        };
-        let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
-        let mut state = last.wear.clone();
-        state.advance(&inc, n);
-        let start = start_of(last);
-        match solve(model, run.mode, &state, start.as_ref()) {
-            Ok(r) if r.contact_loss_fraction() > MAX_CONTACT_LOSS_FRACTION => {
-                run.stopped = Some(WearStop {
-                    cycles: state.cycles,
-                    kind: StopKind::ModelValidity,
-                    reason: format!(
-                        "at {:.0} cycles (maximum pinion wear {:.2} um) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact no longer applies",
-                        state.cycles,
-                        state.max_pinion_m() * 1e6,
-                        100.0 * r.contact_loss_fraction(),
-                        100.0 * MAX_CONTACT_LOSS_FRACTION
-                    ),
-                });
-            }
-            Ok(r) => run.records.push(record(model, run.mode, state, &r)),
-            Err(e) => {
-                run.stopped = Some(WearStop {
-                    cycles: state.cycles,
-                    kind: StopKind::Numerical,
-                    reason: format!(
-                        "at {:.0} cycles (maximum pinion wear {:.2} um) no steady state was found, even from the static equilibrium with a 10x tighter numerics.integration_tolerance and 2x the numerics.steps_per_mesh_period: {e}",
-                        state.cycles,
-                        state.max_pinion_m() * 1e6
-                    ),
-                });
-            }
+        match next_update(model, run.mode, run.records.last())? {
+            Next::Finished => break,
+            Next::Stop(s) => run.stopped = Some(s),
+            Next::Record(r) => run.records.push(*r),
         }
         on_update(&run)?;
     }

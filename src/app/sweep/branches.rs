@@ -12,6 +12,7 @@ use super::records::{case_path, write_record};
 use super::Ran;
 use crate::config::Case;
 use crate::dynamics::model::NSTATE;
+use crate::io::output_dir::StateFolder;
 use crate::study::sweep::continuation::{run_continuation, PointRun};
 use crate::study::sweep::{Branch, CaseRecord, ContinuationLink, ContinuationPlan, SweepRow};
 use std::collections::BTreeMap;
@@ -23,7 +24,7 @@ use std::sync::Mutex;
 /// into `dir` if given; points finished in an earlier run from the same start state are
 /// skipped. `on_point` after every point, `keep_going` before each.
 pub fn run_branches(
-    dir: Option<&Path>,
+    dir: Option<(&Path, &StateFolder)>,
     c: &ContinuationPlan,
     planned: &[Planned],
     keys: &[String],
@@ -52,7 +53,7 @@ pub fn run_branches(
         }
     };
     let finished = |b: Branch, id: usize, start: Option<&[f64; NSTATE]>| {
-        let dir = dir?;
+        let (dir, _) = dir?;
         let p = by_id.get(&id)?;
         let r = CaseRecord::read(&case_path(dir, id)).ok()??;
         if !r.is_continuation_result_of(id, &p.hash, keys, &p.labels, b, start) {
@@ -76,7 +77,7 @@ pub fn run_branches(
             } => {
                 let link = ContinuationLink::new(b, start.as_ref(), &end_state);
                 match dir {
-                    Some(dir) => write_record(dir, p, keys, &outcome.results, Some(link))
+                    Some((_, cases)) => write_record(cases, p, keys, &outcome.results, Some(link))
                         .map(|rec| keep(id, &rec)),
                     None => {
                         if let Ok(mut m) = rows.lock() {

@@ -1,12 +1,14 @@
 //! The sweep-merge job: joins the tables of sweep shards (or of earlier merges) into one,
 //! sorted by case id, refusing inputs of different sweeps.
 
+use super::super::budget::over_budget;
 use super::super::observer::Observer;
 use super::super::{publish, Job, JobError, Outcome};
 use super::SweepOutput;
 use crate::remedy::{Arg, Problem};
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
+use crate::study::budget::Budget;
 use crate::study::sweep::{Crossing, SweepTable};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -19,17 +21,22 @@ pub struct SweepMergeJob {
     /// An output folder (gets `sweep.*`), or a `.csv` path (`FILE.*` beside it); `None`
     /// writes nothing.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    /// The budget of the merge (the tables read and joined).
+    pub budget: Option<Budget>,
 }
 
 /// The sweep tables of a merge input: a CSV file, or a folder's `sweep.csv` and
 /// `sweep_shard_*_of_*.csv`. Each comes with its `.json` description when present.
 fn merge_inputs(input: &Path) -> Result<Vec<PathBuf>, JobError> {
-    if input.is_file() {
-        return Ok(vec![input.to_path_buf()]);
-    }
     let shown = input.display().to_string();
-    if !input.is_dir() {
+    if !input.exists() {
         return Err(Problem::given(Arg::Inputs, shown, "does not exist").into());
+    }
+    if !input.is_dir() {
+        // Read as a table only if it is a regular file (`io::read_input` says what it is).
+        return Ok(vec![input.to_path_buf()]);
     }
     let mut found: Vec<PathBuf> = std::fs::read_dir(input)
         .map_err(|e| Problem::given(Arg::Inputs, &shown, format!("cannot read: {e}")))?
@@ -74,19 +81,21 @@ impl SweepMergeJob {
     fn read(&self) -> Result<Read, JobError> {
         let mut tables = Vec::new();
         let mut metas = Vec::new();
+        let mut bytes = 0u64;
         for input in &self.inputs {
             for csv in merge_inputs(input)? {
-                let src = csv.display().to_string();
-                let text = std::fs::read_to_string(&csv)
-                    .map_err(|e| Problem::given(Arg::Inputs, &src, format!("cannot read: {e}")))?;
-                let t = SweepTable::from_csv(&text)
-                    .map_err(|e| Problem::given(Arg::Inputs, &src, e))?;
-                if let Some(m) = std::fs::read_to_string(csv.with_extension("json"))
-                    .ok()
-                    .and_then(|s| serde_json::from_str::<Value>(&s).ok())
-                {
-                    metas.push((src.clone(), m));
+                // The budget, from the tables' sizes before each is read.
+                bytes += std::fs::metadata(&csv).map_or(0, |m| m.len());
+                if let Some(b) = &self.budget {
+                    crate::study::budget::estimate_sweep_merge(bytes)
+                        .check(b)
+                        .map_err(|m| JobError::input(over_budget(m)))?;
                 }
+                let src = csv.display().to_string();
+                // The table and its description, both required (`io::sweep_inputs`).
+                let (t, m) = crate::io::sweep_inputs::merge_input(&csv)
+                    .map_err(|e| Problem::of(Arg::Inputs, e))?;
+                metas.push((src.clone(), m));
                 tables.push((src, t));
             }
         }
@@ -141,11 +150,13 @@ impl Job for SweepMergeJob {
             Some((d, s)) => (Some(d), s),
             None => (None, "sweep".to_owned()),
         };
-        let out = publish::open_if(dir.as_deref(), Some(&stem), self.name())?;
+        let out = publish::open_if(dir.as_deref(), Some(&stem), self.name(), self.replace)?;
         let total = metas
             .iter()
             .find_map(|(_, m)| m["total_cases"].as_u64())
-            .map(|n| n as usize);
+            .map(|n| n as usize)
+            // Bounded by the plan's limit (a description is an input: it could claim any size).
+            .filter(|n| *n <= crate::study::sweep::plan::MAX_CASES);
         let have: std::collections::BTreeSet<usize> =
             merged.rows.iter().map(|r| r.case_id).collect();
         let missing: Vec<usize> =

@@ -16,17 +16,18 @@ mod records;
 
 pub use merge::SweepMergeJob;
 
+use super::budget::over_budget;
 use super::observer::{Observer, Task};
 use super::{publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::duty::study::run_sweep_case;
-use crate::io::atomic::ensure_real_dir;
+use crate::io::output_dir::StateFolder;
 use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem, Words};
 use crate::report::modes::modes_json;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
-use crate::study::budget::Budget;
+use crate::study::budget::{estimate_sweep, Budget, Job as Cost};
 use crate::study::sweep::resonance::{speed_marks, SpeedMarks};
 use crate::study::sweep::{
     CaseError, CaseRecord, Continuation, ContinuationPlan, Shard, SweepPlan, SweepRow, SweepRun,
@@ -35,7 +36,7 @@ use crate::study::sweep::{
 use crate::study::Model;
 use cases::{check_models, check_values, resolve, Planned};
 use rayon::prelude::*;
-use records::{check_case_files, finished, write_record};
+use records::{check_case_files, finished, verify_finished, write_record};
 use serde_json::json;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -54,6 +55,8 @@ pub struct SweepJob {
     pub continuation: Option<Continuation>,
     /// Output folder; `None`: in memory, nothing written.
     pub out: Option<PathBuf>,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
     /// The budget of each case.
     pub budget: Option<Budget>,
 }
@@ -121,10 +124,53 @@ impl SweepJob {
         Ok(Some(ContinuationPlan::new(&self.plan, c)?))
     }
 
-    /// Run the pending cases in parallel, writing their records into `dir` if given.
+    /// The sweep against the budget before any case is resolved
+    /// (`study::budget::estimate_sweep`, from a few sampled values of each axis): its
+    /// costliest case alone, and its shard's cases together.
+    fn check_budget(&self) -> Result<(), JobError> {
+        let Some(b) = &self.budget else {
+            return Ok(());
+        };
+        let n = self.plan.len();
+        let cases = n
+            .saturating_sub(self.shard.index - 1)
+            .div_ceil(self.shard.count.max(1));
+        let threads = rayon::current_num_threads();
+        let Some(e) = estimate_sweep(
+            &self.base,
+            &self.plan,
+            Cost::SweepCase(self.run),
+            cases,
+            threads,
+        ) else {
+            return Ok(()); // cases that do not load are named by the checks that follow
+        };
+        e.worst_case.check(b).map_err(|m| {
+            JobError::input(over_budget(format!(
+                "the sweep's costliest case ({}): {m}",
+                e.worst_overrides.join(", ")
+            )))
+        })?;
+        e.total.check(b).map_err(|m| {
+            JobError::input(
+                Problem::new(format!("the sweep of {cases} case(s) as one run: {m}")).remedy(
+                    crate::remedy::Remedy::new(
+                        Words::new()
+                            .text("split it into shards (")
+                            .arg(Arg::Shard)
+                            .text(": each shard is one run), lower those keys, or raise the budget knowingly with ")
+                            .arg(Arg::BudgetScale)
+                            .text(" X"),
+                    ),
+                ),
+            )
+        })
+    }
+
+    /// Run the pending cases in parallel, writing their records into `cases` if given.
     fn run_parallel(
         &self,
-        dir: Option<&std::path::Path>,
+        cases: Option<&StateFolder>,
         pending: &[&Planned],
         done: Vec<SweepRow>,
         keys: &[String],
@@ -142,8 +188,8 @@ impl SweepJob {
                     return (p.id, Err(e));
                 }
                 let r = run_sweep_case(&p.case, self.run).and_then(|o| {
-                    let row = match dir {
-                        Some(d) => row_of(&write_record(d, p, keys, &o.results, None)?),
+                    let row = match cases {
+                        Some(c) => row_of(&write_record(c, p, keys, &o.results, None)?),
                         None => Some(SweepRow {
                             case_id: p.id,
                             values: p.labels.clone(),
@@ -227,6 +273,8 @@ impl Job for SweepJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
         let started = Instant::now();
+        // The sweep against the budget first, in milliseconds however many cases it has.
+        self.check_budget()?;
         check_values(&self.base, &self.plan)?;
         let continuation = self.continuation_plan()?;
         let plan = &self.plan;
@@ -261,12 +309,18 @@ impl Job for SweepJob {
             .iter()
             .filter(|p| done.iter().all(|r| r.case_id != p.id))
             .collect();
+        if let Some(d) = dir {
+            let by_id: BTreeMap<usize, &Planned> = planned.iter().map(|p| (p.id, p)).collect();
+            let pairs: Vec<(&Planned, &CaseRecord)> = done
+                .iter()
+                .filter_map(|r| by_id.get(&r.case_id).map(|p| (*p, r)))
+                .collect();
+            verify_finished(d, &pairs, self.run)?;
+        }
         check_models(plan, &pending)?;
         let stem = self.shard.stem();
-        let out = publish::open_if(dir, Some(&stem), self.name())?;
-        if let Some(d) = dir {
-            ensure_real_dir(d, &d.join("cases"))?;
-        }
+        let out = publish::open_if(dir, Some(&stem), self.name(), self.replace)?;
+        let cases = out.as_ref().map(|o| o.state_folder("cases")).transpose()?;
 
         let ran = if let Some(c) = &continuation {
             observer.note(&format!(
@@ -282,7 +336,8 @@ impl Job for SweepJob {
                 let n = count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 observer.advance(&task, n as f64, "");
             };
-            let r = branches::run_branches(dir, c, &planned, &keys, &on_point, &|| {
+            let folders = dir.zip(cases.as_ref());
+            let r = branches::run_branches(folders, c, &planned, &keys, &on_point, &|| {
                 !observer.cancelled()
             });
             observer.finish(&task);
@@ -299,7 +354,7 @@ impl Job for SweepJob {
                 rayon::current_num_threads()
             ));
             let rows = done.iter().filter_map(row_of).collect();
-            self.run_parallel(dir, &pending, rows, &keys, observer)
+            self.run_parallel(cases.as_ref(), &pending, rows, &keys, observer)
         };
         if observer.cancelled() {
             return Err(JobError::Cancelled);
@@ -379,14 +434,10 @@ impl SweepJob {
             "shard": {"index": self.shard.index, "count": self.shard.count, "scheme": "round-robin: case_id mod count = index - 1"},
             "cases_in_shard": planned.len(),
             "continuation": self.continuation.map(|c| format!("{c:?}").to_lowercase()),
-            "skipped_finished": ran.skipped,
-            "computed": computed,
             "failed": failed,
             "rows": table.rows.len(),
             "modes": speed.as_ref().map(|s| modes_json(&s.modal)),
             "resonance_crossings": speed.as_ref().map(|s| s.crossings.clone()),
-            "wall_time_s": wall_s,
-            "threads": rayon::current_num_threads(),
             "base": base,
         });
         art.summary_file = Some(format!("{stem}.json"));
@@ -403,6 +454,13 @@ impl SweepJob {
         art.headline = format!("sweep: {} rows ({counts})", table.rows.len());
         let rows = table.rows.len();
         let mut outcome = publish::publish(out, art, None, observer)?;
+        // The counts and the time of this run are handed back and said, but kept out of
+        // the published STEM.json, so that two runs of a sweep write the same bytes.
+        if let Some(m) = outcome.artifacts.summary.as_object_mut() {
+            m.insert("skipped_finished".into(), json!(ran.skipped));
+            m.insert("computed".into(), json!(computed));
+            m.insert("wall_time_s".into(), json!(wall_s));
+        }
         let to = match &self.out {
             Some(d) => format!(" -> {}", d.join(format!("{stem}.csv")).display()),
             None => String::new(),

@@ -13,7 +13,7 @@ pub mod layout;
 mod legend;
 
 use std::path::{Path, PathBuf};
-use std::sync::{atomic::AtomicU64, atomic::Ordering, OnceLock};
+use std::sync::OnceLock;
 
 use plotters::prelude::*;
 use plotters::style::register_font;
@@ -143,21 +143,26 @@ pub struct Figure {
     pub panels: Vec<Panel>,
 }
 
-/// Render `fig` as PNG bytes in memory (e.g. for base64 embedding in HTML).
-///
-/// plotters encodes PNG only when saving to a path (its `image` dependency is not ours to
-/// name), so this draws to a uniquely named temporary file, reads it back and removes it.
+/// Render `fig` as PNG bytes in memory (e.g. for base64 embedding in HTML): drawn into
+/// an RGB buffer and encoded by the `png` crate, with no file anywhere (a temporary file
+/// at a predictable name could be redirected by a planted link).
 pub fn render_png(fig: &Figure, width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
     check_size(fig, width, height)?;
-    static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let name = format!("gearwear-plot-{}-{n}.png", std::process::id());
-    let tmp = TempFile(std::env::temp_dir().join(name));
+    let mut rgb = vec![0u8; width as usize * height as usize * 3];
     draw_figure(
-        &BitMapBackend::new(&tmp.0, (width, height)).into_drawing_area(),
+        &BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area(),
         fig,
     )?;
-    std::fs::read(&tmp.0).map_err(|e| PlotError::Io(tmp.0.clone(), e))
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, width, height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.set_compression(png::Compression::Default);
+    let encode = |e: png::EncodingError| PlotError::Draw(format!("PNG encoding: {e}"));
+    let mut w = enc.write_header().map_err(encode)?;
+    w.write_image_data(&rgb).map_err(encode)?;
+    w.finish().map_err(encode)?;
+    Ok(out)
 }
 
 /// Render `fig` as PNG and write it to `path` (any extension).
@@ -192,14 +197,6 @@ pub fn render_svg(fig: &Figure, width: u32, height: u32) -> Result<String, PlotE
 /// Render `fig` as SVG and write it to `path`.
 pub fn save_svg(fig: &Figure, path: &Path, width: u32, height: u32) -> Result<(), PlotError> {
     write_file(path, render_svg(fig, width, height)?.as_bytes())
-}
-
-/// Removes the temporary PNG on every exit path of `render_png`.
-struct TempFile(PathBuf);
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
 }
 
 fn write_file(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {

@@ -456,10 +456,11 @@ impl CaseRecord {
     /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
     /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
     pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
-        let bytes = match std::fs::read(path) {
-            Ok(b) => b,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-            Err(e) => return Err(format!("{}: cannot read: {e}", path.display())),
+        use crate::io::input::{read_input_if_present, MAX_CASE_RECORD_BYTES};
+        let bytes = match read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES) {
+            Ok(Some(b)) => b,
+            Ok(None) => return Ok(None),
+            Err(e) => return Err(e.to_string()),
         };
         let r: CaseRecord = serde_json::from_slice(&bytes)
             .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;

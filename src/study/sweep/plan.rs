@@ -214,10 +214,12 @@ fn canonical(v: &AxisValue) -> String {
 }
 
 /// Error when two values of an axis are the same value (which would run one case twice).
+/// Linear in the number of values (a hash of the canonical forms).
 fn no_repeats(key: &str, values: &[AxisValue]) -> Result<(), Problem> {
-    let canon: Vec<String> = values.iter().map(canonical).collect();
-    for (i, c) in canon.iter().enumerate() {
-        if let Some(j) = canon[..i].iter().position(|d| d == c) {
+    let mut seen: std::collections::HashMap<String, usize> =
+        std::collections::HashMap::with_capacity(values.len());
+    for (i, v) in values.iter().enumerate() {
+        if let Some(j) = seen.insert(canonical(v), i) {
             return Err(Problem::given(
                 Arg::Vary,
                 key,

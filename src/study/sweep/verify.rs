@@ -1,0 +1,46 @@
+//! Finished sweep cases verified by recomputation when a sweep is rerun: a record's own
+//! checksum can be recomputed by whoever edits it, so a sample of the finished cases is
+//! run again and must give the recorded results bit for bit. Each costs one case.
+
+use super::case_run::{run_case, CaseRecord, SweepRun};
+use crate::config::Case;
+use crate::study::wear_check::random_sample;
+
+/// Most finished cases recomputed when a sweep is rerun.
+pub const MAX_RECOMPUTED_CASES: usize = 4;
+
+/// Which of `n` finished cases to recompute: a random sample of up to
+/// [`MAX_RECOMPUTED_CASES`] (at least one when there is one), so that an edited record
+/// among n is found with probability min(1, 4 / n) on each rerun.
+pub fn cases_to_recompute(n: usize) -> Vec<usize> {
+    random_sample(n, MAX_RECOMPUTED_CASES, &[])
+}
+
+/// Run `case` again and require the results `rec` holds, bit for bit (a failed case has
+/// no record, so a failure now is a mismatch too).
+pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(), String> {
+    let again = run_case(case, run).map_err(|e| {
+        format!("recomputed, the case fails ({e}), but its record holds results: the record is not this case's")
+    })?;
+    let now: Vec<Option<u64>> = again
+        .results
+        .values()
+        .iter()
+        .map(|x| x.is_finite().then_some(x.to_bits()))
+        .collect();
+    let stored: Vec<Option<u64>> = rec.results.iter().map(|x| x.map(f64::to_bits)).collect();
+    if let Some(i) = (0..now.len().max(stored.len())).find(|i| now.get(*i) != stored.get(*i)) {
+        let show = |v: Option<&Option<u64>>| {
+            v.copied()
+                .flatten()
+                .map_or("none".into(), |b| format!("{:e}", f64::from_bits(b)))
+        };
+        return Err(format!(
+            "recomputed, column `{}` is {} but the record holds {}: the record was edited or is not this case's",
+            rec.columns.get(i).map_or("?", String::as_str),
+            show(now.get(i)),
+            show(stored.get(i))
+        ));
+    }
+    Ok(())
+}
