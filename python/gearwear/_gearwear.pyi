@@ -168,6 +168,8 @@ def predict(
     out: _Path = None,
     progress: Optional[_Progress] = None,
     budget_scale: float = 1.0,
+    future_spectrum: Optional[Union[str, PathLike[str]]] = None,
+    future_from_cycles: Optional[float] = None,
 ) -> _Result:
     """``gearwear predict``."""
 

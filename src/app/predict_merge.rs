@@ -69,7 +69,7 @@ impl Job for PredictMergeJob {
         for (src, f) in &files {
             if f.identity != first.identity {
                 return Err(Problem::new(format!(
-                    "{src} and {src0} come from different predictions (settings, forward model, samples or case differ)"
+                    "{src} and {src0} come from different predictions (settings, forward model, samples, case or future duty differ)"
                 ))
                 .into());
             }
