@@ -74,6 +74,10 @@ pub enum Arg {
     TransferPath,
     /// The study design of a dataset.
     Design,
+    /// The load spectrum of a prediction's future duty.
+    FutureSpectrum,
+    /// The cycle count from which a prediction's future duty applies.
+    FutureFromCycles,
 }
 
 /// How a front end spells an argument in its messages.
@@ -81,7 +85,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 28] = [
+    pub const ALL: [Arg; 30] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -110,6 +114,8 @@ impl Arg {
         Arg::GapFactor,
         Arg::TransferPath,
         Arg::Design,
+        Arg::FutureSpectrum,
+        Arg::FutureFromCycles,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -143,6 +149,8 @@ impl Arg {
             Arg::GapFactor => "the gap limit",
             Arg::TransferPath => "the transfer-path file",
             Arg::Design => "the dataset design",
+            Arg::FutureSpectrum => "the future load spectrum",
+            Arg::FutureFromCycles => "the cycles the future duty starts at",
         }
     }
 }

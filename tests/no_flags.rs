@@ -313,6 +313,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                     grid_points: 1,
                     ..PredictOptions::new(-1.0, 0.0)
                 },
+                future: Default::default(),
                 shard: Shard::ALL,
                 out: None,
                 replace: false,

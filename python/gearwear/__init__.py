@@ -433,6 +433,8 @@ def predict(
     progress: _Optional[Progress] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    future_spectrum: _Optional[PathLike] = None,
+    future_from_cycles: _Optional[float] = None,
 ) -> PredictionResult:
     """Monte Carlo prediction of wear, vibration indicators and remaining life, as
     ``gearwear predict --limit-um L --cycles N [--posterior FILE]``.
@@ -446,6 +448,11 @@ def predict(
     charts; ``forward``: ``"surrogate"`` (fast) or ``"exact"`` (one wear study per
     sample); ``shard``: ``"I/N"`` or ``(I, N)`` (join the shards' ``out`` folders with
     ``predict_merge``).
+
+    ``future_spectrum``: a future duty, as ``--future-spectrum``: a ``[load_spectrum]``
+    section (TOML text, or a path to a TOML file holding only that section, spelled as in
+    a case file) that replaces the case's duty from ``future_from_cycles`` on (pinion
+    cycles from new teeth, required with it, in [0, ``cycles``)).
     """
     post = None if posterior is None else _table(posterior, "posterior")
     n = _native.predict(
@@ -463,6 +470,10 @@ def predict(
         progress=progress,
         budget_scale=budget_scale,
         replace=replace,
+        future_spectrum=None if future_spectrum is None else (
+            future_spectrum if isinstance(future_spectrum, str) else _os.fspath(future_spectrum)
+        ),
+        future_from_cycles=None if future_from_cycles is None else float(future_from_cycles),
     )
     return _done(PredictionResult(**n), n)
 

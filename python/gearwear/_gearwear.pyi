@@ -182,6 +182,8 @@ def predict(
     progress: Optional[_Progress] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    future_spectrum: Optional[Union[str, PathLike[str]]] = None,
+    future_from_cycles: Optional[float] = None,
 ) -> _Result:
     """``gearwear predict``."""
 

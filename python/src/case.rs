@@ -45,7 +45,7 @@ fn load(py: Python<'_>, text: &str, sets: &[String]) -> PyResult<Case> {
 
 /// Whether a string is TOML text rather than a file name: it has a line break, a `=` or
 /// a `[`, or is blank (the empty case).
-fn is_toml_text(s: &str) -> bool {
+pub(crate) fn is_toml_text(s: &str) -> bool {
     s.trim().is_empty() || s.contains(['\n', '=', '['])
 }
 

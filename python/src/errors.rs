@@ -142,6 +142,8 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::GapFactor => "`gap_factor`",
         Arg::TransferPath => "`transfer_path`",
         Arg::Design => "`design`",
+        Arg::FutureSpectrum => "`future_spectrum`",
+        Arg::FutureFromCycles => "`future_from_cycles`",
     }
 }
 

@@ -4,14 +4,14 @@
 //! fields, which the package wraps in a result object. Nothing here orders the steps of
 //! a study.
 
-use crate::case::Case;
+use crate::case::{is_toml_text, Case};
 use crate::convert::{outcome_to_py, path_or_columns, sweep_to_py};
 use crate::errors::spell;
 use crate::worker::run_job;
 use gearwear::app::{
-    CalibrateJob, CalibrationOptions, DynamicsJob, ForwardModel, PredictJob, PredictMergeJob,
-    PredictOptions, RunJob, StiffnessJob, SweepJob, SweepMergeJob, TransmissionErrorSource,
-    WearJob,
+    CalibrateJob, CalibrationOptions, DynamicsJob, ForwardModel, FutureInput, PredictJob,
+    PredictMergeJob, PredictOptions, RunJob, SpectrumSource, StiffnessJob, SweepJob, SweepMergeJob,
+    TransmissionErrorSource, WearJob,
 };
 use gearwear::config::load::override_value;
 use gearwear::format::format_number;
@@ -21,7 +21,7 @@ use gearwear::study::sweep::{
 };
 use gearwear::study::wear_loop::WearMode;
 use numpy::PyReadonlyArray2;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use std::path::PathBuf;
@@ -343,10 +343,26 @@ pub fn calibrate<'py>(
     outcome_to_py(py, o, w)
 }
 
+/// A `[load_spectrum]` section given as TOML text or a path to a file (told apart as
+/// `Case.from_toml` tells them).
+fn spectrum_source(s: &Bound<'_, PyAny>) -> PyResult<SpectrumSource> {
+    if let Ok(t) = s.cast::<PyString>() {
+        let t = t.to_cow()?.into_owned();
+        if is_toml_text(&t) {
+            return Ok(SpectrumSource::Text(t));
+        }
+    }
+    s.extract::<PathBuf>()
+        .map(SpectrumSource::File)
+        .map_err(|_| {
+            PyTypeError::new_err("future_spectrum takes TOML text or a path to a TOML file")
+        })
+}
+
 /// Monte Carlo prediction of wear, vibration and remaining life (as `gearwear predict`).
 /// `posterior`: None (the case's prior), a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn predict<'py>(
     py: Python<'py>,
@@ -364,6 +380,8 @@ pub fn predict<'py>(
     progress: Option<Bound<'py, PyAny>>,
     budget_scale: f64,
     replace: bool,
+    future_spectrum: Option<Bound<'py, PyAny>>,
+    future_from_cycles: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let forward = match forward {
         "surrogate" => ForwardModel::Surrogate,
@@ -386,6 +404,10 @@ pub fn predict<'py>(
             grid_points,
             forward,
             check_runs,
+        },
+        future: FutureInput {
+            spectrum: future_spectrum.as_ref().map(spectrum_source).transpose()?,
+            from_cycles: future_from_cycles,
         },
         shard,
         out,

@@ -4,6 +4,7 @@ serde_json writes the shortest form that reads back to the same double). Observa
 posterior samples go in as numpy arrays or pandas DataFrames directly."""
 
 import json
+import subprocess
 
 import numpy as np
 import pytest
@@ -129,3 +130,56 @@ def test_bad_inputs_name_the_python_argument(observations):
         gw.calibrate(case, bad, **SAMPLER)
     with pytest.raises(TypeError, match="observations"):
         gw.calibrate(case, 42)
+
+
+def test_predict_with_a_future_spectrum_equals_cli(cli, tmp_path):
+    """A future duty given as TOML text from Python and as a file to the CLI: the same
+    resolved spectrum in the identity, the same summary to the last bit."""
+    bins = (
+        "bins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, "
+        "{torque_nm = 60, input_speed_hz = 30, share = 0.5}]\n"
+    )
+    text = (
+        "[numerics]\nsteps_per_mesh_period = 60\nevaluated_mesh_periods = 2\n"
+        "[wear]\npoints_per_profile = 31\n[load_spectrum]\n" + bins
+    )
+    case = gw.Case.from_toml(text)
+    # The case file as written (Case.to_toml does not write a spectrum's bins).
+    (tmp_path / "case.toml").write_text(text)
+    k0 = case["wear.coefficient_m2_per_n"]
+    post = tmp_path / "post.csv"
+    post.write_text(f"sample,wear_coefficient_m2_per_n\n0,{2 * k0!r}\n1,{2.5 * k0!r}\n")
+    future = "[load_spectrum]\n" + bins + "torque_scale = 1.3\n"
+    (tmp_path / "future.toml").write_text(future)
+    common = {"limit_um": 4, "cycles": 3e4, "check_runs": 1, "grid_points": 11}
+    py = gw.predict(case, post, future_spectrum=future, future_from_cycles=1e4, **common)
+    out = tmp_path / "cli"
+    subprocess.run(
+        [str(cli), "-q", "predict", "--config", str(tmp_path / "case.toml"), "--out", str(out),
+        "--posterior",
+        str(post),
+        "--limit-um=4",
+        "--cycles=3e4",
+        "--check-runs=1",
+        "--grid-points=11",
+        "--future-spectrum",
+        str(tmp_path / "future.toml"),
+        "--future-from-cycles=1e4"],
+        check=True,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        timeout=120,
+    )
+    assert py.summary == cli_json(out)
+    assert py.summary["future_duty"]["from_cycles"] == 1e4
+    assert py.summary["future_duty"]["load_spectrum"]["torque_scale"] == 1.3
+    # A path gives the same; bad values name the Python argument.
+    by_path = gw.predict(
+        case, post, future_spectrum=tmp_path / "future.toml", future_from_cycles=1e4, **common
+    )
+    assert by_path.summary["remaining_life_cycles"] == py.summary["remaining_life_cycles"]
+    with pytest.raises(gw.CaseError, match="`future_from_cycles`"):
+        gw.predict(case, post, future_spectrum=future, **common)
+    with pytest.raises(gw.CaseError, match="`future_spectrum`") as e:
+        gw.predict(case, post, future_spectrum="[load_spectrum]\nbins = []\n", future_from_cycles=1e4, **common)
+    assert "--" not in str(e.value)

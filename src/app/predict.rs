@@ -5,18 +5,19 @@
 use super::calibrate::counted;
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
+use super::predict_future::FutureInput;
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::{RunMetadata, Table};
 use crate::prognostics::band::Band;
 use crate::prognostics::check::{check_prediction, PredictionCheck};
-use crate::prognostics::forward::Crossing;
+use crate::prognostics::forward::{Crossing, FutureDuty};
 use crate::prognostics::predict::{
     fans, run_sample, Forward, LifeSummary, PredictSettings, SampleOutcome, SampleSource,
 };
 use crate::prognostics::prior::{Prior, Theta};
 use crate::prognostics::samples::read_samples;
-use crate::prognostics::surrogate::max_chain_runs;
+use crate::prognostics::surrogate::{future_chain_runs, max_chain_runs};
 use crate::prognostics::{Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
 use crate::report::html::{render, Report};
@@ -92,6 +93,8 @@ pub struct PredictJob {
     /// Posterior samples (from a calibration); `None` samples the case's prior.
     pub posterior: Option<TableSource>,
     pub options: PredictOptions,
+    /// A change of duty: a future load spectrum from some cycle count on (default: none).
+    pub future: FutureInput,
     /// One shard of the samples ([`Shard::ALL`]: all of them).
     pub shard: Shard,
     /// Output folder; `None` writes nothing.
@@ -109,6 +112,9 @@ pub struct Identity {
     /// SHA-256 of the posterior samples' CSV text, or "prior".
     pub source: String,
     pub case_sha256: String,
+    /// The future duty, resolved (its bins, not its file name).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub future: Option<FutureDuty>,
 }
 
 /// What a shard writes (`predict_shard_I_of_N.json`), and what a whole prediction is
@@ -176,6 +182,7 @@ impl Job for PredictJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let o = &self.options;
         o.check()?;
+        let future = self.future.resolve(o.cycles)?;
         let case = &self.case;
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
@@ -219,23 +226,40 @@ impl Job for PredictJob {
             forward: format!("{:?}", o.forward).to_lowercase(),
             source: source_id,
             case_sha256: meta.case_sha256.clone(),
+            future: future.clone(),
         };
         let sur = match o.forward {
             ForwardModel::Surrogate => {
                 let nodes = case.calibration.surrogate_nodes.max(2) as usize;
                 let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
-                let runs = chains * max_chain_runs(&span) as usize;
+                let per_chain = match future {
+                    None => max_chain_runs(&span),
+                    Some(_) => future_chain_runs(&span),
+                };
                 Some(counted(
                     observer,
-                    Task::items("reference_runs", "reference runs", runs),
-                    |tick| Surrogate::build(case, &span, o.cycles, nodes, tick),
+                    Task::items(
+                        "reference_runs",
+                        "reference runs",
+                        chains * per_chain as usize,
+                    ),
+                    |tick| {
+                        Surrogate::build_for_duty(
+                            case,
+                            future.as_ref(),
+                            &span,
+                            o.cycles,
+                            nodes,
+                            tick,
+                        )
+                    },
                 )?)
             }
             ForwardModel::Exact => None,
         };
         let fw = match &sur {
             Some(s) => Forward::Surrogate(s),
-            None => Forward::Exact(case, None),
+            None => Forward::Exact(case, future.as_ref()),
         };
         let ids = shard.ids(n);
         observer.note(&format!(
@@ -350,6 +374,11 @@ fn prediction_summary(
         "seed": set.seed,
         "forward_model": f.identity.forward,
         "source": f.identity.source,
+        "future_duty": f.identity.future.as_ref().map(|d| json!({
+            "from_cycles": d.from_cycles,
+            "load_spectrum": d.spectrum,
+            "note": "from these pinion cycles (counted from new teeth) on, the gearbox runs under this load spectrum instead of the case's duty",
+        })),
         "remaining_life_cycles": {
             "p05": life.p05, "median": life.median, "p95": life.p95,
             "prob_beyond_horizon": life.prob_beyond_horizon,
@@ -417,6 +446,13 @@ pub fn prediction_artifacts(
         "{} samples, forward model: {}, seed {}.",
         set.samples, f.identity.forward, set.seed
     )];
+    if let Some(d) = &f.identity.future {
+        notes.push(format!(
+            "Future duty: from {:.4e} cycles on, a load spectrum of {} bin(s) (listed in summary.json) instead of the case's duty.",
+            d.from_cycles,
+            d.spectrum.bins.len()
+        ));
+    }
     if !failed.is_empty() {
         notes.push(format!(
             "{} sample(s) had a forward run that stopped before the horizon (listed in summary.json).",

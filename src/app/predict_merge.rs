@@ -87,7 +87,7 @@ impl Job for PredictMergeJob {
                 .map_err(|e| Problem::given(Arg::Inputs, src, e))?;
             if f.identity != first.identity {
                 return Err(Problem::new(format!(
-                    "{src} and {src0} come from different predictions (settings, forward model, samples or case differ)"
+                    "{src} and {src0} come from different predictions (settings, forward model, samples, case or future duty differ)"
                 ))
                 .into());
             }

@@ -315,6 +315,14 @@ pub struct PredictArgs {
     /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
     #[arg(long, default_value_t = 3)]
     pub check_runs: usize,
+    /// A future duty: a TOML file holding a [load_spectrum] section (as a case file spells
+    /// it) that replaces the case's duty from --future-from-cycles on.
+    #[arg(long, value_name = "FILE")]
+    pub future_spectrum: Option<PathBuf>,
+    /// Pinion cycles from new teeth at which the future spectrum takes over (required
+    /// with --future-spectrum), in [0, --cycles).
+    #[arg(long, value_name = "N")]
+    pub future_from_cycles: Option<f64>,
 }
 
 #[derive(Debug, Args)]

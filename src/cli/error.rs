@@ -46,6 +46,8 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::GapFactor => "--gap-factor",
         Arg::TransferPath => "--transfer-path",
         Arg::Design => "--design",
+        Arg::FutureSpectrum => "--future-spectrum",
+        Arg::FutureFromCycles => "--future-from-cycles",
     }
 }
 

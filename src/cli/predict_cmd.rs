@@ -5,7 +5,10 @@ use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
 use super::error::flag;
 use super::output::execute;
 use super::CliError;
-use crate::app::{ForwardModel, PredictJob, PredictMergeJob, PredictOptions, TableSource};
+use crate::app::{
+    ForwardModel, FutureInput, PredictJob, PredictMergeJob, PredictOptions, SpectrumSource,
+    TableSource,
+};
 use crate::study::budget::Budget;
 use crate::study::sweep::Shard;
 
@@ -28,6 +31,10 @@ pub fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
                 ForwardArg::Exact => ForwardModel::Exact,
             },
             check_runs: a.check_runs,
+        },
+        future: FutureInput {
+            spectrum: a.future_spectrum.clone().map(SpectrumSource::File),
+            from_cycles: a.future_from_cycles,
         },
         shard,
         out: Some(a.out.clone()),

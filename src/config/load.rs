@@ -479,6 +479,35 @@ pub fn load_case_in(
     validate(user, dir)
 }
 
+/// A `[load_spectrum]` section on its own: TOML text holding only that table, spelled as in
+/// a case file (inline `bins` or a CSV `file`, read from `dir` when relative), parsed and
+/// checked by the same code as a case's, so it gives the same problems. A future duty of a
+/// prediction is given so.
+pub fn load_spectrum_section(
+    toml_text: &str,
+    dir: &std::path::Path,
+) -> Result<super::load_spectrum::LoadSpectrumSection, ConfigError> {
+    let mut user: Table = toml::from_str(toml_text)
+        .map_err(|e| ConfigError::one(format!("not valid TOML{}", toml_error(&e, toml_text))))?;
+    let mut problems = Vec::new();
+    let section = spectrum_section(&mut user, dir, &mut problems);
+    if let Some(k) = user.keys().next() {
+        problems.push(format!(
+            "`{}`: only a [load_spectrum] section is read here",
+            clip(k, SHOWN_CHARS)
+        ));
+    }
+    match section {
+        Some(s) if problems.is_empty() => Ok(s),
+        _ => {
+            if problems.is_empty() {
+                problems.push("no [load_spectrum] section (or an empty one)".into());
+            }
+            Err(ConfigError::of(problems))
+        }
+    }
+}
+
 /// The case `base` with the typed `values` set (key, value as an override reads it),
 /// validated as [`load_case`] validates. A sweep builds its cases so: each value is typed
 /// once, when the sweep is planned, not read from text again for every case.

@@ -12,6 +12,6 @@ pub mod teeth;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};
-pub use load::{load_case, load_case_in, ConfigError};
+pub use load::{load_case, load_case_in, load_spectrum_section, ConfigError};
 pub use load_spectrum::{LoadSpectrumSection, SpectrumBin};
 pub use problem::Problem;

@@ -63,6 +63,16 @@ pub fn max_chain_runs(p: &super::prior::Prior) -> u64 {
     ((k.hi / k.lo).ln() / K_NODE_RATIO.ln()).ceil() as u64 + 1
 }
 
+/// As [`max_chain_runs`] under a change of duty: every node of the finer grid
+/// ([`future_node_ratio`]) and k_hi.
+pub fn future_chain_runs(p: &super::prior::Prior) -> u64 {
+    let k = &p.params[0];
+    if k.hi <= k.lo {
+        return 1;
+    }
+    ((k.hi / k.lo).ln() / future_node_ratio(k.lo, k.hi).ln()).ceil() as u64 + 1
+}
+
 /// One chain of reference runs (increasing k) at fixed other parameters.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Chain {
