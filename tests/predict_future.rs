@@ -63,6 +63,7 @@ fn predict(future: Option<&str>) -> Value {
         },
         shard: Shard::ALL,
         out: None,
+        replace: false,
         budget: None,
     };
     job.run(&()).unwrap().artifacts.summary
@@ -190,6 +191,7 @@ fn shards_of_different_future_duties_are_not_merged() {
             },
             shard: Shard { index: i, count: 2 },
             out: Some(d.path().join(dir)),
+            replace: false,
             budget: None,
         };
         job.run(&()).unwrap();
@@ -199,6 +201,8 @@ fn shards_of_different_future_duties_are_not_merged() {
     let merge = PredictMergeJob {
         inputs: vec![d.path().join("a"), d.path().join("b")],
         out: Some(d.path().join("merged")),
+        replace: false,
+        budget: None,
     };
     let Err(e) = merge.run(&()) else {
         panic!("shards of different future duties merged")
