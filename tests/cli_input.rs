@@ -274,3 +274,39 @@ fn explicit_masses_far_from_the_geometry_are_warned_about() {
         "{err}"
     );
 }
+
+/// Issue 21 (what a new user saw): the built-in case prints no warning; a speed given in
+/// rpm is the speed in Hz times 60 (the same numbers), both at once are refused; a speed
+/// implausible for the pair (900 meant as rpm but given in Hz: 54 000 rpm, a pitch-line
+/// velocity of about 107 m/s, over the 40 m/s of any spur gear) is warned about.
+#[test]
+fn the_built_in_case_is_quiet_and_speeds_are_taken_in_rpm_or_warned_about() {
+    let err = accepted(&["dynamics"]);
+    assert!(!err.to_lowercase().contains("warning"), "{err}");
+    let dir = tempfile::tempdir().unwrap();
+    let mesh_force = |set: &str, name: &str| {
+        let out = dir.path().join(name);
+        let o = gearwear(&["dynamics", "--set", set, "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{set}: {}", stderr(&o));
+        std::fs::read(out.join("csv/mesh_force.csv")).unwrap()
+    };
+    assert_eq!(
+        mesh_force("operating.input_speed_rpm=1500", "rpm"),
+        mesh_force("operating.input_speed_hz=25", "hz")
+    );
+    rejected(
+        &[
+            "stiffness",
+            "--set",
+            "operating.input_speed_rpm=1500",
+            "--set",
+            "operating.input_speed_hz=25",
+        ],
+        &["`operating.input_speed_rpm`", "both given"],
+    );
+    let err = accepted(&["stiffness", "--set", "operating.input_speed_hz=900"]);
+    assert!(
+        err.contains("pitch-line velocity") && err.contains("`operating.input_speed_rpm`"),
+        "{err}"
+    );
+}

@@ -300,6 +300,27 @@ mod tests {
         assert_eq!(o.max_cycles(), 2e4);
     }
 
+    /// Issue 22's wrong diagnoses: values no forward run can meet are refused up front,
+    /// naming them, and a file with no value at all is an error (issue 21: so is a quoted
+    /// line break inside a cell).
+    #[test]
+    fn values_beyond_any_run_and_empty_or_broken_cells_are_refused_up_front() {
+        for (text, needle) in [
+            ("cycles,dte_max_um\n0,17\n1e300,17\n", "1e300"),
+            ("cycles,dte_max_um\n0,17\n1e9,17\n1e12,17\n", "1e12"),
+            ("cycles,dte_max_um\n0,17\n1e4,1e308\n", "dte_max_um"),
+            (
+                "cycles,dte_max_um,sigma_dte_max_um\n0,17,1e-300\n1e4,17,0.1\n",
+                "sigma_dte_max_um",
+            ),
+            ("cycles,dte_max_um\n0,\n1e4,\n", "every cell is empty"),
+            ("cycles,dte_max_um\n0,17\n1e4,\"1\n7\"\n", "line break"),
+        ] {
+            let e = err(text);
+            assert!(e.contains(needle), "{text:?}: {e}");
+        }
+    }
+
     #[test]
     fn errors_name_row_and_column() {
         let e = err("cycles,dte_max_um\n0,17\n-5,17\n");
