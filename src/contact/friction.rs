@@ -34,15 +34,45 @@ pub const XU2007_B: [f64; 9] = [
 /// 0; never NaN. Not capped: it exceeds 1 (not physical) for S = 1.9-2.1 um with R in m on the
 /// paper's pair and is +inf for S > ~7 um; callers report such values, not hide them.
 pub fn xu2007_coefficient(p_h_gpa: f64, sr: f64, v_e: f64, nu0_cp: f64, r: f64, s_um: f64) -> f64 {
-    let (b, sr) = (&XU2007_B, sr.abs());
-    let positive = |x: f64| x > 0.0 && x.is_finite();
-    if !([p_h_gpa, sr, v_e, nu0_cp, r].into_iter().all(positive) && s_um.is_finite()) {
-        return 0.0;
+    XuConstants::new(nu0_cp, s_um).coefficient(p_h_gpa, sr, v_e, r)
+}
+
+/// The terms of [`xu2007_coefficient`] that depend only on the viscosity and the roughness
+/// (constant over an evaluation), computed once; the coefficient from them is the same
+/// bit for bit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct XuConstants {
+    /// `nu0` positive and finite, `S` finite (else the coefficient is 0).
+    valid: bool,
+    log10_nu0: f64,
+    ln_nu0: f64,
+    exp_s: f64,
+}
+
+impl XuConstants {
+    /// For the inlet viscosity `nu0_cp` (cP) and the composite RMS roughness `s_um` (um).
+    pub fn new(nu0_cp: f64, s_um: f64) -> Self {
+        Self {
+            valid: nu0_cp > 0.0 && nu0_cp.is_finite() && s_um.is_finite(),
+            log10_nu0: nu0_cp.log10(),
+            ln_nu0: nu0_cp.ln(),
+            exp_s: s_um.exp(),
+        }
     }
-    let x = sr * p_h_gpa * nu0_cp.log10();
-    let f = b[0] + b[3] * x + b[4] * (-x).exp() + b[8] * s_um.exp(); // finite or +inf: b5, b9 > 0
-    let powers = b[1] * p_h_gpa.ln() + b[2] * sr.ln() + b[5] * v_e.ln();
-    (f + powers + b[6] * nu0_cp.ln() + b[7] * r.ln()).exp()
+
+    /// [`xu2007_coefficient`] at `P_h` (GPa), `SR`, `V_e` (m/s) and `R` (regression unit).
+    #[inline]
+    pub fn coefficient(&self, p_h_gpa: f64, sr: f64, v_e: f64, r: f64) -> f64 {
+        let (b, sr) = (&XU2007_B, sr.abs());
+        let positive = |x: f64| x > 0.0 && x.is_finite();
+        if !([p_h_gpa, sr, v_e, r].into_iter().all(positive) && self.valid) {
+            return 0.0;
+        }
+        let x = sr * p_h_gpa * self.log10_nu0;
+        let f = b[0] + b[3] * x + b[4] * (-x).exp() + b[8] * self.exp_s; // finite or +inf: b5, b9 > 0
+        let powers = b[1] * p_h_gpa.ln() + b[2] * sr.ln() + b[5] * v_e.ln();
+        (f + powers + b[6] * self.ln_nu0 + b[7] * r.ln()).exp()
+    }
 }
 
 /// Which coefficient law, with its parameters.
@@ -91,11 +121,23 @@ impl Friction {
         viscosity_cp: f64,
         roughness_um: f64,
     ) -> f64 {
+        self.coefficient_with(h, k, &XuConstants::new(viscosity_cp, roughness_um))
+    }
+
+    /// As [`Friction::coefficient`] with the viscosity and roughness terms computed once
+    /// ([`XuConstants`]; the same value bit for bit).
+    #[inline]
+    pub fn coefficient_with(
+        &self,
+        h: &HertzContact,
+        k: &SurfaceKinematics,
+        xu: &XuConstants,
+    ) -> f64 {
         match self.law {
             FrictionLaw::Xu2007(scale) => {
                 let (p_h, r) = (h.max_pressure_pa * 1e-9, h.effective_radius_m * scale);
                 let (sr, v_e) = (k.slide_to_roll_ratio(), k.entraining_velocity_m_per_s());
-                xu2007_coefficient(p_h, sr, v_e, viscosity_cp, r, roughness_um)
+                xu.coefficient(p_h, sr, v_e, r)
             }
             FrictionLaw::Constant(mu) => mu,
             FrictionLaw::None => 0.0,

@@ -24,7 +24,7 @@ use super::excitation::{ExternalError, PairGap};
 use super::params::DynamicParams;
 use super::tooth_mesh::ToothMesh;
 use crate::config::case::{LoadSharingModel, SpeedBoundary};
-use crate::contact::friction::Friction;
+use crate::contact::friction::{Friction, XuConstants};
 use crate::contact::hertz::HertzContact;
 use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::load_sharing::pedrero_shares;
@@ -172,6 +172,8 @@ pub struct GearSystem<'a> {
     q_ext: SVector<f64, NDOF>,
     /// sin and cos of the operating pressure angle.
     sin_cos_phi: (f64, f64),
+    /// The friction law's terms of the viscosity and roughness (constant here).
+    xu: XuConstants,
     /// A time-varying nominal speed and load (transient simulations), or None for the
     /// constant operating point of `params`.
     drive: Option<&'a Drive>,
@@ -278,6 +280,7 @@ impl<'a> GearSystem<'a> {
         grad[PHI_P] = pair.pinion.base_radius_m;
         grad[PHI_G] = -pair.gear.base_radius_m;
         let c_m = params.mesh_damping_n_s_per_m(pair, mesh.mean_stiffness_n_per_m());
+        let xu = XuConstants::new(parts.viscosity_cp, parts.roughness_um);
         Self {
             parts,
             mesh_damping_n_s_per_m: c_m,
@@ -287,6 +290,7 @@ impl<'a> GearSystem<'a> {
             grad,
             q_ext,
             sin_cos_phi: (s, co),
+            xu,
             drive: None,
         }
     }
@@ -543,12 +547,7 @@ impl<'a> GearSystem<'a> {
             let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);
             let u_s = kin.sliding_velocity_m_per_s();
             ms.sliding_m_per_s[i] = u_s;
-            let mu = self.parts.friction.coefficient(
-                &hz,
-                &kin,
-                self.parts.viscosity_cp,
-                self.parts.roughness_um,
-            );
+            let mu = self.parts.friction.coefficient_with(&hz, &kin, &self.xu);
             ms.friction_coefficient[i] = mu;
             // Positive when the pinion surface is faster; acts on the pinion along +e.
             ms.friction_n[i] = mu * w * self.parts.friction.direction(u_s);

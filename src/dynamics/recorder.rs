@@ -28,6 +28,34 @@ pub struct Recorder {
     pub dte_int: f64,
     /// Mesh periods of the recorded period (0 or 1: one).
     pub excitation_periods: usize,
+    /// The last step-end evaluation, offered to the next point and step (see
+    /// [`Evaluation`]).
+    last: Option<Evaluation>,
+}
+
+/// One right-hand-side evaluation kept for reuse. A step's end is the next point and the
+/// next step's start: the same time and state, evaluated with the pairs and the contact
+/// mode the step held. The result depends on the frame only through the pairs decided
+/// ([`GearSystem::decided_set`]) and the mode (`GearSystem::springs`), so where both
+/// agree the kept result is the one a new evaluation would give, bit for bit; elsewhere
+/// (a mesh event, a contact switch) it is evaluated anew.
+struct Evaluation {
+    t: f64,
+    y: State,
+    set: (f64, usize),
+    mode: ContactMode,
+    dy: State,
+    ms: MeshState,
+}
+
+impl Evaluation {
+    fn is_at(&self, t: f64, y: &State, set: (f64, usize)) -> bool {
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        same(self.t, t)
+            && same(self.set.0, set.0)
+            && self.set.1 == set.1
+            && self.y.iter().zip(y.iter()).all(|(a, b)| same(*a, *b))
+    }
 }
 
 impl Recorder {
@@ -95,7 +123,16 @@ impl Recorder {
 
 impl PeriodObserver for Recorder {
     fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State) {
-        let (dy, ms) = sys.derivative(ContactFrame::decided_at(decide), t, y);
+        let frame = ContactFrame::decided_at(decide);
+        let set = sys.decided_set(frame, t);
+        let kept = self
+            .last
+            .as_ref()
+            .filter(|e| e.is_at(t, y, set) && sys.natural_mode_in(frame, t, y) == e.mode);
+        let (dy, ms) = match kept {
+            Some(e) => (e.dy, e.ms),
+            None => sys.derivative(frame, t, y),
+        };
         record(
             &mut self.sig,
             t,
@@ -127,8 +164,24 @@ impl PeriodObserver for Recorder {
         // interpolant of the step's ends (fourth order; the force is smooth inside a
         // step, which never crosses a mesh event or a contact switch).
         let frame = ContactFrame::frozen(t + 0.5 * h, mode);
-        let (f0, ms0) = sys.derivative(frame, t, y0);
+        let set = sys.decided_set(frame, t);
+        let kept = self
+            .last
+            .as_ref()
+            .filter(|e| e.mode == mode && e.is_at(t, y0, set));
+        let (f0, ms0) = match kept {
+            Some(e) => (e.dy, e.ms),
+            None => sys.derivative(frame, t, y0),
+        };
         let (f1, ms1) = sys.derivative(frame, t + h, y1);
+        self.last = Some(Evaluation {
+            t: t + h,
+            y: *y1,
+            set,
+            mode,
+            dy: f1,
+            ms: ms1,
+        });
         let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
         let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
         let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);

@@ -345,6 +345,20 @@ impl GearPair {
             .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
     }
 
+    /// What [`GearPair::pairs_in_contact_decided`] takes from `decide_rad`: the mesh
+    /// cycle's start (the floor of the phase in mesh angles) and the number of pairs. Two
+    /// decision angles with the same key give the same pairs at every phase.
+    pub fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
+        let period = self.mesh_angle_rad();
+        let cycle = (decide_rad / period).floor();
+        let rho_decide =
+            self.rho_start_m + self.pinion.base_radius_m * (decide_rad - cycle * period);
+        let n = (0..self.max_pairs())
+            .filter(|k| rho_decide + *k as f64 * self.base_pitch_m <= self.rho_end_m + 1e-15)
+            .count();
+        (cycle, n)
+    }
+
     /// The mesh cycle under way at pinion rotation `decide_rad` (rad since t = 0): the
     /// pair that entered contact at the start of the current mesh period, as
     /// [`GearPair::pairs_in_contact_decided`] counts it (pair k of the contact set is

@@ -124,6 +124,24 @@ impl GearSystem<'_> {
         self.springs(frame, t_s, &y.as_slice()[..NDOF], &y.as_slice()[NDOF..])
     }
 
+    /// What an evaluation in `frame` at time t takes from the frame's decision time (see
+    /// [`crate::geometry::GearPair::decided_set`]): evaluations at the same time and
+    /// state whose keys and contact modes agree give the same result bit for bit.
+    pub fn decided_set(&self, frame: ContactFrame, t_s: f64) -> (f64, usize) {
+        let decide = self.phase_at(frame.decision_time_s.unwrap_or(t_s));
+        self.parts.pair.decided_set(decide)
+    }
+
+    /// The contact mode the state is in at time t, the pairs decided as `frame` says
+    /// (its own mode, if it holds one, is ignored).
+    pub fn natural_mode_in(&self, frame: ContactFrame, t_s: f64, y: &State) -> ContactMode {
+        let natural = ContactFrame {
+            mode: None,
+            ..frame
+        };
+        ContactMode::of(&self.springs_of(natural, t_s, y))
+    }
+
     /// The contact mode the state is in at time t.
     pub fn natural_mode(&self, t_s: f64, y: &State) -> ContactMode {
         ContactMode::of(&self.springs_of(ContactFrame::NATURAL, t_s, y))
