@@ -43,6 +43,14 @@ fn commented(case: &Case, header: &str) -> String {
             } else {
                 out.push_str(&format!("\n[{section}]\n"));
             }
+            // The spectrum's bins are a list of tables, not a schema key: written as the
+            // resolved inline list (a `file` read, hours and rpm converted), so the text
+            // reads back to the same case.
+            if let Some(bins) = tree.get(section).and_then(|t| t.get("bins")) {
+                out.push_str(&format!(
+                    "# The bins: torque_nm [N m], input_speed_hz [Hz], share of the load cycles.\nbins = {bins}\n"
+                ));
+            }
             current = section;
         }
         out.push_str(&format!(
@@ -179,6 +187,20 @@ pub fn markdown_reference(case: &Case) -> String {
 mod tests {
     use super::*;
     use crate::config::load_case;
+
+    /// Round trip (an invariant, independent of the printed text): a case with a load
+    /// spectrum, written as its template, reads back to the same case, bins included.
+    #[test]
+    fn a_case_with_a_load_spectrum_parses_back_to_itself() {
+        let case = load_case(
+            "[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, \
+             {torque_nm = 80, input_speed_hz = 45, share = 0.3}]\ntorque_scale = 1.2\n",
+            &[],
+        )
+        .unwrap();
+        assert_eq!(case.load_spectrum.as_ref().map(|s| s.bins.len()), Some(2));
+        assert_eq!(load_case(&commented_template(&case), &[]).unwrap(), case);
+    }
 
     #[test]
     fn templates_parse_back_to_their_cases() {
