@@ -1,0 +1,197 @@
+//! The real figures, read back from their SVG as a reader reads them: the axis scale from
+//! the tick labels' text and positions, the data from the stroked segments. Fig. 8 (mesh
+//! force) of the built-in case and the mesh force of a contact-loss case: no drawn segment
+//! leaves the range of the plotted data.
+
+use std::sync::OnceLock;
+
+use gearwear::config::{load_case, Case};
+use gearwear::dynamics::excitation::ExternalError;
+use gearwear::report::artifacts::{plot_height, PLOT_W};
+use gearwear::report::dynamics::dynamics_artifacts;
+use gearwear::report::paper::section41_figures;
+use gearwear::report::plot::{layout, render_svg, Figure};
+use gearwear::study::paper::{run_paper_study, PaperStudy};
+use gearwear::study::wear_loop::{WearMode, WearRun};
+use gearwear::study::Model;
+use gearwear::wear::WearState;
+
+/// The built-in case and its whole study (4e4 cycles: ~0.2 s of CPU in release).
+fn paper() -> &'static (Model, PaperStudy) {
+    static CELL: OnceLock<(Model, PaperStudy)> = OnceLock::new();
+    CELL.get_or_init(|| {
+        let model = Model::from_case(&Case::default()).expect("the built-in case builds");
+        let (d, q) = (
+            WearRun::new(WearMode::Dynamic),
+            WearRun::new(WearMode::QuasiStatic),
+        );
+        let study = run_paper_study(&model, d, q, &|_, _| Ok(())).expect("the study runs");
+        (model, study)
+    })
+}
+
+/// Value of attribute `name` in the opening tag `tag` (up to its first '>').
+fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let head = tag.split('>').next()?;
+    let start = head.find(&format!(" {name}=\""))? + name.len() + 3;
+    head[start..].split('"').next()
+}
+
+/// A stroked `<polyline>`: its colour ("#RRGGBB"), stroke width and points in pixels.
+struct Stroke {
+    color: String,
+    width: f64,
+    points: Vec<(f64, f64)>,
+}
+
+fn strokes(svg: &str) -> Vec<Stroke> {
+    svg.split("<polyline")
+        .skip(1)
+        .filter_map(|t| {
+            let points = attr(t, "points")?
+                .split_whitespace()
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect();
+            Some(Stroke {
+                color: attr(t, "stroke")?.to_string(),
+                width: attr(t, "stroke-width")?.parse().ok()?,
+                points,
+            })
+        })
+        .collect()
+}
+
+/// The numeric tick labels of the y axis: (pixel y of the label's anchor, value). plotters
+/// writes them right-aligned (`text-anchor="end"`), anchored on the tick's pixel row.
+fn y_ticks(svg: &str) -> Vec<(f64, f64)> {
+    svg.split("<text")
+        .skip(1)
+        .filter(|t| attr(t, "text-anchor") == Some("end"))
+        .filter_map(|t| {
+            let text = t.split_once('>')?.1.split("</text>").next()?.trim();
+            Some((attr(t, "y")?.parse().ok()?, text.parse().ok()?))
+        })
+        .collect()
+}
+
+/// The y axis as the tick labels show it: value = a + b * pixel_y, fitted through the two
+/// outermost labels; every other label must lie on it to within 1 px (their positions are
+/// whole pixels), or the scale is not linear and the test cannot read it.
+fn y_scale(svg: &str) -> (f64, f64) {
+    let ticks = y_ticks(svg);
+    assert!(ticks.len() >= 3, "too few y tick labels: {ticks:?}");
+    let (lo, hi) = (ticks[0], ticks[ticks.len() - 1]);
+    let b = (hi.1 - lo.1) / (hi.0 - lo.0);
+    let a = lo.1 - b * lo.0;
+    for (py, v) in &ticks {
+        assert!(
+            ((v - a) / b - py).abs() <= 1.0,
+            "tick {v} at {py} px off the scale"
+        );
+    }
+    (a, b)
+}
+
+/// Stroke of one drawn curve: 2 px (`draw.rs`); axes, grid and markers are 1 px.
+const CURVE_STROKE_PX: f64 = 2.0;
+
+/// Tolerance in pixels: plotters rounds each data point to a whole pixel (0.5 px) and the
+/// tick labels are anchored on whole pixels (0.5 px more on the fitted scale); a segment
+/// past the data by one pixel or more (the reported spikes ran hundreds of pixels) fails.
+const TOL_PX: f64 = 1.0;
+
+/// Checks from the SVG of `fig` (one panel) that every stroked piece of every curve is a
+/// single straight segment (no join, so no miter spike however the renderer draws it)
+/// with both ends inside [min, max] of the plotted y data, and that the curves reach the
+/// data's extremes (the scale is read right). Returns the number of pieces checked.
+fn assert_curves_within_data(fig: &Figure, what: &str) -> usize {
+    let (w, h) = (PLOT_W, plot_height(fig.panels.len()));
+    let svg = render_svg(fig, w, h).expect("renders");
+    let lay = layout(fig, w, h).expect("lays out");
+    let legend = lay[0].legend.unwrap_or_default();
+    let (a, b) = y_scale(&svg);
+    let ys: Vec<f64> = fig.panels[0]
+        .series
+        .iter()
+        .flat_map(|s| s.y.clone())
+        .collect();
+    let (lo, hi) = ys
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| {
+            (l.min(*y), h.max(*y))
+        });
+    let tol = TOL_PX * b.abs();
+    let in_legend = |p: &(f64, f64)| legend.contains((p.0 as i32, p.1 as i32));
+    let curves: Vec<Stroke> = strokes(&svg)
+        .into_iter()
+        .filter(|s| s.width == CURVE_STROKE_PX && !s.points.iter().all(in_legend))
+        .collect();
+    let (mut top, mut bottom) = (f64::NEG_INFINITY, f64::INFINITY);
+    for s in &curves {
+        assert_eq!(s.points.len(), 2, "{what}: a {} piece with a join", s.color);
+        for (_, py) in &s.points {
+            let v = a + b * py;
+            assert!(
+                v >= lo - tol && v <= hi + tol,
+                "{what}: a {} segment reaches {v:.1}, data in [{lo:.1}, {hi:.1}] (1 px = {:.2})",
+                s.color,
+                b.abs()
+            );
+            (top, bottom) = (top.max(v), bottom.min(v));
+        }
+    }
+    assert!(
+        (top - hi).abs() <= tol && (bottom - lo).abs() <= tol,
+        "{what}: drawn [{bottom:.1}, {top:.1}] vs data [{lo:.1}, {hi:.1}]"
+    );
+    curves.len()
+}
+
+#[test]
+fn fig08_mesh_force_is_drawn_inside_the_data_range() {
+    let (model, study) = paper();
+    let fig = section41_figures(model, study)
+        .into_iter()
+        .find(|f| f.file == "fig08_mesh_force")
+        .expect("Fig. 8 is built");
+    // Three wear states: solid, dashed and dotted, each with its force jumps (a pair
+    // entering or leaving the mesh) that plotters drew with spikes past the data.
+    assert_eq!(fig.figure.panels[0].series.len(), 3);
+    let pieces = assert_curves_within_data(&fig.figure, "fig08");
+    // 3 mesh periods of ~230 points each per curve: hundreds of pieces were checked.
+    assert!(pieces > 1000, "{pieces} pieces");
+}
+
+#[test]
+fn a_contact_loss_mesh_force_is_drawn_inside_the_data_range() {
+    // Mesh frequency near the softening resonance of `brake_speed_imposed` (tests/solver.rs
+    // `contact_loss_resonance_is_solved_at_every_point`): the teeth separate, the force
+    // drops to 0 and jumps back, the steepest steps a mesh-force plot has.
+    let sets = [
+        "operating.input_speed_hz=57".to_string(),
+        "operating.speed_boundary=brake_speed_imposed".to_string(),
+    ];
+    let model = Model::from_case(&load_case("", &sets).expect("valid case")).expect("model");
+    let r = model
+        .dynamic(&WearState::new(model.grid.len()), &ExternalError::none())
+        .expect("steady state");
+    assert_eq!(
+        r.signals
+            .mesh_force_n
+            .iter()
+            .copied()
+            .fold(f64::INFINITY, f64::min),
+        0.0,
+        "the case must lose contact"
+    );
+    let a = dynamics_artifacts(&model, &r, "new teeth");
+    let f = a
+        .figures
+        .iter()
+        .find(|f| f.path == "mesh_force.png")
+        .expect("the mesh force figure");
+    assert!(assert_curves_within_data(&f.figure, "contact loss") > 100);
+}
