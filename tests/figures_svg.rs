@@ -195,3 +195,119 @@ fn a_contact_loss_mesh_force_is_drawn_inside_the_data_range() {
         .expect("the mesh force figure");
     assert!(assert_curves_within_data(&f.figure, "contact loss") > 100);
 }
+
+/// The numeric tick labels of the x axis: (pixel x of the label's anchor, value), centred
+/// under their ticks (`text-anchor="middle"`, hanging below the axis, `dy="0.76em"`).
+fn x_ticks(svg: &str) -> Vec<(f64, f64)> {
+    svg.split("<text")
+        .skip(1)
+        .filter(|t| attr(t, "text-anchor") == Some("middle") && attr(t, "dy") == Some("0.76em"))
+        .filter_map(|t| {
+            let text = t.split_once('>')?.1.split("</text>").next()?.trim();
+            Some((attr(t, "x")?.parse().ok()?, text.parse().ok()?))
+        })
+        .collect()
+}
+
+#[test]
+fn the_life_histogram_spans_the_lives_not_zero() {
+    use gearwear::prognostics::predict::LifeSummary;
+    use gearwear::report::prognostics::life_figure;
+    // Lives clustered far from zero (a calibrated posterior): 8e6 to 9e6 cycles.
+    let lives: Vec<f64> = (0..500).map(|i| 8e6 + 2e3 * f64::from(i)).collect();
+    let life = LifeSummary {
+        samples: 500,
+        reached: 500,
+        p05: Some(8.05e6),
+        median: Some(8.5e6),
+        p95: Some(8.95e6),
+        beyond_horizon: 0,
+        unknown: 0,
+        prob_beyond_horizon: 0.0,
+        prob_beyond_horizon_bounds: (0.0, 0.0),
+        spread_reached: 0.0,
+    };
+    let fig = life_figure(&lives, &life, 1e7);
+    let (w, h) = (PLOT_W, plot_height(1));
+    let svg = render_svg(&fig, w, h).expect("renders");
+    let plot = layout(&fig, w, h).expect("lays out")[0].plot;
+    // The x axis as its labels show it (thousands of cycles), read at the plot's edges.
+    let t = x_ticks(&svg);
+    assert!(t.len() >= 3, "{t:?}");
+    let (a, b) = (t[0], t[t.len() - 1]);
+    let at = |px: f64| a.1 + (px - a.0) * (b.1 - a.1) / (b.0 - a.0);
+    let (left, right) = (at(f64::from(plot.x0)) * 1e3, at(f64::from(plot.x1)) * 1e3);
+    // The axis covers the lives (8e6-9e6) with the renderer's 5 % margins plus half a bin
+    // (1/80 of the span) each side: 7.93e6-9.07e6 up to a pixel; from 0 the data would
+    // fill 1/9 of it.
+    let span = 9e6 - 8e6;
+    let margin = (0.05 * 1.025 + 0.0125) * span + 2.0 * (right - left) / f64::from(plot.width());
+    assert!(left > 8e6 - margin && left < 8e6, "axis starts at {left}");
+    assert!(right < 9e6 + margin && right > 9e6, "axis ends at {right}");
+}
+
+#[test]
+fn a_skewed_life_spread_is_binned_on_log_cycles() {
+    use gearwear::report::prognostics::life_bins;
+    // 200 lives at 1e3 and 10 spread to 1e5: on linear bins of 0..1e5 both groups' first
+    // members share the first bin; on log10 bins over [3, 5] they are 40 bins apart.
+    let mut lives = vec![1e3; 200];
+    lives.extend((1..=10).map(|i| 1e4 * f64::from(i)));
+    let (x, counts, log) = life_bins(&lives);
+    assert!(log);
+    assert_eq!(counts.iter().sum::<f64>(), 210.0); // every life in a bin
+    assert_eq!(counts[0], 200.0);
+    // Bin centres span log10 of the lives: half a bin (1/80 of 2 decades) inside each end.
+    assert!(
+        (x[0] - (3.0 + 2.0 / 80.0)).abs() < 1e-12 && (x[39] - (5.0 - 2.0 / 80.0)).abs() < 1e-12
+    );
+    // A narrow spread stays linear.
+    let (_, _, log) = life_bins(&[8e6, 8.5e6, 9e6]);
+    assert!(!log);
+}
+
+#[test]
+fn fig12_quasi_static_panel_shows_new_teeth_over_the_last_state() {
+    use gearwear::report::wear::{spread_from_first, wear_figures};
+    let (model, study) = paper();
+    let figs = wear_figures(model, &[&study.dynamic, &study.quasi_static]);
+    let fig = &figs
+        .iter()
+        .find(|f| f.stem == "fig12_wear_rate_evolution")
+        .unwrap()
+        .figure;
+    let (dynamic, qs) = (&fig.panels[0], &fig.panels[1]);
+    // Independent of the figure: the quasi-static rate of the study's first and last
+    // records differ by < 1 % of its maximum (the quasi-static load ignores the worn
+    // profile's dynamics), the dynamic one by far more (measured 0.03 % and 20 %).
+    let rate = |r: &gearwear::study::wear_loop::UpdateRecord| r.increment_pinion_m.clone();
+    let (q0, q1) = (
+        rate(&study.quasi_static.records[0]),
+        rate(study.quasi_static.last().unwrap()),
+    );
+    let max = q0.iter().fold(0.0_f64, |a, b| a.max(*b));
+    let change = q0
+        .iter()
+        .zip(&q1)
+        .fold(0.0_f64, |a, (x, y)| a.max((x - y).abs()));
+    assert!(change < 0.01 * max, "{change} vs {max}");
+    assert!(spread_from_first(dynamic) > 0.05);
+    // The quasi-static panel says so and draws the new-teeth curve (the scale's first
+    // colour) again, dashed, last: visible on top of the final state's colour.
+    assert!(qs.title.contains("coincide"), "{}", qs.title);
+    let (first, last) = (&qs.series[0], qs.series.last().unwrap());
+    assert_eq!((first.color, &first.y), (last.color, &last.y));
+    assert_eq!(last.style, gearwear::report::plot::LineStyle::Dashed);
+    assert!(!dynamic.title.contains("coincide"));
+    // In the SVG, the first colour's pieces come after every other colour's in the panel.
+    let svg = render_svg(fig, PLOT_W, plot_height(2)).expect("renders");
+    let hex = |c: [u8; 3]| format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2]);
+    let (c0, c_end) = (
+        hex(first.color.unwrap()),
+        hex(qs.series[qs.series.len() - 2].color.unwrap()),
+    );
+    let s = strokes(&svg);
+    let last_end = s.iter().rposition(|p| p.color == c_end).unwrap();
+    let last_first = s.iter().rposition(|p| p.color == c0).unwrap();
+    assert!(last_first > last_end);
+}
