@@ -7,9 +7,12 @@
 //! every test (`fixture`), so the file costs a few seconds.
 
 use gearwear::config::Case;
-use gearwear::prognostics::calibrate::{calibrate, CalibrationSettings};
+use gearwear::prognostics::calibrate::{calibrate, Calibration, CalibrationSettings};
+use gearwear::prognostics::check::theta_at_k_quantile;
+use gearwear::prognostics::fit_check::{fit_check, normal_quantile, FitCheck};
 use gearwear::prognostics::forward::{run_trajectory, Trajectory};
 use gearwear::prognostics::likelihood::log_likelihood;
+use gearwear::prognostics::likelihood::noise_scales;
 use gearwear::prognostics::mcmc::{ensemble_sample, McmcSettings};
 use gearwear::prognostics::observations::{Observations, Series};
 use gearwear::prognostics::predict::{
@@ -407,4 +410,119 @@ fn results_do_not_depend_on_the_thread_count() {
         mean(&a.samples.iter().map(|t| t[0]).collect::<Vec<_>>()),
         mean(&b.samples.iter().map(|t| t[0]).collect::<Vec<_>>())
     );
+}
+
+/// Gaussian noise without a random draw: the standard normal quantiles at (i + 0.5) / n
+/// times sigma, taken in the order i = 3 j mod n (3 coprime to n = 10), so the residuals
+/// do not trend with the cycle count. Their largest size, Phi^-1(0.95) = 1.645 sigma, is
+/// inside the 95 % band's 1.96 sigma: the test data are fixed, and so is its outcome.
+fn stratified(sigma: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|j| sigma * normal_quantile(((3 * j) % n) as f64 / n as f64 + 0.5 / n as f64))
+        .collect()
+}
+
+/// Observations of `q` at OBS_CYCLES: `law(true value, cycles)` plus the stratified noise.
+fn observed(q: Quantity, sigma: f64, known: bool, law: &dyn Fn(f64, f64) -> f64) -> Series {
+    let f = fixture();
+    let noise = stratified(sigma, OBS_CYCLES.len());
+    Series {
+        quantity: q,
+        cycles: OBS_CYCLES.to_vec(),
+        values: OBS_CYCLES
+            .iter()
+            .zip(&noise)
+            .map(|(c, e)| law(f.truth.value(q, *c).unwrap(), *c) + e)
+            .collect(),
+        sigma: known.then(|| vec![sigma; OBS_CYCLES.len()]),
+    }
+}
+
+/// Calibrate on `series` and check the fit, as `calibrate` does.
+fn checked(series: Vec<Series>) -> (Calibration, FitCheck) {
+    let f = fixture();
+    let obs = Observations { series };
+    let mut s = settings(11);
+    s.samples = 500;
+    let cal = calibrate(&f.prior, &obs, &f.surrogate, &s, &|| {}).unwrap();
+    let med = theta_at_k_quantile(&cal, 0.5);
+    let noise = noise_scales(&obs, &|q, c| f.surrogate.value(q, &med, c));
+    let fit = fit_check(
+        &obs,
+        &cal.samples,
+        &|q, t, c| f.surrogate.value(q, t, c),
+        &noise,
+    );
+    (cal, fit)
+}
+
+#[test]
+fn data_the_model_generated_pass_the_fit_check() {
+    // Wear (sigma 0.2 um) and RMS velocity (0.02 mm/s) of the true run plus Gaussian
+    // noise, the sigma given and inferred: no warning. With the given sigma every
+    // residual is within 1.645 sigma of the truth, so an observation can leave the band
+    // only by the fit's own shift, and a warning needs more than 4 of 20 outside or one
+    // beyond 2.1 sigma (the rules at n = 20).
+    for known in [true, false] {
+        let series = EVIDENCE
+            .iter()
+            .map(|(q, s)| observed(*q, *s, known, &|v, _| v))
+            .collect();
+        let (_, fit) = checked(series);
+        assert_eq!(fit.observations, 20);
+        assert!(fit.warning.is_none(), "known {known}: {:?}", fit.warning);
+        assert!(fit.outside <= 2, "known {known}: {}", fit.outside);
+    }
+}
+
+#[test]
+fn wear_offset_by_ten_sigma_warns_naming_how_far() {
+    // The true wear plus 2 um (10 sigma). The model's wear starts at zero and grows
+    // about linearly in the cycles, so the fit can only tilt it: least squares of
+    // y = a c through the origin against an offset d over c_j = j c_1 (j = 1..10) moves
+    // a c_1 by d sum(j) / sum(j^2) = d 55 / 385, leaving 0.857 d = 8.57 sigma at the
+    // first observation; with its noise (-1.645 sigma) and less the band's 1.96 sigma
+    // that is 4.97 sigma beyond it. Tolerance 1.5 sigma: the wear curve is not exactly
+    // linear, the noise tilts the fit too, and the posterior's spread widens the band.
+    let sigma = 0.2;
+    let (_, fit) = checked(vec![observed(
+        Quantity::MaxWearPinion,
+        sigma,
+        true,
+        &|v, _| v + 10.0 * sigma,
+    )]);
+    let w = fit.warning.clone().expect("a warning");
+    println!("{w}");
+    let worst = fit.quantities[0].worst.clone().unwrap();
+    assert!(
+        (worst.excess_sigma - 4.97).abs() < 1.5,
+        "{}",
+        worst.excess_sigma
+    );
+    assert_eq!(worst.cycles, OBS_CYCLES[0]);
+    assert!(
+        w.contains(&format!("{:.1} noise sigma above", worst.excess_sigma)),
+        "{w}"
+    );
+    assert!(w.contains("max_wear_pinion_um") && !w.contains("--"), "{w}");
+}
+
+#[test]
+fn wear_of_another_law_warns() {
+    // Wear growing as the square root of the cycles (running-in), equal to the true
+    // wear at the last observation: at the first it is sqrt(10) = 3.2 times the linear
+    // law's, a difference of ~1.3 um = 6.5 sigma that no wear coefficient removes.
+    let last = OBS_CYCLES[OBS_CYCLES.len() - 1];
+    let end = fixture()
+        .truth
+        .value(Quantity::MaxWearPinion, last)
+        .unwrap();
+    let (_, fit) = checked(vec![observed(
+        Quantity::MaxWearPinion,
+        0.2,
+        true,
+        &|_, c| end * (c / last).sqrt(),
+    )]);
+    assert!(fit.warning.is_some(), "{fit:?}");
+    assert!(fit.largest_excess_sigma > fit.excess_limit_sigma, "{fit:?}");
 }

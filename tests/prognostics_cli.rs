@@ -174,6 +174,16 @@ fn calibrate_then_predict_sharded_and_merged() {
     );
     assert!(1.25e-16 < lo && lo < med && med < hi && hi < 5e-16, "{k}");
     assert_eq!(s["method"], "grid");
+    // Wear near what k0 gives: the fit check finds every observation inside its band
+    // (the rules' limits at n = 6: 3 outside, 1.8 sigma beyond), and the report says so.
+    let fit = &s["fit_check"];
+    assert_eq!(fit["observations"], 6, "{fit}");
+    assert!(fit["warning"].is_null(), "{fit}");
+    assert!(!stderr(&o).contains("does not fit"), "{}", stderr(&o));
+    let report = std::fs::read_to_string(d.path().join("cal/report.html")).unwrap();
+    assert!(
+        report.contains("Fit check: ") && report.contains("consistent with the calibrated model")
+    );
     assert_eq!(
         s["observations"][1]["noise"],
         "inferred (Jeffreys prior, marginalised)"
@@ -237,4 +247,47 @@ fn calibrate_then_predict_sharded_and_merged() {
             .unwrap()
             .contains("NaN")
     );
+}
+
+#[test]
+fn calibrating_to_data_the_model_cannot_fit_warns_and_says_so_in_the_summary_and_report() {
+    // Wear of 3 um already at 2500 cycles and barely more at 20 000 (sigma 0.1 um): a
+    // wear law through zero that is about linear in the cycles meets at most one end,
+    // whatever the wear coefficient (the prior's largest gives ~1.5 um at 5000 cycles).
+    let d = tempfile::tempdir().unwrap();
+    let case = write(d.path(), "case.toml", CASE);
+    let obs = write(
+        d.path(),
+        "obs.csv",
+        "cycles,max_wear_pinion_um,sigma_max_wear_pinion_um\n\
+         2500,3.0,0.1\n5000,3.1,0.1\n10000,3.2,0.1\n20000,3.3,0.1\n",
+    );
+    let out = d.path().join("cal");
+    let o = gearwear(&[
+        "calibrate",
+        "--config",
+        &case,
+        "--observations",
+        &obs,
+        "--out",
+        out.to_str().unwrap(),
+        "--samples",
+        "300",
+        "--check-runs",
+        "0",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("the model does not fit the observations"),
+        "{err}"
+    );
+    let s = json(&out.join("summary.json"));
+    let fit = &s["fit_check"];
+    let far = fit["largest_excess_sigma"].as_f64().unwrap();
+    assert!(far > fit["excess_limit_sigma"].as_f64().unwrap(), "{fit}");
+    assert!(err.contains(&format!("{far:.1} noise sigma")), "{err}");
+    assert!(fit["warning"].as_str().unwrap().contains("noise sigma"));
+    let report = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(report.contains("Warning: the model does not fit"));
 }

@@ -13,6 +13,7 @@ use crate::prognostics::calibrate::{calibrate, model_band, Calibration, Calibrat
 use crate::prognostics::check::{
     check_calibration, theta_at_k_quantile, worst_ratio, CalibrationCheck,
 };
+use crate::prognostics::fit_check::{fit_check, FitCheck};
 use crate::prognostics::indicator::indicators_of;
 use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
@@ -20,7 +21,9 @@ use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
 use crate::report::html::{render, Report};
 use crate::report::prognostics::{calibration_section, posterior_figure, predictive_figure};
-use crate::report::prognostics_tables::{bands_table, figure, samples_table, thetas_json};
+use crate::report::prognostics_tables::{
+    bands_table, figure, fit_check_block, samples_table, thetas_json,
+};
 use crate::report::Artifacts;
 use crate::study::budget::Budget;
 use serde_json::json;
@@ -210,6 +213,7 @@ struct Checked {
     noise: Vec<(Quantity, bool, f64)>,
     check: Vec<CalibrationCheck>,
     worst: f64,
+    fit: FitCheck,
 }
 
 impl CalibrateJob {
@@ -235,6 +239,10 @@ impl CalibrateJob {
             .collect();
         let median_theta = theta_at_k_quantile(cal, 0.5);
         let noise = noise_scales(obs, &|q, c| sur.value(q, &median_theta, c));
+        let fit = fit_check(obs, &cal.samples, &|q, t, c| sur.value(q, t, c), &noise);
+        if let Some(w) = &fit.warning {
+            observer.warning(&format!("{w}; see summary.json fit_check"));
+        }
         if o.check_runs > 0 {
             observer.note(&format!(
                 "calibrate: checking the surrogate against {} true wear run(s)",
@@ -251,6 +259,7 @@ impl CalibrateJob {
             noise,
             check,
             worst,
+            fit,
         }
     }
 
@@ -264,6 +273,7 @@ impl CalibrateJob {
         noise: &[(Quantity, bool, f64)],
         check: &[CalibrationCheck],
         worst: f64,
+        fit: &FitCheck,
         meta: &RunMetadata,
     ) -> serde_json::Value {
         let o = &self.options;
@@ -302,6 +312,7 @@ impl CalibrateJob {
             },
             "surrogate_check": check,
             "surrogate_check_max_error_over_predictive_sd": worst,
+            "fit_check": fit,
             "metadata": meta,
         })
     }
@@ -322,6 +333,7 @@ impl CalibrateJob {
             noise,
             check,
             worst,
+            fit,
         } = self.check(obs, sur, cal, observer);
         let mut art = Artifacts::default();
         art.table("posterior_samples.csv", samples_table(&cal.samples));
@@ -330,16 +342,22 @@ impl CalibrateJob {
             figure(&mut art, "posterior.png", &posterior_figure(cal), "Marginal posterior density of each calibrated parameter (solid) and its prior (dashed).", Some("posterior_samples.csv"))?,
             figure(&mut art, "posterior_band.png", &predictive_figure(obs, &bands), "Observations (points) against the model's band over the posterior samples: median, 50 % and 90 % bands of the noise-free model values.", Some("posterior_band.csv"))?,
         ];
-        art.summary = self.summary(cal, obs, sur, &noise, &check, worst, meta);
-        let notes = vec![format!(
-            "Observations: {} values of {} quantities from {src}, up to {} cycles.",
-            obs.len(),
-            obs.series.len(),
-            horizon
-        )];
+        art.summary = self.summary(cal, obs, sur, &noise, &check, worst, &fit, meta);
+        let (fit_text, fit_table) = fit_check_block(&fit);
+        let notes = vec![
+            format!(
+                "Observations: {} values of {} quantities from {src}, up to {} cycles.",
+                obs.len(),
+                obs.series.len(),
+                horizon
+            ),
+            fit_text,
+        ];
+        let mut section = calibration_section(cal, notes, figs);
+        section.tables.push(fit_table);
         let report = Report {
             title: "gearwear calibration".into(),
-            sections: vec![calibration_section(cal, notes, figs)],
+            sections: vec![section],
             footer: format!(
                 "gearwear {} | case sha256 {}",
                 meta.version, meta.case_sha256

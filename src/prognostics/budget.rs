@@ -20,6 +20,8 @@
 //! - **Bands and checks**: samples x 101 cycle counts per observed quantity for the
 //!   posterior band; the surrogate check reads every sample at every observation per
 //!   check run, and makes its true runs (at the prior's largest k: the most updates).
+//!   The fit check reads every sample at every observation once and solves two band
+//!   edges there ([`T_FIT_MEMBER`] per sample and observation).
 //! - **Prediction**: per sample 6 fan quantities x grid points (16 bytes and one surrogate
 //!   read each), kept for the fans, sorted per grid point; a shard also writes them as
 //!   JSON ([`JSON_BYTES_PER_VALUE`]). The exact forward model runs one wear study per
@@ -38,6 +40,10 @@ use crate::study::budget::{
 /// One reading of the surrogate (a quantity at a cycle count for a parameter set), s:
 /// measured 0.47 us on the reference machine with two interpolated axes; doubled.
 pub const T_VALUE: f64 = 1e-6;
+/// The fit check's work per posterior sample and observation beyond the surrogate read,
+/// s: its sort, and two band edges of about 8 Newton steps, each a normal distribution
+/// function and density (~30 ns each with libm's erfc): 1e-6 leaves a factor 2.
+pub const T_FIT_MEMBER: f64 = 1e-6;
 /// Sorting one member's value at one cycle count of a band, s (with its copies).
 pub const T_BAND: f64 = 1e-7;
 /// Memory of one cell of the exact grid posterior (centre, parameters, log-likelihood,
@@ -249,6 +255,12 @@ pub fn estimate_calibration(case: &Case, prior: &Prior, j: &CalibrationJob) -> E
         seconds: band_values * (T_VALUE + T_BAND),
         bytes: band_values * 16.0 * 2.0 + samples * 100.0,
         keys: &["samples"],
+    });
+    terms.push(Term {
+        what: "the fit check",
+        seconds: j.values as f64 * samples * (T_VALUE + T_FIT_MEMBER),
+        bytes: samples * 8.0 * rayon::current_num_threads() as f64,
+        keys: &["samples", "the observations' rows"],
     });
     let checks = j.check_runs.min(3) as f64;
     if checks > 0.0 {

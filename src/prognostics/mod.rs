@@ -15,6 +15,7 @@ pub mod band;
 pub mod budget;
 pub mod calibrate;
 pub mod check;
+pub mod fit_check;
 pub mod forward;
 pub mod grid;
 pub mod indicator;

@@ -2,10 +2,11 @@
 //! shared by both commands. Pure: results in, `Table`s, JSON and PNG bytes out.
 
 use super::artifacts::Artifacts;
-use super::html::FigureBlock;
+use super::html::{FigureBlock, TableBlock};
 use super::plot::{render_png, Figure};
 use crate::io::Table;
 use crate::prognostics::band::Band;
+use crate::prognostics::fit_check::FitCheck;
 use crate::prognostics::prior::Theta;
 use crate::prognostics::quantity::Quantity;
 use serde_json::{json, Value};
@@ -39,6 +40,70 @@ pub fn bands_table(bands: &[(Quantity, Band)]) -> Table {
         );
     }
     t
+}
+
+/// The fit check as a report paragraph (its verdict and rule) and table (a row per
+/// observed quantity).
+pub fn fit_check_block(c: &FitCheck) -> (String, TableBlock) {
+    let verdict = match &c.warning {
+        Some(w) => format!("Warning: {w}."),
+        None => "The observations are consistent with the calibrated model.".into(),
+    };
+    let text = format!(
+        "Fit check: {} of {} observations lie outside the central {:.0} % posterior predictive band (model over the posterior samples plus the noise), {:.1} expected; the furthest lies {:.2} noise sigma beyond it. The check warns above {} outside or beyond {:.2} sigma (each rule a false alarm with probability < {} for data the model generated; docs/PROGNOSTICS.md). {verdict}",
+        c.outside,
+        c.observations,
+        100.0 * c.coverage,
+        c.expected_outside,
+        c.largest_excess_sigma,
+        c.max_outside_without_warning,
+        c.excess_limit_sigma,
+        c.false_alarm_probability_per_rule,
+    );
+    let rows = c
+        .quantities
+        .iter()
+        .map(|q| {
+            let (at, band, ex) = match &q.worst {
+                Some(w) => (
+                    format!(
+                        "{} at {:e} cycles",
+                        crate::io::format_number(w.observed),
+                        w.cycles
+                    ),
+                    format!("[{:.4}, {:.4}]", w.band[0], w.band[1]),
+                    format!("{:.2} sigma ({:.4})", w.excess_sigma, w.excess),
+                ),
+                None => ("-".into(), "-".into(), "0".into()),
+            };
+            vec![
+                q.quantity.clone(),
+                q.noise.to_string(),
+                q.observations.to_string(),
+                q.outside.to_string(),
+                at,
+                band,
+                ex,
+            ]
+        })
+        .collect();
+    let table = TableBlock {
+        caption: "Fit check: observations against the central posterior predictive band, per quantity (the furthest outside, its band, and how far beyond it)".into(),
+        header: [
+            "quantity",
+            "noise",
+            "observations",
+            "outside",
+            "furthest outside",
+            "band there",
+            "beyond the band",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+        highlight_col: Some(3),
+    };
+    (text, table)
 }
 
 /// Parameter sets as JSON objects (at most [`LISTED_FAILURES`] of them).
