@@ -220,6 +220,8 @@ fn run_on_a_reduced_case_writes_every_promised_file_with_finite_numbers() {
         "fig11_force_and_wear_initial",
         "fig12_wear_rate_evolution",
         "fig13_max_accumulated_wear",
+        "worn_profiles_dynamic",
+        "worn_profiles_quasi_static",
     ];
     for f in figs {
         assert!(out.join(format!("{f}.png")).exists(), "{f}.png missing");

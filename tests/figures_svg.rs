@@ -3,32 +3,17 @@
 //! force) of the built-in case and the mesh force of a contact-loss case: no drawn segment
 //! leaves the range of the plotted data.
 
-use std::sync::OnceLock;
+mod common;
+use common::paper::paper;
 
-use gearwear::config::{load_case, Case};
+use gearwear::config::load_case;
 use gearwear::dynamics::excitation::ExternalError;
 use gearwear::report::artifacts::{plot_height, PLOT_W};
 use gearwear::report::dynamics::dynamics_artifacts;
 use gearwear::report::paper::section41_figures;
 use gearwear::report::plot::{layout, render_svg, Figure};
-use gearwear::study::paper::{run_paper_study, PaperStudy};
-use gearwear::study::wear_loop::{WearMode, WearRun};
 use gearwear::study::Model;
 use gearwear::wear::WearState;
-
-/// The built-in case and its whole study (4e4 cycles: ~0.2 s of CPU in release).
-fn paper() -> &'static (Model, PaperStudy) {
-    static CELL: OnceLock<(Model, PaperStudy)> = OnceLock::new();
-    CELL.get_or_init(|| {
-        let model = Model::from_case(&Case::default()).expect("the built-in case builds");
-        let (d, q) = (
-            WearRun::new(WearMode::Dynamic),
-            WearRun::new(WearMode::QuasiStatic),
-        );
-        let study = run_paper_study(&model, d, q, &|_, _| Ok(())).expect("the study runs");
-        (model, study)
-    })
-}
 
 /// Value of attribute `name` in the opening tag `tag` (up to its first '>').
 fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {

@@ -23,5 +23,6 @@ pub mod stiffness;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
+pub mod worn_profile;
 
 pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

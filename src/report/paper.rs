@@ -27,7 +27,7 @@ const SHOWN_PERIODS: usize = 3;
 pub struct Fig {
     /// File stem, e.g. "fig04_dte".
     pub file: String,
-    /// The paper's figure this one reproduces.
+    /// The paper's figure this one reproduces; 0: a figure beyond the paper.
     pub paper_figure: u32,
     pub caption: String,
     pub figure: Figure,
@@ -211,6 +211,10 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
     for (n, w) in (11..).zip(wear_figures(model, &runs)) {
         figs.push(fig(w.stem, n, w.figure, w.table));
     }
+    // Beyond the paper (no figure number): the worn profiles of both studies.
+    for w in super::worn_profile::worn_profile_figures(model, &runs) {
+        figs.push(fig(&w.stem, 0, w.figure, w.table));
+    }
     figs.extend(super::teeth::run_teeth_figures(model, study));
     figs
 }
@@ -246,8 +250,10 @@ pub fn run_artifacts_and_report(
         figs.into_iter()
             .map(|f| EmbeddedFigure {
                 caption: match paper {
-                    true => format!("{} (paper Fig. {}).", f.caption, f.paper_figure),
-                    false => format!("{}.", f.caption),
+                    true if f.paper_figure > 0 => {
+                        format!("{} (paper Fig. {}).", f.caption, f.paper_figure)
+                    }
+                    _ => format!("{}.", f.caption),
                 },
                 stem: f.file.to_string(),
                 figure: f.figure,

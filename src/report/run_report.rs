@@ -314,6 +314,10 @@ pub fn build_report(
             .join(", ")
     };
     let (d, q) = (&study.dynamic, &study.quasi_static);
+    let worn_figures = [d, q]
+        .iter()
+        .filter(|r| !super::worn_profile::shown_records(r).is_empty())
+        .count();
     Report {
         title,
         intro_html: intro,
@@ -354,7 +358,8 @@ pub fn build_report(
                     html::format_value(final_wear_um(d)),
                     html::format_value(final_wear_um(q)),
                 )],
-                figures: take(3),
+                // Figs. 11-13 and the worn profiles of each run that updated.
+                figures: take(3 + worn_figures),
                 tables: vec![],
             },
         ]

@@ -302,6 +302,9 @@ pub fn wear_artifacts(model: &Model, runs: &[&WearRun]) -> Artifacts {
     for f in wear_figures(model, runs) {
         a.figure_with_data(format!("{}.png", f.stem), f.figure, f.table);
     }
+    for f in super::worn_profile::worn_profile_figures(model, runs) {
+        a.figure_with_data(format!("{}.png", f.stem), f.figure, f.table);
+    }
     let find = |m: WearMode| runs.iter().copied().find(|r| r.mode == m);
     let mut v = wear_summary(find(WearMode::Dynamic), find(WearMode::QuasiStatic));
     v["warnings"] = json!(model.warnings);

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod linear;
+pub mod paper;
 
 use std::path::Path;
 use std::process::{Command, Output};
