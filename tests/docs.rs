@@ -144,3 +144,101 @@ fn no_file_cites_notes_outside_the_repository() {
         bad.join("\n")
     );
 }
+
+/// The user-facing install texts: README.md, docs/*.md, python/README.md, the examples'
+/// READMEs and the Python examples (script and notebook).
+fn install_texts() -> Vec<(PathBuf, String)> {
+    let mut files = markdown_files();
+    files.push(root().join("python/README.md"));
+    files.push(root().join("examples/duty_cycle/README.md"));
+    for e in std::fs::read_dir(root().join("python/examples")).unwrap() {
+        files.push(e.unwrap().path());
+    }
+    files
+        .into_iter()
+        .map(|p| {
+            let t = std::fs::read_to_string(&p).unwrap();
+            (p, t)
+        })
+        .collect()
+}
+
+#[test]
+fn every_cargo_install_is_locked() {
+    // `cargo install` ignores Cargo.lock unless told: without `--locked` a user builds
+    // with whatever versions are newest that day, not the tested ones.
+    let mut seen = 0;
+    for (p, t) in install_texts() {
+        for l in t.lines().filter(|l| l.contains("cargo install")) {
+            seen += 1;
+            assert!(l.contains("--locked"), "{}: {l}", p.display());
+        }
+    }
+    assert!(
+        seen >= 1,
+        "no cargo install found: the test reads the wrong files"
+    );
+}
+
+/// Top-level modules imported by Python source `code` (`import a.b`, `from a import b`).
+fn imported_modules(code: &str) -> Vec<String> {
+    code.lines()
+        .filter_map(|l| {
+            let l = l.trim().trim_start_matches('"');
+            let rest = l
+                .strip_prefix("import ")
+                .or_else(|| l.strip_prefix("from ").filter(|r| r.contains(" import ")))?;
+            let name = rest
+                .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .next()?;
+            Some(name.to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn the_examples_extra_packages_are_named_where_users_install() {
+    // Every third-party module the Python examples import is either a dependency of the
+    // package or in its `examples` extra (python/pyproject.toml), and the README's and
+    // python/README.md's install sections, and each example's own header, install that
+    // extra.
+    let pyproject = std::fs::read_to_string(root().join("python/pyproject.toml")).unwrap();
+    let line = |key: &str| {
+        pyproject
+            .lines()
+            .find(|l| l.starts_with(key))
+            .unwrap_or_else(|| panic!("no {key} in pyproject.toml"))
+            .to_string()
+    };
+    let (deps, extra) = (line("dependencies ="), line("examples ="));
+    // The standard library modules the examples use, and the package itself.
+    let own = [
+        "argparse", "pathlib", "sys", "os", "json", "math", "time", "gearwear",
+    ];
+    let mut third_party = 0;
+    for e in std::fs::read_dir(root().join("python/examples")).unwrap() {
+        let p = e.unwrap().path();
+        let code = std::fs::read_to_string(&p).unwrap();
+        for m in imported_modules(&code) {
+            if own.contains(&m.as_str()) {
+                continue;
+            }
+            third_party += 1;
+            assert!(
+                deps.contains(&format!("\"{m}")) || extra.contains(&format!("\"{m}")),
+                "{}: imports {m}, which the package does not install (examples extra: {extra})",
+                p.display()
+            );
+        }
+        assert!(
+            code.contains("./python[examples]"),
+            "{}: its header does not install the examples extra",
+            p.display()
+        );
+    }
+    assert!(third_party >= 2, "matplotlib and tqdm were not found");
+    for f in ["README.md", "python/README.md"] {
+        let t = std::fs::read_to_string(root().join(f)).unwrap();
+        assert!(t.contains("pip install \"./python[examples]\""), "{f}");
+    }
+}

@@ -1,7 +1,7 @@
 """The paper's Fig. 13 (maximum accumulated pinion wear, dynamic against quasi-static) and a
 speed sweep of the dynamic response, from gearwear's Python package.
 
-    pip install ./python matplotlib          # from the repository's root
+    pip install "./python[examples]"         # from the repository's root: gearwear, matplotlib, tqdm
     python python/examples/fig13_and_speed_sweep.py --out figures/
 
 Headless (no display): MPLBACKEND=Agg python ... The Jupyter notebook beside this file
