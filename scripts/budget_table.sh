@@ -74,6 +74,63 @@ measure predict_grid_1e4 predict --posterior out_calibrate_k/posterior_samples.c
 measure predict_shard predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --samples 100000 --shard 1/2
 measure predict_merge predict-merge out_predict_shard
 measure sweep_merge sweep-merge out_sweep_dynamics_40
+# A 1e6-row posterior (the file's range end), from the calibration's samples repeated.
+python3 - <<'PY'
+import csv
+rows = list(csv.reader(open("out_calibrate_k/posterior_samples.csv")))
+head, body = rows[0], rows[1:]
+with open("posterior_1e6.csv", "w") as f:
+    f.write(",".join(head) + "\n")
+    for i in range(1_000_000):
+        f.write(",".join(body[i % len(body)]) + "\n")
+PY
+measure predict_posterior_1e6_rows predict --posterior posterior_1e6.csv --limit-um 10 --cycles 1e5
+# The issue's run: the finest profile grid with a fine wear threshold (1.98 GB estimated,
+# 7.9 GB measured before the estimate was corrected).
+measure run_grid_1e5_threshold_0.015 run --set wear.points_per_profile=100000 --set wear.threshold_um=0.015
+# Tooth-resolved (every tooth drawn for ISO 1328-1 class 5: 589 mesh periods of excitation).
+measure dynamics_teeth_grade5 dynamics --set teeth.accuracy_grade=5
+measure wear_teeth_grade5_4e4 wear --set teeth.accuracy_grade=5 --set wear.total_cycles=4e4
+# Signals: the default record, a long fast one, a run-up (transient) and a torque fluctuation.
+measure signals_default signals
+measure signals_100khz_20s signals --set signals.sampling_rate_hz=100000 --set signals.record_length=20
+measure signals_runup_10s signals --set operating.input_speed_hz=5 --set signals.ramp_end_speed_hz=60 --set signals.record_length=10
+measure signals_torque_fluctuation_2s signals --set signals.torque_fluctuation_rms_nm=5 --set signals.record_length=2
+# A dataset (3 states x 2 speeds x 3 noise realisations, CSV records too) and its merge.
+cat > design.toml <<'TOML'
+seed = 7
+[run_to_failure]
+states = 3
+max_cycles = 2e4
+wear_limit_um = 10
+[operating]
+input_speed_hz = [20, 30]
+[records]
+noise_realisations = 3
+csv = true
+TOML
+measure dataset_12_records dataset --design design.toml
+measure dataset_merge dataset-merge out_dataset_12_records
+# Duty cycles: a measured history of 1e7 rows (the file's range end) counted into 100 x 100 classes, and a run
+# under a three-bin spectrum.
+python3 - <<'PY'
+import math
+with open("history_1e7.csv", "w") as f:
+    f.write("time_s,torque_nm,input_speed_hz\n")
+    for i in range(10_000_000):
+        t = i * 1e-3
+        f.write(f"{t:.3f},{60 + 30 * math.sin(0.7 * t):.4f},{30 + 10 * math.sin(0.13 * t):.4f}\n")
+PY
+measure load_spectrum_1e7_rows load-spectrum --history history_1e7.csv --torque-classes 100 --speed-classes 100
+cat > three_bins.toml <<'TOML'
+[load_spectrum]
+bins = [
+  { torque_nm = 40.0, input_speed_hz = 30.0, share = 0.5 },
+  { torque_nm = 60.0, input_speed_hz = 40.0, share = 0.3 },
+  { torque_nm = 80.0, input_speed_hz = 50.0, share = 0.2 },
+]
+TOML
+measure run_spectrum_3_bins run --config three_bins.toml
 
 echo
 echo "| run | command | estimated memory | measured peak (RSS) | peak / estimate | estimated time | measured time |"

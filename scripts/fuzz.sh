@@ -41,6 +41,10 @@ for target in ${FUZZ_TARGET:-case_input case_values observations posterior check
     # No sanitizer: gearwear has no unsafe code of its own; what the fuzzer looks for is a
     # panic (debug assertions are on), an abort, a hang (-timeout) or a memory blow-up
     # (-rss_limit_mb), and an uninstrumented build runs several times faster.
+    # A real checkpoint is 90-120 kB (its seeds): a shorter max_len would truncate every
+    # seed, and the records would never reach the model check.
+    max_len=16384
+    [[ "$target" == checkpoint ]] && max_len=262144
     "${cargo_cmd[@]}" fuzz run --sanitizer none "$target" "$corpus" -- \
-        "${limit[@]}" -max_len=16384 -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
+        "${limit[@]}" -max_len="$max_len" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
 done

@@ -22,26 +22,12 @@ use crate::study::wear_loop::{UpdateRecord, WearMode};
 use rayon::prelude::*;
 use serde::Serialize;
 
-/// The pinion profiles a record holds with their per-cycle wear: every tooth's when the
-/// mesh is tooth-resolved (the life ends at the most worn tooth), else the common one.
-fn pinion_profiles(r: &UpdateRecord) -> Vec<(&[f64], &[f64])> {
-    match (&r.wear.teeth, &r.increment_teeth) {
-        (Some(h), Some(d)) => h
-            .pinion_m
-            .iter()
-            .zip(&d.pinion_m)
-            .map(|(h, d)| (h.as_slice(), d.as_slice()))
-            .collect(),
-        _ => vec![(r.wear.pinion_m.as_slice(), r.increment_pinion_m.as_slice())],
-    }
-}
-
 /// Cycles at which the maximum pinion wear of `records` (each with its per-cycle wear
 /// for the block after it; of any tooth when per tooth) first reaches `limit_m`, within
 /// `end` cycles (the last block ends there); None if not reached.
 pub fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Option<f64> {
     for (j, r) in records.iter().enumerate() {
-        let profiles = pinion_profiles(r);
+        let profiles = r.pinion_profiles();
         if profiles
             .iter()
             .any(|(h, _)| h.iter().any(|x| *x >= limit_m))

@@ -22,7 +22,7 @@ use crate::duty::life::first_crossing;
 use crate::duty::wear::{run_spectrum_wear, SpectrumRun};
 use crate::duty::SpectrumModel;
 use crate::study::model::{Model, ModelError};
-use crate::study::wear_loop::{run_wear, UpdateRecord, WearMode, WearRun};
+use crate::study::wear_loop::{run_wear, ProfileAndIncrement, UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -53,11 +53,12 @@ pub enum Crossing {
     Unknown,
 }
 
-/// Largest value of h_i + n inc_i, m.
-fn max_after(h: &[f64], inc: &[f64], n: f64) -> f64 {
-    h.iter()
-        .zip(inc)
-        .fold(0.0_f64, |m, (a, d)| m.max(a + n * d))
+/// Largest value of h_i + n inc_i over every profile (each tooth's when the mesh is
+/// tooth-resolved: the deepest wear is on one tooth, as the wear study reports it), m.
+fn max_after(profiles: &[ProfileAndIncrement], n: f64) -> f64 {
+    profiles.iter().fold(0.0_f64, |m, (h, inc)| {
+        h.iter().zip(*inc).fold(m, |m, (a, d)| m.max(a + n * d))
+    })
 }
 
 impl Trajectory {
@@ -86,8 +87,8 @@ impl Trajectory {
         let r = &self.records[j];
         let n = (cycles - r.wear.cycles).max(0.0);
         Some(match q {
-            Quantity::MaxWearPinion => max_after(&r.wear.pinion_m, &r.increment_pinion_m, n) * 1e6,
-            Quantity::MaxWearGear => max_after(&r.wear.gear_m, &r.increment_gear_m, n) * 1e6,
+            Quantity::MaxWearPinion => max_after(&r.pinion_profiles(), n) * 1e6,
+            Quantity::MaxWearGear => max_after(&r.gear_profiles(), n) * 1e6,
             _ => match self.records.get(j + 1) {
                 Some(next) if next.wear.cycles > r.wear.cycles => {
                     let t = (n / (next.wear.cycles - r.wear.cycles)).min(1.0);

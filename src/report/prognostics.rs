@@ -156,17 +156,63 @@ pub fn fan_figure(title: &str, bands: &[(Quantity, Band)], limit_um: Option<f64>
     }
 }
 
-/// Histogram of the cycles to the wear limit (samples that reach it), with the 5 %,
-/// median and 95 % marked.
-pub fn life_figure(lives: &[f64], life: &LifeSummary, horizon: f64) -> Figure {
-    let (scale, label) = cycle_axis(horizon);
+/// Lives spanning at least this ratio (largest / smallest) are binned on a log scale:
+/// equal linear bins would put most samples of a skewed spread into the first bin.
+const LOG_LIFE_RATIO: f64 = 10.0;
+
+/// Bins of the histogram of `lives`: 40 equal bins over [smallest, largest] life, on
+/// log10(cycles) when the lives span [`LOG_LIFE_RATIO`] or more. Returns the bin centres
+/// in axis units, the count per bin, and whether the axis is log10.
+pub fn life_bins(lives: &[f64]) -> (Vec<f64>, Vec<f64>, bool) {
     let bins = 40;
-    let hi = lives.iter().copied().fold(0.0, f64::max).max(1.0);
-    let w = hi / bins as f64;
-    let mut counts = vec![0.0; bins];
-    for l in lives {
-        counts[((l / w) as usize).min(bins - 1)] += 1.0;
+    let ok: Vec<f64> = lives
+        .iter()
+        .copied()
+        .filter(|l| l.is_finite() && *l > 0.0)
+        .collect();
+    let (lo, hi) = ok
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(a, b), l| (a.min(*l), b.max(*l)));
+    if ok.is_empty() {
+        return (Vec::new(), Vec::new(), false);
     }
+    let log = hi / lo >= LOG_LIFE_RATIO;
+    let to_axis = |l: f64| if log { l.log10() } else { l };
+    let (a, b) = (to_axis(lo), to_axis(hi));
+    // A single value (or all equal): one bin of 1 % of the value around it.
+    let w = if b > a {
+        (b - a) / bins as f64
+    } else {
+        0.01 * a.abs().max(1.0)
+    };
+    let n = if b > a { bins } else { 1 };
+    let start = if b > a { a } else { a - 0.5 * w };
+    let mut counts = vec![0.0; n];
+    for l in &ok {
+        counts[(((to_axis(*l) - start) / w) as usize).min(n - 1)] += 1.0;
+    }
+    let centres = (0..n).map(|k| start + (k as f64 + 0.5) * w).collect();
+    (centres, counts, log)
+}
+
+/// Histogram of the cycles to the wear limit (samples that reach it), with the 5 %,
+/// median and 95 % marked. The axis spans the lives that occur (not from 0): cycles
+/// (thousands above 1e4), or log10 of the cycles when they span a decade or more.
+pub fn life_figure(lives: &[f64], life: &LifeSummary, horizon: f64) -> Figure {
+    let (centres, counts, log) = life_bins(lives);
+    let (scale, label) = cycle_axis(horizon);
+    let (to_axis, label): (Box<dyn Fn(f64) -> f64>, String) = if log {
+        (
+            Box::new(f64::log10),
+            "log10 of the cycles to the limit".into(),
+        )
+    } else {
+        (Box::new(move |c| c / scale), label.into())
+    };
+    let x: Vec<f64> = centres
+        .iter()
+        .map(|c| if log { *c } else { c / scale })
+        .collect();
     let n = life.samples.max(1) as f64;
     let mut vlines = Vec::new();
     for (v, name) in [
@@ -174,8 +220,8 @@ pub fn life_figure(lives: &[f64], life: &LifeSummary, horizon: f64) -> Figure {
         (life.median, "median"),
         (life.p95, "95 %"),
     ] {
-        if let Some(v) = v {
-            vlines.push((v / scale, name.to_string()));
+        if let Some(v) = v.filter(|v| *v > 0.0) {
+            vlines.push((to_axis(v), name.to_string()));
         }
     }
     Figure {
@@ -184,11 +230,11 @@ pub fn life_figure(lives: &[f64], life: &LifeSummary, horizon: f64) -> Figure {
             life.reached, life.samples
         ),
         panels: vec![Panel {
-            x_label: label.into(),
+            x_label: label,
             y_label: "fraction of samples per bin".into(),
             series: vec![series(
                 "",
-                (0..bins).map(|b| (b as f64 + 0.5) * w / scale).collect(),
+                x,
                 counts.iter().map(|c| c / n).collect(),
                 LineStyle::Solid,
             )],

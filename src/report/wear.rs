@@ -3,7 +3,7 @@
 
 use super::artifacts::Artifacts;
 use super::figures::{panel, points_panel, scale_panel, single, Curve};
-use super::plot::Figure;
+use super::plot::{Figure, LineStyle, Panel};
 use crate::io::Table;
 use crate::study::wear_loop::{UpdateRecord, WearRun};
 use crate::study::Model;
@@ -160,7 +160,10 @@ pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<WearFigure> {
     });
     let panels12 = panels12
         .into_iter()
-        .map(|(label, curves)| scale_panel(label, along, rate, curves, ("load cycles", lo, hi)))
+        .map(|(label, curves)| {
+            let p = scale_panel(label, along, rate, curves, ("load cycles", lo, hi));
+            show_coinciding(p, label)
+        })
         .collect();
     vec![
         WearFigure {
@@ -191,6 +194,48 @@ pub fn wear_figures(model: &Model, runs: &[&WearRun]) -> Vec<WearFigure> {
             table: t13,
         },
     ]
+}
+
+/// Largest change of a panel's curves from its first (new teeth) below which they are
+/// drawn on top of each other, as a fraction of the first curve's maximum: 1 % of a panel's
+/// ~260 px plot height is ~2.6 px, about the 2 px width of a line.
+const COINCIDE: f64 = 0.01;
+
+/// Largest |curve - first curve| over a panel's curves, as a fraction of the first curve's
+/// largest magnitude (0 for fewer than two curves).
+pub fn spread_from_first(p: &Panel) -> f64 {
+    let Some(first) = p.series.first() else {
+        return 0.0;
+    };
+    let scale = first.y.iter().fold(0.0_f64, |a, y| a.max(y.abs()));
+    let change = p.series[1..].iter().fold(0.0_f64, |a, s| {
+        s.y.iter()
+            .zip(&first.y)
+            .fold(a, |a, (y, y0)| a.max((y - y0).abs()))
+    });
+    if scale > 0.0 {
+        change / scale
+    } else {
+        change
+    }
+}
+
+/// When a panel's curves coincide (the quasi-static rate hardly changes with wear), the
+/// last drawn colour hides every other: the panel's title then says by how much they differ,
+/// and the first curve (new teeth) is drawn again, dashed, on top of the last.
+fn show_coinciding(mut p: Panel, label: &str) -> Panel {
+    let spread = spread_from_first(&p);
+    if p.series.len() < 2 || spread >= COINCIDE {
+        return p;
+    }
+    p.title = format!(
+        "{label}: all curves coincide (largest change {:.2} % of the maximum); new teeth dashed",
+        100.0 * spread
+    );
+    let mut first = p.series[0].clone();
+    first.style = LineStyle::Dashed;
+    p.series.push(first);
+    p
 }
 
 /// summary.json content of the wear study (promised keys).

@@ -79,6 +79,35 @@ pub struct UpdateRecord {
     pub end_state: Option<Vec<f64>>,
 }
 
+/// A wear profile with its wear per cycle over the block after the record (m, m per cycle).
+pub type ProfileAndIncrement<'a> = (&'a [f64], &'a [f64]);
+
+impl UpdateRecord {
+    /// The pinion profiles the record holds with their per-cycle wear: every tooth's when
+    /// the mesh is tooth-resolved (the deepest wear is on one tooth), else the common one.
+    pub fn pinion_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
+        match (&self.wear.teeth, &self.increment_teeth) {
+            (Some(h), Some(d)) => pairs(&h.pinion_m, &d.pinion_m),
+            _ => vec![(&self.wear.pinion_m, &self.increment_pinion_m)],
+        }
+    }
+
+    /// The gear's, as [`Self::pinion_profiles`].
+    pub fn gear_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
+        match (&self.wear.teeth, &self.increment_teeth) {
+            (Some(h), Some(d)) => pairs(&h.gear_m, &d.gear_m),
+            _ => vec![(&self.wear.gear_m, &self.increment_gear_m)],
+        }
+    }
+}
+
+fn pairs<'a>(h: &'a [Vec<f64>], d: &'a [Vec<f64>]) -> Vec<ProfileAndIncrement<'a>> {
+    h.iter()
+        .zip(d)
+        .map(|(h, d)| (h.as_slice(), d.as_slice()))
+        .collect()
+}
+
 /// Most of the mesh period the teeth may be apart before a wear run stops (model
 /// validity, see the module docs).
 pub const MAX_CONTACT_LOSS_FRACTION: f64 = 0.5;

@@ -9,6 +9,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::dash::dash_pieces;
 use super::layout::{free_corner, sample_polyline, stack_labels, PanelLayout, Rect};
 use super::legend::{
     draw_bar, draw_legend, marker_of, measure_bar, measure_legend, series_color, GAP,
@@ -387,7 +388,6 @@ where
     for (i, (s, p)) in panel.series.iter().zip(pts).enumerate() {
         let color = series_color(i, s);
         let line = color.stroke_width(2);
-        let dashes = |on, off| DashedLineSeries::new(p.iter().copied(), on, off, line);
         let drawn = match (panel.kind, s.style) {
             (PanelKind::Bars, _) => chart
                 .draw_series(
@@ -411,8 +411,9 @@ where
                         .map(|w| PathElement::new(vec![w[0], w[1]], line)),
                 )
                 .map(|_| ()),
-            (_, LineStyle::Dashed) => chart.draw_series(dashes(10, 6)).map(|_| ()),
-            (_, LineStyle::Dotted) => chart.draw_series(dashes(2, 4)).map(|_| ()),
+            // Dashes cut at every vertex, for the same reason (`dash.rs`).
+            (_, LineStyle::Dashed) => draw_dashes(chart, screen, p, (10.0, 6.0), line),
+            (_, LineStyle::Dotted) => draw_dashes(chart, screen, p, (2.0, 4.0), line),
             (_, LineStyle::Points) => Ok(()), // markers only, below
         };
         drawn.map_err(draw_err)?;
@@ -431,6 +432,26 @@ where
         let font = (FONT, LABEL_FONT_PX).into_font().color(&grey);
         let text = Text::new(label.clone(), (r.x0, r.y0), font);
         screen.draw(&text).map_err(draw_err)?;
+    }
+    Ok(())
+}
+
+/// The dashed line through `p` as straight pieces (`on`, `off` in px), none across a
+/// vertex (see [`dash_pieces`]).
+fn draw_dashes<DB, Y>(
+    chart: &Chart<'_, DB, Y>,
+    screen: &DrawingArea<DB, Shift>,
+    p: &[(f64, f64)],
+    (on, off): (f64, f64),
+    line: ShapeStyle,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>>
+where
+    DB: DrawingBackend,
+    Y: Ranged<ValueType = f64>,
+{
+    let px: Vec<_> = p.iter().map(|xy| chart.backend_coord(xy)).collect();
+    for [a, b] in dash_pieces(&px, on, off) {
+        screen.draw(&PathElement::new(vec![a, b], line))?;
     }
     Ok(())
 }

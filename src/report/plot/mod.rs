@@ -8,6 +8,7 @@
 //! leave free, or else into a band right of it (`draw.rs`); [`layout`] returns where the
 //! renderer put every legend and which pixels the data cover, so tests check what is drawn.
 
+mod dash;
 mod draw;
 pub mod layout;
 mod legend;
