@@ -243,6 +243,17 @@ fn run_on_a_reduced_case_writes_every_promised_file_with_finite_numbers() {
         }
     }
     assert!(seen.len() > 5, "the report's prose was not found");
+    // The micrometre is spelled µm in the report and the headline (names keep `_um`).
+    for (what, text) in [
+        ("report.html", html.as_str()),
+        ("headline", &*String::from_utf8_lossy(&o.stdout)),
+    ] {
+        assert!(
+            !text.contains(" um") && !text.contains("(um)"),
+            "{what} spells um"
+        );
+    }
+    assert!(html.contains(" µm"));
     let mut s = json(&out.join("summary.json"));
     s.as_object_mut().unwrap().remove("metadata");
     assert!(finite_numbers_only(&s), "non-finite number in summary.json");

@@ -242,3 +242,144 @@ fn the_examples_extra_packages_are_named_where_users_install() {
         assert!(t.contains("pip install \"./python[examples]\""), "{f}");
     }
 }
+
+/// Where `text` spells the micrometre `um` as a word of its own: not part of a name
+/// (`dte_max_um`, `--limit-um`, `{w}um`), a path or a code span. Returns the lines.
+fn ascii_micrometres(text: &str) -> Vec<String> {
+    let b = text.as_bytes();
+    let name = |c: u8| c.is_ascii_alphanumeric() || b"_-`".contains(&c);
+    let mut found = Vec::new();
+    for (i, _) in text.match_indices("um") {
+        let before = if i == 0 { b' ' } else { b[i - 1] };
+        let after = b.get(i + 2).copied().unwrap_or(b' ');
+        if !name(before) && !b".{}/$".contains(&before) && !name(after) {
+            let start = text[..i].rfind('\n').map_or(0, |x| x + 1);
+            let end = text[i..].find('\n').map_or(text.len(), |x| i + x);
+            found.push(text[start..end].trim().to_string());
+        }
+    }
+    found
+}
+
+/// The string literals of Rust source (comments and character literals skipped).
+fn string_literals(src: &str) -> Vec<String> {
+    let c: Vec<char> = src.chars().collect();
+    let (mut out, mut i) = (Vec::new(), 0);
+    let at = |i: usize, s: &str| c[i..].iter().take(s.len()).copied().eq(s.chars());
+    while i < c.len() {
+        if at(i, "//") {
+            while i < c.len() && c[i] != '\n' {
+                i += 1;
+            }
+        } else if at(i, "/*") {
+            while i + 1 < c.len() && !at(i, "*/") {
+                i += 1;
+            }
+            i += 2;
+        } else if c[i] == 'r'
+            && (at(i + 1, "\"") || at(i + 1, "#"))
+            && (i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_'))
+        {
+            let hashes = c[i + 1..].iter().take_while(|x| **x == '#').count();
+            let close: String = std::iter::once('"')
+                .chain(std::iter::repeat_n('#', hashes))
+                .collect();
+            let start = i + 2 + hashes;
+            let mut j = start;
+            while j < c.len() && !at(j, &close) {
+                j += 1;
+            }
+            out.push(c[start..j.min(c.len())].iter().collect());
+            i = j + close.len();
+        } else if c[i] == '\'' {
+            // A character literal ('x', '\n', '"'), else a lifetime.
+            if c.get(i + 1) == Some(&'\\') {
+                i += c[i + 2..]
+                    .iter()
+                    .position(|x| *x == '\'')
+                    .map_or(1, |p| p + 3);
+            } else if c.get(i + 2) == Some(&'\'') {
+                i += 3;
+            } else {
+                i += 1;
+            }
+        } else if c[i] == '"' {
+            let mut j = i + 1;
+            while j < c.len() && c[j] != '"' {
+                j += if c[j] == '\\' { 2 } else { 1 };
+            }
+            out.push(c[i + 1..j.min(c.len())].iter().collect());
+            i = j + 1;
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+#[test]
+fn the_micrometre_is_spelled_one_way_in_user_facing_text() {
+    // Prose, messages, plots and reports write `µm`; names that programs read (CSV
+    // columns, case keys, JSON keys, flags, the dataset index's units) keep ASCII `_um`
+    // / `um` (docs/CONFIG.md, "Units"). The check: no string literal of the library,
+    // the CLI or the Python binding, and no documentation page, spells it `um`.
+    let mut sources = Vec::new();
+    repository_files(&root().join("src"), &mut sources);
+    repository_files(&root().join("python/src"), &mut sources);
+    // Unit metadata of dataset files, read by programs like the column names.
+    let data_names = root().join("src/study/dataset/index.rs");
+    let mut bad = Vec::new();
+    let mut literals = 0;
+    for p in sources
+        .iter()
+        .filter(|p| p.extension().is_some_and(|x| x == "rs") && **p != data_names)
+    {
+        let text = std::fs::read_to_string(p).unwrap();
+        for s in string_literals(&text) {
+            literals += 1;
+            bad.extend(
+                ascii_micrometres(&s)
+                    .into_iter()
+                    .map(|l| format!("{}: {l}", p.display())),
+            );
+        }
+    }
+    assert!(
+        literals > 1000,
+        "{literals} string literals: the scan is broken"
+    );
+    let mut docs = markdown_files();
+    docs.push(root().join("python/README.md"));
+    for d in ["python/gearwear", "python/examples"] {
+        for e in std::fs::read_dir(root().join(d)).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension()
+                .is_some_and(|x| x == "py" || x == "pyi" || x == "ipynb")
+            {
+                docs.push(p);
+            }
+        }
+    }
+    for p in docs {
+        let text = std::fs::read_to_string(&p).unwrap();
+        bad.extend(
+            ascii_micrometres(&text)
+                .into_iter()
+                .map(|l| format!("{}: {l}", p.display())),
+        );
+    }
+    assert!(
+        bad.is_empty(),
+        "`um` where user-facing text writes `µm`:\n{}",
+        bad.join("\n")
+    );
+    // The scanner itself: a unit word is found, names are not.
+    assert_eq!(
+        ascii_micrometres("wear 5 um, (um) and dte_max_um --limit-um {w}um").len(),
+        2
+    );
+    assert_eq!(
+        string_literals("let a = '\"'; // \"x um\"\nlet b = \"5 um\";"),
+        vec!["5 um"]
+    );
+}

@@ -28,7 +28,7 @@ use nalgebra::SMatrix;
 #[derive(Debug, Clone, thiserror::Error)]
 #[error(
     "the integrator failed at t = {time_s:.6e} s (mesh phase {phase_deg:.3} deg of the \
-     mesh period; DTE {dte_um:.4} um, mesh force {force_n:.1} N): {reason}; {}",
+     mesh period; DTE {dte_um:.4} µm, mesh force {force_n:.1} N): {reason}; {}",
     advice(*.intervals, *.tolerance)
 )]
 pub struct StepFailure {

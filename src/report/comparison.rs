@@ -77,7 +77,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
     let states = &study.wear_states;
     let dte_change = match (states.first(), states.last()) {
         (Some(a), Some(b)) => format!(
-            "Our max DTE changes by {:+.2} um between {} and {} um of wear",
+            "Our max DTE changes by {:+.2} µm between {} and {} µm of wear",
             (b.summary.dte_max_m - a.summary.dte_max_m) * 1e6,
             a.max_wear_um,
             b.max_wear_um
@@ -114,21 +114,21 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
         let w = s.max_wear_um;
         out.push(Compared {
             key: format!("dte_max_um_at_{w}um_wear"),
-            quantity: format!("max DTE at {w} um wear (um)"),
+            quantity: format!("max DTE at {w} µm wear (µm)"),
             ours: s.summary.dte_max_m * 1e6,
             paper: PAPER_DTE_MAX_UM[i],
             explanation: why.dte.clone(),
         });
         out.push(Compared {
             key: format!("velocity_y_pinion_rms_mm_per_s_at_{w}um_wear"),
-            quantity: format!("RMS of dy_p/dt at {w} um wear (mm/s)"),
+            quantity: format!("RMS of dy_p/dt at {w} µm wear (mm/s)"),
             ours: s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
             paper: PAPER_VEL_RMS_MM_S[i],
             explanation: why.velocity.clone(),
         });
         out.push(Compared {
             key: format!("mesh_force_mean_n_at_{w}um_wear"),
-            quantity: format!("mean mesh force at {w} um wear (N)"),
+            quantity: format!("mean mesh force at {w} µm wear (N)"),
             ours: s.summary.mesh_force_mean_n,
             paper: PAPER_FORCE_MEAN_N[i],
             explanation: why.force.clone(),

@@ -88,7 +88,7 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     )];
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         lines.push(format!(
-            "new teeth: max DTE {:.4} um, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
+            "new teeth: max DTE {:.4} µm, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
             s.dte_max_m * 1e6,
             s.mesh_force_mean_n,
             s.dynamic_factor,
@@ -101,7 +101,7 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
         wear_at_um(&study.quasi_static, at),
     );
     lines.push(format!(
-        "after {} cycles{}: maximum pinion wear {d:.4} um dynamic, {q:.4} um quasi-static (ratio {:.4})",
+        "after {} cycles{}: maximum pinion wear {d:.4} µm dynamic, {q:.4} µm quasi-static (ratio {:.4})",
         cycles_words(at),
         super::wear::ratio_where(&[&study.dynamic, &study.quasi_static], at),
         d / q
@@ -204,7 +204,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
     ]);
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         rows.push(value_row(
-            "max DTE, new teeth (um)",
+            "max DTE, new teeth (µm)",
             html::format_value(s.dte_max_m * 1e6),
         ));
         rows.push(value_row(
@@ -225,7 +225,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
     let (d, q) = (&study.dynamic, &study.quasi_static);
     let rate = |r: &WearRun| super::wear::max_rate_at(r, at) * 1e9;
     rows.push(value_row(
-        &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (um)"),
+        &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (µm)"),
         format!(
             "{} / {}",
             html::format_value(wear_at_um(d, at)),
@@ -233,7 +233,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
         ),
     ));
     rows.push(value_row(
-        &format!("max pinion wear per 1000 cycles at {cycles} cycles, dynamic / quasi-static (um)"),
+        &format!("max pinion wear per 1000 cycles at {cycles} cycles, dynamic / quasi-static (µm)"),
         format!(
             "{} / {}",
             html::format_value(rate(d)),
@@ -254,9 +254,9 @@ fn states_table(study: &PaperStudy) -> TableBlock {
     TableBlock {
         caption: "Dynamic response at the three wear states.".into(),
         header: [
-            "max pinion wear (um)",
-            "roughness (um)",
-            "max DTE (um)",
+            "max pinion wear (µm)",
+            "roughness (µm)",
+            "max DTE (µm)",
             "RMS of dy_p/dt (mm/s)",
             "mean mesh force (N)",
             "dynamic factor (-)",
@@ -363,7 +363,7 @@ pub fn build_report(
                 heading: format!("Effects of wear on the dynamic response{}", tag("4.1")),
                 paragraphs: vec![
                     format!(
-                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} um, with the composite roughness the case's law gives at that depth ({} um).",
+                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} µm, with the composite roughness the case's law gives at that depth ({} µm).",
                         list(&|s| s.max_wear_um),
                         list(&|s| (s.roughness_um * 1e4).round() / 1e4),
                     ),
@@ -375,7 +375,7 @@ pub fn build_report(
             Section {
                 heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
                 paragraphs: vec![format!(
-                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} um dynamic and {} um quasi-static.",
+                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} µm dynamic and {} µm quasi-static.",
                     cycles_words(cycles_reached(study)),
                     updates_words(d.records.len().saturating_sub(1), "dynamic"),
                     updates_words(q.records.len().saturating_sub(1), "quasi-static"),

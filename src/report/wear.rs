@@ -347,7 +347,7 @@ pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
         .filter_map(|r| {
             r.last().map(|l| {
                 format!(
-                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} um",
+                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} µm",
                     r.mode.label(),
                     r.records.len() - 1,
                     crate::io::format_number(l.wear.cycles),
