@@ -178,7 +178,7 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
             sys.parts.params.gear_speed_rad_s,
         );
     }
-    path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));
+    let path = super::response::sorted_by_rho1(&path);
     // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).
     let (mut fi, mut di) = (0.0, 0.0);
     for w in nodes.windows(2) {

@@ -5,7 +5,7 @@
 
 use super::model::{ContactFrame, ContactMode, GearSystem, MeshState, State, NDOF};
 use super::period::PeriodObserver;
-use super::response::{PathSample, Signals};
+use super::response::{sorted_by_rho1, PathSample, Signals};
 
 /// Change of the displacements over one period of the periodic orbit: the drift of the
 /// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise.
@@ -115,9 +115,7 @@ impl Recorder {
                 sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
             }
         }
-        let mut path = self.path.clone();
-        path.sort_by(|a, b| a.rho1_m.total_cmp(&b.rho1_m));
-        (sig, path)
+        (sig, sorted_by_rho1(&self.path))
     }
 }
 
