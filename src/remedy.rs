@@ -137,7 +137,7 @@ impl Arg {
             Arg::Steps => "sampler steps",
             Arg::CheckRuns => "check runs",
             Arg::GridPoints => "fan grid points",
-            Arg::LimitUm => "wear limit (um)",
+            Arg::LimitUm => "wear limit (µm)",
             Arg::Cycles => "horizon (cycles)",
             Arg::BudgetScale => "a budget scale",
             Arg::NoBudget => "no budget check",

@@ -232,6 +232,30 @@ fn run_on_a_reduced_case_writes_every_promised_file_with_finite_numbers() {
     }
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert_eq!(html.matches("data:image/png;base64,").count(), figs.len());
+    // No paragraph or table cell of prose (over 80 characters) is said twice: the
+    // comparison's explanations, shared by the three wear states, are written once.
+    let mut seen = std::collections::HashSet::new();
+    for tag in ["p", "td"] {
+        for piece in html.split(&format!("<{tag}")).skip(1) {
+            let body = piece.split_once('>').map_or("", |x| x.1);
+            let text = body.split(&format!("</{tag}>")).next().unwrap_or("");
+            if text.len() > 80 && !text.contains('<') {
+                assert!(seen.insert(text.to_string()), "said twice: {text}");
+            }
+        }
+    }
+    assert!(seen.len() > 5, "the report's prose was not found");
+    // The micrometre is spelled µm in the report and the headline (names keep `_um`).
+    for (what, text) in [
+        ("report.html", html.as_str()),
+        ("headline", &*String::from_utf8_lossy(&o.stdout)),
+    ] {
+        assert!(
+            !text.contains(" um") && !text.contains("(um)"),
+            "{what} spells um"
+        );
+    }
+    assert!(html.contains(" µm"));
     let mut s = json(&out.join("summary.json"));
     s.as_object_mut().unwrap().remove("metadata");
     assert!(finite_numbers_only(&s), "non-finite number in summary.json");

@@ -310,3 +310,37 @@ fn the_built_in_case_is_quiet_and_speeds_are_taken_in_rpm_or_warned_about() {
         "{err}"
     );
 }
+
+#[test]
+fn below_the_lowest_speed_the_error_advises_more_nodes_and_the_advice_works() {
+    // 0.01 Hz on the default 200 nodes per mesh period: the fast poles ring after the
+    // first mesh event while the error scale shrinks with the speed, and the steps reach
+    // their floor (docs/MODEL.md). The advice must be the setting that helps: with 10
+    // times the nodes the run succeeds, while a 10 times tighter tolerance still fails
+    // (checked here, so the advice is tested against what the solver does).
+    let dir = tempfile::tempdir().unwrap();
+    let run = |extra: &[&str], name: &str| {
+        let out = dir.path().join(name);
+        let mut a = vec!["dynamics", "--set", "operating.input_speed_hz=0.01"];
+        a.extend(extra);
+        a.extend(["--out", out.to_str().unwrap()]);
+        gearwear(&a)
+    };
+    let o = run(&[], "default");
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("raise numerics.steps_per_mesh_period")
+            && err.contains("200 node intervals")
+            && err.contains("smaller numerics.integration_tolerance asks for smaller steps still and does not help")
+            && !err.contains("lower numerics.integration_tolerance"),
+        "{err}"
+    );
+    assert!(
+        !run(&["--set", "numerics.integration_tolerance=1e-6"], "tight")
+            .status
+            .success()
+    );
+    let o = run(&["--set", "numerics.steps_per_mesh_period=2000"], "nodes");
+    assert!(o.status.success(), "{}", stderr(&o));
+}

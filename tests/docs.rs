@@ -144,3 +144,242 @@ fn no_file_cites_notes_outside_the_repository() {
         bad.join("\n")
     );
 }
+
+/// The user-facing install texts: README.md, docs/*.md, python/README.md, the examples'
+/// READMEs and the Python examples (script and notebook).
+fn install_texts() -> Vec<(PathBuf, String)> {
+    let mut files = markdown_files();
+    files.push(root().join("python/README.md"));
+    files.push(root().join("examples/duty_cycle/README.md"));
+    for e in std::fs::read_dir(root().join("python/examples")).unwrap() {
+        files.push(e.unwrap().path());
+    }
+    files
+        .into_iter()
+        .map(|p| {
+            let t = std::fs::read_to_string(&p).unwrap();
+            (p, t)
+        })
+        .collect()
+}
+
+#[test]
+fn every_cargo_install_is_locked() {
+    // `cargo install` ignores Cargo.lock unless told: without `--locked` a user builds
+    // with whatever versions are newest that day, not the tested ones.
+    let mut seen = 0;
+    for (p, t) in install_texts() {
+        for l in t.lines().filter(|l| l.contains("cargo install")) {
+            seen += 1;
+            assert!(l.contains("--locked"), "{}: {l}", p.display());
+        }
+    }
+    assert!(
+        seen >= 1,
+        "no cargo install found: the test reads the wrong files"
+    );
+}
+
+/// Top-level modules imported by Python source `code` (`import a.b`, `from a import b`).
+fn imported_modules(code: &str) -> Vec<String> {
+    code.lines()
+        .filter_map(|l| {
+            let l = l.trim().trim_start_matches('"');
+            let rest = l
+                .strip_prefix("import ")
+                .or_else(|| l.strip_prefix("from ").filter(|r| r.contains(" import ")))?;
+            let name = rest
+                .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .next()?;
+            Some(name.to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn the_examples_extra_packages_are_named_where_users_install() {
+    // Every third-party module the Python examples import is either a dependency of the
+    // package or in its `examples` extra (python/pyproject.toml), and the README's and
+    // python/README.md's install sections, and each example's own header, install that
+    // extra.
+    let pyproject = std::fs::read_to_string(root().join("python/pyproject.toml")).unwrap();
+    let line = |key: &str| {
+        pyproject
+            .lines()
+            .find(|l| l.starts_with(key))
+            .unwrap_or_else(|| panic!("no {key} in pyproject.toml"))
+            .to_string()
+    };
+    let (deps, extra) = (line("dependencies ="), line("examples ="));
+    // The standard library modules the examples use, and the package itself.
+    let own = [
+        "argparse", "pathlib", "sys", "os", "json", "math", "time", "gearwear",
+    ];
+    let mut third_party = 0;
+    for e in std::fs::read_dir(root().join("python/examples")).unwrap() {
+        let p = e.unwrap().path();
+        let code = std::fs::read_to_string(&p).unwrap();
+        for m in imported_modules(&code) {
+            if own.contains(&m.as_str()) {
+                continue;
+            }
+            third_party += 1;
+            assert!(
+                deps.contains(&format!("\"{m}")) || extra.contains(&format!("\"{m}")),
+                "{}: imports {m}, which the package does not install (examples extra: {extra})",
+                p.display()
+            );
+        }
+        assert!(
+            code.contains("./python[examples]"),
+            "{}: its header does not install the examples extra",
+            p.display()
+        );
+    }
+    assert!(third_party >= 2, "matplotlib and tqdm were not found");
+    for f in ["README.md", "python/README.md"] {
+        let t = std::fs::read_to_string(root().join(f)).unwrap();
+        assert!(t.contains("pip install \"./python[examples]\""), "{f}");
+    }
+}
+
+/// Where `text` spells the micrometre `um` as a word of its own: not part of a name
+/// (`dte_max_um`, `--limit-um`, `{w}um`), a path or a code span. Returns the lines.
+fn ascii_micrometres(text: &str) -> Vec<String> {
+    let b = text.as_bytes();
+    let name = |c: u8| c.is_ascii_alphanumeric() || b"_-`".contains(&c);
+    let mut found = Vec::new();
+    for (i, _) in text.match_indices("um") {
+        let before = if i == 0 { b' ' } else { b[i - 1] };
+        let after = b.get(i + 2).copied().unwrap_or(b' ');
+        if !name(before) && !b".{}/$".contains(&before) && !name(after) {
+            let start = text[..i].rfind('\n').map_or(0, |x| x + 1);
+            let end = text[i..].find('\n').map_or(text.len(), |x| i + x);
+            found.push(text[start..end].trim().to_string());
+        }
+    }
+    found
+}
+
+/// The string literals of Rust source (comments and character literals skipped).
+fn string_literals(src: &str) -> Vec<String> {
+    let c: Vec<char> = src.chars().collect();
+    let (mut out, mut i) = (Vec::new(), 0);
+    let at = |i: usize, s: &str| c[i..].iter().take(s.len()).copied().eq(s.chars());
+    while i < c.len() {
+        if at(i, "//") {
+            while i < c.len() && c[i] != '\n' {
+                i += 1;
+            }
+        } else if at(i, "/*") {
+            while i + 1 < c.len() && !at(i, "*/") {
+                i += 1;
+            }
+            i += 2;
+        } else if c[i] == 'r'
+            && (at(i + 1, "\"") || at(i + 1, "#"))
+            && (i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_'))
+        {
+            let hashes = c[i + 1..].iter().take_while(|x| **x == '#').count();
+            let close: String = std::iter::once('"')
+                .chain(std::iter::repeat_n('#', hashes))
+                .collect();
+            let start = i + 2 + hashes;
+            let mut j = start;
+            while j < c.len() && !at(j, &close) {
+                j += 1;
+            }
+            out.push(c[start..j.min(c.len())].iter().collect());
+            i = j + close.len();
+        } else if c[i] == '\'' {
+            // A character literal ('x', '\n', '"'), else a lifetime.
+            if c.get(i + 1) == Some(&'\\') {
+                i += c[i + 2..]
+                    .iter()
+                    .position(|x| *x == '\'')
+                    .map_or(1, |p| p + 3);
+            } else if c.get(i + 2) == Some(&'\'') {
+                i += 3;
+            } else {
+                i += 1;
+            }
+        } else if c[i] == '"' {
+            let mut j = i + 1;
+            while j < c.len() && c[j] != '"' {
+                j += if c[j] == '\\' { 2 } else { 1 };
+            }
+            out.push(c[i + 1..j.min(c.len())].iter().collect());
+            i = j + 1;
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+#[test]
+fn the_micrometre_is_spelled_one_way_in_user_facing_text() {
+    // Prose, messages, plots and reports write `µm`; names that programs read (CSV
+    // columns, case keys, JSON keys, flags, the dataset index's units) keep ASCII `_um`
+    // / `um` (docs/CONFIG.md, "Units"). The check: no string literal of the library,
+    // the CLI or the Python binding, and no documentation page, spells it `um`.
+    let mut sources = Vec::new();
+    repository_files(&root().join("src"), &mut sources);
+    repository_files(&root().join("python/src"), &mut sources);
+    // Unit metadata of dataset files, read by programs like the column names.
+    let data_names = root().join("src/study/dataset/index.rs");
+    let mut bad = Vec::new();
+    let mut literals = 0;
+    for p in sources
+        .iter()
+        .filter(|p| p.extension().is_some_and(|x| x == "rs") && **p != data_names)
+    {
+        let text = std::fs::read_to_string(p).unwrap();
+        for s in string_literals(&text) {
+            literals += 1;
+            bad.extend(
+                ascii_micrometres(&s)
+                    .into_iter()
+                    .map(|l| format!("{}: {l}", p.display())),
+            );
+        }
+    }
+    assert!(
+        literals > 1000,
+        "{literals} string literals: the scan is broken"
+    );
+    let mut docs = markdown_files();
+    docs.push(root().join("python/README.md"));
+    for d in ["python/gearwear", "python/examples"] {
+        for e in std::fs::read_dir(root().join(d)).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension()
+                .is_some_and(|x| x == "py" || x == "pyi" || x == "ipynb")
+            {
+                docs.push(p);
+            }
+        }
+    }
+    for p in docs {
+        let text = std::fs::read_to_string(&p).unwrap();
+        bad.extend(
+            ascii_micrometres(&text)
+                .into_iter()
+                .map(|l| format!("{}: {l}", p.display())),
+        );
+    }
+    assert!(
+        bad.is_empty(),
+        "`um` where user-facing text writes `µm`:\n{}",
+        bad.join("\n")
+    );
+    // The scanner itself: a unit word is found, names are not.
+    assert_eq!(
+        ascii_micrometres("wear 5 um, (um) and dte_max_um --limit-um {w}um").len(),
+        2
+    );
+    assert_eq!(
+        string_literals("let a = '\"'; // \"x um\"\nlet b = \"5 um\";"),
+        vec!["5 um"]
+    );
+}

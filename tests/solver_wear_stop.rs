@@ -87,3 +87,67 @@ fn wear_command_writes_everything_up_to_the_stop_and_exits_zero() {
         assert!(out.join(f).exists(), "{f} missing");
     }
 }
+
+/// (cycles, max_wear_pinion_um) of an updates CSV.
+fn wear_column(path: &std::path::Path) -> Vec<(f64, f64)> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    let (c, w) = (col("cycles"), col("max_wear_pinion_um"));
+    lines
+        .map(|l| {
+            let f: Vec<f64> = l
+                .split(',')
+                .map(|x| x.parse().unwrap_or(f64::NAN))
+                .collect();
+            (f[c], f[w])
+        })
+        .collect()
+}
+
+#[test]
+fn the_ratio_of_a_stopped_run_says_at_which_cycle_count_it_is_taken() {
+    // Both modes under the fast wear: the dynamic run stops (the teeth lose contact),
+    // the quasi-static one goes on. The ratio line must name the last cycle count both
+    // reached, and its ratio must be the two wear columns' ratio there (the quasi-static
+    // one read between its updates by linear interpolation), from the written CSVs.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("w");
+    let mut args = vec!["wear", "--out", out.to_str().unwrap()];
+    for s in [
+        "wear.coefficient_m2_per_n=2.5e-14",
+        "wear.threshold_um=5",
+        "wear.total_cycles=5e4",
+    ] {
+        args.extend(["--set", s]);
+    }
+    let o = Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(&args)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let head = String::from_utf8_lossy(&o.stdout).to_string();
+    let d = wear_column(&out.join("updates_dynamic.csv"));
+    let q = wear_column(&out.join("updates_quasi_static.csv"));
+    let (d_end, q_end) = (d.last().unwrap().0, q.last().unwrap().0);
+    assert!(d_end < q_end && q_end == 5e4, "{d_end} {q_end}");
+    let j = q.partition_point(|p| p.0 < d_end);
+    let t = (d_end - q[j - 1].0) / (q[j].0 - q[j - 1].0);
+    let q_at = q[j - 1].1 + t * (q[j].1 - q[j - 1].1);
+    let ratio = d.last().unwrap().1 / q_at;
+    let line = head
+        .lines()
+        .find(|l| l.starts_with("dynamic / quasi-static"))
+        .unwrap_or_else(|| panic!("{head}"));
+    assert!(
+        line.contains(&format!("at {d_end} cycles")) && line.contains("dynamic run stopped early"),
+        "{line}"
+    );
+    let shown: f64 = line.rsplit(": ").next().unwrap().parse().unwrap();
+    // Printed to 4 decimals.
+    assert!((shown - ratio).abs() <= 5e-5, "{line}: {ratio}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["ratio_at_cycles"].as_f64(), Some(d_end));
+}

@@ -1,7 +1,7 @@
 """The paper's Fig. 13 (maximum accumulated pinion wear, dynamic against quasi-static) and a
 speed sweep of the dynamic response, from gearwear's Python package.
 
-    pip install ./python matplotlib          # from the repository's root
+    pip install "./python[examples]"         # from the repository's root: gearwear, matplotlib, tqdm
     python python/examples/fig13_and_speed_sweep.py --out figures/
 
 Headless (no display): MPLBACKEND=Agg python ... The Jupyter notebook beside this file
@@ -39,7 +39,7 @@ def fig13(case, out):
     for run, style in ((w.dynamic, "o-"), (w.quasi_static, "s--")):
         ax.plot(run.cycles, run.max_wear_pinion_um, style, label=run.mode.replace("_", "-"))
     ax.set_xlabel("load cycles")
-    ax.set_ylabel("maximum pinion wear depth (um)")
+    ax.set_ylabel("maximum pinion wear depth (µm)")
     ax.set_title("Fig. 13: maximum accumulated pinion wear")
     ax.legend()
     ax.grid(alpha=0.3)
@@ -67,7 +67,7 @@ def speed_sweep(case, out):
                 for a in (a1, a2):
                     a.axvline(v, color="grey", lw=0.8, ls=":")
                 a1.annotate(f"{h}x {f:.0f} Hz", (v, a1.get_ylim()[1]), rotation=90, va="top", fontsize=7)
-    a1.set_ylabel("max DTE (um)")
+    a1.set_ylabel("max DTE (µm)")
     a2.set_ylabel("dynamic factor (-)")
     a2.set_xlabel("input speed (Hz)")
     a1.set_title("Speed sweep, new teeth")

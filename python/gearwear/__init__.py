@@ -189,7 +189,7 @@ def dynamics(
     ``transmission_error``: None, or an external transmission error over exactly one mesh
     period as an array-like of shape (n, 2): column 0 the pinion angle in deg (strictly
     increasing, spanning one mesh period of 360/z1 deg, with or without its end point),
-    column 1 the error in um; interpolated linearly and periodically (the columns of the
+    column 1 the error in µm; interpolated linearly and periodically (the columns of the
     CLI's ``pinion_angle_deg,error_um`` file).
 
     Signals over ``numerics.evaluated_mesh_periods`` mesh periods of
@@ -203,7 +203,7 @@ def dynamics(
         te = _np.ascontiguousarray(transmission_error, dtype=_np.float64)
         if te.ndim != 2 or te.shape[1] != 2:
             raise ValueError(
-                "transmission_error: expected shape (n, 2) (pinion angle deg, error um), "
+                "transmission_error: expected shape (n, 2) (pinion angle deg, error µm), "
                 f"got {te.shape}"
             )
     n = _native.dynamics(_check_case(case), te, out=_path(out), budget_scale=budget_scale, replace=replace)
@@ -245,7 +245,7 @@ def run(
     replace: bool = False,
 ) -> RunResult:
     """The paper's whole section 4, as ``gearwear run``: mesh stiffness, the dynamic and
-    quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 um of wear, the
+    quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 µm of wear, the
     comparison with the paper's numbers, figures 2 and 4-13 and the HTML report.
 
     ``out``: a folder to write the same output set as ``gearwear run --out DIR`` (summary,
@@ -443,7 +443,7 @@ def predict(
     samples as a DataFrame, mapping, structured array or CSV path (columns
     ``wear_coefficient_m2_per_n`` and optionally ``roughness_scale``,
     ``load_torque_nm``). ``limit_um``: the wear limit on the maximum pinion wear depth,
-    um; ``cycles``: the horizon, pinion load cycles. ``samples``: ensemble size (default:
+    µm; ``cycles``: the horizon, pinion load cycles. ``samples``: ensemble size (default:
     every posterior row, or 2000 prior draws); ``grid_points`` cycle counts of the fan
     charts; ``forward``: ``"surrogate"`` (fast) or ``"exact"`` (one wear study per
     sample); ``shard``: ``"I/N"`` or ``(I, N)`` (join the shards' ``out`` folders with

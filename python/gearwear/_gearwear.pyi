@@ -102,7 +102,7 @@ def dynamics(
     replace: bool = False,
 ) -> _Result:
     """``gearwear dynamics``; ``transmission_error`` of shape (n, 2): pinion angle deg,
-    error um."""
+    error µm."""
 
 def wear(
     case: Case,

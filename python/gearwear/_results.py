@@ -205,7 +205,7 @@ class StiffnessResult(_Result):
 
     @property
     def quasi_static_te_um(self) -> np.ndarray:
-        """Quasi-static transmission error under the case's load, um; shape (n,)."""
+        """Quasi-static transmission error under the case's load, µm; shape (n,)."""
         return self.table["quasi_static_te_um"]
 
 
@@ -233,7 +233,7 @@ class DynamicsResult(_Result):
     @property
     def dte_um(self) -> np.ndarray:
         """Dynamic transmission error (relative displacement along the line of action),
-        um; shape (n,). Its maximum is ``summary["dte"]["max_um"]``."""
+        µm; shape (n,). Its maximum is ``summary["dte"]["max_um"]``."""
         return self._ts("dte_um")
 
     @property
@@ -339,12 +339,12 @@ class WearRunResult:
     def __init__(self, mode: str, updates: Table, profiles: Table):
         #: ``"dynamic"`` or ``"quasi_static"``.
         self.mode = mode
-        #: One row per update: cycles, maximum wear depths (um), wear rate (um per 1000
-        #: cycles), roughness (um), mesh force (N), DTE (um), dy_p/dt RMS and harmonics
+        #: One row per update: cycles, maximum wear depths (µm), wear rate (µm per 1000
+        #: cycles), roughness (µm), mesh force (N), DTE (µm), dy_p/dt RMS and harmonics
         #: (mm/s), friction coefficient.
         self.updates = updates
         #: Per profile point: rho1 and radii (mm), then per update i the pinion and gear
-        #: wear depth (``wear_pinion_um_u{i}``, um) and pinion wear rate (um/kcycle).
+        #: wear depth (``wear_pinion_um_u{i}``, µm) and pinion wear rate (µm/kcycle).
         self.profiles = profiles
 
     @property
@@ -354,13 +354,13 @@ class WearRunResult:
 
     @property
     def max_wear_pinion_um(self) -> np.ndarray:
-        """Largest pinion wear depth at each update, um; shape (u,) (the paper's
+        """Largest pinion wear depth at each update, µm; shape (u,) (the paper's
         Fig. 13)."""
         return self.updates["max_wear_pinion_um"]
 
     @property
     def max_wear_gear_um(self) -> np.ndarray:
-        """Largest gear wear depth at each update, um; shape (u,)."""
+        """Largest gear wear depth at each update, µm; shape (u,)."""
         return self.updates["max_wear_gear_um"]
 
     @property
@@ -375,18 +375,18 @@ class WearRunResult:
 
     @property
     def wear_pinion_um(self) -> np.ndarray:
-        """Pinion wear depth profile at each update, um; shape (u, p)."""
+        """Pinion wear depth profile at each update, µm; shape (u, p)."""
         return self._per_update("wear_pinion_um")
 
     @property
     def wear_gear_um(self) -> np.ndarray:
         """Gear wear depth at the same profile points (the gear point meeting each pinion
-        point), um; shape (u, p)."""
+        point), µm; shape (u, p)."""
         return self._per_update("wear_gear_um")
 
     @property
     def wear_rate_pinion_um_per_kcycle(self) -> np.ndarray:
-        """Pinion wear per 1000 cycles of the state at each update, um; shape (u, p)."""
+        """Pinion wear per 1000 cycles of the state at each update, µm; shape (u, p)."""
         return self._per_update("rate_pinion_um_per_kcycle")
 
     def __repr__(self) -> str:
@@ -414,7 +414,7 @@ class DutyResult:
     def ranking(self, mode: str = "dynamic") -> Table:
         """The bins of run ``mode`` ranked by their share of the pinion's wear (largest
         first): ``rank``, ``bin``, torque, speed, the shares of cycles, pinion wear, gear
-        wear and wear at the deepest point, the largest depth the bin added (um) and the
+        wear and wear at the deepest point, the largest depth the bin added (µm) and the
         wear intensity (share of wear / share of cycles)."""
         return self._tables[f"bins_{mode}"]
 

@@ -66,7 +66,7 @@ fn samples_of(te: Option<PyReadonlyArray2<'_, f64>>) -> PyResult<Option<Vec<(f64
     let a = te.as_array();
     if a.ncols() != 2 {
         return Err(PyValueError::new_err(format!(
-            "transmission_error: expected an array of shape (n, 2) (pinion angle deg, error um), got {:?}",
+            "transmission_error: expected an array of shape (n, 2) (pinion angle deg, error µm), got {:?}",
             a.shape()
         )));
     }

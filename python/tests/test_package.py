@@ -41,7 +41,7 @@ def test_public_functions_have_docstrings_with_units():
     for name in ("stiffness", "dynamics", "wear", "run", "sweep"):
         doc = getattr(gearwear, name).__doc__
         assert doc and f"gearwear {name}" in doc
-    assert "um" in gearwear.dynamics.__doc__ and "deg" in gearwear.dynamics.__doc__
+    assert "µm" in gearwear.dynamics.__doc__ and "deg" in gearwear.dynamics.__doc__
     assert "Valid" in gearwear.Case.paper().to_toml()
 
 

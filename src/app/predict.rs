@@ -480,7 +480,7 @@ pub fn prediction_artifacts(
     let fmt =
         |c: Option<f64>| c.map_or_else(|| format!("> {:.3e}", set.cycles), |x| format!("{x:.4e}"));
     art.headline = format!(
-        "cycles to {} um: median {}, 90 % [{}, {}], P(> {:.3e}) = {:.3}; {} failed sample(s)",
+        "cycles to {} µm: median {}, 90 % [{}, {}], P(> {:.3e}) = {:.3}; {} failed sample(s)",
         set.limit_um,
         fmt(life.median),
         fmt(life.p05),

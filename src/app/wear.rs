@@ -165,7 +165,7 @@ pub fn report_update(
 ) {
     if let Some(t) = tasks.iter().find(|t| t.id == mode.name()) {
         let status = format!(
-            "{updates} updates, max pinion wear {:.3} um",
+            "{updates} updates, max pinion wear {:.3} µm",
             wear.max_pinion_m() * 1e6
         );
         observer.advance(t, wear.cycles, &status);

@@ -114,6 +114,11 @@ const FORM: &str = "\
 - Number keys accept integers (`30`) and decimals (`30.0`); whole-number keys accept
   `25` and `25.0`, not `25.5`. Infinite, NaN and subnormal numbers (below 2.2e-308 in
   magnitude) are rejected everywhere, arrays included.
+- Units: names that programs read carry their unit as an ASCII suffix (keys such as
+  `wear.threshold_um`, the CSV columns such as `max_wear_pinion_um`, JSON keys, flags
+  such as `--limit-um`, the units of a dataset's index), so no reader needs a non-ASCII
+  character; text meant for people (the unit column below, messages, reports, figures,
+  these docs) writes the micrometre µm.
 - A `--set` value is one line of TOML (a bare word is read as a string). A line break or
   another control character in it is an error: multi-line values belong in a `--config`
   file. Values echoed in error messages are cut to 80 characters.

@@ -198,7 +198,7 @@ pub(super) fn first_record(
     let bins = respond(sm, mode, &state, &vec![None; nbins]).map_err(|(i, f)| match f {
         BinFailure::Solver(e) => anyhow::anyhow!("{}: {e}", sm.label(i)),
         BinFailure::Validity(x) => anyhow::anyhow!(
-            "{}: at {:.0} cycles (maximum pinion wear {:.2} um) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact does not apply",
+            "{}: at {:.0} cycles (maximum pinion wear {:.2} µm) the teeth are out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact does not apply",
             sm.label(i),
             state.cycles,
             state.max_pinion_m() * 1e6,
@@ -283,7 +283,7 @@ pub fn run_spectrum_wear(
                     cycles: state.cycles,
                     kind,
                     reason: format!(
-                        "at {:.0} cycles (maximum pinion wear {:.2} um), at {}: {why}",
+                        "at {:.0} cycles (maximum pinion wear {:.2} µm), at {}: {why}",
                         state.cycles,
                         state.max_pinion_m() * 1e6,
                         sm.label(i)

@@ -28,8 +28,8 @@ use nalgebra::SMatrix;
 #[derive(Debug, Clone, thiserror::Error)]
 #[error(
     "the integrator failed at t = {time_s:.6e} s (mesh phase {phase_deg:.3} deg of the \
-     mesh period; DTE {dte_um:.4} um, mesh force {force_n:.1} N): {reason}; \
-     lower numerics.integration_tolerance or raise numerics.steps_per_mesh_period"
+     mesh period; DTE {dte_um:.4} µm, mesh force {force_n:.1} N): {reason}; {}",
+    advice(*.intervals, *.tolerance)
 )]
 pub struct StepFailure {
     pub time_s: f64,
@@ -37,6 +37,32 @@ pub struct StepFailure {
     pub dte_um: f64,
     pub force_n: f64,
     pub reason: String,
+    /// Node intervals of the period grid, and the local error tolerance, of the stepper.
+    pub intervals: usize,
+    pub tolerance: f64,
+}
+
+/// Tolerance below which round-off in the error estimate, not the grid, can be what
+/// fails (the `numerics.integration_tolerance` range's note: 1e-8 fails at 0.5 Hz on 20
+/// nodes, 1e-10 at the first step).
+const TIGHT_TOLERANCE: f64 = 1e-7;
+
+/// What helps after a failed step. Where the steps reach the floor (the slowest speeds:
+/// the fast poles ring after each mesh event while the error scale shrinks with the
+/// speed, docs/MODEL.md), only more grid nodes do: a step never crosses a node and the
+/// floor is a fixed fraction of the node spacing. A smaller tolerance asks for smaller
+/// steps still.
+fn advice(intervals: usize, tolerance: f64) -> String {
+    let tight = if tolerance < TIGHT_TOLERANCE {
+        format!(
+            "; with numerics.integration_tolerance = {tolerance:e}, near the floor where round-off reaches the error estimate, a larger value may help too"
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "raise numerics.steps_per_mesh_period (the period has {intervals} node intervals; 10 times as many let the error control take the short steps it needs: 2000 solve 0.01 Hz input on the built-in case); a smaller numerics.integration_tolerance asks for smaller steps still and does not help{tight}"
+    )
 }
 
 /// What a caller sees of the solution over a period.
@@ -120,6 +146,8 @@ pub struct PeriodStepper<'s, 'a> {
     /// A time offset far inside any node interval, s (for deciding right limits).
     eps_t: f64,
     h_min: f64,
+    /// Local error tolerance (relative to the state scales), for the failure advice.
+    tolerance: f64,
     /// Step ends (times within the period, s) recorded by a [`PlanMode::Build`] period.
     plan: Vec<f64>,
     plan_mode: PlanMode,
@@ -181,6 +209,7 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             sys,
             stepper,
             h_min: 1e-7 * min_gap,
+            tolerance,
             plan: Vec::new(),
             plan_mode: PlanMode::Free,
             nodes,
@@ -459,6 +488,8 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             dte_um: ms.deflection_m * 1e6,
             force_n: ms.force_n,
             reason,
+            intervals: self.nodes.len().saturating_sub(1),
+            tolerance: self.tolerance,
         }
     }
 }

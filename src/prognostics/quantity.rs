@@ -61,13 +61,13 @@ impl Quantity {
     /// Axis label with unit.
     pub fn label(&self) -> String {
         match self {
-            Quantity::MaxWearPinion => "max pinion wear (um)".into(),
-            Quantity::MaxWearGear => "max gear wear (um)".into(),
+            Quantity::MaxWearPinion => "max pinion wear (µm)".into(),
+            Quantity::MaxWearGear => "max gear wear (µm)".into(),
             Quantity::VelocityRms => "RMS dy_p/dt (mm/s)".into(),
             Quantity::MeshHarmonic(h) => format!("mesh harmonic {h} of dy_p/dt (mm/s)"),
-            Quantity::DteMax => "max DTE (um)".into(),
-            Quantity::DtePeakToPeak => "DTE peak-to-peak (um)".into(),
-            Quantity::DteHarmonic1 => "DTE 1st mesh harmonic (um)".into(),
+            Quantity::DteMax => "max DTE (µm)".into(),
+            Quantity::DtePeakToPeak => "DTE peak-to-peak (µm)".into(),
+            Quantity::DteHarmonic1 => "DTE 1st mesh harmonic (µm)".into(),
             Quantity::Indicator(i) => format!("indicator {}", super::indicator::name(*i)),
         }
     }

@@ -4,7 +4,7 @@
 //! number in an explanation comes from the run.
 
 use super::case::{cycles_words, load_sentence, open_choices_words, poles_sentence};
-use super::wear::at_cycles;
+use super::wear::{at_cycles, max_rate_at};
 use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;
@@ -34,13 +34,6 @@ pub const PAPER_FORCE_MEAN_N: [f64; 3] = [3311.2, 3431.9, 3697.6];
 pub const PAPER_RATIO_MAX_WEAR: f64 = 1.6;
 pub const PAPER_RATIO_ACCUMULATED_WEAR: f64 = 1.2;
 
-/// Largest per-cycle pinion wear of a run's final state, m.
-fn final_rate(r: &WearRun) -> f64 {
-    r.last().map_or(0.0, |x| {
-        x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-    })
-}
-
 /// Load cycles both wear runs reached: the case's total unless a run stopped early
 /// (then the comparison is at the shorter run's end).
 pub fn cycles_reached(study: &PaperStudy) -> f64 {
@@ -48,13 +41,13 @@ pub fn cycles_reached(study: &PaperStudy) -> f64 {
     end(&study.dynamic).min(end(&study.quasi_static))
 }
 
-/// Ratios, dynamic to quasi-static: (max wear rate of each run's final state, max
-/// accumulated wear at the cycles both reached).
+/// Ratios, dynamic to quasi-static, at the cycles both runs reached: (max wear rate of
+/// each run's state there, max accumulated wear).
 pub fn wear_ratios(study: &PaperStudy) -> (f64, f64) {
     let end = cycles_reached(study);
     let acc = |r: &WearRun| at_cycles(&r.cycles(), &r.max_wear_pinion_m(), end);
     (
-        final_rate(&study.dynamic) / final_rate(&study.quasi_static),
+        max_rate_at(&study.dynamic, end) / max_rate_at(&study.quasi_static, end),
         acc(&study.dynamic) / acc(&study.quasi_static),
     )
 }
@@ -84,7 +77,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
     let states = &study.wear_states;
     let dte_change = match (states.first(), states.last()) {
         (Some(a), Some(b)) => format!(
-            "Our max DTE changes by {:+.2} um between {} and {} um of wear",
+            "Our max DTE changes by {:+.2} µm between {} and {} µm of wear",
             (b.summary.dte_max_m - a.summary.dte_max_m) * 1e6,
             a.max_wear_um,
             b.max_wear_um
@@ -121,21 +114,21 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
         let w = s.max_wear_um;
         out.push(Compared {
             key: format!("dte_max_um_at_{w}um_wear"),
-            quantity: format!("max DTE at {w} um wear (um)"),
+            quantity: format!("max DTE at {w} µm wear (µm)"),
             ours: s.summary.dte_max_m * 1e6,
             paper: PAPER_DTE_MAX_UM[i],
             explanation: why.dte.clone(),
         });
         out.push(Compared {
             key: format!("velocity_y_pinion_rms_mm_per_s_at_{w}um_wear"),
-            quantity: format!("RMS of dy_p/dt at {w} um wear (mm/s)"),
+            quantity: format!("RMS of dy_p/dt at {w} µm wear (mm/s)"),
             ours: s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
             paper: PAPER_VEL_RMS_MM_S[i],
             explanation: why.velocity.clone(),
         });
         out.push(Compared {
             key: format!("mesh_force_mean_n_at_{w}um_wear"),
-            quantity: format!("mean mesh force at {w} um wear (N)"),
+            quantity: format!("mean mesh force at {w} µm wear (N)"),
             ours: s.summary.mesh_force_mean_n,
             paper: PAPER_FORCE_MEAN_N[i],
             explanation: why.force.clone(),

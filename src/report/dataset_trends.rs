@@ -12,8 +12,8 @@ fn label(column: &str, channel: &str, unit: &str) -> String {
         .strip_prefix(&format!("{channel}_"))
         .unwrap_or(column);
     match short {
-        "max_wear_pinion_um" => "max. pinion wear (um)".into(),
-        "max_wear_gear_um" => "max. gear wear (um)".into(),
+        "max_wear_pinion_um" => "max. pinion wear (µm)".into(),
+        "max_wear_gear_um" => "max. gear wear (µm)".into(),
         "rms" => format!("RMS ({unit})"),
         "kurtosis" => "kurtosis".into(),
         "pinion_fm0" => "FM0, pinion TSA".into(),

@@ -309,7 +309,7 @@ pub fn duty_run_artifacts(
     a.headline.push_str(&duty_headline(sm, &runs));
     if let Some(l) = &study.life {
         a.headline.push_str(&format!(
-            "\nlife to {} um: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
+            "\nlife to {} µm: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
             l.limit_um,
             life_words(&l.spectrum),
             l.linear_mix_cycles.map_or("-".into(), format_value)

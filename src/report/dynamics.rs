@@ -253,7 +253,7 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
 pub fn dynamics_headline(v: &serde_json::Value) -> String {
     let f = |p: &str| v.pointer(p).and_then(|x| x.as_f64()).unwrap_or(f64::NAN);
     format!(
-        "max DTE {:.4} um, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
+        "max DTE {:.4} µm, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
         f("/dte/max_um"),
         f("/mesh_force/mean_n"),
         f("/mesh_force/dynamic_factor"),

@@ -307,7 +307,7 @@ pub fn prediction_section(
     figures: Vec<FigureBlock>,
 ) -> Section {
     let mut paragraphs = vec![format!(
-        "Cycles until the maximum pinion wear reaches {limit_um} um: median {}, 90 % interval {} to {}; probability that it lies beyond {} cycles: {:.3}.",
+        "Cycles until the maximum pinion wear reaches {limit_um} µm: median {}, 90 % interval {} to {}; probability that it lies beyond {} cycles: {:.3}.",
         cycles_text(life.median, horizon),
         cycles_text(life.p05, horizon),
         cycles_text(life.p95, horizon),

@@ -18,6 +18,11 @@ fn final_wear_um(r: &WearRun) -> f64 {
     r.last().map_or(f64::NAN, |x| x.wear.max_pinion_m() * 1e6)
 }
 
+/// Maximum accumulated pinion wear of a run at `cycles`, um.
+fn wear_at_um(r: &WearRun, cycles: f64) -> f64 {
+    super::wear::at_cycles(&r.cycles(), &r.max_wear_pinion_m(), cycles) * 1e6
+}
+
 /// Largest per-cycle pinion wear of a run's final state, um per 1000 cycles.
 fn final_rate_um_per_kcycle(r: &WearRun) -> f64 {
     r.last().map_or(f64::NAN, |x| {
@@ -42,7 +47,8 @@ pub fn results_json(study: &PaperStudy) -> Value {
             "dynamic": final_rate_um_per_kcycle(d),
             "quasi_static": final_rate_um_per_kcycle(q),
         },
-        "ratio_max_wear_dynamic_to_static": final_wear_um(d) / final_wear_um(q),
+        "ratio_max_wear_dynamic_to_static": wear_at_um(d, cycles_reached(study)) / wear_at_um(q, cycles_reached(study)),
+        "ratio_at_cycles": cycles_reached(study),
     })
 }
 
@@ -82,23 +88,43 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     )];
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         lines.push(format!(
-            "new teeth: max DTE {:.4} um, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
+            "new teeth: max DTE {:.4} µm, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
             s.dte_max_m * 1e6,
             s.mesh_force_mean_n,
             s.dynamic_factor,
             s.velocity_y_pinion_rms_m_per_s * 1e3
         ));
     }
+    let at = cycles_reached(study);
     let (d, q) = (
-        final_wear_um(&study.dynamic),
-        final_wear_um(&study.quasi_static),
+        wear_at_um(&study.dynamic, at),
+        wear_at_um(&study.quasi_static, at),
     );
     lines.push(format!(
-        "after {} cycles: maximum pinion wear {d:.4} um dynamic, {q:.4} um quasi-static (ratio {:.4})",
-        cycles_words(cycles_reached(study)),
+        "after {} cycles{}: maximum pinion wear {d:.4} µm dynamic, {q:.4} µm quasi-static (ratio {:.4})",
+        cycles_words(at),
+        super::wear::ratio_where(&[&study.dynamic, &study.quasi_static], at),
         d / q
     ));
     lines.join("\n")
+}
+
+/// The comparison's rows for the report. A quantity compared at several wear states
+/// shares one explanation: it is written once, at its first row, and the later rows
+/// point to that row.
+fn comparison_rows(rows: &[Compared]) -> Vec<ComparisonRow> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, r)| ComparisonRow {
+            quantity: r.quantity.clone(),
+            ours: r.ours,
+            paper: r.paper,
+            explanation: match rows[..i].iter().find(|p| p.explanation == r.explanation) {
+                Some(first) => format!("As for \"{}\" above.", first.quantity),
+                None => r.explanation.clone(),
+            },
+        })
+        .collect()
 }
 
 /// "1 dynamic update", "4 quasi-static updates".
@@ -178,7 +204,7 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
     ]);
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         rows.push(value_row(
-            "max DTE, new teeth (um)",
+            "max DTE, new teeth (µm)",
             html::format_value(s.dte_max_m * 1e6),
         ));
         rows.push(value_row(
@@ -194,22 +220,24 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
             html::format_value(s.velocity_y_pinion_rms_m_per_s * 1e3),
         ));
     }
-    let cycles = cycles_words(cycles_reached(study));
+    let at = cycles_reached(study);
+    let cycles = cycles_words(at);
     let (d, q) = (&study.dynamic, &study.quasi_static);
+    let rate = |r: &WearRun| super::wear::max_rate_at(r, at) * 1e9;
     rows.push(value_row(
-        &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (um)"),
+        &format!("max pinion wear after {cycles} cycles, dynamic / quasi-static (µm)"),
         format!(
             "{} / {}",
-            html::format_value(final_wear_um(d)),
-            html::format_value(final_wear_um(q))
+            html::format_value(wear_at_um(d, at)),
+            html::format_value(wear_at_um(q, at))
         ),
     ));
     rows.push(value_row(
-        &format!("max pinion wear per 1000 cycles at {cycles} cycles, dynamic / quasi-static (um)"),
+        &format!("max pinion wear per 1000 cycles at {cycles} cycles, dynamic / quasi-static (µm)"),
         format!(
             "{} / {}",
-            html::format_value(final_rate_um_per_kcycle(d)),
-            html::format_value(final_rate_um_per_kcycle(q))
+            html::format_value(rate(d)),
+            html::format_value(rate(q))
         ),
     ));
     TableBlock {
@@ -226,9 +254,9 @@ fn states_table(study: &PaperStudy) -> TableBlock {
     TableBlock {
         caption: "Dynamic response at the three wear states.".into(),
         header: [
-            "max pinion wear (um)",
-            "roughness (um)",
-            "max DTE (um)",
+            "max pinion wear (µm)",
+            "roughness (µm)",
+            "max DTE (µm)",
             "RMS of dy_p/dt (mm/s)",
             "mean mesh force (N)",
             "dynamic factor (-)",
@@ -279,7 +307,7 @@ pub fn build_report(
     let (title, intro, first) = if paper {
         let table = html::comparison_table(
             "Our headline numbers beside the paper's (sections 4.1 and 4.2). Deviations are discussed in docs/REPRODUCTION.md.",
-            &rows.iter().map(|r| ComparisonRow { quantity: r.quantity.clone(), ours: r.ours, paper: r.paper, explanation: r.explanation.clone() }).collect::<Vec<_>>(),
+            &comparison_rows(rows),
         );
         (
             "gearwear: dynamic wear prediction of the paper's spur pair".to_string(),
@@ -339,7 +367,7 @@ pub fn build_report(
                 heading: format!("Effects of wear on the dynamic response{}", tag("4.1")),
                 paragraphs: vec![
                     format!(
-                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} um, with the composite roughness the case's law gives at that depth ({} um).",
+                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} µm, with the composite roughness the case's law gives at that depth ({} µm).",
                         list(&|s| s.max_wear_um),
                         list(&|s| (s.roughness_um * 1e4).round() / 1e4),
                     ),
@@ -351,12 +379,12 @@ pub fn build_report(
             Section {
                 heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
                 paragraphs: vec![format!(
-                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} um dynamic and {} um quasi-static.",
+                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} µm dynamic and {} µm quasi-static.",
                     cycles_words(cycles_reached(study)),
                     updates_words(d.records.len().saturating_sub(1), "dynamic"),
                     updates_words(q.records.len().saturating_sub(1), "quasi-static"),
-                    html::format_value(final_wear_um(d)),
-                    html::format_value(final_wear_um(q)),
+                    html::format_value(wear_at_um(d, cycles_reached(study))),
+                    html::format_value(wear_at_um(q, cycles_reached(study))),
                 )],
                 // Figs. 11-13 and the worn profiles of each run that updated.
                 figures: take(3 + worn_figures),

@@ -407,14 +407,14 @@ pub fn teeth_section(
     for (i, name) in ["pinion", "gear"].iter().enumerate() {
         let e = &t.errors[i];
         paragraphs.push(format!(
-            "{name}: cumulative pitch deviation {:.3} um, largest single pitch deviation {:.3} um, run-out {} um{}.",
+            "{name}: cumulative pitch deviation {:.3} µm, largest single pitch deviation {:.3} µm, run-out {} µm{}.",
             cumulative_pitch_deviation(&e.position_um),
             single_pitch_deviations(&e.position_um)
                 .iter()
                 .fold(0.0_f64, |a, b| a.max(b.abs())),
             e.runout_um,
             e.tolerances.map_or(String::new(), |tol| format!(
-                " (drawn for ISO 1328-1 class {}: f_pT {:.2} um, F_pT {:.2} um)",
+                " (drawn for ISO 1328-1 class {}: f_pT {:.2} µm, F_pT {:.2} µm)",
                 tol.class, tol.single_pitch_um, tol.cumulative_pitch_um
             ))
         ));

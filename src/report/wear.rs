@@ -253,11 +253,6 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
             None => serde_json::Value::Null,
         }
     };
-    let rate = |r: &WearRun| -> f64 {
-        r.last().map_or(0.0, |x| {
-            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-        })
-    };
     let mut v = json!({
         "cycles": cycles,
         "max_wear_pinion_um": {"dynamic": series(dynamic, &|r| r.max_wear_pinion_m()), "quasi_static": series(qs, &|r| r.max_wear_pinion_m())},
@@ -284,10 +279,43 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
             at_cycles(&q.cycles(), &q.max_wear_pinion_m(), end),
         );
         v["ratio_max_wear_dynamic_to_static"] = json!(hd / hq);
-        v["ratio_max_wear_rate_dynamic_to_static"] = json!(rate(d) / rate(q));
-        v["ratio_notes"] = json!("ratio_max_wear_dynamic_to_static: maximum accumulated pinion wear depth at the final cycle count (paper: ~1.2). ratio_max_wear_rate_dynamic_to_static: maximum pinion wear depth per cycle of the final state (the paper's 'maximum wear depth', ~1.6).");
+        v["ratio_max_wear_rate_dynamic_to_static"] =
+            json!(max_rate_at(d, end) / max_rate_at(q, end));
+        v["ratio_at_cycles"] = json!(end);
+        v["ratio_notes"] = json!("ratio_max_wear_dynamic_to_static: maximum accumulated pinion wear depth at ratio_at_cycles, the last cycle count both runs reached (the total unless one stopped early; paper: ~1.2). ratio_max_wear_rate_dynamic_to_static: maximum pinion wear depth per cycle of each run's state there (the last update at or before it; the paper's 'maximum wear depth', ~1.6).");
     }
     v
+}
+
+/// Largest per-cycle pinion wear of a run's state at `cycles` (its last update at or
+/// before them; the first if none), m.
+pub fn max_rate_at(r: &WearRun, cycles: f64) -> f64 {
+    r.records
+        .iter()
+        .take_while(|x| x.wear.cycles <= cycles)
+        .last()
+        .or(r.records.first())
+        .map_or(f64::NAN, |x| {
+            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
+        })
+}
+
+/// Why a ratio is taken before the total cycles: " (where both runs reached: the
+/// dynamic run stopped early)", or nothing when every run reached its end together.
+pub fn ratio_where(runs: &[&WearRun], at: f64) -> String {
+    let stopped: Vec<&str> = runs
+        .iter()
+        .filter(|r| r.stopped.is_some() && r.cycles().last().is_some_and(|c| *c <= at))
+        .map(|r| r.mode.label())
+        .collect();
+    if stopped.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " (the last both runs reached: the {} run stopped early)",
+            stopped.join(" and ")
+        )
+    }
 }
 
 /// Everything `gearwear wear` writes for the runs present (one or both modes).
@@ -322,7 +350,7 @@ pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
         .filter_map(|r| {
             r.last().map(|l| {
                 format!(
-                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} um",
+                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} µm",
                     r.mode.label(),
                     r.records.len() - 1,
                     crate::io::format_number(l.wear.cycles),
@@ -331,9 +359,14 @@ pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
             })
         })
         .collect();
-    if let Some(x) = v["ratio_max_wear_dynamic_to_static"].as_f64() {
+    if let (Some(x), Some(at)) = (
+        v["ratio_max_wear_dynamic_to_static"].as_f64(),
+        v["ratio_at_cycles"].as_f64(),
+    ) {
         lines.push(format!(
-            "dynamic / quasi-static maximum accumulated pinion wear: {x:.4}"
+            "dynamic / quasi-static maximum accumulated pinion wear at {} cycles{}: {x:.4}",
+            crate::io::format_number(at),
+            ratio_where(runs, at)
         ));
     }
     lines.join("\n")

@@ -198,7 +198,7 @@ impl Iso6336Input {
         let q: f64 = Q_COEFFICIENTS.iter().zip(terms).map(|(c, t)| c * t).sum();
         if q.is_nan() || q <= 0.0 {
             return Err(Iso6336Error(vec![format!(
-                "the flexibility q' = {q} mm um/N is not positive for these teeth numbers and shifts"
+                "the flexibility q' = {q} mm µm/N is not positive for these teeth numbers and shifts"
             )]));
         }
         let c_th = 1.0 / q;
@@ -358,7 +358,7 @@ mod tests {
         let mesh_notes = single * (0.75 * 1.6022 + 0.25);
         assert!((s.mesh_alpha_n_per_mm_um - mesh_notes).abs() < 0.75 * single * 5e-5);
         eprintln!(
-            "paper pair: c'_th = {:.4}, c' = {:.4}, c_gamma_alpha = {:.4} N/(mm um); b = 20 mm: c' b = {:.4e}, c_gamma_alpha b = {:.4e} N/m; line load {load:.1} N/mm",
+            "paper pair: c'_th = {:.4}, c' = {:.4}, c_gamma_alpha = {:.4} N/(mm µm); b = 20 mm: c' b = {:.4e}, c_gamma_alpha b = {:.4e} N/m; line load {load:.1} N/mm",
             s.theoretical_single_n_per_mm_um,
             s.single_n_per_mm_um,
             s.mesh_alpha_n_per_mm_um,

@@ -114,7 +114,7 @@ pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
             );
         if mu > MAX_FRICTION_COEFFICIENT {
             problems.push(format!(
-                "`friction.model` = \"xu2007\" gives a friction coefficient of {mu:.3} on this case's flanks at the nominal load and speed (with `lubricant.viscosity_cp` = {} and a roughness of {roughness} um from `surface.roughness_table_rms_um`): above {MAX_FRICTION_COEFFICIENT}, no lubricated or dry steel contact; the conditions lie outside those Xu et al. fitted. Use friction.model = \"constant\", or a viscosity and roughness the regression covers",
+                "`friction.model` = \"xu2007\" gives a friction coefficient of {mu:.3} on this case's flanks at the nominal load and speed (with `lubricant.viscosity_cp` = {} and a roughness of {roughness} µm from `surface.roughness_table_rms_um`): above {MAX_FRICTION_COEFFICIENT}, no lubricated or dry steel contact; the conditions lie outside those Xu et al. fitted. Use friction.model = \"constant\", or a viscosity and roughness the regression covers",
                 case.lubricant.viscosity_cp
             ));
         }

@@ -86,7 +86,7 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
         }
         if !close(r.roughness_um, model.roughness_for(&r.wear)) {
             return Err(at(format!(
-                "roughness {} um is not the case's {} um at this wear depth",
+                "roughness {} µm is not the case's {} µm at this wear depth",
                 r.roughness_um,
                 model.roughness_for(&r.wear)
             )));
