@@ -36,9 +36,7 @@ pub const PAPER_RATIO_ACCUMULATED_WEAR: f64 = 1.2;
 
 /// Largest per-cycle pinion wear of a run's final state, m.
 fn final_rate(r: &WearRun) -> f64 {
-    r.last().map_or(0.0, |x| {
-        x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-    })
+    r.last().map_or(0.0, |x| x.max_increment_pinion_m())
 }
 
 /// Load cycles both wear runs reached: the case's total unless a run stopped early

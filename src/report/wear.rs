@@ -39,7 +39,7 @@ pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
         .col("max_wear_gear_um", s(&|r| r.wear.max_gear_m() * 1e6))
         .col(
             "max_wear_rate_pinion_um_per_kcycle",
-            s(&|r| r.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9),
+            s(&|r| r.max_increment_pinion_m() * 1e9),
         )
         .col("roughness_um", s(&|r| r.roughness_um))
         .col("mesh_force_mean_n", s(&|r| r.summary.mesh_force_mean_n))
@@ -253,11 +253,7 @@ pub fn wear_summary(dynamic: Option<&WearRun>, qs: Option<&WearRun>) -> serde_js
             None => serde_json::Value::Null,
         }
     };
-    let rate = |r: &WearRun| -> f64 {
-        r.last().map_or(0.0, |x| {
-            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-        })
-    };
+    let rate = |r: &WearRun| -> f64 { r.last().map_or(0.0, |x| x.max_increment_pinion_m()) };
     let mut v = json!({
         "cycles": cycles,
         "max_wear_pinion_um": {"dynamic": series(dynamic, &|r| r.max_wear_pinion_m()), "quasi_static": series(qs, &|r| r.max_wear_pinion_m())},
