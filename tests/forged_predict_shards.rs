@@ -8,12 +8,10 @@
 
 mod common;
 
-use common::stderr;
+use common::{snapshot, stderr};
 use sha2::{Digest, Sha256};
-use std::collections::BTreeMap;
-use std::os::unix::process::CommandExt;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
+use std::process::Output;
 
 /// Address space the merge may use, bytes. A merge of a few dozen samples needs tens of
 /// MB (measured: under 14 MB resident, and it runs within a 256 MiB address space); a
@@ -23,35 +21,7 @@ const ADDRESS_SPACE_BYTES: u64 = 512 << 20;
 
 /// `gearwear args` under the address-space limit.
 fn bounded(args: &[&str]) -> Output {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_gearwear"));
-    cmd.args(args);
-    unsafe {
-        cmd.pre_exec(|| {
-            let lim = libc::rlimit {
-                rlim_cur: ADDRESS_SPACE_BYTES,
-                rlim_max: ADDRESS_SPACE_BYTES,
-            };
-            if libc::setrlimit(libc::RLIMIT_AS, &lim) != 0 {
-                return Err(std::io::Error::last_os_error());
-            }
-            Ok(())
-        });
-    }
-    cmd.output().unwrap()
-}
-
-/// Every file under `dir` with its bytes.
-fn snapshot(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
-    let mut all = BTreeMap::new();
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            all.extend(snapshot(&p));
-        } else {
-            all.insert(p.clone(), std::fs::read(&p).unwrap());
-        }
-    }
-    all
+    common::gearwear_within_address_space(args, ADDRESS_SPACE_BYTES)
 }
 
 /// Rewrites the shard to claim `samples` and recomputes its manifest entry, as a forger

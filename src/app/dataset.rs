@@ -11,7 +11,7 @@
 
 use super::dataset_dir::{
     csv_rel, finished, is_file_in, make_folder, put, read_in, sidecar_rel,
-    stage_index_and_metadata, trajectory_rel, Sidecar, TrajectoryFile, DATASET_REL,
+    stage_index_and_metadata, trajectory_rel, Missing, Sidecar, TrajectoryFile, DATASET_REL,
 };
 use super::observer::{Observer, Task};
 use super::{budget, publish, Job, JobError, Outcome};
@@ -70,8 +70,9 @@ pub struct DatasetOutcome {
     pub reused: usize,
     /// Physical states that failed (the solver gave up), with the reason.
     pub failures: Vec<String>,
-    /// Records missing from the index (an unsharded run or a merge).
-    pub missing: Vec<usize>,
+    /// Records missing from the index (an unsharded run or a merge): the count and
+    /// the first ids.
+    pub missing: Missing,
     pub estimated_bytes: f64,
 }
 
@@ -385,7 +386,7 @@ pub fn run_dataset(
             &json!({"dataset_key": key, "shard": format!("{}/{}", req.shard.index, req.shard.count), "records": shard_records, "failures": failures}),
         )
         .map_err(|e| DatasetError::Failed(e.into()))?;
-        Vec::new()
+        Missing::default()
     };
     out.publish().map_err(|e| DatasetError::Failed(e.into()))?;
     let reused = reused.load(Ordering::Relaxed);
@@ -541,11 +542,10 @@ fn keep_files(
 /// Merge the dataset folders `inputs` (shards of one design) into `root`: their records
 /// and state files copied over, then the index and metadata built as an unsharded run
 /// builds them.
-pub fn merge_datasets(
-    inputs: &[&Path],
-    root: &Path,
-    mut out: OutputDir,
-) -> Result<DatasetOutcome, DatasetError> {
+/// The dataset key and record count the shards in `inputs` share, read and checked
+/// before any output folder is opened: every input a dataset folder of one design, its
+/// record count the one its axes give.
+fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetError> {
     let mut key: Option<(String, usize)> = None;
     let mut problems = Vec::new();
     for dir in inputs {
@@ -560,6 +560,15 @@ pub fn merge_datasets(
         };
         let k = body["dataset_key"].as_str().unwrap_or_default().to_owned();
         let total = body["records"].as_u64().unwrap_or(0) as usize;
+        // The record count is trusted only when the axes beside it give it: a shard
+        // edited to claim 2e9 records would otherwise size the index's missing list.
+        if axes_records(&body) != Some(total) {
+            problems.push(format!(
+                "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
+                dir.display()
+            ));
+            continue;
+        }
         match &key {
             None => key = Some((k, total)),
             Some((k0, _)) if *k0 != k => problems.push(format!(
@@ -571,9 +580,18 @@ pub fn merge_datasets(
             _ => {}
         }
     }
-    let Some((key, total)) = key.filter(|_| problems.is_empty()) else {
-        return Err(DatasetError::Input(problems));
-    };
+    key.filter(|_| problems.is_empty())
+        .ok_or(DatasetError::Input(problems))
+}
+
+/// Joins the shards in `inputs` (checked by [`shared_key`], which gave `key` and
+/// `total`) into `root`.
+fn merge_datasets(
+    inputs: &[&Path],
+    root: &Path,
+    mut out: OutputDir,
+    (key, total): (String, usize),
+) -> Result<DatasetOutcome, DatasetError> {
     let mut copied = 0;
     for dir in inputs {
         copied += super::dataset_dir::copy_dataset(dir, root, &key, out.previous_state())
@@ -605,6 +623,31 @@ pub fn merge_datasets(
         missing,
         estimated_bytes: 0.0,
     })
+}
+
+/// Records the axes of a dataset's description give: conditions x states x speeds x
+/// loads x noise realisations (each a whole, positive count); `None` when an axis is
+/// missing, empty or the product overflows.
+fn axes_records(body: &Value) -> Option<usize> {
+    let a = &body["axes"];
+    let len = |v: &Value| v.as_array().map(Vec::len).filter(|n| *n > 0);
+    let states = match (&a["states"]["evenly_spaced"], &a["states"]["cycles"]) {
+        (n, _) if n.is_u64() => n.as_u64().map(|n| n as usize).filter(|n| *n > 0),
+        (_, c) => len(c),
+    }?;
+    let realisations = a["noise_realisations"]
+        .as_u64()
+        .map(|n| n as usize)
+        .filter(|n| *n > 0)?;
+    [
+        len(&a["conditions"])?,
+        states,
+        len(&a["input_speed_hz"])?,
+        len(&a["load_torque_nm"])?,
+        realisations,
+    ]
+    .iter()
+    .try_fold(1_usize, |acc, n| acc.checked_mul(*n))
 }
 
 /// A study design and where it was read from (its folder resolves the design's relative
@@ -653,7 +696,8 @@ fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
             "computed": o.computed,
             "reused": o.reused,
             "failures": o.failures,
-            "missing": o.missing,
+            "missing": o.missing.listed,
+            "missing_count": o.missing.count,
             "estimated_bytes": o.estimated_bytes,
         }),
         ..Default::default()
@@ -664,10 +708,10 @@ fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
         o.total_records,
         o.computed,
         o.reused,
-        if o.missing.is_empty() {
+        if o.missing.count == 0 {
             String::new()
         } else {
-            format!("; {} records missing from the index", o.missing.len())
+            format!("; {} records missing from the index", o.missing.count)
         }
     );
     Outcome {
@@ -762,9 +806,10 @@ impl Job for DatasetMergeJob {
                 "no dataset folders given",
             )));
         }
-        let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
-        let o = merge_datasets(&inputs, &self.out, out)?;
+        let shared = shared_key(&inputs)?;
+        let out = publish::open(&self.out, None, self.name(), self.replace)?;
+        let o = merge_datasets(&inputs, &self.out, out, shared)?;
         observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset-merge"))
     }

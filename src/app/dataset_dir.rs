@@ -192,11 +192,23 @@ pub enum BuildError {
 /// Stage `index.parquet`, `index.csv` and `metadata.json` of the dataset in `root`
 /// (whose records and state files are in place) into `out`. Returns the ids missing
 /// from `0..total`.
+/// Most missing record ids listed in `metadata.json` (`records_missing`; the count is
+/// `records_missing_count`).
+pub const MAX_MISSING_LISTED: usize = 1000;
+
+/// Records missing from a dataset's index: how many, and the first ids.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Missing {
+    pub count: usize,
+    /// The first [`MAX_MISSING_LISTED`] missing ids, ascending.
+    pub listed: Vec<usize>,
+}
+
 pub fn stage_index_and_metadata(
     out: &mut OutputDir,
     root: &Path,
     total: usize,
-) -> Result<Vec<usize>, BuildError> {
+) -> Result<Missing, BuildError> {
     let body: Value = read_in(root, DATASET_REL)
         .and_then(|b| serde_json::from_slice(&b).ok())
         .ok_or_else(|| {
@@ -213,7 +225,13 @@ pub fn stage_index_and_metadata(
         .map(|s| s.labels)
         .collect();
     let present: std::collections::BTreeSet<usize> = rows.iter().map(|r| r.record_id).collect();
-    let missing: Vec<usize> = (0..total).filter(|i| !present.contains(i)).collect();
+    // Listed up to MAX_MISSING_LISTED ids (the count is in the headline): the list
+    // never grows with the record count alone.
+    let missing: Vec<usize> = (0..total)
+        .filter(|i| !present.contains(i))
+        .take(MAX_MISSING_LISTED)
+        .collect();
+    let missing_count = total - present.range(..total).count();
     let unit = body["record"]["channel_unit"]
         .as_str()
         .unwrap_or("-")
@@ -256,8 +274,12 @@ pub fn stage_index_and_metadata(
         .collect::<Vec<_>>());
     metadata["records_present"] = json!(rows.len());
     metadata["records_missing"] = json!(missing);
+    metadata["records_missing_count"] = json!(missing_count);
     out.stage_json("metadata.json", &metadata)?;
-    Ok(missing)
+    Ok(Missing {
+        count: missing_count,
+        listed: missing,
+    })
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`

@@ -25,9 +25,8 @@ fn wear_at_um(r: &WearRun, cycles: f64) -> f64 {
 
 /// Largest per-cycle pinion wear of a run's final state, um per 1000 cycles.
 fn final_rate_um_per_kcycle(r: &WearRun) -> f64 {
-    r.last().map_or(f64::NAN, |x| {
-        x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9
-    })
+    r.last()
+        .map_or(f64::NAN, |x| x.max_increment_pinion_m() * 1e9)
 }
 
 /// The key results of a run (new teeth, end of the wear study), display units in the names.

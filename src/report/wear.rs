@@ -39,7 +39,7 @@ pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
         .col("max_wear_gear_um", s(&|r| r.wear.max_gear_m() * 1e6))
         .col(
             "max_wear_rate_pinion_um_per_kcycle",
-            s(&|r| r.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b)) * 1e9),
+            s(&|r| r.max_increment_pinion_m() * 1e9),
         )
         .col("roughness_um", s(&|r| r.roughness_um))
         .col("mesh_force_mean_n", s(&|r| r.summary.mesh_force_mean_n))
@@ -295,9 +295,7 @@ pub fn max_rate_at(r: &WearRun, cycles: f64) -> f64 {
         .take_while(|x| x.wear.cycles <= cycles)
         .last()
         .or(r.records.first())
-        .map_or(f64::NAN, |x| {
-            x.increment_pinion_m.iter().fold(0.0_f64, |a, b| a.max(*b))
-        })
+        .map_or(f64::NAN, |x| x.max_increment_pinion_m())
 }
 
 /// Why a ratio is taken before the total cycles: " (where both runs reached: the

@@ -92,6 +92,16 @@ impl UpdateRecord {
         }
     }
 
+    /// Largest pinion wear per cycle over the block after the record (m per cycle), over
+    /// every tooth when the mesh is tooth-resolved: the rate of the fastest-wearing tooth,
+    /// consistent with the deepest-tooth maximum wear (the mean tooth's would understate it).
+    pub fn max_increment_pinion_m(&self) -> f64 {
+        self.pinion_profiles()
+            .iter()
+            .flat_map(|(_, d)| d.iter())
+            .fold(0.0_f64, |a, b| a.max(*b))
+    }
+
     /// The gear's, as [`Self::pinion_profiles`].
     pub fn gear_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
         match (&self.wear.teeth, &self.increment_teeth) {

@@ -74,3 +74,40 @@ pub fn rejected(args: &[&str], needles: &[&str]) -> String {
     assert!(!out.exists(), "{args:?}: output written despite the error");
     err
 }
+
+/// `gearwear args` with its address space limited to `bytes` (Linux `RLIMIT_AS`): an
+/// allocation sized by a forged count then fails instead of passing unnoticed.
+#[cfg(target_os = "linux")]
+pub fn gearwear_within_address_space(args: &[&str], bytes: u64) -> Output {
+    use std::os::unix::process::CommandExt;
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_gearwear"));
+    cmd.args(args);
+    // SAFETY: only async-signal-safe setrlimit runs between fork and exec.
+    unsafe {
+        cmd.pre_exec(move || {
+            let lim = libc::rlimit {
+                rlim_cur: bytes,
+                rlim_max: bytes,
+            };
+            if libc::setrlimit(libc::RLIMIT_AS, &lim) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    cmd.output().unwrap()
+}
+
+/// Every file under `dir` with its bytes (a before/after check that nothing changed).
+pub fn snapshot(dir: &Path) -> std::collections::BTreeMap<std::path::PathBuf, Vec<u8>> {
+    let mut all = std::collections::BTreeMap::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            all.extend(snapshot(&p));
+        } else {
+            all.insert(p.clone(), std::fs::read(&p).unwrap());
+        }
+    }
+    all
+}

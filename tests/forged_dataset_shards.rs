@@ -1,0 +1,93 @@
+//! A forged dataset shard (the predict-merge finding of issue 22, in `dataset-merge`): a
+//! real dataset whose `state/dataset.json` is edited to claim 2e9 records. The merge once
+//! sized the index's list of missing records by that claim and aborted on allocation. It
+//! must refuse a count its own axes do not give, at once and naming the file; a forgery
+//! that makes the axes agree (2e9 noise realisations) is merged in bounded memory (the
+//! missing records counted, at most 1000 listed); nothing outside the output changes.
+#![cfg(target_os = "linux")]
+
+mod common;
+
+use common::{gearwear_within_address_space, ok, snapshot, stderr};
+use std::path::Path;
+
+/// Address space of the merge, bytes: a merge of a few records runs in tens of MB
+/// (measured 6 MB resident for the refusal); a list of 2e9 8-byte ids needs 16 GB.
+const ADDRESS_SPACE_BYTES: u64 = 512 << 20;
+
+/// One condition, two states, one speed, one noise realisation: the cheapest dataset.
+const DESIGN: &str =
+    "seed = 3\n[run_to_failure]\nstates = 2\nmax_cycles = 1e4\nwear_limit_um = 10\n\
+[operating]\ninput_speed_hz = [30]\n[records]\nnoise_realisations = 1\n";
+
+fn edit(root: &Path, f: impl Fn(&mut serde_json::Value)) {
+    let p = root.join("state/dataset.json");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&p).unwrap()).unwrap();
+    f(&mut v);
+    std::fs::write(&p, serde_json::to_string(&v).unwrap()).unwrap();
+}
+
+#[test]
+fn a_dataset_shard_claiming_2e9_records_is_refused_or_merged_in_bounded_memory() {
+    let d = tempfile::tempdir().unwrap();
+    let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
+    std::fs::write(d.path().join("design.toml"), DESIGN).unwrap();
+    ok(&[
+        "dataset",
+        "-q",
+        "--design",
+        &p("design.toml"),
+        "--out",
+        &p("ds"),
+    ]);
+
+    // The count alone edited: refused, naming the file, nothing written.
+    edit(&d.path().join("ds"), |v| {
+        v["records"] = 2_000_000_000_u64.into()
+    });
+    let before = snapshot(d.path());
+    let r = gearwear_within_address_space(
+        &["dataset-merge", &p("ds"), "--out", &p("merged")],
+        ADDRESS_SPACE_BYTES,
+    );
+    let e = stderr(&r);
+    assert_eq!(r.status.code(), Some(2), "{e}");
+    for needle in ["state/dataset.json", "2000000000 records", "axes"] {
+        assert!(e.contains(needle), "message lacks `{needle}`: {e}");
+    }
+    assert!(
+        !d.path().join("merged").exists(),
+        "an output despite the error"
+    );
+    assert_eq!(
+        snapshot(d.path()),
+        before,
+        "files outside the output changed"
+    );
+
+    // Count and axes forged to agree (1 x 2 x 1 x 1 x 1e9 = 2e9): merged within the
+    // address-space limit; the missing records counted exactly, 1000 listed.
+    edit(&d.path().join("ds"), |v| {
+        v["axes"]["noise_realisations"] = 1_000_000_000_u64.into();
+    });
+    let before = snapshot(&d.path().join("ds"));
+    let r = gearwear_within_address_space(
+        &["dataset-merge", "-q", &p("ds"), "--out", &p("merged")],
+        ADDRESS_SPACE_BYTES,
+    );
+    assert!(r.status.success(), "{}", stderr(&r));
+    let m: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(d.path().join("merged/metadata.json")).unwrap(),
+    )
+    .unwrap();
+    // Two records were computed (states x realisations of the true design).
+    assert_eq!(m["records_present"], 2);
+    assert_eq!(m["records_missing_count"], 2_000_000_000_u64 - 2);
+    assert_eq!(m["records_missing"].as_array().unwrap().len(), 1000);
+    assert_eq!(
+        snapshot(&d.path().join("ds")),
+        before,
+        "the input shard changed"
+    );
+}
