@@ -78,6 +78,10 @@ pub enum Arg {
     FutureSpectrum,
     /// The cycle count from which a prediction's future duty applies.
     FutureFromCycles,
+    /// The formats figures are written in.
+    FigureFormats,
+    /// The size of the figures.
+    FigureSize,
 }
 
 /// How a front end spells an argument in its messages.
@@ -85,7 +89,7 @@ pub type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 30] = [
+    pub const ALL: [Arg; 32] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -116,6 +120,8 @@ impl Arg {
         Arg::Design,
         Arg::FutureSpectrum,
         Arg::FutureFromCycles,
+        Arg::FigureFormats,
+        Arg::FigureSize,
     ];
 
     /// Plain words for the argument, naming no front end's syntax.
@@ -151,6 +157,8 @@ impl Arg {
             Arg::Design => "the dataset design",
             Arg::FutureSpectrum => "the future load spectrum",
             Arg::FutureFromCycles => "the cycles the future duty starts at",
+            Arg::FigureFormats => "the figure formats",
+            Arg::FigureSize => "the figure size",
         }
     }
 }

@@ -59,6 +59,7 @@ from typing import Callable as _Callable
 from typing import Mapping as _Mapping
 from typing import Optional as _Optional
 from typing import Sequence as _Sequence
+from typing import Tuple as _Tuple
 from typing import Union as _Union
 
 import numpy as _np
@@ -162,7 +163,13 @@ def _done(result: _Any, native: _Mapping[str, _Any]) -> _Any:
 
 
 def stiffness(
-    case: Case, *, out: _Optional[PathLike] = None, budget_scale: float = 1.0, replace: bool = False
+    case: Case,
+    *,
+    out: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> StiffnessResult:
     """Mesh stiffness over one mesh period, as ``gearwear stiffness``.
 
@@ -170,8 +177,19 @@ def stiffness(
     foundation), load sharing, the quasi-static transmission error under the case's load,
     the ISO 6336-1 Method B cross-check and the pair's geometry. Table
     ``mesh_stiffness``: 720 samples over one mesh period (360/z1 deg of pinion rotation).
+
+    ``figures``: the formats of the figures written to ``out``: ``"png"`` (default),
+    ``"svg"`` or ``"png,svg"``; ``figure_size``: (width, height) px of a one-panel figure
+    (width 400-8192, height 200-4096; figures of several panels keep their height ratio).
     """
-    n = _native.stiffness(_check_case(case), out=_path(out), budget_scale=budget_scale, replace=replace)
+    n = _native.stiffness(
+        _check_case(case),
+        out=_path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
+    )
     return _done(StiffnessResult(**n), n)
 
 
@@ -182,6 +200,8 @@ def dynamics(
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> DynamicsResult:
     """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth), as
     ``gearwear dynamics [--transmission-error FILE]``.
@@ -197,6 +217,8 @@ def dynamics(
     ``mesh_force_n``, ``displacement``/``velocity``/``acceleration`` (n, 8) in SI, the
     per-pair friction and loads, the dy_p/dt spectrum, natural frequencies and mode
     shapes. ``summary`` is that of summary.json.
+
+    ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     te = None
     if transmission_error is not None:
@@ -206,7 +228,15 @@ def dynamics(
                 "transmission_error: expected shape (n, 2) (pinion angle deg, error µm), "
                 f"got {te.shape}"
             )
-    n = _native.dynamics(_check_case(case), te, out=_path(out), budget_scale=budget_scale, replace=replace)
+    n = _native.dynamics(
+        _check_case(case),
+        te,
+        out=_path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
+    )
     return _done(DynamicsResult(**n), n)
 
 
@@ -219,6 +249,8 @@ def wear(
     resume: bool = False,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> WearResult:
     """The coupled dynamics-wear study and/or its quasi-static twin, as ``gearwear wear
     --mode MODE``, to ``wear.total_cycles`` load cycles.
@@ -228,9 +260,19 @@ def wear(
     total_cycles)`` after every update of each run, e.g. to move a tqdm bar. ``out``: a
     folder for the command's output set, with a checkpoint after every update;
     ``resume=True`` continues from the checkpoints there.
+
+    ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     n = _native.wear(
-        _check_case(case), mode, progress, out=_path(out), resume=resume, budget_scale=budget_scale, replace=replace
+        _check_case(case),
+        mode,
+        progress,
+        out=_path(out),
+        resume=resume,
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(WearResult(**n), n)
 
@@ -243,6 +285,8 @@ def run(
     resume: bool = False,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> RunResult:
     """The paper's whole section 4, as ``gearwear run``: mesh stiffness, the dynamic and
     quasi-static wear studies, the dynamic response at 0.1, 0.5 and 1 µm of wear, the
@@ -252,9 +296,18 @@ def run(
     figures, CSVs, report, checkpoints, manifest), published as one set; None writes
     nothing (the figures and report are still in the result). ``resume=True`` continues
     the wear studies from the checkpoints in ``out``.
+
+    ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     n = _native.run(
-        _check_case(case), _path(out), progress, resume=resume, budget_scale=budget_scale, replace=replace
+        _check_case(case),
+        _path(out),
+        progress,
+        resume=resume,
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(RunResult(**n), n)
 

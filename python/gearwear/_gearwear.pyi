@@ -89,9 +89,16 @@ _Path = Optional[Union[str, PathLike[str]]]
 _TableIn = Union[str, PathLike[str], Tuple[List[str], List[npt.NDArray[np.float64]]]]
 
 def stiffness(
-    case: Case, *, out: _Path = None, budget_scale: float = 1.0, replace: bool = False
+    case: Case,
+    *,
+    out: _Path = None,
+    budget_scale: float = 1.0,
+    replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
-    """``gearwear stiffness``."""
+    """``gearwear stiffness``; ``figures``: "png" (default), "svg" or "png,svg";
+    ``figure_size``: (width, height) px of a one-panel figure."""
 
 def dynamics(
     case: Case,
@@ -100,6 +107,8 @@ def dynamics(
     out: _Path = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear dynamics``; ``transmission_error`` of shape (n, 2): pinion angle deg,
     error µm."""
@@ -113,6 +122,8 @@ def wear(
     resume: bool = False,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear wear --mode MODE``."""
 
@@ -124,6 +135,8 @@ def run(
     resume: bool = False,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear run``."""
 

@@ -144,6 +144,8 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::Design => "`design`",
         Arg::FutureSpectrum => "`future_spectrum`",
         Arg::FutureFromCycles => "`future_from_cycles`",
+        Arg::FigureFormats => "`figures`",
+        Arg::FigureSize => "`figure_size`",
     }
 }
 

@@ -15,6 +15,7 @@ use gearwear::app::{
 };
 use gearwear::config::load::override_value;
 use gearwear::format::format_number;
+use gearwear::report::figure_output::FigureRequest;
 use gearwear::study::budget::Budget;
 use gearwear::study::sweep::{
     parse_axis, Axis, AxisValue, Continuation, Shard, SweepPlan, SweepRun,
@@ -42,22 +43,34 @@ pub(crate) fn budget_of(scale: f64) -> PyResult<Option<Budget>> {
 
 /// Mesh stiffness, ISO 6336 check, load sharing, quasi-static TE (as `gearwear stiffness`).
 #[pyfunction]
-#[pyo3(signature = (case, *, out=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, *, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 pub fn stiffness<'py>(
     py: Python<'py>,
     case: &Case,
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = StiffnessJob {
         case: case.inner.clone(),
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)
+}
+
+/// The figure options of a job: `figures` ("png", "svg" or "png,svg") and
+/// `figure_size` (width, height) px, checked when the job starts.
+fn figure_request(figures: Option<String>, size: Option<(i64, i64)>) -> FigureRequest {
+    FigureRequest {
+        formats: figures,
+        size: size.map(|(w, h)| format!("{w}x{h}")),
+    }
 }
 
 /// The samples (pinion angle deg, error um) of an (n, 2) array.
@@ -80,6 +93,7 @@ pub fn dynamics_job(
     out: Option<PathBuf>,
     replace: bool,
     budget: Option<Budget>,
+    figures: FigureRequest,
 ) -> DynamicsJob {
     DynamicsJob {
         case: case.inner.clone(),
@@ -87,12 +101,14 @@ pub fn dynamics_job(
         out,
         replace,
         budget,
+        figures,
     }
 }
 
 /// One steady-state evaluation of new teeth (as `gearwear dynamics`).
 #[pyfunction]
-#[pyo3(signature = (case, transmission_error=None, *, out=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, transmission_error=None, *, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn dynamics<'py>(
     py: Python<'py>,
     case: &Case,
@@ -100,6 +116,8 @@ pub fn dynamics<'py>(
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = dynamics_job(
         case,
@@ -107,6 +125,7 @@ pub fn dynamics<'py>(
         out,
         replace,
         budget_of(budget_scale)?,
+        figure_request(figures, figure_size),
     );
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)
@@ -126,7 +145,7 @@ fn modes_of(mode: &str) -> PyResult<Vec<WearMode>> {
 
 /// The wear study (as `gearwear wear`).
 #[pyfunction]
-#[pyo3(signature = (case, mode="both", progress=None, *, out=None, resume=false, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, mode="both", progress=None, *, out=None, resume=false, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn wear<'py>(
     py: Python<'py>,
@@ -137,6 +156,8 @@ pub fn wear<'py>(
     resume: bool,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = WearJob {
         case: case.inner.clone(),
@@ -145,6 +166,7 @@ pub fn wear<'py>(
         replace,
         resume,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
@@ -152,7 +174,7 @@ pub fn wear<'py>(
 
 /// The paper's whole section 4 (as `gearwear run`).
 #[pyfunction]
-#[pyo3(signature = (case, out=None, progress=None, *, resume=false, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, out=None, progress=None, *, resume=false, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn run<'py>(
     py: Python<'py>,
@@ -162,6 +184,8 @@ pub fn run<'py>(
     resume: bool,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = RunJob {
         case: case.inner.clone(),
@@ -169,6 +193,7 @@ pub fn run<'py>(
         replace,
         resume,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
@@ -443,7 +468,7 @@ pub fn predict_merge<'py>(
 #[pyfunction]
 pub fn _time_rust_dynamics(py: Python<'_>, case: &Case, repeats: usize) -> PyResult<Vec<f64>> {
     use gearwear::app::Job;
-    let job = dynamics_job(case, None, None, false, None);
+    let job = dynamics_job(case, None, None, false, None, FigureRequest::default());
     Ok(py.detach(move || {
         (0..repeats)
             .map(|_| {

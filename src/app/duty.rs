@@ -13,6 +13,7 @@ use crate::duty::wear::{run_spectrum_modes, SpectrumRun};
 use crate::duty::SpectrumModel;
 use crate::io::RunMetadata;
 use crate::report::duty::{duty_run_artifacts, duty_wear_artifacts};
+use crate::report::figure_output::FigureOutput;
 use crate::study::wear_loop::{WearMode, WearRun};
 use std::path::Path;
 
@@ -59,6 +60,7 @@ pub fn wear_under_spectrum(
     case: &crate::config::Case,
     modes: &[WearMode],
     (out, resume, replace): (Option<&Path>, bool, bool),
+    figures: FigureOutput,
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let sm = build_spectrum_model(case, observer)?;
@@ -75,7 +77,7 @@ pub fn wear_under_spectrum(
     let refs: Vec<&SpectrumRun> = runs.runs.iter().collect();
     let mut outcome = publish::publish(
         runs.out,
-        duty_wear_artifacts(&sm, &refs),
+        duty_wear_artifacts(&sm, &refs).with_figure_output(figures),
         Some(&meta),
         observer,
     )?;
@@ -88,6 +90,7 @@ pub fn run_under_spectrum(
     command: &str,
     case: &crate::config::Case,
     (out, resume, replace): (Option<&Path>, bool, bool),
+    figures: FigureOutput,
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let sm = build_spectrum_model(case, observer)?;
@@ -104,9 +107,9 @@ pub fn run_under_spectrum(
     )?;
     let refs: Vec<&SpectrumRun> = study.runs.runs.iter().collect();
     let incomplete = spectrum_stops(&sm, &refs, observer);
-    let artifacts = duty_run_artifacts(&sm, &study.runs, &meta).ok_or_else(|| {
-        JobError::Failed(anyhow::anyhow!("the duty-cycle study returned no runs"))
-    })?;
+    let artifacts = duty_run_artifacts(&sm, &study.runs, &meta)
+        .ok_or_else(|| JobError::Failed(anyhow::anyhow!("the duty-cycle study returned no runs")))?
+        .with_figure_output(figures);
     let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
     outcome.incomplete = incomplete;
     Ok(outcome)

@@ -9,6 +9,7 @@ use crate::io::transmission_error::{read_transmission_error, transmission_error_
 use crate::io::RunMetadata;
 use crate::remedy::Arg;
 use crate::report::dynamics::dynamics_artifacts;
+use crate::report::figure_output::FigureRequest;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::wear::WearState;
 use std::path::PathBuf;
@@ -33,6 +34,8 @@ pub struct DynamicsJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl Job for DynamicsJob {
@@ -43,6 +46,7 @@ impl Job for DynamicsJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
         let model = build_model(&self.case, observer)?;
         let period = model.pair.mesh_angle_rad();
@@ -70,7 +74,7 @@ impl Job for DynamicsJob {
         let meta = RunMetadata::of_model(self.name(), &model);
         publish::publish(
             out,
-            dynamics_artifacts(&model, &r, label),
+            dynamics_artifacts(&model, &r, label).with_figure_output(figures),
             Some(&meta),
             observer,
         )

@@ -7,6 +7,7 @@ use super::wear::{run_modes, stops};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::RunMetadata;
+use crate::report::figure_output::FigureRequest;
 use crate::report::paper::run_artifacts;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::paper::run_paper_study;
@@ -24,6 +25,8 @@ pub struct RunJob {
     /// Continue the wear studies from the checkpoints in the output folder.
     pub resume: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl Job for RunJob {
@@ -34,10 +37,17 @@ impl Job for RunJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);
-            return super::duty::run_under_spectrum(self.name(), &self.case, out, observer);
+            return super::duty::run_under_spectrum(
+                self.name(),
+                &self.case,
+                out,
+                figures,
+                observer,
+            );
         }
         let model = build_model(&self.case, observer)?;
         let meta = RunMetadata::of_model(self.name(), &model);
@@ -57,7 +67,7 @@ impl Job for RunJob {
             },
         )?;
         let s = &study.runs;
-        let artifacts = run_artifacts(&model, s, &meta);
+        let artifacts = run_artifacts(&model, s, &meta).with_figure_output(figures);
         let incomplete = stops(&[&s.dynamic, &s.quasi_static], observer);
         let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
         outcome.incomplete = incomplete;

@@ -5,6 +5,7 @@ use super::observer::Observer;
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::RunMetadata;
+use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
 use crate::study::budget::{Budget, Job as Cost};
 use std::path::PathBuf;
@@ -18,6 +19,8 @@ pub struct StiffnessJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl Job for StiffnessJob {
@@ -28,10 +31,12 @@ impl Job for StiffnessJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
         let model = build_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
-        publish::publish(out, stiffness_artifacts(&model), Some(&meta), observer)
+        let artifacts = stiffness_artifacts(&model).with_figure_output(figures);
+        publish::publish(out, artifacts, Some(&meta), observer)
     }
 }

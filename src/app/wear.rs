@@ -8,6 +8,7 @@ use crate::config::Case;
 use crate::io::checkpoint::checkpoint_name;
 use crate::io::checkpoint_set::CheckpointSet;
 use crate::io::RunMetadata;
+use crate::report::figure_output::FigureRequest;
 use crate::report::wear::wear_artifacts;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::wear_loop::{run_wear_modes, StopKind, WearMode, WearRun};
@@ -27,6 +28,8 @@ pub struct WearJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl Job for WearJob {
@@ -37,6 +40,7 @@ impl Job for WearJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let cost = Cost::Wear {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),
@@ -49,6 +53,7 @@ impl Job for WearJob {
                 &self.case,
                 &self.modes,
                 out,
+                figures,
                 observer,
             );
         }
@@ -66,7 +71,7 @@ impl Job for WearJob {
         let refs: Vec<&WearRun> = runs.runs.iter().collect();
         let mut outcome = publish::publish(
             runs.out,
-            wear_artifacts(&model, &refs),
+            wear_artifacts(&model, &refs).with_figure_output(figures),
             Some(&meta),
             observer,
         )?;

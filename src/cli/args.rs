@@ -134,6 +134,27 @@ pub struct ConfigArgs {
     pub new_pair: bool,
 }
 
+/// The formats and size of a command's figures.
+#[derive(Debug, Clone, Args, Default)]
+pub struct FigureArgs {
+    /// Figure formats: png, svg (vector) or png,svg [default: png].
+    #[arg(long = "figures", value_name = "FORMATS")]
+    pub formats: Option<String>,
+    /// Size of a one-panel figure in pixels, WIDTHxHEIGHT (width 400-8192, height
+    /// 200-4096; figures of several panels keep their height ratio) [default: 900x420].
+    #[arg(long = "figure-size", value_name = "WxH")]
+    pub size: Option<String>,
+}
+
+impl FigureArgs {
+    pub fn request(&self) -> crate::report::figure_output::FigureRequest {
+        crate::report::figure_output::FigureRequest {
+            formats: self.formats.clone(),
+            size: self.size.clone(),
+        }
+    }
+}
+
 #[derive(Debug, Args)]
 pub struct StiffnessArgs {
     #[command(flatten)]
@@ -141,6 +162,8 @@ pub struct StiffnessArgs {
     /// Output directory.
     #[arg(long, default_value = "results/stiffness")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -154,6 +177,8 @@ pub struct DynamicsArgs {
     /// Output directory.
     #[arg(long, default_value = "results/dynamics")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -173,6 +198,8 @@ pub struct WearArgs {
     /// Output directory.
     #[arg(long, default_value = "results/wear")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
     /// Continue from the checkpoints in the output directory.
     #[arg(long)]
     pub resume: bool,
@@ -185,6 +212,8 @@ pub struct RunArgs {
     /// Output directory.
     #[arg(long, default_value = "results")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
     /// Continue the wear studies from the checkpoints in the output directory.
     #[arg(long)]
     pub resume: bool,

@@ -16,5 +16,6 @@ pub fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

@@ -48,6 +48,8 @@ pub fn flag(a: Arg) -> &'static str {
         Arg::Design => "--design",
         Arg::FutureSpectrum => "--future-spectrum",
         Arg::FutureFromCycles => "--future-from-cycles",
+        Arg::FigureFormats => "--figures",
+        Arg::FigureSize => "--figure-size",
     }
 }
 

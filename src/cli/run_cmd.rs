@@ -13,5 +13,6 @@ pub fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
         replace: super::output::replace(),
         resume: a.resume,
         budget,
+        figures: a.figures.request(),
     })
 }

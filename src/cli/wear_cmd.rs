@@ -21,5 +21,6 @@ pub fn run(a: &WearArgs, budget: Option<Budget>) -> Result<(), CliError> {
         replace: super::output::replace(),
         resume: a.resume,
         budget,
+        figures: a.figures.request(),
     })
 }

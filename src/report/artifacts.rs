@@ -3,7 +3,8 @@
 //! (`report::{stiffness, dynamics, wear, paper, sweep}`) that the command line and the
 //! Python binding share; written by [`write_artifacts`] into an output set.
 
-use super::plot::{render_png, Figure, PlotError};
+use super::figure_output::FigureOutput;
+use super::plot::{render_png, render_svg, Figure, PlotError};
 use crate::io::{OutputDir, OutputError, RunMetadata, Table};
 use rayon::prelude::*;
 use std::path::PathBuf;
@@ -52,6 +53,9 @@ pub struct Artifacts {
     pub documents: Vec<(String, Vec<u8>)>,
     /// A few lines for standard output: the headline results.
     pub headline: String,
+    /// The formats and size the figures are written in (PNG at the default size unless
+    /// the job asks otherwise).
+    pub figure_output: FigureOutput,
 }
 
 impl Artifacts {
@@ -87,6 +91,12 @@ impl Artifacts {
             f.data = Some(csv.clone());
         }
         self.table(csv, data);
+    }
+
+    /// These artifacts with their figures written as `f` says.
+    pub fn with_figure_output(mut self, f: FigureOutput) -> Self {
+        self.figure_output = f;
+        self
     }
 
     /// The table at `path`, if present.
@@ -192,7 +202,7 @@ pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteEr
         })?;
         out.stage(path, &bytes)?;
     }
-    stage_figures(out, &a.figures)?;
+    stage_figures(out, &a.figures, a.figure_output)?;
     for (path, bytes) in &a.documents {
         out.stage(path, bytes)?;
     }
@@ -207,10 +217,40 @@ pub fn publish_artifacts(mut out: OutputDir, a: &Artifacts) -> Result<PathBuf, W
     Ok(root)
 }
 
-/// Render and stage figures into `out`.
-pub fn stage_figures(out: &mut OutputDir, figures: &[FigureFile]) -> Result<(), WriteError> {
-    for (f, png) in figures.iter().zip(render_figures(figures)?) {
-        out.stage(&f.path, &png)?;
+/// Render (in parallel) and stage figures into `out` in the formats and size of `how`:
+/// `NAME.png` and/or `NAME.svg`. PNG bytes rendered before are reused only at their size.
+pub fn stage_figures(
+    out: &mut OutputDir,
+    figures: &[FigureFile],
+    how: FigureOutput,
+) -> Result<(), WriteError> {
+    let svg_path = |f: &FigureFile| format!("{}.svg", f.path.trim_end_matches(".png"));
+    let files: Vec<(String, Vec<u8>)> = figures
+        .par_iter()
+        .flat_map_iter(|f| {
+            let (w, h) = how.size_of((f.width_px, f.height_px));
+            let png = how.png.then(|| match &f.png {
+                Some(bytes) if (w, h) == (f.width_px, f.height_px) => Ok(bytes.clone()),
+                _ => render_png(&f.figure, w, h).map_err(|source| WriteError::Plot {
+                    path: f.path.clone(),
+                    source,
+                }),
+            });
+            let svg = how.svg.then(|| {
+                render_svg(&f.figure, w, h)
+                    .map(String::into_bytes)
+                    .map_err(|source| WriteError::Plot {
+                        path: svg_path(f),
+                        source,
+                    })
+            });
+            let png = png.map(|r| r.map(|b| (f.path.clone(), b)));
+            let svg = svg.map(|r| r.map(|b| (svg_path(f), b)));
+            png.into_iter().chain(svg)
+        })
+        .collect::<Result<_, _>>()?;
+    for (path, bytes) in files {
+        out.stage(&path, &bytes)?;
     }
     Ok(())
 }

@@ -8,6 +8,7 @@ pub mod dataset_trends;
 pub mod duty;
 pub mod duty_figures;
 pub mod dynamics;
+pub mod figure_output;
 pub mod figures;
 pub mod html;
 pub mod ldd;
