@@ -111,3 +111,26 @@ pub fn snapshot(dir: &Path) -> std::collections::BTreeMap<std::path::PathBuf, Ve
     }
     all
 }
+
+/// `r` is an exit-2 refusal whose message holds every one of `needles` (and no panic or
+/// allocation failure), that made no `out` folder and left every file under `dir` as
+/// `before` (a [`snapshot`] taken just before the run).
+pub fn assert_refused_touching_nothing(
+    r: &Output,
+    needles: &[&str],
+    dir: &Path,
+    out: &Path,
+    before: &std::collections::BTreeMap<std::path::PathBuf, Vec<u8>>,
+) {
+    let e = stderr(r);
+    assert_eq!(r.status.code(), Some(2), "{e}");
+    assert!(
+        !e.contains("panicked") && !e.contains("memory allocation"),
+        "{e}"
+    );
+    for needle in needles {
+        assert!(e.contains(needle), "message lacks `{needle}`: {e}");
+    }
+    assert!(!out.exists(), "an output despite the error");
+    assert_eq!(&snapshot(dir), before, "files outside the output changed");
+}
