@@ -158,12 +158,6 @@ impl ToothMesh {
         self.periods
     }
 
-    /// Whether pinion (0) or gear (1) teeth differ from each other (or run out).
-    pub fn varies(&self, member: usize) -> bool {
-        let z = [self.pinion.len(), self.gear.len()][member];
-        z > 1 && self.periods.is_multiple_of(z)
-    }
-
     /// Teeth of pinion and gear.
     pub fn teeth(&self) -> [usize; 2] {
         [self.pinion.len(), self.gear.len()]
