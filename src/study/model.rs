@@ -68,6 +68,54 @@ pub fn pitch_line_velocity_warning(case: &Case, pair: &GearPair) -> Option<Strin
     })
 }
 
+/// The warning of a case whose teeth differ under `contact.load_sharing` = "auto": its
+/// pairs share the load by their compressions, identical teeth by Pedrero's law, so a
+/// comparison of the two (a sweep across zero error, a baseline) mixes two laws; on the
+/// paper's case the law alone moves the initial wear rate by about a fifth
+/// (docs/MODEL.md, section 9).
+pub const AUTO_SHARING_WITH_RESOLVED_TEETH: &str = "the teeth differ or are modified, so the pairs share the load by their own compressions (`contact.load_sharing` = \"auto\"), while identical teeth use Pedrero's law (paper eq. 7); to compare such cases with identical teeth under one law, give `contact.load_sharing` = \"stiffness\"";
+
+/// Warnings for the gears whose ISO 1328-1 tolerances (`teeth.accuracy_grade`) extrapolate
+/// the 2013 formulas beyond the standard's scope (`geometry::iso1328::outside_scope`).
+fn tolerance_extrapolation_warnings(case: &Case, pair: &GearPair) -> Vec<String> {
+    let Some(class) = case.teeth.accuracy_grade else {
+        return Vec::new();
+    };
+    let m_mm = pair.module_m * 1e3;
+    [("pinion", &pair.pinion), ("gear", &pair.gear)]
+        .into_iter()
+        .filter_map(|(name, g)| {
+            crate::geometry::iso1328::outside_scope(class, g.teeth, m_mm * g.teeth as f64, m_mm).map(|why| {
+                format!(
+                    "`teeth.accuracy_grade` = {class}: the {name}'s tolerances extrapolate the formulas of ISO 1328-1:2013 beyond its scope ({why})"
+                )
+            })
+        })
+        .collect()
+}
+
+/// The error of Pedrero's law asked for explicitly on teeth that differ: the law has no
+/// place for one pair's gap or softer tooth. Names what makes the teeth differ.
+fn pedrero_with_resolved_teeth(case: &Case) -> String {
+    let mut why = Vec::new();
+    if case.teeth != Default::default() {
+        why.push("`[teeth]`");
+    }
+    if case.modification != Default::default() {
+        why.push("`[modification]`");
+    }
+    if !case.fault.is_empty() {
+        why.push("`[[fault]]`");
+    }
+    if case.wear.worn_geometry == crate::config::case::WornGeometry::Worn {
+        why.push("`wear.worn_geometry` = \"worn\"");
+    }
+    format!(
+        "`contact.load_sharing` = \"pedrero\" (paper eq. 7) is defined for identical, perfect teeth, but this case makes them differ ({}): give \"stiffness\" or \"auto\", which share the load by each pair's compression",
+        why.join(", ")
+    )
+}
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
@@ -107,6 +155,16 @@ impl Model {
             params.static_mesh_force_n,
         )
         .map_err(ModelError)?;
+        warnings.extend(tolerance_extrapolation_warnings(case, &pair));
+        if teeth.is_some() {
+            match case.contact.load_sharing {
+                LoadSharingModel::Pedrero => {
+                    return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
+                }
+                LoadSharingModel::Auto => warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into()),
+                LoadSharingModel::Stiffness => {}
+            }
+        }
         Ok(Self {
             teeth,
             case: case.clone(),
@@ -155,8 +213,9 @@ impl Model {
         self.system_for(gap, external, roughness_um, None)
     }
 
-    /// As [`Model::system`] with a tooth-resolved mesh (its pairs' loads then follow
-    /// their own compressions: Pedrero's law of eq. 7 is for identical, perfect teeth).
+    /// As [`Model::system`] with a tooth-resolved mesh (with `contact.load_sharing` =
+    /// "auto" its pairs' loads then follow their own compressions: Pedrero's law of eq. 7
+    /// is for identical, perfect teeth; `LoadSharingModel::resolve`).
     pub fn system_for<'a>(
         &'a self,
         gap: &'a PairGap,
@@ -164,10 +223,7 @@ impl Model {
         roughness_um: f64,
         teeth: Option<&'a ToothMesh>,
     ) -> GearSystem<'a> {
-        let load_sharing = match teeth {
-            Some(_) => LoadSharingModel::Stiffness,
-            None => self.case.contact.load_sharing,
-        };
+        let load_sharing = self.case.contact.load_sharing;
         GearSystem::new(GearSystemParts {
             pair: &self.pair,
             mesh: &self.mesh,
