@@ -49,7 +49,16 @@ pub struct ToothFlank {
     pub curvature_change_per_m: Option<Vec<f64>>,
 }
 
-/// Run-out of one gear: eccentricity (m along the line of action) turning with the shaft.
+/// Run-out of one gear: an eccentricity e_c of its base circle turning with the shaft
+/// (Velex & Maatar, J. Sound Vib. 191 (1996) 629, eccentricity as a displacement of the
+/// gear centre). The centre
+/// moves by e_c (cos(Omega t - phi'), sin(Omega t - phi')); its component along the line
+/// of action, e_c cos(Omega t - phi), moves the base circle and so every pair of that
+/// gear at once; the component across it changes the centre distance, which enters the
+/// contact ratio and operating pressure angle only to second order in e_c and is left
+/// out. A dial or ball probe in the tooth spaces reads e_c cos(theta) about its mean, a
+/// range F_r = 2 e_c: the radial run-out a drawing gives (`study::teeth` takes
+/// e_c = F_r / 2).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Runout {
     pub eccentricity_m: f64,
@@ -59,7 +68,8 @@ pub struct Runout {
 }
 
 impl Runout {
-    /// Displacement along the line of action (m, positive compresses) and its rate (m/s).
+    /// Displacement along the line of action, e_c cos(Omega t - phi) (m, positive
+    /// compresses), and its rate -e_c Omega sin(Omega t - phi) (m/s).
     #[inline]
     pub fn at(&self, t_s: f64) -> (f64, f64) {
         if self.eccentricity_m == 0.0 {
