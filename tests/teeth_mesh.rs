@@ -314,7 +314,6 @@ fn a_gear_runout_shifts_the_static_transmission_error_by_half_the_runout_in_phas
             let k: f64 = m
                 .pair
                 .pairs_in_contact(*phase)
-                .into_iter()
                 .map(|(_, rho1)| m.mesh.pair_stiffness_n_per_m(rho1))
                 .sum();
             let shift = e_c * (omega_g * t - phi).cos();
