@@ -407,7 +407,7 @@ pub const KEYS: &[KeySpec] = &[
       "Checked against the active profile with the geometry."),
     k("fault.spall_length_mm", "mm", Num(Range::above(0.0, 100.0)), "Spall: length along the profile (roll length; required).",
       "The spall must lie on the active profile (checked with the geometry)."),
-    k("fault.spall_depth_um", "µm", Num(Range::above(0.0, 10_000.0)), "Spall: depth of the pit (required).",
+    k("fault.spall_depth_um", "µm", Num(Range::above(0.0, 10_000.0)), "Spall: depth of the pit (required); at most 95 % of the tooth's thickness at the spall's upper edge (checked).",
       "Pits are tens to hundreds of micrometres deep; 1 cm is beyond any tooth the model takes."),
     k("fault.spall_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Spall: share of the face width it covers (absent: 1, across the whole face).",
       "From a pit of no width to one across the face."),

@@ -122,8 +122,19 @@ pub struct Spall {
 }
 
 impl Spall {
+    /// Largest share of the tooth's thickness 2h a pit may take at a section (beyond it
+    /// the section is all but cut through and the beam model has no meaning).
+    pub const MAX_THICKNESS_SHARE: f64 = 0.95;
+
     pub fn contains(&self, rho_m: f64) -> bool {
         rho_m >= self.rho_lo_m && rho_m <= self.rho_hi_m
+    }
+
+    /// Deepest pit the spall's extent holds: [`Self::MAX_THICKNESS_SHARE`] of the
+    /// thickness 2h at its upper edge, where the tooth is thinnest, m.
+    pub fn max_depth_m(&self, beam: &ToothBeam) -> f64 {
+        let h = beam.involute_point(beam.contact_angle_rad(self.rho_hi_m)).0;
+        Self::MAX_THICKNESS_SHARE * 2.0 * h
     }
 }
 
@@ -147,7 +158,7 @@ pub fn spall_compliance_m_per_n(
             return full;
         }
         // The pit u in [h - d, h] over width f b, u across the thickness from the centreline.
-        let d = spall.depth_m.min(1.9 * h);
+        let d = spall.depth_m.min(Spall::MAX_THICKNESS_SHARE * 2.0 * h);
         let pit_area = f * b * d;
         let area = full.0 - pit_area;
         let first = -pit_area * (h - 0.5 * d);
