@@ -111,3 +111,42 @@ fn a_sweep_varies_a_per_tooth_key_and_its_rows_equal_single_runs() {
     // A 4 um run-out (2 um eccentricity) raises the maximum DTE.
     assert!(dte[1] > dte[0], "{dte:?}");
 }
+
+#[test]
+fn healthy_teeth_list_their_faults_as_plain_zeros() {
+    // A healthy tooth has no crack, spall or broken tip: its fault cells are exactly 0,
+    // written "0" (an empty f64 sum is -0.0, which was written "-0").
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("s");
+    ok(&[
+        "stiffness",
+        "-q",
+        "--set",
+        "fault.kind=crack",
+        "--set",
+        "fault.gear=gear",
+        "--set",
+        "fault.tooth=7",
+        "--set",
+        "fault.crack_depth_mm=1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    for (file, teeth) in [("teeth_pinion.csv", 19), ("teeth_gear.csv", 31)] {
+        let (h, rows) = read_csv(&out.join(file));
+        assert_eq!(rows.len(), teeth);
+        for (t, row) in rows.iter().enumerate() {
+            for (name, cell) in h.iter().zip(row) {
+                assert!(!cell.starts_with("-0"), "{file} tooth {t} {name} = {cell}");
+                let cracked = file == "teeth_gear.csv" && t == 7 && name == "crack_depth_mm";
+                if name.ends_with("_mm") || name.ends_with("depth_um") {
+                    assert_eq!(
+                        cell,
+                        if cracked { "1" } else { "0" },
+                        "{file} tooth {t} {name}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -195,11 +195,44 @@ pub(super) fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> 
     };
     (!ok).then(|| {
         format!(
-            "`{key}` = {} is invalid: expected {}",
+            "`{key}` = {} is invalid{}: expected {}",
             show(v),
+            first_bad_element(key, v, valid),
             valid.describe()
         )
     })
+}
+
+/// For an array key, which value is out of range (0-based, and the tooth it belongs to
+/// for the per-tooth arrays of `[teeth]`): a long array's shown text is clipped, so the
+/// message must say where the bad value is. Empty for other keys.
+fn first_bad_element(key: &str, v: &Value, valid: Valid) -> String {
+    let (Valid::NumArray(r), Some(items)) = (valid, v.as_array()) else {
+        return String::new();
+    };
+    if items.is_empty() {
+        return " (the array is empty)".into();
+    }
+    let bad = items
+        .iter()
+        .enumerate()
+        .find(|(_, x)| !as_number(x).is_some_and(|f| r.contains(f)));
+    match bad {
+        Some((i, x)) => {
+            // One value of a `[teeth]` array holds for every tooth.
+            let tooth = if key.starts_with("teeth.") && items.len() > 1 {
+                format!(", tooth {i}")
+            } else {
+                String::new()
+            };
+            format!(
+                " (value {i} of 0 to {}{tooth}, is {})",
+                items.len() - 1,
+                show(x)
+            )
+        }
+        None => String::new(),
+    }
 }
 
 /// The sections of the case file, in schema order.
@@ -676,6 +709,28 @@ mod tests {
             e.contains("dynamics.mass_gear_kg") && e.contains("\"derived\""),
             "{e}"
         );
+    }
+
+    #[test]
+    fn a_bad_value_in_a_long_per_tooth_array_is_named_by_its_tooth() {
+        // 31 values: the shown array is clipped before value 15, so only the index says
+        // which tooth is wrong. NaN and inf are not numbers in any range.
+        let mut gear = vec!["0"; 31];
+        gear[15] = "5000";
+        let e = err(
+            "",
+            &[&format!("teeth.pitch_error_gear_um=[{}]", gear.join(","))],
+        );
+        assert!(
+            e.contains("`teeth.pitch_error_gear_um`")
+                && e.contains("(value 15 of 0 to 30, tooth 15, is 5000)")
+                && e.contains("[-1000, 1000]"),
+            "{e}"
+        );
+        let e = err("[teeth]\nprofile_slope_pinion_um = [nan]\n", &[]);
+        assert!(e.contains("(value 0 of 0 to 0, is NaN)"), "{e}");
+        let e = err("[surface]\nroughness_table_wear_um = [0.1, inf, 1]\n", &[]);
+        assert!(e.contains("(value 1 of 0 to 2, is inf)"), "{e}");
     }
 
     #[test]

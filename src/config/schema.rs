@@ -407,7 +407,7 @@ pub const KEYS: &[KeySpec] = &[
       "Checked against the active profile with the geometry."),
     k("fault.spall_length_mm", "mm", Num(Range::above(0.0, 100.0)), "Spall: its extent as a roll length, the difference of the radii of curvature rho of its two edges (along the line of action, like `spall_position_mm` and the relief lengths; required). A length s measured on the flank surface (a photo, a profile trace) converts locally as roll length = (r_b / rho) s, r_b the tooth's base radius and rho at the spall (2.75 at the paper pinion's pitch point: 0.36 mm on the flank is 1 mm of roll; exactly, the flank distance between rho_a and rho_b is abs(rho_b^2 - rho_a^2) / (2 r_b)); docs/MODEL.md, section 9.5.",
       "The spall must lie on the active profile (checked with the geometry)."),
-    k("fault.spall_depth_um", "µm", Num(Range::above(0.0, 10_000.0)), "Spall: depth of the pit (required).",
+    k("fault.spall_depth_um", "µm", Num(Range::above(0.0, 10_000.0)), "Spall: depth of the pit (required); at most 95 % of the tooth's thickness at the spall's upper edge (checked).",
       "Pits are tens to hundreds of micrometres deep; 1 cm is beyond any tooth the model takes."),
     k("fault.spall_width_fraction", "-", Num(Range::above(0.0, 1.0)), "Spall: share of the face width it covers (absent: 1, across the whole face).",
       "From a pit of no width to one across the face."),

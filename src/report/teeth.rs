@@ -36,7 +36,8 @@ pub fn teeth_table(model: &Model, member: Member) -> Option<Table> {
                     .iter()
                     .filter(|x| x.gear == member && x.kind == kind && x.tooth as usize == tooth)
                     .filter_map(f)
-                    .sum()
+                    // Not `sum()`: an empty f64 sum is -0.0, written "-0" for a healthy tooth.
+                    .fold(0.0, |a, b| a + b)
             })
             .collect()
     };

@@ -30,8 +30,8 @@
 //! **Spall** (Saxena, Parey & Chouksey, Eng. Fail. Anal. 70 (2016) 200; Ma et al.,
 //! Mech. Syst. Signal Process. 2015 review): a pit of depth d over a share f of the face
 //! width and between two roll distances rho (along the line of action; its length on the
-//! flank surface is (rho / r_b) times its roll length, `spall_gap_m`). Over its heights the section loses the pit's
-//! rectangle at the loaded flank (area f b d, second moment about the shifted centroid),
+//! flank surface is (rho / r_b) times its roll length, `spall_gap_m`). Over its heights the
+//! section loses the pit's rectangle at the loaded flank (area f b d, second moment about the shifted centroid),
 //! which softens the tooth for every contact above the pit's lower edge; with the contact
 //! inside it the Hertz line contact is (1 - f) b long (k_h scaled by 1 - f). A pit across
 //! the whole face (f = 1) leaves the contact on its edges instead (full length) and opens
@@ -123,8 +123,19 @@ pub struct Spall {
 }
 
 impl Spall {
+    /// Largest share of the tooth's thickness 2h a pit may take at a section (beyond it
+    /// the section is all but cut through and the beam model has no meaning).
+    pub const MAX_THICKNESS_SHARE: f64 = 0.95;
+
     pub fn contains(&self, rho_m: f64) -> bool {
         rho_m >= self.rho_lo_m && rho_m <= self.rho_hi_m
+    }
+
+    /// Deepest pit the spall's extent holds: [`Self::MAX_THICKNESS_SHARE`] of the
+    /// thickness 2h at its upper edge, where the tooth is thinnest, m.
+    pub fn max_depth_m(&self, beam: &ToothBeam) -> f64 {
+        let h = beam.involute_point(beam.contact_angle_rad(self.rho_hi_m)).0;
+        Self::MAX_THICKNESS_SHARE * 2.0 * h
     }
 }
 
@@ -159,7 +170,7 @@ pub fn spall_compliance_m_per_n(
             return full;
         }
         // The pit u in [h - d, h] over width f b, u across the thickness from the centreline.
-        let d = spall.depth_m.min(1.9 * h);
+        let d = spall.depth_m.min(Spall::MAX_THICKNESS_SHARE * 2.0 * h);
         let pit_area = f * b * d;
         let area = full.0 - pit_area;
         let first = -pit_area * (h - 0.5 * d);

@@ -192,6 +192,10 @@ impl ToothInputs {
                         .collect();
                     let mut f = ToothFlank {
                         removed_m,
+                        // A pitch deviation is an arc on the reference circle (ISO
+                        // 1328-1); along the line of action it is that arc on the base
+                        // circle, r_b / r = cos(alpha) times it (alpha the reference
+                        // pressure angle).
                         position_m: e.position_um[t] * 1e-6 * cos_alpha,
                         ..Default::default()
                     };
@@ -515,6 +519,17 @@ fn spall_of(fault: &FaultSpec, flank: &ActiveFlank) -> Spall {
     }
 }
 
+/// An upper limit shown to 4 decimals, rounded down, so that every value up to the shown
+/// limit is accepted (a limit rounded to nearest could show 4.5000 for 4.49999).
+fn upper_mm(x: f64) -> String {
+    format!("{:.4}", (x * 1e4).floor() / 1e4)
+}
+
+/// A lower limit shown to 4 decimals, rounded up (see [`upper_mm`]).
+fn lower_mm(x: f64) -> String {
+    format!("{:.4}", (x * 1e4).ceil() / 1e4)
+}
+
 /// The checks of the module docs.
 fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<String> {
     let mut p = Vec::new();
@@ -525,8 +540,8 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
     if let Some(l) = m.tip_relief_length_mm {
         if l * 1e-3 > addendum {
             p.push(format!(
-                "`modification.tip_relief_length_mm` = {l} is longer than the addendum: a tip relief runs from the tip at most to the pitch point, valid (0, {:.4}] mm on this pair (the shorter of the pinion's {:.4} and the gear's {:.4} mm roll length)",
-                addendum * mm,
+                "`modification.tip_relief_length_mm` = {l} is longer than the addendum: a tip relief runs from the tip at most to the pitch point, valid (0, {}] mm on this pair (the shorter of the pinion's {:.4} and the gear's {:.4} mm roll length)",
+                upper_mm(addendum * mm),
                 flanks[0].addendum_roll_m() * mm,
                 flanks[1].addendum_roll_m() * mm
             ));
@@ -536,8 +551,8 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
     if let Some(l) = m.root_relief_length_mm {
         if l * 1e-3 > dedendum {
             p.push(format!(
-                "`modification.root_relief_length_mm` = {l} is longer than the active dedendum: a root relief runs from the start of active profile at most to the pitch point, valid (0, {:.4}] mm on this pair",
-                dedendum * mm
+                "`modification.root_relief_length_mm` = {l} is longer than the active dedendum: a root relief runs from the start of active profile at most to the pitch point, valid (0, {}] mm on this pair",
+                upper_mm(dedendum * mm)
             ));
         }
     }
@@ -582,9 +597,9 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                 let q = f.crack_depth_mm.unwrap_or(0.0);
                 if q * 1e-3 >= q_max {
                     p.push(format!(
-                        "`fault.crack_depth_mm` = {q} ({who}) is deeper than the tooth: at {angle} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {:.4}) mm",
+                        "`fault.crack_depth_mm` = {q} ({who}) is deeper than the tooth: at {angle} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
                         2.0 * beam.root_section().0 * mm,
-                        q_max * mm
+                        upper_mm(q_max * mm)
                     ));
                 }
             }
@@ -594,20 +609,35 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                 let len = spall.rho_hi_m - spall.rho_lo_m;
                 if len > profile {
                     p.push(format!(
-                        "`fault.spall_length_mm` = {} ({who}) is longer than the active profile: valid (0, {:.4}] mm",
-                        len * mm,
-                        profile * mm
+                        "`fault.spall_length_mm` = {} ({who}) is longer than the active profile: valid (0, {}] mm",
+                        f.spall_length_mm.unwrap_or(0.0),
+                        upper_mm(profile * mm)
                     ));
                 } else if spall.rho_lo_m < flank.sap_rho_m - 1e-12
                     || spall.rho_hi_m > flank.tip_rho_m + 1e-12
                 {
                     p.push(format!(
-                        "`fault.spall_position_mm` = {} ({who}) puts the spall off the active profile: with length {} mm its centre must lie within [{:.4}, {:.4}] mm of the pitch point",
+                        "`fault.spall_position_mm` = {} ({who}) puts the spall off the active profile: with length {} mm its centre must lie within [{}, {}] mm of the pitch point",
                         f.spall_position_mm.unwrap_or(0.0),
-                        len * mm,
-                        (flank.sap_rho_m - flank.pitch_rho_m + 0.5 * len) * mm,
-                        (flank.tip_rho_m - flank.pitch_rho_m - 0.5 * len) * mm
+                        f.spall_length_mm.unwrap_or(0.0),
+                        lower_mm((flank.sap_rho_m - flank.pitch_rho_m + 0.5 * len) * mm),
+                        upper_mm((flank.tip_rho_m - flank.pitch_rho_m - 0.5 * len) * mm)
                     ));
+                } else {
+                    let beam = &mesh.tooth_beams()[match s {
+                        Side::Pinion => 0,
+                        Side::Gear => 1,
+                    }];
+                    let d_max = spall.max_depth_m(beam);
+                    if spall.depth_m > d_max {
+                        p.push(format!(
+                            "`fault.spall_depth_um` = {} ({who}) is deeper than the tooth holds: a pit may take at most {:.0} % of the tooth's thickness at its upper edge ({:.4} mm), valid (0, {:.1}] µm",
+                            f.spall_depth_um.unwrap_or(0.0),
+                            Spall::MAX_THICKNESS_SHARE * 100.0,
+                            d_max / Spall::MAX_THICKNESS_SHARE * mm,
+                            (d_max * 1e7).floor() / 10.0
+                        ));
+                    }
                 }
             }
             FaultKind::BrokenTip => {
@@ -615,8 +645,8 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                 let height = g.tip_radius_m - g.root_radius_m;
                 if h * 1e-3 > height {
                     p.push(format!(
-                        "`fault.removed_height_mm` = {h} ({who}) is more than the tooth: valid (0, {:.4}] mm (tip to root circle)",
-                        height * mm
+                        "`fault.removed_height_mm` = {h} ({who}) is more than the tooth: valid (0, {}] mm (tip to root circle)",
+                        upper_mm(height * mm)
                     ));
                 }
             }
