@@ -31,11 +31,11 @@
 //! Mech. Syst. Signal Process. 2015 review): a pit of depth d over a share f of the face
 //! width and between two roll distances rho (along the line of action; its length on the
 //! flank surface is (rho / r_b) times its roll length, `spall_gap_m`). Over its heights the
-//! section loses the pit's rectangle at the loaded flank (area f b d, second moment about the shifted centroid),
-//! which softens the tooth for every contact above the pit's lower edge; with the contact
-//! inside it the Hertz line contact is (1 - f) b long (k_h scaled by 1 - f). A pit across
-//! the whole face (f = 1) leaves the contact on its edges instead (full length) and opens
-//! a gap (`dynamics::tooth_mesh`).
+//! section loses the pit's rectangle at the loaded flank (area f b d, second moment about
+//! the shifted centroid), which softens the tooth for every contact above the pit's lower
+//! edge; with the contact inside it the Hertz line contact is (1 - f) b long (k_h scaled
+//! by 1 - f). A pit across the whole face (f = 1) leaves the contact on its edges instead
+//! (full length) and opens a gap (`dynamics::tooth_mesh`).
 
 use super::potential_energy::{GaussLegendre, ToothBeam};
 use std::f64::consts::PI;
