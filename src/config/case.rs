@@ -551,7 +551,38 @@ impl Default for NumericsSection {
     }
 }
 
+/// Whether a key changes teeth one by one (`[teeth]`, `[modification]`, `[[fault]]`) or
+/// their geometry as they wear (`wear.worn_geometry`): a key that can make the mesh
+/// tooth-resolved.
+pub fn is_per_tooth_key(key: &str) -> bool {
+    ["teeth.", "modification.", "fault."]
+        .iter()
+        .any(|p| key.starts_with(p))
+        || key == "wear.worn_geometry"
+}
+
 impl Case {
+    /// Whether the case gives any per-tooth input (`[teeth]`, `[modification]`,
+    /// `[[fault]]`, `wear.worn_geometry` = "worn"), even one whose values change nothing.
+    pub fn has_per_tooth_inputs(&self) -> bool {
+        !self.teeth.is_empty()
+            || !self.modification.is_empty()
+            || !self.fault.is_empty()
+            || self.wear.worn_geometry == WornGeometry::Worn
+    }
+
+    /// Cases compared with each other (the rows of a sweep, the conditions of a dataset)
+    /// share one load-sharing law: where any of them gives per-tooth inputs
+    /// (`any_per_tooth`), "auto" is made "stiffness" in each, so that a row of identical
+    /// teeth is not solved under Pedrero's law while its neighbours with a tiny error are
+    /// solved by compression (`LoadSharingModel::resolve`). The case says so itself, so a
+    /// row rerun alone gives the same numbers.
+    pub fn share_one_law(&mut self, any_per_tooth: bool) {
+        if any_per_tooth && self.contact.load_sharing == LoadSharingModel::Auto {
+            self.contact.load_sharing = LoadSharingModel::Stiffness;
+        }
+    }
+
     /// A starting point for a pair of one's own (`gearwear config --new-pair`): the
     /// built-in case with every value the geometry can give set to `"derived"` (hub bores,
     /// masses and inertias of pinion and gear), so that they follow the `[gear]` section

@@ -2,7 +2,7 @@
 //! repeats over, read from the case alone before any model is built, and the cost that
 //! period adds to a run (`study::budget::estimate` adds the term).
 
-use crate::config::case::{Case, Member, WornGeometry};
+use crate::config::case::{Case, Member};
 
 /// Whether the values of a per-tooth array differ from tooth to tooth.
 fn differ(v: &Option<Vec<f64>>) -> bool {
@@ -67,11 +67,7 @@ pub fn budget_term(
     use super::budget::{
         RESPONSE_BYTES_PER_SAMPLE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
     };
-    let per_tooth = !case.teeth.is_empty()
-        || !case.modification.is_empty()
-        || !case.fault.is_empty()
-        || case.wear.worn_geometry == WornGeometry::Worn;
-    if !per_tooth {
+    if !case.has_per_tooth_inputs() {
         return None;
     }
     let p = excitation_periods_of(case) as f64;

@@ -4,6 +4,7 @@
 //! run. Every problem is reported at once.
 
 use super::super::{budget, JobError};
+use crate::config::case::is_per_tooth_key;
 use crate::config::load::case_with;
 use crate::config::Case;
 use crate::io::RunMetadata;
@@ -52,14 +53,19 @@ pub fn resolve(
     run: SweepRun,
     limit: Option<&Budget>,
 ) -> Result<Vec<Planned>, JobError> {
+    // The rows are compared with each other: one load-sharing law for all of them,
+    // decided from the plan so that every shard decides alike.
+    let any_per_tooth =
+        base.has_per_tooth_inputs() || plan.axes.iter().any(|a| is_per_tooth_key(a.key));
     let resolved: Vec<Result<Planned, Problem>> = ids
         .par_iter()
         .map(|&(id, index)| {
             let what = || format!("case {id} ({})", plan.describe(index));
-            let case = case_with(base, &plan.settings_of(index)).map_err(|e| {
+            let mut case = case_with(base, &plan.settings_of(index)).map_err(|e| {
                 let list: Vec<String> = e.problems.iter().map(|p| p.to_string()).collect();
                 Problem::new(format!("{}: {}", what(), list.join("; ")))
             })?;
+            case.share_one_law(any_per_tooth);
             let hash = RunMetadata::new("sweep", &case).case_sha256;
             Ok(Planned {
                 id,

@@ -346,6 +346,11 @@ pub fn parse_design(
     if !p.is_empty() {
         return Err(p);
     }
+    // The conditions are compared with each other (healthy against faulty): one law.
+    let any_per_tooth = conditions.iter().any(|c| c.case.has_per_tooth_inputs());
+    for c in &mut conditions {
+        c.case.share_one_law(any_per_tooth);
+    }
     Ok(DatasetDesign {
         seed: f.seed,
         transfer_path: f.transfer_path.map(Into::into),
@@ -402,6 +407,31 @@ roughness_table_rms_um = [0.42, 0.38, 0.30]
         assert_eq!(d.speeds_hz, vec![20.0, 30.0]);
         assert_eq!(d.torques_nm, vec![60.0]);
         assert_eq!(d.states, StateChoice::Cycles(vec![0.0, 1e4]));
+    }
+
+    #[test]
+    fn healthy_and_faulty_conditions_share_one_load_sharing_law() {
+        // A record of identical teeth under Pedrero's law (paper eq. 7) beside records of
+        // a cracked tooth shared by compression would label a change of law as the
+        // fault's signature: with a per-tooth condition present, "auto" becomes
+        // "stiffness" in every condition; without one the conditions keep "auto".
+        use crate::config::case::LoadSharingModel;
+        let two = "[[condition]]\nname = \"healthy\"\n[[condition]]\nname = \"crack\"\nfault = \"crack\"\nseverity = 1.0\n[[condition.case.fault]]\nkind = \"crack\"\ngear = \"pinion\"\ntooth = 0\ncrack_depth_mm = 1.0\n";
+        let d = parse_design(two, "d.toml", &no_file).unwrap();
+        assert!(d.conditions[1].case.has_per_tooth_inputs());
+        for c in &d.conditions {
+            assert_eq!(
+                c.case.contact.load_sharing,
+                LoadSharingModel::Stiffness,
+                "{}",
+                c.name
+            );
+        }
+        let d = parse_design("[[condition]]\nname = \"healthy\"\n", "d.toml", &no_file).unwrap();
+        assert_eq!(
+            d.conditions[0].case.contact.load_sharing,
+            LoadSharingModel::Auto
+        );
     }
 
     #[test]
