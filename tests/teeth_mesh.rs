@@ -238,3 +238,43 @@ fn tip_relief_sized_to_the_load_lowers_the_static_transmission_error_as_by_hand(
     // The relief removes most of the plain pair's peak-to-peak.
     assert!(ptp_relief < 0.5 * ptp_plain);
 }
+
+#[test]
+fn under_one_load_sharing_law_a_vanishing_error_is_continuous_with_identical_teeth() {
+    // A gear run-out of 1e-9 µm (eccentricity 5e-16 m) moves the static transmission
+    // error by at most that much: 5e-10 of its ~1 µm range. Under the one law that
+    // both cases can use ("stiffness") the tooth-resolved mesh must therefore give the
+    // identical-teeth extremes to 1e-7 of the range (the rest is round-off of a
+    // different summation order). "auto" is defined as that law for differing teeth
+    // and as Pedrero's (paper eq. 7) for identical ones, so it must equal those
+    // explicit choices bit for bit.
+    let tiny = "teeth.runout_gear_um=1e-9";
+    let qs = |m: &Model| m.quasi_static(&m.new_wear_state(), &ExternalError::none());
+    let plain = qs(&model(&["contact.load_sharing=stiffness"]));
+    let resolved = qs(&model(&["contact.load_sharing=stiffness", tiny]));
+    assert_eq!(resolved.excitation_periods, 31);
+    let extremes = |v: &[f64]| {
+        (
+            v.iter().fold(f64::INFINITY, |a, b| a.min(*b)),
+            v.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)),
+        )
+    };
+    let (lo, hi) = extremes(&plain.signals.dte_m);
+    let (rlo, rhi) = extremes(&resolved.signals.dte_m);
+    let range = hi - lo;
+    assert!(range > 1e-7, "STE range {range} m");
+    assert!((rlo - lo).abs() < 1e-7 * range, "min {rlo} vs {lo}");
+    assert!((rhi - hi).abs() < 1e-7 * range, "max {rhi} vs {hi}");
+    let force =
+        |r: &gearwear::dynamics::response::DynamicResponse| extremes(&r.signals.pair_load_n[0]);
+    let ((flo, fhi), (rflo, rfhi)) = (force(&plain), force(&resolved));
+    assert!((rflo - flo).abs() < 1e-7 * (fhi - flo).max(1.0));
+    assert!((rfhi - fhi).abs() < 1e-7 * (fhi - flo).max(1.0));
+
+    let auto_resolved = qs(&model(&[tiny]));
+    assert_eq!(auto_resolved.signals.dte_m, resolved.signals.dte_m);
+    let auto_plain = qs(&model(&[]));
+    let pedrero = qs(&model(&["contact.load_sharing=pedrero"]));
+    assert_eq!(auto_plain.signals.dte_m, pedrero.signals.dte_m);
+    assert_eq!(auto_plain.signals.pair_load_n, pedrero.signals.pair_load_n);
+}

@@ -395,10 +395,29 @@ impl Default for StiffnessSection {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LoadSharingModel {
+    /// Pedrero's law where it is defined (identical, perfect teeth of contact ratio
+    /// between 1 and 2: the paper's case), otherwise by pair compression
+    /// ([`LoadSharingModel::resolve`]).
+    Auto,
     /// Paper eq. (7): Pedrero's piecewise-linear 1/3 - 2/3 law.
     Pedrero,
     /// Each pair's stiffness times its own deflection (gap from wear included).
     Stiffness,
+}
+
+impl LoadSharingModel {
+    /// The law a mesh uses: `Auto` becomes Pedrero's (paper eq. 7) for identical,
+    /// perfect teeth with 1 < contact ratio < 2, which is where the law is defined, and
+    /// sharing by pair compression otherwise: for teeth that differ, Pedrero's law has no
+    /// place for one pair's gap or softer tooth. An explicit choice stays as it is (the
+    /// model refuses Pedrero's law where it is not defined).
+    pub fn resolve(self, teeth_differ: bool, contact_ratio: f64) -> Self {
+        match self {
+            Self::Auto if teeth_differ || !(1.0..2.0).contains(&contact_ratio) => Self::Stiffness,
+            Self::Auto => Self::Pedrero,
+            law => law,
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -410,7 +429,7 @@ pub struct ContactSection {
 impl Default for ContactSection {
     fn default() -> Self {
         Self {
-            load_sharing: LoadSharingModel::Pedrero,
+            load_sharing: LoadSharingModel::Auto,
         }
     }
 }

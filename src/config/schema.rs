@@ -269,7 +269,7 @@ pub const KEYS: &[KeySpec] = &[
       "-"),
     k("stiffness.table_points_per_mesh_period", "-", Int(16, 100_000), "Samples of the mesh-stiffness table over one mesh period (cubic interpolation in between).",
       "16 points resolve the curve to ~1e-4; beyond 1e5 only round-off changes."),
-    k("contact.load_sharing", "-", Choice(&["pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero) or by pair stiffness and deflection.",
+    k("contact.load_sharing", "-", Choice(&["auto", "pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero), by pair stiffness and deflection, or auto: Pedrero for identical, perfect teeth of contact ratio between 1 and 2 (the paper's case), by stiffness otherwise (per-tooth inputs, higher contact ratios). Give \"stiffness\" to compare cases with and without per-tooth inputs under one law.",
       "-"),
     k("friction.model", "-", Choice(&["xu2007", "constant", "none"]), "Friction coefficient: Xu et al. (2007) regression (paper eq. 8-9), a constant, or none.",
       "-"),

@@ -186,8 +186,12 @@ const _: () = {
 };
 
 impl<'a> GearSystem<'a> {
-    pub fn new(parts: GearSystemParts<'a>) -> Self {
+    pub fn new(mut parts: GearSystemParts<'a>) -> Self {
         use dof::*;
+        // `Auto` becomes the law this mesh uses, once (config::case::LoadSharingModel).
+        parts.load_sharing = parts
+            .load_sharing
+            .resolve(parts.teeth.is_some(), parts.pair.contact_ratio);
         let GearSystemParts {
             pair, mesh, params, ..
         } = parts;
@@ -525,7 +529,8 @@ impl<'a> GearSystem<'a> {
             LoadSharingModel::Pedrero => {
                 pedrero_shares(self.parts.pair, &ms.rho1_m[..n], &mut ms.share[..n])
             }
-            LoadSharingModel::Stiffness => {
+            // `Auto` was resolved in `GearSystem::new` and never reaches here.
+            LoadSharingModel::Stiffness | LoadSharingModel::Auto => {
                 ms.share[..n].copy_from_slice(&stiffness_shares.unwrap_or_default()[..n])
             }
         }

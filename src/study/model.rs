@@ -68,6 +68,35 @@ pub fn pitch_line_velocity_warning(case: &Case, pair: &GearPair) -> Option<Strin
     })
 }
 
+/// The warning of a case whose teeth differ under `contact.load_sharing` = "auto": its
+/// pairs share the load by their compressions, identical teeth by Pedrero's law, so a
+/// comparison of the two (a sweep across zero error, a baseline) mixes two laws; on the
+/// paper's case the law alone moves the initial wear rate by about a fifth
+/// (docs/MODEL.md, section 9).
+pub const AUTO_SHARING_WITH_RESOLVED_TEETH: &str = "the teeth differ or are modified, so the pairs share the load by their own compressions (`contact.load_sharing` = \"auto\"), while identical teeth use Pedrero's law (paper eq. 7); to compare such cases with identical teeth under one law, give `contact.load_sharing` = \"stiffness\"";
+
+/// The error of Pedrero's law asked for explicitly on teeth that differ: the law has no
+/// place for one pair's gap or softer tooth. Names what makes the teeth differ.
+fn pedrero_with_resolved_teeth(case: &Case) -> String {
+    let mut why = Vec::new();
+    if case.teeth != Default::default() {
+        why.push("`[teeth]`");
+    }
+    if case.modification != Default::default() {
+        why.push("`[modification]`");
+    }
+    if !case.fault.is_empty() {
+        why.push("`[[fault]]`");
+    }
+    if case.wear.worn_geometry == crate::config::case::WornGeometry::Worn {
+        why.push("`wear.worn_geometry` = \"worn\"");
+    }
+    format!(
+        "`contact.load_sharing` = \"pedrero\" (paper eq. 7) is defined for identical, perfect teeth, but this case makes them differ ({}): give \"stiffness\" or \"auto\", which share the load by each pair's compression",
+        why.join(", ")
+    )
+}
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
@@ -107,6 +136,15 @@ impl Model {
             params.static_mesh_force_n,
         )
         .map_err(ModelError)?;
+        if teeth.is_some() {
+            match case.contact.load_sharing {
+                LoadSharingModel::Pedrero => {
+                    return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
+                }
+                LoadSharingModel::Auto => warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into()),
+                LoadSharingModel::Stiffness => {}
+            }
+        }
         Ok(Self {
             teeth,
             case: case.clone(),
@@ -155,8 +193,9 @@ impl Model {
         self.system_for(gap, external, roughness_um, None)
     }
 
-    /// As [`Model::system`] with a tooth-resolved mesh (its pairs' loads then follow
-    /// their own compressions: Pedrero's law of eq. 7 is for identical, perfect teeth).
+    /// As [`Model::system`] with a tooth-resolved mesh (with `contact.load_sharing` =
+    /// "auto" its pairs' loads then follow their own compressions: Pedrero's law of eq. 7
+    /// is for identical, perfect teeth; `LoadSharingModel::resolve`).
     pub fn system_for<'a>(
         &'a self,
         gap: &'a PairGap,
@@ -164,10 +203,7 @@ impl Model {
         roughness_um: f64,
         teeth: Option<&'a ToothMesh>,
     ) -> GearSystem<'a> {
-        let load_sharing = match teeth {
-            Some(_) => LoadSharingModel::Stiffness,
-            None => self.case.contact.load_sharing,
-        };
+        let load_sharing = self.case.contact.load_sharing;
         GearSystem::new(GearSystemParts {
             pair: &self.pair,
             mesh: &self.mesh,
