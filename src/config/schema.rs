@@ -354,7 +354,7 @@ pub const KEYS: &[KeySpec] = &[
     k("teeth.pitch_error_gear_um", "µm", NumArray(TOOTH_ERROR), "Position (pitch) error of each gear tooth, z2 values (positive towards the pinion).",
       "As for the pinion."),
     k("teeth.accuracy_grade", "-", Int(1, 12), "ISO 1328-1 flank tolerance class: pitch, profile slope and profile form errors not given explicitly are drawn (seeded) from its tolerances (docs/MODEL.md, section 9). Absent: none drawn.",
-      "ISO 1328-1:2013 defines classes 1 to 11; 12 is the 1995 edition's coarsest grade, one more step of sqrt(2)."),
+      "ISO 1328-1:2013 defines classes 1 to 11; 12 extrapolates its formulas one more step of sqrt(2) (with a warning)."),
     k("teeth.error_seed", "-", Int(0, 1_000_000_000_000), "Seed of the random draw for `teeth.accuracy_grade` (absent: 0); the same seed gives the same teeth.",
       "Any whole number up to 1e12."),
     k("teeth.runout_pinion_um", "µm", Num(Range::closed(0.0, 1000.0)), "Radial run-out F_r of the pinion (twice its eccentricity): a displacement along the line of action turning once per pinion revolution. Absent: 0.",

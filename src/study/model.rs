@@ -75,6 +75,25 @@ pub fn pitch_line_velocity_warning(case: &Case, pair: &GearPair) -> Option<Strin
 /// (docs/MODEL.md, section 9).
 pub const AUTO_SHARING_WITH_RESOLVED_TEETH: &str = "the teeth differ or are modified, so the pairs share the load by their own compressions (`contact.load_sharing` = \"auto\"), while identical teeth use Pedrero's law (paper eq. 7); to compare such cases with identical teeth under one law, give `contact.load_sharing` = \"stiffness\"";
 
+/// Warnings for the gears whose ISO 1328-1 tolerances (`teeth.accuracy_grade`) extrapolate
+/// the 2013 formulas beyond the standard's scope (`geometry::iso1328::outside_scope`).
+fn tolerance_extrapolation_warnings(case: &Case, pair: &GearPair) -> Vec<String> {
+    let Some(class) = case.teeth.accuracy_grade else {
+        return Vec::new();
+    };
+    let m_mm = pair.module_m * 1e3;
+    [("pinion", &pair.pinion), ("gear", &pair.gear)]
+        .into_iter()
+        .filter_map(|(name, g)| {
+            crate::geometry::iso1328::outside_scope(class, g.teeth, m_mm * g.teeth as f64, m_mm).map(|why| {
+                format!(
+                    "`teeth.accuracy_grade` = {class}: the {name}'s tolerances extrapolate the formulas of ISO 1328-1:2013 beyond its scope ({why})"
+                )
+            })
+        })
+        .collect()
+}
+
 /// The error of Pedrero's law asked for explicitly on teeth that differ: the law has no
 /// place for one pair's gap or softer tooth. Names what makes the teeth differ.
 fn pedrero_with_resolved_teeth(case: &Case) -> String {
@@ -136,6 +155,7 @@ impl Model {
             params.static_mesh_force_n,
         )
         .map_err(ModelError)?;
+        warnings.extend(tolerance_extrapolation_warnings(case, &pair));
         if teeth.is_some() {
             match case.contact.load_sharing {
                 LoadSharingModel::Pedrero => {

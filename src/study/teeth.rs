@@ -12,7 +12,9 @@ use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
 use crate::geometry::flank_shape::{
     slope_form_added_m, ActiveFlank, FlankModification, Relief, Side,
 };
-use crate::geometry::iso1328::{draw_gear, flank_tolerances, round_iso, FlankTolerances};
+use crate::geometry::iso1328::{
+    draw_gear, flank_tolerances, round_iso, FlankTolerances, MAX_DRAWS,
+};
 use crate::geometry::{Gear, GearPair, ProfileGrid};
 use crate::stiffness::mesh::MeshStiffness;
 use crate::stiffness::potential_energy::ToothBeam;
@@ -128,7 +130,7 @@ impl ToothInputs {
         if !problems.is_empty() {
             return Err(std::mem::take(&mut problems));
         }
-        let errors = gear_errors(case, pair);
+        let errors = gear_errors(case, pair).map_err(|e| vec![e])?;
         let cos_alpha = pair.pressure_angle_rad.cos();
         let m = &case.modification;
         let shape_parabolic = m.shape == Some(ReliefShape::Parabolic);
@@ -360,10 +362,10 @@ impl ToothFlank {
 }
 
 /// The errors of both gears: given, or drawn for the accuracy grade, else zero.
-fn gear_errors(case: &Case, pair: &GearPair) -> [GearErrors; 2] {
+fn gear_errors(case: &Case, pair: &GearPair) -> Result<[GearErrors; 2], String> {
     let t = &case.teeth;
     let module_mm = pair.module_m * 1e3;
-    let one = |member: Member| -> GearErrors {
+    let one = |member: Member| -> Result<GearErrors, String> {
         let g = member_gear(pair, member);
         let z = g.teeth;
         let (pitch, slope, form, runout) = match member {
@@ -383,17 +385,26 @@ fn gear_errors(case: &Case, pair: &GearPair) -> [GearErrors; 2] {
         let tol = t
             .accuracy_grade
             .map(|a| flank_tolerances(a, module_mm * z as f64, module_mm));
-        let drawn = tol.map(|tol| {
-            let stream = match member {
-                Member::Pinion => 0,
-                Member::Gear => 1,
-            };
-            draw_gear(z, &tol, t.error_seed.unwrap_or(0) as u64, stream)
-        });
+        let drawn = match tol {
+            Some(tol) => {
+                let stream = match member {
+                    Member::Pinion => 0,
+                    Member::Gear => 1,
+                };
+                let seed = t.error_seed.unwrap_or(0);
+                Some(draw_gear(z, &tol, seed as u64, stream).map_err(|u| {
+                    format!(
+                        "`teeth.accuracy_grade` = {}: no {} of {} teeth drawn from `teeth.error_seed` = {seed} passed the class's inspection in {MAX_DRAWS} draws; give its errors explicitly (`teeth.pitch_error_*_um`, `teeth.profile_*_um`)",
+                        u.class, member.name(), u.teeth
+                    )
+                })?)
+            }
+            None => None,
+        };
         let pick = |given: Option<Vec<f64>>, drawn: Option<Vec<f64>>| {
             given.or(drawn).unwrap_or_else(|| vec![0.0; z])
         };
-        GearErrors {
+        Ok(GearErrors {
             position_um: pick(pitch.clone(), drawn.as_ref().map(|d| d.position_um.clone())),
             profile_slope_um: pick(
                 per_tooth(slope, z),
@@ -405,9 +416,9 @@ fn gear_errors(case: &Case, pair: &GearPair) -> [GearErrors; 2] {
             ),
             runout_um: runout.unwrap_or(0.0),
             tolerances: tol.map(Into::into),
-        }
+        })
     };
-    [one(Member::Pinion), one(Member::Gear)]
+    Ok([one(Member::Pinion)?, one(Member::Gear)?])
 }
 
 /// Adds one fault to a tooth's flank (`own` the tooth's own rho at the grid points).
