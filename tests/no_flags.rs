@@ -294,6 +294,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 out: None,
                 replace: false,
                 budget: None,
+                figures: Default::default(),
             }),
             "--run",
         ),
@@ -321,6 +322,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
                 out: None,
                 replace: false,
                 budget: None,
+                figures: Default::default(),
             }),
             "--limit-um",
         ),
@@ -347,6 +349,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
         out: None,
         replace: false,
         budget: None,
+        figures: Default::default(),
     }
     .run(&())
     .err()

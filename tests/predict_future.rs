@@ -65,6 +65,7 @@ fn predict(future: Option<&str>) -> Value {
         out: None,
         replace: false,
         budget: None,
+        figures: Default::default(),
     };
     job.run(&()).unwrap().artifacts.summary
 }
@@ -193,6 +194,7 @@ fn shards_of_different_future_duties_are_not_merged() {
             out: Some(d.path().join(dir)),
             replace: false,
             budget: None,
+            figures: Default::default(),
         };
         job.run(&()).unwrap();
     };
@@ -203,6 +205,7 @@ fn shards_of_different_future_duties_are_not_merged() {
         out: Some(d.path().join("merged")),
         replace: false,
         budget: None,
+        figures: Default::default(),
     };
     let Err(e) = merge.run(&()) else {
         panic!("shards of different future duties merged")

@@ -44,7 +44,10 @@ fn all_artifacts() -> Vec<(&'static str, Artifacts)> {
         .dynamic(&WearState::new(model.grid.len()), &ExternalError::none())
         .expect("steady state");
     vec![
-        ("run", run_artifacts(model, study, &meta)),
+        (
+            "run",
+            run_artifacts(model, study, &meta, Default::default()),
+        ),
         ("stiffness", stiffness_artifacts(model)),
         (
             "dynamics",
@@ -122,7 +125,12 @@ fn every_figure_has_a_csv_with_exactly_its_plotted_numbers() {
 fn wear_figures_have_distinct_tables() {
     // Fig. 11, 12 and 13 once shared one table; each now has its own columns.
     let (model, study) = paper();
-    let a = run_artifacts(model, study, &RunMetadata::new("run", &model.case));
+    let a = run_artifacts(
+        model,
+        study,
+        &RunMetadata::new("run", &model.case),
+        Default::default(),
+    );
     let header = |stem: &str| {
         a.table_at(&format!("csv/{stem}.csv"))
             .unwrap()
@@ -267,7 +275,7 @@ fn no_legend_covers_data_in_the_sweep_figure() {
         width_px: w,
         height_px: h,
         data: None,
-        png: None,
+        rendered: None,
     };
     let lays = layout(&f.figure, w, h).unwrap();
     check_layout("sweep", &f, &lays);
@@ -279,7 +287,12 @@ fn no_legend_covers_data_in_the_sweep_figure() {
 #[test]
 fn the_built_in_case_keeps_its_paper_comparison() {
     let (model, study) = paper();
-    let a = run_artifacts(model, study, &RunMetadata::new("run", &model.case));
+    let a = run_artifacts(
+        model,
+        study,
+        &RunMetadata::new("run", &model.case),
+        Default::default(),
+    );
     assert_eq!(a.summary["paper_case"], true);
     for k in [
         "/paper_comparison/dte_max_um_at_0.5um_wear/paper",
@@ -303,7 +316,12 @@ fn the_built_in_case_keeps_its_paper_comparison() {
 /// The figure of `run` whose file stem is `stem`.
 fn run_figure(stem: &str) -> gearwear::report::plot::Figure {
     let (model, study) = paper();
-    let a = run_artifacts(model, study, &RunMetadata::new("run", &model.case));
+    let a = run_artifacts(
+        model,
+        study,
+        &RunMetadata::new("run", &model.case),
+        Default::default(),
+    );
     a.figures
         .iter()
         .find(|f| f.path == format!("{stem}.png"))

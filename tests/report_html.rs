@@ -73,11 +73,13 @@ fn sample() -> (Report, Vec<Vec<u8>>) {
                         caption: format!("caption {HOSTILE}"),
                         png: pngs[0].clone(),
                         csv_name: Some("csv/fig 1.csv".into()),
+                        svg: None,
                     },
                     FigureBlock {
                         caption: "no data".into(),
                         png: Vec::new(),
                         csv_name: None,
+                        svg: None,
                     },
                 ],
                 tables: vec![table(0, 2), table(3, 4)],
@@ -90,6 +92,7 @@ fn sample() -> (Report, Vec<Vec<u8>>) {
                     png: pngs[1].clone(),
                     // A name that looks like a URL must still become a relative href.
                     csv_name: Some("http://example.com/x.csv".into()),
+                    svg: None,
                 }],
                 tables: vec![
                     table(1, 1),
@@ -292,16 +295,19 @@ fn writes_sample_report_for_browser_check() {
                         caption: "Sine and cosine over one mesh period.".into(),
                         png: sine_png("Wide figure", 1200, 500),
                         csv_name: Some("fig1.csv".into()),
+                        svg: None,
                     },
                     FigureBlock {
                         caption: "The same, square.".into(),
                         png: sine_png("Square figure", 600, 600),
                         csv_name: None,
+                        svg: None,
                     },
                     FigureBlock {
                         caption: "Figure whose plot failed.".into(),
                         png: Vec::new(),
                         csv_name: None,
+                        svg: None,
                     },
                 ],
                 tables: vec![],

@@ -157,6 +157,40 @@ fn faults_and_reliefs_the_geometry_cannot_hold_name_the_key_tooth_and_range() {
     );
 }
 
+#[test]
+fn pedrero_load_sharing_on_teeth_that_differ_names_both_keys() {
+    // Pedrero's law (paper eq. 7) has no place for one pair's gap or softer tooth: asked
+    // for explicitly on teeth that differ, it is refused, naming the law's key and what
+    // makes the teeth differ.
+    rejected(
+        &[
+            "stiffness",
+            "--set",
+            "teeth.runout_gear_um=2",
+            "--set",
+            "contact.load_sharing=pedrero",
+        ],
+        &[
+            "`contact.load_sharing` = \"pedrero\"",
+            "`[teeth]`",
+            "\"stiffness\"",
+        ],
+    );
+    rejected(
+        &[
+            "stiffness",
+            "--set",
+            "wear.worn_geometry=worn",
+            "--set",
+            "contact.load_sharing=pedrero",
+        ],
+        &[
+            "`contact.load_sharing` = \"pedrero\"",
+            "`wear.worn_geometry` = \"worn\"",
+        ],
+    );
+}
+
 /// The number after `prefix` in `msg`.
 fn number_after(msg: &str, prefix: &str) -> f64 {
     let at = msg
@@ -338,38 +372,4 @@ fn every_limit_a_geometry_message_shows_is_itself_accepted() {
         "modification.tip_relief_um=5".to_string(),
         format!("modification.tip_relief_length_mm={l}"),
     ]);
-}
-
-#[test]
-fn pedrero_load_sharing_on_teeth_that_differ_names_both_keys() {
-    // Pedrero's law (paper eq. 7) has no place for one pair's gap or softer tooth: asked
-    // for explicitly on teeth that differ, it is refused, naming the law's key and what
-    // makes the teeth differ.
-    rejected(
-        &[
-            "stiffness",
-            "--set",
-            "teeth.runout_gear_um=2",
-            "--set",
-            "contact.load_sharing=pedrero",
-        ],
-        &[
-            "`contact.load_sharing` = \"pedrero\"",
-            "`[teeth]`",
-            "\"stiffness\"",
-        ],
-    );
-    rejected(
-        &[
-            "stiffness",
-            "--set",
-            "wear.worn_geometry=worn",
-            "--set",
-            "contact.load_sharing=pedrero",
-        ],
-        &[
-            "`contact.load_sharing` = \"pedrero\"",
-            "`wear.worn_geometry` = \"worn\"",
-        ],
-    );
 }

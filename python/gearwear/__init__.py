@@ -334,6 +334,8 @@ def sweep(
     continuation: _Optional[str] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> SweepResult:
     """A parameter study, as ``gearwear sweep --vary KEY=... [--run RUN]``: the cross
     product of ``vary`` on ``case``, run in parallel.
@@ -348,7 +350,8 @@ def sweep(
     skips them); ``shard``: ``"I/N"`` or ``(I, N)``, the cases with id mod N = I - 1;
     ``continuation``: ``"up"``, ``"down"`` or ``"both"``, one axis followed along its
     solution branches. Rows of cases whose solver failed are missing;
-    ``summary["failed"]`` says why.
+    ``summary["failed"]`` says why. ``figures``, ``figure_size``: the sweep figure's
+    formats and size, as for :func:`stiffness`.
     """
     axes = [(str(k), _axis(v)) for k, v in vary.items()]
     n = _native.sweep(
@@ -361,6 +364,8 @@ def sweep(
         continuation=continuation,
         budget_scale=budget_scale,
         replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(SweepResult(**n), n)
 
@@ -371,12 +376,19 @@ def sweep_merge(
     *,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> SweepResult:
     """The tables of sweep shards (or of earlier merges) joined into one sorted by case
     id, as ``gearwear sweep-merge``; ``inputs``: sweep folders or CSV files. Inputs of
-    different sweeps are refused."""
+    different sweeps are refused. ``figures``, ``figure_size``: as for :func:`stiffness`."""
     n = _native.sweep_merge(
-        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+        [_os.fspath(p) for p in inputs],
+        _path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(SweepResult(**n), n)
 
@@ -439,6 +451,8 @@ def calibrate(
     progress: _Optional[Progress] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> CalibrationResult:
     """The posterior of the wear coefficient (and, where the case's ``[calibration]``
     leaves them free, the roughness factor and load torque) given observations of a
@@ -452,6 +466,8 @@ def calibrate(
     not measured (docs/PROGNOSTICS.md). ``seed`` seeds every random draw; ``samples``
     posterior samples; ``walkers`` and ``steps`` of the ensemble sampler (the first half
     burn-in); ``check_runs`` true wear runs checked against the surrogate.
+    ``figures``, ``figure_size``: as for :func:`stiffness` (the report embeds the SVG
+    when only SVG is asked for).
     """
     obs = _table(observations, "observations", columns)
     n = _native.calibrate(
@@ -466,6 +482,8 @@ def calibrate(
         progress=progress,
         budget_scale=budget_scale,
         replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(CalibrationResult(**n), n)
 
@@ -488,6 +506,8 @@ def predict(
     replace: bool = False,
     future_spectrum: _Optional[PathLike] = None,
     future_from_cycles: _Optional[float] = None,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> PredictionResult:
     """Monte Carlo prediction of wear, vibration indicators and remaining life, as
     ``gearwear predict --limit-um L --cycles N [--posterior FILE]``.
@@ -506,6 +526,9 @@ def predict(
     section (TOML text, or a path to a TOML file holding only that section, spelled as in
     a case file) that replaces the case's duty from ``future_from_cycles`` on (pinion
     cycles from new teeth, required with it, in [0, ``cycles``)).
+
+    ``figures``, ``figure_size``: as for :func:`stiffness` (the report embeds the SVG
+    when only SVG is asked for; a shard draws no figure).
     """
     post = None if posterior is None else _table(posterior, "posterior")
     n = _native.predict(
@@ -527,6 +550,8 @@ def predict(
             future_spectrum if isinstance(future_spectrum, str) else _os.fspath(future_spectrum)
         ),
         future_from_cycles=None if future_from_cycles is None else float(future_from_cycles),
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(PredictionResult(**n), n)
 
@@ -537,11 +562,19 @@ def predict_merge(
     *,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> PredictionResult:
     """The shards of a sharded ``predict`` joined, as ``gearwear predict-merge``;
-    ``inputs``: shard files (``predict_shard_I_of_N.json``) or folders holding them."""
+    ``inputs``: shard files (``predict_shard_I_of_N.json``) or folders holding them.
+    ``figures``, ``figure_size``: as for :func:`stiffness`."""
     n = _native.predict_merge(
-        [_os.fspath(p) for p in inputs], _path(out), budget_scale=budget_scale, replace=replace
+        [_os.fspath(p) for p in inputs],
+        _path(out),
+        budget_scale=budget_scale,
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(PredictionResult(**n), n)
 
@@ -559,6 +592,8 @@ def load_spectrum(
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> LoadSpectrumResult:
     """The load spectrum of a measured torque / speed history, as ``gearwear
     load-spectrum --history FILE``: its load duration distribution (time at level on a
@@ -575,6 +610,7 @@ def load_spectrum(
     ``"hold"`` (sample and hold); ``level``: each bin's torque the cell's
     revolution-weighted ``"mean"`` (keeps its wear) or the class's ``"upper"`` edge;
     ``gap_factor``: the longest interval accepted, in median intervals.
+    ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     h = _table(history, "history", columns)
     n = _native.load_spectrum(
@@ -588,6 +624,8 @@ def load_spectrum(
         out=_path(out),
         budget_scale=budget_scale,
         replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(LoadSpectrumResult(**n), n)
 
@@ -599,6 +637,8 @@ def signals(
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> SignalsResult:
     """One record of what a sensor sees, as ``gearwear signals [--transfer-path FILE]``.
 
@@ -607,6 +647,7 @@ def signals(
     operating variation (``ramp_end_speed_hz`` for a run-up or coast-down,
     ``torque_fluctuation_rms_nm`` for a fluctuating load). ``transfer_path``: an FRF table
     (.csv) or modal description (.toml); default: the built-in generic housing.
+    ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     n = _native.signals(
         _check_case(case),
@@ -614,6 +655,8 @@ def signals(
         out=_path(out),
         budget_scale=budget_scale,
         replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(SignalsResult(**n), n)
 
@@ -626,10 +669,14 @@ def dataset(
     progress: _Optional[Progress] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> DatasetResult:
     """A labelled dataset from the study design file ``design``, as ``gearwear dataset``:
     written to ``out`` record by record (resumable: a rerun keeps finished records).
-    ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``."""
+    ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``.
+    ``figures``, ``figure_size``: the formats and size of ``indicator_trends`` (the
+    records are the same whatever they are), as for :func:`stiffness`."""
     sh = None if shard is None else (int(shard[0]), int(shard[1]))
     n = _native.dataset(
         _os.fspath(design),
@@ -638,12 +685,28 @@ def dataset(
         progress=progress,
         budget_scale=budget_scale,
         replace=replace,
+        figures=figures,
+        figure_size=figure_size,
     )
     return _done(DatasetResult(**n), n)
 
 
-def dataset_merge(inputs: _Sequence[PathLike], out: PathLike, *, replace: bool = False) -> DatasetResult:
+def dataset_merge(
+    inputs: _Sequence[PathLike],
+    out: PathLike,
+    *,
+    replace: bool = False,
+    figures: _Optional[str] = None,
+    figure_size: _Optional[_Tuple[int, int]] = None,
+) -> DatasetResult:
     """The shards of a dataset joined into ``out`` with its index and metadata, as
-    ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes."""
-    n = _native.dataset_merge([_os.fspath(p) for p in inputs], _os.fspath(out), replace=replace)
+    ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes (with the
+    same ``figures``, ``figure_size``: as for :func:`stiffness`)."""
+    n = _native.dataset_merge(
+        [_os.fspath(p) for p in inputs],
+        _os.fspath(out),
+        replace=replace,
+        figures=figures,
+        figure_size=figure_size,
+    )
     return _done(DatasetResult(**n), n)

@@ -151,6 +151,8 @@ def sweep(
     continuation: Optional[str] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear sweep``."""
 
@@ -160,6 +162,8 @@ def sweep_merge(
     *,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear sweep-merge``."""
 
@@ -176,6 +180,8 @@ def calibrate(
     progress: Optional[_Progress] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear calibrate``."""
 
@@ -197,6 +203,8 @@ def predict(
     replace: bool = False,
     future_spectrum: Optional[Union[str, PathLike[str]]] = None,
     future_from_cycles: Optional[float] = None,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear predict``."""
 
@@ -206,6 +214,8 @@ def predict_merge(
     *,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear predict-merge``."""
 
@@ -216,6 +226,8 @@ def signals(
     out: _Path = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear signals``."""
 
@@ -227,11 +239,18 @@ def dataset(
     progress: Optional[Callable[[str, float, float], Any]] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear dataset``."""
 
 def dataset_merge(
-    inputs: Sequence[Union[str, PathLike[str]]], out: Union[str, PathLike[str]], *, replace: bool = False
+    inputs: Sequence[Union[str, PathLike[str]]],
+    out: Union[str, PathLike[str]],
+    *,
+    replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear dataset-merge``."""
 
@@ -254,6 +273,8 @@ def load_spectrum(
     out: _Path = None,
     budget_scale: float = 1.0,
     replace: bool = False,
+    figures: Optional[str] = None,
+    figure_size: Optional[Tuple[int, int]] = None,
 ) -> _Result:
     """``gearwear load-spectrum``."""
 

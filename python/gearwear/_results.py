@@ -163,6 +163,12 @@ class _Result:
         return {n: b for n, b in self._documents.items() if n.endswith(".png")}
 
     @property
+    def figures_svg(self) -> Dict[str, str]:
+        """SVG text of each figure rendered for the report (``figures="svg"`` or
+        ``"png,svg"``), by file name."""
+        return {n: b.decode("utf-8") for n, b in self._documents.items() if n.endswith(".svg")}
+
+    @property
     def report_html(self) -> Optional[str]:
         """The self-contained HTML report, for the studies that write one."""
         html = self._documents.get("report.html")

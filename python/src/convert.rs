@@ -207,7 +207,7 @@ pub fn matrix_to_py<'py>(
 }
 
 /// A job's outcome as a dict: `summary`, `tables`, `headline`, `documents` (file name ->
-/// bytes: the report, the figures' PNGs when rendered), `warnings`, `out` (the folder
+/// bytes: the report, the figures' PNG/SVG files when rendered for it), `warnings`, `out` (the folder
 /// written, or None) and `incomplete` (why the result is incomplete, or None).
 pub fn outcome_to_py<'py>(
     py: Python<'py>,
@@ -221,10 +221,15 @@ pub fn outcome_to_py<'py>(
     for (name, bytes) in &a.documents {
         docs.set_item(name, PyBytes::new(py, bytes))?;
     }
-    // A figure rendered for a report has its PNG: the same bytes the folder gets.
+    // A figure rendered for a report has its files: the same bytes the folder gets.
     for f in &a.figures {
-        if let Some(png) = &f.png {
+        let Some(r) = &f.rendered else { continue };
+        if let Some(png) = &r.png {
             docs.set_item(&f.path, PyBytes::new(py, png))?;
+        }
+        if let Some(svg) = &r.svg {
+            let name = gearwear::report::artifacts::svg_path(&f.path);
+            docs.set_item(name, PyBytes::new(py, svg.as_bytes()))?;
         }
     }
     d.set_item("tables", tables_to_py(py, a.tables)?)?;

@@ -46,7 +46,7 @@ fn shaft_of(s: &str) -> PyResult<TorqueShaft> {
 
 /// The load spectrum of a measured history (as `gearwear load-spectrum`).
 #[pyfunction]
-#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, out=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn load_spectrum<'py>(
     py: Python<'py>,
@@ -60,6 +60,8 @@ pub fn load_spectrum<'py>(
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = LoadSpectrumJob {
         history: path_or_columns(&history)?,
@@ -74,6 +76,7 @@ pub fn load_spectrum<'py>(
         out,
         replace,
         budget: crate::jobs::budget_of(budget_scale)?,
+        figures: crate::jobs::figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)

@@ -66,7 +66,7 @@ pub fn stiffness<'py>(
 
 /// The figure options of a job: `figures` ("png", "svg" or "png,svg") and
 /// `figure_size` (width, height) px, checked when the job starts.
-fn figure_request(figures: Option<String>, size: Option<(i64, i64)>) -> FigureRequest {
+pub(crate) fn figure_request(figures: Option<String>, size: Option<(i64, i64)>) -> FigureRequest {
     FigureRequest {
         formats: figures,
         size: size.map(|(w, h)| format!("{w}x{h}")),
@@ -259,7 +259,7 @@ fn shard_of(shard: Option<&Bound<'_, PyAny>>) -> PyResult<Result<Shard, String>>
 /// The cross product of `vary` on `case` (as `gearwear sweep`): in memory, or with `out`
 /// resumable and shardable; or one axis followed along its branches.
 #[pyfunction]
-#[pyo3(signature = (case, vary, run="dynamics", progress=None, *, out=None, shard=None, continuation=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, vary, run="dynamics", progress=None, *, out=None, shard=None, continuation=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -272,6 +272,8 @@ pub fn sweep<'py>(
     continuation: Option<String>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let kind = match run {
         "dynamics" => SweepRun::Dynamics,
@@ -306,6 +308,7 @@ pub fn sweep<'py>(
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     sweep_to_py(py, o, w)
@@ -313,19 +316,22 @@ pub fn sweep<'py>(
 
 /// The tables of sweep shards joined (as `gearwear sweep-merge`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 pub fn sweep_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = SweepMergeJob {
         inputs,
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     sweep_to_py(py, o, w)
@@ -334,7 +340,7 @@ pub fn sweep_merge<'py>(
 /// The posterior of the wear coefficient given observations (as `gearwear calibrate`).
 /// `observations`: a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate<'py>(
     py: Python<'py>,
@@ -349,6 +355,8 @@ pub fn calibrate<'py>(
     progress: Option<Bound<'py, PyAny>>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = CalibrateJob {
         case: case.inner.clone(),
@@ -363,6 +371,7 @@ pub fn calibrate<'py>(
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
@@ -387,7 +396,7 @@ fn spectrum_source(s: &Bound<'_, PyAny>) -> PyResult<SpectrumSource> {
 /// Monte Carlo prediction of wear, vibration and remaining life (as `gearwear predict`).
 /// `posterior`: None (the case's prior), a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None))]
+#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn predict<'py>(
     py: Python<'py>,
@@ -407,6 +416,8 @@ pub fn predict<'py>(
     replace: bool,
     future_spectrum: Option<Bound<'py, PyAny>>,
     future_from_cycles: Option<f64>,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let forward = match forward {
         "surrogate" => ForwardModel::Surrogate,
@@ -438,6 +449,7 @@ pub fn predict<'py>(
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
@@ -445,19 +457,22 @@ pub fn predict<'py>(
 
 /// The shards of a prediction joined (as `gearwear predict-merge`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (inputs, out=None, *, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 pub fn predict_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = PredictMergeJob {
         inputs,
         out,
         replace,
         budget: budget_of(budget_scale)?,
+        figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)

@@ -13,7 +13,8 @@ use std::path::PathBuf;
 
 /// One record of what a sensor sees (as `gearwear signals`).
 #[pyfunction]
-#[pyo3(signature = (case, *, transfer_path=None, out=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (case, *, transfer_path=None, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn signals<'py>(
     py: Python<'py>,
     case: &Case,
@@ -21,6 +22,8 @@ pub fn signals<'py>(
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let budget = crate::jobs::budget_of(budget_scale)?;
     let job = SignalsJob {
@@ -29,6 +32,7 @@ pub fn signals<'py>(
         out,
         replace,
         budget,
+        figures: crate::jobs::figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)
@@ -37,7 +41,8 @@ pub fn signals<'py>(
 /// A labelled dataset from a study design file (as `gearwear dataset`); `shard` is
 /// `(i, n)` for shard i of n.
 #[pyfunction]
-#[pyo3(signature = (design, out, *, shard=None, progress=None, budget_scale=1.0, replace=false))]
+#[pyo3(signature = (design, out, *, shard=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn dataset<'py>(
     py: Python<'py>,
     design: PathBuf,
@@ -46,6 +51,8 @@ pub fn dataset<'py>(
     progress: Option<Bound<'py, PyAny>>,
     budget_scale: f64,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let budget = crate::jobs::budget_of(budget_scale)?;
     let shard = match shard {
@@ -64,6 +71,7 @@ pub fn dataset<'py>(
         out,
         replace,
         budget,
+        figures: crate::jobs::figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
     outcome_to_py(py, o, w)
@@ -71,17 +79,20 @@ pub fn dataset<'py>(
 
 /// The shards of a dataset joined (as `gearwear dataset-merge`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out, *, replace=false))]
+#[pyo3(signature = (inputs, out, *, replace=false, figures=None, figure_size=None))]
 pub fn dataset_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
     out: PathBuf,
     replace: bool,
+    figures: Option<String>,
+    figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = DatasetMergeJob {
         inputs,
         out,
         replace,
+        figures: crate::jobs::figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)

@@ -19,6 +19,8 @@ use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
 use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureOutput;
+use crate::report::figure_output::FigureRequest;
 use crate::report::html::{render, Report};
 use crate::report::prognostics::{calibration_section, posterior_figure, predictive_figure};
 use crate::report::prognostics_tables::{
@@ -72,6 +74,8 @@ pub struct CalibrateJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl CalibrateJob {
@@ -124,6 +128,7 @@ impl Job for CalibrateJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let (prior, obs, src) = self.inputs()?;
         let model = build_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
@@ -184,7 +189,7 @@ impl Job for CalibrateJob {
                 ks.iter().copied().fold(0.0, f64::max)
             ));
         }
-        let art = self.artifacts(&obs, &src, &sur, &cal, &meta, observer)?;
+        let art = self.artifacts(&obs, &src, &sur, &cal, (&meta, figures), observer)?;
         publish::publish(out, art, Some(&meta), observer)
     }
 }
@@ -317,14 +322,15 @@ impl CalibrateJob {
         })
     }
 
-    /// The summary, tables, figures and report of a calibration.
+    /// The summary, tables, figures (in the formats and size of `figures`) and report of
+    /// a calibration.
     fn artifacts(
         &self,
         obs: &Observations,
         src: &str,
         sur: &Surrogate,
         cal: &Calibration,
-        meta: &RunMetadata,
+        (meta, figures): (&RunMetadata, FigureOutput),
         observer: &dyn Observer,
     ) -> Result<Artifacts, JobError> {
         let horizon = obs.max_cycles().max(1.0);
@@ -335,7 +341,7 @@ impl CalibrateJob {
             worst,
             fit,
         } = self.check(obs, sur, cal, observer);
-        let mut art = Artifacts::default();
+        let mut art = Artifacts::default().with_figure_output(figures);
         art.table("posterior_samples.csv", samples_table(&cal.samples));
         art.table("posterior_band.csv", bands_table(&bands));
         let figs = vec![

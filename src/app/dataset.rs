@@ -22,6 +22,7 @@ use crate::io::input::{
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::signals::chain_json;
 use crate::report::Artifacts;
 use crate::signals::files::{record_parquet, record_table, units};
@@ -83,6 +84,8 @@ pub struct DatasetRequest<'a> {
     /// Bytes of the transfer-path file (part of the dataset key).
     pub path_bytes: Vec<u8>,
     pub shard: Shard,
+    /// The formats and size of the dataset's figure.
+    pub figures: FigureOutput,
 }
 
 /// Bytes of the metadata and labels of one record besides its signals (sidecar JSON with
@@ -210,7 +213,7 @@ fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str) -> Value 
             "records/<record_id>.json": "labels and indicators of one record",
             "index.parquet": "one row per record: labels and indicators (index.csv: the same as CSV)",
             "indicator_trends.csv": "the first channel's indicators along each trajectory (condition x speed x load), mean over the noise realisations of each state",
-            "indicator_trends.png": "the same as a figure, against the pinion load cycles",
+            "indicator_trends.png": "the same as a figure, against the pinion load cycles (indicator_trends.svg beside or instead of it when the job asks for SVG)",
             "state/": "the dataset's description and run-to-failure trajectories (used by resumes and merges)",
         },
     })
@@ -378,7 +381,7 @@ pub fn run_dataset(
     let failures: Vec<String> = results.into_iter().filter_map(Result::err).collect();
     keep_files(&mut out, root, &plan, &states, &key, d);
     let missing = if req.shard.count == 1 {
-        stage_index_and_metadata(&mut out, root, plan.records())
+        stage_index_and_metadata(&mut out, root, plan.records(), req.figures)
             .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?
     } else {
         out.stage_json(
@@ -585,19 +588,20 @@ fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetError> {
 }
 
 /// Joins the shards in `inputs` (checked by [`shared_key`], which gave `key` and
-/// `total`) into `root`.
+/// `total`) into `root`, its figure written as `figures` says.
 fn merge_datasets(
     inputs: &[&Path],
     root: &Path,
     mut out: OutputDir,
     (key, total): (String, usize),
+    figures: FigureOutput,
 ) -> Result<DatasetOutcome, DatasetError> {
     let mut copied = 0;
     for dir in inputs {
         copied += super::dataset_dir::copy_dataset(dir, root, &key, out.previous_state())
             .map_err(|e| DatasetError::Failed(e.into()))?;
     }
-    let missing = stage_index_and_metadata(&mut out, root, total)
+    let missing = stage_index_and_metadata(&mut out, root, total, figures)
         .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?;
     out.keep_state(DATASET_REL);
     for s in super::dataset_dir::sidecars(root)
@@ -686,6 +690,9 @@ pub struct DatasetJob {
     pub replace: bool,
     /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
+    /// The formats and size of the dataset's figure (`indicator_trends`), checked when the
+    /// job starts; the records are the same whatever it is.
+    pub figures: FigureRequest,
 }
 
 fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
@@ -735,6 +742,7 @@ impl Job for DatasetJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let d = &self.design;
         let read = |rel: &str| {
             read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
@@ -767,6 +775,7 @@ impl Job for DatasetJob {
             path,
             path_bytes,
             shard: self.shard,
+            figures,
         };
         let checked = check_dataset(&req)?;
         let threads = rayon::current_num_threads();
@@ -790,6 +799,8 @@ pub struct DatasetMergeJob {
     pub out: PathBuf,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The formats and size of the merged dataset's figure, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl Job for DatasetMergeJob {
@@ -800,6 +811,7 @@ impl Job for DatasetMergeJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         if self.inputs.is_empty() {
             return Err(JobError::input(Problem::of(
                 Arg::Inputs,
@@ -809,7 +821,7 @@ impl Job for DatasetMergeJob {
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
-        let o = merge_datasets(&inputs, &self.out, out, shared)?;
+        let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
         observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset-merge"))
     }

@@ -6,8 +6,8 @@
 //!   SHA-256 of its signal file (written last: a record is finished when this exists);
 //! - `state/dataset.json`: the dataset's description (design, cases, chain, axes);
 //! - `state/trajectory_<condition>.json`: the condition's run-to-failure trajectory;
-//! - `indicator_trends.csv`, `indicator_trends.png`: the condition indicators along each
-//!   trajectory (`study::dataset::trends`);
+//! - `indicator_trends.csv`, `indicator_trends.png` (and/or `.svg`, as the job asks): the
+//!   condition indicators along each trajectory (`study::dataset::trends`);
 //! - `index.parquet`, `index.csv`: one row per record; `metadata.json`: everything
 //!   needed to read and reproduce the dataset. Built from the files above, by the same
 //!   code for an unsharded run and a merge, so the two are byte for byte equal.
@@ -18,8 +18,9 @@ use crate::io::dir::Dir;
 use crate::io::parquet::parquet_bytes;
 use crate::io::set_state::{check_replaceable, read_all, Ours, SetState};
 use crate::io::{OutputDir, OutputError};
+use crate::report::artifacts::{stage_figures, FigureFile};
 use crate::report::dataset_trends::trend_figure;
-use crate::report::plot::render_png;
+use crate::report::figure_output::FigureOutput;
 use crate::study::dataset::index::index_columns;
 use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::Trajectory;
@@ -189,9 +190,6 @@ pub enum BuildError {
     Format(String),
 }
 
-/// Stage `index.parquet`, `index.csv` and `metadata.json` of the dataset in `root`
-/// (whose records and state files are in place) into `out`. Returns the ids missing
-/// from `0..total`.
 /// Most missing record ids listed in `metadata.json` (`records_missing`; the count is
 /// `records_missing_count`).
 pub const MAX_MISSING_LISTED: usize = 1000;
@@ -204,10 +202,14 @@ pub struct Missing {
     pub listed: Vec<usize>,
 }
 
+/// Stage `index.parquet`, `index.csv`, `metadata.json` and the indicator trends (table,
+/// and figure as `figures` says) of the dataset in `root` (whose records and state files
+/// are in place) into `out`. Returns the ids missing from `0..total`.
 pub fn stage_index_and_metadata(
     out: &mut OutputDir,
     root: &Path,
     total: usize,
+    figures: FigureOutput,
 ) -> Result<Missing, BuildError> {
     let body: Value = read_in(root, DATASET_REL)
         .and_then(|b| serde_json::from_slice(&b).ok())
@@ -252,10 +254,15 @@ pub fn stage_index_and_metadata(
         let table = columns_csv(&trend_columns(&t))
             .map_err(|e| BuildError::Format(format!("indicator_trends.csv: {e}")))?;
         out.stage("indicator_trends.csv", &table)?;
-        let fig = trend_figure(&t, &unit);
-        let png = render_png(&fig, 900, 1500)
-            .map_err(|e| BuildError::Format(format!("indicator_trends.png: {e}")))?;
-        out.stage("indicator_trends.png", &png)?;
+        let fig = FigureFile {
+            path: "indicator_trends.png".into(),
+            figure: trend_figure(&t, &unit),
+            width_px: 900,
+            height_px: 1500,
+            data: Some("indicator_trends.csv".into()),
+            rendered: None,
+        };
+        stage_figures(out, &[fig], figures).map_err(|e| BuildError::Format(e.to_string()))?;
     }
     let mut metadata = body;
     metadata["index_columns"] = Value::Object(units_json);

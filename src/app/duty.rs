@@ -107,9 +107,9 @@ pub fn run_under_spectrum(
     )?;
     let refs: Vec<&SpectrumRun> = study.runs.runs.iter().collect();
     let incomplete = spectrum_stops(&sm, &refs, observer);
-    let artifacts = duty_run_artifacts(&sm, &study.runs, &meta)
-        .ok_or_else(|| JobError::Failed(anyhow::anyhow!("the duty-cycle study returned no runs")))?
-        .with_figure_output(figures);
+    let artifacts = duty_run_artifacts(&sm, &study.runs, &meta, figures).ok_or_else(|| {
+        JobError::Failed(anyhow::anyhow!("the duty-cycle study returned no runs"))
+    })?;
     let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
     outcome.incomplete = incomplete;
     Ok(outcome)

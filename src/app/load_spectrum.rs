@@ -13,6 +13,7 @@ use crate::duty::ldd::{
 };
 use crate::io::input::MAX_HISTORY_BYTES;
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureRequest;
 use crate::report::ldd::ldd_artifacts;
 use crate::study::budget::{estimate_history, Budget};
 use sha2::{Digest, Sha256};
@@ -34,6 +35,8 @@ pub struct LoadSpectrumJob {
     pub replace: bool,
     /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 impl LoadSpectrumJob {
@@ -48,6 +51,7 @@ impl LoadSpectrumJob {
             out: None,
             replace: false,
             budget: Some(Budget::DEFAULT),
+            figures: FigureRequest::default(),
         }
     }
 
@@ -91,6 +95,7 @@ impl Job for LoadSpectrumJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         self.check()?;
         let (source, text) = self.history.read(Arg::History, MAX_HISTORY_BYTES)?;
         budget::check_estimate(&estimate_history(text.len() as u64), self.budget.as_ref())?;
@@ -117,7 +122,8 @@ impl Job for LoadSpectrumJob {
             &ldd,
             &spectrum,
             self.torque_shaft,
-        );
+        )
+        .with_figure_output(figures);
         let hash = Sha256::digest(text.as_bytes());
         a.summary["metadata"] = serde_json::json!({
             "program": "gearwear",

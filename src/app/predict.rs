@@ -20,6 +20,7 @@ use crate::prognostics::samples::read_samples;
 use crate::prognostics::surrogate::{future_chain_runs, max_chain_runs};
 use crate::prognostics::{Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::html::{render, Report};
 use crate::report::prognostics::{fan_figure, life_figure, prediction_section};
 use crate::report::prognostics_tables::{bands_table, figure, thetas_json};
@@ -102,6 +103,9 @@ pub struct PredictJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures (a shard draws none), checked when the job
+    /// starts.
+    pub figures: FigureRequest,
 }
 
 /// What makes shards parts of one prediction.
@@ -180,6 +184,7 @@ impl Job for PredictJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let o = &self.options;
         o.check()?;
         let future = self.future.resolve(o.cycles)?;
@@ -313,7 +318,7 @@ impl Job for PredictJob {
         }
         publish::publish(
             out,
-            prediction_artifacts(file, (0, Vec::new()))?,
+            prediction_artifacts(file, (0, Vec::new()), figures)?,
             None,
             observer,
         )
@@ -401,12 +406,13 @@ fn prediction_summary(
 }
 
 /// Every output of a prediction from its outcomes (`missing`: how many sample indices no
-/// shard had, and the first of them).
+/// shard had, and the first of them), its figures in the formats and size of `figures`.
 pub fn prediction_artifacts(
     f: ShardFile,
     missing: (usize, Vec<usize>),
+    figures: FigureOutput,
 ) -> Result<Artifacts, JobError> {
-    let mut art = Artifacts::default();
+    let mut art = Artifacts::default().with_figure_output(figures);
     let set = f.identity.settings;
     let o = &f.outcomes;
     let life = LifeSummary::of(o);

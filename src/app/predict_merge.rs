@@ -8,6 +8,7 @@ use crate::prognostics::budget::estimate_merge;
 use crate::prognostics::check::PredictionCheck;
 use crate::prognostics::predict::SampleOutcome;
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureRequest;
 use crate::study::budget::Budget;
 use std::path::{Path, PathBuf};
 
@@ -22,6 +23,8 @@ pub struct PredictMergeJob {
     pub replace: bool,
     /// The budget of the merge (the shards read and joined).
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 /// Shard files of a merge input: a file, or a folder's `predict_shard_*_of_*.json`.
@@ -58,6 +61,7 @@ impl Job for PredictMergeJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let mut files: Vec<(String, ShardFile)> = Vec::new();
         let mut bytes = 0u64;
         let limit = self.budget.as_ref();
@@ -128,6 +132,7 @@ impl Job for PredictMergeJob {
                 ..first
             },
             (n_missing, missing),
+            figures,
         )?;
         publish::publish(out, art, None, observer)
     }

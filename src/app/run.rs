@@ -67,7 +67,7 @@ impl Job for RunJob {
             },
         )?;
         let s = &study.runs;
-        let artifacts = run_artifacts(&model, s, &meta).with_figure_output(figures);
+        let artifacts = run_artifacts(&model, s, &meta, figures);
         let incomplete = stops(&[&s.dynamic, &s.quasi_static], observer);
         let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
         outcome.incomplete = incomplete;

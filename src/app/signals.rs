@@ -8,6 +8,7 @@ use crate::config::Case;
 use crate::io::transfer_path::read_transfer_path;
 use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureRequest;
 use crate::report::signals::signals_artifacts;
 use crate::signals::setup::chain_of;
 use crate::signals::transfer::TransferPath;
@@ -53,6 +54,8 @@ pub struct SignalsJob {
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 /// Bytes of memory per recorded second and sample rate: the record's channels, their
@@ -116,6 +119,7 @@ impl Job for SignalsJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check_estimate(&estimate_with_record(&self.case), self.budget.as_ref())?;
         let model = build_model(&self.case, observer)?;
         let path = transfer_path_of(self.transfer_path.as_ref())?;
@@ -138,7 +142,8 @@ impl Job for SignalsJob {
         } else {
             "the case's tooth errors, modifications and faults"
         };
-        let artifacts = signals_artifacts(&rec, &setup.chain, harmonics, label);
+        let artifacts =
+            signals_artifacts(&rec, &setup.chain, harmonics, label).with_figure_output(figures);
         let meta = RunMetadata::of_model(self.name(), &model);
         publish::publish(out, artifacts, Some(&meta), observer)
     }

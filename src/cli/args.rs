@@ -261,6 +261,8 @@ pub struct SweepArgs {
     /// no --shard.
     #[arg(long, value_enum, value_name = "BRANCHES")]
     pub continuation: Option<ContinuationArg>,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -271,6 +273,8 @@ pub struct SweepMergeArgs {
     /// Output directory (writes sweep.csv there), or a .csv file path.
     #[arg(long)]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -299,6 +303,8 @@ pub struct CalibrateArgs {
     /// True wear runs to check the surrogate against (at the posterior's 5/50/95 %).
     #[arg(long, default_value_t = 3)]
     pub check_runs: usize,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -352,6 +358,8 @@ pub struct PredictArgs {
     /// with --future-spectrum), in [0, --cycles).
     #[arg(long, value_name = "N")]
     pub future_from_cycles: Option<f64>,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -362,6 +370,8 @@ pub struct PredictMergeArgs {
     /// Output directory.
     #[arg(long)]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -415,4 +425,6 @@ pub struct LoadSpectrumArgs {
     /// an error).
     #[arg(long, default_value_t = 10.0)]
     pub gap_factor: f64,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }

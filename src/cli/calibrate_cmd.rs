@@ -20,5 +20,6 @@ pub fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

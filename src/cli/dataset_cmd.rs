@@ -19,6 +19,7 @@ pub fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: a.out.clone(),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }
 
@@ -27,5 +28,6 @@ pub fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
         inputs: a.inputs.clone(),
         out: a.out.clone(),
         replace: super::output::replace(),
+        figures: a.figures.request(),
     })
 }

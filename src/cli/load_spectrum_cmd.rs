@@ -31,5 +31,6 @@ pub fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), CliError>
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

@@ -40,6 +40,7 @@ pub fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }
 
@@ -49,5 +50,6 @@ pub fn merge(a: &PredictMergeArgs, budget: Option<Budget>) -> Result<(), CliErro
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

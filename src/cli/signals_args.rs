@@ -1,6 +1,6 @@
 //! Arguments of `gearwear signals`, `gearwear dataset` and `gearwear dataset-merge`.
 
-use super::args::CaseArgs;
+use super::args::{CaseArgs, FigureArgs};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -15,6 +15,8 @@ pub struct SignalsArgs {
     /// Output directory.
     #[arg(long, default_value = "results/signals")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -30,6 +32,8 @@ pub struct DatasetArgs {
     /// Output directory (shards may share one).
     #[arg(long, default_value = "results/dataset")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
@@ -40,4 +44,6 @@ pub struct DatasetMergeArgs {
     /// Output directory of the merged dataset (may be the shards' shared folder).
     #[arg(long)]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }

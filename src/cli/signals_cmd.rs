@@ -13,5 +13,6 @@ pub fn run(a: &SignalsArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

@@ -44,6 +44,7 @@ pub fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }
 
@@ -53,5 +54,6 @@ pub fn merge(a: &SweepMergeArgs, budget: Option<Budget>) -> Result<(), CliError>
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,
+        figures: a.figures.request(),
     })
 }

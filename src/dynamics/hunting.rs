@@ -11,7 +11,8 @@
 //!    meeting again and again, found by the one-period shooting of [`super::steady`]
 //!    (a few periods; its step plan is kept);
 //! 2. a run-in over the last W mesh periods of the excitation period, ending at its start,
-//!    W = ln(1 / tolerance) / (sigma T) with sigma from the averaged linear model (at
+//!    W = 1.2 ln(1 / tolerance) / (sigma T) with sigma from the averaged linear model
+//!    (a 20 % margin for the uneven decay under time-varying stiffness; at least 2, at
 //!    most P): what the orbit of cycle 0 differs from the true one decays to the
 //!    tolerance;
 //! 3. one pass over the P periods, recorded, whose periodicity (the change of the state

@@ -49,7 +49,16 @@ pub struct ToothFlank {
     pub curvature_change_per_m: Option<Vec<f64>>,
 }
 
-/// Run-out of one gear: eccentricity (m along the line of action) turning with the shaft.
+/// Run-out of one gear: an eccentricity e_c of its base circle turning with the shaft
+/// (Velex & Maatar, J. Sound Vib. 191 (1996) 629, eccentricity as a displacement of the
+/// gear centre). The centre
+/// moves by e_c (cos(Omega t - phi'), sin(Omega t - phi')); its component along the line
+/// of action, e_c cos(Omega t - phi), moves the base circle and so every pair of that
+/// gear at once; the component across it changes the centre distance, which enters the
+/// contact ratio and operating pressure angle only to second order in e_c and is left
+/// out. A dial or ball probe in the tooth spaces reads e_c cos(theta) about its mean, a
+/// range F_r = 2 e_c: the radial run-out a drawing gives (`study::teeth` takes
+/// e_c = F_r / 2).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Runout {
     pub eccentricity_m: f64,
@@ -59,7 +68,8 @@ pub struct Runout {
 }
 
 impl Runout {
-    /// Displacement along the line of action (m, positive compresses) and its rate (m/s).
+    /// Displacement along the line of action, e_c cos(Omega t - phi) (m, positive
+    /// compresses), and its rate -e_c Omega sin(Omega t - phi) (m/s).
     #[inline]
     pub fn at(&self, t_s: f64) -> (f64, f64) {
         if self.eccentricity_m == 0.0 {
@@ -120,6 +130,25 @@ pub fn lcm(a: usize, b: usize) -> usize {
     }
 }
 
+/// The smallest number of teeth d after which a gear's flanks repeat (tooth i + d is
+/// tooth i for every i; d divides z), or z when the gear runs out (its run-out turns
+/// once per revolution). Mesh cycle n meets pinion tooth n mod z1 and gear tooth
+/// n mod z2, so the excitation repeats after lcm(d_pinion, d_gear) mesh periods: 1 for
+/// identical teeth, z for a gear whose teeth all differ. Taking the smallest d, not z,
+/// keeps the period of a wear study from growing: on a pair with common factors (20/40)
+/// the teeth of one gear wear in a pattern that repeats with the other's (gear teeth b
+/// and b + 20 meet the same pinion teeth), which would otherwise double it.
+pub fn sequence_period(flanks: &[ToothFlank], runout: &Runout) -> usize {
+    let z = flanks.len().max(1);
+    if runout.eccentricity_m != 0.0 {
+        return z;
+    }
+    (1..=z)
+        .filter(|d| z.is_multiple_of(*d))
+        .find(|&d| (d..flanks.len()).all(|i| flanks[i] == flanks[i - d]))
+        .unwrap_or(z)
+}
+
 impl ToothMesh {
     /// The mesh from its teeth on the grid `rho_start_m + i spacing_m`, `points` points.
     pub fn new(
@@ -130,20 +159,11 @@ impl ToothMesh {
         spacing_m: f64,
         points: usize,
     ) -> Self {
-        let varies =
-            |f: &[ToothFlank], r: &Runout| r.eccentricity_m != 0.0 || f.iter().any(|t| t != &f[0]);
-        let p = if varies(&pinion, &runout[0]) {
-            pinion.len()
-        } else {
-            1
-        };
-        let g = if varies(&gear, &runout[1]) {
-            gear.len()
-        } else {
-            1
-        };
         Self {
-            periods: lcm(p.max(1), g.max(1)),
+            periods: lcm(
+                sequence_period(&pinion, &runout[0]),
+                sequence_period(&gear, &runout[1]),
+            ),
             pinion,
             gear,
             runout,
@@ -156,12 +176,6 @@ impl ToothMesh {
     /// Mesh periods after which the excitation repeats (1: every tooth alike).
     pub fn periods(&self) -> usize {
         self.periods
-    }
-
-    /// Whether pinion (0) or gear (1) teeth differ from each other (or run out).
-    pub fn varies(&self, member: usize) -> bool {
-        let z = [self.pinion.len(), self.gear.len()][member];
-        z > 1 && self.periods.is_multiple_of(z)
     }
 
     /// Teeth of pinion and gear.
@@ -269,5 +283,47 @@ mod tests {
         let tm = ToothMesh::new(same(19), same(31), r, 0.0, 1.0, 3);
         assert_eq!(tm.teeth_of(589 + 20), (1, 20));
         assert_eq!(tm.teeth_of(-1), (18, 30));
+    }
+
+    #[test]
+    fn the_period_is_the_smallest_shift_that_repeats_every_engagement() {
+        // The definition, by brute force: P is the smallest shift after which every mesh
+        // cycle over the hunting period meets the same pair of flanks. Pairs with common
+        // factors and flank patterns that repeat within a gear (as wear leaves them on
+        // a 20/40 pair: gear teeth b and b + 20 alike) give less than lcm(z1, z2).
+        let r = [Runout::default(); 2];
+        let pattern = |z: usize, d: usize| -> Vec<ToothFlank> {
+            (0..z).map(|i| flank((i % d) as f64 * 1e-6, 0.0)).collect()
+        };
+        for (z1, d1, z2, d2) in [
+            (20, 20, 40, 20),
+            (20, 20, 40, 40),
+            (20, 4, 40, 10),
+            (19, 19, 31, 1),
+            (12, 6, 18, 9),
+            (24, 1, 36, 1),
+        ] {
+            let (p, g) = (pattern(z1, d1), pattern(z2, d2));
+            let tm = ToothMesh::new(p.clone(), g.clone(), r, 0.0, 1.0, 3);
+            let hunting = lcm(z1, z2);
+            let repeats = |shift: usize| {
+                (0..hunting).all(|n| {
+                    let (a, b) = tm.teeth_of(n as i64);
+                    let (a2, b2) = tm.teeth_of((n + shift) as i64);
+                    p[a] == p[a2] && g[b] == g[b2]
+                })
+            };
+            let smallest = (1..=hunting).find(|s| repeats(*s)).unwrap();
+            assert_eq!(tm.periods(), smallest, "{z1}/{z2} patterns {d1}, {d2}");
+            assert_eq!(hunting % tm.periods(), 0);
+        }
+        // Run-out turns once per revolution whatever the flanks.
+        let mut runout = r;
+        runout[0].eccentricity_m = 1e-6;
+        let tm = ToothMesh::new(pattern(20, 1), pattern(40, 20), runout, 0.0, 1.0, 3);
+        assert_eq!(tm.periods(), 20);
+        runout[1].eccentricity_m = 1e-6;
+        let tm = ToothMesh::new(pattern(20, 1), pattern(40, 20), runout, 0.0, 1.0, 3);
+        assert_eq!(tm.periods(), 40);
     }
 }

@@ -33,9 +33,54 @@ pub struct FigureFile {
     /// The table (its path in [`Artifacts::tables`]) that holds exactly the plotted
     /// numbers, each curve's x and y a column in the plotted unit.
     pub data: Option<String>,
-    /// The PNG, when already rendered (the run's report embeds each figure, and the
-    /// same bytes are written once).
+    /// The files, when already rendered (a report embeds each figure, and the same bytes
+    /// are written once).
+    pub rendered: Option<Rendered>,
+}
+
+/// A figure rendered in the formats and size a job asked for.
+#[derive(Debug, Clone, Default)]
+pub struct Rendered {
+    /// Width and height of the images, px.
+    pub size_px: (u32, u32),
     pub png: Option<Vec<u8>>,
+    pub svg: Option<String>,
+}
+
+impl Rendered {
+    /// `figure` rendered as `how` says, its default size being `default` (w, h) px.
+    pub fn of(
+        figure: &Figure,
+        default: (u32, u32),
+        how: FigureOutput,
+        path: &str,
+    ) -> Result<Self, WriteError> {
+        let (w, h) = how.size_of(default);
+        let plot = |source| WriteError::Plot {
+            path: path.to_owned(),
+            source,
+        };
+        let (png, svg) = rayon::join(
+            || how.png.then(|| render_png(figure, w, h)).transpose(),
+            || how.svg.then(|| render_svg(figure, w, h)).transpose(),
+        );
+        Ok(Self {
+            size_px: (w, h),
+            png: png.map_err(plot)?,
+            svg: svg.map_err(plot)?,
+        })
+    }
+
+    /// What a report embeds: the PNG, or the SVG when only SVG was asked, so a report
+    /// never shows a format that was not written.
+    pub fn block(&self, caption: String, csv_name: Option<String>) -> super::html::FigureBlock {
+        super::html::FigureBlock {
+            caption,
+            png: self.png.clone().unwrap_or_default(),
+            svg: self.svg.clone().filter(|_| self.png.is_none()),
+            csv_name,
+        }
+    }
 }
 
 /// Everything one command writes.
@@ -76,7 +121,7 @@ impl Artifacts {
             width_px: w,
             height_px: h,
             data: None,
-            png: None,
+            rendered: None,
         });
     }
 
@@ -124,12 +169,15 @@ pub struct EmbeddedFigure {
     pub caption: String,
 }
 
-/// Render `figs` once (in parallel) and add each to `a` as `STEM.png` with its data at
-/// `csv/STEM.csv`; the blocks that embed the same bytes in a report, in order.
+/// Render `figs` once (in parallel), in the formats and size of `a.figure_output`, and
+/// add each to `a` as `STEM.png`/`STEM.svg` with its data at `csv/STEM.csv`; the blocks
+/// that embed the same bytes in a report, in order (a figure that fails to render shows
+/// as unavailable).
 pub fn embed_figures(
     a: &mut Artifacts,
     figs: Vec<EmbeddedFigure>,
 ) -> Vec<super::html::FigureBlock> {
+    let how = a.figure_output;
     let mut files: Vec<FigureFile> = figs
         .iter()
         .map(|f| FigureFile {
@@ -138,24 +186,45 @@ pub fn embed_figures(
             width_px: PLOT_W,
             height_px: plot_height(f.figure.panels.len()),
             data: Some(format!("csv/{}.csv", f.stem)),
-            png: None,
+            rendered: None,
         })
         .collect();
-    let pngs = render_figures(&files).unwrap_or_default();
+    files.par_iter_mut().for_each(|f| {
+        f.rendered = Rendered::of(&f.figure, (f.width_px, f.height_px), how, &f.path).ok();
+    });
     let mut blocks = Vec::new();
-    for (i, (f, file)) in figs.into_iter().zip(files.iter_mut()).enumerate() {
-        let png = pngs.get(i).cloned().unwrap_or_default();
-        file.png = Some(png.clone());
+    for (f, file) in figs.into_iter().zip(&files) {
         let csv = format!("csv/{}.csv", f.stem);
         a.table(csv.clone(), f.table);
-        blocks.push(super::html::FigureBlock {
-            caption: f.caption,
-            png,
-            csv_name: Some(csv),
-        });
+        let r = file.rendered.clone().unwrap_or_default();
+        blocks.push(r.block(f.caption, Some(csv)));
     }
     a.figures.extend(files);
     blocks
+}
+
+/// Render one figure of default size `default` (w, h) px now, in the formats and size of
+/// `a.figure_output`, add it to `a` at `path` (`NAME.png`; `NAME.svg` beside or instead)
+/// and return the block a report embeds.
+pub fn embed_figure(
+    a: &mut Artifacts,
+    path: &str,
+    figure: Figure,
+    default: (u32, u32),
+    caption: &str,
+    csv_name: Option<&str>,
+) -> Result<super::html::FigureBlock, WriteError> {
+    let r = Rendered::of(&figure, default, a.figure_output, path)?;
+    let block = r.block(caption.to_owned(), csv_name.map(String::from));
+    a.figures.push(FigureFile {
+        path: path.to_owned(),
+        figure,
+        width_px: default.0,
+        height_px: default.1,
+        data: csv_name.map(String::from),
+        rendered: Some(r),
+    });
+    Ok(block)
 }
 
 /// Why artifacts could not be written.
@@ -167,23 +236,6 @@ pub enum WriteError {
     Plot { path: String, source: PlotError },
     #[error("cannot format {path}: {reason}")]
     Format { path: String, reason: String },
-}
-
-/// Render figures in parallel (PNG bytes, in the order given); figures rendered before
-/// give their bytes.
-pub fn render_figures(figures: &[FigureFile]) -> Result<Vec<Vec<u8>>, WriteError> {
-    figures
-        .par_iter()
-        .map(|f| match &f.png {
-            Some(png) => Ok(png.clone()),
-            None => {
-                render_png(&f.figure, f.width_px, f.height_px).map_err(|source| WriteError::Plot {
-                    path: f.path.clone(),
-                    source,
-                })
-            }
-        })
-        .collect()
 }
 
 /// Stage every artifact into `out` (`summary.json`, tables, figures, documents). The
@@ -218,41 +270,49 @@ pub fn publish_artifacts(mut out: OutputDir, a: &Artifacts) -> Result<PathBuf, W
 }
 
 /// Render (in parallel) and stage figures into `out` in the formats and size of `how`:
-/// `NAME.png` and/or `NAME.svg`. PNG bytes rendered before are reused only at their size.
+/// `NAME.png` and/or `NAME.svg`. Files rendered before are reused at their size.
 pub fn stage_figures(
     out: &mut OutputDir,
     figures: &[FigureFile],
     how: FigureOutput,
 ) -> Result<(), WriteError> {
-    let svg_path = |f: &FigureFile| format!("{}.svg", f.path.trim_end_matches(".png"));
-    let files: Vec<(String, Vec<u8>)> = figures
+    let rendered: Vec<Rendered> = figures
         .par_iter()
-        .flat_map_iter(|f| {
-            let (w, h) = how.size_of((f.width_px, f.height_px));
-            let png = how.png.then(|| match &f.png {
-                Some(bytes) if (w, h) == (f.width_px, f.height_px) => Ok(bytes.clone()),
-                _ => render_png(&f.figure, w, h).map_err(|source| WriteError::Plot {
-                    path: f.path.clone(),
-                    source,
-                }),
-            });
-            let svg = how.svg.then(|| {
-                render_svg(&f.figure, w, h)
-                    .map(String::into_bytes)
-                    .map_err(|source| WriteError::Plot {
-                        path: svg_path(f),
-                        source,
-                    })
-            });
-            let png = png.map(|r| r.map(|b| (f.path.clone(), b)));
-            let svg = svg.map(|r| r.map(|b| (svg_path(f), b)));
-            png.into_iter().chain(svg)
+        .map(|f| {
+            let default = (f.width_px, f.height_px);
+            let size = how.size_of(default);
+            let mut r = f
+                .rendered
+                .clone()
+                .filter(|r| r.size_px == size)
+                .unwrap_or_default();
+            let missing = FigureOutput {
+                png: how.png && r.png.is_none(),
+                svg: how.svg && r.svg.is_none(),
+                ..how
+            };
+            if missing.png || missing.svg {
+                let new = Rendered::of(&f.figure, default, missing, &f.path)?;
+                r.png = r.png.or(new.png);
+                r.svg = r.svg.or(new.svg);
+            }
+            Ok(r)
         })
-        .collect::<Result<_, _>>()?;
-    for (path, bytes) in files {
-        out.stage(&path, &bytes)?;
+        .collect::<Result<_, WriteError>>()?;
+    for (f, r) in figures.iter().zip(rendered) {
+        if let (true, Some(png)) = (how.png, &r.png) {
+            out.stage(&f.path, png)?;
+        }
+        if let (true, Some(svg)) = (how.svg, &r.svg) {
+            out.stage(&svg_path(&f.path), svg.as_bytes())?;
+        }
     }
     Ok(())
+}
+
+/// The SVG file of the figure at `png_path` (`NAME.png` -> `NAME.svg`).
+pub fn svg_path(png_path: &str) -> String {
+    format!("{}.svg", png_path.trim_end_matches(".png"))
 }
 
 /// Metres to micrometres.

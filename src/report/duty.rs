@@ -269,16 +269,19 @@ pub fn duty_section(
 /// Everything `run` writes under a load spectrum: the paper's section 4 on the spectrum's
 /// runs (responses at the monitoring bin, never set beside the paper's numbers: the paper
 /// runs one operating point), the duty figures with their data, the spectrum's tables,
-/// summary.json's `load_spectrum`, and the report with its duty-cycle section.
+/// summary.json's `load_spectrum`, and the report with its duty-cycle section; the
+/// figures in the formats and size of `figures`.
 pub fn duty_run_artifacts(
     sm: &SpectrumModel,
     study: &crate::duty::study::DutyStudy,
     meta: &crate::io::RunMetadata,
+    figures: super::figure_output::FigureOutput,
 ) -> Option<Artifacts> {
     use super::artifacts::{embed_figures, EmbeddedFigure};
     let paper = study.paper.as_ref()?;
     let monitor = &sm.bins[sm.monitoring];
-    let (mut a, mut report) = super::paper::run_artifacts_and_report(monitor, paper, meta, false);
+    let (mut a, mut report) =
+        super::paper::run_artifacts_and_report(monitor, paper, meta, false, figures);
     let runs: Vec<&SpectrumRun> = study.runs.iter().collect();
     let figs = duty_figures(sm, &runs, study.life.as_ref());
     let blocks = embed_figures(

@@ -1,7 +1,9 @@
 //! The self-contained HTML report of `gearwear run` (issue 5). Pure: data in, one HTML
 //! string out. Self-contained means no network and no side files needed to view it:
-//! figures are PNG data URIs (base64), the CSS is inline, there is no script, and a
-//! Content-Security-Policy forbids any other resource, so a stray external URL cannot load.
+//! figures are PNG (or, when only SVG was asked, SVG) data URIs (base64), the CSS is
+//! inline, there is no script, and a Content-Security-Policy forbids any other resource,
+//! so a stray external URL cannot load. An SVG shown through `<img>` runs no script and
+//! loads nothing (HTML's image rules), so the policy holds for it too.
 //! The only links are relative hrefs to the CSV files written beside the report.
 
 use base64::{engine::general_purpose::STANDARD, Engine as _};
@@ -35,7 +37,7 @@ pub struct Section {
     pub tables: Vec<TableBlock>,
 }
 
-/// A figure embedded as a PNG data URI.
+/// A figure embedded as a PNG (or SVG) data URI.
 #[derive(Debug, Clone, Default)]
 pub struct FigureBlock {
     /// Plain text.
@@ -43,6 +45,9 @@ pub struct FigureBlock {
     /// PNG file bytes (e.g. from `plot::render_png`). Bytes without the PNG signature are
     /// shown as a "figure unavailable" note instead of a broken image.
     pub png: Vec<u8>,
+    /// An SVG document (e.g. from `plot::render_svg`), embedded instead of `png` when
+    /// given: the figure of a job that writes SVG only.
+    pub svg: Option<String>,
     /// File name of the figure's data, relative to the report's directory (e.g.
     /// `"csv/fig5.csv"`); linked from the caption.
     pub csv_name: Option<String>,
@@ -224,7 +229,9 @@ struct Counters {
 
 fn png_bytes(report: &Report) -> usize {
     let figures = report.sections.iter().flat_map(|s| &s.figures);
-    figures.map(|f| f.png.len()).sum()
+    figures
+        .map(|f| f.svg.as_ref().map_or(f.png.len(), String::len))
+        .sum()
 }
 
 /// Anchor id of section `n` (1-based).
@@ -262,7 +269,13 @@ fn write_section(h: &mut String, n: usize, s: &Section, counters: &mut Counters)
 fn write_figure(h: &mut String, n: usize, f: &FigureBlock) {
     let caption = escape(&f.caption);
     h.push_str("<figure>\n");
-    if f.png.starts_with(&PNG_SIGNATURE) {
+    if let Some(svg) = &f.svg {
+        let _ = writeln!(
+            h,
+            "<img src=\"data:image/svg+xml;base64,{}\" alt=\"{caption}\">",
+            STANDARD.encode(svg.as_bytes())
+        );
+    } else if f.png.starts_with(&PNG_SIGNATURE) {
         let _ = writeln!(
             h,
             "<img src=\"data:image/png;base64,{}\" alt=\"{caption}\">",

@@ -6,6 +6,7 @@
 use super::artifacts::{embed_figures, Artifacts, EmbeddedFigure};
 use super::case::{case_json, is_paper_case, paper_case_differences};
 use super::comparison::{compare, comparison_json};
+use super::figure_output::FigureOutput;
 use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::html;
 use super::plot::{Figure, LineStyle};
@@ -219,11 +220,17 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
     figs
 }
 
-/// Everything `gearwear run` writes: figures (PNG) with their CSVs under `csv/`, the
-/// wear-study tables, `summary.json` and `report.html`. `meta` is stamped on the summary and
-/// the report footer.
-pub fn run_artifacts(model: &Model, study: &PaperStudy, meta: &RunMetadata) -> Artifacts {
-    let (mut a, report) = run_artifacts_and_report(model, study, meta, is_paper_case(&model.case));
+/// Everything `gearwear run` writes: figures (in the formats and size of `figures`) with
+/// their CSVs under `csv/`, the wear-study tables, `summary.json` and `report.html` (which
+/// embeds the same figures). `meta` is stamped on the summary and the report footer.
+pub fn run_artifacts(
+    model: &Model,
+    study: &PaperStudy,
+    meta: &RunMetadata,
+    figures: FigureOutput,
+) -> Artifacts {
+    let paper = is_paper_case(&model.case);
+    let (mut a, report) = run_artifacts_and_report(model, study, meta, paper, figures);
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     a
@@ -236,10 +243,11 @@ pub fn run_artifacts_and_report(
     study: &PaperStudy,
     meta: &RunMetadata,
     paper: bool,
+    figures: FigureOutput,
 ) -> (Artifacts, html::Report) {
     let (st_table, st_json) = stiffness_table(model);
     let figs = run_figures(model, study, st_table);
-    let mut a = Artifacts::default();
+    let mut a = Artifacts::default().with_figure_output(figures);
     for r in [&study.dynamic, &study.quasi_static] {
         for (name, t) in super::wear::run_tables(model, r) {
             a.table(format!("csv/{name}"), t);

@@ -1,9 +1,9 @@
 //! Tables, JSON lists and embedded figures of `gearwear calibrate` and `gearwear predict`,
-//! shared by both commands. Pure: results in, `Table`s, JSON and PNG bytes out.
+//! shared by both commands. Pure: results in, `Table`s, JSON and rendered figures out.
 
-use super::artifacts::Artifacts;
+use super::artifacts::{embed_figure, Artifacts};
 use super::html::{FigureBlock, TableBlock};
-use super::plot::{render_png, Figure};
+use super::plot::Figure;
 use crate::io::Table;
 use crate::prognostics::band::Band;
 use crate::prognostics::fit_check::FitCheck;
@@ -115,13 +115,9 @@ pub fn thetas_json(t: &[Theta]) -> Value {
         .collect::<Vec<_>>())
 }
 
-/// A multi-panel figure as PNG bytes (260 px per panel).
-fn png(fig: &Figure) -> anyhow::Result<Vec<u8>> {
-    let h = (60 + 260 * fig.panels.len().max(1)) as u32;
-    Ok(render_png(fig, 900, h)?)
-}
-
-/// The PNG staged as `name` in `art` and returned as a report figure (the same bytes).
+/// The figure `fig` added to `art` as `name` (`NAME.png`, and/or `NAME.svg` as the job
+/// asks) and returned as a report figure (the same bytes). Default size: 900 px wide,
+/// 260 px a panel plus a 60 px title band.
 pub fn figure(
     art: &mut Artifacts,
     name: &str,
@@ -129,11 +125,13 @@ pub fn figure(
     caption: &str,
     csv: Option<&str>,
 ) -> anyhow::Result<FigureBlock> {
-    let bytes = png(fig)?;
-    art.documents.push((name.to_string(), bytes.clone()));
-    Ok(FigureBlock {
-        caption: caption.into(),
-        png: bytes,
-        csv_name: csv.map(String::from),
-    })
+    let h = (60 + 260 * fig.panels.len().max(1)) as u32;
+    Ok(embed_figure(
+        art,
+        name,
+        fig.clone(),
+        (900, h),
+        caption,
+        csv,
+    )?)
 }

@@ -192,6 +192,10 @@ impl ToothInputs {
                         .collect();
                     let mut f = ToothFlank {
                         removed_m,
+                        // A pitch deviation is an arc on the reference circle (ISO
+                        // 1328-1); along the line of action it is that arc on the base
+                        // circle, r_b / r = cos(alpha) times it (alpha the reference
+                        // pressure angle).
                         position_m: e.position_um[t] * 1e-6 * cos_alpha,
                         ..Default::default()
                     };

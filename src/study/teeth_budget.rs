@@ -12,8 +12,11 @@ fn differ(v: &Option<Vec<f64>>) -> bool {
 /// Mesh periods the excitation of `case` repeats over, from the case alone (the run
 /// budget's estimate, before any model is built): z of each gear whose teeth differ
 /// (errors given or drawn, a fault on one of its teeth, run-out), their lcm. Modified or
-/// worn teeth alike on a gear keep it at one. With per-tooth wear, teeth that differ keep
-/// differing, so this holds for the whole wear study.
+/// worn teeth alike on a gear keep it at one. The model's period is the smallest shift
+/// that repeats every engagement (`dynamics::tooth_mesh::sequence_period`), which
+/// divides this; per-tooth wear never lengthens it (a tooth's wear follows the
+/// engagements it meets, which repeat with the period), so this bounds the period over
+/// the whole wear study.
 pub fn excitation_periods_of(case: &Case) -> usize {
     let t = &case.teeth;
     let drawn = t.accuracy_grade.is_some();

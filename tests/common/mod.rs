@@ -1,6 +1,7 @@
 //! Helpers shared by the tests that run the binary.
 #![allow(dead_code)]
 
+pub mod figures;
 pub mod linear;
 pub mod paper;
 

@@ -6,6 +6,7 @@ use super::super::observer::Observer;
 use super::super::{publish, Job, JobError, Outcome};
 use super::SweepOutput;
 use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureRequest;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
 use crate::study::budget::Budget;
@@ -25,6 +26,8 @@ pub struct SweepMergeJob {
     pub replace: bool,
     /// The budget of the merge (the tables read and joined).
     pub budget: Option<Budget>,
+    /// The formats and size of the figure, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 /// The sweep tables of a merge input: a CSV file, or a folder's `sweep.csv` and
@@ -130,6 +133,7 @@ impl Job for SweepMergeJob {
     }
 
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         let (tables, metas) = self.read()?;
         let merged = SweepTable::merge(&tables).map_err(Problem::new)?;
         // Descriptions present must agree on the sweep itself (axes, run, base case): shards
@@ -172,7 +176,7 @@ impl Job for SweepMergeJob {
         let marks: Option<Vec<Crossing>> = metas
             .iter()
             .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
-        let mut art = Artifacts::default();
+        let mut art = Artifacts::default().with_figure_output(figures);
         let poles: Vec<f64> = metas
             .iter()
             .find_map(|(_, m)| m["modes"]["mesh_poles"].as_array().cloned())

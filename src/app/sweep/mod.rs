@@ -24,6 +24,7 @@ use crate::duty::study::run_sweep_case;
 use crate::io::output_dir::StateFolder;
 use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem, Words};
+use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::modes::modes_json;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
@@ -59,6 +60,8 @@ pub struct SweepJob {
     pub replace: bool,
     /// The budget of each case.
     pub budget: Option<Budget>,
+    /// The formats and size of the figures, checked when the job starts.
+    pub figures: FigureRequest,
 }
 
 /// What a sweep hands back: the outcome (the summary is `STEM.json`'s content) and the
@@ -273,6 +276,7 @@ impl Job for SweepJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
         let started = Instant::now();
+        let figures = self.figures.resolve().map_err(JobError::input)?;
         // The sweep against the budget first, in milliseconds however many cases it has.
         self.check_budget()?;
         check_values(&self.base, &self.plan)?;
@@ -359,7 +363,14 @@ impl Job for SweepJob {
         if observer.cancelled() {
             return Err(JobError::Cancelled);
         }
-        self.finish(out, ran, &planned, continuation.as_ref(), started, observer)
+        self.finish(
+            out,
+            ran,
+            &planned,
+            continuation.as_ref(),
+            (started, figures),
+            observer,
+        )
     }
 }
 
@@ -399,15 +410,15 @@ impl SweepJob {
         (art, speed, base)
     }
 
-    /// The table, the summary, the figure and the warnings of a sweep that ran; published
-    /// when the sweep has an output folder.
+    /// The table, the summary, the figure (written as `figures` says) and the warnings of
+    /// a sweep that ran (since `started`); published when the sweep has an output folder.
     fn finish(
         &self,
         mut out: Option<crate::io::OutputDir>,
         ran: Ran,
         planned: &[Planned],
         continuation: Option<&ContinuationPlan>,
-        started: Instant,
+        (started, figures): (Instant, FigureOutput),
         observer: &dyn Observer,
     ) -> Result<SweepOutput, JobError> {
         let plan = &self.plan;
@@ -424,7 +435,8 @@ impl SweepJob {
             }
         }
 
-        let (mut art, speed, base) = self.figure(&table, &stem, observer);
+        let (art, speed, base) = self.figure(&table, &stem, observer);
+        let mut art = art.with_figure_output(figures);
         let wall_s = started.elapsed().as_secs_f64();
         art.summary = json!({
             "command": "sweep",
