@@ -213,5 +213,6 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
     }
     a.table("mesh_stiffness.csv", table);
     super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_teeth_static_te(model, &mut a);
     a
 }

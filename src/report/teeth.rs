@@ -9,6 +9,7 @@ use super::artifacts::Artifacts;
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
 use crate::config::case::{FaultKind, Member};
+use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::velocity_y_spectrum;
 use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviations};
@@ -326,6 +327,48 @@ pub fn add_teeth_artifacts(model: &Model, a: &mut Artifacts) {
     if let Some((fig, table)) = tvms_figure(model) {
         a.figure_with_data("teeth_mesh_stiffness.png", fig, table);
     }
+}
+
+/// Adds the static transmission error of these teeth to the stiffness outputs: the
+/// quasi-static response of the new teeth (no inertia; `dynamics::quasi_static`) over
+/// the excitation period, as `teeth.quasi_static_te` in the summary and
+/// `csv/teeth_quasi_static_te.csv`. The stiffness table's `quasi_static_te` is the
+/// identical, perfect teeth's over one mesh period; reliefs, errors and faults change
+/// this one (docs/MODEL.md, section 9.8).
+pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
+    if model.teeth.is_none() {
+        return;
+    }
+    let r = model.quasi_static(&model.new_wear_state(), &ExternalError::none());
+    let te_um: Vec<f64> = r.signals.dte_m.iter().map(|d| d * 1e6).collect();
+    if te_um.is_empty() {
+        return;
+    }
+    let min = te_um.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+    let max = te_um.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b));
+    a.summary["teeth"]["quasi_static_te"] = json!({
+        "min_um": min,
+        "max_um": max,
+        "peak_to_peak_um": max - min,
+        "mesh_periods": r.excitation_periods,
+    });
+    let omega = model.params.pinion_speed_rad_s;
+    let table = Table::new()
+        .col(
+            "pinion_angle_deg",
+            r.signals
+                .time_s
+                .iter()
+                .map(|t| (omega * t).to_degrees())
+                .collect(),
+        )
+        .col("quasi_static_te_um", te_um)
+        .col("quasi_static_mesh_force_n", r.signals.mesh_force_n.clone());
+    a.table("csv/teeth_quasi_static_te.csv", table);
+    a.headline.push_str(&format!(
+        "; static TE of these teeth {:.4} to {:.4} µm over {} mesh periods",
+        min, max, r.excitation_periods
+    ));
 }
 
 /// Adds the sideband spectrum of a tooth-resolved dynamic response to `a`.

@@ -118,7 +118,8 @@ impl Budget {
 /// What a command computes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Job {
-    /// `gearwear stiffness`: the table (twice) and a quasi-static period.
+    /// `gearwear stiffness`: the table (twice) and a quasi-static period (over the
+    /// excitation period for a tooth-resolved case: the static TE of its teeth).
     Stiffness,
     /// `gearwear dynamics`: one steady-state evaluation.
     Dynamics,
@@ -480,11 +481,14 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
             ],
         });
     }
+    // `stiffness` of a tooth-resolved case adds the static TE of its teeth: one
+    // quasi-static evaluation over the excitation period, kept for its table.
+    let stiffness_te = if job == Job::Stiffness { 1.0 } else { 0.0 };
     terms.extend(super::teeth_budget::budget_term(
         case,
         evals,
-        quasi_modes * u_q,
-        kept,
+        quasi_modes * u_q + stiffness_te,
+        kept + stiffness_te,
         records,
         s_dyn,
         s,
