@@ -5,7 +5,8 @@
 
 use gearwear::config::load_case;
 use gearwear::dynamics::excitation::ExternalError;
-use gearwear::dynamics::hunting::solve_hunting;
+use gearwear::dynamics::hunting::{run_in_periods, solve_hunting};
+use gearwear::dynamics::model::ContactFrame;
 use gearwear::dynamics::steady::solve_steady_state;
 use gearwear::study::Model;
 
@@ -60,6 +61,128 @@ fn identical_teeth_over_the_hunting_period_repeat_the_mesh_period_solution() {
     assert!(compared > 19 * n1 * 9 / 10, "{compared} of {}", 19 * n1);
     assert!(worst < 1e-9, "{worst:e}");
     assert!(hunt.periodicity_error < 1e-9);
+    // An excitation period of one mesh period: the run-in is capped at one period (it
+    // panicked in `Ord::clamp(2, 1)` before), and the pass repeats the one-period
+    // solution (same bound as above).
+    assert_eq!(run_in_periods(&sys, t, m.settings.tolerance, 1), 1);
+    let single = solve_hunting(&sys, &m.settings, None, 1).unwrap();
+    let n = single.signals.time_s.len().min(n1);
+    for i in 0..n {
+        let j = s1.time_s[..n1]
+            .iter()
+            .position(|x| (x - single.signals.time_s[i]).abs() < 1e-9 * t);
+        if let Some(j) = j {
+            assert!((single.signals.dte_m[i] - s1.dte_m[j]).abs() < 1e-9 * dte_range);
+        }
+    }
+}
+
+/// A tiny deterministic generator (xorshift64*) for the random states below, in [-1, 1).
+fn uniform(state: &mut u64) -> f64 {
+    *state ^= *state >> 12;
+    *state ^= *state << 25;
+    *state ^= *state >> 27;
+    let x = state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
+    2.0 * (x as f64 / (1u64 << 53) as f64) - 1.0
+}
+
+/// The teeth of a case with every flank perfect, forced through the tooth-resolved path:
+/// the inputs of a case with a pitch error, its position errors set to zero.
+fn perfect_teeth(plain: &Model) -> gearwear::study::teeth::ToothInputs {
+    let mut pitch = vec!["0"; 19];
+    pitch[2] = "3";
+    let m = model(&[
+        "contact.load_sharing=stiffness",
+        &format!("teeth.pitch_error_pinion_um=[{}]", pitch.join(",")),
+    ]);
+    assert_eq!(m.pair, plain.pair);
+    let mut t = m.teeth.expect("a pitch error resolves the teeth");
+    for f in t.pinion.iter_mut().chain(t.gear.iter_mut()) {
+        f.position_m = 0.0;
+    }
+    t
+}
+
+#[test]
+fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_state() {
+    // The tooth-resolved springs (each pair's teeth from its mesh cycle) with every flank
+    // perfect and a wear profile common to all teeth must be the plain springs with the
+    // same load-sharing law ("stiffness") at any time and state. 2000 random states:
+    // times over 3 mesh periods, deflections of -40..+40 um (pairs open and closed),
+    // velocities of +-0.05 m/s or rad/s. The pair positions and stiffnesses come from the
+    // same table (equal bits); the gap differs only in rounding: the plain path
+    // interpolates the sum of the two flanks' wear, the resolved one each flank and adds,
+    // a few ulp of the ~10 um wear (1e-20 m) against compressions of 1e-6 m: the mesh
+    // force, loads and accelerations agree to 1e-12 of their scale (a 1 nm gap change
+    // would move the force by 1e-4 of it).
+    let plain = model(&["contact.load_sharing=stiffness"]);
+    let mut resolved = model(&["contact.load_sharing=stiffness"]);
+    resolved.teeth = Some(perfect_teeth(&plain));
+    let n = plain.grid.len();
+    let mut wear = gearwear::wear::WearState::new(n);
+    for i in 0..n {
+        let s = i as f64 / (n - 1) as f64;
+        wear.pinion_m[i] = 10e-6 * (1.0 - s).powi(2) + 1e-6 * (7.0 * s).sin().abs();
+        wear.gear_m[i] = 6e-6 * s * s + 0.5e-6 * (5.0 * s).cos().abs();
+    }
+    let tm = resolved.tooth_mesh(&wear).unwrap();
+    assert_eq!(tm.periods(), 1);
+    let gap = wear.pair_gap(&plain.grid);
+    let ext = ExternalError::none();
+    let rough = plain.roughness_for(&wear);
+    let a = plain.system(&gap, &ext, rough);
+    let b = resolved.system_for(&gap, &ext, rough, Some(&tm));
+    let t_mesh = plain.pair.mesh_angle_rad() / plain.params.pinion_speed_rad_s;
+    // Scale of the generalised coordinates: 40 um of mesh deflection each.
+    let grad = a.mesh_gradient();
+    let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+    let (mut touching, mut open) = (0, 0);
+    for _ in 0..2000 {
+        let t = 3.0 * t_mesh * 0.5 * (1.0 + uniform(&mut seed));
+        let mut y = gearwear::dynamics::model::State::zeros();
+        for i in 0..8 {
+            let g = grad[i].abs().max(1e-3);
+            y[i] = 20e-6 / g * uniform(&mut seed);
+            y[8 + i] = 0.05 * uniform(&mut seed);
+        }
+        let frame = ContactFrame::NATURAL;
+        let (q, v) = (&y.as_slice()[..8], &y.as_slice()[8..]);
+        let (sa, sb) = (a.springs(frame, t, q, v), b.springs(frame, t, q, v));
+        assert_eq!(sa.n_pairs, sb.n_pairs);
+        for k in 0..sa.n_pairs {
+            assert_eq!(sa.rho1_m[k].to_bits(), sb.rho1_m[k].to_bits());
+            assert_eq!(sa.stiffness_n_per_m[k], sb.stiffness_n_per_m[k]);
+            assert!((sa.compression_m[k] - sb.compression_m[k]).abs() < 1e-19);
+            assert_eq!(sa.touching[k], sb.touching[k]);
+            if sa.touching[k] {
+                touching += 1;
+            } else {
+                open += 1;
+            }
+        }
+        let scale_f = 1e-12 * (sa.force_unclipped_n.abs() + 1e3);
+        assert!((sa.force_unclipped_n - sb.force_unclipped_n).abs() < scale_f);
+        assert_eq!(sa.pushing, sb.pushing);
+        let ((da, ma), (db, mb)) = (a.derivative(frame, t, &y), b.derivative(frame, t, &y));
+        for k in 0..ma.n_pairs {
+            assert!((ma.load_n[k] - mb.load_n[k]).abs() < scale_f);
+            assert!(
+                (ma.pressure_pa[k] - mb.pressure_pa[k]).abs()
+                    < 1e-12 * ma.pressure_pa[k].abs().max(1.0)
+            );
+        }
+        for i in 0..16 {
+            let s = da[i].abs().max(db[i].abs()).max(1e-300);
+            assert!(
+                (da[i] - db[i]).abs() <= 1e-12 * s + 1e-300,
+                "component {i}: {} vs {}",
+                da[i],
+                db[i]
+            );
+        }
+    }
+    println!("2000 states: {touching} touching and {open} open pairs compared");
+    assert!(touching > 500 && open > 500);
 }
 
 #[test]
@@ -142,6 +265,15 @@ fn a_pitch_error_shifts_the_static_transmission_error_as_compatibility_predicts(
     }
     // Every engagement of tooth 3 was seen in single and in double contact.
     assert!(checked_single > 10 && checked_double > 10);
+    // Each contact is tagged with its engagement within the excitation period, as the
+    // dynamic recorder tags it: every engagement 0..19 and nothing else (the leaving pair
+    // of cycle 0 is engagement 18, not -1).
+    let mut seen = [false; 19];
+    for s in &r.path {
+        assert!((0..19).contains(&s.cycle), "cycle {}", s.cycle);
+        seen[s.cycle as usize] = true;
+    }
+    assert!(seen.iter().all(|x| *x));
 }
 
 /// Peak-to-peak of a signal.

@@ -21,8 +21,9 @@
 //!
 //! The steps follow the plan of step 1 in every period, refined where the error test
 //! fails (without keeping the refinements). A mesh whose teeth are all alike (P = 1) never
-//! comes here, but if it did (a test forces it), every period would replay the plan from
-//! the periodic state and repeat the one-period solution.
+//! comes here (`steady` takes P > 1 only), but if it does (a test forces it), the run-in is
+//! one period (W is capped at P) and every period replays the plan from the periodic state,
+//! repeating the one-period solution.
 
 use super::model::{GearSystem, State};
 use super::period::PlanMode;
@@ -43,7 +44,8 @@ pub fn slowest_decay_rate(sys: &GearSystem) -> f64 {
 }
 
 /// Mesh periods of run-in for an excitation of `periods` mesh periods of `mesh_period_s`
-/// (see the module docs), at least 2 and at most `periods`.
+/// (see the module docs), at least 2 and at most `periods` (so 1 when P = 1: `Ord::clamp`
+/// would panic there, its lower bound above its upper).
 pub fn run_in_periods(
     sys: &GearSystem,
     mesh_period_s: f64,
@@ -57,7 +59,7 @@ pub fn run_in_periods(
     // The orbit of cycle 0 differs from the true one by up to the state scales (1), and
     // the time-varying stiffness makes the decay somewhat uneven: 20 % margin.
     let w = 1.2 * (1.0 / tolerance).ln() / (sigma * mesh_period_s);
-    (w.ceil() as usize).clamp(2, periods)
+    (w.ceil() as usize).max(2).min(periods)
 }
 
 /// Steady state over `periods` mesh periods (see the module docs), from the static

@@ -178,6 +178,11 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
             sys.parts.params.gear_speed_rad_s,
         );
     }
+    // The engagement within the excitation period, as the dynamic recorder gives it
+    // (`PathSample::cycle`): the leaving pair of cycle 0 is engagement P - 1, not -1.
+    for s in &mut path {
+        s.cycle = s.cycle.rem_euclid(periods as i64);
+    }
     let path = super::response::sorted_by_rho1(&path);
     // Midpoint-rule means (the force jumps at mesh events, which are grid nodes).
     let (mut fi, mut di) = (0.0, 0.0);

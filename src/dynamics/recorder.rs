@@ -141,11 +141,10 @@ impl PeriodObserver for Recorder {
         );
         let first = self.path.len();
         push_path(&mut self.path, sys, y, &ms);
-        if self.excitation_periods > 1 {
-            let p = self.excitation_periods as i64;
-            for s in &mut self.path[first..] {
-                s.cycle = s.cycle.rem_euclid(p);
-            }
+        // The engagement within the excitation period (`PathSample::cycle`).
+        let p = self.excitation_periods.max(1) as i64;
+        for s in &mut self.path[first..] {
+            s.cycle = s.cycle.rem_euclid(p);
         }
     }
 

@@ -18,8 +18,10 @@ pub struct PathSample {
     /// Pinion and gear surface speeds perpendicular to the line of action, m/s.
     pub pinion_surface_speed_m_per_s: f64,
     pub gear_surface_speed_m_per_s: f64,
-    /// Mesh cycle of the pair (tooth-resolved mesh; 0 otherwise): its teeth and its
-    /// engagement within the excitation period.
+    /// Mesh cycle of the pair modulo the excitation period P (tooth-resolved mesh; 0
+    /// otherwise): its engagement within the period, in [0, P), from the dynamic recorder
+    /// and the quasi-static solver alike. Its teeth are cycle mod z1 and cycle mod z2 (a
+    /// gear whose teeth are all alike is the same tooth whichever).
     pub cycle: i64,
 }
 

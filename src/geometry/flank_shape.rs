@@ -8,12 +8,16 @@
 //! `sap` (where the mate's tip meets it) to its tip's contact point `tip`.
 //!
 //! - Relief (Tavakoli & Houser, J. Mech. Trans. Autom. Des. 108 (1986) 86; ISO 21771
-//!   profile modifications): material removed over a length L measured along the line of
-//!   action from the tip (tip relief) or from the start of active profile (root relief),
-//!   C (u / L) for a linear relief and C (u / L)^2 for a parabolic one, u the distance
-//!   into the relief, C the amount at the tip or root.
+//!   profile modifications): material removed (m) C (1 - u/L) for a linear relief and
+//!   C (1 - u/L)^2 for a parabolic one, u < L the roll distance (m, along the line of
+//!   action) from the tip's contact point (tip relief) or from the start of active profile
+//!   (root relief), C the amount there and L the relief's length; nothing for u >= L.
 //! - Profile slope deviation f_Halpha: linear over the active flank, from -f/2 at `sap` to
-//!   +f/2 at `tip` (material added towards the tip when positive; zero mean).
+//!   +f/2 at `tip` (material added towards the tip when positive: the project's sign
+//!   convention, not taken from the standard; zero mean). Slope and form are spread over
+//!   the whole active flank, while ISO 1328-1 evaluates them over the profile evaluation
+//!   range L_alpha, which stops short of the tip: measured over L_alpha, a drawn deviation
+//!   would read slightly smaller than its value here.
 //! - Profile form deviation f_falpha: a parabola f (1/3 - s^2), s = -1 at `sap` to 1 at
 //!   `tip`: its peak-to-valley range is f, it has zero mean, and positive f bulges out in
 //!   the middle (ISO 1328-1 defines the form deviation as the range of the residual about

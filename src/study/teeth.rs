@@ -484,7 +484,7 @@ fn apply_fault(
                     Side::Gear => (pair.loa_length_m - rho, *rho),
                 };
                 let radius = r1 * r2 / (r1 + r2);
-                f.removed_m[i] += spall_gap_m(&spall, radius, *rho);
+                f.removed_m[i] += spall_gap_m(&spall, flank.base_radius_m, radius, *rho);
             }
         }
         FaultKind::BrokenTip => {
