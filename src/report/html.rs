@@ -282,7 +282,7 @@ fn write_figure(h: &mut String, n: usize, f: &FigureBlock) {
             STANDARD.encode(&f.png)
         );
     } else {
-        h.push_str("<div class=\"missing\">figure unavailable (no PNG data)</div>\n");
+        h.push_str("<div class=\"missing\">figure unavailable (it could not be drawn)</div>\n");
     }
     let _ = write!(
         h,
