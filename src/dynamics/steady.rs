@@ -46,7 +46,7 @@ impl SteadyStateSettings {
 pub enum DynamicsError {
     #[error(transparent)]
     Integrator(#[from] StepFailure),
-    #[error("no steady state after {periods} mesh periods (estimated distance from the periodic orbit {change:.2e} > tolerance {tolerance:.1e}); raise numerics.max_mesh_periods or check the damping")]
+    #[error("no steady state after {periods} mesh periods (estimated distance from the periodic orbit {change:.2e} > tolerance {tolerance:.1e}); raise numerics.max_mesh_periods or check the damping; with a tooth fault, check that the faulty tooth can still carry the load (a nearly severed tooth leaves the model: docs/MODEL.md, section 9.9)")]
     NotPeriodic {
         periods: usize,
         change: f64,
