@@ -138,13 +138,13 @@ pub fn cumulative_pitch_deviation(position_um: &[f64]) -> f64 {
 /// and, where it lies inside, the parabola's vertex s* = f_Halpha / (4 f_falpha).
 pub fn total_profile_deviation(slope_um: f64, form_um: f64) -> f64 {
     let g = |s: f64| 0.5 * slope_um * s + form_um * (1.0 / 3.0 - s * s);
-    let mut values = vec![g(-1.0), g(1.0)];
-    if form_um != 0.0 {
-        let vertex = slope_um / (4.0 * form_um);
-        if vertex.abs() < 1.0 {
-            values.push(g(vertex));
-        }
-    }
+    // The vertex where it lies inside, else an end again (no allocation per tooth).
+    let vertex = if form_um != 0.0 {
+        slope_um / (4.0 * form_um)
+    } else {
+        1.0
+    };
+    let values = [g(-1.0), g(1.0), g(vertex.clamp(-1.0, 1.0))];
     let max = values.iter().fold(f64::NEG_INFINITY, |m, v| m.max(*v));
     let min = values.iter().fold(f64::INFINITY, |m, v| m.min(*v));
     max - min
