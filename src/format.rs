@@ -4,6 +4,8 @@
 //! would pad with zeros. Python, MATLAB, spreadsheets and TOML read both; a whole number
 //! is written without a decimal point (TOML then reads an integer, which float keys
 //! accept).
+//!
+//! Pieces of user input echoed in messages are cut by [`clip`].
 
 /// See the module docs.
 pub fn format_number(v: f64) -> String {
@@ -12,6 +14,17 @@ pub fn format_number(v: f64) -> String {
         format!("{v}")
     } else {
         format!("{v:e}")
+    }
+}
+
+/// Longest piece of user input echoed in a message, characters.
+pub const SHOWN_CHARS: usize = 80;
+
+/// `text` cut to `max` characters, with an ellipsis and the full length when cut.
+pub fn clip(text: &str, max: usize) -> String {
+    match text.char_indices().nth(max) {
+        None => text.to_owned(),
+        Some((at, _)) => format!("{}... ({} characters)", &text[..at], text.chars().count()),
     }
 }
 

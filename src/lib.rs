@@ -4,11 +4,12 @@
 //! between Surface Wear and Dynamic Response of Spur Gears", Coatings 2022, 12(9), 1250,
 //! with the corrections listed in `docs/MODEL.md`.
 //!
-//! Layers, each depending only on those before it:
-//! `config` -> `geometry` -> `stiffness` -> `contact` -> `dynamics` -> `wear` -> `study`
-//! -> `duty` -> `prognostics` -> `io` / `report` -> `app` (one job per study) -> `cli`
-//! (and the Python binding in `python/`). `remedy` (problems and their remedies) and
-//! `format` sit below them all.
+//! Layers, each depending only on those before it (the table of docs/ARCHITECTURE.md,
+//! checked by `tests/layers.rs`): the ground (`format`, `checksum`, `remedy`, `rng`, and
+//! `io`, the file mechanics) -> `config` -> `geometry` -> `stiffness` -> `contact` ->
+//! `dynamics` -> `wear` -> `signals` -> `study` -> `duty` -> `prognostics` -> `store`
+//! (checkpoints, run metadata) -> `report` -> `app` (one job per study) -> `cli` (and the
+//! Python binding in `python/`).
 
 pub mod app;
 pub mod checksum;
@@ -23,7 +24,9 @@ pub mod io;
 pub mod prognostics;
 pub mod remedy;
 pub mod report;
+pub mod rng;
 pub mod signals;
 pub mod stiffness;
+pub mod store;
 pub mod study;
 pub mod wear;

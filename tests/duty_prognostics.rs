@@ -9,8 +9,8 @@ use gearwear::prognostics::forward::{
 };
 use gearwear::prognostics::observations::{Observations, Series};
 use gearwear::prognostics::prior::Prior;
-use gearwear::prognostics::rng;
 use gearwear::prognostics::{Quantity, Surrogate};
+use gearwear::rng;
 use rand_distr::{Distribution, Normal};
 use std::sync::OnceLock;
 

@@ -239,7 +239,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     let e = gearwear::io::OutputDir::open(&other, None, "wear").unwrap_err();
     plain.push(e.to_string());
     cli.push((e.problem().render(gearwear::cli::flag), "--replace"));
-    let e = gearwear::io::checkpoint::parse_checkpoint(
+    let e = gearwear::store::checkpoint::parse_checkpoint(
         b"x y\n",
         "checkpoint_dynamic.jsonl",
         WearMode::Dynamic,

@@ -19,11 +19,11 @@ use gearwear::prognostics::predict::{
     run_sample, Forward, LifeSummary, PredictSettings, SampleSource,
 };
 use gearwear::prognostics::prior::{Prior, Theta};
-use gearwear::prognostics::rng;
 use gearwear::prognostics::stats::{
     autocorrelation_time, ks_critical_1pct, ks_statistic, mean, quantile, std_dev,
 };
 use gearwear::prognostics::{Quantity, Surrogate};
+use gearwear::rng;
 use rand_distr::{Distribution, Normal};
 use std::sync::OnceLock;
 

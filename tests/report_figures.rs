@@ -7,7 +7,6 @@ use std::sync::OnceLock;
 
 use gearwear::config::Case;
 use gearwear::dynamics::excitation::ExternalError;
-use gearwear::io::RunMetadata;
 use gearwear::report::artifacts::FigureFile;
 use gearwear::report::plot::{layout, PanelLayout};
 use gearwear::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
@@ -15,6 +14,7 @@ use gearwear::report::{
     dynamics::dynamics_artifacts, paper::run_artifacts, stiffness::stiffness_artifacts,
     wear::wear_artifacts, Artifacts,
 };
+use gearwear::store::RunMetadata;
 use gearwear::study::paper::{run_paper_study, PaperStudy};
 use gearwear::study::sweep::{Crossing, SweepTable};
 use gearwear::study::Model;

@@ -8,7 +8,7 @@
 #![no_main]
 
 use gearwear::config::Case;
-use gearwear::io::checkpoint::parse_checkpoint;
+use gearwear::store::checkpoint::parse_checkpoint;
 use gearwear::study::wear_check::check_wear_run;
 use gearwear::study::wear_loop::WearMode;
 use gearwear::study::Model;

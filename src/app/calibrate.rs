@@ -7,7 +7,6 @@ use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
-use crate::io::RunMetadata;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
 use crate::prognostics::check::{
@@ -27,6 +26,7 @@ use crate::report::prognostics_tables::{
     bands_table, figure, fit_check_block, samples_table, thetas_json,
 };
 use crate::report::Artifacts;
+use crate::store::RunMetadata;
 use crate::study::budget::Budget;
 use serde_json::json;
 use std::path::PathBuf;

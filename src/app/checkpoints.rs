@@ -1,12 +1,12 @@
 //! Where each wear run of a job starts (afresh, or resumed from its checkpoint, checked and
-//! recomputed before anything else is computed: `io::checkpoint_set`), and the checkpoint
+//! recomputed before anything else is computed: `store::checkpoint_set`), and the checkpoint
 //! logs appended to after every update.
 
 use super::observer::Observer;
 use super::JobError;
-use crate::io::checkpoint_set::CheckpointSet;
 use crate::io::OutputDir;
 use crate::remedy::{Arg, Problem, Remedy, Words};
+use crate::store::checkpoint_set::CheckpointSet;
 use crate::study::wear_loop::{WearMode, WearRun};
 use crate::study::Model;
 use std::path::Path;
@@ -36,7 +36,7 @@ pub fn require_folder(out: &Path) -> Result<(), JobError> {
 }
 
 /// The starting runs of `modes`: afresh without `resume` (or without a folder), else each
-/// from its checkpoint in `out` (`io::checkpoint_set::starting_runs`: it must belong to
+/// from its checkpoint in `out` (`store::checkpoint_set::starting_runs`: it must belong to
 /// this case and mode and reproduce its records when they are recomputed). A mode without
 /// a checkpoint starts afresh, with a note to `observer`.
 pub fn starting_runs(
@@ -51,7 +51,7 @@ pub fn starting_runs(
         return Ok(modes.iter().map(|m| WearRun::new(*m)).collect());
     };
     let (runs, notes) =
-        crate::io::checkpoint_set::starting_runs(out, modes, true, case_sha256, model)?;
+        crate::store::checkpoint_set::starting_runs(out, modes, true, case_sha256, model)?;
     for n in notes {
         observer.note(&format!("note: {n}"));
     }

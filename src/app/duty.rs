@@ -11,9 +11,9 @@ use crate::duty::contribution::combined_run;
 use crate::duty::study::run_duty_study;
 use crate::duty::wear::{run_spectrum_modes, SpectrumRun};
 use crate::duty::SpectrumModel;
-use crate::io::RunMetadata;
 use crate::report::duty::{duty_run_artifacts, duty_wear_artifacts};
 use crate::report::figure_output::FigureOutput;
+use crate::store::RunMetadata;
 use crate::study::wear_loop::{WearMode, WearRun};
 use std::path::Path;
 

@@ -5,12 +5,12 @@
 
 use crate::config::ConfigError;
 use crate::geometry::GeometryError;
-use crate::io::checkpoint::CheckpointError;
 use crate::io::lock::LockError;
-use crate::io::transmission_error::TransmissionErrorInput;
 use crate::io::OutputError;
 use crate::remedy::{Arg, Problem, Spelling};
 use crate::report::artifacts::WriteError;
+use crate::store::checkpoint::CheckpointError;
+use crate::store::transmission_error::TransmissionErrorInput;
 use crate::study::ModelError;
 use std::fmt;
 

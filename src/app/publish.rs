@@ -9,8 +9,9 @@
 
 use super::observer::Observer;
 use super::{JobError, Outcome};
-use crate::io::{OtherSet, OutputDir, RunMetadata};
+use crate::io::{OtherSet, OutputDir};
 use crate::report::{write_artifacts, Artifacts};
+use crate::store::RunMetadata;
 use std::path::Path;
 
 /// Open `dir` for the output set of `command`: `set` names the set when several share

@@ -5,13 +5,13 @@
 use super::observer::Observer;
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
-use crate::io::transfer_path::read_transfer_path;
-use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
 use crate::report::signals::signals_artifacts;
 use crate::signals::setup::chain_of;
 use crate::signals::transfer::TransferPath;
+use crate::store::transfer_path::read_transfer_path;
+use crate::store::RunMetadata;
 use crate::study::budget::{estimate, Budget, Estimate, Job as Cost, Term, SECONDS_PER_STEP};
 use crate::study::signal_record::record_case;
 use crate::study::transient_signals::is_transient;

@@ -4,9 +4,9 @@
 use super::observer::Observer;
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
-use crate::io::RunMetadata;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
+use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use std::path::PathBuf;
 

@@ -37,7 +37,7 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
         Ok(x) if x.is_normal() && x > 0.0 && x <= 1e9 => Ok(x),
         _ => Err(format!(
             "--budget-scale {}: expected a number in (0, 1e9]",
-            crate::config::load::clip(text, crate::config::load::SHOWN_CHARS)
+            crate::format::clip(text, crate::format::SHOWN_CHARS)
         )),
     }
 }

@@ -15,6 +15,7 @@
 
 use super::case::Case;
 use super::schema::{spec, KeySpec, Range, Valid, KEYS, TABLE_ARRAYS};
+use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Words};
 use std::fmt;
 use toml::{Table, Value};
@@ -54,17 +55,6 @@ impl ConfigError {
     /// The messages in plain words.
     pub fn messages(&self) -> Vec<String> {
         self.problems.iter().map(Words::to_string).collect()
-    }
-}
-
-/// Longest piece of user input echoed in a message, characters.
-pub const SHOWN_CHARS: usize = 80;
-
-/// `text` cut to `max` characters, with an ellipsis and the full length when cut.
-pub fn clip(text: &str, max: usize) -> String {
-    match text.char_indices().nth(max) {
-        None => text.to_owned(),
-        Some((at, _)) => format!("{}... ({} characters)", &text[..at], text.chars().count()),
     }
 }
 

@@ -307,7 +307,7 @@ fn raw_bin(
         if !known.contains(&name.as_str()) {
             problems.push(format!(
                 "{origin}: unknown key `{}`; a bin has `torque_nm`, `input_speed_hz` or `input_speed_rpm`, and `share` or `hours`",
-                super::load::clip(name, super::load::SHOWN_CHARS)
+                crate::format::clip(name, crate::format::SHOWN_CHARS)
             ));
             ok = false;
         } else if v.is_none() {
@@ -561,7 +561,7 @@ pub(super) fn parse_section(
         let Some(s) = spec(&path).filter(|_| SCALAR_KEYS.contains(&key.as_str())) else {
             problems.push(format!(
                 "unknown key `{}`; valid keys in [load_spectrum]: {}, {}",
-                super::load::clip(&path, super::load::SHOWN_CHARS),
+                crate::format::clip(&path, crate::format::SHOWN_CHARS),
                 TABLE_KEYS.join(", "),
                 SCALAR_KEYS.join(", ")
             ));
@@ -600,7 +600,7 @@ pub(super) fn parse_section(
         (Some(b), None) => inline_bins(&b, problems),
         (None, Some(f)) => match f.as_str() {
             Some(name) => {
-                let shown = super::load::clip(name, super::load::SHOWN_CHARS);
+                let shown = crate::format::clip(name, crate::format::SHOWN_CHARS);
                 file_bins(&dir.join(name), &shown, problems)
             }
             None => {

@@ -59,7 +59,7 @@ fn columns(header: &csv::ByteRecord) -> Result<Columns, HistoryError> {
     let missing = |what: &str| {
         HistoryError::one(format!(
             "the history has no `{what}` column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm",
-            crate::config::load::clip(&names.join(","), crate::config::load::SHOWN_CHARS)
+            crate::format::clip(&names.join(","), crate::format::SHOWN_CHARS)
         ))
     };
     let time = find("time_s").ok_or_else(|| missing("time_s"))?;
@@ -123,7 +123,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
                     problems.push(format!(
                         "row {row} (line {}): `{name}` = `{}` is not a finite number (a gap in the record: remove the row or fill it)",
                         row + 1,
-                        crate::config::load::clip(&raw, crate::config::load::SHOWN_CHARS)
+                        crate::format::clip(&raw, crate::format::SHOWN_CHARS)
                     ));
                 }
                 None

@@ -30,7 +30,7 @@ pub fn thread_pool() -> Result<(rayon::ThreadPool, Option<String>), String> {
             Err(_) => {
                 notes.push(format!(
                     "RAYON_NUM_THREADS={} is not a whole number: using {cores} threads (one per core)",
-                    crate::config::load::clip(&v, 40)
+                    crate::format::clip(&v, 40)
                 ));
                 cores
             }

@@ -10,7 +10,7 @@
 //! their number.
 
 use super::prior::{Prior, Theta};
-use super::rng;
+use crate::rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 

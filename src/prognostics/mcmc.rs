@@ -11,7 +11,7 @@
 //! (step, walker), so the chains do not depend on the thread count.
 
 use super::prior::{Prior, Theta};
-use super::rng;
+use crate::rng;
 use rayon::prelude::*;
 
 /// Stretch scale a (Goodman & Weare's recommended value).

@@ -7,7 +7,7 @@
 //! k x N invariance of Archard wear) -> [`likelihood`] (the noise model) -> [`grid`]
 //! (exact posterior of one or two parameters) or [`mcmc`] (ensemble sampler) ->
 //! [`calibrate`] -> [`predict`] (Monte Carlo ensemble, fans, remaining life). Randomness
-//! comes from [`rng`]: one stream per sample index, so runs are reproducible and
+//! comes from [`crate::rng`]: one stream per sample index, so runs are reproducible and
 //! independent of the thread count and of sharding. docs/PROGNOSTICS.md states the
 //! method and its measured accuracy.
 
@@ -26,7 +26,7 @@ pub mod observations;
 pub mod predict;
 pub mod prior;
 pub mod quantity;
-pub mod rng;
+
 pub mod samples;
 pub mod stats;
 pub mod surrogate;

@@ -64,7 +64,7 @@ pub const MIN_VALUES_UNKNOWN_SIGMA: usize = 2;
 
 /// A cell shown in a message: cut, control characters escaped.
 fn shown(cell: &str) -> String {
-    crate::config::load::clip(&cell.escape_debug().to_string(), 40)
+    crate::format::clip(&cell.escape_debug().to_string(), 40)
 }
 
 /// A finite number, or why not.

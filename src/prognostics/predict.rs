@@ -6,10 +6,10 @@ use super::band::{cycles_grid, Band};
 use super::forward::{run_duty_trajectory, Crossing, FutureDuty, Trajectory};
 use super::prior::{apply, Prior, Theta};
 use super::quantity::Quantity;
-use super::rng;
 use super::stats::{quantile_sorted, std_dev};
 use super::surrogate::Surrogate;
 use crate::config::Case;
+use crate::rng;
 use crate::study::model::ModelError;
 use serde::{Deserialize, Serialize};
 

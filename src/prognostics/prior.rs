@@ -9,8 +9,8 @@
 //! Equal bounds hold a parameter fixed. Samplers work in unit coordinates u in [0, 1]
 //! per parameter (log k for k), where every prior is uniform.
 
-use super::rng;
 use crate::config::Case;
+use crate::rng;
 use rand::rngs::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 

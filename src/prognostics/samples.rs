@@ -72,7 +72,7 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
                 _ => problems.push(format!(
                     "{at}: `{}` = `{}` is not a number in [{lo:e}, {hi:e}]",
                     PARAMETERS[*i].column(),
-                    crate::config::load::clip(&cell.escape_debug().to_string(), 40)
+                    crate::format::clip(&cell.escape_debug().to_string(), 40)
                 )),
             }
         }

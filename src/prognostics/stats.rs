@@ -133,14 +133,14 @@ mod tests {
     #[test]
     fn autocorrelation_of_an_ar1_chain() {
         // AR(1) x_t = rho x_{t-1} + e_t has tau = (1 + rho) / (1 - rho) = 3 for rho = 0.5.
-        let mut r = super::super::rng::stream(1, 0);
+        let mut r = crate::rng::stream(1, 0);
         let chains: Vec<Vec<f64>> = (0..8)
             .map(|_| {
                 let mut x = 0.0;
                 (0..4000)
                     .map(|_| {
                         // Uniform noise: any finite-variance innovation gives the same tau.
-                        x = 0.5 * x + super::super::rng::uniform(&mut r) - 0.5;
+                        x = 0.5 * x + crate::rng::uniform(&mut r) - 0.5;
                         x
                     })
                     .collect()

@@ -5,7 +5,8 @@
 
 use super::figure_output::FigureOutput;
 use super::plot::{render_png, render_svg, Figure, PlotError};
-use crate::io::{OutputDir, OutputError, RunMetadata, Table};
+use crate::io::{OutputDir, OutputError, Table};
+use crate::store::RunMetadata;
 use rayon::prelude::*;
 use std::path::PathBuf;
 

@@ -274,7 +274,7 @@ pub fn duty_section(
 pub fn duty_run_artifacts(
     sm: &SpectrumModel,
     study: &crate::duty::study::DutyStudy,
-    meta: &crate::io::RunMetadata,
+    meta: &crate::store::RunMetadata,
     figures: super::figure_output::FigureOutput,
 ) -> Option<Artifacts> {
     use super::artifacts::{embed_figures, EmbeddedFigure};

@@ -7,7 +7,7 @@ use super::case::{
 };
 use super::comparison::{cycles_reached, Compared};
 use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
-use crate::io::RunMetadata;
+use crate::store::RunMetadata;
 use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;

@@ -1,7 +1,7 @@
 //! Seeded random signals: measurement noise and the band-limited load-torque fluctuation.
 //!
 //! Every draw comes from a ChaCha8 stream selected by (seed, stream index)
-//! (`prognostics::rng::stream`), so a record's noise depends only on its seed and channel,
+//! (`rng::stream`), so a record's noise depends only on its seed and channel,
 //! never on the thread or shard that computed it.
 //!
 //! - Measurement noise is white and Gaussian, added to the recorded samples, given either
@@ -12,7 +12,7 @@
 //!   bandwidth B and nothing above (white noise transformed, cut above B, transformed
 //!   back), scaled so that the realisation's RMS is the one asked for.
 
-use crate::prognostics::rng::stream;
+use crate::rng::stream;
 use rand_distr::{Distribution, StandardNormal};
 use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;

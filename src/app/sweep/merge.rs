@@ -95,8 +95,8 @@ impl SweepMergeJob {
                         .map_err(|m| JobError::input(over_budget(m)))?;
                 }
                 let src = csv.display().to_string();
-                // The table and its description, both required (`io::sweep_inputs`).
-                let (t, m) = crate::io::sweep_inputs::merge_input(&csv)
+                // The table and its description, both required (`store::sweep_inputs`).
+                let (t, m) = crate::store::sweep_inputs::merge_input(&csv)
                     .map_err(|e| Problem::of(Arg::Inputs, e))?;
                 metas.push((src.clone(), m));
                 tables.push((src, t));

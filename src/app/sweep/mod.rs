@@ -22,12 +22,12 @@ use super::{publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::duty::study::run_sweep_case;
 use crate::io::output_dir::StateFolder;
-use crate::io::RunMetadata;
 use crate::remedy::{Arg, Problem, Words};
 use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::modes::modes_json;
 use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
+use crate::store::RunMetadata;
 use crate::study::budget::{estimate_sweep, Budget, Job as Cost};
 use crate::study::sweep::resonance::{speed_marks, SpeedMarks};
 use crate::study::sweep::{

@@ -9,7 +9,8 @@
 //! (`config::load::case_with`), so it is exactly the case an override
 //! `KEY=value` of the same value gives.
 
-use crate::config::load::{clip, known_key, override_value, SHOWN_CHARS};
+use crate::config::load::{known_key, override_value};
+use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use toml::Value;
 

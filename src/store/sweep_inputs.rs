@@ -5,7 +5,7 @@
 //! (its axes, run kind and base case), and tables of two different sweeps can have
 //! disjoint case ids that would merge silently.
 
-use super::input::{read_input_if_present, read_input_text, MAX_SWEEP_TABLE_BYTES};
+use crate::io::input::{read_input_if_present, read_input_text, MAX_SWEEP_TABLE_BYTES};
 use crate::study::sweep::SweepTable;
 use std::path::Path;
 

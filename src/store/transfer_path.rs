@@ -7,10 +7,10 @@ use std::path::Path;
 /// The transfer path in `path`; every problem names the file.
 pub fn read_transfer_path(path: &Path) -> Result<TransferPath, Vec<String>> {
     let name = path.display().to_string();
-    let text = super::input::read_input_text(
+    let text = crate::io::input::read_input_text(
         path,
         "transfer-path file",
-        super::input::MAX_TRANSFER_PATH_BYTES,
+        crate::io::input::MAX_TRANSFER_PATH_BYTES,
     )
     .map_err(|e| vec![format!("transfer path file {name}: {}", e.reason)])?;
     parse_transfer_path(&text, &name)

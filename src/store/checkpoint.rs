@@ -21,8 +21,8 @@
 //! restart. The records' physics is checked by `study::wear_check` against the model,
 //! and the last update is recomputed.
 
-use super::error::OutputError;
-use super::output_dir::{sha256_hex, OutputDir};
+use crate::io::error::OutputError;
+use crate::io::output_dir::{sha256_hex, OutputDir};
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use serde::{Deserialize, Serialize};

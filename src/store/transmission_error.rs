@@ -98,10 +98,10 @@ pub fn read_transmission_error(
         source_name: name.clone(),
         reason,
     };
-    let bytes = super::input::read_input(
+    let bytes = crate::io::input::read_input(
         path,
         "transmission-error file",
-        super::input::MAX_TRANSMISSION_ERROR_BYTES,
+        crate::io::input::MAX_TRANSMISSION_ERROR_BYTES,
     )
     .map_err(|e| bad(e.reason))?;
     let mut r = csv::Reader::from_reader(bytes.as_slice());

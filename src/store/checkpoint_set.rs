@@ -3,7 +3,7 @@
 //! share it).
 
 use super::checkpoint::CheckpointLog;
-use super::{OutputDir, OutputError};
+use crate::io::{OutputDir, OutputError};
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use crate::study::wear_loop::{WearMode, WearRun};
 use std::sync::Mutex;
