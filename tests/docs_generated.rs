@@ -204,6 +204,10 @@ fn aggregates_interpolate_and_find_rows_by_another_column() {
         Ok(2.0)
     );
     assert!(ev("p:t.csv#t_s@argmax:nope").is_err());
+    // Trapezoids over t: (10 + 30) / 2 and (30 + 20) / 2 over 2 s.
+    assert_eq!(ev("p:t.csv#force_n@mean_over:t_s"), Ok(22.5));
+    assert!(ev("p:t.csv#force_n@mean_over:force_n").is_ok());
+    assert!(ev("p:branches.csv?branch=up&speed_hz=1#dte_um@mean_over:speed_hz").is_err());
 }
 
 #[test]

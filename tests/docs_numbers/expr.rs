@@ -13,7 +13,9 @@
 //! index `N`; for CSV columns also `at:X=V` (the column linearly interpolated where column
 //! X, in file order, first reaches V), `argmin:Y` and `argmax:Y` (the column in the row
 //! where column Y is smallest / largest), `before_jump:Y` and `after_jump:Y` (the column in
-//! the rows on either side of the largest change of column Y between neighbouring rows).
+//! the rows on either side of the largest change of column Y between neighbouring rows),
+//! `mean_over:X` (the mean of the column over column X by the trapezoidal rule: a time
+//! mean of unevenly spaced samples).
 //! A COLUMN with one `*` stands for every column it matches, each reduced by AGG, the
 //! results by a second aggregate: `#tooth*_um@max@mean` is the mean of the teeth's maxima.
 
@@ -294,6 +296,17 @@ fn column_value(table: &Table, column: &str, agg: &str) -> Result<f64, String> {
         let v: f64 = v.parse().map_err(|_| format!("`{v}` is not a number"))?;
         return interpolate(&table.numbers(x_col)?, &xs, v)
             .ok_or_else(|| format!("column `{x_col}` never reaches {v}"));
+    }
+    if let Some(x_col) = agg.strip_prefix("mean_over:") {
+        let x = table.numbers(x_col)?;
+        let span = x.last().zip(x.first()).map_or(0.0, |(l, f)| l - f);
+        if span == 0.0 {
+            return Err(format!("column `{x_col}` spans nothing"));
+        }
+        let area: f64 = (1..x.len())
+            .map(|i| (x[i] - x[i - 1]) * (xs[i] + xs[i - 1]) / 2.0)
+            .sum();
+        return Ok(area / span);
     }
     if let Some(y) = agg.strip_prefix("argmin:") {
         return Ok(xs[row_of(&table.numbers(y)?, |a, b| a < b)]);
