@@ -2,7 +2,10 @@
 //! formats, and the check or the rewrite of a Markdown file.
 //!
 //! Marks (HTML comments, invisible where the Markdown is rendered):
-//! - `<!-- gw-run NAME: ARGS -->`: the run NAME is `gearwear ARGS --out DIR --quiet`;
+//! - `<!-- gw-run NAME: ARGS -->`: the run NAME is `gearwear ARGS --out DIR --quiet`, or,
+//!   when ARGS start with a script of the project (`scripts/NAME.sh`), `bash ARGS --out DIR
+//!   --quiet` with the binary in the environment (`GEARWEAR_BIN`): for a study that needs
+//!   more than one command, such as the prognostics example's observations;
 //! - `<!-- gw:EXPR|FMT -->TEXT<!-- /gw -->`: TEXT is EXPR (see `expr`) formatted by FMT;
 //! - `<!-- gw-img RUN:FILE -->` before an image `![..](PATH)` on the same or the next
 //!   line: the image is the file FILE of the run's output folder, byte for byte;
@@ -312,24 +315,36 @@ pub fn execute(
     Ok(out)
 }
 
-/// One run: `gearwear ARGS --out work/NAME --quiet` in the repository root, one thread.
+/// One run: `gearwear ARGS --out work/NAME --quiet` (or `bash SCRIPT ...`) in the repository
+/// root, one thread.
 fn run_one(bin: &Path, r: &RunSpec, work: &Path, root: &Path) -> Result<(String, PathBuf), String> {
     let dir = work.join(&r.name);
-    let o = std::process::Command::new(bin)
+    let script = r
+        .args
+        .first()
+        .is_some_and(|a| a.starts_with("scripts/") && a.ends_with(".sh"));
+    let mut command = if script {
+        std::process::Command::new("bash")
+    } else {
+        std::process::Command::new(bin)
+    };
+    let o = command
         .args(&r.args)
         .arg("--out")
         .arg(&dir)
         .arg("--quiet")
         .current_dir(root)
         .env("RAYON_NUM_THREADS", "1")
+        .env("GEARWEAR_BIN", bin)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::piped())
         .output()
         .map_err(|e| format!("run `{}`: {e}", r.name))?;
     if !o.status.success() {
         return Err(format!(
-            "run `{}` (gearwear {}) failed: {}",
+            "run `{}` ({}{}) failed: {}",
             r.name,
+            if script { "bash " } else { "gearwear " },
             r.args.join(" "),
             String::from_utf8_lossy(&o.stderr)
         ));
