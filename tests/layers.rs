@@ -554,7 +554,6 @@ fn no_import_runs_up_a_layer() {
 const CIRCLES_BEING_OPENED: &[&str] = &[
     "config::case <-> config::load <-> config::load_spectrum",
     "dynamics::hunting <-> dynamics::steady",
-    "wear::archard <-> wear::profile_wear",
     "study::budget <-> study::teeth_budget",
     "signals::frf_table <-> signals::transfer",
     "prognostics::forward <-> prognostics::indicator <-> prognostics::quantity",
