@@ -13,9 +13,9 @@ use crate::prognostics::check::{
     check_calibration, theta_at_k_quantile, worst_ratio, CalibrationCheck,
 };
 use crate::prognostics::fit_check::{fit_check, FitCheck};
-use crate::prognostics::indicator::indicators_of;
 use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
+use crate::prognostics::quantity::indicators_of;
 use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureOutput;
