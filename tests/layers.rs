@@ -554,7 +554,6 @@ fn no_import_runs_up_a_layer() {
 const CIRCLES_BEING_OPENED: &[&str] = &[
     "config::case <-> config::load <-> config::load_spectrum",
     "study::budget <-> study::teeth_budget",
-    "report::comparison <-> report::paper <-> report::run_report <-> report::stiffness <-> report::teeth <-> report::wear",
     "app::duty <-> app::duty_runs <-> app::wear",
     "study::sweep::case_run <-> study::sweep::continuation",
     "cli::args <-> cli::signals_args",
