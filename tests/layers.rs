@@ -557,7 +557,6 @@ const CIRCLES_BEING_OPENED: &[&str] = &[
     "app::duty <-> app::duty_runs <-> app::wear",
     "study::sweep::case_run <-> study::sweep::continuation",
     "cli::args <-> cli::signals_args",
-    "report::plot::draw <-> report::plot::legend",
 ];
 
 #[test]
