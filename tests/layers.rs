@@ -556,7 +556,6 @@ const CIRCLES_BEING_OPENED: &[&str] = &[
     "study::budget <-> study::teeth_budget",
     "app::duty <-> app::duty_runs <-> app::wear",
     "study::sweep::case_run <-> study::sweep::continuation",
-    "cli::args <-> cli::signals_args",
 ];
 
 #[test]

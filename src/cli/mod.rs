@@ -20,6 +20,7 @@ macro_rules! eprintln {
 
 mod args;
 mod calibrate_cmd;
+mod common_args;
 mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;
@@ -35,7 +36,8 @@ mod stiffness_cmd;
 mod sweep_cmd;
 mod wear_cmd;
 
-pub use args::{CaseArgs, Cli, Command};
+pub use args::{Cli, Command};
+pub use common_args::CaseArgs;
 pub use error::{flag, CliError};
 pub use progress::Terminal;
 
