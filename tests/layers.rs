@@ -555,7 +555,6 @@ const CIRCLES_BEING_OPENED: &[&str] = &[
     "config::case <-> config::load <-> config::load_spectrum",
     "study::budget <-> study::teeth_budget",
     "app::duty <-> app::duty_runs <-> app::wear",
-    "study::sweep::case_run <-> study::sweep::continuation",
 ];
 
 #[test]
