@@ -554,7 +554,6 @@ fn no_import_runs_up_a_layer() {
 const CIRCLES_BEING_OPENED: &[&str] = &[
     "config::case <-> config::load <-> config::load_spectrum",
     "study::budget <-> study::teeth_budget",
-    "app::duty <-> app::duty_runs <-> app::wear",
 ];
 
 #[test]

@@ -56,6 +56,7 @@ pub mod signals;
 pub mod stiffness;
 pub mod sweep;
 pub mod wear;
+pub mod wear_runs;
 
 pub use calibrate::{CalibrateJob, CalibrationOptions};
 pub use dataset::{DatasetJob, DatasetMergeJob, DesignSource};
