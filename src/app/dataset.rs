@@ -29,9 +29,9 @@ use crate::signals::files::{record_parquet, record_table, units};
 use crate::signals::path_file::parse_transfer_path;
 use crate::signals::setup::{chain_of, ChainSetup};
 use crate::signals::transfer::TransferPath;
-use crate::study::budget::{estimate, Budget, Estimate, Job as Cost, Term};
+use crate::study::budget::{estimate_dataset, Budget};
 use crate::study::dataset::parse_design;
-use crate::study::dataset::plan::{Plan, Shard};
+use crate::study::dataset::plan::{plan_of, Plan, Shard};
 use crate::study::dataset::records::{state_records, StateInputs};
 use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
 use crate::study::dataset::{DatasetDesign, StateChoice};
@@ -91,20 +91,6 @@ pub struct DatasetRequest<'a> {
 /// Bytes of the metadata and labels of one record besides its signals (sidecar JSON with
 /// the indicators and per-tooth wear, index row), a generous bound from measured files.
 const LABEL_BYTES_PER_RECORD: f64 = 16_384.0;
-
-/// The plan's axis sizes.
-pub fn plan_of(d: &DatasetDesign) -> Plan {
-    Plan {
-        conditions: d.conditions.len(),
-        states: match &d.states {
-            StateChoice::Count(n) => *n,
-            StateChoice::Cycles(c) => c.len(),
-        },
-        speeds: d.speeds_hz.len(),
-        loads: d.torques_nm.len(),
-        realisations: d.noise_realisations,
-    }
-}
 
 /// The chain setup of each condition, checked at the design's fastest speed.
 fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
@@ -244,70 +230,6 @@ pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
         setups,
         estimated_bytes: estimated,
     })
-}
-
-/// The cost of (a shard of) a dataset against the run budget, before anything is
-/// computed (the disk has its own budget): each condition's run-to-failure trajectory
-/// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear
-/// limit), each physical state of the shard one dynamic evaluation at its speed and load
-/// (the costliest of the lowest and highest speed and load of its condition). Memory: the
-/// costliest single study on each of `threads` threads.
-pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Estimate {
-    let states = plan_of(d).shard_states(shard).len() as f64;
-    let ends = |v: &[f64]| {
-        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        [lo, hi]
-    };
-    let (mut trajectories_s, mut state_s, mut bytes) = (0.0, 0.0f64, 0.0f64);
-    for c in &d.conditions {
-        let mut case = c.case.clone();
-        case.wear.total_cycles = d.max_cycles;
-        let w = estimate(
-            &case,
-            Cost::Wear {
-                dynamic: true,
-                quasi_static: false,
-            },
-        );
-        trajectories_s += w.seconds();
-        bytes = bytes.max(w.memory_bytes());
-        for speed in ends(&d.speeds_hz) {
-            for torque in ends(&d.torques_nm) {
-                let mut case = c.case.clone();
-                case.operating.input_speed_hz = speed;
-                case.operating.load_torque_nm = torque;
-                let e = estimate(&case, Cost::Dynamics);
-                state_s = state_s.max(e.seconds());
-                bytes = bytes.max(e.memory_bytes());
-            }
-        }
-    }
-    Estimate {
-        steps_per_evaluation: 0.0,
-        steps_to_give_up: 0.0,
-        recorded_samples: 0.0,
-        wear_per_cycle_m: None,
-        wear_updates_dynamic: 0.0,
-        wear_updates_quasi_static: 0.0,
-        terms: vec![
-            Term {
-                what: "the conditions' run-to-failure trajectories",
-                seconds: trajectories_s,
-                bytes: 0.0,
-                keys: &["run_to_failure.max_cycles", "the conditions' wear keys"],
-            },
-            Term {
-                what: "the physical states' dynamic evaluations",
-                seconds: states * state_s,
-                bytes: threads.max(1) as f64 * (bytes - 64e6),
-                keys: &[
-                    "the number of conditions, states, speeds and loads",
-                    "the conditions' numerics keys",
-                ],
-            },
-        ],
-    }
 }
 
 /// Run (a shard of) a checked dataset into `root`. `out` is the folder's output set (the

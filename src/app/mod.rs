@@ -52,6 +52,7 @@ pub mod predict_future;
 pub mod predict_merge;
 pub mod publish;
 pub mod run;
+pub mod settings;
 pub mod signals;
 pub mod stiffness;
 pub mod sweep;

@@ -6,7 +6,7 @@ use super::calibrate::counted;
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::predict_future::FutureInput;
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::Table;
 use crate::prognostics::band::Band;
@@ -78,7 +78,7 @@ impl PredictOptions {
 
     /// Every problem of the options: each within its range (`prognostics::limits`).
     fn check(&self) -> Result<(), JobError> {
-        budget::check_settings(crate::prognostics::limits::check_predict(
+        settings::check_settings(crate::prognostics::limits::check_predict(
             self.limit_um,
             self.cycles,
             self.samples,
@@ -193,10 +193,10 @@ impl Job for PredictJob {
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
         // The budget, now that the samples' source and number are known.
-        let e = crate::prognostics::budget::estimate_prediction(
+        let e = crate::study::budget::estimate_prediction(
             case,
             &span,
-            &crate::prognostics::budget::PredictionJob {
+            &crate::study::budget::PredictionJob {
                 samples_in_shard: n.div_ceil(shard.count.max(1)),
                 grid_points: o.grid_points,
                 cycles: o.cycles,
