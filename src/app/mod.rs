@@ -39,7 +39,6 @@ pub mod budget;
 pub mod calibrate;
 pub mod checkpoints;
 pub mod dataset;
-pub mod dataset_dir;
 pub mod duty;
 pub mod duty_runs;
 pub mod dynamics;
