@@ -403,6 +403,40 @@ impl OutputDir {
     /// Publish the staged files as the folder's new set; returns its manifest.
     pub fn publish(mut self) -> Result<Manifest, OutputError> {
         // 1. Every target must be free, or gearwear's own as recorded.
+        let (targets, mut conflicts) = self.publish_targets();
+        if !conflicts.is_empty() {
+            conflicts.sort();
+            conflicts.dedup();
+            return Err(self.keep_unpublished(conflicts));
+        }
+        // 2. Mark, move into place, rename the logs.
+        let marker = format!(
+            "{MARKER_TEXT} its results into this folder (`gearwear {}`): the files here may belong to different runs. Run the command again.\n",
+            self.command
+        );
+        let marker_entry =
+            self.root
+                .write_new(&self.staging, INCOMPLETE_MARKER, marker.as_bytes())?;
+        let mut st = SetState::new(self.root.entry_self()?.inode, &self.command);
+        let files = self.move_into_place(&targets, &mut st)?;
+        // 3. The previous set's files this one does not produce, if still as recorded.
+        self.remove_previous()?;
+        // 4. The manifest, the state, then the marker goes.
+        let manifest = self.write_manifest(files, &mut st)?;
+        self.write_state_file(&st)?;
+        if matches!(self.root.entry(INCOMPLETE_MARKER)?, Some(e) if e.inode == marker_entry.inode) {
+            self.root.remove_file(INCOMPLETE_MARKER)?;
+        }
+        self.root.sync()?;
+        self.published = true;
+        let _ = remove_tree(&self.root, &self.staging_name);
+        Ok(manifest)
+    }
+
+    /// Where each staged file goes (relative path, folder, name), and why any target,
+    /// log, manifest or marker cannot be replaced (not free, and not gearwear's own as
+    /// recorded).
+    fn publish_targets(&self) -> (Vec<(String, Dir, String)>, Vec<String>) {
         let mut conflicts = Vec::new();
         let mut targets = Vec::new();
         for rel in self.staged.keys() {
@@ -436,22 +470,18 @@ impl OutputDir {
                 conflicts.push(e.to_string());
             }
         }
-        if !conflicts.is_empty() {
-            conflicts.sort();
-            conflicts.dedup();
-            return Err(self.keep_unpublished(conflicts));
-        }
-        // 2. Mark, move into place, rename the logs.
-        let marker = format!(
-            "{MARKER_TEXT} its results into this folder (`gearwear {}`): the files here may belong to different runs. Run the command again.\n",
-            self.command
-        );
-        let marker_entry =
-            self.root
-                .write_new(&self.staging, INCOMPLETE_MARKER, marker.as_bytes())?;
-        let mut st = SetState::new(self.root.entry_self()?.inode, &self.command);
+        (targets, conflicts)
+    }
+
+    /// Move the staged files to their `targets` and the logs to their names, recording
+    /// every output and state file in `st`; the manifest's entries.
+    fn move_into_place(
+        &mut self,
+        targets: &[(String, Dir, String)],
+        st: &mut SetState,
+    ) -> Result<Vec<ManifestEntry>, OutputError> {
         let mut files = Vec::with_capacity(targets.len() + 1);
-        for (rel, dir, name) in &targets {
+        for (rel, dir, name) in targets {
             let (sdir, sname) = self.staging.descend(rel, false)?;
             sdir.rename_to(&sname, dir, name)?;
             let s = &self.staged[rel];
@@ -485,7 +515,12 @@ impl OutputDir {
                 }
             }
         }
-        // 3. The previous set's files this one does not produce, if still as recorded.
+        Ok(files)
+    }
+
+    /// Remove the previous set's outputs and state files this set does not produce, each
+    /// only if it is still the file recorded.
+    fn remove_previous(&self) -> Result<(), OutputError> {
         let now: BTreeSet<&str> = self
             .staged
             .keys()
@@ -512,7 +547,15 @@ impl OutputDir {
                 }
             }
         }
-        // 4. The manifest, the state, then the marker goes.
+        Ok(())
+    }
+
+    /// Write the set's manifest of `files` (recorded in `st` as an output too).
+    fn write_manifest(
+        &self,
+        files: Vec<ManifestEntry>,
+        st: &mut SetState,
+    ) -> Result<Manifest, OutputError> {
         let manifest = Manifest {
             program: "gearwear".into(),
             version: env!("CARGO_PKG_VERSION").into(),
@@ -537,13 +580,6 @@ impl OutputDir {
             bytes: text.len() as u64,
             sha256: sha256_hex(text.as_bytes()),
         });
-        self.write_state_file(&st)?;
-        if matches!(self.root.entry(INCOMPLETE_MARKER)?, Some(e) if e.inode == marker_entry.inode) {
-            self.root.remove_file(INCOMPLETE_MARKER)?;
-        }
-        self.root.sync()?;
-        self.published = true;
-        let _ = remove_tree(&self.root, &self.staging_name);
         Ok(manifest)
     }
 
