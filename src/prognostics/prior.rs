@@ -11,6 +11,7 @@
 
 use crate::config::Case;
 use crate::rng;
+use crate::study::budget::ParameterSpan;
 use rand::rngs::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
@@ -222,6 +223,21 @@ pub fn apply(case: &Case, theta: &Theta) -> Case {
     }
     c.operating.load_torque_nm = theta[2];
     c
+}
+
+/// The numbers the run budget's estimates need of the span (the cost model sits below
+/// prognostics and takes numbers, not a prior).
+impl From<&Prior> for ParameterSpan {
+    fn from(p: &Prior) -> Self {
+        let free = p.free();
+        ParameterSpan {
+            wear_coefficient_min_m2_per_n: p.params[0].lo,
+            wear_coefficient_max_m2_per_n: p.params[0].hi,
+            load_torque_max_nm: p.params[2].hi,
+            free: free.len(),
+            free_besides_wear_coefficient: free.iter().filter(|i| **i != 0).count(),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -396,13 +396,13 @@ pub fn add_tooth_wear_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifa
 pub fn run_teeth_figures(
     model: &Model,
     study: &crate::study::paper::PaperStudy,
-) -> Vec<super::paper::Fig> {
+) -> Vec<super::figures::Fig> {
     let mut figs = Vec::new();
     if model.teeth.is_none() {
         return figs;
     }
     let mut push = |file: &str, caption: String, (figure, table): (Figure, Table)| {
-        figs.push(super::paper::Fig {
+        figs.push(super::figures::Fig {
             file: file.into(),
             paper_figure: 0,
             caption,

@@ -8,7 +8,7 @@ use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
 use crate::dynamics::drive::{Drive, Tabulated};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::model::State;
-use crate::dynamics::steady::DynamicsError;
+use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::transient::integrate_transient;
 use crate::signals::antialias::OVERSAMPLING;
 use crate::signals::bearing::bearing_forces;
