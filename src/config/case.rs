@@ -13,6 +13,9 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::operating::{
+    LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
+};
 pub use super::signals::SignalsSection;
 pub use super::teeth::{
     FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
@@ -40,7 +43,7 @@ pub struct Case {
     pub signals: SignalsSection,
     /// The duty cycle (issue 20); absent: the single operating point of `operating`.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
+    pub load_spectrum: Option<LoadSpectrumSection>,
     /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
     #[serde(skip_serializing_if = "TeethSection::is_empty")]
     pub teeth: TeethSection,
@@ -137,52 +140,6 @@ impl Default for MaterialsSection {
             poisson_ratio_pinion: 0.3,
             youngs_modulus_gear_gpa: 205.0,
             poisson_ratio_gear: 0.3,
-        }
-    }
-}
-
-/// Which shaft the load torque is referred to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum TorqueShaft {
-    Pinion,
-    Gear,
-}
-
-/// How the drivetrain's free rotation is held (docs/MODEL.md, "Speed boundary condition").
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SpeedBoundary {
-    /// Motor angle imposed, theta_m = Omega t; brake torque constant.
-    MotorSpeedImposed,
-    /// Brake angle imposed; motor torque constant.
-    BrakeSpeedImposed,
-    /// Motor torque = mean torque + slip damping (Omega - dtheta_m/dt); brake torque constant.
-    MotorSlip,
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct OperatingSection {
-    pub input_speed_hz: f64,
-    pub load_torque_nm: f64,
-    pub load_torque_shaft: TorqueShaft,
-    pub speed_boundary: SpeedBoundary,
-    pub motor_slip_damping_nm_s_per_rad: f64,
-}
-
-impl Default for OperatingSection {
-    fn default() -> Self {
-        Self {
-            input_speed_hz: 30.0,
-            load_torque_nm: 60.0,
-            // The paper's 3311 N mean force matches 60 N m / r_pb (docs/MODEL.md).
-            load_torque_shaft: TorqueShaft::Pinion,
-            // Paper eq. (1) keeps the motor as a free inertia driven by T_mor: a motor
-            // torque law with a speed term is the closest reading (docs/MODEL.md).
-            speed_boundary: SpeedBoundary::MotorSlip,
-            // Induction motor with ~3 % rated slip at this load: 60 N m / (0.03 x 188 rad/s).
-            motor_slip_damping_nm_s_per_rad: 10.0,
         }
     }
 }
@@ -581,6 +538,26 @@ impl Case {
         if any_per_tooth && self.contact.load_sharing == LoadSharingModel::Auto {
             self.contact.load_sharing = LoadSharingModel::Stiffness;
         }
+    }
+
+    /// The case at bin `i` of its spectrum: the operating point set to the bin's torque
+    /// (on the spectrum's shaft) and speed, without the spectrum. Everything else is the
+    /// case's, so a bin equal to the operating point gives the case itself.
+    pub fn at_bin(&self, i: usize) -> Case {
+        let mut c = self.clone();
+        if let Some(s) = self.load_spectrum.as_ref() {
+            c.operating.load_torque_nm = s.torque_nm(i);
+            c.operating.input_speed_hz = s.input_speed_hz(i);
+            c.operating.load_torque_shaft = s.shaft(self.operating.load_torque_shaft);
+        }
+        c.load_spectrum = None;
+        c
+    }
+
+    /// The case of every bin, or None without a spectrum.
+    pub fn bin_cases(&self) -> Option<Vec<Case>> {
+        let s = self.load_spectrum.as_ref()?;
+        Some((0..s.bins.len()).map(|i| self.at_bin(i)).collect())
     }
 
     /// A starting point for a pair of one's own (`gearwear config --new-pair`): the
