@@ -14,7 +14,8 @@
 //! - Values echoed in messages are cut to [`SHOWN_CHARS`] characters with an ellipsis.
 
 use super::case::{Case, LoadSpectrumSection};
-use super::parse::{check_range, normalise, sections, type_name, unknown_key};
+use super::operating::SpeedUnit;
+use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
 use super::schema::{spec, KeySpec, KEYS, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Words};
@@ -286,20 +287,21 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     let Some(Value::Table(op)) = user.get_mut("operating") else {
         return;
     };
-    let Some(rpm) = op.remove("input_speed_rpm") else {
-        return;
-    };
-    if op.contains_key("input_speed_hz") {
-        problems.push(
-            "`operating.input_speed_rpm` and `operating.input_speed_hz` are both given: give the input speed once, in rpm or in Hz".into(),
-        );
-        return;
-    }
-    if let Some(x) = rpm
-        .as_float()
-        .or_else(|| rpm.as_integer().map(|i| i as f64))
-    {
-        op.insert("input_speed_hz".into(), Value::Float(x / 60.0));
+    let (hz, rpm) = (
+        SpeedUnit::Hz.input_speed_key(),
+        SpeedUnit::Rpm.input_speed_key(),
+    );
+    match SpeedUnit::given(op.contains_key(hz), op.contains_key(rpm), "operating.") {
+        Err(both) => {
+            op.remove(rpm);
+            problems.push(both);
+        }
+        Ok(Some(SpeedUnit::Rpm)) => {
+            if let Some(x) = op.remove(rpm).as_ref().and_then(as_number) {
+                op.insert(hz.into(), Value::Float(SpeedUnit::Rpm.to_hz(x)));
+            }
+        }
+        Ok(_) => {}
     }
 }
 

@@ -11,7 +11,7 @@
 //! valid range, and nothing is computed from a case that has one.
 
 use super::operating::{
-    LoadSpectrumSection, SpectrumBin, TorqueShaft, MAX_BINS, SHARE_SUM_TOLERANCE,
+    LoadSpectrumSection, SpectrumBin, SpeedUnit, TorqueShaft, MAX_BINS, SHARE_SUM_TOLERANCE,
 };
 use super::parse::{as_number, check_range, normalise};
 use super::schema::{number, spec, Range, Valid};
@@ -31,8 +31,8 @@ struct RawBin {
     origin: String,
     torque_nm: f64,
     speed_hz: f64,
-    /// The speed key as written and its value (for messages).
-    speed_key: &'static str,
+    /// The speed's unit as written and its value in it (for messages).
+    speed_unit: SpeedUnit,
     speed_value: f64,
     weight: Weight,
 }
@@ -178,20 +178,6 @@ fn raw_bin(
             ok = false;
         }
     }
-    let one_of =
-        |a: &'static str, b: &'static str, problems: &mut Vec<String>| match (get(a), get(b)) {
-            (Some(Some(x)), None) => Some((a, x)),
-            (None, Some(Some(x))) => Some((b, x)),
-            (Some(_), Some(_)) => {
-                problems.push(format!("{origin}: give `{a}` or `{b}`, not both"));
-                None
-            }
-            (None, None) => {
-                problems.push(format!("{origin}: missing `{a}` (or `{b}`)"));
-                None
-            }
-            _ => None,
-        };
     let torque = match get("torque_nm") {
         Some(Some(t)) => Some(t),
         None => {
@@ -200,17 +186,30 @@ fn raw_bin(
         }
         _ => None,
     };
-    let speed = one_of("input_speed_hz", "input_speed_rpm", problems);
-    let weight = one_of("share", "hours", problems);
-    let (torque, (speed_key, speed_value), (wkey, w)) = (torque?, speed?, weight?);
+    let speed = bin_speed(&origin, &get, problems);
+    let weight = match (get("share"), get("hours")) {
+        (Some(Some(x)), None) => Some(Weight::Share(x)),
+        (None, Some(Some(x))) => Some(Weight::Hours(x)),
+        (Some(_), Some(_)) => {
+            problems.push(format!("{origin}: give `share` or `hours`, not both"));
+            None
+        }
+        (None, None) => {
+            problems.push(format!("{origin}: missing `share` (or `hours`)"));
+            None
+        }
+        _ => None,
+    };
+    let (torque, (speed_unit, speed_value), weight) = (torque?, speed?, weight?);
     if !ok {
         return None;
     }
-    let origin = if speed_key == "input_speed_rpm" {
+    let speed_hz = speed_unit.to_hz(speed_value);
+    let origin = if speed_unit == SpeedUnit::Rpm {
         format!(
             "{origin} ({} rpm = {} Hz)",
             number(speed_value),
-            number(speed_value / 60.0)
+            number(speed_hz)
         )
     } else {
         origin
@@ -218,20 +217,32 @@ fn raw_bin(
     Some(RawBin {
         origin,
         torque_nm: torque,
-        // 1 Hz = 60 rpm.
-        speed_hz: if speed_key == "input_speed_rpm" {
-            speed_value / 60.0
-        } else {
-            speed_value
-        },
-        speed_key,
+        speed_hz,
+        speed_unit,
         speed_value,
-        weight: if wkey == "hours" {
-            Weight::Hours(w)
-        } else {
-            Weight::Share(w)
-        },
+        weight,
     })
+}
+
+/// A bin's speed: its unit and value as written (`get(key)`: absent, not a number, or
+/// the number); the problem pushed when it has none or both.
+fn bin_speed(
+    origin: &str,
+    get: &dyn Fn(&str) -> Option<Option<f64>>,
+    problems: &mut Vec<String>,
+) -> Option<(SpeedUnit, f64)> {
+    let given = |u: SpeedUnit| get(u.input_speed_key()).is_some();
+    match SpeedUnit::given(given(SpeedUnit::Hz), given(SpeedUnit::Rpm), "") {
+        Err(both) => {
+            problems.push(format!("{origin}: {both}"));
+            None
+        }
+        Ok(None) => {
+            problems.push(format!("{origin}: missing {}", SpeedUnit::either_key("")));
+            None
+        }
+        Ok(Some(u)) => get(u.input_speed_key()).flatten().map(|x| (u, x)),
+    }
 }
 
 /// Bins written inline: an array of tables.
@@ -332,15 +343,14 @@ fn convert(raw: &[RawBin], problems: &mut Vec<String>) -> Option<Vec<SpectrumBin
         );
         return None;
     }
-    let speed_keys: Vec<&str> = raw.iter().map(|b| b.speed_key).collect();
-    if speed_keys.windows(2).any(|w| w[0] != w[1]) {
+    if raw.windows(2).any(|w| w[0].speed_unit != w[1].speed_unit) {
         problems.push(
             "`load_spectrum`: give `input_speed_hz` at every bin or `input_speed_rpm` at every bin, not a mix".into(),
         );
         return None;
     }
     for b in raw {
-        if b.speed_key == "input_speed_rpm" && !(b.speed_value.is_finite() && b.speed_value > 0.0) {
+        if b.speed_unit == SpeedUnit::Rpm && !(b.speed_value.is_finite() && b.speed_value > 0.0) {
             problems.push(format!(
                 "{}: `input_speed_rpm` = {} is invalid: expected a positive finite number (rpm = 60 x Hz, Hz in {})",
                 b.origin,

@@ -40,7 +40,7 @@ pub enum SpeedBoundary {
 #[serde(deny_unknown_fields, default)]
 pub struct OperatingSection {
     /// Pinion (input) shaft speed f_in, Hz (paper 4.1: 30 Hz); a case file may give it in
-    /// rpm instead (`operating.input_speed_rpm`, read as Hz = rpm / 60).
+    /// rpm instead (`operating.input_speed_rpm`, read as Hz = rpm / 60, [`SpeedUnit`]).
     pub input_speed_hz: f64,
     /// Load torque, N m (paper: 60 N m), on [`OperatingSection::load_torque_shaft`].
     pub load_torque_nm: f64,
@@ -66,6 +66,56 @@ impl Default for OperatingSection {
             // Induction motor with ~3 % rated slip at this load: 60 N m / (0.03 x 188 rad/s).
             motor_slip_damping_nm_s_per_rad: 10.0,
         }
+    }
+}
+
+/// The unit a shaft speed is written in: Hz, or revolutions per minute, the unit engineers
+/// think in. The one reading of an input speed given under either name
+/// ([`SpeedUnit::given`]) and its one conversion (1 Hz = 60 rpm), used by the case's
+/// `[operating]`, its load spectrum's bins and a measured load-time history's columns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpeedUnit {
+    /// Revolutions per second.
+    Hz,
+    /// Revolutions per minute.
+    Rpm,
+}
+
+impl SpeedUnit {
+    /// `x` in this unit, in Hz.
+    pub fn to_hz(self, x: f64) -> f64 {
+        match self {
+            SpeedUnit::Hz => x,
+            // 1 Hz = 60 rpm.
+            SpeedUnit::Rpm => x / 60.0,
+        }
+    }
+
+    /// The name of an input speed in this unit, as keys and columns spell it.
+    pub fn input_speed_key(self) -> &'static str {
+        match self {
+            SpeedUnit::Hz => "input_speed_hz",
+            SpeedUnit::Rpm => "input_speed_rpm",
+        }
+    }
+
+    /// The unit an input speed is given in, from whether it is given as `input_speed_hz`
+    /// and as `input_speed_rpm`: `None` when neither is; when both are, the problem, each
+    /// name behind `prefix` (a section's `operating.`, or nothing).
+    pub fn given(hz: bool, rpm: bool, prefix: &str) -> Result<Option<SpeedUnit>, String> {
+        match (hz, rpm) {
+            (true, true) => Err(format!(
+                "`{prefix}input_speed_hz` and `{prefix}input_speed_rpm` are both given: give the input speed once, in Hz or in rpm (not both)"
+            )),
+            (true, false) => Ok(Some(SpeedUnit::Hz)),
+            (false, true) => Ok(Some(SpeedUnit::Rpm)),
+            (false, false) => Ok(None),
+        }
+    }
+
+    /// The two names of an input speed, for a message that misses it.
+    pub fn either_key(prefix: &str) -> String {
+        format!("`{prefix}input_speed_hz` (or `{prefix}input_speed_rpm`)")
     }
 }
 
