@@ -114,7 +114,10 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let mut out = Vec::new();
     for c in &d.conditions {
         let mut case = c.case.clone();
-        case.operating.input_speed_hz = fastest;
+        case.set_load_point(crate::config::case::LoadPoint {
+            input_speed_hz: fastest,
+            ..case.load_point()
+        });
         match chain_of(
             &case,
             req.path.clone(),
@@ -275,8 +278,11 @@ pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Esti
         for speed in ends(&d.speeds_hz) {
             for torque in ends(&d.torques_nm) {
                 let mut case = c.case.clone();
-                case.operating.input_speed_hz = speed;
-                case.operating.load_torque_nm = torque;
+                case.set_load_point(crate::config::case::LoadPoint {
+                    input_speed_hz: speed,
+                    load_torque_nm: torque,
+                    ..case.load_point()
+                });
                 let e = estimate(&case, Cost::Dynamics);
                 state_s = state_s.max(e.seconds());
                 bytes = bytes.max(e.memory_bytes());
@@ -471,8 +477,11 @@ fn one_state(
         StateChoice::Cycles(c) => c[ix.state],
     };
     let mut case = cond.case.clone();
-    case.operating.input_speed_hz = d.speeds_hz[ix.speed];
-    case.operating.load_torque_nm = d.torques_nm[ix.load];
+    case.set_load_point(crate::config::case::LoadPoint {
+        input_speed_hz: d.speeds_hz[ix.speed],
+        load_torque_nm: d.torques_nm[ix.load],
+        ..case.load_point()
+    });
     let model = Model::from_case(&case).map_err(|e| anyhow::anyhow!("{e}"))?;
     let setup = &setups[ix.condition];
     let unit = setup.chain.acquisition.unit;

@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
 pub use super::operating::{
-    LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
+    LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
 };
 pub use super::signals::SignalsSection;
 pub use super::teeth::{
@@ -540,15 +540,35 @@ impl Case {
         }
     }
 
+    /// The case's load point: `[operating]`'s input speed, load torque and its shaft.
+    pub fn load_point(&self) -> LoadPoint {
+        let o = &self.operating;
+        LoadPoint {
+            input_speed_hz: o.input_speed_hz,
+            load_torque_nm: o.load_torque_nm,
+            load_torque_shaft: o.load_torque_shaft,
+        }
+    }
+
+    /// Put the case at load point `p`: `[operating]`'s input speed, load torque and its
+    /// shaft set to `p`'s. Everything else stays (how the speed is held, a load spectrum;
+    /// [`Case::at_bin`] drops the spectrum). The one place a case's operating point is
+    /// changed; the model derives its speeds, torques and mesh frequency from it
+    /// (`dynamics::params::OperatingPoint`).
+    pub fn set_load_point(&mut self, p: LoadPoint) {
+        let o = &mut self.operating;
+        o.input_speed_hz = p.input_speed_hz;
+        o.load_torque_nm = p.load_torque_nm;
+        o.load_torque_shaft = p.load_torque_shaft;
+    }
+
     /// The case at bin `i` of its spectrum: the operating point set to the bin's torque
     /// (on the spectrum's shaft) and speed, without the spectrum. Everything else is the
     /// case's, so a bin equal to the operating point gives the case itself.
     pub fn at_bin(&self, i: usize) -> Case {
         let mut c = self.clone();
         if let Some(s) = self.load_spectrum.as_ref() {
-            c.operating.load_torque_nm = s.torque_nm(i);
-            c.operating.input_speed_hz = s.input_speed_hz(i);
-            c.operating.load_torque_shaft = s.shaft(self.operating.load_torque_shaft);
+            c.set_load_point(s.load_point(i, self.operating.load_torque_shaft));
         }
         c.load_spectrum = None;
         c

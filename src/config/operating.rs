@@ -69,6 +69,20 @@ impl Default for OperatingSection {
     }
 }
 
+/// The part of `[operating]` a duty varies: input speed, load torque and the shaft the
+/// torque is on. A load-spectrum bin, a dataset's speeds and loads and a transient's
+/// fastest speed each put a case at one, through the one function that does it
+/// (`Case::set_load_point`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadPoint {
+    /// Pinion (input) shaft speed, Hz.
+    pub input_speed_hz: f64,
+    /// Load torque on `load_torque_shaft`, N m.
+    pub load_torque_nm: f64,
+    /// Shaft the load torque is on.
+    pub load_torque_shaft: TorqueShaft,
+}
+
 /// The unit a shaft speed is written in: Hz, or revolutions per minute, the unit engineers
 /// think in. The one reading of an input speed given under either name
 /// ([`SpeedUnit::given`]) and its one conversion (1 Hz = 60 rpm), used by the case's
@@ -203,6 +217,16 @@ impl LoadSpectrumSection {
     /// Shaft of the torques, given the case's operating section.
     pub fn shaft(&self, operating: TorqueShaft) -> TorqueShaft {
         self.torque_shaft.unwrap_or(operating)
+    }
+
+    /// The load point of bin `i` (scales included), its torque on the spectrum's shaft
+    /// (`operating`: the case's shaft, for a spectrum that names none).
+    pub fn load_point(&self, i: usize, operating: TorqueShaft) -> LoadPoint {
+        LoadPoint {
+            input_speed_hz: self.input_speed_hz(i),
+            load_torque_nm: self.torque_nm(i),
+            load_torque_shaft: self.shaft(operating),
+        }
     }
 
     /// Index (0-based) of the bin vibration is observed at.

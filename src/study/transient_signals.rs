@@ -4,7 +4,7 @@
 //! recorded (`signals::transient_record`).
 
 use super::model::Model;
-use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
+use crate::config::case::{Case, LoadPoint, SpeedBoundary, TorqueShaft};
 use crate::dynamics::drive::{Drive, Tabulated};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::model::State;
@@ -98,7 +98,10 @@ pub fn transient_clean_record(
     // velocity scale (`period::state_scales`) suits the whole ramp.
     let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);
     let mut fast_case = case.clone();
-    fast_case.operating.input_speed_hz = fastest;
+    fast_case.set_load_point(LoadPoint {
+        input_speed_hz: fastest,
+        ..case.load_point()
+    });
     let fast = Model::from_case(&fast_case).map_err(|e| DynamicsError::Setting(e.to_string()))?;
     let gap = wear.pair_gap(&fast.grid);
     let none = ExternalError::none();
