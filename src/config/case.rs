@@ -18,7 +18,8 @@ pub use super::operating::{
 };
 pub use super::signals::SignalsSection;
 pub use super::teeth::{
-    FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
+    Fault, FaultKind, FaultTable, Member, ModificationSection, ReliefShape, TeethSection,
+    ToothFault,
 };
 
 /// A whole case. `Default` is the paper's case.
@@ -50,9 +51,10 @@ pub struct Case {
     /// Profile modifications of every tooth (absent: true involutes).
     #[serde(skip_serializing_if = "ModificationSection::is_empty")]
     pub modification: ModificationSection,
-    /// Tooth faults (`[[fault]]` tables; none by default).
+    /// Tooth faults (`[[fault]]` tables; none by default), resolved when the case is
+    /// loaded.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub fault: Vec<FaultSpec>,
+    pub fault: Vec<ToothFault>,
 }
 
 /// Involute spur pair (paper Table 1).

@@ -13,7 +13,7 @@
 //!   (multi-line values belong in the case file), never silently cut.
 //! - Values echoed in messages are cut to [`SHOWN_CHARS`] characters with an ellipsis.
 
-use super::case::{Case, LoadSpectrumSection};
+use super::case::{Case, FaultTable, LoadSpectrumSection, ToothFault};
 use super::operating::SpeedUnit;
 use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
 use super::schema::{spec, KeySpec, KEYS, TABLE_ARRAYS};
@@ -170,6 +170,9 @@ fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String
 /// The section read apart by [`super::load_spectrum`].
 const LOAD_SPECTRUM: &str = "load_spectrum";
 
+/// The array-of-tables section of tooth faults, resolved apart once checked.
+const FAULT: &str = "fault";
+
 /// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
 /// the key of the section's only table, made when there is none. With several tables
 /// the override cannot say which one it means.
@@ -204,11 +207,13 @@ fn set_table_array_value(
 }
 
 /// Checks that involve more than one key of the case file itself.
-fn check_relations(case: &Case, problems: &mut Vec<String>) {
+/// `faults`: the case's `[[fault]]` tables as written, checked here before they are
+/// resolved.
+fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String>) {
     problems.extend(super::teeth::teeth_problems(
         &case.teeth,
         &case.modification,
-        &case.fault,
+        faults,
         case.gear.teeth_pinion,
         case.gear.teeth_gear,
     ));
@@ -430,18 +435,28 @@ fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError>
     if !problems.is_empty() {
         return Err(ConfigError::of(problems));
     }
+    // The `[[fault]]` tables are resolved into the case's faults once they are checked.
+    let fault_tables = user.remove(FAULT).map(Value::try_into::<Vec<FaultTable>>);
     let mut case: Case = Value::Table(user)
         .try_into()
         .map_err(|e: toml::de::Error| {
             ConfigError::one(format!("case file{}", toml_error(&e, "")))
         })?;
+    let faults = fault_tables
+        .transpose()
+        .map_err(|e| ConfigError::one(format!("case file{}", toml_error(&e, ""))))?
+        .unwrap_or_default();
     case.load_spectrum = spectrum;
-    check_relations(&case, &mut problems);
-    if problems.is_empty() {
-        Ok(case)
-    } else {
-        Err(ConfigError::of(problems))
+    check_relations(&case, &faults, &mut problems);
+    if !problems.is_empty() {
+        return Err(ConfigError::of(problems));
     }
+    case.fault = faults
+        .into_iter()
+        .map(ToothFault::try_from)
+        .collect::<Result<_, _>>()
+        .map_err(ConfigError::one)?;
+    Ok(case)
 }
 
 /// Whether `key` is a key of the case file: its entry in the schema, or the problem as
@@ -480,7 +495,8 @@ pub fn check_all_ranges(case: &Case) -> Vec<String> {
             }
         }
     }
-    check_relations(case, &mut problems);
+    let faults: Vec<FaultTable> = case.fault.iter().map(|f| f.table().clone()).collect();
+    check_relations(case, &faults, &mut problems);
     problems.extend(super::load_spectrum::spectrum_problems(
         case.load_spectrum.as_ref(),
     ));

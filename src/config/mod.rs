@@ -16,6 +16,8 @@ pub mod teeth;
 mod tests_load;
 #[cfg(test)]
 mod tests_load_spectrum;
+#[cfg(test)]
+mod tests_teeth;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};

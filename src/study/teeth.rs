@@ -6,7 +6,7 @@
 //! spall off the active profile, a relief longer than the addendum or dedendum, a broken
 //! tip below the root circle; each names the key, the tooth and the valid range.
 
-use crate::config::case::{Case, FaultKind, FaultSpec, Member, ReliefShape, WornGeometry};
+use crate::config::case::{Case, Fault, Member, ReliefShape, ToothFault, WornGeometry};
 use crate::contact::worn_curvature::curvature_change_per_m;
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
 use crate::geometry::flank_shape::{
@@ -71,7 +71,7 @@ pub struct ToothInputs {
     pub runout: [Runout; 2],
     /// What each gear's teeth were given, for reports.
     pub errors: [GearErrors; 2],
-    pub faults: Vec<FaultSpec>,
+    pub faults: Vec<ToothFault>,
     rho_start_m: f64,
     spacing_m: f64,
     /// Severe wear (`wear.worn_geometry = "worn"`): the tooth beams and base radii, the
@@ -202,7 +202,7 @@ impl ToothInputs {
                     for fault in case
                         .fault
                         .iter()
-                        .filter(|x| x.gear == member && x.tooth as usize == t)
+                        .filter(|x| x.gear == member && x.tooth == t)
                     {
                         apply_fault(&mut f, fault, pair, mesh, s, &own);
                     }
@@ -428,7 +428,7 @@ fn gear_errors(case: &Case, pair: &GearPair) -> Result<[GearErrors; 2], String> 
 /// Adds one fault to a tooth's flank (`own` the tooth's own rho at the grid points).
 fn apply_fault(
     f: &mut ToothFlank,
-    fault: &FaultSpec,
+    fault: &ToothFault,
     pair: &GearPair,
     mesh: &MeshStiffness,
     s: Side,
@@ -446,14 +446,16 @@ fn apply_fault(
             *a += b;
         }
     };
-    match fault.kind {
-        FaultKind::Crack => {
+    match fault.fault {
+        Fault::Crack {
+            depth_m,
+            angle_rad,
+            width_fraction,
+        } => {
             let crack = Crack {
-                depth_m: fault.crack_depth_mm.unwrap_or(0.0) * 1e-3,
-                angle_rad: deg(fault
-                    .crack_angle_deg
-                    .unwrap_or(crate::config::teeth::DEFAULT_CRACK_ANGLE_DEG)),
-                width_fraction: fault.crack_width_fraction.unwrap_or(1.0),
+                depth_m,
+                angle_rad,
+                width_fraction,
             };
             let c = own
                 .iter()
@@ -461,8 +463,13 @@ fn apply_fault(
                 .collect();
             add_compliance(c, f);
         }
-        FaultKind::Spall => {
-            let spall = spall_of(fault, &flank);
+        Fault::Spall {
+            position_m,
+            length_m,
+            depth_m,
+            width_fraction,
+        } => {
+            let spall = spall_of(&flank, position_m, length_m, depth_m, width_fraction);
             let c = own
                 .iter()
                 .map(|rho| {
@@ -487,12 +494,12 @@ fn apply_fault(
                 f.removed_m[i] += spall_gap_m(&spall, flank.base_radius_m, radius, *rho);
             }
         }
-        FaultKind::BrokenTip => {
+        Fault::BrokenTip { removed_height_m } => {
             let g = match s {
                 Side::Pinion => &pair.pinion,
                 Side::Gear => &pair.gear,
             };
-            let r_cut = g.tip_radius_m - fault.removed_height_mm.unwrap_or(0.0) * 1e-3;
+            let r_cut = g.tip_radius_m - removed_height_m;
             let rho_cut = (r_cut.powi(2) - g.base_radius_m.powi(2)).max(0.0).sqrt();
             let limit = match s {
                 Side::Pinion => rho_cut,
@@ -507,15 +514,22 @@ fn apply_fault(
     }
 }
 
-/// The spall of a `[[fault]]` table on its flank (own rho, m).
-fn spall_of(fault: &FaultSpec, flank: &ActiveFlank) -> Spall {
-    let centre = flank.pitch_rho_m + fault.spall_position_mm.unwrap_or(0.0) * 1e-3;
-    let half = 0.5 * fault.spall_length_mm.unwrap_or(0.0) * 1e-3;
+/// A spall on its flank (own rho, m): its centre `position_m` of roll length from the
+/// pitch point, `length_m` long (the fields of [`Fault::Spall`]).
+fn spall_of(
+    flank: &ActiveFlank,
+    position_m: f64,
+    length_m: f64,
+    depth_m: f64,
+    width_fraction: f64,
+) -> Spall {
+    let centre = flank.pitch_rho_m + position_m;
+    let half = 0.5 * length_m;
     Spall {
         rho_lo_m: centre - half,
         rho_hi_m: centre + half,
-        depth_m: fault.spall_depth_um.unwrap_or(0.0) * 1e-6,
-        width_fraction: fault.spall_width_fraction.unwrap_or(1.0),
+        depth_m,
+        width_fraction,
     }
 }
 
@@ -584,33 +598,38 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
             Side::Gear => 1,
         }];
         let who = format!("fault {i}, {} tooth {}", f.gear.name(), f.tooth);
-        match f.kind {
-            FaultKind::Crack => {
+        match f.fault {
+            Fault::Crack {
+                depth_m, angle_rad, ..
+            } => {
                 let beam = &mesh.tooth_beams()[match s {
                     Side::Pinion => 0,
                     Side::Gear => 1,
                 }];
-                let angle = f
-                    .crack_angle_deg
-                    .unwrap_or(crate::config::teeth::DEFAULT_CRACK_ANGLE_DEG);
-                let q_max = Crack::max_depth_m(beam, deg(angle));
-                let q = f.crack_depth_mm.unwrap_or(0.0);
-                if q * 1e-3 >= q_max {
+                let q_max = Crack::max_depth_m(beam, angle_rad);
+                if depth_m >= q_max {
                     p.push(format!(
-                        "`fault.crack_depth_mm` = {q} ({who}) is deeper than the tooth: at {angle} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
+                        "`fault.crack_depth_mm` = {} ({who}) is deeper than the tooth: at {} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
+                        f.written("crack_depth_mm"),
+                        f.written("crack_angle_deg"),
                         2.0 * beam.root_section().0 * mm,
                         upper_mm(q_max * mm)
                     ));
                 }
             }
-            FaultKind::Spall => {
-                let spall = spall_of(f, &flank);
+            Fault::Spall {
+                position_m,
+                length_m,
+                depth_m,
+                width_fraction,
+            } => {
+                let spall = spall_of(&flank, position_m, length_m, depth_m, width_fraction);
                 let profile = flank.tip_rho_m - flank.sap_rho_m;
                 let len = spall.rho_hi_m - spall.rho_lo_m;
                 if len > profile {
                     p.push(format!(
                         "`fault.spall_length_mm` = {} ({who}) is longer than the active profile: valid (0, {}] mm",
-                        f.spall_length_mm.unwrap_or(0.0),
+                        f.written("spall_length_mm"),
                         upper_mm(profile * mm)
                     ));
                 } else if spall.rho_lo_m < flank.sap_rho_m - 1e-12
@@ -618,8 +637,8 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                 {
                     p.push(format!(
                         "`fault.spall_position_mm` = {} ({who}) puts the spall off the active profile: with length {} mm its centre must lie within [{}, {}] mm of the pitch point",
-                        f.spall_position_mm.unwrap_or(0.0),
-                        f.spall_length_mm.unwrap_or(0.0),
+                        f.written("spall_position_mm"),
+                        f.written("spall_length_mm"),
                         lower_mm((flank.sap_rho_m - flank.pitch_rho_m + 0.5 * len) * mm),
                         upper_mm((flank.tip_rho_m - flank.pitch_rho_m - 0.5 * len) * mm)
                     ));
@@ -632,7 +651,7 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                     if spall.depth_m > d_max {
                         p.push(format!(
                             "`fault.spall_depth_um` = {} ({who}) is deeper than the tooth holds: a pit may take at most {:.0} % of the tooth's thickness at its upper edge ({:.4} mm), valid (0, {:.1}] µm",
-                            f.spall_depth_um.unwrap_or(0.0),
+                            f.written("spall_depth_um"),
                             Spall::MAX_THICKNESS_SHARE * 100.0,
                             d_max / Spall::MAX_THICKNESS_SHARE * mm,
                             (d_max * 1e7).floor() / 10.0
@@ -640,12 +659,12 @@ fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffness) -> Vec<
                     }
                 }
             }
-            FaultKind::BrokenTip => {
-                let h = f.removed_height_mm.unwrap_or(0.0);
+            Fault::BrokenTip { removed_height_m } => {
                 let height = g.tip_radius_m - g.root_radius_m;
-                if h * 1e-3 > height {
+                if removed_height_m > height {
                     p.push(format!(
-                        "`fault.removed_height_mm` = {h} ({who}) is more than the tooth: valid (0, {}] mm (tip to root circle)",
+                        "`fault.removed_height_mm` = {} ({who}) is more than the tooth: valid (0, {}] mm (tip to root circle)",
+                        f.written("removed_height_mm"),
                         upper_mm(height * mm)
                     ));
                 }
