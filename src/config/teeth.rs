@@ -388,6 +388,15 @@ pub fn teeth_problems(
     z1: i64,
     z2: i64,
 ) -> Vec<String> {
+    let mut p = array_length_problems(t, z1, z2);
+    p.extend(profile_deviation_problems(m));
+    p.extend(fault_problems(faults, z1, z2));
+    p
+}
+
+/// Per-tooth arrays of `[teeth]` whose lengths do not match the numbers of teeth (`z1`,
+/// `z2`): a pitch error per tooth; a profile deviation for every tooth (1) or per tooth.
+fn array_length_problems(t: &TeethSection, z1: i64, z2: i64) -> Vec<String> {
     let mut p = Vec::new();
     let exact = |key: &str, v: &Option<Vec<f64>>, z: i64, who: &str, p: &mut Vec<String>| {
         if let Some(v) = v {
@@ -443,6 +452,13 @@ pub fn teeth_problems(
             }
         }
     }
+    p
+}
+
+/// A user profile deviation of `[modification]` whose roll angles and deviations do not
+/// go together: given alone, of different lengths, or the angles not strictly ascending.
+fn profile_deviation_problems(m: &ModificationSection) -> Vec<String> {
+    let mut p = Vec::new();
     for (who, roll, dev) in [
         (
             "pinion",
@@ -476,7 +492,6 @@ pub fn teeth_problems(
             )),
         }
     }
-    p.extend(fault_problems(faults, z1, z2));
     p
 }
 
