@@ -28,6 +28,7 @@ pub use super::parse::override_value;
 /// the override argument through [`Words`], which each front end spells its own way.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConfigError {
+    /// The problems, one message each, in the order they were found.
     pub problems: Vec<Words>,
 }
 
@@ -44,6 +45,7 @@ impl fmt::Display for ConfigError {
 impl std::error::Error for ConfigError {}
 
 impl ConfigError {
+    /// An error of the one problem `msg`.
     pub fn one(msg: impl Into<String>) -> Self {
         Self {
             problems: vec![Words::from(msg.into())],

@@ -5,6 +5,7 @@ pub mod derivable;
 mod docs;
 pub mod load;
 pub mod load_spectrum;
+pub mod lumped;
 pub mod operating;
 mod parse;
 pub mod problem;
@@ -12,6 +13,8 @@ pub mod schema;
 pub mod signals;
 pub mod teeth;
 
+#[cfg(test)]
+mod tests_fields;
 #[cfg(test)]
 mod tests_load;
 #[cfg(test)]

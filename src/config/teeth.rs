@@ -18,10 +18,12 @@ use std::f64::consts::PI;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct TeethSection {
-    /// Position (pitch) error of each pinion tooth, um on the reference circle, positive
+    /// Position (pitch) error of each pinion tooth, µm on the reference circle, positive
     /// towards the mating flank; z1 values.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pitch_error_pinion_um: Option<Vec<f64>>,
+    /// Position (pitch) error of each gear tooth, µm (positive towards the pinion); z2
+    /// values.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pitch_error_gear_um: Option<Vec<f64>>,
     /// ISO 1328-1 flank tolerance class: errors not given explicitly are drawn for it.
@@ -30,30 +32,37 @@ pub struct TeethSection {
     /// Seed of the random draw for `accuracy_grade`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error_seed: Option<i64>,
-    /// Radial run-out F_r of each gear (twice its eccentricity), um.
+    /// Radial run-out F_r of the pinion (twice its eccentricity), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_pinion_um: Option<f64>,
+    /// Radial run-out F_r of the gear (twice its eccentricity), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_gear_um: Option<f64>,
-    /// Angle the gear turns from the entry of its tooth 0 until its eccentricity points
-    /// along the line of action towards the mate, deg.
+    /// Angle the pinion turns from the entry of its tooth 0 until its eccentricity points
+    /// along the line of action towards the gear, deg.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_pinion_phase_deg: Option<f64>,
+    /// Angle the gear turns from the entry of its tooth 0 until its eccentricity points along
+    /// the line of action towards the pinion, deg.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_gear_phase_deg: Option<f64>,
-    /// Profile slope deviation f_Halpha, um (one value for every tooth, or z values).
+    /// Profile slope deviation f_Halpha of the pinion teeth, µm (one value for every tooth,
+    /// or z1 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_slope_pinion_um: Option<Vec<f64>>,
+    /// Profile slope deviation f_Halpha of the gear teeth, µm (one value or z2 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_slope_gear_um: Option<Vec<f64>>,
-    /// Profile form deviation f_falpha, um (one value or z values).
+    /// Profile form deviation f_falpha of the pinion teeth, µm (one value or z1 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_form_pinion_um: Option<Vec<f64>>,
+    /// Profile form deviation f_falpha of the gear teeth, µm (one value or z2 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_form_gear_um: Option<Vec<f64>>,
 }
 
 impl TeethSection {
+    /// Whether no key is given (the paper's perfect teeth).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
@@ -63,8 +72,10 @@ impl TeethSection {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum ReliefShape {
+    /// Removed material growing linearly along the relief's length.
     #[default]
     Linear,
+    /// Growing with the square of the distance into the relief.
     Parabolic,
 }
 
@@ -72,30 +83,40 @@ pub enum ReliefShape {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct ModificationSection {
-    /// Tip relief at the tip (amount), um, and its length along the line of action, mm.
+    /// Tip relief at the tip (material removed), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tip_relief_um: Option<f64>,
+    /// Length of the tip relief along the line of action (roll length) from the tip's
+    /// contact point, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tip_relief_length_mm: Option<f64>,
+    /// Root relief at the start of the active profile (material removed), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub root_relief_um: Option<f64>,
+    /// Length of the root relief along the line of action from the start of the active
+    /// profile, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub root_relief_length_mm: Option<f64>,
+    /// Shape of the reliefs along their length (absent: linear).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shape: Option<ReliefShape>,
-    /// A measured or designed deviation along each gear's roll angle (material removed
-    /// positive, um), on every tooth.
+    /// Roll angles (rho / r_b) of a measured or designed deviation of every pinion tooth,
+    /// deg, ascending.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_roll_pinion_deg: Option<Vec<f64>>,
+    /// The pinion's deviation at those roll angles (material removed positive), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_deviation_pinion_um: Option<Vec<f64>>,
+    /// Roll angles of a deviation of every gear tooth, deg, ascending.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_roll_gear_deg: Option<Vec<f64>>,
+    /// The gear's deviation at those roll angles (material removed positive), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_deviation_gear_um: Option<Vec<f64>>,
 }
 
 impl ModificationSection {
+    /// Whether no key is given (true involutes).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
@@ -105,11 +126,14 @@ impl ModificationSection {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Member {
+    /// The pinion.
     Pinion,
+    /// The gear.
     Gear,
 }
 
 impl Member {
+    /// Its name in messages and keys.
     pub fn name(self) -> &'static str {
         match self {
             Member::Pinion => "pinion",
@@ -122,12 +146,16 @@ impl Member {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FaultKind {
+    /// A root crack.
     Crack,
+    /// A spall (pit) on the flank.
     Spall,
+    /// A broken tip.
     BrokenTip,
 }
 
 impl FaultKind {
+    /// Its name as the case file spells it.
     pub fn name(self) -> &'static str {
         match self {
             FaultKind::Crack => "crack",
