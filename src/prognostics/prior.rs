@@ -9,7 +9,7 @@
 //! Equal bounds hold a parameter fixed. Samplers work in unit coordinates u in [0, 1]
 //! per parameter (log k for k), where every prior is uniform.
 
-use crate::config::Case;
+use crate::config::case::{Case, LoadPoint};
 use crate::rng;
 use crate::study::budget::ParameterSpan;
 use rand::rngs::ChaCha8Rng;
@@ -221,7 +221,10 @@ pub fn apply(case: &Case, theta: &Theta) -> Case {
             s.torque_scale *= theta[2] / case.operating.load_torque_nm;
         }
     }
-    c.operating.load_torque_nm = theta[2];
+    c.set_load_point(LoadPoint {
+        load_torque_nm: theta[2],
+        ..c.load_point()
+    });
     c
 }
 

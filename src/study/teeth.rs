@@ -14,7 +14,7 @@ mod worn;
 
 pub use errors::{FlankTolerancesReport, GearErrors};
 
-use crate::config::case::{Case, FaultSpec, Member, ReliefShape, WornGeometry};
+use crate::config::case::{Case, Member, ReliefShape, ToothFault, WornGeometry};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
 use crate::geometry::flank_shape::{
     slope_form_added_m, ActiveFlank, FlankModification, Relief, Side,
@@ -37,7 +37,7 @@ pub struct ToothInputs {
     pub runout: [Runout; 2],
     /// What each gear's teeth were given, for reports.
     pub errors: [GearErrors; 2],
-    pub faults: Vec<FaultSpec>,
+    pub faults: Vec<ToothFault>,
     rho_start_m: f64,
     spacing_m: f64,
     /// Severe wear (`wear.worn_geometry = "worn"`): the tooth beams and base radii, the
@@ -228,7 +228,7 @@ fn flanks_of(
             for fault in case
                 .fault
                 .iter()
-                .filter(|x| x.gear == member && x.tooth as usize == t)
+                .filter(|x| x.gear == member && x.tooth == t)
             {
                 apply_fault(&mut f, fault, pair, mesh, s, &own);
             }

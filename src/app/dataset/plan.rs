@@ -23,7 +23,10 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let mut out = Vec::new();
     for c in &d.conditions {
         let mut case = c.case.clone();
-        case.operating.input_speed_hz = fastest;
+        case.set_load_point(crate::config::case::LoadPoint {
+            input_speed_hz: fastest,
+            ..case.load_point()
+        });
         match chain_of(
             &case,
             req.path.clone(),

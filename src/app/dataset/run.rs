@@ -186,8 +186,11 @@ fn one_state(
         StateChoice::Cycles(c) => c[ix.state],
     };
     let mut case = cond.case.clone();
-    case.operating.input_speed_hz = d.speeds_hz[ix.speed];
-    case.operating.load_torque_nm = d.torques_nm[ix.load];
+    case.set_load_point(crate::config::case::LoadPoint {
+        input_speed_hz: d.speeds_hz[ix.speed],
+        load_torque_nm: d.torques_nm[ix.load],
+        ..case.load_point()
+    });
     let model = Model::from_case(&case).map_err(|e| anyhow::anyhow!("{e}"))?;
     let setup = &setups[ix.condition];
     let unit = setup.chain.acquisition.unit;

@@ -35,8 +35,11 @@ pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Esti
         for speed in ends(&d.speeds_hz) {
             for torque in ends(&d.torques_nm) {
                 let mut case = c.case.clone();
-                case.operating.input_speed_hz = speed;
-                case.operating.load_torque_nm = torque;
+                case.set_load_point(crate::config::case::LoadPoint {
+                    input_speed_hz: speed,
+                    load_torque_nm: torque,
+                    ..case.load_point()
+                });
                 let e = estimate(&case, Job::Dynamics);
                 state_s = state_s.max(e.seconds());
                 bytes = bytes.max(e.memory_bytes());

@@ -40,7 +40,7 @@ pub fn estimate_signals(case: &Case) -> Estimate {
     // replays the steady state, whose cost is the dynamics estimate's.
     let samples = seconds * s.sampling_rate_hz;
     let transient_seconds = if is_transient(case) {
-        let mesh_periods = case.gear.teeth_pinion as f64 * s.max_input_speed_hz(case) * seconds;
+        let mesh_periods = fastest_mesh_frequency_hz(case) * seconds;
         mesh_periods * case.numerics.steps_per_mesh_period as f64 * SECONDS_PER_STEP
     } else {
         0.0
@@ -58,4 +58,18 @@ pub fn estimate_signals(case: &Case) -> Estimate {
         ],
     });
     e
+}
+
+/// The mesh frequency at the fastest input speed the case's record sees (a ramp's end or
+/// the operating speed), Hz: the `OperatingPoint`'s of the case at that speed; 0 for a
+/// pair the geometry refuses (building the model then names the problem).
+fn fastest_mesh_frequency_hz(case: &Case) -> f64 {
+    let mut fastest = case.clone();
+    fastest.set_load_point(crate::config::case::LoadPoint {
+        input_speed_hz: case.signals.max_input_speed_hz(case),
+        ..case.load_point()
+    });
+    crate::geometry::GearPair::from_case(&case.gear).map_or(0.0, |pair| {
+        crate::dynamics::params::OperatingPoint::of(&fastest.operating, &pair).mesh_frequency_hz
+    })
 }

@@ -4,11 +4,11 @@
 
 use super::faults::spall_of;
 use super::sides::{member_gear, side};
-use crate::config::case::{Case, FaultKind};
+use crate::config::case::{Case, Fault};
 use crate::geometry::flank_shape::{ActiveFlank, Side};
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
-use crate::stiffness::tooth_faults::{deg, Crack, Spall};
+use crate::stiffness::tooth_faults::{Crack, Spall};
 
 /// An upper limit shown to 4 decimals, rounded down, so that every value up to the shown
 /// limit is accepted (a limit rounded to nearest could show 4.5000 for 4.49999).
@@ -75,33 +75,38 @@ pub(crate) fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffne
             Side::Gear => 1,
         }];
         let who = format!("fault {i}, {} tooth {}", f.gear.name(), f.tooth);
-        match f.kind {
-            FaultKind::Crack => {
+        match f.fault {
+            Fault::Crack {
+                depth_m, angle_rad, ..
+            } => {
                 let beam = &mesh.tooth_beams()[match s {
                     Side::Pinion => 0,
                     Side::Gear => 1,
                 }];
-                let angle = f
-                    .crack_angle_deg
-                    .unwrap_or(crate::config::teeth::DEFAULT_CRACK_ANGLE_DEG);
-                let q_max = Crack::max_depth_m(beam, deg(angle));
-                let q = f.crack_depth_mm.unwrap_or(0.0);
-                if q * 1e-3 >= q_max {
+                let q_max = Crack::max_depth_m(beam, angle_rad);
+                if depth_m >= q_max {
                     p.push(format!(
-                        "`fault.crack_depth_mm` = {q} ({who}) is deeper than the tooth: at {angle} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
+                        "`fault.crack_depth_mm` = {} ({who}) is deeper than the tooth: at {} deg its reach across the root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
+                        f.written("crack_depth_mm"),
+                        f.written("crack_angle_deg"),
                         2.0 * beam.root_section().0 * mm,
                         upper_mm(q_max * mm)
                     ));
                 }
             }
-            FaultKind::Spall => {
-                let spall = spall_of(f, &flank);
+            Fault::Spall {
+                position_m,
+                length_m,
+                depth_m,
+                width_fraction,
+            } => {
+                let spall = spall_of(&flank, position_m, length_m, depth_m, width_fraction);
                 let profile = flank.tip_rho_m - flank.sap_rho_m;
                 let len = spall.rho_hi_m - spall.rho_lo_m;
                 if len > profile {
                     p.push(format!(
                         "`fault.spall_length_mm` = {} ({who}) is longer than the active profile: valid (0, {}] mm",
-                        f.spall_length_mm.unwrap_or(0.0),
+                        f.written("spall_length_mm"),
                         upper_mm(profile * mm)
                     ));
                 } else if spall.rho_lo_m < flank.sap_rho_m - 1e-12
@@ -109,8 +114,8 @@ pub(crate) fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffne
                 {
                     p.push(format!(
                         "`fault.spall_position_mm` = {} ({who}) puts the spall off the active profile: with length {} mm its centre must lie within [{}, {}] mm of the pitch point",
-                        f.spall_position_mm.unwrap_or(0.0),
-                        f.spall_length_mm.unwrap_or(0.0),
+                        f.written("spall_position_mm"),
+                        f.written("spall_length_mm"),
                         lower_mm((flank.sap_rho_m - flank.pitch_rho_m + 0.5 * len) * mm),
                         upper_mm((flank.tip_rho_m - flank.pitch_rho_m - 0.5 * len) * mm)
                     ));
@@ -123,7 +128,7 @@ pub(crate) fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffne
                     if spall.depth_m > d_max {
                         p.push(format!(
                             "`fault.spall_depth_um` = {} ({who}) is deeper than the tooth holds: a pit may take at most {:.0} % of the tooth's thickness at its upper edge ({:.4} mm), valid (0, {:.1}] µm",
-                            f.spall_depth_um.unwrap_or(0.0),
+                            f.written("spall_depth_um"),
                             Spall::MAX_THICKNESS_SHARE * 100.0,
                             d_max / Spall::MAX_THICKNESS_SHARE * mm,
                             (d_max * 1e7).floor() / 10.0
@@ -131,12 +136,12 @@ pub(crate) fn geometry_problems(case: &Case, pair: &GearPair, mesh: &MeshStiffne
                     }
                 }
             }
-            FaultKind::BrokenTip => {
-                let h = f.removed_height_mm.unwrap_or(0.0);
+            Fault::BrokenTip { removed_height_m } => {
                 let height = g.tip_radius_m - g.root_radius_m;
-                if h * 1e-3 > height {
+                if removed_height_m > height {
                     p.push(format!(
-                        "`fault.removed_height_mm` = {h} ({who}) is more than the tooth: valid (0, {}] mm (tip to root circle)",
+                        "`fault.removed_height_mm` = {} ({who}) is more than the tooth: valid (0, {}] mm (tip to root circle)",
+                        f.written("removed_height_mm"),
                         upper_mm(height * mm)
                     ));
                 }

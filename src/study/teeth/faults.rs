@@ -1,19 +1,19 @@
 //! A `[[fault]]` of the case applied to its tooth's flank: a crack's or a spall's added
 //! compliance, a spall's gap and lost width, a broken tip's limit of contact.
 
-use crate::config::case::{FaultKind, FaultSpec};
+use crate::config::case::{Fault, ToothFault};
 use crate::dynamics::tooth_mesh::ToothFlank;
 use crate::geometry::flank_shape::{ActiveFlank, Side};
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
 use crate::stiffness::tooth_faults::{
-    crack_compliance_m_per_n, deg, spall_compliance_m_per_n, spall_gap_m, Crack, Spall,
+    crack_compliance_m_per_n, spall_compliance_m_per_n, spall_gap_m, Crack, Spall,
 };
 
 /// Adds one fault to a tooth's flank (`own` the tooth's own rho at the grid points).
 pub(crate) fn apply_fault(
     f: &mut ToothFlank,
-    fault: &FaultSpec,
+    fault: &ToothFault,
     pair: &GearPair,
     mesh: &MeshStiffness,
     s: Side,
@@ -31,14 +31,16 @@ pub(crate) fn apply_fault(
             *a += b;
         }
     };
-    match fault.kind {
-        FaultKind::Crack => {
+    match fault.fault {
+        Fault::Crack {
+            depth_m,
+            angle_rad,
+            width_fraction,
+        } => {
             let crack = Crack {
-                depth_m: fault.crack_depth_mm.unwrap_or(0.0) * 1e-3,
-                angle_rad: deg(fault
-                    .crack_angle_deg
-                    .unwrap_or(crate::config::teeth::DEFAULT_CRACK_ANGLE_DEG)),
-                width_fraction: fault.crack_width_fraction.unwrap_or(1.0),
+                depth_m,
+                angle_rad,
+                width_fraction,
             };
             let c = own
                 .iter()
@@ -46,8 +48,13 @@ pub(crate) fn apply_fault(
                 .collect();
             add_compliance(c, f);
         }
-        FaultKind::Spall => {
-            let spall = spall_of(fault, &flank);
+        Fault::Spall {
+            position_m,
+            length_m,
+            depth_m,
+            width_fraction,
+        } => {
+            let spall = spall_of(&flank, position_m, length_m, depth_m, width_fraction);
             let c = own
                 .iter()
                 .map(|rho| {
@@ -72,12 +79,12 @@ pub(crate) fn apply_fault(
                 f.removed_m[i] += spall_gap_m(&spall, flank.base_radius_m, radius, *rho);
             }
         }
-        FaultKind::BrokenTip => {
+        Fault::BrokenTip { removed_height_m } => {
             let g = match s {
                 Side::Pinion => &pair.pinion,
                 Side::Gear => &pair.gear,
             };
-            let r_cut = g.tip_radius_m - fault.removed_height_mm.unwrap_or(0.0) * 1e-3;
+            let r_cut = g.tip_radius_m - removed_height_m;
             let rho_cut = (r_cut.powi(2) - g.base_radius_m.powi(2)).max(0.0).sqrt();
             let limit = match s {
                 Side::Pinion => rho_cut,
@@ -92,14 +99,21 @@ pub(crate) fn apply_fault(
     }
 }
 
-/// The spall of a `[[fault]]` table on its flank (own rho, m).
-pub(crate) fn spall_of(fault: &FaultSpec, flank: &ActiveFlank) -> Spall {
-    let centre = flank.pitch_rho_m + fault.spall_position_mm.unwrap_or(0.0) * 1e-3;
-    let half = 0.5 * fault.spall_length_mm.unwrap_or(0.0) * 1e-3;
+/// A spall on its flank (own rho, m): its centre `position_m` of roll length from the
+/// pitch point, `length_m` long (the fields of [`Fault::Spall`]).
+pub(crate) fn spall_of(
+    flank: &ActiveFlank,
+    position_m: f64,
+    length_m: f64,
+    depth_m: f64,
+    width_fraction: f64,
+) -> Spall {
+    let centre = flank.pitch_rho_m + position_m;
+    let half = 0.5 * length_m;
     Spall {
         rho_lo_m: centre - half,
         rho_hi_m: centre + half,
-        depth_m: fault.spall_depth_um.unwrap_or(0.0) * 1e-6,
-        width_fraction: fault.spall_width_fraction.unwrap_or(1.0),
+        depth_m,
+        width_fraction,
     }
 }
