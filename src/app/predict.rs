@@ -508,16 +508,16 @@ pub fn prediction_artifacts(
     };
     art.documents
         .push(("report.html".into(), render(&report).into_bytes()));
-    let fmt =
-        |c: Option<f64>| c.map_or_else(|| format!("> {:.3e}", set.cycles), |x| format!("{x:.4e}"));
+    let shown = crate::format::shown;
+    let fmt = |c: Option<f64>| c.map_or_else(|| format!("> {}", shown(set.cycles)), shown);
     art.headline = format!(
-        "cycles to {} µm: median {}, 90 % [{}, {}], P(> {:.3e}) = {:.3}; {} failed sample(s)",
-        set.limit_um,
+        "cycles to {} µm: median {}, 90 % [{}, {}], P(> {}) = {}; {} failed sample(s)",
+        shown(set.limit_um),
         fmt(life.median),
         fmt(life.p05),
         fmt(life.p95),
-        set.cycles,
-        life.prob_beyond_horizon,
+        shown(set.cycles),
+        shown(life.prob_beyond_horizon),
         failed.len(),
     );
     Ok(art)

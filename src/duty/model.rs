@@ -29,8 +29,8 @@ pub fn bin_label(case: &Case, i: usize) -> String {
     format!(
         "load_spectrum bin {} ({} N m, {} Hz)",
         i + 1,
-        c.operating.load_torque_nm,
-        c.operating.input_speed_hz
+        crate::format::shown(c.operating.load_torque_nm),
+        crate::format::shown(c.operating.input_speed_hz)
     )
 }
 

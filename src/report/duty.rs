@@ -14,6 +14,7 @@ use crate::duty::contribution::{combined_run, ranking, BinWear};
 use crate::duty::life::{Life, LifeTable};
 use crate::duty::wear::SpectrumRun;
 use crate::duty::SpectrumModel;
+use crate::format::{shown, shown_percent};
 use crate::io::Table;
 use crate::study::wear_loop::{WearMode, WearRun};
 use serde_json::{json, Value};
@@ -135,14 +136,14 @@ fn duty_headline(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> String {
         .filter_map(|r| {
             let top = ranking(r).into_iter().next()?;
             Some(format!(
-                "\n{}: {} bins; bin {} ({} N m, {} Hz) did {:.1} % of the pinion's wear in {:.1} % of the cycles",
+                "\n{}: {} bins; bin {} ({} N m, {} Hz) did {} of the pinion's wear in {} of the cycles",
                 r.mode.label(),
                 sm.len(),
                 top.bin,
-                sm.bins[top.bin - 1].case.operating.load_torque_nm,
-                sm.bins[top.bin - 1].case.operating.input_speed_hz,
-                100.0 * top.share_of_pinion_wear,
-                100.0 * top.share_of_cycles
+                shown(sm.bins[top.bin - 1].case.operating.load_torque_nm),
+                shown(sm.bins[top.bin - 1].case.operating.input_speed_hz),
+                shown_percent(top.share_of_pinion_wear),
+                shown_percent(top.share_of_cycles)
             ))
         })
         .collect()
@@ -313,7 +314,7 @@ pub fn duty_run_artifacts(
     if let Some(l) = &study.life {
         a.headline.push_str(&format!(
             "\nlife to {} µm: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
-            l.limit_um,
+            shown(l.limit_um),
             life_words(&l.spectrum),
             l.linear_mix_cycles.map_or("-".into(), format_value)
         ));

@@ -4,6 +4,7 @@
 use super::artifacts::Artifacts;
 use super::figures::{harmonic_label, panel, Curve};
 use super::plot::{Figure, Panel, PanelKind, Series};
+use crate::format::shown;
 use crate::io::Table;
 use crate::signals::analysis::ChannelAnalysis;
 use crate::signals::chain::{Shaft, SignalChain};
@@ -107,21 +108,32 @@ pub fn signals_artifacts(
         900,
         900,
     );
-    let first = rec.analysis.first().map(|c| c.indicators());
-    if let Some(i) = first {
-        a.headline = format!(
-            "{}: RMS {:.4} {unit_label}, crest factor {:.3}, kurtosis {:.3}{}",
-            i.channel,
-            i.signal.rms,
-            i.signal.crest_factor,
-            i.signal.kurtosis,
-            i.pinion.map_or(String::new(), |p| format!(
-                "; pinion TSA ({} revolutions): FM0 {:.3}, FM4 {:.3}, NA4 {:.3}",
-                p.revolutions, p.fm0, p.fm4, p.na4
-            ))
-        );
-    }
+    // One line per channel: a sensor on the other housing may see a fault the first misses.
+    let lines: Vec<String> = rec
+        .analysis
+        .iter()
+        .map(|c| channel_headline(&c.indicators(), unit_label))
+        .collect();
+    a.headline.push_str(&lines.join("\n"));
     a
+}
+
+/// A channel's indicators for a person: its signal's and its pinion TSA's.
+fn channel_headline(i: &crate::signals::analysis::ChannelIndicators, unit_label: &str) -> String {
+    format!(
+        "{}: RMS {} {unit_label}, crest factor {}, kurtosis {}{}",
+        i.channel,
+        shown(i.signal.rms),
+        shown(i.signal.crest_factor),
+        shown(i.signal.kurtosis),
+        i.pinion.map_or(String::new(), |p| format!(
+            "; pinion TSA ({} revolutions): FM0 {}, FM4 {}, NA4 {}",
+            p.revolutions,
+            shown(p.fm0),
+            shown(p.fm4),
+            shown(p.na4)
+        ))
+    )
 }
 
 fn spectrum_table(r: &Record, unit: crate::signals::chain::ChannelUnit) -> Table {

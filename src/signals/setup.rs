@@ -57,8 +57,8 @@ pub fn chain_of(
         if t.max_frequency_hz() < 0.5 * fs {
             warnings.push(format!(
                 "the FRF table ends at {} Hz, below the Nyquist frequency {} Hz: above it the path transmits nothing",
-                t.max_frequency_hz(),
-                0.5 * fs
+                crate::format::shown(t.max_frequency_hz()),
+                crate::format::shown(0.5 * fs)
             ));
         }
     }

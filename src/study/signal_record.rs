@@ -11,7 +11,6 @@ use crate::signals::bearing::bearing_forces;
 use crate::signals::record::{add_noise, Kinematics, PeriodicRecord, Record};
 use crate::signals::setup::ChainSetup;
 use crate::wear::WearState;
-use std::f64::consts::PI;
 
 /// A record and what was computed from it.
 #[derive(Debug, Clone)]
@@ -28,11 +27,14 @@ pub struct SignalRecord {
     pub mesh_poles_hz: Vec<f64>,
 }
 
-/// Shaft speeds and teeth of the model at its operating point.
+/// Shaft speeds and teeth of the model at its operating point: each shaft's speed is the
+/// mesh frequency over its teeth (so 570 Hz over 19 teeth reads 30 Hz exactly, not back
+/// from rad/s).
 pub fn kinematics(model: &Model) -> Kinematics {
+    let f_m = model.params.mesh_frequency_hz;
     Kinematics {
-        pinion_hz: model.params.pinion_speed_rad_s / (2.0 * PI),
-        gear_hz: model.params.gear_speed_rad_s / (2.0 * PI),
+        pinion_hz: f_m / model.pair.pinion.teeth as f64,
+        gear_hz: f_m / model.pair.gear.teeth as f64,
         teeth_pinion: model.pair.pinion.teeth,
         teeth_gear: model.pair.gear.teeth,
     }
