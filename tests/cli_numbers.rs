@@ -181,4 +181,23 @@ fn load_spectrum_and_duty_wear_headlines_are_for_people() {
     let (stdout, _) = run(&args);
     assert_for_people(&stdout);
     assert!(stdout.contains("of the pinion's wear"), "{stdout}");
+    // `wear` gives the life under the spectrum, printed in cycles and hours and recorded.
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("life to 10 µm (dynamic): "))
+        .unwrap_or_else(|| panic!("no life line in {stdout}"));
+    let v = json(&out.join("summary.json"));
+    let life = &v["load_spectrum"]["life"];
+    let cycles = life["spectrum"]["cycles"].as_f64().unwrap();
+    let hours = life["spectrum_hours"].as_f64().unwrap();
+    assert_rounded(after(line, "(dynamic):"), cycles);
+    assert_rounded(after(line, "cycles ("), hours);
+    // Hours from the bins alone: 0.5 / 20 Hz + 0.3 / 30 Hz + 0.2 / 45 Hz seconds per
+    // pinion revolution (examples/duty_cycle/three_bins.toml).
+    let s_per_cycle = 0.5 / 20.0 + 0.3 / 30.0 + 0.2 / 45.0;
+    assert!(
+        (hours - cycles * s_per_cycle / 3600.0).abs() <= 1e-12 * hours,
+        "{hours} h for {cycles} cycles"
+    );
+    assert!(out.join("csv/duty_life.csv").exists());
 }

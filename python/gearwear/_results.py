@@ -472,7 +472,7 @@ class DutyResult:
     @property
     def life(self) -> Optional[Table]:
         """Cycles to the wear limit at each bin alone, under the spectrum and by the
-        linear mix (``run`` only; None after ``wear``)."""
+        linear mix (``run`` and ``wear``; the summary's ``life`` adds the hours)."""
         return self._tables.get("duty_life")
 
     def __repr__(self) -> str:

@@ -63,9 +63,13 @@ def test_columns_that_count_are_integers(studies):
     assert frame["rank"].dtype == np.int64 and frame["share_of_cycles"].dtype == np.float64
 
 
-def test_a_run_under_a_spectrum_has_its_life(studies):
-    run, _ = studies
-    assert run.duty.life is not None and run.duty.life.n_rows > 0
+def test_run_and_wear_under_a_spectrum_give_the_same_life(studies):
+    run, wear = studies
+    for result in (run, wear):
+        assert result.duty.life is not None and result.duty.life.n_rows > 0
+    # The same life runs: the same cycles and hours to the limit.
+    assert run.duty.summary["life"] == wear.duty.summary["life"]
+    assert wear.duty.summary["life"]["spectrum_hours"] > 0
 
 
 def test_the_data_extra_brings_pandas_and_pyarrow():

@@ -53,13 +53,7 @@ pub fn run_duty_study(
     );
     let monitor = &sm.bins[sm.monitoring];
     let wear_states = paper_wear_states(monitor, &d)?;
-    let limit = sm
-        .case
-        .load_spectrum
-        .as_ref()
-        .map_or(10.0, |s| s.life_wear_limit_um);
-    let life = life_table(&sm.case, WearMode::Dynamic, limit, LIFE_CYCLE_CAP)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let life = spectrum_life(sm, WearMode::Dynamic)?;
     Ok(DutyStudy {
         runs,
         paper: Some(PaperStudy {
@@ -69,6 +63,18 @@ pub fn run_duty_study(
         }),
         life: Some(life),
     })
+}
+
+/// The life table of `sm`'s case in `mode`: runs to `load_spectrum.life_wear_limit_um`
+/// under the spectrum and at each bin alone (capped at [`LIFE_CYCLE_CAP`]); what `run`
+/// and `wear` both report.
+pub fn spectrum_life(sm: &SpectrumModel, mode: WearMode) -> anyhow::Result<LifeTable> {
+    let limit = sm
+        .case
+        .load_spectrum
+        .as_ref()
+        .map_or(10.0, |s| s.life_wear_limit_um);
+    life_table(&sm.case, mode, limit, LIFE_CYCLE_CAP).map_err(|e| anyhow::anyhow!("{e}"))
 }
 
 /// A case of a sweep: under the case's spectrum when it has one and the sweep runs wear

@@ -106,9 +106,13 @@ pub fn duty_figures(
 }
 
 /// Everything `wear` writes under a load spectrum: the single-point outputs of the
-/// spectrum's runs (monitoring bin), the rankings and the duty figures, and the
-/// summary's `load_spectrum`.
-pub fn duty_wear_artifacts(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> Artifacts {
+/// spectrum's runs (monitoring bin), the rankings and the duty figures, the summary's
+/// `load_spectrum`, and the life table when given.
+pub fn duty_wear_artifacts(
+    sm: &SpectrumModel,
+    runs: &[&SpectrumRun],
+    life: Option<&LifeTable>,
+) -> Artifacts {
     let combined: Vec<WearRun> = runs
         .iter()
         .map(|r| combined_run(r, sm.monitoring))
@@ -122,12 +126,28 @@ pub fn duty_wear_artifacts(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> Artifac
             ranking_table(sm, &ranking(r)),
         );
     }
-    for f in duty_figures(sm, runs, None) {
+    for f in duty_figures(sm, runs, life) {
         a.figure_with_data(format!("{}.png", f.stem), f.figure, f.table);
     }
-    a.summary["load_spectrum"] = duty_summary(sm, runs, None);
+    a.summary["load_spectrum"] = duty_summary(sm, runs, life);
     a.headline.push_str(&duty_headline(sm, runs));
+    if let Some(l) = life {
+        a.headline.push_str(&life_headline(l));
+    }
     a
+}
+
+/// The life line: cycles and hours under the spectrum, and the linear mix of the bins'.
+fn life_headline(l: &LifeTable) -> String {
+    format!(
+        "\nlife to {} µm ({}): {} cycles{} under the spectrum, {} cycles by the linear mix of the bins' lives",
+        shown(l.limit_um),
+        l.mode.label(),
+        life_words(&l.spectrum),
+        l.spectrum_hours
+            .map_or(String::new(), |h| format!(" ({} h)", shown(h))),
+        l.linear_mix_cycles.map_or("-".into(), format_value)
+    )
 }
 
 /// A line naming the bin that wears most, per run.
@@ -312,12 +332,7 @@ pub fn duty_run_artifacts(
     a.summary["warnings"] = json!(sm.warnings());
     a.headline.push_str(&duty_headline(sm, &runs));
     if let Some(l) = &study.life {
-        a.headline.push_str(&format!(
-            "\nlife to {} µm: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
-            shown(l.limit_um),
-            life_words(&l.spectrum),
-            l.linear_mix_cycles.map_or("-".into(), format_value)
-        ));
+        a.headline.push_str(&life_headline(l));
     }
     a.documents.push((
         "report.html".into(),
