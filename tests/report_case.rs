@@ -95,7 +95,8 @@ fn the_report_of_another_pair_describes_that_pair() {
         "100 N m on the pinion",
         "40 Hz input",
         "1000 Hz mesh frequency",
-        &format!("{r_pb_mm:.3} mm = {force}"),
+        // 35.238 mm to four significant digits (gearwear::format).
+        &format!("{r_pb_mm:.2} mm = {force}"),
         "3000 cycles",
         "damped mesh pole",
     ] {
