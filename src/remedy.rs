@@ -85,7 +85,7 @@ pub enum Arg {
 }
 
 /// How a front end spells an argument in its messages.
-pub type Spelling = fn(Arg) -> &'static str;
+pub(crate) type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
@@ -253,7 +253,7 @@ impl Remedy {
     }
 
     /// `action`, done through argument `arg`: "choose a folder you can write to (--out)".
-    pub fn via(action: &str, arg: Arg) -> Self {
+    pub(crate) fn via(action: &str, arg: Arg) -> Self {
         Self::new(Words::new().text(format!("{action} (")).arg(arg).text(")"))
     }
 
@@ -273,7 +273,7 @@ impl Remedy {
     }
 
     /// Start afresh instead of resuming: "rerun without --resume".
-    pub fn start_afresh() -> Self {
+    pub(crate) fn start_afresh() -> Self {
         Self::new(Words::new().text("rerun without ").arg(Arg::Resume))
     }
 }
@@ -336,7 +336,7 @@ impl Problem {
     }
 
     /// The same problem with `context` put before what is wrong ("case 3 (...): ").
-    pub fn in_context(mut self, context: &str) -> Self {
+    pub(crate) fn in_context(mut self, context: &str) -> Self {
         let mut w = Words::new().text(context.to_owned());
         w.0.extend(self.what.0);
         self.what = w;

@@ -23,7 +23,7 @@ impl Derivable {
     }
 
     /// The given number, or `estimate` when derived.
-    pub fn or_derived(self, estimate: f64) -> f64 {
+    pub(crate) fn or_derived(self, estimate: f64) -> f64 {
         self.given().unwrap_or(estimate)
     }
 }

@@ -185,11 +185,11 @@ impl FaultKind {
 }
 
 /// Default crack angle to the tooth centreline, deg (Chen & Shao 2011 use 45 deg).
-pub const DEFAULT_CRACK_ANGLE_DEG: f64 = 45.0;
+pub(crate) const DEFAULT_CRACK_ANGLE_DEG: f64 = 45.0;
 
 /// Default share of the face width a crack has run across or a spall covers: 1, the whole
 /// face.
-pub const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
+pub(crate) const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
 
 /// One `[[fault]]` table as the case file writes it: sizes in mm, um and deg, the keys a
 /// kind does not take or leaves to their default absent. Read, checked
@@ -409,7 +409,7 @@ fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
 /// Problems of the per-tooth inputs that the case alone shows: array lengths against the
 /// numbers of teeth, tooth indices, a fault's keys against its kind, ascending roll
 /// angles. `z1`, `z2`: teeth of pinion and gear.
-pub fn teeth_problems(
+pub(crate) fn teeth_problems(
     t: &TeethSection,
     m: &ModificationSection,
     faults: &[FaultTable],

@@ -11,7 +11,7 @@ use serde::Serialize;
 /// per-cycle wear sum_i s_i inc_i (so wear between updates grows exactly as in the run),
 /// and the response of bin `observed` (the monitoring bin: what a sensor records at its
 /// reference condition).
-pub fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
+pub(crate) fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
     let inc = r.increment(&run.shares);
     let b = &r.bins[observed.min(r.bins.len() - 1)];
     UpdateRecord {
@@ -128,7 +128,7 @@ pub fn ranking(run: &SpectrumRun) -> Vec<BinWear> {
 
 /// Dynamic factor (max / mean mesh force) of every bin at every update: one row per
 /// update, one column per bin.
-pub fn dynamic_factors(run: &SpectrumRun) -> Vec<Vec<f64>> {
+pub(crate) fn dynamic_factors(run: &SpectrumRun) -> Vec<Vec<f64>> {
     run.records
         .iter()
         .map(|r| r.bins.iter().map(|b| b.summary.dynamic_factor).collect())

@@ -165,7 +165,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
 }
 
 /// Median of the sample intervals, s.
-pub fn median_interval_s(time_s: &[f64]) -> f64 {
+pub(crate) fn median_interval_s(time_s: &[f64]) -> f64 {
     let mut d: Vec<f64> = time_s.windows(2).map(|w| w[1] - w[0]).collect();
     if d.is_empty() {
         return 0.0;

@@ -81,8 +81,8 @@ impl Default for LddSettings {
 
 /// Largest number of classes per axis: a spectrum of more than 200 x 50 bins only adds
 /// cost (each bin is a dynamic evaluation per wear update).
-pub const MAX_TORQUE_CLASSES: usize = 200;
-pub const MAX_SPEED_CLASSES: usize = 50;
+pub(crate) const MAX_TORQUE_CLASSES: usize = 200;
+pub(crate) const MAX_SPEED_CLASSES: usize = 50;
 
 /// Counts per torque x speed cell (row-major: torque class slowest).
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -25,7 +25,7 @@ use serde::Serialize;
 /// Cycles at which the maximum pinion wear of `records` (each with its per-cycle wear
 /// for the block after it; of any tooth when per tooth) first reaches `limit_m`, within
 /// `end` cycles (the last block ends there); None if not reached.
-pub fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Option<f64> {
+pub(crate) fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Option<f64> {
     for (j, r) in records.iter().enumerate() {
         let profiles = r.pinion_profiles();
         if profiles

@@ -24,7 +24,7 @@ pub struct SpectrumModel {
 }
 
 /// A bin in words, for messages: "load_spectrum bin 3 (80 N m, 45 Hz)".
-pub fn bin_label(case: &Case, i: usize) -> String {
+pub(crate) fn bin_label(case: &Case, i: usize) -> String {
     let c = case.at_bin(i);
     format!(
         "load_spectrum bin {} ({} N m, {} Hz)",

@@ -220,7 +220,7 @@ impl SpectrumRun {
     /// A run under `sm`'s spectrum that starts from the worn `state` (e.g. the end of a
     /// run under another spectrum: a change of duty), its first record that state with
     /// every bin's response on it; wear attributed to the bins counts from there.
-    pub fn starting_at(
+    pub(crate) fn starting_at(
         sm: &SpectrumModel,
         mode: WearMode,
         state: WearState,

@@ -74,7 +74,7 @@ pub fn flank_tolerances(class: i64, d_mm: f64, m_mm: f64) -> FlankTolerances {
 /// normal module `m_mm` lies outside the scope of ISO 1328-1:2013 (classes 1 to 11,
 /// 5 <= z <= 1000, 5 mm <= d <= 15 000 mm, 0.5 mm <= m_n <= 70 mm; its formulas are
 /// not to be extrapolated), or None inside it.
-pub fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<String> {
+pub(crate) fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<String> {
     let mut out = Vec::new();
     if !(1..=11).contains(&class) {
         out.push(format!("class {class} (1 to 11)"));
@@ -92,7 +92,7 @@ pub fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<S
 }
 
 /// A published value as ISO 1328-1:2013, 5.2.3 rounds it, um.
-pub fn round_iso(v_um: f64) -> f64 {
+pub(crate) fn round_iso(v_um: f64) -> f64 {
     if v_um > 10.0 {
         v_um.round()
     } else if v_um >= 5.0 {
@@ -105,7 +105,7 @@ pub fn round_iso(v_um: f64) -> f64 {
 /// The errors drawn for one gear, um: tooth positions (about their mean), profile slope
 /// and form deviations per tooth.
 #[derive(Debug, Clone, PartialEq)]
-pub struct DrawnGear {
+pub(crate) struct DrawnGear {
     pub position_um: Vec<f64>,
     pub slope_um: Vec<f64>,
     pub form_um: Vec<f64>,
@@ -151,7 +151,7 @@ pub fn total_profile_deviation(slope_um: f64, form_um: f64) -> f64 {
 }
 
 /// Whether drawn errors pass the class's inspection (module docs).
-pub fn passes_inspection(
+pub(crate) fn passes_inspection(
     tol: &FlankTolerances,
     position_um: &[f64],
     slope_um: &[f64],
@@ -179,18 +179,18 @@ fn normal(r: &mut ChaCha8Rng) -> f64 {
 /// 0.997^z from the single pitch test alone (each |f_pt,i| within 3 standard
 /// deviations), 0.07 at the 1000 teeth the schema allows, so 1e4 draws fail only with
 /// probability 0.93^1e4, never in practice.
-pub const MAX_DRAWS: usize = 10_000;
+pub(crate) const MAX_DRAWS: usize = 10_000;
 
 /// No draw passed the class's inspection (the teeth and class, for the message).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Undrawable {
+pub(crate) struct Undrawable {
     pub teeth: usize,
     pub class: i64,
 }
 
 /// The errors of a gear of `teeth` teeth drawn for tolerances `tol` from stream `stream`
 /// of `seed` (see the module docs).
-pub fn draw_gear(
+pub(crate) fn draw_gear(
     teeth: usize,
     tol: &FlankTolerances,
     seed: u64,

@@ -42,7 +42,7 @@ pub struct Gear {
 /// 1.4 <= h_f <= 7 and what the built-in case's own bores give (8 / 16.5 mm: 2.06;
 /// 14 / 28.5 mm: 2.04). A bore of half the root radius leaves a rim as deep as the teeth
 /// are long on the sizes of the built-in pair.
-pub const DERIVED_BORE_H_F: f64 = 2.0;
+pub(crate) const DERIVED_BORE_H_F: f64 = 2.0;
 
 /// Half angle (rad) of a generated tooth's footing on the root circle: from the tooth
 /// centreline to where the root fillet meets the root circle.
@@ -58,7 +58,7 @@ pub const DERIVED_BORE_H_F: f64 = 2.0;
 ///   theta_f = (pi m / 2 - E) / r  =  (2 / z) [pi/4 + h_f* tan(alpha) + rho* (1 - sin alpha) / cos(alpha)].
 /// The profile shift moves the rack radially and so cancels out. If the two corner radii
 /// overlap (E < 0) the fillets of neighbouring teeth meet on the root circle: theta_f = pi / z.
-pub fn fillet_junction_half_angle_rad(
+pub(crate) fn fillet_junction_half_angle_rad(
     teeth: f64,
     pressure_angle_rad: f64,
     dedendum_coefficient: f64,
@@ -218,7 +218,7 @@ impl GearPair {
     /// `decide_rad` (e.g. the middle of an integration step) while their positions follow
     /// `phase_rad`. A step that ends exactly on a pair entering or leaving contact then
     /// sees one contact set on all its stages, so the stiffness jump falls between steps.
-    pub fn pairs_in_contact_decided(
+    pub(crate) fn pairs_in_contact_decided(
         &self,
         phase_rad: f64,
         decide_rad: f64,
@@ -237,7 +237,7 @@ impl GearPair {
     /// What [`GearPair::pairs_in_contact_decided`] takes from `decide_rad`: the mesh
     /// cycle's start (the floor of the phase in mesh angles) and the number of pairs. Two
     /// decision angles with the same key give the same pairs at every phase.
-    pub fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
+    pub(crate) fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
         let period = self.mesh_angle_rad();
         let cycle = (decide_rad / period).floor();
         let rho_decide =
@@ -253,7 +253,7 @@ impl GearPair {
     /// [`GearPair::pairs_in_contact_decided`] counts it (pair k of the contact set is
     /// cycle n - k).
     #[inline]
-    pub fn mesh_cycle(&self, decide_rad: f64) -> i64 {
+    pub(crate) fn mesh_cycle(&self, decide_rad: f64) -> i64 {
         (decide_rad / self.mesh_angle_rad()).floor() as i64
     }
 

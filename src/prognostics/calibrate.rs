@@ -225,7 +225,7 @@ pub fn calibrate(
 
 /// The model's band over the posterior samples for quantity `q` on `points` cycle counts
 /// from 0 to `max_cycles` (noise-free model values; the observations carry noise).
-pub fn model_band(
+pub(crate) fn model_band(
     sur: &Surrogate,
     samples: &[Theta],
     q: super::quantity::Quantity,

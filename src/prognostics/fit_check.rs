@@ -35,15 +35,15 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 /// Central probability of the predictive band.
-pub const COVERAGE: f64 = 0.95;
+pub(crate) const COVERAGE: f64 = 0.95;
 /// Probability that data the model generated raise the warning, per rule.
-pub const FALSE_ALARM: f64 = 1e-3;
+pub(crate) const FALSE_ALARM: f64 = 1e-3;
 /// Beyond this many sigma from a mixture member its normal density and tail vanish in
 /// double precision against the band's 2.5 % (Phi(-8.5) = 9.5e-18).
 const TAIL_SIGMAS: f64 = 8.5;
 
 /// Standard normal distribution function.
-pub fn normal_cdf(z: f64) -> f64 {
+pub(crate) fn normal_cdf(z: f64) -> f64 {
     0.5 * libm::erfc(-z / std::f64::consts::SQRT_2)
 }
 
@@ -68,7 +68,7 @@ pub fn normal_quantile(p: f64) -> f64 {
 
 /// Largest count of n observations outside the band that does not warn: the smallest k
 /// with P(Binomial(n, 1 - COVERAGE) > k) < FALSE_ALARM (pmf by its recurrence in logs).
-pub fn max_outside(n: usize) -> usize {
+pub(crate) fn max_outside(n: usize) -> usize {
     let p = 1.0 - COVERAGE;
     let mut ln_pmf = Vec::with_capacity(n + 1);
     let mut l = n as f64 * (1.0 - p).ln();
@@ -91,7 +91,7 @@ pub fn max_outside(n: usize) -> usize {
 
 /// Largest excess (noise sigmas beyond the band) of one of n observations that does not
 /// warn (module docs, "distance").
-pub fn excess_limit(n: usize) -> f64 {
+pub(crate) fn excess_limit(n: usize) -> f64 {
     let z = normal_quantile(0.5 + 0.5 * COVERAGE);
     normal_quantile(1.0 - FALSE_ALARM / (2.0 * n.max(1) as f64)) - z
 }

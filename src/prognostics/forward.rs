@@ -75,7 +75,7 @@ fn max_after(profiles: &[ProfileAndIncrement], n: f64) -> f64 {
 
 impl Trajectory {
     /// Cycles up to which the run is known.
-    pub fn valid_until(&self) -> f64 {
+    pub(crate) fn valid_until(&self) -> f64 {
         match (&self.failure, self.records.last()) {
             (None, Some(_)) => self.requested_cycles,
             (Some(_), Some(r)) => r.wear.cycles,
@@ -133,7 +133,7 @@ impl Trajectory {
 
 /// Why a wear run ended before its total cycles, if it did: an error, or an early stop
 /// (the solver gave up, or the teeth left the model's domain; [`WearRun::stopped`]).
-pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
+pub(crate) fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
     match result {
         Err(e) => Some(format!("{e:#}")),
         Ok(run) => run.stopped.map(|s| s.reason),
@@ -251,7 +251,7 @@ fn spectrum_records(
 /// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the
 /// first update whose record fails (the trajectory then reads the indicator as unknown
 /// from there on).
-pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
+pub(crate) fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
     let wanted: Vec<u16> = indicators_of(qs)
         .into_iter()
         .filter(|i| !t.indicators.contains_key(name(*i)))

@@ -21,7 +21,7 @@ const MAX_LEVELS: usize = 8;
 
 /// A normalised posterior on a regular grid in unit coordinates.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct GridPosterior {
+pub(crate) struct GridPosterior {
     /// Free parameter indices (one or two).
     pub free: Vec<usize>,
     /// Unit-coordinate box of the final level, per axis.
@@ -61,7 +61,7 @@ fn centres(lo: &[f64], hi: &[f64], cells: usize) -> Vec<Vec<f64>> {
 impl GridPosterior {
     /// Compute the posterior. `loglik` returns None for a failed forward run; `done` is
     /// called once per level (progress).
-    pub fn compute(
+    pub(crate) fn compute(
         prior: &Prior,
         loglik: &(dyn Fn(&Theta) -> Option<f64> + Sync),
         cells: usize,
@@ -185,7 +185,7 @@ impl GridPosterior {
     }
 
     /// Unit coordinate of quantile p of axis `a` (CDF linear within a cell).
-    pub fn quantile_unit(&self, a: usize, p: f64) -> f64 {
+    pub(crate) fn quantile_unit(&self, a: usize, p: f64) -> f64 {
         let m = self.marginal(a);
         let width = (self.hi[a] - self.lo[a]) / self.cells as f64;
         let mut cum = 0.0;
@@ -199,7 +199,7 @@ impl GridPosterior {
     }
 
     /// Marginal density of axis `a` per unit coordinate at the cell centres.
-    pub fn density_unit(&self, a: usize) -> (Vec<f64>, Vec<f64>) {
+    pub(crate) fn density_unit(&self, a: usize) -> (Vec<f64>, Vec<f64>) {
         let width = (self.hi[a] - self.lo[a]) / self.cells as f64;
         let m = self.marginal(a);
         let u = (0..self.cells)

@@ -15,7 +15,7 @@ use crate::rng;
 use rayon::prelude::*;
 
 /// Stretch scale a (Goodman & Weare's recommended value).
-pub const STRETCH_A: f64 = 2.0;
+pub(crate) const STRETCH_A: f64 = 2.0;
 
 #[derive(Debug, Clone, Copy)]
 pub struct McmcSettings {

@@ -32,7 +32,8 @@ pub mod surrogate;
 mod surrogate_duty;
 
 pub use forward::{Crossing, Trajectory};
-pub use observations::{parse_observations, Observations};
+pub(crate) use observations::parse_observations;
+pub use observations::Observations;
 pub use prior::{Parameter, Prior, Theta};
 pub use quantity::Quantity;
 pub use surrogate::Surrogate;

@@ -14,7 +14,7 @@ use crate::study::model::ModelError;
 use serde::{Deserialize, Serialize};
 
 /// Quantities of the fan charts: the wear and what the monitoring engineer will see.
-pub const FAN_QUANTITIES: [Quantity; 6] = [
+pub(crate) const FAN_QUANTITIES: [Quantity; 6] = [
     Quantity::MaxWearPinion,
     Quantity::VelocityRms,
     Quantity::MeshHarmonic(1),
@@ -227,7 +227,7 @@ impl LifeSummary {
 /// ranges (`limits`), a shard `index` of `count` with 1 <= index <= count <= samples, at
 /// most its share of the samples, each with an index below the ensemble size and one
 /// value per fan quantity and grid point.
-pub fn check_shard(
+pub(crate) fn check_shard(
     set: &PredictSettings,
     (index, count): (usize, usize),
     outcomes: &[SampleOutcome],

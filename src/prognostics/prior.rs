@@ -27,7 +27,7 @@ pub enum Parameter {
 /// Values of all three parameters: [k m^2/N, roughness factor -, load torque N m].
 pub type Theta = [f64; 3];
 
-pub const PARAMETERS: [Parameter; 3] = [
+pub(crate) const PARAMETERS: [Parameter; 3] = [
     Parameter::WearCoefficient,
     Parameter::RoughnessScale,
     Parameter::LoadTorque,
@@ -67,12 +67,12 @@ pub struct ParamPrior {
 }
 
 impl ParamPrior {
-    pub fn is_fixed(&self) -> bool {
+    pub(crate) fn is_fixed(&self) -> bool {
         self.lo == self.hi
     }
 
     /// Unit coordinate of a value (0 at lo, 1 at hi; log scale for a log prior).
-    pub fn to_unit(&self, x: f64) -> f64 {
+    pub(crate) fn to_unit(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return 0.5;
         }
@@ -84,7 +84,7 @@ impl ParamPrior {
     }
 
     /// Value at a unit coordinate.
-    pub fn from_unit(&self, u: f64) -> f64 {
+    pub(crate) fn from_unit(&self, u: f64) -> f64 {
         if self.is_fixed() {
             return self.lo;
         }
@@ -188,7 +188,7 @@ impl Prior {
 
     /// The parameter values at unit coordinates `u` of the free parameters (fixed ones at
     /// their value).
-    pub fn theta_at(&self, u: &[f64]) -> Theta {
+    pub(crate) fn theta_at(&self, u: &[f64]) -> Theta {
         let mut t = [0.0; 3];
         let free = self.free();
         for (i, p) in self.params.iter().enumerate() {

@@ -5,7 +5,7 @@
 
 /// Quantile p in [0, 1] of ascending `sorted` data, linear between order statistics
 /// (Hyndman & Fan 1996, type 7). NaN for no data; +inf propagates.
-pub fn quantile_sorted(sorted: &[f64], p: f64) -> f64 {
+pub(crate) fn quantile_sorted(sorted: &[f64], p: f64) -> f64 {
     let n = sorted.len();
     if n == 0 {
         return f64::NAN;
@@ -90,7 +90,7 @@ pub fn autocorrelation_time(chains: &[Vec<f64>]) -> f64 {
 /// Split R-hat (Gelman et al., Bayesian Data Analysis, 3rd ed., eq. 11.4): each chain cut
 /// in halves, then sqrt(var_plus / W) with W the mean within-chain variance and
 /// var_plus = (n-1)/n W + B/n.
-pub fn split_rhat(chains: &[Vec<f64>]) -> f64 {
+pub(crate) fn split_rhat(chains: &[Vec<f64>]) -> f64 {
     let half = chains.iter().map(Vec::len).min().unwrap_or(0) / 2;
     if half < 2 {
         return f64::NAN;

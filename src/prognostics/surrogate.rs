@@ -47,25 +47,25 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Ratio of neighbouring reference wear coefficients in the block-limited range.
-pub const K_NODE_RATIO: f64 = 2.0;
+pub(crate) const K_NODE_RATIO: f64 = 2.0;
 
 /// Ratio of neighbouring k nodes under a change of duty: 2^(1/4), or coarser so that a
 /// chain holds at most 17 runs (a prior-only prediction spans four decades).
-pub fn future_node_ratio(k_lo: f64, k_hi: f64) -> f64 {
+pub(crate) fn future_node_ratio(k_lo: f64, k_hi: f64) -> f64 {
     2f64.powf(0.25).max((k_hi / k_lo).powf(1.0 / 16.0))
 }
 
 /// Most reference runs one chain over the prior of k can hold (k_hi / k_lo in steps of
 /// [`K_NODE_RATIO`], both ends included): a progress bar's length, chains usually stop
 /// earlier.
-pub fn max_chain_runs(p: &super::prior::Prior) -> u64 {
+pub(crate) fn max_chain_runs(p: &super::prior::Prior) -> u64 {
     let k = &p.params[0];
     ((k.hi / k.lo).ln() / K_NODE_RATIO.ln()).ceil() as u64 + 1
 }
 
 /// As [`max_chain_runs`] under a change of duty: every node of the finer grid
 /// ([`future_node_ratio`]) and k_hi.
-pub fn future_chain_runs(p: &super::prior::Prior) -> u64 {
+pub(crate) fn future_chain_runs(p: &super::prior::Prior) -> u64 {
     let k = &p.params[0];
     if k.hi <= k.lo {
         return 1;
@@ -364,7 +364,7 @@ impl Surrogate {
     }
 
     /// Reference runs in all chains.
-    pub fn run_count(&self) -> usize {
+    pub(crate) fn run_count(&self) -> usize {
         self.chains.iter().map(|c| c.runs.len()).sum()
     }
 
@@ -380,7 +380,7 @@ impl Surrogate {
     }
 
     /// Cycles up to which the surrogate is known for `theta`.
-    pub fn valid_until(&self, theta: &Theta) -> f64 {
+    pub(crate) fn valid_until(&self, theta: &Theta) -> f64 {
         if let Some(f) = &self.future {
             return self.valid_until_after_change(f, theta);
         }

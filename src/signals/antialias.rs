@@ -21,14 +21,14 @@
 use std::f64::consts::PI;
 
 /// Internal oversampling of the analog representation over the sampling rate.
-pub const OVERSAMPLING: usize = 8;
+pub(crate) const OVERSAMPLING: usize = 8;
 
 /// Ratio f_s / f_p of the sampling rate to the passband edge.
-pub const SAMPLING_OVER_PASSBAND: f64 = 2.56;
+pub(crate) const SAMPLING_OVER_PASSBAND: f64 = 2.56;
 
 /// A linear-phase low-pass FIR at the internal rate, with its delay removed.
 #[derive(Debug, Clone, PartialEq)]
-pub struct AntiAliasFilter {
+pub(crate) struct AntiAliasFilter {
     /// Taps (odd count, symmetric).
     pub taps: Vec<f64>,
     /// Internal rate D f_s, Hz.
@@ -39,7 +39,7 @@ pub struct AntiAliasFilter {
 
 /// Zeroth-order modified Bessel function of the first kind (power series; converges for
 /// every argument, 1e-17 relative terms end it).
-pub fn bessel_i0(x: f64) -> f64 {
+pub(crate) fn bessel_i0(x: f64) -> f64 {
     let (mut sum, mut term, y) = (1.0, 1.0, 0.25 * x * x);
     let mut k = 1.0;
     while term > 1e-17 * sum {
@@ -51,7 +51,7 @@ pub fn bessel_i0(x: f64) -> f64 {
 }
 
 /// Kaiser's beta for a stopband attenuation of `a_db`.
-pub fn kaiser_beta(a_db: f64) -> f64 {
+pub(crate) fn kaiser_beta(a_db: f64) -> f64 {
     if a_db > 50.0 {
         0.1102 * (a_db - 8.7)
     } else if a_db >= 21.0 {
@@ -110,7 +110,7 @@ impl AntiAliasFilter {
 
     /// The zero-phase response at the `n / 2 + 1` frequencies k r / n of an `n`-point
     /// transform at the internal rate r (exactly `response` there, by one FFT).
-    pub fn response_grid(&self, n: usize) -> Vec<f64> {
+    pub(crate) fn response_grid(&self, n: usize) -> Vec<f64> {
         let c = self.half_length();
         let mut a = vec![0.0; n];
         for (m, h) in self.taps.iter().enumerate() {
@@ -126,14 +126,15 @@ impl AntiAliasFilter {
     }
 
     /// Half the filter length in internal samples (its delay).
-    pub fn half_length(&self) -> usize {
+    pub(crate) fn half_length(&self) -> usize {
         self.taps.len() / 2
     }
 
     /// Filter `x` (at the internal rate, sample 0 at time 0) and keep every D-th sample:
     /// output n is the filtered signal at internal sample n D. Samples beyond the ends of
     /// `x` count as the end values held (a signal at rest before and after).
-    pub fn decimate(&self, x: &[f64]) -> Vec<f64> {
+    #[cfg(test)]
+    pub(crate) fn decimate(&self, x: &[f64]) -> Vec<f64> {
         if x.is_empty() {
             return Vec::new();
         }

@@ -13,7 +13,7 @@ use crate::dynamics::summary::evaluated_periods;
 
 /// The bearing forces on the housing, the inputs of a transfer path, in the order of
 /// [`BearingForces::force_n`]: pinion x, pinion y, gear x, gear y (the model's frame).
-pub const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
+pub(crate) const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
 
 /// Bearing forces on the housing over one period of a periodic response, N, in
 /// [`INPUTS`] order, with the times of the samples.
@@ -28,12 +28,12 @@ pub struct BearingForces {
 /// Period of a periodic steady-state response, s: the period its recorded window
 /// repeats (one mesh period for identical teeth, the tooth-resolved mesh's period, up to
 /// the hunting period lcm(z1, z2) mesh periods, otherwise).
-pub fn response_period_s(r: &DynamicResponse) -> f64 {
+pub(crate) fn response_period_s(r: &DynamicResponse) -> f64 {
     r.mesh_period_s * r.excitation_periods.max(1) as f64
 }
 
 /// The bearing forces over the first period of the response's recorded window.
-pub fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
+pub(crate) fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
     let s = &r.signals;
     let period = response_period_s(r);
     let t0 = s.time_s.first().copied().unwrap_or(0.0);

@@ -4,7 +4,7 @@ use super::transfer::TransferPath;
 pub use crate::config::signals::{ChannelUnit, Shaft};
 use serde::{Deserialize, Serialize};
 
-pub use crate::config::signals::STANDARD_GRAVITY;
+pub(crate) use crate::config::signals::STANDARD_GRAVITY;
 /// Additive measurement noise.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -56,7 +56,8 @@ pub struct SignalChain {
 impl SignalChain {
     /// The default chain: generic housing, 25.6 kHz, 100 dB anti-alias filter, m/s^2,
     /// 100 mV/g, no noise, one pulse per pinion revolution, 1 s.
-    pub fn default_chain() -> Self {
+    #[cfg(test)]
+    pub(crate) fn default_chain() -> Self {
         Self {
             path: TransferPath::generic_housing(),
             acquisition: Acquisition {

@@ -59,7 +59,7 @@ pub struct Components {
 
 impl Components {
     /// Amplitude of shaft order k (the TSA's Fourier amplitude 2 |X_k| / M).
-    pub fn order_amplitude(&self, k: usize) -> f64 {
+    pub(crate) fn order_amplitude(&self, k: usize) -> f64 {
         self.spectrum
             .get(k)
             .map_or(0.0, |c| 2.0 * c.norm() / self.samples as f64)

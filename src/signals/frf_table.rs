@@ -66,7 +66,7 @@ impl FrfTable {
     }
 
     /// Highest frequency any FRF of the table covers, Hz.
-    pub fn max_frequency_hz(&self) -> f64 {
+    pub(crate) fn max_frequency_hz(&self) -> f64 {
         self.frf
             .iter()
             .flat_map(|row| row.iter())
@@ -85,7 +85,7 @@ const HEADER: [&str; 5] = [
 
 /// Parse an FRF table; `source` names the file in messages. Every problem is returned,
 /// each with its line.
-pub fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
+pub(crate) fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .comment(Some(b'#'))

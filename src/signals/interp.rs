@@ -16,7 +16,7 @@ use std::f64::consts::PI;
 use std::sync::OnceLock;
 
 /// Half-width of the kernel, samples.
-pub const HALF_WIDTH: usize = 16;
+pub(crate) const HALF_WIDTH: usize = 16;
 /// Kernel table points per sample (linear interpolation between them: error ~1e-6).
 const TABLE_PER_SAMPLE: usize = 1024;
 

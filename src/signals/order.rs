@@ -94,7 +94,7 @@ pub fn order_map(
 
 /// A time-frequency map for a Campbell diagram.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct CampbellMap {
+pub(crate) struct CampbellMap {
     pub frequency_hz: Vec<f64>,
     /// Tracked shaft's mean speed over each block, Hz.
     pub speed_hz: Vec<f64>,
@@ -104,7 +104,7 @@ pub struct CampbellMap {
 
 /// Short-time spectra of `x` in blocks of `block` samples (half overlap), each labelled
 /// with the speed of the shaft turning `ratio` times per tachometer revolution.
-pub fn campbell_map(
+pub(crate) fn campbell_map(
     x: &[f64],
     fs_hz: f64,
     edges: &[f64],

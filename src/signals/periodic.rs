@@ -17,7 +17,7 @@ use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
 /// Fine-grid points per sampling interval when a series is sampled.
-pub const GRID_PER_SAMPLE: f64 = 16.0;
+pub(crate) const GRID_PER_SAMPLE: f64 = 16.0;
 
 /// A periodic signal as its one-sided complex Fourier amplitudes.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,7 +33,7 @@ impl PeriodicSignal {
     /// its means over a uniform grid of at least 4 cells per sample (`super::area`: the
     /// area of every short-lived layer kept) with the cells' box filter divided out.
     /// Harmonics up to half the grid are kept.
-    pub fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
+    pub(crate) fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
         let n = (4 * t.len()).next_power_of_two().max(16);
         let w = period_s / n as f64;
         let t0 = t.first().copied().unwrap_or(0.0);
@@ -114,7 +114,7 @@ impl PeriodicSignal {
 
     /// The signal on `m` uniform points over one period from time 0 (m a power of two,
     /// at least twice the harmonics).
-    pub fn on_grid(&self, m: usize) -> Vec<f64> {
+    pub(crate) fn on_grid(&self, m: usize) -> Vec<f64> {
         let mut planner = RealFftPlanner::<f64>::new();
         let ifft = planner.plan_fft_inverse(m);
         let mut spec = ifft.make_input_vec();

@@ -48,7 +48,7 @@ pub struct TransferPath {
 }
 
 /// Modal accelerance of one mode at frequency f (see the module docs), m/s^2 per N.
-pub fn modal_accelerance(
+pub(crate) fn modal_accelerance(
     gain_per_kg: f64,
     frequency_hz: f64,
     damping: f64,
@@ -63,7 +63,7 @@ pub fn modal_accelerance(
 impl TransferPath {
     /// Accelerance from input `j` ([`INPUTS`](super::bearing::INPUTS) order) to sensor `s`
     /// at `f_hz`, m/s^2 per N.
-    pub fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
+    pub(crate) fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         match &self.model {
             PathModel::Modal(modes) => modes
                 .iter()
@@ -90,7 +90,7 @@ impl TransferPath {
     /// Cast housings of gear test rigs show their first modes between 1 and 10 kHz with
     /// modal damping of 1-5 %; the numbers are plausible, not measured. A user with a
     /// measured housing gives its modes or FRF table instead (docs/SIGNALS.md).
-    pub fn generic_housing() -> Self {
+    pub(crate) fn generic_housing() -> Self {
         // (f, zeta, modal mass, shape at [pinion x, pinion y, gear x, gear y], shape at sensors)
         type GenericMode = (f64, f64, f64, [f64; 4], [f64; 2]);
         let modes: [GenericMode; 3] = [
@@ -120,7 +120,7 @@ impl TransferPath {
     /// Problems of the path at sampling rate `fs_hz` (`rate_key` names the setting in
     /// messages): a mode at or above the Nyquist frequency is not recorded faithfully
     /// and is refused.
-    pub fn problems_at(&self, fs_hz: f64, rate_key: &str) -> Vec<String> {
+    pub(crate) fn problems_at(&self, fs_hz: f64, rate_key: &str) -> Vec<String> {
         let nyquist = 0.5 * fs_hz;
         let mut out = Vec::new();
         if let PathModel::Modal(modes) = &self.model {

@@ -32,13 +32,13 @@ use std::f64::consts::PI;
 
 /// Lead-in of the periodic steady state before t = 0, s: longer than the decay of the
 /// housing modes (10 time constants of a 2 % mode at 2 kHz: 40 ms) and the filter.
-pub const LEAD_S: f64 = 0.1;
+pub(crate) const LEAD_S: f64 = 0.1;
 /// Integration past the record's end, s: more than the anti-alias filter's half-length.
-pub const TAIL_S: f64 = 0.01;
+pub(crate) const TAIL_S: f64 = 0.01;
 
 /// Bearing forces of an integration as means over the cells [i w, (i + 1) w) of the
 /// internal grid from t = 0 (step 1; `super::area` for why means, not point values).
-pub struct ForceSampler {
+pub(crate) struct ForceSampler {
     pub cell_s: f64,
     /// Integrals of each force over each cell so far, N s.
     integrals: [Vec<f64>; 4],
@@ -118,7 +118,7 @@ impl PeriodObserver for ForceSampler {
 }
 
 /// Smallest n' >= n of the form 2^a 3^b 5^c (fast FFT lengths).
-pub fn fast_len(n: usize) -> usize {
+pub(crate) fn fast_len(n: usize) -> usize {
     let mut best = n.next_power_of_two();
     let mut p5 = 1;
     while p5 < best {
@@ -150,7 +150,7 @@ fn pulse_mean(ua: f64, ub: f64) -> f64 {
 /// internal rate, `lead` the steady state before it (one period of bearing forces),
 /// `tach_angle(t)` the tachometer shaft's angle (rad, valid for t < 0 too), `samples` the
 /// record's length.
-pub fn transient_record(
+pub(crate) fn transient_record(
     sampled: &ForceSampler,
     lead: &BearingForces,
     chain: &SignalChain,

@@ -30,7 +30,7 @@ pub struct Tsa {
 
 /// Time at tachometer-shaft angle `theta` (rad from the first pulse), from the pulse times
 /// `edges` with `n` pulses per revolution (module docs, step 2).
-pub fn time_at_angle(edges: &[f64], n: usize, theta: f64) -> f64 {
+pub(crate) fn time_at_angle(edges: &[f64], n: usize, theta: f64) -> f64 {
     let step = 2.0 * std::f64::consts::PI / n as f64;
     let u = theta / step;
     let last = edges.len() - 1;

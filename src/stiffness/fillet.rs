@@ -154,7 +154,7 @@ impl FilletFoundation {
     }
 
     /// Whether the fit is extrapolated here (h_f or theta_f outside its range).
-    pub fn outside_fit(&self) -> bool {
+    pub(crate) fn outside_fit(&self) -> bool {
         self.h_f_outside_fit || self.theta_f_outside_fit
     }
 
@@ -192,7 +192,7 @@ impl FilletSettings {
     }
 
     /// The default convention, extrapolating with a warning ([`MeshStiffness::new`]).
-    pub fn lenient() -> Self {
+    pub(crate) fn lenient() -> Self {
         Self {
             root_angle: StiffnessSection::default().fillet_root_angle,
             allow_extrapolation: true,

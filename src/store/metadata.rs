@@ -39,7 +39,7 @@ impl RunMetadata {
     }
 
     /// The metadata of a run of `model` (its case, with what it resolved).
-    pub fn of_model(command: &str, model: &Model) -> Self {
+    pub(crate) fn of_model(command: &str, model: &Model) -> Self {
         Self {
             resolved: Some(model.resolved()),
             ..Self::new(command, &model.case)

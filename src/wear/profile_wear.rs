@@ -97,7 +97,7 @@ impl WearState {
     }
 
     /// The same wear shape scaled so that the maximum pinion depth is `target_m`.
-    pub fn scaled_to_max_pinion(&self, target_m: f64) -> Self {
+    pub(crate) fn scaled_to_max_pinion(&self, target_m: f64) -> Self {
         let m = self.max_pinion_m();
         let f = if m > 0.0 { target_m / m } else { 0.0 };
         let scale = |v: &[f64]| v.iter().map(|x| x * f).collect::<Vec<_>>();

@@ -26,12 +26,12 @@ impl ToothWear {
 }
 
 /// Largest entry of every profile, m (0 for none).
-pub fn max_of(profiles: &[Vec<f64>]) -> f64 {
+pub(crate) fn max_of(profiles: &[Vec<f64>]) -> f64 {
     profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))
 }
 
 /// Mean profile of several teeth.
-pub fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
+pub(crate) fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
     let n = profiles.first().map_or(0, Vec::len);
     let z = profiles.len().max(1) as f64;
     (0..n)
