@@ -100,7 +100,7 @@ pub(crate) const CYCLES: Limit = Limit {
     reason: "the range of wear.total_cycles: 1e11 cycles is a pinion at 3000 rpm for 63 years",
 };
 /// Wear limit of a prediction, um.
-pub const LIMIT_UM: Limit = Limit {
+pub(crate) const LIMIT_UM: Limit = Limit {
     setting: "limit_um",
     min: 1e-3,
     max: 1e4,

@@ -210,7 +210,7 @@ impl Prior {
 /// The case with the parameters applied: k, the roughness table times the factor, and
 /// the load torque. Under a load spectrum the torque is a level relative to the
 /// operating torque: every bin's torque is scaled by T / `operating.load_torque_nm`.
-pub fn apply(case: &Case, theta: &Theta) -> Case {
+pub(crate) fn apply(case: &Case, theta: &Theta) -> Case {
     let mut c = case.clone();
     c.wear.coefficient_m2_per_n = theta[0];
     for r in &mut c.surface.roughness_table_rms_um {

@@ -27,7 +27,7 @@ pub enum Quantity {
 }
 
 /// Every quantity, in the order tables list them.
-pub const ALL: [Quantity; 10] = [
+pub(crate) const ALL: [Quantity; 10] = [
     Quantity::MaxWearPinion,
     Quantity::MaxWearGear,
     Quantity::VelocityRms,

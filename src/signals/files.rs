@@ -23,7 +23,7 @@ pub(crate) fn channel_column(sensor: &str, unit: ChannelUnit) -> String {
 pub(crate) const TACHOMETER_COLUMN: &str = "tachometer_v";
 
 /// Column names and units of a record.
-pub fn units(record: &Record, unit: ChannelUnit) -> Map<String, Value> {
+pub(crate) fn units(record: &Record, unit: ChannelUnit) -> Map<String, Value> {
     let mut m = Map::new();
     for (name, _) in &record.channels {
         m.insert(channel_column(name, unit), json!(unit.symbol()));

@@ -9,11 +9,11 @@
 
 pub mod analysis;
 pub mod antialias;
-pub mod area;
+pub(crate) mod area;
 pub mod bearing;
 pub mod chain;
 pub mod components;
-pub mod files;
+pub(crate) mod files;
 pub mod frf_table;
 pub mod indicators;
 pub mod interp;
@@ -27,7 +27,7 @@ pub mod setup;
 pub mod tachometer;
 pub mod transfer;
 pub mod transient_record;
-pub mod tsa;
+pub(crate) mod tsa;
 
 #[cfg(test)]
 mod tests_acquisition;
