@@ -42,12 +42,19 @@ use rand::{RngExt, SeedableRng};
 /// The flank tolerances of one gear for one class, um (unrounded).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlankTolerances {
+    /// Flank tolerance class (ISO 1328-1:2013 classes 1 to 11).
     pub class: i64,
+    /// Single pitch tolerance f_pT, um.
     pub single_pitch_um: f64,
+    /// Total cumulative pitch tolerance F_pT, um.
     pub cumulative_pitch_um: f64,
+    /// Profile slope tolerance f_HalphaT, um.
     pub profile_slope_um: f64,
+    /// Profile form tolerance f_falphaT, um.
     pub profile_form_um: f64,
+    /// Total profile tolerance F_alphaT, um.
     pub profile_total_um: f64,
+    /// Run-out tolerance F_rT, um.
     pub runout_um: f64,
 }
 

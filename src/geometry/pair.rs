@@ -15,7 +15,9 @@ use std::f64::consts::PI;
 /// One gear of the pair (SI units).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gear {
+    /// Number of teeth z.
     pub teeth: usize,
+    /// Profile shift coefficient x (dimensionless, positive away from the centre).
     pub profile_shift: f64,
     /// Reference (pitch) radius r = m z / 2, m.
     pub pitch_radius_m: f64,
@@ -95,10 +97,15 @@ impl Gear {
 /// A meshing involute spur pair. Build with [`GearPair::from_case`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearPair {
+    /// Module m, m.
     pub module_m: f64,
+    /// Reference pressure angle alpha, rad.
     pub pressure_angle_rad: f64,
+    /// Face width b, m.
     pub face_width_m: f64,
+    /// The driving gear (gear 1).
     pub pinion: Gear,
+    /// The driven gear (gear 2).
     pub gear: Gear,
     /// Operating centre distance a_w, m.
     pub centre_distance_m: f64,
