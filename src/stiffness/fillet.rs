@@ -62,6 +62,7 @@ pub fn sainsot_coefficients(h_f: f64, theta_f_rad: f64) -> [f64; 4] {
 pub struct FilletFoundation {
     /// [L*, M*, P*, Q*].
     pub coefficients: [f64; 4],
+    /// Root circle radius r_f, m.
     pub root_radius_m: f64,
     /// theta_f used in the fit, rad.
     pub root_half_angle_rad: f64,
@@ -75,6 +76,7 @@ pub struct FilletFoundation {
     pub warning: Option<String>,
     /// Which of h_f and theta_f lie outside the fit's range (then extrapolated).
     pub h_f_outside_fit: bool,
+    /// Whether theta_f lies outside the fit's range (then extrapolated).
     pub theta_f_outside_fit: bool,
 }
 

@@ -30,9 +30,13 @@ pub const LOW_LOAD_LIMIT_N_PER_MM: f64 = 100.0;
 /// Inputs of Method B. Angles in rad; stiffness-related inputs dimensionless.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Iso6336Input {
+    /// Number of teeth of the pinion z_1 (a real number so virtual numbers fit).
     pub teeth_pinion: f64,
+    /// Number of teeth of the gear z_2.
     pub teeth_gear: f64,
+    /// Profile shift coefficient of the pinion x_1.
     pub profile_shift_pinion: f64,
+    /// Profile shift coefficient of the gear x_2.
     pub profile_shift_gear: f64,
     /// Helix angle at the reference cylinder beta, rad (0 for spur gears).
     pub helix_angle_rad: f64,

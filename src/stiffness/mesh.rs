@@ -30,10 +30,13 @@ pub struct StiffnessError(pub Vec<String>);
 pub struct PairCompliance {
     /// 1/k_h (paper eq. 11).
     pub hertz_m_per_n: f64,
+    /// Bending, shear and axial compliances of the pinion tooth (paper eqs. 8-10).
     pub pinion: ToothCompliance,
+    /// Bending, shear and axial compliances of the gear tooth (paper eqs. 8-10).
     pub gear: ToothCompliance,
     /// 1/k_f of the pinion and of the gear; 0 when the fillet foundation is off.
     pub pinion_fillet_m_per_n: f64,
+    /// 1/k_f of the gear, m/N; 0 when the fillet foundation is off.
     pub gear_fillet_m_per_n: f64,
 }
 

@@ -30,9 +30,13 @@ const SHEAR_FACTOR: f64 = 1.2;
 /// Young's moduli (Pa) and Poisson's ratios of the two gears.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ElasticPair {
+    /// Young's modulus of the pinion E_1, Pa.
     pub e_pinion_pa: f64,
+    /// Poisson's ratio of the pinion nu_1.
     pub nu_pinion: f64,
+    /// Young's modulus of the gear E_2, Pa.
     pub e_gear_pa: f64,
+    /// Poisson's ratio of the gear nu_2.
     pub nu_gear: f64,
 }
 
@@ -158,6 +162,7 @@ pub struct ToothCompliance {
 }
 
 impl ToothCompliance {
+    /// Total tooth compliance 1/k_b + 1/k_s + 1/k_a, m/N.
     pub fn total_m_per_n(&self) -> f64 {
         self.bending_m_per_n + self.shear_m_per_n + self.axial_m_per_n
     }
@@ -166,12 +171,17 @@ impl ToothCompliance {
 /// One tooth as a cantilever of variable section clamped at the root circle.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ToothBeam {
+    /// Base circle radius r_b, m.
     pub base_radius_m: f64,
     /// alpha_2, half the angular tooth thickness at the base circle, rad.
     pub half_base_angle_rad: f64,
+    /// Root circle radius r_f, m (where the beam is clamped).
     pub root_radius_m: f64,
+    /// Face width b, m.
     pub face_width_m: f64,
+    /// Young's modulus E, Pa.
     pub youngs_modulus_pa: f64,
+    /// Shear modulus G = E / (2 (1 + nu)), Pa.
     pub shear_modulus_pa: f64,
     /// Lower limit of the involute part: -alpha_2, or the root circle's alpha if r_f > r_b.
     alpha_start: f64,
