@@ -6,7 +6,9 @@ use serde::{Deserialize, Serialize};
 /// Wear of every tooth on the shared grid (tooth t's profile at `pinion_m[t]`), m.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct ToothWear {
+    /// Wear depth of each pinion tooth at each grid point, m (tooth, point).
     pub pinion_m: Vec<Vec<f64>>,
+    /// Wear depth of each gear tooth at each grid point, m (tooth, point).
     pub gear_m: Vec<Vec<f64>>,
 }
 
