@@ -9,7 +9,9 @@ use std::fmt;
 /// `geometry::blank`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Derivable {
+    /// A value the case gives, in the unit of its key.
     Given(f64),
+    /// `"derived"`: computed from the geometry when the model is built.
     Derived,
 }
 

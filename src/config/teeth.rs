@@ -276,21 +276,31 @@ pub enum Fault {
     /// A root crack (Chen & Shao 2011): a straight path from the root at `angle_rad` to the
     /// tooth centreline, `depth_m` long, across `width_fraction` of the face from one side.
     Crack {
+        /// Crack length from the root along its path, m.
         depth_m: f64,
+        /// Angle of the crack path to the tooth centreline, rad.
         angle_rad: f64,
+        /// Share of the face width the crack has run across (0, 1].
         width_fraction: f64,
     },
     /// A spall (Saxena et al. 2016): a pit `depth_m` deep over the roll lengths
     /// `position_m` +- `length_m` / 2 from the pitch point (positive towards the tip),
     /// across `width_fraction` of the face.
     Spall {
+        /// Roll length of the pit's centre from the pitch point, positive towards the tip, m.
         position_m: f64,
+        /// Roll length the pit covers along the profile, m.
         length_m: f64,
+        /// Depth of the pit normal to the flank, m.
         depth_m: f64,
+        /// Share of the face width the pit covers (0, 1].
         width_fraction: f64,
     },
     /// A broken tip: `removed_height_m` of the tooth's radial height gone from the tip.
-    BrokenTip { removed_height_m: f64 },
+    BrokenTip {
+        /// Radial height removed from the tip, m.
+        removed_height_m: f64,
+    },
 }
 
 /// One tooth fault of a case: the tooth it is on and the fault, resolved when the case is
