@@ -174,6 +174,7 @@ enum Piece {
 pub struct Words(Vec<Piece>);
 
 impl Words {
+    /// Empty text.
     pub fn new() -> Self {
         Self::default()
     }
@@ -212,6 +213,7 @@ impl Words {
             .collect()
     }
 
+    /// Whether the text is empty.
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
@@ -239,12 +241,16 @@ impl fmt::Display for Words {
 /// the case key to change and the file or folder concerned.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Remedy {
+    /// What to do, in words that may name job arguments.
     pub action: Words,
+    /// The case key to change, dotted (`section.key`), when the action concerns one.
     pub key: Option<String>,
+    /// The file or folder concerned, when the action concerns one.
     pub path: Option<PathBuf>,
 }
 
 impl Remedy {
+    /// A remedy that is the action `action` alone.
     pub fn new(action: impl Into<Words>) -> Self {
         Self {
             action: action.into(),
@@ -257,11 +263,13 @@ impl Remedy {
         Self::new(Words::new().text(format!("{action} (")).arg(arg).text(")"))
     }
 
+    /// Name the case key `key` the action concerns.
     pub fn key(mut self, key: impl Into<String>) -> Self {
         self.key = Some(key.into());
         self
     }
 
+    /// Name the file or folder `path` the action concerns.
     pub fn path(mut self, path: impl Into<PathBuf>) -> Self {
         self.path = Some(path.into());
         self
@@ -282,9 +290,11 @@ impl Remedy {
 /// is wrong, and what to do.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Problem {
+    /// The job argument at fault, if the problem concerns one.
     pub arg: Option<Arg>,
     /// The argument's value as given, quoted after it.
     pub given: Option<String>,
+    /// What is wrong, in words that may name job arguments.
     pub what: Words,
     /// Boxed: most problems have none, and errors stay small.
     pub remedy: Option<Box<Remedy>>,
@@ -315,6 +325,7 @@ impl Problem {
         }
     }
 
+    /// Attach what to do about the problem.
     pub fn remedy(mut self, r: Remedy) -> Self {
         self.remedy = Some(Box::new(r));
         self
