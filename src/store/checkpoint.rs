@@ -75,7 +75,9 @@ pub(crate) fn is_checkpoint(bytes: &[u8]) -> bool {
 #[derive(Debug, thiserror::Error)]
 #[error("{}", self.problem())]
 pub struct CheckpointError {
+    /// The checkpoint file, as the user named it.
     pub path: String,
+    /// Why it cannot be used.
     pub reason: String,
     /// What to do, when more than replacing the file (`crate::remedy`).
     pub remedy: Option<Box<Remedy>>,
