@@ -74,10 +74,12 @@ fn share(part: f64, whole: f64) -> f64 {
 pub struct BinWear {
     /// 1-based, as in the case.
     pub bin: usize,
+    /// Share of the pinion load cycles the bin takes (its spectrum share s_i).
     pub share_of_cycles: f64,
     /// Share of the worn area of the pinion's profile (depth integrated along the path of
     /// contact), and of the gear's.
     pub share_of_pinion_wear: f64,
+    /// Share of the worn area of the gear's profile the bin added.
     pub share_of_gear_wear: f64,
     /// Share of the wear at the point of the pinion's maximum wear depth.
     pub share_at_max_pinion_wear: f64,

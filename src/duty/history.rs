@@ -23,8 +23,11 @@ const MAX_PROBLEMS: usize = 20;
 /// Time, torque and speed at each sample.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct History {
+    /// Time of each sample from the start of the record, s.
     pub time_s: Vec<f64>,
+    /// Torque at each sample, N m, on the shaft the load spectrum names.
     pub torque_nm: Vec<f64>,
+    /// Input (pinion) shaft speed at each sample, Hz (read as Hz or rpm).
     pub input_speed_hz: Vec<f64>,
 }
 
@@ -32,6 +35,7 @@ pub struct History {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{}", .problems.join("; "))]
 pub struct HistoryError {
+    /// One line per problem, each naming its row and column.
     pub problems: Vec<String>,
 }
 

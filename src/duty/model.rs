@@ -76,6 +76,7 @@ impl SpectrumModel {
         self.bins.len()
     }
 
+    /// Whether the spectrum has no bins (never, for a model built from a case).
     pub fn is_empty(&self) -> bool {
         self.bins.is_empty()
     }

@@ -27,6 +27,7 @@ pub struct DutyStudy {
 }
 
 impl DutyStudy {
+    /// The spectrum run of wear mode `mode`, if it was asked for.
     pub fn run(&self, mode: WearMode) -> Option<&SpectrumRun> {
         self.runs.iter().find(|r| r.mode == mode)
     }
