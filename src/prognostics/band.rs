@@ -9,6 +9,7 @@ pub(crate) const PERCENTILES: [f64; 5] = [5.0, 25.0, 50.0, 75.0, 95.0];
 /// Percentiles of one quantity against cycles over an ensemble.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Band {
+    /// Pinion cycle counts of the grid the percentiles are given at.
     pub cycles: Vec<f64>,
     /// percentiles[i][g]: percentile PERCENTILES[i] at cycles[g]; NaN where undetermined.
     pub percentiles: Vec<Vec<f64>>,

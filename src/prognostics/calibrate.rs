@@ -13,17 +13,22 @@ use super::surrogate::Surrogate;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+/// The sizes and seed of a calibration.
 #[derive(Debug, Clone, Copy)]
 pub struct CalibrationSettings {
     /// Posterior samples to return.
     pub samples: usize,
+    /// Seed of the random streams (the result depends only on it and the inputs).
     pub seed: u64,
     /// Grid cells per parameter.
     pub grid_cells: usize,
+    /// Walkers of the ensemble sampler (MCMC only).
     pub walkers: usize,
+    /// Steps per walker, burn-in included (MCMC only).
     pub steps: usize,
 }
 
+/// How the posterior is computed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
@@ -36,10 +41,13 @@ pub enum Method {
 /// Posterior summary of one parameter.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ParamSummary {
+    /// The parameter summarised.
     pub parameter: Parameter,
+    /// Posterior median, in the parameter's unit.
     pub median: f64,
     /// 90 % equal-tailed credible interval.
     pub ci05: f64,
+    /// Upper end of the 90 % credible interval (95th percentile), in the parameter's unit.
     pub ci95: f64,
     /// Effective sample size of the returned samples.
     pub ess: f64,
@@ -51,26 +59,38 @@ pub struct ParamSummary {
 /// (log10 k for k, the value otherwise).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Density {
+    /// The parameter.
     pub parameter: Parameter,
+    /// Plotting coordinate of each density point (log10 k for k, the value otherwise).
     pub x: Vec<f64>,
+    /// Posterior density at each point, per unit of the plotting coordinate.
     pub density: Vec<f64>,
     /// The prior's density in the same coordinate (uniform).
     pub prior_density: f64,
 }
 
+/// The result of calibrating the uncertain parameters against observations: posterior samples and their summaries.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Calibration {
+    /// The prior the posterior was computed from.
     pub prior: Prior,
+    /// How it was computed.
     pub method: Method,
+    /// Posterior samples of the parameters.
     pub samples: Vec<Theta>,
+    /// Summary of each parameter, in the order of [`Theta`].
     pub summary: Vec<ParamSummary>,
+    /// Marginal density of each parameter, in the order of [`Theta`].
     pub densities: Vec<Density>,
     /// Parameters at which the forward model failed (grid points or proposals).
     pub failed: Vec<Theta>,
     /// Grid: prior mass of the failed cells; posterior mass neglected outside the box.
     pub prior_mass_failed: Option<f64>,
+    /// Grid: posterior mass estimated to lie outside the refined box (None for MCMC).
     pub mass_outside: Option<f64>,
+    /// Grid: refinement levels used (None for MCMC).
     pub grid_levels: Option<usize>,
+    /// MCMC: share of proposals accepted (None for the grid).
     pub acceptance: Option<f64>,
 }
 

@@ -124,11 +124,15 @@ pub(crate) fn worst_ratio(checks: &[CalibrationCheck]) -> f64 {
 /// A true run at one sample of a prediction against the surrogate.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PredictionCheck {
+    /// The parameters of the sample checked.
     pub theta: Theta,
+    /// Cycles to the wear limit the surrogate predicts.
     pub life_surrogate: Crossing,
+    /// Cycles to the wear limit of the true wear study.
     pub life_true: Crossing,
     /// Largest |surrogate - true| over the fan grid per fan quantity (None: no overlap).
     pub max_abs_error: Vec<(String, Option<f64>)>,
+    /// Why the true run stopped early, if it did.
     pub true_run_failure: Option<String>,
 }
 

@@ -179,7 +179,9 @@ fn place(cycles: f64, value: f64, members: &mut [f64], sigma: f64) -> Placed {
 /// The observation of a quantity furthest outside its band.
 #[derive(Debug, Clone, Serialize)]
 pub struct Worst {
+    /// Pinion cycles of the observation.
     pub cycles: f64,
+    /// Observed value, display units.
     pub observed: f64,
     /// The central band there [lower, upper], display units.
     pub band: [f64; 2],
@@ -187,16 +189,20 @@ pub struct Worst {
     pub sigma: f64,
     /// Distance beyond the band, noise sigmas and display units.
     pub excess_sigma: f64,
+    /// Distance beyond the band, display units.
     pub excess: f64,
 }
 
 /// One observed quantity.
 #[derive(Debug, Clone, Serialize)]
 pub struct QuantityFit {
+    /// Name of the quantity.
     pub quantity: String,
     /// "given" (sigma column) or "inferred".
     pub noise: &'static str,
+    /// Observations of it.
     pub observations: usize,
+    /// Observations outside its central band.
     pub outside: usize,
     /// The observation furthest outside (None: every one inside).
     pub worst: Option<Worst>,
@@ -207,8 +213,11 @@ pub struct QuantityFit {
 /// The fit check of a calibration (`summary.json` "fit_check").
 #[derive(Debug, Clone, Serialize)]
 pub struct FitCheck {
+    /// Probability content of the central band the observations are held to (0.95).
     pub coverage: f64,
+    /// Observations in all.
     pub observations: usize,
+    /// Observations outside their central band.
     pub outside: usize,
     /// n (1 - coverage): what data the model generated would leave outside on average.
     pub expected_outside: f64,
@@ -218,7 +227,9 @@ pub struct FitCheck {
     pub largest_excess_sigma: f64,
     /// Rule: further out than this warns.
     pub excess_limit_sigma: f64,
+    /// Probability that each warning rule fires on data the model generated.
     pub false_alarm_probability_per_rule: f64,
+    /// The check of each observed quantity.
     pub quantities: Vec<QuantityFit>,
     /// The warning (None: the data are consistent with the model).
     pub warning: Option<String>,

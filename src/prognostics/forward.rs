@@ -45,6 +45,7 @@ pub struct Trajectory {
     pub coefficient_m2_per_n: f64,
     /// Cycle count the run was asked to reach.
     pub requested_cycles: f64,
+    /// Every wear update of the run, in order of cycles.
     pub records: Vec<UpdateRecord>,
     /// Why the run stopped before `requested_cycles` (None: it reached them).
     pub failure: Option<String>,
@@ -144,7 +145,9 @@ pub(crate) fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
 /// the case's own spectrum (or operating point), e.g. a heavier duty from next year.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FutureDuty {
+    /// Pinion cycles from which the new duty applies.
     pub from_cycles: f64,
+    /// The load spectrum of the new duty.
     pub spectrum: LoadSpectrumSection,
 }
 

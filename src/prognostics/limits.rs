@@ -8,16 +8,22 @@
 /// One setting's valid range and why.
 #[derive(Debug, Clone, Copy)]
 pub struct Limit {
+    /// Name of the setting, as the front ends spell it.
     pub setting: &'static str,
+    /// Smallest valid value.
     pub min: f64,
+    /// Largest valid value.
     pub max: f64,
+    /// Why the range is what it is.
     pub reason: &'static str,
 }
 
 /// A setting out of its range: which, and the message.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Problem {
+    /// Name of the setting out of range.
     pub setting: &'static str,
+    /// What is wrong, with the value and the valid range.
     pub message: String,
 }
 

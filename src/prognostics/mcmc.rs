@@ -17,12 +17,16 @@ use rayon::prelude::*;
 /// Stretch scale a (Goodman & Weare's recommended value).
 pub(crate) const STRETCH_A: f64 = 2.0;
 
+/// The sizes and seed of an ensemble MCMC run (Goodman & Weare 2010).
 #[derive(Debug, Clone, Copy)]
 pub struct McmcSettings {
+    /// Number of walkers.
     pub walkers: usize,
+    /// Steps per walker, burn-in included.
     pub steps: usize,
     /// Steps discarded at the start.
     pub burn_in: usize,
+    /// Seed of the random streams.
     pub seed: u64,
 }
 
@@ -31,9 +35,11 @@ pub struct McmcSettings {
 pub struct McmcRun {
     /// chains[w][t][a]: unit coordinates of walker w at kept step t.
     pub chains: Vec<Vec<Vec<f64>>>,
+    /// Share of proposals accepted.
     pub acceptance: f64,
     /// Proposals whose forward run failed (parameters).
     pub failed: Vec<Theta>,
+    /// Forward-model evaluations made.
     pub evaluations: usize,
 }
 

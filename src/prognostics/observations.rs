@@ -11,6 +11,7 @@ use super::quantity::Quantity;
 /// The measurements of one quantity.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
+    /// The quantity measured.
     pub quantity: Quantity,
     /// Pinion cycles of each measurement.
     pub cycles: Vec<f64>,
@@ -23,6 +24,7 @@ pub struct Series {
 /// All observations of one file.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Observations {
+    /// One series per quantity measured.
     pub series: Vec<Series>,
 }
 
@@ -40,6 +42,7 @@ impl Observations {
         self.series.iter().map(|s| s.values.len()).sum()
     }
 
+    /// Whether there are no measured values.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }

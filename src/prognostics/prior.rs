@@ -19,8 +19,11 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Parameter {
+    /// Archard wear coefficient k, m^2/N.
     WearCoefficient,
+    /// Factor on the roughness law, dimensionless.
     RoughnessScale,
+    /// Load torque, N m.
     LoadTorque,
 }
 
@@ -43,6 +46,7 @@ impl Parameter {
         }
     }
 
+    /// Label for tables and figures, with the unit.
     pub fn label(&self) -> &'static str {
         match self {
             Parameter::WearCoefficient => "wear coefficient k (m^2/N)",
@@ -51,6 +55,7 @@ impl Parameter {
         }
     }
 
+    /// The parameter of a posterior samples CSV column, if any.
     pub fn parse(column: &str) -> Option<Self> {
         PARAMETERS.iter().copied().find(|p| p.column() == column)
     }
@@ -59,8 +64,11 @@ impl Parameter {
 /// The prior of one parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ParamPrior {
+    /// The parameter.
     pub parameter: Parameter,
+    /// Lower bound, in the parameter's unit.
     pub lo: f64,
+    /// Upper bound, in the parameter's unit (equal to `lo`: fixed).
     pub hi: f64,
     /// Log-uniform (else uniform).
     pub log: bool,
@@ -107,6 +115,7 @@ impl ParamPrior {
 /// Priors of all three parameters (fixed ones included).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Prior {
+    /// Priors in the order of [`Theta`].
     pub params: [ParamPrior; 3],
 }
 

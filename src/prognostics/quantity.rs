@@ -72,6 +72,7 @@ impl Quantity {
         }
     }
 
+    /// The quantity of name `name` (as [`Quantity::name`] spells it), if any.
     pub fn parse(name: &str) -> Option<Self> {
         ALL.iter()
             .copied()

@@ -25,6 +25,7 @@ pub fn quantile(data: &[f64], p: f64) -> f64 {
     quantile_sorted(&v, p)
 }
 
+/// Arithmetic mean of `x` (NaN for an empty slice).
 pub fn mean(x: &[f64]) -> f64 {
     x.iter().sum::<f64>() / x.len() as f64
 }

@@ -76,8 +76,11 @@ pub(crate) fn future_chain_runs(p: &super::prior::Prior) -> u64 {
 /// One chain of reference runs (increasing k) at fixed other parameters.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Chain {
+    /// The parameters the chain holds fixed: roughness factor and torque (its k entry is not used).
     pub theta: Theta,
+    /// Wear coefficient of each run, m^2/N, increasing.
     pub k: Vec<f64>,
+    /// The reference runs, one per coefficient.
     pub runs: Vec<Trajectory>,
 }
 
