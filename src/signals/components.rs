@@ -49,11 +49,17 @@ pub struct Components {
     pub spectrum: Vec<Complex64>,
     /// Samples per revolution M.
     pub samples: usize,
+    /// Mesh order z: the teeth of the analysed shaft's gear.
     pub mesh_order: usize,
+    /// Regular signal: the TSA with only the regular meshing components (M samples).
     pub regular: Vec<f64>,
+    /// Difference signal: the TSA minus the regular signal (M samples).
     pub difference: Vec<f64>,
+    /// Residual signal: the TSA minus the shaft orders 1..S and the mesh harmonics (M samples).
     pub residual: Vec<f64>,
+    /// Band-pass signal: the orders z - B..z + B of the mesh fundamental's band (M samples).
     pub band_pass: Vec<f64>,
+    /// Envelope of the band-pass signal, the magnitude of its analytic signal (M samples).
     pub envelope: Vec<f64>,
 }
 

@@ -25,7 +25,9 @@ use realfft::num_complex::Complex64;
 /// One FRF: frequencies (ascending) and complex accelerances.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Frf {
+    /// Frequency of each point, Hz (ascending).
     pub frequency_hz: Vec<f64>,
+    /// Complex accelerance at each frequency, m/s^2 per N.
     pub value: Vec<Complex64>,
 }
 
@@ -55,12 +57,14 @@ impl Frf {
 /// A table of FRFs per sensor and input.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrfTable {
+    /// Sensor names, in channel order.
     pub sensors: Vec<String>,
     /// `frf[s][j]`: sensor s, input j ([`INPUTS`] order).
     pub frf: Vec<[Frf; 4]>,
 }
 
 impl FrfTable {
+    /// Accelerance from input `j` ([`INPUTS`] order) to sensor `s` at `f_hz` (Hz), m/s^2 per N.
     pub fn at(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         self.frf[s][j].at(f_hz)
     }

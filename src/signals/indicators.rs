@@ -50,10 +50,12 @@ pub fn normalised_moment(x: &[f64], p: i32) -> f64 {
     n.powi(p / 2 - 1) * central_sum(x, p) / s2.powi(p / 2)
 }
 
+/// Root mean square sqrt(mean x^2), in the unit of `x` (0 for an empty slice).
 pub fn rms(x: &[f64]) -> f64 {
     (x.iter().map(|v| v * v).sum::<f64>() / x.len().max(1) as f64).sqrt()
 }
 
+/// Crest factor max |x| / RMS, dimensionless (0 for a zero signal).
 pub fn crest_factor(x: &[f64]) -> f64 {
     let r = rms(x);
     if r > 0.0 {
@@ -63,6 +65,7 @@ pub fn crest_factor(x: &[f64]) -> f64 {
     }
 }
 
+/// Kurtosis, the normalised moment of order 4 (1.5 for a sine, 3 for Gaussian noise).
 pub fn kurtosis(x: &[f64]) -> f64 {
     normalised_moment(x, 4)
 }
@@ -87,12 +90,16 @@ pub fn na4(x: &[f64], earlier_variances: &[f64]) -> f64 {
 /// Indicators of the whole recorded signal.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct SignalIndicators {
+    /// Root mean square, in the channel's unit.
     pub rms: f64,
+    /// Crest factor max |x| / RMS, dimensionless.
     pub crest_factor: f64,
+    /// Kurtosis (normalised moment 4), dimensionless.
     pub kurtosis: f64,
 }
 
 impl SignalIndicators {
+    /// The indicators of the recorded signal `x`.
     pub fn of(x: &[f64]) -> Self {
         Self {
             rms: rms(x),
@@ -106,18 +113,31 @@ impl SignalIndicators {
 /// `residual_variance` and `envelope_variance` let a run's later records form theirs.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct ShaftIndicators {
+    /// Revolutions averaged into the TSA.
     pub revolutions: usize,
+    /// RMS of the TSA, in the channel's unit.
     pub tsa_rms: f64,
+    /// FM0: peak-to-peak of the TSA over the sum of the mesh harmonic amplitudes (Stewart 1977).
     pub fm0: f64,
+    /// FM4: kurtosis of the difference signal (Stewart 1977).
     pub fm4: f64,
+    /// M6A: normalised moment 6 of the difference signal (Martin 1989).
     pub m6a: f64,
+    /// M8A: normalised moment 8 of the difference signal (Martin 1989).
     pub m8a: f64,
+    /// NA4 of the record alone: kurtosis of the residual signal (Zakrajsek 1993).
     pub na4: f64,
+    /// NB4 of the record alone: kurtosis of the band-pass envelope (Zakrajsek, Handschuh & Decker 1994).
     pub nb4: f64,
+    /// Energy ratio RMS(difference) / RMS(regular) (Swansson 1980).
     pub energy_ratio: f64,
+    /// Sideband level factor (A(z - 1) + A(z + 1)) / RMS(TSA) (Lebold et al. 2000).
     pub sideband_level_factor: f64,
+    /// Sideband index (A(z - 1) + A(z + 1)) / 2, in the channel's unit (Lebold et al. 2000).
     pub sideband_index: f64,
+    /// Variance of the residual signal, in the channel's unit squared (for a run's NA4).
     pub residual_variance: f64,
+    /// Variance of the band-pass envelope, in the channel's unit squared (for a run's NB4).
     pub envelope_variance: f64,
 }
 

@@ -22,6 +22,7 @@ pub(crate) const GRID_PER_SAMPLE: f64 = 16.0;
 /// A periodic signal as its one-sided complex Fourier amplitudes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeriodicSignal {
+    /// Period T, s.
     pub period_s: f64,
     /// c_0 (the mean), c_1, c_2, ...: x(t) = Re sum c_k e^(i 2 pi k t / T).
     pub coefficients: Vec<Complex64>,

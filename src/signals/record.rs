@@ -24,13 +24,18 @@ use realfft::num_complex::Complex64;
 /// Shaft speeds and teeth of the pair a record comes from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Kinematics {
+    /// Pinion shaft speed, Hz.
     pub pinion_hz: f64,
+    /// Gear shaft speed, Hz.
     pub gear_hz: f64,
+    /// Teeth of the pinion z_1.
     pub teeth_pinion: usize,
+    /// Teeth of the gear z_2.
     pub teeth_gear: usize,
 }
 
 impl Kinematics {
+    /// Speed of shaft `shaft`, Hz.
     pub fn shaft_hz(&self, shaft: Shaft) -> f64 {
         match shaft {
             Shaft::Pinion => self.pinion_hz,
@@ -38,6 +43,7 @@ impl Kinematics {
         }
     }
 
+    /// Mesh frequency f_1 z_1, Hz.
     pub fn mesh_hz(&self) -> f64 {
         self.pinion_hz * self.teeth_pinion as f64
     }
@@ -51,17 +57,21 @@ impl Kinematics {
 /// A record: channels in the chain's unit and the tachometer in volts.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Record {
+    /// Sampling rate f_s, Hz.
     pub sampling_rate_hz: f64,
     /// (sensor name, samples) per accelerometer channel.
     pub channels: Vec<(String, Vec<f64>)>,
+    /// Tachometer signal at each sample, V.
     pub tachometer_v: Vec<f64>,
 }
 
 impl Record {
+    /// Number of samples per channel.
     pub fn len(&self) -> usize {
         self.tachometer_v.len()
     }
 
+    /// Whether the record has no samples.
     pub fn is_empty(&self) -> bool {
         self.tachometer_v.is_empty()
     }

@@ -11,8 +11,11 @@ use crate::config::Case;
 /// A chain that can be recorded, and what the user should know about it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChainSetup {
+    /// The chain to record with.
     pub chain: SignalChain,
+    /// Which orders count as the regular meshing components.
     pub components: ComponentSettings,
+    /// What the user should know about the chain (one line each).
     pub warnings: Vec<String>,
 }
 

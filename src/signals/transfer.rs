@@ -22,6 +22,7 @@ use std::f64::consts::PI;
 /// One structural mode of the housing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StructuralMode {
+    /// Natural frequency f_r, Hz.
     pub frequency_hz: f64,
     /// Viscous modal damping ratio zeta_r.
     pub damping_ratio: f64,
@@ -33,7 +34,9 @@ pub struct StructuralMode {
 /// How the path is described.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PathModel {
+    /// A sum of structural modes (modal accelerance).
     Modal(Vec<StructuralMode>),
+    /// A table of measured FRFs.
     Table(FrfTable),
 }
 
@@ -42,6 +45,7 @@ pub enum PathModel {
 pub struct TransferPath {
     /// Sensor names, in channel order.
     pub sensors: Vec<String>,
+    /// How the path is described.
     pub model: PathModel,
     /// What the path is (for metadata): "generic housing (...)", a file name, ...
     pub description: String,
