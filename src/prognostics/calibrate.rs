@@ -7,6 +7,7 @@ use super::grid::GridPosterior;
 use super::likelihood::log_likelihood;
 use super::mcmc::{ensemble_sample, McmcSettings};
 use super::observations::Observations;
+use super::posterior_error::PosteriorError;
 use super::prior::{Parameter, Prior, Theta};
 use super::stats::{autocorrelation_time, quantile, split_rhat};
 use super::surrogate::Surrogate;
@@ -121,12 +122,10 @@ pub fn calibrate(
     sur: &Surrogate,
     set: &CalibrationSettings,
     done: &(dyn Fn() + Sync),
-) -> Result<Calibration, String> {
+) -> Result<Calibration, PosteriorError> {
     let free = prior.free();
     if free.is_empty() {
-        return Err(
-            "nothing to calibrate: every parameter of [calibration] is fixed (equal bounds)".into(),
-        );
+        return Err(PosteriorError::NothingToCalibrate);
     }
     let loglik = |t: &Theta| log_likelihood(obs, &|q, c| sur.value(q, t, c));
     let mut out = Calibration {
@@ -143,7 +142,7 @@ pub fn calibrate(
     };
     // Why no parameter could be weighed, in the terms of the data: how far the
     // reference runs reach against the last observation.
-    let explain = |e: String| {
+    let explain = |e: PosteriorError| {
         let reach = sur
             .chains
             .iter()
@@ -151,12 +150,15 @@ pub fn calibrate(
             .fold(0.0_f64, f64::max);
         let last = obs.max_cycles();
         if reach < last {
-            format!(
-                "{e}: the reference runs reach at most {reach:.4e} cycles (at the prior's smallest k; faster wear stops sooner: {}), but the last observation is at {last:.4e} cycles",
-                sur.failures()
+            PosteriorError::BeyondReach {
+                cause: Box::new(e),
+                reach_cycles: reach,
+                last_cycles: last,
+                first_failure: sur
+                    .failures()
                     .first()
-                    .map_or("no failure recorded".into(), |f| f.2.clone())
-            )
+                    .map_or("no failure recorded".into(), |f| f.2.clone()),
+            }
         } else {
             e
         }

@@ -9,6 +9,7 @@
 //! a uniform point inside it; they are independent, so the effective sample size is
 //! their number.
 
+use super::posterior_error::PosteriorError;
 use super::prior::{Prior, Theta};
 use crate::rng;
 use rayon::prelude::*;
@@ -66,13 +67,11 @@ impl GridPosterior {
         loglik: &(dyn Fn(&Theta) -> Option<f64> + Sync),
         cells: usize,
         done: &(dyn Fn() + Sync),
-    ) -> Result<Self, String> {
+    ) -> Result<Self, PosteriorError> {
         let free = prior.free();
         let d = free.len();
         if !(1..=2).contains(&d) {
-            return Err(format!(
-                "the grid posterior takes 1 or 2 parameters, got {d}"
-            ));
+            return Err(PosteriorError::GridDimensions { free: d });
         }
         let (mut lo, mut hi) = (vec![0.0; d], vec![1.0; d]);
         let mut failed = Vec::new();
@@ -100,16 +99,11 @@ impl GridPosterior {
                 .copied()
                 .fold(f64::NEG_INFINITY, f64::max);
             if !max.is_finite() {
-                return Err(if n_failed == ll.len() {
-                    format!(
-                        "no forward run reached the observations on the grid ({n_failed} of {} failed)",
-                        ll.len()
-                    )
+                let (failed, points) = (n_failed, ll.len());
+                return Err(if failed == points {
+                    PosteriorError::NoRunReached { failed, points }
                 } else {
-                    format!(
-                        "the observations have zero likelihood at every one of the {} grid points ({n_failed} runs failed, the others are too far from the data for their noise): check the observations' units, values and sigmas",
-                        ll.len()
-                    )
+                    PosteriorError::ZeroLikelihood { failed, points }
                 });
             }
             let w: Vec<f64> = ll

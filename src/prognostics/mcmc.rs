@@ -10,6 +10,7 @@
 //! coordinates (prior uniform on [0, 1]^d). Every proposal draws from its own random stream
 //! (step, walker), so the chains do not depend on the thread count.
 
+use super::posterior_error::PosteriorError;
 use super::prior::{Prior, Theta};
 use crate::rng;
 use rayon::prelude::*;
@@ -58,13 +59,14 @@ pub fn ensemble_sample(
     loglik: &(dyn Fn(&Theta) -> Option<f64> + Sync),
     s: &McmcSettings,
     done: &(dyn Fn() + Sync),
-) -> Result<McmcRun, String> {
+) -> Result<McmcRun, PosteriorError> {
     let d = prior.free().len();
     let w = s.walkers;
     if w < 2 * d || !w.is_multiple_of(2) {
-        return Err(format!(
-            "the ensemble needs an even number of walkers >= 2 x {d} parameters, got {w}"
-        ));
+        return Err(PosteriorError::Walkers {
+            free: d,
+            walkers: w,
+        });
     }
     let logp = |u: &[f64]| -> (f64, Option<Theta>) {
         if u.iter().any(|x| !(0.0..=1.0).contains(x)) {
@@ -92,10 +94,10 @@ pub fn ensemble_sample(
     let mut evaluations = candidates.len();
     candidates.sort_by(|a, b| b.1.total_cmp(&a.1));
     if !candidates[w - 1].1.is_finite() {
-        return Err(format!(
-            "fewer than {w} of {} prior draws have a finite posterior (forward runs failed or the data exclude them): cannot start the ensemble",
-            candidates.len()
-        ));
+        return Err(PosteriorError::NoFiniteStart {
+            walkers: w,
+            draws: candidates.len(),
+        });
     }
     let mut pos: Vec<Vec<f64>> = candidates[..w].iter().map(|c| c.0.clone()).collect();
     let mut lp: Vec<f64> = candidates[..w].iter().map(|c| c.1).collect();

@@ -23,6 +23,7 @@ pub mod limits;
 pub mod mcmc;
 pub mod observations;
 pub mod predict;
+pub mod posterior_error;
 pub mod prior;
 pub mod quantity;
 
