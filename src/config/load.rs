@@ -301,7 +301,7 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     match SpeedUnit::given(op.contains_key(hz), op.contains_key(rpm), "operating.") {
         Err(both) => {
             op.remove(rpm);
-            problems.push(both);
+            problems.push(both.to_string());
         }
         Ok(Some(SpeedUnit::Rpm)) => {
             if let Some(x) = op.remove(rpm).as_ref().and_then(as_number) {

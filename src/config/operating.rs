@@ -95,6 +95,16 @@ pub enum SpeedUnit {
     Rpm,
 }
 
+/// An input speed given both in Hz and in rpm (an input problem).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "`{prefix}input_speed_hz` and `{prefix}input_speed_rpm` are both given: give the input speed once, in Hz or in rpm (not both)"
+)]
+pub struct BothSpeedsGiven {
+    /// What the key names stand behind: a section's `operating.`, or nothing.
+    pub prefix: String,
+}
+
 impl SpeedUnit {
     /// `x` in this unit, in Hz.
     pub(crate) fn to_hz(self, x: f64) -> f64 {
@@ -116,11 +126,11 @@ impl SpeedUnit {
     /// The unit an input speed is given in, from whether it is given as `input_speed_hz`
     /// and as `input_speed_rpm`: `None` when neither is; when both are, the problem, each
     /// name behind `prefix` (a section's `operating.`, or nothing).
-    pub fn given(hz: bool, rpm: bool, prefix: &str) -> Result<Option<SpeedUnit>, String> {
+    pub fn given(hz: bool, rpm: bool, prefix: &str) -> Result<Option<SpeedUnit>, BothSpeedsGiven> {
         match (hz, rpm) {
-            (true, true) => Err(format!(
-                "`{prefix}input_speed_hz` and `{prefix}input_speed_rpm` are both given: give the input speed once, in Hz or in rpm (not both)"
-            )),
+            (true, true) => Err(BothSpeedsGiven {
+                prefix: prefix.to_string(),
+            }),
             (true, false) => Ok(Some(SpeedUnit::Hz)),
             (false, true) => Ok(Some(SpeedUnit::Rpm)),
             (false, false) => Ok(None),
