@@ -37,7 +37,7 @@ pub(crate) struct CalibrationCheck {
 }
 
 /// The parameters at posterior quantile p of k, the others at their medians.
-pub fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
+pub(crate) fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
     let mut t = cal.prior.params.map(|x| x.lo);
     for s in &cal.summary {
         let i = PARAMETERS

@@ -53,7 +53,7 @@ fn normal_pdf(z: f64) -> f64 {
 }
 
 /// Phi^-1(p) for p in (0, 1), by bisection to 1e-12 (used once per check).
-pub fn normal_quantile(p: f64) -> f64 {
+pub(crate) fn normal_quantile(p: f64) -> f64 {
     let (mut lo, mut hi) = (-40.0_f64, 40.0_f64);
     while hi - lo > 1e-12 {
         let mid = 0.5 * (lo + hi);

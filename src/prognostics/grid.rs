@@ -164,7 +164,7 @@ impl GridPosterior {
     }
 
     /// Marginal mass per cell along axis `a`.
-    pub fn marginal(&self, a: usize) -> Vec<f64> {
+    pub(crate) fn marginal(&self, a: usize) -> Vec<f64> {
         let n = self.cells;
         let mut m = vec![0.0; n];
         for (id, x) in self.mass.iter().enumerate() {

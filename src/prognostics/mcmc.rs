@@ -40,8 +40,6 @@ pub struct McmcRun {
     pub acceptance: f64,
     /// Proposals whose forward run failed (parameters).
     pub failed: Vec<Theta>,
-    /// Forward-model evaluations made.
-    pub evaluations: usize,
 }
 
 /// A proposal: walker, position, its log density, accepted, failed parameters.
@@ -91,7 +89,6 @@ pub fn ensemble_sample(
         })
         .collect();
     let mut failed: Vec<Theta> = candidates.iter().filter_map(|c| c.2).collect();
-    let mut evaluations = candidates.len();
     candidates.sort_by(|a, b| b.1.total_cmp(&a.1));
     if !candidates[w - 1].1.is_finite() {
         return Err(PosteriorError::NoFiniteStart {
@@ -128,7 +125,6 @@ pub fn ensemble_sample(
                 })
                 .collect();
             for (k, y, ly, accept, f) in moves {
-                evaluations += 1;
                 failed.extend(f);
                 if accept {
                     pos[k] = y;
@@ -148,7 +144,6 @@ pub fn ensemble_sample(
         chains,
         acceptance: accepted as f64 / (s.steps * w).max(1) as f64,
         failed,
-        evaluations,
     })
 }
 

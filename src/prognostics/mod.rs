@@ -18,9 +18,9 @@ pub mod fit_check;
 pub mod forward;
 pub mod grid;
 pub mod indicator;
-pub mod likelihood;
+pub(crate) mod likelihood;
 pub mod limits;
-pub mod mcmc;
+pub(crate) mod mcmc;
 pub mod observations;
 pub mod predict;
 pub mod posterior_error;
@@ -28,9 +28,11 @@ pub mod prior;
 pub mod quantity;
 
 pub mod samples;
-pub mod stats;
+pub(crate) mod stats;
 pub mod surrogate;
 mod surrogate_duty;
+#[cfg(test)]
+mod tests_calibration;
 
 pub use forward::{Crossing, Trajectory};
 pub(crate) use observations::parse_observations;

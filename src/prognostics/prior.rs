@@ -80,6 +80,7 @@ impl ParamPrior {
     }
 
     /// Unit coordinate of a value (0 at lo, 1 at hi; log scale for a log prior).
+    #[cfg(test)]
     pub(crate) fn to_unit(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return 0.5;
@@ -104,7 +105,8 @@ impl ParamPrior {
     }
 
     /// Prior CDF at x.
-    pub fn cdf(&self, x: f64) -> f64 {
+    #[cfg(test)]
+    pub(crate) fn cdf(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return if x < self.lo { 0.0 } else { 1.0 };
         }

@@ -37,6 +37,7 @@ pub fn std_dev(x: &[f64]) -> f64 {
 }
 
 /// One-sample Kolmogorov-Smirnov statistic D = sup |F_n(x) - F(x)|.
+#[cfg(test)]
 pub fn ks_statistic(samples: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
     let mut v = samples.to_vec();
     v.sort_by(f64::total_cmp);
@@ -50,6 +51,7 @@ pub fn ks_statistic(samples: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
 
 /// Asymptotic critical value of D at level alpha = 0.01: 1.628 / sqrt(n) (Smirnov 1948;
 /// the Kolmogorov distribution's 99 % point is 1.628).
+#[cfg(test)]
 pub fn ks_critical_1pct(n: usize) -> f64 {
     1.628 / (n as f64).sqrt()
 }

@@ -15,7 +15,7 @@
 //! above it has the same blocks in exposure, so that run stands for all of them. Between
 //! two reference runs the observables (read at the same exposure) are interpolated
 //! linearly in ln k. The error left against true runs is measured in
-//! docs/PROGNOSTICS.md and by `tests/prognostics.rs`.
+//! docs/PROGNOSTICS.md and by `src/prognostics/tests_calibration.rs`.
 //!
 //! **A load spectrum.** Under a spectrum with fixed shares every bin's wear per cycle is
 //! proportional to k, so the spectrum's wear per cycle sum_i s_i inc_i is too, and the
