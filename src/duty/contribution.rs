@@ -11,7 +11,11 @@ use serde::Serialize;
 /// per-cycle wear sum_i s_i inc_i (so wear between updates grows exactly as in the run),
 /// and the response of bin `observed` (the monitoring bin: what a sensor records at its
 /// reference condition).
-pub(crate) fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
+pub(crate) fn combined_record(
+    run: &SpectrumRun,
+    r: &SpectrumRecord,
+    observed: usize,
+) -> UpdateRecord {
     let inc = r.increment(&run.shares);
     let b = &r.bins[observed.min(r.bins.len() - 1)];
     UpdateRecord {

@@ -61,7 +61,6 @@ impl ActiveFlank {
         }
     }
 
-
     /// Roll length of the addendum (pitch point to tip), m.
     pub(crate) fn addendum_roll_m(&self) -> f64 {
         self.tip_rho_m - self.pitch_rho_m

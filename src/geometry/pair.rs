@@ -103,9 +103,9 @@ pub struct GearPair {
     pub pressure_angle_rad: f64,
     /// Face width b, m.
     pub face_width_m: f64,
-    /// The driving gear (gear 1).
+    /// The pinion (gear 1, on the input shaft).
     pub pinion: Gear,
-    /// The driven gear (gear 2).
+    /// The gear (gear 2, on the output shaft).
     pub gear: Gear,
     /// Operating centre distance a_w, m.
     pub centre_distance_m: f64,

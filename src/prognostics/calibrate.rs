@@ -70,7 +70,8 @@ pub struct Density {
     pub prior_density: f64,
 }
 
-/// The result of calibrating the uncertain parameters against observations: posterior samples and their summaries.
+/// The result of calibrating the uncertain parameters against observations: posterior
+/// samples and their summaries.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Calibration {
     /// The prior the posterior was computed from.

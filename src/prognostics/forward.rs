@@ -250,11 +250,27 @@ fn spectrum_records(
     }
 }
 
+/// Why the condition indicators of a run could not be computed (the case, not the run:
+/// a record that fails only ends the indicator's values).
+#[derive(Debug, thiserror::Error)]
+pub enum IndicatorError {
+    /// The case gives no dynamic model.
+    #[error("{0}")]
+    Model(ModelError),
+    /// The case's signal chain cannot be recorded: one problem per entry.
+    #[error("{}", .0.join("; "))]
+    Chain(Vec<String>),
+}
+
 /// Compute the indicators `qs` asks for at every update of `t` (those not there yet), for
 /// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the
 /// first update whose record fails (the trajectory then reads the indicator as unknown
 /// from there on).
-pub(crate) fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
+pub(crate) fn attach(
+    t: &mut Trajectory,
+    case: &Case,
+    qs: &[Quantity],
+) -> Result<(), IndicatorError> {
     let wanted: Vec<u16> = indicators_of(qs)
         .into_iter()
         .filter(|i| !t.indicators.contains_key(name(*i)))
@@ -268,9 +284,9 @@ pub(crate) fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result
         Some(s) => case.at_bin(s.monitoring_index()),
         None => case.clone(),
     };
-    let model = Model::from_case(case).map_err(|e| e.to_string())?;
-    let mut setup =
-        chain_of(case, None, case.signals.max_input_speed_hz(case)).map_err(|m| m.join("; "))?;
+    let model = Model::from_case(case).map_err(IndicatorError::Model)?;
+    let mut setup = chain_of(case, None, case.signals.max_input_speed_hz(case))
+        .map_err(IndicatorError::Chain)?;
     setup.chain.acquisition.noise = NoiseSpec::None;
     let rows: Vec<Option<Vec<f64>>> = t
         .records

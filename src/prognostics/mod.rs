@@ -22,8 +22,8 @@ pub(crate) mod likelihood;
 pub mod limits;
 pub(crate) mod mcmc;
 pub mod observations;
-pub mod predict;
 pub mod posterior_error;
+pub mod predict;
 pub mod prior;
 pub mod quantity;
 

@@ -33,7 +33,9 @@ pub enum PosteriorError {
     },
     /// The ensemble sampler needs an even number of walkers, at least twice the free
     /// parameters (Goodman & Weare 2010).
-    #[error("the ensemble needs an even number of walkers >= 2 x {free} parameters, got {walkers}")]
+    #[error(
+        "the ensemble needs an even number of walkers >= 2 x {free} parameters, got {walkers}"
+    )]
     Walkers {
         /// Free parameters.
         free: usize,

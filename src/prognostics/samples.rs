@@ -14,7 +14,11 @@ pub(crate) const RANGES: [(f64, f64); 3] = [(1e-22, 1e-11), (0.01, 10.0), (1e-3,
 
 /// Read a samples CSV. Parameters without a column take `defaults`. Errors name the row
 /// and column.
-pub(crate) fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<Theta>, Vec<String>> {
+pub(crate) fn read_samples(
+    text: &str,
+    source: &str,
+    defaults: Theta,
+) -> Result<Vec<Theta>, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());

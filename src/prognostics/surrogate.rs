@@ -37,7 +37,9 @@
 //! invariance: one chain of reference runs per node of a regular grid over them, and
 //! multilinear interpolation between nodes.
 
-use super::forward::{run_duty_trajectory, run_failure, Crossing, FutureDuty, Trajectory};
+use super::forward::{
+    run_duty_trajectory, run_failure, Crossing, FutureDuty, IndicatorError, Trajectory,
+};
 use super::prior::{apply, Prior, Theta};
 use super::quantity::Quantity;
 use crate::config::Case;
@@ -353,7 +355,7 @@ impl Surrogate {
         case: &Case,
         qs: &[Quantity],
         done: &(dyn Fn() + Sync),
-    ) -> Result<(), String> {
+    ) -> Result<(), IndicatorError> {
         for chain in &mut self.chains {
             let c = apply(case, &chain.theta);
             for run in &mut chain.runs {

@@ -127,7 +127,8 @@ pub struct ShaftIndicators {
     pub m8a: f64,
     /// NA4 of the record alone: kurtosis of the residual signal (Zakrajsek 1993).
     pub na4: f64,
-    /// NB4 of the record alone: kurtosis of the band-pass envelope (Zakrajsek, Handschuh & Decker 1994).
+    /// NB4 of the record alone: kurtosis of the band-pass envelope (Zakrajsek, Handschuh &
+    /// Decker 1994).
     pub nb4: f64,
     /// Energy ratio RMS(difference) / RMS(regular) (Swansson 1980).
     pub energy_ratio: f64,

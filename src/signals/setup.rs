@@ -19,7 +19,6 @@ pub struct ChainSetup {
     pub warnings: Vec<String>,
 }
 
-
 /// The chain of `case` with `path` (the generic housing when `None`), checked against
 /// the pair at its operating point, and at the highest input speed `max_input_hz` a
 /// record will see (a run-up's end, a dataset's fastest case).

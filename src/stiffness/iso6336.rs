@@ -30,7 +30,7 @@ pub const LOW_LOAD_LIMIT_N_PER_MM: f64 = 100.0;
 /// Inputs of Method B. Angles in rad; stiffness-related inputs dimensionless.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Iso6336Input {
-    /// Number of teeth of the pinion z_1 (a real number so virtual numbers fit).
+    /// Number of teeth of the pinion z_1.
     pub teeth_pinion: f64,
     /// Number of teeth of the gear z_2.
     pub teeth_gear: f64,

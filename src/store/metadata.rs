@@ -9,7 +9,8 @@ use crate::study::Model;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
-/// What a run records about itself in `metadata.json`: the program, the command, the resolved case and its checksum.
+/// What a run records about itself in `metadata.json`: the program, the command, the
+/// resolved case and its checksum.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunMetadata {
     /// Always `"gearwear"`.

@@ -4,7 +4,8 @@
 
 use crate::config::case::SurfaceSection;
 
-/// Composite RMS roughness as a piecewise linear function of the maximum wear depth (paper section 4.1), constant outside its table.
+/// Composite RMS roughness as a piecewise linear function of the maximum wear depth
+/// (paper section 4.1), constant outside its table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RoughnessLaw {
     wear_m: Vec<f64>,
