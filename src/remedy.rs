@@ -4,7 +4,7 @@
 //! an argument of the job rather than a case key: the output folder, resuming, a sweep
 //! axis, the run budget. The command line spells those as flags (`--out`), Python as
 //! keyword arguments (`out`), so a library message never spells one: it holds an
-//! [`Arg`], and the front end renders the message with its own [`Spelling`]
+//! [`Arg`], and the front end renders the message with its own `Spelling`
 //! ([`Words::render`], [`Problem::render`]). `Display` renders plain words ("the output
 //! folder") for callers of the library itself, and is what `tests/no_flags.rs` checks
 //! for flags.

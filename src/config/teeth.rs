@@ -7,7 +7,7 @@
 //! identical, perfect teeth and serialises exactly as before (so summaries and checksums
 //! of such cases do not change). Checks that need only the case (array lengths against
 //! the numbers of teeth, tooth indices, which keys a fault kind takes) live here
-//! ([`teeth_problems`]); checks that need the geometry (a crack deeper than the tooth, a
+//! (`teeth_problems`); checks that need the geometry (a crack deeper than the tooth, a
 //! spall longer than the profile, a relief longer than the addendum) are made when the
 //! model builds its tooth inputs (`study::teeth::ToothInputs::from_case`).
 
@@ -193,7 +193,7 @@ pub(crate) const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
 
 /// One `[[fault]]` table as the case file writes it: sizes in mm, um and deg, the keys a
 /// kind does not take or leaves to their default absent. Read, checked
-/// ([`teeth_problems`]) and resolved into a [`ToothFault`] when the case is loaded; a case
+/// (`teeth_problems`) and resolved into a [`ToothFault`] when the case is loaded; a case
 /// serialises its faults back to these tables, unchanged.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -208,7 +208,7 @@ pub struct FaultTable {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_depth_mm: Option<f64>,
     /// Crack: angle of its path to the tooth centreline, deg (absent:
-    /// [`DEFAULT_CRACK_ANGLE_DEG`]).
+    /// `DEFAULT_CRACK_ANGLE_DEG`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_angle_deg: Option<f64>,
     /// Crack: share of the face width it has run across (absent: the whole face).
@@ -343,7 +343,7 @@ impl TryFrom<FaultTable> for ToothFault {
 
     /// The fault of `table`, or the problems that keep it from being one (its keys against
     /// its kind, a negative tooth; the tooth against the gear's teeth is checked with the
-    /// case, [`teeth_problems`]).
+    /// case, `teeth_problems`).
     fn try_from(table: FaultTable) -> Result<Self, String> {
         let mut p = key_problems(&table, 0);
         let tooth = usize::try_from(table.tooth).map_err(|_| {

@@ -31,7 +31,7 @@ pub(crate) fn combined_record(
     }
 }
 
-/// The run as single-point updates ([`combined_record`] of each).
+/// The run as single-point updates (`combined_record` of each).
 pub fn combined_run(run: &SpectrumRun, observed: usize) -> WearRun {
     WearRun {
         mode: run.mode,

@@ -12,12 +12,12 @@
 //! - radial run-out (informative annex) F_rT = 0.9 F_pT.
 //!
 //! The standard rounds published values (5.2.3: above 10 um to 1 um, 5 to 10 um to
-//! 0.5 um, below 5 um to 0.1 um); [`round_iso`] does so for reports, the random model
+//! 0.5 um, below 5 um to 0.1 um); `round_iso` does so for reports, the random model
 //! uses the unrounded values. The 2013 edition has classes 1 to 11 and says its formulas
 //! are not to be extrapolated; class 12 is one more step of sqrt(2), an extrapolation of
 //! the 2013 formulas (not the grade 12 of the 1995 edition, whose formulas differ).
 //!
-//! Random model ([`draw_gear`]; the standard gives tolerances, not a distribution, so
+//! Random model (`draw_gear`; the standard gives tolerances, not a distribution, so
 //! this is our choice): a tooth's position error is a once-per-revolution wave plus its
 //! own residual, e_i = c cos(2 pi i / z) + s sin(2 pi i / z) + r_i, taken about the mean
 //! (a common offset is a rigid rotation). The wave's components c, s are normal with
@@ -34,7 +34,7 @@
 //! the positions) <= F_pT, and on every tooth |f_Halpha| <= f_HalphaT,
 //! |f_falpha| <= f_falphaT and the total profile deviation F_alpha <= F_alphaT; otherwise
 //! the seeded stream draws again (a manufactured gear of the class is one that was
-//! accepted). A gear that no draw of [`MAX_DRAWS`] passes is an error, not kept.
+//! accepted). A gear that no draw of `MAX_DRAWS` passes is an error, not kept.
 
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};

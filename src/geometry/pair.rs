@@ -36,7 +36,7 @@ pub struct Gear {
     /// Hub bore radius, m: the case's, or r_f / 2 when `"derived"`.
     pub bore_radius_m: f64,
     /// Half the angle the tooth's footing spans on the root circle, measured to where the
-    /// root fillet meets the root circle (rad); see [`fillet_junction_half_angle_rad`].
+    /// root fillet meets the root circle (rad); see `fillet_junction_half_angle_rad`.
     pub fillet_junction_half_angle_rad: f64,
 }
 

@@ -11,7 +11,7 @@ pub(crate) const PERCENTILES: [f64; 5] = [5.0, 25.0, 50.0, 75.0, 95.0];
 pub struct Band {
     /// Pinion cycle counts of the grid the percentiles are given at.
     pub cycles: Vec<f64>,
-    /// percentiles[i][g]: percentile PERCENTILES[i] at cycles[g]; NaN where undetermined.
+    /// `percentiles[i][g]`: percentile `PERCENTILES[i]` at `cycles[g]`; NaN where undetermined.
     pub percentiles: Vec<Vec<f64>>,
     /// Ensemble members with a value at each cycle count.
     pub valid: Vec<usize>,

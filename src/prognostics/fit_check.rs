@@ -8,21 +8,21 @@
 //! (`likelihood`): the mixture p(y) = 1/S sum_s N(y; f_q(c_i; theta_s), sigma_i^2) (Gelman
 //! et al., Bayesian Data Analysis, 3rd ed., section 6.3), sigma_i the observation's given
 //! sigma, or the quantity's inferred noise scale (`likelihood::noise_scales`). Its central
-//! [`COVERAGE`] band [l_i, u_i] is solved from the mixture's distribution function (no
+//! `COVERAGE` band [l_i, u_i] is solved from the mixture's distribution function (no
 //! random draws: the check is a function of the samples alone). An observation outside
 //! lies `excess_i = (y_i - u_i) / sigma_i` (above) or `(l_i - y_i) / sigma_i` (below)
 //! noise standard deviations beyond the band.
 //!
-//! Warning rule, both parts at false-alarm probability [`FALSE_ALARM`] for data the model
+//! Warning rule, both parts at false-alarm probability `FALSE_ALARM` for data the model
 //! generated (the posterior's own spread widens the band and only lowers it, as does the
 //! fit's pull of the predictions towards the data):
 //! - **count**: of n observations, each is outside with probability 1 - COVERAGE, so the
 //!   count outside is Binomial(n, 1 - COVERAGE); more than its upper FALSE_ALARM tail
-//!   point ([`max_outside`]) warns;
+//!   point (`max_outside`) warns;
 //! - **distance**: one observation beyond the band by e noise sigmas, with the band's edge
 //!   at least z = 1.96 sigma from the model value, has probability at most
 //!   2 (1 - Phi(z + e)) per observation; over n of them (Bonferroni) that is below
-//!   FALSE_ALARM for e > Phi^-1(1 - FALSE_ALARM / (2 n)) - z ([`excess_limit`]).
+//!   FALSE_ALARM for e > Phi^-1(1 - FALSE_ALARM / (2 n)) - z (`excess_limit`).
 //!
 //! With inferred noise the band is scaled by the residuals themselves: a misfit raises
 //! the noise scale instead of leaving observations outside, so the check sees only its

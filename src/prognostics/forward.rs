@@ -18,7 +18,7 @@
 //! state is recorded through the case's `[signals]` chain with the built-in generic
 //! housing (the record `gearwear signals` writes, measurement noise left out: noise
 //! belongs to the likelihood's noise model) and the indicator is computed from that record
-//! ([`attach`]). Between updates it is read as every response quantity is (linear in
+//! (`attach`). Between updates it is read as every response quantity is (linear in
 //! cycles).
 
 use super::indicator::{name, value};
@@ -49,7 +49,7 @@ pub struct Trajectory {
     pub records: Vec<UpdateRecord>,
     /// Why the run stopped before `requested_cycles` (None: it reached them).
     pub failure: Option<String>,
-    /// Condition indicators at the first updates, by name ([`attach`]).
+    /// Condition indicators at the first updates, by name (`attach`).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub indicators: BTreeMap<String, Vec<f64>>,
 }
@@ -153,7 +153,7 @@ pub struct FutureDuty {
 
 /// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
 /// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
-/// Under a load spectrum the records are the spectrum's ([`combined_record`]: its wear
+/// Under a load spectrum the records are the spectrum's (`combined_record`: its wear
 /// per cycle, the monitoring bin's response).
 pub fn run_trajectory(
     case: &Case,

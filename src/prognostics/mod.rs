@@ -4,8 +4,8 @@
 //! Pieces, data flowing down: [`observations`] (the CSV of measurements) and [`prior`]
 //! (the `[calibration]` table) -> [`forward`] (one true wear study, read at any cycle
 //! count) -> [`surrogate`] (reference runs that stand for every wear coefficient, by the
-//! k x N invariance of Archard wear) -> [`likelihood`] (the noise model) -> [`grid`]
-//! (exact posterior of one or two parameters) or [`mcmc`] (ensemble sampler) ->
+//! k x N invariance of Archard wear) -> `likelihood` (the noise model) -> [`grid`]
+//! (exact posterior of one or two parameters) or `mcmc` (ensemble sampler) ->
 //! [`calibrate`] -> [`predict`] (Monte Carlo ensemble, fans, remaining life). Randomness
 //! comes from [`crate::rng`]: one stream per sample index, so runs are reproducible and
 //! independent of the thread count and of sharding. docs/PROGNOSTICS.md states the

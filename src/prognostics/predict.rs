@@ -88,7 +88,7 @@ pub struct SampleOutcome {
     /// Cycles to the wear limit (NotReached: beyond the horizon; Unknown: the forward
     /// run failed before).
     pub life: Crossing,
-    /// values[f][g]: FAN_QUANTITIES[f] at grid point g; None past a failure.
+    /// `values[f][g]`: `FAN_QUANTITIES[f]` at grid point g; None past a failure.
     pub values: Vec<Vec<Option<f64>>>,
     /// Why the run stopped before the horizon.
     pub failure: Option<String>,

@@ -10,7 +10,7 @@
 //! blocks limited by `wear.block_cycles` instead (small k) are finer, and differ.
 //!
 //! **The k axis.** Reference runs are made with the case's own block scheme at wear
-//! coefficients k_0 = k_min, k_j = k_0 R^j (R = [`K_NODE_RATIO`]), up to the first one
+//! coefficients k_0 = k_min, k_j = k_0 R^j (R = `K_NODE_RATIO`), up to the first one
 //! whose blocks are all cut by the threshold (or that fails, or reaches k_max): every k
 //! above it has the same blocks in exposure, so that run stands for all of them. Between
 //! two reference runs the observables (read at the same exposure) are interpolated
@@ -25,7 +25,7 @@
 //! **A change of duty** ([`FutureDuty`], a future spectrum from N0 cycles on) breaks it:
 //! the switch falls at the exposure k N0, which depends on k. So with a future duty every
 //! node of k is its own run (nothing stands for the larger k), on a finer grid
-//! ([`future_node_ratio`]), and the runs are read in two phases
+//! (`future_node_ratio`), and the runs are read in two phases
 //! (`prognostics::surrogate_duty`): before the switch at the same exposure from the node
 //! at or above k (its switch comes later in exposure, so it is still in the first phase:
 //! exact by the invariance), after it at the same exposure since the switch, weighted

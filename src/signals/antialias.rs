@@ -1,6 +1,6 @@
 //! The anti-alias filter of the acquisition and decimation to the sampling rate.
 //!
-//! The "analog" signal is represented at an internal rate D f_s (D = [`OVERSAMPLING`]).
+//! The "analog" signal is represented at an internal rate D f_s (D = `OVERSAMPLING`).
 //! Before it is decimated to f_s it passes a linear-phase low-pass FIR designed by the
 //! Kaiser window method (Kaiser 1974; Oppenheim & Schafer, *Discrete-Time Signal
 //! Processing*, 3rd ed., Sect. 7.5.3):

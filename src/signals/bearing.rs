@@ -16,12 +16,12 @@ use crate::dynamics::summary::evaluated_periods;
 pub(crate) const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
 
 /// Bearing forces on the housing over one period of a periodic response, N, in
-/// [`INPUTS`] order, with the times of the samples.
+/// `INPUTS` order, with the times of the samples.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BearingForces {
     /// Time of each sample from the start of the period, s.
     pub time_s: Vec<f64>,
-    /// Force of each input at each sample, N ([`INPUTS`] order).
+    /// Force of each input at each sample, N (`INPUTS` order).
     pub force_n: [Vec<f64>; 4],
     /// Length of the period, s.
     pub period_s: f64,

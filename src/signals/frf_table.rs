@@ -59,12 +59,12 @@ impl Frf {
 pub struct FrfTable {
     /// Sensor names, in channel order.
     pub sensors: Vec<String>,
-    /// `frf[s][j]`: sensor s, input j ([`INPUTS`] order).
+    /// `frf[s][j]`: sensor s, input j (`INPUTS` order).
     pub frf: Vec<[Frf; 4]>,
 }
 
 impl FrfTable {
-    /// Accelerance from input `j` ([`INPUTS`] order) to sensor `s` at `f_hz` (Hz), m/s^2 per N.
+    /// Accelerance from input `j` (`INPUTS` order) to sensor `s` at `f_hz` (Hz), m/s^2 per N.
     pub fn at(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         self.frf[s][j].at(f_hz)
     }

@@ -2,13 +2,13 @@
 //! Kaiser-windowed sinc (Smith, "Digital Audio Resampling", CCRMA; Oppenheim & Schafer,
 //! Sect. 4.6 and 7.5.3).
 //!
-//! x(t) = sum_n x[n] sinc(f_s t - n) w(f_s t - n), w the Kaiser window of half-width
-//! [`HALF_WIDTH`] samples with beta for 100 dB. The kernel passes content up to 0.4 f_s
+//! `x(t) = sum_n x[n] sinc(f_s t - n) w(f_s t - n)`, w the Kaiser window of half-width
+//! `HALF_WIDTH` samples with beta for 100 dB. The kernel passes content up to 0.4 f_s
 //! with an error below ~1e-5 of its amplitude: the recorded channels are band-limited to
 //! f_s / 2.56 by the anti-alias filter (`super::antialias`), so this resamples them to
 //! any angle grid without the error of a polynomial interpolation, which at 0.4 f_s would
 //! be tens of percent. Samples beyond the ends of the signal count as zero, so within
-//! [`HALF_WIDTH`] samples of either end the interpolation is not band-limited; callers keep
+//! `HALF_WIDTH` samples of either end the interpolation is not band-limited; callers keep
 //! away from the ends.
 
 use super::antialias::{bessel_i0, kaiser_beta};

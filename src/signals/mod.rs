@@ -4,7 +4,7 @@
 //! The chain: bearing forces ([`bearing`]) -> transfer path ([`transfer`], [`frf_table`])
 //! -> anti-alias filter and sampling ([`antialias`], [`periodic`], [`record`]) with
 //! measurement noise ([`noise`]) and a tachometer ([`tachometer`]); then the
-//! time-synchronous average ([`tsa`], [`interp`]), its derived signals ([`components`])
+//! time-synchronous average (`tsa`, [`interp`]), its derived signals ([`components`])
 //! and the condition indicators ([`indicators`]).
 
 pub mod analysis;

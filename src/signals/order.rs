@@ -25,7 +25,7 @@ pub struct OrderMap {
     pub orders: Vec<f64>,
     /// Mean shaft speed of each block, Hz.
     pub speed_hz: Vec<f64>,
-    /// amplitude[block][bin].
+    /// `amplitude[block][bin]`.
     pub amplitude: Vec<Vec<f64>>,
 }
 
@@ -98,7 +98,7 @@ pub(crate) struct CampbellMap {
     pub frequency_hz: Vec<f64>,
     /// Tracked shaft's mean speed over each block, Hz.
     pub speed_hz: Vec<f64>,
-    /// amplitude[block][bin].
+    /// `amplitude[block][bin]`.
     pub amplitude: Vec<Vec<f64>>,
 }
 

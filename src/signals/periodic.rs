@@ -8,7 +8,7 @@
 //! `dynamics::spectrum`). A linear filter multiplies each c_k by its response at k / T:
 //! for a periodic input this is the filter's steady-state output, exactly. To be sampled
 //! at arbitrary instants, the series is transformed back onto a fine uniform grid of at
-//! least [`GRID_PER_SAMPLE`] points per sampling interval and interpolated there with a
+//! least `GRID_PER_SAMPLE` points per sampling interval and interpolated there with a
 //! four-point Lagrange cubic: for content below f_s / 2 the grid holds >= 32 points per
 //! cycle, where the cubic's amplitude error is below 3e-6.
 

@@ -27,7 +27,7 @@ pub struct StructuralMode {
     /// Viscous modal damping ratio zeta_r.
     pub damping_ratio: f64,
     /// Modal constant G_rsj per sensor s (outer) and input j (inner,
-    /// [`INPUTS`](super::bearing::INPUTS) order), 1/kg (m/s^2 per N far above the mode).
+    /// `INPUTS` order), 1/kg (m/s^2 per N far above the mode).
     pub gains_per_kg: Vec<[f64; 4]>,
 }
 

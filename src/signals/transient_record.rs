@@ -4,11 +4,11 @@
 //! drive's angle.
 //!
 //! 1. The integrator's steps, linear between their ends, are averaged over the cells of
-//!    the internal grid (rate D f_s, `super::antialias::OVERSAMPLING`; [`ForceSampler`]),
+//!    the internal grid (rate D f_s, `super::antialias::OVERSAMPLING`; `ForceSampler`),
 //!    and the cells' box filter is divided out in step 3.
 //! 2. Before t = 0 the periodic steady state at the starting speed is prepended (a lead-in
-//!    of [`LEAD_S`]), so the housing is in its steady vibration when the record starts;
-//!    the integration runs [`TAIL_S`] past the record's end.
+//!    of `LEAD_S`), so the housing is in its steady vibration when the record starts;
+//!    the integration runs `TAIL_S` past the record's end.
 //! 3. Sensor s = IFFT[H_aa(f) sum_j A_sj(f) F_j(f)] over the zero-padded grid: the linear
 //!    path and the zero-phase anti-alias filter as one product (the same response the
 //!    periodic records use), then every D-th sample from t = 0.

@@ -15,7 +15,7 @@
 //! or the flank's extension) is the caller's choice ([`FilletSettings`],
 //! docs/MODEL.md section 2). The fit holds for 1.4 <= h_f <= 7 and
 //! 0.01 <= theta_f <= 0.12 rad; outside it the polynomial is extrapolated, which the
-//! caller may refuse ([`FilletFoundation::outside_fit`]).
+//! caller may refuse (`FilletFoundation::outside_fit`).
 
 use super::potential_energy::ToothBeam;
 use crate::config::case::{FilletRootAngle, StiffnessSection};

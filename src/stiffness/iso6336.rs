@@ -87,7 +87,7 @@ impl fmt::Display for Iso6336Error {
 
 impl std::error::Error for Iso6336Error {}
 
-/// Stiffness per unit face width c [N/(mm um)] times face width b [m], in N/m:
+/// Stiffness per unit face width c (N/(mm um)) times face width b (m), in N/m:
 /// c b_mm = N/um, times 1e6 um/m.
 pub fn per_width_to_n_per_m(c_n_per_mm_um: f64, face_width_m: f64) -> f64 {
     c_n_per_mm_um * (face_width_m * 1e3) * 1e6

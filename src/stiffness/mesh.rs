@@ -80,7 +80,7 @@ impl MeshStiffness {
     /// (the path of contact, epsilon_alpha base pitches long; the case's
     /// `stiffness.table_points_per_mesh_period` is the intended value), with the fillet
     /// foundation in the default convention, extrapolated with a warning outside
-    /// Sainsot's range ([`FilletSettings::lenient`]); a case's own settings go through
+    /// Sainsot's range (`FilletSettings::lenient`); a case's own settings go through
     /// [`MeshStiffness::with_fillet`].
     pub fn new(
         pair: &GearPair,
