@@ -110,9 +110,9 @@ fn unit_span(prior: &Prior, i: usize) -> f64 {
 fn plot_x(prior: &Prior, i: usize, u: f64) -> f64 {
     let p = &prior.params[i];
     if p.log {
-        p.from_unit(u).log10()
+        p.value_at_unit(u).log10()
     } else {
-        p.from_unit(u)
+        p.value_at_unit(u)
     }
 }
 
@@ -169,7 +169,7 @@ pub fn calibrate(
         let draws = g.draw(set.samples, set.seed);
         out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
         for (a, &i) in free.iter().enumerate() {
-            let q = |p| prior.params[i].from_unit(g.quantile_unit(a, p));
+            let q = |p| prior.params[i].value_at_unit(g.quantile_unit(a, p));
             out.summary.push(ParamSummary {
                 parameter: prior.params[i].parameter,
                 median: q(0.5),
@@ -212,7 +212,7 @@ pub fn calibrate(
         let c = run.coordinate(a);
         let all: Vec<f64> = flat.iter().map(|u| u[a]).collect();
         let tau = autocorrelation_time(&c);
-        let q = |p| prior.params[i].from_unit(quantile(&all, p));
+        let q = |p| prior.params[i].value_at_unit(quantile(&all, p));
         out.summary.push(ParamSummary {
             parameter: prior.params[i].parameter,
             median: q(0.5),

@@ -247,7 +247,7 @@ mod tests {
         // 0.3 + 1.6449 sd (normal table).
         let prior = Prior::from_case(&Case::default()).unwrap();
         let ll = |t: &Theta| {
-            let u = prior.params[0].to_unit(t[0]);
+            let u = prior.params[0].unit_of(t[0]);
             Some(-0.5 * ((u - 0.3) / 1e-3).powi(2))
         };
         let g = GridPosterior::compute(&prior, &ll, 200, &|| {}).unwrap();

@@ -189,7 +189,7 @@ mod tests {
         let prior = Prior::from_case(&case).unwrap();
         let p = prior.clone();
         let ll = move |t: &Theta| {
-            let u: Vec<f64> = (0..3).map(|i| p.params[i].to_unit(t[i])).collect();
+            let u: Vec<f64> = (0..3).map(|i| p.params[i].unit_of(t[i])).collect();
             let (a, b) = ((u[0] - 0.3) / 0.05, (u[1] - 0.5) / 0.1);
             let q = (a * a - 1.8 * a * b + b * b) / (1.0 - 0.81) + ((u[2] - 0.6) / 0.08).powi(2);
             Some(-0.5 * q)

@@ -81,7 +81,7 @@ impl ParamPrior {
 
     /// Unit coordinate of a value (0 at lo, 1 at hi; log scale for a log prior).
     #[cfg(test)]
-    pub(crate) fn to_unit(&self, x: f64) -> f64 {
+    pub(crate) fn unit_of(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return 0.5;
         }
@@ -93,7 +93,7 @@ impl ParamPrior {
     }
 
     /// Value at a unit coordinate.
-    pub(crate) fn from_unit(&self, u: f64) -> f64 {
+    pub(crate) fn value_at_unit(&self, u: f64) -> f64 {
         if self.is_fixed() {
             return self.lo;
         }
@@ -110,7 +110,7 @@ impl ParamPrior {
         if self.is_fixed() {
             return if x < self.lo { 0.0 } else { 1.0 };
         }
-        self.to_unit(x).clamp(0.0, 1.0)
+        self.unit_of(x).clamp(0.0, 1.0)
     }
 }
 
@@ -204,7 +204,7 @@ impl Prior {
         let free = self.free();
         for (i, p) in self.params.iter().enumerate() {
             t[i] = match free.iter().position(|f| *f == i) {
-                Some(j) => p.from_unit(u[j]),
+                Some(j) => p.value_at_unit(u[j]),
                 None => p.lo,
             };
         }
@@ -268,7 +268,7 @@ mod tests {
         assert!((p.params[0].hi / (k * 100.0) - 1.0).abs() < 1e-12);
         assert_eq!(p.free(), vec![0]);
         // The case's k sits in the middle of the log scale.
-        assert!((p.params[0].to_unit(k) - 0.5).abs() < 1e-12);
+        assert!((p.params[0].unit_of(k) - 0.5).abs() < 1e-12);
         let t = p.theta_at(&[0.5]);
         assert!((t[0] / k - 1.0).abs() < 1e-12);
         assert_eq!((t[1], t[2]), (1.0, case.operating.load_torque_nm));
