@@ -1,6 +1,6 @@
 //! The signals derived from a time-synchronous average (one revolution of a shaft, so
 //! DFT bin k is shaft order k), as the condition-monitoring literature defines them
-//! (Stewart 1977; McFadden 1987; Zakrajsek, Townsend & Decker 1993, NASA TM-106032;
+//! (Stewart 1977; McFadden 1987; Zakrajsek, Townsend & Decker 1993, NASA TM-105950;
 //! Lebold et al. 2000, "Review of vibration analysis methods for gearbox diagnostics and
 //! prognostics", 54th MFPT):
 //!
@@ -31,6 +31,8 @@ pub struct ComponentSettings {
     /// Sideband orders either side of each mesh harmonic counted as regular (1: the
     /// first-order sidebands of the textbook definitions).
     pub sidebands: usize,
+    /// Mesh harmonics H whose amplitudes FM0 sums (h = 1..=H; `signals.mesh_harmonics`).
+    pub mesh_harmonics: usize,
 }
 
 impl Default for ComponentSettings {
@@ -38,6 +40,7 @@ impl Default for ComponentSettings {
         Self {
             shaft_harmonics: 2,
             sidebands: 1,
+            mesh_harmonics: 4,
         }
     }
 }
@@ -50,6 +53,8 @@ pub struct Components {
     /// Samples per revolution M.
     pub samples: usize,
     pub mesh_order: usize,
+    /// Mesh harmonics FM0 sums ([`ComponentSettings::mesh_harmonics`]).
+    pub mesh_harmonic_count: usize,
     pub regular: Vec<f64>,
     pub difference: Vec<f64>,
     pub residual: Vec<f64>,
@@ -65,10 +70,12 @@ impl Components {
             .map_or(0.0, |c| 2.0 * c.norm() / self.samples as f64)
     }
 
-    /// Mesh harmonics h z inside the TSA's band (h >= 1, h z below M / 2).
+    /// The orders h z of mesh harmonics h = 1..=H, H = [`ComponentSettings::mesh_harmonics`]
+    /// (the setup checks that they lie in the recorded band; an order at or above M / 2,
+    /// which a TSA cannot hold, is left out).
     pub fn mesh_harmonics(&self) -> impl Iterator<Item = usize> + '_ {
         let top = self.samples / 2;
-        (1..)
+        (1..=self.mesh_harmonic_count)
             .map(move |h| h * self.mesh_order)
             .take_while(move |k| *k < top)
     }
@@ -135,6 +142,7 @@ pub fn components(tsa: &[f64], mesh_order: usize, settings: ComponentSettings) -
         spectrum,
         samples: m,
         mesh_order: z,
+        mesh_harmonic_count: settings.mesh_harmonics,
         regular,
         difference,
         residual,
