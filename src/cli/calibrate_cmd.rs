@@ -2,11 +2,11 @@
 
 use super::args::CalibrateArgs;
 use super::output::execute;
-use super::CliError;
-use crate::app::{CalibrateJob, CalibrationOptions, TableSource};
-use crate::study::budget::Budget;
+use super::error::CliError;
+use gearwear::app::{CalibrateJob, CalibrationOptions, TableSource};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&CalibrateJob {
         case: a.case.load()?,
         observations: TableSource::File(a.observations.clone()),

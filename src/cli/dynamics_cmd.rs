@@ -2,11 +2,11 @@
 
 use super::args::DynamicsArgs;
 use super::output::execute;
-use super::CliError;
-use crate::app::{DynamicsJob, TransmissionErrorSource};
-use crate::study::budget::Budget;
+use super::error::CliError;
+use gearwear::app::{DynamicsJob, TransmissionErrorSource};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&DynamicsJob {
         case: a.case.load()?,
         transmission_error: a

@@ -2,11 +2,11 @@
 
 use super::args::RunArgs;
 use super::output::execute;
-use super::CliError;
-use crate::app::RunJob;
-use crate::study::budget::Budget;
+use super::error::CliError;
+use gearwear::app::RunJob;
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&RunJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),

@@ -3,11 +3,11 @@
 
 use super::args::StiffnessArgs;
 use super::output::execute;
-use super::CliError;
-use crate::app::StiffnessJob;
-use crate::study::budget::Budget;
+use super::error::CliError;
+use gearwear::app::StiffnessJob;
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&StiffnessJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),
