@@ -188,11 +188,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     // Overrides and sweep axes.
     let e = load_case("", &["gear.module_mm=2\n[x]".into(), "gear=1".into()]).unwrap_err();
     plain.extend(e.messages());
-    cli.extend(
-        e.problems
-            .iter()
-            .map(|w| (w.render(flag::flag), "--set")),
-    );
+    cli.extend(e.problems.iter().map(|w| (w.render(flag::flag), "--set")));
     for bad in [
         "speed",
         "a=1",

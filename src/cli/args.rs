@@ -1,8 +1,8 @@
 //! Command-line arguments (clap derive).
 
+use clap::{Args, Parser, Subcommand};
 use gearwear::config::{load_case_in, Case};
 use gearwear::study::budget::Budget;
-use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
 use super::error::CliError;

@@ -1,8 +1,8 @@
 //! `gearwear calibrate`: the posterior of the uncertain parameters given observations.
 
 use super::args::CalibrateArgs;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::{CalibrateJob, CalibrationOptions, TableSource};
 use gearwear::study::budget::Budget;
 

@@ -1,9 +1,9 @@
 //! `gearwear dataset` and `gearwear dataset-merge`: parse, run the job, print.
 
 use super::error::flag;
+use super::error::CliError;
 use super::output::execute;
 use super::signals_args::{DatasetArgs, DatasetMergeArgs};
-use super::error::CliError;
 use gearwear::app::{DatasetJob, DatasetMergeJob, DesignSource};
 use gearwear::study::budget::Budget;
 use gearwear::study::dataset::Shard;

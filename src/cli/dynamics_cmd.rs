@@ -1,8 +1,8 @@
 //! `gearwear dynamics`: one steady-state evaluation of the tribo-dynamic model.
 
 use super::args::DynamicsArgs;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::{DynamicsJob, TransmissionErrorSource};
 use gearwear::study::budget::Budget;
 

@@ -1,8 +1,8 @@
 //! `gearwear load-spectrum`: the load spectrum of a measured torque / speed history.
 
 use super::args::{InterpolationArg, LevelArg, LoadSpectrumArgs, ShaftArg};
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::{LoadSpectrumJob, TableSource};
 use gearwear::config::case::TorqueShaft;
 use gearwear::duty::ldd::{Interpolation, LddSettings, Level};

@@ -5,8 +5,8 @@
 //! out.txt` keeps them; progress bars, warnings and log lines go to standard error.
 //! `--quiet` drops the headline.
 
-use super::progress::Terminal;
 use super::error::CliError;
+use super::progress::Terminal;
 use gearwear::app::{Job, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 

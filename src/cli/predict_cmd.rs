@@ -3,8 +3,8 @@
 
 use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
 use super::error::flag;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::{
     ForwardModel, FutureInput, PredictJob, PredictMergeJob, PredictOptions, SpectrumSource,
     TableSource,

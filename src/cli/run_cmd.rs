@@ -1,8 +1,8 @@
 //! `gearwear run`: the paper's whole section 4 from one command, with a report.
 
 use super::args::RunArgs;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::RunJob;
 use gearwear::study::budget::Budget;
 

@@ -1,8 +1,8 @@
 //! `gearwear signals`: one record of the case as a sensor records it.
 
+use super::error::CliError;
 use super::output::execute;
 use super::signals_args::SignalsArgs;
-use super::error::CliError;
 use gearwear::app::{SignalsJob, TransferPathSource};
 use gearwear::study::budget::Budget;
 

@@ -2,8 +2,8 @@
 //! sharing and the quasi-static transmission error (paper Figure 2).
 
 use super::args::StiffnessArgs;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::StiffnessJob;
 use gearwear::study::budget::Budget;
 

@@ -5,8 +5,8 @@
 
 use super::args::{ContinuationArg, SweepArgs, SweepMergeArgs, SweepRunArg};
 use super::error::flag;
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::{SweepJob, SweepMergeJob};
 use gearwear::study::budget::Budget;
 use gearwear::study::sweep::{parse_vary, Continuation, Shard, SweepPlan, SweepRun};

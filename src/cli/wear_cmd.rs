@@ -2,8 +2,8 @@
 //! checkpoint after every update.
 
 use super::args::{WearArgs, WearModeArg};
-use super::output::execute;
 use super::error::CliError;
+use super::output::execute;
 use gearwear::app::WearJob;
 use gearwear::study::budget::Budget;
 use gearwear::study::wear_loop::WearMode;

@@ -54,6 +54,23 @@ impl TeethSection {
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
+
+    /// Whether the section makes any tooth differ from the paper's: a drawn accuracy
+    /// class, or an error or run-out that is not zero. Zero errors, a zero run-out (its
+    /// phase then meaningless) and a seed alone change nothing.
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        self.accuracy_grade.is_some()
+            || any(&self.pitch_error_pinion_um)
+            || any(&self.pitch_error_gear_um)
+            || nonzero(&self.runout_pinion_um)
+            || nonzero(&self.runout_gear_um)
+            || any(&self.profile_slope_pinion_um)
+            || any(&self.profile_slope_gear_um)
+            || any(&self.profile_form_pinion_um)
+            || any(&self.profile_form_gear_um)
+    }
 }
 
 /// Shape of a relief along its length.
@@ -95,6 +112,18 @@ pub struct ModificationSection {
 impl ModificationSection {
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
+    }
+
+    /// Whether the section removes material anywhere: a relief of a non-zero amount, or a
+    /// user profile deviation that is not zero somewhere (a length, a shape or roll angles
+    /// alone change nothing).
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        nonzero(&self.tip_relief_um)
+            || nonzero(&self.root_relief_um)
+            || any(&self.profile_deviation_pinion_um)
+            || any(&self.profile_deviation_gear_um)
     }
 }
 
@@ -183,6 +212,16 @@ pub struct FaultSpec {
 }
 
 impl FaultSpec {
+    /// Whether the fault changes its tooth: a crack of zero depth removes nothing (its
+    /// angle and width then meaningless); a spall and a broken tip have required sizes
+    /// above zero.
+    pub fn changes_tooth(&self) -> bool {
+        match self.kind {
+            FaultKind::Crack => self.crack_depth_mm.is_some_and(|d| d != 0.0),
+            FaultKind::Spall | FaultKind::BrokenTip => true,
+        }
+    }
+
     /// The kind-specific keys given, by name.
     fn given(&self) -> [(&'static str, bool); 8] {
         [
