@@ -33,6 +33,10 @@ pub struct ComponentSettings {
     pub sidebands: usize,
     /// Mesh harmonics H whose amplitudes FM0 sums (h = 1..=H; `signals.mesh_harmonics`).
     pub mesh_harmonics: usize,
+    /// Highest order of the TSA's passband (None: every order): the orders above, where
+    /// the angular resampling is no longer flat (`super::interp::PASSBAND_OVER_FS`), are
+    /// left out of every derived signal and TSA indicator.
+    pub top_order: Option<usize>,
 }
 
 impl Default for ComponentSettings {
@@ -41,6 +45,7 @@ impl Default for ComponentSettings {
             shaft_harmonics: 2,
             sidebands: 1,
             mesh_harmonics: 4,
+            top_order: None,
         }
     }
 }
@@ -55,6 +60,9 @@ pub struct Components {
     pub mesh_order: usize,
     /// Mesh harmonics FM0 sums ([`ComponentSettings::mesh_harmonics`]).
     pub mesh_harmonic_count: usize,
+    /// The TSA restricted to its passband ([`ComponentSettings::top_order`]), mean removed:
+    /// what FM0's peak-to-peak and the TSA's RMS are taken of.
+    pub in_band: Vec<f64>,
     pub regular: Vec<f64>,
     pub difference: Vec<f64>,
     pub residual: Vec<f64>,
@@ -122,6 +130,12 @@ pub fn components(tsa: &[f64], mesh_order: usize, settings: ComponentSettings) -
     let mut spectrum = fft.make_output_vec();
     fft.process(&mut tsa.to_vec(), &mut spectrum)
         .expect("FFT buffers sized by the plan");
+    if let Some(top) = settings.top_order {
+        for c in spectrum.iter_mut().skip(top + 1) {
+            *c = Complex64::new(0.0, 0.0);
+        }
+    }
+    let in_band = inverse(&spectrum, m, |_| true);
     let z = mesh_order.max(1);
     let shaft = |k: usize| (1..=settings.shaft_harmonics).contains(&k);
     let mesh = |k: usize| k.is_multiple_of(z);
@@ -143,6 +157,7 @@ pub fn components(tsa: &[f64], mesh_order: usize, settings: ComponentSettings) -
         samples: m,
         mesh_order: z,
         mesh_harmonic_count: settings.mesh_harmonics,
+        in_band,
         regular,
         difference,
         residual,

@@ -126,6 +126,12 @@ pub struct ShaftIndicators {
 impl ShaftIndicators {
     /// The indicators of a TSA (its samples and derived signals), `revolutions` averaged.
     pub fn of(tsa: &[f64], c: &Components, revolutions: usize) -> Self {
+        // The TSA within its passband (all of it unless the settings cut it).
+        let tsa: &[f64] = if c.in_band.len() == tsa.len() {
+            &c.in_band
+        } else {
+            tsa
+        };
         let pp = tsa.iter().fold(f64::MIN, |m, v| m.max(*v))
             - tsa.iter().fold(f64::MAX, |m, v| m.min(*v));
         let mesh_sum: f64 = c.mesh_harmonics().map(|k| c.order_amplitude(k)).sum();
