@@ -27,9 +27,9 @@
 
 use super::model::{GearSystem, State};
 use super::period::PlanMode;
+use super::period_search::{DynamicsError, MeshPeriodSearch, SteadyStateSettings};
 use super::recorder::Recorder;
 use super::response::DynamicResponse;
-use super::steady::{DynamicsError, MeshPeriodSearch, SteadyStateSettings};
 
 /// Slowest decay rate of the averaged linear model, 1/s: the smallest -Re(lambda) over
 /// its eigenvalues, leaving out the zero ones of a held coordinate or of the motor-slip

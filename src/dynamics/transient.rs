@@ -14,7 +14,7 @@ use super::drive::Drive;
 use super::grid::period_nodes;
 use super::model::{GearSystem, State};
 use super::period::{PeriodObserver, PeriodStepper, StepFailure};
-use super::steady::DynamicsError;
+use super::period_search::DynamicsError;
 
 /// Node times over [0, `duration_s`] of `sys` under its drive: the mesh-event nodes of
 /// every mesh period, mapped through the drive's angle, `duration_s` the last.

@@ -5,7 +5,7 @@ use super::artifacts::{um, Artifacts};
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
-use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::response::{DynamicResponse, PathSample, Signals};
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::io::Table;
 use crate::study::{ModalAnalysis, Model};
@@ -29,8 +29,39 @@ pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad"
 pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
     let mut a = Artifacts::default();
     let s = &r.signals;
-    let ms = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
+    a.table("timeseries.csv", timeseries_table(s));
+    a.table("path.csv", path_table(model, &r.path));
+
+    // Damped poles and undamped modes of the linearised model.
+    let modal = ModalAnalysis::of(model);
+    a.table("modes.csv", report_modes::damped_table(&modal));
+    a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
+
     let t_ms = ms(&s.time_s);
+    let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
+    if has_velocity {
+        add_velocity_figures(&mut a, model, r, &t_ms, label);
+    }
+    add_time_figures(&mut a, s, t_ms, label);
+    add_path_figures(&mut a, &r.path, label);
+    a.summary = dynamics_summary(model, r);
+    a.headline = dynamics_headline(&a.summary);
+    super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
+    a
+}
+
+/// Seconds (or m/s) as milliseconds (mm/s).
+fn ms(v: &[f64]) -> Vec<f64> {
+    v.iter().map(|x| x * 1e3).collect::<Vec<_>>()
+}
+
+/// Label of the time axis.
+const TIME: &str = "time (ms)";
+
+/// `timeseries.csv`: every recorded signal and the 8 coordinates, their velocities and
+/// accelerations.
+fn timeseries_table(s: &Signals) -> Table {
     let col = |k: usize, which: &Vec<[f64; 8]>| which.iter().map(|v| v[k]).collect::<Vec<_>>();
     let (names, units) = (COORDINATE_NAMES, COORDINATE_UNITS);
     let mut t = Table::new()
@@ -69,10 +100,12 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             col(k, &s.acceleration),
         );
     }
-    a.table("timeseries.csv", t);
+    t
+}
 
-    let p = &r.path;
-    let path_table = Table::new()
+/// `path.csv`: the contact along the path of contact.
+fn path_table(model: &Model, p: &[PathSample]) -> Table {
+    Table::new()
         .col("rho1_mm", p.iter().map(|x| x.rho1_m * 1e3).collect())
         .col(
             "pinion_radius_mm",
@@ -99,59 +132,63 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             p.iter()
                 .map(|x| x.pinion_surface_speed_m_per_s - x.gear_surface_speed_m_per_s)
                 .collect(),
-        );
-    a.table("path.csv", path_table);
+        )
+}
 
-    // Damped poles and undamped modes of the linearised model.
-    let modal = ModalAnalysis::of(model);
-    a.table("modes.csv", report_modes::damped_table(&modal));
-    a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
-
+/// The pinion's y velocity: its spectrum's table, and its time and spectrum figures.
+fn add_velocity_figures(
+    a: &mut Artifacts,
+    model: &Model,
+    r: &DynamicResponse,
+    t_ms: &[f64],
+    label: &str,
+) {
+    let s = &r.signals;
     let f_mesh = model.params.operating.mesh_frequency_hz;
-    let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
-    let time = "time (ms)";
-    if has_velocity {
-        let spec = velocity_y_spectrum(r);
-        a.table(
-            "spectrum.csv",
-            Table::new()
-                .col("frequency_hz", spec.frequency_hz.clone())
-                .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
-        );
-        let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
-        a.figure_with_data(
-            "velocity_y_pinion.png",
-            single(
-                &format!("Pinion velocity in y ({label})"),
-                panel(
-                    time,
-                    "pinion y velocity (mm/s)",
-                    vec![Curve::new("", t_ms.clone(), vy.clone())],
-                ),
+    let spec = velocity_y_spectrum(r);
+    a.table(
+        "spectrum.csv",
+        Table::new()
+            .col("frequency_hz", spec.frequency_hz.clone())
+            .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
+    );
+    let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
+    a.figure_with_data(
+        "velocity_y_pinion.png",
+        single(
+            &format!("Pinion velocity in y ({label})"),
+            panel(
+                TIME,
+                "pinion y velocity (mm/s)",
+                vec![Curve::new("", t_ms.to_vec(), vy.clone())],
             ),
-            Table::new()
-                .col("time_ms", t_ms.clone())
-                .col("velocity_y_pinion_mm_per_s", vy),
-        );
-        let (f, amp) = spectrum_rows(&spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh);
-        a.figure_with_data(
-            "spectrum_velocity_y_pinion.png",
-            single(
-                &format!("Spectrum of the pinion y velocity ({label})"),
-                spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
-            ),
-            Table::new()
-                .col("frequency_hz", f)
-                .col("velocity_y_pinion_amplitude_mm_per_s", amp),
-        );
-    }
+        ),
+        Table::new()
+            .col("time_ms", t_ms.to_vec())
+            .col("velocity_y_pinion_mm_per_s", vy),
+    );
+    let (f, amp) = spectrum_rows(&spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh);
+    a.figure_with_data(
+        "spectrum_velocity_y_pinion.png",
+        single(
+            &format!("Spectrum of the pinion y velocity ({label})"),
+            spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
+        ),
+        Table::new()
+            .col("frequency_hz", f)
+            .col("velocity_y_pinion_amplitude_mm_per_s", amp),
+    );
+}
+
+/// The dynamic transmission error and the mesh force over time.
+fn add_time_figures(a: &mut Artifacts, s: &Signals, t_ms: Vec<f64>, label: &str) {
     let dte_um = um(&s.dte_m);
     a.figure_with_data(
         "dte.png",
         single(
             &format!("Dynamic transmission error ({label})"),
             panel(
-                time,
+                TIME,
                 "dynamic transmission error (µm)",
                 vec![Curve::new("", t_ms.clone(), dte_um.clone())],
             ),
@@ -165,7 +202,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         single(
             &format!("Mesh force ({label})"),
             panel(
-                time,
+                TIME,
                 "mesh force (N)",
                 vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
             ),
@@ -174,6 +211,10 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             .col("time_ms", t_ms)
             .col("mesh_force_n", s.mesh_force_n.clone()),
     );
+}
+
+/// The friction coefficient and force along the path of contact.
+fn add_path_figures(a: &mut Artifacts, p: &[PathSample], label: &str) {
     let rho_mm: Vec<f64> = p.iter().map(|x| x.rho1_m * 1e3).collect();
     let along = "pinion roll distance along the path of contact (mm)";
     let mu: Vec<f64> = p.iter().map(|x| x.friction_coefficient).collect();
@@ -206,11 +247,6 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             .col("rho1_mm", rho_mm)
             .col("friction_force_n", friction),
     );
-    a.summary = dynamics_summary(model, r);
-    a.headline = dynamics_headline(&a.summary);
-    super::teeth::add_teeth_artifacts(model, &mut a);
-    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
-    a
 }
 
 /// The summary of one dynamic evaluation (the keys of `summary.json`, display units in

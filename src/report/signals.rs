@@ -27,7 +27,7 @@ pub fn bearing_forces_table(forces: &[PeriodicSignal], fs_hz: f64) -> Table {
         "time_s",
         (0..m).map(|i| period * i as f64 / m as f64).collect(),
     );
-    for (name, f) in crate::signals::transfer::INPUTS.iter().zip(forces) {
+    for (name, f) in crate::signals::bearing::INPUTS.iter().zip(forces) {
         let kept = PeriodicSignal {
             period_s: f.period_s,
             coefficients: f.coefficients.iter().take(below + 1).copied().collect(),
