@@ -111,11 +111,9 @@ impl Recorder {
                 .extend_from_slice(mesh_stiffness_n_per_m);
             sig.velocity.extend_from_slice(velocity);
             sig.acceleration.extend_from_slice(acceleration);
-            for j in 0..2 {
-                sig.step_acceleration[j].extend_from_slice(&step_acceleration[j]);
-            }
             sig.dte_rate_m_per_s.extend_from_slice(dte_rate_m_per_s);
             for j in 0..2 {
+                sig.step_acceleration[j].extend_from_slice(&step_acceleration[j]);
                 sig.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
                 sig.friction_n[j].extend_from_slice(&friction_n[j]);
                 sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
