@@ -28,12 +28,14 @@ pub(crate) const SAMPLING_OVER_PASSBAND: f64 = 2.56;
 
 /// A linear-phase low-pass FIR at the internal rate, with its delay removed.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct AntiAliasFilter {
+pub struct AntiAliasFilter {
     /// Taps (odd count, symmetric).
     pub taps: Vec<f64>,
     /// Internal rate D f_s, Hz.
     pub internal_rate_hz: f64,
+    /// Sampling rate f_s of the decimated record, Hz.
     pub sampling_rate_hz: f64,
+    /// Stopband attenuation at and above f_s / 2, dB.
     pub attenuation_db: f64,
 }
 

@@ -13,6 +13,7 @@
 /// interpolant of (t, x) (t ascending). With `period` the signal is periodic with that
 /// period (the interpolant closes on the first sample one period later); without, it is
 /// held at its end values outside the samples.
+#[cfg(test)]
 pub(crate) fn cell_means(
     t: &[f64],
     x: &[f64],

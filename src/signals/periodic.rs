@@ -12,7 +12,9 @@
 //! four-point Lagrange cubic: for content below f_s / 2 the grid holds >= 32 points per
 //! cycle, where the cubic's amplitude error is below 3e-6.
 
+#[cfg(test)]
 use super::area::{box_response, cell_means};
+use crate::dynamics::fourier::HermitePeriod;
 use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
@@ -34,6 +36,7 @@ impl PeriodicSignal {
     /// its means over a uniform grid of at least 4 cells per sample (`super::area`: the
     /// area of every short-lived layer kept) with the cells' box filter divided out.
     /// Harmonics up to half the grid are kept.
+    #[cfg(test)]
     pub(crate) fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
         let n = (4 * t.len()).next_power_of_two().max(16);
         let w = period_s / n as f64;
@@ -61,6 +64,17 @@ impl PeriodicSignal {
         Self {
             period_s,
             coefficients,
+        }
+    }
+
+    /// The Fourier series of a solver's solution over one period, harmonics 0..=`harmonics`
+    /// with phases at time 0: the exact coefficients of its cubic Hermite interpolant
+    /// (`dynamics::fourier`; no resampling, so nothing the solver resolved between two
+    /// samples is lost).
+    pub fn from_hermite(signal: &HermitePeriod, harmonics: usize) -> Self {
+        Self {
+            period_s: signal.period_s,
+            coefficients: signal.coefficients(0.0, harmonics),
         }
     }
 

@@ -28,7 +28,7 @@ pub(crate) const DUTY: f64 = 0.5;
 /// The pulse train of a shaft turning at constant speed with period `revolution_s`, `n`
 /// pulses per revolution, as a Fourier series up to `max_hz` (period = one pulse
 /// interval): c_0 = V d, c_k = 2 V e^(-i pi k d) sin(pi k d) / (pi k).
-pub(crate) fn pulse_series(revolution_s: f64, n: usize, max_hz: f64) -> PeriodicSignal {
+pub fn pulse_series(revolution_s: f64, n: usize, max_hz: f64) -> PeriodicSignal {
     let period = revolution_s / n as f64;
     let harmonics = (max_hz * period).floor() as usize + 1;
     let coefficients = (0..harmonics)

@@ -67,7 +67,7 @@ pub(crate) fn modal_accelerance(
 impl TransferPath {
     /// Accelerance from input `j` ([`INPUTS`](super::bearing::INPUTS) order) to sensor `s`
     /// at `f_hz`, m/s^2 per N.
-    pub(crate) fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
+    pub fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         match &self.model {
             PathModel::Modal(modes) => modes
                 .iter()
@@ -94,7 +94,7 @@ impl TransferPath {
     /// Cast housings of gear test rigs show their first modes between 1 and 10 kHz with
     /// modal damping of 1-5 %; the numbers are plausible, not measured. A user with a
     /// measured housing gives its modes or FRF table instead (docs/SIGNALS.md).
-    pub(crate) fn generic_housing() -> Self {
+    pub fn generic_housing() -> Self {
         // (f, zeta, modal mass, shape at [pinion x, pinion y, gear x, gear y], shape at sensors)
         type GenericMode = (f64, f64, f64, [f64; 4], [f64; 2]);
         let modes: [GenericMode; 3] = [
