@@ -422,7 +422,7 @@ pub const KEYS: &[KeySpec] = &[
 
 /// Sections written as arrays of tables (`[[fault]]`), each table keyed as the schema's
 /// `section.key` entries.
-pub const TABLE_ARRAYS: &[&str] = &["fault"];
+pub(crate) const TABLE_ARRAYS: &[&str] = &["fault"];
 
 /// Look up a key's spec.
 pub fn spec(key: &str) -> Option<&'static KeySpec> {

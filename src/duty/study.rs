@@ -13,7 +13,7 @@ use crate::study::wear_loop::{StopKind, WearMode};
 
 /// Life runs stop here at the latest: 1e15 pinion revolutions are 30 000 years at 1 kHz,
 /// beyond any machine's life, so a bin that has not worn to the limit by then never will.
-pub const LIFE_CYCLE_CAP: f64 = 1e15;
+pub(crate) const LIFE_CYCLE_CAP: f64 = 1e15;
 
 /// The wear study under the spectrum and what `run` adds to it.
 pub struct DutyStudy {
@@ -27,6 +27,7 @@ pub struct DutyStudy {
 }
 
 impl DutyStudy {
+    /// The spectrum run of wear mode `mode`, if it was asked for.
     pub fn run(&self, mode: WearMode) -> Option<&SpectrumRun> {
         self.runs.iter().find(|r| r.mode == mode)
     }
@@ -82,7 +83,7 @@ pub fn spectrum_life(sm: &SpectrumModel, mode: WearMode) -> anyhow::Result<LifeT
 /// single-point case ([`crate::study::sweep::run_case`]). The row is read as the
 /// spectrum's single-point view: the dynamics columns are the monitoring bin's new-teeth
 /// response, the wear columns those of the shared wear state.
-pub fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     if run != SweepRun::Wear || case.load_spectrum.is_none() {
         return crate::study::sweep::run_case(case, run);
     }

@@ -33,7 +33,7 @@ struct ModeEntry {
 
 /// Parse a transfer path from the text of `name` (`.csv`: FRF table, otherwise modal
 /// TOML). Every problem names the file and the entry.
-pub fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<String>> {
+pub(crate) fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<String>> {
     if name.to_ascii_lowercase().ends_with(".csv") {
         let t = parse_frf_table(text, name)?;
         return Ok(TransferPath {

@@ -6,24 +6,24 @@
 //! One set of forward runs (a reference run and a true run of the paper's case) serves
 //! every test (`fixture`), so the file costs a few seconds.
 
-use gearwear::config::Case;
-use gearwear::prognostics::calibrate::{calibrate, Calibration, CalibrationSettings};
-use gearwear::prognostics::check::theta_at_k_quantile;
-use gearwear::prognostics::fit_check::{fit_check, normal_quantile, FitCheck};
-use gearwear::prognostics::forward::{run_trajectory, Trajectory};
-use gearwear::prognostics::likelihood::log_likelihood;
-use gearwear::prognostics::likelihood::noise_scales;
-use gearwear::prognostics::mcmc::{ensemble_sample, McmcSettings};
-use gearwear::prognostics::observations::{Observations, Series};
-use gearwear::prognostics::predict::{
+use crate::config::Case;
+use crate::prognostics::calibrate::{calibrate, Calibration, CalibrationSettings};
+use crate::prognostics::check::theta_at_k_quantile;
+use crate::prognostics::fit_check::{fit_check, normal_quantile, FitCheck};
+use crate::prognostics::forward::{run_trajectory, Trajectory};
+use crate::prognostics::likelihood::log_likelihood;
+use crate::prognostics::likelihood::noise_scales;
+use crate::prognostics::mcmc::{ensemble_sample, McmcSettings};
+use crate::prognostics::observations::{Observations, Series};
+use crate::prognostics::predict::{
     run_sample, Forward, LifeSummary, PredictSettings, SampleSource,
 };
-use gearwear::prognostics::prior::{Prior, Theta};
-use gearwear::prognostics::stats::{
+use crate::prognostics::prior::{Prior, Theta};
+use crate::prognostics::stats::{
     autocorrelation_time, ks_critical_1pct, ks_statistic, mean, quantile, std_dev,
 };
-use gearwear::prognostics::{Quantity, Surrogate};
-use gearwear::rng;
+use crate::prognostics::{Quantity, Surrogate};
+use crate::rng;
 use rand_distr::{Distribution, Normal};
 use std::sync::OnceLock;
 
