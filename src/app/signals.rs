@@ -91,8 +91,13 @@ impl Job for SignalsJob {
         let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
             .map_err(|e| JobError::Failed(e.into()))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
+        // Judged by effect, as the model judges its teeth: zero errors, zero-depth
+        // faults and zero reliefs leave the new, perfect teeth.
         let c = &self.case;
-        let label = if c.teeth.is_empty() && c.modification.is_empty() && c.fault.is_empty() {
+        let changed = c.teeth.changes_teeth()
+            || c.modification.changes_teeth()
+            || c.fault.iter().any(|f| f.changes_tooth());
+        let label = if !changed {
             "new teeth"
         } else {
             "the case's tooth errors, modifications and faults"

@@ -437,12 +437,15 @@ pub fn is_per_tooth_key(key: &str) -> bool {
 }
 
 impl Case {
-    /// Whether the case gives any per-tooth input (`[teeth]`, `[modification]`,
-    /// `[[fault]]`, `wear.worn_geometry` = "worn"), even one whose values change nothing.
+    /// Whether the case gives a per-tooth input (`[teeth]`, `[modification]`, `[[fault]]`,
+    /// `wear.worn_geometry` = "worn") that changes a tooth. Inputs that leave every tooth
+    /// perfect (zero errors and run-outs, zero-depth cracks, zero reliefs and profile
+    /// deviations) do not count: such a case is the identical-teeth case, judged by the
+    /// inputs' effect as `study::teeth` judges the built teeth.
     pub fn has_per_tooth_inputs(&self) -> bool {
-        !self.teeth.is_empty()
-            || !self.modification.is_empty()
-            || !self.fault.is_empty()
+        self.teeth.changes_teeth()
+            || self.modification.changes_teeth()
+            || self.fault.iter().any(ToothFault::changes_tooth)
             || self.wear.worn_geometry == WornGeometry::Worn
     }
 

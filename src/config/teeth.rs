@@ -66,6 +66,23 @@ impl TeethSection {
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
+
+    /// Whether the section makes any tooth differ from the paper's: a drawn accuracy
+    /// class, or an error or run-out that is not zero. Zero errors, a zero run-out (its
+    /// phase then meaningless) and a seed alone change nothing.
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        self.accuracy_grade.is_some()
+            || any(&self.pitch_error_pinion_um)
+            || any(&self.pitch_error_gear_um)
+            || nonzero(&self.runout_pinion_um)
+            || nonzero(&self.runout_gear_um)
+            || any(&self.profile_slope_pinion_um)
+            || any(&self.profile_slope_gear_um)
+            || any(&self.profile_form_pinion_um)
+            || any(&self.profile_form_gear_um)
+    }
 }
 
 /// Shape of a relief along its length.
@@ -119,6 +136,18 @@ impl ModificationSection {
     /// Whether no key is given (true involutes).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
+    }
+
+    /// Whether the section removes material anywhere: a relief of a non-zero amount, or a
+    /// user profile deviation that is not zero somewhere (a length, a shape or roll angles
+    /// alone change nothing).
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        nonzero(&self.tip_relief_um)
+            || nonzero(&self.root_relief_um)
+            || any(&self.profile_deviation_pinion_um)
+            || any(&self.profile_deviation_gear_um)
     }
 }
 
@@ -312,6 +341,16 @@ impl ToothFault {
     /// The kind of the fault.
     pub fn kind(&self) -> FaultKind {
         self.table.kind
+    }
+
+    /// Whether the fault changes its tooth: a crack of zero depth removes nothing (its
+    /// angle and width then meaningless); a spall and a broken tip have required sizes
+    /// above zero.
+    pub fn changes_tooth(&self) -> bool {
+        match self.fault {
+            Fault::Crack { depth_m, .. } => depth_m != 0.0,
+            Fault::Spall { .. } | Fault::BrokenTip { .. } => true,
+        }
     }
 
     /// The table as the case file gave it (its units, absent keys absent): for tables

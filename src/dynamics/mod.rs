@@ -4,6 +4,7 @@
 pub mod damped_modes;
 pub mod drive;
 pub mod excitation;
+pub mod fourier;
 pub mod grid;
 pub mod hunting;
 pub mod integrator;

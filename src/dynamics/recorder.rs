@@ -88,6 +88,8 @@ impl Recorder {
             displacement,
             velocity,
             acceleration,
+            step_acceleration,
+            dte_rate_m_per_s,
             friction_coefficient,
             friction_n,
             pair_load_n,
@@ -109,7 +111,9 @@ impl Recorder {
                 .extend_from_slice(mesh_stiffness_n_per_m);
             sig.velocity.extend_from_slice(velocity);
             sig.acceleration.extend_from_slice(acceleration);
+            sig.dte_rate_m_per_s.extend_from_slice(dte_rate_m_per_s);
             for j in 0..2 {
+                sig.step_acceleration[j].extend_from_slice(&step_acceleration[j]);
                 sig.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
                 sig.friction_n[j].extend_from_slice(&friction_n[j]);
                 sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
@@ -139,6 +143,10 @@ impl PeriodObserver for Recorder {
             &dy,
             &ms,
         );
+        let grad = sys.mesh_gradient();
+        self.sig
+            .dte_rate_m_per_s
+            .push((0..NDOF).map(|i| grad[i] * y[NDOF + i]).sum());
         let first = self.path.len();
         push_path(&mut self.path, sys, y, &ms);
         // The engagement within the excitation period (`PathSample::cycle`).
@@ -179,6 +187,11 @@ impl PeriodObserver for Recorder {
             dy: f1,
             ms: ms1,
         });
+        // The step's own accelerations at both ends (the solution's slope data; points
+        // and steps alternate, so entry j belongs to the step leaving sample j).
+        let acc = |f: &State| -> [f64; NDOF] { std::array::from_fn(|i| f[NDOF + i]) };
+        self.sig.step_acceleration[0].push(acc(&f0));
+        self.sig.step_acceleration[1].push(acc(&f1));
         let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
         let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
         let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);

@@ -69,6 +69,17 @@ pub struct Signals {
     pub displacement: Vec<[f64; 8]>,
     pub velocity: Vec<[f64; 8]>,
     pub acceleration: Vec<[f64; 8]>,
+    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
+    /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
+    /// mesh event or a contact switch makes the force jump, the end one is the limit from
+    /// the left at the next sample, which `acceleration` (the limit from the right) is not.
+    /// With the displacements and velocities they give the solution between the samples,
+    /// the cubic Hermite interpolant of the solver's steps (`super::fourier`). Empty for a
+    /// quasi-static response, whose samples are all there is.
+    pub step_acceleration: [Vec<[f64; 8]>; 2],
+    /// Rate of the DTE, m/s: the mesh gradient times the velocities (the DTE is linear in
+    /// the displacements), the DTE's slope for its interpolant. Empty when quasi-static.
+    pub dte_rate_m_per_s: Vec<f64>,
     /// Friction coefficient and signed friction force of the pair that entered contact
     /// last (pair 0) and of the one ahead of it (pair 1; 0 when out of contact).
     pub friction_coefficient: [Vec<f64>; 2],

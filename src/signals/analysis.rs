@@ -80,6 +80,12 @@ pub fn analyse(
                     let tsa =
                         synchronous_average(x, fs, &edges, tach.pulses_per_revolution, ratio)?;
                     let z = shaft.teeth(kin.teeth_pinion, kin.teeth_gear);
+                    // The TSA's passband: orders below the resampling's flat band.
+                    let top = (super::interp::PASSBAND_OVER_FS * fs * tsa.revolution_s).floor();
+                    let settings = ComponentSettings {
+                        top_order: Some(top as usize),
+                        ..settings
+                    };
                     let c = components(&tsa.values, z, settings);
                     let indicators = ShaftIndicators::of(&tsa.values, &c, tsa.revolutions);
                     Some(ShaftAnalysis {

@@ -17,6 +17,11 @@ use std::sync::OnceLock;
 
 /// Half-width of the kernel, samples.
 pub const HALF_WIDTH: usize = 16;
+/// Edge of the kernel's passband over the sampling rate: flat within ~1e-5 up to it (the
+/// Kaiser window's transition, (100 - 8) / (2.285 x 2 pi x 32) = 0.2 f_s wide, centred on
+/// f_s / 2). Above it the kernel rolls off (0.4 % low at 0.423 f_s, 37 % at 0.49 f_s), so
+/// what a TSA holds above it is left out of its indicators.
+pub const PASSBAND_OVER_FS: f64 = 0.4;
 /// Kernel table points per sample (linear interpolation between them: error ~1e-6).
 const TABLE_PER_SAMPLE: usize = 1024;
 

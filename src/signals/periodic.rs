@@ -13,6 +13,7 @@
 //! cycle, where the cubic's amplitude error is below 3e-6.
 
 use super::area::{box_response, cell_means};
+use crate::dynamics::fourier::HermitePeriod;
 use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
@@ -60,6 +61,17 @@ impl PeriodicSignal {
         Self {
             period_s,
             coefficients,
+        }
+    }
+
+    /// The Fourier series of a solver's solution over one period, harmonics 0..=`harmonics`
+    /// with phases at time 0: the exact coefficients of its cubic Hermite interpolant
+    /// (`dynamics::fourier`; no resampling, so nothing the solver resolved between two
+    /// samples is lost).
+    pub fn from_hermite(signal: &HermitePeriod, harmonics: usize) -> Self {
+        Self {
+            period_s: signal.period_s,
+            coefficients: signal.coefficients(0.0, harmonics),
         }
     }
 

@@ -75,6 +75,9 @@ impl Record {
 /// The noise-free, filtered periodic signals of a steady state (steps 1-3).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeriodicRecord {
+    /// The bearing forces as Fourier series (N), in [`INPUTS`](super::bearing::INPUTS) order: the
+    /// chain's inputs (step 1).
+    pub inputs: Vec<PeriodicSignal>,
     /// Acceleration at each sensor, m/s^2, after the anti-alias filter.
     pub sensors: Vec<(String, PeriodicSignal)>,
     /// Tachometer voltage after the anti-alias filter.
@@ -87,10 +90,11 @@ impl PeriodicRecord {
         let acq = &chain.acquisition;
         let aa = AntiAliasFilter::design(acq.sampling_rate_hz, acq.anti_alias_attenuation_db);
         let top = 0.5 * aa.internal_rate_hz;
-        let inputs: Vec<PeriodicSignal> = forces
-            .force_n
-            .iter()
-            .map(|f| PeriodicSignal::from_samples(&forces.time_s, f, forces.period_s))
+        // Every harmonic below the internal Nyquist frequency (the filter leaves nothing
+        // above it: 100 dB down from f_s / 2).
+        let harmonics = (top * forces.period_s).floor() as usize;
+        let inputs: Vec<PeriodicSignal> = (0..4)
+            .map(|j| PeriodicSignal::from_hermite(&forces.signal(j), harmonics))
             .collect();
         let sensors = chain
             .path
@@ -116,6 +120,7 @@ impl PeriodicRecord {
         let pulses = pulse_series(rev, chain.tachometer.pulses_per_revolution, top);
         let tachometer = pulses.map(|k, f| pulses.coefficients[k] * aa.response(f));
         Self {
+            inputs,
             sensors,
             tachometer,
         }
@@ -193,9 +198,18 @@ mod tests {
             .iter()
             .map(|t| amp * (2.0 * PI * f_hz * t).cos())
             .collect();
+        let w = 2.0 * PI * f_hz;
+        let rate = |end: usize| -> Vec<f64> {
+            (0..n)
+                .map(|i| -amp * w * (w * period * (i + end) as f64 / n as f64).sin())
+                .collect()
+        };
         BearingForces {
             time_s: t,
             force_n: [vec![0.0; n], fy, vec![0.0; n], vec![0.0; n]],
+            // The exact rate at each step's ends (the solver's slope data).
+            rate_start_n_per_s: [vec![0.0; n], rate(0), vec![0.0; n], vec![0.0; n]],
+            rate_end_n_per_s: [vec![0.0; n], rate(1), vec![0.0; n], vec![0.0; n]],
             period_s: period,
         }
     }

@@ -91,7 +91,10 @@ pub fn chain_of(
     };
     Ok(ChainSetup {
         chain,
-        components: ComponentSettings::default(),
+        components: ComponentSettings {
+            mesh_harmonics: s.mesh_harmonics.max(1) as usize,
+            ..ComponentSettings::default()
+        },
         warnings,
     })
 }

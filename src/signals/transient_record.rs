@@ -185,7 +185,10 @@ pub fn transient_record(
         .collect();
     let inputs: Vec<Vec<Complex64>> = (0..4)
         .map(|j| {
-            let p = PeriodicSignal::from_samples(&lead.time_s, &lead.force_n[j], lead.period_s);
+            // The steady state's exact series (as a steady record takes it in), every
+            // harmonic below the internal Nyquist frequency.
+            let harmonics = (0.5 * rate * lead.period_s).floor() as usize;
+            let p = PeriodicSignal::from_hermite(&lead.signal(j), harmonics);
             // The lead-in as cell means too: the box-filtered series at the cell centres.
             let boxed = p.map(|k, f| p.coefficients[k] * box_response(f, w));
             let mut x = boxed.sample((0.5 - lead_n as f64) * w, rate, lead_n);

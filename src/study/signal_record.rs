@@ -8,6 +8,7 @@ use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
 use crate::signals::analysis::{analyse, ChannelAnalysis};
 use crate::signals::bearing::bearing_forces;
+use crate::signals::periodic::PeriodicSignal;
 use crate::signals::record::{add_noise, Kinematics, PeriodicRecord, Record};
 use crate::signals::setup::ChainSetup;
 use crate::wear::WearState;
@@ -26,6 +27,9 @@ pub struct SignalRecord {
     pub input_speed_hz: (f64, f64),
     /// Damped frequencies of the model's mesh poles, Hz (`docs/MODEL.md`, Modes).
     pub mesh_poles_hz: Vec<f64>,
+    /// The bearing forces of a steady record as the Fourier series the chain took in
+    /// (`PeriodicRecord::inputs`); None for a transient.
+    pub bearing_forces: Option<Vec<PeriodicSignal>>,
 }
 
 /// Shaft speeds and teeth of the model at its operating point.
@@ -67,6 +71,7 @@ pub fn record_from(
         analysis,
         response,
         mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+        bearing_forces: Some(p.inputs.clone()),
     }
 }
 
@@ -108,5 +113,6 @@ pub fn record_case(
         analysis,
         response,
         mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+        bearing_forces: None,
     })
 }
