@@ -55,7 +55,5 @@ fn another_design_is_refused_before_the_folder_changes() {
     assert!(e.contains("another design"), "{e}");
     assert_eq!(snapshot(&out), before, "the merge changed the folder");
     // --replace: the user's explicit choice.
-    ok(&[
-        "dataset", "--design", &b, "--out", out_s, "--replace", "-q",
-    ]);
+    ok(&["dataset", "--design", &b, "--out", out_s, "--replace", "-q"]);
 }

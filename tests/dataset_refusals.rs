@@ -54,7 +54,12 @@ fn a_record_count_that_overflows_is_refused_naming_the_axes() {
         list(65536, 10.0, 1e-3),
         list(65536, 10.0, 1e-3)
     );
-    refused(&design, &[], &[], &["records", "2^53", "noise realisations"]);
+    refused(
+        &design,
+        &[],
+        &[],
+        &["records", "2^53", "noise realisations"],
+    );
     // Under 2^64 but over 2^53: refused too (ids must stay exact as numbers).
     let design = format!(
         "[run_to_failure]\nstates = 8192\n[operating]\ninput_speed_hz = [{}]\nload_torque_nm = [{}]\n[records]\nnoise_realisations = 1000000\n",

@@ -153,9 +153,16 @@ mod tests {
             )
         };
         let e = parse_transfer_path(&modal("[\"a\", \"a\"]", 2), "p.toml").unwrap_err();
-        assert!(e.iter().any(|m| m.contains("p.toml") && m.contains("\"a\" is named twice")), "{e:?}");
+        assert!(
+            e.iter()
+                .any(|m| m.contains("p.toml") && m.contains("\"a\" is named twice")),
+            "{e:?}"
+        );
         let e = parse_transfer_path(&modal("[\"\"]", 1), "p.toml").unwrap_err();
-        assert!(e.iter().any(|m| m.contains("sensor 1 has an empty name")), "{e:?}");
+        assert!(
+            e.iter().any(|m| m.contains("sensor 1 has an empty name")),
+            "{e:?}"
+        );
         let csv = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n0,,pinion_x,1,0\n5000,,pinion_x,1,0\n";
         if let Err(e) = parse_transfer_path(csv, "f.csv") {
             assert!(e.iter().any(|m| m.contains("f.csv")), "{e:?}");

@@ -218,8 +218,12 @@ pub fn existing_key(root: &Path) -> Result<Option<String>, String> {
             Ok(None)
         };
     };
-    let body: Value = serde_json::from_slice(&bytes)
-        .map_err(|_| format!("{}: not a dataset description", root.join(DATASET_REL).display()))?;
+    let body: Value = serde_json::from_slice(&bytes).map_err(|_| {
+        format!(
+            "{}: not a dataset description",
+            root.join(DATASET_REL).display()
+        )
+    })?;
     body["dataset_key"]
         .as_str()
         .map(|k| Some(k.to_owned()))

@@ -1,8 +1,8 @@
 //! The two dataset jobs: [`DatasetJob`] (a design to a folder of records) and
 //! [`DatasetMergeJob`] (shards joined), and where a design is read from.
 
-use super::merge::{merge_datasets, shared_key};
 use super::folder::check_owner;
+use super::merge::{merge_datasets, shared_key};
 use super::plan::{check_dataset, dataset_key};
 use super::request::{DatasetOutcome, DatasetRequest};
 use super::run::run_dataset;
@@ -151,8 +151,12 @@ impl Job for DatasetJob {
         )?;
         // A folder belongs to one design: another design's run, shard or resume into it
         // is refused before it is opened (issue 33: it left false index rows).
-        check_owner(&self.out, &dataset_key(&design, &req.path_bytes), self.replace)
-            .map_err(|m| JobError::input(Problem::of(Arg::Out, m)))?;
+        check_owner(
+            &self.out,
+            &dataset_key(&design, &req.path_bytes),
+            self.replace,
+        )
+        .map_err(|m| JobError::input(Problem::of(Arg::Out, m)))?;
         let set = (self.shard.count > 1)
             .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
         let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;

@@ -22,7 +22,6 @@ pub struct RecordSize {
     pub channels: f64,
 }
 
-
 /// The cost of (a shard of) a dataset against the run budget, before anything is
 /// computed (the disk has its own budget): each condition's run-to-failure trajectory
 /// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear

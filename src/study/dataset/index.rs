@@ -126,7 +126,11 @@ pub fn channel_column_names(name: &str) -> Vec<String> {
         .map(|c| format!("{name}_{c}"))
         .collect();
     for shaft in ["pinion", "gear"] {
-        out.extend(SHAFT_COLUMNS.iter().map(|(c, _)| format!("{name}_{shaft}_{c}")));
+        out.extend(
+            SHAFT_COLUMNS
+                .iter()
+                .map(|(c, _)| format!("{name}_{shaft}_{c}")),
+        );
     }
     out
 }
@@ -142,11 +146,17 @@ pub fn sensor_column_problems(sensors: &[String]) -> Vec<String> {
         .collect();
     for (i, s) in sensors.iter().enumerate() {
         if s.trim().is_empty() {
-            p.push(format!("sensor {} has an empty name: name every sensor", i + 1));
+            p.push(format!(
+                "sensor {} has an empty name: name every sensor",
+                i + 1
+            ));
             continue;
         }
         if sensors[..i].contains(s) {
-            p.push(format!("sensor {:?} is named twice: sensor names must be unique", s));
+            p.push(format!(
+                "sensor {:?} is named twice: sensor names must be unique",
+                s
+            ));
             continue;
         }
         for col in channel_column_names(s) {

@@ -143,7 +143,10 @@ mod tests {
             let shard = Shard { index: i, count: n };
             let listed: Vec<usize> = shard.ids(plan.physical_states());
             assert_eq!(plan.shard_state_count(shard), listed.len(), "{i}/{n}");
-            let mut conds: Vec<usize> = listed.iter().map(|p| plan.state_index(*p).condition).collect();
+            let mut conds: Vec<usize> = listed
+                .iter()
+                .map(|p| plan.state_index(*p).condition)
+                .collect();
             conds.dedup();
             assert_eq!(plan.shard_conditions(shard), conds, "{i}/{n}");
         }
