@@ -66,9 +66,18 @@ impl Job for SignalsJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        budget::check_estimate(&estimate_signals(&self.case), self.budget.as_ref())?;
-        let model = build_model(&self.case, observer)?;
+        // The path first: its sensors are the record's channels, which the budget counts.
         let path = transfer_path_of(self.transfer_path.as_ref())?;
+        let channels = path
+            .as_ref()
+            .map_or(crate::study::budget::signals::DEFAULT_CHANNELS, |p| {
+                p.sensors.len()
+            });
+        budget::check_estimate(
+            &estimate_signals(&self.case, channels),
+            self.budget.as_ref(),
+        )?;
+        let model = build_model(&self.case, observer)?;
         let setup = chain_of(
             &self.case,
             path,
