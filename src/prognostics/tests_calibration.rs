@@ -239,7 +239,7 @@ fn surrogate_between_reference_runs_in_the_block_limited_range() {
         .max_error_against(&truth, &th, Quantity::VelocityRms, &cycles)
         .unwrap();
     let wear_end = truth.value(Quantity::MaxWearPinion, horizon).unwrap();
-    println!("block-limited k = {k:.3e}: wear error {w:.2e} um of {wear_end:.2} um, RMS velocity error {v:.2e} mm/s");
+    println!("block-limited k = {k:.3e}: wear error {w:.2e} µm of {wear_end:.2} µm, RMS velocity error {v:.2e} mm/s");
     // Without the k axis the error was that of the invariance test (5.9e-3 relative);
     // interpolating in ln k between runs that bracket k must do far better: 1e-3.
     assert!(w < 1e-3 * wear_end, "{w}");
@@ -380,7 +380,7 @@ fn monte_carlo_percentiles_converge_at_one_over_root_n() {
                 let life = LifeSummary::of(&out);
                 assert_eq!(
                     life.reached, n,
-                    "every sample reaches 0.4 um within 4e4 cycles"
+                    "every sample reaches 0.4 µm within 4e4 cycles"
                 );
                 life.median.unwrap()
             })
