@@ -124,7 +124,7 @@ mod tests {
         assert_eq!(shown(0.00123456), "0.001235");
         assert_eq!(shown(0.000123456), "1.235e-4");
         assert_eq!(shown(216012.646667), "2.16e5");
-        assert_eq!(shown(4.000_912_3e8), "4.001e8");
+        assert_eq!(shown(4.000_912_345_6e8), "4.001e8");
         // A whole number below 1e9 is whole (a count, an exact product).
         assert_eq!(shown(4.0009e8), "400090000");
         // Rounding that carries into the next decade takes that decade's form.
