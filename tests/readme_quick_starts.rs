@@ -126,9 +126,8 @@ fn condition_monitoring_quick_start() {
         );
     }
     // The grade-6 pinion's record differs from the healthy one.
-    let rms = |rec: &str| {
-        json(&d.path().join(rec).join("summary.json"))["indicators"][0]["signal"]["rms"].as_f64()
-    };
+    let rms =
+        |rec: &str| json(&d.path().join(rec).join("summary.json"))["indicators"][0]["rms"].as_f64();
     assert_ne!(rms("healthy"), rms("class6"));
     // The index: one row per record (2 conditions x 2 wear states), each record's file
     // present and readable, as the README's pandas lines read them.

@@ -120,7 +120,7 @@ fn the_report_of_another_pair_describes_that_pair() {
     for phrase in [
         "gear.hub_bore_radius_pinion_mm (mm) 16.88 (derived)",
         "dynamics.mass_pinion_kg (kg) 0.8297 (derived)",
-        "torque on the pinion / gear shaft (N m) 100.0 / 200.0",
+        "torque on the pinion / gear shaft (N m) 100 / 200",
     ] {
         let squeezed = text.split_whitespace().collect::<Vec<_>>().join(" ");
         assert!(squeezed.contains(phrase), "case table lacks {phrase:?}");

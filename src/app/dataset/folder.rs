@@ -247,7 +247,7 @@ pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), String> 
     }
     match existing_key(root)? {
         Some(k) if k != key => Err(format!(
-            "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it; choose another folder, or pass --replace to replace it",
+            "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it",
             root.display(),
             &k[..k.len().min(12)],
             &key[..key.len().min(12)]

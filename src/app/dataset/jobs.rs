@@ -156,7 +156,7 @@ impl Job for DatasetJob {
             &dataset_key(&design, &req.path_bytes),
             self.replace,
         )
-        .map_err(|m| JobError::input(Problem::of(Arg::Out, m)))?;
+        .map_err(another_design)?;
         let set = (self.shard.count > 1)
             .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
         let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
@@ -194,11 +194,26 @@ impl Job for DatasetMergeJob {
         }
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
-        check_owner(&self.out, &shared.0, self.replace)
-            .map_err(|m| JobError::input(Problem::of(Arg::Out, m)))?;
+        check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
         observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset-merge"))
     }
+}
+
+/// The refusal of a folder that holds another design's dataset (`check_owner`'s message),
+/// with its two ways out: another folder, or replacing the dataset.
+fn another_design(message: String) -> JobError {
+    use crate::remedy::{Remedy, Words};
+    JobError::input(
+        Problem::of(Arg::Out, message).remedy(Remedy::new(
+            Words::new()
+                .text("choose another folder (")
+                .arg(Arg::Out)
+                .text("), or allow replacing its dataset (")
+                .arg(Arg::Replace)
+                .text(")"),
+        )),
+    )
 }
