@@ -126,8 +126,12 @@ fn condition_monitoring_quick_start() {
         );
     }
     // The grade-6 pinion's record differs from the healthy one.
-    let rms =
-        |rec: &str| json(&d.path().join(rec).join("summary.json"))["indicators"][0]["rms"].as_f64();
+    // A missing field fails here, so two absent values cannot pass as "different".
+    let rms = |rec: &str| {
+        json(&d.path().join(rec).join("summary.json"))["indicators"][0]["rms"]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{rec}: summary.json lacks indicators[0].rms"))
+    };
     assert_ne!(rms("healthy"), rms("class6"));
     // The index: one row per record (2 conditions x 2 wear states), each record's file
     // present and readable, as the README's pandas lines read them.

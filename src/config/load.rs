@@ -336,6 +336,14 @@ fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result
 /// Returns every problem at once; the case is only returned when there is none. A
 /// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
 /// another).
+/// The built-in case with `--set`-style overrides (`"section.key=value"`), for unit tests
+/// of the layers above; panics on an override the case refuses.
+#[cfg(test)]
+pub(crate) fn default_with(overrides: &[&str]) -> Case {
+    let sets: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
+    load_case("", &sets).expect("a test's overrides are valid")
+}
+
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
     load_case_in(toml_text, overrides, std::path::Path::new("."))
 }

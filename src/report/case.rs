@@ -247,11 +247,9 @@ pub fn case_json(model: &Model) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::load_case;
 
     fn case(sets: &[&str]) -> Case {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case("", &sets).unwrap()
+        crate::config::load::default_with(sets)
     }
 
     #[test]

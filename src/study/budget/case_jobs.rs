@@ -399,8 +399,7 @@ mod tests {
     use crate::study::budget::Budget;
 
     fn case(sets: &[&str]) -> Case {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case("", &sets).unwrap()
+        crate::config::load::default_with(sets)
     }
 
     #[test]
