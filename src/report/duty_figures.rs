@@ -20,6 +20,33 @@ pub struct DutyFigure {
     pub table: Table,
 }
 
+/// Most bins drawn each with its own line: 7, with the total or the rest one line more,
+/// fits the 8 colours of the palette and a legend beside one panel. The table keeps
+/// every bin.
+pub(crate) const MAX_BIN_CURVES: usize = 7;
+
+/// The indices of the bins drawn each with its own line: all when there are at most
+/// [`MAX_BIN_CURVES`], else the [`MAX_BIN_CURVES`] of largest `weight` (the first of
+/// equals), in bin order.
+pub(crate) fn drawn_bins(weight: &[f64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..weight.len()).collect();
+    if order.len() > MAX_BIN_CURVES {
+        order.sort_by(|a, b| weight[*b].total_cmp(&weight[*a]).then(a.cmp(b)));
+        order.truncate(MAX_BIN_CURVES);
+        order.sort_unstable();
+    }
+    order
+}
+
+/// Colour of the bins drawn without their own legend entry: a light grey, apart from the
+/// palette's grey.
+const OTHERS_GREY: [u8; 3] = [190, 190, 190];
+
+/// The legend name of the bins not drawn on their own.
+fn others_name(n: usize) -> String {
+    format!("the other {n} bins")
+}
+
 /// Share of the time of each bin: (s_i / f_i) / sum_j (s_j / f_j).
 pub fn time_shares(s: &LoadSpectrumSection) -> Vec<f64> {
     let total = s.seconds_per_cycle();
@@ -130,8 +157,30 @@ pub fn wear_by_bin_figure(grid: &ProfileGrid, run: &SpectrumRun) -> Option<DutyF
     ] {
         let mut curves = vec![Curve::new("all bins", rho.clone(), um(total))];
         for (i, p) in parts.iter().enumerate() {
-            curves.push(Curve::new(format!("bin {}", i + 1), rho.clone(), um(p)));
             table = table.col(&format!("wear_{name}_bin{}_um", i + 1), um(p));
+        }
+        // The bins that added the most wear (deepest), and the rest summed in one line.
+        let deepest: Vec<f64> = parts
+            .iter()
+            .map(|p| p.iter().fold(0.0_f64, |m, x| m.max(*x)))
+            .collect();
+        let drawn = drawn_bins(&deepest);
+        for i in &drawn {
+            curves.push(Curve::new(
+                format!("bin {}", i + 1),
+                rho.clone(),
+                um(&parts[*i]),
+            ));
+        }
+        if drawn.len() < parts.len() {
+            let mut rest = vec![0.0; rho.len()];
+            for (_, p) in parts.iter().enumerate().filter(|(i, _)| !drawn.contains(i)) {
+                for (r, x) in rest.iter_mut().zip(p) {
+                    *r += x;
+                }
+            }
+            let name = others_name(parts.len() - drawn.len());
+            curves.push(Curve::new(name, rho.clone(), um(&rest)));
         }
         panels.push(panel(
             "pinion roll distance along the path of contact (mm)",
@@ -160,10 +209,37 @@ pub fn dynamic_factor_figure(run: &SpectrumRun) -> DutyFigure {
     let nb = df.first().map_or(0, Vec::len);
     let mut table = Table::new().col("cycles", cycles.clone());
     let mut curves = Vec::new();
+    // The bins of largest share on their own; a dynamic factor does not add up, so the
+    // rest are drawn thin and grey under one legend entry.
+    let drawn = drawn_bins(&run.shares);
+    let mut others = Vec::new();
     for i in 0..nb {
         let y: Vec<f64> = df.iter().map(|r| r[i]).collect();
         table = table.col(&format!("dynamic_factor_bin{}", i + 1), y.clone());
-        curves.push(Curve::new(format!("bin {}", i + 1), cycles.clone(), y));
+        if drawn.contains(&i) {
+            curves.push(Curve::new(format!("bin {}", i + 1), cycles.clone(), y));
+        } else {
+            others.push(y);
+        }
+    }
+    let n_others = others.len();
+    let mut p = points_panel(
+        "load cycles of the spectrum",
+        "dynamic factor (max / mean mesh force)",
+        curves,
+    );
+    for (k, y) in others.into_iter().enumerate() {
+        p.series.push(Series {
+            name: if k == 0 {
+                format!("{} (grey)", others_name(n_others))
+            } else {
+                String::new()
+            },
+            x: cycles.clone(),
+            y,
+            color: Some(OTHERS_GREY),
+            ..Default::default()
+        });
     }
     DutyFigure {
         stem: format!("duty_dynamic_factor_{}", run.mode.name()),
@@ -172,11 +248,7 @@ pub fn dynamic_factor_figure(run: &SpectrumRun) -> DutyFigure {
                 "Dynamic factor of each bin as the flanks wear ({})",
                 run.mode.label()
             ),
-            panels: vec![points_panel(
-                "load cycles of the spectrum",
-                "dynamic factor (max / mean mesh force)",
-                curves,
-            )],
+            panels: vec![p],
         },
         table,
     }
@@ -233,5 +305,24 @@ pub fn life_figure(life: &LifeTable) -> DutyFigure {
             }],
         },
         table,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn few_bins_are_all_drawn_many_keep_the_heaviest_in_bin_order() {
+        assert_eq!(drawn_bins(&[0.2, 0.5, 0.3]), vec![0, 1, 2]);
+        // 25 bins with weights 25 - i, except bin 20 (index 19) the heaviest of all.
+        let mut w: Vec<f64> = (0..25).map(|i| 25.0 - i as f64).collect();
+        w[19] = 100.0;
+        assert_eq!(drawn_bins(&w), vec![0, 1, 2, 3, 4, 5, 19]);
+        // Equal weights: the first bins.
+        assert_eq!(
+            drawn_bins(&[1.0; 10]),
+            (0..MAX_BIN_CURVES).collect::<Vec<_>>()
+        );
     }
 }

@@ -244,7 +244,9 @@ fn spectrum_figure(
     let mut side = vec![(strongest, harmonic_label(h0))];
     for (sh, f) in [("pinion", k.pinion_hz), ("gear", k.gear_hz)] {
         for n in [-2.0, -1.0, 1.0, 2.0] {
-            side.push((strongest + n * f, format!("{:+} {sh}", n as i32)));
+            // A real minus sign (U+2212), as on the axes.
+            let sign = if n < 0.0 { '\u{2212}' } else { '+' };
+            side.push((strongest + n * f, format!("{sign}{} {sh}", n.abs())));
         }
     }
     let zoom = Panel {

@@ -156,14 +156,17 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
     };
     let rows = lo * TVMS_SAMPLES..hi * TVMS_SAMPLES;
     let shown = |k: usize| c[k][rows.clone()].to_vec();
-    let mut p = panel(
-        "pinion rotation (deg)",
-        "mesh stiffness (N/m)",
+    // Without a fault the teeth's stiffness is the healthy one (errors, run-out and
+    // reliefs move the flanks, not their stiffness): one curve, nothing to compare.
+    let curves = if t.faults.is_empty() {
+        vec![Curve::new("every tooth pair", shown(0), shown(8))]
+    } else {
         vec![
             Curve::new("healthy teeth", shown(0), shown(9)),
-            Curve::new("these teeth", shown(0), shown(8)),
-        ],
-    );
+            Curve::new("with the faults", shown(0), shown(8)),
+        ]
+    };
+    let mut p = panel("pinion rotation (deg)", "mesh stiffness (N/m)", curves);
     // Mark the start of each engagement of a faulty tooth in the window.
     for f in &t.faults {
         let z = match f.gear {
@@ -177,9 +180,14 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
             }
         }
     }
+    let marked = if t.faults.is_empty() {
+        "no tooth faults"
+    } else {
+        "faulty teeth's engagements marked"
+    };
     let fig = single(
         &format!(
-            "Mesh stiffness of the tooth pairs, mesh cycles {lo} to {} of {} (faulty teeth's engagements marked)",
+            "Mesh stiffness of the tooth pairs, mesh cycles {lo} to {} of {} ({marked})",
             hi - 1,
             tm.periods()
         ),

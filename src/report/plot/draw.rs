@@ -295,16 +295,18 @@ where
     }
     let xr = chart.x_range();
     let font = TextStyle::from((FONT, LABEL_FONT_PX).into_font());
-    let (mut xs, mut sizes) = (Vec::new(), Vec::new());
+    let (mut xs, mut sizes, mut lines) = (Vec::new(), Vec::new(), Vec::new());
     for (x, label) in shown_vlines(panel, &xr) {
+        let px = to_px(&(*x, chart.y_range().end)).0;
+        lines.push(px);
         if !label.is_empty() {
-            xs.push(to_px(&(*x, chart.y_range().end)).0);
+            xs.push(px);
             sizes.push(screen.estimate_text_size(label, &font).map_err(draw_err)?);
         }
     }
     Ok(PanelLayout {
         plot,
-        labels: stack_labels(&xs, &sizes, plot),
+        labels: stack_labels(&xs, &sizes, &lines, plot),
         marks,
         ..Default::default()
     })
@@ -416,6 +418,9 @@ where
     }
     let labels = shown_vlines(panel, &xr).filter(|v| !v.1.is_empty());
     for ((_, label), r) in labels.zip(&lay.labels) {
+        // On white: a line that still passes (no side was free of lines) goes behind it.
+        let back = Rectangle::new([(r.x0 - 1, r.y0), (r.x1 + 1, r.y1)], WHITE.filled());
+        screen.draw(&back).map_err(draw_err)?;
         let font = (FONT, LABEL_FONT_PX).into_font().color(&grey);
         let text = Text::new(label.clone(), (r.x0, r.y0), font);
         screen.draw(&text).map_err(draw_err)?;

@@ -123,9 +123,11 @@ pub fn free_corner(
 }
 
 /// Boxes for marker labels of `sizes` (w, h) anchored at pixel columns `xs`, along the
-/// top of `plot`: each label sits just right of its marker (left of it when it would
-/// leave the plot), in the first row down where it overlaps no earlier label.
-pub fn stack_labels(xs: &[i32], sizes: &[(u32, u32)], plot: Rect) -> Vec<Rect> {
+/// top of `plot`, with `lines` the columns of every marker line: each label sits just
+/// right of its marker, or left of it when the right side would leave the plot or cross
+/// more of the other lines (a line through a label makes it unreadable: "frequency|3x");
+/// then in the first row down where it overlaps no earlier label.
+pub fn stack_labels(xs: &[i32], sizes: &[(u32, u32)], lines: &[i32], plot: Rect) -> Vec<Rect> {
     const GAP: i32 = 3;
     let mut order: Vec<usize> = (0..xs.len()).collect();
     order.sort_by_key(|&i| xs[i]);
@@ -133,15 +135,25 @@ pub fn stack_labels(xs: &[i32], sizes: &[(u32, u32)], plot: Rect) -> Vec<Rect> {
     let mut done: Vec<Rect> = Vec::new();
     for i in order {
         let (w, h) = sizes[i];
-        let x = if xs[i] + GAP + w as i32 <= plot.x1 {
-            xs[i] + GAP
-        } else {
-            xs[i] - GAP - w as i32
+        let crossed = |x0: i32| {
+            let x1 = x0 + w as i32;
+            lines
+                .iter()
+                .filter(|l| **l != xs[i] && (x0 - 1..=x1 + 1).contains(*l))
+                .count()
+        };
+        let (right, left) = (xs[i] + GAP, xs[i] - GAP - w as i32);
+        let right_fits = right + w as i32 <= plot.x1;
+        let left_fits = left >= plot.x0;
+        let x = match (right_fits, left_fits) {
+            (true, true) if crossed(left) < crossed(right) => left,
+            (true, _) => right,
+            _ => left,
         };
         let mut row = 0;
         let rect = loop {
             let r = Rect::at(x, plot.y0 + GAP + row * (h as i32 + 2), w, h);
-            if !done.iter().any(|d| d.inflate(1).intersects(&r)) || row > 64 {
+            if !done.iter().any(|d| d.inflate(3).intersects(&r)) || row > 64 {
                 break r;
             }
             row += 1;
@@ -218,16 +230,34 @@ mod tests {
 
     #[test]
     fn close_labels_go_to_separate_rows() {
-        let r = stack_labels(&[50, 60, 150, 198], &[(40, 12); 4], PLOT);
-        assert_eq!(r.len(), 4);
+        let xs = [50, 60, 70, 150, 198];
+        let r = stack_labels(&xs, &[(40, 12); 5], &xs, PLOT);
+        assert_eq!(r.len(), 5);
         for (i, a) in r.iter().enumerate() {
             for b in &r[i + 1..] {
                 assert!(!a.intersects(b), "{a:?} {b:?}");
             }
         }
-        assert!(r[1].y0 > r[0].y0); // 10 px apart: second row
-        assert_eq!(r[2].y0, r[0].y0); // far apart: first row
-        assert!(r[3].x1 <= PLOT.x1); // near the right edge: left of its marker
+        // 50: its right side would cross 60 and 70, its left none: left, first row.
+        assert_eq!((r[0].x1, r[0].y0), (47, 3));
+        // 60: a line crossed either side: right; 70 right of it, 10 px on: second row.
+        assert_eq!((r[1].x0, r[1].y0), (63, 3));
+        assert!(r[2].x0 == 73 && r[2].y0 > r[1].y0);
+        assert_eq!(r[3].y0, r[0].y0); // far apart: first row
+        assert!(r[4].x1 <= PLOT.x1); // near the right edge: left of its marker
+    }
+
+    #[test]
+    fn a_label_goes_to_the_side_no_other_line_crosses() {
+        // Line 110 would cross the label of 100 on its right (103..143): it goes left.
+        let r = stack_labels(&[100], &[(40, 12)], &[100, 110], PLOT);
+        assert_eq!((r[0].x0, r[0].x1), (100 - 3 - 40, 100 - 3));
+        // Lines on both sides, one each: right, as usual.
+        let r = stack_labels(&[100], &[(40, 12)], &[80, 100, 110], PLOT);
+        assert_eq!(r[0].x0, 103);
+        // No line near: right.
+        let r = stack_labels(&[100], &[(40, 12)], &[100, 190], PLOT);
+        assert_eq!(r[0].x0, 103);
     }
 
     #[test]
