@@ -179,6 +179,12 @@ impl HelicalPair {
         })
     }
 
+    /// Normal base pitch p_bn = pi m_n cos(alpha_n), m (ISO 21771): the transverse base
+    /// pitch times cos(beta_b).
+    pub fn normal_base_pitch_m(&self) -> f64 {
+        PI * self.normal_module_m * self.normal_pressure_angle_rad.cos()
+    }
+
     /// Axial pitch p_x = p_bt / tan(beta_b) = pi m_n / sin(beta), m; infinite for a spur pair.
     pub fn axial_pitch_m(&self) -> f64 {
         self.transverse.base_pitch_m / self.base_helix_angle_rad.tan()
@@ -289,12 +295,6 @@ pub fn transverse_section(g: &GearSection, beta_rad: f64) -> GearSection {
         tool_tip_radius_coefficient: tip,
         ..g.clone()
     }
-}
-
-/// Normal base pitch p_bn = pi m_n cos(alpha_n), m (ISO 21771): the transverse base pitch
-/// times cos(beta_b).
-pub fn normal_base_pitch_m(pair: &HelicalPair) -> f64 {
-    PI * pair.normal_module_m * pair.normal_pressure_angle_rad.cos()
 }
 
 #[cfg(test)]

@@ -107,7 +107,7 @@ fn tr_6336_30_example_1_geometry_against_published_values() {
     );
     assert!((p.total_contact_ratio - ea - eb).abs() < 1e-12);
     // ISO 21771 identities: p_bn = p_bt cos(beta_b); sin(beta_b) = sin(beta) cos(alpha_n).
-    let pbn = normal_base_pitch_m(&p);
+    let pbn = p.normal_base_pitch_m();
     assert!((pbn / (p.transverse.base_pitch_m * p.base_helix_angle_rad.cos()) - 1.0).abs() < 1e-13);
     let sb = p.helix_angle_rad.sin() * p.normal_pressure_angle_rad.cos();
     assert!((p.base_helix_angle_rad.sin() - sb).abs() < 1e-14);

@@ -232,7 +232,7 @@ impl SliceMeshStiffness {
     /// Stiffness, centre of pressure and contacts at pinion rotation `phase_rad`.
     pub fn point(&self, phase_rad: f64) -> SlicePoint {
         let (mut k, mut moment, mut contacts) = (0.0, 0.0, 0);
-        let tp = &self.slice.pair();
+        let tp = self.slice.pair();
         for (y, lead) in self.positions_m.iter().zip(&self.phase_leads_rad) {
             for (_, rho) in tp.pairs_in_contact(phase_rad + lead) {
                 let kj = self.slice.pair_stiffness_n_per_m(rho);
