@@ -1,7 +1,9 @@
-//! Involute spur-pair geometry: radii, path of contact, profile points.
+//! Involute spur-pair geometry: radii, path of contact, profile points; the helical pair's
+//! transverse section, contact ratios and contact lines.
 
 pub mod blank;
 pub mod flank_shape;
+pub mod helical;
 pub mod involute;
 pub mod iso1328;
 pub mod pair;

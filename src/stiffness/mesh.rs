@@ -105,6 +105,21 @@ impl MeshStiffness {
         n_points: usize,
         fillet: Option<FilletSettings>,
     ) -> Result<Self, StiffnessError> {
+        Self::with_hertz_factor(pair, elastic, n_points, fillet, 1.0)
+    }
+
+    /// As [`MeshStiffness::with_fillet`] with the Hertz stiffness of eq. 11 multiplied by
+    /// `hertz_factor` (> 0): a helical slice's contact line is inclined on the plane of
+    /// action, which makes its Hertz stiffness along the transverse line of action cos(beta_b)
+    /// times eq. 11's for the slice width (`stiffness::helical`). 1 is the spur pair, bit
+    /// for bit.
+    pub(crate) fn with_hertz_factor(
+        pair: &GearPair,
+        elastic: &ElasticPair,
+        n_points: usize,
+        fillet: Option<FilletSettings>,
+        hertz_factor: f64,
+    ) -> Result<Self, StiffnessError> {
         let mut errs = elastic.validate();
         if n_points < 5 {
             errs.push(format!(
@@ -157,7 +172,7 @@ impl MeshStiffness {
             pair: pair.clone(),
             teeth,
             fillets,
-            hertz_m_per_n: 1.0 / hertz_stiffness_n_per_m(b, elastic),
+            hertz_m_per_n: 1.0 / (hertz_stiffness_n_per_m(b, elastic) * hertz_factor),
             step_m: pair.path_length_m() / (n_points - 1) as f64,
             values: Vec::new(),
             curvature: Vec::new(),
@@ -294,6 +309,17 @@ impl MeshStiffness {
     /// The pair geometry the table was built for.
     pub fn pair(&self) -> &GearPair {
         &self.pair
+    }
+
+    /// The spline: first grid position rho_start (m), grid step (m), values k_pair (N/m)
+    /// and second derivatives (N/m^3) at the grid points (for exact integrals of it).
+    pub(crate) fn spline(&self) -> (f64, f64, &[f64], &[f64]) {
+        (
+            self.pair.rho_start_m,
+            self.step_m,
+            &self.values,
+            &self.curvature,
+        )
     }
 
     /// Positions (m) and values (N/m) of the table.

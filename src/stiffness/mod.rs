@@ -1,8 +1,9 @@
 //! Mesh stiffness: potential energy method (bending, shear, axial, Hertz, fillet
 //! foundation), the single-pair stiffness along the path of contact, the mesh-period
-//! table, and the ISO 6336-1 Method B cross-check.
+//! table, the helical pair's slice model, and the ISO 6336-1 Method B cross-check.
 
 pub mod fillet;
+pub mod helical;
 pub mod iso6336;
 pub mod mesh;
 pub mod potential_energy;

@@ -1,0 +1,70 @@
+//! Benchmarks of the helical pair's slice model (issue 30, stiffness part).
+//!
+//! Run: `cargo bench --bench helical`. Group `helical`, the built-in pair's normal section
+//! with beta = 15 deg (right hand), 400 table points per slice, fillet foundation on:
+//! - `slice_model_build_20`: `SliceMeshStiffness::new` with N = 20 slices (one slice
+//!   table of 400 points, the spur pair's work, and the slice offsets);
+//! - `slice_table_20_x_400`: the mesh-stiffness table over one mesh period at 400 phases
+//!   (stiffness, centre of pressure, contacts) from the built model;
+//! - `continuous_table_400`: the N -> infinity limit at the same 400 phases;
+//! - `spur_mesh_table_400`: `MeshStiffness::with_fillet` of the beta = 0 pair, for scale.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use gearwear::config::case::Case;
+use gearwear::geometry::helical::{Hand, HelicalPair, HelixSpec};
+use gearwear::geometry::GearPair;
+use gearwear::stiffness::helical::SliceMeshStiffness;
+use gearwear::stiffness::mesh::{FilletSettings, MeshStiffness};
+use gearwear::stiffness::potential_energy::ElasticPair;
+
+/// Criterion settings for a shared 2-core machine: 10 samples, short warm-up.
+fn quick() -> Criterion {
+    Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+}
+
+fn helical(c: &mut Criterion) {
+    let case = Case::default();
+    let helix = HelixSpec {
+        helix_angle_deg: 15.0,
+        hand_pinion: Hand::Right,
+    };
+    let pair = HelicalPair::from_case(&case.gear, &helix).expect("valid helical pair");
+    let elastic = ElasticPair::from_case(&case.materials);
+    let points = case.stiffness.table_points_per_mesh_period as usize;
+    let fillet = FilletSettings::from_case(&case.stiffness);
+    let model =
+        SliceMeshStiffness::new(&pair, &elastic, 20, points, fillet).expect("valid slice model");
+    let period = pair.transverse.mesh_angle_rad();
+    let mut g = c.benchmark_group("helical");
+    g.bench_function("slice_model_build_20", |b| {
+        b.iter(|| SliceMeshStiffness::new(black_box(&pair), &elastic, 20, points, fillet).unwrap())
+    });
+    g.bench_function("slice_table_20_x_400", |b| {
+        b.iter(|| black_box(&model).table(400))
+    });
+    g.bench_function("continuous_table_400", |b| {
+        b.iter(|| {
+            (0..400)
+                .map(|i| black_box(&model).continuous_stiffness_n_per_m(period * i as f64 / 400.0))
+                .sum::<f64>()
+        })
+    });
+    let spur = GearPair::from_case(&case.gear).expect("paper's pair");
+    g.bench_function("spur_mesh_table_400", |b| {
+        b.iter(|| MeshStiffness::with_fillet(black_box(&spur), &elastic, points, fillet).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = quick();
+    targets = helical
+}
+criterion_main!(benches);
