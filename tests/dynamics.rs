@@ -242,7 +242,7 @@ fn friction_forces_only_dissipate() {
     let y = sys.static_equilibrium();
     let mut checked = 0;
     for i in 0..50 {
-        let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.pinion_speed_rad_s;
+        let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.operating.pinion_speed_rad_s;
         let (_, mut ms) = sys.derivative(ContactFrame::NATURAL, t, &y);
         let expected: f64 = (0..ms.n_pairs)
             .map(|j| -ms.friction_n[j] * ms.sliding_m_per_s[j])
@@ -250,10 +250,10 @@ fn friction_forces_only_dissipate() {
         ms.force_n = 0.0; // keep only friction in the generalised forces
         let qf = sys.mesh_forces(&ms);
         let mut v = [0.0; NDOF];
-        v[dof::PHI_M] = m.params.pinion_speed_rad_s;
-        v[dof::PHI_P] = m.params.pinion_speed_rad_s;
-        v[dof::PHI_G] = m.params.gear_speed_rad_s;
-        v[dof::PHI_B] = m.params.gear_speed_rad_s;
+        v[dof::PHI_M] = m.params.operating.pinion_speed_rad_s;
+        v[dof::PHI_P] = m.params.operating.pinion_speed_rad_s;
+        v[dof::PHI_G] = m.params.operating.gear_speed_rad_s;
+        v[dof::PHI_B] = m.params.operating.gear_speed_rad_s;
         let power: f64 = (0..NDOF).map(|k| qf[k] * v[k]).sum();
         assert!(power <= 1e-12, "friction power {power} > 0");
         assert!((power - expected).abs() <= 1e-9 * expected.abs().max(1.0));

@@ -94,7 +94,7 @@ fn linear_limit_equals_a_direct_periodic_solution() {
     );
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system(&gap, &ext, 0.2);
-    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let grid = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     // Every interval of the solver's grid cut into `n` equal ones.
     let refine = |n: usize| -> Vec<f64> {
         grid.windows(2)
@@ -139,7 +139,7 @@ fn linear_limit_equals_a_direct_periodic_solution() {
 fn linear_forces(m: &Model, held: usize) -> Vec<(f64, f64)> {
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system(&gap, &ext, 0.2);
-    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let grid = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     let ys = linear_periodic(&sys, &grid, held);
     let g = sys.mesh_gradient();
     grid.iter()
@@ -179,7 +179,7 @@ fn contact_loss_resonance_is_solved_at_every_point() {
                 .dynamic(&new_teeth(&m), &ExternalError::none())
                 .unwrap_or_else(|e| panic!("{f} Hz, friction {friction}: {e}"));
             let s = ResponseSummary::of(&r);
-            let load = m.params.brake_torque_nm / m.pair.gear.base_radius_m;
+            let load = m.params.operating.brake_torque_nm / m.pair.gear.base_radius_m;
             if friction == "none" {
                 let lin = linear_forces(&m, held);
                 let lin_min = lin.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);

@@ -132,7 +132,7 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
     let rough = plain.roughness_for(&wear);
     let a = plain.system(&gap, &ext, rough);
     let b = resolved.system_for(&gap, &ext, rough, Some(&tm));
-    let t_mesh = plain.pair.mesh_angle_rad() / plain.params.pinion_speed_rad_s;
+    let t_mesh = plain.pair.mesh_angle_rad() / plain.params.operating.pinion_speed_rad_s;
     // Scale of the generalised coordinates: 40 um of mesh deflection each.
     let grad = a.mesh_gradient();
     let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
@@ -224,7 +224,7 @@ fn a_pitch_error_shifts_the_static_transmission_error_as_compatibility_predicts(
     assert_eq!(r.excitation_periods, 19);
     let e = e_um * 1e-6 * m.pair.pressure_angle_rad.cos();
     let f = m.case.operating.load_torque_nm / m.pair.pinion.base_radius_m;
-    let omega = m.params.pinion_speed_rad_s;
+    let omega = m.params.operating.pinion_speed_rad_s;
     let period = m.pair.mesh_angle_rad();
     let (mut checked_single, mut checked_double) = (0, 0);
     for ((t, dte), local) in r
@@ -308,7 +308,7 @@ fn tip_relief_sized_to_the_load_lowers_the_static_transmission_error_as_by_hand(
     let m = model(&relief.iter().map(String::as_str).collect::<Vec<_>>());
     let plain = base.quasi_static(&base.new_wear_state(), &ExternalError::none());
     let relieved = m.quasi_static(&m.new_wear_state(), &ExternalError::none());
-    let omega = base.params.pinion_speed_rad_s;
+    let omega = base.params.operating.pinion_speed_rad_s;
     let hand = |with_relief: bool, t: f64| -> f64 {
         let mut k = Vec::new();
         let mut g = Vec::new();
@@ -433,7 +433,7 @@ fn a_gear_runout_shifts_the_static_transmission_error_by_half_the_runout_in_phas
         assert_eq!(r.excitation_periods, 31);
         let e_c = 0.5 * f_r_um * 1e-6;
         let f = m.case.operating.load_torque_nm / m.pair.pinion.base_radius_m;
-        let omega_g = m.params.pinion_speed_rad_s * 19.0 / 31.0;
+        let omega_g = m.params.operating.pinion_speed_rad_s * 19.0 / 31.0;
         let phi = phase_deg.to_radians();
         let mut seen = (f64::INFINITY, f64::NEG_INFINITY);
         for ((t, dte), phase) in r

@@ -54,7 +54,7 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
     let teeth = m.tooth_mesh(&wear).unwrap();
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system_for(&gap, &ext, m.roughness.rms_um(0.0), Some(&teeth));
-    let one = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let one = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     let t_mesh = *one.last().unwrap();
     let mut grid = one.clone();
     for c in 1..p {

@@ -211,15 +211,15 @@ impl<'a> GearSystem<'a> {
         match p.speed_boundary {
             SpeedBoundary::MotorSpeedImposed => {
                 inv_mass[PHI_M] = 0.0;
-                q_ext[PHI_B] = -p.brake_torque_nm;
+                q_ext[PHI_B] = -p.operating.brake_torque_nm;
             }
             SpeedBoundary::BrakeSpeedImposed => {
                 inv_mass[PHI_B] = 0.0;
-                q_ext[PHI_M] = p.motor_torque_nm;
+                q_ext[PHI_M] = p.operating.motor_torque_nm;
             }
             SpeedBoundary::MotorSlip => {
-                q_ext[PHI_M] = p.motor_torque_nm;
-                q_ext[PHI_B] = -p.brake_torque_nm;
+                q_ext[PHI_M] = p.operating.motor_torque_nm;
+                q_ext[PHI_B] = -p.operating.brake_torque_nm;
             }
         }
         let mut k = Matrix8::zeros();
@@ -313,7 +313,7 @@ impl<'a> GearSystem<'a> {
         match self.drive {
             None => tm.runout_at(t_s),
             Some(d) => {
-                let w = self.parts.params.pinion_speed_rad_s;
+                let w = self.parts.params.operating.pinion_speed_rad_s;
                 let (e, de) = tm.runout_at(d.angle(t_s) / w);
                 (e, de * d.speed(t_s) / w)
             }
@@ -327,9 +327,12 @@ impl<'a> GearSystem<'a> {
         match self.drive {
             Some(d) => {
                 let w = d.speed(t_s);
-                (w, w * p.gear_speed_rad_s / p.pinion_speed_rad_s)
+                (
+                    w,
+                    w * p.operating.gear_speed_rad_s / p.operating.pinion_speed_rad_s,
+                )
             }
-            None => (p.pinion_speed_rad_s, p.gear_speed_rad_s),
+            None => (p.operating.pinion_speed_rad_s, p.operating.gear_speed_rad_s),
         }
     }
 
@@ -357,7 +360,7 @@ impl<'a> GearSystem<'a> {
     pub fn phase_at(&self, t_s: f64) -> f64 {
         match self.drive {
             Some(d) => d.angle(t_s),
-            None => self.parts.params.pinion_speed_rad_s * t_s,
+            None => self.parts.params.operating.pinion_speed_rad_s * t_s,
         }
     }
 
@@ -608,7 +611,7 @@ impl<'a> GearSystem<'a> {
     fn add_drive(&self, d: &Drive, t_s: f64, dy: &mut State) {
         use dof::*;
         let p = self.parts.params;
-        let ratio = p.gear_speed_rad_s / p.pinion_speed_rad_s;
+        let ratio = p.operating.gear_speed_rad_s / p.operating.pinion_speed_rad_s;
         let a = d.accel(t_s);
         for (i, r) in [(PHI_M, 1.0), (PHI_P, 1.0), (PHI_G, ratio), (PHI_B, ratio)] {
             if self.inv_mass[i] > 0.0 {

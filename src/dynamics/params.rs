@@ -61,16 +61,6 @@ pub struct DynamicParams {
     pub operating: OperatingPoint,
 }
 
-/// The solver reads the operating point's speeds and torques as `params.pinion_speed_rad_s`
-/// and so on; they are the [`OperatingPoint`]'s, stored once.
-impl std::ops::Deref for DynamicParams {
-    type Target = OperatingPoint;
-
-    fn deref(&self) -> &OperatingPoint {
-        &self.operating
-    }
-}
-
 impl DynamicParams {
     pub fn from_case(case: &Case, pair: &GearPair) -> Self {
         let d = &case.dynamics;
@@ -113,8 +103,8 @@ mod tests {
         // docs/PAPER_NOTES.md: m_e = 0.506 kg for the paper's inertias.
         assert!((p.equivalent_mesh_mass_kg(&pair) - 0.506).abs() < 5e-4);
         // 60 N m on the pinion: mesh force 60 / r_pb = 3361 N, both ways round.
-        let f_from_brake = p.brake_torque_nm / pair.gear.base_radius_m;
-        let f_from_motor = p.motor_torque_nm / pair.pinion.base_radius_m;
+        let f_from_brake = p.operating.brake_torque_nm / pair.gear.base_radius_m;
+        let f_from_motor = p.operating.motor_torque_nm / pair.pinion.base_radius_m;
         assert!((f_from_brake - 3360.6).abs() < 0.5, "{f_from_brake}");
         assert!((f_from_brake - f_from_motor).abs() < 1e-9);
         // Mesh frequency 19 x 30 Hz.

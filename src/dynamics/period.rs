@@ -99,9 +99,9 @@ pub struct StepCounts {
 /// frequency (m/s) for the velocities; angles through their shaft's base radius.
 pub fn state_scales(sys: &GearSystem) -> State {
     let p = sys.parts.params;
-    let f_nominal = p.brake_torque_nm / sys.parts.pair.gear.base_radius_m;
+    let f_nominal = p.operating.brake_torque_nm / sys.parts.pair.gear.base_radius_m;
     let delta_ref = f_nominal / sys.parts.mesh.mean_stiffness_n_per_m();
-    let omega_mesh = p.pinion_speed_rad_s * sys.parts.pair.pinion.teeth as f64;
+    let omega_mesh = p.operating.pinion_speed_rad_s * sys.parts.pair.pinion.teeth as f64;
     let (rp, rg) = (
         sys.parts.pair.pinion.base_radius_m,
         sys.parts.pair.gear.base_radius_m,

@@ -45,7 +45,7 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
 /// Equilibrium mesh state at mesh phase `phase_rad` (pinion rotation since t = 0: with a
 /// tooth-resolved mesh it also says which teeth meet, and the time the run-out has).
 pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
-    let omega_p = sys.parts.params.pinion_speed_rad_s;
+    let omega_p = sys.parts.params.operating.pinion_speed_rad_s;
     let cycle = sys.parts.pair.mesh_cycle(phase_rad);
     equilibrium_in_cycle(sys, phase_rad, cycle, phase_rad / omega_p)
 }
@@ -60,7 +60,7 @@ pub fn equilibrium_in_cycle(
     t_s: f64,
 ) -> MeshState {
     let p = sys.parts.params;
-    let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
+    let (omega_p, omega_g) = (p.operating.pinion_speed_rad_s, p.operating.gear_speed_rad_s);
     let rb1 = sys.parts.pair.pinion.base_radius_m;
     let (e_ext, _) = sys.parts.external.at(phase_rad);
     let mut ms = MeshState::default();
@@ -100,8 +100,8 @@ pub fn equilibrium_in_cycle(
         return ms;
     }
     let (torque, on_gear) = match p.speed_boundary {
-        SpeedBoundary::BrakeSpeedImposed => (p.motor_torque_nm, false),
-        _ => (p.brake_torque_nm, true),
+        SpeedBoundary::BrakeSpeedImposed => (p.operating.motor_torque_nm, false),
+        _ => (p.operating.brake_torque_nm, true),
     };
     let arm = if on_gear {
         sys.parts.pair.gear.base_radius_m
@@ -148,7 +148,7 @@ pub fn equilibrium_in_cycle(
 /// Quasi-static response over one mesh period on the same grid as the dynamic solver,
 /// or over the tooth-resolved mesh's period of several (`ToothMesh::periods`).
 pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
-    let omega = sys.parts.params.pinion_speed_rad_s;
+    let omega = sys.parts.params.operating.pinion_speed_rad_s;
     let one = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
     let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
     let t_mesh = *one.last().unwrap_or(&0.0);
@@ -175,7 +175,7 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
             &ms,
             sys.parts.pair.loa_length_m,
             omega,
-            sys.parts.params.gear_speed_rad_s,
+            sys.parts.params.operating.gear_speed_rad_s,
         );
     }
     // The engagement within the excitation period, as the dynamic recorder gives it

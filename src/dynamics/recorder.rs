@@ -208,7 +208,8 @@ fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &Mes
 }
 
 fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
-    let omega_p = sys.parts.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
-    let omega_g = sys.parts.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
+    let omega_p =
+        sys.parts.params.operating.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
+    let omega_g = sys.parts.params.operating.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
     PathSample::push_contacts(path, ms, sys.parts.pair.loa_length_m, omega_p, omega_g);
 }

@@ -119,7 +119,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     ) -> Result<Self, DynamicsError> {
         let nodes = period_nodes(
             sys.parts.pair,
-            sys.parts.params.pinion_speed_rad_s,
+            sys.parts.params.operating.pinion_speed_rad_s,
             settings.steps_per_mesh_period,
         );
         let ps = PeriodStepper::new(sys, nodes, settings.integration_tolerance)

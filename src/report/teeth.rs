@@ -271,9 +271,9 @@ pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)
 /// shafts' frequencies marked (resolved over the excitation period of a tooth-resolved
 /// response: bins of f_mesh / P).
 pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figure, Table) {
-    let f_mesh = model.params.mesh_frequency_hz;
-    let f_p = model.params.pinion_speed_rad_s / std::f64::consts::TAU;
-    let f_g = model.params.gear_speed_rad_s / std::f64::consts::TAU;
+    let f_mesh = model.params.operating.mesh_frequency_hz;
+    let f_p = model.params.operating.pinion_speed_rad_s / std::f64::consts::TAU;
+    let f_g = model.params.operating.gear_speed_rad_s / std::f64::consts::TAU;
     let spec = velocity_y_spectrum(r);
     let (f, a) = spectrum_rows(&spec.frequency_hz, &spec.amplitude, f_mesh + 5.5 * f_p);
     let (f, a): (Vec<f64>, Vec<f64>) = f
@@ -352,7 +352,7 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
         "peak_to_peak_um": max - min,
         "mesh_periods": r.excitation_periods,
     });
-    let omega = model.params.pinion_speed_rad_s;
+    let omega = model.params.operating.pinion_speed_rad_s;
     let table = Table::new()
         .col(
             "pinion_angle_deg",

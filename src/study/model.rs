@@ -151,8 +151,11 @@ impl Model {
             &pair,
             &mesh,
             &grid,
-            [params.pinion_speed_rad_s, params.gear_speed_rad_s],
-            params.static_mesh_force_n,
+            [
+                params.operating.pinion_speed_rad_s,
+                params.operating.gear_speed_rad_s,
+            ],
+            params.operating.static_mesh_force_n,
         )
         .map_err(ModelError)?;
         warnings.extend(tolerance_extrapolation_warnings(case, &pair));

@@ -31,8 +31,8 @@ pub struct SignalRecord {
 /// Shaft speeds and teeth of the model at its operating point.
 pub fn kinematics(model: &Model) -> Kinematics {
     Kinematics {
-        pinion_hz: model.params.pinion_speed_rad_s / (2.0 * PI),
-        gear_hz: model.params.gear_speed_rad_s / (2.0 * PI),
+        pinion_hz: model.params.operating.pinion_speed_rad_s / (2.0 * PI),
+        gear_hz: model.params.operating.gear_speed_rad_s / (2.0 * PI),
         teeth_pinion: model.pair.pinion.teeth,
         teeth_gear: model.pair.gear.teeth,
     }

@@ -52,8 +52,10 @@ pub fn drive_of(case: &Case, model: &Model, duration: f64) -> Drive {
         // Torque on the shaft it is given on -> on the shaft where the load acts.
         let on_gear_side = p.speed_boundary != SpeedBoundary::BrakeSpeedImposed;
         let per_given = match (case.operating.load_torque_shaft, on_gear_side) {
-            (TorqueShaft::Pinion, true) => p.brake_torque_nm / p.motor_torque_nm,
-            (TorqueShaft::Gear, false) => p.motor_torque_nm / p.brake_torque_nm,
+            (TorqueShaft::Pinion, true) => {
+                p.operating.brake_torque_nm / p.operating.motor_torque_nm
+            }
+            (TorqueShaft::Gear, false) => p.operating.motor_torque_nm / p.operating.brake_torque_nm,
             _ => 1.0,
         };
         let rate = (20.0 * s.torque_fluctuation_bandwidth_hz).max(1000.0);
@@ -120,7 +122,9 @@ pub fn transient_clean_record(
     )?;
     let ratio = match chain.tachometer.shaft {
         Shaft::Pinion => 1.0,
-        Shaft::Gear => model.params.gear_speed_rad_s / model.params.pinion_speed_rad_s,
+        Shaft::Gear => {
+            model.params.operating.gear_speed_rad_s / model.params.operating.pinion_speed_rad_s
+        }
     };
     let samples = (duration * chain.acquisition.sampling_rate_hz).ceil() as usize;
     let record = transient_record(&sampler, &lead, chain, &|t| ratio * drive.angle(t), samples);

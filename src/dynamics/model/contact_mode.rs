@@ -187,7 +187,7 @@ mod tests {
         let (gap, ext) = (PairGap::none(), ExternalError::none());
         let sys = m.system(&gap, &ext, 0.2);
         let mut y = sys.static_equilibrium();
-        let t = 0.3 * m.pair.mesh_angle_rad() / m.params.pinion_speed_rad_s;
+        let t = 0.3 * m.pair.mesh_angle_rad() / m.params.operating.pinion_speed_rad_s;
         // Loaded at rest: every pair in contact touches and the mesh pushes.
         let mode = sys.natural_mode(t, &y);
         assert!(mode.touches(0) && mode.pushing);
