@@ -19,6 +19,8 @@
 //! friction power -sum f_i u_s,i is never positive. Torques: pinion -r_pb F - sum rho1_i f_i,
 //! gear +r_gb F + sum rho2_i f_i (eq. 3-4, radii of curvature as lever arms).
 
+use super::assembly::elements::Elements;
+use super::assembly::Assembly;
 use super::drive::Drive;
 use super::excitation::{ExternalError, PairGap};
 use super::params::DynamicParams;
@@ -187,7 +189,6 @@ const _: () = {
 
 impl<'a> GearSystem<'a> {
     pub fn new(mut parts: GearSystemParts<'a>) -> Self {
-        use dof::*;
         // `Auto` becomes the law this mesh uses, once (config::case::LoadSharingModel).
         parts.load_sharing = parts
             .load_sharing
@@ -195,105 +196,21 @@ impl<'a> GearSystem<'a> {
         let GearSystemParts {
             pair, mesh, params, ..
         } = parts;
-        let p = params;
-        let mut inv_mass = [
-            1.0 / p.lumped.mass_pinion_kg,
-            1.0 / p.lumped.mass_pinion_kg,
-            1.0 / p.lumped.mass_gear_kg,
-            1.0 / p.lumped.mass_gear_kg,
-            1.0 / p.lumped.inertia_motor_kg_m2,
-            1.0 / p.lumped.inertia_pinion_kg_m2,
-            1.0 / p.lumped.inertia_gear_kg_m2,
-            1.0 / p.lumped.inertia_brake_kg_m2,
-        ];
-        let mut q_ext = SVector::<f64, NDOF>::zeros();
-        // An imposed angle is a coordinate with infinite inertia: zero acceleration.
-        match p.speed_boundary {
-            SpeedBoundary::MotorSpeedImposed => {
-                inv_mass[PHI_M] = 0.0;
-                q_ext[PHI_B] = -p.operating.brake_torque_nm;
-            }
-            SpeedBoundary::BrakeSpeedImposed => {
-                inv_mass[PHI_B] = 0.0;
-                q_ext[PHI_M] = p.operating.motor_torque_nm;
-            }
-            SpeedBoundary::MotorSlip => {
-                q_ext[PHI_M] = p.operating.motor_torque_nm;
-                q_ext[PHI_B] = -p.operating.brake_torque_nm;
-            }
-        }
-        let mut k = Matrix8::zeros();
-        let mut c = Matrix8::zeros();
-        for (i, kb, cb) in [
-            (
-                XP,
-                p.lumped.bearing_stiffness_pinion_n_per_m,
-                p.lumped.bearing_damping_pinion_n_s_per_m,
-            ),
-            (
-                YP,
-                p.lumped.bearing_stiffness_pinion_n_per_m,
-                p.lumped.bearing_damping_pinion_n_s_per_m,
-            ),
-            (
-                XG,
-                p.lumped.bearing_stiffness_gear_n_per_m,
-                p.lumped.bearing_damping_gear_n_s_per_m,
-            ),
-            (
-                YG,
-                p.lumped.bearing_stiffness_gear_n_per_m,
-                p.lumped.bearing_damping_gear_n_s_per_m,
-            ),
-        ] {
-            k[(i, i)] = kb;
-            c[(i, i)] = cb;
-        }
-        for (i, j, kc, cc) in [
-            (
-                PHI_M,
-                PHI_P,
-                p.lumped.coupling_stiffness_motor_nm_per_rad,
-                p.lumped.coupling_damping_motor_nm_s_per_rad,
-            ),
-            (
-                PHI_G,
-                PHI_B,
-                p.lumped.coupling_stiffness_brake_nm_per_rad,
-                p.lumped.coupling_damping_brake_nm_s_per_rad,
-            ),
-        ] {
-            for (m, val) in [(&mut k, kc), (&mut c, cc)] {
-                m[(i, i)] += val;
-                m[(j, j)] += val;
-                m[(i, j)] -= val;
-                m[(j, i)] -= val;
-            }
-        }
-        if p.speed_boundary == SpeedBoundary::MotorSlip {
-            // Motor torque T_0 + c_slip (Omega_p - dtheta_m/dt) = T_0 - c_slip dphi_m/dt.
-            c[(PHI_M, PHI_M)] += p.motor_slip_damping_nm_s_per_rad;
-        }
-        let phi = pair.operating_pressure_angle_rad;
-        let (s, co) = phi.sin_cos();
-        let mut grad = SVector::<f64, NDOF>::zeros();
-        grad[XP] = s;
-        grad[YP] = co;
-        grad[XG] = -s;
-        grad[YG] = -co;
-        grad[PHI_P] = pair.pinion.base_radius_m;
-        grad[PHI_G] = -pair.gear.base_radius_m;
+        let asm = Assembly::new(Elements::single_pair(params, pair))
+            .expect("the single pair is a connected train");
+        let geometry = &asm.meshes()[0];
+        let [sx, co] = geometry.line_of_action;
         let c_m = params.mesh_damping_n_s_per_m(pair, mesh.mean_stiffness_n_per_m());
         let xu = XuConstants::new(parts.viscosity_cp, parts.roughness_um);
         Self {
             parts,
             mesh_damping_n_s_per_m: c_m,
-            inv_mass,
-            k_lin: k,
-            c_lin: c,
-            grad,
-            q_ext,
-            sin_cos_phi: (s, co),
+            inv_mass: std::array::from_fn(|i| asm.inverse_masses()[i]),
+            k_lin: Matrix8::from_fn(|i, j| asm.stiffness()[(i, j)]),
+            c_lin: Matrix8::from_fn(|i, j| asm.damping()[(i, j)]),
+            grad: SVector::from_fn(|i, _| asm.mesh_gradient(0)[i]),
+            q_ext: SVector::from_fn(|i, _| asm.external_forces()[i]),
+            sin_cos_phi: (sx, co),
             xu,
             drive: None,
         }
