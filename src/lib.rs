@@ -8,12 +8,12 @@
 //! checked by `tests/layers.rs`): the ground (`format`, `checksum`, `remedy`, `rng`, and
 //! `io`, the file mechanics) -> `config` -> `geometry` -> `stiffness` -> `contact` ->
 //! `dynamics` -> `wear` -> `signals` -> `study` -> `duty` -> `prognostics` -> `store`
-//! (checkpoints, run metadata) -> `report` -> `app` (one job per study) -> `cli` (and the
-//! Python binding in `python/`).
+//! (checkpoints, run metadata) -> `report` -> `app` (one job per study). The front ends sit on top: the command
+//! line (`src/cli/`, compiled into the `gearwear` binary) and the Python binding
+//! (`python/`).
 
 pub mod app;
 pub mod checksum;
-pub mod cli;
 pub mod config;
 pub mod contact;
 pub mod duty;

@@ -1,5 +1,9 @@
-//! The `gearwear` binary; all logic lives in the library (`gearwear::cli`).
+//! The `gearwear` binary: the command line (`src/cli/`) over the library.
+
+#![warn(unreachable_pub)]
+
+mod cli;
 
 fn main() -> std::process::ExitCode {
-    gearwear::cli::main()
+    cli::main()
 }

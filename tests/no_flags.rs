@@ -8,6 +8,10 @@
 //! words (`Display`), while the command line's wording of the same errors must name the
 //! flag.
 
+/// The command line's spelling of each argument: the binary's own table, compiled here.
+#[path = "../src/cli/flag.rs"]
+mod flag;
+
 use gearwear::app::{
     DynamicsJob, Job, JobError, PredictJob, PredictOptions, SweepJob, TransmissionErrorSource,
     WearJob,
@@ -167,7 +171,7 @@ fn no_string_literal_of_the_library_names_a_flag() {
 fn words<J: Job>(job: J) -> (String, String) {
     match job.run(&()) {
         Err(e) => {
-            let cli = e.render(gearwear::cli::flag);
+            let cli = e.render(flag::flag);
             (e.to_string(), cli)
         }
         Ok(_) => panic!("{} ran", job.name()),
@@ -184,11 +188,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     // Overrides and sweep axes.
     let e = load_case("", &["gear.module_mm=2\n[x]".into(), "gear=1".into()]).unwrap_err();
     plain.extend(e.messages());
-    cli.extend(
-        e.problems
-            .iter()
-            .map(|w| (w.render(gearwear::cli::flag), "--set")),
-    );
+    cli.extend(e.problems.iter().map(|w| (w.render(flag::flag), "--set")));
     for bad in [
         "speed",
         "a=1",
@@ -201,11 +201,11 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     ] {
         let p = parse_vary(bad).unwrap_err();
         plain.push(p.to_string());
-        cli.push((p.render(gearwear::cli::flag), "--vary"));
+        cli.push((p.render(flag::flag), "--vary"));
     }
     let p = Shard::parse("3/2").unwrap_err();
     plain.push(p.to_string());
-    cli.push((p.render(gearwear::cli::flag), "--shard"));
+    cli.push((p.render(flag::flag), "--shard"));
     plain.push(SweepPlan::new(vec![]).unwrap_err().to_string());
     let two = SweepPlan::new(vec![
         parse_vary("operating.input_speed_hz=30,40").unwrap(),
@@ -214,7 +214,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     .unwrap();
     let p = ContinuationPlan::new(&two, Continuation::Up).unwrap_err();
     plain.push(p.to_string());
-    cli.push((p.render(gearwear::cli::flag), "--vary"));
+    cli.push((p.render(flag::flag), "--vary"));
 
     // The output folder, its lock, checkpoints.
     for kind in [
@@ -224,13 +224,13 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     ] {
         let e = OutputError::io("write", d.path(), &std::io::Error::from(kind));
         plain.push(e.to_string());
-        cli.push((e.render(gearwear::cli::flag), "--out"));
+        cli.push((e.render(flag::flag), "--out"));
     }
     let root = gearwear::io::dir::Dir::open_root(d.path()).unwrap();
     let _held = OutputLock::acquire(&root, ".lock", "wear").unwrap();
     let e = OutputLock::acquire(&root, ".lock", "run").unwrap_err();
     plain.push(e.to_string());
-    cli.push((e.problem().render(gearwear::cli::flag), "--out"));
+    cli.push((e.problem().render(flag::flag), "--out"));
     // A folder holding another command's results, refused unless replacing is allowed.
     let other = d.path().join("other");
     let mut set = gearwear::io::OutputDir::open(&other, None, "stiffness").unwrap();
@@ -238,7 +238,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     set.publish().unwrap();
     let e = gearwear::io::OutputDir::open(&other, None, "wear").unwrap_err();
     plain.push(e.to_string());
-    cli.push((e.problem().render(gearwear::cli::flag), "--replace"));
+    cli.push((e.problem().render(flag::flag), "--replace"));
     let e = gearwear::store::checkpoint::parse_checkpoint(
         b"x y\n",
         "checkpoint_dynamic.jsonl",
@@ -247,7 +247,7 @@ fn built_messages_name_no_flag_and_the_command_line_names_its_own() {
     )
     .unwrap_err();
     plain.push(e.to_string());
-    cli.push((e.problem().render(gearwear::cli::flag), "--resume"));
+    cli.push((e.problem().render(flag::flag), "--resume"));
 
     // Jobs refusing their input: the budget, a resume with nothing to resume, a sweep
     // option that does not fit, a transmission error, prediction options.

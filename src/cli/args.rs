@@ -1,11 +1,11 @@
 //! Command-line arguments (clap derive).
 
-use crate::config::{load_case_in, Case};
-use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
+use gearwear::config::{load_case_in, Case};
+use gearwear::study::budget::Budget;
 use std::path::PathBuf;
 
-use super::CliError;
+use super::error::CliError;
 
 #[derive(Debug, Parser)]
 #[command(
@@ -13,23 +13,23 @@ use super::CliError;
     version,
     about = "Dynamic wear prediction of spur gears (Coatings 2022, 12, 1250)"
 )]
-pub struct Cli {
+pub(crate) struct Cli {
     /// Print no results on standard output (errors, warnings and progress still go to
     /// standard error).
     #[arg(long, short, global = true)]
-    pub quiet: bool,
+    pub(crate) quiet: bool,
     #[command(subcommand)]
-    pub command: Command,
+    pub(crate) command: Command,
     /// Multiply the run budget (2 GB of memory, 10 minutes on one core of the reference
     /// machine; docs/RELIABILITY.md) by X, to run a larger case knowingly.
     #[arg(long, global = true, value_name = "X", value_parser = parse_budget_scale)]
-    pub budget_scale: Option<f64>,
+    pub(crate) budget_scale: Option<f64>,
     /// Run without the budget check.
     #[arg(long, global = true, conflicts_with = "budget_scale")]
-    pub no_budget: bool,
+    pub(crate) no_budget: bool,
     /// Replace the results of another command in the output folder (refused otherwise).
     #[arg(long, global = true)]
-    pub replace: bool,
+    pub(crate) replace: bool,
 }
 
 fn parse_budget_scale(text: &str) -> Result<f64, String> {
@@ -37,20 +37,20 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
         Ok(x) if x.is_normal() && x > 0.0 && x <= 1e9 => Ok(x),
         _ => Err(format!(
             "--budget-scale {}: expected a number in (0, 1e9]",
-            crate::format::clip(text, crate::format::SHOWN_CHARS)
+            gearwear::format::clip(text, gearwear::format::SHOWN_CHARS)
         )),
     }
 }
 
 impl Cli {
     /// The budget the flags ask for; None without one.
-    pub fn budget(&self) -> Option<Budget> {
+    pub(crate) fn budget(&self) -> Option<Budget> {
         (!self.no_budget).then(|| Budget::scaled(self.budget_scale.unwrap_or(1.0)))
     }
 }
 
 #[derive(Debug, Subcommand)]
-pub enum Command {
+pub(crate) enum Command {
     /// Print the default case (the paper's) as commented TOML, or with --new-pair a case
     /// whose bores, masses and inertias follow the geometry.
     Config(ConfigArgs),
@@ -88,19 +88,19 @@ pub enum Command {
 
 /// How a case is given: a TOML file and/or `--set` overrides on top of the default.
 #[derive(Debug, Clone, Args, Default)]
-pub struct CaseArgs {
+pub(crate) struct CaseArgs {
     /// Case file (TOML). Omitted keys take the paper's defaults.
     #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
+    pub(crate) config: Option<PathBuf>,
     /// Override one key, e.g. --set operating.input_speed_hz=45 (repeatable).
     #[arg(long = "set", value_name = "SECTION.KEY=VALUE")]
-    pub set: Vec<String>,
+    pub(crate) set: Vec<String>,
 }
 
 impl CaseArgs {
     /// The case file's text (empty without --config).
-    pub fn text(&self) -> Result<String, CliError> {
-        use crate::io::input::{read_input_text, MAX_CASE_BYTES};
+    pub(crate) fn text(&self) -> Result<String, CliError> {
+        use gearwear::io::input::{read_input_text, MAX_CASE_BYTES};
         match &self.config {
             // Only a regular file of bounded size (a FIFO or a device is refused at once).
             Some(p) => read_input_text(p, "case file", MAX_CASE_BYTES)
@@ -111,7 +111,7 @@ impl CaseArgs {
 
     /// Read, merge and validate the case; a relative `load_spectrum.file` is read from the
     /// case file's folder.
-    pub fn load(&self) -> Result<Case, CliError> {
+    pub(crate) fn load(&self) -> Result<Case, CliError> {
         let dir = self
             .config
             .as_deref()
@@ -122,33 +122,33 @@ impl CaseArgs {
 }
 
 #[derive(Debug, Args)]
-pub struct ConfigArgs {
+pub(crate) struct ConfigArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Print the key reference as Markdown (docs/CONFIG.md) instead.
     #[arg(long, conflicts_with = "new_pair")]
-    pub markdown: bool,
+    pub(crate) markdown: bool,
     /// Print a starting case for a pair of one's own: hub bores, masses and inertias of
     /// pinion and gear set to "derived", so they follow the [gear] section.
     #[arg(long)]
-    pub new_pair: bool,
+    pub(crate) new_pair: bool,
 }
 
 /// The formats and size of a command's figures.
 #[derive(Debug, Clone, Args, Default)]
-pub struct FigureArgs {
+pub(crate) struct FigureArgs {
     /// Figure formats: png, svg (vector) or png,svg [default: png].
     #[arg(long = "figures", value_name = "FORMATS")]
-    pub formats: Option<String>,
+    pub(crate) formats: Option<String>,
     /// Size of a one-panel figure in pixels, WIDTHxHEIGHT (width 400-8192, height
     /// 200-4096; figures of several panels keep their height ratio) [default: 900x420].
     #[arg(long = "figure-size", value_name = "WxH")]
-    pub size: Option<String>,
+    pub(crate) size: Option<String>,
 }
 
 impl FigureArgs {
-    pub fn request(&self) -> crate::report::figure_output::FigureRequest {
-        crate::report::figure_output::FigureRequest {
+    pub(crate) fn request(&self) -> gearwear::report::figure_output::FigureRequest {
+        gearwear::report::figure_output::FigureRequest {
             formats: self.formats.clone(),
             size: self.size.clone(),
         }
@@ -156,87 +156,87 @@ impl FigureArgs {
 }
 
 #[derive(Debug, Args)]
-pub struct StiffnessArgs {
+pub(crate) struct StiffnessArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Output directory.
     #[arg(long, default_value = "results/stiffness")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct DynamicsArgs {
+pub(crate) struct DynamicsArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Geometric transmission error to add: CSV `pinion_angle_deg,error_um` over one mesh
     /// period (positive adds to the mesh compression, paper eq. 2).
     #[arg(long, value_name = "FILE")]
-    pub transmission_error: Option<PathBuf>,
+    pub(crate) transmission_error: Option<PathBuf>,
     /// Output directory.
     #[arg(long, default_value = "results/dynamics")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum WearModeArg {
+pub(crate) enum WearModeArg {
     Dynamic,
     QuasiStatic,
     Both,
 }
 
 #[derive(Debug, Args)]
-pub struct WearArgs {
+pub(crate) struct WearArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Which solver feeds the wear model.
     #[arg(long, value_enum, default_value = "both")]
-    pub mode: WearModeArg,
+    pub(crate) mode: WearModeArg,
     /// Output directory.
     #[arg(long, default_value = "results/wear")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
     /// Continue from the checkpoints in the output directory.
     #[arg(long)]
-    pub resume: bool,
+    pub(crate) resume: bool,
 }
 
 #[derive(Debug, Args)]
-pub struct RunArgs {
+pub(crate) struct RunArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Output directory.
     #[arg(long, default_value = "results")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
     /// Continue the wear studies from the checkpoints in the output directory.
     #[arg(long)]
-    pub resume: bool,
+    pub(crate) resume: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum SweepRunArg {
+pub(crate) enum SweepRunArg {
     Dynamics,
     Wear,
 }
 
 /// `--continuation`: which solution branches a one-parameter sweep follows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ContinuationArg {
+pub(crate) enum ContinuationArg {
     Up,
     Down,
     Both,
 }
 
 #[derive(Debug, Args)]
-pub struct SweepArgs {
+pub(crate) struct SweepArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// A varied key: KEY=START:STOP:STEP (STOP included when the range lands on it) or
     /// KEY=v1,v2,... (repeatable; the first --vary varies slowest).
     #[arg(
@@ -244,71 +244,71 @@ pub struct SweepArgs {
         value_name = "KEY=START:STOP:STEP|KEY=V1,V2,...",
         required = true
     )]
-    pub vary: Vec<String>,
+    pub(crate) vary: Vec<String>,
     /// What each case runs: one dynamic evaluation, or the wear study (both modes).
     #[arg(long, value_enum, default_value = "dynamics")]
-    pub run: SweepRunArg,
+    pub(crate) run: SweepRunArg,
     /// Output directory (cases/<case_id>.json, sweep.csv, sweep.json, sweep.png).
     #[arg(long, default_value = "results/sweep")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Run only shard I of N (1-based; round-robin: case ids with id mod N = I-1);
     /// outputs are then named sweep_shard_I_of_N.*.
     #[arg(long, value_name = "I/N")]
-    pub shard: Option<String>,
+    pub(crate) shard: Option<String>,
     /// Follow solution branches: run the single --vary axis in order (up: rising values,
     /// down: falling, both: the two branches), each point started from the periodic state
     /// of the point before; sweep.csv gets a `branch` column. One --vary, --run dynamics,
     /// no --shard.
     #[arg(long, value_enum, value_name = "BRANCHES")]
-    pub continuation: Option<ContinuationArg>,
+    pub(crate) continuation: Option<ContinuationArg>,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct SweepMergeArgs {
+pub(crate) struct SweepMergeArgs {
     /// Sweep output directories (their sweep.csv and sweep_shard_*_of_*.csv) or CSV files.
     #[arg(required = true, value_name = "DIR_OR_CSV")]
-    pub inputs: Vec<PathBuf>,
+    pub(crate) inputs: Vec<PathBuf>,
     /// Output directory (writes sweep.csv there), or a .csv file path.
     #[arg(long)]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct CalibrateArgs {
+pub(crate) struct CalibrateArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Observations CSV: `cycles`, observed quantities (names of the updates CSV, or condition indicators such as `input_rms`), optional
     /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
     #[arg(long, value_name = "FILE")]
-    pub observations: PathBuf,
+    pub(crate) observations: PathBuf,
     /// Output directory.
     #[arg(long, default_value = "results/calibrate")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Seed of every random draw.
     #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// Posterior samples to write.
     #[arg(long, default_value_t = 2000)]
-    pub samples: usize,
+    pub(crate) samples: usize,
     /// Walkers of the ensemble sampler (three parameters).
     #[arg(long, default_value_t = 32)]
-    pub walkers: usize,
+    pub(crate) walkers: usize,
     /// Steps of the ensemble sampler (the first half is burn-in).
     #[arg(long, default_value_t = 2000)]
-    pub steps: usize,
+    pub(crate) steps: usize,
     /// True wear runs to check the surrogate against (at the posterior's 5/50/95 %).
     #[arg(long, default_value_t = 3)]
-    pub check_runs: usize,
+    pub(crate) check_runs: usize,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ForwardArg {
+pub(crate) enum ForwardArg {
     /// Reference runs and the k x N invariance (fast).
     Surrogate,
     /// One true wear study per sample (slow; shard it).
@@ -316,66 +316,66 @@ pub enum ForwardArg {
 }
 
 #[derive(Debug, Args)]
-pub struct PredictArgs {
+pub(crate) struct PredictArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Posterior samples CSV (from `calibrate`); omitted: sample the case's prior.
     #[arg(long, value_name = "FILE")]
-    pub posterior: Option<PathBuf>,
+    pub(crate) posterior: Option<PathBuf>,
     /// Wear limit on the maximum pinion wear depth, um.
     #[arg(long, value_name = "L")]
-    pub limit_um: f64,
+    pub(crate) limit_um: f64,
     /// Horizon, pinion cycles.
     #[arg(long, value_name = "N")]
-    pub cycles: f64,
+    pub(crate) cycles: f64,
     /// Output directory.
     #[arg(long, default_value = "results/predict")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Seed of every random draw.
     #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// Ensemble size (default: every posterior row, or 2000 prior draws); with a posterior
     /// of another size its rows are drawn with replacement.
     #[arg(long)]
-    pub samples: Option<usize>,
+    pub(crate) samples: Option<usize>,
     /// Cycle counts of the fan charts, from 0 to N.
     #[arg(long, default_value_t = 101)]
-    pub grid_points: usize,
+    pub(crate) grid_points: usize,
     /// Forward model.
     #[arg(long, value_enum, default_value = "surrogate")]
-    pub forward: ForwardArg,
+    pub(crate) forward: ForwardArg,
     /// Run only shard I of N (samples with index mod N = I-1); then join with predict-merge.
     #[arg(long, value_name = "I/N")]
-    pub shard: Option<String>,
+    pub(crate) shard: Option<String>,
     /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
     #[arg(long, default_value_t = 3)]
-    pub check_runs: usize,
+    pub(crate) check_runs: usize,
     /// A future duty: a TOML file holding a [load_spectrum] section (as a case file spells
     /// it) that replaces the case's duty from --future-from-cycles on.
     #[arg(long, value_name = "FILE")]
-    pub future_spectrum: Option<PathBuf>,
+    pub(crate) future_spectrum: Option<PathBuf>,
     /// Pinion cycles from new teeth at which the future spectrum takes over (required
     /// with --future-spectrum), in [0, --cycles).
     #[arg(long, value_name = "N")]
-    pub future_from_cycles: Option<f64>,
+    pub(crate) future_from_cycles: Option<f64>,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct PredictMergeArgs {
+pub(crate) struct PredictMergeArgs {
     /// Shard files (predict_shard_I_of_N.json) or directories holding them.
     #[arg(required = true, value_name = "DIR_OR_JSON")]
-    pub inputs: Vec<PathBuf>,
+    pub(crate) inputs: Vec<PathBuf>,
     /// Output directory.
     #[arg(long)]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum InterpolationArg {
+pub(crate) enum InterpolationArg {
     /// Piecewise linear between samples (a ramp counts exactly).
     Linear,
     /// Each sample held until the next (a logger's sample-and-hold).
@@ -383,7 +383,7 @@ pub enum InterpolationArg {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum LevelArg {
+pub(crate) enum LevelArg {
     /// Revolution-weighted mean torque of the cell (keeps the cell's wear).
     Mean,
     /// Upper edge of the torque class (conservative rating).
@@ -391,40 +391,40 @@ pub enum LevelArg {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ShaftArg {
+pub(crate) enum ShaftArg {
     Pinion,
     Gear,
 }
 
 #[derive(Debug, Args)]
-pub struct LoadSpectrumArgs {
+pub(crate) struct LoadSpectrumArgs {
     /// CSV with columns time_s (s), torque_nm (N m) and input_speed_hz (Hz) or
     /// input_speed_rpm (rpm); other columns are ignored.
     #[arg(long, value_name = "CSV")]
-    pub history: PathBuf,
+    pub(crate) history: PathBuf,
     /// Output directory: spectrum.csv (for load_spectrum.file), load_spectrum.toml (the
     /// section to paste into a case), ldd.csv, the figures and summary.json.
     #[arg(long, default_value = "results/load-spectrum")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Equal torque classes over [0, max torque].
     #[arg(long, default_value_t = 10)]
-    pub torque_classes: usize,
+    pub(crate) torque_classes: usize,
     /// Equal speed classes over [0, max speed].
     #[arg(long, default_value_t = 5)]
-    pub speed_classes: usize,
+    pub(crate) speed_classes: usize,
     /// How the history runs between samples.
     #[arg(long, value_enum, default_value = "linear")]
-    pub interpolation: InterpolationArg,
+    pub(crate) interpolation: InterpolationArg,
     /// The torque each bin gets.
     #[arg(long, value_enum, default_value = "mean")]
-    pub level: LevelArg,
+    pub(crate) level: LevelArg,
     /// Shaft the torque was measured on.
     #[arg(long, value_enum, default_value = "pinion")]
-    pub torque_shaft: ShaftArg,
+    pub(crate) torque_shaft: ShaftArg,
     /// Longest interval accepted between samples, in median intervals (longer: a gap,
     /// an error).
     #[arg(long, default_value_t = 10.0)]
-    pub gap_factor: f64,
+    pub(crate) gap_factor: f64,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }

@@ -1,12 +1,12 @@
 //! `gearwear calibrate`: the posterior of the uncertain parameters given observations.
 
 use super::args::CalibrateArgs;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::{CalibrateJob, CalibrationOptions, TableSource};
-use crate::study::budget::Budget;
+use gearwear::app::{CalibrateJob, CalibrationOptions, TableSource};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&CalibrateJob {
         case: a.case.load()?,
         observations: TableSource::File(a.observations.clone()),

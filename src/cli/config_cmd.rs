@@ -2,10 +2,10 @@
 //! a starting case for a new pair.
 
 use super::args::ConfigArgs;
-use super::CliError;
-use crate::config::{commented_template, markdown_reference, new_pair_template};
+use super::error::CliError;
+use gearwear::config::{commented_template, markdown_reference, new_pair_template};
 
-pub fn run(a: &ConfigArgs) -> Result<(), CliError> {
+pub(crate) fn run(a: &ConfigArgs) -> Result<(), CliError> {
     if a.new_pair {
         if a.case.config.is_some() || !a.case.set.is_empty() {
             return Err(CliError::input(

@@ -1,14 +1,14 @@
 //! `gearwear dataset` and `gearwear dataset-merge`: parse, run the job, print.
 
 use super::error::flag;
+use super::error::CliError;
 use super::output::execute;
 use super::signals_args::{DatasetArgs, DatasetMergeArgs};
-use super::CliError;
-use crate::app::{DatasetJob, DatasetMergeJob, DesignSource};
-use crate::study::budget::Budget;
-use crate::study::dataset::Shard;
+use gearwear::app::{DatasetJob, DatasetMergeJob, DesignSource};
+use gearwear::study::budget::Budget;
+use gearwear::study::dataset::Shard;
 
-pub fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let shard = match &a.shard {
         Some(s) => Shard::parse(s).map_err(|p| CliError::input(p.render(flag)))?,
         None => Shard::ALL,
@@ -23,7 +23,7 @@ pub fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
     })
 }
 
-pub fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
+pub(crate) fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
     execute(&DatasetMergeJob {
         inputs: a.inputs.clone(),
         out: a.out.clone(),

@@ -1,12 +1,12 @@
 //! `gearwear dynamics`: one steady-state evaluation of the tribo-dynamic model.
 
 use super::args::DynamicsArgs;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::{DynamicsJob, TransmissionErrorSource};
-use crate::study::budget::Budget;
+use gearwear::app::{DynamicsJob, TransmissionErrorSource};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&DynamicsJob {
         case: a.case.load()?,
         transmission_error: a

@@ -1,13 +1,14 @@
 //! Errors of a command, worded with the command line's flags, and the exit code each maps
 //! to.
 
-use crate::app::JobError;
-use crate::config::ConfigError;
-use crate::remedy::Arg;
+use gearwear::app::JobError;
+use gearwear::config::ConfigError;
 use std::fmt;
 
+pub(crate) use super::flag::flag;
+
 #[derive(Debug)]
-pub enum CliError {
+pub(crate) enum CliError {
     /// The input is wrong (case file, overrides, a file argument, the output folder):
     /// exit code 2. The user can fix it.
     Input(Vec<String>),
@@ -15,53 +16,15 @@ pub enum CliError {
     Failed(anyhow::Error),
 }
 
-/// How the command line spells a job's arguments in messages (`crate::remedy`).
-pub fn flag(a: Arg) -> &'static str {
-    match a {
-        Arg::Override => "--set",
-        Arg::CaseFile => "--config",
-        Arg::Out => "--out",
-        Arg::Resume => "--resume",
-        Arg::Vary => "--vary",
-        Arg::Shard => "--shard",
-        Arg::Continuation => "--continuation",
-        Arg::SweepRun => "--run",
-        Arg::TransmissionError => "--transmission-error",
-        Arg::Observations => "--observations",
-        Arg::Posterior => "--posterior",
-        Arg::Samples => "--samples",
-        Arg::Walkers => "--walkers",
-        Arg::Steps => "--steps",
-        Arg::CheckRuns => "--check-runs",
-        Arg::GridPoints => "--grid-points",
-        Arg::LimitUm => "--limit-um",
-        Arg::Cycles => "--cycles",
-        Arg::BudgetScale => "--budget-scale",
-        Arg::NoBudget => "--no-budget",
-        Arg::Inputs => "input",
-        Arg::Replace => "--replace",
-        Arg::History => "--history",
-        Arg::TorqueClasses => "--torque-classes",
-        Arg::SpeedClasses => "--speed-classes",
-        Arg::GapFactor => "--gap-factor",
-        Arg::TransferPath => "--transfer-path",
-        Arg::Design => "--design",
-        Arg::FutureSpectrum => "--future-spectrum",
-        Arg::FutureFromCycles => "--future-from-cycles",
-        Arg::FigureFormats => "--figures",
-        Arg::FigureSize => "--figure-size",
-    }
-}
-
 impl CliError {
-    pub fn exit_code(&self) -> u8 {
+    pub(crate) fn exit_code(&self) -> u8 {
         match self {
             CliError::Input(_) => 2,
             CliError::Failed(_) => 1,
         }
     }
 
-    pub fn input(msg: impl Into<String>) -> Self {
+    pub(crate) fn input(msg: impl Into<String>) -> Self {
         CliError::Input(vec![msg.into()])
     }
 }

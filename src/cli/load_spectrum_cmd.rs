@@ -1,14 +1,14 @@
 //! `gearwear load-spectrum`: the load spectrum of a measured torque / speed history.
 
 use super::args::{InterpolationArg, LevelArg, LoadSpectrumArgs, ShaftArg};
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::{LoadSpectrumJob, TableSource};
-use crate::config::case::TorqueShaft;
-use crate::duty::ldd::{Interpolation, LddSettings, Level};
-use crate::study::budget::Budget;
+use gearwear::app::{LoadSpectrumJob, TableSource};
+use gearwear::config::case::TorqueShaft;
+use gearwear::duty::ldd::{Interpolation, LddSettings, Level};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&LoadSpectrumJob {
         history: TableSource::File(a.history.clone()),
         settings: LddSettings {

@@ -1,5 +1,6 @@
-//! The `gearwear` command line. Thin: each command parses its arguments into a job of
-//! the application layer (`crate::app`), runs it with a terminal observer (progress bars,
+//! The `gearwear` command line, compiled into the binary only (the library and the Python
+//! wheel build neither clap nor indicatif). Thin: each command parses its arguments into a job of
+//! the application layer (`gearwear::app`), runs it with a terminal observer (progress bars,
 //! warnings on standard error) and prints its headline; errors are worded with the
 //! command line's flags (`error::flag`).
 //!
@@ -12,10 +13,10 @@
 // command says so once at its end. Defined before the modules so that they see them.
 #[allow(unused_macros)]
 macro_rules! println {
-    ($($t:tt)*) => { $crate::io::console::out_line(&format!($($t)*)) };
+    ($($t:tt)*) => { gearwear::io::console::out_line(&format!($($t)*)) };
 }
 macro_rules! eprintln {
-    ($($t:tt)*) => { $crate::io::console::err_line(&format!($($t)*)) };
+    ($($t:tt)*) => { gearwear::io::console::err_line(&format!($($t)*)) };
 }
 
 mod args;
@@ -24,6 +25,7 @@ mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
+mod flag;
 mod load_spectrum_cmd;
 mod output;
 mod predict_cmd;
@@ -35,20 +37,18 @@ mod stiffness_cmd;
 mod sweep_cmd;
 mod wear_cmd;
 
-pub use args::{CaseArgs, Cli, Command};
-pub use error::{flag, CliError};
-pub use progress::Terminal;
+use args::{Cli, Command};
 
 use clap::Parser;
 use std::process::ExitCode;
 
 /// Entry point of the binary (exit codes: see the module docs).
-pub fn main() -> ExitCode {
-    crate::io::runtime::catch_file_size_signal();
+pub(crate) fn main() -> ExitCode {
+    gearwear::io::runtime::catch_file_size_signal();
     let cli = Cli::parse();
     output::set_quiet(cli.quiet);
     output::set_replace(cli.replace);
-    let pool = match crate::io::runtime::thread_pool() {
+    let pool = match gearwear::io::runtime::thread_pool() {
         Ok((pool, note)) => {
             if let Some(n) = note {
                 eprintln!("note: {n}");
@@ -57,12 +57,12 @@ pub fn main() -> ExitCode {
         }
         Err(e) => {
             eprintln!("error: {e}");
-            return ExitCode::from(crate::io::console::finish().unwrap_or(1));
+            return ExitCode::from(gearwear::io::console::finish().unwrap_or(1));
         }
     };
     // Every parallel loop of the command runs on this pool.
     let code = pool.install(|| run(&cli));
-    ExitCode::from(crate::io::console::finish().unwrap_or(code))
+    ExitCode::from(gearwear::io::console::finish().unwrap_or(code))
 }
 
 /// Run the command `cli` names; its exit code.

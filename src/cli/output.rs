@@ -5,9 +5,9 @@
 //! out.txt` keeps them; progress bars, warnings and log lines go to standard error.
 //! `--quiet` drops the headline.
 
+use super::error::CliError;
 use super::progress::Terminal;
-use super::CliError;
-use crate::app::{Job, Outcome};
+use gearwear::app::{Job, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);
@@ -15,22 +15,22 @@ static REPLACE: AtomicBool = AtomicBool::new(false);
 
 /// Set by `--replace`: an output folder holding another command's results may be
 /// replaced.
-pub fn set_replace(r: bool) {
+pub(crate) fn set_replace(r: bool) {
     REPLACE.store(r, Ordering::Relaxed);
 }
 
 /// Whether `--replace` was given.
-pub fn replace() -> bool {
+pub(crate) fn replace() -> bool {
     REPLACE.load(Ordering::Relaxed)
 }
 
 /// Set by `--quiet`.
-pub fn set_quiet(q: bool) {
+pub(crate) fn set_quiet(q: bool) {
     QUIET.store(q, Ordering::Relaxed);
 }
 
 /// Print results to standard output unless `--quiet`.
-pub fn say(text: &str) {
+pub(crate) fn say(text: &str) {
     if !QUIET.load(Ordering::Relaxed) && !text.is_empty() {
         println!("{text}");
     }
@@ -39,7 +39,7 @@ pub fn say(text: &str) {
 /// Run `job` with progress bars, print its headline; a result that is incomplete (a wear
 /// run the solver gave up on, failed sweep cases) is an error after its outputs are
 /// written.
-pub fn execute<J: Job>(job: &J) -> Result<(), CliError>
+pub(crate) fn execute<J: Job>(job: &J) -> Result<(), CliError>
 where
     J::Output: AsRef<Outcome>,
 {

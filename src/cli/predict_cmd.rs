@@ -3,16 +3,16 @@
 
 use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
 use super::error::flag;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::{
+use gearwear::app::{
     ForwardModel, FutureInput, PredictJob, PredictMergeJob, PredictOptions, SpectrumSource,
     TableSource,
 };
-use crate::study::budget::Budget;
-use crate::study::sweep::Shard;
+use gearwear::study::budget::Budget;
+use gearwear::study::sweep::Shard;
 
-pub fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let shard = match &a.shard {
         Some(s) => Shard::parse(s).map_err(|p| CliError::input(p.render(flag)))?,
         None => Shard::ALL,
@@ -44,7 +44,7 @@ pub fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
     })
 }
 
-pub fn merge(a: &PredictMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn merge(a: &PredictMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&PredictMergeJob {
         inputs: a.inputs.clone(),
         out: Some(a.out.clone()),

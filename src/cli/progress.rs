@@ -1,13 +1,13 @@
 //! The terminal observer of a job: progress bars on standard error (hidden when it is not
 //! a terminal: logs, pipes, CI), notes and warnings on standard error.
 
-use crate::app::{Observer, Task, Unit};
+use gearwear::app::{Observer, Task, Unit};
 use indicatif::{MultiProgress, ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::sync::Mutex;
 
 /// See the module docs.
-pub struct Terminal {
+pub(crate) struct Terminal {
     multi: MultiProgress,
     bars: Mutex<Vec<(&'static str, ProgressBar)>>,
 }
@@ -19,7 +19,7 @@ impl Default for Terminal {
 }
 
 impl Terminal {
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         let target = if std::io::stderr().is_terminal() {
             ProgressDrawTarget::stderr()
         } else {

@@ -1,12 +1,12 @@
 //! `gearwear run`: the paper's whole section 4 from one command, with a report.
 
 use super::args::RunArgs;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::RunJob;
-use crate::study::budget::Budget;
+use gearwear::app::RunJob;
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&RunJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),

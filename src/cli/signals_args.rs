@@ -5,45 +5,45 @@ use clap::Args;
 use std::path::PathBuf;
 
 #[derive(Debug, Args)]
-pub struct SignalsArgs {
+pub(crate) struct SignalsArgs {
     #[command(flatten)]
-    pub case: CaseArgs,
+    pub(crate) case: CaseArgs,
     /// Transfer path from the bearing forces to the sensors: an FRF table (.csv) or a
     /// modal description (.toml), docs/SIGNALS.md. Default: the built-in generic housing.
     #[arg(long, value_name = "FILE")]
-    pub transfer_path: Option<PathBuf>,
+    pub(crate) transfer_path: Option<PathBuf>,
     /// Output directory.
     #[arg(long, default_value = "results/signals")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct DatasetArgs {
+pub(crate) struct DatasetArgs {
     /// Study design (TOML): the case, run-to-failure states, fault conditions, speeds,
     /// loads, noise realisations (docs/SIGNALS.md, "Datasets").
     #[arg(long, value_name = "FILE")]
-    pub design: PathBuf,
+    pub(crate) design: PathBuf,
     /// Run only shard I of N (round-robin over the physical states; merge the shards
     /// with `gearwear dataset-merge`).
     #[arg(long, value_name = "I/N")]
-    pub shard: Option<String>,
+    pub(crate) shard: Option<String>,
     /// Output directory (shards may share one).
     #[arg(long, default_value = "results/dataset")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }
 
 #[derive(Debug, Args)]
-pub struct DatasetMergeArgs {
+pub(crate) struct DatasetMergeArgs {
     /// Dataset folders of the shards (or one folder they share).
     #[arg(required = true, value_name = "DIR")]
-    pub inputs: Vec<PathBuf>,
+    pub(crate) inputs: Vec<PathBuf>,
     /// Output directory of the merged dataset (may be the shards' shared folder).
     #[arg(long)]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     #[command(flatten)]
-    pub figures: FigureArgs,
+    pub(crate) figures: FigureArgs,
 }

@@ -1,12 +1,12 @@
 //! `gearwear signals`: one record of the case as a sensor records it.
 
+use super::error::CliError;
 use super::output::execute;
 use super::signals_args::SignalsArgs;
-use super::CliError;
-use crate::app::{SignalsJob, TransferPathSource};
-use crate::study::budget::Budget;
+use gearwear::app::{SignalsJob, TransferPathSource};
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &SignalsArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &SignalsArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&SignalsJob {
         case: a.case.load()?,
         transfer_path: a.transfer_path.clone().map(TransferPathSource::File),

@@ -2,12 +2,12 @@
 //! sharing and the quasi-static transmission error (paper Figure 2).
 
 use super::args::StiffnessArgs;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::StiffnessJob;
-use crate::study::budget::Budget;
+use gearwear::app::StiffnessJob;
+use gearwear::study::budget::Budget;
 
-pub fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&StiffnessJob {
         case: a.case.load()?,
         out: Some(a.out.clone()),

@@ -5,13 +5,13 @@
 
 use super::args::{ContinuationArg, SweepArgs, SweepMergeArgs, SweepRunArg};
 use super::error::flag;
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::{SweepJob, SweepMergeJob};
-use crate::study::budget::Budget;
-use crate::study::sweep::{parse_vary, Continuation, Shard, SweepPlan, SweepRun};
+use gearwear::app::{SweepJob, SweepMergeJob};
+use gearwear::study::budget::Budget;
+use gearwear::study::sweep::{parse_vary, Continuation, Shard, SweepPlan, SweepRun};
 
-pub fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let base = a.case.load()?;
     let (axes, problems): (Vec<_>, Vec<_>) = a
         .vary
@@ -48,7 +48,7 @@ pub fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
     })
 }
 
-pub fn merge(a: &SweepMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn merge(a: &SweepMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&SweepMergeJob {
         inputs: a.inputs.clone(),
         out: Some(a.out.clone()),

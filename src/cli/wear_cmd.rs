@@ -2,13 +2,13 @@
 //! checkpoint after every update.
 
 use super::args::{WearArgs, WearModeArg};
+use super::error::CliError;
 use super::output::execute;
-use super::CliError;
-use crate::app::WearJob;
-use crate::study::budget::Budget;
-use crate::study::wear_loop::WearMode;
+use gearwear::app::WearJob;
+use gearwear::study::budget::Budget;
+use gearwear::study::wear_loop::WearMode;
 
-pub fn run(a: &WearArgs, budget: Option<Budget>) -> Result<(), CliError> {
+pub(crate) fn run(a: &WearArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let modes = match a.mode {
         WearModeArg::Dynamic => vec![WearMode::Dynamic],
         WearModeArg::QuasiStatic => vec![WearMode::QuasiStatic],

@@ -1,0 +1,42 @@
+//! How the command line spells a job's arguments in messages. A leaf of its own so that
+//! tests/no_flags.rs can compile the same table (`#[path]`) and check every message.
+
+use gearwear::remedy::Arg;
+
+/// How the command line spells a job's arguments in messages (`gearwear::remedy`).
+pub(crate) fn flag(a: Arg) -> &'static str {
+    match a {
+        Arg::Override => "--set",
+        Arg::CaseFile => "--config",
+        Arg::Out => "--out",
+        Arg::Resume => "--resume",
+        Arg::Vary => "--vary",
+        Arg::Shard => "--shard",
+        Arg::Continuation => "--continuation",
+        Arg::SweepRun => "--run",
+        Arg::TransmissionError => "--transmission-error",
+        Arg::Observations => "--observations",
+        Arg::Posterior => "--posterior",
+        Arg::Samples => "--samples",
+        Arg::Walkers => "--walkers",
+        Arg::Steps => "--steps",
+        Arg::CheckRuns => "--check-runs",
+        Arg::GridPoints => "--grid-points",
+        Arg::LimitUm => "--limit-um",
+        Arg::Cycles => "--cycles",
+        Arg::BudgetScale => "--budget-scale",
+        Arg::NoBudget => "--no-budget",
+        Arg::Inputs => "input",
+        Arg::Replace => "--replace",
+        Arg::History => "--history",
+        Arg::TorqueClasses => "--torque-classes",
+        Arg::SpeedClasses => "--speed-classes",
+        Arg::GapFactor => "--gap-factor",
+        Arg::TransferPath => "--transfer-path",
+        Arg::Design => "--design",
+        Arg::FutureSpectrum => "--future-spectrum",
+        Arg::FutureFromCycles => "--future-from-cycles",
+        Arg::FigureFormats => "--figures",
+        Arg::FigureSize => "--figure-size",
+    }
+}
