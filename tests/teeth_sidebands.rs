@@ -37,13 +37,13 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
     let p = r.excitation_periods;
     assert_eq!(p, 31);
     assert!(
-        r.signals.mesh_force_n.iter().all(|f| *f > 0.0),
+        r.signals.meshes[0].mesh_force_n.iter().all(|f| *f > 0.0),
         "contact must hold"
     );
     let periods = evaluated_periods(&r);
     let solver = amplitude_spectrum(
         &r.signals.time_s,
-        &r.signals.dte_m,
+        &r.signals.meshes[0].dte_m,
         r.mesh_period_s,
         periods,
     );
@@ -70,8 +70,8 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
         linear_periodic(&sys, &refine(4), dof::PHI_M),
         linear_periodic(&sys, &refine(8), dof::PHI_M),
     );
-    let g = sys.mesh_gradient();
-    let dte = |y: &State| g.dot(&y.fixed_rows::<NDOF>(0).into_owned());
+    let g = sys.mesh_gradient(0);
+    let dte = |y: &State| g.dot(&y.rows(0, NDOF));
     let t_nodes: Vec<f64> = grid[..grid.len() - 1].to_vec();
     let d_nodes: Vec<f64> = (0..t_nodes.len())
         .map(|k| (4.0 * dte(&c8[8 * k]) - dte(&c4[4 * k])) / 3.0)

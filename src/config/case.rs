@@ -50,6 +50,10 @@ pub struct Case {
     /// Tooth faults (`[[fault]]` tables; none by default).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub fault: Vec<FaultSpec>,
+    /// The stages of a gear train (`[[stage]]` tables; none: the single pair of
+    /// `[gear]`), `config::train`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub stage: Vec<super::train::StageSpec>,
 }
 
 /// Involute spur pair (paper Table 1).

@@ -9,6 +9,7 @@ pub mod problem;
 pub mod schema;
 pub mod signals;
 pub mod teeth;
+pub mod train;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};

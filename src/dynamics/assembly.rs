@@ -20,6 +20,7 @@
 
 pub mod elements;
 mod single_pair;
+pub mod train;
 #[cfg(test)]
 mod tests_assembly;
 
@@ -389,6 +390,23 @@ impl Assembly {
             }
         }
         out
+    }
+
+    /// Each coordinate's name and unit, for tables: `x_<body>`, `y_<body>` (m),
+    /// `phi_<body>` (rad), the body's name without spaces (the single pair:
+    /// `x_pinion`, ..., `phi_brake`).
+    pub fn coordinate_names(&self) -> Vec<(String, &'static str)> {
+        (0..self.n)
+            .map(|i| {
+                let (body, dof) = self.describe(i);
+                let b = body.replace(' ', "");
+                match dof {
+                    Dof::X => (format!("x_{b}"), "m"),
+                    Dof::Y => (format!("y_{b}"), "m"),
+                    Dof::Rotation => (format!("phi_{b}"), "rad"),
+                }
+            })
+            .collect()
     }
 
     /// Name of the body a coordinate belongs to and the coordinate's kind.

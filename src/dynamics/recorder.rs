@@ -3,148 +3,141 @@
 //! and the time integrals of the mesh force and DTE step by step (a trapezoid on the
 //! points would split the force's jumps at the mesh events).
 
-use super::model::{ContactFrame, ContactMode, GearSystem, MeshState, State, NDOF};
+use super::model::{ContactFrame, ContactModes, DecidedSets, GearSystem, MeshState};
 use super::period::PeriodObserver;
 use super::response::{sorted_by_rho1, PathSample, Signals};
 
 /// Change of the displacements over one period of the periodic orbit: the drift of the
-/// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise.
-fn drift(y_start: &State, y_end: &State) -> State {
-    let mut d = y_end - y_start;
-    for i in NDOF..2 * NDOF {
-        d[i] = 0.0;
-    }
-    d
+/// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise (the
+/// displacements' share of two states).
+fn drift(y_start: &[f64], y_end: &[f64]) -> Vec<f64> {
+    let n = y_start.len() / 2;
+    (0..n).map(|i| y_end[i] - y_start[i]).collect()
 }
 
 /// Records one period of the periodic solution (see the module docs). With a
-/// tooth-resolved mesh the period spans `excitation_periods` mesh periods and each
-/// contact is tagged with its engagement, its mesh cycle modulo that number.
+/// tooth-resolved mesh the period spans `excitation_periods` base periods and each
+/// contact is tagged with its engagement, its mesh cycle modulo that number of its mesh
+/// periods.
 #[derive(Default)]
 pub struct Recorder {
     pub sig: Signals,
-    pub path: Vec<PathSample>,
-    pub force_int: f64,
-    pub dte_int: f64,
-    /// Mesh periods of the recorded period (0 or 1: one).
+    /// Each mesh's path of contact.
+    pub paths: Vec<Vec<PathSample>>,
+    /// Each mesh's time integrals of the force (N s) and DTE (m s).
+    pub force_int: Vec<f64>,
+    pub dte_int: Vec<f64>,
+    /// Base periods of the recorded period (0 or 1: one).
     pub excitation_periods: usize,
+    /// Mesh periods of each mesh in the recorded period (for tagging engagements).
+    engagements: Vec<i64>,
     /// The last step-end evaluation, offered to the next point and step (see
     /// [`Evaluation`]).
     last: Option<Evaluation>,
+    /// Room for the evaluations of a step.
+    work: Work,
+}
+
+/// Buffers of one right-hand-side evaluation.
+#[derive(Default)]
+struct Work {
+    dy: Vec<f64>,
+    meshes: Vec<MeshState>,
 }
 
 /// One right-hand-side evaluation kept for reuse. A step's end is the next point and the
 /// next step's start: the same time and state, evaluated with the pairs and the contact
 /// mode the step held. The result depends on the frame only through the pairs decided
-/// ([`GearSystem::decided_set`]) and the mode (`GearSystem::springs`), so where both
+/// ([`GearSystem::decided_sets`]) and the modes (`TrainMesh::springs`), so where both
 /// agree the kept result is the one a new evaluation would give, bit for bit; elsewhere
 /// (a mesh event, a contact switch) it is evaluated anew.
 struct Evaluation {
     t: f64,
-    y: State,
-    set: (f64, usize),
-    mode: ContactMode,
-    dy: State,
-    ms: MeshState,
+    y: Vec<f64>,
+    sets: DecidedSets,
+    mode: ContactModes,
+    dy: Vec<f64>,
+    meshes: Vec<MeshState>,
 }
 
 impl Evaluation {
-    fn is_at(&self, t: f64, y: &State, set: (f64, usize)) -> bool {
+    fn is_at(&self, t: f64, y: &[f64], sets: &DecidedSets) -> bool {
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
         same(self.t, t)
-            && same(self.set.0, set.0)
-            && self.set.1 == set.1
+            && self.sets.same_as(sets)
             && self.y.iter().zip(y.iter()).all(|(a, b)| same(*a, *b))
     }
 }
 
 impl Recorder {
-    pub fn new(excitation_periods: usize) -> Self {
+    /// A recorder of `sys` over `excitation_periods` base periods.
+    pub fn new(sys: &GearSystem, excitation_periods: usize) -> Self {
+        let n_meshes = sys.meshes.len();
+        let base = super::grid::base_period(sys).map_or(vec![1; n_meshes], |(_, c)| c);
         Self {
+            sig: Signals::new(sys.dofs(), n_meshes),
+            paths: vec![Vec::new(); n_meshes],
+            force_int: vec![0.0; n_meshes],
+            dte_int: vec![0.0; n_meshes],
             excitation_periods,
-            ..Self::default()
+            engagements: base
+                .iter()
+                .map(|c| (c * excitation_periods.max(1)) as i64)
+                .collect(),
+            last: None,
+            work: Work {
+                dy: vec![0.0; sys.states()],
+                meshes: vec![MeshState::default(); n_meshes],
+            },
         }
     }
-}
 
-impl Recorder {
     /// The evaluated window of `periods` periods from the one period recorded (periodic
     /// to the steady-state tolerance, so every later period repeats it; the rigid
-    /// rotation's drift is carried on), and the path of contact sorted by rho1.
+    /// rotation's drift is carried on), and each mesh's path of contact sorted by rho1.
     pub fn window(
         &self,
         period: f64,
         periods: usize,
-        y_start: &State,
-        y_end: &State,
-    ) -> (Signals, Vec<PathSample>) {
-        // Destructured in full: a new signal must be repeated here too.
-        let Signals {
-            time_s,
-            phase_rad,
-            dte_m,
-            mesh_force_n,
-            mesh_stiffness_n_per_m,
-            displacement,
-            velocity,
-            acceleration,
-            friction_coefficient,
-            friction_n,
-            pair_load_n,
-        } = &self.sig;
-        let mut sig = self.sig.clone();
-        let d = drift(y_start, y_end);
-        for p in 1..periods {
-            let shift = p as f64 * period;
-            sig.time_s.extend(time_s.iter().map(|t| t + shift));
-            sig.displacement.extend(
-                displacement
-                    .iter()
-                    .map(|q| -> [f64; NDOF] { std::array::from_fn(|i| q[i] + p as f64 * d[i]) }),
-            );
-            sig.phase_rad.extend_from_slice(phase_rad);
-            sig.dte_m.extend_from_slice(dte_m);
-            sig.mesh_force_n.extend_from_slice(mesh_force_n);
-            sig.mesh_stiffness_n_per_m
-                .extend_from_slice(mesh_stiffness_n_per_m);
-            sig.velocity.extend_from_slice(velocity);
-            sig.acceleration.extend_from_slice(acceleration);
-            for j in 0..2 {
-                sig.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
-                sig.friction_n[j].extend_from_slice(&friction_n[j]);
-                sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
-            }
-        }
-        (sig, sorted_by_rho1(&self.path))
+        y_start: &[f64],
+        y_end: &[f64],
+    ) -> (Signals, Vec<Vec<PathSample>>) {
+        let sig = self.sig.repeated(period, periods, &drift(y_start, y_end));
+        (sig, self.paths.iter().map(|p| sorted_by_rho1(p)).collect())
+    }
+
+    /// Evaluates the right-hand side into the work buffers.
+    fn evaluate(&mut self, sys: &GearSystem, frame: ContactFrame, t: f64, y: &[f64]) {
+        let w = &mut self.work;
+        sys.derivative_into(frame, t, y, &mut w.dy, &mut w.meshes);
     }
 }
 
 impl PeriodObserver for Recorder {
-    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State) {
+    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]) {
         let frame = ContactFrame::decided_at(decide);
-        let set = sys.decided_set(frame, t);
+        let sets = sys.decided_sets(frame, t);
         let kept = self
             .last
             .as_ref()
-            .filter(|e| e.is_at(t, y, set) && sys.natural_mode_in(frame, t, y) == e.mode);
-        let (dy, ms) = match kept {
-            Some(e) => (e.dy, e.ms),
-            None => sys.derivative(frame, t, y),
+            .filter(|e| e.is_at(t, y, &sets) && sys.natural_mode_in(frame, t, y) == e.mode);
+        let (dy, meshes) = match kept {
+            Some(e) => (e.dy.clone(), e.meshes.clone()),
+            None => {
+                self.evaluate(sys, frame, t, y);
+                (self.work.dy.clone(), self.work.meshes.clone())
+            }
         };
-        record(
-            &mut self.sig,
-            t,
-            sys.phase_at(t) % sys.parts.pair.mesh_angle_rad(),
-            y,
-            &dy,
-            &ms,
-        );
-        let first = self.path.len();
-        push_path(&mut self.path, sys, y, &ms);
-        // The engagement within the excitation period (`PathSample::cycle`).
-        let p = self.excitation_periods.max(1) as i64;
-        for s in &mut self.path[first..] {
-            s.cycle = s.cycle.rem_euclid(p);
+        record(&mut self.sig, sys, t, y, &dy, &meshes);
+        for (m, ms) in meshes.iter().enumerate() {
+            let path = &mut self.paths[m];
+            let first = path.len();
+            push_path(path, sys, m, y, ms);
+            // The engagement within the excitation period (`PathSample::cycle`).
+            let p = self.engagements[m].max(1);
+            for s in &mut path[first..] {
+                s.cycle = s.cycle.rem_euclid(p);
+            }
         }
     }
 
@@ -153,63 +146,75 @@ impl PeriodObserver for Recorder {
         sys: &GearSystem,
         t: f64,
         h: f64,
-        y0: &State,
-        y1: &State,
-        mode: ContactMode,
+        y0: &[f64],
+        y1: &[f64],
+        mode: ContactModes,
     ) {
         // Simpson's rule on the step, with the midpoint state from the cubic Hermite
         // interpolant of the step's ends (fourth order; the force is smooth inside a
         // step, which never crosses a mesh event or a contact switch).
         let frame = ContactFrame::frozen(t + 0.5 * h, mode);
-        let set = sys.decided_set(frame, t);
+        let sets = sys.decided_sets(frame, t);
         let kept = self
             .last
-            .as_ref()
-            .filter(|e| e.mode == mode && e.is_at(t, y0, set));
+            .take()
+            .filter(|e| e.mode == mode && e.is_at(t, y0, &sets));
         let (f0, ms0) = match kept {
-            Some(e) => (e.dy, e.ms),
-            None => sys.derivative(frame, t, y0),
+            Some(e) => (e.dy, e.meshes),
+            None => {
+                self.evaluate(sys, frame, t, y0);
+                (self.work.dy.clone(), self.work.meshes.clone())
+            }
         };
-        let (f1, ms1) = sys.derivative(frame, t + h, y1);
+        self.evaluate(sys, frame, t + h, y1);
+        let (f1, ms1) = (self.work.dy.clone(), self.work.meshes.clone());
+        let y_mid: Vec<f64> = (0..y0.len())
+            .map(|i| (y0[i] + y1[i]) * 0.5 + (f0[i] - f1[i]) * (h / 8.0))
+            .collect();
+        self.evaluate(sys, frame, t + 0.5 * h, &y_mid);
+        let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
+        for m in 0..ms1.len() {
+            let mid = &self.work.meshes[m];
+            self.force_int[m] += simpson(ms0[m].force_n, mid.force_n, ms1[m].force_n);
+            self.dte_int[m] += simpson(ms0[m].deflection_m, mid.deflection_m, ms1[m].deflection_m);
+        }
         self.last = Some(Evaluation {
             t: t + h,
-            y: *y1,
-            set,
+            y: y1.to_vec(),
+            sets,
             mode,
             dy: f1,
-            ms: ms1,
+            meshes: ms1,
         });
-        let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
-        let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
-        let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
-        self.force_int += simpson(ms0.force_n, ms.force_n, ms1.force_n);
-        self.dte_int += simpson(ms0.deflection_m, ms.deflection_m, ms1.deflection_m);
     }
 }
 
-fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &MeshState) {
-    let mut q = [0.0; NDOF];
-    let mut v = [0.0; NDOF];
-    let mut a = [0.0; NDOF];
-    for i in 0..NDOF {
-        q[i] = y[i];
-        v[i] = y[NDOF + i];
-        a[i] = dy[NDOF + i];
-    }
+fn record(
+    sig: &mut Signals,
+    sys: &GearSystem,
+    t: f64,
+    y: &[f64],
+    dy: &[f64],
+    meshes: &[MeshState],
+) {
+    let n = sys.dofs();
     sig.time_s.push(t);
-    sig.phase_rad.push(phase);
-    sig.dte_m.push(ms.deflection_m);
-    sig.mesh_force_n.push(ms.force_n);
-    sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
-    sig.displacement.push(q);
-    sig.velocity.push(v);
-    sig.acceleration.push(a);
-    sig.push_pairs(ms);
+    sig.displacement.push(&y[..n]);
+    sig.velocity.push(&y[n..]);
+    sig.acceleration.push(&dy[n..]);
+    for (m, ms) in meshes.iter().enumerate() {
+        let mesh = sys.mesh(m);
+        let phase = mesh.phase_at(t) % mesh.parts.pair.mesh_angle_rad();
+        sig.meshes[m].push(phase, ms);
+    }
 }
 
-fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
-    let omega_p =
-        sys.parts.params.operating.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
-    let omega_g = sys.parts.params.operating.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
-    PathSample::push_contacts(path, ms, sys.parts.pair.loa_length_m, omega_p, omega_g);
+fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, m: usize, y: &[f64], ms: &MeshState) {
+    let n = sys.dofs();
+    let mesh = sys.mesh(m);
+    let [rp, rg] = mesh.geometry.rotation;
+    let [wp, wg] = mesh.operating.speeds_rad_s;
+    let omega_p = wp + y[n + rp];
+    let omega_g = wg + y[n + rg];
+    PathSample::push_contacts(path, ms, mesh.parts.pair.loa_length_m, omega_p, omega_g);
 }

@@ -340,7 +340,7 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
         return;
     }
     let r = model.quasi_static(&model.new_wear_state(), &ExternalError::none());
-    let te_um: Vec<f64> = r.signals.dte_m.iter().map(|d| d * 1e6).collect();
+    let te_um: Vec<f64> = r.signals.meshes[0].dte_m.iter().map(|d| d * 1e6).collect();
     if te_um.is_empty() {
         return;
     }
@@ -363,7 +363,10 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
                 .collect(),
         )
         .col("quasi_static_te_um", te_um)
-        .col("quasi_static_mesh_force_n", r.signals.mesh_force_n.clone());
+        .col(
+            "quasi_static_mesh_force_n",
+            r.signals.meshes[0].mesh_force_n.clone(),
+        );
     a.table("csv/teeth_quasi_static_te.csv", table);
     a.headline.push_str(&format!(
         "; static TE of these teeth {:.4} to {:.4} µm over {} mesh periods",

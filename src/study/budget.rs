@@ -304,6 +304,31 @@ pub fn max_checkpoint_bytes(case: &Case, mode: crate::study::wear_loop::WearMode
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }
 
+/// How much more a dynamic evaluation of a gear train costs than one of a single pair
+/// (1 for a case without `[[stage]]`): its base period (`dynamics::grid::base_period`)
+/// holds sum_k N_k mesh periods of its meshes, each with its events and steps, and each
+/// step costs about (states / 16) times the single pair's (a right-hand side per mesh,
+/// linear algebra on the larger state). A train whose base period cannot be counted is
+/// infinitely dear (refused).
+pub fn train_factor(case: &Case) -> f64 {
+    if case.stage.is_empty() {
+        return 1.0;
+    }
+    let teeth: Vec<[usize; 2]> = case
+        .stage
+        .iter()
+        .map(|s| {
+            let g = s.gear_section(&case.gear);
+            [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
+        })
+        .collect();
+    let states = 4.0 + 12.0 * teeth.len() as f64;
+    match crate::dynamics::grid::chain_mesh_counts(&teeth) {
+        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>() * (states / 16.0).max(1.0),
+        None => f64::INFINITY,
+    }
+}
+
 /// Steps per mesh period the error control of the dynamic solver takes, at most, at the
 /// local error tolerance `tol` (dimensionless): [`ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE`]
 /// x (1e-5 / tol)^(1/3), the step of a third-order method scaling as tol^(1/3).
@@ -390,7 +415,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     if evals > 0.0 {
         terms.push(Term {
             what: "the dynamic evaluations",
-            seconds: evals * s_dyn * (p_c + p_e) * SECONDS_PER_STEP,
+            seconds: evals * s_dyn * (p_c + p_e) * SECONDS_PER_STEP * train_factor(case),
             bytes: 0.0,
             keys: if dynamic_modes > 0.0 {
                 &[
@@ -413,7 +438,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         terms.push(Term {
             what: "the recorded signals",
             seconds: 0.0,
-            bytes: kept * s_dyn * p_e * BYTES_PER_SAMPLE,
+            bytes: kept * s_dyn * p_e * BYTES_PER_SAMPLE * train_factor(case),
             keys: &[
                 "numerics.evaluated_mesh_periods",
                 "numerics.steps_per_mesh_period",

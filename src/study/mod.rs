@@ -11,6 +11,7 @@ pub mod signal_record;
 pub mod sweep;
 pub mod teeth;
 pub mod teeth_budget;
+pub mod train;
 pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;

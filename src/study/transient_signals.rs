@@ -7,7 +7,6 @@ use super::model::Model;
 use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
 use crate::dynamics::drive::{Drive, Tabulated};
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::model::State;
 use crate::dynamics::steady::DynamicsError;
 use crate::dynamics::transient::integrate_transient;
 use crate::signals::antialias::OVERSAMPLING;
@@ -95,7 +94,7 @@ pub fn transient_clean_record(
     // The steady state at the starting speed: the start state and the lead-in.
     let r0 = model.dynamic(wear, &ExternalError::none())?;
     let lead = bearing_forces(&r0, &model.params);
-    let start = State::from_column_slice(&r0.end_state);
+    let start = r0.end_state.clone();
     // The transient's system: the case at its fastest speed, so that the error control's
     // velocity scale (`period::state_scales`) suits the whole ramp.
     let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);

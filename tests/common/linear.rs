@@ -15,8 +15,11 @@ pub fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State
         .windows(2)
         .map(|w| {
             let (t, h) = (0.5 * (w[0] + w[1]), w[1] - w[0]);
-            let a = sys.jacobian(ContactFrame::NATURAL, t, &y_touch);
-            let b = sys.derivative(ContactFrame::NATURAL, t, &y_touch).0 - a * y_touch;
+            let a = sys.jacobian(ContactFrame::NATURAL, t, y_touch.as_slice());
+            let b = sys
+                .derivative(ContactFrame::NATURAL, t, y_touch.as_slice())
+                .0
+                - &a * &y_touch;
             let mut z = SMatrix::<f64, 17, 17>::zeros();
             z.fixed_view_mut::<16, 16>(0, 0).copy_from(&a);
             z.fixed_view_mut::<16, 1>(0, 16).copy_from(&b);
@@ -37,7 +40,7 @@ pub fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State
         monodromy[(free[i], 16)] + monodromy[(free[i], held)] * y_touch[held]
     });
     let x = a.lu().solve(&rhs).expect("no eigenvalue 1");
-    let mut y = y_touch;
+    let mut y = y_touch.clone();
     for (k, i) in free.iter().enumerate() {
         y[*i] = x[k];
     }
@@ -47,7 +50,9 @@ pub fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State
         let mut z = nalgebra::SVector::<f64, 17>::zeros();
         z.fixed_rows_mut::<16>(0).copy_from(out.last().unwrap());
         z[16] = 1.0;
-        out.push((e * z).fixed_rows::<16>(0).into_owned());
+        out.push(State::from_column_slice(
+            (e * z).fixed_rows::<16>(0).as_slice(),
+        ));
     }
     out
 }

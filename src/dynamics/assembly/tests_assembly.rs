@@ -8,18 +8,18 @@ use crate::dynamics::params::DynamicParams;
 use crate::geometry::GearPair;
 use nalgebra::{DMatrix, DVector};
 
-/// Paper eq. (1) assembled by hand in the order [x_p, y_p, x_g, y_g, phi_m, phi_p, phi_g,
-/// phi_b]: inverse masses, K, C, external forces and the mesh gradient.
-fn paper_by_hand(
-    p: &DynamicParams,
-    pair: &GearPair,
-) -> (
+/// Inverse masses, K, C, external forces and a mesh gradient.
+type ByHand = (
     Vec<f64>,
     DMatrix<f64>,
     DMatrix<f64>,
     DVector<f64>,
     DVector<f64>,
-) {
+);
+
+/// Paper eq. (1) assembled by hand in the order [x_p, y_p, x_g, y_g, phi_m, phi_p, phi_g,
+/// phi_b]: inverse masses, K, C, external forces and the mesh gradient.
+fn paper_by_hand(p: &DynamicParams, pair: &GearPair) -> ByHand {
     let l = &p.lumped;
     let mut inv = vec![
         1.0 / l.mass_pinion_kg,

@@ -4,7 +4,6 @@
 use super::continuation::Branch;
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::model::NSTATE;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
 use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
@@ -289,8 +288,8 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
 /// [`DynamicResponse::end_state`]: crate::dynamics::response::DynamicResponse::end_state
 pub fn run_dynamics_from(
     case: &Case,
-    start: Option<&[f64; NSTATE]>,
-) -> Result<(CaseOutcome, [f64; NSTATE]), CaseError> {
+    start: Option<&[f64]>,
+) -> Result<(CaseOutcome, Vec<f64>), CaseError> {
     let model = Model::from_case(case).map_err(CaseError::Model)?;
     let wear = WearState::new(model.grid.len());
     let r = model
@@ -354,7 +353,7 @@ pub struct ContinuationLink {
 }
 
 impl ContinuationLink {
-    pub fn new(branch: Branch, start: Option<&[f64; NSTATE]>, end: &[f64; NSTATE]) -> Self {
+    pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
         Self {
             branch,
             start_state_bits: start.map(state_bits),
@@ -362,19 +361,24 @@ impl ContinuationLink {
         }
     }
 
-    /// The end state, if the record holds a whole one.
-    pub fn end_state(&self) -> Option<[f64; NSTATE]> {
-        (self.end_state_bits.len() == NSTATE)
-            .then(|| std::array::from_fn(|i| f64::from_bits(self.end_state_bits[i])))
+    /// The end state, if the record holds one (a state of the case's model: a start of
+    /// another length is not taken, `steady::MeshPeriodSearch`).
+    pub fn end_state(&self) -> Option<Vec<f64>> {
+        (!self.end_state_bits.is_empty()).then(|| {
+            self.end_state_bits
+                .iter()
+                .map(|b| f64::from_bits(*b))
+                .collect()
+        })
     }
 
     /// Whether this point was started from `start` (bit for bit).
-    pub fn started_from(&self, start: Option<&[f64; NSTATE]>) -> bool {
+    pub fn started_from(&self, start: Option<&[f64]>) -> bool {
         self.start_state_bits == start.map(state_bits)
     }
 }
 
-fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
+fn state_bits(s: &[f64]) -> Vec<u64> {
     s.iter().map(|x| x.to_bits()).collect()
 }
 
@@ -501,7 +505,7 @@ impl CaseRecord {
         keys: &[String],
         values: &[String],
         branch: Branch,
-        start: Option<&[f64; NSTATE]>,
+        start: Option<&[f64]>,
     ) -> bool {
         let Some(link) = &self.continuation else {
             return false;

@@ -1,0 +1,154 @@
+//! The right-hand side of the assembled equations of motion:
+//! M q'' = f_ext + sum over meshes f_mesh - K q - C q' (docs/MODEL.md, section 4.1).
+
+use super::{ContactFrame, GearSystem, MeshState, State};
+use crate::config::case::SpeedBoundary;
+use crate::dynamics::drive::Drive;
+use nalgebra::{DMatrix, SMatrix, SVector};
+
+/// The nonzero entries of a matrix row by row, each row's in ascending column order:
+/// `sum_j a_ij x_j` over them adds the terms in the order nalgebra's dense
+/// matrix-vector product does (column by column from the first), and the zero terms it
+/// leaves out change no sum, so the two agree bit for bit.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SparseRows {
+    /// Row i's entries are `entries[start[i]..start[i + 1]]`.
+    start: Vec<usize>,
+    entries: Vec<(usize, f64)>,
+}
+
+impl SparseRows {
+    pub(crate) fn of(a: &DMatrix<f64>) -> Self {
+        let mut start = vec![0];
+        let mut entries = Vec::new();
+        for i in 0..a.nrows() {
+            for j in 0..a.ncols() {
+                if a[(i, j)] != 0.0 {
+                    entries.push((j, a[(i, j)]));
+                }
+            }
+            start.push(entries.len());
+        }
+        Self { start, entries }
+    }
+
+    /// `sum_j a_ij x_j`.
+    #[inline]
+    fn row_times(&self, i: usize, x: &[f64]) -> f64 {
+        let mut s = 0.0;
+        for (j, a) in &self.entries[self.start[i]..self.start[i + 1]] {
+            s += a * x[*j];
+        }
+        s
+    }
+}
+
+/// The assembly's stiffness and damping as the right-hand side multiplies them: the
+/// single pair's 8 x 8 as fixed-size matrices, any other train's by rows.
+pub(crate) enum LinearParts {
+    Fixed8(SMatrix<f64, 8, 8>, SMatrix<f64, 8, 8>),
+    Sparse(SparseRows, SparseRows),
+}
+
+impl LinearParts {
+    pub(crate) fn of(k: &DMatrix<f64>, c: &DMatrix<f64>) -> Self {
+        if k.nrows() == 8 {
+            let fixed = |a: &DMatrix<f64>| SMatrix::<f64, 8, 8>::from_fn(|i, j| a[(i, j)]);
+            Self::Fixed8(fixed(k), fixed(c))
+        } else {
+            Self::Sparse(SparseRows::of(k), SparseRows::of(c))
+        }
+    }
+}
+
+impl GearSystem<'_> {
+    /// Right-hand side dy/dt into `dy` and the state of every mesh into `meshes`, the
+    /// contact decided as `frame` says. `y`, `dy`: [`GearSystem::states`] entries;
+    /// `meshes`: one per mesh.
+    pub fn derivative_into(
+        &self,
+        frame: ContactFrame,
+        t_s: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        meshes: &mut [MeshState],
+    ) {
+        let n = self.dofs();
+        let (q, v) = y.split_at(n);
+        let (dq, dv) = dy.split_at_mut(n);
+        // The mesh forces gather in dv first.
+        dv.fill(0.0);
+        for (m, mesh) in self.meshes.iter().enumerate() {
+            meshes[m] = mesh.mesh_state(frame.mesh(m), t_s, q, v);
+            mesh.add_forces(&meshes[m], dv);
+        }
+        let inv_mass = self.assembly().inverse_masses();
+        let f_ext = self.external_forces();
+        match &self.linear {
+            LinearParts::Fixed8(k, c) => {
+                // The single pair: fixed-size products, unrolled (its speed).
+                let kq = k * SVector::<f64, 8>::from_column_slice(q);
+                let cv = c * SVector::<f64, 8>::from_column_slice(v);
+                for i in 0..n {
+                    dv[i] = (f_ext[i] + dv[i] - kq[i] - cv[i]) * inv_mass[i];
+                }
+            }
+            LinearParts::Sparse(k, c) => {
+                for i in 0..n {
+                    let rhs = f_ext[i] + dv[i] - k.row_times(i, q) - c.row_times(i, v);
+                    dv[i] = rhs * inv_mass[i];
+                }
+            }
+        }
+        dq.copy_from_slice(v);
+        if let Some(d) = self.drive {
+            self.add_drive(d, t_s, dv);
+        }
+    }
+
+    /// [`GearSystem::derivative_into`] into new vectors: dy/dt and the state of every
+    /// mesh.
+    pub fn derivative(&self, frame: ContactFrame, t_s: f64, y: &[f64]) -> (State, Vec<MeshState>) {
+        let mut dy = State::zeros(self.states());
+        let mut meshes = vec![MeshState::default(); self.meshes.len()];
+        self.derivative_into(frame, t_s, y, dy.as_mut_slice(), &mut meshes);
+        (dy, meshes)
+    }
+
+    /// The drive's terms in the accelerations `dv` (`dynamics::drive`): the nominal
+    /// acceleration -d^2 Theta/dt^2 on every free angle (each body's at its own nominal
+    /// speed's share of the input's), and the load fluctuation on the body where the load
+    /// acts (the input when the output's speed is imposed).
+    fn add_drive(&self, d: &Drive, t_s: f64, dv: &mut [f64]) {
+        let asm = self.assembly();
+        let inv_mass = asm.inverse_masses();
+        let speeds = self.body_speeds_rad_s();
+        let drive = asm.elements.drive;
+        let w_in = speeds[drive.input];
+        let a = d.accel(t_s);
+        for (b, w) in speeds.iter().enumerate() {
+            let i = asm
+                .index(b, crate::dynamics::assembly::Dof::Rotation)
+                .unwrap_or(0);
+            // A body at the input's speed takes the acceleration itself (ratio 1 exactly).
+            let r = if *w == w_in { 1.0 } else { w / w_in };
+            if inv_mass[i] > 0.0 {
+                dv[i] -= a * r;
+            }
+        }
+        let dt = d.torque_at(t_s);
+        if dt != 0.0 {
+            let rotation = |b| {
+                asm.index(b, crate::dynamics::assembly::Dof::Rotation)
+                    .unwrap_or(0)
+            };
+            if drive.boundary == SpeedBoundary::BrakeSpeedImposed {
+                let i = rotation(drive.input);
+                dv[i] += dt * inv_mass[i];
+            } else {
+                let i = rotation(drive.output);
+                dv[i] -= dt * inv_mass[i];
+            }
+        }
+    }
+}
