@@ -3,13 +3,28 @@
 # observations of the paper's case at a "true" wear coefficient, calibration of k from wear
 # measurements and from vibration indicators alone, and the remaining-life predictions.
 #
-# Usage: scripts/prognostics_example.sh [OUT]      (default results/prognostics_example)
-# Needs target/release/gearwear (built if missing) and python3 (standard library only).
-# Every random draw has a fixed seed, so a rerun gives the same numbers.
+# Usage: scripts/prognostics_example.sh [OUT | --out OUT] [--no-prior] [--quiet]
+#   OUT: default results/prognostics_example; --no-prior leaves out the prior-only prediction
+#   (the costliest step); --quiet prints nothing. tests/docs_generated.rs runs it this way
+#   to check the numbers of docs/PROGNOSTICS.md.
+# Needs target/release/gearwear (built if missing; GEARWEAR_BIN names another binary) and
+# python3 (standard library only). Every random draw has a fixed seed, so a rerun gives the
+# same numbers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out="${1:-results/prognostics_example}"
-bin=target/release/gearwear
+out=results/prognostics_example
+prior=yes
+quiet=no
+while (($#)); do
+    case "$1" in
+        --out) out="$2"; shift ;;
+        --no-prior) prior=no ;;
+        --quiet) quiet=yes ;;
+        *) out="$1" ;;
+    esac
+    shift
+done
+bin="${GEARWEAR_BIN:-target/release/gearwear}"
 [[ -x "$bin" ]] || cargo build --release
 mkdir -p "$out"
 
@@ -85,6 +100,13 @@ with open(f"{out}/truth.txt", "w") as f:
     for q in vib:
         print(f"true {q}: {response(q, 0):.4f} at 0, {response(q, to):.4f} at {to}", file=f)
     print(f"true cycles to {limit} um: {life(limit):.0f}", file=f)
+# The same numbers in full precision, for tests/docs_generated.rs.
+with open(f"{out}/truth.json", "w") as f:
+    import json
+    json.dump({"observed_to_cycles": to, "max_wear_pinion_um_at_observed_to": max_wear(to),
+               "response_at_0": {q: response(q, 0) for q in vib},
+               "response_at_observed_to": {q: response(q, to) for q in vib},
+               "cycles_to_limit": life(limit)}, f, indent=1)
 EOF
 
 # (b) calibrations, (c) predictions
@@ -93,7 +115,10 @@ for ev in wear vibration; do
     "$bin" predict -q --posterior "$out/cal_$ev/posterior_samples.csv" --limit-um $limit_um \
         --cycles $horizon --seed $seed --out "$out/pred_$ev"
 done
-"$bin" predict -q --limit-um $limit_um --cycles 1e6 --seed $seed --out "$out/pred_prior"
+if [[ $prior == yes ]]; then
+    "$bin" predict -q --limit-um $limit_um --cycles 1e6 --seed $seed --out "$out/pred_prior"
+fi
+[[ $quiet == no ]] || exit 0
 
 # (d) the numbers the docs quote
 python3 - "$out" <<'EOF'
@@ -102,7 +127,10 @@ out = sys.argv[1]
 print(open(f"{out}/truth.txt").read(), end="")
 def fmt(x):
     return "> horizon" if x is None else f"{x:.4g}"
+import os
 for ev in ["wear", "vibration", "prior"]:
+    if not os.path.isdir(f"{out}/pred_{ev}"):
+        continue
     print(f"--- evidence: {ev}")
     if ev != "prior":
         cal = json.load(open(f"{out}/cal_{ev}/summary.json"))

@@ -48,12 +48,19 @@ fn the_one_stage_train_is_the_single_pair_bit_for_bit() {
     let train = model("[[stage]]\n", &[]);
     assert!(train.train.is_some() && single.train.is_none());
     let none = ExternalError::none();
-    let a = single.dynamic(&WearState::new(single.grid.len()), &none).unwrap();
-    let b = train.dynamic(&WearState::new(train.grid.len()), &none).unwrap();
+    let a = single
+        .dynamic(&WearState::new(single.grid.len()), &none)
+        .unwrap();
+    let b = train
+        .dynamic(&WearState::new(train.grid.len()), &none)
+        .unwrap();
     assert_eq!(a.end_state, b.end_state);
     assert_eq!(a.signals.time_s, b.signals.time_s);
     assert_eq!(a.signals.meshes[0].dte_m, b.signals.meshes[0].dte_m);
-    assert_eq!(a.signals.meshes[0].mesh_force_n, b.signals.meshes[0].mesh_force_n);
+    assert_eq!(
+        a.signals.meshes[0].mesh_force_n,
+        b.signals.meshes[0].mesh_force_n
+    );
     assert_eq!(a.meshes[0].mean_mesh_force_n, b.meshes[0].mean_mesh_force_n);
 }
 
@@ -69,8 +76,16 @@ fn two_stage_by_hand(m: &Model) -> (Vec<f64>, DMatrix<f64>, DMatrix<f64>) {
     let mut k = DMatrix::zeros(14, 14);
     let mut c = DMatrix::zeros(14, 14);
     let lat = [
-        (s1.lumped.mass_pinion_kg, s1.lumped.bearing_stiffness_pinion_n_per_m, s1.lumped.bearing_damping_pinion_n_s_per_m),
-        (s1.lumped.mass_gear_kg, s1.lumped.bearing_stiffness_gear_n_per_m, s1.lumped.bearing_damping_gear_n_s_per_m),
+        (
+            s1.lumped.mass_pinion_kg,
+            s1.lumped.bearing_stiffness_pinion_n_per_m,
+            s1.lumped.bearing_damping_pinion_n_s_per_m,
+        ),
+        (
+            s1.lumped.mass_gear_kg,
+            s1.lumped.bearing_stiffness_gear_n_per_m,
+            s1.lumped.bearing_damping_gear_n_s_per_m,
+        ),
         (0.9, 8e8, d.bearing_damping_pinion_n_s_per_m),
         (3.1, 7e8, 3e5),
     ];
@@ -94,9 +109,19 @@ fn two_stage_by_hand(m: &Model) -> (Vec<f64>, DMatrix<f64>, DMatrix<f64>) {
     }
     // Torsional springs: motor-pinion 1, gear 1-pinion 2 (the shaft), gear 2-brake.
     for (a, b, ks, cs) in [
-        (8, 9, d.coupling_stiffness_motor_nm_per_rad, d.coupling_damping_motor_nm_s_per_rad),
+        (
+            8,
+            9,
+            d.coupling_stiffness_motor_nm_per_rad,
+            d.coupling_damping_motor_nm_s_per_rad,
+        ),
         (10, 11, 2e5, 5.0),
-        (12, 13, d.coupling_stiffness_brake_nm_per_rad, d.coupling_damping_brake_nm_s_per_rad),
+        (
+            12,
+            13,
+            d.coupling_stiffness_brake_nm_per_rad,
+            d.coupling_damping_brake_nm_s_per_rad,
+        ),
     ] {
         for (mat, v) in [(&mut k, ks), (&mut c, cs)] {
             mat[(a, a)] += v;
@@ -111,10 +136,30 @@ fn two_stage_by_hand(m: &Model) -> (Vec<f64>, DMatrix<f64>, DMatrix<f64>) {
     // 1): the force on the pinion -F d must turn it counter-clockwise about the contact
     // near (0, r_p): d = (cos phi, sin phi).
     for (stage, lat_p, lat_g, rot_p, rot_g, dir) in [
-        (s1, 0, 2, 9, 10, [s1.pair.operating_pressure_angle_rad.sin(), s1.pair.operating_pressure_angle_rad.cos()]),
-        (s2, 4, 6, 11, 12, [s2.pair.operating_pressure_angle_rad.cos(), s2.pair.operating_pressure_angle_rad.sin()]),
+        (
+            s1,
+            0,
+            2,
+            9,
+            10,
+            [
+                s1.pair.operating_pressure_angle_rad.sin(),
+                s1.pair.operating_pressure_angle_rad.cos(),
+            ],
+        ),
+        (
+            s2,
+            4,
+            6,
+            11,
+            12,
+            [
+                s2.pair.operating_pressure_angle_rad.cos(),
+                s2.pair.operating_pressure_angle_rad.sin(),
+            ],
+        ),
     ] {
-        let mut g = vec![0.0; 14];
+        let mut g = [0.0; 14];
         g[lat_p] = dir[0];
         g[lat_p + 1] = dir[1];
         g[lat_g] = -dir[0];
@@ -154,18 +199,28 @@ fn damped_poles_of_a_two_stage_train_are_the_eigenvalues_of_matrices_assembled_b
     for p in &poles {
         let lam = Complex::new(p.real_per_s, p.imag_rad_per_s);
         let d = DMatrix::from_fn(14, 14, |i, j| {
-            let diag = if i == j { lam * lam } else { Complex::new(0.0, 0.0) };
+            let diag = if i == j {
+                lam * lam
+            } else {
+                Complex::new(0.0, 0.0)
+            };
             diag + lam * ct[(i, j)] + Complex::new(kt[(i, j)], 0.0)
         });
         let sv = d.singular_values();
         let smallest = sv.iter().fold(f64::INFINITY, |a, b| a.min(*b));
         let scale = lam.norm_sqr() + kt.norm();
-        assert!(smallest < 1e-9 * scale, "pole {lam}: sigma_min {smallest:e} of {scale:e}");
+        assert!(
+            smallest < 1e-9 * scale,
+            "pole {lam}: sigma_min {smallest:e} of {scale:e}"
+        );
     }
     // And none is missing: 14 coordinates, all free under motor slip, give 28
     // eigenvalues; the rigid rotation's zero is left out, the rest come in conjugate
     // pairs or as real poles, each reported once with Im >= 0.
-    let reported: usize = poles.iter().map(|p| if p.imag_rad_per_s > 0.0 { 2 } else { 1 }).sum();
+    let reported: usize = poles
+        .iter()
+        .map(|p| if p.imag_rad_per_s > 0.0 { 2 } else { 1 })
+        .sum();
     assert_eq!(reported, 28 - 1, "{} poles", poles.len());
 }
 
@@ -186,17 +241,30 @@ fn two_stage_statics_carry_each_shaft_torque_through_each_mesh() {
         let delta = sys.mesh_gradient(k).dot(&q);
         let force = stage.mesh.mean_stiffness_n_per_m() * delta;
         let expected = t.operating.meshes[k].gear_torque_nm / stage.pair.gear.base_radius_m;
-        assert!((force - expected).abs() < 1e-9 * expected, "mesh {k}: {force} vs {expected}");
+        assert!(
+            (force - expected).abs() < 1e-9 * expected,
+            "mesh {k}: {force} vs {expected}"
+        );
         ratio *= stage.pair.pinion.base_radius_m / stage.pair.gear.base_radius_m;
         // The pair alone at its own torque: its static TE, delta = F / k_mean.
         let alone = Model::from_case(&t.stages[k].case).unwrap();
         let y1 = alone.system(&gap, &ext, 0.2).static_equilibrium();
-        let delta1 = alone.system(&gap, &ext, 0.2).mesh_gradient(0).dot(&y1.rows(0, 8));
-        assert!((delta - delta1).abs() < 1e-9 * delta1, "mesh {k}: {delta} vs alone {delta1}");
+        let delta1 = alone
+            .system(&gap, &ext, 0.2)
+            .mesh_gradient(0)
+            .dot(&y1.rows(0, 8));
+        assert!(
+            (delta - delta1).abs() < 1e-9 * delta1,
+            "mesh {k}: {delta} vs alone {delta1}"
+        );
     }
     let k_motor = m.case.dynamics.coupling_stiffness_motor_nm_per_rad;
     let t_in = k_motor * (q[8] - q[9]);
-    assert!((t_in - t_out * ratio).abs() < 1e-9 * t_in, "{t_in} vs {}", t_out * ratio);
+    assert!(
+        (t_in - t_out * ratio).abs() < 1e-9 * t_in,
+        "{t_in} vs {}",
+        t_out * ratio
+    );
     // The input torque of the case, 60 N m, is what the motor carries.
     assert!((t_in - 60.0).abs() < 1e-9 * 60.0);
 }
@@ -211,11 +279,16 @@ fn steady_means_of_a_two_stage_train_are_the_static_forces_and_both_meshes_sound
         &["friction.model=none", "numerics.evaluated_mesh_periods=31"],
     );
     let t = m.train.as_ref().unwrap();
-    let r = m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none()).unwrap();
+    let r = m
+        .dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
+        .unwrap();
     for (k, stage) in t.stages.iter().enumerate() {
         let expected = t.operating.meshes[k].gear_torque_nm / stage.pair.gear.base_radius_m;
         let mean = r.meshes[k].mean_mesh_force_n;
-        assert!((mean - expected).abs() < 1e-6 * expected, "mesh {k}: {mean} vs {expected}");
+        assert!(
+            (mean - expected).abs() < 1e-6 * expected,
+            "mesh {k}: {mean} vs {expected}"
+        );
     }
     // The base period is one turn of the intermediate shaft: 31 periods of mesh 1, 23 of
     // mesh 2 (lcm of the mesh periods).
@@ -228,7 +301,8 @@ fn steady_means_of_a_two_stage_train_are_the_static_forces_and_both_meshes_sound
     // both mesh frequencies, and the sum and difference tones the time-varying stiffness
     // of one mesh makes of the other's response, above the high-order combinations.
     let v: Vec<f64> = r.signals.velocity.iter().map(|q| q[3]).collect();
-    let spec = gearwear::dynamics::spectrum::amplitude_spectrum(&r.signals.time_s, &v, r.mesh_period_s, 1);
+    let spec =
+        gearwear::dynamics::spectrum::amplitude_spectrum(&r.signals.time_s, &v, r.mesh_period_s, 1);
     let bin = |f: f64| spec.amplitude[(f * r.mesh_period_s).round() as usize];
     let (a1, a2, sum, diff) = (bin(f1), bin(f2), bin(f1 + f2), bin(f1 - f2));
     // Combination orders |a| + |b| of a f1 + b f2 at the bins 1-3 (1 = 3 f1 - 4 f2): 7
@@ -236,5 +310,8 @@ fn steady_means_of_a_two_stage_train_are_the_static_forces_and_both_meshes_sound
     let high = (1..=3).map(|b| spec.amplitude[b]).fold(0.0_f64, f64::max);
     println!("f1 {a1:e}, f2 {a2:e}, f1+f2 {sum:e}, f1-f2 {diff:e}, high-order {high:e}");
     assert!(a1 > 10.0 * high && a2 > 10.0 * high);
-    assert!(sum > 3.0 * high && diff > 3.0 * high, "sum {sum:e}, diff {diff:e}, high {high:e}");
+    assert!(
+        sum > 3.0 * high && diff > 3.0 * high,
+        "sum {sum:e}, diff {diff:e}, high {high:e}"
+    );
 }

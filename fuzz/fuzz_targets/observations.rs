@@ -7,7 +7,7 @@
 #![no_main]
 
 use gearwear::config::Case;
-use gearwear::prognostics::budget::{estimate_calibration, CalibrationJob};
+use gearwear::study::budget::{estimate_calibration, CalibrationJob};
 use gearwear::prognostics::observations::{
     parse_observations, MAX_CYCLES, MAX_ROWS, MAX_VALUE, SIGMA_RANGE,
 };

@@ -1,7 +1,9 @@
-//! The run budget in every job (`study::budget` estimates the cost): a job over its
-//! budget is refused before anything is computed, naming the keys that drive the cost
-//! and how to raise the budget. A job takes the budget as `Option<Budget>`: `None` runs
-//! without the check, a scaled [`Budget`] raises it knowingly.
+//! The run budget in every job: a job over its budget is refused before anything is
+//! computed, naming the keys that drive the cost and how to raise the budget (the remedy,
+//! worded with the front ends' arguments, is added here, at the application's edge). The
+//! cost model itself, one module per job family, is `study::budget`. A job takes the
+//! budget as `Option<Budget>`: `None` runs without the check, a scaled [`Budget`] raises
+//! it knowingly.
 
 use super::JobError;
 use crate::config::Case;
@@ -43,35 +45,4 @@ pub fn check_estimate(
         Some(b) => e.check(b).map_err(|m| JobError::input(over_budget(m))),
         None => Ok(()),
     }
-}
-
-/// The argument a prognostics setting is given as (`prognostics::limits`).
-fn arg_of(setting: &str) -> Option<Arg> {
-    Some(match setting {
-        "samples" => Arg::Samples,
-        "walkers" => Arg::Walkers,
-        "steps" => Arg::Steps,
-        "check_runs" => Arg::CheckRuns,
-        "grid_points" => Arg::GridPoints,
-        "limit_um" => Arg::LimitUm,
-        "cycles" => Arg::Cycles,
-        _ => return None,
-    })
-}
-
-/// Settings out of their ranges (`prognostics::limits`), each as a problem of its
-/// argument; every one at once.
-pub fn check_settings(problems: Vec<crate::prognostics::limits::Problem>) -> Result<(), JobError> {
-    if problems.is_empty() {
-        return Ok(());
-    }
-    Err(JobError::Input(
-        problems
-            .into_iter()
-            .map(|p| match arg_of(p.setting) {
-                Some(a) => Problem::of(a, p.message),
-                None => Problem::new(p.message),
-            })
-            .collect(),
-    ))
 }

@@ -5,7 +5,7 @@
 
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
@@ -13,9 +13,9 @@ use crate::prognostics::check::{
     check_calibration, theta_at_k_quantile, worst_ratio, CalibrationCheck,
 };
 use crate::prognostics::fit_check::{fit_check, FitCheck};
-use crate::prognostics::indicator::indicators_of;
 use crate::prognostics::likelihood::noise_scales;
 use crate::prognostics::prior::Prior;
+use crate::prognostics::quantity::indicators_of;
 use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureOutput;
@@ -89,7 +89,7 @@ impl CalibrateJob {
             ));
         }
         let o = &self.options;
-        budget::check_settings(crate::prognostics::limits::check_calibrate(
+        settings::check_settings(crate::prognostics::limits::check_calibrate(
             o.samples,
             o.walkers,
             o.steps,
@@ -102,10 +102,10 @@ impl CalibrateJob {
         let obs = parse_observations(&text, &src)
             .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
         // The budget, now that the observations say how far the reference runs go.
-        let e = crate::prognostics::budget::estimate_calibration(
+        let e = crate::study::budget::estimate_calibration(
             &self.case,
             &prior,
-            &crate::prognostics::budget::CalibrationJob {
+            &crate::study::budget::CalibrationJob {
                 values: obs.len(),
                 quantities: obs.series.len(),
                 max_cycles: obs.max_cycles(),

@@ -5,7 +5,7 @@
 
 use super::duty_runs::run_spectrum_job_modes;
 use super::observer::Observer;
-use super::wear::stops;
+use super::wear_runs::stops;
 use super::{publish, JobError, Outcome};
 use crate::duty::contribution::combined_run;
 use crate::duty::study::run_duty_study;

@@ -3,7 +3,7 @@
 //! log per mode and bin appended after every update, progress per mode, cancellation.
 
 use super::observer::{keep_going, Observer};
-use super::wear::{mode_tasks, report_update, Runs};
+use super::wear_runs::{mode_tasks, report_update, Runs};
 use super::{publish, JobError};
 use crate::duty::resume::{bin_runs, from_bin_runs};
 use crate::duty::wear::SpectrumRun;
@@ -143,7 +143,7 @@ impl Logs {
     }
 }
 
-/// As `app::wear::run_modes` for a spectrum: the starting runs, the output folder with a
+/// As `app::wear_runs::run_modes` for a spectrum: the starting runs, the output folder with a
 /// checkpoint log per mode and bin, a progress task per mode, and `study` run with a
 /// callback that checkpoints, reports progress and stops on request after every update.
 pub fn run_spectrum_job_modes<T>(

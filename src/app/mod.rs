@@ -39,7 +39,6 @@ pub mod budget;
 pub mod calibrate;
 pub mod checkpoints;
 pub mod dataset;
-pub mod dataset_dir;
 pub mod duty;
 pub mod duty_runs;
 pub mod dynamics;
@@ -52,10 +51,12 @@ pub mod predict_future;
 pub mod predict_merge;
 pub mod publish;
 pub mod run;
+pub mod settings;
 pub mod signals;
 pub mod stiffness;
 pub mod sweep;
 pub mod wear;
+pub mod wear_runs;
 
 pub use calibrate::{CalibrateJob, CalibrationOptions};
 pub use dataset::{DatasetJob, DatasetMergeJob, DesignSource};
@@ -115,7 +116,9 @@ impl AsRef<Outcome> for Outcome {
 /// (`[[stage]]`) here, before any work.
 pub fn build_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
     if !case.stage.is_empty() {
-        return Err(JobError::input(crate::remedy::Problem::new(TRAIN_STUDIES.to_owned())));
+        return Err(JobError::input(crate::remedy::Problem::new(
+            TRAIN_STUDIES.to_owned(),
+        )));
     }
     build_train_model(case, observer)
 }

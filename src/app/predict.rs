@@ -6,7 +6,7 @@ use super::calibrate::counted;
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::predict_future::FutureInput;
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::Table;
 use crate::prognostics::band::Band;
@@ -78,7 +78,7 @@ impl PredictOptions {
 
     /// Every problem of the options: each within its range (`prognostics::limits`).
     fn check(&self) -> Result<(), JobError> {
-        budget::check_settings(crate::prognostics::limits::check_predict(
+        settings::check_settings(crate::prognostics::limits::check_predict(
             self.limit_um,
             self.cycles,
             self.samples,
@@ -193,23 +193,7 @@ impl Job for PredictJob {
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
         // The budget, now that the samples' source and number are known.
-        let e = crate::prognostics::budget::estimate_prediction(
-            case,
-            &span,
-            &crate::prognostics::budget::PredictionJob {
-                samples_in_shard: n.div_ceil(shard.count.max(1)),
-                grid_points: o.grid_points,
-                cycles: o.cycles,
-                exact: o.forward == ForwardModel::Exact,
-                sharded: shard.count > 1,
-                check_runs: if shard.index == 1 { o.check_runs } else { 0 },
-                posterior_rows: match &source {
-                    SampleSource::Posterior { rows, .. } => rows.len(),
-                    SampleSource::Prior(_) => 0,
-                },
-            },
-        );
-        budget::check_estimate(&e, self.budget.as_ref())?;
+        self.check_budget(&source, &span, n)?;
         let model = build_model(case, observer)?;
         let stem =
             (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
@@ -235,63 +219,14 @@ impl Job for PredictJob {
             future: future.clone(),
         };
         let sur = match o.forward {
-            ForwardModel::Surrogate => {
-                let nodes = case.calibration.surrogate_nodes.max(2) as usize;
-                let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
-                let per_chain = match future {
-                    None => max_chain_runs(&span),
-                    Some(_) => future_chain_runs(&span),
-                };
-                Some(counted(
-                    observer,
-                    Task::items(
-                        "reference_runs",
-                        "reference runs",
-                        chains * per_chain as usize,
-                    ),
-                    |tick| {
-                        Surrogate::build_for_duty(
-                            case,
-                            future.as_ref(),
-                            &span,
-                            o.cycles,
-                            nodes,
-                            tick,
-                        )
-                    },
-                )?)
-            }
+            ForwardModel::Surrogate => Some(self.surrogate(observer, &span, future.as_ref())?),
             ForwardModel::Exact => None,
         };
         let fw = match &sur {
             Some(s) => Forward::Surrogate(s),
             None => Forward::Exact(case, future.as_ref()),
         };
-        let ids = shard.ids(n);
-        observer.note(&format!(
-            "predict: {} of {n} samples (shard {}/{}) to {} cycles on {} threads",
-            ids.len(),
-            shard.index,
-            shard.count,
-            o.cycles,
-            rayon::current_num_threads()
-        ));
-        let outcomes = counted(
-            observer,
-            Task::items("samples", "samples", ids.len()),
-            |tick| {
-                ids.par_iter()
-                    .map(|&i| {
-                        if observer.cancelled() {
-                            return Err(JobError::Cancelled);
-                        }
-                        let r = run_sample(&fw, source.draw(i, o.seed), i, &set);
-                        tick();
-                        r.map_err(JobError::from)
-                    })
-                    .collect::<Result<Vec<SampleOutcome>, JobError>>()
-            },
-        )?;
+        let outcomes = self.run_samples(observer, &fw, &source, &set)?;
         let checks = match (&sur, shard.index, o.check_runs) {
             (Some(s), 1, n) if n > 0 => check_prediction(case, s, &outcomes, &set, n),
             _ => Vec::new(),
@@ -322,6 +257,95 @@ impl Job for PredictJob {
             prediction_artifacts(file, (0, Vec::new()), figures)?,
             None,
             observer,
+        )
+    }
+}
+
+impl PredictJob {
+    /// Refuse the job over its budget: its shard's `n`-sample ensemble drawn from `source`
+    /// over `span`.
+    fn check_budget(&self, source: &SampleSource, span: &Prior, n: usize) -> Result<(), JobError> {
+        let (o, shard) = (&self.options, self.shard);
+        let e = crate::study::budget::estimate_prediction(
+            &self.case,
+            span,
+            &crate::study::budget::PredictionJob {
+                samples_in_shard: n.div_ceil(shard.count.max(1)),
+                grid_points: o.grid_points,
+                cycles: o.cycles,
+                exact: o.forward == ForwardModel::Exact,
+                sharded: shard.count > 1,
+                check_runs: if shard.index == 1 { o.check_runs } else { 0 },
+                posterior_rows: match source {
+                    SampleSource::Posterior { rows, .. } => rows.len(),
+                    SampleSource::Prior(_) => 0,
+                },
+            },
+        );
+        budget::check_estimate(&e, self.budget.as_ref())
+    }
+
+    /// The surrogate over `span` to the horizon (under the `future` duty), its reference
+    /// runs counted as they finish.
+    fn surrogate(
+        &self,
+        observer: &dyn Observer,
+        span: &Prior,
+        future: Option<&FutureDuty>,
+    ) -> Result<Surrogate, JobError> {
+        let case = &self.case;
+        let nodes = case.calibration.surrogate_nodes.max(2) as usize;
+        let chains = nodes.pow(span.free().iter().filter(|i| **i != 0).count() as u32);
+        let per_chain = match future {
+            None => max_chain_runs(span),
+            Some(_) => future_chain_runs(span),
+        };
+        Ok(counted(
+            observer,
+            Task::items(
+                "reference_runs",
+                "reference runs",
+                chains * per_chain as usize,
+            ),
+            |tick| Surrogate::build_for_duty(case, future, span, self.options.cycles, nodes, tick),
+        )?)
+    }
+
+    /// Every sample of this shard drawn from `source` and run through `fw`, in parallel,
+    /// counted as they finish (stopped when the observer cancels).
+    fn run_samples(
+        &self,
+        observer: &dyn Observer,
+        fw: &Forward,
+        source: &SampleSource,
+        set: &PredictSettings,
+    ) -> Result<Vec<SampleOutcome>, JobError> {
+        let (o, shard) = (&self.options, self.shard);
+        let n = set.samples;
+        let ids = shard.ids(n);
+        observer.note(&format!(
+            "predict: {} of {n} samples (shard {}/{}) to {} cycles on {} threads",
+            ids.len(),
+            shard.index,
+            shard.count,
+            o.cycles,
+            rayon::current_num_threads()
+        ));
+        counted(
+            observer,
+            Task::items("samples", "samples", ids.len()),
+            |tick| {
+                ids.par_iter()
+                    .map(|&i| {
+                        if observer.cancelled() {
+                            return Err(JobError::Cancelled);
+                        }
+                        let r = run_sample(fw, source.draw(i, o.seed), i, set);
+                        tick();
+                        r.map_err(JobError::from)
+                    })
+                    .collect::<Result<Vec<SampleOutcome>, JobError>>()
+            },
         )
     }
 }

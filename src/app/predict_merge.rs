@@ -4,11 +4,11 @@
 use super::observer::Observer;
 use super::predict::{prediction_artifacts, ShardFile};
 use super::{budget, publish, Job, JobError, Outcome};
-use crate::prognostics::budget::estimate_merge;
 use crate::prognostics::check::PredictionCheck;
 use crate::prognostics::predict::SampleOutcome;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
+use crate::study::budget::estimate_merge;
 use crate::study::budget::Budget;
 use std::path::{Path, PathBuf};
 

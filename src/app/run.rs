@@ -3,7 +3,7 @@
 //! report, figures and the CSV behind each.
 
 use super::observer::Observer;
-use super::wear::{run_modes, stops};
+use super::wear_runs::{run_modes, stops};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::report::figure_output::FigureRequest;

@@ -12,9 +12,8 @@ use crate::signals::setup::chain_of;
 use crate::signals::transfer::TransferPath;
 use crate::store::transfer_path::read_transfer_path;
 use crate::store::RunMetadata;
-use crate::study::budget::{estimate, Budget, Estimate, Job as Cost, Term, SECONDS_PER_STEP};
+use crate::study::budget::{estimate_signals, Budget};
 use crate::study::signal_record::record_case;
-use crate::study::transient_signals::is_transient;
 use crate::wear::WearState;
 use std::path::PathBuf;
 
@@ -58,59 +57,6 @@ pub struct SignalsJob {
     pub figures: FigureRequest,
 }
 
-/// Bytes of memory per recorded second and sample rate: the record's channels, their
-/// analysis, and for a transient the internal grid (8 samples a sample, four forces, their
-/// spectra): measured about 1.5 kB per record sample for a transient, 0.2 kB steady.
-const BYTES_PER_SAMPLE_STEADY: f64 = 400.0;
-const BYTES_PER_SAMPLE_TRANSIENT: f64 = 3000.0;
-
-/// Seconds per record sample of rendering, filtering, indicators and writing, on one
-/// core: measured 2.7 us of user time a sample for a 20 s record at 100 kHz (2e6 samples,
-/// 5.47 s), rounded up.
-const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
-
-/// The dynamics estimate with the record's memory added as its own term, so one estimate
-/// (and one message, with every term) covers the whole job: before, the record was checked
-/// apart and an estimate read from the budget's message missed it (a 10 s record at 1 MHz:
-/// 0.07 GB reported against 3.7 GiB needed).
-fn estimate_with_record(case: &Case) -> Estimate {
-    let s = &case.signals;
-    let seconds = match s.record_length_unit {
-        crate::config::signals::LengthUnit::S => s.record_length,
-        crate::config::signals::LengthUnit::Revolutions => {
-            s.record_length / case.operating.input_speed_hz.max(1e-9)
-        }
-    };
-    let per = if is_transient(case) {
-        BYTES_PER_SAMPLE_TRANSIENT
-    } else {
-        BYTES_PER_SAMPLE_STEADY
-    };
-    // A transient record integrates every mesh period it spans at the grid's steps per
-    // period (bounded above with the fastest speed of the record); a steady record
-    // replays the steady state, whose cost is the dynamics estimate's.
-    let samples = seconds * s.sampling_rate_hz;
-    let transient_seconds = if is_transient(case) {
-        let mesh_periods = case.gear.teeth_pinion as f64 * s.max_input_speed_hz(case) * seconds;
-        mesh_periods * case.numerics.steps_per_mesh_period as f64 * SECONDS_PER_STEP
-    } else {
-        0.0
-    };
-    let mut e = estimate(case, Cost::Dynamics);
-    e.terms.push(Term {
-        what: "the record (channels, analysis, a transient's internal grid and integration)",
-        seconds: transient_seconds + samples * SECONDS_PER_RECORD_SAMPLE,
-        bytes: samples * per,
-        keys: &[
-            "signals.record_length",
-            "signals.sampling_rate_hz",
-            "signals.ramp_end_speed_hz",
-            "numerics.steps_per_mesh_period",
-        ],
-    });
-    e
-}
-
 impl Job for SignalsJob {
     type Output = Outcome;
 
@@ -120,7 +66,7 @@ impl Job for SignalsJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        budget::check_estimate(&estimate_with_record(&self.case), self.budget.as_ref())?;
+        budget::check_estimate(&estimate_signals(&self.case), self.budget.as_ref())?;
         let model = build_model(&self.case, observer)?;
         let path = transfer_path_of(self.transfer_path.as_ref())?;
         let setup = chain_of(

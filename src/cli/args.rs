@@ -1,11 +1,11 @@
 //! Command-line arguments (clap derive).
 
 use clap::{Args, Parser, Subcommand};
-use gearwear::config::{load_case_in, Case};
 use gearwear::study::budget::Budget;
 use std::path::PathBuf;
 
-use super::error::CliError;
+use super::common_args::{CaseArgs, FigureArgs};
+use super::signals_args::{DatasetArgs, DatasetMergeArgs, SignalsArgs};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -60,12 +60,12 @@ pub(crate) enum Command {
     Dynamics(DynamicsArgs),
     /// One record of what a sensor sees: housing accelerations at named sensors and a
     /// tachometer, with condition indicators and figures.
-    Signals(super::signals_args::SignalsArgs),
+    Signals(SignalsArgs),
     /// A labelled dataset from a study design: run-to-failure states, fault conditions,
     /// speeds, loads and noise realisations, one record each (shardable, resumable).
-    Dataset(super::signals_args::DatasetArgs),
+    Dataset(DatasetArgs),
     /// Join the shards of a dataset into one, with its index and metadata.
-    DatasetMerge(super::signals_args::DatasetMergeArgs),
+    DatasetMerge(DatasetMergeArgs),
     /// The coupled dynamics-wear study (and its quasi-static twin).
     Wear(WearArgs),
     /// The paper's section 4 study on the case, with a self-contained HTML report (the main job).
@@ -86,41 +86,6 @@ pub(crate) enum Command {
     LoadSpectrum(LoadSpectrumArgs),
 }
 
-/// How a case is given: a TOML file and/or `--set` overrides on top of the default.
-#[derive(Debug, Clone, Args, Default)]
-pub(crate) struct CaseArgs {
-    /// Case file (TOML). Omitted keys take the paper's defaults.
-    #[arg(long, value_name = "FILE")]
-    pub(crate) config: Option<PathBuf>,
-    /// Override one key, e.g. --set operating.input_speed_hz=45 (repeatable).
-    #[arg(long = "set", value_name = "SECTION.KEY=VALUE")]
-    pub(crate) set: Vec<String>,
-}
-
-impl CaseArgs {
-    /// The case file's text (empty without --config).
-    pub(crate) fn text(&self) -> Result<String, CliError> {
-        use gearwear::io::input::{read_input_text, MAX_CASE_BYTES};
-        match &self.config {
-            // Only a regular file of bounded size (a FIFO or a device is refused at once).
-            Some(p) => read_input_text(p, "case file", MAX_CASE_BYTES)
-                .map_err(|e| CliError::input(format!("--config {e}"))),
-            None => Ok(String::new()),
-        }
-    }
-
-    /// Read, merge and validate the case; a relative `load_spectrum.file` is read from the
-    /// case file's folder.
-    pub(crate) fn load(&self) -> Result<Case, CliError> {
-        let dir = self
-            .config
-            .as_deref()
-            .and_then(std::path::Path::parent)
-            .unwrap_or(std::path::Path::new("."));
-        Ok(load_case_in(&self.text()?, &self.set, dir)?)
-    }
-}
-
 #[derive(Debug, Args)]
 pub(crate) struct ConfigArgs {
     #[command(flatten)]
@@ -132,27 +97,6 @@ pub(crate) struct ConfigArgs {
     /// pinion and gear set to "derived", so they follow the [gear] section.
     #[arg(long)]
     pub(crate) new_pair: bool,
-}
-
-/// The formats and size of a command's figures.
-#[derive(Debug, Clone, Args, Default)]
-pub(crate) struct FigureArgs {
-    /// Figure formats: png, svg (vector) or png,svg [default: png].
-    #[arg(long = "figures", value_name = "FORMATS")]
-    pub(crate) formats: Option<String>,
-    /// Size of a one-panel figure in pixels, WIDTHxHEIGHT (width 400-8192, height
-    /// 200-4096; figures of several panels keep their height ratio) [default: 900x420].
-    #[arg(long = "figure-size", value_name = "WxH")]
-    pub(crate) size: Option<String>,
-}
-
-impl FigureArgs {
-    pub(crate) fn request(&self) -> gearwear::report::figure_output::FigureRequest {
-        gearwear::report::figure_output::FigureRequest {
-            formats: self.formats.clone(),
-            size: self.size.clone(),
-        }
-    }
 }
 
 #[derive(Debug, Args)]

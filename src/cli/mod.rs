@@ -21,6 +21,7 @@ macro_rules! eprintln {
 
 mod args;
 mod calibrate_cmd;
+mod common_args;
 mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;

@@ -1,6 +1,6 @@
 //! Arguments of `gearwear signals`, `gearwear dataset` and `gearwear dataset-merge`.
 
-use super::args::{CaseArgs, FigureArgs};
+use super::common_args::{CaseArgs, FigureArgs};
 use clap::Args;
 use std::path::PathBuf;
 

@@ -13,26 +13,43 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::lumped::{BodyValues, DynamicsSection};
+pub use super::operating::{
+    LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
+};
 pub use super::signals::SignalsSection;
 pub use super::teeth::{
-    FaultKind, FaultSpec, Member, ModificationSection, ReliefShape, TeethSection,
+    Fault, FaultKind, FaultTable, Member, ModificationSection, ReliefShape, TeethSection,
+    ToothFault,
 };
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct Case {
+    /// The involute spur pair (paper Table 1).
     pub gear: GearSection,
+    /// Elastic constants of pinion and gear.
     pub materials: MaterialsSection,
+    /// The nominal operating point and how the speed is held.
     pub operating: OperatingSection,
+    /// The lubricant (Xu's friction regression).
     pub lubricant: LubricantSection,
+    /// Roughness of the flanks as they wear (paper 4.1).
     pub surface: SurfaceSection,
+    /// Lumped parameters of the tribo-dynamic model (paper Table 2).
     pub dynamics: DynamicsSection,
+    /// How the mesh stiffness is computed.
     pub stiffness: StiffnessSection,
+    /// How the load is shared between pairs in contact.
     pub contact: ContactSection,
+    /// The friction coefficient's model.
     pub friction: FrictionSection,
+    /// Archard wear and the wear study's blocks.
     pub wear: WearSection,
+    /// Integration, steady state and recording of the dynamic model.
     pub numerics: NumericsSection,
+    /// Priors of the uncertain parameters for `gearwear calibrate` / `predict`.
     pub calibration: CalibrationSection,
     /// What a sensor records (`gearwear signals`, datasets); left out of a case's
     /// serialisation while it holds the defaults.
@@ -40,16 +57,17 @@ pub struct Case {
     pub signals: SignalsSection,
     /// The duty cycle (issue 20); absent: the single operating point of `operating`.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub load_spectrum: Option<super::load_spectrum::LoadSpectrumSection>,
+    pub load_spectrum: Option<LoadSpectrumSection>,
     /// Manufacturing errors per tooth (absent: perfect teeth, the paper's).
     #[serde(skip_serializing_if = "TeethSection::is_empty")]
     pub teeth: TeethSection,
     /// Profile modifications of every tooth (absent: true involutes).
     #[serde(skip_serializing_if = "ModificationSection::is_empty")]
     pub modification: ModificationSection,
-    /// Tooth faults (`[[fault]]` tables; none by default).
+    /// Tooth faults (`[[fault]]` tables; none by default), resolved when the case is
+    /// loaded.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub fault: Vec<FaultSpec>,
+    pub fault: Vec<ToothFault>,
     /// The stages of a gear train (`[[stage]]` tables; none: the single pair of
     /// `[gear]`), `config::train`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -60,21 +78,34 @@ pub struct Case {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GearSection {
+    /// Module m, mm (paper Table 1: 2 mm).
     pub module_mm: f64,
+    /// Pinion teeth z1 (paper: 19).
     pub teeth_pinion: i64,
+    /// Gear teeth z2 (paper: 31).
     pub teeth_gear: i64,
+    /// Reference pressure angle alpha, deg (paper: 20).
     pub pressure_angle_deg: f64,
+    /// Addendum coefficient h_a*, in modules (paper: 1).
     pub addendum_coefficient: f64,
+    /// Dedendum coefficient h_f*, in modules (paper: 1.25).
     pub dedendum_coefficient: f64,
+    /// Profile shift coefficient x1 of the pinion (paper: 0).
     pub profile_shift_pinion: f64,
+    /// Profile shift coefficient x2 of the gear (paper: 0).
     pub profile_shift_gear: f64,
+    /// Face width b, mm (paper: 20 mm).
     pub face_width_mm: f64,
-    /// Operating centre distance; absent means the one the profile shifts give.
+    /// Operating centre distance, mm; absent means the one the profile shifts give.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub centre_distance_mm: Option<f64>,
-    /// Hub bore radius; `"derived"`: r_f / 2 (h_f = 2, mid-range of Sainsot's fit).
+    /// Pinion hub bore radius r_int, mm (the fillet foundation's ring); `"derived"`: r_f / 2
+    /// (h_f = 2, mid-range of Sainsot's fit).
     pub hub_bore_radius_pinion_mm: Derivable,
+    /// Gear hub bore radius r_int, mm; `"derived"`: r_f / 2.
     pub hub_bore_radius_gear_mm: Derivable,
+    /// Rack-cutter tip radius, in modules (ISO 53 profile A: 0.38): the root fillet, the
+    /// undercut check and Sainsot's theta_f.
     pub tool_tip_radius_coefficient: f64,
 }
 
@@ -125,12 +156,17 @@ impl Default for GearSection {
     }
 }
 
+/// `[materials]`: elastic constants of pinion and gear.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct MaterialsSection {
+    /// Pinion Young's modulus, GPa (paper: 205 GPa).
     pub youngs_modulus_pinion_gpa: f64,
+    /// Pinion Poisson's ratio (paper: 0.3).
     pub poisson_ratio_pinion: f64,
+    /// Gear Young's modulus, GPa (paper: 205 GPa).
     pub youngs_modulus_gear_gpa: f64,
+    /// Gear Poisson's ratio (paper: 0.3).
     pub poisson_ratio_gear: f64,
 }
 
@@ -145,56 +181,11 @@ impl Default for MaterialsSection {
     }
 }
 
-/// Which shaft the load torque is referred to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum TorqueShaft {
-    Pinion,
-    Gear,
-}
-
-/// How the drivetrain's free rotation is held (docs/MODEL.md, "Speed boundary condition").
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SpeedBoundary {
-    /// Motor angle imposed, theta_m = Omega t; brake torque constant.
-    MotorSpeedImposed,
-    /// Brake angle imposed; motor torque constant.
-    BrakeSpeedImposed,
-    /// Motor torque = mean torque + slip damping (Omega - dtheta_m/dt); brake torque constant.
-    MotorSlip,
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct OperatingSection {
-    pub input_speed_hz: f64,
-    pub load_torque_nm: f64,
-    pub load_torque_shaft: TorqueShaft,
-    pub speed_boundary: SpeedBoundary,
-    pub motor_slip_damping_nm_s_per_rad: f64,
-}
-
-impl Default for OperatingSection {
-    fn default() -> Self {
-        Self {
-            input_speed_hz: 30.0,
-            load_torque_nm: 60.0,
-            // The paper's 3311 N mean force matches 60 N m / r_pb (docs/MODEL.md).
-            load_torque_shaft: TorqueShaft::Pinion,
-            // Paper eq. (1) keeps the motor as a free inertia driven by T_mor: a motor
-            // torque law with a speed term is the closest reading (docs/MODEL.md).
-            speed_boundary: SpeedBoundary::MotorSlip,
-            // Induction motor with ~3 % rated slip at this load: 60 N m / (0.03 x 188 rad/s).
-            motor_slip_damping_nm_s_per_rad: 10.0,
-        }
-    }
-}
-
+/// `[lubricant]`: the oil, as Xu's friction regression sees it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct LubricantSection {
-    /// Inlet absolute viscosity, centipoise (mPa s). Not in the paper.
+    /// Inlet absolute viscosity nu_0, cP (mPa s). Not in the paper.
     pub viscosity_cp: f64,
 }
 
@@ -209,9 +200,9 @@ impl Default for LubricantSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SurfaceSection {
-    /// Maximum pinion wear depth at the table points, um (ascending).
+    /// Maximum pinion wear depth at the table points, µm (ascending).
     pub roughness_table_wear_um: Vec<f64>,
-    /// Composite RMS roughness at those points, um.
+    /// Composite RMS roughness S at those points, µm; linear in between, constant outside.
     pub roughness_table_rms_um: Vec<f64>,
 }
 
@@ -226,138 +217,8 @@ impl Default for SurfaceSection {
     }
 }
 
-/// Lumped parameters of paper Table 2 (units corrected as docs/MODEL.md says).
-///
-/// `P` is the type of the four values the geometry can give (masses and inertias of
-/// pinion and gear): [`Derivable`] in a case, `f64` once resolved
-/// ([`DynamicsSection::resolve`]). Motor and brake inertias, which the geometry cannot
-/// give, are always numbers.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(
-    deny_unknown_fields,
-    default,
-    bound(
-        serialize = "P: Serialize",
-        deserialize = "P: Deserialize<'de>, DynamicsSection<P>: Default"
-    )
-)]
-pub struct DynamicsSection<P = Derivable> {
-    pub mass_pinion_kg: P,
-    pub mass_gear_kg: P,
-    pub inertia_pinion_kg_m2: P,
-    pub inertia_gear_kg_m2: P,
-    /// Density of the blanks for the derived values, kg/m^3.
-    pub blank_density_kg_per_m3: f64,
-    pub inertia_motor_kg_m2: f64,
-    pub inertia_brake_kg_m2: f64,
-    pub bearing_stiffness_pinion_n_per_m: f64,
-    pub bearing_stiffness_gear_n_per_m: f64,
-    pub bearing_damping_pinion_n_s_per_m: f64,
-    pub bearing_damping_gear_n_s_per_m: f64,
-    pub coupling_stiffness_motor_nm_per_rad: f64,
-    pub coupling_stiffness_brake_nm_per_rad: f64,
-    pub coupling_damping_motor_nm_s_per_rad: f64,
-    pub coupling_damping_brake_nm_s_per_rad: f64,
-    /// Mesh damping ratio zeta: c_m = 2 zeta sqrt(k_mean m_e). Not in the paper.
-    pub mesh_damping_ratio: f64,
-}
-
-/// Masses (kg) and polar inertias (kg m^2) of pinion and gear, as numbers: what the
-/// geometry estimates, or what a case resolves to.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct BodyValues {
-    pub mass_pinion_kg: f64,
-    pub mass_gear_kg: f64,
-    pub inertia_pinion_kg_m2: f64,
-    pub inertia_gear_kg_m2: f64,
-}
-
-impl BodyValues {
-    /// (key, value) pairs in schema order, for messages.
-    pub fn named(&self) -> [(&'static str, f64); 4] {
-        [
-            ("dynamics.mass_pinion_kg", self.mass_pinion_kg),
-            ("dynamics.mass_gear_kg", self.mass_gear_kg),
-            ("dynamics.inertia_pinion_kg_m2", self.inertia_pinion_kg_m2),
-            ("dynamics.inertia_gear_kg_m2", self.inertia_gear_kg_m2),
-        ]
-    }
-}
-
-impl DynamicsSection {
-    /// The given masses and inertias (`None` where derived), in [`BodyValues::named`] order.
-    pub fn given_body_values(&self) -> [Option<f64>; 4] {
-        [
-            self.mass_pinion_kg.given(),
-            self.mass_gear_kg.given(),
-            self.inertia_pinion_kg_m2.given(),
-            self.inertia_gear_kg_m2.given(),
-        ]
-    }
-
-    /// The section with every `"derived"` value replaced by the geometry's `estimate`.
-    pub fn resolve(&self, estimate: &BodyValues) -> DynamicsSection<f64> {
-        DynamicsSection {
-            mass_pinion_kg: self.mass_pinion_kg.or_derived(estimate.mass_pinion_kg),
-            mass_gear_kg: self.mass_gear_kg.or_derived(estimate.mass_gear_kg),
-            inertia_pinion_kg_m2: self
-                .inertia_pinion_kg_m2
-                .or_derived(estimate.inertia_pinion_kg_m2),
-            inertia_gear_kg_m2: self
-                .inertia_gear_kg_m2
-                .or_derived(estimate.inertia_gear_kg_m2),
-            blank_density_kg_per_m3: self.blank_density_kg_per_m3,
-            inertia_motor_kg_m2: self.inertia_motor_kg_m2,
-            inertia_brake_kg_m2: self.inertia_brake_kg_m2,
-            bearing_stiffness_pinion_n_per_m: self.bearing_stiffness_pinion_n_per_m,
-            bearing_stiffness_gear_n_per_m: self.bearing_stiffness_gear_n_per_m,
-            bearing_damping_pinion_n_s_per_m: self.bearing_damping_pinion_n_s_per_m,
-            bearing_damping_gear_n_s_per_m: self.bearing_damping_gear_n_s_per_m,
-            coupling_stiffness_motor_nm_per_rad: self.coupling_stiffness_motor_nm_per_rad,
-            coupling_stiffness_brake_nm_per_rad: self.coupling_stiffness_brake_nm_per_rad,
-            coupling_damping_motor_nm_s_per_rad: self.coupling_damping_motor_nm_s_per_rad,
-            coupling_damping_brake_nm_s_per_rad: self.coupling_damping_brake_nm_s_per_rad,
-            mesh_damping_ratio: self.mesh_damping_ratio,
-        }
-    }
-}
-
-impl DynamicsSection<f64> {
-    /// The four values the geometry could give.
-    pub fn body_values(&self) -> BodyValues {
-        BodyValues {
-            mass_pinion_kg: self.mass_pinion_kg,
-            mass_gear_kg: self.mass_gear_kg,
-            inertia_pinion_kg_m2: self.inertia_pinion_kg_m2,
-            inertia_gear_kg_m2: self.inertia_gear_kg_m2,
-        }
-    }
-}
-
-impl Default for DynamicsSection {
-    fn default() -> Self {
-        Self {
-            mass_pinion_kg: Derivable::Given(0.7),
-            mass_gear_kg: Derivable::Given(1.822),
-            inertia_pinion_kg_m2: Derivable::Given(2.331e-4),
-            inertia_gear_kg_m2: Derivable::Given(1.392e-3),
-            // Structural steel.
-            blank_density_kg_per_m3: 7850.0,
-            inertia_motor_kg_m2: 2.1e-3,
-            inertia_brake_kg_m2: 1.05e-2,
-            bearing_stiffness_pinion_n_per_m: 5e8,
-            bearing_stiffness_gear_n_per_m: 5e8,
-            bearing_damping_pinion_n_s_per_m: 4e5,
-            bearing_damping_gear_n_s_per_m: 4e5,
-            coupling_stiffness_motor_nm_per_rad: 4e7,
-            coupling_stiffness_brake_nm_per_rad: 4e7,
-            coupling_damping_motor_nm_s_per_rad: 3e4,
-            coupling_damping_brake_nm_s_per_rad: 3e4,
-            mesh_damping_ratio: 0.05,
-        }
-    }
-}
-
+/// `[stiffness]`: how the mesh stiffness is computed (potential energy method,
+/// docs/MODEL.md section 2).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StiffnessSection {
@@ -424,9 +285,11 @@ impl LoadSharingModel {
     }
 }
 
+/// `[contact]`: how the load is shared between pairs in contact.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ContactSection {
+    /// The law the mesh force is split by between two pairs in contact.
     pub load_sharing: LoadSharingModel,
 }
 
@@ -438,12 +301,15 @@ impl Default for ContactSection {
     }
 }
 
+/// The friction coefficient's model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FrictionModel {
     /// Xu, Kahraman, Anderson & Maddock (2007), paper eq. (8-9).
     Xu2007,
+    /// A constant coefficient, `friction.constant_coefficient`.
     Constant,
+    /// No friction.
     None,
 }
 
@@ -451,16 +317,21 @@ pub enum FrictionModel {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LengthUnit {
+    /// Metres (Xu et al.'s).
     M,
+    /// Millimetres.
     Mm,
 }
 
+/// `[friction]`: the friction coefficient along the path of contact.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct FrictionSection {
+    /// The friction coefficient's model (paper eq. 8-9: Xu et al. 2007).
     pub model: FrictionModel,
     /// Used by `model = "constant"`.
     pub constant_coefficient: f64,
+    /// Unit of the radius of curvature in Xu's regression (docs/MODEL.md).
     pub xu_radius_unit: LengthUnit,
     /// Sliding speed over which the friction direction turns (tanh smoothing), m/s.
     pub direction_smoothing_m_per_s: f64,
@@ -477,16 +348,17 @@ impl Default for FrictionSection {
     }
 }
 
+/// `[wear]`: Archard wear and the blocks of the wear study (paper eq. 17).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct WearSection {
     /// Archard coefficient. The paper's 2.5e-12 read as cm^2/N (docs/MODEL.md).
     pub coefficient_m2_per_n: f64,
-    /// Cycles m the per-cycle wear is held for (paper eq. 17).
+    /// Cycles m the per-cycle wear is held for, cycles (paper eq. 17).
     pub block_cycles: f64,
     /// Largest wear depth one block may add anywhere, um (paper's epsilon^m).
     pub threshold_um: f64,
-    /// Pinion load cycles (revolutions) to simulate.
+    /// Pinion load cycles (revolutions) to simulate, cycles.
     pub total_cycles: f64,
     /// Points on each active profile.
     pub points_per_profile: i64,
@@ -509,6 +381,8 @@ pub enum WornGeometry {
 }
 
 impl WornGeometry {
+    /// Whether this is the paper's involute geometry (the default, left out of a case's
+    /// serialisation).
     pub fn is_involute(&self) -> bool {
         *self == WornGeometry::Involute
     }
@@ -527,6 +401,7 @@ impl Default for WearSection {
     }
 }
 
+/// `[numerics]`: integration, steady state and recording of the dynamic model.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct NumericsSection {
@@ -587,6 +462,46 @@ impl Case {
         }
     }
 
+    /// The case's load point: `[operating]`'s input speed, load torque and its shaft.
+    pub fn load_point(&self) -> LoadPoint {
+        let o = &self.operating;
+        LoadPoint {
+            input_speed_hz: o.input_speed_hz,
+            load_torque_nm: o.load_torque_nm,
+            load_torque_shaft: o.load_torque_shaft,
+        }
+    }
+
+    /// Put the case at load point `p`: `[operating]`'s input speed, load torque and its
+    /// shaft set to `p`'s. Everything else stays (how the speed is held, a load spectrum;
+    /// [`Case::at_bin`] drops the spectrum). The one place a case's operating point is
+    /// changed; the model derives its speeds, torques and mesh frequency from it
+    /// (`dynamics::params::OperatingPoint`).
+    pub fn set_load_point(&mut self, p: LoadPoint) {
+        let o = &mut self.operating;
+        o.input_speed_hz = p.input_speed_hz;
+        o.load_torque_nm = p.load_torque_nm;
+        o.load_torque_shaft = p.load_torque_shaft;
+    }
+
+    /// The case at bin `i` of its spectrum: the operating point set to the bin's torque
+    /// (on the spectrum's shaft) and speed, without the spectrum. Everything else is the
+    /// case's, so a bin equal to the operating point gives the case itself.
+    pub fn at_bin(&self, i: usize) -> Case {
+        let mut c = self.clone();
+        if let Some(s) = self.load_spectrum.as_ref() {
+            c.set_load_point(s.load_point(i, self.operating.load_torque_shaft));
+        }
+        c.load_spectrum = None;
+        c
+    }
+
+    /// The case of every bin, or None without a spectrum.
+    pub fn bin_cases(&self) -> Option<Vec<Case>> {
+        let s = self.load_spectrum.as_ref()?;
+        Some((0..s.bins.len()).map(|i| self.at_bin(i)).collect())
+    }
+
     /// A starting point for a pair of one's own (`gearwear config --new-pair`): the
     /// built-in case with every value the geometry can give set to `"derived"` (hub bores,
     /// masses and inertias of pinion and gear), so that they follow the `[gear]` section
@@ -609,18 +524,22 @@ impl Case {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct CalibrationSection {
-    /// Lower bound of the log-uniform prior of k; absent: the case's k / 100.
+    /// Lower bound of the log-uniform prior of k, m^2/N; absent: the case's k / 100.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wear_coefficient_min_m2_per_n: Option<f64>,
-    /// Upper bound of the log-uniform prior of k; absent: the case's k x 100.
+    /// Upper bound of the log-uniform prior of k, m^2/N; absent: the case's k x 100.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wear_coefficient_max_m2_per_n: Option<f64>,
-    /// Uniform prior of the factor on the roughness table (1, 1: fixed).
+    /// Lower bound of the uniform prior of the factor on the roughness table (1 and 1:
+    /// fixed).
     pub roughness_scale_min: f64,
+    /// Upper bound of the uniform prior of the factor on the roughness table.
     pub roughness_scale_max: f64,
-    /// Uniform prior of the load torque, N m; absent: the case's torque (fixed).
+    /// Lower bound of the uniform prior of the load torque, N m; absent: the case's torque
+    /// (fixed).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_torque_min_nm: Option<f64>,
+    /// Upper bound of the uniform prior of the load torque, N m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_torque_max_nm: Option<f64>,
     /// Cells per parameter of the exact grid posterior (one or two parameters).

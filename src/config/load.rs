@@ -13,17 +13,22 @@
 //!   (multi-line values belong in the case file), never silently cut.
 //! - Values echoed in messages are cut to [`SHOWN_CHARS`] characters with an ellipsis.
 
-use super::case::Case;
-use super::schema::{spec, KeySpec, Range, Valid, KEYS, TABLE_ARRAYS};
+use super::case::{Case, FaultTable, LoadSpectrumSection, ToothFault};
+use super::operating::SpeedUnit;
+use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
+use super::schema::{spec, KeySpec, KEYS, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Words};
 use std::fmt;
 use toml::{Table, Value};
 
+pub use super::parse::override_value;
+
 /// All problems found in a case, one message each. A message about an override names
 /// the override argument through [`Words`], which each front end spells its own way.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConfigError {
+    /// The problems, one message each, in the order they were found.
     pub problems: Vec<Words>,
 }
 
@@ -40,6 +45,7 @@ impl fmt::Display for ConfigError {
 impl std::error::Error for ConfigError {}
 
 impl ConfigError {
+    /// An error of the one problem `msg`.
     pub fn one(msg: impl Into<String>) -> Self {
         Self {
             problems: vec![Words::from(msg.into())],
@@ -56,26 +62,6 @@ impl ConfigError {
     pub fn messages(&self) -> Vec<String> {
         self.problems.iter().map(Words::to_string).collect()
     }
-}
-
-/// A TOML value as echoed in messages: numbers short (`1e-9`, not 0.000000001).
-fn show(v: &Value) -> String {
-    match v {
-        Value::Float(x) => super::schema::number(*x),
-        _ => clip(&v.to_string(), SHOWN_CHARS),
-    }
-}
-
-/// A value as an override reads it: one TOML value, or else the text as a bare string
-/// (`friction.model=none`).
-pub fn override_value(raw: &str) -> Value {
-    let raw = raw.trim();
-    // One value: exactly the table {v = ...}; anything else is a bare string.
-    match toml::from_str::<Table>(&format!("v = {raw}")) {
-        Ok(t) if t.len() == 1 => t.get("v").cloned(),
-        _ => None,
-    }
-    .unwrap_or_else(|| Value::String(raw.into()))
 }
 
 /// Parse `section.key=value`; the value is read as TOML, or as a bare string.
@@ -105,134 +91,6 @@ fn parse_override(text: &str) -> Result<(Vec<String>, Value), Words> {
         return Err(problem(shown, "the key must be section.key"));
     }
     Ok((path, override_value(raw)))
-}
-
-fn type_name(v: &Value) -> &'static str {
-    match v {
-        Value::String(_) => "a string",
-        Value::Integer(_) => "an integer",
-        Value::Float(_) => "a number",
-        Value::Boolean(_) => "a boolean",
-        Value::Datetime(_) => "a date",
-        Value::Array(_) => "an array",
-        Value::Table(_) => "a table",
-    }
-}
-
-/// The value as a float, if it is a number.
-fn as_number(v: &Value) -> Option<f64> {
-    v.as_float().or_else(|| v.as_integer().map(|i| i as f64))
-}
-
-/// Bring `v` to the type `valid` wants (integers to floats for number keys, whole floats to
-/// integers for count keys), or say why it cannot be: Err(problem).
-pub(super) fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), String> {
-    let wrong = |v: &Value| {
-        format!(
-            "`{path}` = {} is {}, expected {}",
-            show(v),
-            type_name(v),
-            valid.describe()
-        )
-    };
-    match valid {
-        Valid::Num(_) | Valid::NumOrDerived(_) => match v {
-            Value::Integer(i) => *v = Value::Float(*i as f64),
-            Value::Float(_) => {}
-            Value::String(s) if s == "derived" && matches!(valid, Valid::NumOrDerived(_)) => {}
-            _ => return Err(wrong(v)),
-        },
-        Valid::Int(..) => match v {
-            Value::Integer(_) => {}
-            // 25.0 is the whole number 25; 2^53 bounds the floats that are exact integers.
-            Value::Float(x) if x.fract() == 0.0 && x.abs() < 9.0e15 => {
-                *v = Value::Integer(*x as i64)
-            }
-            Value::Float(_) => {}
-            _ => return Err(wrong(v)),
-        },
-        Valid::NumArray(_) => match v {
-            Value::Array(items) if items.iter().all(|x| as_number(x).is_some()) => {
-                for x in items.iter_mut() {
-                    if let Value::Integer(i) = x {
-                        *x = Value::Float(*i as f64);
-                    }
-                }
-            }
-            _ => return Err(wrong(v)),
-        },
-        Valid::Choice(_) if !v.is_str() => return Err(wrong(v)),
-        Valid::Bool if !v.is_bool() => return Err(wrong(v)),
-        Valid::Choice(_) | Valid::Bool => {}
-    }
-    Ok(())
-}
-
-/// Check one (normalised) value against its spec.
-pub(super) fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> {
-    let in_range = |r: Range| as_number(v).is_some_and(|x| r.contains(x));
-    let ok = match valid {
-        Valid::Num(r) => in_range(r),
-        Valid::NumOrDerived(r) => v.as_str() == Some("derived") || in_range(r),
-        Valid::Int(lo, hi) => v.as_integer().is_some_and(|i| (lo..=hi).contains(&i)),
-        Valid::Choice(choices) => v.as_str().is_some_and(|s| choices.contains(&s)),
-        Valid::Bool => v.is_bool(),
-        Valid::NumArray(r) => v.as_array().is_some_and(|a| {
-            !a.is_empty()
-                && a.iter()
-                    .all(|x| as_number(x).is_some_and(|f| r.contains(f)))
-        }),
-    };
-    (!ok).then(|| {
-        format!(
-            "`{key}` = {} is invalid{}: expected {}",
-            show(v),
-            first_bad_element(key, v, valid),
-            valid.describe()
-        )
-    })
-}
-
-/// For an array key, which value is out of range (0-based, and the tooth it belongs to
-/// for the per-tooth arrays of `[teeth]`): a long array's shown text is clipped, so the
-/// message must say where the bad value is. Empty for other keys.
-fn first_bad_element(key: &str, v: &Value, valid: Valid) -> String {
-    let (Valid::NumArray(r), Some(items)) = (valid, v.as_array()) else {
-        return String::new();
-    };
-    if items.is_empty() {
-        return " (the array is empty)".into();
-    }
-    let bad = items
-        .iter()
-        .enumerate()
-        .find(|(_, x)| !as_number(x).is_some_and(|f| r.contains(f)));
-    match bad {
-        Some((i, x)) => {
-            // One value of a `[teeth]` array holds for every tooth.
-            let tooth = if key.starts_with("teeth.") && items.len() > 1 {
-                format!(", tooth {i}")
-            } else {
-                String::new()
-            };
-            format!(
-                " (value {i} of 0 to {}{tooth}, is {})",
-                items.len() - 1,
-                show(x)
-            )
-        }
-        None => String::new(),
-    }
-}
-
-/// The sections of the case file, in schema order.
-fn sections() -> Vec<&'static str> {
-    let mut s: Vec<&str> = KEYS
-        .iter()
-        .map(|k| k.key.split('.').next().unwrap_or(""))
-        .collect();
-    s.dedup();
-    s
 }
 
 /// Check section and key names, normalise value types and check ranges, in place.
@@ -318,6 +176,9 @@ fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String
 /// The section read apart by [`super::load_spectrum`].
 const LOAD_SPECTRUM: &str = "load_spectrum";
 
+/// The array-of-tables section of tooth faults, resolved apart once checked.
+const FAULT: &str = "fault";
+
 /// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
 /// the key of the section's only table, made when there is none. With several tables
 /// the override cannot say which one it means.
@@ -352,11 +213,13 @@ fn set_table_array_value(
 }
 
 /// Checks that involve more than one key of the case file itself.
-fn check_relations(case: &Case, problems: &mut Vec<String>) {
+/// `faults`: the case's `[[fault]]` tables as written, checked here before they are
+/// resolved.
+fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String>) {
     problems.extend(super::teeth::teeth_problems(
         &case.teeth,
         &case.modification,
-        &case.fault,
+        faults,
         case.gear.teeth_pinion,
         case.gear.teeth_gear,
     ));
@@ -470,20 +333,21 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     let Some(Value::Table(op)) = user.get_mut("operating") else {
         return;
     };
-    let Some(rpm) = op.remove("input_speed_rpm") else {
-        return;
-    };
-    if op.contains_key("input_speed_hz") {
-        problems.push(
-            "`operating.input_speed_rpm` and `operating.input_speed_hz` are both given: give the input speed once, in rpm or in Hz".into(),
-        );
-        return;
-    }
-    if let Some(x) = rpm
-        .as_float()
-        .or_else(|| rpm.as_integer().map(|i| i as f64))
-    {
-        op.insert("input_speed_hz".into(), Value::Float(x / 60.0));
+    let (hz, rpm) = (
+        SpeedUnit::Hz.input_speed_key(),
+        SpeedUnit::Rpm.input_speed_key(),
+    );
+    match SpeedUnit::given(op.contains_key(hz), op.contains_key(rpm), "operating.") {
+        Err(both) => {
+            op.remove(rpm);
+            problems.push(both);
+        }
+        Ok(Some(SpeedUnit::Rpm)) => {
+            if let Some(x) = op.remove(rpm).as_ref().and_then(as_number) {
+                op.insert(hz.into(), Value::Float(SpeedUnit::Rpm.to_hz(x)));
+            }
+        }
+        Ok(_) => {}
     }
 }
 
@@ -548,7 +412,7 @@ pub fn load_case_in(
 pub fn load_spectrum_section(
     toml_text: &str,
     dir: &std::path::Path,
-) -> Result<super::load_spectrum::LoadSpectrumSection, ConfigError> {
+) -> Result<LoadSpectrumSection, ConfigError> {
     let mut user: Table = toml::from_str(toml_text)
         .map_err(|e| ConfigError::one(format!("not valid TOML{}", toml_error(&e, toml_text))))?;
     let mut problems = Vec::new();
@@ -598,7 +462,7 @@ fn spectrum_section(
     user: &mut Table,
     dir: &std::path::Path,
     problems: &mut Vec<String>,
-) -> Option<super::load_spectrum::LoadSpectrumSection> {
+) -> Option<LoadSpectrumSection> {
     user.remove(LOAD_SPECTRUM)
         .and_then(|v| super::load_spectrum::parse_section(v, dir, problems))
 }
@@ -612,18 +476,28 @@ fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError>
     if !problems.is_empty() {
         return Err(ConfigError::of(problems));
     }
+    // The `[[fault]]` tables are resolved into the case's faults once they are checked.
+    let fault_tables = user.remove(FAULT).map(Value::try_into::<Vec<FaultTable>>);
     let mut case: Case = Value::Table(user)
         .try_into()
         .map_err(|e: toml::de::Error| {
             ConfigError::one(format!("case file{}", toml_error(&e, "")))
         })?;
+    let faults = fault_tables
+        .transpose()
+        .map_err(|e| ConfigError::one(format!("case file{}", toml_error(&e, ""))))?
+        .unwrap_or_default();
     case.load_spectrum = spectrum;
-    check_relations(&case, &mut problems);
-    if problems.is_empty() {
-        Ok(case)
-    } else {
-        Err(ConfigError::of(problems))
+    check_relations(&case, &faults, &mut problems);
+    if !problems.is_empty() {
+        return Err(ConfigError::of(problems));
     }
+    case.fault = faults
+        .into_iter()
+        .map(ToothFault::try_from)
+        .collect::<Result<_, _>>()
+        .map_err(ConfigError::one)?;
+    Ok(case)
 }
 
 /// Whether `key` is a key of the case file: its entry in the schema, or the problem as
@@ -644,20 +518,6 @@ pub fn known_key(key: &str) -> Result<&'static KeySpec, String> {
     Err(unknown_key(section, key))
 }
 
-/// "unknown key `section.key`; valid keys in [section]: ...".
-fn unknown_key(section: &str, path: &str) -> String {
-    let valid: Vec<&str> = KEYS
-        .iter()
-        .filter(|s| s.key.starts_with(&format!("{section}.")))
-        .map(|s| s.key)
-        .collect();
-    format!(
-        "unknown key `{}`; valid keys in [{section}]: {}",
-        clip(path, SHOWN_CHARS),
-        valid.join(", ")
-    )
-}
-
 /// Validate every key of an already built case against the schema (used on defaults and
 /// templates).
 pub fn check_all_ranges(case: &Case) -> Vec<String> {
@@ -676,202 +536,10 @@ pub fn check_all_ranges(case: &Case) -> Vec<String> {
             }
         }
     }
-    check_relations(case, &mut problems);
-    problems.extend(super::load_spectrum::spectrum_problems(case));
+    let faults: Vec<FaultTable> = case.fault.iter().map(|f| f.table().clone()).collect();
+    check_relations(case, &faults, &mut problems);
+    problems.extend(super::load_spectrum::spectrum_problems(
+        case.load_spectrum.as_ref(),
+    ));
     problems
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::config::case::{Derivable, FrictionModel};
-
-    fn err(text: &str, sets: &[&str]) -> String {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case(text, &sets).unwrap_err().to_string()
-    }
-
-    #[test]
-    fn defaults_and_new_pair_template_are_valid() {
-        assert!(check_all_ranges(&Case::default()).is_empty());
-        assert!(check_all_ranges(&Case::new_pair_template()).is_empty());
-    }
-
-    #[test]
-    fn overrides_apply_and_integers_widen() {
-        let c = load_case(
-            "",
-            &[
-                "operating.input_speed_hz=45".into(),
-                "friction.model=constant".into(),
-            ],
-        )
-        .unwrap();
-        assert_eq!(c.operating.input_speed_hz, 45.0);
-        assert_eq!(c.friction.model, FrictionModel::Constant);
-    }
-
-    #[test]
-    fn whole_numbers_written_with_a_decimal_point_are_accepted() {
-        let c = load_case("", &["gear.teeth_pinion=25.0".into()]).unwrap();
-        assert_eq!(c.gear.teeth_pinion, 25);
-        let e = err("", &["gear.teeth_pinion=25.5"]);
-        assert!(
-            e.contains("gear.teeth_pinion") && e.contains("whole number"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn derived_is_accepted_only_where_the_geometry_can_give_the_value() {
-        let c = load_case(
-            "[dynamics]\nmass_pinion_kg = \"derived\"\n",
-            &["gear.hub_bore_radius_gear_mm=derived".into()],
-        )
-        .unwrap();
-        assert_eq!(c.dynamics.mass_pinion_kg, Derivable::Derived);
-        assert_eq!(c.gear.hub_bore_radius_gear_mm, Derivable::Derived);
-        let e = err("", &["dynamics.inertia_motor_kg_m2=derived"]);
-        assert!(e.contains("dynamics.inertia_motor_kg_m2"), "{e}");
-        let e = err("", &["dynamics.mass_gear_kg=derive"]);
-        assert!(
-            e.contains("dynamics.mass_gear_kg") && e.contains("\"derived\""),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn a_bad_value_in_a_long_per_tooth_array_is_named_by_its_tooth() {
-        // 31 values: the shown array is clipped before value 15, so only the index says
-        // which tooth is wrong. NaN and inf are not numbers in any range.
-        let mut gear = vec!["0"; 31];
-        gear[15] = "5000";
-        let e = err(
-            "",
-            &[&format!("teeth.pitch_error_gear_um=[{}]", gear.join(","))],
-        );
-        assert!(
-            e.contains("`teeth.pitch_error_gear_um`")
-                && e.contains("(value 15 of 0 to 30, tooth 15, is 5000)")
-                && e.contains("[-1000, 1000]"),
-            "{e}"
-        );
-        let e = err("[teeth]\nprofile_slope_pinion_um = [nan]\n", &[]);
-        assert!(e.contains("(value 0 of 0 to 0, is NaN)"), "{e}");
-        let e = err("[surface]\nroughness_table_wear_um = [0.1, inf, 1]\n", &[]);
-        assert!(e.contains("(value 1 of 0 to 2, is inf)"), "{e}");
-    }
-
-    #[test]
-    fn every_problem_is_reported_once_with_key_and_value() {
-        let e = load_case(
-            "[gear]\nmodule_mm = -2\nface_width_mm = 0\n[wear]\ncoefficient_m2_per_n = -1e-16\n",
-            &[],
-        )
-        .unwrap_err();
-        assert_eq!(e.problems.len(), 3, "{e}");
-        let m = e.messages();
-        assert!(m
-            .iter()
-            .any(|p| p.contains("gear.module_mm") && p.contains("-2")));
-        assert!(m.iter().any(|p| p.contains("wear.coefficient_m2_per_n")));
-    }
-
-    #[test]
-    fn non_finite_and_subnormal_values_are_rejected_everywhere() {
-        for v in ["nan", "inf", "-inf", "5e-324", "1e-310"] {
-            for key in [
-                "gear.module_mm",
-                "wear.block_cycles",
-                "dynamics.bearing_damping_gear_n_s_per_m",
-            ] {
-                let e = err("", &[&format!("{key}={v}")]);
-                assert!(e.contains(key), "{key}={v}: {e}");
-            }
-            let e = err(
-                &format!("[surface]\nroughness_table_rms_um = [0.2, {v}, 0.1]\n"),
-                &[],
-            );
-            assert!(e.contains("surface.roughness_table_rms_um"), "{v}: {e}");
-        }
-    }
-
-    #[test]
-    fn unknown_key_names_the_valid_ones() {
-        let e = err("[operating]\nspeed_hz = 3\n", &[]);
-        assert!(e.contains("operating.speed_hz"));
-        assert!(e.contains("operating.input_speed_hz"));
-        let e = err("[gears]\n", &[]);
-        assert!(e.contains("unknown section [gears]"));
-    }
-
-    #[test]
-    fn wrong_type_and_bad_choice() {
-        let e = err("[operating]\ninput_speed_hz = \"fast\"\n", &[]);
-        assert!(e.contains("is a string"), "{e}");
-        let e = err("", &["friction.model=coulomb"]);
-        assert!(e.contains("\"xu2007\""), "{e}");
-    }
-
-    #[test]
-    fn xu_needs_viscosity_above_one_cp() {
-        let e = err("", &["lubricant.viscosity_cp=0.8"]);
-        assert!(e.contains("lubricant.viscosity_cp"), "{e}");
-        // Fine without the Xu model.
-        load_case(
-            "",
-            &[
-                "lubricant.viscosity_cp=0.8".into(),
-                "friction.model=none".into(),
-            ],
-        )
-        .unwrap();
-    }
-
-    #[test]
-    fn toml_forms_of_a_section_give_the_same_case_and_others_are_errors() {
-        let section = load_case("[gear]\nmodule_mm = 3\n", &[]).unwrap();
-        for text in ["gear = { module_mm = 3 }\n", "gear.module_mm = 3\n"] {
-            assert_eq!(load_case(text, &[]).unwrap(), section, "{text}");
-        }
-        for text in ["gear = 3\n", "[[gear]]\nmodule_mm = 3\n"] {
-            assert!(err(text, &[]).contains("[gear] must be a table"), "{text}");
-        }
-    }
-
-    #[test]
-    fn set_values_are_one_line_and_never_cut_silently() {
-        for bad in [
-            "gear.module_mm=3\n[gear]\nmodule_mm = 5",
-            "gear.module_mm=3\r\nx",
-            "friction.model=constant\tx",
-        ] {
-            let e = err("", &[bad]);
-            assert!(e.contains("line break or another control character"), "{e}");
-        }
-    }
-
-    #[test]
-    fn long_values_are_echoed_cut() {
-        let huge = "x".repeat(10_000_000);
-        let e = err("", &[&format!("friction.model={huge}")]);
-        assert!(e.len() < 2000, "{} bytes", e.len());
-        assert!(
-            e.contains("friction.model") && e.contains("characters)"),
-            "{e}"
-        );
-        let e = err(&format!("[gear]\nmodule_mm = \"{huge}\"\n"), &[]);
-        assert!(e.len() < 2000 && e.contains("gear.module_mm"));
-        let e = err(&format!("[gear]\nmodule_mm = {huge}\n"), &[]);
-        assert!(e.len() < 2000, "{} bytes", e.len());
-    }
-
-    #[test]
-    fn face_width_must_suit_the_module() {
-        let e = err("", &["gear.face_width_mm=0.5"]);
-        assert!(
-            e.contains("gear.face_width_mm") && e.contains("gear.module_mm"),
-            "{e}"
-        );
-    }
 }

@@ -1,155 +1,22 @@
-//! `[load_spectrum]`: the duty cycle of a case as a table of operating bins (issue 20).
-//!
-//! Each bin is an operating point (a load torque on the named shaft and an input speed)
-//! with its share of the load cycles (pinion revolutions). Written inline
+//! Reading `[load_spectrum]` (the duty cycle of a case, `config::operating`) from a case
+//! file: bins written inline
 //! (`bins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, ...]`) or in a CSV file
 //! (`file = "spectrum.csv"`, header `torque_nm,input_speed_hz,share`). Alternatives, each
 //! for every bin of a spectrum: `input_speed_rpm` for the speed (Hz = rpm / 60) and `hours`
 //! for the share (time at the bin; the cycles of bin i are 3600 h_i f_i, so its share of
-//! the cycles is h_i f_i / sum_j h_j f_j). The case keeps the converted values (Hz, shares
-//! of the cycles), so a resolved case states what was used.
-//!
-//! Without the section the case's single operating point (`[operating]`) applies. With it,
-//! the studies that accumulate wear (wear, run, calibrate, predict, sweeps of wear) use the
-//! spectrum and ignore `operating.load_torque_nm` and `operating.input_speed_hz`; the
-//! other operating keys (speed boundary, slip) hold for every bin.
+//! the cycles is h_i f_i / sum_j h_j f_j). The section is resolved here: the case keeps
+//! the converted values (Hz, shares of the cycles).
 //!
 //! Every problem names the bin (1-based; with its file line for a CSV), the key and the
 //! valid range, and nothing is computed from a case that has one.
 
-use super::case::{Case, TorqueShaft};
+use super::operating::{
+    LoadSpectrumSection, SpectrumBin, SpeedUnit, TorqueShaft, MAX_BINS, SHARE_SUM_TOLERANCE,
+};
+use super::parse::{as_number, check_range, normalise};
 use super::schema::{number, spec, Range, Valid};
-use serde::{Deserialize, Serialize};
 use std::path::Path;
 use toml::Value;
-
-/// One operating bin, as the model uses it: SI-style units of its names.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SpectrumBin {
-    /// Load torque on the spectrum's shaft, N m (before `torque_scale`).
-    pub torque_nm: f64,
-    /// Input (pinion) speed, Hz (before `speed_scale`).
-    pub input_speed_hz: f64,
-    /// Share of the load cycles (pinion revolutions), in [0, 1]; the shares sum to 1.
-    pub share: f64,
-}
-
-/// The `[load_spectrum]` section, resolved (file read, rpm and hours converted).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LoadSpectrumSection {
-    pub bins: Vec<SpectrumBin>,
-    /// Shaft the bins' torques are on; absent: `operating.load_torque_shaft`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub torque_shaft: Option<TorqueShaft>,
-    /// Factor on every bin's torque (a sweep axis: "all torques x 1.2").
-    #[serde(default = "one")]
-    pub torque_scale: f64,
-    /// Factor on every bin's speed.
-    #[serde(default = "one")]
-    pub speed_scale: f64,
-    /// Bin (1-based) at which vibration is observed for calibration; absent: the bin with
-    /// the largest share (the first of equals).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub monitoring_bin: Option<i64>,
-    /// Maximum pinion wear depth that ends the flanks' life in the `run` report's life
-    /// table (under the spectrum and at each bin alone), um.
-    #[serde(default = "default_life_limit")]
-    pub life_wear_limit_um: f64,
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-/// 10 um: a fifth of a 2 mm module's 0.05 m wear allowance, the limit of
-/// docs/PROGNOSTICS.md's worked example.
-fn default_life_limit() -> f64 {
-    10.0
-}
-
-/// Largest number of bins: each is a dynamic evaluation per wear update (the run budget
-/// checks the cost); 10 000 is far beyond any published load spectrum (ISO 6336-6 examples
-/// and wind-turbine LDDs use tens to a few hundred bins).
-pub const MAX_BINS: usize = 10_000;
-
-/// How far the shares may be from summing to 1: six significant digits, the precision a
-/// spectrum written by hand in decimals carries (0.333 + 0.333 + 0.334).
-pub const SHARE_SUM_TOLERANCE: f64 = 1e-6;
-
-impl LoadSpectrumSection {
-    /// A spectrum of the given bins with no scale, on the operating shaft.
-    pub fn of_bins(bins: Vec<SpectrumBin>) -> Self {
-        Self {
-            bins,
-            torque_shaft: None,
-            torque_scale: 1.0,
-            speed_scale: 1.0,
-            monitoring_bin: None,
-            life_wear_limit_um: default_life_limit(),
-        }
-    }
-
-    /// Torque of bin `i` as applied (scale included), N m.
-    pub fn torque_nm(&self, i: usize) -> f64 {
-        self.bins[i].torque_nm * self.torque_scale
-    }
-
-    /// Input speed of bin `i` as applied (scale included), Hz.
-    pub fn input_speed_hz(&self, i: usize) -> f64 {
-        self.bins[i].input_speed_hz * self.speed_scale
-    }
-
-    /// Shaft of the torques, given the case's operating section.
-    pub fn shaft(&self, operating: TorqueShaft) -> TorqueShaft {
-        self.torque_shaft.unwrap_or(operating)
-    }
-
-    /// Index (0-based) of the bin vibration is observed at.
-    pub fn monitoring_index(&self) -> usize {
-        match self.monitoring_bin {
-            Some(b) if b >= 1 && (b as usize) <= self.bins.len() => b as usize - 1,
-            _ => self.bins.iter().enumerate().fold(0, |best, (i, b)| {
-                if b.share > self.bins[best].share {
-                    i
-                } else {
-                    best
-                }
-            }),
-        }
-    }
-
-    /// Mean time per pinion cycle, s: sum_i share_i / f_i (cycles of bin i take 1 / f_i
-    /// each). Life in hours = cycles x this / 3600.
-    pub fn seconds_per_cycle(&self) -> f64 {
-        (0..self.bins.len())
-            .map(|i| self.bins[i].share / self.input_speed_hz(i))
-            .sum()
-    }
-}
-
-impl Case {
-    /// The case at bin `i` of its spectrum: the operating point set to the bin's torque
-    /// (on the spectrum's shaft) and speed, without the spectrum. Everything else is the
-    /// case's, so a bin equal to the operating point gives the case itself.
-    pub fn at_bin(&self, i: usize) -> Case {
-        let mut c = self.clone();
-        if let Some(s) = self.load_spectrum.as_ref() {
-            c.operating.load_torque_nm = s.torque_nm(i);
-            c.operating.input_speed_hz = s.input_speed_hz(i);
-            c.operating.load_torque_shaft = s.shaft(self.operating.load_torque_shaft);
-        }
-        c.load_spectrum = None;
-        c
-    }
-
-    /// The case of every bin, or None without a spectrum.
-    pub fn bin_cases(&self) -> Option<Vec<Case>> {
-        let s = self.load_spectrum.as_ref()?;
-        Some((0..s.bins.len()).map(|i| self.at_bin(i)).collect())
-    }
-}
 
 /// What a bin's weight was given as.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -164,8 +31,8 @@ struct RawBin {
     origin: String,
     torque_nm: f64,
     speed_hz: f64,
-    /// The speed key as written and its value (for messages).
-    speed_key: &'static str,
+    /// The speed's unit as written and its value in it (for messages).
+    speed_unit: SpeedUnit,
     speed_value: f64,
     weight: Weight,
 }
@@ -267,8 +134,8 @@ fn problems_of(s: &LoadSpectrumSection, label: &dyn Fn(usize) -> String) -> Vec<
 }
 
 /// Problems of a case's spectrum (already resolved), bins named by number.
-pub fn spectrum_problems(case: &Case) -> Vec<String> {
-    match &case.load_spectrum {
+pub fn spectrum_problems(spectrum: Option<&LoadSpectrumSection>) -> Vec<String> {
+    match spectrum {
         None => Vec::new(),
         Some(s) => problems_of(s, &|i| format!("load_spectrum bin {}", i + 1)),
     }
@@ -283,10 +150,6 @@ const SCALAR_KEYS: [&str; 5] = [
     "monitoring_bin",
     "life_wear_limit_um",
 ];
-
-fn as_number(v: &Value) -> Option<f64> {
-    v.as_float().or_else(|| v.as_integer().map(|i| i as f64))
-}
 
 /// A bin from its (key, value) cells; `origin` names it in messages.
 fn raw_bin(
@@ -315,20 +178,6 @@ fn raw_bin(
             ok = false;
         }
     }
-    let one_of =
-        |a: &'static str, b: &'static str, problems: &mut Vec<String>| match (get(a), get(b)) {
-            (Some(Some(x)), None) => Some((a, x)),
-            (None, Some(Some(x))) => Some((b, x)),
-            (Some(_), Some(_)) => {
-                problems.push(format!("{origin}: give `{a}` or `{b}`, not both"));
-                None
-            }
-            (None, None) => {
-                problems.push(format!("{origin}: missing `{a}` (or `{b}`)"));
-                None
-            }
-            _ => None,
-        };
     let torque = match get("torque_nm") {
         Some(Some(t)) => Some(t),
         None => {
@@ -337,17 +186,30 @@ fn raw_bin(
         }
         _ => None,
     };
-    let speed = one_of("input_speed_hz", "input_speed_rpm", problems);
-    let weight = one_of("share", "hours", problems);
-    let (torque, (speed_key, speed_value), (wkey, w)) = (torque?, speed?, weight?);
+    let speed = bin_speed(&origin, &get, problems);
+    let weight = match (get("share"), get("hours")) {
+        (Some(Some(x)), None) => Some(Weight::Share(x)),
+        (None, Some(Some(x))) => Some(Weight::Hours(x)),
+        (Some(_), Some(_)) => {
+            problems.push(format!("{origin}: give `share` or `hours`, not both"));
+            None
+        }
+        (None, None) => {
+            problems.push(format!("{origin}: missing `share` (or `hours`)"));
+            None
+        }
+        _ => None,
+    };
+    let (torque, (speed_unit, speed_value), weight) = (torque?, speed?, weight?);
     if !ok {
         return None;
     }
-    let origin = if speed_key == "input_speed_rpm" {
+    let speed_hz = speed_unit.to_hz(speed_value);
+    let origin = if speed_unit == SpeedUnit::Rpm {
         format!(
             "{origin} ({} rpm = {} Hz)",
             number(speed_value),
-            number(speed_value / 60.0)
+            number(speed_hz)
         )
     } else {
         origin
@@ -355,20 +217,32 @@ fn raw_bin(
     Some(RawBin {
         origin,
         torque_nm: torque,
-        // 1 Hz = 60 rpm.
-        speed_hz: if speed_key == "input_speed_rpm" {
-            speed_value / 60.0
-        } else {
-            speed_value
-        },
-        speed_key,
+        speed_hz,
+        speed_unit,
         speed_value,
-        weight: if wkey == "hours" {
-            Weight::Hours(w)
-        } else {
-            Weight::Share(w)
-        },
+        weight,
     })
+}
+
+/// A bin's speed: its unit and value as written (`get(key)`: absent, not a number, or
+/// the number); the problem pushed when it has none or both.
+fn bin_speed(
+    origin: &str,
+    get: &dyn Fn(&str) -> Option<Option<f64>>,
+    problems: &mut Vec<String>,
+) -> Option<(SpeedUnit, f64)> {
+    let given = |u: SpeedUnit| get(u.input_speed_key()).is_some();
+    match SpeedUnit::given(given(SpeedUnit::Hz), given(SpeedUnit::Rpm), "") {
+        Err(both) => {
+            problems.push(format!("{origin}: {both}"));
+            None
+        }
+        Ok(None) => {
+            problems.push(format!("{origin}: missing {}", SpeedUnit::either_key("")));
+            None
+        }
+        Ok(Some(u)) => get(u.input_speed_key()).flatten().map(|x| (u, x)),
+    }
 }
 
 /// Bins written inline: an array of tables.
@@ -469,15 +343,14 @@ fn convert(raw: &[RawBin], problems: &mut Vec<String>) -> Option<Vec<SpectrumBin
         );
         return None;
     }
-    let speed_keys: Vec<&str> = raw.iter().map(|b| b.speed_key).collect();
-    if speed_keys.windows(2).any(|w| w[0] != w[1]) {
+    if raw.windows(2).any(|w| w[0].speed_unit != w[1].speed_unit) {
         problems.push(
             "`load_spectrum`: give `input_speed_hz` at every bin or `input_speed_rpm` at every bin, not a mix".into(),
         );
         return None;
     }
     for b in raw {
-        if b.speed_key == "input_speed_rpm" && !(b.speed_value.is_finite() && b.speed_value > 0.0) {
+        if b.speed_unit == SpeedUnit::Rpm && !(b.speed_value.is_finite() && b.speed_value > 0.0) {
             problems.push(format!(
                 "{}: `input_speed_rpm` = {} is invalid: expected a positive finite number (rpm = 60 x Hz, Hz in {})",
                 b.origin,
@@ -567,11 +440,11 @@ pub(super) fn parse_section(
             ));
             continue;
         };
-        if let Err(e) = super::load::normalise(&path, &mut value, s.valid) {
+        if let Err(e) = normalise(&path, &mut value, s.valid) {
             problems.push(e);
             continue;
         }
-        if let Some(e) = super::load::check_range(&path, &value, s.valid) {
+        if let Some(e) = check_range(&path, &value, s.valid) {
             problems.push(e);
             continue;
         }
@@ -620,181 +493,5 @@ pub(super) fn parse_section(
     } else {
         problems.extend(found);
         None
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::config::load::{check_all_ranges, load_case, load_case_in};
-
-    fn err(text: &str) -> String {
-        load_case(text, &[]).unwrap_err().to_string()
-    }
-
-    const TWO: &str = "[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, {torque_nm = 80, input_speed_hz = 45, share = 0.3}]\n";
-
-    #[test]
-    fn inline_bins_load_and_a_case_without_the_section_is_unchanged() {
-        let c = load_case(TWO, &[]).unwrap();
-        let s = c.load_spectrum.as_ref().unwrap();
-        assert_eq!(s.bins.len(), 2);
-        assert_eq!(
-            s.bins[1],
-            SpectrumBin {
-                torque_nm: 80.0,
-                input_speed_hz: 45.0,
-                share: 0.3
-            }
-        );
-        // The largest share is observed by default.
-        assert_eq!(s.monitoring_index(), 0);
-        // No section: the default case, and its serialised form has no trace of it.
-        assert_eq!(load_case("", &[]).unwrap(), Case::default());
-        assert!(!toml::to_string(&Case::default())
-            .unwrap()
-            .contains("load_spectrum"));
-        // An empty section (as the commented template prints it) is no spectrum.
-        assert_eq!(
-            load_case("[load_spectrum]\n", &[]).unwrap(),
-            Case::default()
-        );
-        // A resolved case reloads to itself.
-        let text = toml::to_string(&c).unwrap();
-        assert_eq!(load_case(&text, &[]).unwrap(), c);
-        assert!(check_all_ranges(&c).is_empty());
-    }
-
-    #[test]
-    fn bin_cases_carry_the_operating_point() {
-        let c = load_case(
-            &format!("{TWO}torque_shaft = \"gear\"\ntorque_scale = 1.5\n"),
-            &["load_spectrum.speed_scale=2".into()],
-        )
-        .unwrap();
-        let b = c.at_bin(1);
-        assert_eq!(b.operating.load_torque_nm, 120.0);
-        assert_eq!(b.operating.input_speed_hz, 90.0);
-        assert_eq!(b.operating.load_torque_shaft, TorqueShaft::Gear);
-        assert!(b.load_spectrum.is_none());
-        // Everything else is the case's.
-        assert_eq!(b.wear, c.wear);
-        // A bin at the operating point is the case without its spectrum.
-        let one = load_case(
-            "[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, share = 1}]\n",
-            &[],
-        )
-        .unwrap();
-        assert_eq!(one.at_bin(0), Case::default());
-    }
-
-    #[test]
-    fn rpm_and_hours_convert_as_stated() {
-        let c = load_case(
-            "[load_spectrum]\nbins = [{torque_nm = 60, input_speed_rpm = 1800, hours = 2}, {torque_nm = 80, input_speed_rpm = 900, hours = 1}]\n",
-            &[],
-        )
-        .unwrap();
-        let s = c.load_spectrum.unwrap();
-        // 1800 rpm = 30 Hz; cycles 2 h x 30 Hz : 1 h x 15 Hz = 60 : 15 = 0.8 : 0.2.
-        assert_eq!(s.bins[0].input_speed_hz, 30.0);
-        assert_eq!(s.bins[1].input_speed_hz, 15.0);
-        assert!((s.bins[0].share - 0.8).abs() < 1e-15 && (s.bins[1].share - 0.2).abs() < 1e-15);
-        // Mean time per cycle: 0.8 / 30 + 0.2 / 15 s.
-        assert!((s.seconds_per_cycle() - (0.8 / 30.0 + 0.2 / 15.0)).abs() < 1e-15);
-    }
-
-    #[test]
-    fn a_csv_file_is_read_from_the_case_folder() {
-        let dir = tempfile::tempdir().unwrap();
-        std::fs::write(
-            dir.path().join("s.csv"),
-            "torque_nm,input_speed_hz,share\n60,30,0.25\n70,35,0.75\n",
-        )
-        .unwrap();
-        let c = load_case_in("[load_spectrum]\nfile = \"s.csv\"\n", &[], dir.path()).unwrap();
-        assert_eq!(c.load_spectrum.as_ref().unwrap().bins[1].share, 0.75);
-        std::fs::write(
-            dir.path().join("bad.csv"),
-            "torque_nm,input_speed_hz,share\n60,30,0.25\n-70,35,0.75\n",
-        )
-        .unwrap();
-        let e = load_case_in("[load_spectrum]\nfile = \"bad.csv\"\n", &[], dir.path())
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.contains("bin 2") && e.contains("line 3") && e.contains("torque_nm"),
-            "{e}"
-        );
-        let e = load_case_in("[load_spectrum]\nfile = \"none.csv\"\n", &[], dir.path())
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.contains("load_spectrum.file") && e.contains("cannot read"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn bad_spectra_name_the_bin_the_key_and_the_range() {
-        // Shares not summing to 1.
-        let e = err("[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, share = 0.7}, {torque_nm = 80, input_speed_hz = 45, share = 0.2}]\n");
-        assert!(e.contains("sum to 0.9") && e.contains("hours"), "{e}");
-        // Hours totalling zero.
-        let e = err("[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, hours = 0}]\n");
-        assert!(e.contains("hours total 0"), "{e}");
-        // Negative, non-finite, outside the range (with the scale that put it there).
-        for (bin, want) in [
-            (
-                "{torque_nm = -60, input_speed_hz = 30, share = 1}",
-                "`torque_nm` = -60",
-            ),
-            (
-                "{torque_nm = 60, input_speed_hz = nan, share = 1}",
-                "`input_speed_hz` = NaN",
-            ),
-            (
-                "{torque_nm = inf, input_speed_hz = 30, share = 1}",
-                "`torque_nm` = inf",
-            ),
-            (
-                "{torque_nm = 60, input_speed_hz = 2000, share = 1}",
-                "outside [1e-6, 1000]",
-            ),
-            (
-                "{torque_nm = 60, input_speed_hz = 30, share = 1.5}",
-                "`share` = 1.5",
-            ),
-            ("{torque_nm = 60, input_speed_hz = 30}", "missing `share`"),
-            (
-                "{torque_nm = 60, input_speed_hz = 30, input_speed_rpm = 1800, share = 1}",
-                "not both",
-            ),
-            (
-                "{torque_nm = 60, speed_hz = 30, share = 1}",
-                "unknown key `speed_hz`",
-            ),
-        ] {
-            let e = err(&format!("[load_spectrum]\nbins = [{bin}]\n"));
-            assert!(
-                e.contains("load_spectrum bin 1") && e.contains(want),
-                "{bin}: {e}"
-            );
-        }
-        // 45 Hz x 30 = 1350 Hz is out of range; 30 x 30 = 900 Hz is not.
-        let e = err(&format!("{TWO}speed_scale = 30\n"));
-        assert!(
-            e.contains("bin 2")
-                && !e.contains("bin 1")
-                && e.contains("speed_scale")
-                && e.contains("operating.input_speed_hz"),
-            "{e}"
-        );
-        let e = err(&format!("{TWO}monitoring_bin = 3\n"));
-        assert!(e.contains("monitoring_bin") && e.contains("[1, 2]"), "{e}");
-        let e = err("[load_spectrum]\ntorque_scale = 2\n");
-        assert!(e.contains("has no bins"), "{e}");
-        let e = err(&format!("{TWO}file = \"x.csv\"\n"));
-        assert!(e.contains("not both"), "{e}");
     }
 }

@@ -5,14 +5,26 @@ pub mod derivable;
 mod docs;
 pub mod load;
 pub mod load_spectrum;
+pub mod lumped;
+pub mod operating;
+mod parse;
 pub mod problem;
 pub mod schema;
 pub mod signals;
 pub mod teeth;
 pub mod train;
 
+#[cfg(test)]
+mod tests_fields;
+#[cfg(test)]
+mod tests_load;
+#[cfg(test)]
+mod tests_load_spectrum;
+#[cfg(test)]
+mod tests_teeth;
+
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};
 pub use load::{load_case, load_case_in, load_spectrum_section, ConfigError};
-pub use load_spectrum::{LoadSpectrumSection, SpectrumBin};
+pub use operating::{LoadSpectrumSection, SpectrumBin};
 pub use problem::Problem;

@@ -12,9 +12,13 @@
 /// An interval of numbers; `open_lo` / `open_hi` exclude an end.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Range {
+    /// Lower end.
     pub lo: f64,
+    /// Upper end.
     pub hi: f64,
+    /// Whether the lower end is excluded.
     pub open_lo: bool,
+    /// Whether the upper end is excluded.
     pub open_hi: bool,
 }
 
@@ -136,6 +140,7 @@ pub struct KeySpec {
     pub unit: &'static str,
     /// What it is, and the source of its default.
     pub doc: &'static str,
+    /// The values it accepts.
     pub valid: Valid,
     /// Why the valid range is what it is.
     pub reason: &'static str,

@@ -61,6 +61,7 @@ pub enum Shaft {
 }
 
 impl Shaft {
+    /// Its name as the case file spells it.
     pub fn name(&self) -> &'static str {
         match self {
             Shaft::Pinion => "pinion",
@@ -87,33 +88,44 @@ pub enum LengthUnit {
     Revolutions,
 }
 
+/// `[signals]`: what a sensor records.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SignalsSection {
+    /// Sampling rate f_s of a record, Hz; the alias-free band is f_s / 2.56.
     pub sampling_rate_hz: f64,
-    /// Record length, in `record_length_unit`.
+    /// Record length, s or rev (in `record_length_unit`).
     pub record_length: f64,
+    /// Unit of `record_length`: seconds, or revolutions of the tachometer's shaft.
     pub record_length_unit: LengthUnit,
     /// Stopband attenuation of the anti-alias filter at and above f_s / 2, dB.
     pub anti_alias_attenuation_db: f64,
+    /// Unit of the accelerometer channels.
     pub channel_unit: ChannelUnit,
+    /// Accelerometer sensitivity, mV/g (for channels in mV).
     pub sensitivity_mv_per_g: f64,
     /// Measurement noise as a signal-to-noise ratio (dB); absent: no SNR noise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub snr_db: Option<f64>,
-    /// Measurement noise as an amplitude spectral density; absent: none.
+    /// Measurement noise as a one-sided amplitude spectral density, ug/sqrt(Hz), white to
+    /// f_s / 2; absent: none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub noise_density_ug_per_sqrt_hz: Option<f64>,
+    /// Seed of the measurement noise.
     pub noise_seed: i64,
+    /// Shaft the tachometer reads.
     pub tachometer_shaft: Shaft,
+    /// Tachometer pulses per revolution of its shaft.
     pub tachometer_pulses_per_revolution: i64,
     /// Mesh harmonics analysed (FM0, spectrum labels); the highest must be recorded.
     pub mesh_harmonics: i64,
     /// RMS of the seeded random load-torque fluctuation, N m (0: none).
     pub torque_fluctuation_rms_nm: f64,
+    /// Bandwidth of the torque fluctuation, Hz (flat from 0 to it).
     pub torque_fluctuation_bandwidth_hz: f64,
+    /// Seed of the torque fluctuation.
     pub torque_fluctuation_seed: i64,
-    /// Input speed at the end of the record for a run-up or coast-down (from
+    /// Input speed at the end of the record for a run-up or coast-down, Hz (from
     /// `operating.input_speed_hz` at its start); absent: steady speed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ramp_end_speed_hz: Option<f64>,

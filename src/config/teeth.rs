@@ -1,5 +1,7 @@
 //! The case's per-tooth inputs: manufacturing errors (`[teeth]`), profile modifications
-//! (`[modification]`) and tooth faults (`[[fault]]` tables), as the user writes them.
+//! (`[modification]`) as the user writes them, and tooth faults (`[[fault]]` tables),
+//! resolved when the case is loaded into [`ToothFault`]s (the kind as a [`Fault`] enum,
+//! its sizes in SI units with their defaults).
 //!
 //! Every key is optional and absent by default: a case without them is the paper's
 //! identical, perfect teeth and serialises exactly as before (so summaries and checksums
@@ -7,18 +9,21 @@
 //! the numbers of teeth, tooth indices, which keys a fault kind takes) live here
 //! ([`teeth_problems`]); checks that need the geometry (a crack deeper than the tooth, a
 //! spall longer than the profile, a relief longer than the addendum) are made when the
-//! model is built (`study::teeth_domain`).
+//! model builds its tooth inputs (`study::teeth::ToothInputs::from_case`).
 
 use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
 
 /// `[teeth]`: manufacturing errors of each gear (docs/MODEL.md, section 9).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct TeethSection {
-    /// Position (pitch) error of each pinion tooth, um on the reference circle, positive
+    /// Position (pitch) error of each pinion tooth, µm on the reference circle, positive
     /// towards the mating flank; z1 values.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pitch_error_pinion_um: Option<Vec<f64>>,
+    /// Position (pitch) error of each gear tooth, µm (positive towards the pinion); z2
+    /// values.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pitch_error_gear_um: Option<Vec<f64>>,
     /// ISO 1328-1 flank tolerance class: errors not given explicitly are drawn for it.
@@ -27,30 +32,37 @@ pub struct TeethSection {
     /// Seed of the random draw for `accuracy_grade`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error_seed: Option<i64>,
-    /// Radial run-out F_r of each gear (twice its eccentricity), um.
+    /// Radial run-out F_r of the pinion (twice its eccentricity), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_pinion_um: Option<f64>,
+    /// Radial run-out F_r of the gear (twice its eccentricity), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_gear_um: Option<f64>,
-    /// Angle the gear turns from the entry of its tooth 0 until its eccentricity points
-    /// along the line of action towards the mate, deg.
+    /// Angle the pinion turns from the entry of its tooth 0 until its eccentricity points
+    /// along the line of action towards the gear, deg.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_pinion_phase_deg: Option<f64>,
+    /// Angle the gear turns from the entry of its tooth 0 until its eccentricity points along
+    /// the line of action towards the pinion, deg.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runout_gear_phase_deg: Option<f64>,
-    /// Profile slope deviation f_Halpha, um (one value for every tooth, or z values).
+    /// Profile slope deviation f_Halpha of the pinion teeth, µm (one value for every tooth,
+    /// or z1 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_slope_pinion_um: Option<Vec<f64>>,
+    /// Profile slope deviation f_Halpha of the gear teeth, µm (one value or z2 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_slope_gear_um: Option<Vec<f64>>,
-    /// Profile form deviation f_falpha, um (one value or z values).
+    /// Profile form deviation f_falpha of the pinion teeth, µm (one value or z1 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_form_pinion_um: Option<Vec<f64>>,
+    /// Profile form deviation f_falpha of the gear teeth, µm (one value or z2 values).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_form_gear_um: Option<Vec<f64>>,
 }
 
 impl TeethSection {
+    /// Whether no key is given (the paper's perfect teeth).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
@@ -60,8 +72,10 @@ impl TeethSection {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum ReliefShape {
+    /// Removed material growing linearly along the relief's length.
     #[default]
     Linear,
+    /// Growing with the square of the distance into the relief.
     Parabolic,
 }
 
@@ -69,30 +83,40 @@ pub enum ReliefShape {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct ModificationSection {
-    /// Tip relief at the tip (amount), um, and its length along the line of action, mm.
+    /// Tip relief at the tip (material removed), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tip_relief_um: Option<f64>,
+    /// Length of the tip relief along the line of action (roll length) from the tip's
+    /// contact point, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tip_relief_length_mm: Option<f64>,
+    /// Root relief at the start of the active profile (material removed), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub root_relief_um: Option<f64>,
+    /// Length of the root relief along the line of action from the start of the active
+    /// profile, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub root_relief_length_mm: Option<f64>,
+    /// Shape of the reliefs along their length (absent: linear).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shape: Option<ReliefShape>,
-    /// A measured or designed deviation along each gear's roll angle (material removed
-    /// positive, um), on every tooth.
+    /// Roll angles (rho / r_b) of a measured or designed deviation of every pinion tooth,
+    /// deg, ascending.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_roll_pinion_deg: Option<Vec<f64>>,
+    /// The pinion's deviation at those roll angles (material removed positive), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_deviation_pinion_um: Option<Vec<f64>>,
+    /// Roll angles of a deviation of every gear tooth, deg, ascending.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_roll_gear_deg: Option<Vec<f64>>,
+    /// The gear's deviation at those roll angles (material removed positive), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_deviation_gear_um: Option<Vec<f64>>,
 }
 
 impl ModificationSection {
+    /// Whether no key is given (true involutes).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
@@ -102,11 +126,14 @@ impl ModificationSection {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Member {
+    /// The pinion.
     Pinion,
+    /// The gear.
     Gear,
 }
 
 impl Member {
+    /// Its name in messages and keys.
     pub fn name(self) -> &'static str {
         match self {
             Member::Pinion => "pinion",
@@ -119,12 +146,16 @@ impl Member {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FaultKind {
+    /// A root crack.
     Crack,
+    /// A spall (pit) on the flank.
     Spall,
+    /// A broken tip.
     BrokenTip,
 }
 
 impl FaultKind {
+    /// Its name as the case file spells it.
     pub fn name(self) -> &'static str {
         match self {
             FaultKind::Crack => "crack",
@@ -156,46 +187,223 @@ impl FaultKind {
 /// Default crack angle to the tooth centreline, deg (Chen & Shao 2011 use 45 deg).
 pub const DEFAULT_CRACK_ANGLE_DEG: f64 = 45.0;
 
-/// One `[[fault]]` table.
+/// Default share of the face width a crack has run across or a spall covers: 1, the whole
+/// face.
+pub const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
+
+/// One `[[fault]]` table as the case file writes it: sizes in mm, um and deg, the keys a
+/// kind does not take or leaves to their default absent. Read, checked
+/// ([`teeth_problems`]) and resolved into a [`ToothFault`] when the case is loaded; a case
+/// serialises its faults back to these tables, unchanged.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct FaultSpec {
+pub struct FaultTable {
+    /// Kind of fault.
     pub kind: FaultKind,
+    /// The gear whose tooth has the fault.
     pub gear: Member,
     /// 0-based tooth index (tooth n meets the mate in mesh cycle n, n + z, ...).
     pub tooth: i64,
+    /// Crack: depth from the root along its path, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_depth_mm: Option<f64>,
+    /// Crack: angle of its path to the tooth centreline, deg (absent:
+    /// [`DEFAULT_CRACK_ANGLE_DEG`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_angle_deg: Option<f64>,
+    /// Crack: share of the face width it has run across (absent: the whole face).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_width_fraction: Option<f64>,
+    /// Spall: roll distance of its centre from the pitch point, positive towards the tip,
+    /// mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_position_mm: Option<f64>,
+    /// Spall: its extent as a roll length, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_length_mm: Option<f64>,
+    /// Spall: depth of the pit, um.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_depth_um: Option<f64>,
+    /// Spall: share of the face width it covers (absent: the whole face).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_width_fraction: Option<f64>,
+    /// Broken tip: radial height removed from the tip, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub removed_height_mm: Option<f64>,
 }
 
-impl FaultSpec {
-    /// The kind-specific keys given, by name.
-    fn given(&self) -> [(&'static str, bool); 8] {
+impl FaultTable {
+    /// The kind-specific keys and their values as written, by name.
+    fn fields(&self) -> [(&'static str, Option<f64>); 8] {
         [
-            ("crack_depth_mm", self.crack_depth_mm.is_some()),
-            ("crack_angle_deg", self.crack_angle_deg.is_some()),
-            ("crack_width_fraction", self.crack_width_fraction.is_some()),
-            ("spall_position_mm", self.spall_position_mm.is_some()),
-            ("spall_length_mm", self.spall_length_mm.is_some()),
-            ("spall_depth_um", self.spall_depth_um.is_some()),
-            ("spall_width_fraction", self.spall_width_fraction.is_some()),
-            ("removed_height_mm", self.removed_height_mm.is_some()),
+            ("crack_depth_mm", self.crack_depth_mm),
+            ("crack_angle_deg", self.crack_angle_deg),
+            ("crack_width_fraction", self.crack_width_fraction),
+            ("spall_position_mm", self.spall_position_mm),
+            ("spall_length_mm", self.spall_length_mm),
+            ("spall_depth_um", self.spall_depth_um),
+            ("spall_width_fraction", self.spall_width_fraction),
+            ("removed_height_mm", self.removed_height_mm),
         ]
     }
+
+    /// The kind-specific keys given, by name.
+    fn given(&self) -> [(&'static str, bool); 8] {
+        self.fields().map(|(k, v)| (k, v.is_some()))
+    }
+
+    /// The value of kind-specific `key` in the case file's unit: as written, or its
+    /// default where the file leaves it out (the one place the defaults are applied);
+    /// `None` for a required key not given.
+    pub fn value(&self, key: &str) -> Option<f64> {
+        let written = self
+            .fields()
+            .iter()
+            .find(|(k, _)| *k == key)
+            .and_then(|(_, v)| *v);
+        written.or(match key {
+            "crack_angle_deg" => Some(DEFAULT_CRACK_ANGLE_DEG),
+            "crack_width_fraction" | "spall_width_fraction" => Some(DEFAULT_WIDTH_FRACTION),
+            _ => None,
+        })
+    }
+}
+
+/// A tooth fault resolved to SI units with its defaults (docs/MODEL.md, section 9): what
+/// the model's stiffness, gaps and contact limits are built from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Fault {
+    /// A root crack (Chen & Shao 2011): a straight path from the root at `angle_rad` to the
+    /// tooth centreline, `depth_m` long, across `width_fraction` of the face from one side.
+    Crack {
+        depth_m: f64,
+        angle_rad: f64,
+        width_fraction: f64,
+    },
+    /// A spall (Saxena et al. 2016): a pit `depth_m` deep over the roll lengths
+    /// `position_m` +- `length_m` / 2 from the pitch point (positive towards the tip),
+    /// across `width_fraction` of the face.
+    Spall {
+        position_m: f64,
+        length_m: f64,
+        depth_m: f64,
+        width_fraction: f64,
+    },
+    /// A broken tip: `removed_height_m` of the tooth's radial height gone from the tip.
+    BrokenTip { removed_height_m: f64 },
+}
+
+/// One tooth fault of a case: the tooth it is on and the fault, resolved when the case is
+/// loaded. Serialised as the `[[fault]]` table it was read from ([`ToothFault::table`]),
+/// so a case reads back to itself and keeps its checksum.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "FaultTable", into = "FaultTable")]
+pub struct ToothFault {
+    /// The gear whose tooth has the fault.
+    pub gear: Member,
+    /// 0-based tooth index (tooth n meets the mate in mesh cycle n, n + z, ...).
+    pub tooth: usize,
+    /// The fault, in SI units.
+    pub fault: Fault,
+    table: FaultTable,
+}
+
+impl ToothFault {
+    /// The kind of the fault.
+    pub fn kind(&self) -> FaultKind {
+        self.table.kind
+    }
+
+    /// The table as the case file gave it (its units, absent keys absent): for tables
+    /// that quote the case file's values.
+    pub fn table(&self) -> &FaultTable {
+        &self.table
+    }
+
+    /// The value of one of its kind's keys as the case file gave it, in the file's unit
+    /// (its default where the file leaves it out): for messages that quote it. NaN for a
+    /// key of another kind.
+    pub fn written(&self, key: &str) -> f64 {
+        self.table.value(key).unwrap_or(f64::NAN)
+    }
+}
+
+impl TryFrom<FaultTable> for ToothFault {
+    type Error = String;
+
+    /// The fault of `table`, or the problems that keep it from being one (its keys against
+    /// its kind, a negative tooth; the tooth against the gear's teeth is checked with the
+    /// case, [`teeth_problems`]).
+    fn try_from(table: FaultTable) -> Result<Self, String> {
+        let mut p = key_problems(&table, 0);
+        let tooth = usize::try_from(table.tooth).map_err(|_| {
+            format!(
+                "`fault.tooth` = {} is invalid: teeth are numbered from 0",
+                table.tooth
+            )
+        });
+        if let Err(e) = &tooth {
+            p.push(e.clone());
+        }
+        if !p.is_empty() {
+            return Err(p.join("; "));
+        }
+        // Every key the kind requires is given (checked above).
+        let v = |key: &str| table.value(key).unwrap_or(0.0);
+        let fault = match table.kind {
+            FaultKind::Crack => Fault::Crack {
+                depth_m: v("crack_depth_mm") * 1e-3,
+                angle_rad: v("crack_angle_deg") * PI / 180.0,
+                width_fraction: v("crack_width_fraction"),
+            },
+            FaultKind::Spall => Fault::Spall {
+                position_m: v("spall_position_mm") * 1e-3,
+                length_m: v("spall_length_mm") * 1e-3,
+                depth_m: v("spall_depth_um") * 1e-6,
+                width_fraction: v("spall_width_fraction"),
+            },
+            FaultKind::BrokenTip => Fault::BrokenTip {
+                removed_height_m: v("removed_height_mm") * 1e-3,
+            },
+        };
+        Ok(Self {
+            gear: table.gear,
+            tooth: tooth.unwrap_or(0),
+            fault,
+            table,
+        })
+    }
+}
+
+impl From<ToothFault> for FaultTable {
+    fn from(f: ToothFault) -> Self {
+        f.table
+    }
+}
+
+/// The problems of fault `i`'s keys against its kind: a key the kind does not take, a
+/// required one missing.
+fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
+    let mut p = Vec::new();
+    let own = f.kind.keys();
+    for (key, given) in f.given() {
+        let takes = own.iter().find(|(k, _)| *k == key);
+        match takes {
+            None if given => p.push(format!(
+                "`fault.{key}` (fault {i}) does not apply to kind \"{}\"; its keys: {}",
+                f.kind.name(),
+                own.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(", ")
+            )),
+            Some((_, true)) if !given => p.push(format!(
+                "`fault.{key}` is required for a fault of kind \"{}\" (fault {i}, {} tooth {})",
+                f.kind.name(),
+                f.gear.name(),
+                f.tooth
+            )),
+            _ => {}
+        }
+    }
+    p
 }
 
 /// Problems of the per-tooth inputs that the case alone shows: array lengths against the
@@ -204,10 +412,19 @@ impl FaultSpec {
 pub fn teeth_problems(
     t: &TeethSection,
     m: &ModificationSection,
-    faults: &[FaultSpec],
+    faults: &[FaultTable],
     z1: i64,
     z2: i64,
 ) -> Vec<String> {
+    let mut p = array_length_problems(t, z1, z2);
+    p.extend(profile_deviation_problems(m));
+    p.extend(fault_problems(faults, z1, z2));
+    p
+}
+
+/// Per-tooth arrays of `[teeth]` whose lengths do not match the numbers of teeth (`z1`,
+/// `z2`): a pitch error per tooth; a profile deviation for every tooth (1) or per tooth.
+fn array_length_problems(t: &TeethSection, z1: i64, z2: i64) -> Vec<String> {
     let mut p = Vec::new();
     let exact = |key: &str, v: &Option<Vec<f64>>, z: i64, who: &str, p: &mut Vec<String>| {
         if let Some(v) = v {
@@ -263,6 +480,13 @@ pub fn teeth_problems(
             }
         }
     }
+    p
+}
+
+/// A user profile deviation of `[modification]` whose roll angles and deviations do not
+/// go together: given alone, of different lengths, or the angles not strictly ascending.
+fn profile_deviation_problems(m: &ModificationSection) -> Vec<String> {
+    let mut p = Vec::new();
     for (who, roll, dev) in [
         (
             "pinion",
@@ -296,6 +520,13 @@ pub fn teeth_problems(
             )),
         }
     }
+    p
+}
+
+/// Problems of the `[[fault]]` tables: a tooth index outside its gear (`z1`, `z2`: teeth of
+/// pinion and gear), keys against the kind, two tables for one fault.
+fn fault_problems(faults: &[FaultTable], z1: i64, z2: i64) -> Vec<String> {
+    let mut p = Vec::new();
     for (i, f) in faults.iter().enumerate() {
         let z = match f.gear {
             Member::Pinion => z1,
@@ -311,24 +542,7 @@ pub fn teeth_problems(
                 z - 1
             ));
         }
-        let own = f.kind.keys();
-        for (key, given) in f.given() {
-            let takes = own.iter().find(|(k, _)| *k == key);
-            match takes {
-                None if given => p.push(format!(
-                    "`fault.{key}` (fault {i}) does not apply to kind \"{}\"; its keys: {}",
-                    f.kind.name(),
-                    own.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(", ")
-                )),
-                Some((_, true)) if !given => p.push(format!(
-                    "`fault.{key}` is required for a fault of kind \"{}\" (fault {i}, {} tooth {})",
-                    f.kind.name(),
-                    f.gear.name(),
-                    f.tooth
-                )),
-                _ => {}
-            }
-        }
+        p.extend(key_problems(f, i));
         for (j, g) in faults.iter().enumerate().take(i) {
             if g.gear == f.gear && g.tooth == f.tooth && g.kind == f.kind {
                 p.push(format!(
@@ -341,60 +555,4 @@ pub fn teeth_problems(
         }
     }
     p
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn fault(kind: FaultKind, tooth: i64) -> FaultSpec {
-        FaultSpec {
-            kind,
-            gear: Member::Pinion,
-            tooth,
-            crack_depth_mm: None,
-            crack_angle_deg: None,
-            crack_width_fraction: None,
-            spall_position_mm: None,
-            spall_length_mm: None,
-            spall_depth_um: None,
-            spall_width_fraction: None,
-            removed_height_mm: None,
-        }
-    }
-
-    #[test]
-    fn wrong_lengths_name_both_lengths_and_indices_the_valid_range() {
-        let t = TeethSection {
-            pitch_error_pinion_um: Some(vec![1.0; 18]),
-            profile_form_gear_um: Some(vec![1.0; 2]),
-            ..Default::default()
-        };
-        let mut crack = fault(FaultKind::Crack, 19);
-        crack.spall_depth_um = Some(3.0);
-        let p = teeth_problems(&t, &ModificationSection::default(), &[crack], 19, 31);
-        let all = p.join("\n");
-        assert!(
-            all.contains("18 values") && all.contains("19 teeth"),
-            "{all}"
-        );
-        assert!(
-            all.contains("has 2 values") && all.contains("(31)"),
-            "{all}"
-        );
-        assert!(
-            all.contains("`fault.tooth` = 19") && all.contains("0 to 18"),
-            "{all}"
-        );
-        assert!(all.contains("`fault.crack_depth_mm` is required"), "{all}");
-        assert!(all.contains("`fault.spall_depth_um`") && all.contains("does not apply"));
-    }
-
-    #[test]
-    fn empty_sections_serialise_to_nothing() {
-        let v = toml::Value::try_from(TeethSection::default()).unwrap();
-        assert_eq!(v.as_table().map(|t| t.len()), Some(0));
-        let v = toml::Value::try_from(ModificationSection::default()).unwrap();
-        assert_eq!(v.as_table().map(|t| t.len()), Some(0));
-    }
 }

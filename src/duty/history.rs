@@ -11,6 +11,8 @@
 //! - an interval longer than the gap limit (by default [`DEFAULT_GAP_FACTOR`] times the
 //!   median interval): missing data, whose time at level nobody knows.
 
+use crate::config::operating::SpeedUnit;
+
 /// A gap: an interval this many times the median interval (a logger at a fixed rate
 /// never exceeds 1; variable-rate logging on change stays within a few).
 pub const DEFAULT_GAP_FACTOR: f64 = 10.0;
@@ -41,13 +43,12 @@ impl HistoryError {
     }
 }
 
-/// Which columns hold time, torque and speed, and the speed's unit factor to Hz.
+/// Which columns hold time, torque and speed, and the speed's unit.
 struct Columns {
     time: usize,
     torque: usize,
     speed: usize,
-    speed_to_hz: f64,
-    speed_name: &'static str,
+    speed_unit: SpeedUnit,
 }
 
 fn columns(header: &csv::ByteRecord) -> Result<Columns, HistoryError> {
@@ -58,29 +59,25 @@ fn columns(header: &csv::ByteRecord) -> Result<Columns, HistoryError> {
         .collect();
     let missing = |what: &str| {
         HistoryError::one(format!(
-            "the history has no `{what}` column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm",
+            "the history has no {what} column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm",
             crate::format::clip(&names.join(","), crate::format::SHOWN_CHARS)
         ))
     };
-    let time = find("time_s").ok_or_else(|| missing("time_s"))?;
-    let torque = find("torque_nm").ok_or_else(|| missing("torque_nm"))?;
-    let (speed, speed_to_hz, speed_name) = match (find("input_speed_hz"), find("input_speed_rpm")) {
-        (Some(_), Some(_)) => {
-            return Err(HistoryError::one(
-                "the history has both `input_speed_hz` and `input_speed_rpm`: keep one",
-            ))
-        }
-        (Some(i), None) => (i, 1.0, "input_speed_hz"),
-        // 1 Hz = 60 rpm.
-        (None, Some(i)) => (i, 1.0 / 60.0, "input_speed_rpm"),
-        (None, None) => return Err(missing("input_speed_hz (or input_speed_rpm)")),
-    };
+    let time = find("time_s").ok_or_else(|| missing("`time_s`"))?;
+    let torque = find("torque_nm").ok_or_else(|| missing("`torque_nm`"))?;
+    let column = |u: SpeedUnit| find(u.input_speed_key());
+    let speed_unit = SpeedUnit::given(
+        column(SpeedUnit::Hz).is_some(),
+        column(SpeedUnit::Rpm).is_some(),
+        "",
+    )
+    .map_err(|both| HistoryError::one(format!("the history's columns {both}")))?
+    .ok_or_else(|| missing(&SpeedUnit::either_key("")))?;
     Ok(Columns {
         time,
         torque,
-        speed,
-        speed_to_hz,
-        speed_name,
+        speed: column(speed_unit).unwrap_or_default(),
+        speed_unit,
     })
 }
 
@@ -132,7 +129,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
         let (t, q, f) = (
             get(c.time, "time_s"),
             get(c.torque, "torque_nm"),
-            get(c.speed, c.speed_name),
+            get(c.speed, c.speed_unit.input_speed_key()),
         );
         if let (Some(t), Some(q), Some(f)) = (t, q, f) {
             if let Some(prev) = h.time_s.last() {
@@ -145,7 +142,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
             }
             h.time_s.push(t);
             h.torque_nm.push(q);
-            h.input_speed_hz.push(f * c.speed_to_hz);
+            h.input_speed_hz.push(c.speed_unit.to_hz(f));
         }
     }
     if problems.is_empty() && h.time_s.len() < 2 {

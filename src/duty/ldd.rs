@@ -36,7 +36,7 @@
 
 use super::history::History;
 use crate::config::case::TorqueShaft;
-use crate::config::load_spectrum::{LoadSpectrumSection, SpectrumBin};
+use crate::config::operating::{LoadSpectrumSection, SpectrumBin};
 use serde::{Deserialize, Serialize};
 
 /// How the history runs between samples.

@@ -1,7 +1,7 @@
 //! Duty cycles (issue 20): wear and life under a load spectrum, and the spectrum of a
 //! measured load-time history.
 //!
-//! Pieces, data flowing down: the `[load_spectrum]` of a case (`config::load_spectrum`,
+//! Pieces, data flowing down: the `[load_spectrum]` of a case (`config::operating`,
 //! validated before anything is computed) -> [`model`] (one model per bin, built from the
 //! case at the bin's operating point) -> [`wear`] (the wear loop advancing every bin at
 //! every update, and its quasi-static twin) -> [`contribution`] (what each bin wore, the

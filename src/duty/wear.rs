@@ -25,8 +25,8 @@
 //! operating point the flanks see.
 
 use super::model::SpectrumModel;
+use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
-use crate::dynamics::steady::DynamicsError;
 use crate::study::wear_loop::{
     block_length, record, solve, start_of, StopKind, UpdateRecord, WearMode, WearStop,
     MAX_CONTACT_LOSS_FRACTION,

@@ -20,9 +20,9 @@
 
 pub mod elements;
 mod single_pair;
-pub mod train;
 #[cfg(test)]
 mod tests_assembly;
+pub mod train;
 
 use self::elements::Elements;
 use crate::config::case::SpeedBoundary;

@@ -27,9 +27,9 @@
 
 use super::model::{GearSystem, State};
 use super::period::PlanMode;
+use super::period_search::{DynamicsError, MeshPeriodSearch, SteadyStateSettings};
 use super::recorder::Recorder;
 use super::response::DynamicResponse;
-use super::steady::{DynamicsError, MeshPeriodSearch, SteadyStateSettings};
 
 /// Slowest decay rate of the averaged linear model, 1/s: the smallest -Re(lambda) over
 /// its eigenvalues, leaving out the zero ones of a held coordinate or of the motor-slip
@@ -115,7 +115,7 @@ pub fn solve_hunting(
                 });
             }
             let recorded_s = periods as f64 * t_mesh;
-            let repeats = super::steady::window_repeats(sys, settings, periods);
+            let repeats = super::period_search::window_repeats(sys, settings, periods);
             let (signals, paths) =
                 rec.window(recorded_s, repeats, y_start.as_slice(), y.as_slice());
             return Ok(search.response(signals, paths, &rec, recorded_s, periods, periodicity, &y));

@@ -12,6 +12,7 @@ pub mod modal;
 pub mod model;
 pub mod params;
 pub mod period;
+pub mod period_search;
 pub mod quasi_static;
 pub mod recorder;
 pub mod response;

@@ -14,7 +14,7 @@ use super::drive::Drive;
 use super::grid::period_nodes;
 use super::model::{GearSystem, State};
 use super::period::{period_stepper, PeriodObserver, StepFailure};
-use super::steady::DynamicsError;
+use super::period_search::DynamicsError;
 
 /// Node times over [0, `duration_s`] of `sys` under its drive: the mesh-event nodes of
 /// every mesh period (of the first mesh: transients are of the single pair), mapped

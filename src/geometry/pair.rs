@@ -125,10 +125,11 @@ pub struct GearPair {
 pub struct GeometryError(pub Vec<String>);
 
 impl GearPair {
-    /// Build the pair from the case's `[gear]` section (lengths in mm there).
+    /// Build the pair from the case's `[gear]` section (lengths in mm there): each gear as
+    /// its rack generates it, the operating pressure angle and centre distance, the path of
+    /// contact; every problem that keeps the pair from meshing at once.
     pub fn from_case(g: &GearSection) -> Result<Self, GeometryError> {
-        let mm = 1e-3;
-        let m = g.module_mm * mm;
+        let m = g.module_mm * MM;
         let alpha = g.pressure_angle_deg.to_radians();
         let z1 = g.teeth_pinion as f64;
         let z2 = g.teeth_gear as f64;
@@ -136,147 +137,35 @@ impl GearPair {
         let mut errors = Vec::new();
         let mut warnings = Vec::new();
 
-        let make = |z: f64, x: f64, bore: Derivable| -> Gear {
-            let r = m * z / 2.0;
-            let r_f = r - m * (g.dedendum_coefficient - x);
-            let rb = r * alpha.cos();
-            // Lowest involute point the rack cutter generates (ISO 21771): the straight
-            // part of the rack flank ends (h_f* - rho_f*(1 - sin alpha)) m below the datum.
-            let h_straight =
-                g.dedendum_coefficient - g.tool_tip_radius_coefficient * (1.0 - alpha.sin());
-            Gear {
-                teeth: z as usize,
-                profile_shift: x,
-                pitch_radius_m: r,
-                base_radius_m: rb,
-                tip_radius_m: r + m * (g.addendum_coefficient + x),
-                root_radius_m: r_f,
-                half_base_angle_rad: PI / (2.0 * z) + 2.0 * x * alpha.tan() / z + inv(alpha),
-                form_rho_m: r * alpha.sin() - (h_straight - x) * m / alpha.sin(),
-                bore_radius_m: bore.given().map_or(r_f / DERIVED_BORE_H_F, |b| b * mm),
-                fillet_junction_half_angle_rad: fillet_junction_half_angle_rad(
-                    z,
-                    alpha,
-                    g.dedendum_coefficient,
-                    g.tool_tip_radius_coefficient,
-                ),
-            }
-        };
-        let pinion = make(z1, x1, g.hub_bore_radius_pinion_mm);
-        let gear = make(z2, x2, g.hub_bore_radius_gear_mm);
-        for (name, gr) in [("pinion", &pinion), ("gear", &gear)] {
-            if gr.root_radius_m <= 0.0 {
-                errors.push(format!(
-                    "the {name} has no body: its root radius m (z/2 - h_f* + x) = {:.4} mm is not positive (raise its number of teeth or its profile shift, or lower the dedendum coefficient)",
-                    gr.root_radius_m / mm
-                ));
-            } else if gr.bore_radius_m.partial_cmp(&gr.root_radius_m)
-                != Some(std::cmp::Ordering::Less)
-            {
-                errors.push(format!(
-                    "`gear.hub_bore_radius_{name}_mm` = {} is invalid: the bore must lie inside the {name}'s root circle, radius {:.4} mm (\"derived\" gives half of it)",
-                    gr.bore_radius_m / mm,
-                    gr.root_radius_m / mm
-                ));
-            }
-        }
-
-        // Operating pressure angle: from the shifts (zero backlash) or from a given centre distance.
+        let pinion = Gear::generated(g, z1, x1, g.hub_bore_radius_pinion_mm);
+        let gear = Gear::generated(g, z2, x2, g.hub_bore_radius_gear_mm);
+        errors.extend(body_problems(&pinion, &gear));
         let rb_sum = pinion.base_radius_m + gear.base_radius_m;
-        let (alpha_w, a_w) = match g.centre_distance_mm {
-            None => {
-                let aw = inv_inverse(inv(alpha) + 2.0 * alpha.tan() * (x1 + x2) / (z1 + z2));
-                (aw, rb_sum / aw.cos())
-            }
-            Some(a_mm) => {
-                let a = a_mm * mm;
-                if a <= rb_sum {
-                    errors.push(format!(
-                        "`gear.centre_distance_mm` = {a_mm} is invalid: it must exceed the sum of the base radii, {:.4} mm",
-                        rb_sum / mm
-                    ));
-                    (alpha, rb_sum / alpha.cos())
-                } else {
-                    ((rb_sum / a).acos(), a)
-                }
-            }
-        };
+        let (alpha_w, a_w) = operating_angle(g, alpha, rb_sum, &mut errors);
         let loa = a_w * alpha_w.sin();
         let rho_end = pinion.tip_rho_m();
         let rho_start = loa - gear.tip_rho_m();
         let base_pitch = 2.0 * PI * pinion.base_radius_m / z1;
         let rho_pitch = pinion.base_radius_m * alpha_w.tan();
         let eps = (rho_end - rho_start) / base_pitch;
-
-        for (name, gr) in [("pinion", &pinion), ("gear", &gear)] {
-            let s_tip = gr.thickness_at_radius_m(gr.tip_radius_m);
-            if s_tip <= 0.0 {
-                errors.push(format!(
-                    "the {name}'s teeth are pointed (tip thickness {:.3} mm <= 0): reduce its profile shift or the addendum coefficient",
-                    s_tip / mm
-                ));
-            } else if s_tip < 0.2 * m {
-                warnings.push(format!(
-                    "the {name}'s tip is thin: {:.3} mm < 0.2 m",
-                    s_tip / mm
-                ));
-            }
-            if gr.form_rho_m < 0.0 {
-                warnings.push(format!(
-                    "the {name} is undercut by the generating rack (lowest involute point {:.3} mm below the base circle's tangency): the model keeps the involute-to-root beam of the uncut tooth",
-                    -gr.form_rho_m / mm
-                ));
-            }
-        }
-        // Tip interference: each tip must meet the mate inside its generated involute.
-        let pin_limit = pinion.form_rho_m.max(0.0);
-        if rho_start < pin_limit {
-            errors.push(format!(
-                "tip interference: the gear tip meets the pinion at rho1 = {:.3} mm, below the pinion's lowest involute point {:.3} mm (check profile shifts, addendum coefficient, centre distance)",
-                rho_start / mm,
-                pin_limit / mm
-            ));
-        }
-        let gear_limit = gear.form_rho_m.max(0.0);
-        if loa - rho_end < gear_limit {
-            errors.push(format!(
-                "tip interference: the pinion tip meets the gear at rho2 = {:.3} mm, below the gear's lowest involute point {:.3} mm",
-                (loa - rho_end) / mm,
-                gear_limit / mm
-            ));
-        }
-        match g.centre_distance_mm {
-            Some(a_mm) if eps < 1.0 && a_w > rb_sum => {
-                // sqrt(a^2 - (r_b1 + r_b2)^2) = N1N2 = T1 + T2 - eps p_b, T_i the tips'
-                // reach along the line of action, so eps = c at a = sqrt(rb^2 + (T - c p_b)^2).
-                let reach = pinion.tip_rho_m() + gear.tip_rho_m();
-                let at = |c: f64| rb_sum.hypot(reach - c * base_pitch) / mm;
-                errors.push(if eps <= 0.0 {
-                    format!(
-                        "`gear.centre_distance_mm` = {a_mm} is too large: at this centre distance the teeth do not touch at all (their tips fall {:.3} mm short of each other along the line of action); they touch below {:.4} mm and mesh continuously (contact ratio >= 1) below {:.4} mm",
-                        (rho_start - rho_end) / mm,
-                        at(0.0),
-                        at(1.0)
-                    )
-                } else {
-                    format!(
-                        "`gear.centre_distance_mm` = {a_mm} is too large: the teeth touch, but each pair leaves contact before the next one engages (contact ratio {eps:.3} < 1); the pair meshes continuously below {:.4} mm",
-                        at(1.0)
-                    )
-                });
-            }
-            _ if eps < 1.0 => errors.push(format!(
-                "contact ratio {eps:.4} is below 1: the pair cannot mesh continuously (raise the addendum coefficient or the numbers of teeth)"
-            )),
-            _ => {}
-        }
+        let path = ContactPath {
+            centre_distance_m: a_w,
+            loa_length_m: loa,
+            rho_start_m: rho_start,
+            rho_end_m: rho_end,
+            base_pitch_m: base_pitch,
+            contact_ratio: eps,
+        };
+        tooth_form_problems(&pinion, &gear, m, &mut errors, &mut warnings);
+        errors.extend(interference_problems(&pinion, &gear, &path));
+        errors.extend(contact_ratio_problem(g, &pinion, &gear, rb_sum, &path));
         if !errors.is_empty() {
             return Err(GeometryError(errors));
         }
         Ok(Self {
             module_m: m,
             pressure_angle_rad: alpha,
-            face_width_m: g.face_width_mm * mm,
+            face_width_m: g.face_width_mm * MM,
             pinion,
             gear,
             centre_distance_m: a_w,
@@ -383,6 +272,196 @@ impl GearPair {
             v.push(frac * period);
         }
         v
+    }
+}
+
+/// Metres per millimetre: the case gives lengths in mm.
+const MM: f64 = 1e-3;
+
+impl Gear {
+    /// A gear of `z` teeth and profile shift `x` as the case's rack generates it (ISO
+    /// 21771), its hub bore the case's `bore` or r_f / [`DERIVED_BORE_H_F`].
+    fn generated(g: &GearSection, z: f64, x: f64, bore: Derivable) -> Gear {
+        let m = g.module_mm * MM;
+        let alpha = g.pressure_angle_deg.to_radians();
+        let r = m * z / 2.0;
+        let r_f = r - m * (g.dedendum_coefficient - x);
+        let rb = r * alpha.cos();
+        // Lowest involute point the rack cutter generates (ISO 21771): the straight
+        // part of the rack flank ends (h_f* - rho_f*(1 - sin alpha)) m below the datum.
+        let h_straight =
+            g.dedendum_coefficient - g.tool_tip_radius_coefficient * (1.0 - alpha.sin());
+        Gear {
+            teeth: z as usize,
+            profile_shift: x,
+            pitch_radius_m: r,
+            base_radius_m: rb,
+            tip_radius_m: r + m * (g.addendum_coefficient + x),
+            root_radius_m: r_f,
+            half_base_angle_rad: PI / (2.0 * z) + 2.0 * x * alpha.tan() / z + inv(alpha),
+            form_rho_m: r * alpha.sin() - (h_straight - x) * m / alpha.sin(),
+            bore_radius_m: bore.given().map_or(r_f / DERIVED_BORE_H_F, |b| b * MM),
+            fillet_junction_half_angle_rad: fillet_junction_half_angle_rad(
+                z,
+                alpha,
+                g.dedendum_coefficient,
+                g.tool_tip_radius_coefficient,
+            ),
+        }
+    }
+}
+
+/// A gear without a body (root radius not positive) or with its bore outside the root
+/// circle.
+fn body_problems(pinion: &Gear, gear: &Gear) -> Vec<String> {
+    let mut errors = Vec::new();
+    for (name, gr) in [("pinion", pinion), ("gear", gear)] {
+        if gr.root_radius_m <= 0.0 {
+            errors.push(format!(
+                "the {name} has no body: its root radius m (z/2 - h_f* + x) = {:.4} mm is not positive (raise its number of teeth or its profile shift, or lower the dedendum coefficient)",
+                gr.root_radius_m / MM
+            ));
+        } else if gr.bore_radius_m.partial_cmp(&gr.root_radius_m) != Some(std::cmp::Ordering::Less)
+        {
+            errors.push(format!(
+                "`gear.hub_bore_radius_{name}_mm` = {} is invalid: the bore must lie inside the {name}'s root circle, radius {:.4} mm (\"derived\" gives half of it)",
+                gr.bore_radius_m / MM,
+                gr.root_radius_m / MM
+            ));
+        }
+    }
+    errors
+}
+
+/// Operating pressure angle alpha_w and centre distance a_w, rad and m: from the profile
+/// shifts (zero backlash, ISO 21771: inv alpha_w = inv alpha + 2 tan alpha (x1 + x2) /
+/// (z1 + z2)) or from a given centre distance (cos alpha_w = (r_b1 + r_b2) / a_w, which
+/// must exceed the base radii's sum `rb_sum`).
+fn operating_angle(
+    g: &GearSection,
+    alpha: f64,
+    rb_sum: f64,
+    errors: &mut Vec<String>,
+) -> (f64, f64) {
+    let (z1, z2) = (g.teeth_pinion as f64, g.teeth_gear as f64);
+    let (x1, x2) = (g.profile_shift_pinion, g.profile_shift_gear);
+    match g.centre_distance_mm {
+        None => {
+            let aw = inv_inverse(inv(alpha) + 2.0 * alpha.tan() * (x1 + x2) / (z1 + z2));
+            (aw, rb_sum / aw.cos())
+        }
+        Some(a_mm) => {
+            let a = a_mm * MM;
+            if a <= rb_sum {
+                errors.push(format!(
+                    "`gear.centre_distance_mm` = {a_mm} is invalid: it must exceed the sum of the base radii, {:.4} mm",
+                    rb_sum / MM
+                ));
+                (alpha, rb_sum / alpha.cos())
+            } else {
+                ((rb_sum / a).acos(), a)
+            }
+        }
+    }
+}
+
+/// Pointed tips (an error), thin tips and undercut (warnings); `m` the module, m.
+fn tooth_form_problems(
+    pinion: &Gear,
+    gear: &Gear,
+    m: f64,
+    errors: &mut Vec<String>,
+    warnings: &mut Vec<String>,
+) {
+    for (name, gr) in [("pinion", pinion), ("gear", gear)] {
+        let s_tip = gr.thickness_at_radius_m(gr.tip_radius_m);
+        if s_tip <= 0.0 {
+            errors.push(format!(
+                "the {name}'s teeth are pointed (tip thickness {:.3} mm <= 0): reduce its profile shift or the addendum coefficient",
+                s_tip / MM
+            ));
+        } else if s_tip < 0.2 * m {
+            warnings.push(format!(
+                "the {name}'s tip is thin: {:.3} mm < 0.2 m",
+                s_tip / MM
+            ));
+        }
+        if gr.form_rho_m < 0.0 {
+            warnings.push(format!(
+                "the {name} is undercut by the generating rack (lowest involute point {:.3} mm below the base circle's tangency): the model keeps the involute-to-root beam of the uncut tooth",
+                -gr.form_rho_m / MM
+            ));
+        }
+    }
+}
+
+/// The path of contact of a pair being built, for its checks (fields as [`GearPair`]'s).
+struct ContactPath {
+    centre_distance_m: f64,
+    loa_length_m: f64,
+    rho_start_m: f64,
+    rho_end_m: f64,
+    base_pitch_m: f64,
+    contact_ratio: f64,
+}
+
+/// Tip interference: each tip must meet the mate inside its generated involute.
+fn interference_problems(pinion: &Gear, gear: &Gear, path: &ContactPath) -> Vec<String> {
+    let mut errors = Vec::new();
+    let pin_limit = pinion.form_rho_m.max(0.0);
+    if path.rho_start_m < pin_limit {
+        errors.push(format!(
+            "tip interference: the gear tip meets the pinion at rho1 = {:.3} mm, below the pinion's lowest involute point {:.3} mm (check profile shifts, addendum coefficient, centre distance)",
+            path.rho_start_m / MM,
+            pin_limit / MM
+        ));
+    }
+    let gear_limit = gear.form_rho_m.max(0.0);
+    if path.loa_length_m - path.rho_end_m < gear_limit {
+        errors.push(format!(
+            "tip interference: the pinion tip meets the gear at rho2 = {:.3} mm, below the gear's lowest involute point {:.3} mm",
+            (path.loa_length_m - path.rho_end_m) / MM,
+            gear_limit / MM
+        ));
+    }
+    errors
+}
+
+/// A contact ratio below 1: the pair cannot mesh continuously. With a given centre
+/// distance, the distances below which the teeth touch and mesh continuously (`rb_sum`
+/// the base radii's sum, m).
+fn contact_ratio_problem(
+    g: &GearSection,
+    pinion: &Gear,
+    gear: &Gear,
+    rb_sum: f64,
+    path: &ContactPath,
+) -> Option<String> {
+    let eps = path.contact_ratio;
+    match g.centre_distance_mm {
+        Some(a_mm) if eps < 1.0 && path.centre_distance_m > rb_sum => {
+            // sqrt(a^2 - (r_b1 + r_b2)^2) = N1N2 = T1 + T2 - eps p_b, T_i the tips'
+            // reach along the line of action, so eps = c at a = sqrt(rb^2 + (T - c p_b)^2).
+            let reach = pinion.tip_rho_m() + gear.tip_rho_m();
+            let at = |c: f64| rb_sum.hypot(reach - c * path.base_pitch_m) / MM;
+            Some(if eps <= 0.0 {
+                format!(
+                    "`gear.centre_distance_mm` = {a_mm} is too large: at this centre distance the teeth do not touch at all (their tips fall {:.3} mm short of each other along the line of action); they touch below {:.4} mm and mesh continuously (contact ratio >= 1) below {:.4} mm",
+                    (path.rho_start_m - path.rho_end_m) / MM,
+                    at(0.0),
+                    at(1.0)
+                )
+            } else {
+                format!(
+                    "`gear.centre_distance_mm` = {a_mm} is too large: the teeth touch, but each pair leaves contact before the next one engages (contact ratio {eps:.3} < 1); the pair meshes continuously below {:.4} mm",
+                    at(1.0)
+                )
+            })
+        }
+        _ if eps < 1.0 => Some(format!(
+            "contact ratio {eps:.4} is below 1: the pair cannot mesh continuously (raise the addendum coefficient or the numbers of teeth)"
+        )),
+        _ => None,
     }
 }
 

@@ -70,7 +70,7 @@ pub fn check_calibration(
             let c = apply(case, &theta);
             let mut truth = run_trajectory(&c, None, obs.max_cycles()).ok()?;
             let observed: Vec<Quantity> = obs.series.iter().map(|s| s.quantity).collect();
-            super::indicator::attach(&mut truth, &c, &observed).ok()?;
+            super::forward::attach(&mut truth, &c, &observed).ok()?;
             let quantities = obs
                 .series
                 .iter()

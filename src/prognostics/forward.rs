@@ -13,16 +13,28 @@
 //!
 //! A run that fails (today the integrator can fail at large wear) keeps the records it
 //! reached and says why: it is valid up to its last record and unknown after it.
+//!
+//! **Condition indicators** ([`super::indicator`]). At each update of a wear run the wear
+//! state is recorded through the case's `[signals]` chain with the built-in generic
+//! housing (the record `gearwear signals` writes, measurement noise left out: noise
+//! belongs to the likelihood's noise model) and the indicator is computed from that record
+//! ([`attach`]). Between updates it is read as every response quantity is (linear in
+//! cycles).
 
-use super::quantity::Quantity;
+use super::indicator::{name, value};
+use super::quantity::{indicators_of, Quantity};
 use crate::config::Case;
 use crate::config::LoadSpectrumSection;
 use crate::duty::contribution::combined_record;
 use crate::duty::life::first_crossing;
 use crate::duty::wear::{run_spectrum_wear, SpectrumRun};
 use crate::duty::SpectrumModel;
+use crate::signals::chain::NoiseSpec;
+use crate::signals::setup::chain_of;
 use crate::study::model::{Model, ModelError};
+use crate::study::signal_record::record_case;
 use crate::study::wear_loop::{run_wear, ProfileAndIncrement, UpdateRecord, WearMode, WearRun};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -36,7 +48,7 @@ pub struct Trajectory {
     pub records: Vec<UpdateRecord>,
     /// Why the run stopped before `requested_cycles` (None: it reached them).
     pub failure: Option<String>,
-    /// Condition indicators at the first updates, by name (`super::indicator::attach`).
+    /// Condition indicators at the first updates, by name ([`attach`]).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub indicators: BTreeMap<String, Vec<f64>>,
 }
@@ -104,11 +116,7 @@ impl Trajectory {
     /// there.
     fn response(&self, q: Quantity, j: usize) -> Option<f64> {
         match q {
-            Quantity::Indicator(i) => self
-                .indicators
-                .get(super::indicator::name(i))?
-                .get(j)
-                .copied(),
+            Quantity::Indicator(i) => self.indicators.get(name(i))?.get(j).copied(),
             _ => Some(q.of_summary(&self.records[j].summary)),
         }
     }
@@ -237,6 +245,44 @@ fn spectrum_records(
             (Some(run), stop)
         }
     }
+}
+
+/// Compute the indicators `qs` asks for at every update of `t` (those not there yet), for
+/// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the
+/// first update whose record fails (the trajectory then reads the indicator as unknown
+/// from there on).
+pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
+    let wanted: Vec<u16> = indicators_of(qs)
+        .into_iter()
+        .filter(|i| !t.indicators.contains_key(name(*i)))
+        .collect();
+    if wanted.is_empty() || t.records.is_empty() {
+        return Ok(());
+    }
+    // Under a load spectrum the sensor records at the monitoring bin, as the response
+    // quantities are read there ([`run_trajectory`]).
+    let case = &match &case.load_spectrum {
+        Some(s) => case.at_bin(s.monitoring_index()),
+        None => case.clone(),
+    };
+    let model = Model::from_case(case).map_err(|e| e.to_string())?;
+    let mut setup =
+        chain_of(case, None, case.signals.max_input_speed_hz(case)).map_err(|m| m.join("; "))?;
+    setup.chain.acquisition.noise = NoiseSpec::None;
+    let rows: Vec<Option<Vec<f64>>> = t
+        .records
+        .par_iter()
+        .map(|r| {
+            let rec = record_case(&model, &setup, &r.wear).ok()?;
+            wanted.iter().map(|i| value(&rec.analysis, *i)).collect()
+        })
+        .collect();
+    let known = rows.iter().take_while(|r| r.is_some()).count();
+    for (k, i) in wanted.iter().enumerate() {
+        let v = rows[..known].iter().flatten().map(|r| r[k]).collect();
+        t.indicators.insert(name(*i).to_owned(), v);
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -1,26 +1,15 @@
 //! Condition indicators as observed quantities: the indicators a monitoring system
 //! computes from its accelerometers (docs/SIGNALS.md, section 2), named as the columns of
-//! a dataset's index (`input_rms`, `input_pinion_fm0`, ...).
-//!
-//! **Forward value.** At each update of a wear run the wear state is recorded through the
-//! case's `[signals]` chain with the built-in generic housing (the record `gearwear
-//! signals` writes, measurement noise left out: noise belongs to the likelihood's noise
-//! model) and the indicator is computed from that record. Between updates it is read as
-//! every response quantity is (`forward`: linear in cycles).
+//! a dataset's index (`input_rms`, `input_pinion_fm0`, ...), and where each one's value is
+//! in a record's analysis. Their forward value along a wear run is
+//! [`super::forward::attach`]'s.
 //!
 //! NA4 and NB4 are not offered: their denominator is the mean residual variance of the
 //! monitoring history so far, a property of the whole run, not of one wear state.
 
-use super::forward::Trajectory;
-use super::quantity::Quantity;
-use crate::config::Case;
 use crate::signals::analysis::ChannelAnalysis;
-use crate::signals::chain::{NoiseSpec, Shaft};
-use crate::signals::setup::chain_of;
+use crate::signals::chain::Shaft;
 use crate::signals::transfer::TransferPath;
-use crate::study::model::Model;
-use crate::study::signal_record::record_case;
-use rayon::prelude::*;
 use std::sync::OnceLock;
 
 /// Indicators of a whole channel (`<sensor>_<name>`).
@@ -122,57 +111,6 @@ pub fn value(analysis: &[ChannelAnalysis], i: u16) -> Option<f64> {
             s.sideband_index,
         ][spec.kind],
     )
-}
-
-/// The indicators among `qs`.
-pub fn indicators_of(qs: &[Quantity]) -> Vec<u16> {
-    let mut v: Vec<u16> = qs
-        .iter()
-        .filter_map(|q| match q {
-            Quantity::Indicator(i) => Some(*i),
-            _ => None,
-        })
-        .collect();
-    v.sort_unstable();
-    v.dedup();
-    v
-}
-
-/// Compute the indicators `qs` asks for at every update of `t` (those not there yet), for
-/// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the first update whose record fails (the
-/// trajectory then reads the indicator as unknown from there on).
-pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
-    let wanted: Vec<u16> = indicators_of(qs)
-        .into_iter()
-        .filter(|i| !t.indicators.contains_key(name(*i)))
-        .collect();
-    if wanted.is_empty() || t.records.is_empty() {
-        return Ok(());
-    }
-    // Under a load spectrum the sensor records at the monitoring bin, as the response
-    // quantities are read there (`forward::run_trajectory`).
-    let case = &match &case.load_spectrum {
-        Some(s) => case.at_bin(s.monitoring_index()),
-        None => case.clone(),
-    };
-    let model = Model::from_case(case).map_err(|e| e.to_string())?;
-    let mut setup =
-        chain_of(case, None, case.signals.max_input_speed_hz(case)).map_err(|m| m.join("; "))?;
-    setup.chain.acquisition.noise = NoiseSpec::None;
-    let rows: Vec<Option<Vec<f64>>> = t
-        .records
-        .par_iter()
-        .map(|r| {
-            let rec = record_case(&model, &setup, &r.wear).ok()?;
-            wanted.iter().map(|i| value(&rec.analysis, *i)).collect()
-        })
-        .collect();
-    let known = rows.iter().take_while(|r| r.is_some()).count();
-    for (k, i) in wanted.iter().enumerate() {
-        let v = rows[..known].iter().flatten().map(|r| r[k]).collect();
-        t.indicators.insert(name(*i).to_owned(), v);
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -12,7 +12,6 @@
 //! method and its measured accuracy.
 
 pub mod band;
-pub mod budget;
 pub mod calibrate;
 pub mod check;
 pub mod fit_check;

@@ -86,10 +86,17 @@ fn in_range(cell: &str, lo: f64, hi: f64, why: &str) -> Result<f64, String> {
     }
 }
 
+/// The columns of the header: `cycles`, each observed quantity's, and each quantity's
+/// `sigma_<name>` column when it has one.
+struct Columns {
+    cycles: usize,
+    values: Vec<(Quantity, usize)>,
+    sigma_of: Vec<Option<usize>>,
+}
+
 /// Parse the observations CSV. `source` names the file in messages. Returns every
 /// problem found.
 pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
-    let mut problems = Vec::new();
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -97,6 +104,35 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
         Ok(h) => h.iter().map(str::to_owned).collect(),
         Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")]),
     };
+    let cols = columns(&header, source)?;
+    let mut series: Vec<Series> = cols
+        .values
+        .iter()
+        .zip(&cols.sigma_of)
+        .map(|((q, _), s)| Series {
+            quantity: *q,
+            cycles: Vec::new(),
+            values: Vec::new(),
+            sigma: s.map(|_| Vec::new()),
+        })
+        .collect();
+    let mut problems = Vec::new();
+    let rows = read_rows(&mut rdr, &cols, &mut series, &mut problems, source);
+    if rows == 0 {
+        problems.push(format!("{source}: no data rows"));
+    }
+    check_series(&series, rows, source, &mut problems);
+    if problems.is_empty() {
+        Ok(Observations { series })
+    } else {
+        Err(problems)
+    }
+}
+
+/// The columns of `header`, or every problem with them (no `cycles` column, a column
+/// twice, an unknown one, a sigma without its quantity, no quantity).
+fn columns(header: &[String], source: &str) -> Result<Columns, Vec<String>> {
+    let mut problems = Vec::new();
     let Some(cycles_col) = header.iter().position(|h| h == "cycles") else {
         return Err(vec![format!(
             "{source}: no `cycles` column (header: {})",
@@ -141,17 +177,22 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
     if !problems.is_empty() {
         return Err(problems);
     }
+    Ok(Columns {
+        cycles: cycles_col,
+        values: value_cols,
+        sigma_of,
+    })
+}
 
-    let mut series: Vec<Series> = value_cols
-        .iter()
-        .zip(&sigma_of)
-        .map(|((q, _), s)| Series {
-            quantity: *q,
-            cycles: Vec::new(),
-            values: Vec::new(),
-            sigma: s.map(|_| Vec::new()),
-        })
-        .collect();
+/// Read the data rows into `series`, each problem (with its row and line) into
+/// `problems`; the number of rows read.
+fn read_rows(
+    rdr: &mut csv::Reader<&[u8]>,
+    cols: &Columns,
+    series: &mut [Series],
+    problems: &mut Vec<String>,
+    source: &str,
+) -> usize {
     let mut previous: Option<f64> = None;
     let mut rows = 0;
     for (r, rec) in rdr.records().enumerate() {
@@ -180,20 +221,10 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
             continue;
         }
         let cell = |j: usize| rec.get(j).unwrap_or("").trim();
-        let cycles = match number(cell(cycles_col)) {
-            Ok(c) if c < 0.0 => {
-                problems.push(format!("{at}: `cycles` = {c} is negative"));
-                continue;
-            }
-            Ok(c) if c > MAX_CYCLES => {
-                problems.push(format!(
-                    "{at}: `cycles` = {c:e} is beyond {MAX_CYCLES:e}, the range of wear.total_cycles"
-                ));
-                continue;
-            }
+        let cycles = match row_cycles(cell(cols.cycles)) {
             Ok(c) => c,
             Err(e) => {
-                problems.push(format!("{at}: `cycles`: {e}"));
+                problems.push(format!("{at}: {e}"));
                 continue;
             }
         };
@@ -203,56 +234,71 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
             ));
         }
         previous = Some(cycles);
-        for (i, (q, j)) in value_cols.iter().enumerate() {
+        for (i, (q, j)) in cols.values.iter().enumerate() {
             let raw = cell(*j);
             if raw.is_empty() {
                 continue;
             }
-            let v = match in_range(
-                raw,
-                -MAX_VALUE,
-                MAX_VALUE,
-                "no gearbox's value in this unit",
-            ) {
-                Ok(v) => v,
-                Err(e) => {
-                    problems.push(format!("{at}: column `{}`: {e}", q.name()));
-                    continue;
+            match measurement(*q, raw, cols.sigma_of[i].map(cell)) {
+                Ok((v, sigma)) => {
+                    if let Some(s) = sigma {
+                        series[i].sigma.get_or_insert_with(Vec::new).push(s);
+                    }
+                    series[i].cycles.push(cycles);
+                    series[i].values.push(v);
                 }
-            };
-            if let Some(sj) = sigma_of[i] {
-                match number(cell(sj)) {
-                    Ok(s) if s <= 0.0 => {
-                        problems.push(format!("{at}: `sigma_{}` = {s} must be > 0", q.name()));
-                        continue;
-                    }
-                    Ok(s) if !(SIGMA_RANGE.0..=SIGMA_RANGE.1).contains(&s) => {
-                        problems.push(format!(
-                            "{at}: `sigma_{}` = {s:e} is outside [{:e}, {:e}] (below, any model error makes the likelihood underflow; above, it is not a measurement)",
-                            q.name(),
-                            SIGMA_RANGE.0,
-                            SIGMA_RANGE.1
-                        ));
-                        continue;
-                    }
-                    Ok(s) => series[i].sigma.get_or_insert_with(Vec::new).push(s),
-                    Err(e) => {
-                        problems.push(format!(
-                            "{at}: `sigma_{}`: {e} (a measured value needs its sigma)",
-                            q.name()
-                        ));
-                        continue;
-                    }
-                }
+                Err(e) => problems.push(format!("{at}: {e}")),
             }
-            series[i].cycles.push(cycles);
-            series[i].values.push(v);
         }
     }
-    if rows == 0 {
-        problems.push(format!("{source}: no data rows"));
+    rows
+}
+
+/// The cycle count of a row's `cycles` cell, or why it is not one.
+fn row_cycles(cell: &str) -> Result<f64, String> {
+    match number(cell) {
+        Ok(c) if c < 0.0 => Err(format!("`cycles` = {c} is negative")),
+        Ok(c) if c > MAX_CYCLES => Err(format!(
+            "`cycles` = {c:e} is beyond {MAX_CYCLES:e}, the range of wear.total_cycles"
+        )),
+        Ok(c) => Ok(c),
+        Err(e) => Err(format!("`cycles`: {e}")),
     }
-    for s in &series {
+}
+
+/// One measured value of `q` (the non-empty cell `raw`) and its noise's standard
+/// deviation (the cell of its sigma column, if it has one), or why not.
+fn measurement(q: Quantity, raw: &str, sigma: Option<&str>) -> Result<(f64, Option<f64>), String> {
+    let v = in_range(
+        raw,
+        -MAX_VALUE,
+        MAX_VALUE,
+        "no gearbox's value in this unit",
+    )
+    .map_err(|e| format!("column `{}`: {e}", q.name()))?;
+    let Some(cell) = sigma else {
+        return Ok((v, None));
+    };
+    match number(cell) {
+        Ok(s) if s <= 0.0 => Err(format!("`sigma_{}` = {s} must be > 0", q.name())),
+        Ok(s) if !(SIGMA_RANGE.0..=SIGMA_RANGE.1).contains(&s) => Err(format!(
+            "`sigma_{}` = {s:e} is outside [{:e}, {:e}] (below, any model error makes the likelihood underflow; above, it is not a measurement)",
+            q.name(),
+            SIGMA_RANGE.0,
+            SIGMA_RANGE.1
+        )),
+        Ok(s) => Ok((v, Some(s))),
+        Err(e) => Err(format!(
+            "`sigma_{}`: {e} (a measured value needs its sigma)",
+            q.name()
+        )),
+    }
+}
+
+/// Every series has a value, and enough of them to infer its noise when no sigma is
+/// given (problems into `problems`).
+fn check_series(series: &[Series], rows: usize, source: &str, problems: &mut Vec<String>) {
+    for s in series {
         let n = s.values.len();
         if n == 0 && rows > 0 {
             problems.push(format!(
@@ -268,11 +314,6 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
                 s.quantity.name()
             ));
         }
-    }
-    if problems.is_empty() {
-        Ok(Observations { series })
-    } else {
-        Err(problems)
     }
 }
 

@@ -9,8 +9,9 @@
 //! Equal bounds hold a parameter fixed. Samplers work in unit coordinates u in [0, 1]
 //! per parameter (log k for k), where every prior is uniform.
 
-use crate::config::Case;
+use crate::config::case::{Case, LoadPoint};
 use crate::rng;
+use crate::study::budget::ParameterSpan;
 use rand::rngs::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
@@ -220,8 +221,26 @@ pub fn apply(case: &Case, theta: &Theta) -> Case {
             s.torque_scale *= theta[2] / case.operating.load_torque_nm;
         }
     }
-    c.operating.load_torque_nm = theta[2];
+    c.set_load_point(LoadPoint {
+        load_torque_nm: theta[2],
+        ..c.load_point()
+    });
     c
+}
+
+/// The numbers the run budget's estimates need of the span (the cost model sits below
+/// prognostics and takes numbers, not a prior).
+impl From<&Prior> for ParameterSpan {
+    fn from(p: &Prior) -> Self {
+        let free = p.free();
+        ParameterSpan {
+            wear_coefficient_min_m2_per_n: p.params[0].lo,
+            wear_coefficient_max_m2_per_n: p.params[0].hi,
+            load_torque_max_nm: p.params[2].hi,
+            free: free.len(),
+            free_besides_wear_coefficient: free.iter().filter(|i| **i != 0).count(),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -109,6 +109,20 @@ impl Quantity {
     }
 }
 
+/// The indicators among `qs`.
+pub fn indicators_of(qs: &[Quantity]) -> Vec<u16> {
+    let mut v: Vec<u16> = qs
+        .iter()
+        .filter_map(|q| match q {
+            Quantity::Indicator(i) => Some(*i),
+            _ => None,
+        })
+        .collect();
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -356,7 +356,7 @@ impl Surrogate {
             for run in &mut chain.runs {
                 let mut rc = c.clone();
                 rc.wear.coefficient_m2_per_n = run.coefficient_m2_per_n;
-                super::indicator::attach(run, &rc, qs)?;
+                super::forward::attach(run, &rc, qs)?;
                 done();
             }
         }

@@ -3,26 +3,15 @@
 //! (`report::{stiffness, dynamics, wear, paper, sweep}`) that the command line and the
 //! Python binding share; written by [`write_artifacts`] into an output set.
 
+// The default size of a figure is figure_output's; re-exported where figures are written.
+pub use super::figure_output::{plot_height, PLOT_H, PLOT_W};
+
 use super::figure_output::FigureOutput;
 use super::plot::{render_png, render_svg, Figure, PlotError};
 use crate::io::{OutputDir, OutputError, Table};
 use crate::store::RunMetadata;
 use rayon::prelude::*;
 use std::path::PathBuf;
-
-/// Default plot size, px (one panel).
-pub const PLOT_W: u32 = 900;
-pub const PLOT_H: u32 = 420;
-
-/// Height of a figure of `panels` stacked panels, px: [`PLOT_H`] for one, 300 px a panel
-/// plus the title band for more.
-pub fn plot_height(panels: usize) -> u32 {
-    match u32::try_from(panels) {
-        Ok(0 | 1) => PLOT_H,
-        Ok(n) => 40 + 300 * n.min(20),
-        Err(_) => PLOT_H,
-    }
-}
 
 /// A figure and the file it goes to.
 pub struct FigureFile {

@@ -5,7 +5,7 @@ use super::artifacts::{um, Artifacts};
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
-use crate::dynamics::response::{Coordinates, DynamicResponse};
+use crate::dynamics::response::{Coordinates, DynamicResponse, PathSample, Signals};
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::io::Table;
 use crate::study::{ModalAnalysis, Model};
@@ -29,31 +29,60 @@ pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad"
 pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
     let mut a = Artifacts::default();
     let s = &r.signals;
-    let ms = |v: &[f64]| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
+    a.table("timeseries.csv", timeseries_table(model, s));
+    a.table("path.csv", path_table(model, &r.meshes[0].path));
+
+    // Damped poles and undamped modes of the linearised model.
+    let modal = ModalAnalysis::of(model);
+    a.table("modes.csv", report_modes::damped_table(&modal));
+    a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
+
     let t_ms = ms(&s.time_s);
+    let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
+    if has_velocity {
+        add_velocity_figures(&mut a, model, r, &t_ms, label);
+    }
+    add_time_figures(&mut a, s, t_ms, label);
+    add_path_figures(&mut a, &r.meshes[0].path, label);
+    a.summary = dynamics_summary(model, r);
+    a.headline = dynamics_headline(&a.summary);
+    super::teeth::add_teeth_artifacts(model, &mut a);
+    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
+    a
+}
+
+/// Seconds (or m/s) as milliseconds (mm/s).
+fn ms(v: &[f64]) -> Vec<f64> {
+    v.iter().map(|x| x * 1e3).collect::<Vec<_>>()
+}
+
+/// Label of the time axis.
+const TIME: &str = "time (ms)";
+
+/// `timeseries.csv`: every recorded signal and the 8 coordinates, their velocities and
+/// accelerations.
+fn timeseries_table(model: &Model, s: &Signals) -> Table {
     let col = |k: usize, which: &Coordinates| which.column(k);
     let coordinates = model.coordinate_names();
+    let m0 = &s.meshes[0];
     let mut t = Table::new()
         .col("time_s", s.time_s.clone())
-        .col("mesh_phase_rad", s.meshes[0].phase_rad.clone())
-        .col("dte_um", um(&s.meshes[0].dte_m))
-        .col("mesh_force_n", s.meshes[0].mesh_force_n.clone())
-        .col(
-            "mesh_stiffness_n_per_m",
-            s.meshes[0].mesh_stiffness_n_per_m.clone(),
-        )
+        .col("mesh_phase_rad", m0.phase_rad.clone())
+        .col("dte_um", um(&m0.dte_m))
+        .col("mesh_force_n", m0.mesh_force_n.clone())
+        .col("mesh_stiffness_n_per_m", m0.mesh_stiffness_n_per_m.clone())
         .col(
             "friction_coefficient_pair0",
-            s.meshes[0].friction_coefficient[0].clone(),
+            m0.friction_coefficient[0].clone(),
         )
         .col(
             "friction_coefficient_pair1",
-            s.meshes[0].friction_coefficient[1].clone(),
+            m0.friction_coefficient[1].clone(),
         )
-        .col("friction_force_pair0_n", s.meshes[0].friction_n[0].clone())
-        .col("friction_force_pair1_n", s.meshes[0].friction_n[1].clone())
-        .col("load_pair0_n", s.meshes[0].pair_load_n[0].clone())
-        .col("load_pair1_n", s.meshes[0].pair_load_n[1].clone());
+        .col("friction_force_pair0_n", m0.friction_n[0].clone())
+        .col("friction_force_pair1_n", m0.friction_n[1].clone())
+        .col("load_pair0_n", m0.pair_load_n[0].clone())
+        .col("load_pair1_n", m0.pair_load_n[1].clone());
     for (k, (name, unit)) in coordinates.iter().enumerate() {
         t = t.col(&format!("{name}_{unit}"), col(k, &s.displacement));
     }
@@ -75,10 +104,12 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
                 ms.mesh_stiffness_n_per_m.clone(),
             );
     }
-    a.table("timeseries.csv", t);
+    t
+}
 
-    let p = &r.meshes[0].path;
-    let path_table = Table::new()
+/// `path.csv`: the contact along the path of contact.
+fn path_table(model: &Model, p: &[PathSample]) -> Table {
+    Table::new()
         .col("rho1_mm", p.iter().map(|x| x.rho1_m * 1e3).collect())
         .col(
             "pinion_radius_mm",
@@ -105,59 +136,63 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             p.iter()
                 .map(|x| x.pinion_surface_speed_m_per_s - x.gear_surface_speed_m_per_s)
                 .collect(),
-        );
-    a.table("path.csv", path_table);
+        )
+}
 
-    // Damped poles and undamped modes of the linearised model.
-    let modal = ModalAnalysis::of(model);
-    a.table("modes.csv", report_modes::damped_table(&modal));
-    a.table("modes_undamped.csv", report_modes::undamped_table(&modal));
-
+/// The pinion's y velocity: its spectrum's table, and its time and spectrum figures.
+fn add_velocity_figures(
+    a: &mut Artifacts,
+    model: &Model,
+    r: &DynamicResponse,
+    t_ms: &[f64],
+    label: &str,
+) {
+    let s = &r.signals;
     let f_mesh = model.params.operating.mesh_frequency_hz;
-    let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
-    let time = "time (ms)";
-    if has_velocity {
-        let spec = velocity_y_spectrum(r);
-        a.table(
-            "spectrum.csv",
-            Table::new()
-                .col("frequency_hz", spec.frequency_hz.clone())
-                .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
-        );
-        let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
-        a.figure_with_data(
-            "velocity_y_pinion.png",
-            single(
-                &format!("Pinion velocity in y ({label})"),
-                panel(
-                    time,
-                    "pinion y velocity (mm/s)",
-                    vec![Curve::new("", t_ms.clone(), vy.clone())],
-                ),
+    let spec = velocity_y_spectrum(r);
+    a.table(
+        "spectrum.csv",
+        Table::new()
+            .col("frequency_hz", spec.frequency_hz.clone())
+            .col("velocity_y_pinion_amplitude_mm_per_s", ms(&spec.amplitude)),
+    );
+    let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP] * 1e3).collect();
+    a.figure_with_data(
+        "velocity_y_pinion.png",
+        single(
+            &format!("Pinion velocity in y ({label})"),
+            panel(
+                TIME,
+                "pinion y velocity (mm/s)",
+                vec![Curve::new("", t_ms.to_vec(), vy.clone())],
             ),
-            Table::new()
-                .col("time_ms", t_ms.clone())
-                .col("velocity_y_pinion_mm_per_s", vy),
-        );
-        let (f, amp) = spectrum_rows(&spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh);
-        a.figure_with_data(
-            "spectrum_velocity_y_pinion.png",
-            single(
-                &format!("Spectrum of the pinion y velocity ({label})"),
-                spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
-            ),
-            Table::new()
-                .col("frequency_hz", f)
-                .col("velocity_y_pinion_amplitude_mm_per_s", amp),
-        );
-    }
+        ),
+        Table::new()
+            .col("time_ms", t_ms.to_vec())
+            .col("velocity_y_pinion_mm_per_s", vy),
+    );
+    let (f, amp) = spectrum_rows(&spec.frequency_hz, &ms(&spec.amplitude), 5.0 * f_mesh);
+    a.figure_with_data(
+        "spectrum_velocity_y_pinion.png",
+        single(
+            &format!("Spectrum of the pinion y velocity ({label})"),
+            spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
+        ),
+        Table::new()
+            .col("frequency_hz", f)
+            .col("velocity_y_pinion_amplitude_mm_per_s", amp),
+    );
+}
+
+/// The dynamic transmission error and the mesh force over time.
+fn add_time_figures(a: &mut Artifacts, s: &Signals, t_ms: Vec<f64>, label: &str) {
     let dte_um = um(&s.meshes[0].dte_m);
     a.figure_with_data(
         "dte.png",
         single(
             &format!("Dynamic transmission error ({label})"),
             panel(
-                time,
+                TIME,
                 "dynamic transmission error (µm)",
                 vec![Curve::new("", t_ms.clone(), dte_um.clone())],
             ),
@@ -171,7 +206,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         single(
             &format!("Mesh force ({label})"),
             panel(
-                time,
+                TIME,
                 "mesh force (N)",
                 vec![Curve::new(
                     "",
@@ -184,6 +219,10 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             .col("time_ms", t_ms)
             .col("mesh_force_n", s.meshes[0].mesh_force_n.clone()),
     );
+}
+
+/// The friction coefficient and force along the path of contact.
+fn add_path_figures(a: &mut Artifacts, p: &[PathSample], label: &str) {
     let rho_mm: Vec<f64> = p.iter().map(|x| x.rho1_m * 1e3).collect();
     let along = "pinion roll distance along the path of contact (mm)";
     let mu: Vec<f64> = p.iter().map(|x| x.friction_coefficient).collect();
@@ -216,11 +255,6 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
             .col("rho1_mm", rho_mm)
             .col("friction_force_n", friction),
     );
-    a.summary = dynamics_summary(model, r);
-    a.headline = dynamics_headline(&a.summary);
-    super::teeth::add_teeth_artifacts(model, &mut a);
-    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
-    a
 }
 
 /// The summary of one dynamic evaluation (the keys of `summary.json`, display units in
@@ -261,7 +295,10 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
         v.extend(m);
     }
     if let (Some(t), Some(meshes), Some(obj)) = (&model.train, meshes, v.as_object_mut()) {
-        obj.insert("meshes".into(), Value::Array(meshes.into_iter().map(|m| m.0).collect()));
+        obj.insert(
+            "meshes".into(),
+            Value::Array(meshes.into_iter().map(|m| m.0).collect()),
+        );
         obj.insert("train".into(), train_json(t, r));
     }
     v
@@ -270,7 +307,10 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
 /// Each mesh of a train: its summary keys (as `meshes` entries of `summary.json`: mesh
 /// frequency, mean and maximum force, DTE, dynamic factor, its pinion's y velocity and
 /// harmonics) and its [`ResponseSummary`].
-fn train_meshes(t: &crate::study::train::TrainModel, r: &DynamicResponse) -> Vec<(Value, ResponseSummary)> {
+fn train_meshes(
+    t: &crate::study::train::TrainModel,
+    r: &DynamicResponse,
+) -> Vec<(Value, ResponseSummary)> {
     use crate::dynamics::assembly::Dof;
     t.operating
         .meshes

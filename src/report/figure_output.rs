@@ -5,9 +5,22 @@
 //! so both validate alike; a problem names the argument as [`Arg`], which each front end
 //! spells its own way.
 
-use super::artifacts::{PLOT_H, PLOT_W};
 use super::plot::MAX_SIDE_PX;
 use crate::remedy::{Arg, Problem};
+
+/// Default plot size, px (one panel).
+pub const PLOT_W: u32 = 900;
+pub const PLOT_H: u32 = 420;
+
+/// Height of a figure of `panels` stacked panels, px: [`PLOT_H`] for one, 300 px a panel
+/// plus the title band for more.
+pub fn plot_height(panels: usize) -> u32 {
+    match u32::try_from(panels) {
+        Ok(0 | 1) => PLOT_H,
+        Ok(n) => 40 + 300 * n.min(20),
+        Err(_) => PLOT_H,
+    }
+}
 
 /// Accepted width of a one-panel figure, px: a 300 px plot area plus the axis labels and
 /// a legend band beside it (`plot::draw`) below, and [`MAX_SIDE_PX`] (the RGB buffer's

@@ -3,6 +3,18 @@
 use super::plot::{
     sequential_color, ColorBar, Figure, LineStyle, Marker, Panel, PanelKind, Series,
 };
+use crate::io::Table;
+
+/// A figure with the table behind it.
+pub struct Fig {
+    /// File stem, e.g. "fig04_dte".
+    pub file: String,
+    /// The paper's figure this one reproduces; 0: a figure beyond the paper.
+    pub paper_figure: u32,
+    pub caption: String,
+    pub figure: Figure,
+    pub table: Table,
+}
 
 /// A labelled curve (x, y), already in display units.
 pub struct Curve {

@@ -7,7 +7,7 @@ use super::artifacts::{embed_figures, Artifacts, EmbeddedFigure};
 use super::case::{case_json, is_paper_case, paper_case_differences};
 use super::comparison::{compare, comparison_json};
 use super::figure_output::FigureOutput;
-use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve};
+use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve, Fig};
 use super::html;
 use super::plot::{Figure, LineStyle};
 use super::run_report::{build_report, case_headline, comparison_headline, results_json};
@@ -24,17 +24,6 @@ use serde_json::json;
 
 /// Mesh periods shown in the time plots.
 const SHOWN_PERIODS: usize = 3;
-
-/// A figure with the table behind it.
-pub struct Fig {
-    /// File stem, e.g. "fig04_dte".
-    pub file: String,
-    /// The paper's figure this one reproduces; 0: a figure beyond the paper.
-    pub paper_figure: u32,
-    pub caption: String,
-    pub figure: Figure,
-    pub table: Table,
-}
 
 fn fig(file: &str, paper_figure: u32, figure: Figure, table: Table) -> Fig {
     Fig {

@@ -30,13 +30,14 @@ pub fn teeth_table(model: &Model, member: Member) -> Option<Table> {
     let i = member as usize;
     let e = &t.errors[i];
     let z = e.position_um.len();
-    let fault = |kind: FaultKind, f: &dyn Fn(&crate::config::case::FaultSpec) -> Option<f64>| {
+    // The sizes as the case file gives them (its units).
+    let fault = |kind: FaultKind, f: &dyn Fn(&crate::config::case::FaultTable) -> Option<f64>| {
         (0..z)
             .map(|tooth| {
                 t.faults
                     .iter()
-                    .filter(|x| x.gear == member && x.kind == kind && x.tooth as usize == tooth)
-                    .filter_map(f)
+                    .filter(|x| x.gear == member && x.kind() == kind && x.tooth == tooth)
+                    .filter_map(|x| f(x.table()))
                     // Not `sum()`: an empty f64 sum is -0.0, written "-0" for a healthy tooth.
                     .fold(0.0, |a, b| a + b)
             })
@@ -147,7 +148,7 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
     // the first faulty tooth, else the first pinion revolution (the table holds all).
     let t = model.teeth.as_ref()?;
     let [z1, z2] = tm.teeth();
-    let first_fault = t.faults.first().map(|f| f.tooth.max(0) as usize);
+    let first_fault = t.faults.first().map(|f| f.tooth);
     let (lo, hi) = match first_fault {
         Some(c0) => (c0.saturating_sub(2), (c0 + 6).min(tm.periods())),
         None => (0, z1.min(tm.periods())),
@@ -168,9 +169,9 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
             Member::Pinion => z1,
             Member::Gear => z2,
         };
-        for cycle in (f.tooth.max(0) as usize..hi).step_by(z.max(1)) {
+        for cycle in (f.tooth..hi).step_by(z.max(1)) {
             if cycle >= lo {
-                let label = format!("{} {} tooth {}", f.kind.name(), f.gear.name(), f.tooth);
+                let label = format!("{} {} tooth {}", f.kind().name(), f.gear.name(), f.tooth);
                 p.vlines.push(((cycle as f64 * period).to_degrees(), label));
             }
         }
@@ -399,13 +400,13 @@ pub fn add_tooth_wear_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifa
 pub fn run_teeth_figures(
     model: &Model,
     study: &crate::study::paper::PaperStudy,
-) -> Vec<super::paper::Fig> {
+) -> Vec<super::figures::Fig> {
     let mut figs = Vec::new();
     if model.teeth.is_none() {
         return figs;
     }
     let mut push = |file: &str, caption: String, (figure, table): (Figure, Table)| {
-        figs.push(super::paper::Fig {
+        figs.push(super::figures::Fig {
             file: file.into(),
             paper_figure: 0,
             caption,
@@ -469,7 +470,7 @@ pub fn teeth_section(
     for f in &t.faults {
         paragraphs.push(format!(
             "Fault: {} on {} tooth {}.",
-            f.kind.name(),
+            f.kind().name(),
             f.gear.name(),
             f.tooth
         ));

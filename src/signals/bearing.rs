@@ -11,8 +11,12 @@ use crate::dynamics::params::DynamicParams;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::evaluated_periods;
 
+/// The bearing forces on the housing, the inputs of a transfer path, in the order of
+/// [`BearingForces::force_n`]: pinion x, pinion y, gear x, gear y (the model's frame).
+pub const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
+
 /// Bearing forces on the housing over one period of a periodic response, N, in
-/// `signals::transfer::INPUTS` order, with the times of the samples.
+/// [`INPUTS`] order, with the times of the samples.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BearingForces {
     pub time_s: Vec<f64>,

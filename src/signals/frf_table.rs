@@ -19,7 +19,7 @@
 //! taken as zero (the table says nothing there, and the caller warns when the recorded
 //! band reaches beyond it).
 
-use super::transfer::INPUTS;
+use super::bearing::INPUTS;
 use realfft::num_complex::Complex64;
 
 /// One FRF: frequencies (ascending) and complex accelerances.

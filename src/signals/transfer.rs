@@ -19,17 +19,14 @@ use super::frf_table::FrfTable;
 use realfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
-/// The bearing-force inputs of a transfer path, in `super::bearing` order.
-pub const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
-
 /// One structural mode of the housing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StructuralMode {
     pub frequency_hz: f64,
     /// Viscous modal damping ratio zeta_r.
     pub damping_ratio: f64,
-    /// Modal constant G_rsj per sensor s (outer) and input j (inner, [`INPUTS`] order),
-    /// 1/kg (m/s^2 per N far above the mode).
+    /// Modal constant G_rsj per sensor s (outer) and input j (inner,
+    /// [`INPUTS`](super::bearing::INPUTS) order), 1/kg (m/s^2 per N far above the mode).
     pub gains_per_kg: Vec<[f64; 4]>,
 }
 
@@ -64,7 +61,8 @@ pub fn modal_accelerance(
 }
 
 impl TransferPath {
-    /// Accelerance from input `j` ([`INPUTS`] order) to sensor `s` at `f_hz`, m/s^2 per N.
+    /// Accelerance from input `j` ([`INPUTS`](super::bearing::INPUTS) order) to sensor `s`
+    /// at `f_hz`, m/s^2 per N.
     pub fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         match &self.model {
             PathModel::Modal(modes) => modes

@@ -10,7 +10,6 @@ pub mod paper;
 pub mod signal_record;
 pub mod sweep;
 pub mod teeth;
-pub mod teeth_budget;
 pub mod train;
 pub mod transient_signals;
 pub mod wear_check;

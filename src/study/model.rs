@@ -7,10 +7,11 @@ use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::{GearSystem, GearSystemParts};
-use crate::dynamics::params::DynamicParams;
+use crate::dynamics::params::{DynamicParams, OperatingPoint};
+use crate::dynamics::period_search::{DynamicsError, SteadyStateSettings};
 use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
-use crate::dynamics::steady::{solve_steady_state_from, DynamicsError, SteadyStateSettings};
+use crate::dynamics::steady::solve_steady_state_from;
 use crate::dynamics::tooth_mesh::ToothMesh;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
@@ -63,11 +64,16 @@ pub struct Model {
 /// 900 rpm: 54 000 rpm) lands far above it.
 pub const MAX_PITCH_LINE_VELOCITY_M_PER_S: f64 = 40.0;
 
-/// A warning when the pinion's pitch-line velocity, v = 2 pi f r_p, is above
-/// [`MAX_PITCH_LINE_VELOCITY_M_PER_S`] (the case runs; the speed may be meant).
-pub fn pitch_line_velocity_warning(case: &Case, pair: &GearPair) -> Option<String> {
+/// A warning when the pinion's pitch-line velocity, v = Omega_p r_p (`op`: the case's
+/// operating point on `pair`), is above [`MAX_PITCH_LINE_VELOCITY_M_PER_S`] (the case runs;
+/// the speed may be meant).
+pub fn pitch_line_velocity_warning(
+    case: &Case,
+    pair: &GearPair,
+    op: &OperatingPoint,
+) -> Option<String> {
     let f = case.operating.input_speed_hz;
-    let v = 2.0 * std::f64::consts::PI * f * pair.pinion.pitch_radius_m;
+    let v = op.pinion_speed_rad_s * pair.pinion.pitch_radius_m;
     (v > MAX_PITCH_LINE_VELOCITY_M_PER_S).then(|| {
         format!(
             "`operating.input_speed_hz` = {f} Hz ({:.0} rpm) gives a pitch-line velocity of {v:.1} m/s on this pair, above the {MAX_PITCH_LINE_VELOCITY_M_PER_S} m/s of any spur gear; if the speed was meant in rpm, give it as `operating.input_speed_rpm`",
@@ -154,7 +160,7 @@ impl Model {
             case,
             &pair.blank_estimates(case.dynamics.blank_density_kg_per_m3),
         ));
-        warnings.extend(pitch_line_velocity_warning(case, &pair));
+        warnings.extend(pitch_line_velocity_warning(case, &pair, &params.operating));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
         let teeth = ToothInputs::from_case(

@@ -3,8 +3,8 @@
 
 use super::model::Model;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
-use crate::dynamics::steady::DynamicsError;
 use crate::dynamics::summary::ResponseSummary;
 use crate::signals::analysis::{analyse, ChannelAnalysis};
 use crate::signals::bearing::bearing_forces;

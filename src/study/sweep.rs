@@ -2,13 +2,14 @@
 //! each case reduced to one row of headline results.
 //!
 //! Pieces: [`plan`] (axes with typed values, case ids, shards), [`case_run`] (one case ->
-//! one row of [`CaseResults`], and the record it leaves on disk so a rerun can skip it),
-//! [`continuation`] (a one-axis sweep run in order, each point warm-started from the
-//! previous one), [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds where a
-//! mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
+//! one row of [`CaseResults`]), [`case_record`] (the record it leaves on disk so a rerun
+//! can skip it), [`continuation`] (a one-axis sweep run in order, each point warm-started
+//! from the previous one), [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
+//! where a mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
 //! run in parallel or along branches, in memory or to a folder with its case records,
 //! progress) is the job `app::sweep::SweepJob`, the one path of both front ends.
 
+pub mod case_record;
 pub mod case_run;
 pub mod continuation;
 pub mod plan;
@@ -16,9 +17,9 @@ pub mod resonance;
 pub mod table;
 pub mod verify;
 
+pub use case_record::{CaseRecord, ContinuationLink};
 pub use case_run::{
-    run_case, wear_results, CaseError, CaseOutcome, CaseRecord, CaseResults, ContinuationLink,
-    DynamicsRow, SweepRun, WearEnd,
+    run_case, wear_results, CaseError, CaseOutcome, CaseResults, DynamicsRow, SweepRun, WearEnd,
 };
 pub use continuation::{Branch, Continuation, ContinuationPlan};
 pub use plan::{parse_axis, parse_vary, Axis, AxisValue, Shard, SweepPlan};

@@ -77,19 +77,24 @@ impl TrainModel {
         let mut stages = Vec::new();
         for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
             let sc = stage_case(case, spec, Some(&operating.meshes[k]));
-            problems.extend(
-                super::domain::domain_problems(&sc, &pair)
-                    .iter()
-                    .map(|m| at_stage(k, format!("(its pinion carries {:.4} N m) {m}", operating.meshes[k].pinion_torque_nm))),
-            );
+            problems.extend(super::domain::domain_problems(&sc, &pair).iter().map(|m| {
+                at_stage(
+                    k,
+                    format!(
+                        "(its pinion carries {:.4} N m) {m}",
+                        operating.meshes[k].pinion_torque_nm
+                    ),
+                )
+            }));
             let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-            let mesh = match MeshStiffness::with_fillet(&pair, elastic, n_table, fillet_settings(&sc)) {
-                Ok(m) => m,
-                Err(e) => {
-                    problems.extend(e.0.iter().map(|m| at_stage(k, m)));
-                    continue;
-                }
-            };
+            let mesh =
+                match MeshStiffness::with_fillet(&pair, elastic, n_table, fillet_settings(&sc)) {
+                    Ok(m) => m,
+                    Err(e) => {
+                        problems.extend(e.0.iter().map(|m| at_stage(k, m)));
+                        continue;
+                    }
+                };
             let d = &sc.dynamics;
             let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
             let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
@@ -134,7 +139,11 @@ impl TrainModel {
     /// with the motor slip boundary, 0 with an imposed speed.
     fn free_modes(&self) -> Vec<String> {
         let asm = &self.assembly;
-        let k_mean: Vec<f64> = self.stages.iter().map(|s| s.mesh.mean_stiffness_n_per_m()).collect();
+        let k_mean: Vec<f64> = self
+            .stages
+            .iter()
+            .map(|s| s.mesh.mean_stiffness_n_per_m())
+            .collect();
         let k = asm.stiffness_with_meshes(&k_mean);
         let inv = asm.inverse_masses();
         let free: Vec<usize> = (0..asm.len()).filter(|i| inv[*i] > 0.0).collect();
@@ -152,7 +161,11 @@ impl TrainModel {
         if zero.len() <= expected {
             return Vec::new();
         }
-        zero.sort_by(|a, b| eig.eigenvalues[*a].abs().total_cmp(&eig.eigenvalues[*b].abs()));
+        zero.sort_by(|a, b| {
+            eig.eigenvalues[*a]
+                .abs()
+                .total_cmp(&eig.eigenvalues[*b].abs())
+        });
         zero.iter()
             .skip(expected)
             .map(|&i| {
@@ -236,9 +249,9 @@ fn stage_elements(case: &Case, stages: &[Stage]) -> Vec<StageElements> {
             base_radius_m: [s.pair.pinion.base_radius_m, s.pair.gear.base_radius_m],
             pressure_angle_rad: s.pair.operating_pressure_angle_rad,
             centre_line_rad: spec.centre_line_deg.unwrap_or(0.0).to_radians(),
-            shaft: spec.shaft_torsional_stiffness_nm_per_rad.map(|k| {
-                (k, spec.shaft_torsional_damping_nm_s_per_rad.unwrap_or(0.0))
-            }),
+            shaft: spec
+                .shaft_torsional_stiffness_nm_per_rad
+                .map(|k| (k, spec.shaft_torsional_damping_nm_s_per_rad.unwrap_or(0.0))),
         })
         .collect()
 }

@@ -4,10 +4,11 @@
 //! recorded (`signals::transient_record`).
 
 use super::model::Model;
-use crate::config::case::{Case, SpeedBoundary, TorqueShaft};
+use crate::config::case::{Case, LoadPoint, SpeedBoundary, TorqueShaft};
 use crate::dynamics::drive::{Drive, Tabulated};
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::steady::DynamicsError;
+use crate::dynamics::params::OperatingPoint;
+use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::transient::integrate_transient;
 use crate::signals::antialias::OVERSAMPLING;
 use crate::signals::bearing::bearing_forces;
@@ -39,13 +40,22 @@ pub fn duration_s(case: &Case, setup: &ChainSetup) -> f64 {
     }
 }
 
-/// The drive of the case over `duration` s (`dynamics::drive`): the ramp from the
+/// The drive of the model's case over `duration` s (`dynamics::drive`): the ramp from the
 /// operating speed to `signals.ramp_end_speed_hz`, and the load fluctuation moved to the
-/// shaft where the load acts (through the base radii, as the mean load is).
-pub fn drive_of(case: &Case, model: &Model, duration: f64) -> Drive {
+/// shaft where the load acts (through the base radii, as the mean load is). Both ends'
+/// speeds are the `OperatingPoint`'s of the case at each.
+pub fn drive_of(model: &Model, duration: f64) -> Drive {
+    let case = &model.case;
     let s = &case.signals;
-    let w0 = 2.0 * PI * case.operating.input_speed_hz;
-    let w1 = s.ramp_end_speed_hz.map_or(w0, |f| 2.0 * PI * f);
+    let w0 = model.params.operating.pinion_speed_rad_s;
+    let w1 = s.ramp_end_speed_hz.map_or(w0, |f| {
+        let mut end = case.clone();
+        end.set_load_point(LoadPoint {
+            input_speed_hz: f,
+            ..case.load_point()
+        });
+        OperatingPoint::of(&end.operating, &model.pair).pinion_speed_rad_s
+    });
     let torque = (s.torque_fluctuation_rms_nm > 0.0).then(|| {
         let p = &model.params;
         // Torque on the shaft it is given on -> on the shaft where the load acts.
@@ -90,7 +100,7 @@ pub fn transient_clean_record(
 ) -> Result<(Record, Vec<f64>), DynamicsError> {
     let case = &model.case;
     let duration = duration_s(case, setup);
-    let drive = drive_of(case, model, duration);
+    let drive = drive_of(model, duration);
     // The steady state at the starting speed: the start state and the lead-in.
     let r0 = model.dynamic(wear, &ExternalError::none())?;
     let lead = bearing_forces(&r0, &model.params);
@@ -99,7 +109,10 @@ pub fn transient_clean_record(
     // velocity scale (`period::state_scales`) suits the whole ramp.
     let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);
     let mut fast_case = case.clone();
-    fast_case.operating.input_speed_hz = fastest;
+    fast_case.set_load_point(LoadPoint {
+        input_speed_hz: fastest,
+        ..case.load_point()
+    });
     let fast = Model::from_case(&fast_case).map_err(|e| DynamicsError::Setting(e.to_string()))?;
     let gap = wear.pair_gap(&fast.grid);
     let none = ExternalError::none();

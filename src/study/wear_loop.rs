@@ -23,8 +23,8 @@
 
 use super::model::Model;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
-use crate::dynamics::steady::DynamicsError;
 use crate::dynamics::summary::ResponseSummary;
 use crate::wear::per_tooth::per_tooth_wear;
 use crate::wear::{per_cycle_wear, ToothWear, WearIncrement, WearState};

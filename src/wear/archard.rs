@@ -8,7 +8,7 @@
 //! each pinion tooth once and each gear tooth z1/z2 times on average, hence the factor
 //! z1/z2 on the gear (eq. 17, docs/PAPER_NOTES.md: eq. 16 has a typo).
 
-use super::profile_wear::ToothWear;
+use super::tooth_wear::ToothWear;
 use crate::dynamics::response::{interpolate_path, PathSample};
 use crate::geometry::ProfileGrid;
 

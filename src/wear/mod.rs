@@ -5,7 +5,9 @@ pub mod archard;
 pub mod per_tooth;
 pub mod profile_wear;
 pub mod roughness;
+pub mod tooth_wear;
 
 pub use archard::{per_cycle_wear, WearIncrement};
-pub use profile_wear::{ToothWear, WearState};
+pub use profile_wear::WearState;
 pub use roughness::RoughnessLaw;
+pub use tooth_wear::ToothWear;

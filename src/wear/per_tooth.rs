@@ -18,7 +18,7 @@
 //! increment of identical teeth.
 
 use super::archard::{per_cycle_wear, WearIncrement};
-use super::profile_wear::{mean_profile, ToothWear};
+use super::tooth_wear::{mean_profile, ToothWear};
 use crate::dynamics::response::PathSample;
 use crate::dynamics::tooth_mesh::lcm;
 use crate::geometry::ProfileGrid;

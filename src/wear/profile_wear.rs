@@ -7,6 +7,7 @@ use crate::stiffness::mesh::MeshStiffness;
 use serde::{Deserialize, Serialize};
 
 use super::archard::WearIncrement;
+use super::tooth_wear::{max_of, mean_profile, ToothWear};
 
 /// Accumulated wear depth at each grid point (pinion point i and its conjugate gear
 /// point i), m, after `cycles` pinion cycles.
@@ -20,42 +21,6 @@ pub struct WearState {
     pub gear_m: Vec<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub teeth: Option<ToothWear>,
-}
-
-/// Wear of every tooth on the shared grid (tooth t's profile at `pinion_m[t]`), m.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-pub struct ToothWear {
-    pub pinion_m: Vec<Vec<f64>>,
-    pub gear_m: Vec<Vec<f64>>,
-}
-
-impl ToothWear {
-    /// No wear on z1 pinion and z2 gear teeth of `points` grid points.
-    pub fn new(points: usize, z1: usize, z2: usize) -> Self {
-        Self {
-            pinion_m: vec![vec![0.0; points]; z1],
-            gear_m: vec![vec![0.0; points]; z2],
-        }
-    }
-
-    /// Largest depth on any tooth of either gear, m.
-    pub fn max_m(&self) -> f64 {
-        max_of(&self.pinion_m).max(max_of(&self.gear_m))
-    }
-}
-
-/// Largest entry of every profile, m (0 for none).
-pub fn max_of(profiles: &[Vec<f64>]) -> f64 {
-    profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))
-}
-
-/// Mean profile of several teeth.
-pub fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
-    let n = profiles.first().map_or(0, Vec::len);
-    let z = profiles.len().max(1) as f64;
-    (0..n)
-        .map(|i| profiles.iter().map(|p| p[i]).sum::<f64>() / z)
-        .collect()
 }
 
 impl WearState {

@@ -81,7 +81,11 @@ impl Elements {
         for (k, s) in stages.iter().enumerate() {
             let l = &s.lumped;
             let (p, g) = (pinion_body(k), gear_body(k));
-            bodies.push(gear(name("pinion", k), l.mass_pinion_kg, l.inertia_pinion_kg_m2));
+            bodies.push(gear(
+                name("pinion", k),
+                l.mass_pinion_kg,
+                l.inertia_pinion_kg_m2,
+            ));
             bodies.push(gear(name("gear", k), l.mass_gear_kg, l.inertia_gear_kg_m2));
             for (body, kb, cb) in [
                 (

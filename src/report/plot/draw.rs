@@ -14,7 +14,10 @@ use super::layout::{free_corner, sample_polyline, stack_labels, PanelLayout, Rec
 use super::legend::{
     draw_bar, draw_legend, marker_of, measure_bar, measure_legend, series_color, GAP,
 };
-use super::{ensure_font, Figure, LineStyle, Marker, Panel, PanelKind, PlotError, Series, FONT};
+use super::ticks::tick_label;
+use super::{
+    draw_err, ensure_font, Figure, LineStyle, Marker, Panel, PanelKind, PlotError, Series, FONT,
+};
 
 /// Narrowest plot area left beside a legend or colour-bar band, px; below it the band is
 /// left out (a legend is dropped rather than drawn over the data).
@@ -22,10 +25,6 @@ const MIN_PLOT_BESIDE_BAND_PX: u32 = 300;
 
 /// Font size of marker labels, px.
 const LABEL_FONT_PX: u32 = 12;
-
-pub fn draw_err(e: impl std::fmt::Display) -> PlotError {
-    PlotError::Draw(e.to_string())
-}
 
 pub fn draw_figure<DB>(
     root: &DrawingArea<DB, Shift>,
@@ -132,18 +131,6 @@ fn padded_range(values: impl IntoIterator<Item = f64>, log: bool) -> (f64, f64) 
     }
     let margin = 0.05 * (hi - lo);
     (lo - margin, hi + margin)
-}
-
-/// Tick text: rounded to 9 significant digits (hides float noise such as 0.30000000000000004
-/// and "-0.0"), "0" for |v| <= `zero_below` (plotters' ticks at zero can come out as
-/// ~1e-16), shortest form, exponent notation outside [1e-3, 1e5).
-pub fn tick_label(v: f64, zero_below: f64) -> String {
-    let r: f64 = format!("{v:.8e}").parse().unwrap_or(v);
-    match r.abs() {
-        a if a <= zero_below => "0".to_string(),
-        a if (1e-3..1e5).contains(&a) => format!("{r}"),
-        _ => format!("{r:e}"),
-    }
 }
 
 fn draw_panel<DB>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<PanelLayout, PlotError>
@@ -514,14 +501,5 @@ mod tests {
         let inf = f64::INFINITY;
         let (lo, hi) = padded_range([f64::NAN, inf, -f64::MAX, f64::MAX], false);
         assert!(lo.is_finite() && hi.is_finite() && hi > lo);
-    }
-
-    #[test]
-    fn tick_labels_hide_float_noise() {
-        assert_eq!(tick_label(0.1 + 0.2, 0.0), "0.3");
-        assert_eq!(tick_label(-0.0, 0.0), "0");
-        assert_eq!(tick_label(500.0, 0.0), "500");
-        assert_eq!(tick_label(2.5e-6, 0.0), "2.5e-6");
-        assert_eq!(tick_label(2.220446049250313e-16, 1e-9), "0"); // noise on a unit-scale axis
     }
 }

@@ -6,9 +6,9 @@ use plotters::coord::Shift;
 use plotters::element::DynElement;
 use plotters::prelude::*;
 
-use super::draw::{draw_err, tick_label};
 use super::layout::{sequential_color, Rect};
-use super::{ColorBar, LineStyle, Marker, Panel, PanelKind, PlotError, Series, FONT};
+use super::ticks::tick_label;
+use super::{draw_err, ColorBar, LineStyle, Marker, Panel, PanelKind, PlotError, Series, FONT};
 
 /// Padding inside a legend and gap between a band and the plot area, px.
 pub const PAD: i32 = 6;

@@ -12,6 +12,7 @@ mod dash;
 mod draw;
 pub mod layout;
 mod legend;
+mod ticks;
 
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -59,6 +60,11 @@ pub enum PlotError {
     Draw(String),
     #[error("I/O error on {}: {}", .0.display(), .1)]
     Io(PathBuf, #[source] std::io::Error),
+}
+
+/// A drawing backend's error as a [`PlotError`].
+fn draw_err(e: impl std::fmt::Display) -> PlotError {
+    PlotError::Draw(e.to_string())
 }
 
 /// Line style of one series.

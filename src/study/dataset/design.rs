@@ -163,42 +163,91 @@ pub fn parse_design(
 ) -> Result<DatasetDesign, DesignErrors> {
     let f: DesignFile =
         toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message().trim())])?;
-    let mut p = Vec::new();
     let key = |k: &str| format!("{name}: `{k}`");
+    let (base, base_case) = base_case(&f, name, read)?;
+    let mut p = Vec::new();
+    let r = &f.run_to_failure;
+    let states = state_choice(r, &key, &mut p);
+    let max_cycles = r.max_cycles.unwrap_or(base_case.wear.total_cycles);
+    let wear_limit_um = r.wear_limit_um.unwrap_or(10.0);
+    p.extend(run_to_failure_problems(
+        &states,
+        max_cycles,
+        wear_limit_um,
+        &key,
+    ));
+    let speeds_hz = axis(
+        &key("operating.input_speed_hz"),
+        &f.operating.input_speed_hz,
+        base_case.operating.input_speed_hz,
+        (1e-6, 1000.0),
+        &mut p,
+    );
+    let torques_nm = axis(
+        &key("operating.load_torque_nm"),
+        &f.operating.load_torque_nm,
+        base_case.operating.load_torque_nm,
+        (1e-3, 1e7),
+        &mut p,
+    );
+    let rec = &f.records;
+    p.extend(records_problems(rec, &key));
+    let conditions = conditions(&f, &base, name, &mut p);
+    if !p.is_empty() {
+        return Err(p);
+    }
+    Ok(DatasetDesign {
+        seed: f.seed,
+        transfer_path: f.transfer_path.map(Into::into),
+        states,
+        max_cycles,
+        wear_limit_um,
+        speeds_hz,
+        torques_nm,
+        noise_realisations: rec.noise_realisations as usize,
+        csv: rec.csv,
+        disk_budget_gib: rec.disk_budget_gib,
+        conditions,
+        text: text.to_owned(),
+    })
+}
+
+/// The design's base case: the `case` file's TOML tree (the conditions merge into it)
+/// and the case it gives with the design's `set` overrides.
+fn base_case(
+    f: &DesignFile,
+    name: &str,
+    read: &dyn Fn(&str) -> Result<String, String>,
+) -> Result<(Table, Case), DesignErrors> {
+    let key = format!("{name}: `case`");
     let base_text = match &f.case {
-        Some(path) => match read(path) {
-            Ok(t) => t,
-            Err(e) => {
-                return Err(vec![format!(
-                    "{}: cannot read the case file {path}: {e}",
-                    key("case")
-                )])
-            }
-        },
+        Some(path) => {
+            read(path).map_err(|e| vec![format!("{key}: cannot read the case file {path}: {e}")])?
+        }
         None => String::new(),
     };
-    let base: Table = match toml::from_str(&base_text) {
-        Ok(t) => t,
-        Err(e) => {
-            return Err(vec![format!(
-                "{}: the case file is not valid TOML: {}",
-                key("case"),
-                e.message().trim()
-            )])
-        }
-    };
-    let base_case = match load_case(&base_text, &f.set) {
-        Ok(c) => c,
-        Err(e) => {
-            return Err(e
-                .problems
-                .iter()
-                .map(|m| format!("{name}: case: {m}"))
-                .collect())
-        }
-    };
-    let r = &f.run_to_failure;
-    let states = match (&r.states, &r.cycles) {
+    let base: Table = toml::from_str(&base_text).map_err(|e| {
+        vec![format!(
+            "{key}: the case file is not valid TOML: {}",
+            e.message().trim()
+        )]
+    })?;
+    let base_case = load_case(&base_text, &f.set).map_err(|e| {
+        e.problems
+            .iter()
+            .map(|m| format!("{name}: case: {m}"))
+            .collect::<Vec<_>>()
+    })?;
+    Ok((base, base_case))
+}
+
+/// Which states of each trajectory are recorded (`run_to_failure.states` or `.cycles`).
+fn state_choice(
+    r: &RunToFailureFile,
+    key: &dyn Fn(&str) -> String,
+    p: &mut Vec<String>,
+) -> StateChoice {
+    match (&r.states, &r.cycles) {
         (Some(_), Some(_)) => {
             p.push(format!(
                 "{} and `run_to_failure.cycles` are both given: choose one",
@@ -227,15 +276,25 @@ pub fn parse_design(
             StateChoice::Cycles(c.clone())
         }
         (None, None) => StateChoice::Count(1),
-    };
-    let max_cycles = r.max_cycles.unwrap_or(base_case.wear.total_cycles);
+    }
+}
+
+/// Problems of the trajectories' length and failure limit: `max_cycles` in range and
+/// beyond the last recorded state, `wear_limit_um` in range.
+fn run_to_failure_problems(
+    states: &StateChoice,
+    max_cycles: f64,
+    wear_limit_um: f64,
+    key: &dyn Fn(&str) -> String,
+) -> Vec<String> {
+    let mut p = Vec::new();
     if !(1.0..=1e11).contains(&max_cycles) {
         p.push(format!(
             "{} = {max_cycles} is invalid: expected a number in [1, 1e11]",
             key("run_to_failure.max_cycles")
         ));
     }
-    if let StateChoice::Cycles(c) = &states {
+    if let StateChoice::Cycles(c) = states {
         if c.last().is_some_and(|l| *l > max_cycles) {
             p.push(format!(
                 "{} ends at {} cycles, beyond `run_to_failure.max_cycles` = {max_cycles}",
@@ -244,49 +303,39 @@ pub fn parse_design(
             ));
         }
     }
-    let wear_limit_um = r.wear_limit_um.unwrap_or(10.0);
     if !(wear_limit_um > 0.0 && wear_limit_um <= 1000.0) {
         p.push(format!(
             "{} = {wear_limit_um} is invalid: expected a number in (0, 1000]",
             key("run_to_failure.wear_limit_um")
         ));
     }
-    let axis = |k: &str,
-                v: &Option<Vec<f64>>,
-                dflt: f64,
-                lo: f64,
-                hi: f64,
-                p: &mut Vec<String>|
-     -> Vec<f64> {
-        match v {
-            None => vec![dflt],
-            Some(v) if v.is_empty() || v.iter().any(|x| !(lo..=hi).contains(x)) => {
-                p.push(format!(
-                    "{} = {v:?} is invalid: expected a non-empty list of numbers in [{lo}, {hi}]",
-                    key(k)
-                ));
-                vec![dflt]
-            }
-            Some(v) => v.clone(),
+    p
+}
+
+/// An operating axis (`shown`: its key as messages name it): the values given, each in
+/// [lo, hi], or the base case's one value `dflt`.
+fn axis(
+    shown: &str,
+    v: &Option<Vec<f64>>,
+    dflt: f64,
+    (lo, hi): (f64, f64),
+    p: &mut Vec<String>,
+) -> Vec<f64> {
+    match v {
+        None => vec![dflt],
+        Some(v) if v.is_empty() || v.iter().any(|x| !(lo..=hi).contains(x)) => {
+            p.push(format!(
+                "{shown} = {v:?} is invalid: expected a non-empty list of numbers in [{lo}, {hi}]"
+            ));
+            vec![dflt]
         }
-    };
-    let speeds_hz = axis(
-        "operating.input_speed_hz",
-        &f.operating.input_speed_hz,
-        base_case.operating.input_speed_hz,
-        1e-6,
-        1000.0,
-        &mut p,
-    );
-    let torques_nm = axis(
-        "operating.load_torque_nm",
-        &f.operating.load_torque_nm,
-        base_case.operating.load_torque_nm,
-        1e-3,
-        1e7,
-        &mut p,
-    );
-    let rec = &f.records;
+        Some(v) => v.clone(),
+    }
+}
+
+/// Problems of `[records]`: the noise realisations and the disk budget out of range.
+fn records_problems(rec: &RecordsFile, key: &dyn Fn(&str) -> String) -> Vec<String> {
+    let mut p = Vec::new();
     if !(1..=1_000_000).contains(&rec.noise_realisations) {
         p.push(format!(
             "{} = {} is invalid: expected a whole number in [1, 1000000]",
@@ -301,6 +350,14 @@ pub fn parse_design(
             rec.disk_budget_gib
         ));
     }
+    p
+}
+
+/// The conditions (one healthy condition when the design gives none), each its name
+/// checked and its case merged into `base` and loaded with the design's `set`; their
+/// problems pushed to `p`. Compared with each other (healthy against faulty), they share
+/// one load-sharing law.
+fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> Vec<Condition> {
     let mut conditions = Vec::new();
     let files = if f.condition.is_empty() {
         vec![ConditionFile {
@@ -343,28 +400,11 @@ pub fn parse_design(
             Err(e) => p.extend(e.problems.iter().map(|m| format!("{at}: {m}"))),
         }
     }
-    if !p.is_empty() {
-        return Err(p);
-    }
-    // The conditions are compared with each other (healthy against faulty): one law.
     let any_per_tooth = conditions.iter().any(|c| c.case.has_per_tooth_inputs());
     for c in &mut conditions {
         c.case.share_one_law(any_per_tooth);
     }
-    Ok(DatasetDesign {
-        seed: f.seed,
-        transfer_path: f.transfer_path.map(Into::into),
-        states,
-        max_cycles,
-        wear_limit_um,
-        speeds_hz,
-        torques_nm,
-        noise_realisations: rec.noise_realisations as usize,
-        csv: rec.csv,
-        disk_budget_gib: rec.disk_budget_gib,
-        conditions,
-        text: text.to_owned(),
-    })
+    conditions
 }
 
 #[cfg(test)]

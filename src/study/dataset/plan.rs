@@ -10,6 +10,8 @@
 
 pub use crate::study::sweep::Shard;
 
+use super::design::{DatasetDesign, StateChoice};
+
 /// Where a physical state sits in the design.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StateIndex {
@@ -76,6 +78,20 @@ pub fn splitmix64(mut z: u64) -> u64 {
 /// The noise seed of record `id` under the design seed (module docs).
 pub fn record_seed(design_seed: u64, id: usize) -> u64 {
     splitmix64(splitmix64(design_seed) ^ id as u64) & ((1u64 << 53) - 1)
+}
+
+/// The plan's axis sizes.
+pub fn plan_of(d: &DatasetDesign) -> Plan {
+    Plan {
+        conditions: d.conditions.len(),
+        states: match &d.states {
+            StateChoice::Count(n) => *n,
+            StateChoice::Cycles(c) => c.len(),
+        },
+        speeds: d.speeds_hz.len(),
+        loads: d.torques_nm.len(),
+        realisations: d.noise_realisations,
+    }
 }
 
 #[cfg(test)]

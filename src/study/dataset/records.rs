@@ -7,7 +7,7 @@ use super::plan::{record_seed, Plan, StateIndex};
 use super::trajectory::Trajectory;
 use crate::config::teeth::Member;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::steady::DynamicsError;
+use crate::dynamics::period_search::DynamicsError;
 use crate::signals::analysis::{analyse, ChannelIndicators};
 use crate::signals::record::{add_noise, Record};
 use crate::signals::setup::ChainSetup;

@@ -5,7 +5,8 @@
 //! column (`up` or `down`) right after `case_id`. Ordinary sweeps have no such column, so
 //! their tables are the same as before continuation existed.
 
-use super::case_run::{CaseRecord, CaseResults, SweepRun};
+use super::case_record::CaseRecord;
+use super::case_run::{CaseResults, SweepRun};
 use super::continuation::Branch;
 use std::collections::BTreeMap;
 

@@ -2,7 +2,8 @@
 //! checksum can be recomputed by whoever edits it, so a sample of the finished cases is
 //! run again and must give the recorded results bit for bit. Each costs one case.
 
-use super::case_run::{run_case, CaseRecord, SweepRun};
+use super::case_record::CaseRecord;
+use super::case_run::{run_case, SweepRun};
 use crate::config::Case;
 use crate::study::wear_check::random_sample;
 

@@ -29,44 +29,18 @@ use super::dir::{remove_tree, Dir, Entry};
 use super::error::OutputError;
 use super::lock::{LockError, OutputLock};
 use super::set_state::{
-    check_replaceable, is_recorded_output, is_recorded_place, read_all, read_state, Ours,
-    OutputRecord, PlaceRecord, Recognise, SetState,
+    check_replaceable, is_recorded_output, read_all, read_state, Ours, PlaceRecord, Recognise,
+    SetState,
 };
-use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
+mod publish;
+
+pub use publish::{Manifest, ManifestEntry, INCOMPLETE_MARKER, UNPUBLISHED_PREFIX};
+
 const STAGING_PREFIX: &str = ".gearwear-staging-";
-/// Name of the marker of a folder whose publishing was interrupted.
-pub const INCOMPLETE_MARKER: &str = "INCOMPLETE";
-/// First words of the marker (how gearwear recognises its own).
-const MARKER_TEXT: &str = "gearwear was interrupted while publishing";
-/// Prefix of the folder that keeps a run's results when they could not be published.
-pub const UNPUBLISHED_PREFIX: &str = "gearwear-unpublished-";
-
-/// One published file.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
-pub struct ManifestEntry {
-    /// Path relative to the output folder, `/`-separated.
-    pub path: String,
-    pub sha256: String,
-    pub bytes: u64,
-}
-
-/// What a published set holds (for people and scripts; gearwear acts on its state file).
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Manifest {
-    pub program: String,
-    pub version: String,
-    pub command: String,
-    /// Outputs of the run, with their checksums.
-    pub files: Vec<ManifestEntry>,
-    /// State files the run keeps for resuming (checkpoints, sweep cases), by name.
-    #[serde(default)]
-    pub state_files: Vec<String>,
-}
-
 /// Whether a folder holding another command's set may be replaced.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OtherSet {
@@ -123,10 +97,6 @@ fn check_relative(rel: &str) -> Result<(), OutputError> {
             None,
         ))
     }
-}
-
-fn is_marker(b: &[u8]) -> bool {
-    b.starts_with(MARKER_TEXT.as_bytes())
 }
 
 fn is_state_format(b: &[u8]) -> bool {
@@ -398,189 +368,6 @@ impl OutputDir {
     /// earlier run) as part of this set.
     pub fn keep_state(&mut self, rel: &str) {
         self.state.insert(rel.to_owned());
-    }
-
-    /// Publish the staged files as the folder's new set; returns its manifest.
-    pub fn publish(mut self) -> Result<Manifest, OutputError> {
-        // 1. Every target must be free, or gearwear's own as recorded.
-        let mut conflicts = Vec::new();
-        let mut targets = Vec::new();
-        for rel in self.staged.keys() {
-            let checked = self.root.descend(rel, true).and_then(|(dir, name)| {
-                check_replaceable(&dir, &name, Ours::Recorded(self.previous.output(rel)))?;
-                Ok((dir, name))
-            });
-            match checked {
-                Ok((dir, name)) => targets.push((rel.clone(), dir, name)),
-                Err(e) => conflicts.push(e.to_string()),
-            }
-        }
-        for (_, to, recognise) in &self.at_publish {
-            let ours = Ours::Format(self.previous.state_file(to), *recognise);
-            let checked = self
-                .root
-                .descend(to, true)
-                .and_then(|(dir, name)| check_replaceable(&dir, &name, ours));
-            if let Err(e) = checked {
-                conflicts.push(e.to_string());
-            }
-        }
-        for (name, ours) in [
-            (
-                self.manifest_name.as_str(),
-                Ours::Recorded(self.previous.output(&self.manifest_name)),
-            ),
-            (INCOMPLETE_MARKER, Ours::Format(None, is_marker)),
-        ] {
-            if let Err(e) = check_replaceable(&self.root, name, ours) {
-                conflicts.push(e.to_string());
-            }
-        }
-        if !conflicts.is_empty() {
-            conflicts.sort();
-            conflicts.dedup();
-            return Err(self.keep_unpublished(conflicts));
-        }
-        // 2. Mark, move into place, rename the logs.
-        let marker = format!(
-            "{MARKER_TEXT} its results into this folder (`gearwear {}`): the files here may belong to different runs. Run the command again.\n",
-            self.command
-        );
-        let marker_entry =
-            self.root
-                .write_new(&self.staging, INCOMPLETE_MARKER, marker.as_bytes())?;
-        let mut st = SetState::new(self.root.entry_self()?.inode, &self.command);
-        let mut files = Vec::with_capacity(targets.len() + 1);
-        for (rel, dir, name) in &targets {
-            let (sdir, sname) = self.staging.descend(rel, false)?;
-            sdir.rename_to(&sname, dir, name)?;
-            let s = &self.staged[rel];
-            st.outputs.push(OutputRecord {
-                path: rel.clone(),
-                inode: s.entry.inode,
-                bytes: s.bytes,
-                sha256: s.sha256.clone(),
-            });
-            files.push(ManifestEntry {
-                path: rel.clone(),
-                sha256: s.sha256.clone(),
-                bytes: s.bytes,
-            });
-        }
-        for (from, to, _) in std::mem::take(&mut self.at_publish) {
-            let (fdir, fname) = self.root.descend(&from, false)?;
-            let (tdir, tname) = self.root.descend(&to, true)?;
-            if fdir.entry(&fname)?.is_some() {
-                fdir.rename_to(&fname, &tdir, &tname)?;
-            }
-            self.state.insert(to);
-        }
-        for rel in &self.state {
-            if let Ok((dir, name)) = self.root.descend(rel, false) {
-                if let Some(e) = dir.entry(&name)? {
-                    st.state_files.push(PlaceRecord {
-                        path: rel.clone(),
-                        inode: e.inode,
-                    });
-                }
-            }
-        }
-        // 3. The previous set's files this one does not produce, if still as recorded.
-        let now: BTreeSet<&str> = self
-            .staged
-            .keys()
-            .chain(self.state.iter())
-            .map(String::as_str)
-            .collect();
-        for rec in &self.previous.outputs {
-            if now.contains(rec.path.as_str()) || rec.path == self.manifest_name {
-                continue;
-            }
-            if let Ok((dir, name)) = self.root.descend(&rec.path, false) {
-                if is_recorded_output(&dir, &name, rec)? {
-                    dir.remove_file(&name)?;
-                }
-            }
-        }
-        for rec in &self.previous.state_files {
-            if now.contains(rec.path.as_str()) {
-                continue;
-            }
-            if let Ok((dir, name)) = self.root.descend(&rec.path, false) {
-                if is_recorded_place(&dir, &name, rec)? {
-                    dir.remove_file(&name)?;
-                }
-            }
-        }
-        // 4. The manifest, the state, then the marker goes.
-        let manifest = Manifest {
-            program: "gearwear".into(),
-            version: env!("CARGO_PKG_VERSION").into(),
-            command: self.command.clone(),
-            files,
-            state_files: self.state.iter().cloned().collect(),
-        };
-        let text = serde_json::to_string_pretty(&manifest).map_err(|e| {
-            OutputError::new(
-                "write",
-                &self.root.join(&self.manifest_name),
-                e.to_string(),
-                None,
-            )
-        })?;
-        let me = self
-            .root
-            .write_new(&self.staging, &self.manifest_name, text.as_bytes())?;
-        st.outputs.push(OutputRecord {
-            path: self.manifest_name.clone(),
-            inode: me.inode,
-            bytes: text.len() as u64,
-            sha256: sha256_hex(text.as_bytes()),
-        });
-        self.write_state_file(&st)?;
-        if matches!(self.root.entry(INCOMPLETE_MARKER)?, Some(e) if e.inode == marker_entry.inode) {
-            self.root.remove_file(INCOMPLETE_MARKER)?;
-        }
-        self.root.sync()?;
-        self.published = true;
-        let _ = remove_tree(&self.root, &self.staging_name);
-        Ok(manifest)
-    }
-
-    /// Keep the staged results in a visible folder when they cannot be published; the
-    /// error says why and where they are.
-    fn keep_unpublished(&mut self, conflicts: Vec<String>) -> OutputError {
-        let kept = format!(
-            "{UNPUBLISHED_PREFIX}{}-{}",
-            self.command,
-            std::process::id()
-        );
-        let where_ = match self.root.entry(&kept) {
-            Ok(None) => match self.root.rename_to(&self.staging_name, &self.root, &kept) {
-                Ok(()) => {
-                    self.published = true;
-                    let mut st = self.previous.clone();
-                    st.staging.clear();
-                    let _ = self.write_state_file(&st);
-                    format!(
-                        "this run's results are kept in {}",
-                        self.root.join(&kept).display()
-                    )
-                }
-                Err(_) => "this run's results could not be kept".into(),
-            },
-            _ => "this run's results could not be kept".into(),
-        };
-        OutputError::new(
-            "publish into",
-            self.root.path(),
-            format!(
-                "this run's files cannot all be put in place ({} problem(s)): {}; nothing was replaced, and {where_}",
-                conflicts.len(),
-                conflicts.join("; ")
-            ),
-            None,
-        )
     }
 }
 

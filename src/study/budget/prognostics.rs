@@ -1,6 +1,7 @@
-//! The run budget of `calibrate`, `predict` and `predict-merge` (`study::budget` for the
-//! other commands): memory and time estimated from the case, the inputs' sizes and the
-//! settings before anything is computed, and refused over budget naming what drives it.
+//! The cost of `calibrate`, `predict` and `predict-merge`: memory and time estimated from
+//! the case, the inputs' sizes, the settings and the span of the parameters the runs
+//! cover ([`ParameterSpan`], numbers that prognostics hands down) before anything is
+//! computed.
 //!
 //! # Formula
 //!
@@ -9,9 +10,10 @@
 //!   runs k_j = k_lo 2^j, each to H k_(j+1) / k_j cycles (H the horizon: the last
 //!   observation, or the prediction's cycles), until the first run whose blocks are cut
 //!   by the wear threshold, which is extended to H k_hi / k_j. A run of U updates costs U
-//!   dynamic evaluations (`study::budget`) and keeps U records of (4 G + 4 S_d) numbers.
-//!   Updates follow from Archard's law at the nominal load (`study::budget::wear_updates`),
-//!   at the prior's largest torque and roughness factor.
+//!   dynamic evaluations ([`super::case_jobs`]) and keeps U records of (4 G + 4 S_d)
+//!   numbers. Updates follow from Archard's law at the nominal load
+//!   ([`super::evaluation::wear_updates`]), at the prior's largest torque and roughness
+//!   factor.
 //! - **Posterior**: the likelihood reads the surrogate once per observation ([`T_VALUE`]
 //!   each). The exact grid evaluates `grid_points`^d cells on each of up to 8 levels and
 //!   holds [`GRID_BYTES_PER_CELL`] per cell; the ensemble sampler makes walkers (20 +
@@ -29,13 +31,29 @@
 //! - **Merge**: the shards' bytes read, their values held twice (parsed and joined), the
 //!   fans.
 
-use super::prior::Prior;
-use crate::config::Case;
-use crate::geometry::GearPair;
-use crate::study::budget::{
-    adaptive_steps_per_period, nominal_wear_per_cycle_m, Estimate, Term, DYNAMIC_WEAR_FACTOR,
+use super::cost::{Estimate, Term};
+use super::evaluation::{
+    dynamic_steps_per_period, nominal_wear_per_cycle_m, DYNAMIC_WEAR_FACTOR,
     PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
 };
+use crate::config::Case;
+use crate::geometry::GearPair;
+
+/// What the estimates need of the parameters' span (a calibration's prior, the span of a
+/// prediction's samples): numbers, built by prognostics (`From<&Prior>`), so that the
+/// cost model imports nothing above it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParameterSpan {
+    /// Smallest and largest wear coefficient, m^2/N.
+    pub wear_coefficient_min_m2_per_n: f64,
+    pub wear_coefficient_max_m2_per_n: f64,
+    /// Largest load torque, N m.
+    pub load_torque_max_nm: f64,
+    /// Parameters not fixed.
+    pub free: usize,
+    /// Parameters not fixed besides the wear coefficient: the surrogate's axes other than k.
+    pub free_besides_wear_coefficient: usize,
+}
 
 /// One reading of the surrogate (a quantity at a cycle count for a parameter set), s:
 /// measured 0.47 us on the reference machine with two interpolated axes; doubled.
@@ -64,15 +82,14 @@ const FANS: f64 = 6.0;
 
 /// Periods an update of a wear run takes to settle from the previous update's periodic
 /// state (its warm start): measured 2.6 on the built-in case (221 updates of 13.8 ms);
-/// 10 leaves margin. Only the first update settles from rest (`study::budget`).
+/// 10 leaves margin. Only the first update settles from rest ([`super::case_jobs`]).
 pub const PERIODS_TO_SETTLE_WARM: f64 = 10.0;
 
 /// Cost of the dynamic evaluations of a wear run's updates: seconds of one, and the
 /// numbers of one update record.
 fn evaluation(case: &Case) -> (f64, f64) {
     let nm = &case.numerics;
-    let s_dyn =
-        (nm.steps_per_mesh_period as f64).max(adaptive_steps_per_period(nm.integration_tolerance));
+    let s_dyn = dynamic_steps_per_period(nm);
     let cold = PERIODS_TO_SETTLE_PER_DECADE * (1.0 / nm.steady_state_tolerance).log10();
     let p_c = (nm.max_mesh_periods as f64).min(PERIODS_TO_SETTLE_WARM.min(cold).max(2.0));
     let seconds = s_dyn * (p_c + nm.evaluated_mesh_periods as f64) * SECONDS_PER_STEP;
@@ -128,10 +145,10 @@ fn updates(case: &Case, rate: f64, total: f64) -> f64 {
 
 /// Dynamic wear per cycle per unit wear coefficient at the prior's largest torque and
 /// roughness factor, m per (m^2/N), times the dynamic margin.
-fn rate_per_k(case: &Case, prior: &Prior) -> f64 {
+fn rate_per_k(case: &Case, prior: &ParameterSpan) -> f64 {
     let mut c = case.clone();
     c.wear.coefficient_m2_per_n = 1.0;
-    c.operating.load_torque_nm = c.operating.load_torque_nm.max(prior.params[2].hi);
+    c.operating.load_torque_nm = c.operating.load_torque_nm.max(prior.load_torque_max_nm);
     match GearPair::from_case(&c.gear) {
         Ok(pair) => DYNAMIC_WEAR_FACTOR * nominal_wear_per_cycle_m(&c, &pair),
         Err(_) => 0.0,
@@ -140,8 +157,11 @@ fn rate_per_k(case: &Case, prior: &Prior) -> f64 {
 
 /// Updates of the reference runs of one chain over the prior's k to horizon `h` cycles
 /// (see the module docs).
-fn chain_updates(case: &Case, prior: &Prior, h: f64) -> f64 {
-    let (k_lo, k_hi) = (prior.params[0].lo, prior.params[0].hi);
+fn chain_updates(case: &Case, prior: &ParameterSpan, h: f64) -> f64 {
+    let (k_lo, k_hi) = (
+        prior.wear_coefficient_min_m2_per_n,
+        prior.wear_coefficient_max_m2_per_n,
+    );
     let per_k = rate_per_k(case, prior);
     let threshold = case.wear.threshold_um * 1e-6;
     let mut total = 0.0;
@@ -160,9 +180,9 @@ fn chain_updates(case: &Case, prior: &Prior, h: f64) -> f64 {
 }
 
 /// The reference runs' terms: time, and the records they keep.
-fn surrogate_terms(case: &Case, prior: &Prior, horizon: f64) -> Vec<Term> {
+fn surrogate_terms(case: &Case, prior: &ParameterSpan, horizon: f64) -> Vec<Term> {
     let nodes = case.calibration.surrogate_nodes.max(2) as f64;
-    let axes = prior.free().iter().filter(|i| **i != 0).count() as i32;
+    let axes = prior.free_besides_wear_coefficient as i32;
     let chains = nodes.powi(axes);
     let u = chains * chain_updates(case, prior, horizon.max(1.0));
     let (eval_s, numbers) = evaluation(case);
@@ -181,11 +201,11 @@ fn surrogate_terms(case: &Case, prior: &Prior, horizon: f64) -> Vec<Term> {
 }
 
 /// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them.
-fn true_runs(case: &Case, prior: &Prior, h: f64, n: f64, what: &'static str) -> Term {
+fn true_runs(case: &Case, prior: &ParameterSpan, h: f64, n: f64, what: &'static str) -> Term {
     let (eval_s, numbers) = evaluation(case);
     let u = updates(
         case,
-        rate_per_k(case, prior) * prior.params[0].hi,
+        rate_per_k(case, prior) * prior.wear_coefficient_max_m2_per_n,
         h.max(1.0),
     );
     Term {
@@ -198,18 +218,6 @@ fn true_runs(case: &Case, prior: &Prior, h: f64, n: f64, what: &'static str) -> 
             "wear.threshold_um",
             "calibration.wear_coefficient_max_m2_per_n",
         ],
-    }
-}
-
-fn estimate_of(terms: Vec<Term>) -> Estimate {
-    Estimate {
-        steps_per_evaluation: 0.0,
-        steps_to_give_up: 0.0,
-        recorded_samples: 0.0,
-        wear_per_cycle_m: None,
-        wear_updates_dynamic: 0.0,
-        wear_updates_quasi_static: 0.0,
-        terms,
     }
 }
 
@@ -226,11 +234,16 @@ pub struct CalibrationJob {
     pub check_runs: usize,
 }
 
-/// The estimated cost of `calibrate` (see the module docs).
-pub fn estimate_calibration(case: &Case, prior: &Prior, j: &CalibrationJob) -> Estimate {
+/// The estimated cost of `calibrate` over the prior's span (see the module docs).
+pub fn estimate_calibration(
+    case: &Case,
+    prior: impl Into<ParameterSpan>,
+    j: &CalibrationJob,
+) -> Estimate {
+    let prior = &prior.into();
     let mut terms = surrogate_terms(case, prior, j.max_cycles);
     let loglik = j.values as f64 * T_VALUE;
-    let d = prior.free().len() as i32;
+    let d = prior.free as i32;
     let samples = j.samples as f64;
     if d <= 2 {
         let cells = (case.calibration.grid_points as f64).powi(d);
@@ -278,7 +291,7 @@ pub fn estimate_calibration(case: &Case, prior: &Prior, j: &CalibrationJob) -> E
             keys: &["samples", "the observations' rows"],
         });
     }
-    estimate_of(terms)
+    Estimate::of_terms(terms)
 }
 
 /// What a prediction computes.
@@ -296,7 +309,12 @@ pub struct PredictionJob {
 }
 
 /// The estimated cost of `predict` over the parameter span `span` (see the module docs).
-pub fn estimate_prediction(case: &Case, span: &Prior, j: &PredictionJob) -> Estimate {
+pub fn estimate_prediction(
+    case: &Case,
+    span: impl Into<ParameterSpan>,
+    j: &PredictionJob,
+) -> Estimate {
+    let span = &span.into();
     let n = j.samples_in_shard as f64;
     let values = n * FANS * j.grid_points as f64;
     let mut terms = if j.exact {
@@ -333,7 +351,7 @@ pub fn estimate_prediction(case: &Case, span: &Prior, j: &PredictionJob) -> Esti
             "the surrogate check's true runs",
         ));
     }
-    estimate_of(terms)
+    Estimate::of_terms(terms)
 }
 
 /// The estimated cost of `predict-merge` of shard files of `bytes` in all, for an ensemble
@@ -345,7 +363,7 @@ pub fn estimate_merge(bytes: u64, samples: usize, grid_points: usize) -> Estimat
     } else {
         samples as f64 * FANS * grid_points as f64
     };
-    estimate_of(vec![Term {
+    Estimate::of_terms(vec![Term {
         what: "the shards read and joined",
         seconds: values * T_BAND,
         // The shards' text, their values parsed and copied (joined, the first shard's),
@@ -359,6 +377,7 @@ pub fn estimate_merge(bytes: u64, samples: usize, grid_points: usize) -> Estimat
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::prognostics::prior::Prior;
     use crate::study::budget::Budget;
 
     fn job() -> CalibrationJob {

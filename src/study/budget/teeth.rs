@@ -1,8 +1,18 @@
 //! The run budget's view of a tooth-resolved case: the mesh periods its excitation
 //! repeats over, read from the case alone before any model is built, and the cost that
-//! period adds to a run (`study::budget::estimate` adds the term).
+//! period adds to a run ([`super::case_jobs::estimate`] adds the term).
 
+use super::cost::Term;
+use super::evaluation::{SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP};
 use crate::config::case::{Case, Member};
+
+/// Bytes of one recorded sample of the response alone (280 bytes, doubled for vector
+/// growth), without the output tables counted in
+/// [`BYTES_PER_SAMPLE`](super::case_jobs::BYTES_PER_SAMPLE): the periods a tooth-resolved
+/// response records beyond `numerics.evaluated_mesh_periods`. Measured peaks of the
+/// paper's pair at `teeth.accuracy_grade = 5` (589 periods): `dynamics` 258 MB, `run`
+/// 417 MB.
+pub const RESPONSE_BYTES_PER_SAMPLE: f64 = 560.0;
 
 /// Whether the values of a per-tooth array differ from tooth to tooth.
 fn differ(v: &Option<Vec<f64>>) -> bool {
@@ -45,7 +55,7 @@ pub fn excitation_periods_of(case: &Case) -> usize {
 const RUN_IN_PERIODS: f64 = 30.0;
 
 /// Bytes of the path samples of a recorded sample (two pairs of 72 bytes, doubled for
-/// growth), on top of the response's `RESPONSE_BYTES_PER_SAMPLE`.
+/// growth), on top of the response's [`RESPONSE_BYTES_PER_SAMPLE`].
 const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
 
 /// The run budget's term for a tooth-resolved case (None when every tooth is alike):
@@ -63,10 +73,7 @@ pub fn budget_term(
     records: f64,
     s_dyn: f64,
     s: f64,
-) -> Option<super::budget::Term> {
-    use super::budget::{
-        RESPONSE_BYTES_PER_SAMPLE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
-    };
+) -> Option<Term> {
     if !case.has_per_tooth_inputs() {
         return None;
     }
@@ -77,7 +84,7 @@ pub fn budget_term(
     let recorded = s_dyn * p.max(p_e);
     let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
     let grid = case.wear.points_per_profile as f64;
-    Some(super::budget::Term {
+    Some(Term {
         what: "the tooth-resolved mesh (every tooth's own excitation over its period)",
         seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
             + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP,

@@ -1,0 +1,193 @@
+//! The two dataset jobs: [`DatasetJob`] (a design to a folder of records) and
+//! [`DatasetMergeJob`] (shards joined), and where a design is read from.
+
+use super::merge::{merge_datasets, shared_key};
+use super::plan::check_dataset;
+use super::request::{DatasetOutcome, DatasetRequest};
+use super::run::run_dataset;
+use crate::app::observer::Observer;
+use crate::app::{budget, publish, Job, JobError, Outcome};
+use crate::io::input::{
+    read_input, read_input_text, MAX_CASE_BYTES, MAX_DESIGN_BYTES, MAX_TRANSFER_PATH_BYTES,
+};
+use crate::remedy::{Arg, Problem};
+use crate::report::figure_output::FigureRequest;
+use crate::report::Artifacts;
+use crate::signals::path_file::parse_transfer_path;
+use crate::study::budget::{estimate_dataset, Budget};
+use crate::study::dataset::parse_design;
+use crate::study::dataset::plan::Shard;
+use std::path::{Path, PathBuf};
+
+/// A study design and where it was read from (its folder resolves the design's relative
+/// paths: the case file and the transfer-path file).
+#[derive(Debug, Clone)]
+pub struct DesignSource {
+    pub text: String,
+    /// The design's name in messages (its file name).
+    pub name: String,
+    pub folder: PathBuf,
+}
+
+impl DesignSource {
+    /// The design in `path`.
+    pub fn file(path: &Path) -> Result<Self, JobError> {
+        let name = path.display().to_string();
+        let text = read_input_text(path, "study design", MAX_DESIGN_BYTES)
+            .map_err(|e| JobError::input(Problem::given(Arg::Design, &name, e.reason)))?;
+        Ok(Self {
+            text,
+            name,
+            folder: path
+                .parent()
+                .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+        })
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct DatasetJob {
+    pub design: DesignSource,
+    pub shard: Shard,
+    pub out: PathBuf,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    /// The run budget (`None`: no check).
+    pub budget: Option<Budget>,
+    /// The formats and size of the dataset's figure (`indicator_trends`), checked when the
+    /// job starts; the records are the same whatever it is.
+    pub figures: FigureRequest,
+}
+
+fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
+    let mut artifacts = Artifacts {
+        summary: serde_json::json!({
+            "records": o.total_records,
+            "records_of_this_run": o.shard_records,
+            "computed": o.computed,
+            "reused": o.reused,
+            "failures": o.failures,
+            "missing": o.missing.listed,
+            "missing_count": o.missing.count,
+            "estimated_bytes": o.estimated_bytes,
+        }),
+        ..Default::default()
+    };
+    artifacts.headline = format!(
+        "{what}: {} of {} records ({} computed, {} reused){}",
+        o.shard_records,
+        o.total_records,
+        o.computed,
+        o.reused,
+        if o.missing.count == 0 {
+            String::new()
+        } else {
+            format!("; {} records missing from the index", o.missing.count)
+        }
+    );
+    Outcome {
+        artifacts,
+        published: Some(root.to_path_buf()),
+        incomplete: (!o.failures.is_empty()).then(|| {
+            format!(
+                "{} physical states failed:\n  {}",
+                o.failures.len(),
+                o.failures.join("\n  ")
+            )
+        }),
+    }
+}
+
+impl Job for DatasetJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "dataset"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
+        let d = &self.design;
+        let read = |rel: &str| {
+            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+        };
+        let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
+            JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
+        })?;
+        let (path, path_bytes) = match &design.transfer_path {
+            Some(rel) => {
+                let p = d.folder.join(rel);
+                let shown = p.display().to_string();
+                let bytes =
+                    read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
+                        JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
+                    })?;
+                let path =
+                    parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
+                        JobError::Input(
+                            m.into_iter()
+                                .map(|m| Problem::of(Arg::TransferPath, m))
+                                .collect(),
+                        )
+                    })?;
+                (Some(path), bytes)
+            }
+            None => (None, Vec::new()),
+        };
+        let req = DatasetRequest {
+            design: &design,
+            path,
+            path_bytes,
+            shard: self.shard,
+            figures,
+        };
+        let checked = check_dataset(&req)?;
+        let threads = rayon::current_num_threads();
+        budget::check_estimate(
+            &estimate_dataset(&design, self.shard, threads),
+            self.budget.as_ref(),
+        )?;
+        let set = (self.shard.count > 1)
+            .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
+        let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
+        let o = run_dataset(&req, checked, &self.out, out, observer)?;
+        observer.note(&format!("dataset: results -> {}", self.out.display()));
+        Ok(outcome(&o, &self.out, "dataset"))
+    }
+}
+
+/// See the module docs.
+#[derive(Debug, Clone)]
+pub struct DatasetMergeJob {
+    pub inputs: Vec<PathBuf>,
+    pub out: PathBuf,
+    /// Replace another command's results in the output folder (else refused).
+    pub replace: bool,
+    /// The formats and size of the merged dataset's figure, checked when the job starts.
+    pub figures: FigureRequest,
+}
+
+impl Job for DatasetMergeJob {
+    type Output = Outcome;
+
+    fn name(&self) -> &'static str {
+        "dataset-merge"
+    }
+
+    fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let figures = self.figures.resolve().map_err(JobError::input)?;
+        if self.inputs.is_empty() {
+            return Err(JobError::input(Problem::of(
+                Arg::Inputs,
+                "no dataset folders given",
+            )));
+        }
+        let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
+        let shared = shared_key(&inputs)?;
+        let out = publish::open(&self.out, None, self.name(), self.replace)?;
+        let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
+        observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
+        Ok(outcome(&o, &self.out, "dataset-merge"))
+    }
+}

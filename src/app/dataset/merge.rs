@@ -1,0 +1,119 @@
+//! Joining the shards of a dataset: checked to be shards of one design before any output
+//! folder is opened, their records and state files copied, then the index and metadata
+//! built as an unsharded run builds them.
+
+use super::folder::{
+    copy_dataset, csv_rel, is_file_in, read_in, sidecar_rel, sidecars, stage_index_and_metadata,
+    trajectories, trajectory_rel, DATASET_REL,
+};
+use super::request::{DatasetError, DatasetOutcome};
+use crate::io::OutputDir;
+use crate::report::figure_output::FigureOutput;
+use serde_json::Value;
+use std::path::Path;
+
+/// The dataset key and record count the shards in `inputs` share, read and checked
+/// before any output folder is opened: every input a dataset folder of one design, its
+/// record count the one its axes give.
+pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetError> {
+    let mut key: Option<(String, usize)> = None;
+    let mut problems = Vec::new();
+    for dir in inputs {
+        let body: Option<Value> =
+            read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice(&b).ok());
+        let Some(body) = body else {
+            problems.push(format!(
+                "{}: no {DATASET_REL}: not a dataset folder (or not started)",
+                dir.display()
+            ));
+            continue;
+        };
+        let k = body["dataset_key"].as_str().unwrap_or_default().to_owned();
+        let total = body["records"].as_u64().unwrap_or(0) as usize;
+        // The record count is trusted only when the axes beside it give it: a shard
+        // edited to claim 2e9 records would otherwise size the index's missing list.
+        if axes_records(&body) != Some(total) {
+            problems.push(format!(
+                "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
+                dir.display()
+            ));
+            continue;
+        }
+        match &key {
+            None => key = Some((k, total)),
+            Some((k0, _)) if *k0 != k => problems.push(format!(
+                "{}: a shard of another dataset (dataset key {}..., the first input has {}...): merge shards of one design only",
+                dir.display(),
+                &k[..k.len().min(12)],
+                &k0[..k0.len().min(12)]
+            )),
+            _ => {}
+        }
+    }
+    key.filter(|_| problems.is_empty())
+        .ok_or(DatasetError::Input(problems))
+}
+
+/// Joins the shards in `inputs` (checked by [`shared_key`], which gave `key` and
+/// `total`) into `root`, its figure written as `figures` says.
+pub(super) fn merge_datasets(
+    inputs: &[&Path],
+    root: &Path,
+    mut out: OutputDir,
+    (key, total): (String, usize),
+    figures: FigureOutput,
+) -> Result<DatasetOutcome, DatasetError> {
+    let mut copied = 0;
+    for dir in inputs {
+        copied += copy_dataset(dir, root, &key, out.previous_state())
+            .map_err(|e| DatasetError::Failed(e.into()))?;
+    }
+    let missing = stage_index_and_metadata(&mut out, root, total, figures)
+        .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?;
+    out.keep_state(DATASET_REL);
+    for s in sidecars(root).into_iter().filter(|s| s.dataset_key == key) {
+        out.keep_state(&s.labels.file);
+        out.keep_state(&sidecar_rel(s.labels.record_id));
+        if is_file_in(root, &csv_rel(s.labels.record_id)) {
+            out.keep_state(&csv_rel(s.labels.record_id));
+        }
+    }
+    for t in trajectories(root) {
+        out.keep_state(&trajectory_rel(&t.condition));
+    }
+    out.publish().map_err(|e| DatasetError::Failed(e.into()))?;
+    Ok(DatasetOutcome {
+        total_records: total,
+        shard_records: total,
+        computed: 0,
+        reused: copied,
+        failures: Vec::new(),
+        missing,
+        estimated_bytes: 0.0,
+    })
+}
+
+/// Records the axes of a dataset's description give: conditions x states x speeds x
+/// loads x noise realisations (each a whole, positive count); `None` when an axis is
+/// missing, empty or the product overflows.
+fn axes_records(body: &Value) -> Option<usize> {
+    let a = &body["axes"];
+    let len = |v: &Value| v.as_array().map(Vec::len).filter(|n| *n > 0);
+    let states = match (&a["states"]["evenly_spaced"], &a["states"]["cycles"]) {
+        (n, _) if n.is_u64() => n.as_u64().map(|n| n as usize).filter(|n| *n > 0),
+        (_, c) => len(c),
+    }?;
+    let realisations = a["noise_realisations"]
+        .as_u64()
+        .map(|n| n as usize)
+        .filter(|n| *n > 0)?;
+    [
+        len(&a["conditions"])?,
+        states,
+        len(&a["input_speed_hz"])?,
+        len(&a["load_torque_nm"])?,
+        realisations,
+    ]
+    .iter()
+    .try_fold(1_usize, |acc, n| acc.checked_mul(*n))
+}

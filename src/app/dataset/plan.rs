@@ -1,0 +1,159 @@
+//! The first step of a dataset job, before any work: the design checked against the
+//! signal chain of every condition and against the disk budget; the dataset's key and its
+//! description.
+
+use super::request::{DatasetError, DatasetRequest};
+use crate::checksum::sha256_hex;
+use crate::report::signals::chain_json;
+use crate::signals::files::units;
+use crate::signals::setup::{chain_of, ChainSetup};
+use crate::study::dataset::plan::plan_of;
+use crate::study::dataset::{DatasetDesign, StateChoice};
+use serde_json::{json, Value};
+
+/// Bytes of the metadata and labels of one record besides its signals (sidecar JSON with
+/// the indicators and per-tooth wear, index row), a generous bound from measured files.
+const LABEL_BYTES_PER_RECORD: f64 = 16_384.0;
+
+/// The chain setup of each condition, checked at the design's fastest speed.
+fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
+    let d = req.design;
+    let fastest = d.speeds_hz.iter().fold(0.0_f64, |a, b| a.max(*b));
+    let mut problems = Vec::new();
+    let mut out = Vec::new();
+    for c in &d.conditions {
+        let mut case = c.case.clone();
+        case.set_load_point(crate::config::case::LoadPoint {
+            input_speed_hz: fastest,
+            ..case.load_point()
+        });
+        match chain_of(
+            &case,
+            req.path.clone(),
+            case.signals.max_input_speed_hz(&case),
+        ) {
+            Ok(s) => out.push(s),
+            Err(e) => problems.extend(
+                e.into_iter()
+                    .map(|m| format!("condition `{}`: {m}", c.name)),
+            ),
+        }
+    }
+    if problems.is_empty() {
+        Ok(out)
+    } else {
+        Err(problems)
+    }
+}
+
+/// Estimated bytes of the whole dataset (module docs of [`super::folder`]).
+pub fn estimate_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
+    let plan = plan_of(d);
+    let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+    let per_state: f64 = setups
+        .iter()
+        .map(|s| {
+            let g = &d.conditions[0].case.gear;
+            let shaft_hz = match s.chain.tachometer.shaft {
+                crate::signals::chain::Shaft::Pinion => slowest,
+                crate::signals::chain::Shaft::Gear => {
+                    slowest * g.teeth_pinion as f64 / g.teeth_gear as f64
+                }
+            };
+            let n = s.chain.samples(shaft_hz) as f64;
+            let columns = (s.chain.path.sensors.len() + 1) as f64;
+            let csv = if d.csv {
+                n * (columns + 1.0) * 16.0
+            } else {
+                0.0
+            };
+            n * columns * 4.0 + csv + LABEL_BYTES_PER_RECORD
+        })
+        .fold(0.0, f64::max);
+    per_state * plan.records() as f64
+}
+
+/// Hash of everything the dataset is generated from.
+pub fn dataset_key(d: &DatasetDesign, path_bytes: &[u8]) -> String {
+    let mut text = d.text.clone();
+    for c in &d.conditions {
+        text.push_str(&toml::to_string(&c.case).unwrap_or_default());
+    }
+    text.push_str(&sha256_hex(path_bytes));
+    text.push_str(env!("CARGO_PKG_VERSION"));
+    sha256_hex(text.as_bytes())
+}
+
+/// The dataset's description (`state/dataset.json`, the body of metadata.json).
+pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str) -> Value {
+    let d = req.design;
+    let plan = plan_of(d);
+    let first = &setups[0].chain;
+    let probe = crate::signals::record::Record {
+        sampling_rate_hz: first.acquisition.sampling_rate_hz,
+        channels: first
+            .path
+            .sensors
+            .iter()
+            .map(|s| (s.clone(), Vec::new()))
+            .collect(),
+        tachometer_v: Vec::new(),
+    };
+    json!({
+        "program": "gearwear",
+        "version": env!("CARGO_PKG_VERSION"),
+        "dataset_key": key,
+        "design": d.text,
+        "seed": d.seed,
+        "records": plan.records(),
+        "physical_states": plan.physical_states(),
+        "axes": {
+            "conditions": d.conditions.iter().map(|c| json!({"name": c.name, "fault": c.fault, "severity": c.severity})).collect::<Vec<_>>(),
+            "states": match &d.states { StateChoice::Count(n) => json!({"evenly_spaced": n}), StateChoice::Cycles(c) => json!({"cycles": c}) },
+            "input_speed_hz": d.speeds_hz,
+            "load_torque_nm": d.torques_nm,
+            "noise_realisations": d.noise_realisations,
+        },
+        "record_id": "((((condition x states + state) x speeds + speed) x loads + load) x realisations + realisation)",
+        "run_to_failure": {"max_cycles": d.max_cycles, "wear_limit_um": d.wear_limit_um, "failure": "the deepest wear, pinion or gear profile, reaches wear_limit_um"},
+        "record": chain_json(first, first.samples(d.speeds_hz[0])),
+        "signal_columns": units(&probe, first.acquisition.unit),
+        "cases": d.conditions.iter().map(|c| json!({"condition": c.name, "case_toml": toml::to_string(&c.case).unwrap_or_default()})).collect::<Vec<_>>(),
+        "layout": {
+            "signals/<record_id>.parquet": "one record: a float32 column per accelerometer and the tachometer; sampling rate and units in the file's key-value metadata",
+            "csv/<record_id>.csv": "the same record as CSV with time_s (when the design asks)",
+            "records/<record_id>.json": "labels and indicators of one record",
+            "index.parquet": "one row per record: labels and indicators (index.csv: the same as CSV)",
+            "indicator_trends.csv": "the first channel's indicators along each trajectory (condition x speed x load), mean over the noise realisations of each state",
+            "indicator_trends.png": "the same as a figure, against the pinion load cycles (indicator_trends.svg beside or instead of it when the job asks for SVG)",
+            "state/": "the dataset's description and run-to-failure trajectories (used by resumes and merges)",
+        },
+    })
+}
+
+/// A request checked before anything is written: the chain of every condition and the
+/// estimated size against the disk budget.
+pub struct Checked {
+    pub(super) setups: Vec<ChainSetup>,
+    pub(super) estimated_bytes: f64,
+}
+
+/// Check `req` (the first step of [`super`]'s).
+pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
+    let d = req.design;
+    let setups = setups(req).map_err(DatasetError::Input)?;
+    let estimated = estimate_bytes(d, &setups);
+    let budget = d.disk_budget_gib * 1024f64.powi(3);
+    if estimated > budget {
+        return Err(DatasetError::Input(vec![format!(
+            "the dataset would take about {:.2} GiB ({} records), more than `records.disk_budget_gib` = {}: raise the budget, or make fewer or shorter records",
+            estimated / 1024f64.powi(3),
+            plan_of(d).records(),
+            d.disk_budget_gib
+        )]));
+    }
+    Ok(Checked {
+        setups,
+        estimated_bytes: estimated,
+    })
+}

@@ -1,0 +1,261 @@
+//! Running (a shard of) a checked dataset: the trajectories the shard needs (kept in
+//! `state/`, reused when present), then its physical states in parallel, each writing its
+//! records as soon as they are made; for an unsharded run, the index and metadata.
+
+use super::folder::{
+    csv_rel, finished, is_file_in, make_folder, put, read_in, sidecar_rel,
+    stage_index_and_metadata, trajectory_rel, Missing, Sidecar, TrajectoryFile, DATASET_REL,
+};
+use super::plan::{dataset_key, description, Checked};
+use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
+use crate::app::observer::{Observer, Task};
+use crate::checksum::sha256_hex;
+use crate::io::set_state::SetState;
+use crate::io::OutputDir;
+use crate::signals::files::{record_parquet, record_table};
+use crate::signals::setup::ChainSetup;
+use crate::study::dataset::plan::{plan_of, Plan};
+use crate::study::dataset::records::{state_records, StateInputs};
+use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
+use crate::study::dataset::{DatasetDesign, StateChoice};
+use crate::study::Model;
+use rayon::prelude::*;
+use serde_json::json;
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Run (a shard of) a checked dataset into `root`. `out` is the folder's output set (the
+/// shard's, or the whole dataset's).
+pub fn run_dataset(
+    req: &DatasetRequest,
+    checked: Checked,
+    root: &Path,
+    mut out: OutputDir,
+    obs: &dyn Observer,
+) -> Result<DatasetOutcome, DatasetError> {
+    let d = req.design;
+    let Checked {
+        setups,
+        estimated_bytes: estimated,
+    } = checked;
+    for s in &setups {
+        for w in &s.warnings {
+            obs.warning(w);
+        }
+    }
+
+    let key = dataset_key(d, &req.path_bytes);
+    let plan = plan_of(d);
+    for dir in ["signals", "records", "state", "csv"] {
+        if dir != "csv" || d.csv {
+            make_folder(root, dir).map_err(|e| DatasetError::Failed(e.into()))?;
+        }
+    }
+    let desc =
+        serde_json::to_vec_pretty(&description(req, &setups, &key)).map_err(anyhow::Error::from)?;
+    let prev = out.previous_state().clone();
+    put(root, DATASET_REL, &desc, &prev).map_err(|e| DatasetError::Failed(e.into()))?;
+    let states = plan.shard_states(req.shard);
+    let shard_records = states.len() * plan.realisations;
+    // Trajectories of the conditions this shard records.
+    let mut needed: Vec<usize> = states
+        .iter()
+        .map(|p| plan.state_index(*p).condition)
+        .collect();
+    needed.dedup();
+    needed.sort_unstable();
+    needed.dedup();
+    let trajectories: BTreeMap<usize, Trajectory> = needed
+        .par_iter()
+        .map(|&c| trajectory(d, c, (root, &prev), &key).map(|t| (c, t)))
+        .collect::<Result<_, DatasetError>>()?;
+    let done = AtomicUsize::new(0);
+    let reused = AtomicUsize::new(0);
+    let task = Task::items("records", "records", shard_records);
+    obs.start(&task);
+    let results: Vec<Result<(), String>> = states
+        .par_iter()
+        .map(|&p| {
+            let r = one_state(
+                req,
+                &plan,
+                p,
+                &setups,
+                &trajectories,
+                (root, &prev),
+                &key,
+                &reused,
+            );
+            let n = done.fetch_add(plan.realisations, Ordering::Relaxed) + plan.realisations;
+            obs.advance(&task, n as f64, "");
+            r.map_err(|e| format!("physical state {p}: {e:#}"))
+        })
+        .collect();
+    obs.finish(&task);
+    let failures: Vec<String> = results.into_iter().filter_map(Result::err).collect();
+    keep_files(&mut out, root, &plan, &states, &key, d);
+    let missing = if req.shard.count == 1 {
+        stage_index_and_metadata(&mut out, root, plan.records(), req.figures)
+            .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?
+    } else {
+        out.stage_json(
+            &format!("dataset_shard_{}_of_{}.json", req.shard.index, req.shard.count),
+            &json!({"dataset_key": key, "shard": format!("{}/{}", req.shard.index, req.shard.count), "records": shard_records, "failures": failures}),
+        )
+        .map_err(|e| DatasetError::Failed(e.into()))?;
+        Missing::default()
+    };
+    out.publish().map_err(|e| DatasetError::Failed(e.into()))?;
+    let reused = reused.load(Ordering::Relaxed);
+    Ok(DatasetOutcome {
+        total_records: plan.records(),
+        shard_records,
+        computed: shard_records - reused - failures.len() * plan.realisations,
+        reused,
+        failures,
+        missing,
+        estimated_bytes: estimated,
+    })
+}
+
+/// The trajectory of condition `c`: from `state/` when kept under the same key, else run.
+fn trajectory(
+    d: &DatasetDesign,
+    c: usize,
+    (root, prev): (&Path, &SetState),
+    key: &str,
+) -> Result<Trajectory, DatasetError> {
+    let cond = &d.conditions[c];
+    let rel = trajectory_rel(&cond.name);
+    if let Some(t) = read_in(root, &rel)
+        .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
+        .filter(|t| t.dataset_key == key)
+    {
+        return Ok(t.trajectory);
+    }
+    let model = Model::from_case(&cond.case).map_err(|e| {
+        DatasetError::Input(
+            e.0.iter()
+                .map(|m| format!("condition `{}`: {m}", cond.name))
+                .collect(),
+        )
+    })?;
+    let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6)
+        .map_err(|e| anyhow::anyhow!("trajectory of condition `{}`: {e:#}", cond.name))?;
+    let file = TrajectoryFile {
+        dataset_key: key.to_owned(),
+        condition: cond.name.clone(),
+        trajectory: t.clone(),
+    };
+    put(
+        root,
+        &rel,
+        &serde_json::to_vec(&file).map_err(anyhow::Error::from)?,
+        prev,
+    )
+    .map_err(|e| DatasetError::Failed(e.into()))?;
+    Ok(t)
+}
+
+/// Compute and write the records of physical state `p` (unless all are finished).
+#[allow(clippy::too_many_arguments)]
+fn one_state(
+    req: &DatasetRequest,
+    plan: &Plan,
+    p: usize,
+    setups: &[ChainSetup],
+    trajectories: &BTreeMap<usize, Trajectory>,
+    (root, prev): (&Path, &SetState),
+    key: &str,
+    reused: &AtomicUsize,
+) -> anyhow::Result<()> {
+    let d = req.design;
+    let ids: Vec<usize> = (0..plan.realisations)
+        .map(|r| plan.record_id(p, r))
+        .collect();
+    if ids.iter().all(|id| finished(root, *id, key).is_some()) {
+        reused.fetch_add(ids.len(), Ordering::Relaxed);
+        return Ok(());
+    }
+    let ix = plan.state_index(p);
+    let cond = &d.conditions[ix.condition];
+    let traj = &trajectories[&ix.condition];
+    let cycles = match &d.states {
+        StateChoice::Count(n) => traj.even_states(*n)[ix.state],
+        StateChoice::Cycles(c) => c[ix.state],
+    };
+    let mut case = cond.case.clone();
+    case.set_load_point(crate::config::case::LoadPoint {
+        input_speed_hz: d.speeds_hz[ix.speed],
+        load_torque_nm: d.torques_nm[ix.load],
+        ..case.load_point()
+    });
+    let model = Model::from_case(&case).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let setup = &setups[ix.condition];
+    let unit = setup.chain.acquisition.unit;
+    let inputs = StateInputs {
+        model: &model,
+        setup,
+        condition: cond,
+        trajectory: traj,
+        cycles,
+        wear_limit_um: d.wear_limit_um,
+        design_seed: d.seed,
+    };
+    state_records(&inputs, plan, p, ix, &mut |labels, rec| {
+        let id = labels.record_id;
+        let pq = record_parquet(&rec, unit, Some(&serde_json::to_value(&labels)?))?;
+        put(root, &labels.file, &pq, prev)?;
+        if d.csv {
+            put(
+                root,
+                &csv_rel(id),
+                &record_table(&rec, unit).to_csv()?,
+                prev,
+            )?;
+        }
+        let car = Sidecar {
+            dataset_key: key.to_owned(),
+            signal_sha256: sha256_hex(&pq),
+            labels,
+        };
+        put(
+            root,
+            &sidecar_rel(id),
+            &serde_json::to_vec_pretty(&car)?,
+            prev,
+        )?;
+        Ok(())
+    })
+}
+
+/// List the shard's finished records and the state files in its output set, so a later
+/// run of the set that no longer makes them removes them.
+fn keep_files(
+    out: &mut OutputDir,
+    root: &Path,
+    plan: &Plan,
+    states: &[usize],
+    key: &str,
+    d: &DatasetDesign,
+) {
+    out.keep_state(DATASET_REL);
+    for c in &d.conditions {
+        if is_file_in(root, &trajectory_rel(&c.name)) {
+            out.keep_state(&trajectory_rel(&c.name));
+        }
+    }
+    for &p in states {
+        for r in 0..plan.realisations {
+            let id = plan.record_id(p, r);
+            if let Some(s) = finished(root, id, key) {
+                out.keep_state(&s.labels.file);
+                out.keep_state(&sidecar_rel(id));
+                if d.csv {
+                    out.keep_state(&csv_rel(id));
+                }
+            }
+        }
+    }
+}

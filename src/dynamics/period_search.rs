@@ -1,0 +1,221 @@
+//! The search for the mesh-periodic orbit: quasi-Newton shooting on the one-period map
+//! ([`super::shooting`]) from the static equilibrium or a warm start, each iteration one
+//! base period (a mesh period; a train's common period) of the error-controlled integration of [`super::period`]; the settings
+//! that bound it and the ways it can fail. Both the one-period steady state
+//! ([`super::steady`]) and the one over a hunting period ([`super::hunting`]) start here.
+
+use super::grid::train_nodes;
+use super::model::{GearSystem, State};
+use super::period::{period_stepper, state_scales, PeriodIntegrator, PlanMode, StepFailure};
+use super::recorder::Recorder;
+use super::response::{DynamicResponse, MeshResponse, PathSample};
+use super::shooting::{scaled_max, Reduction, Shooting};
+use nalgebra::DVector;
+
+/// Numerical settings of a steady-state evaluation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyStateSettings {
+    /// Grid nodes per mesh period (the longest step).
+    pub steps_per_mesh_period: usize,
+    /// Local error tolerance of a step, relative to the state scales.
+    pub integration_tolerance: f64,
+    pub max_mesh_periods: usize,
+    pub tolerance: f64,
+    pub evaluated_mesh_periods: usize,
+}
+
+impl SteadyStateSettings {
+    pub fn from_case(n: &crate::config::case::NumericsSection) -> Self {
+        Self {
+            steps_per_mesh_period: n.steps_per_mesh_period.max(1) as usize,
+            integration_tolerance: n.integration_tolerance,
+            max_mesh_periods: n.max_mesh_periods.max(2) as usize,
+            tolerance: n.steady_state_tolerance,
+            evaluated_mesh_periods: n.evaluated_mesh_periods.max(1) as usize,
+        }
+    }
+}
+
+/// Why a dynamic evaluation failed.
+#[derive(Debug, thiserror::Error)]
+pub enum DynamicsError {
+    #[error(transparent)]
+    Integrator(#[from] StepFailure),
+    #[error("no steady state after {periods} mesh periods (estimated distance from the periodic orbit {change:.2e} > tolerance {tolerance:.1e}); raise numerics.max_mesh_periods or check the damping; with a tooth fault, check that the faulty tooth can still carry the load (a nearly severed tooth leaves the model: docs/MODEL.md, section 9.9)")]
+    NotPeriodic {
+        periods: usize,
+        change: f64,
+        tolerance: f64,
+    },
+    #[error("invalid integrator setting: {0}")]
+    Setting(String),
+    #[error("the train's excitation period (the smallest common period of its meshes and their teeth) is too long to count in integers; a train of these teeth cannot be solved")]
+    PeriodTooLong,
+}
+
+/// How many times a recorded period of `base_periods` base periods is repeated to cover
+/// the case's evaluated mesh periods (of the first mesh), at least once.
+pub fn window_repeats(
+    sys: &GearSystem,
+    settings: &SteadyStateSettings,
+    base_periods: usize,
+) -> usize {
+    let per_base = super::grid::base_period(sys).map_or(1, |(_, c)| c[0].max(1));
+    settings
+        .evaluated_mesh_periods
+        .div_ceil(base_periods * per_base)
+        .max(1)
+}
+
+/// The search for the periodic orbit: quasi-Newton shooting on the one-period map
+/// (module docs), each iteration one base period (a mesh period; a train's common
+/// period) from t = 0 (so with a tooth-resolved mesh, the orbit of the teeth of mesh
+/// cycle 0 meeting again and again).
+pub struct MeshPeriodSearch<'s, 'a> {
+    sys: &'s GearSystem<'a>,
+    pub ps: Box<dyn PeriodIntegrator + 's>,
+    pub red: Reduction,
+    template: State,
+    z: DVector<f64>,
+    red_scales: DVector<f64>,
+    /// Mesh periods integrated so far.
+    pub periods: usize,
+}
+
+impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
+    pub fn new(
+        sys: &'s GearSystem<'a>,
+        settings: &SteadyStateSettings,
+        start: Option<&[f64]>,
+    ) -> Result<Self, DynamicsError> {
+        let nodes =
+            train_nodes(sys, settings.steps_per_mesh_period).ok_or(DynamicsError::PeriodTooLong)?;
+        let ps = period_stepper(sys, nodes, settings.integration_tolerance)
+            .map_err(|e| DynamicsError::Setting(e.to_string()))?;
+        let template = match start {
+            Some(s) if s.len() == sys.states() => State::from_column_slice(s),
+            _ => sys.static_equilibrium(),
+        };
+        let red = Reduction::new(sys);
+        let red_scales = red.scales(&state_scales(sys));
+        let z = red.reduce(template.as_slice());
+        Ok(Self {
+            sys,
+            ps,
+            z,
+            template,
+            red_scales,
+            red,
+            periods: 0,
+        })
+    }
+
+    /// Runs the search to the case's tolerance. With `record`, the last period
+    /// integrated is recorded when it is likely to be the last one needed (the first
+    /// from a warm start, or once the search is close) and returned with its start and
+    /// end states.
+    pub fn run(
+        &mut self,
+        settings: &SteadyStateSettings,
+        warm: bool,
+        record: bool,
+    ) -> Result<Option<(Recorder, State, State)>, DynamicsError> {
+        let sys = self.sys;
+        let period = self.ps.period();
+        let mut shooting = Shooting::new(sys, &self.red, period, &state_scales(sys));
+        let mut distance = f64::INFINITY;
+        let mut recorded = None;
+        // Every period starts at t = 0: the one-period map is the same function in every
+        // iteration (the model depends on time through the mesh phase only).
+        while distance >= settings.tolerance {
+            if self.periods == settings.max_mesh_periods {
+                return Err(DynamicsError::NotPeriodic {
+                    periods: self.periods,
+                    change: distance,
+                    tolerance: settings.tolerance,
+                });
+            }
+            let y0 = self.start_state();
+            let mut y = y0.clone();
+            // Close to the orbit (or warm), fix the step sequence: build it once, then
+            // replay.
+            let first = self.periods == 0;
+            let close = distance < 1e-2 || (first && warm);
+            match self.ps.plan_mode() {
+                PlanMode::Free if close => self.ps.set_plan_mode(PlanMode::Build),
+                PlanMode::Build => self.ps.set_plan_mode(PlanMode::Replay),
+                _ => {}
+            }
+            let speculative = record && (distance < 100.0 * settings.tolerance || (first && warm));
+            if speculative {
+                let mut rec = Recorder::new(sys, 1);
+                self.ps.integrate(0.0, y.as_mut_slice(), &mut rec)?;
+                recorded = Some((rec, y0, y.clone()));
+            } else {
+                self.ps.integrate(0.0, y.as_mut_slice(), &mut ())?;
+                recorded = None;
+            }
+            self.periods += 1;
+            let (next, d) = shooting.next(&self.z, &self.red.reduce(y.as_slice()));
+            self.z = next;
+            distance = d;
+        }
+        Ok(recorded)
+    }
+
+    /// Replay the step plan from now on (built by the search once it was close).
+    pub fn replay(&mut self) {
+        if self.ps.plan_mode() == PlanMode::Build {
+            self.ps.set_plan_mode(PlanMode::Replay);
+        }
+    }
+
+    /// The state the search has reached, at a mesh-period boundary.
+    pub fn start_state(&self) -> State {
+        self.red.embed(&self.z, self.template.as_slice())
+    }
+
+    /// Largest change between two states in the unknowns, relative to their scales.
+    pub fn distance_between(&self, a: &State, b: &State) -> f64 {
+        let (a, b) = (self.red.reduce(a.as_slice()), self.red.reduce(b.as_slice()));
+        scaled_max(&(b - a), &self.red_scales)
+    }
+
+    /// The response from a recorded window.
+    #[allow(clippy::too_many_arguments)]
+    pub fn response(
+        &self,
+        signals: super::response::Signals,
+        paths: Vec<Vec<PathSample>>,
+        rec: &Recorder,
+        recorded_s: f64,
+        excitation_periods: usize,
+        periodicity: f64,
+        y_end: &State,
+    ) -> DynamicResponse {
+        let stats = self.ps.integrator_stats();
+        let counts = self.ps.counts();
+        let meshes = paths
+            .into_iter()
+            .enumerate()
+            .map(|(m, path)| MeshResponse {
+                path,
+                mean_mesh_force_n: rec.force_int[m] / recorded_s,
+                mean_dte_m: rec.dte_int[m] / recorded_s,
+            })
+            .collect();
+        DynamicResponse {
+            signals,
+            meshes,
+            periods_to_converge: self.periods,
+            periodicity_error: periodicity,
+            mesh_period_s: self.ps.period(),
+            excitation_periods,
+            end_state: y_end.as_slice().to_vec(),
+            steps: counts.accepted,
+            rhs_evaluations: stats.rhs_calls as usize,
+            factorizations: stats.lu_factorizations as usize,
+            step_counts: counts,
+        }
+    }
+}

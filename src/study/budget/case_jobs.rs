@@ -1,0 +1,521 @@
+//! The cost of the commands that run one case: `stiffness`, `dynamics`, `wear`, `run` and
+//! one case of a sweep; and the most a wear checkpoint can hold.
+//!
+//! # Formula
+//!
+//! With S = `numerics.steps_per_mesh_period`, P_e = `numerics.evaluated_mesh_periods`,
+//! P_max = `numerics.max_mesh_periods`, N = `stiffness.table_points_per_mesh_period`,
+//! G = `wear.points_per_profile`:
+//!
+//! - one dynamic evaluation integrates S_d (P_c + P_e) steps, with S_d = max(S,
+//!   [`adaptive_steps_per_period`](super::evaluation::adaptive_steps_per_period)) (the
+//!   error control adds steps to the S grid nodes where the dynamics need them; the bound
+//!   is measured, see the constant), P_c the periods until steady. P_c is not known
+//!   before the run: the estimate takes P_c = min(P_max, [`PERIODS_TO_SETTLE_PER_DECADE`]
+//!   x log10(1 / tolerance)) (the built-in case settles in 17-18 periods at 1e-6: 30
+//!   leaves margin), and separately requires that one evaluation that never settles,
+//!   S (P_max + P_e) steps, fits the budget (where such a case ends, with an error);
+//! - a quasi-static evaluation solves 2 S equilibria;
+//! - a wear study makes U = 1 + ceil(C / n) updates (C = `wear.total_cycles`), the block n
+//!   being `wear.block_cycles` cut to `wear.threshold_um` / (largest wear per cycle), at
+//!   least one cycle (`study::wear_loop::block_length`). The largest wear per cycle is
+//!   Archard's k p0 s at the nominal load shared by paper eq. (7), Hertz pressure p0 and
+//!   sliding distance s at nominal speeds along the path of contact, times
+//!   [`DYNAMIC_WEAR_FACTOR`] for the dynamic mode;
+//! - time = 2 N t_table + E_d S (P_c + P_e) t_step + E_q S t_qs + checkpoint writing, with
+//!   the rates of the reference machine (2-core AMD EPYC, docs/PERFORMANCE.md):
+//!   t_step = 3 us per integrator step (12.5 ms for 4 200 steps), t_qs = 2.4 us,
+//!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
+//!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log;
+//!   docs/RELIABILITY.md) written at 100 MB/s, plus 2 ms of fsync per update;
+//! - a tooth-resolved case (per-tooth inputs) adds one term ([`super::teeth::budget_term`]):
+//!   its excitation repeats over P mesh periods (up to lcm(z1, z2)), so each dynamic
+//!   evaluation integrates P - 1 more periods and a run-in, each quasi-static one P - 1
+//!   more, a kept response records P periods with its contacts, and each wear record
+//!   holds every tooth's profile;
+//! - memory = 64 MB + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (280 bytes a
+//!   recorded sample, with vector growth, the output tables and their CSV text) + per mode
+//!   U records of (4 G + 4 S_d) numbers at 8 bytes + for `wear` and `run` the outputs of
+//!   every record's profiles, [`OUTPUT_BYTES_PER_PROFILE_POINT`] per grid point (and
+//!   [`OUTPUT_SECONDS_PER_PROFILE_POINT`] of time).
+//!
+//! Under a load spectrum each bin has its model (and table), every update evaluates every
+//! bin, and the block is cut on the spectrum's wear per cycle.
+
+use super::cost::{Estimate, Term};
+use super::evaluation::{
+    dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, wear_updates,
+    DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP,
+    SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
+};
+use crate::config::case::Case;
+use crate::geometry::GearPair;
+use crate::study::sweep::SweepRun;
+use crate::study::wear_loop::WearMode;
+
+/// Bytes of one recorded sample of a dynamic response, with growth, copies and the output
+/// tables and their CSV text: measured 1500 for `gearwear dynamics` at 2e4 steps per
+/// mesh period (280 of them the response itself); 2000 leaves margin.
+pub const BYTES_PER_SAMPLE: f64 = 2000.0;
+/// Memory of the outputs per profile grid point of each wear record (the wear profiles'
+/// and Fig. 12's tables, their CSV text and the figure's curves): measured 106-109 bytes
+/// (`wear.points_per_profile` = 1e5, 21 and 175 records); 160 leaves margin.
+pub const OUTPUT_BYTES_PER_PROFILE_POINT: f64 = 160.0;
+/// Time of the outputs per profile grid point of each wear record (four CSV cells and
+/// the figure's data), s.
+pub const OUTPUT_SECONDS_PER_PROFILE_POINT: f64 = 1e-6;
+const CHECKPOINT_BYTES_PER_NUMBER: f64 = 32.0;
+const DISK_BYTES_PER_S: f64 = 100e6;
+const FSYNC_S: f64 = 2e-3;
+
+/// What a command computes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Job {
+    /// `gearwear stiffness`: the table (twice) and a quasi-static period (over the
+    /// excitation period for a tooth-resolved case: the static TE of its teeth).
+    Stiffness,
+    /// `gearwear dynamics`: one steady-state evaluation.
+    Dynamics,
+    /// `gearwear wear`: the wear study in the modes named.
+    Wear { dynamic: bool, quasi_static: bool },
+    /// `gearwear run`: both wear studies and three wear-state evaluations.
+    Run,
+    /// One case of `gearwear sweep`.
+    SweepCase(SweepRun),
+}
+
+/// Steps per mesh period and mesh periods of one evaluation of a case (module docs).
+struct Periods {
+    /// Steps of a quasi-static period (the grid, S) and of a dynamic one (S_d).
+    s: f64,
+    s_dyn: f64,
+    /// Evaluated periods P_e, the most P_max, and those taken to settle P_c.
+    p_e: f64,
+    p_max: f64,
+    p_c: f64,
+}
+
+impl Periods {
+    fn of(case: &Case) -> Self {
+        let nm = &case.numerics;
+        let p_max = nm.max_mesh_periods as f64;
+        let settle = PERIODS_TO_SETTLE_PER_DECADE * (1.0 / nm.steady_state_tolerance).log10();
+        Self {
+            s: nm.steps_per_mesh_period as f64,
+            s_dyn: dynamic_steps_per_period(nm),
+            p_e: nm.evaluated_mesh_periods as f64,
+            p_max,
+            p_c: p_max.min(settle.max(2.0)),
+        }
+    }
+}
+
+/// What a job evaluates besides its wear updates: the wear studies it runs (a mode per
+/// bin of a load spectrum), the dynamic evaluations beyond them, and the responses kept
+/// in memory at once.
+struct Work {
+    dynamic_modes: f64,
+    quasi_modes: f64,
+    extra_evals: f64,
+    kept: f64,
+}
+
+impl Work {
+    fn of(case: &Case, job: Job, bins: f64) -> Self {
+        let (dynamic_modes, quasi_modes, extra_evals, kept) = match job {
+            Job::Stiffness => (0.0, 0.0, 0.0, 0.0),
+            Job::Dynamics | Job::SweepCase(SweepRun::Dynamics) => (0.0, 0.0, 1.0, 1.0),
+            Job::Wear {
+                dynamic,
+                quasi_static,
+            } => (
+                f64::from(u8::from(dynamic)),
+                f64::from(u8::from(quasi_static)),
+                0.0,
+                2.0,
+            ),
+            Job::Run => (1.0, 1.0, 3.0, 5.0),
+            Job::SweepCase(SweepRun::Wear) => (1.0, 1.0, 0.0, 2.0),
+        };
+        // The bins' responses of an update are in memory together.
+        let kept = if dynamic_modes > 0.0 {
+            kept * bins
+        } else {
+            kept
+        };
+        // `run` under a spectrum adds the life table: a run to the wear limit under the
+        // spectrum (every bin) and one at each bin alone, blocks cut by the threshold only.
+        let extra_evals = match (&case.load_spectrum, job) {
+            (Some(s), Job::Run) => {
+                let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
+                extra_evals + 2.0 * bins * per_run
+            }
+            _ => extra_evals,
+        };
+        Self {
+            dynamic_modes: dynamic_modes * bins,
+            quasi_modes: quasi_modes * bins,
+            extra_evals,
+            kept,
+        }
+    }
+}
+
+/// Largest wear per cycle at the nominal load, m (quasi-static; None without a pair):
+/// under a load spectrum the bins' rates weighted by their shares, bounded by sum_i s_i
+/// (each bin's largest).
+fn nominal_wear_rate_m(case: &Case) -> Option<f64> {
+    GearPair::from_case(&case.gear)
+        .ok()
+        .map(|pair| match &case.load_spectrum {
+            Some(s) => s
+                .bins
+                .iter()
+                .enumerate()
+                .map(|(i, b)| b.share * nominal_wear_per_cycle_m(&case.at_bin(i), &pair))
+                .sum(),
+            None => nominal_wear_per_cycle_m(case, &pair),
+        })
+}
+
+/// The counts an estimate's terms follow from.
+struct Counts {
+    periods: Periods,
+    work: Work,
+    /// Bins of the load spectrum (1 without one).
+    bins: f64,
+    /// Updates of a dynamic and of a quasi-static wear study.
+    u_d: f64,
+    u_q: f64,
+    /// Dynamic evaluations, and wear records over every mode.
+    evals: f64,
+    records: f64,
+}
+
+/// Estimate the cost of `job` on `case` (validated). Cheap: the geometry and a few dozen
+/// Hertz contacts, no model.
+pub fn estimate(case: &Case, job: Job) -> Estimate {
+    let periods = Periods::of(case);
+    let bins = case
+        .load_spectrum
+        .as_ref()
+        .map_or(1.0, |s| s.bins.len() as f64);
+    let rate = nominal_wear_rate_m(case);
+    let r = rate.unwrap_or(0.0);
+    let (u_d, u_q) = (
+        wear_updates(case, DYNAMIC_WEAR_FACTOR * r),
+        wear_updates(case, r),
+    );
+    let work = Work::of(case, job, bins);
+    let evals = work.dynamic_modes * u_d + work.extra_evals;
+    let modes_updates = [(work.dynamic_modes, u_d), (work.quasi_modes, u_q)];
+    let records: f64 = modes_updates.iter().map(|(m, u)| m * u).sum();
+    let c = Counts {
+        periods,
+        work,
+        bins,
+        u_d,
+        u_q,
+        evals,
+        records,
+    };
+    let mut terms = evaluation_terms(case, job, &c);
+    terms.extend(record_terms(case, job, &c));
+    // `stiffness` of a tooth-resolved case adds the static TE of its teeth: one
+    // quasi-static evaluation over the excitation period, kept for its table.
+    let stiffness_te = if job == Job::Stiffness { 1.0 } else { 0.0 };
+    let p = &c.periods;
+    terms.extend(super::teeth::budget_term(
+        case,
+        c.evals,
+        c.work.quasi_modes * c.u_q + stiffness_te,
+        c.work.kept + stiffness_te,
+        c.records,
+        p.s_dyn,
+        p.s,
+    ));
+    Estimate {
+        steps_per_evaluation: p.s_dyn * (p.p_c + p.p_e),
+        steps_to_give_up: if c.evals > 0.0 {
+            p.s_dyn * (p.p_max + p.p_e)
+        } else {
+            0.0
+        },
+        recorded_samples: p.s_dyn * p.p_e,
+        wear_per_cycle_m: rate,
+        wear_updates_dynamic: c.u_d,
+        wear_updates_quasi_static: c.u_q,
+        terms,
+    }
+}
+
+/// The terms of the evaluations: the mesh-stiffness table, the dynamic evaluations, the
+/// signals they record, the quasi-static evaluations.
+fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
+    let (p, w) = (&c.periods, &c.work);
+    let table = case.stiffness.table_points_per_mesh_period as f64;
+    let mut terms = vec![Term {
+        what: "the mesh-stiffness table",
+        seconds: 2.0 * table * SECONDS_PER_TABLE_POINT * c.bins,
+        bytes: 16.0 * table,
+        keys: &["stiffness.table_points_per_mesh_period"],
+    }];
+    if c.evals > 0.0 {
+        terms.push(Term {
+            what: "the dynamic evaluations",
+            seconds: c.evals * p.s_dyn * (p.p_c + p.p_e) * SECONDS_PER_STEP * train_factor(case),
+            bytes: 0.0,
+            keys: if w.dynamic_modes > 0.0 {
+                &[
+                    "numerics.steps_per_mesh_period",
+                    "wear.total_cycles",
+                    "wear.block_cycles",
+                    "wear.threshold_um",
+                    "wear.coefficient_m2_per_n",
+                    "load_spectrum.bins",
+                ]
+            } else {
+                &[
+                    "numerics.steps_per_mesh_period",
+                    "numerics.steady_state_tolerance",
+                ]
+            },
+        });
+    }
+    if w.kept > 0.0 {
+        terms.push(Term {
+            what: "the recorded signals",
+            seconds: 0.0,
+            bytes: w.kept * p.s_dyn * p.p_e * BYTES_PER_SAMPLE * train_factor(case),
+            keys: &[
+                "numerics.evaluated_mesh_periods",
+                "numerics.steps_per_mesh_period",
+            ],
+        });
+    }
+    // The stiffness command's table holds 720 equilibria, 360 steps' worth.
+    let quasi_steps = w.quasi_modes * c.u_q * p.s + if job == Job::Stiffness { 360.0 } else { 0.0 };
+    if quasi_steps > 0.0 {
+        terms.push(Term {
+            what: "the quasi-static evaluations",
+            seconds: quasi_steps * SECONDS_PER_QUASI_STATIC_STEP,
+            bytes: 0.0,
+            keys: &[
+                "wear.total_cycles",
+                "wear.block_cycles",
+                "wear.threshold_um",
+                "wear.coefficient_m2_per_n",
+            ],
+        });
+    }
+    terms
+}
+
+/// The terms of the wear records: held in memory, and for `wear` and `run` their
+/// profiles' tables and figures and the checkpoints written.
+fn record_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
+    let records = c.records;
+    let grid = case.wear.points_per_profile as f64;
+    let record_numbers = 4.0 * grid + 4.0 * c.periods.s_dyn;
+    let mut terms = Vec::new();
+    if records > 0.0 {
+        terms.push(Term {
+            what: "the wear records",
+            seconds: 0.0,
+            bytes: records * record_numbers * 8.0,
+            keys: &[
+                "wear.points_per_profile",
+                "numerics.steps_per_mesh_period",
+                "wear.total_cycles",
+                "wear.block_cycles",
+                "wear.threshold_um",
+                "wear.coefficient_m2_per_n",
+            ],
+        });
+    }
+    let checkpoints = matches!(job, Job::Wear { .. } | Job::Run);
+    if checkpoints && records > 0.0 {
+        // `wear` and `run` write the profiles of every record (and Python's wear and run
+        // build the same tables).
+        let points = records * grid;
+        terms.push(Term {
+            what: "the wear profiles' tables and figures",
+            seconds: points * OUTPUT_SECONDS_PER_PROFILE_POINT,
+            bytes: points * OUTPUT_BYTES_PER_PROFILE_POINT,
+            keys: &[
+                "wear.points_per_profile",
+                "wear.threshold_um",
+                "wear.block_cycles",
+                "wear.total_cycles",
+            ],
+        });
+        let written = records * record_numbers * CHECKPOINT_BYTES_PER_NUMBER;
+        terms.push(Term {
+            what: "writing the checkpoints",
+            seconds: written / DISK_BYTES_PER_S + records * FSYNC_S,
+            bytes: 0.0,
+            keys: &[
+                "wear.total_cycles",
+                "wear.block_cycles",
+                "wear.threshold_um",
+                "wear.coefficient_m2_per_n",
+                "wear.points_per_profile",
+            ],
+        });
+    }
+    terms
+}
+
+/// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
+/// never read beyond what the run could have written: 16 times the estimated number of
+/// updates (the estimate takes the nominal load; a run's actual updates stay well within
+/// that margin) of (4 G + 4 S_d) numbers at [`CHECKPOINT_BYTES_PER_NUMBER`] bytes, and at
+/// least 64 MiB.
+pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
+    let dynamic = mode == WearMode::Dynamic;
+    let e = estimate(
+        case,
+        Job::Wear {
+            dynamic,
+            quasi_static: !dynamic,
+        },
+    );
+    let updates = if dynamic {
+        e.wear_updates_dynamic
+    } else {
+        e.wear_updates_quasi_static
+    };
+    let s_dyn = dynamic_steps_per_period(&case.numerics);
+    let numbers = 4.0 * case.wear.points_per_profile as f64 + 4.0 * s_dyn;
+    let bytes = 16.0 * updates * numbers * CHECKPOINT_BYTES_PER_NUMBER;
+    bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::load_case;
+    use crate::study::budget::Budget;
+
+    fn case(sets: &[&str]) -> Case {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        load_case("", &sets).unwrap()
+    }
+
+    #[test]
+    fn built_in_runs_fit_the_default_budget() {
+        let c = Case::default();
+        for job in [
+            Job::Stiffness,
+            Job::Dynamics,
+            Job::Run,
+            Job::Wear {
+                dynamic: true,
+                quasi_static: true,
+            },
+            Job::SweepCase(SweepRun::Wear),
+        ] {
+            let e = estimate(&c, job);
+            e.check(&Budget::DEFAULT).unwrap();
+            // The built-in run takes ~0.3 s (docs/PERFORMANCE.md): the estimate is an
+            // upper bound of the right order.
+            assert!(e.seconds() < 20.0, "{job:?}: {}", e.seconds());
+        }
+    }
+
+    #[test]
+    fn every_bin_of_a_spectrum_is_counted() {
+        // Ten bins at the operating point (shares 0.1): the same wear rate and updates,
+        // ten times the evaluations.
+        let one = estimate(&Case::default(), Job::Run);
+        let bins = ["{torque_nm = 60, input_speed_hz = 30, share = 0.1}"; 10].join(", ");
+        let ten = load_case(&format!("[load_spectrum]\nbins = [{bins}]\n"), &[]).unwrap();
+        let e = estimate(&ten, Job::Run);
+        assert!((e.wear_per_cycle_m.unwrap() / one.wear_per_cycle_m.unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(e.wear_updates_dynamic, one.wear_updates_dynamic);
+        let dyn_s = |e: &Estimate| {
+            e.terms
+                .iter()
+                .find(|t| t.what == "the dynamic evaluations")
+                .unwrap()
+                .seconds
+        };
+        // Run: 1 wear study of U updates plus 3 wear states; ten bins: 10 U + 3, and the
+        // life runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
+        let u = one.wear_updates_dynamic;
+        let ratio = dyn_s(&e) / dyn_s(&one);
+        let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (u + 3.0);
+        assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
+        // A long spectrum over the budget names the bins.
+        let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
+        let big = load_case(
+            &format!("[load_spectrum]\nbins = [{many}]\n"),
+            &["wear.total_cycles=1e6".into()],
+        )
+        .unwrap();
+        let msg = estimate(&big, Job::Run)
+            .check(&Budget::DEFAULT)
+            .unwrap_err();
+        assert!(msg.contains("load_spectrum.bins"), "{msg}");
+    }
+
+    #[test]
+    fn issue_13_values_are_refused_naming_their_keys() {
+        for (sets, job, key) in [
+            (
+                vec!["numerics.steps_per_mesh_period=1e6"],
+                Job::Dynamics,
+                "numerics.steps_per_mesh_period",
+            ),
+            (
+                vec!["numerics.evaluated_mesh_periods=1e5"],
+                Job::Dynamics,
+                "numerics.evaluated_mesh_periods",
+            ),
+            (
+                vec!["wear.total_cycles=1e11"],
+                Job::Run,
+                "wear.total_cycles",
+            ),
+            (vec!["wear.block_cycles=1"], Job::Run, "wear.block_cycles"),
+            (
+                vec!["wear.threshold_um=1e-3", "wear.total_cycles=1e6"],
+                Job::Run,
+                "wear.threshold_um",
+            ),
+            (
+                vec!["wear.coefficient_m2_per_n=1e-11"],
+                Job::Run,
+                "wear.coefficient_m2_per_n",
+            ),
+            (
+                vec![
+                    "numerics.max_mesh_periods=1e6",
+                    "numerics.steady_state_tolerance=1e-12",
+                ],
+                Job::Dynamics,
+                "numerics.max_mesh_periods",
+            ),
+            (
+                vec!["wear.points_per_profile=1e5", "wear.block_cycles=20"],
+                Job::Wear {
+                    dynamic: false,
+                    quasi_static: true,
+                },
+                "wear.points_per_profile",
+            ),
+        ] {
+            let e = estimate(&case(&sets), job)
+                .check(&Budget::DEFAULT)
+                .expect_err(&format!("{sets:?}"));
+            assert!(
+                e.contains(key) && e.contains("over its budget"),
+                "{sets:?}: {e}"
+            );
+        }
+        // A budget raised knowingly lets a refused run through.
+        let big = estimate(&case(&["wear.block_cycles=100"]), Job::Run);
+        assert!(big.check(&Budget::scaled(1e-3)).is_err());
+        assert!(big.check(&Budget::DEFAULT).is_ok());
+    }
+}

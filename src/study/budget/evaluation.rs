@@ -1,0 +1,100 @@
+//! What every estimate is built from: the rates of the reference machine (2-core AMD
+//! EPYC, docs/PERFORMANCE.md) for an integrator step, a quasi-static step and a point of
+//! the mesh-stiffness table; the steps a dynamic evaluation takes per mesh period and the
+//! periods it needs to settle; the largest wear per cycle at the nominal load and the
+//! updates of a wear study that follow from it.
+
+use crate::config::case::{Case, NumericsSection};
+use crate::geometry::GearPair;
+use crate::study::domain::nominal_contacts;
+
+/// Integrator step on the reference machine, s.
+pub const SECONDS_PER_STEP: f64 = 3e-6;
+/// Quasi-static equilibria for one step of the grid (two per step), s.
+pub const SECONDS_PER_QUASI_STATIC_STEP: f64 = 2.4e-6;
+/// One point of the mesh-stiffness table, s.
+pub const SECONDS_PER_TABLE_POINT: f64 = 2e-6;
+/// Periods to settle per decade of `numerics.steady_state_tolerance`.
+pub const PERIODS_TO_SETTLE_PER_DECADE: f64 = 5.0;
+/// Recorded samples per mesh period of the dynamic solver at the default integration
+/// tolerance 1e-5, bounding its step count from above: measured 662 at 0.5 Hz input
+/// (the most: the slow mesh leaves the fast modes to the error control), 230 at 30 Hz,
+/// 200 at 300 Hz (the grid nodes). At 1e-7, 1e-8 and 1e-9 the measured counts (2733,
+/// 5761, 12412 at 0.5 Hz) stay below this bound's 3250, 7000 and 15080.
+pub const ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE: f64 = 700.0;
+/// Dynamic wear per cycle over the quasi-static estimate (dynamic factor margin).
+pub const DYNAMIC_WEAR_FACTOR: f64 = 1.5;
+
+/// Steps per mesh period the error control of the dynamic solver takes, at most, at the
+/// local error tolerance `tol` (dimensionless): [`ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE`]
+/// x (1e-5 / tol)^(1/3), the step of a third-order method scaling as tol^(1/3).
+pub fn adaptive_steps_per_period(tol: f64) -> f64 {
+    ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE * (1e-5 / tol).cbrt()
+}
+
+/// Steps of a dynamic evaluation per mesh period, S_d = max(S, the error control's bound
+/// [`adaptive_steps_per_period`]): the error control may add steps to the S grid nodes.
+pub fn dynamic_steps_per_period(nm: &NumericsSection) -> f64 {
+    (nm.steps_per_mesh_period as f64).max(adaptive_steps_per_period(nm.integration_tolerance))
+}
+
+/// Largest Archard wear per pinion cycle on either profile at the nominal load and speeds,
+/// m (quasi-static): Archard's k p0 s at the nominal load shared by paper eq. (7), Hertz
+/// pressure p0 and sliding distance s at nominal speeds along the path of contact.
+pub fn nominal_wear_per_cycle_m(case: &Case, pair: &GearPair) -> f64 {
+    let ratio = pair.pinion.teeth as f64 / pair.gear.teeth as f64;
+    let k = case.wear.coefficient_m2_per_n;
+    nominal_contacts(case, pair, 64)
+        .iter()
+        .map(|c| {
+            let (up, ug) = (
+                c.kinematics.pinion_velocity_m_per_s,
+                c.kinematics.gear_velocity_m_per_s,
+            );
+            if !(up > 0.0 && ug > 0.0) {
+                return 0.0;
+            }
+            let slide = 2.0 * c.hertz.half_width_m * (up - ug).abs();
+            let p0 = c.hertz.max_pressure_pa;
+            (k * p0 * slide / up).max(ratio * k * p0 * slide / ug)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Updates (records) of a wear study whose largest wear per cycle is `rate_m`: U = 1 +
+/// ceil(C / n), the block n being `wear.block_cycles` cut to `wear.threshold_um` /
+/// `rate_m`, at least one cycle (`study::wear_loop::block_length`).
+pub fn wear_updates(case: &Case, rate_m: f64) -> f64 {
+    let w = &case.wear;
+    let threshold = w.threshold_um * 1e-6;
+    let mut block = w.block_cycles;
+    if rate_m > 0.0 && block * rate_m > threshold {
+        block = (threshold / rate_m).floor().max(1.0);
+    }
+    1.0 + (w.total_cycles / block).ceil()
+}
+
+/// How much more a dynamic evaluation of a gear train costs than one of a single pair
+/// (1 for a case without `[[stage]]`): its base period (`dynamics::grid::base_period`)
+/// holds sum_k N_k mesh periods of its meshes, each with its events and steps, and each
+/// step costs about (states / 16) times the single pair's (a right-hand side per mesh,
+/// linear algebra on the larger state). A train whose base period cannot be counted is
+/// infinitely dear (refused).
+pub fn train_factor(case: &Case) -> f64 {
+    if case.stage.is_empty() {
+        return 1.0;
+    }
+    let teeth: Vec<[usize; 2]> = case
+        .stage
+        .iter()
+        .map(|s| {
+            let g = s.gear_section(&case.gear);
+            [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
+        })
+        .collect();
+    let states = 4.0 + 12.0 * teeth.len() as f64;
+    match crate::dynamics::grid::chain_mesh_counts(&teeth) {
+        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>() * (states / 16.0).max(1.0),
+        None => f64::INFINITY,
+    }
+}

@@ -1,0 +1,238 @@
+//! The record a finished sweep case leaves on disk (`cases/<case_id>.json`): its results,
+//! what it was the result of, and for a continuation point the state it started from and
+//! ended in, sealed by a checksum so that a rerun can tell a finished case from an edited
+//! or foreign file.
+
+use super::case_run::{CaseResults, SweepRun};
+use super::continuation::Branch;
+use serde::{Deserialize, Serialize};
+
+/// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
+/// tell whether it belongs to the sweep being run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CaseRecord {
+    pub case_id: usize,
+    /// SHA-256 of the resolved case (`RunMetadata::case_sha256`).
+    pub case_sha256: String,
+    pub run: SweepRun,
+    pub keys: Vec<String>,
+    pub values: Vec<String>,
+    pub columns: Vec<String>,
+    /// In `columns` order; null for a non-finite number.
+    pub results: Vec<Option<f64>>,
+    /// Continuation sweeps only: the branch, and the state the point started from
+    /// (absent: static equilibrium) and ended in, as the bits of each f64 (exact in JSON).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub continuation: Option<ContinuationLink>,
+    /// SHA-256 of the record's JSON without this field ([`CaseRecord::sealed`]), so an
+    /// edited record is detected ([`CaseRecord::verify`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checksum: Option<String>,
+}
+
+/// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ContinuationLink {
+    pub branch: Branch,
+    /// `f64::to_bits` of the start state; `None` for the static equilibrium.
+    pub start_state_bits: Option<Vec<u64>>,
+    /// `f64::to_bits` of the end state (the next point's start).
+    pub end_state_bits: Vec<u64>,
+}
+
+impl ContinuationLink {
+    pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
+        Self {
+            branch,
+            start_state_bits: start.map(state_bits),
+            end_state_bits: state_bits(end),
+        }
+    }
+
+    /// The end state, if the record holds one (a state of the case's model: a start of
+    /// another length is not taken, `period_search::MeshPeriodSearch`).
+    pub fn end_state(&self) -> Option<Vec<f64>> {
+        (!self.end_state_bits.is_empty()).then(|| {
+            self.end_state_bits
+                .iter()
+                .map(|b| f64::from_bits(*b))
+                .collect()
+        })
+    }
+
+    /// Whether this point was started from `start` (bit for bit).
+    pub fn started_from(&self, start: Option<&[f64]>) -> bool {
+        self.start_state_bits == start.map(state_bits)
+    }
+}
+
+fn state_bits(s: &[f64]) -> Vec<u64> {
+    s.iter().map(|x| x.to_bits()).collect()
+}
+
+impl CaseRecord {
+    /// The record of case `case_id` (resolved case `case_sha256`, value labels `values`
+    /// of `keys`) with `results`, sealed.
+    pub fn of(
+        case_id: usize,
+        case_sha256: &str,
+        keys: &[String],
+        values: &[String],
+        results: &CaseResults,
+        continuation: Option<ContinuationLink>,
+    ) -> Self {
+        let run = results.run();
+        CaseRecord {
+            case_id,
+            case_sha256: case_sha256.to_owned(),
+            run,
+            keys: keys.to_vec(),
+            values: values.to_vec(),
+            columns: run.columns(),
+            results: results
+                .values()
+                .iter()
+                .map(|x| x.is_finite().then_some(*x))
+                .collect(),
+            continuation,
+            checksum: None,
+        }
+        .sealed()
+    }
+
+    /// The record's results (null numbers as NaN), if its columns are this version's.
+    pub fn case_results(&self) -> Option<CaseResults> {
+        if self.columns != self.run.columns() {
+            return None;
+        }
+        let v: Vec<f64> = self.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect();
+        CaseResults::from_values(self.run, &v)
+    }
+
+    fn content_checksum(&self) -> String {
+        let plain = CaseRecord {
+            checksum: None,
+            ..self.clone()
+        };
+        crate::checksum::sha256_hex(serde_json::to_string(&plain).unwrap_or_default().as_bytes())
+    }
+
+    /// The record with its checksum set, ready to be written.
+    pub fn sealed(mut self) -> Self {
+        self.checksum = Some(self.content_checksum());
+        self
+    }
+
+    /// Read back: the checksum matches the content, and the results match the columns.
+    pub fn verify(&self) -> Result<(), String> {
+        match &self.checksum {
+            None => return Err("has no checksum".into()),
+            Some(c) if *c != self.content_checksum() => {
+                return Err("does not match its checksum: the file was changed".into())
+            }
+            Some(_) => {}
+        }
+        if self.results.len() != self.columns.len() {
+            return Err(format!(
+                "holds {} results for {} columns",
+                self.results.len(),
+                self.columns.len()
+            ));
+        }
+        if self.keys.len() != self.values.len() {
+            return Err("its varied keys and values differ in number".into());
+        }
+        Ok(())
+    }
+
+    /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
+    /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
+    pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
+        use crate::io::input::{read_input_if_present, MAX_CASE_RECORD_BYTES};
+        let bytes = match read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES) {
+            Ok(Some(b)) => b,
+            Ok(None) => return Ok(None),
+            Err(e) => return Err(e.to_string()),
+        };
+        let r: CaseRecord = serde_json::from_slice(&bytes)
+            .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;
+        r.verify().map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(Some(r))
+    }
+
+    /// Whether this record is the finished result of the given case: same id, resolved
+    /// case, run kind, varied keys and values, and the columns this version writes. A
+    /// continuation point is not the result of an ordinary case (see
+    /// [`CaseRecord::continuation`] for its own check).
+    pub fn is_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        run: SweepRun,
+        keys: &[String],
+        values: &[String],
+    ) -> bool {
+        self.case_id == case_id
+            && self.case_sha256 == hash
+            && self.run == run
+            && self.keys == keys
+            && self.values == values
+            && self.columns == run.columns()
+            && self.results.len() == self.columns.len()
+            && self.continuation.is_none()
+    }
+
+    /// Whether this record is the finished result of continuation point `case_id` on
+    /// `branch`, started from `start`: [`CaseRecord::is_result_of`] apart from the link,
+    /// and the same branch and start state, so that a resumed branch follows the same
+    /// path as an uninterrupted one.
+    pub fn is_continuation_result_of(
+        &self,
+        case_id: usize,
+        hash: &str,
+        keys: &[String],
+        values: &[String],
+        branch: Branch,
+        start: Option<&[f64]>,
+    ) -> bool {
+        let Some(link) = &self.continuation else {
+            return false;
+        };
+        let plain = CaseRecord {
+            continuation: None,
+            checksum: None,
+            ..self.clone()
+        };
+        plain.is_result_of(case_id, hash, SweepRun::Dynamics, keys, values)
+            && link.branch == branch
+            && link.started_from(start)
+            && link.end_state().is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn record_matches_only_its_case() {
+        let keys = vec!["operating.input_speed_hz".to_string()];
+        let values = vec!["30".to_string()];
+        let r = CaseRecord {
+            case_id: 3,
+            case_sha256: "abc".into(),
+            run: SweepRun::Dynamics,
+            keys: keys.clone(),
+            values: values.clone(),
+            columns: SweepRun::Dynamics.columns(),
+            results: vec![Some(1.0); 9],
+            continuation: None,
+            checksum: None,
+        };
+        assert!(r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(4, "abc", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(3, "abd", SweepRun::Dynamics, &keys, &values));
+        assert!(!r.is_result_of(3, "abc", SweepRun::Wear, &keys, &values));
+        assert!(!r.is_result_of(3, "abc", SweepRun::Dynamics, &keys, &["31".to_string()]));
+    }
+}
