@@ -22,6 +22,7 @@ pub use super::teeth::{
     Fault, FaultKind, FaultTable, Member, ModificationSection, ReliefShape, TeethSection,
     ToothFault,
 };
+pub use super::train::StageSpec;
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -71,7 +72,7 @@ pub struct Case {
     /// The stages of a gear train (`[[stage]]` tables; none: the single pair of
     /// `[gear]`), `config::train`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub stage: Vec<super::train::StageSpec>,
+    pub stage: Vec<StageSpec>,
 }
 
 /// Involute spur pair (paper Table 1).

@@ -18,48 +18,70 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StageSpec {
+    /// Module m, mm (absent: `gear.module_mm`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub module_mm: Option<f64>,
+    /// Teeth of the stage's pinion (the driving gear; absent: `gear.teeth_pinion`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub teeth_pinion: Option<i64>,
+    /// Teeth of the stage's gear (absent: `gear.teeth_gear`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub teeth_gear: Option<i64>,
+    /// Reference pressure angle, deg (absent: `gear.pressure_angle_deg`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure_angle_deg: Option<f64>,
+    /// Addendum coefficient, in modules (absent: `gear.addendum_coefficient`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub addendum_coefficient: Option<f64>,
+    /// Dedendum coefficient, in modules (absent: `gear.dedendum_coefficient`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dedendum_coefficient: Option<f64>,
+    /// Profile shift coefficient of the stage's pinion (absent: `gear.profile_shift_pinion`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_shift_pinion: Option<f64>,
+    /// Profile shift coefficient of the stage's gear (absent: `gear.profile_shift_gear`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_shift_gear: Option<f64>,
+    /// Face width, mm (absent: `gear.face_width_mm`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub face_width_mm: Option<f64>,
+    /// Operating centre distance, mm (absent: `gear.centre_distance_mm`, or the one the profile shifts give).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub centre_distance_mm: Option<f64>,
+    /// Pinion hub bore radius, mm, or `"derived"` (absent: `gear.hub_bore_radius_pinion_mm`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hub_bore_radius_pinion_mm: Option<Derivable>,
+    /// Gear hub bore radius, mm, or `"derived"` (absent: `gear.hub_bore_radius_gear_mm`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hub_bore_radius_gear_mm: Option<Derivable>,
+    /// Rack-cutter tip radius, in modules (absent: `gear.tool_tip_radius_coefficient`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tool_tip_radius_coefficient: Option<f64>,
+    /// Pinion mass, kg, or `"derived"` from its blank (absent: `dynamics.mass_pinion_kg`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mass_pinion_kg: Option<Derivable>,
+    /// Gear mass, kg, or `"derived"` (absent: `dynamics.mass_gear_kg`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mass_gear_kg: Option<Derivable>,
+    /// Pinion polar inertia, kg m^2, or `"derived"` (absent: `dynamics.inertia_pinion_kg_m2`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inertia_pinion_kg_m2: Option<Derivable>,
+    /// Gear polar inertia, kg m^2, or `"derived"` (absent: `dynamics.inertia_gear_kg_m2`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inertia_gear_kg_m2: Option<Derivable>,
+    /// Pinion bearing stiffness in x and y, N/m (absent: `dynamics.bearing_stiffness_pinion_n_per_m`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bearing_stiffness_pinion_n_per_m: Option<f64>,
+    /// Gear bearing stiffness in x and y, N/m (absent: `dynamics.bearing_stiffness_gear_n_per_m`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bearing_stiffness_gear_n_per_m: Option<f64>,
+    /// Pinion bearing damping in x and y, N s/m (absent: `dynamics.bearing_damping_pinion_n_s_per_m`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bearing_damping_pinion_n_s_per_m: Option<f64>,
+    /// Gear bearing damping in x and y, N s/m (absent: `dynamics.bearing_damping_gear_n_s_per_m`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bearing_damping_gear_n_s_per_m: Option<f64>,
+    /// Mesh damping ratio zeta (absent: `dynamics.mesh_damping_ratio`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mesh_damping_ratio: Option<f64>,
     /// Torsional stiffness of the shaft from this stage's gear to the next stage's
