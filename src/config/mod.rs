@@ -3,6 +3,7 @@
 pub mod case;
 pub mod derivable;
 mod docs;
+pub mod gear;
 pub mod load;
 pub mod load_spectrum;
 pub mod lumped;

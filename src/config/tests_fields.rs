@@ -6,8 +6,9 @@
 use super::schema::KEYS;
 
 /// The files holding the section structs.
-const SOURCES: [&str; 6] = [
+const SOURCES: [&str; 7] = [
     include_str!("case.rs"),
+    include_str!("gear.rs"),
     include_str!("lumped.rs"),
     include_str!("operating.rs"),
     include_str!("signals.rs"),

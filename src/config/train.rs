@@ -10,8 +10,9 @@
 //! and the load torque (on the input or the output shaft). A case without `[[stage]]`
 //! is the single pair of `[gear]`, a one-stage train.
 
-use super::case::{DynamicsSection, GearSection};
 use super::derivable::Derivable;
+use super::gear::GearSection;
+use super::lumped::DynamicsSection;
 use serde::{Deserialize, Serialize};
 
 /// One `[[stage]]` table: every key optional (absent: `[gear]`'s or `[dynamics]`'s).

@@ -1,8 +1,9 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
 use super::domain::{body_value_warnings, domain_problems, Resolved, ResolvedParameters};
+pub use super::model_error::ModelError;
 use super::teeth::ToothInputs;
-use crate::config::case::{Case, GearSection, LoadSharingModel};
+use crate::config::case::{Case, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
@@ -17,18 +18,6 @@ use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
 use crate::wear::{RoughnessLaw, WearState};
-
-/// A case that cannot be modelled (bad geometry or an unusable combination of settings).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ModelError(pub Vec<String>);
-
-impl std::fmt::Display for ModelError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.0.join("; "))
-    }
-}
-
-impl std::error::Error for ModelError {}
 
 /// New teeth and no external error, for the meshes of a train that a study leaves
 /// unworn.
@@ -152,8 +141,13 @@ impl Model {
         }
         let elastic = ElasticPair::from_case(&case.materials);
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-        let mesh = MeshStiffness::with_fillet(&pair, &elastic, n_table, fillet_settings(case))
-            .map_err(|e| ModelError(e.0))?;
+        let mesh = MeshStiffness::with_fillet(
+            &pair,
+            &elastic,
+            n_table,
+            FilletSettings::for_pair(&case.stiffness, &case.gear),
+        )
+        .map_err(|e| ModelError(e.0))?;
         warnings.extend(mesh.warnings().iter().cloned());
         let params = DynamicParams::from_case(case, &pair);
         warnings.extend(body_value_warnings(
@@ -408,17 +402,4 @@ impl Model {
         let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_quasi_static(&sys, self.settings.steps_per_mesh_period)
     }
-}
-
-/// The case's fillet-foundation settings. The built-in pair is exempt from the theta_f
-/// limit of Sainsot's fit: under the fillet-junction convention its 19-tooth pinion has
-/// theta_f = 0.159 rad, above the fit's 0.12 (docs/MODEL.md, section 2), and the built-in
-/// case must run as the paper's case; every case with the built-in tooth form (teeth,
-/// reference profile, shifts; theta_f depends on nothing else) shares the exemption and
-/// the warning. h_f stays checked.
-pub(crate) fn fillet_settings(case: &Case) -> Option<FilletSettings> {
-    FilletSettings::from_case(&case.stiffness).map(|mut s| {
-        s.allow_theta_f_extrapolation = case.gear.same_tooth_form(&GearSection::default());
-        s
-    })
 }

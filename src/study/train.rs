@@ -2,7 +2,7 @@
 //! pair, mesh stiffness and wear grid, the assembly of the whole train and its operating
 //! point, built once.
 
-use super::model::{fillet_settings, ModelError};
+use super::model_error::ModelError;
 use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
 use crate::config::train::StageSpec;
 use crate::contact::friction::Friction;
@@ -13,7 +13,7 @@ use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
 use crate::geometry::{GearPair, ProfileGrid};
-use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
 use std::borrow::Cow;
 
@@ -87,14 +87,18 @@ impl TrainModel {
                 )
             }));
             let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-            let mesh =
-                match MeshStiffness::with_fillet(&pair, elastic, n_table, fillet_settings(&sc)) {
-                    Ok(m) => m,
-                    Err(e) => {
-                        problems.extend(e.0.iter().map(|m| at_stage(k, m)));
-                        continue;
-                    }
-                };
+            let mesh = match MeshStiffness::with_fillet(
+                &pair,
+                elastic,
+                n_table,
+                FilletSettings::for_pair(&sc.stiffness, &sc.gear),
+            ) {
+                Ok(m) => m,
+                Err(e) => {
+                    problems.extend(e.0.iter().map(|m| at_stage(k, m)));
+                    continue;
+                }
+            };
             let d = &sc.dynamics;
             let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
             let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
