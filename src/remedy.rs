@@ -4,7 +4,7 @@
 //! an argument of the job rather than a case key: the output folder, resuming, a sweep
 //! axis, the run budget. The command line spells those as flags (`--out`), Python as
 //! keyword arguments (`out`), so a library message never spells one: it holds an
-//! [`Arg`], and the front end renders the message with its own [`Spelling`]
+//! [`Arg`], and the front end renders the message with its own `Spelling`
 //! ([`Words::render`], [`Problem::render`]). `Display` renders plain words ("the output
 //! folder") for callers of the library itself, and is what `tests/no_flags.rs` checks
 //! for flags.
@@ -85,7 +85,7 @@ pub enum Arg {
 }
 
 /// How a front end spells an argument in its messages.
-pub type Spelling = fn(Arg) -> &'static str;
+pub(crate) type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
@@ -174,6 +174,7 @@ enum Piece {
 pub struct Words(Vec<Piece>);
 
 impl Words {
+    /// Empty text.
     pub fn new() -> Self {
         Self::default()
     }
@@ -212,6 +213,7 @@ impl Words {
             .collect()
     }
 
+    /// Whether the text is empty.
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
@@ -239,12 +241,16 @@ impl fmt::Display for Words {
 /// the case key to change and the file or folder concerned.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Remedy {
+    /// What to do, in words that may name job arguments.
     pub action: Words,
+    /// The case key to change, dotted (`section.key`), when the action concerns one.
     pub key: Option<String>,
+    /// The file or folder concerned, when the action concerns one.
     pub path: Option<PathBuf>,
 }
 
 impl Remedy {
+    /// A remedy that is the action `action` alone.
     pub fn new(action: impl Into<Words>) -> Self {
         Self {
             action: action.into(),
@@ -253,15 +259,17 @@ impl Remedy {
     }
 
     /// `action`, done through argument `arg`: "choose a folder you can write to (--out)".
-    pub fn via(action: &str, arg: Arg) -> Self {
+    pub(crate) fn via(action: &str, arg: Arg) -> Self {
         Self::new(Words::new().text(format!("{action} (")).arg(arg).text(")"))
     }
 
+    /// Name the case key `key` the action concerns.
     pub fn key(mut self, key: impl Into<String>) -> Self {
         self.key = Some(key.into());
         self
     }
 
+    /// Name the file or folder `path` the action concerns.
     pub fn path(mut self, path: impl Into<PathBuf>) -> Self {
         self.path = Some(path.into());
         self
@@ -273,7 +281,7 @@ impl Remedy {
     }
 
     /// Start afresh instead of resuming: "rerun without --resume".
-    pub fn start_afresh() -> Self {
+    pub(crate) fn start_afresh() -> Self {
         Self::new(Words::new().text("rerun without ").arg(Arg::Resume))
     }
 }
@@ -282,9 +290,11 @@ impl Remedy {
 /// is wrong, and what to do.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Problem {
+    /// The job argument at fault, if the problem concerns one.
     pub arg: Option<Arg>,
     /// The argument's value as given, quoted after it.
     pub given: Option<String>,
+    /// What is wrong, in words that may name job arguments.
     pub what: Words,
     /// Boxed: most problems have none, and errors stay small.
     pub remedy: Option<Box<Remedy>>,
@@ -315,6 +325,7 @@ impl Problem {
         }
     }
 
+    /// Attach what to do about the problem.
     pub fn remedy(mut self, r: Remedy) -> Self {
         self.remedy = Some(Box::new(r));
         self
@@ -336,7 +347,7 @@ impl Problem {
     }
 
     /// The same problem with `context` put before what is wrong ("case 3 (...): ").
-    pub fn in_context(mut self, context: &str) -> Self {
+    pub(crate) fn in_context(mut self, context: &str) -> Self {
         let mut w = Words::new().text(context.to_owned());
         w.0.extend(self.what.0);
         self.what = w;

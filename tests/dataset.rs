@@ -28,8 +28,6 @@ noise_realisations = 2
 name = "healthy"
 [[condition]]
 name = "rough"
-fault = "roughness"
-severity = 2.0
 [condition.case.surface]
 roughness_table_rms_um = [0.42, 0.38, 0.30]
 "#;

@@ -22,7 +22,7 @@ fn the_wear_outputs_under_a_spectrum_hold_what_each_bin_did() {
         .to_vec();
     let runs = run_spectrum_modes(&sm, starts, &|_, _| Ok(())).unwrap();
     let refs: Vec<&SpectrumRun> = runs.iter().collect();
-    let a = duty_wear_artifacts(&sm, &refs);
+    let a = duty_wear_artifacts(&sm, &refs, None);
     let dir = tempfile::tempdir().unwrap();
     let out = OutputDir::open(&dir.path().join("w"), None, "wear").unwrap();
     let root = publish_artifacts(out, &a).unwrap();

@@ -129,7 +129,7 @@ fn a_known_wear_coefficient_is_recovered_from_condition_indicator_trends() {
     assert!(sd < 0.098, "posterior sd of ln k {sd}");
     // Recovered: one noise realisation, a near-Gaussian posterior: the truth lies within
     // 3 sd of the posterior mean with 99.7 % probability (the surrogate's own error is
-    // below a tenth of the spread, tests/prognostics.rs).
+    // below a tenth of the spread, src/prognostics/tests_calibration.rs).
     assert!(
         (mean - k0.ln()).abs() < 3.0 * sd,
         "{} vs {sd}",

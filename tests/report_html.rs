@@ -248,8 +248,9 @@ fn footer_and_comparison_table() {
     );
     assert_eq!(t.header.len(), 5);
     assert_eq!(t.highlight_col, Some(3));
-    // (11 - 10) / 10 = +10 %, by definition of the relative deviation.
-    assert_eq!(t.rows[0][3], "+10.0 %");
+    // (11 - 10) / 10 = +10 %, by definition of the relative deviation (a whole
+    // percentage prints whole: gearwear::format).
+    assert_eq!(t.rows[0][3], "+10 %");
     let report = Report {
         title: "t".into(),
         sections: vec![Section {
@@ -263,7 +264,7 @@ fn footer_and_comparison_table() {
     let html = render(&report);
     let footer = bodies(&html, "footer");
     assert_eq!(footer, ["gearwear 0.1.0\ncase sha256 0123abcd"]);
-    assert!(html.contains("<td class=\"num hl\">+10.0 %</td>"));
+    assert!(html.contains("<td class=\"num hl\">+10 %</td>"));
     // No footer element without metadata; a single section gets no contents list.
     let bare = render(&Report {
         footer: String::new(),

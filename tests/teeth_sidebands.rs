@@ -1,19 +1,45 @@
 //! Run-out sidebands against the first-order perturbation solution: the linear
 //! time-periodic response to the run-out's modulated transmission error, solved by a
 //! second method (exponential propagation of the frozen state matrix and a direct solve
-//! of the periodic boundary value problem over the gear's revolution).
+//! of the periodic boundary value problem over the gear's revolution), its lines the exact
+//! Fourier coefficients of that solution.
 
 use gearwear::config::load_case;
 use gearwear::dynamics::excitation::{ExternalError, PairGap};
+use gearwear::dynamics::fourier::HermitePeriod;
 use gearwear::dynamics::grid::period_nodes;
-use gearwear::dynamics::model::{dof, State, NDOF};
+use gearwear::dynamics::model::{dof, GearSystem, State, NDOF};
 use gearwear::dynamics::spectrum::amplitude_spectrum;
-use gearwear::dynamics::summary::evaluated_periods;
+use gearwear::dynamics::summary::{dte_signal, evaluated_periods, velocity_signal};
 use gearwear::study::Model;
 
 mod common;
-use common::linear::linear_periodic;
+use common::linear::linear_periodic_with_slopes;
 
+/// Line amplitudes 0..=lines of the second method's periodic solution on `grid` (one
+/// excitation period) of the quantity `of` (a linear function of the state, so its slope
+/// is `of` of the state's derivative): the exact Fourier coefficients of the cubic Hermite
+/// interpolant of the node values and the frozen intervals' end slopes.
+fn second_method_lines(
+    sys: &GearSystem,
+    grid: &[f64],
+    lines: usize,
+    of: &dyn Fn(&State) -> f64,
+) -> Vec<f64> {
+    let (y, slopes) = linear_periodic_with_slopes(sys, grid, dof::PHI_M);
+    let n = grid.len() - 1;
+    let h = HermitePeriod {
+        t: grid[..n].to_vec(),
+        x: (0..n).map(|k| of(&y[k])).collect(),
+        slope_start: slopes.iter().map(|(a, _)| of(a)).collect(),
+        slope_end: slopes.iter().map(|(_, b)| of(b)).collect(),
+        period_s: grid[n] - grid[0],
+    };
+    h.coefficients(grid[0], lines)
+        .iter()
+        .map(|c| c.norm())
+        .collect()
+}
 #[test]
 fn runout_sidebands_match_the_first_order_perturbation_solution() {
     // Gear run-out F_r = 2 um (eccentricity 1 um), no friction, motor speed imposed:
@@ -21,7 +47,9 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
     // transmission error e(t) = e_c cos(Omega_g t) modulated by the mesh stiffness. The
     // solver's DTE spectrum over the gear's revolution (31 mesh periods, bins of the gear
     // frequency) must show the lines at f_mesh +- f_gear and at f_gear with the
-    // amplitudes of the second method's solution within 2 %.
+    // amplitudes of the second method's solution within 0.05 %: both sets of lines are the
+    // exact Fourier coefficients of their solutions, so what is left is the difference of
+    // the solutions (time response 0.02 %).
     let sets: Vec<String> = [
         "friction.model=none",
         "operating.speed_boundary=motor_speed_imposed",
@@ -41,12 +69,9 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
         "contact must hold"
     );
     let periods = evaluated_periods(&r);
-    let solver = amplitude_spectrum(
-        &r.signals.time_s,
-        &r.signals.meshes[0].dte_m,
-        r.mesh_period_s,
-        periods,
-    );
+    assert_eq!(periods, p);
+    let solver = amplitude_spectrum(&dte_signal(&r, 0), periods);
+    let solver_v = amplitude_spectrum(&velocity_signal(&r, dof::YP), periods);
     assert_eq!(solver.bins_per_harmonic, p);
 
     // The second method on the solver's node grid, every interval cut in 4 and in 8,
@@ -66,43 +91,47 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
             .chain([*grid.last().unwrap()])
             .collect()
     };
-    let (c4, c8) = (
-        linear_periodic(&sys, &refine(4), dof::PHI_M),
-        linear_periodic(&sys, &refine(8), dof::PHI_M),
-    );
+    let lines = 2 * p + 1;
     let g = sys.mesh_gradient(0);
     let dte = |y: &State| g.dot(&y.rows(0, NDOF));
-    let t_nodes: Vec<f64> = grid[..grid.len() - 1].to_vec();
-    let d_nodes: Vec<f64> = (0..t_nodes.len())
-        .map(|k| (4.0 * dte(&c8[8 * k]) - dte(&c4[4 * k])) / 3.0)
-        .collect();
-    let second = amplitude_spectrum(&t_nodes, &d_nodes, t_mesh, p);
-    // The pinion's y velocity (what an accelerometer on its bearing sees), same way.
+    // The pinion's y velocity (what an accelerometer on its bearing sees).
     let vy = |y: &State| y[NDOF + dof::YP];
-    let v_nodes: Vec<f64> = (0..t_nodes.len())
-        .map(|k| (4.0 * vy(&c8[8 * k]) - vy(&c4[4 * k])) / 3.0)
-        .collect();
-    let v_solver: Vec<f64> = r.signals.velocity.iter().map(|v| v[dof::YP]).collect();
-    let solver_v = amplitude_spectrum(&r.signals.time_s, &v_solver, r.mesh_period_s, periods);
-    let second_v = amplitude_spectrum(&t_nodes, &v_nodes, t_mesh, p);
+    let richardson = |of: &dyn Fn(&State) -> f64| -> Vec<f64> {
+        let (c4, c8) = (
+            second_method_lines(&sys, &refine(4), lines, of),
+            second_method_lines(&sys, &refine(8), lines, of),
+        );
+        c4.iter()
+            .zip(&c8)
+            .map(|(a, b)| (4.0 * b - a) / 3.0)
+            .collect()
+    };
+    let second = richardson(&dte);
+    let second_v = richardson(&vy);
     for (signal, a_spec, b_spec, unit) in [
         ("DTE", &solver, &second, "m"),
         ("dy_p/dt", &solver_v, &second_v, "m/s"),
     ] {
-        for (name, bin) in [
-            ("f_gear", 1),
-            ("f_mesh - f_gear", p - 1),
-            ("f_mesh + f_gear", p + 1),
-            ("2 f_mesh - f_gear", 2 * p - 1),
+        // The run-out's sidebands of the mesh fundamental to 0.05 %. The other lines are
+        // small beside the signal (the velocity's f_gear line is 1e-5 of its mesh line,
+        // the second harmonic's sideband 1/36 of the DTE's f_gear line): there the two
+        // solutions' own errors (the solver's tolerance 1e-7 of the state's scale, the
+        // second method's extrapolated discretisation) show, at 0.6 % and 0.1 %.
+        let small = if signal == "DTE" { 5e-4 } else { 1e-2 };
+        for (name, bin, bound) in [
+            ("f_gear", 1, small),
+            ("f_mesh - f_gear", p - 1, 5e-4),
+            ("f_mesh + f_gear", p + 1, 5e-4),
+            ("2 f_mesh - f_gear", 2 * p - 1, 2e-3),
         ] {
-            let (a, b) = (a_spec.amplitude[bin], b_spec.amplitude[bin]);
+            let (a, b) = (a_spec.amplitude[bin], b_spec[bin]);
             println!(
                 "{signal} at {name} ({:.2} Hz): solver {a:.5e} {unit}, perturbation solution {b:.5e} {unit}, {:+.3} %",
                 a_spec.frequency_hz[bin],
                 100.0 * (a / b - 1.0)
             );
             assert!(
-                (a / b - 1.0).abs() < 0.02,
+                (a / b - 1.0).abs() < bound,
                 "{signal} {name}: {a:e} vs {b:e}"
             );
         }

@@ -300,9 +300,8 @@ fn steady_means_of_a_two_stage_train_are_the_static_forces_and_both_meshes_sound
     // which both meshes shake through the shaft's bearings... and its own mesh): lines at
     // both mesh frequencies, and the sum and difference tones the time-varying stiffness
     // of one mesh makes of the other's response, above the high-order combinations.
-    let v: Vec<f64> = r.signals.velocity.iter().map(|q| q[3]).collect();
-    let spec =
-        gearwear::dynamics::spectrum::amplitude_spectrum(&r.signals.time_s, &v, r.mesh_period_s, 1);
+    let v = gearwear::dynamics::summary::velocity_signal(&r, 3);
+    let spec = gearwear::dynamics::spectrum::amplitude_spectrum(&v, 1);
     let bin = |f: f64| spec.amplitude[(f * r.mesh_period_s).round() as usize];
     let (a1, a2, sum, diff) = (bin(f1), bin(f2), bin(f1 + f2), bin(f1 - f2));
     // Combination orders |a| + |b| of a f1 + b f2 at the bins 1-3 (1 = 3 f1 - 4 f2): 7

@@ -41,14 +41,30 @@ def _pandas():
     except ImportError as e:  # pandas is optional
         raise ImportError(
             "to_pandas() needs pandas, which gearwear does not install: "
-            "pip install pandas (or pip install './python[pandas]')"
+            "pip install pandas (or pip install './python[data]', with pyarrow)"
         ) from e
     return pandas
+
+
+#: Columns that count or number things (a bin, a rank, a tooth, an update, a sample):
+#: returned as int64 when every value is whole, as the CSV writes them.
+INTEGER_COLUMNS = frozenset({"rank", "bin", "tooth", "update", "sample", "case_id"})
+
+
+def _as_integers(column: str, a: np.ndarray) -> np.ndarray:
+    """``a`` as int64 when ``column`` counts things and every value is whole, else ``a``."""
+    if column in INTEGER_COLUMNS and np.all(np.isfinite(a)) and np.all(a == np.round(a)):
+        out = a.astype(np.int64)
+        out.flags.writeable = False
+        return out
+    return a
 
 
 class Table(Mapping[str, np.ndarray]):
     """A table of named float64 columns, units in the names (``time_s``,
     ``mesh_force_n``): the CSV file of the same name that the command line writes.
+    Columns that count things (``rank``, ``bin``, ``tooth``, ``update``, ``sample``,
+    ``case_id``) are int64.
 
     A read-only mapping ``{column: 1-D array}``; ``to_numpy()`` stacks the columns,
     ``to_pandas()`` makes a DataFrame (pandas optional).
@@ -90,7 +106,7 @@ class Table(Mapping[str, np.ndarray]):
             raise KeyError(
                 f"table {self.name!r} has no column {column!r}; columns: {', '.join(self._index)}"
             ) from None
-        return self._data[i, : self._lengths[i]]
+        return _as_integers(column, self._data[i, : self._lengths[i]])
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._index)
@@ -104,8 +120,16 @@ class Table(Mapping[str, np.ndarray]):
         return self._data.T.copy()
 
     def to_pandas(self) -> Any:
-        """A ``pandas.DataFrame`` of the table (needs pandas)."""
-        return _pandas().DataFrame(self._data.T.copy(), columns=self.columns)
+        """A ``pandas.DataFrame`` of the table (needs pandas); counting columns int64."""
+        pd = _pandas()
+        n = self.n_rows
+        return pd.DataFrame(
+            {
+                c: (self[c] if len(self[c]) == n else self._data[i].copy())
+                for c, i in self._index.items()
+            },
+            columns=self.columns,
+        )
 
     def __repr__(self) -> str:
         return f"<gearwear.Table {self.name!r}: {self.n_rows} rows x {len(self)} columns>"
@@ -417,27 +441,38 @@ class DutyResult:
         and the shares of cycles, time and (of the first run) pinion wear, percent."""
         return self._tables["duty_spectrum"]
 
+    def _of_mode(self, kind: str, mode: str) -> Table:
+        """Table ``duty_KIND_MODE`` (``run`` and ``wear`` both name it so)."""
+        mode = mode.replace("-", "_")
+        name = f"duty_{kind}_{mode}"
+        if name not in self._tables:
+            ran = sorted(
+                n[len(f"duty_{kind}_") :] for n in self._tables if n.startswith(f"duty_{kind}_")
+            )
+            raise KeyError(f"no {mode!r} run under the spectrum; runs: {', '.join(ran) or 'none'}")
+        return self._tables[name]
+
     def ranking(self, mode: str = "dynamic") -> Table:
         """The bins of run ``mode`` ranked by their share of the pinion's wear (largest
         first): ``rank``, ``bin``, torque, speed, the shares of cycles, pinion wear, gear
         wear and wear at the deepest point, the largest depth the bin added (µm) and the
-        wear intensity (share of wear / share of cycles)."""
-        return self._tables[f"bins_{mode}"]
+        wear intensity (share of wear / share of cycles). Table ``duty_bins_MODE``."""
+        return self._of_mode("bins", mode)
 
     def wear_by_bin(self, mode: str = "dynamic") -> Table:
         """Wear depth along the profile at the end of run ``mode``: ``rho1_mm``, the
         totals and what each bin added (``wear_pinion_bin{i}_um``, ``wear_gear_bin{i}_um``)."""
-        return self._tables[f"duty_wear_by_bin_{mode}"]
+        return self._of_mode("wear_by_bin", mode)
 
     def dynamic_factor(self, mode: str = "dynamic") -> Table:
         """The dynamic factor (max / mean mesh force) of each bin at every update of run
         ``mode``: ``cycles``, ``dynamic_factor_bin{i}``."""
-        return self._tables[f"duty_dynamic_factor_{mode}"]
+        return self._of_mode("dynamic_factor", mode)
 
     @property
     def life(self) -> Optional[Table]:
         """Cycles to the wear limit at each bin alone, under the spectrum and by the
-        linear mix (``run`` only; None after ``wear``)."""
+        linear mix (``run`` and ``wear``; the summary's ``life`` adds the hours)."""
         return self._tables.get("duty_life")
 
     def __repr__(self) -> str:
@@ -448,6 +483,14 @@ class WearResult(_Result):
     """The wear study (dynamic and/or quasi-static): what ``gearwear wear`` writes.
     Tables ``updates_MODE`` and ``wear_profiles_MODE`` per mode; ``runs`` views them;
     under a load spectrum ``duty`` views what each bin did."""
+
+    def __init__(self, *args: Any, **kwargs: Any):
+        super().__init__(*args, **kwargs)
+        # `wear` writes each run's ranking as duty/bins_MODE.csv, `run` as
+        # csv/duty_bins_MODE.csv: both results name the table duty_bins_MODE.
+        for n in [n for n in self.tables if n.startswith("bins_")]:
+            t = self.tables[n]
+            self.tables.setdefault(f"duty_{n}", Table(f"duty_{n}", t.columns, t._data, t._lengths))
 
     @property
     def duty(self) -> Optional[DutyResult]:

@@ -388,11 +388,11 @@ impl CalibrateJob {
             .iter()
             .map(|s| {
                 format!(
-                    "{}: median {:.4e}, 90 % interval [{:.4e}, {:.4e}]",
+                    "{}: median {}, 90 % interval [{}, {}]",
                     s.parameter.column(),
-                    s.median,
-                    s.ci05,
-                    s.ci95
+                    crate::format::shown(s.median),
+                    crate::format::shown(s.ci05),
+                    crate::format::shown(s.ci95)
                 )
             })
             .collect::<Vec<_>>()

@@ -8,7 +8,7 @@ use super::observer::Observer;
 use super::wear_runs::stops;
 use super::{publish, JobError, Outcome};
 use crate::duty::contribution::combined_run;
-use crate::duty::study::run_duty_study;
+use crate::duty::study::{run_duty_study, spectrum_life};
 use crate::duty::wear::{run_spectrum_modes, SpectrumRun};
 use crate::duty::SpectrumModel;
 use crate::report::duty::{duty_run_artifacts, duty_wear_artifacts};
@@ -75,9 +75,20 @@ pub fn wear_under_spectrum(
         |sm, starts, on_update| run_spectrum_modes(sm, starts, on_update),
     )?;
     let refs: Vec<&SpectrumRun> = runs.runs.iter().collect();
+    // The same life table as `run`'s, in the dynamic mode when it ran.
+    let life_mode = if modes.contains(&WearMode::Dynamic) {
+        WearMode::Dynamic
+    } else {
+        WearMode::QuasiStatic
+    };
+    observer.note(&format!(
+        "{command}: life to the wear limit under the spectrum and at each bin ({} runs)",
+        sm.len() + 1
+    ));
+    let life = spectrum_life(&sm, life_mode).map_err(JobError::Failed)?;
     let mut outcome = publish::publish(
         runs.out,
-        duty_wear_artifacts(&sm, &refs).with_figure_output(figures),
+        duty_wear_artifacts(&sm, &refs, Some(&life)).with_figure_output(figures),
         Some(&meta),
         observer,
     )?;

@@ -193,7 +193,7 @@ impl Job for PredictJob {
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
         // The budget, now that the samples' source and number are known.
-        self.check_budget(&source, &span, n)?;
+        self.check_budget(&source, &span, n, future.as_ref())?;
         let model = build_model(case, observer)?;
         let stem =
             (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
@@ -264,7 +264,13 @@ impl Job for PredictJob {
 impl PredictJob {
     /// Refuse the job over its budget: its shard's `n`-sample ensemble drawn from `source`
     /// over `span`.
-    fn check_budget(&self, source: &SampleSource, span: &Prior, n: usize) -> Result<(), JobError> {
+    fn check_budget(
+        &self,
+        source: &SampleSource,
+        span: &Prior,
+        n: usize,
+        future: Option<&FutureDuty>,
+    ) -> Result<(), JobError> {
         let (o, shard) = (&self.options, self.shard);
         let e = crate::study::budget::estimate_prediction(
             &self.case,
@@ -280,6 +286,7 @@ impl PredictJob {
                     SampleSource::Posterior { rows, .. } => rows.len(),
                     SampleSource::Prior(_) => 0,
                 },
+                future_bins: future.map_or(0, |f| f.spectrum.bins.len()),
             },
         );
         budget::check_estimate(&e, self.budget.as_ref())
@@ -508,16 +515,16 @@ pub fn prediction_artifacts(
     };
     art.documents
         .push(("report.html".into(), render(&report).into_bytes()));
-    let fmt =
-        |c: Option<f64>| c.map_or_else(|| format!("> {:.3e}", set.cycles), |x| format!("{x:.4e}"));
+    let shown = crate::format::shown;
+    let fmt = |c: Option<f64>| c.map_or_else(|| format!("> {}", shown(set.cycles)), shown);
     art.headline = format!(
-        "cycles to {} µm: median {}, 90 % [{}, {}], P(> {:.3e}) = {:.3}; {} failed sample(s)",
-        set.limit_um,
+        "cycles to {} µm: median {}, 90 % [{}, {}], P(> {}) = {}; {} failed sample(s)",
+        shown(set.limit_um),
         fmt(life.median),
         fmt(life.p05),
         fmt(life.p95),
-        set.cycles,
-        life.prob_beyond_horizon,
+        shown(set.cycles),
+        shown(life.prob_beyond_horizon),
         failed.len(),
     );
     Ok(art)

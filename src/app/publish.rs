@@ -61,7 +61,11 @@ pub fn publish(
             let root = o.root().to_path_buf();
             let command = o.command().to_owned();
             o.publish()?;
-            observer.note(&format!("{command}: results -> {}", root.display()));
+            observer.note(&format!(
+                "{command}: {} -> {}",
+                artifacts.contents_words(),
+                folder_words(&root)
+            ));
             Some(root)
         }
         None => None,
@@ -71,4 +75,14 @@ pub fn publish(
         published,
         incomplete: None,
     })
+}
+
+/// A folder as a person reads it: its path with a trailing separator.
+fn folder_words(dir: &Path) -> String {
+    let d = dir.display().to_string();
+    if d.ends_with(std::path::MAIN_SEPARATOR) {
+        d
+    } else {
+        format!("{d}{}", std::path::MAIN_SEPARATOR)
+    }
 }

@@ -66,9 +66,18 @@ impl Job for SignalsJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        budget::check_estimate(&estimate_signals(&self.case), self.budget.as_ref())?;
-        let model = build_model(&self.case, observer)?;
+        // The path first: its sensors are the record's channels, which the budget counts.
         let path = transfer_path_of(self.transfer_path.as_ref())?;
+        let channels = path
+            .as_ref()
+            .map_or(crate::study::budget::signals::DEFAULT_CHANNELS, |p| {
+                p.sensors.len()
+            });
+        budget::check_estimate(
+            &estimate_signals(&self.case, channels),
+            self.budget.as_ref(),
+        )?;
+        let model = build_model(&self.case, observer)?;
         let setup = chain_of(
             &self.case,
             path,
@@ -82,8 +91,13 @@ impl Job for SignalsJob {
         let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
             .map_err(|e| JobError::Failed(e.into()))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
+        // Judged by effect, as the model judges its teeth: zero errors, zero-depth
+        // faults and zero reliefs leave the new, perfect teeth.
         let c = &self.case;
-        let label = if c.teeth.is_empty() && c.modification.is_empty() && c.fault.is_empty() {
+        let changed = c.teeth.changes_teeth()
+            || c.modification.changes_teeth()
+            || c.fault.iter().any(|f| f.changes_tooth());
+        let label = if !changed {
             "new teeth"
         } else {
             "the case's tooth errors, modifications and faults"

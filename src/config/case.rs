@@ -303,7 +303,7 @@ pub enum WornGeometry {
 impl WornGeometry {
     /// Whether this is the paper's involute geometry (the default, left out of a case's
     /// serialisation).
-    pub fn is_involute(&self) -> bool {
+    pub(crate) fn is_involute(&self) -> bool {
         *self == WornGeometry::Involute
     }
 }
@@ -353,7 +353,7 @@ impl Default for NumericsSection {
 /// Whether a key changes teeth one by one (`[teeth]`, `[modification]`, `[[fault]]`) or
 /// their geometry as they wear (`wear.worn_geometry`): a key that can make the mesh
 /// tooth-resolved.
-pub fn is_per_tooth_key(key: &str) -> bool {
+pub(crate) fn is_per_tooth_key(key: &str) -> bool {
     ["teeth.", "modification.", "fault."]
         .iter()
         .any(|p| key.starts_with(p))
@@ -361,12 +361,15 @@ pub fn is_per_tooth_key(key: &str) -> bool {
 }
 
 impl Case {
-    /// Whether the case gives any per-tooth input (`[teeth]`, `[modification]`,
-    /// `[[fault]]`, `wear.worn_geometry` = "worn"), even one whose values change nothing.
+    /// Whether the case gives a per-tooth input (`[teeth]`, `[modification]`, `[[fault]]`,
+    /// `wear.worn_geometry` = "worn") that changes a tooth. Inputs that leave every tooth
+    /// perfect (zero errors and run-outs, zero-depth cracks, zero reliefs and profile
+    /// deviations) do not count: such a case is the identical-teeth case, judged by the
+    /// inputs' effect as `study::teeth` judges the built teeth.
     pub fn has_per_tooth_inputs(&self) -> bool {
-        !self.teeth.is_empty()
-            || !self.modification.is_empty()
-            || !self.fault.is_empty()
+        self.teeth.changes_teeth()
+            || self.modification.changes_teeth()
+            || self.fault.iter().any(ToothFault::changes_tooth)
             || self.wear.worn_geometry == WornGeometry::Worn
     }
 
@@ -376,7 +379,7 @@ impl Case {
     /// teeth is not solved under Pedrero's law while its neighbours with a tiny error are
     /// solved by compression (`LoadSharingModel::resolve`). The case says so itself, so a
     /// row rerun alone gives the same numbers.
-    pub fn share_one_law(&mut self, any_per_tooth: bool) {
+    pub(crate) fn share_one_law(&mut self, any_per_tooth: bool) {
         if any_per_tooth && self.contact.load_sharing == LoadSharingModel::Auto {
             self.contact.load_sharing = LoadSharingModel::Stiffness;
         }

@@ -9,7 +9,9 @@ use std::fmt;
 /// `geometry::blank`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Derivable {
+    /// A value the case gives, in the unit of its key.
     Given(f64),
+    /// `"derived"`: computed from the geometry when the model is built.
     Derived,
 }
 
@@ -23,7 +25,7 @@ impl Derivable {
     }
 
     /// The given number, or `estimate` when derived.
-    pub fn or_derived(self, estimate: f64) -> f64 {
+    pub(crate) fn or_derived(self, estimate: f64) -> f64 {
         self.given().unwrap_or(estimate)
     }
 }

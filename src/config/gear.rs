@@ -43,7 +43,7 @@ impl GearSection {
     /// Whether both gears have the same tooth form as `other`'s: numbers of teeth,
     /// reference profile and profile shifts (everything a tooth's shape, and Sainsot's
     /// root angle theta_f, depends on; not the size, width, bores or centre distance).
-    pub fn same_tooth_form(&self, other: &GearSection) -> bool {
+    pub(crate) fn same_tooth_form(&self, other: &GearSection) -> bool {
         self.teeth_pinion == other.teeth_pinion
             && self.teeth_gear == other.teeth_gear
             && self.pressure_angle_deg == other.pressure_angle_deg
@@ -56,7 +56,7 @@ impl GearSection {
 
     /// Whether this is the same pair as `other` in every dimension that sets the blanks'
     /// size (tooth form, module, face width, centre distance); bores excluded.
-    pub fn same_pair(&self, other: &GearSection) -> bool {
+    pub(crate) fn same_pair(&self, other: &GearSection) -> bool {
         self.same_tooth_form(other)
             && self.module_mm == other.module_mm
             && self.face_width_mm == other.face_width_mm

@@ -16,7 +16,7 @@
 use super::case::{Case, FaultTable, LoadSpectrumSection, ToothFault};
 use super::operating::SpeedUnit;
 use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
-use super::schema::{spec, KeySpec, KEYS, TABLE_ARRAYS};
+use super::schema::{spec, KeySpec, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Words};
 use std::fmt;
@@ -340,7 +340,7 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     match SpeedUnit::given(op.contains_key(hz), op.contains_key(rpm), "operating.") {
         Err(both) => {
             op.remove(rpm);
-            problems.push(both);
+            problems.push(both.to_string());
         }
         Ok(Some(SpeedUnit::Rpm)) => {
             if let Some(x) = op.remove(rpm).as_ref().and_then(as_number) {
@@ -375,6 +375,14 @@ fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result
 /// Returns every problem at once; the case is only returned when there is none. A
 /// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
 /// another).
+/// The built-in case with `--set`-style overrides (`"section.key=value"`), for unit tests
+/// of the layers above; panics on an override the case refuses.
+#[cfg(test)]
+pub(crate) fn default_with(overrides: &[&str]) -> Case {
+    let sets: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
+    load_case("", &sets).expect("a test's overrides are valid")
+}
+
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
     load_case_in(toml_text, overrides, std::path::Path::new("."))
 }
@@ -409,7 +417,7 @@ pub fn load_case_in(
 /// a case file (inline `bins` or a CSV `file`, read from `dir` when relative), parsed and
 /// checked by the same code as a case's, so it gives the same problems. A future duty of a
 /// prediction is given so.
-pub fn load_spectrum_section(
+pub(crate) fn load_spectrum_section(
     toml_text: &str,
     dir: &std::path::Path,
 ) -> Result<LoadSpectrumSection, ConfigError> {
@@ -502,7 +510,7 @@ fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError>
 
 /// Whether `key` is a key of the case file: its entry in the schema, or the problem as
 /// [`load_case`] words it (unknown section or key, with the valid ones).
-pub fn known_key(key: &str) -> Result<&'static KeySpec, String> {
+pub(crate) fn known_key(key: &str) -> Result<&'static KeySpec, String> {
     if let Some(s) = spec(key) {
         return Ok(s);
     }
@@ -520,13 +528,14 @@ pub fn known_key(key: &str) -> Result<&'static KeySpec, String> {
 
 /// Validate every key of an already built case against the schema (used on defaults and
 /// templates).
-pub fn check_all_ranges(case: &Case) -> Vec<String> {
+#[cfg(test)]
+pub(crate) fn check_all_ranges(case: &Case) -> Vec<String> {
     let tree = match Value::try_from(case) {
         Ok(Value::Table(t)) => t,
         _ => return vec!["case does not serialise".into()],
     };
     let mut problems = Vec::new();
-    for s in KEYS {
+    for s in super::schema::KEYS {
         let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
         if let Some(v) = tree.get(section).and_then(|t| t.get(key)) {
             let mut v = v.clone();

@@ -134,7 +134,8 @@ fn problems_of(s: &LoadSpectrumSection, label: &dyn Fn(usize) -> String) -> Vec<
 }
 
 /// Problems of a case's spectrum (already resolved), bins named by number.
-pub fn spectrum_problems(spectrum: Option<&LoadSpectrumSection>) -> Vec<String> {
+#[cfg(test)]
+pub(crate) fn spectrum_problems(spectrum: Option<&LoadSpectrumSection>) -> Vec<String> {
     match spectrum {
         None => Vec::new(),
         Some(s) => problems_of(s, &|i| format!("load_spectrum bin {}", i + 1)),

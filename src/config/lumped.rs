@@ -84,7 +84,7 @@ impl BodyValues {
 
 impl DynamicsSection {
     /// The given masses and inertias (`None` where derived), in [`BodyValues::named`] order.
-    pub fn given_body_values(&self) -> [Option<f64>; 4] {
+    pub(crate) fn given_body_values(&self) -> [Option<f64>; 4] {
         [
             self.mass_pinion_kg.given(),
             self.mass_gear_kg.given(),
@@ -122,7 +122,7 @@ impl DynamicsSection {
 
 impl DynamicsSection<f64> {
     /// The four values the geometry could give.
-    pub fn body_values(&self) -> BodyValues {
+    pub(crate) fn body_values(&self) -> BodyValues {
         BodyValues {
             mass_pinion_kg: self.mass_pinion_kg,
             mass_gear_kg: self.mass_gear_kg,

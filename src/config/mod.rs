@@ -26,6 +26,7 @@ mod tests_teeth;
 
 pub use case::Case;
 pub use docs::{commented_template, markdown_reference, new_pair_template};
-pub use load::{load_case, load_case_in, load_spectrum_section, ConfigError};
+pub(crate) use load::load_spectrum_section;
+pub use load::{load_case, load_case_in, ConfigError};
 pub use operating::{LoadSpectrumSection, SpectrumBin};
 pub use problem::Problem;

@@ -95,9 +95,19 @@ pub enum SpeedUnit {
     Rpm,
 }
 
+/// An input speed given both in Hz and in rpm (an input problem).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "`{prefix}input_speed_hz` and `{prefix}input_speed_rpm` are both given: give the input speed once, in Hz or in rpm (not both)"
+)]
+pub struct BothSpeedsGiven {
+    /// What the key names stand behind: a section's `operating.`, or nothing.
+    pub prefix: String,
+}
+
 impl SpeedUnit {
     /// `x` in this unit, in Hz.
-    pub fn to_hz(self, x: f64) -> f64 {
+    pub(crate) fn to_hz(self, x: f64) -> f64 {
         match self {
             SpeedUnit::Hz => x,
             // 1 Hz = 60 rpm.
@@ -106,7 +116,7 @@ impl SpeedUnit {
     }
 
     /// The name of an input speed in this unit, as keys and columns spell it.
-    pub fn input_speed_key(self) -> &'static str {
+    pub(crate) fn input_speed_key(self) -> &'static str {
         match self {
             SpeedUnit::Hz => "input_speed_hz",
             SpeedUnit::Rpm => "input_speed_rpm",
@@ -116,11 +126,11 @@ impl SpeedUnit {
     /// The unit an input speed is given in, from whether it is given as `input_speed_hz`
     /// and as `input_speed_rpm`: `None` when neither is; when both are, the problem, each
     /// name behind `prefix` (a section's `operating.`, or nothing).
-    pub fn given(hz: bool, rpm: bool, prefix: &str) -> Result<Option<SpeedUnit>, String> {
+    pub fn given(hz: bool, rpm: bool, prefix: &str) -> Result<Option<SpeedUnit>, BothSpeedsGiven> {
         match (hz, rpm) {
-            (true, true) => Err(format!(
-                "`{prefix}input_speed_hz` and `{prefix}input_speed_rpm` are both given: give the input speed once, in Hz or in rpm (not both)"
-            )),
+            (true, true) => Err(BothSpeedsGiven {
+                prefix: prefix.to_string(),
+            }),
             (true, false) => Ok(Some(SpeedUnit::Hz)),
             (false, true) => Ok(Some(SpeedUnit::Rpm)),
             (false, false) => Ok(None),
@@ -128,7 +138,7 @@ impl SpeedUnit {
     }
 
     /// The two names of an input speed, for a message that misses it.
-    pub fn either_key(prefix: &str) -> String {
+    pub(crate) fn either_key(prefix: &str) -> String {
         format!("`{prefix}input_speed_hz` (or `{prefix}input_speed_rpm`)")
     }
 }
@@ -185,15 +195,15 @@ fn default_life_limit() -> f64 {
 /// Largest number of bins: each is a dynamic evaluation per wear update (the run budget
 /// checks the cost); 10 000 is far beyond any published load spectrum (ISO 6336-6 examples
 /// and wind-turbine LDDs use tens to a few hundred bins).
-pub const MAX_BINS: usize = 10_000;
+pub(crate) const MAX_BINS: usize = 10_000;
 
 /// How far the shares may be from summing to 1: six significant digits, the precision a
 /// spectrum written by hand in decimals carries (0.333 + 0.333 + 0.334).
-pub const SHARE_SUM_TOLERANCE: f64 = 1e-6;
+pub(crate) const SHARE_SUM_TOLERANCE: f64 = 1e-6;
 
 impl LoadSpectrumSection {
     /// A spectrum of the given bins with no scale, on the operating shaft.
-    pub fn of_bins(bins: Vec<SpectrumBin>) -> Self {
+    pub(crate) fn of_bins(bins: Vec<SpectrumBin>) -> Self {
         Self {
             bins,
             torque_shaft: None,
@@ -221,7 +231,7 @@ impl LoadSpectrumSection {
 
     /// The load point of bin `i` (scales included), its torque on the spectrum's shaft
     /// (`operating`: the case's shaft, for a spectrum that names none).
-    pub fn load_point(&self, i: usize, operating: TorqueShaft) -> LoadPoint {
+    pub(crate) fn load_point(&self, i: usize, operating: TorqueShaft) -> LoadPoint {
         LoadPoint {
             input_speed_hz: self.input_speed_hz(i),
             load_torque_nm: self.torque_nm(i),
@@ -230,7 +240,7 @@ impl LoadSpectrumSection {
     }
 
     /// Index (0-based) of the bin vibration is observed at.
-    pub fn monitoring_index(&self) -> usize {
+    pub(crate) fn monitoring_index(&self) -> usize {
         match self.monitoring_bin {
             Some(b) if b >= 1 && (b as usize) <= self.bins.len() => b as usize - 1,
             _ => self.bins.iter().enumerate().fold(0, |best, (i, b)| {
@@ -245,7 +255,7 @@ impl LoadSpectrumSection {
 
     /// Mean time per pinion cycle, s: sum_i share_i / f_i (cycles of bin i take 1 / f_i
     /// each). Life in hours = cycles x this / 3600.
-    pub fn seconds_per_cycle(&self) -> f64 {
+    pub(crate) fn seconds_per_cycle(&self) -> f64 {
         (0..self.bins.len())
             .map(|i| self.bins[i].share / self.input_speed_hz(i))
             .sum()

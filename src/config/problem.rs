@@ -4,7 +4,7 @@
 //! The checks (`load_case`, the gear pair, the model) report problems as one message each,
 //! written to a fixed pattern: the key in backticks, "`section.key` = VALUE is invalid:
 //! expected RANGE" or "`section.key` = VALUE is a string, expected RANGE", "unknown key
-//! `section.key`; valid keys in [section]: ...". [`Problem::from_message`] reads those
+//! `section.key`; valid keys in \[section\]: ...". [`Problem::from_message`] reads those
 //! fields back, for callers that want them one by one (the Python binding's
 //! `CaseError.problems`); a test below keeps it in step with the messages.
 

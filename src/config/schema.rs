@@ -226,7 +226,7 @@ pub const KEYS: &[KeySpec] = &[
       "Each scaled speed must also lie in the range of `operating.input_speed_hz` (checked per bin)."),
     k("load_spectrum.monitoring_bin", "-", Int(1, 10_000), "Bin (1-based) at which vibration observations are taken for `calibrate` (a monitoring system records at a reference condition); omit for the bin with the largest share.",
       "At most the number of bins (checked), itself at most 10 000."),
-    k("load_spectrum.life_wear_limit_um", "µm", Num(Range::closed(0.01, 1000.0)), "Maximum pinion wear depth that ends the flanks' life in the `run` report's life table (under the spectrum and at each bin alone; 10 µm: a fifth of a 2 mm module's customary 0.05 m wear allowance).",
+    k("load_spectrum.life_wear_limit_um", "µm", Num(Range::closed(0.01, 1000.0)), "Maximum pinion wear depth that ends the flanks' life in the life table of `run` and `wear` (under the spectrum and at each bin alone; 10 µm: a fifth of a 2 mm module's customary 0.05 m wear allowance).",
       "From the first running-in (0.01 µm) to a millimetre; the model stops earlier where the worn teeth lose contact (docs/MODEL.md)."),
     k("lubricant.viscosity_cp", "cP", Num(Range::closed(0.1, 1e5)), "Inlet absolute viscosity nu_0 (not in the paper; 40 cP, ISO VG 100 near 60 degC). Must exceed 1 cP with the Xu model.",
       "Light solvents (~0.3 cP) to cold heavy gear oil (~1e4 cP); Xu's regression also needs > 1 cP (checked)."),
@@ -472,7 +472,7 @@ pub const KEYS: &[KeySpec] = &[
 
 /// Sections written as arrays of tables (`[[fault]]`), each table keyed as the schema's
 /// `section.key` entries.
-pub const TABLE_ARRAYS: &[&str] = &["fault", "stage"];
+pub(crate) const TABLE_ARRAYS: &[&str] = &["fault", "stage"];
 
 /// Look up a key's spec.
 pub fn spec(key: &str) -> Option<&'static KeySpec> {

@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 /// Standard gravity, m/s^2 (CGPM 1901): 1 g.
-pub const STANDARD_GRAVITY: f64 = 9.80665;
+pub(crate) const STANDARD_GRAVITY: f64 = 9.80665;
 
 /// Unit of the recorded acceleration channels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -23,7 +23,7 @@ pub enum ChannelUnit {
 
 impl ChannelUnit {
     /// The unit as written in files.
-    pub fn symbol(&self) -> &'static str {
+    pub(crate) fn symbol(&self) -> &'static str {
         match self {
             ChannelUnit::MetrePerSecond2 => "m/s^2",
             ChannelUnit::G => "g",
@@ -32,7 +32,7 @@ impl ChannelUnit {
     }
 
     /// Suffix of column names: `m_per_s2`, `g`, `mv`.
-    pub fn suffix(&self) -> &'static str {
+    pub(crate) fn suffix(&self) -> &'static str {
         match self {
             ChannelUnit::MetrePerSecond2 => "m_per_s2",
             ChannelUnit::G => "g",
@@ -159,13 +159,13 @@ impl Default for SignalsSection {
 impl SignalsSection {
     /// Whether the section is all defaults (then a case's serialisation leaves it out,
     /// so cases without signals keep their form and hash).
-    pub fn is_default(&self) -> bool {
+    pub(crate) fn is_default(&self) -> bool {
         *self == Self::default()
     }
 }
 
 /// Checks between keys of the case that involve the `[signals]` section.
-pub fn relation_problems(case: &super::Case) -> Vec<String> {
+pub(crate) fn relation_problems(case: &super::Case) -> Vec<String> {
     let s = &case.signals;
     let mut out = Vec::new();
     if s.snr_db.is_some() && s.noise_density_ug_per_sqrt_hz.is_some() {

@@ -7,7 +7,7 @@
 //! identical, perfect teeth and serialises exactly as before (so summaries and checksums
 //! of such cases do not change). Checks that need only the case (array lengths against
 //! the numbers of teeth, tooth indices, which keys a fault kind takes) live here
-//! ([`teeth_problems`]); checks that need the geometry (a crack deeper than the tooth, a
+//! (`teeth_problems`); checks that need the geometry (a crack deeper than the tooth, a
 //! spall longer than the profile, a relief longer than the addendum) are made when the
 //! model builds its tooth inputs (`study::teeth::ToothInputs::from_case`).
 
@@ -66,6 +66,23 @@ impl TeethSection {
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
     }
+
+    /// Whether the section makes any tooth differ from the paper's: a drawn accuracy
+    /// class, or an error or run-out that is not zero. Zero errors, a zero run-out (its
+    /// phase then meaningless) and a seed alone change nothing.
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        self.accuracy_grade.is_some()
+            || any(&self.pitch_error_pinion_um)
+            || any(&self.pitch_error_gear_um)
+            || nonzero(&self.runout_pinion_um)
+            || nonzero(&self.runout_gear_um)
+            || any(&self.profile_slope_pinion_um)
+            || any(&self.profile_slope_gear_um)
+            || any(&self.profile_form_pinion_um)
+            || any(&self.profile_form_gear_um)
+    }
 }
 
 /// Shape of a relief along its length.
@@ -119,6 +136,18 @@ impl ModificationSection {
     /// Whether no key is given (true involutes).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()
+    }
+
+    /// Whether the section removes material anywhere: a relief of a non-zero amount, or a
+    /// user profile deviation that is not zero somewhere (a length, a shape or roll angles
+    /// alone change nothing).
+    pub fn changes_teeth(&self) -> bool {
+        let any = |v: &Option<Vec<f64>>| v.as_ref().is_some_and(|v| v.iter().any(|x| *x != 0.0));
+        let nonzero = |v: &Option<f64>| v.is_some_and(|x| x != 0.0);
+        nonzero(&self.tip_relief_um)
+            || nonzero(&self.root_relief_um)
+            || any(&self.profile_deviation_pinion_um)
+            || any(&self.profile_deviation_gear_um)
     }
 }
 
@@ -185,15 +214,15 @@ impl FaultKind {
 }
 
 /// Default crack angle to the tooth centreline, deg (Chen & Shao 2011 use 45 deg).
-pub const DEFAULT_CRACK_ANGLE_DEG: f64 = 45.0;
+pub(crate) const DEFAULT_CRACK_ANGLE_DEG: f64 = 45.0;
 
 /// Default share of the face width a crack has run across or a spall covers: 1, the whole
 /// face.
-pub const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
+pub(crate) const DEFAULT_WIDTH_FRACTION: f64 = 1.0;
 
 /// One `[[fault]]` table as the case file writes it: sizes in mm, um and deg, the keys a
 /// kind does not take or leaves to their default absent. Read, checked
-/// ([`teeth_problems`]) and resolved into a [`ToothFault`] when the case is loaded; a case
+/// (`teeth_problems`) and resolved into a [`ToothFault`] when the case is loaded; a case
 /// serialises its faults back to these tables, unchanged.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -208,7 +237,7 @@ pub struct FaultTable {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_depth_mm: Option<f64>,
     /// Crack: angle of its path to the tooth centreline, deg (absent:
-    /// [`DEFAULT_CRACK_ANGLE_DEG`]).
+    /// `DEFAULT_CRACK_ANGLE_DEG`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_angle_deg: Option<f64>,
     /// Crack: share of the face width it has run across (absent: the whole face).
@@ -276,21 +305,31 @@ pub enum Fault {
     /// A root crack (Chen & Shao 2011): a straight path from the root at `angle_rad` to the
     /// tooth centreline, `depth_m` long, across `width_fraction` of the face from one side.
     Crack {
+        /// Crack length from the root along its path, m.
         depth_m: f64,
+        /// Angle of the crack path to the tooth centreline, rad.
         angle_rad: f64,
+        /// Share of the face width the crack has run across (0, 1].
         width_fraction: f64,
     },
     /// A spall (Saxena et al. 2016): a pit `depth_m` deep over the roll lengths
     /// `position_m` +- `length_m` / 2 from the pitch point (positive towards the tip),
     /// across `width_fraction` of the face.
     Spall {
+        /// Roll length of the pit's centre from the pitch point, positive towards the tip, m.
         position_m: f64,
+        /// Roll length the pit covers along the profile, m.
         length_m: f64,
+        /// Depth of the pit normal to the flank, m.
         depth_m: f64,
+        /// Share of the face width the pit covers (0, 1].
         width_fraction: f64,
     },
     /// A broken tip: `removed_height_m` of the tooth's radial height gone from the tip.
-    BrokenTip { removed_height_m: f64 },
+    BrokenTip {
+        /// Radial height removed from the tip, m.
+        removed_height_m: f64,
+    },
 }
 
 /// One tooth fault of a case: the tooth it is on and the fault, resolved when the case is
@@ -314,6 +353,16 @@ impl ToothFault {
         self.table.kind
     }
 
+    /// Whether the fault changes its tooth: a crack of zero depth removes nothing (its
+    /// angle and width then meaningless); a spall and a broken tip have required sizes
+    /// above zero.
+    pub fn changes_tooth(&self) -> bool {
+        match self.fault {
+            Fault::Crack { depth_m, .. } => depth_m != 0.0,
+            Fault::Spall { .. } | Fault::BrokenTip { .. } => true,
+        }
+    }
+
     /// The table as the case file gave it (its units, absent keys absent): for tables
     /// that quote the case file's values.
     pub fn table(&self) -> &FaultTable {
@@ -333,7 +382,7 @@ impl TryFrom<FaultTable> for ToothFault {
 
     /// The fault of `table`, or the problems that keep it from being one (its keys against
     /// its kind, a negative tooth; the tooth against the gear's teeth is checked with the
-    /// case, [`teeth_problems`]).
+    /// case, `teeth_problems`).
     fn try_from(table: FaultTable) -> Result<Self, String> {
         let mut p = key_problems(&table, 0);
         let tooth = usize::try_from(table.tooth).map_err(|_| {
@@ -409,7 +458,7 @@ fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
 /// Problems of the per-tooth inputs that the case alone shows: array lengths against the
 /// numbers of teeth, tooth indices, a fault's keys against its kind, ascending roll
 /// angles. `z1`, `z2`: teeth of pinion and gear.
-pub fn teeth_problems(
+pub(crate) fn teeth_problems(
     t: &TeethSection,
     m: &ModificationSection,
     faults: &[FaultTable],

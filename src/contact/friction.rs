@@ -83,12 +83,14 @@ pub enum FrictionLaw {
     Xu2007(f64),
     /// A constant coefficient (direction still from the sliding velocity).
     Constant(f64),
+    /// Frictionless contact (coefficient 0).
     None,
 }
 
 /// The case's friction model, ready for per-contact evaluation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Friction {
+    /// The coefficient law and its parameters.
     pub law: FrictionLaw,
     /// `v` in `tanh(u_s / v)`, m/s; not positive means a hard sign.
     pub direction_smoothing_m_per_s: f64,

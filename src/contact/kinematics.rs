@@ -20,7 +20,9 @@ pub struct SurfaceKinematics {
 /// Sliding distance per passage through the contact of a point on each flank, m.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SlidingDistances {
+    /// Sliding distance of a point on the pinion flank, m.
     pub pinion_m: f64,
+    /// Sliding distance of a point on the gear flank, m.
     pub gear_m: f64,
 }
 

@@ -11,7 +11,11 @@ use serde::Serialize;
 /// per-cycle wear sum_i s_i inc_i (so wear between updates grows exactly as in the run),
 /// and the response of bin `observed` (the monitoring bin: what a sensor records at its
 /// reference condition).
-pub fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -> UpdateRecord {
+pub(crate) fn combined_record(
+    run: &SpectrumRun,
+    r: &SpectrumRecord,
+    observed: usize,
+) -> UpdateRecord {
     let inc = r.increment(&run.shares);
     let b = &r.bins[observed.min(r.bins.len() - 1)];
     UpdateRecord {
@@ -27,7 +31,7 @@ pub fn combined_record(run: &SpectrumRun, r: &SpectrumRecord, observed: usize) -
     }
 }
 
-/// The run as single-point updates ([`combined_record`] of each).
+/// The run as single-point updates (`combined_record` of each).
 pub fn combined_run(run: &SpectrumRun, observed: usize) -> WearRun {
     WearRun {
         mode: run.mode,
@@ -74,10 +78,12 @@ fn share(part: f64, whole: f64) -> f64 {
 pub struct BinWear {
     /// 1-based, as in the case.
     pub bin: usize,
+    /// Share of the pinion load cycles the bin takes (its spectrum share s_i).
     pub share_of_cycles: f64,
     /// Share of the worn area of the pinion's profile (depth integrated along the path of
     /// contact), and of the gear's.
     pub share_of_pinion_wear: f64,
+    /// Share of the worn area of the gear's profile the bin added.
     pub share_of_gear_wear: f64,
     /// Share of the wear at the point of the pinion's maximum wear depth.
     pub share_at_max_pinion_wear: f64,
@@ -128,7 +134,7 @@ pub fn ranking(run: &SpectrumRun) -> Vec<BinWear> {
 
 /// Dynamic factor (max / mean mesh force) of every bin at every update: one row per
 /// update, one column per bin.
-pub fn dynamic_factors(run: &SpectrumRun) -> Vec<Vec<f64>> {
+pub(crate) fn dynamic_factors(run: &SpectrumRun) -> Vec<Vec<f64>> {
     run.records
         .iter()
         .map(|r| r.bins.iter().map(|b| b.summary.dynamic_factor).collect())

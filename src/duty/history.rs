@@ -23,8 +23,11 @@ const MAX_PROBLEMS: usize = 20;
 /// Time, torque and speed at each sample.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct History {
+    /// Time of each sample from the start of the record, s.
     pub time_s: Vec<f64>,
+    /// Torque at each sample, N m, on the shaft the load spectrum names.
     pub torque_nm: Vec<f64>,
+    /// Input (pinion) shaft speed at each sample, Hz (read as Hz or rpm).
     pub input_speed_hz: Vec<f64>,
 }
 
@@ -32,6 +35,7 @@ pub struct History {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{}", .problems.join("; "))]
 pub struct HistoryError {
+    /// One line per problem, each naming its row and column.
     pub problems: Vec<String>,
 }
 
@@ -165,7 +169,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
 }
 
 /// Median of the sample intervals, s.
-pub fn median_interval_s(time_s: &[f64]) -> f64 {
+pub(crate) fn median_interval_s(time_s: &[f64]) -> f64 {
     let mut d: Vec<f64> = time_s.windows(2).map(|w| w[1] - w[0]).collect();
     if d.is_empty() {
         return 0.0;

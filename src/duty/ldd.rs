@@ -43,8 +43,10 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum Interpolation {
+    /// Piecewise linear between samples (the default): a ramp's time in each class is exact.
     #[default]
     Linear,
+    /// Each sample's values held until the next sample (sample-and-hold).
     Hold,
 }
 
@@ -62,9 +64,13 @@ pub enum Level {
 /// Classes and counting rules.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct LddSettings {
+    /// Number of equal torque classes over [0, T_max] (at most 200).
     pub torque_classes: usize,
+    /// Number of equal speed classes over [0, f_max] (at most 50).
     pub speed_classes: usize,
+    /// How the history runs between samples.
     pub interpolation: Interpolation,
+    /// The torque each cell's bin gets.
     pub level: Level,
 }
 
@@ -81,15 +87,17 @@ impl Default for LddSettings {
 
 /// Largest number of classes per axis: a spectrum of more than 200 x 50 bins only adds
 /// cost (each bin is a dynamic evaluation per wear update).
-pub const MAX_TORQUE_CLASSES: usize = 200;
-pub const MAX_SPEED_CLASSES: usize = 50;
+pub(crate) const MAX_TORQUE_CLASSES: usize = 200;
+pub(crate) const MAX_SPEED_CLASSES: usize = 50;
 
 /// Counts per torque x speed cell (row-major: torque class slowest).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Ldd {
+    /// The classes and counting rules the distribution was counted with.
     pub settings: LddSettings,
     /// Class edges, `classes + 1` each, from 0.
     pub torque_edges_nm: Vec<f64>,
+    /// Speed class edges, `speed_classes + 1`, from 0, Hz.
     pub speed_edges_hz: Vec<f64>,
     /// Time in each cell, s.
     pub time_s: Vec<f64>,

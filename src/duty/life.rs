@@ -25,7 +25,7 @@ use serde::Serialize;
 /// Cycles at which the maximum pinion wear of `records` (each with its per-cycle wear
 /// for the block after it; of any tooth when per tooth) first reaches `limit_m`, within
 /// `end` cycles (the last block ends there); None if not reached.
-pub fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Option<f64> {
+pub(crate) fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Option<f64> {
     for (j, r) in records.iter().enumerate() {
         let profiles = r.pinion_profiles();
         if profiles
@@ -53,9 +53,17 @@ pub fn first_crossing(records: &[UpdateRecord], end: f64, limit_m: f64) -> Optio
 #[serde(rename_all = "snake_case", tag = "status")]
 pub enum Life {
     /// The limit is reached at this many cycles.
-    Reached { cycles: f64 },
+    Reached {
+        /// Pinion load cycles at which the limit is reached.
+        cycles: f64,
+    },
     /// Not reached: the run stopped (the model's domain ended, or the cap) at `cycles`.
-    Beyond { cycles: f64, reason: String },
+    Beyond {
+        /// Pinion load cycles at which the run stopped.
+        cycles: f64,
+        /// Why the run stopped, in words.
+        reason: String,
+    },
 }
 
 impl Life {
@@ -73,9 +81,13 @@ impl Life {
 pub struct BinLife {
     /// 1-based.
     pub bin: usize,
+    /// The bin's torque, N m.
     pub torque_nm: f64,
+    /// The bin's input (pinion) speed, Hz.
     pub input_speed_hz: f64,
+    /// The bin's share of the load cycles.
     pub share: f64,
+    /// Life at this bin alone.
     pub life: Life,
     /// Hours at the bin's speed, when reached.
     pub hours: Option<f64>,
@@ -84,11 +96,15 @@ pub struct BinLife {
 /// Lives under the spectrum and at each bin.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LifeTable {
+    /// The wear mode of the runs the lives come from.
     pub mode: WearMode,
+    /// Wear limit: the maximum wear depth of the pinion flank at end of life, um.
     pub limit_um: f64,
+    /// Life under the whole spectrum.
     pub spectrum: Life,
     /// Hours under the spectrum: cycles x sum_i (s_i / f_i) / 3600.
     pub spectrum_hours: Option<f64>,
+    /// Life at each bin alone, in the case's order.
     pub bins: Vec<BinLife>,
     /// 1 / sum_i (s_i / L_i), when every bin with a share reaches the limit.
     pub linear_mix_cycles: Option<f64>,

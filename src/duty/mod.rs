@@ -17,9 +17,9 @@ pub mod history;
 pub mod ldd;
 pub mod life;
 pub mod model;
-pub mod resume;
+pub(crate) mod resume;
 pub mod study;
-pub mod verify;
+pub(crate) mod verify;
 pub mod wear;
 
 pub use model::SpectrumModel;

@@ -24,13 +24,13 @@ pub struct SpectrumModel {
 }
 
 /// A bin in words, for messages: "load_spectrum bin 3 (80 N m, 45 Hz)".
-pub fn bin_label(case: &Case, i: usize) -> String {
+pub(crate) fn bin_label(case: &Case, i: usize) -> String {
     let c = case.at_bin(i);
     format!(
         "load_spectrum bin {} ({} N m, {} Hz)",
         i + 1,
-        c.operating.load_torque_nm,
-        c.operating.input_speed_hz
+        crate::format::shown(c.operating.load_torque_nm),
+        crate::format::shown(c.operating.input_speed_hz)
     )
 }
 
@@ -76,6 +76,7 @@ impl SpectrumModel {
         self.bins.len()
     }
 
+    /// Whether the spectrum has no bins (never, for a model built from a case).
     pub fn is_empty(&self) -> bool {
         self.bins.is_empty()
     }

@@ -18,14 +18,14 @@ use crate::study::wear_check::check_wear_run;
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 
 /// The single-point runs of a spectrum run, one per bin (what its logs hold).
-pub fn bin_runs(run: &SpectrumRun) -> Vec<WearRun> {
+pub(crate) fn bin_runs(run: &SpectrumRun) -> Vec<WearRun> {
     let bins = run.records.first().map_or(0, |r| r.bins.len());
     (0..bins).map(|i| bin_run(run, i)).collect()
 }
 
 /// The spectrum run whose bin logs are `logs` (bin order), checked against `sm`. The logs
 /// are cut to the updates all of them hold.
-pub fn from_bin_runs(
+pub(crate) fn from_bin_runs(
     sm: &SpectrumModel,
     mode: WearMode,
     logs: &[WearRun],

@@ -13,7 +13,7 @@ use crate::study::wear_loop::{StopKind, WearMode};
 
 /// Life runs stop here at the latest: 1e15 pinion revolutions are 30 000 years at 1 kHz,
 /// beyond any machine's life, so a bin that has not worn to the limit by then never will.
-pub const LIFE_CYCLE_CAP: f64 = 1e15;
+pub(crate) const LIFE_CYCLE_CAP: f64 = 1e15;
 
 /// The wear study under the spectrum and what `run` adds to it.
 pub struct DutyStudy {
@@ -27,6 +27,7 @@ pub struct DutyStudy {
 }
 
 impl DutyStudy {
+    /// The spectrum run of wear mode `mode`, if it was asked for.
     pub fn run(&self, mode: WearMode) -> Option<&SpectrumRun> {
         self.runs.iter().find(|r| r.mode == mode)
     }
@@ -53,13 +54,7 @@ pub fn run_duty_study(
     );
     let monitor = &sm.bins[sm.monitoring];
     let wear_states = paper_wear_states(monitor, &d)?;
-    let limit = sm
-        .case
-        .load_spectrum
-        .as_ref()
-        .map_or(10.0, |s| s.life_wear_limit_um);
-    let life = life_table(&sm.case, WearMode::Dynamic, limit, LIFE_CYCLE_CAP)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let life = spectrum_life(sm, WearMode::Dynamic)?;
     Ok(DutyStudy {
         runs,
         paper: Some(PaperStudy {
@@ -71,12 +66,24 @@ pub fn run_duty_study(
     })
 }
 
+/// The life table of `sm`'s case in `mode`: runs to `load_spectrum.life_wear_limit_um`
+/// under the spectrum and at each bin alone (capped at [`LIFE_CYCLE_CAP`]); what `run`
+/// and `wear` both report.
+pub fn spectrum_life(sm: &SpectrumModel, mode: WearMode) -> anyhow::Result<LifeTable> {
+    let limit = sm
+        .case
+        .load_spectrum
+        .as_ref()
+        .map_or(10.0, |s| s.life_wear_limit_um);
+    life_table(&sm.case, mode, limit, LIFE_CYCLE_CAP).map_err(|e| anyhow::anyhow!("{e}"))
+}
+
 /// A case of a sweep: under the case's spectrum when it has one and the sweep runs wear
 /// studies (so `load_spectrum.torque_scale` and `speed_scale` are sweep axes), else the
 /// single-point case ([`crate::study::sweep::run_case`]). The row is read as the
 /// spectrum's single-point view: the dynamics columns are the monitoring bin's new-teeth
 /// response, the wear columns those of the shared wear state.
-pub fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     if run != SweepRun::Wear || case.load_spectrum.is_none() {
         return crate::study::sweep::run_case(case, run);
     }

@@ -36,7 +36,7 @@ fn next_record(
 /// first, if it is new teeth, and the last, recomputed, equal the stored ones (their
 /// wear state and every bin's record, compared as JSON, which carries every double
 /// exactly). Else which update differs, for the message.
-pub fn verify_spectrum_run(sm: &SpectrumModel, run: &SpectrumRun) -> Result<(), String> {
+pub(crate) fn verify_spectrum_run(sm: &SpectrumModel, run: &SpectrumRun) -> Result<(), String> {
     let n = run.records.len();
     let same = |a: &SpectrumRecord, b: &SpectrumRecord| {
         serde_json::to_string(&(&a.wear, &a.bins)).ok()

@@ -40,6 +40,7 @@ use serde::{Deserialize, Serialize};
 pub struct SpectrumRecord {
     /// The shared wear state reached.
     pub wear: WearState,
+    /// Composite RMS roughness on this wear state, um (the case's roughness law).
     pub roughness_um: f64,
     /// Per bin: its response on this state and the wear per cycle of that bin it gives
     /// (each record's `wear` is this state).
@@ -47,6 +48,7 @@ pub struct SpectrumRecord {
     /// Wear each bin has added so far, per profile point, m (sum over bins: `wear`, to
     /// rounding).
     pub by_bin_pinion_m: Vec<Vec<f64>>,
+    /// Wear each bin has added so far to the gear flank, per profile point, m.
     pub by_bin_gear_m: Vec<Vec<f64>>,
 }
 
@@ -90,14 +92,19 @@ impl SpectrumRecord {
 /// A wear run under a spectrum: its mode, the bins' shares, and every update so far.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpectrumRun {
+    /// The wear mode (quasi-static or dynamic load) of the run.
     pub mode: WearMode,
+    /// Each bin's share of the load cycles, in the case's order (summing to 1).
     pub shares: Vec<f64>,
+    /// Every wear update so far, in order of cycles.
     pub records: Vec<SpectrumRecord>,
+    /// Why the run stopped before its end, if it did.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stopped: Option<WearStop>,
 }
 
 impl SpectrumRun {
+    /// An empty run of mode `mode` with the bins' shares `shares`.
     pub fn new(mode: WearMode, shares: Vec<f64>) -> Self {
         Self {
             mode,
@@ -107,10 +114,12 @@ impl SpectrumRun {
         }
     }
 
+    /// The latest update, if any.
     pub fn last(&self) -> Option<&SpectrumRecord> {
         self.records.last()
     }
 
+    /// Pinion load cycles at each update.
     pub fn cycles(&self) -> Vec<f64> {
         self.records.iter().map(|r| r.wear.cycles).collect()
     }
@@ -219,7 +228,7 @@ impl SpectrumRun {
     /// A run under `sm`'s spectrum that starts from the worn `state` (e.g. the end of a
     /// run under another spectrum: a change of duty), its first record that state with
     /// every bin's response on it; wear attributed to the bins counts from there.
-    pub fn starting_at(
+    pub(crate) fn starting_at(
         sm: &SpectrumModel,
         mode: WearMode,
         state: WearState,

@@ -5,6 +5,7 @@ pub mod assembly;
 pub mod damped_modes;
 pub mod drive;
 pub mod excitation;
+pub mod fourier;
 pub mod grid;
 pub mod hunting;
 pub mod integrator;

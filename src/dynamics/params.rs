@@ -43,7 +43,8 @@ impl OperatingPoint {
             gear_speed_rad_s: omega_p * pair.pinion.teeth as f64 / pair.gear.teeth as f64,
             brake_torque_nm: brake_t,
             motor_torque_nm: motor_t,
-            mesh_frequency_hz: omega_p / (2.0 * PI) * pair.pinion.teeth as f64,
+            // From the input speed in Hz, not back from rad/s: 30 Hz x 19 is 570 exactly.
+            mesh_frequency_hz: op.input_speed_hz * pair.pinion.teeth as f64,
             static_mesh_force_n: brake_t / rgb,
         }
     }
@@ -226,7 +227,8 @@ mod tests {
         assert!((f_from_brake - 3360.6).abs() < 0.5, "{f_from_brake}");
         assert!((f_from_brake - f_from_motor).abs() < 1e-9);
         // Mesh frequency 19 x 30 Hz.
-        assert!((p.operating.mesh_frequency_hz - 570.0).abs() < 1e-9);
+        // Exactly: both factors and their product are whole numbers of f64.
+        assert_eq!(p.operating.mesh_frequency_hz, 570.0);
         // The static mesh force is the same from either shaft's torque.
         assert!((p.operating.static_mesh_force_n - f_from_brake).abs() < 1e-9);
     }

@@ -129,7 +129,13 @@ impl PeriodObserver for Recorder {
             }
         };
         record(&mut self.sig, sys, t, y, &dy, &meshes);
+        let n = sys.dofs();
         for (m, ms) in meshes.iter().enumerate() {
+            // The DTE's rate: its gradient times the velocities (the DTE is linear in q).
+            let rate = sys.mesh(m).geometry.gradient.iter();
+            self.sig.meshes[m]
+                .dte_rate_m_per_s
+                .push(rate.map(|(i, g)| g * y[n + i]).sum());
             let path = &mut self.paths[m];
             let first = path.len();
             push_path(path, sys, m, y, ms);
@@ -178,6 +184,12 @@ impl PeriodObserver for Recorder {
             self.force_int[m] += simpson(ms0[m].force_n, mid.force_n, ms1[m].force_n);
             self.dte_int[m] += simpson(ms0[m].deflection_m, mid.deflection_m, ms1[m].deflection_m);
         }
+        // The step's own accelerations at both ends (the solution's slope data; points
+        // and steps alternate, so entry j belongs to the step leaving sample j).
+        let n = sys.dofs();
+        let [start, end] = &mut self.sig.step_acceleration;
+        start.push(&f0[n..]);
+        end.push(&f1[n..]);
         self.last = Some(Evaluation {
             t: t + h,
             y: y1.to_vec(),

@@ -116,6 +116,9 @@ pub struct MeshSignals {
     pub dte_m: Vec<f64>,
     pub mesh_force_n: Vec<f64>,
     pub mesh_stiffness_n_per_m: Vec<f64>,
+    /// Rate of the DTE, m/s: the mesh gradient times the velocities (the DTE is linear in
+    /// the displacements), the DTE's slope for its interpolant. Empty when quasi-static.
+    pub dte_rate_m_per_s: Vec<f64>,
     /// Friction coefficient and signed friction force of the pair that entered contact
     /// last (pair 0) and of the one ahead of it (pair 1; 0 when out of contact).
     pub friction_coefficient: [Vec<f64>; 2],
@@ -152,11 +155,18 @@ impl MeshSignals {
             dte_m,
             mesh_force_n,
             mesh_stiffness_n_per_m,
+            dte_rate_m_per_s,
             friction_coefficient,
             friction_n,
             pair_load_n,
         } = self;
-        let series = [phase_rad, dte_m, mesh_force_n, mesh_stiffness_n_per_m];
+        let series = [
+            phase_rad,
+            dte_m,
+            mesh_force_n,
+            mesh_stiffness_n_per_m,
+            dte_rate_m_per_s,
+        ];
         let pairs = friction_coefficient
             .iter_mut()
             .chain(friction_n.iter_mut())
@@ -183,6 +193,14 @@ pub struct Signals {
     pub displacement: Coordinates,
     pub velocity: Coordinates,
     pub acceleration: Coordinates,
+    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
+    /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
+    /// mesh event or a contact switch makes the force jump, the end one is the limit from
+    /// the left at the next sample, which `acceleration` (the limit from the right) is not.
+    /// With the displacements and velocities they give the solution between the samples,
+    /// the cubic Hermite interpolant of the solver's steps (`super::fourier`). Empty for a
+    /// quasi-static response, whose samples are all there is.
+    pub step_acceleration: [Coordinates; 2],
     /// Each mesh's series, in the train's mesh order.
     pub meshes: Vec<MeshSignals>,
 }
@@ -195,6 +213,7 @@ impl Signals {
             displacement: Coordinates::new(dofs),
             velocity: Coordinates::new(dofs),
             acceleration: Coordinates::new(dofs),
+            step_acceleration: [Coordinates::new(dofs), Coordinates::new(dofs)],
             meshes: vec![MeshSignals::default(); meshes],
         }
     }
@@ -208,6 +227,7 @@ impl Signals {
             displacement,
             velocity,
             acceleration,
+            step_acceleration,
             meshes,
         } = self;
         let mut sig = self.clone();
@@ -227,6 +247,11 @@ impl Signals {
             }
             for a in acceleration.iter() {
                 sig.acceleration.push(a);
+            }
+            for (out, one) in sig.step_acceleration.iter_mut().zip(step_acceleration) {
+                for a in one.iter() {
+                    out.push(a);
+                }
             }
         }
         for (out, _) in sig.meshes.iter_mut().zip(meshes) {

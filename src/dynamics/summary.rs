@@ -1,8 +1,9 @@
 //! Headline numbers of a response (the quantities of the paper's section 4.1).
 
+use super::fourier::HermitePeriod;
 use super::model::dof;
 use super::response::DynamicResponse;
-use super::spectrum::{amplitude_spectrum, time_rms, Spectrum};
+use super::spectrum::{amplitude_spectrum, mesh_harmonics, time_rms, Spectrum};
 use serde::{Deserialize, Serialize};
 
 /// Scalar results of one steady-state (or quasi-static) evaluation, SI units.
@@ -17,7 +18,8 @@ pub struct ResponseSummary {
     /// max / mean mesh force.
     pub dynamic_factor: f64,
     pub velocity_y_pinion_rms_m_per_s: f64,
-    /// Amplitudes of the first four mesh harmonics of dy_p/dt, m/s.
+    /// Amplitudes of the first four mesh harmonics of dy_p/dt, m/s: the exact Fourier
+    /// coefficients of the solution over the window (`super::fourier`).
     pub velocity_y_pinion_harmonics_m_per_s: [f64; 4],
     /// Amplitude of the first mesh harmonic of the DTE, m (what a pair of encoders gives;
     /// absent in checkpoints written before it existed, hence the serde default).
@@ -36,12 +38,48 @@ fn min(x: &[f64]) -> f64 {
     x.iter().fold(f64::INFINITY, |m, v| m.min(*v))
 }
 
-/// Spectrum of the pinion's y velocity over the evaluated window.
-pub fn velocity_y_spectrum(r: &DynamicResponse) -> Spectrum {
+/// Velocity of coordinate `i` (the assembly's numbering; `model::dof` for the pair) over the evaluated window as the solver's
+/// solution: the cubic Hermite interpolant of the velocities and the steps'
+/// accelerations (`super::fourier`); the chords of the samples for a quasi-static
+/// response, which has no steps.
+pub fn velocity_signal(r: &DynamicResponse, i: usize) -> HermitePeriod {
     let s = &r.signals;
-    let v: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP]).collect();
-    let window_periods = evaluated_periods(r);
-    amplitude_spectrum(&s.time_s, &v, r.mesh_period_s, window_periods)
+    let window = r.mesh_period_s * evaluated_periods(r) as f64;
+    let x: Vec<f64> = s.velocity.iter().map(|v| v[i]).collect();
+    let [start, end] = &s.step_acceleration;
+    if start.len() != x.len() || end.len() != x.len() {
+        return HermitePeriod::linear(s.time_s.clone(), x, window);
+    }
+    HermitePeriod {
+        t: s.time_s.clone(),
+        x,
+        slope_start: start.iter().map(|a| a[i]).collect(),
+        slope_end: end.iter().map(|a| a[i]).collect(),
+        period_s: window,
+    }
+}
+
+/// The DTE of mesh `m` over the evaluated window as the solver's solution (its rate is
+/// continuous: the same slope at both ends of a step); the chords when quasi-static.
+pub fn dte_signal(r: &DynamicResponse, m: usize) -> HermitePeriod {
+    let s = &r.signals;
+    let ms = &s.meshes[m];
+    let window = r.mesh_period_s * evaluated_periods(r) as f64;
+    if ms.dte_rate_m_per_s.len() != ms.dte_m.len() {
+        return HermitePeriod::linear(s.time_s.clone(), ms.dte_m.clone(), window);
+    }
+    HermitePeriod {
+        t: s.time_s.clone(),
+        x: ms.dte_m.clone(),
+        slope_start: ms.dte_rate_m_per_s.clone(),
+        slope_end: ms.dte_rate_m_per_s.clone(),
+        period_s: window,
+    }
+}
+
+/// Spectrum of the pinion's y velocity over the evaluated window (exact lines).
+pub fn velocity_y_spectrum(r: &DynamicResponse) -> Spectrum {
+    amplitude_spectrum(&velocity_signal(r, dof::YP), evaluated_periods(r))
 }
 
 /// Whole mesh periods in the evaluated window.
@@ -78,12 +116,12 @@ impl ResponseSummary {
         let has_velocity = vy.iter().any(|v| *v != 0.0);
         let mut harm = [0.0; 4];
         if has_velocity {
-            let spec = amplitude_spectrum(&s.time_s, &vy, mesh_period_s, periods);
-            for (h, a) in harm.iter_mut().enumerate() {
-                *a = spec.harmonic(h + 1);
+            let lines = mesh_harmonics(&velocity_signal(r, pinion_y), periods, 4);
+            for (a, c) in harm.iter_mut().zip(&lines) {
+                *a = c.norm();
             }
         }
-        let dte_spec = amplitude_spectrum(&s.time_s, &s.meshes[m].dte_m, mesh_period_s, periods);
+        let dte_h1 = mesh_harmonics(&dte_signal(r, m), periods, 1)[0].norm();
         let mu_all: Vec<f64> = r.meshes[m]
             .path
             .iter()
@@ -115,7 +153,7 @@ impl ResponseSummary {
                 0.0
             },
             velocity_y_pinion_harmonics_m_per_s: harm,
-            dte_harmonic1_m: dte_spec.harmonic(1),
+            dte_harmonic1_m: dte_h1,
             friction_coefficient_max: if mu_all.is_empty() { 0.0 } else { max(&mu_all) },
             friction_coefficient_mean_in_contact: if mu_in.is_empty() {
                 0.0

@@ -41,7 +41,7 @@ pub fn blank_of(gear: &Gear, width_m: f64, density_kg_per_m3: f64) -> (f64, f64)
 
 impl GearPair {
     /// Masses and polar inertias of both blanks (see the module docs).
-    pub fn blank_estimates(&self, density_kg_per_m3: f64) -> BodyValues {
+    pub(crate) fn blank_estimates(&self, density_kg_per_m3: f64) -> BodyValues {
         let (mp, jp) = blank_of(&self.pinion, self.face_width_m, density_kg_per_m3);
         let (mg, jg) = blank_of(&self.gear, self.face_width_m, density_kg_per_m3);
         BodyValues {

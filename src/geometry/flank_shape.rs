@@ -27,14 +27,14 @@ use super::GearPair;
 
 /// Which gear of the pair.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
+pub(crate) enum Side {
     Pinion,
     Gear,
 }
 
 /// The active flank of one gear: its start of active profile and tip contact, m.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ActiveFlank {
+pub(crate) struct ActiveFlank {
     pub sap_rho_m: f64,
     pub tip_rho_m: f64,
     /// Radius of curvature at the pitch point, m.
@@ -61,28 +61,20 @@ impl ActiveFlank {
         }
     }
 
-    /// The gear's own rho at the contact whose pinion rho is `rho1_m`.
-    pub fn own_rho(pair: &GearPair, side: Side, rho1_m: f64) -> f64 {
-        match side {
-            Side::Pinion => rho1_m,
-            Side::Gear => pair.rho_gear(rho1_m),
-        }
-    }
-
     /// Roll length of the addendum (pitch point to tip), m.
-    pub fn addendum_roll_m(&self) -> f64 {
+    pub(crate) fn addendum_roll_m(&self) -> f64 {
         self.tip_rho_m - self.pitch_rho_m
     }
 
     /// Roll length of the active dedendum (start of active profile to pitch point), m.
-    pub fn dedendum_roll_m(&self) -> f64 {
+    pub(crate) fn dedendum_roll_m(&self) -> f64 {
         self.pitch_rho_m - self.sap_rho_m
     }
 }
 
 /// A relief: amount C (m) over length L (m) from an end of the flank.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Relief {
+pub(crate) struct Relief {
     pub amount_m: f64,
     pub length_m: f64,
     pub parabolic: bool,
@@ -102,7 +94,7 @@ impl Relief {
 /// The flank's deviation from the involute common to every tooth of one gear: reliefs
 /// and a user deviation along the roll angle (material removed positive, m).
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct FlankModification {
+pub(crate) struct FlankModification {
     pub tip: Option<Relief>,
     pub root: Option<Relief>,
     /// User deviation: own rho (m, ascending) and material removed (m); linear in
@@ -111,12 +103,8 @@ pub struct FlankModification {
 }
 
 impl FlankModification {
-    pub fn is_none(&self) -> bool {
-        self.tip.is_none() && self.root.is_none() && self.user.is_none()
-    }
-
     /// Material removed at own rho `rho_m` of a flank `f`, m.
-    pub fn removed_m(&self, f: &ActiveFlank, rho_m: f64) -> f64 {
+    pub(crate) fn removed_m(&self, f: &ActiveFlank, rho_m: f64) -> f64 {
         let mut h = 0.0;
         if let Some(r) = &self.tip {
             h += r.at(f.tip_rho_m - rho_m);
@@ -133,7 +121,7 @@ impl FlankModification {
 
 /// Material added by profile slope and form deviations `slope_m`, `form_m` at own rho,
 /// m (see the module docs).
-pub fn slope_form_added_m(f: &ActiveFlank, rho_m: f64, slope_m: f64, form_m: f64) -> f64 {
+pub(crate) fn slope_form_added_m(f: &ActiveFlank, rho_m: f64, slope_m: f64, form_m: f64) -> f64 {
     let span = f.tip_rho_m - f.sap_rho_m;
     if span <= 0.0 {
         return 0.0;
@@ -143,7 +131,7 @@ pub fn slope_form_added_m(f: &ActiveFlank, rho_m: f64, slope_m: f64, form_m: f64
 }
 
 /// Piecewise-linear interpolation of (x ascending, y) at `x0`, constant beyond the ends.
-pub fn interpolate_clamped(x: &[f64], y: &[f64], x0: f64) -> f64 {
+pub(crate) fn interpolate_clamped(x: &[f64], y: &[f64], x0: f64) -> f64 {
     let n = x.len().min(y.len());
     match n {
         0 => 0.0,

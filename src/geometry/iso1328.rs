@@ -12,12 +12,12 @@
 //! - radial run-out (informative annex) F_rT = 0.9 F_pT.
 //!
 //! The standard rounds published values (5.2.3: above 10 um to 1 um, 5 to 10 um to
-//! 0.5 um, below 5 um to 0.1 um); [`round_iso`] does so for reports, the random model
+//! 0.5 um, below 5 um to 0.1 um); `round_iso` does so for reports, the random model
 //! uses the unrounded values. The 2013 edition has classes 1 to 11 and says its formulas
 //! are not to be extrapolated; class 12 is one more step of sqrt(2), an extrapolation of
 //! the 2013 formulas (not the grade 12 of the 1995 edition, whose formulas differ).
 //!
-//! Random model ([`draw_gear`]; the standard gives tolerances, not a distribution, so
+//! Random model (`draw_gear`; the standard gives tolerances, not a distribution, so
 //! this is our choice): a tooth's position error is a once-per-revolution wave plus its
 //! own residual, e_i = c cos(2 pi i / z) + s sin(2 pi i / z) + r_i, taken about the mean
 //! (a common offset is a rigid rotation). The wave's components c, s are normal with
@@ -34,7 +34,7 @@
 //! the positions) <= F_pT, and on every tooth |f_Halpha| <= f_HalphaT,
 //! |f_falpha| <= f_falphaT and the total profile deviation F_alpha <= F_alphaT; otherwise
 //! the seeded stream draws again (a manufactured gear of the class is one that was
-//! accepted). A gear that no draw of [`MAX_DRAWS`] passes is an error, not kept.
+//! accepted). A gear that no draw of `MAX_DRAWS` passes is an error, not kept.
 
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
@@ -42,12 +42,19 @@ use rand::{RngExt, SeedableRng};
 /// The flank tolerances of one gear for one class, um (unrounded).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlankTolerances {
+    /// Flank tolerance class (ISO 1328-1:2013 classes 1 to 11).
     pub class: i64,
+    /// Single pitch tolerance f_pT, um.
     pub single_pitch_um: f64,
+    /// Total cumulative pitch tolerance F_pT, um.
     pub cumulative_pitch_um: f64,
+    /// Profile slope tolerance f_HalphaT, um.
     pub profile_slope_um: f64,
+    /// Profile form tolerance f_falphaT, um.
     pub profile_form_um: f64,
+    /// Total profile tolerance F_alphaT, um.
     pub profile_total_um: f64,
+    /// Run-out tolerance F_rT, um.
     pub runout_um: f64,
 }
 
@@ -74,7 +81,7 @@ pub fn flank_tolerances(class: i64, d_mm: f64, m_mm: f64) -> FlankTolerances {
 /// normal module `m_mm` lies outside the scope of ISO 1328-1:2013 (classes 1 to 11,
 /// 5 <= z <= 1000, 5 mm <= d <= 15 000 mm, 0.5 mm <= m_n <= 70 mm; its formulas are
 /// not to be extrapolated), or None inside it.
-pub fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<String> {
+pub(crate) fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<String> {
     let mut out = Vec::new();
     if !(1..=11).contains(&class) {
         out.push(format!("class {class} (1 to 11)"));
@@ -92,7 +99,7 @@ pub fn outside_scope(class: i64, teeth: usize, d_mm: f64, m_mm: f64) -> Option<S
 }
 
 /// A published value as ISO 1328-1:2013, 5.2.3 rounds it, um.
-pub fn round_iso(v_um: f64) -> f64 {
+pub(crate) fn round_iso(v_um: f64) -> f64 {
     if v_um > 10.0 {
         v_um.round()
     } else if v_um >= 5.0 {
@@ -105,7 +112,7 @@ pub fn round_iso(v_um: f64) -> f64 {
 /// The errors drawn for one gear, um: tooth positions (about their mean), profile slope
 /// and form deviations per tooth.
 #[derive(Debug, Clone, PartialEq)]
-pub struct DrawnGear {
+pub(crate) struct DrawnGear {
     pub position_um: Vec<f64>,
     pub slope_um: Vec<f64>,
     pub form_um: Vec<f64>,
@@ -151,7 +158,7 @@ pub fn total_profile_deviation(slope_um: f64, form_um: f64) -> f64 {
 }
 
 /// Whether drawn errors pass the class's inspection (module docs).
-pub fn passes_inspection(
+pub(crate) fn passes_inspection(
     tol: &FlankTolerances,
     position_um: &[f64],
     slope_um: &[f64],
@@ -179,18 +186,18 @@ fn normal(r: &mut ChaCha8Rng) -> f64 {
 /// 0.997^z from the single pitch test alone (each |f_pt,i| within 3 standard
 /// deviations), 0.07 at the 1000 teeth the schema allows, so 1e4 draws fail only with
 /// probability 0.93^1e4, never in practice.
-pub const MAX_DRAWS: usize = 10_000;
+pub(crate) const MAX_DRAWS: usize = 10_000;
 
 /// No draw passed the class's inspection (the teeth and class, for the message).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Undrawable {
+pub(crate) struct Undrawable {
     pub teeth: usize,
     pub class: i64,
 }
 
 /// The errors of a gear of `teeth` teeth drawn for tolerances `tol` from stream `stream`
 /// of `seed` (see the module docs).
-pub fn draw_gear(
+pub(crate) fn draw_gear(
     teeth: usize,
     tol: &FlankTolerances,
     seed: u64,

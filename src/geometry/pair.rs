@@ -15,7 +15,9 @@ use std::f64::consts::PI;
 /// One gear of the pair (SI units).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gear {
+    /// Number of teeth z.
     pub teeth: usize,
+    /// Profile shift coefficient x (dimensionless, positive away from the centre).
     pub profile_shift: f64,
     /// Reference (pitch) radius r = m z / 2, m.
     pub pitch_radius_m: f64,
@@ -34,7 +36,7 @@ pub struct Gear {
     /// Hub bore radius, m: the case's, or r_f / 2 when `"derived"`.
     pub bore_radius_m: f64,
     /// Half the angle the tooth's footing spans on the root circle, measured to where the
-    /// root fillet meets the root circle (rad); see [`fillet_junction_half_angle_rad`].
+    /// root fillet meets the root circle (rad); see `fillet_junction_half_angle_rad`.
     pub fillet_junction_half_angle_rad: f64,
 }
 
@@ -42,7 +44,7 @@ pub struct Gear {
 /// 1.4 <= h_f <= 7 and what the built-in case's own bores give (8 / 16.5 mm: 2.06;
 /// 14 / 28.5 mm: 2.04). A bore of half the root radius leaves a rim as deep as the teeth
 /// are long on the sizes of the built-in pair.
-pub const DERIVED_BORE_H_F: f64 = 2.0;
+pub(crate) const DERIVED_BORE_H_F: f64 = 2.0;
 
 /// Half angle (rad) of a generated tooth's footing on the root circle: from the tooth
 /// centreline to where the root fillet meets the root circle.
@@ -58,7 +60,7 @@ pub const DERIVED_BORE_H_F: f64 = 2.0;
 ///   theta_f = (pi m / 2 - E) / r  =  (2 / z) [pi/4 + h_f* tan(alpha) + rho* (1 - sin alpha) / cos(alpha)].
 /// The profile shift moves the rack radially and so cancels out. If the two corner radii
 /// overlap (E < 0) the fillets of neighbouring teeth meet on the root circle: theta_f = pi / z.
-pub fn fillet_junction_half_angle_rad(
+pub(crate) fn fillet_junction_half_angle_rad(
     teeth: f64,
     pressure_angle_rad: f64,
     dedendum_coefficient: f64,
@@ -95,10 +97,15 @@ impl Gear {
 /// A meshing involute spur pair. Build with [`GearPair::from_case`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearPair {
+    /// Module m, m.
     pub module_m: f64,
+    /// Reference pressure angle alpha, rad.
     pub pressure_angle_rad: f64,
+    /// Face width b, m.
     pub face_width_m: f64,
+    /// The pinion (gear 1, on the input shaft).
     pub pinion: Gear,
+    /// The gear (gear 2, on the output shaft).
     pub gear: Gear,
     /// Operating centre distance a_w, m.
     pub centre_distance_m: f64,
@@ -218,7 +225,7 @@ impl GearPair {
     /// `decide_rad` (e.g. the middle of an integration step) while their positions follow
     /// `phase_rad`. A step that ends exactly on a pair entering or leaving contact then
     /// sees one contact set on all its stages, so the stiffness jump falls between steps.
-    pub fn pairs_in_contact_decided(
+    pub(crate) fn pairs_in_contact_decided(
         &self,
         phase_rad: f64,
         decide_rad: f64,
@@ -237,7 +244,7 @@ impl GearPair {
     /// What [`GearPair::pairs_in_contact_decided`] takes from `decide_rad`: the mesh
     /// cycle's start (the floor of the phase in mesh angles) and the number of pairs. Two
     /// decision angles with the same key give the same pairs at every phase.
-    pub fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
+    pub(crate) fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
         let period = self.mesh_angle_rad();
         let cycle = (decide_rad / period).floor();
         let rho_decide =
@@ -253,7 +260,7 @@ impl GearPair {
     /// [`GearPair::pairs_in_contact_decided`] counts it (pair k of the contact set is
     /// cycle n - k).
     #[inline]
-    pub fn mesh_cycle(&self, decide_rad: f64) -> i64 {
+    pub(crate) fn mesh_cycle(&self, decide_rad: f64) -> i64 {
         (decide_rad / self.mesh_angle_rad()).floor() as i64
     }
 

@@ -40,10 +40,12 @@ impl ProfileGrid {
         }
     }
 
+    /// Number of points on the grid.
     pub fn len(&self) -> usize {
         self.rho_pinion_m.len()
     }
 
+    /// Whether the grid has no points (never, for a grid built by [`ProfileGrid::new`]).
     pub fn is_empty(&self) -> bool {
         self.rho_pinion_m.is_empty()
     }

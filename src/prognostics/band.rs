@@ -4,13 +4,14 @@ use super::stats::quantile_sorted;
 use serde::{Deserialize, Serialize};
 
 /// The percentiles of a band, in percent.
-pub const PERCENTILES: [f64; 5] = [5.0, 25.0, 50.0, 75.0, 95.0];
+pub(crate) const PERCENTILES: [f64; 5] = [5.0, 25.0, 50.0, 75.0, 95.0];
 
 /// Percentiles of one quantity against cycles over an ensemble.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Band {
+    /// Pinion cycle counts of the grid the percentiles are given at.
     pub cycles: Vec<f64>,
-    /// percentiles[i][g]: percentile PERCENTILES[i] at cycles[g]; NaN where undetermined.
+    /// `percentiles[i][g]`: percentile `PERCENTILES[i]` at `cycles[g]`; NaN where undetermined.
     pub percentiles: Vec<Vec<f64>>,
     /// Ensemble members with a value at each cycle count.
     pub valid: Vec<usize>,
@@ -75,7 +76,7 @@ impl Band {
 }
 
 /// `points` cycle counts evenly spaced from 0 to `cycles`.
-pub fn cycles_grid(cycles: f64, points: usize) -> Vec<f64> {
+pub(crate) fn cycles_grid(cycles: f64, points: usize) -> Vec<f64> {
     let n = points.max(2);
     (0..n).map(|i| cycles * i as f64 / (n - 1) as f64).collect()
 }

@@ -7,23 +7,29 @@ use super::grid::GridPosterior;
 use super::likelihood::log_likelihood;
 use super::mcmc::{ensemble_sample, McmcSettings};
 use super::observations::Observations;
+use super::posterior_error::PosteriorError;
 use super::prior::{Parameter, Prior, Theta};
 use super::stats::{autocorrelation_time, quantile, split_rhat};
 use super::surrogate::Surrogate;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+/// The sizes and seed of a calibration.
 #[derive(Debug, Clone, Copy)]
 pub struct CalibrationSettings {
     /// Posterior samples to return.
     pub samples: usize,
+    /// Seed of the random streams (the result depends only on it and the inputs).
     pub seed: u64,
     /// Grid cells per parameter.
     pub grid_cells: usize,
+    /// Walkers of the ensemble sampler (MCMC only).
     pub walkers: usize,
+    /// Steps per walker, burn-in included (MCMC only).
     pub steps: usize,
 }
 
+/// How the posterior is computed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
@@ -36,10 +42,13 @@ pub enum Method {
 /// Posterior summary of one parameter.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ParamSummary {
+    /// The parameter summarised.
     pub parameter: Parameter,
+    /// Posterior median, in the parameter's unit.
     pub median: f64,
     /// 90 % equal-tailed credible interval.
     pub ci05: f64,
+    /// Upper end of the 90 % credible interval (95th percentile), in the parameter's unit.
     pub ci95: f64,
     /// Effective sample size of the returned samples.
     pub ess: f64,
@@ -51,26 +60,39 @@ pub struct ParamSummary {
 /// (log10 k for k, the value otherwise).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Density {
+    /// The parameter.
     pub parameter: Parameter,
+    /// Plotting coordinate of each density point (log10 k for k, the value otherwise).
     pub x: Vec<f64>,
+    /// Posterior density at each point, per unit of the plotting coordinate.
     pub density: Vec<f64>,
     /// The prior's density in the same coordinate (uniform).
     pub prior_density: f64,
 }
 
+/// The result of calibrating the uncertain parameters against observations: posterior
+/// samples and their summaries.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Calibration {
+    /// The prior the posterior was computed from.
     pub prior: Prior,
+    /// How it was computed.
     pub method: Method,
+    /// Posterior samples of the parameters.
     pub samples: Vec<Theta>,
+    /// Summary of each parameter, in the order of [`Theta`].
     pub summary: Vec<ParamSummary>,
+    /// Marginal density of each parameter, in the order of [`Theta`].
     pub densities: Vec<Density>,
     /// Parameters at which the forward model failed (grid points or proposals).
     pub failed: Vec<Theta>,
     /// Grid: prior mass of the failed cells; posterior mass neglected outside the box.
     pub prior_mass_failed: Option<f64>,
+    /// Grid: posterior mass estimated to lie outside the refined box (None for MCMC).
     pub mass_outside: Option<f64>,
+    /// Grid: refinement levels used (None for MCMC).
     pub grid_levels: Option<usize>,
+    /// MCMC: share of proposals accepted (None for the grid).
     pub acceptance: Option<f64>,
 }
 
@@ -88,9 +110,9 @@ fn unit_span(prior: &Prior, i: usize) -> f64 {
 fn plot_x(prior: &Prior, i: usize, u: f64) -> f64 {
     let p = &prior.params[i];
     if p.log {
-        p.from_unit(u).log10()
+        p.value_at_unit(u).log10()
     } else {
-        p.from_unit(u)
+        p.value_at_unit(u)
     }
 }
 
@@ -101,12 +123,10 @@ pub fn calibrate(
     sur: &Surrogate,
     set: &CalibrationSettings,
     done: &(dyn Fn() + Sync),
-) -> Result<Calibration, String> {
+) -> Result<Calibration, PosteriorError> {
     let free = prior.free();
     if free.is_empty() {
-        return Err(
-            "nothing to calibrate: every parameter of [calibration] is fixed (equal bounds)".into(),
-        );
+        return Err(PosteriorError::NothingToCalibrate);
     }
     let loglik = |t: &Theta| log_likelihood(obs, &|q, c| sur.value(q, t, c));
     let mut out = Calibration {
@@ -123,7 +143,7 @@ pub fn calibrate(
     };
     // Why no parameter could be weighed, in the terms of the data: how far the
     // reference runs reach against the last observation.
-    let explain = |e: String| {
+    let explain = |e: PosteriorError| {
         let reach = sur
             .chains
             .iter()
@@ -131,12 +151,15 @@ pub fn calibrate(
             .fold(0.0_f64, f64::max);
         let last = obs.max_cycles();
         if reach < last {
-            format!(
-                "{e}: the reference runs reach at most {reach:.4e} cycles (at the prior's smallest k; faster wear stops sooner: {}), but the last observation is at {last:.4e} cycles",
-                sur.failures()
+            PosteriorError::BeyondReach {
+                cause: Box::new(e),
+                reach_cycles: reach,
+                last_cycles: last,
+                first_failure: sur
+                    .failures()
                     .first()
-                    .map_or("no failure recorded".into(), |f| f.2.clone())
-            )
+                    .map_or("no failure recorded".into(), |f| f.2.clone()),
+            }
         } else {
             e
         }
@@ -146,7 +169,7 @@ pub fn calibrate(
         let draws = g.draw(set.samples, set.seed);
         out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
         for (a, &i) in free.iter().enumerate() {
-            let q = |p| prior.params[i].from_unit(g.quantile_unit(a, p));
+            let q = |p| prior.params[i].value_at_unit(g.quantile_unit(a, p));
             out.summary.push(ParamSummary {
                 parameter: prior.params[i].parameter,
                 median: q(0.5),
@@ -189,7 +212,7 @@ pub fn calibrate(
         let c = run.coordinate(a);
         let all: Vec<f64> = flat.iter().map(|u| u[a]).collect();
         let tau = autocorrelation_time(&c);
-        let q = |p| prior.params[i].from_unit(quantile(&all, p));
+        let q = |p| prior.params[i].value_at_unit(quantile(&all, p));
         out.summary.push(ParamSummary {
             parameter: prior.params[i].parameter,
             median: q(0.5),
@@ -225,7 +248,7 @@ pub fn calibrate(
 
 /// The model's band over the posterior samples for quantity `q` on `points` cycle counts
 /// from 0 to `max_cycles` (noise-free model values; the observations carry noise).
-pub fn model_band(
+pub(crate) fn model_band(
     sur: &Surrogate,
     samples: &[Theta],
     q: super::quantity::Quantity,

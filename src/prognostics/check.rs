@@ -20,7 +20,7 @@ const CHECK_QUANTILES: [f64; 3] = [0.5, 0.05, 0.95];
 /// ratio to the spread of the posterior predictive distribution of an observation there
 /// (model spread over the posterior and noise scale, in quadrature).
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct ObservableCheck {
+pub(crate) struct ObservableCheck {
     pub quantity: String,
     pub max_abs_error: f64,
     pub max_error_over_predictive_sd: f64,
@@ -28,7 +28,7 @@ pub struct ObservableCheck {
 
 /// A true run at one point of the posterior against the surrogate.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct CalibrationCheck {
+pub(crate) struct CalibrationCheck {
     pub posterior_quantile_of_k: f64,
     /// [k m^2/N, roughness factor, load torque N m].
     pub theta: Theta,
@@ -37,7 +37,7 @@ pub struct CalibrationCheck {
 }
 
 /// The parameters at posterior quantile p of k, the others at their medians.
-pub fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
+pub(crate) fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
     let mut t = cal.prior.params.map(|x| x.lo);
     for s in &cal.summary {
         let i = PARAMETERS
@@ -55,7 +55,7 @@ pub fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
 
 /// Check a calibration at its posterior median, 5 % and 95 % of k (the first `n`).
 /// `noise`: the noise scale per quantity (`likelihood::noise_scales`).
-pub fn check_calibration(
+pub(crate) fn check_calibration(
     case: &Case,
     sur: &Surrogate,
     cal: &Calibration,
@@ -114,7 +114,7 @@ pub fn check_calibration(
 }
 
 /// Largest ratio of error to predictive spread over all checks.
-pub fn worst_ratio(checks: &[CalibrationCheck]) -> f64 {
+pub(crate) fn worst_ratio(checks: &[CalibrationCheck]) -> f64 {
     checks
         .iter()
         .flat_map(|c| c.quantities.iter().map(|q| q.max_error_over_predictive_sd))
@@ -124,17 +124,21 @@ pub fn worst_ratio(checks: &[CalibrationCheck]) -> f64 {
 /// A true run at one sample of a prediction against the surrogate.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PredictionCheck {
+    /// The parameters of the sample checked.
     pub theta: Theta,
+    /// Cycles to the wear limit the surrogate predicts.
     pub life_surrogate: Crossing,
+    /// Cycles to the wear limit of the true wear study.
     pub life_true: Crossing,
     /// Largest |surrogate - true| over the fan grid per fan quantity (None: no overlap).
     pub max_abs_error: Vec<(String, Option<f64>)>,
+    /// Why the true run stopped early, if it did.
     pub true_run_failure: Option<String>,
 }
 
 impl PredictionCheck {
     /// |surrogate - true| of the cycles to the limit, when both reach it.
-    pub fn life_error(&self) -> Option<f64> {
+    pub(crate) fn life_error(&self) -> Option<f64> {
         match (self.life_surrogate, self.life_true) {
             (Crossing::Reached(a), Crossing::Reached(b)) => Some((a - b).abs()),
             _ => None,
@@ -144,7 +148,7 @@ impl PredictionCheck {
 
 /// Check a prediction at the samples nearest the 50/5/95 % of the life (of k if no
 /// sample reaches the limit), the first `n` of them.
-pub fn check_prediction(
+pub(crate) fn check_prediction(
     case: &Case,
     sur: &Surrogate,
     outcomes: &[SampleOutcome],

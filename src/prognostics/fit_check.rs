@@ -8,21 +8,21 @@
 //! (`likelihood`): the mixture p(y) = 1/S sum_s N(y; f_q(c_i; theta_s), sigma_i^2) (Gelman
 //! et al., Bayesian Data Analysis, 3rd ed., section 6.3), sigma_i the observation's given
 //! sigma, or the quantity's inferred noise scale (`likelihood::noise_scales`). Its central
-//! [`COVERAGE`] band [l_i, u_i] is solved from the mixture's distribution function (no
+//! `COVERAGE` band [l_i, u_i] is solved from the mixture's distribution function (no
 //! random draws: the check is a function of the samples alone). An observation outside
 //! lies `excess_i = (y_i - u_i) / sigma_i` (above) or `(l_i - y_i) / sigma_i` (below)
 //! noise standard deviations beyond the band.
 //!
-//! Warning rule, both parts at false-alarm probability [`FALSE_ALARM`] for data the model
+//! Warning rule, both parts at false-alarm probability `FALSE_ALARM` for data the model
 //! generated (the posterior's own spread widens the band and only lowers it, as does the
 //! fit's pull of the predictions towards the data):
 //! - **count**: of n observations, each is outside with probability 1 - COVERAGE, so the
 //!   count outside is Binomial(n, 1 - COVERAGE); more than its upper FALSE_ALARM tail
-//!   point ([`max_outside`]) warns;
+//!   point (`max_outside`) warns;
 //! - **distance**: one observation beyond the band by e noise sigmas, with the band's edge
 //!   at least z = 1.96 sigma from the model value, has probability at most
 //!   2 (1 - Phi(z + e)) per observation; over n of them (Bonferroni) that is below
-//!   FALSE_ALARM for e > Phi^-1(1 - FALSE_ALARM / (2 n)) - z ([`excess_limit`]).
+//!   FALSE_ALARM for e > Phi^-1(1 - FALSE_ALARM / (2 n)) - z (`excess_limit`).
 //!
 //! With inferred noise the band is scaled by the residuals themselves: a misfit raises
 //! the noise scale instead of leaving observations outside, so the check sees only its
@@ -35,15 +35,15 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 /// Central probability of the predictive band.
-pub const COVERAGE: f64 = 0.95;
+pub(crate) const COVERAGE: f64 = 0.95;
 /// Probability that data the model generated raise the warning, per rule.
-pub const FALSE_ALARM: f64 = 1e-3;
+pub(crate) const FALSE_ALARM: f64 = 1e-3;
 /// Beyond this many sigma from a mixture member its normal density and tail vanish in
 /// double precision against the band's 2.5 % (Phi(-8.5) = 9.5e-18).
 const TAIL_SIGMAS: f64 = 8.5;
 
 /// Standard normal distribution function.
-pub fn normal_cdf(z: f64) -> f64 {
+pub(crate) fn normal_cdf(z: f64) -> f64 {
     0.5 * libm::erfc(-z / std::f64::consts::SQRT_2)
 }
 
@@ -53,7 +53,7 @@ fn normal_pdf(z: f64) -> f64 {
 }
 
 /// Phi^-1(p) for p in (0, 1), by bisection to 1e-12 (used once per check).
-pub fn normal_quantile(p: f64) -> f64 {
+pub(crate) fn normal_quantile(p: f64) -> f64 {
     let (mut lo, mut hi) = (-40.0_f64, 40.0_f64);
     while hi - lo > 1e-12 {
         let mid = 0.5 * (lo + hi);
@@ -68,7 +68,7 @@ pub fn normal_quantile(p: f64) -> f64 {
 
 /// Largest count of n observations outside the band that does not warn: the smallest k
 /// with P(Binomial(n, 1 - COVERAGE) > k) < FALSE_ALARM (pmf by its recurrence in logs).
-pub fn max_outside(n: usize) -> usize {
+pub(crate) fn max_outside(n: usize) -> usize {
     let p = 1.0 - COVERAGE;
     let mut ln_pmf = Vec::with_capacity(n + 1);
     let mut l = n as f64 * (1.0 - p).ln();
@@ -91,7 +91,7 @@ pub fn max_outside(n: usize) -> usize {
 
 /// Largest excess (noise sigmas beyond the band) of one of n observations that does not
 /// warn (module docs, "distance").
-pub fn excess_limit(n: usize) -> f64 {
+pub(crate) fn excess_limit(n: usize) -> f64 {
     let z = normal_quantile(0.5 + 0.5 * COVERAGE);
     normal_quantile(1.0 - FALSE_ALARM / (2.0 * n.max(1) as f64)) - z
 }
@@ -179,7 +179,9 @@ fn place(cycles: f64, value: f64, members: &mut [f64], sigma: f64) -> Placed {
 /// The observation of a quantity furthest outside its band.
 #[derive(Debug, Clone, Serialize)]
 pub struct Worst {
+    /// Pinion cycles of the observation.
     pub cycles: f64,
+    /// Observed value, display units.
     pub observed: f64,
     /// The central band there [lower, upper], display units.
     pub band: [f64; 2],
@@ -187,16 +189,20 @@ pub struct Worst {
     pub sigma: f64,
     /// Distance beyond the band, noise sigmas and display units.
     pub excess_sigma: f64,
+    /// Distance beyond the band, display units.
     pub excess: f64,
 }
 
 /// One observed quantity.
 #[derive(Debug, Clone, Serialize)]
 pub struct QuantityFit {
+    /// Name of the quantity.
     pub quantity: String,
     /// "given" (sigma column) or "inferred".
     pub noise: &'static str,
+    /// Observations of it.
     pub observations: usize,
+    /// Observations outside its central band.
     pub outside: usize,
     /// The observation furthest outside (None: every one inside).
     pub worst: Option<Worst>,
@@ -207,8 +213,11 @@ pub struct QuantityFit {
 /// The fit check of a calibration (`summary.json` "fit_check").
 #[derive(Debug, Clone, Serialize)]
 pub struct FitCheck {
+    /// Probability content of the central band the observations are held to (0.95).
     pub coverage: f64,
+    /// Observations in all.
     pub observations: usize,
+    /// Observations outside their central band.
     pub outside: usize,
     /// n (1 - coverage): what data the model generated would leave outside on average.
     pub expected_outside: f64,
@@ -218,7 +227,9 @@ pub struct FitCheck {
     pub largest_excess_sigma: f64,
     /// Rule: further out than this warns.
     pub excess_limit_sigma: f64,
+    /// Probability that each warning rule fires on data the model generated.
     pub false_alarm_probability_per_rule: f64,
+    /// The check of each observed quantity.
     pub quantities: Vec<QuantityFit>,
     /// The warning (None: the data are consistent with the model).
     pub warning: Option<String>,

@@ -18,7 +18,7 @@
 //! state is recorded through the case's `[signals]` chain with the built-in generic
 //! housing (the record `gearwear signals` writes, measurement noise left out: noise
 //! belongs to the likelihood's noise model) and the indicator is computed from that record
-//! ([`attach`]). Between updates it is read as every response quantity is (linear in
+//! (`attach`). Between updates it is read as every response quantity is (linear in
 //! cycles).
 
 use super::indicator::{name, value};
@@ -45,10 +45,11 @@ pub struct Trajectory {
     pub coefficient_m2_per_n: f64,
     /// Cycle count the run was asked to reach.
     pub requested_cycles: f64,
+    /// Every wear update of the run, in order of cycles.
     pub records: Vec<UpdateRecord>,
     /// Why the run stopped before `requested_cycles` (None: it reached them).
     pub failure: Option<String>,
-    /// Condition indicators at the first updates, by name ([`attach`]).
+    /// Condition indicators at the first updates, by name (`attach`).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub indicators: BTreeMap<String, Vec<f64>>,
 }
@@ -75,7 +76,7 @@ fn max_after(profiles: &[ProfileAndIncrement], n: f64) -> f64 {
 
 impl Trajectory {
     /// Cycles up to which the run is known.
-    pub fn valid_until(&self) -> f64 {
+    pub(crate) fn valid_until(&self) -> f64 {
         match (&self.failure, self.records.last()) {
             (None, Some(_)) => self.requested_cycles,
             (Some(_), Some(r)) => r.wear.cycles,
@@ -133,7 +134,7 @@ impl Trajectory {
 
 /// Why a wear run ended before its total cycles, if it did: an error, or an early stop
 /// (the solver gave up, or the teeth left the model's domain; [`WearRun::stopped`]).
-pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
+pub(crate) fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
     match result {
         Err(e) => Some(format!("{e:#}")),
         Ok(run) => run.stopped.map(|s| s.reason),
@@ -144,13 +145,15 @@ pub fn run_failure(result: anyhow::Result<WearRun>) -> Option<String> {
 /// the case's own spectrum (or operating point), e.g. a heavier duty from next year.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FutureDuty {
+    /// Pinion cycles from which the new duty applies.
     pub from_cycles: f64,
+    /// The load spectrum of the new duty.
     pub spectrum: LoadSpectrumSection,
 }
 
 /// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
 /// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
-/// Under a load spectrum the records are the spectrum's ([`combined_record`]: its wear
+/// Under a load spectrum the records are the spectrum's (`combined_record`: its wear
 /// per cycle, the monitoring bin's response).
 pub fn run_trajectory(
     case: &Case,
@@ -247,11 +250,27 @@ fn spectrum_records(
     }
 }
 
+/// Why the condition indicators of a run could not be computed (the case, not the run:
+/// a record that fails only ends the indicator's values).
+#[derive(Debug, thiserror::Error)]
+pub enum IndicatorError {
+    /// The case gives no dynamic model.
+    #[error("{0}")]
+    Model(ModelError),
+    /// The case's signal chain cannot be recorded: one problem per entry.
+    #[error("{}", .0.join("; "))]
+    Chain(Vec<String>),
+}
+
 /// Compute the indicators `qs` asks for at every update of `t` (those not there yet), for
 /// the run's `case` (at its monitoring bin under a load spectrum). The values stop at the
 /// first update whose record fails (the trajectory then reads the indicator as unknown
 /// from there on).
-pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), String> {
+pub(crate) fn attach(
+    t: &mut Trajectory,
+    case: &Case,
+    qs: &[Quantity],
+) -> Result<(), IndicatorError> {
     let wanted: Vec<u16> = indicators_of(qs)
         .into_iter()
         .filter(|i| !t.indicators.contains_key(name(*i)))
@@ -265,9 +284,9 @@ pub fn attach(t: &mut Trajectory, case: &Case, qs: &[Quantity]) -> Result<(), St
         Some(s) => case.at_bin(s.monitoring_index()),
         None => case.clone(),
     };
-    let model = Model::from_case(case).map_err(|e| e.to_string())?;
-    let mut setup =
-        chain_of(case, None, case.signals.max_input_speed_hz(case)).map_err(|m| m.join("; "))?;
+    let model = Model::from_case(case).map_err(IndicatorError::Model)?;
+    let mut setup = chain_of(case, None, case.signals.max_input_speed_hz(case))
+        .map_err(IndicatorError::Chain)?;
     setup.chain.acquisition.noise = NoiseSpec::None;
     let rows: Vec<Option<Vec<f64>>> = t
         .records

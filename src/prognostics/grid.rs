@@ -9,6 +9,7 @@
 //! a uniform point inside it; they are independent, so the effective sample size is
 //! their number.
 
+use super::posterior_error::PosteriorError;
 use super::prior::{Prior, Theta};
 use crate::rng;
 use rayon::prelude::*;
@@ -21,7 +22,7 @@ const MAX_LEVELS: usize = 8;
 
 /// A normalised posterior on a regular grid in unit coordinates.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct GridPosterior {
+pub(crate) struct GridPosterior {
     /// Free parameter indices (one or two).
     pub free: Vec<usize>,
     /// Unit-coordinate box of the final level, per axis.
@@ -61,18 +62,16 @@ fn centres(lo: &[f64], hi: &[f64], cells: usize) -> Vec<Vec<f64>> {
 impl GridPosterior {
     /// Compute the posterior. `loglik` returns None for a failed forward run; `done` is
     /// called once per level (progress).
-    pub fn compute(
+    pub(crate) fn compute(
         prior: &Prior,
         loglik: &(dyn Fn(&Theta) -> Option<f64> + Sync),
         cells: usize,
         done: &(dyn Fn() + Sync),
-    ) -> Result<Self, String> {
+    ) -> Result<Self, PosteriorError> {
         let free = prior.free();
         let d = free.len();
         if !(1..=2).contains(&d) {
-            return Err(format!(
-                "the grid posterior takes 1 or 2 parameters, got {d}"
-            ));
+            return Err(PosteriorError::GridDimensions { free: d });
         }
         let (mut lo, mut hi) = (vec![0.0; d], vec![1.0; d]);
         let mut failed = Vec::new();
@@ -100,16 +99,11 @@ impl GridPosterior {
                 .copied()
                 .fold(f64::NEG_INFINITY, f64::max);
             if !max.is_finite() {
-                return Err(if n_failed == ll.len() {
-                    format!(
-                        "no forward run reached the observations on the grid ({n_failed} of {} failed)",
-                        ll.len()
-                    )
+                let (failed, points) = (n_failed, ll.len());
+                return Err(if failed == points {
+                    PosteriorError::NoRunReached { failed, points }
                 } else {
-                    format!(
-                        "the observations have zero likelihood at every one of the {} grid points ({n_failed} runs failed, the others are too far from the data for their noise): check the observations' units, values and sigmas",
-                        ll.len()
-                    )
+                    PosteriorError::ZeroLikelihood { failed, points }
                 });
             }
             let w: Vec<f64> = ll
@@ -170,7 +164,7 @@ impl GridPosterior {
     }
 
     /// Marginal mass per cell along axis `a`.
-    pub fn marginal(&self, a: usize) -> Vec<f64> {
+    pub(crate) fn marginal(&self, a: usize) -> Vec<f64> {
         let n = self.cells;
         let mut m = vec![0.0; n];
         for (id, x) in self.mass.iter().enumerate() {
@@ -185,7 +179,7 @@ impl GridPosterior {
     }
 
     /// Unit coordinate of quantile p of axis `a` (CDF linear within a cell).
-    pub fn quantile_unit(&self, a: usize, p: f64) -> f64 {
+    pub(crate) fn quantile_unit(&self, a: usize, p: f64) -> f64 {
         let m = self.marginal(a);
         let width = (self.hi[a] - self.lo[a]) / self.cells as f64;
         let mut cum = 0.0;
@@ -199,7 +193,7 @@ impl GridPosterior {
     }
 
     /// Marginal density of axis `a` per unit coordinate at the cell centres.
-    pub fn density_unit(&self, a: usize) -> (Vec<f64>, Vec<f64>) {
+    pub(crate) fn density_unit(&self, a: usize) -> (Vec<f64>, Vec<f64>) {
         let width = (self.hi[a] - self.lo[a]) / self.cells as f64;
         let m = self.marginal(a);
         let u = (0..self.cells)
@@ -253,7 +247,7 @@ mod tests {
         // 0.3 + 1.6449 sd (normal table).
         let prior = Prior::from_case(&Case::default()).unwrap();
         let ll = |t: &Theta| {
-            let u = prior.params[0].to_unit(t[0]);
+            let u = prior.params[0].unit_of(t[0]);
             Some(-0.5 * ((u - 0.3) / 1e-3).powi(2))
         };
         let g = GridPosterior::compute(&prior, &ll, 200, &|| {}).unwrap();

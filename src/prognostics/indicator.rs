@@ -2,7 +2,7 @@
 //! computes from its accelerometers (docs/SIGNALS.md, section 2), named as the columns of
 //! a dataset's index (`input_rms`, `input_pinion_fm0`, ...), and where each one's value is
 //! in a record's analysis. Their forward value along a wear run is
-//! [`super::forward::attach`]'s.
+//! `super::forward::attach`'s.
 //!
 //! NA4 and NB4 are not offered: their denominator is the mean residual variance of the
 //! monitoring history so far, a property of the whole run, not of one wear state.

@@ -8,16 +8,22 @@
 /// One setting's valid range and why.
 #[derive(Debug, Clone, Copy)]
 pub struct Limit {
+    /// Name of the setting, as the front ends spell it.
     pub setting: &'static str,
+    /// Smallest valid value.
     pub min: f64,
+    /// Largest valid value.
     pub max: f64,
+    /// Why the range is what it is.
     pub reason: &'static str,
 }
 
 /// A setting out of its range: which, and the message.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Problem {
+    /// Name of the setting out of range.
     pub setting: &'static str,
+    /// What is wrong, with the value and the valid range.
     pub message: String,
 }
 
@@ -50,7 +56,7 @@ fn short(x: f64) -> String {
 }
 
 /// Posterior samples written by `calibrate`.
-pub const CALIBRATE_SAMPLES: Limit = Limit {
+pub(crate) const CALIBRATE_SAMPLES: Limit = Limit {
     setting: "samples",
     min: 1.0,
     max: 1e6,
@@ -58,49 +64,49 @@ pub const CALIBRATE_SAMPLES: Limit = Limit {
 };
 /// Walkers of the ensemble sampler (the count must also be even and at least twice the
 /// free parameters: the two halves of the stretch move).
-pub const WALKERS: Limit = Limit {
+pub(crate) const WALKERS: Limit = Limit {
     setting: "walkers",
     min: 2.0,
     max: 1e4,
     reason: "the stretch move needs an even count of at least twice the free parameters; beyond 1e4 walkers three parameters gain nothing",
 };
 /// Steps of the ensemble sampler.
-pub const STEPS: Limit = Limit {
+pub(crate) const STEPS: Limit = Limit {
     setting: "steps",
     min: 2.0,
     max: 1e7,
     reason: "the first half is burn-in, so at least 2 keep a step; 1e7 steps of 32 walkers hold 3e8 positions",
 };
 /// True wear runs checking the surrogate (at the 5, 50 and 95 % points).
-pub const CHECK_RUNS: Limit = Limit {
+pub(crate) const CHECK_RUNS: Limit = Limit {
     setting: "check_runs",
     min: 0.0,
     max: 3.0,
     reason: "one true run at each of the posterior's 50, 5 and 95 % points",
 };
 /// Ensemble size of `predict`.
-pub const PREDICT_SAMPLES: Limit = Limit {
+pub(crate) const PREDICT_SAMPLES: Limit = Limit {
     setting: "samples",
     min: 1.0,
     max: 1e7,
     reason: "the life's 5 % point of 1e7 samples is known to 0.01 % of its spread; each sample holds its fan values, so more is memory without information",
 };
 /// Cycle counts of the fan charts.
-pub const GRID_POINTS: Limit = Limit {
+pub(crate) const GRID_POINTS: Limit = Limit {
     setting: "grid_points",
     min: 2.0,
     max: 1e4,
     reason: "the fan charts are drawn on a 900-pixel axis; the life itself is located exactly between grid points",
 };
 /// Horizon of a prediction, cycles: the range of `wear.total_cycles`.
-pub const CYCLES: Limit = Limit {
+pub(crate) const CYCLES: Limit = Limit {
     setting: "cycles",
     min: 1.0,
     max: 1e11,
     reason: "the range of wear.total_cycles: 1e11 cycles is a pinion at 3000 rpm for 63 years",
 };
 /// Wear limit of a prediction, um.
-pub const LIMIT_UM: Limit = Limit {
+pub(crate) const LIMIT_UM: Limit = Limit {
     setting: "limit_um",
     min: 1e-3,
     max: 1e4,
@@ -108,7 +114,7 @@ pub const LIMIT_UM: Limit = Limit {
 };
 
 /// The settings of `calibrate`: every problem.
-pub fn check_calibrate(
+pub(crate) fn check_calibrate(
     samples: usize,
     walkers: usize,
     steps: usize,
@@ -138,7 +144,7 @@ pub fn check_calibrate(
 }
 
 /// The settings of `predict`: every problem.
-pub fn check_predict(
+pub(crate) fn check_predict(
     limit_um: f64,
     cycles: f64,
     samples: Option<usize>,

@@ -10,19 +10,24 @@
 //! coordinates (prior uniform on [0, 1]^d). Every proposal draws from its own random stream
 //! (step, walker), so the chains do not depend on the thread count.
 
+use super::posterior_error::PosteriorError;
 use super::prior::{Prior, Theta};
 use crate::rng;
 use rayon::prelude::*;
 
 /// Stretch scale a (Goodman & Weare's recommended value).
-pub const STRETCH_A: f64 = 2.0;
+pub(crate) const STRETCH_A: f64 = 2.0;
 
+/// The sizes and seed of an ensemble MCMC run (Goodman & Weare 2010).
 #[derive(Debug, Clone, Copy)]
 pub struct McmcSettings {
+    /// Number of walkers.
     pub walkers: usize,
+    /// Steps per walker, burn-in included.
     pub steps: usize,
     /// Steps discarded at the start.
     pub burn_in: usize,
+    /// Seed of the random streams.
     pub seed: u64,
 }
 
@@ -31,10 +36,10 @@ pub struct McmcSettings {
 pub struct McmcRun {
     /// chains[w][t][a]: unit coordinates of walker w at kept step t.
     pub chains: Vec<Vec<Vec<f64>>>,
+    /// Share of proposals accepted.
     pub acceptance: f64,
     /// Proposals whose forward run failed (parameters).
     pub failed: Vec<Theta>,
-    pub evaluations: usize,
 }
 
 /// A proposal: walker, position, its log density, accepted, failed parameters.
@@ -52,13 +57,14 @@ pub fn ensemble_sample(
     loglik: &(dyn Fn(&Theta) -> Option<f64> + Sync),
     s: &McmcSettings,
     done: &(dyn Fn() + Sync),
-) -> Result<McmcRun, String> {
+) -> Result<McmcRun, PosteriorError> {
     let d = prior.free().len();
     let w = s.walkers;
     if w < 2 * d || !w.is_multiple_of(2) {
-        return Err(format!(
-            "the ensemble needs an even number of walkers >= 2 x {d} parameters, got {w}"
-        ));
+        return Err(PosteriorError::Walkers {
+            free: d,
+            walkers: w,
+        });
     }
     let logp = |u: &[f64]| -> (f64, Option<Theta>) {
         if u.iter().any(|x| !(0.0..=1.0).contains(x)) {
@@ -83,13 +89,12 @@ pub fn ensemble_sample(
         })
         .collect();
     let mut failed: Vec<Theta> = candidates.iter().filter_map(|c| c.2).collect();
-    let mut evaluations = candidates.len();
     candidates.sort_by(|a, b| b.1.total_cmp(&a.1));
     if !candidates[w - 1].1.is_finite() {
-        return Err(format!(
-            "fewer than {w} of {} prior draws have a finite posterior (forward runs failed or the data exclude them): cannot start the ensemble",
-            candidates.len()
-        ));
+        return Err(PosteriorError::NoFiniteStart {
+            walkers: w,
+            draws: candidates.len(),
+        });
     }
     let mut pos: Vec<Vec<f64>> = candidates[..w].iter().map(|c| c.0.clone()).collect();
     let mut lp: Vec<f64> = candidates[..w].iter().map(|c| c.1).collect();
@@ -120,7 +125,6 @@ pub fn ensemble_sample(
                 })
                 .collect();
             for (k, y, ly, accept, f) in moves {
-                evaluations += 1;
                 failed.extend(f);
                 if accept {
                     pos[k] = y;
@@ -140,7 +144,6 @@ pub fn ensemble_sample(
         chains,
         acceptance: accepted as f64 / (s.steps * w).max(1) as f64,
         failed,
-        evaluations,
     })
 }
 
@@ -186,7 +189,7 @@ mod tests {
         let prior = Prior::from_case(&case).unwrap();
         let p = prior.clone();
         let ll = move |t: &Theta| {
-            let u: Vec<f64> = (0..3).map(|i| p.params[i].to_unit(t[i])).collect();
+            let u: Vec<f64> = (0..3).map(|i| p.params[i].unit_of(t[i])).collect();
             let (a, b) = ((u[0] - 0.3) / 0.05, (u[1] - 0.5) / 0.1);
             let q = (a * a - 1.8 * a * b + b * b) / (1.0 - 0.81) + ((u[2] - 0.6) / 0.08).powi(2);
             Some(-0.5 * q)

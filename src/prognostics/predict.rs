@@ -14,7 +14,7 @@ use crate::study::model::ModelError;
 use serde::{Deserialize, Serialize};
 
 /// Quantities of the fan charts: the wear and what the monitoring engineer will see.
-pub const FAN_QUANTITIES: [Quantity; 6] = [
+pub(crate) const FAN_QUANTITIES: [Quantity; 6] = [
     Quantity::MaxWearPinion,
     Quantity::VelocityRms,
     Quantity::MeshHarmonic(1),
@@ -23,13 +23,16 @@ pub const FAN_QUANTITIES: [Quantity; 6] = [
     Quantity::DteHarmonic1,
 ];
 
+/// The limit, horizon, sizes and seed of a life prediction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct PredictSettings {
     /// Wear limit on the maximum pinion wear depth, um.
     pub limit_um: f64,
     /// Horizon, cycles.
     pub cycles: f64,
+    /// Points of the cycle grid the fans are given on.
     pub grid_points: usize,
+    /// Seed of the random streams (each sample depends only on it and its index).
     pub seed: u64,
     /// Ensemble size.
     pub samples: usize,
@@ -38,10 +41,13 @@ pub struct PredictSettings {
 /// Where the parameter samples come from.
 #[derive(Debug, Clone)]
 pub enum SampleSource {
+    /// Draws from the prior.
     Prior(Prior),
     /// Posterior rows; `resample`: draw with replacement (else row i is sample i).
     Posterior {
+        /// Posterior samples, one parameter set per row.
         rows: Vec<Theta>,
+        /// Draw with replacement (else row i is sample i).
         resample: bool,
     },
 }
@@ -65,6 +71,7 @@ impl SampleSource {
 
 /// The forward model of a prediction.
 pub enum Forward<'a> {
+    /// The surrogate built from reference runs (fast).
     Surrogate(&'a Surrogate),
     /// One true wear study per sample (the case's block scheme), following a change of
     /// duty if one is given.
@@ -74,12 +81,14 @@ pub enum Forward<'a> {
 /// What one sample predicts.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SampleOutcome {
+    /// Index of the sample in the ensemble.
     pub index: usize,
+    /// Its parameters.
     pub theta: Theta,
     /// Cycles to the wear limit (NotReached: beyond the horizon; Unknown: the forward
     /// run failed before).
     pub life: Crossing,
-    /// values[f][g]: FAN_QUANTITIES[f] at grid point g; None past a failure.
+    /// `values[f][g]`: `FAN_QUANTITIES[f]` at grid point g; None past a failure.
     pub values: Vec<Vec<Option<f64>>>,
     /// Why the run stopped before the horizon.
     pub failure: Option<String>,
@@ -142,6 +151,7 @@ pub fn run_sample(
 /// The remaining-life distribution.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LifeSummary {
+    /// Samples in the ensemble.
     pub samples: usize,
     /// Samples whose wear reaches the limit within the horizon.
     pub reached: usize,
@@ -153,7 +163,9 @@ pub struct LifeSummary {
     /// determined (an unknown life lies between its run's last known cycle count and
     /// +inf; a percentile is kept where both ends give the same value).
     pub p05: Option<f64>,
+    /// Median of the cycles to the limit.
     pub median: Option<f64>,
+    /// 95th percentile of the cycles to the limit.
     pub p95: Option<f64>,
     /// P(life > horizon) over the samples with a known life.
     pub prob_beyond_horizon: f64,
@@ -164,6 +176,7 @@ pub struct LifeSummary {
 }
 
 impl LifeSummary {
+    /// The distribution of the outcomes `outcomes`.
     pub fn of(outcomes: &[SampleOutcome]) -> Self {
         let mut known: Vec<f64> = Vec::new();
         let (mut reached, mut beyond, mut unknown) = (0, 0, 0);
@@ -227,7 +240,7 @@ impl LifeSummary {
 /// ranges (`limits`), a shard `index` of `count` with 1 <= index <= count <= samples, at
 /// most its share of the samples, each with an index below the ensemble size and one
 /// value per fan quantity and grid point.
-pub fn check_shard(
+pub(crate) fn check_shard(
     set: &PredictSettings,
     (index, count): (usize, usize),
     outcomes: &[SampleOutcome],

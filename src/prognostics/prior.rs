@@ -19,15 +19,18 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Parameter {
+    /// Archard wear coefficient k, m^2/N.
     WearCoefficient,
+    /// Factor on the roughness law, dimensionless.
     RoughnessScale,
+    /// Load torque, N m.
     LoadTorque,
 }
 
 /// Values of all three parameters: [k m^2/N, roughness factor -, load torque N m].
 pub type Theta = [f64; 3];
 
-pub const PARAMETERS: [Parameter; 3] = [
+pub(crate) const PARAMETERS: [Parameter; 3] = [
     Parameter::WearCoefficient,
     Parameter::RoughnessScale,
     Parameter::LoadTorque,
@@ -43,6 +46,7 @@ impl Parameter {
         }
     }
 
+    /// Label for tables and figures, with the unit.
     pub fn label(&self) -> &'static str {
         match self {
             Parameter::WearCoefficient => "wear coefficient k (m^2/N)",
@@ -51,6 +55,7 @@ impl Parameter {
         }
     }
 
+    /// The parameter of a posterior samples CSV column, if any.
     pub fn parse(column: &str) -> Option<Self> {
         PARAMETERS.iter().copied().find(|p| p.column() == column)
     }
@@ -59,20 +64,24 @@ impl Parameter {
 /// The prior of one parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ParamPrior {
+    /// The parameter.
     pub parameter: Parameter,
+    /// Lower bound, in the parameter's unit.
     pub lo: f64,
+    /// Upper bound, in the parameter's unit (equal to `lo`: fixed).
     pub hi: f64,
     /// Log-uniform (else uniform).
     pub log: bool,
 }
 
 impl ParamPrior {
-    pub fn is_fixed(&self) -> bool {
+    pub(crate) fn is_fixed(&self) -> bool {
         self.lo == self.hi
     }
 
     /// Unit coordinate of a value (0 at lo, 1 at hi; log scale for a log prior).
-    pub fn to_unit(&self, x: f64) -> f64 {
+    #[cfg(test)]
+    pub(crate) fn unit_of(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return 0.5;
         }
@@ -84,7 +93,7 @@ impl ParamPrior {
     }
 
     /// Value at a unit coordinate.
-    pub fn from_unit(&self, u: f64) -> f64 {
+    pub(crate) fn value_at_unit(&self, u: f64) -> f64 {
         if self.is_fixed() {
             return self.lo;
         }
@@ -96,17 +105,19 @@ impl ParamPrior {
     }
 
     /// Prior CDF at x.
-    pub fn cdf(&self, x: f64) -> f64 {
+    #[cfg(test)]
+    pub(crate) fn cdf(&self, x: f64) -> f64 {
         if self.is_fixed() {
             return if x < self.lo { 0.0 } else { 1.0 };
         }
-        self.to_unit(x).clamp(0.0, 1.0)
+        self.unit_of(x).clamp(0.0, 1.0)
     }
 }
 
 /// Priors of all three parameters (fixed ones included).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Prior {
+    /// Priors in the order of [`Theta`].
     pub params: [ParamPrior; 3],
 }
 
@@ -188,12 +199,12 @@ impl Prior {
 
     /// The parameter values at unit coordinates `u` of the free parameters (fixed ones at
     /// their value).
-    pub fn theta_at(&self, u: &[f64]) -> Theta {
+    pub(crate) fn theta_at(&self, u: &[f64]) -> Theta {
         let mut t = [0.0; 3];
         let free = self.free();
         for (i, p) in self.params.iter().enumerate() {
             t[i] = match free.iter().position(|f| *f == i) {
-                Some(j) => p.from_unit(u[j]),
+                Some(j) => p.value_at_unit(u[j]),
                 None => p.lo,
             };
         }
@@ -210,7 +221,7 @@ impl Prior {
 /// The case with the parameters applied: k, the roughness table times the factor, and
 /// the load torque. Under a load spectrum the torque is a level relative to the
 /// operating torque: every bin's torque is scaled by T / `operating.load_torque_nm`.
-pub fn apply(case: &Case, theta: &Theta) -> Case {
+pub(crate) fn apply(case: &Case, theta: &Theta) -> Case {
     let mut c = case.clone();
     c.wear.coefficient_m2_per_n = theta[0];
     for r in &mut c.surface.roughness_table_rms_um {
@@ -257,7 +268,7 @@ mod tests {
         assert!((p.params[0].hi / (k * 100.0) - 1.0).abs() < 1e-12);
         assert_eq!(p.free(), vec![0]);
         // The case's k sits in the middle of the log scale.
-        assert!((p.params[0].to_unit(k) - 0.5).abs() < 1e-12);
+        assert!((p.params[0].unit_of(k) - 0.5).abs() < 1e-12);
         let t = p.theta_at(&[0.5]);
         assert!((t[0] / k - 1.0).abs() < 1e-12);
         assert_eq!((t[1], t[2]), (1.0, case.operating.load_torque_nm));

@@ -27,7 +27,7 @@ pub enum Quantity {
 }
 
 /// Every quantity, in the order tables list them.
-pub const ALL: [Quantity; 10] = [
+pub(crate) const ALL: [Quantity; 10] = [
     Quantity::MaxWearPinion,
     Quantity::MaxWearGear,
     Quantity::VelocityRms,
@@ -72,6 +72,7 @@ impl Quantity {
         }
     }
 
+    /// The quantity of name `name` (as [`Quantity::name`] spells it), if any.
     pub fn parse(name: &str) -> Option<Self> {
         ALL.iter()
             .copied()
@@ -80,7 +81,7 @@ impl Quantity {
     }
 
     /// Names of every quantity, comma separated (for error messages).
-    pub fn valid_names() -> String {
+    pub(crate) fn valid_names() -> String {
         let names = ALL.iter().map(|q| q.name()).collect::<Vec<_>>().join(", ");
         format!("{names}, and the {}", super::indicator::pattern())
     }
@@ -88,14 +89,14 @@ impl Quantity {
     /// Whether the quantity is a wear depth (known exactly between updates: the wear
     /// grows linearly in cycles within a block) rather than a response (that of the last
     /// update until the next).
-    pub fn is_wear(&self) -> bool {
+    pub(crate) fn is_wear(&self) -> bool {
         matches!(self, Quantity::MaxWearPinion | Quantity::MaxWearGear)
     }
 
     /// Value of a response quantity in display units (the updates CSV's conversions:
     /// x 1e6 for um, x 1e3 for mm/s). NaN for the wear depths, which come from the
     /// profile, and for the indicators, which come from a record (`super::indicator`).
-    pub fn of_summary(&self, s: &ResponseSummary) -> f64 {
+    pub(crate) fn of_summary(&self, s: &ResponseSummary) -> f64 {
         match self {
             Quantity::MaxWearPinion | Quantity::MaxWearGear | Quantity::Indicator(_) => f64::NAN,
             Quantity::VelocityRms => s.velocity_y_pinion_rms_m_per_s * 1e3,
@@ -110,7 +111,7 @@ impl Quantity {
 }
 
 /// The indicators among `qs`.
-pub fn indicators_of(qs: &[Quantity]) -> Vec<u16> {
+pub(crate) fn indicators_of(qs: &[Quantity]) -> Vec<u16> {
     let mut v: Vec<u16> = qs
         .iter()
         .filter_map(|q| match q {

@@ -5,7 +5,7 @@
 
 /// Quantile p in [0, 1] of ascending `sorted` data, linear between order statistics
 /// (Hyndman & Fan 1996, type 7). NaN for no data; +inf propagates.
-pub fn quantile_sorted(sorted: &[f64], p: f64) -> f64 {
+pub(crate) fn quantile_sorted(sorted: &[f64], p: f64) -> f64 {
     let n = sorted.len();
     if n == 0 {
         return f64::NAN;
@@ -25,6 +25,7 @@ pub fn quantile(data: &[f64], p: f64) -> f64 {
     quantile_sorted(&v, p)
 }
 
+/// Arithmetic mean of `x` (NaN for an empty slice).
 pub fn mean(x: &[f64]) -> f64 {
     x.iter().sum::<f64>() / x.len() as f64
 }
@@ -36,6 +37,7 @@ pub fn std_dev(x: &[f64]) -> f64 {
 }
 
 /// One-sample Kolmogorov-Smirnov statistic D = sup |F_n(x) - F(x)|.
+#[cfg(test)]
 pub fn ks_statistic(samples: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
     let mut v = samples.to_vec();
     v.sort_by(f64::total_cmp);
@@ -49,6 +51,7 @@ pub fn ks_statistic(samples: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
 
 /// Asymptotic critical value of D at level alpha = 0.01: 1.628 / sqrt(n) (Smirnov 1948;
 /// the Kolmogorov distribution's 99 % point is 1.628).
+#[cfg(test)]
 pub fn ks_critical_1pct(n: usize) -> f64 {
     1.628 / (n as f64).sqrt()
 }
@@ -90,7 +93,7 @@ pub fn autocorrelation_time(chains: &[Vec<f64>]) -> f64 {
 /// Split R-hat (Gelman et al., Bayesian Data Analysis, 3rd ed., eq. 11.4): each chain cut
 /// in halves, then sqrt(var_plus / W) with W the mean within-chain variance and
 /// var_plus = (n-1)/n W + B/n.
-pub fn split_rhat(chains: &[Vec<f64>]) -> f64 {
+pub(crate) fn split_rhat(chains: &[Vec<f64>]) -> f64 {
     let half = chains.iter().map(Vec::len).min().unwrap_or(0) / 2;
     if half < 2 {
         return f64::NAN;

@@ -10,12 +10,12 @@
 //! blocks limited by `wear.block_cycles` instead (small k) are finer, and differ.
 //!
 //! **The k axis.** Reference runs are made with the case's own block scheme at wear
-//! coefficients k_0 = k_min, k_j = k_0 R^j (R = [`K_NODE_RATIO`]), up to the first one
+//! coefficients k_0 = k_min, k_j = k_0 R^j (R = `K_NODE_RATIO`), up to the first one
 //! whose blocks are all cut by the threshold (or that fails, or reaches k_max): every k
 //! above it has the same blocks in exposure, so that run stands for all of them. Between
 //! two reference runs the observables (read at the same exposure) are interpolated
 //! linearly in ln k. The error left against true runs is measured in
-//! docs/PROGNOSTICS.md and by `tests/prognostics.rs`.
+//! docs/PROGNOSTICS.md and by `src/prognostics/tests_calibration.rs`.
 //!
 //! **A load spectrum.** Under a spectrum with fixed shares every bin's wear per cycle is
 //! proportional to k, so the spectrum's wear per cycle sum_i s_i inc_i is too, and the
@@ -25,7 +25,7 @@
 //! **A change of duty** ([`FutureDuty`], a future spectrum from N0 cycles on) breaks it:
 //! the switch falls at the exposure k N0, which depends on k. So with a future duty every
 //! node of k is its own run (nothing stands for the larger k), on a finer grid
-//! ([`future_node_ratio`]), and the runs are read in two phases
+//! (`future_node_ratio`), and the runs are read in two phases
 //! (`prognostics::surrogate_duty`): before the switch at the same exposure from the node
 //! at or above k (its switch comes later in exposure, so it is still in the first phase:
 //! exact by the invariance), after it at the same exposure since the switch, weighted
@@ -37,7 +37,9 @@
 //! invariance: one chain of reference runs per node of a regular grid over them, and
 //! multilinear interpolation between nodes.
 
-use super::forward::{run_duty_trajectory, run_failure, Crossing, FutureDuty, Trajectory};
+use super::forward::{
+    run_duty_trajectory, run_failure, Crossing, FutureDuty, IndicatorError, Trajectory,
+};
 use super::prior::{apply, Prior, Theta};
 use super::quantity::Quantity;
 use crate::config::Case;
@@ -47,25 +49,25 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Ratio of neighbouring reference wear coefficients in the block-limited range.
-pub const K_NODE_RATIO: f64 = 2.0;
+pub(crate) const K_NODE_RATIO: f64 = 2.0;
 
 /// Ratio of neighbouring k nodes under a change of duty: 2^(1/4), or coarser so that a
 /// chain holds at most 17 runs (a prior-only prediction spans four decades).
-pub fn future_node_ratio(k_lo: f64, k_hi: f64) -> f64 {
+pub(crate) fn future_node_ratio(k_lo: f64, k_hi: f64) -> f64 {
     2f64.powf(0.25).max((k_hi / k_lo).powf(1.0 / 16.0))
 }
 
 /// Most reference runs one chain over the prior of k can hold (k_hi / k_lo in steps of
 /// [`K_NODE_RATIO`], both ends included): a progress bar's length, chains usually stop
 /// earlier.
-pub fn max_chain_runs(p: &super::prior::Prior) -> u64 {
+pub(crate) fn max_chain_runs(p: &super::prior::Prior) -> u64 {
     let k = &p.params[0];
     ((k.hi / k.lo).ln() / K_NODE_RATIO.ln()).ceil() as u64 + 1
 }
 
 /// As [`max_chain_runs`] under a change of duty: every node of the finer grid
 /// ([`future_node_ratio`]) and k_hi.
-pub fn future_chain_runs(p: &super::prior::Prior) -> u64 {
+pub(crate) fn future_chain_runs(p: &super::prior::Prior) -> u64 {
     let k = &p.params[0];
     if k.hi <= k.lo {
         return 1;
@@ -76,8 +78,11 @@ pub fn future_chain_runs(p: &super::prior::Prior) -> u64 {
 /// One chain of reference runs (increasing k) at fixed other parameters.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Chain {
+    /// The parameters the chain holds fixed: roughness factor and torque (its k entry is not used).
     pub theta: Theta,
+    /// Wear coefficient of each run, m^2/N, increasing.
     pub k: Vec<f64>,
+    /// The reference runs, one per coefficient.
     pub runs: Vec<Trajectory>,
 }
 
@@ -350,7 +355,7 @@ impl Surrogate {
         case: &Case,
         qs: &[Quantity],
         done: &(dyn Fn() + Sync),
-    ) -> Result<(), String> {
+    ) -> Result<(), IndicatorError> {
         for chain in &mut self.chains {
             let c = apply(case, &chain.theta);
             for run in &mut chain.runs {
@@ -364,7 +369,7 @@ impl Surrogate {
     }
 
     /// Reference runs in all chains.
-    pub fn run_count(&self) -> usize {
+    pub(crate) fn run_count(&self) -> usize {
         self.chains.iter().map(|c| c.runs.len()).sum()
     }
 
@@ -380,7 +385,7 @@ impl Surrogate {
     }
 
     /// Cycles up to which the surrogate is known for `theta`.
-    pub fn valid_until(&self, theta: &Theta) -> f64 {
+    pub(crate) fn valid_until(&self, theta: &Theta) -> f64 {
         if let Some(f) = &self.future {
             return self.valid_until_after_change(f, theta);
         }

@@ -134,6 +134,36 @@ impl Artifacts {
         self
     }
 
+    /// What these artifacts write, in words for the results line: "report, summary,
+    /// 13 figures, 17 tables" (other documents by name, or counted when more than three).
+    pub fn contents_words(&self) -> String {
+        let mut parts = Vec::new();
+        let (reports, others): (Vec<&str>, Vec<&str>) = self
+            .documents
+            .iter()
+            .map(|(p, _)| p.as_str())
+            .partition(|p| p.ends_with("report.html"));
+        if !reports.is_empty() {
+            parts.push("report".to_owned());
+        }
+        if !self.summary.is_null() {
+            parts.push("summary".to_owned());
+        }
+        let count = |n: usize, one: &str, many: &str| match n {
+            0 => None,
+            1 => Some(format!("1 {one}")),
+            n => Some(format!("{n} {many}")),
+        };
+        parts.extend(count(self.figures.len(), "figure", "figures"));
+        parts.extend(count(self.tables.len(), "table", "tables"));
+        if others.len() <= 3 {
+            parts.extend(others.iter().map(|p| p.to_string()));
+        } else {
+            parts.extend(count(others.len(), "other file", "other files"));
+        }
+        parts.join(", ")
+    }
+
     /// The table at `path`, if present.
     pub fn table_at(&self, path: &str) -> Option<&Table> {
         self.tables.iter().find(|(p, _)| p == path).map(|(_, t)| t)

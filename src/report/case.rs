@@ -4,6 +4,7 @@
 
 use crate::config::case::TorqueShaft;
 use crate::config::Case;
+use crate::format::shown;
 use crate::study::{ModalAnalysis, Model};
 use serde_json::{json, Value};
 
@@ -105,7 +106,10 @@ pub fn load_words(case: &Case) -> String {
         TorqueShaft::Pinion => "pinion",
         TorqueShaft::Gear => "gear",
     };
-    format!("{} N m on the {shaft}", case.operating.load_torque_nm)
+    format!(
+        "{} N m on the {shaft}",
+        shown(case.operating.load_torque_nm)
+    )
 }
 
 /// The mean mesh force the load sets, with its numbers: "Without friction the mean mesh
@@ -117,10 +121,10 @@ pub fn load_sentence(model: &Model) -> String {
         TorqueShaft::Gear => ("r_gb", model.pair.gear.base_radius_m),
     };
     format!(
-        "Without friction the mean mesh force is {t} N m / {name} = {t} N m / {:.3} mm = {:.0} N.",
-        r_m * 1e3,
-        static_mesh_force_n(model),
-        t = op.load_torque_nm,
+        "Without friction the mean mesh force is {t} N m / {name} = {t} N m / {} mm = {} N.",
+        shown(r_m * 1e3),
+        shown(static_mesh_force_n(model)),
+        t = shown(op.load_torque_nm),
     )
 }
 
@@ -243,11 +247,9 @@ pub fn case_json(model: &Model) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::load_case;
 
     fn case(sets: &[&str]) -> Case {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case("", &sets).unwrap()
+        crate::config::load::default_with(sets)
     }
 
     #[test]

@@ -39,10 +39,10 @@ pub fn trend_figure(t: &Trends, unit: &str) -> Figure {
     let name = |l: &TrendLine| {
         let mut s = l.condition.clone();
         if speeds {
-            s.push_str(&format!(", {} Hz", l.input_speed_hz));
+            s.push_str(&format!(", {} Hz", crate::format::shown(l.input_speed_hz)));
         }
         if loads {
-            s.push_str(&format!(", {} N m", l.load_torque_nm));
+            s.push_str(&format!(", {} N m", crate::format::shown(l.load_torque_nm)));
         }
         s
     };

@@ -14,6 +14,7 @@ use crate::duty::contribution::{combined_run, ranking, BinWear};
 use crate::duty::life::{Life, LifeTable};
 use crate::duty::wear::SpectrumRun;
 use crate::duty::SpectrumModel;
+use crate::format::{shown, shown_percent};
 use crate::io::Table;
 use crate::study::wear_loop::{WearMode, WearRun};
 use serde_json::{json, Value};
@@ -105,9 +106,13 @@ pub fn duty_figures(
 }
 
 /// Everything `wear` writes under a load spectrum: the single-point outputs of the
-/// spectrum's runs (monitoring bin), the rankings and the duty figures, and the
-/// summary's `load_spectrum`.
-pub fn duty_wear_artifacts(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> Artifacts {
+/// spectrum's runs (monitoring bin), the rankings and the duty figures, the summary's
+/// `load_spectrum`, and the life table when given.
+pub fn duty_wear_artifacts(
+    sm: &SpectrumModel,
+    runs: &[&SpectrumRun],
+    life: Option<&LifeTable>,
+) -> Artifacts {
     let combined: Vec<WearRun> = runs
         .iter()
         .map(|r| combined_run(r, sm.monitoring))
@@ -121,12 +126,28 @@ pub fn duty_wear_artifacts(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> Artifac
             ranking_table(sm, &ranking(r)),
         );
     }
-    for f in duty_figures(sm, runs, None) {
+    for f in duty_figures(sm, runs, life) {
         a.figure_with_data(format!("{}.png", f.stem), f.figure, f.table);
     }
-    a.summary["load_spectrum"] = duty_summary(sm, runs, None);
+    a.summary["load_spectrum"] = duty_summary(sm, runs, life);
     a.headline.push_str(&duty_headline(sm, runs));
+    if let Some(l) = life {
+        a.headline.push_str(&life_headline(l));
+    }
     a
+}
+
+/// The life line: cycles and hours under the spectrum, and the linear mix of the bins'.
+fn life_headline(l: &LifeTable) -> String {
+    format!(
+        "\nlife to {} µm ({}): {} cycles{} under the spectrum, {} cycles by the linear mix of the bins' lives",
+        shown(l.limit_um),
+        l.mode.label(),
+        life_words(&l.spectrum),
+        l.spectrum_hours
+            .map_or(String::new(), |h| format!(" ({} h)", shown(h))),
+        l.linear_mix_cycles.map_or("-".into(), format_value)
+    )
 }
 
 /// A line naming the bin that wears most, per run.
@@ -135,14 +156,14 @@ fn duty_headline(sm: &SpectrumModel, runs: &[&SpectrumRun]) -> String {
         .filter_map(|r| {
             let top = ranking(r).into_iter().next()?;
             Some(format!(
-                "\n{}: {} bins; bin {} ({} N m, {} Hz) did {:.1} % of the pinion's wear in {:.1} % of the cycles",
+                "\n{}: {} bins; bin {} ({} N m, {} Hz) did {} of the pinion's wear in {} of the cycles",
                 r.mode.label(),
                 sm.len(),
                 top.bin,
-                sm.bins[top.bin - 1].case.operating.load_torque_nm,
-                sm.bins[top.bin - 1].case.operating.input_speed_hz,
-                100.0 * top.share_of_pinion_wear,
-                100.0 * top.share_of_cycles
+                shown(sm.bins[top.bin - 1].case.operating.load_torque_nm),
+                shown(sm.bins[top.bin - 1].case.operating.input_speed_hz),
+                shown_percent(top.share_of_pinion_wear),
+                shown_percent(top.share_of_cycles)
             ))
         })
         .collect()
@@ -311,12 +332,7 @@ pub fn duty_run_artifacts(
     a.summary["warnings"] = json!(sm.warnings());
     a.headline.push_str(&duty_headline(sm, &runs));
     if let Some(l) = &study.life {
-        a.headline.push_str(&format!(
-            "\nlife to {} µm: {} cycles under the spectrum, {} cycles by the linear mix of the bins' lives",
-            l.limit_um,
-            life_words(&l.spectrum),
-            l.linear_mix_cycles.map_or("-".into(), format_value)
-        ));
+        a.headline.push_str(&life_headline(l));
     }
     a.documents.push((
         "report.html".into(),

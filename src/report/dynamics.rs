@@ -7,6 +7,7 @@ use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
 use crate::dynamics::response::{Coordinates, DynamicResponse, PathSample, Signals};
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
+use crate::format::shown;
 use crate::io::Table;
 use crate::study::{ModalAnalysis, Model};
 use serde_json::{json, Value};
@@ -363,10 +364,10 @@ fn train_json(t: &crate::study::train::TrainModel, r: &DynamicResponse) -> Value
 pub fn dynamics_headline(v: &serde_json::Value) -> String {
     let f = |p: &str| v.pointer(p).and_then(|x| x.as_f64()).unwrap_or(f64::NAN);
     format!(
-        "max DTE {:.4} µm, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
-        f("/dte/max_um"),
-        f("/mesh_force/mean_n"),
-        f("/mesh_force/dynamic_factor"),
-        f("/velocity_y_pinion/rms_mm_per_s"),
+        "max DTE {} µm, mean mesh force {} N, dynamic factor {}, RMS dy_p/dt {} mm/s",
+        shown(f("/dte/max_um")),
+        shown(f("/mesh_force/mean_n")),
+        shown(f("/mesh_force/dynamic_factor")),
+        shown(f("/velocity_y_pinion/rms_mm_per_s")),
     )
 }

@@ -108,32 +108,17 @@ pub fn comparison_table(caption: &str, rows: &[ComparisonRow]) -> TableBlock {
     }
 }
 
-/// `(ours - paper) / |paper|` as a signed percentage with one decimal ("+10.0 %"); "n/a"
+/// `(ours - paper) / |paper|` as a signed percentage for a person ("+10 %", "-12.9 %"); "n/a"
 /// when the paper's value is zero or either value is not finite (no meaningful ratio).
 pub fn format_deviation(ours: f64, paper: f64) -> String {
     if !ours.is_finite() || !paper.is_finite() || paper == 0.0 {
         return "n/a".to_string();
     }
-    format!("{:+.1} %", 100.0 * (ours - paper) / paper.abs())
+    crate::format::shown_signed_percent((ours - paper) / paper.abs())
 }
 
-/// Four significant digits: fixed notation for magnitudes in [1e-3, 1e6), else scientific.
-/// Non-finite values print as "n/a".
-pub fn format_value(x: f64) -> String {
-    if !x.is_finite() {
-        return "n/a".to_string();
-    }
-    let a = x.abs();
-    if x == 0.0 {
-        "0".to_string()
-    } else if (1e-3..1e6).contains(&a) {
-        // Digits after the point so that four significant digits remain.
-        let decimals = (3 - a.log10().floor() as i32).max(0) as usize;
-        format!("{x:.decimals$}")
-    } else {
-        format!("{x:.3e}")
-    }
-}
+/// A number for a person: the project's one rule (`format::shown`).
+pub use crate::format::shown as format_value;
 
 /// Escape text for HTML content and quoted attribute values (& < > " ').
 pub fn escape(s: &str) -> String {
@@ -382,14 +367,14 @@ mod tests {
     #[test]
     fn deviation_and_values() {
         // 110 against 100 is +10 % by definition; -90 against -100 is +10 % of |paper|.
-        assert_eq!(format_deviation(110.0, 100.0), "+10.0 %");
-        assert_eq!(format_deviation(-90.0, -100.0), "+10.0 %");
-        assert_eq!(format_deviation(95.0, 100.0), "-5.0 %");
+        assert_eq!(format_deviation(110.0, 100.0), "+10 %");
+        assert_eq!(format_deviation(-90.0, -100.0), "+10 %");
+        assert_eq!(format_deviation(95.0, 100.0), "-5 %");
         assert_eq!(format_deviation(1.0, 0.0), "n/a");
         assert_eq!(format_deviation(f64::NAN, 1.0), "n/a");
         assert_eq!(format_value(1234.5678), "1235");
         assert_eq!(format_value(0.012346), "0.01235");
-        assert_eq!(format_value(2.5e-6), "2.500e-6");
+        assert_eq!(format_value(2.5e-6), "2.5e-6");
         assert_eq!(format_value(f64::INFINITY), "n/a");
     }
 

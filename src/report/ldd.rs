@@ -8,6 +8,7 @@ use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
 use crate::config::case::TorqueShaft;
 use crate::config::LoadSpectrumSection;
 use crate::duty::ldd::{Interpolation, Ldd, Level};
+use crate::format::shown;
 use crate::io::Table;
 use serde_json::json;
 
@@ -201,15 +202,15 @@ pub fn ldd_artifacts(
         spectrum_toml(spectrum, shaft).into_bytes(),
     ));
     a.headline = format!(
-        "{} samples over {:.6} h: {:.6} h under load in {} bins ({} torque x {} speed classes), {:.6} h idle; {:.6} pinion revolutions",
+        "{} samples over {} h: {} h under load in {} bins ({} torque x {} speed classes), {} h idle; {} pinion revolutions",
         samples,
-        ldd.span_s / S_PER_H,
-        ldd.loaded_time_s() / S_PER_H,
+        shown(ldd.span_s / S_PER_H),
+        shown(ldd.loaded_time_s() / S_PER_H),
         spectrum.bins.len(),
         ldd.settings.torque_classes,
         ldd.settings.speed_classes,
-        ldd.idle_time_s / S_PER_H,
-        cycles
+        shown(ldd.idle_time_s / S_PER_H),
+        shown(cycles)
     );
     a
 }

@@ -7,6 +7,7 @@ use super::case::{
 };
 use super::comparison::{cycles_reached, Compared};
 use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
+use crate::format::shown;
 use crate::store::RunMetadata;
 use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::WearRun;
@@ -56,7 +57,10 @@ fn pair_words(model: &Model) -> String {
     let g = &model.case.gear;
     format!(
         "z = {}/{}, m = {} mm, b = {} mm",
-        g.teeth_pinion, g.teeth_gear, g.module_mm, g.face_width_mm
+        g.teeth_pinion,
+        g.teeth_gear,
+        shown(g.module_mm),
+        shown(g.face_width_mm)
     )
 }
 
@@ -64,11 +68,11 @@ fn pair_words(model: &Model) -> String {
 pub fn comparison_headline(rows: &[Compared]) -> String {
     let line = |r: &Compared| {
         format!(
-            "{:<74} ours {:>10.4}  paper {:>8.3}  ({:+.1} %)",
+            "{:<74} ours {:>6}  paper {:>6}  ({})",
             r.quantity,
-            r.ours,
-            r.paper,
-            100.0 * r.relative_deviation()
+            shown(r.ours),
+            shown(r.paper),
+            super::html::format_deviation(r.ours, r.paper)
         )
     };
     rows.iter().map(line).collect::<Vec<_>>().join("\n")
@@ -78,20 +82,20 @@ pub fn comparison_headline(rows: &[Compared]) -> String {
 pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     let c = &model.case;
     let mut lines = vec![format!(
-        "case: {}, {}, {} Hz input, mesh frequency {:.0} Hz, {} cycles",
+        "case: {}, {}, {} Hz input, mesh frequency {} Hz, {} cycles",
         pair_words(model),
         load_words(c),
-        c.operating.input_speed_hz,
-        mesh_frequency_hz(model),
+        shown(c.operating.input_speed_hz),
+        shown(mesh_frequency_hz(model)),
         cycles_words(c.wear.total_cycles)
     )];
     if let Some(s) = study.dynamic.records.first().map(|r| &r.summary) {
         lines.push(format!(
-            "new teeth: max DTE {:.4} µm, mean mesh force {:.2} N, dynamic factor {:.4}, RMS dy_p/dt {:.4} mm/s",
-            s.dte_max_m * 1e6,
-            s.mesh_force_mean_n,
-            s.dynamic_factor,
-            s.velocity_y_pinion_rms_m_per_s * 1e3
+            "new teeth: max DTE {} µm, mean mesh force {} N, dynamic factor {}, RMS dy_p/dt {} mm/s",
+            shown(s.dte_max_m * 1e6),
+            shown(s.mesh_force_mean_n),
+            shown(s.dynamic_factor),
+            shown(s.velocity_y_pinion_rms_m_per_s * 1e3)
         ));
     }
     let at = cycles_reached(study);
@@ -100,10 +104,12 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
         wear_at_um(&study.quasi_static, at),
     );
     lines.push(format!(
-        "after {} cycles{}: maximum pinion wear {d:.4} µm dynamic, {q:.4} µm quasi-static (ratio {:.4})",
+        "after {} cycles{}: maximum pinion wear {} µm dynamic, {} µm quasi-static (ratio {})",
         cycles_words(at),
         super::wear::ratio_where(&[&study.dynamic, &study.quasi_static], at),
-        d / q
+        shown(d),
+        shown(q),
+        shown(d / q)
     ));
     lines.join("\n")
 }
@@ -141,26 +147,14 @@ fn case_table(model: &Model, study: &PaperStudy) -> TableBlock {
     let c = &model.case;
     let mut rows = vec![
         value_row("gear pair", pair_words(model)),
-        value_row(
-            "pressure angle (deg)",
-            format!("{}", c.gear.pressure_angle_deg),
-        ),
-        value_row(
-            "contact ratio (-)",
-            format!("{:.4}", model.pair.contact_ratio),
-        ),
+        value_row("pressure angle (deg)", shown(c.gear.pressure_angle_deg)),
+        value_row("contact ratio (-)", shown(model.pair.contact_ratio)),
         value_row("load", load_words(c)),
-        value_row(
-            "input speed (Hz)",
-            format!("{}", c.operating.input_speed_hz),
-        ),
-        value_row(
-            "mesh frequency (Hz)",
-            format!("{:.1}", mesh_frequency_hz(model)),
-        ),
+        value_row("input speed (Hz)", shown(c.operating.input_speed_hz)),
+        value_row("mesh frequency (Hz)", shown(mesh_frequency_hz(model))),
         value_row(
             "mean mesh force without friction (N)",
-            format!("{:.1}", static_mesh_force_n(model)),
+            shown(static_mesh_force_n(model)),
         ),
         value_row(
             "pinion / gear speed (rad/s)",

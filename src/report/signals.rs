@@ -4,14 +4,39 @@
 use super::artifacts::Artifacts;
 use super::figures::{harmonic_label, panel, Curve};
 use super::plot::{Figure, Panel, PanelKind, Series};
+use crate::format::shown;
 use crate::io::Table;
 use crate::signals::analysis::ChannelAnalysis;
 use crate::signals::chain::{Shaft, SignalChain};
 use crate::signals::files::{channel_column, record_parquet, record_table};
+use crate::signals::periodic::PeriodicSignal;
 use crate::signals::record::{Kinematics, Record};
 use crate::signals::record_spectrum::hann_amplitude_spectrum;
 use crate::study::signal_record::SignalRecord;
 use serde_json::{json, Value};
+
+/// One period of the bearing forces (the chain's inputs) on M uniform points from time 0,
+/// with their harmonics below the Nyquist frequency `fs_hz / 2` (above it the anti-alias
+/// filter leaves at most 1e-5 of a line: the record owes them nothing at 1e-3), M the power
+/// of two above twice the highest: an FFT of a column returns those lines exactly,
+/// C_k = 2 X_k / M, so the record can be rebuilt from this file and the transfer path.
+pub fn bearing_forces_table(forces: &[PeriodicSignal], fs_hz: f64) -> Table {
+    let period = forces.first().map_or(0.0, |f| f.period_s);
+    let below = ((0.5 * fs_hz * period).ceil() as usize).saturating_sub(1);
+    let m = (2 * (below + 1)).next_power_of_two().max(16);
+    let mut t = Table::new().col(
+        "time_s",
+        (0..m).map(|i| period * i as f64 / m as f64).collect(),
+    );
+    for (name, f) in crate::signals::bearing::INPUTS.iter().zip(forces) {
+        let kept = PeriodicSignal {
+            period_s: f.period_s,
+            coefficients: f.coefficients.iter().take(below + 1).copied().collect(),
+        };
+        t = t.col(&format!("{name}_n"), kept.on_grid(m));
+    }
+    t
+}
 
 /// The chain as a summary object: everything needed to read the files.
 pub fn chain_json(chain: &SignalChain, samples: usize) -> Value {
@@ -77,6 +102,13 @@ pub fn signals_artifacts(
             "record.csv": "the same samples as CSV, with time_s",
         },
     });
+    if let Some(forces) = &rec.bearing_forces {
+        a.table(
+            "bearing_forces.csv",
+            bearing_forces_table(forces, chain.acquisition.sampling_rate_hz),
+        );
+        a.summary["files"]["bearing_forces.csv"] = json!("one period of the four bearing forces on the housing (N), uniformly sampled from time 0 with every harmonic below f_s / 2 that the chain took in: the FFT of a column gives its lines exactly (docs/SIGNALS.md)");
+    }
     let unit_label = unit.symbol();
     let spec = spectrum_table(r, unit);
     a.figure_sized(
@@ -107,21 +139,32 @@ pub fn signals_artifacts(
         900,
         900,
     );
-    let first = rec.analysis.first().map(|c| c.indicators());
-    if let Some(i) = first {
-        a.headline = format!(
-            "{}: RMS {:.4} {unit_label}, crest factor {:.3}, kurtosis {:.3}{}",
-            i.channel,
-            i.signal.rms,
-            i.signal.crest_factor,
-            i.signal.kurtosis,
-            i.pinion.map_or(String::new(), |p| format!(
-                "; pinion TSA ({} revolutions): FM0 {:.3}, FM4 {:.3}, NA4 {:.3}",
-                p.revolutions, p.fm0, p.fm4, p.na4
-            ))
-        );
-    }
+    // One line per channel: a sensor on the other housing may see a fault the first misses.
+    let lines: Vec<String> = rec
+        .analysis
+        .iter()
+        .map(|c| channel_headline(&c.indicators(), unit_label))
+        .collect();
+    a.headline.push_str(&lines.join("\n"));
     a
+}
+
+/// A channel's indicators for a person: its signal's and its pinion TSA's.
+fn channel_headline(i: &crate::signals::analysis::ChannelIndicators, unit_label: &str) -> String {
+    format!(
+        "{}: RMS {} {unit_label}, crest factor {}, kurtosis {}{}",
+        i.channel,
+        shown(i.signal.rms),
+        shown(i.signal.crest_factor),
+        shown(i.signal.kurtosis),
+        i.pinion.map_or(String::new(), |p| format!(
+            "; pinion TSA ({} revolutions): FM0 {}, FM4 {}, NA4 {}",
+            p.revolutions,
+            shown(p.fm0),
+            shown(p.fm4),
+            shown(p.na4)
+        ))
+    )
 }
 
 fn spectrum_table(r: &Record, unit: crate::signals::chain::ChannelUnit) -> Table {

@@ -8,6 +8,7 @@ use super::plot::{Figure, Panel};
 use crate::contact::load_sharing::pedrero_shares;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::quasi_static::equilibrium;
+use crate::format::shown;
 use crate::io::Table;
 use crate::stiffness::iso6336::Iso6336Input;
 use crate::stiffness::mesh::MeshStiffness;
@@ -198,11 +199,11 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
     v["warnings"] = json!(model.warnings);
     let mut a = Artifacts {
         headline: format!(
-            "contact ratio {:.4}; mesh stiffness min {:.4e}, mean {:.4e}, max {:.4e} N/m",
-            model.pair.contact_ratio,
-            model.mesh.min_stiffness_n_per_m(),
-            model.mesh.mean_stiffness_n_per_m(),
-            model.mesh.max_stiffness_n_per_m(),
+            "contact ratio {}; mesh stiffness min {}, mean {}, max {} N/m",
+            shown(model.pair.contact_ratio),
+            shown(model.mesh.min_stiffness_n_per_m()),
+            shown(model.mesh.mean_stiffness_n_per_m()),
+            shown(model.mesh.max_stiffness_n_per_m()),
         ),
         summary: v,
         ..Default::default()

@@ -12,6 +12,7 @@ use crate::config::case::{FaultKind, Member};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::velocity_y_spectrum;
+use crate::format::shown;
 use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviations};
 use crate::io::Table;
 use crate::study::wear_loop::WearRun;
@@ -370,8 +371,10 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
         );
     a.table("csv/teeth_quasi_static_te.csv", table);
     a.headline.push_str(&format!(
-        "; static TE of these teeth {:.4} to {:.4} µm over {} mesh periods",
-        min, max, r.excitation_periods
+        "; static TE of these teeth {} to {} µm over {} mesh periods",
+        shown(min),
+        shown(max),
+        r.excitation_periods
     ));
 }
 

@@ -4,6 +4,7 @@
 use super::artifacts::Artifacts;
 use super::figures::{panel, points_panel, scale_panel, single, Curve};
 use super::plot::{Figure, LineStyle, Panel};
+use crate::format::shown;
 use crate::io::Table;
 use crate::study::wear_loop::{UpdateRecord, WearRun};
 use crate::study::Model;
@@ -348,11 +349,11 @@ pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
         .filter_map(|r| {
             r.last().map(|l| {
                 format!(
-                    "{}: {} updates to {} cycles, maximum pinion wear {:.4} µm",
+                    "{}: {} updates to {} cycles, maximum pinion wear {} µm",
                     r.mode.label(),
                     r.records.len() - 1,
-                    crate::io::format_number(l.wear.cycles),
-                    l.wear.max_pinion_m() * 1e6
+                    shown(l.wear.cycles),
+                    shown(l.wear.max_pinion_m() * 1e6)
                 )
             })
         })
@@ -362,9 +363,10 @@ pub fn wear_headline(runs: &[&WearRun], v: &serde_json::Value) -> String {
         v["ratio_at_cycles"].as_f64(),
     ) {
         lines.push(format!(
-            "dynamic / quasi-static maximum accumulated pinion wear at {} cycles{}: {x:.4}",
-            crate::io::format_number(at),
-            ratio_where(runs, at)
+            "dynamic / quasi-static maximum accumulated pinion wear at {} cycles{}: {}",
+            shown(at),
+            ratio_where(runs, at),
+            shown(x)
         ));
     }
     lines.join("\n")

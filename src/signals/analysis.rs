@@ -13,16 +13,22 @@ use serde::{Deserialize, Serialize};
 /// The TSA of one shaft on one channel, its derived signals and indicators.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaftAnalysis {
+    /// The shaft the average is synchronous with.
     pub shaft: Shaft,
+    /// The time-synchronous average of the channel over that shaft's revolutions.
     pub tsa: Tsa,
+    /// The regular, difference, residual, band-pass and envelope signals of the TSA.
     pub components: Components,
+    /// The condition indicators of the TSA.
     pub indicators: ShaftIndicators,
 }
 
 /// One channel's analysis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChannelAnalysis {
+    /// Sensor name of the channel.
     pub name: String,
+    /// Indicators of the whole recorded signal.
     pub signal: SignalIndicators,
     /// Pinion and gear shafts, where the record holds a complete revolution.
     pub shafts: Vec<ShaftAnalysis>,
@@ -31,16 +37,21 @@ pub struct ChannelAnalysis {
 /// The indicators of a channel, as written to summaries and index tables.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ChannelIndicators {
+    /// Sensor name of the channel.
     pub channel: String,
+    /// Indicators of the whole recorded signal.
     #[serde(flatten)]
     pub signal: SignalIndicators,
+    /// Indicators of the pinion shaft's TSA, where the record holds a complete revolution.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pinion: Option<ShaftIndicators>,
+    /// Indicators of the gear shaft's TSA, where the record holds a complete revolution.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gear: Option<ShaftIndicators>,
 }
 
 impl ChannelAnalysis {
+    /// The channel's indicators as written to summaries and index tables.
     pub fn indicators(&self) -> ChannelIndicators {
         let of = |s: Shaft| {
             self.shafts
@@ -80,6 +91,12 @@ pub fn analyse(
                     let tsa =
                         synchronous_average(x, fs, &edges, tach.pulses_per_revolution, ratio)?;
                     let z = shaft.teeth(kin.teeth_pinion, kin.teeth_gear);
+                    // The TSA's passband: orders below the resampling's flat band.
+                    let top = (super::interp::PASSBAND_OVER_FS * fs * tsa.revolution_s).floor();
+                    let settings = ComponentSettings {
+                        top_order: Some(top as usize),
+                        ..settings
+                    };
                     let c = components(&tsa.values, z, settings);
                     let indicators = ShaftIndicators::of(&tsa.values, &c, tsa.revolutions);
                     Some(ShaftAnalysis {

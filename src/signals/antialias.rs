@@ -1,6 +1,6 @@
 //! The anti-alias filter of the acquisition and decimation to the sampling rate.
 //!
-//! The "analog" signal is represented at an internal rate D f_s (D = [`OVERSAMPLING`]).
+//! The "analog" signal is represented at an internal rate D f_s (D = `OVERSAMPLING`).
 //! Before it is decimated to f_s it passes a linear-phase low-pass FIR designed by the
 //! Kaiser window method (Kaiser 1974; Oppenheim & Schafer, *Discrete-Time Signal
 //! Processing*, 3rd ed., Sect. 7.5.3):
@@ -21,10 +21,10 @@
 use std::f64::consts::PI;
 
 /// Internal oversampling of the analog representation over the sampling rate.
-pub const OVERSAMPLING: usize = 8;
+pub(crate) const OVERSAMPLING: usize = 8;
 
 /// Ratio f_s / f_p of the sampling rate to the passband edge.
-pub const SAMPLING_OVER_PASSBAND: f64 = 2.56;
+pub(crate) const SAMPLING_OVER_PASSBAND: f64 = 2.56;
 
 /// A linear-phase low-pass FIR at the internal rate, with its delay removed.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,13 +33,15 @@ pub struct AntiAliasFilter {
     pub taps: Vec<f64>,
     /// Internal rate D f_s, Hz.
     pub internal_rate_hz: f64,
+    /// Sampling rate f_s of the decimated record, Hz.
     pub sampling_rate_hz: f64,
+    /// Stopband attenuation at and above f_s / 2, dB.
     pub attenuation_db: f64,
 }
 
 /// Zeroth-order modified Bessel function of the first kind (power series; converges for
 /// every argument, 1e-17 relative terms end it).
-pub fn bessel_i0(x: f64) -> f64 {
+pub(crate) fn bessel_i0(x: f64) -> f64 {
     let (mut sum, mut term, y) = (1.0, 1.0, 0.25 * x * x);
     let mut k = 1.0;
     while term > 1e-17 * sum {
@@ -51,7 +53,7 @@ pub fn bessel_i0(x: f64) -> f64 {
 }
 
 /// Kaiser's beta for a stopband attenuation of `a_db`.
-pub fn kaiser_beta(a_db: f64) -> f64 {
+pub(crate) fn kaiser_beta(a_db: f64) -> f64 {
     if a_db > 50.0 {
         0.1102 * (a_db - 8.7)
     } else if a_db >= 21.0 {
@@ -110,7 +112,7 @@ impl AntiAliasFilter {
 
     /// The zero-phase response at the `n / 2 + 1` frequencies k r / n of an `n`-point
     /// transform at the internal rate r (exactly `response` there, by one FFT).
-    pub fn response_grid(&self, n: usize) -> Vec<f64> {
+    pub(crate) fn response_grid(&self, n: usize) -> Vec<f64> {
         let c = self.half_length();
         let mut a = vec![0.0; n];
         for (m, h) in self.taps.iter().enumerate() {
@@ -126,14 +128,15 @@ impl AntiAliasFilter {
     }
 
     /// Half the filter length in internal samples (its delay).
-    pub fn half_length(&self) -> usize {
+    pub(crate) fn half_length(&self) -> usize {
         self.taps.len() / 2
     }
 
     /// Filter `x` (at the internal rate, sample 0 at time 0) and keep every D-th sample:
     /// output n is the filtered signal at internal sample n D. Samples beyond the ends of
     /// `x` count as the end values held (a signal at rest before and after).
-    pub fn decimate(&self, x: &[f64]) -> Vec<f64> {
+    #[cfg(test)]
+    pub(crate) fn decimate(&self, x: &[f64]) -> Vec<f64> {
         if x.is_empty() {
             return Vec::new();
         }

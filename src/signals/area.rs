@@ -13,7 +13,8 @@
 /// interpolant of (t, x) (t ascending). With `period` the signal is periodic with that
 /// period (the interpolant closes on the first sample one period later); without, it is
 /// held at its end values outside the samples.
-pub fn cell_means(
+#[cfg(test)]
+pub(crate) fn cell_means(
     t: &[f64],
     x: &[f64],
     start: f64,
@@ -78,7 +79,7 @@ pub fn cell_means(
 }
 
 /// Response of the box filter of width `w` at `f_hz` (centred: real), sinc(pi f w).
-pub fn box_response(f_hz: f64, w: f64) -> f64 {
+pub(crate) fn box_response(f_hz: f64, w: f64) -> f64 {
     let a = std::f64::consts::PI * f_hz * w;
     if a.abs() < 1e-12 {
         1.0

@@ -6,6 +6,7 @@
 //! y_p (pinion bearing) and x_g, y_g (gear bearing), the reaction of the restoring force
 //! -k_b q - c_b dq/dt on the gear body.
 
+use crate::dynamics::fourier::HermitePeriod;
 use crate::dynamics::model::dof;
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::response::DynamicResponse;
@@ -13,27 +14,59 @@ use crate::dynamics::summary::evaluated_periods;
 
 /// The bearing forces on the housing, the inputs of a transfer path, in the order of
 /// [`BearingForces::force_n`]: pinion x, pinion y, gear x, gear y (the model's frame).
-pub const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
+pub(crate) const INPUTS: [&str; 4] = ["pinion_x", "pinion_y", "gear_x", "gear_y"];
 
 /// Bearing forces on the housing over one period of a periodic response, N, in
-/// [`INPUTS`] order, with the times of the samples.
+/// `INPUTS` order, at the solver's samples, with their rates at both ends of the step
+/// leaving each sample (N/s: k_b dq/dt + c_b d2q/dt2 with the step's own accelerations),
+/// which make the solution between the samples (`signal`).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BearingForces {
+    /// Time of each sample from the start of the period, s.
     pub time_s: Vec<f64>,
+    /// Force of each input at each sample, N (`INPUTS` order).
     pub force_n: [Vec<f64>; 4],
+    /// Rates at the start and the end of each step; empty for a response without steps
+    /// (quasi-static), whose forces are then the chords of the samples.
+    pub rate_start_n_per_s: [Vec<f64>; 4],
+    /// Rate of each input's force at the end of each step, N/s (`INPUTS` order; empty as
+    /// above).
+    pub rate_end_n_per_s: [Vec<f64>; 4],
     /// Length of the period, s.
     pub period_s: f64,
+}
+
+impl BearingForces {
+    /// Input j over the period as the solver's solution: the cubic Hermite interpolant of
+    /// the forces and their rates (`dynamics::fourier`), or the chords without rates.
+    pub fn signal(&self, j: usize) -> HermitePeriod {
+        let n = self.time_s.len();
+        if self.rate_start_n_per_s[j].len() != n || self.rate_end_n_per_s[j].len() != n {
+            return HermitePeriod::linear(
+                self.time_s.clone(),
+                self.force_n[j].clone(),
+                self.period_s,
+            );
+        }
+        HermitePeriod {
+            t: self.time_s.clone(),
+            x: self.force_n[j].clone(),
+            slope_start: self.rate_start_n_per_s[j].clone(),
+            slope_end: self.rate_end_n_per_s[j].clone(),
+            period_s: self.period_s,
+        }
+    }
 }
 
 /// Period of a periodic steady-state response, s: the period its recorded window
 /// repeats (one mesh period for identical teeth, the tooth-resolved mesh's period, up to
 /// the hunting period lcm(z1, z2) mesh periods, otherwise).
-pub fn response_period_s(r: &DynamicResponse) -> f64 {
+pub(crate) fn response_period_s(r: &DynamicResponse) -> f64 {
     r.mesh_period_s * r.excitation_periods.max(1) as f64
 }
 
 /// The bearing forces over the first period of the response's recorded window.
-pub fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
+pub(crate) fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
     let s = &r.signals;
     let period = response_period_s(r);
     let t0 = s.time_s.first().copied().unwrap_or(0.0);
@@ -73,9 +106,22 @@ pub fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingFor
             .map(|m| k * s.displacement[m][i] + c * s.velocity[m][i])
             .collect()
     });
+    let stepped = s.step_acceleration.iter().all(|a| a.len() >= n);
+    let rate = |which: usize| {
+        spring.map(|(i, k, c)| -> Vec<f64> {
+            if !stepped {
+                return Vec::new();
+            }
+            (0..n)
+                .map(|m| k * s.velocity[m][i] + c * s.step_acceleration[which][m][i])
+                .collect()
+        })
+    };
     BearingForces {
         time_s: s.time_s[..n].to_vec(),
         force_n,
+        rate_start_n_per_s: rate(0),
+        rate_end_n_per_s: rate(1),
         period_s: period,
     }
 }

@@ -1,6 +1,6 @@
 //! The signals derived from a time-synchronous average (one revolution of a shaft, so
 //! DFT bin k is shaft order k), as the condition-monitoring literature defines them
-//! (Stewart 1977; McFadden 1987; Zakrajsek, Townsend & Decker 1993, NASA TM-106032;
+//! (Stewart 1977; McFadden 1987; Zakrajsek, Townsend & Decker 1993, NASA TM-105950;
 //! Lebold et al. 2000, "Review of vibration analysis methods for gearbox diagnostics and
 //! prognostics", 54th MFPT):
 //!
@@ -31,6 +31,12 @@ pub struct ComponentSettings {
     /// Sideband orders either side of each mesh harmonic counted as regular (1: the
     /// first-order sidebands of the textbook definitions).
     pub sidebands: usize,
+    /// Mesh harmonics H whose amplitudes FM0 sums (h = 1..=H; `signals.mesh_harmonics`).
+    pub mesh_harmonics: usize,
+    /// Highest order of the TSA's passband (None: every order): the orders above, where
+    /// the angular resampling is no longer flat (`super::interp::PASSBAND_OVER_FS`), are
+    /// left out of every derived signal and TSA indicator.
+    pub top_order: Option<usize>,
 }
 
 impl Default for ComponentSettings {
@@ -38,6 +44,8 @@ impl Default for ComponentSettings {
         Self {
             shaft_harmonics: 2,
             sidebands: 1,
+            mesh_harmonics: 4,
+            top_order: None,
         }
     }
 }
@@ -49,11 +57,22 @@ pub struct Components {
     pub spectrum: Vec<Complex64>,
     /// Samples per revolution M.
     pub samples: usize,
+    /// Mesh order z: the teeth of the analysed shaft's gear.
     pub mesh_order: usize,
+    /// Mesh harmonics FM0 sums ([`ComponentSettings::mesh_harmonics`]).
+    pub mesh_harmonic_count: usize,
+    /// The TSA restricted to its passband ([`ComponentSettings::top_order`]), mean removed:
+    /// what FM0's peak-to-peak and the TSA's RMS are taken of.
+    pub in_band: Vec<f64>,
+    /// Regular signal: the TSA with only the regular meshing components (M samples).
     pub regular: Vec<f64>,
+    /// Difference signal: the TSA minus the regular signal (M samples).
     pub difference: Vec<f64>,
+    /// Residual signal: the TSA minus the shaft orders 1..S and the mesh harmonics (M samples).
     pub residual: Vec<f64>,
+    /// Band-pass signal: the orders z - B..z + B of the mesh fundamental's band (M samples).
     pub band_pass: Vec<f64>,
+    /// Envelope of the band-pass signal, the magnitude of its analytic signal (M samples).
     pub envelope: Vec<f64>,
 }
 
@@ -65,10 +84,12 @@ impl Components {
             .map_or(0.0, |c| 2.0 * c.norm() / self.samples as f64)
     }
 
-    /// Mesh harmonics h z inside the TSA's band (h >= 1, h z below M / 2).
+    /// The orders h z of mesh harmonics h = 1..=H, H = [`ComponentSettings::mesh_harmonics`]
+    /// (the setup checks that they lie in the recorded band; an order at or above M / 2,
+    /// which a TSA cannot hold, is left out).
     pub fn mesh_harmonics(&self) -> impl Iterator<Item = usize> + '_ {
         let top = self.samples / 2;
-        (1..)
+        (1..=self.mesh_harmonic_count)
             .map(move |h| h * self.mesh_order)
             .take_while(move |k| *k < top)
     }
@@ -115,6 +136,12 @@ pub fn components(tsa: &[f64], mesh_order: usize, settings: ComponentSettings) -
     let mut spectrum = fft.make_output_vec();
     fft.process(&mut tsa.to_vec(), &mut spectrum)
         .expect("FFT buffers sized by the plan");
+    if let Some(top) = settings.top_order {
+        for c in spectrum.iter_mut().skip(top + 1) {
+            *c = Complex64::new(0.0, 0.0);
+        }
+    }
+    let in_band = inverse(&spectrum, m, |_| true);
     let z = mesh_order.max(1);
     let shaft = |k: usize| (1..=settings.shaft_harmonics).contains(&k);
     let mesh = |k: usize| k.is_multiple_of(z);
@@ -135,6 +162,8 @@ pub fn components(tsa: &[f64], mesh_order: usize, settings: ComponentSettings) -
         spectrum,
         samples: m,
         mesh_order: z,
+        mesh_harmonic_count: settings.mesh_harmonics,
+        in_band,
         regular,
         difference,
         residual,

@@ -15,15 +15,15 @@ use parquet::errors::ParquetError;
 use serde_json::{json, Map, Value};
 
 /// Column name of a sensor's channel.
-pub fn channel_column(sensor: &str, unit: ChannelUnit) -> String {
+pub(crate) fn channel_column(sensor: &str, unit: ChannelUnit) -> String {
     format!("{sensor}_{}", unit.suffix())
 }
 
 /// Name of the tachometer column.
-pub const TACHOMETER_COLUMN: &str = "tachometer_v";
+pub(crate) const TACHOMETER_COLUMN: &str = "tachometer_v";
 
 /// Column names and units of a record.
-pub fn units(record: &Record, unit: ChannelUnit) -> Map<String, Value> {
+pub(crate) fn units(record: &Record, unit: ChannelUnit) -> Map<String, Value> {
     let mut m = Map::new();
     for (name, _) in &record.channels {
         m.insert(channel_column(name, unit), json!(unit.symbol()));
@@ -33,7 +33,7 @@ pub fn units(record: &Record, unit: ChannelUnit) -> Map<String, Value> {
 }
 
 /// The Parquet bytes of a record; `labels` (a JSON object) go into its metadata.
-pub fn record_parquet(
+pub(crate) fn record_parquet(
     record: &Record,
     unit: ChannelUnit,
     labels: Option<&Value>,
@@ -63,7 +63,7 @@ pub fn record_parquet(
 
 /// The record as a table for CSV (PHM 2009 style, with a time column). The values are
 /// rounded to float32, as in the Parquet file, so both files hold the same numbers.
-pub fn record_table(record: &Record, unit: ChannelUnit) -> Table {
+pub(crate) fn record_table(record: &Record, unit: ChannelUnit) -> Table {
     let f32s = |v: &[f64]| v.iter().map(|x| *x as f32 as f64).collect();
     let mut t = Table::new().col(
         "time_s",

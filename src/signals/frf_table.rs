@@ -25,7 +25,9 @@ use realfft::num_complex::Complex64;
 /// One FRF: frequencies (ascending) and complex accelerances.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Frf {
+    /// Frequency of each point, Hz (ascending).
     pub frequency_hz: Vec<f64>,
+    /// Complex accelerance at each frequency, m/s^2 per N.
     pub value: Vec<Complex64>,
 }
 
@@ -55,18 +57,20 @@ impl Frf {
 /// A table of FRFs per sensor and input.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrfTable {
+    /// Sensor names, in channel order.
     pub sensors: Vec<String>,
-    /// `frf[s][j]`: sensor s, input j ([`INPUTS`] order).
+    /// `frf[s][j]`: sensor s, input j (`INPUTS` order).
     pub frf: Vec<[Frf; 4]>,
 }
 
 impl FrfTable {
+    /// Accelerance from input `j` (`INPUTS` order) to sensor `s` at `f_hz` (Hz), m/s^2 per N.
     pub fn at(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         self.frf[s][j].at(f_hz)
     }
 
     /// Highest frequency any FRF of the table covers, Hz.
-    pub fn max_frequency_hz(&self) -> f64 {
+    pub(crate) fn max_frequency_hz(&self) -> f64 {
         self.frf
             .iter()
             .flat_map(|row| row.iter())
@@ -85,7 +89,7 @@ const HEADER: [&str; 5] = [
 
 /// Parse an FRF table; `source` names the file in messages. Every problem is returned,
 /// each with its line.
-pub fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
+pub(crate) fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .comment(Some(b'#'))

@@ -2,13 +2,13 @@
 //! Kaiser-windowed sinc (Smith, "Digital Audio Resampling", CCRMA; Oppenheim & Schafer,
 //! Sect. 4.6 and 7.5.3).
 //!
-//! x(t) = sum_n x[n] sinc(f_s t - n) w(f_s t - n), w the Kaiser window of half-width
-//! [`HALF_WIDTH`] samples with beta for 100 dB. The kernel passes content up to 0.4 f_s
+//! `x(t) = sum_n x[n] sinc(f_s t - n) w(f_s t - n)`, w the Kaiser window of half-width
+//! `HALF_WIDTH` samples with beta for 100 dB. The kernel passes content up to 0.4 f_s
 //! with an error below ~1e-5 of its amplitude: the recorded channels are band-limited to
 //! f_s / 2.56 by the anti-alias filter (`super::antialias`), so this resamples them to
 //! any angle grid without the error of a polynomial interpolation, which at 0.4 f_s would
 //! be tens of percent. Samples beyond the ends of the signal count as zero, so within
-//! [`HALF_WIDTH`] samples of either end the interpolation is not band-limited; callers keep
+//! `HALF_WIDTH` samples of either end the interpolation is not band-limited; callers keep
 //! away from the ends.
 
 use super::antialias::{bessel_i0, kaiser_beta};
@@ -16,7 +16,12 @@ use std::f64::consts::PI;
 use std::sync::OnceLock;
 
 /// Half-width of the kernel, samples.
-pub const HALF_WIDTH: usize = 16;
+pub(crate) const HALF_WIDTH: usize = 16;
+/// Edge of the kernel's passband over the sampling rate: flat within ~1e-5 up to it (the
+/// Kaiser window's transition, (100 - 8) / (2.285 x 2 pi x 32) = 0.2 f_s wide, centred on
+/// f_s / 2). Above it the kernel rolls off (0.4 % low at 0.423 f_s, 37 % at 0.49 f_s), so
+/// what a TSA holds above it is left out of its indicators.
+pub(crate) const PASSBAND_OVER_FS: f64 = 0.4;
 /// Kernel table points per sample (linear interpolation between them: error ~1e-6).
 const TABLE_PER_SAMPLE: usize = 1024;
 

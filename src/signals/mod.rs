@@ -4,16 +4,16 @@
 //! The chain: bearing forces ([`bearing`]) -> transfer path ([`transfer`], [`frf_table`])
 //! -> anti-alias filter and sampling ([`antialias`], [`periodic`], [`record`]) with
 //! measurement noise ([`noise`]) and a tachometer ([`tachometer`]); then the
-//! time-synchronous average ([`tsa`], [`interp`]), its derived signals ([`components`])
+//! time-synchronous average (`tsa`, [`interp`]), its derived signals ([`components`])
 //! and the condition indicators ([`indicators`]).
 
 pub mod analysis;
 pub mod antialias;
-pub mod area;
+pub(crate) mod area;
 pub mod bearing;
 pub mod chain;
 pub mod components;
-pub mod files;
+pub(crate) mod files;
 pub mod frf_table;
 pub mod indicators;
 pub mod interp;
@@ -27,7 +27,7 @@ pub mod setup;
 pub mod tachometer;
 pub mod transfer;
 pub mod transient_record;
-pub mod tsa;
+pub(crate) mod tsa;
 
 #[cfg(test)]
 mod tests_acquisition;

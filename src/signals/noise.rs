@@ -18,13 +18,13 @@ use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
 /// `n` independent standard normal draws of stream `index` under `seed`.
-pub fn standard_normal(seed: u64, index: u64, n: usize) -> Vec<f64> {
+pub(crate) fn standard_normal(seed: u64, index: u64, n: usize) -> Vec<f64> {
     let mut r = stream(seed, index);
     (0..n).map(|_| StandardNormal.sample(&mut r)).collect()
 }
 
 /// Noise standard deviation for a signal-to-noise ratio `snr_db` on `x`.
-pub fn sigma_for_snr(x: &[f64], snr_db: f64) -> f64 {
+pub(crate) fn sigma_for_snr(x: &[f64], snr_db: f64) -> f64 {
     let m = x.iter().sum::<f64>() / x.len().max(1) as f64;
     let p = x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / x.len().max(1) as f64;
     p.sqrt() / 10f64.powf(snr_db / 20.0)
@@ -32,13 +32,13 @@ pub fn sigma_for_snr(x: &[f64], snr_db: f64) -> f64 {
 
 /// Noise standard deviation for a one-sided amplitude density `d` (unit/sqrt(Hz)) over
 /// the band 0..f_s/2.
-pub fn sigma_for_density(density: f64, fs_hz: f64) -> f64 {
+pub(crate) fn sigma_for_density(density: f64, fs_hz: f64) -> f64 {
     density * (0.5 * fs_hz).sqrt()
 }
 
 /// Band-limited Gaussian noise: `n` samples at `fs_hz`, flat from 0 to `bandwidth_hz`
 /// (the mean removed), with RMS exactly `rms` (module docs).
-pub fn band_limited(
+pub(crate) fn band_limited(
     seed: u64,
     index: u64,
     n: usize,

@@ -25,7 +25,7 @@ pub struct OrderMap {
     pub orders: Vec<f64>,
     /// Mean shaft speed of each block, Hz.
     pub speed_hz: Vec<f64>,
-    /// amplitude[block][bin].
+    /// `amplitude[block][bin]`.
     pub amplitude: Vec<Vec<f64>>,
 }
 
@@ -94,17 +94,17 @@ pub fn order_map(
 
 /// A time-frequency map for a Campbell diagram.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct CampbellMap {
+pub(crate) struct CampbellMap {
     pub frequency_hz: Vec<f64>,
     /// Tracked shaft's mean speed over each block, Hz.
     pub speed_hz: Vec<f64>,
-    /// amplitude[block][bin].
+    /// `amplitude[block][bin]`.
     pub amplitude: Vec<Vec<f64>>,
 }
 
 /// Short-time spectra of `x` in blocks of `block` samples (half overlap), each labelled
 /// with the speed of the shaft turning `ratio` times per tachometer revolution.
-pub fn campbell_map(
+pub(crate) fn campbell_map(
     x: &[f64],
     fs_hz: f64,
     edges: &[f64],

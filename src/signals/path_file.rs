@@ -33,9 +33,13 @@ struct ModeEntry {
 
 /// Parse a transfer path from the text of `name` (`.csv`: FRF table, otherwise modal
 /// TOML). Every problem names the file and the entry.
-pub fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<String>> {
+pub(crate) fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<String>> {
     if name.to_ascii_lowercase().ends_with(".csv") {
         let t = parse_frf_table(text, name)?;
+        let p = sensor_name_problems(&t.sensors, name);
+        if !p.is_empty() {
+            return Err(p);
+        }
         return Ok(TransferPath {
             sensors: t.sensors.clone(),
             model: PathModel::Table(t),
@@ -50,6 +54,7 @@ pub fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<S
             "{name}: `sensors` is empty: name at least one sensor"
         ));
     }
+    problems.extend(sensor_name_problems(&f.sensors, name));
     if f.modes.is_empty() {
         problems.push(format!("{name}: no [[mode]]: give at least one mode"));
     }
@@ -104,6 +109,25 @@ pub fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath, Vec<S
     })
 }
 
+/// Problems of a path's sensor names: each names a column of every record, so each must
+/// be non-empty (not blank) and unique.
+pub fn sensor_name_problems(sensors: &[String], name: &str) -> Vec<String> {
+    let mut p = Vec::new();
+    for (i, s) in sensors.iter().enumerate() {
+        if s.trim().is_empty() {
+            p.push(format!(
+                "{name}: sensor {} has an empty name: name every sensor (its column's name)",
+                i + 1
+            ));
+        } else if sensors[..i].contains(s) {
+            p.push(format!(
+                "{name}: sensor {s:?} is named twice: sensor names must be unique (each names a column)"
+            ));
+        }
+    }
+    p
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -117,5 +141,33 @@ mod tests {
         let e = parse_transfer_path(bad, "path.toml").unwrap_err();
         assert_eq!(e.len(), 3, "{e:?}");
         assert!(e[0].contains("mode 1") && e[0].contains("`frequency_hz` = -3"));
+    }
+
+    #[test]
+    fn sensor_names_must_be_unique_and_non_empty() {
+        // Issue 33: sensors ["a", "a"] gave duplicated columns; [""] was accepted.
+        let modal = |sensors: &str, rows: usize| {
+            format!(
+                "sensors = {sensors}\n[[mode]]\nfrequency_hz = 3000\ndamping_ratio = 0.03\ngains_per_kg = [{}]\n",
+                vec!["[0, 0.1, 0, 0.05]"; rows].join(", ")
+            )
+        };
+        let e = parse_transfer_path(&modal("[\"a\", \"a\"]", 2), "p.toml").unwrap_err();
+        assert!(
+            e.iter()
+                .any(|m| m.contains("p.toml") && m.contains("\"a\" is named twice")),
+            "{e:?}"
+        );
+        let e = parse_transfer_path(&modal("[\"\"]", 1), "p.toml").unwrap_err();
+        assert!(
+            e.iter().any(|m| m.contains("sensor 1 has an empty name")),
+            "{e:?}"
+        );
+        let csv = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n0,,pinion_x,1,0\n5000,,pinion_x,1,0\n";
+        if let Err(e) = parse_transfer_path(csv, "f.csv") {
+            assert!(e.iter().any(|m| m.contains("f.csv")), "{e:?}");
+        } else {
+            panic!("an FRF table with an empty sensor name was accepted");
+        }
     }
 }

@@ -8,20 +8,23 @@
 //! `dynamics::spectrum`). A linear filter multiplies each c_k by its response at k / T:
 //! for a periodic input this is the filter's steady-state output, exactly. To be sampled
 //! at arbitrary instants, the series is transformed back onto a fine uniform grid of at
-//! least [`GRID_PER_SAMPLE`] points per sampling interval and interpolated there with a
+//! least `GRID_PER_SAMPLE` points per sampling interval and interpolated there with a
 //! four-point Lagrange cubic: for content below f_s / 2 the grid holds >= 32 points per
 //! cycle, where the cubic's amplitude error is below 3e-6.
 
+#[cfg(test)]
 use super::area::{box_response, cell_means};
+use crate::dynamics::fourier::HermitePeriod;
 use realfft::num_complex::Complex64;
 use realfft::RealFftPlanner;
 
 /// Fine-grid points per sampling interval when a series is sampled.
-pub const GRID_PER_SAMPLE: f64 = 16.0;
+pub(crate) const GRID_PER_SAMPLE: f64 = 16.0;
 
 /// A periodic signal as its one-sided complex Fourier amplitudes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeriodicSignal {
+    /// Period T, s.
     pub period_s: f64,
     /// c_0 (the mean), c_1, c_2, ...: x(t) = Re sum c_k e^(i 2 pi k t / T).
     pub coefficients: Vec<Complex64>,
@@ -33,7 +36,8 @@ impl PeriodicSignal {
     /// its means over a uniform grid of at least 4 cells per sample (`super::area`: the
     /// area of every short-lived layer kept) with the cells' box filter divided out.
     /// Harmonics up to half the grid are kept.
-    pub fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
+    #[cfg(test)]
+    pub(crate) fn from_samples(t: &[f64], x: &[f64], period_s: f64) -> Self {
         let n = (4 * t.len()).next_power_of_two().max(16);
         let w = period_s / n as f64;
         let t0 = t.first().copied().unwrap_or(0.0);
@@ -60,6 +64,17 @@ impl PeriodicSignal {
         Self {
             period_s,
             coefficients,
+        }
+    }
+
+    /// The Fourier series of a solver's solution over one period, harmonics 0..=`harmonics`
+    /// with phases at time 0: the exact coefficients of its cubic Hermite interpolant
+    /// (`dynamics::fourier`; no resampling, so nothing the solver resolved between two
+    /// samples is lost).
+    pub fn from_hermite(signal: &HermitePeriod, harmonics: usize) -> Self {
+        Self {
+            period_s: signal.period_s,
+            coefficients: signal.coefficients(0.0, harmonics),
         }
     }
 
@@ -114,7 +129,7 @@ impl PeriodicSignal {
 
     /// The signal on `m` uniform points over one period from time 0 (m a power of two,
     /// at least twice the harmonics).
-    pub fn on_grid(&self, m: usize) -> Vec<f64> {
+    pub(crate) fn on_grid(&self, m: usize) -> Vec<f64> {
         let mut planner = RealFftPlanner::<f64>::new();
         let ifft = planner.plan_fft_inverse(m);
         let mut spec = ifft.make_input_vec();

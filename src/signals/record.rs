@@ -24,13 +24,18 @@ use realfft::num_complex::Complex64;
 /// Shaft speeds and teeth of the pair a record comes from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Kinematics {
+    /// Pinion shaft speed, Hz.
     pub pinion_hz: f64,
+    /// Gear shaft speed, Hz.
     pub gear_hz: f64,
+    /// Teeth of the pinion z_1.
     pub teeth_pinion: usize,
+    /// Teeth of the gear z_2.
     pub teeth_gear: usize,
 }
 
 impl Kinematics {
+    /// Speed of shaft `shaft`, Hz.
     pub fn shaft_hz(&self, shaft: Shaft) -> f64 {
         match shaft {
             Shaft::Pinion => self.pinion_hz,
@@ -38,6 +43,7 @@ impl Kinematics {
         }
     }
 
+    /// Mesh frequency f_1 z_1, Hz.
     pub fn mesh_hz(&self) -> f64 {
         self.pinion_hz * self.teeth_pinion as f64
     }
@@ -51,17 +57,21 @@ impl Kinematics {
 /// A record: channels in the chain's unit and the tachometer in volts.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Record {
+    /// Sampling rate f_s, Hz.
     pub sampling_rate_hz: f64,
     /// (sensor name, samples) per accelerometer channel.
     pub channels: Vec<(String, Vec<f64>)>,
+    /// Tachometer signal at each sample, V.
     pub tachometer_v: Vec<f64>,
 }
 
 impl Record {
+    /// Number of samples per channel.
     pub fn len(&self) -> usize {
         self.tachometer_v.len()
     }
 
+    /// Whether the record has no samples.
     pub fn is_empty(&self) -> bool {
         self.tachometer_v.is_empty()
     }
@@ -75,6 +85,9 @@ impl Record {
 /// The noise-free, filtered periodic signals of a steady state (steps 1-3).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeriodicRecord {
+    /// The bearing forces as Fourier series (N), in [`INPUTS`](super::bearing::INPUTS) order: the
+    /// chain's inputs (step 1).
+    pub inputs: Vec<PeriodicSignal>,
     /// Acceleration at each sensor, m/s^2, after the anti-alias filter.
     pub sensors: Vec<(String, PeriodicSignal)>,
     /// Tachometer voltage after the anti-alias filter.
@@ -87,10 +100,11 @@ impl PeriodicRecord {
         let acq = &chain.acquisition;
         let aa = AntiAliasFilter::design(acq.sampling_rate_hz, acq.anti_alias_attenuation_db);
         let top = 0.5 * aa.internal_rate_hz;
-        let inputs: Vec<PeriodicSignal> = forces
-            .force_n
-            .iter()
-            .map(|f| PeriodicSignal::from_samples(&forces.time_s, f, forces.period_s))
+        // Every harmonic below the internal Nyquist frequency (the filter leaves nothing
+        // above it: 100 dB down from f_s / 2).
+        let harmonics = (top * forces.period_s).floor() as usize;
+        let inputs: Vec<PeriodicSignal> = (0..4)
+            .map(|j| PeriodicSignal::from_hermite(&forces.signal(j), harmonics))
             .collect();
         let sensors = chain
             .path
@@ -116,6 +130,7 @@ impl PeriodicRecord {
         let pulses = pulse_series(rev, chain.tachometer.pulses_per_revolution, top);
         let tachometer = pulses.map(|k, f| pulses.coefficients[k] * aa.response(f));
         Self {
+            inputs,
             sensors,
             tachometer,
         }
@@ -193,9 +208,18 @@ mod tests {
             .iter()
             .map(|t| amp * (2.0 * PI * f_hz * t).cos())
             .collect();
+        let w = 2.0 * PI * f_hz;
+        let rate = |end: usize| -> Vec<f64> {
+            (0..n)
+                .map(|i| -amp * w * (w * period * (i + end) as f64 / n as f64).sin())
+                .collect()
+        };
         BearingForces {
             time_s: t,
             force_n: [vec![0.0; n], fy, vec![0.0; n], vec![0.0; n]],
+            // The exact rate at each step's ends (the solver's slope data).
+            rate_start_n_per_s: [vec![0.0; n], rate(0), vec![0.0; n], vec![0.0; n]],
+            rate_end_n_per_s: [vec![0.0; n], rate(1), vec![0.0; n], vec![0.0; n]],
             period_s: period,
         }
     }

@@ -4,7 +4,6 @@
 use super::antialias::SAMPLING_OVER_PASSBAND;
 use super::chain::{Acquisition, NoiseSpec, RecordLength, SignalChain, TachometerSpec};
 use super::components::ComponentSettings;
-use super::record::Kinematics;
 use super::transfer::{PathModel, TransferPath};
 use crate::config::signals::LengthUnit;
 use crate::config::Case;
@@ -12,21 +11,12 @@ use crate::config::Case;
 /// A chain that can be recorded, and what the user should know about it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChainSetup {
+    /// The chain to record with.
     pub chain: SignalChain,
+    /// Which orders count as the regular meshing components.
     pub components: ComponentSettings,
+    /// What the user should know about the chain (one line each).
     pub warnings: Vec<String>,
-}
-
-/// Shaft speeds and teeth of a case at its operating point.
-pub fn kinematics_of(case: &Case) -> Kinematics {
-    let (z1, z2) = (case.gear.teeth_pinion.max(1), case.gear.teeth_gear.max(1));
-    let f = case.operating.input_speed_hz;
-    Kinematics {
-        pinion_hz: f,
-        gear_hz: f * z1 as f64 / z2 as f64,
-        teeth_pinion: z1 as usize,
-        teeth_gear: z2 as usize,
-    }
 }
 
 /// The chain of `case` with `path` (the generic housing when `None`), checked against
@@ -57,8 +47,8 @@ pub fn chain_of(
         if t.max_frequency_hz() < 0.5 * fs {
             warnings.push(format!(
                 "the FRF table ends at {} Hz, below the Nyquist frequency {} Hz: above it the path transmits nothing",
-                t.max_frequency_hz(),
-                0.5 * fs
+                crate::format::shown(t.max_frequency_hz()),
+                crate::format::shown(0.5 * fs)
             ));
         }
     }
@@ -91,7 +81,10 @@ pub fn chain_of(
     };
     Ok(ChainSetup {
         chain,
-        components: ComponentSettings::default(),
+        components: ComponentSettings {
+            mesh_harmonics: s.mesh_harmonics.max(1) as usize,
+            ..ComponentSettings::default()
+        },
         warnings,
     })
 }

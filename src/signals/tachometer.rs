@@ -4,7 +4,7 @@
 //! read back from the record.
 //!
 //! Pulse k (k = 0, 1, ...) rises when the shaft's angle reaches 2 pi k / N (angle 0 at
-//! time 0, where the mesh phase is 0 too) and stays at [`HIGH_V`] for half the pulse
+//! time 0, where the mesh phase is 0 too) and stays at `HIGH_V` for half the pulse
 //! interval (TTL level, 50 % duty), 0 V otherwise. The shaft angle is its nominal
 //! rotation, the angle the model's mesh phase follows (`dynamics::model`: the vibratory
 //! twist, ~1e-5 rad, is neglected there and here).
@@ -21,9 +21,9 @@ use realfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
 /// Level of a pulse, V.
-pub const HIGH_V: f64 = 5.0;
+pub(crate) const HIGH_V: f64 = 5.0;
 /// Fraction of the pulse interval the signal is high.
-pub const DUTY: f64 = 0.5;
+pub(crate) const DUTY: f64 = 0.5;
 
 /// The pulse train of a shaft turning at constant speed with period `revolution_s`, `n`
 /// pulses per revolution, as a Fourier series up to `max_hz` (period = one pulse

@@ -39,9 +39,18 @@ fn tone(f_hz: f64) -> BearingForces {
     let n = 256;
     let t: Vec<f64> = (0..n).map(|i| period * i as f64 / n as f64).collect();
     let fy = t.iter().map(|t| (2.0 * PI * f_hz * t).cos()).collect();
+    let w = 2.0 * PI * f_hz;
+    let rate = |end: usize| -> Vec<f64> {
+        (0..n)
+            .map(|i| -w * (w * period * (i + end) as f64 / n as f64).sin())
+            .collect()
+    };
     BearingForces {
         time_s: t,
         force_n: [vec![0.0; n], fy, vec![0.0; n], vec![0.0; n]],
+        // The exact rate at each step's ends (the solver's slope data).
+        rate_start_n_per_s: [vec![0.0; n], rate(0), vec![0.0; n], vec![0.0; n]],
+        rate_end_n_per_s: [vec![0.0; n], rate(1), vec![0.0; n], vec![0.0; n]],
         period_s: period,
     }
 }

@@ -22,18 +22,21 @@ use std::f64::consts::PI;
 /// One structural mode of the housing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StructuralMode {
+    /// Natural frequency f_r, Hz.
     pub frequency_hz: f64,
     /// Viscous modal damping ratio zeta_r.
     pub damping_ratio: f64,
     /// Modal constant G_rsj per sensor s (outer) and input j (inner,
-    /// [`INPUTS`](super::bearing::INPUTS) order), 1/kg (m/s^2 per N far above the mode).
+    /// `INPUTS` order), 1/kg (m/s^2 per N far above the mode).
     pub gains_per_kg: Vec<[f64; 4]>,
 }
 
 /// How the path is described.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PathModel {
+    /// A sum of structural modes (modal accelerance).
     Modal(Vec<StructuralMode>),
+    /// A table of measured FRFs.
     Table(FrfTable),
 }
 
@@ -42,13 +45,14 @@ pub enum PathModel {
 pub struct TransferPath {
     /// Sensor names, in channel order.
     pub sensors: Vec<String>,
+    /// How the path is described.
     pub model: PathModel,
     /// What the path is (for metadata): "generic housing (...)", a file name, ...
     pub description: String,
 }
 
 /// Modal accelerance of one mode at frequency f (see the module docs), m/s^2 per N.
-pub fn modal_accelerance(
+pub(crate) fn modal_accelerance(
     gain_per_kg: f64,
     frequency_hz: f64,
     damping: f64,
@@ -120,7 +124,7 @@ impl TransferPath {
     /// Problems of the path at sampling rate `fs_hz` (`rate_key` names the setting in
     /// messages): a mode at or above the Nyquist frequency is not recorded faithfully
     /// and is refused.
-    pub fn problems_at(&self, fs_hz: f64, rate_key: &str) -> Vec<String> {
+    pub(crate) fn problems_at(&self, fs_hz: f64, rate_key: &str) -> Vec<String> {
         let nyquist = 0.5 * fs_hz;
         let mut out = Vec::new();
         if let PathModel::Modal(modes) = &self.model {

@@ -4,11 +4,11 @@
 //! drive's angle.
 //!
 //! 1. The integrator's steps, linear between their ends, are averaged over the cells of
-//!    the internal grid (rate D f_s, `super::antialias::OVERSAMPLING`; [`ForceSampler`]),
+//!    the internal grid (rate D f_s, `super::antialias::OVERSAMPLING`; `ForceSampler`),
 //!    and the cells' box filter is divided out in step 3.
 //! 2. Before t = 0 the periodic steady state at the starting speed is prepended (a lead-in
-//!    of [`LEAD_S`]), so the housing is in its steady vibration when the record starts;
-//!    the integration runs [`TAIL_S`] past the record's end.
+//!    of `LEAD_S`), so the housing is in its steady vibration when the record starts;
+//!    the integration runs `TAIL_S` past the record's end.
 //! 3. Sensor s = IFFT[H_aa(f) sum_j A_sj(f) F_j(f)] over the zero-padded grid: the linear
 //!    path and the zero-phase anti-alias filter as one product (the same response the
 //!    periodic records use), then every D-th sample from t = 0.
@@ -32,13 +32,13 @@ use std::f64::consts::PI;
 
 /// Lead-in of the periodic steady state before t = 0, s: longer than the decay of the
 /// housing modes (10 time constants of a 2 % mode at 2 kHz: 40 ms) and the filter.
-pub const LEAD_S: f64 = 0.1;
+pub(crate) const LEAD_S: f64 = 0.1;
 /// Integration past the record's end, s: more than the anti-alias filter's half-length.
-pub const TAIL_S: f64 = 0.01;
+pub(crate) const TAIL_S: f64 = 0.01;
 
 /// Bearing forces of an integration as means over the cells [i w, (i + 1) w) of the
 /// internal grid from t = 0 (step 1; `super::area` for why means, not point values).
-pub struct ForceSampler {
+pub(crate) struct ForceSampler {
     pub cell_s: f64,
     /// Integrals of each force over each cell so far, N s.
     integrals: [Vec<f64>; 4],
@@ -120,7 +120,7 @@ impl PeriodObserver for ForceSampler {
 }
 
 /// Smallest n' >= n of the form 2^a 3^b 5^c (fast FFT lengths).
-pub fn fast_len(n: usize) -> usize {
+pub(crate) fn fast_len(n: usize) -> usize {
     let mut best = n.next_power_of_two();
     let mut p5 = 1;
     while p5 < best {
@@ -152,7 +152,7 @@ fn pulse_mean(ua: f64, ub: f64) -> f64 {
 /// internal rate, `lead` the steady state before it (one period of bearing forces),
 /// `tach_angle(t)` the tachometer shaft's angle (rad, valid for t < 0 too), `samples` the
 /// record's length.
-pub fn transient_record(
+pub(crate) fn transient_record(
     sampled: &ForceSampler,
     lead: &BearingForces,
     chain: &SignalChain,
@@ -187,7 +187,10 @@ pub fn transient_record(
         .collect();
     let inputs: Vec<Vec<Complex64>> = (0..4)
         .map(|j| {
-            let p = PeriodicSignal::from_samples(&lead.time_s, &lead.force_n[j], lead.period_s);
+            // The steady state's exact series (as a steady record takes it in), every
+            // harmonic below the internal Nyquist frequency.
+            let harmonics = (0.5 * rate * lead.period_s).floor() as usize;
+            let p = PeriodicSignal::from_hermite(&lead.signal(j), harmonics);
             // The lead-in as cell means too: the box-filtered series at the cell centres.
             let boxed = p.map(|k, f| p.coefficients[k] * box_response(f, w));
             let mut x = boxed.sample((0.5 - lead_n as f64) * w, rate, lead_n);

@@ -30,7 +30,7 @@ pub struct Tsa {
 
 /// Time at tachometer-shaft angle `theta` (rad from the first pulse), from the pulse times
 /// `edges` with `n` pulses per revolution (module docs, step 2).
-pub fn time_at_angle(edges: &[f64], n: usize, theta: f64) -> f64 {
+pub(crate) fn time_at_angle(edges: &[f64], n: usize, theta: f64) -> f64 {
     let step = 2.0 * std::f64::consts::PI / n as f64;
     let u = theta / step;
     let last = edges.len() - 1;
@@ -133,6 +133,58 @@ mod tests {
         println!(
             "TSA of a per-revolution signal over {} revolutions: largest error {worst:.2e} (amplitudes 0.2-1)",
             tsa.revolutions
+        );
+    }
+
+    #[test]
+    fn mesh_harmonics_in_the_passband_pass_within_1e_4_and_the_rest_is_left_out() {
+        // The default record's pinion: 30 Hz, 19 teeth, f_s = 25.6 kHz; mesh harmonics
+        // h = 1..22 (570 Hz to 12.54 kHz) of amplitude 1 / h. The TSA's passband ends at
+        // 0.4 f_s (10.24 kHz, order 341): harmonics 1-17 lie in it and must come out within
+        // 1e-4 (the interpolation's 1e-5 ripple, with the averaging's round-off); 18-22
+        // lie above it, where the resampling rolls off (harmonic 22 at 0.49 f_s ~37 % low),
+        // and the components leave them out of every derived signal and indicator.
+        use crate::signals::components::{components, ComponentSettings};
+        let (fs, f, z) = (25_600.0, 30.0, 19usize);
+        let x: Vec<f64> = (0..25_600)
+            .map(|i| {
+                let t = i as f64 / fs;
+                (1..=22)
+                    .map(|h| (2.0 * PI * (h * z) as f64 * f * t + 0.1 * h as f64).cos() / h as f64)
+                    .sum()
+            })
+            .collect();
+        let edges: Vec<f64> = (0..30).map(|k| k as f64 / f).collect();
+        let tsa = synchronous_average(&x, fs, &edges, 1, 1.0).unwrap();
+        let top =
+            (crate::signals::interp::PASSBAND_OVER_FS * fs * tsa.revolution_s).floor() as usize;
+        assert_eq!(top, 341);
+        let settings = ComponentSettings {
+            top_order: Some(top),
+            ..ComponentSettings::default()
+        };
+        let c = components(&tsa.values, z, settings);
+        let whole = components(&tsa.values, z, ComponentSettings::default());
+        for h in 1..=22 {
+            let k = h * z;
+            let want = 1.0 / h as f64;
+            if k <= top {
+                let got = c.order_amplitude(k);
+                assert!((got / want - 1.0).abs() < 1e-4, "h = {h}: {got} vs {want}");
+            } else {
+                assert_eq!(c.order_amplitude(k), 0.0, "h = {h} above the passband");
+            }
+        }
+        // Without the passband the top harmonic is what the resampling makes of it.
+        let h22 = whole.order_amplitude(22 * z) * 22.0;
+        println!("harmonic 22 (0.49 f_s) through the resampling: {h22:.3} of its amplitude; harmonic 17 in band: {:.6}", c.order_amplitude(17 * z) * 17.0);
+        assert!(h22 < 0.9, "{h22}");
+        // The in-band TSA holds nothing above the passband.
+        let rms_in = (c.in_band.iter().map(|v| v * v).sum::<f64>() / c.in_band.len() as f64).sqrt();
+        let want_rms = ((1..=17).map(|h| 0.5 / (h * h) as f64).sum::<f64>()).sqrt();
+        assert!(
+            (rms_in / want_rms - 1.0).abs() < 1e-4,
+            "{rms_in} vs {want_rms}"
         );
     }
 

@@ -15,7 +15,7 @@
 //! or the flank's extension) is the caller's choice ([`FilletSettings`],
 //! docs/MODEL.md section 2). The fit holds for 1.4 <= h_f <= 7 and
 //! 0.01 <= theta_f <= 0.12 rad; outside it the polynomial is extrapolated, which the
-//! caller may refuse ([`FilletFoundation::outside_fit`]).
+//! caller may refuse (`FilletFoundation::outside_fit`).
 
 use super::potential_energy::ToothBeam;
 use crate::config::case::{FilletRootAngle, GearSection, StiffnessSection};
@@ -62,6 +62,7 @@ pub fn sainsot_coefficients(h_f: f64, theta_f_rad: f64) -> [f64; 4] {
 pub struct FilletFoundation {
     /// [L*, M*, P*, Q*].
     pub coefficients: [f64; 4],
+    /// Root circle radius r_f, m.
     pub root_radius_m: f64,
     /// theta_f used in the fit, rad.
     pub root_half_angle_rad: f64,
@@ -75,6 +76,7 @@ pub struct FilletFoundation {
     pub warning: Option<String>,
     /// Which of h_f and theta_f lie outside the fit's range (then extrapolated).
     pub h_f_outside_fit: bool,
+    /// Whether theta_f lies outside the fit's range (then extrapolated).
     pub theta_f_outside_fit: bool,
 }
 
@@ -154,7 +156,7 @@ impl FilletFoundation {
     }
 
     /// Whether the fit is extrapolated here (h_f or theta_f outside its range).
-    pub fn outside_fit(&self) -> bool {
+    pub(crate) fn outside_fit(&self) -> bool {
         self.h_f_outside_fit || self.theta_f_outside_fit
     }
 
@@ -205,7 +207,7 @@ impl FilletSettings {
     }
 
     /// The default convention, extrapolating with a warning ([`MeshStiffness::new`]).
-    pub fn lenient() -> Self {
+    pub(crate) fn lenient() -> Self {
         Self {
             root_angle: StiffnessSection::default().fillet_root_angle,
             allow_extrapolation: true,

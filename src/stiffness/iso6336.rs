@@ -30,9 +30,13 @@ pub const LOW_LOAD_LIMIT_N_PER_MM: f64 = 100.0;
 /// Inputs of Method B. Angles in rad; stiffness-related inputs dimensionless.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Iso6336Input {
+    /// Number of teeth of the pinion z_1.
     pub teeth_pinion: f64,
+    /// Number of teeth of the gear z_2.
     pub teeth_gear: f64,
+    /// Profile shift coefficient of the pinion x_1.
     pub profile_shift_pinion: f64,
+    /// Profile shift coefficient of the gear x_2.
     pub profile_shift_gear: f64,
     /// Helix angle at the reference cylinder beta, rad (0 for spur gears).
     pub helix_angle_rad: f64,
@@ -83,7 +87,7 @@ impl fmt::Display for Iso6336Error {
 
 impl std::error::Error for Iso6336Error {}
 
-/// Stiffness per unit face width c [N/(mm um)] times face width b [m], in N/m:
+/// Stiffness per unit face width c (N/(mm um)) times face width b (m), in N/m:
 /// c b_mm = N/um, times 1e6 um/m.
 pub fn per_width_to_n_per_m(c_n_per_mm_um: f64, face_width_m: f64) -> f64 {
     c_n_per_mm_um * (face_width_m * 1e3) * 1e6

@@ -30,10 +30,13 @@ pub struct StiffnessError(pub Vec<String>);
 pub struct PairCompliance {
     /// 1/k_h (paper eq. 11).
     pub hertz_m_per_n: f64,
+    /// Bending, shear and axial compliances of the pinion tooth (paper eqs. 8-10).
     pub pinion: ToothCompliance,
+    /// Bending, shear and axial compliances of the gear tooth (paper eqs. 8-10).
     pub gear: ToothCompliance,
     /// 1/k_f of the pinion and of the gear; 0 when the fillet foundation is off.
     pub pinion_fillet_m_per_n: f64,
+    /// 1/k_f of the gear, m/N; 0 when the fillet foundation is off.
     pub gear_fillet_m_per_n: f64,
 }
 
@@ -77,7 +80,7 @@ impl MeshStiffness {
     /// (the path of contact, epsilon_alpha base pitches long; the case's
     /// `stiffness.table_points_per_mesh_period` is the intended value), with the fillet
     /// foundation in the default convention, extrapolated with a warning outside
-    /// Sainsot's range ([`FilletSettings::lenient`]); a case's own settings go through
+    /// Sainsot's range (`FilletSettings::lenient`); a case's own settings go through
     /// [`MeshStiffness::with_fillet`].
     pub fn new(
         pair: &GearPair,

@@ -30,9 +30,13 @@ const SHEAR_FACTOR: f64 = 1.2;
 /// Young's moduli (Pa) and Poisson's ratios of the two gears.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ElasticPair {
+    /// Young's modulus of the pinion E_1, Pa.
     pub e_pinion_pa: f64,
+    /// Poisson's ratio of the pinion nu_1.
     pub nu_pinion: f64,
+    /// Young's modulus of the gear E_2, Pa.
     pub e_gear_pa: f64,
+    /// Poisson's ratio of the gear nu_2.
     pub nu_gear: f64,
 }
 
@@ -85,7 +89,7 @@ pub fn hertz_stiffness_n_per_m(face_width_m: f64, m: &ElasticPair) -> f64 {
 /// Gauss-Legendre rule on [-1, 1]; nodes by Newton iteration on P_n from its three-term
 /// recurrence (as Numerical Recipes' `gauleg`), accurate to ~1e-15.
 #[derive(Debug, Clone)]
-pub struct GaussLegendre {
+pub(crate) struct GaussLegendre {
     nodes: Vec<f64>,
     weights: Vec<f64>,
 }
@@ -127,13 +131,13 @@ impl GaussLegendre {
     }
 
     /// The shared 20-point rule, built once.
-    pub fn default_rule() -> &'static Self {
+    pub(crate) fn default_rule() -> &'static Self {
         static RULE: OnceLock<GaussLegendre> = OnceLock::new();
         RULE.get_or_init(|| GaussLegendre::new(20))
     }
 
     /// Integral of f over [a, b] (several integrands at once, summed component-wise).
-    pub fn integrate3(&self, a: f64, b: f64, f: impl Fn(f64) -> [f64; 3]) -> [f64; 3] {
+    pub(crate) fn integrate3(&self, a: f64, b: f64, f: impl Fn(f64) -> [f64; 3]) -> [f64; 3] {
         let (half, mid) = (0.5 * (b - a), 0.5 * (b + a));
         let mut s = [0.0; 3];
         for (x, w) in self.nodes.iter().zip(&self.weights) {
@@ -158,6 +162,7 @@ pub struct ToothCompliance {
 }
 
 impl ToothCompliance {
+    /// Total tooth compliance 1/k_b + 1/k_s + 1/k_a, m/N.
     pub fn total_m_per_n(&self) -> f64 {
         self.bending_m_per_n + self.shear_m_per_n + self.axial_m_per_n
     }
@@ -166,12 +171,17 @@ impl ToothCompliance {
 /// One tooth as a cantilever of variable section clamped at the root circle.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ToothBeam {
+    /// Base circle radius r_b, m.
     pub base_radius_m: f64,
     /// alpha_2, half the angular tooth thickness at the base circle, rad.
     pub half_base_angle_rad: f64,
+    /// Root circle radius r_f, m (where the beam is clamped).
     pub root_radius_m: f64,
+    /// Face width b, m.
     pub face_width_m: f64,
+    /// Young's modulus E, Pa.
     pub youngs_modulus_pa: f64,
+    /// Shear modulus G = E / (2 (1 + nu)), Pa.
     pub shear_modulus_pa: f64,
     /// Lower limit of the involute part: -alpha_2, or the root circle's alpha if r_f > r_b.
     alpha_start: f64,
@@ -265,7 +275,7 @@ impl ToothBeam {
     /// (Yang & Sun 1985; Tian 2004, eq. 2.19-2.21):
     ///   1/k_b = int M^2/(F^2 E I) dy,  1/k_s = int 1.2 cos^2(a1)/(G A) dy,
     ///   1/k_a = int sin^2(a1)/(E A) dy,   from the root circle to the contact.
-    pub fn compliance_with_rule(&self, rho_m: f64, rule: &GaussLegendre) -> ToothCompliance {
+    pub(crate) fn compliance_with_rule(&self, rho_m: f64, rule: &GaussLegendre) -> ToothCompliance {
         let b = self.face_width_m;
         self.compliance_with_section(rho_m, rule, |h, _| (2.0 * h * b, 2.0 * h * h * h * b / 3.0))
     }
@@ -276,7 +286,7 @@ impl ToothBeam {
     /// (`stiffness::tooth_faults`). The moment arm stays measured from the centreline.
     /// The section must be smooth in the height; see
     /// [`Self::compliance_with_section_split`] for one that jumps.
-    pub fn compliance_with_section(
+    pub(crate) fn compliance_with_section(
         &self,
         rho_m: f64,
         rule: &GaussLegendre,
@@ -292,7 +302,7 @@ impl ToothBeam {
     /// that fall inside it, so each piece is smooth and the Gauss rule keeps its accuracy
     /// (one rule across a jump is only first-order accurate in the node spacing, ~0.5 mm
     /// on the paper's teeth, and a pit of 0.2 mm height may hold no node at all).
-    pub fn compliance_with_section_split(
+    pub(crate) fn compliance_with_section_split(
         &self,
         rho_m: f64,
         rule: &GaussLegendre,

@@ -43,6 +43,7 @@ use std::f64::consts::PI;
 /// A root crack (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Crack {
+    /// Crack length from the root along its path, m.
     pub depth_m: f64,
     /// Angle of the crack path to the tooth centreline, rad.
     pub angle_rad: f64,
@@ -115,8 +116,11 @@ pub fn crack_compliance_m_per_n(
 /// A spall on one flank (SI; positions as the gear's own radius of curvature).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Spall {
+    /// Start of the pit as the gear's own radius of curvature, m.
     pub rho_lo_m: f64,
+    /// End of the pit as the gear's own radius of curvature, m.
     pub rho_hi_m: f64,
+    /// Depth of the pit normal to the flank, m.
     pub depth_m: f64,
     /// Share of the face width it covers.
     pub width_fraction: f64,
@@ -127,6 +131,7 @@ impl Spall {
     /// the section is all but cut through and the beam model has no meaning).
     pub const MAX_THICKNESS_SHARE: f64 = 0.95;
 
+    /// Whether the contact at own radius of curvature `rho_m` (m) lies on the pit.
     pub fn contains(&self, rho_m: f64) -> bool {
         rho_m >= self.rho_lo_m && rho_m <= self.rho_hi_m
     }

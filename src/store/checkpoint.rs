@@ -31,7 +31,7 @@ use std::io::Write;
 
 const FORMAT: &str = "gearwear-wear-checkpoint";
 /// Version of the format; a file of another version is refused with a clear message.
-pub const SCHEMA: u32 = 2;
+pub(crate) const SCHEMA: u32 = 2;
 
 #[derive(Serialize, Deserialize)]
 struct Header {
@@ -42,17 +42,18 @@ struct Header {
 }
 
 /// File name of a mode's published checkpoint, relative to the output folder.
-pub fn checkpoint_name(mode: WearMode) -> String {
+pub(crate) fn checkpoint_name(mode: WearMode) -> String {
     format!("checkpoint_{}.jsonl", mode.name())
 }
 
 /// File name of a mode's checkpoint while its run is in progress.
-pub fn partial_checkpoint_name(mode: WearMode) -> String {
+#[cfg(test)]
+pub(crate) fn partial_checkpoint_name(mode: WearMode) -> String {
     partial_of(&checkpoint_name(mode))
 }
 
 /// The name a checkpoint `NAME.jsonl` has while its run goes on: `NAME.partial.jsonl`.
-pub fn partial_of(name: &str) -> String {
+pub(crate) fn partial_of(name: &str) -> String {
     match name.strip_suffix(".jsonl") {
         Some(stem) => format!("{stem}.partial.jsonl"),
         None => format!("{name}.partial"),
@@ -61,7 +62,7 @@ pub fn partial_of(name: &str) -> String {
 
 /// Whether `bytes` begin like a gearwear checkpoint (its header line), so a file at a
 /// checkpoint's name may be replaced by a new checkpoint.
-pub fn is_checkpoint(bytes: &[u8]) -> bool {
+pub(crate) fn is_checkpoint(bytes: &[u8]) -> bool {
     let line = bytes.split(|b| *b == b'\n').next().unwrap_or(&[]);
     let text = String::from_utf8_lossy(line);
     text.split_once(' ').is_some_and(|(sum, json)| {
@@ -74,7 +75,9 @@ pub fn is_checkpoint(bytes: &[u8]) -> bool {
 #[derive(Debug, thiserror::Error)]
 #[error("{}", self.problem())]
 pub struct CheckpointError {
+    /// The checkpoint file, as the user named it.
     pub path: String,
+    /// Why it cannot be used.
     pub reason: String,
     /// What to do, when more than replacing the file (`crate::remedy`).
     pub remedy: Option<Box<Remedy>>,
@@ -101,7 +104,7 @@ fn short(s: &str) -> String {
 
 /// A checkpoint read back, and where it was read.
 #[derive(Debug)]
-pub struct LoadedCheckpoint {
+pub(crate) struct LoadedCheckpoint {
     pub run: WearRun,
     /// Its path relative to the output folder.
     pub rel: String,
@@ -186,7 +189,7 @@ pub fn parse_checkpoint(
 /// The checkpoint of `mode` to resume from in `out`: the partial one of an interrupted
 /// run if there is one, else the published one; None when there is neither. A file that
 /// is not a regular single-link file, or holds more than `max_bytes`, is refused.
-pub fn load_checkpoint(
+pub(crate) fn load_checkpoint(
     out: &OutputDir,
     mode: WearMode,
     case_sha256: &str,
@@ -196,7 +199,7 @@ pub fn load_checkpoint(
 }
 
 /// As [`load_checkpoint`], for the checkpoint published as `name`.
-pub fn load_checkpoint_named(
+pub(crate) fn load_checkpoint_named(
     out: &OutputDir,
     name: &str,
     mode: WearMode,
@@ -221,7 +224,7 @@ pub fn load_checkpoint_named(
 }
 
 /// An open checkpoint, appended to after every update.
-pub struct CheckpointLog {
+pub(crate) struct CheckpointLog {
     file: File,
     path: std::path::PathBuf,
     /// Records already in the file.
@@ -253,7 +256,7 @@ impl CheckpointLog {
 
     /// As [`CheckpointLog::create`], for the checkpoint published as `name` (written as
     /// its `.partial.jsonl` until the set is published).
-    pub fn create_named(
+    pub(crate) fn create_named(
         out: &mut OutputDir,
         name: &str,
         case_sha256: &str,
@@ -280,7 +283,7 @@ impl CheckpointLog {
     }
 
     /// Append the records of `run` not yet in the file, and sync.
-    pub fn append_new(&mut self, run: &WearRun) -> Result<(), OutputError> {
+    pub(crate) fn append_new(&mut self, run: &WearRun) -> Result<(), OutputError> {
         if run.records.len() <= self.written {
             return Ok(());
         }

@@ -48,7 +48,7 @@ impl CheckpointSet {
 /// is checked before anything runs. A mode without a checkpoint (or with only its header:
 /// killed before its first update) starts afresh, with a note; finding none at all is an
 /// error: the user asked to resume something that is not there.
-pub fn starting_runs(
+pub(crate) fn starting_runs(
     out: &OutputDir,
     modes: &[WearMode],
     resume: bool,

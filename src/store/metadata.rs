@@ -9,13 +9,19 @@ use crate::study::Model;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
+/// What a run records about itself in `metadata.json`: the program, the command, the
+/// resolved case and its checksum.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunMetadata {
+    /// Always `"gearwear"`.
     pub program: &'static str,
+    /// The crate version that wrote the run.
     pub version: &'static str,
+    /// The command that made the run (`run`, `wear`, ...).
     pub command: String,
     /// SHA-256 of the resolved case serialised as canonical TOML.
     pub case_sha256: String,
+    /// The resolved case the run used.
     pub case: Case,
     /// The values the model used where the case leaves them to the geometry (hub bores,
     /// masses, inertias: `"derived"` or given), and the operating point; absent when no
@@ -25,6 +31,7 @@ pub struct RunMetadata {
 }
 
 impl RunMetadata {
+    /// The metadata of a run of `command` on `case`, without the model's resolved values.
     pub fn new(command: &str, case: &Case) -> Self {
         let text = toml::to_string(case).unwrap_or_default();
         let hash = Sha256::digest(text.as_bytes());
@@ -39,7 +46,7 @@ impl RunMetadata {
     }
 
     /// The metadata of a run of `model` (its case, with what it resolved).
-    pub fn of_model(command: &str, model: &Model) -> Self {
+    pub(crate) fn of_model(command: &str, model: &Model) -> Self {
         Self {
             resolved: Some(model.resolved()),
             ..Self::new(command, &model.case)

@@ -8,7 +8,7 @@ pub mod checkpoint;
 pub mod checkpoint_set;
 pub mod metadata;
 pub mod sweep_inputs;
-pub mod transfer_path;
+pub(crate) mod transfer_path;
 pub mod transmission_error;
 
 pub use metadata::RunMetadata;

@@ -11,7 +11,7 @@ use std::path::Path;
 
 /// The table at `csv` and its description (`csv` with the extension `.json`); errors name
 /// the file.
-pub fn merge_input(csv: &Path) -> Result<(SweepTable, serde_json::Value), String> {
+pub(crate) fn merge_input(csv: &Path) -> Result<(SweepTable, serde_json::Value), String> {
     let src = csv.display();
     let text =
         read_input_text(csv, "sweep table", MAX_SWEEP_TABLE_BYTES).map_err(|e| e.to_string())?;

@@ -5,7 +5,7 @@ use crate::signals::transfer::TransferPath;
 use std::path::Path;
 
 /// The transfer path in `path`; every problem names the file.
-pub fn read_transfer_path(path: &Path) -> Result<TransferPath, Vec<String>> {
+pub(crate) fn read_transfer_path(path: &Path) -> Result<TransferPath, Vec<String>> {
     let name = path.display().to_string();
     let text = crate::io::input::read_input_text(
         path,

@@ -9,7 +9,7 @@ use std::path::Path;
 /// Why a transmission-error file or array cannot be used; the message names the file.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{source_name}: {reason}")]
-pub struct TransmissionErrorInput {
+pub(crate) struct TransmissionErrorInput {
     pub source_name: String,
     pub reason: String,
 }
@@ -18,7 +18,7 @@ pub struct TransmissionErrorInput {
 /// finite samples, angles strictly increasing, covering one whole mesh period (the span
 /// plus one mean spacing reaches the period, so both `0..period` with its end repeated and
 /// `0..period - spacing` are whole periods). `source_name` names the input in messages.
-pub fn transmission_error_from_samples(
+pub(crate) fn transmission_error_from_samples(
     samples: &[(f64, f64)],
     mesh_angle_rad: f64,
     source_name: &str,
@@ -71,7 +71,7 @@ pub fn transmission_error_from_samples(
 
 /// As [`transmission_error_from_samples`], from samples in the file's units: (pinion
 /// angle deg, error um).
-pub fn transmission_error_from_deg_um(
+pub(crate) fn transmission_error_from_deg_um(
     samples_deg_um: &[(f64, f64)],
     mesh_angle_rad: f64,
     source_name: &str,
@@ -85,11 +85,11 @@ pub fn transmission_error_from_deg_um(
 
 /// Most samples of a transmission error over one mesh period (a million points resolve
 /// any profile error a gear can have).
-pub const MAX_SAMPLES: usize = 1_000_000;
+pub(crate) const MAX_SAMPLES: usize = 1_000_000;
 
 /// Read a transmission-error CSV file (see the module docs): a regular file of bounded
 /// size (`io::input`).
-pub fn read_transmission_error(
+pub(crate) fn read_transmission_error(
     path: &Path,
     mesh_angle_rad: f64,
 ) -> Result<ExternalError, TransmissionErrorInput> {

@@ -8,10 +8,10 @@ use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
 use crate::signals::analysis::{analyse, ChannelAnalysis};
 use crate::signals::bearing::bearing_forces;
+use crate::signals::periodic::PeriodicSignal;
 use crate::signals::record::{add_noise, Kinematics, PeriodicRecord, Record};
 use crate::signals::setup::ChainSetup;
 use crate::wear::WearState;
-use std::f64::consts::PI;
 
 /// A record and what was computed from it.
 #[derive(Debug, Clone)]
@@ -26,13 +26,19 @@ pub struct SignalRecord {
     pub input_speed_hz: (f64, f64),
     /// Damped frequencies of the model's mesh poles, Hz (`docs/MODEL.md`, Modes).
     pub mesh_poles_hz: Vec<f64>,
+    /// The bearing forces of a steady record as the Fourier series the chain took in
+    /// (`PeriodicRecord::inputs`); None for a transient.
+    pub bearing_forces: Option<Vec<PeriodicSignal>>,
 }
 
-/// Shaft speeds and teeth of the model at its operating point.
+/// Shaft speeds and teeth of the model at its operating point: each shaft's speed is the
+/// mesh frequency over its teeth (so 570 Hz over 19 teeth reads 30 Hz exactly, not back
+/// from rad/s).
 pub fn kinematics(model: &Model) -> Kinematics {
+    let f_m = model.params.operating.mesh_frequency_hz;
     Kinematics {
-        pinion_hz: model.params.operating.pinion_speed_rad_s / (2.0 * PI),
-        gear_hz: model.params.operating.gear_speed_rad_s / (2.0 * PI),
+        pinion_hz: f_m / model.pair.pinion.teeth as f64,
+        gear_hz: f_m / model.pair.gear.teeth as f64,
         teeth_pinion: model.pair.pinion.teeth,
         teeth_gear: model.pair.gear.teeth,
     }
@@ -67,6 +73,7 @@ pub fn record_from(
         analysis,
         response,
         mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+        bearing_forces: Some(p.inputs.clone()),
     }
 }
 
@@ -108,5 +115,6 @@ pub fn record_case(
         analysis,
         response,
         mesh_poles_hz: crate::study::ModalAnalysis::of(model).mesh_pole_frequencies_hz(),
+        bearing_forces: None,
     })
 }

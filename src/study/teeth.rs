@@ -232,9 +232,23 @@ fn flanks_of(
             {
                 apply_fault(&mut f, fault, pair, mesh, s, &own);
             }
-            f
+            without_empty_tables(f)
         })
         .collect()
+}
+
+/// A flank whose fault tables add nothing (a crack of zero depth adds a compliance of
+/// zero everywhere) without them: a tooth is judged by its effect, so such a tooth is
+/// the perfect one and, when every tooth is, the case takes the identical-teeth path.
+fn without_empty_tables(mut f: ToothFlank) -> ToothFlank {
+    let empty = |t: &Option<Vec<f64>>| t.as_ref().is_some_and(|v| v.iter().all(|x| *x == 0.0));
+    if empty(&f.compliance_m_per_n) {
+        f.compliance_m_per_n = None;
+    }
+    if empty(&f.width_loss) {
+        f.width_loss = None;
+    }
+    f
 }
 
 impl ToothFlank {

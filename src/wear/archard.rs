@@ -15,10 +15,13 @@ use crate::geometry::ProfileGrid;
 /// Wear depth added per pinion cycle at each grid point, m.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct WearIncrement {
+    /// Wear depth added to the pinion flank per pinion cycle at each grid point, m.
     pub pinion_m: Vec<f64>,
+    /// Wear depth added to the gear flank per pinion cycle at each grid point, m.
     pub gear_m: Vec<f64>,
     /// Sliding distances per passage, m (for output and tests).
     pub sliding_pinion_m: Vec<f64>,
+    /// Sliding distance of the gear flank per passage, m.
     pub sliding_gear_m: Vec<f64>,
     /// Per-tooth increments of a tooth-resolved mesh (`pinion_m`, `gear_m` then hold
     /// their means over the teeth).

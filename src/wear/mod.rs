@@ -5,7 +5,7 @@ pub mod archard;
 pub mod per_tooth;
 pub mod profile_wear;
 pub mod roughness;
-pub mod tooth_wear;
+pub(crate) mod tooth_wear;
 
 pub use archard::{per_cycle_wear, WearIncrement};
 pub use profile_wear::WearState;

@@ -25,7 +25,7 @@ use crate::geometry::ProfileGrid;
 
 /// The distinct engagements (ascending) of the tooth meeting in cycles n = tooth + j z
 /// over the hunting period `hunting` of an excitation of `periods` mesh periods.
-pub fn engagements_of(tooth: usize, z: usize, hunting: usize, periods: usize) -> Vec<usize> {
+pub(crate) fn engagements_of(tooth: usize, z: usize, hunting: usize, periods: usize) -> Vec<usize> {
     let mut e: Vec<usize> = (tooth..hunting).step_by(z).map(|n| n % periods).collect();
     e.sort_unstable();
     e.dedup();

@@ -16,14 +16,19 @@ use super::tooth_wear::{max_of, mean_profile, ToothWear};
 /// `gear_m` are then the mean over the teeth of each gear.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct WearState {
+    /// Pinion load cycles accumulated so far.
     pub cycles: f64,
+    /// Wear depth of the pinion flank at each grid point, m.
     pub pinion_m: Vec<f64>,
+    /// Wear depth of the gear flank at each grid point, m.
     pub gear_m: Vec<f64>,
+    /// Per-tooth profiles of a tooth-resolved mesh; `None` when all teeth wear alike.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub teeth: Option<ToothWear>,
 }
 
 impl WearState {
+    /// An unworn state (0 cycles, zero depth) on a grid of `points` points.
     pub fn new(points: usize) -> Self {
         Self {
             cycles: 0.0,
@@ -97,7 +102,7 @@ impl WearState {
     }
 
     /// The same wear shape scaled so that the maximum pinion depth is `target_m`.
-    pub fn scaled_to_max_pinion(&self, target_m: f64) -> Self {
+    pub(crate) fn scaled_to_max_pinion(&self, target_m: f64) -> Self {
         let m = self.max_pinion_m();
         let f = if m > 0.0 { target_m / m } else { 0.0 };
         let scale = |v: &[f64]| v.iter().map(|x| x * f).collect::<Vec<_>>();

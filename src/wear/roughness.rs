@@ -4,6 +4,8 @@
 
 use crate::config::case::SurfaceSection;
 
+/// Composite RMS roughness as a piecewise linear function of the maximum wear depth
+/// (paper section 4.1), constant outside its table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RoughnessLaw {
     wear_m: Vec<f64>,
@@ -11,6 +13,7 @@ pub struct RoughnessLaw {
 }
 
 impl RoughnessLaw {
+    /// The law of the case's `[surface]` table (wear in um there, m inside).
     pub fn from_case(s: &SurfaceSection) -> Self {
         Self {
             wear_m: s.roughness_table_wear_um.iter().map(|w| w * 1e-6).collect(),

@@ -6,7 +6,9 @@ use serde::{Deserialize, Serialize};
 /// Wear of every tooth on the shared grid (tooth t's profile at `pinion_m[t]`), m.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct ToothWear {
+    /// Wear depth of each pinion tooth at each grid point, m (tooth, point).
     pub pinion_m: Vec<Vec<f64>>,
+    /// Wear depth of each gear tooth at each grid point, m (tooth, point).
     pub gear_m: Vec<Vec<f64>>,
 }
 
@@ -26,12 +28,12 @@ impl ToothWear {
 }
 
 /// Largest entry of every profile, m (0 for none).
-pub fn max_of(profiles: &[Vec<f64>]) -> f64 {
+pub(crate) fn max_of(profiles: &[Vec<f64>]) -> f64 {
     profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))
 }
 
 /// Mean profile of several teeth.
-pub fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
+pub(crate) fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
     let n = profiles.first().map_or(0, Vec::len);
     let z = profiles.len().max(1) as f64;
     (0..n)

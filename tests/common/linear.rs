@@ -10,19 +10,38 @@ use nalgebra::{DMatrix, DVector, SMatrix};
 /// (exponential midpoint rule, second order), and y(end) = y(0) is solved directly for
 /// the coordinates other than the held one.
 pub fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State> {
+    linear_periodic_with_slopes(sys, grid, held).0
+}
+
+/// [`linear_periodic`] and, per interval, the state's derivative at its start and end
+/// under the interval's frozen matrix and forcing (the slopes of the interval's exact
+/// frozen solution at its ends).
+pub fn linear_periodic_with_slopes(
+    sys: &GearSystem,
+    grid: &[f64],
+    held: usize,
+) -> (Vec<State>, Vec<(State, State)>) {
     let y_touch = sys.static_equilibrium();
-    let steps: Vec<SMatrix<f64, 17, 17>> = grid
+    let frozen: Vec<(DMatrix<f64>, State)> = grid
         .windows(2)
         .map(|w| {
-            let (t, h) = (0.5 * (w[0] + w[1]), w[1] - w[0]);
+            let t = 0.5 * (w[0] + w[1]);
             let a = sys.jacobian(ContactFrame::NATURAL, t, y_touch.as_slice());
             let b = sys
                 .derivative(ContactFrame::NATURAL, t, y_touch.as_slice())
                 .0
                 - &a * &y_touch;
+            (a, b)
+        })
+        .collect();
+    let steps: Vec<SMatrix<f64, 17, 17>> = grid
+        .windows(2)
+        .zip(&frozen)
+        .map(|(w, (a, b))| {
+            let h = w[1] - w[0];
             let mut z = SMatrix::<f64, 17, 17>::zeros();
-            z.fixed_view_mut::<16, 16>(0, 0).copy_from(&a);
-            z.fixed_view_mut::<16, 1>(0, 16).copy_from(&b);
+            z.fixed_view_mut::<16, 16>(0, 0).copy_from(a);
+            z.fixed_view_mut::<16, 1>(0, 16).copy_from(b);
             (z * h).exp()
         })
         .collect();
@@ -54,5 +73,10 @@ pub fn linear_periodic(sys: &GearSystem, grid: &[f64], held: usize) -> Vec<State
             (e * z).fixed_rows::<16>(0).as_slice(),
         ));
     }
-    out
+    let slopes = frozen
+        .iter()
+        .enumerate()
+        .map(|(i, (a, b))| (a * &out[i] + b, a * &out[i + 1] + b))
+        .collect();
+    (out, slopes)
 }

@@ -62,9 +62,30 @@ pub fn trajectory_rel(condition: &str) -> String {
 
 pub const DATASET_REL: &str = "state/dataset.json";
 
-/// Largest file of a dataset folder read back (a record's signal file, its sidecar, a
-/// trajectory, the description): far above a record of the longest valid length.
+/// Largest file of a dataset folder read back (a record's signal file, a trajectory):
+/// far above a record of the longest valid length.
 pub const MAX_DATASET_FILE_BYTES: u64 = 1 << 30;
+
+/// Largest sidecar (`records/<id>.json`) read back: its labels (two lists of per-tooth
+/// wear, 25 bytes a tooth) and each channel's indicators (about 1.5 kB of pretty JSON a
+/// channel): 32 MiB holds 20,000 channels. Parsing a sidecar takes a few times its size
+/// (a 650 MB one took 2.9 GB), so a cap near the signal files' aborted a resume.
+pub const MAX_SIDECAR_BYTES: u64 = 32 << 20;
+
+/// Largest description (`state/dataset.json`) read back: the design (at most 16 MiB, as
+/// read) and each condition's case.
+pub const MAX_DESCRIPTION_BYTES: u64 = 64 << 20;
+
+/// The read cap of the dataset file at `rel` (one of the caps above).
+fn cap_of(rel: &str) -> u64 {
+    if rel.starts_with("records/") {
+        MAX_SIDECAR_BYTES
+    } else if rel == DATASET_REL {
+        MAX_DESCRIPTION_BYTES
+    } else {
+        MAX_DATASET_FILE_BYTES
+    }
+}
 
 /// Whether the first bytes of a file are one of a dataset's own files (a Parquet record,
 /// a record's CSV, a sidecar, trajectory or description), so `put` may replace it: a
@@ -100,16 +121,18 @@ pub fn make_folder(root: &Path, folder: &str) -> Result<(), OutputError> {
 }
 
 /// The bytes of `rel` in `root`, read without following a link or blocking, only from a
-/// regular single-link file of at most [`MAX_DATASET_FILE_BYTES`]; None otherwise (a
-/// missing, foreign or unreadable file counts as absent: the record is recomputed).
+/// regular single-link file of at most its cap ([`cap_of`]: a sidecar, the description,
+/// any other file); None otherwise (a missing, foreign, oversized or unreadable file
+/// counts as absent: the record is recomputed).
 pub fn read_in(root: &Path, rel: &str) -> Option<Vec<u8>> {
+    let cap = cap_of(rel);
     let top = Dir::open_root(root).ok()?;
     let (dir, name) = top.descend(rel, false).ok()?;
     let (f, e) = dir.open_existing(&name, false).ok()??;
-    if e.bytes > MAX_DATASET_FILE_BYTES {
+    if e.bytes > cap {
         return None;
     }
-    read_all(f, MAX_DATASET_FILE_BYTES).ok()
+    read_all(f, cap).ok()
 }
 
 /// Whether `rel` in `root` is a regular single-link file (no link followed).
@@ -181,6 +204,58 @@ fn check_name_only(condition: &str) -> bool {
     !condition.is_empty() && !condition.contains(['/', '\\']) && condition != ".."
 }
 
+/// The dataset key of the dataset already in `root` (its `state/dataset.json`):
+/// `Ok(None)` when the folder holds none, `Err` when the description is there but
+/// unreadable (damaged, foreign, too large): a folder belongs to the design that made it.
+pub fn existing_key(root: &Path) -> Result<Option<String>, String> {
+    let Some(bytes) = read_in(root, DATASET_REL) else {
+        return if is_file_in(root, DATASET_REL) || !absent_in(root, DATASET_REL) {
+            Err(format!(
+                "{}: unreadable (a link, a hard link, too large, or not a file)",
+                root.join(DATASET_REL).display()
+            ))
+        } else {
+            Ok(None)
+        };
+    };
+    let body: Value = serde_json::from_slice(&bytes).map_err(|_| {
+        format!(
+            "{}: not a dataset description",
+            root.join(DATASET_REL).display()
+        )
+    })?;
+    body["dataset_key"]
+        .as_str()
+        .map(|k| Some(k.to_owned()))
+        .ok_or_else(|| format!("{}: no dataset key", root.join(DATASET_REL).display()))
+}
+
+/// Whether nothing (no file, folder or link) is at `rel` in `root` (no link followed).
+fn absent_in(root: &Path, rel: &str) -> bool {
+    match Dir::open_root(root).and_then(|top| top.descend(rel, false)) {
+        Ok((dir, name)) => matches!(dir.entry(&name), Ok(None)),
+        Err(_) => !root.join(rel).exists() && root.join(rel).symlink_metadata().is_err(),
+    }
+}
+
+/// Refuse to put a dataset of key `key` into `root` when `root` already holds another
+/// design's (unless `replace`): the message names the folder and both keys. Checked
+/// before the folder is opened, so nothing in it changes.
+pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), String> {
+    if replace {
+        return Ok(());
+    }
+    match existing_key(root)? {
+        Some(k) if k != key => Err(format!(
+            "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it",
+            root.display(),
+            &k[..k.len().min(12)],
+            &key[..key.len().min(12)]
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Why the index and metadata could not be built.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {
@@ -221,10 +296,14 @@ pub fn stage_index_and_metadata(
         })?;
     let cars = sidecars(root);
     let key = body["dataset_key"].as_str().unwrap_or_default().to_owned();
+    // Only records whose identity the description gives: an id in range, and the
+    // condition, its labels, state, speed, load, realisation and noise seed that id has
+    // in the design (an edited or planted sidecar is counted missing, never indexed).
     let rows: Vec<RecordLabels> = cars
         .into_iter()
-        .filter(|s| s.dataset_key == key)
+        .filter(|s| s.dataset_key == key && s.labels.record_id < total)
         .map(|s| s.labels)
+        .filter(|l| matches_design(l, &body))
         .collect();
     let present: std::collections::BTreeSet<usize> = rows.iter().map(|r| r.record_id).collect();
     // Listed up to MAX_MISSING_LISTED ids (the count is in the headline): the list
@@ -287,6 +366,43 @@ pub fn stage_index_and_metadata(
         count: missing_count,
         listed: missing,
     })
+}
+
+/// Whether record labels `l` are those the design described by `body` (the
+/// description, `state/dataset.json`) gives its id: condition (name, fault, severity),
+/// trajectory state, speed, load, realisation and noise seed, all recomputed from the id.
+pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
+    let a = &body["axes"];
+    let len = |v: &Value| v.as_array().map_or(0, Vec::len);
+    let states = a["states"]["evenly_spaced"]
+        .as_u64()
+        .map(|n| n as usize)
+        .unwrap_or_else(|| len(&a["states"]["cycles"]));
+    let (speeds, loads) = (&a["input_speed_hz"], &a["load_torque_nm"]);
+    let plan = crate::study::dataset::plan::Plan {
+        conditions: len(&a["conditions"]),
+        states,
+        speeds: len(speeds),
+        loads: len(loads),
+        realisations: a["noise_realisations"].as_u64().unwrap_or(0) as usize,
+    };
+    if plan.realisations == 0 || plan.loads == 0 || plan.speeds == 0 || plan.states == 0 {
+        return false;
+    }
+    let p = l.record_id / plan.realisations;
+    let ix = plan.state_index(p);
+    let c = &a["conditions"][ix.condition];
+    let seed = body["seed"].as_u64().unwrap_or(0);
+    ix.condition < plan.conditions
+        && c["name"].as_str() == Some(l.condition.as_str())
+        && c["fault"].as_str() == Some(l.fault.as_str())
+        && c["severity"].as_f64() == Some(l.severity)
+        && l.trajectory_state == ix.state
+        && speeds[ix.speed].as_f64() == Some(l.input_speed_hz)
+        && loads[ix.load].as_f64() == Some(l.load_torque_nm)
+        && l.realisation == l.record_id % plan.realisations
+        && l.noise_seed == crate::study::dataset::plan::record_seed(seed, l.record_id)
+        && l.file == signal_file(l.record_id)
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`

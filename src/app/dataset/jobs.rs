@@ -1,8 +1,9 @@
 //! The two dataset jobs: [`DatasetJob`] (a design to a folder of records) and
 //! [`DatasetMergeJob`] (shards joined), and where a design is read from.
 
+use super::folder::check_owner;
 use super::merge::{merge_datasets, shared_key};
-use super::plan::check_dataset;
+use super::plan::{check_dataset, dataset_key};
 use super::request::{DatasetOutcome, DatasetRequest};
 use super::run::run_dataset;
 use crate::app::observer::Observer;
@@ -145,9 +146,17 @@ impl Job for DatasetJob {
         let checked = check_dataset(&req)?;
         let threads = rayon::current_num_threads();
         budget::check_estimate(
-            &estimate_dataset(&design, self.shard, threads),
+            &estimate_dataset(&design, self.shard, threads, checked.record),
             self.budget.as_ref(),
         )?;
+        // A folder belongs to one design: another design's run, shard or resume into it
+        // is refused before it is opened (issue 33: it left false index rows).
+        check_owner(
+            &self.out,
+            &dataset_key(&design, &req.path_bytes),
+            self.replace,
+        )
+        .map_err(another_design)?;
         let set = (self.shard.count > 1)
             .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
         let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
@@ -185,9 +194,26 @@ impl Job for DatasetMergeJob {
         }
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
+        check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
         observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset-merge"))
     }
+}
+
+/// The refusal of a folder that holds another design's dataset (`check_owner`'s message),
+/// with its two ways out: another folder, or replacing the dataset.
+fn another_design(message: String) -> JobError {
+    use crate::remedy::{Remedy, Words};
+    JobError::input(
+        Problem::of(Arg::Out, message).remedy(Remedy::new(
+            Words::new()
+                .text("choose another folder (")
+                .arg(Arg::Out)
+                .text("), or allow replacing its dataset (")
+                .arg(Arg::Replace)
+                .text(")"),
+        )),
+    )
 }

@@ -32,7 +32,9 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
         let total = body["records"].as_u64().unwrap_or(0) as usize;
         // The record count is trusted only when the axes beside it give it: a shard
         // edited to claim 2e9 records would otherwise size the index's missing list.
-        if axes_records(&body) != Some(total) {
+        if axes_records(&body) != Some(total)
+            || total as u64 > crate::study::dataset::design::MAX_RECORDS
+        {
             problems.push(format!(
                 "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
                 dir.display()

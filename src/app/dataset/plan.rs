@@ -7,6 +7,8 @@ use crate::checksum::sha256_hex;
 use crate::report::signals::chain_json;
 use crate::signals::files::units;
 use crate::signals::setup::{chain_of, ChainSetup};
+use crate::study::budget::RecordSize;
+use crate::study::dataset::index::sensor_column_problems;
 use crate::study::dataset::plan::plan_of;
 use crate::study::dataset::{DatasetDesign, StateChoice};
 use serde_json::{json, Value};
@@ -20,7 +22,7 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let d = req.design;
     let fastest = d.speeds_hz.iter().fold(0.0_f64, |a, b| a.max(*b));
     let mut problems = Vec::new();
-    let mut out = Vec::new();
+    let mut out: Vec<ChainSetup> = Vec::new();
     for c in &d.conditions {
         let mut case = c.case.clone();
         case.set_load_point(crate::config::case::LoadPoint {
@@ -39,11 +41,45 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
             ),
         }
     }
+    // Sensors name index columns (one set of channels for every record: the chain is the
+    // dataset's, `study::dataset::design`).
+    if let Some(first) = out.first() {
+        problems.extend(
+            sensor_column_problems(&first.chain.path.sensors)
+                .into_iter()
+                .map(|m| format!("transfer path: {m}")),
+        );
+    }
     if problems.is_empty() {
         Ok(out)
     } else {
         Err(problems)
     }
+}
+
+/// The longest record of the dataset (the most samples, at the slowest speed) and the most
+/// channels of any condition's chain: what the run budget counts per record.
+pub fn record_size(d: &DatasetDesign, setups: &[ChainSetup]) -> RecordSize {
+    let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+    let g = &d.conditions[0].case.gear;
+    setups.iter().fold(
+        RecordSize {
+            samples: 0.0,
+            channels: 0.0,
+        },
+        |acc, s| {
+            let shaft_hz = match s.chain.tachometer.shaft {
+                crate::signals::chain::Shaft::Pinion => slowest,
+                crate::signals::chain::Shaft::Gear => {
+                    slowest * g.teeth_pinion as f64 / g.teeth_gear as f64
+                }
+            };
+            RecordSize {
+                samples: acc.samples.max(s.chain.samples(shaft_hz) as f64),
+                channels: acc.channels.max(s.chain.path.sensors.len() as f64),
+            }
+        },
+    )
 }
 
 /// Estimated bytes of the whole dataset (module docs of [`super::folder`]).
@@ -136,6 +172,8 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
 pub struct Checked {
     pub(super) setups: Vec<ChainSetup>,
     pub(super) estimated_bytes: f64,
+    /// The longest record, for the run budget.
+    pub record: RecordSize,
 }
 
 /// Check `req` (the first step of [`super`]'s).
@@ -153,6 +191,7 @@ pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
         )]));
     }
     Ok(Checked {
+        record: record_size(d, &setups),
         setups,
         estimated_bytes: estimated,
     })

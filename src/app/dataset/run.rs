@@ -38,6 +38,7 @@ pub fn run_dataset(
     let Checked {
         setups,
         estimated_bytes: estimated,
+        ..
     } = checked;
     for s in &setups {
         for w in &s.warnings {
@@ -56,16 +57,11 @@ pub fn run_dataset(
         serde_json::to_vec_pretty(&description(req, &setups, &key)).map_err(anyhow::Error::from)?;
     let prev = out.previous_state().clone();
     put(root, DATASET_REL, &desc, &prev).map_err(|e| DatasetError::Failed(e.into()))?;
-    let states = plan.shard_states(req.shard);
-    let shard_records = states.len() * plan.realisations;
+    let (shard_first, shard_step) = (req.shard.index - 1, req.shard.count);
+    let state_count = plan.shard_state_count(req.shard);
+    let shard_records = state_count * plan.realisations;
     // Trajectories of the conditions this shard records.
-    let mut needed: Vec<usize> = states
-        .iter()
-        .map(|p| plan.state_index(*p).condition)
-        .collect();
-    needed.dedup();
-    needed.sort_unstable();
-    needed.dedup();
+    let needed = plan.shard_conditions(req.shard);
     let trajectories: BTreeMap<usize, Trajectory> = needed
         .par_iter()
         .map(|&c| trajectory(d, c, (root, &prev), &key).map(|t| (c, t)))
@@ -74,9 +70,11 @@ pub fn run_dataset(
     let reused = AtomicUsize::new(0);
     let task = Task::items("records", "records", shard_records);
     obs.start(&task);
-    let results: Vec<Result<(), String>> = states
-        .par_iter()
-        .map(|&p| {
+    // Only the failures are kept (a list of every state's result would grow with the shard).
+    let failures: Vec<String> = (0..state_count)
+        .into_par_iter()
+        .map(|k| shard_first + k * shard_step)
+        .filter_map(|p| {
             let r = one_state(
                 req,
                 &plan,
@@ -89,12 +87,11 @@ pub fn run_dataset(
             );
             let n = done.fetch_add(plan.realisations, Ordering::Relaxed) + plan.realisations;
             obs.advance(&task, n as f64, "");
-            r.map_err(|e| format!("physical state {p}: {e:#}"))
+            r.err().map(|e| format!("physical state {p}: {e:#}"))
         })
         .collect();
     obs.finish(&task);
-    let failures: Vec<String> = results.into_iter().filter_map(Result::err).collect();
-    keep_files(&mut out, root, &plan, &states, &key, d);
+    keep_files(&mut out, root, &plan, plan.shard_states(req.shard), &key, d);
     let missing = if req.shard.count == 1 {
         stage_index_and_metadata(&mut out, root, plan.records(), req.figures)
             .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?
@@ -236,7 +233,7 @@ fn keep_files(
     out: &mut OutputDir,
     root: &Path,
     plan: &Plan,
-    states: &[usize],
+    states: impl Iterator<Item = usize>,
     key: &str,
     d: &DatasetDesign,
 ) {
@@ -246,7 +243,7 @@ fn keep_files(
             out.keep_state(&trajectory_rel(&c.name));
         }
     }
-    for &p in states {
+    for p in states {
         for r in 0..plan.realisations {
             let id = plan.record_id(p, r);
             if let Some(s) = finished(root, id, key) {

@@ -143,10 +143,11 @@ impl Work {
         } else {
             kept
         };
-        // `run` under a spectrum adds the life table: a run to the wear limit under the
-        // spectrum (every bin) and one at each bin alone, blocks cut by the threshold only.
+        // `run` and `wear` under a spectrum add the life table: a run to the wear limit
+        // under the spectrum (every bin) and one at each bin alone, blocks cut by the
+        // threshold only.
         let extra_evals = match (&case.load_spectrum, job) {
-            (Some(s), Job::Run) => {
+            (Some(s), Job::Run | Job::Wear { .. }) => {
                 let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
                 extra_evals + 2.0 * bins * per_run
             }
@@ -398,8 +399,7 @@ mod tests {
     use crate::study::budget::Budget;
 
     fn case(sets: &[&str]) -> Case {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case("", &sets).unwrap()
+        crate::config::load::default_with(sets)
     }
 
     #[test]

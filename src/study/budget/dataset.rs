@@ -3,17 +3,45 @@
 
 use super::case_jobs::{estimate, Job};
 use super::cost::{Estimate, Term, BASE_BYTES};
+use super::signals::{BYTES_PER_SAMPLE_CHANNEL, SECONDS_PER_SAMPLE_CHANNEL};
 use crate::study::dataset::plan::{plan_of, Shard};
 use crate::study::dataset::DatasetDesign;
+
+/// Seconds per record sample besides its channels (tachometer, noise, files), as for
+/// `signals` (`super::signals`).
+const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
+/// Bytes per record sample besides its channels: the clean and the noisy record and their
+/// analysis, as a steady `signals` record (`super::signals`).
+const BYTES_PER_RECORD_SAMPLE: f64 = 400.0;
+
+/// The size of the dataset's longest record: its samples (record length x sampling rate,
+/// at the slowest speed for a length in revolutions) and its accelerometer channels.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RecordSize {
+    pub samples: f64,
+    pub channels: f64,
+}
 
 /// The cost of (a shard of) a dataset against the run budget, before anything is
 /// computed (the disk has its own budget): each condition's run-to-failure trajectory
 /// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear
 /// limit), each physical state of the shard one dynamic evaluation at its speed and load
-/// (the costliest of the lowest and highest speed and load of its condition). Memory: the
-/// costliest single study on each of `threads` threads.
-pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Estimate {
-    let states = plan_of(d).shard_states(shard).len() as f64;
+/// (the costliest of the lowest and highest speed and load of its condition), and each of
+/// its records (noise, analysis, files) its samples x (a base + its channels) at the rates
+/// measured for `signals`. Memory: the costliest single study, or the longest record, on
+/// each of `threads` threads. Counts are floats (never wrap: the record count of a design
+/// is bounded when it is read).
+pub fn estimate_dataset(
+    d: &DatasetDesign,
+    shard: Shard,
+    threads: usize,
+    record: RecordSize,
+) -> Estimate {
+    let plan = plan_of(d);
+    let states = plan.shard_state_count(shard) as f64;
+    let records = states * plan.realisations as f64;
+    let per_sample_s = SECONDS_PER_RECORD_SAMPLE + record.channels * SECONDS_PER_SAMPLE_CHANNEL;
+    let per_sample_b = BYTES_PER_RECORD_SAMPLE + record.channels * BYTES_PER_SAMPLE_CHANNEL;
     let ends = |v: &[f64]| {
         let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -60,6 +88,17 @@ pub fn estimate_dataset(d: &DatasetDesign, shard: Shard, threads: usize) -> Esti
             keys: &[
                 "the number of conditions, states, speeds and loads",
                 "the conditions' numerics keys",
+            ],
+        },
+        Term {
+            what: "the records (noise, analysis, files)",
+            seconds: records * record.samples * per_sample_s,
+            bytes: threads.max(1) as f64 * record.samples * per_sample_b,
+            keys: &[
+                "records.noise_realisations",
+                "signals.record_length",
+                "signals.sampling_rate_hz",
+                "the transfer path's sensors",
             ],
         },
     ])

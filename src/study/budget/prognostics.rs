@@ -306,6 +306,8 @@ pub struct PredictionJob {
     pub check_runs: usize,
     /// Rows of the posterior file read (0 for the prior).
     pub posterior_rows: usize,
+    /// Bins of the future load spectrum (0 without a change of duty).
+    pub future_bins: usize,
 }
 
 /// The estimated cost of `predict` over the parameter span `span` (see the module docs).
@@ -328,6 +330,13 @@ pub fn estimate_prediction(
     } else {
         surrogate_terms(case, span, j.cycles)
     };
+    // Under a load spectrum every update of a wear run evaluates every bin: the runs cost
+    // the bins of the costlier duty (the case's spectrum, or the future one) times one.
+    let bins = duty_bins(case, j.future_bins);
+    for t in &mut terms {
+        t.seconds *= bins;
+        t.bytes *= bins;
+    }
     terms.push(Term {
         what: "the ensemble's fan values",
         seconds: values * (T_VALUE + T_BAND),
@@ -343,15 +352,25 @@ pub fn estimate_prediction(
         });
     }
     if !j.exact && j.check_runs > 0 {
-        terms.push(true_runs(
+        let mut t = true_runs(
             case,
             span,
             j.cycles,
             j.check_runs.min(3) as f64,
             "the surrogate check's true runs",
-        ));
+        );
+        t.seconds *= bins;
+        t.bytes *= bins;
+        terms.push(t);
     }
     Estimate::of_terms(terms)
+}
+
+/// Bins a wear run of `case` evaluates at each update: those of its load spectrum or of a
+/// future spectrum of `future_bins`, whichever has more (1 without a spectrum).
+fn duty_bins(case: &Case, future_bins: usize) -> f64 {
+    let own = case.load_spectrum.as_ref().map_or(1, |s| s.bins.len());
+    own.max(future_bins).max(1) as f64
 }
 
 /// The estimated cost of `predict-merge` of shard files of `bytes` in all, for an ensemble
@@ -442,6 +461,7 @@ mod tests {
             sharded: false,
             check_runs: 3,
             posterior_rows: 1_000_000,
+            future_bins: 0,
         };
         let e = estimate_prediction(&case, &prior, &j)
             .check(&Budget::DEFAULT)
@@ -452,9 +472,21 @@ mod tests {
             posterior_rows: 2000,
             ..j
         };
-        estimate_prediction(&case, &prior, &j)
-            .check(&Budget::DEFAULT)
-            .unwrap();
+        let one = estimate_prediction(&case, &prior, &j);
+        one.check(&Budget::DEFAULT).unwrap();
+        // A future spectrum of 2000 bins: every update of every wear run evaluates each
+        // bin, so the runs' term is 2000 times the one-bin duty's (issue 33: 200 bins were
+        // estimated at 1 s and ran 58.6 s; 2000 ran past 150 s).
+        let many = estimate_prediction(
+            &case,
+            &prior,
+            &PredictionJob {
+                future_bins: 2000,
+                ..j
+            },
+        );
+        assert_eq!(many.terms[0].seconds, 2000.0 * one.terms[0].seconds);
+        assert!(many.check(&Budget::DEFAULT).is_err());
         assert!(estimate_merge(1 << 20, 10_000_000, 10_000)
             .check(&Budget::DEFAULT)
             .is_err());

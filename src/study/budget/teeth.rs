@@ -107,12 +107,10 @@ pub fn budget_term(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::load_case;
     use crate::study::budget::{estimate, Budget, Job};
 
     fn case(sets: &[&str]) -> Case {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        load_case("", &sets).unwrap()
+        crate::config::load::default_with(sets)
     }
 
     #[test]

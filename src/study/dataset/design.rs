@@ -92,16 +92,10 @@ impl Default for RecordsFile {
 #[serde(deny_unknown_fields)]
 struct ConditionFile {
     name: String,
-    #[serde(default = "none")]
-    fault: String,
-    #[serde(default)]
-    severity: f64,
+    fault: Option<String>,
+    severity: Option<f64>,
     #[serde(default)]
     case: Table,
-}
-
-fn none() -> String {
-    "none".into()
 }
 
 /// Which states of a wear trajectory are recorded.
@@ -117,7 +111,9 @@ pub enum StateChoice {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
     pub name: String,
+    /// What the case models ([`fault_label`]): never a free text.
     pub fault: String,
+    /// The user's grade of the fault: 0 without one (or ungraded), >= 0 with one.
     pub severity: f64,
     /// The resolved case of this condition at the design's base operating point.
     pub case: Case,
@@ -140,6 +136,19 @@ pub struct DatasetDesign {
     pub conditions: Vec<Condition>,
     /// The design's text, for the metadata.
     pub text: String,
+}
+
+/// Most records a dataset may have: 2^53, so every record id is exact in every number
+/// format that reads the index (and no count of the plan can wrap).
+pub const MAX_RECORDS: u64 = 1 << 53;
+
+/// The record count of axes of these sizes (conditions, states, speeds, loads,
+/// realisations), in checked arithmetic; `None` when it overflows or exceeds
+/// [`MAX_RECORDS`].
+pub fn record_count(axes: &[usize]) -> Option<u64> {
+    axes.iter()
+        .try_fold(1_u64, |acc, n| acc.checked_mul(*n as u64))
+        .filter(|n| *n <= MAX_RECORDS)
 }
 
 /// Deep merge of `over` into `base` (tables merged key by key, other values replaced).
@@ -193,6 +202,28 @@ pub fn parse_design(
     let rec = &f.records;
     p.extend(records_problems(rec, &key));
     let conditions = conditions(&f, &base, name, &mut p);
+    let states_n = match &states {
+        StateChoice::Count(n) => *n,
+        StateChoice::Cycles(c) => c.len(),
+    };
+    let axes = [
+        f.condition.len().max(1),
+        states_n,
+        speeds_hz.len(),
+        torques_nm.len(),
+        usize::try_from(rec.noise_realisations).unwrap_or(0),
+    ];
+    if record_count(&axes).is_none() {
+        p.push(format!(
+            "{name}: the design has {} conditions x {} states x {} speeds x {} loads x {} noise realisations = {} records, more than the {MAX_RECORDS} (2^53) a dataset can number: make fewer",
+            axes[0],
+            axes[1],
+            axes[2],
+            axes[3],
+            axes[4],
+            axes.iter().fold(1.0, |a, n| a * *n as f64)
+        ));
+    }
     if !p.is_empty() {
         return Err(p);
     }
@@ -362,8 +393,8 @@ fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> 
     let files = if f.condition.is_empty() {
         vec![ConditionFile {
             name: "healthy".into(),
-            fault: none(),
-            severity: 0.0,
+            fault: None,
+            severity: None,
             case: Table::new(),
         }]
     } else {
@@ -384,27 +415,134 @@ fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> 
         if files[..i].iter().any(|o| o.name == c.name) {
             p.push(format!("{at}: `name` is used twice"));
         }
-        if !c.severity.is_finite() {
-            p.push(format!("{at}: `severity` must be a finite number"));
-        }
         let mut t = base.clone();
         merge(&mut t, &c.case);
         let text = toml::to_string(&t).unwrap_or_default();
         match load_case(&text, &f.set) {
-            Ok(case) => conditions.push(Condition {
-                name: c.name.clone(),
-                fault: c.fault.clone(),
-                severity: c.severity,
-                case,
-            }),
+            Ok(case) => {
+                let label = fault_label(&case);
+                p.extend(label_problems(c, &label, &at));
+                p.extend(steady_problems(&case, &at));
+                conditions.push(Condition {
+                    name: c.name.clone(),
+                    severity: c.severity.unwrap_or(0.0),
+                    fault: label,
+                    case,
+                })
+            }
             Err(e) => p.extend(e.problems.iter().map(|m| format!("{at}: {m}"))),
         }
     }
+    p.extend(chain_problems(&conditions, name));
     let any_per_tooth = conditions.iter().any(|c| c.case.has_per_tooth_inputs());
     for c in &mut conditions {
         c.case.share_one_law(any_per_tooth);
     }
     conditions
+}
+
+/// What a condition's case models, as its `fault` label: the kinds of its `[[fault]]`
+/// tables ("crack", "spall", "broken_tip"; several joined by "+", in the order of the
+/// tables), else "tooth_errors" when `[teeth]` gives manufacturing errors, else "none".
+pub fn fault_label(case: &Case) -> String {
+    let mut kinds: Vec<&str> = Vec::new();
+    for f in &case.fault {
+        if !kinds.contains(&f.kind().name()) {
+            kinds.push(f.kind().name());
+        }
+    }
+    if !kinds.is_empty() {
+        kinds.join("+")
+    } else if !case.teeth.is_empty() {
+        "tooth_errors".into()
+    } else {
+        "none".into()
+    }
+}
+
+/// Problems of a condition's `fault` and `severity` against what its case models
+/// (`label`): a label the case does not model (a "crack" with no crack, a misspelt or
+/// free-text label), a severity with no fault, a negative severity.
+fn label_problems(c: &ConditionFile, label: &str, at: &str) -> Vec<String> {
+    let mut p = Vec::new();
+    if let Some(given) = &c.fault {
+        if given != label {
+            p.push(format!(
+                "{at}: `fault` = {given:?} is not what the condition's case models ({label:?}): the label is derived from the case's `[[fault]]` tables (\"crack\", \"spall\", \"broken_tip\") and `[teeth]` errors (\"tooth_errors\"), \"none\" without either; give `fault = {label:?}` or leave it out"
+            ));
+        }
+    }
+    match (label, c.severity) {
+        (_, Some(s)) if !s.is_finite() => {
+            p.push(format!("{at}: `severity` = {s} must be a finite number"))
+        }
+        ("none", Some(s)) if s != 0.0 => p.push(format!(
+            "{at}: `severity` = {s} but the condition's case models no fault: a severity needs a `[[fault]]` table or `[teeth]` errors in `[condition.case]` (or leave it out: 0)"
+        )),
+        ("none", _) => {}
+        (_, Some(s)) if s < 0.0 => p.push(format!(
+            "{at}: `severity` = {s} is invalid for a condition that models {label:?}: expected a number >= 0 (your grade of the fault; absent: 0, ungraded)"
+        )),
+        _ => {}
+    }
+    p
+}
+
+/// Problems of settings a dataset cannot honour: its records are steady states (each
+/// state at its speed and load), so a run-up or a torque fluctuation would be recorded as
+/// if used while the records ignore it.
+fn steady_problems(case: &Case, at: &str) -> Vec<String> {
+    let s = &case.signals;
+    let mut p = Vec::new();
+    if let Some(v) = s.ramp_end_speed_hz {
+        p.push(format!(
+            "{at}: `signals.ramp_end_speed_hz` = {v} asks for a run-up, but a dataset records steady states (each at its speed and load): remove it (the `signals` command records a run-up), or record several speeds with `operating.input_speed_hz`"
+        ));
+    }
+    if s.torque_fluctuation_rms_nm > 0.0 {
+        p.push(format!(
+            "{at}: `signals.torque_fluctuation_rms_nm` = {} asks for a fluctuating load, but a dataset records steady states: set it to 0 (the `signals` command records a fluctuating load), or record several loads with `operating.load_torque_nm`",
+            s.torque_fluctuation_rms_nm
+        ));
+    }
+    p
+}
+
+/// Problems of conditions whose acquisition chain (`[signals]`, the noise seed apart: each
+/// record has its own) differs from the first condition's: an index column has one unit
+/// and the metadata one chain for every record, so the chain is the dataset's, not a
+/// condition's.
+fn chain_problems(conditions: &[Condition], name: &str) -> Vec<String> {
+    let table = |c: &Condition| -> Table {
+        let mut s = c.case.signals.clone();
+        s.noise_seed = 0;
+        Table::try_from(s).unwrap_or_default()
+    };
+    let Some(first) = conditions.first() else {
+        return Vec::new();
+    };
+    let t0 = table(first);
+    let mut p = Vec::new();
+    for c in &conditions[1..] {
+        let t = table(c);
+        let keys: Vec<String> = t0
+            .keys()
+            .chain(t.keys())
+            .filter(|k| t0.get(*k) != t.get(*k))
+            .map(|k| format!("`signals.{k}`"))
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        if !keys.is_empty() {
+            p.push(format!(
+                "{name}: condition `{}` changes the acquisition chain ({}) from condition `{}`'s: every record of a dataset shares one chain (one unit per index column, one sampling rate in the metadata); set it in the design's `case` or `set`",
+                c.name,
+                keys.join(", "),
+                first.name
+            ));
+        }
+    }
+    p
 }
 
 #[cfg(test)]
@@ -432,8 +570,6 @@ noise_realisations = 4
 name = "healthy"
 [[condition]]
 name = "rough"
-fault = "roughness"
-severity = 2.0
 [condition.case.surface]
 roughness_table_rms_um = [0.42, 0.38, 0.30]
 "#;

@@ -118,6 +118,61 @@ fn trends(rows: &[RecordLabels], c: usize, pinion: bool) -> Vec<(f64, f64)> {
     out
 }
 
+/// The index columns a channel named `name` gets, in order: `<name>_rms`,
+/// `_crest_factor`, `_kurtosis`, then `<name>_<shaft>_<indicator>` for each shaft.
+pub fn channel_column_names(name: &str) -> Vec<String> {
+    let mut out: Vec<String> = ["rms", "crest_factor", "kurtosis"]
+        .iter()
+        .map(|c| format!("{name}_{c}"))
+        .collect();
+    for shaft in ["pinion", "gear"] {
+        out.extend(
+            SHAFT_COLUMNS
+                .iter()
+                .map(|(c, _)| format!("{name}_{shaft}_{c}")),
+        );
+    }
+    out
+}
+
+/// Problems of sensor names as index columns: a name empty or used twice, or two
+/// sensors whose generated columns collide with each other or with a label column
+/// (sensors "x" and "x_pinion_tsa" both give `x_pinion_tsa_rms`).
+pub fn sensor_column_problems(sensors: &[String]) -> Vec<String> {
+    let mut p = Vec::new();
+    let mut owner: BTreeMap<String, String> = LABEL_COLUMNS
+        .iter()
+        .map(|(n, _)| (n.to_string(), "the labels".to_string()))
+        .collect();
+    for (i, s) in sensors.iter().enumerate() {
+        if s.trim().is_empty() {
+            p.push(format!(
+                "sensor {} has an empty name: name every sensor",
+                i + 1
+            ));
+            continue;
+        }
+        if sensors[..i].contains(s) {
+            p.push(format!(
+                "sensor {:?} is named twice: sensor names must be unique",
+                s
+            ));
+            continue;
+        }
+        for col in channel_column_names(s) {
+            if let Some(o) = owner.get(&col) {
+                p.push(format!(
+                    "sensor {s:?} gives the index column `{col}`, which {} give too: rename one of them",
+                    if o == "the labels" { o.clone() } else { format!("sensor {o:?}'s columns") }
+                ));
+                break;
+            }
+            owner.insert(col, s.clone());
+        }
+    }
+    p
+}
+
 /// The index columns of `rows` (sorted by record id) and each column's unit.
 pub fn index_columns(
     rows: &[RecordLabels],

@@ -61,9 +61,35 @@ impl Plan {
         p * self.realisations + realisation
     }
 
-    /// The physical states of shard `shard`.
-    pub fn shard_states(&self, shard: Shard) -> Vec<usize> {
-        shard.ids(self.physical_states())
+    /// The physical states of shard `shard`, ascending, listed lazily (a shard may hold
+    /// more states than fit in memory as a list).
+    pub fn shard_states(&self, shard: Shard) -> impl Iterator<Item = usize> + Clone {
+        (shard.index.saturating_sub(1)..self.physical_states()).step_by(shard.count.max(1))
+    }
+
+    /// How many physical states shard `shard` has.
+    pub fn shard_state_count(&self, shard: Shard) -> usize {
+        let first = shard.index.saturating_sub(1);
+        let total = self.physical_states();
+        if first >= total {
+            0
+        } else {
+            (total - first).div_ceil(shard.count.max(1))
+        }
+    }
+
+    /// The conditions shard `shard` records (those with at least one of its states),
+    /// found without listing the states.
+    pub fn shard_conditions(&self, shard: Shard) -> Vec<usize> {
+        let per = self.states * self.speeds * self.loads;
+        let (i, n) = (shard.index.saturating_sub(1), shard.count.max(1));
+        (0..self.conditions)
+            .filter(|c| {
+                let lo = c * per;
+                let first = lo + (i + n - lo % n) % n;
+                first < lo + per
+            })
+            .collect()
     }
 }
 
@@ -113,6 +139,17 @@ mod tests {
         let mut all: Vec<usize> = (1..=3)
             .flat_map(|i| plan.shard_states(Shard { index: i, count: 3 }))
             .collect();
+        for (i, n) in [(1, 3), (3, 3), (2, 7), (60, 60), (5, 100)] {
+            let shard = Shard { index: i, count: n };
+            let listed: Vec<usize> = shard.ids(plan.physical_states());
+            assert_eq!(plan.shard_state_count(shard), listed.len(), "{i}/{n}");
+            let mut conds: Vec<usize> = listed
+                .iter()
+                .map(|p| plan.state_index(*p).condition)
+                .collect();
+            conds.dedup();
+            assert_eq!(plan.shard_conditions(shard), conds, "{i}/{n}");
+        }
         all.sort_unstable();
         assert_eq!(all, (0..60).collect::<Vec<_>>());
         // SplitMix64's published first output for seed 0 (state advanced once).

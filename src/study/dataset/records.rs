@@ -23,8 +23,14 @@ pub struct RecordLabels {
     /// Signal file, relative to the dataset folder.
     pub file: String,
     pub condition: String,
+    /// What the condition's case models (`design::fault_label`).
     pub fault: String,
+    /// The design's grade of the fault (0 without one).
     pub severity: f64,
+    /// The `[[fault]]` tables the record's case models, as the case gives them (kind,
+    /// gear, tooth, sizes in the units their keys name); absent without a fault.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub faults: Vec<crate::config::teeth::FaultTable>,
     /// Index of the state along the condition's trajectory.
     pub trajectory_state: usize,
     /// Pinion load cycles of the state.
@@ -118,6 +124,7 @@ pub fn state_records(
             condition: inp.condition.name.clone(),
             fault: inp.condition.fault.clone(),
             severity: inp.condition.severity,
+            faults: case.fault.iter().map(|f| f.table().clone()).collect(),
             trajectory_state: index.state,
             cycles: inp.cycles,
             max_wear_pinion_um: wear.max_pinion_m() * 1e6,

@@ -6,24 +6,24 @@
 //! One set of forward runs (a reference run and a true run of the paper's case) serves
 //! every test (`fixture`), so the file costs a few seconds.
 
-use gearwear::config::Case;
-use gearwear::prognostics::calibrate::{calibrate, Calibration, CalibrationSettings};
-use gearwear::prognostics::check::theta_at_k_quantile;
-use gearwear::prognostics::fit_check::{fit_check, normal_quantile, FitCheck};
-use gearwear::prognostics::forward::{run_trajectory, Trajectory};
-use gearwear::prognostics::likelihood::log_likelihood;
-use gearwear::prognostics::likelihood::noise_scales;
-use gearwear::prognostics::mcmc::{ensemble_sample, McmcSettings};
-use gearwear::prognostics::observations::{Observations, Series};
-use gearwear::prognostics::predict::{
+use crate::config::Case;
+use crate::prognostics::calibrate::{calibrate, Calibration, CalibrationSettings};
+use crate::prognostics::check::theta_at_k_quantile;
+use crate::prognostics::fit_check::{fit_check, normal_quantile, FitCheck};
+use crate::prognostics::forward::{run_trajectory, Trajectory};
+use crate::prognostics::likelihood::log_likelihood;
+use crate::prognostics::likelihood::noise_scales;
+use crate::prognostics::mcmc::{ensemble_sample, McmcSettings};
+use crate::prognostics::observations::{Observations, Series};
+use crate::prognostics::predict::{
     run_sample, Forward, LifeSummary, PredictSettings, SampleSource,
 };
-use gearwear::prognostics::prior::{Prior, Theta};
-use gearwear::prognostics::stats::{
+use crate::prognostics::prior::{Prior, Theta};
+use crate::prognostics::stats::{
     autocorrelation_time, ks_critical_1pct, ks_statistic, mean, quantile, std_dev,
 };
-use gearwear::prognostics::{Quantity, Surrogate};
-use gearwear::rng;
+use crate::prognostics::{Quantity, Surrogate};
+use crate::rng;
 use rand_distr::{Distribution, Normal};
 use std::sync::OnceLock;
 
@@ -239,7 +239,7 @@ fn surrogate_between_reference_runs_in_the_block_limited_range() {
         .max_error_against(&truth, &th, Quantity::VelocityRms, &cycles)
         .unwrap();
     let wear_end = truth.value(Quantity::MaxWearPinion, horizon).unwrap();
-    println!("block-limited k = {k:.3e}: wear error {w:.2e} um of {wear_end:.2} um, RMS velocity error {v:.2e} mm/s");
+    println!("block-limited k = {k:.3e}: wear error {w:.2e} µm of {wear_end:.2} µm, RMS velocity error {v:.2e} mm/s");
     // Without the k axis the error was that of the invariance test (5.9e-3 relative);
     // interpolating in ln k between runs that bracket k must do far better: 1e-3.
     assert!(w < 1e-3 * wear_end, "{w}");
@@ -380,7 +380,7 @@ fn monte_carlo_percentiles_converge_at_one_over_root_n() {
                 let life = LifeSummary::of(&out);
                 assert_eq!(
                     life.reached, n,
-                    "every sample reaches 0.4 um within 4e4 cycles"
+                    "every sample reaches 0.4 µm within 4e4 cycles"
                 );
                 life.median.unwrap()
             })

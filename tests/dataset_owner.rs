@@ -1,0 +1,59 @@
+//! A dataset folder belongs to the design that made it (issue 33): a run, a shard or a
+//! merge of another design into a complete folder is refused with exit 2, naming the
+//! folder, before anything in it changes (before, a shard of another design exited 0 and
+//! left 6 of 12 index rows false).
+
+mod common;
+
+use common::{gearwear, ok, snapshot, stderr};
+use std::path::Path;
+
+/// A tiny design: one state of one condition, two records of 0.05 s on coarse grids.
+fn design(seed: u64) -> String {
+    format!(
+        "seed = {seed}\nset = [\"signals.record_length=0.05\", \"numerics.steps_per_mesh_period=60\", \"numerics.evaluated_mesh_periods=2\", \"stiffness.table_points_per_mesh_period=60\", \"wear.block_cycles=1e4\"]\n[run_to_failure]\nstates = 2\nmax_cycles = 2e4\n[records]\nnoise_realisations = 1\n"
+    )
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_owned()
+}
+
+#[test]
+fn another_design_is_refused_before_the_folder_changes() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = write(dir.path(), "a.toml", &design(1));
+    let b = write(dir.path(), "b.toml", &design(2));
+    let out = dir.path().join("out");
+    let out_s = out.to_str().unwrap();
+    ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    // The same design again: a resume, allowed (nothing to compute).
+    ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    let before = snapshot(&out);
+    for extra in [&[][..], &["--shard", "1/2"][..]] {
+        let mut args = vec!["dataset", "--design", &b, "--out", out_s, "-q"];
+        args.extend(extra);
+        let r = gearwear(&args);
+        let e = stderr(&r);
+        assert_eq!(r.status.code(), Some(2), "{extra:?}: {e}");
+        assert!(e.contains("another design") && e.contains(out_s), "{e}");
+        assert_eq!(snapshot(&out), before, "{extra:?}: the folder changed");
+    }
+    // Shards of design b merged into a's folder: refused too.
+    let shards = dir.path().join("b_shards");
+    let shards_s = shards.to_str().unwrap();
+    for s in ["1/2", "2/2"] {
+        ok(&[
+            "dataset", "--design", &b, "--out", shards_s, "--shard", s, "-q",
+        ]);
+    }
+    let r = gearwear(&["dataset-merge", shards_s, "--out", out_s, "-q"]);
+    let e = stderr(&r);
+    assert_eq!(r.status.code(), Some(2), "{e}");
+    assert!(e.contains("another design"), "{e}");
+    assert_eq!(snapshot(&out), before, "the merge changed the folder");
+    // --replace: the user's explicit choice.
+    ok(&["dataset", "--design", &b, "--out", out_s, "--replace", "-q"]);
+}
