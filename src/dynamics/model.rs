@@ -286,7 +286,7 @@ impl<'a> GearSystem<'a> {
                 }
             })
             .collect();
-        let linear = rhs::LinearParts::of(asm.stiffness(), asm.damping());
+        let linear = rhs::LinearParts::of(&asm);
         Self {
             asm,
             meshes,

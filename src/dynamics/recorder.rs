@@ -34,8 +34,11 @@ pub struct Recorder {
     /// The last step-end evaluation, offered to the next point and step (see
     /// [`Evaluation`]).
     last: Option<Evaluation>,
-    /// Room for the evaluations of a step.
+    /// Room for the evaluations of a step: the midpoint's state and evaluation, and an
+    /// evaluation's buffers to reuse (no allocation per sample once the first step ran).
     work: Work,
+    y_mid: Vec<f64>,
+    spare: Option<Evaluation>,
 }
 
 /// Buffers of one right-hand-side evaluation.
@@ -89,6 +92,8 @@ impl Recorder {
                 dy: vec![0.0; sys.states()],
                 meshes: vec![MeshState::default(); n_meshes],
             },
+            y_mid: vec![0.0; sys.states()],
+            spare: None,
         }
     }
 
@@ -111,24 +116,52 @@ impl Recorder {
         let w = &mut self.work;
         sys.derivative_into(frame, t, y, &mut w.dy, &mut w.meshes);
     }
+
+    /// An evaluation of `sys` at `(t, y)` in `frame` (kept as decided in `sets` and
+    /// `mode`), in the spare buffers when there are some.
+    #[allow(clippy::too_many_arguments)]
+    fn evaluation(
+        &mut self,
+        sys: &GearSystem,
+        frame: ContactFrame,
+        t: f64,
+        y: &[f64],
+        sets: DecidedSets,
+        mode: ContactModes,
+    ) -> Evaluation {
+        let mut e = self.spare.take().unwrap_or_else(|| Evaluation {
+            t,
+            y: vec![0.0; y.len()],
+            sets,
+            mode,
+            dy: vec![0.0; sys.states()],
+            meshes: vec![MeshState::default(); sys.meshes.len()],
+        });
+        sys.derivative_into(frame, t, y, &mut e.dy, &mut e.meshes);
+        e.t = t;
+        e.y.copy_from_slice(y);
+        e.sets = sets;
+        e.mode = mode;
+        e
+    }
 }
 
 impl PeriodObserver for Recorder {
     fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]) {
         let frame = ContactFrame::decided_at(decide);
         let sets = sys.decided_sets(frame, t);
-        let kept = self
+        let reuse = self
             .last
             .as_ref()
-            .filter(|e| e.is_at(t, y, &sets) && sys.natural_mode_in(frame, t, y) == e.mode);
-        let (dy, meshes) = match kept {
-            Some(e) => (e.dy.clone(), e.meshes.clone()),
-            None => {
-                self.evaluate(sys, frame, t, y);
-                (self.work.dy.clone(), self.work.meshes.clone())
-            }
+            .is_some_and(|e| e.is_at(t, y, &sets) && sys.natural_mode_in(frame, t, y) == e.mode);
+        if !reuse {
+            self.evaluate(sys, frame, t, y);
+        }
+        let (dy, meshes) = match (&self.last, reuse) {
+            (Some(e), true) => (&e.dy, &e.meshes),
+            _ => (&self.work.dy, &self.work.meshes),
         };
-        record(&mut self.sig, sys, t, y, &dy, &meshes);
+        record(&mut self.sig, sys, t, y, dy, meshes);
         let n = sys.dofs();
         for (m, ms) in meshes.iter().enumerate() {
             // The DTE's rate: its gradient times the velocities (the DTE is linear in q).
@@ -161,26 +194,26 @@ impl PeriodObserver for Recorder {
         // step, which never crosses a mesh event or a contact switch).
         let frame = ContactFrame::frozen(t + 0.5 * h, mode);
         let sets = sys.decided_sets(frame, t);
-        let kept = self
-            .last
-            .take()
-            .filter(|e| e.mode == mode && e.is_at(t, y0, &sets));
-        let (f0, ms0) = match kept {
-            Some(e) => (e.dy, e.meshes),
-            None => {
-                self.evaluate(sys, frame, t, y0);
-                (self.work.dy.clone(), self.work.meshes.clone())
+        let e0 = match self.last.take() {
+            Some(e) if e.mode == mode && e.is_at(t, y0, &sets) => e,
+            other => {
+                if other.is_some() {
+                    self.spare = other;
+                }
+                self.evaluation(sys, frame, t, y0, sets, mode)
             }
         };
-        self.evaluate(sys, frame, t + h, y1);
-        let (f1, ms1) = (self.work.dy.clone(), self.work.meshes.clone());
-        let y_mid: Vec<f64> = (0..y0.len())
-            .map(|i| (y0[i] + y1[i]) * 0.5 + (f0[i] - f1[i]) * (h / 8.0))
-            .collect();
-        self.evaluate(sys, frame, t + 0.5 * h, &y_mid);
+        let e1 = self.evaluation(sys, frame, t + h, y1, sets, mode);
+        let (f0, f1) = (&e0.dy, &e1.dy);
+        for (i, m) in self.y_mid.iter_mut().enumerate() {
+            *m = (y0[i] + y1[i]) * 0.5 + (f0[i] - f1[i]) * (h / 8.0);
+        }
+        let w = &mut self.work;
+        sys.derivative_into(frame, t + 0.5 * h, &self.y_mid, &mut w.dy, &mut w.meshes);
         let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
+        let (ms0, ms1) = (&e0.meshes, &e1.meshes);
         for m in 0..ms1.len() {
-            let mid = &self.work.meshes[m];
+            let mid = &w.meshes[m];
             self.force_int[m] += simpson(ms0[m].force_n, mid.force_n, ms1[m].force_n);
             self.dte_int[m] += simpson(ms0[m].deflection_m, mid.deflection_m, ms1[m].deflection_m);
         }
@@ -190,14 +223,8 @@ impl PeriodObserver for Recorder {
         let [start, end] = &mut self.sig.step_acceleration;
         start.push(&f0[n..]);
         end.push(&f1[n..]);
-        self.last = Some(Evaluation {
-            t: t + h,
-            y: y1.to_vec(),
-            sets,
-            mode,
-            dy: f1,
-            meshes: ms1,
-        });
+        self.last = Some(e1);
+        self.spare = Some(e0);
     }
 }
 

@@ -231,15 +231,14 @@ impl Signals {
             meshes,
         } = self;
         let mut sig = self.clone();
+        let mut moved = vec![0.0; displacement.dofs()];
         for p in 1..periods {
             let shift = p as f64 * period;
             sig.time_s.extend(time_s.iter().map(|t| t + shift));
             for q in displacement.iter() {
-                let moved: Vec<f64> = q
-                    .iter()
-                    .zip(drift)
-                    .map(|(qi, di)| qi + p as f64 * di)
-                    .collect();
+                for (m, (qi, di)) in moved.iter_mut().zip(q.iter().zip(drift)) {
+                    *m = qi + p as f64 * di;
+                }
                 sig.displacement.push(&moved);
             }
             for v in velocity.iter() {

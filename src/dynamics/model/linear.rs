@@ -1,6 +1,7 @@
 //! The model's linear parts: the Jacobian of the right-hand side (for the implicit
 //! integrator) and the static equilibrium (the cold start of a steady-state search).
 
+use super::rhs::LinearParts;
 use super::{ContactFrame, GearSystem, State};
 use crate::config::case::SpeedBoundary;
 use nalgebra::{DMatrix, DVector, SMatrix, SVector};
@@ -13,18 +14,30 @@ impl GearSystem<'_> {
     /// and not stiff). The contact is decided as `frame` says.
     pub fn jacobian_into(&self, frame: ContactFrame, t_s: f64, y: &[f64], out: &mut [f64]) {
         let (q, v) = y.split_at(self.dofs());
-        let mut k_mesh = Vec::with_capacity(self.meshes.len());
-        let mut c_mesh = Vec::with_capacity(self.meshes.len());
-        for (m, mesh) in self.meshes.iter().enumerate() {
+        let mesh_terms = |m: usize| {
+            let mesh = &self.meshes[m];
             let sp = mesh.springs(frame.mesh(m), t_s, q, v);
-            let (k, c) = if sp.pushing {
+            if sp.pushing {
                 (sp.stiffness_touching_n_per_m, mesh.mesh_damping_n_s_per_m)
             } else {
                 (0.0, 0.0)
-            };
-            k_mesh.push(k);
-            c_mesh.push(c);
+            }
+        };
+        if let LinearParts::Fixed8(p) = &self.linear {
+            // The single pair on the stack (no allocation): its one mesh's terms added to
+            // the constant parts as `Assembly::stiffness_with_meshes` adds them.
+            let (k_m, c_m) = mesh_terms(0);
+            let (mut k, mut c) = (p.k, p.c);
+            let g = &self.meshes[0].geometry.gradient;
+            for (i, gi) in g {
+                for (j, gj) in g {
+                    k[(*i, *j)] += gi * gj * k_m;
+                    c[(*i, *j)] += gi * gj * c_m;
+                }
+            }
+            return state_matrix_into(8, |i, l| k[(i, l)], |i, l| c[(i, l)], &p.inv_mass, out);
         }
+        let (k_mesh, c_mesh): (Vec<f64>, Vec<f64>) = (0..self.meshes.len()).map(mesh_terms).unzip();
         self.state_matrix_into(&k_mesh, &c_mesh, out);
     }
 
@@ -63,17 +76,14 @@ impl GearSystem<'_> {
         let asm = self.assembly();
         let k = asm.stiffness_with_meshes(k_mesh);
         let c = asm.damping_with_meshes(c_mesh);
-        let inv_mass = asm.inverse_masses();
         let n = self.dofs();
-        let n2 = 2 * n;
-        out.fill(0.0);
-        for i in 0..n {
-            out[(n + i) * n2 + i] = 1.0;
-            for l in 0..n {
-                out[l * n2 + n + i] = -k[(i, l)] * inv_mass[i];
-                out[(n + l) * n2 + n + i] = -c[(i, l)] * inv_mass[i];
-            }
-        }
+        state_matrix_into(
+            n,
+            |i, l| k[(i, l)],
+            |i, l| c[(i, l)],
+            asm.inverse_masses(),
+            out,
+        );
     }
 
     /// Static equilibrium at the mean mesh stiffness, friction-free: the starting state
@@ -111,6 +121,25 @@ impl GearSystem<'_> {
         let mut y = State::zeros(2 * n);
         y.rows_mut(0, n).copy_from(&q);
         y
+    }
+}
+
+/// `[[0, I], [-M^-1 K, -M^-1 C]]` of `n` coordinates, column-major into `out`.
+fn state_matrix_into(
+    n: usize,
+    k: impl Fn(usize, usize) -> f64,
+    c: impl Fn(usize, usize) -> f64,
+    inv_mass: &[f64],
+    out: &mut [f64],
+) {
+    let n2 = 2 * n;
+    out.fill(0.0);
+    for i in 0..n {
+        out[(n + i) * n2 + i] = 1.0;
+        for l in 0..n {
+            out[l * n2 + n + i] = -k(i, l) * inv_mass[i];
+            out[(n + l) * n2 + n + i] = -c(i, l) * inv_mass[i];
+        }
     }
 }
 

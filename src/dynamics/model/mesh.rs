@@ -207,28 +207,51 @@ impl TrainMesh<'_> {
     /// Mesh state at time t for generalised displacements q and velocities v, the
     /// contact decided as `frame` says.
     pub fn mesh_state(&self, frame: MeshFrame, t_s: f64, q: &[f64], v: &[f64]) -> MeshState {
+        let mut ms = MeshState::default();
+        self.mesh_state_into(frame, t_s, q, v, &mut ms);
+        ms
+    }
+
+    /// [`TrainMesh::mesh_state`] written over `ms` field by field (no copy of the whole
+    /// state: this runs in every right-hand side). Entries of the pairs past `n_pairs` are
+    /// zero, as in a new state.
+    pub fn mesh_state_into(
+        &self,
+        frame: MeshFrame,
+        t_s: f64,
+        q: &[f64],
+        v: &[f64],
+        ms: &mut MeshState,
+    ) {
         let sp = self.springs(frame, t_s, q, v);
         let n = sp.n_pairs;
-        let mut ms = MeshState {
-            n_pairs: n,
-            rho1_m: sp.rho1_m,
-            stiffness_n_per_m: sp.stiffness_n_per_m,
-            deflection_m: sp.deflection_m,
-            stiffness_total_n_per_m: sp.stiffness_n_per_m[..n].iter().sum(),
-            stiffness_touching_n_per_m: sp.stiffness_touching_n_per_m,
-            compression_m: sp.compression_m,
-            force_unclipped_n: sp.force_unclipped_n,
-            pushing: sp.pushing,
-            force_n: if sp.pushing {
-                sp.force_unclipped_n
-            } else {
-                0.0
-            },
-            cycle: sp.cycle,
-            width_loss: sp.width_loss,
-            curvature_change: sp.curvature_change,
-            ..MeshState::default()
+        ms.n_pairs = n;
+        ms.rho1_m = sp.rho1_m;
+        ms.stiffness_n_per_m = sp.stiffness_n_per_m;
+        ms.deflection_m = sp.deflection_m;
+        ms.stiffness_total_n_per_m = sp.stiffness_n_per_m[..n].iter().sum();
+        ms.stiffness_touching_n_per_m = sp.stiffness_touching_n_per_m;
+        ms.compression_m = sp.compression_m;
+        ms.force_unclipped_n = sp.force_unclipped_n;
+        ms.pushing = sp.pushing;
+        ms.force_n = if sp.pushing {
+            sp.force_unclipped_n
+        } else {
+            0.0
         };
+        ms.cycle = sp.cycle;
+        ms.width_loss = sp.width_loss;
+        ms.curvature_change = sp.curvature_change;
+        // One loop over the few pairs past n (a fill per array would call memset).
+        for i in n..MAX_PAIRS {
+            ms.share[i] = 0.0;
+            ms.load_n[i] = 0.0;
+            ms.pressure_pa[i] = 0.0;
+            ms.half_width_m[i] = 0.0;
+            ms.friction_coefficient[i] = 0.0;
+            ms.friction_n[i] = 0.0;
+            ms.sliding_m_per_s[i] = 0.0;
+        }
         let (nominal_p, nominal_g) = self.nominal_speeds(t_s);
         let [rp, rg] = self.geometry.rotation;
         let omega_p = nominal_p + v[rp];
@@ -240,8 +263,7 @@ impl TrainMesh<'_> {
             }
             sh
         });
-        self.fill_contacts(&mut ms, stiffness_shares, omega_p, omega_g);
-        ms
+        self.fill_contacts(ms, stiffness_shares, omega_p, omega_g);
     }
 
     /// Per-pair shares, loads, Hertz contact and friction for a mesh state whose pairs
