@@ -161,6 +161,24 @@ impl StageSpec {
     }
 }
 
+impl StageSpec {
+    /// A message about the stage's single-pair case with each key the stage gives named as
+    /// the stage's (`gear.module_mm` -> `stage.module_mm`): the key to change is the one
+    /// the user wrote; keys the stage takes from `[gear]` or `[dynamics]` keep their names.
+    pub fn name_own_keys(&self, message: &str) -> String {
+        let Ok(toml::Value::Table(given)) = toml::Value::try_from(self) else {
+            return message.to_string();
+        };
+        let mut out = message.to_string();
+        for key in given.keys() {
+            for section in ["gear", "dynamics"] {
+                out = out.replace(&format!("`{section}.{key}`"), &format!("`stage.{key}`"));
+            }
+        }
+        out
+    }
+}
+
 /// Problems of the stages as written (each names the stage, 1-based, and the key): the
 /// shafts between stages, the stage count, and the single-pair sections a train does not
 /// take yet.

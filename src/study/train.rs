@@ -66,7 +66,7 @@ impl TrainModel {
             let gear = spec.gear_section(&case.gear);
             match GearPair::from_case(&gear) {
                 Ok(p) => pairs.push(p),
-                Err(e) => problems.extend(e.0.iter().map(|m| at_stage(k, m))),
+                Err(e) => problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
             }
         }
         if !problems.is_empty() {
@@ -81,8 +81,9 @@ impl TrainModel {
                 at_stage(
                     k,
                     format!(
-                        "(its pinion carries {:.4} N m) {m}",
-                        operating.meshes[k].pinion_torque_nm
+                        "(its pinion carries {:.4} N m) {}",
+                        operating.meshes[k].pinion_torque_nm,
+                        spec.name_own_keys(m)
                     ),
                 )
             }));
@@ -95,7 +96,7 @@ impl TrainModel {
             ) {
                 Ok(m) => m,
                 Err(e) => {
-                    problems.extend(e.0.iter().map(|m| at_stage(k, m)));
+                    problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m))));
                     continue;
                 }
             };
