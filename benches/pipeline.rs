@@ -11,7 +11,9 @@
 //!   resonance (50 Hz, brake speed imposed);
 //! - `wear_study`: `run_wear` to 4e4 cycles, each mode, and both modes including the
 //!   model build (the figure the < 1 s target is about);
-//! - `scaling_*`: cost against steps per mesh period, wear grid points and total cycles.
+//! - `scaling_*`: cost against steps per mesh period, wear grid points and total cycles;
+//! - `train`: one cold steady state of the two-stage reducer of
+//!   `examples/two_stage_reducer.toml` (14 coordinates, 28 states, two meshes).
 //!
 //! The work counts that explain the times (integrator steps, rhs calls, LU
 //! factorisations, number of wear-loop evaluations) are printed once per benchmark,
@@ -235,9 +237,32 @@ fn scaling_cycles(c: &mut Criterion) {
     });
 }
 
+/// The two-stage reducer of the examples: one steady state from the static equilibrium
+/// (its base period is one turn of the intermediate shaft, 31 and 23 mesh periods).
+fn train(c: &mut Criterion) {
+    let text = include_str!("../examples/two_stage_reducer.toml");
+    let case = gearwear::config::load_case(text, &[]).expect("the example is valid");
+    let model = Model::from_case(&case).expect("the example assembles");
+    let wear = WearState::new(model.grid.len());
+    let none = ExternalError::none();
+    let mut g = c.benchmark_group("train");
+    let mut printed = false;
+    g.bench_function("two_stage_steady_state", |b| {
+        once(&mut printed, || {
+            print_steady_work("train/two_stage_steady_state", &model, &wear)
+        });
+        b.iter(|| {
+            model
+                .dynamic(black_box(&wear), &none)
+                .expect("steady state")
+        })
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = quick();
-    targets = stiffness, evaluation, wear_studies, scaling_steps, scaling_points, scaling_cycles
+    targets = stiffness, evaluation, wear_studies, scaling_steps, scaling_points, scaling_cycles, train
 }
 criterion_main!(benches);

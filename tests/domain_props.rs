@@ -182,9 +182,9 @@ proptest! {
         }
         prop_assert!(mesh.min_stiffness_n_per_m() <= mesh.mean_stiffness_n_per_m());
         let r = model.quasi_static(&WearState::new(model.grid.len()), &ExternalError::none());
-        prop_assert!(r.mean_mesh_force_n.is_finite() && r.mean_mesh_force_n > 0.0);
-        prop_assert!(r.signals.dte_m.iter().all(|x| x.is_finite()));
-        prop_assert!(r.path.iter().all(|p| p.load_n.is_finite() && p.pressure_pa.is_finite() && p.friction_n.is_finite()));
+        prop_assert!(r.meshes[0].mean_mesh_force_n.is_finite() && r.meshes[0].mean_mesh_force_n > 0.0);
+        prop_assert!(r.signals.meshes[0].dte_m.iter().all(|x| x.is_finite()));
+        prop_assert!(r.meshes[0].path.iter().all(|p| p.load_n.is_finite() && p.pressure_pa.is_finite() && p.friction_n.is_finite()));
         let p = model.resolved_parameters();
         prop_assert!(p.values.iter().all(|v| v.value.is_finite() && v.value > 0.0));
     }

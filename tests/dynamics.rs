@@ -11,6 +11,7 @@ use gearwear::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use gearwear::study::Model;
 use gearwear::wear::WearState;
 use nalgebra::DMatrix;
+use nalgebra::Dyn;
 
 fn model(sets: &[&str]) -> Model {
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
@@ -43,7 +44,7 @@ fn without_friction_mean_mesh_force_is_load_over_base_radius() {
             m.pair.gear.base_radius_m
         };
         let expected = 60.0 / rb;
-        let got = r.mean_mesh_force_n;
+        let got = r.meshes[0].mean_mesh_force_n;
         assert!(
             ((got - expected) / expected).abs() < 1e-5,
             "{shaft}/{boundary}: mean force {got} vs {expected}"
@@ -68,10 +69,10 @@ fn at_very_low_speed_dte_matches_quasi_static_te() {
     let qs = m.quasi_static(&w, &ExternalError::none());
     let period = m.pair.mesh_angle_rad();
     let events = [0.0, (m.pair.contact_ratio - 1.0) * period, period];
-    let n = qs.signals.dte_m.len();
+    let n = qs.signals.meshes[0].dte_m.len();
     let mut compared = 0;
     for k in 0..n {
-        let ph = qs.signals.phase_rad[k];
+        let ph = qs.signals.meshes[0].phase_rad[k];
         if events.iter().any(|e| (ph - e).abs() < 0.05 * period) {
             continue;
         }
@@ -83,7 +84,10 @@ fn at_very_low_speed_dte_matches_quasi_static_te() {
             .iter()
             .position(|s| *s == t)
             .expect("a node");
-        let (a, b) = (dynr.signals.dte_m[j], qs.signals.dte_m[k]);
+        let (a, b) = (
+            dynr.signals.meshes[0].dte_m[j],
+            qs.signals.meshes[0].dte_m[k],
+        );
         // 1e-3: the inertia share above, plus the residual of the decayed transients.
         assert!(((a - b) / b).abs() < 1e-3, "node {k}: {a} vs {b}");
         compared += 1;
@@ -174,15 +178,15 @@ fn natural_frequencies_match_dense_first_order_eigenvalues() {
 /// coupling springs + mesh spring - work potential of the constant torques.
 fn energy(sys: &GearSystem, y: &State, k_mesh: f64) -> f64 {
     let (k_lin, _, inv_mass) = sys.linear_parts();
-    let q = y.fixed_rows::<NDOF>(0).into_owned();
-    let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
-    let mut e = 0.5 * (q.transpose() * k_lin * q)[(0, 0)] - sys.external_forces().dot(&q);
+    let q = y.rows(0, NDOF).into_owned();
+    let v = y.rows(NDOF, NDOF).into_owned();
+    let mut e = 0.5 * (q.transpose() * k_lin * &q)[(0, 0)] - sys.external_forces().dot(&q);
     for i in 0..NDOF {
         if inv_mass[i] > 0.0 {
             e += 0.5 * v[i] * v[i] / inv_mass[i];
         }
     }
-    let delta = sys.mesh_gradient().dot(&q);
+    let delta = sys.mesh_gradient(0).dot(&q);
     e + 0.5 * k_mesh * delta * delta
 }
 
@@ -212,19 +216,17 @@ fn undamped_frictionless_model_conserves_energy() {
     y[NDOF + dof::XG] = -2e-3;
     y[NDOF + dof::PHI_P] = 0.05;
     y[NDOF + dof::PHI_B] = -0.01;
-    let k_mesh = sys
-        .derivative(ContactFrame::NATURAL, 0.0, &y)
-        .1
-        .stiffness_total_n_per_m;
+    let k_mesh =
+        sys.derivative(ContactFrame::NATURAL, 0.0, y.as_slice()).1[0].stiffness_total_n_per_m;
     let e0 = energy(&sys, &y, k_mesh);
-    let mut rk = Rk4::<16>::new(2e-8).unwrap();
-    let mut f = |t: f64, y: &State| sys.derivative(ContactFrame::NATURAL, t, y).0;
+    let mut rk = Rk4::<Dyn>::new(2e-8).unwrap();
+    let mut f = |t: f64, y: &State| sys.derivative(ContactFrame::NATURAL, t, y.as_slice()).0;
     let mut t = 0.0;
     let mut drift: f64 = 0.0;
     let scale = e0.abs().max(1e-30);
     for _ in 0..50 {
         rk.advance(&mut f, &mut t, &mut y, 1000).unwrap();
-        let ms = sys.derivative(ContactFrame::NATURAL, t, &y).1;
+        let ms = sys.derivative(ContactFrame::NATURAL, t, y.as_slice()).1[0];
         assert!(ms.force_n > 0.0, "contact must hold for a linear test");
         drift = drift.max((energy(&sys, &y, k_mesh) - e0).abs() / scale);
     }
@@ -242,18 +244,19 @@ fn friction_forces_only_dissipate() {
     let y = sys.static_equilibrium();
     let mut checked = 0;
     for i in 0..50 {
-        let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.pinion_speed_rad_s;
-        let (_, mut ms) = sys.derivative(ContactFrame::NATURAL, t, &y);
+        let t = i as f64 / 50.0 * m.pair.mesh_angle_rad() / m.params.operating.pinion_speed_rad_s;
+        let mut ms = sys.derivative(ContactFrame::NATURAL, t, y.as_slice()).1[0];
         let expected: f64 = (0..ms.n_pairs)
             .map(|j| -ms.friction_n[j] * ms.sliding_m_per_s[j])
             .sum();
         ms.force_n = 0.0; // keep only friction in the generalised forces
-        let qf = sys.mesh_forces(&ms);
+        let mut qf = [0.0; NDOF];
+        sys.mesh(0).add_forces(&ms, &mut qf);
         let mut v = [0.0; NDOF];
-        v[dof::PHI_M] = m.params.pinion_speed_rad_s;
-        v[dof::PHI_P] = m.params.pinion_speed_rad_s;
-        v[dof::PHI_G] = m.params.gear_speed_rad_s;
-        v[dof::PHI_B] = m.params.gear_speed_rad_s;
+        v[dof::PHI_M] = m.params.operating.pinion_speed_rad_s;
+        v[dof::PHI_P] = m.params.operating.pinion_speed_rad_s;
+        v[dof::PHI_G] = m.params.operating.gear_speed_rad_s;
+        v[dof::PHI_B] = m.params.operating.gear_speed_rad_s;
         let power: f64 = (0..NDOF).map(|k| qf[k] * v[k]).sum();
         assert!(power <= 1e-12, "friction power {power} > 0");
         assert!((power - expected).abs() <= 1e-9 * expected.abs().max(1.0));

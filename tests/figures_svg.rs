@@ -164,7 +164,7 @@ fn a_contact_loss_mesh_force_is_drawn_inside_the_data_range() {
         .dynamic(&WearState::new(model.grid.len()), &ExternalError::none())
         .expect("steady state");
     assert_eq!(
-        r.signals
+        r.signals.meshes[0]
             .mesh_force_n
             .iter()
             .copied()

@@ -10,7 +10,7 @@ use gearwear::dynamics::integrator::{OdeSystem, Sdirk, SdirkOptions, Stepper};
 use gearwear::dynamics::modal::modes;
 use gearwear::dynamics::model::{GearSystem, NDOF};
 use gearwear::study::Model;
-use nalgebra::{Complex, DMatrix, SMatrix, SVector};
+use nalgebra::{Complex, Const, DMatrix, SMatrix, SVector};
 
 fn model(sets: &[&str]) -> Model {
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
@@ -31,9 +31,9 @@ struct Linear {
 fn linear_of(sys: &GearSystem) -> Linear {
     let (k_lin, c_lin, inv_mass) = sys.linear_parts();
     let free: Vec<usize> = (0..NDOF).filter(|i| inv_mass[*i] > 0.0).collect();
-    let g: Vec<f64> = free.iter().map(|&i| sys.mesh_gradient()[i]).collect();
-    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
-    let c_mesh = sys.mesh_damping_n_s_per_m;
+    let g: Vec<f64> = free.iter().map(|&i| sys.mesh_gradient(0)[i]).collect();
+    let k_mean = sys.mesh(0).parts.mesh.mean_stiffness_n_per_m();
+    let c_mesh = sys.mesh(0).mesh_damping_n_s_per_m;
     let n = free.len();
     Linear {
         mass: free.iter().map(|&i| 1.0 / inv_mass[i]).collect(),
@@ -215,7 +215,7 @@ struct ForcedLinear {
     omega: f64,
 }
 
-impl OdeSystem<16> for ForcedLinear {
+impl OdeSystem<Const<16>> for ForcedLinear {
     fn rhs(&mut self, t: f64, y: &SVector<f64, 16>) -> SVector<f64, 16> {
         let (s, c) = (self.omega * t).sin_cos();
         self.a * y + self.b_e * s + self.b_de * (self.omega * c)
@@ -230,7 +230,7 @@ impl OdeSystem<16> for ForcedLinear {
 /// Fourier coefficient of delta over 4 whole periods.
 fn dte_gain(sys: &GearSystem, lin: &Linear, f_hz: f64) -> f64 {
     let (k_lin, c_lin, inv_mass) = sys.linear_parts();
-    let g = sys.mesh_gradient();
+    let g = sys.mesh_gradient(0);
     let mut a = SMatrix::<f64, 16, 16>::zeros();
     let (mut b_e, mut b_de) = (SVector::<f64, 16>::zeros(), SVector::<f64, 16>::zeros());
     for i in 0..NDOF {
@@ -253,7 +253,7 @@ fn dte_gain(sys: &GearSystem, lin: &Linear, f_hz: f64) -> f64 {
     };
     let steps = 64;
     let h = 1.0 / (f_hz * steps as f64);
-    let mut sd = Sdirk::<16>::new(h, SdirkOptions::default()).unwrap();
+    let mut sd = Sdirk::<Const<16>>::new(h, SdirkOptions::default()).unwrap();
     // The slowest decaying pole of the three boundaries has Re lambda ~ -820 1/s
     // (tau = 1.2 ms): 20 ms of transient leaves e^-16 ~ 1e-7 of it.
     let transient = (0.02 * f_hz).ceil() as usize;

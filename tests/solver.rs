@@ -47,7 +47,7 @@ fn headline(m: &Model, r: &DynamicResponse) -> [f64; 4] {
     let window = r.mesh_period_s * m.settings.evaluated_mesh_periods as f64;
     [
         s.dte_max_m,
-        time_rms(&r.signals.time_s, &r.signals.dte_m, window),
+        time_rms(&r.signals.time_s, &r.signals.meshes[0].dte_m, window),
         s.dynamic_factor,
         s.velocity_y_pinion_rms_m_per_s,
     ]
@@ -94,7 +94,7 @@ fn linear_limit_equals_a_direct_periodic_solution() {
     );
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system(&gap, &ext, 0.2);
-    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let grid = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     // Every interval of the solver's grid cut into `n` equal ones.
     let refine = |n: usize| -> Vec<f64> {
         grid.windows(2)
@@ -107,8 +107,8 @@ fn linear_limit_equals_a_direct_periodic_solution() {
         linear_periodic(&sys, &refine(4), held),
         linear_periodic(&sys, &refine(8), held),
     );
-    let g = sys.mesh_gradient();
-    let dte = |y: &State| g.dot(&y.fixed_rows::<NDOF>(0).into_owned());
+    let g = sys.mesh_gradient(0);
+    let dte = |y: &State| g.dot(&y.rows(0, NDOF));
     let vy = |y: &State| y[NDOF + gearwear::dynamics::model::dof::YP];
     let (mut err_dte, mut err_v, mut peak_dte, mut peak_v) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
     for (k, t) in grid.iter().enumerate().take(grid.len() - 1) {
@@ -116,7 +116,7 @@ fn linear_limit_equals_a_direct_periodic_solution() {
         let ref_dte = (4.0 * dte(f) - dte(c)) / 3.0;
         let ref_v = (4.0 * vy(f) - vy(c)) / 3.0;
         let j = sample_at(&r, *t);
-        err_dte = err_dte.max((r.signals.dte_m[j] - ref_dte).abs());
+        err_dte = err_dte.max((r.signals.meshes[0].dte_m[j] - ref_dte).abs());
         err_v =
             err_v.max((r.signals.velocity[j][gearwear::dynamics::model::dof::YP] - ref_v).abs());
         peak_dte = peak_dte.max(ref_dte.abs());
@@ -139,20 +139,24 @@ fn linear_limit_equals_a_direct_periodic_solution() {
 fn linear_forces(m: &Model, held: usize) -> Vec<(f64, f64)> {
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system(&gap, &ext, 0.2);
-    let grid = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let grid = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     let ys = linear_periodic(&sys, &grid, held);
-    let g = sys.mesh_gradient();
+    let g = sys.mesh_gradient(0);
     grid.iter()
         .zip(&ys)
         .take(grid.len() - 1)
         .map(|(t, y)| {
-            let (q, v) = (y.fixed_rows::<NDOF>(0), y.fixed_rows::<NDOF>(NDOF));
+            let (q, v) = (y.rows(0, NDOF), y.rows(NDOF, NDOF));
             // The pairs just after the node, as the solver records a mesh event.
             let frame = ContactFrame::decided_at(t + 1e-9 * grid[grid.len() - 1]);
             let k = sys
-                .mesh_state(frame, *t, q.as_slice(), v.as_slice())
+                .mesh(0)
+                .mesh_state(frame.mesh(0), *t, q.as_slice(), v.as_slice())
                 .stiffness_total_n_per_m;
-            (*t, k * g.dot(&q) + sys.mesh_damping_n_s_per_m * g.dot(&v))
+            (
+                *t,
+                k * g.dot(&q) + sys.mesh(0).mesh_damping_n_s_per_m * g.dot(&v),
+            )
         })
         .collect()
 }
@@ -179,7 +183,7 @@ fn contact_loss_resonance_is_solved_at_every_point() {
                 .dynamic(&new_teeth(&m), &ExternalError::none())
                 .unwrap_or_else(|e| panic!("{f} Hz, friction {friction}: {e}"));
             let s = ResponseSummary::of(&r);
-            let load = m.params.brake_torque_nm / m.pair.gear.base_radius_m;
+            let load = m.params.operating.brake_torque_nm / m.pair.gear.base_radius_m;
             if friction == "none" {
                 let lin = linear_forces(&m, held);
                 let lin_min = lin.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
@@ -191,7 +195,7 @@ fn contact_loss_resonance_is_solved_at_every_point() {
                     // within 1e-5 of the load).
                     for (t, f_lin) in &lin {
                         let j = sample_at(&r, *t);
-                        let f_dyn = r.signals.mesh_force_n[j];
+                        let f_dyn = r.signals.meshes[0].mesh_force_n[j];
                         worst = worst.max((f_dyn - f_lin).abs() / load);
                         assert!(
                             (f_dyn - f_lin).abs() < 1e-4 * load,
@@ -262,7 +266,7 @@ fn warm_start_from_a_periodic_state_converges_at_once() {
     // takes at most 3 periods, and the same response as from the static equilibrium.
     let inc = gearwear::wear::per_cycle_wear(
         &m.grid,
-        &cold.path,
+        &cold.meshes[0].path,
         m.case.wear.coefficient_m2_per_n,
         m.pair.pinion.teeth as f64 / m.pair.gear.teeth as f64,
     );
@@ -287,8 +291,13 @@ fn warm_start_from_a_periodic_state_converges_at_once() {
 fn share_sum_error(r: &DynamicResponse) -> f64 {
     let s = &r.signals;
     (0..s.time_s.len())
-        .filter(|k| s.mesh_force_n[*k] > 0.0)
-        .map(|k| ((s.pair_load_n[0][k] + s.pair_load_n[1][k]) / s.mesh_force_n[k] - 1.0).abs())
+        .filter(|k| s.meshes[0].mesh_force_n[*k] > 0.0)
+        .map(|k| {
+            ((s.meshes[0].pair_load_n[0][k] + s.meshes[0].pair_load_n[1][k])
+                / s.meshes[0].mesh_force_n[k]
+                - 1.0)
+                .abs()
+        })
         .fold(0.0, f64::max)
 }
 

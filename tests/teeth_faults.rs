@@ -117,7 +117,11 @@ fn a_broken_tip_carries_nothing_beyond_its_cut() {
     let cut = m.pair.pinion.tip_radius_m - 0.8e-3;
     let rho_cut = (cut * cut - m.pair.pinion.base_radius_m.powi(2)).sqrt();
     let (mut beyond, mut below) = (0, 0);
-    for s in r.path.iter().filter(|s| s.cycle.rem_euclid(19) == 4) {
+    for s in r.meshes[0]
+        .path
+        .iter()
+        .filter(|s| s.cycle.rem_euclid(19) == 4)
+    {
         if s.rho1_m > rho_cut + 1e-9 {
             assert_eq!(s.load_n, 0.0, "at rho1 {}", s.rho1_m);
             beyond += 1;

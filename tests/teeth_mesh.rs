@@ -40,7 +40,10 @@ fn identical_teeth_over_the_hunting_period_repeat_the_mesh_period_solution() {
         v.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b))
             - v.iter().fold(f64::INFINITY, |a, b| a.min(*b))
     };
-    let (dte_range, f_range) = (range(&s1.dte_m[..n1]), range(&s1.mesh_force_n[..n1]));
+    let (dte_range, f_range) = (
+        range(&s1.meshes[0].dte_m[..n1]),
+        range(&s1.meshes[0].mesh_force_n[..n1]),
+    );
     let mut worst: f64 = 0.0;
     let mut compared = 0;
     for (j, th) in sh.time_s.iter().enumerate() {
@@ -52,8 +55,8 @@ fn identical_teeth_over_the_hunting_period_repeat_the_mesh_period_solution() {
             .position(|x| (x - local).abs() < 1e-9 * t)
         {
             worst = worst
-                .max((sh.dte_m[j] - s1.dte_m[i]).abs() / dte_range)
-                .max((sh.mesh_force_n[j] - s1.mesh_force_n[i]).abs() / f_range);
+                .max((sh.meshes[0].dte_m[j] - s1.meshes[0].dte_m[i]).abs() / dte_range)
+                .max((sh.meshes[0].mesh_force_n[j] - s1.meshes[0].mesh_force_n[i]).abs() / f_range);
             compared += 1;
         }
     }
@@ -72,7 +75,10 @@ fn identical_teeth_over_the_hunting_period_repeat_the_mesh_period_solution() {
             .iter()
             .position(|x| (x - single.signals.time_s[i]).abs() < 1e-9 * t);
         if let Some(j) = j {
-            assert!((single.signals.dte_m[i] - s1.dte_m[j]).abs() < 1e-9 * dte_range);
+            assert!(
+                (single.signals.meshes[0].dte_m[i] - s1.meshes[0].dte_m[j]).abs()
+                    < 1e-9 * dte_range
+            );
         }
     }
 }
@@ -132,14 +138,14 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
     let rough = plain.roughness_for(&wear);
     let a = plain.system(&gap, &ext, rough);
     let b = resolved.system_for(&gap, &ext, rough, Some(&tm));
-    let t_mesh = plain.pair.mesh_angle_rad() / plain.params.pinion_speed_rad_s;
+    let t_mesh = plain.pair.mesh_angle_rad() / plain.params.operating.pinion_speed_rad_s;
     // Scale of the generalised coordinates: 40 um of mesh deflection each.
-    let grad = a.mesh_gradient();
+    let grad = a.mesh_gradient(0);
     let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
     let (mut touching, mut open) = (0, 0);
     for _ in 0..2000 {
         let t = 3.0 * t_mesh * 0.5 * (1.0 + uniform(&mut seed));
-        let mut y = gearwear::dynamics::model::State::zeros();
+        let mut y = gearwear::dynamics::model::State::zeros(16);
         for i in 0..8 {
             let g = grad[i].abs().max(1e-3);
             y[i] = 20e-6 / g * uniform(&mut seed);
@@ -147,7 +153,10 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
         }
         let frame = ContactFrame::NATURAL;
         let (q, v) = (&y.as_slice()[..8], &y.as_slice()[8..]);
-        let (sa, sb) = (a.springs(frame, t, q, v), b.springs(frame, t, q, v));
+        let (sa, sb) = (
+            a.mesh(0).springs(frame.mesh(0), t, q, v),
+            b.mesh(0).springs(frame.mesh(0), t, q, v),
+        );
         assert_eq!(sa.n_pairs, sb.n_pairs);
         for k in 0..sa.n_pairs {
             assert_eq!(sa.rho1_m[k].to_bits(), sb.rho1_m[k].to_bits());
@@ -163,7 +172,11 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
         let scale_f = 1e-12 * (sa.force_unclipped_n.abs() + 1e3);
         assert!((sa.force_unclipped_n - sb.force_unclipped_n).abs() < scale_f);
         assert_eq!(sa.pushing, sb.pushing);
-        let ((da, ma), (db, mb)) = (a.derivative(frame, t, &y), b.derivative(frame, t, &y));
+        let ((da, ma), (db, mb)) = (
+            a.derivative(frame, t, y.as_slice()),
+            b.derivative(frame, t, y.as_slice()),
+        );
+        let (ma, mb) = (ma[0], mb[0]);
         for k in 0..ma.n_pairs {
             assert!((ma.load_n[k] - mb.load_n[k]).abs() < scale_f);
             assert!(
@@ -200,7 +213,7 @@ fn zero_per_tooth_inputs_are_the_paper_case_bit_for_bit() {
     let b = zero
         .dynamic(&zero.new_wear_state(), &ExternalError::none())
         .unwrap();
-    assert_eq!(a.signals.dte_m, b.signals.dte_m);
+    assert_eq!(a.signals.meshes[0].dte_m, b.signals.meshes[0].dte_m);
     assert_eq!(a.end_state, b.end_state);
 }
 
@@ -224,15 +237,15 @@ fn a_pitch_error_shifts_the_static_transmission_error_as_compatibility_predicts(
     assert_eq!(r.excitation_periods, 19);
     let e = e_um * 1e-6 * m.pair.pressure_angle_rad.cos();
     let f = m.case.operating.load_torque_nm / m.pair.pinion.base_radius_m;
-    let omega = m.params.pinion_speed_rad_s;
+    let omega = m.params.operating.pinion_speed_rad_s;
     let period = m.pair.mesh_angle_rad();
     let (mut checked_single, mut checked_double) = (0, 0);
     for ((t, dte), local) in r
         .signals
         .time_s
         .iter()
-        .zip(&r.signals.dte_m)
-        .zip(&r.signals.phase_rad)
+        .zip(&r.signals.meshes[0].dte_m)
+        .zip(&r.signals.meshes[0].phase_rad)
     {
         // The sample's mesh cycle: whole periods before its phase within the period (a
         // sample on a period boundary opens the next cycle).
@@ -269,7 +282,7 @@ fn a_pitch_error_shifts_the_static_transmission_error_as_compatibility_predicts(
     // dynamic recorder tags it: every engagement 0..19 and nothing else (the leaving pair
     // of cycle 0 is engagement 18, not -1).
     let mut seen = [false; 19];
-    for s in &r.path {
+    for s in &r.meshes[0].path {
         assert!((0..19).contains(&s.cycle), "cycle {}", s.cycle);
         seen[s.cycle as usize] = true;
     }
@@ -308,7 +321,7 @@ fn tip_relief_sized_to_the_load_lowers_the_static_transmission_error_as_by_hand(
     let m = model(&relief.iter().map(String::as_str).collect::<Vec<_>>());
     let plain = base.quasi_static(&base.new_wear_state(), &ExternalError::none());
     let relieved = m.quasi_static(&m.new_wear_state(), &ExternalError::none());
-    let omega = base.params.pinion_speed_rad_s;
+    let omega = base.params.operating.pinion_speed_rad_s;
     let hand = |with_relief: bool, t: f64| -> f64 {
         let mut k = Vec::new();
         let mut g = Vec::new();
@@ -349,7 +362,10 @@ fn tip_relief_sized_to_the_load_lowers_the_static_transmission_error_as_by_hand(
         .iter()
         .map(|t| hand(true, *t))
         .collect();
-    let (ptp_plain, ptp_relief) = (ptp(&plain.signals.dte_m), ptp(&relieved.signals.dte_m));
+    let (ptp_plain, ptp_relief) = (
+        ptp(&plain.signals.meshes[0].dte_m),
+        ptp(&relieved.signals.meshes[0].dte_m),
+    );
     let (hand_fall, fall) = (ptp(&hand_plain) - ptp(&hand_relief), ptp_plain - ptp_relief);
     println!(
         "tip relief C = {:.3} um, L = {:.3} mm: static TE peak-to-peak {:.4} -> {:.4} um (fall {:.4} um; hand calculation {:.4} um)",
@@ -391,24 +407,34 @@ fn under_one_load_sharing_law_a_vanishing_error_is_continuous_with_identical_tee
             v.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)),
         )
     };
-    let (lo, hi) = extremes(&plain.signals.dte_m);
-    let (rlo, rhi) = extremes(&resolved.signals.dte_m);
+    let (lo, hi) = extremes(&plain.signals.meshes[0].dte_m);
+    let (rlo, rhi) = extremes(&resolved.signals.meshes[0].dte_m);
     let range = hi - lo;
     assert!(range > 1e-7, "STE range {range} m");
     assert!((rlo - lo).abs() < 1e-7 * range, "min {rlo} vs {lo}");
     assert!((rhi - hi).abs() < 1e-7 * range, "max {rhi} vs {hi}");
-    let force =
-        |r: &gearwear::dynamics::response::DynamicResponse| extremes(&r.signals.pair_load_n[0]);
+    let force = |r: &gearwear::dynamics::response::DynamicResponse| {
+        extremes(&r.signals.meshes[0].pair_load_n[0])
+    };
     let ((flo, fhi), (rflo, rfhi)) = (force(&plain), force(&resolved));
     assert!((rflo - flo).abs() < 1e-7 * (fhi - flo).max(1.0));
     assert!((rfhi - fhi).abs() < 1e-7 * (fhi - flo).max(1.0));
 
     let auto_resolved = qs(&model(&[tiny]));
-    assert_eq!(auto_resolved.signals.dte_m, resolved.signals.dte_m);
+    assert_eq!(
+        auto_resolved.signals.meshes[0].dte_m,
+        resolved.signals.meshes[0].dte_m
+    );
     let auto_plain = qs(&model(&[]));
     let pedrero = qs(&model(&["contact.load_sharing=pedrero"]));
-    assert_eq!(auto_plain.signals.dte_m, pedrero.signals.dte_m);
-    assert_eq!(auto_plain.signals.pair_load_n, pedrero.signals.pair_load_n);
+    assert_eq!(
+        auto_plain.signals.meshes[0].dte_m,
+        pedrero.signals.meshes[0].dte_m
+    );
+    assert_eq!(
+        auto_plain.signals.meshes[0].pair_load_n,
+        pedrero.signals.meshes[0].pair_load_n
+    );
 }
 
 #[test]
@@ -433,15 +459,15 @@ fn a_gear_runout_shifts_the_static_transmission_error_by_half_the_runout_in_phas
         assert_eq!(r.excitation_periods, 31);
         let e_c = 0.5 * f_r_um * 1e-6;
         let f = m.case.operating.load_torque_nm / m.pair.pinion.base_radius_m;
-        let omega_g = m.params.pinion_speed_rad_s * 19.0 / 31.0;
+        let omega_g = m.params.operating.pinion_speed_rad_s * 19.0 / 31.0;
         let phi = phase_deg.to_radians();
         let mut seen = (f64::INFINITY, f64::NEG_INFINITY);
         for ((t, dte), phase) in r
             .signals
             .time_s
             .iter()
-            .zip(&r.signals.dte_m)
-            .zip(&r.signals.phase_rad)
+            .zip(&r.signals.meshes[0].dte_m)
+            .zip(&r.signals.meshes[0].phase_rad)
         {
             let k: f64 = m
                 .pair

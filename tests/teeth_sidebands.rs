@@ -65,12 +65,12 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
     let p = r.excitation_periods;
     assert_eq!(p, 31);
     assert!(
-        r.signals.mesh_force_n.iter().all(|f| *f > 0.0),
+        r.signals.meshes[0].mesh_force_n.iter().all(|f| *f > 0.0),
         "contact must hold"
     );
     let periods = evaluated_periods(&r);
     assert_eq!(periods, p);
-    let solver = amplitude_spectrum(&dte_signal(&r), periods);
+    let solver = amplitude_spectrum(&dte_signal(&r, 0), periods);
     let solver_v = amplitude_spectrum(&velocity_signal(&r, dof::YP), periods);
     assert_eq!(solver.bins_per_harmonic, p);
 
@@ -79,7 +79,7 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
     let teeth = m.tooth_mesh(&wear).unwrap();
     let (gap, ext) = (PairGap::none(), ExternalError::none());
     let sys = m.system_for(&gap, &ext, m.roughness.rms_um(0.0), Some(&teeth));
-    let one = period_nodes(&m.pair, m.params.pinion_speed_rad_s, 200);
+    let one = period_nodes(&m.pair, m.params.operating.pinion_speed_rad_s, 200);
     let t_mesh = *one.last().unwrap();
     let mut grid = one.clone();
     for c in 1..p {
@@ -92,8 +92,8 @@ fn runout_sidebands_match_the_first_order_perturbation_solution() {
             .collect()
     };
     let lines = 2 * p + 1;
-    let g = sys.mesh_gradient();
-    let dte = |y: &State| g.dot(&y.fixed_rows::<NDOF>(0).into_owned());
+    let g = sys.mesh_gradient(0);
+    let dte = |y: &State| g.dot(&y.rows(0, NDOF));
     // The pinion's y velocity (what an accelerometer on its bearing sees).
     let vy = |y: &State| y[NDOF + dof::YP];
     let richardson = |of: &dyn Fn(&State) -> f64| -> Vec<f64> {

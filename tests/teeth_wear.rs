@@ -122,7 +122,7 @@ fn profile_volume(h: &[f64], m: &Model, gear: bool) -> f64 {
 
 fn engagements(r: &DynamicResponse) -> Vec<Vec<PathSample>> {
     let mut by = vec![Vec::new(); r.excitation_periods];
-    for s in &r.path {
+    for s in &r.meshes[0].path {
         by[s.cycle as usize].push(*s);
     }
     for e in &mut by {
@@ -146,7 +146,7 @@ fn removed_volume_is_the_sum_of_every_engagements_archard_integral() {
         .unwrap();
     assert_eq!(r.excitation_periods, 19);
     let k = m.case.wear.coefficient_m2_per_n;
-    let inc = per_tooth_wear(&m.grid, &r.path, 19, 19, 31, k);
+    let inc = per_tooth_wear(&m.grid, &r.meshes[0].path, 19, 19, 31, k);
     let teeth = inc.teeth.as_ref().unwrap();
     let by = engagements(&r);
     for (gear, profiles) in [(false, &teeth.pinion_m), (true, &teeth.gear_m)] {
@@ -180,14 +180,14 @@ fn a_pitch_error_moves_single_teeth_but_not_the_mean_wear_to_first_order() {
     let plain = model(std::slice::from_ref(&by_stiffness));
     let r0 = plain.quasi_static(&plain.new_wear_state(), &ExternalError::none());
     let k = plain.case.wear.coefficient_m2_per_n;
-    let h0 = per_cycle_wear(&plain.grid, &r0.path, k, 19.0 / 31.0).pinion_m;
+    let h0 = per_cycle_wear(&plain.grid, &r0.meshes[0].path, k, 19.0 / 31.0).pinion_m;
     let scale = h0.iter().fold(0.0_f64, |a, b| a.max(*b));
     let change = |e_um: f64| {
         let mut case = pitch_error_case(e_um, 3);
         case.push(by_stiffness.clone());
         let m = model(&case);
         let r = m.quasi_static(&m.new_wear_state(), &ExternalError::none());
-        let inc = per_tooth_wear(&m.grid, &r.path, r.excitation_periods, 19, 31, k);
+        let inc = per_tooth_wear(&m.grid, &r.meshes[0].path, r.excitation_periods, 19, 31, k);
         let mean_dev = inc
             .pinion_m
             .iter()

@@ -15,6 +15,8 @@ fn model(sets: &[&str]) -> Model {
 
 fn qs_path(m: &Model) -> Vec<gearwear::dynamics::response::PathSample> {
     m.quasi_static(&WearState::new(m.grid.len()), &ExternalError::none())
+        .meshes
+        .swap_remove(0)
         .path
 }
 
@@ -43,7 +45,10 @@ fn gear_to_pinion_wear_ratio_is_sliding_ratio_times_z1_over_z2() {
     // = (u_p/u_g)(z1/z2), with u = omega rho at nominal speed (independent of the code path).
     let m = model(&[]);
     let inc = per_cycle_wear(&m.grid, &qs_path(&m), 2.5e-16, 19.0 / 31.0);
-    let (wp, wg) = (m.params.pinion_speed_rad_s, m.params.gear_speed_rad_s);
+    let (wp, wg) = (
+        m.params.operating.pinion_speed_rad_s,
+        m.params.operating.gear_speed_rad_s,
+    );
     let mut checked = 0;
     for i in 0..m.grid.len() {
         if inc.pinion_m[i] < 1e-3 * inc.max_m() {

@@ -2,7 +2,7 @@
 //! teeth, optionally with an external transmission error.
 
 use super::observer::Observer;
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::remedy::Arg;
@@ -48,7 +48,7 @@ impl Job for DynamicsJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
-        let model = build_model(&self.case, observer)?;
+        let model = build_train_model(&self.case, observer)?;
         let period = model.pair.mesh_angle_rad();
         let external = match &self.transmission_error {
             Some(TransmissionErrorSource::File(p)) => read_transmission_error(p, period)?,

@@ -112,8 +112,22 @@ impl AsRef<Outcome> for Outcome {
 }
 
 /// Build the model of `case`; geometry problems are input errors, the model's warnings go
-/// to `observer`.
+/// to `observer`. A study that takes a single pair only refuses a gear train
+/// (`[[stage]]`) here, before any work.
 pub fn build_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
+    if !case.stage.is_empty() {
+        return Err(JobError::input(crate::remedy::Problem::new(
+            TRAIN_STUDIES.to_owned(),
+        )));
+    }
+    build_train_model(case, observer)
+}
+
+/// What a study that takes a single pair says of a gear train.
+pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): the dynamics study takes trains so far; this study takes a single pair ([gear], without [[stage]])";
+
+/// As [`build_model`], for the studies that take a gear train as well as a single pair.
+pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
     let m = Model::from_case(case)?;
     for w in &m.warnings {
         observer.warning(w);

@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
+pub use super::gear::GearSection;
 pub use super::lumped::{BodyValues, DynamicsSection};
 pub use super::operating::{
     LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
@@ -22,6 +23,7 @@ pub use super::teeth::{
     Fault, FaultKind, FaultTable, Member, ModificationSection, ReliefShape, TeethSection,
     ToothFault,
 };
+pub use super::train::StageSpec;
 
 /// A whole case. `Default` is the paper's case.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -68,88 +70,10 @@ pub struct Case {
     /// loaded.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub fault: Vec<ToothFault>,
-}
-
-/// Involute spur pair (paper Table 1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct GearSection {
-    /// Module m, mm (paper Table 1: 2 mm).
-    pub module_mm: f64,
-    /// Pinion teeth z1 (paper: 19).
-    pub teeth_pinion: i64,
-    /// Gear teeth z2 (paper: 31).
-    pub teeth_gear: i64,
-    /// Reference pressure angle alpha, deg (paper: 20).
-    pub pressure_angle_deg: f64,
-    /// Addendum coefficient h_a*, in modules (paper: 1).
-    pub addendum_coefficient: f64,
-    /// Dedendum coefficient h_f*, in modules (paper: 1.25).
-    pub dedendum_coefficient: f64,
-    /// Profile shift coefficient x1 of the pinion (paper: 0).
-    pub profile_shift_pinion: f64,
-    /// Profile shift coefficient x2 of the gear (paper: 0).
-    pub profile_shift_gear: f64,
-    /// Face width b, mm (paper: 20 mm).
-    pub face_width_mm: f64,
-    /// Operating centre distance, mm; absent means the one the profile shifts give.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub centre_distance_mm: Option<f64>,
-    /// Pinion hub bore radius r_int, mm (the fillet foundation's ring); `"derived"`: r_f / 2
-    /// (h_f = 2, mid-range of Sainsot's fit).
-    pub hub_bore_radius_pinion_mm: Derivable,
-    /// Gear hub bore radius r_int, mm; `"derived"`: r_f / 2.
-    pub hub_bore_radius_gear_mm: Derivable,
-    /// Rack-cutter tip radius, in modules (ISO 53 profile A: 0.38): the root fillet, the
-    /// undercut check and Sainsot's theta_f.
-    pub tool_tip_radius_coefficient: f64,
-}
-
-impl GearSection {
-    /// Whether both gears have the same tooth form as `other`'s: numbers of teeth,
-    /// reference profile and profile shifts (everything a tooth's shape, and Sainsot's
-    /// root angle theta_f, depends on; not the size, width, bores or centre distance).
-    pub(crate) fn same_tooth_form(&self, other: &GearSection) -> bool {
-        self.teeth_pinion == other.teeth_pinion
-            && self.teeth_gear == other.teeth_gear
-            && self.pressure_angle_deg == other.pressure_angle_deg
-            && self.addendum_coefficient == other.addendum_coefficient
-            && self.dedendum_coefficient == other.dedendum_coefficient
-            && self.profile_shift_pinion == other.profile_shift_pinion
-            && self.profile_shift_gear == other.profile_shift_gear
-            && self.tool_tip_radius_coefficient == other.tool_tip_radius_coefficient
-    }
-
-    /// Whether this is the same pair as `other` in every dimension that sets the blanks'
-    /// size (tooth form, module, face width, centre distance); bores excluded.
-    pub(crate) fn same_pair(&self, other: &GearSection) -> bool {
-        self.same_tooth_form(other)
-            && self.module_mm == other.module_mm
-            && self.face_width_mm == other.face_width_mm
-            && self.centre_distance_mm == other.centre_distance_mm
-    }
-}
-
-impl Default for GearSection {
-    fn default() -> Self {
-        Self {
-            module_mm: 2.0,
-            teeth_pinion: 19,
-            teeth_gear: 31,
-            pressure_angle_deg: 20.0,
-            addendum_coefficient: 1.0,
-            dedendum_coefficient: 1.25,
-            profile_shift_pinion: 0.0,
-            profile_shift_gear: 0.0,
-            face_width_mm: 20.0,
-            centre_distance_mm: None,
-            // Not in the paper: h_f = r_f / r_int ~ 2, mid-range of Sainsot's fit.
-            hub_bore_radius_pinion_mm: Derivable::Given(8.0),
-            hub_bore_radius_gear_mm: Derivable::Given(14.0),
-            // ISO 53 profile A rack tip radius 0.38 m.
-            tool_tip_radius_coefficient: 0.38,
-        }
-    }
+    /// The stages of a gear train (`[[stage]]` tables; none: the single pair of
+    /// `[gear]`), `config::train`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub stage: Vec<StageSpec>,
 }
 
 /// `[materials]`: elastic constants of pinion and gear.

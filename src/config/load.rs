@@ -159,8 +159,12 @@ fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String
             continue;
         };
         check_table(section, table, &format!(" ({section} {i})"), problems);
-        for required in ["kind", "gear", "tooth"] {
-            if !table.contains_key(required) {
+        let required: &[&str] = match section {
+            "fault" => &["kind", "gear", "tooth"],
+            _ => &[],
+        };
+        for required in required {
+            if !table.contains_key(*required) {
                 problems.push(format!(
                     "`{section}.{required}` is required in every [[{section}]] table ({section} {i} has none)"
                 ));
@@ -250,6 +254,41 @@ fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String
         ));
     }
     problems.extend(super::signals::relation_problems(case));
+    problems.extend(super::train::stage_problems(
+        &case.stage,
+        &single_pair_inputs(case),
+    ));
+    for (i, stage) in case.stage.iter().enumerate() {
+        let g = stage.gear_section(&case.gear);
+        let ratio = g.face_width_mm / g.module_mm;
+        if !(1.0..=100.0).contains(&ratio) {
+            problems.push(format!(
+                "stage {}: the face width {} mm is {ratio:.3} times the module {} mm (`stage.face_width_mm`, `stage.module_mm`, or their [gear] defaults): it must lie between 1 and 100 modules",
+                i + 1,
+                g.face_width_mm,
+                g.module_mm
+            ));
+        }
+    }
+}
+
+/// The sections of a case that describe a single pair's teeth (which a train does not
+/// take yet), as written.
+fn single_pair_inputs(case: &Case) -> Vec<&'static str> {
+    let mut out = Vec::new();
+    if case.teeth != Default::default() {
+        out.push("[teeth]");
+    }
+    if case.modification != Default::default() {
+        out.push("[modification]");
+    }
+    if !case.fault.is_empty() {
+        out.push("[[fault]]");
+    }
+    if case.load_spectrum.is_some() {
+        out.push("[load_spectrum]");
+    }
+    out
 }
 
 /// Merge the overrides (`section.key=value` texts) into the user's tree.

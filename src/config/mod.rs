@@ -3,6 +3,7 @@
 pub mod case;
 pub mod derivable;
 mod docs;
+pub mod gear;
 pub mod load;
 pub mod load_spectrum;
 pub mod lumped;
@@ -13,6 +14,7 @@ pub mod schema;
 pub mod signals;
 pub mod spectrum_merge;
 pub mod teeth;
+pub mod train;
 
 #[cfg(test)]
 mod tests_fields;

@@ -6,12 +6,14 @@
 use super::schema::KEYS;
 
 /// The files holding the section structs.
-const SOURCES: [&str; 5] = [
+const SOURCES: [&str; 7] = [
     include_str!("case.rs"),
+    include_str!("gear.rs"),
     include_str!("lumped.rs"),
     include_str!("operating.rs"),
     include_str!("signals.rs"),
     include_str!("teeth.rs"),
+    include_str!("train.rs"),
 ];
 
 /// Fields of a section that are not keys of the schema: the spectrum's bins (a table or a
@@ -71,6 +73,7 @@ fn sections() -> Vec<(String, String)> {
         .map(|f| {
             let ty = match f.ty.as_str() {
                 "Vec<ToothFault>" => "FaultTable".to_string(),
+                "Vec<StageSpec>" => "StageSpec".to_string(),
                 t => t
                     .trim_start_matches("Option<")
                     .trim_end_matches('>')

@@ -6,7 +6,6 @@
 
 use super::model::SpectrumModel;
 use super::wear::{advance, first_record, respond, SpectrumRecord, SpectrumRun};
-use crate::dynamics::model::NSTATE;
 use crate::study::wear_loop::{block_length, start_of};
 
 /// The record after `last` as the run computes it (`wear::run_spectrum_wear`): the
@@ -26,7 +25,7 @@ fn next_record(
         remaining,
     );
     let mut next = advance(last, &run.shares, n);
-    let starts: Vec<Option<[f64; NSTATE]>> = last.bins.iter().map(start_of).collect();
+    let starts: Vec<Option<Vec<f64>>> = last.bins.iter().map(start_of).collect();
     let bins = respond(sm, run.mode, &next.wear, &starts).ok()?;
     next.roughness_um = sm.bins[0].roughness_for(&next.wear);
     next.bins = bins;

@@ -25,7 +25,6 @@
 //! operating point the flanks see.
 
 use super::model::SpectrumModel;
-use crate::dynamics::model::NSTATE;
 use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
 use crate::study::wear_loop::{
@@ -139,13 +138,13 @@ pub(super) fn respond(
     sm: &SpectrumModel,
     mode: WearMode,
     wear: &WearState,
-    starts: &[Option<[f64; NSTATE]>],
+    starts: &[Option<Vec<f64>>],
 ) -> Result<Vec<UpdateRecord>, (usize, BinFailure)> {
     let solved: Vec<Result<DynamicResponse, DynamicsError>> = sm
         .bins
         .par_iter()
         .zip(starts.par_iter())
-        .map(|(m, s)| solve(m, mode, wear, s.as_ref()))
+        .map(|(m, s)| solve(m, mode, wear, s.as_deref()))
         .collect();
     let mut out = Vec::with_capacity(solved.len());
     for (i, r) in solved.into_iter().enumerate() {
@@ -265,7 +264,7 @@ pub fn run_spectrum_wear(
         let inc = last.increment(&run.shares);
         let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
         let mut next = advance(last, &run.shares, n);
-        let starts: Vec<Option<[f64; NSTATE]>> = last.bins.iter().map(start_of).collect();
+        let starts: Vec<Option<Vec<f64>>> = last.bins.iter().map(start_of).collect();
         let state = &next.wear;
         match respond(sm, run.mode, state, &starts) {
             Ok(bins) => {

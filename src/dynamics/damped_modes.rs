@@ -14,7 +14,8 @@
 //! - damped frequency |Im lambda| / 2 pi, Hz, and pole magnitude |lambda| / 2 pi, Hz (the
 //!   undamped natural frequency of a one-degree-of-freedom mode with this pole);
 //! - damping ratio zeta = -Re lambda / |lambda| (1 for a real, overdamped pole);
-//! - mesh strain-energy share e_mesh = k_mean |g^T phi|^2 / (phi^H K phi): the share of the
+//! - mesh strain-energy share e_mesh = k_mean |g^T phi|^2 / (phi^H K phi) (summed over a
+//!   train's meshes): the share of the
 //!   mesh spring in the strain energy of the mode. For a complex mode the real motion is
 //!   q(t) = Re(phi e^(lambda t)); over one cycle of its oscillation (envelope held), the
 //!   mean of (Re(a e^(i w t)))^2 is |a|^2 / 2 for every component, so the cycle-averaged
@@ -27,8 +28,8 @@
 //! the rigid rotation r, lambda = 0) has no frequency, damping or strain energy and is
 //! left out; its velocity decays through the slip damper as a real pole, which is kept.
 
-use super::modal::linearised_matrices;
-use super::model::{GearSystem, NDOF};
+use super::modal::{linearised_matrices, mean_mesh_stiffnesses};
+use super::model::GearSystem;
 use nalgebra::{Complex, DMatrix};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -59,10 +60,11 @@ pub struct DampedMode {
     /// Share of the mode's strain energy in the mesh spring (0..1).
     pub mesh_energy_share: f64,
     pub kind: PoleKind,
-    /// Mode shape in the 8 coordinates (0 on an imposed coordinate), scaled so that its
-    /// largest component (in mass-normalised coordinates) is real and 1 / sqrt(mass).
+    /// Mode shape in the assembled coordinates (0 on an imposed coordinate), scaled so
+    /// that its largest component (in mass-normalised coordinates) is real and
+    /// 1 / sqrt(mass).
     #[serde(skip)]
-    pub shape: [Complex<f64>; NDOF],
+    pub shape: Vec<Complex<f64>>,
 }
 
 /// Smallest mesh-energy share of a "mesh pole".
@@ -95,14 +97,19 @@ impl DampedModes {
 }
 
 /// Linearised damping matrix of the free coordinates `free` (as returned by
-/// [`linearised_matrices`]): C_lin + c_m g g^T, N s/m, N m s/rad and mixed.
+/// [`linearised_matrices`]): C_lin + sum_m c_m g_m g_m^T, N s/m, N m s/rad and mixed.
 pub fn linearised_damping(sys: &GearSystem, free: &[usize]) -> DMatrix<f64> {
     let (_, c_lin, _) = sys.linear_parts();
-    let g = sys.mesh_gradient();
-    let c_m = sys.mesh_damping_n_s_per_m;
+    let grads: Vec<_> = (0..sys.meshes.len())
+        .map(|m| sys.mesh_gradient(m))
+        .collect();
     DMatrix::from_fn(free.len(), free.len(), |a, b| {
         let (i, j) = (free[a], free[b]);
-        c_lin[(i, j)] + c_m * g[i] * g[j]
+        let mut v = c_lin[(i, j)];
+        for (g, mesh) in grads.iter().zip(&sys.meshes) {
+            v += mesh.mesh_damping_n_s_per_m * g[i] * g[j];
+        }
+        v
     })
 }
 
@@ -132,8 +139,10 @@ pub fn damped_modes(sys: &GearSystem) -> DampedModes {
         }
     }
     let eig = a.complex_eigenvalues();
-    let g = sys.mesh_gradient();
-    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
+    let grads: Vec<_> = (0..sys.meshes.len())
+        .map(|m| sys.mesh_gradient(m))
+        .collect();
+    let k_mean = mean_mesh_stiffnesses(sys);
     let mut out = Vec::new();
     for lam in eig.iter().copied() {
         if lam.im < 0.0 {
@@ -148,11 +157,19 @@ pub fn damped_modes(sys: &GearSystem) -> DampedModes {
         if is_rigid_rotation(&kt, &phi_u) {
             continue;
         }
-        let mut shape = [Complex::new(0.0, 0.0); NDOF];
+        let mut shape = vec![Complex::new(0.0, 0.0); sys.dofs()];
         for (idx, &dof) in free.iter().enumerate() {
             shape[dof] = phi_u[idx] * s[idx];
         }
-        let g_phi: Complex<f64> = free.iter().map(|&d| shape[d] * g[d]).sum();
+        // Strain energy of the mesh springs, sum over meshes of k_m |g_m^T phi|^2.
+        let mesh_energy: f64 = grads
+            .iter()
+            .zip(&k_mean)
+            .map(|(g, km)| {
+                let g_phi: Complex<f64> = free.iter().map(|&d| shape[d] * g[d]).sum();
+                km * g_phi.norm_sqr()
+            })
+            .sum();
         let mut phk = 0.0;
         for (a_i, &i) in free.iter().enumerate() {
             for (b_i, &j) in free.iter().enumerate() {
@@ -160,7 +177,7 @@ pub fn damped_modes(sys: &GearSystem) -> DampedModes {
             }
         }
         let share = if phk > 0.0 {
-            (k_mean * g_phi.norm_sqr() / phk).clamp(0.0, 1.0)
+            (mesh_energy / phk).clamp(0.0, 1.0)
         } else {
             0.0
         };

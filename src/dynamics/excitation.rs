@@ -18,6 +18,13 @@ pub struct PairGap {
 }
 
 impl PairGap {
+    /// No gap (new teeth), as a constant (a train's unworn meshes borrow it).
+    pub const NONE: PairGap = PairGap {
+        rho_start_m: 0.0,
+        spacing_m: 0.0,
+        gap_m: Vec::new(),
+    };
+
     /// No gap (new teeth).
     pub fn none() -> Self {
         Self::default()
@@ -66,6 +73,13 @@ pub struct ExternalError {
 }
 
 impl ExternalError {
+    /// No error, as a constant.
+    pub const NONE: ExternalError = ExternalError {
+        phase_rad: Vec::new(),
+        error_m: Vec::new(),
+        period_rad: 0.0,
+    };
+
     pub fn none() -> Self {
         Self::default()
     }

@@ -5,7 +5,12 @@
 //! steps across such a kink loses its order there; placing grid nodes exactly on them
 //! keeps the full order (the nominal mesh phase Omega_p t fixes their times in advance).
 //! Steps are spread over the segments between events in proportion to their length.
+//!
+//! A train's meshes turn at different speeds: the excitation repeats over the smallest
+//! common period of all of them (and of their per-tooth repeats), `excitation`, and the
+//! grid of that period holds every mesh's events ([`train_nodes`]).
 
+use super::model::GearSystem;
 use crate::geometry::GearPair;
 
 /// Node times within one mesh period, s, from 0 to the period (both included).
@@ -46,6 +51,190 @@ pub fn period_nodes(pair: &GearPair, pinion_speed_rad_s: f64, steps: usize) -> V
         used += n;
     }
     nodes
+}
+
+/// Greatest common divisor.
+fn gcd(a: u128, b: u128) -> u128 {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
+}
+
+/// A mesh's frequency over the input shaft's, as a reduced fraction (numerator,
+/// denominator): z_pinion times the product of z_driver / z_driven on the way from the
+/// input to the mesh's pinion. None if a number overflows.
+pub fn mesh_frequency_fraction(sys: &GearSystem, m: usize) -> Option<(u128, u128)> {
+    let asm = sys.assembly();
+    let e = &asm.elements;
+    // Breadth first from the input: each body's speed as a fraction of the input's.
+    let n = e.bodies.len();
+    let mut frac: Vec<Option<(u128, u128)>> = vec![None; n];
+    frac[e.drive.input] = Some((1, 1));
+    let mut queue = std::collections::VecDeque::from([e.drive.input]);
+    while let Some(b) = queue.pop_front() {
+        let (num, den) = frac[b]?;
+        let shafts = e.shafts.iter().filter_map(|s| match s.ends {
+            [x, y] if x == b => Some((y, 1, 1)),
+            [x, y] if y == b => Some((x, 1, 1)),
+            _ => None,
+        });
+        let meshes = e.meshes.iter().filter_map(|l| {
+            let [zp, zg] = l.teeth.map(|z| z as u128);
+            if l.pinion == b {
+                Some((l.gear, zp, zg))
+            } else if l.gear == b {
+                Some((l.pinion, zg, zp))
+            } else {
+                None
+            }
+        });
+        for (other, a, c) in shafts.chain(meshes).collect::<Vec<_>>() {
+            if frac[other].is_none() {
+                let (p, q) = (num.checked_mul(a)?, den.checked_mul(c)?);
+                let g = gcd(p, q);
+                frac[other] = Some((p / g, q / g));
+                queue.push_back(other);
+            }
+        }
+    }
+    let link = &e.meshes[m];
+    let (num, den) = frac[link.pinion]?;
+    let p = num.checked_mul(link.teeth[0] as u128)?;
+    let g = gcd(p, den);
+    Some((p / g, den / g))
+}
+
+/// The smallest time after which every mesh of `sys` is in the same phase again, in
+/// input revolutions as a reduced fraction, each mesh repeating every `repeats[m]` of its
+/// own mesh periods (1, or a tooth-resolved mesh's `ToothMesh::periods`): the lcm of the
+/// rationals repeats_m / (f_m / f_in), lcm(b_m) / gcd(a_m) for f_m / (f_in repeats_m) =
+/// a_m / b_m reduced. None if a number overflows.
+pub fn common_period_revolutions(sys: &GearSystem, repeats: &[usize]) -> Option<(u128, u128)> {
+    let (mut l, mut g) = (1u128, 0u128);
+    for (m, r) in repeats.iter().enumerate() {
+        let (a, b) = mesh_frequency_fraction(sys, m)?;
+        let b = b.checked_mul(*r as u128)?;
+        let d = gcd(a, b);
+        let (a, b) = (a / d, b / d);
+        l = (l / gcd(l, b)).checked_mul(b)?;
+        g = gcd(g, a);
+    }
+    let d = gcd(l, g.max(1));
+    Some((l / d, g.max(1) / d))
+}
+
+/// Mesh periods of each mesh of a chain of stages (each stage's gear on the next stage's
+/// pinion's shaft; `teeth[k]` = [z_pinion, z_gear]) in the train's base period: with
+/// f_k / f_in = z_p,k prod_{j<k} z_p,j / z_g,j = a_k / b_k reduced, the base period is
+/// lcm(b_k) / gcd(a_k) input revolutions (as [`common_period_revolutions`]). The single
+/// pair: [1]. None if a number overflows.
+pub fn chain_mesh_counts(teeth: &[[usize; 2]]) -> Option<Vec<u128>> {
+    let (mut num, mut den) = (1u128, 1u128);
+    let mut fracs = Vec::with_capacity(teeth.len());
+    for [zp, zg] in teeth {
+        let (zp, zg) = (*zp as u128, *zg as u128);
+        let a = num.checked_mul(zp)?;
+        let g = gcd(a, den);
+        fracs.push((a / g, den / g));
+        let (n2, d2) = (num.checked_mul(zp)?, den.checked_mul(zg)?);
+        let g = gcd(n2, d2);
+        (num, den) = (n2 / g, d2 / g);
+    }
+    let (mut l, mut g) = (1u128, 0u128);
+    for (a, b) in &fracs {
+        l = (l / gcd(l, *b)).checked_mul(*b)?;
+        g = gcd(g, *a);
+    }
+    let g = g.max(1);
+    fracs
+        .iter()
+        .map(|(a, b)| {
+            // (l / g) (a / b), an integer.
+            let num = l.checked_mul(*a)?;
+            let den = g.checked_mul(*b)?;
+            (num % den == 0).then_some(num / den)
+        })
+        .collect()
+}
+
+/// Mesh periods of mesh `m` in `revolutions` (a reduced fraction) of the input.
+pub fn mesh_periods_in(sys: &GearSystem, m: usize, revolutions: (u128, u128)) -> Option<u128> {
+    let (a, b) = mesh_frequency_fraction(sys, m)?;
+    let num = revolutions.0.checked_mul(a)?;
+    let den = revolutions.1.checked_mul(b)?;
+    (num % den == 0).then_some(num / den)
+}
+
+/// The excitation of `sys` with all teeth alike: its common period (s) and the number of
+/// mesh periods of each mesh in it. The single pair: one mesh period.
+pub fn base_period(sys: &GearSystem) -> Option<(f64, Vec<usize>)> {
+    let ones = vec![1; sys.meshes.len()];
+    let revs = common_period_revolutions(sys, &ones)?;
+    let counts = (0..sys.meshes.len())
+        .map(|m| mesh_periods_in(sys, m, revs).and_then(|c| usize::try_from(c).ok()))
+        .collect::<Option<Vec<usize>>>()?;
+    let mesh0 = sys.mesh(0);
+    let t0 = mesh0.parts.pair.mesh_angle_rad() / mesh0.operating.speeds_rad_s[0];
+    Some((t0 * counts[0] as f64, counts))
+}
+
+/// Base periods ([`base_period`]) after which a train with tooth-resolved meshes repeats
+/// (each mesh's teeth repeat after `ToothMesh::periods` of its mesh periods): 1 when every
+/// tooth is alike. None if a number overflows.
+pub fn excitation_periods(sys: &GearSystem) -> Option<usize> {
+    let repeats: Vec<usize> = sys
+        .meshes
+        .iter()
+        .map(|m| m.parts.teeth.map_or(1, |tm| tm.periods()))
+        .collect();
+    let ones = vec![1; repeats.len()];
+    let (p0, q0) = common_period_revolutions(sys, &ones)?;
+    let (p, q) = common_period_revolutions(sys, &repeats)?;
+    // (p / q) / (p0 / q0), an integer.
+    let num = p.checked_mul(q0)?;
+    let den = q.checked_mul(p0)?;
+    (num % den == 0)
+        .then_some(num / den)
+        .and_then(|k| usize::try_from(k).ok())
+}
+
+/// Node times within one base period of a train ([`base_period`]), s, from 0 to the
+/// period: every mesh's [`period_nodes`] repeated over its mesh periods in the base
+/// period, merged (nodes of two meshes closer than 1e-9 of the shortest mesh period are
+/// one). The single pair: its [`period_nodes`] exactly.
+pub fn train_nodes(sys: &GearSystem, steps: usize) -> Option<Vec<f64>> {
+    if sys.meshes.len() == 1 {
+        let m = sys.mesh(0);
+        return Some(period_nodes(
+            m.parts.pair,
+            m.operating.speeds_rad_s[0],
+            steps,
+        ));
+    }
+    let (period, counts) = base_period(sys)?;
+    let mut nodes = Vec::new();
+    let mut shortest = f64::INFINITY;
+    for (mesh, count) in sys.meshes.iter().zip(&counts) {
+        let w = mesh.operating.speeds_rad_s[0];
+        let one = period_nodes(mesh.parts.pair, w, steps);
+        let t_mesh = period / *count as f64;
+        shortest = shortest.min(t_mesh);
+        for k in 0..*count {
+            let base = k as f64 * t_mesh;
+            nodes.extend(one[..one.len() - 1].iter().map(|t| base + t));
+        }
+    }
+    nodes.push(period);
+    nodes.sort_by(f64::total_cmp);
+    let tol = 1e-9 * shortest;
+    nodes.dedup_by(|a, b| (*a - *b).abs() < tol);
+    // The period's end stays exact.
+    if let Some(last) = nodes.last_mut() {
+        *last = period;
+    }
+    Some(nodes)
 }
 
 #[cfg(test)]

@@ -35,7 +35,14 @@ use super::response::DynamicResponse;
 /// its eigenvalues, leaving out the zero ones of a held coordinate or of the motor-slip
 /// drivetrain's free rotation.
 pub fn slowest_decay_rate(sys: &GearSystem) -> f64 {
-    let eig = sys.mean_state_matrix().complex_eigenvalues();
+    let a = sys.mean_state_matrix();
+    // The single pair's 16 x 16 through the fixed-size solver, as it always has.
+    let eig: Vec<nalgebra::Complex<f64>> = if a.nrows() == 16 {
+        let s = nalgebra::SMatrix::<f64, 16, 16>::from_fn(|i, j| a[(i, j)]);
+        s.complex_eigenvalues().iter().copied().collect()
+    } else {
+        a.complex_eigenvalues().iter().copied().collect()
+    };
     let scale = eig.iter().fold(0.0_f64, |m, l| m.max(l.norm()));
     eig.iter()
         .map(|l| -l.re)
@@ -68,7 +75,7 @@ pub fn run_in_periods(
 pub fn solve_hunting(
     sys: &GearSystem,
     settings: &SteadyStateSettings,
-    start: Option<&[f64; 16]>,
+    start: Option<&[f64]>,
     periods: usize,
 ) -> Result<DynamicResponse, DynamicsError> {
     let mut search = MeshPeriodSearch::new(sys, settings, start)?;
@@ -83,15 +90,19 @@ pub fn solve_hunting(
     // Run-in over the last W periods of the excitation period.
     let w = run_in_periods(sys, t_mesh, settings.tolerance, periods);
     for c in periods - w..periods {
-        search.ps.integrate(c as f64 * t_mesh, &mut y, &mut ())?;
+        search
+            .ps
+            .integrate(c as f64 * t_mesh, y.as_mut_slice(), &mut ())?;
     }
     search.periods += w;
     let budget = settings.max_mesh_periods.max(2 * periods + w);
     loop {
-        let y_start = y;
-        let mut rec = Recorder::new(periods);
+        let y_start = y.clone();
+        let mut rec = Recorder::new(sys, periods);
         for c in 0..periods {
-            search.ps.integrate(c as f64 * t_mesh, &mut y, &mut rec)?;
+            search
+                .ps
+                .integrate(c as f64 * t_mesh, y.as_mut_slice(), &mut rec)?;
         }
         search.periods += periods;
         let periodicity = search.distance_between(&y_start, &y);
@@ -104,9 +115,10 @@ pub fn solve_hunting(
                 });
             }
             let recorded_s = periods as f64 * t_mesh;
-            let repeats = settings.evaluated_mesh_periods.div_ceil(periods).max(1);
-            let (signals, path) = rec.window(recorded_s, repeats, &y_start, &y);
-            return Ok(search.response(signals, path, &rec, recorded_s, periods, periodicity, &y));
+            let repeats = super::period_search::window_repeats(sys, settings, periods);
+            let (signals, paths) =
+                rec.window(recorded_s, repeats, y_start.as_slice(), y.as_slice());
+            return Ok(search.response(signals, paths, &rec, recorded_s, periods, periodicity, &y));
         }
     }
 }

@@ -1,6 +1,7 @@
-//! One-step integrators for small first-order ODE systems `y' = f(t, y)` with
-//! `y` an `nalgebra::SVector<f64, N>` (`N = 16` for the 8-DOF gear model: 8 displacements
-//! and 8 velocities).
+//! One-step integrators for first-order ODE systems `y' = f(t, y)` with `y` an
+//! `nalgebra::OVector<f64, D>`: `D = Const<16>` (a stack vector, sized at compile time)
+//! for the paper's 8-DOF pair (8 displacements and 8 velocities), `D = Dyn` (a heap
+//! vector sized when the train is assembled) for any other train.
 //!
 //! * [`Sdirk`]: L-stable, stiffly accurate diagonally implicit Runge-Kutta methods with
 //!   simplified Newton iterations, for the tableaux of [`tableau`]: Alexander's 3-stage
@@ -14,10 +15,11 @@
 //! * [`Rk4`]: the classical explicit fourth-order Runge-Kutta method, for non-stiff
 //!   problems and as a second method in tests.
 //!
-//! Both implement [`Stepper`]. A step allocates nothing on the heap: all vectors and
-//! matrices are `SVector`/`SMatrix` on the stack and the LU factorisation is a fixed-size
-//! hand-written one (`lu.rs`). Work counters ([`StepStats`]) are returned per step and
-//! accumulated.
+//! Both implement [`Stepper`]. With a size known at compile time a step allocates nothing
+//! on the heap: the vectors and matrices are on the stack and the LU factorisation is a
+//! hand-written one (`lu.rs`); with `Dyn` the vectors of a step are allocated per step (a
+//! few per Newton iteration), which is small beside the right-hand side of a train.
+//! Work counters ([`StepStats`]) are returned per step and accumulated.
 //!
 //! Measured cost (`tests_cost.rs`, release build, one test thread, on a shared 2-core
 //! machine under load, so noisy): on a 16-state stiff linear chain with h = 1e-5 s,
@@ -30,16 +32,17 @@
 //!
 //! ```
 //! use gearwear::dynamics::integrator::{Sdirk, SdirkOptions, Stepper};
-//! use nalgebra::SVector;
+//! use nalgebra::{Const, SVector};
 //! // y' = -1e6 (y - cos t): stiff, relaxes onto cos t.
 //! let mut sys = |t: f64, y: &SVector<f64, 1>| SVector::<f64, 1>::new(-1e6 * (y[0] - t.cos()));
-//! let mut stepper = Sdirk::<1>::new(0.01, SdirkOptions::default()).unwrap();
+//! let mut stepper = Sdirk::<Const<1>>::new(0.01, SdirkOptions::default()).unwrap();
 //! let (mut t, mut y) = (0.0, SVector::<f64, 1>::new(1.0));
 //! stepper.advance(&mut sys, &mut t, &mut y, 100).unwrap();
 //! assert!((y[0] - 1.0_f64.cos()).abs() < 1e-6);
 //! ```
 
-use nalgebra::{SMatrix, SVector};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, OMatrix, OVector};
 use thiserror::Error;
 
 mod lu;
@@ -60,30 +63,39 @@ mod tests_nonlinear;
 pub use rk4::Rk4;
 pub use sdirk::{Sdirk, SdirkOptions, Trial};
 
-/// A first-order ODE system `y' = f(t, y)` of fixed size `N`.
+/// A state vector of dimension `D`.
+pub type Vector<D> = OVector<f64, D>;
+/// A square matrix of dimension `D`.
+pub type Matrix<D> = OMatrix<f64, D, D>;
+
+/// A first-order ODE system `y' = f(t, y)` of dimension `D` (`Const<N>` or `Dyn`).
 ///
 /// `&mut self` lets implementations keep caches or counters. Any closure
-/// `FnMut(f64, &SVector<f64, N>) -> SVector<f64, N>` is an `OdeSystem<N>` (with a
+/// `FnMut(f64, &OVector<f64, D>) -> OVector<f64, D>` is an `OdeSystem<D>` (with a
 /// finite-difference Jacobian).
-pub trait OdeSystem<const N: usize> {
+pub trait OdeSystem<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// The right-hand side `f(t, y)` (units of `y` per unit time).
-    fn rhs(&mut self, t: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
+    fn rhs(&mut self, t: f64, y: &Vector<D>) -> Vector<D>;
 
     /// The Jacobian `df/dy` at `(t, y)` (units 1/time for a homogeneous system), if the
     /// system can provide one. The default `None` makes the implicit stepper use forward
     /// finite differences ([`finite_difference_jacobian`]), costing `N + 1` calls of `rhs`
     /// that are counted in [`StepStats::rhs_calls`]. The Jacobian only steers the Newton
     /// iteration: an approximate one slows convergence but does not change the solution.
-    fn jacobian(&mut self, _t: f64, _y: &SVector<f64, N>) -> Option<SMatrix<f64, N, N>> {
+    fn jacobian(&mut self, _t: f64, _y: &Vector<D>) -> Option<Matrix<D>> {
         None
     }
 }
 
-impl<const N: usize, F> OdeSystem<N> for F
+impl<D: Dim, F> OdeSystem<D> for F
 where
-    F: FnMut(f64, &SVector<f64, N>) -> SVector<f64, N>,
+    F: FnMut(f64, &Vector<D>) -> Vector<D>,
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
-    fn rhs(&mut self, t: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
+    fn rhs(&mut self, t: f64, y: &Vector<D>) -> Vector<D> {
         self(t, y)
     }
 }
@@ -158,26 +170,29 @@ impl StepStats {
 }
 
 /// A fixed-step one-step method.
-pub trait Stepper<const N: usize> {
+pub trait Stepper<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// The fixed step size `h` (time units).
     fn step_size(&self) -> f64;
 
     /// Advances `y` from `t` to `t + h` in place. On error `y` is left unchanged.
-    fn step<S: OdeSystem<N>>(
+    fn step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
     ) -> Result<StepStats, IntegratorError>;
 
     /// Takes `n_steps` steps from `*t`, updating `*t` and `*y`; returns the summed
     /// counters. Times are computed as `t0 + k*h` so that they do not drift. On error,
     /// `*t` and `*y` hold the last successfully reached state.
-    fn advance<S: OdeSystem<N>>(
+    fn advance<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: &mut f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
         n_steps: usize,
     ) -> Result<StepStats, IntegratorError> {
         let t0 = *t;
@@ -196,18 +211,22 @@ pub trait Stepper<const N: usize> {
 /// `d_j = sqrt(eps) * max(|y_j|, floor_j)`: the relative increment balances truncation
 /// (~d) and cancellation (~eps/d) errors; `floor_j` (units of `y_j`) is the magnitude
 /// below which component `j` counts as zero (must be > 0). `f_y` must be `f(t, y)`. Makes `N` calls of
-/// `rhs`.
-pub fn finite_difference_jacobian<S: OdeSystem<N>, const N: usize>(
+/// `rhs` (`N` the dimension).
+pub fn finite_difference_jacobian<S: OdeSystem<D>, D: Dim>(
     sys: &mut S,
     t: f64,
-    y: &SVector<f64, N>,
-    f_y: &SVector<f64, N>,
-    floor: &SVector<f64, N>,
-) -> SMatrix<f64, N, N> {
+    y: &Vector<D>,
+    f_y: &Vector<D>,
+    floor: &Vector<D>,
+) -> Matrix<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     let sqrt_eps = f64::EPSILON.sqrt();
-    let mut jac = SMatrix::<f64, N, N>::zeros();
-    let mut y_pert = *y;
-    for j in 0..N {
+    let (dim, _) = y.shape_generic();
+    let mut jac = Matrix::<D>::zeros_generic(dim, dim);
+    let mut y_pert = y.clone();
+    for j in 0..y.len() {
         let yj = y[j];
         let step = sqrt_eps * yj.abs().max(floor[j]);
         // A zero or non-finite floor would give a zero step: fall back to sqrt(eps).

@@ -1,6 +1,7 @@
 //! The 8-DOF tribo-dynamic model (paper eq. 1-6), its integrator, steady state,
 //! quasi-static twin, signals and modes.
 
+pub mod assembly;
 pub mod damped_modes;
 pub mod drive;
 pub mod excitation;

@@ -3,29 +3,43 @@
 //! its coordinate), with K = K_bearings+couplings + k_mean g g^T (g = d delta/dq).
 //! Solved as the symmetric problem M^-1/2 K M^-1/2 (M is diagonal).
 
-use super::model::{GearSystem, NDOF};
+use super::model::GearSystem;
 use nalgebra::{DMatrix, SymmetricEigen};
 
 /// Undamped modes, ascending in frequency.
 #[derive(Debug, Clone, Default)]
 pub struct Modes {
     pub frequency_hz: Vec<f64>,
-    /// Mass-normalised shapes in the 8 coordinates (0 on an imposed coordinate).
-    pub shapes: Vec<[f64; NDOF]>,
+    /// Mass-normalised shapes in the assembled coordinates (0 on an imposed coordinate).
+    pub shapes: Vec<Vec<f64>>,
+}
+
+/// Each mesh's mean stiffness, N/m.
+pub fn mean_mesh_stiffnesses(sys: &GearSystem) -> Vec<f64> {
+    sys.meshes
+        .iter()
+        .map(|m| m.parts.mesh.mean_stiffness_n_per_m())
+        .collect()
 }
 
 /// Linearised mass (diagonal) and stiffness matrices of the free coordinates, and the
-/// indices of those coordinates.
+/// indices of those coordinates: K = K_lin + sum_m k_mean,m g_m g_m^T.
 pub fn linearised_matrices(sys: &GearSystem) -> (Vec<f64>, DMatrix<f64>, Vec<usize>) {
     let (k_lin, _, inv_mass) = sys.linear_parts();
-    let g = sys.mesh_gradient();
-    let k_mean = sys.parts.mesh.mean_stiffness_n_per_m();
-    let free: Vec<usize> = (0..NDOF).filter(|i| inv_mass[*i] > 0.0).collect();
+    let k_mean = mean_mesh_stiffnesses(sys);
+    let grads: Vec<_> = (0..sys.meshes.len())
+        .map(|m| sys.mesh_gradient(m))
+        .collect();
+    let free: Vec<usize> = (0..sys.dofs()).filter(|i| inv_mass[*i] > 0.0).collect();
     let n = free.len();
     let mut k = DMatrix::zeros(n, n);
     for (a, &i) in free.iter().enumerate() {
         for (b, &j) in free.iter().enumerate() {
-            k[(a, b)] = k_lin[(i, j)] + k_mean * g[i] * g[j];
+            let mut v = k_lin[(i, j)];
+            for (g, km) in grads.iter().zip(&k_mean) {
+                v += km * g[i] * g[j];
+            }
+            k[(a, b)] = v;
         }
     }
     let m = free.iter().map(|&i| 1.0 / inv_mass[i]).collect();
@@ -45,7 +59,7 @@ pub fn modes(sys: &GearSystem) -> Modes {
         let lam = eig.eigenvalues[i].max(0.0);
         out.frequency_hz
             .push(lam.sqrt() / (2.0 * std::f64::consts::PI));
-        let mut shape = [0.0; NDOF];
+        let mut shape = vec![0.0; sys.dofs()];
         for (a, &dof) in free.iter().enumerate() {
             shape[dof] = eig.eigenvectors[(a, i)] * s[a];
         }

@@ -50,6 +50,96 @@ impl OperatingPoint {
     }
 }
 
+/// The operating point of one mesh of a train: its gears' speeds and torques, its mesh
+/// frequency and its friction-free force.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MeshPoint {
+    /// Nominal speeds of the mesh's pinion and gear, rad/s.
+    pub pinion_speed_rad_s: f64,
+    pub gear_speed_rad_s: f64,
+    /// Mean torques on the pinion's and the gear's shafts, N m.
+    pub pinion_torque_nm: f64,
+    pub gear_torque_nm: f64,
+    /// Mesh frequency z_pinion f_pinion, Hz.
+    pub mesh_frequency_hz: f64,
+    /// Mean mesh force without friction, N: a shaft's torque over its base radius.
+    pub static_mesh_force_n: f64,
+}
+
+/// The operating point of a train (`config::train`), computed once from `[operating]`
+/// and the stages' pairs: every shaft's speed and torque and every mesh's frequency and
+/// force. The input speed turns stage 1's pinion; each stage's gear turns at its
+/// pinion's speed times z_pinion / z_gear and carries its pinion's torque times
+/// r_gb / r_pb (friction-free, through the base radii), the next stage's pinion on the
+/// same shaft; the load torque acts on the input shaft (`load_torque_shaft` =
+/// "pinion") or the output shaft ("gear"). A one-stage train's numbers are the single
+/// pair's [`OperatingPoint`]'s, computed the same way.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrainOperatingPoint {
+    /// One per stage, in order.
+    pub meshes: Vec<MeshPoint>,
+}
+
+impl TrainOperatingPoint {
+    /// The operating point of `op` on a train of `pairs` (stage order).
+    pub fn of(op: &OperatingSection, pairs: &[&GearPair]) -> Self {
+        let omega_in = 2.0 * PI * op.input_speed_hz;
+        let mut torque = match op.load_torque_shaft {
+            TorqueShaft::Pinion => op.load_torque_nm,
+            TorqueShaft::Gear => {
+                // Back from the output, stage by stage, as the single pair does.
+                let mut t = op.load_torque_nm;
+                for p in pairs.iter().rev() {
+                    t = t * p.pinion.base_radius_m / p.gear.base_radius_m;
+                }
+                t
+            }
+        };
+        let mut speed = omega_in;
+        let mut meshes = Vec::with_capacity(pairs.len());
+        for (k, p) in pairs.iter().enumerate() {
+            let (rpb, rgb) = (p.pinion.base_radius_m, p.gear.base_radius_m);
+            let gear_torque = match (op.load_torque_shaft, k + 1 == pairs.len()) {
+                // The output's torque as given, not moved there and back.
+                (TorqueShaft::Gear, true) => op.load_torque_nm,
+                _ => torque * rgb / rpb,
+            };
+            let gear_speed = speed * p.pinion.teeth as f64 / p.gear.teeth as f64;
+            meshes.push(MeshPoint {
+                pinion_speed_rad_s: speed,
+                gear_speed_rad_s: gear_speed,
+                pinion_torque_nm: torque,
+                gear_torque_nm: gear_torque,
+                mesh_frequency_hz: speed / (2.0 * PI) * p.pinion.teeth as f64,
+                static_mesh_force_n: gear_torque / rgb,
+            });
+            torque = gear_torque;
+            speed = gear_speed;
+        }
+        Self { meshes }
+    }
+
+    /// Nominal speed of every body of `assembly::Elements::train` (motor, each stage's
+    /// pinion and gear, load), rad/s.
+    pub fn body_speeds_rad_s(&self) -> Vec<f64> {
+        let mut out = vec![self.meshes[0].pinion_speed_rad_s];
+        for m in &self.meshes {
+            out.push(m.pinion_speed_rad_s);
+            out.push(m.gear_speed_rad_s);
+        }
+        out.push(self.meshes[self.meshes.len() - 1].gear_speed_rad_s);
+        out
+    }
+
+    /// Mean torques on the input (motor) and output (load) shafts, N m.
+    pub fn end_torques_nm(&self) -> (f64, f64) {
+        (
+            self.meshes[0].pinion_torque_nm,
+            self.meshes[self.meshes.len() - 1].gear_torque_nm,
+        )
+    }
+}
+
 /// Parameters of paper eq. (1), SI: the lumped masses, inertias, bearing and coupling
 /// stiffness and damping of the case (already SI, units in their names), and the
 /// operating point derived from the case and the pair.
@@ -60,16 +150,6 @@ pub struct DynamicParams {
     pub speed_boundary: SpeedBoundary,
     pub motor_slip_damping_nm_s_per_rad: f64,
     pub operating: OperatingPoint,
-}
-
-/// The solver reads the operating point's speeds and torques as `params.pinion_speed_rad_s`
-/// and so on; they are the [`OperatingPoint`]'s, stored once.
-impl std::ops::Deref for DynamicParams {
-    type Target = OperatingPoint;
-
-    fn deref(&self) -> &OperatingPoint {
-        &self.operating
-    }
 }
 
 impl DynamicParams {
@@ -87,19 +167,47 @@ impl DynamicParams {
     /// Equivalent mass of the mesh's torsional mode, kg (docs/PAPER_NOTES.md):
     /// m_e = J_p J_g / (J_p r_gb^2 + J_g r_pb^2).
     pub fn equivalent_mesh_mass_kg(&self, pair: &GearPair) -> f64 {
-        let (jp, jg) = (
-            self.lumped.inertia_pinion_kg_m2,
-            self.lumped.inertia_gear_kg_m2,
-        );
-        let (rp, rg) = (pair.pinion.base_radius_m, pair.gear.base_radius_m);
-        jp * jg / (jp * rg * rg + jg * rp * rp)
+        equivalent_mesh_mass_kg(
+            [
+                self.lumped.inertia_pinion_kg_m2,
+                self.lumped.inertia_gear_kg_m2,
+            ],
+            [pair.pinion.base_radius_m, pair.gear.base_radius_m],
+        )
     }
 
     /// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m (the paper gives none; docs/PAPER_NOTES.md).
     pub fn mesh_damping_n_s_per_m(&self, pair: &GearPair, mean_stiffness_n_per_m: f64) -> f64 {
-        2.0 * self.lumped.mesh_damping_ratio
-            * (mean_stiffness_n_per_m * self.equivalent_mesh_mass_kg(pair)).sqrt()
+        mesh_damping_n_s_per_m(
+            self.lumped.mesh_damping_ratio,
+            [
+                self.lumped.inertia_pinion_kg_m2,
+                self.lumped.inertia_gear_kg_m2,
+            ],
+            [pair.pinion.base_radius_m, pair.gear.base_radius_m],
+            mean_stiffness_n_per_m,
+        )
     }
+}
+
+/// Equivalent mass of a mesh's torsional mode, kg, from the polar inertias of its pinion
+/// and gear (kg m^2) and their base radii (m): m_e = J_p J_g / (J_p r_gb^2 + J_g r_pb^2).
+pub fn equivalent_mesh_mass_kg(inertia_kg_m2: [f64; 2], base_radius_m: [f64; 2]) -> f64 {
+    let [jp, jg] = inertia_kg_m2;
+    let [rp, rg] = base_radius_m;
+    jp * jg / (jp * rg * rg + jg * rp * rp)
+}
+
+/// Mesh damping c_m = 2 zeta sqrt(k_mean m_e), N s/m, for the damping ratio zeta, the
+/// inertias and base radii of the mesh's gears and its mean stiffness (N/m).
+pub fn mesh_damping_n_s_per_m(
+    damping_ratio: f64,
+    inertia_kg_m2: [f64; 2],
+    base_radius_m: [f64; 2],
+    mean_stiffness_n_per_m: f64,
+) -> f64 {
+    2.0 * damping_ratio
+        * (mean_stiffness_n_per_m * equivalent_mesh_mass_kg(inertia_kg_m2, base_radius_m)).sqrt()
 }
 
 #[cfg(test)]
@@ -114,8 +222,8 @@ mod tests {
         // docs/PAPER_NOTES.md: m_e = 0.506 kg for the paper's inertias.
         assert!((p.equivalent_mesh_mass_kg(&pair) - 0.506).abs() < 5e-4);
         // 60 N m on the pinion: mesh force 60 / r_pb = 3361 N, both ways round.
-        let f_from_brake = p.brake_torque_nm / pair.gear.base_radius_m;
-        let f_from_motor = p.motor_torque_nm / pair.pinion.base_radius_m;
+        let f_from_brake = p.operating.brake_torque_nm / pair.gear.base_radius_m;
+        let f_from_motor = p.operating.motor_torque_nm / pair.pinion.base_radius_m;
         assert!((f_from_brake - 3360.6).abs() < 0.5, "{f_from_brake}");
         assert!((f_from_brake - f_from_motor).abs() < 1e-9);
         // Mesh frequency 19 x 30 Hz.

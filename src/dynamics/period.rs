@@ -1,4 +1,4 @@
-//! Integration of the gear model over one mesh period: error-controlled steps between
+//! Integration of the gear model over one period (a mesh period; a train's common period): error-controlled steps between
 //! the grid nodes, contact-mode events located inside steps, and what is recorded.
 //!
 //! Steps. The grid nodes of [`super::grid::period_nodes`] (the mesh events, where a pair
@@ -18,11 +18,14 @@
 //! located point is a point of the discrete solution), and the next step starts in the
 //! new mode. A Newton failure rejects the step and halves it, down to a floor.
 
+use super::assembly::Dof;
 use super::integrator::tableau::ESDIRK32;
-use super::integrator::{IntegratorError, OdeSystem, Sdirk, SdirkOptions, Trial};
-use super::model::SWITCHES;
-use super::model::{dof, ContactFrame, ContactMode, GearSystem, ModeSwitch, State, NDOF, NSTATE};
-use nalgebra::SMatrix;
+use super::integrator::{
+    IntegratorError, Matrix, OdeSystem, Sdirk, SdirkOptions, StepStats, Trial, Vector,
+};
+use super::model::{ContactFrame, ContactModes, GearSystem, MeshState, ModeSwitch, State};
+use nalgebra::allocator::Allocator;
+use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
 
 /// Why an integration over a mesh period failed.
 #[derive(Debug, Clone, thiserror::Error)]
@@ -65,20 +68,28 @@ fn advice(intervals: usize, tolerance: f64) -> String {
     )
 }
 
-/// What a caller sees of the solution over a period.
+/// What a caller sees of the solution over a period (states y = [q; dq/dt] as slices).
 pub trait PeriodObserver {
     /// A point of the solution: the period start and every accepted step's end but the
     /// period's last. `decide` is a time inside the node interval the point opens (the
     /// right limit at a mesh event).
-    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State);
-    /// An accepted step from `(t, y0)` to `(t + h, y1)`, taken in contact mode `mode`.
-    fn step(&mut self, sys: &GearSystem, t: f64, h: f64, y0: &State, y1: &State, mode: ContactMode);
+    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]);
+    /// An accepted step from `(t, y0)` to `(t + h, y1)`, taken in contact modes `mode`.
+    fn step(
+        &mut self,
+        sys: &GearSystem,
+        t: f64,
+        h: f64,
+        y0: &[f64],
+        y1: &[f64],
+        mode: ContactModes,
+    );
 }
 
 /// Observes nothing (the periods of the steady-state search).
 impl PeriodObserver for () {
-    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &State) {}
-    fn step(&mut self, _: &GearSystem, _: f64, _: f64, _: &State, _: &State, _: ContactMode) {}
+    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &[f64]) {}
+    fn step(&mut self, _: &GearSystem, _: f64, _: f64, _: &[f64], _: &[f64], _: ContactModes) {}
 }
 
 /// Work counters of the period integrations.
@@ -95,50 +106,140 @@ pub struct StepCounts {
 }
 
 /// Scales of the state of the gear model, SI: the mesh deflection under the nominal load
-/// (m) for every displacement along the line of action, and the same at the mesh
-/// frequency (m/s) for the velocities; angles through their shaft's base radius.
+/// (m) for every displacement along a line of action, and the same at the mesh frequency
+/// (m/s) for the velocities; angles through their body's base radius. In a train, the
+/// smallest static deflection and the highest mesh frequency of its meshes, and a body
+/// with no mesh (a motor, a load) takes the lever of the gear its shaft joins.
 pub fn state_scales(sys: &GearSystem) -> State {
-    let p = sys.parts.params;
-    let f_nominal = p.brake_torque_nm / sys.parts.pair.gear.base_radius_m;
-    let delta_ref = f_nominal / sys.parts.mesh.mean_stiffness_n_per_m();
-    let omega_mesh = p.pinion_speed_rad_s * sys.parts.pair.pinion.teeth as f64;
-    let (rp, rg) = (
-        sys.parts.pair.pinion.base_radius_m,
-        sys.parts.pair.gear.base_radius_m,
-    );
-    let mut s = State::zeros();
-    for i in 0..NDOF {
-        let lever = match i {
-            dof::PHI_M | dof::PHI_P => rp,
-            dof::PHI_G | dof::PHI_B => rg,
+    let (mut delta_ref, mut omega_mesh) = (f64::INFINITY, 0.0_f64);
+    for m in &sys.meshes {
+        let f_nominal = m.operating.torques_nm[1] / m.parts.pair.gear.base_radius_m;
+        delta_ref = delta_ref.min(f_nominal / m.parts.mesh.mean_stiffness_n_per_m());
+        let w = m.operating.speeds_rad_s[0] * m.parts.pair.pinion.teeth as f64;
+        omega_mesh = omega_mesh.max(w);
+    }
+    let levers = rotation_levers(sys);
+    let asm = sys.assembly();
+    let n = sys.dofs();
+    let mut s = State::zeros(2 * n);
+    for i in 0..n {
+        let lever = match asm.describe(i) {
+            (_, Dof::Rotation) => levers[i],
             _ => 1.0,
         };
         s[i] = delta_ref / lever;
-        s[NDOF + i] = delta_ref * omega_mesh / lever;
+        s[n + i] = delta_ref * omega_mesh / lever;
     }
     s
 }
 
+/// The base radius through which each rotation coordinate moves a line of action (1 for
+/// the lateral ones): a gear's in its first mesh, a body without one that of the nearest
+/// gear along its shafts.
+fn rotation_levers(sys: &GearSystem) -> Vec<f64> {
+    let asm = sys.assembly();
+    let e = &asm.elements;
+    let mut lever = vec![0.0; e.bodies.len()];
+    for link in e.meshes.iter().rev() {
+        lever[link.pinion] = link.base_radius_m[0];
+        lever[link.gear] = link.base_radius_m[1];
+    }
+    // Spread along shafts until every body has one (a connected train: at most n sweeps).
+    for _ in 0..e.bodies.len() {
+        for s in &e.shafts {
+            let [a, b] = s.ends;
+            if lever[a] == 0.0 && lever[b] > 0.0 {
+                lever[a] = lever[b];
+            } else if lever[b] == 0.0 && lever[a] > 0.0 {
+                lever[b] = lever[a];
+            }
+        }
+    }
+    let mut out = vec![1.0; sys.dofs()];
+    for (b, l) in lever.iter().enumerate() {
+        if let Some(i) = asm.index(b, Dof::Rotation) {
+            out[i] = if *l > 0.0 { *l } else { 1.0 };
+        }
+    }
+    out
+}
+
 /// The model seen by the integrator during one trial step: the system and the contact
-/// frame of that step (pairs decided at its middle, its contact mode frozen).
-struct Ode<'s, 'a> {
+/// frame of that step (pairs decided at its middle, its contact modes frozen), and room
+/// for the meshes' states.
+struct Ode<'s, 'a, 'w> {
     sys: &'s GearSystem<'a>,
     frame: ContactFrame,
+    meshes: &'w mut [MeshState],
 }
 
-impl OdeSystem<NSTATE> for Ode<'_, '_> {
-    fn rhs(&mut self, t: f64, y: &State) -> State {
-        self.sys.derivative(self.frame, t, y).0
+impl<D: Dim> OdeSystem<D> for Ode<'_, '_, '_>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    fn rhs(&mut self, t: f64, y: &Vector<D>) -> Vector<D> {
+        let (dim, _) = y.shape_generic();
+        let mut dy = Vector::<D>::zeros_generic(dim, U1);
+        self.sys
+            .derivative_into(self.frame, t, y.as_slice(), dy.as_mut_slice(), self.meshes);
+        dy
     }
-    fn jacobian(&mut self, t: f64, y: &State) -> Option<SMatrix<f64, NSTATE, NSTATE>> {
-        Some(self.sys.jacobian(self.frame, t, y))
+    fn jacobian(&mut self, t: f64, y: &Vector<D>) -> Option<Matrix<D>> {
+        let (dim, _) = y.shape_generic();
+        let mut j = Matrix::<D>::zeros_generic(dim, dim);
+        self.sys
+            .jacobian_into(self.frame, t, y.as_slice(), j.as_mut_slice());
+        Some(j)
     }
 }
 
-/// Steps the gear model over whole mesh periods (see module docs).
-pub struct PeriodStepper<'s, 'a> {
+/// What the solvers ask of a period stepper, whatever its state's dimension type
+/// ([`period_stepper`]).
+pub trait PeriodIntegrator {
+    /// Integrates `y` over the period starting at `t0` (a period boundary), showing the
+    /// solution to `obs`.
+    fn integrate(
+        &mut self,
+        t0: f64,
+        y: &mut [f64],
+        obs: &mut dyn PeriodObserver,
+    ) -> Result<(), StepFailure>;
+    /// The period, s.
+    fn period(&self) -> f64;
+    /// How the following periods choose their steps.
+    fn set_plan_mode(&mut self, mode: PlanMode);
+    fn plan_mode(&self) -> PlanMode;
+    /// Work counters of the underlying stepper (rhs calls, LU factorisations).
+    fn integrator_stats(&self) -> StepStats;
+    fn counts(&self) -> StepCounts;
+}
+
+/// The period stepper of `sys` over `nodes` with the relative local error `tolerance`:
+/// on stack vectors for the single pair's 16 states (the paper's case keeps its speed),
+/// on heap vectors of the train's size otherwise.
+pub fn period_stepper<'s, 'a>(
     sys: &'s GearSystem<'a>,
-    stepper: Sdirk<NSTATE>,
+    nodes: Vec<f64>,
+    tolerance: f64,
+) -> Result<Box<dyn PeriodIntegrator + 's>, IntegratorError> {
+    let n = sys.states();
+    Ok(if n == 16 {
+        Box::new(PeriodStepper::new(sys, Const::<16>, nodes, tolerance)?)
+    } else {
+        Box::new(PeriodStepper::new(sys, Dyn(n), nodes, tolerance)?)
+    })
+}
+
+/// Steps the gear model over whole periods (see module docs), states of dimension `D`.
+pub struct PeriodStepper<'s, 'a, D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    sys: &'s GearSystem<'a>,
+    dim: D,
+    stepper: Sdirk<D>,
+    /// Room for the meshes' states in the right-hand side.
+    meshes: Vec<MeshState>,
     /// Node times within a period, s, from 0 to the period.
     nodes: Vec<f64>,
     /// Node k changes the set of pairs in contact (a pair enters or leaves).
@@ -173,11 +274,16 @@ pub enum PlanMode {
     ReplayFixed,
 }
 
-impl<'s, 'a> PeriodStepper<'s, 'a> {
-    /// A stepper over `nodes` (times within a period, 0 and the period included) with
-    /// the relative local error `tolerance` (dimensionless, of the state scales).
+impl<'s, 'a, D: Dim> PeriodStepper<'s, 'a, D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    /// A stepper of states of dimension `dim` (the system's [`GearSystem::states`]) over
+    /// `nodes` (times within a period, 0 and the period included) with the relative local
+    /// error `tolerance` (dimensionless, of the state scales).
     pub fn new(
         sys: &'s GearSystem<'a>,
+        dim: D,
         nodes: Vec<f64>,
         tolerance: f64,
     ) -> Result<Self, IntegratorError> {
@@ -186,28 +292,34 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             .map(|w| w[1] - w[0])
             .fold(f64::INFINITY, f64::min);
         let eps_t = 0.25 * min_gap;
+        let last = *nodes.last().unwrap_or(&0.0);
         let set_change = nodes
             .iter()
             .map(|t| {
-                let (a, b) = (sys.phase_at(t - eps_t), sys.phase_at(t + eps_t));
-                let count = |d: f64| sys.parts.pair.pairs_in_contact_decided(d, d).count();
                 // The period boundary is pair entry: the set changes there too.
-                count(a) != count(b) || *t == 0.0 || *t == *nodes.last().unwrap_or(&0.0)
+                *t == 0.0
+                    || *t == last
+                    || sys.meshes.iter().any(|m| {
+                        let (a, b) = (m.phase_at(t - eps_t), m.phase_at(t + eps_t));
+                        let count = |d: f64| m.parts.pair.pairs_in_contact_decided(d, d).count();
+                        count(a) != count(b)
+                    })
             })
             .collect();
         let scales = state_scales(sys);
-        let mut rel = State::zeros();
-        for i in NDOF..NSTATE {
-            rel[i] = tolerance;
-        }
-        let mut stepper = Sdirk::with_tableau(&ESDIRK32, min_gap, SdirkOptions::default())?;
-        stepper.set_error_tolerance(scales * tolerance, rel)?;
+        let scales = Vector::<D>::from_column_slice_generic(dim, U1, scales.as_slice());
+        let n = sys.dofs();
+        let rel = Vector::<D>::from_fn_generic(dim, U1, |i, _| if i < n { 0.0 } else { tolerance });
+        let mut stepper = Sdirk::with_dimension(dim, &ESDIRK32, min_gap, SdirkOptions::default())?;
+        stepper.set_error_tolerance(&scales * tolerance, rel)?;
         // Newton solves the stages two decades below the local error tolerance
         // (Hairer & Wanner II, Sect. IV.8: kappa ~ 1e-2).
-        stepper.set_abs_tol(scales * (1e-2 * tolerance))?;
+        stepper.set_abs_tol(&scales * (1e-2 * tolerance))?;
         Ok(Self {
             sys,
+            dim,
             stepper,
+            meshes: vec![MeshState::default(); sys.meshes.len()],
             h_min: 1e-7 * min_gap,
             tolerance,
             plan: Vec::new(),
@@ -219,36 +331,44 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
         })
     }
 
-    /// The system stepped.
-    pub fn system(&self) -> &'s GearSystem<'a> {
-        self.sys
+    /// The step to try from `t` towards the node `tb` (and the point it aims at): along
+    /// the plan when replaying, else the proposed step, landing on the node without
+    /// leaving a sliver for the next step.
+    fn next_step(
+        &self,
+        t0: f64,
+        t: f64,
+        tb: f64,
+        h_prop: f64,
+        next_plan: &mut usize,
+    ) -> (f64, f64) {
+        let rest = tb - t;
+        let mut target = tb;
+        if matches!(self.plan_mode, PlanMode::Replay | PlanMode::ReplayFixed) {
+            while *next_plan < self.plan.len() && t0 + self.plan[*next_plan] <= t {
+                *next_plan += 1;
+            }
+            if *next_plan < self.plan.len() && t0 + self.plan[*next_plan] < tb {
+                target = t0 + self.plan[*next_plan];
+            }
+            return (target - t, target);
+        }
+        let h = if rest <= 1.05 * h_prop {
+            rest
+        } else if rest < 2.0 * h_prop {
+            0.5 * rest
+        } else {
+            h_prop
+        };
+        (h, target)
     }
 
-    /// How the following periods choose their steps.
-    pub fn set_plan_mode(&mut self, mode: PlanMode) {
-        self.plan_mode = mode;
-    }
-
-    pub fn plan_mode(&self) -> PlanMode {
-        self.plan_mode
-    }
-
-    /// The mesh period, s.
-    pub fn period(&self) -> f64 {
-        *self.nodes.last().unwrap_or(&0.0)
-    }
-
-    /// Work counters of the underlying stepper (rhs calls, LU factorisations).
-    pub fn integrator_stats(&self) -> super::integrator::StepStats {
-        self.stepper.stats()
-    }
-
-    /// Integrates `y` over the mesh period starting at `t0` (a mesh-period boundary),
-    /// showing the solution to `obs`.
-    pub fn integrate(
+    /// Integrates `y` over the period starting at `t0` (a period boundary), showing the
+    /// solution to `obs`.
+    fn integrate_vector(
         &mut self,
         t0: f64,
-        y: &mut State,
+        y: &mut Vector<D>,
         obs: &mut dyn PeriodObserver,
     ) -> Result<(), StepFailure> {
         let sys = self.sys;
@@ -257,9 +377,9 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
         // state only, so a periodic solution is stepped the same way in every period.
         let mut h_prop = self.nodes[1] - self.nodes[0];
         let mut decide = t0 + self.eps_t;
-        let mut mode = sys.natural_mode_decided(t0, decide, y);
+        let mut mode = sys.natural_mode_decided(t0, decide, y.as_slice());
         self.stepper.invalidate_jacobian();
-        obs.point(sys, t0, decide, y);
+        obs.point(sys, t0, decide, y.as_slice());
         let max_events = 100 * n;
         let events_before = self.counts.events;
         if self.plan_mode == PlanMode::Build {
@@ -271,25 +391,7 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
             let tb = t0 + self.nodes[k];
             let mut t = t0 + self.nodes[k - 1];
             while t < tb {
-                let rest = tb - t;
-                let mut target = tb;
-                let replay = matches!(self.plan_mode, PlanMode::Replay | PlanMode::ReplayFixed);
-                let h = if replay {
-                    while next_plan < self.plan.len() && t0 + self.plan[next_plan] <= t {
-                        next_plan += 1;
-                    }
-                    if next_plan < self.plan.len() && t0 + self.plan[next_plan] < tb {
-                        target = t0 + self.plan[next_plan];
-                    }
-                    target - t
-                } else if rest <= 1.05 * h_prop {
-                    // Land on the node without leaving a sliver for the next step.
-                    rest
-                } else if rest < 2.0 * h_prop {
-                    0.5 * rest
-                } else {
-                    h_prop
-                };
+                let (h, target) = self.next_step(t0, t, tb, h_prop, &mut next_plan);
                 let (trial, event) = self.step(t, y, h, mode, &mut h_prop)?;
                 let t_new = if trial.h == h && h == target - t {
                     target
@@ -304,12 +406,11 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
                     PlanMode::Build if !event && t_new < tb => self.plan.push(t_new - t0),
                     _ => {}
                 }
-                let y0 = *y;
-                *y = trial.y;
-                obs.step(sys, t, t_new - t, &y0, y, mode);
+                let y0 = std::mem::replace(y, trial.y);
+                obs.step(sys, t, t_new - t, y0.as_slice(), y.as_slice(), mode);
                 decide = if t_new == tb { tb + self.eps_t } else { t_new };
                 if event {
-                    mode = sys.natural_mode_decided(t_new, decide, y);
+                    mode = sys.natural_mode_decided(t_new, decide, y.as_slice());
                     self.stepper.invalidate_jacobian();
                     if self.counts.events - events_before > max_events {
                         return Err(self.failure(
@@ -321,15 +422,15 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
                 }
                 t = t_new;
                 if t < tb {
-                    obs.point(sys, t, decide, y);
+                    obs.point(sys, t, decide, y.as_slice());
                 }
             }
             if self.set_change[k] && k + 1 < n {
-                mode = sys.natural_mode_decided(tb, decide, y);
+                mode = sys.natural_mode_decided(tb, decide, y.as_slice());
                 self.stepper.invalidate_jacobian();
             }
             if k + 1 < n {
-                obs.point(sys, tb, decide, y);
+                obs.point(sys, tb, decide, y.as_slice());
             }
         }
         Ok(())
@@ -341,11 +442,11 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
     fn step(
         &mut self,
         t: f64,
-        y: &State,
+        y: &Vector<D>,
         mut h: f64,
-        mode: ContactMode,
+        mode: ContactModes,
         h_prop: &mut f64,
-    ) -> Result<(Trial<NSTATE>, bool), StepFailure> {
+    ) -> Result<(Trial<D>, bool), StepFailure> {
         loop {
             match self.trial(t, y, h, mode) {
                 Err(e) => {
@@ -391,23 +492,24 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
         }
     }
 
-    /// A trial step in a frozen contact mode, the contact set decided at its middle.
+    /// A trial step in frozen contact modes, the contact sets decided at its middle.
     fn trial(
         &mut self,
         t: f64,
-        y: &State,
+        y: &Vector<D>,
         h: f64,
-        mode: ContactMode,
-    ) -> Result<Trial<NSTATE>, IntegratorError> {
+        mode: ContactModes,
+    ) -> Result<Trial<D>, IntegratorError> {
         let mut ode = Ode {
             sys: self.sys,
             frame: ContactFrame::frozen(t + 0.5 * h, mode),
+            meshes: &mut self.meshes,
         };
         self.stepper.try_step(&mut ode, t, y, h)
     }
 
-    fn switches(&self, mode: ContactMode, t: f64, y: &State, decide: f64) -> ModeSwitch {
-        self.sys.mode_switch(mode, t, decide, y)
+    fn switches(&self, mode: ContactModes, t: f64, y: &Vector<D>, decide: f64) -> ModeSwitch {
+        self.sys.mode_switch(mode, t, decide, y.as_slice())
     }
 
     /// Cuts the step `full` from `(t, y)` back to the first switch of `mode` it
@@ -417,11 +519,11 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
     fn locate(
         &mut self,
         t: f64,
-        y: &State,
-        mode: ContactMode,
-        full: Trial<NSTATE>,
+        y: &Vector<D>,
+        mode: ContactModes,
+        full: Trial<D>,
         sw_full: ModeSwitch,
-    ) -> Result<Trial<NSTATE>, StepFailure> {
+    ) -> Result<Trial<D>, StepFailure> {
         let h = full.h;
         let (mut lo, mut m_lo) = (0.0, self.switches(mode, t, y, t + 0.5 * h));
         let (mut hi, mut m_hi, mut best) = (h, sw_full, full);
@@ -433,7 +535,7 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
                 break;
             }
             let mut tau = hi;
-            for j in (0..SWITCHES).filter(|j| m_hi.crossed(*j)) {
+            for j in (0..m_hi.len()).filter(|j| m_hi.crossed(*j)) {
                 let (a, b) = (
                     m_lo.margin(j).max(0.0) * w_lo,
                     m_hi.margin(j).min(0.0) * w_hi,
@@ -478,18 +580,57 @@ impl<'s, 'a> PeriodStepper<'s, 'a> {
         Ok(best)
     }
 
-    fn failure(&self, t: f64, y: &State, reason: String) -> StepFailure {
-        let (_, ms) = self.sys.derivative(ContactFrame::NATURAL, t, y);
-        let period_rad = self.sys.parts.pair.mesh_angle_rad();
-        let phase = self.sys.phase_at(t) % period_rad;
+    /// The failure at (t, y), with the first mesh's phase, DTE and force.
+    fn failure(&self, t: f64, y: &Vector<D>, reason: String) -> StepFailure {
+        let (_, ms) = self.sys.derivative(ContactFrame::NATURAL, t, y.as_slice());
+        let mesh = self.sys.mesh(0);
+        let period_rad = mesh.parts.pair.mesh_angle_rad();
+        let phase = mesh.phase_at(t) % period_rad;
         StepFailure {
             time_s: t,
             phase_deg: phase / period_rad * 360.0,
-            dte_um: ms.deflection_m * 1e6,
-            force_n: ms.force_n,
+            dte_um: ms[0].deflection_m * 1e6,
+            force_n: ms[0].force_n,
             reason,
             intervals: self.nodes.len().saturating_sub(1),
             tolerance: self.tolerance,
         }
+    }
+}
+
+impl<D: Dim> PeriodIntegrator for PeriodStepper<'_, '_, D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    fn integrate(
+        &mut self,
+        t0: f64,
+        y: &mut [f64],
+        obs: &mut dyn PeriodObserver,
+    ) -> Result<(), StepFailure> {
+        let mut v = Vector::<D>::from_column_slice_generic(self.dim, U1, y);
+        let result = self.integrate_vector(t0, &mut v, obs);
+        y.copy_from_slice(v.as_slice());
+        result
+    }
+
+    fn period(&self) -> f64 {
+        *self.nodes.last().unwrap_or(&0.0)
+    }
+
+    fn set_plan_mode(&mut self, mode: PlanMode) {
+        self.plan_mode = mode;
+    }
+
+    fn plan_mode(&self) -> PlanMode {
+        self.plan_mode
+    }
+
+    fn integrator_stats(&self) -> StepStats {
+        self.stepper.stats()
+    }
+
+    fn counts(&self) -> StepCounts {
+        self.counts
     }
 }

@@ -1,14 +1,14 @@
 //! The search for the mesh-periodic orbit: quasi-Newton shooting on the one-period map
 //! ([`super::shooting`]) from the static equilibrium or a warm start, each iteration one
-//! mesh period of the error-controlled integration of [`super::period`]; the settings
+//! base period (a mesh period; a train's common period) of the error-controlled integration of [`super::period`]; the settings
 //! that bound it and the ways it can fail. Both the one-period steady state
 //! ([`super::steady`]) and the one over a hunting period ([`super::hunting`]) start here.
 
-use super::grid::period_nodes;
+use super::grid::train_nodes;
 use super::model::{GearSystem, State};
-use super::period::{state_scales, PeriodStepper, PlanMode, StepCounts, StepFailure};
+use super::period::{period_stepper, state_scales, PeriodIntegrator, PlanMode, StepFailure};
 use super::recorder::Recorder;
-use super::response::DynamicResponse;
+use super::response::{DynamicResponse, MeshResponse, PathSample};
 use super::shooting::{scaled_max, Reduction, Shooting};
 use nalgebra::DVector;
 
@@ -49,13 +49,31 @@ pub enum DynamicsError {
     },
     #[error("invalid integrator setting: {0}")]
     Setting(String),
+    #[error("the train's excitation period (the smallest common period of its meshes and their teeth) is too long to count in integers; a train of these teeth cannot be solved")]
+    PeriodTooLong,
 }
 
-/// The search for the mesh-periodic orbit: quasi-Newton shooting on the one-period map
-/// (module docs), each iteration one period from t = 0 (so with a tooth-resolved mesh,
-/// the orbit of the teeth of mesh cycle 0 meeting again and again).
+/// How many times a recorded period of `base_periods` base periods is repeated to cover
+/// the case's evaluated mesh periods (of the first mesh), at least once.
+pub fn window_repeats(
+    sys: &GearSystem,
+    settings: &SteadyStateSettings,
+    base_periods: usize,
+) -> usize {
+    let per_base = super::grid::base_period(sys).map_or(1, |(_, c)| c[0].max(1));
+    settings
+        .evaluated_mesh_periods
+        .div_ceil(base_periods * per_base)
+        .max(1)
+}
+
+/// The search for the periodic orbit: quasi-Newton shooting on the one-period map
+/// (module docs), each iteration one base period (a mesh period; a train's common
+/// period) from t = 0 (so with a tooth-resolved mesh, the orbit of the teeth of mesh
+/// cycle 0 meeting again and again).
 pub struct MeshPeriodSearch<'s, 'a> {
-    pub ps: PeriodStepper<'s, 'a>,
+    sys: &'s GearSystem<'a>,
+    pub ps: Box<dyn PeriodIntegrator + 's>,
     pub red: Reduction,
     template: State,
     z: DVector<f64>,
@@ -68,23 +86,21 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     pub fn new(
         sys: &'s GearSystem<'a>,
         settings: &SteadyStateSettings,
-        start: Option<&[f64; 16]>,
+        start: Option<&[f64]>,
     ) -> Result<Self, DynamicsError> {
-        let nodes = period_nodes(
-            sys.parts.pair,
-            sys.parts.params.pinion_speed_rad_s,
-            settings.steps_per_mesh_period,
-        );
-        let ps = PeriodStepper::new(sys, nodes, settings.integration_tolerance)
+        let nodes =
+            train_nodes(sys, settings.steps_per_mesh_period).ok_or(DynamicsError::PeriodTooLong)?;
+        let ps = period_stepper(sys, nodes, settings.integration_tolerance)
             .map_err(|e| DynamicsError::Setting(e.to_string()))?;
         let template = match start {
-            Some(s) => State::from_column_slice(s),
-            None => sys.static_equilibrium(),
+            Some(s) if s.len() == sys.states() => State::from_column_slice(s),
+            _ => sys.static_equilibrium(),
         };
         let red = Reduction::new(sys);
         let red_scales = red.scales(&state_scales(sys));
-        let z = red.reduce(&template);
+        let z = red.reduce(template.as_slice());
         Ok(Self {
+            sys,
             ps,
             z,
             template,
@@ -104,7 +120,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         warm: bool,
         record: bool,
     ) -> Result<Option<(Recorder, State, State)>, DynamicsError> {
-        let sys = self.ps.system();
+        let sys = self.sys;
         let period = self.ps.period();
         let mut shooting = Shooting::new(sys, &self.red, period, &state_scales(sys));
         let mut distance = f64::INFINITY;
@@ -120,7 +136,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
                 });
             }
             let y0 = self.start_state();
-            let mut y = y0;
+            let mut y = y0.clone();
             // Close to the orbit (or warm), fix the step sequence: build it once, then
             // replay.
             let first = self.periods == 0;
@@ -132,15 +148,15 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
             }
             let speculative = record && (distance < 100.0 * settings.tolerance || (first && warm));
             if speculative {
-                let mut rec = Recorder::new(1);
-                self.ps.integrate(0.0, &mut y, &mut rec)?;
-                recorded = Some((rec, y0, y));
+                let mut rec = Recorder::new(sys, 1);
+                self.ps.integrate(0.0, y.as_mut_slice(), &mut rec)?;
+                recorded = Some((rec, y0, y.clone()));
             } else {
-                self.ps.integrate(0.0, &mut y, &mut ())?;
+                self.ps.integrate(0.0, y.as_mut_slice(), &mut ())?;
                 recorded = None;
             }
             self.periods += 1;
-            let (next, d) = shooting.next(&self.z, &self.red.reduce(&y));
+            let (next, d) = shooting.next(&self.z, &self.red.reduce(y.as_slice()));
             self.z = next;
             distance = d;
         }
@@ -156,12 +172,13 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
 
     /// The state the search has reached, at a mesh-period boundary.
     pub fn start_state(&self) -> State {
-        self.red.embed(&self.z, &self.template)
+        self.red.embed(&self.z, self.template.as_slice())
     }
 
     /// Largest change between two states in the unknowns, relative to their scales.
     pub fn distance_between(&self, a: &State, b: &State) -> f64 {
-        scaled_max(&(self.red.reduce(b) - self.red.reduce(a)), &self.red_scales)
+        let (a, b) = (self.red.reduce(a.as_slice()), self.red.reduce(b.as_slice()));
+        scaled_max(&(b - a), &self.red_scales)
     }
 
     /// The response from a recorded window.
@@ -169,7 +186,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     pub fn response(
         &self,
         signals: super::response::Signals,
-        path: Vec<super::response::PathSample>,
+        paths: Vec<Vec<PathSample>>,
         rec: &Recorder,
         recorded_s: f64,
         excitation_periods: usize,
@@ -177,21 +194,28 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         y_end: &State,
     ) -> DynamicResponse {
         let stats = self.ps.integrator_stats();
-        let StepCounts { accepted, .. } = self.ps.counts;
+        let counts = self.ps.counts();
+        let meshes = paths
+            .into_iter()
+            .enumerate()
+            .map(|(m, path)| MeshResponse {
+                path,
+                mean_mesh_force_n: rec.force_int[m] / recorded_s,
+                mean_dte_m: rec.dte_int[m] / recorded_s,
+            })
+            .collect();
         DynamicResponse {
             signals,
-            path,
+            meshes,
             periods_to_converge: self.periods,
             periodicity_error: periodicity,
             mesh_period_s: self.ps.period(),
             excitation_periods,
-            mean_mesh_force_n: rec.force_int / recorded_s,
-            mean_dte_m: rec.dte_int / recorded_s,
-            end_state: std::array::from_fn(|i| y_end[i]),
-            steps: accepted,
+            end_state: y_end.as_slice().to_vec(),
+            steps: counts.accepted,
             rhs_evaluations: stats.rhs_calls as usize,
             factorizations: stats.lu_factorizations as usize,
-            step_counts: self.ps.counts,
+            step_counts: counts,
         }
     }
 }

@@ -11,9 +11,9 @@
 //! few per cent of F, the iteration contracts by that factor). The mesh deflection then
 //! solves sum_i k_i max(delta - g_i, 0) = F exactly (pairs closing their gaps in order).
 
-use super::grid::period_nodes;
-use super::model::{GearSystem, MeshState, MAX_PAIRS};
-use super::response::{DynamicResponse, PathSample, Signals};
+use super::grid::{excitation_periods, period_nodes, train_nodes};
+use super::model::{GearSystem, MeshState, TrainMesh, MAX_PAIRS};
+use super::response::{DynamicResponse, MeshResponse, PathSample, Signals};
 use crate::config::case::SpeedBoundary;
 
 /// Mesh deflection delta (m) with sum k_i max(delta - g_i, 0) = force (N), k_i >= 0
@@ -42,45 +42,61 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
     0.0
 }
 
-/// Equilibrium mesh state at mesh phase `phase_rad` (pinion rotation since t = 0: with a
-/// tooth-resolved mesh it also says which teeth meet, and the time the run-out has).
-pub fn equilibrium(sys: &GearSystem, phase_rad: f64) -> MeshState {
-    let omega_p = sys.parts.params.pinion_speed_rad_s;
-    let cycle = sys.parts.pair.mesh_cycle(phase_rad);
-    equilibrium_in_cycle(sys, phase_rad, cycle, phase_rad / omega_p)
+/// Equilibrium state of mesh `m` at its mesh phase `phase_rad` (pinion rotation since
+/// t = 0: with a tooth-resolved mesh it also says which teeth meet, and the time the
+/// run-out has).
+pub fn equilibrium(sys: &GearSystem, m: usize, phase_rad: f64) -> MeshState {
+    let mesh = sys.mesh(m);
+    let omega_p = mesh.operating.speeds_rad_s[0];
+    let cycle = mesh.parts.pair.mesh_cycle(phase_rad);
+    equilibrium_in_cycle(sys, m, phase_rad, cycle, phase_rad / omega_p)
 }
 
 /// As [`equilibrium`] at phase `phase_rad` of mesh cycle `cycle_now` (given, so that a
 /// node on a period boundary belongs to the cycle it opens whatever the round-off of
-/// the absolute phase), time `t_s` for the run-out.
+/// the absolute phase), time `t_s` for the run-out. Each mesh of a train stands alone at
+/// its own shafts' torque (the statics of a chain of meshes: each carries its shaft's
+/// torque whatever the others do).
 pub fn equilibrium_in_cycle(
     sys: &GearSystem,
+    m: usize,
     phase_rad: f64,
     cycle_now: i64,
     t_s: f64,
 ) -> MeshState {
-    let p = sys.parts.params;
-    let (omega_p, omega_g) = (p.pinion_speed_rad_s, p.gear_speed_rad_s);
-    let rb1 = sys.parts.pair.pinion.base_radius_m;
-    let (e_ext, _) = sys.parts.external.at(phase_rad);
+    let boundary = sys.assembly().elements.drive.boundary;
+    mesh_equilibrium(sys.mesh(m), boundary, phase_rad, cycle_now, t_s)
+}
+
+fn mesh_equilibrium(
+    mesh: &TrainMesh,
+    boundary: SpeedBoundary,
+    phase_rad: f64,
+    cycle_now: i64,
+    t_s: f64,
+) -> MeshState {
+    let parts = &mesh.parts;
+    let [omega_p, omega_g] = mesh.operating.speeds_rad_s;
+    let rb1 = parts.pair.pinion.base_radius_m;
+    let (e_ext, _) = parts.external.at(phase_rad);
     let mut ms = MeshState::default();
     let mut k = [0.0; MAX_PAIRS];
     let mut gap = [0.0; MAX_PAIRS];
     let mut n = 0;
-    let e_run = sys.parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
-    for (pair_k, rho1) in sys.parts.pair.pairs_in_contact(phase_rad) {
+    let e_run = parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
+    for (pair_k, rho1) in parts.pair.pairs_in_contact(phase_rad) {
         if n == MAX_PAIRS {
             break;
         }
         ms.rho1_m[n] = rho1;
-        match sys.parts.teeth {
+        match parts.teeth {
             None => {
-                k[n] = sys.parts.mesh.pair_stiffness_n_per_m(rho1);
-                gap[n] = sys.parts.gap.at(rho1).0 - e_ext;
+                k[n] = parts.mesh.pair_stiffness_n_per_m(rho1);
+                gap[n] = parts.gap.at(rho1).0 - e_ext;
             }
             Some(tm) => {
                 let cycle = cycle_now - pair_k as i64;
-                let pp = tm.pair(sys.parts.mesh, cycle, rho1);
+                let pp = tm.pair(parts.mesh, cycle, rho1);
                 k[n] = pp.stiffness_n_per_m;
                 gap[n] = pp.gap_m - e_ext - e_run;
                 ms.cycle[n] = cycle;
@@ -99,12 +115,12 @@ pub fn equilibrium_in_cycle(
         ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], 0.0);
         return ms;
     }
-    let (torque, on_gear) = match p.speed_boundary {
-        SpeedBoundary::BrakeSpeedImposed => (p.motor_torque_nm, false),
-        _ => (p.brake_torque_nm, true),
+    let (torque, on_gear) = match boundary {
+        SpeedBoundary::BrakeSpeedImposed => (mesh.operating.torques_nm[0], false),
+        _ => (mesh.operating.torques_nm[1], true),
     };
     let arm = if on_gear {
-        sys.parts.pair.gear.base_radius_m
+        parts.pair.gear.base_radius_m
     } else {
         rb1
     };
@@ -117,12 +133,12 @@ pub fn equilibrium_in_cycle(
         for i in 0..n {
             sh[i] = k[i] * (delta - gap[i]).max(0.0) / force.max(1e-300);
         }
-        sys.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+        mesh.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
         // Friction moment per unit mesh force on the loaded shaft.
         let mut moment_per_n = 0.0;
         for i in 0..n {
             let lever = if on_gear {
-                sys.parts.pair.rho_gear(ms.rho1_m[i])
+                parts.pair.rho_gear(ms.rho1_m[i])
             } else {
                 ms.rho1_m[i]
             };
@@ -141,16 +157,22 @@ pub fn equilibrium_in_cycle(
     for i in 0..n {
         sh[i] = k[i] * (ms.deflection_m - gap[i]).max(0.0) / force;
     }
-    sys.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+    mesh.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
     ms
 }
 
 /// Quasi-static response over one mesh period on the same grid as the dynamic solver,
-/// or over the tooth-resolved mesh's period of several (`ToothMesh::periods`).
+/// or over the tooth-resolved mesh's period of several (`ToothMesh::periods`). A train:
+/// every mesh at the nodes of its base period ([`train_nodes`]) repeated over the
+/// excitation period.
 pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
-    let omega = sys.parts.params.pinion_speed_rad_s;
-    let one = period_nodes(sys.parts.pair, omega, steps_per_mesh_period);
-    let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
+    if sys.meshes.len() > 1 {
+        return solve_train(sys, steps_per_mesh_period);
+    }
+    let mesh = sys.mesh(0);
+    let [omega, omega_g] = mesh.operating.speeds_rad_s;
+    let one = period_nodes(mesh.parts.pair, omega, steps_per_mesh_period);
+    let periods = mesh.parts.teeth.map_or(1, |tm| tm.periods());
     let t_mesh = *one.last().unwrap_or(&0.0);
     // Nodes as (cycle, time within it): each period's nodes but its last, then the end.
     let mut nodes: Vec<(i64, f64)> = (0..periods as i64)
@@ -158,25 +180,16 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
         .collect();
     nodes.push((periods as i64 - 1, t_mesh));
     let abs = |(c, t): (i64, f64)| c as f64 * t_mesh + t;
-    let at = |node: (i64, f64)| equilibrium_in_cycle(sys, sys.phase_at(node.1), node.0, abs(node));
-    let mut sig = Signals::default();
+    let at =
+        |node: (i64, f64)| equilibrium_in_cycle(sys, 0, mesh.phase_at(node.1), node.0, abs(node));
+    let mut sig = Signals::new(0, 1);
     let mut path = Vec::with_capacity(2 * nodes.len());
     for node in &nodes[..nodes.len() - 1] {
-        let (t, phase) = (abs(*node), sys.phase_at(node.1));
+        let (t, phase) = (abs(*node), mesh.phase_at(node.1));
         let ms = at(*node);
         sig.time_s.push(t);
-        sig.phase_rad.push(phase);
-        sig.dte_m.push(ms.deflection_m);
-        sig.mesh_force_n.push(ms.force_n);
-        sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
-        sig.push_pairs(&ms);
-        PathSample::push_contacts(
-            &mut path,
-            &ms,
-            sys.parts.pair.loa_length_m,
-            omega,
-            sys.parts.params.gear_speed_rad_s,
-        );
+        sig.meshes[0].push(phase, &ms);
+        PathSample::push_contacts(&mut path, &ms, mesh.parts.pair.loa_length_m, omega, omega_g);
     }
     // The engagement within the excitation period, as the dynamic recorder gives it
     // (`PathSample::cycle`): the leaving pair of cycle 0 is engagement P - 1, not -1.
@@ -194,13 +207,83 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
     }
     let period = abs(*nodes.last().unwrap_or(&(0, 1.0)));
     DynamicResponse {
-        mean_mesh_force_n: fi / period,
-        mean_dte_m: di / period,
+        meshes: vec![MeshResponse {
+            path,
+            mean_mesh_force_n: fi / period,
+            mean_dte_m: di / period,
+        }],
         signals: sig,
-        path,
         periods_to_converge: 0,
         periodicity_error: 0.0,
         mesh_period_s: t_mesh,
+        excitation_periods: periods,
+        ..Default::default()
+    }
+}
+
+/// [`solve_quasi_static`] of a train: the nodes of the base period repeated over the
+/// excitation period, each mesh's cycle decided just after each node (a node on a mesh
+/// period's boundary opens the next cycle), midpoint-rule means.
+fn solve_train(sys: &GearSystem, steps_per_mesh_period: usize) -> DynamicResponse {
+    let (Some(one), Some(periods)) = (
+        train_nodes(sys, steps_per_mesh_period),
+        excitation_periods(sys),
+    ) else {
+        return DynamicResponse::default();
+    };
+    let t_base = *one.last().unwrap_or(&0.0);
+    let eps = 0.25
+        * one
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min);
+    let mut times: Vec<f64> = (0..periods)
+        .flat_map(|c| {
+            one[..one.len() - 1]
+                .iter()
+                .map(move |t| c as f64 * t_base + t)
+        })
+        .collect();
+    times.push(periods as f64 * t_base);
+    let at = |m: usize, t: f64, decide: f64| {
+        let mesh = sys.mesh(m);
+        let cycle = mesh.parts.pair.mesh_cycle(mesh.phase_at(decide));
+        equilibrium_in_cycle(sys, m, mesh.phase_at(t), cycle, t)
+    };
+    let n_meshes = sys.meshes.len();
+    let mut sig = Signals::new(0, n_meshes);
+    let mut paths = vec![Vec::new(); n_meshes];
+    let mut means = vec![(0.0, 0.0); n_meshes];
+    for (k, t) in times[..times.len() - 1].iter().enumerate() {
+        sig.time_s.push(*t);
+        let mid = 0.5 * (t + times[k + 1]);
+        let dt = times[k + 1] - t;
+        for m in 0..n_meshes {
+            let mesh = sys.mesh(m);
+            let ms = at(m, *t, t + eps);
+            let phase = mesh.phase_at(*t) % mesh.parts.pair.mesh_angle_rad();
+            sig.meshes[m].push(phase, &ms);
+            let [wp, wg] = mesh.operating.speeds_rad_s;
+            PathSample::push_contacts(&mut paths[m], &ms, mesh.parts.pair.loa_length_m, wp, wg);
+            let ms_mid = at(m, mid, mid);
+            means[m].0 += ms_mid.force_n * dt;
+            means[m].1 += ms_mid.deflection_m * dt;
+        }
+    }
+    let period = periods as f64 * t_base;
+    let meshes = paths
+        .into_iter()
+        .zip(means)
+        .map(|(path, (fi, di))| MeshResponse {
+            path: super::response::sorted_by_rho1(&path),
+            mean_mesh_force_n: fi / period,
+            mean_dte_m: di / period,
+        })
+        .collect();
+    DynamicResponse {
+        meshes,
+        signals: sig,
+        mesh_period_s: t_base,
         excitation_periods: periods,
         ..Default::default()
     }

@@ -3,156 +3,180 @@
 //! and the time integrals of the mesh force and DTE step by step (a trapezoid on the
 //! points would split the force's jumps at the mesh events).
 
-use super::model::{ContactFrame, ContactMode, GearSystem, MeshState, State, NDOF};
+use super::model::{ContactFrame, ContactModes, DecidedSets, GearSystem, MeshState};
 use super::period::PeriodObserver;
 use super::response::{sorted_by_rho1, PathSample, Signals};
 
 /// Change of the displacements over one period of the periodic orbit: the drift of the
-/// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise.
-fn drift(y_start: &State, y_end: &State) -> State {
-    let mut d = y_end - y_start;
-    for i in NDOF..2 * NDOF {
-        d[i] = 0.0;
-    }
-    d
+/// drivetrain's rigid rotation under the motor-slip boundary, ~0 otherwise (the
+/// displacements' share of two states).
+fn drift(y_start: &[f64], y_end: &[f64]) -> Vec<f64> {
+    let n = y_start.len() / 2;
+    (0..n).map(|i| y_end[i] - y_start[i]).collect()
 }
 
 /// Records one period of the periodic solution (see the module docs). With a
-/// tooth-resolved mesh the period spans `excitation_periods` mesh periods and each
-/// contact is tagged with its engagement, its mesh cycle modulo that number.
+/// tooth-resolved mesh the period spans `excitation_periods` base periods and each
+/// contact is tagged with its engagement, its mesh cycle modulo that number of its mesh
+/// periods.
 #[derive(Default)]
 pub struct Recorder {
     pub sig: Signals,
-    pub path: Vec<PathSample>,
-    pub force_int: f64,
-    pub dte_int: f64,
-    /// Mesh periods of the recorded period (0 or 1: one).
+    /// Each mesh's path of contact.
+    pub paths: Vec<Vec<PathSample>>,
+    /// Each mesh's time integrals of the force (N s) and DTE (m s).
+    pub force_int: Vec<f64>,
+    pub dte_int: Vec<f64>,
+    /// Base periods of the recorded period (0 or 1: one).
     pub excitation_periods: usize,
+    /// Mesh periods of each mesh in the recorded period (for tagging engagements).
+    engagements: Vec<i64>,
     /// The last step-end evaluation, offered to the next point and step (see
     /// [`Evaluation`]).
     last: Option<Evaluation>,
+    /// Room for the evaluations of a step: the midpoint's state and evaluation, and an
+    /// evaluation's buffers to reuse (no allocation per sample once the first step ran).
+    work: Work,
+    y_mid: Vec<f64>,
+    spare: Option<Evaluation>,
+}
+
+/// Buffers of one right-hand-side evaluation.
+#[derive(Default)]
+struct Work {
+    dy: Vec<f64>,
+    meshes: Vec<MeshState>,
 }
 
 /// One right-hand-side evaluation kept for reuse. A step's end is the next point and the
 /// next step's start: the same time and state, evaluated with the pairs and the contact
 /// mode the step held. The result depends on the frame only through the pairs decided
-/// ([`GearSystem::decided_set`]) and the mode (`GearSystem::springs`), so where both
+/// ([`GearSystem::decided_sets`]) and the modes (`TrainMesh::springs`), so where both
 /// agree the kept result is the one a new evaluation would give, bit for bit; elsewhere
 /// (a mesh event, a contact switch) it is evaluated anew.
 struct Evaluation {
     t: f64,
-    y: State,
-    set: (f64, usize),
-    mode: ContactMode,
-    dy: State,
-    ms: MeshState,
+    y: Vec<f64>,
+    sets: DecidedSets,
+    mode: ContactModes,
+    dy: Vec<f64>,
+    meshes: Vec<MeshState>,
 }
 
 impl Evaluation {
-    fn is_at(&self, t: f64, y: &State, set: (f64, usize)) -> bool {
+    fn is_at(&self, t: f64, y: &[f64], sets: &DecidedSets) -> bool {
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
         same(self.t, t)
-            && same(self.set.0, set.0)
-            && self.set.1 == set.1
+            && self.sets.same_as(sets)
             && self.y.iter().zip(y.iter()).all(|(a, b)| same(*a, *b))
     }
 }
 
 impl Recorder {
-    pub fn new(excitation_periods: usize) -> Self {
+    /// A recorder of `sys` over `excitation_periods` base periods.
+    pub fn new(sys: &GearSystem, excitation_periods: usize) -> Self {
+        let n_meshes = sys.meshes.len();
+        let base = super::grid::base_period(sys).map_or(vec![1; n_meshes], |(_, c)| c);
         Self {
+            sig: Signals::new(sys.dofs(), n_meshes),
+            paths: vec![Vec::new(); n_meshes],
+            force_int: vec![0.0; n_meshes],
+            dte_int: vec![0.0; n_meshes],
             excitation_periods,
-            ..Self::default()
+            engagements: base
+                .iter()
+                .map(|c| (c * excitation_periods.max(1)) as i64)
+                .collect(),
+            last: None,
+            work: Work {
+                dy: vec![0.0; sys.states()],
+                meshes: vec![MeshState::default(); n_meshes],
+            },
+            y_mid: vec![0.0; sys.states()],
+            spare: None,
         }
     }
-}
 
-impl Recorder {
     /// The evaluated window of `periods` periods from the one period recorded (periodic
     /// to the steady-state tolerance, so every later period repeats it; the rigid
-    /// rotation's drift is carried on), and the path of contact sorted by rho1.
+    /// rotation's drift is carried on), and each mesh's path of contact sorted by rho1.
     pub fn window(
         &self,
         period: f64,
         periods: usize,
-        y_start: &State,
-        y_end: &State,
-    ) -> (Signals, Vec<PathSample>) {
-        // Destructured in full: a new signal must be repeated here too.
-        let Signals {
-            time_s,
-            phase_rad,
-            dte_m,
-            mesh_force_n,
-            mesh_stiffness_n_per_m,
-            displacement,
-            velocity,
-            acceleration,
-            step_acceleration,
-            dte_rate_m_per_s,
-            friction_coefficient,
-            friction_n,
-            pair_load_n,
-        } = &self.sig;
-        let mut sig = self.sig.clone();
-        let d = drift(y_start, y_end);
-        for p in 1..periods {
-            let shift = p as f64 * period;
-            sig.time_s.extend(time_s.iter().map(|t| t + shift));
-            sig.displacement.extend(
-                displacement
-                    .iter()
-                    .map(|q| -> [f64; NDOF] { std::array::from_fn(|i| q[i] + p as f64 * d[i]) }),
-            );
-            sig.phase_rad.extend_from_slice(phase_rad);
-            sig.dte_m.extend_from_slice(dte_m);
-            sig.mesh_force_n.extend_from_slice(mesh_force_n);
-            sig.mesh_stiffness_n_per_m
-                .extend_from_slice(mesh_stiffness_n_per_m);
-            sig.velocity.extend_from_slice(velocity);
-            sig.acceleration.extend_from_slice(acceleration);
-            sig.dte_rate_m_per_s.extend_from_slice(dte_rate_m_per_s);
-            for j in 0..2 {
-                sig.step_acceleration[j].extend_from_slice(&step_acceleration[j]);
-                sig.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
-                sig.friction_n[j].extend_from_slice(&friction_n[j]);
-                sig.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
-            }
-        }
-        (sig, sorted_by_rho1(&self.path))
+        y_start: &[f64],
+        y_end: &[f64],
+    ) -> (Signals, Vec<Vec<PathSample>>) {
+        let sig = self.sig.repeated(period, periods, &drift(y_start, y_end));
+        (sig, self.paths.iter().map(|p| sorted_by_rho1(p)).collect())
+    }
+
+    /// Evaluates the right-hand side into the work buffers.
+    fn evaluate(&mut self, sys: &GearSystem, frame: ContactFrame, t: f64, y: &[f64]) {
+        let w = &mut self.work;
+        sys.derivative_into(frame, t, y, &mut w.dy, &mut w.meshes);
+    }
+
+    /// An evaluation of `sys` at `(t, y)` in `frame` (kept as decided in `sets` and
+    /// `mode`), in the spare buffers when there are some.
+    #[allow(clippy::too_many_arguments)]
+    fn evaluation(
+        &mut self,
+        sys: &GearSystem,
+        frame: ContactFrame,
+        t: f64,
+        y: &[f64],
+        sets: DecidedSets,
+        mode: ContactModes,
+    ) -> Evaluation {
+        let mut e = self.spare.take().unwrap_or_else(|| Evaluation {
+            t,
+            y: vec![0.0; y.len()],
+            sets,
+            mode,
+            dy: vec![0.0; sys.states()],
+            meshes: vec![MeshState::default(); sys.meshes.len()],
+        });
+        sys.derivative_into(frame, t, y, &mut e.dy, &mut e.meshes);
+        e.t = t;
+        e.y.copy_from_slice(y);
+        e.sets = sets;
+        e.mode = mode;
+        e
     }
 }
 
 impl PeriodObserver for Recorder {
-    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &State) {
+    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]) {
         let frame = ContactFrame::decided_at(decide);
-        let set = sys.decided_set(frame, t);
-        let kept = self
+        let sets = sys.decided_sets(frame, t);
+        let reuse = self
             .last
             .as_ref()
-            .filter(|e| e.is_at(t, y, set) && sys.natural_mode_in(frame, t, y) == e.mode);
-        let (dy, ms) = match kept {
-            Some(e) => (e.dy, e.ms),
-            None => sys.derivative(frame, t, y),
+            .is_some_and(|e| e.is_at(t, y, &sets) && sys.natural_mode_in(frame, t, y) == e.mode);
+        if !reuse {
+            self.evaluate(sys, frame, t, y);
+        }
+        let (dy, meshes) = match (&self.last, reuse) {
+            (Some(e), true) => (&e.dy, &e.meshes),
+            _ => (&self.work.dy, &self.work.meshes),
         };
-        record(
-            &mut self.sig,
-            t,
-            sys.phase_at(t) % sys.parts.pair.mesh_angle_rad(),
-            y,
-            &dy,
-            &ms,
-        );
-        let grad = sys.mesh_gradient();
-        self.sig
-            .dte_rate_m_per_s
-            .push((0..NDOF).map(|i| grad[i] * y[NDOF + i]).sum());
-        let first = self.path.len();
-        push_path(&mut self.path, sys, y, &ms);
-        // The engagement within the excitation period (`PathSample::cycle`).
-        let p = self.excitation_periods.max(1) as i64;
-        for s in &mut self.path[first..] {
-            s.cycle = s.cycle.rem_euclid(p);
+        record(&mut self.sig, sys, t, y, dy, meshes);
+        let n = sys.dofs();
+        for (m, ms) in meshes.iter().enumerate() {
+            // The DTE's rate: its gradient times the velocities (the DTE is linear in q).
+            let rate = sys.mesh(m).geometry.gradient.iter();
+            self.sig.meshes[m]
+                .dte_rate_m_per_s
+                .push(rate.map(|(i, g)| g * y[n + i]).sum());
+            let path = &mut self.paths[m];
+            let first = path.len();
+            push_path(path, sys, m, y, ms);
+            // The engagement within the excitation period (`PathSample::cycle`).
+            let p = self.engagements[m].max(1);
+            for s in &mut path[first..] {
+                s.cycle = s.cycle.rem_euclid(p);
+            }
         }
     }
 
@@ -161,67 +185,75 @@ impl PeriodObserver for Recorder {
         sys: &GearSystem,
         t: f64,
         h: f64,
-        y0: &State,
-        y1: &State,
-        mode: ContactMode,
+        y0: &[f64],
+        y1: &[f64],
+        mode: ContactModes,
     ) {
         // Simpson's rule on the step, with the midpoint state from the cubic Hermite
         // interpolant of the step's ends (fourth order; the force is smooth inside a
         // step, which never crosses a mesh event or a contact switch).
         let frame = ContactFrame::frozen(t + 0.5 * h, mode);
-        let set = sys.decided_set(frame, t);
-        let kept = self
-            .last
-            .as_ref()
-            .filter(|e| e.mode == mode && e.is_at(t, y0, set));
-        let (f0, ms0) = match kept {
-            Some(e) => (e.dy, e.ms),
-            None => sys.derivative(frame, t, y0),
+        let sets = sys.decided_sets(frame, t);
+        let e0 = match self.last.take() {
+            Some(e) if e.mode == mode && e.is_at(t, y0, &sets) => e,
+            other => {
+                if other.is_some() {
+                    self.spare = other;
+                }
+                self.evaluation(sys, frame, t, y0, sets, mode)
+            }
         };
-        let (f1, ms1) = sys.derivative(frame, t + h, y1);
-        self.last = Some(Evaluation {
-            t: t + h,
-            y: *y1,
-            set,
-            mode,
-            dy: f1,
-            ms: ms1,
-        });
+        let e1 = self.evaluation(sys, frame, t + h, y1, sets, mode);
+        let (f0, f1) = (&e0.dy, &e1.dy);
+        for (i, m) in self.y_mid.iter_mut().enumerate() {
+            *m = (y0[i] + y1[i]) * 0.5 + (f0[i] - f1[i]) * (h / 8.0);
+        }
+        let w = &mut self.work;
+        sys.derivative_into(frame, t + 0.5 * h, &self.y_mid, &mut w.dy, &mut w.meshes);
+        let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
+        let (ms0, ms1) = (&e0.meshes, &e1.meshes);
+        for m in 0..ms1.len() {
+            let mid = &w.meshes[m];
+            self.force_int[m] += simpson(ms0[m].force_n, mid.force_n, ms1[m].force_n);
+            self.dte_int[m] += simpson(ms0[m].deflection_m, mid.deflection_m, ms1[m].deflection_m);
+        }
         // The step's own accelerations at both ends (the solution's slope data; points
         // and steps alternate, so entry j belongs to the step leaving sample j).
-        let acc = |f: &State| -> [f64; NDOF] { std::array::from_fn(|i| f[NDOF + i]) };
-        self.sig.step_acceleration[0].push(acc(&f0));
-        self.sig.step_acceleration[1].push(acc(&f1));
-        let y_mid = (y0 + y1) * 0.5 + (f0 - f1) * (h / 8.0);
-        let (_, ms) = sys.derivative(frame, t + 0.5 * h, &y_mid);
-        let simpson = |a: f64, m: f64, b: f64| h / 6.0 * (a + 4.0 * m + b);
-        self.force_int += simpson(ms0.force_n, ms.force_n, ms1.force_n);
-        self.dte_int += simpson(ms0.deflection_m, ms.deflection_m, ms1.deflection_m);
+        let n = sys.dofs();
+        let [start, end] = &mut self.sig.step_acceleration;
+        start.push(&f0[n..]);
+        end.push(&f1[n..]);
+        self.last = Some(e1);
+        self.spare = Some(e0);
     }
 }
 
-fn record(sig: &mut Signals, t: f64, phase: f64, y: &State, dy: &State, ms: &MeshState) {
-    let mut q = [0.0; NDOF];
-    let mut v = [0.0; NDOF];
-    let mut a = [0.0; NDOF];
-    for i in 0..NDOF {
-        q[i] = y[i];
-        v[i] = y[NDOF + i];
-        a[i] = dy[NDOF + i];
-    }
+fn record(
+    sig: &mut Signals,
+    sys: &GearSystem,
+    t: f64,
+    y: &[f64],
+    dy: &[f64],
+    meshes: &[MeshState],
+) {
+    let n = sys.dofs();
     sig.time_s.push(t);
-    sig.phase_rad.push(phase);
-    sig.dte_m.push(ms.deflection_m);
-    sig.mesh_force_n.push(ms.force_n);
-    sig.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
-    sig.displacement.push(q);
-    sig.velocity.push(v);
-    sig.acceleration.push(a);
-    sig.push_pairs(ms);
+    sig.displacement.push(&y[..n]);
+    sig.velocity.push(&y[n..]);
+    sig.acceleration.push(&dy[n..]);
+    for (m, ms) in meshes.iter().enumerate() {
+        let mesh = sys.mesh(m);
+        let phase = mesh.phase_at(t) % mesh.parts.pair.mesh_angle_rad();
+        sig.meshes[m].push(phase, ms);
+    }
 }
 
-fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, y: &State, ms: &MeshState) {
-    let omega_p = sys.parts.params.pinion_speed_rad_s + y[NDOF + super::model::dof::PHI_P];
-    let omega_g = sys.parts.params.gear_speed_rad_s + y[NDOF + super::model::dof::PHI_G];
-    PathSample::push_contacts(path, ms, sys.parts.pair.loa_length_m, omega_p, omega_g);
+fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, m: usize, y: &[f64], ms: &MeshState) {
+    let n = sys.dofs();
+    let mesh = sys.mesh(m);
+    let [rp, rg] = mesh.geometry.rotation;
+    let [wp, wg] = mesh.operating.speeds_rad_s;
+    let omega_p = wp + y[n + rp];
+    let omega_g = wg + y[n + rg];
+    PathSample::push_contacts(path, ms, mesh.parts.pair.loa_length_m, omega_p, omega_g);
 }

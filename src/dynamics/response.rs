@@ -51,32 +51,71 @@ impl PathSample {
     }
 }
 
-/// Time series over the evaluated window (whole mesh periods). A sample at every grid
-/// node (right limit at a mesh event) and at every integration step between nodes, so
-/// the spacing is not uniform: it is short where the error control shortened the steps
-/// (after each mesh event, near contact switches). The dynamic solver integrates one
-/// period of the periodic solution and repeats it over the window.
+/// Generalised coordinates (displacements, velocities or accelerations) at every sample,
+/// `dofs` per sample, stored flat: `c[k]` is sample k's slice.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Coordinates {
+    dofs: usize,
+    values: Vec<f64>,
+}
+
+impl Coordinates {
+    /// No samples of `dofs` coordinates.
+    pub fn new(dofs: usize) -> Self {
+        Self {
+            dofs,
+            values: Vec::new(),
+        }
+    }
+
+    /// Coordinates per sample.
+    pub fn dofs(&self) -> usize {
+        self.dofs
+    }
+
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.values.len().checked_div(self.dofs).unwrap_or(0)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+
+    /// Appends a sample (its `dofs` coordinates).
+    pub fn push(&mut self, sample: &[f64]) {
+        debug_assert_eq!(sample.len(), self.dofs);
+        self.values.extend_from_slice(sample);
+    }
+
+    /// The samples in order.
+    pub fn iter(&self) -> std::slice::ChunksExact<'_, f64> {
+        self.values.chunks_exact(self.dofs.max(1))
+    }
+
+    /// Coordinate `i` of every sample.
+    pub fn column(&self, i: usize) -> Vec<f64> {
+        self.iter().map(|s| s[i]).collect()
+    }
+}
+
+impl std::ops::Index<usize> for Coordinates {
+    type Output = [f64];
+
+    fn index(&self, k: usize) -> &[f64] {
+        &self.values[k * self.dofs..(k + 1) * self.dofs]
+    }
+}
+
+/// One mesh's time series over the evaluated window, sampled with [`Signals::time_s`].
 #[derive(Debug, Clone, Default)]
-pub struct Signals {
-    pub time_s: Vec<f64>,
-    /// Mesh phase, rad of pinion rotation (reduced to one mesh period).
+pub struct MeshSignals {
+    /// Mesh phase, rad of the mesh's pinion rotation (reduced to one mesh period).
     pub phase_rad: Vec<f64>,
     /// Dynamic transmission error: relative displacement along the line of action, m.
     pub dte_m: Vec<f64>,
     pub mesh_force_n: Vec<f64>,
     pub mesh_stiffness_n_per_m: Vec<f64>,
-    /// Generalised displacements q (8 per sample) and velocities.
-    pub displacement: Vec<[f64; 8]>,
-    pub velocity: Vec<[f64; 8]>,
-    pub acceleration: Vec<[f64; 8]>,
-    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
-    /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
-    /// mesh event or a contact switch makes the force jump, the end one is the limit from
-    /// the left at the next sample, which `acceleration` (the limit from the right) is not.
-    /// With the displacements and velocities they give the solution between the samples,
-    /// the cubic Hermite interpolant of the solver's steps (`super::fourier`). Empty for a
-    /// quasi-static response, whose samples are all there is.
-    pub step_acceleration: [Vec<[f64; 8]>; 2],
     /// Rate of the DTE, m/s: the mesh gradient times the velocities (the DTE is linear in
     /// the displacements), the DTE's slope for its interpolant. Empty when quasi-static.
     pub dte_rate_m_per_s: Vec<f64>,
@@ -87,7 +126,7 @@ pub struct Signals {
     pub pair_load_n: [Vec<f64>; 2],
 }
 
-impl Signals {
+impl MeshSignals {
     /// Per-pair friction and load of the first two pairs (0 when a pair is out of contact).
     pub fn push_pairs(&mut self, ms: &super::model::MeshState) {
         for j in 0..2 {
@@ -98,34 +137,172 @@ impl Signals {
             self.pair_load_n[j].push(pick(&ms.load_n));
         }
     }
+
+    /// Appends a sample of a mesh state at mesh phase `phase_rad`.
+    pub fn push(&mut self, phase_rad: f64, ms: &super::model::MeshState) {
+        self.phase_rad.push(phase_rad);
+        self.dte_m.push(ms.deflection_m);
+        self.mesh_force_n.push(ms.force_n);
+        self.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
+        self.push_pairs(ms);
+    }
+
+    /// The series repeated: every sample appended again `times` more times.
+    fn repeat(&mut self, times: usize) {
+        // Destructured in full: a new signal must be repeated here too.
+        let Self {
+            phase_rad,
+            dte_m,
+            mesh_force_n,
+            mesh_stiffness_n_per_m,
+            dte_rate_m_per_s,
+            friction_coefficient,
+            friction_n,
+            pair_load_n,
+        } = self;
+        let series = [
+            phase_rad,
+            dte_m,
+            mesh_force_n,
+            mesh_stiffness_n_per_m,
+            dte_rate_m_per_s,
+        ];
+        let pairs = friction_coefficient
+            .iter_mut()
+            .chain(friction_n.iter_mut())
+            .chain(pair_load_n.iter_mut());
+        for v in series.into_iter().chain(pairs) {
+            let one = v.clone();
+            for _ in 0..times {
+                v.extend_from_slice(&one);
+            }
+        }
+    }
+}
+
+/// Time series over the evaluated window (whole periods). A sample at every grid
+/// node (right limit at a mesh event) and at every integration step between nodes, so
+/// the spacing is not uniform: it is short where the error control shortened the steps
+/// (after each mesh event, near contact switches). The dynamic solver integrates one
+/// period of the periodic solution and repeats it over the window.
+#[derive(Debug, Clone, Default)]
+pub struct Signals {
+    pub time_s: Vec<f64>,
+    /// Generalised displacements q (the assembly's coordinates: 8 for the single pair),
+    /// velocities and accelerations.
+    pub displacement: Coordinates,
+    pub velocity: Coordinates,
+    pub acceleration: Coordinates,
+    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
+    /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
+    /// mesh event or a contact switch makes the force jump, the end one is the limit from
+    /// the left at the next sample, which `acceleration` (the limit from the right) is not.
+    /// With the displacements and velocities they give the solution between the samples,
+    /// the cubic Hermite interpolant of the solver's steps (`super::fourier`). Empty for a
+    /// quasi-static response, whose samples are all there is.
+    pub step_acceleration: [Coordinates; 2],
+    /// Each mesh's series, in the train's mesh order.
+    pub meshes: Vec<MeshSignals>,
+}
+
+impl Signals {
+    /// No samples, for `dofs` coordinates and `meshes` meshes.
+    pub fn new(dofs: usize, meshes: usize) -> Self {
+        Self {
+            time_s: Vec::new(),
+            displacement: Coordinates::new(dofs),
+            velocity: Coordinates::new(dofs),
+            acceleration: Coordinates::new(dofs),
+            step_acceleration: [Coordinates::new(dofs), Coordinates::new(dofs)],
+            meshes: vec![MeshSignals::default(); meshes],
+        }
+    }
+
+    /// The recorded period repeated `periods` times, each repeat `period` s later and its
+    /// displacements moved by `drift` more (the rigid rotation's drift per period).
+    pub fn repeated(&self, period: f64, periods: usize, drift: &[f64]) -> Self {
+        // Destructured in full: a new signal must be repeated here too.
+        let Self {
+            time_s,
+            displacement,
+            velocity,
+            acceleration,
+            step_acceleration,
+            meshes,
+        } = self;
+        let mut sig = self.clone();
+        let mut moved = vec![0.0; displacement.dofs()];
+        for p in 1..periods {
+            let shift = p as f64 * period;
+            sig.time_s.extend(time_s.iter().map(|t| t + shift));
+            for q in displacement.iter() {
+                for (m, (qi, di)) in moved.iter_mut().zip(q.iter().zip(drift)) {
+                    *m = qi + p as f64 * di;
+                }
+                sig.displacement.push(&moved);
+            }
+            for v in velocity.iter() {
+                sig.velocity.push(v);
+            }
+            for a in acceleration.iter() {
+                sig.acceleration.push(a);
+            }
+            for (out, one) in sig.step_acceleration.iter_mut().zip(step_acceleration) {
+                for a in one.iter() {
+                    out.push(a);
+                }
+            }
+        }
+        for (out, _) in sig.meshes.iter_mut().zip(meshes) {
+            out.repeat(periods.saturating_sub(1));
+        }
+        sig
+    }
+}
+
+/// One mesh's share of a steady-state response.
+#[derive(Debug, Clone, Default)]
+pub struct MeshResponse {
+    /// Samples along the path of contact over the last period, sorted by rho1.
+    pub path: Vec<PathSample>,
+    /// Time means over the evaluated window by Simpson's rule on the steps (the mesh force
+    /// jumps at mesh events, which lie on grid nodes, so a trapezoid on the nodes would
+    /// split each jump and be first order only).
+    pub mean_mesh_force_n: f64,
+    pub mean_dte_m: f64,
+}
+
+impl MeshResponse {
+    /// Load a pair carries at LOA position rho1 (linear interpolation along the path).
+    pub fn path_at(&self, rho1_m: f64) -> PathSample {
+        interpolate_path(&self.path, rho1_m)
+    }
 }
 
 /// A steady-state response.
 #[derive(Debug, Clone, Default)]
 pub struct DynamicResponse {
     pub signals: Signals,
-    /// Samples along the path of contact over the last mesh period, sorted by rho1.
-    pub path: Vec<PathSample>,
-    /// Mesh periods integrated before the periodic state was found (the recorded
-    /// window not included).
+    /// Each mesh's path of contact and means, in the train's mesh order.
+    pub meshes: Vec<MeshResponse>,
+    /// Periods integrated before the periodic state was found (the recorded window not
+    /// included).
     pub periods_to_converge: usize,
     /// Largest change of the state over one recorded period, relative to the state's
     /// scales (`period::state_scales`): how periodic the recorded window is.
     pub periodicity_error: f64,
+    /// The base period: the mesh period of a single pair, the smallest common period of
+    /// a train's meshes, s.
     pub mesh_period_s: f64,
-    /// Mesh periods after which the response repeats: 1 when every tooth is alike, else
-    /// the tooth-resolved mesh's period (`ToothMesh::periods`, lcm(z1, z2) at most).
+    /// Base periods after which the response repeats: 1 when every tooth is alike, else
+    /// the tooth-resolved meshes' period (`ToothMesh::periods`, lcm(z1, z2) at most for a
+    /// single pair).
     pub excitation_periods: usize,
-    /// Time means over the evaluated window by the midpoint rule on the step midpoints
-    /// (second order; the mesh force jumps at mesh events, which lie on grid nodes, so a
-    /// trapezoid on the nodes would split each jump and be first order only).
-    pub mean_mesh_force_n: f64,
-    pub mean_dte_m: f64,
     /// State y = [q; dq/dt] (SI, `dynamics::model` coordinates) at the end of the
-    /// evaluated window, a mesh-period boundary (mesh phase 0). Passing it as the start
-    /// of another evaluation (`steady::solve_steady_state_from`) warm-starts that one from
+    /// evaluated window, a period boundary (mesh phase 0). Passing it as the start of
+    /// another evaluation (`steady::solve_steady_state_from`) warm-starts that one from
     /// this periodic state: wear updates, continuation along a parameter.
-    pub end_state: [f64; 16],
+    pub end_state: Vec<f64>,
     /// Integrator work (for benchmarks and the performance notes): accepted steps over
     /// all periods integrated, rhs calls, LU factorisations, and the step counts in
     /// detail (rejections, contact switches).
@@ -136,15 +313,16 @@ pub struct DynamicResponse {
 }
 
 impl DynamicResponse {
-    /// Fraction of the evaluated window during which the mesh transmits no force
+    /// Fraction of the evaluated window during which mesh `m` transmits no force
     /// (contact loss), from the samples: the intervals whose both ends carry none.
-    pub fn contact_loss_fraction(&self) -> f64 {
+    pub fn contact_loss_fraction_of(&self, m: usize) -> f64 {
         let s = &self.signals;
+        let f = &s.meshes[m].mesh_force_n;
         let (mut off, mut total) = (0.0, 0.0);
         for k in 1..s.time_s.len() {
             let dt = s.time_s[k] - s.time_s[k - 1];
             total += dt;
-            if s.mesh_force_n[k] <= 0.0 && s.mesh_force_n[k - 1] <= 0.0 {
+            if f[k] <= 0.0 && f[k - 1] <= 0.0 {
                 off += dt;
             }
         }
@@ -155,9 +333,15 @@ impl DynamicResponse {
         }
     }
 
-    /// Load a pair carries at LOA position rho1 (linear interpolation along the path).
+    /// [`DynamicResponse::contact_loss_fraction_of`] the first mesh (the single pair's).
+    pub fn contact_loss_fraction(&self) -> f64 {
+        self.contact_loss_fraction_of(0)
+    }
+
+    /// Load a pair of the first mesh carries at LOA position rho1 (linear interpolation
+    /// along the path).
     pub fn path_at(&self, rho1_m: f64) -> PathSample {
-        interpolate_path(&self.path, rho1_m)
+        self.meshes[0].path_at(rho1_m)
     }
 }
 

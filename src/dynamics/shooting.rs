@@ -18,44 +18,47 @@
 //!
 //! Coordinates. A speed imposed at one end holds that coordinate and its velocity: they
 //! are not unknowns. With the motor-slip boundary nothing is held and the drivetrain's
-//! rigid rotation r = (phi_m, phi_p, phi_g, phi_b) = (1, 1, r_pb/r_gb, r_pb/r_gb) is a
-//! symmetry (every force depends on angle differences); the slip's speed deficit makes
-//! the angles drift along r by a constant amount per period. So the unknowns are the
-//! state with its r component removed (phi_m set to 0 by a rigid shift), and the drift is
-//! not part of the residual.
+//! rigid rotation r (`Assembly::rigid_rotation`; for the single pair (phi_m, phi_p, phi_g,
+//! phi_b) = (1, 1, r_pb/r_gb, r_pb/r_gb)) is a symmetry (every force depends on angle
+//! differences); the slip's speed deficit makes the angles drift along r by a constant
+//! amount per period. So the unknowns are the state with its r component removed (the
+//! input's angle set to 0 by a rigid shift), and the drift is not part of the residual.
 
-use super::model::{dof, GearSystem, State, NDOF, NSTATE};
-use nalgebra::{DMatrix, DVector};
+use super::assembly::Dof;
+use super::model::{GearSystem, State};
+use nalgebra::{DMatrix, DVector, SMatrix};
 
 /// The unknowns of the periodic-orbit problem (see module docs).
 #[derive(Debug, Clone)]
 pub struct Reduction {
     /// State components that are unknowns.
     idx: Vec<usize>,
-    /// The rigid rotation, when it is a free motion (motor slip).
+    /// The rigid rotation (in the state), when it is a free motion (motor slip).
     rigid: Option<State>,
+    /// The input's angle, which the rigid shift sets to 0.
+    anchor: usize,
 }
 
 impl Reduction {
     pub fn new(sys: &GearSystem) -> Self {
-        let (_, _, inv_mass) = sys.linear_parts();
-        match (0..NDOF).find(|i| inv_mass[*i] == 0.0) {
+        let asm = sys.assembly();
+        let (n, n2) = (sys.dofs(), sys.states());
+        let anchor = asm
+            .index(asm.elements.drive.input, Dof::Rotation)
+            .expect("every body rotates");
+        match asm.held() {
             Some(held) => Self {
-                idx: (0..NSTATE)
-                    .filter(|i| *i != held && *i != NDOF + held)
-                    .collect(),
+                idx: (0..n2).filter(|i| *i != held && *i != n + held).collect(),
                 rigid: None,
+                anchor,
             },
             None => {
-                let ratio = sys.parts.pair.pinion.base_radius_m / sys.parts.pair.gear.base_radius_m;
-                let mut r = State::zeros();
-                r[dof::PHI_M] = 1.0;
-                r[dof::PHI_P] = 1.0;
-                r[dof::PHI_G] = ratio;
-                r[dof::PHI_B] = ratio;
+                let mut r = State::zeros(n2);
+                r.rows_mut(0, n).copy_from(&asm.rigid_rotation());
                 Self {
-                    idx: (0..NSTATE).filter(|i| *i != dof::PHI_M).collect(),
+                    idx: (0..n2).filter(|i| *i != anchor).collect(),
                     rigid: Some(r),
+                    anchor,
                 }
             }
         }
@@ -71,19 +74,19 @@ impl Reduction {
     }
 
     /// The unknowns of a state (rigid rotation removed).
-    pub fn reduce(&self, y: &State) -> DVector<f64> {
-        let y = match &self.rigid {
-            Some(r) => y - r * y[dof::PHI_M],
-            None => *y,
+    pub fn reduce(&self, y: &[f64]) -> DVector<f64> {
+        let at = |i: usize| match &self.rigid {
+            Some(r) => y[i] - r[i] * y[self.anchor],
+            None => y[i],
         };
-        DVector::from_iterator(self.idx.len(), self.idx.iter().map(|i| y[*i]))
+        DVector::from_iterator(self.idx.len(), self.idx.iter().map(|i| at(*i)))
     }
 
     /// The state with unknowns `z` and the held coordinates of `template`.
-    pub fn embed(&self, z: &DVector<f64>, template: &State) -> State {
-        let mut y = *template;
+    pub fn embed(&self, z: &DVector<f64>, template: &[f64]) -> State {
+        let mut y = State::from_column_slice(template);
         if self.rigid.is_some() {
-            y[dof::PHI_M] = 0.0;
+            y[self.anchor] = 0.0;
         }
         for (k, i) in self.idx.iter().enumerate() {
             y[*i] = z[k];
@@ -96,18 +99,31 @@ impl Reduction {
         DVector::from_iterator(self.idx.len(), self.idx.iter().map(|i| scales[*i]))
     }
 
-    /// The monodromy `m` (16 x 16) seen in the unknowns: R m E, E embedding a change of
-    /// the unknowns into the state, R removing the rigid rotation and the held entries.
-    pub fn reduce_matrix(&self, m: &nalgebra::SMatrix<f64, NSTATE, NSTATE>) -> DMatrix<f64> {
+    /// The monodromy `m` (states x states) seen in the unknowns: R m E, E embedding a
+    /// change of the unknowns into the state, R removing the rigid rotation and the held
+    /// entries.
+    pub fn reduce_matrix(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
         let n = self.idx.len();
         DMatrix::from_fn(n, n, |a, b| {
             let (i, j) = (self.idx[a], self.idx[b]);
             match &self.rigid {
-                Some(r) => m[(i, j)] - r[i] * m[(dof::PHI_M, j)],
+                Some(r) => m[(i, j)] - r[i] * m[(self.anchor, j)],
                 None => m[(i, j)],
             }
         })
     }
+}
+
+/// exp(A t) of a state matrix. The single pair's 16 x 16 goes through nalgebra's
+/// fixed-size product, as it always has (the dynamic one multiplies in another order:
+/// other bits).
+pub fn state_matrix_exp(a: &DMatrix<f64>, t: f64) -> DMatrix<f64> {
+    if a.nrows() == 16 {
+        let s = SMatrix::<f64, 16, 16>::from_fn(|i, j| a[(i, j)]) * t;
+        let e = s.exp();
+        return DMatrix::from_fn(16, 16, |i, j| e[(i, j)]);
+    }
+    (a * t).exp()
 }
 
 /// Largest component of `v` relative to `scales`.
@@ -143,7 +159,7 @@ impl Shooting {
     /// period of `period_s` seconds; `scales` are the state scales (see
     /// [`super::period::state_scales`]).
     pub fn new(sys: &GearSystem, red: &Reduction, period_s: f64, scales: &State) -> Self {
-        let m = (sys.mean_state_matrix() * period_s).exp();
+        let m = state_matrix_exp(&sys.mean_state_matrix(), period_s);
         let n = red.len();
         let g = red.reduce_matrix(&m) - DMatrix::identity(n, n);
         // The damped averaged model has no eigenvalue 1 once the held coordinates and

@@ -9,8 +9,9 @@
 //! else one more) and repeated over the evaluated window; its periodicity (the change of
 //! the state over that period) is reported. The search itself is [`super::period_search`].
 
+use super::grid::excitation_periods;
 use super::model::GearSystem;
-use super::period_search::{DynamicsError, MeshPeriodSearch, SteadyStateSettings};
+use super::period_search::{window_repeats, DynamicsError, MeshPeriodSearch, SteadyStateSettings};
 use super::recorder::Recorder;
 use super::response::DynamicResponse;
 
@@ -31,9 +32,9 @@ pub fn solve_steady_state(
 pub fn solve_steady_state_from(
     sys: &GearSystem,
     settings: &SteadyStateSettings,
-    start: Option<&[f64; 16]>,
+    start: Option<&[f64]>,
 ) -> Result<DynamicResponse, DynamicsError> {
-    let periods = sys.parts.teeth.map_or(1, |tm| tm.periods());
+    let periods = excitation_periods(sys).ok_or(DynamicsError::PeriodTooLong)?;
     if periods > 1 {
         return super::hunting::solve_hunting(sys, settings, start, periods);
     }
@@ -44,14 +45,19 @@ pub fn solve_steady_state_from(
         None => {
             search.replay();
             let y0 = search.start_state();
-            let mut y = y0;
-            let mut rec = Recorder::new(1);
-            search.ps.integrate(0.0, &mut y, &mut rec)?;
+            let mut y = y0.clone();
+            let mut rec = Recorder::new(sys, 1);
+            search.ps.integrate(0.0, y.as_mut_slice(), &mut rec)?;
             (rec, y0, y)
         }
     };
     let periodicity = search.distance_between(&y_start, &y_end);
     let period = search.ps.period();
-    let (signals, path) = rec.window(period, settings.evaluated_mesh_periods, &y_start, &y_end);
-    Ok(search.response(signals, path, &rec, period, 1, periodicity, &y_end))
+    let (signals, paths) = rec.window(
+        period,
+        window_repeats(sys, settings, 1),
+        y_start.as_slice(),
+        y_end.as_slice(),
+    );
+    Ok(search.response(signals, paths, &rec, period, 1, periodicity, &y_end))
 }

@@ -38,7 +38,7 @@ fn min(x: &[f64]) -> f64 {
     x.iter().fold(f64::INFINITY, |m, v| m.min(*v))
 }
 
-/// Velocity of coordinate `i` (`model::dof`) over the evaluated window as the solver's
+/// Velocity of coordinate `i` (the assembly's numbering; `model::dof` for the pair) over the evaluated window as the solver's
 /// solution: the cubic Hermite interpolant of the velocities and the steps'
 /// accelerations (`super::fourier`); the chords of the samples for a quasi-static
 /// response, which has no steps.
@@ -59,19 +59,20 @@ pub fn velocity_signal(r: &DynamicResponse, i: usize) -> HermitePeriod {
     }
 }
 
-/// The DTE over the evaluated window as the solver's solution (its rate is continuous:
-/// the same slope at both ends of a step); the chords when quasi-static.
-pub fn dte_signal(r: &DynamicResponse) -> HermitePeriod {
+/// The DTE of mesh `m` over the evaluated window as the solver's solution (its rate is
+/// continuous: the same slope at both ends of a step); the chords when quasi-static.
+pub fn dte_signal(r: &DynamicResponse, m: usize) -> HermitePeriod {
     let s = &r.signals;
+    let ms = &s.meshes[m];
     let window = r.mesh_period_s * evaluated_periods(r) as f64;
-    if s.dte_rate_m_per_s.len() != s.dte_m.len() {
-        return HermitePeriod::linear(s.time_s.clone(), s.dte_m.clone(), window);
+    if ms.dte_rate_m_per_s.len() != ms.dte_m.len() {
+        return HermitePeriod::linear(s.time_s.clone(), ms.dte_m.clone(), window);
     }
     HermitePeriod {
         t: s.time_s.clone(),
-        x: s.dte_m.clone(),
-        slope_start: s.dte_rate_m_per_s.clone(),
-        slope_end: s.dte_rate_m_per_s.clone(),
+        x: ms.dte_m.clone(),
+        slope_start: ms.dte_rate_m_per_s.clone(),
+        slope_end: ms.dte_rate_m_per_s.clone(),
         period_s: window,
     }
 }
@@ -93,40 +94,58 @@ pub fn evaluated_periods(r: &DynamicResponse) -> usize {
 }
 
 impl ResponseSummary {
+    /// The summary of the single pair (of a train's first mesh, its harmonics those of
+    /// the base period: use [`ResponseSummary::of_mesh`]).
     pub fn of(r: &DynamicResponse) -> Self {
+        Self::of_mesh(r, 0, r.mesh_period_s, dof::YP)
+    }
+
+    /// The summary of mesh `m` of a response, its harmonics those of its mesh period
+    /// `mesh_period_s` (s), the velocity that of coordinate `pinion_y` (its pinion's y).
+    pub fn of_mesh(r: &DynamicResponse, m: usize, mesh_period_s: f64, pinion_y: usize) -> Self {
         let s = &r.signals;
         if s.time_s.is_empty() {
             return Self::default();
         }
         let window = r.mesh_period_s * evaluated_periods(r) as f64;
-        let mean_f = r.mean_mesh_force_n;
-        let vy: Vec<f64> = s.velocity.iter().map(|v| v[dof::YP]).collect();
+        // Whole mesh periods of this mesh in the window (the base period holds a whole
+        // number of them).
+        let periods = ((window / mesh_period_s).round() as usize).max(1);
+        let mean_f = r.meshes[m].mean_mesh_force_n;
+        let vy: Vec<f64> = s.velocity.iter().map(|v| v[pinion_y]).collect();
         let has_velocity = vy.iter().any(|v| *v != 0.0);
-        let periods = evaluated_periods(r);
         let mut harm = [0.0; 4];
         if has_velocity {
-            let lines = mesh_harmonics(&velocity_signal(r, dof::YP), periods, 4);
+            let lines = mesh_harmonics(&velocity_signal(r, pinion_y), periods, 4);
             for (a, c) in harm.iter_mut().zip(&lines) {
                 *a = c.norm();
             }
         }
-        let dte_h1 = mesh_harmonics(&dte_signal(r), periods, 1)[0].norm();
-        let mu_all: Vec<f64> = r.path.iter().map(|p| p.friction_coefficient).collect();
-        let mu_in: Vec<f64> = r
+        let dte_h1 = mesh_harmonics(&dte_signal(r, m), periods, 1)[0].norm();
+        let mu_all: Vec<f64> = r.meshes[m]
+            .path
+            .iter()
+            .map(|p| p.friction_coefficient)
+            .collect();
+        let mu_in: Vec<f64> = r.meshes[m]
             .path
             .iter()
             .filter(|p| p.load_n > 0.0)
             .map(|p| p.friction_coefficient)
             .collect();
-        let fr: Vec<f64> = r.path.iter().map(|p| p.friction_n.abs()).collect();
-        let f_max = max(&s.mesh_force_n);
+        let fr: Vec<f64> = r.meshes[m]
+            .path
+            .iter()
+            .map(|p| p.friction_n.abs())
+            .collect();
+        let f_max = max(&s.meshes[m].mesh_force_n);
         Self {
-            dte_max_m: max(&s.dte_m),
-            dte_min_m: min(&s.dte_m),
-            dte_mean_m: r.mean_dte_m,
+            dte_max_m: max(&s.meshes[m].dte_m),
+            dte_min_m: min(&s.meshes[m].dte_m),
+            dte_mean_m: r.meshes[m].mean_dte_m,
             mesh_force_mean_n: mean_f,
             mesh_force_max_n: f_max,
-            mesh_force_min_n: min(&s.mesh_force_n),
+            mesh_force_min_n: min(&s.meshes[m].mesh_force_n),
             dynamic_factor: if mean_f > 0.0 { f_max / mean_f } else { 0.0 },
             velocity_y_pinion_rms_m_per_s: if has_velocity {
                 time_rms(&s.time_s, &vy, window)

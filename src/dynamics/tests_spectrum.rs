@@ -90,7 +90,7 @@ fn integrator_like(k: &Known, per_period: usize) -> DynamicResponse {
     t.sort_by(f64::total_cmp);
     t.dedup_by(|a, b| (*a - *b).abs() < 1e-15);
     let n = t.len();
-    let mut sig = Signals::default();
+    let mut sig = Signals::new(8, 1);
     for (j, tj) in t.iter().enumerate() {
         let t1 = if j + 1 < n { t[j + 1] } else { k.period };
         let mut v = [0.0; 8];
@@ -100,9 +100,9 @@ fn integrator_like(k: &Known, per_period: usize) -> DynamicResponse {
         let mut a1 = [0.0; 8];
         a1[dof::YP] = k.at(t1 % k.period, false).1;
         sig.time_s.push(*tj);
-        sig.velocity.push(v);
-        sig.step_acceleration[0].push(a0);
-        sig.step_acceleration[1].push(a1);
+        sig.velocity.push(&v);
+        sig.step_acceleration[0].push(&a0);
+        sig.step_acceleration[1].push(&a1);
     }
     DynamicResponse {
         signals: sig,
@@ -177,9 +177,13 @@ fn a_window_of_repeated_periods_has_nothing_between_its_harmonics() {
         r.signals
             .time_s
             .extend(s.time_s.iter().map(|t| t + c as f64 * known.period));
-        r.signals.velocity.extend_from_slice(&s.velocity);
+        for v in s.velocity.iter() {
+            r.signals.velocity.push(v);
+        }
         for j in 0..2 {
-            r.signals.step_acceleration[j].extend_from_slice(&s.step_acceleration[j]);
+            for a in s.step_acceleration[j].iter() {
+                r.signals.step_acceleration[j].push(a);
+            }
         }
     }
     let s = velocity_y_spectrum(&r);

@@ -13,18 +13,19 @@
 use super::drive::Drive;
 use super::grid::period_nodes;
 use super::model::{GearSystem, State};
-use super::period::{PeriodObserver, PeriodStepper, StepFailure};
+use super::period::{period_stepper, PeriodObserver, StepFailure};
 use super::period_search::DynamicsError;
 
 /// Node times over [0, `duration_s`] of `sys` under its drive: the mesh-event nodes of
-/// every mesh period, mapped through the drive's angle, `duration_s` the last.
+/// every mesh period (of the first mesh: transients are of the single pair), mapped
+/// through the drive's angle, `duration_s` the last.
 pub fn transient_nodes(
     sys: &GearSystem,
     drive: &Drive,
     duration_s: f64,
     steps_per_mesh_period: usize,
 ) -> Vec<f64> {
-    let pair = sys.parts.pair;
+    let pair = sys.mesh(0).parts.pair;
     // At unit speed the node "times" are the node angles within one mesh period.
     let angles = period_nodes(pair, 1.0, steps_per_mesh_period);
     let period = pair.mesh_angle_rad();
@@ -56,17 +57,17 @@ pub fn transient_nodes(
 pub fn integrate_transient(
     sys: &GearSystem,
     drive: &Drive,
-    start: &State,
+    start: &[f64],
     duration_s: f64,
     steps_per_mesh_period: usize,
     tolerance: f64,
     obs: &mut dyn PeriodObserver,
 ) -> Result<State, DynamicsError> {
     let nodes = transient_nodes(sys, drive, duration_s, steps_per_mesh_period);
-    let mut ps = PeriodStepper::new(sys, nodes, tolerance)
-        .map_err(|e| DynamicsError::Setting(e.to_string()))?;
-    let mut y = *start;
-    ps.integrate(0.0, &mut y, obs)
+    let mut ps =
+        period_stepper(sys, nodes, tolerance).map_err(|e| DynamicsError::Setting(e.to_string()))?;
+    let mut y = State::from_column_slice(start);
+    ps.integrate(0.0, y.as_mut_slice(), obs)
         .map_err(|e: StepFailure| DynamicsError::Integrator(e))?;
     Ok(y)
 }

@@ -5,7 +5,7 @@ use super::artifacts::{um, Artifacts};
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
-use crate::dynamics::response::{DynamicResponse, PathSample, Signals};
+use crate::dynamics::response::{Coordinates, DynamicResponse, PathSample, Signals};
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::format::shown;
 use crate::io::Table;
@@ -30,8 +30,8 @@ pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad"
 pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
     let mut a = Artifacts::default();
     let s = &r.signals;
-    a.table("timeseries.csv", timeseries_table(s));
-    a.table("path.csv", path_table(model, &r.path));
+    a.table("timeseries.csv", timeseries_table(model, s));
+    a.table("path.csv", path_table(model, &r.meshes[0].path));
 
     // Damped poles and undamped modes of the linearised model.
     let modal = ModalAnalysis::of(model);
@@ -44,7 +44,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
         add_velocity_figures(&mut a, model, r, &t_ms, label);
     }
     add_time_figures(&mut a, s, t_ms, label);
-    add_path_figures(&mut a, &r.path, label);
+    add_path_figures(&mut a, &r.meshes[0].path, label);
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);
     super::teeth::add_teeth_artifacts(model, &mut a);
@@ -62,44 +62,48 @@ const TIME: &str = "time (ms)";
 
 /// `timeseries.csv`: every recorded signal and the 8 coordinates, their velocities and
 /// accelerations.
-fn timeseries_table(s: &Signals) -> Table {
-    let col = |k: usize, which: &Vec<[f64; 8]>| which.iter().map(|v| v[k]).collect::<Vec<_>>();
-    let (names, units) = (COORDINATE_NAMES, COORDINATE_UNITS);
+fn timeseries_table(model: &Model, s: &Signals) -> Table {
+    let col = |k: usize, which: &Coordinates| which.column(k);
+    let coordinates = model.coordinate_names();
+    let m0 = &s.meshes[0];
     let mut t = Table::new()
         .col("time_s", s.time_s.clone())
-        .col("mesh_phase_rad", s.phase_rad.clone())
-        .col("dte_um", um(&s.dte_m))
-        .col("mesh_force_n", s.mesh_force_n.clone())
-        .col("mesh_stiffness_n_per_m", s.mesh_stiffness_n_per_m.clone())
+        .col("mesh_phase_rad", m0.phase_rad.clone())
+        .col("dte_um", um(&m0.dte_m))
+        .col("mesh_force_n", m0.mesh_force_n.clone())
+        .col("mesh_stiffness_n_per_m", m0.mesh_stiffness_n_per_m.clone())
         .col(
             "friction_coefficient_pair0",
-            s.friction_coefficient[0].clone(),
+            m0.friction_coefficient[0].clone(),
         )
         .col(
             "friction_coefficient_pair1",
-            s.friction_coefficient[1].clone(),
+            m0.friction_coefficient[1].clone(),
         )
-        .col("friction_force_pair0_n", s.friction_n[0].clone())
-        .col("friction_force_pair1_n", s.friction_n[1].clone())
-        .col("load_pair0_n", s.pair_load_n[0].clone())
-        .col("load_pair1_n", s.pair_load_n[1].clone());
-    for k in 0..8 {
-        t = t.col(
-            &format!("{}_{}", names[k], units[k]),
-            col(k, &s.displacement),
-        );
+        .col("friction_force_pair0_n", m0.friction_n[0].clone())
+        .col("friction_force_pair1_n", m0.friction_n[1].clone())
+        .col("load_pair0_n", m0.pair_load_n[0].clone())
+        .col("load_pair1_n", m0.pair_load_n[1].clone());
+    for (k, (name, unit)) in coordinates.iter().enumerate() {
+        t = t.col(&format!("{name}_{unit}"), col(k, &s.displacement));
     }
-    for k in 0..8 {
-        t = t.col(
-            &format!("d{}_{}_per_s", names[k], units[k]),
-            col(k, &s.velocity),
-        );
+    for (k, (name, unit)) in coordinates.iter().enumerate() {
+        t = t.col(&format!("d{name}_{unit}_per_s"), col(k, &s.velocity));
     }
-    for k in 0..8 {
-        t = t.col(
-            &format!("dd{}_{}_per_s2", names[k], units[k]),
-            col(k, &s.acceleration),
-        );
+    for (k, (name, unit)) in coordinates.iter().enumerate() {
+        t = t.col(&format!("dd{name}_{unit}_per_s2"), col(k, &s.acceleration));
+    }
+    // A train's later meshes (the first mesh's columns lead the table).
+    for (m, ms) in s.meshes.iter().enumerate().skip(1) {
+        let n = m + 1;
+        t = t
+            .col(&format!("mesh{n}_phase_rad"), ms.phase_rad.clone())
+            .col(&format!("mesh{n}_dte_um"), um(&ms.dte_m))
+            .col(&format!("mesh{n}_force_n"), ms.mesh_force_n.clone())
+            .col(
+                &format!("mesh{n}_stiffness_n_per_m"),
+                ms.mesh_stiffness_n_per_m.clone(),
+            );
     }
     t
 }
@@ -183,7 +187,7 @@ fn add_velocity_figures(
 
 /// The dynamic transmission error and the mesh force over time.
 fn add_time_figures(a: &mut Artifacts, s: &Signals, t_ms: Vec<f64>, label: &str) {
-    let dte_um = um(&s.dte_m);
+    let dte_um = um(&s.meshes[0].dte_m);
     a.figure_with_data(
         "dte.png",
         single(
@@ -205,12 +209,16 @@ fn add_time_figures(a: &mut Artifacts, s: &Signals, t_ms: Vec<f64>, label: &str)
             panel(
                 TIME,
                 "mesh force (N)",
-                vec![Curve::new("", t_ms.clone(), s.mesh_force_n.clone())],
+                vec![Curve::new(
+                    "",
+                    t_ms.clone(),
+                    s.meshes[0].mesh_force_n.clone(),
+                )],
             ),
         ),
         Table::new()
             .col("time_ms", t_ms)
-            .col("mesh_force_n", s.mesh_force_n.clone()),
+            .col("mesh_force_n", s.meshes[0].mesh_force_n.clone()),
     );
 }
 
@@ -253,7 +261,11 @@ fn add_path_figures(a: &mut Artifacts, p: &[PathSample], label: &str) {
 /// The summary of one dynamic evaluation (the keys of `summary.json`, display units in
 /// the names).
 pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value {
-    let s = &ResponseSummary::of(r);
+    let meshes = model.train.as_ref().map(|t| train_meshes(t, r));
+    let s = &match &meshes {
+        Some(m) => m[0].1,
+        None => ResponseSummary::of(r),
+    };
     let c_m = model
         .params
         .mesh_damping_n_s_per_m(&model.pair, model.mesh.mean_stiffness_n_per_m());
@@ -283,7 +295,69 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
     {
         v.extend(m);
     }
+    if let (Some(t), Some(meshes), Some(obj)) = (&model.train, meshes, v.as_object_mut()) {
+        obj.insert(
+            "meshes".into(),
+            Value::Array(meshes.into_iter().map(|m| m.0).collect()),
+        );
+        obj.insert("train".into(), train_json(t, r));
+    }
     v
+}
+
+/// Each mesh of a train: its summary keys (as `meshes` entries of `summary.json`: mesh
+/// frequency, mean and maximum force, DTE, dynamic factor, its pinion's y velocity and
+/// harmonics) and its [`ResponseSummary`].
+fn train_meshes(
+    t: &crate::study::train::TrainModel,
+    r: &DynamicResponse,
+) -> Vec<(Value, ResponseSummary)> {
+    use crate::dynamics::assembly::Dof;
+    t.operating
+        .meshes
+        .iter()
+        .enumerate()
+        .map(|(m, p)| {
+            let link = &t.assembly.elements.meshes[m];
+            let pinion_y = t.assembly.index(link.pinion, Dof::Y).unwrap_or(dof::YP);
+            let s = ResponseSummary::of_mesh(r, m, 1.0 / p.mesh_frequency_hz, pinion_y);
+            let v = json!({
+                "stage": m + 1,
+                "teeth": link.teeth,
+                "mesh_frequency_hz": p.mesh_frequency_hz,
+                "pinion_speed_rpm": p.pinion_speed_rad_s * 30.0 / std::f64::consts::PI,
+                "pinion_torque_nm": p.pinion_torque_nm,
+                "static_mesh_force_n": p.static_mesh_force_n,
+                "dte": {"max_um": s.dte_max_m * 1e6, "min_um": s.dte_min_m * 1e6, "mean_um": s.dte_mean_m * 1e6},
+                "mesh_force": {"mean_n": s.mesh_force_mean_n, "max_n": s.mesh_force_max_n, "min_n": s.mesh_force_min_n, "dynamic_factor": s.dynamic_factor},
+                "velocity_y_pinion": {
+                    "rms_mm_per_s": s.velocity_y_pinion_rms_m_per_s * 1e3,
+                    "mesh_harmonics_mm_per_s": s.velocity_y_pinion_harmonics_m_per_s.iter().map(|a| a * 1e3).collect::<Vec<_>>(),
+                },
+                "friction_coefficient": {"max": s.friction_coefficient_max, "mean_in_contact": s.friction_coefficient_mean_in_contact},
+                "contact_loss_fraction": r.contact_loss_fraction_of(m),
+            });
+            (v, s)
+        })
+        .collect()
+}
+
+/// `train` in `summary.json`: the stages, the base period and how many mesh periods of
+/// each mesh it holds, the number of coordinates.
+fn train_json(t: &crate::study::train::TrainModel, r: &DynamicResponse) -> Value {
+    let counts: Vec<f64> = t
+        .operating
+        .meshes
+        .iter()
+        .map(|p| (r.mesh_period_s * p.mesh_frequency_hz).round())
+        .collect();
+    json!({
+        "stages": t.stages.len(),
+        "coordinates": t.assembly.len(),
+        "base_period_s": r.mesh_period_s,
+        "mesh_periods_in_base_period": counts,
+        "excitation_periods": r.excitation_periods,
+    })
 }
 
 /// One line of headline numbers from a dynamics summary.

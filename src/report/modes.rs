@@ -5,18 +5,6 @@ use crate::io::Table;
 use crate::study::ModalAnalysis;
 use serde_json::{json, Value};
 
-/// Coordinate names with units, in `dynamics::model::dof` order.
-const COORDINATES: [(&str, &str); 8] = [
-    ("x_pinion", "m"),
-    ("y_pinion", "m"),
-    ("x_gear", "m"),
-    ("y_gear", "m"),
-    ("phi_motor", "rad"),
-    ("phi_pinion", "rad"),
-    ("phi_gear", "rad"),
-    ("phi_brake", "rad"),
-];
-
 /// `modes.csv`: one row per damped pole (Im lambda >= 0), by pole magnitude: the pole,
 /// its frequencies, damping ratio, mesh strain-energy share, whether it is oscillatory
 /// and a mesh pole (1/0), and the complex shape (real and imaginary parts, largest
@@ -45,7 +33,7 @@ pub fn damped_table(m: &ModalAnalysis) -> Table {
                 flag(x.kind == PoleKind::Oscillatory && x.mesh_energy_share >= MESH_POLE_MIN_SHARE)
             }),
         );
-    for (k, (name, unit)) in COORDINATES.iter().enumerate() {
+    for (k, (name, unit)) in m.coordinates.iter().enumerate() {
         t = t
             .col(&format!("shape_{name}_re_{unit}"), col(&|x| x.shape[k].re))
             .col(&format!("shape_{name}_im_{unit}"), col(&|x| x.shape[k].im));
@@ -63,7 +51,7 @@ pub fn undamped_table(m: &ModalAnalysis) -> Table {
             (1..=u.frequency_hz.len()).map(|i| i as f64).collect(),
         )
         .col("undamped_frequency_hz", u.frequency_hz.clone());
-    for (k, (name, _)) in COORDINATES.iter().enumerate() {
+    for (k, (name, _)) in m.coordinates.iter().enumerate() {
         t = t.col(
             &format!("shape_{name}"),
             u.shapes.iter().map(|s| s[k]).collect(),

@@ -72,8 +72,12 @@ fn path_figure(
     let mut curves = Vec::new();
     let mut table = Table::new();
     for s in &study.wear_states {
-        let x: Vec<f64> = s.response.path.iter().map(|p| p.rho1_m * 1e3).collect();
-        let v: Vec<f64> = s.response.path.iter().map(f).collect();
+        let x: Vec<f64> = s.response.meshes[0]
+            .path
+            .iter()
+            .map(|p| p.rho1_m * 1e3)
+            .collect();
+        let v: Vec<f64> = s.response.meshes[0].path.iter().map(f).collect();
         table = table
             .col(&format!("rho1_mm_{}um", s.max_wear_um), x.clone())
             .col(&format!("{col}_{}um", s.max_wear_um), v.clone());
@@ -89,7 +93,7 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
     let (f, t) = time_figure(
         model,
         study,
-        &|s, k| s.dte_m[k] * 1e6,
+        &|s, k| s.meshes[0].dte_m[k] * 1e6,
         (
             "Dynamic transmission error at three wear states",
             "dynamic transmission error (µm)",
@@ -157,7 +161,7 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
     let (f, t) = time_figure(
         model,
         study,
-        &|s, k| s.mesh_force_n[k],
+        &|s, k| s.meshes[0].mesh_force_n[k],
         (
             "Mesh force at three wear states",
             "mesh force (N)",

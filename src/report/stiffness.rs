@@ -27,7 +27,7 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
     let mut cols: Vec<Vec<f64>> = (0..12).map(|_| Vec::with_capacity(SAMPLES)).collect();
     for i in 0..SAMPLES {
         let phase = pair.mesh_angle_rad() * i as f64 / SAMPLES as f64;
-        let eq = equilibrium(&sys, phase);
+        let eq = equilibrium(&sys, 0, phase);
         let total: f64 = (0..eq.n_pairs).map(|j| eq.stiffness_n_per_m[j]).sum();
         let get = |a: &[f64; 4], j: usize| if j < eq.n_pairs { a[j] } else { f64::NAN };
         let mut shares = [0.0; 4];

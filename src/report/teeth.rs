@@ -281,9 +281,9 @@ pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)
 /// shafts' frequencies marked (resolved over the excitation period of a tooth-resolved
 /// response: bins of f_mesh / P).
 pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figure, Table) {
-    let f_mesh = model.params.mesh_frequency_hz;
-    let f_p = model.params.pinion_speed_rad_s / std::f64::consts::TAU;
-    let f_g = model.params.gear_speed_rad_s / std::f64::consts::TAU;
+    let f_mesh = model.params.operating.mesh_frequency_hz;
+    let f_p = model.params.operating.pinion_speed_rad_s / std::f64::consts::TAU;
+    let f_g = model.params.operating.gear_speed_rad_s / std::f64::consts::TAU;
     let spec = velocity_y_spectrum(r);
     let (f, a) = spectrum_rows(&spec.frequency_hz, &spec.amplitude, f_mesh + 5.5 * f_p);
     let (f, a): (Vec<f64>, Vec<f64>) = f
@@ -350,7 +350,7 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
         return;
     }
     let r = model.quasi_static(&model.new_wear_state(), &ExternalError::none());
-    let te_um: Vec<f64> = r.signals.dte_m.iter().map(|d| d * 1e6).collect();
+    let te_um: Vec<f64> = r.signals.meshes[0].dte_m.iter().map(|d| d * 1e6).collect();
     if te_um.is_empty() {
         return;
     }
@@ -362,7 +362,7 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
         "peak_to_peak_um": max - min,
         "mesh_periods": r.excitation_periods,
     });
-    let omega = model.params.pinion_speed_rad_s;
+    let omega = model.params.operating.pinion_speed_rad_s;
     let table = Table::new()
         .col(
             "pinion_angle_deg",
@@ -373,7 +373,10 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
                 .collect(),
         )
         .col("quasi_static_te_um", te_um)
-        .col("quasi_static_mesh_force_n", r.signals.mesh_force_n.clone());
+        .col(
+            "quasi_static_mesh_force_n",
+            r.signals.meshes[0].mesh_force_n.clone(),
+        );
     a.table("csv/teeth_quasi_static_te.csv", table);
     a.headline.push_str(&format!(
         "; static TE of these teeth {} to {} µm over {} mesh periods",

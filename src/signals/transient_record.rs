@@ -23,7 +23,7 @@ use super::chain::SignalChain;
 use super::periodic::PeriodicSignal;
 use super::record::Record;
 use super::tachometer::{DUTY, HIGH_V};
-use crate::dynamics::model::{dof, ContactMode, GearSystem, State, NDOF};
+use crate::dynamics::model::{dof, ContactModes, GearSystem};
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::period::PeriodObserver;
 use realfft::num_complex::Complex64;
@@ -68,9 +68,11 @@ impl ForceSampler {
         }
     }
 
-    fn force(&self, y: &State) -> [f64; 4] {
+    /// Bearing forces of the single pair's pinion and gear (x, y) at state y.
+    fn force(&self, y: &[f64]) -> [f64; 4] {
         let idx = [dof::XP, dof::YP, dof::XG, dof::YG];
-        std::array::from_fn(|j| self.stiffness[j] * y[idx[j]] + self.damping[j] * y[NDOF + idx[j]])
+        let n = y.len() / 2;
+        std::array::from_fn(|j| self.stiffness[j] * y[idx[j]] + self.damping[j] * y[n + idx[j]])
     }
 
     /// The cell means of force `j` over the complete cells.
@@ -88,9 +90,9 @@ impl ForceSampler {
 }
 
 impl PeriodObserver for ForceSampler {
-    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &State) {}
+    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &[f64]) {}
 
-    fn step(&mut self, _: &GearSystem, t: f64, h: f64, y0: &State, y1: &State, _: ContactMode) {
+    fn step(&mut self, _: &GearSystem, t: f64, h: f64, y0: &[f64], y1: &[f64], _: ContactModes) {
         let (f0, f1) = (self.force(y0), self.force(y1));
         let w = self.cell_s;
         let (a, b) = (t.max(0.0), t + h);

@@ -18,7 +18,7 @@
 //! caller may refuse (`FilletFoundation::outside_fit`).
 
 use super::potential_energy::ToothBeam;
-use crate::config::case::{FilletRootAngle, StiffnessSection};
+use crate::config::case::{FilletRootAngle, GearSection, StiffnessSection};
 use crate::geometry::Gear;
 
 /// Rows L*, M*, P*, Q*; columns A, B, C, D, E, F (Sainsot et al. 2004).
@@ -190,6 +190,19 @@ impl FilletSettings {
             root_angle: s.fillet_root_angle,
             allow_extrapolation: s.allow_fillet_extrapolation,
             allow_theta_f_extrapolation: false,
+        })
+    }
+
+    /// The settings of a pair `gear` under the case's `[stiffness]`. The built-in pair is
+    /// exempt from the theta_f limit of Sainsot's fit: under the fillet-junction
+    /// convention its 19-tooth pinion has theta_f = 0.159 rad, above the fit's 0.12
+    /// (docs/MODEL.md, section 2), and the built-in case must run as the paper's case;
+    /// every pair with the built-in tooth form (teeth, reference profile, shifts; theta_f
+    /// depends on nothing else) shares the exemption and the warning. h_f stays checked.
+    pub fn for_pair(s: &StiffnessSection, gear: &GearSection) -> Option<Self> {
+        Self::from_case(s).map(|mut f| {
+            f.allow_theta_f_extrapolation = gear.same_tooth_form(&GearSection::default());
+            f
         })
     }
 

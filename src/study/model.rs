@@ -1,12 +1,12 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
 use super::domain::{body_value_warnings, domain_problems, Resolved, ResolvedParameters};
+pub use super::model_error::ModelError;
 use super::teeth::ToothInputs;
-use crate::config::case::{Case, GearSection, LoadSharingModel};
+use crate::config::case::{Case, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::model::NSTATE;
 use crate::dynamics::model::{GearSystem, GearSystemParts};
 use crate::dynamics::params::{DynamicParams, OperatingPoint};
 use crate::dynamics::period_search::{DynamicsError, SteadyStateSettings};
@@ -19,17 +19,10 @@ use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
 use crate::wear::{RoughnessLaw, WearState};
 
-/// A case that cannot be modelled (bad geometry or an unusable combination of settings).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ModelError(pub Vec<String>);
-
-impl std::fmt::Display for ModelError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.0.join("; "))
-    }
-}
-
-impl std::error::Error for ModelError {}
+/// New teeth and no external error, for the meshes of a train that a study leaves
+/// unworn.
+static NO_GAP: PairGap = PairGap::NONE;
+static NO_ERROR: ExternalError = ExternalError::NONE;
 
 /// Everything a solver needs, built once per case.
 pub struct Model {
@@ -48,6 +41,10 @@ pub struct Model {
     pub teeth: Option<ToothInputs>,
     /// Non-fatal findings (undercut, formulas outside their fitted range).
     pub warnings: Vec<String>,
+    /// A gear train's stages and assembly (`[[stage]]`); None: the single pair. The
+    /// fields above are then the first stage's (its pair, stiffness, grid, lumped
+    /// parameters and operating point).
+    pub train: Option<super::train::TrainModel>,
 }
 
 /// Pitch-line velocity above which a spur pair is implausible, m/s: ground, precision
@@ -127,6 +124,9 @@ impl Model {
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
     /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        if !case.stage.is_empty() {
+            return Self::train_from_case(case);
+        }
         let pair = GearPair::from_case(&case.gear).map_err(|e| ModelError(e.0))?;
         let mut warnings = pair.warnings.clone();
         if case.contact.load_sharing == LoadSharingModel::Pedrero && pair.contact_ratio >= 2.0 {
@@ -141,8 +141,13 @@ impl Model {
         }
         let elastic = ElasticPair::from_case(&case.materials);
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-        let mesh = MeshStiffness::with_fillet(&pair, &elastic, n_table, fillet_settings(case))
-            .map_err(|e| ModelError(e.0))?;
+        let mesh = MeshStiffness::with_fillet(
+            &pair,
+            &elastic,
+            n_table,
+            FilletSettings::for_pair(&case.stiffness, &case.gear),
+        )
+        .map_err(|e| ModelError(e.0))?;
         warnings.extend(mesh.warnings().iter().cloned());
         let params = DynamicParams::from_case(case, &pair);
         warnings.extend(body_value_warnings(
@@ -157,8 +162,11 @@ impl Model {
             &pair,
             &mesh,
             &grid,
-            [params.pinion_speed_rad_s, params.gear_speed_rad_s],
-            params.static_mesh_force_n,
+            [
+                params.operating.pinion_speed_rad_s,
+                params.operating.gear_speed_rad_s,
+            ],
+            params.operating.static_mesh_force_n,
         )
         .map_err(ModelError)?;
         warnings.extend(tolerance_extrapolation_warnings(case, &pair));
@@ -184,6 +192,49 @@ impl Model {
             settings: SteadyStateSettings::from_case(&case.numerics),
             pair,
             warnings,
+            train: None,
+        })
+    }
+
+    /// The model of a train case: its stages and assembly, and the first stage in the
+    /// single pair's fields.
+    fn train_from_case(case: &Case) -> Result<Self, ModelError> {
+        let elastic = ElasticPair::from_case(&case.materials);
+        let train = super::train::TrainModel::from_case(case, &elastic)?;
+        let first = &train.stages[0];
+        let mut warnings: Vec<String> = Vec::new();
+        for (k, s) in train.stages.iter().enumerate() {
+            let stage_warnings = s.pair.warnings.iter().chain(s.mesh.warnings());
+            warnings.extend(stage_warnings.map(|w| format!("stage {}: {w}", k + 1)));
+        }
+        let p = &train.operating.meshes[0];
+        let params = DynamicParams {
+            lumped: first.lumped.clone(),
+            speed_boundary: case.operating.speed_boundary,
+            motor_slip_damping_nm_s_per_rad: case.operating.motor_slip_damping_nm_s_per_rad,
+            operating: crate::dynamics::params::OperatingPoint {
+                pinion_speed_rad_s: p.pinion_speed_rad_s,
+                gear_speed_rad_s: p.gear_speed_rad_s,
+                brake_torque_nm: p.gear_torque_nm,
+                motor_torque_nm: p.pinion_torque_nm,
+                mesh_frequency_hz: p.mesh_frequency_hz,
+                static_mesh_force_n: p.static_mesh_force_n,
+            },
+        };
+        Ok(Self {
+            pair: first.pair.clone(),
+            mesh: first.mesh.clone(),
+            grid: first.grid.clone(),
+            params,
+            elastic,
+            friction: Friction::from_case(&case.friction),
+            roughness: RoughnessLaw::from_case(&case.surface),
+            settings: SteadyStateSettings::from_case(&case.numerics),
+            effective_modulus_pa: effective_modulus_of(&case.materials),
+            teeth: None,
+            case: case.clone(),
+            warnings,
+            train: Some(train),
         })
     }
 
@@ -229,6 +280,22 @@ impl Model {
         roughness_um: f64,
         teeth: Option<&'a ToothMesh>,
     ) -> GearSystem<'a> {
+        if let Some(train) = &self.train {
+            // The first stage's gap and error; the later stages' teeth new.
+            let n = train.stages.len();
+            let gaps: Vec<&PairGap> = (0..n).map(|k| if k == 0 { gap } else { &NO_GAP }).collect();
+            let ext: Vec<&ExternalError> = (0..n)
+                .map(|k| if k == 0 { external } else { &NO_ERROR })
+                .collect();
+            return train.system(
+                &self.case,
+                &self.friction,
+                self.effective_modulus_pa,
+                &gaps,
+                &ext,
+                roughness_um,
+            );
+        }
         let load_sharing = self.case.contact.load_sharing;
         GearSystem::new(GearSystemParts {
             pair: &self.pair,
@@ -262,6 +329,31 @@ impl Model {
         }
     }
 
+    /// Name and unit of each coordinate of the model's dynamic system
+    /// (`Assembly::coordinate_names`).
+    pub fn coordinate_names(&self) -> Vec<(String, &'static str)> {
+        match &self.train {
+            Some(t) => t.assembly.coordinate_names(),
+            None => crate::dynamics::assembly::Assembly::new(
+                crate::dynamics::assembly::elements::Elements::single_pair(
+                    &self.params,
+                    &self.pair,
+                ),
+            )
+            .map(|a| a.coordinate_names())
+            .unwrap_or_default(),
+        }
+    }
+
+    /// Number of states of the model's dynamic system (twice its coordinates): the length
+    /// of a periodic end state.
+    pub fn state_len(&self) -> usize {
+        match &self.train {
+            Some(t) => 2 * t.assembly.len(),
+            None => crate::dynamics::model::NSTATE,
+        }
+    }
+
     /// Roughness that goes with a wear state, um.
     pub fn roughness_for(&self, wear: &WearState) -> f64 {
         self.roughness.rms_um(wear.max_pinion_m())
@@ -283,7 +375,7 @@ impl Model {
         &self,
         wear: &WearState,
         external: &ExternalError,
-        start: Option<&[f64; NSTATE]>,
+        start: Option<&[f64]>,
     ) -> Result<DynamicResponse, DynamicsError> {
         self.dynamic_with(wear, external, start, &self.settings)
     }
@@ -294,7 +386,7 @@ impl Model {
         &self,
         wear: &WearState,
         external: &ExternalError,
-        start: Option<&[f64; NSTATE]>,
+        start: Option<&[f64]>,
         settings: &SteadyStateSettings,
     ) -> Result<DynamicResponse, DynamicsError> {
         let gap = wear.pair_gap(&self.grid);
@@ -310,17 +402,4 @@ impl Model {
         let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_quasi_static(&sys, self.settings.steps_per_mesh_period)
     }
-}
-
-/// The case's fillet-foundation settings. The built-in pair is exempt from the theta_f
-/// limit of Sainsot's fit: under the fillet-junction convention its 19-tooth pinion has
-/// theta_f = 0.159 rad, above the fit's 0.12 (docs/MODEL.md, section 2), and the built-in
-/// case must run as the paper's case; every case with the built-in tooth form (teeth,
-/// reference profile, shifts; theta_f depends on nothing else) shares the exemption and
-/// the warning. h_f stays checked.
-fn fillet_settings(case: &Case) -> Option<FilletSettings> {
-    FilletSettings::from_case(&case.stiffness).map(|mut s| {
-        s.allow_theta_f_extrapolation = case.gear.same_tooth_form(&GearSection::default());
-        s
-    })
 }

@@ -14,6 +14,8 @@ pub struct ModalAnalysis {
     pub undamped: Modes,
     /// Poles of the damped system (all damping included).
     pub damped: DampedModes,
+    /// Name and unit of each coordinate of the shapes (`Assembly::coordinate_names`).
+    pub coordinates: Vec<(String, &'static str)>,
 }
 
 impl ModalAnalysis {
@@ -24,6 +26,7 @@ impl ModalAnalysis {
         Self {
             undamped: modes(&sys),
             damped: damped_modes(&sys),
+            coordinates: sys.assembly().coordinate_names(),
         }
     }
 

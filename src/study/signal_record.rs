@@ -35,7 +35,7 @@ pub struct SignalRecord {
 /// mesh frequency over its teeth (so 570 Hz over 19 teeth reads 30 Hz exactly, not back
 /// from rad/s).
 pub fn kinematics(model: &Model) -> Kinematics {
-    let f_m = model.params.mesh_frequency_hz;
+    let f_m = model.params.operating.mesh_frequency_hz;
     Kinematics {
         pinion_hz: f_m / model.pair.pinion.teeth as f64,
         gear_hz: f_m / model.pair.gear.teeth as f64,

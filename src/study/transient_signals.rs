@@ -7,7 +7,6 @@ use super::model::Model;
 use crate::config::case::{Case, LoadPoint, SpeedBoundary, TorqueShaft};
 use crate::dynamics::drive::{Drive, Tabulated};
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::model::State;
 use crate::dynamics::params::OperatingPoint;
 use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::transient::integrate_transient;
@@ -62,8 +61,10 @@ pub fn drive_of(model: &Model, duration: f64) -> Drive {
         // Torque on the shaft it is given on -> on the shaft where the load acts.
         let on_gear_side = p.speed_boundary != SpeedBoundary::BrakeSpeedImposed;
         let per_given = match (case.operating.load_torque_shaft, on_gear_side) {
-            (TorqueShaft::Pinion, true) => p.brake_torque_nm / p.motor_torque_nm,
-            (TorqueShaft::Gear, false) => p.motor_torque_nm / p.brake_torque_nm,
+            (TorqueShaft::Pinion, true) => {
+                p.operating.brake_torque_nm / p.operating.motor_torque_nm
+            }
+            (TorqueShaft::Gear, false) => p.operating.motor_torque_nm / p.operating.brake_torque_nm,
             _ => 1.0,
         };
         let rate = (20.0 * s.torque_fluctuation_bandwidth_hz).max(1000.0);
@@ -103,7 +104,7 @@ pub fn transient_clean_record(
     // The steady state at the starting speed: the start state and the lead-in.
     let r0 = model.dynamic(wear, &ExternalError::none())?;
     let lead = bearing_forces(&r0, &model.params);
-    let start = State::from_column_slice(&r0.end_state);
+    let start = r0.end_state.clone();
     // The transient's system: the case at its fastest speed, so that the error control's
     // velocity scale (`period::state_scales`) suits the whole ramp.
     let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);
@@ -133,7 +134,9 @@ pub fn transient_clean_record(
     )?;
     let ratio = match chain.tachometer.shaft {
         Shaft::Pinion => 1.0,
-        Shaft::Gear => model.params.gear_speed_rad_s / model.params.pinion_speed_rad_s,
+        Shaft::Gear => {
+            model.params.operating.gear_speed_rad_s / model.params.operating.pinion_speed_rad_s
+        }
     };
     let samples = (duration * chain.acquisition.sampling_rate_hz).ceil() as usize;
     let record = transient_record(&sampler, &lead, chain, &|t| ratio * drive.angle(t), samples);

@@ -12,7 +12,6 @@
 
 use super::model::Model;
 use super::wear_loop::{next_update, Next, WearMode, WearRun};
-use crate::dynamics::model::NSTATE;
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
 /// floating-point operations, so only the rounding of the cycle difference (exact for
@@ -65,10 +64,11 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
         // A dynamic update keeps the periodic state its response ended on (the next
         // update's warm start); a quasi-static one has none.
         match (run.mode, &r.end_state) {
-            (WearMode::Dynamic, Some(y)) if y.len() == NSTATE && y.iter().all(|v| v.is_finite()) => {}
+            (WearMode::Dynamic, Some(y)) if y.len() == model.state_len() && y.iter().all(|v| v.is_finite()) => {}
             (WearMode::Dynamic, _) => {
                 return Err(at(format!(
-                    "a dynamic update must hold its periodic end state ({NSTATE} finite numbers): this is not a dynamic run's record"
+                    "a dynamic update must hold its periodic end state ({} finite numbers): this is not a dynamic run's record",
+                    model.state_len()
                 )))
             }
             (WearMode::QuasiStatic, None) => {}

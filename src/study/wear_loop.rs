@@ -23,7 +23,6 @@
 
 use super::model::Model;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::model::NSTATE;
 use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
@@ -192,7 +191,7 @@ pub fn solve(
     model: &Model,
     mode: WearMode,
     wear: &WearState,
-    start: Option<&[f64; NSTATE]>,
+    start: Option<&[f64]>,
 ) -> Result<DynamicResponse, DynamicsError> {
     let none = ExternalError::none();
     if mode == WearMode::QuasiStatic {
@@ -221,14 +220,21 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
     let k = model.case.wear.coefficient_m2_per_n;
     let inc: WearIncrement = match &model.teeth {
-        Some(_) => per_tooth_wear(&model.grid, &r.path, r.excitation_periods, z1, z2, k),
-        None => per_cycle_wear(&model.grid, &r.path, k, z1 as f64 / z2 as f64),
+        Some(_) => per_tooth_wear(
+            &model.grid,
+            &r.meshes[0].path,
+            r.excitation_periods,
+            z1,
+            z2,
+            k,
+        ),
+        None => per_cycle_wear(&model.grid, &r.meshes[0].path, k, z1 as f64 / z2 as f64),
     };
     let (path_rho1_m, path_load_n) = match &model.teeth {
         Some(_) => mean_load_along_path(model, r),
         None => (
-            r.path.iter().map(|p| p.rho1_m).collect(),
-            r.path.iter().map(|p| p.load_n).collect(),
+            r.meshes[0].path.iter().map(|p| p.rho1_m).collect(),
+            r.meshes[0].path.iter().map(|p| p.load_n).collect(),
         ),
     };
     UpdateRecord {
@@ -249,7 +255,7 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
 fn mean_load_along_path(model: &Model, r: &DynamicResponse) -> (Vec<f64>, Vec<f64>) {
     let periods = r.excitation_periods.max(1);
     let mut by: Vec<Vec<crate::dynamics::response::PathSample>> = vec![Vec::new(); periods];
-    for s in &r.path {
+    for s in &r.meshes[0].path {
         by[s.cycle.rem_euclid(periods as i64) as usize].push(*s);
     }
     let rho = model.grid.rho_pinion_m.clone();
@@ -266,9 +272,9 @@ fn mean_load_along_path(model: &Model, r: &DynamicResponse) -> (Vec<f64>, Vec<f6
 }
 
 /// The warm start a record offers.
-pub fn start_of(rec: &UpdateRecord) -> Option<[f64; NSTATE]> {
+pub fn start_of(rec: &UpdateRecord) -> Option<Vec<f64>> {
     let s = rec.end_state.as_ref()?;
-    (s.len() == NSTATE).then(|| std::array::from_fn(|i| s[i]))
+    (!s.is_empty()).then(|| s.clone())
 }
 
 /// What the update after a record gives.
@@ -312,7 +318,7 @@ pub fn next_update(
     let mut state = last.wear.clone();
     state.advance(&inc, n);
     let start = start_of(last);
-    Ok(match solve(model, mode, &state, start.as_ref()) {
+    Ok(match solve(model, mode, &state, start.as_deref()) {
         Ok(r) if r.contact_loss_fraction() > MAX_CONTACT_LOSS_FRACTION => Next::Stop(WearStop {
             cycles: state.cycles,
             kind: StopKind::ModelValidity,

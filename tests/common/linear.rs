@@ -22,12 +22,15 @@ pub fn linear_periodic_with_slopes(
     held: usize,
 ) -> (Vec<State>, Vec<(State, State)>) {
     let y_touch = sys.static_equilibrium();
-    let frozen: Vec<(SMatrix<f64, 16, 16>, State)> = grid
+    let frozen: Vec<(DMatrix<f64>, State)> = grid
         .windows(2)
         .map(|w| {
             let t = 0.5 * (w[0] + w[1]);
-            let a = sys.jacobian(ContactFrame::NATURAL, t, &y_touch);
-            let b = sys.derivative(ContactFrame::NATURAL, t, &y_touch).0 - a * y_touch;
+            let a = sys.jacobian(ContactFrame::NATURAL, t, y_touch.as_slice());
+            let b = sys
+                .derivative(ContactFrame::NATURAL, t, y_touch.as_slice())
+                .0
+                - &a * &y_touch;
             (a, b)
         })
         .collect();
@@ -56,7 +59,7 @@ pub fn linear_periodic_with_slopes(
         monodromy[(free[i], 16)] + monodromy[(free[i], held)] * y_touch[held]
     });
     let x = a.lu().solve(&rhs).expect("no eigenvalue 1");
-    let mut y = y_touch;
+    let mut y = y_touch.clone();
     for (k, i) in free.iter().enumerate() {
         y[*i] = x[k];
     }
@@ -66,12 +69,14 @@ pub fn linear_periodic_with_slopes(
         let mut z = nalgebra::SVector::<f64, 17>::zeros();
         z.fixed_rows_mut::<16>(0).copy_from(out.last().unwrap());
         z[16] = 1.0;
-        out.push((e * z).fixed_rows::<16>(0).into_owned());
+        out.push(State::from_column_slice(
+            (e * z).fixed_rows::<16>(0).as_slice(),
+        ));
     }
     let slopes = frozen
         .iter()
         .enumerate()
-        .map(|(i, (a, b))| (a * out[i] + b, a * out[i + 1] + b))
+        .map(|(i, (a, b))| (a * &out[i] + b, a * &out[i + 1] + b))
         .collect();
     (out, slopes)
 }

@@ -4,6 +4,7 @@
 pub mod figures;
 pub mod linear;
 pub mod paper;
+pub mod train;
 
 use std::path::Path;
 use std::process::{Command, Output};

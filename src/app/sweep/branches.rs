@@ -11,7 +11,6 @@ use super::cases::Planned;
 use super::records::{case_path, write_record};
 use super::Ran;
 use crate::config::Case;
-use crate::dynamics::model::NSTATE;
 use crate::io::output_dir::StateFolder;
 use crate::study::sweep::continuation::{run_continuation, PointRun};
 use crate::study::sweep::{Branch, CaseRecord, ContinuationLink, ContinuationPlan, SweepRow};
@@ -52,7 +51,7 @@ pub fn run_branches(
             m.insert(id, row);
         }
     };
-    let finished = |b: Branch, id: usize, start: Option<&[f64; NSTATE]>| {
+    let finished = |b: Branch, id: usize, start: Option<&[f64]>| {
         let (dir, _) = dir?;
         let p = by_id.get(&id)?;
         let r = CaseRecord::read(&case_path(dir, id)).ok()??;
@@ -75,7 +74,7 @@ pub fn run_branches(
                 outcome,
                 end_state,
             } => {
-                let link = ContinuationLink::new(b, start.as_ref(), &end_state);
+                let link = ContinuationLink::new(b, start.as_deref(), &end_state);
                 match dir {
                     Some((_, cases)) => write_record(cases, p, keys, &outcome.results, Some(link))
                         .map(|rec| keep(id, &rec)),

@@ -1,5 +1,5 @@
-//! Dense LU factorisation with partial pivoting on a stack matrix, for the Newton iteration
-//! matrix `I - h*gamma*J` of the SDIRK stepper.
+//! Dense LU factorisation with partial pivoting, for the Newton iteration matrix
+//! `I - h*gamma*J` of the SDIRK stepper (on the stack for a size known at compile time).
 //!
 //! Algorithm: Gaussian elimination with row partial pivoting, `P A = L U`
 //! (Golub & Van Loan, *Matrix Computations*, 4th ed., Alg. 3.4.1), column-oriented loops
@@ -10,37 +10,47 @@
 //! while a dense matrix-vector product parallelises (~65 ns), and the matrix is reused
 //! for thousands of Newton iterations per factorisation.
 //!
-//! Why not `nalgebra::linalg::LU`: for a *generic* `const N` it needs the typenum bound
-//! `Const<N>: DimMin<Const<N>, Output = Const<N>>`, which would leak into every generic
-//! caller. This 60-line version needs no bound, allocates nothing and is checked against
+//! Why not `nalgebra::linalg::LU`: for a *generic* dimension it needs the bound
+//! `D: DimMin<D, Output = D>`, which would leak into every generic caller. This 60-line
+//! version needs none, allocates nothing but the pivot list and is checked against
 //! nalgebra's LU for a concrete size in the tests below.
 //!
 //! When the Jacobian has the block form of a second-order system,
 //! [`second_order_inverse`] gets the inverse from a half-size Schur complement instead
 //! (the gear model's: 8 x 8 instead of 16 x 16; it allocates the small dynamic blocks).
 
-use nalgebra::{DMatrix, SMatrix, SVector};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DMatrix, DefaultAllocator, Dim};
+
+use super::{Matrix, Vector};
 
 /// `P A = L U` of an `N x N` matrix, stored in place (unit lower `L` below the diagonal,
 /// `U` on and above it) plus the row interchanges.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct StaticLu<const N: usize> {
-    lu: SMatrix<f64, N, N>,
+#[derive(Debug, Clone)]
+pub(crate) struct StaticLu<D: Dim>
+where
+    DefaultAllocator: Allocator<D, D>,
+{
+    lu: Matrix<D>,
     /// Row `k` was swapped with row `perm[k]` at elimination step `k`.
-    perm: [usize; N],
+    perm: Vec<usize>,
 }
 
-impl<const N: usize> StaticLu<N> {
+impl<D: Dim> StaticLu<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// Factorises `a`. Returns `None` when a pivot is zero or not finite (singular matrix
     /// or NaN/inf entries), so that callers can report an error instead of dividing by zero.
-    pub(crate) fn factor(a: &SMatrix<f64, N, N>) -> Option<Self> {
-        let mut lu = *a;
-        let mut perm = [0usize; N];
-        for k in 0..N {
+    pub(crate) fn factor(a: &Matrix<D>) -> Option<Self> {
+        let n = a.nrows();
+        let mut lu = a.clone();
+        let mut perm = vec![0usize; n];
+        for k in 0..n {
             // Pivot: the largest magnitude in column k on or below the diagonal.
             let mut p = k;
             let mut pivot_abs = lu[(k, k)].abs();
-            for i in k + 1..N {
+            for i in k + 1..n {
                 let v = lu[(i, k)].abs();
                 if v > pivot_abs {
                     p = i;
@@ -55,14 +65,14 @@ impl<const N: usize> StaticLu<N> {
                 lu.swap_rows(k, p);
             }
             let inv_pivot = 1.0 / lu[(k, k)];
-            for i in k + 1..N {
+            for i in k + 1..n {
                 lu[(i, k)] *= inv_pivot;
             }
             // Rank-one update of the trailing block, column by column (contiguous inner loop).
-            for j in k + 1..N {
+            for j in k + 1..n {
                 let ukj = lu[(k, j)];
                 if ukj != 0.0 {
-                    for i in k + 1..N {
+                    for i in k + 1..n {
                         lu[(i, j)] -= lu[(i, k)] * ukj;
                     }
                 }
@@ -72,10 +82,11 @@ impl<const N: usize> StaticLu<N> {
     }
 
     /// The inverse `A^{-1}`, column by column from `A x_j = e_j` (`N` solves).
-    pub(crate) fn inverse(&self) -> SMatrix<f64, N, N> {
-        let mut inv = SMatrix::<f64, N, N>::identity();
+    pub(crate) fn inverse(&self) -> Matrix<D> {
+        let (dim, _) = self.lu.shape_generic();
+        let mut inv = Matrix::<D>::identity_generic(dim, dim);
         for mut col in inv.column_iter_mut() {
-            let mut x: SVector<f64, N> = col.clone_owned();
+            let mut x: Vector<D> = col.clone_owned();
             self.solve_in_place(&mut x);
             col.copy_from(&x);
         }
@@ -84,8 +95,9 @@ impl<const N: usize> StaticLu<N> {
 
     /// Solves `A x = b` in place (`b` becomes `x`). Works on the column-major slices so
     /// that the inner loops are contiguous and free of bounds checks.
-    pub(crate) fn solve_in_place(&self, b: &mut SVector<f64, N>) {
-        for k in 0..N {
+    pub(crate) fn solve_in_place(&self, b: &mut Vector<D>) {
+        let n = self.perm.len();
+        for k in 0..n {
             let p = self.perm[k];
             if p != k {
                 b.swap_rows(k, p);
@@ -94,16 +106,16 @@ impl<const N: usize> StaticLu<N> {
         let a = self.lu.as_slice();
         let x = b.as_mut_slice();
         // Forward substitution with unit lower L, column by column.
-        for j in 0..N {
+        for j in 0..n {
             let xj = x[j];
-            let col = &a[j * N..(j + 1) * N];
+            let col = &a[j * n..(j + 1) * n];
             for (xi, lij) in x[j + 1..].iter_mut().zip(&col[j + 1..]) {
                 *xi -= lij * xj;
             }
         }
         // Back substitution with U, column by column.
-        for j in (0..N).rev() {
-            let col = &a[j * N..(j + 1) * N];
+        for j in (0..n).rev() {
+            let col = &a[j * n..(j + 1) * n];
             x[j] /= col[j];
             let xj = x[j];
             for (xi, uij) in x[..j].iter_mut().zip(&col[..j]) {
@@ -121,14 +133,15 @@ impl<const N: usize> StaticLu<N> {
 /// half the size instead of the full one: about a quarter of the work (Golub & Van Loan,
 /// *Matrix Computations*, Sect. 3.2.11 on block elimination). Returns `None` when `J`
 /// lacks that structure or `S` is singular (the caller then takes the full LU).
-pub(crate) fn second_order_inverse<const N: usize>(
-    jac: &SMatrix<f64, N, N>,
-    c: f64,
-) -> Option<SMatrix<f64, N, N>> {
-    if !N.is_multiple_of(2) || N == 0 {
+pub(crate) fn second_order_inverse<D: Dim>(jac: &Matrix<D>, c: f64) -> Option<Matrix<D>>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    let full = jac.nrows();
+    if !full.is_multiple_of(2) || full == 0 {
         return None;
     }
-    let n = N / 2;
+    let n = full / 2;
     for i in 0..n {
         for j in 0..n {
             if jac[(i, j)] != 0.0 || jac[(i, n + j)] != f64::from(u8::from(i == j)) {
@@ -142,7 +155,8 @@ pub(crate) fn second_order_inverse<const N: usize>(
     });
     let s_inv = s.try_inverse()?;
     let p = &s_inv * &a_q;
-    let mut out = SMatrix::<f64, N, N>::zeros();
+    let (dim, _) = jac.shape_generic();
+    let mut out = Matrix::<D>::zeros_generic(dim, dim);
     for i in 0..n {
         for j in 0..n {
             out[(i, j)] = f64::from(u8::from(i == j)) + c * c * p[(i, j)];
@@ -157,7 +171,7 @@ pub(crate) fn second_order_inverse<const N: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::{Matrix5, Vector5};
+    use nalgebra::{Matrix5, SMatrix, Vector5};
 
     /// A deterministic, non-symmetric, well-conditioned 5x5 matrix whose (0,0) entry is zero,
     /// so that the factorisation must pivot.

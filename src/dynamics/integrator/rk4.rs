@@ -5,18 +5,25 @@
 //! is for non-stiff problems; on the gear model's -1.4e8 1/s eigenvalues it needs
 //! `h < 2e-8 s`.
 
-use nalgebra::SVector;
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim};
+use std::marker::PhantomData;
 
-use super::{IntegratorError, OdeSystem, StepStats, Stepper};
+use super::{IntegratorError, OdeSystem, StepStats, Stepper, Vector};
 
-/// Fixed-step classical RK4. Four `rhs` calls per step, no allocation.
+/// Fixed-step classical RK4. Four `rhs` calls per step, no allocation (for a size known
+/// at compile time).
 #[derive(Debug, Clone)]
-pub struct Rk4<const N: usize> {
+pub struct Rk4<D> {
     h: f64,
     stats: StepStats,
+    dim: PhantomData<D>,
 }
 
-impl<const N: usize> Rk4<N> {
+impl<D: Dim> Rk4<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// A stepper with step `h` (time units, finite and > 0).
     pub fn new(h: f64) -> Result<Self, IntegratorError> {
         if !(h > 0.0 && h.is_finite()) {
@@ -27,6 +34,7 @@ impl<const N: usize> Rk4<N> {
         Ok(Self {
             h,
             stats: StepStats::default(),
+            dim: PhantomData,
         })
     }
 
@@ -41,18 +49,18 @@ impl<const N: usize> Rk4<N> {
     }
 
     /// One step `y(t) -> y(t + h)`; `y` is untouched on error (non-finite result).
-    pub fn step<S: OdeSystem<N>>(
+    pub fn step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
     ) -> Result<StepStats, IntegratorError> {
         let h = self.h;
         let k1 = sys.rhs(t, y);
-        let k2 = sys.rhs(t + 0.5 * h, &(*y + (0.5 * h) * k1));
-        let k3 = sys.rhs(t + 0.5 * h, &(*y + (0.5 * h) * k2));
-        let k4 = sys.rhs(t + h, &(*y + h * k3));
-        let y_new = *y + (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+        let k2 = sys.rhs(t + 0.5 * h, &(&*y + &k1 * (0.5 * h)));
+        let k3 = sys.rhs(t + 0.5 * h, &(&*y + &k2 * (0.5 * h)));
+        let k4 = sys.rhs(t + h, &(&*y + &k3 * h));
+        let y_new = &*y + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
         let st = StepStats {
             steps: 1,
             rhs_calls: 4,
@@ -68,16 +76,19 @@ impl<const N: usize> Rk4<N> {
     }
 }
 
-impl<const N: usize> Stepper<N> for Rk4<N> {
+impl<D: Dim> Stepper<D> for Rk4<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     fn step_size(&self) -> f64 {
         self.h
     }
 
-    fn step<S: OdeSystem<N>>(
+    fn step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
     ) -> Result<StepStats, IntegratorError> {
         Rk4::step(self, sys, t, y)
     }

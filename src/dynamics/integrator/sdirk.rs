@@ -48,31 +48,40 @@
 //! converged `theta` exceeded `refresh_rate` schedules a refresh at `(t_{n+1}, y_{n+1})`
 //! before the next step.
 
-use nalgebra::{SMatrix, SVector};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, DimName, U1};
 
 use super::lu::{second_order_inverse, StaticLu};
 pub use super::options::SdirkOptions;
 
 mod newton;
 use super::tableau::{Tableau, ALEXANDER3, MAX_STAGES};
-use super::{finite_difference_jacobian, IntegratorError, OdeSystem, StepStats, Stepper};
+use super::{
+    finite_difference_jacobian, IntegratorError, Matrix, OdeSystem, StepStats, Stepper, Vector,
+};
 
 /// Jacobian re-evaluations allowed per stage after Newton failures, before giving up.
 const MAX_STAGE_REFRESHES: usize = 2;
 
 /// End of the previous accepted step, used to predict (SDIRK) or supply (ESDIRK, first
 /// same as last) the first stage of the next one.
-#[derive(Debug, Clone, Copy)]
-struct LastStep<const N: usize> {
+#[derive(Debug, Clone)]
+struct LastStep<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
     t_end: f64,
-    y_end: SVector<f64, N>,
+    y_end: Vector<D>,
     /// Last stage derivative `k_s`, which approximates `f(t_end, y_end)`.
-    k_end: SVector<f64, N>,
+    k_end: Vector<D>,
 }
 
-impl<const N: usize> LastStep<N> {
+impl<D: Dim> LastStep<D>
+where
+    DefaultAllocator: Allocator<D>,
+{
     /// Whether a step starting at `(t, y)` continues this one.
-    fn continues(&self, t: f64, y: &SVector<f64, N>, h: f64) -> bool {
+    fn continues(&self, t: f64, y: &Vector<D>, h: f64) -> bool {
         (t - self.t_end).abs() <= 1e-6 * h && *y == self.y_end
     }
 }
@@ -84,73 +93,102 @@ enum Failure {
 }
 
 /// A computed but not yet accepted step (see [`Sdirk::try_step`]).
-#[derive(Debug, Clone, Copy)]
-pub struct Trial<const N: usize> {
+#[derive(Debug, Clone)]
+pub struct Trial<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
     /// Start time and size of the step.
     pub t: f64,
     pub h: f64,
     /// Solution at `t + h`.
-    pub y: SVector<f64, N>,
+    pub y: Vector<D>,
     /// Weighted RMS norm of the local error estimate (<= 1: within tolerance); 0 for a
     /// tableau without an embedded solution.
     pub error: f64,
     /// Work spent on this attempt.
     pub stats: StepStats,
-    k_end: SVector<f64, N>,
+    k_end: Vector<D>,
 }
 
 /// L-stable DIRK stepper for stiff systems (see module docs). Holds the factorised
 /// iteration matrix between steps; use one per independent trajectory.
 #[derive(Debug, Clone)]
-pub struct Sdirk<const N: usize> {
+pub struct Sdirk<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     tab: &'static Tableau,
     h: f64,
     opts: SdirkOptions,
-    abs_tol: SVector<f64, N>,
+    dim: D,
+    abs_tol: Vector<D>,
     /// Error weights `err_abs_i + err_rel_i max(|y_n,i|, |y_n+1,i|)`.
-    err_abs: SVector<f64, N>,
-    err_rel: SVector<f64, N>,
+    err_abs: Vector<D>,
+    err_rel: Vector<D>,
     /// The last Jacobian evaluated, if still valid.
-    jac: Option<SMatrix<f64, N, N>>,
+    jac: Option<Matrix<D>>,
     /// `(I - h gamma J)^{-1}` for `m_inv_h`, built from an LU factorisation (see
     /// [`super::lu`] for why the inverse rather than triangular solves).
-    m_inv: SMatrix<f64, N, N>,
+    m_inv: Matrix<D>,
     m_inv_h: f64,
     /// A new Jacobian must be evaluated before the next step.
     refresh: bool,
     /// Hairer's `eta = theta / (1 - theta)` carried between stages and steps.
     eta: f64,
-    last: Option<LastStep<N>>,
+    last: Option<LastStep<D>>,
     /// `f(t, y)` of the last explicit first stage computed, for repeated attempts from
     /// the same point (rejected steps, event location).
-    first_stage: Option<(f64, SVector<f64, N>, SVector<f64, N>)>,
+    first_stage: Option<(f64, Vector<D>, Vector<D>)>,
     stats: StepStats,
 }
 
-impl<const N: usize> Sdirk<N> {
+impl<D: DimName> Sdirk<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// Alexander's SDIRK3 with step `h` (time units, finite and > 0) and Newton
-    /// settings `opts`.
+    /// settings `opts`, for a dimension known at compile time.
     pub fn new(h: f64, opts: SdirkOptions) -> Result<Self, IntegratorError> {
         Self::with_tableau(&ALEXANDER3, h, opts)
     }
 
-    /// The stepper of tableau `tab` (see [`super::tableau`]).
+    /// The stepper of tableau `tab` (see [`super::tableau`]), for a dimension known at
+    /// compile time.
     pub fn with_tableau(
+        tab: &'static Tableau,
+        h: f64,
+        opts: SdirkOptions,
+    ) -> Result<Self, IntegratorError> {
+        Self::with_dimension(D::name(), tab, h, opts)
+    }
+}
+
+impl<D: Dim> Sdirk<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    /// The stepper of tableau `tab` for states of dimension `dim` (`Dyn(n)` for a size
+    /// known when the system is built).
+    pub fn with_dimension(
+        dim: D,
         tab: &'static Tableau,
         h: f64,
         opts: SdirkOptions,
     ) -> Result<Self, IntegratorError> {
         opts.validate()?;
         check_step(h)?;
+        let repeat = |v: f64| Vector::<D>::from_element_generic(dim, U1, v);
         Ok(Self {
             tab,
             h,
             opts,
-            abs_tol: SVector::repeat(opts.abs_tol),
-            err_abs: SVector::repeat(opts.abs_tol),
-            err_rel: SVector::repeat(opts.rel_tol),
+            dim,
+            abs_tol: repeat(opts.abs_tol),
+            err_abs: repeat(opts.abs_tol),
+            err_rel: repeat(opts.rel_tol),
             jac: None,
-            m_inv: SMatrix::identity(),
+            m_inv: Matrix::<D>::identity_generic(dim, dim),
             m_inv_h: f64::NAN,
             refresh: true,
             eta: 1.0,
@@ -166,7 +204,7 @@ impl<const N: usize> Sdirk<N> {
     }
 
     /// Per-component absolute Newton tolerances (units of each `y_i`, all finite and > 0).
-    pub fn set_abs_tol(&mut self, abs_tol: SVector<f64, N>) -> Result<(), IntegratorError> {
+    pub fn set_abs_tol(&mut self, abs_tol: Vector<D>) -> Result<(), IntegratorError> {
         if !abs_tol.iter().all(|a| *a > 0.0 && a.is_finite()) {
             return Err(IntegratorError::InvalidSetting(
                 "abs_tol must be finite and > 0",
@@ -180,8 +218,8 @@ impl<const N: usize> Sdirk<N> {
     /// `abs_i + rel_i max(|y_n,i|, |y_n+1,i|)` (units of `y_i`; `abs_i > 0`, `rel_i >= 0`).
     pub fn set_error_tolerance(
         &mut self,
-        abs: SVector<f64, N>,
-        rel: SVector<f64, N>,
+        abs: Vector<D>,
+        rel: Vector<D>,
     ) -> Result<(), IntegratorError> {
         if !abs.iter().all(|a| *a > 0.0 && a.is_finite())
             || !rel.iter().all(|r| *r >= 0.0 && r.is_finite())
@@ -229,11 +267,11 @@ impl<const N: usize> Sdirk<N> {
 
     /// One step `y(t) -> y(t + h)` of the default size. On error `y` is unchanged
     /// (never NaN).
-    pub fn step<S: OdeSystem<N>>(
+    pub fn step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
     ) -> Result<StepStats, IntegratorError> {
         let trial = self.try_step(sys, t, y, self.h)?;
         self.accept(&trial);
@@ -246,13 +284,13 @@ impl<const N: usize> Sdirk<N> {
     /// Computes a step of size `h` from `(t, y)` with its error estimate, without
     /// committing it: pass it to [`Sdirk::accept`] to continue from it, or try again
     /// (e.g. with a smaller `h`) from the same point.
-    pub fn try_step<S: OdeSystem<N>>(
+    pub fn try_step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &SVector<f64, N>,
+        y: &Vector<D>,
         h: f64,
-    ) -> Result<Trial<N>, IntegratorError> {
+    ) -> Result<Trial<D>, IntegratorError> {
         check_step(h)?;
         let mut st = StepStats::default();
         let result = self.try_step_inner(sys, t, y, h, &mut st);
@@ -268,23 +306,25 @@ impl<const N: usize> Sdirk<N> {
     }
 
     /// Makes `trial` the last step: the next one starting at its end continues it.
-    pub fn accept(&mut self, trial: &Trial<N>) {
+    pub fn accept(&mut self, trial: &Trial<D>) {
         self.last = Some(LastStep {
             t_end: trial.t + trial.h,
-            y_end: trial.y,
-            k_end: trial.k_end,
+            y_end: trial.y.clone(),
+            k_end: trial.k_end.clone(),
         });
         self.stats.steps += 1;
     }
 
-    fn try_step_inner<S: OdeSystem<N>>(
+    /// The step's work: the matrix brought up to date, the stages solved, the error
+    /// estimated. Returns the solution, the last stage derivative and the error norm.
+    fn try_step_inner<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &SVector<f64, N>,
+        y: &Vector<D>,
         h: f64,
         st: &mut StepStats,
-    ) -> Result<(SVector<f64, N>, SVector<f64, N>, f64), IntegratorError> {
+    ) -> Result<(Vector<D>, Vector<D>, f64), IntegratorError> {
         if !t.is_finite() || !y.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::NonFinite { t });
         }
@@ -296,106 +336,150 @@ impl<const N: usize> Sdirk<N> {
             self.factor(t, h, st)?;
         }
         let tab = self.tab;
-        let hg = h * tab.gamma;
-        let continues = self.last.as_ref().filter(|l| l.continues(t, y, h));
-        let mut k = [SVector::<f64, N>::zeros(); MAX_STAGES];
+        let zero = || Vector::<D>::zeros_generic(self.dim, U1);
+        let mut k: [Vector<D>; MAX_STAGES] = std::array::from_fn(|_| zero());
         let explicit = tab.explicit_first_stage();
         // Predictor: stage derivative k_i ~ k_(i-1); for the first implicit stage the last
         // stage of the previous step if this step continues it (else the explicit stage
         // derivative, else k = 0, i.e. Y = y_n).
-        let mut k_guess = continues.map_or(SVector::zeros(), |l| l.k_end);
+        let continues = self.last.as_ref().filter(|l| l.continues(t, y, h));
+        let mut k_guess = continues.map_or_else(zero, |l| l.k_end.clone());
         if explicit {
-            k[0] = match (continues, &self.first_stage) {
-                (Some(l), _) => l.k_end,
-                (None, Some((t0, y0, f0))) if *t0 == t && y0 == y => *f0,
-                _ => {
-                    let f0 = sys.rhs(t, y);
-                    st.rhs_calls += 1;
-                    if !f0.iter().all(|v| v.is_finite()) {
-                        return Err(IntegratorError::NonFinite { t });
-                    }
-                    self.first_stage = Some((t, *y, f0));
-                    f0
-                }
-            };
-            k_guess = k[0];
+            k[0] = self.first_stage_derivative(sys, t, y, h, st)?;
+            k_guess = k[0].clone();
         }
         // Inverse weights of the Newton norm (see module docs).
-        let inv_scale = SVector::<f64, N>::from_fn(|i, _| {
+        let inv_scale = Vector::<D>::from_fn_generic(self.dim, U1, |i, _| {
             1.0 / (self.abs_tol[i] + self.opts.rel_tol * y[i].abs())
         });
-        let mut y_stage = *y;
+        let mut y_stage = y.clone();
         let mut max_rate: f64 = 0.0;
         for i in usize::from(explicit)..tab.stages {
-            let mut base = *y;
+            let mut base = y.clone();
             for (j, kj) in k.iter().enumerate().take(i) {
-                base += (h * tab.a[i][j]) * kj;
+                base += kj * (h * tab.a[i][j]);
             }
-            let t_i = t + tab.c[i] * h;
-            // Newton start; on failure, moved to the last contracting iterate.
-            let mut start = base + hg * k_guess;
-            let mut refreshes = 0;
-            y_stage = loop {
-                let can_refresh = refreshes < MAX_STAGE_REFRESHES;
-                match self.solve_stage(sys, t_i, hg, &inv_scale, &base, &mut start, can_refresh, st)
-                {
-                    Ok((y_i, rate)) => {
-                        max_rate = max_rate.max(rate);
-                        break y_i;
-                    }
-                    // The converged earlier stages stay valid (the Jacobian only steers
-                    // Newton), so only this stage is redone, with J at its own time.
-                    Err(_) if can_refresh => {
-                        refreshes += 1;
-                        st.retries += 1;
-                        self.refresh_matrix(sys, t_i, &start, h, st)?;
-                    }
-                    Err(Failure::NonFinite) => return Err(IntegratorError::NonFinite { t }),
-                    Err(Failure::Newton { iterations, rate }) => {
-                        return Err(IntegratorError::NewtonFailed {
-                            t,
-                            stage: i,
-                            iterations,
-                            rate,
-                        })
-                    }
-                }
-            };
-            k[i] = (y_stage - base) / hg;
-            k_guess = k[i];
+            let (y_i, rate) = self.stage(sys, t, h, i, &inv_scale, &base, &k_guess, st)?;
+            max_rate = max_rate.max(rate);
+            y_stage = y_i;
+            k[i] = (&y_stage - &base) / (h * tab.gamma);
+            k_guess = k[i].clone();
         }
         // Slow contraction in this step: refresh the Jacobian before the next one.
         self.refresh = max_rate > self.opts.refresh_rate;
-        let error = match tab.b_hat {
-            Some(bh) => {
-                let mut e = SVector::<f64, N>::zeros();
-                for (i, ki) in k.iter().enumerate().take(tab.stages) {
-                    e += (h * (tab.b[i] - bh[i])) * ki;
-                }
-                let e = self.m_inv * e;
-                let sum: f64 = (0..N)
-                    .map(|i| {
-                        let sc =
-                            self.err_abs[i] + self.err_rel[i] * y[i].abs().max(y_stage[i].abs());
-                        (e[i] / sc).powi(2)
-                    })
-                    .sum();
-                (sum / N as f64).sqrt()
-            }
-            None => 0.0,
-        };
+        let error = self.error_norm(&k, y, &y_stage, h);
         if !error.is_finite() {
             return Err(IntegratorError::NonFinite { t });
         }
-        Ok((y_stage, k[tab.stages - 1], error))
+        let k_end = k[tab.stages - 1].clone();
+        Ok((y_stage, k_end, error))
     }
 
-    /// Evaluates `J` at `(t, y)` and factorises `I - h gamma J`.
-    fn refresh_matrix<S: OdeSystem<N>>(
+    /// `f(t, y)` for an explicit first stage: the last stage derivative of the step that
+    /// ended at `(t, y)` (first same as last), or the one already computed for another
+    /// attempt from the same point, or a new evaluation.
+    fn first_stage_derivative<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &SVector<f64, N>,
+        y: &Vector<D>,
+        h: f64,
+        st: &mut StepStats,
+    ) -> Result<Vector<D>, IntegratorError> {
+        if let Some(l) = self.last.as_ref().filter(|l| l.continues(t, y, h)) {
+            return Ok(l.k_end.clone());
+        }
+        if let Some((t0, y0, f0)) = &self.first_stage {
+            if *t0 == t && y0 == y {
+                return Ok(f0.clone());
+            }
+        }
+        let f0 = sys.rhs(t, y);
+        st.rhs_calls += 1;
+        if !f0.iter().all(|v| v.is_finite()) {
+            return Err(IntegratorError::NonFinite { t });
+        }
+        self.first_stage = Some((t, y.clone(), f0.clone()));
+        Ok(f0)
+    }
+
+    /// Solves implicit stage `i` from `base` (y_n plus the earlier stages' share), with
+    /// up to [`MAX_STAGE_REFRESHES`] Jacobian refreshes at the stage's own time. Returns
+    /// the stage value and its largest contraction rate.
+    #[allow(clippy::too_many_arguments)]
+    fn stage<S: OdeSystem<D>>(
+        &mut self,
+        sys: &mut S,
+        t: f64,
+        h: f64,
+        i: usize,
+        inv_scale: &Vector<D>,
+        base: &Vector<D>,
+        k_guess: &Vector<D>,
+        st: &mut StepStats,
+    ) -> Result<(Vector<D>, f64), IntegratorError> {
+        let hg = h * self.tab.gamma;
+        let t_i = t + self.tab.c[i] * h;
+        // Newton start; on failure, moved to the last contracting iterate.
+        let mut start = base + k_guess * hg;
+        let mut refreshes = 0;
+        loop {
+            let can_refresh = refreshes < MAX_STAGE_REFRESHES;
+            match self.solve_stage(sys, t_i, hg, inv_scale, base, &mut start, can_refresh, st) {
+                Ok(done) => return Ok(done),
+                // The converged earlier stages stay valid (the Jacobian only steers
+                // Newton), so only this stage is redone, with J at its own time.
+                Err(_) if can_refresh => {
+                    refreshes += 1;
+                    st.retries += 1;
+                    self.refresh_matrix(sys, t_i, &start, h, st)?;
+                }
+                Err(Failure::NonFinite) => return Err(IntegratorError::NonFinite { t }),
+                Err(Failure::Newton { iterations, rate }) => {
+                    return Err(IntegratorError::NewtonFailed {
+                        t,
+                        stage: i,
+                        iterations,
+                        rate,
+                    })
+                }
+            }
+        }
+    }
+
+    /// Weighted RMS norm of the embedded error estimate (module docs); 0 without an
+    /// embedded solution.
+    fn error_norm(
+        &self,
+        k: &[Vector<D>; MAX_STAGES],
+        y: &Vector<D>,
+        y_new: &Vector<D>,
+        h: f64,
+    ) -> f64 {
+        let Some(bh) = self.tab.b_hat else {
+            return 0.0;
+        };
+        let mut e = Vector::<D>::zeros_generic(self.dim, U1);
+        for (i, ki) in k.iter().enumerate().take(self.tab.stages) {
+            e += ki * (h * (self.tab.b[i] - bh[i]));
+        }
+        let e = &self.m_inv * e;
+        let n = y.len();
+        let sum: f64 = (0..n)
+            .map(|i| {
+                let sc = self.err_abs[i] + self.err_rel[i] * y[i].abs().max(y_new[i].abs());
+                (e[i] / sc).powi(2)
+            })
+            .sum();
+        (sum / n as f64).sqrt()
+    }
+
+    /// Evaluates `J` at `(t, y)` and factorises `I - h gamma J`.
+    fn refresh_matrix<S: OdeSystem<D>>(
+        &mut self,
+        sys: &mut S,
+        t: f64,
+        y: &Vector<D>,
         h: f64,
         st: &mut StepStats,
     ) -> Result<(), IntegratorError> {
@@ -409,8 +493,8 @@ impl<const N: usize> Sdirk<N> {
                 }
                 // Below atol/rtol a component is "zero" for the Newton test, so it is
                 // also the natural scale for its finite-difference increment.
-                let floor = self.abs_tol / self.opts.rel_tol.max(f64::EPSILON.sqrt());
-                st.rhs_calls += N as u64;
+                let floor = &self.abs_tol / self.opts.rel_tol.max(f64::EPSILON.sqrt());
+                st.rhs_calls += y.len() as u64;
                 finite_difference_jacobian(sys, t, y, &f_y, &floor)
             }
         };
@@ -434,7 +518,7 @@ impl<const N: usize> Sdirk<N> {
         let m_inv = match second_order_inverse(jac, c) {
             Some(inv) => inv,
             None => {
-                let m = SMatrix::<f64, N, N>::identity() - c * jac;
+                let m = Matrix::<D>::identity_generic(self.dim, self.dim) - jac * c;
                 StaticLu::factor(&m)
                     .ok_or(IntegratorError::SingularMatrix { t })?
                     .inverse()
@@ -451,16 +535,19 @@ impl<const N: usize> Sdirk<N> {
     }
 }
 
-impl<const N: usize> Stepper<N> for Sdirk<N> {
+impl<D: Dim> Stepper<D> for Sdirk<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     fn step_size(&self) -> f64 {
         self.h
     }
 
-    fn step<S: OdeSystem<N>>(
+    fn step<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t: f64,
-        y: &mut SVector<f64, N>,
+        y: &mut Vector<D>,
     ) -> Result<StepStats, IntegratorError> {
         Sdirk::step(self, sys, t, y)
     }

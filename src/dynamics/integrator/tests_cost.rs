@@ -6,7 +6,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{Const, SMatrix, SVector};
 
 use super::{OdeSystem, Rk4, Sdirk, SdirkOptions, StepStats, Stepper};
 
@@ -101,7 +101,7 @@ impl Cached {
     }
 }
 
-impl OdeSystem<16> for Cached {
+impl OdeSystem<Const<16>> for Cached {
     fn rhs(&mut self, t: f64, y: &V16) -> V16 {
         let mut f = self.a(t) * y;
         f[8] += 1e3 + 100.0 * (2.0 * std::f64::consts::PI * 30.0 * t).cos();
@@ -112,7 +112,11 @@ impl OdeSystem<16> for Cached {
     }
 }
 
-fn time_steps<T: Stepper<16>>(stepper: &mut T, sys: &mut Cached, n: usize) -> (f64, StepStats) {
+fn time_steps<T: Stepper<Const<16>>>(
+    stepper: &mut T,
+    sys: &mut Cached,
+    n: usize,
+) -> (f64, StepStats) {
     let (mut t, mut y) = (0.0, V16::zeros());
     let start = Instant::now();
     let stats = stepper.advance(sys, &mut t, black_box(&mut y), n).unwrap();
@@ -145,7 +149,7 @@ fn cost_per_step_on_16_state_system() {
             c_coupling: 1.4e8,
             analytic_jacobian: analytic,
         });
-        let mut s = Sdirk::<16>::new(h, opts).unwrap();
+        let mut s = Sdirk::<Const<16>>::new(h, opts).unwrap();
         let (ns, st) = time_steps(&mut s, &mut sys, n);
         report(
             &format!("SDIRK3 LTI stiff, analytic J = {analytic}"),
@@ -163,7 +167,7 @@ fn cost_per_step_on_16_state_system() {
             refresh_rate: rate,
             ..opts
         };
-        let mut s = Sdirk::<16>::new(h, o).unwrap();
+        let mut s = Sdirk::<Const<16>>::new(h, o).unwrap();
         let (ns, st) = time_steps(&mut s, &mut sys, n);
         report(
             &format!("SDIRK3 switching mesh stiffness, FD J, refresh_rate {rate}"),
@@ -176,7 +180,7 @@ fn cost_per_step_on_16_state_system() {
         c_coupling: 0.0,
         analytic_jacobian: false,
     });
-    let mut rk = Rk4::<16>::new(h).unwrap();
+    let mut rk = Rk4::<Const<16>>::new(h).unwrap();
     let (ns, st) = time_steps(&mut rk, &mut sys, n);
     report("RK4 non-stiff variant (no coupling damper)", ns, &st);
 }

@@ -1,7 +1,7 @@
 //! Tests of the ESDIRK3(2) pair: its order, the stage order that keeps it accurate on
 //! stiff boundary layers, and the embedded error estimate that steers the step.
 
-use nalgebra::{Matrix2, SVector, Vector1, Vector2};
+use nalgebra::{Const, Matrix2, SVector, Vector1, Vector2};
 
 use super::tableau::ESDIRK32;
 use super::{OdeSystem, Sdirk, SdirkOptions};
@@ -16,13 +16,13 @@ fn tight() -> SdirkOptions {
 }
 
 /// `n` fixed steps of size `h` with the ESDIRK from `(0, y)`; returns the end state.
-fn integrate<S: OdeSystem<N>, const N: usize>(
+fn integrate<S: OdeSystem<Const<N>>, const N: usize>(
     sys: &mut S,
     y0: SVector<f64, N>,
     h: f64,
     n: usize,
 ) -> SVector<f64, N> {
-    let mut s = Sdirk::<N>::with_tableau(&ESDIRK32, h, tight()).unwrap();
+    let mut s = Sdirk::<Const<N>>::with_tableau(&ESDIRK32, h, tight()).unwrap();
     let (mut t, mut y) = (0.0, y0);
     for _ in 0..n {
         let tr = s.try_step(sys, t, &y, h).unwrap();
@@ -63,9 +63,9 @@ fn stage_order_two_gives_second_order_in_the_stiff_limit() {
     let run = |esdirk: bool, h: f64| {
         let mut sys = |t: f64, y: &Vector1<f64>| Vector1::new(lambda * (y[0] - t.sin()) + t.cos());
         let mut s = if esdirk {
-            Sdirk::<1>::with_tableau(&ESDIRK32, h, tight()).unwrap()
+            Sdirk::<Const<1>>::with_tableau(&ESDIRK32, h, tight()).unwrap()
         } else {
-            Sdirk::<1>::new(h, tight()).unwrap()
+            Sdirk::<Const<1>>::new(h, tight()).unwrap()
         };
         let (mut t, mut y, mut worst) = (0.0, Vector1::new(0.0), 0.0_f64);
         for _ in 0..(2.0 / h).round() as usize {
@@ -88,7 +88,7 @@ fn embedded_estimate_follows_the_local_error() {
     // y' = -y + sin t from y(0) = 1 (non-stiff, smooth): the estimate y - y_hat is the
     // local error of the order-2 embedded solution, O(h^3): halving h divides it by 8.
     let mut sys = |t: f64, y: &Vector1<f64>| Vector1::new(-y[0] + t.sin());
-    let mut s = Sdirk::<1>::with_tableau(&ESDIRK32, 0.1, tight()).unwrap();
+    let mut s = Sdirk::<Const<1>>::with_tableau(&ESDIRK32, 0.1, tight()).unwrap();
     s.set_error_tolerance(Vector1::new(1.0), Vector1::new(0.0))
         .unwrap();
     let y0 = Vector1::new(1.0);
@@ -119,7 +119,7 @@ fn stiff_components_do_not_inflate_the_estimate() {
     // estimate of a step 1e6 times longer than the fast time scale must stay of the
     // size of the slow local error, not be |h lambda| = 1e4 times larger.
     let mut sys = |t: f64, y: &Vector1<f64>| Vector1::new(-1e8 * (y[0] - t.cos()));
-    let mut s = Sdirk::<1>::with_tableau(&ESDIRK32, 0.01, tight()).unwrap();
+    let mut s = Sdirk::<Const<1>>::with_tableau(&ESDIRK32, 0.01, tight()).unwrap();
     s.set_error_tolerance(Vector1::new(1e-6), Vector1::new(0.0))
         .unwrap();
     let y0 = Vector1::new(1.0 + 0.0_f64.sin() / 1e8);

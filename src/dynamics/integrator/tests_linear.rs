@@ -1,7 +1,7 @@
 //! Tests of the SDIRK stepper on linear problems with closed-form solutions, and of its
 //! Jacobian/LU reuse policy.
 
-use nalgebra::{Complex, Matrix2, SMatrix, SVector, Vector1, Vector2};
+use nalgebra::{Complex, Const, Matrix2, SMatrix, SVector, Vector1, Vector2};
 
 use super::tableau::{ALEXANDER3, GAMMA};
 use super::{OdeSystem, Sdirk, SdirkOptions, Stepper};
@@ -23,7 +23,7 @@ struct Linear<const N: usize> {
     w: f64,
 }
 
-impl<const N: usize> OdeSystem<N> for Linear<N> {
+impl<const N: usize> OdeSystem<Const<N>> for Linear<N> {
     fn rhs(&mut self, t: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
         self.m * y + self.u * (self.w * t).cos()
     }
@@ -50,7 +50,7 @@ fn one_step_on_dahlquist_equation_multiplies_by_r() {
             u: Vector1::zeros(),
             w: 0.0,
         };
-        let mut stepper = Sdirk::<1>::new(1.0, tight()).unwrap();
+        let mut stepper = Sdirk::<Const<1>>::new(1.0, tight()).unwrap();
         let mut y = Vector1::new(1.0);
         stepper.step(&mut sys, 0.0, &mut y).unwrap();
         let r_tab = ALEXANDER3
@@ -75,7 +75,7 @@ fn prothero_robinson_stays_on_the_slow_solution() {
     let lambda = -1e8;
     let mut sys = |t: f64, y: &Vector1<f64>| Vector1::new(lambda * (y[0] - t.sin()) + t.cos());
     for &h in &[0.1, 0.05, 0.02, 0.01] {
-        let mut stepper = Sdirk::<1>::new(h, tight()).unwrap();
+        let mut stepper = Sdirk::<Const<1>>::new(h, tight()).unwrap();
         let (mut t, mut y) = (0.0, Vector1::new(0.0));
         let n = (10.0 / h).round() as usize;
         let mut max_err: f64 = 0.0;
@@ -111,7 +111,7 @@ fn stiff_linear_2x2_converges_with_order_three() {
             u: Vector2::zeros(),
             w: 0.0,
         };
-        let mut stepper = Sdirk::<2>::new(h, tight()).unwrap();
+        let mut stepper = Sdirk::<Const<2>>::new(h, tight()).unwrap();
         let (mut t, mut y) = (0.0, y0);
         stepper.advance(&mut sys, &mut t, &mut y, n).unwrap();
         errors.push((y - exact).norm());
@@ -143,7 +143,7 @@ fn harmonic_oscillator_energy_decays_as_stability_function_predicts() {
         w: 0.0,
     };
     let energy = |y: &Vector2<f64>| 0.5 * (y[1] * y[1] + w * w * y[0] * y[0]);
-    let mut stepper = Sdirk::<2>::new(h, tight()).unwrap();
+    let mut stepper = Sdirk::<Const<2>>::new(h, tight()).unwrap();
     let (mut t, mut y) = (0.0, Vector2::new(1.0, 0.0));
     let e0 = energy(&y);
     let periods = 10;
@@ -182,7 +182,7 @@ fn damped_forced_oscillator_reaches_closed_form_steady_state() {
             u: Vector2::new(0.0, f),
             w: big_w,
         };
-        let mut stepper = Sdirk::<2>::new(h, tight()).unwrap();
+        let mut stepper = Sdirk::<Const<2>>::new(h, tight()).unwrap();
         // 130 forcing periods = 100 s: the free response has decayed by
         // exp(-zeta w 100 s) = 2e-14.
         let (mut t, mut y) = (0.0, Vector2::new(0.0, 0.0));
@@ -217,7 +217,7 @@ fn damped_forced_oscillator_reaches_closed_form_steady_state() {
 fn linear_problem_factorises_once_and_counts_work() {
     let m = Matrix2::new(-2.0, 1.0, 1.0, -1e6);
     let mut sys_fd = move |_t: f64, y: &Vector2<f64>| m * y;
-    let mut stepper = Sdirk::<2>::new(0.01, SdirkOptions::default()).unwrap();
+    let mut stepper = Sdirk::<Const<2>>::new(0.01, SdirkOptions::default()).unwrap();
     let (mut t, mut y) = (0.0, Vector2::new(1.0, 1.0));
     let first = stepper.step(&mut sys_fd, t, &mut y).unwrap();
     t += 0.01;
@@ -250,7 +250,7 @@ fn stiffness_jump_triggers_refresh_and_retry() {
     let k = |t: f64| if t < 0.5 { 1e6 } else { 5e6 };
     let mut sys = move |t: f64, y: &Vector1<f64>| Vector1::new(-k(t) * (y[0] - t.cos()));
     let h = 0.01;
-    let mut stepper = Sdirk::<1>::new(h, SdirkOptions::default()).unwrap();
+    let mut stepper = Sdirk::<Const<1>>::new(h, SdirkOptions::default()).unwrap();
     let (mut t, mut y) = (0.0, Vector1::new(1.0));
     let stats = stepper.advance(&mut sys, &mut t, &mut y, 100).unwrap();
     // Stale matrix 1 + h g 1e6 against the true 1 + h g 5e6: Newton multiplies the error
@@ -273,7 +273,7 @@ fn drifting_jacobian_is_refreshed_on_slow_contraction() {
     // over t in [0, 1] (k doubles) that is ln 2 / ln(1/0.9) = 6.6 refreshes + the first.
     let k = |t: f64| 1e6 * (1.0 + t);
     let mut sys = move |t: f64, y: &Vector1<f64>| Vector1::new(-k(t) * (y[0] - t.cos()));
-    let mut stepper = Sdirk::<1>::new(0.01, SdirkOptions::default()).unwrap();
+    let mut stepper = Sdirk::<Const<1>>::new(0.01, SdirkOptions::default()).unwrap();
     let (mut t, mut y) = (0.0, Vector1::new(1.0));
     let stats = stepper.advance(&mut sys, &mut t, &mut y, 100).unwrap();
     println!("drifting Jacobian: {stats:?}");

@@ -1,7 +1,7 @@
 //! Tests on nonlinear problems (invariants, published values, self-convergence against a
 //! second method), of RK4's order, and of error handling.
 
-use nalgebra::{Matrix2, SMatrix, Vector1, Vector2, Vector3};
+use nalgebra::{Const, Matrix2, SMatrix, Vector1, Vector2, Vector3};
 
 use super::{
     finite_difference_jacobian, IntegratorError, OdeSystem, Rk4, Sdirk, SdirkOptions, Stepper,
@@ -27,7 +27,7 @@ fn robertson_conserves_mass_and_matches_published_values() {
         ..SdirkOptions::default()
     };
     let h = 1e-3;
-    let mut stepper = Sdirk::<3>::new(h, opts).unwrap();
+    let mut stepper = Sdirk::<Const<3>>::new(h, opts).unwrap();
     let (mut t, mut y) = (0.0, Vector3::new(1.0, 0.0, 0.0));
     // t = 0.4 and 4: LSODE demo output (Hindmarsh, ODEPACK opkdmain.f, example 1), run
     // with rtol = 1e-4, atol = (1e-6, 1e-10, 1e-6): good to ~1e-4 relative, hence 2e-4.
@@ -77,7 +77,7 @@ struct VanDerPol {
     mu: f64,
 }
 
-impl OdeSystem<2> for VanDerPol {
+impl OdeSystem<Const<2>> for VanDerPol {
     fn rhs(&mut self, _t: f64, y: &Vector2<f64>) -> Vector2<f64> {
         Vector2::new(y[1], self.mu * (1.0 - y[0] * y[0]) * y[1] - y[0])
     }
@@ -99,7 +99,7 @@ fn van_der_pol_converges_with_order_three_against_rk4_reference() {
     let t_end = 5.0;
     let y0 = Vector2::new(2.0, 0.0);
     let mut sys = VanDerPol { mu: 1.0 };
-    let mut rk = Rk4::<2>::new(1e-4).unwrap();
+    let mut rk = Rk4::<Const<2>>::new(1e-4).unwrap();
     let (mut t, mut y_ref) = (0.0, y0);
     rk.advance(&mut sys, &mut t, &mut y_ref, 50_000).unwrap();
     let opts = SdirkOptions {
@@ -109,7 +109,7 @@ fn van_der_pol_converges_with_order_three_against_rk4_reference() {
     };
     let mut errors = Vec::new();
     for &n in &[100usize, 200, 400, 800] {
-        let mut stepper = Sdirk::<2>::new(t_end / n as f64, opts).unwrap();
+        let mut stepper = Sdirk::<Const<2>>::new(t_end / n as f64, opts).unwrap();
         let (mut t, mut y) = (0.0, y0);
         stepper.advance(&mut sys, &mut t, &mut y, n).unwrap();
         errors.push((y - y_ref).norm());
@@ -136,7 +136,7 @@ fn rk4_converges_with_order_four() {
     let exact = 1.0 / (1.0 + t_end * t_end);
     let mut errors = Vec::new();
     for &n in &[10usize, 20, 40, 80] {
-        let mut rk = Rk4::<1>::new(t_end / n as f64).unwrap();
+        let mut rk = Rk4::<Const<1>>::new(t_end / n as f64).unwrap();
         let (mut t, mut y) = (0.0, Vector1::new(1.0));
         let stats = rk.advance(&mut sys, &mut t, &mut y, n).unwrap();
         assert_eq!(stats.rhs_calls, 4 * n as u64);
@@ -162,7 +162,7 @@ fn rk4_converges_with_order_four() {
 #[test]
 fn unsolvable_stage_returns_error_and_keeps_state() {
     let mut sys = |_t: f64, y: &Vector1<f64>| Vector1::new(1e4 * y[0] * y[0]);
-    let mut stepper = Sdirk::<1>::new(1.0, SdirkOptions::default()).unwrap();
+    let mut stepper = Sdirk::<Const<1>>::new(1.0, SdirkOptions::default()).unwrap();
     let mut y = Vector1::new(1.0);
     let err = stepper.step(&mut sys, 0.0, &mut y).unwrap_err();
     assert!(
@@ -180,14 +180,14 @@ fn unsolvable_stage_returns_error_and_keeps_state() {
 #[test]
 fn non_finite_rhs_or_state_is_an_error() {
     let mut sys = |_t: f64, y: &Vector1<f64>| Vector1::new(if y[0] > 1.5 { f64::NAN } else { 1.0 });
-    let mut stepper = Sdirk::<1>::new(1.0, SdirkOptions::default()).unwrap();
+    let mut stepper = Sdirk::<Const<1>>::new(1.0, SdirkOptions::default()).unwrap();
     let mut y = Vector1::new(1.0);
     let err = stepper.step(&mut sys, 0.0, &mut y).unwrap_err();
     assert!(matches!(err, IntegratorError::NonFinite { .. }), "{err}");
     assert_eq!(y[0], 1.0);
     let mut y_nan = Vector1::new(f64::NAN);
     assert!(stepper.step(&mut sys, 0.0, &mut y_nan).is_err());
-    let mut rk = Rk4::<1>::new(1.0).unwrap();
+    let mut rk = Rk4::<Const<1>>::new(1.0).unwrap();
     assert!(rk.step(&mut sys, 0.0, &mut y).is_err());
     assert_eq!(y[0], 1.0);
 }
@@ -197,16 +197,16 @@ fn invalid_settings_are_rejected() {
     let bad = |f: fn(&mut SdirkOptions)| {
         let mut o = SdirkOptions::default();
         f(&mut o);
-        Sdirk::<2>::new(0.1, o).is_err()
+        Sdirk::<Const<2>>::new(0.1, o).is_err()
     };
     assert!(bad(|o| o.abs_tol = 0.0));
     assert!(bad(|o| o.rel_tol = f64::NAN));
     assert!(bad(|o| o.max_newton_iters = 0));
     assert!(bad(|o| o.refresh_rate = 1.0));
-    assert!(Sdirk::<2>::new(0.0, SdirkOptions::default()).is_err());
-    assert!(Sdirk::<2>::new(f64::INFINITY, SdirkOptions::default()).is_err());
-    assert!(Rk4::<2>::new(-1.0).is_err());
-    let mut s = Sdirk::<2>::new(0.1, SdirkOptions::default()).unwrap();
+    assert!(Sdirk::<Const<2>>::new(0.0, SdirkOptions::default()).is_err());
+    assert!(Sdirk::<Const<2>>::new(f64::INFINITY, SdirkOptions::default()).is_err());
+    assert!(Rk4::<Const<2>>::new(-1.0).is_err());
+    let mut s = Sdirk::<Const<2>>::new(0.1, SdirkOptions::default()).unwrap();
     assert!(s.set_abs_tol(Vector2::new(1e-9, 0.0)).is_err());
     assert!(s.set_step_size(f64::NAN).is_err());
 }

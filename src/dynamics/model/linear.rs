@@ -1,83 +1,157 @@
 //! The model's linear parts: the Jacobian of the right-hand side (for the implicit
 //! integrator) and the static equilibrium (the cold start of a steady-state search).
 
-use super::{dof, ContactFrame, GearSystem, State, NDOF, NSTATE};
+use super::rhs::LinearParts;
+use super::{ContactFrame, GearSystem, State};
 use crate::config::case::SpeedBoundary;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{DMatrix, DVector, SMatrix, SVector};
 
 impl GearSystem<'_> {
-    /// Jacobian of the right-hand side: exact for the linear parts and the mesh spring
-    /// and damper of the pairs in contact; the friction's dependence on the state is
-    /// left out (a modified-Newton approximation: friction is < 10 % of the mesh force
+    /// Jacobian of the right-hand side, written column by column into `out`
+    /// ([`GearSystem::states`] squared entries): exact for the linear parts and the mesh
+    /// springs and dampers of the pairs in contact; the friction's dependence on the state
+    /// is left out (a modified-Newton approximation: friction is < 10 % of the mesh force
     /// and not stiff). The contact is decided as `frame` says.
-    pub fn jacobian(
-        &self,
-        frame: ContactFrame,
-        t_s: f64,
-        y: &State,
-    ) -> SMatrix<f64, NSTATE, NSTATE> {
-        let q = y.fixed_rows::<NDOF>(0).into_owned();
-        let v = y.fixed_rows::<NDOF>(NDOF).into_owned();
-        let sp = self.springs(frame, t_s, q.as_slice(), v.as_slice());
-        let (k_mesh, c_mesh) = if sp.pushing {
-            (sp.stiffness_touching_n_per_m, self.mesh_damping_n_s_per_m)
-        } else {
-            (0.0, 0.0)
+    pub fn jacobian_into(&self, frame: ContactFrame, t_s: f64, y: &[f64], out: &mut [f64]) {
+        let (q, v) = y.split_at(self.dofs());
+        let mesh_terms = |m: usize| {
+            let mesh = &self.meshes[m];
+            let sp = mesh.springs(frame.mesh(m), t_s, q, v);
+            if sp.pushing {
+                (sp.stiffness_touching_n_per_m, mesh.mesh_damping_n_s_per_m)
+            } else {
+                (0.0, 0.0)
+            }
         };
-        self.state_matrix(k_mesh, c_mesh)
+        if let LinearParts::Fixed8(p) = &self.linear {
+            // The single pair on the stack (no allocation): its one mesh's terms added to
+            // the constant parts as `Assembly::stiffness_with_meshes` adds them.
+            let (k_m, c_m) = mesh_terms(0);
+            let (mut k, mut c) = (p.k, p.c);
+            let g = &self.meshes[0].geometry.gradient;
+            for (i, gi) in g {
+                for (j, gj) in g {
+                    k[(*i, *j)] += gi * gj * k_m;
+                    c[(*i, *j)] += gi * gj * c_m;
+                }
+            }
+            return state_matrix_into(8, |i, l| k[(i, l)], |i, l| c[(i, l)], &p.inv_mass, out);
+        }
+        let (k_mesh, c_mesh): (Vec<f64>, Vec<f64>) = (0..self.meshes.len()).map(mesh_terms).unzip();
+        self.state_matrix_into(&k_mesh, &c_mesh, out);
+    }
+
+    /// [`GearSystem::jacobian_into`] as a new matrix, 1/s.
+    pub fn jacobian(&self, frame: ContactFrame, t_s: f64, y: &[f64]) -> DMatrix<f64> {
+        let n2 = self.states();
+        let mut j = DMatrix::zeros(n2, n2);
+        self.jacobian_into(frame, t_s, y, j.as_mut_slice());
+        j
     }
 
     /// The state matrix with every pair in contact at the mean mesh stiffness and the
-    /// mesh damper on, friction left out: the time-invariant average of the model's
+    /// mesh dampers on, friction left out: the time-invariant average of the model's
     /// linear part, 1/s.
-    pub fn mean_state_matrix(&self) -> SMatrix<f64, NSTATE, NSTATE> {
-        self.state_matrix(
-            self.parts.mesh.mean_stiffness_n_per_m(),
-            self.mesh_damping_n_s_per_m,
-        )
+    pub fn mean_state_matrix(&self) -> DMatrix<f64> {
+        let k: Vec<f64> = self
+            .meshes
+            .iter()
+            .map(|m| m.parts.mesh.mean_stiffness_n_per_m())
+            .collect();
+        let c: Vec<f64> = self
+            .meshes
+            .iter()
+            .map(|m| m.mesh_damping_n_s_per_m)
+            .collect();
+        let n2 = self.states();
+        let mut a = DMatrix::zeros(n2, n2);
+        self.state_matrix_into(&k, &c, a.as_mut_slice());
+        a
     }
 
-    /// `[[0, I], [-M^-1 K, -M^-1 C]]` with the mesh spring `k_mesh` (N/m) and damper
-    /// `c_mesh` (N s/m) along the line of action added to the bearings and couplings.
-    fn state_matrix(&self, k_mesh: f64, c_mesh: f64) -> SMatrix<f64, NSTATE, NSTATE> {
-        let gg = self.grad * self.grad.transpose();
-        let k = self.k_lin + gg * k_mesh;
-        let c = self.c_lin + gg * c_mesh;
-        let mut j = SMatrix::<f64, NSTATE, NSTATE>::zeros();
-        for i in 0..NDOF {
-            j[(i, NDOF + i)] = 1.0;
-            for l in 0..NDOF {
-                j[(NDOF + i, l)] = -k[(i, l)] * self.inv_mass[i];
-                j[(NDOF + i, NDOF + l)] = -c[(i, l)] * self.inv_mass[i];
-            }
-        }
-        j
+    /// `[[0, I], [-M^-1 K, -M^-1 C]]` with mesh m's spring `k_mesh[m]` (N/m) and damper
+    /// `c_mesh[m]` (N s/m) along its line of action added to the bearings, shafts and
+    /// couplings; column-major into `out`.
+    fn state_matrix_into(&self, k_mesh: &[f64], c_mesh: &[f64], out: &mut [f64]) {
+        let asm = self.assembly();
+        let k = asm.stiffness_with_meshes(k_mesh);
+        let c = asm.damping_with_meshes(c_mesh);
+        let n = self.dofs();
+        state_matrix_into(
+            n,
+            |i, l| k[(i, l)],
+            |i, l| c[(i, l)],
+            asm.inverse_masses(),
+            out,
+        );
     }
 
     /// Static equilibrium at the mean mesh stiffness, friction-free: the starting state
     /// of a run (it removes most of the transient). A free drivetrain (motor slip) is
-    /// held at the motor for this solve only.
+    /// held at the input for this solve only.
     pub fn static_equilibrium(&self) -> State {
-        use dof::*;
-        let k_mean = self.parts.mesh.mean_stiffness_n_per_m();
-        let mut k = self.k_lin + self.grad * self.grad.transpose() * k_mean;
-        let mut f = self.q_ext;
-        let fixed = match self.parts.params.speed_boundary {
-            SpeedBoundary::BrakeSpeedImposed => PHI_B,
-            _ => PHI_M,
+        let asm = self.assembly();
+        let k_mean: Vec<f64> = self
+            .meshes
+            .iter()
+            .map(|m| m.parts.mesh.mean_stiffness_n_per_m())
+            .collect();
+        let mut k = asm.stiffness_with_meshes(&k_mean);
+        let mut f = asm.external_forces().clone();
+        let drive = asm.elements.drive;
+        let rotation = |b| {
+            asm.index(b, crate::dynamics::assembly::Dof::Rotation)
+                .expect("every body rotates")
         };
-        if self.parts.params.speed_boundary == SpeedBoundary::MotorSlip {
-            f[PHI_M] = 0.0;
+        let fixed = match drive.boundary {
+            SpeedBoundary::BrakeSpeedImposed => rotation(drive.output),
+            _ => rotation(drive.input),
+        };
+        if drive.boundary == SpeedBoundary::MotorSlip {
+            f[fixed] = 0.0;
         }
-        for l in 0..NDOF {
+        let n = self.dofs();
+        for l in 0..n {
             k[(fixed, l)] = 0.0;
             k[(l, fixed)] = 0.0;
         }
         k[(fixed, fixed)] = 1.0;
         f[fixed] = 0.0;
-        let q = k.lu().solve(&f).unwrap_or_else(SVector::zeros);
-        let mut y = State::zeros();
-        y.fixed_rows_mut::<NDOF>(0).copy_from(&q);
+        let q = solve_or_zero(k, f);
+        let mut y = State::zeros(2 * n);
+        y.rows_mut(0, n).copy_from(&q);
         y
     }
+}
+
+/// `[[0, I], [-M^-1 K, -M^-1 C]]` of `n` coordinates, column-major into `out`.
+fn state_matrix_into(
+    n: usize,
+    k: impl Fn(usize, usize) -> f64,
+    c: impl Fn(usize, usize) -> f64,
+    inv_mass: &[f64],
+    out: &mut [f64],
+) {
+    let n2 = 2 * n;
+    out.fill(0.0);
+    for i in 0..n {
+        out[(n + i) * n2 + i] = 1.0;
+        for l in 0..n {
+            out[l * n2 + n + i] = -k(i, l) * inv_mass[i];
+            out[(n + l) * n2 + n + i] = -c(i, l) * inv_mass[i];
+        }
+    }
+}
+
+/// K q = f by LU, zeros if K is singular. The single pair's 8 x 8 system goes through
+/// nalgebra's fixed-size LU, as it always has (same arithmetic, same bits).
+fn solve_or_zero(k: DMatrix<f64>, f: DVector<f64>) -> DVector<f64> {
+    let n = f.len();
+    if n == 8 {
+        let ks = SMatrix::<f64, 8, 8>::from_fn(|i, j| k[(i, j)]);
+        let fs = SVector::<f64, 8>::from_fn(|i, _| f[i]);
+        let q = ks.lu().solve(&fs).unwrap_or_else(SVector::zeros);
+        return DVector::from_column_slice(q.as_slice());
+    }
+    k.lu().solve(&f).unwrap_or_else(|| DVector::zeros(n))
 }

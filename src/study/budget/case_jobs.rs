@@ -44,9 +44,9 @@
 
 use super::cost::{Estimate, Term};
 use super::evaluation::{
-    dynamic_steps_per_period, nominal_wear_per_cycle_m, wear_updates, DYNAMIC_WEAR_FACTOR,
-    PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
-    SECONDS_PER_TABLE_POINT,
+    dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, wear_updates,
+    DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP,
+    SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
 };
 use crate::config::case::Case;
 use crate::geometry::GearPair;
@@ -264,7 +264,7 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
     if c.evals > 0.0 {
         terms.push(Term {
             what: "the dynamic evaluations",
-            seconds: c.evals * p.s_dyn * (p.p_c + p.p_e) * SECONDS_PER_STEP,
+            seconds: c.evals * p.s_dyn * (p.p_c + p.p_e) * SECONDS_PER_STEP * train_factor(case),
             bytes: 0.0,
             keys: if w.dynamic_modes > 0.0 {
                 &[
@@ -287,7 +287,7 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
         terms.push(Term {
             what: "the recorded signals",
             seconds: 0.0,
-            bytes: w.kept * p.s_dyn * p.p_e * BYTES_PER_SAMPLE,
+            bytes: w.kept * p.s_dyn * p.p_e * BYTES_PER_SAMPLE * train_factor(case),
             keys: &[
                 "numerics.evaluated_mesh_periods",
                 "numerics.steps_per_mesh_period",

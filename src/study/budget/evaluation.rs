@@ -73,3 +73,28 @@ pub fn wear_updates(case: &Case, rate_m: f64) -> f64 {
     }
     1.0 + (w.total_cycles / block).ceil()
 }
+
+/// How much more a dynamic evaluation of a gear train costs than one of a single pair
+/// (1 for a case without `[[stage]]`): its base period (`dynamics::grid::base_period`)
+/// holds sum_k N_k mesh periods of its meshes, each with its events and steps, and each
+/// step costs about (states / 16) times the single pair's (a right-hand side per mesh,
+/// linear algebra on the larger state). A train whose base period cannot be counted is
+/// infinitely dear (refused).
+pub fn train_factor(case: &Case) -> f64 {
+    if case.stage.is_empty() {
+        return 1.0;
+    }
+    let teeth: Vec<[usize; 2]> = case
+        .stage
+        .iter()
+        .map(|s| {
+            let g = s.gear_section(&case.gear);
+            [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
+        })
+        .collect();
+    let states = 4.0 + 12.0 * teeth.len() as f64;
+    match crate::dynamics::grid::chain_mesh_counts(&teeth) {
+        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>() * (states / 16.0).max(1.0),
+        None => f64::INFINITY,
+    }
+}

@@ -5,7 +5,6 @@
 
 use super::case_run::{CaseResults, SweepRun};
 use super::continuation::Branch;
-use crate::dynamics::model::NSTATE;
 use serde::{Deserialize, Serialize};
 
 /// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
@@ -42,7 +41,7 @@ pub struct ContinuationLink {
 }
 
 impl ContinuationLink {
-    pub fn new(branch: Branch, start: Option<&[f64; NSTATE]>, end: &[f64; NSTATE]) -> Self {
+    pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
         Self {
             branch,
             start_state_bits: start.map(state_bits),
@@ -50,19 +49,24 @@ impl ContinuationLink {
         }
     }
 
-    /// The end state, if the record holds a whole one.
-    pub fn end_state(&self) -> Option<[f64; NSTATE]> {
-        (self.end_state_bits.len() == NSTATE)
-            .then(|| std::array::from_fn(|i| f64::from_bits(self.end_state_bits[i])))
+    /// The end state, if the record holds one (a state of the case's model: a start of
+    /// another length is not taken, `period_search::MeshPeriodSearch`).
+    pub fn end_state(&self) -> Option<Vec<f64>> {
+        (!self.end_state_bits.is_empty()).then(|| {
+            self.end_state_bits
+                .iter()
+                .map(|b| f64::from_bits(*b))
+                .collect()
+        })
     }
 
     /// Whether this point was started from `start` (bit for bit).
-    pub fn started_from(&self, start: Option<&[f64; NSTATE]>) -> bool {
+    pub fn started_from(&self, start: Option<&[f64]>) -> bool {
         self.start_state_bits == start.map(state_bits)
     }
 }
 
-fn state_bits(s: &[f64; NSTATE]) -> Vec<u64> {
+fn state_bits(s: &[f64]) -> Vec<u64> {
     s.iter().map(|x| x.to_bits()).collect()
 }
 
@@ -189,7 +193,7 @@ impl CaseRecord {
         keys: &[String],
         values: &[String],
         branch: Branch,
-        start: Option<&[f64; NSTATE]>,
+        start: Option<&[f64]>,
     ) -> bool {
         let Some(link) = &self.continuation else {
             return false;

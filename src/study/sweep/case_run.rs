@@ -3,7 +3,6 @@
 
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::model::NSTATE;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
 use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
@@ -288,8 +287,8 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
 /// [`DynamicResponse::end_state`]: crate::dynamics::response::DynamicResponse::end_state
 pub fn run_dynamics_from(
     case: &Case,
-    start: Option<&[f64; NSTATE]>,
-) -> Result<(CaseOutcome, [f64; NSTATE]), CaseError> {
+    start: Option<&[f64]>,
+) -> Result<(CaseOutcome, Vec<f64>), CaseError> {
     let model = Model::from_case(case).map_err(CaseError::Model)?;
     let wear = WearState::new(model.grid.len());
     let r = model

@@ -16,7 +16,6 @@
 use super::case_run::{run_dynamics_from, CaseError, CaseOutcome};
 use super::plan::SweepPlan;
 use crate::config::Case;
-use crate::dynamics::model::NSTATE;
 use crate::remedy::{Arg, Problem, Words};
 use serde::{Deserialize, Serialize};
 
@@ -152,29 +151,29 @@ impl ContinuationPlan {
 }
 
 /// A periodic state at a mesh-period boundary (`DynamicResponse::end_state`).
-pub type PeriodicState = [f64; NSTATE];
+pub type PeriodicState = Vec<f64>;
 
 /// Resume lookup of [`run_branch`]: the end state of point `case_id` if it was already
 /// computed from exactly the start state given.
-pub type FinishedLookup<'a> = dyn Fn(usize, Option<&PeriodicState>) -> Option<PeriodicState> + 'a;
+pub type FinishedLookup<'a> = dyn Fn(usize, Option<&[f64]>) -> Option<PeriodicState> + 'a;
 
 /// Resume lookup of [`run_continuation`], per branch.
 pub type BranchFinishedLookup<'a> =
-    dyn Fn(Branch, usize, Option<&PeriodicState>) -> Option<PeriodicState> + Sync + 'a;
+    dyn Fn(Branch, usize, Option<&[f64]>) -> Option<PeriodicState> + Sync + 'a;
 
 /// What happened at one point of a branch.
 pub enum PointRun {
     /// Finished in an earlier run from the same start state (resume): its end state.
-    Finished { end_state: [f64; NSTATE] },
+    Finished { end_state: Vec<f64> },
     /// Computed now from `start` (`None`: the static equilibrium).
     Computed {
-        start: Option<[f64; NSTATE]>,
+        start: Option<Vec<f64>>,
         outcome: Box<CaseOutcome>,
-        end_state: [f64; NSTATE],
+        end_state: Vec<f64>,
     },
     /// The solver failed (or the case could not be modelled) from `start`.
     Failed {
-        start: Option<[f64; NSTATE]>,
+        start: Option<Vec<f64>>,
         error: CaseError,
     },
 }
@@ -191,20 +190,20 @@ pub fn run_branch(
     report: &mut dyn FnMut(usize, PointRun),
     keep_going: &dyn Fn() -> bool,
 ) {
-    let mut start: Option<[f64; NSTATE]> = None;
+    let mut start: Option<Vec<f64>> = None;
     for &(case_id, case) in points {
         if !keep_going() {
             return;
         }
-        if let Some(end_state) = finished(case_id, start.as_ref()) {
-            start = Some(end_state);
+        if let Some(end_state) = finished(case_id, start.as_deref()) {
+            start = Some(end_state.clone());
             report(case_id, PointRun::Finished { end_state });
             continue;
         }
-        match run_dynamics_from(case, start.as_ref()) {
+        match run_dynamics_from(case, start.as_deref()) {
             Ok((outcome, end_state)) => {
-                let from = start;
-                start = Some(end_state);
+                let from = start.take();
+                start = Some(end_state.clone());
                 report(
                     case_id,
                     PointRun::Computed {
@@ -214,7 +213,13 @@ pub fn run_branch(
                     },
                 );
             }
-            Err(error) => report(case_id, PointRun::Failed { start, error }),
+            Err(error) => report(
+                case_id,
+                PointRun::Failed {
+                    start: start.clone(),
+                    error,
+                },
+            ),
         }
     }
 }

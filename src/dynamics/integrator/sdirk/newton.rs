@@ -1,31 +1,36 @@
 //! The simplified Newton iteration on one stage of the DIRK stepper (see the module
 //! docs of `sdirk.rs` for the stopping rule and the Jacobian policy).
 
-use nalgebra::SVector;
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim};
 
 use super::{Failure, Sdirk};
-use crate::dynamics::integrator::{OdeSystem, StepStats};
+use crate::dynamics::integrator::{OdeSystem, StepStats, Vector};
 
-impl<const N: usize> Sdirk<N> {
+impl<D: Dim> Sdirk<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// Solves the stage equation `Y = base + h gamma f(t_i, Y)` by simplified Newton
     /// from `*start` with the current iteration matrix. Returns `Y` and the largest
     /// contraction rate seen. On failure `*start` holds the last iterate reached while contracting (a
     /// better point for a new Jacobian). With `early_abort`, gives up as soon as the
     /// tolerance looks out of reach in the iterations left (a refresh is cheaper).
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn solve_stage<S: OdeSystem<N>>(
+    pub(super) fn solve_stage<S: OdeSystem<D>>(
         &mut self,
         sys: &mut S,
         t_i: f64,
         hg: f64,
-        inv_scale: &SVector<f64, N>,
-        base: &SVector<f64, N>,
-        start: &mut SVector<f64, N>,
+        inv_scale: &Vector<D>,
+        base: &Vector<D>,
+        start: &mut Vector<D>,
         early_abort: bool,
         st: &mut StepStats,
-    ) -> Result<(SVector<f64, N>, f64), Failure> {
+    ) -> Result<(Vector<D>, f64), Failure> {
         let max_iter = self.opts.max_newton_iters;
-        let mut y_stage = *start;
+        let n = start.len() as f64;
+        let mut y_stage = start.clone();
         // Before a rate is measured, assume the worst one the refresh policy tolerates
         // (or the last measured one if worse): a first correction is accepted alone
         // only if it is already within ~1/eta tolerances.
@@ -38,9 +43,9 @@ impl<const N: usize> Sdirk<N> {
             let f = sys.rhs(t_i, &y_stage);
             st.rhs_calls += 1;
             st.newton_iterations += 1;
-            let delta = self.m_inv * (base + hg * f - y_stage);
+            let delta = &self.m_inv * ((base + f * hg) - &y_stage);
             // Weighted RMS norm of the correction.
-            let norm = (delta.component_mul(inv_scale).norm_squared() / N as f64).sqrt();
+            let norm = (delta.component_mul(inv_scale).norm_squared() / n).sqrt();
             if !norm.is_finite() {
                 return Err(Failure::NonFinite);
             }
@@ -59,7 +64,7 @@ impl<const N: usize> Sdirk<N> {
             y_stage += delta;
             prev_norm = norm;
             if iters > 1 {
-                *start = y_stage;
+                start.clone_from(&y_stage);
             }
             if eta * norm <= 1.0 {
                 if !y_stage.iter().all(|v| v.is_finite()) {

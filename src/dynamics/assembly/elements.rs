@@ -1,0 +1,105 @@
+//! The elements a gear train is assembled from (docs/MODEL.md, section 4.1): rigid
+//! bodies, the connections between them (bearings to ground, shafts and couplings,
+//! meshes) and the drive at its ends.
+//!
+//! Sign conventions. Every body's rotation coordinate is its deviation from the nominal
+//! rotation, positive in the body's own sense of rotation (the sense it turns in under the
+//! drive; `Assembly::spin` gives that sense in the plane, +1 counter-clockwise). So a
+//! shaft's torsional spring acts on the difference of its ends' coordinates (both ends
+//! turn alike), and a mesh's deflection grows with the driving gear's coordinate and
+//! shrinks with the driven one's, whatever the stage. Lateral coordinates x, y are
+//! displacements of a body's centre in the fixed plane of the train, SI.
+
+use crate::config::case::SpeedBoundary;
+
+/// What a body is (for names, messages and which inputs it can take).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BodyKind {
+    /// The driving machine's rotor (rotation only).
+    Motor,
+    /// A gear: lateral motion and rotation, a member of one or more meshes.
+    Gear,
+    /// The driven machine (the paper's brake; rotation only).
+    Load,
+}
+
+/// A rigid body: its inertia and the degrees of freedom it carries.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    /// Name in messages and outputs ("motor", "pinion", "stage 2 gear", ...).
+    pub name: String,
+    pub kind: BodyKind,
+    /// Mass, kg (used when the body moves laterally).
+    pub mass_kg: f64,
+    /// Polar moment of inertia about the body's axis, kg m^2.
+    pub inertia_kg_m2: f64,
+    /// The body moves laterally (x, y) as well as rotating.
+    pub lateral: bool,
+}
+
+/// A bearing: a body's centre held to ground by a spring and a damper per direction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bearing {
+    pub body: usize,
+    /// Stiffness in x and y, N/m.
+    pub stiffness_n_per_m: [f64; 2],
+    /// Damping in x and y, N s/m.
+    pub damping_n_s_per_m: [f64; 2],
+}
+
+/// A shaft or coupling between two bodies that turn together: a torsional spring and
+/// damper on the difference of their rotations and, where the shaft carries two gears, a
+/// lateral spring and damper between their centres (0: none).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shaft {
+    pub ends: [usize; 2],
+    pub torsional_stiffness_nm_per_rad: f64,
+    pub torsional_damping_nm_s_per_rad: f64,
+    pub lateral_stiffness_n_per_m: f64,
+    pub lateral_damping_n_s_per_m: f64,
+}
+
+/// The geometry of a mesh between two gear bodies as the assembly needs it: which body
+/// drives, the teeth (for the speed ratio), the base radii (levers of the mesh force) and
+/// the operating pressure angle and centre line (the line of action in the plane). The
+/// pair's stiffness, teeth, friction and wear travel with the model's mesh
+/// (`dynamics::model`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshLink {
+    /// The driving gear (the stage's pinion) and the driven one.
+    pub pinion: usize,
+    pub gear: usize,
+    pub teeth: [usize; 2],
+    /// Base radii of pinion and gear, m.
+    pub base_radius_m: [f64; 2],
+    /// Operating pressure angle, rad.
+    pub pressure_angle_rad: f64,
+    /// Direction of the line from the pinion's centre to the gear's in the plane, rad
+    /// from +x (0: the gear on +x, the paper's layout).
+    pub centre_line_rad: f64,
+}
+
+/// Which bodies the power enters and leaves by, and how their speeds are held
+/// (`operating.speed_boundary`): the paper's three boundaries on any pair of bodies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Drive {
+    /// The driving body (the motor) and the driven one (the load).
+    pub input: usize,
+    pub output: usize,
+    pub boundary: SpeedBoundary,
+    /// Mean torques on input and output, N m (the input's drives, the output's resists).
+    pub input_torque_nm: f64,
+    pub output_torque_nm: f64,
+    /// The motor's slip damping, N m s/rad (motor slip only).
+    pub slip_damping_nm_s_per_rad: f64,
+}
+
+/// The elements of a train.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Elements {
+    pub bodies: Vec<Body>,
+    pub bearings: Vec<Bearing>,
+    pub shafts: Vec<Shaft>,
+    pub meshes: Vec<MeshLink>,
+    pub drive: Drive,
+}

@@ -1,0 +1,99 @@
+//! The paper's model as the smallest train: motor, pinion, gear and brake, the pinion and
+//! gear on bearings, the motor and brake coupled to them, one mesh (paper eq. 1).
+
+use super::elements::{Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
+use crate::dynamics::params::DynamicParams;
+use crate::geometry::GearPair;
+
+/// Body indices of the single pair.
+pub const MOTOR: usize = 0;
+pub const PINION: usize = 1;
+pub const GEAR: usize = 2;
+pub const BRAKE: usize = 3;
+
+impl Elements {
+    /// The elements of paper eq. (1) for `pair` with the lumped parameters and operating
+    /// point of `params`: the pinion's centre at the origin, the gear's on +x.
+    pub fn single_pair(params: &DynamicParams, pair: &GearPair) -> Self {
+        let l = &params.lumped;
+        let body = |name: &str, kind, mass_kg, inertia_kg_m2, lateral| Body {
+            name: name.into(),
+            kind,
+            mass_kg,
+            inertia_kg_m2,
+            lateral,
+        };
+        let bearing = |body, k: f64, c: f64| Bearing {
+            body,
+            stiffness_n_per_m: [k, k],
+            damping_n_s_per_m: [c, c],
+        };
+        let coupling = |ends, k, c| Shaft {
+            ends,
+            torsional_stiffness_nm_per_rad: k,
+            torsional_damping_nm_s_per_rad: c,
+            lateral_stiffness_n_per_m: 0.0,
+            lateral_damping_n_s_per_m: 0.0,
+        };
+        Self {
+            bodies: vec![
+                body("motor", BodyKind::Motor, 0.0, l.inertia_motor_kg_m2, false),
+                body(
+                    "pinion",
+                    BodyKind::Gear,
+                    l.mass_pinion_kg,
+                    l.inertia_pinion_kg_m2,
+                    true,
+                ),
+                body(
+                    "gear",
+                    BodyKind::Gear,
+                    l.mass_gear_kg,
+                    l.inertia_gear_kg_m2,
+                    true,
+                ),
+                body("brake", BodyKind::Load, 0.0, l.inertia_brake_kg_m2, false),
+            ],
+            bearings: vec![
+                bearing(
+                    PINION,
+                    l.bearing_stiffness_pinion_n_per_m,
+                    l.bearing_damping_pinion_n_s_per_m,
+                ),
+                bearing(
+                    GEAR,
+                    l.bearing_stiffness_gear_n_per_m,
+                    l.bearing_damping_gear_n_s_per_m,
+                ),
+            ],
+            shafts: vec![
+                coupling(
+                    [MOTOR, PINION],
+                    l.coupling_stiffness_motor_nm_per_rad,
+                    l.coupling_damping_motor_nm_s_per_rad,
+                ),
+                coupling(
+                    [GEAR, BRAKE],
+                    l.coupling_stiffness_brake_nm_per_rad,
+                    l.coupling_damping_brake_nm_s_per_rad,
+                ),
+            ],
+            meshes: vec![MeshLink {
+                pinion: PINION,
+                gear: GEAR,
+                teeth: [pair.pinion.teeth, pair.gear.teeth],
+                base_radius_m: [pair.pinion.base_radius_m, pair.gear.base_radius_m],
+                pressure_angle_rad: pair.operating_pressure_angle_rad,
+                centre_line_rad: 0.0,
+            }],
+            drive: Drive {
+                input: MOTOR,
+                output: BRAKE,
+                boundary: params.speed_boundary,
+                input_torque_nm: params.operating.motor_torque_nm,
+                output_torque_nm: params.operating.brake_torque_nm,
+                slip_damping_nm_s_per_rad: params.motor_slip_damping_nm_s_per_rad,
+            },
+        }
+    }
+}

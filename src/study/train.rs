@@ -1,0 +1,262 @@
+//! The model of a gear-train case (`[[stage]]` tables, `config::train`): each stage's
+//! pair, mesh stiffness and wear grid, the assembly of the whole train and its operating
+//! point, built once.
+
+use super::model_error::ModelError;
+use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
+use crate::config::train::StageSpec;
+use crate::contact::friction::Friction;
+use crate::dynamics::assembly::elements::{Drive, Elements};
+use crate::dynamics::assembly::train::StageElements;
+use crate::dynamics::assembly::{Assembly, Dof};
+use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
+use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
+use crate::geometry::{GearPair, ProfileGrid};
+use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
+use crate::stiffness::potential_energy::ElasticPair;
+use std::borrow::Cow;
+
+/// One stage of a train.
+pub struct Stage {
+    /// The stage as a single-pair case: its `[gear]` and `[dynamics]` resolved from the
+    /// stage's keys, its pinion's speed and torque as `[operating]` (on its pinion).
+    pub case: Case,
+    pub pair: GearPair,
+    pub mesh: MeshStiffness,
+    pub grid: ProfileGrid,
+    /// The stage's masses and inertias (with `"derived"` resolved) and bearings.
+    pub lumped: DynamicsSection<f64>,
+}
+
+/// A train's model objects (see the module docs).
+pub struct TrainModel {
+    pub stages: Vec<Stage>,
+    pub assembly: Assembly,
+    pub operating: TrainOperatingPoint,
+}
+
+/// A message about stage `k` (0-based) of a case.
+fn at_stage(k: usize, what: impl std::fmt::Display) -> String {
+    format!("stage {}: {what}", k + 1)
+}
+
+/// A stage's single-pair case: the case's sections with the stage's pair and bodies,
+/// and `[operating]` at the stage's pinion (its speed, its torque on the pinion).
+pub fn stage_case(case: &Case, spec: &StageSpec, point: Option<&MeshPoint>) -> Case {
+    let mut c = case.clone();
+    c.gear = spec.gear_section(&case.gear);
+    c.dynamics = spec.dynamics_section(&case.dynamics);
+    c.stage = Vec::new();
+    if let Some(p) = point {
+        c.operating.input_speed_hz = p.pinion_speed_rad_s / (2.0 * std::f64::consts::PI);
+        c.operating.load_torque_nm = p.pinion_torque_nm;
+        c.operating.load_torque_shaft = TorqueShaft::Pinion;
+    }
+    c
+}
+
+impl TrainModel {
+    /// The train of `case` (which has stages), its materials `elastic`. Every problem
+    /// names its stage.
+    pub fn from_case(case: &Case, elastic: &ElasticPair) -> Result<Self, ModelError> {
+        let mut problems = Vec::new();
+        let mut pairs = Vec::new();
+        for (k, spec) in case.stage.iter().enumerate() {
+            let gear = spec.gear_section(&case.gear);
+            match GearPair::from_case(&gear) {
+                Ok(p) => pairs.push(p),
+                Err(e) => problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
+            }
+        }
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
+        let refs: Vec<&GearPair> = pairs.iter().collect();
+        let operating = TrainOperatingPoint::of(&case.operating, &refs);
+        let mut stages = Vec::new();
+        for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
+            let sc = stage_case(case, spec, Some(&operating.meshes[k]));
+            problems.extend(super::domain::domain_problems(&sc, &pair).iter().map(|m| {
+                at_stage(
+                    k,
+                    format!(
+                        "(its pinion carries {:.4} N m) {}",
+                        operating.meshes[k].pinion_torque_nm,
+                        spec.name_own_keys(m)
+                    ),
+                )
+            }));
+            let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
+            let mesh = match MeshStiffness::with_fillet(
+                &pair,
+                elastic,
+                n_table,
+                FilletSettings::for_pair(&sc.stiffness, &sc.gear),
+            ) {
+                Ok(m) => m,
+                Err(e) => {
+                    problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m))));
+                    continue;
+                }
+            };
+            let d = &sc.dynamics;
+            let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
+            let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
+            stages.push(Stage {
+                case: sc,
+                pair,
+                mesh,
+                grid,
+                lumped,
+            });
+        }
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
+        let elements = stage_elements(case, &stages);
+        let (t_in, t_out) = operating.end_torques_nm();
+        let drive = Drive {
+            input: 0,
+            output: 0,
+            boundary: case.operating.speed_boundary,
+            input_torque_nm: t_in,
+            output_torque_nm: t_out,
+            slip_damping_nm_s_per_rad: case.operating.motor_slip_damping_nm_s_per_rad,
+        };
+        let assembly = Assembly::new(Elements::train(&elements, drive))
+            .map_err(|e| ModelError(vec![e.to_string()]))?;
+        let model = Self {
+            stages,
+            assembly,
+            operating,
+        };
+        let free = model.free_modes();
+        if !free.is_empty() {
+            return Err(ModelError(free));
+        }
+        Ok(model)
+    }
+
+    /// Rigid-body motions the springs do not hold, other than the drive's free rotation
+    /// (motor slip): each named by the body that moves most in it. The stiffness at the
+    /// mean mesh stiffnesses on the free coordinates has a null space of dimension 1
+    /// with the motor slip boundary, 0 with an imposed speed.
+    fn free_modes(&self) -> Vec<String> {
+        let asm = &self.assembly;
+        let k_mean: Vec<f64> = self
+            .stages
+            .iter()
+            .map(|s| s.mesh.mean_stiffness_n_per_m())
+            .collect();
+        let k = asm.stiffness_with_meshes(&k_mean);
+        let inv = asm.inverse_masses();
+        let free: Vec<usize> = (0..asm.len()).filter(|i| inv[*i] > 0.0).collect();
+        let n = free.len();
+        // Mass-normalised, so that translations and rotations compare.
+        let kt = nalgebra::DMatrix::from_fn(n, n, |a, b| {
+            k[(free[a], free[b])] * (inv[free[a]] * inv[free[b]]).sqrt()
+        });
+        let eig = nalgebra::SymmetricEigen::new(kt);
+        let scale = eig.eigenvalues.iter().fold(0.0_f64, |m, l| m.max(l.abs()));
+        let expected = usize::from(asm.held().is_none());
+        let mut zero: Vec<usize> = (0..n)
+            .filter(|i| eig.eigenvalues[*i].abs() <= 1e-12 * scale)
+            .collect();
+        if zero.len() <= expected {
+            return Vec::new();
+        }
+        zero.sort_by(|a, b| {
+            eig.eigenvalues[*a]
+                .abs()
+                .total_cmp(&eig.eigenvalues[*b].abs())
+        });
+        zero.iter()
+            .skip(expected)
+            .map(|&i| {
+                let v = eig.eigenvectors.column(i);
+                let big = (0..n).max_by(|a, b| v[*a].abs().total_cmp(&v[*b].abs())).unwrap_or(0);
+                let (body, dof) = asm.describe(free[big]);
+                format!(
+                    "{body} can move freely ({dof:?}): no bearing, shaft or mesh holds it; give it a bearing or a shaft"
+                )
+            })
+            .collect()
+    }
+
+    /// The dynamic system of the train for each stage's wear gap and external error and
+    /// a roughness (um), every tooth alike. `friction`, `effective_modulus_pa`: the
+    /// case's, shared by every mesh.
+    #[allow(clippy::too_many_arguments)]
+    pub fn system<'a>(
+        &'a self,
+        case: &Case,
+        friction: &'a Friction,
+        effective_modulus_pa: f64,
+        gaps: &[&'a PairGap],
+        externals: &[&'a ExternalError],
+        roughness_um: f64,
+    ) -> GearSystem<'a> {
+        let meshes = self
+            .stages
+            .iter()
+            .zip(&self.operating.meshes)
+            .enumerate()
+            .map(|(k, (s, p))| {
+                let parts = MeshParts {
+                    pair: &s.pair,
+                    mesh: &s.mesh,
+                    friction,
+                    viscosity_cp: case.lubricant.viscosity_cp,
+                    gap: gaps[k],
+                    external: externals[k],
+                    load_sharing: case.contact.load_sharing,
+                    roughness_um,
+                    effective_modulus_pa,
+                    teeth: None,
+                };
+                let op = MeshOperating {
+                    speeds_rad_s: [p.pinion_speed_rad_s, p.gear_speed_rad_s],
+                    torques_nm: [p.pinion_torque_nm, p.gear_torque_nm],
+                    static_force_n: p.static_mesh_force_n,
+                    damping_ratio: s.lumped.mesh_damping_ratio,
+                };
+                (parts, op)
+            })
+            .collect();
+        GearSystem::assembled(
+            Cow::Borrowed(&self.assembly),
+            meshes,
+            self.operating.body_speeds_rad_s(),
+        )
+    }
+
+    /// Whether the speed of the input is imposed (so the motor's coordinate is held).
+    pub fn input_held(&self) -> bool {
+        self.assembly.elements.drive.boundary == SpeedBoundary::MotorSpeedImposed
+    }
+
+    /// The rotation coordinate of body `b`.
+    pub fn rotation(&self, b: usize) -> usize {
+        self.assembly.index(b, Dof::Rotation).unwrap_or(0)
+    }
+}
+
+/// Each stage as the assembly needs it (shafts from the stages' keys; the motor's and
+/// load's inertias and couplings from `[dynamics]`).
+fn stage_elements(case: &Case, stages: &[Stage]) -> Vec<StageElements> {
+    stages
+        .iter()
+        .zip(&case.stage)
+        .map(|(s, spec)| StageElements {
+            lumped: s.lumped.clone(),
+            teeth: [s.pair.pinion.teeth, s.pair.gear.teeth],
+            base_radius_m: [s.pair.pinion.base_radius_m, s.pair.gear.base_radius_m],
+            pressure_angle_rad: s.pair.operating_pressure_angle_rad,
+            centre_line_rad: spec.centre_line_deg.unwrap_or(0.0).to_radians(),
+            shaft: spec
+                .shaft_torsional_stiffness_nm_per_rad
+                .map(|k| (k, spec.shaft_torsional_damping_nm_s_per_rad.unwrap_or(0.0))),
+        })
+        .collect()
+}

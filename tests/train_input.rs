@@ -1,0 +1,75 @@
+//! Bad gear trains in a case file: each refused with exit code 2 before any work, the
+//! message naming the stage, the key and what is wrong (the built binary).
+
+mod common;
+use common::rejected;
+
+/// `stages` after an `[operating]` section, written to a case file in `dir`.
+fn case_file(dir: &tempfile::TempDir, stages: &str) -> String {
+    let path = dir.path().join("train.toml");
+    let text = format!("[operating]\ninput_speed_hz = 30\nload_torque_nm = 60\n\n{stages}");
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+fn refused(stages: &str, needles: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let file = case_file(&dir, stages);
+    rejected(&["dynamics", "--config", &file], needles)
+}
+
+const SECOND: &str = "[[stage]]\nteeth_pinion = 23\nteeth_gear = 47\n";
+
+#[test]
+fn a_stage_joined_to_nothing_is_refused() {
+    // No shaft between stage 1's gear and stage 2's pinion: stage 2 floats free.
+    refused(
+        &format!("[[stage]]\n{SECOND}"),
+        &[
+            "stage 1",
+            "`stage.shaft_torsional_stiffness_nm_per_rad` is required",
+            "connected to nothing",
+        ],
+    );
+    // A shaft after the last stage joins nothing.
+    refused(
+        &format!(
+            "[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}shaft_torsional_stiffness_nm_per_rad = 2e5\n"
+        ),
+        &["stage 2 is the last", "`stage.shaft_torsional_*`", "remove it"],
+    );
+}
+
+#[test]
+fn a_centre_distance_the_stage_cannot_meet_names_the_stage_and_its_key() {
+    // Below the sum of stage 1's base radii (2 mm x (19 + 31) / 2 x cos 20 deg = 46.98 mm).
+    refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\ncentre_distance_mm = 20\n{SECOND}"),
+        &["stage 1", "`stage.centre_distance_mm` = 20", "46.98"],
+    );
+    // So far apart that stage 2's teeth never touch.
+    refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}centre_distance_mm = 500\n"),
+        &["stage 2", "`stage.centre_distance_mm` = 500", "do not touch"],
+    );
+}
+
+#[test]
+fn a_stage_key_out_of_range_or_unknown_is_refused() {
+    refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}bearing_stiffness_gear_n_per_m = 1e3\n"),
+        &["`stage.bearing_stiffness_gear_n_per_m` = 1000", "[10000, 1e12]"],
+    );
+    refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}bogus = 1\n"),
+        &["unknown key `stage.bogus`"],
+    );
+}
+
+#[test]
+fn a_train_too_large_for_the_budget_is_refused_before_it_runs() {
+    refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}\n[numerics]\nsteps_per_mesh_period = 20000\n"),
+        &["over its budget (nothing was computed)", "numerics.steps_per_mesh_period"],
+    );
+}
