@@ -103,6 +103,37 @@ pub struct GearSection {
     /// Rack-cutter tip radius, in modules (ISO 53 profile A: 0.38): the root fillet, the
     /// undercut check and Sainsot's theta_f.
     pub tool_tip_radius_coefficient: f64,
+    /// Helix angle beta at the reference cylinder, deg; 0 (the default) is a spur pair. A
+    /// helical case reads the keys above as the normal section (docs/MODEL.md section 11).
+    #[serde(skip_serializing_if = "is_spur")]
+    pub helix_angle_deg: f64,
+    /// Hand of the pinion's helix (the gear takes the other); ignored at 0 deg.
+    #[serde(skip_serializing_if = "HelixHand::is_right")]
+    pub helix_hand_pinion: HelixHand,
+}
+
+/// A helix angle of 0: left out of a case's serialisation, so spur cases write what they
+/// wrote before helical pairs existed.
+fn is_spur(helix_angle_deg: &f64) -> bool {
+    *helix_angle_deg == 0.0
+}
+
+/// Hand of a helix (`gear.helix_hand_pinion`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum HelixHand {
+    /// Left-hand helix.
+    Left,
+    /// Right-hand helix (a right-handed screw); the default.
+    #[default]
+    Right,
+}
+
+impl HelixHand {
+    /// The default hand: left out of a case's serialisation.
+    fn is_right(&self) -> bool {
+        *self == HelixHand::Right
+    }
 }
 
 impl GearSection {
@@ -148,6 +179,8 @@ impl Default for GearSection {
             hub_bore_radius_gear_mm: Derivable::Given(14.0),
             // ISO 53 profile A rack tip radius 0.38 m.
             tool_tip_radius_coefficient: 0.38,
+            helix_angle_deg: 0.0,
+            helix_hand_pinion: HelixHand::Right,
         }
     }
 }
@@ -226,6 +259,19 @@ pub struct StiffnessSection {
     pub allow_fillet_extrapolation: bool,
     /// Samples of the mesh-stiffness table over one mesh period.
     pub table_points_per_mesh_period: i64,
+    /// Slices N across the face of a helical pair (docs/MODEL.md section 11); unused by a
+    /// spur pair.
+    #[serde(skip_serializing_if = "is_default_slices")]
+    pub slices: i64,
+}
+
+/// Default slice count of a helical pair: the peak-to-peak mesh stiffness within 1 % of
+/// its N -> infinity limit needs N of about 300 (docs/MODEL.md section 11).
+pub const DEFAULT_SLICES: i64 = 400;
+
+/// The default slice count: left out of a case's serialisation (spur cases unchanged).
+fn is_default_slices(n: &i64) -> bool {
+    *n == DEFAULT_SLICES
 }
 
 /// Where the fillet-foundation formula's root half angle theta_f (and its root
@@ -248,6 +294,7 @@ impl Default for StiffnessSection {
             fillet_root_angle: FilletRootAngle::FilletJunction,
             allow_fillet_extrapolation: false,
             table_points_per_mesh_period: 400,
+            slices: DEFAULT_SLICES,
         }
     }
 }
