@@ -96,11 +96,15 @@ fn a_helical_case_reports_the_contact_ratios_of_the_closed_forms() {
     let zn = 19.0 / (beta_b.to_radians().cos().powi(2) * beta.cos());
     assert!((f(&h["virtual_teeth"][0]) - zn).abs() < 1e-9, "{h}");
     assert_eq!(h["slices"], 400);
-    // The slice mean is the transverse spur pair's (each slice sweeps the same curve), and
-    // the centre of pressure stays on the face.
+    // Each slice sweeps the transverse pair's curve, so the slice mean differs from the
+    // full-width spur pair's only by the Hertz term on the inclined line (its compliance
+    // scaled by 1 / cos(beta_b) = 1.056): softer, by a part of the Hertz share of the
+    // compliance (a few per cent at most).
     let mean = f(&s["mesh_stiffness"]["mean_n_per_m"]);
     let spur_mean = f(&s["mesh_stiffness_spur_transverse"]["mean_n_per_m"]);
-    assert!((mean / spur_mean - 1.0).abs() < 1e-3, "{mean} {spur_mean}");
+    let ratio = mean / spur_mean;
+    assert!(ratio < 1.0 && ratio > 0.98, "{mean} {spur_mean}");
+    // The centre of pressure stays on the face.
     let cop = &s["centre_of_pressure_mm"];
     assert!(f(&cop["min"]) > 0.0 && f(&cop["max"]) < b_mm, "{cop}");
     assert!(f(&s["iso6336"]["c_prime_n_per_mm_um"]) > 0.0, "{s}");
