@@ -15,9 +15,10 @@ use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
 use crate::report::Artifacts;
 use crate::signals::path_file::parse_transfer_path;
+use crate::signals::transfer::TransferPath;
 use crate::study::budget::{estimate_dataset, Budget};
-use crate::study::dataset::parse_design;
 use crate::study::dataset::plan::Shard;
+use crate::study::dataset::{parse_design, DatasetDesign};
 use std::path::{Path, PathBuf};
 
 /// A study design and where it was read from (its folder resolves the design's relative
@@ -109,39 +110,14 @@ impl Job for DatasetJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        let d = &self.design;
-        let read = |rel: &str| {
-            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
-        };
-        let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
-            JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
-        })?;
-        let (path, path_bytes) = match &design.transfer_path {
-            Some(rel) => {
-                let p = d.folder.join(rel);
-                let shown = p.display().to_string();
-                let bytes =
-                    read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
-                        JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
-                    })?;
-                let path =
-                    parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
-                        JobError::Input(
-                            m.into_iter()
-                                .map(|m| Problem::of(Arg::TransferPath, m))
-                                .collect(),
-                        )
-                    })?;
-                (Some(path), bytes)
-            }
-            None => (None, Vec::new()),
-        };
+        let (design, path, path_bytes) = load_design(&self.design)?;
         let req = DatasetRequest {
             design: &design,
             path,
             path_bytes,
             shard: self.shard,
             figures,
+            replace: self.replace,
         };
         let checked = check_dataset(&req)?;
         let threads = rayon::current_num_threads();
@@ -164,6 +140,40 @@ impl Job for DatasetJob {
         observer.note(&format!("dataset: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset"))
     }
+}
+
+/// A design read as a dataset job reads it: the design parsed (its case files read
+/// beside it), and its transfer path with the file's bytes (part of the dataset key).
+pub fn load_design(
+    d: &DesignSource,
+) -> Result<(DatasetDesign, Option<TransferPath>, Vec<u8>), JobError> {
+    let read = |rel: &str| {
+        read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+    };
+    let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
+        JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
+    })?;
+    let (path, path_bytes) = match &design.transfer_path {
+        Some(rel) => {
+            let p = d.folder.join(rel);
+            let shown = p.display().to_string();
+            let bytes =
+                read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
+                    JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
+                })?;
+            let path =
+                parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
+                    JobError::Input(
+                        m.into_iter()
+                            .map(|m| Problem::of(Arg::TransferPath, m))
+                            .collect(),
+                    )
+                })?;
+            (Some(path), bytes)
+        }
+        None => (None, Vec::new()),
+    };
+    Ok((design, path, path_bytes))
 }
 
 /// See the module docs.
