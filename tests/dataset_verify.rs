@@ -296,3 +296,131 @@ fn the_sampler_draws_the_first_the_last_and_uniform_others() {
     assert!((share - p).abs() < 5.0 * se, "{share} vs {p}");
     assert_eq!(states_to_recompute(5, 8, 1), vec![0, 1, 2, 3, 4]);
 }
+
+fn p(dir: &Path, s: &str) -> String {
+    dir.join(s).to_str().unwrap().to_owned()
+}
+
+#[test]
+fn merges_of_damaged_or_foreign_shards_are_refused_or_name_the_records_left_out() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path();
+    std::fs::write(dir.join("a.toml"), DESIGN).unwrap();
+    std::fs::write(dir.join("b.toml"), DESIGN.replace("seed = 3", "seed = 4")).unwrap();
+    for (design, shard, out) in [
+        ("a.toml", "1/2", "s1"),
+        ("a.toml", "2/2", "s2"),
+        ("b.toml", "2/2", "s3"),
+    ] {
+        ok(&[
+            "dataset",
+            "-q",
+            "--design",
+            &p(dir, design),
+            "--shard",
+            shard,
+            "--out",
+            &p(dir, out),
+        ]);
+    }
+    let merge = |inputs: &[&str]| {
+        let mut a = vec!["dataset-merge".to_owned(), "-q".to_owned()];
+        a.extend(inputs.iter().map(|i| p(dir, i)));
+        a.extend(["--out".to_owned(), p(dir, "merged")]);
+        gearwear(&a.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let refused = |inputs: &[&str], needle: &str| {
+        let before = common::snapshot(dir);
+        let r = merge(inputs);
+        let e = stderr(&r);
+        assert_eq!(r.status.code(), Some(2), "{inputs:?}: {e}");
+        assert!(e.contains(needle), "{inputs:?}: {e}");
+        assert!(
+            !dir.join("merged").exists(),
+            "{inputs:?}: the target is untouched"
+        );
+        assert_eq!(common::snapshot(dir), before);
+    };
+    // Shards of two designs.
+    refused(&["s1", "s3"], "a shard of another dataset");
+
+    let desc = dir.join("s2/state/dataset.json");
+    let genuine = std::fs::read(&desc).unwrap();
+    // The design inside the description edited, its key kept: not its own key.
+    let mut v = read_json(&desc);
+    v["design"] = v["design"]
+        .as_str()
+        .unwrap()
+        .replace("noise_realisations = 2", "noise_realisations = 3")
+        .into();
+    write_json(&desc, &v);
+    refused(&["s1", "s2"], "does not give its own dataset key");
+    // ... and with the key recomputed by the forger: another dataset than s1's.
+    v["dataset_key"] = gearwear::app::dataset::plan::key_of_description(&v)
+        .unwrap()
+        .into();
+    write_json(&desc, &v);
+    refused(&["s1", "s2"], "a shard of another dataset");
+    // The description's other fields edited (the metadata is written from it): it differs
+    // from the first input's under the same key.
+    std::fs::write(&desc, &genuine).unwrap();
+    let mut v = read_json(&desc);
+    v["seed"] = 99.into();
+    write_json(&desc, &v);
+    refused(&["s1", "s2"], "differs from the first input's");
+    std::fs::write(&desc, &genuine).unwrap();
+
+    // A forged trajectory: refused, naming it.
+    let traj = dir.join("s2/state/trajectory_healthy.json");
+    let genuine_t = std::fs::read(&traj).unwrap();
+    scale_wear(&dir.join("s2"), 3.0);
+    refused(&["s1", "s2"], "trajectory_healthy.json");
+    std::fs::write(&traj, &genuine_t).unwrap();
+
+    // A record whose signal file is gone: merged without it, named, counted missing.
+    std::fs::remove_file(dir.join("s2/signals/0000003.parquet")).unwrap();
+    let r = merge(&["s1", "s2"]);
+    let e = stderr(&r);
+    assert_eq!(r.status.code(), Some(1), "{e}");
+    assert!(e.contains("record 3 of") && e.contains("left out"), "{e}");
+    let m = read_json(&dir.join("merged/metadata.json"));
+    assert_eq!(m["records_missing"], serde_json::json!([3]));
+    assert_eq!(m["records_present"], 3);
+    assert!(!dir.join("merged/INCOMPLETE").exists());
+}
+
+#[test]
+fn a_killed_dataset_run_leaves_its_folder_marked_incomplete_until_a_resume_publishes() {
+    let d = tempfile::tempdir().unwrap();
+    let design = DESIGN.replace("states = 2", "states = 40");
+    std::fs::write(d.path().join("design.toml"), design).unwrap();
+    let ds = d.path().join("ds");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args([
+            "dataset",
+            "-q",
+            "--design",
+            &p(d.path(), "design.toml"),
+            "--out",
+            &p(d.path(), "ds"),
+        ])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    // Killed once it has written its first record (polled; the run takes seconds).
+    let started = std::time::Instant::now();
+    while std::fs::read_dir(ds.join("records")).map_or(0, Iterator::count) == 0 {
+        assert!(started.elapsed().as_secs() < 120, "no record written");
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(
+        ds.join("INCOMPLETE").exists(),
+        "a killed run leaves the folder marked"
+    );
+    let r = run(d.path());
+    assert!(r.status.success(), "{}", stderr(&r));
+    assert!(!ds.join("INCOMPLETE").exists(), "published: the mark goes");
+    assert_eq!(read_json(&ds.join("metadata.json"))["records_present"], 80);
+}

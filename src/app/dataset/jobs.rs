@@ -2,7 +2,7 @@
 //! [`DatasetMergeJob`] (shards joined), and where a design is read from.
 
 use super::folder::check_owner;
-use super::merge::{merge_datasets, shared_key};
+use super::merge::{check_trajectories, merge_datasets, shared_key};
 use super::plan::{check_dataset, dataset_key};
 use super::request::{DatasetOutcome, DatasetRequest};
 use super::run::run_dataset;
@@ -93,8 +93,13 @@ fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
         published: Some(root.to_path_buf()),
         incomplete: (!o.failures.is_empty()).then(|| {
             format!(
-                "{} physical states failed:\n  {}",
+                "{} {}:\n  {}",
                 o.failures.len(),
+                if what == "dataset-merge" {
+                    "records left out"
+                } else {
+                    "physical states failed"
+                },
                 o.failures.join("\n  ")
             )
         }),
@@ -204,6 +209,7 @@ impl Job for DatasetMergeJob {
         }
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
+        check_trajectories(&inputs, &shared.0)?;
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;

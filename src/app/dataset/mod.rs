@@ -21,6 +21,7 @@ pub mod merge;
 pub mod plan;
 pub mod request;
 pub mod run;
+pub mod state_files;
 pub mod verify;
 
 pub use jobs::{DatasetJob, DatasetMergeJob, DesignSource};

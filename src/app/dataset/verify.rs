@@ -11,7 +11,7 @@ use super::folder::{
 };
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
-use super::run::{state_files, StateJob};
+use super::state_files::{state_files, StateJob};
 use crate::checksum::sha256_hex;
 use crate::study::dataset::plan::plan_of;
 use crate::study::dataset::verify::{states_to_recompute, verify_trajectory};
