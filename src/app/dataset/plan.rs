@@ -83,8 +83,29 @@ pub fn record_size(d: &DatasetDesign, setups: &[ChainSetup]) -> RecordSize {
     )
 }
 
-/// Estimated bytes of the whole dataset (module docs of [`super::folder`]).
+/// Bytes of a dataset's files besides its records and trajectories: the indicator trends'
+/// figure (measured 92 kB at the default size) and table, the metadata and description
+/// (8 kB and 5 kB for one condition), the index's fixed part.
+const FIXED_BYTES: f64 = 256.0 * 1024.0;
+
+/// How many times the budget's nominal count of wear updates a trajectory may run: the
+/// threshold shortens the blocks when the wear runs faster than nominal
+/// (`tests/dataset_budget.rs` prints both counts).
+const TRAJECTORY_UPDATE_MARGIN: f64 = 2.0;
+
+/// Estimated bytes of the whole dataset (module docs of [`super::folder`]): every record
+/// (signals, CSV, labels), each condition's kept trajectory, and the fixed files.
 pub fn estimate_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
+    let trajectories: f64 = d
+        .conditions
+        .iter()
+        .map(|c| TRAJECTORY_UPDATE_MARGIN * trajectory_bytes(&c.case, d.max_cycles))
+        .sum();
+    records_bytes(d, setups) + trajectories + FIXED_BYTES
+}
+
+/// Estimated bytes of the dataset's records: the largest record's files times the count.
+fn records_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
     let plan = plan_of(d);
     let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
     let per_state: f64 = setups
@@ -228,7 +249,9 @@ fn trajectory_problems(d: &DatasetDesign) -> Vec<String> {
 /// estimated size against the disk budget.
 pub struct Checked {
     pub(super) setups: Vec<ChainSetup>,
-    pub(super) estimated_bytes: f64,
+    /// Estimated bytes of the whole dataset ([`estimate_bytes`]), checked against the disk
+    /// budget.
+    pub estimated_bytes: f64,
     /// The longest record, for the run budget.
     pub record: RecordSize,
 }
