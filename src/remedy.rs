@@ -70,6 +70,8 @@ pub enum Arg {
     SpeedClasses,
     /// The longest interval of a history, in median intervals.
     GapFactor,
+    /// The share of the revolutions below which a spectrum's bins are merged.
+    MergeBelowShare,
     /// A transfer-path file of the signal chain.
     TransferPath,
     /// The study design of a dataset.
@@ -89,7 +91,7 @@ pub(crate) type Spelling = fn(Arg) -> &'static str;
 
 impl Arg {
     /// Every argument.
-    pub const ALL: [Arg; 32] = [
+    pub const ALL: [Arg; 33] = [
         Arg::Override,
         Arg::CaseFile,
         Arg::Out,
@@ -116,6 +118,7 @@ impl Arg {
         Arg::TorqueClasses,
         Arg::SpeedClasses,
         Arg::GapFactor,
+        Arg::MergeBelowShare,
         Arg::TransferPath,
         Arg::Design,
         Arg::FutureSpectrum,
@@ -153,6 +156,7 @@ impl Arg {
             Arg::TorqueClasses => "torque classes",
             Arg::SpeedClasses => "speed classes",
             Arg::GapFactor => "the gap limit",
+            Arg::MergeBelowShare => "the share below which bins are merged",
             Arg::TransferPath => "the transfer-path file",
             Arg::Design => "the dataset design",
             Arg::FutureSpectrum => "the future load spectrum",

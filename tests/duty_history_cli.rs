@@ -162,3 +162,88 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
     assert!(stderr(&o).contains("rows 20 and 21"), "{}", stderr(&o));
     assert!(!out.exists());
 }
+
+/// 100 s at 20 N m and 25 Hz, sampled every 0.5 s and held, with one held sample at
+/// 80 N m and one at 50 N m: 12.5 of the 2500 revolutions (0.5 %) at each transient.
+fn history_with_two_transients() -> String {
+    let mut t = String::from("time_s,torque_nm,input_speed_hz\n");
+    for i in 0..=200 {
+        let s = 0.5 * i as f64;
+        let q = match i {
+            20 => 80,
+            100 => 50,
+            _ => 20,
+        };
+        t.push_str(&format!("{s},{q},25\n"));
+    }
+    t
+}
+
+#[test]
+fn bins_below_the_merge_share_join_their_nearest_keeping_revolutions_and_torque() {
+    let dir = tempfile::tempdir().unwrap();
+    let h = dir.path().join("history.csv");
+    std::fs::write(&h, history_with_two_transients()).unwrap();
+    let spectrum = |share: &str| {
+        let out = dir.path().join(format!("ls{share}"));
+        let o = gearwear(&[
+            "load-spectrum",
+            "--history",
+            h.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--interpolation",
+            "hold",
+            "--merge-below-share",
+            share,
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let s: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+        (s, String::from_utf8_lossy(&o.stdout).into_owned())
+    };
+    // Below 0.5 %: every bin is kept, the two transients each 0.005 of the revolutions.
+    let (kept, _) = spectrum("0.001");
+    assert_eq!(kept["bins"], 3);
+    assert_eq!(kept["merged_bins"]["merged"], 0);
+    // Above it: both join the one bin left, whose torque keeps the torque-revolution
+    // integral, (20 x 2475 + 80 x 12.5 + 50 x 12.5) / 2500 = 20.45 N m, at 25 Hz.
+    let (merged, stdout) = spectrum("0.01");
+    assert_eq!(merged["bins"], 1);
+    assert_eq!(merged["merged_bins"]["merged"], 2);
+    let share = merged["merged_bins"]["merged_share"].as_f64().unwrap();
+    assert!((share - 0.01).abs() < 1e-12, "{share}");
+    let bin = &merged["load_spectrum"]["bins"][0];
+    // Sums of a few exact binary numbers: a rounding or two of 20.45.
+    assert!((bin["torque_nm"].as_f64().unwrap() - 20.45).abs() < 1e-12);
+    assert!((bin["input_speed_hz"].as_f64().unwrap() - 25.0).abs() < 1e-12);
+    assert_eq!(bin["share"], 1.0);
+    assert_eq!(
+        merged["pinion_revolutions_under_load"],
+        kept["pinion_revolutions_under_load"]
+    );
+    assert!(
+        stdout.contains("2 bins holding 1") && stdout.contains("of the revolutions merged"),
+        "{stdout}"
+    );
+    // Out of range: exit 2 naming the option and its range, nothing written.
+    for bad in ["0.2", "-0.001", "NaN"] {
+        let out = dir.path().join("never");
+        let o = gearwear(&[
+            "load-spectrum",
+            "--history",
+            h.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--merge-below-share",
+            bad,
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        let e = stderr(&o);
+        assert!(
+            e.contains("--merge-below-share") && e.contains("[0, 0.1]"),
+            "{e}"
+        );
+        assert!(!out.exists());
+    }
+}

@@ -589,6 +589,7 @@ def load_spectrum(
     level: str = "mean",
     torque_shaft: str = "pinion",
     gap_factor: float = 10.0,
+    merge_below_share: float = 1e-3,
     out: _Optional[PathLike] = None,
     budget_scale: float = 1.0,
     replace: bool = False,
@@ -610,6 +611,9 @@ def load_spectrum(
     ``"hold"`` (sample and hold); ``level``: each bin's torque the cell's
     revolution-weighted ``"mean"`` (keeps its wear) or the class's ``"upper"`` edge;
     ``gap_factor``: the longest interval accepted, in median intervals.
+    ``merge_below_share``: bins with less than this share of the revolutions (default
+    0.1 %) join their nearest bin, keeping the revolutions, the time and the quasi-static
+    wear; 0 keeps every bin.
     ``figures``, ``figure_size``: as for :func:`stiffness`.
     """
     h = _table(history, "history", columns)
@@ -621,6 +625,7 @@ def load_spectrum(
         level=level,
         torque_shaft=torque_shaft,
         gap_factor=gap_factor,
+        merge_below_share=merge_below_share,
         out=_path(out),
         budget_scale=budget_scale,
         replace=replace,
@@ -662,7 +667,7 @@ def signals(
 
 
 def dataset(
-    design: PathLike,
+    design: _Union[PathLike, _Mapping[str, _Any]],
     out: PathLike,
     *,
     shard: _Optional[_Sequence[int]] = None,
@@ -672,14 +677,21 @@ def dataset(
     figures: _Optional[str] = None,
     figure_size: _Optional[_Tuple[int, int]] = None,
 ) -> DatasetResult:
-    """A labelled dataset from the study design file ``design``, as ``gearwear dataset``:
-    written to ``out`` record by record (resumable: a rerun keeps finished records).
+    """A labelled dataset from a study design, as ``gearwear dataset``: written to ``out``
+    record by record (resumable: a rerun keeps finished records).
+    ``design``: a design file (a path), the design's TOML text, or a dict of its keys,
+    e.g. ``{"case": gw.Case.paper().set(...), "run_to_failure": {"states": 3},
+    "condition": [{"name": "healthy"}]}`` (``case`` may be a :class:`Case` or a case
+    file's name). A text or dict design resolves relative file names against the
+    current folder; the records equal those of the same design read from a file.
     ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``.
     ``figures``, ``figure_size``: the formats and size of ``indicator_trends`` (the
     records are the same whatever they are), as for :func:`stiffness`."""
     sh = None if shard is None else (int(shard[0]), int(shard[1]))
+    if isinstance(design, _os.PathLike):
+        design = _os.fspath(design)
     n = _native.dataset(
-        _os.fspath(design),
+        design,
         _os.fspath(out),
         shard=sh,
         progress=progress,

@@ -232,7 +232,7 @@ def signals(
     """``gearwear signals``."""
 
 def dataset(
-    design: Union[str, PathLike[str]],
+    design: Union[str, PathLike[str], Mapping[str, Any]],
     out: Union[str, PathLike[str]],
     *,
     shard: Optional[Tuple[int, int]] = None,
@@ -270,6 +270,7 @@ def load_spectrum(
     level: str = "mean",
     torque_shaft: str = "pinion",
     gap_factor: float = 10.0,
+    merge_below_share: float = 1e-3,
     out: _Path = None,
     budget_scale: float = 1.0,
     replace: bool = False,

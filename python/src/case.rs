@@ -51,6 +51,11 @@ pub(crate) fn is_toml_text(s: &str) -> bool {
 }
 
 impl Case {
+    /// The case as the TOML text `to_toml` gives Python (read back to the same case).
+    pub(crate) fn to_toml_text(&self) -> String {
+        commented_template(&self.inner)
+    }
+
     /// The value of `key` as a Python object.
     pub fn get<'py>(&self, py: Python<'py>, key: &str) -> PyResult<Bound<'py, PyAny>> {
         let (s, k) = key.split_once('.').unwrap_or((key, ""));

@@ -92,14 +92,25 @@ fn is_numpy_bool(obj: &Bound<'_, PyAny>) -> PyResult<bool> {
 /// mappings as tables and iterables as arrays, within [`MAX_DEPTH`], [`MAX_ITEMS`] and
 /// [`MAX_STRING`]. None, NaN and infinities are refused here, before anything is built.
 pub fn py_to_toml(obj: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
-    to_toml(obj, 0)
+    to_toml(obj, 0, MAX_DEPTH)
 }
 
-fn to_toml(obj: &Bound<'_, PyAny>, depth: usize) -> PyResult<toml::Value> {
+/// Deepest nesting of a study design given as a dict: a value of a per-tooth list in the
+/// `teeth` table of a condition's case (`condition` list -> table -> `case` -> `teeth`
+/// -> list -> number) is depth 6.
+pub const MAX_DESIGN_DEPTH: usize = 8;
+
+/// A study design given as a mapping, as a TOML table, within [`MAX_DESIGN_DEPTH`] and
+/// the item and string limits of [`py_to_toml`].
+pub fn py_to_toml_design(obj: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    to_toml(obj, 0, MAX_DESIGN_DEPTH)
+}
+
+fn to_toml(obj: &Bound<'_, PyAny>, depth: usize, max_depth: usize) -> PyResult<toml::Value> {
     use toml::Value;
-    if depth > MAX_DEPTH {
+    if depth > max_depth {
         return Err(PyValueError::new_err(format!(
-            "a case value nested more than {MAX_DEPTH} levels deep (a list that contains itself?)"
+            "a value nested more than {max_depth} levels deep (a list that contains itself?)"
         )));
     }
     if obj.is_none() {
@@ -146,7 +157,7 @@ fn to_toml(obj: &Bound<'_, PyAny>, depth: usize) -> PyResult<toml::Value> {
         let mut t = toml::Table::new();
         for item in m.items()?.iter() {
             let (k, v): (String, Bound<'_, PyAny>) = item.extract()?;
-            t.insert(k, to_toml(&v, depth + 1)?);
+            t.insert(k, to_toml(&v, depth + 1, max_depth)?);
         }
         return Ok(Value::Table(t));
     }
@@ -159,7 +170,7 @@ fn to_toml(obj: &Bound<'_, PyAny>, depth: usize) -> PyResult<toml::Value> {
             if items.len() == MAX_ITEMS {
                 return Err(too_many());
             }
-            items.push(to_toml(&x?, depth + 1)?);
+            items.push(to_toml(&x?, depth + 1, max_depth)?);
         }
         return Ok(Value::Array(items));
     }

@@ -46,7 +46,7 @@ fn shaft_of(s: &str) -> PyResult<TorqueShaft> {
 
 /// The load spectrum of a measured history (as `gearwear load-spectrum`).
 #[pyfunction]
-#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[pyo3(signature = (history, *, torque_classes=10, speed_classes=5, interpolation="linear", level="mean", torque_shaft="pinion", gap_factor=10.0, merge_below_share=1e-3, out=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn load_spectrum<'py>(
     py: Python<'py>,
@@ -57,6 +57,7 @@ pub fn load_spectrum<'py>(
     level: &str,
     torque_shaft: &str,
     gap_factor: f64,
+    merge_below_share: f64,
     out: Option<PathBuf>,
     budget_scale: f64,
     replace: bool,
@@ -73,6 +74,7 @@ pub fn load_spectrum<'py>(
         },
         torque_shaft: shaft_of(torque_shaft)?,
         gap_factor,
+        merge_below_share,
         out,
         replace,
         budget: crate::jobs::budget_of(budget_scale)?,

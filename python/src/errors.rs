@@ -140,6 +140,7 @@ pub fn spell(a: Arg) -> &'static str {
         Arg::TorqueClasses => "`torque_classes`",
         Arg::SpeedClasses => "`speed_classes`",
         Arg::GapFactor => "`gap_factor`",
+        Arg::MergeBelowShare => "`merge_below_share`",
         Arg::TransferPath => "`transfer_path`",
         Arg::Design => "`design`",
         Arg::FutureSpectrum => "`future_spectrum`",

@@ -1,14 +1,14 @@
 //! The signal studies: `signals`, `dataset` and `dataset_merge` as jobs of
 //! `gearwear::app` (the command line's jobs), their results converted to dicts.
 
-use crate::case::Case;
-use crate::convert::outcome_to_py;
+use crate::case::{is_toml_text, Case};
+use crate::convert::{outcome_to_py, py_to_toml_design};
 use crate::worker::run_job;
 use gearwear::app::{DatasetJob, DatasetMergeJob, DesignSource, SignalsJob, TransferPathSource};
 use gearwear::study::dataset::Shard;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyMapping, PyString};
 use std::path::PathBuf;
 
 /// One record of what a sensor sees (as `gearwear signals`).
@@ -38,14 +38,52 @@ pub fn signals<'py>(
     outcome_to_py(py, o, w)
 }
 
-/// A labelled dataset from a study design file (as `gearwear dataset`); `shard` is
-/// `(i, n)` for shard i of n.
+/// Where a design given from Python comes from: a path to a design file, TOML text, or a
+/// mapping (whose `case` may be a `Case` object). Text and mappings resolve their relative
+/// paths (a `case` file, a `transfer_path`) against the current folder.
+fn design_source(py: Python<'_>, design: &Bound<'_, PyAny>) -> PyResult<DesignSource> {
+    let job_error = |e| crate::errors::job_error(py, e);
+    let here = PathBuf::from(".");
+    if let Ok(s) = design.cast::<PyString>() {
+        let s = s.to_cow()?;
+        if is_toml_text(&s) {
+            return DesignSource::inline(s.into_owned(), "design (text)", here, None)
+                .map_err(job_error);
+        }
+    }
+    if let Ok(m) = design.cast::<PyMapping>() {
+        let mut case_text = None;
+        let table = PyDict::new(py);
+        for item in m.items()?.iter() {
+            let (k, v): (String, Bound<'_, PyAny>) = item.extract()?;
+            match v.cast::<Case>() {
+                Ok(c) if k == "case" => {
+                    case_text = Some(c.borrow().to_toml_text());
+                    table.set_item(k, "(Case object)")?;
+                }
+                _ => table.set_item(k, v)?,
+            }
+        }
+        let text = toml::to_string(&py_to_toml_design(table.as_any())?)
+            .map_err(|e| PyValueError::new_err(format!("the design is not a TOML table: {e}")))?;
+        return DesignSource::inline(text, "design (dict)", here, case_text).map_err(job_error);
+    }
+    let path: PathBuf = design.extract().map_err(|_| {
+        PyTypeError::new_err(
+            "design: give a path to a design file, TOML text or a dict of the design's keys",
+        )
+    })?;
+    DesignSource::file(&path).map_err(job_error)
+}
+
+/// A labelled dataset from a study design (as `gearwear dataset`): a design file, TOML
+/// text or a dict; `shard` is `(i, n)` for shard i of n.
 #[pyfunction]
 #[pyo3(signature = (design, out, *, shard=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn dataset<'py>(
     py: Python<'py>,
-    design: PathBuf,
+    design: &Bound<'py, PyAny>,
     out: PathBuf,
     shard: Option<(usize, usize)>,
     progress: Option<Bound<'py, PyAny>>,
@@ -64,7 +102,7 @@ pub fn dataset<'py>(
             )))
         }
     };
-    let design = DesignSource::file(&design).map_err(|e| crate::errors::job_error(py, e))?;
+    let design = design_source(py, design)?;
     let job = DatasetJob {
         design,
         shard,

@@ -68,6 +68,9 @@ def test_bad_histories_and_options_name_the_argument():
     assert "`torque_classes`" in str(e.value)
     with pytest.raises(ValueError):
         gw.load_spectrum(square_wave(), level="max")
+    with pytest.raises(gw.CaseError) as e:
+        gw.load_spectrum(square_wave(), merge_below_share=0.5)
+    assert "`merge_below_share`" in str(e.value) and "[0, 0.1]" in str(e.value)
 
 
 def test_a_wear_study_under_a_spectrum_shows_each_bin():

@@ -4,6 +4,7 @@ import json
 import subprocess
 
 import numpy as np
+import pytest
 
 import gearwear as gw
 from conftest import cli_summary
@@ -58,3 +59,54 @@ def test_dataset_and_merge_from_python_equal_the_cli(cli, tmp_path):
     assert meta["records_present"] == 4
     idx = np.genfromtxt(ref / "index.csv", delimiter=",", names=True, dtype=None, encoding="utf-8")
     assert list(idx["cycles"]) == [0.0, 0.0, 5000.0, 5000.0]
+
+
+def test_dataset_design_as_text_dict_or_case_gives_the_file_designs_records(tmp_path):
+    """A design given as TOML text, as a dict, or as a dict whose ``case`` is a Case
+    object builds the records a design file builds: the same signals, byte for byte."""
+    sets = ["signals.record_length=0.1", "numerics.steps_per_mesh_period=60",
+            "stiffness.table_points_per_mesh_period=60"]
+    text = (
+        "seed = 5\nset = " + json.dumps(sets) + "\n"
+        "[run_to_failure]\ncycles = [0, 4000]\nmax_cycles = 4000\n"
+        "[[condition]]\nname = \"healthy\"\n"
+        "[[condition]]\nname = \"cracked\"\nfault = \"crack\"\n"
+        "[[condition.case.fault]]\nkind = \"crack\"\ngear = \"pinion\"\ntooth = 0\n"
+        "crack_depth_mm = 1.0\n"
+    )
+    design = tmp_path / "design.toml"
+    design.write_text(text)
+    as_dict = {
+        "seed": 5,
+        "set": sets,
+        "run_to_failure": {"cycles": [0, 4000], "max_cycles": 4000},
+        "condition": [
+            {"name": "healthy"},
+            {"name": "cracked", "fault": "crack",
+             "case": {"fault": [{"kind": "crack", "gear": "pinion", "tooth": 0,
+                                 "crack_depth_mm": 1.0}]}},
+        ],
+    }
+    with_case = dict(as_dict, case=gw.Case.paper())
+    outs = {
+        "file": gw.dataset(design, tmp_path / "file"),
+        "text": gw.dataset(text, tmp_path / "text"),
+        "dict": gw.dataset(as_dict, tmp_path / "dict"),
+        "case": gw.dataset(with_case, tmp_path / "case"),
+    }
+    assert all(r.summary["records"] == 4 for r in outs.values())
+    ref = sorted((tmp_path / "file" / "signals").iterdir())
+    assert len(ref) == 4
+    for name in ("text", "dict", "case"):
+        got = sorted((tmp_path / name / "signals").iterdir())
+        assert [p.name for p in got] == [p.name for p in ref], name
+        for a, b in zip(got, ref):
+            assert a.read_bytes() == b.read_bytes(), (name, a.name)
+
+
+def test_dataset_design_given_wrongly_is_refused_by_name(tmp_path):
+    with pytest.raises(TypeError, match="design"):
+        gw.dataset(3, tmp_path / "never")
+    with pytest.raises(gw.CaseError, match="unknown field `run_to_failur`"):
+        gw.dataset({"run_to_failur": {"states": 2}}, tmp_path / "never")
+    assert not (tmp_path / "never").exists()

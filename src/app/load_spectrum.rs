@@ -7,6 +7,7 @@ use super::inputs::TableSource;
 use super::observer::Observer;
 use super::{budget, publish, Job, JobError, Outcome};
 use crate::config::case::TorqueShaft;
+use crate::config::spectrum_merge::{merge_small_bins, DEFAULT_MERGE_SHARE, MAX_MERGE_SHARE};
 use crate::duty::history::{parse_history, DEFAULT_GAP_FACTOR};
 use crate::duty::ldd::{
     load_duration_distribution, LddSettings, MAX_SPEED_CLASSES, MAX_TORQUE_CLASSES,
@@ -29,6 +30,9 @@ pub struct LoadSpectrumJob {
     pub torque_shaft: TorqueShaft,
     /// Longest interval accepted, as a multiple of the median interval (longer: a gap).
     pub gap_factor: f64,
+    /// Bins under this share of the revolutions are merged into their nearest bin
+    /// (`config::spectrum_merge`), in [0, 0.1]; 0 keeps every bin.
+    pub merge_below_share: f64,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
@@ -48,6 +52,7 @@ impl LoadSpectrumJob {
             settings: LddSettings::default(),
             torque_shaft: TorqueShaft::Pinion,
             gap_factor: DEFAULT_GAP_FACTOR,
+            merge_below_share: DEFAULT_MERGE_SHARE,
             out: None,
             replace: false,
             budget: Some(Budget::DEFAULT),
@@ -79,6 +84,13 @@ impl LoadSpectrumJob {
                 "expected a number in [1, 1000000] (the longest interval accepted, in median intervals)",
             ));
         }
+        if !(0.0..=MAX_MERGE_SHARE).contains(&self.merge_below_share) {
+            problems.push(Problem::given(
+                Arg::MergeBelowShare,
+                self.merge_below_share.to_string(),
+                format!("expected a share of the revolutions in [0, {MAX_MERGE_SHARE}] (0 keeps every bin)"),
+            ));
+        }
         if problems.is_empty() {
             Ok(())
         } else {
@@ -108,19 +120,22 @@ impl Job for LoadSpectrumJob {
             )
         })?;
         let ldd = load_duration_distribution(&history, self.settings);
-        let Some(spectrum) = ldd.spectrum(self.torque_shaft) else {
+        let Some(mut spectrum) = ldd.spectrum(self.torque_shaft) else {
             return Err(JobError::input(Problem::given(
                 Arg::History,
                 &source,
                 "no time under load (torque and speed both above zero): there is no spectrum to count",
             )));
         };
+        let (bins, merged) = merge_small_bins(&spectrum.bins, self.merge_below_share);
+        spectrum.bins = bins;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let mut a = ldd_artifacts(
             &source,
             history.time_s.len(),
             &ldd,
             &spectrum,
+            &merged,
             self.torque_shaft,
         )
         .with_figure_output(figures);

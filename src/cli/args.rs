@@ -369,6 +369,11 @@ pub(crate) struct LoadSpectrumArgs {
     /// an error).
     #[arg(long, default_value_t = 10.0)]
     pub(crate) gap_factor: f64,
+    /// Merge bins with less than this share of the revolutions (0.001: 0.1 %) into their
+    /// nearest bin, keeping the revolutions, the time and the torque-revolution integral
+    /// (the quasi-static wear); 0 keeps every bin.
+    #[arg(long, allow_negative_numbers = true, default_value_t = gearwear::config::spectrum_merge::DEFAULT_MERGE_SHARE)]
+    pub(crate) merge_below_share: f64,
     #[command(flatten)]
     pub(crate) figures: FigureArgs,
 }

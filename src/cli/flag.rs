@@ -32,6 +32,7 @@ pub(crate) fn flag(a: Arg) -> &'static str {
         Arg::TorqueClasses => "--torque-classes",
         Arg::SpeedClasses => "--speed-classes",
         Arg::GapFactor => "--gap-factor",
+        Arg::MergeBelowShare => "--merge-below-share",
         Arg::TransferPath => "--transfer-path",
         Arg::Design => "--design",
         Arg::FutureSpectrum => "--future-spectrum",

@@ -28,6 +28,7 @@ pub(crate) fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), Cl
             ShaftArg::Gear => TorqueShaft::Gear,
         },
         gap_factor: a.gap_factor,
+        merge_below_share: a.merge_below_share,
         out: Some(a.out.clone()),
         replace: super::output::replace(),
         budget,

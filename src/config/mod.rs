@@ -11,6 +11,7 @@ mod parse;
 pub mod problem;
 pub mod schema;
 pub mod signals;
+pub mod spectrum_merge;
 pub mod teeth;
 
 #[cfg(test)]

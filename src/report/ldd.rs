@@ -6,9 +6,10 @@ use super::artifacts::Artifacts;
 use super::duty_figures::spectrum_figure;
 use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
 use crate::config::case::TorqueShaft;
+use crate::config::spectrum_merge::Merged;
 use crate::config::LoadSpectrumSection;
 use crate::duty::ldd::{Interpolation, Ldd, Level};
-use crate::format::shown;
+use crate::format::{shown, shown_percent};
 use crate::io::Table;
 use serde_json::json;
 
@@ -158,12 +159,25 @@ fn level_name(l: Level) -> &'static str {
     }
 }
 
+/// What the merge of dust bins did, for the headline: empty when nothing was merged.
+fn merged_note(m: &Merged) -> String {
+    match m.merged {
+        0 => String::new(),
+        n => format!(
+            "; {n} bin{} holding {} of the revolutions merged into their nearest",
+            if n == 1 { "" } else { "s" },
+            shown_percent(m.merged_share)
+        ),
+    }
+}
+
 /// Everything the spectrum of a history writes; `source`: the history's name.
 pub fn ldd_artifacts(
     source: &str,
     samples: usize,
     ldd: &Ldd,
     spectrum: &LoadSpectrumSection,
+    merged: &Merged,
     shaft: TorqueShaft,
 ) -> Artifacts {
     let mut a = Artifacts::default();
@@ -186,6 +200,7 @@ pub fn ldd_artifacts(
         },
         "pinion_revolutions_under_load": cycles,
         "bins": spectrum.bins.len(),
+        "merged_bins": merged,
         "load_spectrum": {
             "torque_shaft": shaft,
             "bins": spectrum.bins,
@@ -202,13 +217,14 @@ pub fn ldd_artifacts(
         spectrum_toml(spectrum, shaft).into_bytes(),
     ));
     a.headline = format!(
-        "{} samples over {} h: {} h under load in {} bins ({} torque x {} speed classes), {} h idle; {} pinion revolutions",
+        "{} samples over {} h: {} h under load in {} bins ({} torque x {} speed classes{}), {} h idle; {} pinion revolutions",
         samples,
         shown(ldd.span_s / S_PER_H),
         shown(ldd.loaded_time_s() / S_PER_H),
         spectrum.bins.len(),
         ldd.settings.torque_classes,
         ldd.settings.speed_classes,
+        merged_note(merged),
         shown(ldd.idle_time_s / S_PER_H),
         shown(cycles)
     );

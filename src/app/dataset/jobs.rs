@@ -25,10 +25,16 @@ use std::path::{Path, PathBuf};
 /// paths: the case file and the transfer-path file).
 #[derive(Debug, Clone)]
 pub struct DesignSource {
+    /// The design's TOML text.
     pub text: String,
     /// The design's name in messages (its file name).
     pub name: String,
+    /// The folder its relative paths are resolved against.
     pub folder: PathBuf,
+    /// The base case given with the design rather than as a file (Python: a `Case`
+    /// object as the design's `case`): its TOML text, read in place of the file the
+    /// design's `case` key names.
+    pub case_text: Option<String>,
 }
 
 impl DesignSource {
@@ -43,6 +49,40 @@ impl DesignSource {
             folder: path
                 .parent()
                 .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+            case_text: None,
+        })
+    }
+
+    /// A design given as text (not read from a file) named `name` in messages, whose
+    /// relative paths resolve against `folder`, with its base case as `case_text` if
+    /// given so. The text is bounded as a design file is.
+    pub fn inline(
+        text: String,
+        name: &str,
+        folder: PathBuf,
+        case_text: Option<String>,
+    ) -> Result<Self, JobError> {
+        let too_long = |what: &str, n: usize, max: u64| {
+            JobError::input(Problem::given(
+                Arg::Design,
+                name,
+                format!("{what} is {n} bytes, more than the {max} bytes it may be"),
+            ))
+        };
+        if text.len() as u64 > MAX_DESIGN_BYTES {
+            return Err(too_long("the design", text.len(), MAX_DESIGN_BYTES));
+        }
+        if let Some(c) = case_text
+            .as_ref()
+            .filter(|c| c.len() as u64 > MAX_CASE_BYTES)
+        {
+            return Err(too_long("its case", c.len(), MAX_CASE_BYTES));
+        }
+        Ok(Self {
+            text,
+            name: name.to_string(),
+            folder,
+            case_text,
         })
     }
 }
@@ -152,8 +192,11 @@ impl Job for DatasetJob {
 pub fn load_design(
     d: &DesignSource,
 ) -> Result<(DatasetDesign, Option<TransferPath>, Vec<u8>), JobError> {
-    let read = |rel: &str| {
-        read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+    let read = |rel: &str| match &d.case_text {
+        Some(text) => Ok(text.clone()),
+        None => {
+            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+        }
     };
     let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
         JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
