@@ -8,7 +8,7 @@
 mod common;
 
 use common::{gearwear, ok, stderr};
-use gearwear::app::dataset::verify::verify_folder;
+use gearwear::app::dataset::jobs::verify_folder;
 use gearwear::app::dataset::DesignSource;
 use gearwear::study::dataset::verify::{detection_probability, states_to_recompute};
 use serde_json::Value;

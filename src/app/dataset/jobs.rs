@@ -3,9 +3,10 @@
 
 use super::folder::check_owner;
 use super::merge::{check_trajectories, merge_datasets, shared_key};
-use super::plan::{check_dataset, dataset_key};
-use super::request::{DatasetOutcome, DatasetRequest};
+use super::plan::{check_dataset, dataset_key, trajectory_problems};
+use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::run::run_dataset;
+use super::verify::{verify_dataset, Verified};
 use crate::app::observer::Observer;
 use crate::app::{budget, publish, Job, JobError, Outcome};
 use crate::io::input::{
@@ -170,6 +171,12 @@ impl Job for DatasetJob {
             &estimate_dataset(&design, self.shard, threads, checked.record),
             self.budget.as_ref(),
         )?;
+        // A trajectory longer than a folder keeps (after the run budget, which names the
+        // cost first; without a budget this refuses it).
+        let too_long = trajectory_problems(&design);
+        if !too_long.is_empty() {
+            return Err(DatasetError::Input(too_long).into());
+        }
         // A folder belongs to one design: another design's run, shard or resume into it
         // is refused before it is opened (issue 33: it left false index rows).
         check_owner(
@@ -275,4 +282,24 @@ fn another_design(message: String) -> JobError {
                 .text(")"),
         )),
     )
+}
+
+/// [`verify_dataset`] of the design in `design` (read as a dataset job reads it) for the
+/// folder `root`.
+pub fn verify_folder(
+    design: &DesignSource,
+    root: &Path,
+    sample: usize,
+    seed: u64,
+) -> Result<Verified, JobError> {
+    let (d, path, path_bytes) = load_design(design)?;
+    let req = DatasetRequest {
+        design: &d,
+        path,
+        path_bytes,
+        shard: crate::study::dataset::plan::Shard { index: 1, count: 1 },
+        figures: Default::default(),
+        replace: false,
+    };
+    Ok(verify_dataset(&req, root, sample, seed)?)
 }

@@ -224,9 +224,9 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
 }
 
 /// The conditions whose kept trajectory would exceed the largest file a dataset folder
-/// reads back ([`MAX_DATASET_FILE_BYTES`]): refused before any work, since a resume could
-/// never reuse it (`study::budget::trajectory_bytes`).
-fn trajectory_problems(d: &DatasetDesign) -> Vec<String> {
+/// reads back ([`MAX_DATASET_FILE_BYTES`]): refused before any work (after the run
+/// budget), since a resume could never reuse it (`study::budget::trajectory_bytes`).
+pub(super) fn trajectory_problems(d: &DatasetDesign) -> Vec<String> {
     let cap = MAX_DATASET_FILE_BYTES as f64;
     d.conditions
         .iter()
@@ -260,10 +260,6 @@ pub struct Checked {
 pub fn check_dataset(req: &DatasetRequest) -> Result<Checked, DatasetError> {
     let d = req.design;
     let setups = setups(req).map_err(DatasetError::Input)?;
-    let too_long = trajectory_problems(d);
-    if !too_long.is_empty() {
-        return Err(DatasetError::Input(too_long));
-    }
     let estimated = estimate_bytes(d, &setups);
     let budget = d.disk_budget_gib * 1024f64.powi(3);
     if estimated > budget {

@@ -183,23 +183,3 @@ pub fn verify_dataset(
         .extend(verify_states(&job, root, &v.states_recomputed));
     Ok(v)
 }
-
-/// [`verify_dataset`] of the design in `design` (read as a dataset job reads it) for the
-/// folder `root`.
-pub fn verify_folder(
-    design: &super::DesignSource,
-    root: &Path,
-    sample: usize,
-    seed: u64,
-) -> Result<Verified, crate::app::JobError> {
-    let (d, path, path_bytes) = super::jobs::load_design(design)?;
-    let req = DatasetRequest {
-        design: &d,
-        path,
-        path_bytes,
-        shard: crate::study::dataset::plan::Shard { index: 1, count: 1 },
-        figures: Default::default(),
-        replace: false,
-    };
-    Ok(verify_dataset(&req, root, sample, seed)?)
-}
