@@ -99,7 +99,12 @@ pub fn estimate_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
     let trajectories: f64 = d
         .conditions
         .iter()
-        .map(|c| TRAJECTORY_UPDATE_MARGIN * trajectory_bytes(&c.case, d.max_cycles))
+        // At most what a folder keeps: a longer one is refused by its own check
+        // ([`trajectory_problems`]), after the run budget, which names its cost first.
+        .map(|c| {
+            (TRAJECTORY_UPDATE_MARGIN * trajectory_bytes(&c.case, d.max_cycles))
+                .min(MAX_DATASET_FILE_BYTES as f64)
+        })
         .sum();
     records_bytes(d, setups) + trajectories + FIXED_BYTES
 }
