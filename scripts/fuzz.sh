@@ -10,7 +10,8 @@
 # Targets: case_input (TOML text, --set, --vary), case_values (schema keys with values
 # mostly in range, so most inputs reach the model), observations and posterior (the CSV
 # files of calibrate and predict), checkpoint (a wear checkpoint, checked against the
-# model); each seeded from fuzz/seeds/TARGET where that exists. The corpora
+# model), dataset_design (a dataset design and its case file); each seeded from
+# fuzz/seeds/TARGET where that exists. The corpora
 # grow in fuzz/corpus/TARGET; a crash is saved in fuzz/artifacts/TARGET and makes this
 # script fail.
 set -euo pipefail
@@ -32,7 +33,7 @@ limit=(-runs="$runs")
 if [[ -n "${FUZZ_SECONDS:-}" ]]; then
     limit=(-max_total_time="$FUZZ_SECONDS")
 fi
-for target in ${FUZZ_TARGET:-case_input case_values observations posterior checkpoint}; do
+for target in ${FUZZ_TARGET:-case_input case_values observations posterior checkpoint dataset_design}; do
     corpus="fuzz/corpus/$target"
     mkdir -p "$corpus"
     if [[ -d "fuzz/seeds/$target" ]]; then

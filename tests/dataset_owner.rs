@@ -57,3 +57,74 @@ fn another_design_is_refused_before_the_folder_changes() {
     // --replace: the user's explicit choice.
     ok(&["dataset", "--design", &b, "--out", out_s, "--replace", "-q"]);
 }
+
+/// The design key a dataset folder's description names.
+fn key_of(root: &Path) -> String {
+    let v: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(root.join("state/dataset.json")).unwrap()).unwrap();
+    v["dataset_key"].as_str().unwrap().to_owned()
+}
+
+#[test]
+fn two_designs_started_at_once_into_an_empty_folder_one_is_refused_and_nothing_mixes() {
+    // An unsharded run and a shard take different set locks; the folder-wide claim makes
+    // one of them the folder's owner and refuses the other (exit 2), whichever comes
+    // first, in every trial.
+    let dir = tempfile::tempdir().unwrap();
+    let a = write(dir.path(), "a.toml", &design(1));
+    let b = write(dir.path(), "b.toml", &design(2));
+    for trial in 0..3 {
+        let out = dir.path().join(format!("out{trial}"));
+        let out_s = out.to_str().unwrap().to_owned();
+        let spawn = |design: &str, extra: &[&str]| {
+            std::process::Command::new(env!("CARGO_BIN_EXE_gearwear"))
+                .args(["dataset", "-q", "--design", design, "--out", &out_s])
+                .args(extra)
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap()
+        };
+        let (pa, pb) = (spawn(&a, &[]), spawn(&b, &["--shard", "1/2"]));
+        let (ra, rb) = (
+            pa.wait_with_output().unwrap(),
+            pb.wait_with_output().unwrap(),
+        );
+        let codes = (ra.status.code(), rb.status.code());
+        let (winner, loser) = match codes {
+            (Some(0), Some(2)) => (&a, &rb),
+            (Some(2), Some(0)) => (&b, &ra),
+            _ => panic!(
+                "trial {trial}: exits {codes:?}, expected one 0 and one 2: {} / {}",
+                stderr(&ra),
+                stderr(&rb)
+            ),
+        };
+        let e = stderr(loser);
+        assert!(
+            e.contains("another design") || e.contains("being written by another gearwear"),
+            "trial {trial}: {e}"
+        );
+        // Only the winner's records, under the winner's key: a resume of the winner's
+        // design is accepted, the loser's refused.
+        let key = key_of(&out);
+        for entry in std::fs::read_dir(out.join("records")).unwrap() {
+            let car: serde_json::Value =
+                serde_json::from_slice(&std::fs::read(entry.unwrap().path()).unwrap()).unwrap();
+            assert_eq!(
+                car["dataset_key"].as_str(),
+                Some(key.as_str()),
+                "trial {trial}"
+            );
+        }
+        let shard: &[&str] = if winner == &b {
+            &["--shard", "1/2"]
+        } else {
+            &[]
+        };
+        let mut again = vec!["dataset", "-q", "--design", winner, "--out", &out_s];
+        again.extend(shard);
+        ok(&again);
+        assert_eq!(key_of(&out), key, "trial {trial}");
+        assert!(!out.join("INCOMPLETE").exists(), "trial {trial}");
+    }
+}

@@ -208,3 +208,40 @@ fn a_refusal_leaves_an_existing_folder_as_it_was() {
     assert_eq!(snapshot(dir.path()), before);
     assert!(Path::new(&out.join("keep.txt")).exists());
 }
+
+#[test]
+fn a_trajectory_longer_than_a_dataset_folder_keeps_is_refused_before_any_work() {
+    // 1e11 cycles in blocks of 10: about 1e10 updates of ~1 kB, far over the 1 GiB a
+    // trajectory file may hold; refused even without a run budget, naming the key.
+    refused(
+        "set = [\"wear.block_cycles=10\"]\n[run_to_failure]\nmax_cycles = 1e11\nstates = 2\n",
+        &[],
+        &["--no-budget"],
+        &["run_to_failure.max_cycles", "trajectory", "GiB"],
+    );
+}
+
+#[test]
+fn non_finite_values_of_every_numeric_design_field_are_refused_naming_it() {
+    // Each numeric key of a design (its whole numbers too) at nan, inf and -inf.
+    for v in ["nan", "inf", "-inf", "+inf"] {
+        for (text, key) in [
+            (format!("seed = {v}\n"), "seed"),
+            (format!("[run_to_failure]\nstates = {v}\n"), "run_to_failure.states"),
+            (format!("[run_to_failure]\ncycles = [0, {v}]\n"), "run_to_failure.cycles"),
+            (format!("[run_to_failure]\nmax_cycles = {v}\n"), "run_to_failure.max_cycles"),
+            (format!("[run_to_failure]\nwear_limit_um = {v}\n"), "run_to_failure.wear_limit_um"),
+            (format!("[operating]\ninput_speed_hz = [30, {v}]\n"), "operating.input_speed_hz"),
+            (format!("[operating]\nload_torque_nm = [{v}]\n"), "operating.load_torque_nm"),
+            (format!("[records]\nnoise_realisations = {v}\n"), "records.noise_realisations"),
+            (format!("[records]\ndisk_budget_gib = {v}\n"), "records.disk_budget_gib"),
+            (format!("[[condition]]\nname = \"a\"\nseverity = {v}\n"), "severity"),
+            (
+                format!("[[condition]]\nname = \"a\"\n[condition.case.operating]\nload_torque_nm = {v}\n"),
+                "operating.load_torque_nm",
+            ),
+        ] {
+            refused(&text, &[], &[], &[key]);
+        }
+    }
+}

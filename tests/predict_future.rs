@@ -170,6 +170,17 @@ fn a_bad_future_duty_exits_2_naming_the_option() {
         ],
         &["--future-spectrum", "missing.toml", "cannot read"],
     );
+    // A bin over the Hertz pressure the flanks carry (issue 33: the folder, its state
+    // file and lock were made before the refusal): refused naming the bin, no folder.
+    let hertz = write(
+        d.path(),
+        "hertz.toml",
+        "[load_spectrum]\nbins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 5e4, input_speed_hz = 20, share = 0.5}]\n",
+    );
+    run(
+        &["--future-spectrum", &hertz, "--future-from-cycles", "1e4"],
+        &["--future-spectrum", "bin 2", "Hertz"],
+    );
 }
 
 #[test]

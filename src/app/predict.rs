@@ -195,6 +195,11 @@ impl Job for PredictJob {
         // The budget, now that the samples' source and number are known.
         self.check_budget(&source, &span, n, future.as_ref())?;
         let model = build_model(case, observer)?;
+        // Every bin of the future duty within the model's domain (the Hertz pressure the
+        // flanks can carry, ...) before the folder is opened: a refusal leaves nothing.
+        if let Some(f) = &future {
+            future_domain(case, &model, f)?;
+        }
         let stem =
             (shard.count > 1).then(|| format!("predict_shard_{}_of_{}", shard.index, shard.count));
         let out = publish::open_if(
@@ -528,4 +533,32 @@ pub fn prediction_artifacts(
         failed.len(),
     );
     Ok(art)
+}
+
+/// The problems of the future duty `f`'s bins for `case` (each bin's case against the
+/// model's domain, `study::domain`), named by bin: refused before any folder is opened.
+fn future_domain(
+    case: &crate::config::Case,
+    model: &crate::study::Model,
+    f: &crate::prognostics::forward::FutureDuty,
+) -> Result<(), JobError> {
+    let mut c = case.clone();
+    c.load_spectrum = Some(f.spectrum.clone());
+    let problems: Vec<crate::remedy::Problem> = (0..f.spectrum.bins.len())
+        .flat_map(|i| {
+            crate::study::domain::domain_problems(&c.at_bin(i), &model.pair)
+                .into_iter()
+                .map(move |m| {
+                    crate::remedy::Problem::of(
+                        crate::remedy::Arg::FutureSpectrum,
+                        format!("bin {}: {m}", i + 1),
+                    )
+                })
+        })
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(JobError::Input(problems))
+    }
 }

@@ -406,15 +406,17 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`
-/// into `to` (no-op for the same folder). Returns how many records were copied.
+/// into `to` (no-op for the same folder). Returns how many records were copied, and the
+/// records left out (a signal file missing or not the one its sidecar names: counted
+/// missing by the index, named here).
 pub fn copy_dataset(
     from: &Path,
     to: &Path,
     key: &str,
     prev: &SetState,
-) -> Result<usize, OutputError> {
+) -> Result<(usize, Vec<String>), OutputError> {
     if same_dir(from, to) {
-        return Ok(0);
+        return Ok((0, Vec::new()));
     }
     // Read as the folder's own files are: no link followed, regular files of bounded size.
     let read = |rel: &str| {
@@ -427,18 +429,23 @@ pub fn copy_dataset(
             )
         })
     };
-    let mut n = 0;
+    let (mut n, mut skipped) = (0, Vec::new());
     for s in sidecars(from).into_iter().filter(|s| s.dataset_key == key) {
         let id = s.labels.record_id;
-        let signal = read(&s.labels.file)?;
-        if sha256_hex(&signal) != s.signal_sha256 {
+        let signal = read_in(from, &s.labels.file).filter(|b| sha256_hex(b) == s.signal_sha256);
+        let car = read_in(from, &sidecar_rel(id));
+        let (Some(signal), Some(car)) = (signal, car) else {
+            skipped.push(format!(
+                "record {id} of {}: its signal file is missing or not the one its sidecar names: left out (counted missing)",
+                from.display()
+            ));
             continue;
-        }
+        };
         put(to, &s.labels.file, &signal, prev)?;
         if let Some(csv) = read_in(from, &csv_rel(id)) {
             put(to, &csv_rel(id), &csv, prev)?;
         }
-        put(to, &sidecar_rel(id), &read(&sidecar_rel(id))?, prev)?;
+        put(to, &sidecar_rel(id), &car, prev)?;
         n += 1;
     }
     for t in trajectories(from)
@@ -449,7 +456,7 @@ pub fn copy_dataset(
         put(to, &rel, &read(&rel)?, prev)?;
     }
     put(to, DATASET_REL, &read(DATASET_REL)?, prev)?;
-    Ok(n)
+    Ok((n, skipped))
 }
 
 fn same_dir(a: &Path, b: &Path) -> bool {

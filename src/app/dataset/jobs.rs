@@ -2,10 +2,11 @@
 //! [`DatasetMergeJob`] (shards joined), and where a design is read from.
 
 use super::folder::check_owner;
-use super::merge::{merge_datasets, shared_key};
-use super::plan::{check_dataset, dataset_key};
-use super::request::{DatasetOutcome, DatasetRequest};
+use super::merge::{check_trajectories, merge_datasets, shared_key};
+use super::plan::{check_dataset, dataset_key, trajectory_problems};
+use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::run::run_dataset;
+use super::verify::{verify_dataset, Verified};
 use crate::app::observer::Observer;
 use crate::app::{budget, publish, Job, JobError, Outcome};
 use crate::io::input::{
@@ -15,9 +16,10 @@ use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
 use crate::report::Artifacts;
 use crate::signals::path_file::parse_transfer_path;
+use crate::signals::transfer::TransferPath;
 use crate::study::budget::{estimate_dataset, Budget};
-use crate::study::dataset::parse_design;
 use crate::study::dataset::plan::Shard;
+use crate::study::dataset::{parse_design, DatasetDesign};
 use std::path::{Path, PathBuf};
 
 /// A study design and where it was read from (its folder resolves the design's relative
@@ -132,8 +134,13 @@ fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
         published: Some(root.to_path_buf()),
         incomplete: (!o.failures.is_empty()).then(|| {
             format!(
-                "{} physical states failed:\n  {}",
+                "{} {}:\n  {}",
                 o.failures.len(),
+                if what == "dataset-merge" {
+                    "records left out"
+                } else {
+                    "physical states failed"
+                },
                 o.failures.join("\n  ")
             )
         }),
@@ -149,41 +156,14 @@ impl Job for DatasetJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        let d = &self.design;
-        let read = |rel: &str| match &d.case_text {
-            Some(text) => Ok(text.clone()),
-            None => read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES)
-                .map_err(|e| e.reason),
-        };
-        let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
-            JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
-        })?;
-        let (path, path_bytes) = match &design.transfer_path {
-            Some(rel) => {
-                let p = d.folder.join(rel);
-                let shown = p.display().to_string();
-                let bytes =
-                    read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
-                        JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
-                    })?;
-                let path =
-                    parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
-                        JobError::Input(
-                            m.into_iter()
-                                .map(|m| Problem::of(Arg::TransferPath, m))
-                                .collect(),
-                        )
-                    })?;
-                (Some(path), bytes)
-            }
-            None => (None, Vec::new()),
-        };
+        let (design, path, path_bytes) = load_design(&self.design)?;
         let req = DatasetRequest {
             design: &design,
             path,
             path_bytes,
             shard: self.shard,
             figures,
+            replace: self.replace,
         };
         let checked = check_dataset(&req)?;
         let threads = rayon::current_num_threads();
@@ -191,6 +171,12 @@ impl Job for DatasetJob {
             &estimate_dataset(&design, self.shard, threads, checked.record),
             self.budget.as_ref(),
         )?;
+        // A trajectory longer than a folder keeps (after the run budget, which names the
+        // cost first; without a budget this refuses it).
+        let too_long = trajectory_problems(&design);
+        if !too_long.is_empty() {
+            return Err(DatasetError::Input(too_long).into());
+        }
         // A folder belongs to one design: another design's run, shard or resume into it
         // is refused before it is opened (issue 33: it left false index rows).
         check_owner(
@@ -206,6 +192,43 @@ impl Job for DatasetJob {
         observer.note(&format!("dataset: results -> {}", self.out.display()));
         Ok(outcome(&o, &self.out, "dataset"))
     }
+}
+
+/// A design read as a dataset job reads it: the design parsed (its case files read
+/// beside it), and its transfer path with the file's bytes (part of the dataset key).
+pub fn load_design(
+    d: &DesignSource,
+) -> Result<(DatasetDesign, Option<TransferPath>, Vec<u8>), JobError> {
+    let read = |rel: &str| match &d.case_text {
+        Some(text) => Ok(text.clone()),
+        None => {
+            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
+        }
+    };
+    let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
+        JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
+    })?;
+    let (path, path_bytes) = match &design.transfer_path {
+        Some(rel) => {
+            let p = d.folder.join(rel);
+            let shown = p.display().to_string();
+            let bytes =
+                read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
+                    JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
+                })?;
+            let path =
+                parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
+                    JobError::Input(
+                        m.into_iter()
+                            .map(|m| Problem::of(Arg::TransferPath, m))
+                            .collect(),
+                    )
+                })?;
+            (Some(path), bytes)
+        }
+        None => (None, Vec::new()),
+    };
+    Ok((design, path, path_bytes))
 }
 
 /// See the module docs.
@@ -236,6 +259,7 @@ impl Job for DatasetMergeJob {
         }
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
+        check_trajectories(&inputs, &shared.0)?;
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
@@ -258,4 +282,24 @@ fn another_design(message: String) -> JobError {
                 .text(")"),
         )),
     )
+}
+
+/// [`verify_dataset`] of the design in `design` (read as a dataset job reads it) for the
+/// folder `root`.
+pub fn verify_folder(
+    design: &DesignSource,
+    root: &Path,
+    sample: usize,
+    seed: u64,
+) -> Result<Verified, JobError> {
+    let (d, path, path_bytes) = load_design(design)?;
+    let req = DatasetRequest {
+        design: &d,
+        path,
+        path_bytes,
+        shard: crate::study::dataset::plan::Shard { index: 1, count: 1 },
+        figures: Default::default(),
+        replace: false,
+    };
+    Ok(verify_dataset(&req, root, sample, seed)?)
 }

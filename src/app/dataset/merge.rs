@@ -6,6 +6,7 @@ use super::folder::{
     copy_dataset, csv_rel, is_file_in, read_in, sidecar_rel, sidecars, stage_index_and_metadata,
     trajectories, trajectory_rel, DATASET_REL,
 };
+use super::plan::key_of_description;
 use super::request::{DatasetError, DatasetOutcome};
 use crate::io::OutputDir;
 use crate::report::figure_output::FigureOutput;
@@ -17,10 +18,13 @@ use std::path::Path;
 /// record count the one its axes give.
 pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetError> {
     let mut key: Option<(String, usize)> = None;
+    let mut first_bytes: Option<Vec<u8>> = None;
     let mut problems = Vec::new();
     for dir in inputs {
-        let body: Option<Value> =
-            read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice(&b).ok());
+        let bytes = read_in(dir, DATASET_REL);
+        let body: Option<Value> = bytes
+            .as_deref()
+            .and_then(|b| serde_json::from_slice(b).ok());
         let Some(body) = body else {
             problems.push(format!(
                 "{}: no {DATASET_REL}: not a dataset folder (or not started)",
@@ -40,6 +44,29 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
                 dir.display()
             ));
             continue;
+        }
+        // The metadata is written from the description: it must be the one its design
+        // gives (its key recomputed from its own design, cases and transfer path), and
+        // the same in every shard.
+        if key_of_description(&body).as_deref() != Some(k.as_str()) {
+            problems.push(format!(
+                "{}: {DATASET_REL} does not give its own dataset key (its design, cases or transfer path were edited): a damaged or edited shard",
+                dir.display()
+            ));
+            continue;
+        }
+        match &first_bytes {
+            None => first_bytes = bytes,
+            Some(b)
+                if Some(b) != bytes.as_ref() && key.as_ref().is_some_and(|(k0, _)| *k0 == k) =>
+            {
+                problems.push(format!(
+                    "{}: {DATASET_REL} differs from the first input's under the same dataset key: a damaged or edited shard",
+                    dir.display()
+                ));
+                continue;
+            }
+            Some(_) => {}
         }
         match &key {
             None => key = Some((k, total)),
@@ -65,10 +92,15 @@ pub(super) fn merge_datasets(
     (key, total): (String, usize),
     figures: FigureOutput,
 ) -> Result<DatasetOutcome, DatasetError> {
-    let mut copied = 0;
+    // Marked until published: a merge that fails half-way leaves the folder marked.
+    out.mark_incomplete()
+        .map_err(|e| DatasetError::Failed(e.into()))?;
+    let (mut copied, mut skipped) = (0, Vec::new());
     for dir in inputs {
-        copied += copy_dataset(dir, root, &key, out.previous_state())
+        let (n, bad) = copy_dataset(dir, root, &key, out.previous_state())
             .map_err(|e| DatasetError::Failed(e.into()))?;
+        copied += n;
+        skipped.extend(bad);
     }
     let missing = stage_index_and_metadata(&mut out, root, total, figures)
         .map_err(|e| DatasetError::Failed(anyhow::anyhow!("{e}")))?;
@@ -89,7 +121,7 @@ pub(super) fn merge_datasets(
         shard_records: total,
         computed: 0,
         reused: copied,
-        failures: Vec::new(),
+        failures: skipped,
         missing,
         estimated_bytes: 0.0,
     })
@@ -118,4 +150,65 @@ fn axes_records(body: &Value) -> Option<usize> {
     ]
     .iter()
     .try_fold(1_usize, |acc, n| acc.checked_mul(*n))
+}
+
+/// Every kept trajectory of the shards in `inputs` (of the dataset `key`) recomputed by
+/// the wear law of its condition's case, as the description gives it
+/// (`study::dataset::verify::verify_trajectory`): checked before the target is opened,
+/// so a forged trajectory (wear scaled, cut short, failure moved) is refused, naming
+/// its file, and the target is untouched.
+pub(super) fn check_trajectories(inputs: &[&Path], key: &str) -> Result<(), DatasetError> {
+    use crate::study::dataset::verify::verify_trajectory;
+    use rayon::prelude::*;
+    let mut jobs = Vec::new();
+    for dir in inputs {
+        let Some(body) =
+            read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice::<Value>(&b).ok())
+        else {
+            continue;
+        };
+        let limits = (
+            body["run_to_failure"]["max_cycles"].as_f64(),
+            body["run_to_failure"]["wear_limit_um"].as_f64(),
+        );
+        for t in trajectories(dir)
+            .into_iter()
+            .filter(|t| t.dataset_key == key)
+        {
+            let case = body["cases"]
+                .as_array()
+                .and_then(|cs| {
+                    cs.iter()
+                        .find(|c| c["condition"].as_str() == Some(&t.condition))
+                })
+                .and_then(|c| c["case_toml"].as_str())
+                .map(str::to_owned);
+            jobs.push((dir.join(trajectory_rel(&t.condition)), t, case, limits));
+        }
+    }
+    let problems: Vec<String> = jobs
+        .par_iter()
+        .filter_map(|(path, t, case, limits)| {
+            let checked = (|| {
+                let case = case.as_deref().ok_or("no condition of that name in the description")?;
+                let case = crate::config::load_case(case, &[]).map_err(|e| e.to_string())?;
+                let model = crate::study::Model::from_case(&case).map_err(|e| e.to_string())?;
+                let (Some(max), Some(limit)) = *limits else {
+                    return Err("the description gives no run-to-failure limits".to_owned());
+                };
+                verify_trajectory(&model, max, limit * 1e-6, &t.trajectory)
+            })();
+            checked.err().map(|e| {
+                format!(
+                    "{}: {e}: the trajectory was edited or is not this design's (a damaged or edited shard)",
+                    path.display()
+                )
+            })
+        })
+        .collect();
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(DatasetError::Input(problems))
+    }
 }

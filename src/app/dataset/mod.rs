@@ -14,11 +14,14 @@
 //! and physical states computed and written), [`merge`] (shards joined), [`folder`] (the
 //! files of a dataset folder), [`jobs`] (the two jobs).
 
+pub mod claim;
 pub mod folder;
 pub mod jobs;
 pub mod merge;
 pub mod plan;
 pub mod request;
 pub mod run;
+pub mod state_files;
+pub mod verify;
 
 pub use jobs::{DatasetJob, DatasetMergeJob, DesignSource};

@@ -2,12 +2,13 @@
 //! signal chain of every condition and against the disk budget; the dataset's key and its
 //! description.
 
+use super::folder::MAX_DATASET_FILE_BYTES;
 use super::request::{DatasetError, DatasetRequest};
 use crate::checksum::sha256_hex;
 use crate::report::signals::chain_json;
 use crate::signals::files::units;
 use crate::signals::setup::{chain_of, ChainSetup};
-use crate::study::budget::RecordSize;
+use crate::study::budget::{trajectory_bytes, RecordSize};
 use crate::study::dataset::index::sensor_column_problems;
 use crate::study::dataset::plan::plan_of;
 use crate::study::dataset::{DatasetDesign, StateChoice};
@@ -82,8 +83,34 @@ pub fn record_size(d: &DatasetDesign, setups: &[ChainSetup]) -> RecordSize {
     )
 }
 
-/// Estimated bytes of the whole dataset (module docs of [`super::folder`]).
+/// Bytes of a dataset's files besides its records and trajectories: the indicator trends'
+/// figure (measured 92 kB at the default size) and table, the metadata and description
+/// (8 kB and 5 kB for one condition), the index's fixed part.
+const FIXED_BYTES: f64 = 256.0 * 1024.0;
+
+/// How many times the budget's nominal count of wear updates a trajectory may run: the
+/// threshold shortens the blocks when the wear runs faster than nominal
+/// (`tests/dataset_budget.rs` prints both counts).
+const TRAJECTORY_UPDATE_MARGIN: f64 = 2.0;
+
+/// Estimated bytes of the whole dataset (module docs of [`super::folder`]): every record
+/// (signals, CSV, labels), each condition's kept trajectory, and the fixed files.
 pub fn estimate_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
+    let trajectories: f64 = d
+        .conditions
+        .iter()
+        // At most what a folder keeps: a longer one is refused by its own check
+        // ([`trajectory_problems`]), after the run budget, which names its cost first.
+        .map(|c| {
+            (TRAJECTORY_UPDATE_MARGIN * trajectory_bytes(&c.case, d.max_cycles))
+                .min(MAX_DATASET_FILE_BYTES as f64)
+        })
+        .sum();
+    records_bytes(d, setups) + trajectories + FIXED_BYTES
+}
+
+/// Estimated bytes of the dataset's records: the largest record's files times the count.
+fn records_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
     let plan = plan_of(d);
     let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
     let per_state: f64 = setups
@@ -111,13 +138,46 @@ pub fn estimate_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
 
 /// Hash of everything the dataset is generated from.
 pub fn dataset_key(d: &DatasetDesign, path_bytes: &[u8]) -> String {
-    let mut text = d.text.clone();
-    for c in &d.conditions {
-        text.push_str(&toml::to_string(&c.case).unwrap_or_default());
+    let cases: Vec<String> = d
+        .conditions
+        .iter()
+        .map(|c| toml::to_string(&c.case).unwrap_or_default())
+        .collect();
+    key_of_parts(
+        &d.text,
+        &cases,
+        &sha256_hex(path_bytes),
+        env!("CARGO_PKG_VERSION"),
+    )
+}
+
+/// The dataset key of a design's text, its conditions' cases (as TOML), the SHA-256 of
+/// its transfer-path file and the program version.
+fn key_of_parts(design: &str, cases: &[String], path_sha256: &str, version: &str) -> String {
+    let mut text = design.to_owned();
+    for c in cases {
+        text.push_str(c);
     }
-    text.push_str(&sha256_hex(path_bytes));
-    text.push_str(env!("CARGO_PKG_VERSION"));
+    text.push_str(path_sha256);
+    text.push_str(version);
     sha256_hex(text.as_bytes())
+}
+
+/// The key a description's own fields give (its design, cases, transfer-path hash and
+/// version), `None` when one is missing: a description whose `dataset_key` is not this
+/// was edited (a merge refuses it).
+pub fn key_of_description(body: &Value) -> Option<String> {
+    let cases: Option<Vec<String>> = body["cases"]
+        .as_array()?
+        .iter()
+        .map(|c| c["case_toml"].as_str().map(str::to_owned))
+        .collect();
+    Some(key_of_parts(
+        body["design"].as_str()?,
+        &cases?,
+        body["transfer_path_sha256"].as_str()?,
+        body["version"].as_str()?,
+    ))
 }
 
 /// The dataset's description (`state/dataset.json`, the body of metadata.json).
@@ -139,6 +199,7 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
         "program": "gearwear",
         "version": env!("CARGO_PKG_VERSION"),
         "dataset_key": key,
+        "transfer_path_sha256": sha256_hex(&req.path_bytes),
         "design": d.text,
         "seed": d.seed,
         "records": plan.records(),
@@ -167,11 +228,35 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
     })
 }
 
+/// The conditions whose kept trajectory would exceed the largest file a dataset folder
+/// reads back ([`MAX_DATASET_FILE_BYTES`]): refused before any work (after the run
+/// budget), since a resume could never reuse it (`study::budget::trajectory_bytes`).
+pub(super) fn trajectory_problems(d: &DatasetDesign) -> Vec<String> {
+    let cap = MAX_DATASET_FILE_BYTES as f64;
+    d.conditions
+        .iter()
+        .filter_map(|c| {
+            let bytes = trajectory_bytes(&c.case, d.max_cycles);
+            (bytes > cap || bytes.is_nan()).then(|| {
+                format!(
+                    "condition `{}`: its run-to-failure trajectory would take about {:.3e} GiB in state/, more than the {} GiB a dataset folder keeps: lower `run_to_failure.max_cycles` = {}, or raise `wear.block_cycles` or `wear.threshold_um`, or lower `wear.points_per_profile`",
+                    c.name,
+                    bytes / 1024f64.powi(3),
+                    MAX_DATASET_FILE_BYTES >> 30,
+                    d.max_cycles
+                )
+            })
+        })
+        .collect()
+}
+
 /// A request checked before anything is written: the chain of every condition and the
 /// estimated size against the disk budget.
 pub struct Checked {
     pub(super) setups: Vec<ChainSetup>,
-    pub(super) estimated_bytes: f64,
+    /// Estimated bytes of the whole dataset ([`estimate_bytes`]), checked against the disk
+    /// budget.
+    pub estimated_bytes: f64,
     /// The longest record, for the run budget.
     pub record: RecordSize,
 }

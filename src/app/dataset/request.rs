@@ -52,4 +52,6 @@ pub struct DatasetRequest<'a> {
     pub shard: Shard,
     /// The formats and size of the dataset's figure.
     pub figures: FigureOutput,
+    /// Replace another design's dataset in the folder (else refused).
+    pub replace: bool,
 }

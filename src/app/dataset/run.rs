@@ -2,22 +2,24 @@
 //! `state/`, reused when present), then its physical states in parallel, each writing its
 //! records as soon as they are made; for an unsharded run, the index and metadata.
 
+use super::claim::claim_folder;
 use super::folder::{
     csv_rel, finished, is_file_in, make_folder, put, read_in, sidecar_rel,
-    stage_index_and_metadata, trajectory_rel, Missing, Sidecar, TrajectoryFile, DATASET_REL,
+    stage_index_and_metadata, trajectory_rel, Missing, TrajectoryFile, DATASET_REL,
 };
 use super::plan::{dataset_key, description, Checked};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
+use super::state_files::{state_files, StateJob};
+use super::verify::{kept_file_problem, os_seed, verify_states};
 use crate::app::observer::{Observer, Task};
-use crate::checksum::sha256_hex;
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
-use crate::signals::files::{record_parquet, record_table};
-use crate::signals::setup::ChainSetup;
 use crate::study::dataset::plan::{plan_of, Plan};
-use crate::study::dataset::records::{state_records, StateInputs};
 use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
-use crate::study::dataset::{DatasetDesign, StateChoice};
+use crate::study::dataset::verify::{
+    states_to_recompute, verify_trajectory, MAX_RECOMPUTED_STATES,
+};
+use crate::study::dataset::DatasetDesign;
 use crate::study::Model;
 use rayon::prelude::*;
 use serde_json::json;
@@ -48,15 +50,15 @@ pub fn run_dataset(
 
     let key = dataset_key(d, &req.path_bytes);
     let plan = plan_of(d);
+    let desc =
+        serde_json::to_vec_pretty(&description(req, &setups, &key)).map_err(anyhow::Error::from)?;
+    let prev = out.previous_state().clone();
+    claim_folder(&out, root, (&key, req.replace), &desc, &prev)?;
     for dir in ["signals", "records", "state", "csv"] {
         if dir != "csv" || d.csv {
             make_folder(root, dir).map_err(|e| DatasetError::Failed(e.into()))?;
         }
     }
-    let desc =
-        serde_json::to_vec_pretty(&description(req, &setups, &key)).map_err(anyhow::Error::from)?;
-    let prev = out.previous_state().clone();
-    put(root, DATASET_REL, &desc, &prev).map_err(|e| DatasetError::Failed(e.into()))?;
     let (shard_first, shard_step) = (req.shard.index - 1, req.shard.count);
     let state_count = plan.shard_state_count(req.shard);
     let shard_records = state_count * plan.realisations;
@@ -66,6 +68,22 @@ pub fn run_dataset(
         .par_iter()
         .map(|&c| trajectory(d, c, (root, &prev), &key).map(|t| (c, t)))
         .collect::<Result<_, DatasetError>>()?;
+    let job = StateJob {
+        req,
+        plan: &plan,
+        setups: &setups,
+        trajectories: &trajectories,
+        key: &key,
+    };
+    // Finished records are reused only when a sample of them recomputes bit for bit.
+    let sample: Vec<usize> = states_to_recompute(state_count, MAX_RECOMPUTED_STATES, os_seed())
+        .into_iter()
+        .map(|k| shard_first + k * shard_step)
+        .collect();
+    let problems = verify_states(&job, root, &sample);
+    if !problems.is_empty() {
+        return Err(DatasetError::Input(problems));
+    }
     let done = AtomicUsize::new(0);
     let reused = AtomicUsize::new(0);
     let task = Task::items("records", "records", shard_records);
@@ -75,16 +93,7 @@ pub fn run_dataset(
         .into_par_iter()
         .map(|k| shard_first + k * shard_step)
         .filter_map(|p| {
-            let r = one_state(
-                req,
-                &plan,
-                p,
-                &setups,
-                &trajectories,
-                (root, &prev),
-                &key,
-                &reused,
-            );
+            let r = one_state(&job, p, (root, &prev), &reused);
             let n = done.fetch_add(plan.realisations, Ordering::Relaxed) + plan.realisations;
             obs.advance(&task, n as f64, "");
             r.err().map(|e| format!("physical state {p}: {e:#}"))
@@ -125,12 +134,6 @@ fn trajectory(
 ) -> Result<Trajectory, DatasetError> {
     let cond = &d.conditions[c];
     let rel = trajectory_rel(&cond.name);
-    if let Some(t) = read_in(root, &rel)
-        .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
-        .filter(|t| t.dataset_key == key)
-    {
-        return Ok(t.trajectory);
-    }
     let model = Model::from_case(&cond.case).map_err(|e| {
         DatasetError::Input(
             e.0.iter()
@@ -138,6 +141,15 @@ fn trajectory(
                 .collect(),
         )
     })?;
+    if let Some(t) = read_in(root, &rel)
+        .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
+        .filter(|t| t.dataset_key == key)
+    {
+        // Kept trajectories are used only when the wear law recomputes them.
+        verify_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6, &t.trajectory)
+            .map_err(|e| kept_file_problem(root, &rel, &e))?;
+        return Ok(t.trajectory);
+    }
     let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6)
         .map_err(|e| anyhow::anyhow!("trajectory of condition `{}`: {e:#}", cond.name))?;
     let file = TrajectoryFile {
@@ -156,73 +168,25 @@ fn trajectory(
 }
 
 /// Compute and write the records of physical state `p` (unless all are finished).
-#[allow(clippy::too_many_arguments)]
 fn one_state(
-    req: &DatasetRequest,
-    plan: &Plan,
+    job: &StateJob,
     p: usize,
-    setups: &[ChainSetup],
-    trajectories: &BTreeMap<usize, Trajectory>,
     (root, prev): (&Path, &SetState),
-    key: &str,
     reused: &AtomicUsize,
 ) -> anyhow::Result<()> {
-    let d = req.design;
-    let ids: Vec<usize> = (0..plan.realisations)
-        .map(|r| plan.record_id(p, r))
+    let ids: Vec<usize> = (0..job.plan.realisations)
+        .map(|r| job.plan.record_id(p, r))
         .collect();
-    if ids.iter().all(|id| finished(root, *id, key).is_some()) {
+    if ids.iter().all(|id| finished(root, *id, job.key).is_some()) {
         reused.fetch_add(ids.len(), Ordering::Relaxed);
         return Ok(());
     }
-    let ix = plan.state_index(p);
-    let cond = &d.conditions[ix.condition];
-    let traj = &trajectories[&ix.condition];
-    let cycles = match &d.states {
-        StateChoice::Count(n) => traj.even_states(*n)[ix.state],
-        StateChoice::Cycles(c) => c[ix.state],
-    };
-    let mut case = cond.case.clone();
-    case.set_load_point(crate::config::case::LoadPoint {
-        input_speed_hz: d.speeds_hz[ix.speed],
-        load_torque_nm: d.torques_nm[ix.load],
-        ..case.load_point()
-    });
-    let model = Model::from_case(&case).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let setup = &setups[ix.condition];
-    let unit = setup.chain.acquisition.unit;
-    let inputs = StateInputs {
-        model: &model,
-        setup,
-        condition: cond,
-        trajectory: traj,
-        cycles,
-        wear_limit_um: d.wear_limit_um,
-        design_seed: d.seed,
-    };
-    state_records(&inputs, plan, p, ix, &mut |labels, rec| {
-        let id = labels.record_id;
-        let pq = record_parquet(&rec, unit, Some(&serde_json::to_value(&labels)?))?;
-        put(root, &labels.file, &pq, prev)?;
-        if d.csv {
-            put(
-                root,
-                &csv_rel(id),
-                &record_table(&rec, unit).to_csv()?,
-                prev,
-            )?;
+    state_files(job, p, &mut |f| {
+        put(root, &f.signal_rel, &f.signal, prev)?;
+        if let Some(csv) = &f.csv {
+            put(root, &csv_rel(f.id), csv, prev)?;
         }
-        let car = Sidecar {
-            dataset_key: key.to_owned(),
-            signal_sha256: sha256_hex(&pq),
-            labels,
-        };
-        put(
-            root,
-            &sidecar_rel(id),
-            &serde_json::to_vec_pretty(&car)?,
-            prev,
-        )?;
+        put(root, &sidecar_rel(f.id), &f.sidecar, prev)?;
         Ok(())
     })
 }

@@ -18,6 +18,9 @@ use std::collections::BTreeSet;
 pub const INCOMPLETE_MARKER: &str = "INCOMPLETE";
 /// First words of the marker (how gearwear recognises its own).
 const MARKER_TEXT: &str = "gearwear was interrupted while publishing";
+/// First words of the marker of a job that writes into the folder before it publishes
+/// ([`OutputDir::mark_incomplete`]).
+const WRITING_TEXT: &str = "gearwear is writing into this folder, or was interrupted";
 /// Prefix of the folder that keeps a run's results when they could not be published.
 pub const UNPUBLISHED_PREFIX: &str = "gearwear-unpublished-";
 
@@ -44,10 +47,25 @@ pub struct Manifest {
 }
 
 fn is_marker(b: &[u8]) -> bool {
-    b.starts_with(MARKER_TEXT.as_bytes())
+    b.starts_with(MARKER_TEXT.as_bytes()) || b.starts_with(WRITING_TEXT.as_bytes())
 }
 
 impl OutputDir {
+    /// Mark the folder `INCOMPLETE` now, for a job that writes files into it before it
+    /// publishes (a dataset's records and state files): the marker stays until this set
+    /// is published, so a run killed half-way leaves the folder marked. Refused (and
+    /// nothing written) when something other than gearwear's marker is at its name.
+    pub fn mark_incomplete(&self) -> Result<(), OutputError> {
+        check_replaceable(&self.root, INCOMPLETE_MARKER, Ours::Format(None, is_marker))?;
+        let text = format!(
+            "{WRITING_TEXT} (`gearwear {}`): the files here may be unfinished until it publishes its results. If no gearwear runs here, run the command again.\n",
+            self.command
+        );
+        self.root
+            .write_new(&self.staging, INCOMPLETE_MARKER, text.as_bytes())
+            .map(|_| ())
+    }
+
     /// Publish the staged files as the folder's new set; returns its manifest.
     pub fn publish(mut self) -> Result<Manifest, OutputError> {
         // 1. Every target must be free, or gearwear's own as recorded.

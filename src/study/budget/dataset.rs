@@ -103,3 +103,36 @@ pub fn estimate_dataset(
         },
     ])
 }
+
+/// Bytes of one number of a kept trajectory file (JSON): measured 22 with its separator
+/// (an update of the built-in case: 1168 numbers in 25.9 kB); 24 leaves margin.
+const TRAJECTORY_BYTES_PER_NUMBER: f64 = 24.0;
+
+/// Estimated bytes of the kept run-to-failure trajectory of a condition whose case is
+/// `case`, run to `max_cycles` (`state/trajectory_<condition>.json`): the dynamic wear
+/// study's nominal number of updates (it stops earlier at the wear limit; the threshold
+/// may shorten its blocks, `app::dataset::plan` adds the margin) of 4 G + 2 S_d + 48
+/// numbers each (wear and increment profiles; the load along the path of contact, about
+/// two samples a step over the period, measured 241 and 365 at 60 and 200 grid steps;
+/// the periodic state and the summary), plus 2 (z1 + z2) G per-tooth profiles when the
+/// teeth differ.
+pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
+    let mut case = case.clone();
+    case.wear.total_cycles = max_cycles;
+    let updates = estimate(
+        &case,
+        Job::Wear {
+            dynamic: true,
+            quasi_static: false,
+        },
+    )
+    .wear_updates_dynamic;
+    let grid = case.wear.points_per_profile as f64;
+    let s_dyn = super::evaluation::dynamic_steps_per_period(&case.numerics);
+    let teeth = if super::teeth::excitation_periods_of(&case) > 1 {
+        2.0 * (case.gear.teeth_pinion + case.gear.teeth_gear).max(0) as f64 * grid
+    } else {
+        0.0
+    };
+    updates * (4.0 * grid + 2.0 * s_dyn + 48.0 + teeth) * TRAJECTORY_BYTES_PER_NUMBER
+}

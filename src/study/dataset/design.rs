@@ -171,7 +171,7 @@ pub fn parse_design(
     read: &dyn Fn(&str) -> Result<String, String>,
 ) -> Result<DatasetDesign, DesignErrors> {
     let f: DesignFile =
-        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", e.message().trim())])?;
+        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", type_error(&e, text))])?;
     let key = |k: &str| format!("{name}: `{k}`");
     let (base, base_case) = base_case(&f, name, read)?;
     let mut p = Vec::new();
@@ -241,6 +241,44 @@ pub fn parse_design(
         conditions,
         text: text.to_owned(),
     })
+}
+
+/// A design that does not read: the parser's words, with the key they concern when the
+/// text is valid TOML (a value of the wrong type: `states = nan`), found from the
+/// error's place as `[section]` and key. Nothing else of the text is quoted (a file that
+/// is not a design at all must not be echoed).
+fn type_error(e: &toml::de::Error, text: &str) -> String {
+    let words = e.message().trim().chars().take(400).collect::<String>();
+    let key = e
+        .span()
+        .filter(|_| text.parse::<Table>().is_ok())
+        .and_then(|s| {
+            let before = text.get(..s.start.min(text.len()))?;
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            let line = text[line_start..].lines().next()?;
+            let key = line.split('=').next()?.trim();
+            let section = before[..line_start]
+                .lines()
+                .rev()
+                .map(str::trim)
+                .find(|l| l.starts_with('['))
+                .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim());
+            let plain = |k: &str| {
+                !k.is_empty()
+                    && k.len() <= 64
+                    && k.chars()
+                        .all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c))
+            };
+            let key = match section {
+                Some(sec) if plain(sec) => format!("{sec}.{key}"),
+                _ => key.to_owned(),
+            };
+            plain(&key).then_some(key)
+        });
+    match key {
+        Some(k) => format!("`{k}`: {words}"),
+        None => words,
+    }
 }
 
 /// The design's base case: the `case` file's TOML tree (the conditions merge into it)

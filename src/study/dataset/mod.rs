@@ -9,6 +9,7 @@ pub mod plan;
 pub mod records;
 pub mod trajectory;
 pub mod trends;
+pub mod verify;
 
 pub use design::{parse_design, Condition, DatasetDesign, StateChoice};
 pub use plan::{Plan, Shard};

@@ -48,9 +48,9 @@ fn increment(r: &UpdateRecord) -> WearIncrement {
 #[error("the wear limit was reached")]
 struct LimitReached;
 
-/// Run the trajectory of `model` (its case at its operating point) up to `max_cycles`
-/// or until the deepest wear reaches `limit_m`.
-pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::Result<Trajectory> {
+/// The model a condition's trajectory runs: its case with `wear.total_cycles` set to
+/// the design's `max_cycles` (warnings dropped: the dataset reports its own).
+pub fn trajectory_model(model: &Model, max_cycles: f64) -> anyhow::Result<Model> {
     let mut m2 = Model::from_case(&{
         let mut c = model.case.clone();
         c.wear.total_cycles = max_cycles;
@@ -58,6 +58,13 @@ pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::R
     })
     .map_err(|e| anyhow::anyhow!("{e}"))?;
     m2.warnings.clear();
+    Ok(m2)
+}
+
+/// Run the trajectory of `model` (its case at its operating point) up to `max_cycles`
+/// or until the deepest wear reaches `limit_m`.
+pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::Result<Trajectory> {
+    let m2 = trajectory_model(model, max_cycles)?;
     let mut last = WearRun::new(WearMode::Dynamic);
     let result = run_wear(&m2, WearRun::new(WearMode::Dynamic), &mut |r| {
         last = r.clone();
@@ -71,42 +78,53 @@ pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::R
         Err(e) if e.is::<LimitReached>() => last,
         Err(e) => return Err(e),
     };
-    let records = run.records;
-    let end = records.last().map_or(0.0, |r| r.wear.cycles);
-    // Failure inside the last block: where the deepest wear crossed the limit.
-    let failure_cycles = records.windows(2).find_map(|w| {
-        let (a, b) = (deepest_m(&w[0].wear), deepest_m(&w[1].wear));
-        (a < limit_m && b >= limit_m).then(|| {
-            // Per point the wear is linear in cycles within the block; the deepest point
-            // may change inside it, so bisect on the state itself.
-            let (mut lo, mut hi) = (w[0].wear.cycles, w[1].wear.cycles);
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                let mut s = w[0].wear.clone();
-                s.advance(&increment(&w[0]), mid - w[0].wear.cycles);
-                if deepest_m(&s) >= limit_m {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
-            }
-            hi
-        })
-    });
-    let failure_cycles = failure_cycles.or_else(|| {
-        records
-            .first()
-            .and_then(|r| (deepest_m(&r.wear) >= limit_m).then_some(0.0))
-    });
-    Ok(Trajectory {
-        stopped: run.stopped.map(|s| s.reason),
-        end_cycles: end,
-        failure_cycles,
-        records,
-    })
+    Ok(Trajectory::from_records(
+        run.records,
+        run.stopped.map(|s| s.reason),
+        limit_m,
+    ))
 }
 
 impl Trajectory {
+    /// The trajectory of the wear loop's `records` (and why it stopped early, if it did)
+    /// under the wear limit `limit_m`: its end and failure cycles derived from the
+    /// records (so a kept trajectory's derived fields can be checked by deriving them
+    /// again, `super::verify`).
+    pub fn from_records(records: Vec<UpdateRecord>, stopped: Option<String>, limit_m: f64) -> Self {
+        let end = records.last().map_or(0.0, |r| r.wear.cycles);
+        // Failure inside the last block: where the deepest wear crossed the limit.
+        let failure_cycles = records.windows(2).find_map(|w| {
+            let (a, b) = (deepest_m(&w[0].wear), deepest_m(&w[1].wear));
+            (a < limit_m && b >= limit_m).then(|| {
+                // Per point the wear is linear in cycles within the block; the deepest point
+                // may change inside it, so bisect on the state itself.
+                let (mut lo, mut hi) = (w[0].wear.cycles, w[1].wear.cycles);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    let mut s = w[0].wear.clone();
+                    s.advance(&increment(&w[0]), mid - w[0].wear.cycles);
+                    if deepest_m(&s) >= limit_m {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                hi
+            })
+        });
+        let failure_cycles = failure_cycles.or_else(|| {
+            records
+                .first()
+                .and_then(|r| (deepest_m(&r.wear) >= limit_m).then_some(0.0))
+        });
+        Trajectory {
+            stopped,
+            end_cycles: end,
+            failure_cycles,
+            records,
+        }
+    }
+
     /// The wear state at `cycles` (at most the trajectory's end; see the module docs).
     pub fn state_at(&self, cycles: f64) -> Option<WearState> {
         if cycles > self.end_cycles * (1.0 + 1e-12) || self.records.is_empty() {

@@ -1,0 +1,185 @@
+//! A dataset folder verified by recomputation (docs/RELIABILITY.md, "Datasets"): the
+//! finished records of a sample of physical states computed again from the design and
+//! compared with the files byte for byte, the kept trajectories recomputed by the wear
+//! law (`study::dataset::verify`), and every sidecar's identity checked against the
+//! design. A resumed run checks its shard's sample before it reuses anything
+//! ([`verify_states`]); [`verify_dataset`] checks a whole folder.
+
+use super::folder::{
+    csv_rel, existing_key, finished, matches_design, read_in, sidecar_rel, sidecars,
+    trajectory_rel, TrajectoryFile,
+};
+use super::plan::{check_dataset, dataset_key, description};
+use super::request::{DatasetError, DatasetRequest};
+use super::state_files::{state_files, StateJob};
+use crate::checksum::sha256_hex;
+use crate::study::dataset::plan::plan_of;
+use crate::study::dataset::verify::{states_to_recompute, verify_trajectory};
+use crate::study::Model;
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// A seed from the operating system's randomness (a forger cannot know which records a
+/// resume will recompute).
+pub fn os_seed() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    h.write_u64(0x6765_6172_7765_6172);
+    h.finish()
+}
+
+/// The refusal of a kept file that does not recompute: its path, what differs, and the
+/// way out.
+pub(super) fn kept_file_problem(root: &Path, rel: &str, what: &str) -> DatasetError {
+    DatasetError::Input(vec![format!(
+        "{}: {what}: the file was edited or is not this design's (delete it to recompute it)",
+        root.join(rel).display()
+    )])
+}
+
+/// Recompute the records of each physical state in `states` whose records are all
+/// finished in `root` and compare them with the files byte for byte (signal, CSV when
+/// the design writes it, sidecar with labels and indicators); unfinished states are
+/// left to the run. One message per record that differs or fails to recompute.
+pub(super) fn verify_states(job: &StateJob, root: &Path, states: &[usize]) -> Vec<String> {
+    states
+        .par_iter()
+        .flat_map_iter(|&p| {
+            let ids: Vec<usize> = (0..job.plan.realisations)
+                .map(|r| job.plan.record_id(p, r))
+                .collect();
+            if !ids.iter().all(|id| finished(root, *id, job.key).is_some()) {
+                return Vec::new();
+            }
+            let mut problems = Vec::new();
+            let r = state_files(job, p, &mut |f| {
+                let differs = |rel: &str, bytes: &[u8]| read_in(root, rel).as_deref() != Some(bytes);
+                let what = if differs(&f.signal_rel, &f.signal) {
+                    Some(("signal", f.signal_rel.clone()))
+                } else if f.csv.as_ref().is_some_and(|c| differs(&csv_rel(f.id), c)) {
+                    Some(("CSV", csv_rel(f.id)))
+                } else if differs(&sidecar_rel(f.id), &f.sidecar) {
+                    Some(("labels or indicators", sidecar_rel(f.id)))
+                } else {
+                    None
+                };
+                if let Some((what, rel)) = what {
+                    problems.push(format!(
+                        "{}: record {} recomputed from the design has another {what}: the record was edited or is not this design's (delete {} to recompute it)",
+                        root.join(&rel).display(),
+                        f.id,
+                        root.join(sidecar_rel(f.id)).display()
+                    ));
+                }
+                Ok(())
+            });
+            if let Err(e) = r {
+                problems.push(format!(
+                    "physical state {p}: its finished records cannot be recomputed ({e:#}): they are not this design's"
+                ));
+            }
+            problems
+        })
+        .collect()
+}
+
+/// What [`verify_dataset`] checked and found.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Verified {
+    /// Sidecars in the folder (whatever their state).
+    pub records_present: usize,
+    /// Physical states whose records were recomputed and compared.
+    pub states_recomputed: Vec<usize>,
+    /// Conditions whose kept trajectory the wear law recomputed.
+    pub trajectories_verified: usize,
+    /// Everything that is not what the design gives, one message each (empty: verified).
+    pub problems: Vec<String>,
+}
+
+/// Verify the dataset of `req` in `root` (module docs): every sidecar's identity, every
+/// kept trajectory, and the finished records of the first and last physical state and
+/// `sample - 2` others drawn by `seed` (`study::dataset::verify`), recomputed bit for
+/// bit. Refused (exit 2) when the design is invalid or the folder holds another design.
+pub fn verify_dataset(
+    req: &DatasetRequest,
+    root: &Path,
+    sample: usize,
+    seed: u64,
+) -> Result<Verified, DatasetError> {
+    let d = req.design;
+    let checked = check_dataset(req)?;
+    let key = dataset_key(d, &req.path_bytes);
+    match existing_key(root).map_err(|e| DatasetError::Input(vec![e]))? {
+        Some(k) if k == key => {}
+        _ => {
+            return Err(DatasetError::Input(vec![format!(
+                "{}: holds no dataset of this design",
+                root.display()
+            )]))
+        }
+    }
+    let plan = plan_of(d);
+    let body = description(req, &checked.setups, &key);
+    let mut v = Verified::default();
+    let mut trajectories = BTreeMap::new();
+    for (c, cond) in d.conditions.iter().enumerate() {
+        let rel = trajectory_rel(&cond.name);
+        let Some(t) = read_in(root, &rel)
+            .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
+            .filter(|t| t.dataset_key == key && t.condition == cond.name)
+        else {
+            v.problems.push(format!(
+                "{}: missing or unreadable",
+                root.join(&rel).display()
+            ));
+            continue;
+        };
+        let model = Model::from_case(&cond.case).map_err(|e| anyhow::anyhow!("{e}"))?;
+        match verify_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6, &t.trajectory) {
+            Ok(()) => {
+                v.trajectories_verified += 1;
+                trajectories.insert(c, t.trajectory);
+            }
+            Err(e) => v
+                .problems
+                .push(format!("{}: {e}", root.join(&rel).display())),
+        }
+    }
+    let cars = sidecars(root);
+    v.records_present = cars.len();
+    for s in &cars {
+        let id = s.labels.record_id;
+        let problem = if s.dataset_key != key {
+            Some("another design's record")
+        } else if id >= plan.records() {
+            Some("its id is beyond the design's records")
+        } else if !matches_design(&s.labels, &body) {
+            Some("its labels are not those the design gives its id")
+        } else if read_in(root, &s.labels.file).map(|b| sha256_hex(&b))
+            != Some(s.signal_sha256.clone())
+        {
+            Some("its signal file is missing or not the one it names")
+        } else {
+            None
+        };
+        if let Some(p) = problem {
+            v.problems
+                .push(format!("{}: {p}", root.join(sidecar_rel(id)).display()));
+        }
+    }
+    let job = StateJob {
+        req,
+        plan: &plan,
+        setups: &checked.setups,
+        trajectories: &trajectories,
+        key: &key,
+    };
+    v.states_recomputed = states_to_recompute(plan.physical_states(), sample, seed)
+        .into_iter()
+        .filter(|p| trajectories.contains_key(&plan.state_index(*p).condition))
+        .collect();
+    v.problems
+        .extend(verify_states(&job, root, &v.states_recomputed));
+    Ok(v)
+}

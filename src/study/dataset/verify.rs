@@ -1,0 +1,108 @@
+//! A dataset's kept files checked by recomputation (docs/RELIABILITY.md, "Datasets"):
+//! a run-to-failure trajectory against the wear law that made it, and which physical
+//! states of a folder are recomputed bit for bit, with the chance that the sample finds
+//! a forged one.
+//!
+//! Checksums cannot stop someone who recomputes them; recomputation can. A trajectory's
+//! updates are recomputed from the update before each (`study::wear_check`, the same
+//! check as a wear checkpoint's: monotone, finite, non-negative wear, each profile the
+//! previous one advanced by its Archard increment at the recorded load and cycles), its
+//! end recomputed (the loop must stop where the trajectory stops), and its failure and
+//! end cycles derived again from the updates. Records are too many to recompute on every
+//! resume: the first and last physical state and a random sample of the others are.
+
+use super::trajectory::{deepest_m, trajectory_model, Trajectory};
+use crate::study::wear_check::verify_resumable;
+use crate::study::wear_loop::{next_update, Next, WearMode, WearRun};
+use crate::study::Model;
+
+/// Most physical states recomputed when a dataset is resumed or verified (the first, the
+/// last, and a random sample of the others).
+pub const MAX_RECOMPUTED_STATES: usize = 8;
+
+/// Which of `n` physical states to recompute: all of at most `k`, else the first, the
+/// last and `k - 2` others drawn uniformly without replacement by a SplitMix64 stream of
+/// `seed` (the job seeds it from the operating system, so a forger cannot know it).
+/// Ascending.
+pub fn states_to_recompute(n: usize, k: usize, seed: u64) -> Vec<usize> {
+    if n <= k {
+        return (0..n).collect();
+    }
+    let mut picked: std::collections::BTreeSet<usize> = [0, n - 1].into_iter().collect();
+    let mut z = seed;
+    while picked.len() < k.max(2) {
+        z = z.wrapping_add(1);
+        // Modulo bias is below n / 2^64 (n is at most 2^53).
+        picked.insert(1 + (super::plan::splitmix64(z) % (n as u64 - 2)) as usize);
+    }
+    picked.into_iter().collect()
+}
+
+/// Probability that [`states_to_recompute`] with `k` of `n` states recomputes at least one
+/// of `m` forged states lying among the `n - 2` others (the first and last are always
+/// recomputed): one minus the chance that all `k - 2` drawn states are genuine,
+/// hypergeometric: `1 - C(n-2-m, k-2) / C(n-2, k-2)` = `1 - prod_{i<k-2} (n-2-m-i) /
+/// (n-2-i)`; 1 when `n <= k` (every state recomputed), 0 when `m` is 0.
+pub fn detection_probability(n: usize, m: usize, k: usize) -> f64 {
+    if m == 0 {
+        return 0.0;
+    }
+    if n <= k {
+        return 1.0;
+    }
+    let (others, draws) = ((n - 2) as f64, k.saturating_sub(2));
+    let mut miss = 1.0;
+    for i in 0..draws {
+        let i = i as f64;
+        miss *= ((others - m as f64 - i) / (others - i)).max(0.0);
+    }
+    1.0 - miss
+}
+
+/// Check the kept trajectory `t` of a condition whose case gives `model` (at the case's
+/// own operating point) against the wear law (module docs): under `max_cycles` and the
+/// wear limit `limit_m`, the trajectory the dataset job would run. The error says what
+/// differs.
+pub fn verify_trajectory(
+    model: &Model,
+    max_cycles: f64,
+    limit_m: f64,
+    t: &Trajectory,
+) -> Result<(), String> {
+    let m2 = trajectory_model(model, max_cycles).map_err(|e| e.to_string())?;
+    let mut run = WearRun::new(WearMode::Dynamic);
+    run.records = t.records.clone();
+    verify_resumable(&run, &m2).map_err(|e| e.replace("line ", "record line "))?;
+    let n = t.records.len();
+    if let Some(i) = t.records[..n - 1]
+        .iter()
+        .position(|r| deepest_m(&r.wear) >= limit_m)
+    {
+        return Err(format!(
+            "update {i} already reaches the wear limit, yet the trajectory goes on: the run stops there"
+        ));
+    }
+    let last = &t.records[n - 1];
+    let stopped = if deepest_m(&last.wear) >= limit_m {
+        None
+    } else {
+        match next_update(&m2, WearMode::Dynamic, Some(last)) {
+            Ok(Next::Finished) => None,
+            Ok(Next::Stop(s)) => Some(s.reason),
+            Ok(Next::Record(_)) | Err(_) => {
+                return Err(format!(
+                    "it ends at {} cycles, below the wear limit and before `run_to_failure.max_cycles` = {max_cycles}, where the wear loop goes on: cut short",
+                    last.wear.cycles
+                ))
+            }
+        }
+    };
+    let again = Trajectory::from_records(t.records.clone(), stopped, limit_m);
+    if again != *t {
+        return Err(format!(
+            "its end ({} cycles, failure {:?}, stopped {:?}) is not what its updates give ({} cycles, failure {:?}, stopped {:?})",
+            t.end_cycles, t.failure_cycles, t.stopped.is_some(), again.end_cycles, again.failure_cycles, again.stopped.is_some()
+        ));
+    }
+    Ok(())
+}
