@@ -4,10 +4,13 @@
 use super::observer::Observer;
 use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
+use crate::report::stiffness_helical::helical_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
+use crate::study::helical::HelicalModel;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -33,10 +36,31 @@ impl Job for StiffnessJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
+        if self.case.gear.helix_angle_deg != 0.0 {
+            return self.run_helical(figures, observer);
+        }
         let model = build_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let artifacts = stiffness_artifacts(&model).with_figure_output(figures);
+        publish::publish(out, artifacts, Some(&meta), observer)
+    }
+}
+
+impl StiffnessJob {
+    /// A helical case: the slice model (`study::helical`) instead of the planar model.
+    fn run_helical(
+        &self,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        let model = HelicalModel::from_case(&self.case)?;
+        for w in &model.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::new(self.name(), &self.case);
+        let artifacts = helical_stiffness_artifacts(&model).with_figure_output(figures);
         publish::publish(out, artifacts, Some(&meta), observer)
     }
 }

@@ -13,7 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
-pub use super::gear::GearSection;
+pub use super::gear::{GearSection, HelixHand};
 pub use super::lumped::{BodyValues, DynamicsSection};
 pub use super::operating::{
     LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
@@ -150,6 +150,19 @@ pub struct StiffnessSection {
     pub allow_fillet_extrapolation: bool,
     /// Samples of the mesh-stiffness table over one mesh period.
     pub table_points_per_mesh_period: i64,
+    /// Slices N across the face of a helical pair (docs/MODEL.md section 11); unused by a
+    /// spur pair.
+    #[serde(skip_serializing_if = "is_default_slices")]
+    pub slices: i64,
+}
+
+/// Default slice count of a helical pair: the peak-to-peak mesh stiffness within 1 % of
+/// its N -> infinity limit needs N of about 300 (docs/MODEL.md section 11).
+pub const DEFAULT_SLICES: i64 = 400;
+
+/// The default slice count: left out of a case's serialisation (spur cases unchanged).
+fn is_default_slices(n: &i64) -> bool {
+    *n == DEFAULT_SLICES
 }
 
 /// Where the fillet-foundation formula's root half angle theta_f (and its root
@@ -172,6 +185,7 @@ impl Default for StiffnessSection {
             fillet_root_angle: FilletRootAngle::FilletJunction,
             allow_fillet_extrapolation: false,
             table_points_per_mesh_period: 400,
+            slices: DEFAULT_SLICES,
         }
     }
 }

@@ -37,6 +37,37 @@ pub struct GearSection {
     /// Rack-cutter tip radius, in modules (ISO 53 profile A: 0.38): the root fillet, the
     /// undercut check and Sainsot's theta_f.
     pub tool_tip_radius_coefficient: f64,
+    /// Helix angle beta at the reference cylinder, deg; 0 (the default) is a spur pair. A
+    /// helical case reads the keys above as the normal section (docs/MODEL.md section 11).
+    #[serde(skip_serializing_if = "is_spur")]
+    pub helix_angle_deg: f64,
+    /// Hand of the pinion's helix (the gear takes the other); ignored at 0 deg.
+    #[serde(skip_serializing_if = "HelixHand::is_right")]
+    pub helix_hand_pinion: HelixHand,
+}
+
+/// A helix angle of 0: left out of a case's serialisation, so spur cases write what they
+/// wrote before helical pairs existed.
+fn is_spur(helix_angle_deg: &f64) -> bool {
+    *helix_angle_deg == 0.0
+}
+
+/// Hand of a helix (`gear.helix_hand_pinion`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum HelixHand {
+    /// Left-hand helix.
+    Left,
+    /// Right-hand helix (a right-handed screw); the default.
+    #[default]
+    Right,
+}
+
+impl HelixHand {
+    /// The default hand: left out of a case's serialisation.
+    fn is_right(&self) -> bool {
+        *self == HelixHand::Right
+    }
 }
 
 impl GearSection {
@@ -82,6 +113,8 @@ impl Default for GearSection {
             hub_bore_radius_gear_mm: Derivable::Given(14.0),
             // ISO 53 profile A rack tip radius 0.38 m.
             tool_tip_radius_coefficient: 0.38,
+            helix_angle_deg: 0.0,
+            helix_hand_pinion: HelixHand::Right,
         }
     }
 }

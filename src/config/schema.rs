@@ -43,6 +43,16 @@ impl Range {
         }
     }
 
+    /// [lo, hi).
+    pub const fn below(lo: f64, hi: f64) -> Self {
+        Self {
+            lo,
+            hi,
+            open_lo: false,
+            open_hi: true,
+        }
+    }
+
     /// (lo, hi).
     pub const fn open(lo: f64, hi: f64) -> Self {
         Self {
@@ -198,6 +208,10 @@ pub const KEYS: &[KeySpec] = &[
       "As for the pinion."),
     k("gear.tool_tip_radius_coefficient", "-", Num(Range::closed(0.0, 0.6)), "Rack-cutter tip radius / m: the root fillet, the undercut check and Sainsot's theta_f (ISO 53 profile A: 0.38).",
       "ISO 53 racks use 0.25-0.4; a larger radius no longer fits the rack's tip for usual dedendums."),
+    k("gear.helix_angle_deg", "deg", Num(Range::below(0.0, 45.0)), "Helix angle beta at the reference cylinder; 0 (default) is a spur pair. A helical pair reads the other `gear` keys as the normal section (module m_n, pressure angle alpha_n, shifts x_n); only `gearwear stiffness` takes it yet (the dynamics, wear and signal studies refuse it).",
+      "Parallel-axis helical gears run up to about 45 deg; ISO 6336's helical stiffness is not made for more."),
+    k("gear.helix_hand_pinion", "-", Choice(&["left", "right"]), "Hand of the pinion's helix; the gear takes the other. Ignored at a helix angle of 0.",
+      "-"),
     k("materials.youngs_modulus_pinion_gpa", "GPa", Num(Range::closed(1.0, 1000.0)), "Pinion Young's modulus (paper: 205 GPa).",
       "Engineering polymers (~1-3 GPa) to cemented carbide (~650 GPa)."),
     k("materials.poisson_ratio_pinion", "-", Num(Range::open(0.0, 0.5)), "Pinion Poisson's ratio (paper: 0.3).",
@@ -274,6 +288,8 @@ pub const KEYS: &[KeySpec] = &[
       "-"),
     k("stiffness.table_points_per_mesh_period", "-", Int(16, 100_000), "Samples of the mesh-stiffness table over one mesh period (cubic interpolation in between).",
       "16 points resolve the curve to ~1e-4; beyond 1e5 only round-off changes."),
+    k("stiffness.slices", "-", Int(1, 10_000), "Slices N across the face of a helical pair, each a transverse spur slice of width b/N staggered by y tan(beta_b) (default 400: the peak-to-peak mesh stiffness within 1 % of its N -> infinity limit needs about 300). Unused by a spur pair.",
+      "One slice is the transverse pair unstaggered; 10 000 slices of a 1 m face are 0.1 mm wide."),
     k("contact.load_sharing", "-", Choice(&["auto", "pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero), by pair stiffness and deflection, or auto: Pedrero for identical, perfect teeth of contact ratio between 1 and 2 (the paper's case), by stiffness otherwise (per-tooth inputs, higher contact ratios). Give \"stiffness\" to compare cases with and without per-tooth inputs under one law.",
       "-"),
     k("friction.model", "-", Choice(&["xu2007", "constant", "none"]), "Friction coefficient: Xu et al. (2007) regression (paper eq. 8-9), a constant, or none.",

@@ -130,6 +130,10 @@ impl StageSpec {
             tool_tip_radius_coefficient: self
                 .tool_tip_radius_coefficient
                 .unwrap_or(base.tool_tip_radius_coefficient),
+            // A stage has no helix key: it is the case's (a helical case is refused by
+            // every study of the dynamics, trains included).
+            helix_angle_deg: base.helix_angle_deg,
+            helix_hand_pinion: base.helix_hand_pinion,
         }
     }
 

@@ -29,6 +29,7 @@ fn tr_example_1() -> HelicalPair {
         hub_bore_radius_pinion_mm: Derivable::Derived,
         hub_bore_radius_gear_mm: Derivable::Derived,
         tool_tip_radius_coefficient: 0.39,
+        ..GearSection::default()
     };
     let h = HelixSpec {
         helix_angle_deg: 15.8,

@@ -21,6 +21,7 @@ pub mod run_report;
 pub mod runup;
 pub mod signals;
 pub mod stiffness;
+pub mod stiffness_helical;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;

@@ -161,7 +161,11 @@ pub fn iso6336_json(model: &Model) -> serde_json::Value {
 
 /// The pair's geometry, mm and deg.
 pub fn geometry_json(model: &Model) -> serde_json::Value {
-    let p = &model.pair;
+    geometry_of_pair(&model.pair)
+}
+
+/// A pair's geometry (for a helical pair its transverse section), mm and deg.
+pub fn geometry_of_pair(p: &crate::geometry::GearPair) -> serde_json::Value {
     json!({
         "base_radius_mm": [p.pinion.base_radius_m * 1e3, p.gear.base_radius_m * 1e3],
         "tip_radius_mm": [p.pinion.tip_radius_m * 1e3, p.gear.tip_radius_m * 1e3],

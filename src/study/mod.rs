@@ -4,6 +4,7 @@
 pub mod budget;
 pub mod dataset;
 pub mod domain;
+pub mod helical;
 pub mod model;
 pub mod model_error;
 pub mod modes;

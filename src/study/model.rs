@@ -119,11 +119,24 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
     )
 }
 
+/// Why a helical case cannot be modelled here: the model is planar (rotation and lateral
+/// motion of spur pairs); a helical pair's axial force and tilting moments have no degrees
+/// of freedom yet. Every study built on the model (dynamics, wear, signals, datasets,
+/// sweeps, calibration, prognostics) refuses it rather than give a spur result.
+fn helical_refusal(helix_angle_deg: f64) -> String {
+    format!(
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: helical dynamics (axial and tilting motion) is not yet built, so this study would give a spur result; only `gearwear stiffness` takes helical pairs (set the angle to 0 for a spur pair)"
+    )
+}
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
     /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        if case.gear.helix_angle_deg != 0.0 {
+            return Err(ModelError(vec![helical_refusal(case.gear.helix_angle_deg)]));
+        }
         if !case.stage.is_empty() {
             return Self::train_from_case(case);
         }

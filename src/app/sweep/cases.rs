@@ -82,6 +82,25 @@ pub fn resolve(
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
+    // A helical case has no dynamic model yet (`study::Model::from_case` refuses it):
+    // refused here, before any case runs, rather than as failed cases.
+    let helical: Vec<Problem> = planned
+        .iter()
+        .filter(|p| p.case.gear.helix_angle_deg != 0.0)
+        .filter_map(|p| {
+            let e = Model::from_case(&p.case).err()?;
+            let first = e.0.into_iter().next()?;
+            Some(Problem::new(first).in_context(&format!(
+                "case {} ({}): ",
+                p.id,
+                describe(plan, p)
+            )))
+        })
+        .take(10)
+        .collect();
+    if !helical.is_empty() {
+        return Err(JobError::Input(helical));
+    }
     // Each case against the budget (the number of cases is the user's explicit choice).
     let over: Vec<Problem> = planned
         .iter()

@@ -1,0 +1,72 @@
+//! The model objects of a helical case for `gearwear stiffness`: the helical pair (its
+//! transverse section read from the case's normal section), the slice mesh stiffness, and
+//! the transverse section as a spur pair of the full face width for comparison
+//! (docs/MODEL.md section 11). Helical dynamics does not exist yet: `Model::from_case`
+//! refuses a helical case.
+
+use super::model::ModelError;
+use crate::config::case::{Case, GearSection, HelixHand};
+use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
+use crate::stiffness::helical::SliceMeshStiffness;
+use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
+use crate::stiffness::potential_energy::ElasticPair;
+
+/// A helical case's stiffness model, built once.
+#[derive(Debug, Clone)]
+pub struct HelicalModel {
+    /// The validated case.
+    pub case: Case,
+    /// The slice model (it holds the helical pair).
+    pub slices: SliceMeshStiffness,
+    /// The transverse section as a spur pair of face width b (no stagger, Hertz on a line
+    /// parallel to the axis): what the pair would be without its helix.
+    pub spur_transverse: MeshStiffness,
+    /// Warnings of the geometry and the stiffness, for the user.
+    pub warnings: Vec<String>,
+}
+
+/// The case's helix.
+pub fn helix_of(g: &GearSection) -> HelixSpec {
+    HelixSpec {
+        helix_angle_deg: g.helix_angle_deg,
+        hand_pinion: match g.helix_hand_pinion {
+            HelixHand::Left => Hand::Left,
+            HelixHand::Right => Hand::Right,
+        },
+    }
+}
+
+impl HelicalModel {
+    /// Build the pair, the slice model with `stiffness.slices` slices and the spur
+    /// comparison. The fillet convention is the spur model's (`study::Model`): the
+    /// built-in tooth form's theta_f extrapolation exemption holds for its normal section.
+    pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        let pair = HelicalPair::from_case(&case.gear, &helix_of(&case.gear))
+            .map_err(|e| ModelError(e.0))?;
+        let elastic = ElasticPair::from_case(&case.materials);
+        let fillet = FilletSettings::from_case(&case.stiffness).map(|mut s| {
+            s.allow_theta_f_extrapolation = case.gear.same_tooth_form(&GearSection::default());
+            s
+        });
+        let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
+        let slices = usize::try_from(case.stiffness.slices).unwrap_or(0);
+        let model = SliceMeshStiffness::new(&pair, &elastic, slices, n_table, fillet)
+            .map_err(|e| ModelError(e.0))?;
+        let spur_transverse =
+            MeshStiffness::with_fillet(&pair.transverse, &elastic, n_table, fillet)
+                .map_err(|e| ModelError(e.0))?;
+        let mut warnings = pair.transverse.warnings.clone();
+        warnings.extend(spur_transverse.warnings().iter().cloned());
+        Ok(Self {
+            case: case.clone(),
+            slices: model,
+            spur_transverse,
+            warnings,
+        })
+    }
+
+    /// The helical pair.
+    pub fn pair(&self) -> &HelicalPair {
+        self.slices.pair()
+    }
+}
