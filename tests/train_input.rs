@@ -58,8 +58,18 @@ fn a_centre_distance_the_stage_cannot_meet_names_the_stage_and_its_key() {
 fn a_stage_key_out_of_range_or_unknown_is_refused() {
     refused(
         &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}bearing_stiffness_gear_n_per_m = 1e3\n"),
-        &["`stage.bearing_stiffness_gear_n_per_m` = 1000", "[10000, 1e12]"],
+        &[
+            "`stage.bearing_stiffness_gear_n_per_m` = 1000",
+            "[10000, 1e12]",
+            "(stage 2)",
+        ],
     );
+    // The first stage is stage 1, as in the other stage messages.
+    let msg = refused(
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\nbearing_stiffness_gear_n_per_m = 1e3\n{SECOND}"),
+        &["`stage.bearing_stiffness_gear_n_per_m` = 1000", "(stage 1)"],
+    );
+    assert!(!msg.contains("(stage 0)"), "{msg}");
     refused(
         &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}bogus = 1\n"),
         &["unknown key `stage.bogus`"],

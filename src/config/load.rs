@@ -158,7 +158,10 @@ fn check_table_array(section: &str, value: &mut Value, problems: &mut Vec<String
             ));
             continue;
         };
-        check_table(section, table, &format!(" ({section} {i})"), problems);
+        // Stages count from 1, as every other stage message does; faults from 0, as
+        // their other messages (and the teeth) do.
+        let shown = if section == "stage" { i + 1 } else { i };
+        check_table(section, table, &format!(" ({section} {shown})"), problems);
         let required: &[&str] = match section {
             "fault" => &["kind", "gear", "tooth"],
             _ => &[],
