@@ -14,11 +14,19 @@ fn stderr(o: &std::process::Output) -> String {
 /// A square wave, 3 s at 20 N m then 1 s at 80 N m, ten periods, at 1500 rpm (25 Hz),
 /// sampled every 0.5 s so that the switches fall on samples.
 fn square_wave() -> String {
-    let mut t = String::from("time_s,torque_nm,input_speed_rpm,oil_temp_c\n");
-    for i in 0..=80 {
-        let s = 0.5 * i as f64;
-        let q = if s % 4.0 < 3.0 { 20 } else { 80 };
-        t.push_str(&format!("{s},{q},1500,40\n"));
+    sampled(
+        "time_s,torque_nm,input_speed_rpm,oil_temp_c",
+        80,
+        |i| if (0.5 * i as f64) % 4.0 < 3.0 { 20 } else { 80 },
+        "1500,40",
+    )
+}
+
+/// A history sampled every 0.5 s, samples 0 to `last`: time, `torque(i)`, then `rest`.
+fn sampled(header: &str, last: usize, torque: impl Fn(usize) -> i32, rest: &str) -> String {
+    let mut t = format!("{header}\n");
+    for i in 0..=last {
+        t.push_str(&format!("{},{},{rest}\n", 0.5 * i as f64, torque(i)));
     }
     t
 }
@@ -166,17 +174,12 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
 /// 100 s at 20 N m and 25 Hz, sampled every 0.5 s and held, with one held sample at
 /// 80 N m and one at 50 N m: 12.5 of the 2500 revolutions (0.5 %) at each transient.
 fn history_with_two_transients() -> String {
-    let mut t = String::from("time_s,torque_nm,input_speed_hz\n");
-    for i in 0..=200 {
-        let s = 0.5 * i as f64;
-        let q = match i {
-            20 => 80,
-            100 => 50,
-            _ => 20,
-        };
-        t.push_str(&format!("{s},{q},25\n"));
-    }
-    t
+    let torque = |i| match i {
+        20 => 80,
+        100 => 50,
+        _ => 20,
+    };
+    sampled("time_s,torque_nm,input_speed_hz", 200, torque, "25")
 }
 
 #[test]

@@ -313,6 +313,22 @@ impl TrainMesh<'_> {
         }
     }
 
+    /// The resultant of the pairs' friction forces: their sum F_f (N, on the pinion along
+    /// +e) and its moments about the pinion's and the gear's centres, sum(rho1_i F_f,i) and
+    /// sum(rho2_i F_f,i) (N m; paper eq. (1), the friction terms of the rotations). Summed
+    /// pair by pair in one order, so both force paths give the same bits.
+    #[inline]
+    pub(crate) fn friction_resultant(&self, ms: &MeshState) -> [f64; 3] {
+        let (mut f_sum, mut m_p, mut m_g) = (0.0, 0.0, 0.0);
+        for i in 0..ms.n_pairs {
+            let f = ms.friction_n[i];
+            f_sum += f;
+            m_p += ms.rho1_m[i] * f;
+            m_g += self.parts.pair.rho_gear(ms.rho1_m[i]) * f;
+        }
+        [f_sum, m_p, m_g]
+    }
+
     /// Adds the generalised forces of the mesh (normal force and friction) for a mesh
     /// state to `forces` (one entry per coordinate).
     #[inline]
@@ -321,15 +337,7 @@ impl TrainMesh<'_> {
         for (i, gi) in &g.gradient {
             forces[*i] += -ms.force_n * gi;
         }
-        let mut f_sum = 0.0;
-        let mut m_p = 0.0;
-        let mut m_g = 0.0;
-        for i in 0..ms.n_pairs {
-            let f = ms.friction_n[i];
-            f_sum += f;
-            m_p += ms.rho1_m[i] * f;
-            m_g += self.parts.pair.rho_gear(ms.rho1_m[i]) * f;
-        }
+        let [f_sum, m_p, m_g] = self.friction_resultant(ms);
         // Friction along e on the pinion, opposite on the gear.
         let [ex, ey] = g.tangent;
         if let Some(x) = g.lateral[0] {

@@ -80,13 +80,7 @@ impl PairParts {
     #[inline]
     fn mesh_forces(&self, mesh: &super::TrainMesh, ms: &MeshState) -> SVector<f64, 8> {
         let mut f = -ms.force_n * self.gradient;
-        let (mut f_sum, mut m_p, mut m_g) = (0.0, 0.0, 0.0);
-        for i in 0..ms.n_pairs {
-            let fi = ms.friction_n[i];
-            f_sum += fi;
-            m_p += ms.rho1_m[i] * fi;
-            m_g += mesh.parts.pair.rho_gear(ms.rho1_m[i]) * fi;
-        }
+        let [f_sum, m_p, m_g] = mesh.friction_resultant(ms);
         let [ex, ey] = self.tangent;
         let [xp, xg] = self.lateral;
         f[xp] += f_sum * ex;
