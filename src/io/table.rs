@@ -70,6 +70,13 @@ impl Table {
     }
 }
 
+/// The first name a CSV header repeats (compared after trimming), if any. A reader that
+/// looks its columns up by name would otherwise take the first of the two silently.
+pub fn repeated_column<'a>(names: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let mut seen = std::collections::HashSet::new();
+    names.into_iter().map(str::trim).find(|n| !seen.insert(*n))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
