@@ -106,9 +106,10 @@ fn problems_of(s: &LoadSpectrumSection, label: &dyn Fn(usize) -> String) -> Vec<
                 ));
             }
         }
-        if !(b.share.is_finite() && (0.0..=1.0).contains(&b.share)) {
+        // Range::contains refuses subnormal numbers, as for every key of a case.
+        if !Range::closed(0.0, 1.0).contains(b.share) {
             p.push(format!(
-                "{}: `share` = {} is invalid: expected a number in [0, 1] (a share of the load cycles)",
+                "{}: `share` = {} is invalid: expected a number in [0, 1], not subnormal (a share of the load cycles)",
                 label(i),
                 number(b.share)
             ));
@@ -367,9 +368,9 @@ fn convert(raw: &[RawBin], problems: &mut Vec<String>) -> Option<Vec<SpectrumBin
             ));
         }
         if let Weight::Hours(h) = b.weight {
-            if !(h.is_finite() && h >= 0.0) {
+            if !Range::closed(0.0, f64::MAX).contains(h) {
                 problems.push(format!(
-                    "{}: `hours` = {} is invalid: expected a finite number >= 0 (time at the bin)",
+                    "{}: `hours` = {} is invalid: expected a finite number >= 0, not subnormal (time at the bin)",
                     b.origin,
                     number(h)
                 ));

@@ -66,8 +66,9 @@ pub(super) fn normalise(path: &str, v: &mut Value, valid: Valid) -> Result<(), S
         },
         Valid::Int(..) => match v {
             Value::Integer(_) => {}
-            // 25.0 is the whole number 25; 2^53 bounds the floats that are exact integers.
-            Value::Float(x) if x.fract() == 0.0 && x.abs() < 9.0e15 => {
+            // 25.0 is the whole number 25; up to 2^53 (inclusive) every whole float is
+            // the integer it reads as, so the largest seed written as a float is accepted.
+            Value::Float(x) if x.fract() == 0.0 && x.abs() <= 9_007_199_254_740_992.0 => {
                 *v = Value::Integer(*x as i64)
             }
             Value::Float(_) => {}

@@ -38,6 +38,13 @@ fn whole_numbers_written_with_a_decimal_point_are_accepted() {
         e.contains("gear.teeth_pinion") && e.contains("whole number"),
         "{e}"
     );
+    // The inclusive upper end of a range, 2^53, written as a float (as a JSON or Python
+    // writer may give it) is the whole number it says.
+    let c = load_case("", &["signals.noise_seed=9.007199254740992e15".into()]).unwrap();
+    assert_eq!(c.signals.noise_seed, 1i64 << 53);
+    // 2^53 + 2, the next float: out of the range, refused by the range, not by its form.
+    let e = err("", &["signals.noise_seed=9.007199254740994e15"]);
+    assert!(e.contains("signals.noise_seed"), "{e}");
 }
 
 #[test]

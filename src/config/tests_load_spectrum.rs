@@ -156,6 +156,19 @@ fn bad_spectra_name_the_bin_the_key_and_the_range() {
             "{bin}: {e}"
         );
     }
+    // A subnormal share or time (the shares still sum to 1 exactly): refused as
+    // subnormal values are for every key of a case; the smallest normal share is not.
+    for (w, want) in [("share", "`share` = "), ("hours", "`hours` = ")] {
+        let bins = |tiny: &str| {
+            format!("[load_spectrum]\nbins = [{{torque_nm = 60, input_speed_hz = 30, {w} = 1}}, {{torque_nm = 80, input_speed_hz = 30, {w} = {tiny}}}]\n")
+        };
+        let e = err(&bins("5e-324"));
+        assert!(
+            e.contains("bin 2") && e.contains(want) && e.contains("subnormal"),
+            "{e}"
+        );
+        assert!(load_case(&bins("2.2250738585072014e-308"), &[]).is_ok());
+    }
     // 45 Hz x 30 = 1350 Hz is out of range; 30 x 30 = 900 Hz is not.
     let e = err(&format!("{TWO}speed_scale = 30\n"));
     assert!(

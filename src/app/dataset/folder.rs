@@ -28,6 +28,7 @@ use crate::study::dataset::trends::{trend_columns, trends};
 use crate::study::dataset::RecordLabels;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// A finished record's sidecar (`records/<id>.json`).
@@ -113,6 +114,60 @@ pub fn put(root: &Path, rel: &str, bytes: &[u8], prev: &SetState) -> Result<(), 
     )?;
     dir.write_new(&dir, &name, bytes)?;
     Ok(())
+}
+
+/// What `put` would refuse among the names `rels` of `root` (a link, a FIFO, a hard link,
+/// a user's file at a dataset file's name, or a link at its sub-folder), checked without
+/// writing anything (`prev`: the set's record, read without opening the folder), so that a
+/// run refuses them before it opens the folder or does any work (exit code 2): at most
+/// ten messages, then how many more.
+pub fn refused_names(
+    root: &Path,
+    rels: impl IntoIterator<Item = String>,
+    prev: Option<&SetState>,
+) -> Vec<String> {
+    const SHOWN: usize = 10;
+    let Ok(top) = Dir::open_root(root) else {
+        return Vec::new(); // no folder yet: nothing in it to refuse
+    };
+    let mut dirs: BTreeMap<String, Option<Dir>> = BTreeMap::new();
+    let (mut out, mut more) = (Vec::new(), 0usize);
+    let mut refuse = |m: String, out: &mut Vec<String>| {
+        if out.len() < SHOWN {
+            out.push(m);
+        } else {
+            more += 1;
+        }
+    };
+    for rel in rels {
+        let (folder, name) = rel.rsplit_once('/').unwrap_or(("", rel.as_str()));
+        let dir = dirs.entry(folder.to_owned()).or_insert_with(|| {
+            let d = if folder.is_empty() {
+                top.try_clone()
+            } else {
+                top.sub(folder, false)
+            };
+            match d {
+                Ok(d) => Some(d),
+                // A sub-folder not made yet holds nothing to refuse.
+                Err(_) if absent_in(root, folder) => None,
+                Err(e) => {
+                    refuse(e.to_string(), &mut out);
+                    None
+                }
+            }
+        });
+        if let Some(dir) = dir {
+            let ours = Ours::Format(prev.and_then(|p| p.state_file(&rel)), is_dataset_file);
+            if let Err(e) = check_replaceable(dir, name, ours) {
+                refuse(e.to_string(), &mut out);
+            }
+        }
+    }
+    if more > 0 {
+        out.push(format!("and {more} more names like these"));
+    }
+    out
 }
 
 /// Create the sub-folder `folder` of `root` (never through a link).

@@ -5,13 +5,14 @@ use super::folder::check_owner;
 use super::merge::{check_trajectories, merge_datasets, shared_key};
 use super::plan::{check_dataset, dataset_key, trajectory_problems};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
-use super::run::run_dataset;
+use super::run::{refuse_planted_names, run_dataset};
 use super::verify::{verify_dataset, Verified};
 use crate::app::observer::Observer;
 use crate::app::{budget, publish, Job, JobError, Outcome};
 use crate::io::input::{
     read_input, read_input_text, MAX_CASE_BYTES, MAX_DESIGN_BYTES, MAX_TRANSFER_PATH_BYTES,
 };
+use crate::io::OutputDir;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
 use crate::report::Artifacts;
@@ -187,6 +188,10 @@ impl Job for DatasetJob {
         .map_err(another_design)?;
         let set = (self.shard.count > 1)
             .then(|| format!("dataset_shard_{}_of_{}", self.shard.index, self.shard.count));
+        // Links, FIFOs and foreign files at the names the run writes: refused before the
+        // folder is opened (its lock and set record untouched).
+        let prev = OutputDir::previous_state_of(&self.out, set.as_deref());
+        refuse_planted_names(&req, &self.out, prev.as_ref())?;
         let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
         let o = run_dataset(&req, checked, &self.out, out, observer)?;
         observer.note(&format!("dataset: results -> {}", self.out.display()));

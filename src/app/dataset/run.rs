@@ -4,7 +4,7 @@
 
 use super::claim::claim_folder;
 use super::folder::{
-    csv_rel, finished, is_file_in, make_folder, put, read_in, sidecar_rel,
+    csv_rel, finished, is_file_in, make_folder, put, read_in, refused_names, sidecar_rel,
     stage_index_and_metadata, trajectory_rel, Missing, TrajectoryFile, DATASET_REL,
 };
 use super::plan::{dataset_key, description, Checked};
@@ -15,6 +15,7 @@ use crate::app::observer::{Observer, Task};
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
 use crate::study::dataset::plan::{plan_of, Plan};
+use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
 use crate::study::dataset::verify::{
     states_to_recompute, verify_trajectory, MAX_RECOMPUTED_STATES,
@@ -56,7 +57,8 @@ pub fn run_dataset(
     claim_folder(&out, root, (&key, req.replace), &desc, &prev)?;
     for dir in ["signals", "records", "state", "csv"] {
         if dir != "csv" || d.csv {
-            make_folder(root, dir).map_err(|e| DatasetError::Failed(e.into()))?;
+            // A sub-folder that cannot be made is the output folder's problem: input.
+            make_folder(root, dir).map_err(|e| DatasetError::Input(vec![e.to_string()]))?;
         }
     }
     let (shard_first, shard_step) = (req.shard.index - 1, req.shard.count);
@@ -165,6 +167,46 @@ fn trajectory(
     )
     .map_err(|e| DatasetError::Failed(e.into()))?;
     Ok(t)
+}
+
+/// Refuse (exit code 2) the names the shard of `req` will write in `root` that hold what
+/// gearwear must not replace, before the folder is opened (`prev`: its set's record).
+pub fn refuse_planted_names(
+    req: &DatasetRequest,
+    root: &Path,
+    prev: Option<&SetState>,
+) -> Result<(), DatasetError> {
+    let plan = plan_of(req.design);
+    let refused = refused_names(root, shard_file_names(req.design, &plan, req), prev);
+    if refused.is_empty() {
+        Ok(())
+    } else {
+        Err(DatasetError::Input(refused))
+    }
+}
+
+/// Every file name the shard of `req` writes: each record's signal, its CSV twin (when the
+/// design asks for CSV) and its sidecar, and each recorded condition's trajectory.
+fn shard_file_names<'a>(
+    d: &'a DatasetDesign,
+    plan: &'a Plan,
+    req: &'a DatasetRequest,
+) -> impl Iterator<Item = String> + 'a {
+    let (first, step) = (req.shard.index - 1, req.shard.count);
+    let records = (0..plan.shard_state_count(req.shard)).flat_map(move |k| {
+        (0..plan.realisations).flat_map(move |r| {
+            let id = plan.record_id(first + k * step, r);
+            let csv = d.csv.then(|| csv_rel(id));
+            [Some(signal_file(id)), csv, Some(sidecar_rel(id))]
+                .into_iter()
+                .flatten()
+        })
+    });
+    let trajectories = plan
+        .shard_conditions(req.shard)
+        .into_iter()
+        .map(|c| trajectory_rel(&d.conditions[c].name));
+    records.chain(trajectories)
 }
 
 /// Compute and write the records of physical state `p` (unless all are finished).

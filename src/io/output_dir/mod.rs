@@ -41,6 +41,8 @@ mod publish;
 pub use publish::{Manifest, ManifestEntry, INCOMPLETE_MARKER, UNPUBLISHED_PREFIX};
 
 const STAGING_PREFIX: &str = ".gearwear-staging-";
+/// The record of the folder's (unnamed) output set; `.SET.gearwear-state.json` for a named one.
+const STATE_NAME: &str = ".gearwear-state.json";
 /// Whether a folder holding another command's set may be replaced.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OtherSet {
@@ -112,6 +114,19 @@ impl OutputDir {
     }
 
     /// As [`OutputDir::open`], with the choice for another command's set.
+    /// The record of the output set `set` in `root_path` as the last run left it, read
+    /// without taking the folder's lock or changing anything (None: no folder, no record,
+    /// or one that is not this folder's: `open_with` refuses that one). For checks a job
+    /// makes before it opens the folder.
+    pub fn previous_state_of(root_path: &Path, set: Option<&str>) -> Option<SetState> {
+        let root = Dir::open_root(root_path).ok()?;
+        let name = match set {
+            None => STATE_NAME.to_owned(),
+            Some(s) => format!(".{s}{STATE_NAME}"),
+        };
+        read_state(&root, &name).ok().flatten()
+    }
+
     pub fn open_with(
         root_path: &Path,
         set: Option<&str>,
@@ -123,14 +138,14 @@ impl OutputDir {
             None => (
                 ".gearwear.lock".to_owned(),
                 "manifest.json".to_owned(),
-                ".gearwear-state.json".to_owned(),
+                STATE_NAME.to_owned(),
             ),
             Some(s) => {
                 check_relative(s)?;
                 (
                     format!(".{s}.lock"),
                     format!("{s}.manifest.json"),
-                    format!(".{s}.gearwear-state.json"),
+                    format!(".{s}{STATE_NAME}"),
                 )
             }
         };
