@@ -167,3 +167,120 @@ fn steady_means_of_a_two_stage_train_are_the_static_forces_and_both_meshes_sound
         "sum {sum:e}, diff {diff:e}, high {high:e}"
     );
 }
+
+#[test]
+fn the_train_grid_holds_every_mesh_event_and_repeats_its_step_lengths() {
+    // The base period (31 periods of mesh 1, 23 of mesh 2) on a grid of 200 intervals per
+    // mesh-1 period: each mesh's pair changes (its period boundaries and (eps - 1) T
+    // after each, eps its contact ratio, computed here from the stage's geometry) are
+    // nodes, no interval exceeds T_1 / 200, and the interval length changes only at
+    // events: at most 3 per mesh period of each mesh (a boundary, a pair change, a pitch
+    // passage), where spreading 200 nodes over each mesh's own periods and merging gave a
+    // new length at nearly every one of ~10 800 intervals.
+    let m = model(TWO_STAGE, &[]);
+    let (gap, ext) = (PairGap::none(), ExternalError::none());
+    let sys = m.system(&gap, &ext, 0.2);
+    let t = m.train.as_ref().unwrap();
+    let nodes = gearwear::dynamics::grid::train_nodes(&sys, 200).unwrap();
+    let f: Vec<f64> = t
+        .operating
+        .meshes
+        .iter()
+        .map(|p| p.mesh_frequency_hz)
+        .collect();
+    let period = 31.0 / f[0];
+    assert_eq!(nodes[0], 0.0);
+    assert!((nodes[nodes.len() - 1] - period).abs() < 1e-12 * period);
+    let h_max = 1.0 / (200.0 * f[0]);
+    let lengths: Vec<f64> = nodes.windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(lengths
+        .iter()
+        .all(|h| *h > 0.0 && *h <= h_max * (1.0 + 1e-9)));
+    for (k, stage) in t.stages.iter().enumerate() {
+        let t_mesh = 1.0 / f[k];
+        let frac = stage.pair.contact_ratio - stage.pair.contact_ratio.floor();
+        let cycles = (period * f[k]).round() as usize;
+        for j in 0..cycles {
+            for event in [j as f64 * t_mesh, (j as f64 + frac) * t_mesh] {
+                let nearest = nodes
+                    .iter()
+                    .map(|n| (n - event).abs())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(nearest < 1e-9 * t_mesh, "mesh {k} event at {event} s");
+            }
+        }
+    }
+    let changes = lengths
+        .windows(2)
+        .filter(|w| (w[1] - w[0]).abs() > 1e-9 * w[1])
+        .count();
+    println!("{} intervals, {changes} changes of length", lengths.len());
+    assert!(changes <= 3 * (31 + 23), "{changes} changes of length");
+}
+
+#[test]
+fn the_train_steady_state_at_the_default_tolerance_is_the_tight_one_within_that_tolerance() {
+    // A second solution of the same equations at 1e-7 local error (100 times tighter than
+    // the default 1e-5, with its own steps): each mesh's DTE peak-to-peak and maximum
+    // force agree within 3e-4 of the state scale (the smaller static deflection, and the
+    // force it takes through that mesh's mean stiffness). The local tolerance is 1e-5 of
+    // the scale per step; the error of the ringing after each mesh event adds up over a
+    // few dozen steps before the damping takes it, so 30 local tolerances bound it (this
+    // case errs by 1.2e-4 and 2.0e-4 in the DTE peak-to-peak, 6e-5 and 1e-5 in the
+    // forces; the two-stage example by under 1e-4). The work: equal steps between events let one
+    // factorisation serve several steps (fewer than one per three steps; before the
+    // equal-step rule it was 0.86 per step).
+    let run = |tol: &str| {
+        let m = model(TWO_STAGE, &[tol, "numerics.evaluated_mesh_periods=1"]);
+        let r = m
+            .dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
+            .unwrap();
+        (m, r)
+    };
+    let (m, loose) = run("numerics.integration_tolerance=1e-5");
+    let (_, tight) = run("numerics.integration_tolerance=1e-7");
+    assert!(tight.steps > 2 * loose.steps);
+    assert!(
+        3 * loose.factorizations < loose.steps,
+        "{} LU, {} steps",
+        loose.factorizations,
+        loose.steps
+    );
+    let t = m.train.as_ref().unwrap();
+    // The state scale: each mesh's static deflection, its nominal force over its mean
+    // stiffness; the smaller one (docs/MODEL.md, the integrator's error weights).
+    let (delta, k_mean): (Vec<f64>, Vec<f64>) = t
+        .stages
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let f = t.operating.meshes[k].gear_torque_nm / s.pair.gear.base_radius_m;
+            let km = s.mesh.mean_stiffness_n_per_m();
+            (f / km, km)
+        })
+        .unzip();
+    let scale = delta.iter().copied().fold(f64::INFINITY, f64::min);
+    let span = |v: &[f64]| {
+        let max = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (max - v.iter().copied().fold(f64::INFINITY, f64::min), max)
+    };
+    for k in 0..t.stages.len() {
+        let (pp_l, _) = span(&loose.signals.meshes[k].dte_m);
+        let (pp_t, _) = span(&tight.signals.meshes[k].dte_m);
+        let (_, f_l) = span(&loose.signals.meshes[k].mesh_force_n);
+        let (_, f_t) = span(&tight.signals.meshes[k].mesh_force_n);
+        println!(
+            "mesh {k}: DTE p-p {:.3e} of scale, max force {:.3e} of scale",
+            (pp_l - pp_t) / scale,
+            (f_l - f_t) / (k_mean[k] * scale)
+        );
+        assert!(
+            (pp_l - pp_t).abs() < 3e-4 * scale,
+            "mesh {k}: {pp_l} vs {pp_t} m"
+        );
+        assert!(
+            (f_l - f_t).abs() < 3e-4 * k_mean[k] * scale,
+            "mesh {k}: {f_l} vs {f_t} N"
+        );
+    }
+}

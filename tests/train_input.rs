@@ -83,3 +83,22 @@ fn a_train_too_large_for_the_budget_is_refused_before_it_runs() {
         &["over its budget (nothing was computed)", "numerics.steps_per_mesh_period"],
     );
 }
+
+#[test]
+fn a_single_pair_study_refuses_a_train_before_its_budget_check() {
+    // The same train with a grid far over any study's budget: each single-pair study
+    // names the train and what runs on one, not the budget (whose estimate is the single
+    // pair's and would mislead).
+    let dir = tempfile::tempdir().unwrap();
+    let file = case_file(
+        &dir,
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}\n[numerics]\nsteps_per_mesh_period = 20000\n"),
+    );
+    for study in ["run", "stiffness", "signals"] {
+        let err = rejected(
+            &[study, "--config", &file],
+            &["this case is a gear train", "`gearwear dynamics`"],
+        );
+        assert!(!err.contains("budget"), "{study}: {err}");
+    }
+}

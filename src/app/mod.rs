@@ -115,16 +115,23 @@ impl AsRef<Outcome> for Outcome {
 /// to `observer`. A study that takes a single pair only refuses a gear train
 /// (`[[stage]]`) here, before any work.
 pub fn build_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
-    if !case.stage.is_empty() {
-        return Err(JobError::input(crate::remedy::Problem::new(
-            TRAIN_STUDIES.to_owned(),
-        )));
-    }
+    refuse_train(case)?;
     build_train_model(case, observer)
 }
 
+/// The refusal of a gear train (`[[stage]]`) by a study that takes a single pair only:
+/// called first, before the budget check (whose estimate is the single pair's).
+pub fn refuse_train(case: &Case) -> Result<(), JobError> {
+    if case.stage.is_empty() {
+        return Ok(());
+    }
+    Err(JobError::input(crate::remedy::Problem::new(
+        TRAIN_STUDIES.to_owned(),
+    )))
+}
+
 /// What a study that takes a single pair says of a gear train.
-pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): the dynamics study takes trains so far; this study takes a single pair ([gear], without [[stage]])";
+pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics` runs so far; this study takes a single pair ([gear], without [[stage]])";
 
 /// As [`build_model`], for the studies that take a gear train as well as a single pair.
 pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {

@@ -73,6 +73,7 @@ impl Job for SignalsJob {
             .map_or(crate::study::budget::signals::DEFAULT_CHANNELS, |p| {
                 p.sensors.len()
             });
+        super::refuse_train(&self.case)?;
         budget::check_estimate(
             &estimate_signals(&self.case, channels),
             self.budget.as_ref(),

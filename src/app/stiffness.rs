@@ -35,6 +35,7 @@ impl Job for StiffnessJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
+        super::refuse_train(&self.case)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
         if self.case.gear.helix_angle_deg != 0.0 {
             return self.run_helical(figures, observer);

@@ -44,6 +44,7 @@ impl Job for WearJob {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),
         };
+        super::refuse_train(&self.case)?;
         budget::check(&self.case, cost, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);

@@ -16,19 +16,7 @@ use crate::geometry::GearPair;
 /// Node times within one mesh period, s, from 0 to the period (both included).
 pub fn period_nodes(pair: &GearPair, pinion_speed_rad_s: f64, steps: usize) -> Vec<f64> {
     let period_rad = pair.mesh_angle_rad();
-    let mut events: Vec<f64> = pair.contact_change_phases();
-    // Pitch-point passages: rho_A + r_b1 phase + k p_b = rho_pitch.
-    for k in 0..pair.max_pairs() {
-        let ph = (pair.rho_pitch_m - pair.rho_start_m - k as f64 * pair.base_pitch_m)
-            / pair.pinion.base_radius_m;
-        if ph > 0.0 && ph < period_rad {
-            events.push(ph);
-        }
-    }
-    events.push(period_rad);
-    events.sort_by(f64::total_cmp);
-    events.dedup_by(|a, b| (*a - *b).abs() < 1e-12 * period_rad);
-
+    let events = period_events(pair);
     let n_seg = events.len() - 1;
     let steps = steps.max(2 * n_seg);
     let mut nodes = Vec::with_capacity(steps + 1);
@@ -51,6 +39,26 @@ pub fn period_nodes(pair: &GearPair, pinion_speed_rad_s: f64, steps: usize) -> V
         used += n;
     }
     nodes
+}
+
+/// The mesh events within one mesh period, pinion phase in rad from 0 to the period
+/// (both included), sorted: where the number of pairs in contact changes
+/// ([`GearPair::contact_change_phases`]) and where a pair passes the pitch point.
+fn period_events(pair: &GearPair) -> Vec<f64> {
+    let period_rad = pair.mesh_angle_rad();
+    let mut events: Vec<f64> = pair.contact_change_phases();
+    // Pitch-point passages: rho_A + r_b1 phase + k p_b = rho_pitch.
+    for k in 0..pair.max_pairs() {
+        let ph = (pair.rho_pitch_m - pair.rho_start_m - k as f64 * pair.base_pitch_m)
+            / pair.pinion.base_radius_m;
+        if ph > 0.0 && ph < period_rad {
+            events.push(ph);
+        }
+    }
+    events.push(period_rad);
+    events.sort_by(f64::total_cmp);
+    events.dedup_by(|a, b| (*a - *b).abs() < 1e-12 * period_rad);
+    events
 }
 
 /// Greatest common divisor.
@@ -201,9 +209,14 @@ pub fn excitation_periods(sys: &GearSystem) -> Option<usize> {
 }
 
 /// Node times within one base period of a train ([`base_period`]), s, from 0 to the
-/// period: every mesh's [`period_nodes`] repeated over its mesh periods in the base
-/// period, merged (nodes of two meshes closer than 1e-9 of the shortest mesh period are
-/// one). The single pair: its [`period_nodes`] exactly.
+/// period. The single pair: its [`period_nodes`] exactly. A train: every mesh's events
+/// ([`period_events`]: pair changes and pitch passages) over its mesh periods in the base
+/// period, merged (events of two meshes closer than 1e-9 of the shortest mesh period are
+/// one), and each gap between events filled with ceil(gap / h_max) equal intervals,
+/// h_max = the shortest mesh period / `steps`. Equal intervals keep the step length of
+/// the implicit integrator, and with it its factorised iteration matrix, along a gap;
+/// spreading each mesh's `steps` nodes per mesh period instead would make every interval
+/// of the merged set a different length.
 pub fn train_nodes(sys: &GearSystem, steps: usize) -> Option<Vec<f64>> {
     if sys.meshes.len() == 1 {
         let m = sys.mesh(0);
@@ -214,25 +227,34 @@ pub fn train_nodes(sys: &GearSystem, steps: usize) -> Option<Vec<f64>> {
         ));
     }
     let (period, counts) = base_period(sys)?;
-    let mut nodes = Vec::new();
+    let mut events = Vec::new();
     let mut shortest = f64::INFINITY;
     for (mesh, count) in sys.meshes.iter().zip(&counts) {
         let w = mesh.operating.speeds_rad_s[0];
-        let one = period_nodes(mesh.parts.pair, w, steps);
+        let one = period_events(mesh.parts.pair);
         let t_mesh = period / *count as f64;
         shortest = shortest.min(t_mesh);
         for k in 0..*count {
             let base = k as f64 * t_mesh;
-            nodes.extend(one[..one.len() - 1].iter().map(|t| base + t));
+            events.extend(one[..one.len() - 1].iter().map(|ph| base + ph / w));
         }
     }
-    nodes.push(period);
-    nodes.sort_by(f64::total_cmp);
+    events.push(period);
+    events.sort_by(f64::total_cmp);
     let tol = 1e-9 * shortest;
-    nodes.dedup_by(|a, b| (*a - *b).abs() < tol);
+    events.dedup_by(|a, b| (*a - *b).abs() < tol);
     // The period's end stays exact.
-    if let Some(last) = nodes.last_mut() {
+    if let Some(last) = events.last_mut() {
         *last = period;
+    }
+    let h_max = shortest / steps.max(1) as f64;
+    let mut nodes = Vec::with_capacity(events.len() + (period / h_max) as usize + 1);
+    nodes.push(events[0]);
+    for w in events.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let n = ((b - a) / h_max).ceil().max(1.0) as usize;
+        nodes.extend((1..n).map(|i| a + (b - a) * i as f64 / n as f64));
+        nodes.push(b);
     }
     Some(nodes)
 }

@@ -19,6 +19,13 @@ pub struct SdirkOptions {
     /// stiffness (`tests_cost.rs`) it needed 6.1 Newton iterations per step against 6.5
     /// for 0.3-0.9, with the same number of Jacobians.
     pub refresh_rate: f64,
+    /// Factorised iteration matrices `(I - h gamma J)^{-1}` of earlier step lengths kept
+    /// with the current Jacobian (dropped when it is re-evaluated), and reused when a
+    /// step of one of those lengths comes again: error control that alternates between
+    /// a whole node interval and its half then factorises once per length, not once per
+    /// switch. The matrix of a length is the same whether kept or rebuilt (up to the
+    /// round-off of the step lengths, 1e-9 relative). Default 0 (none kept).
+    pub kept_matrices: usize,
 }
 
 impl Default for SdirkOptions {
@@ -28,6 +35,7 @@ impl Default for SdirkOptions {
             rel_tol: 1e-9,
             max_newton_iters: 10,
             refresh_rate: 0.1,
+            kept_matrices: 0,
         }
     }
 }

@@ -132,6 +132,9 @@ where
     /// [`super::lu`] for why the inverse rather than triangular solves).
     m_inv: Matrix<D>,
     m_inv_h: f64,
+    /// Earlier `(m_inv_h, m_inv)` of the current Jacobian, newest last (at most
+    /// `opts.kept_matrices`).
+    kept: Vec<(f64, Matrix<D>)>,
     /// A new Jacobian must be evaluated before the next step.
     refresh: bool,
     /// Hairer's `eta = theta / (1 - theta)` carried between stages and steps.
@@ -190,6 +193,7 @@ where
             jac: None,
             m_inv: Matrix::<D>::identity_generic(dim, dim),
             m_inv_h: f64::NAN,
+            kept: Vec::new(),
             refresh: true,
             eta: 1.0,
             last: None,
@@ -330,9 +334,7 @@ where
         }
         if self.refresh || self.jac.is_none() {
             self.refresh_matrix(sys, t, y, h, st)?;
-        } else if (h - self.m_inv_h).abs() > 1e-9 * h {
-            // (A step that differs by round-off only, e.g. node intervals computed as
-            // differences of times, keeps the matrix: it only steers Newton.)
+        } else if !same_step(h, self.m_inv_h) && !self.take_kept(h) {
             self.factor(t, h, st)?;
         }
         let tab = self.tab;
@@ -504,7 +506,24 @@ where
         }
         self.jac = Some(jac);
         self.refresh = false;
+        // The kept matrices belong to the old Jacobian.
+        self.kept.clear();
+        self.m_inv_h = f64::NAN;
         self.factor(t, h, st)
+    }
+
+    /// Makes the kept matrix of step `h` ([`SdirkOptions::kept_matrices`]) the current
+    /// one, keeping the current one in its place; false if none is kept for `h`.
+    fn take_kept(&mut self, h: f64) -> bool {
+        let Some(i) = self.kept.iter().position(|(hk, _)| same_step(h, *hk)) else {
+            return false;
+        };
+        let (hk, m) = self.kept.remove(i);
+        let old = std::mem::replace(&mut self.m_inv, m);
+        self.kept.push((self.m_inv_h, old));
+        self.m_inv_h = hk;
+        self.eta = 1.0; // another matrix: measure the contraction again
+        true
     }
 
     /// Factorises `I - h gamma J` with the stored Jacobian (`t` only names the error).
@@ -528,7 +547,13 @@ where
         if !m_inv.iter().all(|v| v.is_finite()) {
             return Err(IntegratorError::SingularMatrix { t });
         }
-        self.m_inv = m_inv;
+        let old = std::mem::replace(&mut self.m_inv, m_inv);
+        if self.opts.kept_matrices > 0 && self.m_inv_h.is_finite() {
+            if self.kept.len() == self.opts.kept_matrices {
+                self.kept.remove(0);
+            }
+            self.kept.push((self.m_inv_h, old));
+        }
         self.m_inv_h = h;
         self.eta = 1.0; // new matrix: measure the contraction again before trusting it
         Ok(())
@@ -551,6 +576,13 @@ where
     ) -> Result<StepStats, IntegratorError> {
         Sdirk::step(self, sys, t, y)
     }
+}
+
+/// Steps `h` and `h_matrix` are one length: they differ by round-off only (node
+/// intervals computed as differences of times), so the matrix of one serves the other
+/// (it only steers Newton).
+fn same_step(h: f64, h_matrix: f64) -> bool {
+    (h - h_matrix).abs() <= 1e-9 * h
 }
 
 fn check_step(h: f64) -> Result<(), IntegratorError> {
