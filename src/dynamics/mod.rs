@@ -27,3 +27,5 @@ pub mod transient;
 
 #[cfg(test)]
 mod tests_planetary_lumped;
+#[cfg(test)]
+mod tests_planetary_published;
