@@ -8,9 +8,11 @@ use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
 use crate::report::stiffness_helical::helical_stiffness_artifacts;
+use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::helical::HelicalModel;
+use crate::study::planetary::PlanetaryStudy;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -36,6 +38,9 @@ impl Job for StiffnessJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
+        if self.case.planetary.is_some() {
+            return self.run_planetary(observer);
+        }
         if self.case.gear.helix_angle_deg != 0.0 {
             return self.run_helical(figures, observer);
         }
@@ -48,6 +53,23 @@ impl Job for StiffnessJob {
 }
 
 impl StiffnessJob {
+    /// A planetary case: the set's meshes, phases, frequencies and lumped modes
+    /// (`study::planetary`), `summary.json` only.
+    fn run_planetary(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let study = PlanetaryStudy::from_case(&self.case)?;
+        for w in &study.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::new(self.name(), &self.case);
+        publish::publish(
+            out,
+            planetary_stiffness_artifacts(&study),
+            Some(&meta),
+            observer,
+        )
+    }
+
     /// A helical case: the slice model (`study::helical`) instead of the planar model.
     fn run_helical(
         &self,
