@@ -9,11 +9,13 @@
 //! `io`, the file mechanics) -> `config` -> `geometry` -> `stiffness` -> `contact` ->
 //! `dynamics` -> `wear` -> `signals` -> `study` -> `duty` -> `prognostics` -> `store`
 //! (checkpoints, run metadata) -> `report` -> `app` (one job per study). The front ends sit on top: the command
-//! line (`src/cli/`, compiled into the `gearwear` binary) and the Python binding
-//! (`python/`).
+//! line (`cli`, behind the default feature `cli`: the `gearwear` binary, and the console
+//! script the Python wheel installs) and the Python binding (`python/`).
 
 pub mod app;
 pub mod checksum;
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod config;
 pub mod contact;
 pub mod duty;

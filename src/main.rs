@@ -1,9 +1,5 @@
-//! The `gearwear` binary: the command line (`src/cli/`) over the library.
-
-#![warn(unreachable_pub)]
-
-mod cli;
+//! The `gearwear` binary: the command line (`gearwear::cli`) over the library.
 
 fn main() -> std::process::ExitCode {
-    cli::main()
+    gearwear::cli::main()
 }

@@ -8,9 +8,8 @@
 //! words (`Display`), while the command line's wording of the same errors must name the
 //! flag.
 
-/// The command line's spelling of each argument: the binary's own table, compiled here.
-#[path = "../src/cli/flag.rs"]
-mod flag;
+// The command line's spelling of each argument: its own table.
+use gearwear::cli::flag;
 
 use gearwear::app::{
     DynamicsJob, Job, JobError, PredictJob, PredictOptions, SweepJob, TransmissionErrorSource,

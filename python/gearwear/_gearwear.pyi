@@ -80,6 +80,7 @@ class CaseError(ValueError):
 class StudyError(RuntimeError):
     """A study failed on a valid case (e.g. no periodic steady state)."""
 
+def _cli_main(argv: List[str]) -> int: ...
 def keys() -> List[Dict[str, Any]]:
     """Every key of a case: ``{key, unit, valid, doc, default}`` each."""
 

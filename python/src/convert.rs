@@ -192,7 +192,10 @@ pub fn tables_to_py<'py>(
     let out = PyDict::new(py);
     for (path, t) in tables {
         let name = path.rsplit('/').next().unwrap_or(&path);
-        let name = name.strip_suffix(".csv").unwrap_or(name);
+        let name = name
+            .strip_suffix(".csv")
+            .or_else(|| name.strip_suffix(".parquet"))
+            .unwrap_or(name);
         let n_rows = t.rows();
         let lengths: Vec<usize> = t.columns.iter().map(Vec::len).collect();
         let mut flat = Vec::with_capacity(n_rows * t.columns.len());

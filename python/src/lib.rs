@@ -38,6 +38,15 @@ fn keys(py: Python<'_>) -> PyResult<Vec<Bound<'_, pyo3::types::PyDict>>> {
         .collect()
 }
 
+/// The `gearwear` command line on `argv` (`sys.argv`: the program's name first), run as the
+/// binary runs it (same arguments, outputs, messages and exit codes: `gearwear::cli`); its
+/// exit code. The GIL is released while it runs. The console script `gearwear` of the
+/// wheel calls it (`gearwear/_cli.py`).
+#[pyfunction]
+fn _cli_main(py: Python<'_>, argv: Vec<String>) -> u8 {
+    py.detach(move || gearwear::cli::main_from(argv))
+}
+
 #[pymodule]
 fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -50,6 +59,7 @@ fn _gearwear(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CaseError", py.get_type::<errors::CaseError>())?;
     m.add("StudyError", py.get_type::<errors::StudyError>())?;
     m.add_function(wrap_pyfunction!(keys, m)?)?;
+    m.add_function(wrap_pyfunction!(_cli_main, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::dynamics, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::wear, m)?)?;

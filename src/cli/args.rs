@@ -1,7 +1,7 @@
 //! Command-line arguments (clap derive).
 
+use crate::study::budget::Budget;
 use clap::{Args, Parser, Subcommand};
-use gearwear::study::budget::Budget;
 use std::path::PathBuf;
 
 use super::common_args::{CaseArgs, FigureArgs};
@@ -37,7 +37,7 @@ fn parse_budget_scale(text: &str) -> Result<f64, String> {
         Ok(x) if x.is_normal() && x > 0.0 && x <= 1e9 => Ok(x),
         _ => Err(format!(
             "--budget-scale {}: expected a number in (0, 1e9]",
-            gearwear::format::clip(text, gearwear::format::SHOWN_CHARS)
+            crate::format::clip(text, crate::format::SHOWN_CHARS)
         )),
     }
 }
@@ -372,7 +372,7 @@ pub(crate) struct LoadSpectrumArgs {
     /// Merge bins with less than this share of the revolutions (0.001: 0.1 %) into their
     /// nearest bin, keeping the revolutions, the time and the torque-revolution integral
     /// (the quasi-static wear); 0 keeps every bin.
-    #[arg(long, allow_negative_numbers = true, default_value_t = gearwear::config::spectrum_merge::DEFAULT_MERGE_SHARE)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = crate::config::spectrum_merge::DEFAULT_MERGE_SHARE)]
     pub(crate) merge_below_share: f64,
     #[command(flatten)]
     pub(crate) figures: FigureArgs,

@@ -3,8 +3,8 @@
 use super::args::CalibrateArgs;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::{CalibrateJob, CalibrationOptions, TableSource};
-use gearwear::study::budget::Budget;
+use crate::app::{CalibrateJob, CalibrationOptions, TableSource};
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &CalibrateArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&CalibrateJob {

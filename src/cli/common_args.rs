@@ -1,8 +1,8 @@
 //! The arguments most commands share: how the case is given, and the figures' formats
 //! and size.
 
+use crate::config::{load_case_in, Case};
 use clap::Args;
-use gearwear::config::{load_case_in, Case};
 use std::path::PathBuf;
 
 use super::error::CliError;
@@ -21,7 +21,7 @@ pub(crate) struct CaseArgs {
 impl CaseArgs {
     /// The case file's text (empty without --config).
     pub(crate) fn text(&self) -> Result<String, CliError> {
-        use gearwear::io::input::{read_input_text, MAX_CASE_BYTES};
+        use crate::io::input::{read_input_text, MAX_CASE_BYTES};
         match &self.config {
             // Only a regular file of bounded size (a FIFO or a device is refused at once).
             Some(p) => read_input_text(p, "case file", MAX_CASE_BYTES)
@@ -55,8 +55,8 @@ pub(crate) struct FigureArgs {
 }
 
 impl FigureArgs {
-    pub(crate) fn request(&self) -> gearwear::report::figure_output::FigureRequest {
-        gearwear::report::figure_output::FigureRequest {
+    pub(crate) fn request(&self) -> crate::report::figure_output::FigureRequest {
+        crate::report::figure_output::FigureRequest {
             formats: self.formats.clone(),
             size: self.size.clone(),
         }

@@ -3,7 +3,7 @@
 
 use super::args::ConfigArgs;
 use super::error::CliError;
-use gearwear::config::{commented_template, markdown_reference, new_pair_template};
+use crate::config::{commented_template, markdown_reference, new_pair_template};
 
 pub(crate) fn run(a: &ConfigArgs) -> Result<(), CliError> {
     if a.new_pair {

@@ -4,9 +4,9 @@ use super::error::flag;
 use super::error::CliError;
 use super::output::execute;
 use super::signals_args::{DatasetArgs, DatasetMergeArgs};
-use gearwear::app::{DatasetJob, DatasetMergeJob, DesignSource};
-use gearwear::study::budget::Budget;
-use gearwear::study::dataset::Shard;
+use crate::app::{DatasetJob, DatasetMergeJob, DesignSource};
+use crate::study::budget::Budget;
+use crate::study::dataset::Shard;
 
 pub(crate) fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let shard = match &a.shard {

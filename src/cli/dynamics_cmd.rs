@@ -3,8 +3,8 @@
 use super::args::DynamicsArgs;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::{DynamicsJob, TransmissionErrorSource};
-use gearwear::study::budget::Budget;
+use crate::app::{DynamicsJob, TransmissionErrorSource};
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &DynamicsArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&DynamicsJob {

@@ -1,8 +1,8 @@
 //! Errors of a command, worded with the command line's flags, and the exit code each maps
 //! to.
 
-use gearwear::app::JobError;
-use gearwear::config::ConfigError;
+use crate::app::JobError;
+use crate::config::ConfigError;
 use std::fmt;
 
 pub(crate) use super::flag::flag;

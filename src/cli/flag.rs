@@ -1,10 +1,10 @@
-//! How the command line spells a job's arguments in messages. A leaf of its own so that
-//! tests/no_flags.rs can compile the same table (`#[path]`) and check every message.
+//! How the command line spells a job's arguments in messages. Public so that
+//! tests/no_flags.rs checks every message against the same table.
 
-use gearwear::remedy::Arg;
+use crate::remedy::Arg;
 
-/// How the command line spells a job's arguments in messages (`gearwear::remedy`).
-pub(crate) fn flag(a: Arg) -> &'static str {
+/// How the command line spells a job's arguments in messages (`crate::remedy`).
+pub fn flag(a: Arg) -> &'static str {
     match a {
         Arg::Override => "--set",
         Arg::CaseFile => "--config",

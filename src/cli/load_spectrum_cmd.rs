@@ -3,10 +3,10 @@
 use super::args::{InterpolationArg, LevelArg, LoadSpectrumArgs, ShaftArg};
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::{LoadSpectrumJob, TableSource};
-use gearwear::config::case::TorqueShaft;
-use gearwear::duty::ldd::{Interpolation, LddSettings, Level};
-use gearwear::study::budget::Budget;
+use crate::app::{LoadSpectrumJob, TableSource};
+use crate::config::case::TorqueShaft;
+use crate::duty::ldd::{Interpolation, LddSettings, Level};
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &LoadSpectrumArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&LoadSpectrumJob {

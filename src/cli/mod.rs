@@ -1,6 +1,7 @@
-//! The `gearwear` command line, compiled into the binary only (the library and the Python
-//! wheel build neither clap nor indicatif). Thin: each command parses its arguments into a job of
-//! the application layer (`gearwear::app`), runs it with a terminal observer (progress bars,
+//! The `gearwear` command line: the binary's `main`, and the `gearwear` console script of the
+//! Python wheel (one build gives both; a library built without the `cli` feature has
+//! neither clap nor indicatif). Thin: each command parses its arguments into a job of
+//! the application layer (`crate::app`), runs it with a terminal observer (progress bars,
 //! warnings on standard error) and prints its headline; errors are worded with the
 //! command line's flags (`error::flag`).
 //!
@@ -13,10 +14,10 @@
 // command says so once at its end. Defined before the modules so that they see them.
 #[allow(unused_macros)]
 macro_rules! println {
-    ($($t:tt)*) => { gearwear::io::console::out_line(&format!($($t)*)) };
+    ($($t:tt)*) => { crate::io::console::out_line(&format!($($t)*)) };
 }
 macro_rules! eprintln {
-    ($($t:tt)*) => { gearwear::io::console::err_line(&format!($($t)*)) };
+    ($($t:tt)*) => { crate::io::console::err_line(&format!($($t)*)) };
 }
 
 mod args;
@@ -26,7 +27,7 @@ mod config_cmd;
 mod dataset_cmd;
 mod dynamics_cmd;
 mod error;
-mod flag;
+pub mod flag;
 mod load_spectrum_cmd;
 mod output;
 mod predict_cmd;
@@ -43,13 +44,25 @@ use args::{Cli, Command};
 use clap::Parser;
 use std::process::ExitCode;
 
-/// Entry point of the binary (exit codes: see the module docs).
-pub(crate) fn main() -> ExitCode {
-    gearwear::io::runtime::catch_file_size_signal();
-    let cli = Cli::parse();
+/// Entry point of the binary: the process's own arguments (exit codes: see the module docs).
+pub fn main() -> ExitCode {
+    ExitCode::from(main_from(std::env::args_os()))
+}
+
+/// The command line run on `args` (the program's name first, as `std::env::args_os`
+/// gives it); its exit code (see the module docs). `--help`, `--version` and a malformed
+/// command line end the process as the binary does (clap's exit codes 0 and 2). For the
+/// Python console script, which passes `sys.argv`.
+pub fn main_from<I, T>(args: I) -> u8
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    crate::io::runtime::catch_file_size_signal();
+    let cli = Cli::parse_from(args);
     output::set_quiet(cli.quiet);
     output::set_replace(cli.replace);
-    let pool = match gearwear::io::runtime::thread_pool() {
+    let pool = match crate::io::runtime::thread_pool() {
         Ok((pool, note)) => {
             if let Some(n) = note {
                 eprintln!("note: {n}");
@@ -58,12 +71,12 @@ pub(crate) fn main() -> ExitCode {
         }
         Err(e) => {
             eprintln!("error: {e}");
-            return ExitCode::from(gearwear::io::console::finish().unwrap_or(1));
+            return crate::io::console::finish().unwrap_or(1);
         }
     };
     // Every parallel loop of the command runs on this pool.
     let code = pool.install(|| run(&cli));
-    ExitCode::from(gearwear::io::console::finish().unwrap_or(code))
+    crate::io::console::finish().unwrap_or(code)
 }
 
 /// Run the command `cli` names; its exit code.

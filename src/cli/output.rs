@@ -7,7 +7,7 @@
 
 use super::error::CliError;
 use super::progress::Terminal;
-use gearwear::app::{Job, Outcome};
+use crate::app::{Job, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static QUIET: AtomicBool = AtomicBool::new(false);

@@ -5,12 +5,12 @@ use super::args::{ForwardArg, PredictArgs, PredictMergeArgs};
 use super::error::flag;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::{
+use crate::app::{
     ForwardModel, FutureInput, PredictJob, PredictMergeJob, PredictOptions, SpectrumSource,
     TableSource,
 };
-use gearwear::study::budget::Budget;
-use gearwear::study::sweep::Shard;
+use crate::study::budget::Budget;
+use crate::study::sweep::Shard;
 
 pub(crate) fn run(a: &PredictArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let shard = match &a.shard {

@@ -1,7 +1,7 @@
 //! The terminal observer of a job: progress bars on standard error (hidden when it is not
 //! a terminal: logs, pipes, CI), notes and warnings on standard error.
 
-use gearwear::app::{Observer, Task, Unit};
+use crate::app::{Observer, Task, Unit};
 use indicatif::{MultiProgress, ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::sync::Mutex;

@@ -3,8 +3,8 @@
 use super::args::RunArgs;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::RunJob;
-use gearwear::study::budget::Budget;
+use crate::app::RunJob;
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &RunArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&RunJob {

@@ -3,8 +3,8 @@
 use super::error::CliError;
 use super::output::execute;
 use super::signals_args::SignalsArgs;
-use gearwear::app::{SignalsJob, TransferPathSource};
-use gearwear::study::budget::Budget;
+use crate::app::{SignalsJob, TransferPathSource};
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &SignalsArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&SignalsJob {

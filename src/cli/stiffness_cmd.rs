@@ -4,8 +4,8 @@
 use super::args::StiffnessArgs;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::StiffnessJob;
-use gearwear::study::budget::Budget;
+use crate::app::StiffnessJob;
+use crate::study::budget::Budget;
 
 pub(crate) fn run(a: &StiffnessArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&StiffnessJob {

@@ -7,9 +7,9 @@ use super::args::{ContinuationArg, SweepArgs, SweepMergeArgs, SweepRunArg};
 use super::error::flag;
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::{SweepJob, SweepMergeJob};
-use gearwear::study::budget::Budget;
-use gearwear::study::sweep::{parse_vary, Continuation, Shard, SweepPlan, SweepRun};
+use crate::app::{SweepJob, SweepMergeJob};
+use crate::study::budget::Budget;
+use crate::study::sweep::{parse_vary, Continuation, Shard, SweepPlan, SweepRun};
 
 pub(crate) fn run(a: &SweepArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let base = a.case.load()?;

@@ -4,9 +4,9 @@
 use super::args::{WearArgs, WearModeArg};
 use super::error::CliError;
 use super::output::execute;
-use gearwear::app::WearJob;
-use gearwear::study::budget::Budget;
-use gearwear::study::wear_loop::WearMode;
+use crate::app::WearJob;
+use crate::study::budget::Budget;
+use crate::study::wear_loop::WearMode;
 
 pub(crate) fn run(a: &WearArgs, budget: Option<Budget>) -> Result<(), CliError> {
     let modes = match a.mode {

@@ -301,6 +301,13 @@ fn file_bins(path: &Path, shown: &str, problems: &mut Vec<String>) -> Vec<RawBin
             return Vec::new();
         }
     };
+    if let Some(name) = crate::io::table::repeated_column(header.iter().map(String::as_str)) {
+        problems.push(format!(
+            "`load_spectrum.file` = \"{shown}\": the header names the column `{}` twice: keep one",
+            crate::format::clip(name, crate::format::SHOWN_CHARS)
+        ));
+        return Vec::new();
+    }
     let mut bins = Vec::new();
     for (i, row) in rdr.records().enumerate() {
         let line = i + 2;

@@ -71,6 +71,12 @@ fn columns(header: &csv::ByteRecord) -> Result<Columns, HistoryError> {
         [one] if one.contains('\t') => "; the file seems separated by tabs: write it with commas",
         _ => "",
     };
+    if let Some(name) = crate::io::table::repeated_column(names.iter().map(String::as_str)) {
+        return Err(HistoryError::one(format!(
+            "the history's header names the column `{}` twice: keep one (the reader would take the first silently)",
+            crate::format::clip(name, crate::format::SHOWN_CHARS)
+        )));
+    }
     let missing = |what: &str| {
         HistoryError::one(format!(
             "the history has no {what} column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm{separator}",

@@ -42,6 +42,21 @@ impl Table {
         w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
     }
 
+    /// The bytes of a Parquet file of these columns (doubles, exact; `io::parquet`), with
+    /// the column names as written; for long tables, where CSV text would be large and
+    /// slow to format. Columns must have equal lengths.
+    pub fn to_parquet(&self) -> Result<Vec<u8>, parquet::errors::ParquetError> {
+        let cols: Vec<super::parquet::Column> = self
+            .names
+            .iter()
+            .zip(&self.columns)
+            .map(|(n, c)| {
+                super::parquet::Column::new(n.clone(), super::parquet::ColumnData::F64(c.clone()))
+            })
+            .collect();
+        super::parquet::parquet_bytes(&cols, &[])
+    }
+
     /// The columns of `other` added after these.
     pub fn append(mut self, other: Table) -> Self {
         self.names.extend(other.names);
@@ -53,6 +68,13 @@ impl Table {
     pub fn index_of(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n == name)
     }
+}
+
+/// The first name a CSV header repeats (compared after trimming), if any. A reader that
+/// looks its columns up by name would otherwise take the first of the two silently.
+pub fn repeated_column<'a>(names: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let mut seen = std::collections::HashSet::new();
+    names.into_iter().map(str::trim).find(|n| !seen.insert(*n))
 }
 
 #[cfg(test)]

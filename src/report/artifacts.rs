@@ -94,8 +94,15 @@ pub struct Artifacts {
 }
 
 impl Artifacts {
+    /// Add a table at `path` (`NAME.csv`); a long one (a hunting period's time series, a
+    /// long wear history) goes to `NAME.parquet` instead (`decimate::long_table_path`).
     pub fn table(&mut self, path: impl Into<String>, t: Table) {
-        self.tables.push((path.into(), t));
+        let path = path.into();
+        let path = match path.strip_suffix(".csv") {
+            Some(stem) => super::decimate::long_table_path(stem, &t),
+            None => path,
+        };
+        self.tables.push((path, t));
     }
 
     /// Add a figure of the default size for its number of panels.
@@ -116,16 +123,25 @@ impl Artifacts {
     }
 
     /// Add a figure of the default size and the table of its data, at `csv/STEM.csv` for a
-    /// figure `STEM.png`.
+    /// figure `STEM.png`. Long series (over `decimate::MAX_FIGURE_POINTS` points) are
+    /// drawn and tabled by their extremes (`report::decimate`).
     pub fn figure_with_data(&mut self, path: impl Into<String>, figure: Figure, data: Table) {
+        let (figure, data) = (
+            super::decimate::decimate_figure(figure),
+            super::decimate::decimate_table(data),
+        );
         let path = path.into();
         let stem = path.trim_end_matches(".png");
-        let csv = format!("csv/{}.csv", stem.rsplit('/').next().unwrap_or(stem));
+        self.table(
+            format!("csv/{}.csv", stem.rsplit('/').next().unwrap_or(stem)),
+            data,
+        );
+        // The path the table took (CSV, or Parquet when long).
+        let data_path = self.tables.last().map(|(p, _)| p.clone());
         self.figure(path.clone(), figure);
         if let Some(f) = self.figures.last_mut() {
-            f.data = Some(csv.clone());
+            f.data = data_path;
         }
-        self.table(csv, data);
     }
 
     /// These artifacts with their figures written as `f` says.
@@ -268,10 +284,17 @@ pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteEr
     })?;
     out.stage(name, text.as_bytes())?;
     for (path, t) in &a.tables {
-        let bytes = t.to_csv().map_err(|e| WriteError::Format {
-            path: path.clone(),
-            reason: e.to_string(),
-        })?;
+        let bytes = if path.ends_with(".parquet") {
+            t.to_parquet().map_err(|e| WriteError::Format {
+                path: path.clone(),
+                reason: e.to_string(),
+            })?
+        } else {
+            t.to_csv().map_err(|e| WriteError::Format {
+                path: path.clone(),
+                reason: e.to_string(),
+            })?
+        };
         out.stage(path, &bytes)?;
     }
     stage_figures(out, &a.figures, a.figure_output)?;

@@ -30,6 +30,7 @@ pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad"
 pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
     let mut a = Artifacts::default();
     let s = &r.signals;
+    // Long runs (a hunting period) go to Parquet (`Artifacts::table`).
     a.table("timeseries.csv", timeseries_table(model, s));
     a.table("path.csv", path_table(model, &r.meshes[0].path));
 

@@ -5,6 +5,7 @@ pub mod artifacts;
 pub mod case;
 pub mod comparison;
 pub mod dataset_trends;
+pub(crate) mod decimate;
 pub mod duty;
 pub mod duty_figures;
 pub mod dynamics;

@@ -106,6 +106,12 @@ pub(crate) fn read_transmission_error(
     .map_err(|e| bad(e.reason))?;
     let mut r = csv::Reader::from_reader(bytes.as_slice());
     let headers = r.headers().map_err(|e| bad(e.to_string()))?.clone();
+    if let Some(name) = crate::io::table::repeated_column(headers.iter()) {
+        return Err(bad(format!(
+            "the header names the column `{}` twice: keep one",
+            crate::format::clip(name, crate::format::SHOWN_CHARS)
+        )));
+    }
     let col = |n: &str| headers.iter().position(|h| h.trim() == n);
     let (Some(ia), Some(ie)) = (col("pinion_angle_deg"), col("error_um")) else {
         return Err(bad(format!(
