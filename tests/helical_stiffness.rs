@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{gearwear, rejected, stderr};
+use common::{gearwear, rejected, stderr, studies_on_the_dynamic_model};
 use std::path::Path;
 
 fn summary(dir: &Path) -> serde_json::Value {
@@ -120,13 +120,7 @@ fn studies_on_the_planar_dynamics_refuse_a_helical_case() {
         "stiffness",
     ];
     let set = ["--set", "gear.helix_angle_deg=12.5"];
-    for cmd in [
-        vec!["dynamics"],
-        vec!["wear"],
-        vec!["run"],
-        vec!["signals"],
-        vec!["sweep", "--vary", "operating.input_speed_hz=20,30"],
-    ] {
+    for cmd in studies_on_the_dynamic_model() {
         let mut args = cmd.clone();
         args.extend(set);
         rejected(&args, &needles);

@@ -8,9 +8,11 @@ use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
 use crate::report::stiffness_helical::helical_stiffness_artifacts;
+use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::helical::HelicalModel;
+use crate::study::planetary::PlanetaryStudy;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -37,6 +39,9 @@ impl Job for StiffnessJob {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         super::refuse_train(&self.case)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
+        if self.case.planetary.is_some() {
+            return self.run_planetary(observer);
+        }
         if self.case.gear.helix_angle_deg != 0.0 {
             return self.run_helical(figures, observer);
         }
@@ -49,6 +54,23 @@ impl Job for StiffnessJob {
 }
 
 impl StiffnessJob {
+    /// A planetary case: the set's meshes, phases, frequencies and lumped modes
+    /// (`study::planetary`), `summary.json` only.
+    fn run_planetary(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        let study = PlanetaryStudy::from_case(&self.case)?;
+        for w in &study.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::new(self.name(), &self.case);
+        publish::publish(
+            out,
+            planetary_stiffness_artifacts(&study),
+            Some(&meta),
+            observer,
+        )
+    }
+
     /// A helical case: the slice model (`study::helical`) instead of the planar model.
     fn run_helical(
         &self,

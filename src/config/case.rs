@@ -10,6 +10,7 @@
 //! ([`Derivable`]): the model then computes them from the geometry once, when it is built
 //! (`study::Model::resolved_parameters`).
 
+use super::planetary::PlanetarySection;
 use serde::{Deserialize, Serialize};
 
 pub use super::derivable::Derivable;
@@ -74,6 +75,10 @@ pub struct Case {
     /// `[gear]`), `config::train`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub stage: Vec<StageSpec>,
+    /// A planetary set (`[planetary]`, `config::planetary`; absent: none). Only
+    /// `gearwear stiffness` takes it so far; every study on the dynamic model refuses it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planetary: Option<PlanetarySection>,
 }
 
 /// `[materials]`: elastic constants of pinion and gear.

@@ -181,6 +181,8 @@ const LOAD_SPECTRUM: &str = "load_spectrum";
 
 /// The array-of-tables section of tooth faults, resolved apart once checked.
 const FAULT: &str = "fault";
+/// The planetary set's section (read by `planetary_section`, not by the schema).
+const PLANETARY: &str = "planetary";
 
 /// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
 /// the key of the section's only table, made when there is none. With several tables
@@ -409,6 +411,7 @@ pub fn load_case_in(
         // Check the keys too, so every problem is reported at once.
         let mut more = Vec::new();
         spectrum_section(&mut user, dir, &mut more);
+        planetary_section(&mut user, &mut more);
         check_keys(&mut user, &mut more);
         problems.extend(more.into_iter().map(Words::from));
         return Err(ConfigError { problems });
@@ -478,10 +481,30 @@ fn spectrum_section(
         .and_then(|v| super::load_spectrum::parse_section(v, dir, problems))
 }
 
+/// The `[planetary]` section taken out of `user` and read: its keys are the section's own
+/// (`config::planetary`, unknown keys refused by serde), its ranges checked there.
+fn planetary_section(
+    user: &mut Table,
+    problems: &mut Vec<String>,
+) -> Option<super::planetary::PlanetarySection> {
+    let value = user.remove(PLANETARY)?;
+    match value.try_into::<super::planetary::PlanetarySection>() {
+        Ok(section) => {
+            problems.extend(section.range_problems());
+            Some(section)
+        }
+        Err(e) => {
+            problems.push(format!("[planetary]{}", toml_error(&e, "")));
+            None
+        }
+    }
+}
+
 /// Key, type and range checks of a tree, then the case and the checks across keys.
 fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError> {
     let mut problems = Vec::new();
     let spectrum = spectrum_section(&mut user, dir, &mut problems);
+    let planetary = planetary_section(&mut user, &mut problems);
     check_keys(&mut user, &mut problems);
     speed_in_rpm(&mut user, &mut problems);
     if !problems.is_empty() {
@@ -499,6 +522,7 @@ fn validate(mut user: Table, dir: &std::path::Path) -> Result<Case, ConfigError>
         .map_err(|e| ConfigError::one(format!("case file{}", toml_error(&e, ""))))?
         .unwrap_or_default();
     case.load_spectrum = spectrum;
+    case.planetary = planetary;
     check_relations(&case, &faults, &mut problems);
     if !problems.is_empty() {
         return Err(ConfigError::of(problems));

@@ -9,6 +9,7 @@ pub mod load_spectrum;
 pub mod lumped;
 pub mod operating;
 mod parse;
+pub mod planetary;
 pub mod problem;
 pub mod schema;
 pub mod signals;

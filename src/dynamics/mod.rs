@@ -14,6 +14,7 @@ pub mod model;
 pub mod params;
 pub mod period;
 pub mod period_search;
+pub mod planetary_lumped;
 pub mod quasi_static;
 pub mod recorder;
 pub mod response;
@@ -23,3 +24,8 @@ pub mod steady;
 pub mod summary;
 pub mod tooth_mesh;
 pub mod transient;
+
+#[cfg(test)]
+mod tests_planetary_lumped;
+#[cfg(test)]
+mod tests_planetary_published;

@@ -4,10 +4,15 @@
 pub mod blank;
 pub mod flank_shape;
 pub mod helical;
+pub mod internal;
 pub mod involute;
 pub mod iso1328;
 pub mod pair;
+pub mod planetary;
 pub mod profile;
 
 pub use pair::{Gear, GearPair, GeometryError};
 pub use profile::ProfileGrid;
+
+#[cfg(test)]
+mod tests_planetary;

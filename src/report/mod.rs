@@ -23,6 +23,7 @@ pub mod runup;
 pub mod signals;
 pub mod stiffness;
 pub mod stiffness_helical;
+pub mod stiffness_planetary;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;

@@ -4,8 +4,12 @@
 
 pub mod fillet;
 pub mod helical;
+pub mod internal;
 pub mod iso6336;
 pub mod mesh;
 pub mod potential_energy;
 pub mod tooth_faults;
 pub mod worn_tooth;
+
+#[cfg(test)]
+mod tests_internal;

@@ -9,6 +9,7 @@ pub mod model;
 pub mod model_error;
 pub mod modes;
 pub mod paper;
+pub mod planetary;
 pub mod signal_record;
 pub mod sweep;
 pub mod teeth;

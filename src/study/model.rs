@@ -129,6 +129,13 @@ fn helical_refusal(helix_angle_deg: f64) -> String {
     )
 }
 
+/// Why a planetary case cannot be modelled here: the dynamic model of a planetary set
+/// (time-varying meshes, contact loss, friction, the rotating carrier) is not yet built,
+/// and the case's `[gear]` pair is not the set. Every study on the model refuses it.
+fn planetary_refusal() -> String {
+    "`[planetary]` is a planetary set: its dynamic model is not yet built, so this study would give the result of the `[gear]` pair instead; only `gearwear stiffness` takes a planetary set so far (its meshes' stiffness, phases, frequencies and, with `[planetary.lumped]`, the natural frequencies)".to_string()
+}
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
@@ -136,6 +143,9 @@ impl Model {
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         if case.gear.helix_angle_deg != 0.0 {
             return Err(ModelError(vec![helical_refusal(case.gear.helix_angle_deg)]));
+        }
+        if case.planetary.is_some() {
+            return Err(ModelError(vec![planetary_refusal()]));
         }
         if !case.stage.is_empty() {
             return Self::train_from_case(case);

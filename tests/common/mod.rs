@@ -59,6 +59,18 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// The studies built on the dynamic model (a sweep of two speeds among them), each as its
+/// command and options: what a case the model refuses must be refused by.
+pub fn studies_on_the_dynamic_model() -> [Vec<&'static str>; 5] {
+    [
+        vec!["dynamics"],
+        vec!["wear"],
+        vec!["run"],
+        vec!["signals"],
+        vec!["sweep", "--vary", "operating.input_speed_hz=20,30"],
+    ]
+}
+
 /// `args` (a command and its options, `--out` added) must exit 2 with a message holding
 /// every needle, no panic, and no output folder; returns the message.
 pub fn rejected(args: &[&str], needles: &[&str]) -> String {

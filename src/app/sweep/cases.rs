@@ -82,11 +82,11 @@ pub fn resolve(
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
-    // A helical case has no dynamic model yet (`study::Model::from_case` refuses it):
-    // refused here, before any case runs, rather than as failed cases.
+    // A helical or planetary case has no dynamic model yet (`study::Model::from_case`
+    // refuses it): refused here, before any case runs, rather than as failed cases.
     let helical: Vec<Problem> = planned
         .iter()
-        .filter(|p| p.case.gear.helix_angle_deg != 0.0)
+        .filter(|p| p.case.gear.helix_angle_deg != 0.0 || p.case.planetary.is_some())
         .filter_map(|p| {
             let e = Model::from_case(&p.case).err()?;
             let first = e.0.into_iter().next()?;

@@ -1,0 +1,245 @@
+//! `[planetary]`: a simple spur planetary set (sun, N planets on a carrier, ring), and
+//! `[planetary.lumped]`, a set given by its lumped parameters (Lin & Parker 1999) so that
+//! published lumped models can be rebuilt (docs/MODEL.md section 12).
+
+use serde::{Deserialize, Serialize};
+
+/// A member of the set that can be an input, an output or fixed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Member {
+    /// The sun gear (central external gear).
+    Sun,
+    /// The carrier (the arm that holds the planets' pins).
+    Carrier,
+    /// The ring gear (central internal gear).
+    Ring,
+}
+
+impl Member {
+    /// The case file's word for the member.
+    pub fn name(self) -> &'static str {
+        match self {
+            Member::Sun => "sun",
+            Member::Carrier => "carrier",
+            Member::Ring => "ring",
+        }
+    }
+}
+
+/// `[planetary]`: the set's teeth, tooth form and power flow.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PlanetarySection {
+    /// Number of planets N (1..=32).
+    pub planets: i64,
+    /// Planet positions on the carrier, deg, increasing within one revolution, the first
+    /// at 0; absent: equally spaced (360 n / N).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planet_angles_deg: Option<Vec<f64>>,
+    /// Sun teeth z_s.
+    pub teeth_sun: i64,
+    /// Planet teeth z_p (all planets alike).
+    pub teeth_planet: i64,
+    /// Ring teeth z_r (counted positive).
+    pub teeth_ring: i64,
+    /// Module m, mm.
+    pub module_mm: f64,
+    /// Reference pressure angle alpha, deg.
+    pub pressure_angle_deg: f64,
+    /// Addendum coefficient h_a*, in modules.
+    pub addendum_coefficient: f64,
+    /// Addendum coefficient of the ring h_a2*, in modules. Shorter than the external
+    /// gears' by default (0.8): a full-depth ring tip reaches below the involute that a
+    /// rack generates on the planet (a rack's tip just reaches that point, and the ring's
+    /// concave flank reaches deeper), which the geometry refuses as tip interference.
+    pub addendum_coefficient_ring: f64,
+    /// Dedendum coefficient h_f*, in modules.
+    pub dedendum_coefficient: f64,
+    /// Rack-cutter tip radius, in modules (the external gears' lowest involute point).
+    pub tool_tip_radius_coefficient: f64,
+    /// Face width b, mm.
+    pub face_width_mm: f64,
+    /// Profile shift coefficient of the sun x_s.
+    pub profile_shift_sun: f64,
+    /// Profile shift coefficient of the planets x_p.
+    pub profile_shift_planet: f64,
+    /// Profile shift coefficient of the ring x_r, ISO 21771's sign: positive thickens the
+    /// ring's tooth at its reference circle and moves its tip circle inwards.
+    pub profile_shift_ring: f64,
+    /// The member the power comes in on.
+    pub input: Member,
+    /// The member the power leaves by.
+    pub output: Member,
+    /// The member held fixed.
+    pub fixed: Member,
+    /// A set given by its lumped parameters instead of its teeth' geometry.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lumped: Option<LumpedPlanetarySection>,
+}
+
+impl Default for PlanetarySection {
+    /// A four-planet standard set 24 / 30 / 84, module 2 mm: (z_s + z_r) / 4 = 27, and
+    /// z_r = z_s + 2 z_p; sun in, carrier out, ring fixed (ratio 1 + 84/24 = 4.5).
+    fn default() -> Self {
+        Self {
+            planets: 4,
+            planet_angles_deg: None,
+            teeth_sun: 24,
+            teeth_planet: 30,
+            teeth_ring: 84,
+            module_mm: 2.0,
+            pressure_angle_deg: 20.0,
+            addendum_coefficient: 1.0,
+            addendum_coefficient_ring: 0.8,
+            dedendum_coefficient: 1.25,
+            tool_tip_radius_coefficient: 0.38,
+            face_width_mm: 20.0,
+            profile_shift_sun: 0.0,
+            profile_shift_planet: 0.0,
+            profile_shift_ring: 0.0,
+            input: Member::Sun,
+            output: Member::Carrier,
+            fixed: Member::Ring,
+            lumped: None,
+        }
+    }
+}
+
+/// `[planetary.lumped]`: the lumped parameters of Lin & Parker's (1999) model, every key
+/// required. Inertias are given as such; the model divides them by the radius squared.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LumpedPlanetarySection {
+    /// Sun mass, kg.
+    pub mass_sun_kg: f64,
+    /// Planet mass (each), kg.
+    pub mass_planet_kg: f64,
+    /// Ring mass, kg.
+    pub mass_ring_kg: f64,
+    /// Carrier mass, kg.
+    pub mass_carrier_kg: f64,
+    /// Sun polar moment of inertia, kg m^2.
+    pub inertia_sun_kg_m2: f64,
+    /// Planet polar moment of inertia (each), kg m^2.
+    pub inertia_planet_kg_m2: f64,
+    /// Ring polar moment of inertia, kg m^2.
+    pub inertia_ring_kg_m2: f64,
+    /// Carrier polar moment of inertia, kg m^2.
+    pub inertia_carrier_kg_m2: f64,
+    /// Sun base radius, mm.
+    pub base_radius_sun_mm: f64,
+    /// Planet base radius, mm.
+    pub base_radius_planet_mm: f64,
+    /// Ring base radius, mm.
+    pub base_radius_ring_mm: f64,
+    /// Carrier radius (sun centre to planet pin), mm.
+    pub carrier_radius_mm: f64,
+    /// Mean sun-planet mesh stiffness, N/m.
+    pub mesh_stiffness_sun_planet_n_per_m: f64,
+    /// Mean ring-planet mesh stiffness, N/m.
+    pub mesh_stiffness_ring_planet_n_per_m: f64,
+    /// Sun bearing stiffness (each lateral direction), N/m.
+    pub bearing_stiffness_sun_n_per_m: f64,
+    /// Planet bearing stiffness (radial and tangential), N/m.
+    pub bearing_stiffness_planet_n_per_m: f64,
+    /// Ring support stiffness (each lateral direction), N/m.
+    pub bearing_stiffness_ring_n_per_m: f64,
+    /// Carrier bearing stiffness (each lateral direction), N/m.
+    pub bearing_stiffness_carrier_n_per_m: f64,
+    /// Sun torsional support stiffness, N m/rad.
+    pub torsional_stiffness_sun_nm_per_rad: f64,
+    /// Ring torsional support stiffness, N m/rad.
+    pub torsional_stiffness_ring_nm_per_rad: f64,
+    /// Carrier torsional support stiffness, N m/rad.
+    pub torsional_stiffness_carrier_nm_per_rad: f64,
+    /// Operating pressure angle of both meshes, deg.
+    pub pressure_angle_deg: f64,
+}
+
+/// Largest number of planets a case may give: far above any built set (5 to 12 is usual),
+/// and it bounds the lumped model's size (3 (N + 3) degrees of freedom).
+pub const MAX_PLANETS: i64 = 32;
+
+impl PlanetarySection {
+    /// Each key out of its range, as `planetary.KEY = VALUE is invalid: ...` messages:
+    /// the checks that need no geometry (the geometry's own are in
+    /// `geometry::planetary`).
+    pub fn range_problems(&self) -> Vec<String> {
+        let mut errs = Vec::new();
+        if !(1..=MAX_PLANETS).contains(&self.planets) {
+            errs.push(format!(
+                "`planetary.planets` = {} is invalid: it must lie in 1..={MAX_PLANETS}",
+                self.planets
+            ));
+        }
+        for (key, z, min) in [
+            ("teeth_sun", self.teeth_sun, 6),
+            ("teeth_planet", self.teeth_planet, 6),
+            ("teeth_ring", self.teeth_ring, 12),
+        ] {
+            if !(min..=10_000).contains(&z) {
+                errs.push(format!(
+                    "`planetary.{key}` = {z} is invalid: it must lie in {min}..=10000"
+                ));
+            }
+        }
+        for (key, v, lo, hi) in [
+            ("module_mm", self.module_mm, 0.0, 100.0),
+            ("face_width_mm", self.face_width_mm, 0.0, 2000.0),
+            ("pressure_angle_deg", self.pressure_angle_deg, 10.0, 35.0),
+            ("addendum_coefficient", self.addendum_coefficient, 0.0, 2.0),
+            (
+                "addendum_coefficient_ring",
+                self.addendum_coefficient_ring,
+                0.0,
+                2.0,
+            ),
+            ("dedendum_coefficient", self.dedendum_coefficient, 0.0, 2.5),
+        ] {
+            if !(v.is_finite() && v > lo && v <= hi) {
+                errs.push(format!(
+                    "`planetary.{key}` = {v} is invalid: it must lie in ({lo}, {hi}]"
+                ));
+            }
+        }
+        let rho = self.tool_tip_radius_coefficient;
+        if !(rho.is_finite() && (0.0..=0.6).contains(&rho)) {
+            errs.push(format!(
+                "`planetary.tool_tip_radius_coefficient` = {rho} is invalid: it must lie in [0, 0.6]"
+            ));
+        }
+        for (key, x) in [
+            ("profile_shift_sun", self.profile_shift_sun),
+            ("profile_shift_planet", self.profile_shift_planet),
+            ("profile_shift_ring", self.profile_shift_ring),
+        ] {
+            if !(x.is_finite() && x.abs() <= 1.5) {
+                errs.push(format!(
+                    "`planetary.{key}` = {x} is invalid: it must lie in [-1.5, 1.5]"
+                ));
+            }
+        }
+        errs.extend(self.power_flow_problems());
+        errs
+    }
+
+    /// Input, output and fixed must be three different members.
+    fn power_flow_problems(&self) -> Vec<String> {
+        let mut errs = Vec::new();
+        for (a, b, va, vb) in [
+            ("input", "fixed", self.input, self.fixed),
+            ("output", "fixed", self.output, self.fixed),
+            ("input", "output", self.input, self.output),
+        ] {
+            if va == vb {
+                errs.push(format!(
+                    "`planetary.{a}` = \"{}\" is invalid: the {} cannot be both the {a} and the {b} (a simple planetary set has one input, one output and one fixed member, each of \"sun\", \"carrier\", \"ring\")",
+                    va.name(),
+                    va.name()
+                ));
+            }
+        }
+        errs
+    }
+}

@@ -1,0 +1,97 @@
+//! The model objects of a planetary case (`[planetary]`) for `gearwear stiffness`: the
+//! set's geometry (`geometry::planetary`), the mean, smallest and largest stiffness of its
+//! two meshes, the member speeds and frequencies at the case's input speed, and, when
+//! `[planetary.lumped]` gives the lumped parameters, the time-invariant model's natural
+//! frequencies with each mode's class (Lin & Parker 1999; docs/MODEL.md section 12).
+//! The dynamic model of a planetary set is not yet built: `Model::from_case` refuses it.
+
+use super::model::ModelError;
+use crate::config::case::Case;
+use crate::config::planetary::PlanetarySection;
+use crate::dynamics::planetary_lumped::{PlanetaryLumped, PlanetaryMode};
+use crate::geometry::planetary::PlanetarySet;
+use crate::stiffness::internal::InternalMeshStiffness;
+use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::potential_energy::ElasticPair;
+
+/// Samples of the ring mesh's total stiffness over one mesh period for its extremes (the
+/// spur study's table density): the extremes sit on plateaus of the pairs in contact.
+const RING_SAMPLES: usize = 720;
+
+/// A planetary case's stiffness model, built once.
+#[derive(Debug, Clone)]
+pub struct PlanetaryStudy {
+    /// The `[planetary]` section.
+    pub section: PlanetarySection,
+    /// The set's geometry.
+    pub set: PlanetarySet,
+    /// The sun-planet mesh's stiffness (pinion = sun, gear = planet).
+    pub sun_mesh: MeshStiffness,
+    /// The ring-planet mesh's stiffness.
+    pub ring_mesh: InternalMeshStiffness,
+    /// Signed member speeds [sun, carrier, ring], Hz, at the case's input speed.
+    pub speeds_hz: [f64; 3],
+    /// The lumped model's modes, ascending, when `[planetary.lumped]` is given.
+    pub modes: Option<Vec<PlanetaryMode>>,
+    /// Warnings of the geometry and the stiffness.
+    pub warnings: Vec<String>,
+}
+
+impl PlanetaryStudy {
+    /// Build the set and its meshes from a validated case. Materials: the sun takes
+    /// `[materials]`' pinion constants, the planets and the ring the gear's. Both meshes
+    /// leave out the fillet foundation (the ring's rim is rigid, docs/MODEL.md 12.2; the sun
+    /// mesh alike so the two compare).
+    pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        let Some(section) = case.planetary.clone() else {
+            return Err(ModelError(vec![
+                "the case has no [planetary] section".into()
+            ]));
+        };
+        let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
+        let elastic = ElasticPair::from_case(&case.materials);
+        let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
+        let sun_mesh = MeshStiffness::with_fillet(&set.sun_planet, &elastic, n_table, None)
+            .map_err(|e| ModelError(e.0))?;
+        let planet_ring = ElasticPair {
+            e_pinion_pa: elastic.e_gear_pa,
+            nu_pinion: elastic.nu_gear,
+            ..elastic
+        };
+        let ring_mesh = InternalMeshStiffness::new(&set.ring_planet, &planet_ring, false);
+        let mut warnings = set.sun_planet.warnings.clone();
+        warnings.extend(sun_mesh.warnings().iter().cloned());
+        let speeds_hz = set.member_speeds(case.operating.input_speed_hz);
+        let modes = match &section.lumped {
+            Some(l) => Some(
+                PlanetaryLumped::from_section(l, set.planet_angles_rad.clone())
+                    .map_err(ModelError)?
+                    .modes(),
+            ),
+            None => None,
+        };
+        Ok(Self {
+            section,
+            set,
+            sun_mesh,
+            ring_mesh,
+            speeds_hz,
+            modes,
+            warnings,
+        })
+    }
+
+    /// Smallest and largest total stiffness of the ring mesh over a mesh period, N/m,
+    /// sampled at [`RING_SAMPLES`] planet angles.
+    pub fn ring_extremes_n_per_m(&self) -> (f64, f64) {
+        let period = 2.0 * std::f64::consts::PI / self.set.teeth_planet() as f64;
+        (0..RING_SAMPLES)
+            .map(|i| {
+                self.ring_mesh
+                    .total_stiffness_n_per_m(period * i as f64 / RING_SAMPLES as f64)
+            })
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), k| {
+                (lo.min(k), hi.max(k))
+            })
+    }
+}
