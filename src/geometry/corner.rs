@@ -84,6 +84,8 @@ pub struct CornerContact {
     pub gap_slope: f64,
     /// Where the mate's flank is touched: the mate's own radius of curvature, m.
     pub mate_rho_m: f64,
+    /// d mate_rho / d rho1 (dimensionless).
+    pub mate_rho_slope: f64,
 }
 
 /// A point's involute coordinate for one gear: its label (m on the line of action), roll
@@ -113,6 +115,11 @@ const ARC_SLACK_RAD: f64 = 1e-12;
 fn wrap(x: f64) -> f64 {
     use std::f64::consts::PI;
     (x + PI).rem_euclid(2.0 * PI) - PI
+}
+
+/// A point relative to the gear's centre (a, 0).
+fn radial_of(x: [f64; 2], centre_distance_m: f64) -> [f64; 2] {
+    [x[0] - centre_distance_m, x[1]]
 }
 
 fn perp(x: [f64; 2]) -> [f64; 2] {
@@ -247,7 +254,7 @@ impl CornerGeometry {
         let own_normal = self.label(g, centre).normal;
         let radial = match g {
             0 => centre,
-            _ => [centre[0] - self.centre_distance_m, centre[1]],
+            _ => radial_of(centre, self.centre_distance_m),
         };
         let towards = [-on_mate.normal[0], -on_mate.normal[1]];
         let r = dot(radial, radial).sqrt();
@@ -277,10 +284,18 @@ impl CornerGeometry {
             }
         };
         let d_mate = if g == 0 { -1.0 } else { 1.0 };
+        let gap_slope = dot(on_mate.normal, arm) - d_mate;
+        // mate_rho = s - gap - r_t, s the centre's roll length on the mate's base circle:
+        // ds/d rho1 = (Y . dY/d rho1) / s, Y the centre about the mate's axis.
+        let y = match m {
+            0 => centre,
+            _ => radial_of(centre, self.centre_distance_m),
+        };
         Some(CornerContact {
             gap_m: gap,
-            gap_slope: dot(on_mate.normal, arm) - d_mate,
+            gap_slope,
             mate_rho_m: mate_rho,
+            mate_rho_slope: dot(y, arm) / on_mate.roll_m - gap_slope,
         })
     }
 }

@@ -240,7 +240,7 @@ fn the_gap_closes_at_the_ends_of_the_path_and_the_mate_is_touched_where_it_is_fo
 #[test]
 fn gap_slope_is_the_derivative_of_the_gap() {
     // Central differences with h = 1e-7 m: truncation ~h^2 g''' ~ 1e-12, round-off
-    // ~1e-16 m / h = 1e-9; bound 1e-6.
+    // ~1e-16 m / h = 1e-9; bound 1e-6. Likewise the touched point's rate.
     let p = GearPair::from_case(&GearSection::default()).unwrap();
     let cg = CornerGeometry::new(&p);
     let h = 1e-7;
@@ -248,14 +248,25 @@ fn gap_slope_is_the_derivative_of_the_gap() {
         let gt = TipCorner::rounded(p.gear.base_radius_m, p.gear.tip_radius_m, r_t);
         let pt = TipCorner::rounded(p.pinion.base_radius_m, p.pinion.tip_radius_m, r_t);
         for d in [0.05e-3, 0.5e-3, 1.5e-3] {
+            let fd = |f: &dyn Fn(f64) -> f64, rho: f64| (f(rho + h) - f(rho - h)) / (2.0 * h);
             let rho = p.rho_start_m - d;
-            let g = |r: f64| cg.approach(gt, r).unwrap().gap_m;
-            let fd = (g(rho + h) - g(rho - h)) / (2.0 * h);
-            assert!((cg.approach(gt, rho).unwrap().gap_slope - fd).abs() < 1e-6);
+            let c = cg.approach(gt, rho).unwrap();
+            assert!((c.gap_slope - fd(&|r| cg.approach(gt, r).unwrap().gap_m, rho)).abs() < 1e-6);
+            let mate = fd(&|r| cg.approach(gt, r).unwrap().mate_rho_m, rho);
+            assert!(
+                (c.mate_rho_slope - mate).abs() < 1e-6,
+                "{} {mate}",
+                c.mate_rho_slope
+            );
             let rho = p.rho_end_m + d;
-            let g = |r: f64| cg.recess(pt, r).unwrap().gap_m;
-            let fd = (g(rho + h) - g(rho - h)) / (2.0 * h);
-            assert!((cg.recess(pt, rho).unwrap().gap_slope - fd).abs() < 1e-6);
+            let c = cg.recess(pt, rho).unwrap();
+            assert!((c.gap_slope - fd(&|r| cg.recess(pt, r).unwrap().gap_m, rho)).abs() < 1e-6);
+            let mate = fd(&|r| cg.recess(pt, r).unwrap().mate_rho_m, rho);
+            assert!(
+                (c.mate_rho_slope - mate).abs() < 1e-6,
+                "{} {mate}",
+                c.mate_rho_slope
+            );
         }
     }
 }
