@@ -266,7 +266,7 @@ impl MeshStiffness {
     /// k_pair(rho1), N/m, from the table (cubic spline, O(1)). Positions outside the path
     /// of contact are clamped to its ends: the pair is only defined there.
     pub fn pair_stiffness_n_per_m(&self, rho1_m: f64) -> f64 {
-        self.spline(&self.values, &self.curvature, rho1_m)
+        self.spline_at(&self.values, &self.curvature, rho1_m)
     }
 
     /// Stiffness of a pair whose pinion flank is loaded at the pinion's radius of
@@ -281,13 +281,13 @@ impl MeshStiffness {
         let [cp, cg] = &self.tooth_compliance;
         let [mp, mg] = &self.tooth_compliance_curvature;
         1.0 / (self.hertz_m_per_n
-            + self.spline(cp, mp, pinion_rho1_m)
-            + self.spline(cg, mg, gear_rho1_m))
+            + self.spline_at(cp, mp, pinion_rho1_m)
+            + self.spline_at(cg, mg, gear_rho1_m))
     }
 
     /// The clamped cubic spline through `values` (second derivatives `curvature`) on the
     /// table's grid at rho1 (clamped to the path), O(1).
-    fn spline(&self, values: &[f64], curvature: &[f64], rho1_m: f64) -> f64 {
+    fn spline_at(&self, values: &[f64], curvature: &[f64], rho1_m: f64) -> f64 {
         let n = values.len();
         let x = ((rho1_m - self.pair.rho_start_m) / self.step_m).clamp(0.0, (n - 1) as f64);
         let i = (x as usize).min(n - 2);
