@@ -250,20 +250,6 @@ impl GearPair {
             .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
     }
 
-    /// What [`GearPair::pairs_in_contact_decided`] takes from `decide_rad`: the mesh
-    /// cycle's start (the floor of the phase in mesh angles) and the number of pairs. Two
-    /// decision angles with the same key give the same pairs at every phase.
-    pub(crate) fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
-        let period = self.mesh_angle_rad();
-        let cycle = (decide_rad / period).floor();
-        let rho_decide =
-            self.rho_start_m + self.pinion.base_radius_m * (decide_rad - cycle * period);
-        let n = (0..self.max_pairs())
-            .filter(|k| rho_decide + *k as f64 * self.base_pitch_m <= self.rho_end_m + 1e-15)
-            .count();
-        (cycle, n)
-    }
-
     /// The path of contact as a [`Reach`]: pairs followed from A to E only.
     pub fn nominal_reach(&self) -> Reach {
         Reach {
@@ -314,7 +300,7 @@ impl GearPair {
     /// What [`GearPair::pairs_in_reach_decided`] takes from `decide_rad`: the mesh cycle
     /// of its first pair (the newest in the reach) and the number of pairs. Two decision
     /// angles with the same key give the same pairs at every phase. Over the nominal
-    /// reach this is [`GearPair::decided_set`].
+    /// reach: the floor of the phase in mesh angles and the number of pairs in contact.
     pub fn decided_set_in(&self, reach: Reach, decide_rad: f64) -> (f64, usize) {
         let period = self.mesh_angle_rad();
         let cycle = (decide_rad / period).floor();
@@ -648,7 +634,8 @@ mod tests {
                     .collect();
                 let b: Vec<(i64, f64)> = p.pairs_in_reach_decided(reach, d, decide).collect();
                 assert_eq!(a, b);
-                assert_eq!(p.decided_set(decide), p.decided_set_in(reach, decide));
+                let key = ((decide / period).floor(), a.len());
+                assert_eq!(key, p.decided_set_in(reach, decide));
             }
         }
         assert_eq!(p.reach_change_phases(reach), p.contact_change_phases());

@@ -6,8 +6,9 @@ use super::teeth::ToothInputs;
 use crate::config::case::{Case, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
+use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::model::{GearSystem, GearSystemParts};
+use crate::dynamics::model::{GearSystem, GearSystemParts, MAX_PAIRS};
 use crate::dynamics::params::{DynamicParams, OperatingPoint};
 use crate::dynamics::period_search::{DynamicsError, SteadyStateSettings};
 use crate::dynamics::quasi_static::solve_quasi_static;
@@ -36,6 +37,8 @@ pub struct Model {
     pub grid: ProfileGrid,
     pub settings: SteadyStateSettings,
     pub effective_modulus_pa: f64,
+    /// Where the pairs touch (`contact.path`; a train: its first stage's).
+    pub contact: ContactPath,
     /// The teeth of a case with per-tooth inputs (errors, modifications, faults); None:
     /// every tooth the paper's.
     pub teeth: Option<ToothInputs>,
@@ -194,6 +197,7 @@ impl Model {
         }
         Ok(Self {
             teeth,
+            contact: ContactPath::new(&pair, case.contact.path, MAX_PAIRS),
             case: case.clone(),
             effective_modulus_pa: effective_modulus_of(&case.materials),
             elastic,
@@ -235,6 +239,7 @@ impl Model {
             },
         };
         Ok(Self {
+            contact: first.contact.clone(),
             pair: first.pair.clone(),
             mesh: first.mesh.clone(),
             grid: first.grid.clone(),
@@ -322,6 +327,7 @@ impl Model {
             roughness_um,
             effective_modulus_pa: self.effective_modulus_pa,
             teeth,
+            contact: &self.contact,
         })
     }
 
