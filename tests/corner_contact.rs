@@ -204,3 +204,47 @@ fn a_deep_crack_leaves_the_load_to_the_neighbours_corners() {
         assert!(r.periodicity_error < m.settings.tolerance);
     }
 }
+
+#[test]
+fn pedrero_s_law_is_refused_with_corner_contact() {
+    // Eq. (7) shares the load between pairs on the nominal path only.
+    let sets = [
+        EXTENDED.to_string(),
+        "contact.load_sharing=\"pedrero\"".into(),
+    ];
+    let err = Model::from_case(&load_case("", &sets).unwrap())
+        .err()
+        .expect("refused");
+    let text = err.0.join("\n");
+    assert!(
+        text.contains("contact.path") && text.contains("pedrero"),
+        "{text}"
+    );
+}
+
+#[test]
+fn every_mesh_of_a_train_follows_its_quasi_static_twin_at_low_speed() {
+    // The two-stage example at a low input speed: each mesh's dynamic factor within 1 %
+    // of its quasi-static one (the same bound as the single pair's).
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/two_stage_reducer.toml"
+    ))
+    .expect("the two-stage example");
+    let sets = [EXTENDED.to_string(), "operating.input_speed_hz=0.2".into()];
+    let m = Model::from_case(&load_case(&text, &sets).unwrap()).unwrap();
+    let w = m.new_wear_state();
+    let d = m.dynamic(&w, &ExternalError::none()).expect("steady state");
+    let q = m.quasi_static(&w, &ExternalError::none());
+    assert_eq!(d.signals.meshes.len(), 2);
+    for k in 0..2 {
+        let peak = |r: &gearwear::dynamics::response::DynamicResponse| {
+            r.signals.meshes[k]
+                .mesh_force_n
+                .iter()
+                .fold(0.0_f64, |a, b| a.max(*b))
+        };
+        let (pd, pq) = (peak(&d), peak(&q));
+        assert!((pd / pq - 1.0).abs() < 0.01, "mesh {k}: {pd} vs {pq}");
+    }
+}

@@ -292,7 +292,7 @@ pub const KEYS: &[KeySpec] = &[
       "One slice is the transverse pair unstaggered; 10 000 slices of a 1 m face are 0.1 mm wide."),
     k("contact.load_sharing", "-", Choice(&["auto", "pedrero", "stiffness"]), "Load sharing between two pairs: paper eq. (7) (Pedrero), by pair stiffness and deflection, or auto: Pedrero for identical, perfect teeth of contact ratio between 1 and 2 meeting on the nominal path only (the paper's case, `contact.path` = \"nominal\"), by stiffness otherwise (corner contact, per-tooth inputs, higher contact ratios). Pedrero's law needs `contact.path` = \"nominal\". Give \"stiffness\" to compare nominal-path cases with and without per-tooth inputs under one law.",
       "-"),
-    k("contact.path", "-", Choice(&["extended", "nominal"]), "Where the teeth touch: \"extended\": on the path of contact and, under load, by the tip corners before its start and after its end, so the load passes gradually from pair to pair (corner contact; loads are then shared by compression); \"nominal\": only on the nominal path, perfect involutes meeting nowhere else (the paper's model). docs/MODEL.md, section 4.",
+    k("contact.path", "-", Choice(&["extended", "nominal"]), "Where the teeth touch: \"nominal\": only on the nominal path of contact, perfect involutes meeting nowhere else (the paper's model); \"extended\": on the path and, under load, by the tip corners before its start and after its end, so the load passes gradually from pair to pair (corner contact; the pairs then share the load by their compressions). docs/MODEL.md, section 4.2.",
       "-"),
     k("friction.model", "-", Choice(&["xu2007", "constant", "none"]), "Friction coefficient: Xu et al. (2007) regression (paper eq. 8-9), a constant, or none.",
       "-"),

@@ -74,6 +74,10 @@ pub fn pitch_line_velocity_warning(
     })
 }
 
+/// The refusal of Pedrero's law with corner contact: eq. (7) shares the load between
+/// pairs on the nominal path only.
+pub const PEDRERO_WITH_CORNERS: &str = "`contact.load_sharing` = \"pedrero\" (paper eq. 7) shares the load between pairs on the nominal path of contact only, but `contact.path` = \"extended\" lets the tip corners touch beyond it: give `contact.path` = \"nominal\" for the paper's model, or `contact.load_sharing` = \"stiffness\" or \"auto\", which share the load by each pair's compression";
+
 /// The warning of a case whose teeth differ under `contact.load_sharing` = "auto": its
 /// pairs share the load by their compressions, identical teeth by Pedrero's law, so a
 /// comparison of the two (a sweep across zero error, a baseline) mixes two laws; on the
@@ -139,6 +143,10 @@ impl Model {
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         if case.gear.helix_angle_deg != 0.0 {
             return Err(ModelError(vec![helical_refusal(case.gear.helix_angle_deg)]));
+        }
+        if case.contact.load_sharing == LoadSharingModel::Pedrero && case.contact.path.is_extended()
+        {
+            return Err(ModelError(vec![PEDRERO_WITH_CORNERS.into()]));
         }
         if !case.stage.is_empty() {
             return Self::train_from_case(case);
