@@ -309,6 +309,21 @@ fn the_built_in_case_is_quiet_and_speeds_are_taken_in_rpm_or_warned_about() {
         err.contains("pitch-line velocity") && err.contains("`operating.input_speed_rpm`"),
         "{err}"
     );
+    // Above the range (1000 Hz) a speed that reads as rpm is refused with the same hint;
+    // a key with no rpm twin gets the range alone.
+    rejected(
+        &["stiffness", "--set", "operating.input_speed_hz=1500"],
+        &[
+            "[1e-6, 1000]",
+            "1500 rpm = 25 Hz",
+            "`operating.input_speed_rpm`",
+        ],
+    );
+    let err = rejected(
+        &["stiffness", "--set", "operating.input_speed_hz=90000"],
+        &["[1e-6, 1000]"],
+    );
+    assert!(!err.contains("rpm"), "90000 rpm is out of range too: {err}");
 }
 
 #[test]

@@ -159,8 +159,25 @@ fn every_label_is_the_value_of_the_study_that_produced_it() {
             assert_eq!(row[col("fault")], cond.fault);
             assert_eq!(num("severity"), cond.severity);
             assert_eq!(num("mesh_hz"), 19.0 * d.speeds_hz[v]);
+            assert_eq!(num("sampling_rate_hz"), cond.case.signals.sampling_rate_hz);
         }
     }
+    // Every index column has a unit and a meaning in the metadata, and the sensors' place
+    // is said in words.
+    let m: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("metadata.json")).unwrap()).unwrap();
+    for name in &h {
+        assert!(m["index_columns"][name].is_string(), "unit of {name}");
+        let meaning = m["index_column_meanings"][name].as_str().unwrap_or("-");
+        assert!(meaning.len() > 10, "meaning of {name}: {meaning:?}");
+    }
+    assert!(
+        m["record"]["sensor_placement"]
+            .as_str()
+            .is_some_and(|p| p.contains("bearing housing")),
+        "{}",
+        m["record"]
+    );
 }
 
 #[test]

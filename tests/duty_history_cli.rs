@@ -136,6 +136,23 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
         assert!(e.contains("--history") && e.contains(expect), "{e}");
         assert!(!out.exists());
     }
+    // A spreadsheet's CSV in a decimal-comma locale: one column; the separator named.
+    let h = dir.path().join("semicolon.csv");
+    std::fs::write(
+        &h,
+        "time_s;torque_nm;input_speed_hz\n0;10,5;30\n1;10,5;30\n",
+    )
+    .unwrap();
+    let o = gearwear(&[
+        "load-spectrum",
+        "--history",
+        h.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("separated by `;`"), "{}", stderr(&o));
+    assert!(!out.exists());
     // 1 s sampling with a 60 s hole: a gap, named by its rows.
     let mut t = String::from(header);
     for i in (0..20).chain(80..100) {
@@ -249,4 +266,38 @@ fn bins_below_the_merge_share_join_their_nearest_keeping_revolutions_and_torque(
         );
         assert!(!out.exists());
     }
+}
+
+#[test]
+fn reversed_torque_is_counted_as_idle_and_said_so() {
+    // 10 s driving at 50 N m, then 10 s braking at -50 N m at the same 25 Hz, held: the
+    // spectrum keeps the 10 s under load, the warning names the 10 s of the coast flank
+    // (2.8e-3 h, half the span), and the summary records them.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let h = dir.path().join("h.csv");
+    let mut t = String::from("time_s,torque_nm,input_speed_hz\n");
+    for i in 0..=20 {
+        t.push_str(&format!("{i},{},25\n", if i < 10 { 50 } else { -50 }));
+    }
+    std::fs::write(&h, t).unwrap();
+    let o = gearwear(&[
+        "load-spectrum",
+        "--history",
+        h.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--interpolation",
+        "hold",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("0.002778 h") && e.contains("50 %") && e.contains("negative torque"),
+        "{e}"
+    );
+    let s: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["time"]["reversed_torque_s"], 10.0);
+    assert_eq!(s["time"]["under_load_s"], 10.0);
 }

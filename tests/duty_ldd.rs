@@ -117,6 +117,43 @@ fn total_time_is_conserved_and_idle_time_is_counted_apart() {
 }
 
 #[test]
+fn the_time_with_reversed_torque_is_counted_apart_exactly() {
+    // Torque 100 - 50 t N m over t = 0..4 s at 20 Hz: negative from t = 2 s on (the coast
+    // flank loaded), 2 s exactly under linear interpolation; then the speed ramps to zero
+    // over 4..6 s with the torque still negative, which is stopped, not reversed, only
+    // while the speed is zero (never here: it reaches zero at the last sample).
+    let mut h = History::default();
+    for (t, q, f) in [
+        (0.0, 100.0, 20.0),
+        (4.0, -100.0, 20.0),
+        (6.0, -100.0, 0.0),
+        (7.0, 0.0, 0.0),
+    ] {
+        h.time_s.push(t);
+        h.torque_nm.push(q);
+        h.input_speed_hz.push(f);
+    }
+    let l = load_duration_distribution(&h, settings(Interpolation::Linear, Level::Mean));
+    // Reversed: 2..4 s and 4..6 s (the speed above zero until t = 6 s): 4 s. Idle also
+    // holds 6..7 s, standing still.
+    assert!(
+        close(l.reversed_torque_time_s, 4.0),
+        "{}",
+        l.reversed_torque_time_s
+    );
+    assert!(close(l.idle_time_s, 5.0), "{}", l.idle_time_s);
+    assert!(close(l.loaded_time_s(), 2.0), "{}", l.loaded_time_s());
+    // Held samples: 0..4 s at +100 N m, 4..6 s at -100 N m turning, 6..7 s standing.
+    let l = load_duration_distribution(&h, settings(Interpolation::Hold, Level::Mean));
+    assert!(
+        close(l.reversed_torque_time_s, 2.0),
+        "{}",
+        l.reversed_torque_time_s
+    );
+    assert!(close(l.idle_time_s, 3.0), "{}", l.idle_time_s);
+}
+
+#[test]
 fn a_csv_history_gives_the_same_counts() {
     let mut text = String::from("time_s,torque_nm,input_speed_rpm\n");
     for i in 0..=80 {

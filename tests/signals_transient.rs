@@ -62,6 +62,7 @@ fn flat_path() -> gearwear::signals::transfer::TransferPath {
             frf: vec![frf],
         }),
         description: "flat".into(),
+        placement: "the pinion's y bearing force itself".into(),
     }
 }
 

@@ -12,6 +12,7 @@ use crate::duty::history::{parse_history, DEFAULT_GAP_FACTOR};
 use crate::duty::ldd::{
     load_duration_distribution, LddSettings, MAX_SPEED_CLASSES, MAX_TORQUE_CLASSES,
 };
+use crate::format::{shown, shown_percent};
 use crate::io::input::MAX_HISTORY_BYTES;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
@@ -120,6 +121,13 @@ impl Job for LoadSpectrumJob {
             )
         })?;
         let ldd = load_duration_distribution(&history, self.settings);
+        if ldd.reversed_torque_time_s > 0.0 {
+            observer.warning(&format!(
+                "{} h of the history ({} of its span) has a negative torque while the shaft turns (the coast flank loaded: braking or overrunning); it is counted as idle, because the model wears the drive flank only",
+                shown(ldd.reversed_torque_time_s / 3600.0),
+                shown_percent(ldd.reversed_torque_time_s / ldd.span_s)
+            ));
+        }
         let Some(mut spectrum) = ldd.spectrum(self.torque_shaft) else {
             return Err(JobError::input(Problem::given(
                 Arg::History,

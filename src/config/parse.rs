@@ -107,12 +107,33 @@ pub(super) fn check_range(key: &str, v: &Value, valid: Valid) -> Option<String> 
     };
     (!ok).then(|| {
         format!(
-            "`{key}` = {} is invalid{}: expected {}",
+            "`{key}` = {} is invalid{}: expected {}{}",
             show(v),
             first_bad_element(key, v, valid),
-            valid.describe()
+            valid.describe(),
+            rpm_hint(key, v, valid)
         )
     })
+}
+
+/// For a speed in Hz out of range whose value read as rpm (v / 60 Hz) would be in range,
+/// and that has an rpm twin key: the likely mix-up of units, named. Empty otherwise.
+fn rpm_hint(key: &str, v: &Value, valid: Valid) -> String {
+    let (Valid::Num(r), Some(x)) = (valid, as_number(v)) else {
+        return String::new();
+    };
+    let Some(stem) = key.strip_suffix("_hz") else {
+        return String::new();
+    };
+    let twin = format!("{stem}_rpm");
+    if !r.contains(x / 60.0) || !KEYS.iter().any(|k| k.key == twin) {
+        return String::new();
+    }
+    format!(
+        "; if the speed was meant in rpm ({} rpm = {} Hz), give it as `{twin}`",
+        show(v),
+        crate::format::shown(x / 60.0)
+    )
 }
 
 /// For an array key, which value is out of range (0-based, and the tooth it belongs to

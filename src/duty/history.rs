@@ -61,9 +61,19 @@ fn columns(header: &csv::ByteRecord) -> Result<Columns, HistoryError> {
         .iter()
         .map(|h| String::from_utf8_lossy(h).into_owned())
         .collect();
+    // One column whose name holds another separator: the file was written with `;` or a
+    // tab (a spreadsheet's CSV in a locale with a decimal comma), which the reader, set to
+    // commas, cannot split.
+    let separator = match names.as_slice() {
+        [one] if one.contains(';') => {
+            "; the file seems separated by `;`: write it with commas (and a decimal point)"
+        }
+        [one] if one.contains('\t') => "; the file seems separated by tabs: write it with commas",
+        _ => "",
+    };
     let missing = |what: &str| {
         HistoryError::one(format!(
-            "the history has no {what} column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm",
+            "the history has no {what} column (header: {}); expected time_s, torque_nm and input_speed_hz or input_speed_rpm{separator}",
             crate::format::clip(&names.join(","), crate::format::SHOWN_CHARS)
         ))
     };

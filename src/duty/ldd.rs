@@ -107,6 +107,10 @@ pub struct Ldd {
     pub torque_cycles_nm: Vec<f64>,
     /// Time with torque or speed not positive (no load on the drive flank), s.
     pub idle_time_s: f64,
+    /// The part of `idle_time_s` with the torque negative while the shaft turns (the
+    /// coast flank loaded: braking, overrunning), s. Counted as idle because the model
+    /// wears the drive flank only; reported so that it is never dropped silently.
+    pub reversed_torque_time_s: f64,
     /// Span of the record, last time - first time, s.
     pub span_s: f64,
 }
@@ -200,12 +204,16 @@ pub fn load_duration_distribution(h: &History, settings: LddSettings) -> Ldd {
         cycles: vec![0.0; nt * ns],
         torque_cycles_nm: vec![0.0; nt * ns],
         idle_time_s: 0.0,
+        reversed_torque_time_s: 0.0,
         span_s: h.time_s.last().unwrap_or(&0.0) - h.time_s.first().unwrap_or(&0.0),
     };
     // Adds a piece of duration dt at midpoint values (q, f) with its integrals.
     let mut add = |dt: f64, q: f64, f: f64, cycles: f64, torque_cycles: f64| {
         if q <= 0.0 || f <= 0.0 {
             ldd.idle_time_s += dt;
+            if q < 0.0 && f > 0.0 {
+                ldd.reversed_torque_time_s += dt;
+            }
             return;
         }
         let i = class(q, wt, nt) * ns + class(f, wf, ns);

@@ -195,6 +195,7 @@ pub fn ldd_artifacts(
         "time": {
             "under_load_s": ldd.loaded_time_s(),
             "idle_s": ldd.idle_time_s,
+            "reversed_torque_s": ldd.reversed_torque_time_s,
             "counted_s": counted,
             "span_s": ldd.span_s,
         },

@@ -61,6 +61,7 @@ pub fn chain_json(chain: &SignalChain, samples: usize) -> Value {
             "duty": crate::signals::tachometer::DUTY,
         },
         "sensors": chain.path.sensors,
+        "sensor_placement": chain.path.placement,
         "transfer_path": chain.path.description,
     })
 }

@@ -44,6 +44,7 @@ pub(crate) fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath
             sensors: t.sensors.clone(),
             model: PathModel::Table(t),
             description: format!("FRF table {name}"),
+            placement: format!("as the FRF table {name} defines them: each sensor's accelerance to the bearing forces (pinion x, y; gear x, y)"),
         });
     }
     let f: ModalFile =
@@ -106,6 +107,7 @@ pub(crate) fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath
         sensors: f.sensors,
         model: PathModel::Modal(modes),
         description: format!("modal path {name}"),
+        placement: format!("as the modal path {name} defines them: each sensor's modal constants to the bearing forces (pinion x, y; gear x, y)"),
     })
 }
 

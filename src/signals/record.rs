@@ -194,6 +194,7 @@ mod tests {
                 gains_per_kg: vec![[0.0, gain, 0.0, 0.0]],
             }]),
             description: "test".into(),
+            placement: "test".into(),
         };
         c.length = RecordLength::Seconds(0.5);
         c

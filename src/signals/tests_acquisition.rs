@@ -26,6 +26,7 @@ fn flat_chain(fs: f64, a_db: f64) -> SignalChain {
             frf: vec![frf],
         }),
         description: "flat".into(),
+        placement: "test".into(),
     };
     c.acquisition.sampling_rate_hz = fs;
     c.acquisition.anti_alias_attenuation_db = a_db;

@@ -49,6 +49,8 @@ pub struct TransferPath {
     pub model: PathModel,
     /// What the path is (for metadata): "generic housing (...)", a file name, ...
     pub description: String,
+    /// Where the sensors sit and what direction they measure, in words (for metadata).
+    pub placement: String,
 }
 
 /// Modal accelerance of one mode at frequency f (see the module docs), m/s^2 per N.
@@ -118,6 +120,7 @@ impl TransferPath {
             model: PathModel::Modal(modes),
             description: "generic housing (built-in, not measured): modes 2100, 3700, 6300 Hz"
                 .into(),
+            placement: "`input` on the pinion's bearing housing, `output` on the gear's; both measure the housing's acceleration in y, perpendicular to the line of centres (a top-of-housing mount)".into(),
         }
     }
 

@@ -21,7 +21,7 @@ use crate::io::{OutputDir, OutputError};
 use crate::report::artifacts::{stage_figures, FigureFile};
 use crate::report::dataset_trends::trend_figure;
 use crate::report::figure_output::FigureOutput;
-use crate::study::dataset::index::index_columns;
+use crate::study::dataset::index::{column_meaning, index_columns};
 use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::Trajectory;
 use crate::study::dataset::trends::{trend_columns, trends};
@@ -317,7 +317,17 @@ pub fn stage_index_and_metadata(
         .as_str()
         .unwrap_or("-")
         .to_owned();
-    let (cols, units) = index_columns(&rows, &unit);
+    // One chain per dataset (`design::chain_problems`), so one sampling rate.
+    let rate_hz = body["record"]["sampling_rate_hz"]
+        .as_f64()
+        .filter(|r| r.is_finite() && *r > 0.0)
+        .ok_or_else(|| {
+            BuildError::Format(format!(
+                "{}: no valid record.sampling_rate_hz",
+                root.join(DATASET_REL).display()
+            ))
+        })?;
+    let (cols, units) = index_columns(&rows, &unit, rate_hz);
     let units_json: serde_json::Map<String, Value> =
         units.iter().map(|(n, u)| (n.clone(), json!(u))).collect();
     let meta = vec![(
@@ -344,6 +354,10 @@ pub fn stage_index_and_metadata(
         stage_figures(out, &[fig], figures).map_err(|e| BuildError::Format(e.to_string()))?;
     }
     let mut metadata = body;
+    metadata["index_column_meanings"] = json!(units
+        .iter()
+        .map(|(n, _)| (n.clone(), json!(column_meaning(n))))
+        .collect::<serde_json::Map<String, Value>>());
     metadata["index_columns"] = Value::Object(units_json);
     metadata["trajectories"] = json!(trajectories(root)
         .iter()

@@ -12,26 +12,66 @@ use crate::io::parquet::{Column, ColumnData};
 use crate::signals::indicators::ShaftIndicators;
 use std::collections::BTreeMap;
 
-/// (column, unit) of the label columns, in order.
-pub const LABEL_COLUMNS: [(&str, &str); 17] = [
-    ("record_id", "-"),
-    ("file", "-"),
-    ("condition", "-"),
-    ("fault", "-"),
-    ("severity", "-"),
-    ("trajectory_state", "-"),
-    ("cycles", "pinion cycles"),
-    ("max_wear_pinion_um", "um"),
-    ("max_wear_gear_um", "um"),
-    ("wear_limit_um", "um"),
-    ("remaining_cycles", "pinion cycles"),
-    ("failure_censored", "0/1"),
-    ("input_speed_hz", "Hz"),
-    ("load_torque_nm", "N m"),
-    ("mesh_hz", "Hz"),
-    ("realisation", "-"),
-    ("noise_seed", "-"),
+/// (column, unit, meaning) of the label columns, in order.
+pub const LABEL_COLUMNS: [(&str, &str, &str); 18] = [
+    ("record_id", "-", "the record's number in the design (its order: metadata `record_id`)"),
+    ("file", "-", "the record's signal file, relative to the dataset folder"),
+    ("condition", "-", "the design's condition the record belongs to"),
+    ("fault", "-", "what the condition's case models (a label tied to the case's faults)"),
+    ("severity", "-", "the design's grade of the fault (0 without one)"),
+    ("trajectory_state", "-", "the state's number along the condition's run to failure (0: new teeth)"),
+    ("cycles", "pinion cycles", "pinion load cycles run before the state"),
+    ("max_wear_pinion_um", "um", "deepest wear of the pinion's profile at the state"),
+    ("max_wear_gear_um", "um", "deepest wear of the gear's profile at the state"),
+    ("wear_limit_um", "um", "the wear depth that defines failure"),
+    ("remaining_cycles", "pinion cycles", "pinion cycles from the state to failure (to the trajectory's end when failure_censored = 1)"),
+    ("failure_censored", "0/1", "1 when failure was not reached within the trajectory: remaining_cycles is then a lower bound"),
+    ("input_speed_hz", "Hz", "pinion shaft speed of the record"),
+    ("load_torque_nm", "N m", "load torque of the record (on the shaft the case names)"),
+    ("mesh_hz", "Hz", "mesh frequency of the record (teeth of the pinion x its speed)"),
+    ("sampling_rate_hz", "Hz", "sampling rate of the record's channels and tachometer"),
+    ("realisation", "-", "the noise realisation's number at this state, speed and load"),
+    ("noise_seed", "-", "seed of the record's measurement noise"),
 ];
+
+/// What an indicator column means, by its suffix (`<sensor>_<suffix>` or
+/// `<sensor>_<shaft>_<suffix>`; docs/SIGNALS.md defines each).
+const INDICATOR_MEANINGS: [(&str, &str); 13] = [
+    ("rms", "root mean square of the channel's record"),
+    ("crest_factor", "peak over RMS of the channel's record"),
+    ("kurtosis", "normalised fourth moment of the channel's record"),
+    ("tsa_rms", "RMS of the shaft's time-synchronous average (TSA)"),
+    ("fm0", "peak-to-peak of the TSA over the sum of the amplitudes of its mesh harmonics 1..signals.mesh_harmonics (FM0)"),
+    ("fm4", "kurtosis of the TSA's difference signal (FM4)"),
+    ("m6a", "sixth moment of the difference signal over its variance cubed (M6A)"),
+    ("m8a", "eighth moment of the difference signal over its variance to the fourth (M8A)"),
+    ("na4", "fourth moment of the residual signal over the squared mean residual variance of the run so far (NA4)"),
+    ("nb4", "NA4 of the envelope of the band-pass signal around the mesh frequency (NB4)"),
+    ("energy_ratio", "RMS of the difference signal over RMS of the regular signal"),
+    ("sideband_level_factor", "sum of the two first-order sidebands of the mesh fundamental over the TSA's RMS"),
+    ("sideband_index", "mean amplitude of the two first-order sidebands of the mesh fundamental"),
+];
+
+/// The meaning of index column `name` (a label, or a channel's indicator: sensor name,
+/// then the shaft of a TSA indicator), for the metadata.
+pub fn column_meaning(name: &str) -> String {
+    if let Some((_, _, m)) = LABEL_COLUMNS.iter().find(|(n, _, _)| *n == name) {
+        return (*m).to_string();
+    }
+    for shaft in ["pinion", "gear"] {
+        for (suffix, m) in &INDICATOR_MEANINGS[3..] {
+            if name.ends_with(&format!("_{shaft}_{suffix}")) {
+                return format!("{m}, {shaft} shaft, of the sensor the name begins with");
+            }
+        }
+    }
+    for (suffix, m) in &INDICATOR_MEANINGS[..3] {
+        if name.ends_with(&format!("_{suffix}")) {
+            return format!("{m}, of the sensor the name begins with");
+        }
+    }
+    "-".into()
+}
 
 /// Shaft indicator columns and whether they carry the channel unit.
 const SHAFT_COLUMNS: [(&str, bool); 10] = [
@@ -142,7 +182,7 @@ pub fn sensor_column_problems(sensors: &[String]) -> Vec<String> {
     let mut p = Vec::new();
     let mut owner: BTreeMap<String, String> = LABEL_COLUMNS
         .iter()
-        .map(|(n, _)| (n.to_string(), "the labels".to_string()))
+        .map(|(n, _, _)| (n.to_string(), "the labels".to_string()))
         .collect();
     for (i, s) in sensors.iter().enumerate() {
         if s.trim().is_empty() {
@@ -177,6 +217,7 @@ pub fn sensor_column_problems(sensors: &[String]) -> Vec<String> {
 pub fn index_columns(
     rows: &[RecordLabels],
     channel_unit: &str,
+    sampling_rate_hz: f64,
 ) -> (Vec<Column>, Vec<(String, String)>) {
     use ColumnData::*;
     let f = |g: &dyn Fn(&RecordLabels) -> f64| F64(rows.iter().map(g).collect());
@@ -198,17 +239,18 @@ pub fn index_columns(
         f(&|l| l.input_speed_hz),
         f(&|l| l.load_torque_nm),
         f(&|l| l.mesh_hz),
+        f(&|_| sampling_rate_hz),
         i(&|l| l.realisation as i64),
         i(&|l| l.noise_seed as i64),
     ];
     let mut cols: Vec<Column> = LABEL_COLUMNS
         .iter()
         .zip(data)
-        .map(|((n, _), d)| Column::new(*n, d))
+        .map(|((n, _, _), d)| Column::new(*n, d))
         .collect();
     let mut units: Vec<(String, String)> = LABEL_COLUMNS
         .iter()
-        .map(|(n, u)| (n.to_string(), u.to_string()))
+        .map(|(n, u, _)| (n.to_string(), u.to_string()))
         .collect();
     let channels: Vec<String> = rows.first().map_or(Vec::new(), |l| {
         l.indicators.iter().map(|c| c.channel.clone()).collect()
