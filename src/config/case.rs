@@ -233,8 +233,9 @@ pub enum ContactPathModel {
 }
 
 impl ContactPathModel {
-    /// The model of a case that does not set `contact.path`.
-    pub const DEFAULT: Self = Self::Nominal;
+    /// The model of a case that does not set `contact.path`: corner contact (issue 32;
+    /// the paper's own model stays one key away).
+    pub const DEFAULT: Self = Self::Extended;
 
     /// Corners touch beyond the path.
     pub fn is_extended(self) -> bool {

@@ -82,7 +82,8 @@ pub const PEDRERO_WITH_CORNERS: &str = "`contact.load_sharing` = \"pedrero\" (pa
 /// pairs share the load by their compressions, identical teeth by Pedrero's law, so a
 /// comparison of the two (a sweep across zero error, a baseline) mixes two laws; on the
 /// paper's case the law alone moves the initial wear rate by about a fifth
-/// (docs/MODEL.md, section 9).
+/// (docs/MODEL.md, section 9). Given on the nominal path only: with corner contact
+/// (`contact.path` = "extended") identical teeth share by compression too.
 pub const AUTO_SHARING_WITH_RESOLVED_TEETH: &str = "the teeth differ or are modified, so the pairs share the load by their own compressions (`contact.load_sharing` = \"auto\"), while identical teeth use Pedrero's law (paper eq. 7); to compare such cases with identical teeth under one law, give `contact.load_sharing` = \"stiffness\"";
 
 /// Warnings for the gears whose ISO 1328-1 tolerances (`teeth.accuracy_grade`) extrapolate
@@ -199,7 +200,11 @@ impl Model {
                 LoadSharingModel::Pedrero => {
                     return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
                 }
-                LoadSharingModel::Auto => warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into()),
+                // With corner contact identical teeth share by compression too: one law.
+                LoadSharingModel::Auto if !case.contact.path.is_extended() => {
+                    warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into())
+                }
+                LoadSharingModel::Auto => {}
                 LoadSharingModel::Stiffness => {}
             }
         }
