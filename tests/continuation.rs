@@ -19,9 +19,13 @@ use gearwear::study::sweep::CaseRecord;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-const CASE: [&str; 8] = [
+const CASE: [&str; 10] = [
     // The foundation convention sets the mesh stiffness and so where the band lies:
-    // the speeds below were chosen on this one.
+    // the speeds below were chosen on this one, with the paper's contact model. With
+    // corner contact the up and down branches at 50 Hz differed by 1.1e-4 when this was
+    // written, beyond the 1e-4 allowed below for convergence: open (issue 32).
+    "--set",
+    "contact.path=nominal",
     "--set",
     "stiffness.fillet_root_angle=flank_extension",
     "--set",

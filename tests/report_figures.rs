@@ -46,7 +46,7 @@ fn all_artifacts() -> Vec<(&'static str, Artifacts)> {
     vec![
         (
             "run",
-            run_artifacts(model, study, &meta, Default::default()),
+            run_artifacts(model, study, None, &meta, Default::default()),
         ),
         ("stiffness", stiffness_artifacts(model)),
         (
@@ -128,6 +128,7 @@ fn wear_figures_have_distinct_tables() {
     let a = run_artifacts(
         model,
         study,
+        None,
         &RunMetadata::new("run", &model.case),
         Default::default(),
     );
@@ -290,6 +291,7 @@ fn the_built_in_case_keeps_its_paper_comparison() {
     let a = run_artifacts(
         model,
         study,
+        None,
         &RunMetadata::new("run", &model.case),
         Default::default(),
     );
@@ -319,6 +321,7 @@ fn run_figure(stem: &str) -> gearwear::report::plot::Figure {
     let a = run_artifacts(
         model,
         study,
+        None,
         &RunMetadata::new("run", &model.case),
         Default::default(),
     );

@@ -169,6 +169,9 @@ fn pedrero_load_sharing_on_teeth_that_differ_names_both_keys() {
             "teeth.runout_gear_um=2",
             "--set",
             "contact.load_sharing=pedrero",
+            // Eq. (7) is for the nominal path only (refused with corner contact first).
+            "--set",
+            "contact.path=nominal",
         ],
         &[
             "`contact.load_sharing` = \"pedrero\"",
@@ -183,6 +186,8 @@ fn pedrero_load_sharing_on_teeth_that_differ_names_both_keys() {
             "wear.worn_geometry=worn",
             "--set",
             "contact.load_sharing=pedrero",
+            "--set",
+            "contact.path=nominal",
         ],
         &[
             "`contact.load_sharing` = \"pedrero\"",

@@ -10,8 +10,15 @@ use gearwear::dynamics::model::ContactFrame;
 use gearwear::dynamics::steady::solve_steady_state;
 use gearwear::study::Model;
 
+/// The built-in case with `sets`, on the paper's contact model (`contact.path` =
+/// "nominal"): the hand calculations here sum the pairs on the nominal path
+/// (`pairs_in_contact`), and eq. (7) is defined there only. The corner contact beyond
+/// the path is checked in tests/corner_contact.rs.
 fn model(sets: &[&str]) -> Model {
-    let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+    let sets: Vec<String> = std::iter::once("contact.path=nominal")
+        .chain(sets.iter().copied())
+        .map(|s| s.to_string())
+        .collect();
     Model::from_case(&load_case("", &sets).expect("valid case")).expect("valid model")
 }
 

@@ -71,6 +71,11 @@ fn reflected_pair(train: &Model) -> Model {
             ),
             format!("dynamics.mesh_damping_ratio={zeta:e}"),
             "friction.model=none".to_string(),
+            // The train's own contact model.
+            format!(
+                "contact.path={}",
+                serde_json::to_value(train.case.contact.path).unwrap()
+            ),
         ]
     };
     let build = |zeta: f64| {
@@ -137,9 +142,15 @@ fn a_second_stage_that_cannot_move_leaves_the_first_pair_alone() {
     // (first order in the compliance; the solver's own error, ~1e-6 of the amplitudes,
     // is far below both). Measured: compliance 3.9e-4 -> 1.3e-4, difference 2.2e-4 ->
     // 1.2e-4 of the amplitudes.
+    // The paper's contact model: with corner contact the difference fell by 22 %, not a
+    // third, when this was written (a corner's engagement moves with the deflection the
+    // reflection changes): open (issue 32).
     let mut previous: Option<(f64, f64)> = None;
     for width in [500.0, 1900.0] {
-        let train = model(&stiff_second_stage(width), &["friction.model=none"]);
+        let train = model(
+            &stiff_second_stage(width),
+            &["friction.model=none", "contact.path=nominal"],
+        );
         let pair = reflected_pair(&train);
         let eps = neglected_compliance(&train);
         let diff = difference(&train, &pair);

@@ -2,16 +2,20 @@
 //! wear studies with checkpoints, the dynamic response at three wear states) with its
 //! report, figures and the CSV behind each.
 
-use super::observer::Observer;
+use super::observer::{keep_going, Observer};
 use super::wear_runs::{run_modes, stops};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
+use crate::config::case::{ContactPathModel, LoadSharingModel};
 use crate::config::Case;
+use crate::report::case::is_paper_case;
 use crate::report::figure_output::FigureRequest;
 use crate::report::paper::run_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::paper::run_paper_study;
+use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::{WearMode, WearRun};
+use crate::study::Model;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -68,10 +72,49 @@ impl Job for RunJob {
             },
         )?;
         let s = &study.runs;
-        let artifacts = run_artifacts(&model, s, &meta, figures);
+        let twin = contact_twin(&self.case, observer);
+        let twin = twin.as_ref().map(|(m, t)| (m, t));
+        let artifacts = run_artifacts(&model, s, twin, &meta, figures);
         let incomplete = stops(&[&s.dynamic, &s.quasi_static], observer);
         let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
         outcome.incomplete = incomplete;
         Ok(outcome)
+    }
+}
+
+/// The paper's case under the other contact model (`contact.path`, docs/MODEL.md section
+/// 4.2), so that the report sets the nominal path (the paper's own model) and the
+/// extended contact (the default) beside the paper's numbers (issue 32); run whole,
+/// without checkpoints. `None` for any other case, where the other model does not take
+/// the case (Pedrero's law given explicitly, which the extended contact refuses), or
+/// where its study fails (a warning says so; the case's own results stand).
+fn contact_twin(case: &Case, observer: &dyn Observer) -> Option<(Model, PaperStudy)> {
+    if !is_paper_case(case) || case.contact.load_sharing == LoadSharingModel::Pedrero {
+        return None;
+    }
+    let mut twin = case.clone();
+    twin.contact.path = match case.contact.path {
+        ContactPathModel::Extended => ContactPathModel::Nominal,
+        ContactPathModel::Nominal => ContactPathModel::Extended,
+    };
+    let name = serde_json::to_value(twin.contact.path).unwrap_or_default();
+    observer.note(&format!(
+        "the paper's case again with contact.path = {name}, for the comparison's other column"
+    ));
+    let (d, q) = (
+        WearRun::new(WearMode::Dynamic),
+        WearRun::new(WearMode::QuasiStatic),
+    );
+    let study = Model::from_case(&twin)
+        .map_err(|e| anyhow::anyhow!(e.0.join("; ")))
+        .and_then(|m| Ok((run_paper_study(&m, d, q, &|_, _| keep_going(observer))?, m)));
+    match study {
+        Ok((study, model)) => Some((model, study)),
+        Err(e) => {
+            observer.warning(&format!(
+                "the paper's case with contact.path = {name} (the comparison's other column) gave no result: {e:#}"
+            ));
+            None
+        }
     }
 }

@@ -224,18 +224,46 @@ impl LoadSharingModel {
     }
 }
 
+/// Where the teeth of a pair may touch (docs/MODEL.md, section 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactPathModel {
+    /// On the path of contact and, under load, by the tip corners before its start and
+    /// after its end (corner contact, `geometry::corner`): the load passes gradually
+    /// between pairs.
+    Extended,
+    /// Only on the nominal path of contact: perfect involutes meeting nowhere else (the
+    /// paper's model).
+    Nominal,
+}
+
+impl ContactPathModel {
+    /// The model of a case that does not set `contact.path`: corner contact (issue 32;
+    /// the paper's own model stays one key away).
+    pub const DEFAULT: Self = Self::Extended;
+
+    /// Corners touch beyond the path.
+    pub fn is_extended(self) -> bool {
+        self == Self::Extended
+    }
+}
+
 /// `[contact]`: how the load is shared between pairs in contact.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ContactSection {
     /// The law the mesh force is split by between two pairs in contact.
     pub load_sharing: LoadSharingModel,
+    /// Where the teeth of a pair may touch: the nominal path only, or beyond it by
+    /// the tip corners.
+    pub path: ContactPathModel,
 }
 
 impl Default for ContactSection {
     fn default() -> Self {
         Self {
             load_sharing: LoadSharingModel::Auto,
+            path: ContactPathModel::DEFAULT,
         }
     }
 }

@@ -9,12 +9,17 @@
 //! single e_t is the stiffness-weighted mean gap when all pairs touch).
 
 /// Gap along the line of action as a function of the contact position rho1, tabulated on
-/// a uniform grid (piecewise linear). Zero everywhere when empty.
+/// a uniform grid (piecewise linear). Zero everywhere when empty. Built from the two
+/// flanks' wear, it keeps each flank's table too, for contacts whose two flanks meet at
+/// points that are not conjugate (corner contact, `dynamics::contact_path`).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PairGap {
     rho_start_m: f64,
     spacing_m: f64,
     gap_m: Vec<f64>,
+    /// Pinion and gear wear (the gear's at the conjugate points), m; None: only the sum
+    /// is known.
+    flanks: Option<[Vec<f64>; 2]>,
 }
 
 impl PairGap {
@@ -23,6 +28,7 @@ impl PairGap {
         rho_start_m: 0.0,
         spacing_m: 0.0,
         gap_m: Vec::new(),
+        flanks: None,
     };
 
     /// No gap (new teeth).
@@ -36,6 +42,25 @@ impl PairGap {
             rho_start_m,
             spacing_m,
             gap_m,
+            flanks: None,
+        }
+    }
+
+    /// The gap of a pinion flank that lost `pinion_m[i]` and a gear flank that lost
+    /// `gear_m[i]` at the conjugate points of rho1 = rho_start + i spacing (m): their sum,
+    /// with each flank kept.
+    pub fn from_flanks(
+        rho_start_m: f64,
+        spacing_m: f64,
+        pinion_m: Vec<f64>,
+        gear_m: Vec<f64>,
+    ) -> Self {
+        let gap_m = pinion_m.iter().zip(&gear_m).map(|(a, b)| a + b).collect();
+        Self {
+            rho_start_m,
+            spacing_m,
+            gap_m,
+            flanks: Some([pinion_m, gear_m]),
         }
     }
 
@@ -60,6 +85,36 @@ impl PairGap {
     pub fn values_m(&self) -> &[f64] {
         &self.gap_m
     }
+
+    /// Gap (m) of a contact that loads the pinion flank at `pinion_rho1_m` and the gear
+    /// flank at the point conjugate to `gear_rho1_m`, and its slopes along each (d gap /d
+    /// pinion_rho1, d gap / d gear_rho1): each flank's wear where it is touched. With only
+    /// the sum known, the sum at the pinion's point. Clamped to the table.
+    pub fn at_flanks(&self, pinion_rho1_m: f64, gear_rho1_m: f64) -> (f64, f64, f64) {
+        match &self.flanks {
+            None => {
+                let (g, s) = self.at(pinion_rho1_m);
+                (g, s, 0.0)
+            }
+            Some([p, g]) => {
+                let (a, sa) = lerp_table(p, self.rho_start_m, self.spacing_m, pinion_rho1_m);
+                let (b, sb) = lerp_table(g, self.rho_start_m, self.spacing_m, gear_rho1_m);
+                (a + b, sa, sb)
+            }
+        }
+    }
+}
+
+/// Value and slope of a table on the grid rho_start + i spacing at rho (clamped; linear).
+fn lerp_table(v: &[f64], rho_start_m: f64, spacing_m: f64, rho_m: f64) -> (f64, f64) {
+    let n = v.len();
+    if n < 2 {
+        return (0.0, 0.0);
+    }
+    let u = ((rho_m - rho_start_m) / spacing_m).clamp(0.0, (n - 1) as f64);
+    let i = (u as usize).min(n - 2);
+    let t = u - i as f64;
+    (v[i] + (v[i + 1] - v[i]) * t, (v[i + 1] - v[i]) / spacing_m)
 }
 
 /// An external transmission error e(theta) over one mesh period (periodic), m, with the

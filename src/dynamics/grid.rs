@@ -11,12 +11,27 @@
 //! grid of that period holds every mesh's events ([`train_nodes`]).
 
 use super::model::GearSystem;
+use crate::geometry::pair::Reach;
 use crate::geometry::GearPair;
 
-/// Node times within one mesh period, s, from 0 to the period (both included).
+/// Node times within one mesh period, s, from 0 to the period (both included), for pairs
+/// followed on the path of contact only.
 pub fn period_nodes(pair: &GearPair, pinion_speed_rad_s: f64, steps: usize) -> Vec<f64> {
+    period_nodes_in(pair, pair.nominal_reach(), pinion_speed_rad_s, steps)
+}
+
+/// As [`period_nodes`] for pairs followed over `reach` (`dynamics::contact_path`): the
+/// phases where a pair enters or leaves the reach are events too (the set of pairs
+/// changes there), beside the path's ends (where a corner contact turns into the path's
+/// and the pair's stiffness has a kink).
+pub fn period_nodes_in(
+    pair: &GearPair,
+    reach: Reach,
+    pinion_speed_rad_s: f64,
+    steps: usize,
+) -> Vec<f64> {
     let period_rad = pair.mesh_angle_rad();
-    let events = period_events(pair);
+    let events = period_events(pair, reach);
     let n_seg = events.len() - 1;
     let steps = steps.max(2 * n_seg);
     let mut nodes = Vec::with_capacity(steps + 1);
@@ -44,9 +59,15 @@ pub fn period_nodes(pair: &GearPair, pinion_speed_rad_s: f64, steps: usize) -> V
 /// The mesh events within one mesh period, pinion phase in rad from 0 to the period
 /// (both included), sorted: where the number of pairs in contact changes
 /// ([`GearPair::contact_change_phases`]) and where a pair passes the pitch point.
-fn period_events(pair: &GearPair) -> Vec<f64> {
+fn period_events(pair: &GearPair, reach: Reach) -> Vec<f64> {
     let period_rad = pair.mesh_angle_rad();
-    let mut events: Vec<f64> = pair.contact_change_phases();
+    // Where a pair enters or leaves the reach it is followed over (the set of pairs
+    // changes), and beyond the nominal path also the path's ends (where a corner contact
+    // turns into the path's and the pair's stiffness has a kink).
+    let mut events: Vec<f64> = pair.reach_change_phases(reach);
+    if reach != pair.nominal_reach() {
+        events.extend(pair.contact_change_phases());
+    }
     // Pitch-point passages: rho_A + r_b1 phase + k p_b = rho_pitch.
     for k in 0..pair.max_pairs() {
         let ph = (pair.rho_pitch_m - pair.rho_start_m - k as f64 * pair.base_pitch_m)
@@ -220,8 +241,9 @@ pub fn excitation_periods(sys: &GearSystem) -> Option<usize> {
 pub fn train_nodes(sys: &GearSystem, steps: usize) -> Option<Vec<f64>> {
     if sys.meshes.len() == 1 {
         let m = sys.mesh(0);
-        return Some(period_nodes(
+        return Some(period_nodes_in(
             m.parts.pair,
+            m.parts.contact.reach(),
             m.operating.speeds_rad_s[0],
             steps,
         ));
@@ -231,7 +253,7 @@ pub fn train_nodes(sys: &GearSystem, steps: usize) -> Option<Vec<f64>> {
     let mut shortest = f64::INFINITY;
     for (mesh, count) in sys.meshes.iter().zip(&counts) {
         let w = mesh.operating.speeds_rad_s[0];
-        let one = period_events(mesh.parts.pair);
+        let one = period_events(mesh.parts.pair, mesh.parts.contact.reach());
         let t_mesh = period / *count as f64;
         shortest = shortest.min(t_mesh);
         for k in 0..*count {

@@ -2,6 +2,7 @@
 //! quasi-static twin, signals and modes.
 
 pub mod assembly;
+pub mod contact_path;
 pub mod damped_modes;
 pub mod drive;
 pub mod excitation;

@@ -23,6 +23,7 @@
 
 use super::assembly::elements::Elements;
 use super::assembly::Assembly;
+use super::contact_path::ContactPath;
 use super::drive::Drive;
 use super::excitation::{ExternalError, PairGap};
 use super::params::{mesh_damping_n_s_per_m, DynamicParams};
@@ -107,6 +108,9 @@ pub struct MeshState {
     pub width_loss: [f64; MAX_PAIRS],
     /// Change of each pair's Hertz 1/R by its flanks' wear, 1/m (severe wear).
     pub curvature_change: [f64; MAX_PAIRS],
+    /// Pairs touching (or standing off) by a tip corner beyond the path of contact
+    /// (`dynamics::contact_path`); their `rho1_m` is the path's end they continue.
+    pub corner: [bool; MAX_PAIRS],
 }
 
 /// The elastic part of a mesh at one instant ([`GearSystem::springs`]).
@@ -133,6 +137,8 @@ pub struct MeshSprings {
     pub cycle: [i64; MAX_PAIRS],
     pub width_loss: [f64; MAX_PAIRS],
     pub curvature_change: [f64; MAX_PAIRS],
+    /// Pairs at a tip corner beyond the path of contact.
+    pub corner: [bool; MAX_PAIRS],
 }
 
 /// What one mesh is made of: the pair, its stiffness, friction and contact, its wear
@@ -155,6 +161,8 @@ pub struct MeshParts<'a> {
     /// The tooth-resolved mesh, when the teeth differ or are modified (None: every tooth
     /// the paper's, with `gap`).
     pub teeth: Option<&'a ToothMesh>,
+    /// Where the pairs touch: the path of contact, or beyond it by their tip corners.
+    pub contact: &'a ContactPath,
 }
 
 /// The inputs a single pair's [`GearSystem`] is assembled from: its mesh's parts and the
@@ -175,6 +183,8 @@ pub struct GearSystemParts<'a> {
     /// Effective modulus E* of the contact, Pa.
     pub effective_modulus_pa: f64,
     pub teeth: Option<&'a ToothMesh>,
+    /// Where the pairs touch (`dynamics::contact_path`).
+    pub contact: &'a ContactPath,
 }
 
 impl<'a> GearSystemParts<'a> {
@@ -191,6 +201,7 @@ impl<'a> GearSystemParts<'a> {
             roughness_um: self.roughness_um,
             effective_modulus_pa: self.effective_modulus_pa,
             teeth: self.teeth,
+            contact: self.contact,
         }
     }
 }
@@ -264,9 +275,11 @@ impl<'a> GearSystem<'a> {
             .enumerate()
             .map(|(m, (mut parts, op))| {
                 // `Auto` becomes the law this mesh uses, once (LoadSharingModel::resolve).
+                // Pedrero's law is for perfect involutes on the nominal path only.
+                let shared_by_compression = parts.teeth.is_some() || parts.contact.is_extended();
                 parts.load_sharing = parts
                     .load_sharing
-                    .resolve(parts.teeth.is_some(), parts.pair.contact_ratio);
+                    .resolve(shared_by_compression, parts.pair.contact_ratio);
                 let link = &asm.elements.meshes[m];
                 let inertia = |b: usize| asm.elements.bodies[b].inertia_kg_m2;
                 let c_m = mesh_damping_n_s_per_m(

@@ -311,7 +311,8 @@ where
                     || *t == last
                     || sys.meshes.iter().any(|m| {
                         let (a, b) = (m.phase_at(t - eps_t), m.phase_at(t + eps_t));
-                        let count = |d: f64| m.parts.pair.pairs_in_contact_decided(d, d).count();
+                        let reach = m.parts.contact.reach();
+                        let count = |d: f64| m.parts.pair.decided_set_in(reach, d).1;
                         count(a) != count(b)
                     })
             })

@@ -11,7 +11,7 @@
 //! few per cent of F, the iteration contracts by that factor). The mesh deflection then
 //! solves sum_i k_i max(delta - g_i, 0) = F exactly (pairs closing their gaps in order).
 
-use super::grid::{excitation_periods, period_nodes, train_nodes};
+use super::grid::{excitation_periods, period_nodes_in, train_nodes};
 use super::model::{GearSystem, MeshState, TrainMesh, MAX_PAIRS};
 use super::response::{DynamicResponse, MeshResponse, PathSample, Signals};
 use crate::config::case::SpeedBoundary;
@@ -84,24 +84,31 @@ fn mesh_equilibrium(
     let mut gap = [0.0; MAX_PAIRS];
     let mut n = 0;
     let e_run = parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
-    for (pair_k, rho1) in parts.pair.pairs_in_contact(phase_rad) {
+    let contact = parts.contact;
+    let pairs = parts
+        .pair
+        .pairs_in_reach_decided(contact.reach(), phase_rad, phase_rad);
+    for (pair_k, rho1) in pairs {
         if n == MAX_PAIRS {
             break;
         }
-        ms.rho1_m[n] = rho1;
+        ms.rho1_m[n] = contact.contact_rho1_m(rho1);
         match parts.teeth {
             None => {
-                k[n] = parts.mesh.pair_stiffness_n_per_m(rho1);
-                gap[n] = parts.gap.at(rho1).0 - e_ext;
+                let pp = contact.plain_pair(parts.mesh, parts.gap, rho1);
+                k[n] = pp.stiffness_n_per_m;
+                gap[n] = pp.gap_m - e_ext;
+                ms.corner[n] = pp.corner;
             }
             Some(tm) => {
-                let cycle = cycle_now - pair_k as i64;
-                let pp = tm.pair(parts.mesh, cycle, rho1);
+                let cycle = cycle_now - pair_k;
+                let pp = tm.pair_in(parts.mesh, contact, cycle, rho1);
                 k[n] = pp.stiffness_n_per_m;
                 gap[n] = pp.gap_m - e_ext - e_run;
                 ms.cycle[n] = cycle;
                 ms.width_loss[n] = pp.width_loss;
                 ms.curvature_change[n] = pp.curvature_change_per_m;
+                ms.corner[n] = pp.corner;
             }
         }
         ms.stiffness_n_per_m[n] = k[n];
@@ -158,6 +165,13 @@ fn mesh_equilibrium(
         sh[i] = k[i] * (ms.deflection_m - gap[i]).max(0.0) / force;
     }
     mesh.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+    if ms.corner[..n].contains(&true) {
+        // The mesh's stiffness counts the corners beyond the path only where they touch.
+        ms.stiffness_total_n_per_m = (0..n)
+            .filter(|i| !ms.corner[*i] || ms.deflection_m > gap[*i])
+            .map(|i| k[i])
+            .sum();
+    }
     ms
 }
 
@@ -171,7 +185,8 @@ pub fn solve_quasi_static(sys: &GearSystem, steps_per_mesh_period: usize) -> Dyn
     }
     let mesh = sys.mesh(0);
     let [omega, omega_g] = mesh.operating.speeds_rad_s;
-    let one = period_nodes(mesh.parts.pair, omega, steps_per_mesh_period);
+    let reach = mesh.parts.contact.reach();
+    let one = period_nodes_in(mesh.parts.pair, reach, omega, steps_per_mesh_period);
     let periods = mesh.parts.teeth.map_or(1, |tm| tm.periods());
     let t_mesh = *one.last().unwrap_or(&0.0);
     // Nodes as (cycle, time within it): each period's nodes but its last, then the end.

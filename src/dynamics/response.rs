@@ -26,7 +26,8 @@ pub struct PathSample {
 }
 
 impl PathSample {
-    /// The contacts of a mesh state, with the pinion and gear speeds (rad/s) that made them.
+    /// The contacts of a mesh state on the path of contact, with the pinion and gear
+    /// speeds (rad/s) that made them.
     pub fn push_contacts(
         path: &mut Vec<PathSample>,
         ms: &super::model::MeshState,
@@ -34,7 +35,9 @@ impl PathSample {
         omega_pinion_rad_s: f64,
         omega_gear_rad_s: f64,
     ) {
-        for i in 0..ms.n_pairs {
+        // Corner contacts touch the tip edge and, off the line of action, the mate's
+        // flank: no Hertz line contact of the path (docs/MODEL.md, section 4).
+        for i in (0..ms.n_pairs).filter(|i| !ms.corner[*i]) {
             let rho1 = ms.rho1_m[i];
             path.push(PathSample {
                 rho1_m: rho1,
@@ -128,10 +131,14 @@ pub struct MeshSignals {
 
 impl MeshSignals {
     /// Per-pair friction and load of the first two pairs (0 when a pair is out of contact).
+    ///
+    /// The pairs are those on the path of contact, in order (a corner beyond the path is
+    /// not one of them: `MeshState::corner`).
     pub fn push_pairs(&mut self, ms: &super::model::MeshState) {
+        let mut on_path = (0..ms.n_pairs).filter(|i| !ms.corner[*i]);
         for j in 0..2 {
-            let on = j < ms.n_pairs;
-            let pick = |a: &[f64; super::model::MAX_PAIRS]| if on { a[j] } else { 0.0 };
+            let at = on_path.next();
+            let pick = |a: &[f64; super::model::MAX_PAIRS]| at.map_or(0.0, |i| a[i]);
             self.friction_coefficient[j].push(pick(&ms.friction_coefficient));
             self.friction_n[j].push(pick(&ms.friction_n));
             self.pair_load_n[j].push(pick(&ms.load_n));

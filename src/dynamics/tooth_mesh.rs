@@ -24,11 +24,10 @@
 //! gears have teeth that differ (or run out), z1 or z2 when only one does, 1 when every
 //! tooth is alike.
 
+pub use super::contact_path::REMOVED_GAP_M;
+use super::contact_path::{ContactPath, PairPlace};
+use crate::geometry::corner::TipCorner;
 use crate::stiffness::mesh::MeshStiffness;
-
-/// Gap of a contact a broken tip has removed, m: far beyond any mesh deflection, so the
-/// pair never touches there.
-pub const REMOVED_GAP_M: f64 = 1e-3;
 
 /// One tooth's data (see the module docs).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -97,6 +96,9 @@ pub struct PairProps {
     pub curvature_change_per_m: f64,
     pub pinion_tooth: usize,
     pub gear_tooth: usize,
+    /// A tip corner touches beyond the path (`dynamics::contact_path`; false: the
+    /// involutes on the path, or no contact).
+    pub corner: bool,
 }
 
 /// The tooth-resolved mesh of one evaluation (see the module docs).
@@ -147,6 +149,17 @@ pub fn sequence_period(flanks: &[ToothFlank], runout: &Runout) -> usize {
         .filter(|d| z.is_multiple_of(*d))
         .find(|&d| (d..flanks.len()).all(|i| flanks[i] == flanks[i - d]))
         .unwrap_or(z)
+}
+
+/// A pair that cannot touch: no stiffness, a gap no deflection closes (its contact
+/// tables as they are).
+fn removed(p: PairProps) -> PairProps {
+    PairProps {
+        stiffness_n_per_m: 0.0,
+        gap_m: REMOVED_GAP_M,
+        gap_slope: 0.0,
+        ..p
+    }
 }
 
 impl ToothMesh {
@@ -201,10 +214,95 @@ impl ToothMesh {
         (a + b, da + db)
     }
 
-    /// The pair of mesh cycle `cycle` at pinion rho1 (m).
+    /// The pair of mesh cycle `cycle` at pinion rho1 (m), meeting on the path of
+    /// contact only (a broken tip's contact removed).
     #[inline]
     pub fn pair(&self, mesh: &MeshStiffness, cycle: i64, rho1_m: f64) -> PairProps {
         let (a, b) = self.teeth_of(cycle);
+        let (fp, fg) = (&self.pinion[a], &self.gear[b]);
+        let cut = fp.contact_limit_rho1_m.is_some_and(|l| rho1_m > l)
+            || fg.contact_limit_rho1_m.is_some_and(|l| rho1_m < l);
+        let p = self.on_path(mesh, a, b, rho1_m);
+        if cut {
+            return removed(p);
+        }
+        p
+    }
+
+    /// As [`ToothMesh::pair`] where `path` says the teeth touch: on the path, or by a
+    /// tip corner beyond it (each tooth's own corner: a broken tip's cut is its corner).
+    pub fn pair_in(
+        &self,
+        mesh: &MeshStiffness,
+        path: &ContactPath,
+        cycle: i64,
+        rho1_m: f64,
+    ) -> PairProps {
+        if !path.is_extended() {
+            return self.pair(mesh, cycle, rho1_m);
+        }
+        let (a, b) = self.teeth_of(cycle);
+        let (fp, fg) = (&self.pinion[a], &self.gear[b]);
+        let pinion_tip = fp.contact_limit_rho1_m.map(TipCorner::sharp);
+        let gear_tip = fg
+            .contact_limit_rho1_m
+            .map(|l| TipCorner::sharp(mesh.pair().loa_length_m - l));
+        match path.place(rho1_m, pinion_tip, gear_tip) {
+            None => removed(self.on_path(mesh, a, b, rho1_m)),
+            Some(p) if !p.corner => self.on_path(mesh, a, b, rho1_m),
+            Some(p) => self.at_corner(mesh, a, b, &p),
+        }
+    }
+
+    /// Index and weight of a position on the grid (linear interpolation, clamped).
+    #[inline]
+    fn cell(&self, rho1_m: f64) -> (usize, f64) {
+        let n = self.points;
+        let u = ((rho1_m - self.rho_start_m) / self.spacing_m).clamp(0.0, (n - 1) as f64);
+        let i = (u as usize).min(n - 2);
+        (i, u - i as f64)
+    }
+
+    /// Pinion tooth `a` and gear tooth `b` loaded at the pinion's `place.pinion_rho1_m`
+    /// and the gear's conjugate of `place.gear_rho1_m`: each flank's tables where it is
+    /// touched, the corner's gap added to the flanks', the two teeth's spring
+    /// (`MeshStiffness::corner_pair_stiffness_n_per_m`) with their fault compliances in
+    /// series.
+    fn at_corner(&self, mesh: &MeshStiffness, a: usize, b: usize, place: &PairPlace) -> PairProps {
+        let (fp, fg) = (&self.pinion[a], &self.gear[b]);
+        let cells = [self.cell(place.pinion_rho1_m), self.cell(place.gear_rho1_m)];
+        let rates = [place.pinion_rate, place.gear_rate];
+        let lerp = |v: &[f64], (i, w): (usize, f64)| v[i] + (v[i + 1] - v[i]) * w;
+        let mut gap = place.gap_m - fp.position_m - fg.position_m;
+        let mut slope = place.gap_slope;
+        let (mut compliance, mut width_loss) = (0.0, 0.0);
+        for ((f, c), rate) in [fp, fg].into_iter().zip(cells).zip(rates) {
+            let r = &f.removed_m;
+            gap += lerp(r, c);
+            slope += (r[c.0 + 1] - r[c.0]) / self.spacing_m * rate;
+            if let Some(t) = &f.compliance_m_per_n {
+                compliance += lerp(t, c);
+            }
+            if let Some(l) = &f.width_loss {
+                width_loss += lerp(l, c);
+            }
+        }
+        let k0 = mesh.corner_pair_stiffness_n_per_m(place.pinion_rho1_m, place.gear_rho1_m);
+        PairProps {
+            stiffness_n_per_m: 1.0 / (1.0 / k0 + compliance),
+            gap_m: gap,
+            gap_slope: slope,
+            width_loss: width_loss.clamp(0.0, 0.95),
+            curvature_change_per_m: 0.0,
+            pinion_tooth: a,
+            gear_tooth: b,
+            corner: true,
+        }
+    }
+
+    /// Pinion tooth `a` and gear tooth `b` meeting at rho1 on the path.
+    #[inline]
+    fn on_path(&self, mesh: &MeshStiffness, a: usize, b: usize, rho1_m: f64) -> PairProps {
         let (fp, fg) = (&self.pinion[a], &self.gear[b]);
         let n = self.points;
         let u = ((rho1_m - self.rho_start_m) / self.spacing_m).clamp(0.0, (n - 1) as f64);
@@ -212,7 +310,7 @@ impl ToothMesh {
         let w = u - i as f64;
         let lerp = |v: &[f64]| v[i] + (v[i + 1] - v[i]) * w;
         let (rp, rg) = (&fp.removed_m, &fg.removed_m);
-        let mut gap = lerp(rp) + lerp(rg) - fp.position_m - fg.position_m;
+        let gap = lerp(rp) + lerp(rg) - fp.position_m - fg.position_m;
         let slope = (rp[i + 1] - rp[i] + rg[i + 1] - rg[i]) / self.spacing_m;
         let mut compliance = 0.0;
         let mut width_loss = 0.0;
@@ -229,25 +327,20 @@ impl ToothMesh {
             }
         }
         let k0 = mesh.pair_stiffness_n_per_m(rho1_m);
-        let mut k = if compliance == 0.0 {
+        let k = if compliance == 0.0 {
             k0
         } else {
             1.0 / (1.0 / k0 + compliance)
         };
-        let cut = fp.contact_limit_rho1_m.is_some_and(|l| rho1_m > l)
-            || fg.contact_limit_rho1_m.is_some_and(|l| rho1_m < l);
-        if cut {
-            k = 0.0;
-            gap = REMOVED_GAP_M;
-        }
         PairProps {
             stiffness_n_per_m: k,
             gap_m: gap,
-            gap_slope: if cut { 0.0 } else { slope },
+            gap_slope: slope,
             width_loss: width_loss.clamp(0.0, 0.95),
             curvature_change_per_m: curvature,
             pinion_tooth: a,
             gear_tooth: b,
+            corner: false,
         }
     }
 }

@@ -11,7 +11,7 @@
 //! steady state at the starting speed, so no start transient is recorded).
 
 use super::drive::Drive;
-use super::grid::period_nodes;
+use super::grid::period_nodes_in;
 use super::model::{GearSystem, State};
 use super::period::{period_stepper, PeriodObserver, StepFailure};
 use super::period_search::DynamicsError;
@@ -25,9 +25,10 @@ pub fn transient_nodes(
     duration_s: f64,
     steps_per_mesh_period: usize,
 ) -> Vec<f64> {
-    let pair = sys.mesh(0).parts.pair;
+    let parts = &sys.mesh(0).parts;
+    let pair = parts.pair;
     // At unit speed the node "times" are the node angles within one mesh period.
-    let angles = period_nodes(pair, 1.0, steps_per_mesh_period);
+    let angles = period_nodes_in(pair, parts.contact.reach(), 1.0, steps_per_mesh_period);
     let period = pair.mesh_angle_rad();
     let end_angle = drive.angle(duration_s);
     let mut nodes = Vec::with_capacity(((end_angle / period).ceil() as usize + 1) * angles.len());

@@ -2,6 +2,7 @@
 //! transverse section, contact ratios and contact lines.
 
 pub mod blank;
+pub mod corner;
 pub mod flank_shape;
 pub mod helical;
 pub mod internal;

@@ -94,6 +94,15 @@ impl Gear {
     }
 }
 
+/// The stretch of the line of action over which tooth pairs are followed, as pinion
+/// radii of curvature rho1 (m): the path of contact (the paper's model), or beyond its
+/// ends where tip corners may touch (`geometry::corner`, `dynamics::contact_path`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reach {
+    pub start_m: f64,
+    pub end_m: f64,
+}
+
 /// A meshing involute spur pair. Build with [`GearPair::from_case`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearPair {
@@ -241,18 +250,84 @@ impl GearPair {
             .map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
     }
 
-    /// What [`GearPair::pairs_in_contact_decided`] takes from `decide_rad`: the mesh
-    /// cycle's start (the floor of the phase in mesh angles) and the number of pairs. Two
-    /// decision angles with the same key give the same pairs at every phase.
-    pub(crate) fn decided_set(&self, decide_rad: f64) -> (f64, usize) {
+    /// The path of contact as a [`Reach`]: pairs followed from A to E only.
+    pub fn nominal_reach(&self) -> Reach {
+        Reach {
+            start_m: self.rho_start_m,
+            end_m: self.rho_end_m,
+        }
+    }
+
+    /// As [`GearPair::pairs_in_contact_decided`] over `reach`: (k, rho1) of every pair
+    /// whose position at `decide_rad` lies in the reach, k < 0 for the pairs that have not
+    /// yet entered the path (pair k is mesh cycle n - k). Over the nominal reach these are
+    /// exactly the pairs of [`GearPair::pairs_in_contact_decided`].
+    pub fn pairs_in_reach_decided(
+        &self,
+        reach: Reach,
+        phase_rad: f64,
+        decide_rad: f64,
+    ) -> impl Iterator<Item = (i64, f64)> + '_ {
+        let period = self.mesh_angle_rad();
+        let base = (decide_rad / period).floor() * period;
+        let rb1 = self.pinion.base_radius_m;
+        let rho_decide = self.rho_start_m + rb1 * (decide_rad - base);
+        let rho0 = self.rho_start_m + rb1 * (phase_rad - base);
+        let (k_lo, k_hi) = self.reach_range(reach, rho_decide);
+        (k_lo..=k_hi).map(move |k| (k, rho0 + k as f64 * self.base_pitch_m))
+    }
+
+    /// First and last k of the pairs in `reach` whose positions at the decision are
+    /// rho_decide + k p_b (empty when first > last). The end is tested as
+    /// [`GearPair::pairs_in_contact_decided`] tests rho_E; pairs that have not entered
+    /// the path are counted only when the reach starts before it.
+    fn reach_range(&self, reach: Reach, rho_decide: f64) -> (i64, i64) {
+        let pb = self.base_pitch_m;
+        let at = |k: i64| rho_decide + k as f64 * pb;
+        let mut k_lo = 0;
+        if reach.start_m < self.rho_start_m {
+            while at(k_lo - 1) >= reach.start_m {
+                k_lo -= 1;
+            }
+        }
+        let mut k_hi = k_lo - 1;
+        while at(k_hi + 1) <= reach.end_m + 1e-15 {
+            k_hi += 1;
+        }
+        (k_lo, k_hi)
+    }
+
+    /// What [`GearPair::pairs_in_reach_decided`] takes from `decide_rad`: the mesh cycle
+    /// of its first pair (the newest in the reach) and the number of pairs. Two decision
+    /// angles with the same key give the same pairs at every phase. Over the nominal
+    /// reach: the floor of the phase in mesh angles and the number of pairs in contact.
+    pub fn decided_set_in(&self, reach: Reach, decide_rad: f64) -> (f64, usize) {
         let period = self.mesh_angle_rad();
         let cycle = (decide_rad / period).floor();
         let rho_decide =
             self.rho_start_m + self.pinion.base_radius_m * (decide_rad - cycle * period);
-        let n = (0..self.max_pairs())
-            .filter(|k| rho_decide + *k as f64 * self.base_pitch_m <= self.rho_end_m + 1e-15)
-            .count();
-        (cycle, n)
+        let (k_lo, k_hi) = self.reach_range(reach, rho_decide);
+        (cycle - k_lo as f64, (k_hi - k_lo + 1).max(0) as usize)
+    }
+
+    /// Mesh phases within one period (rad) where a pair enters or leaves `reach`, with the
+    /// period's start: [`GearPair::contact_change_phases`] for the nominal reach.
+    pub fn reach_change_phases(&self, reach: Reach) -> Vec<f64> {
+        if reach == self.nominal_reach() {
+            return self.contact_change_phases();
+        }
+        let rb1 = self.pinion.base_radius_m;
+        let pb = self.base_pitch_m;
+        let period = self.mesh_angle_rad();
+        let mut v = vec![0.0];
+        for edge in [reach.start_m, reach.end_m] {
+            let ph = (edge - self.rho_start_m).rem_euclid(pb) / rb1;
+            if ph > 1e-12 * period && ph < period * (1.0 - 1e-12) {
+                v.push(ph);
+            }
+        }
+        v.sort_by(f64::total_cmp);
+        v
     }
 
     /// The mesh cycle under way at pinion rotation `decide_rad` (rad since t = 0): the
@@ -543,6 +618,80 @@ mod tests {
             .count();
         let frac = doubles as f64 / n as f64;
         assert!((frac - (p.contact_ratio - 1.0)).abs() < 2.0 / n as f64);
+    }
+
+    #[test]
+    fn the_nominal_reach_enumerates_the_pairs_in_contact() {
+        let p = paper();
+        let reach = p.nominal_reach();
+        let period = p.mesh_angle_rad();
+        for i in 0..=400 {
+            let d = period * (i as f64 / 100.0 - 1.3);
+            for decide in [d, d + 1e-9, d - 1e-9] {
+                let a: Vec<(i64, f64)> = p
+                    .pairs_in_contact_decided(d, decide)
+                    .map(|(k, r)| (k as i64, r))
+                    .collect();
+                let b: Vec<(i64, f64)> = p.pairs_in_reach_decided(reach, d, decide).collect();
+                assert_eq!(a, b);
+                let key = ((decide / period).floor(), a.len());
+                assert_eq!(key, p.decided_set_in(reach, decide));
+            }
+        }
+        assert_eq!(p.reach_change_phases(reach), p.contact_change_phases());
+    }
+
+    #[test]
+    fn a_wider_reach_follows_every_pair_within_it() {
+        // Independent bookkeeping: pair of mesh cycle c entered A at phase c period, so at
+        // phase x it lies at rho_A + r_b1 (x - c period); it is followed while that lies
+        // in the reach. The set changes exactly at the reach's change phases.
+        let p = paper();
+        let reach = Reach {
+            start_m: p.rho_start_m - 1.3e-3,
+            end_m: p.rho_end_m + 2.1e-3,
+        };
+        let period = p.mesh_angle_rad();
+        let rb1 = p.pinion.base_radius_m;
+        let changes = p.reach_change_phases(reach);
+        assert_eq!(changes.len(), 3);
+        let mut last_key: Option<(f64, (f64, usize))> = None;
+        for i in 0..5000 {
+            let x = period * (i as f64 + 0.5) / 1000.0;
+            let cycle = (x / period).floor() as i64;
+            let want: Vec<(i64, f64)> = (cycle - 3..=cycle + 3)
+                .rev()
+                .map(|c| (cycle - c, p.rho_start_m + rb1 * (x - c as f64 * period)))
+                .filter(|(_, r)| *r >= reach.start_m && *r <= reach.end_m)
+                .collect();
+            let got: Vec<(i64, f64)> = p.pairs_in_reach_decided(reach, x, x).collect();
+            assert_eq!(want.len(), got.len(), "phase {x}");
+            for (w, g) in want.iter().zip(&got) {
+                assert_eq!(w.0, g.0);
+                assert!((w.1 - g.1).abs() < 1e-12);
+            }
+            let key = p.decided_set_in(reach, x);
+            assert_eq!(key.0, (cycle - got[0].0) as f64);
+            // A change of the set between neighbouring samples brackets a change phase.
+            if let Some((prev_x, prev_key)) = last_key {
+                if prev_key != key {
+                    let (a, b) = ((prev_x / period).fract(), (x / period).fract());
+                    let hit = changes.iter().any(|c| {
+                        let c = c / period;
+                        if a < b {
+                            a < c && c <= b
+                        } else {
+                            c > a || c <= b
+                        }
+                    });
+                    assert!(
+                        hit,
+                        "set changed between {prev_x} and {x} off a change phase"
+                    );
+                }
+            }
+            last_key = Some((x, key));
+        }
     }
 
     #[test]

@@ -2,9 +2,15 @@
 //! each deviation. Shown only for the paper's case (`case::is_paper_case`). The paper's
 //! values are quoted from its text (docs/PAPER_NOTES.md, "Published numbers"); every
 //! number in an explanation comes from the run.
+//!
+//! `gearwear run` of the paper's case runs it under both contact models (`contact.path`,
+//! docs/MODEL.md section 4.2): the nominal path (the paper's own model, so that the
+//! reproduction stays checkable) and the extended contact (the default), each beside the
+//! paper's value.
 
 use super::case::{cycles_words, load_sentence, open_choices_words, poles_sentence};
 use super::wear::{at_cycles, max_rate_at};
+use crate::config::case::ContactPathModel;
 use crate::study::paper::PaperStudy;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;
@@ -16,15 +22,40 @@ pub struct Compared {
     pub key: String,
     /// Display name with unit.
     pub quantity: String,
+    /// The case's value, under its own `contact.path` ([`Compared::path`]).
     pub ours: f64,
+    /// The contact model `ours` was computed with.
+    pub path: ContactPathModel,
+    /// The same quantity of the case run under the other contact model ([`with_twin`];
+    /// `None`: not run).
+    pub twin: Option<f64>,
     pub paper: f64,
     pub explanation: String,
 }
 
 impl Compared {
+    /// `(ours - paper) / |paper|`.
     pub fn relative_deviation(&self) -> f64 {
         (self.ours - self.paper) / self.paper.abs()
     }
+
+    /// The value under `path`: ours or the twin's.
+    pub fn under(&self, path: ContactPathModel) -> Option<f64> {
+        match path == self.path {
+            true => Some(self.ours),
+            false => self.twin,
+        }
+    }
+}
+
+/// `rows` of the case with each quantity's value under the other contact model taken
+/// from `twin` (the rows of the same case run with the other `contact.path`), matched by
+/// key.
+pub fn with_twin(mut rows: Vec<Compared>, twin: &[Compared]) -> Vec<Compared> {
+    for r in &mut rows {
+        r.twin = twin.iter().find(|t| t.key == r.key).map(|t| t.ours);
+    }
+    rows
 }
 
 /// The paper's section 4.1 values at 0.1 / 0.5 / 1 um wear and 4.2 ratios.
@@ -91,7 +122,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
             open_choices_words(model)
         ),
         velocity: format!(
-            "The y velocity is dominated by the response of the damped mesh pole to the stiffness jumps; its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."
+            "The y velocity is dominated by the response of the damped mesh pole to the mesh stiffness's variation (a jump at each pair change on the nominal path, a ramp with the extended contact); its size depends on the speed boundary condition and the mesh damping, which the paper does not give (docs/PAPER_NOTES.md). {poles} docs/REPRODUCTION.md shows how the value moves with those choices."
         ),
         force: format!(
             "In periodic steady state the mean mesh force is fixed by the load torque: r_gb mean(F) + mean friction moment = T_brk (docs/MODEL.md). {} Ours departs from it only by the friction moment. The paper's {paper_rise:.0} % rise of the mean with wear cannot come from a balanced drivetrain (docs/PAPER_NOTES.md).",
@@ -109,6 +140,7 @@ fn explanations(model: &Model, study: &PaperStudy) -> Why {
 /// Every compared number.
 pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
     let why = explanations(model, study);
+    let path = model.case.contact.path;
     let mut out = Vec::new();
     for (i, s) in study.wear_states.iter().enumerate().take(3) {
         let w = s.max_wear_um;
@@ -116,6 +148,8 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
             key: format!("dte_max_um_at_{w}um_wear"),
             quantity: format!("max DTE at {w} µm wear (µm)"),
             ours: s.summary.dte_max_m * 1e6,
+            path,
+            twin: None,
             paper: PAPER_DTE_MAX_UM[i],
             explanation: why.dte.clone(),
         });
@@ -123,6 +157,8 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
             key: format!("velocity_y_pinion_rms_mm_per_s_at_{w}um_wear"),
             quantity: format!("RMS of dy_p/dt at {w} µm wear (mm/s)"),
             ours: s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
+            path,
+            twin: None,
             paper: PAPER_VEL_RMS_MM_S[i],
             explanation: why.velocity.clone(),
         });
@@ -130,6 +166,8 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
             key: format!("mesh_force_mean_n_at_{w}um_wear"),
             quantity: format!("mean mesh force at {w} µm wear (N)"),
             ours: s.summary.mesh_force_mean_n,
+            path,
+            twin: None,
             paper: PAPER_FORCE_MEAN_N[i],
             explanation: why.force.clone(),
         });
@@ -142,6 +180,8 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
             "max pinion wear depth per cycle, dynamic / quasi-static, {cycles} cycles (-)"
         ),
         ours: rate,
+        path,
+        twin: None,
         paper: PAPER_RATIO_MAX_WEAR,
         explanation: why.rate,
     });
@@ -151,19 +191,35 @@ pub fn compare(model: &Model, study: &PaperStudy) -> Vec<Compared> {
             "max accumulated pinion wear, dynamic / quasi-static, {cycles} cycles (-)"
         ),
         ours: acc,
+        path,
+        twin: None,
         paper: PAPER_RATIO_ACCUMULATED_WEAR,
         explanation: why.accumulated,
     });
     out
 }
 
-/// The comparison as JSON: key -> {ours, paper, relative_deviation}.
+/// The comparison as JSON: key -> {ours, paper, relative_deviation, explanation,
+/// contact_path (ours'), nominal_path, extended_contact}; the last two: {value,
+/// relative_deviation} under each contact model, null where not run.
 pub fn comparison_json(rows: &[Compared]) -> Value {
     let mut m = serde_json::Map::new();
     for r in rows {
+        let under = |path| match r.under(path) {
+            Some(v) => json!({"value": v, "relative_deviation": (v - r.paper) / r.paper.abs()}),
+            None => Value::Null,
+        };
         m.insert(
             r.key.clone(),
-            json!({"ours": r.ours, "paper": r.paper, "relative_deviation": r.relative_deviation(), "explanation": r.explanation}),
+            json!({
+                "ours": r.ours,
+                "paper": r.paper,
+                "relative_deviation": r.relative_deviation(),
+                "explanation": r.explanation,
+                "contact_path": r.path,
+                "nominal_path": under(ContactPathModel::Nominal),
+                "extended_contact": under(ContactPathModel::Extended),
+            }),
         );
     }
     Value::Object(m)

@@ -302,7 +302,7 @@ pub fn duty_run_artifacts(
     let paper = study.paper.as_ref()?;
     let monitor = &sm.bins[sm.monitoring];
     let (mut a, mut report) =
-        super::paper::run_artifacts_and_report(monitor, paper, meta, false, figures);
+        super::paper::run_artifacts_and_report(monitor, paper, meta, None, figures);
     let runs: Vec<&SpectrumRun> = study.runs.iter().collect();
     let figs = duty_figures(sm, &runs, study.life.as_ref());
     let blocks = embed_figures(

@@ -5,7 +5,7 @@
 
 use super::artifacts::{embed_figures, Artifacts, EmbeddedFigure};
 use super::case::{case_json, is_paper_case, paper_case_differences};
-use super::comparison::{compare, comparison_json};
+use super::comparison::{compare, comparison_json, with_twin};
 use super::figure_output::FigureOutput;
 use super::figures::{panel, points_panel, single, spectrum_panel, spectrum_rows, Curve, Fig};
 use super::html;
@@ -214,16 +214,23 @@ pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fi
     figs
 }
 
+/// The paper's case run under the other contact model (`contact.path`): its model and
+/// study, whose numbers the comparison sets beside the case's own.
+pub type ContactTwin<'a> = (&'a Model, &'a PaperStudy);
+
 /// Everything `gearwear run` writes: figures (in the formats and size of `figures`) with
 /// their CSVs under `csv/`, the wear-study tables, `summary.json` and `report.html` (which
 /// embeds the same figures). `meta` is stamped on the summary and the report footer.
+/// `twin`: the case under the other contact model, for the paper comparison's other
+/// column (`None`: that column reads "not run").
 pub fn run_artifacts(
     model: &Model,
     study: &PaperStudy,
+    twin: Option<ContactTwin>,
     meta: &RunMetadata,
     figures: FigureOutput,
 ) -> Artifacts {
-    let paper = is_paper_case(&model.case);
+    let paper = is_paper_case(&model.case).then_some(twin);
     let (mut a, report) = run_artifacts_and_report(model, study, meta, paper, figures);
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
@@ -231,12 +238,13 @@ pub fn run_artifacts(
 }
 
 /// [`run_artifacts`] with the report not yet rendered (a caller may add sections);
-/// `paper`: whether the results are set beside the paper's.
+/// `paper`: whether the results are set beside the paper's (`Some`), with the twin of
+/// [`run_artifacts`].
 pub fn run_artifacts_and_report(
     model: &Model,
     study: &PaperStudy,
     meta: &RunMetadata,
-    paper: bool,
+    paper: Option<Option<ContactTwin>>,
     figures: FigureOutput,
 ) -> (Artifacts, html::Report) {
     let (st_table, st_json) = stiffness_table(model);
@@ -251,7 +259,7 @@ pub fn run_artifacts_and_report(
         &mut a,
         figs.into_iter()
             .map(|f| EmbeddedFigure {
-                caption: match paper {
+                caption: match paper.is_some() {
                     true if f.paper_figure > 0 => {
                         format!("{} (paper Fig. {}).", f.caption, f.paper_figure)
                     }
@@ -264,7 +272,7 @@ pub fn run_artifacts_and_report(
             .collect(),
     );
     let mut summary = json!({
-        "paper_case": paper,
+        "paper_case": paper.is_some(),
         "stiffness": st_json,
         "wear_study": wear_summary(Some(&study.dynamic), Some(&study.quasi_static)),
         "wear_states": study.wear_states.iter().map(|s| json!({
@@ -280,8 +288,9 @@ pub fn run_artifacts_and_report(
         })).collect::<Vec<_>>(),
         "warnings": model.warnings,
     });
-    let rows = if paper {
-        let rows = compare(model, study);
+    let rows = if let Some(twin) = paper {
+        let twin_rows = twin.map_or(Vec::new(), |(m, s)| compare(m, s));
+        let rows = with_twin(compare(model, study), &twin_rows);
         summary["paper_comparison"] = comparison_json(&rows);
         a.headline = comparison_headline(&rows);
         rows

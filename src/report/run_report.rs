@@ -6,7 +6,8 @@ use super::case::{
     cycles_words, load_sentence, load_words, mesh_frequency_hz, poles_sentence, static_mesh_force_n,
 };
 use super::comparison::{cycles_reached, Compared};
-use super::html::{self, ComparisonRow, FigureBlock, Report, Section, TableBlock};
+use super::html::{self, FigureBlock, Report, Section, TableBlock};
+use crate::config::case::ContactPathModel;
 use crate::format::shown;
 use crate::store::RunMetadata;
 use crate::study::paper::PaperStudy;
@@ -64,15 +65,25 @@ fn pair_words(model: &Model) -> String {
     )
 }
 
-/// The run's headline for the paper's case: the comparison, one line per number.
+/// The run's headline for the paper's case: the comparison, one line per number, with
+/// the nominal path's value (the paper's model), the extended contact's (the default)
+/// and the paper's.
 pub fn comparison_headline(rows: &[Compared]) -> String {
+    let value = |r: &Compared, path| match r.under(path) {
+        Some(v) => format!(
+            "{:>6} ({:>7})",
+            shown(v),
+            super::html::format_deviation(v, r.paper)
+        ),
+        None => format!("{:>16}", "not run"),
+    };
     let line = |r: &Compared| {
         format!(
-            "{:<74} ours {:>6}  paper {:>6}  ({})",
+            "{:<74} nominal path {}  extended {}  paper {:>6}",
             r.quantity,
-            shown(r.ours),
+            value(r, ContactPathModel::Nominal),
+            value(r, ContactPathModel::Extended),
             shown(r.paper),
-            super::html::format_deviation(r.ours, r.paper)
         )
     };
     rows.iter().map(line).collect::<Vec<_>>().join("\n")
@@ -114,22 +125,45 @@ pub fn case_headline(model: &Model, study: &PaperStudy) -> String {
     lines.join("\n")
 }
 
-/// The comparison's rows for the report. A quantity compared at several wear states
-/// shares one explanation: it is written once, at its first row, and the later rows
-/// point to that row.
-fn comparison_rows(rows: &[Compared]) -> Vec<ComparisonRow> {
-    rows.iter()
+/// The comparison table of the report: quantity | paper | nominal path (the paper's
+/// model) and its deviation | extended contact (the default) and its deviation |
+/// explanation, the nominal path's deviation highlighted (the reproduction's check). A
+/// quantity compared at several wear states shares one explanation: it is written once,
+/// at its first row, and the later rows point to that row.
+fn comparison_table(caption: &str, rows: &[Compared]) -> TableBlock {
+    let header = [
+        "quantity",
+        "paper",
+        "nominal path (paper's model)",
+        "relative deviation",
+        "extended contact (default)",
+        "relative deviation",
+        "explanation",
+    ];
+    let under = |r: &Compared, path| match r.under(path) {
+        Some(v) => [html::format_value(v), html::format_deviation(v, r.paper)],
+        None => ["not run".into(), "n/a".into()],
+    };
+    let rows = rows
+        .iter()
         .enumerate()
-        .map(|(i, r)| ComparisonRow {
-            quantity: r.quantity.clone(),
-            ours: r.ours,
-            paper: r.paper,
-            explanation: match rows[..i].iter().find(|p| p.explanation == r.explanation) {
+        .map(|(i, r)| {
+            let [n, dn] = under(r, ContactPathModel::Nominal);
+            let [e, de] = under(r, ContactPathModel::Extended);
+            let explanation = match rows[..i].iter().find(|p| p.explanation == r.explanation) {
                 Some(first) => format!("As for \"{}\" above.", first.quantity),
                 None => r.explanation.clone(),
-            },
+            };
+            let paper = html::format_value(r.paper);
+            vec![r.quantity.clone(), paper, n, dn, e, de, explanation]
         })
-        .collect()
+        .collect();
+    TableBlock {
+        caption: caption.into(),
+        header: header.iter().map(|h| h.to_string()).collect(),
+        rows,
+        highlight_col: Some(3),
+    }
 }
 
 /// "1 dynamic update", "4 quasi-static updates".
@@ -298,9 +332,9 @@ pub fn build_report(
         cycles_words(c.wear.total_cycles)
     );
     let (title, intro, first) = if paper {
-        let table = html::comparison_table(
-            "Our headline numbers beside the paper's (sections 4.1 and 4.2). Deviations are discussed in docs/REPRODUCTION.md.",
-            &comparison_rows(rows),
+        let table = comparison_table(
+            "Our headline numbers beside the paper's (sections 4.1 and 4.2), under the paper's own contact model (perfect involutes meeting on the nominal path only, `contact.path` = \"nominal\") and under the default extended contact (tip corners touching beyond the path under load, docs/MODEL.md section 4.2). Deviations are discussed in docs/REPRODUCTION.md.",
+            rows,
         );
         (
             "gearwear: dynamic wear prediction of the paper's spur pair".to_string(),

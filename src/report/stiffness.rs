@@ -18,41 +18,51 @@ use serde_json::json;
 /// Samples over one mesh period in the CSV and plot.
 const SAMPLES: usize = 720;
 
-/// Columns of `mesh_stiffness.csv` over one mesh period and the summary numbers.
+/// Columns of `mesh_stiffness.csv` over one mesh period and the summary numbers. The
+/// pairs are those on the path of contact (pair 0 the one that entered last); with
+/// `contact.path` = "extended" two columns more give the stiffness of the pairs that
+/// touch in the quasi-static equilibrium under the case's load (corners beyond the path
+/// included) and the corners' share of the load.
 pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
     let pair = &model.pair;
     let gap = PairGap::none();
     let ext = ExternalError::none();
     let sys = model.system(&gap, &ext, model.roughness.rms_um(0.0));
-    let mut cols: Vec<Vec<f64>> = (0..12).map(|_| Vec::with_capacity(SAMPLES)).collect();
+    let extended = model.contact.is_extended();
+    let n_cols = if extended { 14 } else { 12 };
+    let mut cols: Vec<Vec<f64>> = (0..n_cols).map(|_| Vec::with_capacity(SAMPLES)).collect();
     for i in 0..SAMPLES {
         let phase = pair.mesh_angle_rad() * i as f64 / SAMPLES as f64;
         let eq = equilibrium(&sys, 0, phase);
-        let total: f64 = (0..eq.n_pairs).map(|j| eq.stiffness_n_per_m[j]).sum();
-        let get = |a: &[f64; 4], j: usize| if j < eq.n_pairs { a[j] } else { f64::NAN };
+        let mut on_path = (0..eq.n_pairs).filter(|j| !eq.corner[*j]);
+        let idx: [Option<usize>; 4] = std::array::from_fn(|_| on_path.next());
+        let n = idx.iter().flatten().count();
+        let pick = |a: &[f64; 4]| -> [f64; 4] { idx.map(|i| i.map_or(0.0, |i| a[i])) };
+        let (rho, k) = (pick(&eq.rho1_m), pick(&eq.stiffness_n_per_m));
+        let total: f64 = k[..n].iter().sum();
+        let get = |a: &[f64; 4], j: usize| if j < n { a[j] } else { f64::NAN };
         let mut shares = [0.0; 4];
-        pedrero_shares(pair, &eq.rho1_m[..eq.n_pairs], &mut shares[..eq.n_pairs]);
-        let ped = |j: usize| shares[j];
-        let by_k = |j: usize| {
-            if j < eq.n_pairs {
-                eq.stiffness_n_per_m[j] / total
-            } else {
-                0.0
-            }
-        };
+        pedrero_shares(pair, &rho[..n], &mut shares[..n]);
+        let by_k = |j: usize| if j < n { k[j] / total } else { 0.0 };
         let row = [
             phase.to_degrees(),
-            get(&eq.rho1_m, 0) * 1e3,
-            get(&eq.rho1_m, 1) * 1e3,
-            get(&eq.stiffness_n_per_m, 0),
-            get(&eq.stiffness_n_per_m, 1),
+            get(&rho, 0) * 1e3,
+            get(&rho, 1) * 1e3,
+            get(&k, 0),
+            get(&k, 1),
             total,
-            ped(0),
-            ped(1),
+            shares[0],
+            shares[1],
             by_k(0),
             by_k(1),
             eq.deflection_m * 1e6,
             eq.force_n,
+            eq.stiffness_total_n_per_m,
+            (0..eq.n_pairs)
+                .filter(|j| eq.corner[*j])
+                .map(|j| eq.load_n[j])
+                .sum::<f64>()
+                / eq.force_n,
         ];
         for (c, v) in cols.iter_mut().zip(row) {
             c.push(v);
@@ -71,14 +81,22 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
         "load_share_stiffness_pair1",
         "quasi_static_te_um",
         "quasi_static_mesh_force_n",
+        "stiffness_loaded_n_per_m",
+        "load_share_corners",
     ];
     let mut t = Table::new();
     for (n, c) in names.iter().zip(cols.iter()) {
         t = t.col(n, c.clone());
     }
     let mesh = &model.mesh;
-    let te = &cols[10];
-    let v = json!({
+    let range = |c: &[f64]| {
+        (
+            c.iter().fold(f64::INFINITY, |a, b| a.min(*b)),
+            c.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)),
+        )
+    };
+    let (te_min, te_max) = range(&cols[10]);
+    let mut v = json!({
         "contact_ratio": pair.contact_ratio,
         "mesh_stiffness": {
             "min_n_per_m": mesh.min_stiffness_n_per_m(),
@@ -87,10 +105,16 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
             "fillet_foundation": model.case.stiffness.fillet_foundation,
         },
         "quasi_static_te": {
-            "min_um": te.iter().fold(f64::INFINITY, |a, b| a.min(*b)),
-            "max_um": te.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)),
+            "min_um": te_min,
+            "max_um": te_max,
         },
     });
+    if extended {
+        let (lo, hi) = range(&cols[12]);
+        v["mesh_stiffness"]["loaded_min_n_per_m"] = json!(lo);
+        v["mesh_stiffness"]["loaded_max_n_per_m"] = json!(hi);
+        v["corner_load_share_max"] = json!(range(&cols[13]).1);
+    }
     (t, v)
 }
 

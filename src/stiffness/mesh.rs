@@ -69,6 +69,12 @@ pub struct MeshStiffness {
     values: Vec<f64>,
     /// Spline second derivatives at the grid points, N/m^3.
     curvature: Vec<f64>,
+    /// Each tooth's compliance (beam and fillet foundation) at the grid points, pinion
+    /// then gear (the gear's at the conjugate point), m/N, and their spline second
+    /// derivatives, m/N/m^2: the pair's parts, for contacts where the two flanks are
+    /// loaded at points that are not conjugate ([`MeshStiffness::corner_pair_stiffness_n_per_m`]).
+    tooth_compliance: [Vec<f64>; 2],
+    tooth_compliance_curvature: [Vec<f64>; 2],
     mean_n_per_m: f64,
     min_n_per_m: f64,
     max_n_per_m: f64,
@@ -176,6 +182,8 @@ impl MeshStiffness {
             step_m: pair.path_length_m() / (n_points - 1) as f64,
             values: Vec::new(),
             curvature: Vec::new(),
+            tooth_compliance: [Vec::new(), Vec::new()],
+            tooth_compliance_curvature: [Vec::new(), Vec::new()],
             mean_n_per_m: 0.0,
             min_n_per_m: 0.0,
             max_n_per_m: 0.0,
@@ -183,11 +191,14 @@ impl MeshStiffness {
         };
         // Largest ratio of the foundation's compliance to the rest of the pair's.
         let mut foundation_ratio = 0.0_f64;
+        let mut teeth_c = [Vec::with_capacity(n_points), Vec::with_capacity(n_points)];
         me.values = (0..n_points)
             .map(|i| {
                 let c = me.compliances_at(pair.rho_start_m + i as f64 * me.step_m);
                 let fillet = c.pinion_fillet_m_per_n + c.gear_fillet_m_per_n;
                 foundation_ratio = foundation_ratio.max(fillet / (c.total_m_per_n() - fillet));
+                teeth_c[0].push(c.pinion.total_m_per_n() + c.pinion_fillet_m_per_n);
+                teeth_c[1].push(c.gear.total_m_per_n() + c.gear_fillet_m_per_n);
                 c.stiffness_n_per_m()
             })
             .collect();
@@ -219,6 +230,11 @@ impl MeshStiffness {
             )]));
         }
         me.curvature = clamped_spline_curvature(&me.values, me.step_m);
+        me.tooth_compliance_curvature = [
+            clamped_spline_curvature(&teeth_c[0], me.step_m),
+            clamped_spline_curvature(&teeth_c[1], me.step_m),
+        ];
+        me.tooth_compliance = teeth_c;
         me.mean_n_per_m = me.path_integral() / pair.base_pitch_m;
         (me.min_n_per_m, me.max_n_per_m) = me.period_extrema(20 * n_points);
         Ok(me)
@@ -250,15 +266,37 @@ impl MeshStiffness {
     /// k_pair(rho1), N/m, from the table (cubic spline, O(1)). Positions outside the path
     /// of contact are clamped to its ends: the pair is only defined there.
     pub fn pair_stiffness_n_per_m(&self, rho1_m: f64) -> f64 {
-        let n = self.values.len();
+        self.spline_at(&self.values, &self.curvature, rho1_m)
+    }
+
+    /// Stiffness of a pair whose pinion flank is loaded at the pinion's radius of
+    /// curvature `pinion_rho1_m` and whose gear flank at the point conjugate to
+    /// `gear_rho1_m` (both pinion rho1 on the path, clamped to it), each tooth along its
+    /// own flank's normal there, N/m: 1/k = 1/k_h + c_pinion + c_gear (the pair's series
+    /// springs, section 2 of docs/MODEL.md, each tooth's beam and foundation at its own
+    /// load point). With both at rho1 it is k_pair(rho1) (within the splines' 1e-9). The
+    /// corner contacts beyond the path (`dynamics::contact_path`) load the corner tooth at
+    /// its tip and the mate where the corner touches it.
+    pub fn corner_pair_stiffness_n_per_m(&self, pinion_rho1_m: f64, gear_rho1_m: f64) -> f64 {
+        let [cp, cg] = &self.tooth_compliance;
+        let [mp, mg] = &self.tooth_compliance_curvature;
+        1.0 / (self.hertz_m_per_n
+            + self.spline_at(cp, mp, pinion_rho1_m)
+            + self.spline_at(cg, mg, gear_rho1_m))
+    }
+
+    /// The clamped cubic spline through `values` (second derivatives `curvature`) on the
+    /// table's grid at rho1 (clamped to the path), O(1).
+    fn spline_at(&self, values: &[f64], curvature: &[f64], rho1_m: f64) -> f64 {
+        let n = values.len();
         let x = ((rho1_m - self.pair.rho_start_m) / self.step_m).clamp(0.0, (n - 1) as f64);
         let i = (x as usize).min(n - 2);
         let t = x - i as f64;
         let s = 1.0 - t;
         let h2 = self.step_m * self.step_m / 6.0;
-        s * self.values[i]
-            + t * self.values[i + 1]
-            + h2 * ((s * s * s - s) * self.curvature[i] + (t * t * t - t) * self.curvature[i + 1])
+        s * values[i]
+            + t * values[i + 1]
+            + h2 * ((s * s * s - s) * curvature[i] + (t * t * t - t) * curvature[i + 1])
     }
 
     /// Total mesh stiffness k_m at mesh phase `phase_rad` (pinion rotation since a pair
@@ -443,6 +481,28 @@ mod tests {
                 let err = (m.pair_stiffness_n_per_m(r) / exact - 1.0).abs();
                 assert!(err < 1e-6, "fillet {fillet} rho {r}: {err:e}");
             }
+        }
+    }
+
+    #[test]
+    fn a_pair_loaded_at_two_points_adds_each_tooth_at_its_own() {
+        // Direct compliances of each tooth at its own load point, in series with Hertz:
+        // the splines' error only (1e-6, as above). Loaded at one point it is the pair.
+        let m = paper(true);
+        let p = m.pair();
+        for (a, b) in [(0.2, 0.9), (0.5, 0.5), (0.95, 0.05), (0.0, 1.0)] {
+            let at = |f: f64| p.rho_start_m + f * p.path_length_m();
+            let (ca, cb) = (m.compliances_at(at(a)), m.compliances_at(at(b)));
+            let direct = 1.0
+                / (ca.hertz_m_per_n
+                    + ca.pinion.total_m_per_n()
+                    + ca.pinion_fillet_m_per_n
+                    + cb.gear.total_m_per_n()
+                    + cb.gear_fillet_m_per_n);
+            let k = m.corner_pair_stiffness_n_per_m(at(a), at(b));
+            assert!((k / direct - 1.0).abs() < 1e-6, "{a} {b}: {k} {direct}");
+            let same = m.corner_pair_stiffness_n_per_m(at(a), at(a));
+            assert!((same / m.pair_stiffness_n_per_m(at(a)) - 1.0).abs() < 1e-6);
         }
     }
 

@@ -6,8 +6,9 @@ use super::teeth::ToothInputs;
 use crate::config::case::{Case, LoadSharingModel};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
+use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::model::{GearSystem, GearSystemParts};
+use crate::dynamics::model::{GearSystem, GearSystemParts, MAX_PAIRS};
 use crate::dynamics::params::{DynamicParams, OperatingPoint};
 use crate::dynamics::period_search::{DynamicsError, SteadyStateSettings};
 use crate::dynamics::quasi_static::solve_quasi_static;
@@ -36,6 +37,8 @@ pub struct Model {
     pub grid: ProfileGrid,
     pub settings: SteadyStateSettings,
     pub effective_modulus_pa: f64,
+    /// Where the pairs touch (`contact.path`; a train: its first stage's).
+    pub contact: ContactPath,
     /// The teeth of a case with per-tooth inputs (errors, modifications, faults); None:
     /// every tooth the paper's.
     pub teeth: Option<ToothInputs>,
@@ -71,11 +74,16 @@ pub fn pitch_line_velocity_warning(
     })
 }
 
+/// The refusal of Pedrero's law with corner contact: eq. (7) shares the load between
+/// pairs on the nominal path only.
+pub const PEDRERO_WITH_CORNERS: &str = "`contact.load_sharing` = \"pedrero\" (paper eq. 7) shares the load between pairs on the nominal path of contact only, but `contact.path` = \"extended\" lets the tip corners touch beyond it: give `contact.path` = \"nominal\" for the paper's model, or `contact.load_sharing` = \"stiffness\" or \"auto\", which share the load by each pair's compression";
+
 /// The warning of a case whose teeth differ under `contact.load_sharing` = "auto": its
 /// pairs share the load by their compressions, identical teeth by Pedrero's law, so a
 /// comparison of the two (a sweep across zero error, a baseline) mixes two laws; on the
 /// paper's case the law alone moves the initial wear rate by about a fifth
-/// (docs/MODEL.md, section 9).
+/// (docs/MODEL.md, section 9). Given on the nominal path only: with corner contact
+/// (`contact.path` = "extended") identical teeth share by compression too.
 pub const AUTO_SHARING_WITH_RESOLVED_TEETH: &str = "the teeth differ or are modified, so the pairs share the load by their own compressions (`contact.load_sharing` = \"auto\"), while identical teeth use Pedrero's law (paper eq. 7); to compare such cases with identical teeth under one law, give `contact.load_sharing` = \"stiffness\"";
 
 /// Warnings for the gears whose ISO 1328-1 tolerances (`teeth.accuracy_grade`) extrapolate
@@ -147,6 +155,10 @@ impl Model {
         if case.planetary.is_some() {
             return Err(ModelError(vec![planetary_refusal()]));
         }
+        if case.contact.load_sharing == LoadSharingModel::Pedrero && case.contact.path.is_extended()
+        {
+            return Err(ModelError(vec![PEDRERO_WITH_CORNERS.into()]));
+        }
         if !case.stage.is_empty() {
             return Self::train_from_case(case);
         }
@@ -198,12 +210,17 @@ impl Model {
                 LoadSharingModel::Pedrero => {
                     return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
                 }
-                LoadSharingModel::Auto => warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into()),
+                // With corner contact identical teeth share by compression too: one law.
+                LoadSharingModel::Auto if !case.contact.path.is_extended() => {
+                    warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into())
+                }
+                LoadSharingModel::Auto => {}
                 LoadSharingModel::Stiffness => {}
             }
         }
         Ok(Self {
             teeth,
+            contact: ContactPath::new(&pair, case.contact.path, MAX_PAIRS),
             case: case.clone(),
             effective_modulus_pa: effective_modulus_of(&case.materials),
             elastic,
@@ -245,6 +262,7 @@ impl Model {
             },
         };
         Ok(Self {
+            contact: first.contact.clone(),
             pair: first.pair.clone(),
             mesh: first.mesh.clone(),
             grid: first.grid.clone(),
@@ -332,6 +350,7 @@ impl Model {
             roughness_um,
             effective_modulus_pa: self.effective_modulus_pa,
             teeth,
+            contact: &self.contact,
         })
     }
 

@@ -9,7 +9,9 @@ use crate::contact::friction::Friction;
 use crate::dynamics::assembly::elements::{Drive, Elements};
 use crate::dynamics::assembly::train::StageElements;
 use crate::dynamics::assembly::{Assembly, Dof};
+use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
 use crate::geometry::{GearPair, ProfileGrid};
@@ -27,6 +29,8 @@ pub struct Stage {
     pub grid: ProfileGrid,
     /// The stage's masses and inertias (with `"derived"` resolved) and bearings.
     pub lumped: DynamicsSection<f64>,
+    /// Where its pairs touch (`contact.path`).
+    pub contact: ContactPath,
 }
 
 /// A train's model objects (see the module docs).
@@ -103,12 +107,14 @@ impl TrainModel {
             let d = &sc.dynamics;
             let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
             let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
+            let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
             stages.push(Stage {
                 case: sc,
                 pair,
                 mesh,
                 grid,
                 lumped,
+                contact,
             });
         }
         if !problems.is_empty() {
@@ -214,6 +220,7 @@ impl TrainModel {
                     roughness_um,
                     effective_modulus_pa,
                     teeth: None,
+                    contact: &s.contact,
                 };
                 let op = MeshOperating {
                     speeds_rad_s: [p.pinion_speed_rad_s, p.gear_speed_rad_s],

@@ -183,7 +183,7 @@ impl ModeSwitch {
 }
 
 /// The sets of pairs in contact of every mesh as decided at some time
-/// (`GearPair::decided_set`): evaluations whose sets and modes agree give the same
+/// (`GearPair::decided_set_in`): evaluations whose sets and modes agree give the same
 /// result bit for bit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DecidedSets {
@@ -209,12 +209,13 @@ impl GearSystem<'_> {
     }
 
     /// What an evaluation in `frame` at time t takes from the frame's decision time (see
-    /// [`crate::geometry::GearPair::decided_set`]), for every mesh.
+    /// [`crate::geometry::GearPair::decided_set_in`]), for every mesh.
     pub fn decided_sets(&self, frame: ContactFrame, t_s: f64) -> DecidedSets {
         let t = frame.decision_time_s.unwrap_or(t_s);
         let mut sets = [(0.0, 0); MAX_MESHES];
         for (m, mesh) in self.meshes.iter().enumerate() {
-            sets[m] = mesh.parts.pair.decided_set(mesh.phase_at(t));
+            let reach = mesh.parts.contact.reach();
+            sets[m] = mesh.parts.pair.decided_set_in(reach, mesh.phase_at(t));
         }
         DecidedSets {
             sets,

@@ -113,17 +113,23 @@ impl TrainMesh<'_> {
         let frozen = frame.mode;
         let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
         let mut gap_rate_weighted = 0.0;
-        for (_, rho1) in self.parts.pair.pairs_in_contact_decided(phase, decide) {
+        let contact = self.parts.contact;
+        let pairs = self
+            .parts
+            .pair
+            .pairs_in_reach_decided(contact.reach(), phase, decide);
+        for (_, rho1) in pairs {
             let n = sp.n_pairs;
             if n == MAX_PAIRS {
                 break;
             }
-            let k = self.parts.mesh.pair_stiffness_n_per_m(rho1);
-            let (g_wear, dg_drho) = self.parts.gap.at(rho1);
+            let pp = contact.plain_pair(self.parts.mesh, self.parts.gap, rho1);
+            let (k, g_wear, dg_drho) = (pp.stiffness_n_per_m, pp.gap_m, pp.gap_slope);
             // Effective gap of this pair: wear gap minus the external error (eq. 2 sign).
             let gap = g_wear - e_ext;
             let c = sp.deflection_m - gap;
-            sp.rho1_m[n] = rho1;
+            sp.rho1_m[n] = pp.contact_rho1_m;
+            sp.corner[n] = pp.corner;
             sp.stiffness_n_per_m[n] = k;
             sp.compression_m[n] = c;
             if frozen.map_or(c > 0.0, |m| m.touches(n)) {
@@ -176,16 +182,22 @@ impl TrainMesh<'_> {
         let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
         let cycle_now = self.parts.pair.mesh_cycle(decide);
         let mut gap_rate_weighted = 0.0;
-        for (k, rho1) in self.parts.pair.pairs_in_contact_decided(phase, decide) {
+        let contact = self.parts.contact;
+        let pairs = self
+            .parts
+            .pair
+            .pairs_in_reach_decided(contact.reach(), phase, decide);
+        for (k, rho1) in pairs {
             let n = sp.n_pairs;
             if n == MAX_PAIRS {
                 break;
             }
-            let cycle = cycle_now - k as i64;
-            let pp = tm.pair(self.parts.mesh, cycle, rho1);
+            let cycle = cycle_now - k;
+            let pp = tm.pair_in(self.parts.mesh, contact, cycle, rho1);
             let gap = pp.gap_m - e_ext - e_run;
             let c = sp.deflection_m - gap;
-            sp.rho1_m[n] = rho1;
+            sp.rho1_m[n] = contact.contact_rho1_m(rho1);
+            sp.corner[n] = pp.corner;
             sp.stiffness_n_per_m[n] = pp.stiffness_n_per_m;
             sp.compression_m[n] = c;
             sp.cycle[n] = cycle;
@@ -229,7 +241,11 @@ impl TrainMesh<'_> {
         ms.rho1_m = sp.rho1_m;
         ms.stiffness_n_per_m = sp.stiffness_n_per_m;
         ms.deflection_m = sp.deflection_m;
-        ms.stiffness_total_n_per_m = sp.stiffness_n_per_m[..n].iter().sum();
+        // The pairs on the path, and the corners beyond it that touch.
+        ms.stiffness_total_n_per_m = (0..n)
+            .filter(|i| !sp.corner[*i] || sp.touching[*i])
+            .map(|i| sp.stiffness_n_per_m[i])
+            .sum();
         ms.stiffness_touching_n_per_m = sp.stiffness_touching_n_per_m;
         ms.compression_m = sp.compression_m;
         ms.force_unclipped_n = sp.force_unclipped_n;
@@ -242,6 +258,7 @@ impl TrainMesh<'_> {
         ms.cycle = sp.cycle;
         ms.width_loss = sp.width_loss;
         ms.curvature_change = sp.curvature_change;
+        ms.corner = sp.corner;
         // One loop over the few pairs past n (a fill per array would call memset).
         for i in n..MAX_PAIRS {
             ms.share[i] = 0.0;

@@ -1,0 +1,235 @@
+//! Where the teeth of a pair can touch: on the path of contact (the paper's model, its
+//! involutes meeting on the line of action), or, beyond its ends, by a tip corner against
+//! the mate's flank (corner contact, `geometry::corner`; docs/MODEL.md, section 4).
+//!
+//! A pair is followed over the reach: the path of contact, extended (`"extended"`) at
+//! each end until its corner stands [`REACH_GAP_MODULES`] modules off the mate's flank. At
+//! each position it is a [`PairPlace`]: on the path, both flanks are loaded at the
+//! contact point rho1 and the geometric gap is zero; before the path's start the gear's
+//! tip corner touches the pinion flank, past its end the pinion's tip corner the gear
+//! flank, with the gap of the corner's geometry. The corner pair's spring is that of
+//! its two teeth, the corner tooth loaded at its tip and the mate where the corner
+//! touches it (`MeshStiffness::corner_pair_stiffness_n_per_m`), in series with the same
+//! Hertz term as on the path; its force acts, like every pair's, along the line of action
+//! (the tilt of the contact normal from it, which vanishes at the path's ends, is left
+//! out: docs/MODEL.md). Wear gaps, reliefs, errors and faults enter where each flank is
+//! loaded. At the path's ends the corner's gap is zero and its spring the pair's: the
+//! load passes continuously from the corner to the path.
+
+use super::excitation::PairGap;
+use crate::config::case::ContactPathModel;
+use crate::geometry::corner::{CornerGeometry, TipCorner};
+use crate::geometry::pair::Reach;
+use crate::geometry::GearPair;
+use crate::stiffness::mesh::MeshStiffness;
+
+/// Gap of a contact that cannot happen (a contact a broken tip has removed, a corner
+/// that reaches no flank), m: far beyond any mesh deflection, so the pair never touches.
+pub const REMOVED_GAP_M: f64 = 1e-3;
+
+/// Gap at which a corner stops being followed beyond the path, in modules (0.1 m: 200 µm
+/// on the paper's pair, 14 times its mesh deflection under the design load; a tooth bent
+/// so far would have yielded). A mesh that deflects that much leaves the model.
+pub const REACH_GAP_MODULES: f64 = 0.1;
+
+/// Where and how a pair of teeth at the position rho1 of the reach touches.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairPlace {
+    /// The pinion flank's load point: its radius of curvature, m.
+    pub pinion_rho1_m: f64,
+    /// The gear flank's load point, as the pinion rho1 of its conjugate point, m.
+    pub gear_rho1_m: f64,
+    /// d pinion_rho1 / d rho1 and d gear_rho1 / d rho1.
+    pub pinion_rate: f64,
+    pub gear_rate: f64,
+    /// The corner's gap along the line of action (0 on the path), m, and d gap / d rho1.
+    pub gap_m: f64,
+    pub gap_slope: f64,
+    /// A corner touches (false: the involutes on the path).
+    pub corner: bool,
+}
+
+impl PairPlace {
+    /// Both flanks at their common contact rho1 (on the path).
+    pub fn on_path(rho1_m: f64) -> Self {
+        Self {
+            pinion_rho1_m: rho1_m,
+            gear_rho1_m: rho1_m,
+            pinion_rate: 1.0,
+            gear_rate: 1.0,
+            gap_m: 0.0,
+            gap_slope: 0.0,
+            corner: false,
+        }
+    }
+}
+
+/// A pair of identical teeth at one position: what the mesh force law takes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlainPair {
+    pub stiffness_n_per_m: f64,
+    /// Gap (corner geometry and wear), m, and d gap / d rho1.
+    pub gap_m: f64,
+    pub gap_slope: f64,
+    /// Where its Hertz contact, friction and kinematics are taken: rho1 on the path, the
+    /// path's end the corner continues beyond it (a sharp edge has no Hertz radius).
+    pub contact_rho1_m: f64,
+    pub corner: bool,
+}
+
+/// The corners of a pair's teeth and their geometry.
+#[derive(Debug, Clone, PartialEq)]
+struct Corners {
+    geometry: CornerGeometry,
+    pinion_tip: TipCorner,
+    gear_tip: TipCorner,
+}
+
+/// Where the pairs of one mesh touch (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactPath {
+    reach: Reach,
+    /// The path of contact, rho_A and rho_E, m.
+    path: (f64, f64),
+    loa_m: f64,
+    corners: Option<Corners>,
+}
+
+impl ContactPath {
+    /// The contact of `pair` under `model`; the reach holds at most `max_pairs` pairs.
+    pub fn new(pair: &GearPair, model: ContactPathModel, max_pairs: usize) -> Self {
+        let path = (pair.rho_start_m, pair.rho_end_m);
+        let nominal = Self {
+            reach: pair.nominal_reach(),
+            path,
+            loa_m: pair.loa_length_m,
+            corners: None,
+        };
+        if !model.is_extended() {
+            return nominal;
+        }
+        let geometry = CornerGeometry::new(pair);
+        let pinion_tip = TipCorner::sharp(pair.rho_end_m);
+        let gear_tip = TipCorner::sharp(pair.loa_length_m - pair.rho_start_m);
+        // A reach of (max_pairs - 1) base pitches holds at most max_pairs pairs.
+        let spare = (max_pairs as f64 - 1.0) * pair.base_pitch_m - pair.path_length_m();
+        let limit = REACH_GAP_MODULES * pair.module_m;
+        let reach = geometry.reach(gear_tip, pinion_tip, path, limit, 0.5 * spare.max(0.0));
+        Self {
+            reach,
+            corners: Some(Corners {
+                geometry,
+                pinion_tip,
+                gear_tip,
+            }),
+            ..nominal
+        }
+    }
+
+    /// The stretch over which pairs are followed.
+    pub fn reach(&self) -> Reach {
+        self.reach
+    }
+
+    /// Whether corners touch beyond the path (`"extended"`).
+    pub fn is_extended(&self) -> bool {
+        self.corners.is_some()
+    }
+
+    /// The place of the pair at `rho1_m` whose pinion's involute ends at `pinion_tip`
+    /// and gear's at `gear_tip` (each tooth's own corner: its tip, or the cut of a broken
+    /// tip; None: the pair's full tip). On the nominal model every position is on the
+    /// path (pairs are only followed along it). None where the teeth cannot touch: past a
+    /// cut with the nominal model, or where no corner reaches the mate's flank.
+    pub fn place(
+        &self,
+        rho1_m: f64,
+        pinion_tip: Option<TipCorner>,
+        gear_tip: Option<TipCorner>,
+    ) -> Option<PairPlace> {
+        let Some(c) = &self.corners else {
+            let cut = pinion_tip.is_some_and(|t| rho1_m > t.involute_end_rho_m)
+                || gear_tip.is_some_and(|t| rho1_m < self.loa_m - t.involute_end_rho_m);
+            return (!cut).then(|| PairPlace::on_path(rho1_m));
+        };
+        let pt = pinion_tip.unwrap_or(c.pinion_tip);
+        let gt = gear_tip.unwrap_or(c.gear_tip);
+        let (start, end) = (self.loa_m - gt.involute_end_rho_m, pt.involute_end_rho_m);
+        if rho1_m < start {
+            let k = c.geometry.approach(gt, rho1_m)?;
+            // The touched point must lie on the pinion's involute as it ends.
+            (k.mate_rho_m <= end).then_some(PairPlace {
+                pinion_rho1_m: k.mate_rho_m,
+                gear_rho1_m: start,
+                pinion_rate: k.mate_rho_slope,
+                gear_rate: 0.0,
+                gap_m: k.gap_m,
+                gap_slope: k.gap_slope,
+                corner: true,
+            })
+        } else if rho1_m > end {
+            let k = c.geometry.recess(pt, rho1_m)?;
+            let gear_rho1 = self.loa_m - k.mate_rho_m;
+            (gear_rho1 >= start).then_some(PairPlace {
+                pinion_rho1_m: end,
+                gear_rho1_m: gear_rho1,
+                pinion_rate: 0.0,
+                gear_rate: -k.mate_rho_slope,
+                gap_m: k.gap_m,
+                gap_slope: k.gap_slope,
+                corner: true,
+            })
+        } else {
+            Some(PairPlace::on_path(rho1_m))
+        }
+    }
+
+    /// Where a pair at `rho1_m` takes its Hertz contact, friction and kinematics: rho1
+    /// itself on the nominal model and on the path, else the end of the path its corner
+    /// continues.
+    pub fn contact_rho1_m(&self, rho1_m: f64) -> f64 {
+        match self.corners {
+            None => rho1_m,
+            Some(_) => rho1_m.clamp(self.path.0, self.path.1),
+        }
+    }
+
+    /// A pair of identical teeth at `rho1_m` with the wear `gap`: its stiffness (the
+    /// path's table on the path, the corner's spring beyond it) and gap.
+    pub fn plain_pair(&self, mesh: &MeshStiffness, gap: &PairGap, rho1_m: f64) -> PlainPair {
+        match self.place(rho1_m, None, None) {
+            Some(p) if !p.corner => {
+                let (g, dg) = gap.at(rho1_m);
+                PlainPair {
+                    stiffness_n_per_m: mesh.pair_stiffness_n_per_m(rho1_m),
+                    gap_m: g,
+                    gap_slope: dg,
+                    contact_rho1_m: rho1_m,
+                    corner: false,
+                }
+            }
+            Some(p) => {
+                let (g, dp, dg) = gap.at_flanks(p.pinion_rho1_m, p.gear_rho1_m);
+                PlainPair {
+                    stiffness_n_per_m: mesh
+                        .corner_pair_stiffness_n_per_m(p.pinion_rho1_m, p.gear_rho1_m),
+                    gap_m: p.gap_m + g,
+                    gap_slope: p.gap_slope + dp * p.pinion_rate + dg * p.gear_rate,
+                    contact_rho1_m: self.contact_rho1_m(rho1_m),
+                    corner: true,
+                }
+            }
+            None => PlainPair {
+                stiffness_n_per_m: 0.0,
+                gap_m: REMOVED_GAP_M,
+                gap_slope: 0.0,
+                contact_rho1_m: self.contact_rho1_m(rho1_m),
+                corner: true,
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+#[path = "tests_contact_path.rs"]
+mod tests;
