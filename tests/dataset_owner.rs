@@ -28,9 +28,15 @@ fn another_design_is_refused_before_the_folder_changes() {
     let b = write(dir.path(), "b.toml", &design(2));
     let out = dir.path().join("out");
     let out_s = out.to_str().unwrap();
-    ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    // The line on standard error says what was written: 2 states x 1 realisation.
+    let e = ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    let line = |c, r| {
+        format!("dataset: 2 records ({c} computed, {r} reused), index and metadata -> {out_s}/")
+    };
+    assert!(e.contains(&line(2, 0)), "{e}");
     // The same design again: a resume, allowed (nothing to compute).
-    ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    let e = ok(&["dataset", "--design", &a, "--out", out_s, "-q"]);
+    assert!(e.contains(&line(0, 2)), "{e}");
     let before = snapshot(&out);
     for extra in [&[][..], &["--shard", "1/2"][..]] {
         let mut args = vec!["dataset", "--design", &b, "--out", out_s, "-q"];

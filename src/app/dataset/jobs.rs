@@ -104,6 +104,27 @@ pub struct DatasetJob {
     pub figures: FigureRequest,
 }
 
+/// The line that says what a dataset run or merge wrote and where ("dataset: 4 records (2
+/// computed, 2 reused), index and metadata -> data/"); a shard writes its description
+/// instead of the index.
+fn written(o: &DatasetOutcome, root: &Path, what: &str, shard: bool) -> String {
+    let plural = if o.shard_records == 1 { "" } else { "s" };
+    let records = if what == "dataset-merge" {
+        format!("{} record{plural} joined", o.shard_records)
+    } else {
+        format!(
+            "{} record{plural} ({} computed, {} reused)",
+            o.shard_records, o.computed, o.reused
+        )
+    };
+    let files = if shard {
+        "the shard's description"
+    } else {
+        "index and metadata"
+    };
+    format!("{what}: {records}, {files} -> {}/", root.display())
+}
+
 fn outcome(o: &DatasetOutcome, root: &Path, what: &str) -> Outcome {
     let mut artifacts = Artifacts {
         summary: serde_json::json!({
@@ -194,7 +215,7 @@ impl Job for DatasetJob {
         refuse_planted_names(&req, &self.out, prev.as_ref())?;
         let out = publish::open(&self.out, set.as_deref(), self.name(), self.replace)?;
         let o = run_dataset(&req, checked, &self.out, out, observer)?;
-        observer.note(&format!("dataset: results -> {}", self.out.display()));
+        observer.note(&written(&o, &self.out, "dataset", self.shard.count > 1));
         Ok(outcome(&o, &self.out, "dataset"))
     }
 }
@@ -268,7 +289,7 @@ impl Job for DatasetMergeJob {
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
-        observer.note(&format!("dataset-merge: results -> {}", self.out.display()));
+        observer.note(&written(&o, &self.out, "dataset-merge", false));
         Ok(outcome(&o, &self.out, "dataset-merge"))
     }
 }
