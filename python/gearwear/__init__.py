@@ -153,6 +153,31 @@ def _path(out: _Optional[PathLike]) -> _Optional[str]:
     return None if out is None else _os.fspath(out)
 
 
+def _whole(name: str, v: _Any) -> int:
+    """``v`` as a whole number, refusing what Python would silently turn into one (a bool,
+    a float such as 1.5, a string)."""
+    if isinstance(v, bool) or not isinstance(v, (int, _np.integer)):
+        raise TypeError(f"`{name}` = {v!r}: expected a whole number (int), got {type(v).__name__}")
+    return int(v)
+
+
+def _real(name: str, v: _Any) -> float:
+    """``v`` as a real number, refusing a bool, a string (``'2e4'``) or a complex."""
+    if isinstance(v, bool) or not isinstance(v, (int, float, _np.integer, _np.floating)):
+        raise TypeError(f"`{name}` = {v!r}: expected a real number, got {type(v).__name__}")
+    return float(v)
+
+
+def _shard(v: _Any, text: bool) -> _Any:
+    """A shard as ``(i, n)`` of whole numbers (or, where ``text``, ``"I/N"``)."""
+    if v is None or (text and isinstance(v, str)):
+        return v
+    if not (isinstance(v, (tuple, list)) and len(v) == 2):
+        form = '"I/N" or (i, n)' if text else "(i, n)"
+        raise TypeError(f"`shard` = {v!r}: expected {form}, shard i of n")
+    return (_whole("shard[0]", v[0]), _whole("shard[1]", v[1]))
+
+
 def _done(result: _Any, native: _Mapping[str, _Any]) -> _Any:
     """Warn about the study's findings and return its result."""
     for w in native["warnings"]:
@@ -360,7 +385,7 @@ def sweep(
         run,
         progress,
         out=_path(out),
-        shard=shard,
+        shard=_shard(shard, text=True),
         continuation=continuation,
         budget_scale=budget_scale,
         replace=replace,
@@ -409,6 +434,9 @@ def _table(data: _Any, what: str, columns: _Optional[_Sequence[str]] = None) -> 
             arrays = [data[c] for c in names]
         else:  # a pandas DataFrame
             names = [str(c) for c in data.columns]
+            for c in data.columns:
+                if _np.iscomplexobj(data[c].to_numpy()):
+                    raise TypeError(f"{what}: column {str(c)!r} holds complex numbers: give real ones")
             arrays = [data[c].to_numpy(dtype=_np.float64, na_value=_np.nan) for c in data.columns]
     elif isinstance(data, _Mapping):
         names = [str(k) for k in data]
@@ -430,6 +458,8 @@ def _table(data: _Any, what: str, columns: _Optional[_Sequence[str]] = None) -> 
         )
     cols = []
     for name, a in zip(names, arrays):
+        if _np.iscomplexobj(a):
+            raise TypeError(f"{what}: column {name!r} holds complex numbers: give real ones")
         a = _np.ascontiguousarray(a, dtype=_np.float64)
         if a.ndim != 1:
             raise ValueError(f"{what}: column {name!r} is not one-dimensional")
@@ -534,13 +564,13 @@ def predict(
     n = _native.predict(
         _check_case(case),
         post,
-        limit_um=float(limit_um),
-        cycles=float(cycles),
+        limit_um=_real("limit_um", limit_um),
+        cycles=_real("cycles", cycles),
         seed=seed,
         samples=samples,
         grid_points=grid_points,
         forward=forward,
-        shard=shard,
+        shard=_shard(shard, text=True),
         check_runs=check_runs,
         out=_path(out),
         progress=progress,
@@ -549,7 +579,7 @@ def predict(
         future_spectrum=None if future_spectrum is None else (
             future_spectrum if isinstance(future_spectrum, str) else _os.fspath(future_spectrum)
         ),
-        future_from_cycles=None if future_from_cycles is None else float(future_from_cycles),
+        future_from_cycles=None if future_from_cycles is None else _real("future_from_cycles", future_from_cycles),
         figures=figures,
         figure_size=figure_size,
     )
@@ -619,8 +649,8 @@ def load_spectrum(
     h = _table(history, "history", columns)
     n = _native.load_spectrum(
         h,
-        torque_classes=torque_classes,
-        speed_classes=speed_classes,
+        torque_classes=_whole("torque_classes", torque_classes),
+        speed_classes=_whole("speed_classes", speed_classes),
         interpolation=interpolation,
         level=level,
         torque_shaft=torque_shaft,
@@ -687,7 +717,7 @@ def dataset(
     ``shard=(i, n)`` runs shard i of n; join shards with ``dataset_merge``.
     ``figures``, ``figure_size``: the formats and size of ``indicator_trends`` (the
     records are the same whatever they are), as for :func:`stiffness`."""
-    sh = None if shard is None else (int(shard[0]), int(shard[1]))
+    sh = _shard(shard, text=False)
     if isinstance(design, _os.PathLike):
         design = _os.fspath(design)
     n = _native.dataset(

@@ -5,6 +5,7 @@ the output folder."""
 import itertools
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -190,3 +191,41 @@ def test_run_into_a_folder_with_a_planted_manifest_touches_nothing_outside(tmp_p
     with pytest.raises(OSError, match="symbolic link"):
         gw.run(CASE.set("wear.total_cycles", 5e3), out=out)
     assert snapshot(outside) == before
+
+
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda tmp: gw.dataset(_TINY_DESIGN, tmp / "d", shard=(1, 2, 3)), "shard"),
+        (lambda tmp: gw.dataset(_TINY_DESIGN, tmp / "d", shard=(1.5, 2)), "shard[0]"),
+        (lambda tmp: gw.load_spectrum(_HISTORY, torque_classes=True), "torque_classes"),
+        (lambda tmp: gw.load_spectrum(_HISTORY, speed_classes=2.0), "speed_classes"),
+        (
+            lambda tmp: gw.load_spectrum({**_HISTORY, "torque_nm": [10, 10 + 1j, 20]}),
+            "torque_nm",
+        ),
+        (lambda tmp: gw.sweep(gw.Case.paper(), {"operating.input_speed_hz": [30]}, shard=(1.5, 2)), "shard[0]"),
+    ],
+)
+def test_values_python_would_coerce_are_refused_by_type(tmp_path, call, name):
+    """Issue 33: a bool, a float or a string where a whole or real number belongs, a shard
+    of three numbers and a complex history were silently converted (int(1.5) = 1,
+    True = 1, the imaginary part dropped); each is now a TypeError naming the argument,
+    before anything runs or is written."""
+    with pytest.raises(TypeError, match=re.escape(name)):
+        call(tmp_path)
+    assert not (tmp_path / "d").exists()
+
+
+def test_a_string_future_cycle_count_is_refused():
+    with pytest.raises(TypeError, match="future_from_cycles"):
+        gw.predict(gw.Case.paper(), None, limit_um=10.0, cycles=4e4, future_from_cycles="2e4")
+
+
+_TINY_DESIGN = {
+    "seed": 1,
+    "set": ["signals.record_length=0.05"],
+    "run_to_failure": {"states": 1, "max_cycles": 1e4},
+    "condition": [{"name": "healthy"}],
+}
+_HISTORY = {"time_s": [0.0, 1.0, 2.0], "torque_nm": [10.0, 10.0, 20.0], "input_speed_hz": [30.0, 30.0, 30.0]}
