@@ -15,9 +15,13 @@ use gearwear::study::Model;
 /// (`pairs_in_contact`), and eq. (7) is defined there only. The corner contact beyond
 /// the path is checked in tests/corner_contact.rs.
 fn model(sets: &[&str]) -> Model {
-    let sets: Vec<String> = std::iter::once("contact.path=nominal")
-        .chain(sets.iter().copied())
-        .map(|s| s.to_string())
+    model_on("nominal", sets)
+}
+
+/// The built-in case with `sets` under the contact model `path` ("nominal", "extended").
+fn model_on(path: &str, sets: &[&str]) -> Model {
+    let sets: Vec<String> = std::iter::once(format!("contact.path={path}"))
+        .chain(sets.iter().map(|s| s.to_string()))
         .collect();
     Model::from_case(&load_case("", &sets).expect("valid case")).expect("valid model")
 }
@@ -118,6 +122,15 @@ fn perfect_teeth(plain: &Model) -> gearwear::study::teeth::ToothInputs {
 
 #[test]
 fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_state() {
+    // On the paper's path and with corner contact (the default): a corner pair loads
+    // each flank at its own point (the mate's flank where the corner touches it, the
+    // corner's tooth at its tip), so each path must take each flank's wear there.
+    for path in ["nominal", "extended"] {
+        resolved_springs_are_the_plain_springs(path);
+    }
+}
+
+fn resolved_springs_are_the_plain_springs(path: &str) {
     // The tooth-resolved springs (each pair's teeth from its mesh cycle) with every flank
     // perfect and a wear profile common to all teeth must be the plain springs with the
     // same load-sharing law ("stiffness") at any time and state. 2000 random states:
@@ -128,8 +141,8 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
     // a few ulp of the ~10 um wear (1e-20 m) against compressions of 1e-6 m: the mesh
     // force, loads and accelerations agree to 1e-12 of their scale (a 1 nm gap change
     // would move the force by 1e-4 of it).
-    let plain = model(&["contact.load_sharing=stiffness"]);
-    let mut resolved = model(&["contact.load_sharing=stiffness"]);
+    let plain = model_on(path, &["contact.load_sharing=stiffness"]);
+    let mut resolved = model_on(path, &["contact.load_sharing=stiffness"]);
     resolved.teeth = Some(perfect_teeth(&plain));
     let n = plain.grid.len();
     let mut wear = gearwear::wear::WearState::new(n);
@@ -149,7 +162,7 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
     // Scale of the generalised coordinates: 40 um of mesh deflection each.
     let grad = a.mesh_gradient(0);
     let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-    let (mut touching, mut open) = (0, 0);
+    let (mut touching, mut open, mut corners_touching) = (0, 0, 0);
     for _ in 0..2000 {
         let t = 3.0 * t_mesh * 0.5 * (1.0 + uniform(&mut seed));
         let mut y = gearwear::dynamics::model::State::zeros(16);
@@ -167,11 +180,19 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
         assert_eq!(sa.n_pairs, sb.n_pairs);
         for k in 0..sa.n_pairs {
             assert_eq!(sa.rho1_m[k].to_bits(), sb.rho1_m[k].to_bits());
-            assert_eq!(sa.stiffness_n_per_m[k], sb.stiffness_n_per_m[k]);
-            assert!((sa.compression_m[k] - sb.compression_m[k]).abs() < 1e-19);
+            assert_eq!(sa.corner[k], sb.corner[k]);
+            let (ka, kb) = (sa.stiffness_n_per_m[k], sb.stiffness_n_per_m[k]);
+            assert_eq!(ka, kb, "{path}: pair {k} (corner {})", sa.corner[k]);
+            let dc = (sa.compression_m[k] - sb.compression_m[k]).abs();
+            assert!(
+                dc < 1e-19,
+                "{path}: pair {k} (corner {}): {dc:e} m",
+                sa.corner[k]
+            );
             assert_eq!(sa.touching[k], sb.touching[k]);
             if sa.touching[k] {
                 touching += 1;
+                corners_touching += usize::from(sa.corner[k]);
             } else {
                 open += 1;
             }
@@ -201,8 +222,12 @@ fn perfect_teeth_through_the_resolved_springs_are_the_plain_springs_state_by_sta
             );
         }
     }
-    println!("2000 states: {touching} touching and {open} open pairs compared");
+    println!(
+        "{path}: 2000 states, {touching} touching ({corners_touching} corners) and {open} open pairs compared"
+    );
     assert!(touching > 500 && open > 500);
+    // With corner contact the random deflections close some corners' gaps.
+    assert_eq!(corners_touching > 0, path == "extended");
 }
 
 #[test]

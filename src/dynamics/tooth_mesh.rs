@@ -273,12 +273,12 @@ impl ToothMesh {
         let cells = [self.cell(place.pinion_rho1_m), self.cell(place.gear_rho1_m)];
         let rates = [place.pinion_rate, place.gear_rate];
         let lerp = |v: &[f64], (i, w): (usize, f64)| v[i] + (v[i + 1] - v[i]) * w;
-        let mut gap = place.gap_m - fp.position_m - fg.position_m;
+        let mut removed = 0.0;
         let mut slope = place.gap_slope;
         let (mut compliance, mut width_loss) = (0.0, 0.0);
         for ((f, c), rate) in [fp, fg].into_iter().zip(cells).zip(rates) {
             let r = &f.removed_m;
-            gap += lerp(r, c);
+            removed += lerp(r, c);
             slope += (r[c.0 + 1] - r[c.0]) / self.spacing_m * rate;
             if let Some(t) = &f.compliance_m_per_n {
                 compliance += lerp(t, c);
@@ -288,8 +288,17 @@ impl ToothMesh {
             }
         }
         let k0 = mesh.corner_pair_stiffness_n_per_m(place.pinion_rho1_m, place.gear_rho1_m);
+        // Healthy teeth keep the plain pair's spring bit for bit (as on the path).
+        let k = if compliance == 0.0 {
+            k0
+        } else {
+            1.0 / (1.0 / k0 + compliance)
+        };
+        // The corner's gap plus the flanks' removed material, summed as the plain pair
+        // sums them (`ContactPath::plain_pair`), less the position errors.
+        let gap = place.gap_m + removed - fp.position_m - fg.position_m;
         PairProps {
-            stiffness_n_per_m: 1.0 / (1.0 / k0 + compliance),
+            stiffness_n_per_m: k,
             gap_m: gap,
             gap_slope: slope,
             width_loss: width_loss.clamp(0.0, 0.95),

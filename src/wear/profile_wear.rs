@@ -91,14 +91,17 @@ impl WearState {
 
     /// Gap a pair must close at each contact position: pinion wear plus the wear of the
     /// conjugate gear point (both measured along the profile normal = line of action).
+    /// Each flank's profile is kept as well: a tip corner beyond the path of contact
+    /// loads the two flanks at points that are not conjugate (the mate's flank where the
+    /// corner touches it, the corner's own flank at its tip), each with its own wear
+    /// (`dynamics::contact_path`; docs/MODEL.md 4.2), as the tooth-resolved mesh takes it.
     pub fn pair_gap(&self, grid: &ProfileGrid) -> PairGap {
-        let g = self
-            .pinion_m
-            .iter()
-            .zip(&self.gear_m)
-            .map(|(a, b)| a + b)
-            .collect();
-        PairGap::new(grid.rho_pinion_m[0], grid.spacing_m, g)
+        PairGap::from_flanks(
+            grid.rho_pinion_m[0],
+            grid.spacing_m,
+            self.pinion_m.clone(),
+            self.gear_m.clone(),
+        )
     }
 
     /// The same wear shape scaled so that the maximum pinion depth is `target_m`.
