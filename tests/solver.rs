@@ -249,8 +249,9 @@ fn every_speed_boundary_and_friction_has_a_steady_state_from_5_to_400_hz() {
 
 #[test]
 fn warm_start_from_a_periodic_state_converges_at_once() {
-    // The paper's contact model. With corner contact (the default) a warm start from the
-    // orbit took 4 periods when this was written, not at most 2: open (issue 32).
+    // The paper's contact model. With corner contact (the default) the warm start after
+    // the wear update below took 4 periods when this was written, not at most 3 (the
+    // shooting's starting Jacobian uses the nominal path's mean stiffness): open (issue 32).
     let m = model(&sets(&["contact.path=nominal"]));
     let none = ExternalError::none();
     let cold = dynamic(&m);
