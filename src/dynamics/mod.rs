@@ -21,6 +21,7 @@ pub mod recorder;
 pub mod response;
 pub mod shooting;
 pub mod spectrum;
+pub mod state_scales;
 pub mod steady;
 pub mod summary;
 pub mod tooth_mesh;

@@ -6,10 +6,11 @@
 
 use super::grid::train_nodes;
 use super::model::{GearSystem, State};
-use super::period::{period_stepper, state_scales, PeriodIntegrator, PlanMode, StepFailure};
+use super::period::{period_stepper, PeriodIntegrator, PlanMode, StepFailure};
 use super::recorder::Recorder;
 use super::response::{DynamicResponse, MeshResponse, PathSample};
 use super::shooting::{scaled_max, Reduction, Shooting};
+use super::state_scales::state_scales;
 use nalgebra::DVector;
 
 /// Numerical settings of a steady-state evaluation.

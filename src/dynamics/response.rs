@@ -296,7 +296,7 @@ pub struct DynamicResponse {
     /// included).
     pub periods_to_converge: usize,
     /// Largest change of the state over one recorded period, relative to the state's
-    /// scales (`period::state_scales`): how periodic the recorded window is.
+    /// scales (`state_scales::state_scales`): how periodic the recorded window is.
     pub periodicity_error: f64,
     /// The base period: the mesh period of a single pair, the smallest common period of
     /// a train's meshes, s.

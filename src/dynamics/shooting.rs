@@ -157,7 +157,7 @@ pub struct Shooting {
 impl Shooting {
     /// Starts from the monodromy exp(A_mean T) of the averaged linear model over one
     /// period of `period_s` seconds; `scales` are the state scales (see
-    /// [`super::period::state_scales`]).
+    /// [`super::state_scales::state_scales`]).
     pub fn new(sys: &GearSystem, red: &Reduction, period_s: f64, scales: &State) -> Self {
         let m = state_matrix_exp(&sys.mean_state_matrix(), period_s);
         let n = red.len();

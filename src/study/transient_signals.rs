@@ -106,7 +106,7 @@ pub fn transient_clean_record(
     let lead = bearing_forces(&r0, &model.params);
     let start = r0.end_state.clone();
     // The transient's system: the case at its fastest speed, so that the error control's
-    // velocity scale (`period::state_scales`) suits the whole ramp.
+    // velocity scale (`dynamics::state_scales`) suits the whole ramp.
     let fastest = drive.speed(0.0).max(drive.speed(duration)) / (2.0 * PI);
     let mut fast_case = case.clone();
     fast_case.set_load_point(LoadPoint {
