@@ -13,6 +13,19 @@ fn stderr(o: &std::process::Output) -> String {
 
 /// A square wave, 3 s at 20 N m then 1 s at 80 N m, ten periods, at 1500 rpm (25 Hz),
 /// sampled every 0.5 s so that the switches fall on samples.
+/// `gearwear load-spectrum --history history --out out` with `extra` arguments.
+fn load_spectrum(history: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "load-spectrum",
+        "--history",
+        history.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    gearwear(&args)
+}
+
 fn square_wave() -> String {
     sampled(
         "time_s,torque_nm,input_speed_rpm,oil_temp_c",
@@ -37,17 +50,11 @@ fn a_history_becomes_the_spectrum_a_case_reads() {
     let h = dir.path().join("history.csv");
     std::fs::write(&h, square_wave()).unwrap();
     let out = dir.path().join("ls");
-    let o = gearwear(&[
-        "load-spectrum",
-        "--history",
-        h.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--interpolation",
-        "hold",
-        "--torque-shaft",
-        "gear",
-    ]);
+    let o = load_spectrum(
+        &h,
+        &out,
+        &["--interpolation", "hold", "--torque-shaft", "gear"],
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     // Held between samples, the counts are exact (30 s and 10 s at 25 Hz: 750 and 250
     // revolutions), so the shares 0.75 / 0.25 and the torques are exact binary numbers.
@@ -124,13 +131,7 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
     ] {
         let h = dir.path().join("h.csv");
         std::fs::write(&h, format!("{header}{body}")).unwrap();
-        let o = gearwear(&[
-            "load-spectrum",
-            "--history",
-            h.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = load_spectrum(&h, &out, &[]);
         assert_eq!(o.status.code(), Some(2), "{body}: {}", stderr(&o));
         let e = stderr(&o);
         assert!(e.contains("--history") && e.contains(expect), "{e}");
@@ -143,13 +144,7 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
         "time_s;torque_nm;input_speed_hz\n0;10,5;30\n1;10,5;30\n",
     )
     .unwrap();
-    let o = gearwear(&[
-        "load-spectrum",
-        "--history",
-        h.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = load_spectrum(&h, &out, &[]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("separated by `;`"), "{}", stderr(&o));
     assert!(!out.exists());
@@ -160,15 +155,7 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
     }
     let h = dir.path().join("gap.csv");
     std::fs::write(&h, t).unwrap();
-    let o = gearwear(&[
-        "load-spectrum",
-        "--history",
-        h.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--speed-classes",
-        "51",
-    ]);
+    let o = load_spectrum(&h, &out, &["--speed-classes", "51"]);
     assert_eq!(o.status.code(), Some(2));
     let e = stderr(&o);
     // The options are checked first, all of them.
@@ -176,13 +163,7 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
         e.contains("--speed-classes 51") && e.contains("[1, 50]"),
         "{e}"
     );
-    let o = gearwear(&[
-        "load-spectrum",
-        "--history",
-        h.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = load_spectrum(&h, &out, &[]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("rows 20 and 21"), "{}", stderr(&o));
     assert!(!out.exists());
@@ -206,17 +187,11 @@ fn bins_below_the_merge_share_join_their_nearest_keeping_revolutions_and_torque(
     std::fs::write(&h, history_with_two_transients()).unwrap();
     let spectrum = |share: &str| {
         let out = dir.path().join(format!("ls{share}"));
-        let o = gearwear(&[
-            "load-spectrum",
-            "--history",
-            h.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--interpolation",
-            "hold",
-            "--merge-below-share",
-            share,
-        ]);
+        let o = load_spectrum(
+            &h,
+            &out,
+            &["--interpolation", "hold", "--merge-below-share", share],
+        );
         assert!(o.status.success(), "{}", stderr(&o));
         let s: serde_json::Value =
             serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
@@ -249,15 +224,7 @@ fn bins_below_the_merge_share_join_their_nearest_keeping_revolutions_and_torque(
     // Out of range: exit 2 naming the option and its range, nothing written.
     for bad in ["0.2", "-0.001", "NaN"] {
         let out = dir.path().join("never");
-        let o = gearwear(&[
-            "load-spectrum",
-            "--history",
-            h.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--merge-below-share",
-            bad,
-        ]);
+        let o = load_spectrum(&h, &out, &["--merge-below-share", bad]);
         assert_eq!(o.status.code(), Some(2), "{bad}");
         let e = stderr(&o);
         assert!(
@@ -281,15 +248,7 @@ fn reversed_torque_is_counted_as_idle_and_said_so() {
         t.push_str(&format!("{i},{},25\n", if i < 10 { 50 } else { -50 }));
     }
     std::fs::write(&h, t).unwrap();
-    let o = gearwear(&[
-        "load-spectrum",
-        "--history",
-        h.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--interpolation",
-        "hold",
-    ]);
+    let o = load_spectrum(&h, &out, &["--interpolation", "hold"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let e = stderr(&o);
     assert!(
