@@ -14,6 +14,7 @@ pub mod figures;
 pub mod html;
 pub mod ldd;
 pub mod modes;
+pub mod pair_load;
 pub mod paper;
 pub mod plot;
 pub mod prognostics;

@@ -241,6 +241,7 @@ pub fn stiffness_artifacts(model: &Model) -> Artifacts {
         f.data = Some("mesh_stiffness.csv".into());
     }
     a.table("mesh_stiffness.csv", table);
+    super::pair_load::add_pair_load_artifacts(model, &mut a);
     super::teeth::add_teeth_artifacts(model, &mut a);
     super::teeth::add_teeth_static_te(model, &mut a);
     a

@@ -354,6 +354,30 @@ impl Model {
         })
     }
 
+    /// The single pair's dynamic system with its contact following `contact` instead of
+    /// the case's `contact.path` (new, identical teeth): the other contact model of the
+    /// same pair, for figures that set the two beside each other.
+    pub fn system_with_contact<'a>(
+        &'a self,
+        contact: &'a ContactPath,
+        roughness_um: f64,
+    ) -> GearSystem<'a> {
+        GearSystem::new(GearSystemParts {
+            pair: &self.pair,
+            mesh: &self.mesh,
+            params: &self.params,
+            friction: &self.friction,
+            viscosity_cp: self.case.lubricant.viscosity_cp,
+            gap: &NO_GAP,
+            external: &NO_ERROR,
+            load_sharing: self.case.contact.load_sharing,
+            roughness_um,
+            effective_modulus_pa: self.effective_modulus_pa,
+            teeth: None,
+            contact,
+        })
+    }
+
     /// The tooth-resolved mesh of a wear state (None when every tooth is the paper's).
     pub fn tooth_mesh(&self, wear: &WearState) -> Option<ToothMesh> {
         self.teeth.as_ref().map(|t| t.mesh_for(wear))
