@@ -337,7 +337,18 @@ impl Model {
                 roughness_um,
             );
         }
-        let load_sharing = self.case.contact.load_sharing;
+        self.pair_system(&self.contact, gap, external, roughness_um, teeth)
+    }
+
+    /// The single pair's system with its contact following `contact`.
+    fn pair_system<'a>(
+        &'a self,
+        contact: &'a ContactPath,
+        gap: &'a PairGap,
+        external: &'a ExternalError,
+        roughness_um: f64,
+        teeth: Option<&'a ToothMesh>,
+    ) -> GearSystem<'a> {
         GearSystem::new(GearSystemParts {
             pair: &self.pair,
             mesh: &self.mesh,
@@ -346,11 +357,11 @@ impl Model {
             viscosity_cp: self.case.lubricant.viscosity_cp,
             gap,
             external,
-            load_sharing,
+            load_sharing: self.case.contact.load_sharing,
             roughness_um,
             effective_modulus_pa: self.effective_modulus_pa,
             teeth,
-            contact: &self.contact,
+            contact,
         })
     }
 
@@ -362,20 +373,7 @@ impl Model {
         contact: &'a ContactPath,
         roughness_um: f64,
     ) -> GearSystem<'a> {
-        GearSystem::new(GearSystemParts {
-            pair: &self.pair,
-            mesh: &self.mesh,
-            params: &self.params,
-            friction: &self.friction,
-            viscosity_cp: self.case.lubricant.viscosity_cp,
-            gap: &NO_GAP,
-            external: &NO_ERROR,
-            load_sharing: self.case.contact.load_sharing,
-            roughness_um,
-            effective_modulus_pa: self.effective_modulus_pa,
-            teeth: None,
-            contact,
-        })
+        self.pair_system(contact, &NO_GAP, &NO_ERROR, roughness_um, None)
     }
 
     /// The tooth-resolved mesh of a wear state (None when every tooth is the paper's).
