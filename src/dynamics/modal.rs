@@ -1,5 +1,5 @@
-//! Natural frequencies and mode shapes of the model linearised at the mean mesh
-//! stiffness: K phi = omega^2 M phi on the free coordinates (an imposed speed removes
+//! Natural frequencies and mode shapes of the model linearised at the mean loaded mesh
+//! stiffness ([`mean_mesh_stiffnesses`]): K phi = omega^2 M phi on the free coordinates (an imposed speed removes
 //! its coordinate), with K = K_bearings+couplings + k_mean g g^T (g = d delta/dq).
 //! Solved as the symmetric problem M^-1/2 K M^-1/2 (M is diagonal).
 
@@ -14,12 +14,12 @@ pub struct Modes {
     pub shapes: Vec<Vec<f64>>,
 }
 
-/// Each mesh's mean stiffness, N/m.
+/// Each mesh's mean stiffness under the load, N/m: the table mean on the nominal path,
+/// with corner contact the mean of the pairs that carry load in the quasi-static
+/// equilibrium, corners included (`quasi_static::loaded_mean_stiffnesses`): the modes are
+/// those of the loaded gearbox.
 pub fn mean_mesh_stiffnesses(sys: &GearSystem) -> Vec<f64> {
-    sys.meshes
-        .iter()
-        .map(|m| m.parts.mesh.mean_stiffness_n_per_m())
-        .collect()
+    super::quasi_static::loaded_mean_stiffnesses(sys)
 }
 
 /// Linearised mass (diagonal) and stiffness matrices of the free coordinates, and the

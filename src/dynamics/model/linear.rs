@@ -58,6 +58,11 @@ impl GearSystem<'_> {
             .iter()
             .map(|m| m.parts.mesh.mean_stiffness_n_per_m())
             .collect();
+        self.mean_state_matrix_at(&k)
+    }
+
+    /// As [`GearSystem::mean_state_matrix`] with mesh m's spring `k_mesh[m]` (N/m), 1/s.
+    pub fn mean_state_matrix_at(&self, k: &[f64]) -> DMatrix<f64> {
         let c: Vec<f64> = self
             .meshes
             .iter()
@@ -65,7 +70,7 @@ impl GearSystem<'_> {
             .collect();
         let n2 = self.states();
         let mut a = DMatrix::zeros(n2, n2);
-        self.state_matrix_into(&k, &c, a.as_mut_slice());
+        self.state_matrix_into(k, &c, a.as_mut_slice());
         a
     }
 
