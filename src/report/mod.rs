@@ -24,6 +24,7 @@ pub mod signals;
 pub mod stiffness;
 pub mod stiffness_helical;
 pub mod stiffness_planetary;
+pub mod stiffness_train;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
