@@ -28,6 +28,7 @@ pub mod stiffness_train;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
+pub mod wear_train;
 pub mod worn_profile;
 
 pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

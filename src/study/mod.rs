@@ -15,6 +15,7 @@ pub mod sweep;
 pub mod teeth;
 pub mod train;
 pub mod train_stages;
+pub mod train_wear;
 pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;
