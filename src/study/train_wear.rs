@@ -55,6 +55,7 @@ pub struct TrainWearRun {
 }
 
 impl TrainWearRun {
+    /// A run in `mode` with no update yet (it starts from new teeth).
     pub fn new(mode: WearMode) -> Self {
         Self {
             mode,
@@ -83,8 +84,11 @@ impl TrainWearRun {
 /// What the update after an update gives.
 #[derive(Debug, Clone, PartialEq)]
 pub enum TrainNext {
+    /// A new update.
     Update(Box<TrainUpdate>),
+    /// The run stops before this update (it is not recorded).
     Stop(WearStop),
+    /// The total input cycles are reached.
     Finished,
 }
 
