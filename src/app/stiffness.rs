@@ -1,18 +1,21 @@
 //! The stiffness job: mesh stiffness over a mesh period, the ISO 6336 cross-check, load
-//! sharing and the quasi-static transmission error (paper Figure 2).
+//! sharing and the quasi-static transmission error (paper Figure 2); on a gear train,
+//! each stage's.
 
 use super::observer::Observer;
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_model, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
 use crate::report::stiffness_helical::helical_stiffness_artifacts;
 use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
+use crate::report::stiffness_train::train_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::helical::HelicalModel;
 use crate::study::planetary::PlanetaryStudy;
+use crate::study::train_stages::stage_models;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -37,8 +40,10 @@ impl Job for StiffnessJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        super::refuse_train(&self.case)?;
         budget::check(&self.case, Cost::Stiffness, self.budget.as_ref())?;
+        if !self.case.stage.is_empty() {
+            return self.run_train(figures, observer);
+        }
         if self.case.planetary.is_some() {
             return self.run_planetary(observer);
         }
@@ -54,6 +59,21 @@ impl Job for StiffnessJob {
 }
 
 impl StiffnessJob {
+    /// A gear train: each stage's single-pair stiffness study
+    /// (`report::stiffness_train`).
+    fn run_train(
+        &self,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        let model = build_train_model(&self.case, observer)?;
+        let stages = stage_models(&model)?;
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::of_model(self.name(), &model);
+        let artifacts = train_stiffness_artifacts(&model, &stages).with_figure_output(figures);
+        publish::publish(out, artifacts, Some(&meta), observer)
+    }
+
     /// A planetary case: the set's meshes, phases, frequencies and lumped modes
     /// (`study::planetary`), `summary.json` only.
     fn run_planetary(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {

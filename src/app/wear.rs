@@ -1,6 +1,7 @@
 //! The wear job: the coupled dynamics-wear study and/or its quasi-static twin, with a
 //! checkpoint after every update when it has an output folder (and resumable from it);
-//! under a load spectrum it hands off to [`super::duty`]. The runner it shares with the
+//! under a load spectrum it hands off to [`super::duty`], on a gear train to
+//! [`super::wear_train`]. The runner it shares with the
 //! paper's study and the spectrum's runs is [`super::wear_runs`].
 
 use super::observer::Observer;
@@ -44,8 +45,10 @@ impl Job for WearJob {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),
         };
-        super::refuse_train(&self.case)?;
         budget::check(&self.case, cost, self.budget.as_ref())?;
+        if !self.case.stage.is_empty() {
+            return super::wear_train::wear_of_train(self, figures, observer);
+        }
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::wear_under_spectrum(

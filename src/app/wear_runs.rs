@@ -8,7 +8,7 @@ use super::{publish, JobError};
 use crate::store::checkpoint::checkpoint_name;
 use crate::store::checkpoint_set::CheckpointSet;
 use crate::store::RunMetadata;
-use crate::study::wear_loop::{StopKind, WearMode, WearRun};
+use crate::study::wear_loop::{StopKind, WearMode, WearRun, WearStop};
 use crate::study::Model;
 
 /// The wear runs of a job, and its output folder still to publish.
@@ -112,12 +112,19 @@ pub fn report_update(
 /// the stop). A stop because the worn teeth left the model's domain is a result; one for
 /// want of a steady state is a failure of the solver the user should act on: returned.
 pub fn stops(runs: &[&WearRun], observer: &dyn Observer) -> Option<String> {
+    let modes: Vec<(WearMode, Option<&WearStop>)> =
+        runs.iter().map(|r| (r.mode, r.stopped.as_ref())).collect();
+    stops_of(&modes, observer)
+}
+
+/// [`stops`] of any wear runs, each given by its mode and its stop.
+pub fn stops_of(runs: &[(WearMode, Option<&WearStop>)], observer: &dyn Observer) -> Option<String> {
     let mut failed = None;
-    for run in runs {
-        if let Some(stop) = &run.stopped {
+    for (mode, stopped) in runs {
+        if let Some(stop) = stopped {
             let message = format!(
                 "the {} wear run stopped early: {}",
-                run.mode.name(),
+                mode.name(),
                 stop.reason
             );
             observer.warning(&message);

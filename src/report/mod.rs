@@ -25,9 +25,11 @@ pub mod signals;
 pub mod stiffness;
 pub mod stiffness_helical;
 pub mod stiffness_planetary;
+pub mod stiffness_train;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
+pub mod wear_train;
 pub mod worn_profile;
 
 pub use artifacts::{publish_artifacts, write_artifacts, Artifacts};

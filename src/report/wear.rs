@@ -31,9 +31,20 @@ pub fn at_cycles(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 /// `wear_profiles_MODE.csv` (the profiles of every update), file names relative.
 pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
     let m = run.mode.name();
-    let rec = &run.records;
+    vec![
+        (format!("updates_{m}.csv"), updates_table(&run.records)),
+        (
+            format!("wear_profiles_{m}.csv"),
+            profiles_table(&model.grid, &run.records),
+        ),
+    ]
+}
+
+/// A row per update of a mesh's records (`updates_MODE.csv`): its cycles (its pinion's
+/// revolutions), maximum wear and wear rate, roughness and response summary.
+pub fn updates_table(rec: &[UpdateRecord]) -> Table {
     let s = |f: &dyn Fn(&UpdateRecord) -> f64| rec.iter().map(f).collect::<Vec<_>>();
-    let updates = Table::new()
+    Table::new()
         .col("update", (0..rec.len()).map(|i| i as f64).collect())
         .col("cycles", s(&|r| r.wear.cycles))
         .col("max_wear_pinion_um", s(&|r| r.wear.max_pinion_m() * 1e6))
@@ -69,8 +80,12 @@ pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
         .col(
             "mesh_harmonic4_mm_per_s",
             s(&|r| r.summary.velocity_y_pinion_harmonics_m_per_s[3] * 1e3),
-        );
-    let g = &model.grid;
+        )
+}
+
+/// The profiles of every update of a mesh's records on its grid `g`
+/// (`wear_profiles_MODE.csv`).
+pub fn profiles_table(g: &crate::geometry::ProfileGrid, rec: &[UpdateRecord]) -> Table {
     let mut t = Table::new()
         .col("rho1_mm", g.rho_pinion_m.iter().map(|x| x * 1e3).collect())
         .col(
@@ -96,10 +111,7 @@ pub fn run_tables(model: &Model, run: &WearRun) -> Vec<(String, Table)> {
                 r.increment_pinion_m.iter().map(|x| x * 1e9).collect(),
             );
     }
-    vec![
-        (format!("updates_{m}.csv"), updates),
-        (format!("wear_profiles_{m}.csv"), t),
-    ]
+    t
 }
 
 /// A figure of the wear study, its file stem and the table of exactly its data.

@@ -14,6 +14,8 @@ pub mod signal_record;
 pub mod sweep;
 pub mod teeth;
 pub mod train;
+pub mod train_stages;
+pub mod train_wear;
 pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;

@@ -14,6 +14,8 @@ use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::summary::ResponseSummary;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
@@ -203,6 +205,29 @@ impl TrainModel {
         externals: &[&'a ExternalError],
         roughness_um: f64,
     ) -> GearSystem<'a> {
+        let rough = vec![roughness_um; self.stages.len()];
+        self.system_worn(
+            case,
+            friction,
+            effective_modulus_pa,
+            gaps,
+            externals,
+            &rough,
+        )
+    }
+
+    /// As [`TrainModel::system`] with each mesh's own roughness (um, stage order): the
+    /// roughness of its own wear (`wear.RoughnessLaw`), as the wear study of a train has.
+    #[allow(clippy::too_many_arguments)]
+    pub fn system_worn<'a>(
+        &'a self,
+        case: &Case,
+        friction: &'a Friction,
+        effective_modulus_pa: f64,
+        gaps: &[&'a PairGap],
+        externals: &[&'a ExternalError],
+        roughness_um: &[f64],
+    ) -> GearSystem<'a> {
         let meshes = self
             .stages
             .iter()
@@ -217,7 +242,7 @@ impl TrainModel {
                     gap: gaps[k],
                     external: externals[k],
                     load_sharing: case.contact.load_sharing,
-                    roughness_um,
+                    roughness_um: roughness_um[k],
                     effective_modulus_pa,
                     teeth: None,
                     contact: &s.contact,
@@ -236,6 +261,30 @@ impl TrainModel {
             meshes,
             self.operating.body_speeds_rad_s(),
         )
+    }
+
+    /// Revolutions of each stage's pinion per revolution of the input (stage 1's
+    /// pinion): its speed over the input's (1 for stage 1, the product of the earlier
+    /// stages' z_pinion / z_gear after it).
+    pub fn cycle_factors(&self) -> Vec<f64> {
+        let input = self.operating.meshes[0].pinion_speed_rad_s;
+        self.operating
+            .meshes
+            .iter()
+            .map(|p| p.pinion_speed_rad_s / input)
+            .collect()
+    }
+
+    /// The summary of mesh `m` of a response of the train: its own mesh period's
+    /// harmonics, its pinion's y velocity (`ResponseSummary::of_mesh`).
+    pub fn mesh_summary(&self, r: &DynamicResponse, m: usize) -> ResponseSummary {
+        let link = &self.assembly.elements.meshes[m];
+        let pinion_y = self
+            .assembly
+            .index(link.pinion, Dof::Y)
+            .unwrap_or(crate::dynamics::model::dof::YP);
+        let period_s = 1.0 / self.operating.meshes[m].mesh_frequency_hz;
+        ResponseSummary::of_mesh(r, m, period_s, pinion_y)
     }
 
     /// Whether the speed of the input is imposed (so the motor's coordinate is held).

@@ -23,9 +23,10 @@
 
 use super::model::Model;
 use crate::dynamics::excitation::ExternalError;
-use crate::dynamics::period_search::DynamicsError;
+use crate::dynamics::period_search::{DynamicsError, SteadyStateSettings};
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
+use crate::geometry::ProfileGrid;
 use crate::wear::per_tooth::per_tooth_wear;
 use crate::wear::{per_cycle_wear, ToothWear, WearIncrement, WearState};
 use serde::{Deserialize, Serialize};
@@ -99,6 +100,16 @@ impl UpdateRecord {
             .iter()
             .flat_map(|(_, d)| d.iter())
             .fold(0.0_f64, |a, b| a.max(*b))
+    }
+
+    /// The per-cycle wear held over the block after the record.
+    pub fn increment(&self) -> WearIncrement {
+        WearIncrement {
+            pinion_m: self.increment_pinion_m.clone(),
+            gear_m: self.increment_gear_m.clone(),
+            teeth: self.increment_teeth.clone(),
+            ..Default::default()
+        }
     }
 
     /// The gear's, as [`Self::pinion_profiles`].
@@ -194,24 +205,48 @@ pub fn solve(
     start: Option<&[f64]>,
 ) -> Result<DynamicResponse, DynamicsError> {
     let none = ExternalError::none();
+    solve_by(
+        &model.settings,
+        mode,
+        start,
+        &|| model.quasi_static(wear, &none),
+        &|s, settings| model.dynamic_with(wear, &none, s, settings),
+    )
+}
+
+/// The quasi-static response (`quasi`), or the dynamic one (`dynamic(start, settings)`)
+/// from `start` with `settings`, retried as the module docs say: from the static
+/// equilibrium, then with a ten times tighter integration tolerance, twice the grid
+/// nodes and periods. The steps of [`solve`], for any system (a single pair, a train).
+pub fn solve_by(
+    settings: &SteadyStateSettings,
+    mode: WearMode,
+    start: Option<&[f64]>,
+    quasi: &dyn Fn() -> DynamicResponse,
+    dynamic: &DynamicSolve<'_>,
+) -> Result<DynamicResponse, DynamicsError> {
     if mode == WearMode::QuasiStatic {
-        return Ok(model.quasi_static(wear, &none));
+        return Ok(quasi());
     }
-    let first = model.dynamic_from(wear, &none, start);
+    let first = dynamic(start, settings);
     if first.is_ok() {
         return first;
     }
     if start.is_some() {
-        if let Ok(r) = model.dynamic(wear, &none) {
+        if let Ok(r) = dynamic(None, settings) {
             return Ok(r);
         }
     }
-    let mut tight = model.settings;
+    let mut tight = *settings;
     tight.integration_tolerance *= 0.1;
     tight.steps_per_mesh_period *= 2;
     tight.max_mesh_periods *= 2;
-    model.dynamic_with(wear, &none, None, &tight)
+    dynamic(None, &tight)
 }
+
+/// A steady-state solve from a start (`None`: the static equilibrium) with settings.
+pub type DynamicSolve<'a> =
+    dyn Fn(Option<&[f64]>, &SteadyStateSettings) -> Result<DynamicResponse, DynamicsError> + 'a;
 
 /// The record of a response on `wear`: its summary, the per-cycle wear it gives (paper
 /// eq. 14-17; per tooth when the mesh is tooth-resolved) and the state the next search
@@ -219,24 +254,32 @@ pub fn solve(
 pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
     let k = model.case.wear.coefficient_m2_per_n;
-    let inc: WearIncrement = match &model.teeth {
-        Some(_) => per_tooth_wear(
-            &model.grid,
-            &r.meshes[0].path,
-            r.excitation_periods,
-            z1,
-            z2,
-            k,
-        ),
-        None => per_cycle_wear(&model.grid, &r.meshes[0].path, k, z1 as f64 / z2 as f64),
-    };
-    let (path_rho1_m, path_load_n) = match &model.teeth {
-        Some(_) => mean_load_along_path(model, r),
-        None => (
-            r.meshes[0].path.iter().map(|p| p.rho1_m).collect(),
-            r.meshes[0].path.iter().map(|p| p.load_n).collect(),
-        ),
-    };
+    if model.teeth.is_none() {
+        let parts = MeshWearParts {
+            grid: &model.grid,
+            teeth: [z1, z2],
+            coefficient_m2_per_n: k,
+        };
+        let roughness_um = model.roughness_for(&wear);
+        return mesh_record(
+            &parts,
+            0,
+            mode,
+            wear,
+            roughness_um,
+            ResponseSummary::of(r),
+            r,
+        );
+    }
+    let inc = per_tooth_wear(
+        &model.grid,
+        &r.meshes[0].path,
+        r.excitation_periods,
+        z1,
+        z2,
+        k,
+    );
+    let (path_rho1_m, path_load_n) = mean_load_along_path(model, r);
     UpdateRecord {
         roughness_um: model.roughness_for(&wear),
         wear,
@@ -247,6 +290,48 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
         path_rho1_m,
         path_load_n,
         end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
+    }
+}
+
+/// What the wear of one mesh with identical teeth needs: its profile grid, its tooth
+/// counts (pinion, gear) and the Archard coefficient k, m^2/N.
+pub struct MeshWearParts<'a> {
+    pub grid: &'a ProfileGrid,
+    pub teeth: [usize; 2],
+    pub coefficient_m2_per_n: f64,
+}
+
+/// The record of mesh `m` of a response `r` on its wear state `wear` (every tooth
+/// alike): the Archard increments per pinion cycle of its path (paper eq. 14-17), its
+/// pair load along the path, `summary`; the periodic end state is kept with mesh 0's
+/// record (the whole system's, one per update).
+pub fn mesh_record(
+    parts: &MeshWearParts,
+    m: usize,
+    mode: WearMode,
+    wear: WearState,
+    roughness_um: f64,
+    summary: ResponseSummary,
+    r: &DynamicResponse,
+) -> UpdateRecord {
+    let [z1, z2] = parts.teeth;
+    let path = &r.meshes[m].path;
+    let inc = per_cycle_wear(
+        parts.grid,
+        path,
+        parts.coefficient_m2_per_n,
+        z1 as f64 / z2 as f64,
+    );
+    UpdateRecord {
+        roughness_um,
+        wear,
+        summary,
+        increment_pinion_m: inc.pinion_m,
+        increment_gear_m: inc.gear_m,
+        increment_teeth: inc.teeth,
+        path_rho1_m: path.iter().map(|p| p.rho1_m).collect(),
+        path_load_n: path.iter().map(|p| p.load_n).collect(),
+        end_state: (mode == WearMode::Dynamic && m == 0).then(|| r.end_state.to_vec()),
     }
 }
 
@@ -308,12 +393,7 @@ pub fn next_update(
     if remaining <= 0.5 {
         return Ok(Next::Finished);
     }
-    let inc = WearIncrement {
-        pinion_m: last.increment_pinion_m.clone(),
-        gear_m: last.increment_gear_m.clone(),
-        teeth: last.increment_teeth.clone(),
-        ..Default::default()
-    };
+    let inc = last.increment();
     let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
     let mut state = last.wear.clone();
     state.advance(&inc, n);
@@ -384,14 +464,35 @@ pub fn run_wear_modes(
     starts: Vec<WearRun>,
     on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
 ) -> anyhow::Result<Vec<WearRun>> {
+    run_in_parallel(
+        starts,
+        |r| r.mode,
+        &|start, f| run_wear(model, start, f),
+        on_update,
+    )
+}
+
+/// Runs one wear run `R` from its start to its end, calling its argument after every
+/// update.
+pub type RunOne<'a, R> =
+    dyn Fn(R, &mut dyn FnMut(&R) -> anyhow::Result<()>) -> anyhow::Result<R> + Sync + 'a;
+
+/// The runner of [`run_wear_modes`] for any kind of wear run `R` (a single pair's, a
+/// train's): `mode_of` names a run's mode, `one(start, on_update)` runs one to its end.
+pub fn run_in_parallel<R: Send>(
+    starts: Vec<R>,
+    mode_of: fn(&R) -> WearMode,
+    one: &RunOne<'_, R>,
+    on_update: &(dyn Fn(WearMode, &R) -> anyhow::Result<()> + Sync),
+) -> anyhow::Result<Vec<R>> {
     use rayon::prelude::*;
     use std::sync::atomic::{AtomicBool, Ordering};
     let failed = AtomicBool::new(false);
-    let results: Vec<anyhow::Result<WearRun>> = starts
+    let results: Vec<anyhow::Result<R>> = starts
         .into_par_iter()
         .map(|start| {
-            let mode = start.mode;
-            let r = run_wear(model, start, &mut |r| {
+            let mode = mode_of(&start);
+            let r = one(start, &mut |r| {
                 if failed.load(Ordering::Relaxed) {
                     return Err(SiblingFailed.into());
                 }

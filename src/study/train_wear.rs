@@ -1,0 +1,269 @@
+//! The wear study of a gear train (`[[stage]]`): the loop of `study::wear_loop` over
+//! every mesh of the train (docs/MODEL.md, "Wear in a train").
+//!
+//! One response of the whole train feeds every mesh's Archard integral (paper eq.
+//! 14-17): the dynamic response of the assembled train (each mesh excited by the others
+//! through the shafts), or the quasi-static one (each mesh at its shaft's torque). The
+//! study counts input cycles (revolutions of stage 1's pinion, the motor's shaft);
+//! mesh k's pinion turns c_k times per input cycle (`TrainModel::cycle_factors`, from
+//! the train's operating point, computed once), so a block of n input cycles adds
+//! n c_k times mesh k's wear per pinion cycle to it. `wear.block_cycles` (m) and
+//! `wear.total_cycles` are input cycles.
+//!
+//! The threshold rule of eq. 17 holds per mesh: the block is cut to the whole number of
+//! input cycles after which no point of any mesh's profiles has gained more than
+//! epsilon^m; the meshes share one update schedule (their dynamics are coupled), so the
+//! mesh that wears fastest per input cycle sets it, and the update records which mesh
+//! cut its block. A mesh whose teeth leave the model's domain (out of contact for more
+//! than `MAX_CONTACT_LOSS_FRACTION` of its mesh period) stops the whole study, naming
+//! the mesh; so does a response not found. A one-stage train is the single pair's loop,
+//! number for number.
+
+use super::model::Model;
+use super::train::TrainModel;
+use super::wear_loop::{
+    block_length, mesh_record, solve_by, start_of, MeshWearParts, StopKind, UpdateRecord, WearMode,
+    WearStop, MAX_CONTACT_LOSS_FRACTION,
+};
+use crate::dynamics::excitation::{ExternalError, PairGap};
+use crate::dynamics::period_search::DynamicsError;
+use crate::dynamics::quasi_static::solve_quasi_static;
+use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::steady::solve_steady_state_from;
+use crate::wear::WearState;
+
+/// One update of a train: every mesh's record at one count of input cycles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrainUpdate {
+    /// Revolutions of the input (stage 1's pinion).
+    pub input_cycles: f64,
+    /// Each mesh's record (stage order); its `wear.cycles` are its own pinion's
+    /// revolutions. Mesh 0's holds the train's periodic end state (the warm start).
+    pub meshes: Vec<UpdateRecord>,
+    /// The mesh (0-based) whose threshold cut the block that led here; None when the
+    /// block was m cycles or what remained of the total.
+    pub limited_by: Option<usize>,
+}
+
+/// A train's wear run: its mode and every update so far.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrainWearRun {
+    pub mode: WearMode,
+    pub updates: Vec<TrainUpdate>,
+    /// Set when the run stopped before the case's total cycles.
+    pub stopped: Option<WearStop>,
+}
+
+impl TrainWearRun {
+    /// A run in `mode` with no update yet (it starts from new teeth).
+    pub fn new(mode: WearMode) -> Self {
+        Self {
+            mode,
+            updates: Vec::new(),
+            stopped: None,
+        }
+    }
+
+    /// Mesh `m`'s records, one per update.
+    pub fn mesh_records(&self, m: usize) -> Vec<UpdateRecord> {
+        self.updates.iter().map(|u| u.meshes[m].clone()).collect()
+    }
+
+    /// The mesh (0-based) that limits the life: the deepest wear (either flank) at the
+    /// last update, and that depth, m; None before any update.
+    pub fn limiting_mesh(&self) -> Option<(usize, f64)> {
+        let last = self.updates.last()?;
+        last.meshes
+            .iter()
+            .map(|r| r.wear.max_pinion_m().max(r.wear.max_gear_m()))
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+    }
+}
+
+/// What the update after an update gives.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TrainNext {
+    /// A new update.
+    Update(Box<TrainUpdate>),
+    /// The run stops before this update (it is not recorded).
+    Stop(WearStop),
+    /// The total input cycles are reached.
+    Finished,
+}
+
+/// The response of the train with each mesh worn as `wears` says (stage order), each
+/// mesh's roughness that of its own wear; retried as `wear_loop::solve_by`.
+pub fn solve_train(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    wears: &[WearState],
+    start: Option<&[f64]>,
+) -> Result<DynamicResponse, DynamicsError> {
+    let gaps: Vec<PairGap> = wears
+        .iter()
+        .zip(&train.stages)
+        .map(|(w, s)| w.pair_gap(&s.grid))
+        .collect();
+    let rough: Vec<f64> = wears.iter().map(|w| model.roughness_for(w)).collect();
+    let none = ExternalError::none();
+    let gap_refs: Vec<&PairGap> = gaps.iter().collect();
+    let ext = vec![&none; wears.len()];
+    let sys = train.system_worn(
+        &model.case,
+        &model.friction,
+        model.effective_modulus_pa,
+        &gap_refs,
+        &ext,
+        &rough,
+    );
+    let steps = model.settings.steps_per_mesh_period;
+    solve_by(
+        &model.settings,
+        mode,
+        start,
+        &|| solve_quasi_static(&sys, steps),
+        &|s, settings| solve_steady_state_from(&sys, settings, s),
+    )
+}
+
+/// The update of `wears` at `input_cycles` from the response `r`: each mesh's record.
+fn update_of(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    (input_cycles, limited_by): (f64, Option<usize>),
+    wears: Vec<WearState>,
+    r: &DynamicResponse,
+) -> TrainUpdate {
+    let single = train.stages.len() == 1;
+    let meshes = wears
+        .into_iter()
+        .enumerate()
+        .map(|(m, wear)| {
+            let s = &train.stages[m];
+            let parts = MeshWearParts {
+                grid: &s.grid,
+                teeth: [s.pair.pinion.teeth, s.pair.gear.teeth],
+                coefficient_m2_per_n: model.case.wear.coefficient_m2_per_n,
+            };
+            // A one-stage train's summary is the single pair's (same numbers).
+            let summary = if single {
+                crate::dynamics::summary::ResponseSummary::of(r)
+            } else {
+                train.mesh_summary(r, m)
+            };
+            let roughness = model.roughness_for(&wear);
+            mesh_record(&parts, m, mode, wear, roughness, summary, r)
+        })
+        .collect();
+    TrainUpdate {
+        input_cycles,
+        meshes,
+        limited_by,
+    }
+}
+
+/// The update after `last` (`None`: new teeth at cycle 0), the train's step of
+/// `wear_loop::next_update`. Only the first update's failure is an error.
+pub fn next_train_update(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    last: Option<&TrainUpdate>,
+) -> Result<TrainNext, DynamicsError> {
+    let w = &model.case.wear;
+    let Some(last) = last else {
+        let wears: Vec<WearState> = train
+            .stages
+            .iter()
+            .map(|s| WearState::new(s.grid.len()))
+            .collect();
+        let r = solve_train(model, train, mode, &wears, None)?;
+        let u = update_of(model, train, mode, (0.0, None), wears, &r);
+        return Ok(TrainNext::Update(Box::new(u)));
+    };
+    let remaining = w.total_cycles - last.input_cycles;
+    if remaining <= 0.5 {
+        return Ok(TrainNext::Finished);
+    }
+    let c = train.cycle_factors();
+    // Each mesh's largest wear per input cycle; the fastest sets the block.
+    let (lim, rate) = last
+        .meshes
+        .iter()
+        .zip(&c)
+        .map(|(r, ck)| r.increment().max_m() * ck)
+        .enumerate()
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    let n = block_length(rate, w.block_cycles, w.threshold_um * 1e-6, remaining);
+    let limited_by = (n < w.block_cycles.min(remaining)).then_some(lim);
+    let wears: Vec<WearState> = last
+        .meshes
+        .iter()
+        .zip(&c)
+        .map(|(r, ck)| {
+            let mut s = r.wear.clone();
+            s.advance(&r.increment(), n * ck);
+            s
+        })
+        .collect();
+    let input_cycles = last.input_cycles + n;
+    let start = start_of(&last.meshes[0]);
+    Ok(match solve_train(model, train, mode, &wears, start.as_deref()) {
+        Ok(r) => match (0..wears.len()).find(|m| r.contact_loss_fraction_of(*m) > MAX_CONTACT_LOSS_FRACTION) {
+            Some(m) => TrainNext::Stop(WearStop {
+                cycles: input_cycles,
+                kind: StopKind::ModelValidity,
+                reason: format!(
+                    "at {input_cycles:.0} input cycles (stage {}: maximum pinion wear {:.2} µm) the teeth of stage {} are out of contact for {:.0} % of its mesh period (more than {:.0} %): the wear model of a steady contact no longer applies",
+                    m + 1,
+                    wears[m].max_pinion_m() * 1e6,
+                    m + 1,
+                    100.0 * r.contact_loss_fraction_of(m),
+                    100.0 * MAX_CONTACT_LOSS_FRACTION
+                ),
+            }),
+            None => TrainNext::Update(Box::new(update_of(
+                model,
+                train,
+                mode,
+                (input_cycles, limited_by),
+                wears,
+                &r,
+            ))),
+        },
+        Err(e) => TrainNext::Stop(WearStop {
+            cycles: input_cycles,
+            kind: StopKind::Numerical,
+            reason: format!(
+                "at {input_cycles:.0} input cycles no steady state of the train was found, even from the static equilibrium with a 10x tighter numerics.integration_tolerance and 2x the numerics.steps_per_mesh_period: {e}"
+            ),
+        }),
+    })
+}
+
+/// Run (or continue) a train's wear study to the case's total input cycles;
+/// `on_update` after every update (progress; an error it returns stops the run).
+pub fn run_train_wear(
+    model: &Model,
+    train: &TrainModel,
+    mut run: TrainWearRun,
+    on_update: &mut dyn FnMut(&TrainWearRun) -> anyhow::Result<()>,
+) -> anyhow::Result<TrainWearRun> {
+    loop {
+        let next = match run.updates.last() {
+            None => next_train_update(model, train, run.mode, None)?,
+            Some(_) if run.stopped.is_some() => break,
+            Some(u) => next_train_update(model, train, run.mode, Some(u))?,
+        };
+        match next {
+            TrainNext::Finished => break,
+            TrainNext::Stop(s) => run.stopped = Some(s),
+            TrainNext::Update(u) => run.updates.push(*u),
+        }
+        on_update(&run)?;
+    }
+    Ok(run)
+}
