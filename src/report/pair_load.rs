@@ -92,42 +92,38 @@ fn label(path: ContactPathModel) -> &'static str {
     }
 }
 
-/// `pair_load.csv` (one row per point: rho1, the share, and which contact model:
-/// `extended` 1 or 0; the two curves have their own points) and `pair_load.png`, for a
+/// `pair_load.csv` (for each contact model its own two columns, `rho1_KEY_mm` and
+/// `load_share_KEY`, KEY `extended` or `nominal`: the curves have their own points; the
+/// nominal curve begins and ends with no load at A and E, the pair just before it enters
+/// the path and just after it leaves, so that its jumps show) and `pair_load.png`, for a
 /// single pair of identical teeth (a tooth-resolved or train case has no single curve:
 /// nothing added).
 pub fn add_pair_load_artifacts(model: &Model, a: &mut Artifacts) {
     if model.train.is_some() || model.teeth.is_some() {
         return;
     }
-    let curves = both_curves(model);
-    let (mut rho, mut share, mut ext) = (Vec::new(), Vec::new(), Vec::new());
-    for (path, c) in &curves {
-        rho.extend(c.rho1_m.iter().map(|r| r * 1e3));
-        share.extend(&c.share);
-        let flag = if path.is_extended() { 1.0 } else { 0.0 };
-        ext.extend(std::iter::repeat_n(flag, c.share.len()));
+    let mut t = Table::new();
+    let mut drawn = Vec::new();
+    for (path, c) in both_curves(model) {
+        let mut x: Vec<f64> = c.rho1_m.iter().map(|r| r * 1e3).collect();
+        let mut y = c.share;
+        if !path.is_extended() && !x.is_empty() {
+            x.insert(0, x[0]);
+            y.insert(0, 0.0);
+            x.push(x[x.len() - 1]);
+            y.push(0.0);
+        }
+        let key = if path.is_extended() {
+            "extended"
+        } else {
+            "nominal"
+        };
+        t = t
+            .col(&format!("rho1_{key}_mm"), x.clone())
+            .col(&format!("load_share_{key}"), y.clone());
+        drawn.push(Curve::new(label(path), x, y));
     }
-    let t = Table::new()
-        .col("rho1_mm", rho)
-        .col("load_share", share)
-        .col("extended", ext);
     let p = &model.pair;
-    let drawn = curves
-        .iter()
-        .map(|(path, c)| {
-            let (mut x, mut y): (Vec<f64>, Vec<f64>) =
-                (c.rho1_m.iter().map(|r| r * 1e3).collect(), c.share.clone());
-            if !path.is_extended() && !x.is_empty() {
-                // Drawn only: the jump at the path's ends, from and back to no load.
-                x.insert(0, x[0]);
-                y.insert(0, 0.0);
-                x.push(x[x.len() - 1]);
-                y.push(0.0);
-            }
-            Curve::new(label(*path), x, y)
-        })
-        .collect();
     let figure = Figure {
         title: format!(
             "Share of the mesh force one pair carries (quasi-static, {:.0} N); nominal path {:.2} to {:.2} mm",
