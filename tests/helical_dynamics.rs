@@ -1,4 +1,4 @@
-//! The planar dynamics of a helical pair (`study::helical_dynamics`, docs/MODEL.md 11.6)
+//! The planar dynamics of a helical pair (`study::helical_dynamics`, docs/MODEL.md 11.1)
 //! checked against independent facts: the spur pair as the limit beta -> 0 with one slice,
 //! the statics of the mean mesh force (torque balance) and so of the axial bearing
 //! reaction, the static transmission error's dependence on the overlap ratio against the

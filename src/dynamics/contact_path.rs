@@ -138,7 +138,7 @@ impl ContactPath {
     /// trailing end rho in [A - L, E] (its reach), `path` is the transverse path [A, E], m,
     /// `line_m` = L = b tan(beta_b) > 0. A line's Hertz contact, friction and kinematics are
     /// taken at the middle of its part on the path, over that part's share of the face
-    /// (docs/MODEL.md section 11.6).
+    /// (docs/MODEL.md section 11.1).
     pub fn helical_lines(line_pair: &GearPair, path: (f64, f64), line_m: f64) -> Self {
         Self {
             reach: line_pair.nominal_reach(),

@@ -45,6 +45,6 @@ pub fn helical_summary(model: &Model, r: &DynamicResponse) -> Option<Value> {
             "max_n": extreme(f64::max, f64::NEG_INFINITY),
             "min_n": extreme(f64::min, f64::INFINITY),
         },
-        "model": "planar: the slice mesh stiffness on the transverse line of action; the axial force has no degree of freedom (docs/MODEL.md 11.6)",
+        "model": "planar: the slice mesh stiffness on the transverse line of action; the axial force has no degree of freedom (docs/MODEL.md 11.1)",
     }))
 }

@@ -283,7 +283,7 @@ const MAX_LINE_POINTS: usize = 100_000;
 
 impl SliceMeshStiffness {
     /// The slice model as one spring per tooth pair, for the planar dynamics
-    /// (`study::helical_dynamics`, docs/MODEL.md section 11.6): the pair's whole contact
+    /// (`study::helical_dynamics`, docs/MODEL.md section 11.1): the pair's whole contact
     /// line, placed by the position rho of its trailing end on the transverse path (the
     /// face end furthest back: y = 0 for a right-hand pinion, y = b for a left-hand one).
     /// Its slices sit at rho + o_j, o_j = (j + 1/2) L / N with L = b tan(beta_b) (either

@@ -1,5 +1,5 @@
 //! The planar dynamic model of a helical pair (`gearwear dynamics` on a case with
-//! `gear.helix_angle_deg` > 0; docs/MODEL.md section 11.6): the spur pair's 8-DOF model in
+//! `gear.helix_angle_deg` > 0; docs/MODEL.md section 11.1): the spur pair's 8-DOF model in
 //! the transverse section, its time-varying mesh stiffness the slice model's
 //! (`stiffness::helical`), one spring per tooth pair's contact line
 //! (`SliceMeshStiffness::line_model`), the mesh force F along the transverse line of
@@ -40,7 +40,7 @@ fn refusal(key: &str, value: &str, why: &str) -> String {
 /// What a helical case asks that the planar model does not have (see the module docs).
 fn refusals(case: &Case) -> Vec<String> {
     let mut r = Vec::new();
-    let slices = "each slice would need its own gap; only new, unmodified teeth are modelled so far (docs/MODEL.md 11.6)";
+    let slices = "each slice would need its own gap; only new, unmodified teeth are modelled so far (docs/MODEL.md 11.1)";
     if !case.stage.is_empty() {
         r.push(refusal(
             "[[stage]]",
