@@ -8,17 +8,29 @@
 //!   (stiffness, centre of pressure, contacts) from the built model;
 //! - `continuous_table_400`: the N -> infinity limit at the same 400 phases;
 //! - `spur_mesh_table_400`: `MeshStiffness::with_fillet` of the beta = 0 pair, for scale.
+//!
+//! Group `helical_dynamics` (issue 30 target: a helical pair's cold steady state under 5x
+//! the spur pair's of the same transverse geometry), the same pair with the default
+//! N = 400 slices, new teeth, default numerics:
+//! - `steady_state_helical_400`: `Model::dynamic` from the static equilibrium (cold);
+//! - `steady_state_spur_transverse`: the same for the spur pair of its transverse section
+//!   (`geometry::helical::transverse_section`), also on the nominal path with the load
+//!   shared by compression, as the helical model runs;
+//! - `model_build_helical_400`: `Model::helical_from_case` (slice model and line table).
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gearwear::config::case::Case;
-use gearwear::geometry::helical::{Hand, HelicalPair, HelixSpec};
+use gearwear::config::case::{Case, ContactPathModel, LoadSharingModel};
+use gearwear::dynamics::excitation::ExternalError;
+use gearwear::geometry::helical::{transverse_section, Hand, HelicalPair, HelixSpec};
 use gearwear::geometry::GearPair;
 use gearwear::stiffness::helical::SliceMeshStiffness;
 use gearwear::stiffness::mesh::{FilletSettings, MeshStiffness};
 use gearwear::stiffness::potential_energy::ElasticPair;
+use gearwear::study::Model;
+use gearwear::wear::WearState;
 
 /// Criterion settings for a shared 2-core machine: 10 samples, short warm-up.
 fn quick() -> Criterion {
@@ -62,9 +74,43 @@ fn helical(c: &mut Criterion) {
     g.finish();
 }
 
+fn helical_dynamics(c: &mut Criterion) {
+    let mut case = Case::default();
+    case.gear.helix_angle_deg = 15.0;
+    let helical = Model::helical_from_case(&case).expect("valid helical model");
+    let mut spur_case = case.clone();
+    spur_case.gear = transverse_section(&case.gear, 15f64.to_radians());
+    spur_case.gear.helix_angle_deg = 0.0;
+    spur_case.contact.path = ContactPathModel::Nominal;
+    spur_case.contact.load_sharing = LoadSharingModel::Stiffness;
+    let spur = Model::from_case(&spur_case).expect("valid spur model");
+    let run = |m: &Model| {
+        m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
+            .expect("steady state")
+    };
+    for (name, m) in [("helical", &helical), ("spur", &spur)] {
+        let r = run(m);
+        eprintln!(
+            "{name}: {} steps, {} rhs, {} LU, {} periods",
+            r.steps, r.rhs_evaluations, r.factorizations, r.periods_to_converge
+        );
+    }
+    let mut g = c.benchmark_group("helical_dynamics");
+    g.bench_function("steady_state_helical_400", |b| {
+        b.iter(|| run(black_box(&helical)))
+    });
+    g.bench_function("steady_state_spur_transverse", |b| {
+        b.iter(|| run(black_box(&spur)))
+    });
+    g.bench_function("model_build_helical_400", |b| {
+        b.iter(|| Model::helical_from_case(black_box(&case)).unwrap())
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = quick();
-    targets = helical
+    targets = helical, helical_dynamics
 }
 criterion_main!(benches);

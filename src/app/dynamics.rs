@@ -48,7 +48,15 @@ impl Job for DynamicsJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
-        let model = build_train_model(&self.case, observer)?;
+        let model = if self.case.gear.helix_angle_deg != 0.0 {
+            let m = crate::study::Model::helical_from_case(&self.case)?;
+            for w in &m.warnings {
+                observer.warning(w);
+            }
+            m
+        } else {
+            build_train_model(&self.case, observer)?
+        };
         let period = model.pair.mesh_angle_rad();
         let external = match &self.transmission_error {
             Some(TransmissionErrorSource::File(p)) => read_transmission_error(p, period)?,

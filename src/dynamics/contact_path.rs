@@ -75,6 +75,9 @@ pub struct PlainPair {
     /// path's end the corner continues beyond it (a sharp edge has no Hertz radius).
     pub contact_rho1_m: f64,
     pub corner: bool,
+    /// Share of the face width missing from the pair's contact (a helical pair's contact
+    /// line partly off the path, [`ContactPath::helical_lines`]; 0 for a spur pair).
+    pub width_loss: f64,
 }
 
 /// The corners of a pair's teeth and their geometry.
@@ -93,6 +96,9 @@ pub struct ContactPath {
     path: (f64, f64),
     loa_m: f64,
     corners: Option<Corners>,
+    /// A helical pair's contact line: its extent L = b tan(beta_b) along the path, m
+    /// (0: a spur pair; [`ContactPath::helical_lines`]).
+    line_m: f64,
 }
 
 impl ContactPath {
@@ -104,6 +110,7 @@ impl ContactPath {
             path,
             loa_m: pair.loa_length_m,
             corners: None,
+            line_m: 0.0,
         };
         if !model.is_extended() {
             return nominal;
@@ -124,6 +131,28 @@ impl ContactPath {
             }),
             ..nominal
         }
+    }
+
+    /// The contact lines of a helical pair on the nominal path (`stiffness::helical`,
+    /// `SliceMeshStiffness::line_model`): `line_pair` places each tooth pair by its line's
+    /// trailing end rho in [A - L, E] (its reach), `path` is the transverse path [A, E], m,
+    /// `line_m` = L = b tan(beta_b) > 0. A line's Hertz contact, friction and kinematics are
+    /// taken at the middle of its part on the path, over that part's share of the face
+    /// (docs/MODEL.md section 11.1).
+    pub fn helical_lines(line_pair: &GearPair, path: (f64, f64), line_m: f64) -> Self {
+        Self {
+            reach: line_pair.nominal_reach(),
+            path,
+            loa_m: line_pair.loa_length_m,
+            corners: None,
+            line_m,
+        }
+    }
+
+    /// The part [lo, hi] of the helical line at trailing end `rho1_m` on the path, m.
+    fn line_on_path(&self, rho1_m: f64) -> (f64, f64) {
+        let (a, e) = self.path;
+        (rho1_m.clamp(a, e), (rho1_m + self.line_m).clamp(a, e))
     }
 
     /// The stretch over which pairs are followed.
@@ -189,6 +218,10 @@ impl ContactPath {
     /// continues.
     pub fn contact_rho1_m(&self, rho1_m: f64) -> f64 {
         match self.corners {
+            None if self.line_m > 0.0 => {
+                let (lo, hi) = self.line_on_path(rho1_m);
+                0.5 * (lo + hi)
+            }
             None => rho1_m,
             Some(_) => rho1_m.clamp(self.path.0, self.path.1),
         }
@@ -200,12 +233,16 @@ impl ContactPath {
         match self.place(rho1_m, None, None) {
             Some(p) if !p.corner => {
                 let (g, dg) = gap.at(rho1_m);
+                if self.line_m > 0.0 {
+                    return self.line_pair(mesh, gap, rho1_m);
+                }
                 PlainPair {
                     stiffness_n_per_m: mesh.pair_stiffness_n_per_m(rho1_m),
                     gap_m: g,
                     gap_slope: dg,
                     contact_rho1_m: rho1_m,
                     corner: false,
+                    width_loss: 0.0,
                 }
             }
             Some(p) => {
@@ -217,6 +254,7 @@ impl ContactPath {
                     gap_slope: p.gap_slope + dp * p.pinion_rate + dg * p.gear_rate,
                     contact_rho1_m: self.contact_rho1_m(rho1_m),
                     corner: true,
+                    width_loss: 0.0,
                 }
             }
             None => PlainPair {
@@ -225,7 +263,29 @@ impl ContactPath {
                 gap_slope: 0.0,
                 contact_rho1_m: self.contact_rho1_m(rho1_m),
                 corner: true,
+                width_loss: 0.0,
             },
+        }
+    }
+}
+
+impl ContactPath {
+    /// [`ContactPath::plain_pair`] of a helical contact line at trailing end `rho1_m`: the
+    /// line's stiffness K(rho) from `mesh` (the line pair's table), the gap at its middle
+    /// on the path (new teeth: 0; a helical case has no per-slice gaps yet), and the share
+    /// of the face its part off the path leaves out (kept below 1 - 1e-9 so a line just
+    /// entering has a finite Hertz width).
+    fn line_pair(&self, mesh: &MeshStiffness, gap: &PairGap, rho1_m: f64) -> PlainPair {
+        let (lo, hi) = self.line_on_path(rho1_m);
+        let mid = 0.5 * (lo + hi);
+        let (g, dg) = gap.at(mid);
+        PlainPair {
+            stiffness_n_per_m: mesh.pair_stiffness_n_per_m(rho1_m),
+            gap_m: g,
+            gap_slope: dg,
+            contact_rho1_m: mid,
+            corner: false,
+            width_loss: (1.0 - (hi - lo) / self.line_m).min(1.0 - 1e-9),
         }
     }
 }

@@ -139,6 +139,7 @@ fn mesh_equilibrium(
                 k[n] = pp.stiffness_n_per_m;
                 gap[n] = pp.gap_m - e_ext;
                 ms.corner[n] = pp.corner;
+                ms.width_loss[n] = pp.width_loss;
             }
             Some(tm) => {
                 let cycle = cycle_now - pair_k;

@@ -85,6 +85,9 @@ fn timeseries_table(model: &Model, s: &Signals) -> Table {
         .col("friction_force_pair1_n", m0.friction_n[1].clone())
         .col("load_pair0_n", m0.pair_load_n[0].clone())
         .col("load_pair1_n", m0.pair_load_n[1].clone());
+    if let Some(a) = super::dynamics_helical::axial_force_pinion_n(model, &m0.mesh_force_n) {
+        t = t.col("axial_force_pinion_n", a);
+    }
     for (k, (name, unit)) in coordinates.iter().enumerate() {
         t = t.col(&format!("{name}_{unit}"), col(k, &s.displacement));
     }
@@ -302,6 +305,12 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
             Value::Array(meshes.into_iter().map(|m| m.0).collect()),
         );
         obj.insert("train".into(), train_json(t, r));
+    }
+    if let (Some(h), Some(obj)) = (
+        super::dynamics_helical::helical_summary(model, r),
+        v.as_object_mut(),
+    ) {
+        obj.insert("helical".into(), h);
     }
     v
 }

@@ -39,6 +39,7 @@ use super::iso6336::Iso6336Input;
 use super::mesh::{FilletSettings, MeshStiffness, StiffnessError};
 use super::potential_energy::ElasticPair;
 use crate::geometry::helical::HelicalPair;
+use crate::geometry::GearPair;
 
 /// Largest slice count accepted. 10 000 slices of a 1 m face are 0.1 mm wide.
 pub const MAX_SLICES: usize = 10_000;
@@ -273,6 +274,64 @@ impl SliceMeshStiffness {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), k| {
                 (lo.min(k), hi.max(k))
             })
+    }
+}
+
+/// Most table points of the contact line's stiffness (a helix angle near 0 would ask for
+/// ever finer ones: its slices' stagger vanishes).
+const MAX_LINE_POINTS: usize = 100_000;
+
+impl SliceMeshStiffness {
+    /// The slice model as one spring per tooth pair, for the planar dynamics
+    /// (`study::helical_dynamics`, docs/MODEL.md section 11.1): the pair's whole contact
+    /// line, placed by the position rho of its trailing end on the transverse path (the
+    /// face end furthest back: y = 0 for a right-hand pinion, y = b for a left-hand one).
+    /// Its slices sit at rho + o_j, o_j = (j + 1/2) L / N with L = b tan(beta_b) (either
+    /// hand: the set of staggers is the same), so the line's stiffness is
+    ///   K(rho) = sum_j k_slice(rho + o_j),  the sum over the slices on the path [A, E],
+    /// N/m, and the line is in contact for rho in [A - L, E]. Returned: the "line pair" (the
+    /// transverse pair whose path starts at A - L, so its contact ratio is
+    /// epsilon_alpha + epsilon_beta) and K tabulated on it at the slice spacing L / N (no
+    /// coarser than the slice's own table; each sample lies between two slice entries) and
+    /// interpolated by the clamped cubic spline, which rounds off the steps of one slice
+    /// (1/N of a full line). The line pair at phase phi is the slice model at
+    /// phi - L / r_b1 (the time origin shifts). Returned last: the line's extent L, m.
+    ///
+    /// One slice is its own line: the slice model itself, L = 0 (a jump of a whole pair's
+    /// stiffness would ring in the spline; with N >= 2 each step is 1/N of a line).
+    pub fn line_model(&self) -> (GearPair, MeshStiffness, f64) {
+        let t = &self.pair.transverse;
+        if self.slices() == 1 {
+            return (t.clone(), self.slice.clone(), 0.0);
+        }
+        let lead = self.pair.face_width_m * self.pair.base_helix_angle_rad.tan();
+        let mut line = t.clone();
+        line.rho_start_m = t.rho_start_m - lead;
+        line.contact_ratio = line.path_length_m() / line.base_pitch_m;
+        let n = self.slices() as f64;
+        let (_, slice_step, values, _) = self.slice.spline();
+        let span = line.path_length_m();
+        let step = slice_step.min(lead / n).max(span / MAX_LINE_POINTS as f64);
+        let points = ((span / step).ceil() as usize + 1).max(values.len());
+        let h = span / (points - 1) as f64;
+        let offsets: Vec<f64> = (0..self.slices())
+            .map(|j| lead * (j as f64 + 0.5) / n)
+            .collect();
+        let on_path = |r: &f64| (t.rho_start_m..=t.rho_end_m).contains(r);
+        let k: Vec<f64> = (0..points)
+            .map(|i| {
+                let rho = line.rho_start_m + i as f64 * h;
+                offsets
+                    .iter()
+                    .map(|o| rho + o)
+                    .filter(on_path)
+                    .map(|r| self.slice.pair_stiffness_n_per_m(r))
+                    .sum()
+            })
+            .collect();
+        let extrema = (20 * points).min(20_000);
+        let mesh = MeshStiffness::from_table(&self.slice, line.clone(), k, extrema);
+        (line, mesh, lead)
     }
 }
 

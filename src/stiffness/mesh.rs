@@ -240,6 +240,41 @@ impl MeshStiffness {
         Ok(me)
     }
 
+    /// A table of given values on `pair`'s path [rho_start, rho_end] (uniform, at least 5
+    /// points), interpolated as every pair's (the clamped cubic spline), with `base`'s
+    /// teeth, fillets and Hertz term (used by the tip-corner spring only): the helical
+    /// pair's contact line as one "pair" (`stiffness::helical`). `extrema_samples`: the
+    /// samples per interval of constant contact count for the min and max.
+    pub(crate) fn from_table(
+        base: &MeshStiffness,
+        pair: GearPair,
+        values: Vec<f64>,
+        extrema_samples: usize,
+    ) -> Self {
+        let n = values.len();
+        let step_m = pair.path_length_m() / (n - 1) as f64;
+        let curvature = clamped_spline_curvature(&values, step_m);
+        let flat = vec![0.0; n];
+        let mut me = Self {
+            pair,
+            teeth: base.teeth.clone(),
+            fillets: base.fillets.clone(),
+            hertz_m_per_n: base.hertz_m_per_n,
+            step_m,
+            values,
+            curvature,
+            tooth_compliance: [flat.clone(), flat.clone()],
+            tooth_compliance_curvature: [flat.clone(), flat],
+            mean_n_per_m: 0.0,
+            min_n_per_m: 0.0,
+            max_n_per_m: 0.0,
+            warnings: base.warnings.clone(),
+        };
+        me.mean_n_per_m = me.path_integral() / me.pair.base_pitch_m;
+        (me.min_n_per_m, me.max_n_per_m) = me.period_extrema(extrema_samples);
+        me
+    }
+
     /// Direct (not interpolated) compliances of the pair whose contact lies at the pinion
     /// radius of curvature rho1 (m); the gear's is rho2 = N1N2 - rho1.
     pub fn compliances_at(&self, rho1_m: f64) -> PairCompliance {

@@ -1,10 +1,11 @@
 //! The model objects of a helical case for `gearwear stiffness`: the helical pair (its
 //! transverse section read from the case's normal section), the slice mesh stiffness, and
 //! the transverse section as a spur pair of the full face width for comparison
-//! (docs/MODEL.md section 11). Helical dynamics does not exist yet: `Model::from_case`
-//! refuses a helical case.
+//! (docs/MODEL.md section 11); and [`HelicalDynamics`], what the planar dynamic model of a
+//! helical case (`study::helical_dynamics`) adds to a spur model. `Model::from_case`
+//! refuses a helical case; `Model::helical_from_case` builds the planar one.
 
-use super::model::ModelError;
+use super::model_error::ModelError;
 use crate::config::case::{Case, GearSection, HelixHand};
 use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
 use crate::stiffness::helical::SliceMeshStiffness;
@@ -68,5 +69,38 @@ impl HelicalModel {
     /// The helical pair.
     pub fn pair(&self) -> &HelicalPair {
         self.slices.pair()
+    }
+}
+
+/// What the planar model of a helical pair adds to a spur model, for its outputs.
+#[derive(Debug, Clone)]
+pub struct HelicalDynamics {
+    /// The helical pair (its transverse section is the model's spur pair).
+    pub pair: HelicalPair,
+    /// Slice count N of the mesh stiffness.
+    pub slices: usize,
+    /// Mean of the slice model's mesh stiffness over a mesh period, N/m (N times a slice's,
+    /// exact for its spline), beside the line table's (the model's `mesh`).
+    pub slice_mean_stiffness_n_per_m: f64,
+}
+
+impl HelicalDynamics {
+    /// tan(beta_b): the axial force per unit transverse mesh force (the normal force
+    /// F_n = F_t / cos(beta_b) along the normal line of action, inclined at beta_b to the
+    /// transverse plane: axial part F_n sin(beta_b) = F_t tan(beta_b); ISO 6336-1 eq. for
+    /// F_x, Niemann & Winter II, 21.2).
+    pub fn axial_per_transverse(&self) -> f64 {
+        self.pair.base_helix_angle_rad.tan()
+    }
+
+    /// Sign of the axial force on the pinion along its axis (+z along the pinion's angular
+    /// velocity, the y of `geometry::helical`): a driving right-hand pinion is pushed
+    /// back, -z (the flank's normal leans against the helix); left-hand +z. The gear takes
+    /// the opposite force.
+    pub fn pinion_axial_sign(&self) -> f64 {
+        match self.pair.hand_pinion {
+            Hand::Right => -1.0,
+            Hand::Left => 1.0,
+        }
     }
 }

@@ -5,6 +5,7 @@ pub mod budget;
 pub mod dataset;
 pub mod domain;
 pub mod helical;
+pub mod helical_dynamics;
 pub mod model;
 pub mod model_error;
 pub mod modes;

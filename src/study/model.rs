@@ -48,6 +48,9 @@ pub struct Model {
     /// fields above are then the first stage's (its pair, stiffness, grid, lumped
     /// parameters and operating point).
     pub train: Option<super::train::TrainModel>,
+    /// A helical pair's planar model (`study::helical_dynamics`): `pair` and `mesh` are
+    /// then its contact lines'; None for a spur pair.
+    pub helical: Option<super::helical::HelicalDynamics>,
 }
 
 /// Pitch-line velocity above which a spur pair is implausible, m/s: ground, precision
@@ -133,7 +136,7 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 /// sweeps, calibration, prognostics) refuses it rather than give a spur result.
 fn helical_refusal(helix_angle_deg: f64) -> String {
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: helical dynamics (axial and tilting motion) is not yet built, so this study would give a spur result; only `gearwear stiffness` takes helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`; axial and tilting motion, wear per slice and signals are not built), so it would give a spur result; `gearwear stiffness` and `gearwear dynamics` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 
@@ -233,6 +236,7 @@ impl Model {
             pair,
             warnings,
             train: None,
+            helical: None,
         })
     }
 
@@ -276,6 +280,7 @@ impl Model {
             case: case.clone(),
             warnings,
             train: Some(train),
+            helical: None,
         })
     }
 

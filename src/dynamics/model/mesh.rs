@@ -130,6 +130,7 @@ impl TrainMesh<'_> {
             let c = sp.deflection_m - gap;
             sp.rho1_m[n] = pp.contact_rho1_m;
             sp.corner[n] = pp.corner;
+            sp.width_loss[n] = pp.width_loss;
             sp.stiffness_n_per_m[n] = k;
             sp.compression_m[n] = c;
             if frozen.map_or(c > 0.0, |m| m.touches(n)) {

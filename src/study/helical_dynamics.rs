@@ -1,0 +1,144 @@
+//! The planar dynamic model of a helical pair (`gearwear dynamics` on a case with
+//! `gear.helix_angle_deg` > 0; docs/MODEL.md section 11.1): the spur pair's 8-DOF model in
+//! the transverse section, its time-varying mesh stiffness the slice model's
+//! (`stiffness::helical`), one spring per tooth pair's contact line
+//! (`SliceMeshStiffness::line_model`), the mesh force F along the transverse line of
+//! action (its transverse part F_t = F; the axial part F tan(beta_b) loads the axial
+//! bearings and has no degree of freedom here).
+//!
+//! Refused (exit 2 naming the key): what needs a gap per slice or a second mesh (a gear
+//! train, a planetary set, per-tooth errors, modifications, faults, worn geometry),
+//! Pedrero's load-sharing law (it is a spur pair's), and a total
+//! contact ratio above [`MAX_PAIRS`] (the mesh follows at most that many contact lines).
+//! The tip corners are not modelled: `contact.path` = "extended" (the default) runs the
+//! nominal path with a warning.
+
+use super::domain::{body_value_warnings, domain_problems};
+use super::helical::{HelicalDynamics, HelicalModel};
+use super::model::{pitch_line_velocity_warning, Model, ModelError};
+use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
+use crate::contact::friction::Friction;
+use crate::contact::hertz::effective_modulus_of;
+use crate::dynamics::contact_path::ContactPath;
+use crate::dynamics::model::MAX_PAIRS;
+use crate::dynamics::params::DynamicParams;
+use crate::dynamics::period_search::SteadyStateSettings;
+use crate::geometry::ProfileGrid;
+use crate::stiffness::potential_energy::ElasticPair;
+use crate::wear::RoughnessLaw;
+
+/// The default `contact.path` = "extended" on a helical pair: its tip corners are not
+/// modelled (a helical tooth's corner meets the mate along a line across the face, one
+/// slice at a time), so the lines are followed on the nominal path.
+pub const EXTENDED_PATH_WARNING: &str = "`contact.path` = \"extended\": the tip corners of a helical tooth are not modelled, so its contact lines are followed on the nominal path of contact (as `contact.path` = \"nominal\")";
+
+/// A key of a helical case that the planar dynamics cannot take, and why.
+fn refusal(key: &str, value: &str, why: &str) -> String {
+    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`: {why}")
+}
+
+/// What a helical case asks that the planar model does not have (see the module docs).
+fn refusals(case: &Case) -> Vec<String> {
+    let mut r = Vec::new();
+    let slices = "each slice would need its own gap; only new, unmodified teeth are modelled so far (docs/MODEL.md 11.1)";
+    if !case.stage.is_empty() {
+        r.push(refusal(
+            "[[stage]]",
+            "a gear train",
+            "helical trains are not built",
+        ));
+    }
+    if case.planetary.is_some() {
+        r.push(refusal("[planetary]", "a planetary set", "not built"));
+    }
+    if case.teeth != Default::default() {
+        r.push(refusal("[teeth]", "per-tooth errors", slices));
+    }
+    if case.modification != Default::default() {
+        r.push(refusal("[modification]", "a modification", slices));
+    }
+    if !case.fault.is_empty() {
+        r.push(refusal("[[fault]]", "a fault", slices));
+    }
+    if case.wear.worn_geometry == WornGeometry::Worn {
+        r.push(refusal("wear.worn_geometry", "\"worn\"", slices));
+    }
+    if case.contact.load_sharing == LoadSharingModel::Pedrero {
+        r.push(refusal(
+            "contact.load_sharing",
+            "\"pedrero\"",
+            "paper eq. (7) is a spur pair's law; give \"stiffness\" or \"auto\"",
+        ));
+    }
+    r
+}
+
+impl Model {
+    /// The planar model of a helical case (module docs). `contact.load_sharing` = "auto"
+    /// becomes "stiffness" (the lines share the load by their compressions).
+    pub fn helical_from_case(case: &Case) -> Result<Model, ModelError> {
+        let problems = refusals(case);
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
+        let hm = HelicalModel::from_case(case)?;
+        let hp = hm.pair().clone();
+        let eps = hp.total_contact_ratio;
+        if eps.ceil() as usize > MAX_PAIRS {
+            return Err(ModelError(vec![format!(
+                "`gear.helix_angle_deg` = {} with `gear.face_width_mm` = {} gives a total contact ratio epsilon_gamma = {eps:.3} (epsilon_alpha {:.3} + epsilon_beta {:.3}): `gearwear dynamics` follows at most {MAX_PAIRS} contact lines, so epsilon_gamma must lie in (0, {MAX_PAIRS}]; reduce the helix angle or the face width",
+                case.gear.helix_angle_deg, case.gear.face_width_mm, hp.transverse_contact_ratio, hp.overlap_ratio
+            )]));
+        }
+        let transverse = hp.transverse.clone();
+        let problems = domain_problems(case, &transverse);
+        if !problems.is_empty() {
+            return Err(ModelError(problems));
+        }
+        let (line_pair, mesh, lead) = hm.slices.line_model();
+        let mut warnings = hm.warnings.clone();
+        let params = DynamicParams::from_case(case, &transverse);
+        warnings.extend(body_value_warnings(
+            case,
+            &transverse.blank_estimates(case.dynamics.blank_density_kg_per_m3),
+        ));
+        warnings.extend(pitch_line_velocity_warning(
+            case,
+            &transverse,
+            &params.operating,
+        ));
+        let mut case = case.clone();
+        case.contact.load_sharing = LoadSharingModel::Stiffness;
+        if case.contact.path.is_extended() {
+            warnings.push(EXTENDED_PATH_WARNING.into());
+            case.contact.path = ContactPathModel::Nominal;
+        }
+        let path = (transverse.rho_start_m, transverse.rho_end_m);
+        let contact = if lead > 0.0 {
+            ContactPath::helical_lines(&line_pair, path, lead)
+        } else {
+            ContactPath::new(&line_pair, ContactPathModel::Nominal, MAX_PAIRS)
+        };
+        Ok(Model {
+            contact,
+            grid: ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize),
+            elastic: ElasticPair::from_case(&case.materials),
+            friction: Friction::from_case(&case.friction),
+            roughness: RoughnessLaw::from_case(&case.surface),
+            settings: SteadyStateSettings::from_case(&case.numerics),
+            effective_modulus_pa: effective_modulus_of(&case.materials),
+            helical: Some(HelicalDynamics {
+                slices: hm.slices.slices(),
+                slice_mean_stiffness_n_per_m: hm.slices.mean_stiffness_n_per_m(),
+                pair: hp,
+            }),
+            pair: line_pair,
+            mesh,
+            params,
+            teeth: None,
+            case,
+            warnings,
+            train: None,
+        })
+    }
+}
