@@ -9,6 +9,7 @@ pub(crate) mod decimate;
 pub mod duty;
 pub mod duty_figures;
 pub mod dynamics;
+pub mod dynamics_planetary;
 pub mod figure_output;
 pub mod figures;
 pub mod html;
