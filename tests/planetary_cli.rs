@@ -2,37 +2,16 @@
 //! `gearwear stiffness` writes the set's geometry, kinematics, mesh stiffness and phases
 //! and the lumped model's natural frequencies; checked against closed forms, the spur
 //! study of the same sun-planet pair and Lin & Parker's (1999) published Table 2. Every
-//! study on the dynamic model refuses a planetary case, and bad sets exit 2 naming the key.
+//! study on the dynamic model but `dynamics` refuses a planetary case, and bad sets exit 2 naming the key.
 
 mod common;
 
+use common::planetary::lin_parker_lumped;
 use common::{gearwear, rejected, stderr, studies_on_the_dynamic_model};
 use std::path::Path;
 
 /// A four-planet 24 / 30 / 84 set, module 2 mm (the section's defaults, written out).
 const SET: &str = "[planetary]\nplanets = 4\nteeth_sun = 24\nteeth_planet = 30\nteeth_ring = 84\nmodule_mm = 2.0\n";
-
-/// Lin & Parker (1999) Table 1 as `[planetary.lumped]`: I = (I / r^2) r^2 and the ring's
-/// torsional support k_ru r_r^2 with r the table's base radii (sun 38.7, planet 50.15,
-/// ring 137.5 mm, carrier 88.4 mm); the radii cancel from the model.
-fn lin_parker_lumped() -> String {
-    let r2 = |mm: f64| (mm * 1e-3).powi(2);
-    format!(
-        "[planetary.lumped]\nmass_sun_kg = 0.4\nmass_planet_kg = 0.66\nmass_ring_kg = 2.35\nmass_carrier_kg = 5.43\n\
-         inertia_sun_kg_m2 = {}\ninertia_planet_kg_m2 = {}\ninertia_ring_kg_m2 = {}\ninertia_carrier_kg_m2 = {}\n\
-         base_radius_sun_mm = 38.7\nbase_radius_planet_mm = 50.15\nbase_radius_ring_mm = 137.5\ncarrier_radius_mm = 88.4\n\
-         mesh_stiffness_sun_planet_n_per_m = 5e8\nmesh_stiffness_ring_planet_n_per_m = 5e8\n\
-         bearing_stiffness_sun_n_per_m = 1e8\nbearing_stiffness_planet_n_per_m = 1e8\n\
-         bearing_stiffness_ring_n_per_m = 1e8\nbearing_stiffness_carrier_n_per_m = 1e8\n\
-         torsional_stiffness_sun_nm_per_rad = 0\ntorsional_stiffness_ring_nm_per_rad = {}\n\
-         torsional_stiffness_carrier_nm_per_rad = 0\npressure_angle_deg = 24.6\n",
-        0.39 * r2(38.7),
-        0.61 * r2(50.15),
-        3.0 * r2(137.5),
-        6.29 * r2(88.4),
-        1e9 * r2(137.5),
-    )
-}
 
 fn write_case(dir: &Path, text: &str) -> String {
     let p = dir.join("case.toml");
@@ -147,7 +126,7 @@ fn stiffness_writes_the_sets_kinematics_geometry_and_meshes() {
 
 #[test]
 fn stiffness_gives_lin_and_parkers_natural_frequencies_for_a_lumped_set() {
-    let (_d, s) = stiffness_of(&format!("{SET}\n{}", lin_parker_lumped()));
+    let (_d, s) = stiffness_of(&format!("{SET}\n{}", lin_parker_lumped(0.0)));
     let m = &s["planetary"]["modes"];
     let freqs: Vec<f64> = m["undamped_natural_frequencies_hz"]
         .as_array()
@@ -192,7 +171,11 @@ fn studies_on_the_dynamic_model_refuse_a_planetary_case() {
     let d = tempfile::tempdir().unwrap();
     let case = write_case(d.path(), SET);
     let needles = ["[planetary]", "not yet built", "gearwear stiffness"];
-    for cmd in studies_on_the_dynamic_model() {
+    // `gearwear dynamics` takes a planetary set (tests/planetary_dynamics_cli.rs).
+    for cmd in studies_on_the_dynamic_model()
+        .into_iter()
+        .filter(|c| c[0] != "dynamics")
+    {
         let mut args = cmd.clone();
         args.extend(["--config", case.as_str()]);
         rejected(&args, &needles);
@@ -238,7 +221,7 @@ fn bad_sets_exit_2_naming_the_key() {
         &["planetary.module_mm", "-2"],
     );
     // A lumped set with a negative mass.
-    let lumped = lin_parker_lumped().replace("mass_sun_kg = 0.4", "mass_sun_kg = -0.4");
+    let lumped = lin_parker_lumped(0.0).replace("mass_sun_kg = 0.4", "mass_sun_kg = -0.4");
     bad(
         &format!("{SET}\n{lumped}"),
         &["planetary.lumped.mass_sun_kg", "-0.4", "positive"],

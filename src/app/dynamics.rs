@@ -7,10 +7,12 @@ use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::remedy::Arg;
 use crate::report::dynamics::dynamics_artifacts;
+use crate::report::dynamics_planetary::planetary_dynamics_artifacts;
 use crate::report::figure_output::FigureRequest;
 use crate::store::transmission_error::{read_transmission_error, transmission_error_from_deg_um};
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
+use crate::study::planetary_dynamics::PlanetaryDynamics;
 use crate::wear::WearState;
 use std::path::PathBuf;
 
@@ -48,6 +50,9 @@ impl Job for DynamicsJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         budget::check(&self.case, Cost::Dynamics, self.budget.as_ref())?;
+        if self.case.planetary.is_some() {
+            return self.run_planetary(observer);
+        }
         let model = if self.case.gear.helix_angle_deg != 0.0 {
             let m = crate::study::Model::helical_from_case(&self.case)?;
             for w in &m.warnings {
@@ -73,7 +78,7 @@ impl Job for DynamicsJob {
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let r = model
             .dynamic(&WearState::new(model.grid.len()), &external)
-            .map_err(|e| JobError::Failed(e.into()))?;
+            .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
         let label = if self.transmission_error.is_some() {
             "new teeth, external transmission error"
         } else {
@@ -83,6 +88,34 @@ impl Job for DynamicsJob {
         publish::publish(
             out,
             dynamics_artifacts(&model, &r, label).with_figure_output(figures),
+            Some(&meta),
+            observer,
+        )
+    }
+}
+
+impl DynamicsJob {
+    /// A planetary case: the set's dynamic model (`study::planetary_dynamics`), its steady
+    /// state, `summary.json` and the mesh-force and motion tables.
+    fn run_planetary(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
+        if self.transmission_error.is_some() {
+            return Err(JobError::input(crate::remedy::Problem::of(
+                Arg::TransmissionError,
+                "a planetary set takes no external transmission error (its meshes' excitation is their stiffness and phasing)".to_string(),
+            )));
+        }
+        let mut d = PlanetaryDynamics::from_case(&self.case)?;
+        for w in &d.study.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let r = d
+            .solve()
+            .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
+        let meta = RunMetadata::new(self.name(), &self.case);
+        publish::publish(
+            out,
+            planetary_dynamics_artifacts(&d, &r),
             Some(&meta),
             observer,
         )

@@ -15,7 +15,9 @@ pub mod model;
 pub mod params;
 pub mod period;
 pub mod period_search;
+pub mod planetary_dynamic;
 pub mod planetary_lumped;
+pub mod planetary_steady;
 pub mod quasi_static;
 pub mod recorder;
 pub mod response;
@@ -27,6 +29,8 @@ pub mod summary;
 pub mod tooth_mesh;
 pub mod transient;
 
+#[cfg(test)]
+mod tests_planetary_dynamic;
 #[cfg(test)]
 mod tests_planetary_lumped;
 #[cfg(test)]

@@ -10,6 +10,7 @@ pub mod duty;
 pub mod duty_figures;
 pub mod dynamics;
 pub mod dynamics_helical;
+pub mod dynamics_planetary;
 pub mod figure_output;
 pub mod figures;
 pub mod html;

@@ -21,6 +21,7 @@ pub mod noise;
 pub mod order;
 pub mod path_file;
 pub mod periodic;
+pub mod planet_pass;
 pub mod record;
 pub mod record_spectrum;
 pub mod setup;

@@ -7,9 +7,12 @@ pub mod helical;
 pub mod internal;
 pub mod iso6336;
 pub mod mesh;
+pub mod planetary_mesh;
 pub mod potential_energy;
 pub mod tooth_faults;
 pub mod worn_tooth;
 
 #[cfg(test)]
 mod tests_internal;
+#[cfg(test)]
+pub(crate) mod tests_planetary_mesh;

@@ -11,6 +11,7 @@ pub mod model_error;
 pub mod modes;
 pub mod paper;
 pub mod planetary;
+pub mod planetary_dynamics;
 pub mod signal_record;
 pub mod sweep;
 pub mod teeth;

@@ -140,11 +140,11 @@ fn helical_refusal(helix_angle_deg: f64) -> String {
     )
 }
 
-/// Why a planetary case cannot be modelled here: the dynamic model of a planetary set
-/// (time-varying meshes, contact loss, friction, the rotating carrier) is not yet built,
-/// and the case's `[gear]` pair is not the set. Every study on the model refuses it.
+/// Why a planetary case cannot be modelled here: the pair and train model is not the
+/// set (`gearwear dynamics` takes it by `study::planetary_dynamics` before reaching
+/// here). Every study on this model refuses it.
 fn planetary_refusal() -> String {
-    "`[planetary]` is a planetary set: its dynamic model is not yet built, so this study would give the result of the `[gear]` pair instead; only `gearwear stiffness` takes a planetary set so far (its meshes' stiffness, phases, frequencies and, with `[planetary.lumped]`, the natural frequencies)".to_string()
+    "`[planetary]` is a planetary set: this study is not yet built for it, so it would give the result of the `[gear]` pair instead; only `gearwear stiffness` (its meshes' stiffness, phases, frequencies and, with `[planetary.lumped]`, the natural frequencies) and `gearwear dynamics` (with `[planetary.lumped]`) take a planetary set so far".to_string()
 }
 
 impl Model {

@@ -10,8 +10,10 @@ use crate::config::case::Case;
 use crate::config::planetary::PlanetarySection;
 use crate::dynamics::planetary_lumped::{PlanetaryLumped, PlanetaryMode};
 use crate::geometry::planetary::PlanetarySet;
+use crate::io::Table;
 use crate::stiffness::internal::InternalMeshStiffness;
 use crate::stiffness::mesh::MeshStiffness;
+use crate::stiffness::planetary_mesh::PlanetaryMeshes;
 use crate::stiffness::potential_energy::ElasticPair;
 
 /// Samples of the ring mesh's total stiffness over one mesh period for its extremes (the
@@ -31,6 +33,8 @@ pub struct PlanetaryStudy {
     pub ring_mesh: InternalMeshStiffness,
     /// Signed member speeds [sun, carrier, ring], Hz, at the case's input speed.
     pub speeds_hz: [f64; 3],
+    /// Every mesh's stiffness over time with its phase (Parker & Lin 2004).
+    pub meshes: PlanetaryMeshes,
     /// The lumped model's modes, ascending, when `[planetary.lumped]` is given.
     pub modes: Option<Vec<PlanetaryMode>>,
     /// Warnings of the geometry and the stiffness.
@@ -70,15 +74,48 @@ impl PlanetaryStudy {
             ),
             None => None,
         };
+        let meshes = PlanetaryMeshes::new(&set, &sun_mesh, &ring_mesh);
         Ok(Self {
             section,
             set,
+            meshes,
             sun_mesh,
             ring_mesh,
             speeds_hz,
             modes,
             warnings,
         })
+    }
+
+    /// Every mesh's stiffness over one carrier revolution relative to the ring (z_r mesh
+    /// cycles) at `per_cycle` samples per mesh cycle: columns `carrier_angle_deg` (the
+    /// carrier's rotation relative to the ring), `mesh_cycles`, then
+    /// `k_sun_planet_N_n_per_m` and `k_ring_planet_N_n_per_m` for each planet N.
+    pub fn stiffness_table(&self, per_cycle: usize) -> Table {
+        let zr = self.set.teeth_ring();
+        let rows = zr * per_cycle;
+        let cycles: Vec<f64> = (0..rows).map(|i| i as f64 / per_cycle as f64).collect();
+        let mut t = Table::new()
+            .col(
+                "carrier_angle_deg",
+                cycles.iter().map(|c| 360.0 * c / zr as f64).collect(),
+            )
+            .col("mesh_cycles", cycles.clone());
+        for p in 0..self.set.planets() {
+            let k = cycles
+                .iter()
+                .map(|c| self.meshes.sun_n_per_m(p, *c))
+                .collect();
+            t = t.col(&format!("k_sun_planet_{}_n_per_m", p + 1), k);
+        }
+        for p in 0..self.set.planets() {
+            let k = cycles
+                .iter()
+                .map(|c| self.meshes.ring_n_per_m(p, *c))
+                .collect();
+            t = t.col(&format!("k_ring_planet_{}_n_per_m", p + 1), k);
+        }
+        t
     }
 
     /// Smallest and largest total stiffness of the ring mesh over a mesh period, N/m,

@@ -4,6 +4,7 @@
 pub mod figures;
 pub mod linear;
 pub mod paper;
+pub mod planetary;
 pub mod train;
 
 use std::path::Path;

@@ -1,0 +1,308 @@
+//! The dynamic model of a planetary set (docs/MODEL.md section 12.5): the degrees of
+//! freedom of Lin & Parker's lumped model (`planetary_lumped`, 3 (N + 3) coordinates in
+//! the carrier frame) with every mesh's time-varying stiffness and phase
+//! (`stiffness::planetary_mesh`), mesh contact loss, viscous damping and a torque on the
+//! input member, as a first-order system for the implicit integrator
+//! (`integrator::OdeSystem` on a `Dyn` state [q, dq/dt], m and m/s).
+//!
+//! Equations (Lin & Parker 1999 eqs. 1-3 for the deflections; Parker, Agashe & Vijayakar
+//! 2000 and Parker & Lin 2004 for the time-varying, phased mesh stiffness):
+//!   M q'' + sum_j (k_j d_j + c_j d_j') g_j = f,   d_j = g_j . q,
+//! with g_j the gradient of deflection j (sun mesh, ring mesh, planet pin radial and
+//! tangential, and the lateral and torsional supports of carrier, ring and sun). A mesh
+//! carries k_jn(t) d + c_j d' while its compression d is positive and nothing otherwise
+//! (contact loss; no backlash, so the back flanks never touch). The sun mesh's deflection
+//! uses the sun mesh's operating pressure angle alpha_s, the ring mesh's alpha_r
+//! (psi_sn = psi_n - alpha_s, psi_rn = psi_n + alpha_r).
+//!
+//! Rotating frame: the carrier turns at a constant mean speed; the centripetal and
+//! gyroscopic terms of its frame (of order Omega_c^2 m and 2 Omega_c m) are left out, as in
+//! Lin & Parker's modal model and Parker et al.'s (2000) dynamic one: valid while the
+//! carrier's speed is small beside the lowest natural frequency (docs/MODEL.md 12.5).
+//!
+//! Damping (the sources are silent; gearwear's choice): every spring j has a viscous
+//! damper c_j = 2 zeta sqrt(k_j m_j), zeta the case's `dynamics.mesh_damping_ratio`, k_j
+//! the spring's (mean) stiffness, m_j for a mesh the equivalent mass 1 / (1/m_a + 1/m_b)
+//! of the two gears' I / r_b^2, for a support the supported coordinate's mass, for a
+//! planet pin the planet's mass.
+
+use super::integrator::{Matrix, OdeSystem, Vector};
+use super::planetary_lumped::PlanetaryLumped;
+use crate::stiffness::planetary_mesh::PlanetaryMeshes;
+use nalgebra::{DMatrix, DVector};
+
+/// Indices of a member's three coordinates, as in `planetary_lumped`: carrier 0, ring 3,
+/// sun 6, planet n 9 + 3n.
+const CARRIER: usize = 0;
+const RING: usize = 3;
+const SUN: usize = 6;
+const PLANETS: usize = 9;
+
+/// Where the meshes' stiffness comes from.
+#[derive(Debug, Clone)]
+pub enum MeshStiffnessSource {
+    /// The potential-energy tables with every mesh's phase.
+    Tables(Box<PlanetaryMeshes>),
+    /// Constant stiffness of the sun-planet and ring-planet meshes, N/m (the time-invariant
+    /// model, for checks against `planetary_lumped`).
+    Constant([f64; 2]),
+}
+
+impl MeshStiffnessSource {
+    /// Mesh stiffness of planet `p`'s sun (`ring` false) or ring mesh at `cycles`, N/m.
+    fn at(&self, p: usize, ring: bool, cycles: f64) -> f64 {
+        match (self, ring) {
+            (Self::Tables(m), false) => m.sun_n_per_m(p, cycles),
+            (Self::Tables(m), true) => m.ring_n_per_m(p, cycles),
+            (Self::Constant(k), r) => k[r as usize],
+        }
+    }
+}
+
+/// A linear spring-damper along deflection d = g . q (sparse g).
+#[derive(Debug, Clone)]
+struct Element {
+    /// Stiffness (constant springs) or mean stiffness (meshes), N/m.
+    k: f64,
+    /// Damping, N s/m.
+    c: f64,
+    g: Vec<(usize, f64)>,
+    /// For a mesh: (planet, ring mesh?).
+    mesh: Option<(usize, bool)>,
+}
+
+impl Element {
+    fn deflection(&self, q: &[f64]) -> f64 {
+        self.g.iter().map(|(i, v)| v * q[*i]).sum()
+    }
+}
+
+/// The planetary set's dynamic model (see module docs).
+#[derive(Debug, Clone)]
+pub struct PlanetaryDynamic {
+    /// Masses, radii, supports and planet angles (its mesh stiffness: the meshes' means).
+    pub params: PlanetaryLumped,
+    /// Operating pressure angles of the sun and ring meshes, rad.
+    pub alpha_rad: [f64; 2],
+    /// The meshes' stiffness over time.
+    pub source: MeshStiffnessSource,
+    /// Mesh frequency f_m, Hz: time t is f_m t mesh cycles.
+    pub mesh_frequency_hz: f64,
+    /// External generalised forces (a torque T on member j as T / r_j on its u), N.
+    pub force_n: DVector<f64>,
+    mass: Vec<f64>,
+    elements: Vec<Element>,
+}
+
+impl PlanetaryDynamic {
+    /// The model of `params` (its mesh stiffness the mean of `source`'s) with operating
+    /// pressure angles `alpha_rad` [sun, ring], damping ratio `zeta` and no load.
+    pub fn new(
+        params: PlanetaryLumped,
+        alpha_rad: [f64; 2],
+        source: MeshStiffnessSource,
+        mesh_frequency_hz: f64,
+        zeta: f64,
+    ) -> Self {
+        let mass = params.mass_diagonal();
+        let elements = elements_of(&params, alpha_rad, &mass, zeta);
+        Self {
+            force_n: DVector::zeros(mass.len()),
+            params,
+            alpha_rad,
+            source,
+            mesh_frequency_hz,
+            mass,
+            elements,
+        }
+    }
+
+    /// Coordinates 3 (N + 3).
+    pub fn dofs(&self) -> usize {
+        self.mass.len()
+    }
+
+    /// Index of the u coordinate of member `m` (0 carrier, 1 ring, 2 sun).
+    pub fn rotation_index(member: usize) -> usize {
+        3 * member + 2
+    }
+
+    /// Every mesh's force at time `t_s` in state `y` ([q, q']), N: the sun meshes of planets
+    /// 1..N, then their ring meshes; 0 for a mesh out of contact.
+    pub fn mesh_forces(&self, t_s: f64, y: &[f64]) -> Vec<f64> {
+        let n = self.dofs();
+        let (q, v) = y.split_at(n);
+        let cycles = self.mesh_frequency_hz * t_s;
+        let planets = self.params.planet_angles_rad.len();
+        let mut f = vec![0.0; 2 * planets];
+        for e in &self.elements {
+            if let Some((p, ring)) = e.mesh {
+                let d = e.deflection(q);
+                if d > 0.0 {
+                    let k = self.source.at(p, ring, cycles);
+                    f[p + ring as usize * planets] = k * d + e.c * e.deflection(v);
+                }
+            }
+        }
+        f
+    }
+
+    /// The stiffness (or damping, `damping` true) matrix of the springs and of the
+    /// meshes in contact in `q` at `cycles`, N/m (N s/m); every mesh in contact when `q`
+    /// is `None`, at its mean stiffness when `cycles` is `None`.
+    pub fn matrix(&self, q: Option<&[f64]>, cycles: Option<f64>, damping: bool) -> DMatrix<f64> {
+        let n = self.dofs();
+        let mut k = DMatrix::zeros(n, n);
+        for e in &self.elements {
+            let kv = match (e.mesh, damping) {
+                (_, true) => e.c,
+                (None, false) => e.k,
+                (Some((p, ring)), false) => cycles.map_or(e.k, |c| self.source.at(p, ring, c)),
+            };
+            if e.mesh.is_some() && q.is_some_and(|q| e.deflection(q) <= 0.0) {
+                continue;
+            }
+            for (i, gi) in &e.g {
+                for (j, gj) in &e.g {
+                    k[(*i, *j)] += kv * gi * gj;
+                }
+            }
+        }
+        k
+    }
+
+    /// The static deflection under `force_n` with every mesh at its mean stiffness, m;
+    /// `None` when a member has no path to ground.
+    pub fn static_deflection(&self) -> Option<DVector<f64>> {
+        self.matrix(None, None, false)
+            .lu()
+            .solve(&self.force_n)
+            .filter(|x| x.iter().all(|v| v.is_finite()))
+    }
+}
+
+impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
+    /// [q', M^-1 (f - sum (k d + c d') g)], m/s and m/s^2.
+    fn rhs(&mut self, t: f64, y: &Vector<nalgebra::Dyn>) -> Vector<nalgebra::Dyn> {
+        let n = self.dofs();
+        let (q, v) = y.as_slice().split_at(n);
+        let cycles = self.mesh_frequency_hz * t;
+        let mut f: Vec<f64> = self.force_n.iter().copied().collect();
+        for e in &self.elements {
+            let d = e.deflection(q);
+            let k = match e.mesh {
+                None => e.k,
+                Some(_) if d <= 0.0 => continue,
+                Some((p, ring)) => self.source.at(p, ring, cycles),
+            };
+            let fe = k * d + e.c * e.deflection(v);
+            for (i, gi) in &e.g {
+                f[*i] -= fe * gi;
+            }
+        }
+        let mut out = DVector::zeros(2 * n);
+        for i in 0..n {
+            out[i] = v[i];
+            out[n + i] = f[i] / self.mass[i];
+        }
+        out
+    }
+
+    /// [[0, I], [-M^-1 K(t), -M^-1 C]] with the meshes in contact in `y`, 1/s and 1/s^2.
+    fn jacobian(&mut self, t: f64, y: &Vector<nalgebra::Dyn>) -> Option<Matrix<nalgebra::Dyn>> {
+        let n = self.dofs();
+        let q = &y.as_slice()[..n];
+        let cycles = self.mesh_frequency_hz * t;
+        let k = self.matrix(Some(q), Some(cycles), false);
+        let c = self.matrix(Some(q), Some(cycles), true);
+        let mut j = DMatrix::zeros(2 * n, 2 * n);
+        for r in 0..n {
+            j[(r, n + r)] = 1.0;
+            for col in 0..n {
+                j[(n + r, col)] = -k[(r, col)] / self.mass[r];
+                j[(n + r, n + col)] = -c[(r, col)] / self.mass[r];
+            }
+        }
+        Some(j)
+    }
+}
+
+/// The model's springs and meshes with their dampers (module docs): per planet its sun
+/// mesh, ring mesh and the pin's radial and tangential springs, then the supports.
+fn elements_of(p: &PlanetaryLumped, alpha: [f64; 2], mass: &[f64], zeta: f64) -> Vec<Element> {
+    let (ssa, csa) = alpha[0].sin_cos();
+    let (sra, cra) = alpha[1].sin_cos();
+    let [k_sun, k_ring] = p.mesh_stiffness_n_per_m;
+    let k_pin = p.bearing_n_per_m[3];
+    let damper = |k: f64, m: f64| 2.0 * zeta * (k * m).sqrt();
+    let reduced = |a: f64, b: f64| 1.0 / (1.0 / a + 1.0 / b);
+    let mut out = Vec::new();
+    for (n, psi) in p.planet_angles_rad.iter().enumerate() {
+        let q = PLANETS + 3 * n;
+        let (s_sn, c_sn) = (psi - alpha[0]).sin_cos();
+        let (s_rn, c_rn) = (psi + alpha[1]).sin_cos();
+        let (sp, cp) = psi.sin_cos();
+        let m_planet_u = mass[q + 2];
+        out.push(Element {
+            k: k_sun,
+            c: damper(k_sun, reduced(mass[SUN + 2], m_planet_u)),
+            g: vec![
+                (SUN, -s_sn),
+                (SUN + 1, c_sn),
+                (q, -ssa),
+                (q + 1, -csa),
+                (SUN + 2, 1.0),
+                (q + 2, 1.0),
+            ],
+            mesh: Some((n, false)),
+        });
+        out.push(Element {
+            k: k_ring,
+            c: damper(k_ring, reduced(mass[RING + 2], m_planet_u)),
+            g: vec![
+                (RING, -s_rn),
+                (RING + 1, c_rn),
+                (q, sra),
+                (q + 1, -cra),
+                (RING + 2, 1.0),
+                (q + 2, -1.0),
+            ],
+            mesh: Some((n, true)),
+        });
+        for g in [
+            vec![(CARRIER, cp), (CARRIER + 1, sp), (q, -1.0)],
+            vec![
+                (CARRIER, -sp),
+                (CARRIER + 1, cp),
+                (CARRIER + 2, 1.0),
+                (q + 1, -1.0),
+            ],
+        ] {
+            let c = damper(k_pin, mass[q]);
+            out.push(Element {
+                k: k_pin,
+                c,
+                g,
+                mesh: None,
+            });
+        }
+    }
+    for (j, base) in [CARRIER, RING, SUN].into_iter().enumerate() {
+        for (i, k) in [
+            (base, p.bearing_n_per_m[j]),
+            (base + 1, p.bearing_n_per_m[j]),
+            (base + 2, p.torsional_n_per_m[j]),
+        ] {
+            if k > 0.0 {
+                let c = damper(k, mass[i]);
+                out.push(Element {
+                    k,
+                    c,
+                    g: vec![(i, 1.0)],
+                    mesh: None,
+                });
+            }
+        }
+    }
+    out
+}

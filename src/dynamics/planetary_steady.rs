@@ -1,0 +1,296 @@
+//! The mesh-periodic steady state of a planetary set's dynamic model
+//! (`planetary_dynamic`, docs/MODEL.md 12.5), integrated with the project's ESDIRK3(2)
+//! stepper (`integrator::Sdirk` on a `Dyn` state, the gear model's method) under the same
+//! local error control as `period` (step factor 0.9 err^(-1/3), clamped to [0.2, 5]).
+//!
+//! In the carrier frame every mesh's stiffness repeats with the mesh period T_m (the
+//! phases only shift it), so the steady state is T_m-periodic. It is found by
+//! integrating from the static equilibrium at the mean stiffness, period after period,
+//! until the state changes over one period by less than the case's
+//! `numerics.steady_state_tolerance` relative to the state's scales (the largest static
+//! deflection for displacements, times 2 pi f_m for velocities); the shooting of
+//! `shooting.rs` is written for the pair and train models' reduced coordinates and is
+//! not used here. One more period is then recorded at `numerics.steps_per_mesh_period`
+//! equally spaced times (each reached by error-controlled steps).
+
+use super::integrator::tableau::ESDIRK32;
+use super::integrator::{Sdirk, SdirkOptions, Vector};
+use super::planetary_dynamic::PlanetaryDynamic;
+use nalgebra::{DVector, Dyn};
+
+/// Integration and steady-state settings (from `[numerics]`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanetarySettings {
+    /// Recorded samples per mesh period (also the longest step, T_m / samples).
+    pub samples_per_period: usize,
+    /// Local error per step relative to the state's scales.
+    pub integration_tolerance: f64,
+    /// Mesh periods integrated at most before giving up.
+    pub max_periods: usize,
+    /// Largest change of the state over a period, relative to its scales, at steady state.
+    pub steady_state_tolerance: f64,
+}
+
+/// One recorded mesh period of the steady state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetaryResponse {
+    /// Sample times from the period's start, s.
+    pub times_s: Vec<f64>,
+    /// Mesh forces per sample (sun meshes 1..N, then ring meshes 1..N), N.
+    pub mesh_forces_n: Vec<Vec<f64>>,
+    /// Each mesh's mean force over the period (same order), N, integrated between the
+    /// samples (`mean_forces`).
+    pub mean_forces_n: Vec<f64>,
+    /// The coordinates q per sample, m.
+    pub displacements_m: Vec<Vec<f64>>,
+    /// The static deflection at mean stiffness the search started from, m.
+    pub static_m: Vec<f64>,
+    /// Mesh periods integrated before the recorded one.
+    pub periods_to_steady: usize,
+    /// Change of the state over the recorded period, relative to its scales.
+    pub periodicity: f64,
+    /// Accepted steps over the whole run.
+    pub steps: u64,
+}
+
+/// Why the steady state could not be found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlanetaryDynamicsError {
+    /// The stiffness at mean mesh stiffness is singular.
+    #[error("the planetary set has a member with no path to ground (a free rotation or translation): give its bearing or torsional support a stiffness")]
+    Singular,
+    /// The integrator failed.
+    #[error("integration failed at t = {t_s:.6e} s: {reason}")]
+    Integration {
+        /// Time of the failure, s.
+        t_s: f64,
+        /// The integrator's message.
+        reason: String,
+    },
+    /// The state did not become periodic.
+    #[error("no steady state after {periods} mesh periods (change over the last period {change:.3e} of the state's scale; raise `numerics.max_mesh_periods` or the damping)")]
+    NotSteady {
+        /// Periods integrated.
+        periods: usize,
+        /// The last period's change, relative.
+        change: f64,
+    },
+}
+
+/// Integrate `sys` to its mesh-periodic steady state and record one period.
+pub fn solve_planetary_steady_state(
+    sys: &mut PlanetaryDynamic,
+    s: &PlanetarySettings,
+) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+    let n = sys.dofs();
+    let q0 = sys
+        .static_deflection()
+        .ok_or(PlanetaryDynamicsError::Singular)?;
+    let x_scale = q0.amax().max(f64::MIN_POSITIVE);
+    let period = 1.0 / sys.mesh_frequency_hz;
+    let v_scale = x_scale * 2.0 * std::f64::consts::PI * sys.mesh_frequency_hz;
+    let scale = DVector::from_fn(2 * n, |i, _| if i < n { x_scale } else { v_scale });
+    let mut stepper = Sdirk::with_dimension(Dyn(2 * n), &ESDIRK32, period, newton(&scale))
+        .map_err(|e| fail(0.0, e))?;
+    stepper
+        .set_error_tolerance(
+            scale.map(|v| v * s.integration_tolerance),
+            DVector::zeros(2 * n),
+        )
+        .map_err(|e| fail(0.0, e))?;
+    let h_max = period / s.samples_per_period as f64;
+    let mut run = Run {
+        stepper,
+        h_prop: h_max,
+        h_max,
+        samples: s.samples_per_period,
+    };
+    let mut y = DVector::zeros(2 * n);
+    y.rows_mut(0, n).copy_from(&q0);
+    let mut periods = 0;
+    loop {
+        let y_start = y.clone();
+        run.period(sys, periods as f64 * period, &mut y, None)?;
+        periods += 1;
+        let change = relative_change(&y_start, &y, &scale);
+        if change < s.steady_state_tolerance {
+            break;
+        }
+        if periods >= s.max_periods {
+            return Err(PlanetaryDynamicsError::NotSteady { periods, change });
+        }
+    }
+    let y_start = y.clone();
+    let mut samples = Vec::with_capacity(s.samples_per_period + 1);
+    run.period(sys, periods as f64 * period, &mut y, Some(&mut samples))?;
+    samples.push(y.as_slice().to_vec());
+    let t0 = periods as f64 * period;
+    let dt = period / s.samples_per_period as f64;
+    let mut rec = PlanetaryResponse {
+        times_s: (0..s.samples_per_period).map(|k| k as f64 * dt).collect(),
+        mesh_forces_n: Vec::new(),
+        mean_forces_n: mean_forces(sys, t0, dt, &samples),
+        displacements_m: samples[..s.samples_per_period]
+            .iter()
+            .map(|y| y[..n].to_vec())
+            .collect(),
+        static_m: q0.iter().copied().collect(),
+        periods_to_steady: periods,
+        periodicity: relative_change(&y_start, &y, &scale),
+        steps: run.stepper.stats().steps,
+    };
+    rec.mesh_forces_n = (0..s.samples_per_period)
+        .map(|k| sys.mesh_forces(t0 + k as f64 * dt, &samples[k]))
+        .collect();
+    Ok(rec)
+}
+
+/// Sub-intervals per sample interval of the mean forces' midpoint rule: a mesh force
+/// jumps with its stiffness (by up to ~half its value when a pair enters or leaves), and
+/// the midpoint rule errs by at most a jump times half a sub-interval, 0.5 / (2 x 64 x
+/// samples per period) of the mean, 2e-5 at 200 samples.
+const MEAN_SUBDIVISIONS: usize = 64;
+
+/// Each mesh's mean force over the recorded period, N: the midpoint rule on
+/// [`MEAN_SUBDIVISIONS`] points per sample interval, the state between samples by cubic
+/// Hermite interpolation of q with q' (its error O(dt^4)), the stiffness at the point.
+fn mean_forces(sys: &PlanetaryDynamic, t0: f64, dt: f64, samples: &[Vec<f64>]) -> Vec<f64> {
+    let n = sys.dofs();
+    let mut sum = vec![0.0; 2 * sys.params.planet_angles_rad.len()];
+    let mut y = vec![0.0; 2 * n];
+    let intervals = samples.len() - 1;
+    for k in 0..intervals {
+        let (a, b) = (&samples[k], &samples[k + 1]);
+        for j in 0..MEAN_SUBDIVISIONS {
+            let s = (j as f64 + 0.5) / MEAN_SUBDIVISIONS as f64;
+            hermite(a, b, n, dt, s, &mut y);
+            let f = sys.mesh_forces(t0 + (k as f64 + s) * dt, &y);
+            for (acc, v) in sum.iter_mut().zip(f) {
+                *acc += v;
+            }
+        }
+    }
+    let count = (intervals * MEAN_SUBDIVISIONS) as f64;
+    sum.iter().map(|v| v / count).collect()
+}
+
+/// The cubic Hermite interpolant of [q, q'] between states `a` and `b` (dt apart) at the
+/// fraction `s`: q from both ends' q and q', q' its derivative.
+fn hermite(a: &[f64], b: &[f64], n: usize, dt: f64, s: f64, y: &mut [f64]) {
+    let (s2, s3) = (s * s, s * s * s);
+    let (h00, h10, h01, h11) = (
+        2.0 * s3 - 3.0 * s2 + 1.0,
+        s3 - 2.0 * s2 + s,
+        -2.0 * s3 + 3.0 * s2,
+        s3 - s2,
+    );
+    let (d00, d10, d01, d11) = (
+        6.0 * s2 - 6.0 * s,
+        3.0 * s2 - 4.0 * s + 1.0,
+        -6.0 * s2 + 6.0 * s,
+        3.0 * s2 - 2.0 * s,
+    );
+    for i in 0..n {
+        let (qa, va, qb, vb) = (a[i], a[n + i], b[i], b[n + i]);
+        y[i] = h00 * qa + h10 * dt * va + h01 * qb + h11 * dt * vb;
+        y[n + i] = (d00 * qa + d01 * qb) / dt + d10 * va + d11 * vb;
+    }
+}
+
+/// Newton tolerances a thousandth of the error tolerance's scale (the stage equations
+/// solved well below the truncation error).
+fn newton(scale: &DVector<f64>) -> SdirkOptions {
+    SdirkOptions {
+        abs_tol: scale.min() * 1e-9,
+        ..SdirkOptions::default()
+    }
+}
+
+fn fail(t_s: f64, e: impl std::fmt::Display) -> PlanetaryDynamicsError {
+    PlanetaryDynamicsError::Integration {
+        t_s,
+        reason: e.to_string(),
+    }
+}
+
+/// max_i |b_i - a_i| / scale_i.
+fn relative_change(a: &DVector<f64>, b: &DVector<f64>, scale: &DVector<f64>) -> f64 {
+    (b - a)
+        .iter()
+        .zip(scale.iter())
+        .map(|(d, s)| d.abs() / s)
+        .fold(0.0, f64::max)
+}
+
+/// The stepper and its step proposal.
+struct Run {
+    stepper: Sdirk<Dyn>,
+    h_prop: f64,
+    h_max: f64,
+    samples: usize,
+}
+
+impl Run {
+    /// One mesh period from `t0` on the sample grid, from a fresh step proposal and
+    /// Jacobian so that the period map depends on the state only (its fixed point is
+    /// then the steady state to the integration's round-off); the state at each sample's
+    /// start pushed onto `rec` when given.
+    fn period(
+        &mut self,
+        sys: &mut PlanetaryDynamic,
+        t0: f64,
+        y: &mut Vector<Dyn>,
+        mut rec: Option<&mut Vec<Vec<f64>>>,
+    ) -> Result<(), PlanetaryDynamicsError> {
+        self.h_prop = self.h_max;
+        self.stepper.invalidate_jacobian();
+        let mut t = t0;
+        for k in 1..=self.samples {
+            if let Some(r) = rec.as_deref_mut() {
+                r.push(y.as_slice().to_vec());
+            }
+            self.advance(sys, &mut t, y, t0 + k as f64 * self.h_max)?;
+        }
+        Ok(())
+    }
+
+    /// Error-controlled steps from `*t` to `t_end` (the last one cut to land on it).
+    fn advance(
+        &mut self,
+        sys: &mut PlanetaryDynamic,
+        t: &mut f64,
+        y: &mut Vector<Dyn>,
+        t_end: f64,
+    ) -> Result<(), PlanetaryDynamicsError> {
+        let h_min = self.h_max * 1e-9;
+        while t_end - *t > h_min {
+            let mut h = self.h_prop.min(self.h_max).min(t_end - *t);
+            loop {
+                match self.stepper.try_step(sys, *t, y, h) {
+                    Err(e) => {
+                        h *= 0.5;
+                        if h < h_min {
+                            return Err(fail(*t, e));
+                        }
+                    }
+                    Ok(tr) if tr.error > 1.0 => {
+                        h *= (0.9 * tr.error.powf(-1.0 / 3.0)).clamp(0.2, 0.9);
+                        if h < h_min {
+                            return Err(fail(*t, "local error above tolerance"));
+                        }
+                    }
+                    Ok(tr) => {
+                        self.stepper.accept(&tr);
+                        self.h_prop =
+                            h * (0.9 * tr.error.max(1e-10).powf(-1.0 / 3.0)).clamp(0.2, 5.0);
+                        *t += h;
+                        *y = tr.y;
+                        break;
+                    }
+                }
+            }
+        }
+        *t = t_end;
+        Ok(())
+    }
+}

@@ -1,0 +1,151 @@
+//! Results of `gearwear dynamics` on a planetary case: `summary.json` with each mesh's
+//! mean and largest force over the steady-state mesh period, the load sharing factor per
+//! planet, the dynamic factor and the run's numerics; `mesh_forces.csv` (every mesh's
+//! force over the period) and `motions.csv` (every coordinate of the lumped model)
+//! (docs/MODEL.md 12.5).
+
+use super::artifacts::Artifacts;
+use crate::dynamics::planetary_steady::PlanetaryResponse;
+use crate::format::shown;
+use crate::io::Table;
+use crate::study::planetary_dynamics::PlanetaryDynamics;
+use serde_json::json;
+
+/// Mean and largest value of each column of `rows` (rows of equal length).
+fn column_stats(rows: &[Vec<f64>]) -> (Vec<f64>, Vec<f64>) {
+    let n = rows.first().map_or(0, Vec::len);
+    let mean = (0..n)
+        .map(|j| rows.iter().map(|r| r[j]).sum::<f64>() / rows.len() as f64)
+        .collect();
+    let max = (0..n)
+        .map(|j| rows.iter().map(|r| r[j]).fold(f64::NEG_INFINITY, f64::max))
+        .collect();
+    (mean, max)
+}
+
+/// Load sharing factors of the sun meshes (docs/MODEL.md 12.5): per planet n, its mean
+/// load over the mean of all planets' (from the meshes' means `mean`), and the largest
+/// over the samples `forces` of N F_sn(t) / sum_k F_sk(t) (the instantaneous share).
+pub fn load_sharing(mean: &[f64], forces: &[Vec<f64>], planets: usize) -> (Vec<f64>, Vec<f64>) {
+    let all = mean[..planets].iter().sum::<f64>() / planets as f64;
+    let by_mean = mean[..planets].iter().map(|m| m / all).collect();
+    let peak = (0..planets)
+        .map(|p| {
+            forces
+                .iter()
+                .map(|r| {
+                    let s: f64 = r[..planets].iter().sum();
+                    if s > 0.0 {
+                        planets as f64 * r[p] / s
+                    } else {
+                        0.0
+                    }
+                })
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    (by_mean, peak)
+}
+
+/// The nominal force of every sun (and ring) mesh with equal sharing, N: the sun's
+/// torque |T_s| / (N r_bs), with T_s from the input torque by the set's torque split
+/// (T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s), Willis).
+pub fn nominal_mesh_force_n(d: &PlanetaryDynamics) -> f64 {
+    let set = &d.study.set;
+    let zrs = set.teeth_ring() as f64 / set.teeth_sun() as f64;
+    let share = match set.input {
+        crate::config::planetary::Member::Sun => 1.0,
+        crate::config::planetary::Member::Ring => zrs,
+        crate::config::planetary::Member::Carrier => 1.0 + zrs,
+    };
+    (d.input_torque_nm / share).abs() / (set.planets() as f64 * d.model.params.radius_m[2])
+}
+
+/// Everything `gearwear dynamics` writes for a planetary case.
+pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse) -> Artifacts {
+    let n = d.study.set.planets();
+    let (_, max) = column_stats(&r.mesh_forces_n);
+    let mean = &r.mean_forces_n;
+    let (lsf, lsf_peak) = load_sharing(mean, &r.mesh_forces_n, n);
+    let nominal = nominal_mesh_force_n(d);
+    let dyn_factor = |range: std::ops::Range<usize>| {
+        max[range].iter().fold(0.0, |a: f64, b| a.max(*b)) / nominal
+    };
+    let meshes: Vec<_> = (0..2 * n)
+        .map(|j| {
+            json!({
+                "mesh": if j < n { format!("sun_planet_{}", j + 1) } else { format!("ring_planet_{}", j - n + 1) },
+                "mean_force_n": mean[j],
+                "max_force_n": max[j],
+            })
+        })
+        .collect();
+    let v = json!({
+        "planetary_dynamics": {
+            "input": d.study.set.input.name(),
+            "input_torque_nm": d.input_torque_nm,
+            "mesh_frequency_hz": d.model.mesh_frequency_hz,
+            "nominal_mesh_force_n": nominal,
+            "meshes": meshes,
+            "load_sharing_factor": lsf,
+            "load_sharing_factor_peak": lsf_peak,
+            "dynamic_factor_sun_planet": dyn_factor(0..n),
+            "dynamic_factor_ring_planet": dyn_factor(n..2 * n),
+            "rotating_frame": "carrier frame without centripetal and gyroscopic terms",
+            "periods_to_steady_state": r.periods_to_steady,
+            "periodicity": r.periodicity,
+            "steps": r.steps,
+        },
+        "warnings": d.study.warnings,
+    });
+    let mut a = Artifacts {
+        headline: format!(
+            "planetary dynamics, {n} planets at {} Hz mesh frequency: mean sun-planet mesh force {} N (nominal {} N), dynamic factor {}, largest load sharing factor {}",
+            shown(d.model.mesh_frequency_hz),
+            shown(mean[..n].iter().sum::<f64>() / n as f64),
+            shown(nominal),
+            shown(dyn_factor(0..n)),
+            shown(lsf_peak.iter().fold(0.0, |a: f64, b| a.max(*b))),
+        ),
+        summary: v,
+        ..Default::default()
+    };
+    a.table("mesh_forces.csv", forces_table(r, n));
+    a.table("motions.csv", motions_table(r, n));
+    a
+}
+
+/// `time_s`, then `sun_planet_N_force_n` and `ring_planet_N_force_n`.
+fn forces_table(r: &PlanetaryResponse, n: usize) -> Table {
+    let mut t = Table::new().col("time_s", r.times_s.clone());
+    for j in 0..2 * n {
+        let name = if j < n {
+            format!("sun_planet_{}_force_n", j + 1)
+        } else {
+            format!("ring_planet_{}_force_n", j - n + 1)
+        };
+        t = t.col(&name, r.mesh_forces_n.iter().map(|f| f[j]).collect());
+    }
+    t
+}
+
+/// `time_s`, then every coordinate in metres: carrier, ring, sun x, y, u, then each
+/// planet's radial, tangential and u.
+fn motions_table(r: &PlanetaryResponse, n: usize) -> Table {
+    let mut t = Table::new().col("time_s", r.times_s.clone());
+    let mut names = Vec::new();
+    for m in ["carrier", "ring", "sun"] {
+        for c in ["x", "y", "u"] {
+            names.push(format!("{m}_{c}_m"));
+        }
+    }
+    for p in 1..=n {
+        for c in ["radial", "tangential", "u"] {
+            names.push(format!("planet_{p}_{c}_m"));
+        }
+    }
+    for (j, name) in names.iter().enumerate() {
+        t = t.col(name, r.displacements_m.iter().map(|q| q[j]).collect());
+    }
+    t
+}

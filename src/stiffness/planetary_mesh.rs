@@ -1,0 +1,115 @@
+//! The time-varying stiffness of every mesh of a planetary set in the carrier's frame:
+//! each sun-planet mesh k_sn(t) and ring-planet mesh k_rn(t) from the potential-energy
+//! tables (`mesh::MeshStiffness` for the external sun-planet pair, `internal` for the
+//! ring-planet pair), shifted by the relative mesh phases of Parker & Lin (2004, "Mesh
+//! phasing relationships in planetary and epicyclic gears", J. Mech. Des. 126, 365),
+//! docs/MODEL.md section 12.4:
+//!   k_sn(t) = k_s(t - gamma_sn T_m),   k_rn(t) = k_r(t - gamma_rn T_m - gamma_rs T_m),
+//! with T_m the mesh period, gamma_sn = frac(z_s psi_n / 2 pi), gamma_rn = frac(-z_r
+//! psi_n / 2 pi) and gamma_rs the ring-to-sun phase of one planet (`geometry::planetary`).
+//!
+//! Time is counted in mesh cycles c = f_m t (f_m the mesh frequency, the same for every
+//! mesh of the set). The reference event c = 0 is planet 1's sun mesh at its pitch point:
+//! a pair of the sun mesh entered contact (a_s = (rho_pitch - rho_start) / p_b) cycles
+//! earlier, so the sun table's phase (sun rotation relative to the carrier since a pair
+//! entered contact) is 2 pi / z_s (c - gamma_sn + a_s); the ring table's (planet rotation
+//! relative to the carrier since a pair entered) 2 pi / z_p (c - gamma_rn - gamma_rs + a_r).
+
+use super::internal::InternalMeshStiffness;
+use super::mesh::MeshStiffness;
+use crate::geometry::planetary::PlanetarySet;
+use std::f64::consts::PI;
+
+/// Points of the ring pair's stiffness table along its path of contact: k_pair is smooth
+/// there (its curvature over the path is a few per cent of its value), so linear
+/// interpolation on 256 intervals errs by ~1e-6 relative, far below the method's own error.
+const RING_TABLE_POINTS: usize = 257;
+
+/// Every mesh's stiffness over time in the carrier frame (see module docs).
+#[derive(Debug, Clone)]
+pub struct PlanetaryMeshes {
+    sun: MeshStiffness,
+    /// k_pair of the ring mesh at RING_TABLE_POINTS equally spaced rho1 (planet side), N/m.
+    ring_pair_n_per_m: Vec<f64>,
+    ring_rho_start_m: f64,
+    ring_rho_end_m: f64,
+    ring_base_pitch_m: f64,
+    ring_mean_n_per_m: f64,
+    /// Phase offsets (mesh cycles) added to c for each planet's sun and ring mesh.
+    sun_offset: Vec<f64>,
+    ring_offset: Vec<f64>,
+    teeth_sun: f64,
+}
+
+impl PlanetaryMeshes {
+    /// The meshes of `set` from its sun-planet table and ring-planet model.
+    pub fn new(set: &PlanetarySet, sun: &MeshStiffness, ring: &InternalMeshStiffness) -> Self {
+        let rp = &set.ring_planet;
+        let (r0, r1) = (rp.rho_start_m, rp.rho_end_m);
+        let n = RING_TABLE_POINTS - 1;
+        let ring_pair_n_per_m = (0..=n)
+            .map(|i| ring.pair_stiffness_n_per_m(r0 + (r1 - r0) * i as f64 / n as f64))
+            .collect();
+        let sp = &set.sun_planet;
+        let a_s = (sp.rho_pitch_m - sp.rho_start_m) / sp.base_pitch_m;
+        let a_r = (rp.rho_pitch_m - rp.rho_start_m) / rp.base_pitch_m;
+        let gamma_rs = set.ring_sun_phase();
+        Self {
+            sun: sun.clone(),
+            ring_pair_n_per_m,
+            ring_rho_start_m: r0,
+            ring_rho_end_m: r1,
+            ring_base_pitch_m: rp.base_pitch_m,
+            ring_mean_n_per_m: ring.mean_stiffness_n_per_m(),
+            sun_offset: set.sun_planet_phases().iter().map(|g| a_s - g).collect(),
+            ring_offset: set
+                .ring_planet_phases()
+                .iter()
+                .map(|g| a_r - g - gamma_rs)
+                .collect(),
+            teeth_sun: set.teeth_sun() as f64,
+        }
+    }
+
+    /// Number of planets.
+    pub fn planets(&self) -> usize {
+        self.sun_offset.len()
+    }
+
+    /// Mean stiffness of the sun-planet and the ring-planet mesh over a mesh period, N/m.
+    pub fn mean_n_per_m(&self) -> [f64; 2] {
+        [self.sun.mean_stiffness_n_per_m(), self.ring_mean_n_per_m]
+    }
+
+    /// k_sn at `cycles` mesh cycles since the reference event, N/m.
+    pub fn sun_n_per_m(&self, planet: usize, cycles: f64) -> f64 {
+        let c = cycles + self.sun_offset[planet];
+        self.sun
+            .total_stiffness_n_per_m(2.0 * PI / self.teeth_sun * (c - c.floor()))
+    }
+
+    /// k_rn at `cycles` mesh cycles since the reference event, N/m: the ring pairs in
+    /// contact (one base pitch apart on the path) in parallel.
+    pub fn ring_n_per_m(&self, planet: usize, cycles: f64) -> f64 {
+        let c = cycles + self.ring_offset[planet];
+        let pb = self.ring_base_pitch_m;
+        let mut rho = self.ring_rho_start_m + pb * (c - c.floor());
+        let mut k = 0.0;
+        while rho <= self.ring_rho_end_m + 1e-15 {
+            k += self.ring_pair_at(rho);
+            rho += pb;
+        }
+        k
+    }
+
+    /// The ring pair's stiffness at rho1 (m), linear in the table.
+    fn ring_pair_at(&self, rho_m: f64) -> f64 {
+        let n = (RING_TABLE_POINTS - 1) as f64;
+        let x = ((rho_m - self.ring_rho_start_m) / (self.ring_rho_end_m - self.ring_rho_start_m)
+            * n)
+            .clamp(0.0, n);
+        let i = (x as usize).min(RING_TABLE_POINTS - 2);
+        let t = x - i as f64;
+        self.ring_pair_n_per_m[i] * (1.0 - t) + self.ring_pair_n_per_m[i + 1] * t
+    }
+}
