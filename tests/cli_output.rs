@@ -46,11 +46,12 @@ fn the_manifest_lists_every_output_with_its_checksum() {
     let m: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("manifest.json")).unwrap()).unwrap();
     let files = m["files"].as_array().unwrap();
-    // Every file of the folder but the manifest itself, and nothing else.
+    // Every file of the folder but the manifest itself and the folder's own hidden state
+    // and lock (listed as `state_files` when a run keeps any), and nothing else.
     let mut on_disk: Vec<String> = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n != "manifest.json")
+        .filter(|n| n != "manifest.json" && !n.starts_with('.'))
         .collect();
     on_disk.sort();
     let mut listed: Vec<String> = files
