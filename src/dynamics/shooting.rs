@@ -8,7 +8,7 @@
 //! monodromy of the time-invariant average of the linear model, exp(A_mean T), A_mean
 //! the state matrix at the mean loaded mesh stiffness without friction
 //! ([`GearSystem::mean_state_matrix_at`], [`super::modal::mean_mesh_stiffnesses`]: with
-//! corner contact the corners the load closes count, 6.8 % above the table mean on the
+//! corner contact the corners the load closes count, 6.3 % above the table mean on the
 //! paper's case, and a warm start after a wear update then converges as fast as on the
 //! nominal path). Its slow eigenvalues (the overdamped bearing and
 //! coupling modes, ~ -1250 1/s, and the damped mesh pole) are what makes plain period-by-

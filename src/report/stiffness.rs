@@ -114,6 +114,9 @@ pub fn stiffness_table(model: &Model) -> (Table, serde_json::Value) {
         v["mesh_stiffness"]["loaded_min_n_per_m"] = json!(lo);
         v["mesh_stiffness"]["loaded_max_n_per_m"] = json!(hi);
         v["corner_load_share_max"] = json!(range(&cols[13]).1);
+        // The mean the modes and the period search's start take (docs/MODEL.md 4.2).
+        v["mesh_stiffness"]["loaded_mean_n_per_m"] =
+            json!(crate::dynamics::quasi_static::loaded_mean_stiffnesses(&sys)[0]);
     }
     (t, v)
 }
