@@ -5,9 +5,8 @@
 use super::observer::{keep_going, Observer};
 use super::wear_runs::{run_modes, stops};
 use super::{budget, build_model, publish, Job, JobError, Outcome};
-use crate::config::case::{ContactPathModel, LoadSharingModel};
+use crate::config::paper_case::{other_contact_path, runs_contact_twin};
 use crate::config::Case;
-use crate::report::case::is_paper_case;
 use crate::report::figure_output::FigureRequest;
 use crate::report::paper::run_artifacts;
 use crate::store::RunMetadata;
@@ -89,14 +88,11 @@ impl Job for RunJob {
 /// the case (Pedrero's law given explicitly, which the extended contact refuses), or
 /// where its study fails (a warning says so; the case's own results stand).
 fn contact_twin(case: &Case, observer: &dyn Observer) -> Option<(Model, PaperStudy)> {
-    if !is_paper_case(case) || case.contact.load_sharing == LoadSharingModel::Pedrero {
+    if !runs_contact_twin(case) {
         return None;
     }
     let mut twin = case.clone();
-    twin.contact.path = match case.contact.path {
-        ContactPathModel::Extended => ContactPathModel::Nominal,
-        ContactPathModel::Nominal => ContactPathModel::Extended,
-    };
+    twin.contact.path = other_contact_path(case.contact.path);
     let name = serde_json::to_value(twin.contact.path).unwrap_or_default();
     observer.note(&format!(
         "the paper's case again with contact.path = {name}, for the comparison's other column"

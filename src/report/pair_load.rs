@@ -43,7 +43,7 @@ pub fn pair_load_curve(model: &Model, contact: &ContactPath, sys: &GearSystem) -
     for i in 0..PHASES {
         let phase = model.pair.mesh_angle_rad() * i as f64 / PHASES as f64;
         let eq = equilibrium(sys, 0, phase);
-        if !(eq.force_n > 0.0) {
+        if eq.force_n.is_nan() || eq.force_n <= 0.0 {
             continue;
         }
         let places = model

@@ -49,6 +49,7 @@ use super::evaluation::{
     SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
 };
 use crate::config::case::Case;
+use crate::config::paper_case::runs_contact_twin;
 use crate::geometry::GearPair;
 use crate::study::sweep::SweepRun;
 use crate::study::wear_loop::WearMode;
@@ -134,6 +135,9 @@ impl Work {
                 0.0,
                 2.0,
             ),
+            // The paper's case runs its study again under the other contact model for the
+            // comparison (`config::paper_case::runs_contact_twin`), after the first.
+            Job::Run if runs_contact_twin(case) => (2.0, 2.0, 6.0, 5.0),
             Job::Run => (1.0, 1.0, 3.0, 5.0),
             Job::SweepCase(SweepRun::Wear) => (1.0, 1.0, 0.0, 2.0),
         };
@@ -440,11 +444,12 @@ mod tests {
                 .unwrap()
                 .seconds
         };
-        // Run: 1 wear study of U updates plus 3 wear states; ten bins: 10 U + 3, and the
-        // life runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
+        // Run: 1 wear study of U updates plus 3 wear states, twice for the paper's case (its
+        // contact twin); ten bins (no longer the paper's case): 10 U + 3, and the life
+        // runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
         let u = one.wear_updates_dynamic;
         let ratio = dyn_s(&e) / dyn_s(&one);
-        let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (u + 3.0);
+        let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (2.0 * (u + 3.0));
         assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
         // A long spectrum over the budget names the bins.
         let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
@@ -457,6 +462,41 @@ mod tests {
             .check(&Budget::DEFAULT)
             .unwrap_err();
         assert!(msg.contains("load_spectrum.bins"), "{msg}");
+    }
+
+    #[test]
+    fn the_paper_case_s_run_counts_its_contact_twin() {
+        // `gearwear run` of the paper's case runs the study a second time under the other
+        // contact model; with Pedrero's law given (which the corner contact refuses) it
+        // does not, and nothing else in the estimate depends on the sharing law: the
+        // dynamic evaluations halve exactly.
+        let seconds = |e: &Estimate| {
+            e.terms
+                .iter()
+                .find(|t| t.what == "the dynamic evaluations")
+                .unwrap()
+                .seconds
+        };
+        let twin = estimate(&case(&[]), Job::Run);
+        let alone = estimate(
+            &case(&["contact.path=nominal", "contact.load_sharing=pedrero"]),
+            Job::Run,
+        );
+        let ratio = seconds(&twin) / seconds(&alone);
+        assert!((ratio - 2.0).abs() < 1e-12, "{ratio}");
+        // `wear` runs no twin.
+        let w = Job::Wear {
+            dynamic: true,
+            quasi_static: true,
+        };
+        let (a, b) = (
+            estimate(&case(&[]), w),
+            estimate(
+                &case(&["contact.path=nominal", "contact.load_sharing=pedrero"]),
+                w,
+            ),
+        );
+        assert_eq!(seconds(&a), seconds(&b));
     }
 
     #[test]
