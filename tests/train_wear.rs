@@ -3,7 +3,7 @@
 //! counts of the tooth numbers, and bad input.
 
 mod common;
-use common::{ok, read_csv, rejected};
+use common::{read_csv, rejected};
 use std::path::{Path, PathBuf};
 
 fn write(dir: &Path, name: &str, text: &str) -> String {
@@ -14,16 +14,7 @@ fn write(dir: &Path, name: &str, text: &str) -> String {
 
 /// `gearwear wear` of `config` (None: the paper's case) with `sets`, into `dir/name`.
 fn wear(dir: &Path, name: &str, config: Option<&str>, mode: &str, sets: &[&str]) -> PathBuf {
-    let out = dir.join(name);
-    let mut a = vec!["-q", "wear", "--mode", mode, "--out", out.to_str().unwrap()];
-    if let Some(c) = config {
-        a.extend(["--config", c]);
-    }
-    for s in sets {
-        a.extend(["--set", s]);
-    }
-    ok(&a);
-    out
+    common::run_into(dir, name, &["wear", "--mode", mode], config, sets)
 }
 
 /// A column of a CSV as numbers.

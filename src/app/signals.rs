@@ -3,7 +3,7 @@
 //! (docs/SIGNALS.md).
 
 use super::observer::Observer;
-use super::{budget, build_model, publish, Job, JobError, Outcome};
+use super::{budget, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
@@ -43,6 +43,18 @@ pub fn transfer_path_of(
     }
 }
 
+/// What the signals study says of a gear train with a transient record (a ramp or a
+/// load fluctuation): only the steady record runs on a train so far.
+const TRAIN_TRANSIENT: &str = "this case is a gear train ([[stage]] tables) with a transient record (`signals.ramp_end_speed_hz` or `signals.torque_fluctuation_rms_nm` > 0): on a train, `gearwear signals` records the steady state only; remove those keys, or take a single pair ([gear], without [[stage]])";
+
+/// Refuse a transient record of a gear train (before the budget check).
+fn refuse_train_transient(case: &Case) -> Result<(), JobError> {
+    if case.stage.is_empty() || !crate::study::transient_signals::is_transient(case) {
+        return Ok(());
+    }
+    Err(JobError::input(Problem::new(TRAIN_TRANSIENT.to_owned())))
+}
+
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct SignalsJob {
@@ -73,16 +85,28 @@ impl Job for SignalsJob {
             .map_or(crate::study::budget::signals::DEFAULT_CHANNELS, |p| {
                 p.sensors.len()
             });
-        super::refuse_train(&self.case)?;
+        refuse_train_transient(&self.case)?;
+        // The estimate is the dynamics one (a train's counted by its cost factor,
+        // `budget::train_factor`) with the record added.
         budget::check_estimate(
             &estimate_signals(&self.case, channels),
             self.budget.as_ref(),
         )?;
-        let model = build_model(&self.case, observer)?;
+        let model = build_train_model(&self.case, observer)?;
+        // The chain is checked against the sensor stage's pair at its own pinion speed
+        // (the stage's case; the single pair's case itself).
+        let chain_case = model.train.as_ref().map_or(&self.case, |t| {
+            &t.stages[self
+                .case
+                .signals
+                .sensor_stage_index()
+                .min(t.stages.len() - 1)]
+            .case
+        });
         let setup = chain_of(
-            &self.case,
+            chain_case,
             path,
-            self.case.signals.max_input_speed_hz(&self.case),
+            chain_case.signals.max_input_speed_hz(chain_case),
         )
         .map_err(|m| JobError::Input(m.into_iter().map(Problem::new).collect()))?;
         for w in &setup.warnings {

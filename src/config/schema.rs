@@ -372,6 +372,8 @@ pub const KEYS: &[KeySpec] = &[
       "As `signals.noise_seed`."),
     k("signals.ramp_end_speed_hz", "Hz", Num(Range::closed(1e-3, 1000.0)), "Run-up or coast-down: the input speed at the end of the record, rising or falling linearly from `operating.input_speed_hz` at its start (a transient simulation); omit for steady speed.",
       "As `operating.input_speed_hz`."),
+    k("signals.sensor_stage", "-", Int(1, 100), "Gear trains: the stage (1 to the number of `[[stage]]` tables) whose pinion and gear bearings the transfer path's four inputs are, and whose pinion (`\"pinion\"`) and gear (`\"gear\"`) shafts `signals.tachometer_shaft` and the indicators refer to; omit for stage 1 (a single pair is stage 1).",
+      "One of the case's stages (checked against their number)."),
     k("teeth.pitch_error_pinion_um", "µm", NumArray(TOOTH_ERROR), "Position (pitch) error of each pinion tooth, z1 values: how far its loaded flank stands ahead of its ideal position towards the gear (positive: earlier contact), an arc on the reference circle. The single pitch deviations of ISO 1328-1 are the differences of neighbours. Absent: perfect spacing (docs/MODEL.md, section 9).",
       "A millimetre either way is far beyond the coarsest ISO 1328-1 class for any gear the model takes."),
     k("teeth.pitch_error_gear_um", "µm", NumArray(TOOTH_ERROR), "Position (pitch) error of each gear tooth, z2 values (positive towards the pinion).",

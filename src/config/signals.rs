@@ -129,6 +129,11 @@ pub struct SignalsSection {
     /// `operating.input_speed_hz` at its start); absent: steady speed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ramp_end_speed_hz: Option<f64>,
+    /// The stage (1..N, of a gear train's `[[stage]]` tables) whose bearings the housing's
+    /// transfer path takes in, and whose shafts the tachometer and the indicators refer
+    /// to; absent: stage 1 (a single pair is stage 1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sensor_stage: Option<i64>,
 }
 
 impl Default for SignalsSection {
@@ -152,6 +157,7 @@ impl Default for SignalsSection {
             torque_fluctuation_bandwidth_hz: 20.0,
             torque_fluctuation_seed: 0,
             ramp_end_speed_hz: None,
+            sensor_stage: None,
         }
     }
 }
@@ -188,10 +194,23 @@ pub(crate) fn relation_problems(case: &super::Case) -> Vec<String> {
             "`signals.record_length_unit` = \"revolutions\" is invalid with `signals.ramp_end_speed_hz`: a ramp's record is given in seconds (\"s\")".into(),
         );
     }
+    if let Some(k) = s.sensor_stage {
+        let stages = case.stage.len().max(1);
+        if k > stages as i64 {
+            out.push(format!(
+                "`signals.sensor_stage` = {k} is invalid: expected 1 to {stages} (the case's stages)"
+            ));
+        }
+    }
     out
 }
 
 impl SignalsSection {
+    /// The sensor stage, 0-based (`sensor_stage` - 1; stage 1 when absent).
+    pub fn sensor_stage_index(&self) -> usize {
+        self.sensor_stage.map_or(0, |k| (k.max(1) - 1) as usize)
+    }
+
     /// The highest input speed a record of `case` sees, Hz (a ramp's end or the
     /// operating speed).
     pub fn max_input_speed_hz(&self, case: &super::Case) -> f64 {

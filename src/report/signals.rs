@@ -103,6 +103,10 @@ pub fn signals_artifacts(
             "record.csv": "the same samples as CSV, with time_s",
         },
     });
+    if !rec.train_meshes.is_empty() {
+        // A train's every mesh, stage order: where its lines lie in the spectrum.
+        a.summary["kinematics"]["meshes"] = rec.train_meshes.iter().map(kinematics_json).collect();
+    }
     if let Some(forces) = &rec.bearing_forces {
         a.table(
             "bearing_forces.csv",

@@ -6,6 +6,8 @@
 //! y_p (pinion bearing) and x_g, y_g (gear bearing), the reaction of the restoring force
 //! -k_b q - c_b dq/dt on the gear body.
 
+use crate::dynamics::assembly::train::{gear_body, pinion_body};
+use crate::dynamics::assembly::{Assembly, Dof};
 use crate::dynamics::fourier::HermitePeriod;
 use crate::dynamics::model::dof;
 use crate::dynamics::params::DynamicParams;
@@ -65,8 +67,62 @@ pub(crate) fn response_period_s(r: &DynamicResponse) -> f64 {
     r.mesh_period_s * r.excitation_periods.max(1) as f64
 }
 
-/// The bearing forces over the first period of the response's recorded window.
+/// One bearing-force input: the response coordinate it reads, the bearing's stiffness
+/// k_b (N/m) and damping c_b (N s/m) in that direction.
+pub(crate) type Spring = (usize, f64, f64);
+
+/// The bearing forces over the first period of the response's recorded window: the
+/// pinion's and the gear's bearings of the single pair (paper eq. 1).
 pub(crate) fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> BearingForces {
+    let l = &params.lumped;
+    let (kp, cp) = (
+        l.bearing_stiffness_pinion_n_per_m,
+        l.bearing_damping_pinion_n_s_per_m,
+    );
+    let (kg, cg) = (
+        l.bearing_stiffness_gear_n_per_m,
+        l.bearing_damping_gear_n_s_per_m,
+    );
+    let spring = [
+        (dof::XP, kp, cp),
+        (dof::YP, kp, cp),
+        (dof::XG, kg, cg),
+        (dof::YG, kg, cg),
+    ];
+    forces_of(r, spring)
+}
+
+/// The bearing forces of stage `stage` (0-based) of an assembled train over the first
+/// period of the response's recorded window, `INPUTS` order: its pinion's bearing in x
+/// and y, its gear's in x and y (each body's own bearing, `assembly::Bearing`: +k_b q +
+/// c_b dq/dt on the housing, as in paper eq. 1). None when a body of the stage has no
+/// lateral coordinates or no bearing.
+pub(crate) fn stage_bearing_forces(
+    r: &DynamicResponse,
+    asm: &Assembly,
+    stage: usize,
+) -> Option<BearingForces> {
+    let spring = |body: usize, d: Dof, j: usize| -> Option<Spring> {
+        let b = asm.elements.bearings.iter().find(|b| b.body == body)?;
+        Some((
+            asm.index(body, d)?,
+            b.stiffness_n_per_m[j],
+            b.damping_n_s_per_m[j],
+        ))
+    };
+    let (p, g) = (pinion_body(stage), gear_body(stage));
+    let spring = [
+        spring(p, Dof::X, 0)?,
+        spring(p, Dof::Y, 1)?,
+        spring(g, Dof::X, 0)?,
+        spring(g, Dof::Y, 1)?,
+    ];
+    Some(forces_of(r, spring))
+}
+
+/// The forces +k_b q + c_b dq/dt of the four `spring` inputs over the first period of
+/// the response's recorded window, with their rates (see [`BearingForces`]).
+fn forces_of(r: &DynamicResponse, spring: [Spring; 4]) -> BearingForces {
     let s = &r.signals;
     let period = response_period_s(r);
     let t0 = s.time_s.first().copied().unwrap_or(0.0);
@@ -78,29 +134,6 @@ pub(crate) fn bearing_forces(r: &DynamicResponse, params: &DynamicParams) -> Bea
     } else {
         s.time_s.len()
     };
-    let l = &params.lumped;
-    let spring = [
-        (
-            dof::XP,
-            l.bearing_stiffness_pinion_n_per_m,
-            l.bearing_damping_pinion_n_s_per_m,
-        ),
-        (
-            dof::YP,
-            l.bearing_stiffness_pinion_n_per_m,
-            l.bearing_damping_pinion_n_s_per_m,
-        ),
-        (
-            dof::XG,
-            l.bearing_stiffness_gear_n_per_m,
-            l.bearing_damping_gear_n_s_per_m,
-        ),
-        (
-            dof::YG,
-            l.bearing_stiffness_gear_n_per_m,
-            l.bearing_damping_gear_n_s_per_m,
-        ),
-    ];
     let force_n = spring.map(|(i, k, c)| {
         (0..n)
             .map(|m| k * s.displacement[m][i] + c * s.velocity[m][i])

@@ -35,6 +35,29 @@ pub fn ok(args: &[&str]) -> String {
     err
 }
 
+/// `gearwear -q command` (a command and its options) of `config` (None: the paper's
+/// case) with `sets` (`--set`), into `dir/name`, which it returns; requires success.
+pub fn run_into(
+    dir: &Path,
+    name: &str,
+    command: &[&str],
+    config: Option<&str>,
+    sets: &[&str],
+) -> std::path::PathBuf {
+    let out = dir.join(name);
+    let mut a = vec!["-q"];
+    a.extend(command);
+    a.extend(["--out", out.to_str().unwrap()]);
+    if let Some(c) = config {
+        a.extend(["--config", c]);
+    }
+    for s in sets {
+        a.extend(["--set", s]);
+    }
+    ok(&a);
+    out
+}
+
 /// `gearwear sweep` with the cheap settings, `extra` arguments and `--out out`.
 pub fn sweep(extra: &[&str], out: &Path) -> String {
     let mut a = vec!["sweep"];
