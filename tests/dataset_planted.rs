@@ -107,3 +107,53 @@ fn planted_names_are_refused_with_exit_2_before_anything_changes() {
         );
     }
 }
+
+#[test]
+fn planted_names_at_a_merge_s_targets_are_refused_with_exit_2_before_anything_changes() {
+    // The merge copies every shard's records into its folder: a link to a user's file at
+    // a record's name there is refused before the folder is claimed (issue 33: a merge
+    // refused it only when it came to write that name, exit code 1, its folder marked).
+    let dir = tempfile::tempdir().unwrap();
+    let design = dir.path().join("d.toml");
+    std::fs::write(&design, DESIGN).unwrap();
+    let design = design.to_str().unwrap();
+    let shards = dir.path().join("shards");
+    let shards_s = shards.to_str().unwrap();
+    for s in ["1/2", "2/2"] {
+        ok(&[
+            "dataset", "--design", design, "--out", shards_s, "--shard", s, "-q",
+        ]);
+    }
+    let elsewhere = dir.path().join("elsewhere.txt");
+    std::fs::write(&elsewhere, "a user's file").unwrap();
+    let out = dir.path().join("merged");
+    std::fs::create_dir_all(out.join("signals")).unwrap();
+    let name = "signals/0000001.parquet";
+    std::os::unix::fs::symlink(&elsewhere, out.join(name)).unwrap();
+    let before = listing(&out);
+    let r = gearwear(&[
+        "dataset-merge",
+        shards_s,
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+    let e = stderr(&r);
+    assert_eq!(r.status.code(), Some(2), "{e}");
+    assert!(e.contains(&out.join(name).display().to_string()), "{e}");
+    assert!(e.contains("symbolic link"), "{e}");
+    assert_eq!(listing(&out), before, "the merge's folder changed");
+    assert_eq!(
+        std::fs::read_to_string(&elsewhere).unwrap(),
+        "a user's file"
+    );
+    // Without the planted link the same merge goes through.
+    std::fs::remove_file(out.join(name)).unwrap();
+    ok(&[
+        "dataset-merge",
+        shards_s,
+        "--out",
+        out.to_str().unwrap(),
+        "-q",
+    ]);
+}

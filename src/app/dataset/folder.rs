@@ -528,6 +528,31 @@ pub fn copy_dataset(
     Ok((n, skipped))
 }
 
+/// The names [`copy_dataset`] would write from `from` into another folder (`key`: the
+/// dataset's): each record's signal, CSV twin (where `from` has one) and sidecar, each
+/// trajectory and the description; none when `from` is the target `to` itself. For
+/// [`refused_names`] before a merge opens its folder.
+pub fn copied_names(from: &Path, to: &Path, key: &str) -> Vec<String> {
+    if same_dir(from, to) {
+        return Vec::new();
+    }
+    let mut names = Vec::new();
+    for s in sidecars(from).into_iter().filter(|s| s.dataset_key == key) {
+        let id = s.labels.record_id;
+        names.push(s.labels.file.clone());
+        if is_file_in(from, &csv_rel(id)) {
+            names.push(csv_rel(id));
+        }
+        names.push(sidecar_rel(id));
+    }
+    let own = trajectories(from)
+        .into_iter()
+        .filter(|t| t.dataset_key == key);
+    names.extend(own.map(|t| trajectory_rel(&t.condition)));
+    names.push(DATASET_REL.to_owned());
+    names
+}
+
 fn same_dir(a: &Path, b: &Path) -> bool {
     let canon =
         |p: &Path| -> PathBuf { std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf()) };

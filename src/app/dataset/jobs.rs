@@ -1,7 +1,7 @@
 //! The two dataset jobs: [`DatasetJob`] (a design to a folder of records) and
 //! [`DatasetMergeJob`] (shards joined), and where a design is read from.
 
-use super::folder::check_owner;
+use super::folder::{check_owner, copied_names, refused_names};
 use super::merge::{check_trajectories, merge_datasets, shared_key};
 use super::plan::{check_dataset, dataset_key, trajectory_problems};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
@@ -287,6 +287,16 @@ impl Job for DatasetMergeJob {
         let shared = shared_key(&inputs)?;
         check_trajectories(&inputs, &shared.0)?;
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
+        // Links, FIFOs and foreign files at the names the merge copies to: refused before
+        // the folder is opened, as a dataset run refuses them (issue 33).
+        let prev = OutputDir::previous_state_of(&self.out, None);
+        let names = inputs
+            .iter()
+            .flat_map(|d| copied_names(d, &self.out, &shared.0));
+        let refused = refused_names(&self.out, names, prev.as_ref());
+        if !refused.is_empty() {
+            return Err(DatasetError::Input(refused).into());
+        }
         let out = publish::open(&self.out, None, self.name(), self.replace)?;
         let o = merge_datasets(&inputs, &self.out, out, shared, figures)?;
         observer.note(&written(&o, &self.out, "dataset-merge", false));
