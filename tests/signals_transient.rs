@@ -11,10 +11,18 @@ use gearwear::wear::WearState;
 
 #[test]
 fn a_transient_at_constant_speed_reproduces_the_steady_state_record() {
-    // The paper's contact model. With corner contact the two records differed by 2.7e-3
-    // of the RMS when this was written, beyond the 2e-3 below: open (issue 32).
+    // Both contact models (corner contact is the default).
+    for path in [
+        gearwear::config::case::ContactPathModel::Extended,
+        gearwear::config::case::ContactPathModel::Nominal,
+    ] {
+        constant_speed_transient_matches_steady(path);
+    }
+}
+
+fn constant_speed_transient_matches_steady(path: gearwear::config::case::ContactPathModel) {
     let mut case = Case::default();
-    case.contact.path = gearwear::config::case::ContactPathModel::Nominal;
+    case.contact.path = path;
     case.signals.record_length = 0.2;
     let model = Model::from_case(&case).unwrap();
     let setup = chain_of(&case, None, 30.0).unwrap();
@@ -30,10 +38,14 @@ fn a_transient_at_constant_speed_reproduces_the_steady_state_record() {
         let rms = |v: &[f64]| (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
         let diff: Vec<f64> = a.1.iter().zip(&b.1).map(|(x, y)| x - y).collect();
         eprintln!("{}: rms {} diff {}", a.0, rms(&a.1), rms(&diff));
-        // The transient steps are chosen afresh, not the periodic orbit's replayed plan:
-        // local errors of 1e-5 of the state scales per step, in damper forces driven by
+        // The transient steps are chosen afresh, not the periodic orbit's replayed plan
+        // (at a fifth of the steady state's local error tolerance, for that reason):
+        // local errors of 2e-6 of the state scales per step, in damper forces driven by
         // velocities, and two grids (4 cells a sample, 8 cells a record sample): 2e-3.
-        assert!(rms(&diff) < 2e-3 * rms(&a.1));
+        // Against a reference at 1e-8 and 800 steps a period the steady record is within
+        // 2.6e-4 and the transient 1.1e-3 (corner contact; at the case's own 1e-5 the
+        // transient was 2.7e-3 off: this bound then fails).
+        assert!(rms(&diff) < 2e-3 * rms(&a.1), "{path:?}");
     }
     let d: Vec<f64> = steady
         .tachometer_v
