@@ -7,7 +7,7 @@
 //! - `build_4_planets`: `PlanetaryDynamics::from_case` (geometry, both meshes' tables,
 //!   the model);
 //! - `steady_state_4_planets`: one cold steady state (from the static equilibrium, 42
-//!   states, ~57 mesh periods to the 1e-6 periodicity and one recorded).
+//!   states, 4 mesh periods of quasi-Newton shooting to the 1e-6 periodicity and one recorded).
 
 use std::hint::black_box;
 use std::time::Duration;

@@ -79,6 +79,10 @@ fn mean_mesh_forces_are_the_static_torque_split_and_planets_share_equally() {
             assert!((f(l) - 1.0).abs() < 1e-4, "{set:?}: {l}");
         }
         assert!(f(&p["dynamic_factor_sun_planet"]) >= 1.0);
+        // The recorded period is a period: integrated from the search's last start, its
+        // end state equals its start within the case's steady-state tolerance (1e-6 of
+        // the state's scales, `numerics.steady_state_tolerance`).
+        assert!(f(&p["periodicity"]) < 1e-6, "{set:?}: {}", p["periodicity"]);
     }
 }
 

@@ -171,6 +171,21 @@ impl PlanetaryDynamic {
         k
     }
 
+    /// The state matrix of the time-invariant model (every mesh in contact at its mean
+    /// stiffness), [[0, I], [-M^-1 K_mean, -M^-1 C]], 1/s and 1/s^2: the linear model the
+    /// steady-state search starts its Jacobian from.
+    pub fn mean_state_matrix(&self) -> DMatrix<f64> {
+        let n = self.dofs();
+        let k = self.matrix(None, None, false);
+        let c = self.matrix(None, None, true);
+        DMatrix::from_fn(2 * n, 2 * n, |r, col| match (r < n, col < n) {
+            (true, true) => 0.0,
+            (true, false) => f64::from(u8::from(col - n == r)),
+            (false, true) => -k[(r - n, col)] / self.mass[r - n],
+            (false, false) => -c[(r - n, col - n)] / self.mass[r - n],
+        })
+    }
+
     /// The static deflection under `force_n` with every mesh at its mean stiffness, m;
     /// `None` when a member has no path to ground.
     pub fn static_deflection(&self) -> Option<DVector<f64>> {

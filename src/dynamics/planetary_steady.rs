@@ -4,18 +4,21 @@
 //! local error control as `period` (step factor 0.9 err^(-1/3), clamped to [0.2, 5]).
 //!
 //! In the carrier frame every mesh's stiffness repeats with the mesh period T_m (the
-//! phases only shift it), so the steady state is T_m-periodic. It is found by
-//! integrating from the static equilibrium at the mean stiffness, period after period,
-//! until the state changes over one period by less than the case's
-//! `numerics.steady_state_tolerance` relative to the state's scales (the largest static
-//! deflection for displacements, times 2 pi f_m for velocities); the shooting of
-//! `shooting.rs` is written for the pair and train models' reduced coordinates and is
-//! not used here. One more period is then recorded at `numerics.steps_per_mesh_period`
-//! equally spaced times (each reached by error-controlled steps).
+//! phases only shift it), so the steady state is T_m-periodic. It is the fixed point of
+//! the one-period map, found from the static equilibrium at the mean stiffness by the
+//! quasi-Newton shooting of `shooting.rs` on every state (the members are grounded: no
+//! rigid rotation to remove), its Jacobian started from the monodromy of the
+//! time-invariant model ([`PlanetaryDynamic::mean_state_matrix`]), until the estimated
+//! distance to the fixed point is below the case's `numerics.steady_state_tolerance`
+//! relative to the state's scales (the largest static deflection for displacements,
+//! times 2 pi f_m for velocities). One more period is then recorded at
+//! `numerics.steps_per_mesh_period` equally spaced times (each reached by
+//! error-controlled steps).
 
 use super::integrator::tableau::ESDIRK32;
 use super::integrator::{Sdirk, SdirkOptions, Vector};
 use super::planetary_dynamic::PlanetaryDynamic;
+use super::shooting::{state_matrix_exp, Shooting};
 use nalgebra::{DVector, Dyn};
 
 /// Integration and steady-state settings (from `[numerics]`).
@@ -105,26 +108,38 @@ pub fn solve_planetary_steady_state(
         h_max,
         samples: s.samples_per_period,
     };
-    let mut y = DVector::zeros(2 * n);
-    y.rows_mut(0, n).copy_from(&q0);
+    let mut z = DVector::zeros(2 * n);
+    z.rows_mut(0, n).copy_from(&q0);
+    let mut shooting = Shooting::from_monodromy(
+        &state_matrix_exp(&sys.mean_state_matrix(), period),
+        scale.clone(),
+    );
     let mut periods = 0;
+    // Every period starts at t = 0: the model depends on time through the mesh phase only,
+    // so the one-period map is the same function in every iteration (quasi-Newton on it,
+    // `shooting`, from the monodromy of the time-invariant model).
     loop {
-        let y_start = y.clone();
-        run.period(sys, periods as f64 * period, &mut y, None)?;
+        let mut y = z.clone();
+        run.period(sys, 0.0, &mut y, None)?;
         periods += 1;
-        let change = relative_change(&y_start, &y, &scale);
-        if change < s.steady_state_tolerance {
+        let (next, distance) = shooting.next(&z, &y);
+        z = next;
+        if distance < s.steady_state_tolerance {
             break;
         }
         if periods >= s.max_periods {
-            return Err(PlanetaryDynamicsError::NotSteady { periods, change });
+            return Err(PlanetaryDynamicsError::NotSteady {
+                periods,
+                change: distance,
+            });
         }
     }
+    let mut y = z;
     let y_start = y.clone();
     let mut samples = Vec::with_capacity(s.samples_per_period + 1);
-    run.period(sys, periods as f64 * period, &mut y, Some(&mut samples))?;
+    run.period(sys, 0.0, &mut y, Some(&mut samples))?;
     samples.push(y.as_slice().to_vec());
-    let t0 = periods as f64 * period;
+    let t0 = 0.0;
     let dt = period / s.samples_per_period as f64;
     let mut rec = PlanetaryResponse {
         times_s: (0..s.samples_per_period).map(|k| k as f64 * dt).collect(),

@@ -164,8 +164,15 @@ impl Shooting {
     pub fn new(sys: &GearSystem, red: &Reduction, period_s: f64, scales: &State) -> Self {
         let k = super::modal::mean_mesh_stiffnesses(sys);
         let m = state_matrix_exp(&sys.mean_state_matrix_at(&k), period_s);
-        let n = red.len();
-        let g = red.reduce_matrix(&m) - DMatrix::identity(n, n);
+        Self::from_monodromy(&red.reduce_matrix(&m), red.scales(scales))
+    }
+
+    /// Starts from the approximate monodromy `m` of the unknowns themselves (a model
+    /// whose every state is an unknown: no held coordinate, no rigid rotation), `scales`
+    /// their scales.
+    pub fn from_monodromy(m: &DMatrix<f64>, scales: DVector<f64>) -> Self {
+        let n = m.nrows();
+        let g = m - DMatrix::identity(n, n);
         // The damped averaged model has no eigenvalue 1 once the held coordinates and
         // the rigid rotation are removed; fall back to plain periods should it be
         // singular to working precision all the same.
@@ -180,7 +187,7 @@ impl Shooting {
             plain,
             failed: 0,
             radius: 1.0,
-            scales: red.scales(scales),
+            scales,
         }
     }
 

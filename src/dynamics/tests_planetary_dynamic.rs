@@ -107,3 +107,15 @@ fn analytic_jacobian_equals_finite_differences() {
     let scale = an.amax();
     assert!((fd - an).amax() < 1e-6 * scale);
 }
+
+#[test]
+fn mean_state_matrix_is_the_jacobian_with_every_mesh_compressed() {
+    // The steady-state search's linear model against the right-hand side's own
+    // linearisation: with constant stiffness and every mesh compressed (a loaded static
+    // state) the two are assemblies of one matrix, equal to rounding.
+    let p = lin_parker(4);
+    let (mut sys, y) = loaded(&p, 0.05);
+    let jac = sys.jacobian(0.3, &y).unwrap();
+    let mean = sys.mean_state_matrix();
+    assert!((jac - mean).amax() <= 1e-12 * sys.mean_state_matrix().amax());
+}
