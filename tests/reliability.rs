@@ -2,9 +2,10 @@
 //! with exit 2 naming the file, a killed run resumes to the same bytes, a second writer of
 //! a folder is refused, a link planted in the output folder is not followed.
 
+mod common;
+use common::kill_when;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::process::{Command, Output};
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_gearwear"))
@@ -188,25 +189,6 @@ fn a_quasi_static_checkpoint_copied_over_the_dynamic_one_is_refused() {
     let json = json.replace("quasi_static", "dynamic");
     std::fs::write(&ck, format!("{} {json}\n{rest}", sha(&json))).unwrap();
     refused(&out, "periodic end state");
-}
-
-/// Start `args`, kill it (SIGKILL) once `ready(out)` holds, then return.
-fn kill_when(args: &[String], ready: &dyn Fn() -> bool) {
-    let mut child = bin()
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let t0 = Instant::now();
-    while !ready() && t0.elapsed() < Duration::from_secs(60) {
-        if child.try_wait().unwrap().is_some() {
-            break; // finished before the kill: resume must still work
-        }
-        std::thread::sleep(Duration::from_millis(2));
-    }
-    let _ = child.kill();
-    let _ = child.wait();
 }
 
 /// The published files of a folder (per its manifest), as bytes.

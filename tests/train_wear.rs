@@ -221,8 +221,26 @@ fn bad_wear_keys_and_options_on_a_train_are_refused_naming_them() {
     ] {
         rejected(&["wear", "--config", &train, "--set", set], &[needle]);
     }
+    // Resuming from a folder that does not exist, or holds no train checkpoints
+    // (tests/train_wear_resume.rs resumes real ones).
     rejected(
         &["wear", "--config", &train, "--resume"],
-        &["--resume", "gear train"],
+        &["--resume", "does not exist"],
+    );
+    let empty = d.path().join("empty");
+    std::fs::create_dir(&empty).unwrap();
+    let o = common::gearwear(&[
+        "wear",
+        "--config",
+        &train,
+        "--resume",
+        "--out",
+        empty.to_str().unwrap(),
+    ]);
+    let e = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(
+        e.contains("no checkpoint") && e.contains("checkpoint_dynamic_stage1.jsonl"),
+        "{e}"
     );
 }

@@ -5,16 +5,16 @@
 use super::observer::{keep_going, Observer};
 use super::wear_runs::{mode_tasks, report_update, Runs};
 use super::{publish, JobError};
-use crate::duty::resume::{bin_runs, from_bin_runs};
+use crate::duty::resume::from_bin_runs;
 use crate::duty::wear::SpectrumRun;
 use crate::duty::SpectrumModel;
 use crate::io::OutputDir;
 use crate::remedy::{Arg, Problem, Remedy};
-use crate::store::checkpoint::{load_checkpoint_named, CheckpointLog};
+use crate::store::checkpoint::load_checkpoint_named;
+use crate::store::part_logs::{PartLogs, PartStarts};
 use crate::store::RunMetadata;
 use crate::study::wear_loop::WearMode;
 use std::path::Path;
-use std::sync::Mutex;
 
 /// File name of the checkpoint of bin `i` (0-based) of a mode's spectrum run.
 pub fn bin_checkpoint_name(mode: WearMode, i: usize) -> String {
@@ -93,54 +93,31 @@ fn starting_runs(
     Ok(starts)
 }
 
-/// One log per mode and bin, rewritten from the run it starts at (a resumed run's logs
-/// are cut back to the updates every bin holds).
-struct Logs {
-    logs: Vec<(WearMode, Mutex<Vec<CheckpointLog>>)>,
-}
-
-impl Logs {
-    fn open(
-        out: &mut OutputDir,
-        runs: &[SpectrumRun],
-        case_sha256: &str,
-    ) -> Result<Self, JobError> {
-        let mut logs = Vec::new();
-        for run in runs {
-            let mut per_bin = Vec::new();
-            for (i, b) in bin_runs(run).iter().enumerate() {
-                let name = bin_checkpoint_name(run.mode, i);
-                per_bin.push(CheckpointLog::create_named(out, &name, case_sha256, b)?);
-            }
-            if per_bin.is_empty() {
-                // A fresh run: the logs start with the first update.
-                for i in 0..run.shares.len() {
+/// One log per mode and bin, started from the run it starts at (a resumed run's logs are
+/// cut back to the updates every bin holds; a fresh run's start with the first update).
+fn open_logs(
+    out: &mut OutputDir,
+    runs: &[SpectrumRun],
+    case_sha256: &str,
+) -> Result<PartLogs, JobError> {
+    let starts: Vec<PartStarts> = runs
+        .iter()
+        .map(|run| {
+            let parts = (0..run.shares.len())
+                .map(|i| {
                     let name = bin_checkpoint_name(run.mode, i);
-                    let empty = crate::study::wear_loop::WearRun::new(run.mode);
-                    per_bin.push(CheckpointLog::create_named(
-                        out,
-                        &name,
-                        case_sha256,
-                        &empty,
-                    )?);
-                }
-            }
-            logs.push((run.mode, Mutex::new(per_bin)));
-        }
-        Ok(Self { logs })
-    }
-
-    fn record(&self, run: &SpectrumRun) -> anyhow::Result<()> {
-        if let Some((_, logs)) = self.logs.iter().find(|(m, _)| *m == run.mode) {
-            let mut logs = logs
-                .lock()
-                .map_err(|_| anyhow::anyhow!("checkpoint writer poisoned"))?;
-            for (log, b) in logs.iter_mut().zip(bin_runs(run)) {
-                log.append_new(&b)?;
-            }
-        }
-        Ok(())
-    }
+                    let start = if run.records.is_empty() {
+                        crate::study::wear_loop::WearRun::new(run.mode)
+                    } else {
+                        crate::duty::contribution::bin_run(run, i)
+                    };
+                    (name, start)
+                })
+                .collect();
+            (run.mode, parts)
+        })
+        .collect();
+    Ok(PartLogs::open(out, case_sha256, &starts)?)
 }
 
 /// As `app::wear_runs::run_modes` for a spectrum: the starting runs, the output folder with a
@@ -167,7 +144,7 @@ pub fn run_spectrum_job_modes<T>(
     let resume_from = dir.as_ref().filter(|_| resume);
     let starts = starting_runs(sm, modes, resume_from, &meta.case_sha256, observer)?;
     let logs = match dir.as_mut() {
-        Some(d) => Some(Logs::open(d, &starts, &meta.case_sha256)?),
+        Some(d) => Some(open_logs(d, &starts, &meta.case_sha256)?),
         None => None,
     };
     let root = dir.as_ref().map(|d| d.root().to_path_buf());
@@ -177,7 +154,7 @@ pub fn run_spectrum_job_modes<T>(
     }
     let on_update = |mode: WearMode, run: &SpectrumRun| -> anyhow::Result<()> {
         if let (Some(logs), Some(root)) = (&logs, &root) {
-            logs.record(run)?;
+            logs.record(mode, run.records.len(), &|i, j| &run.records[j].bins[i])?;
             observer.checkpoint(&root.join(bin_checkpoint_name(mode, 0)));
         }
         if let Some(r) = run.last() {

@@ -55,6 +55,7 @@ pub mod settings;
 pub mod signals;
 pub mod stiffness;
 pub mod sweep;
+pub(crate) mod train_checkpoints;
 pub mod wear;
 pub mod wear_runs;
 pub mod wear_train;

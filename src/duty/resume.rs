@@ -1,7 +1,7 @@
 //! A spectrum run kept as one single-point log per bin, and read back.
 //!
 //! Bin i's log holds, at every update, the shared wear state with bin i's response and
-//! per-cycle wear ([`bin_run`]): an ordinary wear run's records, so the checkpoint format
+//! per-cycle wear (`contribution::bin_run`): an ordinary wear run's records, so the checkpoint format
 //! of single-point runs serves unchanged. What the bins added is not stored: it is
 //! replayed from the logs with the arithmetic of the loop itself, and the replayed wear
 //! must equal the stored wear bit for bit, so an edited, truncated or foreign log is
@@ -11,17 +11,10 @@
 //! two appends leaves some logs one update longer: the run resumes from the updates every
 //! log holds.
 
-use super::contribution::bin_run;
 use super::model::SpectrumModel;
 use super::wear::{SpectrumRecord, SpectrumRun};
 use crate::study::wear_check::check_wear_run;
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
-
-/// The single-point runs of a spectrum run, one per bin (what its logs hold).
-pub(crate) fn bin_runs(run: &SpectrumRun) -> Vec<WearRun> {
-    let bins = run.records.first().map_or(0, |r| r.bins.len());
-    (0..bins).map(|i| bin_run(run, i)).collect()
-}
 
 /// The spectrum run whose bin logs are `logs` (bin order), checked against `sm`. The logs
 /// are cut to the updates all of them hold.

@@ -231,7 +231,10 @@ pub(crate) struct CheckpointLog {
     written: usize,
 }
 
-fn lines_of(records: &[UpdateRecord], name: &str) -> Result<String, OutputError> {
+fn lines_of<'a>(
+    records: impl Iterator<Item = &'a UpdateRecord>,
+    name: &str,
+) -> Result<String, OutputError> {
     let mut text = String::new();
     for r in records {
         let json = serde_json::to_string(r).map_err(|e| {
@@ -273,7 +276,7 @@ impl CheckpointLog {
             OutputError::new("write", &out.root().join(&partial), e.to_string(), None)
         })?;
         let mut text = line_of(&json);
-        text.push_str(&lines_of(&run.records, &partial)?);
+        text.push_str(&lines_of(run.records.iter(), &partial)?);
         let file = out.create_log(&partial, Some(name), text.as_bytes(), is_checkpoint)?;
         Ok(Self {
             file,
@@ -284,15 +287,29 @@ impl CheckpointLog {
 
     /// Append the records of `run` not yet in the file, and sync.
     pub(crate) fn append_new(&mut self, run: &WearRun) -> Result<(), OutputError> {
-        if run.records.len() <= self.written {
+        self.append_upto(run.records.len(), &|j| &run.records[j])
+    }
+
+    /// Append records `written..total` of a run whose record j is `record(j)` (those not
+    /// yet in the file), and sync; the records before are not touched, so the cost stays
+    /// flat however long the run.
+    pub(crate) fn append_upto<'a>(
+        &mut self,
+        total: usize,
+        record: &dyn Fn(usize) -> &'a UpdateRecord,
+    ) -> Result<(), OutputError> {
+        if total <= self.written {
             return Ok(());
         }
-        let text = lines_of(&run.records[self.written..], &self.path.to_string_lossy())?;
+        let text = lines_of(
+            (self.written..total).map(record),
+            &self.path.to_string_lossy(),
+        )?;
         self.file
             .write_all(text.as_bytes())
             .and_then(|_| self.file.sync_data())
             .map_err(|e| OutputError::io("write", &self.path, &e))?;
-        self.written = run.records.len();
+        self.written = total;
         Ok(())
     }
 }

@@ -7,6 +7,7 @@
 pub mod checkpoint;
 pub mod checkpoint_set;
 pub mod metadata;
+pub(crate) mod part_logs;
 pub mod sweep_inputs;
 pub(crate) mod transfer_path;
 pub mod transmission_error;

@@ -18,6 +18,7 @@ pub mod teeth;
 pub mod train;
 pub mod train_stages;
 pub mod train_wear;
+pub mod train_wear_check;
 pub mod transient_signals;
 pub mod wear_check;
 pub mod wear_loop;

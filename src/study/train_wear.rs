@@ -165,28 +165,38 @@ fn update_of(
     }
 }
 
-/// The update after `last` (`None`: new teeth at cycle 0), the train's step of
-/// `wear_loop::next_update`. Only the first update's failure is an error.
-pub fn next_train_update(
-    model: &Model,
-    train: &TrainModel,
-    mode: WearMode,
-    last: Option<&TrainUpdate>,
-) -> Result<TrainNext, DynamicsError> {
+/// Every mesh's new teeth (stage order): where a run starts, at input cycle 0.
+pub fn new_teeth(train: &TrainModel) -> Vec<WearState> {
+    train
+        .stages
+        .iter()
+        .map(|s| WearState::new(s.grid.len()))
+        .collect()
+}
+
+/// The block after an update: the input cycles it reaches, the mesh whose threshold cut
+/// it, and every mesh's wear at its end.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Block {
+    /// Input cycles at the end of the block.
+    pub input_cycles: f64,
+    /// The mesh (0-based) whose threshold cut the block; None when it was m cycles or
+    /// what remained of the total.
+    pub limited_by: Option<usize>,
+    /// Each mesh's wear at the end of the block (stage order).
+    pub wears: Vec<WearState>,
+}
+
+/// The block after `last` (paper eq. 17 per mesh, see the module docs): n input cycles,
+/// m cut to the fastest mesh's threshold and to the total; mesh k's wear advanced by
+/// n c_k of its pinion cycles at the rate `last` holds. None when the total is reached.
+/// The one step of the loop that [`next_train_update`] and the replay of a checkpoint
+/// (`study::train_wear_check`) share.
+pub fn next_block(model: &Model, train: &TrainModel, last: &TrainUpdate) -> Option<Block> {
     let w = &model.case.wear;
-    let Some(last) = last else {
-        let wears: Vec<WearState> = train
-            .stages
-            .iter()
-            .map(|s| WearState::new(s.grid.len()))
-            .collect();
-        let r = solve_train(model, train, mode, &wears, None)?;
-        let u = update_of(model, train, mode, (0.0, None), wears, &r);
-        return Ok(TrainNext::Update(Box::new(u)));
-    };
     let remaining = w.total_cycles - last.input_cycles;
     if remaining <= 0.5 {
-        return Ok(TrainNext::Finished);
+        return None;
     }
     let c = train.cycle_factors();
     // Each mesh's largest wear per input cycle; the fastest sets the block.
@@ -210,6 +220,35 @@ pub fn next_train_update(
         })
         .collect();
     let input_cycles = last.input_cycles + n;
+    Some(Block {
+        input_cycles,
+        limited_by,
+        wears,
+    })
+}
+
+/// The update after `last` (`None`: new teeth at cycle 0), the train's step of
+/// `wear_loop::next_update`. Only the first update's failure is an error.
+pub fn next_train_update(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    last: Option<&TrainUpdate>,
+) -> Result<TrainNext, DynamicsError> {
+    let Some(last) = last else {
+        let wears = new_teeth(train);
+        let r = solve_train(model, train, mode, &wears, None)?;
+        let u = update_of(model, train, mode, (0.0, None), wears, &r);
+        return Ok(TrainNext::Update(Box::new(u)));
+    };
+    let Some(Block {
+        input_cycles,
+        limited_by,
+        wears,
+    }) = next_block(model, train, last)
+    else {
+        return Ok(TrainNext::Finished);
+    };
     let start = start_of(&last.meshes[0]);
     Ok(match solve_train(model, train, mode, &wears, start.as_deref()) {
         Ok(r) => match (0..wears.len()).find(|m| r.contact_loss_fraction_of(*m) > MAX_CONTACT_LOSS_FRACTION) {

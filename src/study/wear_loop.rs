@@ -112,6 +112,29 @@ impl UpdateRecord {
         }
     }
 
+    /// What is wrong with the record's wear profiles and per-cycle wear for a profile grid
+    /// of `n` points: one of another length, or holding a value that is not finite and
+    /// >= 0 (wear only grows); None when they are sound.
+    pub fn profile_problem(&self, n: usize) -> Option<String> {
+        for (name, v) in [
+            ("pinion wear", &self.wear.pinion_m),
+            ("gear wear", &self.wear.gear_m),
+            ("pinion wear increment", &self.increment_pinion_m),
+            ("gear wear increment", &self.increment_gear_m),
+        ] {
+            if v.len() != n {
+                return Some(format!(
+                    "{name} has {} points, the profile grid has {n}",
+                    v.len()
+                ));
+            }
+            if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
+                return Some(format!("{name} holds {x}, not a finite value >= 0"));
+            }
+        }
+        None
+    }
+
     /// The gear's, as [`Self::pinion_profiles`].
     pub fn gear_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
         match (&self.wear.teeth, &self.increment_teeth) {

@@ -20,6 +20,28 @@ pub const CHEAP: [&str; 6] = [
     "stiffness.table_points_per_mesh_period=60",
 ];
 
+/// Start `gearwear args`, kill it (SIGKILL) once `ready()` holds, then return; if it
+/// finishes first (or after two minutes) it is left at that: resuming must work either
+/// way.
+pub fn kill_when(args: &[String], ready: &dyn Fn() -> bool) {
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gearwear"))
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let t0 = Instant::now();
+    while !ready() && t0.elapsed() < Duration::from_secs(120) {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
 pub fn gearwear(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_gearwear"))
         .args(args)

@@ -1,0 +1,181 @@
+//! A train's wear run read back from its checkpoints (one log per mesh, each an ordinary
+//! wear run's records: `store::checkpoint`), and whether this model computes it. The
+//! files are never trusted for what they say about themselves:
+//!
+//! - **Replayed** ([`train_run_from_logs`]): the input cycles and the mesh that cut each
+//!   block are not stored, they are recomputed from the update before with the loop's own
+//!   step (`train_wear::next_block`), and every mesh's stored wear must equal the previous
+//!   update's advanced over that block bit for bit (the first update: new teeth at input
+//!   cycle 0). Each record's shape is checked first (one value per grid point of its
+//!   stage, finite and >= 0 rates, the roughness the case's law gives at its wear, the
+//!   periodic end state with mesh 1's record in the dynamic mode and nowhere else).
+//!   Logs of unequal length (a kill between the appends of one update) are cut to the
+//!   updates every log holds.
+//! - **Recomputed** ([`verify_train_resumable`]): the first and last updates and a random
+//!   sample of the others (at most `wear_check::MAX_RECOMPUTED` in all) are computed again
+//!   from the update before, the whole train's response with every mesh, and must equal
+//!   the stored records bit for bit (compared as JSON, which carries every double
+//!   exactly): a record of another case, an edit with recomputed checksums, or a stage's
+//!   log copied over another's is refused, naming the update and its line.
+
+use super::model::Model;
+use super::train::TrainModel;
+use super::train_wear::{
+    new_teeth, next_block, next_train_update, Block, TrainNext, TrainUpdate, TrainWearRun,
+};
+use super::wear_check::{random_sample, MAX_RECOMPUTED};
+use super::wear_loop::{UpdateRecord, WearMode, WearRun};
+
+/// What is wrong with the shape of mesh `m`'s record `r` (see the module docs), if anything.
+fn record_problem(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    m: usize,
+    r: &UpdateRecord,
+) -> Option<String> {
+    if let Some(p) = r.profile_problem(train.stages[m].grid.len()) {
+        return Some(p);
+    }
+    if r.wear.teeth.is_some() || r.increment_teeth.is_some() {
+        return Some("holds per-tooth wear, but a train's teeth are all alike".into());
+    }
+    if r.path_rho1_m.len() != r.path_load_n.len() {
+        return Some("path positions and loads differ in length".into());
+    }
+    let len = model.state_len();
+    match (mode == WearMode::Dynamic && m == 0, &r.end_state) {
+        (true, Some(y)) if y.len() == len && y.iter().all(|v| v.is_finite()) => {}
+        (true, _) => {
+            return Some(format!(
+                "stage 1's record of a dynamic update must hold the train's periodic end state ({len} finite numbers)"
+            ))
+        }
+        (false, None) => {}
+        (false, Some(_)) => {
+            return Some(if mode == WearMode::Dynamic {
+                "holds a periodic end state, which a train keeps with stage 1's record only".into()
+            } else {
+                "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one"
+                    .into()
+            })
+        }
+    }
+    let want = model.roughness_for(&r.wear);
+    (r.roughness_um != want).then(|| {
+        format!(
+            "roughness {} µm is not the case's {want} µm at this wear depth",
+            r.roughness_um
+        )
+    })
+}
+
+/// The train's run of `mode` whose mesh logs are `logs` (stage order), replayed and
+/// checked against `model` (see the module docs); the error names the update, its line
+/// in the logs (the header is line 1) and the stage.
+pub fn train_run_from_logs(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    logs: &[WearRun],
+) -> Result<TrainWearRun, String> {
+    if logs.len() != train.stages.len() {
+        return Err(format!(
+            "{} mesh logs for a train of {} stages",
+            logs.len(),
+            train.stages.len()
+        ));
+    }
+    let n = logs.iter().map(|l| l.records.len()).min().unwrap_or(0);
+    let mut run = TrainWearRun::new(mode);
+    for j in 0..n {
+        let at =
+            |m: usize, what: &str| format!("update {j} (line {}), stage {}: {what}", j + 2, m + 1);
+        let meshes: Vec<UpdateRecord> = logs.iter().map(|l| l.records[j].clone()).collect();
+        for (m, r) in meshes.iter().enumerate() {
+            if let Some(p) = record_problem(model, train, mode, m, r) {
+                return Err(at(m, &p));
+            }
+        }
+        let block = match run.updates.last() {
+            None => Block {
+                input_cycles: 0.0,
+                limited_by: None,
+                wears: new_teeth(train),
+            },
+            Some(prev) => next_block(model, train, prev).ok_or_else(|| {
+                format!(
+                    "update {j} (line {}): the run had reached wear.total_cycles at the update before it",
+                    j + 2
+                )
+            })?,
+        };
+        for (m, (r, w)) in meshes.iter().zip(&block.wears).enumerate() {
+            if r.wear != *w {
+                return Err(at(
+                    m,
+                    &if j == 0 {
+                        "its wear is not the new teeth at cycle 0".to_string()
+                    } else {
+                        format!(
+                            "its wear is not the previous update's advanced over the block to {} input cycles at the previous rate",
+                            block.input_cycles
+                        )
+                    },
+                ));
+            }
+        }
+        run.updates.push(TrainUpdate {
+            input_cycles: block.input_cycles,
+            meshes,
+            limited_by: block.limited_by,
+        });
+    }
+    Ok(run)
+}
+
+/// Recompute updates of `run` (replayed by [`train_run_from_logs`]) and require them equal
+/// to the stored ones (see the module docs); the error names the first that is not.
+pub fn verify_train_resumable(
+    model: &Model,
+    train: &TrainModel,
+    run: &TrainWearRun,
+) -> Result<(), String> {
+    let n = run.updates.len();
+    for i in random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)]) {
+        let prev = i.checked_sub(1).map(|j| &run.updates[j]);
+        let stored = &run.updates[i];
+        let line = i + 2;
+        let again = match next_train_update(model, train, run.mode, prev) {
+            Ok(TrainNext::Update(u)) => *u,
+            Ok(_) | Err(_) => {
+                return Err(format!(
+                    "update {i} (line {line}): this case's model makes no such update when it is recomputed from the update before it: the records are not this case's"
+                ))
+            }
+        };
+        let json = |r: &UpdateRecord| serde_json::to_string(r).ok();
+        let differs = again
+            .meshes
+            .iter()
+            .zip(&stored.meshes)
+            .position(|(a, b)| json(a) != json(b));
+        if let Some(m) = differs {
+            let (a, b) = (&again.meshes[m], &stored.meshes[m]);
+            return Err(format!(
+                "update {i} (line {line}), stage {}: not what this case's model computes from the update before it, the whole train recomputed (recomputed: max pinion wear rate {:.6e} m per cycle, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the records are not this case's, or were edited",
+                m + 1,
+                a.max_increment_pinion_m(),
+                a.summary.mesh_force_mean_n,
+                b.max_increment_pinion_m(),
+                b.summary.mesh_force_mean_n,
+            ));
+        }
+        if (again.input_cycles, again.limited_by) != (stored.input_cycles, stored.limited_by) {
+            return Err(format!(
+                "update {i} (line {line}): its block is not the one this case's model takes"
+            ));
+        }
+    }
+    Ok(())
+}
