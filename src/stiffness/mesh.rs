@@ -140,35 +140,7 @@ impl MeshStiffness {
             ToothBeam::new(&pair.pinion, b, elastic.e_pinion_pa, elastic.nu_pinion),
             ToothBeam::new(&pair.gear, b, elastic.e_gear_pa, elastic.nu_gear),
         ];
-        let fillets = fillet.map(|set| {
-            [("pinion", &pair.pinion), ("gear", &pair.gear)]
-                .iter()
-                .zip(&teeth)
-                .map(|((name, g), t)| {
-                    let f = FilletFoundation::new(
-                        name,
-                        g.root_radius_m,
-                        g.bore_radius_m,
-                        set.root_half_angle_rad(g, t),
-                        t.youngs_modulus_pa,
-                        b,
-                    );
-                    (set.refusal(&f, name), f)
-                })
-                .collect::<Vec<_>>()
-        });
-        let refusals: Vec<String> = fillets
-            .iter()
-            .flatten()
-            .filter_map(|(r, _)| r.clone())
-            .collect();
-        if !refusals.is_empty() {
-            return Err(StiffnessError(refusals));
-        }
-        let fillets = fillets.map(|v| {
-            let mut it = v.into_iter().map(|(_, f)| f);
-            [it.next(), it.next()].map(|f| f.expect("two gears"))
-        });
+        let fillets = fillet_foundations(pair, &teeth, fillet)?;
         let warnings = fillets
             .iter()
             .flatten()
@@ -189,12 +161,29 @@ impl MeshStiffness {
             max_n_per_m: 0.0,
             warnings,
         };
-        // Largest ratio of the foundation's compliance to the rest of the pair's.
+        let (foundation_ratio, teeth_c) = me.tabulate(n_points);
+        me.check_usable(foundation_ratio)?;
+        me.curvature = clamped_spline_curvature(&me.values, me.step_m);
+        me.tooth_compliance_curvature = [
+            clamped_spline_curvature(&teeth_c[0], me.step_m),
+            clamped_spline_curvature(&teeth_c[1], me.step_m),
+        ];
+        me.tooth_compliance = teeth_c;
+        me.mean_n_per_m = me.path_integral() / pair.base_pitch_m;
+        (me.min_n_per_m, me.max_n_per_m) = me.period_extrema(20 * n_points);
+        Ok(me)
+    }
+
+    /// Fill `values` with k_pair (N/m) at `n_points` uniform positions of the path of
+    /// contact; returns the largest ratio of the fillet foundation's compliance to the rest
+    /// of the pair's, and each tooth's compliance (teeth plus its fillet, m/N) at the points.
+    fn tabulate(&mut self, n_points: usize) -> (f64, [Vec<f64>; 2]) {
         let mut foundation_ratio = 0.0_f64;
         let mut teeth_c = [Vec::with_capacity(n_points), Vec::with_capacity(n_points)];
-        me.values = (0..n_points)
+        let rho_start_m = self.pair.rho_start_m;
+        self.values = (0..n_points)
             .map(|i| {
-                let c = me.compliances_at(pair.rho_start_m + i as f64 * me.step_m);
+                let c = self.compliances_at(rho_start_m + i as f64 * self.step_m);
                 let fillet = c.pinion_fillet_m_per_n + c.gear_fillet_m_per_n;
                 foundation_ratio = foundation_ratio.max(fillet / (c.total_m_per_n() - fillet));
                 teeth_c[0].push(c.pinion.total_m_per_n() + c.pinion_fillet_m_per_n);
@@ -202,12 +191,19 @@ impl MeshStiffness {
                 c.stiffness_n_per_m()
             })
             .collect();
-        let extrapolated = me
+        (foundation_ratio, teeth_c)
+    }
+
+    /// The tabulated values refused: a pair stiffness not finite and positive, or an
+    /// extrapolated fillet fit whose foundation is more than
+    /// [`MAX_EXTRAPOLATED_FOUNDATION_RATIO`] times as compliant as the rest of the pair.
+    fn check_usable(&self, foundation_ratio: f64) -> Result<(), StiffnessError> {
+        let extrapolated = self
             .fillets
             .iter()
             .flatten()
             .any(FilletFoundation::outside_fit);
-        let bad = me.values.iter().find(|k| !(k.is_finite() && **k > 0.0));
+        let bad = self.values.iter().find(|k| !(k.is_finite() && **k > 0.0));
         if bad.is_some()
             || (extrapolated
                 && (foundation_ratio.is_nan()
@@ -215,7 +211,7 @@ impl MeshStiffness {
         {
             return Err(StiffnessError(vec![format!(
                 "Sainsot's fillet-foundation fit, extrapolated to this geometry (h_f = {}), gives no usable compliance ({}); keep the hub bores and the tooth form near the fit's range, or set `stiffness.fillet_foundation` = false",
-                me.fillets
+                self.fillets
                     .iter()
                     .flatten()
                     .map(|f| format!("{:.3}", f.h_f))
@@ -229,15 +225,7 @@ impl MeshStiffness {
                 }
             )]));
         }
-        me.curvature = clamped_spline_curvature(&me.values, me.step_m);
-        me.tooth_compliance_curvature = [
-            clamped_spline_curvature(&teeth_c[0], me.step_m),
-            clamped_spline_curvature(&teeth_c[1], me.step_m),
-        ];
-        me.tooth_compliance = teeth_c;
-        me.mean_n_per_m = me.path_integral() / pair.base_pitch_m;
-        (me.min_n_per_m, me.max_n_per_m) = me.period_extrema(20 * n_points);
-        Ok(me)
+        Ok(())
     }
 
     /// A table of given values on `pair`'s path [rho_start, rho_end] (uniform, at least 5
@@ -442,6 +430,45 @@ impl MeshStiffness {
         }
         (lo, hi)
     }
+}
+
+/// The fillet foundations of pinion and gear (Sainsot et al. 2004) as `fillet` says
+/// (`None`: off); a fit the settings refuse (outside its range) is an error naming it.
+fn fillet_foundations(
+    pair: &GearPair,
+    teeth: &[ToothBeam; 2],
+    fillet: Option<FilletSettings>,
+) -> Result<Option<[FilletFoundation; 2]>, StiffnessError> {
+    let b = pair.face_width_m;
+    let fillets = fillet.map(|set| {
+        [("pinion", &pair.pinion), ("gear", &pair.gear)]
+            .iter()
+            .zip(teeth)
+            .map(|((name, g), t)| {
+                let f = FilletFoundation::new(
+                    name,
+                    g.root_radius_m,
+                    g.bore_radius_m,
+                    set.root_half_angle_rad(g, t),
+                    t.youngs_modulus_pa,
+                    b,
+                );
+                (set.refusal(&f, name), f)
+            })
+            .collect::<Vec<_>>()
+    });
+    let refusals: Vec<String> = fillets
+        .iter()
+        .flatten()
+        .filter_map(|(r, _)| r.clone())
+        .collect();
+    if !refusals.is_empty() {
+        return Err(StiffnessError(refusals));
+    }
+    Ok(fillets.map(|v| {
+        let mut it = v.into_iter().map(|(_, f)| f);
+        [it.next(), it.next()].map(|f| f.expect("two gears"))
+    }))
 }
 
 /// Second derivatives of the clamped cubic spline through `y` on a uniform grid of step

@@ -11,7 +11,7 @@
 //! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
 
 use super::model::Model;
-use super::wear_loop::{next_update, Next, WearMode, WearRun};
+use super::wear_loop::{next_update, Next, UpdateRecord, WearMode, WearRun};
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
 /// floating-point operations, so only the rounding of the cycle difference (exact for
@@ -26,8 +26,6 @@ fn close(a: f64, b: f64) -> bool {
 /// Check `run` against `model` (see the module docs); the error says which record and
 /// what is wrong.
 pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
-    let n = model.grid.len();
-    let total = model.case.wear.total_cycles;
     let Some(first) = run.records.first() else {
         return Err("holds no update".into());
     };
@@ -39,100 +37,115 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
     }
     for (i, r) in run.records.iter().enumerate() {
         let at = |what: String| format!("update {i}: {what}");
-        for (name, v) in [
-            ("pinion wear", &r.wear.pinion_m),
-            ("gear wear", &r.wear.gear_m),
-            ("pinion wear increment", &r.increment_pinion_m),
-            ("gear wear increment", &r.increment_gear_m),
-        ] {
-            if v.len() != n {
-                return Err(at(format!(
-                    "{name} has {} points, the case's profile grid has {n}",
-                    v.len()
-                )));
-            }
-            if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
-                return Err(at(format!("{name} holds {x}, not a finite value >= 0")));
-            }
+        record_problem(run.mode, r, model).map_err(at)?;
+        if i > 0 {
+            step_problem(&run.records[i - 1], r).map_err(at)?;
         }
-        if let Some(problem) = tooth_problem(model, r) {
-            return Err(at(problem));
+    }
+    Ok(())
+}
+
+/// The first problem of record `r` of a run in `mode` on its own: wear and increments on
+/// the case's grid, finite and >= 0, the per-tooth state, the end state the mode keeps,
+/// cycles within the case's total, the roughness the case's law gives at its wear.
+fn record_problem(mode: WearMode, r: &UpdateRecord, model: &Model) -> Result<(), String> {
+    let n = model.grid.len();
+    let total = model.case.wear.total_cycles;
+    for (name, v) in [
+        ("pinion wear", &r.wear.pinion_m),
+        ("gear wear", &r.wear.gear_m),
+        ("pinion wear increment", &r.increment_pinion_m),
+        ("gear wear increment", &r.increment_gear_m),
+    ] {
+        if v.len() != n {
+            return Err(format!(
+                "{name} has {} points, the case's profile grid has {n}",
+                v.len()
+            ));
         }
-        if r.path_rho1_m.len() != r.path_load_n.len() {
-            return Err(at("path positions and loads differ in length".into()));
+        if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
+            return Err(format!("{name} holds {x}, not a finite value >= 0"));
         }
-        // A dynamic update keeps the periodic state its response ended on (the next
-        // update's warm start); a quasi-static one has none.
-        match (run.mode, &r.end_state) {
-            (WearMode::Dynamic, Some(y)) if y.len() == model.state_len() && y.iter().all(|v| v.is_finite()) => {}
-            (WearMode::Dynamic, _) => {
-                return Err(at(format!(
-                    "a dynamic update must hold its periodic end state ({} finite numbers): this is not a dynamic run's record",
-                    model.state_len()
-                )))
-            }
-            (WearMode::QuasiStatic, None) => {}
-            (WearMode::QuasiStatic, Some(_)) => {
-                return Err(at(
-                    "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one".into(),
-                ))
-            }
+    }
+    if let Some(problem) = tooth_problem(model, r) {
+        return Err(problem);
+    }
+    if r.path_rho1_m.len() != r.path_load_n.len() {
+        return Err("path positions and loads differ in length".into());
+    }
+    // A dynamic update keeps the periodic state its response ended on (the next
+    // update's warm start); a quasi-static one has none.
+    match (mode, &r.end_state) {
+        (WearMode::Dynamic, Some(y)) if y.len() == model.state_len() && y.iter().all(|v| v.is_finite()) => {}
+        (WearMode::Dynamic, _) => {
+            return Err(format!(
+                "a dynamic update must hold its periodic end state ({} finite numbers): this is not a dynamic run's record",
+                model.state_len()
+            ))
         }
-        if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
-            return Err(at(format!(
-                "cycles {} outside 0..{total} (wear.total_cycles)",
-                r.wear.cycles
-            )));
+        (WearMode::QuasiStatic, None) => {}
+        (WearMode::QuasiStatic, Some(_)) => {
+            return Err(
+                "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one".into(),
+            )
         }
-        if !close(r.roughness_um, model.roughness_for(&r.wear)) {
-            return Err(at(format!(
-                "roughness {} µm is not the case's {} µm at this wear depth",
-                r.roughness_um,
-                model.roughness_for(&r.wear)
-            )));
-        }
-        if i == 0 {
-            continue;
-        }
-        let prev = &run.records[i - 1];
-        let dn = r.wear.cycles - prev.wear.cycles;
-        if dn <= 0.0 {
-            return Err(at(format!(
-                "cycles {} do not follow the previous update's {}",
-                r.wear.cycles, prev.wear.cycles
-            )));
-        }
-        let advanced = |h0: &[f64], d: &[f64], h1: &[f64]| {
-            h0.iter()
-                .zip(d)
-                .zip(h1)
-                .position(|((a, d), b)| !close(a + dn * d, *b))
+    }
+    if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
+        return Err(format!(
+            "cycles {} outside 0..{total} (wear.total_cycles)",
+            r.wear.cycles
+        ));
+    }
+    if !close(r.roughness_um, model.roughness_for(&r.wear)) {
+        return Err(format!(
+            "roughness {} µm is not the case's {} µm at this wear depth",
+            r.roughness_um,
+            model.roughness_for(&r.wear)
+        ));
+    }
+    Ok(())
+}
+
+/// The first problem of record `r` against the record `prev` before it: cycles that do
+/// not increase, or a wear (overall or per tooth) that is not the previous wear plus the
+/// cycles between them times the previous increment.
+fn step_problem(prev: &UpdateRecord, r: &UpdateRecord) -> Result<(), String> {
+    let dn = r.wear.cycles - prev.wear.cycles;
+    if dn <= 0.0 {
+        return Err(format!(
+            "cycles {} do not follow the previous update's {}",
+            r.wear.cycles, prev.wear.cycles
+        ));
+    }
+    let advanced = |h0: &[f64], d: &[f64], h1: &[f64]| {
+        h0.iter()
+            .zip(d)
+            .zip(h1)
+            .position(|((a, d), b)| !close(a + dn * d, *b))
+    };
+    if let Some(j) = advanced(
+        &prev.wear.pinion_m,
+        &prev.increment_pinion_m,
+        &r.wear.pinion_m,
+    )
+    .or_else(|| advanced(&prev.wear.gear_m, &prev.increment_gear_m, &r.wear.gear_m))
+    {
+        return Err(format!(
+            "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
+        ));
+    }
+    if let (Some(t0), Some(d), Some(t1)) = (&prev.wear.teeth, &prev.increment_teeth, &r.wear.teeth)
+    {
+        let teeth = |a: &[Vec<f64>], d: &[Vec<f64>], b: &[Vec<f64>]| {
+            (0..a.len()).find_map(|t| advanced(&a[t], &d[t], &b[t]).map(|j| (t, j)))
         };
-        if let Some(j) = advanced(
-            &prev.wear.pinion_m,
-            &prev.increment_pinion_m,
-            &r.wear.pinion_m,
-        )
-        .or_else(|| advanced(&prev.wear.gear_m, &prev.increment_gear_m, &r.wear.gear_m))
-        {
-            return Err(at(format!(
-                "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
-            )));
-        }
-        if let (Some(t0), Some(d), Some(t1)) =
-            (&prev.wear.teeth, &prev.increment_teeth, &r.wear.teeth)
-        {
-            let teeth = |a: &[Vec<f64>], d: &[Vec<f64>], b: &[Vec<f64>]| {
-                (0..a.len()).find_map(|t| advanced(&a[t], &d[t], &b[t]).map(|j| (t, j)))
-            };
-            let bad = teeth(&t0.pinion_m, &d.pinion_m, &t1.pinion_m)
-                .map(|(t, j)| ("pinion", t, j))
-                .or_else(|| teeth(&t0.gear_m, &d.gear_m, &t1.gear_m).map(|(t, j)| ("gear", t, j)));
-            if let Some((g, t, j)) = bad {
-                return Err(at(format!(
-                    "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
-                )));
-            }
+        let bad = teeth(&t0.pinion_m, &d.pinion_m, &t1.pinion_m)
+            .map(|(t, j)| ("pinion", t, j))
+            .or_else(|| teeth(&t0.gear_m, &d.gear_m, &t1.gear_m).map(|(t, j)| ("gear", t, j)));
+        if let Some((g, t, j)) = bad {
+            return Err(format!(
+                "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
+            ));
         }
     }
     Ok(())
