@@ -19,24 +19,50 @@ use super::wear_loop::{next_update, Next, UpdateRecord, WearMode, WearRun};
 /// edit of a value by more than a part in a billion.
 const CHAIN_TOL: f64 = 1e-9;
 
+/// Why a stored run cannot be taken as this model's: its records are not ones the model
+/// could have produced (the message says which record and what differs), or the model to
+/// check them against could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StoredRunError {
+    /// The records differ from what the model gives (which record, what differs).
+    #[error("{0}")]
+    Mismatch(String),
+    /// The model the records are checked against cannot be built (its message).
+    #[error("{0}")]
+    Model(String),
+}
+
+impl StoredRunError {
+    /// The message with each "line " (of a checkpoint's log) spelled `spelled` instead: a
+    /// dataset's trajectories name their lines "record line ".
+    pub fn lines_named(self, spelled: &str) -> Self {
+        match self {
+            StoredRunError::Mismatch(m) => StoredRunError::Mismatch(m.replace("line ", spelled)),
+            e => e,
+        }
+    }
+}
+
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= CHAIN_TOL * a.abs().max(b.abs()) + 1e-30
 }
 
 /// Check `run` against `model` (see the module docs); the error says which record and
 /// what is wrong.
-pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
+pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), StoredRunError> {
     let Some(first) = run.records.first() else {
-        return Err("holds no update".into());
+        return Err(StoredRunError::Mismatch("holds no update".into()));
     };
     if first.wear.cycles != 0.0
         || first.wear.max_pinion_m() != 0.0
         || first.wear.max_gear_m() != 0.0
     {
-        return Err("its first update is not the new teeth at cycle 0".into());
+        return Err(StoredRunError::Mismatch(
+            "its first update is not the new teeth at cycle 0".into(),
+        ));
     }
     for (i, r) in run.records.iter().enumerate() {
-        let at = |what: String| format!("update {i}: {what}");
+        let at = |what: String| StoredRunError::Mismatch(format!("update {i}: {what}"));
         record_problem(run.mode, r, model).map_err(at)?;
         if i > 0 {
             step_problem(&run.records[i - 1], r).map_err(at)?;
@@ -190,7 +216,7 @@ fn records_to_recompute(n: usize) -> Vec<usize> {
 /// random sample. A record that this case's model does not reproduce (an edit with
 /// recomputed checksums, a record of another case under this case's header, a spliced
 /// tail) is refused, naming its line in the checkpoint (the header is line 1).
-pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
+pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), StoredRunError> {
     check_wear_run(run, model)?;
     for i in records_to_recompute(run.records.len()) {
         let prev = i.checked_sub(1).map(|j| &run.records[j]);
@@ -198,21 +224,21 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
         let again = match next_update(model, run.mode, prev) {
             Ok(Next::Record(r)) => *r,
             Ok(_) | Err(_) => {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "line {line} (update {i}): this case's model makes no such update when it is recomputed from the record before it: the record is not this case's"
-                ))
+                )))
             }
         };
         let same =
             serde_json::to_string(&again).ok() == serde_json::to_string(&run.records[i]).ok();
         if !same {
-            return Err(format!(
+            return Err(StoredRunError::Mismatch(format!(
                 "line {line} (update {i}) is not what this case's model computes from the record before it (recomputed: max pinion wear {:.6e} m, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the record is not this case's, or was edited",
                 again.wear.max_pinion_m(),
                 again.summary.mesh_force_mean_n,
                 run.records[i].wear.max_pinion_m(),
                 run.records[i].summary.mesh_force_mean_n,
-            ));
+            )));
         }
     }
     Ok(())
