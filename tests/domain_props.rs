@@ -165,6 +165,7 @@ proptest! {
         prop_assert!(cost.seconds().is_finite() && cost.memory_bytes().is_finite());
         if let Err(e) = cost.check(&Budget::DEFAULT) {
             // Over budget (a fast-wearing pair makes many updates): refused with the keys.
+            let e = e.to_string();
             prop_assert!(e.contains("budget") && e.contains('`'), "{e}");
             return Ok(());
         }

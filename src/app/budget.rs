@@ -14,8 +14,8 @@ use crate::study::budget::{estimate, Budget, Job};
 pub const DEFAULT: Option<Budget> = Some(Budget::DEFAULT);
 
 /// The remedy of a run over budget.
-pub fn over_budget(message: String) -> Problem {
-    Problem::new(message).remedy(Remedy::new(
+pub fn over_budget(message: impl std::fmt::Display) -> Problem {
+    Problem::new(message.to_string()).remedy(Remedy::new(
         Words::new()
             .text("lower those keys, or raise the budget knowingly with ")
             .arg(Arg::BudgetScale)

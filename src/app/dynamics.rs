@@ -111,7 +111,7 @@ impl DynamicsJob {
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let r = d
             .solve()
-            .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
+            .map_err(|e| JobError::Failed(anyhow::Error::new(e)))?;
         let meta = RunMetadata::new(self.name(), &self.case);
         publish::publish(
             out,

@@ -13,7 +13,7 @@
 
 use super::model::SpectrumModel;
 use super::wear::{SpectrumRecord, SpectrumRun};
-use crate::study::wear_check::check_wear_run;
+use crate::study::wear_check::{check_wear_run, StoredRunError};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 
 /// The spectrum run whose bin logs are `logs` (bin order), checked against `sm`. The logs
@@ -22,13 +22,13 @@ pub(crate) fn from_bin_runs(
     sm: &SpectrumModel,
     mode: WearMode,
     logs: &[WearRun],
-) -> Result<SpectrumRun, String> {
+) -> Result<SpectrumRun, StoredRunError> {
     if logs.len() != sm.len() {
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "{} bin logs for a spectrum of {} bins",
             logs.len(),
             sm.len()
-        ));
+        )));
     }
     let n = logs.iter().map(|l| l.records.len()).min().unwrap_or(0);
     let mut run = SpectrumRun::new(mode, sm.shares.clone());
@@ -40,17 +40,17 @@ pub(crate) fn from_bin_runs(
                 v.len() == wear.pinion_m.len() && v.iter().all(|x| x.is_finite() && *x >= 0.0)
             };
             if !(ok(&b.increment_pinion_m) && ok(&b.increment_gear_m)) {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "update {j}: bin {}'s wear per cycle is not one finite value >= 0 per profile point",
                     i + 1
-                ));
+                )));
             }
         }
         if let Some(i) = bins.iter().position(|b| b.wear != wear) {
-            return Err(format!(
+            return Err(StoredRunError::Mismatch(format!(
                 "update {j}: the log of bin {} holds another wear state than bin 1's",
                 i + 1
-            ));
+            )));
         }
         let record = match run.records.last() {
             None => SpectrumRecord {
@@ -64,9 +64,9 @@ pub(crate) fn from_bin_runs(
                 let mut next =
                     super::wear::advance(prev, &run.shares, wear.cycles - prev.wear.cycles);
                 if next.wear != wear {
-                    return Err(format!(
+                    return Err(StoredRunError::Mismatch(format!(
                         "update {j}: the wear is not the previous wear advanced by every bin's share of the block"
-                    ));
+                    )));
                 }
                 next.roughness_um = bins[0].roughness_um;
                 next.bins = bins;
@@ -82,7 +82,8 @@ pub(crate) fn from_bin_runs(
         for (v, b) in view.records.iter_mut().zip(&logs[i].records) {
             v.end_state = b.end_state.clone();
         }
-        check_wear_run(&view, m).map_err(|e| format!("bin {}: {e}", i + 1))?;
+        check_wear_run(&view, m)
+            .map_err(|e| StoredRunError::Mismatch(format!("bin {}: {e}", i + 1)))?;
     }
     Ok(run)
 }

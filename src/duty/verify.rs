@@ -6,6 +6,7 @@
 
 use super::model::SpectrumModel;
 use super::wear::{advance, first_record, respond, SpectrumRecord, SpectrumRun};
+use crate::study::wear_check::StoredRunError;
 use crate::study::wear_loop::{block_length, start_of};
 
 /// The record after `last` as the run computes it (`wear::run_spectrum_wear`): the
@@ -36,7 +37,10 @@ fn next_record(
 /// first, if it is new teeth, and the last, recomputed, equal the stored ones (their
 /// wear state and every bin's record, compared as JSON, which carries every double
 /// exactly). Else which update differs, for the message.
-pub(crate) fn verify_spectrum_run(sm: &SpectrumModel, run: &SpectrumRun) -> Result<(), String> {
+pub(crate) fn verify_spectrum_run(
+    sm: &SpectrumModel,
+    run: &SpectrumRun,
+) -> Result<(), StoredRunError> {
     let n = run.records.len();
     let same = |a: &SpectrumRecord, b: &SpectrumRecord| {
         serde_json::to_string(&(&a.wear, &a.bins)).ok()
@@ -62,10 +66,10 @@ pub(crate) fn verify_spectrum_run(sm: &SpectrumModel, run: &SpectrumRun) -> Resu
             } else {
                 "from the update before it"
             };
-            return Err(format!(
+            return Err(StoredRunError::Mismatch(format!(
                 "update {j} (line {} of each bin's checkpoint) is not what this case's model computes {from}, every bin recomputed: the records are not this case's, or were edited",
                 j + 2
-            ));
+            )));
         }
     }
     Ok(())

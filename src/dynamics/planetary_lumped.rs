@@ -99,24 +99,94 @@ pub struct PlanetaryLumped {
     pub pressure_angle_rad: f64,
 }
 
+/// The problems found while reading `[planetary.lumped]`, one message per key.
+#[derive(Default)]
+struct Checked {
+    errs: Vec<String>,
+}
+
+impl Checked {
+    /// `v` of `planetary.lumped.key`, a problem noted unless it is positive and finite
+    /// (or zero when `zero_ok`: a free member).
+    fn pos(&mut self, key: &str, v: f64, zero_ok: bool) -> f64 {
+        if !(v.is_finite() && (v > 0.0 || (zero_ok && v == 0.0))) {
+            let need = if zero_ok {
+                "zero or positive"
+            } else {
+                "positive"
+            };
+            self.errs.push(format!(
+                "`planetary.lumped.{key}` = {v} is invalid: it must be {need} and finite"
+            ));
+        }
+        v
+    }
+}
+
+/// The stiffnesses of `[planetary.lumped]` as written: the sun-planet and ring-planet
+/// mesh stiffnesses (N/m), the bearings of carrier, ring, sun, planet (N/m) and the
+/// torsional supports of carrier, ring, sun (N m/rad), problems noted in `c`.
+fn stiffnesses(l: &LumpedPlanetarySection, c: &mut Checked) -> ([f64; 2], [f64; 4], [f64; 3]) {
+    let mesh = [
+        c.pos(
+            "mesh_stiffness_sun_planet_n_per_m",
+            l.mesh_stiffness_sun_planet_n_per_m,
+            false,
+        ),
+        c.pos(
+            "mesh_stiffness_ring_planet_n_per_m",
+            l.mesh_stiffness_ring_planet_n_per_m,
+            false,
+        ),
+    ];
+    let bearing_n_per_m = [
+        c.pos(
+            "bearing_stiffness_carrier_n_per_m",
+            l.bearing_stiffness_carrier_n_per_m,
+            true,
+        ),
+        c.pos(
+            "bearing_stiffness_ring_n_per_m",
+            l.bearing_stiffness_ring_n_per_m,
+            true,
+        ),
+        c.pos(
+            "bearing_stiffness_sun_n_per_m",
+            l.bearing_stiffness_sun_n_per_m,
+            true,
+        ),
+        c.pos(
+            "bearing_stiffness_planet_n_per_m",
+            l.bearing_stiffness_planet_n_per_m,
+            false,
+        ),
+    ];
+    let torsional_nm = [
+        c.pos(
+            "torsional_stiffness_carrier_nm_per_rad",
+            l.torsional_stiffness_carrier_nm_per_rad,
+            true,
+        ),
+        c.pos(
+            "torsional_stiffness_ring_nm_per_rad",
+            l.torsional_stiffness_ring_nm_per_rad,
+            true,
+        ),
+        c.pos(
+            "torsional_stiffness_sun_nm_per_rad",
+            l.torsional_stiffness_sun_nm_per_rad,
+            true,
+        ),
+    ];
+    (mesh, bearing_n_per_m, torsional_nm)
+}
+
 impl PlanetaryLumped {
     /// From `[planetary.lumped]` and the planet angles (rad); every key that is not a
     /// positive finite number (torsional supports may be 0: a free member), named.
     pub fn from_section(l: &LumpedPlanetarySection, angles: Vec<f64>) -> Result<Self, Vec<String>> {
-        let mut errs = Vec::new();
-        let mut pos = |key: &str, v: f64, zero_ok: bool| {
-            if !(v.is_finite() && (v > 0.0 || (zero_ok && v == 0.0))) {
-                let need = if zero_ok {
-                    "zero or positive"
-                } else {
-                    "positive"
-                };
-                errs.push(format!(
-                    "`planetary.lumped.{key}` = {v} is invalid: it must be {need} and finite"
-                ));
-            }
-            v
-        };
+        let mut c = Checked::default();
+        let mut pos = |key: &str, v: f64, zero_ok: bool| c.pos(key, v, zero_ok);
         let radius_m = [
             pos("carrier_radius_mm", l.carrier_radius_mm, false) * MM,
             pos("base_radius_ring_mm", l.base_radius_ring_mm, false) * MM,
@@ -135,63 +205,13 @@ impl PlanetaryLumped {
             pos("inertia_sun_kg_m2", l.inertia_sun_kg_m2, false),
             pos("inertia_planet_kg_m2", l.inertia_planet_kg_m2, false),
         ];
-        let mesh = [
-            pos(
-                "mesh_stiffness_sun_planet_n_per_m",
-                l.mesh_stiffness_sun_planet_n_per_m,
-                false,
-            ),
-            pos(
-                "mesh_stiffness_ring_planet_n_per_m",
-                l.mesh_stiffness_ring_planet_n_per_m,
-                false,
-            ),
-        ];
-        let bearing_n_per_m = [
-            pos(
-                "bearing_stiffness_carrier_n_per_m",
-                l.bearing_stiffness_carrier_n_per_m,
-                true,
-            ),
-            pos(
-                "bearing_stiffness_ring_n_per_m",
-                l.bearing_stiffness_ring_n_per_m,
-                true,
-            ),
-            pos(
-                "bearing_stiffness_sun_n_per_m",
-                l.bearing_stiffness_sun_n_per_m,
-                true,
-            ),
-            pos(
-                "bearing_stiffness_planet_n_per_m",
-                l.bearing_stiffness_planet_n_per_m,
-                false,
-            ),
-        ];
-        let torsional_nm = [
-            pos(
-                "torsional_stiffness_carrier_nm_per_rad",
-                l.torsional_stiffness_carrier_nm_per_rad,
-                true,
-            ),
-            pos(
-                "torsional_stiffness_ring_nm_per_rad",
-                l.torsional_stiffness_ring_nm_per_rad,
-                true,
-            ),
-            pos(
-                "torsional_stiffness_sun_nm_per_rad",
-                l.torsional_stiffness_sun_nm_per_rad,
-                true,
-            ),
-        ];
+        let (mesh, bearing_n_per_m, torsional_nm) = stiffnesses(l, &mut c);
         let alpha = l.pressure_angle_deg;
         if !(alpha.is_finite() && alpha > 0.0 && alpha < 45.0) {
-            errs.push(format!("`planetary.lumped.pressure_angle_deg` = {alpha} is invalid: it must lie in (0, 45)"));
+            c.errs.push(format!("`planetary.lumped.pressure_angle_deg` = {alpha} is invalid: it must lie in (0, 45)"));
         }
-        if !errs.is_empty() {
-            return Err(errs);
+        if !c.errs.is_empty() {
+            return Err(c.errs);
         }
         Ok(Self {
             planet_angles_rad: angles,

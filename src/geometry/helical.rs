@@ -46,13 +46,13 @@ pub enum Hand {
 impl Hand {
     /// `"left"` or `"right"`; anything else is an error naming the key, the value and the
     /// valid values.
-    pub fn parse(key: &str, value: &str) -> Result<Hand, String> {
+    pub fn parse(key: &str, value: &str) -> Result<Hand, GeometryError> {
         match value {
             "left" => Ok(Hand::Left),
             "right" => Ok(Hand::Right),
-            _ => Err(format!(
+            _ => Err(GeometryError(vec![format!(
                 "`{key}` = {value:?} is invalid: it must be \"left\" or \"right\""
-            )),
+            )])),
         }
     }
 

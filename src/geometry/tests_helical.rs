@@ -249,7 +249,10 @@ fn bad_helix_angles_and_hands_are_errors_naming_the_key() {
             "{e:?}"
         );
     }
-    let e = Hand::parse("gear.helix_hand_pinion", "up").unwrap_err();
+    let e = Hand::parse("gear.helix_hand_pinion", "up")
+        .unwrap_err()
+        .0
+        .join("; ");
     assert!(e.contains("gear.helix_hand_pinion") && e.contains("\"up\"") && e.contains("\"left\""));
     assert_eq!(Hand::parse("k", "left"), Ok(Hand::Left));
 }

@@ -5,7 +5,7 @@
 use super::band::{cycles_grid, Band};
 use super::grid::GridPosterior;
 use super::likelihood::log_likelihood;
-use super::mcmc::{ensemble_sample, McmcSettings};
+use super::mcmc::{ensemble_sample, McmcRun, McmcSettings};
 use super::observations::Observations;
 use super::posterior_error::PosteriorError;
 use super::prior::{Parameter, Prior, Theta};
@@ -129,69 +129,10 @@ pub fn calibrate(
         return Err(PosteriorError::NothingToCalibrate);
     }
     let loglik = |t: &Theta| log_likelihood(obs, &|q, c| sur.value(q, t, c));
-    let mut out = Calibration {
-        prior: prior.clone(),
-        method: Method::Grid,
-        samples: Vec::new(),
-        summary: Vec::new(),
-        densities: Vec::new(),
-        failed: Vec::new(),
-        prior_mass_failed: None,
-        mass_outside: None,
-        grid_levels: None,
-        acceptance: None,
-    };
-    // Why no parameter could be weighed, in the terms of the data: how far the
-    // reference runs reach against the last observation.
-    let explain = |e: PosteriorError| {
-        let reach = sur
-            .chains
-            .iter()
-            .map(|c| sur.valid_until(&[c.k[0], c.theta[1], c.theta[2]]))
-            .fold(0.0_f64, f64::max);
-        let last = obs.max_cycles();
-        if reach < last {
-            PosteriorError::BeyondReach {
-                cause: Box::new(e),
-                reach_cycles: reach,
-                last_cycles: last,
-                first_failure: sur
-                    .failures()
-                    .first()
-                    .map_or("no failure recorded".into(), |f| f.2.clone()),
-            }
-        } else {
-            e
-        }
-    };
+    let explain = |e| beyond_reach(e, obs, sur);
     if free.len() <= 2 {
         let g = GridPosterior::compute(prior, &loglik, set.grid_cells, done).map_err(explain)?;
-        let draws = g.draw(set.samples, set.seed);
-        out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
-        for (a, &i) in free.iter().enumerate() {
-            let q = |p| prior.params[i].value_at_unit(g.quantile_unit(a, p));
-            out.summary.push(ParamSummary {
-                parameter: prior.params[i].parameter,
-                median: q(0.5),
-                ci05: q(0.05),
-                ci95: q(0.95),
-                ess: set.samples as f64,
-                rhat: None,
-            });
-            let (u, dens) = g.density_unit(a);
-            let span = unit_span(prior, i);
-            out.densities.push(Density {
-                parameter: prior.params[i].parameter,
-                x: u.iter().map(|v| plot_x(prior, i, *v)).collect(),
-                density: dens.iter().map(|d| d / span).collect(),
-                prior_density: 1.0 / span,
-            });
-        }
-        out.prior_mass_failed = Some(g.prior_mass_failed);
-        out.mass_outside = Some(g.mass_outside);
-        out.grid_levels = Some(g.levels);
-        out.failed = g.failed;
-        return Ok(out);
+        return Ok(from_grid(prior, &free, g, set));
     }
     let s = McmcSettings {
         walkers: set.walkers,
@@ -200,7 +141,96 @@ pub fn calibrate(
         seed: set.seed,
     };
     let run = ensemble_sample(prior, &loglik, &s, done).map_err(explain)?;
-    out.method = Method::EnsembleMcmc;
+    Ok(from_mcmc(prior, &free, run, set))
+}
+
+/// A calibration of `prior` by `method` with nothing filled in yet.
+fn empty(prior: &Prior, method: Method) -> Calibration {
+    Calibration {
+        prior: prior.clone(),
+        method,
+        samples: Vec::new(),
+        summary: Vec::new(),
+        densities: Vec::new(),
+        failed: Vec::new(),
+        prior_mass_failed: None,
+        mass_outside: None,
+        grid_levels: None,
+        acceptance: None,
+    }
+}
+
+/// Why no parameter could be weighed, in the terms of the data: how far the reference
+/// runs reach (cycles) against the last observation; `e` unchanged when they reach it.
+fn beyond_reach(e: PosteriorError, obs: &Observations, sur: &Surrogate) -> PosteriorError {
+    let reach = sur
+        .chains
+        .iter()
+        .map(|c| sur.valid_until(&[c.k[0], c.theta[1], c.theta[2]]))
+        .fold(0.0_f64, f64::max);
+    let last = obs.max_cycles();
+    if reach < last {
+        PosteriorError::BeyondReach {
+            cause: Box::new(e),
+            reach_cycles: reach,
+            last_cycles: last,
+            first_failure: sur
+                .failures()
+                .first()
+                .map_or("no failure recorded".into(), |f| f.2.clone()),
+        }
+    } else {
+        e
+    }
+}
+
+/// The calibration from the exact grid posterior `g` over the `free` parameters: samples
+/// drawn from it, quantiles and densities read off the grid.
+fn from_grid(
+    prior: &Prior,
+    free: &[usize],
+    g: GridPosterior,
+    set: &CalibrationSettings,
+) -> Calibration {
+    let mut out = empty(prior, Method::Grid);
+    let draws = g.draw(set.samples, set.seed);
+    out.samples = draws.iter().map(|u| prior.theta_at(u)).collect();
+    for (a, &i) in free.iter().enumerate() {
+        let q = |p| prior.params[i].value_at_unit(g.quantile_unit(a, p));
+        out.summary.push(ParamSummary {
+            parameter: prior.params[i].parameter,
+            median: q(0.5),
+            ci05: q(0.05),
+            ci95: q(0.95),
+            ess: set.samples as f64,
+            rhat: None,
+        });
+        let (u, dens) = g.density_unit(a);
+        let span = unit_span(prior, i);
+        out.densities.push(Density {
+            parameter: prior.params[i].parameter,
+            x: u.iter().map(|v| plot_x(prior, i, *v)).collect(),
+            density: dens.iter().map(|d| d / span).collect(),
+            prior_density: 1.0 / span,
+        });
+    }
+    out.prior_mass_failed = Some(g.prior_mass_failed);
+    out.mass_outside = Some(g.mass_outside);
+    out.grid_levels = Some(g.levels);
+    out.failed = g.failed;
+    out
+}
+
+/// The calibration from the ensemble sampler's `run` over the `free` parameters: the
+/// chains thinned evenly to the requested count, quantiles, ESS and split R-hat from the
+/// chains, densities as 40-bin histograms.
+fn from_mcmc(
+    prior: &Prior,
+    free: &[usize],
+    run: McmcRun,
+    set: &CalibrationSettings,
+) -> Calibration {
+    let mut out = empty(prior, Method::EnsembleMcmc);
     out.acceptance = Some(run.acceptance);
     let flat = run.flat();
     // Evenly thinned to the requested count (deterministic).
@@ -221,29 +251,34 @@ pub fn calibrate(
             ess: (all.len() as f64 / tau).min(all.len() as f64),
             rhat: Some(split_rhat(&c)),
         });
-        // Histogram of 40 bins over the sampled range.
-        let (lo, hi) = (quantile(&all, 0.0), quantile(&all, 1.0));
-        let bins = 40;
-        let w = ((hi - lo) / bins as f64).max(1e-12);
-        let mut h = vec![0.0; bins];
-        for u in &all {
-            h[(((u - lo) / w) as usize).min(bins - 1)] += 1.0;
-        }
-        let span = unit_span(prior, i);
-        out.densities.push(Density {
-            parameter: prior.params[i].parameter,
-            x: (0..bins)
-                .map(|b| plot_x(prior, i, lo + w * (b as f64 + 0.5)))
-                .collect(),
-            density: h
-                .iter()
-                .map(|c| c / (all.len() as f64 * w * span))
-                .collect(),
-            prior_density: 1.0 / span,
-        });
+        out.densities.push(histogram_density(prior, i, &all));
     }
     out.failed = run.failed;
-    Ok(out)
+    out
+}
+
+/// Histogram of 40 bins over the sampled range of unit coordinates `all` of parameter
+/// `i`, as a density per unit of its plotting coordinate.
+fn histogram_density(prior: &Prior, i: usize, all: &[f64]) -> Density {
+    let (lo, hi) = (quantile(all, 0.0), quantile(all, 1.0));
+    let bins = 40;
+    let w = ((hi - lo) / bins as f64).max(1e-12);
+    let mut h = vec![0.0; bins];
+    for u in all {
+        h[(((u - lo) / w) as usize).min(bins - 1)] += 1.0;
+    }
+    let span = unit_span(prior, i);
+    Density {
+        parameter: prior.params[i].parameter,
+        x: (0..bins)
+            .map(|b| plot_x(prior, i, lo + w * (b as f64 + 0.5)))
+            .collect(),
+        density: h
+            .iter()
+            .map(|c| c / (all.len() as f64 * w * span))
+            .collect(),
+        prior_density: 1.0 / span,
+    }
 }
 
 /// The model's band over the posterior samples for quantity `q` on `points` cycle counts

@@ -188,11 +188,32 @@ pub fn duty_section(
     life: Option<&LifeTable>,
     figs: Vec<FigureBlock>,
 ) -> Section {
+    let mut tables = vec![spectrum_table(sm, run)];
+    let mut paragraphs = vec![format!(
+        "The gearbox runs through {} operating bins. Every wear update advances all of them on the shared worn profile, each by its share of the block's cycles (docs/MODEL.md, section 10); the single-point figures above show the spectrum's wear and the response at bin {} (the monitoring bin). A bin whose share of the wear exceeds its share of the cycles wears the flanks faster than its time suggests.",
+        sm.len(),
+        sm.monitoring + 1
+    )];
+    if let Some(l) = life {
+        paragraphs.push(life_paragraph(l));
+        tables.push(life_table(l));
+    }
+    Section {
+        heading: "Duty cycle: wear and life under the load spectrum".into(),
+        paragraphs,
+        figures: figs,
+        tables,
+    }
+}
+
+/// The load spectrum's table: each bin's torque, speed, shares of cycles, time and pinion
+/// wear, and its dynamic factor on new and on the last teeth.
+fn spectrum_table(sm: &SpectrumModel, run: &SpectrumRun) -> TableBlock {
     let s = sm.spectrum();
     let time = time_shares(&s);
     let rank = ranking(run);
     let wear_of = |bin: usize| rank.iter().find(|b| b.bin == bin);
-    let spectrum = TableBlock {
+    TableBlock {
         caption: format!(
             "The load spectrum (torques on the {} shaft) and each bin's part of the pinion's wear ({} run).",
             match s.shaft(sm.case.operating.load_torque_shaft) {
@@ -230,60 +251,55 @@ pub fn duty_section(
             })
             .collect(),
         highlight_col: Some(5),
-    };
-    let mut tables = vec![spectrum];
-    let mut paragraphs = vec![format!(
-        "The gearbox runs through {} operating bins. Every wear update advances all of them on the shared worn profile, each by its share of the block's cycles (docs/MODEL.md, section 10); the single-point figures above show the spectrum's wear and the response at bin {} (the monitoring bin). A bin whose share of the wear exceeds its share of the cycles wears the flanks faster than its time suggests.",
-        sm.len(),
-        sm.monitoring + 1
-    )];
-    if let Some(l) = life {
-        paragraphs.push(format!(
-            "Life to {} µm of maximum pinion wear ({}): {} cycles under the spectrum ({} h); the linear mix of the bins' own lives, 1 / Σ s_i / L_i, gives {} cycles. Where the two differ, the bins interact through the worn profile.",
-            l.limit_um,
-            l.mode.label(),
-            life_words(&l.spectrum),
-            hours(l.spectrum_hours),
-            l.linear_mix_cycles.map_or("-".into(), format_value)
-        ));
-        let mut rows = vec![vec![
-            "spectrum".into(),
-            "-".into(),
-            "-".into(),
-            life_words(&l.spectrum),
-            hours(l.spectrum_hours),
-        ]];
-        rows.extend(l.bins.iter().map(|b| {
-            vec![
-                format!("bin {} alone", b.bin),
-                format_value(b.torque_nm),
-                format_value(b.input_speed_hz),
-                life_words(&b.life),
-                hours(b.hours),
-            ]
-        }));
-        tables.push(TableBlock {
-            caption:
-                "Cycles (and hours) to the wear limit under the spectrum and at each bin alone."
-                    .into(),
-            header: [
-                "duty",
-                "torque (N m)",
-                "input speed (Hz)",
-                "cycles to the limit",
-                "hours",
-            ]
-            .map(String::from)
-            .to_vec(),
-            rows,
-            highlight_col: Some(3),
-        });
     }
-    Section {
-        heading: "Duty cycle: wear and life under the load spectrum".into(),
-        paragraphs,
-        figures: figs,
-        tables,
+}
+
+/// The sentence on life to the wear limit under the spectrum against the linear mix of
+/// the bins' own lives.
+fn life_paragraph(l: &LifeTable) -> String {
+    format!(
+        "Life to {} µm of maximum pinion wear ({}): {} cycles under the spectrum ({} h); the linear mix of the bins' own lives, 1 / Σ s_i / L_i, gives {} cycles. Where the two differ, the bins interact through the worn profile.",
+        l.limit_um,
+        l.mode.label(),
+        life_words(&l.spectrum),
+        hours(l.spectrum_hours),
+        l.linear_mix_cycles.map_or("-".into(), format_value)
+    )
+}
+
+/// The table of cycles (and hours) to the wear limit under the spectrum and at each bin
+/// alone.
+fn life_table(l: &LifeTable) -> TableBlock {
+    let mut rows = vec![vec![
+        "spectrum".into(),
+        "-".into(),
+        "-".into(),
+        life_words(&l.spectrum),
+        hours(l.spectrum_hours),
+    ]];
+    rows.extend(l.bins.iter().map(|b| {
+        vec![
+            format!("bin {} alone", b.bin),
+            format_value(b.torque_nm),
+            format_value(b.input_speed_hz),
+            life_words(&b.life),
+            hours(b.hours),
+        ]
+    }));
+    TableBlock {
+        caption: "Cycles (and hours) to the wear limit under the spectrum and at each bin alone."
+            .into(),
+        header: [
+            "duty",
+            "torque (N m)",
+            "input speed (Hz)",
+            "cycles to the limit",
+            "hours",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+        highlight_col: Some(3),
     }
 }
 

@@ -112,52 +112,8 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
         ),
     );
     out.push(fig("fig05_velocity_y_pinion", 5, f, t));
-    let f_mesh = model.params.operating.mesh_frequency_hz;
-    if let Some(mid) = study
-        .wear_states
-        .iter()
-        .find(|s| (s.max_wear_um - 0.5).abs() < 1e-9)
-    {
-        let spec = velocity_y_spectrum(&mid.response);
-        let amp: Vec<f64> = spec.amplitude.iter().map(|a| a * 1e3).collect();
-        let (fr, amp) = spectrum_rows(&spec.frequency_hz, &amp, 5.0 * f_mesh);
-        let title = format!(
-            "Spectrum of the pinion y velocity at {} µm wear",
-            mid.max_wear_um
-        );
-        let figure = single(
-            &title,
-            spectrum_panel("amplitude (mm/s)", &fr, &amp, f_mesh),
-        );
-        let table = Table::new()
-            .col("frequency_hz", fr)
-            .col("amplitude_mm_per_s", amp);
-        out.push(fig("fig06_spectrum", 6, figure, table));
-    }
-    let wear: Vec<f64> = study.wear_states.iter().map(|s| s.max_wear_um).collect();
-    let mut curves = Vec::new();
-    let mut table = Table::new().col("max_wear_um", wear.clone());
-    for h in 0..4 {
-        let a: Vec<f64> = study
-            .wear_states
-            .iter()
-            .map(|s| s.summary.velocity_y_pinion_harmonics_m_per_s[h] * 1e3)
-            .collect();
-        table = table.col(&format!("harmonic{}_mm_per_s", h + 1), a.clone());
-        let name = super::figures::harmonic_label(h + 1);
-        curves.push(Curve::new(name, wear.clone(), a));
-    }
-    // Three wear states are three points each: markers only, no line between them that
-    // would suggest values at wear depths that were not computed.
-    let mut harmonics = points_panel("maximum pinion wear depth (µm)", "amplitude (mm/s)", curves);
-    for s in &mut harmonics.series {
-        s.style = LineStyle::Points;
-    }
-    let figure = single(
-        "Mesh-harmonic amplitudes of the pinion y velocity against wear",
-        harmonics,
-    );
-    out.push(fig("fig07_mesh_harmonics", 7, figure, table));
+    out.extend(fig06_spectrum(model, study));
+    out.push(fig07_mesh_harmonics(study));
     let (f, t) = time_figure(
         model,
         study,
@@ -190,6 +146,63 @@ pub fn section41_figures(model: &Model, study: &PaperStudy) -> Vec<Fig> {
     );
     out.push(fig("fig10_friction_force", 10, f, t));
     out
+}
+
+/// Figure 6: the spectrum of the pinion's y velocity at the 0.5 µm wear state, up to five
+/// mesh frequencies (none when the study has no such state).
+fn fig06_spectrum(model: &Model, study: &PaperStudy) -> Option<Fig> {
+    let f_mesh = model.params.operating.mesh_frequency_hz;
+    if let Some(mid) = study
+        .wear_states
+        .iter()
+        .find(|s| (s.max_wear_um - 0.5).abs() < 1e-9)
+    {
+        let spec = velocity_y_spectrum(&mid.response);
+        let amp: Vec<f64> = spec.amplitude.iter().map(|a| a * 1e3).collect();
+        let (fr, amp) = spectrum_rows(&spec.frequency_hz, &amp, 5.0 * f_mesh);
+        let title = format!(
+            "Spectrum of the pinion y velocity at {} µm wear",
+            mid.max_wear_um
+        );
+        let figure = single(
+            &title,
+            spectrum_panel("amplitude (mm/s)", &fr, &amp, f_mesh),
+        );
+        let table = Table::new()
+            .col("frequency_hz", fr)
+            .col("amplitude_mm_per_s", amp);
+        return Some(fig("fig06_spectrum", 6, figure, table));
+    }
+    None
+}
+
+/// Figure 7: the first four mesh-harmonic amplitudes of the pinion's y velocity (mm/s)
+/// against the maximum wear depth (µm) of the wear states.
+fn fig07_mesh_harmonics(study: &PaperStudy) -> Fig {
+    let wear: Vec<f64> = study.wear_states.iter().map(|s| s.max_wear_um).collect();
+    let mut curves = Vec::new();
+    let mut table = Table::new().col("max_wear_um", wear.clone());
+    for h in 0..4 {
+        let a: Vec<f64> = study
+            .wear_states
+            .iter()
+            .map(|s| s.summary.velocity_y_pinion_harmonics_m_per_s[h] * 1e3)
+            .collect();
+        table = table.col(&format!("harmonic{}_mm_per_s", h + 1), a.clone());
+        let name = super::figures::harmonic_label(h + 1);
+        curves.push(Curve::new(name, wear.clone(), a));
+    }
+    // Three wear states are three points each: markers only, no line between them that
+    // would suggest values at wear depths that were not computed.
+    let mut harmonics = points_panel("maximum pinion wear depth (µm)", "amplitude (mm/s)", curves);
+    for s in &mut harmonics.series {
+        s.style = LineStyle::Points;
+    }
+    let figure = single(
+        "Mesh-harmonic amplitudes of the pinion y velocity against wear",
+        harmonics,
+    );
+    fig("fig07_mesh_harmonics", 7, figure, table)
 }
 
 /// Every figure of `gearwear run`, in the paper's order, each with its own table

@@ -318,9 +318,43 @@ pub fn build_report(
     meta: &RunMetadata,
 ) -> Report {
     let paper = !rows.is_empty();
-    let c = &model.case;
     let mut it = figs.into_iter();
     let mut take = |n: usize| it.by_ref().take(n).collect::<Vec<_>>();
+    let (title, intro, first) = opening(model, study, rows);
+    let tag = |s: &str| {
+        if paper {
+            format!(" (paper section {s})")
+        } else {
+            String::new()
+        }
+    };
+    let (d, q) = (&study.dynamic, &study.quasi_static);
+    let worn_figures = [d, q]
+        .iter()
+        .filter(|r| !super::worn_profile::shown_records(r).is_empty())
+        .count();
+    let stiffness = stiffness_section(model, tag("2"), take(1));
+    let wear_effects = wear_effects_section(model, study, tag("4.1"), take(7));
+    // Figs. 11-13 and the worn profiles of each run that updated.
+    let dynamic_effects = dynamic_effects_section(study, tag("4.2"), take(3 + worn_figures));
+    Report {
+        title,
+        intro_html: intro,
+        sections: vec![first, stiffness, wear_effects, dynamic_effects]
+            .into_iter()
+            .chain(super::teeth::teeth_section(model, take(usize::MAX)))
+            .collect(),
+        footer: format!(
+            "gearwear {} | case sha256 {} | command: run",
+            meta.version, meta.case_sha256
+        ),
+    }
+}
+
+/// The report's title, introduction (HTML) and first section: the paper comparison when
+/// `rows` has it, else the case summary.
+fn opening(model: &Model, study: &PaperStudy, rows: &[Compared]) -> (String, String, Section) {
+    let c = &model.case;
     let source = "<em>A Dynamic Wear Prediction Model for Studying the Interactions between Surface Wear and Dynamic Response of Spur Gears</em>, Coatings 2022, 12(9), 1250";
     let case_words = format!(
         "{}, {} Hz input (mesh frequency {:.0} Hz), {}, wear coefficient {:.2e} m²/N, {} cycles",
@@ -331,7 +365,7 @@ pub fn build_report(
         c.wear.coefficient_m2_per_n,
         cycles_words(c.wear.total_cycles)
     );
-    let (title, intro, first) = if paper {
+    if !rows.is_empty() {
         let table = comparison_table(
             "Our headline numbers beside the paper's (sections 4.1 and 4.2), under the paper's own contact model (perfect involutes meeting on the nominal path only, `contact.path` = \"nominal\") and under the default extended contact (tip corners touching beyond the path under load, docs/MODEL.md section 4.2). Deviations are discussed in docs/REPRODUCTION.md.",
             rows,
@@ -347,80 +381,76 @@ pub fn build_report(
             format!("<p>Dynamic wear study of a spur pair with the tribo-dynamic wear model of {source}, as gearwear implements it (docs/MODEL.md): {}.</p>", html::escape(&case_words)),
             Section { heading: "The case and its key results".into(), tables: vec![case_table(model, study)], ..Default::default() },
         )
-    };
-    let tag = |s: &str| {
-        if paper {
-            format!(" (paper section {s})")
-        } else {
-            String::new()
-        }
-    };
-    let method = if c.stiffness.fillet_foundation {
+    }
+}
+
+/// The mesh stiffness section (`tag`: the paper's section in brackets, or empty).
+fn stiffness_section(model: &Model, tag: String, figures: Vec<FigureBlock>) -> Section {
+    let method = if model.case.stiffness.fillet_foundation {
         "Potential energy method with the Sainsot fillet foundation"
     } else {
         "Potential energy method without the fillet foundation"
     };
-    let states = &study.wear_states;
+    Section {
+        heading: format!("Mesh stiffness{tag}"),
+        paragraphs: vec![format!(
+            "{method}: k_m from {:.3e} to {:.3e} N/m, mean {:.3e} N/m; contact ratio {:.4}.",
+            model.mesh.min_stiffness_n_per_m(),
+            model.mesh.max_stiffness_n_per_m(),
+            model.mesh.mean_stiffness_n_per_m(),
+            model.pair.contact_ratio
+        )],
+        figures,
+        tables: vec![],
+    }
+}
+
+/// The section on the effects of wear on the dynamic response: the wear states and their
+/// table.
+fn wear_effects_section(
+    model: &Model,
+    study: &PaperStudy,
+    tag: String,
+    figures: Vec<FigureBlock>,
+) -> Section {
     let list = |f: &dyn Fn(&crate::study::paper::WearStateResult) -> f64| {
-        states
+        study
+            .wear_states
             .iter()
             .map(|s| format!("{}", f(s)))
             .collect::<Vec<_>>()
             .join(", ")
     };
+    Section {
+        heading: format!("Effects of wear on the dynamic response{tag}"),
+        paragraphs: vec![
+            format!(
+                "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} µm, with the composite roughness the case's law gives at that depth ({} µm).",
+                list(&|s| s.max_wear_um),
+                list(&|s| (s.roughness_um * 1e4).round() / 1e4),
+            ),
+            format!("{} {}", load_sentence(model), poles_sentence(model)),
+        ],
+        figures,
+        tables: vec![states_table(study)],
+    }
+}
+
+/// The section on the effects of the dynamic response on wear: both wear runs' reach and
+/// maximum wear.
+fn dynamic_effects_section(study: &PaperStudy, tag: String, figures: Vec<FigureBlock>) -> Section {
     let (d, q) = (&study.dynamic, &study.quasi_static);
-    let worn_figures = [d, q]
-        .iter()
-        .filter(|r| !super::worn_profile::shown_records(r).is_empty())
-        .count();
-    Report {
-        title,
-        intro_html: intro,
-        sections: vec![
-            first,
-            Section {
-                heading: format!("Mesh stiffness{}", tag("2")),
-                paragraphs: vec![format!(
-                    "{method}: k_m from {:.3e} to {:.3e} N/m, mean {:.3e} N/m; contact ratio {:.4}.",
-                    model.mesh.min_stiffness_n_per_m(),
-                    model.mesh.max_stiffness_n_per_m(),
-                    model.mesh.mean_stiffness_n_per_m(),
-                    model.pair.contact_ratio
-                )],
-                figures: take(1),
-                tables: vec![],
-            },
-            Section {
-                heading: format!("Effects of wear on the dynamic response{}", tag("4.1")),
-                paragraphs: vec![
-                    format!(
-                        "Wear states: the dynamic wear study's own profile scaled to a maximum pinion wear of {} µm, with the composite roughness the case's law gives at that depth ({} µm).",
-                        list(&|s| s.max_wear_um),
-                        list(&|s| (s.roughness_um * 1e4).round() / 1e4),
-                    ),
-                    format!("{} {}", load_sentence(model), poles_sentence(model)),
-                ],
-                figures: take(7),
-                tables: vec![states_table(study)],
-            },
-            Section {
-                heading: format!("Effects of the dynamic response on wear{}", tag("4.2")),
-                paragraphs: vec![format!(
-                    "Wear study to {} cycles: {} and {}; maximum pinion wear {} µm dynamic and {} µm quasi-static.",
-                    cycles_words(cycles_reached(study)),
-                    updates_words(d.records.len().saturating_sub(1), "dynamic"),
-                    updates_words(q.records.len().saturating_sub(1), "quasi-static"),
-                    html::format_value(wear_at_um(d, cycles_reached(study))),
-                    html::format_value(wear_at_um(q, cycles_reached(study))),
-                )],
-                // Figs. 11-13 and the worn profiles of each run that updated.
-                figures: take(3 + worn_figures),
-                tables: vec![],
-            },
-        ]
-        .into_iter()
-        .chain(super::teeth::teeth_section(model, take(usize::MAX)))
-        .collect(),
-        footer: format!("gearwear {} | case sha256 {} | command: run", meta.version, meta.case_sha256),
+    Section {
+        heading: format!("Effects of the dynamic response on wear{tag}"),
+        paragraphs: vec![format!(
+            "Wear study to {} cycles: {} and {}; maximum pinion wear {} µm dynamic and {} µm quasi-static.",
+            cycles_words(cycles_reached(study)),
+            updates_words(d.records.len().saturating_sub(1), "dynamic"),
+            updates_words(q.records.len().saturating_sub(1), "quasi-static"),
+            html::format_value(wear_at_um(d, cycles_reached(study))),
+            html::format_value(wear_at_um(q, cycles_reached(study))),
+        )],
+        figures,
+        tables: vec![],
     }
 }

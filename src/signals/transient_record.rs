@@ -164,7 +164,6 @@ pub(crate) fn transient_record(
     let aa = AntiAliasFilter::design(fs, acq.anti_alias_attenuation_db);
     let rate = aa.internal_rate_hz;
     let lead_n = (LEAD_S * rate).round() as usize;
-    let w = 1.0 / rate;
     let body = sampled.cells();
     let n = fast_len(lead_n + body + (LEAD_S * rate) as usize);
     let mut planner = RealFftPlanner::<f64>::new();
@@ -177,34 +176,7 @@ pub(crate) fn transient_record(
         s
     };
     let df = rate / n as f64;
-    // Cell means are the box-filtered signal at the cell centres (i + 1/2) w: divide the
-    // box out and move back half a cell, so sample i is the signal at i w.
-    let unbox: Vec<Complex64> = (0..n / 2 + 1)
-        .map(|k| {
-            let f = k as f64 * df;
-            Complex64::from_polar(1.0 / box_response(f, w), -PI * f * w)
-        })
-        .collect();
-    let inputs: Vec<Vec<Complex64>> = (0..4)
-        .map(|j| {
-            // The steady state's exact series (as a steady record takes it in), every
-            // harmonic below the internal Nyquist frequency.
-            let harmonics = (0.5 * rate * lead.period_s).floor() as usize;
-            let p = PeriodicSignal::from_hermite(&lead.signal(j), harmonics);
-            // The lead-in as cell means too: the box-filtered series at the cell centres.
-            let boxed = p.map(|k, f| p.coefficients[k] * box_response(f, w));
-            let mut x = boxed.sample((0.5 - lead_n as f64) * w, rate, lead_n);
-            x.extend(sampled.means(j));
-            // The mean force does not reach an accelerometer (zero accelerance at 0 Hz);
-            // removing it keeps the zero padding from acting as a step.
-            let mean = x.iter().sum::<f64>() / x.len() as f64;
-            x.iter_mut().for_each(|v| *v -= mean);
-            x.resize(n, 0.0);
-            let mut s = spectrum_of(&mut x);
-            s.iter_mut().zip(&unbox).for_each(|(c, u)| *c *= u);
-            s
-        })
-        .collect();
+    let inputs = force_spectra(sampled, lead, &spectrum_of, n, lead_n, rate);
     let h_aa = aa.response_grid(n);
     let back = |spec: &mut Vec<Complex64>| -> Vec<f64> {
         if let Some(last) = spec.last_mut() {
@@ -237,14 +209,7 @@ pub(crate) fn transient_record(
             (name.clone(), back(&mut spec))
         })
         .collect();
-    let np = chain.tachometer.pulses_per_revolution as f64;
-    let u = |t: f64| np * tach_angle(t) / (2.0 * PI);
-    let mut tach: Vec<f64> = (0..lead_n + body)
-        .map(|i| {
-            let t = (i as f64 - lead_n as f64) / rate;
-            pulse_mean(u(t - 0.5 / rate), u(t + 0.5 / rate))
-        })
-        .collect();
+    let mut tach = tach_cells(chain, tach_angle, lead_n + body, lead_n, rate);
     tach.resize(n, 0.0);
     let mut ts = spectrum_of(&mut tach);
     for (c, h) in ts.iter_mut().zip(&h_aa) {
@@ -255,6 +220,69 @@ pub(crate) fn transient_record(
         channels,
         tachometer_v: back(&mut ts),
     }
+}
+
+/// The spectra (length `n` / 2 + 1, internal `rate` in Hz) of the four bearing forces of
+/// the record: `lead_n` cells of the steady state `lead` then the transient's cell means,
+/// mean removed, zero-padded to `n`, the cells' box filter divided out and moved back
+/// half a cell so that sample i is the force at i / rate.
+fn force_spectra(
+    sampled: &ForceSampler,
+    lead: &BearingForces,
+    spectrum_of: &dyn Fn(&mut Vec<f64>) -> Vec<Complex64>,
+    n: usize,
+    lead_n: usize,
+    rate: f64,
+) -> Vec<Vec<Complex64>> {
+    let w = 1.0 / rate;
+    let df = rate / n as f64;
+    // Cell means are the box-filtered signal at the cell centres (i + 1/2) w: divide the
+    // box out and move back half a cell, so sample i is the signal at i w.
+    let unbox: Vec<Complex64> = (0..n / 2 + 1)
+        .map(|k| {
+            let f = k as f64 * df;
+            Complex64::from_polar(1.0 / box_response(f, w), -PI * f * w)
+        })
+        .collect();
+    (0..4)
+        .map(|j| {
+            // The steady state's exact series (as a steady record takes it in), every
+            // harmonic below the internal Nyquist frequency.
+            let harmonics = (0.5 * rate * lead.period_s).floor() as usize;
+            let p = PeriodicSignal::from_hermite(&lead.signal(j), harmonics);
+            // The lead-in as cell means too: the box-filtered series at the cell centres.
+            let boxed = p.map(|k, f| p.coefficients[k] * box_response(f, w));
+            let mut x = boxed.sample((0.5 - lead_n as f64) * w, rate, lead_n);
+            x.extend(sampled.means(j));
+            // The mean force does not reach an accelerometer (zero accelerance at 0 Hz);
+            // removing it keeps the zero padding from acting as a step.
+            let mean = x.iter().sum::<f64>() / x.len() as f64;
+            x.iter_mut().for_each(|v| *v -= mean);
+            x.resize(n, 0.0);
+            let mut s = spectrum_of(&mut x);
+            s.iter_mut().zip(&unbox).for_each(|(c, u)| *c *= u);
+            s
+        })
+        .collect()
+}
+
+/// The tachometer's voltage (V) as cell means at the internal `rate` (Hz): `cells` cells,
+/// the first `lead_n` of them before t = 0, each the pulse train's mean over its cell.
+fn tach_cells(
+    chain: &SignalChain,
+    tach_angle: &dyn Fn(f64) -> f64,
+    cells: usize,
+    lead_n: usize,
+    rate: f64,
+) -> Vec<f64> {
+    let np = chain.tachometer.pulses_per_revolution as f64;
+    let u = |t: f64| np * tach_angle(t) / (2.0 * PI);
+    (0..cells)
+        .map(|i| {
+            let t = (i as f64 - lead_n as f64) / rate;
+            pulse_mean(u(t - 0.5 / rate), u(t + 0.5 / rate))
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -17,7 +17,7 @@ use crate::config::planetary::Member;
 use crate::dynamics::planetary_dynamic::{MeshStiffnessSource, PlanetaryDynamic};
 use crate::dynamics::planetary_lumped::PlanetaryLumped;
 use crate::dynamics::planetary_steady::{
-    solve_planetary_steady_state, PlanetaryResponse, PlanetarySettings,
+    solve_planetary_steady_state, PlanetaryDynamicsError, PlanetaryResponse, PlanetarySettings,
 };
 
 /// A planetary case's dynamic model and its steady state.
@@ -106,8 +106,8 @@ impl PlanetaryDynamics {
     }
 
     /// The steady state (`dynamics::planetary_steady`).
-    pub fn solve(&mut self) -> Result<PlanetaryResponse, String> {
-        solve_planetary_steady_state(&mut self.model, &self.settings).map_err(|e| e.to_string())
+    pub fn solve(&mut self) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+        solve_planetary_steady_state(&mut self.model, &self.settings)
     }
 }
 

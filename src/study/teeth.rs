@@ -62,7 +62,7 @@ impl ToothInputs {
         if !problems.is_empty() {
             return Err(std::mem::take(&mut problems));
         }
-        let errors = gear_errors(case, pair).map_err(|e| vec![e])?;
+        let errors = gear_errors(case, pair).map_err(|e| vec![e.to_string()])?;
         let n = grid.len();
         let build = |member: Member, e: &GearErrors| flanks_of(case, pair, mesh, grid, member, e);
         let runout = |e: &GearErrors, phase_deg: Option<f64>, speed: f64| Runout {

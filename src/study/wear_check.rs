@@ -11,7 +11,7 @@
 //! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
 
 use super::model::Model;
-use super::wear_loop::{next_update, Next, WearMode, WearRun};
+use super::wear_loop::{next_update, Next, UpdateRecord, WearMode, WearRun};
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
 /// floating-point operations, so only the rounding of the cycle difference (exact for
@@ -19,120 +19,159 @@ use super::wear_loop::{next_update, Next, WearMode, WearRun};
 /// edit of a value by more than a part in a billion.
 const CHAIN_TOL: f64 = 1e-9;
 
+/// Why a stored run cannot be taken as this model's: its records are not ones the model
+/// could have produced (the message says which record and what differs), or the model to
+/// check them against could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StoredRunError {
+    /// The records differ from what the model gives (which record, what differs).
+    #[error("{0}")]
+    Mismatch(String),
+    /// The model the records are checked against cannot be built (its message).
+    #[error("{0}")]
+    Model(String),
+}
+
+impl StoredRunError {
+    /// The message with each "line " (of a checkpoint's log) spelled `spelled` instead: a
+    /// dataset's trajectories name their lines "record line ".
+    pub fn lines_named(self, spelled: &str) -> Self {
+        match self {
+            StoredRunError::Mismatch(m) => StoredRunError::Mismatch(m.replace("line ", spelled)),
+            e => e,
+        }
+    }
+}
+
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= CHAIN_TOL * a.abs().max(b.abs()) + 1e-30
 }
 
 /// Check `run` against `model` (see the module docs); the error says which record and
 /// what is wrong.
-pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), String> {
-    let n = model.grid.len();
-    let total = model.case.wear.total_cycles;
+pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), StoredRunError> {
     let Some(first) = run.records.first() else {
-        return Err("holds no update".into());
+        return Err(StoredRunError::Mismatch("holds no update".into()));
     };
     if first.wear.cycles != 0.0
         || first.wear.max_pinion_m() != 0.0
         || first.wear.max_gear_m() != 0.0
     {
-        return Err("its first update is not the new teeth at cycle 0".into());
+        return Err(StoredRunError::Mismatch(
+            "its first update is not the new teeth at cycle 0".into(),
+        ));
     }
     for (i, r) in run.records.iter().enumerate() {
-        let at = |what: String| format!("update {i}: {what}");
-        for (name, v) in [
-            ("pinion wear", &r.wear.pinion_m),
-            ("gear wear", &r.wear.gear_m),
-            ("pinion wear increment", &r.increment_pinion_m),
-            ("gear wear increment", &r.increment_gear_m),
-        ] {
-            if v.len() != n {
-                return Err(at(format!(
-                    "{name} has {} points, the case's profile grid has {n}",
-                    v.len()
-                )));
-            }
-            if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
-                return Err(at(format!("{name} holds {x}, not a finite value >= 0")));
-            }
+        let at = |what: String| StoredRunError::Mismatch(format!("update {i}: {what}"));
+        record_problem(run.mode, r, model).map_err(at)?;
+        if i > 0 {
+            step_problem(&run.records[i - 1], r).map_err(at)?;
         }
-        if let Some(problem) = tooth_problem(model, r) {
-            return Err(at(problem));
+    }
+    Ok(())
+}
+
+/// The first problem of record `r` of a run in `mode` on its own: wear and increments on
+/// the case's grid, finite and >= 0, the per-tooth state, the end state the mode keeps,
+/// cycles within the case's total, the roughness the case's law gives at its wear.
+fn record_problem(mode: WearMode, r: &UpdateRecord, model: &Model) -> Result<(), String> {
+    let n = model.grid.len();
+    let total = model.case.wear.total_cycles;
+    for (name, v) in [
+        ("pinion wear", &r.wear.pinion_m),
+        ("gear wear", &r.wear.gear_m),
+        ("pinion wear increment", &r.increment_pinion_m),
+        ("gear wear increment", &r.increment_gear_m),
+    ] {
+        if v.len() != n {
+            return Err(format!(
+                "{name} has {} points, the case's profile grid has {n}",
+                v.len()
+            ));
         }
-        if r.path_rho1_m.len() != r.path_load_n.len() {
-            return Err(at("path positions and loads differ in length".into()));
+        if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
+            return Err(format!("{name} holds {x}, not a finite value >= 0"));
         }
-        // A dynamic update keeps the periodic state its response ended on (the next
-        // update's warm start); a quasi-static one has none.
-        match (run.mode, &r.end_state) {
-            (WearMode::Dynamic, Some(y)) if y.len() == model.state_len() && y.iter().all(|v| v.is_finite()) => {}
-            (WearMode::Dynamic, _) => {
-                return Err(at(format!(
-                    "a dynamic update must hold its periodic end state ({} finite numbers): this is not a dynamic run's record",
-                    model.state_len()
-                )))
-            }
-            (WearMode::QuasiStatic, None) => {}
-            (WearMode::QuasiStatic, Some(_)) => {
-                return Err(at(
-                    "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one".into(),
-                ))
-            }
+    }
+    if let Some(problem) = tooth_problem(model, r) {
+        return Err(problem);
+    }
+    if r.path_rho1_m.len() != r.path_load_n.len() {
+        return Err("path positions and loads differ in length".into());
+    }
+    // A dynamic update keeps the periodic state its response ended on (the next
+    // update's warm start); a quasi-static one has none.
+    match (mode, &r.end_state) {
+        (WearMode::Dynamic, Some(y)) if y.len() == model.state_len() && y.iter().all(|v| v.is_finite()) => {}
+        (WearMode::Dynamic, _) => {
+            return Err(format!(
+                "a dynamic update must hold its periodic end state ({} finite numbers): this is not a dynamic run's record",
+                model.state_len()
+            ))
         }
-        if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
-            return Err(at(format!(
-                "cycles {} outside 0..{total} (wear.total_cycles)",
-                r.wear.cycles
-            )));
+        (WearMode::QuasiStatic, None) => {}
+        (WearMode::QuasiStatic, Some(_)) => {
+            return Err(
+                "holds a dynamic end state: this is a dynamic run's record, not a quasi-static one".into(),
+            )
         }
-        if !close(r.roughness_um, model.roughness_for(&r.wear)) {
-            return Err(at(format!(
-                "roughness {} µm is not the case's {} µm at this wear depth",
-                r.roughness_um,
-                model.roughness_for(&r.wear)
-            )));
-        }
-        if i == 0 {
-            continue;
-        }
-        let prev = &run.records[i - 1];
-        let dn = r.wear.cycles - prev.wear.cycles;
-        if dn <= 0.0 {
-            return Err(at(format!(
-                "cycles {} do not follow the previous update's {}",
-                r.wear.cycles, prev.wear.cycles
-            )));
-        }
-        let advanced = |h0: &[f64], d: &[f64], h1: &[f64]| {
-            h0.iter()
-                .zip(d)
-                .zip(h1)
-                .position(|((a, d), b)| !close(a + dn * d, *b))
+    }
+    if !(r.wear.cycles.is_finite() && r.wear.cycles <= total + 0.5) {
+        return Err(format!(
+            "cycles {} outside 0..{total} (wear.total_cycles)",
+            r.wear.cycles
+        ));
+    }
+    if !close(r.roughness_um, model.roughness_for(&r.wear)) {
+        return Err(format!(
+            "roughness {} µm is not the case's {} µm at this wear depth",
+            r.roughness_um,
+            model.roughness_for(&r.wear)
+        ));
+    }
+    Ok(())
+}
+
+/// The first problem of record `r` against the record `prev` before it: cycles that do
+/// not increase, or a wear (overall or per tooth) that is not the previous wear plus the
+/// cycles between them times the previous increment.
+fn step_problem(prev: &UpdateRecord, r: &UpdateRecord) -> Result<(), String> {
+    let dn = r.wear.cycles - prev.wear.cycles;
+    if dn <= 0.0 {
+        return Err(format!(
+            "cycles {} do not follow the previous update's {}",
+            r.wear.cycles, prev.wear.cycles
+        ));
+    }
+    let advanced = |h0: &[f64], d: &[f64], h1: &[f64]| {
+        h0.iter()
+            .zip(d)
+            .zip(h1)
+            .position(|((a, d), b)| !close(a + dn * d, *b))
+    };
+    if let Some(j) = advanced(
+        &prev.wear.pinion_m,
+        &prev.increment_pinion_m,
+        &r.wear.pinion_m,
+    )
+    .or_else(|| advanced(&prev.wear.gear_m, &prev.increment_gear_m, &r.wear.gear_m))
+    {
+        return Err(format!(
+            "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
+        ));
+    }
+    if let (Some(t0), Some(d), Some(t1)) = (&prev.wear.teeth, &prev.increment_teeth, &r.wear.teeth)
+    {
+        let teeth = |a: &[Vec<f64>], d: &[Vec<f64>], b: &[Vec<f64>]| {
+            (0..a.len()).find_map(|t| advanced(&a[t], &d[t], &b[t]).map(|j| (t, j)))
         };
-        if let Some(j) = advanced(
-            &prev.wear.pinion_m,
-            &prev.increment_pinion_m,
-            &r.wear.pinion_m,
-        )
-        .or_else(|| advanced(&prev.wear.gear_m, &prev.increment_gear_m, &r.wear.gear_m))
-        {
-            return Err(at(format!(
-                "the wear at point {j} is not the previous wear plus {dn} cycles of the previous increment"
-            )));
-        }
-        if let (Some(t0), Some(d), Some(t1)) =
-            (&prev.wear.teeth, &prev.increment_teeth, &r.wear.teeth)
-        {
-            let teeth = |a: &[Vec<f64>], d: &[Vec<f64>], b: &[Vec<f64>]| {
-                (0..a.len()).find_map(|t| advanced(&a[t], &d[t], &b[t]).map(|j| (t, j)))
-            };
-            let bad = teeth(&t0.pinion_m, &d.pinion_m, &t1.pinion_m)
-                .map(|(t, j)| ("pinion", t, j))
-                .or_else(|| teeth(&t0.gear_m, &d.gear_m, &t1.gear_m).map(|(t, j)| ("gear", t, j)));
-            if let Some((g, t, j)) = bad {
-                return Err(at(format!(
-                    "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
-                )));
-            }
+        let bad = teeth(&t0.pinion_m, &d.pinion_m, &t1.pinion_m)
+            .map(|(t, j)| ("pinion", t, j))
+            .or_else(|| teeth(&t0.gear_m, &d.gear_m, &t1.gear_m).map(|(t, j)| ("gear", t, j)));
+        if let Some((g, t, j)) = bad {
+            return Err(format!(
+                "the wear of {g} tooth {t} at point {j} is not its previous wear plus {dn} cycles of its previous increment"
+            ));
         }
     }
     Ok(())
@@ -177,7 +216,7 @@ fn records_to_recompute(n: usize) -> Vec<usize> {
 /// random sample. A record that this case's model does not reproduce (an edit with
 /// recomputed checksums, a record of another case under this case's header, a spliced
 /// tail) is refused, naming its line in the checkpoint (the header is line 1).
-pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
+pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), StoredRunError> {
     check_wear_run(run, model)?;
     for i in records_to_recompute(run.records.len()) {
         let prev = i.checked_sub(1).map(|j| &run.records[j]);
@@ -185,21 +224,21 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), String> {
         let again = match next_update(model, run.mode, prev) {
             Ok(Next::Record(r)) => *r,
             Ok(_) | Err(_) => {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "line {line} (update {i}): this case's model makes no such update when it is recomputed from the record before it: the record is not this case's"
-                ))
+                )))
             }
         };
         let same =
             serde_json::to_string(&again).ok() == serde_json::to_string(&run.records[i]).ok();
         if !same {
-            return Err(format!(
+            return Err(StoredRunError::Mismatch(format!(
                 "line {line} (update {i}) is not what this case's model computes from the record before it (recomputed: max pinion wear {:.6e} m, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the record is not this case's, or was edited",
                 again.wear.max_pinion_m(),
                 again.summary.mesh_force_mean_n,
                 run.records[i].wear.max_pinion_m(),
                 run.records[i].summary.mesh_force_mean_n,
-            ));
+            )));
         }
     }
     Ok(())

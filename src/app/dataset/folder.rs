@@ -15,7 +15,7 @@
 use crate::checksum::sha256_hex;
 use crate::io::columns_csv::columns_csv;
 use crate::io::dir::Dir;
-use crate::io::parquet::parquet_bytes;
+use crate::io::parquet::{parquet_bytes, Column};
 use crate::io::set_state::{check_replaceable, read_all, Ours, SetState};
 use crate::io::{OutputDir, OutputError};
 use crate::report::artifacts::{stage_figures, FigureFile};
@@ -394,13 +394,39 @@ pub fn stage_index_and_metadata(
     out.stage("index.parquet", &pq)?;
     let csv = columns_csv(&cols).map_err(|e| BuildError::Format(format!("index.csv: {e}")))?;
     out.stage("index.csv", &csv)?;
-    if let Some(t) = trends(&cols) {
+    stage_trends(out, &cols, &unit, figures)?;
+    let mut metadata = body;
+    metadata["index_column_meanings"] = json!(units
+        .iter()
+        .map(|(n, _)| (n.clone(), json!(column_meaning(n))))
+        .collect::<serde_json::Map<String, Value>>());
+    metadata["index_columns"] = Value::Object(units_json);
+    metadata["trajectories"] = trajectories_json(root, &key);
+    metadata["records_present"] = json!(rows.len());
+    metadata["records_missing"] = json!(missing);
+    metadata["records_missing_count"] = json!(missing_count);
+    out.stage_json("metadata.json", &metadata)?;
+    Ok(Missing {
+        count: missing_count,
+        listed: missing,
+    })
+}
+
+/// Stage the indicator trends of the index columns `cols` (`indicator_trends.csv`, and
+/// its figure as `figures` says; `unit`: the channels' unit), when the index has any.
+fn stage_trends(
+    out: &mut OutputDir,
+    cols: &[Column],
+    unit: &str,
+    figures: FigureOutput,
+) -> Result<(), BuildError> {
+    if let Some(t) = trends(cols) {
         let table = columns_csv(&trend_columns(&t))
             .map_err(|e| BuildError::Format(format!("indicator_trends.csv: {e}")))?;
         out.stage("indicator_trends.csv", &table)?;
         let fig = FigureFile {
             path: "indicator_trends.png".into(),
-            figure: trend_figure(&t, &unit),
+            figure: trend_figure(&t, unit),
             width_px: 900,
             height_px: 1500,
             data: Some("indicator_trends.csv".into()),
@@ -408,13 +434,13 @@ pub fn stage_index_and_metadata(
         };
         stage_figures(out, &[fig], figures).map_err(|e| BuildError::Format(e.to_string()))?;
     }
-    let mut metadata = body;
-    metadata["index_column_meanings"] = json!(units
-        .iter()
-        .map(|(n, _)| (n.clone(), json!(column_meaning(n))))
-        .collect::<serde_json::Map<String, Value>>());
-    metadata["index_columns"] = Value::Object(units_json);
-    metadata["trajectories"] = json!(trajectories(root)
+    Ok(())
+}
+
+/// Each trajectory of dataset `key` in `root`: its condition, failure and end cycles,
+/// whether it stopped, and its updates' cycles and maximum pinion wear (µm).
+fn trajectories_json(root: &Path, key: &str) -> Value {
+    json!(trajectories(root)
         .iter()
         .filter(|t| t.dataset_key == key)
         .map(|t| json!({
@@ -426,15 +452,7 @@ pub fn stage_index_and_metadata(
             "update_cycles": t.trajectory.records.iter().map(|r| r.wear.cycles).collect::<Vec<_>>(),
             "update_max_wear_pinion_um": t.trajectory.records.iter().map(|r| r.wear.max_pinion_m() * 1e6).collect::<Vec<_>>(),
         }))
-        .collect::<Vec<_>>());
-    metadata["records_present"] = json!(rows.len());
-    metadata["records_missing"] = json!(missing);
-    metadata["records_missing_count"] = json!(missing_count);
-    out.stage_json("metadata.json", &metadata)?;
-    Ok(Missing {
-        count: missing_count,
-        listed: missing,
-    })
+        .collect::<Vec<_>>())
 }
 
 /// Whether record labels `l` are those the design described by `body` (the

@@ -197,6 +197,7 @@ pub(super) fn check_trajectories(inputs: &[&Path], key: &str) -> Result<(), Data
                     return Err("the description gives no run-to-failure limits".to_owned());
                 };
                 verify_trajectory(&model, max, limit * 1e-6, &t.trajectory)
+                    .map_err(|e| e.to_string())
             })();
             checked.err().map(|e| {
                 format!(

@@ -149,7 +149,7 @@ fn trajectory(
     {
         // Kept trajectories are used only when the wear law recomputes them.
         verify_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6, &t.trajectory)
-            .map_err(|e| kept_file_problem(root, &rel, &e))?;
+            .map_err(|e| kept_file_problem(root, &rel, &e.to_string()))?;
         return Ok(t.trajectory);
     }
     let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6)

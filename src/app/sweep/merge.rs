@@ -135,7 +135,7 @@ impl Job for SweepMergeJob {
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         let (tables, metas) = self.read()?;
-        let merged = SweepTable::merge(&tables).map_err(Problem::new)?;
+        let merged = SweepTable::merge(&tables).map_err(|e| Problem::new(e.to_string()))?;
         // Descriptions present must agree on the sweep itself (axes, run, base case): shards
         // of different sweeps can have disjoint case ids and would otherwise merge silently.
         // A merge's description carries the same identity forward, so a merge of merges (or

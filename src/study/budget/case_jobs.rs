@@ -460,7 +460,8 @@ mod tests {
         .unwrap();
         let msg = estimate(&big, Job::Run)
             .check(&Budget::DEFAULT)
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(msg.contains("load_spectrum.bins"), "{msg}");
     }
 
@@ -547,7 +548,8 @@ mod tests {
         ] {
             let e = estimate(&case(&sets), job)
                 .check(&Budget::DEFAULT)
-                .expect_err(&format!("{sets:?}"));
+                .expect_err(&format!("{sets:?}"))
+                .to_string();
             assert!(
                 e.contains(key) && e.contains("over its budget"),
                 "{sets:?}: {e}"

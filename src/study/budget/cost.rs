@@ -4,6 +4,17 @@
 
 use super::evaluation::SECONDS_PER_STEP;
 
+/// Why a run is over its budget (nothing was computed): each of memory, time and the
+/// give-up time of one failing evaluation that exceeds it, with its largest term and the
+/// keys that drive it. The remedy (lower those keys, or raise the budget) names arguments
+/// of the front ends: the job layer adds it (`app::budget`).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("the run is over its budget (nothing was computed): {}", .over.join("; "))]
+pub struct OverBudget {
+    /// One message per resource over the budget.
+    pub over: Vec<String>,
+}
+
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 /// Memory of the process before any work, bytes (the base of every estimate's memory).
 pub const BASE_BYTES: f64 = 64e6;
@@ -81,7 +92,7 @@ impl Estimate {
     }
 
     /// Ok, or why the run is over `budget`, naming the keys that drive its cost.
-    pub fn check(&self, budget: &Budget) -> Result<(), String> {
+    pub fn check(&self, budget: &Budget) -> Result<(), OverBudget> {
         let give_up = self.steps_to_give_up * SECONDS_PER_STEP;
         let (secs, bytes) = (self.seconds(), self.memory_bytes());
         let mut over = Vec::new();
@@ -120,10 +131,7 @@ impl Estimate {
         } else {
             // The remedy (lower those keys, or raise the budget) names arguments of the
             // front ends: the job layer adds it (`app::budget`).
-            Err(format!(
-                "the run is over its budget (nothing was computed): {}",
-                over.join("; ")
-            ))
+            Err(OverBudget { over })
         }
     }
 

@@ -425,7 +425,8 @@ mod tests {
         };
         let e = estimate_calibration(&case, &prior, &far)
             .check(&Budget::DEFAULT)
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("largest cycle count"), "{e}");
         let mut c = case.clone();
         c.calibration.wear_coefficient_min_m2_per_n = Some(1e-22);
@@ -450,7 +451,8 @@ mod tests {
         let p = Prior::from_case(&c).unwrap();
         let e = estimate_calibration(&c, &p, &job())
             .check(&Budget::DEFAULT)
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("calibration.grid_points"), "{e}");
         // A prediction of 1e6 samples: the fan values.
         let j = PredictionJob {
@@ -465,7 +467,8 @@ mod tests {
         };
         let e = estimate_prediction(&case, &prior, &j)
             .check(&Budget::DEFAULT)
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("samples"), "{e}");
         let j = PredictionJob {
             samples_in_shard: 2000,

@@ -161,7 +161,8 @@ mod tests {
         assert_eq!(excitation_periods_of(&big), 9797);
         let e = estimate(&big, Job::Run)
             .check(&Budget::DEFAULT)
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(
             e.contains("tooth-resolved") && e.contains("teeth.accuracy_grade"),
             "{e}"

@@ -28,115 +28,16 @@
 //! [condition.case]              # merged into the case: any keys of the case file
 //! ```
 
+use super::design_checks::{
+    chain_problems, label_problems, records_problems, run_to_failure_problems, steady_problems,
+};
+pub use super::design_file::{Condition, DatasetDesign, StateChoice};
+use super::design_file::{ConditionFile, DesignFile, RunToFailureFile};
 use crate::config::{load_case, Case};
-use serde::Deserialize;
 use toml::{Table, Value};
 
 /// Problems of a design, one message each, naming the key (`design.toml: key ...`).
 pub type DesignErrors = Vec<String>;
-
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct DesignFile {
-    case: Option<String>,
-    #[serde(default)]
-    set: Vec<String>,
-    transfer_path: Option<String>,
-    #[serde(default)]
-    seed: u64,
-    #[serde(default)]
-    run_to_failure: RunToFailureFile,
-    #[serde(default)]
-    operating: OperatingFile,
-    #[serde(default)]
-    records: RecordsFile,
-    #[serde(default)]
-    condition: Vec<ConditionFile>,
-}
-
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct RunToFailureFile {
-    states: Option<i64>,
-    cycles: Option<Vec<f64>>,
-    max_cycles: Option<f64>,
-    wear_limit_um: Option<f64>,
-}
-
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct OperatingFile {
-    input_speed_hz: Option<Vec<f64>>,
-    load_torque_nm: Option<Vec<f64>>,
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-struct RecordsFile {
-    noise_realisations: i64,
-    csv: bool,
-    disk_budget_gib: f64,
-}
-
-impl Default for RecordsFile {
-    fn default() -> Self {
-        Self {
-            noise_realisations: 1,
-            csv: false,
-            disk_budget_gib: 10.0,
-        }
-    }
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ConditionFile {
-    name: String,
-    fault: Option<String>,
-    severity: Option<f64>,
-    #[serde(default)]
-    case: Table,
-}
-
-/// Which states of a wear trajectory are recorded.
-#[derive(Debug, Clone, PartialEq)]
-pub enum StateChoice {
-    /// This many, evenly spaced in cycles from 0 to the trajectory's end.
-    Count(usize),
-    /// At these pinion cycle counts (ascending).
-    Cycles(Vec<f64>),
-}
-
-/// A fault type and severity: the case it is modelled by, and its labels.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Condition {
-    pub name: String,
-    /// What the case models ([`fault_label`]): never a free text.
-    pub fault: String,
-    /// The user's grade of the fault: 0 without one (or ungraded), >= 0 with one.
-    pub severity: f64,
-    /// The resolved case of this condition at the design's base operating point.
-    pub case: Case,
-}
-
-/// A validated design.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DatasetDesign {
-    pub seed: u64,
-    /// The transfer-path file, as written in the design (resolved against its folder).
-    pub transfer_path: Option<std::path::PathBuf>,
-    pub states: StateChoice,
-    pub max_cycles: f64,
-    pub wear_limit_um: f64,
-    pub speeds_hz: Vec<f64>,
-    pub torques_nm: Vec<f64>,
-    pub noise_realisations: usize,
-    pub csv: bool,
-    pub disk_budget_gib: f64,
-    pub conditions: Vec<Condition>,
-    /// The design's text, for the metadata.
-    pub text: String,
-}
 
 /// Most records a dataset may have: 2^53, so every record id is exact in every number
 /// format that reads the index (and no count of the plan can wrap).
@@ -348,39 +249,6 @@ fn state_choice(
     }
 }
 
-/// Problems of the trajectories' length and failure limit: `max_cycles` in range and
-/// beyond the last recorded state, `wear_limit_um` in range.
-fn run_to_failure_problems(
-    states: &StateChoice,
-    max_cycles: f64,
-    wear_limit_um: f64,
-    key: &dyn Fn(&str) -> String,
-) -> Vec<String> {
-    let mut p = Vec::new();
-    if !(1.0..=1e11).contains(&max_cycles) {
-        p.push(format!(
-            "{} = {max_cycles} is invalid: expected a number in [1, 1e11]",
-            key("run_to_failure.max_cycles")
-        ));
-    }
-    if let StateChoice::Cycles(c) = states {
-        if c.last().is_some_and(|l| *l > max_cycles) {
-            p.push(format!(
-                "{} ends at {} cycles, beyond `run_to_failure.max_cycles` = {max_cycles}",
-                key("run_to_failure.cycles"),
-                c[c.len() - 1]
-            ));
-        }
-    }
-    if !(wear_limit_um > 0.0 && wear_limit_um <= 1000.0) {
-        p.push(format!(
-            "{} = {wear_limit_um} is invalid: expected a number in (0, 1000]",
-            key("run_to_failure.wear_limit_um")
-        ));
-    }
-    p
-}
-
 /// An operating axis (`shown`: its key as messages name it): the values given, each in
 /// [lo, hi], or the base case's one value `dflt`.
 fn axis(
@@ -400,26 +268,6 @@ fn axis(
         }
         Some(v) => v.clone(),
     }
-}
-
-/// Problems of `[records]`: the noise realisations and the disk budget out of range.
-fn records_problems(rec: &RecordsFile, key: &dyn Fn(&str) -> String) -> Vec<String> {
-    let mut p = Vec::new();
-    if !(1..=1_000_000).contains(&rec.noise_realisations) {
-        p.push(format!(
-            "{} = {} is invalid: expected a whole number in [1, 1000000]",
-            key("records.noise_realisations"),
-            rec.noise_realisations
-        ));
-    }
-    if !(rec.disk_budget_gib > 0.0 && rec.disk_budget_gib <= 1e6) {
-        p.push(format!(
-            "{} = {} is invalid: expected a number in (0, 1e6]",
-            key("records.disk_budget_gib"),
-            rec.disk_budget_gib
-        ));
-    }
-    p
 }
 
 /// The conditions (one healthy condition when the design gives none), each its name
@@ -496,91 +344,6 @@ pub fn fault_label(case: &Case) -> String {
     } else {
         "none".into()
     }
-}
-
-/// Problems of a condition's `fault` and `severity` against what its case models
-/// (`label`): a label the case does not model (a "crack" with no crack, a misspelt or
-/// free-text label), a severity with no fault, a negative severity.
-fn label_problems(c: &ConditionFile, label: &str, at: &str) -> Vec<String> {
-    let mut p = Vec::new();
-    if let Some(given) = &c.fault {
-        if given != label {
-            p.push(format!(
-                "{at}: `fault` = {given:?} is not what the condition's case models ({label:?}): the label is derived from the case's `[[fault]]` tables (\"crack\", \"spall\", \"broken_tip\") and `[teeth]` errors (\"tooth_errors\"), \"none\" without either; give `fault = {label:?}` or leave it out"
-            ));
-        }
-    }
-    match (label, c.severity) {
-        (_, Some(s)) if !s.is_finite() => {
-            p.push(format!("{at}: `severity` = {s} must be a finite number"))
-        }
-        ("none", Some(s)) if s != 0.0 => p.push(format!(
-            "{at}: `severity` = {s} but the condition's case models no fault: a severity needs a `[[fault]]` table or `[teeth]` errors in `[condition.case]` (or leave it out: 0)"
-        )),
-        ("none", _) => {}
-        (_, Some(s)) if s < 0.0 => p.push(format!(
-            "{at}: `severity` = {s} is invalid for a condition that models {label:?}: expected a number >= 0 (your grade of the fault; absent: 0, ungraded)"
-        )),
-        _ => {}
-    }
-    p
-}
-
-/// Problems of settings a dataset cannot honour: its records are steady states (each
-/// state at its speed and load), so a run-up or a torque fluctuation would be recorded as
-/// if used while the records ignore it.
-fn steady_problems(case: &Case, at: &str) -> Vec<String> {
-    let s = &case.signals;
-    let mut p = Vec::new();
-    if let Some(v) = s.ramp_end_speed_hz {
-        p.push(format!(
-            "{at}: `signals.ramp_end_speed_hz` = {v} asks for a run-up, but a dataset records steady states (each at its speed and load): remove it (the `signals` command records a run-up), or record several speeds with `operating.input_speed_hz`"
-        ));
-    }
-    if s.torque_fluctuation_rms_nm > 0.0 {
-        p.push(format!(
-            "{at}: `signals.torque_fluctuation_rms_nm` = {} asks for a fluctuating load, but a dataset records steady states: set it to 0 (the `signals` command records a fluctuating load), or record several loads with `operating.load_torque_nm`",
-            s.torque_fluctuation_rms_nm
-        ));
-    }
-    p
-}
-
-/// Problems of conditions whose acquisition chain (`[signals]`, the noise seed apart: each
-/// record has its own) differs from the first condition's: an index column has one unit
-/// and the metadata one chain for every record, so the chain is the dataset's, not a
-/// condition's.
-fn chain_problems(conditions: &[Condition], name: &str) -> Vec<String> {
-    let table = |c: &Condition| -> Table {
-        let mut s = c.case.signals.clone();
-        s.noise_seed = 0;
-        Table::try_from(s).unwrap_or_default()
-    };
-    let Some(first) = conditions.first() else {
-        return Vec::new();
-    };
-    let t0 = table(first);
-    let mut p = Vec::new();
-    for c in &conditions[1..] {
-        let t = table(c);
-        let keys: Vec<String> = t0
-            .keys()
-            .chain(t.keys())
-            .filter(|k| t0.get(*k) != t.get(*k))
-            .map(|k| format!("`signals.{k}`"))
-            .collect::<std::collections::BTreeSet<_>>()
-            .into_iter()
-            .collect();
-        if !keys.is_empty() {
-            p.push(format!(
-                "{name}: condition `{}` changes the acquisition chain ({}) from condition `{}`'s: every record of a dataset shares one chain (one unit per index column, one sampling rate in the metadata); set it in the design's `case` or `set`",
-                c.name,
-                keys.join(", "),
-                first.name
-            ));
-        }
-    }
-    p
 }
 
 #[cfg(test)]

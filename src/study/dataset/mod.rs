@@ -4,6 +4,8 @@
 //! and indicators.
 
 pub mod design;
+mod design_checks;
+mod design_file;
 pub mod index;
 pub mod plan;
 pub mod records;

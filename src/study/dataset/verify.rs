@@ -12,7 +12,7 @@
 //! resume: the first and last physical state and a random sample of the others are.
 
 use super::trajectory::{deepest_m, trajectory_model, Trajectory};
-use crate::study::wear_check::verify_resumable;
+use crate::study::wear_check::{verify_resumable, StoredRunError};
 use crate::study::wear_loop::{next_update, Next, WearMode, WearRun};
 use crate::study::Model;
 
@@ -68,19 +68,20 @@ pub fn verify_trajectory(
     max_cycles: f64,
     limit_m: f64,
     t: &Trajectory,
-) -> Result<(), String> {
-    let m2 = trajectory_model(model, max_cycles).map_err(|e| e.to_string())?;
+) -> Result<(), StoredRunError> {
+    let m2 =
+        trajectory_model(model, max_cycles).map_err(|e| StoredRunError::Model(e.to_string()))?;
     let mut run = WearRun::new(WearMode::Dynamic);
     run.records = t.records.clone();
-    verify_resumable(&run, &m2).map_err(|e| e.replace("line ", "record line "))?;
+    verify_resumable(&run, &m2).map_err(|e| e.lines_named("record line "))?;
     let n = t.records.len();
     if let Some(i) = t.records[..n - 1]
         .iter()
         .position(|r| deepest_m(&r.wear) >= limit_m)
     {
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "update {i} already reaches the wear limit, yet the trajectory goes on: the run stops there"
-        ));
+        )));
     }
     let last = &t.records[n - 1];
     let stopped = if deepest_m(&last.wear) >= limit_m {
@@ -90,19 +91,19 @@ pub fn verify_trajectory(
             Ok(Next::Finished) => None,
             Ok(Next::Stop(s)) => Some(s.reason),
             Ok(Next::Record(_)) | Err(_) => {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "it ends at {} cycles, below the wear limit and before `run_to_failure.max_cycles` = {max_cycles}, where the wear loop goes on: cut short",
                     last.wear.cycles
-                ))
+                )))
             }
         }
     };
     let again = Trajectory::from_records(t.records.clone(), stopped, limit_m);
     if again != *t {
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "its end ({} cycles, failure {:?}, stopped {:?}) is not what its updates give ({} cycles, failure {:?}, stopped {:?})",
             t.end_cycles, t.failure_cycles, t.stopped.is_some(), again.end_cycles, again.failure_cycles, again.stopped.is_some()
-        ));
+        )));
     }
     Ok(())
 }

@@ -5,6 +5,7 @@
 
 use super::case_run::{CaseResults, SweepRun};
 use super::continuation::Branch;
+use crate::study::wear_check::StoredRunError;
 use serde::{Deserialize, Serialize};
 
 /// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
@@ -124,23 +125,27 @@ impl CaseRecord {
     }
 
     /// Read back: the checksum matches the content, and the results match the columns.
-    pub fn verify(&self) -> Result<(), String> {
+    pub fn verify(&self) -> Result<(), StoredRunError> {
         match &self.checksum {
-            None => return Err("has no checksum".into()),
+            None => return Err(StoredRunError::Mismatch("has no checksum".into())),
             Some(c) if *c != self.content_checksum() => {
-                return Err("does not match its checksum: the file was changed".into())
+                return Err(StoredRunError::Mismatch(
+                    "does not match its checksum: the file was changed".into(),
+                ))
             }
             Some(_) => {}
         }
         if self.results.len() != self.columns.len() {
-            return Err(format!(
+            return Err(StoredRunError::Mismatch(format!(
                 "holds {} results for {} columns",
                 self.results.len(),
                 self.columns.len()
-            ));
+            )));
         }
         if self.keys.len() != self.values.len() {
-            return Err("its varied keys and values differ in number".into());
+            return Err(StoredRunError::Mismatch(
+                "its varied keys and values differ in number".into(),
+            ));
         }
         Ok(())
     }

@@ -10,6 +10,20 @@ use super::case_run::{CaseResults, SweepRun};
 use super::continuation::Branch;
 use std::collections::BTreeMap;
 
+/// Why a sweep table cannot be read or merged.
+#[derive(Debug, thiserror::Error)]
+pub enum SweepTableError {
+    /// The text is not CSV.
+    #[error(transparent)]
+    Csv(#[from] csv::Error),
+    /// The CSV is not a gearwear sweep table (the message names the row and column).
+    #[error("{0}")]
+    NotASweepTable(String),
+    /// The tables are of different sweeps, or none were given.
+    #[error("{0}")]
+    MixedSweeps(String),
+}
+
 /// One case's row.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
@@ -116,41 +130,43 @@ impl SweepTable {
     }
 
     /// Read a table written by [`SweepTable::to_csv`].
-    pub fn from_csv(text: &str) -> Result<Self, String> {
+    pub fn from_csv(text: &str) -> Result<Self, SweepTableError> {
         let mut r = csv::Reader::from_reader(text.as_bytes());
-        let header: Vec<String> = r
-            .headers()
-            .map_err(|e| e.to_string())?
-            .iter()
-            .map(str::to_owned)
-            .collect();
+        let header: Vec<String> = r.headers()?.iter().map(str::to_owned).collect();
         let Some(at) = header.iter().position(|h| h == "case_id") else {
-            return Err("no `case_id` column: not a gearwear sweep table".into());
+            return Err(SweepTableError::NotASweepTable(
+                "no `case_id` column: not a gearwear sweep table".into(),
+            ));
         };
         let branch_at =
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let columns = header[first_result..].to_vec();
         let Some(run) = SweepRun::of_columns(&columns) else {
-            return Err(format!(
+            return Err(SweepTableError::NotASweepTable(format!(
                 "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}])",
                 columns.join(", "),
                 SweepRun::Dynamics.columns().join(", "),
                 SweepRun::Wear.columns()[SweepRun::Dynamics.columns().len()..].join(", ")
-            ));
+            )));
         };
         let mut t = SweepTable::new(header[..at].to_vec(), run);
         for (line, rec) in r.records().enumerate() {
-            let rec = rec.map_err(|e| e.to_string())?;
+            let rec = rec?;
             let row = line + 2;
             let cell = |i: usize| rec.get(i).unwrap_or("").trim();
-            let case_id = cell(at)
-                .parse()
-                .map_err(|_| format!("row {row}: case_id `{}` is not a whole number", cell(at)))?;
+            let case_id = cell(at).parse().map_err(|_| {
+                SweepTableError::NotASweepTable(format!(
+                    "row {row}: case_id `{}` is not a whole number",
+                    cell(at)
+                ))
+            })?;
             let branch = match branch_at.map(cell) {
                 None | Some("") => None,
                 Some(b) => Some(Branch::parse(b).ok_or_else(|| {
-                    format!("row {row}: branch `{b}` is neither `up` nor `down`")
+                    SweepTableError::NotASweepTable(format!(
+                        "row {row}: branch `{b}` is neither `up` nor `down`"
+                    ))
                 })?),
             };
             let mut results = Vec::with_capacity(columns.len());
@@ -159,15 +175,19 @@ impl SweepTable {
                 results.push(if s.is_empty() {
                     f64::NAN
                 } else {
-                    s.parse()
-                        .map_err(|_| format!("row {row}, column {name}: `{s}` is not a number"))?
+                    s.parse().map_err(|_| {
+                        SweepTableError::NotASweepTable(format!(
+                            "row {row}, column {name}: `{s}` is not a number"
+                        ))
+                    })?
                 });
             }
             t.rows.push(SweepRow {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
-                results: CaseResults::from_values(run, &results)
-                    .ok_or_else(|| format!("row {row}: not one number per column"))?,
+                results: CaseResults::from_values(run, &results).ok_or_else(|| {
+                    SweepTableError::NotASweepTable(format!("row {row}: not one number per column"))
+                })?,
                 branch,
             });
         }
@@ -178,33 +198,33 @@ impl SweepTable {
     /// Join tables (each named by its source for messages) into one sorted by case id.
     /// A case present in several tables must have identical rows there. Tables with other
     /// varied keys (or in another order) or other result columns are another sweep: error.
-    pub fn merge(tables: &[(String, SweepTable)]) -> Result<SweepTable, String> {
+    pub fn merge(tables: &[(String, SweepTable)]) -> Result<SweepTable, SweepTableError> {
         let Some((first_src, first)) = tables.first() else {
-            return Err("no tables to merge".into());
+            return Err(SweepTableError::MixedSweeps("no tables to merge".into()));
         };
         let mut rows: BTreeMap<usize, (&str, &SweepRow)> = BTreeMap::new();
         for (src, t) in tables {
             if t.keys != first.keys {
-                return Err(format!(
+                return Err(SweepTableError::MixedSweeps(format!(
                     "mixed sweeps: {src} varies [{}], {first_src} varies [{}]",
                     t.keys.join(", "),
                     first.keys.join(", ")
-                ));
+                )));
             }
             if t.run != first.run {
-                return Err(format!(
+                return Err(SweepTableError::MixedSweeps(format!(
                     "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear?)"
-                ));
+                )));
             }
             for r in &t.rows {
                 match rows.get(&r.case_id) {
                     Some((other, o)) if !o.same_as(r) => {
-                        return Err(format!(
+                        return Err(SweepTableError::MixedSweeps(format!(
                             "case_id {} differs between {other} and {src} (values [{}] vs [{}]): not the same sweep, or results of different program versions",
                             r.case_id,
                             o.values.join(", "),
                             r.values.join(", ")
-                        ));
+                        )));
                     }
                     Some(_) => {}
                     None => {
@@ -279,7 +299,10 @@ mod tests {
             assert!(a.same_as(b), "{a:?} != {b:?}");
         }
         let bad = text.replacen(",down,", ",sideways,", 1);
-        assert!(SweepTable::from_csv(&bad).unwrap_err().contains("sideways"));
+        assert!(SweepTable::from_csv(&bad)
+            .unwrap_err()
+            .to_string()
+            .contains("sideways"));
     }
 
     #[test]
@@ -297,12 +320,14 @@ mod tests {
             ("a".into(), table(&[1], 0.0)),
             ("b".into(), table(&[1], 1e-9)),
         ])
-        .unwrap_err();
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("case_id 1"), "{e}");
         let mut other = table(&[5], 0.0);
         other.keys = vec!["operating.load_torque_nm".into()];
-        let e =
-            SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), other)]).unwrap_err();
+        let e = SweepTable::merge(&[("a".into(), table(&[1], 0.0)), ("b".into(), other)])
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("mixed sweeps"), "{e}");
     }
 }

@@ -5,7 +5,7 @@
 use super::case_record::CaseRecord;
 use super::case_run::{run_case, SweepRun};
 use crate::config::Case;
-use crate::study::wear_check::random_sample;
+use crate::study::wear_check::{random_sample, StoredRunError};
 
 /// Most finished cases recomputed when a sweep is rerun.
 pub const MAX_RECOMPUTED_CASES: usize = 4;
@@ -19,9 +19,9 @@ pub fn cases_to_recompute(n: usize) -> Vec<usize> {
 
 /// Run `case` again and require the results `rec` holds, bit for bit (a failed case has
 /// no record, so a failure now is a mismatch too).
-pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(), String> {
+pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(), StoredRunError> {
     let again = run_case(case, run).map_err(|e| {
-        format!("recomputed, the case fails ({e}), but its record holds results: the record is not this case's")
+        StoredRunError::Mismatch(format!("recomputed, the case fails ({e}), but its record holds results: the record is not this case's"))
     })?;
     let now: Vec<Option<u64>> = again
         .results
@@ -36,12 +36,12 @@ pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(),
                 .flatten()
                 .map_or("none".into(), |b| format!("{:e}", f64::from_bits(b)))
         };
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "recomputed, column `{}` is {} but the record holds {}: the record was edited or is not this case's",
             rec.columns.get(i).map_or("?", String::as_str),
             show(now.get(i)),
             show(stored.get(i))
-        ));
+        )));
     }
     Ok(())
 }

@@ -58,11 +58,26 @@ fn per_tooth(v: &Option<Vec<f64>>, z: usize) -> Option<Vec<f64>> {
     })
 }
 
+/// No set of a gear's errors drawn for its accuracy grade (ISO 1328-1 class `class`)
+/// from `teeth.error_seed` passed the class's inspection in [`MAX_DRAWS`] draws.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("`teeth.accuracy_grade` = {class}: no {member} of {teeth} teeth drawn from `teeth.error_seed` = {seed} passed the class's inspection in {MAX_DRAWS} draws; give its errors explicitly (`teeth.pitch_error_*_um`, `teeth.profile_*_um`)")]
+pub(crate) struct ErrorsNotDrawn {
+    /// The accuracy grade.
+    pub class: i64,
+    /// "pinion" or "gear".
+    pub member: &'static str,
+    /// Its number of teeth.
+    pub teeth: usize,
+    /// The seed the draws came from.
+    pub seed: i64,
+}
+
 /// The errors of both gears: given, or drawn for the accuracy grade, else zero.
-pub(crate) fn gear_errors(case: &Case, pair: &GearPair) -> Result<[GearErrors; 2], String> {
+pub(crate) fn gear_errors(case: &Case, pair: &GearPair) -> Result<[GearErrors; 2], ErrorsNotDrawn> {
     let t = &case.teeth;
     let module_mm = pair.module_m * 1e3;
-    let one = |member: Member| -> Result<GearErrors, String> {
+    let one = |member: Member| -> Result<GearErrors, ErrorsNotDrawn> {
         let g = member_gear(pair, member);
         let z = g.teeth;
         let (pitch, slope, form, runout) = match member {
@@ -89,12 +104,14 @@ pub(crate) fn gear_errors(case: &Case, pair: &GearPair) -> Result<[GearErrors; 2
                     Member::Gear => 1,
                 };
                 let seed = t.error_seed.unwrap_or(0);
-                Some(draw_gear(z, &tol, seed as u64, stream).map_err(|u| {
-                    format!(
-                        "`teeth.accuracy_grade` = {}: no {} of {} teeth drawn from `teeth.error_seed` = {seed} passed the class's inspection in {MAX_DRAWS} draws; give its errors explicitly (`teeth.pitch_error_*_um`, `teeth.profile_*_um`)",
-                        u.class, member.name(), u.teeth
-                    )
-                })?)
+                Some(
+                    draw_gear(z, &tol, seed as u64, stream).map_err(|u| ErrorsNotDrawn {
+                        class: u.class,
+                        member: member.name(),
+                        teeth: u.teeth,
+                        seed,
+                    })?,
+                )
             }
             None => None,
         };

@@ -1,0 +1,114 @@
+//! The types of a dataset's study design: the `design.toml` tables as written (read by
+//! `design`, checked by `design_checks`) and the validated design they give.
+
+use crate::config::Case;
+use serde::Deserialize;
+use toml::Table;
+
+/// `design.toml` as written (module docs of `design`).
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct DesignFile {
+    pub(crate) case: Option<String>,
+    #[serde(default)]
+    pub(crate) set: Vec<String>,
+    pub(crate) transfer_path: Option<String>,
+    #[serde(default)]
+    pub(crate) seed: u64,
+    #[serde(default)]
+    pub(crate) run_to_failure: RunToFailureFile,
+    #[serde(default)]
+    pub(crate) operating: OperatingFile,
+    #[serde(default)]
+    pub(crate) records: RecordsFile,
+    #[serde(default)]
+    pub(crate) condition: Vec<ConditionFile>,
+}
+
+/// `[run_to_failure]` as written: states, cycles, max_cycles, wear_limit_um.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RunToFailureFile {
+    pub(crate) states: Option<i64>,
+    pub(crate) cycles: Option<Vec<f64>>,
+    pub(crate) max_cycles: Option<f64>,
+    pub(crate) wear_limit_um: Option<f64>,
+}
+
+/// `[operating]` as written: the speeds (Hz) and torques (N m) of every state.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct OperatingFile {
+    pub(crate) input_speed_hz: Option<Vec<f64>>,
+    pub(crate) load_torque_nm: Option<Vec<f64>>,
+}
+
+/// `[records]` as written: noise realisations, CSV copies, disk budget (GiB).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub(crate) struct RecordsFile {
+    pub(crate) noise_realisations: i64,
+    pub(crate) csv: bool,
+    pub(crate) disk_budget_gib: f64,
+}
+
+impl Default for RecordsFile {
+    fn default() -> Self {
+        Self {
+            noise_realisations: 1,
+            csv: false,
+            disk_budget_gib: 10.0,
+        }
+    }
+}
+
+/// One `[[condition]]` as written: its name, labels and case overrides.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct ConditionFile {
+    pub(crate) name: String,
+    pub(crate) fault: Option<String>,
+    pub(crate) severity: Option<f64>,
+    #[serde(default)]
+    pub(crate) case: Table,
+}
+
+/// Which states of a wear trajectory are recorded.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StateChoice {
+    /// This many, evenly spaced in cycles from 0 to the trajectory's end.
+    Count(usize),
+    /// At these pinion cycle counts (ascending).
+    Cycles(Vec<f64>),
+}
+
+/// A fault type and severity: the case it is modelled by, and its labels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    pub name: String,
+    /// What the case models ([`super::design::fault_label`]): never a free text.
+    pub fault: String,
+    /// The user's grade of the fault: 0 without one (or ungraded), >= 0 with one.
+    pub severity: f64,
+    /// The resolved case of this condition at the design's base operating point.
+    pub case: Case,
+}
+
+/// A validated design.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DatasetDesign {
+    pub seed: u64,
+    /// The transfer-path file, as written in the design (resolved against its folder).
+    pub transfer_path: Option<std::path::PathBuf>,
+    pub states: StateChoice,
+    pub max_cycles: f64,
+    pub wear_limit_um: f64,
+    pub speeds_hz: Vec<f64>,
+    pub torques_nm: Vec<f64>,
+    pub noise_realisations: usize,
+    pub csv: bool,
+    pub disk_budget_gib: f64,
+    pub conditions: Vec<Condition>,
+    /// The design's text, for the metadata.
+    pub text: String,
+}
