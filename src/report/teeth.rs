@@ -296,11 +296,13 @@ pub fn sideband_figure(model: &Model, spec: &Spectrum, label: &str) -> (Figure, 
     let mut p = spectrum_panel("amplitude (mm/s)", &f, &a, f_mesh);
     // Sidebands are decades below the mesh harmonic: a log axis shows them.
     p.log_y = true;
-    for (k, name) in [(1.0, ""), (2.0, "2 ")] {
-        for (fs, shaft) in [(f_p, "f_p"), (f_g, "f_g")] {
+    // Labelled as the `signals` spectrum labels its sidebands ("+1 pinion": the mesh
+    // frequency plus once the pinion's rotation frequency).
+    for k in [1.0, 2.0] {
+        for (fs, shaft) in [(f_p, "pinion"), (f_g, "gear")] {
             for sign in [-1.0, 1.0] {
                 let lab = if sign > 0.0 {
-                    format!("+{name}{shaft}")
+                    format!("+{k} {shaft}")
                 } else {
                     String::new()
                 };
@@ -309,7 +311,9 @@ pub fn sideband_figure(model: &Model, spec: &Spectrum, label: &str) -> (Figure, 
         }
     }
     let fig = single(
-        &format!("Pinion velocity around the mesh frequency, shaft sidebands f_p, f_g ({label})"),
+        &format!(
+            "Pinion velocity around the mesh frequency, sidebands of the shaft speeds ({label})"
+        ),
         p,
     );
     let table = Table::new()
