@@ -4,6 +4,7 @@
 //! leaves the range of the plotted data.
 
 mod common;
+use common::figures::attr;
 use common::paper::paper;
 
 use gearwear::config::load_case;
@@ -14,13 +15,6 @@ use gearwear::report::paper::section41_figures;
 use gearwear::report::plot::{layout, render_svg, Figure};
 use gearwear::study::Model;
 use gearwear::wear::WearState;
-
-/// Value of attribute `name` in the opening tag `tag` (up to its first '>').
-fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
-    let head = tag.split('>').next()?;
-    let start = head.find(&format!(" {name}=\""))? + name.len() + 3;
-    head[start..].split('"').next()
-}
 
 /// A stroked `<polyline>`: its colour ("#RRGGBB"), stroke width and points in pixels.
 struct Stroke {

@@ -19,6 +19,7 @@ pub use super::lumped::{BodyValues, DynamicsSection};
 pub use super::operating::{
     LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
 };
+pub use super::output::OutputSection;
 pub use super::signals::SignalsSection;
 pub use super::teeth::{
     Fault, FaultKind, FaultTable, Member, ModificationSection, ReliefShape, TeethSection,
@@ -58,6 +59,10 @@ pub struct Case {
     /// serialisation while it holds the defaults.
     #[serde(skip_serializing_if = "SignalsSection::is_default")]
     pub signals: SignalsSection,
+    /// What the commands write of long runs (`config::output`); left out of a case's
+    /// serialisation while it holds the defaults.
+    #[serde(skip_serializing_if = "OutputSection::is_default")]
+    pub output: OutputSection,
     /// The duty cycle (issue 20); absent: the single operating point of `operating`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_spectrum: Option<LoadSpectrumSection>,

@@ -25,6 +25,11 @@ fn tree_of(case: &Case) -> Table {
             t.insert("signals".into(), v);
         }
     }
+    if !t.contains_key("output") {
+        if let Ok(v) = Value::try_from(&case.output) {
+            t.insert("output".into(), v);
+        }
+    }
     t
 }
 

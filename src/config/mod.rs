@@ -8,6 +8,7 @@ pub mod load;
 pub mod load_spectrum;
 pub mod lumped;
 pub mod operating;
+pub mod output;
 pub mod paper_case;
 mod parse;
 pub mod planetary;

@@ -324,6 +324,8 @@ pub const KEYS: &[KeySpec] = &[
       "Below ~1e-12 the change between periods is round-off and may never settle; above 0.5 nothing is periodic."),
     k("numerics.evaluated_mesh_periods", "-", Int(1, 100_000), "Mesh periods recorded once steady (signals and spectra).",
       "At least one period; the memory of more is checked by the run budget."),
+    k("output.full_tables", "-", Bool, "Write a long run's per-point tables (`timeseries`, `path`: over 1e6 values, e.g. a hunting period's 589 mesh periods) at every recorded point. false (the default): such a table is written at every k-th row, k the smallest stride that leaves at most 5e5 values, stated in summary.json (`output.thinned_tables`); the figures, their data tables, the spectra and the summary are computed from every point either way. Shorter tables (the paper's case) are always whole.",
+      "A switch: the full tables of a hunting period take about 50 MB."),
     k("calibration.wear_coefficient_min_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Lower bound of the log-uniform prior of the wear coefficient k (`gearwear calibrate`/`predict`); omit for the case's k / 100.",
       "Inside the wear coefficient's own range (up to 1e-11); 1e-22 is far below any measured gear wear coefficient."),
     k("calibration.wear_coefficient_max_m2_per_n", "m^2/N", Num(Range::closed(1e-22, 1e-11)), "Upper bound of the log-uniform prior of k; omit for the case's k x 100. Equal bounds hold k fixed.",

@@ -6,8 +6,9 @@
 use super::schema::KEYS;
 
 /// The files holding the section structs.
-const SOURCES: [&str; 8] = [
+const SOURCES: [&str; 9] = [
     include_str!("case.rs"),
+    include_str!("output.rs"),
     include_str!("planetary.rs"),
     include_str!("gear.rs"),
     include_str!("lumped.rs"),

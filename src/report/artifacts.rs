@@ -105,6 +105,37 @@ impl Artifacts {
         self.tables.push((path, t));
     }
 
+    /// Add a per-point table of a run (its time series, its path of contact) at `path`
+    /// (`NAME.csv`): as [`Artifacts::table`] when `full` or when short; a long one
+    /// (over `decimate::MAX_CSV_CELLS` values) goes to `NAME.parquet` at every k-th row
+    /// (`decimate::thinning_stride`). Returns, for a thinned table, what `summary.json`
+    /// states of it: the file, the rows computed and written, and k.
+    pub fn per_point_table(
+        &mut self,
+        path: &str,
+        t: Table,
+        full: bool,
+    ) -> Option<serde_json::Value> {
+        let k = super::decimate::thinning_stride(&t);
+        if full || k == 1 {
+            self.table(path, t);
+            return None;
+        }
+        let stem = path.strip_suffix(".csv").unwrap_or(path);
+        // The path of the whole table (Parquet, or CSV when a column is not finite).
+        let file = super::decimate::long_table_path(stem, &t);
+        let rows = t.rows();
+        let thinned = super::decimate::thin_table(t, k);
+        let note = serde_json::json!({
+            "file": file,
+            "rows_computed": rows,
+            "rows_written": thinned.rows(),
+            "every_kth_row": k,
+        });
+        self.tables.push((file, thinned));
+        Some(note)
+    }
+
     /// Add a figure of the default size for its number of panels.
     pub fn figure(&mut self, path: impl Into<String>, figure: Figure) {
         let h = plot_height(figure.panels.len());

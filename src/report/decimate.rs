@@ -117,6 +117,43 @@ pub(crate) fn long_table_path(stem: &str, t: &Table) -> String {
     }
 }
 
+/// A long per-point table (over [`MAX_CSV_CELLS`] values) is thinned to at most this many
+/// values unless the case asks for full tables (`output.full_tables`): 5e5 doubles, 4 MB
+/// of Parquet, so that a hunting period's time series and path of contact together stay
+/// under 10 MB.
+pub(crate) const MAX_THINNED_CELLS: usize = 500_000;
+
+/// The stride a per-point table is written at: 1 (every row) up to [`MAX_CSV_CELLS`]
+/// values, otherwise the smallest k whose rows 0, k, 2k, ... (ceil(n / k) of them) hold at
+/// most [`MAX_THINNED_CELLS`] values.
+pub(crate) fn thinning_stride(t: &Table) -> usize {
+    let (n, c) = (t.rows(), t.columns.len().max(1));
+    if n.saturating_mul(c) <= MAX_CSV_CELLS {
+        return 1;
+    }
+    let mut k = n.saturating_mul(c).div_ceil(MAX_THINNED_CELLS).max(1);
+    while n.div_ceil(k) * c > MAX_THINNED_CELLS {
+        k += 1;
+    }
+    k
+}
+
+/// Rows 0, k, 2k, ... of `t` (every column; `t` itself for k <= 1). Every kept value is
+/// an original one, at full precision.
+pub(crate) fn thin_table(t: Table, k: usize) -> Table {
+    if k <= 1 {
+        return t;
+    }
+    Table {
+        columns: t
+            .columns
+            .iter()
+            .map(|c| c.iter().copied().step_by(k).collect())
+            .collect(),
+        names: t.names,
+    }
+}
+
 #[cfg(test)]
 #[path = "tests_decimate.rs"]
 mod tests;

@@ -6,6 +6,7 @@ use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use crate::dynamics::model::dof;
 use crate::dynamics::response::{Coordinates, DynamicResponse, PathSample, Signals};
+use crate::dynamics::spectrum::Spectrum;
 use crate::dynamics::summary::{velocity_y_spectrum, ResponseSummary};
 use crate::format::shown;
 use crate::io::Table;
@@ -30,9 +31,16 @@ pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad"
 pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Artifacts {
     let mut a = Artifacts::default();
     let s = &r.signals;
-    // Long runs (a hunting period) go to Parquet (`Artifacts::table`).
-    a.table("timeseries.csv", timeseries_table(model, s));
-    a.table("path.csv", path_table(model, &r.meshes[0].path));
+    // Long runs (a hunting period) go to Parquet, at every k-th row unless the case asks
+    // for full tables (`Artifacts::per_point_table`).
+    let full = model.case.output.full_tables;
+    let thinned: Vec<Value> = [
+        a.per_point_table("timeseries.csv", timeseries_table(model, s), full),
+        a.per_point_table("path.csv", path_table(model, &r.meshes[0].path), full),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
 
     // Damped poles and undamped modes of the linearised model.
     let modal = ModalAnalysis::of(model);
@@ -41,16 +49,47 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
 
     let t_ms = ms(&s.time_s);
     let has_velocity = s.velocity.iter().any(|v| v[dof::YP] != 0.0);
-    if has_velocity {
-        add_velocity_figures(&mut a, model, r, &t_ms, label);
+    // The spectrum of dy_p/dt, computed once for its table and both of its figures.
+    let spec = has_velocity.then(|| velocity_y_spectrum(r));
+    if let Some(spec) = &spec {
+        add_velocity_figures(&mut a, model, r, spec, &t_ms, label);
     }
     add_time_figures(&mut a, s, t_ms, label);
     add_path_figures(&mut a, &r.meshes[0].path, label);
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);
+    if !thinned.is_empty() {
+        a.headline.push_str(&thinned_line(&thinned));
+        a.summary["output"] = json!({
+            "thinned_tables": thinned,
+            "full_tables_key": "output.full_tables = true",
+        });
+    }
     super::teeth::add_teeth_artifacts(model, &mut a);
-    super::teeth::add_sideband_artifacts(model, r, label, &mut a);
+    if let Some(spec) = &spec {
+        super::teeth::add_sideband_artifacts(model, r, spec, label, &mut a);
+    }
     a
+}
+
+/// The headline's note on thinned tables: "timeseries.parquet (1 row in 10),
+/// path.parquet (1 row in 4): a long run's tables thinned; output.full_tables = true
+/// writes every point".
+fn thinned_line(thinned: &[Value]) -> String {
+    let files: Vec<String> = thinned
+        .iter()
+        .map(|t| {
+            format!(
+                "{} (1 row in {})",
+                t["file"].as_str().unwrap_or("?"),
+                t["every_kth_row"]
+            )
+        })
+        .collect();
+    format!(
+        "\n{}: a long run's tables thinned; output.full_tables = true writes every point",
+        files.join(", ")
+    )
 }
 
 /// Seconds (or m/s) as milliseconds (mm/s).
@@ -149,12 +188,12 @@ fn add_velocity_figures(
     a: &mut Artifacts,
     model: &Model,
     r: &DynamicResponse,
+    spec: &Spectrum,
     t_ms: &[f64],
     label: &str,
 ) {
     let s = &r.signals;
     let f_mesh = model.params.operating.mesh_frequency_hz;
-    let spec = velocity_y_spectrum(r);
     a.table(
         "spectrum.csv",
         Table::new()

@@ -11,6 +11,7 @@ use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
 use crate::config::case::{FaultKind, Member};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::response::DynamicResponse;
+use crate::dynamics::spectrum::Spectrum;
 use crate::dynamics::summary::velocity_y_spectrum;
 use crate::format::shown;
 use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviations};
@@ -280,11 +281,11 @@ pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)
 /// The pinion-velocity spectrum around the mesh frequency, with the sidebands of both
 /// shafts' frequencies marked (resolved over the excitation period of a tooth-resolved
 /// response: bins of f_mesh / P).
-pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figure, Table) {
+/// `spec` is the response's pinion y velocity spectrum (`velocity_y_spectrum`).
+pub fn sideband_figure(model: &Model, spec: &Spectrum, label: &str) -> (Figure, Table) {
     let f_mesh = model.params.operating.mesh_frequency_hz;
     let f_p = model.params.operating.pinion_speed_rad_s / std::f64::consts::TAU;
     let f_g = model.params.operating.gear_speed_rad_s / std::f64::consts::TAU;
-    let spec = velocity_y_spectrum(r);
     let (f, a) = spectrum_rows(&spec.frequency_hz, &spec.amplitude, f_mesh + 5.5 * f_p);
     let (f, a): (Vec<f64>, Vec<f64>) = f
         .into_iter()
@@ -295,11 +296,13 @@ pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figu
     let mut p = spectrum_panel("amplitude (mm/s)", &f, &a, f_mesh);
     // Sidebands are decades below the mesh harmonic: a log axis shows them.
     p.log_y = true;
-    for (k, name) in [(1.0, ""), (2.0, "2 ")] {
-        for (fs, shaft) in [(f_p, "f_p"), (f_g, "f_g")] {
+    // Labelled as the `signals` spectrum labels its sidebands ("+1 pinion": the mesh
+    // frequency plus once the pinion's rotation frequency).
+    for k in [1.0, 2.0] {
+        for (fs, shaft) in [(f_p, "pinion"), (f_g, "gear")] {
             for sign in [-1.0, 1.0] {
                 let lab = if sign > 0.0 {
-                    format!("+{name}{shaft}")
+                    format!("+{k} {shaft}")
                 } else {
                     String::new()
                 };
@@ -308,7 +311,9 @@ pub fn sideband_figure(model: &Model, r: &DynamicResponse, label: &str) -> (Figu
         }
     }
     let fig = single(
-        &format!("Pinion velocity around the mesh frequency, shaft sidebands f_p, f_g ({label})"),
+        &format!(
+            "Pinion velocity around the mesh frequency, sidebands of the shaft speeds ({label})"
+        ),
         p,
     );
     let table = Table::new()
@@ -387,11 +392,18 @@ pub fn add_teeth_static_te(model: &Model, a: &mut Artifacts) {
 }
 
 /// Adds the sideband spectrum of a tooth-resolved dynamic response to `a`.
-pub fn add_sideband_artifacts(model: &Model, r: &DynamicResponse, label: &str, a: &mut Artifacts) {
+/// `spec` is the response's pinion y velocity spectrum (`velocity_y_spectrum`).
+pub fn add_sideband_artifacts(
+    model: &Model,
+    r: &DynamicResponse,
+    spec: &Spectrum,
+    label: &str,
+    a: &mut Artifacts,
+) {
     if model.teeth.is_none() || r.signals.velocity.is_empty() {
         return;
     }
-    let (fig, table) = sideband_figure(model, r, label);
+    let (fig, table) = sideband_figure(model, spec, label);
     a.figure_with_data("teeth_spectrum_sidebands.png", fig, table);
     a.summary["excitation_mesh_periods"] = json!(r.excitation_periods);
 }
@@ -437,7 +449,7 @@ pub fn run_teeth_figures(
         push(
             "teeth_spectrum_sidebands",
             format!("Pinion velocity spectrum around the mesh frequency over the excitation period ({label}): the shaft-frequency sidebands"),
-            sideband_figure(model, &s.response, &label),
+            sideband_figure(model, &velocity_y_spectrum(&s.response), &label),
         );
     }
     if let Some(w) = tooth_wear_figure(model, &study.dynamic) {

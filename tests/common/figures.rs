@@ -38,6 +38,13 @@ pub fn tree(dir: &Path) -> BTreeMap<String, PathBuf> {
     out
 }
 
+/// Value of attribute `name` in the opening tag `tag` (up to its first '>').
+pub fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let head = tag.split('>').next()?;
+    let start = head.find(&format!(" {name}=\""))? + name.len() + 3;
+    head[start..].split('"').next()
+}
+
 /// The `width` and `height` attributes of the SVG root element, in px.
 pub fn svg_size(path: &Path) -> (u32, u32) {
     let text = std::fs::read_to_string(path).unwrap();
