@@ -53,6 +53,7 @@ pub mod publish;
 pub mod run;
 pub mod settings;
 pub mod signals;
+mod signals_planetary;
 pub mod stiffness;
 pub mod sweep;
 pub(crate) mod train_checkpoints;

@@ -78,6 +78,11 @@ impl Job for SignalsJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
+        if self.case.planetary.is_some() {
+            // The set's dynamics estimate with the record added (one channel).
+            budget::check_estimate(&estimate_signals(&self.case, 1), self.budget.as_ref())?;
+            return self.run_planetary(observer);
+        }
         // The path first: its sensors are the record's channels, which the budget counts.
         let path = transfer_path_of(self.transfer_path.as_ref())?;
         let channels = path

@@ -134,6 +134,15 @@ pub struct SignalsSection {
     /// to; absent: stage 1 (a single pair is stage 1).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sensor_stage: Option<i64>,
+    /// Planetary sets: the angle of the sensor on the (fixed) ring from planet 1's position
+    /// at the record's start, in the carrier's sense of rotation, deg; absent: 0.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ring_sensor_angle_deg: Option<f64>,
+    /// Planetary sets: the half-width of the Hann window over which the ring sensor hears a
+    /// planet's ring mesh, deg; absent: 180 / N (half the planet spacing: each planet heard
+    /// alone as it passes).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ring_sensor_half_width_deg: Option<f64>,
 }
 
 impl Default for SignalsSection {
@@ -158,6 +167,8 @@ impl Default for SignalsSection {
             torque_fluctuation_seed: 0,
             ramp_end_speed_hz: None,
             sensor_stage: None,
+            ring_sensor_angle_deg: None,
+            ring_sensor_half_width_deg: None,
         }
     }
 }

@@ -24,6 +24,7 @@ pub mod prognostics_tables;
 pub mod run_report;
 pub mod runup;
 pub mod signals;
+pub mod signals_planetary;
 pub mod stiffness;
 pub mod stiffness_helical;
 pub mod stiffness_planetary;

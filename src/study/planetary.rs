@@ -3,7 +3,7 @@
 //! two meshes, the member speeds and frequencies at the case's input speed, and, when
 //! `[planetary.lumped]` gives the lumped parameters, the time-invariant model's natural
 //! frequencies with each mode's class (Lin & Parker 1999; docs/MODEL.md section 12).
-//! The dynamic model of a planetary set is not yet built: `Model::from_case` refuses it.
+//! The set's dynamic model is `study::planetary_dynamics`; the pair's `Model::from_case` refuses a set.
 
 use super::model::ModelError;
 use crate::config::case::Case;

@@ -1,0 +1,93 @@
+//! Results of `gearwear signals` on a planetary set (docs/SIGNALS.md 6): `record.csv` (the
+//! ring sensor's signal at the case's sampling rate), `orders.csv` (the amplitude of every
+//! carrier order of its steady, one-revolution-periodic signal) and `summary.json` with the
+//! frequencies and each mesh harmonic's sidebands.
+
+use super::artifacts::Artifacts;
+use crate::format::shown;
+use crate::io::Table;
+use crate::study::planetary_dynamics::PlanetaryDynamics;
+use crate::study::planetary_signals::{RingSensor, RingSensorRecord};
+use serde_json::json;
+
+/// Sidebands listed either side of each mesh harmonic: two planet-pass multiples.
+fn sideband_reach(planets: usize) -> i64 {
+    2 * planets as i64
+}
+
+/// Everything `gearwear signals` writes for a planetary set; `harmonics` mesh harmonics.
+pub fn planetary_signals_artifacts(
+    d: &PlanetaryDynamics,
+    rec: &RingSensorRecord,
+    sensor: RingSensor,
+    harmonics: usize,
+) -> Artifacts {
+    let set = &d.study.set;
+    let n = set.planets();
+    let zr = set.teeth_ring() as i64;
+    let amp = &rec.order_amplitude_n;
+    let at = |k: i64| usize::try_from(k).ok().and_then(|k| amp.get(k)).copied();
+    let reach = sideband_reach(n);
+    let mesh: Vec<_> = (1..=harmonics as i64)
+        .filter(|h| at(h * zr).is_some())
+        .map(|h| {
+            let sidebands: Vec<_> = (-reach..=reach)
+                .filter(|l| *l != 0)
+                .filter_map(|l| {
+                    let k = h * zr + l;
+                    at(k).map(|a| {
+                        json!({"offset_orders": l, "order": k, "frequency_hz": k as f64 * rec.carrier_hz, "amplitude_n": a})
+                    })
+                })
+                .collect();
+            json!({
+                "harmonic": h,
+                "order": h * zr,
+                "frequency_hz": (h * zr) as f64 * rec.carrier_hz,
+                "amplitude_n": at(h * zr),
+                "sidebands": sidebands,
+            })
+        })
+        .collect();
+    let v = json!({
+        "planetary_signals": {
+            "sensor": "on the ring (fixed)",
+            "sensor_angle_deg": sensor.angle_rad.to_degrees(),
+            "window_half_width_deg": sensor.half_width_rad.to_degrees(),
+            "carrier_hz": rec.carrier_hz,
+            "mesh_frequency_hz": rec.mesh_frequency_hz,
+            "planet_pass_hz": rec.planet_pass_hz,
+            "samples_per_revolution": rec.revolution_n.len(),
+            "mesh_harmonics": mesh,
+        },
+        "warnings": d.study.warnings,
+    });
+    let mut a = Artifacts {
+        headline: format!(
+            "planetary signals, {n} planets: a sensor on the ring hears the mesh frequency {} Hz with sidebands at the planet-pass frequency {} Hz (carrier {} Hz)",
+            shown(rec.mesh_frequency_hz),
+            shown(rec.planet_pass_hz),
+            shown(rec.carrier_hz),
+        ),
+        summary: v,
+        ..Default::default()
+    };
+    a.table(
+        "record.csv",
+        Table::new()
+            .col("time_s", rec.times_s.clone())
+            .col("ring_sensor_n", rec.values_n.clone()),
+    );
+    let orders: Vec<f64> = (0..amp.len()).map(|k| k as f64).collect();
+    a.table(
+        "orders.csv",
+        Table::new()
+            .col("carrier_order", orders.clone())
+            .col(
+                "frequency_hz",
+                orders.iter().map(|k| k * rec.carrier_hz).collect(),
+            )
+            .col("amplitude_n", amp.clone()),
+    );
+    a
+}
