@@ -49,12 +49,22 @@ pub enum MeshStiffnessSource {
 }
 
 impl MeshStiffnessSource {
-    /// Mesh stiffness of planet `p`'s sun (`ring` false) or ring mesh at `cycles`, N/m.
-    fn at(&self, p: usize, ring: bool, cycles: f64) -> f64 {
+    /// Mesh stiffness of planet `p`'s sun (`ring` false) or ring mesh at `cycles`, N/m,
+    /// the pairs in contact decided at `decide` cycles (`PlanetaryMeshes`).
+    fn at(&self, p: usize, ring: bool, cycles: f64, decide: f64) -> f64 {
         match (self, ring) {
-            (Self::Tables(m), false) => m.sun_n_per_m(p, cycles),
-            (Self::Tables(m), true) => m.ring_n_per_m(p, cycles),
+            (Self::Tables(m), false) => m.sun_n_per_m_decided(p, cycles, decide),
+            (Self::Tables(m), true) => m.ring_n_per_m_decided(p, cycles, decide),
             (Self::Constant(k), r) => k[r as usize],
+        }
+    }
+
+    /// The mesh cycles in [0, 1) where a mesh's stiffness jumps
+    /// (`PlanetaryMeshes::jump_cycles`); none for constant stiffness.
+    pub fn jump_cycles(&self) -> Vec<f64> {
+        match self {
+            Self::Tables(m) => m.jump_cycles(),
+            Self::Constant(_) => Vec::new(),
         }
     }
 }
@@ -92,6 +102,9 @@ pub struct PlanetaryDynamic {
     pub force_n: DVector<f64>,
     mass: Vec<f64>,
     elements: Vec<Element>,
+    /// When set, the time (s) at which `rhs` and `jacobian` decide which tooth pairs
+    /// touch (the middle of the integration step, [`Self::decide_contact_at`]).
+    decide_s: Option<f64>,
 }
 
 impl PlanetaryDynamic {
@@ -114,7 +127,22 @@ impl PlanetaryDynamic {
             mesh_frequency_hz,
             mass,
             elements,
+            decide_s: None,
         }
+    }
+
+    /// Decide the tooth pairs in contact of every mesh at time `t_s` (s) in `rhs` and
+    /// `jacobian` (the middle of a step that crosses no stiffness jump, so that a step
+    /// ending on a jump sees one contact set on all its stages); `None`: at each call's
+    /// own time.
+    pub fn decide_contact_at(&mut self, t_s: Option<f64>) {
+        self.decide_s = t_s;
+    }
+
+    /// Stiffness of mesh (`p`, `ring`) at `cycles`, decided at `decide_s` when set, N/m.
+    fn mesh_k(&self, p: usize, ring: bool, cycles: f64) -> f64 {
+        let decide = self.decide_s.map_or(cycles, |t| self.mesh_frequency_hz * t);
+        self.source.at(p, ring, cycles, decide)
     }
 
     /// Coordinates 3 (N + 3).
@@ -139,7 +167,7 @@ impl PlanetaryDynamic {
             if let Some((p, ring)) = e.mesh {
                 let d = e.deflection(q);
                 if d > 0.0 {
-                    let k = self.source.at(p, ring, cycles);
+                    let k = self.source.at(p, ring, cycles, cycles);
                     f[p + ring as usize * planets] = k * d + e.c * e.deflection(v);
                 }
             }
@@ -149,7 +177,8 @@ impl PlanetaryDynamic {
 
     /// The stiffness (or damping, `damping` true) matrix of the springs and of the
     /// meshes in contact in `q` at `cycles`, N/m (N s/m); every mesh in contact when `q`
-    /// is `None`, at its mean stiffness when `cycles` is `None`.
+    /// is `None`, at its mean stiffness when `cycles` is `None`; the tooth pairs in
+    /// contact decided as set by [`Self::decide_contact_at`].
     pub fn matrix(&self, q: Option<&[f64]>, cycles: Option<f64>, damping: bool) -> DMatrix<f64> {
         let n = self.dofs();
         let mut k = DMatrix::zeros(n, n);
@@ -157,7 +186,7 @@ impl PlanetaryDynamic {
             let kv = match (e.mesh, damping) {
                 (_, true) => e.c,
                 (None, false) => e.k,
-                (Some((p, ring)), false) => cycles.map_or(e.k, |c| self.source.at(p, ring, c)),
+                (Some((p, ring)), false) => cycles.map_or(e.k, |c| self.mesh_k(p, ring, c)),
             };
             if e.mesh.is_some() && q.is_some_and(|q| e.deflection(q) <= 0.0) {
                 continue;
@@ -202,23 +231,25 @@ impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
         let n = self.dofs();
         let (q, v) = y.as_slice().split_at(n);
         let cycles = self.mesh_frequency_hz * t;
-        let mut f: Vec<f64> = self.force_n.iter().copied().collect();
+        // The generalised forces accumulate in the acceleration half of the output (no
+        // scratch vector per call).
+        let mut out = DVector::zeros(2 * n);
+        out.rows_mut(n, n).copy_from(&self.force_n);
         for e in &self.elements {
             let d = e.deflection(q);
             let k = match e.mesh {
                 None => e.k,
                 Some(_) if d <= 0.0 => continue,
-                Some((p, ring)) => self.source.at(p, ring, cycles),
+                Some((p, ring)) => self.mesh_k(p, ring, cycles),
             };
             let fe = k * d + e.c * e.deflection(v);
             for (i, gi) in &e.g {
-                f[*i] -= fe * gi;
+                out[n + *i] -= fe * gi;
             }
         }
-        let mut out = DVector::zeros(2 * n);
         for i in 0..n {
             out[i] = v[i];
-            out[n + i] = f[i] / self.mass[i];
+            out[n + i] /= self.mass[i];
         }
         out
     }

@@ -14,6 +14,14 @@
 //! times 2 pi f_m for velocities). One more period is then recorded at
 //! `numerics.steps_per_mesh_period` equally spaced times (each reached by
 //! error-controlled steps).
+//!
+//! Step grid (as the gear pair's `grid::period_nodes`): every mesh's stiffness jumps
+//! where a tooth pair enters or leaves contact, at fixed times in the period
+//! (`PlanetaryMeshes::jump_cycles`). Those times join the sample times as nodes that no
+//! step crosses, each step deciding the pairs in contact at its middle
+//! (`PlanetaryDynamic::decide_contact_at`), and the Jacobian is refreshed after each
+//! jump; the error control then meets only the smooth response between jumps instead
+//! of locating every jump by rejected steps.
 
 use super::integrator::tableau::ESDIRK32;
 use super::integrator::{Sdirk, SdirkOptions, Vector};
@@ -106,7 +114,7 @@ pub fn solve_planetary_steady_state(
         stepper,
         h_prop: h_max,
         h_max,
-        samples: s.samples_per_period,
+        grid: period_grid(&sys.source.jump_cycles(), period, s.samples_per_period),
     };
     let mut z = DVector::zeros(2 * n);
     z.rows_mut(0, n).copy_from(&q0);
@@ -237,19 +245,69 @@ fn relative_change(a: &DVector<f64>, b: &DVector<f64>, scale: &DVector<f64>) -> 
         .fold(0.0, f64::max)
 }
 
-/// The stepper and its step proposal.
+/// A node of the period's step grid (no step crosses one).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Node {
+    /// Time from the period's start, s.
+    pub t_s: f64,
+    /// One of the equally spaced sample times.
+    pub sample: bool,
+    /// A mesh's stiffness jumps here.
+    pub jump: bool,
+}
+
+/// Nodes closer than this fraction of a sample interval are one: a jump moved onto a
+/// sample time by at most 1e-6 of a sample interval changes the stiffness for that
+/// long only (an error far below the integration tolerance) and avoids slivers of steps.
+const NODE_MERGE: f64 = 1e-6;
+
+/// The step grid of one period `period_s` long: the `samples` + 1 equally spaced sample
+/// times (both ends included) and the stiffness jumps at `jump_cycles` (fractions of the
+/// period), sorted, a jump within [`NODE_MERGE`] of a sample interval from a sample
+/// marked on the sample.
+pub(crate) fn period_grid(jump_cycles: &[f64], period_s: f64, samples: usize) -> Vec<Node> {
+    let dt = period_s / samples as f64;
+    let mut grid: Vec<Node> = (0..=samples)
+        .map(|k| Node {
+            t_s: k as f64 * dt,
+            sample: true,
+            jump: false,
+        })
+        .collect();
+    for c in jump_cycles {
+        let x = c * samples as f64;
+        let k = x.round() as usize;
+        if (x - k as f64).abs() < NODE_MERGE {
+            grid[k].jump = true;
+            if k == samples {
+                grid[0].jump = true;
+            }
+        } else {
+            grid.push(Node {
+                t_s: c * period_s,
+                sample: false,
+                jump: true,
+            });
+        }
+    }
+    grid.sort_by(|a, b| a.t_s.total_cmp(&b.t_s));
+    grid
+}
+
+/// The stepper, its step proposal and the period's step grid.
 struct Run {
     stepper: Sdirk<Dyn>,
     h_prop: f64,
     h_max: f64,
-    samples: usize,
+    grid: Vec<Node>,
 }
 
 impl Run {
-    /// One mesh period from `t0` on the sample grid, from a fresh step proposal and
+    /// One mesh period from `t0` over the step grid, from a fresh step proposal and
     /// Jacobian so that the period map depends on the state only (its fixed point is
-    /// then the steady state to the integration's round-off); the state at each sample's
-    /// start pushed onto `rec` when given.
+    /// then the steady state to the integration's round-off), the Jacobian refreshed
+    /// after each stiffness jump; the state at each sample's start pushed onto `rec`
+    /// when given.
     fn period(
         &mut self,
         sys: &mut PlanetaryDynamic,
@@ -260,12 +318,20 @@ impl Run {
         self.h_prop = self.h_max;
         self.stepper.invalidate_jacobian();
         let mut t = t0;
-        for k in 1..=self.samples {
-            if let Some(r) = rec.as_deref_mut() {
+        for k in 1..self.grid.len() {
+            if let (true, Some(r)) = (self.grid[k - 1].sample, rec.as_deref_mut()) {
                 r.push(y.as_slice().to_vec());
             }
-            self.advance(sys, &mut t, y, t0 + k as f64 * self.h_max)?;
+            let result = self.advance(sys, &mut t, y, t0 + self.grid[k].t_s);
+            if result.is_err() {
+                sys.decide_contact_at(None);
+            }
+            result?;
+            if self.grid[k].jump {
+                self.stepper.invalidate_jacobian();
+            }
         }
+        sys.decide_contact_at(None);
         Ok(())
     }
 
@@ -279,8 +345,11 @@ impl Run {
     ) -> Result<(), PlanetaryDynamicsError> {
         let h_min = self.h_max * 1e-9;
         while t_end - *t > h_min {
-            let mut h = self.h_prop.min(self.h_max).min(t_end - *t);
+            let h_free = self.h_prop.min(self.h_max);
+            let mut h = h_free.min(t_end - *t);
             loop {
+                // The step crosses no node: one contact set, decided at its middle.
+                sys.decide_contact_at(Some(*t + 0.5 * h));
                 match self.stepper.try_step(sys, *t, y, h) {
                     Err(e) => {
                         h *= 0.5;
@@ -296,8 +365,14 @@ impl Run {
                     }
                     Ok(tr) => {
                         self.stepper.accept(&tr);
-                        self.h_prop =
-                            h * (0.9 * tr.error.max(1e-10).powf(-1.0 / 3.0)).clamp(0.2, 5.0);
+                        let grow = (0.9 * tr.error.max(1e-10).powf(-1.0 / 3.0)).clamp(0.2, 5.0);
+                        // A step cut short to land on a node keeps the longer proposal
+                        // unless its own error asks for a shorter one.
+                        self.h_prop = if h < h_free && grow >= 1.0 {
+                            h_free
+                        } else {
+                            h * grow
+                        };
                         *t += h;
                         *y = tr.y;
                         break;

@@ -119,3 +119,22 @@ fn mean_state_matrix_is_the_jacobian_with_every_mesh_compressed() {
     let mean = sys.mean_state_matrix();
     assert!((jac - mean).amax() <= 1e-12 * sys.mean_state_matrix().amax());
 }
+
+#[test]
+fn the_period_grid_keeps_every_sample_and_adds_the_jumps() {
+    use super::planetary_steady::period_grid;
+    // By hand, 4 samples over a 2 s period (0, 0.5, 1, 1.5, 2 s): the jump at 0.25
+    // cycles falls on the sample at 0.5 s, the one at 0.3 cycles is a node of its own at
+    // 0.6 s, the one 1e-9 cycles after 0.5 (4e-9 of a sample interval, below the merge
+    // distance 1e-6) is marked on the sample at 1 s.
+    let g = period_grid(&[0.25, 0.3, 0.5 + 1e-9], 2.0, 4);
+    let t: Vec<f64> = g.iter().map(|n| n.t_s).collect();
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+    let want = [0.0, 0.5, 0.6, 1.0, 1.5, 2.0];
+    assert_eq!(t.len(), want.len(), "{t:?}");
+    assert!(t.iter().zip(want).all(|(a, b)| close(*a, b)), "{t:?}");
+    let sample: Vec<bool> = g.iter().map(|n| n.sample).collect();
+    let jump: Vec<bool> = g.iter().map(|n| n.jump).collect();
+    assert_eq!(sample, [true, true, false, true, true, true]);
+    assert_eq!(jump, [false, true, true, true, false, false]);
+}

@@ -39,6 +39,9 @@ pub struct PlanetaryMeshes {
     sun_offset: Vec<f64>,
     ring_offset: Vec<f64>,
     teeth_sun: f64,
+    /// Where a pair of the sun mesh and of the ring mesh leaves contact, mesh cycles after
+    /// a pair entered: frac(epsilon) of each (0 for an integer contact ratio).
+    leave_cycles: [f64; 2],
 }
 
 impl PlanetaryMeshes {
@@ -68,6 +71,7 @@ impl PlanetaryMeshes {
                 .map(|g| a_r - g - gamma_rs)
                 .collect(),
             teeth_sun: set.teeth_sun() as f64,
+            leave_cycles: [sp.contact_ratio, (r1 - r0) / rp.base_pitch_m].map(|e| e - e.floor()),
         }
     }
 
@@ -83,23 +87,70 @@ impl PlanetaryMeshes {
 
     /// k_sn at `cycles` mesh cycles since the reference event, N/m.
     pub fn sun_n_per_m(&self, planet: usize, cycles: f64) -> f64 {
-        let c = cycles + self.sun_offset[planet];
-        self.sun
-            .total_stiffness_n_per_m(2.0 * PI / self.teeth_sun * (c - c.floor()))
+        self.sun_n_per_m_decided(planet, cycles, cycles)
     }
 
     /// k_rn at `cycles` mesh cycles since the reference event, N/m: the ring pairs in
     /// contact (one base pitch apart on the path) in parallel.
     pub fn ring_n_per_m(&self, planet: usize, cycles: f64) -> f64 {
-        let c = cycles + self.ring_offset[planet];
+        self.ring_n_per_m_decided(planet, cycles, cycles)
+    }
+
+    /// As [`Self::sun_n_per_m`], but which pairs touch is decided at `decide_cycles` (e.g.
+    /// the middle of an integration step) while their positions follow `cycles`, as
+    /// `GearPair::pairs_in_contact_decided`: a step that ends on a pair entering or
+    /// leaving sees one contact set on all its stages.
+    pub fn sun_n_per_m_decided(&self, planet: usize, cycles: f64, decide_cycles: f64) -> f64 {
+        let off = self.sun_offset[planet];
+        let (c, d) = (cycles + off, decide_cycles + off);
+        let base = d.floor();
+        let rad_per_cycle = 2.0 * PI / self.teeth_sun;
+        self.sun
+            .pair()
+            .pairs_in_contact_decided(rad_per_cycle * (c - base), rad_per_cycle * (d - base))
+            .map(|(_, rho)| self.sun.pair_stiffness_n_per_m(rho))
+            .sum()
+    }
+
+    /// As [`Self::ring_n_per_m`] with the pairs in contact decided at `decide_cycles`
+    /// (see [`Self::sun_n_per_m_decided`]).
+    pub fn ring_n_per_m_decided(&self, planet: usize, cycles: f64, decide_cycles: f64) -> f64 {
+        let off = self.ring_offset[planet];
+        let (c, d) = (cycles + off, decide_cycles + off);
+        let base = d.floor();
         let pb = self.ring_base_pitch_m;
-        let mut rho = self.ring_rho_start_m + pb * (c - c.floor());
+        let mut rho = self.ring_rho_start_m + pb * (c - base);
+        let mut rho_decide = self.ring_rho_start_m + pb * (d - base);
         let mut k = 0.0;
-        while rho <= self.ring_rho_end_m + 1e-15 {
+        while rho_decide <= self.ring_rho_end_m + 1e-15 {
             k += self.ring_pair_at(rho);
             rho += pb;
+            rho_decide += pb;
         }
         k
+    }
+
+    /// The mesh cycles in [0, 1) where some mesh's stiffness jumps (a pair enters or
+    /// leaves contact), sorted, those closer than 1e-9 cycles merged: for each planet's
+    /// sun (ring) mesh where its table's phase passes 0 (a pair enters at the path's
+    /// start) and frac(epsilon) (a pair leaves at its end), c = frac(event - offset).
+    pub fn jump_cycles(&self) -> Vec<f64> {
+        let mut v: Vec<f64> = Vec::new();
+        for (offsets, leave) in [
+            (&self.sun_offset, self.leave_cycles[0]),
+            (&self.ring_offset, self.leave_cycles[1]),
+        ] {
+            for off in offsets {
+                for event in [0.0, leave] {
+                    let c = event - off;
+                    let c = c - c.floor();
+                    v.push(if c > 1.0 - 1e-9 { 0.0 } else { c });
+                }
+            }
+        }
+        v.sort_by(f64::total_cmp);
+        v.dedup_by(|b, a| *b - *a < 1e-9);
+        v
     }
 
     /// The ring pair's stiffness at rho1 (m), linear in the table.

@@ -118,3 +118,79 @@ fn sequential_phasing_cancels_the_summed_harmonics_not_multiple_of_n() {
         assert!(single > 1e-3 * mean, "{name}: single mesh h = 1 {single}");
     }
 }
+
+/// The cycles in [0, 1) where a scan of every mesh's stiffness at `points` equally
+/// spaced cycles steps by more than `threshold`, N/m: each jump as the scan interval
+/// (lower, upper end) holding it.
+fn scanned_jumps(m: &PlanetaryMeshes, points: usize, threshold: f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    for p in 0..m.planets() {
+        let sun = |c| m.sun_n_per_m(p, c);
+        let ring = |c| m.ring_n_per_m(p, c);
+        let meshes: [&dyn Fn(f64) -> f64; 2] = [&sun, &ring];
+        for k in meshes {
+            for j in 0..points {
+                let (a, b) = (j as f64 / points as f64, (j + 1) as f64 / points as f64);
+                if (k(b) - k(a)).abs() > threshold {
+                    out.push((a, b));
+                }
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn jump_cycles_are_where_the_scanned_stiffness_jumps() {
+    // Independent of `jump_cycles` (phases plus contact ratios): a scan of every mesh's
+    // stiffness over one cycle at 2e5 points. Between two points k changes smoothly by
+    // ~1e-5 of its mean at most (a pair's stiffness changes by less than its mean over
+    // a cycle), a pair entering or leaving by 20-60 % of it: a step above 5 % of the mean
+    // is a jump. Each scanned jump's interval (5e-6 cycles) must hold a node, and every
+    // node a scanned jump, in an in-phase (4 planets, 4 distinct nodes: all meshes
+    // alike) and a sequentially phased set (5 planets, up to 20 nodes).
+    for (n, zs, zp, zr) in [(4, 24, 30, 84), (5, 26, 29, 84)] {
+        let (_, m) = meshes_of(n, zs, zp, zr);
+        let nodes = m.jump_cycles();
+        let threshold = 0.05 * m.mean_n_per_m()[0].min(m.mean_n_per_m()[1]);
+        let scanned = scanned_jumps(&m, 200_000, threshold);
+        assert!(!nodes.is_empty() && nodes.windows(2).all(|w| w[0] < w[1]));
+        let holds = |(a, b): (f64, f64), c: f64| c >= a - 1e-9 && c <= b + 1e-9;
+        for &iv in &scanned {
+            assert!(
+                nodes.iter().any(|&c| holds(iv, c) || holds(iv, c + 1.0)),
+                "{n} planets: a jump in {iv:?} with no node ({nodes:?})"
+            );
+        }
+        for &c in &nodes {
+            assert!(
+                scanned.iter().any(|&iv| holds(iv, c) || holds(iv, c + 1.0)),
+                "{n} planets: node {c} where no mesh jumps"
+            );
+        }
+        if n == 5 {
+            // Sequential phasing: the five planets' meshes jump at distinct times.
+            assert!(nodes.len() > 4, "{nodes:?}");
+        }
+    }
+}
+
+#[test]
+fn a_contact_set_decided_before_a_jump_holds_at_the_jump() {
+    // A step ending on a node decides its pairs at its middle: at the node the decided
+    // stiffness is the one just before it (the left limit, continuous within a contact
+    // set), the undecided one the one just after.
+    let (_, m) = meshes_of(5, 26, 29, 84);
+    for c in m.jump_cycles() {
+        let c = c + 1.0; // away from 0, where the left limit is the previous cycle's
+        for p in 0..m.planets() {
+            let left = m.sun_n_per_m(p, c - 1e-9);
+            let decided = m.sun_n_per_m_decided(p, c, c - 1e-4);
+            // Within the smooth change over 1e-9 cycles (1e-8 of the mean at most).
+            assert!((decided - left).abs() < 1e-6 * left, "sun {p} at {c}");
+            let left = m.ring_n_per_m(p, c - 1e-9);
+            let decided = m.ring_n_per_m_decided(p, c, c - 1e-4);
+            assert!((decided - left).abs() < 1e-6 * left, "ring {p} at {c}");
+        }
+    }
+}
