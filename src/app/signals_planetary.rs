@@ -66,7 +66,7 @@ impl SignalsJob {
             .solve()
             .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
         let rec = ring_sensor_record(&d, &r, sensor)
-            .map_err(|m| JobError::Input(vec![Problem::new(m)]))?;
+            .map_err(|e| JobError::Input(vec![Problem::new(e.to_string())]))?;
         let harmonics = s.mesh_harmonics.max(1) as usize;
         let meta = RunMetadata::new("signals", &self.case);
         publish::publish(

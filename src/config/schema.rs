@@ -377,7 +377,7 @@ pub const KEYS: &[KeySpec] = &[
     k("signals.sensor_stage", "-", Int(1, 100), "Gear trains: the stage (1 to the number of `[[stage]]` tables) whose pinion and gear bearings the transfer path's four inputs are, and whose pinion (`\"pinion\"`) and gear (`\"gear\"`) shafts `signals.tachometer_shaft` and the indicators refer to; omit for stage 1 (a single pair is stage 1).",
       "One of the case's stages (checked against their number)."),
     k("signals.ring_sensor_angle_deg", "deg", Num(Range::closed(0.0, 360.0)), "Planetary sets: the sensor's angle on the fixed ring, from planet 1's position at the record's start in the carrier's sense of rotation; omit for 0 (docs/SIGNALS.md, section 6).",
-      "One turn."),
+      "Any place on the ring: one full turn."),
     k("signals.ring_sensor_half_width_deg", "deg", Num(Range::above(0.0, 180.0)), "Planetary sets: half-width of the Hann window over which the ring sensor hears a planet's ring mesh (McFadden & Smith 1985); omit for 180 / N, half the planet spacing, so that each planet is heard alone as it passes.",
       "Up to half a turn: a wider window would hear a planet on both sides."),
     k("teeth.pitch_error_pinion_um", "µm", NumArray(TOOTH_ERROR), "Position (pitch) error of each pinion tooth, z1 values: how far its loaded flank stands ahead of its ideal position towards the gear (positive: earlier contact), an arc on the reference circle. The single pitch deviations of ISO 1328-1 are the differences of neighbours. Absent: perfect spacing (docs/MODEL.md, section 9).",

@@ -52,19 +52,26 @@ pub struct RingSensorRecord {
     pub values_n: Vec<f64>,
 }
 
-/// The ring sensor's record of the steady state `r` of `d`; an error names why a set
-/// cannot have one (the ring must be fixed).
+/// Why a ring sensor's record cannot be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RingSensorError {
+    /// The ring turns (another member is held), so a sensor on it turns too.
+    #[error("`planetary.fixed` = \"{}\": a sensor on the ring needs the ring held fixed (a turning ring carries the sensor with it)", .0.name())]
+    RingNotFixed(Member),
+    /// The transform of the revolution failed (realfft's message).
+    #[error("the ring sensor's spectrum: {0}")]
+    Spectrum(String),
+}
+
+/// The ring sensor's record of the steady state `r` of `d`.
 pub fn ring_sensor_record(
     d: &PlanetaryDynamics,
     r: &PlanetaryResponse,
     sensor: RingSensor,
-) -> Result<RingSensorRecord, String> {
+) -> Result<RingSensorRecord, RingSensorError> {
     let set = &d.study.set;
     if set.fixed != Member::Ring {
-        return Err(format!(
-            "`planetary.fixed` = \"{}\": a sensor on the ring needs the ring held fixed (a turning ring carries the sensor with it)",
-            set.fixed.name()
-        ));
+        return Err(RingSensorError::RingNotFixed(set.fixed));
     }
     let n = set.planets();
     let zr = set.teeth_ring();
@@ -105,13 +112,13 @@ pub fn ring_sensor_record(
 
 /// Single-sided amplitudes of a periodic signal's harmonics from one period's samples:
 /// the mean, then 2 |X_k| / M (and |X_k| / M at the Nyquist order of an even M).
-fn order_amplitudes(x: &[f64]) -> Result<Vec<f64>, String> {
+fn order_amplitudes(x: &[f64]) -> Result<Vec<f64>, RingSensorError> {
     let m = x.len();
     let fft = RealFftPlanner::<f64>::new().plan_fft_forward(m);
     let mut input = x.to_vec();
     let mut out = fft.make_output_vec();
     fft.process(&mut input, &mut out)
-        .map_err(|e| format!("the ring sensor's spectrum: {e}"))?;
+        .map_err(|e| RingSensorError::Spectrum(e.to_string()))?;
     Ok(out
         .iter()
         .enumerate()
