@@ -77,21 +77,8 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), StoredRunError
 fn record_problem(mode: WearMode, r: &UpdateRecord, model: &Model) -> Result<(), String> {
     let n = model.grid.len();
     let total = model.case.wear.total_cycles;
-    for (name, v) in [
-        ("pinion wear", &r.wear.pinion_m),
-        ("gear wear", &r.wear.gear_m),
-        ("pinion wear increment", &r.increment_pinion_m),
-        ("gear wear increment", &r.increment_gear_m),
-    ] {
-        if v.len() != n {
-            return Err(format!(
-                "{name} has {} points, the case's profile grid has {n}",
-                v.len()
-            ));
-        }
-        if let Some(x) = v.iter().find(|x| !x.is_finite() || **x < 0.0) {
-            return Err(format!("{name} holds {x}, not a finite value >= 0"));
-        }
+    if let Some(problem) = r.profile_problem(n) {
+        return Err(problem);
     }
     if let Some(problem) = tooth_problem(model, r) {
         return Err(problem);
