@@ -115,9 +115,35 @@ fn mesh_equilibrium(
     cycle_now: i64,
     t_s: f64,
 ) -> MeshState {
+    let (mut ms, k, gap) = pairs_at(mesh, phase_rad, cycle_now, t_s);
+    let n = ms.n_pairs;
+    if k[..n].iter().all(|k| *k <= 0.0) {
+        // No pair can carry the load (a broken tip's removed contact in single contact):
+        // the quasi-static mesh has lost contact there.
+        ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], 0.0);
+        return ms;
+    }
+    carry_the_torque(mesh, boundary, &mut ms, &k[..n], &gap[..n]);
+    if ms.corner[..n].contains(&true) {
+        // The mesh's stiffness counts the corners beyond the path only where they touch.
+        ms.stiffness_total_n_per_m = (0..n)
+            .filter(|i| !ms.corner[*i] || ms.deflection_m > gap[*i])
+            .map(|i| k[i])
+            .sum();
+    }
+    ms
+}
+
+/// The pairs of `mesh` in reach at `phase_rad` (tooth cycle `cycle_now`, time `t_s` for
+/// the run-out): a mesh state with their positions, stiffnesses (N/m) and flags, and each
+/// pair's stiffness and gap (m, the external and run-out errors taken off).
+fn pairs_at(
+    mesh: &TrainMesh,
+    phase_rad: f64,
+    cycle_now: i64,
+    t_s: f64,
+) -> (MeshState, [f64; MAX_PAIRS], [f64; MAX_PAIRS]) {
     let parts = &mesh.parts;
-    let [omega_p, omega_g] = mesh.operating.speeds_rad_s;
-    let rb1 = parts.pair.pinion.base_radius_m;
     let (e_ext, _) = parts.external.at(phase_rad);
     let mut ms = MeshState::default();
     let mut k = [0.0; MAX_PAIRS];
@@ -157,12 +183,21 @@ fn mesh_equilibrium(
         n += 1;
     }
     ms.n_pairs = n;
-    if k[..n].iter().all(|k| *k <= 0.0) {
-        // No pair can carry the load (a broken tip's removed contact in single contact):
-        // the quasi-static mesh has lost contact there.
-        ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], 0.0);
-        return ms;
-    }
+    (ms, k, gap)
+}
+
+/// The mesh force that carries the loaded shaft's torque with the friction moment of
+/// the pairs it loads (N; a fixed point, at most 8 passes, to 1e-12), set in `ms` with
+/// its deflection and contacts. The pairs' stiffness `k` (N/m) and gaps (m).
+fn carry_the_torque(
+    mesh: &TrainMesh,
+    boundary: SpeedBoundary,
+    ms: &mut MeshState,
+    k: &[f64],
+    gap: &[f64],
+) {
+    let parts = &mesh.parts;
+    let [omega_p, omega_g] = mesh.operating.speeds_rad_s;
     let (torque, on_gear) = match boundary {
         SpeedBoundary::BrakeSpeedImposed => (mesh.operating.torques_nm[0], false),
         _ => (mesh.operating.torques_nm[1], true),
@@ -170,18 +205,16 @@ fn mesh_equilibrium(
     let arm = if on_gear {
         parts.pair.gear.base_radius_m
     } else {
-        rb1
+        parts.pair.pinion.base_radius_m
     };
+    let n = k.len();
     let mut force = torque / arm;
     for _ in 0..8 {
         ms.force_n = force;
-        let delta = deflection_for_force(&k[..n], &gap[..n], force);
+        let delta = deflection_for_force(k, gap, force);
         ms.deflection_m = delta;
-        let mut sh = [0.0; MAX_PAIRS];
-        for i in 0..n {
-            sh[i] = k[i] * (delta - gap[i]).max(0.0) / force.max(1e-300);
-        }
-        mesh.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
+        let sh = compression_shares(k, gap, delta, force.max(1e-300));
+        mesh.fill_contacts(ms, Some(sh), omega_p, omega_g);
         // Friction moment per unit mesh force on the loaded shaft.
         let mut moment_per_n = 0.0;
         for i in 0..n {
@@ -200,20 +233,19 @@ fn mesh_equilibrium(
         }
     }
     ms.force_n = force;
-    ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], force);
+    ms.deflection_m = deflection_for_force(k, gap, force);
+    let sh = compression_shares(k, gap, ms.deflection_m, force);
+    mesh.fill_contacts(ms, Some(sh), omega_p, omega_g);
+}
+
+/// Each pair's share of the mesh force `force_n` at deflection `delta_m`: its spring
+/// force k_i max(delta - g_i, 0) over the force (pairs of stiffness `k`, N/m, gaps `gap`, m).
+fn compression_shares(k: &[f64], gap: &[f64], delta_m: f64, force_n: f64) -> [f64; MAX_PAIRS] {
     let mut sh = [0.0; MAX_PAIRS];
-    for i in 0..n {
-        sh[i] = k[i] * (ms.deflection_m - gap[i]).max(0.0) / force;
+    for i in 0..k.len() {
+        sh[i] = k[i] * (delta_m - gap[i]).max(0.0) / force_n;
     }
-    mesh.fill_contacts(&mut ms, Some(sh), omega_p, omega_g);
-    if ms.corner[..n].contains(&true) {
-        // The mesh's stiffness counts the corners beyond the path only where they touch.
-        ms.stiffness_total_n_per_m = (0..n)
-            .filter(|i| !ms.corner[*i] || ms.deflection_m > gap[*i])
-            .map(|i| k[i])
-            .sum();
-    }
-    ms
+    sh
 }
 
 /// Quasi-static response over one mesh period on the same grid as the dynamic solver,
