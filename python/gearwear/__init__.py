@@ -19,7 +19,7 @@ numpy columns with units in their names) and named views of them:
 function                              command                   returns
 ====================================  ========================  ======================
 ``stiffness(case)``                   gearwear stiffness        ``StiffnessResult``
-``dynamics(case, te)``                gearwear dynamics         ``DynamicsResult``
+``dynamics(case, te)``                gearwear dynamics         ``DynamicsResult`` [#]_
 ``wear(case, mode)``                  gearwear wear             ``WearResult``
 ``run(case, out)``                    gearwear run              ``RunResult``
 ``sweep(case, vary, run)``            gearwear sweep            ``SweepResult``
@@ -28,7 +28,13 @@ function                              command                   returns
 ``predict(case, posterior, ...)``     gearwear predict          ``PredictionResult``
 ``predict_merge(inputs)``             gearwear predict-merge    ``PredictionResult``
 ``load_spectrum(history)``            gearwear load-spectrum    ``LoadSpectrumResult``
+``signals(case)``                     gearwear signals          ``SignalsResult`` [#]_
 ====================================  ========================  ======================
+
+.. [#] ``PlanetaryDynamicsResult`` for a case with ``[planetary]``. A gear train's
+   (``[[stage]]``) ``DynamicsResult`` has every stage's coordinates and ``mesh(k)``; its
+   ``WearResult`` has its runs per mesh in ``stages`` and the train's ``history(mode)``.
+.. [#] ``PlanetarySignalsResult`` for a case with ``[planetary]`` (the ring sensor).
 
 A case with a ``[load_spectrum]`` runs ``wear``, ``run``, ``calibrate``, ``predict`` and
 wear sweeps under its spectrum; ``WearResult.duty`` then views what each bin did.
@@ -74,6 +80,9 @@ from ._results import (
     DatasetResult,
     DynamicsResult,
     LoadSpectrumResult,
+    MeshResponse,
+    PlanetaryDynamicsResult,
+    PlanetarySignalsResult,
     PredictionResult,
     RunResult,
     SignalsResult,
@@ -107,6 +116,9 @@ __all__ = [
     "Table",
     "StiffnessResult",
     "DynamicsResult",
+    "MeshResponse",
+    "PlanetaryDynamicsResult",
+    "PlanetarySignalsResult",
     "WearResult",
     "WearRunResult",
     "RunResult",
@@ -227,7 +239,7 @@ def dynamics(
     replace: bool = False,
     figures: _Optional[str] = None,
     figure_size: _Optional[_Tuple[int, int]] = None,
-) -> DynamicsResult:
+) -> _Union[DynamicsResult, PlanetaryDynamicsResult]:
     """One steady-state evaluation of the 8-DOF tribo-dynamic model (new teeth), as
     ``gearwear dynamics [--transmission-error FILE]``.
 
@@ -262,6 +274,8 @@ def dynamics(
         figures=figures,
         figure_size=figure_size,
     )
+    if "planetary_dynamics" in n["summary"]:
+        return _done(PlanetaryDynamicsResult(**n), n)
     return _done(DynamicsResult(**n), n)
 
 
@@ -674,7 +688,7 @@ def signals(
     replace: bool = False,
     figures: _Optional[str] = None,
     figure_size: _Optional[_Tuple[int, int]] = None,
-) -> SignalsResult:
+) -> _Union[SignalsResult, PlanetarySignalsResult]:
     """One record of what a sensor sees, as ``gearwear signals [--transfer-path FILE]``.
 
     The case's ``[signals]`` section sets the acquisition (sampling rate, anti-alias
@@ -693,6 +707,8 @@ def signals(
         figures=figures,
         figure_size=figure_size,
     )
+    if "planetary_signals" in n["summary"]:
+        return _done(PlanetarySignalsResult(**n), n)
     return _done(SignalsResult(**n), n)
 
 

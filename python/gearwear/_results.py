@@ -19,6 +19,9 @@ __all__ = [
     "Table",
     "StiffnessResult",
     "DynamicsResult",
+    "MeshResponse",
+    "PlanetaryDynamicsResult",
+    "PlanetarySignalsResult",
     "WearRunResult",
     "WearResult",
     "RunResult",
@@ -276,27 +279,69 @@ class DynamicsResult(_Result):
         """Mesh stiffness along the response, N/m; shape (n,)."""
         return self._ts("mesh_stiffness_n_per_m")
 
+    @property
+    def coordinates(self) -> List[str]:
+        """The model's generalised coordinates in the column order of ``displacement``,
+        ``velocity``, ``acceleration`` and ``mode_shapes``: ``COORDINATES`` for a single
+        pair (8); for a gear train of k stages the lateral coordinates of every stage's
+        pinion and gear (``x_pinion1`` ... ``y_gear{k}``), then the rotations from the
+        motor through every shaft to the brake (``phi_motor`` ... ``phi_brake``), as the
+        ``modes_undamped`` table names them."""
+        t = self.tables.get("modes_undamped")
+        if t is None:
+            return list(COORDINATES)
+        return [c[len("shape_") :] for c in t.columns if c.startswith("shape_")]
+
+    @property
+    def coordinate_units(self) -> List[str]:
+        """The SI unit of each of ``coordinates``: ``m`` (lateral) or ``rad``."""
+        return ["rad" if c.startswith("phi_") else "m" for c in self.coordinates]
+
     def _coords(self, prefix: str, suffix: str) -> np.ndarray:
-        names = [f"{prefix}{c}_{u}{suffix}" for c, u in zip(COORDINATES, COORDINATE_UNITS)]
+        names = [
+            f"{prefix}{c}_{u}{suffix}" for c, u in zip(self.coordinates, self.coordinate_units)
+        ]
         return _stack(self.tables["timeseries"], names)
 
     @property
     def displacement(self) -> np.ndarray:
-        """Generalised displacements q, shape (n, 8), SI units: x, y of pinion and gear
-        in m, then the rotations of motor, pinion, gear and brake in rad (``COORDINATES``,
-        ``COORDINATE_UNITS``)."""
+        """Generalised displacements q, shape (n, d), SI units, columns as
+        ``coordinates`` (single pair, d = 8: x, y of pinion and gear in m, then the
+        rotations of motor, pinion, gear and brake in rad, ``COORDINATES``)."""
         return self._coords("", "")
 
     @property
     def velocity(self) -> np.ndarray:
-        """Generalised velocities dq/dt, shape (n, 8): m/s and rad/s (order as
+        """Generalised velocities dq/dt, shape (n, d): m/s and rad/s (order as
         ``displacement``)."""
         return self._coords("d", "_per_s")
 
     @property
     def acceleration(self) -> np.ndarray:
-        """Generalised accelerations, shape (n, 8): m/s^2 and rad/s^2."""
+        """Generalised accelerations, shape (n, d): m/s^2 and rad/s^2."""
         return self._coords("dd", "_per_s2")
+
+    @property
+    def n_meshes(self) -> int:
+        """Number of meshes: 1 for a single pair, k for a gear train of k stages."""
+        return len(self.summary.get("meshes", [])) or 1
+
+    def mesh(self, stage: int) -> "MeshResponse":
+        """The response of stage ``stage``'s mesh (1 .. ``n_meshes``): its DTE, force,
+        stiffness and phase over the recorded time. Stage 1 is what ``dte_um``,
+        ``mesh_force_n``, ``mesh_stiffness_n_per_m`` and ``mesh_phase_rad`` give."""
+        if isinstance(stage, bool) or not isinstance(stage, int):
+            raise TypeError(f"stage: expected an int, got {type(stage).__name__}")
+        if not 1 <= stage <= self.n_meshes:
+            raise ValueError(f"stage = {stage}: this model has meshes 1 .. {self.n_meshes}")
+        prefix = "" if stage == 1 else f"mesh{stage}_"
+        meshes = self.summary.get("meshes")
+        return MeshResponse(
+            stage,
+            self.tables["timeseries"],
+            prefix,
+            meshes[stage - 1] if meshes else {},
+        )
 
     @property
     def friction_coefficient(self) -> np.ndarray:
@@ -340,8 +385,8 @@ class DynamicsResult(_Result):
     @property
     def mode_shapes(self) -> np.ndarray:
         """Mass-normalised undamped mode shapes, one row per natural frequency, columns
-        as ``COORDINATES`` (0 on an imposed coordinate); shape (k, 8)."""
-        return _stack(self.tables["modes_undamped"], [f"shape_{c}" for c in COORDINATES])
+        as ``coordinates`` (0 on an imposed coordinate); shape (k, d)."""
+        return _stack(self.tables["modes_undamped"], [f"shape_{c}" for c in self.coordinates])
 
     @property
     def damped_frequency_hz(self) -> np.ndarray:
@@ -360,6 +405,146 @@ class DynamicsResult(_Result):
         in the mesh: where the response peaks when a mesh harmonic meets it); booleans as
         1.0 / 0.0, shape (p,)."""
         return self.tables["modes"]["mesh_pole"]
+
+
+class MeshResponse:
+    """One mesh's response in a dynamics result (``DynamicsResult.mesh(k)``): columns of
+    the ``timeseries`` table and the mesh's block of the summary."""
+
+    def __init__(self, stage: int, timeseries: Table, prefix: str, summary: Mapping[str, Any]):
+        #: The stage (1-based) of the mesh.
+        self.stage = stage
+        #: The summary's block of this mesh (``meshes[stage - 1]`` of summary.json; empty
+        #: for a single pair, whose numbers are the summary's own).
+        self.summary: Mapping[str, Any] = summary
+        self._t = timeseries
+        self._p = prefix
+
+    def _col(self, name: str) -> np.ndarray:
+        if self._p and name == "mesh_phase_rad":
+            return self._t[f"{self._p}phase_rad"]
+        if self._p and name.startswith("mesh_"):
+            return self._t[f"{self._p}{name[len('mesh_'):]}"]
+        return self._t[f"{self._p}{name}"]
+
+    @property
+    def time_s(self) -> np.ndarray:
+        """Time, s; shape (n,)."""
+        return self._t["time_s"]
+
+    @property
+    def mesh_phase_rad(self) -> np.ndarray:
+        """The mesh's phase (its pinion's rotation reduced to one mesh period), rad."""
+        return self._col("mesh_phase_rad")
+
+    @property
+    def dte_um(self) -> np.ndarray:
+        """The mesh's dynamic transmission error, µm; shape (n,)."""
+        return self._col("dte_um")
+
+    @property
+    def mesh_force_n(self) -> np.ndarray:
+        """The mesh's force, N; shape (n,)."""
+        return self._col("mesh_force_n")
+
+    @property
+    def mesh_stiffness_n_per_m(self) -> np.ndarray:
+        """The mesh's stiffness along the response, N/m; shape (n,)."""
+        return self._col("mesh_stiffness_n_per_m")
+
+    def __repr__(self) -> str:
+        return f"<gearwear.MeshResponse stage {self.stage}>"
+
+
+class PlanetaryDynamicsResult(_Result):
+    """The periodic steady state of a planetary set (``gearwear dynamics`` on a case with
+    ``[planetary]``). Tables: ``mesh_forces`` (``time_s``, ``sun_planet_{i}_force_n``,
+    ``ring_planet_{i}_force_n``) and ``motions`` (every member's coordinates, m; the
+    rotations as ``u`` = base radius x angle). ``summary["planetary_dynamics"]`` holds
+    the load sharing and dynamic factors."""
+
+    @property
+    def planets(self) -> int:
+        """Number of planets N."""
+        return sum(1 for c in self.tables["mesh_forces"].columns if c.startswith("sun_planet_"))
+
+    @property
+    def time_s(self) -> np.ndarray:
+        """Time, s; shape (n,)."""
+        return self.tables["mesh_forces"]["time_s"]
+
+    def _forces(self, mesh: str) -> np.ndarray:
+        names = [f"{mesh}_planet_{i}_force_n" for i in range(1, self.planets + 1)]
+        return _stack(self.tables["mesh_forces"], names)
+
+    @property
+    def sun_planet_force_n(self) -> np.ndarray:
+        """Force of each sun-planet mesh, N; shape (n, N), planet 1 first."""
+        return self._forces("sun")
+
+    @property
+    def ring_planet_force_n(self) -> np.ndarray:
+        """Force of each ring-planet mesh, N; shape (n, N)."""
+        return self._forces("ring")
+
+    @property
+    def motions(self) -> Table:
+        """Every member's displacements over the recorded time (the ``motions`` table)."""
+        return self.tables["motions"]
+
+    @property
+    def load_sharing_factor(self) -> np.ndarray:
+        """Each planet's load sharing factor, N x its mean sun-mesh force over the sum of
+        them (1 for an even share); shape (N,)."""
+        return np.asarray(self.summary["planetary_dynamics"]["load_sharing_factor"], dtype=float)
+
+    @property
+    def mesh_frequency_hz(self) -> float:
+        """Mesh frequency z_r (f_carrier - f_ring), Hz."""
+        return float(self.summary["planetary_dynamics"]["mesh_frequency_hz"])
+
+
+class _Recorded(_Result):
+    """A study that writes a record at a sampling rate (the summary's ``record``)."""
+
+    @property
+    def record(self) -> Table:
+        """The record: ``time_s`` and the channels (a pair's adds ``tachometer_v``)."""
+        return self.tables["record"]
+
+    @property
+    def sampling_rate_hz(self) -> float:
+        """The record's sampling rate, Hz."""
+        return float(self.summary["record"]["sampling_rate_hz"])
+
+    @property
+    def channel_unit(self) -> str:
+        """Unit of the channels: ``m/s^2``, ``g`` or ``mV`` for accelerometers, ``N`` for
+        the ring sensor of a planetary set (the force it hears)."""
+        return str(self.summary["record"]["channel_unit"])
+
+
+class PlanetarySignalsResult(_Recorded):
+    """What a sensor on the ring of a planetary set hears (``gearwear signals`` on a case
+    with ``[planetary]``): the ``record`` (``time_s``, ``ring_sensor_n``) at the case's
+    sampling rate and ``orders`` (each carrier order's amplitude over one carrier
+    revolution). ``summary["planetary_signals"]`` gives the carrier, mesh and
+    planet-pass frequencies and each mesh harmonic's sidebands (docs/SIGNALS.md)."""
+
+    @property
+    def orders(self) -> Table:
+        """``carrier_order``, ``frequency_hz``, ``amplitude_n`` (single-sided)."""
+        return self.tables["orders"]
+
+    @property
+    def planet_pass_hz(self) -> float:
+        """Planet-pass frequency N f_carrier, Hz."""
+        return float(self.summary["planetary_signals"]["planet_pass_hz"])
+
+    @property
+    def mesh_frequency_hz(self) -> float:
+        """Mesh frequency z_r f_carrier, Hz (the ring fixed)."""
+        return float(self.summary["planetary_signals"]["mesh_frequency_hz"])
 
 
 class WearRunResult:
@@ -499,19 +684,54 @@ class WearResult(_Result):
             return None
         return DutyResult(self.tables, self.summary.get("load_spectrum", {}))
 
-    @property
-    def runs(self) -> Dict[str, WearRunResult]:
-        """The runs present by mode (``"dynamic"``, ``"quasi_static"``)."""
+    def _runs_of(self, suffix: str) -> Dict[str, WearRunResult]:
         out = {}
         for mode in ("dynamic", "quasi_static"):
-            u, p = self.tables.get(f"updates_{mode}"), self.tables.get(f"wear_profiles_{mode}")
+            u = self.tables.get(f"updates_{mode}{suffix}")
+            p = self.tables.get(f"wear_profiles_{mode}{suffix}")
             if u is not None and p is not None:
                 out[mode] = WearRunResult(mode, u, p)
         return out
 
     @property
+    def is_train(self) -> bool:
+        """Whether the study ran on a gear train (its runs are per stage: ``stages``)."""
+        return any(n.startswith("wear_history_") for n in self.tables)
+
+    @property
+    def runs(self) -> Dict[str, WearRunResult]:
+        """The runs present by mode (``"dynamic"``, ``"quasi_static"``). A gear train's
+        runs are per mesh: ``stages``."""
+        if self.is_train:
+            raise ValueError(
+                f"a gear train of {len(self.stages)} stages wears mesh by mesh: "
+                "take result.stages[k][mode] (k = 0 for stage 1) and result.history(mode)"
+            )
+        return self._runs_of("")
+
+    @property
+    def stages(self) -> List[Dict[str, WearRunResult]]:
+        """A gear train's runs, one dict per mesh (stage 1 first) of its runs by mode,
+        each counting that stage's pinion cycles; empty for a single pair."""
+        out = []
+        while True:
+            runs = self._runs_of(f"_stage{len(out) + 1}")
+            if not runs:
+                return out
+            out.append(runs)
+
+    def history(self, mode: str = "dynamic") -> Table:
+        """A gear train's wear history of run ``mode``: one row per update and stage with
+        the input cycles, the stage's pinion and gear cycles, its maximum wear depths and
+        the stage whose wear cut the block (``block_limited_by_stage``)."""
+        name = f"wear_history_{mode.replace('-', '_')}"
+        if name not in self.tables:
+            raise KeyError(f"no {name!r} table: a gear train's {mode!r} run was not made")
+        return self.tables[name]
+
+    @property
     def dynamic(self) -> Optional[WearRunResult]:
-        """The dynamic run (None if not run)."""
+        """The dynamic run (None if not run; a gear train's: ``stages``)."""
         return self.runs.get("dynamic")
 
     @property
@@ -682,26 +902,12 @@ class SweepResult:
 
 
 
-class SignalsResult(_Result):
+class SignalsResult(_Recorded):
     """One record of what a sensor sees (``gearwear signals``): the accelerometer channels
     and the tachometer at the sampling rate, their spectrum, the time-synchronous average
     of each shaft, and the condition indicators. Tables: ``record`` (``time_s``, one
     column per sensor with its unit in the name, ``tachometer_v``), ``spectrum``,
     ``tsa_pinion``, ``tsa_gear``. See docs/SIGNALS.md."""
-
-    @property
-    def record(self) -> Table:
-        """The record: ``time_s``, the channels, ``tachometer_v``."""
-        return self.tables["record"]
-
-    @property
-    def sampling_rate_hz(self) -> float:
-        return float(self.summary["record"]["sampling_rate_hz"])
-
-    @property
-    def channel_unit(self) -> str:
-        """Unit of the accelerometer channels: ``m/s^2``, ``g`` or ``mV``."""
-        return str(self.summary["record"]["channel_unit"])
 
     @property
     def indicators(self) -> List[Dict[str, Any]]:

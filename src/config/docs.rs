@@ -33,40 +33,115 @@ fn tree_of(case: &Case) -> Table {
     t
 }
 
+/// Sections whose mere presence changes the model (a `[planetary]` table makes the case a
+/// planetary set): written with a commented header while the case has none, so the text
+/// reads back to the same case.
+const PRESENCE_SECTIONS: &[&str] = &["planetary"];
+
+/// One key of `section` as commented TOML: its doc line, then its value in `table` or a
+/// commented `(unset)`.
+fn key_lines(out: &mut String, s: &super::schema::KeySpec, key: &str, table: Option<&Value>) {
+    out.push_str(&format!(
+        "# {} [{}] Valid: {}.\n",
+        s.doc,
+        s.unit,
+        s.valid.describe()
+    ));
+    match table.and_then(|t| t.get(key)) {
+        Some(v) => out.push_str(&format!("{key} = {v}\n")),
+        None => out.push_str(&format!("# {key} = (unset)\n")),
+    }
+}
+
+/// The entries of `table` no schema key of its section covers (a sub-table such as
+/// `[planetary.lumped]`), as inline TOML, so nothing of the case is lost.
+fn uncovered_lines(out: &mut String, section: &str, table: Option<&Value>) {
+    let Some(Value::Table(t)) = table else { return };
+    for (k, v) in t {
+        let covered = KEYS
+            .iter()
+            .any(|s| s.key.split_once('.') == Some((section, k.as_str())));
+        if !covered && k != "bins" {
+            out.push_str(&format!("{k} = {v}\n"));
+        }
+    }
+}
+
 /// `case` as commented TOML under `header`: every key with its unit, meaning and range.
+/// Reads back to the same case: the `[[stage]]` and `[[fault]]` tables the case has are
+/// written one by one, and sections or sub-tables the schema does not list as they are.
 fn commented(case: &Case, header: &str) -> String {
     let tree = tree_of(case);
     let mut out = String::from(header);
-    let mut current = "";
-    for s in KEYS {
-        let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
-        if section != current {
-            if TABLE_ARRAYS.contains(&section) {
-                out.push_str(&format!(
-                    "\n# [[{section}]]  (one table per {section}, none by default; uncomment to add one)\n"
-                ));
-            } else {
-                out.push_str(&format!("\n[{section}]\n"));
+    let sections: Vec<&str> = {
+        let mut v: Vec<&str> = Vec::new();
+        for s in KEYS {
+            let section = s.key.split_once('.').map_or("", |(a, _)| a);
+            if v.last() != Some(&section) {
+                v.push(section);
             }
-            // The spectrum's bins are a list of tables, not a schema key: written as the
-            // resolved inline list (a `file` read, hours and rpm converted), so the text
-            // reads back to the same case.
-            if let Some(bins) = tree.get(section).and_then(|t| t.get("bins")) {
-                out.push_str(&format!(
-                    "# The bins: torque_nm [N m], input_speed_hz [Hz], share of the load cycles.\nbins = {bins}\n"
-                ));
-            }
-            current = section;
         }
-        out.push_str(&format!(
-            "# {} [{}] Valid: {}.\n",
-            s.doc,
-            s.unit,
-            s.valid.describe()
-        ));
-        match tree.get(section).and_then(|t| t.get(key)) {
-            Some(v) => out.push_str(&format!("{key} = {v}\n")),
-            None => out.push_str(&format!("# {key} = (unset)\n")),
+        v
+    };
+    for section in &sections {
+        let specs: Vec<_> = KEYS
+            .iter()
+            .filter(|s| s.key.split_once('.').map_or("", |(a, _)| a) == *section)
+            .collect();
+        let key_of = |s: &super::schema::KeySpec| {
+            s.key.split_once('.').map_or(s.key, |(_, k)| k).to_string()
+        };
+        if TABLE_ARRAYS.contains(section) {
+            out.push_str(&format!(
+                "\n# [[{section}]]  (one table per {section}, none by default; uncomment to add one)\n"
+            ));
+            let elements = match tree.get(*section) {
+                Some(Value::Array(a)) => a.clone(),
+                _ => Vec::new(),
+            };
+            if elements.is_empty() {
+                for s in &specs {
+                    key_lines(&mut out, s, &key_of(s), None);
+                }
+            }
+            for e in &elements {
+                out.push_str(&format!("[[{section}]]\n"));
+                for s in &specs {
+                    key_lines(&mut out, s, &key_of(s), Some(e));
+                }
+                uncovered_lines(&mut out, section, Some(e));
+            }
+            continue;
+        }
+        let table = tree.get(*section);
+        if table.is_none() && PRESENCE_SECTIONS.contains(section) {
+            out.push_str(&format!(
+                "\n# [{section}]  (absent; uncomment the header and the keys to add one)\n"
+            ));
+        } else {
+            out.push_str(&format!("\n[{section}]\n"));
+        }
+        // The spectrum's bins are a list of tables, not a schema key: written as the
+        // resolved inline list (a `file` read, hours and rpm converted), so the text
+        // reads back to the same case.
+        if let Some(bins) = table.and_then(|t| t.get("bins")) {
+            out.push_str(&format!(
+                "# The bins: torque_nm [N m], input_speed_hz [Hz], share of the load cycles.\nbins = {bins}\n"
+            ));
+        }
+        for s in &specs {
+            key_lines(&mut out, s, &key_of(s), table);
+        }
+        uncovered_lines(&mut out, section, table);
+    }
+    // Whole sections the schema does not list (none is lost).
+    for (k, v) in &tree {
+        if !sections.contains(&k.as_str()) {
+            if let Value::Table(t) = v {
+                let mut one = Table::new();
+                one.insert(k.clone(), Value::Table(t.clone()));
+                out.push_str(&format!("\n{one}"));
+            }
         }
     }
     out

@@ -60,6 +60,14 @@ pub fn planetary_signals_artifacts(
             "samples_per_revolution": rec.revolution_n.len(),
             "mesh_harmonics": mesh,
         },
+        // The acquisition as PHM datasets state it: rate, length, the channel's unit.
+        "record": {
+            "sampling_rate_hz": sensor.sampling_rate_hz,
+            "samples": rec.times_s.len(),
+            "duration_s": rec.times_s.len() as f64 / sensor.sampling_rate_hz,
+            "channel": "ring_sensor_n",
+            "channel_unit": "N",
+        },
         "warnings": d.study.warnings,
     });
     let mut a = Artifacts {
