@@ -104,3 +104,51 @@ fn a_single_pair_study_refuses_a_train_before_its_budget_check() {
     let err = rejected(&["signals", "--config", &file], &["budget"]);
     assert!(!err.contains("this case is a gear train"), "{err}");
 }
+
+#[test]
+fn sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
+    // A sweep row holds one mesh's numbers and a wear row the single pair's loop (which
+    // leaves every other mesh unworn: 0.14 % off `gearwear wear`'s stage-1 wear on the
+    // two-stage example); a dataset's records, chain and labels are a single pair's.
+    // Each refuses the train, naming it, with nothing written (`rejected`).
+    let dir = tempfile::tempdir().unwrap();
+    let file = case_file(
+        &dir,
+        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
+    );
+    for run in ["dynamics", "wear"] {
+        rejected(
+            &[
+                "sweep",
+                "--config",
+                &file,
+                "--run",
+                run,
+                "--vary",
+                "operating.input_speed_hz=20:30:5",
+            ],
+            &["this case is a gear train", "`gearwear dynamics`"],
+        );
+    }
+    // A varied stage key makes each case a one-stage train: refused per case.
+    rejected(
+        &["sweep", "--vary", "stage.teeth_pinion=20,21"],
+        &[
+            "case 0 (stage.teeth_pinion=20)",
+            "this case is a gear train",
+        ],
+    );
+    let design = dir.path().join("design.toml");
+    std::fs::write(
+        &design,
+        format!(
+            "case = {file:?}\n[run_to_failure]\nstates = 2\nmax_cycles = 1e4\nwear_limit_um = 10\n[[condition]]\nname = \"healthy\"\n"
+        ),
+    )
+    .unwrap();
+    let err = rejected(
+        &["dataset", "--design", design.to_str().unwrap()],
+        &["condition `healthy`", "this case is a gear train"],
+    );
+    assert!(!err.contains("budget"), "{err}");
+}

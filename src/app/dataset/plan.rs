@@ -25,6 +25,16 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let mut problems = Vec::new();
     let mut out: Vec<ChainSetup> = Vec::new();
     for c in &d.conditions {
+        // A train's records would be made by the single pair's wear loop and chain:
+        // refused, as by every study that takes a single pair only.
+        if !c.case.stage.is_empty() {
+            problems.push(format!(
+                "condition `{}`: {}",
+                c.name,
+                crate::app::TRAIN_STUDIES
+            ));
+            continue;
+        }
         let mut case = c.case.clone();
         case.set_load_point(crate::config::case::LoadPoint {
             input_speed_hz: fastest,

@@ -101,6 +101,17 @@ pub fn resolve(
     if !helical.is_empty() {
         return Err(JobError::Input(helical));
     }
+    // A gear train's sweep row would hold its first mesh only (a wear row the single
+    // pair's loop, which leaves the other meshes unworn): refused before any case runs.
+    if let Some(p) = planned.iter().find(|p| !p.case.stage.is_empty()) {
+        return Err(JobError::input(
+            Problem::new(crate::app::TRAIN_STUDIES.to_owned()).in_context(&format!(
+                "case {} ({}): ",
+                p.id,
+                describe(plan, p)
+            )),
+        ));
+    }
     // Each case against the budget (the number of cases is the user's explicit choice).
     let over: Vec<Problem> = planned
         .iter()
