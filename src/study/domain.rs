@@ -5,11 +5,13 @@
 //! inertias), reported by [`ResolvedParameters`] and compared with what a case gives.
 
 use crate::config::case::{BodyValues, Case, DynamicsSection, FrictionModel};
+use crate::config::planetary::Member;
 use crate::contact::friction::Friction;
 use crate::contact::hertz::{effective_modulus_of, HertzContact};
 use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::load_sharing::pedrero_share_at;
 use crate::dynamics::params::OperatingPoint;
+use crate::geometry::planetary::PlanetarySet;
 use crate::geometry::GearPair;
 use crate::stiffness::fillet::FilletFoundation;
 use serde::Serialize;
@@ -69,6 +71,40 @@ pub const MAX_PITCH_PRESSURE_PA: f64 = 10e9;
 
 /// A given value this far from the geometry's estimate (either way) is warned about.
 pub const BODY_VALUE_FACTOR: f64 = 2.0;
+
+/// Problems of a planetary case's load that need its geometry: the sun-planet flanks
+/// under an equal share of the sun's torque, |T_s| / (N r_b,sun), with T_s from the input
+/// torque by the set's torque split (T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s),
+/// Willis), must stay below [`MAX_PITCH_PRESSURE_PA`] at the pitch point (Hertz, as for a
+/// pair). The ring-planet mesh carries the same force on a concave flank, so a lower
+/// pressure: the sun mesh bounds the set.
+pub fn planetary_domain_problems(case: &Case, set: &PlanetarySet) -> Vec<String> {
+    let zrs = set.teeth_ring() as f64 / set.teeth_sun() as f64;
+    let share = match set.input {
+        Member::Sun => 1.0,
+        Member::Ring => zrs,
+        Member::Carrier => 1.0 + zrs,
+    };
+    let pair = &set.sun_planet;
+    let torque = case.operating.load_torque_nm;
+    let force = (torque / share).abs() / (set.planets() as f64 * pair.pinion.base_radius_m);
+    let rho1 = pair.rho_pitch_m;
+    let h = HertzContact::with_modulus(
+        force,
+        pair.face_width_m,
+        rho1,
+        pair.rho_gear(rho1),
+        effective_modulus_of(&case.materials),
+    );
+    if h.max_pressure_pa.is_nan() || h.max_pressure_pa > MAX_PITCH_PRESSURE_PA {
+        return vec![format!(
+            "`operating.load_torque_nm` = {torque} is more than this planetary set's flanks can carry: each sun-planet mesh would carry {force:.4e} N and see a Hertz pressure of {:.1} GPa at its pitch point, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
+            h.max_pressure_pa * 1e-9,
+            MAX_PITCH_PRESSURE_PA * 1e-9
+        )];
+    }
+    Vec::new()
+}
 
 /// Problems of `case` that need its geometry: an impossible load for the flanks.
 pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {

@@ -53,6 +53,10 @@ impl PlanetaryStudy {
             ]));
         };
         let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
+        let load = super::domain::planetary_domain_problems(case, &set);
+        if !load.is_empty() {
+            return Err(ModelError(load));
+        }
         let elastic = ElasticPair::from_case(&case.materials);
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
         let sun_mesh = MeshStiffness::with_fillet(&set.sun_planet, &elastic, n_table, None)
