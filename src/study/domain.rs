@@ -88,6 +88,18 @@ pub fn planetary_domain_problems(case: &Case, set: &PlanetarySet) -> Vec<String>
     let pair = &set.sun_planet;
     let torque = case.operating.load_torque_nm;
     let force = (torque / share).abs() / (set.planets() as f64 * pair.pinion.base_radius_m);
+    pitch_pressure_gpa(case, pair, force)
+        .map(|p| vec![format!(
+            "`operating.load_torque_nm` = {torque} is more than this planetary set's flanks can carry: each sun-planet mesh would carry {force:.4e} N and see a Hertz pressure of {p:.1} GPa at its pitch point, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
+            MAX_PITCH_PRESSURE_PA * 1e-9
+        )])
+        .unwrap_or_default()
+}
+
+/// The Hertz pressure (Johnson 1985, line contact) at the pitch point of `pair` under
+/// `force` N on its whole face, in GPa, when it is above [`MAX_PITCH_PRESSURE_PA`] (or
+/// not a number); `None` when the flanks carry it.
+fn pitch_pressure_gpa(case: &Case, pair: &GearPair, force: f64) -> Option<f64> {
     let rho1 = pair.rho_pitch_m;
     let h = HertzContact::with_modulus(
         force,
@@ -96,14 +108,8 @@ pub fn planetary_domain_problems(case: &Case, set: &PlanetarySet) -> Vec<String>
         pair.rho_gear(rho1),
         effective_modulus_of(&case.materials),
     );
-    if h.max_pressure_pa.is_nan() || h.max_pressure_pa > MAX_PITCH_PRESSURE_PA {
-        return vec![format!(
-            "`operating.load_torque_nm` = {torque} is more than this planetary set's flanks can carry: each sun-planet mesh would carry {force:.4e} N and see a Hertz pressure of {:.1} GPa at its pitch point, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
-            h.max_pressure_pa * 1e-9,
-            MAX_PITCH_PRESSURE_PA * 1e-9
-        )];
-    }
-    Vec::new()
+    (h.max_pressure_pa.is_nan() || h.max_pressure_pa > MAX_PITCH_PRESSURE_PA)
+        .then_some(h.max_pressure_pa * 1e-9)
 }
 
 /// Problems of `case` that need its geometry: an impossible load for the flanks.
@@ -111,19 +117,10 @@ pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
     let mut problems = Vec::new();
     let o = &case.operating;
     let force = OperatingPoint::of(o, pair).static_mesh_force_n;
-    let rho1 = pair.rho_pitch_m;
-    let h = HertzContact::with_modulus(
-        force,
-        pair.face_width_m,
-        rho1,
-        pair.rho_gear(rho1),
-        effective_modulus_of(&case.materials),
-    );
-    if h.max_pressure_pa.is_nan() || h.max_pressure_pa > MAX_PITCH_PRESSURE_PA {
+    if let Some(p) = pitch_pressure_gpa(case, pair, force) {
         problems.push(format!(
-            "`operating.load_torque_nm` = {} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {:.1} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
+            "`operating.load_torque_nm` = {} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {p:.1} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
             o.load_torque_nm,
-            h.max_pressure_pa * 1e-9,
             MAX_PITCH_PRESSURE_PA * 1e-9
         ));
     }
