@@ -5,6 +5,7 @@
 use super::observer::Observer;
 use super::{budget, build_model, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::report::face_load::add_face_load_artifacts;
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
@@ -13,6 +14,7 @@ use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
 use crate::report::stiffness_train::train_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
+use crate::study::face_load::{face_load, lead_keys};
 use crate::study::helical::HelicalModel;
 use crate::study::planetary::PlanetaryStudy;
 use crate::study::train_stages::stage_models;
@@ -49,6 +51,9 @@ impl Job for StiffnessJob {
         }
         if self.case.gear.helix_angle_deg != 0.0 {
             return self.run_helical(figures, observer);
+        }
+        if !lead_keys(&self.case).is_empty() {
+            return self.run_spur_lead(figures, observer);
         }
         let model = build_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
@@ -98,12 +103,49 @@ impl StiffnessJob {
         observer: &dyn Observer,
     ) -> Result<Outcome, JobError> {
         let model = HelicalModel::from_case(&self.case)?;
-        for w in &model.warnings {
+        let load = face_load(&model)?;
+        for w in model.warnings.iter().chain(&load.warnings) {
             observer.warning(w);
         }
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::new(self.name(), &self.case);
-        let artifacts = helical_stiffness_artifacts(&model).with_figure_output(figures);
-        publish::publish(out, artifacts, Some(&meta), observer)
+        let mut artifacts = helical_stiffness_artifacts(&model);
+        add_face_load_artifacts(&load, &mut artifacts);
+        publish::publish(
+            out,
+            artifacts.with_figure_output(figures),
+            Some(&meta),
+            observer,
+        )
+    }
+
+    /// A spur case with lead modifications or a misalignment: the spur study of the case
+    /// without them (the planar model has no gap across the face) and the face load
+    /// distribution of the pair cut into `stiffness.slices` slices (docs/MODEL.md 11.2).
+    fn run_spur_lead(
+        &self,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        let mut planar = self.case.clone();
+        planar.modification = planar.modification.without_lead_keys();
+        planar.operating.misalignment_um = None;
+        planar.operating.misalignment_plane = None;
+        let mut model = build_model(&planar, observer)?;
+        let load = face_load(&HelicalModel::from_case(&self.case)?)?;
+        for w in &load.warnings {
+            observer.warning(w);
+        }
+        model.case = self.case.clone();
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        let meta = RunMetadata::of_model(self.name(), &model);
+        let mut artifacts = stiffness_artifacts(&model);
+        add_face_load_artifacts(&load, &mut artifacts);
+        publish::publish(
+            out,
+            artifacts.with_figure_output(figures),
+            Some(&meta),
+            observer,
+        )
     }
 }

@@ -72,7 +72,7 @@ pub const BODY_VALUE_FACTOR: f64 = 2.0;
 
 /// Problems of `case` that need its geometry: an impossible load for the flanks.
 pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
-    let mut problems = Vec::new();
+    let mut problems: Vec<String> = super::face_load::lead_refusal(case).into_iter().collect();
     let o = &case.operating;
     let force = OperatingPoint::of(o, pair).static_mesh_force_n;
     let rho1 = pair.rho_pitch_m;
