@@ -5,6 +5,7 @@
 use super::observer::Observer;
 use super::{budget, build_model, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::report::artifacts::Artifacts;
 use crate::report::face_load::add_face_load_artifacts;
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
@@ -14,7 +15,7 @@ use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
 use crate::report::stiffness_train::train_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
-use crate::study::face_load::{face_load, lead_keys};
+use crate::study::face_load::{face_load, lead_keys, CaseFaceLoad};
 use crate::study::helical::HelicalModel;
 use crate::study::planetary::PlanetaryStudy;
 use crate::study::train_stages::stage_models;
@@ -104,19 +105,31 @@ impl StiffnessJob {
     ) -> Result<Outcome, JobError> {
         let model = HelicalModel::from_case(&self.case)?;
         let load = face_load(&model)?;
-        for w in model.warnings.iter().chain(&load.warnings) {
+        for w in &model.warnings {
+            observer.warning(w);
+        }
+        let meta = RunMetadata::new(self.name(), &self.case);
+        let artifacts = helical_stiffness_artifacts(&model);
+        self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
+    }
+
+    /// Warn of the face load's warnings, open the folder and publish `artifacts` with the
+    /// face load added.
+    fn publish_with_face_load(
+        &self,
+        mut artifacts: Artifacts,
+        load: &CaseFaceLoad,
+        meta: &RunMetadata,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        for w in &load.warnings {
             observer.warning(w);
         }
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
-        let meta = RunMetadata::new(self.name(), &self.case);
-        let mut artifacts = helical_stiffness_artifacts(&model);
-        add_face_load_artifacts(&load, &mut artifacts);
-        publish::publish(
-            out,
-            artifacts.with_figure_output(figures),
-            Some(&meta),
-            observer,
-        )
+        add_face_load_artifacts(load, &mut artifacts);
+        let artifacts = artifacts.with_figure_output(figures);
+        publish::publish(out, artifacts, Some(meta), observer)
     }
 
     /// A spur case with lead modifications or a misalignment: the spur study of the case
@@ -133,19 +146,9 @@ impl StiffnessJob {
         planar.operating.misalignment_plane = None;
         let mut model = build_model(&planar, observer)?;
         let load = face_load(&HelicalModel::from_case(&self.case)?)?;
-        for w in &load.warnings {
-            observer.warning(w);
-        }
         model.case = self.case.clone();
-        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
-        let mut artifacts = stiffness_artifacts(&model);
-        add_face_load_artifacts(&load, &mut artifacts);
-        publish::publish(
-            out,
-            artifacts.with_figure_output(figures),
-            Some(&meta),
-            observer,
-        )
+        let artifacts = stiffness_artifacts(&model);
+        self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
     }
 }

@@ -210,22 +210,19 @@ impl FaceLoad {
         hi
     }
 
+    /// Largest value of a distribution `w` over the mean load per unit face width w_m.
+    fn peak_over_mean(&self, w: &[f64]) -> f64 {
+        w.iter().fold(0.0_f64, |a, w| a.max(*w)) / self.mean_load_per_width_n_per_m()
+    }
+
     /// K_Hbeta = w_max / w_m of the period-mean distribution (module docs).
     pub fn k_h_beta(&self) -> f64 {
-        let peak = self
-            .period_mean_n_per_m()
-            .iter()
-            .fold(0.0_f64, |a, w| a.max(*w));
-        peak / self.mean_load_per_width_n_per_m()
+        self.peak_over_mean(&self.period_mean_n_per_m())
     }
 
     /// The largest instantaneous max_j w_j / w_m over the mesh positions.
     pub fn k_h_beta_instantaneous_max(&self) -> f64 {
-        let peak = self
-            .envelope_n_per_m()
-            .iter()
-            .fold(0.0_f64, |a, w| a.max(*w));
-        peak / self.mean_load_per_width_n_per_m()
+        self.peak_over_mean(&self.envelope_n_per_m())
     }
 
     /// Centre of pressure of a distribution `w` over the slices, m from y = 0.
