@@ -5,6 +5,8 @@
 use super::observer::Observer;
 use super::{budget, build_model, build_train_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
+use crate::report::artifacts::Artifacts;
+use crate::report::face_load::add_face_load_artifacts;
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
@@ -13,6 +15,7 @@ use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
 use crate::report::stiffness_train::train_stiffness_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
+use crate::study::face_load::{face_load, lead_keys, CaseFaceLoad};
 use crate::study::helical::HelicalModel;
 use crate::study::planetary::PlanetaryStudy;
 use crate::study::train_stages::stage_models;
@@ -49,6 +52,9 @@ impl Job for StiffnessJob {
         }
         if self.case.gear.helix_angle_deg != 0.0 {
             return self.run_helical(figures, observer);
+        }
+        if !lead_keys(&self.case).is_empty() {
+            return self.run_spur_lead(figures, observer);
         }
         let model = build_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
@@ -98,12 +104,51 @@ impl StiffnessJob {
         observer: &dyn Observer,
     ) -> Result<Outcome, JobError> {
         let model = HelicalModel::from_case(&self.case)?;
+        let load = face_load(&model)?;
         for w in &model.warnings {
             observer.warning(w);
         }
-        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::new(self.name(), &self.case);
-        let artifacts = helical_stiffness_artifacts(&model).with_figure_output(figures);
-        publish::publish(out, artifacts, Some(&meta), observer)
+        let artifacts = helical_stiffness_artifacts(&model);
+        self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
+    }
+
+    /// Warn of the face load's warnings, open the folder and publish `artifacts` with the
+    /// face load added.
+    fn publish_with_face_load(
+        &self,
+        mut artifacts: Artifacts,
+        load: &CaseFaceLoad,
+        meta: &RunMetadata,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        for w in &load.warnings {
+            observer.warning(w);
+        }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
+        add_face_load_artifacts(load, &mut artifacts);
+        let artifacts = artifacts.with_figure_output(figures);
+        publish::publish(out, artifacts, Some(meta), observer)
+    }
+
+    /// A spur case with lead modifications or a misalignment: the spur study of the case
+    /// without them (the planar model has no gap across the face) and the face load
+    /// distribution of the pair cut into `stiffness.slices` slices (docs/MODEL.md 11.2).
+    fn run_spur_lead(
+        &self,
+        figures: FigureOutput,
+        observer: &dyn Observer,
+    ) -> Result<Outcome, JobError> {
+        let mut planar = self.case.clone();
+        planar.modification = planar.modification.without_lead_keys();
+        planar.operating.misalignment_um = None;
+        planar.operating.misalignment_plane = None;
+        let mut model = build_model(&planar, observer)?;
+        let load = face_load(&HelicalModel::from_case(&self.case)?)?;
+        model.case = self.case.clone();
+        let meta = RunMetadata::of_model(self.name(), &model);
+        let artifacts = stiffness_artifacts(&model);
+        self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
     }
 }

@@ -17,7 +17,8 @@ pub use super::derivable::Derivable;
 pub use super::gear::{GearSection, HelixHand};
 pub use super::lumped::{BodyValues, DynamicsSection};
 pub use super::operating::{
-    LoadPoint, LoadSpectrumSection, OperatingSection, SpectrumBin, SpeedBoundary, TorqueShaft,
+    LoadPoint, LoadSpectrumSection, MisalignmentPlane, OperatingSection, SpectrumBin,
+    SpeedBoundary, TorqueShaft,
 };
 pub use super::output::OutputSection;
 pub use super::signals::SignalsSection;

@@ -51,6 +51,26 @@ pub struct OperatingSection {
     /// Slope c_slip of the motor torque-speed law of [`SpeedBoundary::MotorSlip`],
     /// N m s/rad.
     pub motor_slip_damping_nm_s_per_rad: f64,
+    /// Mesh misalignment: the difference across the face width of the separation of the
+    /// mating flanks, µm, positive opening it towards the face end y = b; in
+    /// `misalignment_plane` (docs/MODEL.md 11.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub misalignment_um: Option<f64>,
+    /// Plane of the misalignment (absent: the plane of action).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub misalignment_plane: Option<MisalignmentPlane>,
+}
+
+/// The plane a mesh misalignment lies in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum MisalignmentPlane {
+    /// The plane of action: the flanks separate along the line of action.
+    #[default]
+    Action,
+    /// The plane through the axis normal to the plane of action: to first order the
+    /// flanks slide along each other and no gap opens (docs/MODEL.md 11.2).
+    Normal,
 }
 
 impl Default for OperatingSection {
@@ -65,6 +85,8 @@ impl Default for OperatingSection {
             speed_boundary: SpeedBoundary::MotorSlip,
             // Induction motor with ~3 % rated slip at this load: 60 N m / (0.03 x 188 rad/s).
             motor_slip_damping_nm_s_per_rad: 10.0,
+            misalignment_um: None,
+            misalignment_plane: None,
         }
     }
 }

@@ -130,9 +130,47 @@ pub struct ModificationSection {
     /// The gear's deviation at those roll angles (material removed positive), µm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile_deviation_gear_um: Option<Vec<f64>>,
+    /// Lead crowning of the pair (both gears together): the gap at each face end over the
+    /// face's middle, parabolic across the face, µm (docs/MODEL.md 11.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crowning_um: Option<f64>,
+    /// End relief of the pair (both gears together): the gap at each face end, µm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_relief_um: Option<f64>,
+    /// Length of the end relief from each face end across the face, mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_relief_length_mm: Option<f64>,
+    /// Shape of the end relief along its length (absent: linear).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_relief_shape: Option<ReliefShape>,
+    /// Helix slope deviation f_Hbeta of the pair: the gap's difference across the face
+    /// width (ISO 1328-1), positive opening it towards the face end y = b, µm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub helix_slope_deviation_um: Option<f64>,
 }
 
 impl ModificationSection {
+    /// Whether a lead (face-direction) key is given: crowning, end relief, helix slope.
+    pub fn has_lead_keys(&self) -> bool {
+        self.crowning_um.is_some()
+            || self.end_relief_um.is_some()
+            || self.end_relief_length_mm.is_some()
+            || self.end_relief_shape.is_some()
+            || self.helix_slope_deviation_um.is_some()
+    }
+
+    /// The section without its lead keys (the profile modifications only).
+    pub fn without_lead_keys(&self) -> Self {
+        Self {
+            crowning_um: None,
+            end_relief_um: None,
+            end_relief_length_mm: None,
+            end_relief_shape: None,
+            helix_slope_deviation_um: None,
+            ..self.clone()
+        }
+    }
+
     /// Whether no key is given (true involutes).
     pub fn is_empty(&self) -> bool {
         *self == Self::default()

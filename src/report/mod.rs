@@ -11,6 +11,7 @@ pub mod duty_figures;
 pub mod dynamics;
 pub mod dynamics_helical;
 pub mod dynamics_planetary;
+pub mod face_load;
 pub mod figure_output;
 pub mod figures;
 pub mod html;

@@ -2,6 +2,7 @@
 //! foundation), the single-pair stiffness along the path of contact, the mesh-period
 //! table, the helical pair's slice model, and the ISO 6336-1 Method B cross-check.
 
+pub mod face_load;
 pub mod fillet;
 pub mod helical;
 pub mod internal;

@@ -114,7 +114,7 @@ fn pitch_pressure_gpa(case: &Case, pair: &GearPair, force: f64) -> Option<f64> {
 
 /// Problems of `case` that need its geometry: an impossible load for the flanks.
 pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
-    let mut problems = Vec::new();
+    let mut problems: Vec<String> = super::face_load::lead_refusal(case).into_iter().collect();
     let o = &case.operating;
     let force = OperatingPoint::of(o, pair).static_mesh_force_n;
     if let Some(p) = pitch_pressure_gpa(case, pair, force) {

@@ -4,6 +4,7 @@
 pub mod budget;
 pub mod dataset;
 pub mod domain;
+pub mod face_load;
 pub mod helical;
 pub mod helical_dynamics;
 pub mod model;

@@ -52,6 +52,9 @@ impl PlanetaryStudy {
                 "the case has no [planetary] section".into()
             ]));
         };
+        if let Some(r) = super::face_load::lead_refusal(case) {
+            return Err(ModelError(vec![r]));
+        }
         let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
         let load = super::domain::planetary_domain_problems(case, &set);
         if !load.is_empty() {
