@@ -2,17 +2,23 @@
 //! reference `docs/CONFIG.md` (`gearwear config --markdown`).
 
 use super::case::Case;
-use super::schema::{KEYS, TABLE_ARRAYS};
+use super::schema::{KEYS, OPTIONAL_SECTIONS, TABLE_ARRAYS};
 
 /// How the key reference shows the default of a key the default case leaves out: the
 /// per-tooth inputs are absent (perfect teeth), the others derived by the model.
 fn absent_default(section: &str) -> &'static str {
     match section {
-        "teeth" | "modification" | "fault" => "(none)",
+        "teeth" | "modification" | "fault" | "planetary" => "(none)",
         _ => "(derived)",
     }
 }
 use toml::{Table, Value};
+
+/// The value of `key` (dotted within its section: `lumped.mass_sun_kg`) in `section`.
+fn lookup<'a>(tree: &'a Table, section: &str, key: &str) -> Option<&'a Value> {
+    key.split('.')
+        .try_fold(tree.get(section)?, |v, part| v.as_table()?.get(part))
+}
 
 fn tree_of(case: &Case) -> Table {
     let mut t = match Value::try_from(case) {
@@ -41,7 +47,11 @@ fn commented(case: &Case, header: &str) -> String {
     for s in KEYS {
         let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
         if section != current {
-            if TABLE_ARRAYS.contains(&section) {
+            if OPTIONAL_SECTIONS.contains(&section) && !tree.contains_key(section) {
+                out.push_str(&format!(
+                    "\n# [{section}]  (optional, absent by default; uncomment to add one, docs/CONFIG.md)\n"
+                ));
+            } else if TABLE_ARRAYS.contains(&section) {
                 out.push_str(&format!(
                     "\n# [[{section}]]  (one table per {section}, none by default; uncomment to add one)\n"
                 ));
@@ -64,7 +74,7 @@ fn commented(case: &Case, header: &str) -> String {
             s.unit,
             s.valid.describe()
         ));
-        match tree.get(section).and_then(|t| t.get(key)) {
+        match lookup(&tree, section, key) {
             Some(v) => out.push_str(&format!("{key} = {v}\n")),
             None => out.push_str(&format!("# {key} = (unset)\n")),
         }
@@ -163,6 +173,11 @@ pub fn markdown_reference(case: &Case) -> String {
     if shown.load_spectrum.is_none() {
         shown.load_spectrum = Some(super::LoadSpectrumSection::of_bins(Vec::new()));
     }
+    // The planetary set's keys show the built-in set's values (the section is absent by
+    // default).
+    if shown.planetary.is_none() {
+        shown.planetary = Some(super::planetary::PlanetarySection::default());
+    }
     let tree = tree_of(&shown);
     let mut out = String::from(
         "# Case file reference\n\n\
@@ -175,9 +190,7 @@ pub fn markdown_reference(case: &Case) -> String {
     );
     for s in KEYS {
         let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
-        let default = tree
-            .get(section)
-            .and_then(|t| t.get(key))
+        let default = lookup(&tree, section, key)
             .map(|v| v.to_string())
             .unwrap_or_else(|| absent_default(section).into());
         out.push_str(&format!(
