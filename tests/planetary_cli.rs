@@ -225,6 +225,6 @@ fn bad_sets_exit_2_naming_the_key() {
     let lumped = lin_parker_lumped(0.0).replace("mass_sun_kg = 0.4", "mass_sun_kg = -0.4");
     bad(
         &format!("{SET}\n{lumped}"),
-        &["planetary.lumped.mass_sun_kg", "-0.4", "positive"],
+        &["planetary.lumped.mass_sun_kg", "-0.4", "(0, 1e6]"],
     );
 }

@@ -2,17 +2,23 @@
 //! reference `docs/CONFIG.md` (`gearwear config --markdown`).
 
 use super::case::Case;
-use super::schema::{KEYS, TABLE_ARRAYS};
+use super::schema::{KEYS, OPTIONAL_SECTIONS, TABLE_ARRAYS};
 
 /// How the key reference shows the default of a key the default case leaves out: the
 /// per-tooth inputs are absent (perfect teeth), the others derived by the model.
 fn absent_default(section: &str) -> &'static str {
     match section {
-        "teeth" | "modification" | "fault" => "(none)",
+        "teeth" | "modification" | "fault" | "planetary" => "(none)",
         _ => "(derived)",
     }
 }
 use toml::{Table, Value};
+
+/// The value of `key` (dotted within its section: `lumped.mass_sun_kg`) in `section`.
+fn lookup<'a>(tree: &'a Table, section: &str, key: &str) -> Option<&'a Value> {
+    key.split('.')
+        .try_fold(tree.get(section)?, |v, part| v.as_table()?.get(part))
+}
 
 fn tree_of(case: &Case) -> Table {
     let mut t = match Value::try_from(case) {
@@ -33,11 +39,6 @@ fn tree_of(case: &Case) -> Table {
     t
 }
 
-/// Sections whose mere presence changes the model (a `[planetary]` table makes the case a
-/// planetary set): written with a commented header while the case has none, so the text
-/// reads back to the same case.
-const PRESENCE_SECTIONS: &[&str] = &["planetary"];
-
 /// One key of `section` as commented TOML: its doc line, then its value in `table` or a
 /// commented `(unset)`.
 fn key_lines(out: &mut String, s: &super::schema::KeySpec, key: &str, table: Option<&Value>) {
@@ -47,7 +48,12 @@ fn key_lines(out: &mut String, s: &super::schema::KeySpec, key: &str, table: Opt
         s.unit,
         s.valid.describe()
     ));
-    match table.and_then(|t| t.get(key)) {
+    // A sub-table's key is dotted (`lumped.mass_sun_kg` in `[planetary]`).
+    let value = table.and_then(|t| {
+        key.split('.')
+            .try_fold(t, |v, part| v.as_table()?.get(part))
+    });
+    match value {
         Some(v) => out.push_str(&format!("{key} = {v}\n")),
         None => out.push_str(&format!("# {key} = (unset)\n")),
     }
@@ -58,9 +64,12 @@ fn key_lines(out: &mut String, s: &super::schema::KeySpec, key: &str, table: Opt
 fn uncovered_lines(out: &mut String, section: &str, table: Option<&Value>) {
     let Some(Value::Table(t)) = table else { return };
     for (k, v) in t {
-        let covered = KEYS
-            .iter()
-            .any(|s| s.key.split_once('.') == Some((section, k.as_str())));
+        // A schema key `section.k` or `section.k.sub` (a sub-table's dotted key) covers k.
+        let covered = KEYS.iter().any(|s| {
+            s.key.split_once('.').is_some_and(|(sec, rest)| {
+                sec == section && rest.split('.').next() == Some(k.as_str())
+            })
+        });
         if !covered && k != "bins" {
             out.push_str(&format!("{k} = {v}\n"));
         }
@@ -114,9 +123,11 @@ fn commented(case: &Case, header: &str) -> String {
             continue;
         }
         let table = tree.get(*section);
-        if table.is_none() && PRESENCE_SECTIONS.contains(section) {
+        // A section whose mere presence changes the model (`[planetary]`): its header is
+        // commented while the case has none, so the text reads back to the same case.
+        if table.is_none() && OPTIONAL_SECTIONS.contains(section) {
             out.push_str(&format!(
-                "\n# [{section}]  (absent; uncomment the header and the keys to add one)\n"
+                "\n# [{section}]  (optional, absent by default; uncomment to add one, docs/CONFIG.md)\n"
             ));
         } else {
             out.push_str(&format!("\n[{section}]\n"));
@@ -238,6 +249,11 @@ pub fn markdown_reference(case: &Case) -> String {
     if shown.load_spectrum.is_none() {
         shown.load_spectrum = Some(super::LoadSpectrumSection::of_bins(Vec::new()));
     }
+    // The planetary set's keys show the built-in set's values (the section is absent by
+    // default).
+    if shown.planetary.is_none() {
+        shown.planetary = Some(super::planetary::PlanetarySection::default());
+    }
     let tree = tree_of(&shown);
     let mut out = String::from(
         "# Case file reference\n\n\
@@ -250,9 +266,7 @@ pub fn markdown_reference(case: &Case) -> String {
     );
     for s in KEYS {
         let (section, key) = s.key.split_once('.').unwrap_or(("", s.key));
-        let default = tree
-            .get(section)
-            .and_then(|t| t.get(key))
+        let default = lookup(&tree, section, key)
             .map(|v| v.to_string())
             .unwrap_or_else(|| absent_default(section).into());
         out.push_str(&format!(

@@ -481,13 +481,22 @@ fn spectrum_section(
         .and_then(|v| super::load_spectrum::parse_section(v, dir, problems))
 }
 
-/// The `[planetary]` section taken out of `user` and read: its keys are the section's own
-/// (`config::planetary`, unknown keys refused by serde), its ranges checked there.
+/// The `[planetary]` section taken out of `user` and read: each of its keys (and
+/// `[planetary.lumped]`'s) that the schema lists is normalised and range-checked against
+/// it first; then the section is read by serde (`config::planetary`, unknown keys refused
+/// there) and its checks across keys run (`PlanetarySection::range_problems`).
 fn planetary_section(
     user: &mut Table,
     problems: &mut Vec<String>,
 ) -> Option<super::planetary::PlanetarySection> {
-    let value = user.remove(PLANETARY)?;
+    let mut value = user.remove(PLANETARY)?;
+    let before = problems.len();
+    if let Value::Table(t) = &mut value {
+        check_nested_keys(PLANETARY, t, problems);
+    }
+    if problems.len() > before {
+        return None;
+    }
     match value.try_into::<super::planetary::PlanetarySection>() {
         Ok(section) => {
             problems.extend(section.range_problems());
@@ -496,6 +505,23 @@ fn planetary_section(
         Err(e) => {
             problems.push(format!("[planetary]{}", toml_error(&e, "")));
             None
+        }
+    }
+}
+
+/// The schema's keys in `table` (at dotted path `prefix`, sub-tables descended) normalised
+/// and range-checked in place; keys the schema does not list are left to the reader.
+fn check_nested_keys(prefix: &str, table: &mut Table, problems: &mut Vec<String>) {
+    for (key, v) in table.iter_mut() {
+        let path = format!("{prefix}.{key}");
+        if let Value::Table(sub) = v {
+            check_nested_keys(&path, sub, problems);
+            continue;
+        }
+        let Some(s) = spec(&path) else { continue };
+        match normalise(&path, v, s.valid) {
+            Ok(()) => problems.extend(check_range(&path, v, s.valid)),
+            Err(p) => problems.push(p),
         }
     }
 }

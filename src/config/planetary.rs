@@ -73,6 +73,20 @@ pub struct PlanetarySection {
     pub output: Member,
     /// The member held fixed.
     pub fixed: Member,
+    /// Position error of each planet's pin on the carrier along the planet's tangential
+    /// coordinate eta (positive in the sense the planet angles are counted), um, one value
+    /// per planet; absent: none (docs/MODEL.md 12.8).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planet_tangential_error_um: Option<Vec<f64>>,
+    /// Position error of each planet's pin on the carrier along the planet's radial
+    /// coordinate zeta (positive outwards, away from the sun), um, one value per planet;
+    /// absent: none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planet_radial_error_um: Option<Vec<f64>>,
+    /// A floating sun: its lateral bearing stiffness is zero (the sun's x and y are held by
+    /// its meshes alone), whatever `[planetary.lumped]` gives; false: the lumped section's.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub floating_sun: bool,
     /// A set given by its lumped parameters instead of its teeth' geometry.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lumped: Option<LumpedPlanetarySection>,
@@ -101,6 +115,9 @@ impl Default for PlanetarySection {
             input: Member::Sun,
             output: Member::Carrier,
             fixed: Member::Ring,
+            planet_tangential_error_um: None,
+            planet_radial_error_um: None,
+            floating_sun: false,
             lumped: None,
         }
     }
@@ -156,6 +173,11 @@ pub struct LumpedPlanetarySection {
     /// Operating pressure angle of both meshes, deg.
     pub pressure_angle_deg: f64,
 }
+
+/// Largest planet pin position error, um: a millimetre, far beyond any carrier's
+/// tolerance (position errors of pins are tens of micrometres; Bodas & Kahraman 2004
+/// study up to ~100 um).
+pub const MAX_PIN_ERROR_UM: f64 = 1000.0;
 
 /// Largest number of planets a case may give: far above any built set (5 to 12 is usual),
 /// and it bounds the lumped model's size (3 (N + 3) degrees of freedom).
@@ -221,7 +243,56 @@ impl PlanetarySection {
             }
         }
         errs.extend(self.power_flow_problems());
+        errs.extend(self.pin_error_problems());
         errs
+    }
+
+    /// The planet pin position errors: one value per planet, each finite and within
+    /// [`MAX_PIN_ERROR_UM`].
+    fn pin_error_problems(&self) -> Vec<String> {
+        let mut errs = Vec::new();
+        for (key, v) in [
+            (
+                "planet_tangential_error_um",
+                &self.planet_tangential_error_um,
+            ),
+            ("planet_radial_error_um", &self.planet_radial_error_um),
+        ] {
+            let Some(v) = v else { continue };
+            if v.len() as i64 != self.planets {
+                errs.push(format!(
+                    "`planetary.{key}` has {} values: it must have one per planet, `planetary.planets` = {}",
+                    v.len(),
+                    self.planets
+                ));
+            }
+            for (i, e) in v.iter().enumerate() {
+                if !(e.is_finite() && e.abs() <= MAX_PIN_ERROR_UM) {
+                    errs.push(format!(
+                        "`planetary.{key}` value {} (planet {}) = {e} is invalid: it must lie in [-{MAX_PIN_ERROR_UM}, {MAX_PIN_ERROR_UM}]",
+                        i + 1,
+                        i + 1
+                    ));
+                }
+            }
+        }
+        errs
+    }
+
+    /// Each planet's pin position error (tangential, radial), m: zeros where absent.
+    pub fn pin_errors_m(&self) -> Vec<(f64, f64)> {
+        let n = self.planets.max(0) as usize;
+        let at = |v: &Option<Vec<f64>>, i: usize| {
+            v.as_ref().and_then(|v| v.get(i)).copied().unwrap_or(0.0) * 1e-6
+        };
+        (0..n)
+            .map(|i| {
+                (
+                    at(&self.planet_tangential_error_um, i),
+                    at(&self.planet_radial_error_um, i),
+                )
+            })
+            .collect()
     }
 
     /// Input, output and fixed must be three different members.

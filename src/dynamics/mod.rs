@@ -32,6 +32,8 @@ pub mod transient;
 #[cfg(test)]
 mod tests_planetary_dynamic;
 #[cfg(test)]
+mod tests_planetary_load_sharing;
+#[cfg(test)]
 mod tests_planetary_lumped;
 #[cfg(test)]
 mod tests_planetary_published;

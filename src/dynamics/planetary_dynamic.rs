@@ -79,13 +79,52 @@ struct Element {
     g: Vec<(usize, f64)>,
     /// For a mesh: (planet, ring mesh?).
     mesh: Option<(usize, bool)>,
+    /// For a mesh: the gap a planet pin's position error opens along its line of action
+    /// ([`pin_error_gaps`]), m; its compression is g . q - gap.
+    gap_m: f64,
 }
 
 impl Element {
-    fn deflection(&self, q: &[f64]) -> f64 {
-        self.g.iter().map(|(i, v)| v * q[*i]).sum()
+    /// g . v: the deflection of `v` = q (m), or its rate of `v` = q' (m/s).
+    fn deflection(&self, v: &[f64]) -> f64 {
+        self.g.iter().map(|(i, x)| x * v[*i]).sum()
+    }
+
+    /// The compression g . q - gap, m (a spring's deflection: its gap is 0).
+    fn compression(&self, q: &[f64]) -> f64 {
+        self.deflection(q) - self.gap_m
     }
 }
+
+/// The gaps that a planet pin's position error opens on the planet's sun and ring meshes,
+/// m: [sun, ring] from the error (e_t tangential along eta, e_r radial along zeta, m) and
+/// the meshes' operating pressure angles `alpha_rad` [sun, ring].
+///
+/// A pin displaced by (e_r, e_t) holds the planet, at rest on its pin, at zeta = e_r,
+/// eta = e_t; in the deflections of Lin & Parker (1999, eqs. 1-3) zeta and eta enter the
+/// sun mesh as -zeta sin alpha_s - eta cos alpha_s and the ring mesh as
+/// +zeta sin alpha_r - eta cos alpha_r. Measuring the planet's coordinates from its
+/// displaced pin (so the pin's springs keep their form) leaves on each mesh a gap
+///   sun:  e_r sin alpha_s + e_t cos alpha_s,    ring: e_t cos alpha_r - e_r sin alpha_r,
+/// positive opening the mesh. The error is a displacement of the planet's centre on the
+/// carrier as Kahraman (1994, "Load sharing characteristics of planetary transmissions",
+/// Mech. Mach. Theory 29, 1151) and Bodas & Kahraman (2004, "Influence of carrier and gear
+/// manufacturing errors on the static load sharing behavior of planetary gear sets", JSME
+/// Int. J. C 47, 908) state it; its projection on each line of action is derived here from
+/// Lin & Parker's deflections. A tangential error (e_t) opens or closes both meshes
+/// alike; a radial one (e_r) opens one and closes the other (with alpha_s = alpha_r the
+/// two cancel along the planet's path from sun to ring).
+pub fn pin_error_gaps(e_t_m: f64, e_r_m: f64, alpha_rad: [f64; 2]) -> [f64; 2] {
+    let (ss, cs) = alpha_rad[0].sin_cos();
+    let (sr, cr) = alpha_rad[1].sin_cos();
+    [e_r_m * ss + e_t_m * cs, e_t_m * cr - e_r_m * sr]
+}
+
+/// A pivot of K's LU below this share of the largest is a singular K (a member with no
+/// path to ground): K's real spread of stiffness (supports of 1e16 N/m against planet
+/// pins of 1e8 in the tests) keeps its pivots above ~1e-9 of the largest, round-off of a
+/// singular matrix leaves them near 1e-16.
+const SINGULAR_PIVOT: f64 = 1e-13;
 
 /// The planetary set's dynamic model (see module docs).
 #[derive(Debug, Clone)]
@@ -165,7 +204,7 @@ impl PlanetaryDynamic {
         let mut f = vec![0.0; 2 * planets];
         for e in &self.elements {
             if let Some((p, ring)) = e.mesh {
-                let d = e.deflection(q);
+                let d = e.compression(q);
                 if d > 0.0 {
                     let k = self.source.at(p, ring, cycles, cycles);
                     f[p + ring as usize * planets] = k * d + e.c * e.deflection(v);
@@ -188,7 +227,7 @@ impl PlanetaryDynamic {
                 (None, false) => e.k,
                 (Some((p, ring)), false) => cycles.map_or(e.k, |c| self.mesh_k(p, ring, c)),
             };
-            if e.mesh.is_some() && q.is_some_and(|q| e.deflection(q) <= 0.0) {
+            if e.mesh.is_some() && q.is_some_and(|q| e.compression(q) <= 0.0) {
                 continue;
             }
             for (i, gi) in &e.g {
@@ -215,13 +254,55 @@ impl PlanetaryDynamic {
         })
     }
 
-    /// The static deflection under `force_n` with every mesh at its mean stiffness, m;
-    /// `None` when a member has no path to ground.
+    /// The static deflection under `force_n` with every mesh in contact at its mean
+    /// stiffness and preloaded by its gap, K q = f + sum_meshes k gap g, m; `None` when a
+    /// member has no path to ground (K singular). Whether every mesh is then compressed
+    /// is [`Self::static_mesh_forces`]'s question.
     pub fn static_deflection(&self) -> Option<DVector<f64>> {
-        self.matrix(None, None, false)
-            .lu()
-            .solve(&self.force_n)
-            .filter(|x| x.iter().all(|v| v.is_finite()))
+        let n = self.dofs();
+        let mut k = DMatrix::zeros(n, n);
+        let mut f = self.force_n.clone();
+        for e in &self.elements {
+            for (i, gi) in &e.g {
+                f[*i] += e.k * e.gap_m * gi;
+                for (j, gj) in &e.g {
+                    k[(*i, *j)] += e.k * gi * gj;
+                }
+            }
+        }
+        let lu = k.lu();
+        let pivots = lu.u().diagonal().map(f64::abs);
+        if pivots.min() <= SINGULAR_PIVOT * pivots.max() {
+            return None;
+        }
+        lu.solve(&f).filter(|x| x.iter().all(|v| v.is_finite()))
+    }
+
+    /// Every mesh's static force k (g . q - gap) at its mean stiffness in the static
+    /// deflection (sun meshes 1..N, then ring meshes), N: negative for a mesh the static
+    /// load would open (a planet whose pin error keeps it off the load: the model has no
+    /// back flanks, so such a planet is unheld); `None` as [`Self::static_deflection`].
+    pub fn static_mesh_forces(&self) -> Option<Vec<f64>> {
+        let q = self.static_deflection()?;
+        let planets = self.params.planet_angles_rad.len();
+        let mut f = vec![0.0; 2 * planets];
+        for e in &self.elements {
+            if let Some((p, ring)) = e.mesh {
+                f[p + ring as usize * planets] = e.k * e.compression(q.as_slice());
+            }
+        }
+        Some(f)
+    }
+
+    /// Set the planets' pin position errors, (tangential e_t, radial e_r) per planet, m:
+    /// the gaps of [`pin_error_gaps`] on each planet's sun and ring mesh.
+    pub fn set_pin_errors(&mut self, errors_m: &[(f64, f64)]) {
+        for e in &mut self.elements {
+            if let Some((p, ring)) = e.mesh {
+                let (et, er) = errors_m.get(p).copied().unwrap_or((0.0, 0.0));
+                e.gap_m = pin_error_gaps(et, er, self.alpha_rad)[ring as usize];
+            }
+        }
     }
 }
 
@@ -236,7 +317,7 @@ impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
         let mut out = DVector::zeros(2 * n);
         out.rows_mut(n, n).copy_from(&self.force_n);
         for e in &self.elements {
-            let d = e.deflection(q);
+            let d = e.compression(q);
             let k = match e.mesh {
                 None => e.k,
                 Some(_) if d <= 0.0 => continue,
@@ -301,6 +382,7 @@ fn elements_of(p: &PlanetaryLumped, alpha: [f64; 2], mass: &[f64], zeta: f64) ->
                 (q + 2, 1.0),
             ],
             mesh: Some((n, false)),
+            gap_m: 0.0,
         });
         out.push(Element {
             k: k_ring,
@@ -314,6 +396,7 @@ fn elements_of(p: &PlanetaryLumped, alpha: [f64; 2], mass: &[f64], zeta: f64) ->
                 (q + 2, -1.0),
             ],
             mesh: Some((n, true)),
+            gap_m: 0.0,
         });
         for g in [
             vec![(CARRIER, cp), (CARRIER + 1, sp), (q, -1.0)],
@@ -330,6 +413,7 @@ fn elements_of(p: &PlanetaryLumped, alpha: [f64; 2], mass: &[f64], zeta: f64) ->
                 c,
                 g,
                 mesh: None,
+                gap_m: 0.0,
             });
         }
     }
@@ -346,6 +430,7 @@ fn elements_of(p: &PlanetaryLumped, alpha: [f64; 2], mass: &[f64], zeta: f64) ->
                     c,
                     g: vec![(i, 1.0)],
                     mesh: None,
+                    gap_m: 0.0,
                 });
             }
         }

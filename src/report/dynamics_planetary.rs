@@ -2,7 +2,8 @@
 //! mean and largest force over the steady-state mesh period, the load sharing factor per
 //! planet, the dynamic factor and the run's numerics; `mesh_forces.csv` (every mesh's
 //! force over the period) and `motions.csv` (every coordinate of the lumped model)
-//! (docs/MODEL.md 12.5).
+//! (docs/MODEL.md 12.5); `load_sharing.csv`, per planet its pin errors and load sharing
+//! factors (quasi-static, sun and ring meshes' means, the sun mesh's peak).
 
 use super::artifacts::Artifacts;
 use crate::dynamics::planetary_steady::PlanetaryResponse;
@@ -27,8 +28,7 @@ fn column_stats(rows: &[Vec<f64>]) -> (Vec<f64>, Vec<f64>) {
 /// load over the mean of all planets' (from the meshes' means `mean`), and the largest
 /// over the samples `forces` of N F_sn(t) / sum_k F_sk(t) (the instantaneous share).
 pub fn load_sharing(mean: &[f64], forces: &[Vec<f64>], planets: usize) -> (Vec<f64>, Vec<f64>) {
-    let all = mean[..planets].iter().sum::<f64>() / planets as f64;
-    let by_mean = mean[..planets].iter().map(|m| m / all).collect();
+    let by_mean = shares(&mean[..planets]);
     let peak = (0..planets)
         .map(|p| {
             forces
@@ -45,6 +45,21 @@ pub fn load_sharing(mean: &[f64], forces: &[Vec<f64>], planets: usize) -> (Vec<f
         })
         .collect();
     (by_mean, peak)
+}
+
+/// Load sharing factors L_n = N F_n / sum_k F_k of the planets' forces `f` (one mesh kind),
+/// all 0 when no planet carries load.
+pub fn shares(f: &[f64]) -> Vec<f64> {
+    let sum: f64 = f.iter().sum();
+    f.iter()
+        .map(|v| {
+            if sum > 0.0 {
+                f.len() as f64 * v / sum
+            } else {
+                0.0
+            }
+        })
+        .collect()
 }
 
 /// The nominal force of every sun (and ring) mesh with equal sharing, N: the sun's
@@ -67,6 +82,20 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
     let (_, max) = column_stats(&r.mesh_forces_n);
     let mean = &r.mean_forces_n;
     let (lsf, lsf_peak) = load_sharing(mean, &r.mesh_forces_n, n);
+    let lsf_ring = shares(&mean[n..2 * n]);
+    // The quasi-static shares: the static equilibrium at mean stiffness with the pin
+    // errors' gaps and contact loss (checked solvable when the model was built).
+    let static_f = d
+        .model
+        .static_mesh_forces()
+        .unwrap_or_else(|| vec![0.0; 2 * n]);
+    let lsf_static = shares(&static_f[..n]);
+    let section = &d.study.section;
+    let errors_um: Vec<(f64, f64)> = section
+        .pin_errors_m()
+        .iter()
+        .map(|(t, r)| (t * 1e6, r * 1e6))
+        .collect();
     let nominal = nominal_mesh_force_n(d);
     let dyn_factor = |range: std::ops::Range<usize>| {
         max[range].iter().fold(0.0, |a: f64, b| a.max(*b)) / nominal
@@ -89,6 +118,11 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
             "meshes": meshes,
             "load_sharing_factor": lsf,
             "load_sharing_factor_peak": lsf_peak,
+            "load_sharing_factor_ring": lsf_ring,
+            "load_sharing_factor_static": lsf_static,
+            "planet_tangential_error_um": errors_um.iter().map(|e| e.0).collect::<Vec<_>>(),
+            "planet_radial_error_um": errors_um.iter().map(|e| e.1).collect::<Vec<_>>(),
+            "floating_sun": section.floating_sun,
             "dynamic_factor_sun_planet": dyn_factor(0..n),
             "dynamic_factor_ring_planet": dyn_factor(n..2 * n),
             "rotating_frame": "carrier frame without centripetal and gyroscopic terms",
@@ -112,6 +146,20 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
     };
     a.table("mesh_forces.csv", forces_table(r, n));
     a.table("motions.csv", motions_table(r, n));
+    a.table(
+        "load_sharing.csv",
+        Table::new()
+            .col("planet", (1..=n).map(|p| p as f64).collect())
+            .col(
+                "tangential_error_um",
+                errors_um.iter().map(|e| e.0).collect(),
+            )
+            .col("radial_error_um", errors_um.iter().map(|e| e.1).collect())
+            .col("static_share", lsf_static)
+            .col("sun_mesh_share", lsf)
+            .col("ring_mesh_share", lsf_ring)
+            .col("sun_mesh_peak_share", lsf_peak),
+    );
     a
 }
 

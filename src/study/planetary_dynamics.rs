@@ -4,6 +4,11 @@
 //! member, its steady state, and the numbers of its summary: each mesh's mean and largest
 //! force, the load sharing factor per planet and the dynamic factor (docs/MODEL.md 12.5).
 //!
+//! Planet pin position errors (`planetary.planet_tangential_error_um`,
+//! `planet_radial_error_um`) open gaps on each planet's meshes
+//! (`dynamics::planetary_dynamic::pin_error_gaps`), set after the torque's sense is chosen
+//! on the error-free set; a floating sun (`planetary.floating_sun`) has no lateral bearing.
+//!
 //! The radii and operating pressure angles come from the geometry (the lumped section's
 //! radii, mean mesh stiffness and pressure angle serve its modal table only); the input
 //! member's torsional support is left out (a constant torque drives it); the output and
@@ -68,6 +73,10 @@ impl PlanetaryDynamics {
         params.radius_m = radius_m;
         params.mesh_stiffness_n_per_m = study.meshes.mean_n_per_m();
         params.torsional_n_per_m[lumped_index(set.input)] = 0.0;
+        if study.section.floating_sun {
+            // A floating sun (docs/MODEL.md 12.8): no lateral bearing, held by its meshes.
+            params.bearing_n_per_m[lumped_index(Member::Sun)] = 0.0;
+        }
         let mut errs = Vec::new();
         for m in [set.output, set.fixed] {
             if params.torsional_n_per_m[lumped_index(m)] <= 0.0 {
@@ -90,6 +99,8 @@ impl PlanetaryDynamics {
             case.dynamics.mesh_damping_ratio,
         );
         let torque = load_input(&mut model, set.input, case.operating.load_torque_nm)?;
+        model.set_pin_errors(&study.section.pin_errors_m());
+        check_static_contact(&model, &study.section, case.operating.load_torque_nm)?;
         let nm = &case.numerics;
         let settings = PlanetarySettings {
             samples_per_period: nm.steps_per_mesh_period.max(8) as usize,
@@ -141,4 +152,42 @@ pub(crate) fn load_input(
         return Ok(-torque_nm);
     }
     Ok(torque_nm)
+}
+
+/// With pin errors or a floating sun, the static equilibrium at mean mesh stiffness must
+/// keep every mesh compressed: a planet whose error keeps it off the load would be held by
+/// nothing (the model has no back flanks) and a floating sun held by too few meshes has no
+/// path to ground. Each is an input error naming the keys and the planets.
+fn check_static_contact(
+    model: &PlanetaryDynamic,
+    section: &crate::config::planetary::PlanetarySection,
+    torque_nm: f64,
+) -> Result<(), ModelError> {
+    let keys = || {
+        format!(
+            "`planetary.planet_tangential_error_um` = {:?}, `planetary.planet_radial_error_um` = {:?}, `planetary.floating_sun` = {} at `operating.load_torque_nm` = {torque_nm}",
+            section.planet_tangential_error_um.as_deref().unwrap_or(&[]),
+            section.planet_radial_error_um.as_deref().unwrap_or(&[]),
+            section.floating_sun,
+        )
+    };
+    let Some(f) = model.static_mesh_forces() else {
+        return Err(ModelError(vec![format!(
+            "{} are invalid: the set has a member with no path to ground",
+            keys()
+        )]));
+    };
+    let n = f.len() / 2;
+    let off: Vec<String> = (0..n)
+        .filter(|p| f[*p] <= 0.0 || f[n + p] <= 0.0)
+        .map(|p| (p + 1).to_string())
+        .collect();
+    if off.is_empty() {
+        return Ok(());
+    }
+    Err(ModelError(vec![format!(
+        "{} are invalid: the static equilibrium with every mesh closed puts the meshes of planet {} in tension, so a planet would carry no load (the model has no back flanks to hold an unloaded planet): give smaller errors or a larger torque",
+        keys(),
+        off.join(", ")
+    )]))
 }
