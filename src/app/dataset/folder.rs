@@ -359,9 +359,8 @@ pub struct Missing {
 
 /// The index of a dataset (`index.parquet`, `index.csv`) as a run or a merge writes it.
 pub struct IndexTables {
-    /// Records indexed (sidecars whose identity the description gives).
+    /// Records indexed, and those missing from `0..total`.
     pub present: usize,
-    /// The records missing from `0..total`.
     pub missing: Missing,
     /// The index columns and each column's unit.
     pub columns: Vec<Column>,
@@ -519,7 +518,8 @@ fn trajectories_json(root: &Path, key: &str) -> Value {
 
 /// Whether record labels `l` are those the design described by `body` (the
 /// description, `state/dataset.json`) gives its id: condition (name, fault, severity),
-/// trajectory state, speed, load, realisation and noise seed, all recomputed from the id.
+/// trajectory state, speed, load, realisation and noise seed, all recomputed from the id,
+/// and its indicators' channels the description's sensors.
 pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
     let a = &body["axes"];
     let len = |v: &Value| v.as_array().map_or(0, Vec::len);
@@ -552,6 +552,18 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         && l.realisation == l.record_id % plan.realisations
         && l.noise_seed == crate::study::dataset::plan::record_seed(seed, l.record_id)
         && l.file == signal_file(l.record_id)
+        && channels_match(l, &body["record"]["sensors"])
+}
+
+/// Whether the record's indicator channels are the description's sensors, in order: a
+/// sidecar with both channels renamed `x` was merged into an index of two `x_rms` columns.
+fn channels_match(l: &RecordLabels, sensors: &Value) -> bool {
+    sensors.as_array().is_some_and(|s| {
+        s.len() == l.indicators.len()
+            && s.iter()
+                .zip(&l.indicators)
+                .all(|(a, c)| a.as_str() == Some(c.channel.as_str()))
+    })
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`
