@@ -8,6 +8,9 @@
 #
 # Usage: scripts/budget_table.sh [OUT_DIR]   (default: a temporary folder; ~15 min on the
 # shared 2-core machine). Needs /usr/bin/time (Debian: apt-get install time) and python3.
+#        BUDGET_ROWS=issue33 scripts/budget_table.sh   (only issue 33's rows: signals records
+# by length x sampling rate and by sensor count, dataset designs by records x length x
+# rate x channels, predict with a future spectrum of 1-20 bins; about 10 min)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet --bin gearwear
@@ -16,17 +19,6 @@ work="${1:-$(mktemp -d)}"
 mkdir -p "$work"
 cd "$work"
 rows=()
-
-# Observations (wear and vibration) from a true run at the built-in k, for calibrate.
-"$bin" wear -q --mode dynamic --set wear.total_cycles=4e4 --out truth >/dev/null 2>&1
-python3 - <<'EOF'
-import csv
-rows = list(csv.DictReader(open("truth/updates_dynamic.csv")))
-with open("obs.csv", "w") as f:
-    f.write("cycles,max_wear_pinion_um,sigma_max_wear_pinion_um,velocity_y_pinion_rms_mm_per_s\n")
-    for r in rows[1:]:
-        f.write(f"{r['cycles']},{float(r['max_wear_pinion_um']):.4f},0.05,{float(r['velocity_y_pinion_rms_mm_per_s']):.4f}\n")
-EOF
 
 # measure NAME ARGS...: the estimate, then the run.
 measure() {
@@ -38,17 +30,32 @@ measure() {
     mem=$(grep -o 'memory ~[0-9.]* GB' <<<"$est" | head -1 | grep -o '[0-9.]*' || echo "?")
     time_est=$(grep -o 'time ~[0-9.]* [a-z]*' <<<"$est" | head -1 | sed 's/time ~//' || echo "?")
     rm -rf "out_$name"
-    /usr/bin/time -o "time_$name" -f "%M %e" "$bin" -q --no-budget "$@" --out "out_$name" \
+    /usr/bin/time -o "time_$name" -f "%M %e %U %S" "$bin" -q --no-budget "$@" --out "out_$name" \
         >/dev/null 2>"err_$name" || echo "$name: exit $? ($(tail -c 300 "err_$name"))" >&2
-    local kb secs
-    read -r kb secs < <(tail -1 "time_$name")
+    local kb secs user sys
+    read -r kb secs user sys < <(tail -1 "time_$name")
+    local cpu
+    cpu=$(python3 -c "print(f'{$user + $sys:.2f}')")
     local peak
     peak=$(python3 -c "print(f'{$kb * 1024 / 1e9:.3f}')")
     local ratio
     ratio=$(python3 -c "print(f'{$peak / $mem:.2f}' if '$mem' != '?' and $mem > 0 else '?')")
-    rows+=("| \`$name\` | \`$*\` | $mem GB | $peak GB | $ratio | $time_est | ${secs} s |")
-    echo "$name: estimate $mem GB, peak $peak GB (ratio $ratio), time estimate $time_est, took ${secs} s" >&2
+    rows+=("| \`$name\` | \`$*\` | $mem GB | $peak GB | $ratio | $time_est | ${secs} s | ${cpu} s |")
+    echo "$name: estimate $mem GB, peak $peak GB (ratio $ratio), time estimate $time_est, took ${secs} s (CPU ${cpu} s)" >&2
 }
+
+# The rows of issue 22: every command at the ends of its ranges.
+issue22_rows() {
+# Observations (wear and vibration) from a true run at the built-in k, for calibrate.
+"$bin" wear -q --mode dynamic --set wear.total_cycles=4e4 --out truth >/dev/null 2>&1
+python3 - <<'EOF'
+import csv
+rows = list(csv.DictReader(open("truth/updates_dynamic.csv")))
+with open("obs.csv", "w") as f:
+    f.write("cycles,max_wear_pinion_um,sigma_max_wear_pinion_um,velocity_y_pinion_rms_mm_per_s\n")
+    for r in rows[1:]:
+        f.write(f"{r['cycles']},{float(r['max_wear_pinion_um']):.4f},0.05,{float(r['velocity_y_pinion_rms_mm_per_s']):.4f}\n")
+EOF
 
 measure stiffness_default stiffness
 measure stiffness_table_1e5 stiffness --set stiffness.table_points_per_mesh_period=100000
@@ -131,10 +138,81 @@ bins = [
 ]
 TOML
 measure run_spectrum_3_bins run --config three_bins.toml
+}
+
+# Issue 33: the estimate across record length x sampling rate, sensor count, dataset
+# designs (records x length x rate x channels) and a future spectrum's bins.
+issue33_rows() {
+# A modal transfer path of N sensors (the generic housing's three modes, each sensor's
+# gains those of `input` scaled by 1 + i/N).
+python3 - <<'PY'
+for n in (1, 20, 100):
+    with open(f"path_{n}.toml", "w") as f:
+        f.write("sensors = [" + ", ".join(f'"s{i}"' for i in range(n)) + "]\n")
+        for hz, z in ((2100.0, 0.02), (3700.0, 0.03), (6300.0, 0.04)):
+            rows = ", ".join(f"[{0.0075 * (1 + i / n):.6f}, {0.025 * (1 + i / n):.6f}, 0.005, 0.02]" for i in range(n))
+            f.write(f"[[mode]]\nfrequency_hz = {hz}\ndamping_ratio = {z}\ngains_per_kg = [{rows}]\n")
+# Future load spectra of N bins (torque 40-80 N m, speed 20-50 Hz, equal shares).
+for n in (1, 5, 20):
+    with open(f"future_{n}.toml", "w") as f:
+        f.write("[load_spectrum]\nbins = [\n")
+        for i in range(n):
+            t = 40 + 40 * i / max(n - 1, 1)
+            v = 20 + 30 * ((i * 7) % n) / max(n - 1, 1)
+            f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
+        f.write("]\n")
+PY
+# Signals: record length x sampling rate (steady records, the generic housing's 2 sensors).
+measure signals_10s_25.6khz signals --set signals.record_length=10
+measure signals_1s_200khz signals --set signals.sampling_rate_hz=200000
+measure signals_5s_200khz signals --set signals.sampling_rate_hz=200000 --set signals.record_length=5
+measure signals_0.5s_1mhz signals --set signals.sampling_rate_hz=1000000 --set signals.record_length=0.5
+# Signals: the sensor count (a modal path of 1, 20, 100 sensors; 1 s at 25.6 kHz).
+measure signals_1_sensor signals --transfer-path path_1.toml
+measure signals_20_sensors signals --transfer-path path_20.toml
+measure signals_100_sensors signals --transfer-path path_100.toml
+# Datasets: records x length x rate x channels.
+dataset_design() { # NAME STATES SPEEDS REALISATIONS LENGTH_S RATE_HZ [PATH]
+    {
+        echo "seed = 3"
+        echo "set = [\"signals.record_length=$5\", \"signals.sampling_rate_hz=$6\"]"
+        [[ -n "${7:-}" ]] && echo "transfer_path = \"$7\""
+        echo "[run_to_failure]"
+        echo "states = $2"
+        echo "max_cycles = 2e4"
+        echo "wear_limit_um = 10"
+        echo "[operating]"
+        echo "input_speed_hz = $3"
+        echo "[records]"
+        echo "noise_realisations = $4"
+    } >"$1.toml"
+}
+dataset_design ds_8x0.25s 2 "[20, 30]" 2 0.25 25600
+measure dataset_8_records_0.25s_25.6khz dataset --design ds_8x0.25s.toml
+dataset_design ds_4x2s 2 "[30]" 2 2 25600
+measure dataset_4_records_2s_25.6khz dataset --design ds_4x2s.toml
+dataset_design ds_4x0.5s_100k 2 "[30]" 2 0.5 100000
+measure dataset_4_records_0.5s_100khz dataset --design ds_4x0.5s_100k.toml
+dataset_design ds_24x0.1s 3 "[20, 30]" 4 0.1 25600
+measure dataset_24_records_0.1s_25.6khz dataset --design ds_24x0.1s.toml
+dataset_design ds_4x0.5s_20ch 2 "[30]" 2 0.5 25600 path_20.toml
+measure dataset_4_records_0.5s_20_sensors dataset --design ds_4x0.5s_20ch.toml
+# Predict with a future spectrum of 1, 5 and 20 bins (100 prior samples, to 2e4 cycles,
+# the spectrum from 1e4 cycles on, no check runs).
+for n in 1 5 20; do
+    measure "predict_future_${n}_bins" predict --limit-um 10 --cycles 2e4 --samples 100 \
+        --check-runs 0 --future-spectrum "future_$n.toml" --future-from-cycles 1e4
+done
+}
+
+case "${BUDGET_ROWS:-all}" in
+    issue33) issue33_rows ;;
+    *) issue22_rows; issue33_rows ;;
+esac
 
 echo
-echo "| run | command | estimated memory | measured peak (RSS) | peak / estimate | estimated time | measured time |"
-echo "|---|---|---|---|---|---|---|"
+echo "| run | command | estimated memory | measured peak (RSS) | peak / estimate | estimated time | measured wall time | measured CPU time |"
+echo "|---|---|---|---|---|---|---|---|"
 printf '%s\n' "${rows[@]}"
 python3 - "${rows[@]}" <<'EOF'
 import sys

@@ -6,11 +6,14 @@
 # Usage: scripts/fuzz.sh [RUNS]        (default 1000000 executions of each target)
 #        FUZZ_TARGET=case_values scripts/fuzz.sh   (one target; default: all in turn)
 #        FUZZ_TOOLCHAIN=nightly-2026-05-15 scripts/fuzz.sh 200000
-#        FUZZ_SECONDS=120 scripts/fuzz.sh (a bounded time per target instead of a number of runs)
+#        FUZZ_SECONDS=120 scripts/fuzz.sh (a bounded time per target too: RUNS or the time,
+#        whichever comes first)
 # Targets: case_input (TOML text, --set, --vary), case_values (schema keys with values
 # mostly in range, so most inputs reach the model), observations and posterior (the CSV
 # files of calibrate and predict), checkpoint (a wear checkpoint, checked against the
-# model), dataset_design (a dataset design and its case file); each seeded from
+# model), dataset_design (a dataset design and its case file), dataset_sidecar (a
+# record's sidecar as a resume or merge reads it, and the index built from it) and
+# dataset_shard (a shard's description as dataset-merge reads it); each seeded from
 # fuzz/seeds/TARGET where that exists. The corpora
 # grow in fuzz/corpus/TARGET; a crash is saved in fuzz/artifacts/TARGET and makes this
 # script fail.
@@ -31,9 +34,10 @@ else
 fi
 limit=(-runs="$runs")
 if [[ -n "${FUZZ_SECONDS:-}" ]]; then
-    limit=(-max_total_time="$FUZZ_SECONDS")
+    # Both bounds: whichever comes first.
+    limit+=(-max_total_time="$FUZZ_SECONDS")
 fi
-for target in ${FUZZ_TARGET:-case_input case_values observations posterior checkpoint dataset_design}; do
+for target in ${FUZZ_TARGET:-case_input case_values observations posterior checkpoint dataset_design dataset_sidecar dataset_shard}; do
     corpus="fuzz/corpus/$target"
     mkdir -p "$corpus"
     if [[ -d "fuzz/seeds/$target" ]]; then

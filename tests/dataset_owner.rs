@@ -134,3 +134,42 @@ fn two_designs_started_at_once_into_an_empty_folder_one_is_refused_and_nothing_m
         assert!(!out.join("INCOMPLETE").exists(), "trial {trial}");
     }
 }
+
+/// A folder whose description names a key of any text (damaged or foreign) is refused as
+/// another design's, with exit 2; the message shows the key's first 12 characters. A key
+/// whose 12th byte falls inside a character ("a" then two-byte "é"s: byte 12 is the
+/// middle of the sixth "é") once made the message slice a `str` inside a character: a
+/// panic, exit 101, found while writing the shard-description fuzz target.
+#[test]
+fn a_description_key_of_any_characters_is_refused_without_a_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = write(dir.path(), "a.toml", &design(1));
+    for forged in [
+        "aéééééééééé",
+        "日本語のキーは十二文字を超える",
+        "a\u{1F600}\u{1F600}\u{1F600}",
+    ] {
+        let out = dir.path().join("out");
+        std::fs::create_dir_all(out.join("state")).unwrap();
+        let body = serde_json::json!({ "dataset_key": forged });
+        std::fs::write(out.join("state/dataset.json"), body.to_string()).unwrap();
+        let before = snapshot(&out);
+        let r = gearwear(&[
+            "dataset",
+            "--design",
+            &a,
+            "--out",
+            out.to_str().unwrap(),
+            "-q",
+        ]);
+        let e = stderr(&r);
+        assert_eq!(r.status.code(), Some(2), "{forged}: {e}");
+        let shown: String = forged.chars().take(12).collect();
+        assert!(
+            e.contains("another design") && e.contains(&shown),
+            "{forged}: {e}"
+        );
+        assert_eq!(snapshot(&out), before, "{forged}: the folder changed");
+        std::fs::remove_dir_all(&out).unwrap();
+    }
+}

@@ -30,8 +30,8 @@ fn edit(root: &Path, f: impl Fn(&mut serde_json::Value)) {
     std::fs::write(&p, serde_json::to_string(&v).unwrap()).unwrap();
 }
 
-#[test]
-fn a_dataset_shard_claiming_2e9_records_is_refused_or_merged_in_bounded_memory() {
+/// A new temporary folder holding the dataset of [`DESIGN`] in `ds`.
+fn real_dataset() -> tempfile::TempDir {
     let d = tempfile::tempdir().unwrap();
     let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
     std::fs::write(d.path().join("design.toml"), DESIGN).unwrap();
@@ -43,6 +43,13 @@ fn a_dataset_shard_claiming_2e9_records_is_refused_or_merged_in_bounded_memory()
         "--out",
         &p("ds"),
     ]);
+    d
+}
+
+#[test]
+fn a_dataset_shard_claiming_2e9_records_is_refused_or_merged_in_bounded_memory() {
+    let d = real_dataset();
+    let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
 
     // The count alone edited: refused, naming the file, nothing written.
     edit(&d.path().join("ds"), |v| {
@@ -88,4 +95,40 @@ fn a_dataset_shard_claiming_2e9_records_is_refused_or_merged_in_bounded_memory()
         before,
         "the input shard changed"
     );
+}
+
+/// A shard's sidecar whose indicator channels are renamed keeps every identity field the
+/// design gives its id, so the merge once indexed it: both channels renamed `x` gave an
+/// index with two `x_rms` columns (and no `input_rms` of that record), exit 0. A record's
+/// channels are now checked against the description's sensors (`record.sensors`): the
+/// record is counted missing, the index keeps the sensors' columns, each once.
+#[test]
+fn a_sidecar_naming_other_channels_is_counted_missing_not_indexed() {
+    let d = real_dataset();
+    let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
+    let car = d.path().join("ds/records/0000000.json");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&car).unwrap()).unwrap();
+    for c in v["labels"]["indicators"].as_array_mut().unwrap() {
+        c["channel"] = "x".into();
+    }
+    std::fs::write(&car, serde_json::to_string_pretty(&v).unwrap()).unwrap();
+    let r = common::gearwear(&["dataset-merge", "-q", &p("ds"), "--out", &p("merged")]);
+    let index = std::fs::read_to_string(d.path().join("merged/index.csv"))
+        .unwrap_or_else(|e| panic!("{e}: {}", stderr(&r)));
+    let header: Vec<&str> = index.lines().next().unwrap().split(',').collect();
+    let mut unique = header.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique.len(), header.len(), "duplicated columns: {header:?}");
+    assert!(
+        header.contains(&"input_rms") && !header.contains(&"x_rms"),
+        "{header:?}"
+    );
+    let m: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(d.path().join("merged/metadata.json")).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(m["records_missing"], serde_json::json!([0]), "{m}");
+    assert_eq!(index.lines().count(), 2, "one record indexed: {index}");
 }

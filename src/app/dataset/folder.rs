@@ -213,12 +213,19 @@ fn own_files(s: &Sidecar) -> bool {
     s.labels.file == signal_file(s.labels.record_id)
 }
 
+/// A sidecar's bytes as a resume ([`finished`]) and a merge or index ([`sidecars`]) read
+/// them: a [`Sidecar`] in JSON that names its own record's signal file; `None` for
+/// anything else (not JSON, another shape, a file of another record). Public for the fuzz
+/// target `fuzz/fuzz_targets/dataset_sidecar.rs` (docs/RELIABILITY.md).
+pub fn parse_sidecar(bytes: &[u8]) -> Option<Sidecar> {
+    serde_json::from_slice(bytes).ok().filter(own_files)
+}
+
 /// The sidecar of record `id` in `root`, if it exists, reads, and its signal file is
 /// present with the recorded checksum.
 pub fn finished(root: &Path, id: usize, key: &str) -> Option<Sidecar> {
-    let text = read_in(root, &sidecar_rel(id))?;
-    let s: Sidecar = serde_json::from_slice(&text).ok()?;
-    if s.dataset_key != key || s.labels.record_id != id || !own_files(&s) {
+    let s = parse_sidecar(&read_in(root, &sidecar_rel(id))?)?;
+    if s.dataset_key != key || s.labels.record_id != id {
         return None;
     }
     let bytes = read_in(root, &s.labels.file)?;
@@ -231,11 +238,9 @@ pub fn sidecars(root: &Path) -> Vec<Sidecar> {
         .into_iter()
         .filter(|n| n.ends_with(".json"))
         .filter_map(|n| {
-            let s: Sidecar =
-                serde_json::from_slice(&read_in(root, &format!("records/{n}"))?).ok()?;
-            // Only under its own name, naming its own signal file.
-            (sidecar_rel(s.labels.record_id) == format!("records/{n}") && own_files(&s))
-                .then_some(s)
+            let s = parse_sidecar(&read_in(root, &format!("records/{n}"))?)?;
+            // Only under its own name (and naming its own signal file: `parse_sidecar`).
+            (sidecar_rel(s.labels.record_id) == format!("records/{n}")).then_some(s)
         })
         .collect();
     out.sort_by_key(|s| s.labels.record_id);
@@ -273,16 +278,26 @@ pub fn existing_key(root: &Path) -> Result<Option<String>, String> {
             Ok(None)
         };
     };
-    let body: Value = serde_json::from_slice(&bytes).map_err(|_| {
-        format!(
-            "{}: not a dataset description",
-            root.join(DATASET_REL).display()
-        )
-    })?;
+    described_key(&bytes, &root.join(DATASET_REL)).map(Some)
+}
+
+/// The dataset key named by a description's bytes (`state/dataset.json`, at `described`
+/// for the messages): `Err` when they are not a JSON object with a `dataset_key` string.
+/// Public for the fuzz target `dataset_shard` (docs/RELIABILITY.md).
+pub fn described_key(bytes: &[u8], described: &Path) -> Result<String, String> {
+    let body: Value = serde_json::from_slice(bytes)
+        .map_err(|_| format!("{}: not a dataset description", described.display()))?;
     body["dataset_key"]
         .as_str()
-        .map(|k| Some(k.to_owned()))
-        .ok_or_else(|| format!("{}: no dataset key", root.join(DATASET_REL).display()))
+        .map(str::to_owned)
+        .ok_or_else(|| format!("{}: no dataset key", described.display()))
+}
+
+/// The first 12 characters of a dataset key, as messages show it (a key read from a
+/// damaged or foreign description may hold any characters: cut at a character, never
+/// inside one).
+pub(crate) fn key_shown(key: &str) -> String {
+    key.chars().take(12).collect()
 }
 
 /// Whether nothing (no file, folder or link) is at `rel` in `root` (no link followed).
@@ -301,14 +316,24 @@ pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), String> 
         return Ok(());
     }
     match existing_key(root)? {
-        Some(k) if k != key => Err(format!(
-            "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it",
-            root.display(),
-            &k[..k.len().min(12)],
-            &key[..key.len().min(12)]
-        )),
-        _ => Ok(()),
+        Some(k) => owner_problem(root, &k, key),
+        None => Ok(()),
     }
+}
+
+/// The refusal of a dataset of key `key` in the folder `root` whose description names
+/// the key `existing` (any text: read from the folder), when the two differ. Public for
+/// the fuzz target `dataset_shard`.
+pub fn owner_problem(root: &Path, existing: &str, key: &str) -> Result<(), String> {
+    if existing == key {
+        return Ok(());
+    }
+    Err(format!(
+        "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it",
+        root.display(),
+        key_shown(existing),
+        key_shown(key)
+    ))
 }
 
 /// Why the index and metadata could not be built.
@@ -332,43 +357,51 @@ pub struct Missing {
     pub listed: Vec<usize>,
 }
 
-/// Stage `index.parquet`, `index.csv`, `metadata.json` and the indicator trends (table,
-/// and figure as `figures` says) of the dataset in `root` (whose records and state files
-/// are in place) into `out`. Returns the ids missing from `0..total`.
-pub fn stage_index_and_metadata(
-    out: &mut OutputDir,
-    root: &Path,
+/// The index of a dataset (`index.parquet`, `index.csv`) as a run or a merge writes it.
+pub struct IndexTables {
+    /// Records indexed, and those missing from `0..total`.
+    pub present: usize,
+    pub missing: Missing,
+    /// The index columns and each column's unit.
+    pub columns: Vec<Column>,
+    pub units: Vec<(String, String)>,
+    /// The channels' unit (the description's `record.channel_unit`).
+    pub channel_unit: String,
+    pub parquet: Vec<u8>,
+    pub csv: Vec<u8>,
+}
+
+/// The index of the sidecars `cars` under the description `body` (`state/dataset.json`,
+/// whose path `described` names it in messages) of a dataset of `total` records. Only
+/// records whose identity the description gives are indexed: an id in range, and the
+/// condition, its labels, state, speed, load, realisation and noise seed that id has in
+/// the design ([`matches_design`]); an edited or planted sidecar is counted missing.
+/// Public for the fuzz targets `dataset_sidecar` and `dataset_shard` (docs/RELIABILITY.md).
+pub fn index_tables(
+    cars: Vec<Sidecar>,
+    body: &Value,
     total: usize,
-    figures: FigureOutput,
-) -> Result<Missing, BuildError> {
-    let body: Value = read_in(root, DATASET_REL)
-        .and_then(|b| serde_json::from_slice(&b).ok())
-        .ok_or_else(|| {
-            BuildError::Format(format!(
-                "{}: missing or unreadable",
-                root.join(DATASET_REL).display()
-            ))
-        })?;
-    let cars = sidecars(root);
-    let key = body["dataset_key"].as_str().unwrap_or_default().to_owned();
-    // Only records whose identity the description gives: an id in range, and the
-    // condition, its labels, state, speed, load, realisation and noise seed that id has
-    // in the design (an edited or planted sidecar is counted missing, never indexed).
+    described: &Path,
+) -> Result<IndexTables, BuildError> {
+    let key = body["dataset_key"].as_str().unwrap_or_default();
     let rows: Vec<RecordLabels> = cars
         .into_iter()
         .filter(|s| s.dataset_key == key && s.labels.record_id < total)
         .map(|s| s.labels)
-        .filter(|l| matches_design(l, &body))
+        .filter(|l| matches_design(l, body))
         .collect();
     let present: std::collections::BTreeSet<usize> = rows.iter().map(|r| r.record_id).collect();
     // Listed up to MAX_MISSING_LISTED ids (the count is in the headline): the list
     // never grows with the record count alone.
-    let missing: Vec<usize> = (0..total)
+    let listed: Vec<usize> = (0..total)
         .filter(|i| !present.contains(i))
         .take(MAX_MISSING_LISTED)
         .collect();
-    let missing_count = total - present.range(..total).count();
-    let unit = body["record"]["channel_unit"]
+    let missing = Missing {
+        count: total - present.range(..total).count(),
+        listed,
+    };
+    let channel_unit = body["record"]["channel_unit"]
         .as_str()
         .unwrap_or("-")
         .to_owned();
@@ -379,37 +412,65 @@ pub fn stage_index_and_metadata(
         .ok_or_else(|| {
             BuildError::Format(format!(
                 "{}: no valid record.sampling_rate_hz",
-                root.join(DATASET_REL).display()
+                described.display()
             ))
         })?;
-    let (cols, units) = index_columns(&rows, &unit, rate_hz);
-    let units_json: serde_json::Map<String, Value> =
-        units.iter().map(|(n, u)| (n.clone(), json!(u))).collect();
-    let meta = vec![(
-        "gearwear.units".to_string(),
-        Value::Object(units_json.clone()).to_string(),
-    )];
-    let pq = parquet_bytes(&cols, &meta)
+    let (columns, units) = index_columns(&rows, &channel_unit, rate_hz);
+    let units_json = units_json(&units);
+    let meta = vec![("gearwear.units".to_string(), units_json.to_string())];
+    let parquet = parquet_bytes(&columns, &meta)
         .map_err(|e| BuildError::Format(format!("index.parquet: {e}")))?;
-    out.stage("index.parquet", &pq)?;
-    let csv = columns_csv(&cols).map_err(|e| BuildError::Format(format!("index.csv: {e}")))?;
-    out.stage("index.csv", &csv)?;
-    stage_trends(out, &cols, &unit, figures)?;
+    let csv = columns_csv(&columns).map_err(|e| BuildError::Format(format!("index.csv: {e}")))?;
+    Ok(IndexTables {
+        present: rows.len(),
+        missing,
+        columns,
+        units,
+        channel_unit,
+        parquet,
+        csv,
+    })
+}
+
+/// Each index column's unit, as JSON (`metadata.json` `index_columns` and the index's
+/// Parquet metadata).
+fn units_json(units: &[(String, String)]) -> Value {
+    Value::Object(units.iter().map(|(n, u)| (n.clone(), json!(u))).collect())
+}
+
+/// Stage `index.parquet`, `index.csv`, `metadata.json` and the indicator trends (table,
+/// and figure as `figures` says) of the dataset in `root` (whose records and state files
+/// are in place) into `out`. Returns the ids missing from `0..total`.
+pub fn stage_index_and_metadata(
+    out: &mut OutputDir,
+    root: &Path,
+    total: usize,
+    figures: FigureOutput,
+) -> Result<Missing, BuildError> {
+    let described = root.join(DATASET_REL);
+    let body: Value = read_in(root, DATASET_REL)
+        .and_then(|b| serde_json::from_slice(&b).ok())
+        .ok_or_else(|| {
+            BuildError::Format(format!("{}: missing or unreadable", described.display()))
+        })?;
+    let key = body["dataset_key"].as_str().unwrap_or_default().to_owned();
+    let t = index_tables(sidecars(root), &body, total, &described)?;
+    out.stage("index.parquet", &t.parquet)?;
+    out.stage("index.csv", &t.csv)?;
+    stage_trends(out, &t.columns, &t.channel_unit, figures)?;
     let mut metadata = body;
-    metadata["index_column_meanings"] = json!(units
+    metadata["index_column_meanings"] = json!(t
+        .units
         .iter()
         .map(|(n, _)| (n.clone(), json!(column_meaning(n))))
         .collect::<serde_json::Map<String, Value>>());
-    metadata["index_columns"] = Value::Object(units_json);
+    metadata["index_columns"] = units_json(&t.units);
     metadata["trajectories"] = trajectories_json(root, &key);
-    metadata["records_present"] = json!(rows.len());
-    metadata["records_missing"] = json!(missing);
-    metadata["records_missing_count"] = json!(missing_count);
+    metadata["records_present"] = json!(t.present);
+    metadata["records_missing"] = json!(t.missing.listed);
+    metadata["records_missing_count"] = json!(t.missing.count);
     out.stage_json("metadata.json", &metadata)?;
-    Ok(Missing {
-        count: missing_count,
-        listed: missing,
-    })
+    Ok(t.missing)
 }
 
 /// Stage the indicator trends of the index columns `cols` (`indicator_trends.csv`, and
@@ -457,7 +518,8 @@ fn trajectories_json(root: &Path, key: &str) -> Value {
 
 /// Whether record labels `l` are those the design described by `body` (the
 /// description, `state/dataset.json`) gives its id: condition (name, fault, severity),
-/// trajectory state, speed, load, realisation and noise seed, all recomputed from the id.
+/// trajectory state, speed, load, realisation and noise seed, all recomputed from the id,
+/// and its indicators' channels the description's sensors.
 pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
     let a = &body["axes"];
     let len = |v: &Value| v.as_array().map_or(0, Vec::len);
@@ -490,6 +552,18 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         && l.realisation == l.record_id % plan.realisations
         && l.noise_seed == crate::study::dataset::plan::record_seed(seed, l.record_id)
         && l.file == signal_file(l.record_id)
+        && channels_match(l, &body["record"]["sensors"])
+}
+
+/// Whether the record's indicator channels are the description's sensors, in order: a
+/// sidecar with both channels renamed `x` was merged into an index of two `x_rms` columns.
+fn channels_match(l: &RecordLabels, sensors: &Value) -> bool {
+    sensors.as_array().is_some_and(|s| {
+        s.len() == l.indicators.len()
+            && s.iter()
+                .zip(&l.indicators)
+                .all(|(a, c)| a.as_str() == Some(c.channel.as_str()))
+    })
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`

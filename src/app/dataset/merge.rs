@@ -3,8 +3,8 @@
 //! built as an unsharded run builds them.
 
 use super::folder::{
-    copy_dataset, csv_rel, is_file_in, read_in, sidecar_rel, sidecars, stage_index_and_metadata,
-    trajectories, trajectory_rel, DATASET_REL,
+    copy_dataset, csv_rel, is_file_in, key_shown, read_in, sidecar_rel, sidecars,
+    stage_index_and_metadata, trajectories, trajectory_rel, DATASET_REL,
 };
 use super::plan::key_of_description;
 use super::request::{DatasetError, DatasetOutcome};
@@ -22,39 +22,13 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
     let mut problems = Vec::new();
     for dir in inputs {
         let bytes = read_in(dir, DATASET_REL);
-        let body: Option<Value> = bytes
-            .as_deref()
-            .and_then(|b| serde_json::from_slice(b).ok());
-        let Some(body) = body else {
-            problems.push(format!(
-                "{}: no {DATASET_REL}: not a dataset folder (or not started)",
-                dir.display()
-            ));
-            continue;
+        let (k, total) = match check_description(dir, bytes.as_deref()) {
+            Ok(kt) => kt,
+            Err(p) => {
+                problems.push(p);
+                continue;
+            }
         };
-        let k = body["dataset_key"].as_str().unwrap_or_default().to_owned();
-        let total = body["records"].as_u64().unwrap_or(0) as usize;
-        // The record count is trusted only when the axes beside it give it: a shard
-        // edited to claim 2e9 records would otherwise size the index's missing list.
-        if axes_records(&body) != Some(total)
-            || total as u64 > crate::study::dataset::design::MAX_RECORDS
-        {
-            problems.push(format!(
-                "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
-                dir.display()
-            ));
-            continue;
-        }
-        // The metadata is written from the description: it must be the one its design
-        // gives (its key recomputed from its own design, cases and transfer path), and
-        // the same in every shard.
-        if key_of_description(&body).as_deref() != Some(k.as_str()) {
-            problems.push(format!(
-                "{}: {DATASET_REL} does not give its own dataset key (its design, cases or transfer path were edited): a damaged or edited shard",
-                dir.display()
-            ));
-            continue;
-        }
         match &first_bytes {
             None => first_bytes = bytes,
             Some(b)
@@ -73,14 +47,53 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
             Some((k0, _)) if *k0 != k => problems.push(format!(
                 "{}: a shard of another dataset (dataset key {}..., the first input has {}...): merge shards of one design only",
                 dir.display(),
-                &k[..k.len().min(12)],
-                &k0[..k0.len().min(12)]
+                key_shown(&k),
+                key_shown(k0)
             )),
             _ => {}
         }
     }
     key.filter(|_| problems.is_empty())
         .ok_or(DatasetError::Input(problems))
+}
+
+/// A shard's description (`state/dataset.json` of the folder `dir`, its bytes as read,
+/// `None` when unreadable) checked as a merge checks it before any output folder is
+/// opened: a JSON object with a dataset key; its record count the one its axes give
+/// (conditions x states x speeds x loads x noise realisations, in checked arithmetic) and
+/// at most `MAX_RECORDS`; its key the one its own design, cases, transfer-path hash and
+/// version give. Returns the key and the record count, or the problem naming `dir`.
+/// Public for the fuzz target `fuzz/fuzz_targets/dataset_shard.rs` (docs/RELIABILITY.md).
+pub fn check_description(dir: &Path, bytes: Option<&[u8]>) -> Result<(String, usize), String> {
+    let body: Option<Value> = bytes.and_then(|b| serde_json::from_slice(b).ok());
+    let Some(body) = body else {
+        return Err(format!(
+            "{}: no {DATASET_REL}: not a dataset folder (or not started)",
+            dir.display()
+        ));
+    };
+    let k = body["dataset_key"].as_str().unwrap_or_default().to_owned();
+    let total = body["records"].as_u64().unwrap_or(0) as usize;
+    // The record count is trusted only when the axes beside it give it: a shard
+    // edited to claim 2e9 records would otherwise size the index's missing list.
+    if axes_records(&body) != Some(total)
+        || total as u64 > crate::study::dataset::design::MAX_RECORDS
+    {
+        return Err(format!(
+            "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
+            dir.display()
+        ));
+    }
+    // The metadata is written from the description: it must be the one its design
+    // gives (its key recomputed from its own design, cases and transfer path), and
+    // the same in every shard ([`shared_key`]).
+    if key_of_description(&body).as_deref() != Some(k.as_str()) {
+        return Err(format!(
+            "{}: {DATASET_REL} does not give its own dataset key (its design, cases or transfer path were edited): a damaged or edited shard",
+            dir.display()
+        ));
+    }
+    Ok((k, total))
 }
 
 /// Joins the shards in `inputs` (checked by [`shared_key`], which gave `key` and
