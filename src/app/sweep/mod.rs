@@ -277,10 +277,8 @@ impl Job for SweepJob {
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
         let started = Instant::now();
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        // A gear train first: the budget's estimate is the single pair's (and every case
-        // is checked again once resolved, `cases::resolve`).
+        // A train before the budget (a pair's estimate); then the budget, in milliseconds.
         super::refuse_train(&self.base)?;
-        // The sweep against the budget first, in milliseconds however many cases it has.
         self.check_budget()?;
         check_values(&self.base, &self.plan)?;
         let continuation = self.continuation_plan()?;
