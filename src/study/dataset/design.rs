@@ -480,6 +480,44 @@ roughness_table_rms_um = [0.42, 0.38, 0.30]
     }
 
     #[test]
+    fn a_design_rebuilt_from_its_resolved_cases_is_the_design() {
+        // A merge rebuilds a shard's design from its description (the base case file is
+        // not kept): the design text, each condition's case as TOML, and the defaults
+        // the base case gave. The rebuilt design must be the parsed one, field by field.
+        let text = "case = \"base.toml\"\nset = [\"signals.snr_db=25\"]\n[run_to_failure]\nstates = 2\n[[condition]]\nname = \"healthy\"\n[[condition]]\nname = \"rough\"\n[condition.case.surface]\nroughness_table_rms_um = [0.42, 0.38, 0.30]\n";
+        let base =
+            |_: &str| Ok("[operating]\nload_torque_nm = 50\ninput_speed_hz = 25\n".to_owned());
+        let d = parse_design(text, "d.toml", &base).unwrap();
+        let cases: Vec<String> = d
+            .conditions
+            .iter()
+            .map(|c| toml::to_string(&c.case).unwrap())
+            .collect();
+        let defaults = Defaults {
+            max_cycles: d.max_cycles,
+            speed_hz: d.speeds_hz[0],
+            torque_nm: d.torques_nm[0],
+        };
+        let again = design_of_cases(text, "d.toml", &cases, defaults).unwrap();
+        assert_eq!(again.torques_nm, vec![50.0]);
+        assert_eq!(again.speeds_hz, vec![25.0]);
+        assert_eq!(again.max_cycles, d.max_cycles);
+        for (a, b) in again.conditions.iter().zip(&d.conditions) {
+            assert_eq!(
+                toml::to_string(&a.case).unwrap(),
+                toml::to_string(&b.case).unwrap()
+            );
+            assert_eq!(
+                (&a.name, &a.fault, a.severity),
+                (&b.name, &b.fault, b.severity)
+            );
+        }
+        // A case list of another length is refused, naming the count.
+        let e = design_of_cases(text, "d.toml", &cases[..1], defaults).unwrap_err();
+        assert!(e[0].contains("1 cases kept for 2 conditions"), "{e:?}");
+    }
+
+    #[test]
     fn bad_designs_name_the_key() {
         let e = parse_design(
             "[run_to_failure]\ncycles = [2, 1]\n[records]\nnoise_realisations = 0\n",
