@@ -252,6 +252,7 @@ def dataset_merge(
     replace: bool = False,
     figures: Optional[str] = None,
     figure_size: Optional[Tuple[int, int]] = None,
+    transfer_path: Optional[Union[str, PathLike[str]]] = None,
 ) -> _Result:
     """``gearwear dataset-merge``."""
 

@@ -115,9 +115,10 @@ pub fn dataset<'py>(
     outcome_to_py(py, o, w)
 }
 
-/// The shards of a dataset joined (as `gearwear dataset-merge`).
+/// The shards of a dataset joined (as `gearwear dataset-merge`); `transfer_path`: the
+/// transfer-path file the shards' design names (`--transfer-path`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out, *, replace=false, figures=None, figure_size=None))]
+#[pyo3(signature = (inputs, out, *, replace=false, figures=None, figure_size=None, transfer_path=None))]
 pub fn dataset_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
@@ -125,12 +126,14 @@ pub fn dataset_merge<'py>(
     replace: bool,
     figures: Option<String>,
     figure_size: Option<(i64, i64)>,
+    transfer_path: Option<PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let job = DatasetMergeJob {
         inputs,
         out,
         replace,
         figures: crate::jobs::figure_request(figures, figure_size),
+        transfer_path,
     };
     let (o, w) = run_job(py, job, None)?;
     outcome_to_py(py, o, w)

@@ -29,5 +29,6 @@ pub(crate) fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
         out: a.out.clone(),
         replace: super::output::replace(),
         figures: a.figures.request(),
+        transfer_path: a.transfer_path.clone(),
     })
 }

@@ -44,6 +44,10 @@ pub(crate) struct DatasetMergeArgs {
     /// Output directory of the merged dataset (may be the shards' shared folder).
     #[arg(long)]
     pub(crate) out: PathBuf,
+    /// The transfer-path file the shards' design names (`transfer_path`), needed to
+    /// recompute their records: the shards keep only its hash.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) transfer_path: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) figures: FigureArgs,
 }

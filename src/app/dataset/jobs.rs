@@ -3,6 +3,7 @@
 
 use super::folder::{check_owner, copied_names, refused_names};
 use super::merge::{check_trajectories, merge_datasets, shared_key};
+use super::merge_verify::verify_inputs;
 use super::plan::{check_dataset, dataset_key, trajectory_problems};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::run::{refuse_planted_names, run_dataset};
@@ -236,25 +237,28 @@ pub fn load_design(
     })?;
     let (path, path_bytes) = match &design.transfer_path {
         Some(rel) => {
-            let p = d.folder.join(rel);
-            let shown = p.display().to_string();
-            let bytes =
-                read_input(&p, "transfer-path file", MAX_TRANSFER_PATH_BYTES).map_err(|e| {
-                    JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason))
-                })?;
-            let path =
-                parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
-                    JobError::Input(
-                        m.into_iter()
-                            .map(|m| Problem::of(Arg::TransferPath, m))
-                            .collect(),
-                    )
-                })?;
+            let (path, bytes) = read_transfer_path(&d.folder.join(rel))?;
             (Some(path), bytes)
         }
         None => (None, Vec::new()),
     };
     Ok((design, path, path_bytes))
+}
+
+/// A transfer-path file read and parsed as a dataset job reads it, with its bytes (part
+/// of the dataset key).
+fn read_transfer_path(p: &Path) -> Result<(TransferPath, Vec<u8>), JobError> {
+    let shown = p.display().to_string();
+    let bytes = read_input(p, "transfer-path file", MAX_TRANSFER_PATH_BYTES)
+        .map_err(|e| JobError::input(Problem::given(Arg::TransferPath, &shown, e.reason)))?;
+    let path = parse_transfer_path(&String::from_utf8_lossy(&bytes), &shown).map_err(|m| {
+        JobError::Input(
+            m.into_iter()
+                .map(|m| Problem::of(Arg::TransferPath, m))
+                .collect(),
+        )
+    })?;
+    Ok((path, bytes))
 }
 
 /// See the module docs.
@@ -266,6 +270,10 @@ pub struct DatasetMergeJob {
     pub replace: bool,
     /// The formats and size of the merged dataset's figure, checked when the job starts.
     pub figures: FigureRequest,
+    /// The transfer-path file the shards' design was made with (its records are
+    /// recomputed through it; the description keeps only its hash), as the design's
+    /// `transfer_path` names it for `dataset`; `None` when the design uses none.
+    pub transfer_path: Option<PathBuf>,
 }
 
 impl Job for DatasetMergeJob {
@@ -286,6 +294,18 @@ impl Job for DatasetMergeJob {
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
         check_trajectories(&inputs, &shared.0)?;
+        // Every shard's description and a sample of its records recomputed bit for bit,
+        // as a resume verifies what it reuses (issue 33: forged labels were merged).
+        let given = self
+            .transfer_path
+            .as_deref()
+            .map(|p| read_transfer_path(p).map(|(t, b)| (p, t, b)))
+            .transpose()?;
+        verify_inputs(
+            &inputs,
+            &shared.0,
+            given.as_ref().map(|(p, t, b)| (*p, t, b.as_slice())),
+        )?;
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         // Links, FIFOs and foreign files at the names the merge copies to: refused before
         // the folder is opened, as a dataset run refuses them (issue 33).

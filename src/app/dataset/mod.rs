@@ -18,6 +18,7 @@ pub mod claim;
 pub mod folder;
 pub mod jobs;
 pub mod merge;
+pub mod merge_verify;
 pub mod plan;
 pub mod request;
 pub mod run;

@@ -10,7 +10,7 @@ use super::folder::{
 use super::plan::{dataset_key, description, Checked};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::state_files::{state_files, StateJob};
-use super::verify::{kept_file_problem, os_seed, verify_states};
+use super::verify::{kept_file_problem, os_seed, verify_states, Kept};
 use crate::app::observer::{Observer, Task};
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
@@ -82,7 +82,7 @@ pub fn run_dataset(
         .into_iter()
         .map(|k| shard_first + k * shard_step)
         .collect();
-    let problems = verify_states(&job, root, &sample);
+    let problems = verify_states(&job, root, &sample, Kept::WholeStates);
     if !problems.is_empty() {
         return Err(DatasetError::Input(problems));
     }

@@ -11,7 +11,7 @@ use super::folder::{
 };
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
-use super::state_files::{state_files, StateJob};
+use super::state_files::{state_files, RecordFiles, StateJob};
 use crate::checksum::sha256_hex;
 use crate::study::dataset::plan::plan_of;
 use crate::study::dataset::verify::{states_to_recompute, verify_trajectory};
@@ -38,50 +38,147 @@ pub(super) fn kept_file_problem(root: &Path, rel: &str, what: &str) -> DatasetEr
     )])
 }
 
-/// Recompute the records of each physical state in `states` whose records are all
-/// finished in `root` and compare them with the files byte for byte (signal, CSV when
-/// the design writes it, sidecar with labels and indicators); unfinished states are
-/// left to the run. One message per record that differs or fails to recompute.
-pub(super) fn verify_states(job: &StateJob, root: &Path, states: &[usize]) -> Vec<String> {
+/// Which kept records of a sampled state [`verify_states`] compares, and what its
+/// message advises.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Kept {
+    /// A resume: a state whose records are all finished (an unfinished state is
+    /// recomputed whole by the run); delete the record to recompute it.
+    WholeStates,
+    /// A merge's input: every finished record of the state (each is copied); the shard
+    /// is refused.
+    Finished,
+}
+
+/// Recompute the records of each physical state in `states` that `kept` selects in
+/// `root` and compare them with the files byte for byte (signal, CSV when the design
+/// writes it, sidecar with labels and indicators, its first differing field named). One
+/// message per record that differs or fails to recompute.
+pub(super) fn verify_states(
+    job: &StateJob,
+    root: &Path,
+    states: &[usize],
+    kept: Kept,
+) -> Vec<String> {
     states
         .par_iter()
         .flat_map_iter(|&p| {
             let ids: Vec<usize> = (0..job.plan.realisations)
                 .map(|r| job.plan.record_id(p, r))
+                .filter(|id| finished(root, *id, job.key).is_some())
                 .collect();
-            if !ids.iter().all(|id| finished(root, *id, job.key).is_some()) {
+            if ids.is_empty() || (kept == Kept::WholeStates && ids.len() < job.plan.realisations) {
                 return Vec::new();
             }
             let mut problems = Vec::new();
             let r = state_files(job, p, &mut |f| {
-                let differs = |rel: &str, bytes: &[u8]| read_in(root, rel).as_deref() != Some(bytes);
-                let what = if differs(&f.signal_rel, &f.signal) {
-                    Some(("signal", f.signal_rel.clone()))
-                } else if f.csv.as_ref().is_some_and(|c| differs(&csv_rel(f.id), c)) {
-                    Some(("CSV", csv_rel(f.id)))
-                } else if differs(&sidecar_rel(f.id), &f.sidecar) {
-                    Some(("labels or indicators", sidecar_rel(f.id)))
-                } else {
-                    None
-                };
-                if let Some((what, rel)) = what {
+                if !ids.contains(&f.id) {
+                    return Ok(());
+                }
+                if let Some((what, rel)) = record_difference(root, &f) {
+                    let advice = match kept {
+                        Kept::WholeStates => format!(
+                            "the record was edited or is not this design's (delete {} to recompute it)",
+                            root.join(sidecar_rel(f.id)).display()
+                        ),
+                        Kept::Finished => {
+                            "the record was edited or is not its design's: a damaged or edited shard, not merged".to_owned()
+                        }
+                    };
                     problems.push(format!(
-                        "{}: record {} recomputed from the design has another {what}: the record was edited or is not this design's (delete {} to recompute it)",
+                        "{}: record {} recomputed from the design has another {what}: {advice}",
                         root.join(&rel).display(),
                         f.id,
-                        root.join(sidecar_rel(f.id)).display()
                     ));
                 }
                 Ok(())
             });
             if let Err(e) = r {
                 problems.push(format!(
-                    "physical state {p}: its finished records cannot be recomputed ({e:#}): they are not this design's"
+                    "{}: physical state {p}: its finished records cannot be recomputed ({e:#}): they are not this design's",
+                    root.display()
                 ));
             }
             problems
         })
         .collect()
+}
+
+/// What of the record `f` recomputed differs from its files in `root` (what, and the
+/// file), `None` when every file is the same byte for byte.
+fn record_difference(root: &Path, f: &RecordFiles) -> Option<(String, String)> {
+    let kept = |rel: &str| read_in(root, rel);
+    if kept(&f.signal_rel).as_deref() != Some(&f.signal[..]) {
+        return Some(("signal".into(), f.signal_rel.clone()));
+    }
+    if let Some(c) = &f.csv {
+        if kept(&csv_rel(f.id)).as_deref() != Some(&c[..]) {
+            return Some(("CSV".into(), csv_rel(f.id)));
+        }
+    }
+    let rel = sidecar_rel(f.id);
+    let file = kept(&rel)?;
+    if file == f.sidecar {
+        return None;
+    }
+    let parse = |b: &[u8]| serde_json::from_slice::<serde_json::Value>(b).ok();
+    let what = match (parse(&file), parse(&f.sidecar)) {
+        (Some(a), Some(b)) => first_difference(&a, &b, "")
+            .map(|(at, a, b)| format!("`{at}` ({a} in the file, {b} recomputed)")),
+        _ => None,
+    };
+    Some((
+        what.map_or_else(
+            || "sidecar".to_owned(),
+            |w| format!("label or indicator {w}"),
+        ),
+        rel,
+    ))
+}
+
+/// The first field (dotted path from `at`) where `a` and `b` differ, with both values.
+fn first_difference(
+    a: &serde_json::Value,
+    b: &serde_json::Value,
+    at: &str,
+) -> Option<(String, String, String)> {
+    use serde_json::Value;
+    let join = |k: &str| {
+        if at.is_empty() {
+            k.to_owned()
+        } else {
+            format!("{at}.{k}")
+        }
+    };
+    match (a, b) {
+        (Value::Object(x), Value::Object(y)) => x
+            .iter()
+            .find_map(|(k, v)| match y.get(k) {
+                Some(w) => first_difference(v, w, &join(k)),
+                None => Some((join(k), v.to_string(), "absent".into())),
+            })
+            .or_else(|| {
+                y.iter()
+                    .find(|(k, _)| !x.contains_key(*k))
+                    .map(|(k, w)| (join(k), "absent".into(), w.to_string()))
+            }),
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => x
+            .iter()
+            .zip(y)
+            .enumerate()
+            .find_map(|(i, (v, w))| first_difference(v, w, &join(&i.to_string()))),
+        _ if a == b => None,
+        _ => Some((at.to_owned(), shorten(a), shorten(b))),
+    }
+}
+
+/// A JSON value for a message, cut at 60 characters.
+fn shorten(v: &serde_json::Value) -> String {
+    let s = v.to_string();
+    match s.char_indices().nth(60) {
+        Some((i, _)) => format!("{}...", &s[..i]),
+        None => s,
+    }
 }
 
 /// What [`verify_dataset`] checked and found.
@@ -179,7 +276,11 @@ pub fn verify_dataset(
         .into_iter()
         .filter(|p| trajectories.contains_key(&plan.state_index(*p).condition))
         .collect();
-    v.problems
-        .extend(verify_states(&job, root, &v.states_recomputed));
+    v.problems.extend(verify_states(
+        &job,
+        root,
+        &v.states_recomputed,
+        Kept::WholeStates,
+    ));
     Ok(v)
 }

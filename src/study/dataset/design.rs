@@ -73,12 +73,78 @@ pub fn parse_design(
 ) -> Result<DatasetDesign, DesignErrors> {
     let f: DesignFile =
         toml::from_str(text).map_err(|e| vec![format!("{name}: {}", type_error(&e, text))])?;
-    let key = |k: &str| format!("{name}: `{k}`");
     let (base, base_case) = base_case(&f, name, read)?;
+    let defaults = Defaults {
+        max_cycles: base_case.wear.total_cycles,
+        speed_hz: base_case.operating.input_speed_hz,
+        torque_nm: base_case.operating.load_torque_nm,
+    };
+    let case_of = |c: &ConditionFile| {
+        let mut t = base.clone();
+        merge(&mut t, &c.case);
+        let text = toml::to_string(&t).unwrap_or_default();
+        load_case(&text, &f.set).map_err(|e| e.problems.iter().map(ToString::to_string).collect())
+    };
+    build(&f, text, name, defaults, &case_of)
+}
+
+/// What a design takes from its base case when it does not say: the longest trajectory
+/// (`wear.total_cycles`) and the one speed and load of its operating axes.
+#[derive(Debug, Clone, Copy)]
+pub struct Defaults {
+    pub max_cycles: f64,
+    pub speed_hz: f64,
+    pub torque_nm: f64,
+}
+
+/// A design rebuilt from what a dataset's description keeps (a merge recomputes a shard's
+/// records from it, docs/RELIABILITY.md "Datasets"): its `text`, each condition's case as
+/// the description gives it (`cases`, the TOML of the case the design resolved, in the
+/// conditions' order) and the `defaults` its base case gave (the description's axes; the
+/// base case file itself is not kept). Checked as [`parse_design`] checks a design.
+pub fn design_of_cases(
+    text: &str,
+    name: &str,
+    cases: &[String],
+    defaults: Defaults,
+) -> Result<DatasetDesign, DesignErrors> {
+    let f: DesignFile =
+        toml::from_str(text).map_err(|e| vec![format!("{name}: {}", type_error(&e, text))])?;
+    let n = f.condition.len().max(1);
+    if cases.len() != n {
+        return Err(vec![format!(
+            "{name}: {} cases kept for {n} conditions",
+            cases.len()
+        )]);
+    }
+    let case_of = |c: &ConditionFile| {
+        let i = if f.condition.is_empty() {
+            0
+        } else {
+            f.condition
+                .iter()
+                .position(|o| o.name == c.name)
+                .unwrap_or(0)
+        };
+        load_case(&cases[i], &[]).map_err(|e| e.problems.iter().map(ToString::to_string).collect())
+    };
+    build(&f, text, name, defaults, &case_of)
+}
+
+/// A design's checks and axes (`defaults` where it does not say), each condition's case
+/// given by `case_of`.
+fn build(
+    f: &DesignFile,
+    text: &str,
+    name: &str,
+    defaults: Defaults,
+    case_of: &dyn Fn(&ConditionFile) -> Result<Case, Vec<String>>,
+) -> Result<DatasetDesign, DesignErrors> {
+    let key = |k: &str| format!("{name}: `{k}`");
     let mut p = Vec::new();
     let r = &f.run_to_failure;
     let states = state_choice(r, &key, &mut p);
-    let max_cycles = r.max_cycles.unwrap_or(base_case.wear.total_cycles);
+    let max_cycles = r.max_cycles.unwrap_or(defaults.max_cycles);
     let wear_limit_um = r.wear_limit_um.unwrap_or(10.0);
     p.extend(run_to_failure_problems(
         &states,
@@ -89,20 +155,20 @@ pub fn parse_design(
     let speeds_hz = axis(
         &key("operating.input_speed_hz"),
         &f.operating.input_speed_hz,
-        base_case.operating.input_speed_hz,
+        defaults.speed_hz,
         (1e-6, 1000.0),
         &mut p,
     );
     let torques_nm = axis(
         &key("operating.load_torque_nm"),
         &f.operating.load_torque_nm,
-        base_case.operating.load_torque_nm,
+        defaults.torque_nm,
         (1e-3, 1e7),
         &mut p,
     );
     let rec = &f.records;
     p.extend(records_problems(rec, &key));
-    let conditions = conditions(&f, &base, name, &mut p);
+    let conditions = conditions(f, case_of, name, &mut p);
     let states_n = match &states {
         StateChoice::Count(n) => *n,
         StateChoice::Cycles(c) => c.len(),
@@ -130,7 +196,7 @@ pub fn parse_design(
     }
     Ok(DatasetDesign {
         seed: f.seed,
-        transfer_path: f.transfer_path.map(Into::into),
+        transfer_path: f.transfer_path.clone().map(Into::into),
         states,
         max_cycles,
         wear_limit_um,
@@ -271,10 +337,15 @@ fn axis(
 }
 
 /// The conditions (one healthy condition when the design gives none), each its name
-/// checked and its case merged into `base` and loaded with the design's `set`; their
-/// problems pushed to `p`. Compared with each other (healthy against faulty), they share
-/// one load-sharing law.
-fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> Vec<Condition> {
+/// checked and its case given by `case_of` (a design file's: merged into the base case
+/// and loaded with the design's `set`); their problems pushed to `p`. Compared with each
+/// other (healthy against faulty), they share one load-sharing law.
+fn conditions(
+    f: &DesignFile,
+    case_of: &dyn Fn(&ConditionFile) -> Result<Case, Vec<String>>,
+    name: &str,
+    p: &mut Vec<String>,
+) -> Vec<Condition> {
     let mut conditions = Vec::new();
     let files = if f.condition.is_empty() {
         vec![ConditionFile {
@@ -301,10 +372,7 @@ fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> 
         if files[..i].iter().any(|o| o.name == c.name) {
             p.push(format!("{at}: `name` is used twice"));
         }
-        let mut t = base.clone();
-        merge(&mut t, &c.case);
-        let text = toml::to_string(&t).unwrap_or_default();
-        match load_case(&text, &f.set) {
+        match case_of(c) {
             Ok(case) => {
                 let label = fault_label(&case);
                 p.extend(label_problems(c, &label, &at));
@@ -316,7 +384,7 @@ fn conditions(f: &DesignFile, base: &Table, name: &str, p: &mut Vec<String>) -> 
                     case,
                 })
             }
-            Err(e) => p.extend(e.problems.iter().map(|m| format!("{at}: {m}"))),
+            Err(e) => p.extend(e.iter().map(|m| format!("{at}: {m}"))),
         }
     }
     p.extend(chain_problems(&conditions, name));
@@ -409,6 +477,44 @@ roughness_table_rms_um = [0.42, 0.38, 0.30]
             d.conditions[0].case.contact.load_sharing,
             LoadSharingModel::Auto
         );
+    }
+
+    #[test]
+    fn a_design_rebuilt_from_its_resolved_cases_is_the_design() {
+        // A merge rebuilds a shard's design from its description (the base case file is
+        // not kept): the design text, each condition's case as TOML, and the defaults
+        // the base case gave. The rebuilt design must be the parsed one, field by field.
+        let text = "case = \"base.toml\"\nset = [\"signals.snr_db=25\"]\n[run_to_failure]\nstates = 2\n[[condition]]\nname = \"healthy\"\n[[condition]]\nname = \"rough\"\n[condition.case.surface]\nroughness_table_rms_um = [0.42, 0.38, 0.30]\n";
+        let base =
+            |_: &str| Ok("[operating]\nload_torque_nm = 50\ninput_speed_hz = 25\n".to_owned());
+        let d = parse_design(text, "d.toml", &base).unwrap();
+        let cases: Vec<String> = d
+            .conditions
+            .iter()
+            .map(|c| toml::to_string(&c.case).unwrap())
+            .collect();
+        let defaults = Defaults {
+            max_cycles: d.max_cycles,
+            speed_hz: d.speeds_hz[0],
+            torque_nm: d.torques_nm[0],
+        };
+        let again = design_of_cases(text, "d.toml", &cases, defaults).unwrap();
+        assert_eq!(again.torques_nm, vec![50.0]);
+        assert_eq!(again.speeds_hz, vec![25.0]);
+        assert_eq!(again.max_cycles, d.max_cycles);
+        for (a, b) in again.conditions.iter().zip(&d.conditions) {
+            assert_eq!(
+                toml::to_string(&a.case).unwrap(),
+                toml::to_string(&b.case).unwrap()
+            );
+            assert_eq!(
+                (&a.name, &a.fault, a.severity),
+                (&b.name, &b.fault, b.severity)
+            );
+        }
+        // A case list of another length is refused, naming the count.
+        let e = design_of_cases(text, "d.toml", &cases[..1], defaults).unwrap_err();
+        assert!(e[0].contains("1 cases kept for 2 conditions"), "{e:?}");
     }
 
     #[test]
