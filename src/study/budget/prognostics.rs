@@ -513,39 +513,27 @@ mod tests {
         // A future spectrum of 2000 bins from the start: every update of every wear run
         // evaluates each bin, so the runs' term is 2000 times the one-bin duty's (issue 33:
         // 200 bins were estimated at 1 s and ran 58.6 s; 2000 ran past 150 s).
-        let many = estimate_prediction(
-            &case,
-            &prior,
-            &PredictionJob {
-                future_bins: 2000,
-                ..j
-            },
-        );
+        let future = |bins: usize, from: f64| {
+            estimate_prediction(
+                &case,
+                &prior,
+                &PredictionJob {
+                    future_bins: bins,
+                    future_from_cycles: from,
+                    ..j
+                },
+            )
+        };
+        let many = future(2000, 0.0);
         assert_eq!(many.terms[0].seconds, 2000.0 * one.terms[0].seconds);
         assert!(many.check(&Budget::DEFAULT).is_err());
         // A switch at or past every run's horizon (the node ratio of a four-decade prior is
         // 10^(4/16) < 2) leaves the duty unchanged: the runs cost the one-bin duty's.
-        let late = estimate_prediction(
-            &case,
-            &prior,
-            &PredictionJob {
-                future_bins: 2000,
-                future_from_cycles: 2.0 * j.cycles,
-                ..j
-            },
-        );
+        let late = future(2000, 2.0 * j.cycles);
         assert_eq!(late.terms[0].seconds, one.terms[0].seconds);
         assert_eq!(late.terms[0].bytes, one.terms[0].bytes);
         // A switch half-way costs between the two duties, more than one bin, less than all.
-        let half = estimate_prediction(
-            &case,
-            &prior,
-            &PredictionJob {
-                future_bins: 2000,
-                future_from_cycles: 0.5 * j.cycles,
-                ..j
-            },
-        );
+        let half = future(2000, 0.5 * j.cycles);
         assert!(half.terms[0].seconds > one.terms[0].seconds);
         assert!(half.terms[0].seconds < many.terms[0].seconds);
         assert!(estimate_merge(1 << 20, 10_000_000, 10_000)
