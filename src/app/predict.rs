@@ -292,6 +292,7 @@ impl PredictJob {
                     SampleSource::Prior(_) => 0,
                 },
                 future_bins: future.map_or(0, |f| f.spectrum.bins.len()),
+                future_from_cycles: future.map_or(0.0, |f| f.from_cycles),
             },
         );
         budget::check_estimate(&e, self.budget.as_ref())

@@ -3,16 +3,20 @@
 
 use super::case_jobs::{estimate, Job};
 use super::cost::{Estimate, Term, BASE_BYTES};
-use super::signals::{BYTES_PER_SAMPLE_CHANNEL, SECONDS_PER_SAMPLE_CHANNEL};
+use super::evaluation::SLOWER_MACHINE_FACTOR;
+use super::signals::BYTES_PER_SAMPLE_CHANNEL;
 use crate::study::dataset::plan::{plan_of, Shard};
 use crate::study::dataset::DatasetDesign;
 
-/// Seconds per record sample besides its channels (tachometer, noise, files), as for
-/// `signals` (`super::signals`).
-const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
-/// Bytes per record sample besides its channels: the clean and the noisy record and their
-/// analysis, as a steady `signals` record (`super::signals`).
-const BYTES_PER_RECORD_SAMPLE: f64 = 400.0;
+/// CPU seconds per record sample of a dataset, besides its channels (tachometer, noise,
+/// files; no figures nor analysis of `signals`), and per sample and channel: measured
+/// 1.25 us a sample with 2 channels (4 records of 0.25 s and of 8 s at 25.6 kHz, the
+/// built-in case: 0.11 s and 1.10 s, 2026-11-29 at load 5) and 0.38 us more per further
+/// channel (4 records of 0.5 s with 20 channels: 0.49 s, docs/RELIABILITY.md), so 0.5 us
+/// and 0.4 us, times [`SLOWER_MACHINE_FACTOR`]. (They were `signals`' 3 us and 4 us: a
+/// dataset's record costs less than a `signals` record, issue 33.)
+const SECONDS_PER_RECORD_SAMPLE: f64 = 0.5e-6 * SLOWER_MACHINE_FACTOR;
+const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.4e-6 * SLOWER_MACHINE_FACTOR;
 
 /// The size of the dataset's longest record: its samples (record length x sampling rate,
 /// at the slowest speed for a length in revolutions) and its accelerometer channels.
@@ -27,8 +31,8 @@ pub struct RecordSize {
 /// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear
 /// limit), each physical state of the shard one dynamic evaluation at its speed and load
 /// (the costliest of the lowest and highest speed and load of its condition), and each of
-/// its records (noise, analysis, files) its samples x (a base + its channels) at the rates
-/// measured for `signals`. Memory: the costliest single study, or the longest record, on
+/// its records (noise, files) its samples x (a base + its channels) at the rates
+/// measured for datasets. Memory: the costliest single study, or the longest record, on
 /// each of `threads` threads. Counts are floats (never wrap: the record count of a design
 /// is bounded when it is read).
 pub fn estimate_dataset(
@@ -41,7 +45,13 @@ pub fn estimate_dataset(
     let states = plan.shard_state_count(shard) as f64;
     let records = states * plan.realisations as f64;
     let per_sample_s = SECONDS_PER_RECORD_SAMPLE + record.channels * SECONDS_PER_SAMPLE_CHANNEL;
-    let per_sample_b = BYTES_PER_RECORD_SAMPLE + record.channels * BYTES_PER_SAMPLE_CHANNEL;
+    // A record held on each thread: its channels (clean and noisy, in the writer's
+    // buffers), measured 98 bytes a sample in all with 2 channels on 2 threads (the peak
+    // of 4 records of 8 s against 0.25 s at 25.6 kHz: 37.7 MB against 18.3 MB) and 65 more
+    // per further channel (20 channels: 34 MB against 19 MB), within `signals`' 64 bytes a
+    // sample and channel on each thread. (It also counted `signals`' 400 bytes a sample of
+    // analysis a dataset does not make: 10 times the measured slope, issue 33.)
+    let per_sample_b = record.channels * BYTES_PER_SAMPLE_CHANNEL;
     let ends = |v: &[f64]| {
         let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);

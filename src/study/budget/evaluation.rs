@@ -8,6 +8,10 @@ use crate::config::case::{Case, NumericsSection};
 use crate::geometry::GearPair;
 use crate::study::domain::nominal_contacts;
 
+/// How much slower than the machine a rate was measured on a run may be (another
+/// processor, or a core shared under load): the rates measured for issue 33 (per record
+/// sample, per channel) are multiplied by it, a stated factor rather than a rounding.
+pub const SLOWER_MACHINE_FACTOR: f64 = 2.0;
 /// Integrator step on the reference machine, s.
 pub const SECONDS_PER_STEP: f64 = 3e-6;
 /// Quasi-static equilibria for one step of the grid (two per step), s.

@@ -308,6 +308,8 @@ pub struct PredictionJob {
     pub posterior_rows: usize,
     /// Bins of the future load spectrum (0 without a change of duty).
     pub future_bins: usize,
+    /// Cycles from which the future spectrum applies (`--future-from-cycles`).
+    pub future_from_cycles: f64,
 }
 
 /// The estimated cost of `predict` over the parameter span `span` (see the module docs).
@@ -330,9 +332,10 @@ pub fn estimate_prediction(
     } else {
         surrogate_terms(case, span, j.cycles)
     };
-    // Under a load spectrum every update of a wear run evaluates every bin: the runs cost
-    // the bins of the costlier duty (the case's spectrum, or the future one) times one.
-    let bins = duty_bins(case, j.future_bins);
+    // Under a load spectrum every update of a wear run evaluates every bin and keeps
+    // every bin's record while the run lasts: the runs cost the bins of the duty in force
+    // (the case's spectrum before the switch, the future one after it) times one.
+    let bins = duty_bins(case, span, j);
     for t in &mut terms {
         t.seconds *= bins;
         t.bytes *= bins;
@@ -366,11 +369,40 @@ pub fn estimate_prediction(
     Estimate::of_terms(terms)
 }
 
-/// Bins a wear run of `case` evaluates at each update: those of its load spectrum or of a
-/// future spectrum of `future_bins`, whichever has more (1 without a spectrum).
-fn duty_bins(case: &Case, future_bins: usize) -> f64 {
-    let own = case.load_spectrum.as_ref().map_or(1, |s| s.bins.len());
-    own.max(future_bins).max(1) as f64
+/// Bins a wear run of `case` evaluates at each update, averaged over its updates: those
+/// of its load spectrum (1 without one) before `future_from_cycles`, those of the future
+/// spectrum after, weighted by the share s of the run before the switch (a wear update
+/// costs its bins' evaluations, one evaluation per bin: measured 4.1 s + 1.2 s of CPU a
+/// further bin, 1 to 20 bins from 1e4 of 2e4 cycles, issue 33). The surrogate's runs
+/// under a change of duty go to at most the horizon times the ratio of neighbouring
+/// nodes, max(2^(1/4), (k_hi / k_lo)^(1/16)) (`prognostics::surrogate::future_node_ratio`),
+/// so s = from / (cycles x that ratio), the smaller share before the switch. Without a
+/// future spectrum, or one with fewer bins, the case's own bins throughout.
+fn duty_bins(case: &Case, span: &ParameterSpan, j: &PredictionJob) -> f64 {
+    let own = case
+        .load_spectrum
+        .as_ref()
+        .map_or(1, |s| s.bins.len())
+        .max(1) as f64;
+    let future = j.future_bins as f64;
+    if future <= own {
+        return own;
+    }
+    let (lo, hi) = (
+        span.wear_coefficient_min_m2_per_n,
+        span.wear_coefficient_max_m2_per_n,
+    );
+    let ratio = if hi > lo && lo > 0.0 {
+        2f64.powf(0.25).max((hi / lo).powf(1.0 / 16.0))
+    } else {
+        1.0
+    };
+    let before = if j.cycles > 0.0 && ratio.is_finite() {
+        (j.future_from_cycles / (j.cycles * ratio)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    before * own + (1.0 - before) * future
 }
 
 /// The estimated cost of `predict-merge` of shard files of `bytes` in all, for an ensemble
@@ -464,6 +496,7 @@ mod tests {
             check_runs: 3,
             posterior_rows: 1_000_000,
             future_bins: 0,
+            future_from_cycles: 0.0,
         };
         let e = estimate_prediction(&case, &prior, &j)
             .check(&Budget::DEFAULT)
@@ -477,19 +510,32 @@ mod tests {
         };
         let one = estimate_prediction(&case, &prior, &j);
         one.check(&Budget::DEFAULT).unwrap();
-        // A future spectrum of 2000 bins: every update of every wear run evaluates each
-        // bin, so the runs' term is 2000 times the one-bin duty's (issue 33: 200 bins were
-        // estimated at 1 s and ran 58.6 s; 2000 ran past 150 s).
-        let many = estimate_prediction(
-            &case,
-            &prior,
-            &PredictionJob {
-                future_bins: 2000,
-                ..j
-            },
-        );
+        // A future spectrum of 2000 bins from the start: every update of every wear run
+        // evaluates each bin, so the runs' term is 2000 times the one-bin duty's (issue 33:
+        // 200 bins were estimated at 1 s and ran 58.6 s; 2000 ran past 150 s).
+        let future = |bins: usize, from: f64| {
+            estimate_prediction(
+                &case,
+                &prior,
+                &PredictionJob {
+                    future_bins: bins,
+                    future_from_cycles: from,
+                    ..j
+                },
+            )
+        };
+        let many = future(2000, 0.0);
         assert_eq!(many.terms[0].seconds, 2000.0 * one.terms[0].seconds);
         assert!(many.check(&Budget::DEFAULT).is_err());
+        // A switch at or past every run's horizon (the node ratio of a four-decade prior is
+        // 10^(4/16) < 2) leaves the duty unchanged: the runs cost the one-bin duty's.
+        let late = future(2000, 2.0 * j.cycles);
+        assert_eq!(late.terms[0].seconds, one.terms[0].seconds);
+        assert_eq!(late.terms[0].bytes, one.terms[0].bytes);
+        // A switch half-way costs between the two duties, more than one bin, less than all.
+        let half = future(2000, 0.5 * j.cycles);
+        assert!(half.terms[0].seconds > one.terms[0].seconds);
+        assert!(half.terms[0].seconds < many.terms[0].seconds);
         assert!(estimate_merge(1 << 20, 10_000_000, 10_000)
             .check(&Budget::DEFAULT)
             .is_err());

@@ -3,7 +3,7 @@
 
 use super::case_jobs::{estimate, Job};
 use super::cost::{Estimate, Term};
-use super::evaluation::SECONDS_PER_STEP;
+use super::evaluation::{SECONDS_PER_STEP, SLOWER_MACHINE_FACTOR};
 use crate::config::Case;
 use crate::study::transient_signals::is_transient;
 
@@ -19,10 +19,14 @@ const BYTES_PER_SAMPLE_TRANSIENT: f64 = 3000.0;
 const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
 
 /// What each accelerometer channel adds per record sample (its rendering through the
-/// transfer path, filter, indicators, TSA and files): measured 3.3 us and 47 bytes per
-/// sample and channel (a 2 s record at 25.6 kHz with 1, 50 and 400 sensors of a modal path:
-/// 0.94 s / 31 MB, 9.5 s / 138 MB, 69 s / 994 MB), rounded up to 4 us and 64 bytes.
-pub const SECONDS_PER_SAMPLE_CHANNEL: f64 = 4e-6;
+/// transfer path, filter, indicators, TSA and files): measured 0.84-0.90 us of CPU time
+/// and 48-54 bytes per sample and channel (a 1 s record at 25.6 kHz through a modal path
+/// of 1 and of 100 sensors, `scripts/budget_table.sh`'s `path_N.toml`: 0.18 s / 23 MB
+/// against 2.32-2.47 s / 145-159 MB, two runs at load 5, 2026-11-29). Time: 0.9 us times
+/// [`SLOWER_MACHINE_FACTOR`]; memory does not depend on the machine: 64 bytes. (It was
+/// 4 us, from a measurement of 3.3 us under another load and an older build: 5.5 times
+/// the CPU time of 100 sensors, issue 33.)
+pub const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.9e-6 * SLOWER_MACHINE_FACTOR;
 pub const BYTES_PER_SAMPLE_CHANNEL: f64 = 64.0;
 
 /// The sensors a record has without a transfer-path file (the generic housing's two).

@@ -151,7 +151,10 @@ mod tests {
         let g5 = case(&["teeth.accuracy_grade=5"]);
         assert!(estimate(&g5, Job::Run).check(&Budget::DEFAULT).is_ok());
         let plain = estimate(&case(&[]), Job::Dynamics).memory_bytes();
-        assert!(estimate(&g5, Job::Dynamics).memory_bytes() > 50.0 * (plain - 64e6));
+        assert!(
+            estimate(&g5, Job::Dynamics).memory_bytes()
+                > 50.0 * (plain - crate::study::budget::cost::BASE_BYTES)
+        );
         let big = case(&[
             "teeth.accuracy_grade=5",
             "gear.teeth_pinion=97",
