@@ -239,7 +239,7 @@ fn a_merge_recomputes_through_the_transfer_path_file_it_is_given() {
         ],
     );
     let p = |s: &str| d.path().join(s).to_str().unwrap().to_owned();
-    refused_merge(d.path(), &[], &["--transfer-path", "path.toml"]);
+    refused_merge(d.path(), &[], &["as its transfer path", "path.toml"]);
     let other = p("other.toml");
     refused_merge(
         d.path(),

@@ -83,12 +83,12 @@ fn path_of<'a>(
     match (&d.transfer_path, given) {
         (None, None) => Ok((None, &[])),
         (None, Some((file, _, _))) => Err(format!(
-            "{}: its design uses no transfer-path file (the generic housing), yet --transfer-path {} was given: leave it out",
+            "{}: its design uses no transfer-path file (the generic housing), yet the merge was given the transfer path {}: leave it out",
             dir.display(),
             file.display()
         )),
         (Some(named), None) => Err(format!(
-            "{}: its design's records are made through the transfer-path file `{}` (SHA-256 {}...): give that file with --transfer-path to recompute them",
+            "{}: its design's records are made through the transfer-path file `{}` (SHA-256 {}...): give the merge that file as its transfer path to recompute them",
             dir.display(),
             named.display(),
             kept.chars().take(12).collect::<String>()
@@ -97,7 +97,7 @@ fn path_of<'a>(
             Ok((Some(path.clone()), bytes))
         }
         (Some(named), Some((file, _, bytes))) => Err(format!(
-            "{}: --transfer-path {} (SHA-256 {}...) is not the file `{}` its design was made with (SHA-256 {}...)",
+            "{}: the merge's transfer path {} (SHA-256 {}...) is not the file `{}` its design was made with (SHA-256 {}...)",
             dir.display(),
             file.display(),
             &sha256_hex(bytes)[..12],
