@@ -110,3 +110,25 @@ def test_dataset_design_given_wrongly_is_refused_by_name(tmp_path):
     with pytest.raises(gw.CaseError, match="unknown field `run_to_failur`"):
         gw.dataset({"run_to_failur": {"states": 2}}, tmp_path / "never")
     assert not (tmp_path / "never").exists()
+
+
+def test_dataset_merge_takes_the_transfer_path_its_design_was_made_with(tmp_path):
+    """A merge recomputes a sample of its inputs' records, so a design with a transfer-path
+    file needs that file (checked against the hash the shard keeps): refused without it,
+    nothing written; merged with it, to the input's own index."""
+    (tmp_path / "path.toml").write_text(
+        'sensors = ["a"]\n[[mode]]\nfrequency_hz = 2100\ndamping_ratio = 0.02\n'
+        "gains_per_kg = [[0.0075, 0.025, 0.005, 0.02]]\n"
+    )
+    design = tmp_path / "design.toml"
+    design.write_text(
+        'transfer_path = "path.toml"\nseed = 3\nset = ["signals.record_length=0.1"]\n'
+        "[run_to_failure]\nstates = 2\nmax_cycles = 1e4\nwear_limit_um = 10\n"
+        "[records]\nnoise_realisations = 1\n"
+    )
+    gw.dataset(design, tmp_path / "ds")
+    with pytest.raises(ValueError, match="as its transfer path"):
+        gw.dataset_merge([tmp_path / "ds"], tmp_path / "m1")
+    assert not (tmp_path / "m1").exists()
+    gw.dataset_merge([tmp_path / "ds"], tmp_path / "m2", transfer_path=tmp_path / "path.toml")
+    assert (tmp_path / "m2" / "index.csv").read_bytes() == (tmp_path / "ds" / "index.csv").read_bytes()
