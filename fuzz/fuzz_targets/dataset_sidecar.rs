@@ -17,7 +17,8 @@
 mod dataset_common;
 
 use dataset_common::{index_and_trends, real_descriptions, real_sidecars};
-use gearwear::app::dataset::folder::{matches_design, parse_sidecar, Sidecar};
+use gearwear::app::dataset::folder::{parse_sidecar, Sidecar};
+use gearwear::app::dataset::index_files::matches_design;
 use libfuzzer_sys::fuzz_target;
 
 /// The real sidecars of the dataset `body` describes, the one of `car`'s id replaced by

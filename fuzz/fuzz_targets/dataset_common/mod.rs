@@ -8,7 +8,8 @@
 //! pinion cycles [0, 1e4], speeds [25, 35] Hz, 2 noise realisations, CSV records, 0.05 s
 //! records on coarse grids (8 records).
 
-use gearwear::app::dataset::folder::{index_tables, parse_sidecar, Sidecar};
+use gearwear::app::dataset::folder::{parse_sidecar, Sidecar};
+use gearwear::app::dataset::index_files::index_tables;
 use gearwear::io::columns_csv::columns_csv;
 use gearwear::report::artifacts::Rendered;
 use gearwear::report::dataset_trends::trend_figure;

@@ -3,9 +3,10 @@
 //! built as an unsharded run builds them.
 
 use super::folder::{
-    copy_dataset, csv_rel, is_file_in, key_shown, read_in, sidecar_rel, sidecars,
-    stage_index_and_metadata, trajectories, trajectory_rel, DATASET_REL,
+    copy_dataset, csv_rel, is_file_in, key_shown, read_in, sidecar_rel, sidecars, trajectories,
+    trajectory_rel, DATASET_REL,
 };
+use super::index_files::stage_index_and_metadata;
 use super::plan::key_of_description;
 use super::request::{DatasetError, DatasetOutcome};
 use crate::io::OutputDir;

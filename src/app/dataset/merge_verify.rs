@@ -7,7 +7,8 @@
 //! (`study::dataset::verify::states_to_recompute`, the resume's rule) recomputed and
 //! compared with the shard's files bit for bit (signal, CSV, labels and indicators).
 
-use super::folder::{matches_design, read_in, sidecars, trajectories, DATASET_REL};
+use super::folder::{read_in, sidecars, trajectories, DATASET_REL};
+use super::index_files::matches_design;
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
 use super::state_files::StateJob;

@@ -16,6 +16,7 @@
 
 pub mod claim;
 pub mod folder;
+pub mod index_files;
 pub mod jobs;
 pub mod merge;
 pub mod merge_verify;

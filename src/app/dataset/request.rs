@@ -1,7 +1,7 @@
 //! What a dataset step is given (the request) and gives back (the outcome, or why it
 //! failed).
 
-use super::folder::Missing;
+use super::index_files::Missing;
 use crate::app::JobError;
 use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;

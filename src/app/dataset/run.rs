@@ -5,8 +5,9 @@
 use super::claim::claim_folder;
 use super::folder::{
     csv_rel, finished, is_file_in, make_folder, put, read_in, refused_names, sidecar_rel,
-    stage_index_and_metadata, trajectory_rel, Missing, TrajectoryFile, DATASET_REL,
+    trajectory_rel, TrajectoryFile, DATASET_REL,
 };
+use super::index_files::{stage_index_and_metadata, Missing};
 use super::plan::{dataset_key, description, Checked};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::state_files::{state_files, StateJob};

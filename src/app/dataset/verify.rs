@@ -6,9 +6,9 @@
 //! ([`verify_states`]); [`verify_dataset`] checks a whole folder.
 
 use super::folder::{
-    csv_rel, existing_key, finished, matches_design, read_in, sidecar_rel, sidecars,
-    trajectory_rel, TrajectoryFile,
+    csv_rel, existing_key, finished, read_in, sidecar_rel, sidecars, trajectory_rel, TrajectoryFile,
 };
+use super::index_files::matches_design;
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
 use super::state_files::{state_files, RecordFiles, StateJob};
