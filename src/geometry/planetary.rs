@@ -139,6 +139,18 @@ impl PlanetarySet {
         unit.map(|w| w * scale)
     }
 
+    /// The input member's torque per unit of the sun's, |T_input / T_s|, by the set's torque
+    /// split T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s) (Willis, with the planets'
+    /// torque balance; dimensionless).
+    pub fn input_torque_per_sun_torque(&self) -> f64 {
+        let zrs = self.teeth_ring() as f64 / self.teeth_sun() as f64;
+        match self.input {
+            Member::Sun => 1.0,
+            Member::Ring => zrs,
+            Member::Carrier => 1.0 + zrs,
+        }
+    }
+
     /// Speed ratio w_input / w_output (signed; negative when the output turns the other way).
     pub fn ratio(&self) -> f64 {
         let w = self.member_speeds(1.0);

@@ -67,13 +67,8 @@ pub fn shares(f: &[f64]) -> Vec<f64> {
 /// (T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s), Willis).
 pub fn nominal_mesh_force_n(d: &PlanetaryDynamics) -> f64 {
     let set = &d.study.set;
-    let zrs = set.teeth_ring() as f64 / set.teeth_sun() as f64;
-    let share = match set.input {
-        crate::config::planetary::Member::Sun => 1.0,
-        crate::config::planetary::Member::Ring => zrs,
-        crate::config::planetary::Member::Carrier => 1.0 + zrs,
-    };
-    (d.input_torque_nm / share).abs() / (set.planets() as f64 * d.model.params.radius_m[2])
+    (d.input_torque_nm / set.input_torque_per_sun_torque()).abs()
+        / (set.planets() as f64 * d.model.params.radius_m[2])
 }
 
 /// Everything `gearwear dynamics` writes for a planetary case.

@@ -5,7 +5,6 @@
 //! inertias), reported by [`ResolvedParameters`] and compared with what a case gives.
 
 use crate::config::case::{BodyValues, Case, DynamicsSection, FrictionModel};
-use crate::config::planetary::Member;
 use crate::contact::friction::Friction;
 use crate::contact::hertz::{effective_modulus_of, HertzContact};
 use crate::contact::kinematics::SurfaceKinematics;
@@ -79,12 +78,7 @@ pub const BODY_VALUE_FACTOR: f64 = 2.0;
 /// pair). The ring-planet mesh carries the same force on a concave flank, so a lower
 /// pressure: the sun mesh bounds the set.
 pub fn planetary_domain_problems(case: &Case, set: &PlanetarySet) -> Vec<String> {
-    let zrs = set.teeth_ring() as f64 / set.teeth_sun() as f64;
-    let share = match set.input {
-        Member::Sun => 1.0,
-        Member::Ring => zrs,
-        Member::Carrier => 1.0 + zrs,
-    };
+    let share = set.input_torque_per_sun_torque();
     let pair = &set.sun_planet;
     let torque = case.operating.load_torque_nm;
     let force = (torque / share).abs() / (set.planets() as f64 * pair.pinion.base_radius_m);
