@@ -50,16 +50,16 @@ impl Observations {
 
 /// Most data rows: a reading every 1000 cycles for 1e8 cycles. The likelihood sums over
 /// every row at every step of the sampler, so rows multiply the calibration's cost.
-pub(crate) const MAX_ROWS: usize = 100_000;
+pub const MAX_ROWS: usize = 100_000;
 /// Largest cycle count of an observation: the range of `wear.total_cycles`.
-pub(crate) const MAX_CYCLES: f64 = 1e11;
+pub const MAX_CYCLES: f64 = 1e11;
 /// Largest magnitude of an observed value in its display unit (um, mm/s): a metre of
 /// wear or of transmission error, a kilometre per second; no gearbox comes near.
-pub(crate) const MAX_VALUE: f64 = 1e6;
+pub const MAX_VALUE: f64 = 1e6;
 /// Range of a given noise standard deviation, display units: below 1e-9 the noise is
 /// under the model's own floating-point resolution and any model error makes the
 /// likelihood underflow to zero; above 1e6 it is not a measurement.
-pub(crate) const SIGMA_RANGE: (f64, f64) = (1e-9, 1e6);
+pub const SIGMA_RANGE: (f64, f64) = (1e-9, 1e6);
 
 /// Fewest values of a quantity whose noise is inferred: with one value the marginal
 /// likelihood 1/|residual| has no scale to learn from (docs/PROGNOSTICS.md).
@@ -99,7 +99,7 @@ struct Columns {
 
 /// Parse the observations CSV. `source` names the file in messages. Returns every
 /// problem found.
-pub(crate) fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
+pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());

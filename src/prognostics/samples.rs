@@ -5,20 +5,16 @@ use super::prior::{Parameter, Theta, PARAMETERS};
 
 /// Most rows of a samples file: `calibrate` writes at most 1e6
 /// (`limits::CALIBRATE_SAMPLES`).
-pub(crate) const MAX_ROWS: usize = 1_000_000;
+pub const MAX_ROWS: usize = 1_000_000;
 
 /// The valid range of each parameter, as the case's keys: k as `wear.coefficient_m2_per_n`
 /// and the prior's bounds (1e-22 to 1e-11 m^2/N), the roughness factor as the prior's
 /// (0.01 to 10), the torque as `operating.load_torque_nm` (1e-3 to 1e7 N m).
-pub(crate) const RANGES: [(f64, f64); 3] = [(1e-22, 1e-11), (0.01, 10.0), (1e-3, 1e7)];
+pub const RANGES: [(f64, f64); 3] = [(1e-22, 1e-11), (0.01, 10.0), (1e-3, 1e7)];
 
 /// Read a samples CSV. Parameters without a column take `defaults`. Errors name the row
 /// and column.
-pub(crate) fn read_samples(
-    text: &str,
-    source: &str,
-    defaults: Theta,
-) -> Result<Vec<Theta>, Vec<String>> {
+pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<Theta>, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());

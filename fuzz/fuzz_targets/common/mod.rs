@@ -42,15 +42,17 @@ pub fn check_case(case_text: &str, sets: &[String]) {
         assert!(v.value.is_finite() && v.value > 0.0, "{v:?}");
     }
     let r = model.quasi_static(&WearState::new(model.grid.len()), &ExternalError::none());
-    assert!(r.mean_mesh_force_n.is_finite() && r.mean_mesh_force_n > 0.0);
-    assert!(r.mean_dte_m.is_finite());
-    for x in r.signals.dte_m.iter().chain(&r.signals.mesh_force_n) {
-        assert!(x.is_finite(), "non-finite quasi-static signal");
-    }
-    for p in &r.path {
-        assert!(
-            p.load_n.is_finite() && p.pressure_pa.is_finite() && p.friction_n.is_finite(),
-            "non-finite path sample {p:?}"
-        );
+    for (mesh, signals) in r.meshes.iter().zip(&r.signals.meshes) {
+        assert!(mesh.mean_mesh_force_n.is_finite() && mesh.mean_mesh_force_n > 0.0);
+        assert!(mesh.mean_dte_m.is_finite());
+        for x in signals.dte_m.iter().chain(&signals.mesh_force_n) {
+            assert!(x.is_finite(), "non-finite quasi-static signal");
+        }
+        for p in &mesh.path {
+            assert!(
+                p.load_n.is_finite() && p.pressure_pa.is_finite() && p.friction_n.is_finite(),
+                "non-finite path sample {p:?}"
+            );
+        }
     }
 }
