@@ -152,3 +152,33 @@ fn sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
     );
     assert!(!err.contains("budget"), "{err}");
 }
+
+#[test]
+fn a_helical_angle_on_a_train_says_the_stages_are_spur() {
+    // `[gear]` is stage 1 of a train: a helix angle there has no train model yet, and the
+    // message must not send the user to the studies that take a helical pair alone.
+    let dir = tempfile::tempdir().unwrap();
+    let file = case_file(
+        &dir,
+        &format!("[gear]\nhelix_angle_deg = 10\n\n[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
+    );
+    for study in ["stiffness", "wear"] {
+        rejected(
+            &[study, "--config", &file],
+            &[
+                "`gear.helix_angle_deg` = 10",
+                "gear train",
+                "spur pairs so far",
+            ],
+        );
+    }
+    // `gearwear dynamics` reaches the helical pair's model first, which names the train.
+    rejected(
+        &["dynamics", "--config", &file],
+        &[
+            "`[[stage]]`",
+            "helical pair",
+            "helical trains are not built",
+        ],
+    );
+}

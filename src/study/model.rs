@@ -134,7 +134,12 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 /// motion of spur pairs); a helical pair's axial force and tilting moments have no degrees
 /// of freedom yet. Every study built on the model (dynamics, wear, signals, datasets,
 /// sweeps, calibration, prognostics) refuses it rather than give a spur result.
-fn helical_refusal(helix_angle_deg: f64) -> String {
+fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
+    if is_train {
+        return format!(
+            "`gear.helix_angle_deg` = {helix_angle_deg} on a gear train ([[stage]] tables): the stages of a train are spur pairs so far; a helical pair runs alone (without [[stage]]) in `gearwear stiffness` and `gearwear dynamics` (set the angle to 0 for a spur train)"
+        );
+    }
     format!(
         "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`; axial and tilting motion, wear per slice and signals are not built), so it would give a spur result; `gearwear stiffness` and `gearwear dynamics` take helical pairs (set the angle to 0 for a spur pair)"
     )
@@ -153,7 +158,10 @@ impl Model {
     /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         if case.gear.helix_angle_deg != 0.0 {
-            return Err(ModelError(vec![helical_refusal(case.gear.helix_angle_deg)]));
+            return Err(ModelError(vec![helical_refusal(
+                case.gear.helix_angle_deg,
+                !case.stage.is_empty(),
+            )]));
         }
         if case.planetary.is_some() {
             return Err(ModelError(vec![planetary_refusal()]));
