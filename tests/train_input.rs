@@ -182,3 +182,31 @@ fn a_helical_angle_on_a_train_says_the_stages_are_spur() {
         ],
     );
 }
+
+#[test]
+fn a_numbered_override_equals_the_same_key_written_in_the_case_file() {
+    use gearwear::config::load_case;
+    // Second method: the key written in stage 2's table of the file.
+    let base = "[operating]\ninput_speed_hz = 30\n\n[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n[[stage]]\nteeth_pinion = 23\nteeth_gear = 47\n";
+    let written = base.replace("teeth_pinion = 23", "teeth_pinion = 25");
+    let by_set = load_case(base, &["stage.2.teeth_pinion=25".into()]).unwrap();
+    assert_eq!(by_set, load_case(&written, &[]).unwrap());
+    assert_ne!(by_set, load_case(base, &[]).unwrap());
+    // Stage 1's shaft, by number, likewise.
+    let stiff = load_case(
+        base,
+        &["stage.1.shaft_torsional_stiffness_nm_per_rad=1e6".into()],
+    )
+    .unwrap();
+    let written = base.replace("= 2e5", "= 1e6");
+    assert_eq!(stiff, load_case(&written, &[]).unwrap());
+    // A table the case lacks, a section that is not numbered: refused, naming the range.
+    for (set, needle) in [
+        ("stage.3.teeth_pinion=25", "the case has 2 (valid: 1 to 2"),
+        ("stage.0.teeth_pinion=25", "the case has 2 (valid: 1 to 2"),
+        ("gear.2.module_mm=3", "[gear] is not a numbered section"),
+    ] {
+        let e = load_case(base, &[set.into()]).unwrap_err().to_string();
+        assert!(e.contains(needle), "{set}: {e}");
+    }
+}

@@ -197,8 +197,9 @@ const FORM: &str = "\
 - Tooth faults are the one array of tables: one `[[fault]]` table per fault, each with
   `kind`, `gear`, `tooth` and its kind's own keys (below). An override
   `--set fault.KEY=value` sets the key of the case's only fault (and makes one when there
-  is none), so a sweep can vary a fault's size; with several faults, write them in the
-  case file.
+  is none), so a sweep can vary a fault's size; with several faults,
+  `--set fault.N.KEY=value` sets the key of the N-th (from 1), and likewise
+  `--set stage.N.KEY=value` for the N-th `[[stage]]` table of a gear train.
 - The per-tooth inputs (`[teeth]`, `[modification]`, `[[fault]]`) are absent by default:
   the paper's perfect, identical teeth. Arrays of one value per tooth must have as many
   values as the gear has teeth (an error names both numbers).

@@ -15,10 +15,11 @@
 
 use super::case::{Case, FaultTable, LoadSpectrumSection, ToothFault};
 use super::operating::SpeedUnit;
+use super::overrides::{apply_overrides, set_value};
 use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
 use super::schema::{spec, KeySpec, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
-use crate::remedy::{Arg, Words};
+use crate::remedy::Words;
 use std::fmt;
 use toml::{Table, Value};
 
@@ -62,35 +63,6 @@ impl ConfigError {
     pub fn messages(&self) -> Vec<String> {
         self.problems.iter().map(Words::to_string).collect()
     }
-}
-
-/// Parse `section.key=value`; the value is read as TOML, or as a bare string.
-fn parse_override(text: &str) -> Result<(Vec<String>, Value), Words> {
-    let shown = clip(text, SHOWN_CHARS);
-    let problem = |quoted: String, what: &str| {
-        Words::new()
-            .arg(Arg::Override)
-            .text(format!(" \"{quoted}\": {what}"))
-    };
-    if text.chars().any(char::is_control) {
-        return Err(problem(
-            shown.escape_debug().to_string(),
-            "the value holds a line break or another control character; each ",
-        )
-        .arg(Arg::Override)
-        .text(" is one line (put multi-line values in ")
-        .arg(Arg::CaseFile)
-        .text(")"));
-    }
-    let (key, raw) = text
-        .split_once('=')
-        .ok_or_else(|| problem(shown.clone(), "expected section.key=value"))?;
-    let key = key.trim();
-    let path: Vec<String> = key.split('.').map(str::to_owned).collect();
-    if path.len() != 2 || path.iter().any(String::is_empty) {
-        return Err(problem(shown, "the key must be section.key"));
-    }
-    Ok((path, override_value(raw)))
 }
 
 /// Check section and key names, normalise value types and check ranges, in place.
@@ -184,39 +156,6 @@ const FAULT: &str = "fault";
 /// The planetary set's section (read by `planetary_section`, not by the schema).
 const PLANETARY: &str = "planetary";
 
-/// An override of a key of an array-of-tables section (`fault.crack_depth_mm=1`): it sets
-/// the key of the section's only table, made when there is none. With several tables
-/// the override cannot say which one it means.
-fn set_table_array_value(
-    user: &mut Table,
-    section: &str,
-    key: &str,
-    value: Value,
-) -> Result<(), String> {
-    let entry = user
-        .entry(section.to_owned())
-        .or_insert_with(|| Value::Array(Vec::new()));
-    if let Value::Table(t) = entry {
-        *entry = Value::Array(vec![Value::Table(std::mem::take(t))]);
-    }
-    let Value::Array(items) = entry else {
-        return Err(format!("[[{section}]] is not an array of tables"));
-    };
-    if items.is_empty() {
-        items.push(Value::Table(Table::new()));
-    }
-    match items.as_mut_slice() {
-        [Value::Table(t)] => {
-            t.insert(key.to_owned(), value);
-            Ok(())
-        }
-        _ => Err(format!(
-            "the case has {} [[{section}]] tables: an override of `{section}.{key}` applies to a case with at most one (write the tables in the case file)",
-            items.len()
-        )),
-    }
-}
-
 /// Checks that involve more than one key of the case file itself.
 /// `faults`: the case's `[[fault]]` tables as written, checked here before they are
 /// resolved.
@@ -296,24 +235,6 @@ fn single_pair_inputs(case: &Case) -> Vec<&'static str> {
     out
 }
 
-/// Merge the overrides (`section.key=value` texts) into the user's tree.
-fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Words>) {
-    for o in overrides {
-        match parse_override(o) {
-            Ok((path, value)) => {
-                if let Err(e) = set_value(user, &path[0], &path[1], value) {
-                    problems.push(
-                        Words::new()
-                            .arg(Arg::Override)
-                            .text(format!(" {}: {e}", clip(o, SHOWN_CHARS))),
-                    )
-                }
-            }
-            Err(e) => problems.push(e),
-        }
-    }
-}
-
 /// A TOML parse error by its place (line, column) and the parser's words, never quoting
 /// the text: a file that is not a case file at all (`/etc/passwd`) must not have its
 /// content echoed into a message or a log.
@@ -353,24 +274,6 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
             }
         }
         Ok(_) => {}
-    }
-}
-
-/// Set `section.key` in the tree (the only table of an array-of-tables section); the
-/// problem when the section is not a table.
-fn set_value(user: &mut Table, section: &str, key: &str, value: Value) -> Result<(), String> {
-    if TABLE_ARRAYS.contains(&section) {
-        return set_table_array_value(user, section, key, value);
-    }
-    let entry = user
-        .entry(section.to_owned())
-        .or_insert_with(|| Value::Table(Table::new()));
-    match entry {
-        Value::Table(t) => {
-            t.insert(key.to_owned(), value);
-            Ok(())
-        }
-        _ => Err(format!("[{}] is not a table", clip(section, SHOWN_CHARS))),
     }
 }
 

@@ -9,6 +9,7 @@ pub mod load_spectrum;
 pub mod lumped;
 pub mod operating;
 pub mod output;
+mod overrides;
 pub mod paper_case;
 mod parse;
 pub mod planetary;
