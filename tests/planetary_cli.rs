@@ -228,3 +228,19 @@ fn bad_sets_exit_2_naming_the_key() {
         &["planetary.lumped.mass_sun_kg", "-0.4", "(0, 1e6]"],
     );
 }
+
+#[test]
+fn a_lumped_key_set_on_the_command_line_equals_the_key_in_the_file() {
+    use gearwear::config::load_case;
+    // Second method: the value written in the file's [planetary.lumped] table.
+    let file = format!("{SET}{}", lin_parker_lumped(1e6));
+    let written = file.replace("mass_sun_kg = 0.4", "mass_sun_kg = 0.5");
+    let by_set = load_case(&file, &["planetary.lumped.mass_sun_kg=0.5".into()]).unwrap();
+    assert_eq!(by_set, load_case(&written, &[]).unwrap());
+    assert_ne!(by_set, load_case(&file, &[]).unwrap());
+    // Its range is the schema's, checked as for a key in the file.
+    let e = load_case(&file, &["planetary.lumped.mass_sun_kg=-1".into()])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("planetary.lumped.mass_sun_kg"), "{e}");
+}

@@ -31,11 +31,10 @@ fn parse_override(text: &str) -> Result<(Vec<String>, Value), Words> {
         .ok_or_else(|| problem(shown.clone(), "expected section.key=value"))?;
     let key = key.trim();
     let path: Vec<String> = key.split('.').map(str::to_owned).collect();
-    let numbered = path.len() == 3 && path[1].bytes().all(|b| b.is_ascii_digit());
-    if !(path.len() == 2 || numbered) || path.iter().any(String::is_empty) {
+    if !(2..=3).contains(&path.len()) || path.iter().any(String::is_empty) {
         return Err(problem(
             shown,
-            "the key must be section.key (or section.N.key for the N-th [[stage]] or [[fault]] table)",
+            "the key must be section.key (section.N.key for the N-th [[stage]] or [[fault]] table, section.table.key for a sub-table such as planetary.lumped)",
         ));
     }
     Ok((path, override_value(raw)))
@@ -72,6 +71,36 @@ fn set_table_array_value(
             items.len()
         )),
     }
+}
+
+/// Set `section.sub.key` in the sub-table `[section.sub]` (`planetary.lumped.mass_sun_kg`),
+/// making either table when absent; the schema checks the key afterwards.
+fn set_sub_table_value(
+    user: &mut Table,
+    section: &str,
+    sub: &str,
+    key: &str,
+    value: Value,
+) -> Result<(), String> {
+    let not_table = |what: String| format!("{what} is not a table");
+    let outer = user
+        .entry(section.to_owned())
+        .or_insert_with(|| Value::Table(Table::new()));
+    let Value::Table(outer) = outer else {
+        return Err(not_table(format!("[{}]", clip(section, SHOWN_CHARS))));
+    };
+    let inner = outer
+        .entry(sub.to_owned())
+        .or_insert_with(|| Value::Table(Table::new()));
+    let Value::Table(inner) = inner else {
+        return Err(not_table(format!(
+            "`{}.{}`",
+            clip(section, SHOWN_CHARS),
+            clip(sub, SHOWN_CHARS)
+        )));
+    };
+    inner.insert(key.to_owned(), value);
+    Ok(())
 }
 
 /// Set `section.N.key` (N from 1) in the N-th table of an array-of-tables section
@@ -134,7 +163,10 @@ pub(super) fn apply_overrides(user: &mut Table, overrides: &[String], problems: 
         match parse_override(o) {
             Ok((path, value)) => {
                 let set = match path.as_slice() {
-                    [section, index, key] => set_numbered_value(user, section, index, key, value),
+                    [section, index, key] if index.bytes().all(|b| b.is_ascii_digit()) => {
+                        set_numbered_value(user, section, index, key, value)
+                    }
+                    [section, sub, key] => set_sub_table_value(user, section, sub, key, value),
                     _ => set_value(user, &path[0], &path[1], value),
                 };
                 if let Err(e) = set {
