@@ -6,7 +6,7 @@
 //! recomputed, not trusted).
 
 mod common;
-use common::{gearwear, kill_when, stderr};
+use common::{gearwear, kill_when, published, stderr};
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
@@ -50,33 +50,6 @@ fn args(config: &str, mode: &str, out: &Path, extra: &[&str]) -> Vec<String> {
 fn run(a: &[String]) -> Output {
     let refs: Vec<&str> = a.iter().map(String::as_str).collect();
     gearwear(&refs)
-}
-
-/// The published files of a folder (its manifest's) and its checkpoints, as bytes.
-fn published(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let m: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap()).unwrap();
-    let mut files: Vec<String> = m["files"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|f| f["path"].as_str().unwrap().to_owned())
-        .collect();
-    files.push("manifest.json".into());
-    for e in std::fs::read_dir(dir).unwrap() {
-        let name = e.unwrap().file_name().to_string_lossy().into_owned();
-        if name.starts_with("checkpoint_") {
-            files.push(name);
-        }
-    }
-    files.sort();
-    files
-        .into_iter()
-        .map(|p| {
-            let b = std::fs::read(dir.join(&p)).unwrap();
-            (p, b)
-        })
-        .collect()
 }
 
 /// Keep the header and `keep` updates of a log, and half of the next line when `torn`.

@@ -13,7 +13,7 @@
 //! | [`StiffnessJob`] | mesh stiffness, ISO 6336 check, load sharing, static TE | [`Outcome`] |
 //! | [`DynamicsJob`] | one steady-state evaluation | [`Outcome`] |
 //! | [`WearJob`] | the wear study (dynamic and/or quasi-static), checkpointed | [`Outcome`] |
-//! | [`RunJob`] | the paper's section 4 with its report | [`Outcome`] |
+//! | [`RunJob`] | the paper's section 4 with its report (on a gear train: every stage's) | [`Outcome`] |
 //! | [`SweepJob`] | a parameter sweep (in memory, or to a folder: resumable, sharded, or by continuation) | [`SweepOutput`] |
 //! | [`SweepMergeJob`] | the tables of sweep shards joined | [`SweepOutput`] |
 //! | [`CalibrateJob`] | posterior of the wear coefficient given observations | [`Outcome`] |
@@ -51,6 +51,7 @@ pub mod predict_future;
 pub mod predict_merge;
 pub mod publish;
 pub mod run;
+pub mod run_train;
 pub mod settings;
 pub mod signals;
 mod signals_planetary;
@@ -134,7 +135,7 @@ pub fn refuse_train(case: &Case) -> Result<(), JobError> {
 }
 
 /// What a study that takes a single pair says of a gear train.
-pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear` and `gearwear signals` run so far; this study takes a single pair ([gear], without [[stage]])";
+pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear`, `gearwear signals` and `gearwear run` run so far; this study takes a single pair ([gear], without [[stage]])";
 
 /// As [`build_model`], for the studies that take a gear train as well as a single pair.
 pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {

@@ -1,6 +1,6 @@
 //! The run job: the paper's whole section 4 (mesh stiffness, the dynamic and quasi-static
 //! wear studies with checkpoints, the dynamic response at three wear states) with its
-//! report, figures and the CSV behind each.
+//! report, figures and the CSV behind each. On a gear train, `app::run_train`.
 
 use super::observer::{keep_going, Observer};
 use super::wear_runs::{run_modes, stops};
@@ -41,7 +41,9 @@ impl Job for RunJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        super::refuse_train(&self.case)?;
+        if !self.case.stage.is_empty() {
+            return super::run_train::run_of_train(self, figures, observer);
+        }
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);

@@ -3,17 +3,41 @@
 //! results of `report::wear_train`. With an output folder, every update of the whole train
 //! is kept (a log per mode and mesh, `app::train_checkpoints`) and `--resume` continues
 //! from them once they are replayed and recomputed. A load spectrum on a train is refused.
+//! The run job on a train (`app::run_train`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
 use super::train_checkpoints::{mesh_checkpoint_name, open_logs, starting_runs};
-use super::wear_runs::{mode_tasks, report_update, stops_of};
+use super::wear_runs::{mode_tasks, report_update, stops_of, Runs};
 use super::{build_train_model, publish, JobError, Outcome};
+use crate::config::Case;
 use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_train::train_wear_artifacts;
 use crate::store::RunMetadata;
+use crate::study::train::TrainModel;
 use crate::study::train_wear::{run_train_wear, TrainWearRun};
 use crate::study::wear_loop::{run_in_parallel, WearMode, WearStop};
+use crate::study::Model;
+use std::path::Path;
+
+/// Refuse a load spectrum on a gear train (the studies under a spectrum take a single
+/// pair so far).
+pub fn refuse_train_spectrum(case: &Case) -> Result<(), JobError> {
+    if case.load_spectrum.is_none() {
+        return Ok(());
+    }
+    Err(JobError::input(Problem::new(
+        "`[load_spectrum]` on a gear train ([[stage]] tables): the wear study under a load spectrum takes a single pair so far; remove one or the other",
+    )))
+}
+
+/// The train of `model`, or an input error when the case has no `[[stage]]` tables.
+pub fn train_of(model: &Model) -> Result<&TrainModel, JobError> {
+    model
+        .train
+        .as_ref()
+        .ok_or_else(|| JobError::input(Problem::new("this case has no [[stage]] tables")))
+}
 
 /// Run the wear study of the train in `job.case` (see the module docs).
 pub fn wear_of_train(
@@ -22,40 +46,52 @@ pub fn wear_of_train(
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let name = "wear";
-    if job.case.load_spectrum.is_some() {
-        return Err(JobError::input(Problem::new(
-            "`[load_spectrum]` on a gear train ([[stage]] tables): the wear study under a load spectrum takes a single pair so far; remove one or the other",
-        )));
-    }
-    if let (Some(o), true) = (job.out.as_deref(), job.resume) {
+    refuse_train_spectrum(&job.case)?;
+    let model = build_train_model(&job.case, observer)?;
+    let train = train_of(&model)?;
+    let meta = RunMetadata::of_model(name, &model);
+    let out = (job.out.as_deref(), job.resume, job.replace);
+    let runs = run_train_modes(name, &model, train, &job.modes, &meta, out, observer)?;
+    let refs: Vec<&TrainWearRun> = runs.runs.iter().collect();
+    let artifacts = train_wear_artifacts(&model, train, &refs).with_figure_output(figures);
+    let mut outcome = publish::publish(runs.out, artifacts, Some(&meta), observer)?;
+    outcome.incomplete = train_stops(&refs, observer);
+    Ok(outcome)
+}
+
+/// The wear runs of `train` in `modes` for the job `command`: the output folder opened
+/// (locked, its state read through its handle), then the checkpoints in it, each replayed
+/// and recomputed before anything runs (when resuming), then the runs in parallel with a
+/// log per mode and mesh appended after every update, progress and cancellation.
+pub fn run_train_modes(
+    command: &str,
+    model: &Model,
+    train: &TrainModel,
+    modes: &[WearMode],
+    meta: &RunMetadata,
+    (out, resume, replace): (Option<&Path>, bool, bool),
+    observer: &dyn Observer,
+) -> Result<Runs<Vec<TrainWearRun>>, JobError> {
+    if let (Some(o), true) = (out, resume) {
         super::checkpoints::require_folder(o)?;
     }
-    let model = build_train_model(&job.case, observer)?;
-    let Some(train) = model.train.as_ref() else {
-        return Err(JobError::input(Problem::new(
-            "this case has no [[stage]] tables",
-        )));
-    };
-    let meta = RunMetadata::of_model(name, &model);
-    // The folder first (locked, its state read through its handle), then the checkpoints
-    // in it, each replayed and recomputed before anything runs.
-    let mut out = publish::open_if(job.out.as_deref(), None, name, job.replace)?;
-    let resume_from = out.as_ref().filter(|_| job.resume);
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let resume_from = dir.as_ref().filter(|_| resume);
     let stages = train.stages.len();
     let starts = starting_runs(
-        &model,
+        model,
         train,
-        &job.modes,
+        modes,
         resume_from,
         &meta.case_sha256,
         observer,
     )?;
-    let logs = match out.as_mut() {
+    let logs = match dir.as_mut() {
         Some(d) => Some(open_logs(d, &starts, stages, &meta.case_sha256)?),
         None => None,
     };
-    let root = out.as_ref().map(|d| d.root().to_path_buf());
-    let tasks = mode_tasks(&job.modes, model.case.wear.total_cycles);
+    let root = dir.as_ref().map(|d| d.root().to_path_buf());
+    let tasks = mode_tasks(modes, model.case.wear.total_cycles);
     for t in &tasks {
         observer.start(t);
     }
@@ -78,19 +114,23 @@ pub fn wear_of_train(
     let result = run_in_parallel(
         starts,
         |r| r.mode,
-        &|start, f| run_train_wear(&model, train, start, f),
+        &|start, f| run_train_wear(model, train, start, f),
         &on_update,
     );
     for t in &tasks {
         observer.finish(t);
     }
     drop(logs);
-    let runs = result?;
-    let refs: Vec<&TrainWearRun> = runs.iter().collect();
-    let artifacts = train_wear_artifacts(&model, train, &refs).with_figure_output(figures);
-    let mut outcome = publish::publish(out, artifacts, Some(&meta), observer)?;
+    Ok(Runs {
+        runs: result?,
+        out: dir,
+    })
+}
+
+/// Tell `observer` about the train's runs that stopped early; the failure to return if
+/// one was the solver's (`wear_runs::stops_of`).
+pub fn train_stops(runs: &[&TrainWearRun], observer: &dyn Observer) -> Option<String> {
     let modes: Vec<(WearMode, Option<&WearStop>)> =
         runs.iter().map(|r| (r.mode, r.stopped.as_ref())).collect();
-    outcome.incomplete = stops_of(&modes, observer);
-    Ok(outcome)
+    stops_of(&modes, observer)
 }

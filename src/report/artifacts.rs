@@ -308,11 +308,7 @@ pub enum WriteError {
 /// Stage every artifact into `out` (`summary.json`, tables, figures, documents). The
 /// caller publishes the set.
 pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteError> {
-    let name = a.summary_file.as_deref().unwrap_or("summary.json");
-    let text = serde_json::to_string_pretty(&a.summary).map_err(|e| WriteError::Format {
-        path: name.into(),
-        reason: e.to_string(),
-    })?;
+    let (name, text) = summary_file(a)?;
     out.stage(name, text.as_bytes())?;
     for (path, t) in &a.tables {
         let bytes = if path.ends_with(".parquet") {
@@ -333,6 +329,60 @@ pub fn write_artifacts(out: &mut OutputDir, a: &Artifacts) -> Result<(), WriteEr
         out.stage(path, bytes)?;
     }
     Ok(())
+}
+
+/// The summary file of `a`: its name (`summary.json` unless `a` names another) and text.
+fn summary_file(a: &Artifacts) -> Result<(&str, String), WriteError> {
+    let name = a.summary_file.as_deref().unwrap_or("summary.json");
+    let text = serde_json::to_string_pretty(&a.summary).map_err(|e| WriteError::Format {
+        path: name.into(),
+        reason: e.to_string(),
+    })?;
+    Ok((name, text))
+}
+
+/// Move `sub` (another job's artifacts) into the folder `dir` of `into`: its summary,
+/// stamped with `meta`, as `dir/summary.json` (or its own summary file), its tables,
+/// figures and documents under `dir/`, each the bytes `sub` published alone would write
+/// (the run job on a gear train holds each study's outputs so). Returns `sub`'s summary.
+pub fn nest(
+    into: &mut Artifacts,
+    dir: &str,
+    mut sub: Artifacts,
+    meta: &RunMetadata,
+) -> Result<serde_json::Value, WriteError> {
+    sub.stamp_metadata(meta).map_err(|e| WriteError::Format {
+        path: format!("{dir}/summary.json"),
+        reason: e.to_string(),
+    })?;
+    let at = |p: &str| format!("{dir}/{p}");
+    let (name, text) = summary_file(&sub)?;
+    into.documents.push((at(name), text.into_bytes()));
+    into.tables
+        .extend(sub.tables.into_iter().map(|(p, t)| (at(&p), t)));
+    for mut f in sub.figures {
+        f.path = at(&f.path);
+        f.data = f.data.as_deref().map(at);
+        into.figures.push(f);
+    }
+    into.documents
+        .extend(sub.documents.into_iter().map(|(p, b)| (at(&p), b)));
+    Ok(sub.summary)
+}
+
+/// Render the figure of `a` at `path` now (in `a`'s formats and size), keep the rendering
+/// (so the file and a report show the same bytes) and return the block a report embeds;
+/// `None` when `a` has no such figure or it cannot be drawn.
+pub fn embed_existing(
+    a: &mut Artifacts,
+    path: &str,
+    caption: String,
+) -> Option<super::html::FigureBlock> {
+    let how = a.figure_output;
+    let f = a.figures.iter_mut().find(|f| f.path == path)?;
+    let r = Rendered::of(&f.figure, (f.width_px, f.height_px), how, path).ok()?;
+    f.rendered = Some(r.clone());
+    Some(r.block(caption, f.data.clone()))
 }
 
 /// Stage every artifact into `out` and publish the set; returns the folder.

@@ -23,6 +23,8 @@ pub mod plot;
 pub mod prognostics;
 pub mod prognostics_tables;
 pub mod run_report;
+pub mod run_train;
+pub(crate) mod run_train_report;
 pub mod runup;
 pub mod signals;
 pub mod signals_planetary;

@@ -385,7 +385,7 @@ fn opening(model: &Model, study: &PaperStudy, rows: &[Compared]) -> (String, Str
 }
 
 /// The mesh stiffness section (`tag`: the paper's section in brackets, or empty).
-fn stiffness_section(model: &Model, tag: String, figures: Vec<FigureBlock>) -> Section {
+pub(crate) fn stiffness_section(model: &Model, tag: String, figures: Vec<FigureBlock>) -> Section {
     let method = if model.case.stiffness.fillet_foundation {
         "Potential energy method with the Sainsot fillet foundation"
     } else {

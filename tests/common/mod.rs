@@ -194,3 +194,37 @@ pub fn assert_refused_touching_nothing(
     assert!(!out.exists(), "an output despite the error");
     assert_eq!(&snapshot(dir), before, "files outside the output changed");
 }
+
+/// The files a folder's manifest lists, sorted.
+pub fn manifest_files(dir: &Path) -> Vec<String> {
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap()).unwrap();
+    let mut files: Vec<String> = m["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["path"].as_str().unwrap().to_owned())
+        .collect();
+    files.sort();
+    files
+}
+
+/// The published files of a folder (its manifest's) and its checkpoints, as bytes.
+pub fn published(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut files = manifest_files(dir);
+    files.push("manifest.json".into());
+    for e in std::fs::read_dir(dir).unwrap() {
+        let name = e.unwrap().file_name().to_string_lossy().into_owned();
+        if name.starts_with("checkpoint_") {
+            files.push(name);
+        }
+    }
+    files.sort();
+    files
+        .into_iter()
+        .map(|p| {
+            let b = std::fs::read(dir.join(&p)).unwrap();
+            (p, b)
+        })
+        .collect()
+}
