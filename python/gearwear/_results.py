@@ -744,7 +744,9 @@ class RunResult(WearResult):
     """The paper's whole section 4 (``gearwear run``): the summary with the paper
     comparison, every figure's table (``fig02_mesh_stiffness`` ... ``fig13_...``), the
     wear runs (as ``WearResult``), the figures as PNG (``figures_png``) and the HTML
-    report (``report_html``)."""
+    report (``report_html``). On a gear train: the summary's ``meshes`` (one entry per
+    stage) and ``limiting_mesh`` (per mode, the stage that wore deepest), the wear runs
+    per mesh as ``stages`` and ``history(mode)``."""
 
 
 class CalibrationResult(_Result):

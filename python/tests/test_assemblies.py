@@ -206,3 +206,26 @@ def test_train_and_planetary_cases_survive_text_and_pickle(train, planetary):
         assert gw.Case.from_toml(case.to_toml()) == case
         assert pickle.loads(pickle.dumps(case)) == case
     assert "[[stage]]" in train.to_toml()
+
+
+def test_train_run_is_its_studies(train):
+    # `run` on a train nests the wear job's files: its runs per mesh must be those of a
+    # separate `wear` (a second path through the application), and the limiting mesh
+    # the stage whose pinion or gear wore deepest.
+    case = train.set("wear.total_cycles", 2e3)
+    r = _quiet(gw.run, case)
+    w = _quiet(gw.wear, case)
+    assert isinstance(r, gw.RunResult) and r.is_train and len(r.stages) == 2
+    for mode in ("dynamic", "quasi_static"):
+        for k in (0, 1):
+            a, b = r.stages[k][mode], w.stages[k][mode]
+            assert np.array_equal(a.cycles, b.cycles)
+            assert np.array_equal(a.max_wear_pinion_um, b.max_wear_pinion_um)
+        deepest = [
+            max(s[mode].max_wear_pinion_um[-1], s[mode].max_wear_gear_um[-1])
+            for s in r.stages
+        ]
+        limiting = r.summary["limiting_mesh"][mode]
+        assert limiting["stage"] == 1 + int(np.argmax(deepest))
+        assert limiting["max_wear_um"] == max(deepest)
+    assert len(r.summary["meshes"]) == 2
