@@ -114,6 +114,7 @@ impl TrainMesh<'_> {
         let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
         let mut gap_rate_weighted = 0.0;
         let contact = self.parts.contact;
+        let lead = contact.lead_gaps();
         let pairs = self
             .parts
             .pair
@@ -131,11 +132,19 @@ impl TrainMesh<'_> {
             sp.rho1_m[n] = pp.contact_rho1_m;
             sp.corner[n] = pp.corner;
             sp.width_loss[n] = pp.width_loss;
+            let touching = frozen.map_or(c > 0.0, |m| m.touches(n));
+            // A helical line with lead gaps: its slices' force and tangent stiffness
+            // (slices open one by one, docs/MODEL.md 11.1); else the pair's spring.
+            let (f, k) = match lead {
+                None => (k * c, k),
+                Some(t) => t.force(rho1, c, touching),
+            };
             sp.stiffness_n_per_m[n] = k;
             sp.compression_m[n] = c;
-            if frozen.map_or(c > 0.0, |m| m.touches(n)) {
+            if touching {
                 sp.touching[n] = true;
-                sp.elastic_n += k * c;
+                sp.elastic_n += f;
+                sp.pair_force_n[n] = f;
                 sp.stiffness_touching_n_per_m += k;
                 gap_rate_weighted += k * (dg_drho * rb1 * omega_nom - de_ext * omega_nom);
             }
@@ -207,7 +216,8 @@ impl TrainMesh<'_> {
             if frozen.map_or(c > 0.0, |m| m.touches(n)) {
                 let k = pp.stiffness_n_per_m;
                 sp.touching[n] = true;
-                sp.elastic_n += k * c;
+                sp.pair_force_n[n] = k * c;
+                sp.elastic_n += sp.pair_force_n[n];
                 sp.stiffness_touching_n_per_m += k;
                 gap_rate_weighted +=
                     k * (pp.gap_slope * rb1 * omega_nom - de_ext * omega_nom - de_run);
@@ -277,7 +287,7 @@ impl TrainMesh<'_> {
         let stiffness_shares = (sp.elastic_n > 0.0).then(|| {
             let mut sh = [0.0; MAX_PAIRS];
             for i in (0..n).filter(|i| sp.touching[*i]) {
-                sh[i] = sp.stiffness_n_per_m[i] * sp.compression_m[i] / sp.elastic_n;
+                sh[i] = sp.pair_force_n[i] / sp.elastic_n;
             }
             sh
         });
