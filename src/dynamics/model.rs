@@ -127,9 +127,6 @@ pub struct MeshSprings {
     pub stiffness_touching_n_per_m: f64,
     /// sum of k_i (delta - g_i) over the touching pairs, N.
     pub elastic_n: f64,
-    /// Each touching pair's elastic force, N: k_i (delta - g_i), or a helical line's
-    /// slices' with lead gaps (`TrainMesh::springs`); 0 for a pair not touching.
-    pub pair_force_n: [f64; MAX_PAIRS],
     /// Spring and damper force of the touching pairs, N (0 when none touches).
     pub force_unclipped_n: f64,
     pub pushing: bool,
