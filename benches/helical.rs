@@ -16,7 +16,15 @@
 //! - `steady_state_spur_transverse`: the same for the spur pair of its transverse section
 //!   (`geometry::helical::transverse_section`), also on the nominal path with the load
 //!   shared by compression, as the helical model runs;
-//! - `model_build_helical_400`: `Model::helical_from_case` (slice model and line table).
+//! - `model_build_helical_400`: `Model::helical_from_case` (slice model and line table);
+//! - `steady_state_helical_400_crowned`, `model_build_helical_400_crowned`: the same with
+//!   a crowning of 8 um (`modification.crowning_um`): each contact line's force from its
+//!   slices through the tabulated piecewise-linear force (`stiffness::helical_lead`), and
+//!   the build with that table and the static face load solve;
+//! - `face_load_direct_crowned`: `DynamicFaceLoad::of` on the crowned steady state: every
+//!   recorded sample's contact lines summed slice by slice (N spline evaluations per line),
+//!   the work the direct evaluation of the slices would do in every right-hand side (its
+//!   cost per sample times the steady state's right-hand sides estimates that choice).
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -29,6 +37,7 @@ use gearwear::geometry::GearPair;
 use gearwear::stiffness::helical::SliceMeshStiffness;
 use gearwear::stiffness::mesh::{FilletSettings, MeshStiffness};
 use gearwear::stiffness::potential_energy::ElasticPair;
+use gearwear::study::face_load_dynamic::DynamicFaceLoad;
 use gearwear::study::Model;
 use gearwear::wear::WearState;
 
@@ -84,11 +93,18 @@ fn helical_dynamics(c: &mut Criterion) {
     spur_case.contact.path = ContactPathModel::Nominal;
     spur_case.contact.load_sharing = LoadSharingModel::Stiffness;
     let spur = Model::from_case(&spur_case).expect("valid spur model");
+    let mut crowned_case = case.clone();
+    crowned_case.modification.crowning_um = Some(8.0);
+    let crowned = Model::helical_from_case(&crowned_case).expect("valid crowned model");
     let run = |m: &Model| {
         m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
             .expect("steady state")
     };
-    for (name, m) in [("helical", &helical), ("spur", &spur)] {
+    for (name, m) in [
+        ("helical", &helical),
+        ("spur", &spur),
+        ("crowned", &crowned),
+    ] {
         let r = run(m);
         eprintln!(
             "{name}: {} steps, {} rhs, {} LU, {} periods",
@@ -104,6 +120,17 @@ fn helical_dynamics(c: &mut Criterion) {
     });
     g.bench_function("model_build_helical_400", |b| {
         b.iter(|| Model::helical_from_case(black_box(&case)).unwrap())
+    });
+    g.bench_function("steady_state_helical_400_crowned", |b| {
+        b.iter(|| run(black_box(&crowned)))
+    });
+    let r = run(&crowned);
+    eprintln!("crowned: {} samples", r.signals.time_s.len());
+    g.bench_function("face_load_direct_crowned", |b| {
+        b.iter(|| DynamicFaceLoad::of(black_box(&crowned), &r, &ExternalError::none()))
+    });
+    g.bench_function("model_build_helical_400_crowned", |b| {
+        b.iter(|| Model::helical_from_case(black_box(&crowned_case)).unwrap())
     });
     g.finish();
 }

@@ -8,10 +8,12 @@ use crate::dynamics::excitation::ExternalError;
 use crate::remedy::Arg;
 use crate::report::dynamics::dynamics_artifacts;
 use crate::report::dynamics_planetary::planetary_dynamics_artifacts;
+use crate::report::face_load::add_dynamic_face_load_artifacts;
 use crate::report::figure_output::FigureRequest;
 use crate::store::transmission_error::{read_transmission_error, transmission_error_from_deg_um};
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
+use crate::study::face_load_dynamic::DynamicFaceLoad;
 use crate::study::planetary_dynamics::PlanetaryDynamics;
 use crate::wear::WearState;
 use std::path::PathBuf;
@@ -85,9 +87,16 @@ impl Job for DynamicsJob {
             "new teeth"
         };
         let meta = RunMetadata::of_model(self.name(), &model);
+        let mut artifacts = dynamics_artifacts(&model, &r, label);
+        if let Some(d) = DynamicFaceLoad::of(&model, &r, &external) {
+            let lead = model.helical.as_ref().and_then(|h| h.lead.as_ref());
+            if let Some(l) = lead {
+                add_dynamic_face_load_artifacts(&d, &l.static_load, &mut artifacts);
+            }
+        }
         publish::publish(
             out,
-            dynamics_artifacts(&model, &r, label).with_figure_output(figures),
+            artifacts.with_figure_output(figures),
             Some(&meta),
             observer,
         )

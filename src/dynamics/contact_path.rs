@@ -21,7 +21,9 @@ use crate::config::case::ContactPathModel;
 use crate::geometry::corner::{CornerGeometry, TipCorner};
 use crate::geometry::pair::Reach;
 use crate::geometry::GearPair;
+use crate::stiffness::helical_lead::LineGapTable;
 use crate::stiffness::mesh::MeshStiffness;
+use std::sync::Arc;
 
 /// Gap of a contact that cannot happen (a contact a broken tip has removed, a corner
 /// that reaches no flank), m: far beyond any mesh deflection, so the pair never touches.
@@ -99,6 +101,9 @@ pub struct ContactPath {
     /// A helical pair's contact line: its extent L = b tan(beta_b) along the path, m
     /// (0: a spur pair; [`ContactPath::helical_lines`]).
     line_m: f64,
+    /// The helical lines' force with lead gaps across the face ([`ContactPath::with_lead_gaps`];
+    /// None: no gap across the face, each line a spring K(rho) (delta - e)).
+    lead: Option<Arc<LineGapTable>>,
 }
 
 impl ContactPath {
@@ -111,6 +116,7 @@ impl ContactPath {
             loa_m: pair.loa_length_m,
             corners: None,
             line_m: 0.0,
+            lead: None,
         };
         if !model.is_extended() {
             return nominal;
@@ -146,7 +152,23 @@ impl ContactPath {
             loa_m: line_pair.loa_length_m,
             corners: None,
             line_m,
+            lead: None,
         }
+    }
+
+    /// The same helical lines with the lead gaps of `table` (docs/MODEL.md 11.1): each line
+    /// carries the force of its slices, `LineGapTable::force`, instead of one spring.
+    pub fn with_lead_gaps(self, table: LineGapTable) -> Self {
+        Self {
+            lead: Some(Arc::new(table)),
+            ..self
+        }
+    }
+
+    /// The lead gaps' line force, if the lines have gaps across the face.
+    #[inline]
+    pub fn lead_gaps(&self) -> Option<&LineGapTable> {
+        self.lead.as_deref()
     }
 
     /// The part [lo, hi] of the helical line at trailing end `rho1_m` on the path, m.

@@ -304,19 +304,13 @@ impl SliceMeshStiffness {
         if self.slices() == 1 {
             return (t.clone(), self.slice.clone(), 0.0);
         }
-        let lead = self.pair.face_width_m * self.pair.base_helix_angle_rad.tan();
-        let mut line = t.clone();
-        line.rho_start_m = t.rho_start_m - lead;
-        line.contact_ratio = line.path_length_m() / line.base_pitch_m;
-        let n = self.slices() as f64;
-        let (_, slice_step, values, _) = self.slice.spline();
-        let span = line.path_length_m();
-        let step = slice_step.min(lead / n).max(span / MAX_LINE_POINTS as f64);
-        let points = ((span / step).ceil() as usize + 1).max(values.len());
-        let h = span / (points - 1) as f64;
-        let offsets: Vec<f64> = (0..self.slices())
-            .map(|j| lead * (j as f64 + 0.5) / n)
-            .collect();
+        let LineGrid {
+            line,
+            lead,
+            points,
+            step_m: h,
+            offsets,
+        } = self.line_grid();
         let on_path = |r: &f64| (t.rho_start_m..=t.rho_end_m).contains(r);
         let k: Vec<f64> = (0..points)
             .map(|i| {
@@ -332,6 +326,72 @@ impl SliceMeshStiffness {
         let extrema = (20 * points).min(20_000);
         let mesh = MeshStiffness::from_table(&self.slice, line.clone(), k, extrema);
         (line, mesh, lead)
+    }
+}
+
+/// Where the contact line of [`SliceMeshStiffness::line_model`] is sampled.
+#[derive(Debug, Clone)]
+pub(crate) struct LineGrid {
+    /// The line pair: the transverse pair with its path start moved to A - L.
+    pub(crate) line: GearPair,
+    /// The line's extent L = b tan(beta_b) along the path, m.
+    pub(crate) lead: f64,
+    /// Samples over the line pair's path and their spacing, m.
+    pub(crate) points: usize,
+    pub(crate) step_m: f64,
+    /// The slices' offsets o_j = (j + 1/2) L / N from the line's trailing end, m.
+    pub(crate) offsets: Vec<f64>,
+}
+
+impl SliceMeshStiffness {
+    /// The line pair and its samples (N >= 2): at the slice spacing L / N, no coarser than
+    /// the slice's own table, at most [`MAX_LINE_POINTS`] of them.
+    pub(crate) fn line_grid(&self) -> LineGrid {
+        let t = &self.pair.transverse;
+        let lead = self.pair.face_width_m * self.pair.base_helix_angle_rad.tan();
+        let mut line = t.clone();
+        line.rho_start_m = t.rho_start_m - lead;
+        line.contact_ratio = line.path_length_m() / line.base_pitch_m;
+        let n = self.slices() as f64;
+        let (_, slice_step, values, _) = self.slice.spline();
+        let span = line.path_length_m();
+        let step = slice_step.min(lead / n).max(span / MAX_LINE_POINTS as f64);
+        let points = ((span / step).ceil() as usize + 1).max(values.len());
+        let h = span / (points - 1) as f64;
+        let offsets: Vec<f64> = (0..self.slices())
+            .map(|j| lead * (j as f64 + 0.5) / n)
+            .collect();
+        LineGrid {
+            line,
+            lead,
+            points,
+            step_m: h,
+            offsets,
+        }
+    }
+
+    /// The face slice (index j of `positions_m`) that the line's slice at offset o_i sits
+    /// on: the line's trailing end is the face end y = 0 of a right-hand pinion (slice i is
+    /// face slice i), y = b of a left-hand one (face slice N - 1 - i).
+    pub(crate) fn face_slice_of_line_slice(&self, i: usize) -> usize {
+        match self.pair.hand_pinion {
+            crate::geometry::helical::Hand::Right => i,
+            crate::geometry::helical::Hand::Left => self.slices() - 1 - i,
+        }
+    }
+
+    /// Adds the stiffness (N/m) of each slice of the contact line whose trailing end is at
+    /// `rho_m` on the line pair (docs/MODEL.md 11.1) to `out[j]`, j the face slice it sits
+    /// on (slices off the transverse path [A, E] add nothing). `grid` is
+    /// [`SliceMeshStiffness::line_grid`]'s.
+    pub(crate) fn add_line_slices(&self, grid: &LineGrid, rho_m: f64, out: &mut [f64]) {
+        let t = &self.pair.transverse;
+        for (i, o) in grid.offsets.iter().enumerate() {
+            let r = rho_m + o;
+            if (t.rho_start_m..=t.rho_end_m).contains(&r) {
+                out[self.face_slice_of_line_slice(i)] += self.slice.pair_stiffness_n_per_m(r);
+            }
+        }
     }
 }
 

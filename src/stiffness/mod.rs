@@ -5,6 +5,7 @@
 pub mod face_load;
 pub mod fillet;
 pub mod helical;
+pub mod helical_lead;
 pub mod internal;
 pub mod iso6336;
 pub mod mesh;

@@ -3,8 +3,9 @@
 //! face (`stiffness::face_load::LeadGap`), checked against the pair, and the slice springs
 //! solved under the case's static mesh force over a mesh period.
 //!
-//! The other studies do not model a gap across the face yet: `domain_problems` refuses
-//! the keys there ([`lead_refusal`]).
+//! `gearwear dynamics` on a helical pair takes the gap into its contact lines
+//! (`study::helical_dynamics`); the other studies do not model a gap across the face yet:
+//! `domain_problems` refuses the keys there ([`lead_refusal`]).
 
 use super::helical::HelicalModel;
 use super::model_error::ModelError;
@@ -58,7 +59,7 @@ pub fn lead_keys(case: &Case) -> Vec<String> {
 pub fn lead_refusal(case: &Case) -> Option<String> {
     let keys = lead_keys(case);
     (!keys.is_empty()).then(|| format!(
-        "{}: taken only by `gearwear stiffness` on a single pair (the face load distribution and K_Hbeta, docs/MODEL.md 11.2): the other studies have no gap across the face yet; remove them for this command",
+        "{}: taken only by `gearwear stiffness` on a single pair (the face load distribution and K_Hbeta, docs/MODEL.md 11.2) and by `gearwear dynamics` on a helical pair (11.1): the other studies have no gap across the face yet; remove them for this command",
         keys.join(", ")
     ))
 }

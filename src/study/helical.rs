@@ -8,6 +8,7 @@
 use super::model_error::ModelError;
 use crate::config::case::{Case, GearSection, HelixHand};
 use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
+use crate::stiffness::face_load::{FaceLoad, LeadGap};
 use crate::stiffness::helical::SliceMeshStiffness;
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
@@ -82,6 +83,8 @@ pub struct HelicalDynamics {
     /// Mean of the slice model's mesh stiffness over a mesh period, N/m (N times a slice's,
     /// exact for its spline), beside the line table's (the model's `mesh`).
     pub slice_mean_stiffness_n_per_m: f64,
+    /// The lead gaps across the face, when the case gives some (docs/MODEL.md 11.1).
+    pub lead: Option<LeadDynamics>,
 }
 
 impl HelicalDynamics {
@@ -103,4 +106,17 @@ impl HelicalDynamics {
             Hand::Left => 1.0,
         }
     }
+}
+
+/// What the planar model of a helical pair with lead gaps keeps for its face load outputs
+/// (`study::face_load_dynamic`).
+#[derive(Debug, Clone)]
+pub struct LeadDynamics {
+    /// The slice model the contact lines are made of.
+    pub slices: SliceMeshStiffness,
+    /// The static face load (`gearwear stiffness`'s exact solve at the case's static mesh
+    /// force, `study::face_load::face_load`).
+    pub static_load: FaceLoad,
+    /// The gap across the face it was solved with.
+    pub gap: LeadGap,
 }

@@ -6,15 +6,21 @@
 //! action (its transverse part F_t = F; the axial part F tan(beta_b) loads the axial
 //! bearings and has no degree of freedom here).
 //!
-//! Refused (exit 2 naming the key): what needs a gap per slice or a second mesh (a gear
-//! train, a planetary set, per-tooth errors, modifications, faults, worn geometry),
+//! The lead keys (`[modification]`'s crowning, end relief and helix slope deviation,
+//! `operating.misalignment_um`) give each line's slices their gaps across the face
+//! (`stiffness::helical_lead`, `study::face_load_dynamic`).
+//!
+//! Refused (exit 2 naming the key): what needs a profile gap per slice or a second mesh (a
+//! gear train, a planetary set, per-tooth errors, profile modifications, faults, worn
+//! geometry),
 //! Pedrero's load-sharing law (it is a spur pair's), and a total
 //! contact ratio above [`MAX_PAIRS`] (the mesh follows at most that many contact lines).
 //! The tip corners are not modelled: `contact.path` = "extended" (the default) runs the
 //! nominal path with a warning.
 
 use super::domain::{body_value_warnings, domain_problems};
-use super::helical::{HelicalDynamics, HelicalModel};
+use super::face_load::{face_load, lead_keys};
+use super::helical::{HelicalDynamics, HelicalModel, LeadDynamics};
 use super::model::{pitch_line_velocity_warning, Model, ModelError};
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
 use crate::contact::friction::Friction;
@@ -24,6 +30,7 @@ use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::period_search::SteadyStateSettings;
 use crate::geometry::ProfileGrid;
+use crate::stiffness::helical_lead::LineGapTable;
 use crate::stiffness::potential_energy::ElasticPair;
 use crate::wear::RoughnessLaw;
 
@@ -54,8 +61,12 @@ fn refusals(case: &Case) -> Vec<String> {
     if case.teeth != Default::default() {
         r.push(refusal("[teeth]", "per-tooth errors", slices));
     }
-    if case.modification != Default::default() {
-        r.push(refusal("[modification]", "a modification", slices));
+    if case.modification.without_lead_keys() != Default::default() {
+        r.push(refusal(
+            "[modification]",
+            "a profile modification",
+            "each slice would need its own profile gap; of `[modification]` only the lead keys (crowning, end relief, helix slope deviation) are taken (docs/MODEL.md 11.1)",
+        ));
     }
     if !case.fault.is_empty() {
         r.push(refusal("[[fault]]", "a fault", slices));
@@ -71,6 +82,41 @@ fn refusals(case: &Case) -> Vec<String> {
         ));
     }
     r
+}
+
+/// The case without its lead keys (`study::face_load::lead_keys`): what the checks of the
+/// planar model see.
+fn without_lead_keys(case: &Case) -> Case {
+    let mut c = case.clone();
+    c.modification = c.modification.without_lead_keys();
+    c.operating.misalignment_um = None;
+    c.operating.misalignment_plane = None;
+    c
+}
+
+/// The lead gaps of a helical case with at least two slices and a gap that is not zero
+/// across the face (docs/MODEL.md 11.1): the static face load of `gearwear stiffness`
+/// (`study::face_load::face_load`), whose checks refuse what leaves no slice, or a single
+/// one, carrying load (exit 2 naming the keys); its warnings join `warnings`. None
+/// without lead keys, with one slice (a single gap, shifted to 0) or a zero gap (a
+/// misalignment in the normal plane): the unmodified model.
+fn lead_gaps(
+    hm: &HelicalModel,
+    warnings: &mut Vec<String>,
+) -> Result<Option<LeadDynamics>, ModelError> {
+    if lead_keys(&hm.case).is_empty() {
+        return Ok(None);
+    }
+    let static_load = face_load(hm)?;
+    warnings.extend(static_load.warnings.iter().cloned());
+    if hm.slices.slices() < 2 || static_load.gap.is_zero() {
+        return Ok(None);
+    }
+    Ok(Some(LeadDynamics {
+        slices: hm.slices.clone(),
+        static_load: static_load.load,
+        gap: static_load.gap,
+    }))
 }
 
 impl Model {
@@ -91,12 +137,13 @@ impl Model {
             )]));
         }
         let transverse = hp.transverse.clone();
-        let problems = domain_problems(case, &transverse);
+        let problems = domain_problems(&without_lead_keys(case), &transverse);
         if !problems.is_empty() {
             return Err(ModelError(problems));
         }
         let (line_pair, mesh, lead) = hm.slices.line_model();
         let mut warnings = hm.warnings.clone();
+        let gaps = lead_gaps(&hm, &mut warnings)?;
         let params = DynamicParams::from_case(case, &transverse);
         warnings.extend(body_value_warnings(
             case,
@@ -114,11 +161,15 @@ impl Model {
             case.contact.path = ContactPathModel::Nominal;
         }
         let path = (transverse.rho_start_m, transverse.rho_end_m);
-        let contact = if lead > 0.0 {
+        let mut contact = if lead > 0.0 {
             ContactPath::helical_lines(&line_pair, path, lead)
         } else {
             ContactPath::new(&line_pair, ContactPathModel::Nominal, MAX_PAIRS)
         };
+        if let Some(g) = &gaps {
+            let table = LineGapTable::new(&hm.slices, &g.static_load.gaps_m);
+            contact = contact.with_lead_gaps(table);
+        }
         Ok(Model {
             contact,
             grid: ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize),
@@ -131,6 +182,7 @@ impl Model {
                 slices: hm.slices.slices(),
                 slice_mean_stiffness_n_per_m: hm.slices.mean_stiffness_n_per_m(),
                 pair: hp,
+                lead: gaps,
             }),
             pair: line_pair,
             mesh,

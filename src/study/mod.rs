@@ -5,6 +5,7 @@ pub mod budget;
 pub mod dataset;
 pub mod domain;
 pub mod face_load;
+pub mod face_load_dynamic;
 pub mod helical;
 pub mod helical_dynamics;
 pub mod model;

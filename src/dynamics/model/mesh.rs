@@ -11,6 +11,7 @@ use crate::contact::load_sharing::pedrero_shares;
 use crate::dynamics::assembly::MeshGeometry;
 use crate::dynamics::drive::Drive;
 use crate::dynamics::tooth_mesh::ToothMesh;
+use crate::stiffness::helical_lead::LineGapTable;
 
 /// One mesh of a [`super::GearSystem`]: what it is made of, where it acts and its
 /// operating point.
@@ -106,6 +107,9 @@ impl TrainMesh<'_> {
         if let Some(tm) = self.parts.teeth {
             return self.springs_resolved(tm, frame, t_s, sp);
         }
+        if let Some(table) = self.parts.contact.lead_gaps() {
+            return self.springs_lead(table, frame, t_s, sp);
+        }
         let phase = self.phase_at(t_s);
         let omega_nom = self.nominal_speeds(t_s).0;
         let rb1 = self.parts.pair.pinion.base_radius_m;
@@ -163,6 +167,57 @@ impl TrainMesh<'_> {
         }
         sp.pushing = k_touch > 0.0 && frame.mode.map_or(sp.force_unclipped_n > 0.0, |m| m.pushing);
         sp
+    }
+
+    /// [`TrainMesh::springs`] of a helical pair's contact lines with lead gaps across the
+    /// face (docs/MODEL.md 11.1): each line's force is its slices',
+    /// F_l = sum_j k_j (c - G_j)+ (`LineGapTable::force`), so slices open one by one; a
+    /// line touches while its compression c = delta - (g - e) is above the smallest gap of
+    /// the face (0). The touching stiffness (the Jacobian's) is the tangent dF_l/dc; the
+    /// pair's stiffness the secant F_l / c (the tangent where c <= 0), so that the load
+    /// shares k_i c_i / sum of the forces are the lines' forces'. Kept out of line (cold):
+    /// the unmodified meshes' `springs` stays as small as it was.
+    #[cold]
+    #[inline(never)]
+    fn springs_lead(
+        &self,
+        table: &LineGapTable,
+        frame: MeshFrame,
+        t_s: f64,
+        mut sp: MeshSprings,
+    ) -> MeshSprings {
+        let phase = self.phase_at(t_s);
+        let (e_ext, de_ext) = self.parts.external.at(phase);
+        let frozen = frame.mode;
+        let decide = frame.decision_time_s.map_or(phase, |t| self.phase_at(t));
+        let contact = self.parts.contact;
+        let omega_nom = self.nominal_speeds(t_s).0;
+        let rb1 = self.parts.pair.pinion.base_radius_m;
+        let mut gap_rate_weighted = 0.0;
+        for (_, rho1) in self
+            .parts
+            .pair
+            .pairs_in_reach_decided(contact.reach(), phase, decide)
+            .take(MAX_PAIRS)
+        {
+            let n = sp.n_pairs;
+            let pp = contact.plain_pair(self.parts.mesh, self.parts.gap, rho1);
+            let c = sp.deflection_m - (pp.gap_m - e_ext);
+            let touching = frozen.map_or(c > 0.0, |m| m.touches(n));
+            let (f, k) = table.force(rho1, c, touching);
+            sp.rho1_m[n] = pp.contact_rho1_m;
+            sp.width_loss[n] = pp.width_loss;
+            sp.stiffness_n_per_m[n] = if c > 0.0 { f / c } else { k };
+            sp.compression_m[n] = c;
+            if touching {
+                sp.touching[n] = true;
+                sp.elastic_n += f;
+                sp.stiffness_touching_n_per_m += k;
+                gap_rate_weighted += k * (pp.gap_slope * rb1 * omega_nom - de_ext * omega_nom);
+            }
+            sp.n_pairs += 1;
+        }
+        self.close_springs(sp, gap_rate_weighted, frame)
     }
 
     /// [`TrainMesh::springs`] of a tooth-resolved mesh: each pair's teeth from its mesh
