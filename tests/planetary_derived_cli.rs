@@ -174,3 +174,15 @@ fn a_lumped_key_out_of_range_exits_2_naming_it() {
         &["planetary.lumped.bearing_stiffness_planet_n_per_m", "0"],
     );
 }
+
+#[test]
+fn signals_run_on_the_default_set_alone_and_report_the_values_used() {
+    // `[planetary]` with nothing else: the sensor on the ring hears the derived set; the
+    // values it used are those `gearwear stiffness` derives for the same set.
+    let (_d, sig) = run_case("signals", "[planetary]\n");
+    let (_e, st) = run_case("stiffness", "[planetary]\n");
+    assert_eq!(
+        sig["planetary_signals"]["lumped_parameters"],
+        st["planetary"]["lumped_parameters"]
+    );
+}
