@@ -57,7 +57,7 @@ fn lumped() -> LumpedPlanetarySection {
 fn planetary(c: &mut Criterion) {
     let case = Case {
         planetary: Some(PlanetarySection {
-            lumped: Some(lumped()),
+            lumped: Some(lumped().into()),
             ..PlanetarySection::default()
         }),
         ..Case::default()

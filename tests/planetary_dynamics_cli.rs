@@ -1,4 +1,5 @@
-//! `gearwear dynamics` on a planetary case (`[planetary]` with `[planetary.lumped]`),
+//! `gearwear dynamics` on a planetary case (`[planetary]` with `[planetary.lumped]`, or
+//! with its values derived from the geometry),
 //! checked against independent facts: the mean mesh forces against the static torque
 //! split (sun torque / (N r_bs) per sun mesh, the same on each ring mesh by a planet's
 //! torque balance), load sharing factors of 1 for equally spaced planets without errors,
@@ -7,8 +8,8 @@
 
 mod common;
 
-use common::planetary::lin_parker_lumped;
-use common::{gearwear, read_csv, rejected, stderr};
+use common::planetary::{lin_parker_lumped, run_case};
+use common::{read_csv, rejected};
 
 /// Carrier torsional support (the output's shaft to the load), N m/rad.
 const CARRIER_SHAFT: f64 = 1e6;
@@ -21,25 +22,15 @@ const SEQUENTIAL: (usize, usize, usize, usize) = (5, 26, 29, 84);
 /// Run `gearwear dynamics` on the set; its output folder (kept alive) and summary.
 fn dynamics_of(set: (usize, usize, usize, usize)) -> (tempfile::TempDir, serde_json::Value) {
     let (n, zs, zp, zr) = set;
-    let d = tempfile::tempdir().unwrap();
-    let case = d.path().join("case.toml");
-    let text = format!(
+    dynamics_of_text(&format!(
         "[planetary]\nplanets = {n}\nteeth_sun = {zs}\nteeth_planet = {zp}\nteeth_ring = {zr}\nmodule_mm = 2.0\n{}",
         lin_parker_lumped(CARRIER_SHAFT)
-    );
-    std::fs::write(&case, text).unwrap();
-    let out = d.path().join("out");
-    let o = gearwear(&[
-        "dynamics",
-        "-q",
-        "--config",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let s = std::fs::read_to_string(out.join("summary.json")).unwrap();
-    (d, serde_json::from_str(&s).unwrap())
+    ))
+}
+
+/// Run `gearwear dynamics` on the case `text`; its output folder (kept alive) and summary.
+fn dynamics_of_text(text: &str) -> (tempfile::TempDir, serde_json::Value) {
+    run_case("dynamics", text)
 }
 
 fn f(v: &serde_json::Value) -> f64 {
@@ -55,35 +46,54 @@ fn sun_base_radius_m(zs: usize) -> f64 {
 fn mean_mesh_forces_are_the_static_torque_split_and_planets_share_equally() {
     for set in [IN_PHASE, SEQUENTIAL] {
         let (_d, s) = dynamics_of(set);
-        let p = &s["planetary_dynamics"];
-        let (n, zs, _, _) = set;
-        // Sun in at the case's 60 N m: every sun mesh carries 60 / (N r_bs) on average
-        // (the sun's mean acceleration over a steady period is zero), and every ring
-        // mesh the same (a planet's torque balance: r_bp (F_s - F_r) has zero mean).
-        let want = 60.0 / (n as f64 * sun_base_radius_m(zs));
-        // The means are integrated between recorded samples with a midpoint rule whose
-        // error is at most 2e-5 of the mean (a stiffness jump times half a sub-interval),
-        // plus the integration's 1e-5 local tolerance: 1e-4 relative.
-        for m in p["meshes"].as_array().unwrap() {
-            let got = f(&m["mean_force_n"]);
-            assert!(
-                (got / want - 1.0).abs() < 1e-4,
-                "{}: {got} vs {want}",
-                m["mesh"]
-            );
-            assert!(f(&m["max_force_n"]) >= got, "{m}");
-        }
-        // Identical, equally spaced planets without errors: each carries 1/N (same
-        // tolerance, the factors are ratios of those means).
-        for l in p["load_sharing_factor"].as_array().unwrap() {
-            assert!((f(l) - 1.0).abs() < 1e-4, "{set:?}: {l}");
-        }
-        assert!(f(&p["dynamic_factor_sun_planet"]) >= 1.0);
-        // The recorded period is a period: integrated from the search's last start, its
-        // end state equals its start within the case's steady-state tolerance (1e-6 of
-        // the state's scales, `numerics.steady_state_tolerance`).
-        assert!(f(&p["periodicity"]) < 1e-6, "{set:?}: {}", p["periodicity"]);
+        check_static_split(&s, set);
     }
+}
+
+#[test]
+fn the_default_set_with_every_lumped_value_derived_balances_and_shares_equally() {
+    // `[planetary]` alone (24 / 30 / 84, four planets, module 2: IN_PHASE): masses,
+    // inertias and supports derived from the geometry (docs/MODEL.md 12.4).
+    let (_d, s) = dynamics_of_text("[planetary]\n");
+    check_static_split(&s, IN_PHASE);
+    let derived = s["planetary_dynamics"]["lumped_parameters"]["derived_keys"]
+        .as_array()
+        .unwrap()
+        .len();
+    assert_eq!(derived, 22, "every key of [planetary.lumped] derived");
+}
+
+/// The mean mesh forces of `s` (the summary of a run of `set` at the default 60 N m, sun
+/// in) are the static torque split, and the planets share equally.
+fn check_static_split(s: &serde_json::Value, set: (usize, usize, usize, usize)) {
+    let p = &s["planetary_dynamics"];
+    let (n, zs, _, _) = set;
+    // Sun in at the case's 60 N m: every sun mesh carries 60 / (N r_bs) on average
+    // (the sun's mean acceleration over a steady period is zero), and every ring
+    // mesh the same (a planet's torque balance: r_bp (F_s - F_r) has zero mean).
+    let want = 60.0 / (n as f64 * sun_base_radius_m(zs));
+    // The means are integrated between recorded samples with a midpoint rule whose
+    // error is at most 2e-5 of the mean (a stiffness jump times half a sub-interval),
+    // plus the integration's 1e-5 local tolerance: 1e-4 relative.
+    for m in p["meshes"].as_array().unwrap() {
+        let got = f(&m["mean_force_n"]);
+        assert!(
+            (got / want - 1.0).abs() < 1e-4,
+            "{}: {got} vs {want}",
+            m["mesh"]
+        );
+        assert!(f(&m["max_force_n"]) >= got, "{m}");
+    }
+    // Identical, equally spaced planets without errors: each carries 1/N (same
+    // tolerance, the factors are ratios of those means).
+    for l in p["load_sharing_factor"].as_array().unwrap() {
+        assert!((f(l) - 1.0).abs() < 1e-4, "{set:?}: {l}");
+    }
+    assert!(f(&p["dynamic_factor_sun_planet"]) >= 1.0);
+    // The recorded period is a period: integrated from the search's last start, its
+    // end state equals its start within the case's steady-state tolerance (1e-6 of
+    // the state's scales, `numerics.steady_state_tolerance`).
+    assert!(f(&p["periodicity"]) < 1e-6, "{set:?}: {}", p["periodicity"]);
 }
 
 /// |h-th DFT coefficient| / samples of `x` (one period).
@@ -144,10 +154,11 @@ fn bad_planetary_dynamics_inputs_exit_2_naming_the_key() {
         p.to_str().unwrap().to_owned()
     };
     let set = "[planetary]\nplanets = 4\n";
-    let no_lumped = case(set);
+    // One key out of its range in an otherwise derived table.
+    let negative = case(&format!("{set}[planetary.lumped]\nmass_ring_kg = -2\n"));
     rejected(
-        &["dynamics", "--config", &no_lumped],
-        &["planetary.lumped", "missing"],
+        &["dynamics", "--config", &negative],
+        &["planetary.lumped.mass_ring_kg", "-2", "(0, 1e6]"],
     );
     let free_output = case(&format!("{set}{}", lin_parker_lumped(0.0)));
     rejected(

@@ -2,6 +2,7 @@
 //! `[planetary.lumped]`, a set given by its lumped parameters (Lin & Parker 1999) so that
 //! published lumped models can be rebuilt (docs/MODEL.md section 12).
 
+use super::derivable::Derivable;
 use serde::{Deserialize, Serialize};
 
 /// A member of the set that can be an input, an output or fixed.
@@ -87,9 +88,10 @@ pub struct PlanetarySection {
     /// its meshes alone), whatever `[planetary.lumped]` gives; false: the lumped section's.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub floating_sun: bool,
-    /// A set given by its lumped parameters instead of its teeth' geometry.
+    /// The set's lumped parameters (masses, inertias, supports), each key optional: an
+    /// absent table or key is derived from the geometry (docs/MODEL.md 12.4).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub lumped: Option<LumpedPlanetarySection>,
+    pub lumped: Option<LumpedPlanetarySection<Derivable>>,
 }
 
 impl Default for PlanetarySection {
@@ -123,55 +125,192 @@ impl Default for PlanetarySection {
     }
 }
 
-/// `[planetary.lumped]`: the lumped parameters of Lin & Parker's (1999) model, every key
-/// required. Inertias are given as such; the model divides them by the radius squared.
+/// `[planetary.lumped]`: the lumped parameters of Lin & Parker's (1999) model.
+/// Inertias are given as such; the model divides them by the radius squared.
+///
+/// `P` is the type of every value: [`Derivable`] in a case, where an absent key or
+/// `"derived"` is computed from the set's geometry and `[dynamics]` when the model is
+/// built (`study::planetary_lumped`, docs/MODEL.md 12.4); `f64` once resolved (and in
+/// a published table given in full).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LumpedPlanetarySection {
+#[serde(
+    deny_unknown_fields,
+    default,
+    bound(
+        serialize = "P: Serialize",
+        deserialize = "P: Deserialize<'de>, LumpedPlanetarySection<P>: Default"
+    )
+)]
+pub struct LumpedPlanetarySection<P = f64> {
     /// Sun mass, kg.
-    pub mass_sun_kg: f64,
+    pub mass_sun_kg: P,
     /// Planet mass (each), kg.
-    pub mass_planet_kg: f64,
+    pub mass_planet_kg: P,
     /// Ring mass, kg.
-    pub mass_ring_kg: f64,
+    pub mass_ring_kg: P,
     /// Carrier mass, kg.
-    pub mass_carrier_kg: f64,
+    pub mass_carrier_kg: P,
     /// Sun polar moment of inertia, kg m^2.
-    pub inertia_sun_kg_m2: f64,
+    pub inertia_sun_kg_m2: P,
     /// Planet polar moment of inertia (each), kg m^2.
-    pub inertia_planet_kg_m2: f64,
+    pub inertia_planet_kg_m2: P,
     /// Ring polar moment of inertia, kg m^2.
-    pub inertia_ring_kg_m2: f64,
+    pub inertia_ring_kg_m2: P,
     /// Carrier polar moment of inertia, kg m^2.
-    pub inertia_carrier_kg_m2: f64,
+    pub inertia_carrier_kg_m2: P,
     /// Sun base radius, mm.
-    pub base_radius_sun_mm: f64,
+    pub base_radius_sun_mm: P,
     /// Planet base radius, mm.
-    pub base_radius_planet_mm: f64,
+    pub base_radius_planet_mm: P,
     /// Ring base radius, mm.
-    pub base_radius_ring_mm: f64,
+    pub base_radius_ring_mm: P,
     /// Carrier radius (sun centre to planet pin), mm.
-    pub carrier_radius_mm: f64,
+    pub carrier_radius_mm: P,
     /// Mean sun-planet mesh stiffness, N/m.
-    pub mesh_stiffness_sun_planet_n_per_m: f64,
+    pub mesh_stiffness_sun_planet_n_per_m: P,
     /// Mean ring-planet mesh stiffness, N/m.
-    pub mesh_stiffness_ring_planet_n_per_m: f64,
+    pub mesh_stiffness_ring_planet_n_per_m: P,
     /// Sun bearing stiffness (each lateral direction), N/m.
-    pub bearing_stiffness_sun_n_per_m: f64,
+    pub bearing_stiffness_sun_n_per_m: P,
     /// Planet bearing stiffness (radial and tangential), N/m.
-    pub bearing_stiffness_planet_n_per_m: f64,
+    pub bearing_stiffness_planet_n_per_m: P,
     /// Ring support stiffness (each lateral direction), N/m.
-    pub bearing_stiffness_ring_n_per_m: f64,
+    pub bearing_stiffness_ring_n_per_m: P,
     /// Carrier bearing stiffness (each lateral direction), N/m.
-    pub bearing_stiffness_carrier_n_per_m: f64,
+    pub bearing_stiffness_carrier_n_per_m: P,
     /// Sun torsional support stiffness, N m/rad.
-    pub torsional_stiffness_sun_nm_per_rad: f64,
+    pub torsional_stiffness_sun_nm_per_rad: P,
     /// Ring torsional support stiffness, N m/rad.
-    pub torsional_stiffness_ring_nm_per_rad: f64,
+    pub torsional_stiffness_ring_nm_per_rad: P,
     /// Carrier torsional support stiffness, N m/rad.
-    pub torsional_stiffness_carrier_nm_per_rad: f64,
+    pub torsional_stiffness_carrier_nm_per_rad: P,
     /// Operating pressure angle of both meshes, deg.
-    pub pressure_angle_deg: f64,
+    pub pressure_angle_deg: P,
+}
+
+impl Default for LumpedPlanetarySection<Derivable> {
+    /// Every key derived.
+    fn default() -> Self {
+        use Derivable::Derived;
+        Self {
+            mass_sun_kg: Derived,
+            mass_planet_kg: Derived,
+            mass_ring_kg: Derived,
+            mass_carrier_kg: Derived,
+            inertia_sun_kg_m2: Derived,
+            inertia_planet_kg_m2: Derived,
+            inertia_ring_kg_m2: Derived,
+            inertia_carrier_kg_m2: Derived,
+            base_radius_sun_mm: Derived,
+            base_radius_planet_mm: Derived,
+            base_radius_ring_mm: Derived,
+            carrier_radius_mm: Derived,
+            mesh_stiffness_sun_planet_n_per_m: Derived,
+            mesh_stiffness_ring_planet_n_per_m: Derived,
+            bearing_stiffness_sun_n_per_m: Derived,
+            bearing_stiffness_planet_n_per_m: Derived,
+            bearing_stiffness_ring_n_per_m: Derived,
+            bearing_stiffness_carrier_n_per_m: Derived,
+            torsional_stiffness_sun_nm_per_rad: Derived,
+            torsional_stiffness_ring_nm_per_rad: Derived,
+            torsional_stiffness_carrier_nm_per_rad: Derived,
+            pressure_angle_deg: Derived,
+        }
+    }
+}
+
+impl From<LumpedPlanetarySection<f64>> for LumpedPlanetarySection<Derivable> {
+    /// A table given in full (a published lumped model): every key given.
+    fn from(l: LumpedPlanetarySection<f64>) -> Self {
+        use Derivable::Given;
+        Self {
+            mass_sun_kg: Given(l.mass_sun_kg),
+            mass_planet_kg: Given(l.mass_planet_kg),
+            mass_ring_kg: Given(l.mass_ring_kg),
+            mass_carrier_kg: Given(l.mass_carrier_kg),
+            inertia_sun_kg_m2: Given(l.inertia_sun_kg_m2),
+            inertia_planet_kg_m2: Given(l.inertia_planet_kg_m2),
+            inertia_ring_kg_m2: Given(l.inertia_ring_kg_m2),
+            inertia_carrier_kg_m2: Given(l.inertia_carrier_kg_m2),
+            base_radius_sun_mm: Given(l.base_radius_sun_mm),
+            base_radius_planet_mm: Given(l.base_radius_planet_mm),
+            base_radius_ring_mm: Given(l.base_radius_ring_mm),
+            carrier_radius_mm: Given(l.carrier_radius_mm),
+            mesh_stiffness_sun_planet_n_per_m: Given(l.mesh_stiffness_sun_planet_n_per_m),
+            mesh_stiffness_ring_planet_n_per_m: Given(l.mesh_stiffness_ring_planet_n_per_m),
+            bearing_stiffness_sun_n_per_m: Given(l.bearing_stiffness_sun_n_per_m),
+            bearing_stiffness_planet_n_per_m: Given(l.bearing_stiffness_planet_n_per_m),
+            bearing_stiffness_ring_n_per_m: Given(l.bearing_stiffness_ring_n_per_m),
+            bearing_stiffness_carrier_n_per_m: Given(l.bearing_stiffness_carrier_n_per_m),
+            torsional_stiffness_sun_nm_per_rad: Given(l.torsional_stiffness_sun_nm_per_rad),
+            torsional_stiffness_ring_nm_per_rad: Given(l.torsional_stiffness_ring_nm_per_rad),
+            torsional_stiffness_carrier_nm_per_rad: Given(l.torsional_stiffness_carrier_nm_per_rad),
+            pressure_angle_deg: Given(l.pressure_angle_deg),
+        }
+    }
+}
+
+impl LumpedPlanetarySection<Derivable> {
+    /// The section with every absent or `"derived"` key replaced by `derived`'s value:
+    /// a given key always wins.
+    pub fn resolve(&self, derived: &LumpedPlanetarySection<f64>) -> LumpedPlanetarySection<f64> {
+        LumpedPlanetarySection {
+            mass_sun_kg: self.mass_sun_kg.or_derived(derived.mass_sun_kg),
+            mass_planet_kg: self.mass_planet_kg.or_derived(derived.mass_planet_kg),
+            mass_ring_kg: self.mass_ring_kg.or_derived(derived.mass_ring_kg),
+            mass_carrier_kg: self.mass_carrier_kg.or_derived(derived.mass_carrier_kg),
+            inertia_sun_kg_m2: self.inertia_sun_kg_m2.or_derived(derived.inertia_sun_kg_m2),
+            inertia_planet_kg_m2: self
+                .inertia_planet_kg_m2
+                .or_derived(derived.inertia_planet_kg_m2),
+            inertia_ring_kg_m2: self
+                .inertia_ring_kg_m2
+                .or_derived(derived.inertia_ring_kg_m2),
+            inertia_carrier_kg_m2: self
+                .inertia_carrier_kg_m2
+                .or_derived(derived.inertia_carrier_kg_m2),
+            base_radius_sun_mm: self
+                .base_radius_sun_mm
+                .or_derived(derived.base_radius_sun_mm),
+            base_radius_planet_mm: self
+                .base_radius_planet_mm
+                .or_derived(derived.base_radius_planet_mm),
+            base_radius_ring_mm: self
+                .base_radius_ring_mm
+                .or_derived(derived.base_radius_ring_mm),
+            carrier_radius_mm: self.carrier_radius_mm.or_derived(derived.carrier_radius_mm),
+            mesh_stiffness_sun_planet_n_per_m: self
+                .mesh_stiffness_sun_planet_n_per_m
+                .or_derived(derived.mesh_stiffness_sun_planet_n_per_m),
+            mesh_stiffness_ring_planet_n_per_m: self
+                .mesh_stiffness_ring_planet_n_per_m
+                .or_derived(derived.mesh_stiffness_ring_planet_n_per_m),
+            bearing_stiffness_sun_n_per_m: self
+                .bearing_stiffness_sun_n_per_m
+                .or_derived(derived.bearing_stiffness_sun_n_per_m),
+            bearing_stiffness_planet_n_per_m: self
+                .bearing_stiffness_planet_n_per_m
+                .or_derived(derived.bearing_stiffness_planet_n_per_m),
+            bearing_stiffness_ring_n_per_m: self
+                .bearing_stiffness_ring_n_per_m
+                .or_derived(derived.bearing_stiffness_ring_n_per_m),
+            bearing_stiffness_carrier_n_per_m: self
+                .bearing_stiffness_carrier_n_per_m
+                .or_derived(derived.bearing_stiffness_carrier_n_per_m),
+            torsional_stiffness_sun_nm_per_rad: self
+                .torsional_stiffness_sun_nm_per_rad
+                .or_derived(derived.torsional_stiffness_sun_nm_per_rad),
+            torsional_stiffness_ring_nm_per_rad: self
+                .torsional_stiffness_ring_nm_per_rad
+                .or_derived(derived.torsional_stiffness_ring_nm_per_rad),
+            torsional_stiffness_carrier_nm_per_rad: self
+                .torsional_stiffness_carrier_nm_per_rad
+                .or_derived(derived.torsional_stiffness_carrier_nm_per_rad),
+            pressure_angle_deg: self
+                .pressure_angle_deg
+                .or_derived(derived.pressure_angle_deg),
+        }
+    }
 }
 
 /// Largest planet pin position error, um: a millimetre, far beyond any carrier's

@@ -118,6 +118,7 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
             "planet_tangential_error_um": errors_um.iter().map(|e| e.0).collect::<Vec<_>>(),
             "planet_radial_error_um": errors_um.iter().map(|e| e.1).collect::<Vec<_>>(),
             "floating_sun": section.floating_sun,
+            "lumped_parameters": super::stiffness_planetary::lumped_json(&d.study),
             "dynamic_factor_sun_planet": dyn_factor(0..n),
             "dynamic_factor_ring_planet": dyn_factor(n..2 * n),
             "rotating_frame": "carrier frame without centripetal and gyroscopic terms",

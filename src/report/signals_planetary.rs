@@ -59,6 +59,7 @@ pub fn planetary_signals_artifacts(
             "planet_pass_hz": rec.planet_pass_hz,
             "samples_per_revolution": rec.revolution_n.len(),
             "mesh_harmonics": mesh,
+            "lumped_parameters": super::stiffness_planetary::lumped_json(&d.study),
         },
         // The acquisition as PHM datasets state it: rate, length, the channel's unit.
         "record": {

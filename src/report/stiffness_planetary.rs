@@ -46,6 +46,28 @@ fn kinematics_json(s: &PlanetaryStudy) -> serde_json::Value {
     })
 }
 
+/// The lumped parameters used (`[planetary.lumped]`'s units: kg, kg m^2, mm, N/m,
+/// N m/rad, deg) and the keys derived from the geometry (absent or `"derived"` in the
+/// case; docs/MODEL.md 12.4), so a user sees what the model took.
+pub(crate) fn lumped_json(s: &PlanetaryStudy) -> serde_json::Value {
+    let values = serde_json::to_value(&s.lumped).unwrap_or_default();
+    let given = s
+        .section
+        .lumped
+        .as_ref()
+        .and_then(|l| serde_json::to_value(l).ok())
+        .unwrap_or_default();
+    let derived: Vec<&String> = values
+        .as_object()
+        .map(|o| {
+            o.keys()
+                .filter(|k| !given[k.as_str()].is_number())
+                .collect()
+        })
+        .unwrap_or_default();
+    json!({ "values": values, "derived_keys": derived })
+}
+
 /// The modes block: each natural frequency with its class and multiplicity.
 fn modes_json(s: &PlanetaryStudy) -> serde_json::Value {
     match &s.modes {
@@ -53,7 +75,7 @@ fn modes_json(s: &PlanetaryStudy) -> serde_json::Value {
             "undamped_natural_frequencies_hz": modes.iter().map(|m| m.frequency_hz).collect::<Vec<_>>(),
             "mode_classes": modes.iter().map(|m| m.class.name()).collect::<Vec<_>>(),
             "multiplicities": modes.iter().map(|m| m.multiplicity).collect::<Vec<_>>(),
-            "source": "[planetary.lumped] (Lin & Parker 1999, time-invariant, carrier frame without gyroscopic terms)",
+            "source": "lumped_parameters: [planetary.lumped]'s given keys, the others derived from the geometry (Lin & Parker 1999, time-invariant, carrier frame without gyroscopic terms)",
         }),
         None => json!(null),
     }
@@ -84,6 +106,7 @@ pub fn planetary_stiffness_artifacts(s: &PlanetaryStudy) -> Artifacts {
                 "ring_to_sun_cycles": s.set.ring_sun_phase(),
             },
             "kinematics": kinematics_json(s),
+            "lumped_parameters": lumped_json(s),
             "modes": modes_json(s),
         },
         "warnings": s.warnings,

@@ -14,6 +14,7 @@ pub mod modes;
 pub mod paper;
 pub mod planetary;
 pub mod planetary_dynamics;
+pub mod planetary_lumped;
 pub mod planetary_signals;
 pub mod signal_record;
 pub mod sweep;

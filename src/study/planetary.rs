@@ -1,13 +1,15 @@
 //! The model objects of a planetary case (`[planetary]`) for `gearwear stiffness`: the
 //! set's geometry (`geometry::planetary`), the mean, smallest and largest stiffness of its
-//! two meshes, the member speeds and frequencies at the case's input speed, and, when
-//! `[planetary.lumped]` gives the lumped parameters, the time-invariant model's natural
-//! frequencies with each mode's class (Lin & Parker 1999; docs/MODEL.md section 12).
+//! two meshes, the member speeds and frequencies at the case's input speed, the lumped
+//! parameters (`[planetary.lumped]`'s given keys, the rest derived from the geometry by
+//! `study::planetary_lumped`), and the time-invariant model's natural frequencies with
+//! each mode's class (Lin & Parker 1999; docs/MODEL.md section 12).
 //! The set's dynamic model is `study::planetary_dynamics`; the pair's `Model::from_case` refuses a set.
 
 use super::model::ModelError;
+use super::planetary_lumped::derived_lumped;
 use crate::config::case::Case;
-use crate::config::planetary::PlanetarySection;
+use crate::config::planetary::{LumpedPlanetarySection, PlanetarySection};
 use crate::dynamics::planetary_lumped::{PlanetaryLumped, PlanetaryMode};
 use crate::geometry::planetary::PlanetarySet;
 use crate::io::Table;
@@ -35,7 +37,11 @@ pub struct PlanetaryStudy {
     pub speeds_hz: [f64; 3],
     /// Every mesh's stiffness over time with its phase (Parker & Lin 2004).
     pub meshes: PlanetaryMeshes,
-    /// The lumped model's modes, ascending, when `[planetary.lumped]` is given.
+    /// The lumped parameters used: `[planetary.lumped]`'s given keys, the others derived
+    /// from the geometry (`study::planetary_lumped`).
+    pub lumped: LumpedPlanetarySection,
+    /// The lumped model's modes, ascending (always given since the lumped parameters can
+    /// be derived).
     pub modes: Option<Vec<PlanetaryMode>>,
     /// Warnings of the geometry and the stiffness.
     pub warnings: Vec<String>,
@@ -73,15 +79,17 @@ impl PlanetaryStudy {
         let mut warnings = set.sun_planet.warnings.clone();
         warnings.extend(sun_mesh.warnings().iter().cloned());
         let speeds_hz = set.member_speeds(case.operating.input_speed_hz);
-        let modes = match &section.lumped {
-            Some(l) => Some(
-                PlanetaryLumped::from_section(l, set.planet_angles_rad.clone())
-                    .map_err(ModelError)?
-                    .modes(),
-            ),
-            None => None,
-        };
         let meshes = PlanetaryMeshes::new(&set, &sun_mesh, &ring_mesh);
+        let derived = derived_lumped(case, &set, meshes.mean_n_per_m());
+        let lumped = match &section.lumped {
+            Some(l) => l.resolve(&derived),
+            None => derived,
+        };
+        let modes = Some(
+            PlanetaryLumped::from_section(&lumped, set.planet_angles_rad.clone())
+                .map_err(ModelError)?
+                .modes(),
+        );
         Ok(Self {
             section,
             set,
@@ -89,6 +97,7 @@ impl PlanetaryStudy {
             sun_mesh,
             ring_mesh,
             speeds_hz,
+            lumped,
             modes,
             warnings,
         })

@@ -1,6 +1,7 @@
 //! `gearwear dynamics` on a planetary case: the dynamic model of the set
 //! (`dynamics::planetary_dynamic`) built from `[planetary]` (teeth, meshes, phases) and
-//! `[planetary.lumped]` (masses, inertias, supports), driven by a torque on the input
+//! the lumped parameters (masses, inertias, supports: `[planetary.lumped]`'s given keys,
+//! the others derived from the geometry, `study::planetary_lumped`), driven by a torque on the input
 //! member, its steady state, and the numbers of its summary: each mesh's mean and largest
 //! force, the load sharing factor per planet and the dynamic factor (docs/MODEL.md 12.5).
 //!
@@ -51,11 +52,9 @@ impl PlanetaryDynamics {
     /// Build the model from a validated case; `ModelError` names each missing or invalid key.
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         let study = PlanetaryStudy::from_case(case)?;
-        let Some(lumped) = &study.section.lumped else {
-            return Err(ModelError(vec!["`planetary.lumped` is missing: `gearwear dynamics` on a planetary set takes the members' masses, inertias and bearing and torsional supports from [planetary.lumped] (its radii, mean mesh stiffness and pressure angle are replaced by the geometry's)".into()]));
-        };
-        let mut params = PlanetaryLumped::from_section(lumped, study.set.planet_angles_rad.clone())
-            .map_err(ModelError)?;
+        let mut params =
+            PlanetaryLumped::from_section(&study.lumped, study.set.planet_angles_rad.clone())
+                .map_err(ModelError)?;
         let set = &study.set;
         let radius_m = [
             set.carrier_radius_m,
