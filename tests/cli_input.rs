@@ -327,35 +327,33 @@ fn the_built_in_case_is_quiet_and_speeds_are_taken_in_rpm_or_warned_about() {
 }
 
 #[test]
-fn below_the_lowest_speed_the_error_advises_more_nodes_and_the_advice_works() {
-    // 0.01 Hz on the default 200 nodes per mesh period: the fast poles ring after the
-    // first mesh event while the error scale shrinks with the speed, and the steps reach
-    // their floor (docs/MODEL.md). The advice must be the setting that helps: with 10
-    // times the nodes the run succeeds, while a 10 times tighter tolerance still fails
-    // (checked here, so the advice is tested against what the solver does).
+fn at_the_lowest_speed_the_steady_state_is_found_on_any_node_count() {
+    // 1e-6 Hz, the range's floor (a mesh period of ten days): the fast poles ring after
+    // every mesh event while the error scale (deflection x mesh frequency) shrinks with
+    // the speed, so the error control needs steps far below a node interval there
+    // (docs/MODEL.md, "Lowest speeds"; below ~0.02 Hz this once stopped the run). The
+    // steady state must be found on 200 and on 20 nodes and with a tighter tolerance,
+    // and its dynamic factor must be the quasi-static one's, 1 within 1e-3 (an inertial
+    // excess that vanishes with the speed; measured 1e-6).
     let dir = tempfile::tempdir().unwrap();
-    let run = |extra: &[&str], name: &str| {
+    for (name, extra) in [
+        ("default", vec![]),
+        ("coarse", vec!["--set", "numerics.steps_per_mesh_period=20"]),
+        (
+            "tight",
+            vec!["--set", "numerics.integration_tolerance=1e-6"],
+        ),
+    ] {
         let out = dir.path().join(name);
-        let mut a = vec!["dynamics", "--set", "operating.input_speed_hz=0.01"];
+        let mut a = vec!["dynamics", "--set", "operating.input_speed_hz=1e-6"];
         a.extend(extra);
         a.extend(["--out", out.to_str().unwrap()]);
-        gearwear(&a)
-    };
-    let o = run(&[], "default");
-    assert!(!o.status.success());
-    let err = stderr(&o);
-    assert!(
-        err.contains("raise numerics.steps_per_mesh_period")
-            && err.contains("200 node intervals")
-            && err.contains("smaller numerics.integration_tolerance asks for smaller steps still and does not help")
-            && !err.contains("lower numerics.integration_tolerance"),
-        "{err}"
-    );
-    assert!(
-        !run(&["--set", "numerics.integration_tolerance=1e-6"], "tight")
-            .status
-            .success()
-    );
-    let o = run(&["--set", "numerics.steps_per_mesh_period=2000"], "nodes");
-    assert!(o.status.success(), "{}", stderr(&o));
+        let o = gearwear(&a);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        let df = summary["mesh_force"]["dynamic_factor"].as_f64().unwrap();
+        assert!((df - 1.0).abs() < 1e-3, "{name}: {df}");
+    }
 }

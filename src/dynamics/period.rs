@@ -57,11 +57,10 @@ const TIGHT_TOLERANCE: f64 = 1e-7;
 /// results stay those of before the option existed).
 const TRAIN_KEPT_MATRICES: usize = 3;
 
-/// What helps after a failed step. Where the steps reach the floor (the slowest speeds:
-/// the fast poles ring after each mesh event while the error scale shrinks with the
-/// speed, docs/MODEL.md), only more grid nodes do: a step never crosses a node and the
-/// floor is a fixed fraction of the node spacing. A smaller tolerance asks for smaller
-/// steps still.
+/// What helps after a failed step: more grid nodes (a step never crosses a node, so the
+/// error control restarts from shorter steps at every node, and the floor
+/// [`H_MIN_FLOOR_S`] is at most a fixed fraction of the node spacing). A smaller
+/// tolerance asks for smaller steps still.
 fn advice(intervals: usize, tolerance: f64) -> String {
     let tight = if tolerance < TIGHT_TOLERANCE {
         format!(
@@ -71,7 +70,7 @@ fn advice(intervals: usize, tolerance: f64) -> String {
         String::new()
     };
     format!(
-        "raise numerics.steps_per_mesh_period (the period has {intervals} node intervals; 10 times as many let the error control take the short steps it needs: 2000 solve 0.01 Hz input on the built-in case); a smaller numerics.integration_tolerance asks for smaller steps still and does not help{tight}"
+        "raise numerics.steps_per_mesh_period (the period has {intervals} node intervals; more nodes let the error control restart from shorter steps at each of them); a smaller numerics.integration_tolerance asks for smaller steps still and does not help{tight}"
     )
 }
 
@@ -178,6 +177,14 @@ pub fn period_stepper<'s, 'a>(
     })
 }
 
+/// The smallest step the error control may take, s, at most: 1e-7 of the shortest node
+/// interval, and never above 1e-12 s. At a very low speed the node intervals are long
+/// while the velocity tolerance (`state_scales`: delta x the mesh frequency) shrinks with
+/// the speed, so a small jump of the acceleration (a contact switching exactly at a node)
+/// needs a step far below 1e-7 of an interval to meet it; the floor lets it take one and
+/// grow again (a few dozen steps), where 1e-7 of the interval failed below about 0.02 Hz
+/// input on the built-in case. At the paper's speed 1e-7 of an interval is already lower.
+const H_MIN_FLOOR_S: f64 = 1e-12;
 /// Steps the gear model over whole periods (see module docs), states of dimension `D`.
 pub struct PeriodStepper<'s, 'a, D: Dim>
 where
@@ -280,7 +287,7 @@ where
             dim,
             stepper,
             meshes: vec![MeshState::default(); sys.meshes.len()],
-            h_min: 1e-7 * min_gap,
+            h_min: (1e-7 * min_gap).min(H_MIN_FLOOR_S),
             tolerance,
             plan: Vec::new(),
             plan_mode: PlanMode::Free,
