@@ -85,24 +85,21 @@ fn a_train_too_large_for_the_budget_is_refused_before_it_runs() {
 }
 
 #[test]
-fn a_single_pair_study_refuses_a_train_before_its_budget_check() {
-    // The same train with a grid far over any study's budget: each single-pair study
-    // names the train and what runs on one, not the budget (whose estimate is the single
-    // pair's and would mislead).
+fn a_train_over_the_budget_is_refused_by_its_own_estimate() {
+    // The same train with a grid far over any study's budget. `run` and `signals` take a
+    // train: each is refused by the train's estimate (its wear and dynamics estimates for
+    // `run`, the dynamics one with the train's cost factor for `signals`), before any work.
+    // The studies that take a single pair only refuse the train first
+    // (`sweeps_and_datasets_refuse_a_train_before_any_case_runs`).
     let dir = tempfile::tempdir().unwrap();
     let file = case_file(
         &dir,
         &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}\n[numerics]\nsteps_per_mesh_period = 20000\n"),
     );
-    let err = rejected(
-        &["run", "--config", &file],
-        &["this case is a gear train", "`gearwear dynamics`"],
-    );
-    assert!(!err.contains("budget"), "run: {err}");
-    // `signals` takes a train: its estimate is the train's (the dynamics one with the
-    // train's cost factor), which this grid exceeds.
-    let err = rejected(&["signals", "--config", &file], &["budget"]);
-    assert!(!err.contains("this case is a gear train"), "{err}");
+    for study in ["run", "signals"] {
+        let err = rejected(&[study, "--config", &file], &["over its budget"]);
+        assert!(!err.contains("this case is a gear train"), "{study}: {err}");
+    }
 }
 
 #[test]
