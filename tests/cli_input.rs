@@ -357,3 +357,30 @@ fn at_the_lowest_speed_the_steady_state_is_found_on_any_node_count() {
         assert!((df - 1.0).abs() < 1e-3, "{name}: {df}");
     }
 }
+
+#[test]
+fn a_tolerance_round_off_cannot_meet_fails_with_advice_instead_of_stepping_forever() {
+    // 1e-6 Hz on 20 nodes at the tolerance's floor region (1e-8): the velocity scale is
+    // ~1e-11 m/s, so the error estimate is round-off and the error control would step at
+    // the step floor (1e-12 s) through node intervals of an hour. The evaluation must stop
+    // (a bound on the steps per node interval) and say which setting may help.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o");
+    let o = gearwear(&[
+        "dynamics",
+        "--set",
+        "operating.input_speed_hz=1e-6",
+        "--set",
+        "numerics.steps_per_mesh_period=20",
+        "--set",
+        "numerics.integration_tolerance=1e-8",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("steps in one node interval") && err.contains("a larger value may help"),
+        "{err}"
+    );
+}

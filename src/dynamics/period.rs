@@ -185,6 +185,13 @@ pub fn period_stepper<'s, 'a>(
 /// grow again (a few dozen steps), where 1e-7 of the interval failed below about 0.02 Hz
 /// input on the built-in case. At the paper's speed 1e-7 of an interval is already lower.
 const H_MIN_FLOOR_S: f64 = 1e-12;
+
+/// Most steps the error control may take within one node interval before the evaluation
+/// stops with its advice: the built-in case takes about one, a slow or coarse grid tens.
+/// With the floor [`H_MIN_FLOOR_S`] far below a long interval, a tolerance the state's
+/// round-off cannot meet (1e-8 at 1e-6 Hz input on 20 nodes) would otherwise step on at
+/// the floor for days instead of failing.
+const MAX_STEPS_PER_INTERVAL: usize = 20_000;
 /// Steps the gear model over whole periods (see module docs), states of dimension `D`.
 pub struct PeriodStepper<'s, 'a, D: Dim>
 where
@@ -368,7 +375,19 @@ where
         for k in 1..n {
             let tb = t0 + self.nodes[k];
             let mut t = t0 + self.nodes[k - 1];
+            let mut steps_here = 0_usize;
             while t < tb {
+                steps_here += 1;
+                if steps_here > MAX_STEPS_PER_INTERVAL {
+                    return Err(self.failure(
+                        t,
+                        y,
+                        format!(
+                            "the error control took more than {MAX_STEPS_PER_INTERVAL} steps in one node interval (the last {h_prop:.2e} s of {:.2e} s)",
+                            self.nodes[k] - self.nodes[k - 1]
+                        ),
+                    ));
+                }
                 let (h, target) = self.next_step(t0, t, tb, h_prop, &mut next_plan);
                 let (trial, event) = self.step(t, y, h, mode, &mut h_prop)?;
                 let t_new = if trial.h == h && h == target - t {
