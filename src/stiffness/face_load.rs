@@ -212,7 +212,7 @@ impl FaceLoad {
 
     /// Largest value of a distribution `w` over the mean load per unit face width w_m.
     fn peak_over_mean(&self, w: &[f64]) -> f64 {
-        w.iter().fold(0.0_f64, |a, w| a.max(*w)) / self.mean_load_per_width_n_per_m()
+        peak_of(w) / self.mean_load_per_width_n_per_m()
     }
 
     /// K_Hbeta = w_max / w_m of the period-mean distribution (module docs).
@@ -227,12 +227,7 @@ impl FaceLoad {
 
     /// Centre of pressure of a distribution `w` over the slices, m from y = 0.
     pub fn centre_of(&self, w: &[f64]) -> f64 {
-        let total: f64 = w.iter().sum();
-        w.iter()
-            .zip(&self.positions_m)
-            .map(|(w, y)| w * y)
-            .sum::<f64>()
-            / total
+        centre_of_pressure(w, &self.positions_m)
     }
 
     /// Centre of pressure of the period-mean distribution, m from y = 0.
@@ -248,6 +243,20 @@ impl FaceLoad {
             .min()
             .unwrap_or(0)
     }
+}
+
+/// Largest load per unit face width of a distribution `w` over the slices (0 for none),
+/// N/m: the peak of ISO 6336-1's K_Hbeta = w_max / w_m.
+pub fn peak_of(w: &[f64]) -> f64 {
+    w.iter().fold(0.0_f64, |a, w| a.max(*w))
+}
+
+/// Centre of pressure sum_j y_j w_j / sum_j w_j of a distribution `w` (any unit) over the
+/// slices at positions `positions_m` (m from y = 0), m: the static face load's and the
+/// dynamic one's (`study::face_load_dynamic`).
+pub fn centre_of_pressure(w: &[f64], positions_m: &[f64]) -> f64 {
+    let total: f64 = w.iter().sum();
+    w.iter().zip(positions_m).map(|(w, y)| w * y).sum::<f64>() / total
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@ use super::Model;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::response::DynamicResponse;
+use crate::stiffness::face_load::{centre_of_pressure, peak_of};
 
 /// The face load over the steady state (module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -105,7 +106,7 @@ impl DynamicFaceLoad {
             }
             moment.push(m);
         }
-        let peak_n_per_m = max.iter().fold(0.0_f64, |a, w| a.max(*w));
+        let peak_n_per_m = peak_of(&max);
         Some(Self {
             positions_m: y,
             face_width_m: b,
@@ -126,8 +127,7 @@ impl DynamicFaceLoad {
 
     /// K_Hbeta = max_j w_bar_j / w_m of the time-mean distribution.
     pub fn k_h_beta(&self) -> f64 {
-        let peak = self.mean_n_per_m.iter().fold(0.0_f64, |a, w| a.max(*w));
-        peak / self.mean_load_per_width_n_per_m()
+        peak_of(&self.mean_n_per_m) / self.mean_load_per_width_n_per_m()
     }
 
     /// The largest instantaneous max_j w_j / w_m over the samples.
@@ -137,13 +137,7 @@ impl DynamicFaceLoad {
 
     /// Centre of pressure of the time-mean distribution, m from y = 0.
     pub fn centre_of_pressure_m(&self) -> f64 {
-        let total: f64 = self.mean_n_per_m.iter().sum();
-        self.mean_n_per_m
-            .iter()
-            .zip(&self.positions_m)
-            .map(|(w, y)| w * y)
-            .sum::<f64>()
-            / total
+        centre_of_pressure(&self.mean_n_per_m, &self.positions_m)
     }
 
     /// The tilting moment's time mean, smallest and largest value, N m: the moment about
