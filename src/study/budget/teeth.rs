@@ -21,7 +21,9 @@ fn differ(v: &Option<Vec<f64>>) -> bool {
 
 /// Mesh periods the excitation of `case` repeats over, from the case alone (the run
 /// budget's estimate, before any model is built): z of each gear whose teeth differ
-/// (errors given or drawn, a fault on one of its teeth, run-out), their lcm. Modified or
+/// (errors given or drawn, a fault on one of its teeth, run-out), their lcm. An ISO grade
+/// draws only the error arrays a gear does not give (`study::teeth::errors`), so a gear
+/// that gives all three arrays alike keeps its teeth alike under a grade. Modified or
 /// worn teeth alike on a gear keep it at one. The model's period is the smallest shift
 /// that repeats every engagement (`dynamics::tooth_mesh::sequence_period`), which
 /// divides this; per-tooth wear never lengthens it (a tooth's wear follows the
@@ -31,18 +33,29 @@ pub fn excitation_periods_of(case: &Case) -> usize {
     let t = &case.teeth;
     let drawn = t.accuracy_grade.is_some();
     let fault_on = |m: Member| case.fault.iter().any(|f| f.gear == m);
-    let pinion = drawn
-        || differ(&t.pitch_error_pinion_um)
-        || differ(&t.profile_slope_pinion_um)
-        || differ(&t.profile_form_pinion_um)
-        || t.runout_pinion_um.is_some_and(|r| r > 0.0)
-        || fault_on(Member::Pinion);
-    let gear = drawn
-        || differ(&t.pitch_error_gear_um)
-        || differ(&t.profile_slope_gear_um)
-        || differ(&t.profile_form_gear_um)
-        || t.runout_gear_um.is_some_and(|r| r > 0.0)
-        || fault_on(Member::Gear);
+    let varies = |arrays: [&Option<Vec<f64>>; 3], runout: Option<f64>, m: Member| {
+        arrays.iter().any(|a| differ(a) || (drawn && a.is_none()))
+            || runout.is_some_and(|r| r > 0.0)
+            || fault_on(m)
+    };
+    let pinion = varies(
+        [
+            &t.pitch_error_pinion_um,
+            &t.profile_slope_pinion_um,
+            &t.profile_form_pinion_um,
+        ],
+        t.runout_pinion_um,
+        Member::Pinion,
+    );
+    let gear = varies(
+        [
+            &t.pitch_error_gear_um,
+            &t.profile_slope_gear_um,
+            &t.profile_form_gear_um,
+        ],
+        t.runout_gear_um,
+        Member::Gear,
+    );
     let z = |varies: bool, z: i64| if varies { z.max(1) as usize } else { 1 };
     crate::dynamics::tooth_mesh::lcm(
         z(pinion, case.gear.teeth_pinion),
@@ -109,6 +122,9 @@ mod tests {
     use super::*;
     use crate::study::budget::{estimate, Budget, Job};
 
+    /// The paper's gear's 31 pitch errors, all zero.
+    const GEAR_PITCH_ZEROS: &str = "teeth.pitch_error_gear_um=[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]";
+
     fn case(sets: &[&str]) -> Case {
         crate::config::load::default_with(sets)
     }
@@ -126,6 +142,26 @@ mod tests {
             ),
             (vec!["teeth.runout_gear_um=3"], 31),
             (vec!["teeth.accuracy_grade=5"], 589),
+            // The grade draws only what a gear does not give: the gear's three arrays
+            // given alike leave the pinion's 19 teeth the only ones that differ.
+            (
+                vec![
+                    "teeth.accuracy_grade=6",
+                    GEAR_PITCH_ZEROS,
+                    "teeth.profile_slope_gear_um=[0.0]",
+                    "teeth.profile_form_gear_um=[0.0]",
+                ],
+                19,
+            ),
+            // Two of the three given: the third is still drawn.
+            (
+                vec![
+                    "teeth.accuracy_grade=6",
+                    "teeth.profile_slope_gear_um=[0.0]",
+                    "teeth.profile_form_gear_um=[0.0]",
+                ],
+                589,
+            ),
             (
                 vec![
                     "fault.kind=crack",
