@@ -291,8 +291,10 @@ impl PredictJob {
                     SampleSource::Posterior { rows, .. } => rows.len(),
                     SampleSource::Prior(_) => 0,
                 },
-                future_bins: future.map_or(0, |f| f.spectrum.bins.len()),
-                future_from_cycles: future.map_or(0.0, |f| f.from_cycles),
+                future: future.map(|f| crate::study::budget::chains::FutureDutyJob {
+                    spectrum: &f.spectrum,
+                    from_cycles: f.from_cycles,
+                }),
             },
         );
         budget::check_estimate(&e, self.budget.as_ref())

@@ -2,6 +2,7 @@
 //! disk has its own budget, checked with the design).
 
 use super::case_jobs::{estimate, Job};
+use super::chains::run_to_failure_seconds;
 use super::cost::{Estimate, Term, BASE_BYTES};
 use super::evaluation::SLOWER_MACHINE_FACTOR;
 use super::signals::BYTES_PER_SAMPLE_CHANNEL;
@@ -28,9 +29,14 @@ pub struct RecordSize {
 
 /// The cost of (a shard of) a dataset against the run budget, before anything is
 /// computed (the disk has its own budget): each condition's run-to-failure trajectory
-/// costs at most a dynamic wear study to `max_cycles` (it stops earlier at the wear
-/// limit), each physical state of the shard one dynamic evaluation at its speed and load
-/// (the costliest of the lowest and highest speed and load of its condition), and each of
+/// costs the updates of a dynamic wear study to `max_cycles` (it stops earlier at the
+/// wear limit), one from rest and the others warm-started, without a wear study's
+/// checkpoints and tables (`study::dataset::trajectory`); each physical state of the
+/// shard one dynamic evaluation from rest at its speed and load (the costliest of the
+/// lowest and highest speed and load of its condition), at the rates of run-to-failure
+/// evaluations ([`run_to_failure_seconds`]: measured, times the slower-machine factor;
+/// issue 33: the trajectory was a whole `wear` study and each state a `dynamics` run,
+/// both under the slow-speed bounds of any case, 4-6 times the measured CPU); and each of
 /// its records (noise, files) its samples x (a base + its channels) at the rates
 /// measured for datasets. Memory: the costliest single study, or the longest record, on
 /// each of `threads` threads. Counts are floats (never wrap: the record count of a design
@@ -68,7 +74,7 @@ pub fn estimate_dataset(
                 quasi_static: false,
             },
         );
-        trajectories_s += w.seconds();
+        trajectories_s += run_to_failure_seconds(&case, w.wear_updates_dynamic);
         bytes = bytes.max(w.memory_bytes());
         for speed in ends(&d.speeds_hz) {
             for torque in ends(&d.torques_nm) {
@@ -79,7 +85,7 @@ pub fn estimate_dataset(
                     ..case.load_point()
                 });
                 let e = estimate(&case, Job::Dynamics);
-                state_s = state_s.max(e.seconds());
+                state_s = state_s.max(run_to_failure_seconds(&case, 1.0));
                 bytes = bytes.max(e.memory_bytes());
             }
         }

@@ -24,6 +24,7 @@
 //! explicit choice; it is resumable and shardable).
 
 pub mod case_jobs;
+pub mod chains;
 pub mod cost;
 pub mod dataset;
 pub mod evaluation;

@@ -1,0 +1,337 @@
+//! The surrogate's reference runs counted the way `prognostics::surrogate::chain` makes
+//! them, before any is made: the nodes of k, the runs computed (a parallel batch past the
+//! last one kept included), each run's updates in each phase of its duty, and their CPU
+//! time at the rates of run-to-failure evaluations
+//! ([`super::evaluation::run_to_failure_scale`]).
+//!
+//! - Without a change of duty: k_j = k_lo 2^j below k_hi, runs made in batches of the
+//!   thread count, up to the batch holding the first run whose blocks are cut by the wear
+//!   threshold; run j goes to H k_(j+1) / k_j cycles (k_hi after the last node), and the
+//!   last kept run is extended to H k_hi / k_j (resumed; under a load spectrum made again).
+//! - Under a change of duty (a future spectrum from N0 cycles): every node of the finer
+//!   grid (ratio `max(2^(1/4), (k_hi / k_lo)^(1/16))`, `future_node_ratio`) and k_hi is
+//!   its own run to H k_(j+1) / k_j; a run makes the blocks of its own duty to N0 and then
+//!   starts again from the state at N0 under the future one (`forward::run_duty_trajectory`),
+//!   so each phase has its own first update and blocks cut on its own wear per cycle (the
+//!   doubling's count, before issue 33, missed the finer nodes and the second phase).
+//!
+//! Each phase makes 1 + ceil(cycles / n) updates (n the block cut on the phase's wear per
+//! cycle, `prognostics::updates`), no more than its stop depth allows; every update
+//! evaluates every bin of the duty in force, the first from rest.
+
+use super::evaluation::{
+    dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, DYNAMIC_WEAR_FACTOR,
+    SECONDS_PER_TABLE_POINT, SLOWER_MACHINE_FACTOR,
+};
+use super::teeth::excitation_periods_of;
+use crate::config::case::{Case, NumericsSection};
+use crate::config::operating::LoadSpectrumSection;
+use crate::geometry::GearPair;
+
+/// What the estimates need of the parameters' span (a calibration's prior, the span of a
+/// prediction's samples): numbers, built by prognostics (`From<&Prior>`), so that the
+/// cost model imports nothing above it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParameterSpan {
+    /// Smallest and largest wear coefficient, m^2/N.
+    pub wear_coefficient_min_m2_per_n: f64,
+    pub wear_coefficient_max_m2_per_n: f64,
+    /// Largest load torque, N m.
+    pub load_torque_max_nm: f64,
+    /// Parameters not fixed.
+    pub free: usize,
+    /// Parameters not fixed besides the wear coefficient: the surrogate's axes other than k.
+    pub free_besides_wear_coefficient: usize,
+}
+
+/// CPU time of one dynamic evaluation from rest of a run-to-failure job (a dataset's
+/// physical state, the first update of a wear run; the model built), on the built-in case
+/// at its 30 Hz, s: measured 15 ms (9 physical states against 1 of a dataset, 0.13 s more,
+/// 2026-11-29). The steady-state search from rest takes 2-5 shooting periods at 0.2-300 Hz
+/// (`periods_to_converge` of `gearwear dynamics`), not the 30 that
+/// [`super::evaluation::PERIODS_TO_SETTLE_PER_DECADE`] bounds for the other jobs.
+pub const SECONDS_PER_COLD_EVALUATION: f64 = 15e-3;
+/// CPU time of one further wear update of a run (warm-started from the previous update's
+/// periodic state, about one shooting period, and the wear increment), built-in case at
+/// 30 Hz, s: measured 4 ms (trajectories of 17 against 7 and 2 updates, 2026-11-29).
+pub const SECONDS_PER_WARM_UPDATE: f64 = 4e-3;
+/// Mesh period of the built-in case at 30 Hz, where the two rates above were measured, s.
+const MEASURED_MESH_PERIOD_S: f64 = 1.0 / 570.0;
+/// Mesh period beyond which a period costs no more steps, s: the error control's steps
+/// per period stop growing (489 at 263 ms, 455 at 105 ms).
+const SLOWEST_MESH_PERIOD_S: f64 = 0.25;
+
+/// How much dearer a run-to-failure evaluation of `case` is than the built-in case's at
+/// 30 Hz (dimensionless): (T_m / T_30Hz)^(1/3) for its mesh period T_m in [T_30Hz, 0.25
+/// s], the error control taking more steps in a longer period (each contact event rings
+/// down within it), measured: a warm update costs 4, 7.5 and 16 ms at 30, 5 and 0.5 Hz
+/// (ratios 1, 1.9 and 4.0 against 1, 1.8 and 3.9 by the power law), the steps of a search
+/// from rest per period 171, 373, 455 and 489 at 30, 5, 0.5 and 0.2 Hz, and no fewer than
+/// 167 at 50-300 Hz (so a shorter period is counted as 30 Hz's); times S_d over the
+/// built-in S_d ([`dynamic_steps_per_period`]: finer grids and tolerances), the excitation
+/// periods of a tooth-resolved case and [`train_factor`]. Bounds a case with modes like
+/// the built-in one's; the general estimates ([`super::evaluation::SECONDS_PER_STEP`]) stay the bound for
+/// any case.
+pub fn run_to_failure_scale(case: &Case) -> f64 {
+    let teeth = case.gear.teeth_pinion.max(1) as f64;
+    let t_m = 1.0 / (teeth * case.operating.input_speed_hz);
+    let speed = if t_m.is_finite() {
+        (t_m.clamp(MEASURED_MESH_PERIOD_S, SLOWEST_MESH_PERIOD_S) / MEASURED_MESH_PERIOD_S).cbrt()
+    } else {
+        (SLOWEST_MESH_PERIOD_S / MEASURED_MESH_PERIOD_S).cbrt()
+    };
+    let steps = dynamic_steps_per_period(&case.numerics)
+        / dynamic_steps_per_period(&NumericsSection::default());
+    let periods = excitation_periods_of(case).max(1) as f64;
+    speed * steps.max(1.0) * periods * train_factor(case)
+}
+
+/// CPU seconds of a run of `updates` wear updates of `case` in a run-to-failure job: the
+/// mesh-stiffness table, one evaluation from rest and `updates` - 1 warm ones, at the
+/// rates above times [`run_to_failure_scale`] and [`SLOWER_MACHINE_FACTOR`].
+pub fn run_to_failure_seconds(case: &Case, updates: f64) -> f64 {
+    let table = 2.0 * case.stiffness.table_points_per_mesh_period as f64 * SECONDS_PER_TABLE_POINT;
+    let evals = SECONDS_PER_COLD_EVALUATION + (updates - 1.0).max(0.0) * SECONDS_PER_WARM_UPDATE;
+    table + evals * run_to_failure_scale(case) * SLOWER_MACHINE_FACTOR
+}
+
+/// Mean mesh stiffness per face width of ISO 6336-1 (c'_gamma ~ 20 N/(mm um)), N/m^2:
+/// only the scale of the elastic approach of the teeth.
+const ISO_MESH_STIFFNESS_PER_WIDTH: f64 = 2e10;
+/// Wear depth at which a run stops because the teeth lose contact, in elastic approaches
+/// F_n / (c'_gamma b): measured 8.6-36 on four cases (the built-in one at 75 um, 300 N m
+/// at 360 um, module 4 at 20 N m at 51 um, 5 N m at 6.7 um); 50 leaves margin.
+const STOP_DEPTH_IN_APPROACHES: f64 = 50.0;
+/// The stop depth is taken as at least this, m.
+const MIN_STOP_DEPTH_M: f64 = 100e-6;
+
+/// Largest wear depth a wear run of `case` reaches before the teeth lose contact and it
+/// stops (`wear_loop::MAX_CONTACT_LOSS_FRACTION`), m: [`STOP_DEPTH_IN_APPROACHES`]
+/// elastic approaches under the nominal load, at least [`MIN_STOP_DEPTH_M`]. The
+/// surrogate's runs at the prior's largest k stop there long before their horizon.
+fn stop_depth_m(case: &Case) -> f64 {
+    let Ok(pair) = GearPair::from_case(&case.gear) else {
+        return f64::INFINITY;
+    };
+    let rb = match case.operating.load_torque_shaft {
+        crate::config::case::TorqueShaft::Pinion => pair.pinion.base_radius_m,
+        crate::config::case::TorqueShaft::Gear => pair.gear.base_radius_m,
+    };
+    let approach =
+        case.operating.load_torque_nm / rb / (ISO_MESH_STIFFNESS_PER_WIDTH * pair.face_width_m);
+    (STOP_DEPTH_IN_APPROACHES * approach).max(MIN_STOP_DEPTH_M)
+}
+
+/// Updates of one wear run to `total` cycles at per-cycle wear `rate` m: the blocks of
+/// `wear.block_cycles` cut to the threshold, and no more updates than the wear depth
+/// `depth_m` left before the run stops allows (a block adds its cycles times the rate at
+/// the deepest point; [`stop_depth_m`] for a run from new teeth).
+fn updates_within(case: &Case, rate: f64, total: f64, depth_m: f64) -> f64 {
+    let w = &case.wear;
+    let threshold = w.threshold_um * 1e-6;
+    let mut block = w.block_cycles;
+    if rate > 0.0 && block * rate > threshold {
+        block = (threshold / rate).floor().max(1.0);
+    }
+    let cap = if rate > 0.0 {
+        (depth_m.max(0.0) / (block * rate)).ceil()
+    } else {
+        f64::INFINITY
+    };
+    1.0 + (total / block).ceil().min(cap)
+}
+
+/// A duty a run follows for a while: its wear per cycle per unit k (m per m^2/N, with the
+/// dynamic margin), and the seconds of its first update (every bin from rest, each bin's
+/// table) and of each further one (every bin warm).
+#[derive(Debug, Clone, Copy)]
+struct Duty {
+    rate_per_k: f64,
+    first_s: f64,
+    further_s: f64,
+    bins: f64,
+    /// Wear depth at which a run under this duty stops, m: the smallest of its bins'
+    /// (contact is lost first under the lightest load, whose elastic approach is the
+    /// smallest).
+    stop_m: f64,
+}
+
+impl Duty {
+    /// The duty of `case` (its load spectrum, or its operating point) at the span's
+    /// largest torque.
+    fn of(case: &Case, span: &ParameterSpan) -> Duty {
+        let mut c = case.clone();
+        c.wear.coefficient_m2_per_n = 1.0;
+        c.operating.load_torque_nm = c.operating.load_torque_nm.max(span.load_torque_max_nm);
+        let points: Vec<(f64, Case)> = match &c.load_spectrum {
+            Some(s) => (0..s.bins.len())
+                .map(|i| (s.bins[i].share, c.at_bin(i)))
+                .collect(),
+            None => vec![(1.0, c.clone())],
+        };
+        let pair = GearPair::from_case(&c.gear).ok();
+        let table = 2.0 * c.stiffness.table_points_per_mesh_period as f64 * SECONDS_PER_TABLE_POINT;
+        let mut d = Duty {
+            rate_per_k: 0.0,
+            first_s: 0.0,
+            further_s: 0.0,
+            bins: points.len() as f64,
+            stop_m: f64::INFINITY,
+        };
+        for (share, b) in &points {
+            if let Some(p) = &pair {
+                d.rate_per_k += share * DYNAMIC_WEAR_FACTOR * nominal_wear_per_cycle_m(b, p);
+            }
+            d.stop_m = d.stop_m.min(stop_depth_m(b));
+            let scale = run_to_failure_scale(b) * SLOWER_MACHINE_FACTOR;
+            d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale;
+            d.further_s += SECONDS_PER_WARM_UPDATE * scale;
+        }
+        d
+    }
+
+    /// Updates and seconds of `cycles` cycles of this duty at wear coefficient `k`,
+    /// from a wear depth of `depth_m` (m) on.
+    fn phase(&self, case: &Case, k: f64, cycles: f64, depth_m: f64) -> Count {
+        let u = updates_within(case, self.rate_per_k * k, cycles, self.stop_m - depth_m);
+        Count {
+            runs: 0.0,
+            updates: u,
+            seconds: self.first_s + (u - 1.0).max(0.0) * self.further_s,
+            largest_run: u * self.bins,
+        }
+    }
+}
+
+/// What the reference runs (or true runs) count to.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Count {
+    /// Runs made.
+    pub runs: f64,
+    /// Records kept, over every run (one an update; a run's first phase's last record
+    /// is replaced by the second phase's first).
+    pub updates: f64,
+    /// CPU seconds of their evaluations.
+    pub seconds: f64,
+    /// The most bin records one run holds while it runs (its updates x its duty's bins).
+    pub largest_run: f64,
+}
+
+impl Count {
+    fn add(&mut self, o: Count) {
+        self.runs += o.runs;
+        self.updates += o.updates;
+        self.seconds += o.seconds;
+        self.largest_run = self.largest_run.max(o.largest_run);
+    }
+}
+
+/// A change of duty as the estimate needs it: the future spectrum and N0.
+#[derive(Debug, Clone, Copy)]
+pub struct FutureDutyJob<'a> {
+    pub spectrum: &'a LoadSpectrumSection,
+    pub from_cycles: f64,
+}
+
+/// The duties of a run of `case`: its own, and the future one with N0.
+#[derive(Debug, Clone, Copy)]
+pub struct Duties {
+    own: Duty,
+    future: Option<(Duty, f64)>,
+}
+
+impl Duties {
+    /// The duties of `case` over `span`, under `future` from its N0 on.
+    pub fn of(case: &Case, span: &ParameterSpan, future: Option<FutureDutyJob>) -> Duties {
+        Duties {
+            own: Duty::of(case, span),
+            future: future.map(|f| {
+                let mut then = case.clone();
+                then.load_spectrum = Some(f.spectrum.clone());
+                (Duty::of(&then, span), f.from_cycles)
+            }),
+        }
+    }
+
+    /// One run at `k` to `to` cycles.
+    pub fn run(&self, case: &Case, k: f64, to: f64) -> Count {
+        let mut c = match self.future {
+            Some((next, from)) if from < to => {
+                let mut c = self.own.phase(case, k, from, 0.0);
+                // The record at the switch is made under both duties, kept once; the
+                // second phase goes on from the depth the first reached (at most its
+                // stop depth), so the run's whole depth is bounded by the stop depth.
+                let depth = (self.own.rate_per_k * k * from).min(self.own.stop_m);
+                c.add(next.phase(case, k, to - from, depth));
+                c.updates -= 1.0;
+                c
+            }
+            _ => self.own.phase(case, k, to, 0.0),
+        };
+        c.runs = 1.0;
+        c
+    }
+}
+
+/// The reference runs of one chain of the surrogate over the span's k to horizon `h`
+/// cycles on `threads` threads (module docs).
+pub fn chain_count(
+    case: &Case,
+    span: &ParameterSpan,
+    future: Option<FutureDutyJob>,
+    h: f64,
+    threads: usize,
+) -> Count {
+    let (k_lo, k_hi) = (
+        span.wear_coefficient_min_m2_per_n,
+        span.wear_coefficient_max_m2_per_n,
+    );
+    let ratio = match future {
+        None => 2.0,
+        Some(_) => 2f64.powf(0.25).max((k_hi / k_lo).powf(1.0 / 16.0)),
+    };
+    let mut ks = vec![k_lo];
+    while ks.len() < 400 && ks[ks.len() - 1] * ratio < k_hi * (1.0 - 1e-12) {
+        ks.push(ks[ks.len() - 1] * ratio);
+    }
+    if future.is_some() && k_hi > k_lo {
+        ks.push(k_hi);
+    }
+    let next = |j: usize| ks.get(j + 1).copied().unwrap_or(k_hi);
+    let duties = Duties::of(case, span, future);
+    let mut total = Count::default();
+    if future.is_some() {
+        for (j, k) in ks.iter().enumerate() {
+            total.add(duties.run(case, *k, h * next(j) / k));
+        }
+        return total;
+    }
+    // The first run cut by the threshold ends the chain; its batch is made whole.
+    let own = duties.own;
+    let threshold = case.wear.threshold_um * 1e-6;
+    let cut = ks
+        .iter()
+        .position(|k| case.wear.block_cycles * own.rate_per_k * k > threshold)
+        .unwrap_or(ks.len() - 1);
+    let batch = threads.max(1);
+    let made = ((cut / batch + 1) * batch).min(ks.len());
+    for (j, k) in ks.iter().enumerate().take(made) {
+        total.add(duties.run(case, *k, h * next(j) / k));
+    }
+    // The last kept run extended to cover k_hi: resumed (its further updates), or under
+    // a spectrum made again whole.
+    let (k, done) = (ks[cut], h * next(cut) / ks[cut]);
+    let need = h * k_hi / k;
+    if need > done {
+        let whole = duties.run(case, k, need);
+        if case.load_spectrum.is_some() {
+            total.add(whole);
+        } else {
+            let before = duties.run(case, k, done);
+            total.updates += whole.updates - before.updates;
+            total.seconds += (whole.updates - before.updates) * own.further_s;
+            total.largest_run = total.largest_run.max(whole.largest_run);
+        }
+    }
+    total
+}
