@@ -17,7 +17,7 @@ pub const DEFAULT: Option<Budget> = Some(Budget::DEFAULT);
 pub fn over_budget(message: impl std::fmt::Display) -> Problem {
     Problem::new(message.to_string()).remedy(Remedy::new(
         Words::new()
-            .text("lower those keys, or raise the budget knowingly with ")
+            .text("ease those keys (lower a length, count or rate; raise a speed), or raise the budget knowingly with ")
             .arg(Arg::BudgetScale)
             .text(" X (or drop the check with ")
             .arg(Arg::NoBudget)

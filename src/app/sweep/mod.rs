@@ -161,7 +161,7 @@ impl SweepJob {
                         Words::new()
                             .text("split it into shards (")
                             .arg(Arg::Shard)
-                            .text(": each shard is one run), lower those keys, or raise the budget knowingly with ")
+                            .text(": each shard is one run), ease those keys (lower a length, count or rate; raise a speed), or raise the budget knowingly with ")
                             .arg(Arg::BudgetScale)
                             .text(" X"),
                     ),

@@ -6,7 +6,7 @@ use super::evaluation::SECONDS_PER_STEP;
 
 /// Why a run is over its budget (nothing was computed): each of memory, time and the
 /// give-up time of one failing evaluation that exceeds it, with its largest term and the
-/// keys that drive it. The remedy (lower those keys, or raise the budget) names arguments
+/// keys that drive it. The remedy (ease those keys, or raise the budget) names arguments
 /// of the front ends: the job layer adds it (`app::budget`).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("the run is over its budget (nothing was computed): {}", .over.join("; "))]
@@ -133,7 +133,7 @@ impl Estimate {
         if over.is_empty() {
             Ok(())
         } else {
-            // The remedy (lower those keys, or raise the budget) names arguments of the
+            // The remedy (ease those keys, or raise the budget) names arguments of the
             // front ends: the job layer adds it (`app::budget`).
             Err(OverBudget { over })
         }

@@ -61,6 +61,22 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
         0.0
     };
     let mut e = estimate(case, Job::Dynamics);
+    // A planetary set's ring-sensor record is sampled in time from one carrier
+    // revolution (`study::planetary_signals`), with no harmonic synthesis.
+    if !is_transient(case) && case.planetary.is_none() {
+        let (seconds, bytes) = record_synthesis(case, channels);
+        e.terms.push(Term {
+            what: "the record's harmonics (every harmonic of the response's and the tachometer's periods below the internal Nyquist frequency: more as the input speed falls)",
+            seconds,
+            bytes,
+            keys: &[
+                "operating.input_speed_hz",
+                "signals.sampling_rate_hz",
+                "signals.tachometer_pulses_per_revolution",
+                "signals.anti_alias_attenuation_db",
+            ],
+        });
+    }
     e.terms.push(Term {
         what: "the record (channels, analysis, a transient's internal grid and integration)",
         seconds: transient_seconds
@@ -75,6 +91,121 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
         ],
     });
     e
+}
+
+/// Seconds of one term c_m cos(m w) of the anti-alias filter's response at a harmonic
+/// (`AntiAliasFilter::response`, one per tap pair): measured 12.5 ns of CPU (the
+/// tachometer of a 0.05 Hz record, 2.05e6 harmonics x 234 terms in 6.0 s, 2026-11-29),
+/// times [`SLOWER_MACHINE_FACTOR`].
+const SECONDS_PER_RESPONSE_TERM: f64 = 12.5e-9 * SLOWER_MACHINE_FACTOR;
+
+/// Seconds per harmonic of the response's period besides the filter (the four bearing
+/// forces' coefficients from their Hermite interpolants, the transfer path): measured
+/// about 4 us (1.3 s for 1.08e5 harmonics with two sensors, less the filter's 0.6 s),
+/// times [`SLOWER_MACHINE_FACTOR`].
+const SECONDS_PER_RESPONSE_HARMONIC: f64 = 4e-6 * SLOWER_MACHINE_FACTOR;
+
+/// Peak bytes per harmonic: of the response's period (four inputs' coefficients and
+/// their cells' moments, each sensor's spectrum), measured about 256, counted 320; of the
+/// tachometer's (its pulses' spectrum, filtered and rendered), measured 136 (0.05 and
+/// 0.1 Hz records: 293 and 153 MB for 2.05e6 and 1.02e6 harmonics), counted 160.
+const BYTES_PER_RESPONSE_HARMONIC: f64 = 320.0;
+const BYTES_PER_TACHOMETER_HARMONIC: f64 = 160.0;
+
+/// The cost (seconds on one core, peak bytes) of synthesising a steady record's periodic
+/// signals (`signals::record::PeriodicRecord::new`): every harmonic k / T below the
+/// internal Nyquist frequency D f_s / 2 of the response's period T (the excitation
+/// period) and of the tachometer's pulse period, each through the filter's response (a
+/// cosine sum over half its taps). Both counts grow as the speed falls (1 / f): a 0.05 Hz
+/// record at 25.6 kHz has 2e6 tachometer harmonics. `channels`: the sensors.
+pub fn record_synthesis(case: &Case, channels: usize) -> (f64, f64) {
+    let s = &case.signals;
+    let terms = crate::signals::antialias::AntiAliasFilter::design(
+        s.sampling_rate_hz,
+        s.anti_alias_attenuation_db,
+    )
+    .taps
+    .len() as f64
+        / 2.0;
+    let Some(RecordHarmonics {
+        response,
+        tachometer,
+    }) = record_harmonics(case)
+    else {
+        return (f64::INFINITY, f64::INFINITY);
+    };
+    let seconds = response
+        * (channels as f64 * terms * SECONDS_PER_RESPONSE_TERM + SECONDS_PER_RESPONSE_HARMONIC)
+        + tachometer * terms * SECONDS_PER_RESPONSE_TERM;
+    let bytes = response * BYTES_PER_RESPONSE_HARMONIC + tachometer * BYTES_PER_TACHOMETER_HARMONIC;
+    (seconds, bytes)
+}
+
+/// The harmonics a steady record synthesises, counted from the case alone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RecordHarmonics {
+    /// Harmonics of the response's period below the internal Nyquist frequency.
+    pub response: f64,
+    /// Harmonics of the tachometer's pulse period below it.
+    pub tachometer: f64,
+}
+
+/// [`RecordHarmonics`] of a steady record of `case`: D f_s / 2 times each period (None
+/// when the periods cannot be counted, see [`record_periods`]).
+pub fn record_harmonics(case: &Case) -> Option<RecordHarmonics> {
+    let s = &case.signals;
+    let top = 0.5 * crate::signals::antialias::OVERSAMPLING as f64 * s.sampling_rate_hz;
+    let (period_s, shaft_hz) = record_periods(case)?;
+    Some(RecordHarmonics {
+        response: top * period_s,
+        tachometer: top / (shaft_hz * s.tachometer_pulses_per_revolution.max(1) as f64),
+    })
+}
+
+/// The response's period (s) a steady record repeats and the tachometer shaft's speed
+/// (Hz), from the case alone: the single pair's excitation period
+/// ([`super::teeth::excitation_periods_of`] mesh periods); a train's base period
+/// (`dynamics::grid::chain_mesh_counts`) and the sensor stage's shaft. None when a count
+/// overflows or the teeth are not positive (building the model then names the problem).
+fn record_periods(case: &Case) -> Option<(f64, f64)> {
+    let f_in = case.operating.input_speed_hz;
+    let gear_shaft = case.signals.tachometer_shaft == crate::config::signals::Shaft::Gear;
+    if case.stage.is_empty() {
+        let g = &case.gear;
+        if g.teeth_pinion < 1 || g.teeth_gear < 1 {
+            return None;
+        }
+        let f_mesh = f_in * g.teeth_pinion as f64;
+        let period = super::teeth::excitation_periods_of(case) as f64 / f_mesh;
+        let shaft = if gear_shaft {
+            f_mesh / g.teeth_gear as f64
+        } else {
+            f_in
+        };
+        return Some((period, shaft));
+    }
+    let mut teeth = Vec::with_capacity(case.stage.len());
+    for st in &case.stage {
+        let g = st.gear_section(&case.gear);
+        if g.teeth_pinion < 1 || g.teeth_gear < 1 {
+            return None;
+        }
+        teeth.push([g.teeth_pinion as usize, g.teeth_gear as usize]);
+    }
+    let counts = crate::dynamics::grid::chain_mesh_counts(&teeth)?;
+    let period = counts[0] as f64 / (f_in * teeth[0][0] as f64);
+    let stage = case.signals.sensor_stage_index().min(teeth.len() - 1);
+    let mut pinion = f_in;
+    for t in &teeth[..stage] {
+        pinion *= t[0] as f64 / t[1] as f64;
+    }
+    let t = teeth[stage];
+    let shaft = if gear_shaft {
+        pinion * t[0] as f64 / t[1] as f64
+    } else {
+        pinion
+    };
+    Some((period, shaft))
 }
 
 /// The mesh frequency at the fastest input speed the case's record sees (a ramp's end or
