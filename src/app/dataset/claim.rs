@@ -40,7 +40,7 @@ pub(super) fn claim_folder(
             Err(e) => return Err(DatasetError::Input(vec![e.to_string()])),
         }
     };
-    check_owner(root, key, replace).map_err(|m| DatasetError::Input(vec![m]))?;
+    check_owner(root, key, replace).map_err(|m| DatasetError::Input(vec![m.to_string()]))?;
     out.mark_incomplete().map_err(failed)?;
     put(root, DATASET_REL, desc, prev).map_err(failed)
 }

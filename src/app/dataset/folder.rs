@@ -261,13 +261,10 @@ fn check_name_only(condition: &str) -> bool {
 /// The dataset key of the dataset already in `root` (its `state/dataset.json`):
 /// `Ok(None)` when the folder holds none, `Err` when the description is there but
 /// unreadable (damaged, foreign, too large): a folder belongs to the design that made it.
-pub fn existing_key(root: &Path) -> Result<Option<String>, String> {
+pub fn existing_key(root: &Path) -> Result<Option<String>, FolderError> {
     let Some(bytes) = read_in(root, DATASET_REL) else {
         return if is_file_in(root, DATASET_REL) || !absent_in(root, DATASET_REL) {
-            Err(format!(
-                "{}: unreadable (a link, a hard link, too large, or not a file)",
-                root.join(DATASET_REL).display()
-            ))
+            Err(FolderError::Unreadable(root.join(DATASET_REL)))
         } else {
             Ok(None)
         };
@@ -275,16 +272,41 @@ pub fn existing_key(root: &Path) -> Result<Option<String>, String> {
     described_key(&bytes, &root.join(DATASET_REL)).map(Some)
 }
 
+/// Why a dataset folder's description cannot be used, or why the folder belongs to
+/// another design (each message names the file or folder).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FolderError {
+    /// The description is there but cannot be read safely.
+    #[error("{}: unreadable (a link, a hard link, too large, or not a file)", .0.display())]
+    Unreadable(PathBuf),
+    /// The description is not JSON.
+    #[error("{}: not a dataset description", .0.display())]
+    NotDescription(PathBuf),
+    /// The description names no dataset key.
+    #[error("{}: no dataset key", .0.display())]
+    NoKey(PathBuf),
+    /// The folder holds a dataset of another design.
+    #[error("{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it", .root.display(), key_shown(.existing), key_shown(.key))]
+    AnotherDesign {
+        /// The dataset folder.
+        root: PathBuf,
+        /// The key its description names (any text: read from the folder).
+        existing: String,
+        /// The key of the design that would write into it.
+        key: String,
+    },
+}
+
 /// The dataset key named by a description's bytes (`state/dataset.json`, at `described`
 /// for the messages): `Err` when they are not a JSON object with a `dataset_key` string.
 /// Public for the fuzz target `dataset_shard` (docs/RELIABILITY.md).
-pub fn described_key(bytes: &[u8], described: &Path) -> Result<String, String> {
+pub fn described_key(bytes: &[u8], described: &Path) -> Result<String, FolderError> {
     let body: Value = serde_json::from_slice(bytes)
-        .map_err(|_| format!("{}: not a dataset description", described.display()))?;
+        .map_err(|_| FolderError::NotDescription(described.to_owned()))?;
     body["dataset_key"]
         .as_str()
         .map(str::to_owned)
-        .ok_or_else(|| format!("{}: no dataset key", described.display()))
+        .ok_or_else(|| FolderError::NoKey(described.to_owned()))
 }
 
 /// The first 12 characters of a dataset key, as messages show it (a key read from a
@@ -305,7 +327,7 @@ fn absent_in(root: &Path, rel: &str) -> bool {
 /// Refuse to put a dataset of key `key` into `root` when `root` already holds another
 /// design's (unless `replace`): the message names the folder and both keys. Checked
 /// before the folder is opened, so nothing in it changes.
-pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), String> {
+pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), FolderError> {
     if replace {
         return Ok(());
     }
@@ -318,16 +340,15 @@ pub fn check_owner(root: &Path, key: &str, replace: bool) -> Result<(), String> 
 /// The refusal of a dataset of key `key` in the folder `root` whose description names
 /// the key `existing` (any text: read from the folder), when the two differ. Public for
 /// the fuzz target `dataset_shard`.
-pub fn owner_problem(root: &Path, existing: &str, key: &str) -> Result<(), String> {
+pub fn owner_problem(root: &Path, existing: &str, key: &str) -> Result<(), FolderError> {
     if existing == key {
         return Ok(());
     }
-    Err(format!(
-        "{}: the folder holds a dataset of another design (dataset key {}..., this design's {}...): a dataset folder belongs to the design that made it",
-        root.display(),
-        key_shown(existing),
-        key_shown(key)
-    ))
+    Err(FolderError::AnotherDesign {
+        root: root.to_owned(),
+        existing: existing.to_owned(),
+        key: key.to_owned(),
+    })
 }
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`

@@ -326,10 +326,10 @@ impl Job for DatasetMergeJob {
 
 /// The refusal of a folder that holds another design's dataset (`check_owner`'s message),
 /// with its two ways out: another folder, or replacing the dataset.
-fn another_design(message: String) -> JobError {
+fn another_design(problem: super::folder::FolderError) -> JobError {
     use crate::remedy::{Remedy, Words};
     JobError::input(
-        Problem::of(Arg::Out, message).remedy(Remedy::new(
+        Problem::of(Arg::Out, problem.to_string()).remedy(Remedy::new(
             Words::new()
                 .text("choose another folder (")
                 .arg(Arg::Out)

@@ -26,7 +26,7 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
         let (k, total) = match check_description(dir, bytes.as_deref()) {
             Ok(kt) => kt,
             Err(p) => {
-                problems.push(p);
+                problems.push(p.to_string());
                 continue;
             }
         };
@@ -65,13 +65,10 @@ pub(super) fn shared_key(inputs: &[&Path]) -> Result<(String, usize), DatasetErr
 /// at most `MAX_RECORDS`; its key the one its own design, cases, transfer-path hash and
 /// version give. Returns the key and the record count, or the problem naming `dir`.
 /// Public for the fuzz target `fuzz/fuzz_targets/dataset_shard.rs` (docs/RELIABILITY.md).
-pub fn check_description(dir: &Path, bytes: Option<&[u8]>) -> Result<(String, usize), String> {
+pub fn check_description(dir: &Path, bytes: Option<&[u8]>) -> Result<(String, usize), ShardError> {
     let body: Option<Value> = bytes.and_then(|b| serde_json::from_slice(b).ok());
     let Some(body) = body else {
-        return Err(format!(
-            "{}: no {DATASET_REL}: not a dataset folder (or not started)",
-            dir.display()
-        ));
+        return Err(ShardError::NotDataset(dir.to_owned()));
     };
     let k = body["dataset_key"].as_str().unwrap_or_default().to_owned();
     let total = body["records"].as_u64().unwrap_or(0) as usize;
@@ -80,21 +77,37 @@ pub fn check_description(dir: &Path, bytes: Option<&[u8]>) -> Result<(String, us
     if axes_records(&body) != Some(total)
         || total as u64 > crate::study::dataset::design::MAX_RECORDS
     {
-        return Err(format!(
-            "{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard",
-            dir.display()
-        ));
+        return Err(ShardError::RecordCount {
+            dir: dir.to_owned(),
+            total,
+        });
     }
     // The metadata is written from the description: it must be the one its design
     // gives (its key recomputed from its own design, cases and transfer path), and
     // the same in every shard ([`shared_key`]).
     if key_of_description(&body).as_deref() != Some(k.as_str()) {
-        return Err(format!(
-            "{}: {DATASET_REL} does not give its own dataset key (its design, cases or transfer path were edited): a damaged or edited shard",
-            dir.display()
-        ));
+        return Err(ShardError::EditedKey(dir.to_owned()));
     }
     Ok((k, total))
+}
+
+/// Why a merge input's description is refused (each message names its folder).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ShardError {
+    /// No readable description: not a dataset folder, or a run not yet started.
+    #[error("{}: no {DATASET_REL}: not a dataset folder (or not started)", .0.display())]
+    NotDataset(std::path::PathBuf),
+    /// The record count differs from the one its axes give, or is over the limit.
+    #[error("{}: {DATASET_REL} claims {total} records, which its axes do not give (conditions x states x speeds x loads x noise realisations): a damaged or edited shard", .dir.display())]
+    RecordCount {
+        /// The input folder.
+        dir: std::path::PathBuf,
+        /// The record count it claims.
+        total: usize,
+    },
+    /// The key is not the one its own design, cases and transfer path give.
+    #[error("{}: {DATASET_REL} does not give its own dataset key (its design, cases or transfer path were edited): a damaged or edited shard", .0.display())]
+    EditedKey(std::path::PathBuf),
 }
 
 /// Joins the shards in `inputs` (checked by [`shared_key`], which gave `key` and

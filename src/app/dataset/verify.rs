@@ -207,7 +207,7 @@ pub fn verify_dataset(
     let d = req.design;
     let checked = check_dataset(req)?;
     let key = dataset_key(d, &req.path_bytes);
-    match existing_key(root).map_err(|e| DatasetError::Input(vec![e]))? {
+    match existing_key(root).map_err(|e| DatasetError::Input(vec![e.to_string()]))? {
         Some(k) if k == key => {}
         _ => {
             return Err(DatasetError::Input(vec![format!(
