@@ -4,6 +4,7 @@
 use super::artifacts::{um, Artifacts};
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
+use super::plot::Figure;
 use crate::dynamics::model::dof;
 use crate::dynamics::response::{Coordinates, DynamicResponse, PathSample, Signals};
 use crate::dynamics::spectrum::Spectrum;
@@ -54,7 +55,7 @@ pub fn dynamics_artifacts(model: &Model, r: &DynamicResponse, label: &str) -> Ar
     if let Some(spec) = &spec {
         add_velocity_figures(&mut a, model, r, spec, &t_ms, label);
     }
-    add_time_figures(&mut a, s, t_ms, label);
+    add_time_figures(&mut a, model, s, t_ms, label);
     add_path_figures(&mut a, &r.meshes[0].path, label);
     a.summary = dynamics_summary(model, r);
     a.headline = dynamics_headline(&a.summary);
@@ -228,40 +229,71 @@ fn add_velocity_figures(
     );
 }
 
-/// The dynamic transmission error and the mesh force over time.
-fn add_time_figures(a: &mut Artifacts, s: &Signals, t_ms: Vec<f64>, label: &str) {
-    let dte_um = um(&s.meshes[0].dte_m);
+/// The name of each mesh's panel: none for a single pair; "stage k (z1/z2)" for each
+/// mesh of a train.
+fn mesh_labels(model: &Model) -> Vec<String> {
+    match &model.train {
+        None => vec![String::new()],
+        Some(t) => t
+            .stages
+            .iter()
+            .enumerate()
+            .map(|(k, st)| {
+                let g = &st.case.gear;
+                format!("stage {} ({}/{}): ", k + 1, g.teeth_pinion, g.teeth_gear)
+            })
+            .collect(),
+    }
+}
+
+/// The dynamic transmission error and the mesh force over time: a panel per mesh, one
+/// above the other on one time axis (a train's later meshes as `meshN_` columns of the
+/// figure's table, as in `timeseries.csv`).
+fn add_time_figures(a: &mut Artifacts, model: &Model, s: &Signals, t_ms: Vec<f64>, label: &str) {
+    let labels = mesh_labels(model);
+    // A train's panels name their stage, so the axis label is kept short.
+    let per_mesh = |v: &dyn Fn(usize) -> Vec<f64>, col: &str, axis: &str, short: &str| {
+        let axis = if model.train.is_some() { short } else { axis };
+        let mut panels = Vec::new();
+        let mut table = Table::new().col("time_ms", t_ms.clone());
+        for (m, name) in labels.iter().enumerate().take(s.meshes.len()) {
+            let y = v(m);
+            panels.push(panel(
+                TIME,
+                &format!("{name}{axis}"),
+                vec![Curve::new("", t_ms.clone(), y.clone())],
+            ));
+            let c = if m == 0 {
+                col.to_owned()
+            } else {
+                format!("mesh{}_{col}", m + 1)
+            };
+            table = table.col(&c, y);
+        }
+        (panels, table)
+    };
+    let (panels, table) = per_mesh(
+        &|m| um(&s.meshes[m].dte_m),
+        "dte_um",
+        "dynamic transmission error (µm)",
+        "DTE (µm)",
+    );
+    let figure = |title: String, panels| Figure { title, panels };
     a.figure_with_data(
         "dte.png",
-        single(
-            &format!("Dynamic transmission error ({label})"),
-            panel(
-                TIME,
-                "dynamic transmission error (µm)",
-                vec![Curve::new("", t_ms.clone(), dte_um.clone())],
-            ),
-        ),
-        Table::new()
-            .col("time_ms", t_ms.clone())
-            .col("dte_um", dte_um),
+        figure(format!("Dynamic transmission error ({label})"), panels),
+        table,
+    );
+    let (panels, table) = per_mesh(
+        &|m| s.meshes[m].mesh_force_n.clone(),
+        "mesh_force_n",
+        "mesh force (N)",
+        "mesh force (N)",
     );
     a.figure_with_data(
         "mesh_force.png",
-        single(
-            &format!("Mesh force ({label})"),
-            panel(
-                TIME,
-                "mesh force (N)",
-                vec![Curve::new(
-                    "",
-                    t_ms.clone(),
-                    s.meshes[0].mesh_force_n.clone(),
-                )],
-            ),
-        ),
-        Table::new()
-            .col("time_ms", t_ms)
-            .col("mesh_force_n", s.meshes[0].mesh_force_n.clone()),
+        figure(format!("Mesh force ({label})"), panels),
+        table,
     );
 }
 
