@@ -46,9 +46,13 @@ const GAUSS_POINTS: usize = 13;
 /// end.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct HermitePeriod {
+    /// Step start times, s.
     pub t: Vec<f64>,
+    /// Signal values at the step starts.
     pub x: Vec<f64>,
+    /// Slope dx/dt at each step's start (per s).
     pub slope_start: Vec<f64>,
+    /// Slope dx/dt at each step's end (per s).
     pub slope_end: Vec<f64>,
     pub period_s: f64,
 }

@@ -35,10 +35,15 @@ use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
     advice(*.intervals, *.tolerance)
 )]
 pub struct StepFailure {
+    /// Time at which the step failed, s.
     pub time_s: f64,
+    /// Mesh phase at the failure, degrees of the mesh period.
     pub phase_deg: f64,
+    /// Dynamic transmission error at the failure, µm.
     pub dte_um: f64,
+    /// Mesh force at the failure, N.
     pub force_n: f64,
+    /// What failed (the integrator's message).
     pub reason: String,
     /// Node intervals of the period grid, and the local error tolerance, of the stepper.
     pub intervals: usize,
@@ -101,6 +106,7 @@ impl PeriodObserver for () {
 /// Work counters of the period integrations.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct StepCounts {
+    /// Steps accepted.
     pub accepted: usize,
     /// Steps rejected by the error test.
     pub rejected: usize,
@@ -108,6 +114,7 @@ pub struct StepCounts {
     pub newton_failures: usize,
     /// Contact-mode switches located, and the trial steps that located them.
     pub events: usize,
+    /// Trial steps taken to locate the contact-mode switches.
     pub event_trials: usize,
 }
 
@@ -155,9 +162,11 @@ pub trait PeriodIntegrator {
     fn period(&self) -> f64;
     /// How the following periods choose their steps.
     fn set_plan_mode(&mut self, mode: PlanMode);
+    /// How the following periods choose their steps.
     fn plan_mode(&self) -> PlanMode;
     /// Work counters of the underlying stepper (rhs calls, LU factorisations).
     fn integrator_stats(&self) -> StepStats;
+    /// Work counters of the period integrations ([`StepCounts`]).
     fn counts(&self) -> StepCounts;
 }
 
@@ -214,6 +223,7 @@ where
     /// Step ends (times within the period, s) recorded by a [`PlanMode::Build`] period.
     plan: Vec<f64>,
     plan_mode: PlanMode,
+    /// Work counters of the periods integrated so far.
     pub counts: StepCounts,
     /// A train's steps divide what is left of a node interval into equal parts
     /// ([`PeriodStepper::next_step`]); the single pair keeps its own rule.

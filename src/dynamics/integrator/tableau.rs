@@ -40,17 +40,23 @@ pub const GAMMA: f64 = 0.435_866_521_508_459;
 /// with an explicit first stage (`a_11 = 0`, ESDIRK) and an embedded solution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tableau {
+    /// Name of the method (in messages).
     pub name: &'static str,
+    /// Number of stages used (at most `MAX_STAGES`).
     pub stages: usize,
     /// `a_ij`, lower triangular; `a_ii = gamma` except `a_11 = 0` for an ESDIRK.
     pub a: [[f64; MAX_STAGES]; MAX_STAGES],
+    /// Weights `b_i` of the main solution.
     pub b: [f64; MAX_STAGES],
     /// Weights of the embedded lower-order solution, if any.
     pub b_hat: Option<[f64; MAX_STAGES]>,
+    /// Nodes `c_i` (stage times as fractions of the step).
     pub c: [f64; MAX_STAGES],
+    /// The constant diagonal coefficient gamma.
     pub gamma: f64,
     /// Classical order of the main and the embedded solution.
     pub order: u32,
+    /// Classical order of the embedded solution (0 without one).
     pub embedded_order: u32,
 }
 
