@@ -28,7 +28,9 @@ const PHASES: usize = 720;
 /// share of the mesh force carried there (1), in ascending rho1.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct PairLoadCurve {
+    /// Contact positions rho1, m, ascending.
     pub rho1_m: Vec<f64>,
+    /// Share of the mesh force carried at each position (1: all of it).
     pub share: Vec<f64>,
 }
 
