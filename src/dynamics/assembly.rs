@@ -42,9 +42,12 @@ pub enum Dof {
 /// What is wrong with a set of elements (the case-file validation names the keys).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AssemblyError {
-    /// A body joined by nothing to the drive (`body` its name).
+    /// A body joined by nothing to the drive.
     #[error("{body} is connected to nothing that leads to the drive (no shaft, coupling or mesh joins it to the train)")]
-    Disconnected { body: String },
+    Disconnected {
+        /// The body's name.
+        body: String,
+    },
     /// A body whose speed two paths through the train give differently.
     #[error("{body} would turn at {first} and at {second} times the input speed by two paths through the train: the speeds are inconsistent")]
     InconsistentSpeeds {
@@ -55,12 +58,22 @@ pub enum AssemblyError {
         /// Its speed by the second path, times the input speed.
         second: f64,
     },
-    /// A mesh between two bodies (named) that turn the same way.
+    /// A mesh between two bodies that turn the same way.
     #[error("a mesh joins {first} and {second}, which turn the same way: a pair of external gears turns its members in opposite senses")]
-    MeshSameSense { first: String, second: String },
-    /// An element names body `index` of a train of `bodies` bodies.
+    MeshSameSense {
+        /// Name of the mesh's first body.
+        first: String,
+        /// Name of the mesh's second body.
+        second: String,
+    },
+    /// An element names a body the train does not have.
     #[error("element refers to body {index}, but the train has {bodies} bodies")]
-    NoSuchBody { index: usize, bodies: usize },
+    NoSuchBody {
+        /// The body index the element gives.
+        index: usize,
+        /// Number of bodies of the train.
+        bodies: usize,
+    },
 }
 
 /// Where a mesh acts in the assembled coordinates.

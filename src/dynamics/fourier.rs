@@ -54,6 +54,7 @@ pub struct HermitePeriod {
     pub slope_start: Vec<f64>,
     /// Slope dx/dt at each step's end (per s).
     pub slope_end: Vec<f64>,
+    /// The period, s.
     pub period_s: f64,
 }
 

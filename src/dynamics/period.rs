@@ -45,8 +45,9 @@ pub struct StepFailure {
     pub force_n: f64,
     /// What failed (the integrator's message).
     pub reason: String,
-    /// Node intervals of the period grid, and the local error tolerance, of the stepper.
+    /// Node intervals of the period grid of the stepper.
     pub intervals: usize,
+    /// Local error tolerance of the stepper, relative to the state's scales.
     pub tolerance: f64,
 }
 

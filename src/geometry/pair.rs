@@ -99,7 +99,9 @@ impl Gear {
 /// ends where tip corners may touch (`geometry::corner`, `dynamics::contact_path`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reach {
+    /// rho1 where the stretch begins (the pair enters), m.
     pub start_m: f64,
+    /// rho1 where the stretch ends (the pair leaves), m.
     pub end_m: f64,
 }
 
