@@ -127,7 +127,7 @@ pub struct MeshState {
     pub corner: [bool; MAX_PAIRS],
 }
 
-/// The elastic part of a mesh at one instant ([`GearSystem::springs`]).
+/// The elastic part of a mesh at one instant ([`TrainMesh::springs`]).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct MeshSprings {
     /// Number of pairs in contact (entries of the arrays past it are unused).

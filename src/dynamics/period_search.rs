@@ -22,8 +22,8 @@ pub struct SteadyStateSettings {
     pub integration_tolerance: f64,
     /// Give up on steady state after this many mesh periods.
     pub max_mesh_periods: usize,
-    /// Steady state: largest change of the state over one period, relative to the state's
-    /// scales, below this.
+    /// Steady state: the shooting's estimated distance from the periodic orbit, relative
+    /// to the state's scales, below this.
     pub tolerance: f64,
     /// Mesh periods recorded once steady (signals, spectra).
     pub evaluated_mesh_periods: usize,

@@ -217,7 +217,7 @@ pub struct Signals {
     pub velocity: Coordinates,
     /// Generalised accelerations at every sample (m/s^2, rad/s^2; the limit from the right).
     pub acceleration: Coordinates,
-    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
+    /// Accelerations at the start (`[0]`) and the end (`[1]`) of the integration step that
     /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
     /// mesh event or a contact switch makes the force jump, the end one is the limit from
     /// the left at the next sample, which `acceleration` (the limit from the right) is not.

@@ -35,7 +35,7 @@ pub struct PairLoadCurve {
 }
 
 /// The curve of [`PairLoadCurve`] from the quasi-static equilibria of `sys`'s mesh 0 (a
-/// single pair whose contact follows `contact`) at [`PHASES`] phases over one mesh
+/// single pair whose contact follows `contact`) at `PHASES` phases over one mesh
 /// period (quasi-static: the pairs' springs alone carry the static mesh force;
 /// `dynamics::quasi_static`). The position is the pair's place in the reach, where a
 /// corner pair stands beyond the path (the equilibrium's rho1 is where its Hertz contact

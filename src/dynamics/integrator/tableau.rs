@@ -13,7 +13,7 @@
 //!               | b1           b2     gamma
 //!   ```
 //!   with `b1 = -(6 gamma^2 - 16 gamma + 1)/4`, `b2 = (6 gamma^2 - 20 gamma + 5)/4`.
-//! * [`ESDIRK32`]: ESDIRK3(2)4L[2]SA of C. A. Kennedy & M. H. Carpenter, "Diagonally
+//! * [`ESDIRK32`]: ESDIRK3(2)4L\[2\]SA of C. A. Kennedy & M. H. Carpenter, "Diagonally
 //!   implicit Runge-Kutta methods for ordinary differential equations. A review",
 //!   NASA/TM-2016-219173 (2016), Sect. 5.2: 4 stages, the first explicit
 //!   (`Y_1 = y_n`), order 3, L-stable, stiffly accurate, **stage order 2** (every stage
@@ -114,7 +114,7 @@ const E_B1: f64 = 0.18764102434672383;
 const E_B2: f64 = -0.595297473576955;
 const E_B3: f64 = 0.9717899277217721;
 
-/// ESDIRK3(2)4L[2]SA (see module docs).
+/// ESDIRK3(2)4L\[2\]SA (see module docs).
 pub const ESDIRK32: Tableau = Tableau {
     name: "ESDIRK3(2)4L[2]SA (Kennedy & Carpenter 2016)",
     stages: 4,

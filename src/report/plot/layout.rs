@@ -1,7 +1,7 @@
 //! Where things go on a panel, in pixels: the rectangles of the plot area, the legend, the
 //! colour bar and the marker labels, and the pixels the data cover. Pure geometry: the
 //! renderer (`draw.rs`) computes a [`PanelLayout`] from the chart it is about to draw and
-//! draws exactly there, and [`super::layout`] hands the same layout to tests.
+//! draws exactly there, and [`super::layout()`] hands the same layout to tests.
 
 /// An axis-aligned rectangle in pixels of the whole image, half-open: x in [x0, x1),
 /// y in [y0, y1) (y grows downwards).

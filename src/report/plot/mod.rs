@@ -5,7 +5,7 @@
 //! degenerate ranges get a width.
 //!
 //! Legends never cover data: a legend goes into a corner of the plot area that the data
-//! leave free, or else into a band right of it (`draw.rs`); [`layout`] returns where the
+//! leave free, or else into a band right of it (`draw.rs`); [`layout()`] returns where the
 //! renderer put every legend and which pixels the data cover, so tests check what is drawn.
 
 mod dash;
