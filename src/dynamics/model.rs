@@ -95,7 +95,8 @@ pub struct MeshState {
     pub pressure_pa: [f64; MAX_PAIRS],
     /// Hertz contact half-width a of each pair, m.
     pub half_width_m: [f64; MAX_PAIRS],
-    /// Friction coefficient mu_i of each pair (paper eq. 6).
+    /// Friction coefficient mu_i of each pair (the case's law: Xu et al., paper eq. 8, by
+    /// default).
     pub friction_coefficient: [f64; MAX_PAIRS],
     /// Signed friction force f_i, N (positive when the pinion surface is faster).
     pub friction_n: [f64; MAX_PAIRS],
@@ -171,7 +172,8 @@ pub struct MeshParts<'a> {
     pub pair: &'a GearPair,
     /// The pair's mesh stiffness along the path of contact.
     pub mesh: &'a MeshStiffness,
-    /// The friction law (paper eq. 6).
+    /// The case's friction law (coefficient: Xu et al., paper eq. 8, by default; force
+    /// mu W signed by the sliding, eq. 6).
     pub friction: &'a Friction,
     /// Lubricant inlet viscosity for the friction law, cP.
     pub viscosity_cp: f64,
@@ -203,7 +205,8 @@ pub struct GearSystemParts<'a> {
     pub mesh: &'a MeshStiffness,
     /// Lumped parameters and operating point (paper eq. 1).
     pub params: &'a DynamicParams,
-    /// The friction law (paper eq. 6).
+    /// The case's friction law (coefficient: Xu et al., paper eq. 8, by default; force
+    /// mu W signed by the sliding, eq. 6).
     pub friction: &'a Friction,
     /// Lubricant inlet viscosity for the friction law, cP.
     pub viscosity_cp: f64,

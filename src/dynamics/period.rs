@@ -37,11 +37,11 @@ use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
 pub struct StepFailure {
     /// Time at which the step failed, s.
     pub time_s: f64,
-    /// Mesh phase at the failure, degrees of the mesh period.
+    /// The first mesh's phase at the failure, degrees of its mesh period.
     pub phase_deg: f64,
-    /// Dynamic transmission error at the failure, µm.
+    /// The first mesh's dynamic transmission error at the failure, µm.
     pub dte_um: f64,
-    /// Mesh force at the failure, N.
+    /// The first mesh's force at the failure, N.
     pub force_n: f64,
     /// What failed (the integrator's message).
     pub reason: String,

@@ -18,7 +18,7 @@ pub struct PathSample {
     pub pressure_pa: f64,
     /// Hertz contact half-width a, m.
     pub half_width_m: f64,
-    /// Friction coefficient mu (paper eq. 6).
+    /// Friction coefficient mu (the case's law: Xu et al., paper eq. 8, by default).
     pub friction_coefficient: f64,
     /// Signed friction force, N (positive when the pinion surface is faster).
     pub friction_n: f64,
