@@ -277,12 +277,6 @@ fn speed_in_rpm(user: &mut Table, problems: &mut Vec<String>) {
     }
 }
 
-/// Build a case from TOML text (empty for the default) and overrides (`section.key=value`
-/// texts: the command line's `--set`).
-///
-/// Returns every problem at once; the case is only returned when there is none. A
-/// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
-/// another).
 /// The built-in case with `--set`-style overrides (`"section.key=value"`), for unit tests
 /// of the layers above; panics on an override the case refuses.
 #[cfg(test)]
@@ -291,6 +285,12 @@ pub(crate) fn default_with(overrides: &[&str]) -> Case {
     load_case("", &sets).expect("a test's overrides are valid")
 }
 
+/// Build a case from TOML text (empty for the default) and overrides (`section.key=value`
+/// texts: the command line's `--set`).
+///
+/// Returns every problem at once; the case is only returned when there is none. A
+/// relative `load_spectrum.file` is read from the current folder ([`load_case_in`] names
+/// another).
 pub fn load_case(toml_text: &str, overrides: &[String]) -> Result<Case, ConfigError> {
     load_case_in(toml_text, overrides, std::path::Path::new("."))
 }

@@ -31,26 +31,49 @@ use nalgebra::{DMatrix, DVector};
 /// A kind of coordinate of a body.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Dof {
+    /// Lateral displacement x of the body's centre, m.
     X,
+    /// Lateral displacement y of the body's centre, m.
     Y,
+    /// Rotation deviation from the nominal rotation, rad.
     Rotation,
 }
 
 /// What is wrong with a set of elements (the case-file validation names the keys).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AssemblyError {
+    /// A body joined by nothing to the drive.
     #[error("{body} is connected to nothing that leads to the drive (no shaft, coupling or mesh joins it to the train)")]
-    Disconnected { body: String },
+    Disconnected {
+        /// The body's name.
+        body: String,
+    },
+    /// A body whose speed two paths through the train give differently.
     #[error("{body} would turn at {first} and at {second} times the input speed by two paths through the train: the speeds are inconsistent")]
     InconsistentSpeeds {
+        /// The body's name.
         body: String,
+        /// Its speed by the first path, times the input speed.
         first: f64,
+        /// Its speed by the second path, times the input speed.
         second: f64,
     },
+    /// A mesh between two bodies that turn the same way.
     #[error("a mesh joins {first} and {second}, which turn the same way: a pair of external gears turns its members in opposite senses")]
-    MeshSameSense { first: String, second: String },
+    MeshSameSense {
+        /// Name of the mesh's first body.
+        first: String,
+        /// Name of the mesh's second body.
+        second: String,
+    },
+    /// An element names a body the train does not have.
     #[error("element refers to body {index}, but the train has {bodies} bodies")]
-    NoSuchBody { index: usize, bodies: usize },
+    NoSuchBody {
+        /// The body index the element gives.
+        index: usize,
+        /// Number of bodies of the train.
+        bodies: usize,
+    },
 }
 
 /// Where a mesh acts in the assembled coordinates.
@@ -73,6 +96,7 @@ pub struct MeshGeometry {
 /// The assembled train (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Assembly {
+    /// The elements the train was assembled from.
     pub elements: Elements,
     /// First lateral coordinate (x) of each body that moves laterally.
     lateral: Vec<Option<usize>>,
@@ -138,6 +162,7 @@ impl Assembly {
         self.n
     }
 
+    /// Whether the train has no coordinates.
     pub fn is_empty(&self) -> bool {
         self.n == 0
     }

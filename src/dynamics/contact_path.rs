@@ -43,9 +43,11 @@ pub struct PairPlace {
     pub gear_rho1_m: f64,
     /// d pinion_rho1 / d rho1 and d gear_rho1 / d rho1.
     pub pinion_rate: f64,
+    /// d gear_rho1 / d rho1.
     pub gear_rate: f64,
     /// The corner's gap along the line of action (0 on the path), m, and d gap / d rho1.
     pub gap_m: f64,
+    /// d gap / d rho1 (dimensionless).
     pub gap_slope: f64,
     /// A corner touches (false: the involutes on the path).
     pub corner: bool,
@@ -69,13 +71,16 @@ impl PairPlace {
 /// A pair of identical teeth at one position: what the mesh force law takes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PlainPair {
+    /// Stiffness of the pair, N/m.
     pub stiffness_n_per_m: f64,
     /// Gap (corner geometry and wear), m, and d gap / d rho1.
     pub gap_m: f64,
+    /// d gap / d rho1 (dimensionless).
     pub gap_slope: f64,
     /// Where its Hertz contact, friction and kinematics are taken: rho1 on the path, the
     /// path's end the corner continues beyond it (a sharp edge has no Hertz radius).
     pub contact_rho1_m: f64,
+    /// A tip corner touches beyond the path (false: the involutes on the path).
     pub corner: bool,
     /// Share of the face width missing from the pair's contact (a helical pair's contact
     /// line partly off the path, [`ContactPath::helical_lines`]; 0 for a spur pair).

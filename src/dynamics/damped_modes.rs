@@ -59,6 +59,7 @@ pub struct DampedMode {
     pub damping_ratio: f64,
     /// Share of the mode's strain energy in the mesh spring (0..1).
     pub mesh_energy_share: f64,
+    /// Oscillatory or overdamped.
     pub kind: PoleKind,
     /// Mode shape in the assembled coordinates (0 on an imposed coordinate), scaled so
     /// that its largest component (in mass-normalised coordinates) is real and
@@ -80,6 +81,7 @@ pub const MESH_POLE_MIN_SHARE: f64 = 0.1;
 /// All damped modes, sorted by pole magnitude.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct DampedModes {
+    /// The modes, sorted by pole magnitude.
     pub modes: Vec<DampedMode>,
 }
 

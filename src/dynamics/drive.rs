@@ -20,11 +20,15 @@
 /// its ends.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tabulated {
+    /// Samples per second, Hz (sample k at t = k / rate).
     pub rate_hz: f64,
+    /// The samples, in the signal's unit.
     pub values: Vec<f64>,
 }
 
 impl Tabulated {
+    /// The value at `t_s` (s): Catmull-Rom cubic between the samples, the end values beyond
+    /// them, 0 when there are none.
     pub fn at(&self, t_s: f64) -> f64 {
         let n = self.values.len();
         if n == 0 {
@@ -52,6 +56,7 @@ pub struct Drive {
     pub start_rad_s: f64,
     /// Nominal pinion acceleration over [0, `ramp_s`], rad/s^2 (constant speed after).
     pub accel_rad_s2: f64,
+    /// Duration of the speed ramp, s.
     pub ramp_s: f64,
     /// Load-torque fluctuation on the shaft where the load acts (module docs), N m.
     pub torque_nm: Option<Tabulated>,

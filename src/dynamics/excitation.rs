@@ -64,6 +64,7 @@ impl PairGap {
         }
     }
 
+    /// Whether the gap is zero everywhere (new teeth).
     pub fn is_zero(&self) -> bool {
         self.gap_m.iter().all(|g| *g == 0.0)
     }
@@ -82,6 +83,7 @@ impl PairGap {
         (a + (b - a) * t, (b - a) / self.spacing_m)
     }
 
+    /// The tabulated gaps, m, on the uniform rho1 grid.
     pub fn values_m(&self) -> &[f64] {
         &self.gap_m
     }
@@ -135,6 +137,7 @@ impl ExternalError {
         period_rad: 0.0,
     };
 
+    /// No external error (e = 0).
     pub fn none() -> Self {
         Self::default()
     }

@@ -26,7 +26,7 @@
 //!   M_mp = int_-1^1 x s^p ds,
 //!
 //! and sum_m e^(-i w_k tau_m) M_mp is one FFT over m per power p. The series is cut after
-//! p = [`POWERS`] - 1: (pi/2)^23 / 23! = 1.3e-18 of the moment. Each M_mp is exact by
+//! p = `POWERS` - 1: (pi/2)^23 / 23! = 1.3e-18 of the moment. Each M_mp is exact by
 //! Gauss-Legendre quadrature on each piece of a step inside a cell (the integrand is a
 //! polynomial of degree <= 3 + 22: 13 points), the cubic evaluated in its Hermite form
 //! (no expansion about a distant centre, so no cancellation).
@@ -46,10 +46,15 @@ const GAUSS_POINTS: usize = 13;
 /// end.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct HermitePeriod {
+    /// Step start times, s.
     pub t: Vec<f64>,
+    /// Signal values at the step starts.
     pub x: Vec<f64>,
+    /// Slope dx/dt at each step's start (per s).
     pub slope_start: Vec<f64>,
+    /// Slope dx/dt at each step's end (per s).
     pub slope_end: Vec<f64>,
+    /// The period, s.
     pub period_s: f64,
 }
 
@@ -82,7 +87,7 @@ impl HermitePeriod {
         }
     }
 
-    /// The interpolant at `t` in [t[0], t[0] + period) (for tests and checks).
+    /// The interpolant at `t` in `[t[0], t[0] + period)` (for tests and checks).
     pub fn at(&self, t: f64) -> f64 {
         let j = self.t.partition_point(|v| *v <= t).saturating_sub(1);
         let s = self.step(j);

@@ -158,7 +158,7 @@ pub fn common_period_revolutions(sys: &GearSystem, repeats: &[usize]) -> Option<
 /// pinion's shaft; `teeth[k]` = [z_pinion, z_gear]) in the train's base period: with
 /// f_k / f_in = z_p,k prod_{j<k} z_p,j / z_g,j = a_k / b_k reduced, the base period is
 /// lcm(b_k) / gcd(a_k) input revolutions (as [`common_period_revolutions`]). The single
-/// pair: [1]. None if a number overflows.
+/// pair: `[1]`. None if a number overflows.
 pub fn chain_mesh_counts(teeth: &[[usize; 2]]) -> Option<Vec<u128>> {
     let (mut num, mut den) = (1u128, 1u128);
     let mut fracs = Vec::with_capacity(teeth.len());
@@ -231,7 +231,7 @@ pub fn excitation_periods(sys: &GearSystem) -> Option<usize> {
 
 /// Node times within one base period of a train ([`base_period`]), s, from 0 to the
 /// period. The single pair: its [`period_nodes`] exactly. A train: every mesh's events
-/// ([`period_events`]: pair changes and pitch passages) over its mesh periods in the base
+/// (`period_events`: pair changes and pitch passages) over its mesh periods in the base
 /// period, merged (events of two meshes closer than 1e-9 of the shortest mesh period are
 /// one), and each gap between events filled with ceil(gap / h_max) equal intervals,
 /// h_max = the shortest mesh period / `steps`. Equal intervals keep the step length of

@@ -9,6 +9,7 @@ use nalgebra::{DMatrix, SymmetricEigen};
 /// Undamped modes, ascending in frequency.
 #[derive(Debug, Clone, Default)]
 pub struct Modes {
+    /// Natural frequencies, Hz, ascending.
     pub frequency_hz: Vec<f64>,
     /// Mass-normalised shapes in the assembled coordinates (0 on an imposed coordinate).
     pub shapes: Vec<Vec<f64>>,
@@ -46,6 +47,8 @@ pub fn linearised_matrices(sys: &GearSystem) -> (Vec<f64>, DMatrix<f64>, Vec<usi
     (m, k, free)
 }
 
+/// The undamped modes of the linearised system (each mesh at its mean loaded stiffness,
+/// [`linearised_matrices`]), from the mass-normalised symmetric eigenproblem.
 pub fn modes(sys: &GearSystem) -> Modes {
     let (m, k, free) = linearised_matrices(sys);
     let n = m.len();

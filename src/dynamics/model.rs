@@ -60,28 +60,43 @@ pub type State = DVector<f64>;
 /// Index of each coordinate of the single pair (`dynamics::assembly` numbers them:
 /// laterals of pinion and gear, then the rotations of motor, pinion, gear and brake).
 pub mod dof {
+    /// Lateral displacement x of the pinion centre, m.
     pub const XP: usize = 0;
+    /// Lateral displacement y of the pinion centre, m.
     pub const YP: usize = 1;
+    /// Lateral displacement x of the gear centre, m.
     pub const XG: usize = 2;
+    /// Lateral displacement y of the gear centre, m.
     pub const YG: usize = 3;
+    /// Rotation deviation phi_m of the motor, rad.
     pub const PHI_M: usize = 4;
+    /// Rotation deviation phi_p of the pinion, rad.
     pub const PHI_P: usize = 5;
+    /// Rotation deviation phi_g of the gear, rad.
     pub const PHI_G: usize = 6;
+    /// Rotation deviation phi_b of the brake, rad.
     pub const PHI_B: usize = 7;
 }
 
 /// Everything a mesh does at one instant (for the right-hand side and for signals).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct MeshState {
+    /// Number of pairs in contact (entries of the arrays past it are zero).
     pub n_pairs: usize,
     /// Pair contact positions rho1, m.
     pub rho1_m: [f64; MAX_PAIRS],
+    /// Stiffness k_i of each pair at its contact position, N/m.
     pub stiffness_n_per_m: [f64; MAX_PAIRS],
     /// Share of the mesh force, kappa_i (eq. 7 or by stiffness).
     pub share: [f64; MAX_PAIRS],
+    /// Load W_i = kappa_i F carried by each pair, N (never negative).
     pub load_n: [f64; MAX_PAIRS],
+    /// Maximum Hertz contact pressure p_0 of each pair, Pa.
     pub pressure_pa: [f64; MAX_PAIRS],
+    /// Hertz contact half-width a of each pair, m.
     pub half_width_m: [f64; MAX_PAIRS],
+    /// Friction coefficient mu_i of each pair (the case's law: Xu et al., paper eq. 8, by
+    /// default).
     pub friction_coefficient: [f64; MAX_PAIRS],
     /// Signed friction force f_i, N (positive when the pinion surface is faster).
     pub friction_n: [f64; MAX_PAIRS],
@@ -113,29 +128,36 @@ pub struct MeshState {
     pub corner: [bool; MAX_PAIRS],
 }
 
-/// The elastic part of a mesh at one instant ([`GearSystem::springs`]).
+/// The elastic part of a mesh at one instant ([`TrainMesh::springs`]).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct MeshSprings {
+    /// Number of pairs in contact (entries of the arrays past it are unused).
     pub n_pairs: usize,
     /// Pair contact positions rho1, m.
     pub rho1_m: [f64; MAX_PAIRS],
+    /// Stiffness k_i of each pair at its contact position, N/m.
     pub stiffness_n_per_m: [f64; MAX_PAIRS],
     /// delta - g_i, m.
     pub compression_m: [f64; MAX_PAIRS],
     /// Pairs counted as touching (gap closed, or as the frozen contact mode says).
     pub touching: [bool; MAX_PAIRS],
+    /// Sum of the stiffnesses of the touching pairs, N/m.
     pub stiffness_touching_n_per_m: f64,
     /// sum of k_i (delta - g_i) over the touching pairs, N.
     pub elastic_n: f64,
     /// Spring and damper force of the touching pairs, N (0 when none touches).
     pub force_unclipped_n: f64,
+    /// Whether the mesh pushes (F = `force_unclipped_n`) or not (F = 0).
     pub pushing: bool,
     /// delta and d delta / dt (m, m/s).
     pub deflection_m: f64,
+    /// d delta / dt, m/s.
     pub deflection_rate_m_per_s: f64,
     /// Mesh cycle of each pair and the share of its face width lost (tooth-resolved).
     pub cycle: [i64; MAX_PAIRS],
+    /// Share of the face width missing from each pair's contact line (a spall).
     pub width_loss: [f64; MAX_PAIRS],
+    /// Change of each pair's Hertz 1/R by its flanks' wear, 1/m (severe wear).
     pub curvature_change: [f64; MAX_PAIRS],
     /// Pairs at a tip corner beyond the path of contact.
     pub corner: [bool; MAX_PAIRS],
@@ -146,13 +168,21 @@ pub struct MeshSprings {
 /// evaluation).
 #[derive(Clone, Copy)]
 pub struct MeshParts<'a> {
+    /// The pair's geometry.
     pub pair: &'a GearPair,
+    /// The pair's mesh stiffness along the path of contact.
     pub mesh: &'a MeshStiffness,
+    /// The case's friction law (coefficient: Xu et al., paper eq. 8, by default; force
+    /// mu W signed by the sliding, eq. 6).
     pub friction: &'a Friction,
     /// Lubricant inlet viscosity for the friction law, cP.
     pub viscosity_cp: f64,
+    /// The gap each tooth pair closes before it carries load (wear), m along the line of
+    /// action.
     pub gap: &'a PairGap,
+    /// The external transmission error e(theta) (paper eq. 2).
     pub external: &'a ExternalError,
+    /// How the mesh force is shared between the pairs in contact.
     pub load_sharing: LoadSharingModel,
     /// Composite RMS roughness for the friction law, um.
     pub roughness_um: f64,
@@ -169,19 +199,30 @@ pub struct MeshParts<'a> {
 /// lumped parameters and operating point of paper eq. (1).
 #[derive(Clone, Copy)]
 pub struct GearSystemParts<'a> {
+    /// The pair's geometry.
     pub pair: &'a GearPair,
+    /// The pair's mesh stiffness along the path of contact.
     pub mesh: &'a MeshStiffness,
+    /// Lumped parameters and operating point (paper eq. 1).
     pub params: &'a DynamicParams,
+    /// The case's friction law (coefficient: Xu et al., paper eq. 8, by default; force
+    /// mu W signed by the sliding, eq. 6).
     pub friction: &'a Friction,
     /// Lubricant inlet viscosity for the friction law, cP.
     pub viscosity_cp: f64,
+    /// The gap each tooth pair closes before it carries load (wear), m along the line of
+    /// action.
     pub gap: &'a PairGap,
+    /// The external transmission error e(theta) (paper eq. 2).
     pub external: &'a ExternalError,
+    /// How the mesh force is shared between the pairs in contact.
     pub load_sharing: LoadSharingModel,
     /// Composite RMS roughness for the friction law, um.
     pub roughness_um: f64,
     /// Effective modulus E* of the contact, Pa.
     pub effective_modulus_pa: f64,
+    /// The tooth-resolved mesh, when the teeth differ or are modified (None: every tooth
+    /// the paper's, with `gap`).
     pub teeth: Option<&'a ToothMesh>,
     /// Where the pairs touch (`dynamics::contact_path`).
     pub contact: &'a ContactPath,

@@ -56,9 +56,11 @@ impl OperatingPoint {
 pub struct MeshPoint {
     /// Nominal speeds of the mesh's pinion and gear, rad/s.
     pub pinion_speed_rad_s: f64,
+    /// Nominal speed of the mesh's gear, rad/s.
     pub gear_speed_rad_s: f64,
     /// Mean torques on the pinion's and the gear's shafts, N m.
     pub pinion_torque_nm: f64,
+    /// Mean torque on the gear's shaft, N m.
     pub gear_torque_nm: f64,
     /// Mesh frequency z_pinion f_pinion, Hz.
     pub mesh_frequency_hz: f64,
@@ -147,12 +149,18 @@ impl TrainOperatingPoint {
 pub struct DynamicParams {
     /// With every `"derived"` mass and inertia resolved from the pair's blanks.
     pub lumped: DynamicsSection<f64>,
+    /// How the drivetrain's free rotation is held (`[operating]`).
     pub speed_boundary: SpeedBoundary,
+    /// Slope c_slip of the motor torque-speed law of [`SpeedBoundary::MotorSlip`],
+    /// N m s/rad.
     pub motor_slip_damping_nm_s_per_rad: f64,
+    /// The nominal operating point: speeds, torques, mesh frequency, static mesh force.
     pub operating: OperatingPoint,
 }
 
 impl DynamicParams {
+    /// The parameters of `case` for `pair`: `"derived"` masses and inertias from the
+    /// pair's blanks, the operating point from `[operating]`.
     pub fn from_case(case: &Case, pair: &GearPair) -> Self {
         let d = &case.dynamics;
         let o = &case.operating;

@@ -35,13 +35,19 @@ use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
     advice(*.intervals, *.tolerance)
 )]
 pub struct StepFailure {
+    /// Time at which the step failed, s.
     pub time_s: f64,
+    /// The first mesh's phase at the failure, degrees of its mesh period.
     pub phase_deg: f64,
+    /// The first mesh's dynamic transmission error at the failure, µm.
     pub dte_um: f64,
+    /// The first mesh's force at the failure, N.
     pub force_n: f64,
+    /// What failed (the integrator's message).
     pub reason: String,
-    /// Node intervals of the period grid, and the local error tolerance, of the stepper.
+    /// Node intervals of the period grid of the stepper.
     pub intervals: usize,
+    /// Local error tolerance of the stepper, relative to the state's scales.
     pub tolerance: f64,
 }
 
@@ -101,6 +107,7 @@ impl PeriodObserver for () {
 /// Work counters of the period integrations.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct StepCounts {
+    /// Steps accepted.
     pub accepted: usize,
     /// Steps rejected by the error test.
     pub rejected: usize,
@@ -108,6 +115,7 @@ pub struct StepCounts {
     pub newton_failures: usize,
     /// Contact-mode switches located, and the trial steps that located them.
     pub events: usize,
+    /// Trial steps taken to locate the contact-mode switches.
     pub event_trials: usize,
 }
 
@@ -155,9 +163,11 @@ pub trait PeriodIntegrator {
     fn period(&self) -> f64;
     /// How the following periods choose their steps.
     fn set_plan_mode(&mut self, mode: PlanMode);
+    /// How the following periods choose their steps.
     fn plan_mode(&self) -> PlanMode;
     /// Work counters of the underlying stepper (rhs calls, LU factorisations).
     fn integrator_stats(&self) -> StepStats;
+    /// Work counters of the period integrations ([`StepCounts`]).
     fn counts(&self) -> StepCounts;
 }
 
@@ -214,6 +224,7 @@ where
     /// Step ends (times within the period, s) recorded by a [`PlanMode::Build`] period.
     plan: Vec<f64>,
     plan_mode: PlanMode,
+    /// Work counters of the periods integrated so far.
     pub counts: StepCounts,
     /// A train's steps divide what is left of a node interval into equal parts
     /// ([`PeriodStepper::next_step`]); the single pair keeps its own rule.

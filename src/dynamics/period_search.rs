@@ -20,12 +20,18 @@ pub struct SteadyStateSettings {
     pub steps_per_mesh_period: usize,
     /// Local error tolerance of a step, relative to the state scales.
     pub integration_tolerance: f64,
+    /// Give up on steady state after this many mesh periods.
     pub max_mesh_periods: usize,
+    /// Steady state: the shooting's estimated distance from the periodic orbit, relative
+    /// to the state's scales, below this.
     pub tolerance: f64,
+    /// Mesh periods recorded once steady (signals, spectra).
     pub evaluated_mesh_periods: usize,
 }
 
 impl SteadyStateSettings {
+    /// The settings of `[numerics]` (counts raised to their least meaningful value: at least
+    /// one node, two periods searched and one recorded).
     pub fn from_case(n: &crate::config::case::NumericsSection) -> Self {
         Self {
             steps_per_mesh_period: n.steps_per_mesh_period.max(1) as usize,
@@ -40,16 +46,23 @@ impl SteadyStateSettings {
 /// Why a dynamic evaluation failed.
 #[derive(Debug, thiserror::Error)]
 pub enum DynamicsError {
+    /// A step of the period integration failed.
     #[error(transparent)]
     Integrator(#[from] StepFailure),
+    /// The search did not reach the periodic orbit within its periods.
     #[error("no steady state after {periods} mesh periods (estimated distance from the periodic orbit {change:.2e} > tolerance {tolerance:.1e}); raise numerics.max_mesh_periods or check the damping; with a tooth fault, check that the faulty tooth can still carry the load (a nearly severed tooth leaves the model: docs/MODEL.md, section 9.9)")]
     NotPeriodic {
+        /// Periods integrated.
         periods: usize,
+        /// Estimated distance from the periodic orbit at the end, relative to the state's scales.
         change: f64,
+        /// The steady-state tolerance it was held to.
         tolerance: f64,
     },
+    /// An integrator setting out of its range (the message names it).
     #[error("invalid integrator setting: {0}")]
     Setting(String),
+    /// The train's common excitation period overflows an integer count of base periods.
     #[error("the train's excitation period (the smallest common period of its meshes and their teeth) is too long to count in integers; a train of these teeth cannot be solved")]
     PeriodTooLong,
 }
@@ -74,8 +87,10 @@ pub fn window_repeats(
 /// cycle 0 meeting again and again).
 pub struct MeshPeriodSearch<'s, 'a> {
     sys: &'s GearSystem<'a>,
-    pub ps: Box<dyn PeriodIntegrator + 's>,
-    pub red: Reduction,
+    /// The period stepper (one base period per call).
+    pub(crate) ps: Box<dyn PeriodIntegrator + 's>,
+    /// The reduction of the state to the coordinates the shooting iterates on.
+    pub(crate) red: Reduction,
     template: State,
     z: DVector<f64>,
     red_scales: DVector<f64>,
@@ -84,6 +99,8 @@ pub struct MeshPeriodSearch<'s, 'a> {
 }
 
 impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
+    /// A search on `sys` with `settings`, from the state `start` (length the system's states)
+    /// or, without one, the static equilibrium.
     pub fn new(
         sys: &'s GearSystem<'a>,
         settings: &SteadyStateSettings,

@@ -47,7 +47,7 @@ const LOADED_MEAN_PHASES: usize = 64;
 
 /// Each mesh's mean loaded stiffness, N/m: the stiffness of the pairs that carry load in
 /// the quasi-static equilibrium (the tangent stiffness dF/d delta of the loaded mesh)
-/// averaged over [`LOADED_MEAN_PHASES`] phases
+/// averaged over `LOADED_MEAN_PHASES` phases
 /// of one mesh period. With corner contact it counts the corners the load closes (6.3 %
 /// above the nominal mean on the paper's case), which the table mean
 /// (`MeshStiffness::mean_stiffness_n_per_m`) leaves out; a mesh on the nominal path keeps

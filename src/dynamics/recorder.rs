@@ -21,12 +21,12 @@ fn drift(y_start: &[f64], y_end: &[f64]) -> Vec<f64> {
 /// periods.
 #[derive(Default)]
 pub struct Recorder {
-    pub sig: Signals,
+    pub(crate) sig: Signals,
     /// Each mesh's path of contact.
     pub paths: Vec<Vec<PathSample>>,
     /// Each mesh's time integrals of the force (N s) and DTE (m s).
     pub force_int: Vec<f64>,
-    pub dte_int: Vec<f64>,
+    pub(crate) dte_int: Vec<f64>,
     /// Base periods of the recorded period (0 or 1: one).
     pub excitation_periods: usize,
     /// Mesh periods of each mesh in the recorded period (for tagging engagements).

@@ -9,14 +9,22 @@ use serde::Serialize;
 /// engagement (all teeth alike, as the paper assumes).
 #[derive(Debug, Clone, Copy, Serialize, Default)]
 pub struct PathSample {
+    /// Pinion radius of curvature rho1 at the contact (its position on the line of action,
+    /// measured from the pinion's base-circle tangent point), m.
     pub rho1_m: f64,
+    /// Load W carried by the pair, N.
     pub load_n: f64,
+    /// Maximum Hertz contact pressure p_0, Pa.
     pub pressure_pa: f64,
+    /// Hertz contact half-width a, m.
     pub half_width_m: f64,
+    /// Friction coefficient mu (the case's law: Xu et al., paper eq. 8, by default).
     pub friction_coefficient: f64,
+    /// Signed friction force, N (positive when the pinion surface is faster).
     pub friction_n: f64,
     /// Pinion and gear surface speeds perpendicular to the line of action, m/s.
     pub pinion_surface_speed_m_per_s: f64,
+    /// Gear surface speed perpendicular to the line of action, m/s.
     pub gear_surface_speed_m_per_s: f64,
     /// Mesh cycle of the pair modulo the excitation period P (tooth-resolved mesh; 0
     /// otherwise): its engagement within the period, in [0, P), from the dynamic recorder
@@ -81,6 +89,7 @@ impl Coordinates {
         self.values.len().checked_div(self.dofs).unwrap_or(0)
     }
 
+    /// Whether there are no samples.
     pub fn is_empty(&self) -> bool {
         self.values.is_empty()
     }
@@ -117,7 +126,9 @@ pub struct MeshSignals {
     pub phase_rad: Vec<f64>,
     /// Dynamic transmission error: relative displacement along the line of action, m.
     pub dte_m: Vec<f64>,
+    /// Mesh force F, N.
     pub mesh_force_n: Vec<f64>,
+    /// Sum of the stiffnesses of the pairs in contact, N/m.
     pub mesh_stiffness_n_per_m: Vec<f64>,
     /// Rate of the DTE, m/s: the mesh gradient times the velocities (the DTE is linear in
     /// the displacements), the DTE's slope for its interpolant. Empty when quasi-static.
@@ -125,7 +136,10 @@ pub struct MeshSignals {
     /// Friction coefficient and signed friction force of the pair that entered contact
     /// last (pair 0) and of the one ahead of it (pair 1; 0 when out of contact).
     pub friction_coefficient: [Vec<f64>; 2],
+    /// Signed friction force of pair 0 and pair 1, N (positive when the pinion surface is
+    /// faster).
     pub friction_n: [Vec<f64>; 2],
+    /// Load of pair 0 and pair 1, N.
     pub pair_load_n: [Vec<f64>; 2],
 }
 
@@ -194,13 +208,16 @@ impl MeshSignals {
 /// period of the periodic solution and repeats it over the window.
 #[derive(Debug, Clone, Default)]
 pub struct Signals {
+    /// Sample times, s (not uniformly spaced).
     pub time_s: Vec<f64>,
     /// Generalised displacements q (the assembly's coordinates: 8 for the single pair),
     /// velocities and accelerations.
     pub displacement: Coordinates,
+    /// Generalised velocities dq/dt at every sample (m/s, rad/s).
     pub velocity: Coordinates,
+    /// Generalised accelerations at every sample (m/s^2, rad/s^2; the limit from the right).
     pub acceleration: Coordinates,
-    /// Accelerations at the start ([0]) and the end ([1]) of the integration step that
+    /// Accelerations at the start (`[0]`) and the end (`[1]`) of the integration step that
     /// leaves each sample, evaluated with that step's own pairs and contact mode: where a
     /// mesh event or a contact switch makes the force jump, the end one is the limit from
     /// the left at the next sample, which `acceleration` (the limit from the right) is not.
@@ -276,6 +293,7 @@ pub struct MeshResponse {
     /// jumps at mesh events, which lie on grid nodes, so a trapezoid on the nodes would
     /// split each jump and be first order only).
     pub mean_mesh_force_n: f64,
+    /// Time mean of the dynamic transmission error, m.
     pub mean_dte_m: f64,
 }
 
@@ -289,6 +307,7 @@ impl MeshResponse {
 /// A steady-state response.
 #[derive(Debug, Clone, Default)]
 pub struct DynamicResponse {
+    /// Time series over the evaluated window.
     pub signals: Signals,
     /// Each mesh's path of contact and means, in the train's mesh order.
     pub meshes: Vec<MeshResponse>,
@@ -314,8 +333,11 @@ pub struct DynamicResponse {
     /// all periods integrated, rhs calls, LU factorisations, and the step counts in
     /// detail (rejections, contact switches).
     pub steps: usize,
+    /// Right-hand side evaluations.
     pub rhs_evaluations: usize,
+    /// LU factorisations of the iteration matrix.
     pub factorizations: usize,
+    /// Step counts in detail (rejections, contact switches).
     pub step_counts: super::period::StepCounts,
 }
 

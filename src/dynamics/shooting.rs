@@ -43,6 +43,9 @@ pub struct Reduction {
 }
 
 impl Reduction {
+    /// The reduction of `sys`'s state: without the coordinate held by an imposed speed
+    /// (and its velocity), or, when the rigid rotation is free (motor slip), without the
+    /// input's angle.
     pub fn new(sys: &GearSystem) -> Self {
         let asm = sys.assembly();
         let (n, n2) = (sys.dofs(), sys.states());
@@ -72,6 +75,7 @@ impl Reduction {
         self.idx.len()
     }
 
+    /// Whether there are no unknowns.
     pub fn is_empty(&self) -> bool {
         self.idx.is_empty()
     }

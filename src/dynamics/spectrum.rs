@@ -55,7 +55,9 @@ pub fn time_rms(t: &[f64], x: &[f64], window_s: f64) -> f64 {
 /// One-sided amplitude spectrum.
 #[derive(Debug, Clone, Default)]
 pub struct Spectrum {
+    /// Frequency of each bin, Hz.
     pub frequency_hz: Vec<f64>,
+    /// One-sided amplitude of each bin, in the signal's unit.
     pub amplitude: Vec<f64>,
     /// Bins per mesh harmonic (periods in the window).
     pub bins_per_harmonic: usize,

@@ -9,14 +9,21 @@ use serde::{Deserialize, Serialize};
 /// Scalar results of one steady-state (or quasi-static) evaluation, SI units.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct ResponseSummary {
+    /// Largest dynamic transmission error over the window, m.
     pub dte_max_m: f64,
+    /// Smallest dynamic transmission error over the window, m.
     pub dte_min_m: f64,
+    /// Time mean of the dynamic transmission error, m.
     pub dte_mean_m: f64,
+    /// Time mean of the mesh force, N.
     pub mesh_force_mean_n: f64,
+    /// Largest mesh force over the window, N.
     pub mesh_force_max_n: f64,
+    /// Smallest mesh force over the window, N.
     pub mesh_force_min_n: f64,
     /// max / mean mesh force.
     pub dynamic_factor: f64,
+    /// RMS over the window of the pinion's lateral velocity dy_p/dt, m/s.
     pub velocity_y_pinion_rms_m_per_s: f64,
     /// Amplitudes of the first four mesh harmonics of dy_p/dt, m/s: the exact Fourier
     /// coefficients of the solution over the window (`super::fourier`).
@@ -25,8 +32,11 @@ pub struct ResponseSummary {
     /// absent in checkpoints written before it existed, hence the serde default).
     #[serde(default)]
     pub dte_harmonic1_m: f64,
+    /// Largest friction coefficient along the path of contact.
     pub friction_coefficient_max: f64,
+    /// Mean friction coefficient over the path samples that carry load.
     pub friction_coefficient_mean_in_contact: f64,
+    /// Largest magnitude of a pair's friction force along the path of contact, N.
     pub friction_force_max_n: f64,
 }
 

@@ -60,7 +60,9 @@ pub struct ToothFlank {
 /// e_c = F_r / 2).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Runout {
+    /// Eccentricity e_c of the gear's axis, m (half the radial run-out F_r).
     pub eccentricity_m: f64,
+    /// Phase phi of the eccentricity, rad.
     pub phase_rad: f64,
     /// Nominal shaft speed, rad/s.
     pub shaft_speed_rad_s: f64,
@@ -85,6 +87,7 @@ impl Runout {
 /// What one pair of teeth is at a contact position.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PairProps {
+    /// Stiffness of the pair, N/m.
     pub stiffness_n_per_m: f64,
     /// Gap the pair must close, m (flanks and position errors; run-out not included).
     pub gap_m: f64,
@@ -94,7 +97,9 @@ pub struct PairProps {
     pub width_loss: f64,
     /// Change of 1/R of the Hertz contact by the flanks' wear, 1/m (0: involutes).
     pub curvature_change_per_m: f64,
+    /// Index of the pinion's tooth in the pair.
     pub pinion_tooth: usize,
+    /// Index of the gear's tooth in the pair.
     pub gear_tooth: usize,
     /// A tip corner touches beyond the path (`dynamics::contact_path`; false: the
     /// involutes on the path, or no contact).
@@ -106,7 +111,9 @@ pub struct PairProps {
 pub struct ToothMesh {
     /// Pinion flanks (z1) and gear flanks (z2).
     pub pinion: Vec<ToothFlank>,
+    /// Gear flanks, one per tooth (z2).
     pub gear: Vec<ToothFlank>,
+    /// Run-out of the pinion and of the gear.
     pub runout: [Runout; 2],
     /// The grid: first pinion rho1 and spacing, m; points per table.
     rho_start_m: f64,

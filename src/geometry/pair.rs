@@ -99,7 +99,9 @@ impl Gear {
 /// ends where tip corners may touch (`geometry::corner`, `dynamics::contact_path`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reach {
+    /// rho1 where the stretch begins (the pair enters), m.
     pub start_m: f64,
+    /// rho1 where the stretch ends (the pair leaves), m.
     pub end_m: f64,
 }
 
@@ -258,10 +260,10 @@ impl GearPair {
         }
     }
 
-    /// As [`GearPair::pairs_in_contact_decided`] over `reach`: (k, rho1) of every pair
+    /// As `GearPair::pairs_in_contact_decided` over `reach`: (k, rho1) of every pair
     /// whose position at `decide_rad` lies in the reach, k < 0 for the pairs that have not
     /// yet entered the path (pair k is mesh cycle n - k). Over the nominal reach these are
-    /// exactly the pairs of [`GearPair::pairs_in_contact_decided`].
+    /// exactly the pairs of `GearPair::pairs_in_contact_decided`.
     pub fn pairs_in_reach_decided(
         &self,
         reach: Reach,

@@ -16,7 +16,9 @@ pub const STREAM_FAILED_EXIT: u8 = 3;
 /// A standard stream.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stream {
+    /// Standard output.
     Out,
+    /// Standard error.
     Err,
 }
 

@@ -28,21 +28,27 @@ pub const TEMP_PREFIX: &str = ".gearwear-tmp-";
 /// Where a file lives: its device and inode numbers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Inode {
+    /// Device number (`st_dev`).
     pub dev: u64,
+    /// Inode number (`st_ino`).
     pub ino: u64,
 }
 
 /// What kind of entry a name holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
+    /// A regular file.
     File,
+    /// A folder (directory).
     Folder,
+    /// A symbolic link.
     Link,
     /// A FIFO, device or socket (named).
     Special(&'static str),
 }
 
 impl Kind {
+    /// The kind in words for messages ("a file", "a folder", ...).
     pub fn words(&self) -> &'static str {
         match self {
             Kind::File => "a file",
@@ -57,9 +63,13 @@ impl Kind {
 /// followed).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Entry {
+    /// What kind of entry it is.
     pub kind: Kind,
+    /// Its device and inode.
     pub inode: Inode,
+    /// Number of hard links (`st_nlink`).
     pub links: u64,
+    /// Size, bytes.
     pub bytes: u64,
 }
 

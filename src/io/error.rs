@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 pub struct OutputError {
     /// What was being done ("write", "create the directory", ...).
     pub action: &'static str,
+    /// The path operated on.
     pub path: PathBuf,
     /// The operating system's words, or ours.
     pub reason: String,

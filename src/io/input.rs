@@ -43,7 +43,9 @@ pub const MAX_PREDICT_SHARD_BYTES: u64 = 1 << 30;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{path}: {reason}")]
 pub struct InputError {
+    /// The file as given.
     pub path: String,
+    /// Why it cannot be read.
     pub reason: String,
 }
 

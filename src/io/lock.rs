@@ -30,14 +30,23 @@ pub struct OutputLock {
 pub enum LockError {
     /// Another process holds it.
     #[error("{}", self.problem())]
-    Held { path: PathBuf, holder: String },
+    Held {
+        /// The lock file.
+        path: PathBuf,
+        /// The holder line of the lock file ("holder unknown" when empty).
+        holder: String,
+    },
     /// The folder holds another command's results, and replacing them was not allowed.
     #[error("{}", self.problem())]
     OtherCommand {
+        /// The output folder.
         path: PathBuf,
+        /// The command whose results the folder holds.
         held: String,
+        /// Number of outputs of that command the folder holds.
         files: usize,
     },
+    /// A file-system operation on the folder or the lock file failed.
     #[error(transparent)]
     Io(#[from] OutputError),
 }
@@ -146,6 +155,7 @@ impl OutputLock {
         Ok(Self { file, path })
     }
 
+    /// The lock file's path.
     pub fn path(&self) -> &Path {
         &self.path
     }

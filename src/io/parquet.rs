@@ -24,15 +24,19 @@ use std::sync::Arc;
 /// The values of one column.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ColumnData {
+    /// Double precision.
     F64(Vec<f64>),
     /// Single precision: recorded samples (24-bit converters resolve ~6e-8 of full
     /// scale, float32 6e-8 of each value).
     F32(Vec<f32>),
+    /// 64-bit integers.
     I64(Vec<i64>),
+    /// UTF-8 text.
     Text(Vec<String>),
 }
 
 impl ColumnData {
+    /// Number of values.
     pub fn len(&self) -> usize {
         match self {
             ColumnData::F64(v) => v.len(),
@@ -42,6 +46,7 @@ impl ColumnData {
         }
     }
 
+    /// Whether the column holds no values.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -50,11 +55,14 @@ impl ColumnData {
 /// A named column.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
+    /// Column name (with its unit, e.g. `time_s`).
     pub name: String,
+    /// The values.
     pub data: ColumnData,
 }
 
 impl Column {
+    /// A column named `name` holding `data`.
     pub fn new(name: impl Into<String>, data: ColumnData) -> Self {
         Self {
             name: name.into(),

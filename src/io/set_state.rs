@@ -22,17 +22,23 @@ pub const MAX_STATE_BYTES: u64 = 256 << 20;
 /// A published output as written.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct OutputRecord {
+    /// Path relative to the output folder, `/`-separated.
     pub path: String,
+    /// Device and inode of the file as written.
     #[serde(flatten)]
     pub inode: Inode,
+    /// Size, bytes.
     pub bytes: u64,
+    /// SHA-256 of the content, lowercase hex.
     pub sha256: String,
 }
 
 /// A state file (appended to, or written once per case) or a staging folder.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct PlaceRecord {
+    /// Path relative to the output folder.
     pub path: String,
+    /// Device and inode of the file or folder.
     #[serde(flatten)]
     pub inode: Inode,
 }
@@ -40,12 +46,19 @@ pub struct PlaceRecord {
 /// The content of a state file (see the module docs).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct SetState {
+    /// Format name of the file, "gearwear-output-state".
     pub format: String,
+    /// Format version.
     pub version: u32,
+    /// Device and inode of the output folder the record belongs to.
     pub folder: Inode,
+    /// The command that wrote the set.
     pub command: String,
+    /// Every published output.
     pub outputs: Vec<OutputRecord>,
+    /// State files kept for resuming (checkpoints, finished sweep cases).
     pub state_files: Vec<PlaceRecord>,
+    /// Staging folders in use.
     pub staging: Vec<PlaceRecord>,
 }
 
@@ -63,10 +76,12 @@ impl SetState {
         }
     }
 
+    /// The published output at `path`, if recorded.
     pub fn output(&self, path: &str) -> Option<&OutputRecord> {
         self.outputs.iter().find(|o| o.path == path)
     }
 
+    /// The state file at `path`, if recorded.
     pub fn state_file(&self, path: &str) -> Option<&PlaceRecord> {
         self.state_files.iter().find(|o| o.path == path)
     }

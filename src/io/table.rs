@@ -4,11 +4,14 @@
 /// `mesh_force_n`.
 #[derive(Debug, Clone, Default)]
 pub struct Table {
+    /// Column names, each with its unit.
     pub names: Vec<String>,
+    /// Columns of values, in the order of `names`.
     pub columns: Vec<Vec<f64>>,
 }
 
 impl Table {
+    /// An empty table.
     pub fn new() -> Self {
         Self::default()
     }
@@ -20,6 +23,7 @@ impl Table {
         self
     }
 
+    /// Number of rows: the longest column's length.
     pub fn rows(&self) -> usize {
         self.columns.iter().map(Vec::len).max().unwrap_or(0)
     }

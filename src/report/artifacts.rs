@@ -17,8 +17,11 @@ use std::path::PathBuf;
 pub struct FigureFile {
     /// Path relative to the output folder, ending in `.png`.
     pub path: String,
+    /// The figure to render.
     pub figure: Figure,
+    /// Image width, px.
     pub width_px: u32,
+    /// Image height, px.
     pub height_px: u32,
     /// The table (its path in [`Artifacts::tables`]) that holds exactly the plotted
     /// numbers, each curve's x and y a column in the plotted unit.
@@ -33,7 +36,9 @@ pub struct FigureFile {
 pub struct Rendered {
     /// Width and height of the images, px.
     pub size_px: (u32, u32),
+    /// PNG file bytes, when PNG was asked.
     pub png: Option<Vec<u8>>,
+    /// SVG document, when SVG was asked.
     pub svg: Option<String>,
 }
 
@@ -83,6 +88,7 @@ pub struct Artifacts {
     pub summary_file: Option<String>,
     /// CSV tables by relative path.
     pub tables: Vec<(String, Table)>,
+    /// Figures with their file paths.
     pub figures: Vec<FigureFile>,
     /// Other files (e.g. `report.html`) by relative path.
     pub documents: Vec<(String, Vec<u8>)>,
@@ -142,6 +148,7 @@ impl Artifacts {
         self.figure_sized(path, figure, PLOT_W, h);
     }
 
+    /// Add a figure of `w` x `h` px.
     pub fn figure_sized(&mut self, path: impl Into<String>, figure: Figure, w: u32, h: u32) {
         self.figures.push(FigureFile {
             path: path.into(),
@@ -230,9 +237,13 @@ impl Artifacts {
 /// A figure of a report: its file stem, the figure, the table of exactly its data, and
 /// its caption.
 pub struct EmbeddedFigure {
+    /// File stem (the figure goes to `STEM.png`/`STEM.svg`, its data to `csv/STEM.csv`).
     pub stem: String,
+    /// The figure.
     pub figure: Figure,
+    /// Exactly the plotted numbers.
     pub table: Table,
+    /// Caption in the report (plain text).
     pub caption: String,
 }
 
@@ -297,12 +308,25 @@ pub fn embed_figure(
 /// Why artifacts could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum WriteError {
+    /// Staging a file in the output folder failed.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// Drawing a figure failed.
     #[error("cannot draw {path}: {source}")]
-    Plot { path: String, source: PlotError },
+    Plot {
+        /// The figure's path in the output folder.
+        path: String,
+        /// What the plotting layer reported.
+        source: PlotError,
+    },
+    /// Encoding a table (CSV or Parquet) failed.
     #[error("cannot format {path}: {reason}")]
-    Format { path: String, reason: String },
+    Format {
+        /// The table's path in the output folder.
+        path: String,
+        /// What failed.
+        reason: String,
+    },
 }
 
 /// Stage every artifact into `out` (`summary.json`, tables, figures, documents). The

@@ -29,7 +29,9 @@ pub struct Compared {
     /// The same quantity of the case run under the other contact model ([`with_twin`];
     /// `None`: not run).
     pub twin: Option<f64>,
+    /// The paper's value.
     pub paper: f64,
+    /// Why ours differs from the paper's (numbers from the run).
     pub explanation: String,
 }
 
@@ -60,9 +62,16 @@ pub fn with_twin(mut rows: Vec<Compared>, twin: &[Compared]) -> Vec<Compared> {
 
 /// The paper's section 4.1 values at 0.1 / 0.5 / 1 um wear and 4.2 ratios.
 pub const PAPER_DTE_MAX_UM: [f64; 3] = [16.70, 18.08, 19.47];
+/// The paper's RMS of the pinion's y velocity dy_p/dt at 0.1 / 0.5 / 1 µm wear, mm/s
+/// (section 4.1).
 pub const PAPER_VEL_RMS_MM_S: [f64; 3] = [1.10, 1.19, 1.28];
+/// The paper's mean mesh force at 0.1 / 0.5 / 1 µm wear, N (section 4.1).
 pub const PAPER_FORCE_MEAN_N: [f64; 3] = [3311.2, 3431.9, 3697.6];
+/// The paper's ratio of the largest pinion wear depth per cycle, dynamic over
+/// quasi-static (section 4.2).
 pub const PAPER_RATIO_MAX_WEAR: f64 = 1.6;
+/// The paper's ratio of the largest accumulated pinion wear, dynamic over quasi-static
+/// (section 4.2).
 pub const PAPER_RATIO_ACCUMULATED_WEAR: f64 = 1.2;
 
 /// Load cycles both wear runs reached: the case's total unless a run stopped early

@@ -15,8 +15,11 @@ use crate::io::Table;
 
 /// A figure, its file stem and the table of exactly its data.
 pub struct DutyFigure {
+    /// File stem.
     pub stem: String,
+    /// The figure.
     pub figure: Figure,
+    /// Exactly the plotted numbers.
     pub table: Table,
 }
 

@@ -25,6 +25,7 @@ pub const COORDINATE_NAMES: [&str; 8] = [
     "phi_gear",
     "phi_brake",
 ];
+/// SI unit of each coordinate of [`COORDINATE_NAMES`].
 pub const COORDINATE_UNITS: [&str; 8] = ["m", "m", "m", "m", "rad", "rad", "rad", "rad"];
 
 /// Everything `gearwear dynamics` writes for one evaluation (`label` names the state in

@@ -10,6 +10,7 @@ use crate::remedy::{Arg, Problem};
 
 /// Default plot size, px (one panel).
 pub const PLOT_W: u32 = 900;
+/// Default plot height, px (one panel).
 pub const PLOT_H: u32 = 420;
 
 /// Height of a figure of `panels` stacked panels, px: [`PLOT_H`] for one, 300 px a panel
@@ -38,7 +39,9 @@ pub const FORMAT_WORDS: &str = "png, svg or png,svg";
 /// The formats figures are written in, and their size.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FigureOutput {
+    /// Write PNG files.
     pub png: bool,
+    /// Write SVG files.
     pub svg: bool,
     /// Width and height of a one-panel figure, px; `None`: the defaults
     /// ([`PLOT_W`] x [`PLOT_H`]). A figure of n panels keeps its default height ratio to a
@@ -66,6 +69,8 @@ pub struct FigureRequest {
 }
 
 impl FigureRequest {
+    /// The output these options ask for, or a problem naming the argument that is out of
+    /// range or malformed.
     pub fn resolve(&self) -> Result<FigureOutput, Problem> {
         FigureOutput::parse(
             self.formats.as_deref().unwrap_or("png"),

@@ -11,19 +11,26 @@ pub struct Fig {
     pub file: String,
     /// The paper's figure this one reproduces; 0: a figure beyond the paper.
     pub paper_figure: u32,
+    /// Caption in the report (plain text).
     pub caption: String,
+    /// The figure.
     pub figure: Figure,
+    /// Exactly the plotted numbers.
     pub table: Table,
 }
 
 /// A labelled curve (x, y), already in display units.
 pub struct Curve {
+    /// Legend entry.
     pub name: String,
+    /// Abscissae, in display units.
     pub x: Vec<f64>,
+    /// Ordinates, in display units.
     pub y: Vec<f64>,
 }
 
 impl Curve {
+    /// A curve named `name` through the points (x, y).
     pub fn new(name: impl Into<String>, x: Vec<f64>, y: Vec<f64>) -> Self {
         Self {
             name: name.into(),

@@ -20,6 +20,7 @@ pub struct Report {
     /// Trusted HTML of our own making, inserted verbatim after the title. Never put user
     /// text here unescaped (use [`escape`]).
     pub intro_html: String,
+    /// The numbered sections, in order.
     pub sections: Vec<Section>,
     /// Plain text run metadata (program version, case hash, ...); line breaks are kept.
     /// Empty = no footer.
@@ -33,7 +34,9 @@ pub struct Section {
     pub heading: String,
     /// Plain text, one `<p>` each.
     pub paragraphs: Vec<String>,
+    /// Figures, after the paragraphs.
     pub figures: Vec<FigureBlock>,
+    /// Tables, after the figures.
     pub tables: Vec<TableBlock>,
 }
 
@@ -58,7 +61,9 @@ pub struct FigureBlock {
 pub struct TableBlock {
     /// Plain text.
     pub caption: String,
+    /// Column headings (plain text).
     pub header: Vec<String>,
+    /// Rows of plain-text cells.
     pub rows: Vec<Vec<String>>,
     /// Zero-based column shown emphasised (e.g. the relative deviation of a comparison).
     pub highlight_col: Option<usize>,

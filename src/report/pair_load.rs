@@ -28,12 +28,14 @@ const PHASES: usize = 720;
 /// share of the mesh force carried there (1), in ascending rho1.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct PairLoadCurve {
+    /// Contact positions rho1, m, ascending.
     pub rho1_m: Vec<f64>,
+    /// Share of the mesh force carried at each position (1: all of it).
     pub share: Vec<f64>,
 }
 
 /// The curve of [`PairLoadCurve`] from the quasi-static equilibria of `sys`'s mesh 0 (a
-/// single pair whose contact follows `contact`) at [`PHASES`] phases over one mesh
+/// single pair whose contact follows `contact`) at `PHASES` phases over one mesh
 /// period (quasi-static: the pairs' springs alone carry the static mesh force;
 /// `dynamics::quasi_static`). The position is the pair's place in the reach, where a
 /// corner pair stands beyond the path (the equilibrium's rho1 is where its Hertz contact

@@ -161,7 +161,7 @@ pub fn fan_figure(title: &str, bands: &[(Quantity, Band)], limit_um: Option<f64>
 const LOG_LIFE_RATIO: f64 = 10.0;
 
 /// Bins of the histogram of `lives`: 40 equal bins over [smallest, largest] life, on
-/// log10(cycles) when the lives span [`LOG_LIFE_RATIO`] or more. Returns the bin centres
+/// log10(cycles) when the lives span `LOG_LIFE_RATIO` or more. Returns the bin centres
 /// in axis units, the count per bin, and whether the axis is log10.
 pub fn life_bins(lives: &[f64]) -> (Vec<f64>, Vec<f64>, bool) {
     let bins = 40;

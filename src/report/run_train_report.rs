@@ -17,6 +17,7 @@ use serde_json::Value;
 pub struct TrainRun<'a> {
     /// The train's model and its train.
     pub model: &'a Model,
+    /// The train (stages, meshes, operating point).
     pub train: &'a TrainModel,
     /// Each stage's single-pair model (`study::train_stages::stage_models`).
     pub stages: &'a [Model],

@@ -66,7 +66,8 @@ pub fn chain_json(chain: &SignalChain, samples: usize) -> Value {
     })
 }
 
-pub fn kinematics_json(k: &Kinematics) -> Value {
+/// The shaft speeds (Hz), mesh frequency (Hz) and teeth of a record's pair, as summary JSON.
+pub(crate) fn kinematics_json(k: &Kinematics) -> Value {
     json!({
         "pinion_shaft_hz": k.pinion_hz,
         "gear_shaft_hz": k.gear_hz,

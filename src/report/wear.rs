@@ -116,8 +116,11 @@ pub fn profiles_table(g: &crate::geometry::ProfileGrid, rec: &[UpdateRecord]) ->
 
 /// A figure of the wear study, its file stem and the table of exactly its data.
 pub struct WearFigure {
+    /// File stem.
     pub stem: &'static str,
+    /// The figure.
     pub figure: Figure,
+    /// Exactly the plotted numbers.
     pub table: Table,
 }
 

@@ -12,8 +12,11 @@ pub const SHOWN_STATES: usize = 6;
 
 /// A worn-profile figure, its file stem and the table of exactly its data.
 pub struct WornProfileFigure {
+    /// File stem.
     pub stem: String,
+    /// The figure.
     pub figure: Figure,
+    /// Exactly the plotted numbers.
     pub table: Table,
 }
 

@@ -85,7 +85,7 @@ impl Record {
 /// The noise-free, filtered periodic signals of a steady state (steps 1-3).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeriodicRecord {
-    /// The bearing forces as Fourier series (N), in [`INPUTS`](super::bearing::INPUTS) order: the
+    /// The bearing forces as Fourier series (N), in `bearing::INPUTS` order: the
     /// chain's inputs (step 1).
     pub inputs: Vec<PeriodicSignal>,
     /// Acceleration at each sensor, m/s^2, after the anti-alias filter.

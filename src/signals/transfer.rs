@@ -67,7 +67,7 @@ pub(crate) fn modal_accelerance(
 }
 
 impl TransferPath {
-    /// Accelerance from input `j` ([`INPUTS`](super::bearing::INPUTS) order) to sensor `s`
+    /// Accelerance from input `j` (`bearing::INPUTS` order) to sensor `s`
     /// at `f_hz`, m/s^2 per N.
     pub fn accelerance(&self, s: usize, j: usize, f_hz: f64) -> Complex64 {
         match &self.model {

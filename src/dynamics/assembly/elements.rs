@@ -28,6 +28,7 @@ pub enum BodyKind {
 pub struct Body {
     /// Name in messages and outputs ("motor", "pinion", "stage 2 gear", ...).
     pub name: String,
+    /// What the body is.
     pub kind: BodyKind,
     /// Mass, kg (used when the body moves laterally).
     pub mass_kg: f64,
@@ -40,6 +41,7 @@ pub struct Body {
 /// A bearing: a body's centre held to ground by a spring and a damper per direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bearing {
+    /// Index of the body the bearing holds.
     pub body: usize,
     /// Stiffness in x and y, N/m.
     pub stiffness_n_per_m: [f64; 2],
@@ -52,10 +54,15 @@ pub struct Bearing {
 /// lateral spring and damper between their centres (0: none).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Shaft {
+    /// Indices of the two bodies the shaft joins.
     pub ends: [usize; 2],
+    /// Torsional stiffness on the difference of the ends' rotations, N m/rad.
     pub torsional_stiffness_nm_per_rad: f64,
+    /// Torsional damping on the difference of the ends' rotations, N m s/rad.
     pub torsional_damping_nm_s_per_rad: f64,
+    /// Lateral stiffness between the two centres, N/m (0: none).
     pub lateral_stiffness_n_per_m: f64,
+    /// Lateral damping between the two centres, N s/m (0: none).
     pub lateral_damping_n_s_per_m: f64,
 }
 
@@ -68,7 +75,9 @@ pub struct Shaft {
 pub struct MeshLink {
     /// The driving gear (the stage's pinion) and the driven one.
     pub pinion: usize,
+    /// Index of the driven gear body.
     pub gear: usize,
+    /// Teeth of pinion and gear (the speed ratio).
     pub teeth: [usize; 2],
     /// Base radii of pinion and gear, m.
     pub base_radius_m: [f64; 2],
@@ -85,10 +94,13 @@ pub struct MeshLink {
 pub struct Drive {
     /// The driving body (the motor) and the driven one (the load).
     pub input: usize,
+    /// Index of the driven body (the load).
     pub output: usize,
+    /// How the speeds are held (`operating.speed_boundary`).
     pub boundary: SpeedBoundary,
     /// Mean torques on input and output, N m (the input's drives, the output's resists).
     pub input_torque_nm: f64,
+    /// Mean torque on the output, N m (resisting).
     pub output_torque_nm: f64,
     /// The motor's slip damping, N m s/rad (motor slip only).
     pub slip_damping_nm_s_per_rad: f64,
@@ -97,9 +109,14 @@ pub struct Drive {
 /// The elements of a train.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Elements {
+    /// The rigid bodies; elements refer to them by index.
     pub bodies: Vec<Body>,
+    /// Bearings holding bodies to ground.
     pub bearings: Vec<Bearing>,
+    /// Shafts and couplings between bodies.
     pub shafts: Vec<Shaft>,
+    /// Meshes between gear bodies.
     pub meshes: Vec<MeshLink>,
+    /// Where the power enters and leaves, and how the speeds are held.
     pub drive: Drive,
 }

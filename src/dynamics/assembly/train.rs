@@ -12,6 +12,7 @@ pub struct StageElements {
     /// The stage's pinion and gear masses, inertias and bearings (resolved), and the
     /// motor's and load's inertias and couplings (taken from the first and last stage).
     pub lumped: DynamicsSection<f64>,
+    /// Teeth of the stage's pinion and gear.
     pub teeth: [usize; 2],
     /// Base radii of pinion and gear, m.
     pub base_radius_m: [f64; 2],

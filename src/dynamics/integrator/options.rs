@@ -2,13 +2,13 @@
 
 use super::IntegratorError;
 
-/// Settings of the Newton iteration of [`Sdirk`]. These set how accurately the implicit
+/// Settings of the Newton iteration of [`Sdirk`](super::Sdirk). These set how accurately the implicit
 /// stage equations are solved, not the truncation error of the step: keep them well
 /// below the accuracy you expect from the step size.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SdirkOptions {
     /// Absolute Newton tolerance, units of `y`, > 0 (same for all components; use
-    /// [`Sdirk::set_abs_tol`] for per-component values, e.g. m and m/s).
+    /// [`Sdirk::set_abs_tol`](super::Sdirk::set_abs_tol) for per-component values, e.g. m and m/s).
     pub abs_tol: f64,
     /// Relative Newton tolerance, dimensionless, >= 0.
     pub rel_tol: f64,

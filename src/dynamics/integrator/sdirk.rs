@@ -100,6 +100,7 @@ where
 {
     /// Start time and size of the step.
     pub t: f64,
+    /// Size of the step, s.
     pub h: f64,
     /// Solution at `t + h`.
     pub y: Vector<D>,

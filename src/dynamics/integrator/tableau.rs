@@ -13,7 +13,7 @@
 //!               | b1           b2     gamma
 //!   ```
 //!   with `b1 = -(6 gamma^2 - 16 gamma + 1)/4`, `b2 = (6 gamma^2 - 20 gamma + 5)/4`.
-//! * [`ESDIRK32`]: ESDIRK3(2)4L[2]SA of C. A. Kennedy & M. H. Carpenter, "Diagonally
+//! * [`ESDIRK32`]: ESDIRK3(2)4L\[2\]SA of C. A. Kennedy & M. H. Carpenter, "Diagonally
 //!   implicit Runge-Kutta methods for ordinary differential equations. A review",
 //!   NASA/TM-2016-219173 (2016), Sect. 5.2: 4 stages, the first explicit
 //!   (`Y_1 = y_n`), order 3, L-stable, stiffly accurate, **stage order 2** (every stage
@@ -40,17 +40,23 @@ pub const GAMMA: f64 = 0.435_866_521_508_459;
 /// with an explicit first stage (`a_11 = 0`, ESDIRK) and an embedded solution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tableau {
+    /// Name of the method (in messages).
     pub name: &'static str,
+    /// Number of stages used (at most `MAX_STAGES`).
     pub stages: usize,
     /// `a_ij`, lower triangular; `a_ii = gamma` except `a_11 = 0` for an ESDIRK.
     pub a: [[f64; MAX_STAGES]; MAX_STAGES],
+    /// Weights `b_i` of the main solution.
     pub b: [f64; MAX_STAGES],
     /// Weights of the embedded lower-order solution, if any.
     pub b_hat: Option<[f64; MAX_STAGES]>,
+    /// Nodes `c_i` (stage times as fractions of the step).
     pub c: [f64; MAX_STAGES],
+    /// The constant diagonal coefficient gamma.
     pub gamma: f64,
     /// Classical order of the main and the embedded solution.
     pub order: u32,
+    /// Classical order of the embedded solution (0 without one).
     pub embedded_order: u32,
 }
 
@@ -108,7 +114,7 @@ const E_B1: f64 = 0.18764102434672383;
 const E_B2: f64 = -0.595297473576955;
 const E_B3: f64 = 0.9717899277217721;
 
-/// ESDIRK3(2)4L[2]SA (see module docs).
+/// ESDIRK3(2)4L\[2\]SA (see module docs).
 pub const ESDIRK32: Tableau = Tableau {
     name: "ESDIRK3(2)4L[2]SA (Kennedy & Carpenter 2016)",
     stages: 4,

@@ -26,6 +26,7 @@ pub struct ContactMode {
 }
 
 impl ContactMode {
+    /// Whether pair `pair` of the contact set touches.
     pub fn touches(&self, pair: usize) -> bool {
         self.touching[pair]
     }
@@ -71,6 +72,7 @@ impl ContactModes {
         self.n
     }
 
+    /// Whether there are no meshes.
     pub fn is_empty(&self) -> bool {
         self.n == 0
     }
@@ -93,7 +95,9 @@ pub struct ContactFrame {
 /// [`ContactFrame`] as one mesh sees it.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct MeshFrame {
+    /// Time at which the pairs in contact are decided, s; None: the evaluation time.
     pub decision_time_s: Option<f64>,
+    /// This mesh's contact mode held fixed; None: decided from the state.
     pub mode: Option<ContactMode>,
 }
 
@@ -166,6 +170,7 @@ impl ModeSwitch {
         self.n
     }
 
+    /// Whether there are no switching functions.
     pub fn is_empty(&self) -> bool {
         self.n == 0
     }

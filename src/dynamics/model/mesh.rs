@@ -22,6 +22,7 @@ pub struct TrainMesh<'a> {
     pub mesh_damping_n_s_per_m: f64,
     /// Where the mesh acts in the assembled coordinates.
     pub geometry: MeshGeometry,
+    /// The mesh's operating point (nominal speeds, torques, static force, damping ratio).
     pub operating: MeshOperating,
     /// Nominal speed of the drive's input, rad/s (the reference of a [`Drive`]).
     pub(super) input_speed_rad_s: f64,

@@ -113,7 +113,6 @@ impl OutputDir {
         Self::open_with(root, set, command, OtherSet::Refuse)
     }
 
-    /// As [`OutputDir::open`], with the choice for another command's set.
     /// The record of the output set `set` in `root_path` as the last run left it, read
     /// without taking the folder's lock or changing anything (None: no folder, no record,
     /// or one that is not this folder's: `open_with` refuses that one). For checks a job
@@ -127,6 +126,7 @@ impl OutputDir {
         read_state(&root, &name).ok().flatten()
     }
 
+    /// As [`OutputDir::open`], with the choice for another command's set.
     pub fn open_with(
         root_path: &Path,
         set: Option<&str>,

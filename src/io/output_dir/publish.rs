@@ -29,15 +29,20 @@ pub const UNPUBLISHED_PREFIX: &str = "gearwear-unpublished-";
 pub struct ManifestEntry {
     /// Path relative to the output folder, `/`-separated.
     pub path: String,
+    /// SHA-256 of the content, lowercase hex.
     pub sha256: String,
+    /// Size, bytes.
     pub bytes: u64,
 }
 
 /// What a published set holds (for people and scripts; gearwear acts on its state file).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Manifest {
+    /// Name of the program that wrote the set ("gearwear").
     pub program: String,
+    /// Version of the program.
     pub version: String,
+    /// The command that wrote the set.
     pub command: String,
     /// Outputs of the run, with their checksums.
     pub files: Vec<ManifestEntry>,

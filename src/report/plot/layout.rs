@@ -1,15 +1,19 @@
 //! Where things go on a panel, in pixels: the rectangles of the plot area, the legend, the
 //! colour bar and the marker labels, and the pixels the data cover. Pure geometry: the
 //! renderer (`draw.rs`) computes a [`PanelLayout`] from the chart it is about to draw and
-//! draws exactly there, and [`super::layout`] hands the same layout to tests.
+//! draws exactly there, and [`super::layout()`] hands the same layout to tests.
 
 /// An axis-aligned rectangle in pixels of the whole image, half-open: x in [x0, x1),
 /// y in [y0, y1) (y grows downwards).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Rect {
+    /// Left edge (inclusive), px.
     pub x0: i32,
+    /// Top edge (inclusive), px.
     pub y0: i32,
+    /// Right edge (exclusive), px.
     pub x1: i32,
+    /// Bottom edge (exclusive), px.
     pub y1: i32,
 }
 
@@ -28,18 +32,22 @@ impl Rect {
         }
     }
 
+    /// Width, px.
     pub fn width(&self) -> i32 {
         self.x1 - self.x0
     }
 
+    /// Height, px.
     pub fn height(&self) -> i32 {
         self.y1 - self.y0
     }
 
+    /// Whether pixel (x, y) lies inside.
     pub fn contains(&self, (x, y): (i32, i32)) -> bool {
         (self.x0..self.x1).contains(&x) && (self.y0..self.y1).contains(&y)
     }
 
+    /// Whether the two rectangles share a pixel.
     pub fn intersects(&self, o: &Rect) -> bool {
         self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
     }

@@ -5,7 +5,7 @@
 //! degenerate ranges get a width.
 //!
 //! Legends never cover data: a legend goes into a corner of the plot area that the data
-//! leave free, or else into a band right of it (`draw.rs`); [`layout`] returns where the
+//! leave free, or else into a band right of it (`draw.rs`); [`layout()`] returns where the
 //! renderer put every legend and which pixels the data cover, so tests check what is drawn.
 
 mod dash;
@@ -51,13 +51,21 @@ const PALETTE: [RGBColor; 8] = [
 /// Errors of the plotting layer (never a panic).
 #[derive(Debug, thiserror::Error)]
 pub enum PlotError {
-    /// `got` and `min` are (width, height) in pixels.
+    /// The image size is outside what the figure can be drawn in.
     #[error("image size {got:?} px: this figure needs >= {min:?}, <= {MAX_SIDE_PX} a side")]
-    Size { got: (u32, u32), min: (u32, u32) },
+    Size {
+        /// The size asked, (width, height) px.
+        got: (u32, u32),
+        /// The smallest size the figure needs, (width, height) px.
+        min: (u32, u32),
+    },
+    /// The embedded font could not be registered.
     #[error("the embedded DejaVu font could not be registered with plotters")]
     Font,
+    /// The drawing backend failed (its message).
     #[error("drawing failed: {0}")]
     Draw(String),
+    /// Reading or writing a file failed (the path and the error).
     #[error("I/O error on {}: {}", .0.display(), .1)]
     Io(PathBuf, #[source] std::io::Error),
 }
@@ -70,9 +78,12 @@ fn draw_err(e: impl std::fmt::Display) -> PlotError {
 /// Line style of one series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum LineStyle {
+    /// A solid line.
     #[default]
     Solid,
+    /// A dashed line.
     Dashed,
+    /// A dotted line.
     Dotted,
     /// Markers only, no connecting line (circles unless the series names a marker).
     Points,
@@ -81,17 +92,23 @@ pub enum LineStyle {
 /// Marker drawn at every point of a series (with or without its line).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Marker {
+    /// No marker.
     #[default]
     None,
+    /// A circle.
     Circle,
+    /// A square.
     Square,
+    /// A triangle.
     Triangle,
+    /// A cross.
     Cross,
 }
 
 /// How the series of a panel are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum PanelKind {
+    /// Each series drawn by its line style and marker.
     #[default]
     Lines,
     /// Vertical stems from the baseline (0, or the bottom of a log axis) to each point: spectra.
@@ -106,9 +123,13 @@ pub enum PanelKind {
 pub struct Series {
     /// Legend entry; empty = not in the legend.
     pub name: String,
+    /// Abscissae, in the x axis' unit.
     pub x: Vec<f64>,
+    /// Ordinates, in the y axis' unit.
     pub y: Vec<f64>,
+    /// How the points are joined.
     pub style: LineStyle,
+    /// Marker drawn at every point.
     pub marker: Marker,
     /// Colour (r, g, b); `None` takes the palette colour of the series' index.
     pub color: Option<[u8; 3]>,
@@ -122,6 +143,7 @@ pub struct ColorBar {
     pub label: String,
     /// Values at the bottom (t = 0) and top (t = 1) of the scale.
     pub min: f64,
+    /// Value at the top (t = 1) of the scale.
     pub max: f64,
 }
 
@@ -130,14 +152,19 @@ pub struct ColorBar {
 pub struct Panel {
     /// Small heading above the chart; empty = none.
     pub title: String,
+    /// Label of the x axis, with unit.
     pub x_label: String,
+    /// Label of the y axis, with unit.
     pub y_label: String,
+    /// The data series, drawn in order.
     pub series: Vec<Series>,
     /// Vertical markers `(x, label)`, drawn dashed grey across the panel.
     pub vlines: Vec<(f64, String)>,
     /// Logarithmic y axis; points with y outside [1e-100, 1e100] (e.g. y <= 0) are skipped.
     pub log_y: bool,
+    /// How the series are drawn.
     pub kind: PanelKind,
+    /// Colour scale drawn right of the plot area, if any.
     pub color_bar: Option<ColorBar>,
     /// Width and height of a cell in data units (`PanelKind::Cells`).
     pub cell_size: (f64, f64),
@@ -146,7 +173,9 @@ pub struct Panel {
 /// A figure: a title over panels stacked vertically with equal heights.
 #[derive(Debug, Clone, Default)]
 pub struct Figure {
+    /// Title over the panels; empty = none.
     pub title: String,
+    /// The panels, top to bottom.
     pub panels: Vec<Panel>,
 }
 
