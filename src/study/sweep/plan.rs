@@ -499,6 +499,26 @@ mod tests {
     }
 
     #[test]
+    fn numbered_table_keys_are_checked_as_their_tables_keys() {
+        // `stage.N.KEY` is `stage.KEY` of the N-th table: its values are typed as that
+        // key's, and the key keeps its table number (written without leading zeros).
+        let a = parse_vary("stage.02.face_width_mm=20,25").unwrap();
+        assert_eq!(a.key, "stage.2.face_width_mm");
+        assert_eq!(a.values[1].value, Value::Integer(25));
+        let e = parse_vary("stage.0.face_width_mm=20")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("numbered from 1"), "{e}");
+        let e = parse_vary("stage.2.face_width=20").unwrap_err().to_string();
+        assert!(e.contains("unknown key"), "{e}");
+        // Only [[stage]] and [[fault]] tables are numbered.
+        let e = parse_vary("gear.2.module_mm=2").unwrap_err().to_string();
+        assert!(e.contains("section.N.key"), "{e}");
+        let p = SweepPlan::new(vec![a, parse_vary("stage.2.face_width_mm=30").unwrap()]);
+        assert!(p.unwrap_err().to_string().contains("varied twice"));
+    }
+
+    #[test]
     fn equal_values_are_listed_once() {
         for bad in [
             "operating.input_speed_hz=30,30.0",
