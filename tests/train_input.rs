@@ -103,36 +103,42 @@ fn a_train_over_the_budget_is_refused_by_its_own_estimate() {
 }
 
 #[test]
-fn sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
-    // A sweep row holds one mesh's numbers and a wear row the single pair's loop (which
-    // leaves every other mesh unworn: 0.14 % off `gearwear wear`'s stage-1 wear on the
-    // two-stage example); a dataset's records, chain and labels are a single pair's.
-    // Each refuses the train, naming it, with nothing written (`rejected`).
+fn wear_sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
+    // A dynamics sweep takes a train (tests/train_sweep.rs); a wear row is the single
+    // pair's loop (which would leave every other mesh unworn: 0.14 % off `gearwear
+    // wear`'s stage-1 wear on the two-stage example), so `--run wear` is refused naming
+    // it; a dataset's records, chain and labels are a single pair's. Each refuses the
+    // train, naming it, with nothing written (`rejected`).
     let dir = tempfile::tempdir().unwrap();
     let file = case_file(
         &dir,
         &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
     );
-    for run in ["dynamics", "wear"] {
-        rejected(
-            &[
-                "sweep",
-                "--config",
-                &file,
-                "--run",
-                run,
-                "--vary",
-                "operating.input_speed_hz=20:30:5",
-            ],
-            &["this case is a gear train", "`gearwear dynamics`"],
-        );
-    }
-    // A varied stage key makes each case a one-stage train: refused per case.
+    rejected(
+        &[
+            "sweep",
+            "--config",
+            &file,
+            "--run",
+            "wear",
+            "--vary",
+            "operating.input_speed_hz=20:30:5",
+        ],
+        &[
+            "--run",
+            "wear",
+            "this case is a gear train",
+            "`gearwear wear`",
+        ],
+    );
+    // A varied stage key without a table number makes each case of a single pair a
+    // one-stage train: the number of stages changes, refused naming the key and case.
     rejected(
         &["sweep", "--vary", "stage.teeth_pinion=20,21"],
         &[
             "case 0 (stage.teeth_pinion=20)",
-            "this case is a gear train",
+            "[stage.teeth_pinion]",
+            "number of stages",
         ],
     );
     let design = dir.path().join("design.toml");

@@ -33,7 +33,10 @@ function                              command                   returns
 
 .. [#] ``PlanetaryDynamicsResult`` for a case with ``[planetary]``. A gear train's
    (``[[stage]]``) ``DynamicsResult`` has every stage's coordinates and ``mesh(k)``; its
-   ``WearResult`` has its runs per mesh in ``stages`` and the train's ``history(mode)``.
+   ``WearResult`` has its runs per mesh in ``stages`` and the train's ``history(mode)``;
+   its ``sweep`` (of dynamics; ``vary`` may name ``stage.N.KEY``) has one column set per
+   mesh (``stageK_mesh_frequency_hz``, ``stageK_dte_max_um``, ``stageK_mesh_force_mean_n``,
+   ``stageK_mesh_force_max_n``, ``stageK_dynamic_factor``).
 .. [#] ``PlanetarySignalsResult`` for a case with ``[planetary]`` (the ring sensor).
 
 A case with a ``[load_spectrum]`` runs ``wear``, ``run``, ``calibrate``, ``predict`` and

@@ -147,6 +147,38 @@ def test_train_wear_per_mesh(train):
         w.history("sideways")
 
 
+def test_train_sweep_has_every_mesh_and_equals_dynamics(train, cli, tmp_path):
+    # A sweep of a train (a stage key varied) in memory: one column set per mesh, each
+    # row the numbers of `gw.dynamics` on the same case (the same computation, so equal
+    # to the last bit), and the table the command line's (the CSV's shortest round-trip
+    # numbers read back to the same doubles).
+    cheap = train.set("numerics.steps_per_mesh_period", 60).set(
+        "numerics.evaluated_mesh_periods", 2
+    )
+    s = _quiet(gw.sweep, cheap, {"stage.2.face_width_mm": [20.0, 25.0]})
+    assert len(s) == 2
+    for k in (1, 2):
+        for c in ("mesh_frequency_hz", "dte_max_um", "mesh_force_mean_n",
+                  "mesh_force_max_n", "dynamic_factor"):
+            assert f"stage{k}_{c}" in s.columns
+    for i, width in enumerate(s["stage.2.face_width_mm"]):
+        d = _quiet(gw.dynamics, cheap.set("stage.2.face_width_mm", float(width)))
+        for m in d.summary["meshes"]:
+            k = m["stage"]
+            assert s[f"stage{k}_dte_max_um"][i] == m["dte"]["max_um"]
+            assert s[f"stage{k}_dynamic_factor"][i] == m["mesh_force"]["dynamic_factor"]
+            assert s[f"stage{k}_mesh_frequency_hz"][i] == m["mesh_frequency_hz"]
+    out = run_cli(cli, tmp_path, "sweep", cheap, "--vary", "stage.2.face_width_mm=20,25")
+    with open(out / "sweep.csv") as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == s.keys + ["case_id"] + s.columns
+    for i, row in enumerate(rows[1:]):
+        assert [float(x) for x in row[2:]] == s.results[i].tolist()
+    # A train's wear sweep is refused, naming the option.
+    with pytest.raises(gw.CaseError, match="gear train"):
+        _quiet(gw.sweep, cheap, {"operating.input_speed_hz": [30.0]}, run="wear")
+
+
 def test_a_single_pair_has_no_stages():
     w = _quiet(
         gw.wear,

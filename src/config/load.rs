@@ -15,7 +15,7 @@
 
 use super::case::{Case, FaultTable, LoadSpectrumSection, ToothFault};
 use super::operating::SpeedUnit;
-use super::overrides::{apply_overrides, set_value};
+use super::overrides::apply_overrides;
 use super::parse::{as_number, check_range, normalise, sections, type_name, unknown_key};
 use super::schema::{spec, KeySpec, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
@@ -360,14 +360,20 @@ pub fn case_with(base: &Case, values: &[(&str, Value)]) -> Result<Case, ConfigEr
         _ => return Err(ConfigError::one("the base case does not serialise")),
     };
     for (key, value) in values {
-        let (section, k) = key.split_once('.').unwrap_or((key, ""));
         if *key == "operating.input_speed_rpm" {
             // The base case's speed is in Hz: the varied speed in rpm replaces it.
             if let Some(Value::Table(op)) = user.get_mut("operating") {
                 op.remove("input_speed_hz");
             }
         }
-        set_value(&mut user, section, k, value.clone()).map_err(ConfigError::one)?;
+        let path: Vec<String> = match key.split('.').count() {
+            3 => key.split('.').map(str::to_owned).collect(),
+            _ => {
+                let (section, k) = key.split_once('.').unwrap_or((key, ""));
+                vec![section.to_owned(), k.to_owned()]
+            }
+        };
+        super::overrides::set_path(&mut user, &path, value.clone()).map_err(ConfigError::one)?;
     }
     // A resolved case holds its spectrum's bins inline: no file to read.
     validate(user, std::path::Path::new("."))

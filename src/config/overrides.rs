@@ -157,19 +157,28 @@ fn set_numbered_value(
     }
 }
 
+/// Set the key of `path` (`[section, key]`, `[section, N, key]` of the N-th table of a
+/// numbered section, `[section, table, key]` of a sub-table) in the tree.
+pub(super) fn set_path(user: &mut Table, path: &[String], value: Value) -> Result<(), String> {
+    match path {
+        [section, index, key] if index.bytes().all(|b| b.is_ascii_digit()) => {
+            set_numbered_value(user, section, index, key, value)
+        }
+        [section, sub, key] => set_sub_table_value(user, section, sub, key, value),
+        [section, key] => set_value(user, section, key, value),
+        _ => Err(format!(
+            "the key `{}` must be section.key",
+            clip(&path.join("."), SHOWN_CHARS)
+        )),
+    }
+}
+
 /// Merge the overrides (`section.key=value` texts) into the user's tree.
 pub(super) fn apply_overrides(user: &mut Table, overrides: &[String], problems: &mut Vec<Words>) {
     for o in overrides {
         match parse_override(o) {
             Ok((path, value)) => {
-                let set = match path.as_slice() {
-                    [section, index, key] if index.bytes().all(|b| b.is_ascii_digit()) => {
-                        set_numbered_value(user, section, index, key, value)
-                    }
-                    [section, sub, key] => set_sub_table_value(user, section, sub, key, value),
-                    _ => set_value(user, &path[0], &path[1], value),
-                };
-                if let Err(e) = set {
+                if let Err(e) = set_path(user, &path, value) {
                     problems.push(
                         Words::new()
                             .arg(Arg::Override)

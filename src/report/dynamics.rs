@@ -394,15 +394,13 @@ fn train_meshes(
     t: &crate::study::train::TrainModel,
     r: &DynamicResponse,
 ) -> Vec<(Value, ResponseSummary)> {
-    use crate::dynamics::assembly::Dof;
     t.operating
         .meshes
         .iter()
         .enumerate()
         .map(|(m, p)| {
             let link = &t.assembly.elements.meshes[m];
-            let pinion_y = t.assembly.index(link.pinion, Dof::Y).unwrap_or(dof::YP);
-            let s = ResponseSummary::of_mesh(r, m, 1.0 / p.mesh_frequency_hz, pinion_y);
+            let s = t.mesh_summary(r, m);
             let v = json!({
                 "stage": m + 1,
                 "teeth": link.teeth,

@@ -1,6 +1,8 @@
 //! The figure of a one-parameter sweep: max DTE and dynamic factor against the varied
 //! parameter, one curve per combination of the other varied keys and per continuation
-//! branch, with the speeds where a mesh harmonic meets a damped mesh pole marked.
+//! branch, with the speeds where a mesh harmonic meets a damped mesh pole marked. A gear
+//! train's sweep has one such figure per mesh (`STEM_stage<K>.png`), each with its own
+//! mesh's columns and the crossings of its own harmonics.
 
 use super::figures::{panel, Curve};
 use super::plot::{Figure, LineStyle};
@@ -40,6 +42,18 @@ pub fn sweep_figure(
     marks: &[Crossing],
     poles_hz: &[f64],
 ) -> Option<Figure> {
+    sweep_figure_of(t, x_key, marks, poles_hz, None)
+}
+
+/// As [`sweep_figure`], of the columns of mesh `stage` (0-based) of a gear train's table
+/// (`None`: the pair's columns).
+fn sweep_figure_of(
+    t: &SweepTable,
+    x_key: &str,
+    marks: &[Crossing],
+    poles_hz: &[f64],
+    stage: Option<usize>,
+) -> Option<Figure> {
     let kx = t.keys.iter().position(|k| k == x_key)?;
     // Curves keyed by the other keys' values, then the branch (up before down).
     let mut groups: BTreeMap<(String, Option<u8>), Group> = BTreeMap::new();
@@ -61,11 +75,14 @@ pub fn sweep_figure(
             .entry((others, r.branch.map(|b| b as u8)))
             .or_insert_with(|| (name, r.branch, Vec::new()))
             .2
-            .push((
-                x,
-                r.results.dynamics.dte_max_um,
-                r.results.dynamics.dynamic_factor,
-            ));
+            .push(match stage.and_then(|k| r.results.meshes.get(k)) {
+                Some(m) => (x, m.dte_max_um, m.dynamic_factor),
+                None => (
+                    x,
+                    r.results.dynamics.dte_max_um,
+                    r.results.dynamics.dynamic_factor,
+                ),
+            });
     }
     let (mut c_dte, mut c_df, mut styles) = (Vec::new(), Vec::new(), Vec::new());
     for (name, branch, mut pts) in groups.into_values() {
@@ -96,7 +113,7 @@ pub fn sweep_figure(
         p.vlines = vlines.clone();
     }
     let poles: Vec<String> = poles_hz.iter().map(|f| format!("{f:.0} Hz")).collect();
-    let title = if x_key == SPEED_KEY && !poles.is_empty() {
+    let mut title = if x_key == SPEED_KEY && !poles.is_empty() {
         format!(
             "Speed sweep (markers: k × mesh frequency = damped mesh pole {}, k = 1..4)",
             poles.join(", ")
@@ -106,6 +123,18 @@ pub fn sweep_figure(
     } else {
         format!("Sweep of the {}", key_words(x_key).0)
     };
+    if let Some(k) = stage {
+        // Kept short: a train has several mesh poles.
+        title = if x_key == SPEED_KEY && !poles.is_empty() {
+            format!(
+                "Stage {} mesh, speed sweep (markers: k × its mesh frequency = mesh pole {})",
+                k + 1,
+                poles.join(", ")
+            )
+        } else {
+            format!("Stage {} mesh: {}", k + 1, title.to_lowercase())
+        };
+    }
     Some(Figure {
         title,
         panels: vec![p1, p2],
@@ -122,6 +151,44 @@ pub fn figure_for(t: &SweepTable, marks: &[Crossing], poles_hz: &[f64]) -> Optio
     } else {
         None
     }
+}
+
+/// The figures of a sweep table, each with the suffix of its file name after the stem:
+/// a single pair's [`figure_for`] (suffix empty), or one per mesh of a gear train
+/// (`_stage<K>`), each with the crossings of its own harmonics (`stage_marks`, stage by
+/// stage; [`figure_for`]'s `marks` for a table of a pair).
+pub fn figures_for(
+    t: &SweepTable,
+    marks: &[Crossing],
+    stage_marks: &[Vec<Crossing>],
+    poles_hz: &[f64],
+) -> Vec<(String, Figure)> {
+    if t.stages == 0 {
+        return figure_for(t, marks, poles_hz)
+            .map(|f| (String::new(), f))
+            .into_iter()
+            .collect();
+    }
+    let x_key = if t.keys.iter().any(|k| k == SPEED_KEY) {
+        SPEED_KEY
+    } else if t.has_branches() {
+        match t.keys.first() {
+            Some(k) => k.as_str(),
+            None => return Vec::new(),
+        }
+    } else {
+        return Vec::new();
+    };
+    (0..t.stages)
+        .filter_map(|k| {
+            let (m, p) = match (x_key == SPEED_KEY, stage_marks.get(k)) {
+                (true, Some(m)) => (&m[..], poles_hz),
+                _ => (&[][..], &[][..]),
+            };
+            let f = sweep_figure_of(t, x_key, m, p, Some(k))?;
+            Some((format!("_stage{}", k + 1), f))
+        })
+        .collect()
 }
 
 /// Unit suffixes of case keys (the config's naming rule) and their symbols, longest first

@@ -4,7 +4,8 @@
 //! Pieces: [`plan`] (axes with typed values, case ids, shards), [`case_run`] (one case ->
 //! one row of [`CaseResults`]), [`case_record`] (the record it leaves on disk so a rerun
 //! can skip it), [`continuation`] (a one-axis sweep run in order, each point warm-started
-//! from the previous one), [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
+//! from the previous one), [`mesh_row`] (the columns of each mesh of a gear train),
+//! [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
 //! where a mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
 //! run in parallel or along branches, in memory or to a folder with its case records,
 //! progress) is the job `app::sweep::SweepJob`, the one path of both front ends.
@@ -12,6 +13,7 @@
 pub mod case_record;
 pub mod case_run;
 pub mod continuation;
+pub mod mesh_row;
 pub mod plan;
 pub mod resonance;
 pub mod table;
@@ -22,6 +24,7 @@ pub use case_run::{
     run_case, wear_results, CaseError, CaseOutcome, CaseResults, DynamicsRow, SweepRun, WearEnd,
 };
 pub use continuation::{Branch, Continuation, ContinuationPlan};
+pub use mesh_row::MeshRow;
 pub use plan::{parse_axis, parse_vary, Axis, AxisValue, Shard, SweepPlan};
 pub use resonance::{crossings, Crossing};
 pub use table::{SweepRow, SweepTable};

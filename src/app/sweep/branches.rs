@@ -85,7 +85,7 @@ pub fn run_branches(
                                 SweepRow {
                                     case_id: id,
                                     values: p.labels.clone(),
-                                    results: outcome.results,
+                                    results: outcome.results.clone(),
                                     branch: Some(b),
                                 },
                             );

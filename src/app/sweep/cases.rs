@@ -30,9 +30,9 @@ pub fn check_values(base: &Case, plan: &SweepPlan) -> Result<(), JobError> {
     let mut problems = Vec::new();
     for axis in &plan.axes {
         for v in &axis.values {
-            if let Err(e) = case_with(base, &[(axis.key, v.value.clone())]) {
+            if let Err(e) = case_with(base, &[(axis.key.as_str(), v.value.clone())]) {
                 problems.extend(e.problems.into_iter().map(|p| {
-                    Problem::given(Arg::Vary, axis.key, p)
+                    Problem::given(Arg::Vary, &axis.key, p)
                         .in_context(&format!("value `{}`: ", v.label))
                 }));
             }
@@ -56,7 +56,7 @@ pub fn resolve(
     // The rows are compared with each other: one load-sharing law for all of them,
     // decided from the plan so that every shard decides alike.
     let any_per_tooth =
-        base.has_per_tooth_inputs() || plan.axes.iter().any(|a| is_per_tooth_key(a.key));
+        base.has_per_tooth_inputs() || plan.axes.iter().any(|a| is_per_tooth_key(&a.key));
     let resolved: Vec<Result<Planned, Problem>> = ids
         .par_iter()
         .map(|&(id, index)| {
@@ -103,16 +103,8 @@ pub fn resolve(
     }
     // A gear train's sweep row would hold its first mesh only (a wear row the single
     // pair's loop, which leaves the other meshes unworn): refused before any case runs.
-    if let Some(p) = planned.iter().find(|p| !p.case.stage.is_empty()) {
-        return Err(JobError::input(
-            Problem::new(crate::app::TRAIN_STUDIES.to_owned()).in_context(&format!(
-                "case {} ({}): ",
-                p.id,
-                describe(plan, p)
-            )),
-        ));
-    }
     // Each case against the budget (the number of cases is the user's explicit choice).
+    check_stage_counts(base, plan, &planned)?;
     let over: Vec<Problem> = planned
         .iter()
         .filter_map(|p| {
@@ -132,6 +124,29 @@ pub fn resolve(
 }
 
 /// "KEY=label, ..." of a planned case.
+/// Every case must have the base case's number of `[[stage]]` tables: the table's columns
+/// (one set per mesh) and a continuation's state are those of one train. A varied
+/// `stage.KEY` (without a table number) on a single pair makes each case a one-stage
+/// train: refused, naming the key.
+fn check_stage_counts(base: &Case, plan: &SweepPlan, planned: &[Planned]) -> Result<(), JobError> {
+    let n = base.stage.len();
+    let Some(p) = planned.iter().find(|p| p.case.stage.len() != n) else {
+        return Ok(());
+    };
+    let keys: Vec<String> = plan
+        .keys()
+        .into_iter()
+        .filter(|k| k.starts_with("stage."))
+        .collect();
+    Err(JobError::input(Problem::new(format!(
+        "case {} ({}) has {} [[stage]] table(s), the base case {n}: the varied key(s) [{}] change the number of stages, and a sweep's columns are those of one train (vary stage.N.KEY of a case file with its [[stage]] tables)",
+        p.id,
+        describe(plan, p),
+        p.case.stage.len(),
+        keys.join(", ")
+    ))))
+}
+
 pub fn describe(plan: &SweepPlan, p: &Planned) -> String {
     plan.keys()
         .iter()

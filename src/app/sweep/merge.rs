@@ -7,7 +7,7 @@ use super::super::{publish, Job, JobError, Outcome};
 use super::SweepOutput;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
-use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
+use crate::report::sweep_figure::{figures_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
 use crate::study::budget::Budget;
 use crate::study::sweep::{Crossing, SweepTable};
@@ -184,9 +184,18 @@ impl Job for SweepMergeJob {
             .iter()
             .filter_map(|p| p["damped_frequency_hz"].as_f64())
             .collect();
-        if let Some(fig) = figure_for(&merged, marks.as_deref().unwrap_or(&[]), &poles) {
+        // A train's crossings per mesh (`stages` of the shards' descriptions).
+        let stage_marks: Vec<Vec<Crossing>> = metas
+            .iter()
+            .find_map(|(_, m)| m["stages"].as_array().cloned())
+            .unwrap_or_default()
+            .iter()
+            .map(|s| serde_json::from_value(s["resonance_crossings"].clone()).unwrap_or_default())
+            .collect();
+        let marks = marks.as_deref().unwrap_or(&[]);
+        for (suffix, fig) in figures_for(&merged, marks, &stage_marks, &poles) {
             let (w, h) = SWEEP_FIGURE_PX;
-            art.figure_sized(format!("{stem}.png"), fig, w, h);
+            art.figure_sized(format!("{stem}{suffix}.png"), fig, w, h);
         }
         let first = metas
             .iter()
@@ -204,6 +213,15 @@ impl Job for SweepMergeJob {
                 "modes": first.as_ref().map(|m| m["modes"].clone()),
                 "base": first.as_ref().map(|m| m["base"].clone()),
         });
+        if let (Some(st), Some(m)) = (
+            first
+                .as_ref()
+                .map(|m| &m["stages"])
+                .filter(|s| !s.is_null()),
+            art.summary.as_object_mut(),
+        ) {
+            m.insert("stages".into(), st.clone());
+        }
         art.summary_file = Some(format!("{stem}.json"));
         art.documents.push((
             format!("{stem}.csv"),

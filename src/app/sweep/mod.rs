@@ -25,7 +25,7 @@ use crate::io::output_dir::StateFolder;
 use crate::remedy::{Arg, Problem, Words};
 use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::modes::modes_json;
-use crate::report::sweep_figure::{figure_for, SWEEP_FIGURE_PX};
+use crate::report::sweep_figure::{figures_for, SWEEP_FIGURE_PX};
 use crate::report::Artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::{estimate_sweep, Budget, Job as Cost};
@@ -98,6 +98,23 @@ fn row_of(r: &CaseRecord) -> Option<SweepRow> {
 }
 
 impl SweepJob {
+    /// A gear train (`[[stage]]`) runs dynamics sweeps (each mesh's columns); its wear
+    /// study is not reduced to sweep rows yet, so `--run wear` on a train is refused.
+    fn refuse_on_train(&self) -> Result<(), JobError> {
+        if self.base.stage.is_empty() || self.run == SweepRun::Dynamics {
+            return Ok(());
+        }
+        Err(Problem::given(
+            Arg::SweepRun,
+            self.run.name(),
+            Words::new()
+                .text("this case is a gear train ([[stage]] tables): its sweep runs ")
+                .arg(Arg::SweepRun)
+                .text(" dynamics (each mesh's columns); the wear study of a train runs in `gearwear wear`"),
+        )
+        .into())
+    }
+
     /// The continuation's order of points, after its checks: one axis, dynamics, no shard.
     fn continuation_plan(&self) -> Result<Option<ContinuationPlan>, JobError> {
         let Some(c) = self.continuation else {
@@ -267,6 +284,22 @@ fn failures(
     failed
 }
 
+/// `stages` of a train's speed sweep summary: per mesh, its order (mesh frequency per
+/// input rev/s) and the crossings of its harmonics with the train's mesh poles.
+fn stages_json(stages: &[(f64, Vec<crate::study::sweep::Crossing>)]) -> serde_json::Value {
+    stages
+        .iter()
+        .enumerate()
+        .map(|(k, (order, c))| {
+            json!({
+                "stage": k + 1,
+                "mesh_frequency_per_input_hz": order,
+                "resonance_crossings": c,
+            })
+        })
+        .collect()
+}
+
 impl Job for SweepJob {
     type Output = SweepOutput;
 
@@ -277,8 +310,8 @@ impl Job for SweepJob {
     fn run(&self, observer: &dyn Observer) -> Result<SweepOutput, JobError> {
         let started = Instant::now();
         let figures = self.figures.resolve().map_err(JobError::input)?;
-        // A train before the budget (a pair's estimate); then the budget, in milliseconds.
-        super::refuse_train(&self.base)?;
+        // What a train cannot run, before the budget; then the budget, in milliseconds.
+        self.refuse_on_train()?;
         self.check_budget()?;
         check_values(&self.base, &self.plan)?;
         let continuation = self.continuation_plan()?;
@@ -399,10 +432,13 @@ impl SweepJob {
             .as_ref()
             .map_or_else(Vec::new, |m| m.modal.mesh_pole_frequencies_hz());
         let marks = speed.as_ref().map_or(&[][..], |m| &m.crossings[..]);
+        let stage_marks: Vec<Vec<_>> = speed
+            .as_ref()
+            .map_or_else(Vec::new, |m| m.stages.iter().map(|s| s.1.clone()).collect());
         let mut art = Artifacts::default();
-        if let Some(fig) = figure_for(table, marks, &poles) {
+        for (suffix, fig) in figures_for(table, marks, &stage_marks, &poles) {
             let (w, h) = SWEEP_FIGURE_PX;
-            art.figure_sized(format!("{stem}.png"), fig, w, h);
+            art.figure_sized(format!("{stem}{suffix}.png"), fig, w, h);
         }
         let base = match &base_model {
             Ok(m) => RunMetadata::of_model("sweep", m),
@@ -426,7 +462,7 @@ impl SweepJob {
         let computed_now = ran.outcomes.len();
         let failed = failures(ran.outcomes, planned, continuation, observer);
         let computed = computed_now - failed.len();
-        let mut table = SweepTable::new(plan.keys(), self.run);
+        let mut table = SweepTable::new(plan.keys(), self.run).with_stages(self.base.stage.len());
         table.rows = ran.rows;
         table.rows.sort_by_key(|r| r.case_id);
         let stem = self.shard.stem();
@@ -453,6 +489,11 @@ impl SweepJob {
             "resonance_crossings": speed.as_ref().map(|s| s.crossings.clone()),
             "base": base,
         });
+        if let (Some(s), Some(m)) = (speed.as_ref(), art.summary.as_object_mut()) {
+            if !s.stages.is_empty() {
+                m.insert("stages".into(), stages_json(&s.stages));
+            }
+        }
         art.summary_file = Some(format!("{stem}.json"));
         art.documents.push((
             format!("{stem}.csv"),

@@ -90,7 +90,7 @@ pub fn estimate_sweep(
         let mut n = 0.0;
         let mut costliest: Option<(f64, usize)> = None;
         for i in sampled_indices(&axis.values) {
-            let Some(c) = load(&[(axis.key, axis.values[i].value.clone())]) else {
+            let Some(c) = load(&[(axis.key.as_str(), axis.values[i].value.clone())]) else {
                 continue;
             };
             let e = estimate(&c, job);
@@ -105,7 +105,7 @@ pub fn estimate_sweep(
             ratio *= sum / n;
         }
         if let Some((_, i)) = costliest {
-            worst.push((axis.key, axis.values[i].value.clone()));
+            worst.push((axis.key.as_str(), axis.values[i].value.clone()));
             worst_overrides.push(format!("{}={}", axis.key, axis.values[i].label));
         }
     }

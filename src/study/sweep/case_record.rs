@@ -89,7 +89,7 @@ impl CaseRecord {
             run,
             keys: keys.to_vec(),
             values: values.to_vec(),
-            columns: run.columns(),
+            columns: results.columns(),
             results: results
                 .values()
                 .iter()
@@ -103,11 +103,12 @@ impl CaseRecord {
 
     /// The record's results (null numbers as NaN), if its columns are this version's.
     pub fn case_results(&self) -> Option<CaseResults> {
-        if self.columns != self.run.columns() {
+        let (run, stages) = SweepRun::of_columns(&self.columns)?;
+        if run != self.run {
             return None;
         }
         let v: Vec<f64> = self.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect();
-        CaseResults::from_values(self.run, &v)
+        CaseResults::from_values(self.run, stages, &v)
     }
 
     fn content_checksum(&self) -> String {
@@ -182,7 +183,7 @@ impl CaseRecord {
             && self.run == run
             && self.keys == keys
             && self.values == values
-            && self.columns == run.columns()
+            && SweepRun::of_columns(&self.columns).map(|(r, _)| r) == Some(run)
             && self.results.len() == self.columns.len()
             && self.continuation.is_none()
     }

@@ -1,6 +1,7 @@
 //! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
 //! sweep row (the record it leaves on disk is [`super::case_record`]).
 
+use super::mesh_row::{mesh_columns, stages_of, MeshRow, MESH_COLUMNS};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::summary::ResponseSummary;
@@ -64,11 +65,24 @@ impl SweepRun {
         c
     }
 
-    /// The run whose result columns are `columns`, if any.
-    pub fn of_columns(columns: &[String]) -> Option<Self> {
-        [SweepRun::Dynamics, SweepRun::Wear]
+    /// The run and the number of train meshes (0: a single pair) whose result columns
+    /// are `columns` ([`CaseResults::columns`]), if any.
+    pub fn of_columns(columns: &[String]) -> Option<(Self, usize)> {
+        [SweepRun::Wear, SweepRun::Dynamics]
             .into_iter()
-            .find(|r| r.columns() == columns)
+            .find_map(|r| {
+                let own = r.columns();
+                let rest = columns.strip_prefix(own.as_slice())?;
+                stages_of(rest).map(|n| (r, n))
+            })
+    }
+
+    /// The result columns of a case of `stages` train meshes (0: a single pair): this
+    /// run's, then each mesh's ([`super::mesh_row`]).
+    pub fn columns_for(&self, stages: usize) -> Vec<String> {
+        let mut c = self.columns();
+        c.extend(mesh_columns(stages));
+        c
     }
 }
 
@@ -169,12 +183,15 @@ impl WearEnd {
 }
 
 /// The results of one sweep case: a row of the sweep table after its varied values.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct CaseResults {
-    /// The new teeth's response (of the dynamic wear run's first update for a wear row).
+    /// The new teeth's response (of the dynamic wear run's first update for a wear row;
+    /// of the first mesh of a train).
     pub dynamics: DynamicsRow,
     /// The ends of the dynamic and quasi-static wear runs (a `wear` sweep).
     pub wear: Option<[WearEnd; 2]>,
+    /// Each mesh of a gear train, stage by stage; empty for a single pair.
+    pub meshes: Vec<MeshRow>,
 }
 
 impl CaseResults {
@@ -187,18 +204,28 @@ impl CaseResults {
         }
     }
 
-    /// The numbers in [`SweepRun::columns`] order.
+    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's.
+    pub fn columns(&self) -> Vec<String> {
+        self.run().columns_for(self.meshes.len())
+    }
+
+    /// The numbers in [`CaseResults::columns`] order.
     pub fn values(&self) -> Vec<f64> {
         let mut v = self.dynamics.values().to_vec();
         for w in self.wear.iter().flatten() {
             v.extend(w.values());
         }
+        for m in &self.meshes {
+            v.extend(m.values());
+        }
         v
     }
 
-    /// From numbers in the column order of `run`; `None` when their count is not it.
-    pub fn from_values(run: SweepRun, v: &[f64]) -> Option<Self> {
-        if v.len() != run.columns().len() {
+    /// From numbers in the column order of `run` with `stages` train meshes (0: a single
+    /// pair); `None` when their count is not it.
+    pub fn from_values(run: SweepRun, stages: usize, v: &[f64]) -> Option<Self> {
+        let own = run.columns().len();
+        if v.len() != own + stages * MESH_COLUMNS.len() {
             return None;
         }
         Some(Self {
@@ -209,12 +236,16 @@ impl CaseResults {
                     WearEnd::from_values(&v[13..17]),
                 ]
             }),
+            meshes: v[own..]
+                .chunks_exact(MESH_COLUMNS.len())
+                .map(MeshRow::from_values)
+                .collect(),
         })
     }
 
     /// The number of column `name`, if the row has it.
     pub fn get(&self, name: &str) -> Option<f64> {
-        let i = self.run().columns().iter().position(|c| c == name)?;
+        let i = self.columns().iter().position(|c| c == name)?;
         self.values().get(i).copied()
     }
 
@@ -294,11 +325,28 @@ pub fn run_dynamics_from(
     let r = model
         .dynamic_from(&wear, &ExternalError::none(), start)
         .map_err(|e| CaseError::Solve(e.into()))?;
-    let outcome = CaseOutcome {
-        results: CaseResults {
+    let results = match &model.train {
+        // A train: the first mesh's summary as the pair's columns (as the top level of
+        // `gearwear dynamics`' summary.json), then every mesh's columns.
+        Some(t) => {
+            let s: Vec<ResponseSummary> = (0..t.operating.meshes.len())
+                .map(|m| t.mesh_summary(&r, m))
+                .collect();
+            let f = t.operating.meshes.iter().map(|p| p.mesh_frequency_hz);
+            CaseResults {
+                dynamics: DynamicsRow::of(&s[0]),
+                wear: None,
+                meshes: s.iter().zip(f).map(|(s, f)| MeshRow::of(s, f)).collect(),
+            }
+        }
+        None => CaseResults {
             dynamics: DynamicsRow::of(&ResponseSummary::of(&r)),
             wear: None,
+            meshes: Vec::new(),
         },
+    };
+    let outcome = CaseOutcome {
+        results,
         warnings: model.warnings,
     };
     Ok((outcome, r.end_state))
@@ -315,6 +363,7 @@ pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
     CaseResults {
         dynamics,
         wear: Some([WearEnd::of(d), WearEnd::of(q)]),
+        meshes: Vec::new(),
     }
 }
 
@@ -332,13 +381,17 @@ mod tests {
         let r = CaseResults {
             dynamics: DynamicsRow::of(&s),
             wear: None,
+            meshes: Vec::new(),
         };
         let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
         // 2e-5 m is 20 um; 4e-3 m/s is 4 mm/s (to rounding of the unit factors).
         assert!((v[0] - 20.0).abs() < 1e-12 && (v[8] - 4.0).abs() < 1e-12);
         assert_eq!(r.get("mesh_harmonic4_mm_per_s"), Some(v[8]));
-        assert_eq!(CaseResults::from_values(SweepRun::Dynamics, &v), Some(r));
+        assert_eq!(
+            CaseResults::from_values(SweepRun::Dynamics, 0, &v),
+            Some(r.clone())
+        );
         let (d, q) = (
             WearRun::new(WearMode::Dynamic),
             WearRun::new(WearMode::QuasiStatic),
@@ -346,12 +399,25 @@ mod tests {
         let w = wear_results(&d, &q);
         assert_eq!(SweepRun::Wear.columns().len(), w.values().len());
         assert_eq!(w.run(), SweepRun::Wear);
-        assert!(CaseResults::from_values(SweepRun::Wear, &w.values())
+        assert!(CaseResults::from_values(SweepRun::Wear, 0, &w.values())
             .unwrap()
             .same_as(&w));
         assert_eq!(
             SweepRun::of_columns(&SweepRun::Wear.columns()),
-            Some(SweepRun::Wear)
+            Some((SweepRun::Wear, 0))
+        );
+        // A train's row: the pair's columns, then two meshes' sets; read back exactly.
+        let t = CaseResults {
+            meshes: vec![MeshRow::of(&s, 570.0), MeshRow::of(&s, 423.0)],
+            ..r
+        };
+        let cols = t.columns();
+        assert_eq!(cols.len(), 9 + 2 * MESH_COLUMNS.len());
+        assert_eq!(SweepRun::of_columns(&cols), Some((SweepRun::Dynamics, 2)));
+        assert_eq!(t.get("stage2_mesh_frequency_hz"), Some(423.0));
+        assert_eq!(
+            CaseResults::from_values(SweepRun::Dynamics, 2, &t.values()),
+            Some(t)
         );
     }
 }

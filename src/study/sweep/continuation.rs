@@ -104,7 +104,7 @@ impl ContinuationPlan {
                 None => {
                     return Err(Problem::given(
                         Arg::Vary,
-                        axis.key,
+                        &axis.key,
                         format!(
                             "value `{}` is not a number (a continuation follows a branch along a numeric parameter)",
                             v.label

@@ -7,9 +7,13 @@
 //! goes by in tables and case records (the text as given, or the shortest form of a
 //! range's number). A case of the sweep is the base case with its values set
 //! (`config::load::case_with`), so it is exactly the case an override
-//! `KEY=value` of the same value gives.
+//! `KEY=value` of the same value gives. A key of a numbered table (`stage.2.face_width_mm`,
+//! the N-th `[[stage]]` or `[[fault]]` table, as an override spells it) is checked as its
+//! table's key (`stage.face_width_mm`); whether the case has table N is checked when the
+//! cases are resolved.
 
 use crate::config::load::{known_key, override_value};
+use crate::config::schema::{KeySpec, TABLE_ARRAYS};
 use crate::format::{clip, SHOWN_CHARS};
 use crate::remedy::{Arg, Problem, Remedy, Words};
 use toml::Value;
@@ -56,24 +60,44 @@ fn number_of(v: &Value) -> Option<f64> {
 /// One varied key and its values, in the order given.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
-    /// Dotted case key, `section.key`, as the schema spells it.
-    pub key: &'static str,
+    /// Dotted case key, `section.key` as the schema spells it, or `section.N.key` for
+    /// the N-th table of a numbered section (`stage.2.face_width_mm`).
+    pub key: String,
     pub values: Vec<AxisValue>,
+}
+
+/// The schema's entry of a varied key and the key as the sweep spells it: `section.key`
+/// as the schema does, or `section.N.key` (N a whole number from 1, written without
+/// leading zeros) of a numbered section ([[stage]], [[fault]]), whose entry is
+/// `section.key`'s.
+fn resolve_key(key: &str) -> Result<(&'static KeySpec, String), Problem> {
+    let unknown = |e: String| Problem::given(Arg::Vary, clip(key, SHOWN_CHARS), e);
+    let parts: Vec<&str> = key.split('.').collect();
+    if let [section, n, field] = parts[..] {
+        if TABLE_ARRAYS.contains(&section) && !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit())
+        {
+            let spec = known_key(&format!("{section}.{field}")).map_err(unknown)?;
+            let n = n
+                .parse::<usize>()
+                .ok()
+                .filter(|n| *n >= 1)
+                .ok_or_else(|| unknown(format!("[[{section}]] tables are numbered from 1")))?;
+            return Ok((spec, format!("{section}.{n}.{field}")));
+        }
+    }
+    let spec = known_key(key).map_err(unknown)?;
+    Ok((spec, spec.key.to_owned()))
 }
 
 impl Axis {
     /// An axis of `key` with `values` (repeats refused, key checked against the schema).
     pub fn new(key: &str, values: Vec<AxisValue>) -> Result<Self, Problem> {
-        let spec =
-            known_key(key).map_err(|e| Problem::given(Arg::Vary, clip(key, SHOWN_CHARS), e))?;
+        let (_, key) = resolve_key(key)?;
         if values.is_empty() {
-            return Err(Problem::given(Arg::Vary, spec.key, "no values given"));
+            return Err(Problem::given(Arg::Vary, key, "no values given"));
         }
-        no_repeats(spec.key, &values)?;
-        Ok(Self {
-            key: spec.key,
-            values,
-        })
+        no_repeats(&key, &values)?;
+        Ok(Self { key, values })
     }
 
     /// The value labels, in order.
@@ -103,19 +127,25 @@ pub fn parse_axis(key: &str, spec: &str) -> Result<Axis, Problem> {
     let key = key.trim();
     let spec = spec.trim();
     let form = "expected KEY=START:STOP:STEP or KEY=v1,v2,...";
-    match key.split_once('.') {
-        Some((s, k)) if !s.is_empty() && !k.is_empty() && !k.contains('.') => {}
+    let numbered = |s: &str, n: &str| {
+        TABLE_ARRAYS.contains(&s) && !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit())
+    };
+    match key.split('.').collect::<Vec<_>>()[..] {
+        [s, k] if !s.is_empty() && !k.is_empty() => {}
+        [s, n, k] if numbered(s, n) && !k.is_empty() => {}
         _ => {
             return Err(Problem::given(
                 Arg::Vary,
                 format!("\"{}={}\"", clip(key, SHOWN_CHARS), clip(spec, SHOWN_CHARS)),
-                format!("the key `{}` must be section.key", clip(key, SHOWN_CHARS)),
+                format!(
+                    "the key `{}` must be section.key (section.N.key for the N-th [[stage]] or [[fault]] table)",
+                    clip(key, SHOWN_CHARS)
+                ),
             ))
         }
     }
-    let spec_of =
-        known_key(key).map_err(|e| Problem::given(Arg::Vary, clip(key, SHOWN_CHARS), e))?;
-    let key = spec_of.key;
+    let (spec_of, key) = resolve_key(key)?;
+    let key = key.as_str();
     if spec.is_empty() {
         return Err(Problem::given(
             Arg::Vary,
@@ -288,7 +318,7 @@ impl SweepPlan {
         }
         for (i, a) in axes.iter().enumerate() {
             if axes[..i].iter().any(|b| b.key == a.key) {
-                return Err(Problem::given(Arg::Vary, a.key, "the key is varied twice"));
+                return Err(Problem::given(Arg::Vary, &a.key, "the key is varied twice"));
             }
         }
         let mut n: usize = 1;
@@ -311,7 +341,7 @@ impl SweepPlan {
     }
 
     pub fn keys(&self) -> Vec<String> {
-        self.axes.iter().map(|a| a.key.to_owned()).collect()
+        self.axes.iter().map(|a| a.key.clone()).collect()
     }
 
     /// Values of case `id` (< len), one per axis.
@@ -332,11 +362,11 @@ impl SweepPlan {
     }
 
     /// The (key, value) settings of case `id` (`config::load::case_with`).
-    pub fn settings_of(&self, id: usize) -> Vec<(&'static str, Value)> {
+    pub fn settings_of(&self, id: usize) -> Vec<(&str, Value)> {
         self.axes
             .iter()
             .zip(self.values_of(id))
-            .map(|(a, v)| (a.key, v.value.clone()))
+            .map(|(a, v)| (a.key.as_str(), v.value.clone()))
             .collect()
     }
 
@@ -438,7 +468,7 @@ mod tests {
         assert_eq!(labels(&a), vec!["20", "25", "30"]);
         assert_eq!(a.values[1].value, Value::Float(25.0));
         let a = parse_vary(" friction.model = xu2007, constant ").unwrap();
-        assert_eq!((a.key, a.values.len()), ("friction.model", 2));
+        assert_eq!((a.key.as_str(), a.values.len()), ("friction.model", 2));
         assert_eq!(a.values[0].value, Value::String("xu2007".into()));
         for bad in [
             "operating.input_speed_hz=1:2",
@@ -466,6 +496,26 @@ mod tests {
             e.contains("unknown key") && e.contains("operating.input_speed_hz"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn numbered_table_keys_are_checked_as_their_tables_keys() {
+        // `stage.N.KEY` is `stage.KEY` of the N-th table: its values are typed as that
+        // key's, and the key keeps its table number (written without leading zeros).
+        let a = parse_vary("stage.02.face_width_mm=20,25").unwrap();
+        assert_eq!(a.key, "stage.2.face_width_mm");
+        assert_eq!(a.values[1].value, Value::Integer(25));
+        let e = parse_vary("stage.0.face_width_mm=20")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("numbered from 1"), "{e}");
+        let e = parse_vary("stage.2.face_width=20").unwrap_err().to_string();
+        assert!(e.contains("unknown key"), "{e}");
+        // Only [[stage]] and [[fault]] tables are numbered.
+        let e = parse_vary("gear.2.module_mm=2").unwrap_err().to_string();
+        assert!(e.contains("section.N.key"), "{e}");
+        let p = SweepPlan::new(vec![a, parse_vary("stage.2.face_width_mm=30").unwrap()]);
+        assert!(p.unwrap_err().to_string().contains("varied twice"));
     }
 
     #[test]

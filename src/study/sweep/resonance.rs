@@ -12,6 +12,11 @@
 //! the default case are stiffer than the springs beside them (c omega >> k), so the
 //! bearings and shafts hardly flex and the pole lies far from every undamped mode
 //! (docs/MODEL.md, "Modes").
+//!
+//! A gear train's mesh k turns at its own frequency f_m,k = r_k f_in, r_k = z1 f_m,k / f_m,1
+//! (its order: mesh frequency per input rev/s, from the train's operating point), so its
+//! harmonic h meets the pole at f_in = f_p / (h r_k). The poles are the train's mesh poles
+//! (strain energy mostly in the mesh springs, all meshes together).
 
 use crate::study::sweep::plan::SweepPlan;
 use crate::study::sweep::SPEED_KEY;
@@ -51,8 +56,20 @@ pub fn crossings(
     lo_hz: f64,
     hi_hz: f64,
 ) -> Vec<Crossing> {
+    crossings_of_order(pole_hz, pinion_teeth as f64, max_harmonic, lo_hz, hi_hz)
+}
+
+/// As [`crossings`] for a mesh of order `order` (its mesh frequency per input rev/s: the
+/// pinion's teeth for a single pair, r_k of a train's mesh k, see the module docs).
+pub fn crossings_of_order(
+    pole_hz: &[f64],
+    order: f64,
+    max_harmonic: u32,
+    lo_hz: f64,
+    hi_hz: f64,
+) -> Vec<Crossing> {
     let mut out = Vec::new();
-    if pinion_teeth == 0 {
+    if !(order.is_finite() && order > 0.0) {
         return out;
     }
     for (i, &f_p) in pole_hz.iter().enumerate() {
@@ -60,7 +77,7 @@ pub fn crossings(
             continue;
         }
         for h in 1..=max_harmonic {
-            let f_in = f_p / (h as f64 * pinion_teeth as f64);
+            let f_in = f_p / (h as f64 * order);
             if f_in >= lo_hz && f_in <= hi_hz {
                 out.push(Crossing {
                     harmonic: h,
@@ -79,7 +96,11 @@ pub fn crossings(
 #[derive(Debug, Clone)]
 pub struct SpeedMarks {
     pub modal: ModalAnalysis,
+    /// The crossings of the pair's (a train's first mesh's) harmonics.
     pub crossings: Vec<Crossing>,
+    /// A gear train's meshes, stage by stage: the order r_k (mesh frequency per input
+    /// rev/s) and the crossings of its harmonics; empty for a single pair.
+    pub stages: Vec<(f64, Vec<Crossing>)>,
 }
 
 /// Marks of a sweep that varies the input speed (`None` otherwise): the base case's
@@ -90,14 +111,29 @@ pub fn speed_marks(base: &Model, plan: &SweepPlan) -> Option<SpeedMarks> {
     let lo = speeds.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = speeds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let modal = ModalAnalysis::of(base);
-    let crossings = crossings(
-        &modal.mesh_pole_frequencies_hz(),
-        base.pair.pinion.teeth,
-        MARKED_HARMONICS,
-        lo,
-        hi,
-    );
-    Some(SpeedMarks { modal, crossings })
+    let poles = modal.mesh_pole_frequencies_hz();
+    let crossings = crossings(&poles, base.pair.pinion.teeth, MARKED_HARMONICS, lo, hi);
+    let stages = match &base.train {
+        Some(t) => {
+            let f1 = t.operating.meshes[0].mesh_frequency_hz;
+            let z1 = base.pair.pinion.teeth as f64;
+            t.operating
+                .meshes
+                .iter()
+                .map(|p| {
+                    let order = z1 * (p.mesh_frequency_hz / f1);
+                    let c = crossings_of_order(&poles, order, MARKED_HARMONICS, lo, hi);
+                    (order, c)
+                })
+                .collect()
+        }
+        None => Vec::new(),
+    };
+    Some(SpeedMarks {
+        modal,
+        crossings,
+        stages,
+    })
 }
 
 #[cfg(test)]

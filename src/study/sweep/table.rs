@@ -52,40 +52,60 @@ pub struct SweepTable {
     pub keys: Vec<String>,
     /// What each case ran, which sets the result columns after `case_id`.
     pub run: SweepRun,
+    /// The number of meshes of a gear train (one column set each after the run's
+    /// columns, `super::mesh_row`); 0 for a single pair.
+    pub stages: usize,
     pub rows: Vec<SweepRow>,
 }
 
 impl SweepTable {
-    /// An empty table.
+    /// An empty table of a single pair's cases.
     pub fn new(keys: Vec<String>, run: SweepRun) -> Self {
         Self {
             keys,
             run,
+            stages: 0,
             rows: Vec::new(),
         }
     }
 
-    /// Table of case records (which must share keys and run), sorted by case id; records
-    /// of another version's columns are left out.
-    pub fn from_records(keys: Vec<String>, run: SweepRun, records: &[CaseRecord]) -> Self {
+    /// The same table with the columns of `stages` train meshes (0: a single pair).
+    pub fn with_stages(self, stages: usize) -> Self {
+        Self { stages, ..self }
+    }
+
+    /// Table of case records (which must share keys, run and meshes), sorted by case id;
+    /// records of other columns are left out.
+    pub fn from_records(
+        keys: Vec<String>,
+        run: SweepRun,
+        stages: usize,
+        records: &[CaseRecord],
+    ) -> Self {
         let mut rows: Vec<SweepRow> = records
             .iter()
             .filter_map(|r| {
+                let results = r.case_results().filter(|x| x.meshes.len() == stages)?;
                 Some(SweepRow {
                     case_id: r.case_id,
                     values: r.values.clone(),
-                    results: r.case_results()?,
+                    results,
                     branch: r.continuation.as_ref().map(|c| c.branch),
                 })
             })
             .collect();
         rows.sort_by_key(|r| r.case_id);
-        Self { keys, run, rows }
+        Self {
+            keys,
+            run,
+            stages,
+            rows,
+        }
     }
 
     /// The result columns.
     pub fn columns(&self) -> Vec<String> {
-        self.run.columns()
+        self.run.columns_for(self.stages)
     }
 
     /// Whether the rows have result column `name`.
@@ -142,15 +162,16 @@ impl SweepTable {
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let columns = header[first_result..].to_vec();
-        let Some(run) = SweepRun::of_columns(&columns) else {
+        let Some((run, stages)) = SweepRun::of_columns(&columns) else {
             return Err(SweepTableError::NotASweepTable(format!(
-                "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}])",
+                "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}]; a gear train's then have [{}] per stage K)",
                 columns.join(", "),
                 SweepRun::Dynamics.columns().join(", "),
-                SweepRun::Wear.columns()[SweepRun::Dynamics.columns().len()..].join(", ")
+                SweepRun::Wear.columns()[SweepRun::Dynamics.columns().len()..].join(", "),
+                super::mesh_row::MESH_COLUMNS.map(|c| format!("stageK_{c}")).join(", ")
             )));
         };
-        let mut t = SweepTable::new(header[..at].to_vec(), run);
+        let mut t = SweepTable::new(header[..at].to_vec(), run).with_stages(stages);
         for (line, rec) in r.records().enumerate() {
             let rec = rec?;
             let row = line + 2;
@@ -185,7 +206,7 @@ impl SweepTable {
             t.rows.push(SweepRow {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
-                results: CaseResults::from_values(run, &results).ok_or_else(|| {
+                results: CaseResults::from_values(run, stages, &results).ok_or_else(|| {
                     SweepTableError::NotASweepTable(format!("row {row}: not one number per column"))
                 })?,
                 branch,
@@ -211,9 +232,10 @@ impl SweepTable {
                     first.keys.join(", ")
                 )));
             }
-            if t.run != first.run {
+            if t.run != first.run || t.stages != first.stages {
                 return Err(SweepTableError::MixedSweeps(format!(
-                    "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear?)"
+                    "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear, or of gear trains of {} and {} stages?)",
+                    t.stages, first.stages
                 )));
             }
             for r in &t.rows {
@@ -236,6 +258,7 @@ impl SweepTable {
         Ok(SweepTable {
             keys: first.keys.clone(),
             run: first.run,
+            stages: first.stages,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
     }
@@ -258,7 +281,7 @@ mod tests {
                 SweepRow {
                     case_id: i,
                     values: vec![format!("{}", 20 + i)],
-                    results: CaseResults::from_values(SweepRun::Dynamics, &v).unwrap(),
+                    results: CaseResults::from_values(SweepRun::Dynamics, 0, &v).unwrap(),
                     branch: None,
                 }
             })
