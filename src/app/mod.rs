@@ -41,6 +41,7 @@ pub mod checkpoints;
 pub mod dataset;
 pub mod duty;
 pub mod duty_runs;
+pub mod duty_train;
 pub mod dynamics;
 pub mod error;
 pub mod inputs;

@@ -6,7 +6,7 @@
 //! own job writes, in its own folder of the run's.
 
 use super::observer::Observer;
-use super::wear_train::{refuse_train_spectrum, run_train_modes, train_of, train_stops};
+use super::wear_train::{run_train_modes, train_of, train_stops};
 use super::{build_train_model, publish, JobError, Outcome, RunJob};
 use crate::dynamics::excitation::ExternalError;
 use crate::report::figure_output::FigureOutput;
@@ -26,7 +26,9 @@ pub fn run_of_train(
 ) -> Result<Outcome, JobError> {
     let name = "run";
     check_budget(&job.case, job.budget.as_ref())?;
-    refuse_train_spectrum(&job.case)?;
+    if job.case.load_spectrum.is_some() {
+        return super::duty_train::run_of_train_under_spectrum(job, figures, observer);
+    }
     let model = build_train_model(&job.case, observer)?;
     let train = train_of(&model)?;
     let stages = stage_models(&model)?;

@@ -1,7 +1,8 @@
 //! The wear job: the coupled dynamics-wear study and/or its quasi-static twin, with a
 //! checkpoint after every update when it has an output folder (and resumable from it);
 //! under a load spectrum it hands off to [`super::duty`], on a gear train to
-//! [`super::wear_train`]. The runner it shares with the
+//! [`super::wear_train`], on a train under a spectrum to [`super::duty_train`]. The runner
+//! it shares with the
 //! paper's study and the spectrum's runs is [`super::wear_runs`].
 
 use super::observer::Observer;
@@ -46,6 +47,9 @@ impl Job for WearJob {
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),
         };
         budget::check(&self.case, cost, self.budget.as_ref())?;
+        if !self.case.stage.is_empty() && self.case.load_spectrum.is_some() {
+            return super::duty_train::wear_of_train_under_spectrum(self, figures, observer);
+        }
         if !self.case.stage.is_empty() {
             return super::wear_train::wear_of_train(self, figures, observer);
         }

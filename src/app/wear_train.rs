@@ -2,14 +2,14 @@
 //! by one response of the whole train (`study::train_wear`), the modes in parallel, the
 //! results of `report::wear_train`. With an output folder, every update of the whole train
 //! is kept (a log per mode and mesh, `app::train_checkpoints`) and `--resume` continues
-//! from them once they are replayed and recomputed. A load spectrum on a train is refused.
+//! from them once they are replayed and recomputed. Under a load spectrum the job is
+//! `app::duty_train`'s (`app::wear` hands it over).
 //! The run job on a train (`app::run_train`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
 use super::train_checkpoints::{mesh_checkpoint_name, open_logs, starting_runs};
 use super::wear_runs::{mode_tasks, report_update, stops_of, Runs};
 use super::{build_train_model, publish, JobError, Outcome};
-use crate::config::Case;
 use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_train::train_wear_artifacts;
@@ -19,17 +19,6 @@ use crate::study::train_wear::{run_train_wear, TrainWearRun};
 use crate::study::wear_loop::{run_in_parallel, WearMode, WearStop};
 use crate::study::Model;
 use std::path::Path;
-
-/// Refuse a load spectrum on a gear train (the studies under a spectrum take a single
-/// pair so far).
-pub fn refuse_train_spectrum(case: &Case) -> Result<(), JobError> {
-    if case.load_spectrum.is_none() {
-        return Ok(());
-    }
-    Err(JobError::input(Problem::new(
-        "`[load_spectrum]` on a gear train ([[stage]] tables): the wear study under a load spectrum takes a single pair so far; remove one or the other",
-    )))
-}
 
 /// The train of `model`, or an input error when the case has no `[[stage]]` tables.
 pub fn train_of(model: &Model) -> Result<&TrainModel, JobError> {
@@ -46,7 +35,6 @@ pub fn wear_of_train(
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let name = "wear";
-    refuse_train_spectrum(&job.case)?;
     let model = build_train_model(&job.case, observer)?;
     let train = train_of(&model)?;
     let meta = RunMetadata::of_model(name, &model);

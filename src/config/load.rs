@@ -229,9 +229,6 @@ fn single_pair_inputs(case: &Case) -> Vec<&'static str> {
     if !case.fault.is_empty() {
         out.push("[[fault]]");
     }
-    if case.load_spectrum.is_some() {
-        out.push("[load_spectrum]");
-    }
     out
 }
 

@@ -56,7 +56,7 @@ pub fn bin_run(run: &SpectrumRun, i: usize) -> WearRun {
 
 /// Trapezoidal area under a depth profile on a uniform grid (units of depth x spacing;
 /// the spacing cancels in shares).
-fn area(h: &[f64]) -> f64 {
+pub(crate) fn area(h: &[f64]) -> f64 {
     match h.len() {
         0 => 0.0,
         1 => h[0],
@@ -65,7 +65,7 @@ fn area(h: &[f64]) -> f64 {
 }
 
 /// A share, 0 when there is nothing to share.
-fn share(part: f64, whole: f64) -> f64 {
+pub(crate) fn share(part: f64, whole: f64) -> f64 {
     if whole > 0.0 {
         part / whole
     } else {

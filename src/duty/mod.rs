@@ -19,6 +19,9 @@ pub mod life;
 pub mod model;
 pub(crate) mod resume;
 pub mod study;
+pub mod train;
+pub mod train_life;
+pub mod train_resume;
 pub(crate) mod verify;
 pub mod wear;
 

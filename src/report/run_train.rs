@@ -9,6 +9,7 @@
 //! studies, the mesh that limits the life, where each study's files are).
 
 use super::artifacts::{embed_existing, embed_figures, nest, Artifacts, EmbeddedFigure};
+use super::duty_train::TrainDutyParts;
 use super::dynamics::dynamics_artifacts;
 use super::figure_output::FigureOutput;
 use super::figures::{panel, Curve};
@@ -41,11 +42,25 @@ pub fn train_run_artifacts(
     meta: &RunMetadata,
     figures: FigureOutput,
 ) -> Result<Artifacts, super::artifacts::WriteError> {
+    train_run_artifacts_with(run, meta, figures, None)
+}
+
+/// [`train_run_artifacts`] with what a load spectrum adds (`duty`: its summary and lines
+/// in the wear study's and the run's outputs, its section at the end of the report).
+pub fn train_run_artifacts_with(
+    run: &TrainRun,
+    meta: &RunMetadata,
+    figures: FigureOutput,
+    duty: Option<&TrainDutyParts>,
+) -> Result<Artifacts, super::artifacts::WriteError> {
     let (model, train) = (run.model, run.train);
     let mut a = Artifacts::default().with_figure_output(figures);
     let stiffness = train_stiffness_artifacts(model, run.stages);
     let dynamics = dynamics_artifacts(model, run.response, "new teeth");
-    let wear = train_wear_artifacts(model, train, run.runs);
+    let mut wear = train_wear_artifacts(model, train, run.runs);
+    if let Some(d) = duty {
+        d.add_to(&mut wear);
+    }
     let headline = [
         ("stiffness", &stiffness.headline),
         ("dynamics, new teeth", &dynamics.headline),
@@ -114,7 +129,11 @@ pub fn train_run_artifacts(
     );
     a.summary = summary(run, &s, &d, &w);
     a.headline = headline;
-    let report = super::run_train_report::build(run, &stages, &w, spectrum, meta);
+    let mut report = super::run_train_report::build(run, &stages, &w, spectrum, meta);
+    if let Some(d) = duty {
+        a.summary["load_spectrum"] = d.summary.clone();
+        report.sections.push(d.section.clone());
+    }
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     Ok(a)

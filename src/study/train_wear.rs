@@ -129,7 +129,7 @@ pub fn solve_train(
 }
 
 /// The update of `wears` at `input_cycles` from the response `r`: each mesh's record.
-fn update_of(
+pub(crate) fn update_of(
     model: &Model,
     train: &TrainModel,
     mode: WearMode,
@@ -241,16 +241,35 @@ pub fn next_train_update(
         let u = update_of(model, train, mode, (0.0, None), wears, &r);
         return Ok(TrainNext::Update(Box::new(u)));
     };
-    let Some(Block {
-        input_cycles,
-        limited_by,
-        wears,
-    }) = next_block(model, train, last)
-    else {
+    let Some(block) = next_block(model, train, last) else {
         return Ok(TrainNext::Finished);
     };
     let start = start_of(&last.meshes[0]);
-    Ok(match solve_train(model, train, mode, &wears, start.as_deref()) {
+    Ok(respond_to_block(
+        model,
+        train,
+        mode,
+        block,
+        start.as_deref(),
+    ))
+}
+
+/// The train's response to the wear at the end of `block` (warm-started from `start`)
+/// and the update it gives, or the stop: a mesh out of contact for more than
+/// `MAX_CONTACT_LOSS_FRACTION` of its mesh period, or no steady state found.
+pub fn respond_to_block(
+    model: &Model,
+    train: &TrainModel,
+    mode: WearMode,
+    block: Block,
+    start: Option<&[f64]>,
+) -> TrainNext {
+    let Block {
+        input_cycles,
+        limited_by,
+        wears,
+    } = block;
+    match solve_train(model, train, mode, &wears, start) {
         Ok(r) => match (0..wears.len()).find(|m| r.contact_loss_fraction_of(*m) > MAX_CONTACT_LOSS_FRACTION) {
             Some(m) => TrainNext::Stop(WearStop {
                 cycles: input_cycles,
@@ -280,7 +299,7 @@ pub fn next_train_update(
                 "at {input_cycles:.0} input cycles no steady state of the train was found, even from the static equilibrium with a 10x tighter numerics.integration_tolerance and 2x the numerics.steps_per_mesh_period: {e}"
             ),
         }),
-    })
+    }
 }
 
 /// Run (or continue) a train's wear study to the case's total input cycles;

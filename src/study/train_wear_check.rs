@@ -27,7 +27,7 @@ use super::wear_check::{random_sample, MAX_RECOMPUTED};
 use super::wear_loop::{UpdateRecord, WearMode, WearRun};
 
 /// What is wrong with the shape of mesh `m`'s record `r` (see the module docs), if anything.
-fn record_problem(
+pub(crate) fn record_problem(
     model: &Model,
     train: &TrainModel,
     mode: WearMode,

@@ -149,9 +149,9 @@ impl Work {
         };
         // `run` and `wear` under a spectrum add the life table: a run to the wear limit
         // under the spectrum (every bin) and one at each bin alone, blocks cut by the
-        // threshold only.
+        // threshold only. A train's lives are read from its run itself (`duty::train_life`).
         let extra_evals = match (&case.load_spectrum, job) {
-            (Some(s), Job::Run | Job::Wear { .. }) => {
+            (Some(s), Job::Run | Job::Wear { .. }) if case.stage.is_empty() => {
                 let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
                 extra_evals + 2.0 * bins * per_run
             }
