@@ -4,7 +4,7 @@
 //! load spectrum on a planetary set are refused, naming them.
 
 use super::observer::{keep_going, Observer};
-use super::wear_runs::stops_of;
+use super::wear_runs::{mode_tasks, stops_of};
 use super::{publish, JobError, Outcome, WearJob};
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureOutput;
@@ -42,12 +42,38 @@ pub fn wear_of_planetary(
         .map(|m| PlanetaryWearRun::new(*m))
         .collect();
     let wear = &job.case.wear;
+    let tasks = mode_tasks(&job.modes, wear.total_cycles);
+    for t in &tasks {
+        observer.start(t);
+    }
+    // Progress in input cycles, with the deepest wear of any member so far.
+    let on_update = |mode: WearMode, run: &PlanetaryWearRun| -> anyhow::Result<()> {
+        let task = tasks.iter().find(|t| t.id == mode.name());
+        if let (Some(t), Some(u)) = (task, run.updates.last()) {
+            let deepest = u
+                .flanks(&model)
+                .iter()
+                .flat_map(|f| f.depth_m.iter())
+                .fold(0.0_f64, |a, b| a.max(*b));
+            let status = format!(
+                "{} updates, deepest wear {:.3} µm",
+                run.updates.len() - 1,
+                deepest * 1e6
+            );
+            observer.advance(t, u.input_cycles, &status);
+        }
+        keep_going(observer)
+    };
     let runs = run_in_parallel(
         starts,
         |r| r.mode,
         &|start, f| run_planetary_wear(&model, wear, start, f),
-        &|_, _| keep_going(observer),
-    )?;
+        &on_update,
+    );
+    for t in &tasks {
+        observer.finish(t);
+    }
+    let runs = runs?;
     let refs: Vec<&PlanetaryWearRun> = runs.iter().collect();
     let meta = RunMetadata::new("wear", &job.case);
     let artifacts = planetary_wear_artifacts(&model, &refs).with_figure_output(figures);
