@@ -175,11 +175,12 @@ fn studies_on_the_dynamic_model_refuse_a_planetary_case() {
     let d = tempfile::tempdir().unwrap();
     let case = write_case(d.path(), SET);
     let needles = ["[planetary]", "not yet built", "gearwear stiffness"];
-    // `gearwear dynamics` and `gearwear signals` take a planetary set
-    // (tests/planetary_dynamics_cli.rs, tests/planetary_signals_cli.rs).
+    // `gearwear dynamics`, `gearwear signals` and `gearwear wear` take a planetary set
+    // (tests/planetary_dynamics_cli.rs, tests/planetary_signals_cli.rs,
+    // tests/planetary_wear.rs).
     for cmd in studies_on_the_dynamic_model()
         .into_iter()
-        .filter(|c| c[0] != "dynamics" && c[0] != "signals")
+        .filter(|c| !["dynamics", "signals", "wear"].contains(&c[0]))
     {
         let mut args = cmd.clone();
         args.extend(["--config", case.as_str()]);

@@ -60,6 +60,7 @@ pub mod stiffness;
 pub mod sweep;
 pub(crate) mod train_checkpoints;
 pub mod wear;
+pub mod wear_planetary;
 pub mod wear_runs;
 pub mod wear_train;
 

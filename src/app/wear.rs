@@ -1,8 +1,8 @@
 //! The wear job: the coupled dynamics-wear study and/or its quasi-static twin, with a
 //! checkpoint after every update when it has an output folder (and resumable from it);
 //! under a load spectrum it hands off to [`super::duty`], on a gear train to
-//! [`super::wear_train`], on a train under a spectrum to [`super::duty_train`]. The runner
-//! it shares with the
+//! [`super::wear_train`], on a train under a spectrum to [`super::duty_train`], on a
+//! planetary set to [`super::wear_planetary`]. The runner it shares with the
 //! paper's study and the spectrum's runs is [`super::wear_runs`].
 
 use super::observer::Observer;
@@ -42,6 +42,9 @@ impl Job for WearJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
+        if self.case.planetary.is_some() {
+            return super::wear_planetary::wear_of_planetary(self, figures, observer);
+        }
         let cost = Cost::Wear {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),

@@ -26,6 +26,7 @@
 //! of the two gears' I / r_b^2, for a support the supported coordinate's mass, for a
 //! planet pin the planet's mass.
 
+use super::excitation::PairGap;
 use super::integrator::{Matrix, OdeSystem, Vector};
 use super::planetary_lumped::PlanetaryLumped;
 use crate::stiffness::planetary_mesh::PlanetaryMeshes;
@@ -144,6 +145,9 @@ pub struct PlanetaryDynamic {
     /// When set, the time (s) at which `rhs` and `jacobian` decide which tooth pairs
     /// touch (the middle of the integration step, [`Self::decide_contact_at`]).
     decide_s: Option<f64>,
+    /// Each mesh's wear gap over its path (sun meshes 1..N, then ring meshes; empty: no
+    /// wear), [`Self::set_wear_gaps`].
+    wear_gaps: Vec<PairGap>,
 }
 
 impl PlanetaryDynamic {
@@ -167,6 +171,56 @@ impl PlanetaryDynamic {
             mass,
             elements,
             decide_s: None,
+            wear_gaps: Vec::new(),
+        }
+    }
+
+    /// Set every mesh's wear gap (sun meshes 1..N, then ring meshes; each on its path's
+    /// rho1, the sun's or the planet's flank; an empty list: no wear). A mesh's compression
+    /// is then g . q - gap - e_w(t), e_w the stiffness-weighted gap of its pairs in contact
+    /// ([`Self::wear_gap_m`]).
+    pub fn set_wear_gaps(&mut self, gaps: Vec<PairGap>) {
+        self.wear_gaps = gaps;
+    }
+
+    /// The wear gap of mesh (`p`, `ring`) at `cycles`, pairs decided at `decide` cycles, m:
+    /// e_w = sum k_i g(rho_i) / sum k_i over its pairs in contact, the single transmission
+    /// error of paper eq. 2 that gives the mesh the per-pair gaps' force while every pair
+    /// touches (as `wear::profile_wear::wear_transmission_error`; docs/MODEL.md 12.9).
+    /// Exactly 0 without wear gaps or with constant stiffness.
+    pub fn wear_gap_m(&self, p: usize, ring: bool, cycles: f64, decide: f64) -> f64 {
+        let planets = self.params.planet_angles_rad.len();
+        let (Some(gap), MeshStiffnessSource::Tables(m)) = (
+            self.wear_gaps.get(p + ring as usize * planets),
+            &self.source,
+        ) else {
+            return 0.0;
+        };
+        let (mut kg, mut k) = (0.0, 0.0);
+        let mut add = |(rho, ki): (f64, f64)| {
+            kg += ki * gap.at(rho).0;
+            k += ki;
+        };
+        if ring {
+            m.ring_pairs_decided(p, cycles, decide).for_each(&mut add);
+        } else {
+            m.sun_pairs_decided(p, cycles, decide).for_each(&mut add);
+        }
+        if k > 0.0 {
+            kg / k
+        } else {
+            0.0
+        }
+    }
+
+    /// Element `e`'s wear gap at `cycles` (0 for a spring), pairs decided as `mesh_k`.
+    fn worn(&self, e: &Element, cycles: f64) -> f64 {
+        match e.mesh {
+            Some((p, ring)) if !self.wear_gaps.is_empty() => {
+                let decide = self.decide_s.map_or(cycles, |t| self.mesh_frequency_hz * t);
+                self.wear_gap_m(p, ring, cycles, decide)
+            }
+            _ => 0.0,
         }
     }
 
@@ -204,7 +258,7 @@ impl PlanetaryDynamic {
         let mut f = vec![0.0; 2 * planets];
         for e in &self.elements {
             if let Some((p, ring)) = e.mesh {
-                let d = e.compression(q);
+                let d = e.compression(q) - self.wear_gap_m(p, ring, cycles, cycles);
                 if d > 0.0 {
                     let k = self.source.at(p, ring, cycles, cycles);
                     f[p + ring as usize * planets] = k * d + e.c * e.deflection(v);
@@ -227,7 +281,8 @@ impl PlanetaryDynamic {
                 (None, false) => e.k,
                 (Some((p, ring)), false) => cycles.map_or(e.k, |c| self.mesh_k(p, ring, c)),
             };
-            if e.mesh.is_some() && q.is_some_and(|q| e.compression(q) <= 0.0) {
+            let worn = cycles.map_or(0.0, |c| self.worn(e, c));
+            if e.mesh.is_some() && q.is_some_and(|q| e.compression(q) - worn <= 0.0) {
                 continue;
             }
             for (i, gi) in &e.g {
@@ -294,6 +349,64 @@ impl PlanetaryDynamic {
         Some(f)
     }
 
+    /// The quasi-static mesh forces at `cycles` mesh cycles (sun meshes 1..N, then ring
+    /// meshes), N: the static equilibrium K(t) q = f + sum_meshes k_j(t) (gap_j + e_w,j(t)) g_j
+    /// with every mesh's stiffness and wear gap at that instant (no inertia, no damping),
+    /// a mesh the solution puts in tension taken out and the equilibrium solved again
+    /// (contact loss, at most one pass per mesh). The planetary twin of the pair's
+    /// `dynamics::quasi_static` (docs/MODEL.md 12.9); `None` when K is singular.
+    pub fn quasi_static_mesh_forces(&self, cycles: f64) -> Option<Vec<f64>> {
+        let n = self.dofs();
+        let planets = self.params.planet_angles_rad.len();
+        let mut open = vec![false; 2 * planets];
+        for _ in 0..=2 * planets {
+            let mut k = DMatrix::zeros(n, n);
+            let mut f = self.force_n.clone();
+            let mut springs = Vec::with_capacity(self.elements.len());
+            for e in &self.elements {
+                let (kv, gap) = match e.mesh {
+                    None => (e.k, 0.0),
+                    Some((p, ring)) if open[p + ring as usize * planets] => (0.0, 0.0),
+                    Some((p, ring)) => (
+                        self.source.at(p, ring, cycles, cycles),
+                        e.gap_m + self.wear_gap_m(p, ring, cycles, cycles),
+                    ),
+                };
+                springs.push((kv, gap));
+                for (i, gi) in &e.g {
+                    f[*i] += kv * gap * gi;
+                    for (j, gj) in &e.g {
+                        k[(*i, *j)] += kv * gi * gj;
+                    }
+                }
+            }
+            let q = k
+                .lu()
+                .solve(&f)
+                .filter(|x| x.iter().all(|v| v.is_finite()))?;
+            let mut forces = vec![0.0; 2 * planets];
+            let mut newly_open = false;
+            for (e, (kv, gap)) in self.elements.iter().zip(&springs) {
+                if let Some((p, ring)) = e.mesh {
+                    let j = p + ring as usize * planets;
+                    if open[j] {
+                        continue;
+                    }
+                    let fj = kv * (e.deflection(q.as_slice()) - gap);
+                    if fj < 0.0 {
+                        open[j] = true;
+                        newly_open = true;
+                    }
+                    forces[j] = fj.max(0.0);
+                }
+            }
+            if !newly_open {
+                return Some(forces);
+            }
+        }
+        None
+    }
+
     /// Set the planets' pin position errors, (tangential e_t, radial e_r) per planet, m:
     /// the gaps of [`pin_error_gaps`] on each planet's sun and ring mesh.
     pub fn set_pin_errors(&mut self, errors_m: &[(f64, f64)]) {
@@ -317,7 +430,7 @@ impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
         let mut out = DVector::zeros(2 * n);
         out.rows_mut(n, n).copy_from(&self.force_n);
         for e in &self.elements {
-            let d = e.compression(q);
+            let d = e.compression(q) - self.worn(e, cycles);
             let k = match e.mesh {
                 None => e.k,
                 Some(_) if d <= 0.0 => continue,

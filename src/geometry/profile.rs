@@ -5,6 +5,7 @@
 //! gear profile point that meets it (rho2_i = N1N2 - rho1_i), so the two profiles share
 //! one index and conjugate points never need interpolating.
 
+use super::internal::InternalPair;
 use super::pair::GearPair;
 
 /// Points along the path of contact (SI units).
@@ -34,6 +35,27 @@ impl ProfileGrid {
         Self {
             radius_pinion_m: rho1.iter().map(|r| pair.pinion.radius_at_rho(*r)).collect(),
             radius_gear_m: rho2.iter().map(|r| pair.gear.radius_at_rho(*r)).collect(),
+            rho_pinion_m: rho1,
+            rho_gear_m: rho2,
+            spacing_m: spacing,
+        }
+    }
+
+    /// `n` points (n >= 2) on the path of contact of a planet (pinion) in a ring (gear),
+    /// rho1 uniform from the ring's tip to the planet's tip; the ring's point conjugate to
+    /// rho1 has radius of curvature rho2 = rho1 + N1N2 (`InternalPair::rho_ring`) and
+    /// radius sqrt(rho2^2 + r_b2^2) (an involute's).
+    pub fn internal(pair: &InternalPair, n: usize) -> Self {
+        let n = n.max(2);
+        let spacing = (pair.rho_end_m - pair.rho_start_m) / (n - 1) as f64;
+        let rho1: Vec<f64> = (0..n)
+            .map(|i| pair.rho_start_m + spacing * i as f64)
+            .collect();
+        let rho2: Vec<f64> = rho1.iter().map(|r| pair.rho_ring(*r)).collect();
+        let rb2 = pair.ring.base_radius_m;
+        Self {
+            radius_pinion_m: rho1.iter().map(|r| pair.planet.radius_at_rho(*r)).collect(),
+            radius_gear_m: rho2.iter().map(|r| r.hypot(rb2)).collect(),
             rho_pinion_m: rho1,
             rho_gear_m: rho2,
             spacing_m: spacing,

@@ -36,6 +36,7 @@ pub mod stiffness_train;
 pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
+pub mod wear_planetary;
 pub mod wear_train;
 pub mod worn_profile;
 

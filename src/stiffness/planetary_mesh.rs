@@ -101,6 +101,26 @@ impl PlanetaryMeshes {
     /// `GearPair::pairs_in_contact_decided`: a step that ends on a pair entering or
     /// leaving sees one contact set on all its stages.
     pub fn sun_n_per_m_decided(&self, planet: usize, cycles: f64, decide_cycles: f64) -> f64 {
+        self.sun_pairs_decided(planet, cycles, decide_cycles)
+            .fold(0.0, |k, (_, kp)| k + kp)
+    }
+
+    /// As [`Self::ring_n_per_m`] with the pairs in contact decided at `decide_cycles`
+    /// (see [`Self::sun_n_per_m_decided`]).
+    pub fn ring_n_per_m_decided(&self, planet: usize, cycles: f64, decide_cycles: f64) -> f64 {
+        self.ring_pairs_decided(planet, cycles, decide_cycles)
+            .fold(0.0, |k, (_, kp)| k + kp)
+    }
+
+    /// The tooth pairs of planet `planet`'s sun mesh at `cycles` mesh cycles, the pairs in
+    /// contact decided at `decide_cycles` (as [`Self::sun_n_per_m_decided`], whose sum this
+    /// splits): each pair's position rho1 on the sun's flank (m) and stiffness (N/m).
+    pub fn sun_pairs_decided(
+        &self,
+        planet: usize,
+        cycles: f64,
+        decide_cycles: f64,
+    ) -> impl Iterator<Item = (f64, f64)> + '_ {
         let off = self.sun_offset[planet];
         let (c, d) = (cycles + off, decide_cycles + off);
         let base = d.floor();
@@ -108,26 +128,30 @@ impl PlanetaryMeshes {
         self.sun
             .pair()
             .pairs_in_contact_decided(rad_per_cycle * (c - base), rad_per_cycle * (d - base))
-            .map(|(_, rho)| self.sun.pair_stiffness_n_per_m(rho))
-            .sum()
+            .map(|(_, rho)| (rho, self.sun.pair_stiffness_n_per_m(rho)))
     }
 
-    /// As [`Self::ring_n_per_m`] with the pairs in contact decided at `decide_cycles`
-    /// (see [`Self::sun_n_per_m_decided`]).
-    pub fn ring_n_per_m_decided(&self, planet: usize, cycles: f64, decide_cycles: f64) -> f64 {
+    /// The tooth pairs of planet `planet`'s ring mesh at `cycles`, decided at
+    /// `decide_cycles` (as [`Self::ring_n_per_m_decided`], whose sum this splits): each
+    /// pair's position rho1 on the planet's flank (m) and stiffness (N/m).
+    pub fn ring_pairs_decided(
+        &self,
+        planet: usize,
+        cycles: f64,
+        decide_cycles: f64,
+    ) -> impl Iterator<Item = (f64, f64)> + '_ {
         let off = self.ring_offset[planet];
         let (c, d) = (cycles + off, decide_cycles + off);
         let base = d.floor();
         let pb = self.ring_base_pitch_m;
-        let mut rho = self.ring_rho_start_m + pb * (c - base);
-        let mut rho_decide = self.ring_rho_start_m + pb * (d - base);
-        let mut k = 0.0;
-        while rho_decide <= self.ring_rho_end_m + 1e-15 {
-            k += self.ring_pair_at(rho);
-            rho += pb;
-            rho_decide += pb;
-        }
-        k
+        let rho = self.ring_rho_start_m + pb * (c - base);
+        let rho_decide = self.ring_rho_start_m + pb * (d - base);
+        // Each pair one base pitch on from the last (the sums of `ring_n_per_m_decided`).
+        std::iter::successors(Some((rho, rho_decide)), move |(r, d)| {
+            Some((r + pb, d + pb))
+        })
+        .take_while(move |(_, d)| *d <= self.ring_rho_end_m + 1e-15)
+        .map(move |(r, _)| (r, self.ring_pair_at(r)))
     }
 
     /// The mesh cycles in [0, 1) where some mesh's stiffness jumps (a pair enters or

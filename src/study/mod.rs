@@ -16,6 +16,8 @@ pub mod planetary;
 pub mod planetary_dynamics;
 pub mod planetary_lumped;
 pub mod planetary_signals;
+pub mod planetary_wear;
+pub mod planetary_wear_loop;
 pub mod signal_record;
 pub mod sweep;
 pub mod teeth;

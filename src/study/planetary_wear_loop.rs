@@ -1,0 +1,194 @@
+//! The wear study of a planetary set (docs/MODEL.md 12.9): the loop of
+//! `study::wear_loop` and `study::train_wear` over every mesh of the set
+//! (`study::planetary_wear`).
+//!
+//! One steady response of the whole set (dynamic, or the quasi-static equilibrium at every
+//! instant) feeds every mesh's Archard integral. The study counts input cycles
+//! (revolutions of the input member); mesh j's pinion turns c_j times relative to the
+//! carrier per input cycle (`PlanetaryWearModel::pinion_cycles_per_input`), so a block of
+//! n input cycles adds n c_j times mesh j's wear per pinion cycle to it.
+//! `wear.block_cycles` (m) and `wear.total_cycles` are input cycles.
+//!
+//! The threshold rule of eq. 17 holds per member flank: the block is cut to the whole
+//! number of input cycles after which no point of any flank (the sun's, whose wear sums
+//! its N meshes'; each planet's two; the ring's) has gained more than epsilon^m
+//! (`wear_loop::block_length`), and the update records the flank that cut it. A mesh out
+//! of contact for more than `wear_loop::MAX_CONTACT_LOSS_FRACTION` of the period, or a
+//! response not found, stops the run (the records so far are kept).
+
+use super::planetary_wear::{member_flanks, new_teeth, wear_gaps, MemberFlank, PlanetaryWearModel};
+use super::wear_loop::{block_length, StopKind, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION};
+use crate::wear::{WearIncrement, WearState};
+
+/// One mesh at one update: its wear, the increment per pinion cycle its response gives,
+/// and its mean and largest force.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetaryMeshRecord {
+    /// The mesh's wear; `cycles` are its pinion's revolutions relative to the carrier.
+    pub wear: WearState,
+    /// Archard wear per pinion cycle (pinion and gear flank).
+    pub increment: WearIncrement,
+    /// Mean force over the period, N.
+    pub mean_force_n: f64,
+    /// Largest force over the period, N.
+    pub max_force_n: f64,
+    /// Share of the period the mesh is out of contact.
+    pub contact_loss_fraction: f64,
+}
+
+/// One update of the set: every mesh's record at one count of input cycles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetaryUpdate {
+    /// Revolutions of the input member.
+    pub input_cycles: f64,
+    /// Every mesh's record (sun meshes 1..N, then ring meshes).
+    pub meshes: Vec<PlanetaryMeshRecord>,
+    /// The member flank (index into [`PlanetaryUpdate::flanks`]) whose threshold cut the
+    /// block that led here; None when it was m cycles or what remained of the total.
+    pub limited_by: Option<usize>,
+}
+
+impl PlanetaryUpdate {
+    /// Every member flank at this update (`planetary_wear::member_flanks`).
+    pub fn flanks(&self, model: &PlanetaryWearModel) -> Vec<MemberFlank> {
+        let wears: Vec<WearState> = self.meshes.iter().map(|m| m.wear.clone()).collect();
+        let inc: Vec<WearIncrement> = self.meshes.iter().map(|m| m.increment.clone()).collect();
+        member_flanks(model, &wears, &inc)
+    }
+}
+
+/// A planetary set's wear run: its mode and every update so far.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetaryWearRun {
+    pub mode: WearMode,
+    pub updates: Vec<PlanetaryUpdate>,
+    /// Set when the run stopped before the case's total cycles.
+    pub stopped: Option<WearStop>,
+}
+
+impl PlanetaryWearRun {
+    /// A run in `mode` with no update yet.
+    pub fn new(mode: WearMode) -> Self {
+        Self {
+            mode,
+            updates: Vec::new(),
+            stopped: None,
+        }
+    }
+}
+
+/// The update of `wears` at `input_cycles`: the set's response and every mesh's record;
+/// Err(reason, kind) when the response is not found or a mesh leaves the model's domain.
+pub fn update_of(
+    model: &PlanetaryWearModel,
+    mode: WearMode,
+    (input_cycles, limited_by): (f64, Option<usize>),
+    wears: Vec<WearState>,
+) -> Result<PlanetaryUpdate, (String, StopKind)> {
+    let gaps = wear_gaps(model, &wears);
+    let h = model
+        .force_history(mode == WearMode::Dynamic, &gaps)
+        .map_err(|e| (e, StopKind::Numerical))?;
+    let samples = h.forces_n.len().max(1) as f64;
+    let mut meshes = Vec::with_capacity(wears.len());
+    for (j, wear) in wears.into_iter().enumerate() {
+        let f: Vec<f64> = h.forces_n.iter().map(|s| s[j]).collect();
+        let loss = f.iter().filter(|x| **x <= 0.0).count() as f64 / samples;
+        if loss > MAX_CONTACT_LOSS_FRACTION {
+            let (kind, p) = model.kind_of(j);
+            return Err((
+                format!(
+                    "at {input_cycles:.0} input cycles planet {}'s {} mesh is out of contact for {:.0} % of the mesh period (more than {:.0} %): the wear model of a steady contact no longer applies",
+                    p + 1,
+                    ["sun", "ring"][kind],
+                    100.0 * loss,
+                    100.0 * MAX_CONTACT_LOSS_FRACTION
+                ),
+                StopKind::ModelValidity,
+            ));
+        }
+        meshes.push(PlanetaryMeshRecord {
+            increment: model.mesh_increment(j, &h, &gaps[j]),
+            wear,
+            mean_force_n: f.iter().sum::<f64>() / samples,
+            max_force_n: f.iter().fold(0.0_f64, |a, b| a.max(*b)),
+            contact_loss_fraction: loss,
+        });
+    }
+    Ok(PlanetaryUpdate {
+        input_cycles,
+        meshes,
+        limited_by,
+    })
+}
+
+/// The block after `last` (paper eq. 17 per member flank, see the module docs): the input
+/// cycles it reaches, the flank that cut it, and every mesh's wear at its end; None when
+/// the total is reached.
+pub fn next_block(
+    model: &PlanetaryWearModel,
+    wear: &crate::config::case::WearSection,
+    last: &PlanetaryUpdate,
+) -> Option<(f64, Option<usize>, Vec<WearState>)> {
+    let remaining = wear.total_cycles - last.input_cycles;
+    if remaining <= 0.5 {
+        return None;
+    }
+    let (lim, rate) = last
+        .flanks(model)
+        .iter()
+        .map(|f| f.rate_m_per_input.iter().fold(0.0_f64, |a, b| a.max(*b)))
+        .enumerate()
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    let n = block_length(rate, wear.block_cycles, wear.threshold_um * 1e-6, remaining);
+    let limited_by = (n < wear.block_cycles.min(remaining)).then_some(lim);
+    let wears = last
+        .meshes
+        .iter()
+        .enumerate()
+        .map(|(j, r)| {
+            let mut s = r.wear.clone();
+            let c = model.pinion_cycles_per_input[model.kind_of(j).0];
+            s.advance(&r.increment, n * c);
+            s
+        })
+        .collect();
+    Some((last.input_cycles + n, limited_by, wears))
+}
+
+/// Run a planetary set's wear study in `mode` to the case's total input cycles;
+/// `on_update` after every update (an error it returns stops the run). Only the first
+/// response failing is an error; a later failure stops the run, keeping its updates.
+pub fn run_planetary_wear(
+    model: &PlanetaryWearModel,
+    wear: &crate::config::case::WearSection,
+    mut run: PlanetaryWearRun,
+    on_update: &mut dyn FnMut(&PlanetaryWearRun) -> anyhow::Result<()>,
+) -> anyhow::Result<PlanetaryWearRun> {
+    if run.updates.is_empty() {
+        let u = update_of(model, run.mode, (0.0, None), new_teeth(model))
+            .map_err(|(e, _)| anyhow::anyhow!("the new set's response: {e}"))?;
+        run.updates.push(u);
+        on_update(&run)?;
+    }
+    while run.stopped.is_none() {
+        let Some(last) = run.updates.last() else {
+            break;
+        };
+        let Some((cycles, limited_by, wears)) = next_block(model, wear, last) else {
+            break;
+        };
+        match update_of(model, run.mode, (cycles, limited_by), wears) {
+            Ok(u) => run.updates.push(u),
+            Err((reason, kind)) => {
+                run.stopped = Some(WearStop {
+                    cycles,
+                    kind,
+                    reason,
+                })
+            }
+        }
+        on_update(&run)?;
+    }
+    Ok(run)
+}
