@@ -10,6 +10,7 @@ use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
 use crate::store::RunMetadata;
+use crate::study::budget::planetary::estimate_planetary_wear;
 use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{run_in_parallel, WearMode, WearStop};
@@ -32,6 +33,12 @@ pub fn wear_of_planetary(
         )));
     }
     let model = PlanetaryWearModel::from_case(&job.case)?;
+    // After the model (milliseconds: the budget counts the updates from the set's own
+    // first wear rate), before the folder is opened.
+    super::budget::check_estimate(
+        &estimate_planetary_wear(&model, &job.case.wear, &job.modes),
+        job.budget.as_ref(),
+    )?;
     for w in &model.dynamics.study.warnings {
         observer.warning(w);
     }

@@ -29,6 +29,7 @@ pub mod cost;
 pub mod dataset;
 pub mod evaluation;
 pub mod load_spectrum;
+pub mod planetary;
 pub mod prognostics;
 pub mod signals;
 pub mod sweep;

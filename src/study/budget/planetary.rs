@@ -1,0 +1,95 @@
+//! The cost of a planetary set's wear study (`[planetary]`, `study::planetary_wear_loop`):
+//! its updates counted from the set's own first wear rate, each a response of the whole
+//! set at a measured rate.
+
+use super::cost::{Estimate, Term};
+use super::evaluation::SLOWER_MACHINE_FACTOR;
+use crate::config::case::WearSection;
+use crate::study::planetary_wear::PlanetaryWearModel;
+use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
+use crate::study::wear_loop::{block_length, WearMode};
+
+/// CPU seconds of one dynamic update of a four-planet set (its steady state from rest,
+/// the meshes' paths and increments): measured 0.19 s (the default set's study to 4e4
+/// carrier revolutions, 19 updates in 3.7 s; the bench's 0.32 s a cold update was under
+/// load 7), counted 0.25 s, times the planets over four and [`SLOWER_MACHINE_FACTOR`].
+const SECONDS_PER_DYNAMIC_UPDATE_4: f64 = 0.25;
+/// CPU seconds of one quasi-static update of a four-planet set: measured 1.5 ms (the
+/// default set's study, 28.6 ms in the bench), counted 2 ms.
+const SECONDS_PER_QUASI_STATIC_UPDATE_4: f64 = 2e-3;
+/// The dynamic loads' margin on the quasi-static wear rate: the dynamic factor of a set
+/// is about 1.1-1.5 at the built-in speeds, and Archard's wear grows with the load as
+/// p s (p ~ F^(1/2) through Hertz, s fixed): 2 bounds it.
+const RATE_MARGIN: f64 = 2.0;
+/// Bytes a kept update holds per mesh and profile point: a mesh's two profiles, each
+/// with its wear, increment and path samples (about 6 numbers of 8 bytes a point,
+/// doubled for vector growth).
+const BYTES_PER_MESH_POINT: f64 = 2.0 * 6.0 * 8.0 * 2.0;
+
+/// The estimate of a planetary wear study in the given modes: the updates U = 1 +
+/// ceil(C / n), n being `wear.block_cycles` cut by `wear.threshold_um` over the set's
+/// first quasi-static wear rate per input cycle (its deepest member flank) times
+/// [`RATE_MARGIN`] (paper eq. 17, as the loop cuts it); each update at the measured
+/// rates. The first rate is computed here (one quasi-static response, milliseconds).
+/// Not counted: a set whose steady state is hard to find (a lightly loaded mesh near
+/// contact loss took 40 s of CPU an update against 0.2 s; docs/MODEL.md 12.9).
+pub fn estimate_planetary_wear(
+    model: &PlanetaryWearModel,
+    wear: &WearSection,
+    modes: &[WearMode],
+) -> Estimate {
+    let updates = planetary_wear_updates(model, wear);
+    let scale = model.planets() as f64 / 4.0 * SLOWER_MACHINE_FACTOR;
+    let per_update: f64 = modes
+        .iter()
+        .map(|m| match m {
+            WearMode::Dynamic => SECONDS_PER_DYNAMIC_UPDATE_4,
+            WearMode::QuasiStatic => SECONDS_PER_QUASI_STATIC_UPDATE_4,
+        })
+        .sum();
+    let meshes = 2.0 * model.planets() as f64;
+    let points = wear.points_per_profile.max(2) as f64;
+    Estimate::of_terms(vec![Term {
+        what: "the planetary set's wear updates (a response of the whole set each)",
+        seconds: updates * per_update * scale,
+        bytes: modes.len() as f64 * updates * meshes * points * BYTES_PER_MESH_POINT,
+        keys: &[
+            "wear.total_cycles",
+            "wear.block_cycles",
+            "wear.threshold_um",
+            "wear.points_per_profile",
+            "planetary.planets",
+        ],
+    }])
+}
+
+/// The updates U a planetary wear study makes at most (see [`estimate_planetary_wear`]):
+/// infinite when the set's first response fails (building the run then names why).
+pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) -> f64 {
+    let first = WearSection {
+        total_cycles: 0.0,
+        ..wear.clone()
+    };
+    let rate = run_planetary_wear(
+        model,
+        &first,
+        PlanetaryWearRun::new(WearMode::QuasiStatic),
+        &mut |_| Ok(()),
+    )
+    .ok()
+    .and_then(|r| r.updates.first().map(|u| u.flanks(model)))
+    .map_or(f64::INFINITY, |flanks| {
+        flanks
+            .iter()
+            .flat_map(|f| f.rate_m_per_input.iter())
+            .fold(0.0_f64, |a, b| a.max(*b))
+    });
+    let block = block_length(
+        RATE_MARGIN * rate,
+        wear.block_cycles,
+        wear.threshold_um * 1e-6,
+        wear.total_cycles,
+    )
+    .max(1.0);
+    1.0 + (wear.total_cycles / block).ceil()
+}
