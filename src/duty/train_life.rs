@@ -97,7 +97,14 @@ pub fn under_spectrum(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Option<Trai
         .filter_map(|m| m.life.cycles().map(|n| (m.stage, n)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(s, _)| s)
-        .or_else(|| combined.limiting_mesh().map(|(m, _)| m + 1));
+        // No stage reached the limit: the deepest pinion wear, the life's own measure
+        // (as the single pair's life, docs/MODEL.md 10.1).
+        .or_else(|| {
+            meshes
+                .iter()
+                .max_by(|a, b| a.max_wear_pinion_um.total_cmp(&b.max_wear_pinion_um))
+                .map(|m| m.stage)
+        });
     Some(TrainUnderSpectrum {
         input_cycles: last.input_cycles,
         hours: last.input_cycles * spc / 3600.0,

@@ -90,6 +90,14 @@ pub fn update_of(
         .force_history(mode == WearMode::Dynamic, &gaps)
         .map_err(|e| (e, StopKind::Numerical))?;
     let samples = h.forces_n.len().max(1) as f64;
+    // A force that is not finite would pass as contact and wear nothing (the Hertz
+    // contact zeroes it): the response is refused instead.
+    if h.forces_n.iter().flatten().any(|x| !x.is_finite()) {
+        return Err((
+            format!("at {input_cycles:.0} input cycles a mesh force of the set's response is not finite"),
+            StopKind::Numerical,
+        ));
+    }
     let mut meshes = Vec::with_capacity(wears.len());
     for (j, wear) in wears.into_iter().enumerate() {
         let f: Vec<f64> = h.forces_n.iter().map(|s| s[j]).collect();

@@ -17,9 +17,11 @@ const SECONDS_PER_DYNAMIC_UPDATE_4: f64 = 0.25;
 /// CPU seconds of one quasi-static update of a four-planet set: measured 1.5 ms (the
 /// default set's study, 28.6 ms in the bench), counted 2 ms.
 const SECONDS_PER_QUASI_STATIC_UPDATE_4: f64 = 2e-3;
-/// The dynamic loads' margin on the quasi-static wear rate: the dynamic factor of a set
-/// is about 1.1-1.5 at the built-in speeds, and Archard's wear grows with the load as
-/// p s (p ~ F^(1/2) through Hertz, s fixed): 2 bounds it.
+/// The dynamic loads' margin on the quasi-static wear rate: Archard's wear per contact
+/// is k p s, with the Hertz pressure p and the sliding distance s = 2 a |du| / u each
+/// growing as F^(1/2) through the half-width a, so the wear grows as the load F; the
+/// dynamic factor of a set is about 1.1-1.5 at the built-in speeds, and 2 covers one up
+/// to 2.
 const RATE_MARGIN: f64 = 2.0;
 /// Bytes a kept update holds per mesh and profile point: a mesh's two profiles, each
 /// with its wear, increment and path samples (about 6 numbers of 8 bytes a point,
@@ -63,8 +65,7 @@ pub fn estimate_planetary_wear(
     }])
 }
 
-/// The updates U a planetary wear study makes at most (see [`estimate_planetary_wear`]):
-/// infinite when the set's first response fails (building the run then names why).
+/// The updates U a planetary wear study makes at most (see [`estimate_planetary_wear`]).
 pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) -> f64 {
     let first = WearSection {
         total_cycles: 0.0,
@@ -78,7 +79,9 @@ pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) ->
     )
     .ok()
     .and_then(|r| r.updates.first().map(|u| u.flanks(model)))
-    .map_or(f64::INFINITY, |flanks| {
+    // A set whose first response fails stops at once in the run, which names why
+    // (contact loss, no steady state): counted at the blocks' length alone.
+    .map_or(0.0, |flanks| {
         flanks
             .iter()
             .flat_map(|f| f.rate_m_per_input.iter())
