@@ -56,7 +56,7 @@ pub struct PlanetaryWearModel {
     pub coefficient_m2_per_n: f64,
 }
 
-/// One mesh's force history over a steady mesh period: sample times in mesh cycles and,
+/// The set's force history over a steady mesh period: sample times in mesh cycles and,
 /// per sample, every mesh's force (sun meshes 1..N, then ring meshes), N.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ForceHistory {
@@ -142,7 +142,8 @@ impl PlanetaryWearModel {
     /// The steady force history of the set with every mesh's wear gap `gaps` (module
     /// order): dynamic (`dynamic` true; retried once from scratch with a ten times tighter
     /// integration tolerance, twice the samples and periods, as `wear_loop::solve_by`) or
-    /// quasi-static at `numerics.steps_per_mesh_period` instants of the mesh period.
+    /// quasi-static at `numerics.steps_per_mesh_period` instants of the mesh period (at
+    /// least 8, as the dynamic model samples it: `study::planetary_dynamics`).
     pub fn force_history(&self, dynamic: bool, gaps: &[PairGap]) -> Result<ForceHistory, String> {
         let mut sys = self.dynamics.model.clone();
         if gaps.iter().any(|g| !g.is_zero()) {
@@ -239,7 +240,8 @@ impl PlanetaryWearModel {
     }
 }
 
-/// The loads of a mesh's tooth pairs (rho1, stiffness) carrying `force_n` together, with
+/// The loads of a mesh's tooth pairs (given as (rho1 in m, stiffness in N/m); returned
+/// as (rho1 in m, load in N)) carrying `force_n` (N) together, with
 /// the wear gap `gap`: pair i carries k_i max(delta - g_i, 0), delta the approach that
 /// every pair in contact shares, taken as F / sum k + e_w (e_w the stiffness-weighted gap,
 /// so the loads sum to F when every pair touches), then scaled to sum to F exactly (the

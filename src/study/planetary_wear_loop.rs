@@ -60,7 +60,9 @@ impl PlanetaryUpdate {
 /// A planetary set's wear run: its mode and every update so far.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlanetaryWearRun {
+    /// Dynamic or quasi-static.
     pub mode: WearMode,
+    /// Every update so far, the new set's first.
     pub updates: Vec<PlanetaryUpdate>,
     /// Set when the run stopped before the case's total cycles.
     pub stopped: Option<WearStop>,

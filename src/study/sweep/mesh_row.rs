@@ -18,15 +18,16 @@ pub const MESH_COLUMNS: [&str; 5] = [
     "dynamic_factor",
 ];
 
-/// One mesh of a train in a sweep row (display units; NaN where not finite).
+/// One mesh of a train in a sweep row (display units).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct MeshRow {
     /// The mesh frequency of the case's operating point, Hz.
     pub mesh_frequency_hz: f64,
     /// Maximum dynamic transmission error of the mesh, um.
     pub dte_max_um: f64,
-    /// Mean and maximum mesh force over the evaluated window, N.
+    /// Mean mesh force over the evaluated window, N.
     pub mesh_force_mean_n: f64,
+    /// Maximum mesh force over the evaluated window, N.
     pub mesh_force_max_n: f64,
     /// Maximum over mean mesh force (-).
     pub dynamic_factor: f64,
