@@ -173,30 +173,8 @@ impl Job for SweepMergeJob {
                 &missing[..missing.len().min(10)]
             ));
         }
-        let marks: Option<Vec<Crossing>> = metas
-            .iter()
-            .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
         let mut art = Artifacts::default().with_figure_output(figures);
-        let poles: Vec<f64> = metas
-            .iter()
-            .find_map(|(_, m)| m["modes"]["mesh_poles"].as_array().cloned())
-            .unwrap_or_default()
-            .iter()
-            .filter_map(|p| p["damped_frequency_hz"].as_f64())
-            .collect();
-        // A train's crossings per mesh (`stages` of the shards' descriptions).
-        let stage_marks: Vec<Vec<Crossing>> = metas
-            .iter()
-            .find_map(|(_, m)| m["stages"].as_array().cloned())
-            .unwrap_or_default()
-            .iter()
-            .map(|s| serde_json::from_value(s["resonance_crossings"].clone()).unwrap_or_default())
-            .collect();
-        let marks = marks.as_deref().unwrap_or(&[]);
-        for (suffix, fig) in figures_for(&merged, marks, &stage_marks, &poles) {
-            let (w, h) = SWEEP_FIGURE_PX;
-            art.figure_sized(format!("{stem}{suffix}.png"), fig, w, h);
-        }
+        add_merged_figures(&mut art, &metas, &merged, &stem);
         let first = metas
             .iter()
             .find(|(_, m)| describes_a_sweep(m))
@@ -245,5 +223,37 @@ impl Job for SweepMergeJob {
             outcome,
             table: merged,
         })
+    }
+}
+
+/// The merged table's figures, with the resonance crossings and mesh poles the inputs'
+/// descriptions carry (a train's crossings per mesh from their `stages`).
+fn add_merged_figures(
+    art: &mut Artifacts,
+    metas: &[(String, serde_json::Value)],
+    merged: &SweepTable,
+    stem: &str,
+) {
+    let marks: Option<Vec<Crossing>> = metas
+        .iter()
+        .find_map(|(_, m)| serde_json::from_value(m["resonance_crossings"].clone()).ok());
+    let poles: Vec<f64> = metas
+        .iter()
+        .find_map(|(_, m)| m["modes"]["mesh_poles"].as_array().cloned())
+        .unwrap_or_default()
+        .iter()
+        .filter_map(|p| p["damped_frequency_hz"].as_f64())
+        .collect();
+    let stage_marks: Vec<Vec<Crossing>> = metas
+        .iter()
+        .find_map(|(_, m)| m["stages"].as_array().cloned())
+        .unwrap_or_default()
+        .iter()
+        .map(|s| serde_json::from_value(s["resonance_crossings"].clone()).unwrap_or_default())
+        .collect();
+    let marks = marks.as_deref().unwrap_or(&[]);
+    for (suffix, fig) in figures_for(merged, marks, &stage_marks, &poles) {
+        let (w, h) = SWEEP_FIGURE_PX;
+        art.figure_sized(format!("{stem}{suffix}.png"), fig, w, h);
     }
 }
