@@ -236,7 +236,7 @@ pub const KEYS: &[KeySpec] = &[
       "A millimetre either way over a face is beyond any shaft and housing the model takes; a value leaving the load on one slice is refused with the geometry."),
     k("operating.misalignment_plane", "-", Choice(&["action", "normal"]), "Plane of `operating.misalignment_um`: \"action\" (default) opens a gap along the line of action; \"normal\" (through the axis, normal to the plane of action) moves the flanks along each other, opens no gap to first order and is ignored with a warning (docs/MODEL.md 11.2).",
       "-"),
-    k("load_spectrum.torque_shaft", "-", Choice(&["pinion", "gear"]), "Shaft the spectrum's bin torques are on; omit for `operating.load_torque_shaft`. The bins themselves are `bins = [{torque_nm, input_speed_hz (or input_speed_rpm), share (or hours)}, ...]` or `file = \"spectrum.csv\"` (see \"Load spectrum\" above).",
+    k("load_spectrum.torque_shaft", "-", Choice(&["pinion", "gear"]), "Shaft the spectrum's bin torques are on (on a gear train: \"pinion\" the input shaft, \"gear\" the output shaft, the last stage's gear); omit for `operating.load_torque_shaft`. The bins themselves are `bins = [{torque_nm, input_speed_hz (or input_speed_rpm), share (or hours)}, ...]` or `file = \"spectrum.csv\"` (see \"Load spectrum\" above).",
       "-"),
     k("load_spectrum.torque_scale", "-", Num(Range::closed(1e-3, 1e3)), "Factor on every bin's torque (a sweep axis: all torques x 1.2); omit for 1.",
       "Each scaled torque must also lie in the range of `operating.load_torque_nm` (checked per bin); a factor of 1000 either way spans any re-rating."),
