@@ -31,7 +31,7 @@ use crate::study::train::TrainModel;
 use crate::study::train_wear::{
     new_teeth, respond_to_block, Block, TrainNext, TrainUpdate, TrainWearRun,
 };
-use crate::study::wear_loop::{block_length, start_of, UpdateRecord, WearMode, WearStop};
+use crate::study::wear_loop::{fastest_block, start_of, UpdateRecord, WearMode, WearStop};
 use crate::study::Model;
 use crate::wear::{WearIncrement, WearState};
 use rayon::prelude::*;
@@ -166,14 +166,11 @@ pub fn next_spectrum_block(
     }
     let c = ts.cycle_factors();
     let incs: Vec<WearIncrement> = (0..c.len()).map(|k| last.increment(shares, k)).collect();
-    let (lim, rate) = incs
-        .iter()
-        .zip(&c)
-        .map(|(inc, ck)| inc.max_m() * ck)
-        .enumerate()
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    let n = block_length(rate, w.block_cycles, w.threshold_um * 1e-6, remaining);
-    let limited_by = (n < w.block_cycles.min(remaining)).then_some(lim);
+    let (n, limited_by) = fastest_block(
+        incs.iter().zip(&c).map(|(inc, ck)| inc.max_m() * ck),
+        w,
+        remaining,
+    );
     let mut added = TrainSpectrumRecord {
         input_cycles: last.input_cycles + n,
         limited_by,

@@ -17,7 +17,7 @@
 //! response not found, stops the run (the records so far are kept).
 
 use super::planetary_wear::{member_flanks, new_teeth, wear_gaps, MemberFlank, PlanetaryWearModel};
-use super::wear_loop::{block_length, StopKind, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION};
+use super::wear_loop::{fastest_block, StopKind, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION};
 use crate::wear::{WearIncrement, WearState};
 
 /// One mesh at one update: its wear, the increment per pinion cycle its response gives,
@@ -144,14 +144,13 @@ pub fn next_block(
     if remaining <= 0.5 {
         return None;
     }
-    let (lim, rate) = last
-        .flanks(model)
-        .iter()
-        .map(|f| f.rate_m_per_input.iter().fold(0.0_f64, |a, b| a.max(*b)))
-        .enumerate()
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    let n = block_length(rate, wear.block_cycles, wear.threshold_um * 1e-6, remaining);
-    let limited_by = (n < wear.block_cycles.min(remaining)).then_some(lim);
+    let (n, limited_by) = fastest_block(
+        last.flanks(model)
+            .iter()
+            .map(|f| f.rate_m_per_input.iter().fold(0.0_f64, |a, b| a.max(*b))),
+        wear,
+        remaining,
+    );
     let wears = last
         .meshes
         .iter()

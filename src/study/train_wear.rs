@@ -22,8 +22,8 @@
 use super::model::Model;
 use super::train::TrainModel;
 use super::wear_loop::{
-    block_length, mesh_record, solve_by, start_of, MeshWearParts, StopKind, UpdateRecord, WearMode,
-    WearStop, MAX_CONTACT_LOSS_FRACTION,
+    fastest_block, mesh_record, solve_by, start_of, MeshWearParts, StopKind, UpdateRecord,
+    WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION,
 };
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::period_search::DynamicsError;
@@ -200,15 +200,14 @@ pub fn next_block(model: &Model, train: &TrainModel, last: &TrainUpdate) -> Opti
     }
     let c = train.cycle_factors();
     // Each mesh's largest wear per input cycle; the fastest sets the block.
-    let (lim, rate) = last
-        .meshes
-        .iter()
-        .zip(&c)
-        .map(|(r, ck)| r.increment().max_m() * ck)
-        .enumerate()
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    let n = block_length(rate, w.block_cycles, w.threshold_um * 1e-6, remaining);
-    let limited_by = (n < w.block_cycles.min(remaining)).then_some(lim);
+    let (n, limited_by) = fastest_block(
+        last.meshes
+            .iter()
+            .zip(&c)
+            .map(|(r, ck)| r.increment().max_m() * ck),
+        w,
+        remaining,
+    );
     let wears: Vec<WearState> = last
         .meshes
         .iter()

@@ -210,6 +210,24 @@ impl WearRun {
     }
 }
 
+/// The next block of several meshes or member flanks worn together on one cycle counter
+/// (paper eq. 17 for each; trains, spectra on trains, planetary sets): `rates` holds each
+/// one's largest wear per counted cycle, m; the fastest cuts m (`wear.block_cycles`) to
+/// `wear.threshold_um`, and the total to `remaining`. Returns the block, cycles, and the
+/// index of the fastest when the threshold cut it.
+pub fn fastest_block(
+    rates: impl IntoIterator<Item = f64>,
+    wear: &crate::config::case::WearSection,
+    remaining: f64,
+) -> (f64, Option<usize>) {
+    let (lim, rate) = rates
+        .into_iter()
+        .enumerate()
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    let n = block_length(rate, wear.block_cycles, wear.threshold_um * 1e-6, remaining);
+    (n, (n < wear.block_cycles.min(remaining)).then_some(lim))
+}
+
 /// Length of the next block, cycles: m, cut to the threshold and to the total.
 pub fn block_length(inc_max_m: f64, block_cycles: f64, threshold_m: f64, remaining: f64) -> f64 {
     let mut n = block_cycles.min(remaining);
