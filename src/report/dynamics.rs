@@ -2,7 +2,7 @@
 //! series, the path of contact, the modes, the spectrum, their figures and the summary.
 
 use super::artifacts::{um, Artifacts};
-use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
+use super::figures::{panel, single, spectrum_panel_meshes, spectrum_rows, Curve};
 use super::modes::{self as report_modes, modes_json};
 use super::plot::Figure;
 use crate::dynamics::model::dof;
@@ -222,12 +222,26 @@ fn add_velocity_figures(
         "spectrum_velocity_y_pinion.png",
         single(
             &format!("Spectrum of the pinion y velocity ({label})"),
-            spectrum_panel("amplitude (mm/s)", &f, &amp, f_mesh),
+            spectrum_panel_meshes("amplitude (mm/s)", &f, &amp, &mesh_frequencies_hz(model)),
         ),
         Table::new()
             .col("frequency_hz", f)
             .col("velocity_y_pinion_amplitude_mm_per_s", amp),
     );
+}
+
+/// Every mesh's frequency, Hz: the pair's, or each stage's of a train (the train's
+/// operating point, computed once).
+fn mesh_frequencies_hz(model: &Model) -> Vec<f64> {
+    match &model.train {
+        None => vec![model.params.operating.mesh_frequency_hz],
+        Some(t) => t
+            .operating
+            .meshes
+            .iter()
+            .map(|m| m.mesh_frequency_hz)
+            .collect(),
+    }
 }
 
 /// The name of each mesh's panel: none for a single pair; "stage k (z1/z2)" for each

@@ -136,13 +136,20 @@ pub fn spectrum_rows(freq_hz: &[f64], amp: &[f64], f_max_hz: f64) -> (Vec<f64>, 
 
 /// A one-sided amplitude spectrum as stems, with the mesh harmonics in its range marked.
 pub fn spectrum_panel(y_label: &str, freq_hz: &[f64], amp: &[f64], mesh_hz: f64) -> Panel {
+    spectrum_panel_meshes(y_label, freq_hz, amp, &[mesh_hz])
+}
+
+/// [`spectrum_panel`] of a gear train: every mesh's harmonics (up to the 8th) in the
+/// range marked, "h × mesh k" for mesh k (1-based, the stage's number); a single mesh
+/// keeps the pair's labels ("mesh frequency", "2 × mesh frequency", ...).
+pub fn spectrum_panel_meshes(
+    y_label: &str,
+    freq_hz: &[f64],
+    amp: &[f64],
+    mesh_hz: &[f64],
+) -> Panel {
     let f_max_hz = freq_hz.iter().fold(0.0_f64, |a, b| a.max(*b)) * (1.0 + FREQ_TOL);
-    let mut vlines = Vec::new();
-    let mut h = 1;
-    while mesh_hz > 0.0 && h as f64 * mesh_hz <= f_max_hz && h <= 8 {
-        vlines.push((h as f64 * mesh_hz, harmonic_label(h)));
-        h += 1;
-    }
+    let vlines = mesh_harmonic_lines(mesh_hz, f_max_hz, 8);
     Panel {
         x_label: "frequency (Hz)".into(),
         y_label: y_label.into(),
@@ -155,6 +162,28 @@ pub fn spectrum_panel(y_label: &str, freq_hz: &[f64], amp: &[f64], mesh_hz: f64)
         kind: PanelKind::Bars,
         ..Default::default()
     }
+}
+
+/// The marker lines of every mesh's harmonics 1..=`max_harmonic` at or below `f_max_hz`
+/// (Hz), mesh order: "mesh frequency", "2 × mesh frequency", ... for a single mesh,
+/// "mesh k", "h × mesh k" for mesh k (1-based: a train's stage number) of several.
+pub fn mesh_harmonic_lines(
+    mesh_hz: &[f64],
+    f_max_hz: f64,
+    max_harmonic: usize,
+) -> Vec<(f64, String)> {
+    let mut lines = Vec::new();
+    for (k, &f) in mesh_hz.iter().enumerate() {
+        for h in (1..=max_harmonic).take_while(|h| f > 0.0 && *h as f64 * f <= f_max_hz) {
+            let label = match (mesh_hz.len(), h) {
+                (1, _) => harmonic_label(h),
+                (_, 1) => format!("mesh {}", k + 1),
+                _ => format!("{h} × mesh {}", k + 1),
+            };
+            lines.push((h as f64 * f, label));
+        }
+    }
+    lines
 }
 
 /// "mesh frequency", "2 x mesh frequency", ... for harmonic `h` (1-based).

@@ -2,7 +2,7 @@
 //! spectrum and TSAs, the indicators in the summary, and the figures.
 
 use super::artifacts::Artifacts;
-use super::figures::{harmonic_label, panel, Curve};
+use super::figures::{harmonic_label, mesh_harmonic_lines, panel, Curve};
 use super::plot::{Figure, Panel, PanelKind, Series};
 use crate::format::shown;
 use crate::io::Table;
@@ -119,7 +119,7 @@ pub fn signals_artifacts(
     let spec = spectrum_table(r, unit);
     a.figure_sized(
         "spectrum.png",
-        spectrum_figure(r, &rec.kinematics, mesh_harmonics, unit_label, label),
+        spectrum_figure(r, rec, mesh_harmonics, unit_label, label),
         900,
         700,
     );
@@ -189,7 +189,7 @@ fn spectrum_table(r: &Record, unit: crate::signals::chain::ChannelUnit) -> Table
 /// the band around the mesh frequency with the shaft sidebands marked.
 fn spectrum_figure(
     r: &Record,
-    k: &Kinematics,
+    rec: &SignalRecord,
     harmonics: usize,
     unit: &str,
     label: &str,
@@ -206,7 +206,13 @@ fn spectrum_figure(
             .map(|(f, a)| (*f, *a))
             .unzip()
     };
+    let k = &rec.kinematics;
     let fm = k.mesh_hz();
+    // Every mesh of a train is in the record (the housing carries them all).
+    let meshes_hz: Vec<f64> = match rec.train_meshes.as_slice() {
+        [] => vec![fm],
+        t => t.iter().map(Kinematics::mesh_hz).collect(),
+    };
     let stems = |x: Vec<f64>, y: Vec<f64>| Series {
         x,
         y,
@@ -218,12 +224,7 @@ fn spectrum_figure(
         x_label: "frequency (Hz)".into(),
         y_label: format!("amplitude ({unit})"),
         series: vec![stems(fx, fy)],
-        vlines: (1..=harmonics)
-            .map(|h| h as f64 * fm)
-            .filter(|v| *v <= band)
-            .enumerate()
-            .map(|(i, v)| (v, harmonic_label(i + 1)))
-            .collect(),
+        vlines: mesh_harmonic_lines(&meshes_hz, band, harmonics),
         kind: PanelKind::Bars,
         log_y: true,
         ..Default::default()

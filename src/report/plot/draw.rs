@@ -301,7 +301,11 @@ where
         lines.push(px);
         if !label.is_empty() {
             xs.push(px);
-            sizes.push(screen.estimate_text_size(label, &font).map_err(draw_err)?);
+            // The box is the font's full line (ascenders to descenders), not the ink the
+            // estimate measures (9 px of a 12 px font): the white back below must hide a
+            // crossing line over the whole text, descenders included.
+            let (w, h) = screen.estimate_text_size(label, &font).map_err(draw_err)?;
+            sizes.push((w, h.max(LABEL_FONT_PX + 1)));
         }
     }
     Ok(PanelLayout {
@@ -419,7 +423,7 @@ where
     let labels = shown_vlines(panel, &xr).filter(|v| !v.1.is_empty());
     for ((_, label), r) in labels.zip(&lay.labels) {
         // On white: a line that still passes (no side was free of lines) goes behind it.
-        let back = Rectangle::new([(r.x0 - 1, r.y0), (r.x1 + 1, r.y1)], WHITE.filled());
+        let back = Rectangle::new([(r.x0 - 1, r.y0 - 1), (r.x1 + 1, r.y1)], WHITE.filled());
         screen.draw(&back).map_err(draw_err)?;
         let font = (FONT, LABEL_FONT_PX).into_font().color(&grey);
         let text = Text::new(label.clone(), (r.x0, r.y0), font);
