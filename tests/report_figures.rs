@@ -221,6 +221,30 @@ fn figure_labels_are_words_not_identifiers() {
 }
 
 #[test]
+fn no_two_legend_entries_are_drawn_alike_in_any_figure_of_the_commands() {
+    // Issue 34: bins 1, 17 and 25 of a duty figure were drawn alike. Every named series
+    // of a panel must differ from the others in colour, line style or marker as drawn.
+    let mut entries = 0;
+    for (command, a) in all_artifacts() {
+        for f in &a.figures {
+            for p in &f.figure.panels {
+                entries += p.series.iter().filter(|s| !s.name.is_empty()).count();
+                let same = p.indistinct_entries();
+                assert!(
+                    same.is_empty(),
+                    "{command} {}: drawn alike {same:?}",
+                    f.path
+                );
+            }
+        }
+    }
+    assert!(
+        entries > 20,
+        "only {entries} legend entries: the check would be vacuous"
+    );
+}
+
+#[test]
 fn no_legend_covers_data_in_any_figure_of_the_commands() {
     for (command, a) in all_artifacts() {
         for f in &a.figures {

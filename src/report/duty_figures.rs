@@ -328,4 +328,30 @@ mod tests {
             (0..MAX_BIN_CURVES).collect::<Vec<_>>()
         );
     }
+
+    #[test]
+    fn a_25_bin_wear_figure_draws_every_entry_apart() {
+        // The built-in case's profile grid, one update of 25 bins whose added wear falls
+        // with the bin number: the total, the 7 deepest bins and the other 18 summed.
+        let model = crate::study::Model::from_case(&crate::config::Case::default()).unwrap();
+        let n = model.grid.len();
+        let part = |i: usize| vec![1e-7 / (i + 1) as f64; n];
+        let mut rec = crate::duty::wear::SpectrumRecord {
+            wear: model.new_wear_state(),
+            roughness_um: 0.4,
+            bins: Vec::new(),
+            by_bin_pinion_m: (0..25).map(part).collect(),
+            by_bin_gear_m: (0..25).map(part).collect(),
+        };
+        rec.wear.cycles = 1e4;
+        let mut run = SpectrumRun::new(crate::study::wear_loop::WearMode::Dynamic, vec![0.04; 25]);
+        run.records.push(rec);
+        let f = wear_by_bin_figure(&model.grid, &run).unwrap();
+        for p in &f.figure.panels {
+            let names: Vec<&str> = p.series.iter().map(|s| s.name.as_str()).collect();
+            assert_eq!(names.len(), 1 + MAX_BIN_CURVES + 1, "{names:?}");
+            assert_eq!(names.last(), Some(&"the other 18 bins"));
+            assert!(p.indistinct_entries().is_empty(), "{names:?}");
+        }
+    }
 }

@@ -170,6 +170,35 @@ pub struct Panel {
     pub cell_size: (f64, f64),
 }
 
+impl Panel {
+    /// The pairs of legend entries (series with a name) that the renderer draws alike:
+    /// the same colour (the palette's colour of the series' index when none is given),
+    /// line style and marker, so that a reader cannot tell them apart. Empty for a
+    /// readable panel.
+    pub fn indistinct_entries(&self) -> Vec<(String, String)> {
+        let look = |i: usize, s: &Series| {
+            let c = legend::series_color(i, s);
+            ((c.0, c.1, c.2), s.style, legend::marker_of(self.kind, s))
+        };
+        let named: Vec<(&str, _)> = self
+            .series
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| !s.name.is_empty())
+            .map(|(i, s)| (s.name.as_str(), look(i, s)))
+            .collect();
+        let mut pairs = Vec::new();
+        for (k, (a, la)) in named.iter().enumerate() {
+            for (b, lb) in &named[k + 1..] {
+                if la == lb {
+                    pairs.push((a.to_string(), b.to_string()));
+                }
+            }
+        }
+        pairs
+    }
+}
+
 /// A figure: a title over panels stacked vertically with equal heights.
 #[derive(Debug, Clone, Default)]
 pub struct Figure {
@@ -269,4 +298,50 @@ fn ensure_font() -> Result<(), PlotError> {
             && register_font(FONT, FontStyle::Bold, dejavu::sans::bold()).is_ok()
     });
     ok.then_some(()).ok_or(PlotError::Font)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn named(name: &str, style: LineStyle, color: Option<[u8; 3]>) -> Series {
+        Series {
+            name: name.into(),
+            style,
+            color,
+            ..Default::default()
+        }
+    }
+
+    #[test]
+    fn entries_drawn_alike_are_found_and_unnamed_series_ignored() {
+        let mut p = Panel::default();
+        // Series 0 and 8 take the same palette colour (8 colours); solid both: alike.
+        for i in 0..9 {
+            let style = if i == 8 {
+                LineStyle::Solid
+            } else {
+                LineStyle::Dashed
+            };
+            let s = named(&format!("s{i}"), style, None);
+            p.series.push(if i == 0 {
+                named("s0", LineStyle::Solid, None)
+            } else {
+                s
+            });
+        }
+        assert_eq!(p.indistinct_entries(), vec![("s0".into(), "s8".into())]);
+        // A given colour counts as drawn: the palette's first, given to series 3.
+        p.series[3] = named("s3", LineStyle::Solid, Some([31, 119, 180]));
+        assert_eq!(p.indistinct_entries().len(), 3);
+        // Without names they are not in the legend and cannot be confused there.
+        for s in &mut p.series[3..] {
+            s.name.clear();
+        }
+        assert!(p.indistinct_entries().is_empty());
+        // Another marker sets a series apart (points panels).
+        p.series[8].name = "s8".into();
+        p.series[8].marker = Marker::Square;
+        assert!(p.indistinct_entries().is_empty());
+    }
 }
