@@ -159,3 +159,54 @@ fn a_hunting_period_is_written_thinned_under_the_size_bound_and_whole_on_request
         assert_eq!(dte[i], *v, "at {t_ms} ms");
     }
 }
+
+/// A CSV's columns as f64, an empty cell (a pair not in contact) as NaN.
+fn read_csv_gaps(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let names: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    let mut cols = vec![Vec::new(); names.len()];
+    for rec in r.records() {
+        for (j, v) in rec.unwrap().iter().enumerate() {
+            cols[j].push(if v.is_empty() {
+                f64::NAN
+            } else {
+                v.parse().unwrap()
+            });
+        }
+    }
+    (names, cols)
+}
+
+#[test]
+fn the_tooth_stiffness_figure_table_holds_its_window_and_the_period_its_own_file() {
+    // Grade 6 draws every tooth: the excitation period is the hunting period,
+    // lcm(19, 31) = 589 mesh cycles. Without a fault the figure shows the first pinion
+    // revolution (19 mesh cycles); its table must hold exactly those rows (issue 34: it
+    // held all 589 cycles while the figure drew 19), and the period's table all of them.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s");
+    common::ok(&[
+        "-q",
+        "stiffness",
+        "--set",
+        "teeth.accuracy_grade=6",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let (names, period) = read_csv_gaps(&out.join("teeth_mesh_stiffness_period.csv"));
+    let (wnames, window) = read_csv_gaps(&out.join("csv/teeth_mesh_stiffness.csv"));
+    assert_eq!(names, wnames);
+    let cycle = names.iter().position(|n| n == "mesh_cycle").unwrap();
+    let per_cycle = period[cycle].iter().filter(|c| **c == 0.0).count();
+    assert!(per_cycle > 1);
+    assert_eq!(period[cycle].len(), 589 * per_cycle);
+    assert_eq!(period[cycle].last(), Some(&588.0));
+    assert_eq!(window[cycle].len(), 19 * per_cycle);
+    for (j, n) in names.iter().enumerate() {
+        let same = window[j]
+            .iter()
+            .zip(&period[j])
+            .all(|(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()));
+        assert!(same, "{n}: the window is not the period's first rows");
+    }
+}

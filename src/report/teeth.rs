@@ -97,8 +97,9 @@ pub fn teeth_json(model: &Model) -> Option<Value> {
 
 /// Mesh stiffness over the excitation period of new teeth, per pair (its teeth and
 /// stiffness) and in total beside the healthy mesh's, with the engagements of faulty
-/// teeth marked: the table and its figure.
-pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
+/// teeth marked: the figure of a readable window of it, that window's rows (exactly what
+/// the figure draws) and the table of the whole period.
+pub fn tvms_figure(model: &Model) -> Option<(Figure, Table, Table)> {
     let tm = model.tooth_mesh(&model.new_wear_state())?;
     let pair = &model.pair;
     let period = pair.mesh_angle_rad();
@@ -147,7 +148,8 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
         table = table.col(n, v.clone());
     }
     // The figure shows a readable window: 8 mesh periods around the first engagement of
-    // the first faulty tooth, else the first pinion revolution (the table holds all).
+    // the first faulty tooth, else the first pinion revolution (the period's table holds
+    // all; the figure's own table only the window, the rule of every figure's data).
     let t = model.teeth.as_ref()?;
     let [z1, z2] = tm.teeth();
     let first_fault = t.faults.first().map(|f| f.tooth);
@@ -157,6 +159,10 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
     };
     let rows = lo * TVMS_SAMPLES..hi * TVMS_SAMPLES;
     let shown = |k: usize| c[k][rows.clone()].to_vec();
+    let mut window = Table::new();
+    for (k, n) in names.iter().enumerate() {
+        window = window.col(n, shown(k));
+    }
     // Without a fault the teeth's stiffness is the healthy one (errors, run-out and
     // reliefs move the flanks, not their stiffness): one curve, nothing to compare.
     let curves = if t.faults.is_empty() {
@@ -194,7 +200,7 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table)> {
         ),
         p,
     );
-    Some((fig, table))
+    Some((fig, window, table))
 }
 
 /// The per-tooth wear of the last record of `run` (`teeth_wear_MODE.csv`, a column per
@@ -339,8 +345,9 @@ pub fn add_teeth_artifacts(model: &Model, a: &mut Artifacts) {
     if let Some(v) = teeth_json(model) {
         a.summary["teeth"] = v;
     }
-    if let Some((fig, table)) = tvms_figure(model) {
-        a.figure_with_data("teeth_mesh_stiffness.png", fig, table);
+    if let Some((fig, window, period)) = tvms_figure(model) {
+        a.figure_with_data("teeth_mesh_stiffness.png", fig, window);
+        a.table("teeth_mesh_stiffness_period.csv", period);
     }
 }
 
@@ -437,11 +444,11 @@ pub fn run_teeth_figures(
             table,
         })
     };
-    if let Some(t) = tvms_figure(model) {
+    if let Some((figure, window, _)) = tvms_figure(model) {
         push(
             "teeth_mesh_stiffness",
             "Mesh stiffness of the tooth pairs of new teeth, beside identical healthy teeth".into(),
-            t,
+            (figure, window),
         );
     }
     if let Some(s) = study.wear_states.first() {
