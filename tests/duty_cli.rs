@@ -112,7 +112,7 @@ fn bad_spectra_exit_2_naming_bin_key_and_range_and_nothing_is_computed() {
         ("{torque_nm = 60, input_speed_hz = nan, share = 1}", "`input_speed_hz` = NaN"),
         ("{torque_nm = 60, input_speed_hz = 3000, share = 1}", "outside [1e-6, 1000]"),
         // In the key's range, beyond what the flanks carry (Hertz pressure > 10 GPa).
-        ("{torque_nm = 60, input_speed_hz = 30, share = 0.5}, {torque_nm = 5e6, input_speed_hz = 30, share = 0.5}", "load_spectrum bin 2 (5000000 N m"),
+        ("{torque_nm = 60, input_speed_hz = 30, share = 0.5}, {torque_nm = 5e6, input_speed_hz = 30, share = 0.5}", "load_spectrum bin 2 (5000000 N m, 30 Hz): the bin's `torque_nm` = 5000000 is more"),
     ] {
         let case = write(dir.path(), "bad.toml", &format!("[load_spectrum]\nbins = [{bins}]\n"));
         let out = dir.path().join("never");

@@ -26,11 +26,20 @@ pub fn over_budget(message: impl std::fmt::Display) -> Problem {
 }
 
 /// Refuse `job` on `case` if it is over `budget` (`None`: no check).
+/// Under a load spectrum, a bin the model refuses (a load beyond the flanks, a speed out
+/// of range) is named rather than priced: the estimate of such a bin is meaningless (a
+/// wear rate from a load the flanks cannot carry), so an estimate over the budget first
+/// builds the bins' models and returns their problems when there are any.
 pub fn check(case: &Case, job: Job, budget: Option<&Budget>) -> Result<(), JobError> {
     match budget {
-        Some(b) => estimate(case, job)
-            .check(b)
-            .map_err(|m| JobError::input(over_budget(m))),
+        Some(b) => estimate(case, job).check(b).map_err(|m| {
+            if case.load_spectrum.is_some() && case.planetary.is_none() {
+                if let Err(e) = crate::duty::SpectrumModel::from_case(case) {
+                    return JobError::from(e);
+                }
+            }
+            JobError::input(over_budget(m))
+        }),
         None => Ok(()),
     }
 }

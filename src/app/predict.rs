@@ -554,7 +554,7 @@ fn future_domain(
                 .map(move |m| {
                     crate::remedy::Problem::of(
                         crate::remedy::Arg::FutureSpectrum,
-                        format!("bin {}: {m}", i + 1),
+                        format!("bin {}: {}", i + 1, crate::duty::model::in_bin_words(&m)),
                     )
                 })
         })

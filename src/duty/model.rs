@@ -34,6 +34,15 @@ pub(crate) fn bin_label(case: &Case, i: usize) -> String {
     )
 }
 
+/// A message about bin `i`'s model in the bin's words: the keys of `[operating]` that the
+/// bin sets (`Case::at_bin`: the torque and the input speed) are the bin's `torque_nm` and
+/// `input_speed_hz`, so the message names those instead.
+pub(crate) fn in_bin_words(message: &str) -> String {
+    message
+        .replace("`operating.load_torque_nm`", "the bin's `torque_nm`")
+        .replace("`operating.input_speed_hz`", "the bin's `input_speed_hz`")
+}
+
 impl SpectrumModel {
     /// The models of `case`'s bins; a case without a spectrum is one bin of share 1 at its
     /// operating point. Every bin's problems are collected, each naming its bin.
@@ -55,9 +64,10 @@ impl SpectrumModel {
         for (i, b) in built.into_iter().enumerate() {
             match b {
                 Ok(m) => bins.push(m),
-                Err(e) => {
-                    problems.extend(e.0.iter().map(|p| format!("{}: {p}", bin_label(case, i))))
-                }
+                Err(e) => problems.extend(
+                    e.0.iter()
+                        .map(|p| format!("{}: {}", bin_label(case, i), in_bin_words(p))),
+                ),
             }
         }
         if !problems.is_empty() {

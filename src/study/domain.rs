@@ -108,13 +108,22 @@ fn pitch_pressure_gpa(case: &Case, pair: &GearPair, force: f64) -> Option<f64> {
 
 /// Problems of `case` that need its geometry: an impossible load for the flanks.
 pub fn domain_problems(case: &Case, pair: &GearPair) -> Vec<String> {
+    let torque = format!(
+        "`operating.load_torque_nm` = {}",
+        crate::format::shown(case.operating.load_torque_nm)
+    );
+    domain_problems_naming(case, pair, &torque)
+}
+
+/// [`domain_problems`] with the load named as `torque` says (a train's stage: its
+/// pinion's torque, which the case's input torque sets through the ratios).
+pub(crate) fn domain_problems_naming(case: &Case, pair: &GearPair, torque: &str) -> Vec<String> {
     let mut problems: Vec<String> = super::face_load::lead_refusal(case).into_iter().collect();
     let o = &case.operating;
     let force = OperatingPoint::of(o, pair).static_mesh_force_n;
     if let Some(p) = pitch_pressure_gpa(case, pair, force) {
         problems.push(format!(
-            "`operating.load_torque_nm` = {} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {p:.1} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
-            o.load_torque_nm,
+            "{torque} is more than this pair's flanks can carry: one tooth pair at the pitch point would see a Hertz pressure of {p:.1} GPa, above {} GPa, beyond any gear material's elastic range (the model is linear elastic)",
             MAX_PITCH_PRESSURE_PA * 1e-9
         ));
     }

@@ -83,16 +83,16 @@ impl TrainModel {
         let mut stages = Vec::new();
         for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
             let sc = stage_case(case, spec, Some(&operating.meshes[k]));
-            problems.extend(super::domain::domain_problems(&sc, &pair).iter().map(|m| {
-                at_stage(
-                    k,
-                    format!(
-                        "(its pinion carries {:.4} N m) {}",
-                        operating.meshes[k].pinion_torque_nm,
-                        spec.name_own_keys(m)
-                    ),
-                )
-            }));
+            let torque = format!(
+                "its pinion's torque, {} N m from `operating.load_torque_nm` = {} through the ratios,",
+                crate::format::shown(operating.meshes[k].pinion_torque_nm),
+                crate::format::shown(case.operating.load_torque_nm)
+            );
+            problems.extend(
+                super::domain::domain_problems_naming(&sc, &pair, &torque)
+                    .iter()
+                    .map(|m| at_stage(k, spec.name_own_keys(m))),
+            );
             let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
             let mesh = match MeshStiffness::with_fillet(
                 &pair,
