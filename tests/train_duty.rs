@@ -155,7 +155,33 @@ fn two_bins_wear_each_mesh_by_the_share_weighted_sum_of_the_bins_alone() {
                 assert!((w - g).abs() <= 1e-12 * peak, "stage {k}: {g} vs {w}");
             }
         }
+        // The stage's wear-by-bin figure: what bin i added is s_i W_i of the run at bin
+        // i alone (the same identity, bin by bin), and the bins sum to the total.
+        let fig = s.join(format!("csv/duty_wear_by_bin_{mode}_stage{k}.csv"));
+        assert!(s
+            .join(format!("duty_wear_by_bin_{mode}_stage{k}.png"))
+            .exists());
+        for (flank, alone1, alone2) in [("pinion", &p1, &p2), ("gear", &g1, &g2)] {
+            let b1 = column(&fig, &format!("wear_{flank}_bin1_um"));
+            let b2 = column(&fig, &format!("wear_{flank}_bin2_um"));
+            let total = column(&fig, &format!("wear_{flank}_total_um"));
+            for j in 0..total.len() {
+                assert!(
+                    (b1[j] - 0.3 * alone1[j]).abs() <= 1e-12 * peak,
+                    "stage {k} {flank}"
+                );
+                assert!(
+                    (b2[j] - 0.7 * alone2[j]).abs() <= 1e-12 * peak,
+                    "stage {k} {flank}"
+                );
+                assert!(
+                    (b1[j] + b2[j] - total[j]).abs() <= 1e-12 * peak,
+                    "stage {k} {flank}"
+                );
+            }
+        }
     }
+    assert!(s.join("duty_spectrum.png").exists());
     // Hours by hand: n (s_1 / f_1 + s_2 / f_2) / 3600.
     let ls = &summary(&s)["load_spectrum"];
     let hours = 2e4 * (0.3 / 20.0 + 0.7 / 30.0) / 3600.0;

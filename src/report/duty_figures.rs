@@ -145,6 +145,21 @@ pub fn spectrum_figure(s: &LoadSpectrumSection, ranking: Option<&[BinWear]>) -> 
 /// Pinion and gear wear along the profile at the end of `run`: the total and what each
 /// bin added.
 pub fn wear_by_bin_figure(grid: &ProfileGrid, run: &SpectrumRun) -> Option<DutyFigure> {
+    wear_by_bin_titled(grid, run, &|cycles| {
+        format!(
+            "Wear added by each bin of the spectrum, {} cycles ({})",
+            crate::io::format_number(cycles),
+            run.mode.label()
+        )
+    })
+}
+
+/// [`wear_by_bin_figure`] with its title from the pinion cycles of the last update.
+pub(crate) fn wear_by_bin_titled(
+    grid: &ProfileGrid,
+    run: &SpectrumRun,
+    title: &dyn Fn(f64) -> String,
+) -> Option<DutyFigure> {
     let last = run.records.last()?;
     let m = run.mode.name();
     let rho: Vec<f64> = grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
@@ -194,11 +209,7 @@ pub fn wear_by_bin_figure(grid: &ProfileGrid, run: &SpectrumRun) -> Option<DutyF
     Some(DutyFigure {
         stem: format!("duty_wear_by_bin_{m}"),
         figure: Figure {
-            title: format!(
-                "Wear added by each bin of the spectrum, {} cycles ({})",
-                crate::io::format_number(last.wear.cycles),
-                run.mode.label()
-            ),
+            title: title(last.wear.cycles),
             panels,
         },
         table,

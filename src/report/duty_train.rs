@@ -10,10 +10,11 @@
 //! wear, the share of it each bin added and its life to the wear limit, and the mesh that
 //! limits the train's life.
 
-use super::duty_figures::time_shares;
+use super::duty_figures::{spectrum_figure, time_shares, wear_by_bin_titled, DutyFigure};
 use super::html::{Section, TableBlock};
 use crate::duty::train::{TrainSpectrum, TrainSpectrumRun};
 use crate::duty::train_life::{seconds_per_input_cycle, under_spectrum, TrainUnderSpectrum};
+use crate::duty::wear::{SpectrumRecord, SpectrumRun};
 use crate::format::{shown, shown_percent};
 use serde_json::{json, Value};
 use std::f64::consts::PI;
@@ -35,6 +36,49 @@ fn stages_at_bin(ts: &TrainSpectrum, i: usize) -> Vec<Value> {
             })
         })
         .collect()
+}
+
+/// The figures of a train under a spectrum: the spectrum's bins, and per mode and mesh
+/// the wear each bin added along the mesh's pinion and gear profiles (the single pair's
+/// figures, `duty_figures`, read on each mesh's shared flanks and its own pinion cycles).
+pub fn train_duty_figures(ts: &TrainSpectrum, runs: &[&TrainSpectrumRun]) -> Vec<DutyFigure> {
+    let mut figs = vec![spectrum_figure(&ts.sm.spectrum(), None)];
+    let train = ts.trains[ts.sm.monitoring];
+    for r in runs {
+        let Some(last) = r.records.last() else {
+            continue;
+        };
+        for (k, stage) in train.stages.iter().enumerate() {
+            // Mesh k's flanks as a single pair's spectrum run of one update: its shared
+            // wear (every bin's record holds the same) and what each bin added to it.
+            let mesh = SpectrumRun {
+                mode: r.mode,
+                shares: r.shares.clone(),
+                records: vec![SpectrumRecord {
+                    wear: last.bins[0].meshes[k].wear.clone(),
+                    roughness_um: last.bins[0].meshes[k].roughness_um,
+                    bins: Vec::new(),
+                    by_bin_pinion_m: last.by_bin_pinion_m.iter().map(|b| b[k].clone()).collect(),
+                    by_bin_gear_m: last.by_bin_gear_m.iter().map(|b| b[k].clone()).collect(),
+                }],
+                stopped: None,
+            };
+            let (z1, z2) = (stage.pair.pinion.teeth, stage.pair.gear.teeth);
+            let title = |cycles: f64| {
+                format!(
+                    "Stage {} ({z1}/{z2}): wear added by each bin of the spectrum, {} cycles of its pinion ({})",
+                    k + 1,
+                    crate::io::format_number(cycles),
+                    r.mode.label()
+                )
+            };
+            if let Some(mut f) = wear_by_bin_titled(&stage.grid, &mesh, &title) {
+                f.stem = format!("duty_wear_by_bin_{}_stage{}", r.mode.name(), k + 1);
+                figs.push(f);
+            }
+        }
+    }
+    figs
 }
 
 /// `summary.json`'s `load_spectrum` (see the module docs).
@@ -216,6 +260,8 @@ pub struct TrainDutyParts {
     pub lines: Vec<String>,
     /// The report's duty-cycle section.
     pub section: Section,
+    /// The spectrum's figures (`train_duty_figures`).
+    pub figures: Vec<DutyFigure>,
 }
 
 impl TrainDutyParts {
@@ -225,12 +271,17 @@ impl TrainDutyParts {
             summary: train_duty_summary(ts, runs),
             lines: train_duty_lines(ts, runs),
             section: train_duty_section(ts, runs),
+            figures: train_duty_figures(ts, runs),
         }
     }
 
-    /// Add the summary and the lines to a train's wear artifacts.
+    /// Add the summary, the lines and the figures (each with its table) to a train's
+    /// wear artifacts.
     pub fn add_to(&self, a: &mut super::artifacts::Artifacts) {
         a.summary["load_spectrum"] = self.summary.clone();
+        for f in &self.figures {
+            a.figure_with_data(format!("{}.png", f.stem), f.figure.clone(), f.table.clone());
+        }
         for l in &self.lines {
             if !a.headline.is_empty() {
                 a.headline.push('\n');
