@@ -26,6 +26,7 @@ use std::path::PathBuf;
 pub struct LoadSpectrumJob {
     /// CSV of `time_s`, `torque_nm`, `input_speed_hz` (or `input_speed_rpm`).
     pub history: TableSource,
+    /// The rainflow and load-duration settings (class counts, interpolation).
     pub settings: LddSettings,
     /// Shaft the history's torque was measured on (the spectrum's `torque_shaft`).
     pub torque_shaft: TorqueShaft,

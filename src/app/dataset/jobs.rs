@@ -93,8 +93,11 @@ impl DesignSource {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct DatasetJob {
+    /// The study design and where it was read from.
     pub design: DesignSource,
+    /// The part of the records to compute ([`Shard`]'s `index` of `count`; 1 of 1: all).
     pub shard: Shard,
+    /// Output folder (the dataset, or one shard of it).
     pub out: PathBuf,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
@@ -264,7 +267,9 @@ fn read_transfer_path(p: &Path) -> Result<(TransferPath, Vec<u8>), JobError> {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct DatasetMergeJob {
+    /// The dataset folders (shards) to join.
     pub inputs: Vec<PathBuf>,
+    /// Output folder of the merged dataset.
     pub out: PathBuf,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
