@@ -78,7 +78,12 @@ pub enum Job {
     /// `gearwear dynamics`: one steady-state evaluation.
     Dynamics,
     /// `gearwear wear`: the wear study in the modes named.
-    Wear { dynamic: bool, quasi_static: bool },
+    Wear {
+        /// With the dynamic solver.
+        dynamic: bool,
+        /// With the quasi-static solver.
+        quasi_static: bool,
+    },
     /// `gearwear run`: both wear studies and three wear-state evaluations.
     Run,
     /// One case of `gearwear sweep`.

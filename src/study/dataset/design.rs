@@ -91,9 +91,12 @@ pub fn parse_design(
 /// What a design takes from its base case when it does not say: the longest trajectory
 /// (`wear.total_cycles`) and the one speed and load of its operating axes.
 #[derive(Debug, Clone, Copy)]
-pub struct Defaults {
+pub(crate) struct Defaults {
+    /// Longest trajectory, pinion cycles (the base case's `wear.total_cycles`).
     pub max_cycles: f64,
+    /// Input speed, Hz (the base case's `operating.input_speed_hz`).
     pub speed_hz: f64,
+    /// Load torque, N m (the base case's `operating.load_torque_nm`).
     pub torque_nm: f64,
 }
 
@@ -102,7 +105,7 @@ pub struct Defaults {
 /// the description gives it (`cases`, the TOML of the case the design resolved, in the
 /// conditions' order) and the `defaults` its base case gave (the description's axes; the
 /// base case file itself is not kept). Checked as [`parse_design`] checks a design.
-pub fn design_of_cases(
+pub(crate) fn design_of_cases(
     text: &str,
     name: &str,
     cases: &[String],

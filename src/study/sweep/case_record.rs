@@ -12,12 +12,17 @@ use serde::{Deserialize, Serialize};
 /// tell whether it belongs to the sweep being run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CaseRecord {
+    /// The case's id in the sweep.
     pub case_id: usize,
     /// SHA-256 of the resolved case (`RunMetadata::case_sha256`).
     pub case_sha256: String,
+    /// What the case ran.
     pub run: SweepRun,
+    /// The varied keys.
     pub keys: Vec<String>,
+    /// Labels of the case's varied values, one per key.
     pub values: Vec<String>,
+    /// Names of the result columns.
     pub columns: Vec<String>,
     /// In `columns` order; null for a non-finite number.
     pub results: Vec<Option<f64>>,
@@ -34,6 +39,7 @@ pub struct CaseRecord {
 /// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ContinuationLink {
+    /// The branch the point is on.
     pub branch: Branch,
     /// `f64::to_bits` of the start state; `None` for the static equilibrium.
     pub start_state_bits: Option<Vec<u64>>,
@@ -42,6 +48,7 @@ pub struct ContinuationLink {
 }
 
 impl ContinuationLink {
+    /// The link of a point on `branch` that started from `start` (`None`: the static equilibrium) and ended in `end`.
     pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
         Self {
             branch,
