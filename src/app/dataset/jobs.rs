@@ -231,9 +231,7 @@ pub fn load_design(
 ) -> Result<(DatasetDesign, Option<TransferPath>, Vec<u8>), JobError> {
     let read = |rel: &str| match &d.case_text {
         Some(text) => Ok(text.clone()),
-        None => {
-            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
-        }
+        None => read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES),
     };
     let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
         JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
