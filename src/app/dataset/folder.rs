@@ -172,7 +172,7 @@ pub fn make_folder(root: &Path, folder: &str) -> Result<(), OutputError> {
 }
 
 /// The bytes of `rel` in `root`, read without following a link or blocking, only from a
-/// regular single-link file of at most its cap ([`cap_of`]: a sidecar, the description,
+/// regular single-link file of at most its cap (`cap_of`: a sidecar, the description,
 /// any other file); None otherwise (a missing, foreign, oversized or unreadable file
 /// counts as absent: the record is recomputed).
 pub fn read_in(root: &Path, rel: &str) -> Option<Vec<u8>> {

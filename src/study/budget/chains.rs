@@ -2,7 +2,7 @@
 //! them, before any is made: the nodes of k, the runs computed (a parallel batch past the
 //! last one kept included), each run's updates in each phase of its duty, and their CPU
 //! time at the rates of run-to-failure evaluations
-//! ([`super::evaluation::run_to_failure_scale`]).
+//! ([`run_to_failure_scale`]).
 //!
 //! - Without a change of duty: k_j = k_lo 2^j below k_hi, runs made in batches of the
 //!   thread count, up to the batch holding the first run whose blocks are cut by the wear

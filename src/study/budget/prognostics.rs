@@ -14,7 +14,7 @@
 //!   them as the surrogate makes them). A run of U updates costs one evaluation from rest
 //!   and U - 1 warm-started ones per bin of its duty, at the measured rates of
 //!   run-to-failure evaluations
-//!   ([`super::evaluation::run_to_failure_seconds`]), and keeps U records of (4 G + 4
+//!   ([`super::chains::run_to_failure_seconds`]), and keeps U records of (4 G + 4
 //!   S_d) numbers (and its bins' records while it runs). Updates follow from Archard's
 //!   law at the nominal load, at the prior's largest torque and roughness factor.
 //! - **Posterior**: the likelihood reads the surrogate once per observation ([`T_VALUE`]

@@ -151,7 +151,7 @@ pub struct RecordHarmonics {
 }
 
 /// [`RecordHarmonics`] of a steady record of `case`: D f_s / 2 times each period (None
-/// when the periods cannot be counted, see [`record_periods`]).
+/// when the periods cannot be counted, see `record_periods`).
 pub fn record_harmonics(case: &Case) -> Option<RecordHarmonics> {
     let s = &case.signals;
     let top = 0.5 * crate::signals::antialias::OVERSAMPLING as f64 * s.sampling_rate_hz;

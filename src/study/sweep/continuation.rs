@@ -164,10 +164,10 @@ pub type PeriodicState = Vec<f64>;
 
 /// Resume lookup of [`run_branch`]: the end state of point `case_id` if it was already
 /// computed from exactly the start state given.
-pub type FinishedLookup<'a> = dyn Fn(usize, Option<&[f64]>) -> Option<PeriodicState> + 'a;
+pub(crate) type FinishedLookup<'a> = dyn Fn(usize, Option<&[f64]>) -> Option<PeriodicState> + 'a;
 
 /// Resume lookup of [`run_continuation`], per branch.
-pub type BranchFinishedLookup<'a> =
+pub(crate) type BranchFinishedLookup<'a> =
     dyn Fn(Branch, usize, Option<&[f64]>) -> Option<PeriodicState> + Sync + 'a;
 
 /// What happened at one point of a branch.
