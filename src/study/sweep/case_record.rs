@@ -8,6 +8,30 @@ use super::continuation::Branch;
 use crate::study::wear_check::StoredRunError;
 use serde::{Deserialize, Serialize};
 
+/// Why a sweep case record cannot be read back; the message names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseRecordError {
+    /// The file cannot be read (missing is not an error: [`CaseRecord::read`] gives `None`).
+    #[error(transparent)]
+    Unreadable(#[from] crate::io::input::InputError),
+    /// The file is not a case record's JSON.
+    #[error("{path}: not a sweep case record: {source}")]
+    NotARecord {
+        /// The file.
+        path: String,
+        /// Why its JSON is not a record.
+        source: serde_json::Error,
+    },
+    /// The record fails [`CaseRecord::verify`] (edited, or not whole).
+    #[error("{path}: {source}")]
+    Refused {
+        /// The file.
+        path: String,
+        /// What is wrong with it.
+        source: StoredRunError,
+    },
+}
+
 /// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
 /// tell whether it belongs to the sweep being run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -160,16 +184,22 @@ impl CaseRecord {
 
     /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
     /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
-    pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
+    pub fn read(path: &std::path::Path) -> Result<Option<Self>, CaseRecordError> {
         use crate::io::input::{read_input_if_present, MAX_CASE_RECORD_BYTES};
-        let bytes = match read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES) {
-            Ok(Some(b)) => b,
-            Ok(None) => return Ok(None),
-            Err(e) => return Err(e.to_string()),
+        let Some(bytes) = read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES)?
+        else {
+            return Ok(None);
         };
-        let r: CaseRecord = serde_json::from_slice(&bytes)
-            .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;
-        r.verify().map_err(|e| format!("{}: {e}", path.display()))?;
+        let shown = || path.display().to_string();
+        let r: CaseRecord =
+            serde_json::from_slice(&bytes).map_err(|source| CaseRecordError::NotARecord {
+                path: shown(),
+                source,
+            })?;
+        r.verify().map_err(|source| CaseRecordError::Refused {
+            path: shown(),
+            source,
+        })?;
         Ok(Some(r))
     }
 

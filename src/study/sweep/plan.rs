@@ -269,7 +269,7 @@ fn no_repeats(key: &str, values: &[AxisValue]) -> Result<(), Problem> {
 /// (stop - start) / step is within 1e-9 (relative, floor 1e-9 absolute) of a whole
 /// number; the values between are start + k step rounded to 15 significant digits, so
 /// 0.1:0.5:0.1 gives 0.3, not 0.30000000000000004.
-pub fn range_values(start: f64, stop: f64, step: f64) -> Result<Vec<f64>, String> {
+pub(crate) fn range_values(start: f64, stop: f64, step: f64) -> Result<Vec<f64>, String> {
     if step <= 0.0 {
         return Err(format!("STEP must be > 0, got {step}"));
     }
