@@ -64,7 +64,7 @@ impl Default for CalibrationOptions {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct CalibrateJob {
-    /// The case whose prior is calibrated (its `prognostics` section) and whose wear runs check the posterior.
+    /// The case calibrated (its `[calibration]` table gives the priors).
     pub case: Case,
     /// Observations: `cycles`, observed quantities (names of the updates table), optional
     /// `sigma_<name>` columns (docs/PROGNOSTICS.md).

@@ -57,7 +57,8 @@ pub struct PredictOptions {
     pub samples: Option<usize>,
     /// Cycle counts of the fan charts, from 0 to the horizon.
     pub grid_points: usize,
-    /// The forward model of each sample's wear: the surrogate or one true wear study per sample.
+    /// The forward model of each sample's wear: the surrogate or one true wear study per
+    /// sample.
     pub forward: ForwardModel,
     /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
     pub check_runs: usize,

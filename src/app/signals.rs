@@ -60,7 +60,8 @@ fn refuse_train_transient(case: &Case) -> Result<(), JobError> {
 pub struct SignalsJob {
     /// The case whose signals are computed.
     pub case: Case,
-    /// The transfer path from the mesh to the sensors (`None`: the generic housing path, `TransferPath::generic_housing`).
+    /// The transfer path from the mesh to the sensors (`None`: the generic housing path,
+    /// `TransferPath::generic_housing`).
     pub transfer_path: Option<TransferPathSource>,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,

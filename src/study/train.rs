@@ -44,7 +44,8 @@ pub struct TrainModel {
     pub stages: Vec<Stage>,
     /// The assembled train: its elements, coordinates and constant matrices.
     pub assembly: Assembly,
-    /// The train's operating point: every shaft's speed and torque, every mesh's frequency and force.
+    /// The train's operating point: every shaft's speed and torque, every mesh's frequency
+    /// and force.
     pub operating: TrainOperatingPoint,
 }
 

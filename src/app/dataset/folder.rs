@@ -31,7 +31,8 @@ pub struct Sidecar {
     /// Hash of everything the dataset was generated from (design, cases, transfer path,
     /// program version): a record is reused only under the same key.
     pub dataset_key: String,
-    /// SHA-256 (hex) of the record's signal file: a record whose file no longer matches is computed again.
+    /// SHA-256 (hex) of the record's signal file: a record whose file no longer matches is
+    /// computed again.
     pub signal_sha256: String,
     /// The record's labels (its row of the index).
     pub labels: RecordLabels,

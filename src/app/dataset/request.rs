@@ -16,7 +16,8 @@ pub enum DatasetError {
     /// Bad input, one message per problem.
     #[error("{}", .0.join("\n"))]
     Input(Vec<String>),
-    /// A run that could not finish (a file that could not be written, a worker that failed).
+    /// A run that could not finish (a file that could not be written, a worker that
+    /// failed).
     #[error(transparent)]
     Failed(#[from] anyhow::Error),
 }
@@ -49,7 +50,8 @@ pub(crate) struct DatasetOutcome {
 pub struct DatasetRequest<'a> {
     /// The design checked (its conditions, chain and record settings).
     pub design: &'a DatasetDesign,
-    /// The transfer path of the signal chain (`None`: the generic housing path, `TransferPath::generic_housing`).
+    /// The transfer path of the signal chain (`None`: the generic housing path,
+    /// `TransferPath::generic_housing`).
     pub path: Option<TransferPath>,
     /// Bytes of the transfer-path file (part of the dataset key).
     pub path_bytes: Vec<u8>,

@@ -102,7 +102,8 @@ pub struct DatasetDesign {
     pub seed: u64,
     /// The transfer-path file, as written in the design (resolved against its folder).
     pub transfer_path: Option<std::path::PathBuf>,
-    /// The states recorded along each trajectory (a count from new to failure, or cycle counts).
+    /// The states recorded along each trajectory (a count from new to failure, or cycle
+    /// counts).
     pub states: StateChoice,
     /// Longest trajectory, pinion cycles.
     pub max_cycles: f64,

@@ -11,7 +11,8 @@ use serde::{Deserialize, Serialize};
 /// Why a sweep case record cannot be read back; the message names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum CaseRecordError {
-    /// The file cannot be read (missing is not an error: [`CaseRecord::read`] gives `None`).
+    /// The file cannot be read (missing is not an error: [`CaseRecord::read`] gives
+    /// `None`).
     #[error(transparent)]
     Unreadable(#[from] crate::io::input::InputError),
     /// The file is not a case record's JSON.
@@ -72,7 +73,8 @@ pub struct ContinuationLink {
 }
 
 impl ContinuationLink {
-    /// The link of a point on `branch` that started from `start` (`None`: the static equilibrium) and ended in `end`.
+    /// The link of a point on `branch` that started from `start` (`None`: the static
+    /// equilibrium) and ended in `end`.
     pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
         Self {
             branch,
