@@ -19,7 +19,8 @@ pub const PAPER_WEAR_STATES_UM: [f64; 3] = [0.1, 0.5, 1.0];
 
 /// The dynamic response at one wear state.
 pub struct WearStateResult {
-    /// The wear state: deepest pinion wear aimed at, µm (one of [`PAPER_WEAR_STATES_UM`]).
+    /// The wear state: the deepest pinion wear, µm (one of [`PAPER_WEAR_STATES_UM`]; the
+    /// profile is scaled to it).
     pub max_wear_um: f64,
     /// Composite RMS roughness at that wear, µm.
     pub roughness_um: f64,
