@@ -1,3 +1,4 @@
+#![warn(missing_docs)]
 //! gearwear: dynamic wear prediction of spur gears.
 //!
 //! Implements the model of "A Dynamic Wear Prediction Model for Studying the Interactions

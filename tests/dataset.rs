@@ -7,6 +7,7 @@
 mod common;
 
 use common::{gearwear, ok, stderr};
+use gearwear::io::input::InputError;
 use gearwear::study::dataset::parse_design;
 use gearwear::study::dataset::trajectory::run_trajectory;
 use gearwear::study::Model;
@@ -31,6 +32,14 @@ name = "rough"
 [condition.case.surface]
 roughness_table_rms_um = [0.42, 0.38, 0.30]
 "#;
+
+/// The case-file reader of a design that names no case file (never called).
+fn no_file(path: &str) -> Result<String, InputError> {
+    Err(InputError {
+        path: path.into(),
+        reason: "none".into(),
+    })
+}
 
 fn write_design(dir: &Path, text: &str) -> String {
     std::fs::create_dir_all(dir).unwrap();
@@ -128,7 +137,7 @@ fn every_label_is_the_value_of_the_study_that_produced_it() {
     let design = write_design(dir.path(), DESIGN);
     let out = dir.path().join("ds");
     dataset(&design, &out, &[]);
-    let d = parse_design(DESIGN, "design.toml", &|_| Err("none".into())).unwrap();
+    let d = parse_design(DESIGN, "design.toml", &no_file).unwrap();
     let (h, rows) = common::read_csv(&out.join("index.csv"));
     let col = |name: &str| h.iter().position(|x| x == name).unwrap();
     assert_eq!(rows.len(), 24);
@@ -262,7 +271,7 @@ fn per_tooth_wear_labels_are_each_tooths_own_wear_between_updates() {
     let design = write_design(dir.path(), TEETH_DESIGN);
     let out = dir.path().join("ds");
     dataset(&design, &out, &[]);
-    let d = parse_design(TEETH_DESIGN, "design.toml", &|_| Err("none".into())).unwrap();
+    let d = parse_design(TEETH_DESIGN, "design.toml", &no_file).unwrap();
     // The wear loop run again independently; between two of its updates each grid point
     // of each tooth wears linearly in cycles (the loop holds the per-cycle wear of the
     // earlier update for the block, paper eq. 17), so the state at c cycles is the

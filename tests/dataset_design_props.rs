@@ -4,6 +4,7 @@
 //! has finite axes in their ranges, a record count within 2^53, and finite budget and
 //! trajectory-size estimates.
 
+use gearwear::io::input::InputError;
 use gearwear::study::budget::{estimate_dataset, trajectory_bytes, RecordSize};
 use gearwear::study::dataset::design::MAX_RECORDS;
 use gearwear::study::dataset::plan::{plan_of, Shard};
@@ -85,7 +86,7 @@ proptest! {
         text in design_text(),
         case_text in prop_oneof![Just(String::new()), "[ -~\n]{0,60}"],
     ) {
-        let read = |_: &str| -> Result<String, String> { Ok(case_text.clone()) };
+        let read = |_: &str| -> Result<String, InputError> { Ok(case_text.clone()) };
         if let Ok(d) = parse_design(&text, "design.toml", &read) {
             let plan = plan_of(&d);
             let records = [plan.conditions, plan.states, plan.speeds, plan.loads, plan.realisations]

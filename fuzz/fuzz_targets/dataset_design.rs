@@ -8,6 +8,7 @@
 
 use gearwear::study::budget::{estimate_dataset, trajectory_bytes, RecordSize};
 use gearwear::study::dataset::design::MAX_RECORDS;
+use gearwear::io::input::InputError;
 use gearwear::study::dataset::parse_design;
 use gearwear::study::dataset::plan::{plan_of, Shard};
 use libfuzzer_sys::fuzz_target;
@@ -17,7 +18,7 @@ fuzz_target!(|data: &[u8]| {
     let mut chunks = text.splitn(2, '\0');
     let design = chunks.next().unwrap_or("").to_owned();
     let case = chunks.next().unwrap_or("").to_owned();
-    let read = |_: &str| -> Result<String, String> { Ok(case.clone()) };
+    let read = |_: &str| -> Result<String, InputError> { Ok(case.clone()) };
     if let Ok(d) = parse_design(&design, "design.toml", &read) {
         assert!(plan_of(&d).records() as u64 <= MAX_RECORDS);
         for c in &d.conditions {

@@ -19,7 +19,7 @@ pub fn current() -> Result<Arc<rayon::ThreadPool>, String> {
     if let Some(p) = g.as_ref() {
         return Ok(p.clone());
     }
-    let (pool, _note) = gearwear::io::runtime::thread_pool()?;
+    let (pool, _note) = gearwear::io::runtime::thread_pool().map_err(|e| e.to_string())?;
     let p = Arc::new(pool);
     *g = Some(p.clone());
     Ok(p)

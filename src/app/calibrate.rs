@@ -64,15 +64,18 @@ impl Default for CalibrationOptions {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct CalibrateJob {
+    /// The case calibrated (its `[calibration]` table gives the priors).
     pub case: Case,
     /// Observations: `cycles`, observed quantities (names of the updates table), optional
     /// `sigma_<name>` columns (docs/PROGNOSTICS.md).
     pub observations: TableSource,
+    /// The sampler's settings (samples, walkers, steps, seed, check runs).
     pub options: CalibrationOptions,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

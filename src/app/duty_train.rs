@@ -105,7 +105,7 @@ fn starting_runs(
         let by_bin: Vec<Vec<WearRun>> = logs.chunks(nk).map(|c| c.to_vec()).collect();
         let run = from_logs(ts, *m, &by_bin)
             .and_then(|run| verify(ts, &run).map(|_| run))
-            .map_err(|e| refused(dir, *m, &e))?;
+            .map_err(|e| refused(dir, *m, &e.to_string()))?;
         starts.push(run);
     }
     if !found {

@@ -31,12 +31,15 @@ pub enum TransmissionErrorSource {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct DynamicsJob {
+    /// The case whose steady state is computed.
     pub case: Case,
+    /// A measured static transmission error replacing the model's (`None`: the model's).
     pub transmission_error: Option<TransmissionErrorSource>,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

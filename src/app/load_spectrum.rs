@@ -26,6 +26,8 @@ use std::path::PathBuf;
 pub struct LoadSpectrumJob {
     /// CSV of `time_s`, `torque_nm`, `input_speed_hz` (or `input_speed_rpm`).
     pub history: TableSource,
+    /// The load-duration distribution's classes and counting rules (torque and speed
+    /// classes, interpolation, the torque of each bin).
     pub settings: LddSettings,
     /// Shaft the history's torque was measured on (the spectrum's `torque_shaft`).
     pub torque_shaft: TorqueShaft,

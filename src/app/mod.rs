@@ -101,6 +101,7 @@ pub trait Job: Send + Sync {
 /// What a job hands back: its artifacts (summary, tables, figures, documents, headline),
 /// where they were published, and whether the result is incomplete.
 pub struct Outcome {
+    /// The summary, tables, figures, documents and headline of the study.
     pub artifacts: Artifacts,
     /// The output folder, when the job was given one.
     pub published: Option<PathBuf>,

@@ -57,6 +57,8 @@ pub struct PredictOptions {
     pub samples: Option<usize>,
     /// Cycle counts of the fan charts, from 0 to the horizon.
     pub grid_points: usize,
+    /// The forward model of each sample's wear: the surrogate or one true wear study per
+    /// sample.
     pub forward: ForwardModel,
     /// True wear runs to check the surrogate against (at the 5/50/95 % of the life).
     pub check_runs: usize,
@@ -91,9 +93,11 @@ impl PredictOptions {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct PredictJob {
+    /// The case predicted (its prior, when no posterior is given).
     pub case: Case,
     /// Posterior samples (from a calibration); `None` samples the case's prior.
     pub posterior: Option<TableSource>,
+    /// What to predict and how (limit, horizon, ensemble, forward model).
     pub options: PredictOptions,
     /// A change of duty: a future load spectrum from some cycle count on (default: none).
     pub future: FutureInput,
@@ -103,6 +107,7 @@ pub struct PredictJob {
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures (a shard draws none), checked when the job
     /// starts.
@@ -111,7 +116,7 @@ pub struct PredictJob {
 
 /// What makes shards parts of one prediction.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Identity {
+pub(crate) struct Identity {
     pub settings: PredictSettings,
     pub forward: String,
     /// SHA-256 of the posterior samples' CSV text, or "prior".
@@ -125,7 +130,7 @@ pub struct Identity {
 /// What a shard writes (`predict_shard_I_of_N.json`), and what a whole prediction is
 /// built from.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct ShardFile {
+pub(crate) struct ShardFile {
     pub identity: Identity,
     pub shard: (usize, usize),
     /// `RunMetadata` of the run, as JSON.
@@ -447,7 +452,7 @@ fn prediction_summary(
 
 /// Every output of a prediction from its outcomes (`missing`: how many sample indices no
 /// shard had, and the first of them), its figures in the formats and size of `figures`.
-pub fn prediction_artifacts(
+pub(crate) fn prediction_artifacts(
     f: ShardFile,
     missing: (usize, Vec<usize>),
     figures: FigureOutput,

@@ -24,6 +24,7 @@ pub enum SpectrumSource {
 /// A future duty as given (see the module docs).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct FutureInput {
+    /// The future load spectrum (`None`: the case's own duty to the end).
     pub spectrum: Option<SpectrumSource>,
     /// Pinion cycles from new teeth at which the future spectrum takes over.
     pub from_cycles: Option<f64>,

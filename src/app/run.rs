@@ -20,6 +20,7 @@ use std::path::PathBuf;
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct RunJob {
+    /// The case whose full paper study runs.
     pub case: Case,
     /// Output folder (checkpoints, then the results); `None` writes nothing.
     pub out: Option<PathBuf>,
@@ -27,6 +28,7 @@ pub struct RunJob {
     pub replace: bool,
     /// Continue the wear studies from the checkpoints in the output folder.
     pub resume: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

@@ -58,12 +58,16 @@ fn refuse_train_transient(case: &Case) -> Result<(), JobError> {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct SignalsJob {
+    /// The case whose signals are computed.
     pub case: Case,
+    /// The transfer path from the mesh to the sensors (`None`: the generic housing path,
+    /// `TransferPath::generic_housing`).
     pub transfer_path: Option<TransferPathSource>,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

@@ -24,11 +24,13 @@ use std::path::PathBuf;
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct StiffnessJob {
+    /// The case whose mesh stiffness is computed.
     pub case: Case,
     /// Output folder; `None` writes nothing.
     pub out: Option<PathBuf>,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

@@ -78,7 +78,7 @@ pub fn starting_runs(
         };
         let run = train_run_from_logs(model, train, *m, &logs)
             .and_then(|run| verify_train_resumable(model, train, &run).map(|_| run))
-            .map_err(|e| refused(dir, *m, stages, &e))?;
+            .map_err(|e| refused(dir, *m, stages, &e.to_string()))?;
         starts.push(run);
     }
     if !found {

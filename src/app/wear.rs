@@ -19,6 +19,7 @@ use std::path::PathBuf;
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct WearJob {
+    /// The case whose wear is computed.
     pub case: Case,
     /// The modes to run, in order (the two run in parallel).
     pub modes: Vec<WearMode>,
@@ -28,6 +29,7 @@ pub struct WearJob {
     pub resume: bool,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
+    /// The run budget (`None`: no check).
     pub budget: Option<Budget>,
     /// The formats and size of the figures, checked when the job starts.
     pub figures: FigureRequest,

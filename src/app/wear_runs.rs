@@ -13,7 +13,9 @@ use crate::study::Model;
 
 /// The wear runs of a job, and its output folder still to publish.
 pub struct Runs<T> {
+    /// The wear runs (one per mode, or a train's).
     pub runs: T,
+    /// The output folder, its results not yet published (`None`: nothing written).
     pub out: Option<crate::io::OutputDir>,
 }
 

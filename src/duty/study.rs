@@ -67,7 +67,7 @@ pub fn run_duty_study(
 }
 
 /// The life table of `sm`'s case in `mode`: runs to `load_spectrum.life_wear_limit_um`
-/// under the spectrum and at each bin alone (capped at [`LIFE_CYCLE_CAP`]); what `run`
+/// under the spectrum and at each bin alone (capped at `LIFE_CYCLE_CAP`); what `run`
 /// and `wear` both report.
 pub fn spectrum_life(sm: &SpectrumModel, mode: WearMode) -> anyhow::Result<LifeTable> {
     let limit = sm

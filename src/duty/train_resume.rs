@@ -21,7 +21,7 @@ use super::train::{
 };
 use crate::study::train_wear::{new_teeth, TrainUpdate};
 use crate::study::train_wear_check::record_problem;
-use crate::study::wear_check::{random_sample, MAX_RECOMPUTED};
+use crate::study::wear_check::{random_sample, StoredRunError, MAX_RECOMPUTED};
 use crate::study::wear_loop::{start_of, UpdateRecord, WearMode, WearRun};
 
 /// The run of `mode` whose logs are `logs` (`logs[i][k]`: bin i, mesh k), replayed and
@@ -30,12 +30,12 @@ pub fn from_logs(
     ts: &TrainSpectrum,
     mode: WearMode,
     logs: &[Vec<WearRun>],
-) -> Result<TrainSpectrumRun, String> {
+) -> Result<TrainSpectrumRun, StoredRunError> {
     let (nb, nk) = (ts.trains.len(), ts.meshes());
     if logs.len() != nb || logs.iter().any(|l| l.len() != nk) {
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "the logs are not one per bin ({nb}) and stage ({nk})"
-        ));
+        )));
     }
     let n = logs
         .iter()
@@ -46,12 +46,12 @@ pub fn from_logs(
     let mut run = TrainSpectrumRun::new(mode, ts.sm.shares.clone());
     for j in 0..n {
         let at = |i: usize, k: usize, what: &str| {
-            format!(
+            StoredRunError::Mismatch(format!(
                 "update {j} (line {}), bin {}, stage {}: {what}",
                 j + 2,
                 i + 1,
                 k + 1
-            )
+            ))
         };
         let (wears, mut next) = match run.records.last() {
             None => {
@@ -70,10 +70,10 @@ pub fn from_logs(
             Some(prev) => next_spectrum_block(ts, prev, &run.shares)
                 .map(|(block, added)| (block.wears, added))
                 .ok_or_else(|| {
-                    format!(
+                    StoredRunError::Mismatch(format!(
                         "update {j} (line {}): the run had reached wear.total_cycles at the update before it",
                         j + 2
-                    )
+                    ))
                 })?,
         };
         for (i, bin) in logs.iter().enumerate() {
@@ -104,7 +104,7 @@ pub fn from_logs(
 
 /// Recompute updates of `run` (replayed by [`from_logs`]) and require them equal to the
 /// stored ones (see the module docs); the error names the first that is not.
-pub fn verify(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Result<(), String> {
+pub fn verify(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Result<(), StoredRunError> {
     let n = run.records.len();
     let json = |r: &UpdateRecord| serde_json::to_string(r).ok();
     for j in random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)]) {
@@ -113,7 +113,11 @@ pub fn verify(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Result<(), String> 
             None => first_record(ts, run.mode).map_err(|e| e.to_string()),
             Some(prev) => {
                 let (block, mut next) = next_spectrum_block(ts, prev, &run.shares)
-                    .ok_or_else(|| format!("update {j} (line {line}): no block leads to it"))?;
+                    .ok_or_else(|| {
+                        StoredRunError::Mismatch(format!(
+                            "update {j} (line {line}): no block leads to it"
+                        ))
+                    })?;
                 let starts: Vec<Option<Vec<f64>>> =
                     prev.bins.iter().map(|b| start_of(&b.meshes[0])).collect();
                 respond_bins(ts, run.mode, &block, &starts)
@@ -125,7 +129,7 @@ pub fn verify(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Result<(), String> 
             }
         }
         .map_err(|e| {
-            format!("update {j} (line {line}): this case's model makes no such update when it is recomputed from the update before it ({e}): the records are not this case's")
+            StoredRunError::Mismatch(format!("update {j} (line {line}): this case's model makes no such update when it is recomputed from the update before it ({e}): the records are not this case's"))
         })?;
         for (i, (a, b)) in again.bins.iter().zip(&run.records[j].bins).enumerate() {
             if let Some(k) = a
@@ -134,11 +138,11 @@ pub fn verify(ts: &TrainSpectrum, run: &TrainSpectrumRun) -> Result<(), String> 
                 .zip(&b.meshes)
                 .position(|(x, y)| json(x) != json(y))
             {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "update {j} (line {line}), bin {}, stage {}: not what this case's model computes from the update before it: the records are not this case's, or were edited",
                     i + 1,
                     k + 1
-                ));
+                )));
             }
         }
     }

@@ -13,13 +13,18 @@
 /// cores only add memory (a model per case in flight) and contention.
 pub const MAX_THREADS_PER_CORE: usize = 8;
 
+/// Not even one thread could be started (the system's reason).
+#[derive(Debug, thiserror::Error)]
+#[error("no thread could be started ({0}): raise the limit on processes (ulimit -u)")]
+pub struct NoThreadError(pub rayon::ThreadPoolBuildError);
+
 /// Build the thread pool a command runs in (see the module docs): a pool of its own, not
 /// rayon's global one, because a failed global build cannot be retried (rayon then
 /// panics at the first parallel loop); work run through `ThreadPool::install` or
 /// `ThreadPool::spawn` uses this pool for every parallel loop inside. Returns the pool and
 /// a note for the user when it has fewer threads than asked, or when `RAYON_NUM_THREADS`
 /// was not understood; an error when not even one thread can be started.
-pub fn thread_pool() -> Result<(rayon::ThreadPool, Option<String>), String> {
+pub fn thread_pool() -> Result<(rayon::ThreadPool, Option<String>), NoThreadError> {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let cap = cores.saturating_mul(MAX_THREADS_PER_CORE);
     let mut notes = Vec::new();
@@ -54,11 +59,7 @@ pub fn thread_pool() -> Result<(rayon::ThreadPool, Option<String>), String> {
                 }
                 return Ok((pool, (!notes.is_empty()).then(|| notes.join("; "))));
             }
-            Err(e) if n == 1 => {
-                return Err(format!(
-                    "no thread could be started ({e}): raise the limit on processes (ulimit -u)"
-                ))
-            }
+            Err(e) if n == 1 => return Err(NoThreadError(e)),
             Err(_) => {
                 // The threads of the failed attempt are ending; they count against the
                 // limit until they have.

@@ -25,15 +25,16 @@ pub const MAX_FRICTION_COEFFICIENT: f64 = 1.0;
 
 /// One contact along the path of contact at the nominal operating point.
 #[derive(Debug, Clone, Copy)]
-pub struct NominalContact {
-    pub rho1_m: f64,
+pub(crate) struct NominalContact {
+    /// The Hertzian band under the pair's share of the static mesh force.
     pub hertz: HertzContact,
+    /// The flanks' surface speeds at the nominal speeds.
     pub kinematics: SurfaceKinematics,
 }
 
 /// `n` + 1 contacts evenly along the path at the nominal load, shared between pairs by
 /// paper eq. (7) (equally when the contact ratio is 2 or more), and at the nominal speeds.
-pub fn nominal_contacts(case: &Case, pair: &GearPair, n: usize) -> Vec<NominalContact> {
+pub(crate) fn nominal_contacts(case: &Case, pair: &GearPair, n: usize) -> Vec<NominalContact> {
     let op = OperatingPoint::of(&case.operating, pair);
     let force = op.static_mesh_force_n;
     let e_star = effective_modulus_of(&case.materials);
@@ -48,7 +49,6 @@ pub fn nominal_contacts(case: &Case, pair: &GearPair, n: usize) -> Vec<NominalCo
                 1.0 / pair.contact_ratio.floor().max(1.0)
             };
             NominalContact {
-                rho1_m: rho1,
                 hertz: HertzContact::with_modulus(
                     force * share,
                     pair.face_width_m,
@@ -165,6 +165,7 @@ pub struct ResolvedValue {
     pub key: &'static str,
     /// The value used, in the key's unit.
     pub value: f64,
+    /// The key's unit.
     pub unit: &'static str,
     /// Whether it was derived from the geometry (`"derived"` in the case).
     pub derived: bool,
@@ -177,10 +178,12 @@ pub struct ResolvedValue {
 pub struct ResolvedParameters {
     /// Hub bores (mm), masses (kg) and polar inertias (kg m^2) of pinion and gear.
     pub values: Vec<ResolvedValue>,
+    /// Density of the gear blanks, kg/m^3.
     pub blank_density_kg_per_m3: f64,
     /// h_f = r_f / r_int and theta_f (rad) of pinion and gear in Sainsot's fit, when the
     /// fillet foundation is included.
     pub fillet_h_f: Option<[f64; 2]>,
+    /// theta_f of pinion and gear, rad (Sainsot's fit, with `fillet_h_f`).
     pub fillet_theta_f_rad: Option<[f64; 2]>,
 }
 
@@ -247,8 +250,10 @@ impl ResolvedParameters {
 /// model used where the case may leave them to the geometry, and the operating point.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Resolved {
+    /// The values resolved from the geometry.
     #[serde(flatten)]
     pub parameters: ResolvedParameters,
+    /// The nominal operating point (speeds, torques, static mesh force).
     pub operating_point: OperatingPoint,
 }
 

@@ -30,14 +30,17 @@ use crate::stiffness::face_load::{centre_of_pressure, peak_of};
 pub struct DynamicFaceLoad {
     /// Slice positions y_j across the face, m, and the face width b, m.
     pub positions_m: Vec<f64>,
+    /// Face width b, m.
     pub face_width_m: f64,
     /// The gap g_j at each slice, m (smallest 0).
     pub gaps_m: Vec<f64>,
     /// Time mean and largest load per unit face width at each slice, N/m.
     pub mean_n_per_m: Vec<f64>,
+    /// Largest load per unit face width over the samples at each slice, N/m.
     pub max_n_per_m: Vec<f64>,
     /// The samples' times, s, and the tilting moment at each, N m.
     pub time_s: Vec<f64>,
+    /// Tilting moment at each sample, N m.
     pub moment_nm: Vec<f64>,
     /// Largest max_j w_j over the samples, N/m.
     pub peak_n_per_m: f64,

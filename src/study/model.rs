@@ -27,15 +27,25 @@ static NO_ERROR: ExternalError = ExternalError::NONE;
 
 /// Everything a solver needs, built once per case.
 pub struct Model {
+    /// The case as loaded.
     pub case: Case,
+    /// The pair's geometry.
     pub pair: GearPair,
+    /// Young's moduli and Poisson's ratios of the two gears.
     pub elastic: ElasticPair,
+    /// The mesh stiffness, built once.
     pub mesh: MeshStiffness,
+    /// Masses, inertias, stiffness, damping and operating point of the dynamic model.
     pub params: DynamicParams,
+    /// The case's friction model.
     pub friction: Friction,
+    /// Composite RMS roughness against the deepest pinion wear (paper section 4.1).
     pub roughness: RoughnessLaw,
+    /// Points along the path of contact where wear is computed.
     pub grid: ProfileGrid,
+    /// Numerical settings of a steady-state evaluation.
     pub settings: SteadyStateSettings,
+    /// Effective (Hertz) modulus E* of the pair, Pa.
     pub effective_modulus_pa: f64,
     /// Where the pairs touch (`contact.path`; a train: its first stage's).
     pub contact: ContactPath,

@@ -19,17 +19,26 @@ pub const PAPER_WEAR_STATES_UM: [f64; 3] = [0.1, 0.5, 1.0];
 
 /// The dynamic response at one wear state.
 pub struct WearStateResult {
+    /// The wear state: the deepest pinion wear, µm (one of [`PAPER_WEAR_STATES_UM`]; the
+    /// profile is scaled to it).
     pub max_wear_um: f64,
+    /// Composite RMS roughness at that wear, µm.
     pub roughness_um: f64,
+    /// The wear profiles at the state.
     pub wear: WearState,
+    /// The steady-state dynamic response on them.
     pub response: DynamicResponse,
+    /// Its headline numbers.
     pub summary: ResponseSummary,
 }
 
 /// Everything of the paper's section 4.
 pub struct PaperStudy {
+    /// The wear study with the dynamic solver.
     pub dynamic: WearRun,
+    /// The wear study with the quasi-static solver.
     pub quasi_static: WearRun,
+    /// The dynamic response at each of the paper's wear states.
     pub wear_states: Vec<WearStateResult>,
 }
 

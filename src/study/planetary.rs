@@ -135,7 +135,7 @@ impl PlanetaryStudy {
     }
 
     /// Smallest and largest total stiffness of the ring mesh over a mesh period, N/m,
-    /// sampled at [`RING_SAMPLES`] planet angles.
+    /// sampled at `RING_SAMPLES` planet angles.
     pub fn ring_extremes_n_per_m(&self) -> (f64, f64) {
         let period = 2.0 * std::f64::consts::PI / self.set.teeth_planet() as f64;
         (0..RING_SAMPLES)

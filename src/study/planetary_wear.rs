@@ -30,7 +30,9 @@ use super::planetary_dynamics::PlanetaryDynamics;
 use crate::config::case::Case;
 use crate::contact::hertz::{effective_modulus_pa, HertzContact};
 use crate::dynamics::excitation::PairGap;
-use crate::dynamics::planetary_steady::{solve_planetary_steady_state, PlanetarySettings};
+use crate::dynamics::planetary_steady::{
+    solve_planetary_steady_state, PlanetaryDynamicsError, PlanetarySettings,
+};
 use crate::dynamics::response::{sorted_by_rho1, PathSample};
 use crate::geometry::ProfileGrid;
 use crate::wear::{per_cycle_wear, WearIncrement, WearState};
@@ -54,6 +56,17 @@ pub struct PlanetaryWearModel {
     pub pinion_cycles_per_input: [f64; 2],
     /// Archard coefficient k, m^2/N.
     pub coefficient_m2_per_n: f64,
+}
+
+/// Why the set's force history could not be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ForceHistoryError {
+    /// The stiffness matrix of the quasi-static equilibrium is singular at some instant.
+    #[error("the quasi-static equilibrium of the set is singular (a planet lost both its meshes)")]
+    Singular,
+    /// The dynamic steady state was not found (after the retry with tighter settings).
+    #[error(transparent)]
+    Dynamics(#[from] PlanetaryDynamicsError),
 }
 
 /// The set's force history over a steady mesh period: sample times in mesh cycles and,
@@ -144,7 +157,11 @@ impl PlanetaryWearModel {
     /// integration tolerance, twice the samples and periods, as `wear_loop::solve_by`) or
     /// quasi-static at `numerics.steps_per_mesh_period` instants of the mesh period (at
     /// least 8, as the dynamic model samples it: `study::planetary_dynamics`).
-    pub fn force_history(&self, dynamic: bool, gaps: &[PairGap]) -> Result<ForceHistory, String> {
+    pub fn force_history(
+        &self,
+        dynamic: bool,
+        gaps: &[PairGap],
+    ) -> Result<ForceHistory, ForceHistoryError> {
         let mut sys = self.dynamics.model.clone();
         if gaps.iter().any(|g| !g.is_zero()) {
             sys.set_wear_gaps(gaps.to_vec());
@@ -157,7 +174,7 @@ impl PlanetaryWearModel {
                 .iter()
                 .map(|c| sys.quasi_static_mesh_forces(*c))
                 .collect::<Option<Vec<_>>>()
-                .ok_or("the quasi-static equilibrium of the set is singular (a planet lost both its meshes)")?;
+                .ok_or(ForceHistoryError::Singular)?;
             return Ok(ForceHistory { cycles, forces_n });
         }
         let tight = PlanetarySettings {
@@ -167,8 +184,7 @@ impl PlanetaryWearModel {
             ..s
         };
         let r = solve_planetary_steady_state(&mut sys, &s)
-            .or_else(|_| solve_planetary_steady_state(&mut sys, &tight))
-            .map_err(|e| e.to_string())?;
+            .or_else(|_| solve_planetary_steady_state(&mut sys, &tight))?;
         let f_m = sys.mesh_frequency_hz;
         Ok(ForceHistory {
             cycles: r.times_s.iter().map(|t| t * f_m).collect(),

@@ -90,7 +90,7 @@ pub fn update_of(
     let gaps = wear_gaps(model, &wears);
     let h = model
         .force_history(mode == WearMode::Dynamic, &gaps)
-        .map_err(|e| (e, StopKind::Numerical))?;
+        .map_err(|e| (e.to_string(), StopKind::Numerical))?;
     let samples = h.forces_n.len().max(1) as f64;
     // A force that is not finite would pass as contact and wear nothing (the Hertz
     // contact zeroes it): the response is refused instead.

@@ -16,9 +16,11 @@ use crate::wear::WearState;
 /// A record and what was computed from it.
 #[derive(Debug, Clone)]
 pub struct SignalRecord {
+    /// Shaft speeds and teeth of the pair recorded.
     pub kinematics: Kinematics,
     /// The record as written: noise included.
     pub record: Record,
+    /// The analysis of each channel.
     pub analysis: Vec<ChannelAnalysis>,
     /// Headline numbers of the steady state (at the starting speed of a transient).
     pub response: ResponseSummary,

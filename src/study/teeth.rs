@@ -32,11 +32,15 @@ use worn::{WornFlanks, WornTables};
 /// The teeth of a case, before wear (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ToothInputs {
+    /// Each pinion tooth's flank (removed material, errors), tooth order.
     pub pinion: Vec<ToothFlank>,
+    /// Each gear tooth's flank, tooth order.
     pub gear: Vec<ToothFlank>,
+    /// Run-out of pinion and gear.
     pub runout: [Runout; 2],
     /// What each gear's teeth were given, for reports.
     pub errors: [GearErrors; 2],
+    /// The tooth faults of the case.
     pub faults: Vec<ToothFault>,
     rho_start_m: f64,
     spacing_m: f64,

@@ -26,8 +26,11 @@ pub struct Stage {
     /// The stage as a single-pair case: its `[gear]` and `[dynamics]` resolved from the
     /// stage's keys, its pinion's speed and torque as `[operating]` (on its pinion).
     pub case: Case,
+    /// The stage's pair geometry.
     pub pair: GearPair,
+    /// The stage's mesh stiffness.
     pub mesh: MeshStiffness,
+    /// Points along the stage's path of contact where wear is computed.
     pub grid: ProfileGrid,
     /// The stage's masses and inertias (with `"derived"` resolved) and bearings.
     pub lumped: DynamicsSection<f64>,
@@ -37,8 +40,12 @@ pub struct Stage {
 
 /// A train's model objects (see the module docs).
 pub struct TrainModel {
+    /// The stages, in order (stage 1's pinion on the input shaft).
     pub stages: Vec<Stage>,
+    /// The assembled train: its elements, coordinates and constant matrices.
     pub assembly: Assembly,
+    /// The train's operating point: every shaft's speed and torque, every mesh's frequency
+    /// and force.
     pub operating: TrainOperatingPoint,
 }
 

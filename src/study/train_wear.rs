@@ -48,7 +48,9 @@ pub struct TrainUpdate {
 /// A train's wear run: its mode and every update so far.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrainWearRun {
+    /// The solver feeding the wear model.
     pub mode: WearMode,
+    /// The updates so far, the first on new teeth.
     pub updates: Vec<TrainUpdate>,
     /// Set when the run stopped before the case's total cycles.
     pub stopped: Option<WearStop>,

@@ -26,6 +26,47 @@ use super::train_wear::{
 use super::wear_check::{random_sample, MAX_RECOMPUTED};
 use super::wear_loop::{UpdateRecord, WearMode, WearRun};
 
+/// Why a train's mesh logs are not a run this case's model computes (see the module docs).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TrainRunError {
+    /// Not one log per stage.
+    #[error("{logs} mesh logs for a train of {stages} stages")]
+    StageCount {
+        /// Logs given.
+        logs: usize,
+        /// Stages of the train.
+        stages: usize,
+    },
+    /// An update that is not what the model computes from the update before it.
+    #[error(
+        "update {update} (line {line}){}: {problem}",
+        stage.map_or(String::new(), |s| format!(", stage {s}"))
+    )]
+    Update {
+        /// The update, 0-based (0: new teeth).
+        update: usize,
+        /// Its line in the logs (the header is line 1).
+        line: usize,
+        /// The stage (1-based) whose record is at fault; `None`: the update as a whole.
+        stage: Option<usize>,
+        /// What is wrong.
+        problem: String,
+    },
+}
+
+impl TrainRunError {
+    /// Update `update` (0-based) is wrong, in the record of `stage` (0-based; `None`: the
+    /// update as a whole): its line is `update` + 2 (the header is line 1).
+    fn update(update: usize, stage: Option<usize>, problem: impl Into<String>) -> Self {
+        TrainRunError::Update {
+            update,
+            line: update + 2,
+            stage: stage.map(|m| m + 1),
+            problem: problem.into(),
+        }
+    }
+}
+
 /// What is wrong with the shape of mesh `m`'s record `r` (see the module docs), if anything.
 pub(crate) fn record_problem(
     model: &Model,
@@ -78,23 +119,21 @@ pub fn train_run_from_logs(
     train: &TrainModel,
     mode: WearMode,
     logs: &[WearRun],
-) -> Result<TrainWearRun, String> {
+) -> Result<TrainWearRun, TrainRunError> {
     if logs.len() != train.stages.len() {
-        return Err(format!(
-            "{} mesh logs for a train of {} stages",
-            logs.len(),
-            train.stages.len()
-        ));
+        return Err(TrainRunError::StageCount {
+            logs: logs.len(),
+            stages: train.stages.len(),
+        });
     }
     let n = logs.iter().map(|l| l.records.len()).min().unwrap_or(0);
     let mut run = TrainWearRun::new(mode);
     for j in 0..n {
-        let at =
-            |m: usize, what: &str| format!("update {j} (line {}), stage {}: {what}", j + 2, m + 1);
+        let at = |m: usize, what: String| TrainRunError::update(j, Some(m), what);
         let meshes: Vec<UpdateRecord> = logs.iter().map(|l| l.records[j].clone()).collect();
         for (m, r) in meshes.iter().enumerate() {
             if let Some(p) = record_problem(model, train, mode, m, r) {
-                return Err(at(m, &p));
+                return Err(at(m, p));
             }
         }
         let block = match run.updates.last() {
@@ -104,9 +143,10 @@ pub fn train_run_from_logs(
                 wears: new_teeth(train),
             },
             Some(prev) => next_block(model, train, prev).ok_or_else(|| {
-                format!(
-                    "update {j} (line {}): the run had reached wear.total_cycles at the update before it",
-                    j + 2
+                TrainRunError::update(
+                    j,
+                    None,
+                    "the run had reached wear.total_cycles at the update before it",
                 )
             })?,
         };
@@ -114,7 +154,7 @@ pub fn train_run_from_logs(
             if r.wear != *w {
                 return Err(at(
                     m,
-                    &if j == 0 {
+                    if j == 0 {
                         "its wear is not the new teeth at cycle 0".to_string()
                     } else {
                         format!(
@@ -140,17 +180,18 @@ pub fn verify_train_resumable(
     model: &Model,
     train: &TrainModel,
     run: &TrainWearRun,
-) -> Result<(), String> {
+) -> Result<(), TrainRunError> {
     let n = run.updates.len();
     for i in random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)]) {
         let prev = i.checked_sub(1).map(|j| &run.updates[j]);
         let stored = &run.updates[i];
-        let line = i + 2;
         let again = match next_train_update(model, train, run.mode, prev) {
             Ok(TrainNext::Update(u)) => *u,
             Ok(_) | Err(_) => {
-                return Err(format!(
-                    "update {i} (line {line}): this case's model makes no such update when it is recomputed from the update before it: the records are not this case's"
+                return Err(TrainRunError::update(
+                    i,
+                    None,
+                    "this case's model makes no such update when it is recomputed from the update before it: the records are not this case's",
                 ))
             }
         };
@@ -162,18 +203,19 @@ pub fn verify_train_resumable(
             .position(|(a, b)| json(a) != json(b));
         if let Some(m) = differs {
             let (a, b) = (&again.meshes[m], &stored.meshes[m]);
-            return Err(format!(
-                "update {i} (line {line}), stage {}: not what this case's model computes from the update before it, the whole train recomputed (recomputed: max pinion wear rate {:.6e} m per cycle, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the records are not this case's, or were edited",
-                m + 1,
+            return Err(TrainRunError::update(i, Some(m), format!(
+                "not what this case's model computes from the update before it, the whole train recomputed (recomputed: max pinion wear rate {:.6e} m per cycle, mean mesh force {:.6} N; stored: {:.6e} m, {:.6} N): the records are not this case's, or were edited",
                 a.max_increment_pinion_m(),
                 a.summary.mesh_force_mean_n,
                 b.max_increment_pinion_m(),
                 b.summary.mesh_force_mean_n,
-            ));
+            )));
         }
         if (again.input_cycles, again.limited_by) != (stored.input_cycles, stored.limited_by) {
-            return Err(format!(
-                "update {i} (line {line}): its block is not the one this case's model takes"
+            return Err(TrainRunError::update(
+                i,
+                None,
+                "its block is not the one this case's model takes",
             ));
         }
     }

@@ -35,11 +35,14 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum WearMode {
+    /// The steady-state dynamic response (the paper's dynamic wear model).
     Dynamic,
+    /// The quasi-static load sharing, no dynamics (the paper's comparison).
     QuasiStatic,
 }
 
 impl WearMode {
+    /// The mode's name in files and columns (`dynamic`, `quasi_static`).
     pub fn name(&self) -> &'static str {
         match self {
             WearMode::Dynamic => "dynamic",
@@ -60,10 +63,15 @@ impl WearMode {
 /// wear that response gives (used for the next block).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct UpdateRecord {
+    /// The wear state reached.
     pub wear: WearState,
+    /// Composite RMS roughness at that state, µm.
     pub roughness_um: f64,
+    /// Headline numbers of the response on it.
     pub summary: ResponseSummary,
+    /// Wear depth per pinion cycle at each pinion grid point, m (paper eq. 14-17).
     pub increment_pinion_m: Vec<f64>,
+    /// Wear depth per pinion cycle at each gear grid point, m (paper eq. 14-17).
     pub increment_gear_m: Vec<f64>,
     /// Per-tooth increments of a tooth-resolved mesh (the two above are their means).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -71,6 +79,7 @@ pub struct UpdateRecord {
     /// Mesh force and pair load along the path (rho1, load) for the wear-depth figures
     /// (with a tooth-resolved mesh: the mean load over the engagements at the grid points).
     pub path_rho1_m: Vec<f64>,
+    /// Pair load at each of those points, N.
     pub path_load_n: Vec<f64>,
     /// Periodic state (SI, `dynamics::model` coordinates) at a mesh-period boundary of the
     /// dynamic response: where the next update's search starts. Absent for the
@@ -170,14 +179,18 @@ pub enum StopKind {
 pub struct WearStop {
     /// Cycles of the update that could not be kept (the last record is before it).
     pub cycles: f64,
+    /// Why it stopped.
     pub kind: StopKind,
+    /// The stop in words.
     pub reason: String,
 }
 
 /// A wear run: its mode and every update so far.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct WearRun {
+    /// The solver feeding the wear model.
     pub mode: WearMode,
+    /// Every update so far, the first on new teeth.
     pub records: Vec<UpdateRecord>,
     /// Set when the run stopped before the case's total cycles.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -185,6 +198,7 @@ pub struct WearRun {
 }
 
 impl WearRun {
+    /// A run of mode `mode` with no update yet.
     pub fn new(mode: WearMode) -> Self {
         Self {
             mode,
@@ -193,18 +207,22 @@ impl WearRun {
         }
     }
 
+    /// Pinion cycles of each update.
     pub fn cycles(&self) -> Vec<f64> {
         self.records.iter().map(|r| r.wear.cycles).collect()
     }
 
+    /// Deepest pinion wear of each update, m.
     pub fn max_wear_pinion_m(&self) -> Vec<f64> {
         self.records.iter().map(|r| r.wear.max_pinion_m()).collect()
     }
 
+    /// Deepest gear wear of each update, m.
     pub fn max_wear_gear_m(&self) -> Vec<f64> {
         self.records.iter().map(|r| r.wear.max_gear_m()).collect()
     }
 
+    /// The last update, if any.
     pub fn last(&self) -> Option<&UpdateRecord> {
         self.records.last()
     }
@@ -336,7 +354,7 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
 
 /// What the wear of one mesh with identical teeth needs: its profile grid, its tooth
 /// counts (pinion, gear) and the Archard coefficient k, m^2/N.
-pub struct MeshWearParts<'a> {
+pub(crate) struct MeshWearParts<'a> {
     pub grid: &'a ProfileGrid,
     pub teeth: [usize; 2],
     pub coefficient_m2_per_n: f64,
@@ -346,7 +364,7 @@ pub struct MeshWearParts<'a> {
 /// alike): the Archard increments per pinion cycle of its path (paper eq. 14-17), its
 /// pair load along the path, `summary`; the periodic end state is kept with mesh 0's
 /// record (the whole system's, one per update).
-pub fn mesh_record(
+pub(crate) fn mesh_record(
     parts: &MeshWearParts,
     m: usize,
     mode: WearMode,

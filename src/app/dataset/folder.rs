@@ -31,31 +31,34 @@ pub struct Sidecar {
     /// Hash of everything the dataset was generated from (design, cases, transfer path,
     /// program version): a record is reused only under the same key.
     pub dataset_key: String,
+    /// SHA-256 (hex) of the record's signal file: a record whose file no longer matches is
+    /// computed again.
     pub signal_sha256: String,
+    /// The record's labels (its row of the index).
     pub labels: RecordLabels,
 }
 
 /// A trajectory as kept in `state/`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct TrajectoryFile {
+pub(crate) struct TrajectoryFile {
     pub dataset_key: String,
     pub condition: String,
     pub trajectory: Trajectory,
 }
 
-pub fn sidecar_rel(id: usize) -> String {
+pub(crate) fn sidecar_rel(id: usize) -> String {
     format!("records/{id:07}.json")
 }
 
-pub fn csv_rel(id: usize) -> String {
+pub(crate) fn csv_rel(id: usize) -> String {
     format!("csv/{id:07}.csv")
 }
 
-pub fn trajectory_rel(condition: &str) -> String {
+pub(crate) fn trajectory_rel(condition: &str) -> String {
     format!("state/trajectory_{condition}.json")
 }
 
-pub const DATASET_REL: &str = "state/dataset.json";
+pub(crate) const DATASET_REL: &str = "state/dataset.json";
 
 /// Largest file of a dataset folder read back (a record's signal file, a trajectory):
 /// far above a record of the longest valid length.
@@ -170,7 +173,7 @@ pub fn make_folder(root: &Path, folder: &str) -> Result<(), OutputError> {
 }
 
 /// The bytes of `rel` in `root`, read without following a link or blocking, only from a
-/// regular single-link file of at most its cap ([`cap_of`]: a sidecar, the description,
+/// regular single-link file of at most its cap (`cap_of`: a sidecar, the description,
 /// any other file); None otherwise (a missing, foreign, oversized or unreadable file
 /// counts as absent: the record is recomputed).
 pub fn read_in(root: &Path, rel: &str) -> Option<Vec<u8>> {
@@ -242,7 +245,7 @@ pub fn sidecars(root: &Path) -> Vec<Sidecar> {
 }
 
 /// Trajectory files of `root`.
-pub fn trajectories(root: &Path) -> Vec<TrajectoryFile> {
+pub(crate) fn trajectories(root: &Path) -> Vec<TrajectoryFile> {
     let mut out: Vec<TrajectoryFile> = names_in(root, "state")
         .into_iter()
         .filter(|n| n.starts_with("trajectory_"))

@@ -20,8 +20,10 @@ use std::path::Path;
 /// Why the index and metadata could not be built.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {
+    /// Writing a file of the index failed.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// The description or a table could not be made (the message names the file).
     #[error("{0}")]
     Format(String),
 }
@@ -33,6 +35,7 @@ pub const MAX_MISSING_LISTED: usize = 1000;
 /// Records missing from a dataset's index: how many, and the first ids.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Missing {
+    /// How many records are missing.
     pub count: usize,
     /// The first [`MAX_MISSING_LISTED`] missing ids, ascending.
     pub listed: Vec<usize>,
@@ -42,13 +45,17 @@ pub struct Missing {
 pub struct IndexTables {
     /// Records indexed, and those missing from `0..total`.
     pub present: usize,
+    /// Records missing from `0..total`: the count and the first ids.
     pub missing: Missing,
     /// The index columns and each column's unit.
     pub columns: Vec<Column>,
+    /// Each index column's name and unit.
     pub units: Vec<(String, String)>,
     /// The channels' unit (the description's `record.channel_unit`).
     pub channel_unit: String,
+    /// `index.parquet`'s bytes (the units in its metadata, `gearwear.units`).
     pub parquet: Vec<u8>,
+    /// `index.csv`'s bytes.
     pub csv: Vec<u8>,
 }
 

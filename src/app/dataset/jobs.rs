@@ -93,8 +93,11 @@ impl DesignSource {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct DatasetJob {
+    /// The study design and where it was read from.
     pub design: DesignSource,
+    /// The part of the records to compute ([`Shard`]'s `index` of `count`; 1 of 1: all).
     pub shard: Shard,
+    /// Output folder (the dataset, or one shard of it).
     pub out: PathBuf,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,
@@ -228,9 +231,7 @@ pub fn load_design(
 ) -> Result<(DatasetDesign, Option<TransferPath>, Vec<u8>), JobError> {
     let read = |rel: &str| match &d.case_text {
         Some(text) => Ok(text.clone()),
-        None => {
-            read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES).map_err(|e| e.reason)
-        }
+        None => read_input_text(&d.folder.join(rel), "case file", MAX_CASE_BYTES),
     };
     let design = parse_design(&d.text, &d.name, &read).map_err(|m| {
         JobError::Input(m.into_iter().map(|m| Problem::of(Arg::Design, m)).collect())
@@ -264,7 +265,9 @@ fn read_transfer_path(p: &Path) -> Result<(TransferPath, Vec<u8>), JobError> {
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct DatasetMergeJob {
+    /// The dataset folders (shards) to join.
     pub inputs: Vec<PathBuf>,
+    /// Output folder of the merged dataset.
     pub out: PathBuf,
     /// Replace another command's results in the output folder (else refused).
     pub replace: bool,

@@ -13,8 +13,11 @@ use crate::study::dataset::DatasetDesign;
 /// that could not finish.
 #[derive(Debug, thiserror::Error)]
 pub enum DatasetError {
+    /// Bad input, one message per problem.
     #[error("{}", .0.join("\n"))]
     Input(Vec<String>),
+    /// A run that could not finish (a file that could not be written, a worker that
+    /// failed).
     #[error(transparent)]
     Failed(#[from] anyhow::Error),
 }
@@ -30,7 +33,7 @@ impl From<DatasetError> for JobError {
 
 /// What a dataset job did.
 #[derive(Debug, Clone, PartialEq)]
-pub struct DatasetOutcome {
+pub(crate) struct DatasetOutcome {
     pub total_records: usize,
     pub shard_records: usize,
     pub computed: usize,
@@ -45,10 +48,14 @@ pub struct DatasetOutcome {
 
 /// A design, its transfer path (read by the caller) and where it goes.
 pub struct DatasetRequest<'a> {
+    /// The design checked (its conditions, chain and record settings).
     pub design: &'a DatasetDesign,
+    /// The transfer path of the signal chain (`None`: the generic housing path,
+    /// `TransferPath::generic_housing`).
     pub path: Option<TransferPath>,
     /// Bytes of the transfer-path file (part of the dataset key).
     pub path_bytes: Vec<u8>,
+    /// The part of the records this step computes.
     pub shard: Shard,
     /// The formats and size of the dataset's figure.
     pub figures: FigureOutput,

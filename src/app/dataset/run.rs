@@ -31,7 +31,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Run (a shard of) a checked dataset into `root`. `out` is the folder's output set (the
 /// shard's, or the whole dataset's).
-pub fn run_dataset(
+pub(crate) fn run_dataset(
     req: &DatasetRequest,
     checked: Checked,
     root: &Path,

@@ -3,7 +3,7 @@
 //! compared with the files byte for byte, the kept trajectories recomputed by the wear
 //! law (`study::dataset::verify`), and every sidecar's identity checked against the
 //! design. A resumed run checks its shard's sample before it reuses anything
-//! ([`verify_states`]); [`verify_dataset`] checks a whole folder.
+//! (`verify_states`); [`verify_dataset`] checks a whole folder.
 
 use super::folder::{
     csv_rel, existing_key, finished, read_in, sidecar_rel, sidecars, trajectory_rel, TrajectoryFile,

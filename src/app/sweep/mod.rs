@@ -46,7 +46,9 @@ use std::time::Instant;
 /// See the module docs.
 #[derive(Debug, Clone)]
 pub struct SweepJob {
+    /// The case every sweep case starts from.
     pub base: Case,
+    /// The varied keys and their values.
     pub plan: SweepPlan,
     /// What each case runs.
     pub run: SweepRun,
@@ -67,7 +69,9 @@ pub struct SweepJob {
 /// What a sweep hands back: the outcome (the summary is `STEM.json`'s content) and the
 /// table.
 pub struct SweepOutput {
+    /// What the job did (its summary is `sweep.json`'s content).
     pub outcome: Outcome,
+    /// The sweep's table (one row per case).
     pub table: SweepTable,
 }
 

@@ -59,7 +59,7 @@ pub fn check_case_files(dir: &Path, planned: &[Planned]) -> Result<(), JobError>
                 .map(|e| (p.id, e))
         })
         .map(|(id, e)| {
-            Problem::new(e)
+            Problem::new(e.to_string())
                 .remedy(Remedy::new("delete it to recompute that case").path(case_path(dir, id)))
         })
         .collect();

@@ -78,7 +78,12 @@ pub enum Job {
     /// `gearwear dynamics`: one steady-state evaluation.
     Dynamics,
     /// `gearwear wear`: the wear study in the modes named.
-    Wear { dynamic: bool, quasi_static: bool },
+    Wear {
+        /// With the dynamic solver.
+        dynamic: bool,
+        /// With the quasi-static solver.
+        quasi_static: bool,
+    },
     /// `gearwear run`: both wear studies and three wear-state evaluations.
     Run,
     /// One case of `gearwear sweep`.
@@ -374,7 +379,7 @@ fn record_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
 /// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
 /// never read beyond what the run could have written: 16 times the estimated number of
 /// updates (the estimate takes the nominal load; a run's actual updates stay well within
-/// that margin) of (4 G + 4 S_d) numbers at [`CHECKPOINT_BYTES_PER_NUMBER`] bytes, and at
+/// that margin) of (4 G + 4 S_d) numbers at `CHECKPOINT_BYTES_PER_NUMBER` bytes, and at
 /// least 64 MiB.
 pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
     let dynamic = mode == WearMode::Dynamic;

@@ -2,7 +2,7 @@
 //! them, before any is made: the nodes of k, the runs computed (a parallel batch past the
 //! last one kept included), each run's updates in each phase of its duty, and their CPU
 //! time at the rates of run-to-failure evaluations
-//! ([`super::evaluation::run_to_failure_scale`]).
+//! ([`run_to_failure_scale`]).
 //!
 //! - Without a change of duty: k_j = k_lo 2^j below k_hi, runs made in batches of the
 //!   thread count, up to the batch holding the first run whose blocks are cut by the wear
@@ -35,6 +35,7 @@ use crate::geometry::GearPair;
 pub struct ParameterSpan {
     /// Smallest and largest wear coefficient, m^2/N.
     pub wear_coefficient_min_m2_per_n: f64,
+    /// Largest wear coefficient, m^2/N.
     pub wear_coefficient_max_m2_per_n: f64,
     /// Largest load torque, N m.
     pub load_torque_max_nm: f64,
@@ -229,7 +230,9 @@ impl Count {
 /// A change of duty as the estimate needs it: the future spectrum and N0.
 #[derive(Debug, Clone, Copy)]
 pub struct FutureDutyJob<'a> {
+    /// The future load spectrum.
     pub spectrum: &'a LoadSpectrumSection,
+    /// N0: the pinion cycles from new teeth at which the future spectrum takes over.
     pub from_cycles: f64,
 }
 

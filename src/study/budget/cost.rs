@@ -26,7 +26,9 @@ pub const BASE_BYTES: f64 = 20e6;
 /// How much a run may use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Budget {
+    /// Memory the run may use, bytes.
     pub memory_bytes: f64,
+    /// Time the run may take, s (on one core of the reference machine).
     pub seconds: f64,
 }
 
@@ -49,9 +51,13 @@ impl Budget {
 /// One contribution to a run's cost, with the keys that drive it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Term {
+    /// What the term is, in words (`the exact grid posterior`).
     pub what: &'static str,
+    /// Time, s (one core of the reference machine).
     pub seconds: f64,
+    /// Memory, bytes.
     pub bytes: f64,
+    /// The case keys (or arguments) that drive the term, named in the over-budget message.
     pub keys: &'static [&'static str],
 }
 
@@ -68,7 +74,9 @@ pub struct Estimate {
     pub wear_per_cycle_m: Option<f64>,
     /// Updates (records, the first included) of a dynamic and a quasi-static wear study.
     pub wear_updates_dynamic: f64,
+    /// Updates (records, the first included) of a quasi-static wear study.
     pub wear_updates_quasi_static: f64,
+    /// The contributions to the cost, each with the keys that drive it.
     pub terms: Vec<Term>,
 }
 
@@ -87,10 +95,12 @@ impl Estimate {
         }
     }
 
+    /// Estimated time, s: the sum of the terms'.
     pub fn seconds(&self) -> f64 {
         self.terms.iter().map(|t| t.seconds).sum()
     }
 
+    /// Estimated peak memory, bytes: the process's base ([`BASE_BYTES`]) and the terms'.
     pub fn memory_bytes(&self) -> f64 {
         BASE_BYTES + self.terms.iter().map(|t| t.bytes).sum::<f64>()
     }

@@ -23,7 +23,9 @@ const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.4e-6 * SLOWER_MACHINE_FACTOR;
 /// at the slowest speed for a length in revolutions) and its accelerometer channels.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RecordSize {
+    /// Samples of the longest record (one channel).
     pub samples: f64,
+    /// Accelerometer channels of a record.
     pub channels: f64,
 }
 

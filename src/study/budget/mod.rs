@@ -47,12 +47,9 @@ pub use evaluation::{
     SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
 };
 pub use load_spectrum::estimate_history;
-pub use prognostics::{
-    estimate_calibration, estimate_merge, estimate_prediction, CalibrationJob, ParameterSpan,
-    PredictionJob,
-};
+pub use prognostics::{estimate_calibration, estimate_merge, CalibrationJob, ParameterSpan};
+pub(crate) use prognostics::{estimate_prediction, PredictionJob};
 pub use signals::estimate_signals;
-pub use sweep::{
-    estimate_sweep, estimate_sweep_merge, SweepEstimate, BYTES_PER_SWEEP_CASE, SAMPLED_VALUES,
-};
+pub(crate) use sweep::estimate_sweep;
+pub use sweep::{estimate_sweep_merge, BYTES_PER_SWEEP_CASE, SAMPLED_VALUES};
 pub use teeth::{excitation_periods_of, RESPONSE_BYTES_PER_SAMPLE};

@@ -31,7 +31,7 @@ const BYTES_PER_MESH_POINT: f64 = 2.0 * 6.0 * 8.0 * 2.0;
 /// The estimate of a planetary wear study in the given modes: the updates U = 1 +
 /// ceil(C / n), n being `wear.block_cycles` cut by `wear.threshold_um` over the set's
 /// first quasi-static wear rate per input cycle (its deepest member flank) times
-/// [`RATE_MARGIN`] (paper eq. 17, as the loop cuts it); each update at the measured
+/// `RATE_MARGIN` (paper eq. 17, as the loop cuts it); each update at the measured
 /// rates. The first rate is computed here (one quasi-static response, milliseconds).
 /// Not counted: a set whose steady state is hard to find (a lightly loaded mesh near
 /// contact loss took 40 s of CPU an update against 0.2 s; docs/MODEL.md 12.9).

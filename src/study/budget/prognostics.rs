@@ -14,7 +14,7 @@
 //!   them as the surrogate makes them). A run of U updates costs one evaluation from rest
 //!   and U - 1 warm-started ones per bin of its duty, at the measured rates of
 //!   run-to-failure evaluations
-//!   ([`super::evaluation::run_to_failure_seconds`]), and keeps U records of (4 G + 4
+//!   ([`super::chains::run_to_failure_seconds`]), and keeps U records of (4 G + 4
 //!   S_d) numbers (and its bins' records while it runs). Updates follow from Archard's
 //!   law at the nominal load, at the prior's largest torque and roughness factor.
 //! - **Posterior**: the likelihood reads the surrogate once per observation ([`T_VALUE`]
@@ -136,11 +136,17 @@ fn true_runs(
 pub struct CalibrationJob {
     /// Observed values, their quantities, and the last observation's cycles.
     pub values: usize,
+    /// Observed quantities (columns of the updates table).
     pub quantities: usize,
+    /// Cycles of the last observation, pinion cycles.
     pub max_cycles: f64,
+    /// Posterior samples drawn.
     pub samples: usize,
+    /// Walkers of the ensemble sampler.
     pub walkers: usize,
+    /// Steps of each walker.
     pub steps: usize,
+    /// True wear runs that check the surrogate (at most 3 are counted).
     pub check_runs: usize,
 }
 
@@ -206,7 +212,7 @@ pub fn estimate_calibration(
 
 /// What a prediction computes.
 #[derive(Debug, Clone, Copy)]
-pub struct PredictionJob<'a> {
+pub(crate) struct PredictionJob<'a> {
     /// Samples of this shard, and of the whole ensemble.
     pub samples_in_shard: usize,
     pub grid_points: usize,
@@ -222,7 +228,7 @@ pub struct PredictionJob<'a> {
 }
 
 /// The estimated cost of `predict` over the parameter span `span` (see the module docs).
-pub fn estimate_prediction(
+pub(crate) fn estimate_prediction(
     case: &Case,
     span: impl Into<ParameterSpan>,
     j: &PredictionJob,

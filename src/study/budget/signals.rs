@@ -27,7 +27,7 @@ const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
 /// 4 us, from a measurement of 3.3 us under another load and an older build: 5.5 times
 /// the CPU time of 100 sensors, issue 33.)
 pub const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.9e-6 * SLOWER_MACHINE_FACTOR;
-pub const BYTES_PER_SAMPLE_CHANNEL: f64 = 64.0;
+pub(crate) const BYTES_PER_SAMPLE_CHANNEL: f64 = 64.0;
 
 /// The sensors a record has without a transfer-path file (the generic housing's two).
 pub const DEFAULT_CHANNELS: usize = 2;
@@ -151,7 +151,7 @@ pub struct RecordHarmonics {
 }
 
 /// [`RecordHarmonics`] of a steady record of `case`: D f_s / 2 times each period (None
-/// when the periods cannot be counted, see [`record_periods`]).
+/// when the periods cannot be counted, see `record_periods`).
 pub fn record_harmonics(case: &Case) -> Option<RecordHarmonics> {
     let s = &case.signals;
     let top = 0.5 * crate::signals::antialias::OVERSAMPLING as f64 * s.sampling_rate_hz;

@@ -56,7 +56,7 @@ pub const BYTES_PER_SWEEP_CASE: f64 = 16e3;
 
 /// What a sweep's estimate found.
 #[derive(Debug, Clone)]
-pub struct SweepEstimate {
+pub(crate) struct SweepEstimate {
     /// The sweep as one job: every case of the shard, one after the other (time), and the
     /// cases in flight on `threads` threads plus the records (memory).
     pub total: Estimate,
@@ -72,7 +72,7 @@ pub struct SweepEstimate {
 /// the total is the base cost times, per axis, the mean ratio of its sampled values to the
 /// base (exact when the cost does not depend on a varied key, and when it is a product of
 /// per-axis factors); the worst case puts every axis at its costliest sampled value.
-pub fn estimate_sweep(
+pub(crate) fn estimate_sweep(
     base: &Case,
     plan: &SweepPlan,
     job: Job,

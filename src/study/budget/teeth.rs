@@ -73,7 +73,7 @@ const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
 
 /// The run budget's term for a tooth-resolved case (None when every tooth is alike):
 /// every dynamic evaluation integrates P - 1 more mesh periods and a run-in of
-/// [`RUN_IN_PERIODS`], each quasi-static one solves P - 1 more periods, a kept response
+/// `RUN_IN_PERIODS`, each quasi-static one solves P - 1 more periods, a kept response
 /// records P periods instead of `numerics.evaluated_mesh_periods` (with its contacts'
 /// path), and each wear record holds every tooth's profile and increment.
 /// `dyn_evals`, `quasi_evals`: evaluations; `kept`: responses kept at once; `records`:

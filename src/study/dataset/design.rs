@@ -34,6 +34,7 @@ use super::design_checks::{
 pub use super::design_file::{Condition, DatasetDesign, StateChoice};
 use super::design_file::{ConditionFile, DesignFile, RunToFailureFile};
 use crate::config::{load_case, Case};
+use crate::io::input::InputError;
 use toml::{Table, Value};
 
 /// Problems of a design, one message each, naming the key (`design.toml: key ...`).
@@ -65,11 +66,12 @@ fn merge(base: &mut Table, over: &Table) {
 }
 
 /// Parse and validate a design. `name` names the file in messages; `read` returns the
-/// text of the `case` file it names (the caller resolves it against the design's folder).
+/// text of the `case` file it names (the caller resolves it against the design's folder),
+/// or why it cannot (its `reason` is quoted in the message).
 pub fn parse_design(
     text: &str,
     name: &str,
-    read: &dyn Fn(&str) -> Result<String, String>,
+    read: &dyn Fn(&str) -> Result<String, InputError>,
 ) -> Result<DatasetDesign, DesignErrors> {
     let f: DesignFile =
         toml::from_str(text).map_err(|e| vec![format!("{name}: {}", type_error(&e, text))])?;
@@ -91,9 +93,12 @@ pub fn parse_design(
 /// What a design takes from its base case when it does not say: the longest trajectory
 /// (`wear.total_cycles`) and the one speed and load of its operating axes.
 #[derive(Debug, Clone, Copy)]
-pub struct Defaults {
+pub(crate) struct Defaults {
+    /// Longest trajectory, pinion cycles (the base case's `wear.total_cycles`).
     pub max_cycles: f64,
+    /// Input speed, Hz (the base case's `operating.input_speed_hz`).
     pub speed_hz: f64,
+    /// Load torque, N m (the base case's `operating.load_torque_nm`).
     pub torque_nm: f64,
 }
 
@@ -102,7 +107,7 @@ pub struct Defaults {
 /// the description gives it (`cases`, the TOML of the case the design resolved, in the
 /// conditions' order) and the `defaults` its base case gave (the description's axes; the
 /// base case file itself is not kept). Checked as [`parse_design`] checks a design.
-pub fn design_of_cases(
+pub(crate) fn design_of_cases(
     text: &str,
     name: &str,
     cases: &[String],
@@ -253,13 +258,16 @@ fn type_error(e: &toml::de::Error, text: &str) -> String {
 fn base_case(
     f: &DesignFile,
     name: &str,
-    read: &dyn Fn(&str) -> Result<String, String>,
+    read: &dyn Fn(&str) -> Result<String, InputError>,
 ) -> Result<(Table, Case), DesignErrors> {
     let key = format!("{name}: `case`");
     let base_text = match &f.case {
-        Some(path) => {
-            read(path).map_err(|e| vec![format!("{key}: cannot read the case file {path}: {e}")])?
-        }
+        Some(path) => read(path).map_err(|e| {
+            vec![format!(
+                "{key}: cannot read the case file {path}: {}",
+                e.reason
+            )]
+        })?,
         None => String::new(),
     };
     let base: Table = toml::from_str(&base_text).map_err(|e| {
@@ -418,8 +426,11 @@ pub fn fault_label(case: &Case) -> String {
 mod tests {
     use super::*;
 
-    fn no_file(_: &str) -> Result<String, String> {
-        Err("no files in this test".into())
+    fn no_file(path: &str) -> Result<String, InputError> {
+        Err(InputError {
+            path: path.into(),
+            reason: "no files in this test".into(),
+        })
     }
 
     #[test]

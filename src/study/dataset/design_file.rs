@@ -85,6 +85,7 @@ pub enum StateChoice {
 /// A fault type and severity: the case it is modelled by, and its labels.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
+    /// The condition's name (unique in the design; names the trajectory's state file).
     pub name: String,
     /// What the case models ([`super::design::fault_label`]): never a free text.
     pub fault: String,
@@ -97,17 +98,28 @@ pub struct Condition {
 /// A validated design.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DatasetDesign {
+    /// Seed every record's noise seed derives from (with the record id).
     pub seed: u64,
     /// The transfer-path file, as written in the design (resolved against its folder).
     pub transfer_path: Option<std::path::PathBuf>,
+    /// The states recorded along each trajectory (a count from new to failure, or cycle
+    /// counts).
     pub states: StateChoice,
+    /// Longest trajectory, pinion cycles.
     pub max_cycles: f64,
+    /// Failure: the deepest wear (pinion or gear profile) reaching this, µm.
     pub wear_limit_um: f64,
+    /// Input speeds each state is recorded at, Hz.
     pub speeds_hz: Vec<f64>,
+    /// Load torques each state is recorded at, N m.
     pub torques_nm: Vec<f64>,
+    /// Records per physical state, each with its own noise.
     pub noise_realisations: usize,
+    /// Write a CSV copy of each record (PHM 2009 style) as well.
     pub csv: bool,
+    /// Largest estimated size of the dataset accepted, GiB.
     pub disk_budget_gib: f64,
+    /// The fault conditions, each with its own trajectory.
     pub conditions: Vec<Condition>,
     /// The design's text, for the metadata.
     pub text: String,

@@ -13,6 +13,7 @@ pub mod trajectory;
 pub mod trends;
 pub mod verify;
 
-pub use design::{design_of_cases, parse_design, Condition, DatasetDesign, Defaults, StateChoice};
+pub(crate) use design::{design_of_cases, Defaults};
+pub use design::{parse_design, Condition, DatasetDesign, StateChoice};
 pub use plan::{Plan, Shard};
 pub use records::RecordLabels;

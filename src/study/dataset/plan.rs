@@ -15,31 +15,43 @@ use super::design::{DatasetDesign, StateChoice};
 /// Where a physical state sits in the design.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StateIndex {
+    /// Condition c (0-based).
     pub condition: usize,
+    /// State s along the condition's trajectory (0-based).
     pub state: usize,
+    /// Input speed v (0-based, the design's order).
     pub speed: usize,
+    /// Load l (0-based, the design's order).
     pub load: usize,
 }
 
 /// The sizes of the design's axes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Plan {
+    /// Conditions C.
     pub conditions: usize,
+    /// States S per trajectory.
     pub states: usize,
+    /// Input speeds V.
     pub speeds: usize,
+    /// Loads L.
     pub loads: usize,
+    /// Records R per physical state (noise realisations).
     pub realisations: usize,
 }
 
 impl Plan {
+    /// Physical states: C S V L.
     pub fn physical_states(&self) -> usize {
         self.conditions * self.states * self.speeds * self.loads
     }
 
+    /// Records: C S V L R.
     pub fn records(&self) -> usize {
         self.physical_states() * self.realisations
     }
 
+    /// Where physical state `p` (< [`Plan::physical_states`]) sits.
     pub fn state_index(&self, p: usize) -> StateIndex {
         let load = p % self.loads;
         let q = p / self.loads;
@@ -53,10 +65,12 @@ impl Plan {
         }
     }
 
+    /// The physical state at `i`: p = ((c S + s) V + v) L + l.
     pub fn physical_id(&self, i: StateIndex) -> usize {
         ((i.condition * self.states + i.state) * self.speeds + i.speed) * self.loads + i.load
     }
 
+    /// Record id of realisation `realisation` of physical state `p`: p R + r.
     pub fn record_id(&self, p: usize, realisation: usize) -> usize {
         p * self.realisations + realisation
     }

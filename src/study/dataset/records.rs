@@ -19,9 +19,11 @@ use serde::{Deserialize, Serialize};
 /// The labels of a record: everything the study knows about it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RecordLabels {
+    /// Record id (module docs of [`super::plan`]).
     pub record_id: usize,
     /// Signal file, relative to the dataset folder.
     pub file: String,
+    /// The condition's name.
     pub condition: String,
     /// What the condition's case models (`design::fault_label`).
     pub fault: String,
@@ -35,23 +37,33 @@ pub struct RecordLabels {
     pub trajectory_state: usize,
     /// Pinion load cycles of the state.
     pub cycles: f64,
+    /// Deepest wear of the pinion profile at the state, µm.
     pub max_wear_pinion_um: f64,
+    /// Deepest wear of the gear profile at the state, µm.
     pub max_wear_gear_um: f64,
     /// Maximum wear depth of each tooth, um (each tooth its own with a tooth-resolved
     /// mesh; all teeth alike in the identical-tooth model).
     pub wear_pinion_tooth_um: Vec<f64>,
+    /// Maximum wear depth of each gear tooth, µm (as the pinion's above).
     pub wear_gear_tooth_um: Vec<f64>,
+    /// The design's failure limit on the deepest wear, µm.
     pub wear_limit_um: f64,
     /// Cycles from this state to failure (the deepest wear reaching the limit).
     pub remaining_cycles: f64,
     /// The failure was not reached within the trajectory: `remaining_cycles` is the
     /// cycles to the trajectory's end, a lower bound (right-censored).
     pub failure_censored: bool,
+    /// Input (pinion) speed of the record, Hz.
     pub input_speed_hz: f64,
+    /// Load torque of the record, N m.
     pub load_torque_nm: f64,
+    /// Mesh frequency, Hz.
     pub mesh_hz: f64,
+    /// Noise realisation r of the physical state (0-based).
     pub realisation: usize,
+    /// Seed of the record's noise: a SplitMix64 hash of (design seed, record id), 53 bits.
     pub noise_seed: u64,
+    /// Indicators of each channel of the record.
     pub indicators: Vec<ChannelIndicators>,
 }
 
@@ -59,12 +71,17 @@ pub struct RecordLabels {
 pub struct StateInputs<'a> {
     /// The condition's case at the state's speed and load.
     pub model: &'a Model,
+    /// The signal chain (transfer path, sensors, acquisition).
     pub setup: &'a ChainSetup,
+    /// The condition recorded.
     pub condition: &'a Condition,
+    /// The condition's wear trajectory, whose state at `cycles` is recorded.
     pub trajectory: &'a Trajectory,
     /// Cycles of the state.
     pub cycles: f64,
+    /// The design's failure limit on the deepest wear, µm.
     pub wear_limit_um: f64,
+    /// The design's seed (each record's noise seed derives from it).
     pub design_seed: u64,
 }
 

@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 /// The updates of a trajectory and where it ended.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Trajectory {
+    /// The wear run's updates, in order of cycles.
     pub records: Vec<UpdateRecord>,
     /// Cycle count at which the deepest wear reached the limit, if it did.
     pub failure_cycles: Option<f64>,

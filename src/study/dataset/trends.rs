@@ -26,10 +26,15 @@ const WEAR_COLUMNS: [&str; 2] = ["max_wear_pinion_um", "max_wear_gear_um"];
 /// One trajectory at one speed and load: its states in order of cycles.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrendLine {
+    /// The condition's name.
     pub condition: String,
+    /// Input speed, Hz.
     pub input_speed_hz: f64,
+    /// Load torque, N m.
     pub load_torque_nm: f64,
+    /// Index of each state along the trajectory.
     pub trajectory_state: Vec<i64>,
+    /// Pinion cycles of each state.
     pub cycles: Vec<f64>,
     /// Records averaged at each state.
     pub realisations: Vec<i64>,
@@ -42,6 +47,7 @@ pub struct TrendLine {
 pub struct Trends {
     /// The channel whose indicators are followed.
     pub channel: String,
+    /// One line per condition, speed and load.
     pub lines: Vec<TrendLine>,
 }
 

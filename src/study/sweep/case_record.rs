@@ -8,16 +8,46 @@ use super::continuation::Branch;
 use crate::study::wear_check::StoredRunError;
 use serde::{Deserialize, Serialize};
 
+/// Why a sweep case record cannot be read back; the message names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseRecordError {
+    /// The file cannot be read (missing is not an error: [`CaseRecord::read`] gives
+    /// `None`).
+    #[error(transparent)]
+    Unreadable(#[from] crate::io::input::InputError),
+    /// The file is not a case record's JSON.
+    #[error("{path}: not a sweep case record: {source}")]
+    NotARecord {
+        /// The file.
+        path: String,
+        /// Why its JSON is not a record.
+        source: serde_json::Error,
+    },
+    /// The record fails [`CaseRecord::verify`] (edited, or not whole).
+    #[error("{path}: {source}")]
+    Refused {
+        /// The file.
+        path: String,
+        /// What is wrong with it.
+        source: StoredRunError,
+    },
+}
+
 /// What a finished case writes to `cases/<case_id>.json`: enough to rebuild its row and to
 /// tell whether it belongs to the sweep being run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CaseRecord {
+    /// The case's id in the sweep.
     pub case_id: usize,
     /// SHA-256 of the resolved case (`RunMetadata::case_sha256`).
     pub case_sha256: String,
+    /// What the case ran.
     pub run: SweepRun,
+    /// The varied keys.
     pub keys: Vec<String>,
+    /// Labels of the case's varied values, one per key.
     pub values: Vec<String>,
+    /// Names of the result columns.
     pub columns: Vec<String>,
     /// In `columns` order; null for a non-finite number.
     pub results: Vec<Option<f64>>,
@@ -34,6 +64,7 @@ pub struct CaseRecord {
 /// Where a continuation point sits on its branch (see [`CaseRecord::continuation`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ContinuationLink {
+    /// The branch the point is on.
     pub branch: Branch,
     /// `f64::to_bits` of the start state; `None` for the static equilibrium.
     pub start_state_bits: Option<Vec<u64>>,
@@ -42,6 +73,8 @@ pub struct ContinuationLink {
 }
 
 impl ContinuationLink {
+    /// The link of a point on `branch` that started from `start` (`None`: the static
+    /// equilibrium) and ended in `end`.
     pub fn new(branch: Branch, start: Option<&[f64]>, end: &[f64]) -> Self {
         Self {
             branch,
@@ -153,16 +186,22 @@ impl CaseRecord {
 
     /// Read the record at `path`: `Ok(None)` when there is none, an error (naming the
     /// file) when it is unreadable, not a record, or fails [`CaseRecord::verify`].
-    pub fn read(path: &std::path::Path) -> Result<Option<Self>, String> {
+    pub fn read(path: &std::path::Path) -> Result<Option<Self>, CaseRecordError> {
         use crate::io::input::{read_input_if_present, MAX_CASE_RECORD_BYTES};
-        let bytes = match read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES) {
-            Ok(Some(b)) => b,
-            Ok(None) => return Ok(None),
-            Err(e) => return Err(e.to_string()),
+        let Some(bytes) = read_input_if_present(path, "sweep case record", MAX_CASE_RECORD_BYTES)?
+        else {
+            return Ok(None);
         };
-        let r: CaseRecord = serde_json::from_slice(&bytes)
-            .map_err(|e| format!("{}: not a sweep case record: {e}", path.display()))?;
-        r.verify().map_err(|e| format!("{}: {e}", path.display()))?;
+        let shown = || path.display().to_string();
+        let r: CaseRecord =
+            serde_json::from_slice(&bytes).map_err(|source| CaseRecordError::NotARecord {
+                path: shown(),
+                source,
+            })?;
+        r.verify().map_err(|source| CaseRecordError::Refused {
+            path: shown(),
+            source,
+        })?;
         Ok(Some(r))
     }
 

@@ -49,6 +49,7 @@ const WEAR_COLUMNS: [&str; 8] = [
 ];
 
 impl SweepRun {
+    /// The run's name (`dynamics`, `wear`).
     pub fn name(&self) -> &'static str {
         match self {
             SweepRun::Dynamics => "dynamics",
@@ -92,16 +93,22 @@ impl SweepRun {
 /// bit-identical to it.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DynamicsRow {
+    /// Largest dynamic transmission error, µm.
     pub dte_max_um: f64,
+    /// RMS of the pinion's lateral velocity dy_p/dt, mm/s.
     pub velocity_y_pinion_rms_mm_per_s: f64,
+    /// Mean mesh force, N.
     pub mesh_force_mean_n: f64,
+    /// Largest mesh force, N.
     pub mesh_force_max_n: f64,
+    /// Dynamic factor: largest over mean mesh force.
     pub dynamic_factor: f64,
     /// First to fourth mesh harmonic of dy_p/dt, mm/s.
     pub mesh_harmonics_mm_per_s: [f64; 4],
 }
 
 impl DynamicsRow {
+    /// The row of a response summary (SI) in display units.
     pub fn of(s: &ResponseSummary) -> Self {
         let h = s.velocity_y_pinion_harmonics_m_per_s;
         Self {
@@ -144,7 +151,9 @@ impl DynamicsRow {
 /// Where one wear run of a sweep case ended.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct WearEnd {
+    /// Deepest pinion wear at the run's end, µm (NaN without a record).
     pub max_wear_pinion_um: f64,
+    /// Deepest gear wear at the run's end, µm (NaN without a record).
     pub max_wear_gear_um: f64,
     /// Updates after the first (new-teeth) record.
     pub updates: f64,
@@ -153,6 +162,7 @@ pub struct WearEnd {
 }
 
 impl WearEnd {
+    /// Where `run` ended.
     pub fn of(run: &WearRun) -> Self {
         let last = run.last();
         Self {
@@ -279,7 +289,9 @@ impl std::fmt::Display for CaseError {
 
 /// Results of one case and the model's warnings.
 pub struct CaseOutcome {
+    /// The case's results.
     pub results: CaseResults,
+    /// The model's warnings (non-fatal findings).
     pub warnings: Vec<String>,
 }
 

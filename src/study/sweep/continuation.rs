@@ -38,6 +38,7 @@ impl Branch {
         }
     }
 
+    /// The branch named `up` or `down`.
     pub fn parse(text: &str) -> Option<Self> {
         match text {
             "up" => Some(Branch::Up),
@@ -51,12 +52,16 @@ impl Branch {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Continuation {
+    /// The rising branch only.
     Up,
+    /// The falling branch only.
     Down,
+    /// Both branches, rising first.
     Both,
 }
 
 impl Continuation {
+    /// The branches run, in order.
     pub fn branches(&self) -> Vec<Branch> {
         match self {
             Continuation::Up => vec![Branch::Up],
@@ -69,7 +74,9 @@ impl Continuation {
 /// One point of a branch: its case id and the index of its value on the sweep's axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct BranchPoint {
+    /// The point's case id.
     pub case_id: usize,
+    /// Index of its value on the axis, in the order given.
     pub value_index: usize,
 }
 
@@ -77,6 +84,7 @@ pub struct BranchPoint {
 /// branch after branch (`up` first), so the sweep table lists each branch as it ran.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ContinuationPlan {
+    /// Each branch and its points, in run order.
     pub branches: Vec<(Branch, Vec<BranchPoint>)>,
 }
 
@@ -145,6 +153,7 @@ impl ContinuationPlan {
         self.branches.iter().map(|(_, p)| p.len()).sum()
     }
 
+    /// Whether the plan has no point.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -155,25 +164,33 @@ pub type PeriodicState = Vec<f64>;
 
 /// Resume lookup of [`run_branch`]: the end state of point `case_id` if it was already
 /// computed from exactly the start state given.
-pub type FinishedLookup<'a> = dyn Fn(usize, Option<&[f64]>) -> Option<PeriodicState> + 'a;
+pub(crate) type FinishedLookup<'a> = dyn Fn(usize, Option<&[f64]>) -> Option<PeriodicState> + 'a;
 
 /// Resume lookup of [`run_continuation`], per branch.
-pub type BranchFinishedLookup<'a> =
+pub(crate) type BranchFinishedLookup<'a> =
     dyn Fn(Branch, usize, Option<&[f64]>) -> Option<PeriodicState> + Sync + 'a;
 
 /// What happened at one point of a branch.
 pub enum PointRun {
     /// Finished in an earlier run from the same start state (resume): its end state.
-    Finished { end_state: Vec<f64> },
+    Finished {
+        /// The state the point ended in.
+        end_state: Vec<f64>,
+    },
     /// Computed now from `start` (`None`: the static equilibrium).
     Computed {
+        /// The state it started from (`None`: the static equilibrium).
         start: Option<Vec<f64>>,
+        /// The case's results and warnings.
         outcome: Box<CaseOutcome>,
+        /// The state it ended in (the next point's start).
         end_state: Vec<f64>,
     },
     /// The solver failed (or the case could not be modelled) from `start`.
     Failed {
+        /// The state it started from (`None`: the static equilibrium).
         start: Option<Vec<f64>>,
+        /// Why it failed.
         error: CaseError,
     },
 }
@@ -184,7 +201,7 @@ pub enum PointRun {
 /// `finished(case_id, start)` returns the end state of a point already computed from
 /// exactly this start (so a resumed branch follows the same path, bit for bit, as an
 /// uninterrupted one); `report(case_id, run)` receives every point, in order.
-pub fn run_branch(
+pub(crate) fn run_branch(
     points: &[(usize, &Case)],
     finished: &FinishedLookup,
     report: &mut dyn FnMut(usize, PointRun),
@@ -228,7 +245,7 @@ pub fn run_branch(
 /// resolved case of value `i` of the axis. `finished(branch, case_id, start)` and
 /// `report(branch, case_id, run)` as in [`run_branch`]; a branch stops before its next
 /// point once `keep_going()` says no.
-pub fn run_continuation(
+pub(crate) fn run_continuation(
     plan: &ContinuationPlan,
     cases: &[Case],
     finished: &BranchFinishedLookup,

@@ -63,6 +63,7 @@ pub struct Axis {
     /// Dotted case key, `section.key` as the schema spells it, or `section.N.key` for
     /// the N-th table of a numbered section (`stage.2.face_width_mm`).
     pub key: String,
+    /// The values, in the order given.
     pub values: Vec<AxisValue>,
 }
 
@@ -268,7 +269,7 @@ fn no_repeats(key: &str, values: &[AxisValue]) -> Result<(), Problem> {
 /// (stop - start) / step is within 1e-9 (relative, floor 1e-9 absolute) of a whole
 /// number; the values between are start + k step rounded to 15 significant digits, so
 /// 0.1:0.5:0.1 gives 0.3, not 0.30000000000000004.
-pub fn range_values(start: f64, stop: f64, step: f64) -> Result<Vec<f64>, String> {
+pub(crate) fn range_values(start: f64, stop: f64, step: f64) -> Result<Vec<f64>, String> {
     if step <= 0.0 {
         return Err(format!("STEP must be > 0, got {step}"));
     }
@@ -303,6 +304,7 @@ pub use crate::format::format_number;
 /// slowest (row-major), so ids do not depend on sharding.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepPlan {
+    /// The varied keys, first varying slowest.
     pub axes: Vec<Axis>,
 }
 
@@ -336,10 +338,12 @@ impl SweepPlan {
         self.axes.iter().map(|a| a.values.len()).product()
     }
 
+    /// Whether the sweep has no case.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 
+    /// The varied keys, in axis order.
     pub fn keys(&self) -> Vec<String> {
         self.axes.iter().map(|a| a.key.clone()).collect()
     }
@@ -386,7 +390,9 @@ impl SweepPlan {
 /// about the same, so interleaving gives every shard a similar mix.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shard {
+    /// I: this shard, 1-based (1 <= I <= N).
     pub index: usize,
+    /// N: the number of shards.
     pub count: usize,
 }
 
@@ -394,6 +400,7 @@ impl Shard {
     /// The whole sweep as one shard.
     pub const ALL: Shard = Shard { index: 1, count: 1 };
 
+    /// A shard from `I/N`; refused (naming `--shard`) unless 1 <= I <= N.
     pub fn parse(text: &str) -> Result<Self, Problem> {
         let bad = || {
             Problem::given(

@@ -29,10 +29,13 @@ pub const MARKED_HARMONICS: u32 = 4;
 /// One crossing of harmonic `harmonic` with pole `pole` (1-based, ascending frequency).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Crossing {
+    /// Harmonic k of the mesh frequency (1-based).
     pub harmonic: u32,
+    /// Pole number, 1-based in ascending frequency.
     pub pole: usize,
     /// Damped frequency of the pole, Hz.
     pub pole_frequency_hz: f64,
+    /// Input speed at which they meet, Hz (f_p / (k z1) for a single pair; module docs).
     pub input_speed_hz: f64,
 }
 
@@ -95,6 +98,7 @@ pub fn crossings_of_order(
 /// The modes of a speed sweep's base case and the crossings inside its speed range.
 #[derive(Debug, Clone)]
 pub struct SpeedMarks {
+    /// The modes of the base case.
     pub modal: ModalAnalysis,
     /// The crossings of the pair's (a train's first mesh's) harmonics.
     pub crossings: Vec<Crossing>,

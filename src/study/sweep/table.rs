@@ -27,9 +27,11 @@ pub enum SweepTableError {
 /// One case's row.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
+    /// The case's id.
     pub case_id: usize,
     /// Labels of the varied values (`study::sweep::plan::AxisValue::label`).
     pub values: Vec<String>,
+    /// The case's results (after the varied values).
     pub results: CaseResults,
     /// The branch of a continuation point; `None` in an ordinary sweep.
     pub branch: Option<Branch>,
@@ -55,6 +57,7 @@ pub struct SweepTable {
     /// The number of meshes of a gear train (one column set each after the run's
     /// columns, `super::mesh_row`); 0 for a single pair.
     pub stages: usize,
+    /// The rows, sorted by case id.
     pub rows: Vec<SweepRow>,
 }
 

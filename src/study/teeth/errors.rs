@@ -14,7 +14,9 @@ use serde::Serialize;
 pub struct GearErrors {
     /// Position (pitch) error of each tooth on the reference circle, um.
     pub position_um: Vec<f64>,
+    /// Profile slope error f_Halpha of each tooth, µm.
     pub profile_slope_um: Vec<f64>,
+    /// Profile form error f_falpha of each tooth, µm.
     pub profile_form_um: Vec<f64>,
     /// Radial run-out, um.
     pub runout_um: f64,
@@ -26,11 +28,17 @@ pub struct GearErrors {
 /// them, 5.2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FlankTolerancesReport {
+    /// Flank tolerance class (ISO 1328-1:2013 classes 1 to 11).
     pub class: i64,
+    /// Single pitch tolerance f_pT, µm.
     pub single_pitch_um: f64,
+    /// Total cumulative pitch tolerance F_pT, µm.
     pub cumulative_pitch_um: f64,
+    /// Profile slope tolerance f_HalphaT, µm.
     pub profile_slope_um: f64,
+    /// Profile form tolerance f_falphaT, µm.
     pub profile_form_um: f64,
+    /// Run-out tolerance F_rT, µm.
     pub runout_um: f64,
 }
 
