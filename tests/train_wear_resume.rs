@@ -6,9 +6,12 @@
 //! recomputed, not trusted).
 
 mod common;
-use common::{gearwear, kill_when, published, stderr};
+use common::resume::{
+    cut_log, cut_then_resumed_is_unchanged, foreign_logs_refused,
+    killed_then_resumed_is_uninterrupted, refused, resuming_a_finished_run_changes_nothing, run,
+    sha,
+};
 use std::path::{Path, PathBuf};
-use std::process::Output;
 
 /// The two-stage reducer of `examples/two_stage_reducer.toml` (19/31 then 23/47) at
 /// 30 Hz and 60 N m, with `torque` on the input shaft instead of 60 when given.
@@ -47,56 +50,25 @@ fn args(config: &str, mode: &str, out: &Path, extra: &[&str]) -> Vec<String> {
     a
 }
 
-fn run(a: &[String]) -> Output {
-    let refs: Vec<&str> = a.iter().map(String::as_str).collect();
-    gearwear(&refs)
-}
-
-/// Keep the header and `keep` updates of a log, and half of the next line when `torn`.
-fn cut_log(path: &Path, keep: usize, torn: bool) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let lines: Vec<&str> = text.lines().collect();
-    assert!(lines.len() > keep + 1, "{path:?} has {} lines", lines.len());
-    let mut out = lines[..keep + 1].join("\n") + "\n";
-    if torn {
-        let next = lines[keep + 1];
-        out.push_str(&next[..next.len() / 2]);
-    }
-    std::fs::write(path, out).unwrap();
-}
-
 #[test]
 fn logs_cut_between_the_appends_of_an_update_resume_to_the_same_bytes() {
     let d = tempfile::tempdir().unwrap();
     let config = case(d.path(), 60.0);
     let out = d.path().join("w");
-    let a = args(&config, "both", &out, &[]);
-    let o = run(&a);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let full = published(&out);
-    assert!(full.iter().any(|(p, _)| p == "wear_history_dynamic.csv"));
-    // Killed between the appends of update 3 (dynamic: stage 1 holds it, stage 2 half of
-    // it) and after update 2 (quasi-static: both logs hold updates 0..=2).
-    for (file, keep, torn) in [
-        ("checkpoint_dynamic_stage1.jsonl", 4, false),
-        ("checkpoint_dynamic_stage2.jsonl", 3, true),
-        ("checkpoint_quasi_static_stage1.jsonl", 3, false),
-        ("checkpoint_quasi_static_stage2.jsonl", 3, false),
-    ] {
-        cut_log(&out.join(file), keep, torn);
-    }
-    let mut resume = a.clone();
-    resume.push("--resume".into());
-    let o = run(&resume);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let again = published(&out);
-    assert_eq!(
-        full.iter().map(|f| &f.0).collect::<Vec<_>>(),
-        again.iter().map(|f| &f.0).collect::<Vec<_>>()
-    );
-    for ((p, x), (_, y)) in full.iter().zip(&again) {
-        assert!(x == y, "{p}: the resumed run's bytes differ");
-    }
+    let cut = |out: &Path| {
+        assert!(out.join("wear_history_dynamic.csv").exists());
+        // Killed between the appends of update 3 (dynamic: stage 1 holds it, stage 2 half
+        // of it) and after update 2 (quasi-static: both logs hold updates 0..=2).
+        for (file, keep, torn) in [
+            ("checkpoint_dynamic_stage1.jsonl", 4, false),
+            ("checkpoint_dynamic_stage2.jsonl", 3, true),
+            ("checkpoint_quasi_static_stage1.jsonl", 3, false),
+            ("checkpoint_quasi_static_stage2.jsonl", 3, false),
+        ] {
+            cut_log(&out.join(file), keep, torn);
+        }
+    };
+    cut_then_resumed_is_unchanged(&args(&config, "both", &out, &[]), &out, &cut);
 }
 
 #[test]
@@ -104,17 +76,12 @@ fn a_killed_train_run_resumes_to_the_bytes_of_an_uninterrupted_one() {
     let d = tempfile::tempdir().unwrap();
     let config = case(d.path(), 60.0);
     let (full, cut) = (d.path().join("full"), d.path().join("cut"));
-    let o = run(&args(&config, "dynamic", &full, &[]));
-    assert!(o.status.success(), "{}", stderr(&o));
-    // Killed once stage 2's log holds two updates (header + 2 lines).
-    let log = cut.join("checkpoint_dynamic_stage2.partial.jsonl");
-    let ready = || std::fs::read_to_string(&log).map_or(0, |t| t.lines().count()) >= 3;
-    kill_when(&args(&config, "dynamic", &cut, &[]), &ready);
-    let o = run(&args(&config, "dynamic", &cut, &["--resume"]));
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert!(
-        published(&full) == published(&cut),
-        "resumed outputs differ"
+    // Killed once stage 2's log holds two updates.
+    killed_then_resumed_is_uninterrupted(
+        &|out| args(&config, "dynamic", out, &[]),
+        (&full, &cut),
+        "checkpoint_dynamic_stage2.partial.jsonl",
+        2,
     );
 }
 
@@ -145,10 +112,6 @@ fn tamper(path: &Path, rehash: bool, edit: &dyn Fn(usize, &mut serde_json::Value
     std::fs::write(path, out).unwrap();
 }
 
-fn sha(text: &str) -> String {
-    gearwear::io::output_dir::sha256_hex(text.as_bytes())
-}
-
 /// Multiply the number at `key` (a JSON pointer) of update `at` by `f`; when `key` names
 /// an array, its largest element (a point where the profile has worn).
 fn scale(at: usize, key: &'static str, f: f64) -> impl Fn(usize, &mut serde_json::Value) {
@@ -173,19 +136,6 @@ fn scale(at: usize, key: &'static str, f: f64) -> impl Fn(usize, &mut serde_json
         );
         *x = serde_json::json!(y * f);
     }
-}
-
-/// Resume `a` and require exit 2 with every one of `needles` in the message.
-fn refused(a: &[String], what: &str, needles: &[&str]) {
-    let mut resume = a.to_vec();
-    resume.push("--resume".into());
-    let o = run(&resume);
-    let e = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{what}: {e}");
-    for n in needles {
-        assert!(e.contains(n), "{what}: says `{n}`: {e}");
-    }
-    assert!(!e.contains("panicked"), "{what}: {e}");
 }
 
 #[test]
@@ -263,46 +213,8 @@ fn tampered_foreign_and_swapped_train_checkpoints_are_refused_saying_why() {
     let other = d.path().join("other");
     let b = args(&case(d.path(), 70.0), "dynamic", &other, &[]);
     assert!(run(&b).status.success());
-    let hash = |t: &str| {
-        let head: serde_json::Value =
-            serde_json::from_str(t.lines().next().unwrap().split_once(' ').unwrap().1).unwrap();
-        head["case_sha256"].as_str().unwrap().to_owned()
-    };
-    let (ours, theirs) = (
-        hash(&original[0]),
-        hash(&std::fs::read_to_string(other.join("checkpoint_dynamic_stage1.jsonl")).unwrap()),
-    );
-    assert_ne!(ours, theirs);
-    for (s, p) in logs.iter().enumerate() {
-        let t =
-            std::fs::read_to_string(other.join(format!("checkpoint_dynamic_stage{}.jsonl", s + 1)))
-                .unwrap();
-        std::fs::write(p, &t).unwrap();
-    }
-    refused(
-        &a,
-        "another case",
-        &["checkpoint_dynamic_stage1", "another case"],
-    );
-    // ... and, with the header forged to this case's hash, by recomputing its first
-    // update: the records chain and replay as a run, but not as this case's.
-    for p in &logs {
-        let t = std::fs::read_to_string(p).unwrap();
-        let (head, rest) = t.split_once('\n').unwrap();
-        let json = head.split_once(' ').unwrap().1.replace(&theirs, &ours);
-        std::fs::write(p, format!("{} {json}\n{rest}", sha(&json))).unwrap();
-    }
-    refused(
-        &a,
-        "another case, forged header",
-        &["update 0 (line 2)", "not what this case's model computes"],
-    );
+    foreign_logs_refused(&a, &logs, &other);
     restore();
     // Untouched, it resumes (nothing left to compute) to the same results.
-    let before = published(&out);
-    let mut resume = a.clone();
-    resume.push("--resume".into());
-    let o = run(&resume);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert!(published(&out) == before);
+    resuming_a_finished_run_changes_nothing(&a, &out);
 }

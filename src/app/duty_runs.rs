@@ -3,17 +3,16 @@
 //! log per mode and bin appended after every update, progress per mode, cancellation.
 
 use super::observer::{keep_going, Observer};
+use super::part_checkpoints::{starting_part_runs, Parts};
 use super::wear_runs::{mode_tasks, report_update, Runs};
 use super::{publish, JobError};
 use crate::duty::resume::from_bin_runs;
 use crate::duty::wear::SpectrumRun;
 use crate::duty::SpectrumModel;
 use crate::io::OutputDir;
-use crate::remedy::{Arg, Problem, Remedy};
-use crate::store::checkpoint::load_checkpoint_named;
 use crate::store::part_logs::{PartLogs, PartStarts};
 use crate::store::RunMetadata;
-use crate::study::wear_loop::WearMode;
+use crate::study::wear_loop::{WearMode, WearRun};
 use std::path::Path;
 
 /// File name of the checkpoint of bin `i` (0-based) of a mode's spectrum run.
@@ -21,7 +20,9 @@ pub fn bin_checkpoint_name(mode: WearMode, i: usize) -> String {
     format!("checkpoint_{}_bin{}.jsonl", mode.name(), i + 1)
 }
 
-/// The runs of `modes`: fresh, or (resuming from `dir`) read back from their bin logs.
+/// The runs of `modes`: fresh, or (resuming from `resume_from`) read back from their bin
+/// logs (`part_checkpoints::starting_part_runs`), replayed by `duty::resume` and
+/// recomputed by `duty::verify`.
 fn starting_runs(
     sm: &SpectrumModel,
     modes: &[WearMode],
@@ -30,67 +31,26 @@ fn starting_runs(
     observer: &dyn Observer,
 ) -> Result<Vec<SpectrumRun>, JobError> {
     let fresh = |m: WearMode| SpectrumRun::new(m, sm.shares.clone());
-    let Some(out) = resume_from else {
-        return Ok(modes.iter().map(|m| fresh(*m)).collect());
+    let parts = Parts {
+        what: "the spectrum's bins",
+        names: &|m| (0..sm.len()).map(|i| bin_checkpoint_name(m, i)).collect(),
+        shown: &|m| bin_checkpoint_name(m, 0),
+        part: "a bin",
+        max_bytes: &|m| crate::study::budget::max_checkpoint_bytes(&sm.case, m),
     };
-    let dir = out.root();
-    let mut starts = Vec::new();
-    let mut found = false;
-    for m in modes {
-        let mut logs = Vec::new();
-        for i in 0..sm.len() {
-            let max = crate::study::budget::max_checkpoint_bytes(&sm.case, *m);
-            let name = bin_checkpoint_name(*m, i);
-            if let Some(l) = load_checkpoint_named(out, &name, *m, case_sha256, max)? {
-                logs.push(l.run);
-            }
-        }
-        if logs.iter().all(|l| l.records.is_empty()) {
-            observer.note(&format!(
-                "note: no {} checkpoint: that run starts afresh",
-                m.label()
-            ));
-            starts.push(fresh(*m));
-            continue;
-        }
-        found = true;
-        let run = from_bin_runs(sm, *m, &logs).map_err(|e| {
-            Problem::of(
-                Arg::Resume,
-                format!(
-                    "{}: the {} checkpoints of the spectrum's bins: {e}; they cannot be resumed",
-                    dir.display(),
-                    m.label()
-                ),
-            )
-            .remedy(Remedy::start_afresh().path(dir))
-        })?;
-        crate::duty::verify::verify_spectrum_run(sm, &run).map_err(|e| {
-            Problem::of(
-                Arg::Resume,
-                format!(
-                    "{}: the {} checkpoints of the spectrum's bins: {e}; they cannot be resumed",
-                    dir.display(),
-                    m.label()
-                ),
-            )
-            .remedy(Remedy::start_afresh().path(dir))
-        })?;
-        starts.push(run);
-    }
-    if !found {
-        return Err(Problem::of(
-            Arg::Resume,
-            format!(
-                "no checkpoint to resume from in {} (looked for {})",
-                dir.display(),
-                bin_checkpoint_name(modes[0], 0)
-            ),
-        )
-        .remedy(Remedy::start_afresh().path(dir))
-        .into());
-    }
-    Ok(starts)
+    let replay = |m: WearMode, logs: Vec<WearRun>| {
+        let run = from_bin_runs(sm, m, &logs).map_err(|e| e.to_string())?;
+        crate::duty::verify::verify_spectrum_run(sm, &run).map_err(|e| e.to_string())?;
+        Ok(run)
+    };
+    starting_part_runs(
+        resume_from,
+        modes,
+        &parts,
+        case_sha256,
+        (&fresh, &replay),
+        observer,
+    )
 }
 
 /// One log per mode and bin, started from the run it starts at (a resumed run's logs are
@@ -107,7 +67,7 @@ fn open_logs(
                 .map(|i| {
                     let name = bin_checkpoint_name(run.mode, i);
                     let start = if run.records.is_empty() {
-                        crate::study::wear_loop::WearRun::new(run.mode)
+                        WearRun::new(run.mode)
                     } else {
                         crate::duty::contribution::bin_run(run, i)
                     };

@@ -9,6 +9,7 @@
 
 use super::duty::build_spectrum_model;
 use super::observer::{keep_going, Observer};
+use super::part_checkpoints::{starting_part_runs, Parts};
 use super::wear_runs::{mode_tasks, report_update, Runs};
 use super::wear_train::train_stops;
 use super::{publish, JobError, Outcome};
@@ -19,12 +20,12 @@ use crate::duty::train_resume::{from_logs, verify};
 use crate::duty::SpectrumModel;
 use crate::dynamics::excitation::ExternalError;
 use crate::io::OutputDir;
-use crate::remedy::{Arg, Problem, Remedy};
+use crate::remedy::Problem;
 use crate::report::duty_train::TrainDutyParts;
 use crate::report::figure_output::FigureOutput;
 use crate::report::run_train::{train_run_artifacts_with, TrainRun};
 use crate::report::wear_train::train_wear_artifacts;
-use crate::store::part_logs::{load_parts, PartLogs, PartStarts};
+use crate::store::part_logs::{PartLogs, PartStarts};
 use crate::store::RunMetadata;
 use crate::study::train_stages::stage_models;
 use crate::study::train_wear::TrainWearRun;
@@ -55,22 +56,8 @@ fn trains(sm: &SpectrumModel) -> Result<TrainSpectrum<'_>, JobError> {
         .ok_or_else(|| JobError::input(Problem::new("this case has no [[stage]] tables")))
 }
 
-/// A refusal to resume from the logs of `mode` in `dir`.
-fn refused(dir: &Path, mode: WearMode, why: &str) -> JobError {
-    Problem::of(
-        Arg::Resume,
-        format!(
-            "{}: the {} checkpoints of the train's meshes under the load spectrum ({}): {why}; they cannot be resumed",
-            dir.display(),
-            mode.label(),
-            bin_mesh_checkpoint_name(mode, 0, 0),
-        ),
-    )
-    .remedy(Remedy::start_afresh().path(dir))
-    .into()
-}
-
-/// The run of each of `modes`: afresh, or read back from its logs in `resume_from`.
+/// The run of each of `modes`: afresh, or read back from its logs in `resume_from`
+/// (`part_checkpoints::starting_part_runs`, replayed and recomputed by `duty::train_resume`).
 fn starting_runs(
     ts: &TrainSpectrum,
     modes: &[WearMode],
@@ -79,48 +66,28 @@ fn starting_runs(
     observer: &dyn Observer,
 ) -> Result<Vec<TrainSpectrumRun>, JobError> {
     let fresh = |m: WearMode| TrainSpectrumRun::new(m, ts.sm.shares.clone());
-    let Some(out) = resume_from else {
-        return Ok(modes.iter().map(|m| fresh(*m)).collect());
-    };
-    let dir = out.root();
     let (nb, nk) = (ts.trains.len(), ts.meshes());
-    let mut starts = Vec::new();
-    let mut found = false;
-    for m in modes {
-        let max = crate::study::budget::max_checkpoint_bytes(&ts.sm.case, *m);
-        let logs = load_parts(out, &names(*m, nb, nk), *m, case_sha256, max)
-            .map_err(|e| JobError::from(e.problem()))?;
-        if logs.iter().flatten().all(|l| l.records.is_empty()) {
-            observer.note(&format!(
-                "note: no {} checkpoint: that run starts afresh",
-                m.label()
-            ));
-            starts.push(fresh(*m));
-            continue;
-        }
-        found = true;
-        let Some(logs) = logs.into_iter().collect::<Option<Vec<WearRun>>>() else {
-            return Err(refused(dir, *m, "the log of a bin or stage is missing"));
-        };
+    let parts = Parts {
+        what: "the train's meshes under the load spectrum",
+        names: &|m| names(m, nb, nk),
+        shown: &|m| bin_mesh_checkpoint_name(m, 0, 0),
+        part: "a bin or stage",
+        max_bytes: &|m| crate::study::budget::max_checkpoint_bytes(&ts.sm.case, m),
+    };
+    let replay = |m: WearMode, logs: Vec<WearRun>| {
         let by_bin: Vec<Vec<WearRun>> = logs.chunks(nk).map(|c| c.to_vec()).collect();
-        let run = from_logs(ts, *m, &by_bin)
+        from_logs(ts, m, &by_bin)
             .and_then(|run| verify(ts, &run).map(|_| run))
-            .map_err(|e| refused(dir, *m, &e.to_string()))?;
-        starts.push(run);
-    }
-    if !found {
-        return Err(Problem::of(
-            Arg::Resume,
-            format!(
-                "no checkpoint to resume from in {} (looked for {} and their .partial files)",
-                dir.display(),
-                bin_mesh_checkpoint_name(modes[0], 0, 0)
-            ),
-        )
-        .remedy(Remedy::start_afresh().path(dir))
-        .into());
-    }
-    Ok(starts)
+            .map_err(|e| e.to_string())
+    };
+    starting_part_runs(
+        resume_from,
+        modes,
+        &parts,
+        case_sha256,
+        (&fresh, &replay),
+        observer,
+    )
 }
 
 /// One log per mode, bin and mesh, started from the runs `runs` start at.

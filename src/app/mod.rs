@@ -47,6 +47,8 @@ pub mod error;
 pub mod inputs;
 pub mod load_spectrum;
 pub mod observer;
+pub(crate) mod part_checkpoints;
+pub(crate) mod planetary_checkpoints;
 pub mod predict;
 pub mod predict_future;
 pub mod predict_merge;

@@ -1,12 +1,15 @@
 //! The wear job on a planetary set (`[planetary]`): every sun-planet and ring-planet mesh
 //! worn by one response of the whole set (`study::planetary_wear_loop`), the modes in
-//! parallel, the results of `report::wear_planetary`. No checkpoints yet: `--resume` and a
-//! load spectrum on a planetary set are refused, naming them.
+//! parallel, the results of `report::wear_planetary`. With an output folder, every update
+//! of the whole set is kept (a log per mode and mesh, `app::planetary_checkpoints`) and
+//! `--resume` continues from them once they are replayed and recomputed. A load spectrum
+//! on a planetary set is refused, naming it.
 
 use super::observer::{keep_going, Observer};
+use super::planetary_checkpoints::{open_logs, planetary_checkpoint_name, starting_runs};
 use super::wear_runs::{mode_tasks, stops_of};
 use super::{publish, JobError, Outcome, WearJob};
-use crate::remedy::{Arg, Problem};
+use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
 use crate::store::RunMetadata;
@@ -26,11 +29,8 @@ pub fn wear_of_planetary(
             "`[load_spectrum]` on a planetary set ([planetary]): the wear study under a load spectrum takes a single pair so far; remove one or the other",
         )));
     }
-    if job.resume {
-        return Err(JobError::input(Problem::of(
-            Arg::Resume,
-            "a planetary set's wear study keeps no checkpoints yet, so it cannot be resumed: run it again without resuming".to_string(),
-        )));
+    if let (Some(o), true) = (job.out.as_deref(), job.resume) {
+        super::checkpoints::require_folder(o)?;
     }
     let model = PlanetaryWearModel::from_case(&job.case)?;
     // After the model (milliseconds: the budget counts the updates from the set's own
@@ -42,19 +42,33 @@ pub fn wear_of_planetary(
     for w in &model.dynamics.study.warnings {
         observer.warning(w);
     }
-    let out = publish::open_if(job.out.as_deref(), None, "wear", job.replace)?;
-    let starts: Vec<PlanetaryWearRun> = job
-        .modes
-        .iter()
-        .map(|m| PlanetaryWearRun::new(*m))
-        .collect();
+    let meta = RunMetadata::new("wear", &job.case);
+    let mut out = publish::open_if(job.out.as_deref(), None, "wear", job.replace)?;
     let wear = &job.case.wear;
+    let resume_from = out.as_ref().filter(|_| job.resume);
+    let starts = starting_runs(
+        &model,
+        wear,
+        &job.modes,
+        resume_from,
+        &meta.case_sha256,
+        observer,
+    )?;
+    let logs = match out.as_mut() {
+        Some(d) => Some(open_logs(d, &model, &starts, &meta.case_sha256)?),
+        None => None,
+    };
+    let root = out.as_ref().map(|d| d.root().to_path_buf());
     let tasks = mode_tasks(&job.modes, wear.total_cycles);
     for t in &tasks {
         observer.start(t);
     }
     // Progress in input cycles, with the deepest wear of any member so far.
     let on_update = |mode: WearMode, run: &PlanetaryWearRun| -> anyhow::Result<()> {
+        if let (Some(logs), Some(root)) = (&logs, &root) {
+            logs.record(mode, run.updates.len(), &|j, i| &run.updates[i].meshes[j])?;
+            observer.checkpoint(&root.join(planetary_checkpoint_name(&model, mode, 0)));
+        }
         let task = tasks.iter().find(|t| t.id == mode.name());
         if let (Some(t), Some(u)) = (task, run.updates.last()) {
             let deepest = u
@@ -80,9 +94,9 @@ pub fn wear_of_planetary(
     for t in &tasks {
         observer.finish(t);
     }
+    drop(logs);
     let runs = runs?;
     let refs: Vec<&PlanetaryWearRun> = runs.iter().collect();
-    let meta = RunMetadata::new("wear", &job.case);
     let artifacts = planetary_wear_artifacts(&model, &refs).with_figure_output(figures);
     let mut outcome = publish::publish(out, artifacts, Some(&meta), observer)?;
     let modes: Vec<(WearMode, Option<&WearStop>)> =

@@ -127,6 +127,17 @@ pub fn pin_error_gaps(e_t_m: f64, e_r_m: f64, alpha_rad: [f64; 2]) -> [f64; 2] {
 /// singular matrix leaves them near 1e-16.
 const SINGULAR_PIVOT: f64 = 1e-13;
 
+/// The solution of K q = f (m) when K is grounded: None when a pivot of its LU is below
+/// [`SINGULAR_PIVOT`] of the largest (a member with no path to ground) or q is not finite.
+fn solve_grounded(k: DMatrix<f64>, f: &DVector<f64>) -> Option<DVector<f64>> {
+    let lu = k.lu();
+    let pivots = lu.u().diagonal().map(f64::abs);
+    if pivots.min() <= SINGULAR_PIVOT * pivots.max() {
+        return None;
+    }
+    lu.solve(f).filter(|x| x.iter().all(|v| v.is_finite()))
+}
+
 /// The planetary set's dynamic model (see module docs).
 #[derive(Debug, Clone)]
 pub struct PlanetaryDynamic {
@@ -314,23 +325,32 @@ impl PlanetaryDynamic {
     /// member has no path to ground (K singular). Whether every mesh is then compressed
     /// is [`Self::static_mesh_forces`]'s question.
     pub fn static_deflection(&self) -> Option<DVector<f64>> {
+        let (k, f, _) = self.assemble(&|e| (e.k, e.gap_m));
+        solve_grounded(k, &f)
+    }
+
+    /// The stiffness matrix K = sum_j k_j g_j g_j^T (N/m) and the load
+    /// f = force_n + sum_j k_j gap_j g_j (N) of every element at the stiffness and gap (m)
+    /// `spring` gives it, with those (stiffness, gap) pairs in element order.
+    fn assemble(
+        &self,
+        spring: &dyn Fn(&Element) -> (f64, f64),
+    ) -> (DMatrix<f64>, DVector<f64>, Vec<(f64, f64)>) {
         let n = self.dofs();
         let mut k = DMatrix::zeros(n, n);
         let mut f = self.force_n.clone();
+        let mut springs = Vec::with_capacity(self.elements.len());
         for e in &self.elements {
+            let (kv, gap) = spring(e);
+            springs.push((kv, gap));
             for (i, gi) in &e.g {
-                f[*i] += e.k * e.gap_m * gi;
+                f[*i] += kv * gap * gi;
                 for (j, gj) in &e.g {
-                    k[(*i, *j)] += e.k * gi * gj;
+                    k[(*i, *j)] += kv * gi * gj;
                 }
             }
         }
-        let lu = k.lu();
-        let pivots = lu.u().diagonal().map(f64::abs);
-        if pivots.min() <= SINGULAR_PIVOT * pivots.max() {
-            return None;
-        }
-        lu.solve(&f).filter(|x| x.iter().all(|v| v.is_finite()))
+        (k, f, springs)
     }
 
     /// Every mesh's static force k (g . q - gap) at its mean stiffness in the static
@@ -354,36 +374,22 @@ impl PlanetaryDynamic {
     /// with every mesh's stiffness and wear gap at that instant (no inertia, no damping),
     /// a mesh the solution puts in tension taken out and the equilibrium solved again
     /// (contact loss, at most one pass per mesh). The planetary twin of the pair's
-    /// `dynamics::quasi_static` (docs/MODEL.md 12.9); `None` when K is singular.
+    /// `dynamics::quasi_static` (docs/MODEL.md 12.9); `None` when K is singular (the same
+    /// assembly and pivot check as [`Self::static_deflection`]: a planet that lost both
+    /// its meshes has no path to ground).
     pub fn quasi_static_mesh_forces(&self, cycles: f64) -> Option<Vec<f64>> {
-        let n = self.dofs();
         let planets = self.params.planet_angles_rad.len();
         let mut open = vec![false; 2 * planets];
         for _ in 0..=2 * planets {
-            let mut k = DMatrix::zeros(n, n);
-            let mut f = self.force_n.clone();
-            let mut springs = Vec::with_capacity(self.elements.len());
-            for e in &self.elements {
-                let (kv, gap) = match e.mesh {
-                    None => (e.k, 0.0),
-                    Some((p, ring)) if open[p + ring as usize * planets] => (0.0, 0.0),
-                    Some((p, ring)) => (
-                        self.source.at(p, ring, cycles, cycles),
-                        e.gap_m + self.wear_gap_m(p, ring, cycles, cycles),
-                    ),
-                };
-                springs.push((kv, gap));
-                for (i, gi) in &e.g {
-                    f[*i] += kv * gap * gi;
-                    for (j, gj) in &e.g {
-                        k[(*i, *j)] += kv * gi * gj;
-                    }
-                }
-            }
-            let q = k
-                .lu()
-                .solve(&f)
-                .filter(|x| x.iter().all(|v| v.is_finite()))?;
+            let (k, f, springs) = self.assemble(&|e| match e.mesh {
+                None => (e.k, 0.0),
+                Some((p, ring)) if open[p + ring as usize * planets] => (0.0, 0.0),
+                Some((p, ring)) => (
+                    self.source.at(p, ring, cycles, cycles),
+                    e.gap_m + self.wear_gap_m(p, ring, cycles, cycles),
+                ),
+            });
+            let q = solve_grounded(k, &f)?;
             let mut forces = vec![0.0; 2 * planets];
             let mut newly_open = false;
             for (e, (kv, gap)) in self.elements.iter().zip(&springs) {

@@ -23,6 +23,7 @@ use super::artifacts::Artifacts;
 use crate::format::shown;
 use crate::io::Table;
 use crate::study::planetary_wear::{contacts_per_input, MemberFlank, PlanetaryWearModel};
+use crate::study::planetary_wear_check::planetary_mesh_name;
 use crate::study::planetary_wear_loop::PlanetaryWearRun;
 use serde_json::{json, Map, Value};
 
@@ -73,12 +74,6 @@ pub fn history_table(model: &PlanetaryWearModel, run: &PlanetaryWearRun) -> Tabl
     )
 }
 
-/// Mesh `j`'s name, e.g. `ring_planet_3`.
-fn mesh_name(model: &PlanetaryWearModel, j: usize) -> String {
-    let (kind, p) = model.kind_of(j);
-    format!("{}_planet_{}", ["sun", "ring"][kind], p + 1)
-}
-
 /// `mesh_history_MODE.csv` of a run (see the module docs).
 pub fn mesh_table(model: &PlanetaryWearModel, run: &PlanetaryWearRun) -> Table {
     let mut t = Table::new().col(
@@ -86,8 +81,8 @@ pub fn mesh_table(model: &PlanetaryWearModel, run: &PlanetaryWearRun) -> Table {
         run.updates.iter().map(|u| u.input_cycles).collect(),
     );
     for j in 0..2 * model.planets() {
-        let name = mesh_name(model, j);
-        let col = |f: &dyn Fn(&crate::study::planetary_wear_loop::PlanetaryMeshRecord) -> f64| {
+        let name = planetary_mesh_name(model, j);
+        let col = |f: &dyn Fn(&crate::study::wear_loop::UpdateRecord) -> f64| {
             run.updates.iter().map(|u| f(&u.meshes[j])).collect()
         };
         t = t
@@ -100,7 +95,10 @@ pub fn mesh_table(model: &PlanetaryWearModel, run: &PlanetaryWearRun) -> Table {
                 &format!("max_wear_gear_{name}_um"),
                 col(&|r| r.wear.max_gear_m() * 1e6),
             )
-            .col(&format!("mean_force_{name}_n"), col(&|r| r.mean_force_n));
+            .col(
+                &format!("mean_force_{name}_n"),
+                col(&|r| r.summary.mesh_force_mean_n),
+            );
     }
     t
 }

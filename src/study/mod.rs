@@ -17,6 +17,7 @@ pub mod planetary_dynamics;
 pub mod planetary_lumped;
 pub mod planetary_signals;
 pub mod planetary_wear;
+pub mod planetary_wear_check;
 pub mod planetary_wear_loop;
 pub mod signal_record;
 pub mod sweep;

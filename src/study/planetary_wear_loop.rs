@@ -17,32 +17,20 @@
 //! response not found, stops the run (the records so far are kept).
 
 use super::planetary_wear::{member_flanks, new_teeth, wear_gaps, MemberFlank, PlanetaryWearModel};
-use super::wear_loop::{fastest_block, StopKind, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION};
+use super::wear_loop::{
+    fastest_block, StopKind, UpdateRecord, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION,
+};
+use crate::dynamics::summary::ResponseSummary;
 use crate::wear::{WearIncrement, WearState};
-
-/// One mesh at one update: its wear, the increment per pinion cycle its response gives,
-/// and its mean and largest force.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanetaryMeshRecord {
-    /// The mesh's wear; `cycles` are its pinion's revolutions relative to the carrier.
-    pub wear: WearState,
-    /// Archard wear per pinion cycle (pinion and gear flank).
-    pub increment: WearIncrement,
-    /// Mean force over the period, N.
-    pub mean_force_n: f64,
-    /// Largest force over the period, N.
-    pub max_force_n: f64,
-    /// Share of the period the mesh is out of contact.
-    pub contact_loss_fraction: f64,
-}
 
 /// One update of the set: every mesh's record at one count of input cycles.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlanetaryUpdate {
     /// Revolutions of the input member.
     pub input_cycles: f64,
-    /// Every mesh's record (sun meshes 1..N, then ring meshes).
-    pub meshes: Vec<PlanetaryMeshRecord>,
+    /// Every mesh's record (sun meshes 1..N, then ring meshes), each as a single pair's
+    /// update record ([`mesh_record`]): what a mesh's checkpoint log holds.
+    pub meshes: Vec<UpdateRecord>,
     /// The member flank (index into [`PlanetaryUpdate::flanks`]) whose threshold cut the
     /// block that led here; None when it was m cycles or what remained of the total.
     pub limited_by: Option<usize>,
@@ -52,7 +40,7 @@ impl PlanetaryUpdate {
     /// Every member flank at this update (`planetary_wear::member_flanks`).
     pub fn flanks(&self, model: &PlanetaryWearModel) -> Vec<MemberFlank> {
         let wears: Vec<WearState> = self.meshes.iter().map(|m| m.wear.clone()).collect();
-        let inc: Vec<WearIncrement> = self.meshes.iter().map(|m| m.increment.clone()).collect();
+        let inc: Vec<WearIncrement> = self.meshes.iter().map(|m| m.increment()).collect();
         member_flanks(model, &wears, &inc)
     }
 }
@@ -117,19 +105,45 @@ pub fn update_of(
                 StopKind::ModelValidity,
             ));
         }
-        meshes.push(PlanetaryMeshRecord {
-            increment: model.mesh_increment(j, &h, &gaps[j]),
-            wear,
-            mean_force_n: f.iter().sum::<f64>() / samples,
-            max_force_n: f.iter().fold(0.0_f64, |a, b| a.max(*b)),
-            contact_loss_fraction: loss,
-        });
+        meshes.push(mesh_record(wear, model.mesh_increment(j, &h, &gaps[j]), &f));
     }
     Ok(PlanetaryUpdate {
         input_cycles,
         meshes,
         limited_by,
     })
+}
+
+/// A mesh's record at an update, in the single pair's form (`wear_loop::UpdateRecord`, so
+/// that its checkpoint log is an ordinary one: `store::part_logs`): its wear, its
+/// increment per pinion cycle, and of its response summary the mean, largest and
+/// smallest force `forces_n` (N, over the period's samples) and their dynamic factor
+/// (largest / mean; 0 for a mesh that carries nothing). The rest is left empty: the set's
+/// model has no friction (roughness 0, no friction figures), no transmission error per
+/// mesh, keeps no path loads (the figures read the wear profiles) and starts every
+/// steady state afresh (no end state).
+pub fn mesh_record(wear: WearState, increment: WearIncrement, forces_n: &[f64]) -> UpdateRecord {
+    let samples = forces_n.len().max(1) as f64;
+    let mean = forces_n.iter().sum::<f64>() / samples;
+    let max = forces_n.iter().fold(0.0_f64, |a, b| a.max(*b));
+    let min = forces_n.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+    UpdateRecord {
+        wear,
+        roughness_um: 0.0,
+        summary: ResponseSummary {
+            mesh_force_mean_n: mean,
+            mesh_force_max_n: max,
+            mesh_force_min_n: if min.is_finite() { min } else { 0.0 },
+            dynamic_factor: if mean > 0.0 { max / mean } else { 0.0 },
+            ..Default::default()
+        },
+        increment_pinion_m: increment.pinion_m,
+        increment_gear_m: increment.gear_m,
+        increment_teeth: None,
+        path_rho1_m: Vec::new(),
+        path_load_n: Vec::new(),
+        end_state: None,
+    }
 }
 
 /// The block after `last` (paper eq. 17 per member flank, see the module docs): the input
@@ -158,7 +172,7 @@ pub fn next_block(
         .map(|(j, r)| {
             let mut s = r.wear.clone();
             let c = model.pinion_cycles_per_input[model.kind_of(j).0];
-            s.advance(&r.increment, n * c);
+            s.advance(&r.increment(), n * c);
             s
         })
         .collect();

@@ -5,6 +5,7 @@ pub mod figures;
 pub mod linear;
 pub mod paper;
 pub mod planetary;
+pub mod resume;
 pub mod train;
 
 use std::path::Path;

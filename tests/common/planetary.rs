@@ -27,18 +27,29 @@ pub fn lin_parker_lumped(carrier_torsional_nm_per_rad: f64) -> String {
 /// `gearwear STUDY -q` on the case `text` in a fresh folder: the folder (kept alive; the
 /// run is in `out`) and `summary.json`; the run must succeed.
 pub fn run_case(study: &str, text: &str) -> (tempfile::TempDir, serde_json::Value) {
+    run_case_with(study, text, &[])
+}
+
+/// As [`run_case`], with the further arguments `extra` (e.g. `--mode quasi-static`).
+pub fn run_case_with(
+    study: &str,
+    text: &str,
+    extra: &[&str],
+) -> (tempfile::TempDir, serde_json::Value) {
     let d = tempfile::tempdir().unwrap();
     let case = d.path().join("case.toml");
     std::fs::write(&case, text).unwrap();
     let out = d.path().join("out");
-    let o = super::gearwear(&[
+    let mut a = vec![
         study,
         "-q",
         "--config",
         case.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
-    ]);
+    ];
+    a.extend(extra);
+    let o = super::gearwear(&a);
     assert_eq!(o.status.code(), Some(0), "{}", super::stderr(&o));
     let s = std::fs::read_to_string(out.join("summary.json")).unwrap();
     (d, serde_json::from_str(&s).unwrap())

@@ -96,3 +96,14 @@ pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) ->
     .max(1.0);
     1.0 + (wear.total_cycles / block).ceil()
 }
+
+/// Largest size a mesh's checkpoint log of a planetary wear study may have when read
+/// back, bytes: 16 times (the margin `budget::max_checkpoint_bytes` takes for a pair) the
+/// study's updates ([`planetary_wear_updates`]) of 4 G + 16 numbers each (a mesh's wear
+/// and increment on both flanks over its G grid points, its summary) at 32 bytes a number
+/// in JSON with its checksum, and at least 64 MiB.
+pub fn max_planetary_checkpoint_bytes(model: &PlanetaryWearModel, wear: &WearSection) -> u64 {
+    let numbers = 4.0 * wear.points_per_profile.max(2) as f64 + 16.0;
+    let bytes = 16.0 * planetary_wear_updates(model, wear) * numbers * 32.0;
+    bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
+}
