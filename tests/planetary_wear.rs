@@ -99,6 +99,30 @@ fn identical_planets_wear_alike() {
                     }
                 }
             }
+            // The figures' data: every planet's flank profile (the last update, along
+            // its mesh's path) and largest depth at every update alike, as above.
+            for (fig, stem) in [("wear_profiles", ""), ("wear_history", "max_wear_")] {
+                assert!(dir.join(format!("{fig}_{mode}.png")).exists());
+                let (head, rows) = common::read_csv(&dir.join(format!("csv/{fig}_{mode}.csv")));
+                for side in ["sun_side", "ring_side"] {
+                    let col = |p: usize| -> Vec<f64> {
+                        let name = format!("{stem}planet_{p}_{side}_um");
+                        let i = head.iter().position(|h| *h == name).unwrap();
+                        rows.iter().map(|r| r[i].parse().unwrap()).collect()
+                    };
+                    let first = col(1);
+                    let peak = first.iter().fold(0.0_f64, |m, x| m.max(*x));
+                    assert!(peak > 0.0, "{fig} {mode} {side}: no wear drawn");
+                    for p in 2..=planets {
+                        for (a, b) in col(p).iter().zip(&first) {
+                            assert!(
+                                (a - b).abs() <= tol * peak,
+                                "{fig} {mode} planet {p} {side}"
+                            );
+                        }
+                    }
+                }
+            }
         }
     }
 }

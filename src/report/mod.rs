@@ -37,6 +37,7 @@ pub mod sweep_figure;
 pub mod teeth;
 pub mod wear;
 pub mod wear_planetary;
+pub mod wear_planetary_figures;
 pub mod wear_train;
 pub mod worn_profile;
 

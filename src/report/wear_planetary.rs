@@ -13,6 +13,9 @@
 //!   every planet's sun-side depth, the ring mesh's rho1 (the planet's, mm) with every
 //!   planet's ring-side depth and the ring's (µm).
 //!
+//! Figures (`super::wear_planetary_figures`): `wear_history_MODE.png` and
+//! `wear_profiles_MODE.png`, each with its data under `csv/`.
+//!
 //! `summary.json`: `members` (per member its teeth, tooth contacts per input revolution
 //! and per mode its final largest depth, volume and each flank's), the meshes' pinion
 //! revolutions per input revolution, the input cycles and updates per mode,
@@ -20,26 +23,13 @@
 //! stops and the warnings.
 
 use super::artifacts::Artifacts;
+use super::wear_planetary_figures::{flank_stem as stem, max_of};
 use crate::format::shown;
 use crate::io::Table;
 use crate::study::planetary_wear::{contacts_per_input, MemberFlank, PlanetaryWearModel};
 use crate::study::planetary_wear_check::planetary_mesh_name;
 use crate::study::planetary_wear_loop::PlanetaryWearRun;
 use serde_json::{json, Map, Value};
-
-/// A flank's column stem, e.g. `planet_2_ring_side`.
-fn stem(f: &MemberFlank) -> String {
-    if f.member == f.flank {
-        f.member.clone()
-    } else {
-        format!("{}_{}", f.member, f.flank)
-    }
-}
-
-/// Largest entry, 0 for none.
-fn max_of(v: &[f64]) -> f64 {
-    v.iter().fold(0.0_f64, |a, b| a.max(*b))
-}
 
 /// `wear_history_MODE.csv` of a run (see the module docs).
 pub fn history_table(model: &PlanetaryWearModel, run: &PlanetaryWearRun) -> Table {
@@ -172,6 +162,12 @@ pub fn planetary_wear_artifacts(
             format!("wear_profiles_{mode}.csv"),
             profiles_table(model, run),
         );
+        if let Some((f, t)) = super::wear_planetary_figures::history_figure(model, run) {
+            a.figure_with_data(format!("wear_history_{mode}.png"), f, t);
+        }
+        if let Some((f, t)) = super::wear_planetary_figures::profiles_figure(model, run) {
+            a.figure_with_data(format!("wear_profiles_{mode}.png"), f, t);
+        }
         let Some(last) = run.updates.last() else {
             continue;
         };
