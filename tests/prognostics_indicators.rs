@@ -53,6 +53,7 @@ fn a_known_wear_coefficient_is_recovered_from_condition_indicator_trends() {
             pinion_m: adv(&r.wear.pinion_m, &r.increment_pinion_m),
             gear_m: adv(&r.wear.gear_m, &r.increment_gear_m),
             teeth: None,
+            slices: None,
         }
     };
     let exact: Vec<Vec<f64>> = OBS_CYCLES

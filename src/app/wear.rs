@@ -2,7 +2,8 @@
 //! checkpoint after every update when it has an output folder (and resumable from it);
 //! under a load spectrum it hands off to [`super::duty`], on a gear train to
 //! [`super::wear_train`], on a train under a spectrum to [`super::duty_train`], on a
-//! planetary set to [`super::wear_planetary`]. The runner it shares with the
+//! planetary set to [`super::wear_planetary`]. A helical pair runs on its planar model
+//! with its slices' wear (`study::helical_wear`, docs/MODEL.md 11.3). The runner it shares with the
 //! paper's study and the spectrum's runs is [`super::wear_runs`].
 
 use super::observer::Observer;
@@ -69,7 +70,15 @@ impl Job for WearJob {
                 observer,
             );
         }
-        let model = build_model(&self.case, observer)?;
+        let model = if self.case.gear.helix_angle_deg != 0.0 && self.case.stage.is_empty() {
+            let m = crate::study::Model::helical_from_case(&self.case)?;
+            for w in &m.warnings {
+                observer.warning(w);
+            }
+            m
+        } else {
+            build_model(&self.case, observer)?
+        };
         let meta = RunMetadata::of_model(self.name(), &model);
         let runs = run_modes(
             self.name(),

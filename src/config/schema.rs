@@ -208,7 +208,7 @@ pub const KEYS: &[KeySpec] = &[
       "As for the pinion."),
     k("gear.tool_tip_radius_coefficient", "-", Num(Range::closed(0.0, 0.6)), "Rack-cutter tip radius / m: the root fillet, the undercut check and Sainsot's theta_f (ISO 53 profile A: 0.38).",
       "ISO 53 racks use 0.25-0.4; a larger radius no longer fits the rack's tip for usual dedendums."),
-    k("gear.helix_angle_deg", "deg", Num(Range::below(0.0, 45.0)), "Helix angle beta at the reference cylinder; 0 (default) is a spur pair. A helical pair reads the other `gear` keys as the normal section (module m_n, pressure angle alpha_n, shifts x_n); `gearwear stiffness` and `gearwear dynamics` (planar model: slice mesh stiffness, axial force reported) take it; the wear and signal studies refuse it.",
+    k("gear.helix_angle_deg", "deg", Num(Range::below(0.0, 45.0)), "Helix angle beta at the reference cylinder; 0 (default) is a spur pair. A helical pair reads the other `gear` keys as the normal section (module m_n, pressure angle alpha_n, shifts x_n); `gearwear stiffness`, `gearwear dynamics` (planar model: slice mesh stiffness, axial force reported) and `gearwear wear` (Archard wear per face slice, docs/MODEL.md 11.3) take it; `run`, the signal studies and the others refuse it.",
       "Parallel-axis helical gears run up to about 45 deg; ISO 6336's helical stiffness is not made for more."),
     k("gear.helix_hand_pinion", "-", Choice(&["left", "right"]), "Hand of the pinion's helix; the gear takes the other. Ignored at a helix angle of 0.",
       "-"),

@@ -318,6 +318,7 @@ mod tests {
                 pinion_m: h.to_vec(),
                 gear_m: vec![0.0; 2],
                 teeth: None,
+                slices: None,
             },
             roughness_um: 0.2,
             summary: crate::dynamics::summary::ResponseSummary {
@@ -327,6 +328,7 @@ mod tests {
             increment_pinion_m: inc.to_vec(),
             increment_gear_m: vec![0.0; 2],
             increment_teeth: None,
+            increment_slices: None,
             path_rho1_m: vec![],
             path_load_n: vec![],
             end_state: None,

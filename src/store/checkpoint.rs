@@ -331,6 +331,7 @@ mod tests {
                 increment_pinion_m: vec![0.0; 3],
                 increment_gear_m: vec![0.0; 3],
                 increment_teeth: None,
+                increment_slices: None,
                 path_rho1_m: vec![],
                 path_load_n: vec![],
                 // Digits JSON must carry exactly for a resumed run to match.

@@ -7,11 +7,14 @@
 
 use super::model_error::ModelError;
 use crate::config::case::{Case, GearSection, HelixHand};
+use crate::dynamics::excitation::PairGap;
 use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
+use crate::geometry::ProfileGrid;
 use crate::stiffness::face_load::{FaceLoad, LeadGap};
 use crate::stiffness::helical::SliceMeshStiffness;
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
+use crate::wear::WearState;
 
 /// A helical case's stiffness model, built once.
 #[derive(Debug, Clone)]
@@ -80,6 +83,8 @@ pub struct HelicalDynamics {
     pub pair: HelicalPair,
     /// Slice count N of the mesh stiffness.
     pub slices: usize,
+    /// The slice model (its slices wear one by one, `study::helical_wear`).
+    pub slice_model: SliceMeshStiffness,
     /// Mean of the slice model's mesh stiffness over a mesh period, N/m (N times a slice's,
     /// exact for its spline), beside the line table's (the model's `mesh`).
     pub slice_mean_stiffness_n_per_m: f64,
@@ -106,6 +111,50 @@ impl HelicalDynamics {
             Hand::Left => 1.0,
         }
     }
+
+    /// The worn slices as each contact line's gap on the line pair, m (docs/MODEL.md 11.3,
+    /// `study::helical_wear`): the stiffness-weighted mean of the line's slices' wear gaps,
+    ///   e_l(rho) = sum_i k_i g_j(i)(rho + o_i) / sum_i k_i,
+    /// at the wear grid's spacing over the line pair's path. One slice is its own line: the
+    /// wear state's own gap (its mean over one slice is the slice).
+    pub fn wear_gap(&self, grid: &ProfileGrid, wear: &WearState) -> PairGap {
+        if wear.slices.is_none() || self.slices == 1 {
+            return wear.pair_gap(grid);
+        }
+        let s = &self.slice_model;
+        let t = &s.pair().transverse;
+        let lines = s.line_grid();
+        let spacing = grid.spacing_m;
+        let points = (lines.line.path_length_m() / spacing).ceil() as usize + 1;
+        let gap = (0..points)
+            .map(|p| {
+                let rho = lines.line.rho_start_m + p as f64 * spacing;
+                let (mut kg, mut k) = (0.0, 0.0);
+                for (i, o) in lines.offsets.iter().enumerate() {
+                    let r = rho + o;
+                    if (t.rho_start_m..=t.rho_end_m).contains(&r) {
+                        let ki = s.slice().pair_stiffness_n_per_m(r);
+                        kg += ki * slice_gap_m(grid, wear, s.face_slice_of_line_slice(i), r);
+                        k += ki;
+                    }
+                }
+                if k > 0.0 {
+                    kg / k
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        PairGap::new(lines.line.rho_start_m, spacing, gap)
+    }
+}
+
+/// Wear gap of face slice `j` at transverse position `rho_m`: pinion plus gear wear at the
+/// conjugate points, m (0 with no per-slice wear).
+pub(crate) fn slice_gap_m(grid: &ProfileGrid, wear: &WearState, j: usize, rho_m: f64) -> f64 {
+    wear.slices.as_ref().map_or(0.0, |s| {
+        grid.interpolate(&s.pinion_m[j], rho_m) + grid.interpolate(&s.gear_m[j], rho_m)
+    })
 }
 
 /// What the planar model of a helical pair with lead gaps keeps for its face load outputs

@@ -142,8 +142,9 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 
 /// Why a helical case cannot be modelled here: the model is planar (rotation and lateral
 /// motion of spur pairs); a helical pair's axial force and tilting moments have no degrees
-/// of freedom yet. Every study built on the model (dynamics, wear, signals, datasets,
-/// sweeps, calibration, prognostics) refuses it rather than give a spur result.
+/// of freedom yet. Every study built on this constructor (signals, datasets, sweeps,
+/// calibration, prognostics, `run`) refuses it rather than give a spur result; `dynamics`
+/// and `wear` build the planar model (`Model::helical_from_case`).
 fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
     if is_train {
         return format!(
@@ -151,7 +152,7 @@ fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
         );
     }
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`; axial and tilting motion, wear per slice and signals are not built), so it would give a spur result; `gearwear stiffness` and `gearwear dynamics` take helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics` and the wear per slice of `gearwear wear`; axial and tilting motion, signals and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics` and `gearwear wear` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 
@@ -404,8 +405,12 @@ impl Model {
         self.teeth.as_ref().map(|t| t.mesh_for(wear))
     }
 
-    /// New teeth: a wear state with a profile per tooth when the teeth differ.
+    /// New teeth: a wear state with a profile per tooth when the teeth differ, per face
+    /// slice for a helical pair.
     pub fn new_wear_state(&self) -> WearState {
+        if let Some(h) = &self.helical {
+            return WearState::per_slice(self.grid.len(), h.slices);
+        }
         match &self.teeth {
             Some(_) => WearState::per_tooth(
                 self.grid.len(),
@@ -476,15 +481,25 @@ impl Model {
         start: Option<&[f64]>,
         settings: &SteadyStateSettings,
     ) -> Result<DynamicResponse, DynamicsError> {
-        let gap = wear.pair_gap(&self.grid);
+        let gap = self.wear_gap(wear);
         let teeth = self.tooth_mesh(wear);
         let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_steady_state_from(&sys, settings, start)
     }
 
+    /// The gap a wear state opens in the model's mesh: the pair's (`WearState::pair_gap`),
+    /// or a helical pair's contact lines' from its worn slices
+    /// (`study::helical_wear`, docs/MODEL.md 11.3).
+    pub fn wear_gap(&self, wear: &WearState) -> PairGap {
+        match &self.helical {
+            Some(h) => h.wear_gap(&self.grid, wear),
+            None => wear.pair_gap(&self.grid),
+        }
+    }
+
     /// Quasi-static response of the worn pair.
     pub fn quasi_static(&self, wear: &WearState, external: &ExternalError) -> DynamicResponse {
-        let gap = wear.pair_gap(&self.grid);
+        let gap = self.wear_gap(wear);
         let teeth = self.tooth_mesh(wear);
         let sys = self.system_for(&gap, external, self.roughness_for(wear), teeth.as_ref());
         solve_quasi_static(&sys, self.settings.steps_per_mesh_period)

@@ -140,6 +140,7 @@ pub fn mesh_record(wear: WearState, increment: WearIncrement, forces_n: &[f64]) 
         increment_pinion_m: increment.pinion_m,
         increment_gear_m: increment.gear_m,
         increment_teeth: None,
+        increment_slices: None,
         path_rho1_m: Vec::new(),
         path_load_n: Vec::new(),
         end_state: None,

@@ -28,7 +28,7 @@ use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
 use crate::geometry::ProfileGrid;
 use crate::wear::per_tooth::per_tooth_wear;
-use crate::wear::{per_cycle_wear, ToothWear, WearIncrement, WearState};
+use crate::wear::{per_cycle_wear, SliceWear, ToothWear, WearIncrement, WearState};
 use serde::{Deserialize, Serialize};
 
 /// Which solver feeds the wear model.
@@ -76,6 +76,10 @@ pub struct UpdateRecord {
     /// Per-tooth increments of a tooth-resolved mesh (the two above are their means).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub increment_teeth: Option<ToothWear>,
+    /// Per-slice increments of a helical pair (docs/MODEL.md 11.3; the two above are their
+    /// means over the face slices).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub increment_slices: Option<SliceWear>,
     /// Mesh force and pair load along the path (rho1, load) for the wear-depth figures
     /// (with a tooth-resolved mesh: the mean load over the engagements at the grid points).
     pub path_rho1_m: Vec<f64>,
@@ -93,11 +97,15 @@ pub type ProfileAndIncrement<'a> = (&'a [f64], &'a [f64]);
 
 impl UpdateRecord {
     /// The pinion profiles the record holds with their per-cycle wear: every tooth's when
-    /// the mesh is tooth-resolved (the deepest wear is on one tooth), else the common one.
+    /// the mesh is tooth-resolved (the deepest wear is on one tooth), every face slice's
+    /// of a helical pair, else the common one.
     pub fn pinion_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
         match (&self.wear.teeth, &self.increment_teeth) {
             (Some(h), Some(d)) => pairs(&h.pinion_m, &d.pinion_m),
-            _ => vec![(&self.wear.pinion_m, &self.increment_pinion_m)],
+            _ => match (&self.wear.slices, &self.increment_slices) {
+                (Some(h), Some(d)) => pairs(&h.pinion_m, &d.pinion_m),
+                _ => vec![(&self.wear.pinion_m, &self.increment_pinion_m)],
+            },
         }
     }
 
@@ -117,6 +125,7 @@ impl UpdateRecord {
             pinion_m: self.increment_pinion_m.clone(),
             gear_m: self.increment_gear_m.clone(),
             teeth: self.increment_teeth.clone(),
+            slices: self.increment_slices.clone(),
             ..Default::default()
         }
     }
@@ -141,6 +150,31 @@ impl UpdateRecord {
                 return Some(format!("{name} holds {x}, not a finite value >= 0"));
             }
         }
+        let slices = [
+            (
+                "pinion wear",
+                self.wear.slices.as_ref().map(|s| &s.pinion_m),
+            ),
+            ("gear wear", self.wear.slices.as_ref().map(|s| &s.gear_m)),
+            (
+                "pinion wear increment",
+                self.increment_slices.as_ref().map(|s| &s.pinion_m),
+            ),
+            (
+                "gear wear increment",
+                self.increment_slices.as_ref().map(|s| &s.gear_m),
+            ),
+        ];
+        for (name, profiles) in slices {
+            for (j, v) in profiles.into_iter().flatten().enumerate() {
+                if v.len() != n || v.iter().any(|x| !x.is_finite() || *x < 0.0) {
+                    return Some(format!(
+                        "{name} of face slice {j} has {} points or a value that is not finite and >= 0 (the profile grid has {n})",
+                        v.len()
+                    ));
+                }
+            }
+        }
         None
     }
 
@@ -148,7 +182,10 @@ impl UpdateRecord {
     pub fn gear_profiles(&self) -> Vec<ProfileAndIncrement<'_>> {
         match (&self.wear.teeth, &self.increment_teeth) {
             (Some(h), Some(d)) => pairs(&h.gear_m, &d.gear_m),
-            _ => vec![(&self.wear.gear_m, &self.increment_gear_m)],
+            _ => match (&self.wear.slices, &self.increment_slices) {
+                (Some(h), Some(d)) => pairs(&h.gear_m, &d.gear_m),
+                _ => vec![(&self.wear.gear_m, &self.increment_gear_m)],
+            },
         }
     }
 }
@@ -311,6 +348,21 @@ pub type DynamicSolve<'a> =
 /// eq. 14-17; per tooth when the mesh is tooth-resolved) and the state the next search
 /// starts from.
 pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
+    if let Some(h) = &model.helical {
+        let (inc, load) = super::helical_wear::record_parts(model, h, r, &wear);
+        return UpdateRecord {
+            roughness_um: model.roughness_for(&wear),
+            wear,
+            summary: ResponseSummary::of(r),
+            increment_pinion_m: inc.pinion_m,
+            increment_gear_m: inc.gear_m,
+            increment_teeth: None,
+            increment_slices: inc.slices,
+            path_rho1_m: model.grid.rho_pinion_m.clone(),
+            path_load_n: load,
+            end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
+        };
+    }
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
     let k = model.case.wear.coefficient_m2_per_n;
     if model.teeth.is_none() {
@@ -346,6 +398,7 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
         increment_pinion_m: inc.pinion_m,
         increment_gear_m: inc.gear_m,
         increment_teeth: inc.teeth,
+        increment_slices: None,
         path_rho1_m,
         path_load_n,
         end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
@@ -388,6 +441,7 @@ pub(crate) fn mesh_record(
         increment_pinion_m: inc.pinion_m,
         increment_gear_m: inc.gear_m,
         increment_teeth: inc.teeth,
+        increment_slices: None,
         path_rho1_m: path.iter().map(|p| p.rho1_m).collect(),
         path_load_n: path.iter().map(|p| p.load_n).collect(),
         end_state: (mode == WearMode::Dynamic && m == 0).then(|| r.end_state.to_vec()),

@@ -8,7 +8,7 @@
 //! each pinion tooth once and each gear tooth z1/z2 times on average, hence the factor
 //! z1/z2 on the gear (eq. 17, docs/PAPER_NOTES.md: eq. 16 has a typo).
 
-use super::tooth_wear::ToothWear;
+use super::tooth_wear::{SliceWear, ToothWear};
 use crate::dynamics::response::{interpolate_path, PathSample};
 use crate::geometry::ProfileGrid;
 
@@ -26,19 +26,25 @@ pub struct WearIncrement {
     /// Per-tooth increments of a tooth-resolved mesh (`pinion_m`, `gear_m` then hold
     /// their means over the teeth).
     pub teeth: Option<ToothWear>,
+    /// Per-slice increments of a helical pair (`pinion_m`, `gear_m` then hold their means
+    /// over the face slices).
+    pub slices: Option<SliceWear>,
 }
 
 impl WearIncrement {
-    /// Largest increment on either profile, m per cycle (of any tooth when per tooth).
+    /// Largest increment on either profile, m per cycle (of any tooth when per tooth, of
+    /// any face slice when per slice).
     pub fn max_m(&self) -> f64 {
         let common = self
             .pinion_m
             .iter()
             .chain(&self.gear_m)
             .fold(0.0_f64, |m, x| m.max(*x));
-        self.teeth
+        let teeth = self
+            .teeth
             .as_ref()
-            .map_or(common, |t| t.max_m().max(common))
+            .map_or(common, |t| t.max_m().max(common));
+        self.slices.as_ref().map_or(teeth, |s| s.max_m().max(teeth))
     }
 }
 
@@ -59,6 +65,7 @@ pub fn per_cycle_wear(
         sliding_pinion_m: vec![0.0; n],
         sliding_gear_m: vec![0.0; n],
         teeth: None,
+        slices: None,
     };
     for i in 0..n {
         let s = interpolate_path(path, grid.rho_pinion_m[i]);

@@ -10,4 +10,4 @@ pub(crate) mod tooth_wear;
 pub use archard::{per_cycle_wear, WearIncrement};
 pub use profile_wear::WearState;
 pub use roughness::RoughnessLaw;
-pub use tooth_wear::ToothWear;
+pub use tooth_wear::{SliceWear, ToothWear};

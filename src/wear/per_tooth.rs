@@ -82,6 +82,7 @@ pub fn per_tooth_wear(
         sliding_pinion_m: Vec::new(),
         sliding_gear_m: Vec::new(),
         teeth: Some(teeth),
+        slices: None,
     }
 }
 

@@ -7,7 +7,7 @@ use crate::stiffness::mesh::MeshStiffness;
 use serde::{Deserialize, Serialize};
 
 use super::archard::WearIncrement;
-use super::tooth_wear::{max_of, mean_profile, ToothWear};
+use super::tooth_wear::{max_of, mean_profile, SliceWear, ToothWear};
 
 /// Accumulated wear depth at each grid point (pinion point i and its conjugate gear
 /// point i), m, after `cycles` pinion cycles.
@@ -25,6 +25,10 @@ pub struct WearState {
     /// Per-tooth profiles of a tooth-resolved mesh; `None` when all teeth wear alike.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub teeth: Option<ToothWear>,
+    /// Per-slice profiles of a helical pair (docs/MODEL.md 11.3); `pinion_m` and `gear_m`
+    /// are then the mean over the face slices. `None` for a spur pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slices: Option<SliceWear>,
 }
 
 impl WearState {
@@ -35,6 +39,15 @@ impl WearState {
             pinion_m: vec![0.0; points],
             gear_m: vec![0.0; points],
             teeth: None,
+            slices: None,
+        }
+    }
+
+    /// No wear on any of the `slices` face slices of a helical pair (`points` grid points).
+    pub fn per_slice(points: usize, slices: usize) -> Self {
+        Self {
+            slices: Some(SliceWear::new(points, slices, slices)),
+            ..Self::new(points)
         }
     }
 
@@ -47,25 +60,33 @@ impl WearState {
     }
 
     /// Paper eq. (17): hold the per-cycle increment for `cycles` cycles (every tooth its
-    /// own when both state and increment are per tooth).
+    /// own when both state and increment are per tooth, every face slice its own when
+    /// both are per slice).
     pub fn advance(&mut self, inc: &WearIncrement, cycles: f64) {
         let add = |h: &mut [f64], d: &[f64]| {
             for (h, d) in h.iter_mut().zip(d) {
                 *h += cycles * d;
             }
         };
-        match (&mut self.teeth, &inc.teeth) {
-            (Some(t), Some(i)) => {
-                for (h, d) in t.pinion_m.iter_mut().zip(&i.pinion_m) {
-                    add(h, d);
-                }
-                for (h, d) in t.gear_m.iter_mut().zip(&i.gear_m) {
-                    add(h, d);
-                }
-                self.pinion_m = mean_profile(&t.pinion_m);
-                self.gear_m = mean_profile(&t.gear_m);
+        // Each profile of a per-tooth or per-slice state advanced by its own increment;
+        // the common profiles become their means.
+        let each = |own: &mut ToothWear, by: &ToothWear| {
+            for (h, d) in own.pinion_m.iter_mut().zip(&by.pinion_m) {
+                add(h, d);
             }
-            _ => {
+            for (h, d) in own.gear_m.iter_mut().zip(&by.gear_m) {
+                add(h, d);
+            }
+            (mean_profile(&own.pinion_m), mean_profile(&own.gear_m))
+        };
+        let means = match (&mut self.slices, &inc.slices, &mut self.teeth, &inc.teeth) {
+            (Some(s), Some(i), _, _) => Some(each(s, i)),
+            (_, _, Some(t), Some(i)) => Some(each(t, i)),
+            _ => None,
+        };
+        match means {
+            Some((p, g)) => (self.pinion_m, self.gear_m) = (p, g),
+            None => {
                 add(&mut self.pinion_m, &inc.pinion_m);
                 add(&mut self.gear_m, &inc.gear_m);
             }
@@ -73,19 +94,23 @@ impl WearState {
         self.cycles += cycles;
     }
 
-    /// Largest pinion wear depth, m (over every tooth when per tooth).
+    /// Largest pinion wear depth, m (over every tooth when per tooth, every face slice
+    /// when per slice).
     pub fn max_pinion_m(&self) -> f64 {
-        match &self.teeth {
-            Some(t) => max_of(&t.pinion_m),
-            None => self.pinion_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
+        match (&self.teeth, &self.slices) {
+            (Some(t), _) => max_of(&t.pinion_m),
+            (None, Some(s)) => max_of(&s.pinion_m),
+            (None, None) => self.pinion_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
         }
     }
 
-    /// Largest gear wear depth, m (over every tooth when per tooth).
+    /// Largest gear wear depth, m (over every tooth when per tooth, every face slice
+    /// when per slice).
     pub fn max_gear_m(&self) -> f64 {
-        match &self.teeth {
-            Some(t) => max_of(&t.gear_m),
-            None => self.gear_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
+        match (&self.teeth, &self.slices) {
+            (Some(t), _) => max_of(&t.gear_m),
+            (None, Some(s)) => max_of(&s.gear_m),
+            (None, None) => self.gear_m.iter().fold(0.0_f64, |m, x| m.max(*x)),
         }
     }
 
@@ -114,6 +139,10 @@ impl WearState {
             pinion_m: scale(&self.pinion_m),
             gear_m: scale(&self.gear_m),
             teeth: self.teeth.as_ref().map(|t| ToothWear {
+                pinion_m: t.pinion_m.iter().map(|p| scale(p)).collect(),
+                gear_m: t.gear_m.iter().map(|p| scale(p)).collect(),
+            }),
+            slices: self.slices.as_ref().map(|t| SliceWear {
                 pinion_m: t.pinion_m.iter().map(|p| scale(p)).collect(),
                 gear_m: t.gear_m.iter().map(|p| scale(p)).collect(),
             }),

@@ -27,6 +27,12 @@ impl ToothWear {
     }
 }
 
+/// Wear of every face slice of a helical pair (docs/MODEL.md 11.3) on the shared grid:
+/// the shape of [`ToothWear`] with the index the face slice j (at y_j = (j + 1/2) b / N
+/// from the face end y = 0, `SliceMeshStiffness::positions_m`) instead of the tooth, m
+/// (slice, point).
+pub type SliceWear = ToothWear;
+
 /// Largest entry of every profile, m (0 for none).
 pub(crate) fn max_of(profiles: &[Vec<f64>]) -> f64 {
     profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))

@@ -244,6 +244,15 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         p.s_dyn,
         p.s,
     ));
+    if matches!(job, Job::Wear { .. }) {
+        terms.extend(super::helical::budget_term(
+            case,
+            (c.work.dynamic_modes * c.u_d, c.work.quasi_modes * c.u_q),
+            c.records,
+            (p.s_dyn, p.s),
+            (CHECKPOINT_BYTES_PER_NUMBER, DISK_BYTES_PER_S),
+        ));
+    }
     Estimate {
         steps_per_evaluation: p.s_dyn * (p.p_c + p.p_e),
         steps_to_give_up: if c.evals > 0.0 {
@@ -379,7 +388,8 @@ fn record_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
 /// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
 /// never read beyond what the run could have written: 16 times the estimated number of
 /// updates (the estimate takes the nominal load; a run's actual updates stay well within
-/// that margin) of (4 G + 4 S_d) numbers at `CHECKPOINT_BYTES_PER_NUMBER` bytes, and at
+/// that margin) of (4 G + 4 S_d) numbers (a helical pair's wear maps add 4 N G,
+/// `super::helical::record_numbers`) at `CHECKPOINT_BYTES_PER_NUMBER` bytes, and at
 /// least 64 MiB.
 pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
     let dynamic = mode == WearMode::Dynamic;
@@ -396,7 +406,9 @@ pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
         e.wear_updates_quasi_static
     };
     let s_dyn = dynamic_steps_per_period(&case.numerics);
-    let numbers = 4.0 * case.wear.points_per_profile as f64 + 4.0 * s_dyn;
+    let numbers = 4.0 * case.wear.points_per_profile as f64
+        + 4.0 * s_dyn
+        + super::helical::record_numbers(case);
     let bytes = 16.0 * updates * numbers * CHECKPOINT_BYTES_PER_NUMBER;
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }

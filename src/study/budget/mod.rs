@@ -8,6 +8,7 @@
 //! - [`case_jobs`]: `stiffness`, `dynamics`, `wear`, `run` and one case of a sweep (the
 //!   formulas), and the most a wear checkpoint can hold;
 //! - [`teeth`]: what a tooth-resolved case adds to them;
+//! - [`helical`]: what a helical pair's wear per slice adds to `wear`;
 //! - [`sweep`]: `sweep` (sampled, not case by case) and `sweep-merge`;
 //! - [`signals`], [`dataset`], [`load_spectrum`]: those commands;
 //! - [`prognostics`]: `calibrate`, `predict` and `predict-merge`.
@@ -28,6 +29,7 @@ pub mod chains;
 pub mod cost;
 pub mod dataset;
 pub mod evaluation;
+pub mod helical;
 pub mod load_spectrum;
 pub mod planetary;
 pub mod prognostics;

@@ -1,0 +1,359 @@
+//! Wear of a helical pair slice by slice (`study::helical_wear`, docs/MODEL.md 11.3)
+//! checked against independent facts: the spur pair at beta = 0 with one slice, slices
+//! that differ only by a phase under a uniform load, the volume removed against Archard
+//! integrals computed here by hand from the slices' forces, the wear's place on the face
+//! under a crowning and a misalignment, and the refusals.
+
+mod common;
+
+use common::rejected;
+use gearwear::config::load_case;
+use gearwear::dynamics::response::{interpolate_path, PathSample};
+use gearwear::study::helical_wear::{slice_increment, slice_paths, slice_volumes_m3};
+use gearwear::study::wear_loop::{run_wear, solve, WearMode, WearRun};
+use gearwear::study::Model;
+use std::f64::consts::PI;
+
+fn sets(s: &[&str]) -> Vec<String> {
+    s.iter().map(|x| x.to_string()).collect()
+}
+
+fn helical(s: &[&str]) -> Model {
+    Model::helical_from_case(&load_case("", &sets(s)).expect("valid case")).expect("helical")
+}
+
+fn spur(s: &[&str]) -> Model {
+    Model::from_case(&load_case("", &sets(s)).expect("valid case")).expect("spur")
+}
+
+fn run(m: &Model, mode: WearMode) -> WearRun {
+    run_wear(m, WearRun::new(mode), &mut |_| Ok(())).expect("wear run")
+}
+
+/// Largest value of a profile.
+fn peak(v: &[f64]) -> f64 {
+    v.iter().fold(0.0_f64, |a, b| a.max(*b))
+}
+
+#[test]
+fn one_slice_at_beta_zero_is_the_spur_pair_bit_for_bit() {
+    // The slice model at beta = 0 with one slice is the spur pair of width b (its Hertz
+    // term times cos(0) = 1, the transverse section the normal one), and one slice is its
+    // own contact line, whose contacts are the response's path: the wear of every update
+    // is the spur pair's bit for bit, in both modes. Both on the nominal path and with the
+    // load shared by compression (the helical lines always are).
+    let common = [
+        "contact.path=\"nominal\"",
+        "contact.load_sharing=\"stiffness\"",
+        "wear.total_cycles=4e4",
+    ];
+    let mut h = common.to_vec();
+    h.extend(["gear.helix_angle_deg=0", "stiffness.slices=1"]);
+    for mode in [WearMode::QuasiStatic, WearMode::Dynamic] {
+        let (a, b) = (run(&spur(&common), mode), run(&helical(&h), mode));
+        assert_eq!(a.records.len(), b.records.len(), "{mode:?}");
+        for (ra, rb) in a.records.iter().zip(&b.records) {
+            assert_eq!(ra.wear.cycles, rb.wear.cycles, "{mode:?}");
+            assert_eq!(ra.wear.pinion_m, rb.wear.pinion_m, "{mode:?}");
+            assert_eq!(ra.wear.gear_m, rb.wear.gear_m, "{mode:?}");
+            let s = rb.wear.slices.as_ref().expect("per-slice wear");
+            assert_eq!(s.pinion_m[0], ra.wear.pinion_m, "{mode:?}");
+            assert_eq!(ra.increment_pinion_m, rb.increment_pinion_m, "{mode:?}");
+        }
+    }
+}
+
+#[test]
+fn under_a_uniform_load_every_slice_wears_alike() {
+    // beta = 15 deg and the face width of epsilon_beta = b sin(beta) / (pi m_n) = 1: the
+    // contact lines' total length is constant, so the slice model's stiffness varies only
+    // by the steps of single slices (Koksma's bound, docs/MODEL.md 11). Without a lead gap
+    // slice j at profile point rho carries k(rho) F / K(phi_j), its phase phi_j shifted by
+    // y_j tan(beta_b) / r_b1, and nothing else differs between slices (quasi-static: the
+    // nominal speeds; no friction, which would tilt the force balance by the sliding
+    // direction). Archard's depth at a point goes as the load (p0 and a each as its square
+    // root), so the slices' depths may differ by the relative swing of K, (max - min) / min,
+    // measured here on the slice model at 7200 phases; 1.1 x that allowed (the sampled
+    // extrema understate the true ones). The end points of the profile are left out: there
+    // each slice's first sample lies within one time step of the path's end, and the
+    // interpolation holds that sample's value.
+    let b_mm = PI * 2.0 / 15f64.to_radians().sin();
+    let bw = format!("gear.face_width_mm={b_mm}");
+    let m = helical(&["gear.helix_angle_deg=15", &bw, "friction.model=\"none\""]);
+    let hd = m.helical.as_ref().unwrap();
+    assert!((hd.pair.overlap_ratio - 1.0).abs() < 1e-12);
+    let (k_lo, k_hi) = hd.slice_model.sampled_extrema_n_per_m(7200);
+    let tol = 1.1 * (k_hi - k_lo) / k_lo;
+    assert!(tol < 2e-3, "the uniform case must be nearly uniform: {tol}");
+    let w = m.new_wear_state();
+    let r = solve(&m, WearMode::QuasiStatic, &w, None).unwrap();
+    let inc = slice_increment(&m, &slice_paths(&m, hd, &r, &w));
+    let s = inc.slices.unwrap();
+    let n = m.grid.len();
+    for (name, maps) in [("pinion", &s.pinion_m), ("gear", &s.gear_m)] {
+        for i in 1..n - 1 {
+            let (lo, hi) = maps
+                .iter()
+                .map(|p| p[i])
+                .fold((f64::INFINITY, 0.0_f64), |(a, b), x| (a.min(x), b.max(x)));
+            assert!(hi > 0.0, "{name} point {i} wears");
+            assert!(
+                (hi - lo) / lo <= tol,
+                "{name} point {i}: slices from {lo:e} to {hi:e}, beyond {tol:e}"
+            );
+        }
+    }
+}
+
+/// Slice j's Archard depth per pinion cycle at profile point rho (pinion, gear), by hand:
+/// its load interpolated between its samples, the Hertz line contact of width `width_m`
+/// (p0 = sqrt(w E* / (pi R)), a = sqrt(4 w R / (pi E*)), w the load per width), the
+/// sliding of single-point observation at the nominal speeds, eq. 17's z1/z2 on the gear.
+fn hand_depths(path: &[PathSample], rho1: f64, c: &Hand) -> (f64, f64) {
+    let (Some(first), Some(last)) = (path.first(), path.last()) else {
+        return (0.0, 0.0);
+    };
+    // Beyond the slice's first or last sample the bookkeeping holds that contact (its
+    // place, load and speeds): the nearest observation of the point.
+    let (rho1, load) = if rho1 < first.rho1_m {
+        (first.rho1_m, first.load_n)
+    } else if rho1 > last.rho1_m {
+        (last.rho1_m, last.load_n)
+    } else {
+        (rho1, interpolate_path(path, rho1).load_n)
+    };
+    let rho2 = c.n1n2 - rho1;
+    let radius = rho1 * rho2 / (rho1 + rho2);
+    let w = load / c.width_m;
+    let p0 = (w * c.e_star / (PI * radius)).sqrt();
+    let a = (4.0 * w * radius / (PI * c.e_star)).sqrt();
+    let (up, ug) = (c.wp * rho1, c.wg * rho2);
+    let slide = (up - ug).abs();
+    (
+        c.k * p0 * 2.0 * a * slide / up,
+        c.z1_z2 * c.k * p0 * 2.0 * a * slide / ug,
+    )
+}
+
+/// What [`hand_depths`] needs.
+struct Hand {
+    n1n2: f64,
+    width_m: f64,
+    e_star: f64,
+    wp: f64,
+    wg: f64,
+    k: f64,
+    z1_z2: f64,
+}
+
+#[test]
+fn the_volume_removed_is_the_sum_of_the_slices_archard_integrals() {
+    // Quasi-static (nominal speeds, known by hand: omega_p = 2 pi f, omega_g = omega_p
+    // z1/z2), beta = 15 deg, 400 slices, a crowning so that the slices differ. The first
+    // update's wear is the first block's cycles times the per-cycle wear of new teeth; its
+    // volume on one pinion and one gear flank must be that many times the sum over slices
+    // of (b/N) times the integral of the hand depth over the involute's arc length
+    // s = rho^2 / (2 r_b). The hand depth interpolates the slice's load between its
+    // samples where the program interpolates p0 and a: the two differ at second order in
+    // the load's and the radius' change between samples (p0 and a go as their square
+    // roots; at single points up to 8e-6, the load changing by up to 1.8 % between
+    // samples); 2e-6 relative allowed on the volume (measured 3.3e-7).
+    let m = helical(&[
+        "gear.helix_angle_deg=15",
+        "modification.crowning_um=6",
+        "wear.total_cycles=2e4",
+    ]);
+    let hd = m.helical.as_ref().unwrap();
+    let run = run(&m, WearMode::QuasiStatic);
+    let (r0, r1) = (&run.records[0], &run.records[1]);
+    let cycles = r1.wear.cycles - r0.wear.cycles;
+    assert!(cycles > 0.0);
+    let w = m.new_wear_state();
+    let resp = solve(&m, WearMode::QuasiStatic, &w, None).unwrap();
+    let paths = slice_paths(&m, hd, &resp, &w);
+    let case = &m.case;
+    let (z1, z2) = (case.gear.teeth_pinion as f64, case.gear.teeth_gear as f64);
+    let mat = &case.materials;
+    let inv = (1.0 - mat.poisson_ratio_pinion.powi(2)) / (mat.youngs_modulus_pinion_gpa * 1e9)
+        + (1.0 - mat.poisson_ratio_gear.powi(2)) / (mat.youngs_modulus_gear_gpa * 1e9);
+    let wp = 2.0 * PI * case.operating.input_speed_hz;
+    let t = &hd.pair.transverse;
+    let b = case.gear.face_width_mm * 1e-3;
+    let hand = Hand {
+        n1n2: t.loa_length_m,
+        width_m: b / hd.slices as f64,
+        e_star: 1.0 / inv,
+        wp,
+        wg: wp * z1 / z2,
+        k: case.wear.coefficient_m2_per_n,
+        z1_z2: z1 / z2,
+    };
+    let (rb1, rb2) = (t.pinion.base_radius_m, t.gear.base_radius_m);
+    let g = &m.grid;
+    let (mut vp, mut vg) = (0.0, 0.0);
+    for path in &paths {
+        let d: Vec<(f64, f64)> = g
+            .rho_pinion_m
+            .iter()
+            .map(|x| hand_depths(path, *x, &hand))
+            .collect();
+        for i in 0..g.len() - 1 {
+            let (x0, x1) = (g.rho_pinion_m[i], g.rho_pinion_m[i + 1]);
+            let (y0, y1) = (t.loa_length_m - x0, t.loa_length_m - x1);
+            let dsp = (x1 * x1 - x0 * x0) / (2.0 * rb1);
+            let dsg = (y0 * y0 - y1 * y1).abs() / (2.0 * rb2);
+            vp += 0.5 * (d[i].0 + d[i + 1].0) * dsp * hand.width_m;
+            vg += 0.5 * (d[i].1 + d[i + 1].1) * dsg * hand.width_m;
+        }
+    }
+    let (got_p, got_g) = slice_volumes_m3(&m, hd, r1.wear.slices.as_ref().unwrap());
+    for (name, got, want) in [("pinion", got_p, cycles * vp), ("gear", got_g, cycles * vg)] {
+        assert!(want > 0.0);
+        assert!(
+            (got - want).abs() <= 2e-6 * want,
+            "{name}: volume {got:e} m^3 against the slices' Archard integrals {want:e}"
+        );
+    }
+}
+
+/// The face slice whose pinion wears deepest after a run, and the slice count.
+fn deepest_slice(sets: &[&str]) -> (usize, usize) {
+    let m = helical(sets);
+    let run = run(&m, WearMode::QuasiStatic);
+    let s = run.last().unwrap().wear.slices.clone().unwrap();
+    let depth: Vec<f64> = s.pinion_m.iter().map(|p| peak(p)).collect();
+    let j = (0..depth.len())
+        .max_by(|a, b| depth[*a].total_cmp(&depth[*b]))
+        .unwrap();
+    (j, depth.len())
+}
+
+#[test]
+fn a_crowned_pair_wears_most_at_mid_face_a_misaligned_one_at_its_loaded_end() {
+    // A crowning of 10 µm (symmetric gap, smallest at mid-face) loads the middle: the
+    // deepest slice within a tenth of the face of the middle (the load's centre sits within
+    // 0.2 slice of b/2 statically, docs/MODEL.md 11.2; the phases of the slices move the
+    // deepest point by the mesh's fluctuation). A misalignment of 20 µm in the plane of
+    // action opens the gap towards y = b: the face end y = 0 carries the load, and its
+    // outermost slices wear deepest (within 2 % of the face of y = 0).
+    let base = ["gear.helix_angle_deg=15", "wear.total_cycles=2e4"];
+    let mut c = base.to_vec();
+    c.push("modification.crowning_um=10");
+    let (j, n) = deepest_slice(&c);
+    let mid = (j as f64 + 0.5) / n as f64;
+    assert!(
+        (mid - 0.5).abs() <= 0.1,
+        "crowned: deepest slice {j} of {n}"
+    );
+    let mut c = base.to_vec();
+    c.push("operating.misalignment_um=20");
+    let (j, n) = deepest_slice(&c);
+    assert!(
+        (j as f64 + 0.5) / n as f64 <= 0.02,
+        "misaligned: deepest slice {j} of {n}"
+    );
+}
+
+#[test]
+fn what_the_helical_wear_lacks_is_refused_naming_the_key() {
+    let base = ["wear", "--set", "gear.helix_angle_deg=15"];
+    let with = |extra: &[&'static str]| {
+        let mut a = base.to_vec();
+        a.extend(extra);
+        a
+    };
+    // Per-tooth inputs (wear per tooth of a helical pair is not built).
+    rejected(
+        &with(&["--set", "teeth.accuracy_grade=6"]),
+        &["`[teeth]`", "gear.helix_angle_deg"],
+    );
+    // A helical train.
+    rejected(
+        &with(&[
+            "--config",
+            concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/examples/two_stage_reducer.toml"
+            ),
+        ]),
+        &["gear.helix_angle_deg"],
+    );
+    // Worn geometry (a profile gap per slice's curvature is not built).
+    rejected(
+        &with(&["--set", "wear.worn_geometry=\"worn\""]),
+        &["wear.worn_geometry"],
+    );
+    // Signals still refuse a helical pair, naming the key.
+    rejected(
+        &["signals", "--set", "gear.helix_angle_deg=15"],
+        &["gear.helix_angle_deg"],
+    );
+}
+
+#[test]
+fn the_budget_counts_the_slices_of_a_helical_wear_study() {
+    // The estimate bounds what the study does: the slice contacts of an update (counted
+    // here from the slices' histories of both modes' first responses) within the
+    // estimate's N ceil(epsilon_alpha) per sample (the samples of a period: the grid's S
+    // quasi-static, the error control's S_d dynamic); the numbers a record holds (its wear
+    // and increment maps) within its 4 N G; the updates within the factor 1.5 the spur
+    // pair's count is held to (tests/budget.rs: the estimate takes the normal section's
+    // spur rate at the nominal load); and the helical term makes the estimate larger than
+    // the same case's as a spur pair.
+    use gearwear::study::budget::evaluation::dynamic_steps_per_period;
+    use gearwear::study::budget::helical::{record_numbers, slice_contacts_per_update};
+    use gearwear::study::budget::{estimate, Job};
+    let s = ["gear.helix_angle_deg=15", "wear.total_cycles=4e4"];
+    let m = helical(&s);
+    let case = m.case.clone();
+    let hd = m.helical.as_ref().unwrap();
+    let w = m.new_wear_state();
+    let samples = [
+        (
+            WearMode::QuasiStatic,
+            case.numerics.steps_per_mesh_period as f64,
+        ),
+        (WearMode::Dynamic, dynamic_steps_per_period(&case.numerics)),
+    ];
+    for (mode, per_period) in samples {
+        let r = solve(&m, mode, &w, None).unwrap();
+        let measured: usize = slice_paths(&m, hd, &r, &w).iter().map(Vec::len).sum();
+        let counted = slice_contacts_per_update(&case, per_period).unwrap();
+        assert!(
+            counted >= measured as f64,
+            "{mode:?}: {counted} slice contacts counted, {measured} made"
+        );
+    }
+    let job = Job::Wear {
+        dynamic: false,
+        quasi_static: true,
+    };
+    let e = estimate(&case, job);
+    let run = run(&m, WearMode::QuasiStatic);
+    let rec = &run.records[1];
+    let held = rec.wear.slices.as_ref().unwrap();
+    let inc = rec.increment_slices.as_ref().unwrap();
+    let numbers: usize = [&held.pinion_m, &held.gear_m, &inc.pinion_m, &inc.gear_m]
+        .iter()
+        .flat_map(|m| m.iter().map(Vec::len))
+        .sum();
+    assert!(record_numbers(&case) >= numbers as f64);
+    let measured = run.records.len() as f64;
+    assert!(
+        1.5 * e.wear_updates_quasi_static >= measured,
+        "estimated {} updates, measured {measured}",
+        e.wear_updates_quasi_static
+    );
+    let mut spur_case = case.clone();
+    spur_case.gear.helix_angle_deg = 0.0;
+    let sp = estimate(&spur_case, job);
+    assert!(
+        e.seconds() > sp.seconds() && e.memory_bytes() > sp.memory_bytes(),
+        "helical {} s {} B, spur {} s {} B",
+        e.seconds(),
+        e.memory_bytes(),
+        sp.seconds(),
+        sp.memory_bytes()
+    );
+    assert!(e.terms.iter().any(|t| t.keys.contains(&"stiffness.slices")));
+}
