@@ -357,3 +357,99 @@ fn the_budget_counts_the_slices_of_a_helical_wear_study() {
     );
     assert!(e.terms.iter().any(|t| t.keys.contains(&"stiffness.slices")));
 }
+
+/// A CSV's column by name, as numbers.
+fn csv_column(head: &[String], rows: &[Vec<String>], name: &str) -> Vec<f64> {
+    let i = head
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no {name}"));
+    rows.iter().map(|r| r[i].parse().unwrap()).collect()
+}
+
+#[test]
+fn the_wear_map_outputs_hold_the_slices_the_mean_profile_and_the_volume() {
+    // beta = 15 deg on the built-in pair (m_n 2 mm, alpha_n 20 deg, 19/31 teeth, 20 mm
+    // face). By hand (ISO 21771): tan alpha_t = tan 20 deg / cos 15 deg, base radius
+    // r_b = z m_n / (2 cos beta) cos alpha_t.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("w");
+    common::ok(&[
+        "-q",
+        "wear",
+        "--mode",
+        "quasi-static",
+        "--set",
+        "gear.helix_angle_deg=15",
+        "--set",
+        "wear.total_cycles=1e4",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let s: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    let m = &s["wear_map"]["quasi_static"];
+    let n = m["slices"].as_u64().unwrap() as usize;
+    let b_mm = m["face_width_mm"].as_f64().unwrap();
+    assert_eq!(b_mm, 20.0);
+    let (head, rows) = common::read_csv(&out.join("csv/wear_map_quasi_static.csv"));
+    let (beta, alpha_n) = (15f64.to_radians(), 20f64.to_radians());
+    let alpha_t = (alpha_n.tan() / beta.cos()).atan();
+    let rb_mm = |z: f64| z * 2.0 / (2.0 * beta.cos()) * alpha_t.cos();
+    // The face-mean profile of the last update (the study's own profile table) is the
+    // mean of the slices' profiles.
+    let (ph, pr) = common::read_csv(&out.join("wear_profiles_quasi_static.csv"));
+    let last = (0..)
+        .take_while(|u| ph.iter().any(|h| *h == format!("wear_pinion_um_u{u}")))
+        .last()
+        .unwrap();
+    let rho1 = csv_column(&head, &rows, "rho1_mm");
+    let roll2 = csv_column(&head, &rows, "gear_roll_deg");
+    for (flank, rho_mm, rb) in [
+        ("pinion", rho1.clone(), rb_mm(19.0)),
+        (
+            "gear",
+            roll2.iter().map(|r| r.to_radians() * rb_mm(31.0)).collect(),
+            rb_mm(31.0),
+        ),
+    ] {
+        let maps: Vec<Vec<f64>> = (0..n)
+            .map(|j| csv_column(&head, &rows, &format!("{flank}_slice{j}_um")))
+            .collect();
+        let peak_um = maps.iter().map(|p| peak(p)).fold(0.0_f64, f64::max);
+        assert!(peak_um > 0.1, "{flank}: {peak_um} µm");
+        let want = &m[flank];
+        assert_eq!(want["max_wear_um"].as_f64(), Some(peak_um));
+        let mean = csv_column(&ph, &pr, &format!("wear_{flank}_um_u{last}"));
+        for (i, w) in mean.iter().enumerate() {
+            let avg = maps.iter().map(|p| p[i]).sum::<f64>() / n as f64;
+            // Sums of n doubles in another order: 1e-12 of the peak.
+            assert!(
+                (avg - w).abs() <= 1e-12 * peak_um,
+                "{flank} point {i}: {avg} vs {w}"
+            );
+        }
+        // The volume: each slice's layer over its width b / N, trapezoids in the
+        // involute's arc length s = rho^2 / (2 r_b) (mm, µm -> mm^3 by 1e-3).
+        let s_mm = |r: f64| r * r / (2.0 * rb);
+        let volume: f64 = maps
+            .iter()
+            .map(|p| {
+                rho_mm
+                    .windows(2)
+                    .zip(p.windows(2))
+                    .map(|(r, h)| 0.5 * (h[0] + h[1]) * 1e-3 * (s_mm(r[1]) - s_mm(r[0])).abs())
+                    .sum::<f64>()
+                    * b_mm
+                    / n as f64
+            })
+            .sum();
+        let got = want["volume_mm3"].as_f64().unwrap();
+        // The base radius by hand against the model's (both exact formulas) and the
+        // roll angle through degrees: 1e-9.
+        assert!(
+            (volume / got - 1.0).abs() < 1e-9,
+            "{flank}: {volume} vs {got} mm^3"
+        );
+    }
+}

@@ -186,6 +186,48 @@ pub fn mesh_harmonic_lines(
     lines
 }
 
+/// Colour levels of a [`heat_panel`].
+const HEAT_LEVELS: usize = 32;
+
+/// A heat map of wear depth: row r's profile `rows_m[r]` (m) drawn as cells at the
+/// abscissae `xs` and the ordinate `ys[r]` (evenly spaced in both), coloured on the
+/// sequential scale from 0 to `max_um` (µm) in 32 levels, with its colour bar. The
+/// caller sets the title and axis labels.
+pub fn heat_panel(xs: &[f64], ys: &[f64], rows_m: &[Vec<f64>], max_um: f64) -> Panel {
+    let mut series: Vec<Series> = (0..HEAT_LEVELS)
+        .map(|l| Series {
+            color: Some(sequential_color((l as f64 + 0.5) / HEAT_LEVELS as f64)),
+            ..Default::default()
+        })
+        .collect();
+    for (y, p) in ys.iter().zip(rows_m) {
+        for (x, h) in xs.iter().zip(p) {
+            let level = if max_um > 0.0 {
+                ((h * 1e6 / max_um * HEAT_LEVELS as f64) as usize).min(HEAT_LEVELS - 1)
+            } else {
+                0
+            };
+            series[level].x.push(*x);
+            series[level].y.push(*y);
+        }
+    }
+    let step = |v: &[f64]| match v {
+        [a, .., b] => (b - a).abs() / (v.len() - 1) as f64,
+        _ => 1.0,
+    };
+    Panel {
+        series,
+        kind: PanelKind::Cells,
+        cell_size: (step(xs), step(ys)),
+        color_bar: Some(ColorBar {
+            label: "wear depth (µm)".into(),
+            min: 0.0,
+            max: max_um,
+        }),
+        ..Default::default()
+    }
+}
+
 /// "mesh frequency", "2 x mesh frequency", ... for harmonic `h` (1-based).
 pub fn harmonic_label(h: usize) -> String {
     match h {

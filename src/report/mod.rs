@@ -15,6 +15,7 @@ pub mod dynamics_planetary;
 pub mod face_load;
 pub mod figure_output;
 pub mod figures;
+pub mod helical_wear;
 pub mod html;
 pub mod ldd;
 pub mod modes;

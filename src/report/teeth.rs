@@ -7,7 +7,7 @@
 
 use super::artifacts::Artifacts;
 use super::figures::{panel, single, spectrum_panel, spectrum_rows, Curve};
-use super::plot::{sequential_color, ColorBar, Figure, Panel, PanelKind, Series};
+use super::plot::Figure;
 use crate::config::case::{FaultKind, Member};
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::response::DynamicResponse;
@@ -18,13 +18,13 @@ use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviatio
 use crate::io::Table;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;
+use crate::wear::ToothWear;
 use serde_json::{json, Value};
 
 /// Samples of the mesh stiffness per mesh period in the per-tooth table.
 const TVMS_SAMPLES: usize = 64;
 
 /// Colour levels of a heat map.
-const LEVELS: usize = 32;
 
 /// The per-tooth inputs of one gear as a table (`teeth_pinion.csv`, `teeth_gear.csv`).
 pub fn teeth_table(model: &Model, member: Member) -> Option<Table> {
@@ -203,72 +203,44 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table, Table)> {
     Some((fig, window, table))
 }
 
+/// A per-profile wear map's table on the model's grid: rho1 (mm), both flanks' roll angles
+/// (deg, each on its own profile: rho / r_b), then a column per profile and flank,
+/// `{flank}_{what}{index}_um` (µm); with the two roll-angle columns for the heat maps.
+pub(crate) fn map_table(model: &Model, map: &ToothWear, what: &str) -> (Table, Vec<f64>, Vec<f64>) {
+    let g = &model.grid;
+    let roll =
+        |rho: &[f64], rb: f64| -> Vec<f64> { rho.iter().map(|r| (r / rb).to_degrees()).collect() };
+    let roll_p = roll(&g.rho_pinion_m, model.pair.pinion.base_radius_m);
+    let roll_g = roll(&g.rho_gear_m, model.pair.gear.base_radius_m);
+    let mut table = Table::new()
+        .col("rho1_mm", g.rho_pinion_m.iter().map(|r| r * 1e3).collect())
+        .col("pinion_roll_deg", roll_p.clone())
+        .col("gear_roll_deg", roll_g.clone());
+    for (name, profiles) in [("pinion", &map.pinion_m), ("gear", &map.gear_m)] {
+        for (t, p) in profiles.iter().enumerate() {
+            table = table.col(
+                &format!("{name}_{what}{t}_um"),
+                p.iter().map(|h| h * 1e6).collect(),
+            );
+        }
+    }
+    (table, roll_p, roll_g)
+}
+
 /// The per-tooth wear of the last record of `run` (`teeth_wear_MODE.csv`, a column per
 /// tooth) and its heat map, tooth index against the tooth's own roll angle.
 pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)> {
     let last = run.last()?;
     let teeth = last.wear.teeth.as_ref()?;
-    let g = &model.grid;
-    let (rb1, rb2) = (
-        model.pair.pinion.base_radius_m,
-        model.pair.gear.base_radius_m,
-    );
-    let roll_p: Vec<f64> = g
-        .rho_pinion_m
-        .iter()
-        .map(|r| (r / rb1).to_degrees())
-        .collect();
-    let roll_g: Vec<f64> = g
-        .rho_gear_m
-        .iter()
-        .map(|r| (r / rb2).to_degrees())
-        .collect();
-    let mut table = Table::new()
-        .col("rho1_mm", g.rho_pinion_m.iter().map(|r| r * 1e3).collect())
-        .col("pinion_roll_deg", roll_p.clone())
-        .col("gear_roll_deg", roll_g.clone());
-    for (name, profiles) in [("pinion", &teeth.pinion_m), ("gear", &teeth.gear_m)] {
-        for (t, p) in profiles.iter().enumerate() {
-            table = table.col(
-                &format!("{name}_tooth{t}_um"),
-                p.iter().map(|h| h * 1e6).collect(),
-            );
-        }
-    }
+    let (table, roll_p, roll_g) = map_table(model, teeth, "tooth");
     let max = teeth.max_m() * 1e6;
-    let heat = |title: &str, roll: &[f64], profiles: &[Vec<f64>]| -> Panel {
-        let mut series: Vec<Series> = (0..LEVELS)
-            .map(|l| Series {
-                color: Some(sequential_color((l as f64 + 0.5) / LEVELS as f64)),
-                ..Default::default()
-            })
-            .collect();
-        for (t, p) in profiles.iter().enumerate() {
-            for (x, h) in roll.iter().zip(p) {
-                let level = if max > 0.0 {
-                    ((h * 1e6 / max * LEVELS as f64) as usize).min(LEVELS - 1)
-                } else {
-                    0
-                };
-                series[level].x.push(*x);
-                series[level].y.push(t as f64);
-            }
-        }
-        let dx = (roll[roll.len() - 1] - roll[0]).abs() / (roll.len() - 1).max(1) as f64;
-        Panel {
-            title: title.into(),
-            x_label: "roll angle of the tooth's own profile (deg)".into(),
-            y_label: "tooth".into(),
-            series,
-            kind: PanelKind::Cells,
-            cell_size: (dx, 1.0),
-            color_bar: Some(ColorBar {
-                label: "wear depth (µm)".into(),
-                min: 0.0,
-                max,
-            }),
-            ..Default::default()
-        }
+    let rows = |n: usize| (0..n).map(|t| t as f64).collect::<Vec<f64>>();
+    let heat = |title: &str, roll: &[f64], profiles: &[Vec<f64>]| {
+        let mut p = super::figures::heat_panel(roll, &rows(profiles.len()), profiles, max);
+        p.title = title.into();
+        p.x_label = "roll angle of the tooth's own profile (deg)".into();
+        p.y_label = "tooth".into();
+        p
     };
     let fig = Figure {
         title: format!(

@@ -354,6 +354,7 @@ pub fn wear_artifacts(model: &Model, runs: &[&WearRun]) -> Artifacts {
     a.summary = v;
     super::teeth::add_teeth_artifacts(model, &mut a);
     super::teeth::add_tooth_wear_artifacts(model, runs, &mut a);
+    super::helical_wear::add_wear_map_artifacts(model, runs, &mut a);
     a
 }
 
