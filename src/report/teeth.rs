@@ -24,8 +24,6 @@ use serde_json::{json, Value};
 /// Samples of the mesh stiffness per mesh period in the per-tooth table.
 const TVMS_SAMPLES: usize = 64;
 
-/// Colour levels of a heat map.
-
 /// The per-tooth inputs of one gear as a table (`teeth_pinion.csv`, `teeth_gear.csv`).
 pub fn teeth_table(model: &Model, member: Member) -> Option<Table> {
     let t = model.teeth.as_ref()?;
