@@ -453,3 +453,37 @@ fn the_wear_map_outputs_hold_the_slices_the_mean_profile_and_the_volume() {
         );
     }
 }
+
+#[test]
+fn the_solver_reads_a_worn_line_where_its_slices_are() {
+    // Every slice worn in proportion to the transverse position, g(rho) = c rho (pinion
+    // flank only). A contact line whose trailing end is at rho_1 and that lies wholly on
+    // the path holds its slices at rho_1 + o_i, o_i = (i + 1/2) L / N over the line's
+    // length L = b tan(beta_b): its gap, the stiffness-weighted mean of theirs, is
+    // c (rho_1 + a weighted mean offset), within a tenth of L of c (rho_1 + L / 2) for
+    // slice stiffnesses that vary by far less than 2:1 along the line. Read at the line's
+    // middle instead (the reading this test guards against), it would be about c (rho_1 + L).
+    let m = helical(&["gear.helix_angle_deg=15"]);
+    let h = m.helical.as_ref().unwrap();
+    let line_m = h.slice_model.pair().face_width_m * h.pair.base_helix_angle_rad.tan();
+    let c = 1e-3;
+    let mut wear = gearwear::wear::WearState::per_slice(m.grid.len(), h.slices);
+    for p in &mut wear.slices.as_mut().unwrap().pinion_m {
+        for (d, r) in p.iter_mut().zip(&m.grid.rho_pinion_m) {
+            *d = c * r;
+        }
+    }
+    let gap = m.wear_gap(&wear);
+    let t = &h.pair.transverse;
+    let (a, e) = (t.rho_start_m, t.rho_end_m);
+    assert!(e - a > 1.5 * line_m, "path {} m, line {line_m} m", e - a);
+    for t in [0.1, 0.5, 0.9] {
+        let rho1 = a + t * (e - a - line_m);
+        let g = m.contact.plain_pair(&m.mesh, &gap, rho1).gap_m;
+        let at = g / c - rho1;
+        assert!(
+            (at - 0.5 * line_m).abs() < 0.1 * line_m,
+            "trailing end {rho1} m: the line's gap sits {at} m ahead, line {line_m} m"
+        );
+    }
+}

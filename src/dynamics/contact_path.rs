@@ -298,14 +298,15 @@ impl ContactPath {
 
 impl ContactPath {
     /// [`ContactPath::plain_pair`] of a helical contact line at trailing end `rho1_m`: the
-    /// line's stiffness K(rho) from `mesh` (the line pair's table), the gap at its middle
-    /// on the path (new teeth: 0; a helical case has no per-slice gaps yet), and the share
-    /// of the face its part off the path leaves out (kept below 1 - 1e-9 so a line just
-    /// entering has a finite Hertz width).
+    /// line's stiffness K(rho) from `mesh` (the line pair's table), the line's gap from
+    /// `gap`, a table over the trailing end's positions as K is (new teeth: 0; worn
+    /// slices: `HelicalDynamics::wear_gap`, each slice at its own offset from the trailing
+    /// end), and the share of the face its part off the path leaves out (kept below
+    /// 1 - 1e-9 so a line just entering has a finite Hertz width).
     fn line_pair(&self, mesh: &MeshStiffness, gap: &PairGap, rho1_m: f64) -> PlainPair {
         let (lo, hi) = self.line_on_path(rho1_m);
         let mid = 0.5 * (lo + hi);
-        let (g, dg) = gap.at(mid);
+        let (g, dg) = gap.at(rho1_m);
         PlainPair {
             stiffness_n_per_m: mesh.pair_stiffness_n_per_m(rho1_m),
             gap_m: g,

@@ -115,15 +115,17 @@ impl HelicalDynamics {
     /// The worn slices as each contact line's gap on the line pair, m (docs/MODEL.md 11.3,
     /// `study::helical_wear`): the stiffness-weighted mean of the line's slices' wear gaps,
     ///   e_l(rho) = sum_i k_i g_j(i)(rho + o_i) / sum_i k_i,
-    /// at the wear grid's spacing over the line pair's path. One slice is its own line: the
-    /// wear state's own gap (its mean over one slice is the slice).
+    /// at the wear grid's spacing over the positions of the line's trailing end (rho, where
+    /// the solver reads it, `ContactPath::plain_pair`), slice i at its offset o_i from it.
+    /// At beta = 0 (no lead: every slice at the same place) it is the wear state's own gap,
+    /// the mean profile over the slices.
     pub fn wear_gap(&self, grid: &ProfileGrid, wear: &WearState) -> PairGap {
-        if wear.slices.is_none() || self.slices == 1 {
+        let s = &self.slice_model;
+        let lines = s.line_grid();
+        if wear.slices.is_none() || lines.lead == 0.0 {
             return wear.pair_gap(grid);
         }
-        let s = &self.slice_model;
         let t = &s.pair().transverse;
-        let lines = s.line_grid();
         let spacing = grid.spacing_m;
         let points = (lines.line.path_length_m() / spacing).ceil() as usize + 1;
         let gap = (0..points)
