@@ -28,12 +28,18 @@ pub fn over_budget(message: impl std::fmt::Display) -> Problem {
 /// Refuse `job` on `case` if it is over `budget` (`None`: no check).
 /// Under a load spectrum, a bin the model refuses (a load beyond the flanks, a speed out
 /// of range) is named rather than priced: the estimate of such a bin is meaningless (a
-/// wear rate from a load the flanks cannot carry), so an estimate over the budget first
-/// builds the bins' models and returns their problems when there are any.
+/// wear rate from a load the flanks cannot carry), so the wear and run jobs, which run
+/// every bin, build the bins' models when their estimate is over the budget and return
+/// the bins' problems when there are any (a spur pair or train; a helical or planetary
+/// case under a spectrum is refused by its job, naming the spectrum).
 pub fn check(case: &Case, job: Job, budget: Option<&Budget>) -> Result<(), JobError> {
+    let runs_bins = matches!(job, Job::Wear { .. } | Job::Run)
+        && case.load_spectrum.is_some()
+        && case.planetary.is_none()
+        && case.gear.helix_angle_deg == 0.0;
     match budget {
         Some(b) => estimate(case, job).check(b).map_err(|m| {
-            if case.load_spectrum.is_some() && case.planetary.is_none() {
+            if runs_bins {
                 if let Err(e) = crate::duty::SpectrumModel::from_case(case) {
                     return JobError::from(e);
                 }

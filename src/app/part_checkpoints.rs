@@ -93,7 +93,9 @@ pub(crate) fn starting_part_runs<R>(
             format!(
                 "no checkpoint to resume from in {} (looked for {} and their .partial files)",
                 dir.display(),
-                (parts.shown)(modes[0])
+                modes
+                    .first()
+                    .map_or_else(String::new, |m| (parts.shown)(*m))
             ),
         )
         .remedy(Remedy::start_afresh().path(dir))

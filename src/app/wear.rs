@@ -59,6 +59,12 @@ impl Job for WearJob {
         if !self.case.stage.is_empty() {
             return super::wear_train::wear_of_train(self, figures, observer);
         }
+        if self.case.load_spectrum.is_some() && self.case.gear.helix_angle_deg != 0.0 {
+            return Err(JobError::input(crate::remedy::Problem::new(format!(
+                "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or set the angle to 0 for a spur pair",
+                crate::format::shown(self.case.gear.helix_angle_deg)
+            ))));
+        }
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::wear_under_spectrum(
@@ -70,7 +76,7 @@ impl Job for WearJob {
                 observer,
             );
         }
-        let model = if self.case.gear.helix_angle_deg != 0.0 && self.case.stage.is_empty() {
+        let model = if self.case.gear.helix_angle_deg != 0.0 {
             let m = crate::study::Model::helical_from_case(&self.case)?;
             for w in &m.warnings {
                 observer.warning(w);

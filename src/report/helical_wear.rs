@@ -5,7 +5,8 @@
 //!   position across the face), its data `csv/wear_map_MODE.csv`: the grid's rho1 and both
 //!   roll angles, then a column per slice and flank (`pinion_slice{j}_um`, j from 0);
 //! - `summary.json` `wear_map.MODE`: the slice count and face width, per flank the deepest
-//!   wear with its slice, face position and rho1, and the volume removed (the sum over
+//!   wear with its slice, face position and the flank's own radius of curvature there,
+//!   and the volume removed (the sum over
 //!   slices of their layers, `helical_wear::slice_volumes_m3`);
 //! - a headline line per mode, rounded for people.
 

@@ -83,6 +83,9 @@ fn record_problem(mode: WearMode, r: &UpdateRecord, model: &Model) -> Result<(),
     if let Some(problem) = tooth_problem(model, r) {
         return Err(problem);
     }
+    if let Some(problem) = slice_problem(model, r) {
+        return Err(problem);
+    }
     if r.path_rho1_m.len() != r.path_load_n.len() {
         return Err("path positions and loads differ in length".into());
     }
@@ -233,6 +236,35 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), StoredRunErr
 
 /// The per-tooth profiles of a record against the model: present exactly when the model
 /// resolves the teeth, one profile per tooth of the grid's length, finite and >= 0.
+/// A record's per-slice wear against the case: present (wear and increment) exactly when
+/// the case is a helical pair that wears per slice (`Model::helical`), and then N profiles
+/// on each flank (`HelicalDynamics::slices`); their lengths and values are
+/// `UpdateRecord::profile_problem`'s.
+fn slice_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
+    let n = model.helical.as_ref().map(|h| h.slices);
+    for (what, s) in [("wear", &r.wear.slices), ("increment", &r.increment_slices)] {
+        match (n, s) {
+            (None, Some(_)) => {
+                return Some(format!(
+                    "holds per-slice {what}, but the case is a spur pair"
+                ))
+            }
+            (Some(_), None) => {
+                return Some(format!(
+                    "holds no per-slice {what}, but the case is a helical pair worn slice by slice"
+                ))
+            }
+            (Some(n), Some(s)) if s.pinion_m.len() != n || s.gear_m.len() != n => {
+                return Some(format!(
+                    "per-slice {what} is not {n} profiles on each flank"
+                ))
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
 fn tooth_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
     let resolved = model.teeth.is_some();
     if resolved != r.wear.teeth.is_some() || resolved != r.increment_teeth.is_some() {
