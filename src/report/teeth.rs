@@ -93,6 +93,14 @@ pub fn teeth_json(model: &Model) -> Option<Value> {
     }))
 }
 
+/// A table of `columns` under `names`, in order.
+fn named_columns(names: &[&str], columns: impl Iterator<Item = Vec<f64>>) -> Table {
+    names
+        .iter()
+        .zip(columns)
+        .fold(Table::new(), |t, (n, v)| t.col(n, v))
+}
+
 /// Mesh stiffness over the excitation period of new teeth, per pair (its teeth and
 /// stiffness) and in total beside the healthy mesh's, with the engagements of faulty
 /// teeth marked: the figure of a readable window of it, that window's rows (exactly what
@@ -141,10 +149,7 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table, Table)> {
         "stiffness_total_n_per_m",
         "stiffness_total_healthy_n_per_m",
     ];
-    let mut table = Table::new();
-    for (n, v) in names.iter().zip(&c) {
-        table = table.col(n, v.clone());
-    }
+    let table = named_columns(&names, c.iter().cloned());
     // The figure shows a readable window: 8 mesh periods around the first engagement of
     // the first faulty tooth, else the first pinion revolution (the period's table holds
     // all; the figure's own table only the window, the rule of every figure's data).
@@ -157,10 +162,7 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table, Table)> {
     };
     let rows = lo * TVMS_SAMPLES..hi * TVMS_SAMPLES;
     let shown = |k: usize| c[k][rows.clone()].to_vec();
-    let mut window = Table::new();
-    for (k, n) in names.iter().enumerate() {
-        window = window.col(n, shown(k));
-    }
+    let window = named_columns(&names, (0..names.len()).map(shown));
     // Without a fault the teeth's stiffness is the healthy one (errors, run-out and
     // reliefs move the flanks, not their stiffness): one curve, nothing to compare.
     let curves = if t.faults.is_empty() {

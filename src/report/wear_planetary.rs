@@ -162,12 +162,7 @@ pub fn planetary_wear_artifacts(
             format!("wear_profiles_{mode}.csv"),
             profiles_table(model, run),
         );
-        if let Some((f, t)) = super::wear_planetary_figures::history_figure(model, run) {
-            a.figure_with_data(format!("wear_history_{mode}.png"), f, t);
-        }
-        if let Some((f, t)) = super::wear_planetary_figures::profiles_figure(model, run) {
-            a.figure_with_data(format!("wear_profiles_{mode}.png"), f, t);
-        }
+        super::wear_planetary_figures::add_figures(model, run, &mut a);
         let Some(last) = run.updates.last() else {
             continue;
         };

@@ -7,6 +7,7 @@
 //!   the sun's radius of curvature) and the ring mesh (every planet's ring-side flank and
 //!   the ring against the planet's radius of curvature).
 
+use super::artifacts::Artifacts;
 use super::figures::{panel, points_panel, Curve};
 use super::plot::Figure;
 use crate::io::Table;
@@ -110,4 +111,15 @@ pub fn profiles_figure(
         panels: vec![p1, p2],
     };
     Some((figure, table))
+}
+
+/// Adds both figures of `run` (with their tables) to `a`.
+pub(crate) fn add_figures(model: &PlanetaryWearModel, run: &PlanetaryWearRun, a: &mut Artifacts) {
+    let mode = run.mode.name();
+    if let Some((f, t)) = history_figure(model, run) {
+        a.figure_with_data(format!("wear_history_{mode}.png"), f, t);
+    }
+    if let Some((f, t)) = profiles_figure(model, run) {
+        a.figure_with_data(format!("wear_profiles_{mode}.png"), f, t);
+    }
 }
