@@ -58,7 +58,7 @@ fn record_problem(model: &PlanetaryWearModel, j: usize, r: &UpdateRecord) -> Opt
 /// The run of `mode` whose mesh logs are `logs` (module order), replayed and checked
 /// against `model` (see the module docs); the error names the update, its line in the
 /// logs (the header is line 1) and the mesh.
-pub fn planetary_run_from_logs(
+pub(crate) fn planetary_run_from_logs(
     model: &PlanetaryWearModel,
     wear: &WearSection,
     mode: WearMode,
@@ -119,7 +119,7 @@ pub fn planetary_run_from_logs(
 
 /// Recompute updates of `run` (replayed by [`planetary_run_from_logs`]) and require them
 /// equal to the stored ones (see the module docs); the error names the first that is not.
-pub fn verify_planetary_resumable(
+pub(crate) fn verify_planetary_resumable(
     model: &PlanetaryWearModel,
     run: &PlanetaryWearRun,
 ) -> Result<(), String> {
