@@ -35,13 +35,6 @@ fn deepest(profiles: &[Vec<f64>]) -> (f64, usize, usize) {
     best
 }
 
-/// Face position of each of the `n` slices of a face `b_m` wide, mm.
-fn slice_positions_mm(b_m: f64, n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|j| (j as f64 + 0.5) * b_m / n as f64 * 1e3)
-        .collect()
-}
-
 /// The figure of `map` and its data table (see the module docs).
 fn map_figure(model: &Model, y_mm: &[f64], map: &SliceWear, title: String) -> (Figure, Table) {
     let (table, roll_p, roll_g) = super::teeth::map_table(model, map, "slice");
@@ -110,7 +103,13 @@ pub fn add_wear_map_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifact
     let Some(h) = &model.helical else {
         return;
     };
-    let y_mm = slice_positions_mm(h.slice_model.pair().face_width_m, h.slices);
+    // Each slice's face position, as the slice model places it (mm).
+    let y_mm: Vec<f64> = h
+        .slice_model
+        .positions_m()
+        .iter()
+        .map(|y| y * 1e3)
+        .collect();
     let mut maps = Map::new();
     for r in runs {
         let Some(last) = r.last() else {
