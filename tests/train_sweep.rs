@@ -327,10 +327,128 @@ fn bad_input_on_a_train_sweep_is_exit_2_naming_the_stage_and_key() {
         &with(&["--vary", "stage.2.face_width_mm=20,-5"]),
         &["stage.2.face_width_mm", "-5"],
     );
+    // A train under a load spectrum: its wear sweep is not built (refused before any case
+    // runs, naming the key and the table).
+    let d = tempfile::tempdir().unwrap();
+    let spectrum = d.path().join("spectrum.toml");
+    let text = std::fs::read_to_string(&config).unwrap()
+        + "\n[load_spectrum]\nbins = [{ torque_nm = 60, input_speed_hz = 30, share = 1 }]\n";
+    std::fs::write(&spectrum, text).unwrap();
+    let spectrum = spectrum.to_str().unwrap();
     rejected(
-        &with(&["--run", "wear", "--vary", "operating.input_speed_hz=20,30"]),
-        &["--run", "gear train"],
+        &[
+            "sweep",
+            "--config",
+            spectrum,
+            "--run",
+            "wear",
+            "--vary",
+            "operating.load_torque_nm=50,60",
+        ],
+        &["--run", "gear train", "[load_spectrum]"],
     );
+}
+
+#[test]
+fn a_train_wear_sweep_row_equals_gearwear_wear_on_the_same_case_mesh_by_mesh() {
+    // Each row of `sweep --run wear` on the two-stage train against `gearwear wear` (both
+    // modes) at the row's speed: every mesh's final flank depths, the limiting stage, the
+    // update counts and input cycles from its summary.json, and the new-teeth columns
+    // from `gearwear dynamics`. Same deterministic computation, same unit conversions,
+    // round-trip formats: equal to the last bit; 1e-12 relative only allows a
+    // differently ordered conversion (the two speeds' depths differ by ~10 %).
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("sw");
+    let config = example();
+    let total = "wear.total_cycles=1e4";
+    sweep(
+        &[
+            "--config",
+            &config,
+            "--run",
+            "wear",
+            "--set",
+            total,
+            "--vary",
+            "operating.input_speed_hz=20,40",
+        ],
+        &out,
+    );
+    let table = rows(&out.join("sweep.csv"));
+    assert_eq!(table.len(), 2);
+    let same = |a: f64, b: f64, what: &str| {
+        assert!(
+            (a - b).abs() <= 1e-12 * a.abs().max(b.abs()),
+            "{what}: sweep {a} vs single run {b}"
+        );
+    };
+    for row in &table {
+        let speed = format!(
+            "operating.input_speed_hz={}",
+            row["operating.input_speed_hz"]
+        );
+        let single = |job: &str| {
+            let dir = d.path().join(format!("{job}{}", row["case_id"]));
+            let mut a = vec![job, "--config", &config];
+            a.extend(CHEAP);
+            a.extend([
+                "--set",
+                total,
+                "--set",
+                &speed,
+                "--out",
+                dir.to_str().unwrap(),
+            ]);
+            ok(&a);
+            json(&dir.join("summary.json"))
+        };
+        let w = single("wear");
+        let dynamics = single("dynamics");
+        for (mode, col) in [("dynamic", "dynamic"), ("quasi_static", "quasi_static")] {
+            let stage = f(&w["limiting_mesh"][mode]["stage"]);
+            assert!(stage == 1.0 || stage == 2.0);
+            same(
+                row[&format!("wear_limiting_stage_{col}")],
+                stage,
+                "limiting stage",
+            );
+            same(
+                row[&format!("wear_updates_{col}")],
+                f(&w["updates"][mode]),
+                "updates",
+            );
+            same(
+                row[&format!("wear_cycles_{col}")],
+                f(&w["input_cycles"][mode]),
+                "cycles",
+            );
+            for (k, m) in w["meshes"].as_array().unwrap().iter().enumerate() {
+                let end = &m["final"][mode];
+                for flank in ["pinion", "gear"] {
+                    let depth = f(&end[format!("max_wear_{flank}_um")]);
+                    assert!(depth > 0.0, "stage {} {flank} {mode} unworn", k + 1);
+                    let name = format!("wear_max_{flank}_{col}_um");
+                    same(row[&format!("stage{}_{name}", k + 1)], depth, &name);
+                    // The pair's columns are the first mesh's.
+                    if k == 0 {
+                        same(row[&name], depth, &name);
+                    }
+                }
+            }
+        }
+        // The new teeth's columns: the dynamic run's first update is the new-teeth
+        // steady state that `gearwear dynamics` computes.
+        same(row["dte_max_um"], f(&dynamics["dte"]["max_um"]), "max DTE");
+        for (k, m) in dynamics["meshes"].as_array().unwrap().iter().enumerate() {
+            let col = |c: &str| row[&format!("stage{}_{c}", k + 1)];
+            same(col("dte_max_um"), f(&m["dte"]["max_um"]), "mesh max DTE");
+            same(
+                col("mesh_force_max_n"),
+                f(&m["mesh_force"]["max_n"]),
+                "max force",
+            );
+        }
+    }
 }
 
 #[test]

@@ -9,7 +9,7 @@ use super::wear::{run_spectrum_modes, SpectrumRun};
 use crate::config::Case;
 use crate::study::paper::{paper_wear_states, PaperStudy};
 use crate::study::sweep::{wear_results, CaseError, CaseOutcome, SweepRun};
-use crate::study::wear_loop::{StopKind, WearMode};
+use crate::study::wear_loop::WearMode;
 
 /// Life runs stop here at the latest: 1e15 pinion revolutions are 30 000 years at 1 kHz,
 /// beyond any machine's life, so a bin that has not worn to the limit by then never will.
@@ -96,13 +96,7 @@ pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, 
     // A run the solver gave up on is a failed case; one that left the model's domain is a
     // result (its cycles column says where it stopped), as for one operating point.
     for r in &runs {
-        if let Some(stop) = r.stopped.as_ref().filter(|s| s.kind == StopKind::Numerical) {
-            return Err(CaseError::Solve(anyhow::anyhow!(
-                "the {} wear run stopped early: {}",
-                r.mode.name(),
-                stop.reason
-            )));
-        }
+        crate::study::sweep::case_run::numerical_stop(r.mode, r.stopped.as_ref())?;
     }
     let (d, q) = (
         combined_run(&runs[0], sm.monitoring),

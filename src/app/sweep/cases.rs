@@ -101,8 +101,7 @@ pub fn resolve(
     if !helical.is_empty() {
         return Err(JobError::Input(helical));
     }
-    // A gear train's sweep row would hold its first mesh only (a wear row the single
-    // pair's loop, which leaves the other meshes unworn): refused before any case runs.
+    // Every case of a gear train has the base's stages (its row's columns are per mesh).
     // Each case against the budget (the number of cases is the user's explicit choice).
     check_stage_counts(base, plan, &planned)?;
     let over: Vec<Problem> = planned

@@ -102,19 +102,21 @@ fn row_of(r: &CaseRecord) -> Option<SweepRow> {
 }
 
 impl SweepJob {
-    /// A gear train (`[[stage]]`) runs dynamics sweeps (each mesh's columns); its wear
-    /// study is not reduced to sweep rows yet, so `--run wear` on a train is refused.
-    fn refuse_on_train(&self) -> Result<(), JobError> {
-        if self.base.stage.is_empty() || self.run == SweepRun::Dynamics {
+    /// A wear sweep of a gear train under a `[load_spectrum]` is not built (each case would
+    /// need the train's duty study): refused before any case runs.
+    fn refuse_train_spectrum(&self) -> Result<(), JobError> {
+        if self.base.stage.is_empty()
+            || self.base.load_spectrum.is_none()
+            || self.run != SweepRun::Wear
+        {
             return Ok(());
         }
         Err(Problem::given(
             Arg::SweepRun,
             self.run.name(),
-            Words::new()
-                .text("this case is a gear train ([[stage]] tables): its sweep runs ")
-                .arg(Arg::SweepRun)
-                .text(" dynamics (each mesh's columns); the wear study of a train runs in `gearwear wear`"),
+            Words::new().text(
+                "this case is a gear train ([[stage]] tables) under a [load_spectrum]: its wear sweep is not built yet (a wear sweep of a train runs at one operating point; `gearwear wear` runs the train under its spectrum); remove the [load_spectrum] table to sweep the train's wear",
+            ),
         )
         .into())
     }
@@ -315,7 +317,7 @@ impl Job for SweepJob {
         let started = Instant::now();
         let figures = self.figures.resolve().map_err(JobError::input)?;
         // What a train cannot run, before the budget; then the budget, in milliseconds.
-        self.refuse_on_train()?;
+        self.refuse_train_spectrum()?;
         self.check_budget()?;
         check_values(&self.base, &self.plan)?;
         let continuation = self.continuation_plan()?;

@@ -1,12 +1,16 @@
 //! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
 //! sweep row (the record it leaves on disk is [`super::case_record`]).
 
-use super::mesh_row::{mesh_columns, stages_of, MeshRow, MESH_COLUMNS};
+use super::mesh_row::{
+    mesh_columns, mesh_wear_columns, MeshRow, MeshWear, TrainWearEnd, MESH_COLUMNS,
+};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::summary::ResponseSummary;
 use crate::study::model::{Model, ModelError};
-use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun};
+use crate::study::train::TrainModel;
+use crate::study::train_wear::{run_train_wear, TrainWearRun};
+use crate::study::wear_loop::{run_wear, StopKind, WearMode, WearRun, WearStop};
 use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
 
@@ -69,20 +73,26 @@ impl SweepRun {
     /// The run and the number of train meshes (0: a single pair) whose result columns
     /// are `columns` ([`CaseResults::columns`]), if any.
     pub fn of_columns(columns: &[String]) -> Option<(Self, usize)> {
+        // A mesh adds at least MESH_COLUMNS' five columns, so no more meshes can fit.
+        let most = columns.len() / MESH_COLUMNS.len();
         [SweepRun::Wear, SweepRun::Dynamics]
             .into_iter()
             .find_map(|r| {
-                let own = r.columns();
-                let rest = columns.strip_prefix(own.as_slice())?;
-                stages_of(rest).map(|n| (r, n))
+                (0..=most)
+                    .find(|n| r.columns_for(*n) == columns)
+                    .map(|n| (r, n))
             })
     }
 
     /// The result columns of a case of `stages` train meshes (0: a single pair): this
-    /// run's, then each mesh's ([`super::mesh_row`]).
+    /// run's, then each mesh's, then (a wear sweep of a train) each mesh's wear and the
+    /// limiting stages ([`super::mesh_row`]).
     pub fn columns_for(&self, stages: usize) -> Vec<String> {
         let mut c = self.columns();
         c.extend(mesh_columns(stages));
+        if *self == SweepRun::Wear {
+            c.extend(mesh_wear_columns(stages));
+        }
         c
     }
 }
@@ -200,8 +210,11 @@ pub struct CaseResults {
     pub dynamics: DynamicsRow,
     /// The ends of the dynamic and quasi-static wear runs (a `wear` sweep).
     pub wear: Option<[WearEnd; 2]>,
-    /// Each mesh of a gear train, stage by stage; empty for a single pair.
+    /// Each mesh of a gear train, stage by stage (of the new teeth); empty for a single
+    /// pair.
     pub meshes: Vec<MeshRow>,
+    /// Each mesh's wear at the end of the runs (a `wear` sweep of a gear train).
+    pub train_wear: Option<TrainWearEnd>,
 }
 
 impl CaseResults {
@@ -228,6 +241,9 @@ impl CaseResults {
         for m in &self.meshes {
             v.extend(m.values());
         }
+        if let Some(t) = &self.train_wear {
+            v.extend(t.values());
+        }
         v
     }
 
@@ -235,9 +251,14 @@ impl CaseResults {
     /// pair); `None` when their count is not it.
     pub fn from_values(run: SweepRun, stages: usize, v: &[f64]) -> Option<Self> {
         let own = run.columns().len();
-        if v.len() != own + stages * MESH_COLUMNS.len() {
+        let meshes_end = own + stages * MESH_COLUMNS.len();
+        if v.len() != run.columns_for(stages).len() {
             return None;
         }
+        let train_wear = match (run, stages) {
+            (SweepRun::Wear, 1..) => Some(TrainWearEnd::from_values(stages, &v[meshes_end..])?),
+            _ => None,
+        };
         Some(Self {
             dynamics: DynamicsRow::from_values(&v[..9]),
             wear: (run == SweepRun::Wear).then(|| {
@@ -246,10 +267,11 @@ impl CaseResults {
                     WearEnd::from_values(&v[13..17]),
                 ]
             }),
-            meshes: v[own..]
+            meshes: v[own..meshes_end]
                 .chunks_exact(MESH_COLUMNS.len())
                 .map(MeshRow::from_values)
                 .collect(),
+            train_wear,
         })
     }
 
@@ -301,19 +323,18 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
         SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
             let model = Model::from_case(case).map_err(CaseError::Model)?;
+            if let Some(train) = &model.train {
+                let results = run_train_wear_case(&model, train)?;
+                return Ok(CaseOutcome {
+                    results,
+                    warnings: model.warnings,
+                });
+            }
             let one = |mode| run_wear(&model, WearRun::new(mode), &mut |_| Ok(()));
             let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
             let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
-            // A run the solver gave up on is a failed case; one that left the model's
-            // domain is a result (its cycles column says where it stopped).
             for r in [&d, &q] {
-                if let Some(stop) = r.stopped.as_ref().filter(|s| s.kind == StopKind::Numerical) {
-                    return Err(CaseError::Solve(anyhow::anyhow!(
-                        "the {} wear run stopped early: {}",
-                        r.mode.name(),
-                        stop.reason
-                    )));
-                }
+                numerical_stop(r.mode, r.stopped.as_ref())?;
             }
             Ok(CaseOutcome {
                 results: wear_results(&d, &q),
@@ -321,6 +342,72 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             })
         }
     }
+}
+
+/// A run the solver gave up on is a failed case; one that left the model's domain is a
+/// result (its cycles column says where it stopped).
+pub(crate) fn numerical_stop(mode: WearMode, stop: Option<&WearStop>) -> Result<(), CaseError> {
+    match stop.filter(|s| s.kind == StopKind::Numerical) {
+        Some(stop) => Err(CaseError::Solve(anyhow::anyhow!(
+            "the {} wear run stopped early: {}",
+            mode.name(),
+            stop.reason
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The wear study of a gear train in both modes (as `gearwear wear --mode both` on it,
+/// `study::train_wear`), reduced to a row: the pair's columns are its first mesh's (the
+/// new teeth's response of the dynamic run's first update; its end of each run, with
+/// the run's updates and input cycles), then each mesh's new-teeth columns, each mesh's
+/// wear at the end, and the stage that limits each mode's life.
+fn run_train_wear_case(model: &Model, train: &TrainModel) -> Result<CaseResults, CaseError> {
+    let one = |mode| run_train_wear(model, train, TrainWearRun::new(mode), &mut |_| Ok(()));
+    let (d, q) = rayon::join(|| one(WearMode::Dynamic), || one(WearMode::QuasiStatic));
+    let (d, q) = (d.map_err(CaseError::Solve)?, q.map_err(CaseError::Solve)?);
+    for r in [&d, &q] {
+        numerical_stop(r.mode, r.stopped.as_ref())?;
+    }
+    let first = d.updates.first();
+    let dynamics = first.map_or(DynamicsRow::from_values(&[f64::NAN; 9]), |u| {
+        DynamicsRow::of(&u.meshes[0].summary)
+    });
+    let freq = |m: usize| train.operating.meshes[m].mesh_frequency_hz;
+    let meshes = (0..train.stages.len())
+        .map(|m| match first {
+            Some(u) => MeshRow::of(&u.meshes[m].summary, freq(m)),
+            None => MeshRow::from_values(&[freq(m), f64::NAN, f64::NAN, f64::NAN, f64::NAN]),
+        })
+        .collect();
+    // Flank depths of mesh m at the run's end, um (NaN without a record).
+    let depths = |r: &TrainWearRun, m: usize| {
+        r.updates.last().map_or([f64::NAN; 2], |u| {
+            let w = &u.meshes[m].wear;
+            [w.max_pinion_m() * 1e6, w.max_gear_m() * 1e6]
+        })
+    };
+    let end = |r: &TrainWearRun| WearEnd {
+        max_wear_pinion_um: depths(r, 0)[0],
+        max_wear_gear_um: depths(r, 0)[1],
+        updates: r.updates.len().saturating_sub(1) as f64,
+        cycles: r.updates.last().map_or(f64::NAN, |u| u.input_cycles),
+    };
+    let limiting = |r: &TrainWearRun| r.limiting_mesh().map_or(f64::NAN, |(m, _)| (m + 1) as f64);
+    Ok(CaseResults {
+        dynamics,
+        wear: Some([end(&d), end(&q)]),
+        meshes,
+        train_wear: Some(TrainWearEnd {
+            meshes: (0..train.stages.len())
+                .map(|m| MeshWear {
+                    dynamic_um: depths(&d, m),
+                    quasi_static_um: depths(&q, m),
+                })
+                .collect(),
+            limiting_stage: [limiting(&d), limiting(&q)],
+        }),
+    })
 }
 
 /// One steady-state evaluation of `case` with new teeth (a dynamics row), started
@@ -349,12 +436,14 @@ pub fn run_dynamics_from(
                 dynamics: DynamicsRow::of(&s[0]),
                 wear: None,
                 meshes: s.iter().zip(f).map(|(s, f)| MeshRow::of(s, f)).collect(),
+                train_wear: None,
             }
         }
         None => CaseResults {
             dynamics: DynamicsRow::of(&ResponseSummary::of(&r)),
             wear: None,
             meshes: Vec::new(),
+            train_wear: None,
         },
     };
     let outcome = CaseOutcome {
@@ -376,6 +465,7 @@ pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
         dynamics,
         wear: Some([WearEnd::of(d), WearEnd::of(q)]),
         meshes: Vec::new(),
+        train_wear: None,
     }
 }
 
@@ -394,6 +484,7 @@ mod tests {
             dynamics: DynamicsRow::of(&s),
             wear: None,
             meshes: Vec::new(),
+            train_wear: None,
         };
         let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
@@ -429,7 +520,37 @@ mod tests {
         assert_eq!(t.get("stage2_mesh_frequency_hz"), Some(423.0));
         assert_eq!(
             CaseResults::from_values(SweepRun::Dynamics, 2, &t.values()),
-            Some(t)
+            Some(t.clone())
+        );
+        // A train's wear row: the wear columns, two meshes' sets, then each mesh's four
+        // wear columns and the two limiting stages (9 + 8 + 2 x 5 + 2 x 4 + 2 = 37).
+        let mut tw = CaseResults {
+            wear: w.wear,
+            train_wear: Some(TrainWearEnd {
+                meshes: vec![
+                    MeshWear::from_values(&[1.0, 2.0, 3.0, 4.0]),
+                    MeshWear::from_values(&[5.0, 6.0, 7.0, 8.0]),
+                ],
+                limiting_stage: [2.0, 1.0],
+            }),
+            ..t
+        };
+        let cols = tw.columns();
+        assert_eq!(cols.len(), 37);
+        assert_eq!(tw.values().len(), 37);
+        assert_eq!(SweepRun::of_columns(&cols), Some((SweepRun::Wear, 2)));
+        assert_eq!(tw.get("stage2_wear_max_gear_dynamic_um"), Some(6.0));
+        assert_eq!(tw.get("stage1_wear_max_gear_quasi_static_um"), Some(4.0));
+        assert_eq!(tw.get("wear_limiting_stage_quasi_static"), Some(1.0));
+        assert!(CaseResults::from_values(SweepRun::Wear, 2, &tw.values())
+            .unwrap()
+            .same_as(&tw));
+        // Without its wear columns the row is no train wear row.
+        assert_eq!(SweepRun::of_columns(&cols[..27]), None);
+        tw.train_wear = None;
+        assert_eq!(
+            CaseResults::from_values(SweepRun::Wear, 2, &tw.values()),
+            None
         );
     }
 }

@@ -68,6 +68,98 @@ impl MeshRow {
     }
 }
 
+/// Names of a mesh's wear columns in a wear sweep of a train, after its `stage<K>_`
+/// prefix: the deepest wear of each flank at the end of each mode's run, µm (as the
+/// `meshes[K-1].final.MODE` entries of `gearwear wear`'s summary.json).
+pub const MESH_WEAR_COLUMNS: [&str; 4] = [
+    "wear_max_pinion_dynamic_um",
+    "wear_max_gear_dynamic_um",
+    "wear_max_pinion_quasi_static_um",
+    "wear_max_gear_quasi_static_um",
+];
+
+/// The last columns of a wear sweep of a train: the stage (1-based) whose mesh limits
+/// the life in each mode (the deepest wear of either flank at the run's end, as
+/// `limiting_mesh.MODE.stage` of `gearwear wear`'s summary.json).
+pub const LIMITING_STAGE_COLUMNS: [&str; 2] = [
+    "wear_limiting_stage_dynamic",
+    "wear_limiting_stage_quasi_static",
+];
+
+/// One mesh of a train at the end of a wear sweep case's runs (display units).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MeshWear {
+    /// Deepest pinion and gear wear at the end of the dynamic run, µm (NaN without a
+    /// record).
+    pub dynamic_um: [f64; 2],
+    /// Deepest pinion and gear wear at the end of the quasi-static run, µm.
+    pub quasi_static_um: [f64; 2],
+}
+
+impl MeshWear {
+    /// The numbers in [`MESH_WEAR_COLUMNS`] order.
+    pub fn values(&self) -> [f64; 4] {
+        let (d, q) = (self.dynamic_um, self.quasi_static_um);
+        [d[0], d[1], q[0], q[1]]
+    }
+
+    /// From numbers in [`MESH_WEAR_COLUMNS`] order (at least four).
+    pub fn from_values(v: &[f64]) -> Self {
+        Self {
+            dynamic_um: [v[0], v[1]],
+            quasi_static_um: [v[2], v[3]],
+        }
+    }
+}
+
+/// The wear of every mesh of a train at the end of a wear sweep case's runs, and the
+/// stage that limits each mode's life.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TrainWearEnd {
+    /// Each mesh, stage by stage.
+    pub meshes: Vec<MeshWear>,
+    /// The limiting stage (1-based) of the dynamic and the quasi-static run (NaN without
+    /// a record).
+    pub limiting_stage: [f64; 2],
+}
+
+impl TrainWearEnd {
+    /// The numbers in [`mesh_wear_columns`] order.
+    pub fn values(&self) -> Vec<f64> {
+        let mut v: Vec<f64> = self.meshes.iter().flat_map(MeshWear::values).collect();
+        v.extend(self.limiting_stage);
+        v
+    }
+
+    /// From numbers in [`mesh_wear_columns`] order of `stages` meshes; `None` when their
+    /// count is not it.
+    pub fn from_values(stages: usize, v: &[f64]) -> Option<Self> {
+        let n = MESH_WEAR_COLUMNS.len();
+        if stages == 0 || v.len() != stages * n + LIMITING_STAGE_COLUMNS.len() {
+            return None;
+        }
+        Some(Self {
+            meshes: v[..stages * n]
+                .chunks_exact(n)
+                .map(MeshWear::from_values)
+                .collect(),
+            limiting_stage: [v[stages * n], v[stages * n + 1]],
+        })
+    }
+}
+
+/// The wear columns of `stages` meshes, stage by stage, then [`LIMITING_STAGE_COLUMNS`]
+/// (none for a single pair, `stages` = 0).
+pub fn mesh_wear_columns(stages: usize) -> Vec<String> {
+    if stages == 0 {
+        return Vec::new();
+    }
+    (1..=stages)
+        .flat_map(|k| MESH_WEAR_COLUMNS.iter().map(move |c| mesh_column(k, c)))
+        .chain(LIMITING_STAGE_COLUMNS.iter().map(|c| c.to_string()))
+        .collect()
+}
+
 /// The column of `name` (one of [`MESH_COLUMNS`]) of stage `k` (1-based).
 pub fn mesh_column(k: usize, name: &str) -> String {
     format!("stage{k}_{name}")
