@@ -283,9 +283,15 @@ fn what_the_helical_wear_lacks_is_refused_naming_the_key() {
         &with(&["--set", "wear.worn_geometry=\"worn\""]),
         &["wear.worn_geometry"],
     );
-    // Signals still refuse a helical pair, naming the key.
+    // Studies not built for a helical pair refuse it, naming the key.
     rejected(
-        &["signals", "--set", "gear.helix_angle_deg=15"],
+        &[
+            "sweep",
+            "--set",
+            "gear.helix_angle_deg=15",
+            "--vary",
+            "operating.input_speed_hz=20,30",
+        ],
         &["gear.helix_angle_deg"],
     );
     // A load spectrum: one message naming both keys (not one per bin saying that

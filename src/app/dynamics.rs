@@ -2,7 +2,7 @@
 //! teeth, optionally with an external transmission error.
 
 use super::observer::Observer;
-use super::{budget, build_train_model, publish, Job, JobError, Outcome};
+use super::{budget, build_dynamics_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::remedy::Arg;
@@ -58,15 +58,7 @@ impl Job for DynamicsJob {
         if self.case.planetary.is_some() {
             return self.run_planetary(observer);
         }
-        let model = if self.case.gear.helix_angle_deg != 0.0 {
-            let m = crate::study::Model::helical_from_case(&self.case)?;
-            for w in &m.warnings {
-                observer.warning(w);
-            }
-            m
-        } else {
-            build_train_model(&self.case, observer)?
-        };
+        let model = build_dynamics_model(&self.case, observer)?;
         let period = model.pair.mesh_angle_rad();
         let external = match &self.transmission_error {
             Some(TransmissionErrorSource::File(p)) => read_transmission_error(p, period)?,

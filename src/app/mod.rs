@@ -151,6 +151,20 @@ pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, 
     Ok(m)
 }
 
+/// As [`build_train_model`], with a helical pair's planar model
+/// (`Model::helical_from_case`) where the case has a helix angle: for the studies that
+/// take a helical pair through the same solver (`dynamics`, `signals`).
+pub fn build_dynamics_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
+    if case.gear.helix_angle_deg == 0.0 {
+        return build_train_model(case, observer);
+    }
+    let m = Model::helical_from_case(case)?;
+    for w in &m.warnings {
+        observer.warning(w);
+    }
+    Ok(m)
+}
+
 /// The model, the dynamic system built from it and the jobs are shared across threads;
 /// this fails to compile if one of them stops being `Send + Sync` (for instance a solver
 /// type that gains a `Cell`).

@@ -3,7 +3,7 @@
 //! (docs/SIGNALS.md).
 
 use super::observer::Observer;
-use super::{budget, build_train_model, publish, Job, JobError, Outcome};
+use super::{budget, build_dynamics_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureRequest;
@@ -47,12 +47,25 @@ pub fn transfer_path_of(
 /// load fluctuation): only the steady record runs on a train so far.
 const TRAIN_TRANSIENT: &str = "this case is a gear train ([[stage]] tables) with a transient record (`signals.ramp_end_speed_hz` or `signals.torque_fluctuation_rms_nm` > 0): on a train, `gearwear signals` records the steady state only; remove those keys, or take a single pair ([gear], without [[stage]])";
 
-/// Refuse a transient record of a gear train (before the budget check).
+/// What the signals study says of a helical pair with a transient record: the planar
+/// helical model runs the steady record only so far.
+const HELICAL_TRANSIENT: &str = "with a transient record (`signals.ramp_end_speed_hz` or `signals.torque_fluctuation_rms_nm` > 0): a helical pair's `gearwear signals` records the steady state only so far; remove those keys, or set `gear.helix_angle_deg` = 0 for a spur pair";
+
+/// Refuse a transient record of a gear train or a helical pair (before the budget check).
 fn refuse_train_transient(case: &Case) -> Result<(), JobError> {
-    if case.stage.is_empty() || !crate::study::transient_signals::is_transient(case) {
+    if !crate::study::transient_signals::is_transient(case) {
         return Ok(());
     }
-    Err(JobError::input(Problem::new(TRAIN_TRANSIENT.to_owned())))
+    if !case.stage.is_empty() {
+        return Err(JobError::input(Problem::new(TRAIN_TRANSIENT.to_owned())));
+    }
+    if case.gear.helix_angle_deg != 0.0 {
+        return Err(JobError::input(Problem::new(format!(
+            "`gear.helix_angle_deg` = {} {HELICAL_TRANSIENT}",
+            case.gear.helix_angle_deg
+        ))));
+    }
+    Ok(())
 }
 
 /// See the module docs.
@@ -101,7 +114,7 @@ impl Job for SignalsJob {
             &estimate_signals(&self.case, channels),
             self.budget.as_ref(),
         )?;
-        let model = build_train_model(&self.case, observer)?;
+        let model = build_dynamics_model(&self.case, observer)?;
         // The chain is checked against the sensor stage's pair at its own pinion speed
         // (the stage's case; the single pair's case itself).
         let chain_case = model.train.as_ref().map_or(&self.case, |t| {
@@ -122,8 +135,13 @@ impl Job for SignalsJob {
             observer.warning(w);
         }
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
-        let rec = record_case(&model, &setup, &WearState::new(model.grid.len()))
-            .map_err(|e| JobError::Failed(e.into()))?;
+        // New teeth: a helical pair's per slice, else the one profile the record has
+        // always been made with.
+        let new = match model.helical {
+            Some(_) => model.new_wear_state(),
+            None => WearState::new(model.grid.len()),
+        };
+        let rec = record_case(&model, &setup, &new).map_err(|e| JobError::Failed(e.into()))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
         // Judged by effect, as the model judges its teeth: zero errors, zero-depth
         // faults and zero reliefs leave the new, perfect teeth.

@@ -152,7 +152,7 @@ fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
         );
     }
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics` and the wear per slice of `gearwear wear`; axial and tilting motion, signals and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics` and `gearwear wear` take helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals` and the wear per slice of `gearwear wear`; axial and tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals` and `gearwear wear` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 
