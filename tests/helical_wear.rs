@@ -14,6 +14,14 @@ use gearwear::study::wear_loop::{run_wear, solve, WearMode, WearRun};
 use gearwear::study::Model;
 use std::f64::consts::PI;
 
+/// cos(beta_b) by hand (ISO 21771:2007): tan(alpha_t) = tan(alpha_n) / cos(beta),
+/// tan(beta_b) = tan(beta) cos(alpha_t); angles in degrees.
+fn cos_base_helix_by_hand(beta_deg: f64, alpha_n_deg: f64) -> f64 {
+    let beta = beta_deg.to_radians();
+    let alpha_t = (alpha_n_deg.to_radians().tan() / beta.cos()).atan();
+    (beta.tan() * alpha_t.cos()).atan().cos()
+}
+
 fn sets(s: &[&str]) -> Vec<String> {
     s.iter().map(|x| x.to_string()).collect()
 }
@@ -157,7 +165,8 @@ fn the_volume_removed_is_the_sum_of_the_slices_archard_integrals() {
     // samples where the program interpolates p0 and a: the two differ at second order in
     // the load's and the radius' change between samples (p0 and a go as their square
     // roots; at single points up to 8e-6, the load changing by up to 1.8 % between
-    // samples); 2e-6 relative allowed on the volume (measured 3.3e-7).
+    // samples); 2e-6 relative allowed on the volume (measured 3.3e-7). The flank's area
+    // element is the transverse one over cos(beta_b) (`cos_bb`, by hand below).
     let m = helical(&[
         "gear.helix_angle_deg=15",
         "modification.crowning_um=6",
@@ -189,6 +198,7 @@ fn the_volume_removed_is_the_sum_of_the_slices_archard_integrals() {
         z1_z2: z1 / z2,
     };
     let (rb1, rb2) = (t.pinion.base_radius_m, t.gear.base_radius_m);
+    let area_width = hand.width_m / cos_base_helix_by_hand(15.0, 20.0);
     let g = &m.grid;
     let (mut vp, mut vg) = (0.0, 0.0);
     for path in &paths {
@@ -202,8 +212,8 @@ fn the_volume_removed_is_the_sum_of_the_slices_archard_integrals() {
             let (y0, y1) = (t.loa_length_m - x0, t.loa_length_m - x1);
             let dsp = (x1 * x1 - x0 * x0) / (2.0 * rb1);
             let dsg = (y0 * y0 - y1 * y1).abs() / (2.0 * rb2);
-            vp += 0.5 * (d[i].0 + d[i + 1].0) * dsp * hand.width_m;
-            vg += 0.5 * (d[i].1 + d[i + 1].1) * dsg * hand.width_m;
+            vp += 0.5 * (d[i].0 + d[i + 1].0) * dsp * area_width;
+            vg += 0.5 * (d[i].1 + d[i + 1].1) * dsg * area_width;
         }
     }
     let (got_p, got_g) = slice_volumes_m3(&m, hd, r1.wear.slices.as_ref().unwrap());
@@ -454,8 +464,9 @@ fn the_wear_map_outputs_hold_the_slices_the_mean_profile_and_the_volume() {
                 "{flank} point {i}: {avg} vs {w}"
             );
         }
-        // The volume: each slice's layer over its width b / N, trapezoids in the
-        // involute's arc length s = rho^2 / (2 r_b) (mm, µm -> mm^3 by 1e-3).
+        // The volume: each slice's layer over its flank width b / (N cos(beta_b)),
+        // trapezoids in the involute's arc length s = rho^2 / (2 r_b) (mm, µm -> mm^3 by
+        // 1e-3).
         let s_mm = |r: f64| r * r / (2.0 * rb);
         let volume: f64 = maps
             .iter()
@@ -467,6 +478,7 @@ fn the_wear_map_outputs_hold_the_slices_the_mean_profile_and_the_volume() {
                     .sum::<f64>()
                     * b_mm
                     / n as f64
+                    / cos_base_helix_by_hand(15.0, 20.0)
             })
             .sum();
         let got = want["volume_mm3"].as_f64().unwrap();
@@ -490,7 +502,8 @@ fn the_solver_reads_a_worn_line_where_its_slices_are() {
     // within a tenth of L for r < 1.5 (a single tooth pair's stiffness along its path
     // varies less; were it not so, this bound, not the code, would fail). Read at the
     // line's middle instead (the reading this test guards against), the gap sits about L
-    // ahead, half a line away from the bound (measured 4.97 mm of L = 5.01 mm).
+    // ahead, half a line away from the bound (measured 4.97 mm of L = 5.01 mm). The gap
+    // along the transverse line of action is the normal depth over cos(beta_b).
     let m = helical(&["gear.helix_angle_deg=15"]);
     let h = m.helical.as_ref().unwrap();
     let line_m = h.slice_model.pair().face_width_m * h.pair.base_helix_angle_rad.tan();
@@ -508,10 +521,72 @@ fn the_solver_reads_a_worn_line_where_its_slices_are() {
     for t in [0.1, 0.5, 0.9] {
         let rho1 = a + t * (e - a - line_m);
         let g = m.contact.plain_pair(&m.mesh, &gap, rho1).gap_m;
-        let at = g / c - rho1;
+        let at = g * h.pair.base_helix_angle_rad.cos() / c - rho1;
         assert!(
             (at - 0.5 * line_m).abs() < 0.1 * line_m,
             "trailing end {rho1} m: the line's gap sits {at} m ahead, line {line_m} m"
         );
+    }
+}
+
+#[test]
+fn a_normal_wear_depth_is_its_transverse_gap_over_cos_beta_b_and_its_flank_volume() {
+    // Archard's depth is normal to the flank; the normal of an involute helicoid lies in
+    // the plane of action at beta_b to the transverse plane (ISO 21771:2007, 4.4), so a
+    // layer h_n thick is h_n / cos(beta_b) thick along the transverse line of action, the
+    // direction of the slices' deflection; and the flank's area element is the transverse
+    // arc length ds times dy / cos(beta_b). A uniform depth c on every slice (pinion 0.6 c,
+    // gear 0.4 c): every contact line wholly on the path sees the gap c / cos(beta_b)
+    // (a stiffness-weighted mean of equal values: 1e-12 relative for the round-off of the
+    // sums), also with one slice (its own line); the volume of one flank is c times its
+    // area b / cos(beta_b) (s_E - s_A), s = rho^2 / (2 r_b), the base radii by hand (1e-9:
+    // the model's exact formulas against these). The old code (depth as the gap, area over
+    // b) was 3.0 % low at beta = 15 deg (cos(beta_b) = 0.9700, beta_b = 14.08 deg).
+    let cos_bb = cos_base_helix_by_hand(15.0, 20.0);
+    assert!((cos_bb - 0.970).abs() < 1e-3, "{cos_bb}");
+    let c = 2e-6;
+    for slices in [40usize, 1] {
+        let n = format!("stiffness.slices={slices}");
+        let m = helical(&["gear.helix_angle_deg=15", &n]);
+        let h = m.helical.as_ref().unwrap();
+        let mut wear = gearwear::wear::WearState::per_slice(m.grid.len(), slices);
+        wear.pinion_m.iter_mut().for_each(|d| *d = 0.6 * c);
+        wear.gear_m.iter_mut().for_each(|d| *d = 0.4 * c);
+        let s = wear.slices.as_mut().unwrap();
+        s.pinion_m.iter_mut().flatten().for_each(|d| *d = 0.6 * c);
+        s.gear_m.iter_mut().flatten().for_each(|d| *d = 0.4 * c);
+        let gap = m.wear_gap(&wear);
+        let line_m = h.slice_model.pair().face_width_m * h.pair.base_helix_angle_rad.tan();
+        let t = &h.pair.transverse;
+        let (a, e) = (t.rho_start_m, t.rho_end_m);
+        for f in [0.0, 0.3, 0.7, 1.0] {
+            let rho1 = a + f * (e - a - line_m);
+            let g = m.contact.plain_pair(&m.mesh, &gap, rho1).gap_m;
+            assert!(
+                (g - c / cos_bb).abs() <= 1e-12 * c,
+                "{slices} slices, trailing end {rho1} m: gap {g:e} m, want {:e}",
+                c / cos_bb
+            );
+        }
+        let (vp, vg) = slice_volumes_m3(&m, h, wear.slices.as_ref().unwrap());
+        let (beta, alpha_n) = (15f64.to_radians(), 20f64.to_radians());
+        let alpha_t = (alpha_n.tan() / beta.cos()).atan();
+        let rb = |z: f64| z * 2e-3 / (2.0 * beta.cos()) * alpha_t.cos();
+        let arc = |rho: &[f64], rb: f64| {
+            let (lo, hi) = (
+                rho[0].min(rho[rho.len() - 1]),
+                rho[0].max(rho[rho.len() - 1]),
+            );
+            (hi * hi - lo * lo) / (2.0 * rb)
+        };
+        let b = 20e-3;
+        let want_p = 0.6 * c * b / cos_bb * arc(&m.grid.rho_pinion_m, rb(19.0));
+        let want_g = 0.4 * c * b / cos_bb * arc(&m.grid.rho_gear_m, rb(31.0));
+        for (name, got, want) in [("pinion", vp, want_p), ("gear", vg, want_g)] {
+            assert!(
+                (got / want - 1.0).abs() < 1e-9,
+                "{slices} slices, {name}: volume {got:e} m^3, by hand {want:e}"
+            );
+        }
     }
 }

@@ -7,9 +7,8 @@
 
 mod common;
 use common::resume::{
-    cut_log, cut_then_resumed_is_unchanged, foreign_logs_refused,
+    cut_log, cut_then_resumed_is_unchanged, edit_update, foreign_logs_refused,
     killed_then_resumed_is_uninterrupted, refused, resuming_a_finished_run_changes_nothing, run,
-    sha,
 };
 use std::path::{Path, PathBuf};
 
@@ -81,16 +80,7 @@ fn a_killed_planetary_run_resumes_to_the_bytes_of_an_uninterrupted_one() {
 /// (when `key` names an array, its largest element: a point where the profile has worn),
 /// with a fresh checksum when `rehash`.
 fn scale(path: &Path, rehash: bool, at: usize, key: &str, f: f64) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut out = String::new();
-    for (i, line) in text.lines().enumerate() {
-        if i != at + 1 {
-            out.push_str(line);
-            out.push('\n');
-            continue;
-        }
-        let (sum, json) = line.split_once(' ').unwrap();
-        let mut v: serde_json::Value = serde_json::from_str(json).unwrap();
+    edit_update(path, at, rehash, &|v| {
         let at_key = match v.pointer(key).unwrap().as_array() {
             Some(a) => {
                 let k = (0..a.len())
@@ -107,11 +97,7 @@ fn scale(path: &Path, rehash: bool, at: usize, key: &str, f: f64) {
             "{key} of update {at} is {y}: the edit would change nothing"
         );
         *x = serde_json::json!(y * f);
-        let j = serde_json::to_string(&v).unwrap();
-        let s = if rehash { sha(&j) } else { sum.to_owned() };
-        out.push_str(&format!("{s} {j}\n"));
-    }
-    std::fs::write(path, out).unwrap();
+    });
 }
 
 #[test]

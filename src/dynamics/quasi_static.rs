@@ -9,12 +9,17 @@
 //! with f_i = mu_i kappa_i F tanh(u_s/v_s) at the nominal speeds; mu_i depends on the pair
 //! load through the Hertz pressure, so F is found by fixed-point iteration (friction is a
 //! few per cent of F, the iteration contracts by that factor). The mesh deflection then
-//! solves sum_i k_i max(delta - g_i, 0) = F exactly (pairs closing their gaps in order).
+//! solves sum_i k_i max(delta - g_i, 0) = F exactly (pairs closing their gaps in order);
+//! a helical pair's contact lines with lead gaps across the face carry the dynamic
+//! model's line force instead, sum_l F_l(delta - g_l) = F with
+//! F_l(c) = sum_j k_j (c - G_j)+ (`LineGapTable::force`, docs/MODEL.md 11.1 and 11.3),
+//! solved exactly by [`lead_deflection_for_force`].
 
 use super::grid::{excitation_periods, period_nodes_in, train_nodes};
 use super::model::{GearSystem, MeshState, TrainMesh, MAX_PAIRS};
 use super::response::{DynamicResponse, MeshResponse, PathSample, Signals};
 use crate::config::case::SpeedBoundary;
+use crate::stiffness::helical_lead::LineGapTable;
 
 /// Mesh deflection delta (m) with sum k_i max(delta - g_i, 0) = force (N), k_i >= 0
 /// (a pair of zero stiffness, a contact a broken tip removed, carries nothing). Returns
@@ -40,6 +45,49 @@ pub fn deflection_for_force(k: &[f64], gap: &[f64], force_n: f64) -> f64 {
         }
     }
     0.0
+}
+
+/// Mesh deflection delta (m) of a helical pair's contact lines with lead gaps: the root of
+///   f(delta) = sum_l F_l(rho_l, delta - g_l) = force (N),
+/// F_l the line's force at trailing end `rho_m[l]` and compression c (`LineGapTable::
+/// force`: sum_j k_j (c - G_j)+, the dynamic model's law; docs/MODEL.md 11.1), g_l the
+/// line's gap `gap[l]` (m). f is continuous, piecewise linear, increasing and convex in
+/// delta (each slice adds its stiffness as its gap closes), so Newton's steps from a point
+/// right of the root (every slice compressed) stay right of it, fall monotonically and end
+/// exactly on the root's linear piece: no tolerance (at most one step per kink). Without
+/// a line that can carry load, or without load, the smallest gap (first touch).
+pub(crate) fn lead_deflection_for_force(
+    table: &LineGapTable,
+    rho_m: &[f64],
+    gap: &[f64],
+    force_n: f64,
+) -> f64 {
+    let first_touch = gap.iter().fold(f64::INFINITY, |m, g| m.min(*g)).min(1.0);
+    let lines = || rho_m.iter().zip(gap);
+    let all: f64 = lines()
+        .map(|(r, _)| table.force(*r, f64::MAX, false).1)
+        .sum();
+    if force_n <= 0.0 || all <= 0.0 {
+        return first_touch;
+    }
+    let highest = gap.iter().fold(f64::NEG_INFINITY, |m, g| m.max(*g));
+    // Every slice of every line compressed: f(delta) >= sum_l K_l (delta - g_l - G_max).
+    let mut delta = highest + table.largest_gap_m() + force_n / all;
+    // One step per kink passed (the lines' slices), a few more for the round-off.
+    for _ in 0..table.slices() * rho_m.len() + 8 {
+        let (mut f, mut k) = (0.0, 0.0);
+        for (r, g) in lines() {
+            let (fl, kl) = table.force(*r, delta - g, false);
+            f += fl;
+            k += kl;
+        }
+        let next = delta - (f - force_n) / k;
+        if k <= 0.0 || next >= delta || next.is_nan() {
+            break;
+        }
+        delta = next;
+    }
+    delta
 }
 
 /// Phases per mesh period over which [`loaded_mean_stiffnesses`] averages.
@@ -115,7 +163,7 @@ fn mesh_equilibrium(
     cycle_now: i64,
     t_s: f64,
 ) -> MeshState {
-    let (mut ms, k, gap) = pairs_at(mesh, phase_rad, cycle_now, t_s);
+    let (mut ms, k, gap, ends) = pairs_at(mesh, phase_rad, cycle_now, t_s);
     let n = ms.n_pairs;
     if k[..n].iter().all(|k| *k <= 0.0) {
         // No pair can carry the load (a broken tip's removed contact in single contact):
@@ -123,7 +171,12 @@ fn mesh_equilibrium(
         ms.deflection_m = deflection_for_force(&k[..n], &gap[..n], 0.0);
         return ms;
     }
-    carry_the_torque(mesh, boundary, &mut ms, &k[..n], &gap[..n]);
+    let law = PairLaw {
+        k: &k[..n],
+        gap: &gap[..n],
+        lead: mesh.parts.contact.lead_gaps().map(|t| (t, &ends[..n])),
+    };
+    carry_the_torque(mesh, boundary, &mut ms, &law);
     if ms.corner[..n].contains(&true) {
         // The mesh's stiffness counts the corners beyond the path only where they touch.
         ms.stiffness_total_n_per_m = (0..n)
@@ -134,20 +187,60 @@ fn mesh_equilibrium(
     ms
 }
 
+/// How the pairs of a mesh carry its force: springs k_i (delta - g_i)+ (N/m, m), or a
+/// helical pair's contact lines with lead gaps, the line table's force at each line's
+/// trailing end (m) and compression delta - g_i (the dynamic model's law,
+/// `TrainMesh::springs`).
+struct PairLaw<'a> {
+    k: &'a [f64],
+    gap: &'a [f64],
+    lead: Option<(&'a LineGapTable, &'a [f64])>,
+}
+
+impl PairLaw<'_> {
+    /// The deflection (m) at which the pairs carry `force_n` (N).
+    fn deflection(&self, force_n: f64) -> f64 {
+        match self.lead {
+            None => deflection_for_force(self.k, self.gap, force_n),
+            Some((t, ends)) => lead_deflection_for_force(t, ends, self.gap, force_n),
+        }
+    }
+
+    /// Each pair's share of the mesh force `force_n` (N) at deflection `delta_m` (m): its
+    /// force over the mesh force.
+    fn shares(&self, delta_m: f64, force_n: f64) -> [f64; MAX_PAIRS] {
+        let Some((t, ends)) = self.lead else {
+            return compression_shares(self.k, self.gap, delta_m, force_n);
+        };
+        let mut sh = [0.0; MAX_PAIRS];
+        for (i, (r, g)) in ends.iter().zip(self.gap).enumerate() {
+            sh[i] = t.force(*r, delta_m - g, false).0 / force_n;
+        }
+        sh
+    }
+}
+
 /// The pairs of `mesh` in reach at `phase_rad` (tooth cycle `cycle_now`, time `t_s` for
-/// the run-out): a mesh state with their positions, stiffnesses (N/m) and flags, and each
-/// pair's stiffness and gap (m, the external and run-out errors taken off).
+/// the run-out): a mesh state with their positions, stiffnesses (N/m) and flags, each
+/// pair's stiffness and gap (m, the external and run-out errors taken off), and its place
+/// on the line pair (m: a helical contact line's trailing end).
 fn pairs_at(
     mesh: &TrainMesh,
     phase_rad: f64,
     cycle_now: i64,
     t_s: f64,
-) -> (MeshState, [f64; MAX_PAIRS], [f64; MAX_PAIRS]) {
+) -> (
+    MeshState,
+    [f64; MAX_PAIRS],
+    [f64; MAX_PAIRS],
+    [f64; MAX_PAIRS],
+) {
     let parts = &mesh.parts;
     let (e_ext, _) = parts.external.at(phase_rad);
     let mut ms = MeshState::default();
     let mut k = [0.0; MAX_PAIRS];
     let mut gap = [0.0; MAX_PAIRS];
+    let mut ends = [0.0; MAX_PAIRS];
     let mut n = 0;
     let e_run = parts.teeth.map_or(0.0, |tm| tm.runout_at(t_s).0);
     let contact = parts.contact;
@@ -159,6 +252,7 @@ fn pairs_at(
             break;
         }
         ms.rho1_m[n] = contact.contact_rho1_m(rho1);
+        ends[n] = rho1;
         match parts.teeth {
             None => {
                 let pp = contact.plain_pair(parts.mesh, parts.gap, rho1);
@@ -183,19 +277,13 @@ fn pairs_at(
         n += 1;
     }
     ms.n_pairs = n;
-    (ms, k, gap)
+    (ms, k, gap, ends)
 }
 
 /// The mesh force that carries the loaded shaft's torque with the friction moment of
 /// the pairs it loads (N; a fixed point, at most 8 passes, to 1e-12), set in `ms` with
-/// its deflection and contacts. The pairs' stiffness `k` (N/m) and gaps (m).
-fn carry_the_torque(
-    mesh: &TrainMesh,
-    boundary: SpeedBoundary,
-    ms: &mut MeshState,
-    k: &[f64],
-    gap: &[f64],
-) {
+/// its deflection and contacts. The pairs carry it by `law`.
+fn carry_the_torque(mesh: &TrainMesh, boundary: SpeedBoundary, ms: &mut MeshState, law: &PairLaw) {
     let parts = &mesh.parts;
     let [omega_p, omega_g] = mesh.operating.speeds_rad_s;
     let (torque, on_gear) = match boundary {
@@ -207,13 +295,13 @@ fn carry_the_torque(
     } else {
         parts.pair.pinion.base_radius_m
     };
-    let n = k.len();
+    let n = law.k.len();
     let mut force = torque / arm;
     for _ in 0..8 {
         ms.force_n = force;
-        let delta = deflection_for_force(k, gap, force);
+        let delta = law.deflection(force);
         ms.deflection_m = delta;
-        let sh = compression_shares(k, gap, delta, force.max(1e-300));
+        let sh = law.shares(delta, force.max(1e-300));
         mesh.fill_contacts(ms, Some(sh), omega_p, omega_g);
         // Friction moment per unit mesh force on the loaded shaft.
         let mut moment_per_n = 0.0;
@@ -233,8 +321,8 @@ fn carry_the_torque(
         }
     }
     ms.force_n = force;
-    ms.deflection_m = deflection_for_force(k, gap, force);
-    let sh = compression_shares(k, gap, ms.deflection_m, force);
+    ms.deflection_m = law.deflection(force);
+    let sh = law.shares(ms.deflection_m, force);
     mesh.fill_contacts(ms, Some(sh), omega_p, omega_g);
 }
 

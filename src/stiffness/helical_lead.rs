@@ -107,6 +107,16 @@ impl LineGapTable {
     pub fn points(&self) -> usize {
         self.points
     }
+
+    /// The largest gap of the line's slices, m (every slice touches beyond it).
+    pub(crate) fn largest_gap_m(&self) -> f64 {
+        self.sorted_gaps_m.last().copied().unwrap_or(0.0)
+    }
+
+    /// Number of slices N of the line.
+    pub(crate) fn slices(&self) -> usize {
+        self.sorted_gaps_m.len()
+    }
 }
 
 #[cfg(test)]

@@ -112,18 +112,41 @@ impl HelicalDynamics {
         }
     }
 
+    /// cos(beta_b): a wear depth h_n normal to the flank is h_n / cos(beta_b) along the
+    /// transverse line of action, and the flank's area is the transverse section's over
+    /// cos(beta_b) (docs/MODEL.md 11.3 derives both; ISO 21771:2007, 4.4, and Litvin &
+    /// Fuentes, *Gear Geometry and Applied Theory*, 2nd ed. 2004, on involute helical gears
+    /// with parallel axes: the normal to the involute helicoid lies in the plane of action
+    /// at beta_b to the transverse plane). Exactly 1 at beta = 0.
+    pub(crate) fn cos_base_helix(&self) -> f64 {
+        self.pair.base_helix_angle_rad.cos()
+    }
+
     /// The worn slices as each contact line's gap on the line pair, m (docs/MODEL.md 11.3,
-    /// `study::helical_wear`): the stiffness-weighted mean of the line's slices' wear gaps,
+    /// `study::helical_wear`): the stiffness-weighted mean of the line's slices' wear gaps
+    /// along the transverse line of action ([`slice_gap_m`]: the normal depths over
+    /// cos(beta_b)),
     ///   e_l(rho) = sum_i k_i g_j(i)(rho + o_i) / sum_i k_i,
     /// at the wear grid's spacing over the positions of the line's trailing end (rho, where
     /// the solver reads it, `ContactPath::plain_pair`), slice i at its offset o_i from it.
-    /// At beta = 0 (no lead: every slice at the same place) it is the wear state's own gap,
-    /// the mean profile over the slices.
+    /// One slice (no lead: the slice is its own line) gives the wear state's own gap, the
+    /// mean profile over the slices over cos(beta_b); at beta = 0 that is the spur pair's
+    /// gap bit for bit.
     pub fn wear_gap(&self, grid: &ProfileGrid, wear: &WearState) -> PairGap {
         let s = &self.slice_model;
         let lines = s.line_grid();
+        let cos_bb = self.cos_base_helix();
         if wear.slices.is_none() || lines.lead == 0.0 {
-            return wear.pair_gap(grid);
+            if cos_bb == 1.0 {
+                return wear.pair_gap(grid);
+            }
+            let transverse = |h: &[f64]| h.iter().map(|x| x / cos_bb).collect();
+            return PairGap::from_flanks(
+                grid.rho_pinion_m[0],
+                grid.spacing_m,
+                transverse(&wear.pinion_m),
+                transverse(&wear.gear_m),
+            );
         }
         let t = &s.pair().transverse;
         let spacing = grid.spacing_m;
@@ -136,7 +159,8 @@ impl HelicalDynamics {
                     let r = rho + o;
                     if (t.rho_start_m..=t.rho_end_m).contains(&r) {
                         let ki = s.slice().pair_stiffness_n_per_m(r);
-                        kg += ki * slice_gap_m(grid, wear, s.face_slice_of_line_slice(i), r);
+                        let j = s.face_slice_of_line_slice(i);
+                        kg += ki * slice_gap_m(grid, wear, j, r, cos_bb);
                         k += ki;
                     }
                 }
@@ -151,11 +175,22 @@ impl HelicalDynamics {
     }
 }
 
-/// Wear gap of face slice `j` at transverse position `rho_m`: pinion plus gear wear at the
-/// conjugate points, m (0 with no per-slice wear).
-pub(crate) fn slice_gap_m(grid: &ProfileGrid, wear: &WearState, j: usize, rho_m: f64) -> f64 {
+/// Wear gap of face slice `j` at transverse position `rho_m` along the transverse line of
+/// action, the slice's deflection direction, m: pinion plus gear wear depth at the
+/// conjugate points (Archard's, normal to the flank) over `cos_bb` = cos(beta_b) (0 with no
+/// per-slice wear). The flank's normal lies in the plane of action at beta_b to the
+/// transverse plane (ISO 21771:2007, 4.4; Litvin & Fuentes 2004), so a layer of normal
+/// thickness h_n cut by the transverse plane is h_n / cos(beta_b) thick along the
+/// transverse line of action (docs/MODEL.md 11.3).
+pub(crate) fn slice_gap_m(
+    grid: &ProfileGrid,
+    wear: &WearState,
+    j: usize,
+    rho_m: f64,
+    cos_bb: f64,
+) -> f64 {
     wear.slices.as_ref().map_or(0.0, |s| {
-        grid.interpolate(&s.pinion_m[j], rho_m) + grid.interpolate(&s.gear_m[j], rho_m)
+        (grid.interpolate(&s.pinion_m[j], rho_m) + grid.interpolate(&s.gear_m[j], rho_m)) / cos_bb
     })
 }
 

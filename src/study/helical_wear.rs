@@ -10,7 +10,8 @@
 //! place their slices on the transverse path: line slice i at rho + o_i, on face slice j.
 //! Slice j's spring (N/m, `stiffness::helical`) compressed by
 //!   c_j = delta - G_j - g_j(rho),  G_j its lead gap (docs/MODEL.md 11.2), g_j(rho) its own
-//!   wear gap (pinion plus gear wear at the conjugate points, m),
+//!   wear gap along the transverse line of action (pinion plus gear wear depth at the
+//!   conjugate points, normal to the flank, over cos(beta_b): `study::helical::slice_gap_m`),
 //! carries F_j = k_j c_j+ (no coupling between slices, as in the slice model); the mesh
 //! force F (springs and damper) is shared in proportion, F_j F / sum F_j, so the slice loads
 //! add to the recorded force (as `study::face_load_dynamic` shares it).
@@ -87,6 +88,7 @@ pub fn slice_paths(
     let grid = s.line_grid();
     let width = s.pair().face_width_m / n as f64;
     let lead = lead_gaps_m(h);
+    let cos_bb = h.cos_base_helix();
     let sig = &r.signals;
     let ms = &sig.meshes[0];
     let xu = XuConstants::new(model.case.lubricant.viscosity_cp, model.roughness_for(wear));
@@ -114,7 +116,7 @@ pub fn slice_paths(
                     continue;
                 }
                 let j = s.face_slice_of_line_slice(li);
-                let c = ms.dte_m[i] - lead[j] - slice_gap_m(&model.grid, wear, j, x);
+                let c = ms.dte_m[i] - lead[j] - slice_gap_m(&model.grid, wear, j, x, cos_bb);
                 let f = s.slice().pair_stiffness_n_per_m(x) * c.max(0.0);
                 if f > 0.0 {
                     contacts.push((j, x, f));
@@ -239,12 +241,15 @@ pub fn layer_volume_m3(rho_m: &[f64], depth_m: &[f64], base_radius_m: f64, width
 }
 
 /// Volume of a per-slice wear map on one pinion flank and one gear flank (pinion, gear),
-/// m^3: the sum over face slices of each slice's layer over its width b/N
-/// ([`layer_volume_m3`]). Of an increment: the volume per pinion cycle (the gear's with
-/// the z1/z2 of eq. 17 in it).
+/// m^3: the sum over face slices of each slice's layer ([`layer_volume_m3`]), its depth
+/// Archard's normal to the flank, over the slice's flank width (b/N) / cos(beta_b): the
+/// involute helicoid's area element is the transverse arc length's ds times dy /
+/// cos(beta_b) (docs/MODEL.md 11.3; the contact line of a slice is b/(N cos(beta_b))
+/// long). Of an increment: the volume per pinion cycle (the gear's with the z1/z2 of
+/// eq. 17 in it).
 pub fn slice_volumes_m3(model: &Model, h: &HelicalDynamics, map: &SliceWear) -> (f64, f64) {
     let b = h.slice_model.pair().face_width_m;
-    let width = b / h.slices as f64;
+    let width = b / h.slices as f64 / h.cos_base_helix();
     let g = &model.grid;
     let (rb1, rb2) = (
         model.pair.pinion.base_radius_m,

@@ -8,10 +8,12 @@
 //! and non-negative; each record's wear is the previous record's wear advanced by the
 //! previous increment over the cycles between them; the roughness is the case's law at
 //! the record's wear depth; a dynamic record holds its periodic end state (16 finite
-//! numbers) and a quasi-static one none, so records of one mode cannot pass for the other.
+//! numbers) and a quasi-static one none, so records of one mode cannot pass for the other;
+//! a helical pair's record holds N face slices' wear, each exactly its previous wear
+//! advanced over the recomputed block (docs/MODEL.md 11.3).
 
 use super::model::Model;
-use super::wear_loop::{next_update, Next, UpdateRecord, WearMode, WearRun};
+use super::wear_loop::{advanced_state, next_update, Next, UpdateRecord, WearMode, WearRun};
 
 /// Relative tolerance of the chain check: the advance is recomputed with the same
 /// floating-point operations, so only the rounding of the cycle difference (exact for
@@ -66,6 +68,12 @@ pub fn check_wear_run(run: &WearRun, model: &Model) -> Result<(), StoredRunError
         record_problem(run.mode, r, model).map_err(at)?;
         if i > 0 {
             step_problem(&run.records[i - 1], r).map_err(at)?;
+            if let Some(p) = slice_chain_problem(model, &run.records[i - 1], r) {
+                return Err(StoredRunError::Mismatch(format!(
+                    "line {} (update {i}): {p}",
+                    i + 2
+                )));
+            }
         }
     }
     Ok(())
@@ -165,6 +173,45 @@ fn step_problem(prev: &UpdateRecord, r: &UpdateRecord) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// A helical pair's per-slice chain (docs/MODEL.md 11.3): record `r`'s wear must be, bit
+/// for bit, the state the wear loop makes from `prev` (each face slice's wear advanced by
+/// its own increment over the block the case's threshold and total give,
+/// `wear_loop::advanced_state`), recomputed here from `prev` rather than read from `r`
+/// (its cycles included), so an edited slice value of any record is refused, not only of
+/// the records the resume recomputes. None for a spur pair (its chain is
+/// [`step_problem`]'s).
+fn slice_chain_problem(model: &Model, prev: &UpdateRecord, r: &UpdateRecord) -> Option<String> {
+    model.helical.as_ref()?;
+    let Some(want) = advanced_state(model, prev) else {
+        return Some(format!(
+            "follows an update at {} cycles, where the case's wear.total_cycles {} is reached",
+            prev.wear.cycles, model.case.wear.total_cycles
+        ));
+    };
+    let block = want.cycles - prev.wear.cycles;
+    if let (Some(a), Some(b)) = (&want.slices, &r.wear.slices) {
+        for (flank, wa, wb) in [
+            ("pinion", &a.pinion_m, &b.pinion_m),
+            ("gear", &a.gear_m, &b.gear_m),
+        ] {
+            for (j, (pa, pb)) in wa.iter().zip(wb).enumerate() {
+                if let Some(i) = pa.iter().zip(pb).position(|(x, y)| x != y) {
+                    return Some(format!(
+                        "the {flank} wear of face slice {j} at point {i} is {:e} m, not the previous update's plus {block} cycles of its increment ({:e} m, recomputed): the per-slice chain is broken",
+                        pb[i], pa[i]
+                    ));
+                }
+            }
+        }
+    }
+    (want != r.wear).then(|| {
+        format!(
+            "its wear (at {} cycles) is not the previous update's advanced over the block to {} cycles at the previous rates, slice by slice",
+            r.wear.cycles, want.cycles
+        )
+    })
 }
 
 /// Most records recomputed when a checkpoint is resumed (the first, the last, and a

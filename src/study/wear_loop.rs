@@ -486,6 +486,24 @@ pub enum Next {
     Finished,
 }
 
+/// The wear state the update after `last` is solved on (paper eq. 17): `last`'s wear
+/// advanced by its per-cycle increment (every face slice or tooth by its own) over the
+/// next block, cut to the case's threshold and total ([`block_length`]); None when the
+/// total is reached. Also recomputed to check a stored run's chain (`study::wear_check`).
+pub(crate) fn advanced_state(model: &Model, last: &UpdateRecord) -> Option<WearState> {
+    let w = &model.case.wear;
+    let threshold_m = w.threshold_um * 1e-6;
+    let remaining = w.total_cycles - last.wear.cycles;
+    if remaining <= 0.5 {
+        return None;
+    }
+    let inc = last.increment();
+    let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
+    let mut state = last.wear.clone();
+    state.advance(&inc, n);
+    Some(state)
+}
+
 /// The update after `last` (`None`: the first update, new teeth at cycle 0), exactly as
 /// [`run_wear`] makes it: the loop's one step, also used to verify a checkpoint by
 /// recomputing its last update (`study::wear_check`). Only the first update's failure is
@@ -495,21 +513,14 @@ pub fn next_update(
     mode: WearMode,
     last: Option<&UpdateRecord>,
 ) -> Result<Next, DynamicsError> {
-    let w = &model.case.wear;
     let Some(last) = last else {
         let state = model.new_wear_state();
         let r = solve(model, mode, &state, None)?;
         return Ok(Next::Record(Box::new(record(model, mode, state, &r))));
     };
-    let threshold_m = w.threshold_um * 1e-6;
-    let remaining = w.total_cycles - last.wear.cycles;
-    if remaining <= 0.5 {
+    let Some(state) = advanced_state(model, last) else {
         return Ok(Next::Finished);
-    }
-    let inc = last.increment();
-    let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
-    let mut state = last.wear.clone();
-    state.advance(&inc, n);
+    };
     let start = start_of(last);
     Ok(match solve(model, mode, &state, start.as_deref()) {
         Ok(r) if r.contact_loss_fraction() > MAX_CONTACT_LOSS_FRACTION => Next::Stop(WearStop {

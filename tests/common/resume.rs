@@ -30,6 +30,27 @@ pub fn cut_log(path: &Path, keep: usize, torn: bool) {
     std::fs::write(path, out).unwrap();
 }
 
+/// Edit update `at` (0-based, after the header line) of the log `path` with `f`, its line's
+/// checksum recomputed when `rehash` (what a forger does), else kept (a plain edit).
+pub fn edit_update(path: &Path, at: usize, rehash: bool, f: &dyn Fn(&mut serde_json::Value)) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut out = String::new();
+    for (i, line) in text.lines().enumerate() {
+        if i != at + 1 {
+            out.push_str(line);
+            out.push('\n');
+            continue;
+        }
+        let (sum, json) = line.split_once(' ').unwrap();
+        let mut v: serde_json::Value = serde_json::from_str(json).unwrap();
+        f(&mut v);
+        let j = serde_json::to_string(&v).unwrap();
+        let s = if rehash { sha(&j) } else { sum.to_owned() };
+        out.push_str(&format!("{s} {j}\n"));
+    }
+    std::fs::write(path, out).unwrap();
+}
+
 /// SHA-256 (hex) of `text`, as a checkpoint line's checksum.
 pub fn sha(text: &str) -> String {
     gearwear::io::output_dir::sha256_hex(text.as_bytes())
