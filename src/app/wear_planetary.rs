@@ -14,9 +14,10 @@ use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
 use crate::store::RunMetadata;
 use crate::study::budget::planetary::estimate_planetary_wear;
+use crate::study::parallel_runs::run_in_parallel;
 use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
-use crate::study::wear_loop::{run_in_parallel, WearMode, WearStop};
+use crate::study::wear_loop::{WearMode, WearStop};
 
 /// Run the wear study of the planetary set in `job.case` (see the module docs).
 pub fn wear_of_planetary(

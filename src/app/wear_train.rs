@@ -14,9 +14,10 @@ use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_train::train_wear_artifacts;
 use crate::store::RunMetadata;
+use crate::study::parallel_runs::run_in_parallel;
 use crate::study::train::TrainModel;
 use crate::study::train_wear::{run_train_wear, TrainWearRun};
-use crate::study::wear_loop::{run_in_parallel, WearMode, WearStop};
+use crate::study::wear_loop::{WearMode, WearStop};
 use crate::study::Model;
 use std::path::Path;
 

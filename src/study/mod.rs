@@ -13,6 +13,7 @@ pub mod model;
 pub mod model_error;
 pub mod modes;
 pub mod paper;
+pub mod parallel_runs;
 pub mod planetary;
 pub mod planetary_dynamics;
 pub mod planetary_lumped;

@@ -573,11 +573,6 @@ pub fn run_wear(
     Ok(run)
 }
 
-/// Marks a run stopped because a sibling run of [`run_wear_modes`] failed.
-#[derive(Debug, thiserror::Error)]
-#[error("stopped because a parallel wear run failed")]
-pub struct SiblingFailed;
-
 /// Run (or continue) several wear runs in parallel (e.g. the dynamic study and its
 /// quasi-static twin); `on_update(mode, run)` after every update of each. Results in the
 /// order of `starts`. When one run fails, the others stop at their next update, so the
@@ -588,56 +583,12 @@ pub fn run_wear_modes(
     starts: Vec<WearRun>,
     on_update: &(dyn Fn(WearMode, &WearRun) -> anyhow::Result<()> + Sync),
 ) -> anyhow::Result<Vec<WearRun>> {
-    run_in_parallel(
+    super::parallel_runs::run_in_parallel(
         starts,
         |r| r.mode,
         &|start, f| run_wear(model, start, f),
         on_update,
     )
-}
-
-/// Runs one wear run `R` from its start to its end, calling its argument after every
-/// update.
-pub type RunOne<'a, R> =
-    dyn Fn(R, &mut dyn FnMut(&R) -> anyhow::Result<()>) -> anyhow::Result<R> + Sync + 'a;
-
-/// The runner of [`run_wear_modes`] for any kind of wear run `R` (a single pair's, a
-/// train's): `mode_of` names a run's mode, `one(start, on_update)` runs one to its end.
-pub fn run_in_parallel<R: Send>(
-    starts: Vec<R>,
-    mode_of: fn(&R) -> WearMode,
-    one: &RunOne<'_, R>,
-    on_update: &(dyn Fn(WearMode, &R) -> anyhow::Result<()> + Sync),
-) -> anyhow::Result<Vec<R>> {
-    use rayon::prelude::*;
-    use std::sync::atomic::{AtomicBool, Ordering};
-    let failed = AtomicBool::new(false);
-    let results: Vec<anyhow::Result<R>> = starts
-        .into_par_iter()
-        .map(|start| {
-            let mode = mode_of(&start);
-            let r = one(start, &mut |r| {
-                if failed.load(Ordering::Relaxed) {
-                    return Err(SiblingFailed.into());
-                }
-                on_update(mode, r)
-            });
-            if r.is_err() {
-                failed.store(true, Ordering::Relaxed);
-            }
-            r
-        })
-        .collect();
-    let (ok, errors): (Vec<_>, Vec<_>) = results.into_iter().partition(Result::is_ok);
-    let mut errors = errors.into_iter().filter_map(Result::err);
-    if let Some(first) = errors.next() {
-        return Err(if first.is::<SiblingFailed>() {
-            errors.find(|e| !e.is::<SiblingFailed>()).unwrap_or(first)
-        } else {
-            first
-        });
-    }
-    Ok(ok.into_iter().filter_map(Result::ok).collect())
 }
 
 #[cfg(test)]
