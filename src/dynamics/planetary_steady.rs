@@ -115,6 +115,9 @@ pub fn solve_planetary_steady_state(
         h_prop: h_max,
         h_max,
         grid: period_grid(&sys.source.jump_cycles(), period, s.samples_per_period),
+        plan: Vec::new(),
+        mode: PlanMode::Free,
+        next_plan: 0,
     };
     let mut z = DVector::zeros(2 * n);
     z.rows_mut(0, n).copy_from(&q0);
@@ -126,11 +129,20 @@ pub fn solve_planetary_steady_state(
     // Every period starts at t = 0: the model depends on time through the mesh phase only,
     // so the one-period map is the same function in every iteration (quasi-Newton on it,
     // `shooting`, from the monodromy of the time-invariant model).
+    let mut distance = f64::INFINITY;
     loop {
+        // Close to the orbit, fix the step sequence: build it over one period, then
+        // replay it (refined where the error test fails), as the gear pair's search.
+        run.mode = match run.mode {
+            PlanMode::Free if distance < PLAN_DISTANCE => PlanMode::Build,
+            PlanMode::Build => PlanMode::Replay,
+            m => m,
+        };
         let mut y = z.clone();
         run.period(sys, 0.0, &mut y, None)?;
         periods += 1;
-        let (next, distance) = shooting.next(&z, &y);
+        let next;
+        (next, distance) = shooting.next(&z, &y);
         z = next;
         if distance < s.steady_state_tolerance {
             break;
@@ -141,6 +153,9 @@ pub fn solve_planetary_steady_state(
                 change: distance,
             });
         }
+    }
+    if run.mode == PlanMode::Build {
+        run.mode = PlanMode::Replay;
     }
     let mut y = z;
     let y_start = y.clone();
@@ -294,12 +309,36 @@ pub(crate) fn period_grid(jump_cycles: &[f64], period_s: f64, samples: usize) ->
     grid
 }
 
-/// The stepper, its step proposal and the period's step grid.
+/// How a period chooses its steps (as the gear pair's `period::PlanMode`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum PlanMode {
+    /// Each step from the error control alone.
+    Free,
+    /// As `Free`, keeping the step ends that are not grid nodes as the plan.
+    Build,
+    /// Along the plan; a step the error test cuts adds its finer end to the plan (never
+    /// coarsened).
+    Replay,
+}
+
+/// Distance from the fixed point (relative to the state's scales) below which the search
+/// fixes its step sequence (the gear pair's `period_search` threshold): the error
+/// control's accept/reject decisions change with the state and make the one-period map
+/// jump by the size of the local errors, above the steady-state tolerance; along one
+/// fixed sequence the map is a continuous function of the state.
+const PLAN_DISTANCE: f64 = 1e-2;
+
+/// The stepper, its step proposal, the period's step grid and the step plan.
 struct Run {
     stepper: Sdirk<Dyn>,
     h_prop: f64,
     h_max: f64,
     grid: Vec<Node>,
+    /// Step ends (s from the period's start) that are not grid nodes, in order.
+    plan: Vec<f64>,
+    mode: PlanMode,
+    /// The first plan point not yet passed (replay) in the current period.
+    next_plan: usize,
 }
 
 impl Run {
@@ -317,12 +356,16 @@ impl Run {
     ) -> Result<(), PlanetaryDynamicsError> {
         self.h_prop = self.h_max;
         self.stepper.invalidate_jacobian();
+        self.next_plan = 0;
+        if self.mode == PlanMode::Build {
+            self.plan.clear();
+        }
         let mut t = t0;
         for k in 1..self.grid.len() {
             if let (true, Some(r)) = (self.grid[k - 1].sample, rec.as_deref_mut()) {
                 r.push(y.as_slice().to_vec());
             }
-            let result = self.advance(sys, &mut t, y, t0 + self.grid[k].t_s);
+            let result = self.advance(sys, t0, &mut t, y, t0 + self.grid[k].t_s);
             if result.is_err() {
                 sys.decide_contact_at(None);
             }
@@ -335,10 +378,27 @@ impl Run {
         Ok(())
     }
 
-    /// Error-controlled steps from `*t` to `t_end` (the last one cut to land on it).
+    /// The end of the next step from `t` towards the node `t_end` on the plan (replay:
+    /// its next point before `t_end`, else `t_end`), s; None when not replaying.
+    fn planned(&mut self, t0: f64, t: f64, t_end: f64) -> Option<f64> {
+        if self.mode != PlanMode::Replay {
+            return None;
+        }
+        while self.next_plan < self.plan.len() && t0 + self.plan[self.next_plan] <= t {
+            self.next_plan += 1;
+        }
+        Some(match self.plan.get(self.next_plan) {
+            Some(p) if t0 + p < t_end => t0 + p,
+            _ => t_end,
+        })
+    }
+
+    /// Error-controlled steps from `*t` to `t_end` (the last one cut to land on it), or
+    /// along the plan when replaying (`t0` the period's start).
     fn advance(
         &mut self,
         sys: &mut PlanetaryDynamic,
+        t0: f64,
         t: &mut f64,
         y: &mut Vector<Dyn>,
         t_end: f64,
@@ -346,7 +406,9 @@ impl Run {
         let h_min = self.h_max * 1e-9;
         while t_end - *t > h_min {
             let h_free = self.h_prop.min(self.h_max);
-            let mut h = h_free.min(t_end - *t);
+            let target = self.planned(t0, *t, t_end);
+            let mut h = target.map_or(h_free.min(t_end - *t), |e| e - *t);
+            let h_planned = h;
             loop {
                 // The step crosses no node: one contact set, decided at its middle.
                 sys.decide_contact_at(Some(*t + 0.5 * h));
@@ -373,7 +435,20 @@ impl Run {
                         } else {
                             h * grow
                         };
-                        *t += h;
+                        let t_new = match target {
+                            Some(e) if h == h_planned => e,
+                            _ if h == t_end - *t => t_end,
+                            _ => *t + h,
+                        };
+                        match self.mode {
+                            // A step the error test cut: the plan keeps the finer point.
+                            PlanMode::Replay if h < h_planned => {
+                                self.plan.insert(self.next_plan, t_new - t0)
+                            }
+                            PlanMode::Build if t_new < t_end => self.plan.push(t_new - t0),
+                            _ => {}
+                        }
+                        *t = t_new;
                         *y = tr.y;
                         break;
                     }
