@@ -207,7 +207,8 @@ fn trajectories_json(root: &Path, key: &str) -> Value {
 /// Whether record labels `l` are those the design described by `body` (the
 /// description, `state/dataset.json`) gives its id: condition (name, fault, severity),
 /// trajectory state, speed, load, realisation and noise seed, all recomputed from the id,
-/// and its indicators' channels the description's sensors.
+/// its indicators' channels the description's sensors, and a train's stages numbered as
+/// the description's train has them (none for a single pair).
 pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
     let a = &body["axes"];
     let len = |v: &Value| v.as_array().map_or(0, Vec::len);
@@ -241,6 +242,9 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         && l.noise_seed == crate::study::dataset::plan::record_seed(seed, l.record_id)
         && l.file == signal_file(l.record_id)
         && channels_match(l, &body["record"]["sensors"])
+        && l.stages.len() == len(&body["train"]["conditions"][ix.condition]["stages"])
+        && l.stages.iter().enumerate().all(|(k, s)| s.stage == k + 1)
+        && l.limiting_stage.is_some() != l.stages.is_empty()
 }
 
 /// Whether the record's indicator channels are the description's sensors, in order: a

@@ -136,7 +136,7 @@ const TRAJECTORY_BYTES_PER_NUMBER: f64 = 24.0;
 /// numbers each (wear and increment profiles; the load along the path of contact, about
 /// two samples a step over the period, measured 241 and 365 at 60 and 200 grid steps;
 /// the periodic state and the summary), plus 2 (z1 + z2) G per-tooth profiles when the
-/// teeth differ.
+/// teeth differ; a train's N meshes N times that, plus its larger periodic state.
 pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
     let mut case = case.clone();
     case.wear.total_cycles = max_cycles;
@@ -155,5 +155,14 @@ pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
     } else {
         0.0
     };
-    updates * (4.0 * grid + 2.0 * s_dyn + 48.0 + teeth) * TRAJECTORY_BYTES_PER_NUMBER
+    // A train keeps every mesh's records (`study::dataset::trajectory`), stage 1's with
+    // the train's periodic state: 2 (4 + 12 N) numbers for N stages (`budget::train_factor`).
+    let stages = case.stage.len();
+    let per_update = if stages == 0 {
+        4.0 * grid + 2.0 * s_dyn + 48.0 + teeth
+    } else {
+        let n = stages as f64;
+        n * (4.0 * grid + 2.0 * s_dyn + 48.0) + 2.0 * (4.0 + 12.0 * n)
+    };
+    updates * per_update * TRAJECTORY_BYTES_PER_NUMBER
 }
