@@ -183,6 +183,18 @@ fn each_records_mesh_wear_is_that_of_a_wear_run_to_its_cycles() {
             assert!(close(col("wear_max_um"), p.max(g)));
             assert!(close(col("cycles"), f["pinion_cycles"].as_f64().unwrap()));
         }
+        if i == 2 {
+            // The trajectory ends at this record's cycles: its last update per stage in
+            // the metadata is the wear run's end too.
+            let by_stage = &meta["trajectories"][0]["update_wear_max_um_by_stage"];
+            for k in 0..2 {
+                let f = &s["meshes"][k]["final"]["dynamic"];
+                let p = f["max_wear_pinion_um"].as_f64().unwrap();
+                let g = f["max_wear_gear_um"].as_f64().unwrap();
+                let last = by_stage[k].as_array().unwrap().last().unwrap();
+                assert!(close(last.as_f64().unwrap(), p.max(g)), "stage {}", k + 1);
+            }
+        }
         let limiting = s["limiting_mesh"]["dynamic"]["stage"].as_u64().unwrap();
         assert_eq!(ix["limiting_stage"][i], limiting.to_string());
     }

@@ -192,15 +192,34 @@ fn trajectories_json(root: &Path, key: &str) -> Value {
     json!(trajectories(root)
         .iter()
         .filter(|t| t.dataset_key == key)
-        .map(|t| json!({
-            "condition": t.condition,
-            "failure_cycles": t.trajectory.failure_cycles,
-            "end_cycles": t.trajectory.end_cycles,
-            "stopped": t.trajectory.stopped,
-            "updates": t.trajectory.records.len(),
-            "update_cycles": t.trajectory.records.iter().map(|r| r.wear.cycles).collect::<Vec<_>>(),
-            "update_max_wear_pinion_um": t.trajectory.records.iter().map(|r| r.wear.max_pinion_m() * 1e6).collect::<Vec<_>>(),
-        }))
+        .map(|t| {
+            let mut v = json!({
+                "condition": t.condition,
+                "failure_cycles": t.trajectory.failure_cycles,
+                "end_cycles": t.trajectory.end_cycles,
+                "stopped": t.trajectory.stopped,
+                "updates": t.trajectory.records.len(),
+                "update_cycles": t.trajectory.records.iter().map(|r| r.wear.cycles).collect::<Vec<_>>(),
+                "update_max_wear_pinion_um": t.trajectory.records.iter().map(|r| r.wear.max_pinion_m() * 1e6).collect::<Vec<_>>(),
+            });
+            if !t.trajectory.cycle_factors.is_empty() {
+                v["update_wear_max_um_by_stage"] = stage_wear_json(&t.trajectory);
+            }
+            v
+        })
+        .collect::<Vec<_>>())
+}
+
+/// A train's trajectory: each stage's deepest wear (either flank, µm) at every update,
+/// stage order (stage 1's `update_max_wear_pinion_um` is its pinion flank alone).
+fn stage_wear_json(t: &crate::study::dataset::trajectory::Trajectory) -> Value {
+    json!((0..t.mesh_count())
+        .map(|m| {
+            (0..t.records.len())
+                .filter_map(|i| t.record(m, i))
+                .map(|r| r.wear.max_pinion_m().max(r.wear.max_gear_m()) * 1e6)
+                .collect::<Vec<_>>()
+        })
         .collect::<Vec<_>>())
 }
 
