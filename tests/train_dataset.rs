@@ -250,6 +250,19 @@ fn forged_train_labels_and_trajectories_are_refused_on_reuse_and_merge() {
         stderr(&r)
     );
     std::fs::write(&tp, &kept).unwrap();
+    // The disk budget counted this trajectory file: at most the margin (2, the threshold
+    // may shorten blocks: `app::dataset::plan`) times the estimate of its bytes, and the
+    // estimate not more than 3 times the file (issue 33: estimates within 3 x).
+    let sets: Vec<String> = SETS.iter().map(|s| s.to_string()).collect();
+    let text = std::fs::read_to_string(two_stage()).unwrap();
+    let case = gearwear::config::load_case(&text, &sets).unwrap();
+    let est = gearwear::study::budget::dataset::trajectory_bytes(&case, 12000.0);
+    let bytes = kept.len() as f64;
+    eprintln!("trajectory of 12000 input cycles: {bytes} bytes, estimated {est}");
+    assert!(
+        bytes <= 2.0 * est && est <= 3.0 * bytes,
+        "{bytes} bytes, estimated {est}"
+    );
     // Shards and merge.
     let shards: Vec<PathBuf> = (1..=2).map(|i| dir.path().join(format!("s{i}"))).collect();
     for (i, s) in shards.iter().enumerate() {
