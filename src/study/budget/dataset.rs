@@ -166,23 +166,8 @@ pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
         4.0 * grid + 2.0 * s_dyn + 48.0 + teeth
     } else {
         let n = stages as f64;
-        let periods = base_mesh_periods(&case);
+        let periods = super::evaluation::base_mesh_periods(&case);
         n * (4.0 * grid + 2.0 * s_dyn * periods + 48.0) + 2.0 * (4.0 + 12.0 * n)
     };
     updates * per_update * TRAJECTORY_BYTES_PER_NUMBER
-}
-
-/// Mesh periods of all meshes in a train's base period, sum_k N_k
-/// (`dynamics::grid::chain_mesh_counts`); infinite when it cannot be counted (refused).
-fn base_mesh_periods(case: &crate::config::Case) -> f64 {
-    let teeth: Vec<[usize; 2]> = case
-        .stage
-        .iter()
-        .map(|s| {
-            let g = s.gear_section(&case.gear);
-            [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
-        })
-        .collect();
-    crate::dynamics::grid::chain_mesh_counts(&teeth)
-        .map_or(f64::INFINITY, |c| c.iter().map(|n| *n as f64).sum())
 }
