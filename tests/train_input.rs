@@ -90,7 +90,7 @@ fn a_train_over_the_budget_is_refused_by_its_own_estimate() {
     // train: each is refused by the train's estimate (its wear and dynamics estimates for
     // `run`, the dynamics one with the train's cost factor for `signals`), before any work.
     // The studies that take a single pair only refuse the train first
-    // (`sweeps_and_datasets_refuse_a_train_before_any_case_runs`).
+    // (`TRAIN_STUDIES`: calibrate, predict).
     let dir = tempfile::tempdir().unwrap();
     let file = case_file(
         &dir,
@@ -103,34 +103,9 @@ fn a_train_over_the_budget_is_refused_by_its_own_estimate() {
 }
 
 #[test]
-fn wear_sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
-    // A dynamics sweep takes a train (tests/train_sweep.rs); a wear row is the single
-    // pair's loop (which would leave every other mesh unworn: 0.14 % off `gearwear
-    // wear`'s stage-1 wear on the two-stage example), so `--run wear` is refused naming
-    // it; a dataset's records, chain and labels are a single pair's. Each refuses the
-    // train, naming it, with nothing written (`rejected`).
-    let dir = tempfile::tempdir().unwrap();
-    let file = case_file(
-        &dir,
-        &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
-    );
-    rejected(
-        &[
-            "sweep",
-            "--config",
-            &file,
-            "--run",
-            "wear",
-            "--vary",
-            "operating.input_speed_hz=20:30:5",
-        ],
-        &[
-            "--run",
-            "wear",
-            "this case is a gear train",
-            "`gearwear wear`",
-        ],
-    );
+fn a_sweep_that_changes_the_number_of_stages_is_refused() {
+    // Sweeps take a train, of dynamics and of wear (tests/train_sweep.rs), and so do
+    // datasets (tests/train_dataset.rs); a sweep's columns are those of one train.
     // A varied stage key without a table number makes each case of a single pair a
     // one-stage train: the number of stages changes, refused naming the key and case.
     rejected(
@@ -141,19 +116,6 @@ fn wear_sweeps_and_datasets_refuse_a_train_before_any_case_runs() {
             "number of stages",
         ],
     );
-    let design = dir.path().join("design.toml");
-    std::fs::write(
-        &design,
-        format!(
-            "case = {file:?}\n[run_to_failure]\nstates = 2\nmax_cycles = 1e4\nwear_limit_um = 10\n[[condition]]\nname = \"healthy\"\n"
-        ),
-    )
-    .unwrap();
-    let err = rejected(
-        &["dataset", "--design", design.to_str().unwrap()],
-        &["condition `healthy`", "this case is a gear train"],
-    );
-    assert!(!err.contains("budget"), "{err}");
 }
 
 #[test]

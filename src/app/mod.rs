@@ -140,7 +140,7 @@ pub fn refuse_train(case: &Case) -> Result<(), JobError> {
 }
 
 /// What a study that takes a single pair says of a gear train.
-pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear`, `gearwear signals`, `gearwear run` and `gearwear sweep` (of dynamics or wear) run so far; this study takes a single pair ([gear], without [[stage]])";
+pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear`, `gearwear signals`, `gearwear dataset`, `gearwear run` and `gearwear sweep` (of dynamics or wear) run so far; this study takes a single pair ([gear], without [[stage]])";
 
 /// As [`build_model`], for the studies that take a gear train as well as a single pair.
 pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {

@@ -60,7 +60,7 @@ pub fn kinematics(model: &Model) -> Kinematics {
 /// teeth, and stage k + 1's pinion turns with stage k's gear (the speeds of
 /// `TrainOperatingPoint`, without the round trip through rad/s, so that a one-stage
 /// train reads the single pair's 570 Hz and 30 Hz exactly).
-fn train_meshes(model: &Model) -> Vec<Kinematics> {
+pub(crate) fn train_meshes(model: &Model) -> Vec<Kinematics> {
     let Some(train) = &model.train else {
         return Vec::new();
     };

@@ -75,12 +75,17 @@ impl TrainWearRun {
     /// last update, and that depth, m; None before any update.
     pub fn limiting_mesh(&self) -> Option<(usize, f64)> {
         let last = self.updates.last()?;
-        last.meshes
-            .iter()
-            .map(|r| r.wear.max_pinion_m().max(r.wear.max_gear_m()))
-            .enumerate()
-            .max_by(|a, b| a.1.total_cmp(&b.1))
+        limiting_of(last.meshes.iter().map(|r| &r.wear))
     }
+}
+
+/// The mesh (0-based) with the deepest wear (either flank) of the meshes' `wears` and
+/// that depth, m (the last of equals); None for no mesh.
+pub fn limiting_of<'a>(wears: impl Iterator<Item = &'a WearState>) -> Option<(usize, f64)> {
+    wears
+        .map(|w| w.max_pinion_m().max(w.max_gear_m()))
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
 }
 
 /// What the update after an update gives.

@@ -192,22 +192,42 @@ fn trajectories_json(root: &Path, key: &str) -> Value {
     json!(trajectories(root)
         .iter()
         .filter(|t| t.dataset_key == key)
-        .map(|t| json!({
-            "condition": t.condition,
-            "failure_cycles": t.trajectory.failure_cycles,
-            "end_cycles": t.trajectory.end_cycles,
-            "stopped": t.trajectory.stopped,
-            "updates": t.trajectory.records.len(),
-            "update_cycles": t.trajectory.records.iter().map(|r| r.wear.cycles).collect::<Vec<_>>(),
-            "update_max_wear_pinion_um": t.trajectory.records.iter().map(|r| r.wear.max_pinion_m() * 1e6).collect::<Vec<_>>(),
-        }))
+        .map(|t| {
+            let mut v = json!({
+                "condition": t.condition,
+                "failure_cycles": t.trajectory.failure_cycles,
+                "end_cycles": t.trajectory.end_cycles,
+                "stopped": t.trajectory.stopped,
+                "updates": t.trajectory.records.len(),
+                "update_cycles": t.trajectory.records.iter().map(|r| r.wear.cycles).collect::<Vec<_>>(),
+                "update_max_wear_pinion_um": t.trajectory.records.iter().map(|r| r.wear.max_pinion_m() * 1e6).collect::<Vec<_>>(),
+            });
+            if !t.trajectory.cycle_factors.is_empty() {
+                v["update_wear_max_um_by_stage"] = stage_wear_json(&t.trajectory);
+            }
+            v
+        })
+        .collect::<Vec<_>>())
+}
+
+/// A train's trajectory: each stage's deepest wear (either flank, µm) at every update,
+/// stage order (stage 1's `update_max_wear_pinion_um` is its pinion flank alone).
+fn stage_wear_json(t: &crate::study::dataset::trajectory::Trajectory) -> Value {
+    json!((0..t.mesh_count())
+        .map(|m| {
+            (0..t.records.len())
+                .filter_map(|i| t.record(m, i))
+                .map(|r| r.wear.max_pinion_m().max(r.wear.max_gear_m()) * 1e6)
+                .collect::<Vec<_>>()
+        })
         .collect::<Vec<_>>())
 }
 
 /// Whether record labels `l` are those the design described by `body` (the
 /// description, `state/dataset.json`) gives its id: condition (name, fault, severity),
 /// trajectory state, speed, load, realisation and noise seed, all recomputed from the id,
-/// and its indicators' channels the description's sensors.
+/// its indicators' channels the description's sensors, and a train's stages numbered as
+/// the description's train has them (none for a single pair).
 pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
     let a = &body["axes"];
     let len = |v: &Value| v.as_array().map_or(0, Vec::len);
@@ -241,6 +261,9 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         && l.noise_seed == crate::study::dataset::plan::record_seed(seed, l.record_id)
         && l.file == signal_file(l.record_id)
         && channels_match(l, &body["record"]["sensors"])
+        && l.stages.len() == len(&body["train"]["conditions"][ix.condition]["stages"])
+        && l.stages.iter().enumerate().all(|(k, s)| s.stage == k + 1)
+        && l.limiting_stage.is_some() != l.stages.is_empty()
 }
 
 /// Whether the record's indicator channels are the description's sensors, in order: a

@@ -18,6 +18,59 @@ use serde_json::{json, Value};
 /// the indicators and per-tooth wear, index row), a generous bound from measured files.
 const LABEL_BYTES_PER_RECORD: f64 = 16_384.0;
 
+/// The case a condition's chain is checked against: the case itself for a single pair;
+/// a gear train's sensor stage as a single-pair case at its own pinion speed
+/// (`signals.sensor_stage`, as the `signals` command checks a train's chain).
+fn chain_case(case: &crate::config::Case) -> Result<crate::config::Case, Vec<String>> {
+    if case.stage.is_empty() {
+        return Ok(case.clone());
+    }
+    let model = crate::study::Model::from_case(case).map_err(|e| e.0)?;
+    let stages = model.train.as_ref().map_or(&[][..], |t| &t.stages[..]);
+    let k = case
+        .signals
+        .sensor_stage_index()
+        .min(stages.len().max(1) - 1);
+    stages
+        .get(k)
+        .map(|s| s.case.clone())
+        .ok_or_else(|| vec!["the train has no stage".to_owned()])
+}
+
+/// The tachometer shaft's speed, Hz, at the input speed `input_hz`, for the chain `s` of
+/// the design's first condition: the single pair's pinion or gear; a train's sensor
+/// stage's pinion or gear (`signals.sensor_stage`), through the ratios of the stages
+/// before it, as `study::signal_record` turns them.
+fn tachometer_hz(d: &DatasetDesign, s: &ChainSetup, input_hz: f64) -> f64 {
+    let case = &d.conditions[0].case;
+    let gear_shaft = s.chain.tachometer.shaft == crate::signals::chain::Shaft::Gear;
+    let ratio = |g: &crate::config::case::GearSection| g.teeth_pinion as f64 / g.teeth_gear as f64;
+    if case.stage.is_empty() {
+        let g = &case.gear;
+        return if gear_shaft {
+            input_hz * g.teeth_pinion as f64 / g.teeth_gear as f64
+        } else {
+            input_hz
+        };
+    }
+    let k = case.signals.sensor_stage_index().min(case.stage.len() - 1);
+    let through = if gear_shaft { k + 1 } else { k };
+    case.stage[..through]
+        .iter()
+        .fold(input_hz, |hz, st| hz * ratio(&st.gear_section(&case.gear)))
+}
+
+/// The tachometer shaft's speed the description's record is sized at: a train's sensor
+/// stage shaft at the first design speed ([`tachometer_hz`]); a single pair's first
+/// design speed, as it always was (its description unchanged byte for byte).
+fn record_shaft_hz(d: &DatasetDesign, s: &ChainSetup) -> f64 {
+    if d.conditions[0].case.stage.is_empty() {
+        d.speeds_hz[0]
+    } else {
+        tachometer_hz(d, s, d.speeds_hz[0])
+    }
+}
+
 /// The chain setup of each condition, checked at the design's fastest speed.
 fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let d = req.design;
@@ -25,26 +78,14 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let mut problems = Vec::new();
     let mut out: Vec<ChainSetup> = Vec::new();
     for c in &d.conditions {
-        // A train's records would be made by the single pair's wear loop and chain:
-        // refused, as by every study that takes a single pair only.
-        if !c.case.stage.is_empty() {
-            problems.push(format!(
-                "condition `{}`: {}",
-                c.name,
-                crate::app::TRAIN_STUDIES
-            ));
-            continue;
-        }
         let mut case = c.case.clone();
         case.set_load_point(crate::config::case::LoadPoint {
             input_speed_hz: fastest,
             ..case.load_point()
         });
-        match chain_of(
-            &case,
-            req.path.clone(),
-            case.signals.max_input_speed_hz(&case),
-        ) {
+        match chain_case(&case)
+            .and_then(|k| chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k)))
+        {
             Ok(s) => out.push(s),
             Err(e) => problems.extend(
                 e.into_iter()
@@ -72,23 +113,16 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
 /// channels of any condition's chain: what the run budget counts per record.
 pub fn record_size(d: &DatasetDesign, setups: &[ChainSetup]) -> RecordSize {
     let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
-    let g = &d.conditions[0].case.gear;
     setups.iter().fold(
         RecordSize {
             samples: 0.0,
             channels: 0.0,
         },
-        |acc, s| {
-            let shaft_hz = match s.chain.tachometer.shaft {
-                crate::signals::chain::Shaft::Pinion => slowest,
-                crate::signals::chain::Shaft::Gear => {
-                    slowest * g.teeth_pinion as f64 / g.teeth_gear as f64
-                }
-            };
-            RecordSize {
-                samples: acc.samples.max(s.chain.samples(shaft_hz) as f64),
-                channels: acc.channels.max(s.chain.path.sensors.len() as f64),
-            }
+        |acc, s| RecordSize {
+            samples: acc
+                .samples
+                .max(s.chain.samples(tachometer_hz(d, s, slowest)) as f64),
+            channels: acc.channels.max(s.chain.path.sensors.len() as f64),
         },
     )
 }
@@ -126,13 +160,7 @@ fn records_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
     let per_state: f64 = setups
         .iter()
         .map(|s| {
-            let g = &d.conditions[0].case.gear;
-            let shaft_hz = match s.chain.tachometer.shaft {
-                crate::signals::chain::Shaft::Pinion => slowest,
-                crate::signals::chain::Shaft::Gear => {
-                    slowest * g.teeth_pinion as f64 / g.teeth_gear as f64
-                }
-            };
+            let shaft_hz = tachometer_hz(d, s, slowest);
             let n = s.chain.samples(shaft_hz) as f64;
             let columns = (s.chain.path.sensors.len() + 1) as f64;
             let csv = if d.csv {
@@ -205,7 +233,7 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
             .collect(),
         tachometer_v: Vec::new(),
     };
-    json!({
+    let mut body = json!({
         "program": "gearwear",
         "version": env!("CARGO_PKG_VERSION"),
         "dataset_key": key,
@@ -223,7 +251,7 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
         },
         "record_id": "((((condition x states + state) x speeds + speed) x loads + load) x realisations + realisation)",
         "run_to_failure": {"max_cycles": d.max_cycles, "wear_limit_um": d.wear_limit_um, "failure": "the deepest wear, pinion or gear profile, reaches wear_limit_um"},
-        "record": chain_json(first, first.samples(d.speeds_hz[0])),
+        "record": chain_json(first, first.samples(record_shaft_hz(d, &setups[0]))),
         "signal_columns": units(&probe, first.acquisition.unit),
         "cases": d.conditions.iter().map(|c| json!({"condition": c.name, "case_toml": toml::to_string(&c.case).unwrap_or_default()})).collect::<Vec<_>>(),
         "layout": {
@@ -235,6 +263,71 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
             "indicator_trends.png": "the same as a figure, against the pinion load cycles (indicator_trends.svg beside or instead of it when the job asks for SVG)",
             "state/": "the dataset's description and run-to-failure trajectories (used by resumes and merges)",
         },
+    });
+    if !d.conditions[0].case.stage.is_empty() {
+        body["run_to_failure"]["failure"] = json!(
+            "the deepest wear of any stage's mesh, pinion or gear profile, reaches wear_limit_um"
+        );
+        body["train"] = train_json(d);
+    }
+    body
+}
+
+/// What a gear train's dataset states of its trains (`description`): for each condition,
+/// each stage's gear data (its `[gear]` keys as the stage resolves them), ratio and
+/// pinion revolutions per input revolution, and every mesh frequency at each design
+/// speed (turned through the tooth counts as `study::signal_record` turns them); and
+/// what a train record's labels mean.
+fn train_json(d: &DatasetDesign) -> Value {
+    let conditions: Vec<Value> = d
+        .conditions
+        .iter()
+        .map(|c| {
+            let case = &c.case;
+            let gears: Vec<_> = case
+                .stage
+                .iter()
+                .map(|st| st.gear_section(&case.gear))
+                .collect();
+            let mut per_input = 1.0;
+            let stages: Vec<Value> = gears
+                .iter()
+                .enumerate()
+                .map(|(k, g)| {
+                    let v = json!({
+                        "stage": k + 1,
+                        "gear": g,
+                        "ratio": g.teeth_gear as f64 / g.teeth_pinion as f64,
+                        "pinion_revolutions_per_input_revolution": per_input,
+                    });
+                    per_input *= g.teeth_pinion as f64 / g.teeth_gear as f64;
+                    v
+                })
+                .collect();
+            let mesh_hz: Vec<Value> = d
+                .speeds_hz
+                .iter()
+                .map(|&f_in| {
+                    let mut shaft_hz = f_in;
+                    let meshes: Vec<f64> = gears
+                        .iter()
+                        .map(|g| {
+                            let f_m = shaft_hz * g.teeth_pinion as f64;
+                            shaft_hz = f_m / g.teeth_gear as f64;
+                            f_m
+                        })
+                        .collect();
+                    json!({"input_speed_hz": f_in, "mesh_hz": meshes, "output_shaft_hz": shaft_hz})
+                })
+                .collect();
+            json!({"condition": c.name, "stages": stages, "mesh_frequencies": mesh_hz})
+        })
+        .collect();
+    let first = &d.conditions[0].case;
+    json!({
+        "conditions": conditions,
+        "sensor_stage": first.signals.sensor_stage_index() + 1,
+        "labels": "a train's record: `cycles` and `remaining_cycles` are input cycles (stage 1's pinion, the motor's shaft); `max_wear_pinion_um` and `max_wear_gear_um` the deepest of any stage; `mesh_hz` and the TSA indicators' shafts the sensor stage's; each stage's wear, pinion cycles and mesh frequency in `<name>_stage<k>` columns (sidecar: `stages`), the deepest-worn stage in `limiting_stage`",
     })
 }
 

@@ -136,7 +136,8 @@ const TRAJECTORY_BYTES_PER_NUMBER: f64 = 24.0;
 /// numbers each (wear and increment profiles; the load along the path of contact, about
 /// two samples a step over the period, measured 241 and 365 at 60 and 200 grid steps;
 /// the periodic state and the summary), plus 2 (z1 + z2) G per-tooth profiles when the
-/// teeth differ.
+/// teeth differ; a train's N meshes N times that with each mesh's path over the train's
+/// base period, plus its larger periodic state.
 pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
     let mut case = case.clone();
     case.wear.total_cycles = max_cycles;
@@ -155,5 +156,18 @@ pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
     } else {
         0.0
     };
-    updates * (4.0 * grid + 2.0 * s_dyn + 48.0 + teeth) * TRAJECTORY_BYTES_PER_NUMBER
+    // A train keeps every mesh's records (`study::dataset::trajectory`), stage 1's with
+    // the train's periodic state: 2 (4 + 12 N) numbers for N stages (`budget::train_factor`);
+    // each mesh's load along its path is sampled over the train's base period, sum_k N_k
+    // mesh periods (measured on the two-stage example, 31 + 23: 16733 samples against
+    // 2 S_d 54 = 16740).
+    let stages = case.stage.len();
+    let per_update = if stages == 0 {
+        4.0 * grid + 2.0 * s_dyn + 48.0 + teeth
+    } else {
+        let n = stages as f64;
+        let periods = super::evaluation::base_mesh_periods(&case);
+        n * (4.0 * grid + 2.0 * s_dyn * periods + 48.0) + 2.0 * (4.0 + 12.0 * n)
+    };
+    updates * per_update * TRAJECTORY_BYTES_PER_NUMBER
 }

@@ -88,6 +88,14 @@ pub fn train_factor(case: &Case) -> f64 {
     if case.stage.is_empty() {
         return 1.0;
     }
+    let states = 4.0 + 12.0 * case.stage.len() as f64;
+    base_mesh_periods(case) * (states / 16.0).max(1.0)
+}
+
+/// Mesh periods of all meshes in a train's base period, sum_k N_k
+/// (`dynamics::grid::chain_mesh_counts`, each stage's teeth at least 1); infinite when it
+/// cannot be counted (refused).
+pub fn base_mesh_periods(case: &Case) -> f64 {
     let teeth: Vec<[usize; 2]> = case
         .stage
         .iter()
@@ -96,9 +104,8 @@ pub fn train_factor(case: &Case) -> f64 {
             [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
         })
         .collect();
-    let states = 4.0 + 12.0 * teeth.len() as f64;
     match crate::dynamics::grid::chain_mesh_counts(&teeth) {
-        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>() * (states / 16.0).max(1.0),
+        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>(),
         None => f64::INFINITY,
     }
 }

@@ -30,6 +30,7 @@
 
 use super::design_checks::{
     chain_problems, label_problems, records_problems, run_to_failure_problems, steady_problems,
+    train_problems,
 };
 pub use super::design_file::{Condition, DatasetDesign, StateChoice};
 use super::design_file::{ConditionFile, DesignFile, RunToFailureFile};
@@ -396,6 +397,7 @@ fn conditions(
         }
     }
     p.extend(chain_problems(&conditions, name));
+    p.extend(train_problems(&conditions, name));
     let any_per_tooth = conditions.iter().any(|c| c.case.has_per_tooth_inputs());
     for c in &mut conditions {
         c.case.share_one_law(any_per_tooth);

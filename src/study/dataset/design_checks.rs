@@ -143,3 +143,31 @@ pub(super) fn chain_problems(conditions: &[Condition], name: &str) -> Vec<String
     }
     p
 }
+
+/// Problems of conditions whose case is a gear train of another number of stages than
+/// the first condition's (a single pair counts 0): the index has one set of columns,
+/// each stage's wear among them (`index::STAGE_COLUMNS`).
+pub(super) fn train_problems(conditions: &[Condition], name: &str) -> Vec<String> {
+    let Some(first) = conditions.first() else {
+        return Vec::new();
+    };
+    let stages = |c: &Condition| c.case.stage.len();
+    let spelled = |n: usize| match n {
+        0 => "a single pair".to_owned(),
+        1 => "a train of 1 stage".to_owned(),
+        n => format!("a train of {n} stages"),
+    };
+    conditions[1..]
+        .iter()
+        .filter(|c| stages(c) != stages(first))
+        .map(|c| {
+            format!(
+                "{name}: condition `{}` is {} ([[stage]] tables) but condition `{}` is {}: every record of a dataset has the same wear columns, one per stage; give every condition the same stages",
+                c.name,
+                spelled(stages(c)),
+                first.name,
+                spelled(stages(first))
+            )
+        })
+        .collect()
+}

@@ -34,6 +34,31 @@ pub const LABEL_COLUMNS: [(&str, &str, &str); 18] = [
     ("noise_seed", "-", "seed of the record's measurement noise"),
 ];
 
+/// (column prefix, unit, meaning) of a gear train's columns for each stage k, named
+/// `<prefix>_stage<k>` (after the label columns; a train's records only).
+pub const STAGE_COLUMNS: [(&str, &str, &str); 5] = [
+    ("max_wear_pinion_um", "um", "deepest wear of the stage's pinion profile at the state"),
+    ("max_wear_gear_um", "um", "deepest wear of the stage's gear profile at the state"),
+    ("wear_max_um", "um", "deepest wear of the stage's mesh (either flank) at the state"),
+    ("cycles", "stage pinion cycles", "load cycles of the stage's pinion at the state (input cycles x its revolutions per input revolution)"),
+    ("mesh_hz", "Hz", "the stage's mesh frequency at the record's input speed"),
+];
+
+/// A gear train's column naming the stage whose mesh is the deepest worn.
+pub const LIMITING_STAGE_COLUMN: (&str, &str, &str) = (
+    "limiting_stage",
+    "-",
+    "the train's stage (1-based) whose mesh has the deepest wear at the state (either flank): the mesh that limits the train's life",
+);
+
+/// The stage `k` (1-based) and the meaning of a stage column `<prefix>_stage<k>`.
+fn stage_column_meaning(name: &str) -> Option<String> {
+    let (prefix, k) = name.rsplit_once("_stage")?;
+    let k: usize = k.parse().ok()?;
+    let (_, _, m) = STAGE_COLUMNS.iter().find(|(p, _, _)| *p == prefix)?;
+    Some(format!("{m} (stage {k})"))
+}
+
 /// What an indicator column means, by its suffix (`<sensor>_<suffix>` or
 /// `<sensor>_<shaft>_<suffix>`; docs/SIGNALS.md defines each).
 const INDICATOR_MEANINGS: [(&str, &str); 13] = [
@@ -57,6 +82,12 @@ const INDICATOR_MEANINGS: [(&str, &str); 13] = [
 pub fn column_meaning(name: &str) -> String {
     if let Some((_, _, m)) = LABEL_COLUMNS.iter().find(|(n, _, _)| *n == name) {
         return (*m).to_string();
+    }
+    if name == LIMITING_STAGE_COLUMN.0 {
+        return LIMITING_STAGE_COLUMN.2.to_string();
+    }
+    if let Some(m) = stage_column_meaning(name) {
+        return m;
     }
     for shaft in ["pinion", "gear"] {
         for (suffix, m) in &INDICATOR_MEANINGS[3..] {
@@ -213,6 +244,42 @@ pub fn sensor_column_problems(sensors: &[String]) -> Vec<String> {
     p
 }
 
+/// A gear train's columns (its records' `stages`, the first record's count; a design's
+/// conditions share one count, `design_checks::train_problems`): each stage's
+/// [`STAGE_COLUMNS`], then [`LIMITING_STAGE_COLUMN`]. None for a single pair.
+fn stage_columns(rows: &[RecordLabels], cols: &mut Vec<Column>, units: &mut Vec<(String, String)>) {
+    let n = rows.first().map_or(0, |l| l.stages.len());
+    if n == 0 {
+        return;
+    }
+    for k in 0..n {
+        for (prefix, unit, _) in STAGE_COLUMNS {
+            let values = rows
+                .iter()
+                .map(|l| {
+                    l.stages.get(k).map_or(0.0, |s| match prefix {
+                        "max_wear_pinion_um" => s.max_wear_pinion_um,
+                        "max_wear_gear_um" => s.max_wear_gear_um,
+                        "wear_max_um" => s.wear_max_um,
+                        "cycles" => s.pinion_cycles,
+                        _ => s.mesh_hz,
+                    })
+                })
+                .collect();
+            let name = format!("{prefix}_stage{}", k + 1);
+            units.push((name.clone(), unit.to_string()));
+            cols.push(Column::new(name, ColumnData::F64(values)));
+        }
+    }
+    let (name, unit, _) = LIMITING_STAGE_COLUMN;
+    let limiting = rows
+        .iter()
+        .map(|l| l.limiting_stage.unwrap_or(0) as i64)
+        .collect();
+    units.push((name.to_string(), unit.to_string()));
+    cols.push(Column::new(name, ColumnData::I64(limiting)));
+}
+
 /// The index columns of `rows` (sorted by record id) and each column's unit.
 pub fn index_columns(
     rows: &[RecordLabels],
@@ -252,6 +319,7 @@ pub fn index_columns(
         .iter()
         .map(|(n, u, _)| (n.to_string(), u.to_string()))
         .collect();
+    stage_columns(rows, &mut cols, &mut units);
     let channels: Vec<String> = rows.first().map_or(Vec::new(), |l| {
         l.indicators.iter().map(|c| c.channel.clone()).collect()
     });

@@ -11,7 +11,9 @@ use crate::dynamics::period_search::DynamicsError;
 use crate::signals::analysis::{analyse, ChannelIndicators};
 use crate::signals::record::{add_noise, Record};
 use crate::signals::setup::ChainSetup;
-use crate::study::signal_record::{kinematics, periodic_record};
+use crate::study::signal_record::{kinematics, periodic_record, train_meshes};
+use crate::study::train_wear::{limiting_of, solve_train};
+use crate::study::wear_loop::WearMode;
 use crate::study::Model;
 use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
@@ -42,10 +44,22 @@ pub struct RecordLabels {
     /// Deepest wear of the gear profile at the state, µm.
     pub max_wear_gear_um: f64,
     /// Maximum wear depth of each tooth, um (each tooth its own with a tooth-resolved
-    /// mesh; all teeth alike in the identical-tooth model).
+    /// mesh; all teeth alike in the identical-tooth model); empty for a train (its teeth
+    /// are alike in each stage: each stage's in `stages`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub wear_pinion_tooth_um: Vec<f64>,
     /// Maximum wear depth of each gear tooth, µm (as the pinion's above).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub wear_gear_tooth_um: Vec<f64>,
+    /// A gear train's stages at the state (stage order; empty for a single pair): each
+    /// mesh's wear and cycles. For a train `cycles` are input cycles (stage 1's pinion)
+    /// and `max_wear_pinion_um`, `max_wear_gear_um` the deepest of any stage.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<StageLabels>,
+    /// A train's stage (1-based) whose mesh has the deepest wear at the state (either
+    /// flank; the last of equals, as `gearwear wear` names the limiting mesh).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limiting_stage: Option<usize>,
     /// The design's failure limit on the deepest wear, µm.
     pub wear_limit_um: f64,
     /// Cycles from this state to failure (the deepest wear reaching the limit).
@@ -65,6 +79,25 @@ pub struct RecordLabels {
     pub noise_seed: u64,
     /// Indicators of each channel of the record.
     pub indicators: Vec<ChannelIndicators>,
+}
+
+/// One stage of a gear train in a record's labels: its mesh's wear and cycles at the
+/// state, its mesh frequency at the record's speed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StageLabels {
+    /// The stage, 1-based (stage 1's pinion on the input shaft).
+    pub stage: usize,
+    /// Load cycles of the stage's pinion at the state (its own count: the input cycles
+    /// times its revolutions per input revolution).
+    pub pinion_cycles: f64,
+    /// Deepest wear of the stage's pinion profile, µm.
+    pub max_wear_pinion_um: f64,
+    /// Deepest wear of the stage's gear profile, µm.
+    pub max_wear_gear_um: f64,
+    /// Deepest wear of the stage's mesh (either flank), µm.
+    pub wear_max_um: f64,
+    /// The stage's mesh frequency at the record's speed, Hz.
+    pub mesh_hz: f64,
 }
 
 /// Everything the records of one physical state need.
@@ -110,24 +143,25 @@ pub fn state_records(
     index: StateIndex,
     emit: &mut dyn FnMut(RecordLabels, Record) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
-    let wear = inp.trajectory.state_at(inp.cycles).ok_or_else(|| {
+    let wears = inp.trajectory.states_at(inp.cycles).ok_or_else(|| {
         anyhow::anyhow!(
             "state at {} cycles lies beyond the trajectory's end ({} cycles)",
             inp.cycles,
             inp.trajectory.end_cycles
         )
     })?;
-    let r = inp
-        .model
-        .dynamic(&wear, &ExternalError::none())
-        .map_err(|e: DynamicsError| anyhow::anyhow!("state {p} ({} cycles): {e}", inp.cycles))?;
+    let r = match &inp.model.train {
+        Some(t) => solve_train(inp.model, t, WearMode::Dynamic, &wears, None),
+        None => inp.model.dynamic(&wears[0], &ExternalError::none()),
+    }
+    .map_err(|e: DynamicsError| anyhow::anyhow!("state {p} ({} cycles): {e}", inp.cycles))?;
     let periodic = periodic_record(inp.model, inp.setup, &r);
     let kin = kinematics(inp.model);
     let mut chain = inp.setup.chain.clone();
     let clean = periodic.render(&chain, chain.samples(kin.shaft_hz(chain.tachometer.shaft)));
     let (remaining, censored) = inp.trajectory.remaining(inp.cycles);
     let case = &inp.model.case;
-    let (z1, z2) = (inp.model.pair.pinion.teeth, inp.model.pair.gear.teeth);
+    let wear = wear_labels(inp.model, &wears);
     for realisation in 0..plan.realisations {
         let id = plan.record_id(p, realisation);
         let seed = record_seed(inp.design_seed, id);
@@ -144,10 +178,12 @@ pub fn state_records(
             faults: case.fault.iter().map(|f| f.table().clone()).collect(),
             trajectory_state: index.state,
             cycles: inp.cycles,
-            max_wear_pinion_um: wear.max_pinion_m() * 1e6,
-            max_wear_gear_um: wear.max_gear_m() * 1e6,
-            wear_pinion_tooth_um: tooth_max_um(&wear, Member::Pinion, z1),
-            wear_gear_tooth_um: tooth_max_um(&wear, Member::Gear, z2),
+            max_wear_pinion_um: wear.max_pinion_um,
+            max_wear_gear_um: wear.max_gear_um,
+            wear_pinion_tooth_um: wear.pinion_tooth_um.clone(),
+            wear_gear_tooth_um: wear.gear_tooth_um.clone(),
+            stages: wear.stages.clone(),
+            limiting_stage: wear.limiting_stage,
             wear_limit_um: inp.wear_limit_um,
             remaining_cycles: remaining,
             failure_censored: censored,
@@ -161,4 +197,56 @@ pub fn state_records(
         emit(labels, rec)?;
     }
     Ok(())
+}
+
+/// The wear labels of a state (every record of it alike).
+struct WearLabels {
+    max_pinion_um: f64,
+    max_gear_um: f64,
+    pinion_tooth_um: Vec<f64>,
+    gear_tooth_um: Vec<f64>,
+    stages: Vec<StageLabels>,
+    limiting_stage: Option<usize>,
+}
+
+/// The wear labels of the meshes' states `wears` (stage order; one for a single pair):
+/// a single pair's deepest wear per flank and per tooth; a train's per stage, the
+/// deepest of any stage per flank, and the limiting stage
+/// (`train_wear::limiting_of`).
+fn wear_labels(model: &Model, wears: &[WearState]) -> WearLabels {
+    let Some(train) = &model.train else {
+        let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
+        return WearLabels {
+            max_pinion_um: wears[0].max_pinion_m() * 1e6,
+            max_gear_um: wears[0].max_gear_m() * 1e6,
+            pinion_tooth_um: tooth_max_um(&wears[0], Member::Pinion, z1),
+            gear_tooth_um: tooth_max_um(&wears[0], Member::Gear, z2),
+            stages: Vec::new(),
+            limiting_stage: None,
+        };
+    };
+    let kin = train_meshes(model);
+    let stages: Vec<StageLabels> = wears
+        .iter()
+        .zip(&kin)
+        .take(train.stages.len())
+        .enumerate()
+        .map(|(k, (w, kn))| StageLabels {
+            stage: k + 1,
+            pinion_cycles: w.cycles,
+            max_wear_pinion_um: w.max_pinion_m() * 1e6,
+            max_wear_gear_um: w.max_gear_m() * 1e6,
+            wear_max_um: w.max_pinion_m().max(w.max_gear_m()) * 1e6,
+            mesh_hz: kn.mesh_hz(),
+        })
+        .collect();
+    let deepest = |f: &dyn Fn(&StageLabels) -> f64| stages.iter().map(f).fold(0.0, f64::max);
+    WearLabels {
+        max_pinion_um: deepest(&|s| s.max_wear_pinion_um),
+        max_gear_um: deepest(&|s| s.max_wear_gear_um),
+        pinion_tooth_um: Vec::new(),
+        gear_tooth_um: Vec::new(),
+        limiting_stage: limiting_of(wears.iter()).map(|(m, _)| m + 1),
+        stages,
+    }
 }

@@ -9,7 +9,17 @@
 //! found the same way (linear within the block). A run that stops before (at the edge
 //! of the model's domain, or at the largest cycle count) leaves the failure unobserved:
 //! its remaining life is right-censored at the trajectory's end.
+//!
+//! A gear train's trajectory (`[[stage]]`) is its own wear loop (`study::train_wear`):
+//! every mesh wears at its own cycle count, mesh k's pinion turning c_k times per input
+//! cycle (the revolutions of stage 1's pinion). Its state is a wear state per mesh; the
+//! records are stage 1's (whose cycles are the input cycles) and each later stage's,
+//! one per update, and the state at c input cycles is each mesh's record advanced by
+//! c_k times the input cycles since, as the train's loop advances them
+//! (`train_wear::next_block`). Failure is the deepest wear of any mesh reaching the
+//! limit. A single pair is the one-mesh case with c_1 = 1.
 
+use crate::study::train_wear::{run_train_wear, TrainWearRun};
 use crate::study::wear_loop::{run_wear, UpdateRecord, WearMode, WearRun};
 use crate::study::Model;
 use crate::wear::{WearIncrement, WearState};
@@ -18,8 +28,18 @@ use serde::{Deserialize, Serialize};
 /// The updates of a trajectory and where it ended.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Trajectory {
-    /// The wear run's updates, in order of cycles.
+    /// The wear run's updates, in order of cycles (a train: stage 1's records, whose
+    /// cycles are the input cycles).
     pub records: Vec<UpdateRecord>,
+    /// A train's later stages' records (stage 2 first), one per update as `records`;
+    /// empty for a single pair (and a one-stage train).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub later_stages: Vec<Vec<UpdateRecord>>,
+    /// A train's pinion revolutions of each stage per input cycle (c_k,
+    /// `TrainModel::cycle_factors`, stage order); empty for a single pair (c = 1).
+    /// Checked against the model's own on reuse (`super::verify`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cycle_factors: Vec<f64>,
     /// Cycle count at which the deepest wear reached the limit, if it did.
     pub failure_cycles: Option<f64>,
     /// Last cycle count the trajectory covers.
@@ -31,6 +51,11 @@ pub struct Trajectory {
 /// Deepest wear of a state (pinion or gear), m.
 pub fn deepest_m(w: &WearState) -> f64 {
     w.max_pinion_m().max(w.max_gear_m())
+}
+
+/// Deepest wear of every mesh's state (the train's failure measure), m.
+pub fn deepest_of(states: &[WearState]) -> f64 {
+    states.iter().map(deepest_m).fold(0.0, f64::max)
 }
 
 /// The per-cycle wear the loop held after update `r` (every tooth's own with a
@@ -66,6 +91,9 @@ pub fn trajectory_model(model: &Model, max_cycles: f64) -> anyhow::Result<Model>
 /// or until the deepest wear reaches `limit_m`.
 pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::Result<Trajectory> {
     let m2 = trajectory_model(model, max_cycles)?;
+    if m2.train.is_some() {
+        return run_train_trajectory(&m2, limit_m);
+    }
     let mut last = WearRun::new(WearMode::Dynamic);
     let result = run_wear(&m2, WearRun::new(WearMode::Dynamic), &mut |r| {
         last = r.clone();
@@ -86,25 +114,78 @@ pub fn run_trajectory(model: &Model, max_cycles: f64, limit_m: f64) -> anyhow::R
     ))
 }
 
+/// The trajectory of the train of `m2` (the trajectory's model, `wear.total_cycles` at
+/// the design's `max_cycles`): its wear loop run until the deepest wear of any mesh
+/// reaches `limit_m` (see the module docs).
+fn run_train_trajectory(m2: &Model, limit_m: f64) -> anyhow::Result<Trajectory> {
+    let train = m2
+        .train
+        .as_ref()
+        .ok_or_else(|| anyhow::anyhow!("not a train"))?;
+    let mut last = TrainWearRun::new(WearMode::Dynamic);
+    let result = run_train_wear(m2, train, TrainWearRun::new(WearMode::Dynamic), &mut |r| {
+        last = r.clone();
+        match r.updates.last() {
+            Some(u) if u.meshes.iter().any(|m| deepest_m(&m.wear) >= limit_m) => {
+                Err(LimitReached.into())
+            }
+            _ => Ok(()),
+        }
+    });
+    let run = match result {
+        Ok(run) => run,
+        Err(e) if e.is::<LimitReached>() => last,
+        Err(e) => return Err(e),
+    };
+    let mut meshes: Vec<Vec<UpdateRecord>> = (0..train.stages.len())
+        .map(|m| run.mesh_records(m))
+        .collect();
+    let first = meshes.remove(0);
+    Ok(Trajectory::from_meshes(
+        (first, meshes),
+        train.cycle_factors(),
+        run.stopped.map(|s| s.reason),
+        limit_m,
+    ))
+}
+
 impl Trajectory {
     /// The trajectory of the wear loop's `records` (and why it stopped early, if it did)
     /// under the wear limit `limit_m`: its end and failure cycles derived from the
     /// records (so a kept trajectory's derived fields can be checked by deriving them
     /// again, `super::verify`).
     pub fn from_records(records: Vec<UpdateRecord>, stopped: Option<String>, limit_m: f64) -> Self {
-        let end = records.last().map_or(0.0, |r| r.wear.cycles);
+        Self::from_meshes((records, Vec::new()), Vec::new(), stopped, limit_m)
+    }
+
+    /// As [`Trajectory::from_records`] for a train: stage 1's records and the later
+    /// stages', each stage's pinion revolutions per input cycle `cycle_factors` (empty:
+    /// a single pair), the failure where the deepest wear of any mesh reaches the limit.
+    pub fn from_meshes(
+        (records, later_stages): (Vec<UpdateRecord>, Vec<Vec<UpdateRecord>>),
+        cycle_factors: Vec<f64>,
+        stopped: Option<String>,
+        limit_m: f64,
+    ) -> Self {
+        let mut t = Trajectory {
+            stopped,
+            end_cycles: records.last().map_or(0.0, |r| r.wear.cycles),
+            failure_cycles: None,
+            records,
+            later_stages,
+            cycle_factors,
+        };
+        let n = t.records.len();
         // Failure inside the last block: where the deepest wear crossed the limit.
-        let failure_cycles = records.windows(2).find_map(|w| {
-            let (a, b) = (deepest_m(&w[0].wear), deepest_m(&w[1].wear));
+        let failure_cycles = (1..n).find_map(|i| {
+            let (a, b) = (t.deepest_at(i - 1), t.deepest_at(i));
             (a < limit_m && b >= limit_m).then(|| {
                 // Per point the wear is linear in cycles within the block; the deepest point
                 // may change inside it, so bisect on the state itself.
-                let (mut lo, mut hi) = (w[0].wear.cycles, w[1].wear.cycles);
+                let (mut lo, mut hi) = (t.records[i - 1].wear.cycles, t.records[i].wear.cycles);
                 for _ in 0..60 {
                     let mid = 0.5 * (lo + hi);
-                    let mut s = w[0].wear.clone();
-                    s.advance(&increment(&w[0]), mid - w[0].wear.cycles);
-                    if deepest_m(&s) >= limit_m {
+                    if deepest_of(&t.advanced(i - 1, mid)) >= limit_m {
                         hi = mid;
                     } else {
                         lo = mid;
@@ -113,21 +194,62 @@ impl Trajectory {
                 hi
             })
         });
-        let failure_cycles = failure_cycles.or_else(|| {
-            records
-                .first()
-                .and_then(|r| (deepest_m(&r.wear) >= limit_m).then_some(0.0))
-        });
-        Trajectory {
-            stopped,
-            end_cycles: end,
-            failure_cycles,
-            records,
+        t.failure_cycles =
+            failure_cycles.or_else(|| (n > 0 && t.deepest_at(0) >= limit_m).then_some(0.0));
+        t
+    }
+
+    /// Meshes of the trajectory (1 for a single pair).
+    pub fn mesh_count(&self) -> usize {
+        1 + self.later_stages.len()
+    }
+
+    /// Mesh `m`'s record of update `i` (mesh 0: `records`).
+    pub fn record(&self, m: usize, i: usize) -> Option<&UpdateRecord> {
+        match m {
+            0 => self.records.get(i),
+            _ => self.later_stages.get(m - 1)?.get(i),
         }
     }
 
-    /// The wear state at `cycles` (at most the trajectory's end; see the module docs).
+    /// Deepest wear of any mesh at update `i`, m.
+    fn deepest_at(&self, i: usize) -> f64 {
+        (0..self.mesh_count())
+            .filter_map(|m| self.record(m, i))
+            .map(|r| deepest_m(&r.wear))
+            .fold(0.0, f64::max)
+    }
+
+    /// Every mesh's state at `cycles` (input cycles) from update `i`: each mesh's record
+    /// advanced by its pinion's cycles since, c_k (`cycles` - the update's), as the
+    /// train's loop advances it (c = 1 for a single pair).
+    fn advanced(&self, i: usize, cycles: f64) -> Vec<WearState> {
+        let extra = cycles - self.records[i].wear.cycles;
+        (0..self.mesh_count())
+            .filter_map(|m| self.record(m, i))
+            .enumerate()
+            .map(|(m, r)| {
+                let mut s = r.wear.clone();
+                if extra > 0.0 {
+                    match self.cycle_factors.get(m) {
+                        Some(c) => s.advance(&increment(r), extra * c),
+                        None => s.advance(&increment(r), extra),
+                    }
+                }
+                s
+            })
+            .collect()
+    }
+
+    /// The wear state at `cycles` (at most the trajectory's end; see the module docs); a
+    /// train's: its first stage's ([`Trajectory::states_at`] gives every mesh's).
     pub fn state_at(&self, cycles: f64) -> Option<WearState> {
+        self.states_at(cycles).map(|mut s| s.swap_remove(0))
+    }
+
+    /// Every mesh's wear state at `cycles` (input cycles of a train; at most the
+    /// trajectory's end; see the module docs), stage order.
+    pub fn states_at(&self, cycles: f64) -> Option<Vec<WearState>> {
         if cycles > self.end_cycles * (1.0 + 1e-12) || self.records.is_empty() {
             return None;
         }
@@ -135,13 +257,7 @@ impl Trajectory {
             .records
             .partition_point(|r| r.wear.cycles <= cycles)
             .saturating_sub(1);
-        let r = &self.records[i];
-        let mut s = r.wear.clone();
-        let extra = cycles - r.wear.cycles;
-        if extra > 0.0 {
-            s.advance(&increment(r), extra);
-        }
-        Some(s)
+        Some(self.advanced(i, cycles))
     }
 
     /// The cycle counts of `count` states evenly spaced from 0 to the trajectory's end

@@ -10,8 +10,16 @@
 //! end recomputed (the loop must stop where the trajectory stops), and its failure and
 //! end cycles derived again from the updates. Records are too many to recompute on every
 //! resume: the first and last physical state and a random sample of the others are.
+//!
+//! A train's trajectory (`super::trajectory`) is checked as a train's wear checkpoints
+//! are (`study::train_wear_check`): its meshes' records replayed block by block (each
+//! mesh's wear the previous update's advanced by the loop's own step), a sample of its
+//! updates recomputed with the whole train's response, its end recomputed, its cycle
+//! factors the model's, its failure derived again from every mesh.
 
 use super::trajectory::{deepest_m, trajectory_model, Trajectory};
+use crate::study::train_wear::{next_train_update, TrainNext};
+use crate::study::train_wear_check::{train_run_from_logs, verify_train_resumable};
 use crate::study::wear_check::{verify_resumable, StoredRunError};
 use crate::study::wear_loop::{next_update, Next, WearMode, WearRun};
 use crate::study::Model;
@@ -71,6 +79,14 @@ pub fn verify_trajectory(
 ) -> Result<(), StoredRunError> {
     let m2 =
         trajectory_model(model, max_cycles).map_err(|e| StoredRunError::Model(e.to_string()))?;
+    if m2.train.is_some() {
+        return verify_train_trajectory(&m2, limit_m, t);
+    }
+    if !t.later_stages.is_empty() || !t.cycle_factors.is_empty() {
+        return Err(StoredRunError::Mismatch(
+            "it holds a train's stages, but the condition's case is a single pair".into(),
+        ));
+    }
     let mut run = WearRun::new(WearMode::Dynamic);
     run.records = t.records.clone();
     verify_resumable(&run, &m2).map_err(|e| e.lines_named("record line "))?;
@@ -79,9 +95,7 @@ pub fn verify_trajectory(
         .iter()
         .position(|r| deepest_m(&r.wear) >= limit_m)
     {
-        return Err(StoredRunError::Mismatch(format!(
-            "update {i} already reaches the wear limit, yet the trajectory goes on: the run stops there"
-        )));
+        return Err(goes_on(i));
     }
     let last = &t.records[n - 1];
     let stopped = if deepest_m(&last.wear) >= limit_m {
@@ -90,20 +104,92 @@ pub fn verify_trajectory(
         match next_update(&m2, WearMode::Dynamic, Some(last)) {
             Ok(Next::Finished) => None,
             Ok(Next::Stop(s)) => Some(s.reason),
-            Ok(Next::Record(_)) | Err(_) => {
-                return Err(StoredRunError::Mismatch(format!(
-                    "it ends at {} cycles, below the wear limit and before `run_to_failure.max_cycles` = {max_cycles}, where the wear loop goes on: cut short",
-                    last.wear.cycles
-                )))
-            }
+            Ok(Next::Record(_)) | Err(_) => return Err(cut_short(last.wear.cycles, max_cycles)),
         }
     };
     let again = Trajectory::from_records(t.records.clone(), stopped, limit_m);
-    if again != *t {
+    same_end(t, &again)
+}
+
+/// Update `i` reaches the limit though the trajectory goes on.
+fn goes_on(i: usize) -> StoredRunError {
+    StoredRunError::Mismatch(format!(
+        "update {i} already reaches the wear limit, yet the trajectory goes on: the run stops there"
+    ))
+}
+
+/// A trajectory ending at `cycles`, where the wear loop goes on.
+fn cut_short(cycles: f64, max_cycles: f64) -> StoredRunError {
+    StoredRunError::Mismatch(format!(
+        "it ends at {cycles} cycles, below the wear limit and before `run_to_failure.max_cycles` = {max_cycles}, where the wear loop goes on: cut short"
+    ))
+}
+
+/// The kept trajectory `t` against `again`, derived from its updates.
+fn same_end(t: &Trajectory, again: &Trajectory) -> Result<(), StoredRunError> {
+    if again != t {
         return Err(StoredRunError::Mismatch(format!(
             "its end ({} cycles, failure {:?}, stopped {:?}) is not what its updates give ({} cycles, failure {:?}, stopped {:?})",
             t.end_cycles, t.failure_cycles, t.stopped.is_some(), again.end_cycles, again.failure_cycles, again.stopped.is_some()
         )));
     }
     Ok(())
+}
+
+/// [`verify_trajectory`] of a train's trajectory, `m2` the trajectory's model (module
+/// docs).
+fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(), StoredRunError> {
+    let Some(train) = m2.train.as_ref() else {
+        return Err(StoredRunError::Model("not a train".into()));
+    };
+    let mismatch = |m: String| StoredRunError::Mismatch(m);
+    let n = t.records.len();
+    if n == 0 {
+        return Err(mismatch("holds no update".into()));
+    }
+    let logs: Vec<WearRun> = std::iter::once(&t.records)
+        .chain(&t.later_stages)
+        .map(|r| WearRun {
+            mode: WearMode::Dynamic,
+            records: r.clone(),
+            stopped: None,
+        })
+        .collect();
+    if logs.iter().any(|l| l.records.len() != n) {
+        return Err(mismatch(
+            "its stages hold different numbers of updates".into(),
+        ));
+    }
+    let run = train_run_from_logs(m2, train, WearMode::Dynamic, &logs)
+        .map_err(|e| mismatch(e.to_string()))?;
+    verify_train_resumable(m2, train, &run).map_err(|e| mismatch(e.to_string()))?;
+    let deepest = |i: usize| {
+        run.updates[i]
+            .meshes
+            .iter()
+            .map(|r| deepest_m(&r.wear))
+            .fold(0.0, f64::max)
+    };
+    if let Some(i) = (0..n - 1).find(|i| deepest(*i) >= limit_m) {
+        return Err(goes_on(i));
+    }
+    let last = &run.updates[n - 1];
+    let stopped = if deepest(n - 1) >= limit_m {
+        None
+    } else {
+        match next_train_update(m2, train, WearMode::Dynamic, Some(last)) {
+            Ok(TrainNext::Finished) => None,
+            Ok(TrainNext::Stop(s)) => Some(s.reason),
+            Ok(TrainNext::Update(_)) | Err(_) => {
+                return Err(cut_short(last.input_cycles, m2.case.wear.total_cycles))
+            }
+        }
+    };
+    let again = Trajectory::from_meshes(
+        (t.records.clone(), t.later_stages.clone()),
+        train.cycle_factors(),
+        stopped,
+        limit_m,
+    );
+    same_end(t, &again)
 }
