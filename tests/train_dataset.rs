@@ -183,6 +183,11 @@ fn each_records_mesh_wear_is_that_of_a_wear_run_to_its_cycles() {
             assert!(close(col("wear_max_um"), p.max(g)));
             assert!(close(col("cycles"), f["pinion_cycles"].as_f64().unwrap()));
         }
+        // By hand: stage 2's pinion turns 19/31 per input turn, and its mesh frequency is
+        // 30 Hz x 19/31 x 23 teeth (the record's speed is the design's 30 Hz).
+        let cell = |n: &str| ix[n][i].parse::<f64>().unwrap();
+        assert!(close(cell("cycles_stage2"), cycles * 19.0 / 31.0));
+        assert!(close(cell("mesh_hz_stage2"), 30.0 * 19.0 / 31.0 * 23.0));
         if i == 2 {
             // The trajectory ends at this record's cycles: its last update per stage in
             // the metadata is the wear run's end too.

@@ -225,9 +225,9 @@ impl Trajectory {
     /// train's loop advances it (c = 1 for a single pair).
     fn advanced(&self, i: usize, cycles: f64) -> Vec<WearState> {
         let extra = cycles - self.records[i].wear.cycles;
+        // Indexed by the mesh itself, so that each mesh takes its own c_k.
         (0..self.mesh_count())
-            .filter_map(|m| self.record(m, i))
-            .enumerate()
+            .filter_map(|m| self.record(m, i).map(|r| (m, r)))
             .map(|(m, r)| {
                 let mut s = r.wear.clone();
                 if extra > 0.0 {
