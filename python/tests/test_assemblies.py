@@ -174,9 +174,19 @@ def test_train_sweep_has_every_mesh_and_equals_dynamics(train, cli, tmp_path):
     assert rows[0] == s.keys + ["case_id"] + s.columns
     for i, row in enumerate(rows[1:]):
         assert [float(x) for x in row[2:]] == s.results[i].tolist()
-    # A train's wear sweep is refused, naming the option.
-    with pytest.raises(gw.CaseError, match="gear train"):
-        _quiet(gw.sweep, cheap, {"operating.input_speed_hz": [30.0]}, run="wear")
+    # A train's wear sweep: each mesh's final depths and the limiting stage, the numbers
+    # of `gw.wear` on the same case (the same computation: equal to the last bit).
+    case = cheap.set("wear.total_cycles", 2e3)
+    ws = _quiet(gw.sweep, case, {"operating.input_speed_hz": [30.0]}, run="wear")
+    w = _quiet(gw.wear, case)
+    for mode in ("dynamic", "quasi_static"):
+        for k in (0, 1):
+            run = w.stages[k][mode]
+            for flank in ("pinion", "gear"):
+                col = f"stage{k + 1}_wear_max_{flank}_{mode}_um"
+                assert ws[col][0] == getattr(run, f"max_wear_{flank}_um")[-1] > 0
+        limiting = w.summary["limiting_mesh"][mode]["stage"]
+        assert ws[f"wear_limiting_stage_{mode}"][0] == limiting
 
 
 def test_a_single_pair_has_no_stages():
