@@ -9,6 +9,7 @@ mod common;
 use common::resume::{
     cut_log, cut_then_resumed_is_unchanged, edit_update, foreign_logs_refused,
     killed_then_resumed_is_uninterrupted, refused, resuming_a_finished_run_changes_nothing, run,
+    scale_at,
 };
 use std::path::{Path, PathBuf};
 
@@ -81,22 +82,7 @@ fn a_killed_planetary_run_resumes_to_the_bytes_of_an_uninterrupted_one() {
 /// with a fresh checksum when `rehash`.
 fn scale(path: &Path, rehash: bool, at: usize, key: &str, f: f64) {
     edit_update(path, at, rehash, &|v| {
-        let at_key = match v.pointer(key).unwrap().as_array() {
-            Some(a) => {
-                let k = (0..a.len())
-                    .max_by(|p, q| a[*p].as_f64().unwrap().total_cmp(&a[*q].as_f64().unwrap()))
-                    .unwrap();
-                format!("{key}/{k}")
-            }
-            None => key.to_owned(),
-        };
-        let x = v.pointer_mut(&at_key).unwrap();
-        let y = x.as_f64().unwrap();
-        assert!(
-            y > 0.0,
-            "{key} of update {at} is {y}: the edit would change nothing"
-        );
-        *x = serde_json::json!(y * f);
+        scale_at(v, key, at, f);
     });
 }
 

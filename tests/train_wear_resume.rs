@@ -9,7 +9,7 @@ mod common;
 use common::resume::{
     cut_log, cut_then_resumed_is_unchanged, foreign_logs_refused,
     killed_then_resumed_is_uninterrupted, refused, resuming_a_finished_run_changes_nothing, run,
-    sha,
+    scale_at, sha,
 };
 use std::path::{Path, PathBuf};
 
@@ -119,22 +119,7 @@ fn scale(at: usize, key: &'static str, f: f64) -> impl Fn(usize, &mut serde_json
         if i != at {
             return;
         }
-        let at_key = match v.pointer(key).unwrap().as_array() {
-            Some(a) => {
-                let k = (0..a.len())
-                    .max_by(|p, q| a[*p].as_f64().unwrap().total_cmp(&a[*q].as_f64().unwrap()))
-                    .unwrap();
-                format!("{key}/{k}")
-            }
-            None => key.to_owned(),
-        };
-        let x = v.pointer_mut(&at_key).unwrap();
-        let y = x.as_f64().unwrap();
-        assert!(
-            y > 0.0,
-            "{key} of update {at} is {y}: the edit would change nothing"
-        );
-        *x = serde_json::json!(y * f);
+        scale_at(v, key, at, f);
     }
 }
 

@@ -77,11 +77,7 @@ impl Job for WearJob {
             );
         }
         let model = if self.case.gear.helix_angle_deg != 0.0 {
-            let m = crate::study::Model::helical_from_case(&self.case)?;
-            for w in &m.warnings {
-                observer.warning(w);
-            }
-            m
+            super::build_dynamics_model(&self.case, observer)?
         } else {
             build_model(&self.case, observer)?
         };

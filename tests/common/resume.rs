@@ -149,3 +149,25 @@ pub fn resuming_a_finished_run_changes_nothing(a: &[String], out: &Path) {
     assert!(o.status.success(), "{}", super::stderr(&o));
     assert!(super::published(out) == before);
 }
+
+/// Multiply the number at `key` (a JSON pointer) of a log record `v` by `f`; when `key`
+/// names an array, its largest element (a point where the profile has worn). `at` names
+/// the update in the message of an edit that would change nothing.
+pub fn scale_at(v: &mut serde_json::Value, key: &str, at: usize, f: f64) {
+    let at_key = match v.pointer(key).unwrap().as_array() {
+        Some(a) => {
+            let k = (0..a.len())
+                .max_by(|p, q| a[*p].as_f64().unwrap().total_cmp(&a[*q].as_f64().unwrap()))
+                .unwrap();
+            format!("{key}/{k}")
+        }
+        None => key.to_owned(),
+    };
+    let x = v.pointer_mut(&at_key).unwrap();
+    let y = x.as_f64().unwrap();
+    assert!(
+        y > 0.0,
+        "{key} of update {at} is {y}: the edit would change nothing"
+    );
+    *x = serde_json::json!(y * f);
+}
