@@ -9,10 +9,12 @@
 
 use super::folder::{read_in, sidecars, trajectories, DATASET_REL};
 use super::index_files::matches_design;
+use super::kept::Kept;
+use super::label_check::kept_label_problems;
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
 use super::state_files::StateJob;
-use super::verify::{os_seed, verify_states, Kept};
+use super::verify::{os_seed, verify_states};
 use crate::checksum::sha256_hex;
 use crate::signals::transfer::TransferPath;
 use crate::study::dataset::plan::{plan_of, Shard};
@@ -163,13 +165,14 @@ fn verify_input(dir: &Path, key: &str, given: GivenPath, seed: u64) -> Result<()
         .collect::<BTreeSet<_>>()
         .into_iter()
         .collect();
-    let sample: Vec<usize> = states_to_recompute(held.len(), MAX_RECOMPUTED_STATES, seed)
+    let drawn: Vec<usize> = states_to_recompute(held.len(), MAX_RECOMPUTED_STATES, seed)
         .into_iter()
         .map(|i| held[i])
         .collect();
     let mut problems = Vec::new();
-    let sample: Vec<usize> = sample
-        .into_iter()
+    let sample: Vec<usize> = drawn
+        .iter()
+        .copied()
         .filter(|p| {
             let c = plan.state_index(*p).condition;
             let has = trajectories.contains_key(&c);
@@ -191,6 +194,14 @@ fn verify_input(dir: &Path, key: &str, given: GivenPath, seed: u64) -> Result<()
         key,
     };
     problems.extend(verify_states(&job, dir, &sample, Kept::Finished));
+    // Every other held record's labels, recomputed from the verified trajectories (a
+    // state of a condition without one is named above when sampled, and here otherwise).
+    problems.extend(kept_label_problems(
+        &job,
+        dir,
+        held.iter().copied().filter(|p| !drawn.contains(p)),
+        Kept::Finished,
+    ));
     if problems.is_empty() {
         Ok(())
     } else {

@@ -18,6 +18,8 @@ pub mod claim;
 pub mod folder;
 pub mod index_files;
 pub mod jobs;
+mod kept;
+mod label_check;
 pub mod merge;
 pub mod merge_verify;
 pub mod plan;

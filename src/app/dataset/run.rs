@@ -8,10 +8,12 @@ use super::folder::{
     trajectory_rel, TrajectoryFile, DATASET_REL,
 };
 use super::index_files::{stage_index_and_metadata, Missing};
+use super::kept::Kept;
+use super::label_check::kept_label_problems;
 use super::plan::{dataset_key, description, Checked};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::state_files::{state_files, StateJob};
-use super::verify::{kept_file_problem, os_seed, verify_states, Kept};
+use super::verify::{kept_file_problem, os_seed, verify_states};
 use crate::app::observer::{Observer, Task};
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
@@ -78,12 +80,7 @@ pub(crate) fn run_dataset(
         trajectories: &trajectories,
         key: &key,
     };
-    // Finished records are reused only when a sample of them recomputes bit for bit.
-    let sample: Vec<usize> = states_to_recompute(state_count, MAX_RECOMPUTED_STATES, os_seed())
-        .into_iter()
-        .map(|k| shard_first + k * shard_step)
-        .collect();
-    let problems = verify_states(&job, root, &sample, Kept::WholeStates);
+    let problems = kept_records_problems(&job, root, (shard_first, shard_step), state_count);
     if !problems.is_empty() {
         return Err(DatasetError::Input(problems));
     }
@@ -126,6 +123,31 @@ pub(crate) fn run_dataset(
         missing,
         estimated_bytes: estimated,
     })
+}
+
+/// Finished records are reused only when a sample of them recomputes bit for bit and
+/// every other one's labels are those the design and the verified trajectories give:
+/// the problems of the shard's `count` states, `first` and every `step`-th after.
+fn kept_records_problems(
+    job: &StateJob,
+    root: &Path,
+    (first, step): (usize, usize),
+    count: usize,
+) -> Vec<String> {
+    let sample: Vec<usize> = states_to_recompute(count, MAX_RECOMPUTED_STATES, os_seed())
+        .into_iter()
+        .map(|k| first + k * step)
+        .collect();
+    let mut problems = verify_states(job, root, &sample, Kept::WholeStates);
+    problems.extend(kept_label_problems(
+        job,
+        root,
+        (0..count)
+            .map(|k| first + k * step)
+            .filter(|p| !sample.contains(p)),
+        Kept::WholeStates,
+    ));
+    problems
 }
 
 /// The trajectory of condition `c`: from `state/` when kept under the same key, else run.

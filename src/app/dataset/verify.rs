@@ -6,9 +6,12 @@
 //! (`verify_states`); [`verify_dataset`] checks a whole folder.
 
 use super::folder::{
-    csv_rel, existing_key, finished, read_in, sidecar_rel, sidecars, trajectory_rel, TrajectoryFile,
+    csv_rel, existing_key, finished, read_in, sidecar_rel, sidecars, trajectory_rel, Sidecar,
+    TrajectoryFile,
 };
 use super::index_files::matches_design;
+use super::kept::{first_difference, Kept};
+use super::label_check::kept_label_problems;
 use super::plan::{check_dataset, dataset_key, description};
 use super::request::{DatasetError, DatasetRequest};
 use super::state_files::{state_files, RecordFiles, StateJob};
@@ -17,7 +20,7 @@ use crate::study::dataset::plan::plan_of;
 use crate::study::dataset::verify::{states_to_recompute, verify_trajectory};
 use crate::study::Model;
 use rayon::prelude::*;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 /// A seed from the operating system's randomness (a forger cannot know which records a
@@ -36,18 +39,6 @@ pub(super) fn kept_file_problem(root: &Path, rel: &str, what: &str) -> DatasetEr
         "{}: {what}: the file was edited or is not this design's (delete it to recompute it)",
         root.join(rel).display()
     )])
-}
-
-/// Which kept records of a sampled state [`verify_states`] compares, and what its
-/// message advises.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum Kept {
-    /// A resume: a state whose records are all finished (an unfinished state is
-    /// recomputed whole by the run); delete the record to recompute it.
-    WholeStates,
-    /// A merge's input: every finished record of the state (each is copied); the shard
-    /// is refused.
-    Finished,
 }
 
 /// Recompute the records of each physical state in `states` that `kept` selects in
@@ -136,51 +127,6 @@ fn record_difference(root: &Path, f: &RecordFiles) -> Option<(String, String)> {
     ))
 }
 
-/// The first field (dotted path from `at`) where `a` and `b` differ, with both values.
-fn first_difference(
-    a: &serde_json::Value,
-    b: &serde_json::Value,
-    at: &str,
-) -> Option<(String, String, String)> {
-    use serde_json::Value;
-    let join = |k: &str| {
-        if at.is_empty() {
-            k.to_owned()
-        } else {
-            format!("{at}.{k}")
-        }
-    };
-    match (a, b) {
-        (Value::Object(x), Value::Object(y)) => x
-            .iter()
-            .find_map(|(k, v)| match y.get(k) {
-                Some(w) => first_difference(v, w, &join(k)),
-                None => Some((join(k), v.to_string(), "absent".into())),
-            })
-            .or_else(|| {
-                y.iter()
-                    .find(|(k, _)| !x.contains_key(*k))
-                    .map(|(k, w)| (join(k), "absent".into(), w.to_string()))
-            }),
-        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => x
-            .iter()
-            .zip(y)
-            .enumerate()
-            .find_map(|(i, (v, w))| first_difference(v, w, &join(&i.to_string()))),
-        _ if a == b => None,
-        _ => Some((at.to_owned(), shorten(a), shorten(b))),
-    }
-}
-
-/// A JSON value for a message, cut at 60 characters.
-fn shorten(v: &serde_json::Value) -> String {
-    let s = v.to_string();
-    match s.char_indices().nth(60) {
-        Some((i, _)) => format!("{}...", &s[..i]),
-        None => s,
-    }
-}
-
 /// What [`verify_dataset`] checked and found.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Verified {
@@ -245,26 +191,12 @@ pub fn verify_dataset(
     }
     let cars = sidecars(root);
     v.records_present = cars.len();
-    for s in &cars {
-        let id = s.labels.record_id;
-        let problem = if s.dataset_key != key {
-            Some("another design's record")
-        } else if id >= plan.records() {
-            Some("its id is beyond the design's records")
-        } else if !matches_design(&s.labels, &body) {
-            Some("its labels are not those the design gives its id")
-        } else if read_in(root, &s.labels.file).map(|b| sha256_hex(&b))
-            != Some(s.signal_sha256.clone())
-        {
-            Some("its signal file is missing or not the one it names")
-        } else {
-            None
-        };
-        if let Some(p) = problem {
-            v.problems
-                .push(format!("{}: {p}", root.join(sidecar_rel(id)).display()));
-        }
-    }
+    v.problems.extend(identity_problems(
+        root,
+        &cars,
+        (&key, &body),
+        plan.records(),
+    ));
     let job = StateJob {
         req,
         plan: &plan,
@@ -282,5 +214,54 @@ pub fn verify_dataset(
         &v.states_recomputed,
         Kept::WholeStates,
     ));
+    // Every finished record's labels (those of the recomputed states compared above).
+    let recomputed: BTreeSet<usize> = v.states_recomputed.iter().copied().collect();
+    let held: BTreeSet<usize> = cars
+        .iter()
+        .map(|s| s.labels.record_id)
+        .filter(|id| *id < plan.records())
+        .map(|id| id / plan.realisations)
+        .filter(|p| !recomputed.contains(p))
+        .filter(|p| trajectories.contains_key(&plan.state_index(*p).condition))
+        .collect();
+    v.problems.extend(kept_label_problems(
+        &job,
+        root,
+        held.into_iter(),
+        Kept::Finished,
+    ));
     Ok(v)
+}
+
+/// Every sidecar of `cars` in `root` whose identity is not the one the design (`key`,
+/// its description `body`) gives its id among `records`, or whose signal is not the one
+/// it names: one message each.
+fn identity_problems(
+    root: &Path,
+    cars: &[Sidecar],
+    (key, body): (&str, &serde_json::Value),
+    records: usize,
+) -> Vec<String> {
+    cars.iter()
+        .filter_map(|s| {
+            let id = s.labels.record_id;
+            let problem = if s.dataset_key != key {
+                "another design's record"
+            } else if id >= records {
+                "its id is beyond the design's records"
+            } else if !matches_design(&s.labels, body) {
+                "its labels are not those the design gives its id"
+            } else if read_in(root, &s.labels.file).map(|b| sha256_hex(&b))
+                != Some(s.signal_sha256.clone())
+            {
+                "its signal file is missing or not the one it names"
+            } else {
+                return None;
+            };
+            Some(format!(
+                "{}: {problem}",
+                root.join(sidecar_rel(id)).display()
+            ))
+        })
+        .collect()
 }

@@ -135,6 +135,73 @@ pub fn signal_file(id: usize) -> String {
     format!("signals/{id:07}.parquet")
 }
 
+/// The meshes' wear states at the state's cycles (stage order; one for a single pair).
+fn state_wears(inp: &StateInputs) -> anyhow::Result<Vec<WearState>> {
+    inp.trajectory.states_at(inp.cycles).ok_or_else(|| {
+        anyhow::anyhow!(
+            "state at {} cycles lies beyond the trajectory's end ({} cycles)",
+            inp.cycles,
+            inp.trajectory.end_cycles
+        )
+    })
+}
+
+/// The labels of record `realisation` of physical state `p` without its indicators
+/// (left empty): everything the design and the wear trajectory give it, the same for
+/// every realisation but the id, file and noise seed.
+fn labels_without_indicators(
+    inp: &StateInputs,
+    plan: &Plan,
+    (p, index): (usize, StateIndex),
+    wears: &[WearState],
+    realisation: usize,
+) -> RecordLabels {
+    let case = &inp.model.case;
+    let wear = wear_labels(inp.model, wears);
+    let (remaining, censored) = inp.trajectory.remaining(inp.cycles);
+    let id = plan.record_id(p, realisation);
+    RecordLabels {
+        record_id: id,
+        file: signal_file(id),
+        condition: inp.condition.name.clone(),
+        fault: inp.condition.fault.clone(),
+        severity: inp.condition.severity,
+        faults: case.fault.iter().map(|f| f.table().clone()).collect(),
+        trajectory_state: index.state,
+        cycles: inp.cycles,
+        max_wear_pinion_um: wear.max_pinion_um,
+        max_wear_gear_um: wear.max_gear_um,
+        wear_pinion_tooth_um: wear.pinion_tooth_um,
+        wear_gear_tooth_um: wear.gear_tooth_um,
+        stages: wear.stages,
+        limiting_stage: wear.limiting_stage,
+        wear_limit_um: inp.wear_limit_um,
+        remaining_cycles: remaining,
+        failure_censored: censored,
+        input_speed_hz: case.operating.input_speed_hz,
+        load_torque_nm: case.operating.load_torque_nm,
+        mesh_hz: kinematics(inp.model).mesh_hz(),
+        realisation,
+        noise_seed: record_seed(inp.design_seed, id),
+        indicators: Vec::new(),
+    }
+}
+
+/// The labels of every record of physical state `p` but their indicators (left empty),
+/// as [`state_records`] gives them, without solving the dynamics: what a resume and a
+/// merge compare every kept record's labels with (docs/RELIABILITY.md, "Datasets").
+pub fn expected_labels(
+    inp: &StateInputs,
+    plan: &Plan,
+    p: usize,
+    index: StateIndex,
+) -> anyhow::Result<Vec<RecordLabels>> {
+    let wears = state_wears(inp)?;
+    Ok((0..plan.realisations)
+        .map(|r| labels_without_indicators(inp, plan, (p, index), &wears, r))
+        .collect())
+}
+
 /// Compute the records of physical state `p`, handing each to `emit` as it is made.
 pub fn state_records(
     inp: &StateInputs,
@@ -143,13 +210,7 @@ pub fn state_records(
     index: StateIndex,
     emit: &mut dyn FnMut(RecordLabels, Record) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
-    let wears = inp.trajectory.states_at(inp.cycles).ok_or_else(|| {
-        anyhow::anyhow!(
-            "state at {} cycles lies beyond the trajectory's end ({} cycles)",
-            inp.cycles,
-            inp.trajectory.end_cycles
-        )
-    })?;
+    let wears = state_wears(inp)?;
     let r = match &inp.model.train {
         Some(t) => solve_train(inp.model, t, WearMode::Dynamic, &wears, None),
         None => inp.model.dynamic(&wears[0], &ExternalError::none()),
@@ -159,41 +220,13 @@ pub fn state_records(
     let kin = kinematics(inp.model);
     let mut chain = inp.setup.chain.clone();
     let clean = periodic.render(&chain, chain.samples(kin.shaft_hz(chain.tachometer.shaft)));
-    let (remaining, censored) = inp.trajectory.remaining(inp.cycles);
-    let case = &inp.model.case;
-    let wear = wear_labels(inp.model, &wears);
     for realisation in 0..plan.realisations {
-        let id = plan.record_id(p, realisation);
-        let seed = record_seed(inp.design_seed, id);
-        chain.acquisition.noise_seed = seed;
+        let mut labels = labels_without_indicators(inp, plan, (p, index), &wears, realisation);
+        chain.acquisition.noise_seed = labels.noise_seed;
         let mut rec = clean.clone();
         add_noise(&mut rec, &chain);
         let analysis = analyse(&rec, &kin, &chain.tachometer, inp.setup.components);
-        let labels = RecordLabels {
-            record_id: id,
-            file: signal_file(id),
-            condition: inp.condition.name.clone(),
-            fault: inp.condition.fault.clone(),
-            severity: inp.condition.severity,
-            faults: case.fault.iter().map(|f| f.table().clone()).collect(),
-            trajectory_state: index.state,
-            cycles: inp.cycles,
-            max_wear_pinion_um: wear.max_pinion_um,
-            max_wear_gear_um: wear.max_gear_um,
-            wear_pinion_tooth_um: wear.pinion_tooth_um.clone(),
-            wear_gear_tooth_um: wear.gear_tooth_um.clone(),
-            stages: wear.stages.clone(),
-            limiting_stage: wear.limiting_stage,
-            wear_limit_um: inp.wear_limit_um,
-            remaining_cycles: remaining,
-            failure_censored: censored,
-            input_speed_hz: case.operating.input_speed_hz,
-            load_torque_nm: case.operating.load_torque_nm,
-            mesh_hz: kin.mesh_hz(),
-            realisation,
-            noise_seed: seed,
-            indicators: analysis.iter().map(|c| c.indicators()).collect(),
-        };
+        labels.indicators = analysis.iter().map(|c| c.indicators()).collect();
         emit(labels, rec)?;
     }
     Ok(())
