@@ -255,6 +255,20 @@ fn forged_train_labels_and_trajectories_are_refused_on_reuse_and_merge() {
         stderr(&r)
     );
     std::fs::write(&tp, &kept).unwrap();
+    // Stage 2's turns per input turn edited (19/31 read as 31/19), and stage 2's updates
+    // dropped: each refused in the trajectory's own words (its keys, no checkpoint lines).
+    let mut t = json(&tp);
+    t["trajectory"]["cycle_factors"][1] = serde_json::json!(31.0 / 19.0);
+    let mut dropped = json(&tp);
+    dropped["trajectory"]["later_stages"] = serde_json::json!([]);
+    for (forged, named) in [(t, "cycle_factors"), (dropped, "later_stages")] {
+        std::fs::write(&tp, serde_json::to_vec(&forged).unwrap()).unwrap();
+        let r = dataset(&d, &whole, &[]);
+        assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
+        let err = stderr(&r);
+        assert!(err.contains(named) && !err.contains("line"), "{err}");
+    }
+    std::fs::write(&tp, &kept).unwrap();
     // The disk budget counted this trajectory file: at most the margin (2, the threshold
     // may shorten blocks: `app::dataset::plan`) times the estimate of its bytes, and the
     // estimate not more than 3 times the file (issue 33: estimates within 3 x).

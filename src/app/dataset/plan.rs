@@ -5,6 +5,7 @@
 use super::folder::MAX_DATASET_FILE_BYTES;
 use super::request::{DatasetError, DatasetRequest};
 use crate::checksum::sha256_hex;
+use crate::config::case::Case;
 use crate::report::signals::chain_json;
 use crate::signals::files::units;
 use crate::signals::setup::{chain_of, ChainSetup};
@@ -38,11 +39,11 @@ fn chain_case(case: &crate::config::Case) -> Result<crate::config::Case, Vec<Str
 }
 
 /// The tachometer shaft's speed, Hz, at the input speed `input_hz`, for the chain `s` of
-/// the design's first condition: the single pair's pinion or gear; a train's sensor
-/// stage's pinion or gear (`signals.sensor_stage`), through the ratios of the stages
-/// before it, as `study::signal_record` turns them.
-fn tachometer_hz(d: &DatasetDesign, s: &ChainSetup, input_hz: f64) -> f64 {
-    let case = &d.conditions[0].case;
+/// a condition's `case`: the single pair's pinion or gear; a train's sensor stage's
+/// pinion or gear (`signals.sensor_stage`), through the ratios of the stages before it,
+/// as `study::signal_record` turns them (each condition's own: conditions may differ in
+/// their stages' teeth).
+fn tachometer_hz(case: &Case, s: &ChainSetup, input_hz: f64) -> f64 {
     let gear_shaft = s.chain.tachometer.shaft == crate::signals::chain::Shaft::Gear;
     let ratio = |g: &crate::config::case::GearSection| g.teeth_pinion as f64 / g.teeth_gear as f64;
     if case.stage.is_empty() {
@@ -67,7 +68,7 @@ fn record_shaft_hz(d: &DatasetDesign, s: &ChainSetup) -> f64 {
     if d.conditions[0].case.stage.is_empty() {
         d.speeds_hz[0]
     } else {
-        tachometer_hz(d, s, d.speeds_hz[0])
+        tachometer_hz(&d.conditions[0].case, s, d.speeds_hz[0])
     }
 }
 
@@ -113,15 +114,15 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
 /// channels of any condition's chain: what the run budget counts per record.
 pub fn record_size(d: &DatasetDesign, setups: &[ChainSetup]) -> RecordSize {
     let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
-    setups.iter().fold(
+    setups.iter().zip(&d.conditions).fold(
         RecordSize {
             samples: 0.0,
             channels: 0.0,
         },
-        |acc, s| RecordSize {
+        |acc, (s, c)| RecordSize {
             samples: acc
                 .samples
-                .max(s.chain.samples(tachometer_hz(d, s, slowest)) as f64),
+                .max(s.chain.samples(tachometer_hz(&c.case, s, slowest)) as f64),
             channels: acc.channels.max(s.chain.path.sensors.len() as f64),
         },
     )
@@ -159,8 +160,9 @@ fn records_bytes(d: &DatasetDesign, setups: &[ChainSetup]) -> f64 {
     let slowest = d.speeds_hz.iter().fold(f64::INFINITY, |a, b| a.min(*b));
     let per_state: f64 = setups
         .iter()
-        .map(|s| {
-            let shaft_hz = tachometer_hz(d, s, slowest);
+        .zip(&d.conditions)
+        .map(|(s, c)| {
+            let shaft_hz = tachometer_hz(&c.case, s, slowest);
             let n = s.chain.samples(shaft_hz) as f64;
             let columns = (s.chain.path.sensors.len() + 1) as f64;
             let csv = if d.csv {

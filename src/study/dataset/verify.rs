@@ -19,7 +19,7 @@
 
 use super::trajectory::{deepest_m, trajectory_model, Trajectory};
 use crate::study::train_wear::{next_train_update, TrainNext};
-use crate::study::train_wear_check::{train_run_from_logs, verify_train_resumable};
+use crate::study::train_wear_check::{train_run_from_logs, verify_train_resumable, TrainRunError};
 use crate::study::wear_check::{verify_resumable, StoredRunError};
 use crate::study::wear_loop::{next_update, Next, WearMode, WearRun};
 use crate::study::Model;
@@ -136,6 +136,25 @@ fn same_end(t: &Trajectory, again: &Trajectory) -> Result<(), StoredRunError> {
     Ok(())
 }
 
+/// A train run's error in a trajectory's words: its updates per stage (`records` and
+/// `later_stages`), not a checkpoint's mesh logs and lines.
+fn in_trajectory(e: TrainRunError) -> String {
+    match e {
+        TrainRunError::StageCount { logs, stages } => format!(
+            "it holds the updates of {logs} stages (`records` and `later_stages`) for a train of {stages} stages"
+        ),
+        TrainRunError::Update {
+            update,
+            stage,
+            problem,
+            ..
+        } => format!(
+            "update {update}{}: {problem}",
+            stage.map_or(String::new(), |s| format!(", stage {s}"))
+        ),
+    }
+}
+
 /// [`verify_trajectory`] of a train's trajectory, `m2` the trajectory's model (module
 /// docs).
 fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(), StoredRunError> {
@@ -161,8 +180,15 @@ fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(
         ));
     }
     let run = train_run_from_logs(m2, train, WearMode::Dynamic, &logs)
-        .map_err(|e| mismatch(e.to_string()))?;
-    verify_train_resumable(m2, train, &run).map_err(|e| mismatch(e.to_string()))?;
+        .map_err(|e| mismatch(in_trajectory(e)))?;
+    verify_train_resumable(m2, train, &run).map_err(|e| mismatch(in_trajectory(e)))?;
+    let factors = train.cycle_factors();
+    if t.cycle_factors != factors {
+        return Err(mismatch(format!(
+            "its stages' pinion turns per input turn (`cycle_factors` {:?}) are not the train's ({factors:?})",
+            t.cycle_factors
+        )));
+    }
     let deepest = |i: usize| {
         run.updates[i]
             .meshes
@@ -187,7 +213,7 @@ fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(
     };
     let again = Trajectory::from_meshes(
         (t.records.clone(), t.later_stages.clone()),
-        train.cycle_factors(),
+        factors,
         stopped,
         limit_m,
     );
