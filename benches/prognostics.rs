@@ -69,6 +69,7 @@ fn pipeline(case: &Case, obs: &Observations, log: bool) -> LifeSummary {
         grid_points: 101,
         seed: 1,
         samples: 2000,
+        stages: 1,
     };
     let psur = Surrogate::build(case, &span, pset.cycles, 5, &|| {}).expect("model");
     let t3 = Instant::now();

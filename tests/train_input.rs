@@ -86,19 +86,36 @@ fn a_train_too_large_for_the_budget_is_refused_before_it_runs() {
 
 #[test]
 fn a_train_over_the_budget_is_refused_by_its_own_estimate() {
-    // The same train with a grid far over any study's budget. `run` and `signals` take a
-    // train: each is refused by the train's estimate (its wear and dynamics estimates for
-    // `run`, the dynamics one with the train's cost factor for `signals`), before any work.
-    // The studies that take a single pair only refuse the train first
-    // (`TRAIN_STUDIES`: calibrate, predict).
+    // The same train with a grid far over any study's budget. `run`, `signals`,
+    // `calibrate` and `predict` take a train: each is refused by the train's estimate (its
+    // wear and dynamics estimates for `run`, the dynamics one with the train's cost factor
+    // for `signals`, the train's forward runs for `calibrate` and `predict`), before any
+    // work.
     let dir = tempfile::tempdir().unwrap();
     let file = case_file(
         &dir,
         &format!("[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}\n[numerics]\nsteps_per_mesh_period = 20000\n"),
     );
-    for study in ["run", "signals"] {
-        let err = rejected(&[study, "--config", &file], &["over its budget"]);
-        assert!(!err.contains("this case is a gear train"), "{study}: {err}");
+    let obs = dir.path().join("obs.csv");
+    std::fs::write(
+        &obs,
+        "cycles,stage,max_wear_pinion_um\n1e4,2,0.5\n2e4,2,1\n",
+    )
+    .unwrap();
+    let obs = obs.to_str().unwrap();
+    for args in [
+        vec!["run"],
+        vec!["signals"],
+        vec!["calibrate", "--observations", obs],
+        vec!["predict", "--limit-um", "10", "--cycles", "1e5"],
+    ] {
+        let mut all = args.clone();
+        all.extend(["--config", &file]);
+        let err = rejected(&all, &["over its budget"]);
+        assert!(
+            !err.contains("this case is a gear train"),
+            "{args:?}: {err}"
+        );
     }
 }
 

@@ -5,7 +5,8 @@
 
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
-use super::{budget, build_model, publish, settings, Job, JobError, Outcome};
+use super::train_prognostics::{check_train_prognostics, stages_of};
+use super::{budget, build_train_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
@@ -14,9 +15,10 @@ use crate::prognostics::check::{
 };
 use crate::prognostics::fit_check::{fit_check, FitCheck};
 use crate::prognostics::likelihood::noise_scales;
+use crate::prognostics::observations::parse_observations_of;
 use crate::prognostics::prior::Prior;
 use crate::prognostics::quantity::indicators_of;
-use crate::prognostics::{parse_observations, Observations, Quantity, Surrogate};
+use crate::prognostics::{Observations, Quantity, Surrogate};
 use crate::remedy::{Arg, Problem};
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
@@ -102,8 +104,10 @@ impl CalibrateJob {
         let (src, text) = self
             .observations
             .read(Arg::Observations, crate::io::input::MAX_OBSERVATIONS_BYTES)?;
-        let obs = parse_observations(&text, &src)
+        let obs = parse_observations_of(&text, &src, stages_of(&self.case))
             .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+        let observed: Vec<Quantity> = obs.series.iter().map(|s| s.quantity).collect();
+        check_train_prognostics(&self.case, &observed, false)?;
         // The budget, now that the observations say how far the reference runs go.
         let e = crate::study::budget::estimate_calibration(
             &self.case,
@@ -133,7 +137,7 @@ impl Job for CalibrateJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         let (prior, obs, src) = self.inputs()?;
-        let model = build_model(&self.case, observer)?;
+        let model = build_train_model(&self.case, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let o = &self.options;

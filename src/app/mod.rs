@@ -52,6 +52,7 @@ pub(crate) mod planetary_checkpoints;
 pub mod predict;
 pub mod predict_future;
 pub mod predict_merge;
+mod predict_train;
 pub mod publish;
 pub mod run;
 pub mod run_train;
@@ -61,6 +62,7 @@ mod signals_planetary;
 pub mod stiffness;
 pub mod sweep;
 pub(crate) mod train_checkpoints;
+pub(crate) mod train_prognostics;
 pub mod wear;
 pub mod wear_planetary;
 pub mod wear_runs;
@@ -140,7 +142,7 @@ pub fn refuse_train(case: &Case) -> Result<(), JobError> {
 }
 
 /// What a study that takes a single pair says of a gear train.
-pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear`, `gearwear signals`, `gearwear dataset`, `gearwear run` and `gearwear sweep` (of dynamics or wear) run so far; this study takes a single pair ([gear], without [[stage]])";
+pub const TRAIN_STUDIES: &str = "this case is a gear train ([[stage]] tables): on a train, `gearwear dynamics`, `gearwear stiffness`, `gearwear wear`, `gearwear signals`, `gearwear dataset`, `gearwear run`, `gearwear sweep` (of dynamics or wear), `gearwear calibrate` and `gearwear predict` run so far; this study takes a single pair ([gear], without [[stage]])";
 
 /// As [`build_model`], for the studies that take a gear train as well as a single pair.
 pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {

@@ -6,7 +6,8 @@ use super::calibrate::counted;
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::predict_future::FutureInput;
-use super::{budget, build_model, publish, settings, Job, JobError, Outcome};
+use super::train_prognostics::{check_train_prognostics, stages_of};
+use super::{budget, build_train_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::Table;
 use crate::prognostics::band::Band;
@@ -195,11 +196,12 @@ impl Job for PredictJob {
         o.check()?;
         let future = self.future.resolve(o.cycles)?;
         let case = &self.case;
+        check_train_prognostics(case, &[], future.is_some())?;
         let (source, span, source_id, n) = self.source()?;
         let shard = self.shard;
         // The budget, now that the samples' source and number are known.
         self.check_budget(&source, &span, n, future.as_ref())?;
-        let model = build_model(case, observer)?;
+        let model = build_train_model(case, observer)?;
         // Every bin of the future duty within the model's domain (the Hertz pressure the
         // flanks can carry, ...) before the folder is opened: a refusal leaves nothing.
         if let Some(f) = &future {
@@ -219,6 +221,7 @@ impl Job for PredictJob {
             grid_points: o.grid_points,
             seed: o.seed,
             samples: n,
+            stages: stages_of(case),
         };
         let meta = RunMetadata::of_model(self.name(), &model);
         let identity = Identity {
@@ -370,6 +373,13 @@ impl PredictJob {
     }
 }
 
+/// Each sample's limiting stage (NaN where none reached the limit).
+fn limiting_column(o: &[SampleOutcome]) -> Vec<f64> {
+    o.iter()
+        .map(|s| s.limiting_stage.map_or(f64::NAN, |x| x as f64))
+        .collect()
+}
+
 fn life_of(c: Crossing) -> Option<f64> {
     match c {
         Crossing::Reached(x) => Some(x),
@@ -483,13 +493,19 @@ pub(crate) fn prediction_artifacts(
                 .collect(),
         )
         .col("life_status", o.iter().map(|s| status(s.life)).collect());
+    let life_table = match set.stages {
+        1 => life_table,
+        _ => life_table.col("limiting_stage", limiting_column(o)),
+    };
     art.table("life_samples.csv", life_table);
-    art.table("fan_wear.csv", bands_table(&fans[..1]));
-    art.table("fan_vibration.csv", bands_table(&fans[1..]));
+    // The wear fans (every stage's on a train) and the response's.
+    let (wear, response): (Vec<_>, Vec<_>) = fans.iter().cloned().partition(|f| f.0.is_wear());
+    art.table("fan_wear.csv", bands_table(&wear));
+    art.table("fan_vibration.csv", bands_table(&response));
     let figs = vec![
-        figure(&mut art, "fan_wear.png", &fan_figure("Maximum pinion wear: median, 50 % and 90 % bands", &fans[..1], Some(set.limit_um)), "Fan chart of the maximum pinion wear depth over the ensemble, with the wear limit.", Some("fan_wear.csv"))?,
+        figure(&mut art, "fan_wear.png", &fan_figure("Maximum pinion wear: median, 50 % and 90 % bands", &wear, Some(set.limit_um)), "Fan chart of the maximum pinion wear depth over the ensemble, with the wear limit.", Some("fan_wear.csv"))?,
         figure(&mut art, "life.png", &life_figure(&lives, &life, set.cycles), "Distribution of the cycles at which the maximum pinion wear reaches the limit (samples that reach it within the horizon).", Some("life_samples.csv"))?,
-        figure(&mut art, "fan_vibration.png", &fan_figure("Vibration and transmission-error indicators: median, 50 % and 90 % bands", &fans[1..], None), "Fan charts of the indicators a monitoring system sees: RMS and mesh harmonics of the pinion's y velocity, DTE peak-to-peak and first mesh harmonic.", Some("fan_vibration.csv"))?,
+        figure(&mut art, "fan_vibration.png", &fan_figure("Vibration and transmission-error indicators: median, 50 % and 90 % bands", &response, None), "Fan charts of the indicators a monitoring system sees: RMS and mesh harmonics of the pinion's y velocity, DTE peak-to-peak and first mesh harmonic.", Some("fan_vibration.csv"))?,
     ];
     let failed: Vec<&SampleOutcome> = o.iter().filter(|s| s.failure.is_some()).collect();
     art.summary = prediction_summary(&f, &life, &fans, &failed, missing);
@@ -497,6 +513,10 @@ pub(crate) fn prediction_artifacts(
         "{} samples, forward model: {}, seed {}.",
         set.samples, f.identity.forward, set.seed
     )];
+    if set.stages > 1 {
+        super::predict_train::add_train_summary(&mut art.summary, o, &fans, set.stages);
+        notes.push(super::predict_train::train_note(o, set.stages));
+    }
     if let Some(d) = &f.identity.future {
         notes.push(format!(
             "Future duty: from {:.4e} cycles on, a load spectrum of {} bin(s) (listed in summary.json) instead of the case's duty.",

@@ -5,7 +5,7 @@ use super::band::{cycles_grid, Band};
 use super::calibrate::Calibration;
 use super::forward::{run_duty_trajectory, run_trajectory, Crossing};
 use super::observations::Observations;
-use super::predict::{PredictSettings, SampleOutcome, FAN_QUANTITIES};
+use super::predict::{fan_quantities, PredictSettings, SampleOutcome};
 use super::prior::{apply, Theta, PARAMETERS};
 use super::quantity::Quantity;
 use super::surrogate::Surrogate;
@@ -185,7 +185,7 @@ pub(crate) fn check_prediction(
             let truth =
                 run_duty_trajectory(&apply(case, theta), sur.future.as_ref(), None, set.cycles)
                     .ok()?;
-            let max_abs_error = FAN_QUANTITIES
+            let max_abs_error = fan_quantities(set.stages)
                 .iter()
                 .map(|q| {
                     let e = grid

@@ -23,6 +23,7 @@
 
 use super::indicator::{name, value};
 use super::quantity::{indicators_of, Quantity};
+use super::train_forward::TrainRun;
 use crate::config::Case;
 use crate::config::LoadSpectrumSection;
 use crate::duty::contribution::combined_record;
@@ -52,6 +53,15 @@ pub struct Trajectory {
     /// Condition indicators at the first updates, by name (`attach`).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub indicators: BTreeMap<String, Vec<f64>>,
+    /// A gear train's later stages' records (stage 2 first), one per update as `records`
+    /// (which are stage 1's); each record's cycles are its own pinion's revolutions.
+    /// Empty for a single pair (and a one-stage train). `super::train_forward`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub later_stages: Vec<Vec<UpdateRecord>>,
+    /// A train's pinion revolutions of each stage per input cycle (c_k,
+    /// `TrainModel::cycle_factors`, stage order, c_1 = 1); empty for a single pair.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cycle_factors: Vec<f64>,
 }
 
 /// Where a wear trajectory reaches a limit.
@@ -84,7 +94,8 @@ impl Trajectory {
         }
     }
 
-    /// Index of the last update at or before `cycles`; None beyond the valid range.
+    /// Index of the last update at or before `cycles` (the run's own cycles: input
+    /// cycles on a train); None beyond the valid range.
     fn update_at(&self, cycles: f64) -> Option<usize> {
         let tol = 1e-9 * self.valid_until().abs().max(1.0);
         if self.records.is_empty() || cycles > self.valid_until() + tol || cycles < 0.0 {
@@ -94,17 +105,54 @@ impl Trajectory {
         Some(j.max(1) - 1)
     }
 
-    /// Value of `q` at `cycles` (display units), None beyond the valid range.
+    /// The trajectory of a gear train's run (`super::train_forward`) at wear coefficient
+    /// `k` (m^2/N) asked to reach `requested` input cycles.
+    pub(crate) fn of_train(run: TrainRun, k: f64, requested: f64) -> Self {
+        Trajectory {
+            coefficient_m2_per_n: k,
+            requested_cycles: requested,
+            records: run.records,
+            failure: run.failure,
+            indicators: BTreeMap::new(),
+            later_stages: run.later_stages,
+            cycle_factors: run.cycle_factors,
+        }
+    }
+
+    /// Number of meshes the run holds (1 for a single pair).
+    pub fn stage_count(&self) -> usize {
+        1 + self.later_stages.len()
+    }
+
+    /// Stage `stage`'s (1-based) records and its pinion revolutions per input cycle;
+    /// None for a stage the run does not hold.
+    fn stage_records(&self, stage: usize) -> Option<(&[UpdateRecord], f64)> {
+        match stage {
+            1 => Some((&self.records, 1.0)),
+            s => Some((
+                self.later_stages.get(s.checked_sub(2)?)?,
+                *self.cycle_factors.get(s - 1)?,
+            )),
+        }
+    }
+
+    /// Value of `q` at `cycles` (display units; on a train, input cycles and `q`'s
+    /// stage), None beyond the valid range or for a stage the run does not hold.
     pub fn value(&self, q: Quantity, cycles: f64) -> Option<f64> {
         let j = self.update_at(cycles)?;
-        let r = &self.records[j];
-        let n = (cycles - r.wear.cycles).max(0.0);
-        Some(match q {
+        let (records, c) = self.stage_records(q.stage())?;
+        let r = &records[j];
+        // Mesh k's pinion turns c_k times per input cycle: its own cycles since the
+        // update (its record's cycles are its own, `train_wear::next_block`).
+        let n = (cycles - self.records[j].wear.cycles).max(0.0) * c;
+        Some(match q.base() {
             Quantity::MaxWearPinion => max_after(&r.pinion_profiles(), n) * 1e6,
             Quantity::MaxWearGear => max_after(&r.gear_profiles(), n) * 1e6,
             _ => match self.records.get(j + 1) {
-                Some(next) if next.wear.cycles > r.wear.cycles => {
-                    let t = (n / (next.wear.cycles - r.wear.cycles)).min(1.0);
+                Some(next) if next.wear.cycles > self.records[j].wear.cycles => {
+                    let t = ((cycles - self.records[j].wear.cycles).max(0.0)
+                        / (next.wear.cycles - self.records[j].wear.cycles))
+                        .min(1.0);
                     let (a, b) = (self.response(q, j)?, self.response(q, j + 1)?);
                     a + t * (b - a)
                 }
@@ -118,17 +166,46 @@ impl Trajectory {
     fn response(&self, q: Quantity, j: usize) -> Option<f64> {
         match q {
             Quantity::Indicator(i) => self.indicators.get(name(i))?.get(j).copied(),
-            _ => Some(q.of_summary(&self.records[j].summary)),
+            _ => Some(q.of_summary(&self.stage_records(q.stage())?.0.get(j)?.summary)),
         }
     }
 
-    /// Cycles at which the maximum pinion wear first reaches `limit_um`.
+    /// Cycles at which the maximum pinion wear first reaches `limit_um`; on a train,
+    /// the input cycles at which the first mesh's does (`limiting_stage`).
     pub fn cycles_to_wear(&self, limit_um: f64) -> Crossing {
-        match first_crossing(&self.records, self.valid_until(), limit_um * 1e-6) {
+        match self
+            .stage_crossings(limit_um)
+            .into_iter()
+            .flatten()
+            .reduce(f64::min)
+        {
             Some(c) => Crossing::Reached(c),
             None if self.failure.is_some() => Crossing::Unknown,
             None => Crossing::NotReached,
         }
+    }
+
+    /// Each stage's input cycles at which its maximum pinion wear first reaches
+    /// `limit_um` (None: not within the run), stage order: stage k's crossing in its own
+    /// cycles over c_k.
+    pub fn stage_crossings(&self, limit_um: f64) -> Vec<Option<f64>> {
+        (1..=self.stage_count())
+            .map(|s| {
+                let (records, c) = self.stage_records(s)?;
+                first_crossing(records, self.valid_until() * c, limit_um * 1e-6).map(|x| x / c)
+            })
+            .collect()
+    }
+
+    /// The stage (1-based) whose maximum pinion wear reaches `limit_um` first, if one
+    /// does within the run (the first of equal crossings).
+    pub fn limiting_stage(&self, limit_um: f64) -> Option<usize> {
+        self.stage_crossings(limit_um)
+            .iter()
+            .enumerate()
+            .filter_map(|(s, c)| c.map(|c| (s + 1, c)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(s, _)| s)
     }
 }
 
@@ -183,7 +260,22 @@ pub fn run_duty_trajectory(
         records,
         failure,
         indicators: BTreeMap::new(),
+        later_stages: Vec::new(),
+        cycle_factors: Vec::new(),
     };
+    if !c.stage.is_empty() {
+        if future.is_some() {
+            return Err(ModelError(
+                vec![super::train_forward::TRAIN_DUTY.to_owned()],
+            ));
+        }
+        let run = super::train_forward::run_train(&c)?;
+        return Ok(Trajectory::of_train(
+            run,
+            c.wear.coefficient_m2_per_n,
+            total_cycles,
+        ));
+    }
     if future.is_none() && c.load_spectrum.is_none() {
         let model = Model::from_case(&c)?;
         let mut records: Vec<UpdateRecord> = Vec::new();
@@ -342,6 +434,8 @@ mod tests {
             ],
             failure: None,
             indicators: BTreeMap::new(),
+            later_stages: Vec::new(),
+            cycle_factors: Vec::new(),
         }
     }
 

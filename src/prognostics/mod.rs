@@ -33,9 +33,9 @@ pub mod surrogate;
 mod surrogate_duty;
 #[cfg(test)]
 mod tests_calibration;
+pub mod train_forward;
 
 pub use forward::{Crossing, Trajectory};
-pub(crate) use observations::parse_observations;
 pub use observations::Observations;
 pub use prior::{Parameter, Prior, Theta};
 pub use quantity::Quantity;

@@ -3,7 +3,13 @@
 //! with the standard deviation of each measurement's noise (same unit).
 //!
 //! An empty cell means "not measured at this row" (a wear measurement is rarer than a
-//! vibration reading). Every problem is reported with its row (1-based data row, and the
+//! vibration reading).
+//!
+//! **A gear train** (`[[stage]]`): an optional `stage` column names the mesh a row's
+//! values are of (1..N, stage 1 the input stage); without it, or in an empty cell, stage
+//! 1, so a pair's files read unchanged. `cycles` are then input cycles (revolutions of
+//! stage 1's pinion), whatever the stage (`super::train_forward`). A quantity observed on
+//! stage k > 1 is its own series ([`Quantity::OnStage`]). Every problem is reported with its row (1-based data row, and the
 //! file line) and column.
 
 use super::quantity::Quantity;
@@ -93,13 +99,26 @@ fn in_range(cell: &str, lo: f64, hi: f64, why: &str) -> Result<f64, String> {
 /// `sigma_<name>` column when it has one.
 struct Columns {
     cycles: usize,
+    /// The `stage` column, if there is one.
+    stage: Option<usize>,
     values: Vec<(Quantity, usize)>,
     sigma_of: Vec<Option<usize>>,
 }
 
-/// Parse the observations CSV. `source` names the file in messages. Returns every
-/// problem found.
+/// Parse the observations CSV of a single pair (a `stage` column may only say 1).
+/// `source` names the file in messages. Returns every problem found.
 pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
+    parse_observations_of(text, source, 1)
+}
+
+/// Parse the observations CSV of a case of `stages` meshes (1 for a single pair; a
+/// `stage` column's values in 1..=stages). `source` names the file in messages. Returns
+/// every problem found.
+pub fn parse_observations_of(
+    text: &str,
+    source: &str,
+    stages: usize,
+) -> Result<Observations, Vec<String>> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -120,9 +139,30 @@ pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<
         })
         .collect();
     let mut problems = Vec::new();
-    let rows = read_rows(&mut rdr, &cols, &mut series, &mut problems, source);
+    let rows = read_rows(
+        &mut rdr,
+        (&cols, stages),
+        &mut series,
+        &mut problems,
+        source,
+    );
     if rows == 0 {
         problems.push(format!("{source}: no data rows"));
+    }
+    if cols.stage.is_some() {
+        // A column observed on later stages only has no stage-1 series.
+        let staged: Vec<Quantity> = series
+            .iter()
+            .filter(|s| s.quantity.stage() > 1 && !s.values.is_empty())
+            .map(|s| s.quantity.base())
+            .collect();
+        series.retain(|s| !(s.values.is_empty() && staged.contains(&s.quantity)));
+        // Stage 1's series first, each stage's in the order of the columns.
+        let order = |q: Quantity| {
+            let col = cols.values.iter().position(|(c, _)| *c == q.base());
+            (q.stage(), col)
+        };
+        series.sort_by_key(|s| order(s.quantity));
     }
     check_series(&series, rows, source, &mut problems);
     if problems.is_empty() {
@@ -145,8 +185,9 @@ fn columns(header: &[String], source: &str) -> Result<Columns, Vec<String>> {
     // Quantity columns and their sigma columns.
     let mut value_cols: Vec<(Quantity, usize)> = Vec::new();
     let mut sigma_cols: Vec<(String, usize)> = Vec::new();
+    let stage_col = header.iter().position(|h| h == "stage");
     for (j, h) in header.iter().enumerate() {
-        if j == cycles_col {
+        if j == cycles_col || (Some(j) == stage_col && !header[..j].contains(h)) {
             continue;
         }
         if header[..j].contains(h) {
@@ -182,6 +223,7 @@ fn columns(header: &[String], source: &str) -> Result<Columns, Vec<String>> {
     }
     Ok(Columns {
         cycles: cycles_col,
+        stage: stage_col,
         values: value_cols,
         sigma_of,
     })
@@ -191,8 +233,8 @@ fn columns(header: &[String], source: &str) -> Result<Columns, Vec<String>> {
 /// `problems`; the number of rows read.
 fn read_rows(
     rdr: &mut csv::Reader<&[u8]>,
-    cols: &Columns,
-    series: &mut [Series],
+    (cols, stages): (&Columns, usize),
+    series: &mut Vec<Series>,
     problems: &mut Vec<String>,
     source: &str,
 ) -> usize {
@@ -237,24 +279,71 @@ fn read_rows(
             ));
         }
         previous = Some(cycles);
+        let stage = match cols.stage.map(|j| row_stage(cell(j), stages)) {
+            None => 1,
+            Some(Ok(s)) => s,
+            Some(Err(e)) => {
+                problems.push(format!("{at}: {e}"));
+                continue;
+            }
+        };
         for (i, (q, j)) in cols.values.iter().enumerate() {
             let raw = cell(*j);
             if raw.is_empty() {
                 continue;
             }
+            let Some(staged) = q.on_stage(stage) else {
+                problems.push(format!(
+                    "{at}: column `{}` is a condition indicator of the housing's record, not of one stage: observe it on stage 1 (`stage` = {stage} given)",
+                    q.name()
+                ));
+                continue;
+            };
+            let k = match series.iter().position(|s| s.quantity == staged) {
+                Some(k) => k,
+                None => {
+                    series.push(Series {
+                        quantity: staged,
+                        cycles: Vec::new(),
+                        values: Vec::new(),
+                        sigma: cols.sigma_of[i].map(|_| Vec::new()),
+                    });
+                    series.len() - 1
+                }
+            };
             match measurement(*q, raw, cols.sigma_of[i].map(cell)) {
                 Ok((v, sigma)) => {
                     if let Some(s) = sigma {
-                        series[i].sigma.get_or_insert_with(Vec::new).push(s);
+                        series[k].sigma.get_or_insert_with(Vec::new).push(s);
                     }
-                    series[i].cycles.push(cycles);
-                    series[i].values.push(v);
+                    series[k].cycles.push(cycles);
+                    series[k].values.push(v);
                 }
                 Err(e) => problems.push(format!("{at}: {e}")),
             }
         }
     }
     rows
+}
+
+/// The stage of a row's `stage` cell (1..=`stages`; an empty cell is stage 1), or why
+/// it is not one.
+fn row_stage(cell: &str, stages: usize) -> Result<usize, String> {
+    if cell.is_empty() {
+        return Ok(1);
+    }
+    let range = if stages == 1 {
+        "1: the case is a single pair, or a one-stage train".to_owned()
+    } else {
+        format!("1..{stages}: the case's stages")
+    };
+    match number(cell) {
+        Ok(s) if s.fract() == 0.0 && s >= 1.0 && s <= stages as f64 => Ok(s as usize),
+        Ok(s) => Err(format!(
+            "column `stage` = {s} is outside {range} (a whole number naming the mesh)"
+        )),
+        Err(e) => Err(format!("column `stage`: {e}; the range is {range}")),
+    }
 }
 
 /// The cycle count of a row's `cycles` cell, or why it is not one.
@@ -363,6 +452,44 @@ mod tests {
             let e = err(text);
             assert!(e.contains(needle), "{text:?}: {e}");
         }
+    }
+
+    #[test]
+    fn a_stage_column_splits_each_quantity_by_mesh() {
+        // Stage 2's wear is its own series; stage 1's (and an empty cell's) the plain
+        // quantity; a column observed on stage 2 only has no stage-1 series.
+        let o = parse_observations_of(
+            "cycles,stage,max_wear_pinion_um,dte_max_um\n0,1,0,17\n1e4,2,0.5,\n2e4,,1.5,17.2\n3e4,2,0.9,\n",
+            "obs.csv",
+            2,
+        )
+        .unwrap();
+        let names: Vec<&str> = o.series.iter().map(|s| s.quantity.name()).collect();
+        assert_eq!(
+            names,
+            [
+                "max_wear_pinion_um",
+                "dte_max_um",
+                "max_wear_pinion_um_stage2"
+            ]
+        );
+        assert_eq!(o.series[0].cycles, vec![0.0, 2e4]);
+        assert_eq!(o.series[2].values, vec![0.5, 0.9]);
+        let o = parse_observations_of(
+            "cycles,stage,max_wear_pinion_um\n1e4,2,0.5\n3e4,2,0.9\n",
+            "obs.csv",
+            2,
+        )
+        .unwrap();
+        assert_eq!(o.series.len(), 1);
+        assert_eq!(o.series[0].quantity.stage(), 2);
+        let e = parse_observations_of("cycles,stage,dte_max_um\n0,1,17\n1,4,17\n", "o", 3)
+            .unwrap_err()
+            .join("\n");
+        assert!(
+            e.contains("row 2") && e.contains("`stage` = 4") && e.contains("1..3"),
+            "{e}"
+        );
     }
 
     #[test]

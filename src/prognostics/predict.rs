@@ -36,6 +36,31 @@ pub struct PredictSettings {
     pub seed: u64,
     /// Ensemble size.
     pub samples: usize,
+    /// Meshes of the case (1 for a single pair; a gear train's stages): the fans hold
+    /// every stage's quantities ([`fan_quantities`]) and the life is the first mesh's to
+    /// reach the limit.
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub stages: usize,
+}
+
+/// The default of [`PredictSettings::stages`]: a single pair.
+fn one() -> usize {
+    1
+}
+
+/// Whether `n` is 1 (a single pair's settings are written as they were before trains).
+fn is_one(n: &usize) -> bool {
+    *n == 1
+}
+
+/// The fan quantities of a case of `stages` meshes: [`FAN_QUANTITIES`] (stage 1's),
+/// then each later stage's (`Quantity::OnStage`), stage by stage.
+pub fn fan_quantities(stages: usize) -> Vec<Quantity> {
+    let mut v = FAN_QUANTITIES.to_vec();
+    for s in 2..=stages {
+        v.extend(FAN_QUANTITIES.iter().filter_map(|q| q.on_stage(s)));
+    }
+    v
 }
 
 /// Where the parameter samples come from.
@@ -94,6 +119,10 @@ pub struct SampleOutcome {
     pub failure: Option<String>,
     /// Cycles up to which the run is known (>= the horizon when it did not fail).
     pub valid_until: f64,
+    /// On a gear train, the stage (1-based) whose maximum pinion wear reaches the limit
+    /// first, when one does within the horizon; None for a single pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limiting_stage: Option<usize>,
 }
 
 /// Life within the horizon, or NotReached beyond it.
@@ -112,10 +141,16 @@ pub fn run_sample(
     set: &PredictSettings,
 ) -> Result<SampleOutcome, ModelError> {
     let grid = cycles_grid(set.cycles, set.grid_points);
-    let (life, values, failure, valid_until) = match fw {
+    let fan = fan_quantities(set.stages);
+    let train = set.stages > 1;
+    let (life, values, failure, valid_until, limiting_stage) = match fw {
         Forward::Surrogate(s) => {
             let life = within(s.cycles_to_wear(&theta, set.limit_um), set.cycles);
-            let vals = FAN_QUANTITIES
+            let limiting = match life {
+                Crossing::Reached(x) if train => Some(s.deepest_stage(&theta, x)),
+                _ => None,
+            };
+            let vals = fan
                 .iter()
                 .map(|q| grid.iter().map(|c| s.value(*q, &theta, *c)).collect())
                 .collect();
@@ -125,17 +160,21 @@ pub fn run_sample(
                     "the reference run behind this sample failed; the surrogate is known to {until:.0} cycles at this k"
                 )
             });
-            (life, vals, failure, until)
+            (life, vals, failure, until, limiting)
         }
         Forward::Exact(case, future) => {
             let t: Trajectory =
                 run_duty_trajectory(&apply(case, &theta), *future, None, set.cycles)?;
             let life = within(t.cycles_to_wear(set.limit_um), set.cycles);
-            let vals = FAN_QUANTITIES
+            let limiting = match life {
+                Crossing::Reached(_) if train => t.limiting_stage(set.limit_um),
+                _ => None,
+            };
+            let vals = fan
                 .iter()
                 .map(|q| grid.iter().map(|c| t.value(*q, *c)).collect())
                 .collect();
-            (life, vals, t.failure.clone(), t.valid_until())
+            (life, vals, t.failure.clone(), t.valid_until(), limiting)
         }
     };
     Ok(SampleOutcome {
@@ -145,6 +184,7 @@ pub fn run_sample(
         values,
         failure,
         valid_until,
+        limiting_stage,
     })
 }
 
@@ -255,6 +295,14 @@ pub(crate) fn check_shard(
     if let Some(p) = bad.first() {
         return Err(p.message.clone());
     }
+    if !(1..=crate::config::train::MAX_STAGES).contains(&set.stages) {
+        return Err(format!(
+            "`stages` = {} is outside 1..{}",
+            set.stages,
+            crate::config::train::MAX_STAGES
+        ));
+    }
+    let fan = fan_quantities(set.stages).len();
     if !(1 <= index && index <= count && count <= set.samples) {
         return Err(format!(
             "shard {index} of {count} is not a shard of {} samples",
@@ -270,14 +318,15 @@ pub(crate) fn check_shard(
     }
     for o in outcomes {
         if o.index >= set.samples
-            || o.values.len() != FAN_QUANTITIES.len()
+            || o.values.len() != fan
+            || o.limiting_stage.is_some_and(|s| s == 0 || s > set.stages)
             || o.values.iter().any(|v| v.len() != set.grid_points)
         {
             return Err(format!(
                 "sample {} does not fit the prediction ({} samples, {} fan quantities of {} points)",
                 o.index,
                 set.samples,
-                FAN_QUANTITIES.len(),
+                fan,
                 set.grid_points
             ));
         }
@@ -288,7 +337,7 @@ pub(crate) fn check_shard(
 /// Fan charts of every fan quantity.
 pub fn fans(outcomes: &[SampleOutcome], set: &PredictSettings) -> Vec<(Quantity, Band)> {
     let grid = cycles_grid(set.cycles, set.grid_points);
-    FAN_QUANTITIES
+    fan_quantities(set.stages)
         .iter()
         .enumerate()
         .map(|(f, q)| {
@@ -310,6 +359,7 @@ mod tests {
             values: vec![],
             failure: None,
             valid_until,
+            limiting_stage: None,
         }
     }
 

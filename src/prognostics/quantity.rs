@@ -24,6 +24,11 @@ pub enum Quantity {
     /// A condition indicator of the recorded housing vibration (`super::indicator`: the
     /// index of its name), in the unit of `signals.channel_unit` or dimensionless.
     Indicator(u16),
+    /// A quantity of [`ALL`] on a later stage of a gear train (`[[stage]]`): the stage
+    /// (2..=`config::train::MAX_STAGES`, 1-based) and the quantity's index in [`ALL`]
+    /// (stage 1's is the quantity itself). Observations name it by the `stage` column
+    /// (`super::observations`); tables by the name with a `_stage<N>` suffix.
+    OnStage(u8, u8),
 }
 
 /// Every quantity, in the order tables list them.
@@ -55,6 +60,7 @@ impl Quantity {
             Quantity::DtePeakToPeak => "dte_peak_to_peak_um",
             Quantity::DteHarmonic1 => "dte_harmonic1_um",
             Quantity::Indicator(i) => super::indicator::name(*i),
+            Quantity::OnStage(s, i) => staged_name(*s, *i),
         }
     }
 
@@ -69,6 +75,7 @@ impl Quantity {
             Quantity::DtePeakToPeak => "DTE peak-to-peak (µm)".into(),
             Quantity::DteHarmonic1 => "DTE 1st mesh harmonic (µm)".into(),
             Quantity::Indicator(i) => format!("indicator {}", super::indicator::name(*i)),
+            Quantity::OnStage(s, _) => format!("{} on stage {s}", self.base().label()),
         }
     }
 
@@ -90,7 +97,36 @@ impl Quantity {
     /// grows linearly in cycles within a block) rather than a response (that of the last
     /// update until the next).
     pub(crate) fn is_wear(&self) -> bool {
-        matches!(self, Quantity::MaxWearPinion | Quantity::MaxWearGear)
+        matches!(self.base(), Quantity::MaxWearPinion | Quantity::MaxWearGear)
+    }
+
+    /// The quantity on stage `stage` (1-based) of a gear train: itself on stage 1; None
+    /// for a condition indicator (the housing's record, not a stage's) or a stage beyond
+    /// `config::train::MAX_STAGES`.
+    pub fn on_stage(self, stage: usize) -> Option<Quantity> {
+        if stage == 1 {
+            return Some(self);
+        }
+        let i = ALL.iter().position(|q| *q == self)?;
+        (2..=crate::config::train::MAX_STAGES)
+            .contains(&stage)
+            .then_some(Quantity::OnStage(stage as u8, i as u8))
+    }
+
+    /// The stage the quantity is read on (1-based; 1 but for [`Quantity::OnStage`]).
+    pub fn stage(&self) -> usize {
+        match self {
+            Quantity::OnStage(s, _) => *s as usize,
+            _ => 1,
+        }
+    }
+
+    /// The quantity itself, whatever stage it is read on.
+    pub fn base(&self) -> Quantity {
+        match self {
+            Quantity::OnStage(_, i) => ALL[(*i as usize).min(ALL.len() - 1)],
+            q => *q,
+        }
     }
 
     /// Value of a response quantity in display units (the updates CSV's conversions:
@@ -98,6 +134,7 @@ impl Quantity {
     /// profile, and for the indicators, which come from a record (`super::indicator`).
     pub(crate) fn of_summary(&self, s: &ResponseSummary) -> f64 {
         match self {
+            Quantity::OnStage(..) => self.base().of_summary(s),
             Quantity::MaxWearPinion | Quantity::MaxWearGear | Quantity::Indicator(_) => f64::NAN,
             Quantity::VelocityRms => s.velocity_y_pinion_rms_m_per_s * 1e3,
             Quantity::MeshHarmonic(h) => {
@@ -108,6 +145,20 @@ impl Quantity {
             Quantity::DteHarmonic1 => s.dte_harmonic1_m * 1e6,
         }
     }
+}
+
+/// The name of quantity `ALL[i]` on stage `stage` (2..=MAX_STAGES): its name with a
+/// `_stage<N>` suffix (as the dataset's per-stage columns, `cycles_stage2`), from a table
+/// made once.
+fn staged_name(stage: u8, i: u8) -> &'static str {
+    static NAMES: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        (0..=crate::config::train::MAX_STAGES)
+            .flat_map(|s| ALL.iter().map(move |q| format!("{}_stage{s}", q.name())))
+            .collect()
+    });
+    let s = (stage as usize).min(crate::config::train::MAX_STAGES);
+    &names[s * ALL.len() + (i as usize).min(ALL.len() - 1)]
 }
 
 /// The indicators among `qs`.
@@ -135,6 +186,19 @@ mod tests {
             assert!(ALL[..i].iter().all(|p| p.name() != q.name()));
         }
         assert_eq!(Quantity::parse("velocity"), None);
+    }
+
+    #[test]
+    fn a_quantity_on_a_later_stage_keeps_its_base_and_names_its_stage() {
+        for q in ALL {
+            assert_eq!(q.on_stage(1), Some(q));
+            let s = q.on_stage(3).unwrap();
+            assert_eq!((s.stage(), s.base()), (3, q));
+            assert_eq!(s.name(), format!("{}_stage3", q.name()));
+            assert_eq!(s.is_wear(), q.is_wear());
+        }
+        assert_eq!(Quantity::Indicator(0).on_stage(2), None);
+        assert_eq!(Quantity::DteMax.on_stage(17), None);
     }
 
     #[test]

@@ -117,8 +117,13 @@ fn threshold_cut(t: &Trajectory, block_cycles: f64) -> bool {
 }
 
 /// Continue a run to `total` cycles (run_wear resumes from the records it is given); a run
-/// under a spectrum is made again to `total`.
+/// under a spectrum is made again to `total`; a gear train's resumes as a pair's
+/// (`super::train_forward`).
 fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelError> {
+    if !case.stage.is_empty() {
+        let run = super::train_forward::extend_train(case, (&t.records, &t.later_stages), total)?;
+        return Ok(Trajectory::of_train(run, t.coefficient_m2_per_n, total));
+    }
     if case.load_spectrum.is_some() {
         return run_duty_trajectory(case, None, None, total);
     }
@@ -143,6 +148,8 @@ fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelEr
         records,
         failure: run_failure(result),
         indicators: Default::default(),
+        later_stages: Vec::new(),
+        cycle_factors: Vec::new(),
     })
 }
 
@@ -206,6 +213,15 @@ fn chain(
         k: ks[..runs.len()].to_vec(),
         runs,
     })
+}
+
+/// The stage (1-based, of `stages`) whose maximum pinion wear `value` gives deepest (the
+/// first of equals); 1 when none has a value.
+pub(crate) fn deepest_stage(stages: usize, value: &dyn Fn(Quantity) -> Option<f64>) -> usize {
+    (1..=stages)
+        .filter_map(|s| Some((s, value(Quantity::MaxWearPinion.on_stage(s)?)?)))
+        .fold((1, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a })
+        .0
 }
 
 /// The first cycles in [lo, hi] where `wear` (non-decreasing, below `limit_um` at lo and
@@ -384,6 +400,33 @@ impl Surrogate {
         })
     }
 
+    /// Number of meshes the reference runs hold (1 for a single pair).
+    pub fn stage_count(&self) -> usize {
+        self.chains
+            .iter()
+            .find_map(|c| c.runs.first())
+            .map_or(1, Trajectory::stage_count)
+    }
+
+    /// The deepest maximum pinion wear of any stage at `cycles` for `theta`, um (the
+    /// pair's maximum pinion wear for a single pair); None beyond the reference runs.
+    pub fn max_pinion_wear(&self, theta: &Theta, cycles: f64) -> Option<f64> {
+        let stages = self.stage_count();
+        if stages == 1 {
+            return self.value(Quantity::MaxWearPinion, theta, cycles);
+        }
+        (1..=stages).try_fold(0.0_f64, |m, s| {
+            let q = Quantity::MaxWearPinion.on_stage(s)?;
+            Some(m.max(self.value(q, theta, cycles)?))
+        })
+    }
+
+    /// The stage (1-based) whose maximum pinion wear is deepest at `cycles` for `theta`
+    /// (at the life, the stage that reached the limit first); 1 for a single pair.
+    pub fn deepest_stage(&self, theta: &Theta, cycles: f64) -> usize {
+        deepest_stage(self.stage_count(), &|q| self.value(q, theta, cycles))
+    }
+
     /// Cycles up to which the surrogate is known for `theta`.
     pub(crate) fn valid_until(&self, theta: &Theta) -> f64 {
         if let Some(f) = &self.future {
@@ -415,7 +458,7 @@ impl Surrogate {
             return mapped(&one);
         }
         let crossings: Vec<Crossing> = w.iter().map(mapped).collect();
-        let wear = |n: f64| self.value(Quantity::MaxWearPinion, theta, n);
+        let wear = |n: f64| self.max_pinion_wear(theta, n);
         let reached: Vec<f64> = crossings
             .iter()
             .filter_map(|c| match c {

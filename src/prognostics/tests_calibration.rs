@@ -332,6 +332,7 @@ fn point_mass_posterior_gives_the_deterministic_life() {
         grid_points: 11,
         seed: 1,
         samples: rows.len(),
+        stages: 1,
     };
     let sur = Surrogate::build(&f.case, &span, set.cycles, 2, &|| {}).unwrap();
     let source = SampleSource::Posterior {
@@ -373,6 +374,7 @@ fn monte_carlo_percentiles_converge_at_one_over_root_n() {
         grid_points: 2,
         seed: 0,
         samples: n,
+        stages: 1,
     };
     let source = SampleSource::Prior(f.prior.clone());
     let fw = Forward::Surrogate(&f.surrogate);

@@ -179,8 +179,12 @@ impl Duty {
             bins: points.len() as f64,
             stop_m: f64::INFINITY,
         };
+        // A train's blocks follow its fastest mesh per input cycle.
+        let train = super::train_prognostics::train_wear_per_input_cycle_m(&c);
         for (share, b) in &points {
-            if let Some(p) = &pair {
+            if let Some(r) = train {
+                d.rate_per_k += share * DYNAMIC_WEAR_FACTOR * r;
+            } else if let Some(p) = &pair {
                 d.rate_per_k += share * DYNAMIC_WEAR_FACTOR * nominal_wear_per_cycle_m(b, p);
             }
             d.stop_m = d.stop_m.min(stop_depth_m(b));

@@ -36,6 +36,7 @@ pub mod prognostics;
 pub mod signals;
 pub mod sweep;
 pub mod teeth;
+pub mod train_prognostics;
 
 pub use case_jobs::{
     estimate, max_checkpoint_bytes, Job, BYTES_PER_SAMPLE, OUTPUT_BYTES_PER_PROFILE_POINT,

@@ -27,6 +27,9 @@
 //!   check run, and makes its true runs (at the prior's largest k: the most updates).
 //!   The fit check reads every sample at every observation once and solves two band
 //!   edges there ([`T_FIT_MEMBER`] per sample and observation).
+//! - **A gear train** (`[[stage]]`): its runs' updates follow the fastest mesh per input
+//!   cycle and keep every mesh's record ([`super::train_prognostics`]); a prediction's
+//!   fans are 6 per stage.
 //! - **Prediction**: per sample 6 fan quantities x grid points (16 bytes and one surrogate
 //!   read each), kept for the fans, sorted per grid point; a shard also writes them as
 //!   JSON ([`JSON_BYTES_PER_VALUE`]). The exact forward model runs one wear study per
@@ -73,7 +76,9 @@ const FANS: f64 = 6.0;
 fn record_numbers(case: &Case) -> (f64, f64) {
     let s_dyn = dynamic_steps_per_period(&case.numerics);
     let g = case.wear.points_per_profile as f64;
-    let kept = 4.0 * g + 2.0 * s_dyn + 48.0;
+    // A train keeps every mesh's record (`super::train_prognostics`).
+    let kept = super::train_prognostics::train_record_numbers(case, g, s_dyn)
+        .unwrap_or(4.0 * g + 2.0 * s_dyn + 48.0);
     (kept, kept + 2.0 * g)
 }
 
@@ -235,7 +240,7 @@ pub(crate) fn estimate_prediction(
 ) -> Estimate {
     let span = &span.into();
     let n = j.samples_in_shard as f64;
-    let values = n * FANS * j.grid_points as f64;
+    let values = n * FANS * case.stage.len().max(1) as f64 * j.grid_points as f64;
     // Under a load spectrum every update of a wear run evaluates every bin of the duty
     // in force (the case's before the switch, the future one after it): counted per
     // phase of each run ([`super::chains`]).
