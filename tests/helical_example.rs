@@ -7,7 +7,6 @@ mod common;
 
 use gearwear::config::load_case;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn example() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/helical_pair.toml")
@@ -39,24 +38,18 @@ fn the_commands_of_its_header_run_and_the_crowned_load_is_centred() {
     let dir = tempfile::tempdir().unwrap();
     let mut ran = Vec::new();
     for line in text.lines().filter_map(|l| l.strip_prefix("#   gearwear ")) {
+        // The example from the repository, each output folder in `dir`.
         let args: Vec<String> = line
             .split_whitespace()
             .map(|w| match w {
                 "examples/helical_pair.toml" => example().to_string_lossy().into_owned(),
+                _ if w.starts_with("helical_") => dir.path().join(w).to_string_lossy().into_owned(),
                 _ => w.to_owned(),
             })
             .collect();
-        let o = Command::new(env!("CARGO_BIN_EXE_gearwear"))
-            .arg("-q")
-            .args(&args)
-            .current_dir(dir.path())
-            .output()
-            .unwrap();
-        assert!(
-            o.status.success(),
-            "{line}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
+        let mut a = vec!["-q"];
+        a.extend(args.iter().map(String::as_str));
+        common::ok(&a);
         ran.push(args[0].clone());
     }
     assert_eq!(ran, ["stiffness", "dynamics", "wear", "sweep"]);
