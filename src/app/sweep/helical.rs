@@ -32,7 +32,7 @@ pub fn helical_table(base: &Case, plan: &SweepPlan) -> bool {
 pub fn refusal(case: &Case, run: SweepRun) -> Option<String> {
     if case.gear.helix_angle_deg != 0.0 && run == SweepRun::Wear && case.load_spectrum.is_some() {
         return Some(format!(
-            "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or sweep `--run dynamics`",
+            "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or sweep the dynamics alone (a dynamics sweep takes the case)",
             crate::format::shown(case.gear.helix_angle_deg)
         ));
     }
