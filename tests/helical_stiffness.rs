@@ -122,20 +122,16 @@ fn studies_on_the_planar_dynamics_refuse_a_helical_case() {
     let set = ["--set", "gear.helix_angle_deg=12.5"];
     // `gearwear dynamics` has the planar helical model (tests/helical_dynamics.rs),
     // `gearwear wear` its wear per slice (tests/helical_wear.rs), `gearwear signals` its
-    // steady record (tests/helical_signals.rs).
+    // steady record (tests/helical_signals.rs), `gearwear sweep` both
+    // (tests/helical_sweep.rs).
     for cmd in studies_on_the_dynamic_model()
         .into_iter()
-        .filter(|c| !["dynamics", "wear", "signals"].contains(&c[0]))
+        .filter(|c| !["dynamics", "wear", "signals", "sweep"].contains(&c[0]))
     {
         let mut args = cmd.clone();
         args.extend(set);
         rejected(&args, &needles);
     }
-    // A sweep that varies the helix angle is refused before any case runs.
-    rejected(
-        &["sweep", "--vary", "gear.helix_angle_deg=0,12.5"],
-        &needles,
-    );
 }
 
 #[test]

@@ -293,16 +293,19 @@ fn what_the_helical_wear_lacks_is_refused_naming_the_key() {
         &with(&["--set", "wear.worn_geometry=\"worn\""]),
         &["wear.worn_geometry"],
     );
-    // Studies not built for a helical pair refuse it, naming the key.
+    // A sweep of the helical pair (tests/helical_sweep.rs) refuses what its model does
+    // not take, before any case runs, naming the key.
     rejected(
         &[
             "sweep",
             "--set",
             "gear.helix_angle_deg=15",
+            "--set",
+            "wear.worn_geometry=\"worn\"",
             "--vary",
             "operating.input_speed_hz=20,30",
         ],
-        &["gear.helix_angle_deg"],
+        &["gear.helix_angle_deg", "wear.worn_geometry"],
     );
     // A load spectrum: one message naming both keys (not one per bin saying that
     // `gearwear wear` takes helical pairs).

@@ -157,10 +157,7 @@ pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, 
 /// (`Model::helical_from_case`) where the case has a helix angle: for the studies that
 /// take a helical pair through the same solver (`dynamics`, `signals`, `wear`).
 pub fn build_dynamics_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
-    if case.gear.helix_angle_deg == 0.0 {
-        return build_train_model(case, observer);
-    }
-    let m = Model::helical_from_case(case)?;
+    let m = Model::dynamics_from_case(case)?;
     for w in &m.warnings {
         observer.warning(w);
     }

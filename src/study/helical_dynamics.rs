@@ -120,6 +120,18 @@ fn lead_gaps(
 }
 
 impl Model {
+    /// The model of the studies that take a helical pair through the spur pair's solver
+    /// (`gearwear dynamics`, `signals`, `wear`, `sweep`, `run`): the planar model
+    /// ([`Model::helical_from_case`]) where the case has a helix angle, else
+    /// [`Model::from_case`] itself (so a spur case is built exactly as before).
+    pub fn dynamics_from_case(case: &Case) -> Result<Model, ModelError> {
+        if case.gear.helix_angle_deg == 0.0 {
+            Model::from_case(case)
+        } else {
+            Model::helical_from_case(case)
+        }
+    }
+
     /// The planar model of a helical case (module docs). `contact.load_sharing` = "auto"
     /// becomes "stiffness" (the lines share the load by their compressions).
     pub fn helical_from_case(case: &Case) -> Result<Model, ModelError> {

@@ -5,6 +5,7 @@
 //! one row of [`CaseResults`]), [`case_record`] (the record it leaves on disk so a rerun
 //! can skip it), [`continuation`] (a one-axis sweep run in order, each point warm-started
 //! from the previous one), [`mesh_row`] (the columns of each mesh of a gear train),
+//! [`helical_row`] (the columns a helical pair adds),
 //! [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
 //! where a mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
 //! run in parallel or along branches, in memory or to a folder with its case records,
@@ -13,6 +14,7 @@
 pub mod case_record;
 pub mod case_run;
 pub mod continuation;
+pub mod helical_row;
 pub mod mesh_row;
 pub mod plan;
 pub mod resonance;
@@ -24,6 +26,7 @@ pub use case_run::{
     run_case, wear_results, CaseError, CaseOutcome, CaseResults, DynamicsRow, SweepRun, WearEnd,
 };
 pub use continuation::{Branch, Continuation, ContinuationPlan};
+pub use helical_row::HelicalRow;
 pub use mesh_row::MeshRow;
 pub use plan::{parse_axis, parse_vary, Axis, AxisValue, Shard, SweepPlan};
 pub use resonance::{crossings, Crossing};

@@ -21,9 +21,10 @@ use std::sync::Mutex;
 
 /// Run the branches of `c` (`planned` by case id), writing a record per computed point
 /// into `dir` if given; points finished in an earlier run from the same start state are
-/// skipped. `on_point` after every point, `keep_going` before each.
+/// skipped; each row with a helical pair's columns when `helical` (the table has them).
+/// `on_point` after every point, `keep_going` before each.
 pub fn run_branches(
-    dir: Option<(&Path, &StateFolder)>,
+    (dir, helical): (Option<(&Path, &StateFolder)>, bool),
     c: &ContinuationPlan,
     planned: &[Planned],
     keys: &[String],
@@ -71,9 +72,10 @@ pub fn run_branches(
             PointRun::Failed { error, .. } => Err(error),
             PointRun::Computed {
                 start,
-                outcome,
+                mut outcome,
                 end_state,
             } => {
+                outcome.results = outcome.results.with_helical_columns(helical);
                 let link = ContinuationLink::new(b, start.as_deref(), &end_state);
                 match dir {
                     Some((_, cases)) => write_record(cases, p, keys, &outcome.results, Some(link))

@@ -82,14 +82,14 @@ pub fn resolve(
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
-    // A helical or planetary case has no dynamic model yet (`study::Model::from_case`
-    // refuses it): refused here, before any case runs, rather than as failed cases.
+    // A planetary case has no sweep model yet, a helical pair's planar model refuses what
+    // it cannot take (`super::helical::refusal`): refused here, before any case runs,
+    // rather than as failed cases.
     let helical: Vec<Problem> = planned
         .iter()
         .filter(|p| p.case.gear.helix_angle_deg != 0.0 || p.case.planetary.is_some())
         .filter_map(|p| {
-            let e = Model::from_case(&p.case).err()?;
-            let first = e.0.into_iter().next()?;
+            let first = super::helical::refusal(&p.case, run)?;
             Some(Problem::new(first).in_context(&format!(
                 "case {} ({}): ",
                 p.id,
@@ -160,7 +160,7 @@ pub fn check_models(plan: &SweepPlan, pending: &[&Planned]) -> Result<(), JobErr
     let problems: Vec<Problem> = pending
         .par_iter()
         .filter_map(|p| {
-            Model::from_case(&p.case)
+            Model::dynamics_from_case(&p.case)
                 .err()
                 .map(|e| Problem::new(format!("case {} ({}): {e}", p.id, describe(plan, p))))
         })

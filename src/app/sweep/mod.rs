@@ -11,6 +11,7 @@
 
 mod branches;
 mod cases;
+mod helical;
 mod merge;
 mod records;
 
@@ -205,6 +206,7 @@ impl SweepJob {
         let task = Task::items("sweep", "sweep cases", pending.len());
         observer.start(&task);
         let count = std::sync::atomic::AtomicUsize::new(0);
+        let helical = helical::helical_table(&self.base, &self.plan);
         type Ran1 = (usize, Result<(Vec<String>, Option<SweepRow>), CaseError>);
         let ran: Vec<Ran1> = pending
             .par_iter()
@@ -213,7 +215,8 @@ impl SweepJob {
                     let e = CaseError::Solve(anyhow::anyhow!("stopped before it ran"));
                     return (p.id, Err(e));
                 }
-                let r = run_sweep_case(&p.case, self.run).and_then(|o| {
+                let r = run_sweep_case(&p.case, self.run).and_then(|mut o| {
+                    o.results = o.results.with_helical_columns(helical);
                     let row = match cases {
                         Some(c) => row_of(&write_record(c, p, keys, &o.results, None)?),
                         None => Some(SweepRow {
@@ -381,9 +384,11 @@ impl Job for SweepJob {
                 observer.advance(&task, n as f64, "");
             };
             let folders = dir.zip(cases.as_ref());
-            let r = branches::run_branches(folders, c, &planned, &keys, &on_point, &|| {
-                !observer.cancelled()
-            });
+            let helical = helical::helical_table(&self.base, plan);
+            let r =
+                branches::run_branches((folders, helical), c, &planned, &keys, &on_point, &|| {
+                    !observer.cancelled()
+                });
             observer.finish(&task);
             r
         } else {
@@ -424,7 +429,7 @@ impl SweepJob {
         observer: &dyn Observer,
     ) -> (Artifacts, Option<SpeedMarks>, RunMetadata) {
         let plan = &self.plan;
-        let base_model = Model::from_case(&self.base);
+        let base_model = Model::dynamics_from_case(&self.base);
         let speed: Option<SpeedMarks> = match &base_model {
             Ok(m) => speed_marks(m, plan),
             Err(e) => {
@@ -468,7 +473,9 @@ impl SweepJob {
         let computed_now = ran.outcomes.len();
         let failed = failures(ran.outcomes, planned, continuation, observer);
         let computed = computed_now - failed.len();
-        let mut table = SweepTable::new(plan.keys(), self.run).with_stages(self.base.stage.len());
+        let mut table = SweepTable::new(plan.keys(), self.run)
+            .with_stages(self.base.stage.len())
+            .with_helical(helical::helical_table(&self.base, plan));
         table.rows = ran.rows;
         table.rows.sort_by_key(|r| r.case_id);
         let stem = self.shard.stem();

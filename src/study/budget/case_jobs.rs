@@ -244,7 +244,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         p.s_dyn,
         p.s,
     ));
-    if matches!(job, Job::Wear { .. }) {
+    if matches!(job, Job::Wear { .. } | Job::SweepCase(SweepRun::Wear)) {
         terms.extend(super::helical::budget_term(
             case,
             (c.work.dynamic_modes * c.u_d, c.work.quasi_modes * c.u_q),

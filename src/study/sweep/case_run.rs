@@ -1,6 +1,7 @@
 //! One case of a sweep: build the model, run it, reduce it to the headline numbers of a
 //! sweep row (the record it leaves on disk is [`super::case_record`]).
 
+use super::helical_row::{helical_columns, HelicalRow};
 use super::mesh_row::{
     mesh_columns, mesh_wear_columns, MeshRow, MeshWear, TrainWearEnd, MESH_COLUMNS,
 };
@@ -73,14 +74,24 @@ impl SweepRun {
     /// The run and the number of train meshes (0: a single pair) whose result columns
     /// are `columns` ([`CaseResults::columns`]), if any.
     pub fn of_columns(columns: &[String]) -> Option<(Self, usize)> {
+        Self::layout_of(columns).map(|(r, n, _)| (r, n))
+    }
+
+    /// As [`SweepRun::of_columns`], and whether the columns end with a helical pair's
+    /// (`super::helical_row`; a single pair's only).
+    pub fn layout_of(columns: &[String]) -> Option<(Self, usize, bool)> {
         // A mesh adds at least MESH_COLUMNS' five columns, so no more meshes can fit.
         let most = columns.len() / MESH_COLUMNS.len();
         [SweepRun::Wear, SweepRun::Dynamics]
             .into_iter()
             .find_map(|r| {
+                let helical = [r.columns_for(0), helical_columns(r == SweepRun::Wear)].concat();
+                if helical == columns {
+                    return Some((r, 0, true));
+                }
                 (0..=most)
                     .find(|n| r.columns_for(*n) == columns)
-                    .map(|n| (r, n))
+                    .map(|n| (r, n, false))
             })
     }
 
@@ -215,6 +226,9 @@ pub struct CaseResults {
     pub meshes: Vec<MeshRow>,
     /// Each mesh's wear at the end of the runs (a `wear` sweep of a gear train).
     pub train_wear: Option<TrainWearEnd>,
+    /// What a helical pair adds (`super::helical_row`); also the empty columns of a spur
+    /// case in a table that has them.
+    pub helical: Option<HelicalRow>,
 }
 
 impl CaseResults {
@@ -227,9 +241,23 @@ impl CaseResults {
         }
     }
 
-    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's.
+    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's, then
+    /// a helical pair's.
     pub fn columns(&self) -> Vec<String> {
-        self.run().columns_for(self.meshes.len())
+        let mut c = self.run().columns_for(self.meshes.len());
+        if self.helical.is_some() {
+            c.extend(helical_columns(self.wear.is_some()));
+        }
+        c
+    }
+
+    /// The same results with a helical pair's columns when `helical` (empty for a spur
+    /// case, [`HelicalRow::empty`]): a row of a table that has them.
+    pub fn with_helical_columns(mut self, helical: bool) -> Self {
+        if helical && self.helical.is_none() {
+            self.helical = Some(HelicalRow::empty(self.wear.is_some()));
+        }
+        self
     }
 
     /// The numbers in [`CaseResults::columns`] order.
@@ -244,15 +272,26 @@ impl CaseResults {
         if let Some(t) = &self.train_wear {
             v.extend(t.values());
         }
+        if let Some(h) = &self.helical {
+            v.extend(h.values());
+        }
         v
     }
 
     /// From numbers in the column order of `run` with `stages` train meshes (0: a single
-    /// pair); `None` when their count is not it.
+    /// pair; a single pair's numbers with [`helical_columns`]' more are a helical pair's
+    /// row); `None` when their count is not it.
     pub fn from_values(run: SweepRun, stages: usize, v: &[f64]) -> Option<Self> {
         let own = run.columns().len();
         let meshes_end = own + stages * MESH_COLUMNS.len();
-        if v.len() != run.columns_for(stages).len() {
+        let plain = run.columns_for(stages).len();
+        let wear = run == SweepRun::Wear;
+        if stages == 0 && v.len() == plain + helical_columns(wear).len() {
+            let mut r = Self::from_values(run, 0, &v[..plain])?;
+            r.helical = Some(HelicalRow::from_values(wear, &v[plain..])?);
+            return Some(r);
+        }
+        if v.len() != plain {
             return None;
         }
         let train_wear = match (run, stages) {
@@ -272,6 +311,7 @@ impl CaseResults {
                 .map(MeshRow::from_values)
                 .collect(),
             train_wear,
+            helical: None,
         })
     }
 
@@ -322,7 +362,7 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     match run {
         SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
-            let model = Model::from_case(case).map_err(CaseError::Model)?;
+            let model = Model::dynamics_from_case(case).map_err(CaseError::Model)?;
             if let Some(train) = &model.train {
                 let results = run_train_wear_case(&model, train)?;
                 return Ok(CaseOutcome {
@@ -336,12 +376,43 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             for r in [&d, &q] {
                 numerical_stop(r.mode, r.stopped.as_ref())?;
             }
+            let mut results = wear_results(&d, &q);
+            results.helical = helical_wear_row(&model, &d, &q)?;
             Ok(CaseOutcome {
-                results: wear_results(&d, &q),
+                results,
                 warnings: model.warnings,
             })
         }
     }
+}
+
+/// The helical columns of a wear row (None for a spur pair): the new teeth's as the
+/// dynamic run's first update has them (its mean mesh force), with the dynamic face load
+/// of one more steady state of the new teeth when the pair has lead gaps (the wear records
+/// keep no slice loads; the same solve as `gearwear dynamics`), then the wear maps.
+fn helical_wear_row(
+    model: &Model,
+    d: &WearRun,
+    q: &WearRun,
+) -> Result<Option<HelicalRow>, CaseError> {
+    let Some(h) = &model.helical else {
+        return Ok(None);
+    };
+    let mean_force = d
+        .records
+        .first()
+        .map_or(f64::NAN, |r| r.summary.mesh_force_mean_n);
+    let face = match h.lead {
+        Some(_) => {
+            let r = model
+                .dynamic(&WearState::new(model.grid.len()), &ExternalError::none())
+                .map_err(|e| CaseError::Solve(e.into()))?;
+            crate::study::face_load_dynamic::DynamicFaceLoad::of(model, &r, &ExternalError::none())
+        }
+        None => None,
+    };
+    Ok(HelicalRow::of_dynamics(model, mean_force, face.as_ref())
+        .map(|r| r.with_wear_maps(model, d, q)))
 }
 
 /// A run the solver gave up on is a failed case; one that left the model's domain is a
@@ -407,6 +478,7 @@ fn run_train_wear_case(model: &Model, train: &TrainModel) -> Result<CaseResults,
                 .collect(),
             limiting_stage: [limiting(&d), limiting(&q)],
         }),
+        helical: None,
     })
 }
 
@@ -419,7 +491,7 @@ pub fn run_dynamics_from(
     case: &Case,
     start: Option<&[f64]>,
 ) -> Result<(CaseOutcome, Vec<f64>), CaseError> {
-    let model = Model::from_case(case).map_err(CaseError::Model)?;
+    let model = Model::dynamics_from_case(case).map_err(CaseError::Model)?;
     let wear = WearState::new(model.grid.len());
     let r = model
         .dynamic_from(&wear, &ExternalError::none(), start)
@@ -437,6 +509,7 @@ pub fn run_dynamics_from(
                 wear: None,
                 meshes: s.iter().zip(f).map(|(s, f)| MeshRow::of(s, f)).collect(),
                 train_wear: None,
+                helical: None,
             }
         }
         None => CaseResults {
@@ -444,6 +517,7 @@ pub fn run_dynamics_from(
             wear: None,
             meshes: Vec::new(),
             train_wear: None,
+            helical: HelicalRow::of_response(&model, &r),
         },
     };
     let outcome = CaseOutcome {
@@ -466,6 +540,7 @@ pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
         wear: Some([WearEnd::of(d), WearEnd::of(q)]),
         meshes: Vec::new(),
         train_wear: None,
+        helical: None,
     }
 }
 
@@ -485,6 +560,7 @@ mod tests {
             wear: None,
             meshes: Vec::new(),
             train_wear: None,
+            helical: None,
         };
         let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());

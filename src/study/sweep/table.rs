@@ -57,6 +57,8 @@ pub struct SweepTable {
     /// The number of meshes of a gear train (one column set each after the run's
     /// columns, `super::mesh_row`); 0 for a single pair.
     pub stages: usize,
+    /// Whether the rows end with a helical pair's columns (`super::helical_row`).
+    pub helical: bool,
     /// The rows, sorted by case id.
     pub rows: Vec<SweepRow>,
 }
@@ -68,8 +70,14 @@ impl SweepTable {
             keys,
             run,
             stages: 0,
+            helical: false,
             rows: Vec::new(),
         }
+    }
+
+    /// The same table with a helical pair's columns when `helical`.
+    pub fn with_helical(self, helical: bool) -> Self {
+        Self { helical, ..self }
     }
 
     /// The same table with the columns of `stages` train meshes (0: a single pair).
@@ -77,8 +85,8 @@ impl SweepTable {
         Self { stages, ..self }
     }
 
-    /// Table of case records (which must share keys, run and meshes), sorted by case id;
-    /// records of other columns are left out.
+    /// Table of case records (which must share keys, run, meshes and helical columns),
+    /// sorted by case id; records of other columns are left out.
     pub fn from_records(
         keys: Vec<String>,
         run: SweepRun,
@@ -98,17 +106,27 @@ impl SweepTable {
             })
             .collect();
         rows.sort_by_key(|r| r.case_id);
+        // A helical pair's columns if the first row has them; rows of other columns left out.
+        let helical = rows.first().is_some_and(|r| r.results.helical.is_some());
+        rows.retain(|r| r.results.helical.is_some() == helical);
         Self {
             keys,
             run,
             stages,
+            helical,
             rows,
         }
     }
 
     /// The result columns.
     pub fn columns(&self) -> Vec<String> {
-        self.run.columns_for(self.stages)
+        let mut c = self.run.columns_for(self.stages);
+        if self.helical {
+            c.extend(super::helical_row::helical_columns(
+                self.run == SweepRun::Wear,
+            ));
+        }
+        c
     }
 
     /// Whether the rows have result column `name`.
@@ -165,7 +183,7 @@ impl SweepTable {
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let columns = header[first_result..].to_vec();
-        let Some((run, stages)) = SweepRun::of_columns(&columns) else {
+        let Some((run, stages, helical)) = SweepRun::layout_of(&columns) else {
             return Err(SweepTableError::NotASweepTable(format!(
                 "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}]; a gear train's then have [{}] per stage K)",
                 columns.join(", "),
@@ -174,7 +192,9 @@ impl SweepTable {
                 super::mesh_row::MESH_COLUMNS.map(|c| format!("stageK_{c}")).join(", ")
             )));
         };
-        let mut t = SweepTable::new(header[..at].to_vec(), run).with_stages(stages);
+        let mut t = SweepTable::new(header[..at].to_vec(), run)
+            .with_stages(stages)
+            .with_helical(helical);
         for (line, rec) in r.records().enumerate() {
             let rec = rec?;
             let row = line + 2;
@@ -235,7 +255,7 @@ impl SweepTable {
                     first.keys.join(", ")
                 )));
             }
-            if t.run != first.run || t.stages != first.stages {
+            if t.run != first.run || t.stages != first.stages || t.helical != first.helical {
                 return Err(SweepTableError::MixedSweeps(format!(
                     "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear, or of gear trains of {} and {} stages?)",
                     t.stages, first.stages
@@ -262,6 +282,7 @@ impl SweepTable {
             keys: first.keys.clone(),
             run: first.run,
             stages: first.stages,
+            helical: first.helical,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
     }

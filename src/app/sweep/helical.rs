@@ -1,0 +1,41 @@
+//! A sweep of helical pairs (`gear.helix_angle_deg` > 0): each case is built through the
+//! planar model of `gearwear dynamics` and `gearwear wear` (`Model::dynamics_from_case`),
+//! and the table holds a helical pair's columns (`study::sweep::helical_row`) when the
+//! base case is helical or an axis gives the helix angle a value other than 0, decided
+//! from the plan so that every shard writes the same columns.
+
+use crate::config::load::case_with;
+use crate::config::Case;
+use crate::study::sweep::helical_row::HELIX_KEY;
+use crate::study::sweep::{SweepPlan, SweepRun};
+use crate::study::Model;
+
+/// Whether the sweep's table holds a helical pair's columns (module docs). A value that
+/// does not load is named by `cases::check_values`, before this is asked.
+pub fn helical_table(base: &Case, plan: &SweepPlan) -> bool {
+    base.gear.helix_angle_deg != 0.0
+        || plan
+            .axes
+            .iter()
+            .filter(|a| a.key == HELIX_KEY)
+            .flat_map(|a| &a.values)
+            .any(|v| {
+                case_with(base, &[(HELIX_KEY, v.value.clone())])
+                    .is_ok_and(|c| c.gear.helix_angle_deg != 0.0)
+            })
+}
+
+/// The first reason a helical or planetary case of a sweep running `run` cannot be run,
+/// if any: what its model refuses (a planetary set has no sweep model yet; a helical
+/// pair's planar model refuses per-tooth errors, profile modifications, faults, ...), and
+/// a helical pair's wear under a `[load_spectrum]` (as `gearwear wear` refuses it).
+pub fn refusal(case: &Case, run: SweepRun) -> Option<String> {
+    if case.gear.helix_angle_deg != 0.0 && run == SweepRun::Wear && case.load_spectrum.is_some() {
+        return Some(format!(
+            "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or sweep the dynamics alone (a dynamics sweep takes the case)",
+            crate::format::shown(case.gear.helix_angle_deg)
+        ));
+    }
+    let e = Model::dynamics_from_case(case).err()?;
+    e.0.into_iter().next()
+}
