@@ -54,6 +54,7 @@ pub mod predict_future;
 pub mod predict_merge;
 pub mod publish;
 pub mod run;
+pub mod run_planetary;
 pub mod run_train;
 pub mod settings;
 pub mod signals;
