@@ -82,11 +82,12 @@ pub fn resolve(
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
-    // A helical or planetary case has no dynamic model yet (`study::Model::from_case`
-    // refuses it): refused here, before any case runs, rather than as failed cases.
+    // A helical case has no dynamic model yet (`study::Model::from_case` refuses it):
+    // refused here, before any case runs, rather than as failed cases. A planetary set's
+    // is its own (`super::planetary`).
     let helical: Vec<Problem> = planned
         .iter()
-        .filter(|p| p.case.gear.helix_angle_deg != 0.0 || p.case.planetary.is_some())
+        .filter(|p| p.case.gear.helix_angle_deg != 0.0 && p.case.planetary.is_none())
         .filter_map(|p| {
             let e = Model::from_case(&p.case).err()?;
             let first = e.0.into_iter().next()?;
@@ -104,6 +105,7 @@ pub fn resolve(
     // Every case of a gear train has the base's stages (its row's columns are per mesh).
     // Each case against the budget (the number of cases is the user's explicit choice).
     check_stage_counts(base, plan, &planned)?;
+    super::planetary::check_planetary(base, plan, &planned, run)?;
     let over: Vec<Problem> = planned
         .iter()
         .filter_map(|p| {
@@ -160,8 +162,7 @@ pub fn check_models(plan: &SweepPlan, pending: &[&Planned]) -> Result<(), JobErr
     let problems: Vec<Problem> = pending
         .par_iter()
         .filter_map(|p| {
-            Model::from_case(&p.case)
-                .err()
+            super::planetary::model_error(&p.case)
                 .map(|e| Problem::new(format!("case {} ({}): {e}", p.id, describe(plan, p))))
         })
         .collect();

@@ -12,6 +12,7 @@
 mod branches;
 mod cases;
 mod merge;
+mod planetary;
 mod records;
 
 pub use merge::SweepMergeJob;
@@ -126,6 +127,7 @@ impl SweepJob {
         let Some(c) = self.continuation else {
             return Ok(None);
         };
+        planetary::refuse_continuation(&self.base)?;
         if self.shard != Shard::ALL {
             return Err(Problem::given(
                 Arg::Shard,
@@ -427,6 +429,9 @@ impl SweepJob {
         let base_model = Model::from_case(&self.base);
         let speed: Option<SpeedMarks> = match &base_model {
             Ok(m) => speed_marks(m, plan),
+            // A planetary set has no resonance markers yet (its modes are the stiffness
+            // study's): no warning for it.
+            Err(_) if self.base.planetary.is_some() => None,
             Err(e) => {
                 observer.warning(&format!(
                     "no resonance markers: the base case has no model: {e}"
@@ -468,7 +473,9 @@ impl SweepJob {
         let computed_now = ran.outcomes.len();
         let failed = failures(ran.outcomes, planned, continuation, observer);
         let computed = computed_now - failed.len();
-        let mut table = SweepTable::new(plan.keys(), self.run).with_stages(self.base.stage.len());
+        let mut table = SweepTable::new(plan.keys(), self.run)
+            .with_stages(self.base.stage.len())
+            .with_planets(planetary::planets_of(&self.base));
         table.rows = ran.rows;
         table.rows.sort_by_key(|r| r.case_id);
         let stem = self.shard.stem();

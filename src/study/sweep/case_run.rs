@@ -4,6 +4,7 @@
 use super::mesh_row::{
     mesh_columns, mesh_wear_columns, MeshRow, MeshWear, TrainWearEnd, MESH_COLUMNS,
 };
+use super::planetary_row::{planetary_columns, planets_of, PlanetaryRow};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::summary::ResponseSummary;
@@ -84,6 +85,22 @@ impl SweepRun {
             })
     }
 
+    /// The run, train meshes and planets (0: none) whose result columns are `columns`
+    /// ([`CaseResults::columns`]), if any.
+    pub fn shape_of(columns: &[String]) -> Option<(Self, usize, usize)> {
+        match planets_of(columns) {
+            Some(n) => {
+                let head = &columns[..columns.len() - planetary_columns(n).len()];
+                (head == SweepRun::Dynamics.columns().as_slice()).then_some((
+                    SweepRun::Dynamics,
+                    0,
+                    n,
+                ))
+            }
+            None => Self::of_columns(columns).map(|(r, s)| (r, s, 0)),
+        }
+    }
+
     /// The result columns of a case of `stages` train meshes (0: a single pair): this
     /// run's, then each mesh's, then (a wear sweep of a train) each mesh's wear and the
     /// limiting stages ([`super::mesh_row`]).
@@ -146,7 +163,8 @@ impl DynamicsRow {
         ]
     }
 
-    fn from_values(v: &[f64]) -> Self {
+    /// From numbers in the dynamics columns' order (at least nine).
+    pub(crate) fn from_values(v: &[f64]) -> Self {
         Self {
             dte_max_um: v[0],
             velocity_y_pinion_rms_mm_per_s: v[1],
@@ -215,6 +233,9 @@ pub struct CaseResults {
     pub meshes: Vec<MeshRow>,
     /// Each mesh's wear at the end of the runs (a `wear` sweep of a gear train).
     pub train_wear: Option<TrainWearEnd>,
+    /// Each mesh's force and each planet's load sharing (a `dynamics` sweep of a
+    /// planetary set, [`super::planetary_row`]).
+    pub planetary: Option<PlanetaryRow>,
 }
 
 impl CaseResults {
@@ -227,9 +248,25 @@ impl CaseResults {
         }
     }
 
-    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's.
+    /// A planetary set's dynamics row: the pair's columns `dynamics`, then the set's.
+    pub fn with_planetary(dynamics: DynamicsRow, row: PlanetaryRow) -> Self {
+        Self {
+            dynamics,
+            wear: None,
+            meshes: Vec::new(),
+            train_wear: None,
+            planetary: Some(row),
+        }
+    }
+
+    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's (a
+    /// train's) or the set's (a planetary set's).
     pub fn columns(&self) -> Vec<String> {
-        self.run().columns_for(self.meshes.len())
+        let mut c = self.run().columns_for(self.meshes.len());
+        if let Some(p) = &self.planetary {
+            c.extend(planetary_columns(p.planets()));
+        }
+        c
     }
 
     /// The numbers in [`CaseResults::columns`] order.
@@ -244,7 +281,28 @@ impl CaseResults {
         if let Some(t) = &self.train_wear {
             v.extend(t.values());
         }
+        if let Some(p) = &self.planetary {
+            v.extend(p.values());
+        }
         v
+    }
+
+    /// From numbers in the column order of `run` with `stages` train meshes and a set of
+    /// `planets` planets (0: none; only a dynamics row of a single set has them); `None`
+    /// when their count is not it.
+    pub fn from_values_of(run: SweepRun, stages: usize, planets: usize, v: &[f64]) -> Option<Self> {
+        if planets == 0 {
+            return Self::from_values(run, stages, v);
+        }
+        let own = run.columns().len();
+        if run != SweepRun::Dynamics || stages != 0 || v.len() < own {
+            return None;
+        }
+        let row = PlanetaryRow::from_values(planets, &v[own..])?;
+        Some(Self::with_planetary(
+            DynamicsRow::from_values(&v[..own]),
+            row,
+        ))
     }
 
     /// From numbers in the column order of `run` with `stages` train meshes (0: a single
@@ -272,6 +330,7 @@ impl CaseResults {
                 .map(MeshRow::from_values)
                 .collect(),
             train_wear,
+            planetary: None,
         })
     }
 
@@ -319,6 +378,12 @@ pub struct CaseOutcome {
 
 /// Build the model of `case` and run it.
 pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+    if case.planetary.is_some() {
+        return match run {
+            SweepRun::Dynamics => super::planetary_row::run_planetary_dynamics(case),
+            SweepRun::Wear => Err(CaseError::Model(super::planetary_row::wear_refusal())),
+        };
+    }
     match run {
         SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
@@ -398,6 +463,7 @@ fn run_train_wear_case(model: &Model, train: &TrainModel) -> Result<CaseResults,
         dynamics,
         wear: Some([end(&d), end(&q)]),
         meshes,
+        planetary: None,
         train_wear: Some(TrainWearEnd {
             meshes: (0..train.stages.len())
                 .map(|m| MeshWear {
@@ -437,6 +503,7 @@ pub fn run_dynamics_from(
                 wear: None,
                 meshes: s.iter().zip(f).map(|(s, f)| MeshRow::of(s, f)).collect(),
                 train_wear: None,
+                planetary: None,
             }
         }
         None => CaseResults {
@@ -444,6 +511,7 @@ pub fn run_dynamics_from(
             wear: None,
             meshes: Vec::new(),
             train_wear: None,
+            planetary: None,
         },
     };
     let outcome = CaseOutcome {
@@ -466,6 +534,7 @@ pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
         wear: Some([WearEnd::of(d), WearEnd::of(q)]),
         meshes: Vec::new(),
         train_wear: None,
+        planetary: None,
     }
 }
 
@@ -485,6 +554,7 @@ mod tests {
             wear: None,
             meshes: Vec::new(),
             train_wear: None,
+            planetary: None,
         };
         let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
@@ -526,6 +596,7 @@ mod tests {
         // wear columns and the two limiting stages (9 + 8 + 2 x 5 + 2 x 4 + 2 = 37).
         let mut tw = CaseResults {
             wear: w.wear,
+            planetary: None,
             train_wear: Some(TrainWearEnd {
                 meshes: vec![
                     MeshWear::from_values(&[1.0, 2.0, 3.0, 4.0]),

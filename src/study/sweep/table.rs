@@ -57,6 +57,9 @@ pub struct SweepTable {
     /// The number of meshes of a gear train (one column set each after the run's
     /// columns, `super::mesh_row`); 0 for a single pair.
     pub stages: usize,
+    /// The number of planets of a planetary set (its meshes' and planets' columns after
+    /// the run's, `super::planetary_row`); 0 for none.
+    pub planets: usize,
     /// The rows, sorted by case id.
     pub rows: Vec<SweepRow>,
 }
@@ -68,6 +71,7 @@ impl SweepTable {
             keys,
             run,
             stages: 0,
+            planets: 0,
             rows: Vec::new(),
         }
     }
@@ -75,6 +79,11 @@ impl SweepTable {
     /// The same table with the columns of `stages` train meshes (0: a single pair).
     pub fn with_stages(self, stages: usize) -> Self {
         Self { stages, ..self }
+    }
+
+    /// The same table with the columns of a set of `planets` planets (0: none).
+    pub fn with_planets(self, planets: usize) -> Self {
+        Self { planets, ..self }
     }
 
     /// Table of case records (which must share keys, run and meshes), sorted by case id;
@@ -102,13 +111,18 @@ impl SweepTable {
             keys,
             run,
             stages,
+            planets: 0,
             rows,
         }
     }
 
     /// The result columns.
     pub fn columns(&self) -> Vec<String> {
-        self.run.columns_for(self.stages)
+        let mut c = self.run.columns_for(self.stages);
+        if self.planets > 0 {
+            c.extend(super::planetary_row::planetary_columns(self.planets));
+        }
+        c
     }
 
     /// Whether the rows have result column `name`.
@@ -165,7 +179,7 @@ impl SweepTable {
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let columns = header[first_result..].to_vec();
-        let Some((run, stages)) = SweepRun::of_columns(&columns) else {
+        let Some((run, stages, planets)) = SweepRun::shape_of(&columns) else {
             return Err(SweepTableError::NotASweepTable(format!(
                 "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}]; a gear train's then have [{}] per stage K)",
                 columns.join(", "),
@@ -174,7 +188,9 @@ impl SweepTable {
                 super::mesh_row::MESH_COLUMNS.map(|c| format!("stageK_{c}")).join(", ")
             )));
         };
-        let mut t = SweepTable::new(header[..at].to_vec(), run).with_stages(stages);
+        let mut t = SweepTable::new(header[..at].to_vec(), run)
+            .with_stages(stages)
+            .with_planets(planets);
         for (line, rec) in r.records().enumerate() {
             let rec = rec?;
             let row = line + 2;
@@ -209,9 +225,13 @@ impl SweepTable {
             t.rows.push(SweepRow {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
-                results: CaseResults::from_values(run, stages, &results).ok_or_else(|| {
-                    SweepTableError::NotASweepTable(format!("row {row}: not one number per column"))
-                })?,
+                results: CaseResults::from_values_of(run, stages, planets, &results).ok_or_else(
+                    || {
+                        SweepTableError::NotASweepTable(format!(
+                            "row {row}: not one number per column"
+                        ))
+                    },
+                )?,
                 branch,
             });
         }
@@ -235,7 +255,7 @@ impl SweepTable {
                     first.keys.join(", ")
                 )));
             }
-            if t.run != first.run || t.stages != first.stages {
+            if t.run != first.run || t.stages != first.stages || t.planets != first.planets {
                 return Err(SweepTableError::MixedSweeps(format!(
                     "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear, or of gear trains of {} and {} stages?)",
                     t.stages, first.stages
@@ -262,6 +282,7 @@ impl SweepTable {
             keys: first.keys.clone(),
             run: first.run,
             stages: first.stages,
+            planets: first.planets,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
     }
