@@ -2,7 +2,8 @@
 //! `gearwear stiffness` writes the set's geometry, kinematics, mesh stiffness and phases
 //! and the lumped model's natural frequencies; checked against closed forms, the spur
 //! study of the same sun-planet pair and Lin & Parker's (1999) published Table 2. Every
-//! study on the dynamic model but `dynamics` refuses a planetary case, and bad sets exit 2 naming the key.
+//! study on the dynamic model that is not built for a set refuses it (`dynamics`, `signals`,
+//! `wear`, `run` and `sweep --run dynamics` take it), and bad sets exit 2 naming the key.
 
 mod common;
 
@@ -174,18 +175,28 @@ fn stiffness_gives_lin_and_parkers_natural_frequencies_for_a_lumped_set() {
 fn studies_on_the_dynamic_model_refuse_a_planetary_case() {
     let d = tempfile::tempdir().unwrap();
     let case = write_case(d.path(), SET);
-    let needles = ["[planetary]", "not yet built", "gearwear stiffness"];
-    // `gearwear dynamics`, `gearwear signals` and `gearwear wear` take a planetary set
-    // (tests/planetary_dynamics_cli.rs, tests/planetary_signals_cli.rs,
-    // tests/planetary_wear.rs).
-    for cmd in studies_on_the_dynamic_model()
-        .into_iter()
-        .filter(|c| !["dynamics", "signals", "wear"].contains(&c[0]))
-    {
-        let mut args = cmd.clone();
-        args.extend(["--config", case.as_str()]);
-        rejected(&args, &needles);
+    // `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and
+    // `gearwear sweep --run dynamics` take a planetary set (tests/planetary_dynamics_cli.rs,
+    // tests/planetary_signals_cli.rs, tests/planetary_wear.rs, tests/planetary_run.rs,
+    // tests/planetary_sweep.rs); every other study on the dynamic model in
+    // `studies_on_the_dynamic_model` does.
+    let taken = ["dynamics", "signals", "wear", "run", "sweep"];
+    for cmd in studies_on_the_dynamic_model() {
+        assert!(taken.contains(&cmd[0]), "{cmd:?}: is it refused?");
     }
+    // A wear sweep of a set is not built yet: refused before any case runs.
+    rejected(
+        &[
+            "sweep",
+            "--run",
+            "wear",
+            "--vary",
+            "operating.input_speed_hz=20,30",
+            "--config",
+            &case,
+        ],
+        &["[planetary]", "not built yet", "--run dynamics"],
+    );
 }
 
 #[test]

@@ -5,7 +5,7 @@
 //! is refused as the single pair's run refuses it, naming the stage.
 
 mod common;
-use common::{gearwear, kill_when, manifest_files, published, read_csv, rejected, stderr};
+use common::{assert_nested_study, gearwear, kill_when, published, read_csv, rejected, stderr};
 use std::path::{Path, PathBuf};
 
 /// The two-stage reducer (19/31 then 23/47) at 30 Hz and 60 N m on the input shaft,
@@ -55,28 +55,11 @@ fn each_study_of_a_train_run_is_the_bytes_of_its_own_command() {
     let config = case(d.path(), "");
     let run = d.path().join("run");
     run_ok(&args("run", &config, &run, &[]));
-    let run_files = manifest_files(&run);
     for study in ["stiffness", "dynamics", "wear"] {
         let alone = d.path().join(study);
         run_ok(&args(study, &config, &alone, &[]));
-        let files = manifest_files(&alone);
         // Every file of the study (summary, tables, figures), none left out or added.
-        let prefix = format!("{study}/");
-        let nested: Vec<&str> = run_files
-            .iter()
-            .filter_map(|f| f.strip_prefix(&prefix))
-            .collect();
-        assert_eq!(nested, files, "{study}: the run's files differ in name");
-        for f in &files {
-            let (a, b) = (
-                std::fs::read(alone.join(f)).unwrap(),
-                std::fs::read(run.join(study).join(f)).unwrap(),
-            );
-            assert!(
-                a == b,
-                "{study}/{f}: the run's bytes differ from `gearwear {study}`"
-            );
-        }
+        assert_nested_study(&run, &alone, study);
         // The wear job's checkpoints are the run's too (same case, same updates).
         if study == "wear" {
             for m in ["dynamic", "quasi_static"] {

@@ -1,6 +1,7 @@
 //! The run job: the paper's whole section 4 (mesh stiffness, the dynamic and quasi-static
 //! wear studies with checkpoints, the dynamic response at three wear states) with its
-//! report, figures and the CSV behind each. On a gear train, `app::run_train`.
+//! report, figures and the CSV behind each. On a gear train, `app::run_train`; on a
+//! planetary set, `app::run_planetary`.
 
 use super::observer::{keep_going, Observer};
 use super::wear_runs::{run_modes, stops};
@@ -45,6 +46,9 @@ impl Job for RunJob {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         if !self.case.stage.is_empty() {
             return super::run_train::run_of_train(self, figures, observer);
+        }
+        if self.case.planetary.is_some() {
+            return super::run_planetary::run_of_planetary(self, figures, observer);
         }
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {

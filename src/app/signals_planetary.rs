@@ -1,16 +1,73 @@
 //! `gearwear signals` on a planetary set: the steady state of its dynamic model and what a
-//! sensor fixed on the ring hears of it (`study::planetary_signals`).
+//! sensor fixed on the ring hears of it (`study::planetary_signals`). The run job on a
+//! planetary set (`app::run_planetary`) writes the same study through
+//! [`ring_signals_artifacts`].
 
 use super::observer::Observer;
 use super::signals::SignalsJob;
 use super::{publish, JobError};
 use crate::config::planetary::Member;
 use crate::config::signals::LengthUnit;
+use crate::config::Case;
+use crate::dynamics::planetary_steady::PlanetaryResponse;
 use crate::remedy::{Arg, Problem};
+use crate::report::artifacts::Artifacts;
 use crate::report::signals_planetary::planetary_signals_artifacts;
 use crate::store::RunMetadata;
 use crate::study::planetary_dynamics::PlanetaryDynamics;
-use crate::study::planetary_signals::{ring_sensor_record, RingSensor};
+use crate::study::planetary_signals::{ring_sensor_record, RingSensor, RingSensorRecord};
+
+/// Why the ring sensor's record of `case` cannot be made (a turning ring, a ramp or a
+/// torque fluctuation), or `None` when it can.
+pub(super) fn ring_sensor_problem(case: &Case) -> Option<Problem> {
+    if let Some(p) = case.planetary.as_ref().filter(|p| p.fixed != Member::Ring) {
+        return Some(Problem::new(format!(
+            "`planetary.fixed` = \"{}\": a sensor on the ring needs the ring held fixed (a turning ring carries the sensor with it)",
+            p.fixed.name()
+        )));
+    }
+    let s = &case.signals;
+    if s.ramp_end_speed_hz.is_some() || s.torque_fluctuation_rms_nm != 0.0 {
+        return Some(Problem::new(
+            "`signals.ramp_end_speed_hz` / `signals.torque_fluctuation_rms_nm` on a planetary set: its record is a steady state so far; remove them".to_string(),
+        ));
+    }
+    None
+}
+
+/// The ring sensor of `case` on a set of `planets` planets: `signals`' angle, window
+/// half-width (180 / N deg when absent), record length and sampling rate.
+fn ring_sensor_of(case: &Case, planets: usize) -> RingSensor {
+    let s = &case.signals;
+    RingSensor {
+        angle_rad: s.ring_sensor_angle_deg.unwrap_or(0.0).to_radians(),
+        half_width_rad: s
+            .ring_sensor_half_width_deg
+            .unwrap_or(180.0 / planets as f64)
+            .to_radians(),
+        // Revolutions are the input member's (as the run budget counts them).
+        record_s: match s.record_length_unit {
+            LengthUnit::S => s.record_length,
+            LengthUnit::Revolutions => s.record_length / case.operating.input_speed_hz.max(1e-9),
+        },
+        sampling_rate_hz: s.sampling_rate_hz,
+    }
+}
+
+/// What `gearwear signals` writes for the set `d` of `case` (checked by
+/// [`ring_sensor_problem`]) from its steady state `r`, with the sensor's record.
+pub(super) fn ring_signals_artifacts(
+    case: &Case,
+    d: &PlanetaryDynamics,
+    r: &PlanetaryResponse,
+) -> Result<(Artifacts, RingSensorRecord), JobError> {
+    let sensor = ring_sensor_of(case, d.study.set.planets());
+    let rec = ring_sensor_record(d, r, sensor)
+        .map_err(|e| JobError::Input(vec![Problem::new(e.to_string())]))?;
+    let harmonics = case.signals.mesh_harmonics.max(1) as usize;
+    let a = planetary_signals_artifacts(d, &rec, sensor, harmonics);
+    Ok((a, rec))
+}
 
 impl SignalsJob {
     /// A planetary case (budget checked by the caller): the ring sensor's steady record.
@@ -24,56 +81,19 @@ impl SignalsJob {
                 "a planetary set's record is the ring sensor's window model (`signals.ring_sensor_angle_deg`, `signals.ring_sensor_half_width_deg`); a housing transfer path is not taken yet".to_string(),
             )));
         }
-        if let Some(p) = self
-            .case
-            .planetary
-            .as_ref()
-            .filter(|p| p.fixed != Member::Ring)
-        {
-            return Err(JobError::input(Problem::new(format!(
-                "`planetary.fixed` = \"{}\": a sensor on the ring needs the ring held fixed (a turning ring carries the sensor with it)",
-                p.fixed.name()
-            ))));
-        }
-        let s = &self.case.signals;
-        if s.ramp_end_speed_hz.is_some() || s.torque_fluctuation_rms_nm != 0.0 {
-            return Err(JobError::input(Problem::new(
-                "`signals.ramp_end_speed_hz` / `signals.torque_fluctuation_rms_nm` on a planetary set: its record is a steady state so far; remove them".to_string(),
-            )));
+        if let Some(p) = ring_sensor_problem(&self.case) {
+            return Err(JobError::input(p));
         }
         let mut d = PlanetaryDynamics::from_case(&self.case)?;
         for w in &d.study.warnings {
             observer.warning(w);
         }
-        let planets = d.study.set.planets();
-        let sensor = RingSensor {
-            angle_rad: s.ring_sensor_angle_deg.unwrap_or(0.0).to_radians(),
-            half_width_rad: s
-                .ring_sensor_half_width_deg
-                .unwrap_or(180.0 / planets as f64)
-                .to_radians(),
-            // Revolutions are the input member's (as the run budget counts them).
-            record_s: match s.record_length_unit {
-                LengthUnit::S => s.record_length,
-                LengthUnit::Revolutions => {
-                    s.record_length / self.case.operating.input_speed_hz.max(1e-9)
-                }
-            },
-            sampling_rate_hz: s.sampling_rate_hz,
-        };
         let out = publish::open_if(self.out.as_deref(), None, "signals", self.replace)?;
         let r = d
             .solve()
             .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
-        let rec = ring_sensor_record(&d, &r, sensor)
-            .map_err(|e| JobError::Input(vec![Problem::new(e.to_string())]))?;
-        let harmonics = s.mesh_harmonics.max(1) as usize;
+        let (artifacts, _) = ring_signals_artifacts(&self.case, &d, &r)?;
         let meta = RunMetadata::new("signals", &self.case);
-        publish::publish(
-            out,
-            planetary_signals_artifacts(&d, &rec, sensor, harmonics),
-            Some(&meta),
-            observer,
-        )
+        publish::publish(out, artifacts, Some(&meta), observer)
     }
 }

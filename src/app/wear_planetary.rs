@@ -3,12 +3,14 @@
 //! parallel, the results of `report::wear_planetary`. With an output folder, every update
 //! of the whole set is kept (a log per mode and mesh, `app::planetary_checkpoints`) and
 //! `--resume` continues from them once they are replayed and recomputed. A load spectrum
-//! on a planetary set is refused, naming it.
+//! on a planetary set is refused, naming it. The run job on a planetary set
+//! (`app::run_planetary`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
 use super::planetary_checkpoints::{open_logs, planetary_checkpoint_name, starting_runs};
-use super::wear_runs::{mode_tasks, stops_of};
+use super::wear_runs::{mode_tasks, stops_of, Runs};
 use super::{publish, JobError, Outcome, WearJob};
+use crate::config::case::WearSection;
 use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
@@ -18,6 +20,18 @@ use crate::study::parallel_runs::run_in_parallel;
 use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{WearMode, WearStop};
+use std::path::Path;
+
+/// Refuse a planetary set under a `[load_spectrum]` (the spectrum's wear study takes a
+/// single pair so far), naming both.
+pub(super) fn refuse_spectrum(case: &crate::config::Case) -> Result<(), JobError> {
+    if case.load_spectrum.is_none() {
+        return Ok(());
+    }
+    Err(JobError::input(Problem::new(
+        "`[load_spectrum]` on a planetary set ([planetary]): the wear study under a load spectrum takes a single pair so far; remove one or the other",
+    )))
+}
 
 /// Run the wear study of the planetary set in `job.case` (see the module docs).
 pub fn wear_of_planetary(
@@ -25,14 +39,7 @@ pub fn wear_of_planetary(
     figures: FigureOutput,
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
-    if job.case.load_spectrum.is_some() {
-        return Err(JobError::input(Problem::new(
-            "`[load_spectrum]` on a planetary set ([planetary]): the wear study under a load spectrum takes a single pair so far; remove one or the other",
-        )));
-    }
-    if let (Some(o), true) = (job.out.as_deref(), job.resume) {
-        super::checkpoints::require_folder(o)?;
-    }
+    refuse_spectrum(&job.case)?;
     let model = PlanetaryWearModel::from_case(&job.case)?;
     // After the model (milliseconds: the budget counts the updates from the set's own
     // first wear rate), before the folder is opened.
@@ -44,23 +51,60 @@ pub fn wear_of_planetary(
         observer.warning(w);
     }
     let meta = RunMetadata::new("wear", &job.case);
-    let mut out = publish::open_if(job.out.as_deref(), None, "wear", job.replace)?;
-    let wear = &job.case.wear;
-    let resume_from = out.as_ref().filter(|_| job.resume);
-    let starts = starting_runs(
+    let out = (job.out.as_deref(), job.resume, job.replace);
+    let runs = run_planetary_modes(
+        "wear",
         &model,
-        wear,
+        &job.case.wear,
         &job.modes,
-        resume_from,
-        &meta.case_sha256,
+        &meta,
+        out,
         observer,
     )?;
-    let logs = match out.as_mut() {
-        Some(d) => Some(open_logs(d, &model, &starts, &meta.case_sha256)?),
+    let refs: Vec<&PlanetaryWearRun> = runs.runs.iter().collect();
+    let artifacts = planetary_wear_artifacts(&model, &refs).with_figure_output(figures);
+    let mut outcome = publish::publish(runs.out, artifacts, Some(&meta), observer)?;
+    outcome.incomplete = planetary_stops(&refs, observer);
+    Ok(outcome)
+}
+
+/// Tell `observer` about the set's runs that stopped early; the failure to return if one
+/// was the solver's (`wear_runs::stops_of`).
+pub(super) fn planetary_stops(
+    runs: &[&PlanetaryWearRun],
+    observer: &dyn Observer,
+) -> Option<String> {
+    let modes: Vec<(WearMode, Option<&WearStop>)> =
+        runs.iter().map(|r| (r.mode, r.stopped.as_ref())).collect();
+    stops_of(&modes, observer)
+}
+
+/// The wear runs of the set in `modes` for the job `command`: the output folder opened
+/// (locked), then the checkpoints in it, each replayed and recomputed before anything
+/// runs (when resuming), then the runs in parallel with a log per mode and mesh appended
+/// after every update (`wear`: the case's `[wear]`), progress (input cycles, the deepest wear of any member) and
+/// cancellation.
+pub(super) fn run_planetary_modes(
+    command: &str,
+    model: &PlanetaryWearModel,
+    wear: &WearSection,
+    modes: &[WearMode],
+    meta: &RunMetadata,
+    (out, resume, replace): (Option<&Path>, bool, bool),
+    observer: &dyn Observer,
+) -> Result<Runs<Vec<PlanetaryWearRun>>, JobError> {
+    if let (Some(o), true) = (out, resume) {
+        super::checkpoints::require_folder(o)?;
+    }
+    let mut dir = publish::open_if(out, None, command, replace)?;
+    let resume_from = dir.as_ref().filter(|_| resume);
+    let starts = starting_runs(model, wear, modes, resume_from, &meta.case_sha256, observer)?;
+    let logs = match dir.as_mut() {
+        Some(d) => Some(open_logs(d, model, &starts, &meta.case_sha256)?),
         None => None,
     };
-    let root = out.as_ref().map(|d| d.root().to_path_buf());
-    let tasks = mode_tasks(&job.modes, wear.total_cycles);
+    let root = dir.as_ref().map(|d| d.root().to_path_buf());
+    let tasks = mode_tasks(modes, wear.total_cycles);
     for t in &tasks {
         observer.start(t);
     }
@@ -68,12 +112,12 @@ pub fn wear_of_planetary(
     let on_update = |mode: WearMode, run: &PlanetaryWearRun| -> anyhow::Result<()> {
         if let (Some(logs), Some(root)) = (&logs, &root) {
             logs.record(mode, run.updates.len(), &|j, i| &run.updates[i].meshes[j])?;
-            observer.checkpoint(&root.join(planetary_checkpoint_name(&model, mode, 0)));
+            observer.checkpoint(&root.join(planetary_checkpoint_name(model, mode, 0)));
         }
         let task = tasks.iter().find(|t| t.id == mode.name());
         if let (Some(t), Some(u)) = (task, run.updates.last()) {
             let deepest = u
-                .flanks(&model)
+                .flanks(model)
                 .iter()
                 .flat_map(|f| f.depth_m.iter())
                 .fold(0.0_f64, |a, b| a.max(*b));
@@ -89,19 +133,15 @@ pub fn wear_of_planetary(
     let runs = run_in_parallel(
         starts,
         |r| r.mode,
-        &|start, f| run_planetary_wear(&model, wear, start, f),
+        &|start, f| run_planetary_wear(model, wear, start, f),
         &on_update,
     );
     for t in &tasks {
         observer.finish(t);
     }
     drop(logs);
-    let runs = runs?;
-    let refs: Vec<&PlanetaryWearRun> = runs.iter().collect();
-    let artifacts = planetary_wear_artifacts(&model, &refs).with_figure_output(figures);
-    let mut outcome = publish::publish(out, artifacts, Some(&meta), observer)?;
-    let modes: Vec<(WearMode, Option<&WearStop>)> =
-        refs.iter().map(|r| (r.mode, r.stopped.as_ref())).collect();
-    outcome.incomplete = stops_of(&modes, observer);
-    Ok(outcome)
+    Ok(Runs {
+        runs: runs?,
+        out: dir,
+    })
 }

@@ -64,6 +64,22 @@ pub struct PlanetaryResponse {
     pub steps: u64,
 }
 
+impl PlanetaryResponse {
+    /// Each mesh's largest force over the recorded samples (sun meshes 1..N, then ring
+    /// meshes 1..N), N; empty without samples.
+    pub fn max_forces_n(&self) -> Vec<f64> {
+        let n = self.mesh_forces_n.first().map_or(0, Vec::len);
+        (0..n)
+            .map(|j| {
+                self.mesh_forces_n
+                    .iter()
+                    .map(|r| r[j])
+                    .fold(f64::NEG_INFINITY, f64::max)
+            })
+            .collect()
+    }
+}
+
 /// Why the steady state could not be found.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PlanetaryDynamicsError {

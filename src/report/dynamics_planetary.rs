@@ -9,20 +9,8 @@ use super::artifacts::Artifacts;
 use crate::dynamics::planetary_steady::PlanetaryResponse;
 use crate::format::shown;
 use crate::io::Table;
-use crate::study::planetary_dynamics::PlanetaryDynamics;
+use crate::study::planetary_dynamics::{shares, PlanetaryDynamics};
 use serde_json::json;
-
-/// Mean and largest value of each column of `rows` (rows of equal length).
-fn column_stats(rows: &[Vec<f64>]) -> (Vec<f64>, Vec<f64>) {
-    let n = rows.first().map_or(0, Vec::len);
-    let mean = (0..n)
-        .map(|j| rows.iter().map(|r| r[j]).sum::<f64>() / rows.len() as f64)
-        .collect();
-    let max = (0..n)
-        .map(|j| rows.iter().map(|r| r[j]).fold(f64::NEG_INFINITY, f64::max))
-        .collect();
-    (mean, max)
-}
 
 /// Load sharing factors of the sun meshes (docs/MODEL.md 12.5): per planet n, its mean
 /// load over the mean of all planets' (from the meshes' means `mean`), and the largest
@@ -47,34 +35,10 @@ pub fn load_sharing(mean: &[f64], forces: &[Vec<f64>], planets: usize) -> (Vec<f
     (by_mean, peak)
 }
 
-/// Load sharing factors L_n = N F_n / sum_k F_k of the planets' forces `f` (one mesh kind),
-/// all 0 when no planet carries load.
-pub fn shares(f: &[f64]) -> Vec<f64> {
-    let sum: f64 = f.iter().sum();
-    f.iter()
-        .map(|v| {
-            if sum > 0.0 {
-                f.len() as f64 * v / sum
-            } else {
-                0.0
-            }
-        })
-        .collect()
-}
-
-/// The nominal force of every sun (and ring) mesh with equal sharing, N: the sun's
-/// torque |T_s| / (N r_bs), with T_s from the input torque by the set's torque split
-/// (T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s), Willis).
-pub fn nominal_mesh_force_n(d: &PlanetaryDynamics) -> f64 {
-    let set = &d.study.set;
-    (d.input_torque_nm / set.input_torque_per_sun_torque()).abs()
-        / (set.planets() as f64 * d.model.params.radius_m[2])
-}
-
 /// Everything `gearwear dynamics` writes for a planetary case.
 pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse) -> Artifacts {
     let n = d.study.set.planets();
-    let (_, max) = column_stats(&r.mesh_forces_n);
+    let max = r.max_forces_n();
     let mean = &r.mean_forces_n;
     let (lsf, lsf_peak) = load_sharing(mean, &r.mesh_forces_n, n);
     let lsf_ring = shares(&mean[n..2 * n]);
@@ -91,7 +55,7 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
         .iter()
         .map(|(t, r)| (t * 1e6, r * 1e6))
         .collect();
-    let nominal = nominal_mesh_force_n(d);
+    let nominal = d.nominal_mesh_force_n();
     let dyn_factor = |range: std::ops::Range<usize>| {
         max[range].iter().fold(0.0, |a: f64, b| a.max(*b)) / nominal
     };

@@ -29,7 +29,7 @@ use serde_json::{json, Value};
 const SHOWN_PERIODS: f64 = 3.0;
 
 /// A study's metadata: the run's with the study's command, as its own job stamps it.
-fn study_meta(meta: &RunMetadata, command: &str) -> RunMetadata {
+pub(super) fn study_meta(meta: &RunMetadata, command: &str) -> RunMetadata {
     RunMetadata {
         command: command.to_owned(),
         ..meta.clone()

@@ -50,7 +50,7 @@ pub(crate) fn overall_ratio(train: &TrainModel) -> f64 {
 }
 
 /// A number of a summary at `pointer` under `v`, shown (NaN, shown "NaN", when absent).
-fn at(v: &Value, pointer: &str) -> String {
+pub(super) fn at(v: &Value, pointer: &str) -> String {
     shown(
         v.pointer(pointer)
             .and_then(Value::as_f64)

@@ -119,6 +119,31 @@ impl PlanetaryDynamics {
     pub fn solve(&mut self) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
         solve_planetary_steady_state(&mut self.model, &self.settings)
     }
+
+    /// The nominal force of every sun (and ring) mesh with equal sharing, N: the sun's
+    /// torque |T_s| / (N r_bs), with T_s from the input torque by the set's torque split
+    /// (T_s : T_r : T_c = 1 : z_r / z_s : -(1 + z_r / z_s), Willis). A mesh's dynamic
+    /// factor is its largest force over this (docs/MODEL.md 12.6).
+    pub fn nominal_mesh_force_n(&self) -> f64 {
+        let set = &self.study.set;
+        (self.input_torque_nm / set.input_torque_per_sun_torque()).abs()
+            / (set.planets() as f64 * self.model.params.radius_m[2])
+    }
+}
+
+/// Load sharing factors L_n = N F_n / sum_k F_k of the planets' forces `f` (one mesh kind),
+/// all 0 when no planet carries load (docs/MODEL.md 12.8).
+pub fn shares(f: &[f64]) -> Vec<f64> {
+    let sum: f64 = f.iter().sum();
+    f.iter()
+        .map(|v| {
+            if sum > 0.0 {
+                f.len() as f64 * v / sum
+            } else {
+                0.0
+            }
+        })
+        .collect()
 }
 
 /// Put the torque `torque_nm` on the input member's u (as T / r), with the sense that

@@ -5,7 +5,8 @@
 //! one row of [`CaseResults`]), [`case_record`] (the record it leaves on disk so a rerun
 //! can skip it), [`continuation`] (a one-axis sweep run in order, each point warm-started
 //! from the previous one), [`mesh_row`] (the columns of each mesh of a gear train),
-//! [`helical_row`] (the columns a helical pair adds),
+//! [`helical_row`] (the columns a helical pair adds), [`planetary_row`] (those of each
+//! mesh and planet of a planetary set),
 //! [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
 //! where a mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
 //! run in parallel or along branches, in memory or to a folder with its case records,
@@ -17,6 +18,7 @@ pub mod continuation;
 pub mod helical_row;
 pub mod mesh_row;
 pub mod plan;
+pub mod planetary_row;
 pub mod resonance;
 pub mod table;
 pub mod verify;

@@ -210,6 +210,29 @@ pub fn manifest_files(dir: &Path) -> Vec<String> {
     files
 }
 
+/// The study `study` of a run in `run` holds, in `run/STUDY/`, exactly the files the
+/// study's own command wrote into `alone` (its manifest's), byte for byte.
+pub fn assert_nested_study(run: &Path, alone: &Path, study: &str) {
+    let run_files = manifest_files(run);
+    let files = manifest_files(alone);
+    let prefix = format!("{study}/");
+    let nested: Vec<&str> = run_files
+        .iter()
+        .filter_map(|f| f.strip_prefix(&prefix))
+        .collect();
+    assert_eq!(nested, files, "{study}: the run's files differ in name");
+    for f in &files {
+        let (a, b) = (
+            std::fs::read(alone.join(f)).unwrap(),
+            std::fs::read(run.join(study).join(f)).unwrap(),
+        );
+        assert!(
+            a == b,
+            "{study}/{f}: the run's bytes differ from `gearwear {study}`"
+        );
+    }
+}
+
 /// The published files of a folder (its manifest's) and its checkpoints, as bytes.
 pub fn published(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut files = manifest_files(dir);

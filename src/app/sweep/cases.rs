@@ -11,7 +11,6 @@ use crate::remedy::{Arg, Problem};
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::sweep::{SweepPlan, SweepRun};
-use crate::study::Model;
 use rayon::prelude::*;
 
 /// One case of the shard, resolved and validated.
@@ -82,12 +81,12 @@ pub fn resolve(
         ));
     }
     let planned: Vec<Planned> = ok.into_iter().filter_map(Result::ok).collect();
-    // A planetary case has no sweep model yet, a helical pair's planar model refuses what
-    // it cannot take (`super::helical::refusal`): refused here, before any case runs,
-    // rather than as failed cases.
+    // A helical pair's planar model refuses what it cannot take
+    // (`super::helical::refusal`): refused here, before any case runs, rather than as
+    // failed cases. A planetary set's checks are its own (`super::planetary`).
     let helical: Vec<Problem> = planned
         .iter()
-        .filter(|p| p.case.gear.helix_angle_deg != 0.0 || p.case.planetary.is_some())
+        .filter(|p| p.case.gear.helix_angle_deg != 0.0 && p.case.planetary.is_none())
         .filter_map(|p| {
             let first = super::helical::refusal(&p.case, run)?;
             Some(Problem::new(first).in_context(&format!(
@@ -104,6 +103,11 @@ pub fn resolve(
     // Every case of a gear train has the base's stages (its row's columns are per mesh).
     // Each case against the budget (the number of cases is the user's explicit choice).
     check_stage_counts(base, plan, &planned)?;
+    let named: Vec<(String, &Case)> = planned
+        .iter()
+        .map(|p| (format!("case {} ({})", p.id, describe(plan, p)), &p.case))
+        .collect();
+    super::planetary::check_planetary(base, &named, run)?;
     let over: Vec<Problem> = planned
         .iter()
         .filter_map(|p| {
@@ -160,8 +164,7 @@ pub fn check_models(plan: &SweepPlan, pending: &[&Planned]) -> Result<(), JobErr
     let problems: Vec<Problem> = pending
         .par_iter()
         .filter_map(|p| {
-            Model::dynamics_from_case(&p.case)
-                .err()
+            super::planetary::model_error(&p.case)
                 .map(|e| Problem::new(format!("case {} ({}): {e}", p.id, describe(plan, p))))
         })
         .collect();

@@ -13,6 +13,7 @@ mod branches;
 mod cases;
 mod helical;
 mod merge;
+mod planetary;
 mod records;
 
 pub use merge::SweepMergeJob;
@@ -127,6 +128,7 @@ impl SweepJob {
         let Some(c) = self.continuation else {
             return Ok(None);
         };
+        planetary::refuse_continuation(&self.base)?;
         if self.shard != Shard::ALL {
             return Err(Problem::given(
                 Arg::Shard,
@@ -432,6 +434,9 @@ impl SweepJob {
         let base_model = Model::dynamics_from_case(&self.base);
         let speed: Option<SpeedMarks> = match &base_model {
             Ok(m) => speed_marks(m, plan),
+            // A planetary set has no resonance markers yet (its modes are the stiffness
+            // study's): no warning for it.
+            Err(_) if self.base.planetary.is_some() => None,
             Err(e) => {
                 observer.warning(&format!(
                     "no resonance markers: the base case has no model: {e}"
@@ -475,7 +480,8 @@ impl SweepJob {
         let computed = computed_now - failed.len();
         let mut table = SweepTable::new(plan.keys(), self.run)
             .with_stages(self.base.stage.len())
-            .with_helical(helical::helical_table(&self.base, plan));
+            .with_helical(helical::helical_table(&self.base, plan))
+            .with_planets(planetary::planets_of(&self.base));
         table.rows = ran.rows;
         table.rows.sort_by_key(|r| r.case_id);
         let stem = self.shard.stem();

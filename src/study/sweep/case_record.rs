@@ -136,12 +136,12 @@ impl CaseRecord {
 
     /// The record's results (null numbers as NaN), if its columns are this version's.
     pub fn case_results(&self) -> Option<CaseResults> {
-        let (run, stages) = SweepRun::of_columns(&self.columns)?;
+        let (run, stages, planets) = SweepRun::shape_of(&self.columns)?;
         if run != self.run {
             return None;
         }
         let v: Vec<f64> = self.results.iter().map(|x| x.unwrap_or(f64::NAN)).collect();
-        CaseResults::from_values(self.run, stages, &v)
+        CaseResults::from_values_of(self.run, stages, planets, &v)
     }
 
     fn content_checksum(&self) -> String {
@@ -222,7 +222,7 @@ impl CaseRecord {
             && self.run == run
             && self.keys == keys
             && self.values == values
-            && SweepRun::of_columns(&self.columns).map(|(r, _)| r) == Some(run)
+            && SweepRun::shape_of(&self.columns).map(|(r, _, _)| r) == Some(run)
             && self.results.len() == self.columns.len()
             && self.continuation.is_none()
     }

@@ -5,6 +5,9 @@ use super::helical_row::{helical_columns, HelicalRow};
 use super::mesh_row::{
     mesh_columns, mesh_wear_columns, MeshRow, MeshWear, TrainWearEnd, MESH_COLUMNS,
 };
+use super::planetary_row::{
+    planetary_columns, planets_of, run_planetary_dynamics, PlanetaryRow, PlanetaryRunError,
+};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::summary::ResponseSummary;
@@ -95,6 +98,22 @@ impl SweepRun {
             })
     }
 
+    /// The run, train meshes and planets (0: none) whose result columns are `columns`
+    /// ([`CaseResults::columns`]), if any.
+    pub fn shape_of(columns: &[String]) -> Option<(Self, usize, usize)> {
+        match planets_of(columns) {
+            Some(n) => {
+                let head = &columns[..columns.len() - planetary_columns(n).len()];
+                (head == SweepRun::Dynamics.columns().as_slice()).then_some((
+                    SweepRun::Dynamics,
+                    0,
+                    n,
+                ))
+            }
+            None => Self::of_columns(columns).map(|(r, s)| (r, s, 0)),
+        }
+    }
+
     /// The result columns of a case of `stages` train meshes (0: a single pair): this
     /// run's, then each mesh's, then (a wear sweep of a train) each mesh's wear and the
     /// limiting stages ([`super::mesh_row`]).
@@ -157,7 +176,8 @@ impl DynamicsRow {
         ]
     }
 
-    fn from_values(v: &[f64]) -> Self {
+    /// From numbers in the dynamics columns' order (at least nine).
+    pub(crate) fn from_values(v: &[f64]) -> Self {
         Self {
             dte_max_um: v[0],
             velocity_y_pinion_rms_mm_per_s: v[1],
@@ -229,6 +249,9 @@ pub struct CaseResults {
     /// What a helical pair adds (`super::helical_row`); also the empty columns of a spur
     /// case in a table that has them.
     pub helical: Option<HelicalRow>,
+    /// Each mesh's force and each planet's load sharing (a `dynamics` sweep of a
+    /// planetary set, [`super::planetary_row`]).
+    pub planetary: Option<PlanetaryRow>,
 }
 
 impl CaseResults {
@@ -241,12 +264,27 @@ impl CaseResults {
         }
     }
 
-    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's, then
-    /// a helical pair's.
+    /// A planetary set's dynamics row: the pair's columns `dynamics`, then the set's.
+    pub fn with_planetary(dynamics: DynamicsRow, row: PlanetaryRow) -> Self {
+        Self {
+            dynamics,
+            wear: None,
+            meshes: Vec::new(),
+            train_wear: None,
+            helical: None,
+            planetary: Some(row),
+        }
+    }
+
+    /// The names of [`CaseResults::values`]: the run's columns, then each mesh's (a
+    /// train's), a helical pair's or the set's (a planetary set's).
     pub fn columns(&self) -> Vec<String> {
         let mut c = self.run().columns_for(self.meshes.len());
         if self.helical.is_some() {
             c.extend(helical_columns(self.wear.is_some()));
+        }
+        if let Some(p) = &self.planetary {
+            c.extend(planetary_columns(p.planets()));
         }
         c
     }
@@ -275,7 +313,28 @@ impl CaseResults {
         if let Some(h) = &self.helical {
             v.extend(h.values());
         }
+        if let Some(p) = &self.planetary {
+            v.extend(p.values());
+        }
         v
+    }
+
+    /// From numbers in the column order of `run` with `stages` train meshes and a set of
+    /// `planets` planets (0: none; only a dynamics row of a single set has them); `None`
+    /// when their count is not it.
+    pub fn from_values_of(run: SweepRun, stages: usize, planets: usize, v: &[f64]) -> Option<Self> {
+        if planets == 0 {
+            return Self::from_values(run, stages, v);
+        }
+        let own = run.columns().len();
+        if run != SweepRun::Dynamics || stages != 0 || v.len() < own {
+            return None;
+        }
+        let row = PlanetaryRow::from_values(planets, &v[own..])?;
+        Some(Self::with_planetary(
+            DynamicsRow::from_values(&v[..own]),
+            row,
+        ))
     }
 
     /// From numbers in the column order of `run` with `stages` train meshes (0: a single
@@ -312,6 +371,7 @@ impl CaseResults {
                 .collect(),
             train_wear,
             helical: None,
+            planetary: None,
         })
     }
 
@@ -357,8 +417,29 @@ pub struct CaseOutcome {
     pub warnings: Vec<String>,
 }
 
+/// A planetary set's dynamics row: the set's columns, and the pair's with the first
+/// sun-planet mesh's forces (the set's summary has no DTE or pinion velocity: empty).
+fn planetary_outcome(case: &Case) -> Result<CaseOutcome, CaseError> {
+    let (row, warnings) = run_planetary_dynamics(case).map_err(|e| match e {
+        PlanetaryRunError::Model(m) => CaseError::Model(m),
+        PlanetaryRunError::Solve(s) => CaseError::Solve(s),
+    })?;
+    let mut pair = [f64::NAN; 9];
+    pair[2..5].copy_from_slice(&row.meshes[0]);
+    Ok(CaseOutcome {
+        results: CaseResults::with_planetary(DynamicsRow::from_values(&pair), row),
+        warnings,
+    })
+}
+
 /// Build the model of `case` and run it.
 pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
+    if case.planetary.is_some() {
+        return match run {
+            SweepRun::Dynamics => planetary_outcome(case),
+            SweepRun::Wear => Err(CaseError::Model(super::planetary_row::wear_refusal())),
+        };
+    }
     match run {
         SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
@@ -469,6 +550,7 @@ fn run_train_wear_case(model: &Model, train: &TrainModel) -> Result<CaseResults,
         dynamics,
         wear: Some([end(&d), end(&q)]),
         meshes,
+        planetary: None,
         train_wear: Some(TrainWearEnd {
             meshes: (0..train.stages.len())
                 .map(|m| MeshWear {
@@ -510,6 +592,7 @@ pub fn run_dynamics_from(
                 meshes: s.iter().zip(f).map(|(s, f)| MeshRow::of(s, f)).collect(),
                 train_wear: None,
                 helical: None,
+                planetary: None,
             }
         }
         None => CaseResults {
@@ -518,6 +601,7 @@ pub fn run_dynamics_from(
             meshes: Vec::new(),
             train_wear: None,
             helical: HelicalRow::of_response(&model, &r),
+            planetary: None,
         },
     };
     let outcome = CaseOutcome {
@@ -541,6 +625,7 @@ pub fn wear_results(d: &WearRun, q: &WearRun) -> CaseResults {
         meshes: Vec::new(),
         train_wear: None,
         helical: None,
+        planetary: None,
     }
 }
 
@@ -561,6 +646,7 @@ mod tests {
             meshes: Vec::new(),
             train_wear: None,
             helical: None,
+            planetary: None,
         };
         let v = r.values();
         assert_eq!(v.len(), SweepRun::Dynamics.columns().len());
@@ -602,6 +688,7 @@ mod tests {
         // wear columns and the two limiting stages (9 + 8 + 2 x 5 + 2 x 4 + 2 = 37).
         let mut tw = CaseResults {
             wear: w.wear,
+            planetary: None,
             train_wear: Some(TrainWearEnd {
                 meshes: vec![
                     MeshWear::from_values(&[1.0, 2.0, 3.0, 4.0]),

@@ -59,6 +59,9 @@ pub struct SweepTable {
     pub stages: usize,
     /// Whether the rows end with a helical pair's columns (`super::helical_row`).
     pub helical: bool,
+    /// The number of planets of a planetary set (its meshes' and planets' columns after
+    /// the run's, `super::planetary_row`); 0 for none.
+    pub planets: usize,
     /// The rows, sorted by case id.
     pub rows: Vec<SweepRow>,
 }
@@ -71,6 +74,7 @@ impl SweepTable {
             run,
             stages: 0,
             helical: false,
+            planets: 0,
             rows: Vec::new(),
         }
     }
@@ -85,8 +89,13 @@ impl SweepTable {
         Self { stages, ..self }
     }
 
-    /// Table of case records (which must share keys, run, meshes and helical columns),
-    /// sorted by case id; records of other columns are left out.
+    /// The same table with the columns of a set of `planets` planets (0: none).
+    pub fn with_planets(self, planets: usize) -> Self {
+        Self { planets, ..self }
+    }
+
+    /// Table of case records (which must share keys, run, meshes, helical and planetary
+    /// columns), sorted by case id; records of other columns are left out.
     pub fn from_records(
         keys: Vec<String>,
         run: SweepRun,
@@ -114,6 +123,7 @@ impl SweepTable {
             run,
             stages,
             helical,
+            planets: 0,
             rows,
         }
     }
@@ -125,6 +135,9 @@ impl SweepTable {
             c.extend(super::helical_row::helical_columns(
                 self.run == SweepRun::Wear,
             ));
+        }
+        if self.planets > 0 {
+            c.extend(super::planetary_row::planetary_columns(self.planets));
         }
         c
     }
@@ -183,7 +196,7 @@ impl SweepTable {
             (header.get(at + 1).map(String::as_str) == Some("branch")).then_some(at + 1);
         let first_result = branch_at.map_or(at + 1, |b| b + 1);
         let columns = header[first_result..].to_vec();
-        let Some((run, stages, helical)) = SweepRun::layout_of(&columns) else {
+        let Some((run, stages, planets)) = SweepRun::shape_of(&columns) else {
             return Err(SweepTableError::NotASweepTable(format!(
                 "result columns [{}] are those of no gearwear sweep (a dynamics sweep has [{}], a wear sweep adds [{}]; a gear train's then have [{}] per stage K)",
                 columns.join(", "),
@@ -194,7 +207,8 @@ impl SweepTable {
         };
         let mut t = SweepTable::new(header[..at].to_vec(), run)
             .with_stages(stages)
-            .with_helical(helical);
+            .with_helical(SweepRun::layout_of(&columns).is_some_and(|(_, _, h)| h))
+            .with_planets(planets);
         for (line, rec) in r.records().enumerate() {
             let rec = rec?;
             let row = line + 2;
@@ -229,9 +243,13 @@ impl SweepTable {
             t.rows.push(SweepRow {
                 case_id,
                 values: (0..at).map(|i| cell(i).to_owned()).collect(),
-                results: CaseResults::from_values(run, stages, &results).ok_or_else(|| {
-                    SweepTableError::NotASweepTable(format!("row {row}: not one number per column"))
-                })?,
+                results: CaseResults::from_values_of(run, stages, planets, &results).ok_or_else(
+                    || {
+                        SweepTableError::NotASweepTable(format!(
+                            "row {row}: not one number per column"
+                        ))
+                    },
+                )?,
                 branch,
             });
         }
@@ -255,7 +273,11 @@ impl SweepTable {
                     first.keys.join(", ")
                 )));
             }
-            if t.run != first.run || t.stages != first.stages || t.helical != first.helical {
+            if t.run != first.run
+                || t.stages != first.stages
+                || t.helical != first.helical
+                || t.planets != first.planets
+            {
                 return Err(SweepTableError::MixedSweeps(format!(
                     "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear, or of gear trains of {} and {} stages?)",
                     t.stages, first.stages
@@ -283,6 +305,7 @@ impl SweepTable {
             run: first.run,
             stages: first.stages,
             helical: first.helical,
+            planets: first.planets,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
     }
