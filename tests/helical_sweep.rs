@@ -288,3 +288,38 @@ bins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 60, inp
         &["gear.helix_angle_deg", "[load_spectrum]"],
     );
 }
+
+#[test]
+fn a_rerun_whose_plan_adds_or_drops_the_helical_columns_recomputes_the_kept_case() {
+    // A sweep of helix 0 then, into the same folder, of 0 and 15: the kept spur record
+    // has no helical columns, which the new table has; reused as it was, its row would
+    // not fit the header (the table could not be written). It is recomputed, and the
+    // row equals the first run's numbers. Back to 0 alone: the record with the (empty)
+    // helical columns is recomputed again, and the table is a fresh spur sweep's.
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("s");
+    let vary = |v: &str| vec!["--vary".to_owned(), format!("gear.helix_angle_deg={v}")];
+    let run = |v: &str, dir: &Path| {
+        let a = vary(v);
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        sweep(&a, dir)
+    };
+    run("0", &out);
+    let first = rows(&out.join("sweep.csv"));
+    let err = run("0,15", &out);
+    assert!(err.contains("0 already finished"), "{err}");
+    let both = rows(&out.join("sweep.csv"));
+    assert_eq!(both.len(), 2);
+    assert_eq!(both[0]["total_contact_ratio"], "");
+    for (col, v) in &first[0] {
+        assert_eq!(&both[0][col], v, "column {col}");
+    }
+    assert!(num(&both[1], "total_contact_ratio") > 2.0);
+    run("0", &out);
+    let fresh = d.path().join("fresh");
+    run("0", &fresh);
+    assert_eq!(
+        std::fs::read(out.join("sweep.csv")).unwrap(),
+        std::fs::read(fresh.join("sweep.csv")).unwrap()
+    );
+}

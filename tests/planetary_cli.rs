@@ -195,7 +195,11 @@ fn studies_on_the_dynamic_model_refuse_a_planetary_case() {
             "--config",
             &case,
         ],
-        &["[planetary]", "not built yet", "--run dynamics"],
+        &[
+            "[planetary]",
+            "not built yet",
+            "a sweep of dynamics takes a set",
+        ],
     );
 }
 

@@ -175,3 +175,28 @@ fn other_planet_counts_wear_sweeps_and_continuations_are_refused() {
         &["--continuation", "planetary set"],
     );
 }
+
+#[test]
+fn a_helix_angle_on_a_planetary_set_is_refused_not_run_as_spur() {
+    // The set's meshes are spur (helical sets are not built): a helix angle would be
+    // ignored, so `dynamics` and a sweep varying it refuse it, naming the key.
+    let c = config();
+    for args in [
+        vec![
+            "dynamics",
+            "--config",
+            &c,
+            "--set",
+            "gear.helix_angle_deg=15",
+        ],
+        vec![
+            "sweep",
+            "--config",
+            &c,
+            "--vary",
+            "gear.helix_angle_deg=0,15",
+        ],
+    ] {
+        rejected(&args, &["`gear.helix_angle_deg` = 15", "[planetary]"]);
+    }
+}

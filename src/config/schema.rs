@@ -508,7 +508,7 @@ pub const KEYS: &[KeySpec] = &[
       "As the couplings'."),
     k("stage.centre_line_deg", "deg", Num(Range::closed(-360.0, 360.0)), "Direction of the stage's gear centre seen from its pinion's, deg from +x (absent: 0: the centres in a line). It turns the stage's line of action in the plane, and with it the bearing forces' directions.",
       "An angle; one turn either way."),
-    k("planetary.planets", "-", Int(1, 32), "A planetary set instead of the pair (`[planetary]`, absent by default; docs/MODEL.md section 12): number of planets N, equally spaced unless `planetary.planet_angles_deg` is given. `gearwear stiffness`, `dynamics`, `signals`, `wear`, `run` and `sweep --run dynamics` take such a case; the other studies refuse it.",
+    k("planetary.planets", "-", Int(1, 32), "A planetary set instead of the pair (`[planetary]`, absent by default; docs/MODEL.md section 12): number of planets N, equally spaced unless `planetary.planet_angles_deg` is given. `gearwear stiffness`, `dynamics`, `signals`, `wear`, `run` and `sweep` (of dynamics) take such a case; the other studies refuse it.",
       "At least one planet; 32 is far above any built set (3 to 12 is usual) and bounds the lumped model (3 (N + 3) coordinates)."),
     k("planetary.planet_angles_deg", "deg", NumArray(Range::below(0.0, 360.0)), "Planet positions on the carrier, the first 0, increasing within one revolution, each on a multiple of 360 / (z_s + z_r) deg (checked). Absent: 360 n / N.",
       "Angles within one revolution; the assembly condition is checked with the teeth."),

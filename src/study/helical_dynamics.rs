@@ -121,7 +121,7 @@ fn lead_gaps(
 
 impl Model {
     /// The model of the studies that take a helical pair through the spur pair's solver
-    /// (`gearwear dynamics`, `signals`, `wear`, `sweep`, `run`): the planar model
+    /// (`gearwear dynamics`, `signals`, `wear`, `sweep`): the planar model
     /// ([`Model::helical_from_case`]) where the case has a helix angle, else
     /// [`Model::from_case`] itself (so a spur case is built exactly as before).
     pub fn dynamics_from_case(case: &Case) -> Result<Model, ModelError> {

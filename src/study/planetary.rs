@@ -61,6 +61,12 @@ impl PlanetaryStudy {
         if let Some(r) = super::face_load::lead_refusal(case) {
             return Err(ModelError(vec![r]));
         }
+        if case.gear.helix_angle_deg != 0.0 {
+            return Err(ModelError(vec![format!(
+                "`gear.helix_angle_deg` = {} with [planetary]: a planetary set's meshes are spur so far (helical sets are not built), so it would give a spur result; set it to 0",
+                case.gear.helix_angle_deg
+            )]));
+        }
         let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
         let load = super::domain::planetary_domain_problems(case, &set);
         if !load.is_empty() {

@@ -11,6 +11,9 @@ pub(crate) enum Kept {
     /// A merge's input: every finished record of the state (each is copied); the shard
     /// is refused.
     Finished,
+    /// A whole folder's check (`verify_folder`): every finished record of the state;
+    /// delete the record to recompute it.
+    InFolder,
 }
 
 /// The first field (dotted path from `at`) where `a` and `b` differ, with both values.

@@ -106,7 +106,7 @@ fn label_difference(kept: &RecordLabels, expected: &RecordLabels) -> Option<Stri
 /// What the user can do about a record whose labels are false.
 fn advice(kept: Kept) -> &'static str {
     match kept {
-        Kept::WholeStates => {
+        Kept::WholeStates | Kept::InFolder => {
             "the record was edited or is not this design's (delete its sidecar to recompute it)"
         }
         Kept::Finished => {

@@ -68,7 +68,7 @@ pub(super) fn verify_states(
                 }
                 if let Some((what, rel)) = record_difference(root, &f) {
                     let advice = match kept {
-                        Kept::WholeStates => format!(
+                        Kept::WholeStates | Kept::InFolder => format!(
                             "the record was edited or is not this design's (delete {} to recompute it)",
                             root.join(sidecar_rel(f.id)).display()
                         ),
@@ -228,7 +228,7 @@ pub fn verify_dataset(
         &job,
         root,
         held.into_iter(),
-        Kept::Finished,
+        Kept::InFolder,
     ));
     Ok(v)
 }

@@ -21,10 +21,11 @@ use std::sync::Mutex;
 
 /// Run the branches of `c` (`planned` by case id), writing a record per computed point
 /// into `dir` if given; points finished in an earlier run from the same start state are
-/// skipped; each row with a helical pair's columns when `helical` (the table has them).
+/// skipped (a kept point only with the table's `columns`); each row with a helical
+/// pair's columns when `helical` (the table has them).
 /// `on_point` after every point, `keep_going` before each.
 pub fn run_branches(
-    (dir, helical): (Option<(&Path, &StateFolder)>, bool),
+    (dir, helical, columns): (Option<(&Path, &StateFolder)>, bool, &[String]),
     c: &ContinuationPlan,
     planned: &[Planned],
     keys: &[String],
@@ -56,7 +57,9 @@ pub fn run_branches(
         let (dir, _) = dir?;
         let p = by_id.get(&id)?;
         let r = CaseRecord::read(&case_path(dir, id)).ok()??;
-        if !r.is_continuation_result_of(id, &p.hash, keys, &p.labels, b, start) {
+        if !r.is_continuation_result_of(id, &p.hash, keys, &p.labels, b, start)
+            || r.columns != columns
+        {
             return None;
         }
         let end = r.continuation.as_ref()?.end_state()?;

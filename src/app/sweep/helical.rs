@@ -13,6 +13,10 @@ use crate::study::Model;
 /// Whether the sweep's table holds a helical pair's columns (module docs). A value that
 /// does not load is named by `cases::check_values`, before this is asked.
 pub fn helical_table(base: &Case, plan: &SweepPlan) -> bool {
+    // A planetary set's row has the set's columns (its model refuses a helix angle).
+    if base.planetary.is_some() {
+        return false;
+    }
     base.gear.helix_angle_deg != 0.0
         || plan
             .axes

@@ -347,10 +347,14 @@ impl Job for SweepJob {
         if let Some(d) = dir {
             check_case_files(d, &planned)?;
         }
+        // A record is reused only with the table's columns (a plan that now has, or no
+        // longer has, a helical pair's columns recomputes its spur cases).
+        let columns = self.result_columns(plan);
         let done: Vec<CaseRecord> = match dir {
             Some(d) if continuation.is_none() => planned
                 .iter()
                 .filter_map(|p| finished(d, p, self.run, &keys))
+                .filter(|r| r.columns == columns)
                 .collect(),
             _ => Vec::new(),
         };
@@ -387,10 +391,14 @@ impl Job for SweepJob {
             };
             let folders = dir.zip(cases.as_ref());
             let helical = helical::helical_table(&self.base, plan);
-            let r =
-                branches::run_branches((folders, helical), c, &planned, &keys, &on_point, &|| {
-                    !observer.cancelled()
-                });
+            let r = branches::run_branches(
+                (folders, helical, &columns),
+                c,
+                &planned,
+                &keys,
+                &on_point,
+                &|| !observer.cancelled(),
+            );
             observer.finish(&task);
             r
         } else {
@@ -422,6 +430,20 @@ impl Job for SweepJob {
 }
 
 impl SweepJob {
+    /// The sweep's table with no row yet: its keys and result columns (the run's, each
+    /// mesh's of a train, a helical pair's, a planetary set's).
+    fn empty_table(&self, plan: &SweepPlan) -> SweepTable {
+        SweepTable::new(plan.keys(), self.run)
+            .with_stages(self.base.stage.len())
+            .with_helical(helical::helical_table(&self.base, plan))
+            .with_planets(planetary::planets_of(&self.base))
+    }
+
+    /// The result columns of the sweep's table ([`SweepJob::empty_table`]).
+    fn result_columns(&self, plan: &SweepPlan) -> Vec<String> {
+        self.empty_table(plan).columns()
+    }
+
     /// The figure of the sweep (with the base case's resonance crossings on a speed
     /// axis), the marks, and the base case's metadata.
     fn figure(
@@ -478,10 +500,7 @@ impl SweepJob {
         let computed_now = ran.outcomes.len();
         let failed = failures(ran.outcomes, planned, continuation, observer);
         let computed = computed_now - failed.len();
-        let mut table = SweepTable::new(plan.keys(), self.run)
-            .with_stages(self.base.stage.len())
-            .with_helical(helical::helical_table(&self.base, plan))
-            .with_planets(planetary::planets_of(&self.base));
+        let mut table = self.empty_table(plan);
         table.rows = ran.rows;
         table.rows.sort_by_key(|r| r.case_id);
         let stem = self.shard.stem();

@@ -36,7 +36,7 @@ pub fn check_planetary(
             Arg::SweepRun,
             run.name(),
             Words::new().text(
-                "this case is a planetary set ([planetary]): its wear sweep is not built yet; `--run dynamics` sweeps a set (each mesh's force and dynamic factor, each planet's load sharing) and `gearwear wear` wears one set",
+                "this case is a planetary set ([planetary]): its wear sweep is not built yet; a sweep of dynamics takes a set (each mesh's force and dynamic factor, each planet's load sharing) and `gearwear wear` wears one set",
             ),
         )
         .into());

@@ -129,7 +129,7 @@ pub fn run_planetary_dynamics(
 
 /// The refusal of a planetary set's wear sweep (`--run wear`): not built yet.
 pub fn wear_refusal() -> ModelError {
-    ModelError(vec!["`[planetary]` with `--run wear`: a planetary set's wear sweep is not built yet; `gearwear sweep --run dynamics` takes a planetary set (each mesh's force and dynamic factor, each planet's load sharing), `gearwear wear` wears one set".into()])
+    ModelError(vec!["`[planetary]` in a sweep of wear: a planetary set's wear sweep is not built yet; `gearwear sweep` of dynamics takes a planetary set (each mesh's force and dynamic factor, each planet's load sharing), `gearwear wear` wears one set".into()])
 }
 
 #[cfg(test)]

@@ -95,7 +95,8 @@ impl SweepTable {
     }
 
     /// Table of case records (which must share keys, run, meshes, helical and planetary
-    /// columns), sorted by case id; records of other columns are left out.
+    /// columns), sorted by case id; records of other columns than the first's are left
+    /// out.
     pub fn from_records(
         keys: Vec<String>,
         run: SweepRun,
@@ -115,15 +116,17 @@ impl SweepTable {
             })
             .collect();
         rows.sort_by_key(|r| r.case_id);
-        // A helical pair's columns if the first row has them; rows of other columns left out.
+        // The first row's helical and planetary columns; rows of other columns left out.
         let helical = rows.first().is_some_and(|r| r.results.helical.is_some());
-        rows.retain(|r| r.results.helical.is_some() == helical);
+        let planets_of = |r: &SweepRow| r.results.planetary.as_ref().map_or(0, |p| p.planets());
+        let planets = rows.first().map_or(0, planets_of);
+        rows.retain(|r| r.results.helical.is_some() == helical && planets_of(r) == planets);
         Self {
             keys,
             run,
             stages,
             helical,
-            planets: 0,
+            planets,
             rows,
         }
     }
@@ -279,8 +282,8 @@ impl SweepTable {
                 || t.planets != first.planets
             {
                 return Err(SweepTableError::MixedSweeps(format!(
-                    "mixed sweeps: {src} and {first_src} have different result columns (a sweep of dynamics and one of wear, or of gear trains of {} and {} stages?)",
-                    t.stages, first.stages
+                    "mixed sweeps: {src} and {first_src} have different result columns ({})",
+                    column_difference(t, first)
                 )));
             }
             for r in &t.rows {
@@ -308,6 +311,19 @@ impl SweepTable {
             planets: first.planets,
             rows: rows.into_values().map(|(_, r)| r.clone()).collect(),
         })
+    }
+}
+
+/// What differs between the result columns of two tables, for a message.
+fn column_difference(a: &SweepTable, b: &SweepTable) -> String {
+    if a.run != b.run {
+        format!("a sweep of {} and one of {}", a.run.name(), b.run.name())
+    } else if a.stages != b.stages {
+        format!("gear trains of {} and {} stages", a.stages, b.stages)
+    } else if a.helical != b.helical {
+        "a helical pair's columns in one only".to_owned()
+    } else {
+        format!("planetary sets of {} and {} planets", a.planets, b.planets)
     }
 }
 
