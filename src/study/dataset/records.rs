@@ -147,17 +147,17 @@ fn state_wears(inp: &StateInputs) -> anyhow::Result<Vec<WearState>> {
 }
 
 /// The labels of record `realisation` of physical state `p` without its indicators
-/// (left empty): everything the design and the wear trajectory give it, the same for
-/// every realisation but the id, file and noise seed.
+/// (left empty): everything the design and the wear trajectory give it (`wear`, the
+/// state's [`wear_labels`], computed once per state), the same for every realisation
+/// but the id, file and noise seed.
 fn labels_without_indicators(
     inp: &StateInputs,
     plan: &Plan,
     (p, index): (usize, StateIndex),
-    wears: &[WearState],
+    wear: &WearLabels,
     realisation: usize,
 ) -> RecordLabels {
     let case = &inp.model.case;
-    let wear = wear_labels(inp.model, wears);
     let (remaining, censored) = inp.trajectory.remaining(inp.cycles);
     let id = plan.record_id(p, realisation);
     RecordLabels {
@@ -171,9 +171,9 @@ fn labels_without_indicators(
         cycles: inp.cycles,
         max_wear_pinion_um: wear.max_pinion_um,
         max_wear_gear_um: wear.max_gear_um,
-        wear_pinion_tooth_um: wear.pinion_tooth_um,
-        wear_gear_tooth_um: wear.gear_tooth_um,
-        stages: wear.stages,
+        wear_pinion_tooth_um: wear.pinion_tooth_um.clone(),
+        wear_gear_tooth_um: wear.gear_tooth_um.clone(),
+        stages: wear.stages.clone(),
         limiting_stage: wear.limiting_stage,
         wear_limit_um: inp.wear_limit_um,
         remaining_cycles: remaining,
@@ -196,9 +196,9 @@ pub fn expected_labels(
     p: usize,
     index: StateIndex,
 ) -> anyhow::Result<Vec<RecordLabels>> {
-    let wears = state_wears(inp)?;
+    let wear = wear_labels(inp.model, &state_wears(inp)?);
     Ok((0..plan.realisations)
-        .map(|r| labels_without_indicators(inp, plan, (p, index), &wears, r))
+        .map(|r| labels_without_indicators(inp, plan, (p, index), &wear, r))
         .collect())
 }
 
@@ -220,8 +220,9 @@ pub fn state_records(
     let kin = kinematics(inp.model);
     let mut chain = inp.setup.chain.clone();
     let clean = periodic.render(&chain, chain.samples(kin.shaft_hz(chain.tachometer.shaft)));
+    let wear = wear_labels(inp.model, &wears);
     for realisation in 0..plan.realisations {
-        let mut labels = labels_without_indicators(inp, plan, (p, index), &wears, realisation);
+        let mut labels = labels_without_indicators(inp, plan, (p, index), &wear, realisation);
         chain.acquisition.noise_seed = labels.noise_seed;
         let mut rec = clean.clone();
         add_noise(&mut rec, &chain);
