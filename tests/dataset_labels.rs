@@ -4,11 +4,16 @@
 //! and the design. A label forged in records no sample can reach is refused all the
 //! same: with 20 states and 18 forged records, at least 12 are outside any sample, and
 //! every one of the 18 must be named (by the sample's recomputation or by the labels'
-//! check), on a single pair, on a merge's shard and on a gear train.
+//! check), on a single pair, on a merge's shard and on a gear train. A record's indicators
+//! are recomputed from its own signal file (they are computed from the samples as stored),
+//! so an indicator forged in any record is named too; and each equals the indicator the
+//! test computes itself from the Parquet file's samples.
 
 mod common;
 
 use common::{gearwear, stderr};
+use parquet::file::reader::{FileReader, SerializedFileReader};
+use parquet::record::Field;
 use serde_json::Value;
 use std::path::Path;
 
@@ -86,7 +91,7 @@ fn assert_all_named(err: &str, ds: &Path, forged: &[usize], field: &str) {
     }
     let by_labels = err
         .lines()
-        .filter(|l| l.contains("from the design and its verified wear trajectory"))
+        .filter(|l| l.contains("from the design, its verified wear trajectory"))
         .filter(|l| l.contains(&format!("`{field}`")))
         .count();
     assert!(
@@ -96,21 +101,44 @@ fn assert_all_named(err: &str, ds: &Path, forged: &[usize], field: &str) {
     );
 }
 
-#[test]
-fn a_resume_refuses_a_label_forged_in_any_record() {
+/// A 20-record dataset whose records 1-18 had their labels edited, then resumed.
+struct Forged {
+    dir: tempfile::TempDir,
+    ds: std::path::PathBuf,
+    forged: Vec<usize>,
+    /// The folder's files before the resume.
+    before: Vec<(String, Vec<u8>)>,
+    resume: std::process::Output,
+}
+
+/// [`Forged`] with the labels of records 1-18 edited by `edit`.
+fn resume_forged(edit: &dyn Fn(&mut Value)) -> Forged {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("design.toml"), pair_design(20)).unwrap();
     ok(&dataset(dir.path(), "ds", &[]));
     let ds = dir.path().join("ds");
     let forged: Vec<usize> = (1..19).collect();
     for &id in &forged {
-        forge(&ds, id, &|l| scale(&mut l["max_wear_pinion_um"], 1.5));
+        forge(&ds, id, edit);
     }
     let before = files(&ds);
-    let r = dataset(dir.path(), "ds", &[]);
-    assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
-    assert_all_named(&stderr(&r), &ds, &forged, "max_wear_pinion_um");
-    assert!(files(&ds) == before, "a refused resume changed a record");
+    let resume = dataset(dir.path(), "ds", &[]);
+    Forged {
+        dir,
+        ds,
+        forged,
+        before,
+        resume,
+    }
+}
+
+#[test]
+fn a_resume_refuses_a_label_forged_in_any_record() {
+    let f = resume_forged(&|l| scale(&mut l["max_wear_pinion_um"], 1.5));
+    let (dir, ds, forged, r) = (&f.dir, &f.ds, &f.forged, &f.resume);
+    assert_eq!(r.status.code(), Some(2), "{}", stderr(r));
+    assert_all_named(&stderr(r), ds, forged, "max_wear_pinion_um");
+    assert!(files(ds) == f.before, "a refused resume changed a record");
 
     // The library's verification of the folder finds every one of them as well.
     let v = gearwear::app::dataset::jobs::verify_folder(
@@ -175,4 +203,89 @@ fn a_resume_refuses_a_stage_label_forged_in_any_record_of_a_train() {
     let r = dataset(dir.path(), "ds", &[]);
     assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
     assert_all_named(&stderr(&r), &ds, &forged, "stages.1.max_wear_gear_um");
+}
+
+#[test]
+fn a_resume_refuses_an_indicator_forged_in_any_record() {
+    // Recomputed from each record's own signal file: no solve, no sample.
+    let f = resume_forged(&|l| scale(&mut l["indicators"][0]["kurtosis"], 1.01));
+    assert_eq!(f.resume.status.code(), Some(2), "{}", stderr(&f.resume));
+    assert_all_named(
+        &stderr(&f.resume),
+        &f.ds,
+        &f.forged,
+        "indicators.0.kurtosis",
+    );
+    assert!(
+        files(&f.ds) == f.before,
+        "a refused resume changed a record"
+    );
+}
+
+/// The float32 columns of a record's Parquet file, by name, read row by row (the
+/// reference reader's record API, not the column reader gearwear uses).
+fn parquet_columns(path: &Path) -> Vec<(String, Vec<f64>)> {
+    let r = SerializedFileReader::new(std::fs::File::open(path).unwrap()).unwrap();
+    let names: Vec<String> = (r.metadata().file_metadata().schema_descr().columns())
+        .iter()
+        .map(|c| c.name().to_owned())
+        .collect();
+    let mut cols = vec![Vec::new(); names.len()];
+    for row in r.get_row_iter(None).unwrap() {
+        for (j, (_, f)) in row.unwrap().get_column_iter().enumerate() {
+            match f {
+                Field::Float(v) => cols[j].push(f64::from(*v)),
+                other => panic!("column {} holds {other:?}, not a float", names[j]),
+            }
+        }
+    }
+    names.into_iter().zip(cols).collect()
+}
+
+#[test]
+fn every_record_s_signal_indicators_are_those_of_its_stored_samples() {
+    // What a PHM engineer checks first: load a record's file, compute the RMS, crest
+    // factor and kurtosis, compare with the label. Computed here from the file's float32
+    // samples by the textbook formulas; summed in sample order as gearwear does, so the
+    // only difference is the order of the kurtosis' moments (bound: N eps ~ 3e-12 for the
+    // 25 600 samples of a second at 25.6 kHz). A label computed from the samples before
+    // their rounding to float32 differs by ~1e-10 (RMS) and ~3e-8 (crest factor).
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("design.toml"), pair_design(3)).unwrap();
+    ok(&dataset(dir.path(), "ds", &[]));
+    let ds = dir.path().join("ds");
+    for id in 0..3 {
+        let car: Value = serde_json::from_slice(
+            &std::fs::read(ds.join(format!("records/{id:07}.json"))).unwrap(),
+        )
+        .unwrap();
+        let labels = &car["labels"];
+        let columns = parquet_columns(&ds.join(labels["file"].as_str().unwrap()));
+        let indicators = labels["indicators"].as_array().unwrap();
+        assert_eq!(
+            indicators.len() + 1,
+            columns.len(),
+            "a column per channel and the tachometer"
+        );
+        for (ind, (name, x)) in indicators.iter().zip(&columns) {
+            assert!(name.starts_with(ind["channel"].as_str().unwrap()), "{name}");
+            let n = x.len() as f64;
+            let ms = x.iter().map(|v| v * v).sum::<f64>() / n;
+            let rms = ms.sqrt();
+            let peak = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let mean = x.iter().sum::<f64>() / n;
+            let m2 = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n;
+            let m4 = x.iter().map(|v| (v - mean).powi(4)).sum::<f64>() / n;
+            let close = |label: &str, want: f64| {
+                let got = ind[label].as_f64().unwrap();
+                assert!(
+                    (got - want).abs() <= 4e-12 * want.abs(),
+                    "record {id} {name} {label}: label {got}, from the file {want}"
+                );
+            };
+            close("rms", rms);
+            close("crest_factor", peak / rms);
+            close("kurtosis", m4 / (m2 * m2));
+        }
+    }
 }

@@ -109,8 +109,11 @@ fn a_one_stage_train_gives_the_single_pair_dataset() {
         assert_eq!(s1, p.max(g));
         assert_eq!(ib["cycles_stage1"][i], ia["cycles"][i]);
         assert_eq!(ib["mesh_hz_stage1"][i], ia["mesh_hz"][i]);
-        assert_eq!(ib["limiting_stage"][i], "1");
+        // New teeth (the state at 0 cycles) have no limiting stage (0): no mesh has worn.
+        let limiting = if s1 > 0.0 { "1" } else { "0" };
+        assert_eq!(ib["limiting_stage"][i], limiting, "record {i}");
     }
+    assert_eq!(ib["cycles"][0], "0", "the first state is new teeth");
 }
 
 #[test]

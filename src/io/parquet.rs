@@ -149,6 +149,84 @@ pub fn parquet_bytes(
     Ok(buf)
 }
 
+/// The FLOAT columns `names` of the Parquet `bytes` of a file [`parquet_bytes`] wrote,
+/// each of `rows` values, in the order of `names`. A file read back is checked before its
+/// values are used: it must hold one row group of `rows` rows and exactly the columns
+/// `names`, each FLOAT, else an error says what differs. The bytes may be anyone's (a
+/// dataset folder is a user's), so a panic of the reader on a malformed file is caught
+/// and returned as an error, not let through.
+pub fn read_f32_columns(
+    bytes: Vec<u8>,
+    names: &[String],
+    rows: usize,
+) -> Result<Vec<Vec<f32>>, ParquetError> {
+    std::panic::catch_unwind(move || f32_columns(bytes, names, rows))
+        .unwrap_or_else(|_| Err(ParquetError::General("the file could not be read".into())))
+}
+
+/// [`read_f32_columns`] without the panic guard.
+fn f32_columns(
+    bytes: Vec<u8>,
+    names: &[String],
+    rows: usize,
+) -> Result<Vec<Vec<f32>>, ParquetError> {
+    use parquet::column::reader::ColumnReader;
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    let general = |m: String| ParquetError::General(m);
+    let r = SerializedFileReader::new(bytes::Bytes::from(bytes))?;
+    let meta = r.metadata();
+    if meta.num_row_groups() != 1 || meta.row_group(0).num_rows() != rows as i64 {
+        return Err(general(format!(
+            "{} row groups of {} rows where one of {rows} was written",
+            meta.num_row_groups(),
+            meta.file_metadata().num_rows()
+        )));
+    }
+    let schema = meta.file_metadata().schema_descr();
+    let found: Vec<(String, PhysicalType)> = (0..schema.num_columns())
+        .map(|i| {
+            (
+                schema.column(i).name().to_owned(),
+                schema.column(i).physical_type(),
+            )
+        })
+        .collect();
+    let expected: Vec<(String, PhysicalType)> = names
+        .iter()
+        .map(|n| (n.clone(), PhysicalType::FLOAT))
+        .collect();
+    if found != expected {
+        return Err(general(format!(
+            "columns {:?} where {names:?} (float32) were written",
+            found.iter().map(|(n, _)| n).collect::<Vec<_>>()
+        )));
+    }
+    let group = r.get_row_group(0)?;
+    (0..names.len())
+        .map(|i| {
+            let ColumnReader::FloatColumnReader(mut c) = group.get_column_reader(i)? else {
+                return Err(general(format!("column `{}` is not float32", names[i])));
+            };
+            let mut values = Vec::with_capacity(rows);
+            while values.len() < rows {
+                let (records, _, _) =
+                    c.read_records(rows - values.len(), None, None, &mut values)?;
+                if records == 0 {
+                    break;
+                }
+            }
+            if values.len() != rows {
+                return Err(general(format!(
+                    "column `{}` holds {} values, not {rows}",
+                    names[i],
+                    values.len()
+                )));
+            }
+            Ok(values)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -185,6 +263,31 @@ mod tests {
         assert_eq!(row1[1], Field::Float(-2.25));
         assert_eq!(row1[2], Field::Long(8));
         assert_eq!(row1[3], Field::Str("crack".into()));
+    }
+
+    #[test]
+    fn float_columns_read_back_as_written_and_other_files_are_refused() {
+        let cols = vec![
+            Column::new("a_g", ColumnData::F32(vec![1.5, -2.25, f32::MIN_POSITIVE])),
+            Column::new("tachometer_v", ColumnData::F32(vec![0.0, 5.0, 5.0])),
+        ];
+        let bytes = parquet_bytes(&cols, &[]).unwrap();
+        let names = |n: &[&str]| n.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let read = read_f32_columns(bytes.clone(), &names(&["a_g", "tachometer_v"]), 3).unwrap();
+        assert_eq!(read[0], vec![1.5, -2.25, f32::MIN_POSITIVE]);
+        assert_eq!(read[1], vec![0.0, 5.0, 5.0]);
+        // Another column name, count or length, a double column, or bytes that are no
+        // Parquet file: an error, never values.
+        assert!(read_f32_columns(bytes.clone(), &names(&["b_g", "tachometer_v"]), 3).is_err());
+        assert!(read_f32_columns(bytes.clone(), &names(&["a_g"]), 3).is_err());
+        assert!(read_f32_columns(bytes.clone(), &names(&["a_g", "tachometer_v"]), 4).is_err());
+        let doubles =
+            parquet_bytes(&[Column::new("a_g", ColumnData::F64(vec![1.0]))], &[]).unwrap();
+        assert!(read_f32_columns(doubles, &names(&["a_g"]), 1).is_err());
+        assert!(read_f32_columns(b"PAR1 not a file PAR1".to_vec(), &names(&["a_g"]), 1).is_err());
+        let mut cut = bytes.clone();
+        cut.truncate(bytes.len() / 2);
+        assert!(read_f32_columns(cut, &names(&["a_g", "tachometer_v"]), 3).is_err());
     }
 
     #[test]

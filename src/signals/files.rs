@@ -9,7 +9,7 @@
 
 use super::chain::ChannelUnit;
 use super::record::Record;
-use crate::io::parquet::{parquet_bytes, Column, ColumnData};
+use crate::io::parquet::{parquet_bytes, read_f32_columns, Column, ColumnData};
 use crate::io::Table;
 use parquet::errors::ParquetError;
 use serde_json::{json, Map, Value};
@@ -73,4 +73,31 @@ pub(crate) fn record_table(record: &Record, unit: ChannelUnit) -> Table {
         t = t.col(&channel_column(name, unit), f32s(x));
     }
     t.col(TACHOMETER_COLUMN, f32s(&record.tachometer_v))
+}
+
+/// The record held in the Parquet bytes `signal` of a record with the channels `sensors`
+/// (in order) in `unit`, `samples` samples at `sampling_rate_hz`, as [`record_parquet`]
+/// writes it: what its indicators are recomputed from (the file must have exactly those
+/// columns and samples, `io::parquet::read_f32_columns`).
+pub(crate) fn stored_record(
+    signal: Vec<u8>,
+    sensors: &[String],
+    unit: ChannelUnit,
+    samples: usize,
+    sampling_rate_hz: f64,
+) -> Result<Record, ParquetError> {
+    let mut names: Vec<String> = sensors.iter().map(|s| channel_column(s, unit)).collect();
+    names.push(TACHOMETER_COLUMN.to_owned());
+    let mut columns = read_f32_columns(signal, &names, samples)?;
+    let widen = |v: Vec<f32>| v.into_iter().map(f64::from).collect::<Vec<f64>>();
+    let tachometer_v = widen(columns.pop().unwrap_or_default());
+    Ok(Record {
+        sampling_rate_hz,
+        channels: sensors
+            .iter()
+            .cloned()
+            .zip(columns.into_iter().map(widen))
+            .collect(),
+        tachometer_v,
+    })
 }

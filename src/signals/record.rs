@@ -11,7 +11,10 @@
 //! 4. both sampled at n / f_s from t = 0 (mesh phase 0, tachometer shaft at angle 0)
 //!    for the record's length;
 //! 5. converted to the channel unit, and measurement noise added (`super::noise`), one
-//!    stream per channel: stream c of `noise_seed` for channel c.
+//!    stream per channel: stream c of `noise_seed` for channel c;
+//! 6. every sample rounded to float32, the precision of the record's files
+//!    (`super::files`; [`Record::round_to_stored`]): the indicators are computed from
+//!    the numbers a reader of the files gets, so they can be recomputed from the files.
 
 use super::antialias::AntiAliasFilter;
 use super::bearing::BearingForces;
@@ -79,6 +82,14 @@ impl Record {
     /// Time of sample n, s.
     pub fn time_s(&self, n: usize) -> f64 {
         n as f64 / self.sampling_rate_hz
+    }
+
+    /// Round every sample to float32 (step 6 of the module docs), as the record's files
+    /// hold it (`super::files`); a second call changes nothing.
+    pub fn round_to_stored(&mut self) {
+        let round = |v: &mut Vec<f64>| v.iter_mut().for_each(|x| *x = *x as f32 as f64);
+        self.channels.iter_mut().for_each(|(_, x)| round(x));
+        round(&mut self.tachometer_v);
     }
 }
 

@@ -128,6 +128,7 @@ pub fn record_from(
     let n = chain.samples(kin.shaft_hz(chain.tachometer.shaft));
     let mut record = p.render(chain, n);
     add_noise(&mut record, chain);
+    record.round_to_stored();
     let analysis = analyse(&record, &kin, &chain.tachometer, setup.components);
     SignalRecord {
         input_speed_hz: (kin.pinion_hz, kin.pinion_hz),
@@ -167,6 +168,7 @@ pub fn record_case(
     let (mut record, speeds) = transient_clean_record(model, setup, wear)?;
     let response = ResponseSummary::of(&model.dynamic(wear, &ExternalError::none())?);
     add_noise(&mut record, &setup.chain);
+    record.round_to_stored();
     let kin = kinematics(model);
     let analysis = analyse(&record, &kin, &setup.chain.tachometer, setup.components);
     Ok(SignalRecord {

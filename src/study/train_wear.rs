@@ -80,12 +80,14 @@ impl TrainWearRun {
 }
 
 /// The mesh (0-based) with the deepest wear (either flank) of the meshes' `wears` and
-/// that depth, m (the last of equals); None for no mesh.
+/// that depth, m (the last of equals); None for no mesh, and while no mesh has worn (new
+/// teeth: every mesh's depth 0, none deeper than another).
 pub fn limiting_of<'a>(wears: impl Iterator<Item = &'a WearState>) -> Option<(usize, f64)> {
     wears
         .map(|w| w.max_pinion_m().max(w.max_gear_m()))
         .enumerate()
         .max_by(|a, b| a.1.total_cmp(&b.1))
+        .filter(|(_, depth)| *depth > 0.0)
 }
 
 /// What the update after an update gives.

@@ -263,7 +263,9 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         && channels_match(l, &body["record"]["sensors"])
         && l.stages.len() == len(&body["train"]["conditions"][ix.condition]["stages"])
         && l.stages.iter().enumerate().all(|(k, s)| s.stage == k + 1)
-        && l.limiting_stage.is_some() != l.stages.is_empty()
+        // A single pair has no limiting stage; a train's is absent only for new teeth
+        // (every kept record's labels are recomputed besides: `super::label_check`).
+        && (l.limiting_stage.is_none() || !l.stages.is_empty())
 }
 
 /// Whether the record's indicator channels are the description's sensors, in order: a

@@ -3,13 +3,19 @@
 //! and indicators takes a steady-state solve, so a resume or a merge recomputes only a
 //! sample of states (`super::verify`); its labels (wear depths per flank, tooth and
 //! stage, cycles, remaining cycles, limiting stage, speed, load, mesh frequency, fault
-//! tables, noise seed) need no solve, so every kept record's are recomputed here: a
-//! label edited in a record no sample reaches is found all the same.
+//! tables, noise seed) need no solve, and its indicators are a function of its signal
+//! file as stored (`Record::round_to_stored`): so every kept record's labels are
+//! recomputed here, the indicators from the record's own signal file (whose checksum the
+//! sidecar holds). A label or indicator edited in a record no sample reaches is found all
+//! the same; a signal edited together with its checksum only by the sample.
 
-use super::folder::{finished, sidecar_rel};
+use super::folder::{finished, read_in, sidecar_rel, Sidecar};
 use super::kept::{first_difference, Kept};
 use super::state_files::{state_inputs, state_model, StateJob};
-use crate::study::dataset::records::{expected_labels, RecordLabels};
+use crate::checksum::sha256_hex;
+use crate::study::dataset::records::{
+    expected_labels, stored_indicators, RecordLabels, StateInputs,
+};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -42,16 +48,16 @@ pub(super) fn kept_label_problems(
 
 /// [`kept_label_problems`] of the states of one condition, speed and load.
 fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> Vec<String> {
-    let kept_of = |p: usize| -> Vec<(usize, RecordLabels)> {
+    let kept_of = |p: usize| -> Vec<(usize, Sidecar)> {
         let cars: Vec<_> = (0..job.plan.realisations)
             .filter_map(|r| finished(root, job.plan.record_id(p, r), job.key).map(|s| (r, s)))
             .collect();
         if kept == Kept::WholeStates && cars.len() < job.plan.realisations {
             return Vec::new();
         }
-        cars.into_iter().map(|(r, s)| (r, s.labels)).collect()
+        cars
     };
-    let held: Vec<(usize, Vec<(usize, RecordLabels)>)> = states
+    let held: Vec<(usize, Vec<(usize, Sidecar)>)> = states
         .iter()
         .map(|&p| (p, kept_of(p)))
         .filter(|(_, k)| !k.is_empty())
@@ -63,31 +69,59 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
         Ok(m) => m,
         Err(e) => return vec![unrecomputable(root, *first, &e)],
     };
-    let mut problems = Vec::new();
-    for (p, records) in held {
-        let ix = job.plan.state_index(p);
-        let expected =
-            state_inputs(job, ix, &model).and_then(|inp| expected_labels(&inp, job.plan, p, ix));
-        let expected = match expected {
-            Ok(e) => e,
-            Err(e) => {
-                problems.push(unrecomputable(root, p, &e));
-                continue;
+    // The states in parallel: each kept record's signal is read and analysed (the
+    // check's main cost, about a record's analysis each).
+    held.into_par_iter()
+        .flat_map_iter(|(p, records)| {
+            let ix = job.plan.state_index(p);
+            let labelled = state_inputs(job, ix, &model).and_then(|inp| {
+                let expected = expected_labels(&inp, job.plan, p, ix)?;
+                Ok((inp, expected))
+            });
+            match labelled {
+                Ok((inp, expected)) => records
+                    .into_iter()
+                    .filter_map(|(r, car)| record_problem(root, &inp, car, &expected[r], kept))
+                    .collect::<Vec<_>>(),
+                Err(e) => vec![unrecomputable(root, p, &e)],
             }
-        };
-        for (r, mut labels) in records {
-            labels.indicators.clear();
-            if let Some(what) = label_difference(&labels, &expected[r]) {
-                problems.push(format!(
-                    "{}: record {}'s label {what}: {}",
-                    root.join(sidecar_rel(labels.record_id)).display(),
-                    labels.record_id,
-                    advice(kept)
-                ));
-            }
+        })
+        .collect()
+}
+
+/// The message of kept record `car` whose labels differ from `expected` (its indicators
+/// recomputed here from its stored signal file, `records::stored_indicators`), if any.
+fn record_problem(
+    root: &Path,
+    inp: &StateInputs,
+    car: Sidecar,
+    expected: &RecordLabels,
+    kept: Kept,
+) -> Option<String> {
+    let at = root.join(sidecar_rel(car.labels.record_id));
+    let id = car.labels.record_id;
+    // The signal file `finished` found whole; read again, and checked again against the
+    // sidecar's checksum, since the folder may change in between.
+    let signal = read_in(root, &car.labels.file)
+        .filter(|b| sha256_hex(b) == car.signal_sha256)
+        .ok_or_else(|| anyhow::anyhow!("it changed while it was checked"));
+    let mut expected = expected.clone();
+    match signal.and_then(|b| stored_indicators(inp, b)) {
+        Ok(indicators) => expected.indicators = indicators,
+        Err(e) => {
+            return Some(format!(
+                "{}: record {id}'s signal file cannot be read back ({e:#}): {}",
+                at.display(),
+                advice(kept)
+            ))
         }
     }
-    problems
+    let what = label_difference(&car.labels, &expected)?;
+    Some(format!(
+        "{}: record {id}'s label {what}: {}",
+        at.display(),
+        advice(kept)
+    ))
 }
 
 /// The first field in which `kept` and `expected` differ, with both values, `None` when
@@ -99,7 +133,7 @@ fn label_difference(kept: &RecordLabels, expected: &RecordLabels) -> Option<Stri
     let json = |l: &RecordLabels| serde_json::to_value(l).unwrap_or_default();
     let (at, a, b) = first_difference(&json(kept), &json(expected), "")?;
     Some(format!(
-        "`{at}` is {a} in the file, {b} from the design and its verified wear trajectory"
+        "`{at}` is {a} in the file, {b} from the design, its verified wear trajectory and the record's signal file"
     ))
 }
 

@@ -48,7 +48,7 @@ pub const STAGE_COLUMNS: [(&str, &str, &str); 5] = [
 pub const LIMITING_STAGE_COLUMN: (&str, &str, &str) = (
     "limiting_stage",
     "-",
-    "the train's stage (1-based) whose mesh has the deepest wear at the state (either flank): the mesh that limits the train's life",
+    "the train's stage (1-based) whose mesh has the deepest wear at the state (either flank): the mesh that limits the train's life; 0 while no mesh has worn (new teeth)",
 );
 
 /// The stage `k` (1-based) and the meaning of a stage column `<prefix>_stage<k>`.

@@ -9,6 +9,7 @@ use crate::config::teeth::Member;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::period_search::DynamicsError;
 use crate::signals::analysis::{analyse, ChannelIndicators};
+use crate::signals::files::stored_record;
 use crate::signals::record::{add_noise, Record};
 use crate::signals::setup::ChainSetup;
 use crate::study::signal_record::{kinematics, periodic_record, train_meshes};
@@ -57,7 +58,8 @@ pub struct RecordLabels {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<StageLabels>,
     /// A train's stage (1-based) whose mesh has the deepest wear at the state (either
-    /// flank; the last of equals, as `gearwear wear` names the limiting mesh).
+    /// flank; the last of equals, as `gearwear wear` names the limiting mesh); absent
+    /// while no mesh has worn (new teeth).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limiting_stage: Option<usize>,
     /// The design's failure limit on the deepest wear, µm.
@@ -217,20 +219,55 @@ pub fn state_records(
     }
     .map_err(|e: DynamicsError| anyhow::anyhow!("state {p} ({} cycles): {e}", inp.cycles))?;
     let periodic = periodic_record(inp.model, inp.setup, &r);
-    let kin = kinematics(inp.model);
     let mut chain = inp.setup.chain.clone();
-    let clean = periodic.render(&chain, chain.samples(kin.shaft_hz(chain.tachometer.shaft)));
+    let clean = periodic.render(&chain, record_samples(inp));
     let wear = wear_labels(inp.model, &wears);
     for realisation in 0..plan.realisations {
         let mut labels = labels_without_indicators(inp, plan, (p, index), &wear, realisation);
         chain.acquisition.noise_seed = labels.noise_seed;
         let mut rec = clean.clone();
         add_noise(&mut rec, &chain);
-        let analysis = analyse(&rec, &kin, &chain.tachometer, inp.setup.components);
-        labels.indicators = analysis.iter().map(|c| c.indicators()).collect();
+        rec.round_to_stored();
+        labels.indicators = indicators_of(inp, &rec);
         emit(labels, rec)?;
     }
     Ok(())
+}
+
+/// Samples per channel of a record of `inp`'s state (the chain's record length at the
+/// tachometer shaft's speed).
+fn record_samples(inp: &StateInputs) -> usize {
+    let chain = &inp.setup.chain;
+    chain.samples(kinematics(inp.model).shaft_hz(chain.tachometer.shaft))
+}
+
+/// The indicators of `rec`, a record of `inp`'s state, as its labels give them.
+fn indicators_of(inp: &StateInputs, rec: &Record) -> Vec<ChannelIndicators> {
+    let (kin, chain) = (kinematics(inp.model), &inp.setup.chain);
+    analyse(rec, &kin, &chain.tachometer, inp.setup.components)
+        .iter()
+        .map(|c| c.indicators())
+        .collect()
+}
+
+/// The indicators of the record stored in the Parquet bytes `signal` (a signal file of
+/// `inp`'s state, `signals::files::record_parquet`), recomputed from the stored samples:
+/// the indicators its labels must hold, since a record's indicators are computed from its
+/// samples as stored (`Record::round_to_stored`). Fails when the file does not hold the
+/// design's channels and samples.
+pub fn stored_indicators(
+    inp: &StateInputs,
+    signal: Vec<u8>,
+) -> anyhow::Result<Vec<ChannelIndicators>> {
+    let acq = &inp.setup.chain.acquisition;
+    let rec = stored_record(
+        signal,
+        &inp.setup.chain.path.sensors,
+        acq.unit,
+        record_samples(inp),
+        acq.sampling_rate_hz,
+    )?;
+    Ok(indicators_of(inp, &rec))
 }
 
 /// The wear labels of a state (every record of it alike).
