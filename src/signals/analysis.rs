@@ -7,7 +7,7 @@ use super::components::{components, ComponentSettings, Components};
 use super::indicators::{ShaftIndicators, SignalIndicators};
 use super::record::{Kinematics, Record};
 use super::tachometer::rising_edges;
-use super::tsa::{synchronous_average, Tsa};
+use super::tsa::{synchronous_averages, Tsa};
 use serde::{Deserialize, Serialize};
 
 /// The TSA of one shaft on one channel, its derived signals and indicators.
@@ -69,7 +69,8 @@ impl ChannelAnalysis {
 }
 
 /// Analyse every channel of `record`: the tachometer's pulse times, then per channel
-/// the signal indicators and the TSA of each shaft (mesh order = that shaft's teeth).
+/// the signal indicators and the TSA of each shaft (mesh order = that shaft's teeth); the
+/// channels' TSAs of one shaft computed together (`tsa::synchronous_averages`).
 pub fn analyse(
     record: &Record,
     kin: &Kinematics,
@@ -78,35 +79,51 @@ pub fn analyse(
 ) -> Vec<ChannelAnalysis> {
     let fs = record.sampling_rate_hz;
     let edges = rising_edges(&record.tachometer_v, fs);
+    let xs: Vec<&[f64]> = record.channels.iter().map(|(_, x)| x.as_slice()).collect();
+    let mut tsas: Vec<Vec<(Shaft, Tsa)>> = vec![Vec::new(); xs.len()];
+    for shaft in [Shaft::Pinion, Shaft::Gear] {
+        let ratio = kin.ratio(shaft, tach.shaft);
+        let by_channel = synchronous_averages(&xs, fs, &edges, tach.pulses_per_revolution, ratio);
+        for (c, tsa) in by_channel.into_iter().flatten().enumerate() {
+            tsas[c].push((shaft, tsa));
+        }
+    }
     record
         .channels
         .iter()
-        .map(|(name, x)| ChannelAnalysis {
+        .zip(tsas)
+        .map(|((name, x), tsas)| ChannelAnalysis {
             name: name.clone(),
             signal: SignalIndicators::of(x),
-            shafts: [Shaft::Pinion, Shaft::Gear]
+            shafts: tsas
                 .into_iter()
-                .filter_map(|shaft| {
-                    let ratio = kin.ratio(shaft, tach.shaft);
-                    let tsa =
-                        synchronous_average(x, fs, &edges, tach.pulses_per_revolution, ratio)?;
-                    let z = shaft.teeth(kin.teeth_pinion, kin.teeth_gear);
-                    // The TSA's passband: orders below the resampling's flat band.
-                    let top = (super::interp::PASSBAND_OVER_FS * fs * tsa.revolution_s).floor();
-                    let settings = ComponentSettings {
-                        top_order: Some(top as usize),
-                        ..settings
-                    };
-                    let c = components(&tsa.values, z, settings);
-                    let indicators = ShaftIndicators::of(&tsa.values, &c, tsa.revolutions);
-                    Some(ShaftAnalysis {
-                        shaft,
-                        tsa,
-                        components: c,
-                        indicators,
-                    })
-                })
+                .map(|(shaft, tsa)| shaft_analysis(shaft, tsa, kin, fs, settings))
                 .collect(),
         })
         .collect()
+}
+
+/// The analysis of one channel's TSA `tsa` of `shaft` (the record sampled at `fs` Hz).
+fn shaft_analysis(
+    shaft: Shaft,
+    tsa: Tsa,
+    kin: &Kinematics,
+    fs: f64,
+    settings: ComponentSettings,
+) -> ShaftAnalysis {
+    let z = shaft.teeth(kin.teeth_pinion, kin.teeth_gear);
+    // The TSA's passband: orders below the resampling's flat band.
+    let top = (super::interp::PASSBAND_OVER_FS * fs * tsa.revolution_s).floor();
+    let settings = ComponentSettings {
+        top_order: Some(top as usize),
+        ..settings
+    };
+    let c = components(&tsa.values, z, settings);
+    let indicators = ShaftIndicators::of(&tsa.values, &c, tsa.revolutions);
+    ShaftAnalysis {
+        shaft,
+        tsa,
+        components: c,
+        indicators,
+    }
 }

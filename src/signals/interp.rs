@@ -63,15 +63,49 @@ fn kernel(table: &[f64], d: f64) -> f64 {
 
 /// `x` (sampled at `fs_hz`, sample 0 at time 0) at time `t_s`.
 pub fn at(x: &[f64], fs_hz: f64, t_s: f64) -> f64 {
-    let table = kernel_table();
-    let u = t_s * fs_hz;
-    let c = u.floor() as isize;
-    let l = HALF_WIDTH as isize;
-    let lo = (c - l + 1).max(0);
-    let hi = (c + l).min(x.len() as isize - 1);
-    (lo..=hi)
-        .map(|n| x[n as usize] * kernel(table, u - n as f64))
-        .sum()
+    Weights::at(x.len(), fs_hz, t_s).apply(x)
+}
+
+/// The kernel's weights of the samples around one instant: what [`at`] sums, computed
+/// once for signals sampled alike (the channels of one record), bit for bit the same.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Weights {
+    /// First sample weighted.
+    first: usize,
+    /// Samples weighted (at most 2 `HALF_WIDTH`).
+    count: usize,
+    /// Their weights, in sample order.
+    w: [f64; 2 * HALF_WIDTH],
+}
+
+impl Weights {
+    /// The weights at time `t_s` of a signal of `len` samples at `fs_hz`.
+    pub(crate) fn at(len: usize, fs_hz: f64, t_s: f64) -> Self {
+        let table = kernel_table();
+        let u = t_s * fs_hz;
+        let c = u.floor() as isize;
+        let l = HALF_WIDTH as isize;
+        let lo = (c - l + 1).max(0);
+        let hi = (c + l).min(len as isize - 1);
+        let mut w = [0.0; 2 * HALF_WIDTH];
+        let count = (hi - lo + 1).max(0) as usize;
+        for (k, n) in (lo..=hi).enumerate() {
+            w[k] = kernel(table, u - n as f64);
+        }
+        // Nothing weighted (an instant beyond the ends): an empty sum, as `at` gave.
+        let first = if count == 0 { 0 } else { lo as usize };
+        Self { first, count, w }
+    }
+
+    /// The interpolated value of `x` (the signal the weights were made for).
+    #[inline]
+    pub(crate) fn apply(&self, x: &[f64]) -> f64 {
+        x[self.first..self.first + self.count]
+            .iter()
+            .zip(&self.w)
+            .map(|(x, w)| x * w)
+            .sum()
+    }
 }
 
 /// Whether `t_s` lies far enough from both ends of `n` samples at `fs_hz` for the

@@ -53,6 +53,8 @@ pub(crate) fn time_at_angle(edges: &[f64], n: usize, theta: f64) -> f64 {
 /// The TSA of `x` (sampled at `fs_hz`) for the shaft that turns `ratio` times per
 /// revolution of the tachometer's shaft, whose pulses (`n` per revolution) came at
 /// `edges`. `None` when the record holds no complete revolution inside its usable part.
+/// (The analysis averages its channels together, [`synchronous_averages`].)
+#[cfg(test)]
 pub fn synchronous_average(
     x: &[f64],
     fs_hz: f64,
@@ -60,7 +62,21 @@ pub fn synchronous_average(
     n: usize,
     ratio: f64,
 ) -> Option<Tsa> {
-    if edges.len() < 2 || ratio <= 0.0 {
+    synchronous_averages(&[x], fs_hz, edges, n, ratio).map(|mut t| t.remove(0))
+}
+
+/// [`synchronous_average`] of every channel of `xs` (equal lengths, sampled alike): the
+/// angle grid's times and interpolation weights computed once for all of them (the TSA's
+/// main cost), each channel's average the same, bit for bit, as alone.
+pub fn synchronous_averages(
+    xs: &[&[f64]],
+    fs_hz: f64,
+    edges: &[f64],
+    n: usize,
+    ratio: f64,
+) -> Option<Vec<Tsa>> {
+    let len = xs.first()?.len();
+    if edges.len() < 2 || ratio <= 0.0 || xs.iter().any(|x| x.len() != len) {
         return None;
     }
     let two_pi = 2.0 * std::f64::consts::PI;
@@ -70,7 +86,7 @@ pub fn synchronous_average(
     let m = ((fs_hz * revolution_s).ceil() as usize)
         .next_power_of_two()
         .max(16);
-    let mut sum = vec![0.0; m];
+    let mut sums = vec![vec![0.0; m]; xs.len()];
     let mut revolutions = 0;
     let mut r = 0;
     loop {
@@ -86,18 +102,25 @@ pub fn synchronous_average(
             .collect();
         let end = time_at_angle(edges, n, end_theta);
         r += 1;
-        if !interp::inside(x.len(), fs_hz, times[0]) || !interp::inside(x.len(), fs_hz, end) {
+        if !interp::inside(len, fs_hz, times[0]) || !interp::inside(len, fs_hz, end) {
             continue;
         }
-        for (s, t) in sum.iter_mut().zip(&times) {
-            *s += interp::at(x, fs_hz, *t);
+        for (i, t) in times.iter().enumerate() {
+            let w = interp::Weights::at(len, fs_hz, *t);
+            for (sum, x) in sums.iter_mut().zip(xs) {
+                sum[i] += w.apply(x);
+            }
         }
         revolutions += 1;
     }
-    (revolutions > 0).then(|| Tsa {
-        values: sum.iter().map(|s| s / revolutions as f64).collect(),
-        revolutions,
-        revolution_s,
+    (revolutions > 0).then(|| {
+        sums.into_iter()
+            .map(|sum| Tsa {
+                values: sum.iter().map(|s| s / revolutions as f64).collect(),
+                revolutions,
+                revolution_s,
+            })
+            .collect()
     })
 }
 
