@@ -8,7 +8,7 @@
 //! `run` with `gearwear wear`'s message; a helix angle of 0 is still the spur pair's run.
 
 mod common;
-use common::resume::{cut_log, cut_then_resumed_is_unchanged};
+use common::resume::{cut_log, cut_then_resumed_is_unchanged, edit_update, refused};
 use common::{assert_nested_study, gearwear, kill_when, published, read_csv, rejected, stderr};
 use std::path::{Path, PathBuf};
 
@@ -186,7 +186,18 @@ fn a_killed_or_cut_helical_run_resumes_to_the_bytes_of_an_uninterrupted_one() {
         cut_log(&out.join("checkpoint_dynamic.jsonl"), 2, true);
         cut_log(&out.join("checkpoint_quasi_static.jsonl"), 1, false);
     };
-    cut_then_resumed_is_unchanged(&args("run", &again, &[]), &again, &cut_logs);
+    let a = args("run", &again, &[]);
+    cut_then_resumed_is_unchanged(&a, &again, &cut_logs);
+    // A run started afresh would give the same bytes: that the resume continues the logs
+    // shows in its refusal of one whose update 2 was edited (its checksum left as it was).
+    edit_update(&again.join("checkpoint_dynamic.jsonl"), 2, false, &|v| {
+        v["wear"]["cycles"] = serde_json::json!(v["wear"]["cycles"].as_f64().unwrap() + 1.0);
+    });
+    refused(
+        &a,
+        "an edited log",
+        &["checkpoint_dynamic.jsonl", "line 4", "checksum"],
+    );
 }
 
 #[test]
