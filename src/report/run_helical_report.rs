@@ -143,9 +143,10 @@ fn dynamics_section(p: &Parts, states: &Value) -> Section {
     let rows = (0..n)
         .map(|i| {
             let f = |k: &str| at(states, &format!("/{i}/{k}"));
-            let state = match states[i]["max_wear_um"].as_f64() {
-                Some(w) if w == 0.0 => "new teeth".to_string(),
-                _ => format!("{} µm", f("max_wear_um")),
+            let state = if states[i]["max_wear_um"].as_f64() == Some(0.0) {
+                "new teeth".to_string()
+            } else {
+                format!("{} µm", f("max_wear_um"))
             };
             vec![
                 state,
