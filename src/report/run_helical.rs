@@ -92,7 +92,7 @@ pub fn helical_run_artifacts(
         wear_paths.push(format!("wear/wear_map_{}.png", r.mode.name()));
         wear_paths.push(format!("wear/worn_profiles_{}.png", r.mode.name()));
     }
-    let note = "from the wear study; a profile is the mean over the face slices, the wear map each slice's";
+    let note = "from the wear study";
     let refs: Vec<(&str, &str)> = wear_paths.iter().map(|p| (p.as_str(), note)).collect();
     let wear_figures = embed_all(&mut a, &refs);
     let states = wear_states_json(&study.wear_states);
