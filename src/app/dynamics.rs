@@ -5,7 +5,9 @@ use super::observer::Observer;
 use super::{budget, build_dynamics_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::response::DynamicResponse;
 use crate::remedy::Arg;
+use crate::report::artifacts::Artifacts;
 use crate::report::dynamics::dynamics_artifacts;
 use crate::report::dynamics_planetary::planetary_dynamics_artifacts;
 use crate::report::face_load::add_dynamic_face_load_artifacts;
@@ -15,6 +17,7 @@ use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::face_load_dynamic::DynamicFaceLoad;
 use crate::study::planetary_dynamics::PlanetaryDynamics;
+use crate::study::Model;
 use crate::wear::WearState;
 use std::path::PathBuf;
 
@@ -82,13 +85,7 @@ impl Job for DynamicsJob {
             "new teeth"
         };
         let meta = RunMetadata::of_model(self.name(), &model);
-        let mut artifacts = dynamics_artifacts(&model, &r, label);
-        if let Some(d) = DynamicFaceLoad::of(&model, &r, &external) {
-            let lead = model.helical.as_ref().and_then(|h| h.lead.as_ref());
-            if let Some(l) = lead {
-                add_dynamic_face_load_artifacts(&d, &l.static_load, &mut artifacts);
-            }
-        }
+        let artifacts = pair_dynamics_artifacts(&model, &r, &external, label);
         publish::publish(
             out,
             artifacts.with_figure_output(figures),
@@ -96,6 +93,26 @@ impl Job for DynamicsJob {
             observer,
         )
     }
+}
+
+/// What `gearwear dynamics` writes for the response `r` of a single pair's `model` to
+/// `external` (`label` names the state in figure titles): `report::dynamics`' artifacts,
+/// with a helical pair's dynamic face load when it has lead gaps (`report::face_load`).
+/// `gearwear run` on a helical pair nests the same artifacts.
+pub(crate) fn pair_dynamics_artifacts(
+    model: &Model,
+    r: &DynamicResponse,
+    external: &ExternalError,
+    label: &str,
+) -> Artifacts {
+    let mut artifacts = dynamics_artifacts(model, r, label);
+    if let Some(d) = DynamicFaceLoad::of(model, r, external) {
+        let lead = model.helical.as_ref().and_then(|h| h.lead.as_ref());
+        if let Some(l) = lead {
+            add_dynamic_face_load_artifacts(&d, &l.static_load, &mut artifacts);
+        }
+    }
+    artifacts
 }
 
 impl DynamicsJob {

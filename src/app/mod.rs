@@ -55,6 +55,7 @@ pub mod predict_merge;
 mod predict_train;
 pub mod publish;
 pub mod run;
+pub mod run_helical;
 pub mod run_planetary;
 pub mod run_train;
 pub mod settings;

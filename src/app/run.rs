@@ -1,7 +1,7 @@
 //! The run job: the paper's whole section 4 (mesh stiffness, the dynamic and quasi-static
 //! wear studies with checkpoints, the dynamic response at three wear states) with its
 //! report, figures and the CSV behind each. On a gear train, `app::run_train`; on a
-//! planetary set, `app::run_planetary`.
+//! planetary set, `app::run_planetary`; on a helical pair, `app::run_helical`.
 
 use super::observer::{keep_going, Observer};
 use super::wear_runs::{run_modes, stops};
@@ -49,6 +49,9 @@ impl Job for RunJob {
         }
         if self.case.planetary.is_some() {
             return super::run_planetary::run_of_planetary(self, figures, observer);
+        }
+        if self.case.gear.helix_angle_deg != 0.0 {
+            return super::run_helical::run_of_helical(self, figures, observer);
         }
         budget::check(&self.case, Cost::Run, self.budget.as_ref())?;
         if self.case.load_spectrum.is_some() {

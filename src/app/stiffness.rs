@@ -105,14 +105,14 @@ impl StiffnessJob {
         figures: FigureOutput,
         observer: &dyn Observer,
     ) -> Result<Outcome, JobError> {
-        let model = HelicalModel::from_case(&self.case)?;
-        let load = face_load(&model)?;
-        for w in &model.warnings {
+        let (artifacts, warnings) = helical_stiffness_study(&self.case)?;
+        for w in &warnings {
             observer.warning(w);
         }
+        let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::new(self.name(), &self.case);
-        let artifacts = helical_stiffness_artifacts(&model);
-        self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
+        let artifacts = artifacts.with_figure_output(figures);
+        publish::publish(out, artifacts, Some(&meta), observer)
     }
 
     /// Warn of the face load's warnings, open the folder and publish `artifacts` with the
@@ -153,4 +153,22 @@ impl StiffnessJob {
         let artifacts = stiffness_artifacts(&model);
         self.publish_with_face_load(artifacts, &load, &meta, figures, observer)
     }
+}
+
+/// What `gearwear stiffness` writes for the helical pair of `case` (the slice model,
+/// `study::helical`, with its face load, `report::face_load`), and its warnings in the
+/// order the job gives them (the slice model's, then the face load's); `gearwear run` on a
+/// helical pair nests the same artifacts.
+pub(crate) fn helical_stiffness_study(case: &Case) -> Result<(Artifacts, Vec<String>), JobError> {
+    let model = HelicalModel::from_case(case)?;
+    let load = face_load(&model)?;
+    let mut artifacts = helical_stiffness_artifacts(&model);
+    add_face_load_artifacts(&load, &mut artifacts);
+    let warnings = model
+        .warnings
+        .iter()
+        .chain(&load.warnings)
+        .cloned()
+        .collect();
+    Ok((artifacts, warnings))
 }

@@ -59,12 +59,7 @@ impl Job for WearJob {
         if !self.case.stage.is_empty() {
             return super::wear_train::wear_of_train(self, figures, observer);
         }
-        if self.case.load_spectrum.is_some() && self.case.gear.helix_angle_deg != 0.0 {
-            return Err(JobError::input(crate::remedy::Problem::new(format!(
-                "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or set the angle to 0 for a spur pair",
-                crate::format::shown(self.case.gear.helix_angle_deg)
-            ))));
-        }
+        refuse_helical_spectrum(&self.case)?;
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::wear_under_spectrum(
@@ -101,4 +96,17 @@ impl Job for WearJob {
         outcome.incomplete = stops(&refs, observer);
         Ok(outcome)
     }
+}
+
+/// A helical pair under a `[load_spectrum]` (exit 2 naming both keys): its wear per slice
+/// is built under one operating point only; `gearwear wear` and `gearwear run` refuse it
+/// before any work.
+pub(crate) fn refuse_helical_spectrum(case: &Case) -> Result<(), JobError> {
+    if case.load_spectrum.is_none() || case.gear.helix_angle_deg == 0.0 {
+        return Ok(());
+    }
+    Err(JobError::input(crate::remedy::Problem::new(format!(
+        "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or set the angle to 0 for a spur pair",
+        crate::format::shown(case.gear.helix_angle_deg)
+    ))))
 }

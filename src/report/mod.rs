@@ -24,6 +24,8 @@ pub mod paper;
 pub mod plot;
 pub mod prognostics;
 pub mod prognostics_tables;
+pub mod run_helical;
+pub(crate) mod run_helical_report;
 pub mod run_planetary;
 pub(crate) mod run_planetary_report;
 pub mod run_report;

@@ -18,7 +18,7 @@ use crate::dynamics::response::{PathSample, Signals};
 use crate::dynamics::summary::velocity_y_spectrum;
 use crate::io::Table;
 use crate::store::RunMetadata;
-use crate::study::paper::PaperStudy;
+use crate::study::paper::{PaperStudy, WearStateResult};
 use crate::study::Model;
 use serde_json::json;
 
@@ -205,6 +205,22 @@ fn fig07_mesh_harmonics(study: &PaperStudy) -> Fig {
     fig("fig07_mesh_harmonics", 7, figure, table)
 }
 
+/// `wear_states` of the summary of `gearwear run`: each state's wear, roughness and the
+/// headline numbers of its dynamic response.
+pub fn wear_states_json(states: &[WearStateResult]) -> serde_json::Value {
+    json!(states.iter().map(|s| json!({
+        "max_wear_um": s.max_wear_um,
+        "roughness_um": s.roughness_um,
+        "dte_max_um": s.summary.dte_max_m * 1e6,
+        "velocity_y_pinion_rms_mm_per_s": s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
+        "mesh_force_mean_n": s.summary.mesh_force_mean_n,
+        "mesh_force_max_n": s.summary.mesh_force_max_n,
+        "mesh_harmonics_mm_per_s": s.summary.velocity_y_pinion_harmonics_m_per_s.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
+        "friction_coefficient_max": s.summary.friction_coefficient_max,
+        "friction_force_max_abs_n": s.summary.friction_force_max_n,
+    })).collect::<Vec<_>>())
+}
+
 /// Every figure of `gearwear run`, in the paper's order, each with its own table
 /// (`st_table`: the mesh-stiffness table of `stiffness_table`).
 pub fn run_figures(model: &Model, study: &PaperStudy, st_table: Table) -> Vec<Fig> {
@@ -288,17 +304,7 @@ pub fn run_artifacts_and_report(
         "paper_case": paper.is_some(),
         "stiffness": st_json,
         "wear_study": wear_summary(Some(&study.dynamic), Some(&study.quasi_static)),
-        "wear_states": study.wear_states.iter().map(|s| json!({
-            "max_wear_um": s.max_wear_um,
-            "roughness_um": s.roughness_um,
-            "dte_max_um": s.summary.dte_max_m * 1e6,
-            "velocity_y_pinion_rms_mm_per_s": s.summary.velocity_y_pinion_rms_m_per_s * 1e3,
-            "mesh_force_mean_n": s.summary.mesh_force_mean_n,
-            "mesh_force_max_n": s.summary.mesh_force_max_n,
-            "mesh_harmonics_mm_per_s": s.summary.velocity_y_pinion_harmonics_m_per_s.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
-            "friction_coefficient_max": s.summary.friction_coefficient_max,
-            "friction_force_max_abs_n": s.summary.friction_force_max_n,
-        })).collect::<Vec<_>>(),
+        "wear_states": wear_states_json(&study.wear_states),
         "warnings": model.warnings,
     });
     let rows = if let Some(twin) = paper {

@@ -41,7 +41,7 @@ pub const EXTENDED_PATH_WARNING: &str = "`contact.path` = \"extended\": the tip 
 
 /// A key of a helical case that the planar dynamics cannot take, and why.
 fn refusal(key: &str, value: &str, why: &str) -> String {
-    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics` and `gearwear wear`: {why}")
+    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`, `gearwear wear` and `gearwear run`: {why}")
 }
 
 /// What a helical case asks that the planar model does not have (see the module docs).

@@ -143,16 +143,16 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 /// Why a helical case cannot be modelled here: the model is planar (rotation and lateral
 /// motion of spur pairs); a helical pair's axial force and tilting moments have no degrees
 /// of freedom yet. Every study built on this constructor (datasets, calibration,
-/// prognostics, `run`) refuses it rather than give a spur result; `dynamics`, `signals`,
-/// `wear` and `sweep` build the planar model (`Model::dynamics_from_case`).
+/// prognostics) refuses it rather than give a spur result; `dynamics`, `signals`, `wear`,
+/// `run` and `sweep` build the planar model (`Model::dynamics_from_case`).
 fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
     if is_train {
         return format!(
-            "`gear.helix_angle_deg` = {helix_angle_deg} on a gear train ([[stage]] tables): the stages of a train are spur pairs so far; a helical pair runs alone (without [[stage]]) in `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear` and `gearwear sweep` (set the angle to 0 for a spur train)"
+            "`gear.helix_angle_deg` = {helix_angle_deg} on a gear train ([[stage]] tables): the stages of a train are spur pairs so far; a helical pair runs alone (without [[stage]]) in `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` (set the angle to 0 for a spur train)"
         );
     }
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear` and the sweeps of both; axial and tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run` and the sweeps of dynamics and wear; axial and tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 

@@ -143,6 +143,9 @@ impl Work {
             // The paper's case runs its study again under the other contact model for the
             // comparison (`config::paper_case::runs_contact_twin`), after the first.
             Job::Run if runs_contact_twin(case) => (2.0, 2.0, 6.0, 5.0),
+            // A helical pair's run adds the steady state of its new teeth to the three
+            // wear states (`app::run_helical`), all four kept together in its report.
+            Job::Run if case.gear.helix_angle_deg != 0.0 => (1.0, 1.0, 4.0, 6.0),
             Job::Run => (1.0, 1.0, 3.0, 5.0),
             Job::SweepCase(SweepRun::Wear) => (1.0, 1.0, 0.0, 2.0),
         };
@@ -244,7 +247,10 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         p.s_dyn,
         p.s,
     ));
-    if matches!(job, Job::Wear { .. } | Job::SweepCase(SweepRun::Wear)) {
+    if matches!(
+        job,
+        Job::Wear { .. } | Job::Run | Job::SweepCase(SweepRun::Wear)
+    ) {
         terms.extend(super::helical::budget_term(
             case,
             (c.work.dynamic_modes * c.u_d, c.work.quasi_modes * c.u_q),

@@ -1,0 +1,106 @@
+//! The run job on a helical pair (`gear.helix_angle_deg` > 0, docs/MODEL.md 11.5): the
+//! slice stiffness study with ISO 6336's values and the face load (as `gearwear
+//! stiffness`), the steady state of the new teeth on the planar model (as `gearwear
+//! dynamics`), the wear studies per face slice, dynamic and quasi-static, checkpointed after
+//! every update and resumable exactly as `gearwear wear` on the case (`study::helical_wear`),
+//! the dynamic response at the paper's wear states taken from the dynamic run as the spur
+//! pair's run takes them (`study::paper`), and the report (`report::run_helical`). Each
+//! study's files are the bytes its own job writes, in its own folder of the run's.
+//!
+//! What the planar model refuses (per-tooth inputs, profile modifications, faults, worn
+//! geometry, Pedrero's law, too many contact lines) and a `[load_spectrum]` are refused
+//! with `gearwear wear`'s messages, before any work.
+
+use super::dynamics::pair_dynamics_artifacts;
+use super::observer::Observer;
+use super::stiffness::helical_stiffness_study;
+use super::wear::refuse_helical_spectrum;
+use super::wear_runs::{run_modes, stops};
+use super::{budget, build_dynamics_model, publish, JobError, Outcome, RunJob};
+use crate::dynamics::excitation::ExternalError;
+use crate::dynamics::summary::ResponseSummary;
+use crate::report::figure_output::FigureOutput;
+use crate::report::run_helical::{helical_run_artifacts, HelicalRun};
+use crate::store::RunMetadata;
+use crate::study::budget::Job as Cost;
+use crate::study::paper::{run_paper_study, WearStateResult};
+use crate::study::wear_loop::{WearMode, WearRun};
+use crate::study::Model;
+use crate::wear::WearState;
+
+/// Run the whole study of the helical pair in `job.case` (see the module docs).
+pub fn run_of_helical(
+    job: &RunJob,
+    figures: FigureOutput,
+    observer: &dyn Observer,
+) -> Result<Outcome, JobError> {
+    let name = "run";
+    // In `gearwear wear`'s order: the budget, the spectrum, the model's refusals.
+    budget::check(&job.case, Cost::Run, job.budget.as_ref())?;
+    refuse_helical_spectrum(&job.case)?;
+    let model = build_dynamics_model(&job.case, observer)?;
+    let (stiffness, stiffness_warnings) = helical_stiffness_study(&job.case)?;
+    // The planar model holds the slice model's and the face load's warnings already.
+    for w in stiffness_warnings
+        .iter()
+        .filter(|w| !model.warnings.contains(w))
+    {
+        observer.warning(w);
+    }
+    let meta = RunMetadata::of_model(name, &model);
+    let modes = [WearMode::Dynamic, WearMode::QuasiStatic];
+    let out = (job.out.as_deref(), job.resume, job.replace);
+    let study = run_modes(
+        name,
+        &model,
+        &modes,
+        &meta,
+        out,
+        observer,
+        |model, starts, on_update| {
+            let mut s = starts.into_iter();
+            let d0 = s.next().unwrap_or(WearRun::new(WearMode::Dynamic));
+            let q0 = s.next().unwrap_or(WearRun::new(WearMode::QuasiStatic));
+            run_paper_study(model, d0, q0, on_update)
+        },
+    )?;
+    let mut s = study.runs;
+    observer.note("run: the helical pair's steady state with new teeth");
+    let (new_teeth, dynamics) = new_teeth(&model)?;
+    s.wear_states.insert(0, new_teeth);
+    let run = HelicalRun {
+        model: &model,
+        study: &s,
+        stiffness,
+        stiffness_meta: RunMetadata::new("stiffness", &job.case),
+        dynamics,
+    };
+    let artifacts =
+        helical_run_artifacts(run, &meta, figures).map_err(|e| JobError::Failed(e.into()))?;
+    let incomplete = stops(&[&s.dynamic, &s.quasi_static], observer);
+    let mut outcome = publish::publish(study.out, artifacts, Some(&meta), observer)?;
+    outcome.incomplete = incomplete;
+    Ok(outcome)
+}
+
+/// The steady state of the new teeth as `gearwear dynamics` solves it (no external
+/// error, the unworn state of the grid) as the run's first wear state (0 µm), and what
+/// `gearwear dynamics` writes of it.
+fn new_teeth(
+    model: &Model,
+) -> Result<(WearStateResult, crate::report::artifacts::Artifacts), JobError> {
+    let wear = WearState::new(model.grid.len());
+    let none = ExternalError::none();
+    let response = model
+        .dynamic(&wear, &none)
+        .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
+    let artifacts = pair_dynamics_artifacts(model, &response, &none, "new teeth");
+    let state = WearStateResult {
+        max_wear_um: 0.0,
+        roughness_um: model.roughness_for(&wear),
+        summary: ResponseSummary::of(&response),
+        wear,
+        response,
+    };
+    Ok((state, artifacts))
+}
