@@ -2,8 +2,8 @@
 //! worn by one response of the whole set (`study::planetary_wear_loop`), the modes in
 //! parallel, the results of `report::wear_planetary`. With an output folder, every update
 //! of the whole set is kept (a log per mode and mesh, `app::planetary_checkpoints`) and
-//! `--resume` continues from them once they are replayed and recomputed. A load spectrum
-//! on a planetary set is refused, naming it. The run job on a planetary set
+//! `--resume` continues from them once they are replayed and recomputed. A set under a
+//! load spectrum wears in `app::duty_planetary`. The run job on a planetary set
 //! (`app::run_planetary`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
@@ -22,14 +22,15 @@ use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{WearMode, WearStop};
 use std::path::Path;
 
-/// Refuse a planetary set under a `[load_spectrum]` (the spectrum's wear study takes a
-/// single pair so far), naming both.
+/// Refuse the run job on a planetary set under a `[load_spectrum]` (its studies take one
+/// operating point so far; the wear job takes the spectrum: `app::duty_planetary`),
+/// naming both.
 pub(super) fn refuse_spectrum(case: &crate::config::Case) -> Result<(), JobError> {
     if case.load_spectrum.is_none() {
         return Ok(());
     }
     Err(JobError::input(Problem::new(
-        "`[load_spectrum]` on a planetary set ([planetary]): the wear study under a load spectrum takes a single pair so far; remove one or the other",
+        "`[load_spectrum]` on a planetary set ([planetary]) in `gearwear run`: the run's studies of a set take one operating point so far; `gearwear wear` takes the spectrum (docs/MODEL.md 12.12); remove the `[load_spectrum]` section to run the set at `[operating]`",
     )))
 }
 
@@ -39,7 +40,6 @@ pub fn wear_of_planetary(
     figures: FigureOutput,
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
-    refuse_spectrum(&job.case)?;
     let model = PlanetaryWearModel::from_case(&job.case)?;
     // After the model (milliseconds: the budget counts the updates from the set's own
     // first wear rate), before the folder is opened.
