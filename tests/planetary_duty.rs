@@ -66,8 +66,16 @@ fn a_one_bin_spectrum_is_the_sets_own_study_at_that_bins_operating_point_byte_fo
     // set's own study run at 80 N m, 20 Hz.
     let d = tempfile::tempdir().unwrap();
     let one = spectrum(&[(80.0, 20.0, 1.0)], "");
-    let a = wear(d.path(), "alone", &case(d.path(), "a.toml", (80.0, 20.0), ""));
-    let b = wear(d.path(), "duty", &case(d.path(), "b.toml", (60.0, 30.0), &one));
+    let a = wear(
+        d.path(),
+        "alone",
+        &case(d.path(), "a.toml", (80.0, 20.0), ""),
+    );
+    let b = wear(
+        d.path(),
+        "duty",
+        &case(d.path(), "b.toml", (60.0, 30.0), &one),
+    );
     for mode in MODES {
         for f in ["wear_history", "mesh_history", "wear_profiles"] {
             let f = format!("{f}_{mode}.csv");
@@ -95,20 +103,43 @@ fn two_bins_at_one_operating_point_are_one_bin_of_their_summed_share() {
     // each update rounds its sums a few times (a few eps of the depth), and the responses
     // feed the wear back; 1e-9 of the peak depth leaves six orders for that amplification.
     let d = tempfile::tempdir().unwrap();
-    let split = spectrum(&[(60.0, 30.0, 0.3), (90.0, 20.0, 0.5), (60.0, 30.0, 0.2)], "");
+    let split = spectrum(
+        &[(60.0, 30.0, 0.3), (90.0, 20.0, 0.5), (60.0, 30.0, 0.2)],
+        "",
+    );
     let merged = spectrum(&[(60.0, 30.0, 0.5), (90.0, 20.0, 0.5)], "");
-    let a = wear(d.path(), "split", &case(d.path(), "a.toml", (60.0, 30.0), &split));
-    let b = wear(d.path(), "merged", &case(d.path(), "b.toml", (60.0, 30.0), &merged));
+    let a = wear(
+        d.path(),
+        "split",
+        &case(d.path(), "a.toml", (60.0, 30.0), &split),
+    );
+    let b = wear(
+        d.path(),
+        "merged",
+        &case(d.path(), "b.toml", (60.0, 30.0), &merged),
+    );
     let mut worst: f64 = 0.0;
     for mode in MODES {
         let f = format!("wear_history_{mode}.csv");
         let ((ha, ca), (hb, cb)) = (columns(&a.join(&f)), columns(&b.join(&f)));
         assert_eq!(ha, hb);
         let at = |n: &str| ha.iter().position(|c| c == n).unwrap();
-        assert_eq!(ca[at("input_cycles")], cb[at("input_cycles")], "{mode}: blocks");
-        assert_eq!(ca[at("block_limited_by_flank")], cb[at("block_limited_by_flank")]);
-        let peak = ca[at("max_wear_sun_um")].iter().fold(0.0_f64, |x, y| x.max(*y));
-        assert!(peak > 0.1, "{mode}: the sun wore {peak} µm: too little to compare");
+        assert_eq!(
+            ca[at("input_cycles")],
+            cb[at("input_cycles")],
+            "{mode}: blocks"
+        );
+        assert_eq!(
+            ca[at("block_limited_by_flank")],
+            cb[at("block_limited_by_flank")]
+        );
+        let peak = ca[at("max_wear_sun_um")]
+            .iter()
+            .fold(0.0_f64, |x, y| x.max(*y));
+        assert!(
+            peak > 0.1,
+            "{mode}: the sun wore {peak} µm: too little to compare"
+        );
         for (k, name) in ha.iter().enumerate() {
             if name.starts_with("max_wear_") {
                 for (x, y) in ca[k].iter().zip(&cb[k]) {
@@ -119,15 +150,27 @@ fn two_bins_at_one_operating_point_are_one_bin_of_their_summed_share() {
         // Bins 1 and 3 of the split spectrum together added what bin 1 of the merged one
         // did, to every flank; bin B the same in both.
         let (sa, sb) = (summary(&a), summary(&b));
-        let fa = sa["load_spectrum"][mode]["flanks"].as_array().unwrap().clone();
-        let fb = sb["load_spectrum"][mode]["flanks"].as_array().unwrap().clone();
+        let fa = sa["load_spectrum"][mode]["flanks"]
+            .as_array()
+            .unwrap()
+            .clone();
+        let fb = sb["load_spectrum"][mode]["flanks"]
+            .as_array()
+            .unwrap()
+            .clone();
         for (x, y) in fa.iter().zip(&fb) {
             let s = |v: &Value, i: usize| v["share_of_volume_by_bin"][i].as_f64().unwrap();
-            assert!((s(x, 0) + s(x, 2) - s(y, 0)).abs() < 1e-9, "{mode}: {x} / {y}");
+            assert!(
+                (s(x, 0) + s(x, 2) - s(y, 0)).abs() < 1e-9,
+                "{mode}: {x} / {y}"
+            );
             assert!((s(x, 1) - s(y, 1)).abs() < 1e-9, "{mode}: {x} / {y}");
         }
     }
-    assert!(worst < 1e-9, "largest difference {worst:e} of the peak depth");
+    assert!(
+        worst < 1e-9,
+        "largest difference {worst:e} of the peak depth"
+    );
     eprintln!("split against merged: {worst:e} of the peak depth");
 }
 
@@ -155,7 +198,9 @@ fn an_interrupted_spectrum_run_resumes_to_the_same_files_and_an_edit_is_refused(
     let cut = |out: &Path| {
         for p in 1..=4 {
             let log = |mode: &str, bin: usize, kind: &str| {
-                out.join(format!("checkpoint_{mode}_bin{bin}_{kind}_planet_{p}.jsonl"))
+                out.join(format!(
+                    "checkpoint_{mode}_bin{bin}_{kind}_planet_{p}.jsonl"
+                ))
             };
             cut_log(&log("dynamic", 1, "sun"), 4, false);
             cut_log(&log("dynamic", 1, "ring"), 4, false);
@@ -181,7 +226,10 @@ fn an_interrupted_spectrum_run_resumes_to_the_same_files_and_an_edit_is_refused(
     refused(
         &a,
         "wear x 1.5",
-        &["update 2 (line 4), bin 2, mesh ring_planet_3", "advanced over the block"],
+        &[
+            "update 2 (line 4), bin 2, mesh ring_planet_3",
+            "advanced over the block",
+        ],
     );
     std::fs::write(&log, &original).unwrap();
     // The last update's rate is chained to nothing: only recomputing every bin's response
@@ -196,7 +244,10 @@ fn an_interrupted_spectrum_run_resumes_to_the_same_files_and_an_edit_is_refused(
         &a,
         "last rate x (1 + 1e-9)",
         &[
-            &format!("update {last} (line {}), bin 2, mesh ring_planet_3", last + 2),
+            &format!(
+                "update {last} (line {}), bin 2, mesh ring_planet_3",
+                last + 2
+            ),
             "not what this case's model computes",
         ],
     );
@@ -225,14 +276,26 @@ fn the_limiting_member_is_the_flank_whose_history_reaches_the_limit_first() {
         let mut reached = 0;
         for f in u["flanks"].as_array().unwrap() {
             let (m, fl) = (f["member"].as_str().unwrap(), f["flank"].as_str().unwrap());
-            let stem = if m == fl { m.to_string() } else { format!("{m}_{fl}") };
-            let col = &c[h.iter().position(|x| *x == format!("max_wear_{stem}_um")).unwrap()];
+            let stem = if m == fl {
+                m.to_string()
+            } else {
+                format!("{m}_{fl}")
+            };
+            let col = &c[h
+                .iter()
+                .position(|x| *x == format!("max_wear_{stem}_um"))
+                .unwrap()];
             let row = col.iter().position(|x| *x >= limit);
             match (row, f["life"]["status"].as_str().unwrap()) {
                 (Some(r), "reached") => {
                     reached += 1;
                     let n = f["life"]["cycles"].as_f64().unwrap();
-                    assert!(r > 0 && n > cycles[r - 1] && n <= cycles[r], "{mode} {stem}: life {n} outside its block ({}, {}]", cycles[r - 1], cycles[r]);
+                    assert!(
+                        r > 0 && n > cycles[r - 1] && n <= cycles[r],
+                        "{mode} {stem}: life {n} outside its block ({}, {}]",
+                        cycles[r - 1],
+                        cycles[r]
+                    );
                     let hours = f["life_hours"].as_f64().unwrap();
                     assert!((hours / (n * seconds_per_cycle / 3600.0) - 1.0).abs() < 1e-12);
                     if first.as_ref().is_none_or(|(q, _)| r < *q) {
@@ -243,9 +306,16 @@ fn the_limiting_member_is_the_flank_whose_history_reaches_the_limit_first() {
                 (row, status) => panic!("{mode} {stem}: history row {row:?}, life {status}"),
             }
         }
-        assert!(reached >= 2, "{mode}: only {reached} flanks reach the limit: too few to rank");
+        assert!(
+            reached >= 2,
+            "{mode}: only {reached} flanks reach the limit: too few to rank"
+        );
         let (_, member) = first.unwrap();
-        assert_eq!(u["limiting_member"].as_str(), Some(member.as_str()), "{mode}");
+        assert_eq!(
+            u["limiting_member"].as_str(),
+            Some(member.as_str()),
+            "{mode}"
+        );
     }
 }
 
@@ -256,7 +326,14 @@ fn a_set_under_a_spectrum_refuses_bad_input_with_exit_2() {
     let two = spectrum(&[(60.0, 30.0, 0.5), (90.0, 20.0, 0.5)], "");
     let refuse = |command: &str, config: &str, sets: &[&str], needles: &[&str]| {
         let out = d.path().join("out");
-        let mut a = vec![command, "-q", "--config", config, "--out", out.to_str().unwrap()];
+        let mut a = vec![
+            command,
+            "-q",
+            "--config",
+            config,
+            "--out",
+            out.to_str().unwrap(),
+        ];
         for s in sets {
             a.extend(["--set", s]);
         }
@@ -267,20 +344,123 @@ fn a_set_under_a_spectrum_refuses_bad_input_with_exit_2() {
         for n in needles {
             assert!(e.contains(n), "{a:?}: says `{n}`: {e}");
         }
-        assert!(!out.exists(), "{a:?}: the refusal created {}", out.display());
+        assert!(
+            !out.exists(),
+            "{a:?}: the refusal created {}",
+            out.display()
+        );
     };
     // The bins load the input member: torques on the gear shaft are refused, naming the
     // key, its value and the valid one.
-    let gear = cfg("g.toml", &spectrum(&[(60.0, 30.0, 1.0)], "torque_shaft = \"gear\"\n"));
-    refuse("wear", &gear, &[], &["`load_spectrum.torque_shaft`", "\"gear\"", "\"pinion\""]);
+    let gear = cfg(
+        "g.toml",
+        &spectrum(&[(60.0, 30.0, 1.0)], "torque_shaft = \"gear\"\n"),
+    );
+    refuse(
+        "wear",
+        &gear,
+        &[],
+        &["`load_spectrum.torque_shaft`", "\"gear\"", "\"pinion\""],
+    );
     // A bin out of range: the bin, the key, the value and the range.
-    let bad = cfg("b.toml", &spectrum(&[(60.0, -30.0, 0.5), (90.0, 20.0, 0.5)], ""));
+    let bad = cfg(
+        "b.toml",
+        &spectrum(&[(60.0, -30.0, 0.5), (90.0, 20.0, 0.5)], ""),
+    );
     refuse("wear", &bad, &[], &["bin 1", "input_speed_hz", "-30"]);
     // Over the budget, every bin counted, before the folder is made.
     let c = cfg("s.toml", &two);
-    refuse("wear", &c, &["wear.total_cycles=1e9"], &["over its budget", "under the load spectrum"]);
-    // `run` does not take a set under a spectrum yet, and says which command does.
-    refuse("run", &c, &[], &["[load_spectrum]", "gearwear wear"]);
+    refuse(
+        "wear",
+        &c,
+        &["wear.total_cycles=1e9"],
+        &["over its budget", "under the load spectrum"],
+    );
+    refuse(
+        "run",
+        &c,
+        &["wear.total_cycles=1e9"],
+        &["over its budget", "under the load spectrum"],
+    );
+    refuse(
+        "run",
+        &gear,
+        &[],
+        &["`load_spectrum.torque_shaft`", "\"gear\""],
+    );
+}
+
+#[test]
+fn run_under_a_spectrum_nests_the_wear_study_and_studies_the_monitoring_bin() {
+    // Second path through the application: `gearwear wear` on the same case writes the
+    // run's wear/ folder byte for byte, and `gearwear dynamics`, `stiffness` and
+    // `signals` on the set at the monitoring bin's operating point (bin 2, the larger
+    // share: 90 N m, 20 Hz) its dynamics/, stiffness/ and signals/ folders. The report's duty section names
+    // the limiting member of wear/summary.json and every bin.
+    use common::assert_nested_study;
+    let d = tempfile::tempdir().unwrap();
+    let two = spectrum(&[(60.0, 30.0, 0.4), (90.0, 20.0, 0.6)], "");
+    let config = case(d.path(), "s.toml", (60.0, 30.0), &two);
+    let at_bin = case(d.path(), "b.toml", (90.0, 20.0), "");
+    let r = run_into(d.path(), "run", &["run"], Some(&config), &[]);
+    let w = wear(d.path(), "wear", &config);
+    assert_nested_study(&r, &w, "wear");
+    for study in ["dynamics", "stiffness", "signals"] {
+        let alone = run_into(d.path(), study, &[study], Some(&at_bin), &[]);
+        // Every file the same bytes; summary.json the same but for its `metadata`, which
+        // names the case the run was given (with its spectrum), not the bin's.
+        let files = common::manifest_files(&alone);
+        assert!(files.contains(&"summary.json".to_string()), "{study}");
+        for f in files {
+            let (x, y) = (alone.join(&f), r.join(study).join(&f));
+            if f == "summary.json" {
+                let (mut x, mut y) = (summary(&alone), summary(&r.join(study)));
+                x["metadata"] = Value::Null;
+                y["metadata"] = Value::Null;
+                assert_eq!(x, y, "{study}/summary.json");
+            } else {
+                assert!(
+                    std::fs::read(x).unwrap() == std::fs::read(y).unwrap(),
+                    "{study}/{f}"
+                );
+            }
+        }
+    }
+    let s = summary(&r);
+    assert_eq!(s["load_spectrum"], summary(&w)["load_spectrum"]);
+    let html = std::fs::read_to_string(r.join("report.html")).unwrap();
+    let at = html
+        .find("Duty cycle: the set") // the apostrophe is escaped in HTML
+        .expect("the duty section");
+    let section = &html[at..];
+    for mode in MODES {
+        let m = s["load_spectrum"][mode]["limiting_member"]
+            .as_str()
+            .unwrap()
+            .replace('_', " ");
+        assert!(section.contains(&m), "{mode}: {m}");
+    }
+    assert!(
+        section.contains("90") && section.contains("60"),
+        "the bins' torques"
+    );
+    // Resuming the finished run writes the same bytes.
+    let before = common::published(&r);
+    let a = [
+        "-q",
+        "run",
+        "--config",
+        &config,
+        "--out",
+        r.to_str().unwrap(),
+        "--resume",
+    ];
+    let o = gearwear(&a);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        common::published(&r) == before,
+        "the resumed run's files differ"
+    );
 }
 
 #[test]

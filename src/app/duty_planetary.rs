@@ -6,7 +6,8 @@
 //! update, and `--resume` continues from them once they are replayed and recomputed
 //! (`duty::planetary_resume`). The results are the set's own (`report::wear_planetary`)
 //! of the spectrum's run, read at the monitoring bin, with what the spectrum adds
-//! (`report::duty_planetary`).
+//! (`report::duty_planetary`). The run job on a set under a spectrum
+//! (`app::run_planetary`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
 use super::part_checkpoints::{starting_part_runs, Parts};
@@ -14,8 +15,7 @@ use super::wear_planetary::planetary_stops;
 use super::wear_runs::{mode_tasks, Runs};
 use super::{publish, JobError, Outcome, WearJob};
 use crate::duty::planetary::{
-    combined_planetary_run, run_planetary_spectrum_modes, PlanetarySpectrum,
-    PlanetarySpectrumRun,
+    combined_planetary_run, run_planetary_spectrum_modes, PlanetarySpectrum, PlanetarySpectrumRun,
 };
 use crate::duty::planetary_resume::{from_logs, verify};
 use crate::io::OutputDir;
@@ -34,7 +34,12 @@ use std::path::Path;
 
 /// File name of the checkpoint of bin `i` and mesh `j` (0-based, module order) of a
 /// mode's run.
-pub fn bin_mesh_checkpoint_name(ps: &PlanetarySpectrum, mode: WearMode, i: usize, j: usize) -> String {
+pub fn bin_mesh_checkpoint_name(
+    ps: &PlanetarySpectrum,
+    mode: WearMode,
+    i: usize,
+    j: usize,
+) -> String {
     format!(
         "checkpoint_{}_bin{}_{}.jsonl",
         mode.name(),
@@ -121,8 +126,9 @@ fn open_logs(
 }
 
 /// The runs of `modes` with the output folder, checkpoints, progress and cancellation
-/// (as `app::wear_planetary::run_planetary_modes` for one operating point).
-fn run_modes(
+/// (as `app::wear_planetary::run_planetary_modes` for one operating point); the run job
+/// on a set under a spectrum (`app::run_planetary`) runs its wear studies here too.
+pub(super) fn run_modes(
     command: &str,
     ps: &PlanetarySpectrum,
     modes: &[WearMode],

@@ -11,7 +11,6 @@ use super::planetary_checkpoints::{open_logs, planetary_checkpoint_name, startin
 use super::wear_runs::{mode_tasks, stops_of, Runs};
 use super::{publish, JobError, Outcome, WearJob};
 use crate::config::case::WearSection;
-use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
 use crate::store::RunMetadata;
@@ -21,18 +20,6 @@ use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{WearMode, WearStop};
 use std::path::Path;
-
-/// Refuse the run job on a planetary set under a `[load_spectrum]` (its studies take one
-/// operating point so far; the wear job takes the spectrum: `app::duty_planetary`),
-/// naming both.
-pub(super) fn refuse_spectrum(case: &crate::config::Case) -> Result<(), JobError> {
-    if case.load_spectrum.is_none() {
-        return Ok(());
-    }
-    Err(JobError::input(Problem::new(
-        "`[load_spectrum]` on a planetary set ([planetary]) in `gearwear run`: the run's studies of a set take one operating point so far; `gearwear wear` takes the spectrum (docs/MODEL.md 12.12); remove the `[load_spectrum]` section to run the set at `[operating]`",
-    )))
-}
 
 /// Run the wear study of the planetary set in `job.case` (see the module docs).
 pub fn wear_of_planetary(

@@ -61,13 +61,15 @@ impl PlanetarySpectrum {
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
         let Some(spectrum) = case.load_spectrum.as_ref() else {
             return Err(ModelError(vec![
-                "this case has no `[load_spectrum]` section".into()
+                "this case has no `[load_spectrum]` section".into(),
             ]));
         };
         if spectrum.shaft(case.operating.load_torque_shaft) == TorqueShaft::Gear {
             let key = match spectrum.torque_shaft {
                 Some(_) => "`load_spectrum.torque_shaft`",
-                None => "`operating.load_torque_shaft` (which `load_spectrum.torque_shaft` inherits)",
+                None => {
+                    "`operating.load_torque_shaft` (which `load_spectrum.torque_shaft` inherits)"
+                }
             };
             return Err(ModelError(vec![format!(
                 "{key} = \"gear\" on a planetary set: the spectrum's bins load the set's input member (`planetary.input`), so the valid value is \"pinion\" (the input member); give the bins' torques on the input member"
@@ -262,11 +264,7 @@ pub fn next_spectrum_block(
         by_bin_pinion_m: last.by_bin_pinion_m.clone(),
         by_bin_gear_m: last.by_bin_gear_m.clone(),
     };
-    let mut wears: Vec<WearState> = last.bins[0]
-        .meshes
-        .iter()
-        .map(|r| r.wear.clone())
-        .collect();
+    let mut wears: Vec<WearState> = last.bins[0].meshes.iter().map(|r| r.wear.clone()).collect();
     for (j, wj) in wears.iter_mut().enumerate() {
         let c = model.pinion_cycles_per_input[model.kind_of(j).0];
         let start = wj.cycles;

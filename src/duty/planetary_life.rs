@@ -157,9 +157,18 @@ pub fn set_under_spectrum(
     let limiting = flanks
         .iter()
         .filter(|f| f.life.cycles().is_some())
-        .min_by(|a, b| a.life.cycles().unwrap_or(0.0).total_cmp(&b.life.cycles().unwrap_or(0.0)))
+        .min_by(|a, b| {
+            a.life
+                .cycles()
+                .unwrap_or(0.0)
+                .total_cmp(&b.life.cycles().unwrap_or(0.0))
+        })
         // No flank reached the limit: the deepest wear, the life's own measure.
-        .or_else(|| flanks.iter().max_by(|a, b| a.max_wear_um.total_cmp(&b.max_wear_um)));
+        .or_else(|| {
+            flanks
+                .iter()
+                .max_by(|a, b| a.max_wear_um.total_cmp(&b.max_wear_um))
+        });
     Some(SetUnderSpectrum {
         input_cycles: last.input_cycles,
         hours: last.input_cycles * spc / 3600.0,

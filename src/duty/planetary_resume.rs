@@ -104,7 +104,11 @@ pub fn verify(ps: &PlanetarySpectrum, run: &PlanetarySpectrumRun) -> Result<(), 
         let stored = &run.records[j];
         // The replay put this update's cycles, cutting flank and wear where the loop's
         // own step puts them; the responses are what is recomputed here.
-        let wears: Vec<WearState> = stored.bins[0].meshes.iter().map(|r| r.wear.clone()).collect();
+        let wears: Vec<WearState> = stored.bins[0]
+            .meshes
+            .iter()
+            .map(|r| r.wear.clone())
+            .collect();
         let again = respond_bins(ps, run.mode, (stored.input_cycles, stored.limited_by), &wears)
             .map_err(|s| {
                 format!("update {j} (line {line}): this case's model makes no such update when it is recomputed from the update before it ({}): the records are not this case's", s.reason)

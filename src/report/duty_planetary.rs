@@ -75,7 +75,10 @@ pub fn by_bin_table(ps: &PlanetarySpectrum, u: &SetUnderSpectrum) -> Table {
     let mut t = Table::new()
         .col("bin", (1..=n).map(|i| i as f64).collect())
         .col("input_torque_nm", (0..n).map(|i| s.torque_nm(i)).collect())
-        .col("input_speed_hz", (0..n).map(|i| s.input_speed_hz(i)).collect())
+        .col(
+            "input_speed_hz",
+            (0..n).map(|i| s.input_speed_hz(i)).collect(),
+        )
         .col("share_of_cycles", ps.shares.clone());
     for f in &u.flanks {
         let st = stem(&f.member, &f.flank);
@@ -225,11 +228,18 @@ fn flank_table(mode: &str, u: &SetUnderSpectrum) -> TableBlock {
 
 /// Add what the spectrum adds to a set's wear artifacts `a`: `load_spectrum` in the
 /// summary, a `duty_by_bin_MODE.csv` per mode, the spectrum's figure and the lines.
-pub fn add_planetary_duty(ps: &PlanetarySpectrum, runs: &[&PlanetarySpectrumRun], a: &mut Artifacts) {
+pub fn add_planetary_duty(
+    ps: &PlanetarySpectrum,
+    runs: &[&PlanetarySpectrumRun],
+    a: &mut Artifacts,
+) {
     a.summary["load_spectrum"] = planetary_duty_summary(ps, runs);
     for r in runs {
         if let Some(u) = set_under_spectrum(ps, r) {
-            a.table(format!("duty_by_bin_{}.csv", r.mode.name()), by_bin_table(ps, &u));
+            a.table(
+                format!("duty_by_bin_{}.csv", r.mode.name()),
+                by_bin_table(ps, &u),
+            );
         }
     }
     let f = spectrum_figure(&ps.spectrum, None);

@@ -76,10 +76,7 @@ pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) ->
     // A set whose first response fails stops at once in the run, which names why
     // (contact loss, no steady state): counted at the blocks' length alone.
     let rate = first_flank_rates(model, wear).map_or(0.0, |flanks| {
-        flanks
-            .iter()
-            .flatten()
-            .fold(0.0_f64, |a, b| a.max(*b))
+        flanks.iter().flatten().fold(0.0_f64, |a, b| a.max(*b))
     });
     updates_at_rate(rate, wear)
 }
