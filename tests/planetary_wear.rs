@@ -303,22 +303,16 @@ fn quasi_static_and_dynamic_wear_agree_at_a_very_low_speed() {
 fn what_the_planetary_wear_study_does_not_take_is_refused() {
     let d = tempfile::tempdir().unwrap();
     let case = d.path().join("case.toml");
-    for (extra, key) in [
-        ("worn_geometry = \"worn\"\n", "wear.worn_geometry"),
-        // Resuming is taken (tests/planetary_wear_resume.rs); a load spectrum is not.
-        (
-            "[load_spectrum]\nbins = [{torque_nm = 60, input_speed_hz = 30, share = 1}]\n",
-            "[load_spectrum]",
-        ),
-    ] {
-        std::fs::write(&case, format!("{IN_PHASE}{extra}")).unwrap();
-        let out = d.path().join("out");
-        let mut a = vec!["wear", "-q", "--config", case.to_str().unwrap()];
-        a.extend(["--out", out.to_str().unwrap()]);
-        let o = gearwear(&a);
-        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-        assert!(stderr(&o).contains(key), "{key}: {}", stderr(&o));
-    }
+    // Resuming is taken (tests/planetary_wear_resume.rs), and so is a load spectrum
+    // (tests/planetary_duty.rs).
+    let key = "wear.worn_geometry";
+    std::fs::write(&case, format!("{IN_PHASE}worn_geometry = \"worn\"\n")).unwrap();
+    let out = d.path().join("out");
+    let mut a = vec!["wear", "-q", "--config", case.to_str().unwrap()];
+    a.extend(["--out", out.to_str().unwrap()]);
+    let o = gearwear(&a);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains(key), "{key}: {}", stderr(&o));
 }
 
 #[test]

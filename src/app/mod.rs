@@ -40,6 +40,7 @@ pub mod calibrate;
 pub mod checkpoints;
 pub mod dataset;
 pub mod duty;
+pub mod duty_planetary;
 pub mod duty_runs;
 pub mod duty_train;
 pub mod dynamics;

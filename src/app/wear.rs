@@ -45,6 +45,11 @@ impl Job for WearJob {
 
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
+        if self.case.planetary.is_some() && self.case.load_spectrum.is_some() {
+            return super::duty_planetary::wear_of_planetary_under_spectrum(
+                self, figures, observer,
+            );
+        }
         if self.case.planetary.is_some() {
             return super::wear_planetary::wear_of_planetary(self, figures, observer);
         }

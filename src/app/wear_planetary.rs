@@ -2,8 +2,8 @@
 //! worn by one response of the whole set (`study::planetary_wear_loop`), the modes in
 //! parallel, the results of `report::wear_planetary`. With an output folder, every update
 //! of the whole set is kept (a log per mode and mesh, `app::planetary_checkpoints`) and
-//! `--resume` continues from them once they are replayed and recomputed. A load spectrum
-//! on a planetary set is refused, naming it. The run job on a planetary set
+//! `--resume` continues from them once they are replayed and recomputed. A set under a
+//! load spectrum wears in `app::duty_planetary`. The run job on a planetary set
 //! (`app::run_planetary`) runs its wear studies here too.
 
 use super::observer::{keep_going, Observer};
@@ -11,7 +11,6 @@ use super::planetary_checkpoints::{open_logs, planetary_checkpoint_name, startin
 use super::wear_runs::{mode_tasks, stops_of, Runs};
 use super::{publish, JobError, Outcome, WearJob};
 use crate::config::case::WearSection;
-use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_planetary::planetary_wear_artifacts;
 use crate::store::RunMetadata;
@@ -22,24 +21,12 @@ use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{WearMode, WearStop};
 use std::path::Path;
 
-/// Refuse a planetary set under a `[load_spectrum]` (the spectrum's wear study takes a
-/// single pair so far), naming both.
-pub(super) fn refuse_spectrum(case: &crate::config::Case) -> Result<(), JobError> {
-    if case.load_spectrum.is_none() {
-        return Ok(());
-    }
-    Err(JobError::input(Problem::new(
-        "`[load_spectrum]` on a planetary set ([planetary]): the wear study under a load spectrum takes a single pair so far; remove one or the other",
-    )))
-}
-
 /// Run the wear study of the planetary set in `job.case` (see the module docs).
 pub fn wear_of_planetary(
     job: &WearJob,
     figures: FigureOutput,
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
-    refuse_spectrum(&job.case)?;
     let model = PlanetaryWearModel::from_case(&job.case)?;
     // After the model (milliseconds: the budget counts the updates from the set's own
     // first wear rate), before the folder is opened.

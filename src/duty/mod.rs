@@ -10,13 +10,19 @@
 //! [`study`] puts them together as the `wear` and `run` jobs use them.
 //! [`history`] reads a measured time series of torque and speed and [`ldd`] turns it into
 //! a load duration distribution (time at level, ISO 6336-6) and a spectrum.
-//! docs/MODEL.md, section 10 states the method and its checks.
+//! A gear train under a spectrum is [`train`] ([`train_life`], [`train_resume`]); a
+//! planetary set under one [`planetary`] ([`planetary_life`], [`planetary_resume`]).
+//! docs/MODEL.md, section 10 (10.1 the train; 12.12 the set) states the method and its
+//! checks.
 
 pub mod contribution;
 pub mod history;
 pub mod ldd;
 pub mod life;
 pub mod model;
+pub mod planetary;
+pub mod planetary_life;
+pub mod planetary_resume;
 pub(crate) mod resume;
 pub mod study;
 pub mod train;

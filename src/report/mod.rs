@@ -8,6 +8,7 @@ pub mod dataset_trends;
 pub(crate) mod decimate;
 pub mod duty;
 pub mod duty_figures;
+pub mod duty_planetary;
 pub mod duty_train;
 pub mod dynamics;
 pub mod dynamics_helical;

@@ -7,7 +7,9 @@
 //! (`ring_sensor_sidebands.png`, its data under `csv/`) and `summary.json`: the set, its
 //! modes, every mesh's force, the planets' load sharing, every member's wear and the
 //! limiting member, the ring sensor's mesh harmonics, each copied from its study's
-//! summary, and where each study's files are.
+//! summary, and where each study's files are. Under a load spectrum (`report::duty_planetary`)
+//! `wear/` holds what `gearwear wear` writes under it, the summary a copy of its
+//! `load_spectrum` and the report a duty-cycle section.
 
 use super::artifacts::{embed_existing, embed_figures, nest, Artifacts, EmbeddedFigure};
 use super::figure_output::FigureOutput;
@@ -17,6 +19,7 @@ use super::plot::Figure;
 use super::run_planetary_report::Summaries;
 use super::run_train::study_meta;
 use super::wear_planetary::planetary_wear_artifacts;
+use crate::duty::planetary::{PlanetarySpectrum, PlanetarySpectrumRun};
 use crate::io::Table;
 use crate::store::RunMetadata;
 use crate::study::planetary::PlanetaryStudy;
@@ -41,8 +44,12 @@ pub struct PlanetaryRun<'a> {
     pub signals: Option<(Artifacts, RingSensorRecord)>,
     /// The set's wear model.
     pub wear_model: &'a PlanetaryWearModel,
-    /// The wear runs, one per mode.
+    /// The wear runs, one per mode (under a spectrum: read as one run of the set at the
+    /// monitoring bin, `duty::planetary::combined_planetary_run`).
     pub runs: &'a [&'a PlanetaryWearRun],
+    /// Under a load spectrum: the spectrum and its runs, one per mode (their outputs go to
+    /// `wear/` as `gearwear wear` writes them, and the report gets a duty-cycle section).
+    pub duty: Option<(&'a PlanetarySpectrum, &'a [&'a PlanetarySpectrumRun])>,
 }
 
 /// The artifacts of a planetary set's run (see the module docs); `meta` is the run's.
@@ -52,7 +59,10 @@ pub fn planetary_run_artifacts(
     figures: FigureOutput,
 ) -> Result<Artifacts, super::artifacts::WriteError> {
     let mut a = Artifacts::default().with_figure_output(figures);
-    let wear = planetary_wear_artifacts(run.wear_model, run.runs);
+    let mut wear = planetary_wear_artifacts(run.wear_model, run.runs);
+    if let Some((ps, runs)) = run.duty {
+        super::duty_planetary::add_planetary_duty(ps, runs, &mut wear);
+    }
     let mut headline = vec![
         format!("stiffness:\n{}", run.stiffness.headline),
         format!("dynamics, new teeth:\n{}", run.dynamics_artifacts.headline),
@@ -108,7 +118,13 @@ pub fn planetary_run_artifacts(
     };
     a.summary = summary(&s, run.runs);
     a.headline = headline.join("\n");
-    let report = super::run_planetary_report::build(&s, run.runs, (blocks, sidebands), meta);
+    let mut report = super::run_planetary_report::build(&s, run.runs, (blocks, sidebands), meta);
+    if let Some((ps, runs)) = run.duty {
+        a.summary["load_spectrum"] = s.wear["load_spectrum"].clone();
+        report
+            .sections
+            .push(super::duty_planetary::planetary_duty_section(ps, runs));
+    }
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     Ok(a)

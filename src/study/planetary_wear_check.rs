@@ -32,7 +32,11 @@ pub fn planetary_mesh_name(model: &PlanetaryWearModel, j: usize) -> String {
 }
 
 /// What is wrong with the shape of mesh `j`'s record `r` (see the module docs), if anything.
-fn record_problem(model: &PlanetaryWearModel, j: usize, r: &UpdateRecord) -> Option<String> {
+pub(crate) fn record_problem(
+    model: &PlanetaryWearModel,
+    j: usize,
+    r: &UpdateRecord,
+) -> Option<String> {
     if let Some(p) = r.profile_problem(model.grids[model.kind_of(j).0].len()) {
         return Some(p);
     }

@@ -41,19 +41,11 @@ pub fn estimate_planetary_wear(
     modes: &[WearMode],
 ) -> Estimate {
     let updates = planetary_wear_updates(model, wear);
-    let scale = model.planets() as f64 / 4.0 * SLOWER_MACHINE_FACTOR;
-    let per_update: f64 = modes
-        .iter()
-        .map(|m| match m {
-            WearMode::Dynamic => SECONDS_PER_DYNAMIC_UPDATE_4,
-            WearMode::QuasiStatic => SECONDS_PER_QUASI_STATIC_UPDATE_4,
-        })
-        .sum();
     let meshes = 2.0 * model.planets() as f64;
     let points = wear.points_per_profile.max(2) as f64;
     Estimate::of_terms(vec![Term {
         what: "the planetary set's wear updates (a response of the whole set each)",
-        seconds: updates * per_update * scale,
+        seconds: updates * seconds_per_update(model, modes),
         bytes: modes.len() as f64 * updates * meshes * points * BYTES_PER_MESH_POINT,
         keys: &[
             "wear.total_cycles",
@@ -65,13 +57,38 @@ pub fn estimate_planetary_wear(
     }])
 }
 
+/// CPU seconds of one update of the set in every one of `modes`, at the measured rates
+/// scaled by the planets over four and [`SLOWER_MACHINE_FACTOR`].
+fn seconds_per_update(model: &PlanetaryWearModel, modes: &[WearMode]) -> f64 {
+    let scale = model.planets() as f64 / 4.0 * SLOWER_MACHINE_FACTOR;
+    modes
+        .iter()
+        .map(|m| match m {
+            WearMode::Dynamic => SECONDS_PER_DYNAMIC_UPDATE_4,
+            WearMode::QuasiStatic => SECONDS_PER_QUASI_STATIC_UPDATE_4,
+        })
+        .sum::<f64>()
+        * scale
+}
+
 /// The updates U a planetary wear study makes at most (see [`estimate_planetary_wear`]).
 pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) -> f64 {
+    // A set whose first response fails stops at once in the run, which names why
+    // (contact loss, no steady state): counted at the blocks' length alone.
+    let rate = first_flank_rates(model, wear).map_or(0.0, |flanks| {
+        flanks.iter().flatten().fold(0.0_f64, |a, b| a.max(*b))
+    });
+    updates_at_rate(rate, wear)
+}
+
+/// Every member flank's wear per input cycle at every point with new teeth, from one
+/// quasi-static response of the set (milliseconds); None when it fails.
+fn first_flank_rates(model: &PlanetaryWearModel, wear: &WearSection) -> Option<Vec<Vec<f64>>> {
     let first = WearSection {
         total_cycles: 0.0,
         ..wear.clone()
     };
-    let rate = run_planetary_wear(
+    run_planetary_wear(
         model,
         &first,
         PlanetaryWearRun::new(WearMode::QuasiStatic),
@@ -79,14 +96,12 @@ pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) ->
     )
     .ok()
     .and_then(|r| r.updates.first().map(|u| u.flanks(model)))
-    // A set whose first response fails stops at once in the run, which names why
-    // (contact loss, no steady state): counted at the blocks' length alone.
-    .map_or(0.0, |flanks| {
-        flanks
-            .iter()
-            .flat_map(|f| f.rate_m_per_input.iter())
-            .fold(0.0_f64, |a, b| a.max(*b))
-    });
+    .map(|flanks| flanks.into_iter().map(|f| f.rate_m_per_input).collect())
+}
+
+/// U = 1 + ceil(C / n), the block n cut by the threshold over `RATE_MARGIN` times the
+/// deepest flank's first rate `rate` (m per input cycle).
+fn updates_at_rate(rate: f64, wear: &WearSection) -> f64 {
     let block = block_length(
         RATE_MARGIN * rate,
         wear.block_cycles,
@@ -97,13 +112,93 @@ pub fn planetary_wear_updates(model: &PlanetaryWearModel, wear: &WearSection) ->
     1.0 + (wear.total_cycles / block).ceil()
 }
 
+/// The updates U a planetary set's wear study under a load spectrum makes at most: as
+/// [`planetary_wear_updates`], with the spectrum's first rate at every flank point,
+/// sum_i s_i r_i (the loop's block rule, docs/MODEL.md 12.12), `models[i]` the set at
+/// bin i and `shares[i]` its share.
+pub fn planetary_spectrum_wear_updates(
+    models: &[PlanetaryWearModel],
+    shares: &[f64],
+    wear: &WearSection,
+) -> f64 {
+    let mut rate: Vec<Vec<f64>> = Vec::new();
+    for (m, s) in models.iter().zip(shares) {
+        let Some(r) = first_flank_rates(m, wear) else {
+            continue;
+        };
+        if rate.is_empty() {
+            rate = r.iter().map(|f| vec![0.0; f.len()]).collect();
+        }
+        for (a, b) in rate.iter_mut().flatten().zip(r.iter().flatten()) {
+            *a += s * b;
+        }
+    }
+    updates_at_rate(rate.iter().flatten().fold(0.0_f64, |a, b| a.max(*b)), wear)
+}
+
+/// The estimate of a planetary set's wear study under a load spectrum in `modes`
+/// (`models[i]` the set at bin i, `shares[i]` its share): the updates of
+/// [`planetary_spectrum_wear_updates`], each a response of the whole set at every bin
+/// (at the rates of [`estimate_planetary_wear`]), every bin's records kept. The bins are
+/// counted in checked integer arithmetic: a count that overflows is an infinite estimate,
+/// refused by any budget.
+pub fn estimate_planetary_spectrum_wear(
+    models: &[PlanetaryWearModel],
+    shares: &[f64],
+    wear: &WearSection,
+    modes: &[WearMode],
+) -> Estimate {
+    let Some(first) = models.first() else {
+        return Estimate::of_terms(Vec::new());
+    };
+    let per_update = seconds_per_update(first, modes);
+    let updates = planetary_spectrum_wear_updates(models, shares, wear);
+    let meshes = 2 * first.planets();
+    let points = wear.points_per_profile.max(2) as usize;
+    // Responses per update, and profile points kept per update and mode, over all bins.
+    let counts = models.len().checked_mul(meshes).and_then(|x| {
+        x.checked_mul(points)
+            .and_then(|p| p.checked_mul(modes.len()))
+            .map(|p| (models.len() as f64, p as f64))
+    });
+    let (bins, kept) = counts.unwrap_or((f64::INFINITY, f64::INFINITY));
+    Estimate::of_terms(vec![Term {
+        what: "the planetary set's wear updates under the load spectrum (a response of the whole set at every bin each)",
+        seconds: updates * bins * per_update,
+        bytes: updates * kept * BYTES_PER_MESH_POINT,
+        keys: &[
+            "load_spectrum.bins",
+            "wear.total_cycles",
+            "wear.block_cycles",
+            "wear.threshold_um",
+            "wear.points_per_profile",
+            "planetary.planets",
+        ],
+    }])
+}
+
+/// Largest size a bin's mesh log of a planetary study under a spectrum may have when
+/// read back, bytes: as [`max_planetary_checkpoint_bytes`] with the spectrum's updates.
+pub fn max_planetary_spectrum_checkpoint_bytes(
+    models: &[PlanetaryWearModel],
+    shares: &[f64],
+    wear: &WearSection,
+) -> u64 {
+    checkpoint_bytes(planetary_spectrum_wear_updates(models, shares, wear), wear)
+}
+
 /// Largest size a mesh's checkpoint log of a planetary wear study may have when read
 /// back, bytes: 16 times (the margin `budget::max_checkpoint_bytes` takes for a pair) the
 /// study's updates ([`planetary_wear_updates`]) of 4 G + 16 numbers each (a mesh's wear
 /// and increment on both flanks over its G grid points, its summary) at 32 bytes a number
 /// in JSON with its checksum, and at least 64 MiB.
 pub fn max_planetary_checkpoint_bytes(model: &PlanetaryWearModel, wear: &WearSection) -> u64 {
+    checkpoint_bytes(planetary_wear_updates(model, wear), wear)
+}
+
+/// The bound of [`max_planetary_checkpoint_bytes`] for `updates` updates.
+fn checkpoint_bytes(updates: f64, wear: &WearSection) -> u64 {
     let numbers = 4.0 * wear.points_per_profile.max(2) as f64 + 16.0;
-    let bytes = 16.0 * planetary_wear_updates(model, wear) * numbers * 32.0;
+    let bytes = 16.0 * updates * numbers * 32.0;
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }
