@@ -24,7 +24,10 @@
 //! - `face_load_direct_crowned`: `DynamicFaceLoad::of` on the crowned steady state: every
 //!   recorded sample's contact lines summed slice by slice (N spline evaluations per line),
 //!   the work the direct evaluation of the slices would do in every right-hand side (its
-//!   cost per sample times the steady state's right-hand sides estimates that choice).
+//!   cost per sample times the steady state's right-hand sides estimates that choice);
+//! - `steady_state_helical_400_axial`: the helical pair with axial bearings of 5e8 N/m on
+//!   pinion and gear (docs/MODEL.md 11.6: 10 coordinates, the general right-hand side
+//!   instead of the fixed 8-coordinate one), cold, against `steady_state_helical_400`.
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -96,6 +99,10 @@ fn helical_dynamics(c: &mut Criterion) {
     let mut crowned_case = case.clone();
     crowned_case.modification.crowning_um = Some(8.0);
     let crowned = Model::helical_from_case(&crowned_case).expect("valid crowned model");
+    let mut axial_case = case.clone();
+    axial_case.dynamics.bearing_axial_stiffness_pinion_n_per_m = Some(5e8);
+    axial_case.dynamics.bearing_axial_stiffness_gear_n_per_m = Some(5e8);
+    let axial = Model::helical_from_case(&axial_case).expect("valid axial model");
     let run = |m: &Model| {
         m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
             .expect("steady state")
@@ -104,6 +111,7 @@ fn helical_dynamics(c: &mut Criterion) {
         ("helical", &helical),
         ("spur", &spur),
         ("crowned", &crowned),
+        ("axial", &axial),
     ] {
         let r = run(m);
         eprintln!(
@@ -117,6 +125,9 @@ fn helical_dynamics(c: &mut Criterion) {
     });
     g.bench_function("steady_state_spur_transverse", |b| {
         b.iter(|| run(black_box(&spur)))
+    });
+    g.bench_function("steady_state_helical_400_axial", |b| {
+        b.iter(|| run(black_box(&axial)))
     });
     g.bench_function("model_build_helical_400", |b| {
         b.iter(|| Model::helical_from_case(black_box(&case)).unwrap())

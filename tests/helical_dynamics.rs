@@ -93,7 +93,8 @@ fn the_mean_axial_reaction_is_the_tangential_force_times_tan_beta_b() {
     // the pinion's torque balance gives a mean mesh force T_p / r_b1 exactly (no friction:
     // its moments would take a share). Independent of the model's own numbers: r_b1 and
     // beta_b from ISO 21771's transverse section by hand, T_p the case's load torque (on
-    // the pinion by default). The axial force on the pinion is -F_t tan(beta_b) (right hand, driving).
+    // the pinion by default). The axial force on the pinion is +F_t tan(beta_b) (right hand,
+    // driving: along its angular velocity, docs/MODEL.md 11.6).
     // Tolerance 1e-6 of F_t (the issue's): the periodic solution's residual and Simpson's
     // rule on 200 steps per period are far below it.
     let m = helical(&["gear.helix_angle_deg=15", "friction.model=\"none\""]);
@@ -112,9 +113,9 @@ fn the_mean_axial_reaction_is_the_tangential_force_times_tan_beta_b() {
     let h = gearwear::report::dynamics_helical::helical_summary(&m, &r).unwrap();
     let axial = h["axial_force_pinion"]["mean_n"].as_f64().unwrap();
     assert!(
-        (axial + ft * tan_bb).abs() <= 1e-6 * ft,
-        "mean axial {axial} N against -F_t tan(beta_b) = {} N",
-        -ft * tan_bb
+        (axial - ft * tan_bb).abs() <= 1e-6 * ft,
+        "mean axial {axial} N against F_t tan(beta_b) = {} N",
+        ft * tan_bb
     );
 }
 
@@ -236,7 +237,7 @@ fn helical_dynamics_writes_the_axial_force_and_refuses_what_it_lacks() {
         s["helical"]["axial_force_pinion"]["mean_n"]
             .as_f64()
             .unwrap()
-            < 0.0
+            > 0.0
     );
     let ts = std::fs::read_to_string(out.join("timeseries.csv")).unwrap();
     assert!(ts.lines().next().unwrap().contains("axial_force_pinion_n"));

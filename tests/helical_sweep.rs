@@ -122,15 +122,15 @@ fn each_dynamics_row_equals_gearwear_dynamics_on_its_case() {
         let torque = &row["operating.load_torque_nm"];
         let s = single(d.path(), &format!("dyn{torque}"), &["dynamics"], torque);
         check_dynamics_columns(row, &s, torque);
-        // The axial force is F tan(beta_b) against the pinion's rotation for its right
-        // hand (the default), here from the row's own mean force.
+        // The axial force is F tan(beta_b) along the pinion's angular velocity for its
+        // right hand (the default; docs/MODEL.md 11.6), here from the row's own mean force.
         let axial = num(row, "axial_force_pinion_mean_n");
-        assert!(axial < 0.0, "{axial}");
+        assert!(axial > 0.0, "{axial}");
         let tan_bb = f(&s["helical"]["base_helix_angle_deg"]).to_radians().tan();
         let fm = num(row, "mesh_force_mean_n");
         // beta_b passes through degrees in summary.json (a few ulps): 1e-9 of F is far
         // above that and far below any other law (a cos or sin of beta_b is 3 % off).
-        assert!((axial + fm * tan_bb).abs() <= 1e-9 * fm, "{axial} {fm}");
+        assert!((axial - fm * tan_bb).abs() <= 1e-9 * fm, "{axial} {fm}");
     }
 }
 

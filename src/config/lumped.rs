@@ -54,6 +54,19 @@ pub struct DynamicsSection<P = Derivable> {
     pub coupling_damping_brake_nm_s_per_rad: f64,
     /// Mesh damping ratio zeta: c_m = 2 zeta sqrt(k_mean m_e). Not in the paper.
     pub mesh_damping_ratio: f64,
+    /// Pinion axial bearing stiffness, N/m (a helical pair only; absent: rigid, no axial
+    /// degree of freedom: the planar model, docs/MODEL.md 11.6).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_stiffness_pinion_n_per_m: Option<f64>,
+    /// Gear axial bearing stiffness, N/m (as the pinion's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_stiffness_gear_n_per_m: Option<f64>,
+    /// Pinion axial bearing damping, N s/m (absent: the pinion's radial bearing damping).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_damping_pinion_n_s_per_m: Option<f64>,
+    /// Gear axial bearing damping, N s/m (absent: the gear's radial bearing damping).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_damping_gear_n_s_per_m: Option<f64>,
 }
 
 /// Masses (kg) and polar inertias (kg m^2) of pinion and gear, as numbers: what the
@@ -116,7 +129,30 @@ impl DynamicsSection {
             coupling_damping_motor_nm_s_per_rad: self.coupling_damping_motor_nm_s_per_rad,
             coupling_damping_brake_nm_s_per_rad: self.coupling_damping_brake_nm_s_per_rad,
             mesh_damping_ratio: self.mesh_damping_ratio,
+            bearing_axial_stiffness_pinion_n_per_m: self.bearing_axial_stiffness_pinion_n_per_m,
+            bearing_axial_stiffness_gear_n_per_m: self.bearing_axial_stiffness_gear_n_per_m,
+            bearing_axial_damping_pinion_n_s_per_m: self.bearing_axial_damping_pinion_n_s_per_m,
+            bearing_axial_damping_gear_n_s_per_m: self.bearing_axial_damping_gear_n_s_per_m,
         }
+    }
+}
+
+impl<P> DynamicsSection<P> {
+    /// The axial bearings of pinion and gear (docs/MODEL.md 11.6): each body's stiffness
+    /// (N/m) and damping (N s/m) where its `bearing_axial_stiffness_*` key is given (the
+    /// damping's absent value is the body's radial bearing damping), None where the
+    /// bearing is rigid.
+    pub fn axial_bearings(&self) -> [Option<(f64, f64)>; 2] {
+        [
+            self.bearing_axial_stiffness_pinion_n_per_m.map(|k| {
+                let c = self.bearing_axial_damping_pinion_n_s_per_m;
+                (k, c.unwrap_or(self.bearing_damping_pinion_n_s_per_m))
+            }),
+            self.bearing_axial_stiffness_gear_n_per_m.map(|k| {
+                let c = self.bearing_axial_damping_gear_n_s_per_m;
+                (k, c.unwrap_or(self.bearing_damping_gear_n_s_per_m))
+            }),
+        ]
     }
 }
 
@@ -152,6 +188,10 @@ impl Default for DynamicsSection {
             coupling_damping_motor_nm_s_per_rad: 3e4,
             coupling_damping_brake_nm_s_per_rad: 3e4,
             mesh_damping_ratio: 0.05,
+            bearing_axial_stiffness_pinion_n_per_m: None,
+            bearing_axial_stiffness_gear_n_per_m: None,
+            bearing_axial_damping_pinion_n_s_per_m: None,
+            bearing_axial_damping_gear_n_s_per_m: None,
         }
     }
 }

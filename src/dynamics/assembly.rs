@@ -8,9 +8,11 @@
 //! first the lateral displacements (x, y of every body that moves laterally), then the
 //! rotations (every body). The paper's pair (bodies motor, pinion, gear, brake) is
 //! numbered `[x_p, y_p, x_g, y_g, phi_m, phi_p, phi_g, phi_b]`, its eq. (1) order
-//! (`dynamics::model::dof`). Axial and tilting coordinates (helical pairs) and a carrier's
-//! rotating frame (planetary sets) would add blocks after these; the blocks before them
-//! keep their numbers.
+//! (`dynamics::model::dof`). The axial coordinates (z of every body on an axial
+//! bearing: a helical pair whose case gives them, docs/MODEL.md 11.6) come as a third
+//! block after these, so the blocks before them keep their numbers (the single pair with
+//! both axial bearings: `[.., phi_b, z_p, z_g]`); tilting coordinates and a carrier's
+//! rotating frame (planetary sets) would add blocks after them.
 //!
 //! Equations (SI): M q'' + C q' + K q = f_ext + sum over meshes f_mesh(t, q, q'), with M
 //! diagonal (masses on the lateral coordinates, inertias on the rotations), K and C the
@@ -19,9 +21,11 @@
 //! speed is imposed has an infinite mass: `inverse_masses` holds 0 there.
 
 pub mod elements;
-mod single_pair;
+pub mod single_pair;
 #[cfg(test)]
 mod tests_assembly;
+#[cfg(test)]
+mod tests_axial;
 pub mod train;
 
 use self::elements::Elements;
@@ -37,6 +41,9 @@ pub enum Dof {
     Y,
     /// Rotation deviation from the nominal rotation, rad.
     Rotation,
+    /// Axial displacement z of the body along its axis, m (+ along the pinion's angular
+    /// velocity).
+    Axial,
 }
 
 /// What is wrong with a set of elements (the case-file validation names the keys).
@@ -91,6 +98,8 @@ pub struct MeshGeometry {
     pub lateral: [Option<usize>; 2],
     /// Rotation coordinate of pinion and gear.
     pub rotation: [usize; 2],
+    /// Axial coordinate of pinion and gear, when they have one.
+    pub axial: [Option<usize>; 2],
 }
 
 /// The assembled train (see the module docs).
@@ -102,6 +111,8 @@ pub struct Assembly {
     lateral: Vec<Option<usize>>,
     /// Rotation coordinate of each body.
     rotation: Vec<usize>,
+    /// Axial coordinate of each body on an axial bearing.
+    axial: Vec<Option<usize>>,
     n: usize,
     inverse_masses: Vec<f64>,
     stiffness: DMatrix<f64>,
@@ -133,10 +144,24 @@ impl Assembly {
             })
             .collect();
         let rotation: Vec<usize> = (0..elements.bodies.len()).map(|i| next + i).collect();
-        let n = next + elements.bodies.len();
+        next += elements.bodies.len();
+        let axial: Vec<Option<usize>> = (0..elements.bodies.len())
+            .map(|b| {
+                elements
+                    .axial_bearings
+                    .iter()
+                    .any(|a| a.body == b)
+                    .then(|| {
+                        next += 1;
+                        next - 1
+                    })
+            })
+            .collect();
+        let n = next;
         let mut asm = Self {
             lateral,
             rotation,
+            axial,
             n,
             inverse_masses: vec![0.0; n],
             stiffness: DMatrix::zeros(n, n),
@@ -173,6 +198,7 @@ impl Assembly {
             Dof::X => self.lateral[body],
             Dof::Y => self.lateral[body].map(|x| x + 1),
             Dof::Rotation => Some(self.rotation[body]),
+            Dof::Axial => self.axial[body],
         }
     }
 
@@ -270,6 +296,9 @@ impl Assembly {
                 self.inverse_masses[x + 1] = 1.0 / body.mass_kg;
             }
             self.inverse_masses[self.rotation[i]] = 1.0 / body.inertia_kg_m2;
+            if let Some(z) = self.axial[i] {
+                self.inverse_masses[z] = 1.0 / body.mass_kg;
+            }
         }
     }
 
@@ -297,10 +326,16 @@ impl Assembly {
         }
     }
 
-    /// Bearings (diagonal), shafts and couplings (a spring between two coordinates), and
-    /// the motor's slip damper: T_0 + c_slip (Omega - dtheta/dt) = T_0 - c_slip dphi/dt.
+    /// Bearings (diagonal: radial on x and y, axial on z), shafts and couplings (a spring
+    /// between two coordinates), and the motor's slip damper:
+    /// T_0 + c_slip (Omega - dtheta/dt) = T_0 - c_slip dphi/dt.
     fn fill_springs(&mut self) {
         let e = &self.elements;
+        for a in &e.axial_bearings {
+            let z = self.axial[a.body].expect("an axial bearing's body has an axial coordinate");
+            self.stiffness[(z, z)] += a.stiffness_n_per_m;
+            self.damping[(z, z)] += a.damping_n_s_per_m;
+        }
         for b in &e.bearings {
             let x = self.lateral[b.body].expect("a bearing's body moves laterally");
             for (axis, i) in [x, x + 1].into_iter().enumerate() {
@@ -348,7 +383,9 @@ impl Assembly {
     /// d = sin(phi) e1 + s cos(phi) e2 and the tangent e = cos(phi) e1 - s sin(phi) e2,
     /// e1 the centre line (pinion to gear), e2 it turned by +90 deg, s the pinion's sense
     /// of rotation (+1 counter-clockwise). For the paper's layout (e1 = +x, s = +1):
-    /// d = (sin phi, cos phi), e = (cos phi, -sin phi), as in eq. (1).
+    /// d = (sin phi, cos phi), e = (cos phi, -sin phi), as in eq. (1). A helical mesh
+    /// whose bodies move axially adds a (z_p - z_g), a = `MeshLink::axial_gradient`
+    /// (docs/MODEL.md 11.6).
     fn mesh_geometry(&self, m: usize) -> MeshGeometry {
         let link = &self.elements.meshes[m];
         let s = self.spin[link.pinion];
@@ -374,6 +411,14 @@ impl Assembly {
         }
         gradient.push((rotation[0], link.base_radius_m[0]));
         gradient.push((rotation[1], -link.base_radius_m[1]));
+        let axial = [self.axial[link.pinion], self.axial[link.gear]];
+        if link.axial_gradient != 0.0 {
+            for (z, sign) in [(axial[0], 1.0), (axial[1], -1.0)] {
+                if let Some(z) = z {
+                    gradient.push((z, sign * link.axial_gradient));
+                }
+            }
+        }
         gradient.sort_by_key(|(i, _)| *i);
         MeshGeometry {
             gradient,
@@ -381,6 +426,7 @@ impl Assembly {
             tangent: e,
             lateral,
             rotation,
+            axial,
         }
     }
 
@@ -429,6 +475,7 @@ impl Assembly {
                     Dof::X => (format!("x_{b}"), "m"),
                     Dof::Y => (format!("y_{b}"), "m"),
                     Dof::Rotation => (format!("phi_{b}"), "rad"),
+                    Dof::Axial => (format!("z_{b}"), "m"),
                 }
             })
             .collect()
@@ -439,6 +486,9 @@ impl Assembly {
         for (b, body) in self.elements.bodies.iter().enumerate() {
             if self.rotation[b] == coordinate {
                 return (&body.name, Dof::Rotation);
+            }
+            if self.axial[b] == Some(coordinate) {
+                return (&body.name, Dof::Axial);
             }
             if let Some(x) = self.lateral[b] {
                 if coordinate == x || coordinate == x + 1 {
@@ -457,6 +507,7 @@ fn check_indices(e: &Elements) -> Result<(), AssemblyError> {
         .bearings
         .iter()
         .map(|b| b.body)
+        .chain(e.axial_bearings.iter().map(|a| a.body))
         .chain(e.shafts.iter().flat_map(|s| s.ends))
         .chain(e.meshes.iter().flat_map(|m| [m.pinion, m.gear]))
         .chain([e.drive.input, e.drive.output]);

@@ -142,6 +142,20 @@ impl TrainOperatingPoint {
     }
 }
 
+/// The axial degrees of freedom of a helical pair (docs/MODEL.md 11.6): how the bodies'
+/// axial motion enters the mesh deflection and the axial bearings that hold them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxialSupport {
+    /// d delta / d z_p of the mesh, m/m (the gear's is the opposite): -s tan(beta_b), s
+    /// the sign of the axial mesh force on the pinion along its angular velocity
+    /// (`study::helical::pinion_axial_sign`), delta the deflection along the transverse
+    /// line of action.
+    pub axial_gradient: f64,
+    /// Axial bearing stiffness (N/m) and damping (N s/m) of pinion and gear; None: rigid
+    /// (that body has no axial coordinate).
+    pub bearings: [Option<(f64, f64)>; 2],
+}
+
 /// Parameters of paper eq. (1), SI: the lumped masses, inertias, bearing and coupling
 /// stiffness and damping of the case (already SI, units in their names), and the
 /// operating point derived from the case and the pair.
@@ -156,6 +170,9 @@ pub struct DynamicParams {
     pub motor_slip_damping_nm_s_per_rad: f64,
     /// The nominal operating point: speeds, torques, mesh frequency, static mesh force.
     pub operating: OperatingPoint,
+    /// The axial degrees of freedom of a helical pair whose case gives axial bearings
+    /// (None: the planar model, and every spur pair).
+    pub axial: Option<AxialSupport>,
 }
 
 impl DynamicParams {
@@ -169,7 +186,14 @@ impl DynamicParams {
             speed_boundary: o.speed_boundary,
             motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
             operating: OperatingPoint::of(o, pair),
+            axial: None,
         }
+    }
+
+    /// Number of axial coordinates (bodies on an axial bearing), 0 to 2.
+    pub fn axial_coordinates(&self) -> usize {
+        self.axial
+            .map_or(0, |a| a.bearings.iter().filter(|b| b.is_some()).count())
     }
 
     /// Equivalent mass of the mesh's torsional mode, kg (docs/PAPER_NOTES.md):

@@ -286,6 +286,35 @@ pub fn body_value_warnings(case: &Case, estimate: &BodyValues) -> Vec<String> {
         .collect()
 }
 
+/// The axial bearing keys on a spur pair or a spur train: a spur mesh has no axial force,
+/// so its bodies carry no axial degree of freedom and the keys change nothing
+/// (docs/MODEL.md 11.6).
+pub fn axial_key_warnings(case: &Case) -> Vec<String> {
+    let d = &case.dynamics;
+    let given = [
+        (
+            "dynamics.bearing_axial_stiffness_pinion_n_per_m",
+            d.bearing_axial_stiffness_pinion_n_per_m,
+        ),
+        (
+            "dynamics.bearing_axial_stiffness_gear_n_per_m",
+            d.bearing_axial_stiffness_gear_n_per_m,
+        ),
+        (
+            "dynamics.bearing_axial_damping_pinion_n_s_per_m",
+            d.bearing_axial_damping_pinion_n_s_per_m,
+        ),
+        (
+            "dynamics.bearing_axial_damping_gear_n_s_per_m",
+            d.bearing_axial_damping_gear_n_s_per_m,
+        ),
+    ];
+    given
+        .iter()
+        .filter_map(|(key, v)| v.map(|v| format!("`{key}` = {v} is ignored: a spur mesh (`gear.helix_angle_deg` = 0) has no axial force, so its gears carry no axial degree of freedom (docs/MODEL.md 11.6)")))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

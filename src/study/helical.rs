@@ -101,15 +101,9 @@ impl HelicalDynamics {
         self.pair.base_helix_angle_rad.tan()
     }
 
-    /// Sign of the axial force on the pinion along its axis (+z along the pinion's angular
-    /// velocity, the y of `geometry::helical`): a driving right-hand pinion is pushed
-    /// back, -z (the flank's normal leans against the helix); left-hand +z. The gear takes
-    /// the opposite force.
+    /// Sign of the axial force on the pinion along its axis ([`pinion_axial_sign`]).
     pub fn pinion_axial_sign(&self) -> f64 {
-        match self.pair.hand_pinion {
-            Hand::Right => -1.0,
-            Hand::Left => 1.0,
-        }
+        pinion_axial_sign(self.pair.hand_pinion)
     }
 
     /// cos(beta_b): a wear depth h_n normal to the flank is h_n / cos(beta_b) along the
@@ -172,6 +166,27 @@ impl HelicalDynamics {
             })
             .collect();
         PairGap::new(lines.line.rho_start_m, spacing, gap)
+    }
+}
+
+/// Sign s of the axial mesh force on the pinion along its axis (+z along the pinion's
+/// angular velocity, the y of `geometry::helical`): F_a = s F tan(beta_b), the gear
+/// taking -F_a (docs/MODEL.md 11.6). On the plane of action the pinion's flank at the
+/// face position y sits at u = r_b1 phi + s_h y tan(beta_b) (section 11's contact lines,
+/// s_h = +1 for a right hand: the section at larger y is turned forward). Moved axially
+/// by z_p, the pinion brings its section y - z_p to y, so its flank there retreats along
+/// the path by s_h z_p tan(beta_b), the gear's likewise by z_g: the deflection is
+///   delta = r_b1 phi_p - r_b2 phi_g + d . (u_p - u_g) - s_h tan(beta_b) (z_p - z_g)
+/// and the mesh force's generalised force on z_p, -F d delta / d z_p, is
+/// +s_h F tan(beta_b) (Kahraman, J. Mech. Des. 116 (1994) 713, and Velex & Maatar, J.
+/// Sound Vib. 191 (1996) 629: the axial displacements projected on the normal line of
+/// action through sin(beta_b)). A driving right-hand pinion is pushed along its angular
+/// velocity (+1), a left-hand one against it (-1): the gear's reaction on the front
+/// flank, whose outward normal leans against the helix, points into the tooth.
+pub fn pinion_axial_sign(hand: Hand) -> f64 {
+    match hand {
+        Hand::Right => 1.0,
+        Hand::Left => -1.0,
     }
 }
 

@@ -4,7 +4,9 @@
 //! (`stiffness::helical`), one spring per tooth pair's contact line
 //! (`SliceMeshStiffness::line_model`), the mesh force F along the transverse line of
 //! action (its transverse part F_t = F; the axial part F tan(beta_b) loads the axial
-//! bearings and has no degree of freedom here).
+//! bearings). Where the case gives axial bearings (`dynamics.bearing_axial_stiffness_*`),
+//! pinion and gear carry axial degrees of freedom and the deflection takes their axial
+//! motion (docs/MODEL.md 11.6, [`axial_support`]); otherwise the axial bearings are rigid.
 //!
 //! The lead keys (`[modification]`'s crowning, end relief and helix slope deviation,
 //! `operating.misalignment_um`) give each line's slices their gaps across the face
@@ -20,14 +22,14 @@
 
 use super::domain::{body_value_warnings, domain_problems};
 use super::face_load::{face_load, lead_keys};
-use super::helical::{HelicalDynamics, HelicalModel, LeadDynamics};
+use super::helical::{pinion_axial_sign, HelicalDynamics, HelicalModel, LeadDynamics};
 use super::model::{pitch_line_velocity_warning, Model, ModelError};
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::model::MAX_PAIRS;
-use crate::dynamics::params::DynamicParams;
+use crate::dynamics::params::{AxialSupport, DynamicParams};
 use crate::dynamics::period_search::SteadyStateSettings;
 use crate::geometry::ProfileGrid;
 use crate::stiffness::helical_lead::LineGapTable;
@@ -119,6 +121,21 @@ fn lead_gaps(
     }))
 }
 
+/// The axial degrees of freedom of a helical case (docs/MODEL.md 11.6): the mesh's
+/// d delta / d z_p = -s tan(beta_b) ([`pinion_axial_sign`]; m/m) and each body's axial
+/// bearing from `[dynamics]` (`DynamicsSection::axial_bearings`); None where the case gives
+/// neither axial stiffness (rigid axial bearings: the planar model).
+fn axial_support(
+    case: &Case,
+    pair: &crate::geometry::helical::HelicalPair,
+) -> Option<AxialSupport> {
+    let bearings = case.dynamics.axial_bearings();
+    bearings.iter().any(Option::is_some).then(|| AxialSupport {
+        axial_gradient: -pinion_axial_sign(pair.hand_pinion) * pair.base_helix_angle_rad.tan(),
+        bearings,
+    })
+}
+
 impl Model {
     /// The model of the studies that take a helical pair through the spur pair's solver
     /// (`gearwear dynamics`, `signals`, `wear`, `sweep`): the planar model
@@ -156,7 +173,8 @@ impl Model {
         let (line_pair, mesh, lead) = hm.slices.line_model();
         let mut warnings = hm.warnings.clone();
         let gaps = lead_gaps(&hm, &mut warnings)?;
-        let params = DynamicParams::from_case(case, &transverse);
+        let mut params = DynamicParams::from_case(case, &transverse);
+        params.axial = axial_support(case, &hp);
         warnings.extend(body_value_warnings(
             case,
             &transverse.blank_estimates(case.dynamics.blank_density_kg_per_m3),

@@ -1,6 +1,8 @@
 //! The immutable model objects of one case, built once from a validated `Case`.
 
-use super::domain::{body_value_warnings, domain_problems, Resolved, ResolvedParameters};
+use super::domain::{
+    axial_key_warnings, body_value_warnings, domain_problems, Resolved, ResolvedParameters,
+};
 pub use super::model_error::ModelError;
 use super::teeth::ToothInputs;
 use crate::config::case::{Case, LoadSharingModel};
@@ -212,6 +214,7 @@ impl Model {
             &pair.blank_estimates(case.dynamics.blank_density_kg_per_m3),
         ));
         warnings.extend(pitch_line_velocity_warning(case, &pair, &params.operating));
+        warnings.extend(axial_key_warnings(case));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
         let teeth = ToothInputs::from_case(
@@ -265,7 +268,7 @@ impl Model {
         let elastic = ElasticPair::from_case(&case.materials);
         let train = super::train::TrainModel::from_case(case, &elastic)?;
         let first = &train.stages[0];
-        let mut warnings: Vec<String> = Vec::new();
+        let mut warnings: Vec<String> = axial_key_warnings(case);
         for (k, s) in train.stages.iter().enumerate() {
             let stage_warnings = s.pair.warnings.iter().chain(s.mesh.warnings());
             warnings.extend(stage_warnings.map(|w| format!("stage {}: {w}", k + 1)));
@@ -283,6 +286,7 @@ impl Model {
                 mesh_frequency_hz: p.mesh_frequency_hz,
                 static_mesh_force_n: p.static_mesh_force_n,
             },
+            axial: None,
         };
         Ok(Self {
             contact: first.contact.clone(),
@@ -442,7 +446,7 @@ impl Model {
     pub fn state_len(&self) -> usize {
         match &self.train {
             Some(t) => 2 * t.assembly.len(),
-            None => crate::dynamics::model::NSTATE,
+            None => crate::dynamics::model::NSTATE + 2 * self.params.axial_coordinates(),
         }
     }
 

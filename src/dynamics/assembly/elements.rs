@@ -49,6 +49,19 @@ pub struct Bearing {
     pub damping_n_s_per_m: [f64; 2],
 }
 
+/// An axial (thrust) bearing: a body held to ground along its axis by a spring and a
+/// damper (docs/MODEL.md 11.6). A body with one carries an axial coordinate z (m, along
+/// the pinion's angular velocity, the same direction for every body of parallel axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxialBearing {
+    /// Index of the body the bearing holds.
+    pub body: usize,
+    /// Axial stiffness, N/m.
+    pub stiffness_n_per_m: f64,
+    /// Axial damping, N s/m.
+    pub damping_n_s_per_m: f64,
+}
+
 /// A shaft or coupling between two bodies that turn together: a torsional spring and
 /// damper on the difference of their rotations and, where the shaft carries two gears, a
 /// lateral spring and damper between their centres (0: none).
@@ -86,6 +99,11 @@ pub struct MeshLink {
     /// Direction of the line from the pinion's centre to the gear's in the plane, rad
     /// from +x (0: the gear on +x, the paper's layout).
     pub centre_line_rad: f64,
+    /// d delta / d z_p, m/m: how the pinion's axial motion changes the mesh deflection
+    /// along the transverse line of action (the gear's is the opposite); -s tan(beta_b)
+    /// for a helical mesh (docs/MODEL.md 11.6), 0 for a spur one. It enters the gradient
+    /// only for a body with an axial coordinate (an [`AxialBearing`]).
+    pub axial_gradient: f64,
 }
 
 /// Which bodies the power enters and leaves by, and how their speeds are held
@@ -117,6 +135,9 @@ pub struct Elements {
     pub shafts: Vec<Shaft>,
     /// Meshes between gear bodies.
     pub meshes: Vec<MeshLink>,
+    /// Axial bearings (a helical pair whose case gives them; none otherwise: every body
+    /// then has no axial coordinate).
+    pub axial_bearings: Vec<AxialBearing>,
     /// Where the power enters and leaves, and how the speeds are held.
     pub drive: Drive,
 }

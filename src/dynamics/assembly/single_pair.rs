@@ -1,21 +1,39 @@
 //! The paper's model as the smallest train: motor, pinion, gear and brake, the pinion and
-//! gear on bearings, the motor and brake coupled to them, one mesh (paper eq. 1).
+//! gear on bearings, the motor and brake coupled to them, one mesh (paper eq. 1); a
+//! helical pair's axial bearings where its case gives them (docs/MODEL.md 11.6).
 
-use super::elements::{Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
+use super::elements::{AxialBearing, Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
 use crate::dynamics::params::DynamicParams;
 use crate::geometry::GearPair;
 
-/// Body indices of the single pair.
+/// Body index of the single pair's motor.
 pub const MOTOR: usize = 0;
+/// Body index of the single pair's pinion.
 pub const PINION: usize = 1;
+/// Body index of the single pair's gear.
 pub const GEAR: usize = 2;
+/// Body index of the single pair's brake.
 pub const BRAKE: usize = 3;
 
 impl Elements {
     /// The elements of paper eq. (1) for `pair` with the lumped parameters and operating
-    /// point of `params`: the pinion's centre at the origin, the gear's on +x.
+    /// point of `params`: the pinion's centre at the origin, the gear's on +x; with
+    /// `params.axial`, the axial bearings and the mesh's axial gradient.
     pub fn single_pair(params: &DynamicParams, pair: &GearPair) -> Self {
         let l = &params.lumped;
+        let axial_bearings = params.axial.map_or_else(Vec::new, |a| {
+            [PINION, GEAR]
+                .into_iter()
+                .zip(a.bearings)
+                .filter_map(|(body, kc)| {
+                    kc.map(|(k, c)| AxialBearing {
+                        body,
+                        stiffness_n_per_m: k,
+                        damping_n_s_per_m: c,
+                    })
+                })
+                .collect()
+        });
         let body = |name: &str, kind, mass_kg, inertia_kg_m2, lateral| Body {
             name: name.into(),
             kind,
@@ -85,7 +103,9 @@ impl Elements {
                 base_radius_m: [pair.pinion.base_radius_m, pair.gear.base_radius_m],
                 pressure_angle_rad: pair.operating_pressure_angle_rad,
                 centre_line_rad: 0.0,
+                axial_gradient: params.axial.map_or(0.0, |a| a.axial_gradient),
             }],
+            axial_bearings,
             drive: Drive {
                 input: MOTOR,
                 output: BRAKE,

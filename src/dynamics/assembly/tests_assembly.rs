@@ -9,7 +9,7 @@ use crate::geometry::GearPair;
 use nalgebra::{DMatrix, DVector};
 
 /// Inverse masses, K, C, external forces and a mesh gradient.
-type ByHand = (
+pub(super) type ByHand = (
     Vec<f64>,
     DMatrix<f64>,
     DMatrix<f64>,
@@ -19,7 +19,7 @@ type ByHand = (
 
 /// Paper eq. (1) assembled by hand in the order [x_p, y_p, x_g, y_g, phi_m, phi_p, phi_g,
 /// phi_b]: inverse masses, K, C, external forces and the mesh gradient.
-fn paper_by_hand(p: &DynamicParams, pair: &GearPair) -> ByHand {
+pub(super) fn paper_by_hand(p: &DynamicParams, pair: &GearPair) -> ByHand {
     let l = &p.lumped;
     let mut inv = vec![
         1.0 / l.mass_pinion_kg,
@@ -169,6 +169,7 @@ fn two_stage() -> Elements {
         base_radius_m: r,
         pressure_angle_rad: 0.4,
         centre_line_rad: psi,
+        axial_gradient: 0.0,
     };
     Elements {
         bodies: vec![
@@ -197,6 +198,7 @@ fn two_stage() -> Elements {
                 std::f64::consts::FRAC_PI_2,
             ),
         ],
+        axial_bearings: Vec::new(),
         drive: Drive {
             input: 0,
             output: 5,

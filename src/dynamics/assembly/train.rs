@@ -113,6 +113,7 @@ impl Elements {
                 base_radius_m: s.base_radius_m,
                 pressure_angle_rad: s.pressure_angle_rad,
                 centre_line_rad: s.centre_line_rad,
+                axial_gradient: 0.0,
             });
             if let Some((kt, ct)) = s.shaft.filter(|_| k + 1 < n) {
                 shafts.push(torsion([g, pinion_body(k + 1)], kt, ct));
@@ -132,6 +133,7 @@ impl Elements {
             bearings,
             shafts,
             meshes,
+            axial_bearings: Vec::new(),
             drive,
         }
     }
