@@ -380,5 +380,7 @@ fn the_helical_wear_runs_with_axial_degrees_of_freedom() {
     assert_eq!(a.end_state.as_ref().map(Vec::len), Some(20));
     let (wa, wp) = (a.wear.max_pinion_m(), p.wear.max_pinion_m());
     eprintln!("wear max pinion: axial {wa:.4e} m, planar {wp:.4e} m");
-    assert!(wa > 0.0 && (wa / wp - 1.0).abs() < 0.05, "{wa} {wp}");
+    // Above 1e-9: the axial coordinates couple (equal wear would mean no coupling).
+    let rel = (wa / wp - 1.0).abs();
+    assert!(wa > 0.0 && rel < 1e-2 && rel > 1e-9, "{wa} {wp}: {rel}");
 }

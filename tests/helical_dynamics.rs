@@ -117,6 +117,21 @@ fn the_mean_axial_reaction_is_the_tangential_force_times_tan_beta_b() {
         "mean axial {axial} N against F_t tan(beta_b) = {} N",
         ft * tan_bb
     );
+    // The hand the case gives (right by default) is the hand reported; a left-hand
+    // pinion is pushed against its angular velocity, by the same force.
+    assert_eq!(h["hand_pinion"], "right");
+    let left = helical(&[
+        "gear.helix_angle_deg=15",
+        "friction.model=\"none\"",
+        "gear.helix_hand_pinion=\"left\"",
+    ]);
+    let h = gearwear::report::dynamics_helical::helical_summary(&left, &steady(&left)).unwrap();
+    assert_eq!(h["hand_pinion"], "left");
+    let axial = h["axial_force_pinion"]["mean_n"].as_f64().unwrap();
+    assert!(
+        (axial + ft * tan_bb).abs() <= 1e-6 * ft,
+        "left hand: mean axial {axial} N against -F_t tan(beta_b)"
+    );
 }
 
 #[test]

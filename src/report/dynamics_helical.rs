@@ -35,7 +35,7 @@ pub fn helical_summary(model: &Model, r: &DynamicResponse) -> Option<Value> {
     Some(json!({
         "helix_angle_deg": p.helix_angle_rad.to_degrees(),
         "base_helix_angle_deg": p.base_helix_angle_rad.to_degrees(),
-        "hand_pinion": if sign < 0.0 { "right" } else { "left" },
+        "hand_pinion": model.case.gear.helix_hand_pinion,
         "slices": h.slices,
         "transverse_contact_ratio": p.transverse_contact_ratio,
         "overlap_ratio": p.overlap_ratio,

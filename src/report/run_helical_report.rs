@@ -122,12 +122,27 @@ fn pair_section(p: &Parts) -> Section {
 /// study), and each wear state's headline numbers with Fig. 4-10.
 fn dynamics_section(p: &Parts, states: &Value) -> Section {
     let d = &p.dynamics;
+    // With an elastic axial bearing (docs/MODEL.md 11.6) the pinion moves axially and
+    // its bearing's reaction is the spring's; with a rigid one it is the mesh's axial force.
+    let elastic = d["helical"]["axial_bearings"]["pinion"]["bearing"] == "elastic";
+    let axial = if elastic {
+        format!(
+            "the pinion's elastic axial bearing takes a mean reaction of {} N (mean axial displacement {} m, amplitude {} m)",
+            at(d, "/helical/axial_bearings/pinion/reaction_mean_n"),
+            at(d, "/helical/axial_bearings/pinion/displacement_mean_m"),
+            at(d, "/helical/axial_bearings/pinion/displacement_amplitude_m"),
+        )
+    } else {
+        format!(
+            "the axial force on the pinion, F tan(beta_b) on a rigid axial bearing, has a mean of {} N",
+            at(d, "/helical/axial_force_pinion/mean_n"),
+        )
+    };
     let mut paragraphs = vec![format!(
-        "New teeth: largest dynamic transmission error {} µm, mean mesh force {} N (dynamic factor {}); the axial force on the pinion, F tan(beta_b) with no axial degree of freedom, has a mean of {} N (the axial bearings' reaction).",
+        "New teeth: largest dynamic transmission error {} µm, mean mesh force {} N (dynamic factor {}); {axial}.",
         at(d, "/dte/max_um"),
         at(d, "/mesh_force/mean_n"),
         at(d, "/mesh_force/dynamic_factor"),
-        at(d, "/helical/axial_force_pinion/mean_n"),
     )];
     if !d["face_load"].is_null() {
         paragraphs.push(format!(

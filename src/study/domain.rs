@@ -315,6 +315,22 @@ pub fn axial_key_warnings(case: &Case) -> Vec<String> {
         .collect()
 }
 
+/// Warnings for a helical pair's axial damping given without that body's axial stiffness:
+/// the body's axial bearing is then rigid (docs/MODEL.md 11.6), so the damping is unused.
+pub fn axial_damping_alone_warnings(case: &Case) -> Vec<String> {
+    let d = &case.dynamics;
+    [
+        ("pinion", d.bearing_axial_damping_pinion_n_s_per_m, d.bearing_axial_stiffness_pinion_n_per_m),
+        ("gear", d.bearing_axial_damping_gear_n_s_per_m, d.bearing_axial_stiffness_gear_n_per_m),
+    ]
+    .into_iter()
+    .filter_map(|(body, c, k)| match (c, k) {
+        (Some(c), None) => Some(format!("`dynamics.bearing_axial_damping_{body}_n_s_per_m` = {c} is ignored: without `dynamics.bearing_axial_stiffness_{body}_n_per_m` the {body}'s axial bearing is rigid (docs/MODEL.md 11.6); give the stiffness for an elastic axial bearing")),
+        _ => None,
+    })
+    .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -178,7 +178,7 @@ impl HelicalDynamics {
 /// the path by s_h z_p tan(beta_b), the gear's likewise by z_g: the deflection is
 ///   delta = r_b1 phi_p - r_b2 phi_g + d . (u_p - u_g) - s_h tan(beta_b) (z_p - z_g)
 /// and the mesh force's generalised force on z_p, -F d delta / d z_p, is
-/// +s_h F tan(beta_b) (Kahraman, J. Mech. Des. 116 (1994) 713, and Velex & Maatar, J.
+/// +s_h F tan(beta_b) (Kahraman, J. Mech. Des. 116 (1994) 706-712, and Velex & Maatar, J.
 /// Sound Vib. 191 (1996) 629: the axial displacements projected on the normal line of
 /// action through sin(beta_b)). A driving right-hand pinion is pushed along its angular
 /// velocity (+1), a left-hand one against it (-1): the gear's reaction on the front

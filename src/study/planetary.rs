@@ -83,6 +83,8 @@ impl PlanetaryStudy {
         };
         let ring_mesh = InternalMeshStiffness::new(&set.ring_planet, &planet_ring, false);
         let mut warnings = set.sun_planet.warnings.clone();
+        // A set's meshes are spur: the axial bearing keys are ignored, as on a spur pair.
+        warnings.extend(super::domain::axial_key_warnings(case));
         warnings.extend(sun_mesh.warnings().iter().cloned());
         let speeds_hz = set.member_speeds(case.operating.input_speed_hz);
         let meshes = PlanetaryMeshes::new(&set, &sun_mesh, &ring_mesh);

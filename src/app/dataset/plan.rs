@@ -191,8 +191,14 @@ pub fn dataset_key(d: &DatasetDesign, path_bytes: &[u8]) -> String {
     )
 }
 
+/// The revision of what a record holds and how its labels are computed, part of every
+/// dataset key: a folder made by a build of another revision is another design's (refused
+/// as such, not as edited records). 2: indicators computed from the float32 samples as
+/// stored, and no limiting stage for a train's new teeth.
+const RECORD_REVISION: &str = "records-2";
+
 /// The dataset key of a design's text, its conditions' cases (as TOML), the SHA-256 of
-/// its transfer-path file and the program version.
+/// its transfer-path file, the program version and [`RECORD_REVISION`].
 fn key_of_parts(design: &str, cases: &[String], path_sha256: &str, version: &str) -> String {
     let mut text = design.to_owned();
     for c in cases {
@@ -200,6 +206,7 @@ fn key_of_parts(design: &str, cases: &[String], path_sha256: &str, version: &str
     }
     text.push_str(path_sha256);
     text.push_str(version);
+    text.push_str(RECORD_REVISION);
     sha256_hex(text.as_bytes())
 }
 

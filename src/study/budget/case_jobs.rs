@@ -44,7 +44,7 @@
 
 use super::cost::{Estimate, Term};
 use super::evaluation::{
-    dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, wear_updates,
+    axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, wear_updates,
     DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP,
     SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
 };
@@ -288,7 +288,12 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
     if c.evals > 0.0 {
         terms.push(Term {
             what: "the dynamic evaluations",
-            seconds: c.evals * p.s_dyn * (p.p_c + p.p_e) * SECONDS_PER_STEP * train_factor(case),
+            seconds: c.evals
+                * p.s_dyn
+                * (p.p_c + p.p_e)
+                * SECONDS_PER_STEP
+                * train_factor(case)
+                * axial_factor(case),
             bytes: 0.0,
             keys: if w.dynamic_modes > 0.0 {
                 &[
