@@ -143,12 +143,12 @@ fn a_resume_refuses_a_label_forged_in_any_record() {
     // The library's verification of the folder finds every one of them as well.
     let v = gearwear::app::dataset::jobs::verify_folder(
         &gearwear::app::dataset::DesignSource::file(&dir.path().join("design.toml")).unwrap(),
-        &ds,
+        ds,
         SAMPLED,
         11,
     )
     .unwrap();
-    assert_all_named(&v.problems.join("\n"), &ds, &forged, "max_wear_pinion_um");
+    assert_all_named(&v.problems.join("\n"), ds, forged, "max_wear_pinion_um");
 }
 
 #[test]

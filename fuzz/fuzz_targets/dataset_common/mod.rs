@@ -8,6 +8,9 @@
 //! pinion cycles [0, 1e4], speeds [25, 35] Hz, 2 noise realisations, CSV records, 0.05 s
 //! records on coarse grids (8 records).
 
+// Each target compiles this module and uses a part of it.
+#![allow(dead_code)]
+
 use gearwear::app::dataset::folder::{parse_sidecar, Sidecar};
 use gearwear::app::dataset::index_files::index_tables;
 use gearwear::io::columns_csv::columns_csv;
