@@ -384,3 +384,27 @@ fn the_helical_wear_runs_with_axial_degrees_of_freedom() {
     let rel = (wa / wp - 1.0).abs();
     assert!(wa > 0.0 && rel < 1e-2 && rel > 1e-9, "{wa} {wp}: {rel}");
 }
+
+#[test]
+fn an_axial_shift_beyond_a_few_percent_of_the_face_is_warned() {
+    // Statics: a pinion on an axial spring k_a under F_a = F_t tan(beta) (~0.8 kN for the
+    // built-in load at 15 deg) shifts by F_a / k_a against the rigidly held gear: 82 mm
+    // at 1e4 N/m, 4 times the 20 mm face (warned), 1.6 um at 5e8 N/m (not).
+    let base = ["gear.helix_angle_deg=15"];
+    let soft = model_of(&with(
+        &base,
+        &["dynamics.bearing_axial_stiffness_pinion_n_per_m=1e4"],
+    ));
+    let w = gearwear::study::helical_dynamics::axial_shift_warning(&soft, &steady(&soft));
+    let w = w.expect("a shift of 4 face widths is warned");
+    assert!(w.contains("dynamics.bearing_axial_stiffness_"), "{w}");
+    let stiff = model_of(&with(&base, &STIFF));
+    let none = gearwear::study::helical_dynamics::axial_shift_warning(&stiff, &steady(&stiff));
+    assert_eq!(none, None);
+    // A planar model has no axial coordinates to warn of.
+    let planar = helical(&base);
+    assert_eq!(
+        gearwear::study::helical_dynamics::axial_shift_warning(&planar, &steady(&planar)),
+        None
+    );
+}

@@ -79,6 +79,9 @@ impl Job for DynamicsJob {
         let r = model
             .dynamic(&WearState::new(model.grid.len()), &external)
             .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
+        if let Some(w) = crate::study::helical_dynamics::axial_shift_warning(&model, &r) {
+            observer.warning(&w);
+        }
         let label = if self.transmission_error.is_some() {
             "new teeth, external transmission error"
         } else {

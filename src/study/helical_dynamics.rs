@@ -226,3 +226,40 @@ impl Model {
         })
     }
 }
+
+/// Relative axial shift |z_p - z_g| above which [`axial_shift_warning`] speaks, as a share
+/// of the face width: the model keeps the two faces aligned (docs/MODEL.md 11.6), which a
+/// shift of a few percent of b leaves nearly true.
+pub const AXIAL_SHIFT_WARNING_SHARE: f64 = 0.05;
+
+/// A warning when the response `r` of a helical pair with axial degrees of freedom moves
+/// the gears axially against each other by more than [`AXIAL_SHIFT_WARNING_SHARE`] of the
+/// face width at any step (the faces' overlap, which the slices assume fixed, would move
+/// by as much); None otherwise, and for a model without axial coordinates.
+pub fn axial_shift_warning(
+    model: &Model,
+    r: &crate::dynamics::response::DynamicResponse,
+) -> Option<String> {
+    use crate::dynamics::assembly::elements::Elements;
+    use crate::dynamics::assembly::single_pair::{GEAR, PINION};
+    use crate::dynamics::assembly::{Assembly, Dof};
+    model.helical.as_ref()?;
+    let asm = Assembly::new(Elements::single_pair(&model.params, &model.pair)).ok()?;
+    let at = |body| asm.index(body, Dof::Axial);
+    let d = &r.signals.displacement;
+    let z = |i: Option<usize>, k: usize| i.map_or(0.0, |i| d[k][i]);
+    let (p, g) = (at(PINION), at(GEAR));
+    if p.is_none() && g.is_none() {
+        return None;
+    }
+    let shift_m = (0..d.len()).fold(0.0_f64, |m, k| m.max((z(p, k) - z(g, k)).abs()));
+    let b_m = model.case.gear.face_width_mm * 1e-3;
+    (shift_m > AXIAL_SHIFT_WARNING_SHARE * b_m).then(|| {
+        format!(
+            "the gears move axially against each other by up to {:.3} mm, {:.0} % of the {} mm face width (`dynamics.bearing_axial_stiffness_*`): the model keeps the faces aligned (docs/MODEL.md 11.6), so the result is unreliable beyond a few percent; stiffen the axial bearings",
+            shift_m * 1e3,
+            100.0 * shift_m / b_m,
+            crate::format::shown(model.case.gear.face_width_mm)
+        )
+    })
+}
