@@ -126,3 +126,28 @@ impl SpectrumModel {
         bin_label(&self.case, i)
     }
 }
+
+/// The wear per pinion cycle of a mesh under a spectrum, sum_i s_i inc_i (paper eq. 14-16
+/// per bin, mixed by the shares `shares`), m: `per_bin` gives each bin's (pinion, gear)
+/// increments per profile point, in bin order (a train's mesh, a planetary set's mesh).
+pub fn mixed_increment<'a>(
+    per_bin: impl Iterator<Item = (&'a [f64], &'a [f64])>,
+    shares: &[f64],
+) -> crate::wear::WearIncrement {
+    let (mut p, mut g): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
+    for ((pinion, gear), s) in per_bin.zip(shares) {
+        p.resize(pinion.len(), 0.0);
+        g.resize(gear.len(), 0.0);
+        for (x, d) in p.iter_mut().zip(pinion) {
+            *x += s * d;
+        }
+        for (x, d) in g.iter_mut().zip(gear) {
+            *x += s * d;
+        }
+    }
+    crate::wear::WearIncrement {
+        pinion_m: p,
+        gear_m: g,
+        ..Default::default()
+    }
+}

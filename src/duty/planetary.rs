@@ -151,22 +151,14 @@ pub struct PlanetarySpectrumRecord {
 impl PlanetarySpectrumRecord {
     /// Mesh `j`'s wear per pinion cycle under the spectrum, sum_i s_i inc_ij, m.
     pub fn increment(&self, shares: &[f64], j: usize) -> WearIncrement {
-        let n = self.bins[0].meshes[j].increment_pinion_m.len();
-        let (mut p, mut g) = (vec![0.0; n], vec![0.0; n]);
-        for (b, s) in self.bins.iter().zip(shares) {
+        let per_bin = self.bins.iter().map(|b| {
             let r = &b.meshes[j];
-            for (x, d) in p.iter_mut().zip(&r.increment_pinion_m) {
-                *x += s * d;
-            }
-            for (x, d) in g.iter_mut().zip(&r.increment_gear_m) {
-                *x += s * d;
-            }
-        }
-        WearIncrement {
-            pinion_m: p,
-            gear_m: g,
-            ..Default::default()
-        }
+            (
+                r.increment_pinion_m.as_slice(),
+                r.increment_gear_m.as_slice(),
+            )
+        });
+        super::model::mixed_increment(per_bin, shares)
     }
 
     /// The update as one run of the set reads it: bin `observed`'s records with every
