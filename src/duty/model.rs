@@ -55,24 +55,7 @@ impl SpectrumModel {
                 monitoring: 0,
             });
         };
-        let built: Vec<Result<Model, ModelError>> = (0..spectrum.bins.len())
-            .into_par_iter()
-            .map(|i| Model::from_case(&case.at_bin(i)))
-            .collect();
-        let mut bins = Vec::with_capacity(built.len());
-        let mut problems = Vec::new();
-        for (i, b) in built.into_iter().enumerate() {
-            match b {
-                Ok(m) => bins.push(m),
-                Err(e) => problems.extend(
-                    e.0.iter()
-                        .map(|p| format!("{}: {}", bin_label(case, i), in_bin_words(p))),
-                ),
-            }
-        }
-        if !problems.is_empty() {
-            return Err(ModelError(problems));
-        }
+        let bins = models_of_bins(case, spectrum.bins.len(), Model::from_case)?;
         Ok(Self {
             case: case.clone(),
             bins,
@@ -124,6 +107,35 @@ impl SpectrumModel {
             return "the operating point".into();
         }
         bin_label(&self.case, i)
+    }
+}
+
+/// The model of every one of the `bins` bins of `case`'s spectrum (`Case::at_bin`), built
+/// by `build` in parallel; every bin's problems named with its bin, all at once.
+pub fn models_of_bins<M: Send>(
+    case: &Case,
+    bins: usize,
+    build: impl Fn(&Case) -> Result<M, ModelError> + Sync,
+) -> Result<Vec<M>, ModelError> {
+    let built: Vec<Result<M, ModelError>> = (0..bins)
+        .into_par_iter()
+        .map(|i| build(&case.at_bin(i)))
+        .collect();
+    let mut models = Vec::with_capacity(built.len());
+    let mut problems = Vec::new();
+    for (i, b) in built.into_iter().enumerate() {
+        match b {
+            Ok(m) => models.push(m),
+            Err(e) => problems.extend(
+                e.0.iter()
+                    .map(|p| format!("{}: {}", bin_label(case, i), in_bin_words(p))),
+            ),
+        }
+    }
+    if problems.is_empty() {
+        Ok(models)
+    } else {
+        Err(ModelError(problems))
     }
 }
 

@@ -29,7 +29,7 @@
 //! makes every product exact). A bin whose response leaves the model's domain, or finds
 //! no steady state, stops the run naming the bin.
 
-use super::model::{bin_label, in_bin_words};
+use super::model::bin_label;
 use crate::config::case::TorqueShaft;
 use crate::config::{Case, LoadSpectrumSection};
 use crate::study::model::ModelError;
@@ -75,24 +75,8 @@ impl PlanetarySpectrum {
                 "{key} = \"gear\" on a planetary set: the spectrum's bins load the set's input member (`planetary.input`), so the valid value is \"pinion\" (the input member); give the bins' torques on the input member"
             )]));
         }
-        let built: Vec<Result<PlanetaryWearModel, ModelError>> = (0..spectrum.bins.len())
-            .into_par_iter()
-            .map(|i| PlanetaryWearModel::from_case(&case.at_bin(i)))
-            .collect();
-        let mut models = Vec::with_capacity(built.len());
-        let mut problems = Vec::new();
-        for (i, b) in built.into_iter().enumerate() {
-            match b {
-                Ok(m) => models.push(m),
-                Err(e) => problems.extend(
-                    e.0.iter()
-                        .map(|p| format!("{}: {}", bin_label(case, i), in_bin_words(p))),
-                ),
-            }
-        }
-        if !problems.is_empty() {
-            return Err(ModelError(problems));
-        }
+        let models =
+            super::model::models_of_bins(case, spectrum.bins.len(), PlanetaryWearModel::from_case)?;
         Ok(Self {
             case: case.clone(),
             spectrum: spectrum.clone(),
