@@ -289,3 +289,120 @@ fn every_record_s_signal_indicators_are_those_of_its_stored_samples() {
         }
     }
 }
+
+/// A design asking for every record's CSV twin (PHM 2009-style text beside the Parquet
+/// file): 12 states, one record each.
+fn csv_design() -> String {
+    pair_design(12).replace(
+        "noise_realisations = 1\n",
+        "noise_realisations = 1\ncsv = true\n",
+    )
+}
+
+#[test]
+fn every_record_s_csv_twin_holds_the_samples_of_its_parquet_file() {
+    // The CSV a user loads in MATLAB must be the record: each column's values, parsed
+    // from the text, equal the Parquet file's float32 samples read by the reference row
+    // reader (exactly: float32 values printed and parsed back round trip), and the time
+    // column is n / f_s.
+    let dir = tempfile::tempdir().unwrap();
+    let design = pair_design(2).replace(
+        "noise_realisations = 1\n",
+        "noise_realisations = 1\ncsv = true\n",
+    );
+    std::fs::write(dir.path().join("design.toml"), design).unwrap();
+    ok(&dataset(dir.path(), "ds", &[]));
+    let ds = dir.path().join("ds");
+    for id in 0..2 {
+        let car: Value = serde_json::from_slice(
+            &std::fs::read(ds.join(format!("records/{id:07}.json"))).unwrap(),
+        )
+        .unwrap();
+        let columns = parquet_columns(&ds.join(car["labels"]["file"].as_str().unwrap()));
+        let mut csv = csv::Reader::from_path(ds.join(format!("csv/{id:07}.csv"))).unwrap();
+        let header: Vec<String> = csv.headers().unwrap().iter().map(str::to_owned).collect();
+        assert_eq!(header[0], "time_s");
+        let rows: Vec<Vec<f64>> = csv
+            .records()
+            .map(|r| r.unwrap().iter().map(|c| c.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(
+            header.len(),
+            columns.len() + 1,
+            "time and every Parquet column"
+        );
+        let meta: Value =
+            serde_json::from_slice(&std::fs::read(ds.join("metadata.json")).unwrap()).unwrap();
+        let fs = meta["record"]["sampling_rate_hz"].as_f64().unwrap();
+        for (j, (name, x)) in columns.iter().enumerate() {
+            assert_eq!(&header[j + 1], name);
+            assert_eq!(rows.len(), x.len(), "{name}: sample count");
+            for (n, row) in rows.iter().enumerate() {
+                assert_eq!(
+                    row[j + 1] as f32,
+                    x[n] as f32,
+                    "record {id} {name} sample {n}"
+                );
+                assert!((row[0] - n as f64 / fs).abs() <= 1e-12 * (1.0 + row[0]));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_resume_or_merge_refuses_an_edited_or_missing_csv_twin_in_any_record() {
+    // The CSV twin is not in the sidecar's checksum: it is rendered again from the
+    // verified signal file for every kept record. 12 states, one record each: records
+    // 1-9 edited (one sample changed in the last digit shown) and record 10's removed;
+    // at least 2 of them are beyond the 8 sampled states, so the labels' check must name
+    // them.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("design.toml"), csv_design()).unwrap();
+    ok(&dataset(dir.path(), "ds", &[]));
+    ok(&dataset(dir.path(), "shard", &["--shard", "1/1"]));
+    let edit = |ds: &Path| {
+        for id in 1..10 {
+            let p = ds.join(format!("csv/{id:07}.csv"));
+            let text = std::fs::read_to_string(&p).unwrap();
+            let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+            let mut cells: Vec<String> = lines[5].split(',').map(str::to_owned).collect();
+            let v: f32 = cells[1].parse().unwrap();
+            cells[1] = format!("{}", v * 1.001 + 1e-3);
+            lines[5] = cells.join(",");
+            std::fs::write(&p, lines.join("\n") + "\n").unwrap();
+        }
+        std::fs::remove_file(ds.join("csv/0000010.csv")).unwrap();
+    };
+    let ds = dir.path().join("ds");
+    edit(&ds);
+    let before = files(&ds);
+    let resume = dataset(dir.path(), "ds", &[]);
+    assert_eq!(resume.status.code(), Some(2), "{}", stderr(&resume));
+    let err = stderr(&resume);
+    for id in 1..11 {
+        assert!(
+            err.contains(&format!("csv/{id:07}.csv")),
+            "record {id}'s CSV not named:\n{err}"
+        );
+    }
+    assert!(files(&ds) == before, "a refused resume changed a record");
+    assert!(
+        !err.contains("csv/0000011.csv"),
+        "an intact CSV named:\n{err}"
+    );
+
+    // The same edits in a shard: its merge is refused and writes no index.
+    let shard = dir.path().join("shard");
+    edit(&shard);
+    let merged = dir.path().join("merged");
+    let m = gearwear(&[
+        "dataset-merge",
+        "-q",
+        "--out",
+        merged.to_str().unwrap(),
+        shard.to_str().unwrap(),
+    ]);
+    assert_eq!(m.status.code(), Some(2), "{}", stderr(&m));
+    assert!(stderr(&m).contains("csv/0000010.csv"), "{}", stderr(&m));
+    assert!(!merged.join("index.csv").exists());
+}

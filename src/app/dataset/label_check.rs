@@ -7,12 +7,17 @@
 //! file as stored (`Record::round_to_stored`): so every kept record's labels are
 //! recomputed here, the indicators from the record's own signal file (whose checksum the
 //! sidecar holds). A label or indicator edited in a record no sample reaches is found all
-//! the same; a signal edited together with its checksum only by the sample.
+//! the same; a signal edited together with its checksum only by the sample. A record's
+//! CSV twin (when the design asks for one) is the signal file's samples written as text:
+//! it is rendered again from the verified signal file and compared byte for byte, so an
+//! edited, missing or swapped CSV is named as well.
 
-use super::folder::{finished, read_in, sidecar_rel, Sidecar};
+use super::folder::{csv_rel, finished, read_in, sidecar_rel, Sidecar};
 use super::kept::{first_difference, Kept};
 use super::state_files::{state_inputs, state_model, StateJob};
 use crate::checksum::sha256_hex;
+use crate::signals::files::record_table;
+use crate::signals::record::Record;
 use crate::study::dataset::records::{
     expected_labels, stored_indicators, RecordLabels, StateInputs,
 };
@@ -81,7 +86,10 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
             match labelled {
                 Ok((inp, expected)) => records
                     .into_iter()
-                    .filter_map(|(r, car)| record_problem(root, &inp, car, &expected[r], kept))
+                    .filter_map(|(r, car)| {
+                        let csv = job.req.design.csv;
+                        record_problem(root, &inp, car, &expected[r], (kept, csv))
+                    })
                     .collect::<Vec<_>>(),
                 Err(e) => vec![unrecomputable(root, p, &e)],
             }
@@ -90,13 +98,14 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
 }
 
 /// The message of kept record `car` whose labels differ from `expected` (its indicators
-/// recomputed here from its stored signal file, `records::stored_indicators`), if any.
+/// recomputed here from its stored signal file, `records::stored_indicators`), or whose
+/// CSV twin (`csv`: the design asks for one) is not its signal file's samples, if any.
 fn record_problem(
     root: &Path,
     inp: &StateInputs,
     car: Sidecar,
     expected: &RecordLabels,
-    kept: Kept,
+    (kept, csv): (Kept, bool),
 ) -> Option<String> {
     let at = root.join(sidecar_rel(car.labels.record_id));
     let id = car.labels.record_id;
@@ -107,7 +116,14 @@ fn record_problem(
         .ok_or_else(|| anyhow::anyhow!("it changed while it was checked"));
     let mut expected = expected.clone();
     match signal.and_then(|b| stored_indicators(inp, b)) {
-        Ok(indicators) => expected.indicators = indicators,
+        Ok((record, indicators)) => {
+            expected.indicators = indicators;
+            if csv {
+                if let Some(what) = csv_difference(root, id, &record, inp) {
+                    return Some(format!("{}: {what}: {}", at.display(), advice(kept)));
+                }
+            }
+        }
         Err(e) => {
             return Some(format!(
                 "{}: record {id}'s signal file cannot be read back ({e:#}): {}",
@@ -122,6 +138,26 @@ fn record_problem(
         at.display(),
         advice(kept)
     ))
+}
+
+/// What is wrong with record `id`'s CSV twin in `root`, `None` when it holds the samples
+/// of `record` (read from its verified signal file) byte for byte as the job writes them
+/// (`signals::files::record_table`).
+fn csv_difference(root: &Path, id: usize, record: &Record, inp: &StateInputs) -> Option<String> {
+    let rel = csv_rel(id);
+    let Some(kept) = read_in(root, &rel) else {
+        return Some(format!("record {id}'s CSV twin {rel} is missing"));
+    };
+    let unit = inp.setup.chain.acquisition.unit;
+    match record_table(record, unit).to_csv() {
+        Ok(bytes) if bytes == kept => None,
+        Ok(_) => Some(format!(
+            "record {id}'s CSV twin {rel} does not hold the samples of its signal file"
+        )),
+        Err(e) => Some(format!(
+            "record {id}'s CSV twin cannot be rendered again ({e})"
+        )),
+    }
 }
 
 /// The first field in which `kept` and `expected` differ, with both values, `None` when

@@ -250,15 +250,15 @@ fn indicators_of(inp: &StateInputs, rec: &Record) -> Vec<ChannelIndicators> {
         .collect()
 }
 
-/// The indicators of the record stored in the Parquet bytes `signal` (a signal file of
-/// `inp`'s state, `signals::files::record_parquet`), recomputed from the stored samples:
-/// the indicators its labels must hold, since a record's indicators are computed from its
-/// samples as stored (`Record::round_to_stored`). Fails when the file does not hold the
-/// design's channels and samples.
+/// The record stored in the Parquet bytes `signal` (a signal file of `inp`'s state,
+/// `signals::files::record_parquet`) and its indicators recomputed from the stored
+/// samples: the indicators its labels must hold, since a record's indicators are computed
+/// from its samples as stored (`Record::round_to_stored`), and the samples its CSV twin
+/// must hold. Fails when the file does not hold the design's channels and samples.
 pub fn stored_indicators(
     inp: &StateInputs,
     signal: Vec<u8>,
-) -> anyhow::Result<Vec<ChannelIndicators>> {
+) -> anyhow::Result<(Record, Vec<ChannelIndicators>)> {
     let acq = &inp.setup.chain.acquisition;
     let rec = stored_record(
         signal,
@@ -267,7 +267,8 @@ pub fn stored_indicators(
         record_samples(inp),
         acq.sampling_rate_hz,
     )?;
-    Ok(indicators_of(inp, &rec))
+    let indicators = indicators_of(inp, &rec);
+    Ok((rec, indicators))
 }
 
 /// The wear labels of a state (every record of it alike).
