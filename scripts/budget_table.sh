@@ -11,6 +11,7 @@
 #        BUDGET_ROWS=issue33 scripts/budget_table.sh   (only issue 33's rows: signals records
 # by length x sampling rate and by sensor count, dataset designs by records x length x
 # rate x channels, predict with a future spectrum of 1-20 bins; about 10 min)
+#        BUDGET_ROWS=datasets scripts/budget_table.sh   (only the dataset designs and a merge)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet --bin gearwear
@@ -140,11 +141,9 @@ TOML
 measure run_spectrum_3_bins run --config three_bins.toml
 }
 
-# Issue 33: the estimate across record length x sampling rate, sensor count, dataset
-# designs (records x length x rate x channels) and a future spectrum's bins.
-issue33_rows() {
 # A modal transfer path of N sensors (the generic housing's three modes, each sensor's
-# gains those of `input` scaled by 1 + i/N).
+# gains those of `input` scaled by 1 + i/N): path_1.toml, path_20.toml, path_100.toml.
+modal_paths() {
 python3 - <<'PY'
 for n in (1, 20, 100):
     with open(f"path_{n}.toml", "w") as f:
@@ -152,26 +151,11 @@ for n in (1, 20, 100):
         for hz, z in ((2100.0, 0.02), (3700.0, 0.03), (6300.0, 0.04)):
             rows = ", ".join(f"[{0.0075 * (1 + i / n):.6f}, {0.025 * (1 + i / n):.6f}, 0.005, 0.02]" for i in range(n))
             f.write(f"[[mode]]\nfrequency_hz = {hz}\ndamping_ratio = {z}\ngains_per_kg = [{rows}]\n")
-# Future load spectra of N bins (torque 40-80 N m, speed 20-50 Hz, equal shares).
-for n in (1, 5, 20):
-    with open(f"future_{n}.toml", "w") as f:
-        f.write("[load_spectrum]\nbins = [\n")
-        for i in range(n):
-            t = 40 + 40 * i / max(n - 1, 1)
-            v = 20 + 30 * ((i * 7) % n) / max(n - 1, 1)
-            f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
-        f.write("]\n")
 PY
-# Signals: record length x sampling rate (steady records, the generic housing's 2 sensors).
-measure signals_10s_25.6khz signals --set signals.record_length=10
-measure signals_1s_200khz signals --set signals.sampling_rate_hz=200000
-measure signals_5s_200khz signals --set signals.sampling_rate_hz=200000 --set signals.record_length=5
-measure signals_0.5s_1mhz signals --set signals.sampling_rate_hz=1000000 --set signals.record_length=0.5
-# Signals: the sensor count (a modal path of 1, 20, 100 sensors; 1 s at 25.6 kHz).
-measure signals_1_sensor signals --transfer-path path_1.toml
-measure signals_20_sensors signals --transfer-path path_20.toml
-measure signals_100_sensors signals --transfer-path path_100.toml
-# Datasets: records x length x rate x channels.
+}
+
+# Datasets: records x length x rate x channels; realisations sharing a state; a merge.
+dataset_rows() {
 dataset_design() { # NAME STATES SPEEDS REALISATIONS LENGTH_S RATE_HZ [PATH]
     {
         echo "seed = 3"
@@ -197,6 +181,39 @@ dataset_design ds_24x0.1s 3 "[20, 30]" 4 0.1 25600
 measure dataset_24_records_0.1s_25.6khz dataset --design ds_24x0.1s.toml
 dataset_design ds_4x0.5s_20ch 2 "[30]" 2 0.5 25600 path_20.toml
 measure dataset_4_records_0.5s_20_sensors dataset --design ds_4x0.5s_20ch.toml
+dataset_design ds_400x1s 40 "[30]" 10 1 25600
+measure dataset_400_records_1s_10_realisations dataset --design ds_400x1s.toml
+for i in 1 2; do
+    "$bin" dataset -q --no-budget --design ds_400x1s.toml --shard "$i/2" --out "shard_$i" >/dev/null
+done
+measure dataset_merge_400_records dataset-merge shard_1 shard_2
+}
+
+# Issue 33: the estimate across record length x sampling rate, sensor count, dataset
+# designs (records x length x rate x channels) and a future spectrum's bins.
+issue33_rows() {
+modal_paths
+python3 - <<'PY'
+# Future load spectra of N bins (torque 40-80 N m, speed 20-50 Hz, equal shares).
+for n in (1, 5, 20):
+    with open(f"future_{n}.toml", "w") as f:
+        f.write("[load_spectrum]\nbins = [\n")
+        for i in range(n):
+            t = 40 + 40 * i / max(n - 1, 1)
+            v = 20 + 30 * ((i * 7) % n) / max(n - 1, 1)
+            f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
+        f.write("]\n")
+PY
+# Signals: record length x sampling rate (steady records, the generic housing's 2 sensors).
+measure signals_10s_25.6khz signals --set signals.record_length=10
+measure signals_1s_200khz signals --set signals.sampling_rate_hz=200000
+measure signals_5s_200khz signals --set signals.sampling_rate_hz=200000 --set signals.record_length=5
+measure signals_0.5s_1mhz signals --set signals.sampling_rate_hz=1000000 --set signals.record_length=0.5
+# Signals: the sensor count (a modal path of 1, 20, 100 sensors; 1 s at 25.6 kHz).
+measure signals_1_sensor signals --transfer-path path_1.toml
+measure signals_20_sensors signals --transfer-path path_20.toml
+measure signals_100_sensors signals --transfer-path path_100.toml
+dataset_rows
 # Predict with a future spectrum of 1, 5 and 20 bins (100 prior samples, to 2e4 cycles,
 # the spectrum from 1e4 cycles on, no check runs).
 for n in 1 5 20; do
@@ -207,6 +224,7 @@ done
 
 case "${BUDGET_ROWS:-all}" in
     issue33) issue33_rows ;;
+    datasets) modal_paths; dataset_rows ;;
     *) issue22_rows; issue33_rows ;;
 esac
 

@@ -131,3 +131,57 @@ fn the_disk_estimate_bounds_what_a_dataset_writes_and_the_work_is_counted() {
         );
     }
 }
+
+#[test]
+fn a_merge_is_refused_before_any_work_when_its_check_of_every_record_is_over_budget() {
+    // A merge reads back and analyses every record of its shards (and recomputes a
+    // sample): that work is counted before any of it (issue 33: a merge of 1e6 records
+    // ran hours counted nowhere). Under a vanishing budget: exit 2, the reason named, no
+    // output folder; under the default budget the same merge runs.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(
+        d.join("design.toml"),
+        design("\"signals.record_length=0.1\"", 3, 2, "30", false),
+    )
+    .unwrap();
+    let p = |s: &str| d.join(s).to_str().unwrap().to_owned();
+    for i in 1..=2 {
+        ok(&[
+            "dataset",
+            "-q",
+            "--design",
+            &p("design.toml"),
+            "--shard",
+            &format!("{i}/2"),
+            "--out",
+            &p(&format!("s{i}")),
+        ]);
+    }
+    let merge = |out: &str, scale: &str| {
+        common::gearwear(&[
+            "dataset-merge",
+            "-q",
+            &p("s1"),
+            &p("s2"),
+            "--out",
+            &p(out),
+            "--budget-scale",
+            scale,
+        ])
+    };
+    let r = merge("refused", "1e-9");
+    assert_eq!(r.status.code(), Some(2), "{}", common::stderr(&r));
+    let err = common::stderr(&r);
+    assert!(
+        err.contains("over its budget") && err.contains("nothing was computed"),
+        "{err}"
+    );
+    assert!(
+        !d.join("refused").exists(),
+        "a refused merge made its folder"
+    );
+    let m = merge("merged", "1");
+    assert!(m.status.success(), "{}", common::stderr(&m));
+    assert!(d.join("merged/index.csv").exists());
+}

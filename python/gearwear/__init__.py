@@ -760,13 +760,16 @@ def dataset_merge(
     figures: _Optional[str] = None,
     figure_size: _Optional[_Tuple[int, int]] = None,
     transfer_path: _Optional[PathLike] = None,
+    budget_scale: float = 1.0,
 ) -> DatasetResult:
     """The shards of a dataset joined into ``out`` with its index and metadata, as
     ``gearwear dataset-merge``: byte for byte the dataset an unsharded run writes (with the
     same ``figures``, ``figure_size``: as for :func:`stiffness`). Each shard's records
     are verified by recomputing a sample of them first (a forged shard is refused,
     nothing written); ``transfer_path``: the transfer-path file the shards' design
-    names, needed to recompute them (``--transfer-path``)."""
+    names, needed to recompute them (``--transfer-path``). The verification reads and
+    analyses every record: its cost is checked against the run budget first
+    (``budget_scale``, as for :func:`dataset`)."""
     n = _native.dataset_merge(
         [_os.fspath(p) for p in inputs],
         _os.fspath(out),
@@ -774,5 +777,6 @@ def dataset_merge(
         figures=figures,
         figure_size=figure_size,
         transfer_path=None if transfer_path is None else _os.fspath(transfer_path),
+        budget_scale=budget_scale,
     )
     return _done(DatasetResult(**n), n)

@@ -253,6 +253,7 @@ def dataset_merge(
     figures: Optional[str] = None,
     figure_size: Optional[Tuple[int, int]] = None,
     transfer_path: Optional[Union[str, PathLike[str]]] = None,
+    budget_scale: float = 1.0,
 ) -> _Result:
     """``gearwear dataset-merge``."""
 

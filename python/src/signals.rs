@@ -118,7 +118,8 @@ pub fn dataset<'py>(
 /// The shards of a dataset joined (as `gearwear dataset-merge`); `transfer_path`: the
 /// transfer-path file the shards' design names (`--transfer-path`).
 #[pyfunction]
-#[pyo3(signature = (inputs, out, *, replace=false, figures=None, figure_size=None, transfer_path=None))]
+#[pyo3(signature = (inputs, out, *, replace=false, figures=None, figure_size=None, transfer_path=None, budget_scale=1.0))]
+#[allow(clippy::too_many_arguments)]
 pub fn dataset_merge<'py>(
     py: Python<'py>,
     inputs: Vec<PathBuf>,
@@ -127,8 +128,11 @@ pub fn dataset_merge<'py>(
     figures: Option<String>,
     figure_size: Option<(i64, i64)>,
     transfer_path: Option<PathBuf>,
+    budget_scale: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let budget = crate::jobs::budget_of(budget_scale)?;
     let job = DatasetMergeJob {
+        budget,
         inputs,
         out,
         replace,

@@ -52,6 +52,11 @@ def test_dataset_and_merge_from_python_equal_the_cli(cli, tmp_path):
     # Two shards from Python, merged: the same dataset.
     for i in (1, 2):
         gw.dataset(design, tmp_path / f"s{i}", shard=(i, 2))
+    # The merge's check of every record is counted first: over a vanishing budget it is
+    # refused before any work, and no folder is made.
+    with pytest.raises(gw.CaseError, match="over its budget"):
+        gw.dataset_merge([tmp_path / "s1", tmp_path / "s2"], tmp_path / "refused", budget_scale=1e-9)
+    assert not (tmp_path / "refused").exists()
     m = gw.dataset_merge([tmp_path / "s1", tmp_path / "s2"], tmp_path / "merged")
     assert m.summary["missing"] == []
     assert (tmp_path / "merged" / "index.parquet").read_bytes() == (ref / "index.parquet").read_bytes()

@@ -23,12 +23,13 @@ pub(crate) fn run(a: &DatasetArgs, budget: Option<Budget>) -> Result<(), CliErro
     })
 }
 
-pub(crate) fn merge(a: &DatasetMergeArgs) -> Result<(), CliError> {
+pub(crate) fn merge(a: &DatasetMergeArgs, budget: Option<Budget>) -> Result<(), CliError> {
     execute(&DatasetMergeJob {
         inputs: a.inputs.clone(),
         out: a.out.clone(),
         replace: super::output::replace(),
         figures: a.figures.request(),
         transfer_path: a.transfer_path.clone(),
+        budget,
     })
 }

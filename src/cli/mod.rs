@@ -88,7 +88,7 @@ fn run(cli: &Cli) -> u8 {
         Command::Dynamics(a) => dynamics_cmd::run(a, budget),
         Command::Signals(a) => signals_cmd::run(a, budget),
         Command::Dataset(a) => dataset_cmd::run(a, budget),
-        Command::DatasetMerge(a) => dataset_cmd::merge(a),
+        Command::DatasetMerge(a) => dataset_cmd::merge(a, budget),
         Command::Wear(a) => wear_cmd::run(a, budget),
         Command::Run(a) => run_cmd::run(a, budget),
         Command::Sweep(a) => sweep_cmd::run(a, budget),

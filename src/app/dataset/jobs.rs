@@ -3,7 +3,7 @@
 
 use super::folder::{check_owner, copied_names, refused_names};
 use super::merge::{check_trajectories, merge_datasets, shared_key};
-use super::merge_verify::verify_inputs;
+use super::merge_verify::{verify_estimate, verify_inputs};
 use super::plan::{check_dataset, dataset_key, trajectory_problems};
 use super::request::{DatasetError, DatasetOutcome, DatasetRequest};
 use super::run::{refuse_planted_names, run_dataset};
@@ -277,6 +277,9 @@ pub struct DatasetMergeJob {
     /// recomputed through it; the description keeps only its hash), as the design's
     /// `transfer_path` names it for `dataset`; `None` when the design uses none.
     pub transfer_path: Option<PathBuf>,
+    /// The run budget the verification of the shards is checked against (`None`: no
+    /// check).
+    pub budget: Option<Budget>,
 }
 
 impl Job for DatasetMergeJob {
@@ -296,19 +299,23 @@ impl Job for DatasetMergeJob {
         }
         let inputs: Vec<&Path> = self.inputs.iter().map(PathBuf::as_path).collect();
         let shared = shared_key(&inputs)?;
-        check_trajectories(&inputs, &shared.0)?;
-        // Every shard's description and a sample of its records recomputed bit for bit,
-        // as a resume verifies what it reuses (issue 33: forged labels were merged).
         let given = self
             .transfer_path
             .as_deref()
             .map(|p| read_transfer_path(p).map(|(t, b)| (p, t, b)))
             .transpose()?;
-        verify_inputs(
-            &inputs,
-            &shared.0,
-            given.as_ref().map(|(p, t, b)| (*p, t, b.as_slice())),
+        let given = given.as_ref().map(|(p, t, b)| (*p, t, b.as_slice()));
+        // The verification below reads and analyses every record of every shard: its
+        // cost checked first (issue 33: a merge of 1e6 records was counted nowhere).
+        let threads = rayon::current_num_threads();
+        budget::check_estimate(
+            &verify_estimate(&inputs, &shared.0, given, threads),
+            self.budget.as_ref(),
         )?;
+        check_trajectories(&inputs, &shared.0)?;
+        // Every shard's description and a sample of its records recomputed bit for bit,
+        // as a resume verifies what it reuses (issue 33: forged labels were merged).
+        verify_inputs(&inputs, &shared.0, given)?;
         check_owner(&self.out, &shared.0, self.replace).map_err(another_design)?;
         // Links, FIFOs and foreign files at the names the merge copies to: refused before
         // the folder is opened, as a dataset run refuses them (issue 33).

@@ -17,6 +17,7 @@ use super::state_files::StateJob;
 use super::verify::{os_seed, verify_states};
 use crate::checksum::sha256_hex;
 use crate::signals::transfer::TransferPath;
+use crate::study::budget::{estimate_dataset_check, Estimate, KeptRecords};
 use crate::study::dataset::plan::{plan_of, Shard};
 use crate::study::dataset::verify::{states_to_recompute, MAX_RECOMPUTED_STATES};
 use crate::study::dataset::{design_of_cases, DatasetDesign, Defaults};
@@ -46,6 +47,78 @@ pub(super) fn verify_inputs(
         Ok(())
     } else {
         Err(DatasetError::Input(problems))
+    }
+}
+
+/// The cost of [`verify_inputs`] (`study::budget::estimate_dataset_check`), summed over
+/// the shards in `inputs` before any is verified: each shard's design rebuilt from its
+/// description, its record size checked, the records and states it holds under `key`
+/// counted; the shards are verified one after another, so the memory is the largest
+/// shard's. A shard whose design cannot be rebuilt adds nothing: its verification
+/// refuses it before any work.
+pub(super) fn verify_estimate(
+    inputs: &[&Path],
+    key: &str,
+    given: GivenPath,
+    threads: usize,
+) -> Estimate {
+    let mut sum: Option<Estimate> = None;
+    for dir in inputs {
+        let Some(e) = shard_estimate(dir, key, given, threads) else {
+            continue;
+        };
+        match &mut sum {
+            None => sum = Some(e),
+            Some(s) => {
+                for (a, b) in s.terms.iter_mut().zip(&e.terms) {
+                    a.seconds += b.seconds;
+                    a.bytes = a.bytes.max(b.bytes);
+                }
+            }
+        }
+    }
+    sum.unwrap_or_else(|| Estimate::of_terms(Vec::new()))
+}
+
+/// [`verify_estimate`] of one shard, `None` when its design cannot be rebuilt.
+fn shard_estimate(dir: &Path, key: &str, given: GivenPath, threads: usize) -> Option<Estimate> {
+    let body = read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice::<Value>(&b).ok())?;
+    let d = design_of(dir, &body).ok()?;
+    let (path, path_bytes) = path_of(dir, &d, &body, given).ok()?;
+    let req = whole_request(&d, path, path_bytes);
+    let checked = check_dataset(&req).ok()?;
+    let realisations = plan_of(&d).realisations.max(1);
+    let ids: Vec<usize> = sidecars(dir)
+        .into_iter()
+        .filter(|s| s.dataset_key == key)
+        .map(|s| s.labels.record_id)
+        .collect();
+    let states = ids
+        .iter()
+        .map(|id| id / realisations)
+        .collect::<BTreeSet<_>>()
+        .len();
+    let kept = KeptRecords {
+        records: ids.len() as f64,
+        states: states as f64,
+    };
+    Some(estimate_dataset_check(&d, kept, threads, checked.record))
+}
+
+/// The request that recomputes a shard of design `d` (through `path`, whose file's bytes
+/// are `path_bytes`): the whole design, as one shard.
+fn whole_request<'a>(
+    d: &'a DatasetDesign,
+    path: Option<TransferPath>,
+    path_bytes: &[u8],
+) -> DatasetRequest<'a> {
+    DatasetRequest {
+        design: d,
+        path,
+        path_bytes: path_bytes.to_vec(),
+        shard: Shard { index: 1, count: 1 },
+        figures: Default::default(),
+        replace: false,
     }
 }
 
@@ -119,14 +192,7 @@ fn verify_input(dir: &Path, key: &str, given: GivenPath, seed: u64) -> Result<()
     };
     let d = design_of(dir, &body)?;
     let (path, path_bytes) = path_of(dir, &d, &body, given).map_err(|e| vec![e])?;
-    let req = DatasetRequest {
-        design: &d,
-        path,
-        path_bytes: path_bytes.to_vec(),
-        shard: Shard { index: 1, count: 1 },
-        figures: Default::default(),
-        replace: false,
-    };
+    let req = whole_request(&d, path, path_bytes);
     let in_dir = |m: String| format!("{}: {m}", dir.display());
     let checked = check_dataset(&req).map_err(|e| vec![in_dir(e.to_string())])?;
     let own_key = dataset_key(&d, &req.path_bytes);

@@ -7,17 +7,44 @@ use super::cost::{Estimate, Term, BASE_BYTES};
 use super::evaluation::SLOWER_MACHINE_FACTOR;
 use super::signals::{record_synthesis, BYTES_PER_SAMPLE_CHANNEL};
 use crate::study::dataset::plan::{plan_of, Shard};
+use crate::study::dataset::verify::MAX_RECOMPUTED_STATES;
 use crate::study::dataset::DatasetDesign;
+use crate::study::wear_check::MAX_RECOMPUTED;
 
 /// CPU seconds per record sample of a dataset, besides its channels (tachometer, noise,
-/// files; no figures nor analysis of `signals`), and per sample and channel: measured
-/// 1.25 us a sample with 2 channels (4 records of 0.25 s and of 8 s at 25.6 kHz, the
-/// built-in case: 0.11 s and 1.10 s, 2026-11-29 at load 5) and 0.38 us more per further
-/// channel (4 records of 0.5 s with 20 channels: 0.49 s, docs/RELIABILITY.md), so 0.5 us
-/// and 0.4 us, times [`SLOWER_MACHINE_FACTOR`]. (They were `signals`' 3 us and 4 us: a
-/// dataset's record costs less than a `signals` record, issue 33.)
+/// files; no figures nor analysis of `signals`), and per sample and channel, of a
+/// physical state's first record: measured 1.25 us a sample with 2 channels (4 records
+/// of 0.25 s and of 8 s at 25.6 kHz, the built-in case: 0.11 s and 1.10 s, 2026-11-29 at
+/// load 5) and 0.38 us more per further channel (4 records of 0.5 s with 20 channels:
+/// 0.49 s, docs/RELIABILITY.md), so 0.5 us and 0.4 us, times [`SLOWER_MACHINE_FACTOR`].
+/// (They were `signals`' 3 us and 4 us: a dataset's record costs less than a `signals`
+/// record, issue 33.)
 const SECONDS_PER_RECORD_SAMPLE: f64 = 0.5e-6 * SLOWER_MACHINE_FACTOR;
 const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.4e-6 * SLOWER_MACHINE_FACTOR;
+/// The same of each further record of a state (its noise realisations share the state's
+/// rendered clean channels: only noise, analysis and files are made again), and of a
+/// kept record read back and analysed by a resume's or a merge's check: measured
+/// 2026-11-30 (built-in case, 1 s at 25.6 kHz, load 8) 13 ms a further record with 2
+/// channels (4 and 40 states x 1 and 10 realisations: 0.17, 0.67, 1.26 and 5.82 s of
+/// CPU) and 50 ms with 20 (4 states x 1 and 10: 0.42 and 2.22 s), so 0.35 us a sample
+/// and 0.08 us a sample and channel; a kept record's check 12 ms with 2 channels (an
+/// 800-record resume, docs/RELIABILITY.md); times [`SLOWER_MACHINE_FACTOR`].
+const SECONDS_PER_FURTHER_RECORD_SAMPLE: f64 = 0.35e-6 * SLOWER_MACHINE_FACTOR;
+const SECONDS_PER_FURTHER_SAMPLE_CHANNEL: f64 = 0.08e-6 * SLOWER_MACHINE_FACTOR;
+
+/// CPU seconds of one record of `record`'s size: a state's first (`first`), or a
+/// further realisation of it, or a kept record's check.
+fn record_seconds(record: RecordSize, first: bool) -> f64 {
+    let (base, channel) = if first {
+        (SECONDS_PER_RECORD_SAMPLE, SECONDS_PER_SAMPLE_CHANNEL)
+    } else {
+        (
+            SECONDS_PER_FURTHER_RECORD_SAMPLE,
+            SECONDS_PER_FURTHER_SAMPLE_CHANNEL,
+        )
+    };
+    record.samples * (base + record.channels * channel)
+}
 
 /// The size of the dataset's longest record: its samples (record length x sampling rate,
 /// at the slowest speed for a length in revolutions) and its accelerometer channels.
@@ -51,8 +78,8 @@ pub fn estimate_dataset(
 ) -> Estimate {
     let plan = plan_of(d);
     let states = plan.shard_state_count(shard) as f64;
-    let records = states * plan.realisations as f64;
-    let per_sample_s = SECONDS_PER_RECORD_SAMPLE + record.channels * SECONDS_PER_SAMPLE_CHANNEL;
+    let further = states * (plan.realisations as f64 - 1.0).max(0.0);
+    let records_s = states * record_seconds(record, true) + further * record_seconds(record, false);
     // A record held on each thread: its channels (clean and noisy, in the writer's
     // buffers), measured 98 bytes a sample in all with 2 channels on 2 threads (the peak
     // of 4 records of 8 s against 0.25 s at 25.6 kHz: 37.7 MB against 18.3 MB) and 65 more
@@ -60,14 +87,69 @@ pub fn estimate_dataset(
     // sample and channel on each thread. (It also counted `signals`' 400 bytes a sample of
     // analysis a dataset does not make: 10 times the measured slope, issue 33.)
     let per_sample_b = record.channels * BYTES_PER_SAMPLE_CHANNEL;
+    let c = design_costs(d, record);
+    Estimate::of_terms(vec![
+        Term {
+            what: "the conditions' run-to-failure trajectories",
+            seconds: c.trajectories_s,
+            bytes: 0.0,
+            keys: &["run_to_failure.max_cycles", "the conditions' wear keys"],
+        },
+        Term {
+            what: "the physical states' dynamic evaluations",
+            seconds: states * c.state_s,
+            bytes: threads.max(1) as f64 * (c.bytes - BASE_BYTES),
+            keys: &[
+                "the number of conditions, states, speeds and loads",
+                "the conditions' numerics keys",
+            ],
+        },
+        Term {
+            what: "the records (noise, analysis, files)",
+            seconds: records_s,
+            bytes: threads.max(1) as f64 * record.samples * per_sample_b,
+            keys: &[
+                "records.noise_realisations",
+                "signals.record_length",
+                "signals.sampling_rate_hz",
+                "the transfer path's sensors",
+            ],
+        },
+    ])
+}
+
+/// What a design's conditions cost, each once: their trajectories, the costliest
+/// physical state (its dynamic evaluation from rest and its record's synthesis) and the
+/// memory of the costliest single study.
+struct DesignCosts {
+    /// CPU seconds of every condition's run-to-failure trajectory.
+    trajectories_s: f64,
+    /// CPU seconds of checking every condition's kept trajectory by the wear law: the
+    /// updates `study::wear_check::verify_resumable` recomputes (at most
+    /// `MAX_RECOMPUTED`) and the next update after the last, each an evaluation from its
+    /// stored state, counted from rest.
+    trajectory_checks_s: f64,
+    /// CPU seconds of the costliest physical state.
+    state_s: f64,
+    /// Peak bytes of the costliest single study on one thread.
+    bytes: f64,
+}
+
+/// [`DesignCosts`] of `d` with records of `record`'s size.
+fn design_costs(d: &DatasetDesign, record: RecordSize) -> DesignCosts {
     let ends = |v: &[f64]| {
         let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         [lo, hi]
     };
-    let (mut trajectories_s, mut state_s, mut bytes) = (0.0, 0.0f64, 0.0f64);
-    for c in &d.conditions {
-        let mut case = c.case.clone();
+    let mut c = DesignCosts {
+        trajectories_s: 0.0,
+        trajectory_checks_s: 0.0,
+        state_s: 0.0,
+        bytes: 0.0,
+    };
+    for cond in &d.conditions {
+        let mut case = cond.case.clone();
         case.wear.total_cycles = d.max_cycles;
         let w = estimate(
             &case,
@@ -76,11 +158,13 @@ pub fn estimate_dataset(
                 quasi_static: false,
             },
         );
-        trajectories_s += run_to_failure_seconds(&case, w.wear_updates_dynamic);
-        bytes = bytes.max(w.memory_bytes());
+        c.trajectories_s += run_to_failure_seconds(&case, w.wear_updates_dynamic);
+        let checked = (MAX_RECOMPUTED + 1) as f64;
+        c.trajectory_checks_s += checked * run_to_failure_seconds(&case, 1.0);
+        c.bytes = c.bytes.max(w.memory_bytes());
         for speed in ends(&d.speeds_hz) {
             for torque in ends(&d.torques_nm) {
-                let mut case = c.case.clone();
+                let mut case = cond.case.clone();
                 case.set_load_point(crate::config::case::LoadPoint {
                     input_speed_hz: speed,
                     load_torque_nm: torque,
@@ -90,33 +174,65 @@ pub fn estimate_dataset(
                 // Each state's periodic record is synthesised once (its realisations
                 // only add noise): at low speed its harmonics dominate (0.6 s at 0.5 Hz).
                 let (synth_s, synth_b) = record_synthesis(&case, record.channels as usize);
-                state_s = state_s.max(run_to_failure_seconds(&case, 1.0) + synth_s);
-                bytes = bytes.max(e.memory_bytes() + synth_b);
+                c.state_s = c.state_s.max(run_to_failure_seconds(&case, 1.0) + synth_s);
+                c.bytes = c.bytes.max(e.memory_bytes() + synth_b);
             }
         }
     }
+    c
+}
+
+/// The records of a dataset folder a check verifies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KeptRecords {
+    /// Records kept (sidecars under the dataset's key).
+    pub records: f64,
+    /// Physical states they belong to.
+    pub states: f64,
+}
+
+/// The cost of verifying a dataset folder of design `d` holding `kept` records of
+/// `record`'s size, as a merge verifies each input shard before it copies anything
+/// (`app::dataset::merge_verify`): every kept trajectory checked by the wear law, the
+/// first, last and a random sample of the physical states recomputed whole (at most
+/// `MAX_RECOMPUTED_STATES`), and every other kept record's signal read back and analysed
+/// on `threads` threads (at the rate of a state's further record, measured alike). (Before issue 33's budget for merges, a merge of 1e6 records was
+/// hours of CPU counted nowhere.)
+pub fn estimate_dataset_check(
+    d: &DatasetDesign,
+    kept: KeptRecords,
+    threads: usize,
+    record: RecordSize,
+) -> Estimate {
+    let plan = plan_of(d);
+    let c = design_costs(d, record);
+    let sampled = kept.states.min(MAX_RECOMPUTED_STATES as f64);
+    let realisations = plan.realisations as f64;
+    let per_state_s = c.state_s
+        + record_seconds(record, true)
+        + (realisations - 1.0).max(0.0) * record_seconds(record, false);
+    // The records of the sampled states are recomputed, not checked again.
+    let checked = (kept.records - sampled * realisations).max(0.0);
+    let threads = threads.max(1) as f64;
     Estimate::of_terms(vec![
         Term {
-            what: "the conditions' run-to-failure trajectories",
-            seconds: trajectories_s,
+            what: "the kept trajectories checked by the wear law",
+            seconds: c.trajectory_checks_s,
             bytes: 0.0,
-            keys: &["run_to_failure.max_cycles", "the conditions' wear keys"],
+            keys: &["the conditions' wear keys"],
         },
         Term {
-            what: "the physical states' dynamic evaluations",
-            seconds: states * state_s,
-            bytes: threads.max(1) as f64 * (bytes - BASE_BYTES),
-            keys: &[
-                "the number of conditions, states, speeds and loads",
-                "the conditions' numerics keys",
-            ],
+            what: "a sample of the physical states recomputed",
+            seconds: sampled * per_state_s,
+            bytes: threads * (c.bytes - BASE_BYTES),
+            keys: &["the conditions' numerics keys"],
         },
         Term {
-            what: "the records (noise, analysis, files)",
-            seconds: records * record.samples * per_sample_s,
-            bytes: threads.max(1) as f64 * record.samples * per_sample_b,
+            what: "every kept record's signal read back and analysed",
+            seconds: checked * record_seconds(record, false),
+            bytes: threads * record.samples * record.channels * BYTES_PER_SAMPLE_CHANNEL,
             keys: &[
-                "records.noise_realisations",
+                "the records the inputs hold",
                 "signals.record_length",
                 "signals.sampling_rate_hz",
                 "the transfer path's sensors",

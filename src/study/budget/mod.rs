@@ -43,7 +43,9 @@ pub use case_jobs::{
     OUTPUT_SECONDS_PER_PROFILE_POINT,
 };
 pub use cost::{Budget, Estimate, Term};
-pub use dataset::{estimate_dataset, trajectory_bytes, RecordSize};
+pub use dataset::{
+    estimate_dataset, estimate_dataset_check, trajectory_bytes, KeptRecords, RecordSize,
+};
 pub use evaluation::{
     adaptive_steps_per_period, nominal_wear_per_cycle_m, wear_updates,
     ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE, DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE,
