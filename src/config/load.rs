@@ -399,6 +399,9 @@ fn planetary_section(
     let before = problems.len();
     if let Value::Table(t) = &mut value {
         check_nested_keys(PLANETARY, t, problems);
+        if let Some(faults) = t.get_mut("fault") {
+            check_planetary_faults(faults, problems);
+        }
     }
     if problems.len() > before {
         return None;
@@ -411,6 +414,45 @@ fn planetary_section(
         Err(e) => {
             problems.push(format!("[planetary]{}", toml_error(&e, "")));
             None
+        }
+    }
+}
+
+/// The `[[planetary.fault]]` tables (a single `[planetary.fault]` taken as an array of
+/// one) normalised and range-checked in place: `kind`, `gear`, `planet` and `tooth` by
+/// their own schema entries, the sizes by the pair's `fault.*` entries (the same keys,
+/// units and ranges).
+fn check_planetary_faults(value: &mut Value, problems: &mut Vec<String>) {
+    if let Value::Table(t) = value {
+        *value = Value::Array(vec![Value::Table(std::mem::take(t))]);
+    }
+    let Value::Array(items) = value else {
+        problems.push(format!(
+            "[[planetary.fault]] must be tables of keys, not {}",
+            type_name(value)
+        ));
+        return;
+    };
+    for (i, item) in items.iter_mut().enumerate() {
+        let Value::Table(table) = item else {
+            problems.push(format!(
+                "[[planetary.fault]] entry {i} must be a table of keys, not {}",
+                type_name(item)
+            ));
+            continue;
+        };
+        for (key, v) in table.iter_mut() {
+            let path = match key.as_str() {
+                "kind" | "gear" | "planet" | "tooth" => format!("planetary.fault.{key}"),
+                _ => format!("fault.{key}"),
+            };
+            let Some(s) = spec(&path) else { continue };
+            match normalise(&path, v, s.valid) {
+                Ok(()) => problems.extend(
+                    check_range(&path, v, s.valid).map(|p| format!("{p} (planetary fault {i})")),
+                ),
+                Err(p) => problems.push(p),
+            }
         }
     }
 }

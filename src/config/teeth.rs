@@ -315,7 +315,7 @@ impl FaultTable {
     }
 
     /// The kind-specific keys given, by name.
-    fn given(&self) -> [(&'static str, bool); 8] {
+    pub(crate) fn given(&self) -> [(&'static str, bool); 8] {
         self.fields().map(|(k, v)| (k, v.is_some()))
     }
 
@@ -435,9 +435,25 @@ impl TryFrom<FaultTable> for ToothFault {
         if !p.is_empty() {
             return Err(p.join("; "));
         }
-        // Every key the kind requires is given (checked above).
+        let fault = table.resolved();
+        Ok(Self {
+            gear: table.gear,
+            tooth: tooth.unwrap_or(0),
+            fault,
+            table,
+        })
+    }
+}
+
+impl FaultTable {
+    /// The fault its keys give, in SI units with the defaults applied: the one place a
+    /// table's sizes are resolved (a pair's `[[fault]]` and a planetary set's
+    /// `[[planetary.fault]]`, `config::planetary`). A required key not given counts as 0
+    /// (its absence is a problem the callers report first).
+    pub(crate) fn resolved(&self) -> Fault {
+        let table = self;
         let v = |key: &str| table.value(key).unwrap_or(0.0);
-        let fault = match table.kind {
+        match table.kind {
             FaultKind::Crack => Fault::Crack {
                 depth_m: v("crack_depth_mm") * 1e-3,
                 angle_rad: v("crack_angle_deg") * PI / 180.0,
@@ -452,13 +468,7 @@ impl TryFrom<FaultTable> for ToothFault {
             FaultKind::BrokenTip => Fault::BrokenTip {
                 removed_height_m: v("removed_height_mm") * 1e-3,
             },
-        };
-        Ok(Self {
-            gear: table.gear,
-            tooth: tooth.unwrap_or(0),
-            fault,
-            table,
-        })
+        }
     }
 }
 

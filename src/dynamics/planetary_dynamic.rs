@@ -60,6 +60,23 @@ impl MeshStiffnessSource {
         }
     }
 
+    /// Mesh periods over which the stiffness repeats (`PlanetaryMeshes::periods`; 1 for
+    /// constant stiffness).
+    pub fn periods(&self) -> usize {
+        match self {
+            Self::Tables(m) => m.periods(),
+            Self::Constant(_) => 1,
+        }
+    }
+
+    /// The same source with every tooth alike (a tooth fault left out).
+    pub fn without_fault(&self) -> Self {
+        match self {
+            Self::Tables(m) => Self::Tables(Box::new(m.without_fault())),
+            Self::Constant(k) => Self::Constant(*k),
+        }
+    }
+
     /// The mesh cycles in [0, 1) where a mesh's stiffness jumps
     /// (`PlanetaryMeshes::jump_cycles`); none for constant stiffness.
     pub fn jump_cycles(&self) -> Vec<f64> {

@@ -62,6 +62,8 @@ pub struct PlanetaryResponse {
     pub periodicity: f64,
     /// Accepted steps over the whole run.
     pub steps: u64,
+    /// Mesh periods recorded: 1, or a tooth fault's period (`PlanetaryMeshes::periods`).
+    pub mesh_periods: usize,
 }
 
 impl PlanetaryResponse {
@@ -104,11 +106,57 @@ pub enum PlanetaryDynamicsError {
     },
 }
 
-/// Integrate `sys` to its mesh-periodic steady state and record one period.
+/// The one-period search's outcome: the stepper with its plan, the state on the orbit at
+/// t = 0, the periods integrated, the state's scales and the static deflection.
+struct Searched {
+    run: Run,
+    z: DVector<f64>,
+    periods: usize,
+    scale: DVector<f64>,
+    q0: DVector<f64>,
+}
+
+/// Integrate `sys` to its steady state and record it: one mesh period with every tooth
+/// alike, the fault's period (`PlanetaryMeshes::periods`) with a tooth fault
+/// ([`solve_fault_period`]).
 pub fn solve_planetary_steady_state(
     sys: &mut PlanetaryDynamic,
     s: &PlanetarySettings,
 ) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+    if sys.source.periods() > 1 {
+        return solve_fault_period(sys, s);
+    }
+    let Searched {
+        mut run,
+        z,
+        periods,
+        scale,
+        q0,
+    } = search(sys, s)?;
+    let mut y = z;
+    let y_start = y.clone();
+    let mut samples = Vec::with_capacity(s.samples_per_period + 1);
+    run.period(sys, 0.0, &mut y, Some(&mut samples))?;
+    samples.push(y.as_slice().to_vec());
+    let periodicity = relative_change(&y_start, &y, &scale);
+    Ok(response(
+        sys,
+        s,
+        &samples,
+        q0,
+        periods,
+        periodicity,
+        &run,
+        1,
+    ))
+}
+
+/// The mesh-periodic orbit's state at t = 0 by the quasi-Newton shooting of the module
+/// docs, from the static equilibrium at mean stiffness.
+fn search(
+    sys: &mut PlanetaryDynamic,
+    s: &PlanetarySettings,
+) -> Result<Searched, PlanetaryDynamicsError> {
     let n = sys.dofs();
     let q0 = sys
         .static_deflection()
@@ -173,30 +221,128 @@ pub fn solve_planetary_steady_state(
     if run.mode == PlanMode::Build {
         run.mode = PlanMode::Replay;
     }
-    let mut y = z;
-    let y_start = y.clone();
-    let mut samples = Vec::with_capacity(s.samples_per_period + 1);
-    run.period(sys, 0.0, &mut y, Some(&mut samples))?;
-    samples.push(y.as_slice().to_vec());
-    let t0 = 0.0;
-    let dt = period / s.samples_per_period as f64;
-    let mut rec = PlanetaryResponse {
-        times_s: (0..s.samples_per_period).map(|k| k as f64 * dt).collect(),
-        mesh_forces_n: Vec::new(),
-        mean_forces_n: mean_forces(sys, t0, dt, &samples),
-        displacements_m: samples[..s.samples_per_period]
-            .iter()
-            .map(|y| y[..n].to_vec())
+    Ok(Searched {
+        run,
+        z,
+        periods,
+        scale,
+        q0,
+    })
+}
+
+/// The response of the recorded `samples` (states at each sample's start over `recorded`
+/// mesh periods, then the end state).
+#[allow(clippy::too_many_arguments)]
+fn response(
+    sys: &PlanetaryDynamic,
+    s: &PlanetarySettings,
+    samples: &[Vec<f64>],
+    q0: DVector<f64>,
+    periods: usize,
+    periodicity: f64,
+    run: &Run,
+    recorded: usize,
+) -> PlanetaryResponse {
+    let n = sys.dofs();
+    let count = s.samples_per_period * recorded;
+    let dt = 1.0 / sys.mesh_frequency_hz / s.samples_per_period as f64;
+    PlanetaryResponse {
+        times_s: (0..count).map(|k| k as f64 * dt).collect(),
+        mesh_forces_n: (0..count)
+            .map(|k| sys.mesh_forces(k as f64 * dt, &samples[k]))
             .collect(),
+        mean_forces_n: mean_forces(sys, 0.0, dt, samples),
+        displacements_m: samples[..count].iter().map(|y| y[..n].to_vec()).collect(),
         static_m: q0.iter().copied().collect(),
         periods_to_steady: periods,
-        periodicity: relative_change(&y_start, &y, &scale),
+        periodicity,
         steps: run.stepper.stats().steps,
-    };
-    rec.mesh_forces_n = (0..s.samples_per_period)
-        .map(|k| sys.mesh_forces(t0 + k as f64 * dt, &samples[k]))
-        .collect();
-    Ok(rec)
+        mesh_periods: recorded,
+    }
+}
+
+/// Mesh periods of run-in before a fault's period is recorded: W = 1.2 ln(1 / tolerance)
+/// / (sigma T_m), sigma the slowest decay rate of the time-invariant model (the smallest
+/// -Re(lambda) of [`PlanetaryDynamic::mean_state_matrix`]), so that the one-period orbit
+/// the run-in starts from (the healthy set's, up to the state's scales away from the
+/// faulty orbit) has decayed to the tolerance; 20 % margin for the uneven decay under
+/// time-varying stiffness, as the pair's `hunting::run_in_periods`. At least 2, at most
+/// `periods` (a pass that is not yet periodic is followed by another).
+fn run_in_periods(sys: &PlanetaryDynamic, tolerance: f64, periods: usize) -> usize {
+    let eig = sys.mean_state_matrix().complex_eigenvalues();
+    let scale = eig.iter().fold(0.0_f64, |m, l| m.max(l.norm()));
+    let sigma = eig
+        .iter()
+        .map(|l| -l.re)
+        .filter(|d| *d > 1e-9 * scale)
+        .fold(f64::INFINITY, f64::min);
+    if !(sigma.is_finite() && sigma > 0.0) {
+        return periods;
+    }
+    let w = 1.2 * (1.0 / tolerance).ln() * sys.mesh_frequency_hz / sigma;
+    (w.ceil() as usize).max(2).min(periods)
+}
+
+/// The steady state of a set with a tooth fault over the fault's period P mesh periods
+/// (docs/MODEL.md 12.14), as the pair's `hunting::solve_hunting`: (1) the one-period orbit
+/// of the healthy set ([`search`], the fault left out), (2) a run-in with the fault over
+/// the last W mesh periods of the period ([`run_in_periods`]), ending at its start, (3)
+/// passes of P periods from t = 0, recorded, until one changes the state by less than the
+/// steady-state tolerance relative to its scales (the P-period map contracts by
+/// e^(-sigma P T_m): one pass from a settled state is periodic). Every period of a pass
+/// is integrated from its own start time c T_m, so each pair meets its own teeth.
+fn solve_fault_period(
+    sys: &mut PlanetaryDynamic,
+    s: &PlanetarySettings,
+) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+    let p = sys.source.periods();
+    let faulty = sys.source.clone();
+    sys.source = faulty.without_fault();
+    let searched = search(sys, s);
+    sys.source = faulty;
+    let Searched {
+        mut run,
+        z,
+        mut periods,
+        scale,
+        q0,
+    } = searched?;
+    let t_m = 1.0 / sys.mesh_frequency_hz;
+    let mut y = z;
+    let w = run_in_periods(sys, s.steady_state_tolerance, p);
+    for c in p - w..p {
+        run.period(sys, c as f64 * t_m, &mut y, None)?;
+    }
+    periods += w;
+    let budget = s.max_periods.max(2 * p + w);
+    loop {
+        let y_start = y.clone();
+        let mut samples = Vec::with_capacity(p * s.samples_per_period + 1);
+        for c in 0..p {
+            run.period(sys, c as f64 * t_m, &mut y, Some(&mut samples))?;
+        }
+        samples.push(y.as_slice().to_vec());
+        let periodicity = relative_change(&y_start, &y, &scale);
+        if periodicity < s.steady_state_tolerance {
+            return Ok(response(
+                sys,
+                s,
+                &samples,
+                q0,
+                periods,
+                periodicity,
+                &run,
+                p,
+            ));
+        }
+        periods += p;
+        if periods + p > budget {
+            return Err(PlanetaryDynamicsError::NotSteady {
+                periods,
+                change: periodicity,
+            });
+        }
+    }
 }
 
 /// Sub-intervals per sample interval of the mean forces' midpoint rule: a mesh force

@@ -207,11 +207,19 @@ impl PlanetarySet {
     /// (tau = pi / 2 z_p on both) this is 0 for an odd z_p and 1/2 for an even one
     /// (Parker & Lin 2004: a tooth faces a space, or a tooth, across the planet).
     pub fn ring_sun_phase(&self) -> f64 {
+        frac(self.ring_sun_cycles())
+    }
+
+    /// The planet rotation (relative to the carrier, in mesh cycles) from a planet flank's
+    /// passing the sun mesh's pitch point to the opposite flank's passing the ring mesh's,
+    /// z_p / 2 - z_p (tau_s + tau_r) / 2 pi, unreduced ([`Self::ring_sun_phase`] is its
+    /// fraction).
+    pub fn ring_sun_cycles(&self) -> f64 {
         let planet = &self.sun_planet.gear;
         let zp = planet.teeth as f64;
         let tau_s = planet.half_base_angle_rad - inv(self.sun_planet.operating_pressure_angle_rad);
         let tau_r = planet.half_base_angle_rad - inv(self.ring_planet.operating_pressure_angle_rad);
-        frac(zp / 2.0 - zp * (tau_s + tau_r) / (2.0 * PI))
+        zp / 2.0 - zp * (tau_s + tau_r) / (2.0 * PI)
     }
 }
 

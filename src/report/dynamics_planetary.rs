@@ -68,7 +68,7 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
             })
         })
         .collect();
-    let v = json!({
+    let mut v = json!({
         "planetary_dynamics": {
             "input": d.study.set.input.name(),
             "input_torque_nm": d.input_torque_nm,
@@ -92,6 +92,20 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
         },
         "warnings": d.study.warnings,
     });
+    if let Some(f) = d.study.meshes.fault() {
+        // Only a faulty set states its fault (a healthy set's summary is unchanged).
+        let member = match f.member {
+            crate::stiffness::planetary_mesh::FaultMember::Sun => "sun".to_string(),
+            crate::stiffness::planetary_mesh::FaultMember::Planet(n) => format!("planet {}", n + 1),
+        };
+        v["planetary_dynamics"]["fault"] = json!({
+            "member": member,
+            "tooth": f.tooth,
+            "period_mesh_periods": r.mesh_periods,
+            "period_s": r.mesh_periods as f64 / d.model.mesh_frequency_hz,
+            "fault_frequency_hz": d.model.mesh_frequency_hz / r.mesh_periods as f64,
+        });
+    }
     let mut a = Artifacts {
         headline: format!(
             "planetary dynamics, {n} planets at {} Hz mesh frequency: mean sun-planet mesh force {} N (nominal {} N), dynamic factor {}, largest load sharing factor {}",

@@ -26,7 +26,14 @@ pub fn planetary_signals_artifacts(
     let n = set.planets();
     let zr = set.teeth_ring() as i64;
     let amp = &rec.order_amplitude_n;
-    let at = |k: i64| usize::try_from(k).ok().and_then(|k| amp.get(k)).copied();
+    // Line index of carrier order k: k R (R = 1 without a tooth fault).
+    let r = rec.revolutions.max(1) as i64;
+    let at = |k: i64| {
+        usize::try_from(k * r)
+            .ok()
+            .and_then(|k| amp.get(k))
+            .copied()
+    };
     let reach = sideband_reach(n);
     let mesh: Vec<_> = (1..=harmonics as i64)
         .filter(|h| at(h * zr).is_some())
@@ -49,7 +56,7 @@ pub fn planetary_signals_artifacts(
             })
         })
         .collect();
-    let v = json!({
+    let mut v = json!({
         "planetary_signals": {
             "sensor": "on the ring (fixed)",
             "sensor_angle_deg": sensor.angle_rad.to_degrees(),
@@ -57,7 +64,7 @@ pub fn planetary_signals_artifacts(
             "carrier_hz": rec.carrier_hz,
             "mesh_frequency_hz": rec.mesh_frequency_hz,
             "planet_pass_hz": rec.planet_pass_hz,
-            "samples_per_revolution": rec.revolution_n.len(),
+            "samples_per_revolution": rec.revolution_n.len() / rec.revolutions.max(1),
             "mesh_harmonics": mesh,
             "lumped_parameters": super::stiffness_planetary::lumped_json(&d.study),
         },
@@ -71,6 +78,9 @@ pub fn planetary_signals_artifacts(
         },
         "warnings": d.study.warnings,
     });
+    if let Some(f) = fault_lines(d, rec, harmonics) {
+        v["planetary_signals"]["fault"] = f;
+    }
     let mut a = Artifacts {
         headline: format!(
             "planetary signals, {n} planets: a sensor on the ring hears the mesh frequency {} Hz with sidebands at the planet-pass frequency {} Hz (carrier {} Hz)",
@@ -87,7 +97,7 @@ pub fn planetary_signals_artifacts(
             .col("time_s", rec.times_s.clone())
             .col("ring_sensor_n", rec.values_n.clone()),
     );
-    let orders: Vec<f64> = (0..amp.len()).map(|k| k as f64).collect();
+    let orders: Vec<f64> = (0..amp.len()).map(|k| k as f64 / r as f64).collect();
     a.table(
         "orders.csv",
         Table::new()
@@ -99,4 +109,50 @@ pub fn planetary_signals_artifacts(
             .col("amplitude_n", amp.clone()),
     );
     a
+}
+
+/// Sidebands of a tooth fault's lines listed either side of each mesh harmonic.
+const FAULT_SIDEBANDS: i64 = 3;
+
+/// With a tooth fault: its repeat frequency f_m / P (the sun's rotation relative to the
+/// carrier, f_s - f_c, for a sun tooth; the planet's, for a planet tooth) and the lines
+/// h f_m + l f_m / P around each mesh harmonic (docs/MODEL.md 12.14); None without one.
+fn fault_lines(
+    d: &PlanetaryDynamics,
+    rec: &RingSensorRecord,
+    harmonics: usize,
+) -> Option<serde_json::Value> {
+    let p = d.study.meshes.periods();
+    let f = d.study.meshes.fault()?;
+    let zr = d.study.set.teeth_ring();
+    // Lines of the record are f_c / R apart: f_m is z_r R of them, f_m / P is z_r R / P.
+    let per_mesh = zr * rec.revolutions.max(1);
+    let step = per_mesh / p;
+    let amp = &rec.order_amplitude_n;
+    let lines: Vec<_> = (1..=harmonics)
+        .filter(|h| h * per_mesh < amp.len())
+        .map(|h| {
+            let sidebands: Vec<_> = (-FAULT_SIDEBANDS..=FAULT_SIDEBANDS)
+                .filter(|l| *l != 0)
+                .filter_map(|l| {
+                    let k = (h * per_mesh) as i64 + l * step as i64;
+                    let a = usize::try_from(k).ok().and_then(|k| amp.get(k))?;
+                    let hz = k as f64 * rec.carrier_hz / rec.revolutions.max(1) as f64;
+                    Some(json!({"offset": l, "frequency_hz": hz, "amplitude_n": a}))
+                })
+                .collect();
+            json!({"harmonic": h, "amplitude_n": amp[h * per_mesh], "sidebands": sidebands})
+        })
+        .collect();
+    Some(json!({
+        "member": match f.member {
+            crate::stiffness::planetary_mesh::FaultMember::Sun => "sun".to_string(),
+            crate::stiffness::planetary_mesh::FaultMember::Planet(n) => format!("planet {}", n + 1),
+        },
+        "tooth": f.tooth,
+        "period_mesh_periods": p,
+        "record_carrier_revolutions": rec.revolutions,
+        "fault_frequency_hz": rec.mesh_frequency_hz / p as f64,
+        "mesh_harmonics": lines,
+    }))
 }

@@ -25,6 +25,72 @@ use std::f64::consts::PI;
 /// interpolation on 256 intervals errs by ~1e-6 relative, far below the method's own error.
 const RING_TABLE_POINTS: usize = 257;
 
+/// The member a [`MeshFault`] is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FaultMember {
+    /// The sun: every planet's sun mesh meets the tooth.
+    Sun,
+    /// Planet n (0-based): its sun and ring meshes meet the tooth.
+    Planet(usize),
+}
+
+/// A tooth fault on one member: the compliance it adds to a pair holding the tooth, m/N,
+/// at [`RING_TABLE_POINTS`] equally spaced rho1 along each mesh's path of contact (the
+/// sun's flank for the sun mesh, the planet's for the ring mesh; `None`: that mesh never
+/// meets the tooth), built by `study::planetary_fault`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshFault {
+    /// The member with the faulty tooth.
+    pub member: FaultMember,
+    /// The faulty tooth's index on its member.
+    pub tooth: usize,
+    /// Added compliance on the sun mesh's path, m/N.
+    pub sun_m_per_n: Option<Vec<f64>>,
+    /// Added compliance on the ring mesh's path, m/N.
+    pub ring_m_per_n: Option<Vec<f64>>,
+}
+
+/// Which tooth of each member a pair holds (module docs): per planet the whole part of
+/// z_s psi_n / 2 pi and R_n, and the teeth of sun and planet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaultTeeth {
+    /// floor(z_s psi_n / 2 pi) per planet: sun tooth i meets planet n at the pitch point
+    /// at c = i + z_s psi_n / 2 pi (+ multiples of z_s), when the sun has turned by
+    /// psi_n relative to the carrier.
+    pub sun_whole: Vec<i64>,
+    /// R_n per planet: a planet tooth that passes the sun mesh's pitch point at c passes
+    /// the ring mesh's at c + R_n + (gamma_rn + gamma_rs - gamma_sn), the loaded flanks
+    /// half a planet turn apart less the teeth's half angles (`ring_sun_phase`).
+    pub ring_to_planet: Vec<i64>,
+    /// Teeth z_s and z_p.
+    pub teeth: [i64; 2],
+}
+
+impl FaultTeeth {
+    /// The teeth of `set` (module docs).
+    pub fn of(set: &PlanetarySet) -> Self {
+        let zs = set.teeth_sun() as f64;
+        let gs = set.sun_planet_phases();
+        let gr = set.ring_planet_phases();
+        let gamma_rs = set.ring_sun_phase();
+        let g_whole = set.ring_sun_cycles();
+        Self {
+            sun_whole: set
+                .planet_angles_rad
+                .iter()
+                .zip(&gs)
+                .map(|(psi, g)| (zs * psi / (2.0 * PI) - g).round() as i64)
+                .collect(),
+            ring_to_planet: gs
+                .iter()
+                .zip(&gr)
+                .map(|(s, r)| -(s + g_whole - r - gamma_rs).round() as i64)
+                .collect(),
+            teeth: [set.teeth_sun() as i64, set.teeth_planet() as i64],
+        }
+    }
+}
+
 /// Every mesh's stiffness over time in the carrier frame (see module docs).
 #[derive(Debug, Clone)]
 pub struct PlanetaryMeshes {
@@ -42,6 +108,10 @@ pub struct PlanetaryMeshes {
     /// Where a pair of the sun mesh and of the ring mesh leaves contact, mesh cycles after
     /// a pair entered: frac(epsilon) of each (0 for an integer contact ratio).
     leave_cycles: [f64; 2],
+    /// The sun path's first rho1 and its length, m (the fault tables' abscissa).
+    sun_path_m: [f64; 2],
+    /// A tooth fault and the teeth each pair holds (None: every tooth alike).
+    fault: Option<(MeshFault, FaultTeeth)>,
 }
 
 impl PlanetaryMeshes {
@@ -72,6 +142,75 @@ impl PlanetaryMeshes {
                 .collect(),
             teeth_sun: set.teeth_sun() as f64,
             leave_cycles: [sp.contact_ratio, (r1 - r0) / rp.base_pitch_m].map(|e| e - e.floor()),
+            sun_path_m: [sp.rho_start_m, sp.rho_end_m - sp.rho_start_m],
+            fault: None,
+        }
+    }
+
+    /// The same meshes with the tooth fault `fault` of `set` (module docs).
+    pub fn with_fault(mut self, set: &PlanetarySet, fault: MeshFault) -> Self {
+        self.fault = Some((fault, FaultTeeth::of(set)));
+        self
+    }
+
+    /// The same meshes with every tooth alike (the fault left out).
+    pub fn without_fault(&self) -> Self {
+        Self {
+            fault: None,
+            ..self.clone()
+        }
+    }
+
+    /// The tooth fault, if any.
+    pub fn fault(&self) -> Option<&MeshFault> {
+        self.fault.as_ref().map(|(f, _)| f)
+    }
+
+    /// Mesh cycles over which every mesh's stiffness repeats: 1 with every tooth alike,
+    /// z_s with a faulty sun tooth (it meets each planet once per sun revolution relative
+    /// to the carrier), z_p with a faulty planet tooth (once per planet revolution).
+    pub fn periods(&self) -> usize {
+        match &self.fault {
+            None => 1,
+            Some((f, t)) => match f.member {
+                FaultMember::Sun => t.teeth[0] as usize,
+                FaultMember::Planet(_) => t.teeth[1] as usize,
+            },
+        }
+    }
+
+    /// The fault's compliance (m/N) added to the pair of planet `planet`'s sun
+    /// (`ring` false) or ring mesh that entered contact at the table's cycle `entered`,
+    /// at rho1 (m); 0 when the pair does not hold the faulty tooth.
+    fn fault_compliance(&self, planet: usize, ring: bool, entered: i64, rho_m: f64) -> f64 {
+        let Some((f, t)) = &self.fault else {
+            return 0.0;
+        };
+        let holds = match (f.member, ring) {
+            (FaultMember::Sun, false) => {
+                (entered - t.sun_whole[planet]).rem_euclid(t.teeth[0]) == f.tooth as i64
+            }
+            (FaultMember::Sun, true) => false,
+            (FaultMember::Planet(n), false) => {
+                n == planet && entered.rem_euclid(t.teeth[1]) == f.tooth as i64
+            }
+            (FaultMember::Planet(n), true) => {
+                n == planet
+                    && (entered + t.ring_to_planet[planet]).rem_euclid(t.teeth[1]) == f.tooth as i64
+            }
+        };
+        let (table, start, len) = if ring {
+            (
+                &f.ring_m_per_n,
+                self.ring_rho_start_m,
+                self.ring_rho_end_m - self.ring_rho_start_m,
+            )
+        } else {
+            (&f.sun_m_per_n, self.sun_path_m[0], self.sun_path_m[1])
+        };
+        match table {
+            Some(c) if holds => path_table_at(c, (rho_m - start) / len),
+            _ => 0.0,
         }
     }
 
@@ -125,10 +264,15 @@ impl PlanetaryMeshes {
         let (c, d) = (cycles + off, decide_cycles + off);
         let base = d.floor();
         let rad_per_cycle = 2.0 * PI / self.teeth_sun;
+        let newest = base as i64;
         self.sun
             .pair()
             .pairs_in_contact_decided(rad_per_cycle * (c - base), rad_per_cycle * (d - base))
-            .map(|(_, rho)| (rho, self.sun.pair_stiffness_n_per_m(rho)))
+            .map(move |(k, rho)| {
+                let k0 = self.sun.pair_stiffness_n_per_m(rho);
+                let extra = self.fault_compliance(planet, false, newest - k as i64, rho);
+                (rho, in_series(k0, extra))
+            })
     }
 
     /// The tooth pairs of planet `planet`'s ring mesh at `cycles`, decided at
@@ -146,12 +290,18 @@ impl PlanetaryMeshes {
         let pb = self.ring_base_pitch_m;
         let rho = self.ring_rho_start_m + pb * (c - base);
         let rho_decide = self.ring_rho_start_m + pb * (d - base);
-        // Each pair one base pitch on from the last (the sums of `ring_n_per_m_decided`).
+        let newest = base as i64;
+        // Each pair one base pitch on from the last (the sums of `ring_n_per_m_decided`),
+        // pair k the one that entered k cycles before the newest.
         std::iter::successors(Some((rho, rho_decide)), move |(r, d)| {
             Some((r + pb, d + pb))
         })
         .take_while(move |(_, d)| *d <= self.ring_rho_end_m + 1e-15)
-        .map(move |(r, _)| (r, self.ring_pair_at(r)))
+        .enumerate()
+        .map(move |(k, (r, _))| {
+            let extra = self.fault_compliance(planet, true, newest - k as i64, r);
+            (r, in_series(self.ring_pair_at(r), extra))
+        })
     }
 
     /// The mesh cycles in [0, 1) where some mesh's stiffness jumps (a pair enters or
@@ -188,3 +338,27 @@ impl PlanetaryMeshes {
         self.ring_pair_n_per_m[i] * (1.0 - t) + self.ring_pair_n_per_m[i + 1] * t
     }
 }
+
+/// A pair's stiffness k0 (N/m) with a fault's compliance `extra` (m/N) in series: k0
+/// itself, bit for bit, when `extra` is 0 (a healthy tooth, a crack of zero depth).
+#[inline]
+fn in_series(k0: f64, extra: f64) -> f64 {
+    if extra == 0.0 {
+        k0
+    } else {
+        1.0 / (1.0 / k0 + extra)
+    }
+}
+
+/// A fault table's value at the fraction `u` of the path (linear between its equally
+/// spaced points, clamped to the path).
+fn path_table_at(table: &[f64], u: f64) -> f64 {
+    let n = (table.len() - 1) as f64;
+    let x = (u * n).clamp(0.0, n);
+    let i = (x as usize).min(table.len() - 2);
+    let t = x - i as f64;
+    table[i] * (1.0 - t) + table[i + 1] * t
+}
+
+/// Points of a fault's compliance tables along a path ([`MeshFault`]).
+pub const FAULT_TABLE_POINTS: usize = RING_TABLE_POINTS;

@@ -16,6 +16,7 @@ pub mod paper;
 pub mod parallel_runs;
 pub mod planetary;
 pub mod planetary_dynamics;
+pub mod planetary_fault;
 pub mod planetary_lumped;
 pub mod planetary_signals;
 pub mod planetary_wear;

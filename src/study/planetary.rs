@@ -7,6 +7,7 @@
 //! The set's dynamic model is `study::planetary_dynamics`; the pair's `Model::from_case` refuses a set.
 
 use super::model::ModelError;
+use super::planetary_fault::mesh_fault;
 use super::planetary_lumped::derived_lumped;
 use crate::config::case::Case;
 use crate::config::planetary::{LumpedPlanetarySection, PlanetarySection};
@@ -67,6 +68,14 @@ impl PlanetaryStudy {
                 case.gear.helix_angle_deg
             )]));
         }
+        if let Some(f) = case.fault.first() {
+            return Err(ModelError(vec![format!(
+                "`fault.gear` = \"{}\" with [planetary]: a pair's `[[fault]]` does not apply to a planetary set; give its fault as a `[[planetary.fault]]` table (`gear` = \"sun\" or \"planet\")",
+                f.gear.name()
+            )]));
+        }
+        let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
+        super::planetary_fault::fault_periods(&section, steps).map_err(|e| ModelError(vec![e]))?;
         let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
         let load = super::domain::planetary_domain_problems(case, &set);
         if !load.is_empty() {
@@ -87,7 +96,24 @@ impl PlanetaryStudy {
         warnings.extend(super::domain::axial_key_warnings(case));
         warnings.extend(sun_mesh.warnings().iter().cloned());
         let speeds_hz = set.member_speeds(case.operating.input_speed_hz);
-        let meshes = PlanetaryMeshes::new(&set, &sun_mesh, &ring_mesh);
+        let mut meshes = PlanetaryMeshes::new(&set, &sun_mesh, &ring_mesh);
+        if let Some((i, f)) = section
+            .fault
+            .iter()
+            .enumerate()
+            .find(|(_, f)| f.changes_tooth())
+        {
+            let fault = mesh_fault(i, f, &set, &sun_mesh, &ring_mesh)?;
+            meshes = meshes.with_fault(&set, fault);
+            if f.kind == crate::config::case::FaultKind::Spall
+                && f.written("spall_width_fraction") >= 1.0
+            {
+                warnings.push(format!(
+                    "`planetary.fault.spall_width_fraction` = 1 on {}: the set's meshes take the spall's stiffness (its pitted section) only; the gap a spall across the whole face opens (a pair's, docs/MODEL.md 9.5) is left out on a set",
+                    f.who()
+                ));
+            }
+        }
         let derived = derived_lumped(case, &set, meshes.mean_n_per_m());
         let lumped = match &section.lumped {
             Some(l) => l.resolve(&derived),

@@ -11,6 +11,13 @@
 //! 1985), and its lines are that revolution's discrete Fourier coefficients: exact for a
 //! signal band-limited below z_r S / 2 carrier orders. The record at the case's sampling
 //! rate is the periodic revolution read by linear interpolation between its samples.
+//!
+//! With a tooth fault the forces repeat over P mesh periods (`PlanetaryResponse::
+//! mesh_periods`: z_s for a sun tooth) and the signal over L = lcm(P, z_r) mesh periods,
+//! R = L / z_r carrier revolutions: the record's lines then lie on multiples of f_c / R,
+//! which holds both the carrier's orders and the fault's f_m / P (for a sun tooth
+//! f_s - f_c, the sun's rotation relative to the carrier; docs/MODEL.md 12.14). Without a
+//! fault R = 1 and everything is as above.
 
 use super::planetary_dynamics::PlanetaryDynamics;
 use crate::config::planetary::Member;
@@ -41,10 +48,12 @@ pub struct RingSensorRecord {
     pub mesh_frequency_hz: f64,
     /// Planet-pass frequency N f_c, Hz.
     pub planet_pass_hz: f64,
-    /// One carrier revolution of the signal at the steady state's samples, N.
+    /// Carrier revolutions R over which the signal repeats (1 without a tooth fault).
+    pub revolutions: usize,
+    /// R carrier revolutions of the signal at the steady state's samples, N.
     pub revolution_n: Vec<f64>,
-    /// Single-sided amplitude of carrier order k (k = 0 ..= half the revolution's
-    /// samples), N: the mean at k = 0, 2 |X_k| / M above.
+    /// Single-sided amplitude of the line k f_c / R (k = 0 ..= half the samples; carrier
+    /// order k when R = 1), N: the mean at k = 0, 2 |X_k| / M above.
     pub order_amplitude_n: Vec<f64>,
     /// The record's sample times, s, and values, N.
     pub times_s: Vec<f64>,
@@ -75,14 +84,18 @@ pub fn ring_sensor_record(
     }
     let n = set.planets();
     let zr = set.teeth_ring();
-    let s = r.mesh_forces_n.len();
+    let recorded = r.mesh_forces_n.len();
+    let s = recorded / r.mesh_periods.max(1);
+    // The signal's period: lcm(P, z_r) mesh periods, R carrier revolutions (module docs;
+    // its sample count checked against the limits when the model was built).
+    let revolutions = r.mesh_periods.max(1) / gcd(r.mesh_periods.max(1), zr);
     let speeds = d.study.speeds_hz;
     // Carrier relative to the ring, signed (its sense turns the planets past the sensor).
     let fc_signed = speeds[1] - speeds[2];
     let carrier_hz = fc_signed.abs();
     let mesh_hz = zr as f64 * carrier_hz;
     let period_s = 1.0 / mesh_hz;
-    let m = zr * s;
+    let m = revolutions * zr * s;
     let psi = &set.planet_angles_rad;
     let revolution_n: Vec<f64> = (0..m)
         .map(|j| {
@@ -91,15 +104,19 @@ pub fn ring_sensor_record(
             (0..n)
                 .map(|p| {
                     let w = window(psi[p] + theta_c - sensor.angle_rad, sensor.half_width_rad);
-                    w * r.mesh_forces_n[j % s][n + p]
+                    w * r.mesh_forces_n[j % recorded][n + p]
                 })
                 .sum()
         })
         .collect();
     let order_amplitude_n = order_amplitudes(&revolution_n)?;
-    let (times_s, values_n) =
-        periodic_record(&revolution_n, m as f64 / (zr as f64 * period_s), sensor);
+    let (times_s, values_n) = periodic_record(
+        &revolution_n,
+        m as f64 / ((revolutions * zr) as f64 * period_s),
+        sensor,
+    );
     Ok(RingSensorRecord {
+        revolutions,
         carrier_hz,
         mesh_frequency_hz: mesh_hz,
         planet_pass_hz: n as f64 * carrier_hz,
@@ -108,6 +125,15 @@ pub fn ring_sensor_record(
         times_s,
         values_n,
     })
+}
+
+/// Greatest common divisor.
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
 }
 
 /// Single-sided amplitudes of a periodic signal's harmonics from one period's samples:

@@ -12,7 +12,9 @@ mod faults;
 mod sides;
 mod worn;
 
+pub(crate) use checks::fault_problem;
 pub use errors::{FlankTolerancesReport, GearErrors};
+pub(crate) use faults::apply_fault;
 
 use crate::config::case::{Case, Member, ReliefShape, ToothFault, WornGeometry};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
@@ -25,7 +27,6 @@ use crate::stiffness::tooth_faults::deg;
 use crate::wear::WearState;
 use checks::geometry_problems;
 use errors::gear_errors;
-use faults::apply_fault;
 use sides::{member_gear, side};
 use worn::{WornFlanks, WornTables};
 

@@ -247,6 +247,12 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         p.s_dyn,
         p.s,
     ));
+    terms.extend(super::planetary::fault_term(
+        case,
+        c.evals,
+        c.work.kept,
+        p.s_dyn,
+    ));
     if matches!(
         job,
         Job::Wear { .. } | Job::Run | Job::SweepCase(SweepRun::Wear)

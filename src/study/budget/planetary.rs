@@ -202,3 +202,53 @@ fn checkpoint_bytes(updates: f64, wear: &WearSection) -> u64 {
     let bytes = 16.0 * updates * numbers * 32.0;
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }
+
+/// CPU seconds of one integrator step of a four-planet set's dynamic model: measured
+/// 29 us (the default set with a sun tooth crack, 47 891 steps in 1.38 s, 2026-11-30),
+/// counted 40 us, times the planets' share of the model ((N + 3) / 7 of its coordinates)
+/// and [`SLOWER_MACHINE_FACTOR`].
+const SECONDS_PER_STEP_4: f64 = 40e-6;
+
+/// Bytes a recorded sample of a set's response holds per coordinate or mesh force: the
+/// number, its copies in the mesh-force and motion tables and their CSV text (about 48).
+const BYTES_PER_SAMPLE_VALUE: f64 = 48.0;
+
+/// The run budget's term for a planetary set with a tooth fault (`[[planetary.fault]]`,
+/// docs/MODEL.md 12.14; None without one): each dynamic evaluation integrates its run-in
+/// and at least one pass over the fault's period P mesh periods (`study::planetary_fault::
+/// fault_periods`, in checked arithmetic) beyond the healthy set's search, each period at
+/// `s_dyn` steps, and a kept response records P periods of its 3 (N + 3) coordinates and
+/// 2 N mesh forces. A period beyond the limits costs without bound (the term names the
+/// keys; the model refuses it with its own message when the budget is off).
+/// `evals`: dynamic evaluations; `kept`: responses kept at once.
+pub fn fault_term(case: &crate::config::Case, evals: f64, kept: f64, s_dyn: f64) -> Option<Term> {
+    let section = case.planetary.as_ref()?;
+    section.active_fault()?;
+    let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
+    let planets = section.planets.max(1) as f64;
+    let (seconds, bytes) = match crate::study::planetary_fault::fault_periods(section, steps) {
+        Ok((p, _)) => {
+            // The run-in is at most P (`planetary_steady::run_in_periods`) and one pass
+            // settles (its map contracts by e^(-sigma P T_m)): 2 P, one pass more of margin.
+            let periods = 3.0 * p as f64;
+            let per_step = SECONDS_PER_STEP_4 * (planets + 3.0) / 7.0 * SLOWER_MACHINE_FACTOR;
+            let values = 3.0 * (planets + 3.0) + 2.0 * planets + 1.0;
+            (
+                evals.max(1.0) * periods * s_dyn * per_step,
+                kept.max(1.0) * p as f64 * steps as f64 * values * BYTES_PER_SAMPLE_VALUE,
+            )
+        }
+        Err(_) => (f64::INFINITY, f64::INFINITY),
+    };
+    Some(Term {
+        what: "the planetary set's tooth fault (its response over the fault's period, z_s or z_p mesh periods)",
+        seconds,
+        bytes,
+        keys: &[
+            "planetary.fault.gear",
+            "planetary.teeth_sun",
+            "planetary.teeth_planet",
+            "numerics.steps_per_mesh_period",
+        ],
+    })
+}

@@ -91,7 +91,7 @@ fn relief_problems(m: &ModificationSection, flanks: &[ActiveFlank; 2]) -> Vec<St
 /// The problem of fault `i` (`f`) against its tooth's geometry, if any: a crack deeper
 /// than the root's thickness, a spall longer than or off the active profile or deeper than
 /// the tooth holds, a broken tip below the root circle (SI inside, mm and µm shown).
-fn fault_problem(
+pub(crate) fn fault_problem(
     i: usize,
     f: &ToothFault,
     pair: &GearPair,
