@@ -11,11 +11,14 @@
 
 use super::folder::{finished, read_in, sidecar_rel, Sidecar};
 use super::kept::{first_difference, Kept};
-use super::state_files::{state_inputs, state_model, StateJob};
-use crate::checksum::sha256_hex;
-use crate::study::dataset::records::{
-    expected_labels, stored_indicators, RecordLabels, StateInputs,
+use super::state_files::{
+    planetary_inputs, planetary_state_model, state_inputs, state_model, StateJob,
 };
+use crate::checksum::sha256_hex;
+use crate::study::dataset::planetary_records::{
+    planetary_expected_labels, planetary_stored_indicators,
+};
+use crate::study::dataset::records::{expected_labels, stored_indicators, RecordLabels};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -65,6 +68,13 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
     let Some((first, _)) = held.first() else {
         return Vec::new();
     };
+    if job.req.design.conditions[job.plan.state_index(*first).condition]
+        .case
+        .planetary
+        .is_some()
+    {
+        return planetary_group_problems(job, root, held, kept);
+    }
     let model = match state_model(job, job.plan.state_index(*first)) {
         Ok(m) => m,
         Err(e) => return vec![unrecomputable(root, *first, &e)],
@@ -81,7 +91,45 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
             match labelled {
                 Ok((inp, expected)) => records
                     .into_iter()
-                    .filter_map(|(r, car)| record_problem(root, &inp, car, &expected[r], kept))
+                    .filter_map(|(r, car)| {
+                        let of = |b| stored_indicators(&inp, b);
+                        record_problem(root, &of, car, &expected[r], kept)
+                    })
+                    .collect::<Vec<_>>(),
+                Err(e) => vec![unrecomputable(root, p, &e)],
+            }
+        })
+        .collect()
+}
+
+/// [`group_problems`] of a planetary condition's states `held` (each with its kept
+/// records): the labels from the set's trajectory, the indicators from the stored files
+/// (`study::dataset::planetary_records`).
+fn planetary_group_problems(
+    job: &StateJob,
+    root: &Path,
+    held: Vec<(usize, Vec<(usize, Sidecar)>)>,
+    kept: Kept,
+) -> Vec<String> {
+    let first = held[0].0;
+    let model = match planetary_state_model(job, job.plan.state_index(first)) {
+        Ok(m) => m,
+        Err(e) => return vec![unrecomputable(root, first, &e)],
+    };
+    held.into_par_iter()
+        .flat_map_iter(|(p, records)| {
+            let ix = job.plan.state_index(p);
+            let labelled = planetary_inputs(job, ix, &model).and_then(|inp| {
+                let expected = planetary_expected_labels(&inp, job.plan, p, ix)?;
+                Ok((inp, expected))
+            });
+            match labelled {
+                Ok((inp, expected)) => records
+                    .into_iter()
+                    .filter_map(|(r, car)| {
+                        let of = |b| planetary_stored_indicators(&inp, b);
+                        record_problem(root, &of, car, &expected[r], kept)
+                    })
                     .collect::<Vec<_>>(),
                 Err(e) => vec![unrecomputable(root, p, &e)],
             }
@@ -93,7 +141,9 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
 /// recomputed here from its stored signal file, `records::stored_indicators`), if any.
 fn record_problem(
     root: &Path,
-    inp: &StateInputs,
+    indicators: &dyn Fn(
+        Vec<u8>,
+    ) -> anyhow::Result<Vec<crate::signals::analysis::ChannelIndicators>>,
     car: Sidecar,
     expected: &RecordLabels,
     kept: Kept,
@@ -106,7 +156,7 @@ fn record_problem(
         .filter(|b| sha256_hex(b) == car.signal_sha256)
         .ok_or_else(|| anyhow::anyhow!("it changed while it was checked"));
     let mut expected = expected.clone();
-    match signal.and_then(|b| stored_indicators(inp, b)) {
+    match signal.and_then(|b| indicators(b)) {
         Ok(indicators) => expected.indicators = indicators,
         Err(e) => {
             return Some(format!(
