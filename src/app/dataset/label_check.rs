@@ -156,7 +156,7 @@ fn record_problem(
         .filter(|b| sha256_hex(b) == car.signal_sha256)
         .ok_or_else(|| anyhow::anyhow!("it changed while it was checked"));
     let mut expected = expected.clone();
-    match signal.and_then(|b| indicators(b)) {
+    match signal.and_then(indicators) {
         Ok(indicators) => expected.indicators = indicators,
         Err(e) => {
             return Some(format!(

@@ -246,6 +246,7 @@ impl Trajectory {
         stopped: Option<String>,
         limit_m: f64,
     ) -> Self {
+        let planets = meshes.len() / 2;
         let records = if meshes.is_empty() {
             Vec::new()
         } else {
@@ -255,7 +256,7 @@ impl Trajectory {
             stopped,
             end_cycles: input_cycles.last().copied().unwrap_or(0.0),
             failure_cycles: None,
-            planets: (meshes.len() + 1) / 2,
+            planets,
             records,
             later_stages: meshes,
             cycle_factors,
