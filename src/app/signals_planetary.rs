@@ -37,7 +37,7 @@ pub(super) fn ring_sensor_problem(case: &Case) -> Option<Problem> {
 
 /// The ring sensor of `case` on a set of `planets` planets: `signals`' angle, window
 /// half-width (180 / N deg when absent), record length and sampling rate.
-fn ring_sensor_of(case: &Case, planets: usize) -> RingSensor {
+pub(super) fn ring_sensor_of(case: &Case, planets: usize) -> RingSensor {
     let s = &case.signals;
     RingSensor {
         angle_rad: s.ring_sensor_angle_deg.unwrap_or(0.0).to_radians(),

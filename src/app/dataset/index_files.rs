@@ -266,6 +266,9 @@ pub fn matches_design(l: &RecordLabels, body: &Value) -> bool {
         // A single pair has no limiting stage; a train's is absent only for new teeth
         // (every kept record's labels are recomputed besides: `super::label_check`).
         && (l.limiting_stage.is_none() || !l.stages.is_empty())
+        // A planetary set's members: the sun, its planets, the ring (none otherwise).
+        && l.members.len() == body["planetary"]["planets"].as_u64().map_or(0, |n| n as usize + 2)
+        && (l.limiting_member.is_none() || !l.members.is_empty())
 }
 
 /// Whether the record's indicator channels are the description's sensors, in order: a

@@ -14,13 +14,16 @@
 
 use super::folder::{csv_rel, finished, read_in, sidecar_rel, Sidecar};
 use super::kept::{first_difference, Kept};
-use super::state_files::{state_inputs, state_model, StateJob};
-use crate::checksum::sha256_hex;
-use crate::signals::files::record_table;
-use crate::signals::record::Record;
-use crate::study::dataset::records::{
-    expected_labels, stored_indicators, RecordLabels, StateInputs,
+use super::state_files::{
+    planetary_inputs, planetary_state_model, state_inputs, state_model, StateJob,
 };
+use crate::checksum::sha256_hex;
+use crate::signals::analysis::ChannelIndicators;
+use crate::signals::files::record_table;
+use crate::study::dataset::planetary_records::{
+    planetary_expected_labels, planetary_record_csv, planetary_stored_indicators,
+};
+use crate::study::dataset::records::{expected_labels, stored_indicators, RecordLabels};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -70,6 +73,13 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
     let Some((first, _)) = held.first() else {
         return Vec::new();
     };
+    if job.req.design.conditions[job.plan.state_index(*first).condition]
+        .case
+        .planetary
+        .is_some()
+    {
+        return planetary_group_problems(job, root, held, kept);
+    }
     let model = match state_model(job, job.plan.state_index(*first)) {
         Ok(m) => m,
         Err(e) => return vec![unrecomputable(root, *first, &e)],
@@ -87,8 +97,16 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
                 Ok((inp, expected)) => records
                     .into_iter()
                     .filter_map(|(r, car)| {
-                        let csv = job.req.design.csv;
-                        record_problem(root, &inp, car, &expected[r], (kept, csv))
+                        let unit = inp.setup.chain.acquisition.unit;
+                        let of = |b| {
+                            let (rec, ind) = stored_indicators(&inp, b)?;
+                            let csv = job.req.design.csv;
+                            Ok((
+                                ind,
+                                csv.then(|| record_table(&rec, unit).to_csv()).transpose()?,
+                            ))
+                        };
+                        record_problem(root, &of, car, &expected[r], kept)
                     })
                     .collect::<Vec<_>>(),
                 Err(e) => vec![unrecomputable(root, p, &e)],
@@ -97,15 +115,59 @@ fn group_problems(job: &StateJob, root: &Path, states: &[usize], kept: Kept) -> 
         .collect()
 }
 
+/// [`group_problems`] of a planetary condition's states `held` (each with its kept
+/// records): the labels from the set's trajectory, the indicators from the stored files
+/// (`study::dataset::planetary_records`).
+fn planetary_group_problems(
+    job: &StateJob,
+    root: &Path,
+    held: Vec<(usize, Vec<(usize, Sidecar)>)>,
+    kept: Kept,
+) -> Vec<String> {
+    let first = held[0].0;
+    let model = match planetary_state_model(job, job.plan.state_index(first)) {
+        Ok(m) => m,
+        Err(e) => return vec![unrecomputable(root, first, &e)],
+    };
+    held.into_par_iter()
+        .flat_map_iter(|(p, records)| {
+            let ix = job.plan.state_index(p);
+            let labelled = planetary_inputs(job, ix, &model).and_then(|inp| {
+                let expected = planetary_expected_labels(&inp, job.plan, p, ix)?;
+                Ok((inp, expected))
+            });
+            match labelled {
+                Ok((inp, expected)) => records
+                    .into_iter()
+                    .filter_map(|(r, car)| {
+                        let of = |b| {
+                            let (rec, ind) = planetary_stored_indicators(&inp, b)?;
+                            let csv = job.req.design.csv;
+                            Ok((ind, csv.then(|| planetary_record_csv(&rec)).transpose()?))
+                        };
+                        record_problem(root, &of, car, &expected[r], kept)
+                    })
+                    .collect::<Vec<_>>(),
+                Err(e) => vec![unrecomputable(root, p, &e)],
+            }
+        })
+        .collect()
+}
+
+/// What a kept record's check recomputes from its stored signal file: its indicators,
+/// and its CSV twin's bytes when the design writes one.
+type StoredCheck = (Vec<ChannelIndicators>, Option<Vec<u8>>);
+
 /// The message of kept record `car` whose labels differ from `expected` (its indicators
-/// recomputed here from its stored signal file, `records::stored_indicators`), or whose
-/// CSV twin (`csv`: the design asks for one) is not its signal file's samples, if any.
+/// recomputed here from its stored signal file by `stored`, e.g.
+/// `records::stored_indicators`), or whose CSV twin is not the one its signal file
+/// gives, if any.
 fn record_problem(
     root: &Path,
-    inp: &StateInputs,
+    stored: &dyn Fn(Vec<u8>) -> anyhow::Result<StoredCheck>,
     car: Sidecar,
     expected: &RecordLabels,
-    (kept, csv): (Kept, bool),
+    kept: Kept,
 ) -> Option<String> {
     let at = root.join(sidecar_rel(car.labels.record_id));
     let id = car.labels.record_id;
@@ -115,13 +177,11 @@ fn record_problem(
         .filter(|b| sha256_hex(b) == car.signal_sha256)
         .ok_or_else(|| anyhow::anyhow!("it changed while it was checked"));
     let mut expected = expected.clone();
-    match signal.and_then(|b| stored_indicators(inp, b)) {
-        Ok((record, indicators)) => {
+    match signal.and_then(stored) {
+        Ok((indicators, csv)) => {
             expected.indicators = indicators;
-            if csv {
-                if let Some(what) = csv_difference(root, id, &record, inp) {
-                    return Some(format!("{}: {what}: {}", at.display(), advice(kept)));
-                }
+            if let Some(what) = csv.and_then(|c| csv_difference(root, id, &c)) {
+                return Some(format!("{}: {what}: {}", at.display(), advice(kept)));
             }
         }
         Err(e) => {
@@ -140,22 +200,15 @@ fn record_problem(
     ))
 }
 
-/// What is wrong with record `id`'s CSV twin in `root`, `None` when it holds the samples
-/// of `record` (read from its verified signal file) byte for byte as the job writes them
-/// (`signals::files::record_table`).
-fn csv_difference(root: &Path, id: usize, record: &Record, inp: &StateInputs) -> Option<String> {
+/// What is wrong with record `id`'s CSV twin in `root`, `None` when it is `expected` (the
+/// bytes its verified signal file gives) byte for byte.
+fn csv_difference(root: &Path, id: usize, expected: &[u8]) -> Option<String> {
     let rel = csv_rel(id);
-    let Some(kept) = read_in(root, &rel) else {
-        return Some(format!("record {id}'s CSV twin {rel} is missing"));
-    };
-    let unit = inp.setup.chain.acquisition.unit;
-    match record_table(record, unit).to_csv() {
-        Ok(bytes) if bytes == kept => None,
-        Ok(_) => Some(format!(
+    match read_in(root, &rel) {
+        None => Some(format!("record {id}'s CSV twin {rel} is missing")),
+        Some(kept) if kept == expected => None,
+        Some(_) => Some(format!(
             "record {id}'s CSV twin {rel} does not hold the samples of its signal file"
-        )),
-        Err(e) => Some(format!(
-            "record {id}'s CSV twin cannot be rendered again ({e})"
         )),
     }
 }

@@ -185,7 +185,7 @@ fn axes_records(body: &Value) -> Option<usize> {
 /// so a forged trajectory (wear scaled, cut short, failure moved) is refused, naming
 /// its file, and the target is untouched.
 pub(super) fn check_trajectories(inputs: &[&Path], key: &str) -> Result<(), DatasetError> {
-    use crate::study::dataset::verify::verify_trajectory;
+    use crate::study::dataset::planetary::verify_case_trajectory;
     use rayon::prelude::*;
     let mut jobs = Vec::new();
     for dir in inputs {
@@ -219,11 +219,10 @@ pub(super) fn check_trajectories(inputs: &[&Path], key: &str) -> Result<(), Data
             let checked = (|| {
                 let case = case.as_deref().ok_or("no condition of that name in the description")?;
                 let case = crate::config::load_case(case, &[]).map_err(|e| e.to_string())?;
-                let model = crate::study::Model::from_case(&case).map_err(|e| e.to_string())?;
                 let (Some(max), Some(limit)) = *limits else {
                     return Err("the description gives no run-to-failure limits".to_owned());
                 };
-                verify_trajectory(&model, max, limit * 1e-6, &t.trajectory)
+                verify_case_trajectory(&case, max, limit * 1e-6, &t.trajectory)
                     .map_err(|e| e.to_string())
             })();
             checked.err().map(|e| {

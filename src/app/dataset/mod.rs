@@ -23,6 +23,7 @@ mod label_check;
 pub mod merge;
 pub mod merge_verify;
 pub mod plan;
+mod plan_planetary;
 pub mod request;
 pub mod run;
 pub mod state_files;

@@ -78,15 +78,23 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
     let fastest = d.speeds_hz.iter().fold(0.0_f64, |a, b| a.max(*b));
     let mut problems = Vec::new();
     let mut out: Vec<ChainSetup> = Vec::new();
+    let mixed = super::plan_planetary::mixed_problems(d);
+    if !mixed.is_empty() {
+        return Err(mixed);
+    }
     for c in &d.conditions {
         let mut case = c.case.clone();
         case.set_load_point(crate::config::case::LoadPoint {
             input_speed_hz: fastest,
             ..case.load_point()
         });
-        match chain_case(&case)
-            .and_then(|k| chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k)))
-        {
+        let setup = if case.planetary.is_some() {
+            super::plan_planetary::planetary_setup(req, &case)
+        } else {
+            chain_case(&case)
+                .and_then(|k| chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k)))
+        };
+        match setup {
             Ok(s) => out.push(s),
             Err(e) => problems.extend(
                 e.into_iter()
@@ -278,6 +286,9 @@ pub(super) fn description(req: &DatasetRequest, setups: &[ChainSetup], key: &str
             "the deepest wear of any stage's mesh, pinion or gear profile, reaches wear_limit_um"
         );
         body["train"] = train_json(d);
+    }
+    if d.conditions[0].case.planetary.is_some() {
+        super::plan_planetary::planetary_description(&mut body, d);
     }
     body
 }

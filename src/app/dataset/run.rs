@@ -18,6 +18,7 @@ use crate::app::observer::{Observer, Task};
 use crate::io::set_state::SetState;
 use crate::io::OutputDir;
 use crate::study::dataset::plan::{plan_of, Plan};
+use crate::study::dataset::planetary::{run_case_trajectory, verify_case_trajectory};
 use crate::study::dataset::records::signal_file;
 use crate::study::dataset::trajectory::{run_trajectory, Trajectory};
 use crate::study::dataset::verify::{
@@ -159,24 +160,36 @@ fn trajectory(
 ) -> Result<Trajectory, DatasetError> {
     let cond = &d.conditions[c];
     let rel = trajectory_rel(&cond.name);
-    let model = Model::from_case(&cond.case).map_err(|e| {
+    let input = |m: Vec<String>| {
         DatasetError::Input(
-            e.0.iter()
+            m.iter()
                 .map(|m| format!("condition `{}`: {m}", cond.name))
                 .collect(),
         )
-    })?;
+    };
+    // A planetary set's model is its wear model (`study::dataset::planetary`).
+    let model = match cond.case.planetary {
+        Some(_) => None,
+        None => Some(Model::from_case(&cond.case).map_err(|e| input(e.0))?),
+    };
+    let (max, limit) = (d.max_cycles, d.wear_limit_um * 1e-6);
     if let Some(t) = read_in(root, &rel)
         .and_then(|b| serde_json::from_slice::<TrajectoryFile>(&b).ok())
         .filter(|t| t.dataset_key == key)
     {
         // Kept trajectories are used only when the wear law recomputes them.
-        verify_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6, &t.trajectory)
-            .map_err(|e| kept_file_problem(root, &rel, &e.to_string()))?;
+        match &model {
+            Some(m) => verify_trajectory(m, max, limit, &t.trajectory),
+            None => verify_case_trajectory(&cond.case, max, limit, &t.trajectory),
+        }
+        .map_err(|e| kept_file_problem(root, &rel, &e.to_string()))?;
         return Ok(t.trajectory);
     }
-    let t = run_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6)
-        .map_err(|e| anyhow::anyhow!("trajectory of condition `{}`: {e:#}", cond.name))?;
+    let t = match &model {
+        Some(m) => run_trajectory(m, max, limit),
+        None => run_case_trajectory(&cond.case, max, limit),
+    }
+    .map_err(|e| anyhow::anyhow!("trajectory of condition `{}`: {e:#}", cond.name))?;
     let file = TrajectoryFile {
         dataset_key: key.to_owned(),
         condition: cond.name.clone(),

@@ -17,8 +17,8 @@ use super::request::{DatasetError, DatasetRequest};
 use super::state_files::{state_files, RecordFiles, StateJob};
 use crate::checksum::sha256_hex;
 use crate::study::dataset::plan::plan_of;
-use crate::study::dataset::verify::{states_to_recompute, verify_trajectory};
-use crate::study::Model;
+use crate::study::dataset::planetary::verify_case_trajectory;
+use crate::study::dataset::verify::states_to_recompute;
 use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -178,8 +178,12 @@ pub fn verify_dataset(
             ));
             continue;
         };
-        let model = Model::from_case(&cond.case).map_err(|e| anyhow::anyhow!("{e}"))?;
-        match verify_trajectory(&model, d.max_cycles, d.wear_limit_um * 1e-6, &t.trajectory) {
+        match verify_case_trajectory(
+            &cond.case,
+            d.max_cycles,
+            d.wear_limit_um * 1e-6,
+            &t.trajectory,
+        ) {
             Ok(()) => {
                 v.trajectories_verified += 1;
                 trajectories.insert(c, t.trajectory);

@@ -149,6 +149,15 @@ fn design_costs(d: &DatasetDesign, record: RecordSize) -> DesignCosts {
         bytes: 0.0,
     };
     for cond in &d.conditions {
+        if let Some((traj_s, one_s, b)) = planetary_costs(&cond.case, d) {
+            c.trajectories_s += traj_s;
+            // A set's kept trajectory is checked as its wear checkpoints are: a sample of
+            // its updates recomputed, each about one update of the set.
+            c.trajectory_checks_s += (MAX_RECOMPUTED + 1) as f64 * one_s;
+            c.state_s = c.state_s.max(one_s);
+            c.bytes = c.bytes.max(b);
+            continue;
+        }
         let mut case = cond.case.clone();
         case.wear.total_cycles = d.max_cycles;
         let w = estimate(
@@ -241,6 +250,25 @@ pub fn estimate_dataset_check(
     ])
 }
 
+/// A planetary condition's costs (`study::dataset::planetary`), None for a pair or a
+/// train: its trajectory's CPU seconds (the set's own dynamic wear study to `max_cycles`,
+/// `budget::planetary::estimate_planetary_wear`), one physical state's (one response of
+/// the whole set: the study of a single update), and the study's memory. A set
+/// whose wear model cannot be built is refused with the design before this counts it.
+fn planetary_costs(case: &crate::config::Case, d: &DatasetDesign) -> Option<(f64, f64, f64)> {
+    case.planetary.as_ref()?;
+    let modes = [crate::study::wear_loop::WearMode::Dynamic];
+    let mut c = case.clone();
+    c.wear.total_cycles = d.max_cycles;
+    let m = crate::study::planetary_wear::PlanetaryWearModel::from_case(&c).ok()?;
+    let w = super::planetary::estimate_planetary_wear(&m, &c.wear, &modes);
+    // One physical state: one response of the set, a study of 0 cycles (its first
+    // update only; the measured rate per update does not depend on speed or load).
+    c.wear.total_cycles = 0.0;
+    let state_s = super::planetary::estimate_planetary_wear(&m, &c.wear, &modes).seconds();
+    Some((w.seconds(), state_s, w.memory_bytes()))
+}
+
 /// Bytes of one number of a kept trajectory file (JSON): measured 22 with its separator
 /// (an update of the built-in case: 1168 numbers in 25.9 kB); 24 leaves margin.
 const TRAJECTORY_BYTES_PER_NUMBER: f64 = 24.0;
@@ -257,6 +285,18 @@ const TRAJECTORY_BYTES_PER_NUMBER: f64 = 24.0;
 pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
     let mut case = case.clone();
     case.wear.total_cycles = max_cycles;
+    if case.planetary.is_some() {
+        // A set keeps its 2 N meshes' records (`study::dataset::planetary`): each its
+        // wear and increment on both flanks (4 G numbers) and its summary (about 40), no
+        // path loads; and the update's input cycles.
+        let Ok(m) = crate::study::planetary_wear::PlanetaryWearModel::from_case(&case) else {
+            return 0.0;
+        };
+        let updates = super::planetary::planetary_wear_updates(&m, &case.wear);
+        let grid = case.wear.points_per_profile.max(2) as f64;
+        let meshes = 2.0 * m.planets() as f64;
+        return updates * (meshes * (4.0 * grid + 40.0) + 1.0) * TRAJECTORY_BYTES_PER_NUMBER;
+    }
     let updates = estimate(
         &case,
         Job::Wear {

@@ -51,6 +51,34 @@ pub const LIMITING_STAGE_COLUMN: (&str, &str, &str) = (
     "the train's stage (1-based) whose mesh has the deepest wear at the state (either flank): the mesh that limits the train's life; 0 while no mesh has worn (new teeth)",
 );
 
+/// (column prefix, unit, meaning) of a planetary set's columns for each member, named
+/// `<prefix>_<member>` with the member `sun`, `planet<n>` or `ring` (after the label
+/// columns; a set's records only), as a train's are named per stage.
+pub const MEMBER_COLUMNS: [(&str, &str, &str); 2] = [
+    ("wear_max_um", "um", "deepest wear of the member (its deepest flank; the sun's and the ring's sum their meshes' wear) at the state"),
+    ("tooth_contacts", "contacts", "load cycles of one of the member's teeth at the state (input cycles x its tooth contacts per input revolution; a planet's per flank)"),
+];
+
+/// A planetary set's column naming its deepest-worn member.
+pub const LIMITING_MEMBER_COLUMN: (&str, &str, &str) = (
+    "limiting_member",
+    "-",
+    "the set's member (sun, planet<n>, ring) with the deepest wear at the state: the member that limits the set's life; empty while nothing has worn (new teeth)",
+);
+
+/// The meaning of a member column `<prefix>_<member>`.
+fn member_column_meaning(name: &str) -> Option<String> {
+    MEMBER_COLUMNS.iter().find_map(|(prefix, _, m)| {
+        let member = name.strip_prefix(prefix)?.strip_prefix('_')?;
+        let known = member == "sun"
+            || member == "ring"
+            || member
+                .strip_prefix("planet")
+                .is_some_and(|k| k.parse::<usize>().is_ok());
+        known.then(|| format!("{m} ({member})"))
+    })
+}
+
 /// The stage `k` (1-based) and the meaning of a stage column `<prefix>_stage<k>`.
 fn stage_column_meaning(name: &str) -> Option<String> {
     let (prefix, k) = name.rsplit_once("_stage")?;
@@ -87,6 +115,12 @@ pub fn column_meaning(name: &str) -> String {
         return LIMITING_STAGE_COLUMN.2.to_string();
     }
     if let Some(m) = stage_column_meaning(name) {
+        return m;
+    }
+    if name == LIMITING_MEMBER_COLUMN.0 {
+        return LIMITING_MEMBER_COLUMN.2.to_string();
+    }
+    if let Some(m) = member_column_meaning(name) {
         return m;
     }
     for shaft in ["pinion", "gear"] {
@@ -280,6 +314,42 @@ fn stage_columns(rows: &[RecordLabels], cols: &mut Vec<Column>, units: &mut Vec<
     cols.push(Column::new(name, ColumnData::I64(limiting)));
 }
 
+/// A planetary set's columns (its records' `members`, the first record's: a design's
+/// conditions share one set size, `design_checks::planetary_problems`): each
+/// [`MEMBER_COLUMNS`] for every member, then [`LIMITING_MEMBER_COLUMN`]. None otherwise.
+fn member_columns(
+    rows: &[RecordLabels],
+    cols: &mut Vec<Column>,
+    units: &mut Vec<(String, String)>,
+) {
+    let Some(first) = rows.first().filter(|l| !l.members.is_empty()) else {
+        return;
+    };
+    for (prefix, unit, _) in MEMBER_COLUMNS {
+        for (k, member) in first.members.iter().enumerate() {
+            let values = rows
+                .iter()
+                .map(|l| {
+                    l.members.get(k).map_or(0.0, |m| match prefix {
+                        "wear_max_um" => m.wear_max_um,
+                        _ => m.tooth_contacts,
+                    })
+                })
+                .collect();
+            let name = format!("{prefix}_{}", member.member);
+            units.push((name.clone(), unit.to_string()));
+            cols.push(Column::new(name, ColumnData::F64(values)));
+        }
+    }
+    let (name, unit, _) = LIMITING_MEMBER_COLUMN;
+    let limiting = rows
+        .iter()
+        .map(|l| l.limiting_member.clone().unwrap_or_default())
+        .collect();
+    units.push((name.to_string(), unit.to_string()));
+    cols.push(Column::new(name, ColumnData::Text(limiting)));
+}
+
 /// The index columns of `rows` (sorted by record id) and each column's unit.
 pub fn index_columns(
     rows: &[RecordLabels],
@@ -320,6 +390,12 @@ pub fn index_columns(
         .map(|(n, u, _)| (n.to_string(), u.to_string()))
         .collect();
     stage_columns(rows, &mut cols, &mut units);
+    member_columns(rows, &mut cols, &mut units);
+    // A planetary set's records have no shaft TSA (`super::planetary_records`).
+    let shafts: &[(&str, bool)] = match rows.first() {
+        Some(l) if !l.members.is_empty() => &[],
+        _ => &[("pinion", true), ("gear", false)],
+    };
     let channels: Vec<String> = rows.first().map_or(Vec::new(), |l| {
         l.indicators.iter().map(|c| c.channel.clone()).collect()
     });
@@ -337,7 +413,7 @@ pub fn index_columns(
             cols.push(Column::new(format!("{name}_{col}"), f(g)));
             units.push((format!("{name}_{col}"), unit.to_string()));
         }
-        for (shaft, pinion) in [("pinion", true), ("gear", false)] {
+        for &(shaft, pinion) in shafts {
             let tr = trends(rows, c, pinion);
             for (col, with_unit) in SHAFT_COLUMNS {
                 let values: Vec<f64> = rows

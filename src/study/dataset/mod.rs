@@ -8,6 +8,8 @@ mod design_checks;
 mod design_file;
 pub mod index;
 pub mod plan;
+pub mod planetary;
+pub mod planetary_records;
 pub mod records;
 pub mod trajectory;
 pub mod trends;

@@ -62,6 +62,16 @@ pub struct RecordLabels {
     /// while no mesh has worn (new teeth).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limiting_stage: Option<usize>,
+    /// A planetary set's members at the state (`super::planetary`: the sun, planets 1..N,
+    /// the ring; empty otherwise): each member's deepest wear and its teeth's load
+    /// cycles. For a set `cycles` and `remaining_cycles` are input cycles (revolutions of
+    /// the input member).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub members: Vec<super::planetary::MemberLabels>,
+    /// A planetary set's deepest-worn member (`sun`, `planet<n>`, `ring`; the last of
+    /// equals), the one that limits the set's life; absent while nothing has worn.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limiting_member: Option<String>,
     /// The design's failure limit on the deepest wear, µm.
     pub wear_limit_um: f64,
     /// Cycles from this state to failure (the deepest wear reaching the limit).
@@ -177,6 +187,8 @@ fn labels_without_indicators(
         wear_gear_tooth_um: wear.gear_tooth_um.clone(),
         stages: wear.stages.clone(),
         limiting_stage: wear.limiting_stage,
+        members: Vec::new(),
+        limiting_member: None,
         wear_limit_um: inp.wear_limit_um,
         remaining_cycles: remaining,
         failure_censored: censored,

@@ -40,12 +40,27 @@ pub struct Trajectory {
     /// Checked against the model's own on reuse (`super::verify`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub cycle_factors: Vec<f64>,
+    /// A planetary set's planets N (`super::planetary`): its 2 N meshes' records are
+    /// `records` (planet 1's sun mesh) and `later_stages`, and its failure measure is the
+    /// deepest member flank (`super::planetary::members_deepest_m`); 0 otherwise.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub planets: usize,
+    /// A planetary set's input cycles (revolutions of its input member) at each update,
+    /// the axis of its states (its meshes' own counts are their pinions' revolutions
+    /// relative to the carrier); empty otherwise (the first mesh's cycles are the axis).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub input_cycles: Vec<f64>,
     /// Cycle count at which the deepest wear reached the limit, if it did.
     pub failure_cycles: Option<f64>,
     /// Last cycle count the trajectory covers.
     pub end_cycles: f64,
     /// Why the wear loop stopped before `end_cycles` asked for, if it did.
     pub stopped: Option<String>,
+}
+
+/// Whether a count is 0 (serde: a field absent unless set).
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 /// Deepest wear of a state (pinion or gear), m.
@@ -56,6 +71,46 @@ pub fn deepest_m(w: &WearState) -> f64 {
 /// Deepest wear of every mesh's state (the train's failure measure), m.
 pub fn deepest_of(states: &[WearState]) -> f64 {
     states.iter().map(deepest_m).fold(0.0, f64::max)
+}
+
+/// Deepest point of a profile, m (0 for an empty one).
+fn max_of(p: &[f64]) -> f64 {
+    p.iter().fold(0.0_f64, |a, b| a.max(*b))
+}
+
+/// Point-wise sum of profiles (the longest's length).
+fn summed<'a>(profiles: impl Iterator<Item = &'a Vec<f64>>) -> Vec<f64> {
+    let mut s: Vec<f64> = Vec::new();
+    for p in profiles {
+        if s.len() < p.len() {
+            s.resize(p.len(), 0.0);
+        }
+        for (a, b) in s.iter_mut().zip(p) {
+            *a += b;
+        }
+    }
+    s
+}
+
+/// Every member's deepest wear, m, from the set's meshes' states `states` (module order,
+/// `planets` N): the sun, planets 1..N (their deeper flank), the ring (module docs).
+pub fn member_depths_m(states: &[WearState], planets: usize) -> Vec<f64> {
+    let n = planets.min(states.len() / 2);
+    let (sun_meshes, ring_meshes) = states.split_at(n);
+    let sun = max_of(&summed(sun_meshes.iter().map(|w| &w.pinion_m)));
+    let ring = max_of(&summed(ring_meshes.iter().map(|w| &w.gear_m)));
+    let planets = (0..n).map(|p| max_of(&states[p].gear_m).max(max_of(&states[n + p].pinion_m)));
+    std::iter::once(sun)
+        .chain(planets)
+        .chain(std::iter::once(ring))
+        .collect()
+}
+
+/// The set's failure measure: its deepest member's wear, m (module docs).
+pub fn members_deepest_m(states: &[WearState], planets: usize) -> f64 {
+    member_depths_m(states, planets)
+        .into_iter()
+        .fold(0.0, f64::max)
 }
 
 /// The per-cycle wear the loop held after update `r` (every tooth's own with a
@@ -174,7 +229,46 @@ impl Trajectory {
             records,
             later_stages,
             cycle_factors,
+            planets: 0,
+            input_cycles: Vec::new(),
         };
+        t.derive_failure(limit_m);
+        t
+    }
+
+    /// A planetary set's trajectory (`super::planetary`): its meshes' records in the
+    /// loop's order (`meshes[0]` planet 1's sun mesh), their pinion turns per input turn
+    /// `cycle_factors`, the updates' `input_cycles`, and its failure where the deepest
+    /// member flank reaches `limit_m`.
+    pub fn from_planetary(
+        mut meshes: Vec<Vec<UpdateRecord>>,
+        (cycle_factors, input_cycles): (Vec<f64>, Vec<f64>),
+        stopped: Option<String>,
+        limit_m: f64,
+    ) -> Self {
+        let planets = meshes.len() / 2;
+        let records = if meshes.is_empty() {
+            Vec::new()
+        } else {
+            meshes.remove(0)
+        };
+        let mut t = Trajectory {
+            stopped,
+            end_cycles: input_cycles.last().copied().unwrap_or(0.0),
+            failure_cycles: None,
+            planets,
+            records,
+            later_stages: meshes,
+            cycle_factors,
+            input_cycles,
+        };
+        t.derive_failure(limit_m);
+        t
+    }
+
+    /// Set the failure cycles from the updates (see [`Trajectory::from_meshes`]).
+    fn derive_failure(&mut self, limit_m: f64) {
+        let t = &*self;
         let n = t.records.len();
         // Failure inside the last block: where the deepest wear crossed the limit.
         let failure_cycles = (1..n).find_map(|i| {
@@ -182,10 +276,10 @@ impl Trajectory {
             (a < limit_m && b >= limit_m).then(|| {
                 // Per point the wear is linear in cycles within the block; the deepest point
                 // may change inside it, so bisect on the state itself.
-                let (mut lo, mut hi) = (t.records[i - 1].wear.cycles, t.records[i].wear.cycles);
+                let (mut lo, mut hi) = (t.cycles_at(i - 1), t.cycles_at(i));
                 for _ in 0..60 {
                     let mid = 0.5 * (lo + hi);
-                    if deepest_of(&t.advanced(i - 1, mid)) >= limit_m {
+                    if t.deepest_of_states(&t.advanced(i - 1, mid)) >= limit_m {
                         hi = mid;
                     } else {
                         lo = mid;
@@ -194,9 +288,27 @@ impl Trajectory {
                 hi
             })
         });
-        t.failure_cycles =
-            failure_cycles.or_else(|| (n > 0 && t.deepest_at(0) >= limit_m).then_some(0.0));
-        t
+        let at_start = n > 0 && t.deepest_at(0) >= limit_m;
+        self.failure_cycles = failure_cycles.or_else(|| at_start.then_some(0.0));
+    }
+
+    /// Cycles of update `i` on the trajectory's axis: a planetary set's input cycles, else
+    /// the first mesh's (a train's stage 1 pinion's are its input cycles).
+    pub fn cycles_at(&self, i: usize) -> f64 {
+        match self.input_cycles.get(i) {
+            Some(c) if self.planets > 0 => *c,
+            _ => self.records[i].wear.cycles,
+        }
+    }
+
+    /// Failure measure of the meshes' states `states` (module order): the deepest member
+    /// flank of a planetary set, else the deepest wear of any mesh, m.
+    pub fn deepest_of_states(&self, states: &[WearState]) -> f64 {
+        if self.planets > 0 {
+            members_deepest_m(states, self.planets)
+        } else {
+            deepest_of(states)
+        }
     }
 
     /// Meshes of the trajectory (1 for a single pair).
@@ -214,17 +326,18 @@ impl Trajectory {
 
     /// Deepest wear of any mesh at update `i`, m.
     fn deepest_at(&self, i: usize) -> f64 {
-        (0..self.mesh_count())
+        let states: Vec<WearState> = (0..self.mesh_count())
             .filter_map(|m| self.record(m, i))
-            .map(|r| deepest_m(&r.wear))
-            .fold(0.0, f64::max)
+            .map(|r| r.wear.clone())
+            .collect();
+        self.deepest_of_states(&states)
     }
 
     /// Every mesh's state at `cycles` (input cycles) from update `i`: each mesh's record
     /// advanced by its pinion's cycles since, c_k (`cycles` - the update's), as the
     /// train's loop advances it (c = 1 for a single pair).
     fn advanced(&self, i: usize, cycles: f64) -> Vec<WearState> {
-        let extra = cycles - self.records[i].wear.cycles;
+        let extra = cycles - self.cycles_at(i);
         // Indexed by the mesh itself, so that each mesh takes its own c_k.
         (0..self.mesh_count())
             .filter_map(|m| self.record(m, i).map(|r| (m, r)))
@@ -253,10 +366,17 @@ impl Trajectory {
         if cycles > self.end_cycles * (1.0 + 1e-12) || self.records.is_empty() {
             return None;
         }
-        let i = self
-            .records
-            .partition_point(|r| r.wear.cycles <= cycles)
-            .saturating_sub(1);
+        // The last update at or before `cycles` (the axis ascends).
+        let (mut lo, mut hi) = (0, self.records.len());
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            if self.cycles_at(mid) <= cycles {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        let i = lo.saturating_sub(1);
         Some(self.advanced(i, cycles))
     }
 
