@@ -110,8 +110,8 @@ fn map_gap(a: &WearState, b: &WearState) -> (f64, f64) {
             / top
     };
     let slices = gap(&sa.pinion_m, &sb.pinion_m).max(gap(&sa.gear_m, &sb.gear_m));
-    let means = gap(&[a.pinion_m.clone()], &[b.pinion_m.clone()])
-        .max(gap(&[a.gear_m.clone()], &[b.gear_m.clone()]));
+    let one = std::slice::from_ref;
+    let means = gap(one(&a.pinion_m), one(&b.pinion_m)).max(gap(one(&a.gear_m), one(&b.gear_m)));
     (slices, means)
 }
 
