@@ -203,12 +203,6 @@ fn a_killed_or_cut_helical_run_resumes_to_the_bytes_of_an_uninterrupted_one() {
 #[test]
 fn what_the_helical_model_refuses_is_refused_by_run_as_by_wear() {
     let dir = tempfile::tempdir().unwrap();
-    let spectrum = dir.path().join("spectrum.toml");
-    std::fs::write(
-        &spectrum,
-        "[gear]\nhelix_angle_deg = 15\n\n[load_spectrum]\nbins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 60, input_speed_hz = 30, share = 0.5}]\n",
-    )
-    .unwrap();
     let fault = dir.path().join("fault.toml");
     std::fs::write(
         &fault,
@@ -219,10 +213,10 @@ fn what_the_helical_model_refuses_is_refused_by_run_as_by_wear() {
         env!("CARGO_MANIFEST_DIR"),
         "/examples/two_stage_reducer.toml"
     );
-    let (spectrum, fault) = (spectrum.to_str().unwrap(), fault.to_str().unwrap());
+    let fault = fault.to_str().unwrap();
     let helix = "gear.helix_angle_deg=15";
     // (arguments after the command, the keys the message names)
-    let cases: [(Vec<&str>, &[&str]); 7] = [
+    let cases: [(Vec<&str>, &[&str]); 6] = [
         (
             vec!["--set", helix, "--set", "teeth.accuracy_grade=6"],
             &["`[teeth]`", "gear.helix_angle_deg"],
@@ -247,10 +241,6 @@ fn what_the_helical_model_refuses_is_refused_by_run_as_by_wear() {
             &["contact.load_sharing"],
         ),
         (vec!["--config", fault], &["`[[fault]]`"]),
-        (
-            vec!["--config", spectrum],
-            &["gear.helix_angle_deg", "[load_spectrum]"],
-        ),
         (
             vec!["--set", helix, "--config", train],
             &["gear.helix_angle_deg", "[[stage]]"],

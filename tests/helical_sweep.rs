@@ -265,28 +265,6 @@ fn a_helical_sweep_refuses_what_its_model_does_not_take() {
         ],
         &["[teeth]", "gear.helix_angle_deg", "case 0"],
     );
-    // A wear sweep under a load spectrum (a helical pair's wear is not built under one).
-    let dir = tempfile::tempdir().unwrap();
-    let case = dir.path().join("spectrum.toml");
-    std::fs::write(
-        &case,
-        "[gear]\nhelix_angle_deg = 15\n[load_spectrum]
-bins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 60, input_speed_hz = 30, share = 0.5}]
-",
-    )
-    .unwrap();
-    rejected(
-        &[
-            "sweep",
-            "--config",
-            case.to_str().unwrap(),
-            "--run",
-            "wear",
-            "--vary",
-            "load_spectrum.torque_scale=1,2",
-        ],
-        &["gear.helix_angle_deg", "[load_spectrum]"],
-    );
 }
 
 #[test]

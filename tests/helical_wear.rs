@@ -307,25 +307,6 @@ fn what_the_helical_wear_lacks_is_refused_naming_the_key() {
         ],
         &["gear.helix_angle_deg", "wear.worn_geometry"],
     );
-    // A load spectrum: one message naming both keys (not one per bin saying that
-    // `gearwear wear` takes helical pairs).
-    let dir = tempfile::tempdir().unwrap();
-    let case = dir.path().join("spectrum.toml");
-    std::fs::write(
-        &case,
-        "[load_spectrum]
-bins = [{torque_nm = 40, input_speed_hz = 20, share = 0.5}, {torque_nm = 60, input_speed_hz = 30, share = 0.5}]
-",
-    )
-    .unwrap();
-    let err = rejected(
-        &[&base[..], &["--config", case.to_str().unwrap()]].concat(),
-        &["gear.helix_angle_deg", "[load_spectrum]"],
-    );
-    assert!(
-        !err.contains("bin 1") && !err.contains("take helical"),
-        "{err}"
-    );
 }
 
 #[test]

@@ -30,17 +30,16 @@ pub fn over_budget(message: impl std::fmt::Display) -> Problem {
 /// of range) is named rather than priced: the estimate of such a bin is meaningless (a
 /// wear rate from a load the flanks cannot carry), so the wear and run jobs, which run
 /// every bin, build the bins' models when their estimate is over the budget and return
-/// the bins' problems when there are any (a spur pair or train; a helical or planetary
-/// case under a spectrum is refused by its job, naming the spectrum).
+/// the bins' problems when there are any (a spur or helical pair, a train; a planetary
+/// set's bins are its own job's).
 pub fn check(case: &Case, job: Job, budget: Option<&Budget>) -> Result<(), JobError> {
     let runs_bins = matches!(job, Job::Wear { .. } | Job::Run)
         && case.load_spectrum.is_some()
-        && case.planetary.is_none()
-        && case.gear.helix_angle_deg == 0.0;
+        && case.planetary.is_none();
     match budget {
         Some(b) => estimate(case, job).check(b).map_err(|m| {
             if runs_bins {
-                if let Err(e) = crate::duty::SpectrumModel::from_case(case) {
+                if let Err(e) = crate::duty::SpectrumModel::dynamics_from_case(case) {
                     return JobError::from(e);
                 }
             }

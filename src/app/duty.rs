@@ -23,8 +23,12 @@ pub fn build_spectrum_model(
     case: &crate::config::Case,
     observer: &dyn Observer,
 ) -> Result<SpectrumModel, JobError> {
-    let sm = SpectrumModel::from_case(case)?;
+    let sm = SpectrumModel::dynamics_from_case(case)?;
     for w in sm.warnings() {
+        observer.warning(&w);
+    }
+    // A helical pair on axial bearings: its axial shift at every bin (docs/MODEL.md 11.6).
+    for w in sm.axial_shift_warnings() {
         observer.warning(&w);
     }
     Ok(sm)
@@ -33,7 +37,7 @@ pub fn build_spectrum_model(
 /// The metadata of a job under a spectrum: the whole case (its hash covers the bins) and
 /// the values the monitoring bin's model resolved (every bin's operating point is in the
 /// summary's `load_spectrum`).
-fn spectrum_metadata(command: &str, sm: &SpectrumModel) -> RunMetadata {
+pub(crate) fn spectrum_metadata(command: &str, sm: &SpectrumModel) -> RunMetadata {
     RunMetadata {
         resolved: Some(sm.bins[sm.monitoring].resolved()),
         ..RunMetadata::new(command, &sm.case)
@@ -42,7 +46,7 @@ fn spectrum_metadata(command: &str, sm: &SpectrumModel) -> RunMetadata {
 
 /// Tell `observer` about the runs that stopped early; the failure to return if one was the
 /// solver's.
-fn spectrum_stops(
+pub(crate) fn spectrum_stops(
     sm: &SpectrumModel,
     runs: &[&SpectrumRun],
     observer: &dyn Observer,

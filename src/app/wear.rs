@@ -3,8 +3,9 @@
 //! under a load spectrum it hands off to [`super::duty`], on a gear train to
 //! [`super::wear_train`], on a train under a spectrum to [`super::duty_train`], on a
 //! planetary set to [`super::wear_planetary`]. A helical pair runs on its planar model
-//! with its slices' wear (`study::helical_wear`, docs/MODEL.md 11.3). The runner it shares with the
-//! paper's study and the spectrum's runs is [`super::wear_runs`].
+//! with its slices' wear (`study::helical_wear`, docs/MODEL.md 11.3), under a spectrum too
+//! ([`super::duty`], docs/MODEL.md 11.7). The runner it shares with the paper's study and
+//! the spectrum's runs is [`super::wear_runs`].
 
 use super::observer::Observer;
 use super::wear_runs::{run_modes, stops};
@@ -64,7 +65,6 @@ impl Job for WearJob {
         if !self.case.stage.is_empty() {
             return super::wear_train::wear_of_train(self, figures, observer);
         }
-        refuse_helical_spectrum(&self.case)?;
         if self.case.load_spectrum.is_some() {
             let out = (self.out.as_deref(), self.resume, self.replace);
             return super::duty::wear_under_spectrum(
@@ -77,7 +77,12 @@ impl Job for WearJob {
             );
         }
         let model = if self.case.gear.helix_angle_deg != 0.0 {
-            super::build_dynamics_model(&self.case, observer)?
+            let m = super::build_dynamics_model(&self.case, observer)?;
+            // On axial bearings: its axial shift with new teeth (docs/MODEL.md 11.6).
+            if let Some(w) = crate::study::helical_dynamics::new_teeth_axial_shift_warning(&m) {
+                observer.warning(&w);
+            }
+            m
         } else {
             build_model(&self.case, observer)?
         };
@@ -101,17 +106,4 @@ impl Job for WearJob {
         outcome.incomplete = stops(&refs, observer);
         Ok(outcome)
     }
-}
-
-/// A helical pair under a `[load_spectrum]` (exit 2 naming both keys): its wear per slice
-/// is built under one operating point only; `gearwear wear` and `gearwear run` refuse it
-/// before any work.
-pub(crate) fn refuse_helical_spectrum(case: &Case) -> Result<(), JobError> {
-    if case.load_spectrum.is_none() || case.gear.helix_angle_deg == 0.0 {
-        return Ok(());
-    }
-    Err(JobError::input(crate::remedy::Problem::new(format!(
-        "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or set the angle to 0 for a spur pair",
-        crate::format::shown(case.gear.helix_angle_deg)
-    ))))
 }

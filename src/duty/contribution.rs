@@ -25,7 +25,7 @@ pub(crate) fn combined_record(
         increment_pinion_m: inc.pinion_m,
         increment_gear_m: inc.gear_m,
         increment_teeth: inc.teeth,
-        increment_slices: None,
+        increment_slices: inc.slices,
         path_rho1_m: b.path_rho1_m.clone(),
         path_load_n: b.path_load_n.clone(),
         end_state: None,

@@ -121,7 +121,7 @@ fn life_of(case: &Case, mode: WearMode, limit_m: f64, max_cycles: f64) -> Result
     let mut c = case.clone();
     c.wear.total_cycles = max_cycles;
     c.wear.block_cycles = max_cycles;
-    let sm = SpectrumModel::from_case(&c)?;
+    let sm = SpectrumModel::dynamics_from_case(&c)?;
     let mut records: Vec<UpdateRecord> = Vec::new();
     let mut stopped: Option<String> = None;
     let result = run_spectrum_wear(&sm, SpectrumRun::new(mode, sm.shares.clone()), &mut |r| {

@@ -9,6 +9,7 @@
 
 use crate::config::{Case, LoadSpectrumSection, SpectrumBin};
 use crate::study::model::{Model, ModelError};
+use crate::wear::ToothWear;
 use rayon::prelude::*;
 
 /// The models of every bin of a case's spectrum and the bins' shares of the cycles.
@@ -45,17 +46,39 @@ pub(crate) fn in_bin_words(message: &str) -> String {
 
 impl SpectrumModel {
     /// The models of `case`'s bins; a case without a spectrum is one bin of share 1 at its
-    /// operating point. Every bin's problems are collected, each naming its bin.
+    /// operating point. Every bin's problems are collected, each naming its bin. Each bin
+    /// is `Model::from_case` (a spur pair or a train; a helical case is refused, as the
+    /// studies on that constructor refuse it).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
+        Self::built_by(case, Model::from_case)
+    }
+
+    /// As [`SpectrumModel::from_case`], a single helical pair's bins on its planar model
+    /// with its wear per slice (`Model::dynamics_from_case`, docs/MODEL.md 11.7): what
+    /// `wear`, `run` and the wear sweeps run. A spur pair or a train is built exactly as
+    /// [`SpectrumModel::from_case`] builds it (a helical train keeps that refusal).
+    pub fn dynamics_from_case(case: &Case) -> Result<Self, ModelError> {
+        if case.stage.is_empty() {
+            Self::built_by(case, Model::dynamics_from_case)
+        } else {
+            Self::from_case(case)
+        }
+    }
+
+    /// The models of `case`'s bins, each built by `build`.
+    fn built_by(
+        case: &Case,
+        build: fn(&Case) -> Result<Model, ModelError>,
+    ) -> Result<Self, ModelError> {
         let Some(spectrum) = case.load_spectrum.as_ref() else {
             return Ok(Self {
                 case: case.clone(),
-                bins: vec![Model::from_case(case)?],
+                bins: vec![build(case)?],
                 shares: vec![1.0],
                 monitoring: 0,
             });
         };
-        let bins = models_of_bins(case, spectrum.bins.len(), Model::from_case)?;
+        let bins = models_of_bins(case, spectrum.bins.len(), build)?;
         Ok(Self {
             case: case.clone(),
             bins,
@@ -85,6 +108,26 @@ impl SpectrumModel {
             }
         }
         w
+    }
+
+    /// The axial-shift warning of every bin whose helical pair moves axially by more than
+    /// `helical_dynamics::AXIAL_SHIFT_WARNING_SHARE` of the face width with new teeth
+    /// (`helical_dynamics::new_teeth_axial_shift_warning`, the bins in parallel), each
+    /// naming its bin; none for a spur pair or rigid axial bearings (nothing is solved).
+    pub fn axial_shift_warnings(&self) -> Vec<String> {
+        use crate::study::helical_dynamics::new_teeth_axial_shift_warning;
+        let w: Vec<Option<String>> = self
+            .bins
+            .par_iter()
+            .map(new_teeth_axial_shift_warning)
+            .collect();
+        w.into_iter()
+            .enumerate()
+            .filter_map(|(i, w)| match self.case.load_spectrum {
+                Some(_) => w.map(|w| format!("{}: {w}", self.label(i))),
+                None => w,
+            })
+            .collect()
     }
 
     /// The spectrum as used: the case's, or one bin at its operating point.
@@ -162,4 +205,33 @@ pub fn mixed_increment<'a>(
         gear_m: g,
         ..Default::default()
     }
+}
+
+/// The share-weighted sum sum_i s_i M_i of the bins' per-tooth or per-face-slice maps
+/// (`ToothWear`, `SliceWear`: profiles per tooth or face slice), m per pinion cycle, in
+/// bin order from zero; None unless every bin has a map (an empty spectrum has none).
+/// The mixing rule of [`mixed_increment`] applied to every profile of the map: the
+/// single pair's spectrum loop mixes the tooth-resolved mesh's teeth and the helical
+/// pair's face slices with it (`duty::wear`).
+pub fn mixed_maps<'a>(
+    per_bin: impl Iterator<Item = Option<&'a ToothWear>>,
+    shares: &[f64],
+) -> Option<ToothWear> {
+    let mut sum: Option<ToothWear> = None;
+    for (map, s) in per_bin.zip(shares) {
+        let map = map?;
+        let to = sum.get_or_insert_with(|| ToothWear {
+            pinion_m: map.pinion_m.iter().map(|p| vec![0.0; p.len()]).collect(),
+            gear_m: map.gear_m.iter().map(|p| vec![0.0; p.len()]).collect(),
+        });
+        for (a, b) in [
+            (&mut to.pinion_m, &map.pinion_m),
+            (&mut to.gear_m, &map.gear_m),
+        ] {
+            for (x, d) in a.iter_mut().flatten().zip(b.iter().flatten()) {
+                *x += s * d;
+            }
+        }
+    }
+    sum
 }

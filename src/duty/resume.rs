@@ -13,7 +13,7 @@
 
 use super::model::SpectrumModel;
 use super::wear::{SpectrumRecord, SpectrumRun};
-use crate::study::wear_check::{check_wear_run, StoredRunError};
+use crate::study::wear_check::{check_spectrum_view, StoredRunError};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 
 /// The spectrum run whose bin logs are `logs` (bin order), checked against `sm`. The logs
@@ -61,8 +61,19 @@ pub(crate) fn from_bin_runs(
                 bins,
             },
             Some(prev) => {
-                let mut next =
-                    super::wear::advance(prev, &run.shares, wear.cycles - prev.wear.cycles);
+                // A helical pair's block is recomputed, as its single-point chain is
+                // (`study::wear_check`), so every face slice of every record is the
+                // replayed one bit for bit, its cycles included.
+                let n = if sm.bins[0].helical.is_some() {
+                    super::wear::block_after(sm, prev, &run.shares).ok_or_else(|| {
+                        StoredRunError::Mismatch(format!(
+                            "update {j}: it follows an update where wear.total_cycles is reached"
+                        ))
+                    })?
+                } else {
+                    wear.cycles - prev.wear.cycles
+                };
+                let mut next = super::wear::advance(prev, &run.shares, n);
                 if next.wear != wear {
                     return Err(StoredRunError::Mismatch(format!(
                         "update {j}: the wear is not the previous wear advanced by every bin's share of the block"
@@ -82,7 +93,7 @@ pub(crate) fn from_bin_runs(
         for (v, b) in view.records.iter_mut().zip(&logs[i].records) {
             v.end_state = b.end_state.clone();
         }
-        check_wear_run(&view, m)
+        check_spectrum_view(&view, m)
             .map_err(|e| StoredRunError::Mismatch(format!("bin {}: {e}", i + 1)))?;
     }
     Ok(run)

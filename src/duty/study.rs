@@ -87,7 +87,7 @@ pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, 
     if run != SweepRun::Wear || case.load_spectrum.is_none() {
         return crate::study::sweep::run_case(case, run);
     }
-    let sm = SpectrumModel::from_case(case).map_err(CaseError::Model)?;
+    let sm = SpectrumModel::dynamics_from_case(case).map_err(CaseError::Model)?;
     let starts = vec![
         SpectrumRun::new(WearMode::Dynamic, sm.shares.clone()),
         SpectrumRun::new(WearMode::QuasiStatic, sm.shares.clone()),
@@ -102,8 +102,12 @@ pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, 
         combined_run(&runs[0], sm.monitoring),
         combined_run(&runs[1], sm.monitoring),
     );
-    Ok(CaseOutcome {
-        results: wear_results(&d, &q),
-        warnings: sm.warnings(),
-    })
+    let mut results = wear_results(&d, &q);
+    // A helical pair's columns: the monitoring bin's new teeth and the spectrum's wear
+    // maps (docs/MODEL.md 11.7); its axial shift at every bin.
+    let monitor = &sm.bins[sm.monitoring];
+    results.helical = crate::study::sweep::case_run::helical_wear_row(monitor, &d, &q)?;
+    let mut warnings = sm.warnings();
+    warnings.extend(sm.axial_shift_warnings());
+    Ok(CaseOutcome { results, warnings })
 }

@@ -5,9 +5,9 @@
 //! response included, and must equal the stored ones bit for bit.
 
 use super::model::SpectrumModel;
-use super::wear::{advance, first_record, respond, SpectrumRecord, SpectrumRun};
+use super::wear::{advance, block_after, first_record, respond, SpectrumRecord, SpectrumRun};
 use crate::study::wear_check::StoredRunError;
-use crate::study::wear_loop::{block_length, start_of};
+use crate::study::wear_loop::start_of;
 
 /// The record after `last` as the run computes it (`wear::run_spectrum_wear`): the
 /// block, the state it reaches and every bin's response on it, warm-started from `last`.
@@ -16,15 +16,7 @@ fn next_record(
     run: &SpectrumRun,
     last: &SpectrumRecord,
 ) -> Option<SpectrumRecord> {
-    let w = &sm.case.wear;
-    let inc = last.increment(&run.shares);
-    let remaining = w.total_cycles - last.wear.cycles;
-    let n = block_length(
-        inc.max_m(),
-        w.block_cycles,
-        w.threshold_um * 1e-6,
-        remaining,
-    );
+    let n = block_after(sm, last, &run.shares)?;
     let mut next = advance(last, &run.shares, n);
     let starts: Vec<Option<Vec<f64>>> = last.bins.iter().map(start_of).collect();
     let bins = respond(sm, run.mode, &next.wear, &starts).ok()?;

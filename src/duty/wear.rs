@@ -24,14 +24,14 @@
 //! bin) or finds no steady state, naming the bin: the wear law must hold at every
 //! operating point the flanks see.
 
-use super::model::SpectrumModel;
+use super::model::{mixed_increment, mixed_maps, SpectrumModel};
 use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::response::DynamicResponse;
 use crate::study::wear_loop::{
     block_length, record, solve, start_of, StopKind, UpdateRecord, WearMode, WearStop,
     MAX_CONTACT_LOSS_FRACTION,
 };
-use crate::wear::{ToothWear, WearIncrement, WearState};
+use crate::wear::{WearIncrement, WearState};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -54,37 +54,22 @@ pub struct SpectrumRecord {
 
 impl SpectrumRecord {
     /// The spectrum's per-cycle wear: sum_i s_i inc_i, m per cycle, on the common profiles
-    /// and, when every bin's increment is per tooth, on every tooth.
+    /// (`model::mixed_increment`) and, when every bin's increment is per tooth or per face
+    /// slice, on every tooth or face slice (`model::mixed_maps`).
     pub fn increment(&self, shares: &[f64]) -> WearIncrement {
-        let n = self.wear.pinion_m.len();
-        let (mut p, mut g) = (vec![0.0; n], vec![0.0; n]);
-        let add = |to: &mut [f64], from: &[f64], s: f64| {
-            for (x, d) in to.iter_mut().zip(from) {
-                *x += s * d;
-            }
-        };
-        let per_tooth =
-            !self.bins.is_empty() && self.bins.iter().all(|b| b.increment_teeth.is_some());
-        let mut teeth: Option<ToothWear> = None;
-        for (b, s) in self.bins.iter().zip(shares) {
-            add(&mut p, &b.increment_pinion_m, *s);
-            add(&mut g, &b.increment_gear_m, *s);
-            if let (true, Some(t)) = (per_tooth, &b.increment_teeth) {
-                let sum = teeth
-                    .get_or_insert_with(|| ToothWear::new(n, t.pinion_m.len(), t.gear_m.len()));
-                for (to, from) in sum.pinion_m.iter_mut().zip(&t.pinion_m) {
-                    add(to, from, *s);
-                }
-                for (to, from) in sum.gear_m.iter_mut().zip(&t.gear_m) {
-                    add(to, from, *s);
-                }
-            }
-        }
+        let common = self.bins.iter().map(|b| {
+            (
+                b.increment_pinion_m.as_slice(),
+                b.increment_gear_m.as_slice(),
+            )
+        });
         WearIncrement {
-            pinion_m: p,
-            gear_m: g,
-            teeth,
-            ..Default::default()
+            teeth: mixed_maps(self.bins.iter().map(|b| b.increment_teeth.as_ref()), shares),
+            slices: mixed_maps(
+                self.bins.iter().map(|b| b.increment_slices.as_ref()),
+                shares,
+            ),
+            ..mixed_increment(common, shares)
         }
     }
 }
@@ -159,6 +144,29 @@ pub(super) fn respond(
     Ok(out)
 }
 
+/// The block after `last`, cycles (module docs, step 1): `wear.block_cycles` cut by the
+/// threshold on the spectrum's wear per cycle and to the total; None when the total is
+/// reached. The run, its recomputation (`duty::verify`) and the replay of a helical
+/// pair's logs (`duty::resume`) take this one step.
+pub(super) fn block_after(
+    sm: &SpectrumModel,
+    last: &SpectrumRecord,
+    shares: &[f64],
+) -> Option<f64> {
+    let w = &sm.case.wear;
+    let remaining = w.total_cycles - last.wear.cycles;
+    if remaining <= 0.5 {
+        return None;
+    }
+    let inc = last.increment(shares);
+    Some(block_length(
+        inc.max_m(),
+        w.block_cycles,
+        w.threshold_um * 1e-6,
+        remaining,
+    ))
+}
+
 /// The state after a block of `n` cycles from `last`: each bin adds s_i n inc_i, in bin
 /// order (module docs, step 2).
 pub(super) fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> SpectrumRecord {
@@ -171,14 +179,9 @@ pub(super) fn advance(last: &SpectrumRecord, shares: &[f64], n: f64) -> Spectrum
     };
     for (i, (b, s)) in last.bins.iter().zip(shares).enumerate() {
         let cycles = s * n;
-        // Paper eq. 17 for this bin: every tooth its own when the mesh is tooth-resolved.
-        let inc = WearIncrement {
-            pinion_m: b.increment_pinion_m.clone(),
-            gear_m: b.increment_gear_m.clone(),
-            teeth: b.increment_teeth.clone(),
-            ..Default::default()
-        };
-        next.wear.advance(&inc, cycles);
+        // Paper eq. 17 for this bin: every tooth its own when the mesh is tooth-resolved,
+        // every face slice its own on a helical pair.
+        next.wear.advance(&b.increment(), cycles);
         for (w, d) in next.by_bin_pinion_m[i]
             .iter_mut()
             .zip(&b.increment_pinion_m)
@@ -248,8 +251,6 @@ pub fn run_spectrum_wear(
     mut run: SpectrumRun,
     on_update: &mut dyn FnMut(&SpectrumRun) -> anyhow::Result<()>,
 ) -> anyhow::Result<SpectrumRun> {
-    let w = &sm.case.wear;
-    let threshold_m = w.threshold_um * 1e-6;
     if run.records.is_empty() {
         let state = sm.bins[0].new_wear_state();
         run.records.push(first_record(sm, run.mode, state)?);
@@ -257,12 +258,9 @@ pub fn run_spectrum_wear(
     }
     while run.stopped.is_none() {
         let last = run.records.last().expect("at least one record");
-        let remaining = w.total_cycles - last.wear.cycles;
-        if remaining <= 0.5 {
+        let Some(n) = block_after(sm, last, &run.shares) else {
             break;
-        }
-        let inc = last.increment(&run.shares);
-        let n = block_length(inc.max_m(), w.block_cycles, threshold_m, remaining);
+        };
         let mut next = advance(last, &run.shares, n);
         let starts: Vec<Option<Vec<f64>>> = last.bins.iter().map(start_of).collect();
         let state = &next.wear;

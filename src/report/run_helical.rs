@@ -8,17 +8,24 @@
 //! `report::paper::section41_figures`, new teeth as the 0 µm state; their data under
 //! `csv/`), the report (`report.html`, `run_helical_report`) embedding the studies'
 //! figures, and `summary.json` (`helical_run`: the studies' key numbers copied from their
-//! summaries, the wear states, where each study's files are).
+//! summaries, the wear states, where each study's files are). Under a load spectrum
+//! (docs/MODEL.md 11.7) `wear/` is what `gearwear wear` writes under it (the spectrum's
+//! wear maps and the duty tables and figures, `report::duty`), the studies read at the
+//! monitoring bin, and the report adds the duty-cycle section (`report::duty::duty_section`).
 
 use super::artifacts::{embed_existing, embed_figures, nest, Artifacts, EmbeddedFigure};
+use super::duty::{duty_section, duty_summary};
 use super::figure_output::FigureOutput;
 use super::html::{self, FigureBlock};
 use super::paper::{section41_figures, wear_states_json};
 use super::run_helical_report::Parts;
 use super::run_train::study_meta;
-use super::wear::wear_artifacts;
+use crate::duty::life::LifeTable;
+use crate::duty::wear::SpectrumRun;
+use crate::duty::SpectrumModel;
 use crate::store::RunMetadata;
 use crate::study::paper::PaperStudy;
+use crate::study::wear_loop::WearMode;
 use crate::study::Model;
 use serde_json::{json, Value};
 
@@ -36,6 +43,21 @@ pub struct HelicalRun<'a> {
     pub stiffness_meta: RunMetadata,
     /// What `gearwear dynamics` writes for the new teeth.
     pub dynamics: Artifacts,
+    /// What `gearwear wear` writes for the wear runs (`report::wear::wear_artifacts`, or
+    /// under a load spectrum `report::duty::duty_wear_artifacts`).
+    pub wear: Artifacts,
+    /// The runs under a load spectrum, when the case has one (docs/MODEL.md 11.7).
+    pub duty: Option<HelicalDuty<'a>>,
+}
+
+/// A helical pair's runs under a load spectrum, for the report's duty-cycle section.
+pub struct HelicalDuty<'a> {
+    /// The bins' models (the run's `model` is the monitoring bin's).
+    pub sm: &'a SpectrumModel,
+    /// The spectrum runs, dynamic first.
+    pub runs: &'a [SpectrumRun],
+    /// The life table.
+    pub life: Option<&'a LifeTable>,
 }
 
 /// The artifacts of a helical pair's run (see the module docs); `meta` is the run's.
@@ -46,7 +68,7 @@ pub fn helical_run_artifacts(
 ) -> Result<Artifacts, super::artifacts::WriteError> {
     let (model, study) = (run.model, run.study);
     let mut a = Artifacts::default().with_figure_output(figures);
-    let wear = wear_artifacts(model, &[&study.dynamic, &study.quasi_static]);
+    let wear = run.wear;
     let headline = [
         ("stiffness", &run.stiffness.headline),
         ("dynamics, new teeth", &run.dynamics.headline),
@@ -106,10 +128,40 @@ pub fn helical_run_artifacts(
         dynamics_figures,
         wear_figures,
     };
-    let report = super::run_helical_report::build(&parts, study, &states, meta);
+    let mut report = super::run_helical_report::build(&parts, study, &states, meta);
+    if let Some(d) = &run.duty {
+        add_duty(&mut a, &mut report, d);
+    }
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     Ok(a)
+}
+
+/// The duty-cycle section of a helical pair's run under a spectrum (`report::duty`'s, its
+/// figures those the wear study wrote under `wear/`), the summary's `load_spectrum` and
+/// every bin's warnings, and the report's title saying so.
+fn add_duty(a: &mut Artifacts, report: &mut html::Report, d: &HelicalDuty) {
+    let runs: Vec<&SpectrumRun> = d.runs.iter().collect();
+    let mut paths = vec!["wear/duty_spectrum.png".to_string()];
+    for r in &runs {
+        paths.push(format!("wear/duty_wear_by_bin_{}.png", r.mode.name()));
+        paths.push(format!("wear/duty_dynamic_factor_{}.png", r.mode.name()));
+    }
+    paths.push("wear/duty_life.png".into());
+    let note = "from the wear study under the spectrum";
+    let refs: Vec<(&str, &str)> = paths.iter().map(|p| (p.as_str(), note)).collect();
+    let figs = embed_all(a, &refs);
+    let main = runs
+        .iter()
+        .copied()
+        .find(|r| r.mode == WearMode::Dynamic)
+        .or(runs.first().copied());
+    if let Some(main) = main {
+        report.sections.push(duty_section(d.sm, main, d.life, figs));
+    }
+    report.title = format!("{} under a load spectrum", report.title);
+    a.summary["load_spectrum"] = duty_summary(d.sm, &runs, d.life);
+    a.summary["warnings"] = json!(d.sm.warnings());
 }
 
 /// The blocks of the figures of `a` at each path, each captioned by its own title and the

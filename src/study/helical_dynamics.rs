@@ -263,3 +263,19 @@ pub fn axial_shift_warning(
         )
     })
 }
+
+/// [`axial_shift_warning`] of the steady state of `model`'s new teeth (no external error,
+/// as `gearwear dynamics` solves it), for the studies that keep no response to check
+/// (`gearwear wear`, `gearwear run` under a spectrum, the wear sweeps): the shift is
+/// mostly the static F_a / k_a of the load, which the wear barely changes. None without
+/// axial coordinates (nothing is solved then: a spur pair, or a helical pair on rigid
+/// axial bearings) or when the steady state is not found (the study itself says why).
+pub fn new_teeth_axial_shift_warning(model: &Model) -> Option<String> {
+    model.helical.as_ref()?;
+    model.params.axial.as_ref()?;
+    let none = crate::dynamics::excitation::ExternalError::none();
+    let r = model
+        .dynamic(&crate::wear::WearState::new(model.grid.len()), &none)
+        .ok()?;
+    axial_shift_warning(model, &r)
+}

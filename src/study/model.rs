@@ -154,7 +154,7 @@ fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
         );
     }
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run` and the sweeps of dynamics and wear, with axial motion where the axial bearing keys are given; tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run` and the sweeps of dynamics and wear, at one operating point or under a `[load_spectrum]` (`gearwear wear`, `gearwear run` and wear sweeps), with axial motion where the axial bearing keys are given; tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 

@@ -7,7 +7,7 @@
 use crate::config::load::case_with;
 use crate::config::Case;
 use crate::study::sweep::helical_row::HELIX_KEY;
-use crate::study::sweep::{SweepPlan, SweepRun};
+use crate::study::sweep::SweepPlan;
 use crate::study::Model;
 
 /// Whether the sweep's table holds a helical pair's columns (module docs). A value that
@@ -29,17 +29,13 @@ pub fn helical_table(base: &Case, plan: &SweepPlan) -> bool {
             })
 }
 
-/// The first reason a helical or planetary case of a sweep running `run` cannot be run,
+/// The first reason a helical or planetary case of a sweep cannot be run (a dynamics or a
+/// wear sweep alike),
 /// if any: what its model refuses (a planetary set has no sweep model yet; a helical
-/// pair's planar model refuses per-tooth errors, profile modifications, faults, ...), and
-/// a helical pair's wear under a `[load_spectrum]` (as `gearwear wear` refuses it).
-pub fn refusal(case: &Case, run: SweepRun) -> Option<String> {
-    if case.gear.helix_angle_deg != 0.0 && run == SweepRun::Wear && case.load_spectrum.is_some() {
-        return Some(format!(
-            "`gear.helix_angle_deg` = {} with a `[load_spectrum]`: a helical pair wears under one operating point so far (its wear per slice is not built under a spectrum); remove the `[load_spectrum]` section, or sweep the dynamics alone (a dynamics sweep takes the case)",
-            crate::format::shown(case.gear.helix_angle_deg)
-        ));
-    }
+/// pair's planar model refuses per-tooth errors, profile modifications, faults, ...). A
+/// helical pair's wear under a `[load_spectrum]` runs (`duty::study::run_sweep_case`,
+/// docs/MODEL.md 11.7).
+pub fn refusal(case: &Case) -> Option<String> {
     let e = Model::dynamics_from_case(case).err()?;
     e.0.into_iter().next()
 }

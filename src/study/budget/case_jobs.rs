@@ -124,6 +124,10 @@ struct Work {
     quasi_modes: f64,
     extra_evals: f64,
     kept: f64,
+    /// Of `extra_evals`, the updates of the life table's runs under a spectrum, and
+    /// whether they run the dynamic mode (`run`, or `wear` with it) or the quasi-static.
+    life_updates: f64,
+    life_dynamic: bool,
 }
 
 impl Work {
@@ -158,18 +162,20 @@ impl Work {
         // `run` and `wear` under a spectrum add the life table: a run to the wear limit
         // under the spectrum (every bin) and one at each bin alone, blocks cut by the
         // threshold only. A train's lives are read from its run itself (`duty::train_life`).
-        let extra_evals = match (&case.load_spectrum, job) {
+        let life_updates = match (&case.load_spectrum, job) {
             (Some(s), Job::Run | Job::Wear { .. }) if case.stage.is_empty() => {
                 let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
-                extra_evals + 2.0 * bins * per_run
+                2.0 * bins * per_run
             }
-            _ => extra_evals,
+            _ => 0.0,
         };
         Self {
             dynamic_modes: dynamic_modes * bins,
             quasi_modes: quasi_modes * bins,
-            extra_evals,
+            extra_evals: extra_evals + life_updates,
             kept,
+            life_updates,
+            life_dynamic: dynamic_modes > 0.0,
         }
     }
 }
@@ -257,9 +263,21 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         job,
         Job::Wear { .. } | Job::Run | Job::SweepCase(SweepRun::Wear)
     ) {
+        // A helical pair's life runs under a spectrum spread their slices too.
+        let w = &c.work;
+        let life = |dynamic: bool| {
+            if w.life_dynamic == dynamic {
+                w.life_updates
+            } else {
+                0.0
+            }
+        };
         terms.extend(super::helical::budget_term(
             case,
-            (c.work.dynamic_modes * c.u_d, c.work.quasi_modes * c.u_q),
+            (
+                w.dynamic_modes * c.u_d + life(true),
+                w.quasi_modes * c.u_q + life(false),
+            ),
             c.records,
             (p.s_dyn, p.s),
             (CHECKPOINT_BYTES_PER_NUMBER, DISK_BYTES_PER_S),

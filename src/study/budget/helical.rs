@@ -18,6 +18,21 @@ pub const SECONDS_PER_SLICE_CONTACT: f64 = 1e-6;
 /// Bytes of one slice contact in flight (`PathSample`, 72 bytes, and its sorted copy).
 const BYTES_PER_SLICE_CONTACT: f64 = 144.0;
 
+/// The product of `counts` in checked integer arithmetic, as a float: a count that
+/// overflows (a huge spectrum times slices times grid points) is infinite, an estimate
+/// every budget refuses, never a wrapped small number.
+fn checked_count(counts: &[usize]) -> f64 {
+    counts
+        .iter()
+        .try_fold(1_usize, |a, b| a.checked_mul(*b))
+        .map_or(f64::INFINITY, |n| n as f64)
+}
+
+/// Bins of the case's load spectrum (1 without one).
+fn bins_of(case: &Case) -> usize {
+    case.load_spectrum.as_ref().map_or(1, |s| s.bins.len())
+}
+
 /// The slice count and the most tooth pairs in contact in the transverse section,
 /// ceil(epsilon_alpha), of a helical case (None for a spur pair or a geometry that fails,
 /// which the model refuses before any update).
@@ -26,9 +41,12 @@ fn slices_and_pairs(case: &Case) -> Option<(f64, f64)> {
         return None;
     }
     let pair = HelicalPair::from_case(&case.gear, &helix_of(&case.gear)).ok()?;
+    let slices = usize::try_from(case.stiffness.slices.max(1)).unwrap_or(usize::MAX);
+    let pairs = pair.transverse_contact_ratio.ceil().max(1.0) as usize;
     Some((
-        case.stiffness.slices.max(1) as f64,
-        pair.transverse_contact_ratio.ceil(),
+        slices as f64,
+        // N ceil(epsilon_alpha), checked, over N: the pairs (infinite on overflow).
+        checked_count(&[slices, pairs]) / slices as f64,
     ))
 }
 
@@ -42,13 +60,17 @@ pub fn slice_contacts_per_update(case: &Case, samples: f64) -> Option<f64> {
 /// Numbers one wear record of a helical case adds: the wear and increment maps, N
 /// profiles of G points on each flank (0 for a spur pair).
 pub fn record_numbers(case: &Case) -> f64 {
-    slices_and_pairs(case).map_or(0.0, |(n, _)| 4.0 * n * case.wear.points_per_profile as f64)
+    let points = usize::try_from(case.wear.points_per_profile.max(0)).unwrap_or(usize::MAX);
+    slices_and_pairs(case).map_or(0.0, |(n, _)| checked_count(&[4, n as usize, points]))
 }
 
 /// The helical wear's term: `updates` = (dynamic, quasi-static) updates over every mode,
 /// `records` the records kept, `samples` = (dynamic, quasi-static) samples of a period,
 /// `checkpoint` the bytes per number written and the disk's rate (bytes/s); None for a
-/// spur pair.
+/// spur pair. Under a load spectrum (docs/MODEL.md 11.7) `updates` and `records` count
+/// every bin's (each bin's response spreads its own slice contacts), and the bins of an
+/// update respond together, so B times one bin's contacts are in flight at once (B N
+/// ceil(epsilon_alpha) counted in checked integer arithmetic).
 pub fn budget_term(
     case: &Case,
     updates: (f64, f64),
@@ -63,7 +85,8 @@ pub fn budget_term(
         .iter()
         .filter(|(u, _)| *u > 0.0)
         .map(|(_, c)| c)
-        .sum::<f64>();
+        .sum::<f64>()
+        * checked_count(&[bins_of(case)]);
     let numbers = records * record_numbers(case);
     Some(Term {
         what: "the helical pair's wear per slice (contacts, wear maps, their checkpoints)",

@@ -459,10 +459,10 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             }
             let mut results = wear_results(&d, &q);
             results.helical = helical_wear_row(&model, &d, &q)?;
-            Ok(CaseOutcome {
-                results,
-                warnings: model.warnings,
-            })
+            let mut warnings = model.warnings.clone();
+            // On axial bearings: its axial shift with new teeth (docs/MODEL.md 11.6).
+            warnings.extend(crate::study::helical_dynamics::new_teeth_axial_shift_warning(&model));
+            Ok(CaseOutcome { results, warnings })
         }
     }
 }
@@ -471,7 +471,7 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
 /// dynamic run's first update has them (its mean mesh force), with the dynamic face load
 /// of one more steady state of the new teeth when the pair has lead gaps (the wear records
 /// keep no slice loads; the same solve as `gearwear dynamics`), then the wear maps.
-fn helical_wear_row(
+pub(crate) fn helical_wear_row(
     model: &Model,
     d: &WearRun,
     q: &WearRun,
@@ -604,10 +604,11 @@ pub fn run_dynamics_from(
             planetary: None,
         },
     };
-    let outcome = CaseOutcome {
-        results,
-        warnings: model.warnings,
-    };
+    let mut warnings = model.warnings.clone();
+    warnings.extend(crate::study::helical_dynamics::axial_shift_warning(
+        &model, &r,
+    ));
+    let outcome = CaseOutcome { results, warnings };
     Ok((outcome, r.end_state))
 }
 
