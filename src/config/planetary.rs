@@ -94,7 +94,7 @@ pub struct PlanetarySection {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lumped: Option<LumpedPlanetarySection<Derivable>>,
     /// A tooth fault on one member (`[[planetary.fault]]`, at most one table; absent:
-    /// none, and a set without one serialises as before; docs/MODEL.md 12.14).
+    /// none, and a set without one serialises as before; docs/MODEL.md 12.13).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub fault: Vec<PlanetaryFault>,
 }
@@ -136,7 +136,7 @@ pub struct PlanetaryFault {
     /// The planet, 1..=N (required for `gear = "planet"`, refused otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub planet: Option<i64>,
-    /// 0-based tooth index on that member (docs/MODEL.md 12.14 numbers the teeth).
+    /// 0-based tooth index on that member (docs/MODEL.md 12.13 numbers the teeth).
     pub tooth: i64,
     /// Crack: depth from the root along its path, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]

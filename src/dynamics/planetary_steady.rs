@@ -284,7 +284,7 @@ fn run_in_periods(sys: &PlanetaryDynamic, tolerance: f64, periods: usize) -> usi
 }
 
 /// The steady state of a set with a tooth fault over the fault's period P mesh periods
-/// (docs/MODEL.md 12.14), as the pair's `hunting::solve_hunting`: (1) the one-period orbit
+/// (docs/MODEL.md 12.13), as the pair's `hunting::solve_hunting`: (1) the one-period orbit
 /// of the healthy set ([`search`], the fault left out), (2) a run-in with the fault over
 /// the last W mesh periods of the period ([`run_in_periods`]), ending at its start, (3)
 /// passes of P periods from t = 0, recorded, until one changes the state by less than the

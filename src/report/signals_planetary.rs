@@ -116,7 +116,7 @@ const FAULT_SIDEBANDS: i64 = 3;
 
 /// With a tooth fault: its repeat frequency f_m / P (the sun's rotation relative to the
 /// carrier, f_s - f_c, for a sun tooth; the planet's, for a planet tooth) and the lines
-/// h f_m + l f_m / P around each mesh harmonic (docs/MODEL.md 12.14); None without one.
+/// h f_m + l f_m / P around each mesh harmonic (docs/MODEL.md 12.13); None without one.
 fn fault_lines(
     d: &PlanetaryDynamics,
     rec: &RingSensorRecord,

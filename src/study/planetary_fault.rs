@@ -1,4 +1,4 @@
-//! A planetary set's tooth fault (`[[planetary.fault]]`, docs/MODEL.md 12.14): the
+//! A planetary set's tooth fault (`[[planetary.fault]]`, docs/MODEL.md 12.13): the
 //! compliance a crack or a spall on one sun or planet tooth adds to the pairs that hold
 //! it, along each mesh's path of contact (`stiffness::planetary_mesh::MeshFault`), and
 //! the fault's period checked against the limits before any run.

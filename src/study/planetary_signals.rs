@@ -16,7 +16,7 @@
 //! mesh_periods`: z_s for a sun tooth) and the signal over L = lcm(P, z_r) mesh periods,
 //! R = L / z_r carrier revolutions: the record's lines then lie on multiples of f_c / R,
 //! which holds both the carrier's orders and the fault's f_m / P (for a sun tooth
-//! f_s - f_c, the sun's rotation relative to the carrier; docs/MODEL.md 12.14). Without a
+//! f_s - f_c, the sun's rotation relative to the carrier; docs/MODEL.md 12.13). Without a
 //! fault R = 1 and everything is as above.
 
 use super::planetary_dynamics::PlanetaryDynamics;

@@ -214,7 +214,7 @@ const SECONDS_PER_STEP_4: f64 = 40e-6;
 const BYTES_PER_SAMPLE_VALUE: f64 = 48.0;
 
 /// The run budget's term for a planetary set with a tooth fault (`[[planetary.fault]]`,
-/// docs/MODEL.md 12.14; None without one): each dynamic evaluation integrates its run-in
+/// docs/MODEL.md 12.13; None without one): each dynamic evaluation integrates its run-in
 /// and at least one pass over the fault's period P mesh periods (`study::planetary_fault::
 /// fault_periods`, in checked arithmetic) beyond the healthy set's search, each period at
 /// `s_dyn` steps, and a kept response records P periods of its 3 (N + 3) coordinates and
