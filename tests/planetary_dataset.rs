@@ -423,3 +423,51 @@ fn what_a_set_cannot_take_in_a_dataset_is_refused_by_key() {
         assert!(!out.exists(), "{set}: the refusal made the folder");
     }
 }
+
+#[test]
+fn every_kept_planetary_record_s_labels_and_csv_are_checked_beyond_the_sample() {
+    // A resume recomputes at most 8 physical states whole; the others' labels are
+    // recomputed from the set's trajectory and their indicators and CSV twins from their
+    // own signal files. 10 states, one record each: a member label forged in records 0-8
+    // and the CSV twin of record 9 edited: all 10 are named, at least one forged label by
+    // that check (at most 8 of the 9 states are sampled).
+    let dir = tempfile::tempdir().unwrap();
+    let cycles: Vec<String> = (0..10).map(|i| format!("{}", i * 15_000)).collect();
+    let d = design(dir.path(), "d.toml", &cycles.join(", "), &[], "");
+    let out = dir.path().join("ds");
+    let r = dataset(&d, &out, &[]);
+    assert!(r.status.success(), "{}", stderr(&r));
+    for id in 0..9 {
+        let p = out.join(format!("records/{id:07}.json"));
+        let mut car = json(&p);
+        let v = car["labels"]["members"][0]["wear_max_um"].as_f64().unwrap();
+        car["labels"]["members"][0]["wear_max_um"] = serde_json::json!(v + 0.5);
+        std::fs::write(&p, serde_json::to_vec_pretty(&car).unwrap()).unwrap();
+    }
+    let csv = out.join("csv/0000009.csv");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    let mut cells: Vec<String> = lines[3].split(',').map(str::to_owned).collect();
+    let v: f64 = cells[1].parse().unwrap();
+    cells[1] = format!("{}", v + 1.0);
+    lines[3] = cells.join(",");
+    std::fs::write(&csv, lines.join("\n") + "\n").unwrap();
+    let r = dataset(&d, &out, &[]);
+    assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
+    let e = stderr(&r);
+    for id in 0..9 {
+        assert!(
+            e.contains(&format!("{id:07}.json")),
+            "record {id} not named:\n{e}"
+        );
+    }
+    assert!(
+        e.contains("csv/0000009.csv"),
+        "the edited CSV not named:\n{e}"
+    );
+    let by_labels = e
+        .lines()
+        .filter(|l| l.contains("from the design, its verified wear trajectory"))
+        .count();
+    assert!(by_labels >= 1, "no record named by the labels' check:\n{e}");
+}

@@ -291,7 +291,7 @@ fn bad_faults_are_refused_naming_key_value_and_range() {
         ),
         (
             "kind = \"spall\"\ngear = \"sun\"\ntooth = 2\nspall_position_mm = 0\nspall_length_mm = 1\nspall_depth_um = -5",
-            vec!["`fault.spall_depth_um` = -5", "(planetary fault 0)"],
+            vec!["`planetary.fault.spall_depth_um` = -5", "(planetary fault 1)"],
         ),
     ] {
         let (_d, out, o) = run("dynamics", &set_with(fault));

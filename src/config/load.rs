@@ -160,7 +160,7 @@ const PLANETARY: &str = "planetary";
 /// `faults`: the case's `[[fault]]` tables as written, checked here before they are
 /// resolved.
 fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String>) {
-    problems.extend(super::teeth::teeth_problems(
+    problems.extend(super::teeth_checks::teeth_problems(
         &case.teeth,
         &case.modification,
         faults,
@@ -447,11 +447,14 @@ fn check_planetary_faults(value: &mut Value, problems: &mut Vec<String>) {
                 _ => format!("fault.{key}"),
             };
             let Some(s) = spec(&path) else { continue };
+            // A size is checked as the pair's `fault.*` key, named as the user wrote it.
+            let named = |p: String| {
+                let p = p.replacen(&format!("`{path}`"), &format!("`planetary.fault.{key}`"), 1);
+                format!("{p} (planetary fault {})", i + 1)
+            };
             match normalise(&path, v, s.valid) {
-                Ok(()) => problems.extend(
-                    check_range(&path, v, s.valid).map(|p| format!("{p} (planetary fault {i})")),
-                ),
-                Err(p) => problems.push(p),
+                Ok(()) => problems.extend(check_range(&path, v, s.valid).map(named)),
+                Err(p) => problems.push(named(p)),
             }
         }
     }

@@ -13,11 +13,13 @@ mod overrides;
 pub mod paper_case;
 mod parse;
 pub mod planetary;
+pub mod planetary_fault;
 pub mod problem;
 pub mod schema;
 pub mod signals;
 pub mod spectrum_merge;
 pub mod teeth;
+mod teeth_checks;
 pub mod train;
 
 #[cfg(test)]

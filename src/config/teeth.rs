@@ -7,7 +7,7 @@
 //! identical, perfect teeth and serialises exactly as before (so summaries and checksums
 //! of such cases do not change). Checks that need only the case (array lengths against
 //! the numbers of teeth, tooth indices, which keys a fault kind takes) live here
-//! (`teeth_problems`); checks that need the geometry (a crack deeper than the tooth, a
+//! (`config::teeth_checks`); checks that need the geometry (a crack deeper than the tooth, a
 //! spall longer than the profile, a relief longer than the addendum) are made when the
 //! model builds its tooth inputs (`study::teeth::ToothInputs::from_case`).
 
@@ -480,7 +480,7 @@ impl From<ToothFault> for FaultTable {
 
 /// The problems of fault `i`'s keys against its kind: a key the kind does not take, a
 /// required one missing.
-fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
+pub(super) fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
     let mut p = Vec::new();
     let own = f.kind.keys();
     for (key, given) in f.given() {
@@ -498,157 +498,6 @@ fn key_problems(f: &FaultTable, i: usize) -> Vec<String> {
                 f.tooth
             )),
             _ => {}
-        }
-    }
-    p
-}
-
-/// Problems of the per-tooth inputs that the case alone shows: array lengths against the
-/// numbers of teeth, tooth indices, a fault's keys against its kind, ascending roll
-/// angles. `z1`, `z2`: teeth of pinion and gear.
-pub(crate) fn teeth_problems(
-    t: &TeethSection,
-    m: &ModificationSection,
-    faults: &[FaultTable],
-    z1: i64,
-    z2: i64,
-) -> Vec<String> {
-    let mut p = array_length_problems(t, z1, z2);
-    p.extend(profile_deviation_problems(m));
-    p.extend(fault_problems(faults, z1, z2));
-    p
-}
-
-/// Per-tooth arrays of `[teeth]` whose lengths do not match the numbers of teeth (`z1`,
-/// `z2`): a pitch error per tooth; a profile deviation for every tooth (1) or per tooth.
-fn array_length_problems(t: &TeethSection, z1: i64, z2: i64) -> Vec<String> {
-    let mut p = Vec::new();
-    let exact = |key: &str, v: &Option<Vec<f64>>, z: i64, who: &str, p: &mut Vec<String>| {
-        if let Some(v) = v {
-            if v.len() as i64 != z {
-                p.push(format!(
-                    "`teeth.{key}` has {} values but the {who} has {z} teeth: give one value per tooth ({z})",
-                    v.len()
-                ));
-            }
-        }
-    };
-    exact(
-        "pitch_error_pinion_um",
-        &t.pitch_error_pinion_um,
-        z1,
-        "pinion",
-        &mut p,
-    );
-    exact(
-        "pitch_error_gear_um",
-        &t.pitch_error_gear_um,
-        z2,
-        "gear",
-        &mut p,
-    );
-    for (key, v, z, who) in [
-        (
-            "profile_slope_pinion_um",
-            &t.profile_slope_pinion_um,
-            z1,
-            "pinion",
-        ),
-        (
-            "profile_slope_gear_um",
-            &t.profile_slope_gear_um,
-            z2,
-            "gear",
-        ),
-        (
-            "profile_form_pinion_um",
-            &t.profile_form_pinion_um,
-            z1,
-            "pinion",
-        ),
-        ("profile_form_gear_um", &t.profile_form_gear_um, z2, "gear"),
-    ] {
-        if let Some(v) = v {
-            if v.len() != 1 && v.len() as i64 != z {
-                p.push(format!(
-                    "`teeth.{key}` has {} values but the {who} has {z} teeth: give one value for every tooth (1) or one per tooth ({z})",
-                    v.len()
-                ));
-            }
-        }
-    }
-    p
-}
-
-/// A user profile deviation of `[modification]` whose roll angles and deviations do not
-/// go together: given alone, of different lengths, or the angles not strictly ascending.
-fn profile_deviation_problems(m: &ModificationSection) -> Vec<String> {
-    let mut p = Vec::new();
-    for (who, roll, dev) in [
-        (
-            "pinion",
-            &m.profile_roll_pinion_deg,
-            &m.profile_deviation_pinion_um,
-        ),
-        (
-            "gear",
-            &m.profile_roll_gear_deg,
-            &m.profile_deviation_gear_um,
-        ),
-    ] {
-        match (roll, dev) {
-            (Some(r), Some(d)) => {
-                if r.len() != d.len() {
-                    p.push(format!(
-                        "`modification.profile_roll_{who}_deg` has {} values but `modification.profile_deviation_{who}_um` has {}: they must have the same length",
-                        r.len(),
-                        d.len()
-                    ));
-                }
-                if r.len() < 2 || r.windows(2).any(|w| w[1] <= w[0]) {
-                    p.push(format!(
-                        "`modification.profile_roll_{who}_deg` must hold at least 2 strictly ascending roll angles"
-                    ));
-                }
-            }
-            (None, None) => {}
-            _ => p.push(format!(
-                "`modification.profile_roll_{who}_deg` and `modification.profile_deviation_{who}_um` go together: give both or neither"
-            )),
-        }
-    }
-    p
-}
-
-/// Problems of the `[[fault]]` tables: a tooth index outside its gear (`z1`, `z2`: teeth of
-/// pinion and gear), keys against the kind, two tables for one fault.
-fn fault_problems(faults: &[FaultTable], z1: i64, z2: i64) -> Vec<String> {
-    let mut p = Vec::new();
-    for (i, f) in faults.iter().enumerate() {
-        let z = match f.gear {
-            Member::Pinion => z1,
-            Member::Gear => z2,
-        };
-        if f.tooth < 0 || f.tooth >= z {
-            p.push(format!(
-                "`fault.tooth` = {} (fault {i}, {} {}) is invalid: the {} has teeth 0 to {}",
-                f.tooth,
-                f.kind.name(),
-                f.gear.name(),
-                f.gear.name(),
-                z - 1
-            ));
-        }
-        p.extend(key_problems(f, i));
-        for (j, g) in faults.iter().enumerate().take(i) {
-            if g.gear == f.gear && g.tooth == f.tooth && g.kind == f.kind {
-                p.push(format!(
-                    "faults {j} and {i} are both a {} on {} tooth {}: give one table per fault",
-                    f.kind.name(),
-                    f.gear.name(),
-                    f.tooth
-                ));
-            }
         }
     }
     p

@@ -19,9 +19,10 @@ const SOURCES: [&str; 9] = [
 ];
 
 /// Fields of a section that are not keys of the schema: the spectrum's bins (a table or a
-/// file, read apart) and the planetary set's lumped table (a sub-table, its own section
-/// below).
-const NOT_KEYS: [&str; 2] = ["load_spectrum.bins", "planetary.lumped"];
+/// file, read apart), the planetary set's lumped table (a sub-table, its own section
+/// below) and its fault tables (`[[planetary.fault]]`: `planetary.fault.kind`, `gear`,
+/// `planet` and `tooth` are schema keys; its sizes are the pair's `fault.*` keys).
+const NOT_KEYS: [&str; 3] = ["load_spectrum.bins", "planetary.lumped", "planetary.fault"];
 
 /// Sub-tables of a section whose keys are schema keys `section.sub.key`: (dotted
 /// section, struct).

@@ -4,6 +4,7 @@
 use super::case::Case;
 use super::load::load_case;
 use super::teeth::*;
+use super::teeth_checks::teeth_problems;
 use std::f64::consts::PI;
 
 fn fault(kind: FaultKind, tooth: i64) -> FaultTable {

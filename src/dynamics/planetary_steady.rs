@@ -314,7 +314,9 @@ fn solve_fault_period(
         run.period(sys, c as f64 * t_m, &mut y, None)?;
     }
     periods += w;
-    let budget = s.max_periods.max(2 * p + w);
+    // At least two passes after the search and the run-in, whatever
+    // `numerics.max_mesh_periods` allows (a fault's period may be longer than it).
+    let budget = s.max_periods.max(periods + 2 * p);
     loop {
         let y_start = y.clone();
         let mut samples = Vec::with_capacity(p * s.samples_per_period + 1);

@@ -54,7 +54,7 @@ pub struct MeshFault {
 /// z_s psi_n / 2 pi and R_n, and the teeth of sun and planet.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FaultTeeth {
-    /// floor(z_s psi_n / 2 pi) per planet: sun tooth i meets planet n at the pitch point
+    /// round(z_s psi_n / 2 pi - gamma_sn) per planet (its whole part, rounding-safe): sun tooth i meets planet n at the pitch point
     /// at c = i + z_s psi_n / 2 pi (+ multiples of z_s), when the sun has turned by
     /// psi_n relative to the carrier.
     pub sun_whole: Vec<i64>,
