@@ -177,6 +177,12 @@ fn a_merge_is_refused_before_any_work_when_its_check_of_every_record_is_over_bud
         err.contains("over its budget") && err.contains("nothing was computed"),
         "{err}"
     );
+    // The merge's own terms, not another job's estimate.
+    assert!(
+        err.contains("a sample of the physical states recomputed")
+            || err.contains("every kept record's signal read back"),
+        "{err}"
+    );
     assert!(
         !d.join("refused").exists(),
         "a refused merge made its folder"

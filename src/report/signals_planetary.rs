@@ -111,12 +111,12 @@ pub fn planetary_signals_artifacts(
     a
 }
 
-/// Sidebands of a tooth fault's lines listed either side of each mesh harmonic.
-const FAULT_SIDEBANDS: i64 = 3;
-
 /// With a tooth fault: its repeat frequency f_m / P (the sun's rotation relative to the
 /// carrier, f_s - f_c, for a sun tooth; the planet's, for a planet tooth) and the lines
-/// h f_m + l f_m / P around each mesh harmonic (docs/MODEL.md 12.13); None without one.
+/// h f_m + l f_m / P around each mesh harmonic, |l| up to 2 N for N planets (at least 3):
+/// a faulty sun tooth meets the N planets in turn, so its characteristic line is
+/// N (f_s - f_c) (Feng & Zuo 2012) and the others come from the sensor's window
+/// (docs/MODEL.md 12.13); None without one.
 fn fault_lines(
     d: &PlanetaryDynamics,
     rec: &RingSensorRecord,
@@ -125,6 +125,7 @@ fn fault_lines(
     let p = d.study.meshes.periods();
     let f = d.study.meshes.fault()?;
     let zr = d.study.set.teeth_ring();
+    let reach = (2 * d.study.set.planets()).max(3) as i64;
     // Lines of the record are f_c / R apart: f_m is z_r R of them, f_m / P is z_r R / P.
     let per_mesh = zr * rec.revolutions.max(1);
     let step = per_mesh / p;
@@ -132,7 +133,7 @@ fn fault_lines(
     let lines: Vec<_> = (1..=harmonics)
         .filter(|h| h * per_mesh < amp.len())
         .map(|h| {
-            let sidebands: Vec<_> = (-FAULT_SIDEBANDS..=FAULT_SIDEBANDS)
+            let sidebands: Vec<_> = (-reach..=reach)
                 .filter(|l| *l != 0)
                 .filter_map(|l| {
                     let k = (h * per_mesh) as i64 + l * step as i64;
