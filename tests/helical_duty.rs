@@ -358,3 +358,23 @@ fn an_axial_shift_under_the_spectrum_is_warned_naming_the_bin() {
     let e = quasi_static_wear(d.path(), "stiff", &stiff);
     assert!(!e.contains("move axially"), "{e}");
 }
+
+#[test]
+fn run_under_the_spectrum_warns_each_bin_s_axial_shift_once() {
+    // `run` solves the monitoring bin's new teeth again for its dynamics folder; its
+    // axial shift was warned with the bins', so each of the three bins is warned once.
+    let d = tempfile::tempdir().unwrap();
+    let case = d.path().join("three.toml");
+    std::fs::write(&case, THREE_BINS).unwrap();
+    let out = d.path().join("run");
+    let s = sets(&["dynamics.bearing_axial_stiffness_pinion_n_per_m=1e4"]);
+    let mut a = vec!["run", "--config", case.to_str().unwrap()];
+    for x in &s {
+        a.extend(["--set", x.as_str()]);
+    }
+    a.extend(["--out", out.to_str().unwrap()]);
+    let o = gearwear(&a);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert_eq!(e.matches("move axially").count(), 3, "{e}");
+}

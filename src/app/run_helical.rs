@@ -79,7 +79,7 @@ pub fn run_of_helical(
     )?;
     let mut s = study.runs;
     observer.note("run: the helical pair's steady state with new teeth");
-    let (new_teeth, dynamics) = new_teeth(&model, observer)?;
+    let (new_teeth, dynamics) = new_teeth(&model, Some(observer))?;
     s.wear_states.insert(0, new_teeth);
     let wear = wear_artifacts(&model, &[&s.dynamic, &s.quasi_static]);
     let run = HelicalRun {
@@ -133,7 +133,8 @@ fn run_of_helical_under_spectrum(
         )));
     };
     observer.note("run: the helical pair's steady state with new teeth at the monitoring bin");
-    let (new_teeth, dynamics) = new_teeth(monitor, observer)?;
+    // Its axial shift was warned with every bin's, named by the bin.
+    let (new_teeth, dynamics) = new_teeth(monitor, None)?;
     s.wear_states.insert(0, new_teeth);
     let wear = duty_wear_artifacts(&sm, &refs, duty.life.as_ref());
     let run = HelicalRun {
@@ -158,18 +159,18 @@ fn run_of_helical_under_spectrum(
 
 /// The steady state of the new teeth as `gearwear dynamics` solves it (no external
 /// error, the unworn state of the grid) as the run's first wear state (0 µm), and what
-/// `gearwear dynamics` writes of it; its axial shift warned as `gearwear dynamics` warns
-/// it (`helical_dynamics::axial_shift_warning`).
+/// `gearwear dynamics` writes of it; its axial shift warned to `warn` as `gearwear
+/// dynamics` warns it (`helical_dynamics::axial_shift_warning`; `None`: warned already).
 fn new_teeth(
     model: &Model,
-    observer: &dyn Observer,
+    warn: Option<&dyn Observer>,
 ) -> Result<(WearStateResult, crate::report::artifacts::Artifacts), JobError> {
     let wear = WearState::new(model.grid.len());
     let none = ExternalError::none();
     let response = model
         .dynamic(&wear, &none)
         .map_err(|e| JobError::Failed(anyhow::anyhow!(e)))?;
-    if let Some(w) = axial_shift_warning(model, &response) {
+    if let (Some(observer), Some(w)) = (warn, axial_shift_warning(model, &response)) {
         observer.warning(&w);
     }
     let artifacts = pair_dynamics_artifacts(model, &response, &none, "new teeth");
