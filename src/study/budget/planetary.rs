@@ -248,6 +248,7 @@ pub fn fault_term(case: &crate::config::Case, evals: f64, kept: f64, s_dyn: f64)
             "planetary.fault.gear",
             "planetary.teeth_sun",
             "planetary.teeth_planet",
+            "planetary.teeth_ring",
             "numerics.steps_per_mesh_period",
         ],
     })
