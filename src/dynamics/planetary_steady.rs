@@ -134,11 +134,7 @@ pub fn solve_planetary_steady_state(
         q0,
     } = search(sys, s)?;
     let mut y = z;
-    let y_start = y.clone();
-    let mut samples = Vec::with_capacity(s.samples_per_period + 1);
-    run.period(sys, 0.0, &mut y, Some(&mut samples))?;
-    samples.push(y.as_slice().to_vec());
-    let periodicity = relative_change(&y_start, &y, &scale);
+    let (samples, periodicity) = run.recorded_pass(sys, s, 1, &mut y, &scale)?;
     Ok(response(
         sys,
         s,
@@ -318,13 +314,7 @@ fn solve_fault_period(
     // `numerics.max_mesh_periods` allows (a fault's period may be longer than it).
     let budget = s.max_periods.max(periods + 2 * p);
     loop {
-        let y_start = y.clone();
-        let mut samples = Vec::with_capacity(p * s.samples_per_period + 1);
-        for c in 0..p {
-            run.period(sys, c as f64 * t_m, &mut y, Some(&mut samples))?;
-        }
-        samples.push(y.as_slice().to_vec());
-        let periodicity = relative_change(&y_start, &y, &scale);
+        let (samples, periodicity) = run.recorded_pass(sys, s, p, &mut y, &scale)?;
         if periodicity < s.steady_state_tolerance {
             return Ok(response(
                 sys,
@@ -506,6 +496,28 @@ struct Run {
 }
 
 impl Run {
+    /// One recorded pass of `p` mesh periods from t = 0 and the state `y` (each period
+    /// integrated from its own start c T_m, so each pair meets its own teeth): its samples,
+    /// the last the state at the pass's end, and its change of state relative to `scale`
+    /// (the periodicity, dimensionless).
+    fn recorded_pass(
+        &mut self,
+        sys: &mut PlanetaryDynamic,
+        s: &PlanetarySettings,
+        p: usize,
+        y: &mut DVector<f64>,
+        scale: &DVector<f64>,
+    ) -> Result<(Vec<Vec<f64>>, f64), PlanetaryDynamicsError> {
+        let t_m = 1.0 / sys.mesh_frequency_hz;
+        let y_start = y.clone();
+        let mut samples = Vec::with_capacity(p * s.samples_per_period + 1);
+        for c in 0..p {
+            self.period(sys, c as f64 * t_m, y, Some(&mut samples))?;
+        }
+        samples.push(y.as_slice().to_vec());
+        Ok((samples, relative_change(&y_start, y, scale)))
+    }
+
     /// One mesh period from `t0` over the step grid, from a fresh step proposal and
     /// Jacobian so that the period map depends on the state only (its fixed point is
     /// then the steady state to the integration's round-off), the Jacobian refreshed

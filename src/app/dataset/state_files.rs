@@ -14,7 +14,7 @@ use crate::study::dataset::planetary_records::{
 };
 use crate::study::dataset::records::{state_records, StateInputs};
 use crate::study::dataset::trajectory::Trajectory;
-use crate::study::dataset::StateChoice;
+use crate::study::dataset::{Condition, StateChoice};
 use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::Model;
 use std::collections::BTreeMap;
@@ -94,14 +94,7 @@ pub(super) fn state_inputs<'a>(
     model: &'a Model,
 ) -> anyhow::Result<StateInputs<'a>> {
     let d = job.req.design;
-    let cond = &d.conditions[ix.condition];
-    let traj = job.trajectories.get(&ix.condition).ok_or_else(|| {
-        anyhow::anyhow!("condition `{}` has no verified wear trajectory", cond.name)
-    })?;
-    let cycles = match &d.states {
-        StateChoice::Count(n) => traj.even_states(*n)[ix.state],
-        StateChoice::Cycles(c) => c[ix.state],
-    };
+    let (cond, traj, cycles) = state_of(job, ix)?;
     Ok(StateInputs {
         model,
         setup: &job.setups[ix.condition],
@@ -111,6 +104,25 @@ pub(super) fn state_inputs<'a>(
         wear_limit_um: d.wear_limit_um,
         design_seed: d.seed,
     })
+}
+
+/// State `ix`'s condition, its verified wear trajectory and the cycles the state is
+/// recorded at (evenly spaced along the trajectory, or as the design lists them). Fails
+/// when the job holds no trajectory of the condition.
+fn state_of<'a>(
+    job: &'a StateJob,
+    ix: StateIndex,
+) -> anyhow::Result<(&'a Condition, &'a Trajectory, f64)> {
+    let d = job.req.design;
+    let cond = &d.conditions[ix.condition];
+    let traj = job.trajectories.get(&ix.condition).ok_or_else(|| {
+        anyhow::anyhow!("condition `{}` has no verified wear trajectory", cond.name)
+    })?;
+    let cycles = match &d.states {
+        StateChoice::Count(n) => traj.even_states(*n)[ix.state],
+        StateChoice::Cycles(c) => c[ix.state],
+    };
+    Ok((cond, traj, cycles))
 }
 
 /// The case of a physical state's condition at its speed and load.
@@ -142,14 +154,7 @@ pub(super) fn planetary_inputs<'a>(
     model: &'a PlanetaryWearModel,
 ) -> anyhow::Result<PlanetaryInputs<'a>> {
     let d = job.req.design;
-    let cond = &d.conditions[ix.condition];
-    let traj = job.trajectories.get(&ix.condition).ok_or_else(|| {
-        anyhow::anyhow!("condition `{}` has no verified wear trajectory", cond.name)
-    })?;
-    let cycles = match &d.states {
-        StateChoice::Count(n) => traj.even_states(*n)[ix.state],
-        StateChoice::Cycles(c) => c[ix.state],
-    };
+    let (cond, traj, cycles) = state_of(job, ix)?;
     let case = state_case(job, ix);
     Ok(PlanetaryInputs {
         model,

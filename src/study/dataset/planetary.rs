@@ -24,7 +24,7 @@ use crate::study::planetary_wear::{wear_gaps, PlanetaryWearModel};
 use crate::study::planetary_wear_check::{planetary_run_from_logs, verify_planetary_resumable};
 use crate::study::planetary_wear_loop::{next_block, run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_check::StoredRunError;
-use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
+use crate::study::wear_loop::{UpdateRecord, WearMode};
 use crate::wear::WearState;
 use serde::{Deserialize, Serialize};
 
@@ -210,14 +210,7 @@ pub fn verify_planetary_trajectory(
             model.planets()
         )));
     }
-    let logs: Vec<WearRun> = std::iter::once(&t.records)
-        .chain(&t.later_stages)
-        .map(|r| WearRun {
-            mode: WearMode::Dynamic,
-            records: r.clone(),
-            stopped: None,
-        })
-        .collect();
+    let logs = t.mesh_logs();
     if logs.iter().any(|l| l.records.len() != n) || t.input_cycles.len() != n {
         return Err(mismatch(
             "its meshes (or its input cycles) hold different numbers of updates".into(),

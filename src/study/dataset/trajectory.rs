@@ -205,6 +205,20 @@ fn run_train_trajectory(m2: &Model, limit_m: f64) -> anyhow::Result<Trajectory> 
 }
 
 impl Trajectory {
+    /// Each mesh's updates as a dynamic wear run's log (the first mesh's `records`, then
+    /// `later_stages`: a train's stages or a set's further meshes), for the wear loops'
+    /// checks.
+    pub(crate) fn mesh_logs(&self) -> Vec<WearRun> {
+        std::iter::once(&self.records)
+            .chain(&self.later_stages)
+            .map(|r| WearRun {
+                mode: WearMode::Dynamic,
+                records: r.clone(),
+                stopped: None,
+            })
+            .collect()
+    }
+
     /// The trajectory of the wear loop's `records` (and why it stopped early, if it did)
     /// under the wear limit `limit_m`: its end and failure cycles derived from the
     /// records (so a kept trajectory's derived fields can be checked by deriving them

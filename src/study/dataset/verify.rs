@@ -166,14 +166,7 @@ fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(
     if n == 0 {
         return Err(mismatch("holds no update".into()));
     }
-    let logs: Vec<WearRun> = std::iter::once(&t.records)
-        .chain(&t.later_stages)
-        .map(|r| WearRun {
-            mode: WearMode::Dynamic,
-            records: r.clone(),
-            stopped: None,
-        })
-        .collect();
+    let logs = t.mesh_logs();
     if logs.iter().any(|l| l.records.len() != n) {
         return Err(mismatch(
             "its stages hold different numbers of updates".into(),
