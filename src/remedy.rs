@@ -385,6 +385,39 @@ impl fmt::Display for Problem {
 
 impl std::error::Error for Problem {}
 
+/// Every problem a check of one input found (a file's rows, a table's keys), in the order
+/// found: the error of a library function that reports all it finds rather than the first.
+/// The application edge takes them as they are (`JobError::Input`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Problems(pub Vec<Problem>);
+
+impl Problems {
+    /// The messages in plain words, one per problem.
+    pub fn messages(&self) -> Vec<String> {
+        self.0.iter().map(Problem::to_string).collect()
+    }
+}
+
+impl From<Vec<String>> for Problems {
+    fn from(messages: Vec<String>) -> Self {
+        Problems(messages.into_iter().map(Problem::from).collect())
+    }
+}
+
+impl From<Problem> for Problems {
+    fn from(p: Problem) -> Self {
+        Problems(vec![p])
+    }
+}
+
+impl fmt::Display for Problems {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.messages().join("\n"))
+    }
+}
+
+impl std::error::Error for Problems {}
+
 #[cfg(test)]
 mod tests {
     use super::*;

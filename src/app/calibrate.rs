@@ -19,7 +19,7 @@ use crate::prognostics::observations::parse_observations_of;
 use crate::prognostics::prior::Prior;
 use crate::prognostics::quantity::indicators_of;
 use crate::prognostics::{Observations, Quantity, Surrogate};
-use crate::remedy::{Arg, Problem};
+use crate::remedy::Arg;
 use crate::report::figure_output::FigureOutput;
 use crate::report::figure_output::FigureRequest;
 use crate::report::html::{render, Report};
@@ -86,8 +86,7 @@ pub struct CalibrateJob {
 impl CalibrateJob {
     /// The prior and the observations, checked.
     fn inputs(&self) -> Result<(Prior, Observations, String), JobError> {
-        let prior = Prior::from_case(&self.case)
-            .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+        let prior = Prior::from_case(&self.case)?;
         if prior.free().is_empty() {
             return Err(JobError::input(
                 "nothing to calibrate: every prior of [calibration] has equal bounds (give calibration.wear_coefficient_min_m2_per_n < ..._max_m2_per_n)",
@@ -104,8 +103,7 @@ impl CalibrateJob {
         let (src, text) = self
             .observations
             .read(Arg::Observations, crate::io::input::MAX_OBSERVATIONS_BYTES)?;
-        let obs = parse_observations_of(&text, &src, stages_of(&self.case))
-            .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+        let obs = parse_observations_of(&text, &src, stages_of(&self.case))?;
         let observed: Vec<Quantity> = obs.series.iter().map(|s| s.quantity).collect();
         check_train_prognostics(&self.case, &observed, false)?;
         // The budget, now that the observations say how far the reference runs go.

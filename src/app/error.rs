@@ -7,7 +7,7 @@ use crate::config::ConfigError;
 use crate::geometry::GeometryError;
 use crate::io::lock::LockError;
 use crate::io::OutputError;
-use crate::remedy::{Arg, Problem, Spelling};
+use crate::remedy::{Arg, Problem, Problems, Spelling};
 use crate::report::artifacts::WriteError;
 use crate::store::checkpoint::CheckpointError;
 use crate::store::transmission_error::TransmissionErrorInput;
@@ -76,6 +76,12 @@ impl std::error::Error for JobError {}
 impl From<Problem> for JobError {
     fn from(p: Problem) -> Self {
         JobError::Input(vec![p])
+    }
+}
+
+impl From<Problems> for JobError {
+    fn from(p: Problems) -> Self {
+        JobError::Input(p.0)
     }
 }
 

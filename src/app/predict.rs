@@ -20,7 +20,7 @@ use crate::prognostics::prior::{Prior, Theta};
 use crate::prognostics::samples::read_samples;
 use crate::prognostics::surrogate::{future_chain_runs, max_chain_runs};
 use crate::prognostics::{Quantity, Surrogate};
-use crate::remedy::{Arg, Problem};
+use crate::remedy::Arg;
 use crate::report::figure_output::{FigureOutput, FigureRequest};
 use crate::report::html::{render, Report};
 use crate::report::prognostics::{fan_figure, life_figure, prediction_section};
@@ -154,8 +154,7 @@ impl PredictJob {
         Ok(match &self.posterior {
             Some(p) => {
                 let (src, text) = p.read(Arg::Posterior, crate::io::input::MAX_POSTERIOR_BYTES)?;
-                let rows = read_samples(&text, &src, defaults)
-                    .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+                let rows = read_samples(&text, &src, defaults)?;
                 let n = self.options.samples.unwrap_or(rows.len());
                 let span = Prior::spanning(&rows);
                 let id = format!("{:x}", Sha256::digest(text.as_bytes()));
@@ -170,8 +169,7 @@ impl PredictJob {
                 )
             }
             None => {
-                let prior = Prior::from_case(case)
-                    .map_err(|p| JobError::Input(p.into_iter().map(Problem::new).collect()))?;
+                let prior = Prior::from_case(case)?;
                 (
                     SampleSource::Prior(prior.clone()),
                     prior,

@@ -24,6 +24,7 @@
 //! Mass: diag(m_j, m_j, I_j / r_j^2) per member and planet.
 
 use crate::config::planetary::LumpedPlanetarySection;
+use crate::remedy::Problems;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
 
 /// Metres per millimetre.
@@ -184,7 +185,7 @@ fn stiffnesses(l: &LumpedPlanetarySection, c: &mut Checked) -> ([f64; 2], [f64; 
 impl PlanetaryLumped {
     /// From `[planetary.lumped]` and the planet angles (rad); every key that is not a
     /// positive finite number (torsional supports may be 0: a free member), named.
-    pub fn from_section(l: &LumpedPlanetarySection, angles: Vec<f64>) -> Result<Self, Vec<String>> {
+    pub fn from_section(l: &LumpedPlanetarySection, angles: Vec<f64>) -> Result<Self, Problems> {
         let mut c = Checked::default();
         let mut pos = |key: &str, v: f64, zero_ok: bool| c.pos(key, v, zero_ok);
         let radius_m = [
@@ -211,7 +212,7 @@ impl PlanetaryLumped {
             c.errs.push(format!("`planetary.lumped.pressure_angle_deg` = {alpha} is invalid: it must lie in (0, 45)"));
         }
         if !c.errs.is_empty() {
-            return Err(c.errs);
+            return Err(c.errs.into());
         }
         Ok(Self {
             planet_angles_rad: angles,

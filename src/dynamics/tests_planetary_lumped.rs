@@ -308,7 +308,9 @@ fn bad_lumped_values_are_named() {
     let mut s = section();
     s.mass_sun_kg = -1.0;
     s.pressure_angle_deg = 60.0;
-    let e = PlanetaryLumped::from_section(&s, equal(3)).unwrap_err();
+    let e = PlanetaryLumped::from_section(&s, equal(3))
+        .unwrap_err()
+        .messages();
     assert!(
         e.iter().any(|m| m.contains("planetary.lumped.mass_sun_kg")),
         "{e:?}"

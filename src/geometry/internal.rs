@@ -20,7 +20,7 @@
 //! N1N2 = a_w sin(alpha_w) = (r_b2 - r_b1) tan(alpha_w).
 
 use super::involute::{inv, inv_inverse};
-use super::pair::Gear;
+use super::pair::{Gear, GeometryError};
 use std::f64::consts::PI;
 
 /// A ring gear (internal, spur) as a pinion-type cutter with the basic rack's dimensions
@@ -136,7 +136,7 @@ impl InternalPair {
         alpha: f64,
         face_width_m: f64,
         centre_distance_m: f64,
-    ) -> Result<Self, Vec<String>> {
+    ) -> Result<Self, GeometryError> {
         let mut errors = Vec::new();
         let (rb1, rb2) = (planet.base_radius_m, ring.base_radius_m);
         if rb2 - rb1 <= 0.0 || centre_distance_m <= rb2 - rb1 {
@@ -146,7 +146,7 @@ impl InternalPair {
                 rb1 / MM,
                 centre_distance_m / MM
             ));
-            return Err(errors);
+            return Err(GeometryError(errors));
         }
         let alpha_w = ((rb2 - rb1) / centre_distance_m).acos();
         let loa = centre_distance_m * alpha_w.sin();
@@ -185,7 +185,7 @@ impl InternalPair {
             ));
         }
         if !errors.is_empty() {
-            return Err(errors);
+            return Err(GeometryError(errors));
         }
         Ok(Self {
             module_m,

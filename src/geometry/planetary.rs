@@ -77,7 +77,7 @@ impl PlanetarySet {
         )
         .map_err(|e| {
             GeometryError(
-                e.into_iter()
+                e.0.into_iter()
                     .map(|m| format!("ring-planet mesh: {m}"))
                     .collect(),
             )

@@ -13,6 +13,7 @@
 //! file line) and column.
 
 use super::quantity::Quantity;
+use crate::remedy::Problems;
 
 /// The measurements of one quantity.
 #[derive(Debug, Clone, PartialEq)]
@@ -107,7 +108,7 @@ struct Columns {
 
 /// Parse the observations CSV of a single pair (a `stage` column may only say 1).
 /// `source` names the file in messages. Returns every problem found.
-pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Vec<String>> {
+pub fn parse_observations(text: &str, source: &str) -> Result<Observations, Problems> {
     parse_observations_of(text, source, 1)
 }
 
@@ -118,13 +119,13 @@ pub fn parse_observations_of(
     text: &str,
     source: &str,
     stages: usize,
-) -> Result<Observations, Vec<String>> {
+) -> Result<Observations, Problems> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
     let header: Vec<String> = match rdr.headers() {
         Ok(h) => h.iter().map(str::to_owned).collect(),
-        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")]),
+        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")].into()),
     };
     let cols = columns(&header, source)?;
     let mut series: Vec<Series> = cols
@@ -168,7 +169,7 @@ pub fn parse_observations_of(
     if problems.is_empty() {
         Ok(Observations { series })
     } else {
-        Err(problems)
+        Err(problems.into())
     }
 }
 
@@ -414,7 +415,7 @@ mod tests {
     use super::*;
 
     fn err(text: &str) -> String {
-        parse_observations(text, "obs.csv").unwrap_err().join("\n")
+        parse_observations(text, "obs.csv").unwrap_err().to_string()
     }
 
     #[test]
@@ -485,7 +486,7 @@ mod tests {
         assert_eq!(o.series[0].quantity.stage(), 2);
         let e = parse_observations_of("cycles,stage,dte_max_um\n0,1,17\n1,4,17\n", "o", 3)
             .unwrap_err()
-            .join("\n");
+            .to_string();
         assert!(
             e.contains("row 2") && e.contains("`stage` = 4") && e.contains("1..3"),
             "{e}"

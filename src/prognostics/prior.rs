@@ -10,6 +10,7 @@
 //! per parameter (log k for k), where every prior is uniform.
 
 use crate::config::case::{Case, LoadPoint};
+use crate::remedy::Problems;
 use crate::rng;
 use crate::study::budget::ParameterSpan;
 use rand::rngs::ChaCha8Rng;
@@ -125,7 +126,7 @@ impl Prior {
     /// The priors of a case's `[calibration]` table, with the derived bounds filled in.
     /// Errors name the keys: a prior with no support (min > max, or a log-uniform prior
     /// reaching zero).
-    pub fn from_case(case: &Case) -> Result<Self, Vec<String>> {
+    pub fn from_case(case: &Case) -> Result<Self, Problems> {
         let c = &case.calibration;
         let k = case.wear.coefficient_m2_per_n;
         let mut problems = Vec::new();
@@ -165,7 +166,7 @@ impl Prior {
             }
         }
         if !problems.is_empty() {
-            return Err(problems);
+            return Err(problems.into());
         }
         let p = |i: usize, log| ParamPrior {
             parameter: PARAMETERS[i],
@@ -278,18 +279,18 @@ mod tests {
     fn no_support_names_the_keys() {
         let mut case = Case::default();
         case.calibration.roughness_scale_min = 2.0;
-        let e = Prior::from_case(&case).unwrap_err().join("\n");
+        let e = Prior::from_case(&case).unwrap_err().to_string();
         assert!(e.contains("calibration.roughness_scale_min"), "{e}");
         let mut case = Case::default();
         case.wear.coefficient_m2_per_n = 0.0;
-        let e = Prior::from_case(&case).unwrap_err().join("\n");
+        let e = Prior::from_case(&case).unwrap_err().to_string();
         assert!(
             e.contains("calibration.wear_coefficient_min_m2_per_n"),
             "{e}"
         );
         let mut case = Case::default();
         case.calibration.load_torque_min_nm = Some(80.0);
-        let e = Prior::from_case(&case).unwrap_err().join("\n");
+        let e = Prior::from_case(&case).unwrap_err().to_string();
         assert!(e.contains("calibration.load_torque_min_nm"), "{e}");
     }
 

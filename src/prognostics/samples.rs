@@ -2,6 +2,7 @@
 //! (`wear_coefficient_m2_per_n`, `roughness_scale`, `load_torque_nm`).
 
 use super::prior::{Parameter, Theta, PARAMETERS};
+use crate::remedy::Problems;
 
 /// Most rows of a samples file: `calibrate` writes at most 1e6
 /// (`limits::CALIBRATE_SAMPLES`).
@@ -14,13 +15,13 @@ pub const RANGES: [(f64, f64); 3] = [(1e-22, 1e-11), (0.01, 10.0), (1e-3, 1e7)];
 
 /// Read a samples CSV. Parameters without a column take `defaults`. Errors name the row
 /// and column.
-pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<Theta>, Vec<String>> {
+pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<Theta>, Problems> {
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
     let header: Vec<String> = match rdr.headers() {
         Ok(h) => h.iter().map(str::to_owned).collect(),
-        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")]),
+        Err(e) => return Err(vec![format!("{source}: cannot read the header: {e}")].into()),
     };
     let mut problems = Vec::new();
     let mut cols: Vec<(usize, usize)> = Vec::new();
@@ -42,7 +43,7 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
         problems.push(format!("{source}: no `wear_coefficient_m2_per_n` column"));
     }
     if !problems.is_empty() {
-        return Err(problems);
+        return Err(problems.into());
     }
     let mut out = Vec::new();
     for (r, rec) in rdr.records().enumerate() {
@@ -84,7 +85,7 @@ pub fn read_samples(text: &str, source: &str, defaults: Theta) -> Result<Vec<The
     if problems.is_empty() {
         Ok(out)
     } else {
-        Err(problems)
+        Err(problems.into())
     }
 }
 
@@ -106,9 +107,9 @@ mod tests {
         );
         assert_eq!(r.unwrap(), vec![[1e-16, 1.0, 60.0]]);
         let e = read_samples("wear_coefficient_m2_per_n\n1e-16\n-1\n", "p.csv", [0.0; 3]);
-        assert!(e.unwrap_err()[0].contains("row 2 (line 3)"));
+        assert!(e.unwrap_err().messages()[0].contains("row 2 (line 3)"));
         let e = read_samples("k\n1\n", "p.csv", [0.0; 3]).unwrap_err();
-        assert!(e[0].contains("unknown column `k`"));
+        assert!(e.messages()[0].contains("unknown column `k`"));
         // Outside the case's ranges, subnormal, or a column twice.
         for bad in ["1e-9", "5e-324", "0"] {
             let e = read_samples(
@@ -116,13 +117,13 @@ mod tests {
                 "p.csv",
                 [0.0; 3],
             );
-            assert!(e.unwrap_err()[0].contains("1e-22"), "{bad}");
+            assert!(e.unwrap_err().messages()[0].contains("1e-22"), "{bad}");
         }
         let e = read_samples(
             "wear_coefficient_m2_per_n,wear_coefficient_m2_per_n\n1e-16,1e-16\n",
             "p.csv",
             [0.0; 3],
         );
-        assert!(e.unwrap_err()[0].contains("twice"));
+        assert!(e.unwrap_err().messages()[0].contains("twice"));
     }
 }

@@ -121,7 +121,7 @@ impl PlanetaryStudy {
         };
         let modes = Some(
             PlanetaryLumped::from_section(&lumped, set.planet_angles_rad.clone())
-                .map_err(ModelError)?
+                .map_err(|p| ModelError(p.messages()))?
                 .modes(),
         );
         Ok(Self {

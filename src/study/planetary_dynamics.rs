@@ -54,7 +54,7 @@ impl PlanetaryDynamics {
         let study = PlanetaryStudy::from_case(case)?;
         let mut params =
             PlanetaryLumped::from_section(&study.lumped, study.set.planet_angles_rad.clone())
-                .map_err(ModelError)?;
+                .map_err(|p| ModelError(p.messages()))?;
         let set = &study.set;
         let radius_m = [
             set.carrier_radius_m,
