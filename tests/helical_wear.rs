@@ -574,3 +574,54 @@ fn a_normal_wear_depth_is_its_transverse_gap_over_cos_beta_b_and_its_flank_volum
         }
     }
 }
+
+/// The effective radius a Hertz line contact was computed with, read back from its
+/// half-width and peak pressure: a = sqrt(4 w R / (pi E*)) and p0 = sqrt(w E* / (pi R))
+/// give a / p0 = 4 R / (pi E*) ... over p0 a = 2 w / pi: R = E* a / (2 p0), whatever the
+/// load per unit length w (so whatever width the contact was spread over).
+fn hertz_radius(s: &PathSample, e_star: f64) -> f64 {
+    e_star * s.half_width_m / (2.0 * s.pressure_pa)
+}
+
+#[test]
+fn a_helical_contact_takes_the_radii_of_its_contact_lines_normal_section() {
+    // Meusnier's theorem: the involute helicoid's normal curvature across the contact line
+    // (which lies in the plane of action, inclined at beta_b) is the transverse curvature
+    // times cos(beta_b), so the Hertz radius is R_t / cos(beta_b) (ISO/TR 15144-1 takes
+    // the normal section's relative radius for a helical pair). Read back from every
+    // loaded contact's a and p0 (`hertz_radius`), against R_t = rho1 rho2 / (rho1 + rho2)
+    // at the recorded point and cos(beta_b) by hand: the slices' contacts (200 slices) and
+    // the contact lines of the dynamics (one slice, whose contacts are the response's
+    // path). 1e-12 relative: a, p0 and R are a few roundings apart. At beta = 0 the radius
+    // is the transverse one (the spur pair's).
+    let mut checked = 0;
+    for (beta, slices) in [(15.0, 200), (15.0, 1), (25.0, 1), (0.0, 4)] {
+        let m = helical(&[
+            &format!("gear.helix_angle_deg={beta}"),
+            &format!("stiffness.slices={slices}"),
+            "wear.total_cycles=2e4",
+        ]);
+        let hd = m.helical.as_ref().unwrap();
+        let w = m.new_wear_state();
+        let resp = solve(&m, WearMode::QuasiStatic, &w, None).unwrap();
+        let t = &hd.pair.transverse;
+        let mat = &m.case.materials;
+        let inv = (1.0 - mat.poisson_ratio_pinion.powi(2)) / (mat.youngs_modulus_pinion_gpa * 1e9)
+            + (1.0 - mat.poisson_ratio_gear.powi(2)) / (mat.youngs_modulus_gear_gpa * 1e9);
+        let cos_bb = cos_base_helix_by_hand(beta, 20.0);
+        for path in slice_paths(&m, hd, &resp, &w) {
+            for s in path.iter().filter(|s| s.load_n > 0.0) {
+                let rho2 = t.loa_length_m - s.rho1_m;
+                let want = s.rho1_m * rho2 / (s.rho1_m + rho2) / cos_bb;
+                let got = hertz_radius(s, 1.0 / inv);
+                assert!(
+                    (got - want).abs() <= 1e-12 * want,
+                    "beta {beta}, {slices} slices, rho1 {:e}: Hertz radius {got:e} against {want:e}",
+                    s.rho1_m
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 1000, "{checked} contacts checked");
+}

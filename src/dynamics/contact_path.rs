@@ -106,6 +106,11 @@ pub struct ContactPath {
     /// A helical pair's contact line: its extent L = b tan(beta_b) along the path, m
     /// (0: a spur pair; [`ContactPath::helical_lines`]).
     line_m: f64,
+    /// The factor from a contact's transverse radii of curvature to those of the contact
+    /// line's normal section, 1 / cos(beta_b) (Meusnier's theorem; ISO/TR 15144-1:2014
+    /// takes the normal section's relative radius rho_t / cos(beta_b) for a helical
+    /// pair's contact): 1 for a spur pair (docs/MODEL.md 11.1).
+    normal_radius_factor: f64,
     /// The helical lines' force with lead gaps across the face ([`ContactPath::with_lead_gaps`];
     /// None: no gap across the face, each line a spring K(rho) (delta - e)).
     lead: Option<Arc<LineGapTable>>,
@@ -121,6 +126,7 @@ impl ContactPath {
             loa_m: pair.loa_length_m,
             corners: None,
             line_m: 0.0,
+            normal_radius_factor: 1.0,
             lead: None,
         };
         if !model.is_extended() {
@@ -149,7 +155,7 @@ impl ContactPath {
     /// trailing end rho in [A - L, E] (its reach), `path` is the transverse path [A, E], m,
     /// `line_m` = L = b tan(beta_b) > 0. A line's Hertz contact, friction and kinematics are
     /// taken at the middle of its part on the path, over that part's share of the face
-    /// (docs/MODEL.md section 11.1).
+    /// (docs/MODEL.md section 11.1); [`ContactPath::in_normal_section`] gives their radii.
     pub fn helical_lines(line_pair: &GearPair, path: (f64, f64), line_m: f64) -> Self {
         Self {
             reach: line_pair.nominal_reach(),
@@ -157,8 +163,28 @@ impl ContactPath {
             loa_m: line_pair.loa_length_m,
             corners: None,
             line_m,
+            normal_radius_factor: 1.0,
             lead: None,
         }
+    }
+
+    /// The same contacts between helical flanks of base helix angle beta_b,
+    /// `cos_base_helix` = cos(beta_b): their Hertz radii are the transverse ones over
+    /// cos(beta_b), those of the contact line's normal section (docs/MODEL.md 11.1, 11.3),
+    /// whether the pair is followed by its contact lines or, with one slice, as one
+    /// transverse pair.
+    pub fn in_normal_section(self, cos_base_helix: f64) -> Self {
+        Self {
+            normal_radius_factor: 1.0 / cos_base_helix,
+            ..self
+        }
+    }
+
+    /// The factor from a contact's transverse radii of curvature to the normal section's
+    /// (1 / cos(beta_b) between helical flanks, 1 on a spur pair), dimensionless.
+    #[inline]
+    pub fn normal_radius_factor(&self) -> f64 {
+        self.normal_radius_factor
     }
 
     /// The same helical lines with the lead gaps of `table` (docs/MODEL.md 11.1): each line

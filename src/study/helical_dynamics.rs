@@ -196,7 +196,8 @@ impl Model {
             ContactPath::helical_lines(&line_pair, path, lead)
         } else {
             ContactPath::new(&line_pair, ContactPathModel::Nominal, MAX_PAIRS)
-        };
+        }
+        .in_normal_section(hp.base_helix_angle_rad.cos());
         if let Some(g) = &gaps {
             let table = LineGapTable::new(&hm.slices, &g.static_load.gaps_m);
             contact = contact.with_lead_gaps(table);

@@ -38,7 +38,7 @@
 use super::helical::{slice_gap_m, HelicalDynamics};
 use super::model::Model;
 use crate::contact::friction::XuConstants;
-use crate::contact::hertz::HertzContact;
+use crate::contact::hertz::{effective_radius_m, HertzContact};
 use crate::contact::kinematics::SurfaceKinematics;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::{TrainMesh, MAX_PAIRS};
@@ -133,7 +133,7 @@ pub fn slice_paths(
                 model,
                 &xu,
                 (x, f * force / total),
-                width,
+                (width, cos_bb),
                 wp,
                 wg,
             ));
@@ -143,19 +143,21 @@ pub fn slice_paths(
 }
 
 /// One slice contact at transverse position `x.0` (m) under load `x.1` (N) over the slice
-/// width `width_m`, pinion and gear speeds `wp`, `wg` (rad/s): Hertz (paper eq. 15), Xu's
-/// coefficient (eq. 8), the surface speeds.
+/// width `w.0` (m), pinion and gear speeds `wp`, `wg` (rad/s): Hertz (paper eq. 15) with
+/// the radii of the contact line's normal section, the transverse ones over
+/// `w.1` = cos(beta_b) (docs/MODEL.md 11.3), Xu's coefficient (eq. 8), the surface speeds.
 fn slice_sample(
     model: &Model,
     xu: &XuConstants,
     (rho1, load): (f64, f64),
-    width_m: f64,
+    (width_m, cos_base_helix): (f64, f64),
     wp: f64,
     wg: f64,
 ) -> PathSample {
     let pair = &model.pair;
     let rho2 = pair.rho_gear(rho1);
-    let hz = HertzContact::with_modulus(load, width_m, rho1, rho2, model.effective_modulus_pa);
+    let radius_m = effective_radius_m(rho1, rho2) / cos_base_helix;
+    let hz = HertzContact::with_radius(load, width_m, radius_m, model.effective_modulus_pa);
     let kin = SurfaceKinematics::new(wp, wg, rho1, rho2);
     let mu = model.friction.coefficient_with(&hz, &kin, xu);
     PathSample {

@@ -5,7 +5,7 @@
 use super::{MeshFrame, MeshOperating, MeshParts, MeshSprings, MeshState, MAX_PAIRS};
 use crate::config::case::LoadSharingModel;
 use crate::contact::friction::XuConstants;
-use crate::contact::hertz::HertzContact;
+use crate::contact::hertz::{effective_radius_m, HertzContact};
 use crate::contact::kinematics::SurfaceKinematics;
 use crate::contact::load_sharing::pedrero_shares;
 use crate::dynamics::assembly::MeshGeometry;
@@ -371,10 +371,14 @@ impl TrainMesh<'_> {
             let rho2 = self.parts.pair.rho_gear(rho1);
             let width = self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]);
             let e_star = self.parts.effective_modulus_pa;
-            let hz = match ms.curvature_change[i] {
-                0.0 => HertzContact::with_modulus(w, width, rho1, rho2, e_star),
-                dk => HertzContact::with_radius(w, width, worn_radius(rho1, rho2, dk), e_star),
+            // The normal section's radius (helical lines; exactly the transverse one, 1 x R,
+            // on a spur pair).
+            let normal = self.parts.contact.normal_radius_factor();
+            let radius = match ms.curvature_change[i] {
+                0.0 => effective_radius_m(rho1, rho2),
+                dk => worn_radius(rho1, rho2, dk),
             };
+            let hz = HertzContact::with_radius(w, width, normal * radius, e_star);
             ms.pressure_pa[i] = hz.max_pressure_pa;
             ms.half_width_m[i] = hz.half_width_m;
             let kin = SurfaceKinematics::new(omega_p, omega_g, rho1, rho2);
