@@ -79,7 +79,9 @@ fn starting_runs(
     };
     let replay = |m: WearMode, logs: Vec<WearRun>| {
         let by_bin: Vec<Vec<WearRun>> = logs.chunks(nm).map(|c| c.to_vec()).collect();
-        from_logs(ps, m, &by_bin).and_then(|run| verify(ps, &run).map(|_| run))
+        from_logs(ps, m, &by_bin)
+            .and_then(|run| verify(ps, &run).map(|_| run))
+            .map_err(|e| e.to_string())
     };
     starting_part_runs(
         resume_from,

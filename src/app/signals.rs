@@ -129,8 +129,7 @@ impl Job for SignalsJob {
             chain_case,
             path,
             chain_case.signals.max_input_speed_hz(chain_case),
-        )
-        .map_err(|m| JobError::Input(m.into_iter().map(Problem::new).collect()))?;
+        )?;
         for w in &setup.warnings {
             observer.warning(w);
         }

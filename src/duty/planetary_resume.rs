@@ -19,7 +19,7 @@ use super::planetary::{new_record, next_spectrum_block, respond_bins, PlanetaryS
 use super::planetary::{PlanetarySpectrumRecord, PlanetarySpectrumRun};
 use crate::study::planetary_wear_check::{planetary_mesh_name, record_problem};
 use crate::study::planetary_wear_loop::PlanetaryUpdate;
-use crate::study::wear_check::{random_sample, MAX_RECOMPUTED};
+use crate::study::wear_check::{random_sample, StoredRunError, MAX_RECOMPUTED};
 use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use crate::wear::WearState;
 
@@ -29,14 +29,14 @@ fn replayed(
     ps: &PlanetarySpectrum,
     run: &PlanetarySpectrumRun,
     j: usize,
-) -> Result<(Vec<WearState>, PlanetarySpectrumRecord), String> {
+) -> Result<(Vec<WearState>, PlanetarySpectrumRecord), StoredRunError> {
     match run.records.last() {
         None => Ok(new_record(ps)),
         Some(prev) => next_spectrum_block(ps, prev, &run.shares).ok_or_else(|| {
-            format!(
+            StoredRunError::Mismatch(format!(
                 "update {j} (line {}): the run had reached wear.total_cycles at the update before it",
                 j + 2
-            )
+            ))
         }),
     }
 }
@@ -47,12 +47,12 @@ pub fn from_logs(
     ps: &PlanetarySpectrum,
     mode: WearMode,
     logs: &[Vec<WearRun>],
-) -> Result<PlanetarySpectrumRun, String> {
+) -> Result<PlanetarySpectrumRun, StoredRunError> {
     let (nb, nm) = (ps.bins(), ps.meshes());
     if logs.len() != nb || logs.iter().any(|l| l.len() != nm) {
-        return Err(format!(
+        return Err(StoredRunError::Mismatch(format!(
             "the logs are not one per bin ({nb}) and mesh ({nm})"
-        ));
+        )));
     }
     let n = logs
         .iter()
@@ -67,12 +67,12 @@ pub fn from_logs(
             let meshes: Vec<UpdateRecord> = bin.iter().map(|l| l.records[j].clone()).collect();
             for (k, r) in meshes.iter().enumerate() {
                 let at = |what: &str| {
-                    format!(
+                    StoredRunError::Mismatch(format!(
                         "update {j} (line {}), bin {}, mesh {}: {what}",
                         j + 2,
                         i + 1,
                         planetary_mesh_name(&ps.models[i], k)
-                    )
+                    ))
                 };
                 if let Some(p) = record_problem(&ps.models[i], k, r) {
                     return Err(at(&p));
@@ -96,7 +96,7 @@ pub fn from_logs(
 
 /// Recompute updates of `run` (replayed by [`from_logs`]) and require them equal to the
 /// stored ones (see the module docs); the error names the first that is not.
-pub fn verify(ps: &PlanetarySpectrum, run: &PlanetarySpectrumRun) -> Result<(), String> {
+pub fn verify(ps: &PlanetarySpectrum, run: &PlanetarySpectrumRun) -> Result<(), StoredRunError> {
     let n = run.records.len();
     let json = |r: &UpdateRecord| serde_json::to_string(r).ok();
     for j in random_sample(n, MAX_RECOMPUTED, &[0, n.saturating_sub(1)]) {
@@ -111,7 +111,7 @@ pub fn verify(ps: &PlanetarySpectrum, run: &PlanetarySpectrumRun) -> Result<(), 
             .collect();
         let again = respond_bins(ps, run.mode, (stored.input_cycles, stored.limited_by), &wears)
             .map_err(|s| {
-                format!("update {j} (line {line}): this case's model makes no such update when it is recomputed from the update before it ({}): the records are not this case's", s.reason)
+                StoredRunError::Mismatch(format!("update {j} (line {line}): this case's model makes no such update when it is recomputed from the update before it ({}): the records are not this case's", s.reason))
             })?;
         for (i, (a, b)) in again.iter().zip(&stored.bins).enumerate() {
             if let Some(k) = a
@@ -120,11 +120,11 @@ pub fn verify(ps: &PlanetarySpectrum, run: &PlanetarySpectrumRun) -> Result<(), 
                 .zip(&b.meshes)
                 .position(|(x, y)| json(x) != json(y))
             {
-                return Err(format!(
+                return Err(StoredRunError::Mismatch(format!(
                     "update {j} (line {line}), bin {}, mesh {}: not what this case's model computes from the update before it: the records are not this case's, or were edited",
                     i + 1,
                     planetary_mesh_name(&ps.models[i], k)
-                ));
+                )));
             }
         }
     }

@@ -378,7 +378,7 @@ pub(crate) fn attach(
     };
     let model = Model::from_case(case).map_err(IndicatorError::Model)?;
     let mut setup = chain_of(case, None, case.signals.max_input_speed_hz(case))
-        .map_err(IndicatorError::Chain)?;
+        .map_err(|p| IndicatorError::Chain(p.messages()))?;
     setup.chain.acquisition.noise = NoiseSpec::None;
     let rows: Vec<Option<Vec<f64>>> = t
         .records

@@ -7,6 +7,7 @@ use super::components::ComponentSettings;
 use super::transfer::{PathModel, TransferPath};
 use crate::config::signals::LengthUnit;
 use crate::config::Case;
+use crate::remedy::Problems;
 
 /// A chain that can be recorded, and what the user should know about it.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,7 +27,7 @@ pub fn chain_of(
     case: &Case,
     path: Option<TransferPath>,
     max_input_hz: f64,
-) -> Result<ChainSetup, Vec<String>> {
+) -> Result<ChainSetup, Problems> {
     let s = &case.signals;
     let path = path.unwrap_or_else(TransferPath::generic_housing);
     let fs = s.sampling_rate_hz;
@@ -53,7 +54,7 @@ pub fn chain_of(
         }
     }
     if !problems.is_empty() {
-        return Err(problems);
+        return Err(problems.into());
     }
     let noise = match (s.snr_db, s.noise_density_ug_per_sqrt_hz) {
         (Some(snr), _) => NoiseSpec::SnrDb(snr),
@@ -99,7 +100,7 @@ mod tests {
         // Paper case: mesh 570 Hz; 4 harmonics -> 2280 Hz needs f_s > 5836.8 Hz.
         let mut case = Case::default();
         case.signals.sampling_rate_hz = 5_000.0;
-        let e = chain_of(&case, None, 30.0).unwrap_err();
+        let e = chain_of(&case, None, 30.0).unwrap_err().messages();
         let msg = e.iter().find(|m| m.contains("mesh_harmonics")).unwrap();
         assert!(
             msg.contains("`signals.sampling_rate_hz` = 5000") && msg.contains("5836.8"),

@@ -91,8 +91,10 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
         let setup = if case.planetary.is_some() {
             super::plan_planetary::planetary_setup(req, &case)
         } else {
-            chain_case(&case)
-                .and_then(|k| chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k)))
+            chain_case(&case).and_then(|k| {
+                chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k))
+                    .map_err(|p| p.messages())
+            })
         };
         match setup {
             Ok(s) => out.push(s),

@@ -60,7 +60,7 @@ pub(super) fn planetary_setup(
     }
     let mut c = case.clone();
     c.signals.mesh_harmonics = 0;
-    let mut s = chain_of(&c, None, c.signals.max_input_speed_hz(&c))?;
+    let mut s = chain_of(&c, None, c.signals.max_input_speed_hz(&c)).map_err(|p| p.messages())?;
     s.chain.path.sensors = vec![RING_CHANNEL.to_owned()];
     s.warnings.clear();
     Ok(s)

@@ -196,6 +196,41 @@ impl SweepJob {
         })
     }
 
+    /// Run the continuation `c` branch by branch (`branches::run_branches`), each point's
+    /// record into `folders` (the output folder and its cases folder) if given.
+    fn run_continuation(
+        &self,
+        c: &ContinuationPlan,
+        (planned, keys, columns): (&[Planned], &[String], &[String]),
+        folders: Option<(&std::path::Path, &StateFolder)>,
+        observer: &dyn Observer,
+    ) -> Ran {
+        observer.note(&format!(
+            "sweep: continuation along {} ({} branch(es), {} points; points finished from the same start state are skipped)",
+            keys.join(", "),
+            c.branches.len(),
+            c.len()
+        ));
+        let task = Task::items("sweep", "sweep cases", c.len());
+        observer.start(&task);
+        let count = std::sync::atomic::AtomicUsize::new(0);
+        let on_point = || {
+            let n = count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            observer.advance(&task, n as f64, "");
+        };
+        let helical = helical::helical_table(&self.base, &self.plan);
+        let r = branches::run_branches(
+            (folders, helical, columns),
+            c,
+            planned,
+            keys,
+            &on_point,
+            &|| !observer.cancelled(),
+        );
+        observer.finish(&task);
+        r
+    }
+
     /// Run the pending cases in parallel, writing their records into `cases` if given.
     fn run_parallel(
         &self,
@@ -376,31 +411,8 @@ impl Job for SweepJob {
         let cases = out.as_ref().map(|o| o.state_folder("cases")).transpose()?;
 
         let ran = if let Some(c) = &continuation {
-            observer.note(&format!(
-                "sweep: continuation along {} ({} branch(es), {} points; points finished from the same start state are skipped)",
-                keys.join(", "),
-                c.branches.len(),
-                c.len()
-            ));
-            let task = Task::items("sweep", "sweep cases", c.len());
-            observer.start(&task);
-            let count = std::sync::atomic::AtomicUsize::new(0);
-            let on_point = || {
-                let n = count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-                observer.advance(&task, n as f64, "");
-            };
             let folders = dir.zip(cases.as_ref());
-            let helical = helical::helical_table(&self.base, plan);
-            let r = branches::run_branches(
-                (folders, helical, &columns),
-                c,
-                &planned,
-                &keys,
-                &on_point,
-                &|| !observer.cancelled(),
-            );
-            observer.finish(&task);
-            r
+            self.run_continuation(c, (&planned, &keys, &columns), folders, observer)
         } else {
             observer.note(&format!(
                 "sweep: {} cases in all, {} in shard {}/{}: {} already finished (skipped), {} to run on {} threads",
