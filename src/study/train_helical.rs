@@ -35,22 +35,21 @@ pub(crate) struct HelicalStageParts {
 
 /// The helical stage of the stage's single-pair case `sc` (`study::train::stage_case`:
 /// its `[gear]`, `[dynamics]` and `stiffness.slices` the stage's). As the single helical
-/// pair: the lead keys refused; `sc`'s `contact.load_sharing` becomes "stiffness" (the lines share the load by
+/// pair (the lead keys are refused before, by the stage's domain checks):
+/// `sc`'s `contact.load_sharing` becomes "stiffness" (the lines share the load by
 /// their compressions) and `contact.path` = "extended" the nominal path, with a warning.
 pub(crate) fn helical_stage(sc: &mut Case) -> Result<HelicalStageParts, Vec<String>> {
-    let lead = super::face_load::lead_keys(sc);
-    if !lead.is_empty() {
-        return Err(vec![format!(
-            "{} on a helical stage of a gear train: the lead modifications and the misalignment are taken by a single helical pair only so far (a train's stages carry no gap across the face, docs/MODEL.md 4.3); remove them",
-            lead.join(", ")
-        )]);
-    }
     let hm = HelicalModel::from_case(sc).map_err(|e| e.0)?;
     let hp = hm.pair().clone();
     if let Some(p) = contact_ratio_problem(sc, &hp) {
         return Err(vec![p]);
     }
     let (line_pair, mesh, lead) = hm.slices.line_model();
+    if sc.contact.load_sharing == LoadSharingModel::Pedrero {
+        return Err(vec![
+            "`contact.load_sharing` = \"pedrero\" on a helical stage: paper eq. (7) is a spur pair's law; give \"stiffness\" or \"auto\" (a helical stage's contact lines share the load by their compressions)".into(),
+        ]);
+    }
     let mut warnings = hm.warnings.clone();
     warnings.extend(super::domain::axial_damping_alone_warnings(sc));
     sc.contact.load_sharing = LoadSharingModel::Stiffness;
