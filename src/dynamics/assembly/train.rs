@@ -122,18 +122,7 @@ impl Elements {
                 centre_line_rad: s.centre_line_rad,
                 axial_gradient: s.axial.map_or(0.0, |a| a.axial_gradient),
             });
-            // Each body on its own axial bearing (two gears on one shaft are not tied
-            // axially: docs/MODEL.md 4.3).
-            let bodies_kc = s.axial.map_or([None, None], |a| a.bearings);
-            for (body, kc) in [p, g].into_iter().zip(bodies_kc) {
-                if let Some((k, c)) = kc {
-                    axial_bearings.push(AxialBearing {
-                        body,
-                        stiffness_n_per_m: k,
-                        damping_n_s_per_m: c,
-                    });
-                }
-            }
+            axial_bearings.extend(stage_axial_bearings(s, [p, g]));
             if let Some((kt, ct)) = s.shaft.filter(|_| k + 1 < n) {
                 shafts.push(torsion([g, pinion_body(k + 1)], kt, ct));
             }
@@ -156,4 +145,21 @@ impl Elements {
             drive,
         }
     }
+}
+
+/// A stage's axial bearings on its pinion and gear (`bodies`): each body on its own
+/// bearing to ground, two gears on one shaft not tied axially (docs/MODEL.md 4.3).
+fn stage_axial_bearings(s: &StageElements, bodies: [usize; 2]) -> Vec<AxialBearing> {
+    let kc = s.axial.map_or([None, None], |a| a.bearings);
+    bodies
+        .into_iter()
+        .zip(kc)
+        .filter_map(|(body, kc)| {
+            kc.map(|(k, c)| AxialBearing {
+                body,
+                stiffness_n_per_m: k,
+                damping_n_s_per_m: c,
+            })
+        })
+        .collect()
 }
