@@ -50,7 +50,10 @@ fn a_one_stage_helical_train_is_the_helical_pair_bit_for_bit() {
         let (ma, mb) = (&ra.signals.meshes[0], &rb.signals.meshes[0]);
         assert_eq!(ma.dte_m, mb.dte_m);
         assert_eq!(ma.mesh_force_n, mb.mesh_force_n);
-        assert_eq!(ra.meshes[0].mean_mesh_force_n, rb.meshes[0].mean_mesh_force_n);
+        assert_eq!(
+            ra.meshes[0].mean_mesh_force_n,
+            rb.meshes[0].mean_mesh_force_n
+        );
     }
 }
 
@@ -99,7 +102,14 @@ fn a_two_stage_train_with_a_helical_stage_assembles_the_matrices_written_by_hand
     let n = 16;
     assert_eq!(asm.len(), n);
     let mut mass = vec![0.6, 0.6, 1.5, 1.5, 0.9, 0.9, 3.1, 3.1];
-    mass.extend([d.inertia_motor_kg_m2, 2e-4, 1.2e-3, 4e-4, 6e-3, d.inertia_brake_kg_m2]);
+    mass.extend([
+        d.inertia_motor_kg_m2,
+        2e-4,
+        1.2e-3,
+        4e-4,
+        6e-3,
+        d.inertia_brake_kg_m2,
+    ]);
     mass.extend([0.9, 3.1]);
     let inv: Vec<f64> = mass.iter().map(|x| 1.0 / x).collect();
     assert_eq!(asm.inverse_masses(), &inv[..]);
@@ -300,7 +310,11 @@ fn studies_without_helical_stages_refuse_by_key() {
     for study in ["wear", "run"] {
         rejected(
             &[study, "--config", &file],
-            &["`stage.helix_angle_deg` = 15 (stage 2)", "helical stage", study],
+            &[
+                "`stage.helix_angle_deg` = 15 (stage 2)",
+                "helical stage",
+                study,
+            ],
         );
     }
     // The helix from [gear] for every stage: named as the [gear] key.
@@ -313,7 +327,10 @@ fn studies_without_helical_stages_refuse_by_key() {
     );
     // The library's own constructor, which every other study (dataset, calibrate,
     // predict, the wear sweeps, the spectra) builds on.
-    let e = Model::from_case(&case(TWO_STAGE)).err().unwrap().to_string();
+    let e = Model::from_case(&case(TWO_STAGE))
+        .err()
+        .unwrap()
+        .to_string();
     assert!(e.contains("`stage.helix_angle_deg` = 15 (stage 2)"), "{e}");
 }
 
@@ -339,7 +356,10 @@ fn bad_helical_stage_keys_name_the_key_the_value_and_the_range() {
         (
             "bearing_axial_stiffness_gear_n_per_m = 7e8",
             "bearing_axial_stiffness_gear_n_per_m = 10",
-            &["`stage.bearing_axial_stiffness_gear_n_per_m` = 10", "stage 2"][..],
+            &[
+                "`stage.bearing_axial_stiffness_gear_n_per_m` = 10",
+                "stage 2",
+            ][..],
         ),
     ] {
         let text = TWO_STAGE.replace(from, to);
@@ -349,7 +369,10 @@ fn bad_helical_stage_keys_name_the_key_the_value_and_the_range() {
     }
     // The lead keys need a gap per face slice, which a train's stage does not carry (the
     // stages' domain checks refuse them, a helical stage's too).
-    let lead = TWO_STAGE.replace("load_torque_nm = 60", "load_torque_nm = 60\nmisalignment_um = 5");
+    let lead = TWO_STAGE.replace(
+        "load_torque_nm = 60",
+        "load_torque_nm = 60\nmisalignment_um = 5",
+    );
     let file = case_file(&dir, &lead);
     rejected(
         &["dynamics", "--config", &file],

@@ -20,7 +20,12 @@ use serde_json::{json, Value};
 pub fn train_stiffness_artifacts(train: &Model, stages: &[Model]) -> Artifacts {
     let parts = stages
         .iter()
-        .map(|m| (stiffness_artifacts(m), [m.pair.pinion.teeth, m.pair.gear.teeth]))
+        .map(|m| {
+            (
+                stiffness_artifacts(m),
+                [m.pair.pinion.teeth, m.pair.gear.teeth],
+            )
+        })
         .collect();
     train_artifacts_of(train, parts)
 }
@@ -39,7 +44,10 @@ pub fn train_stiffness_artifacts_of(train: &Model, stages: &[StageStiffness]) ->
             ),
             StageStiffness::Helical(h) => {
                 let t = &h.pair().transverse;
-                (helical_stiffness_artifacts(h), [t.pinion.teeth, t.gear.teeth])
+                (
+                    helical_stiffness_artifacts(h),
+                    [t.pinion.teeth, t.gear.teeth],
+                )
             }
         })
         .collect();
@@ -71,7 +79,10 @@ fn train_artifacts_of(train: &Model, stages: Vec<(Artifacts, [usize; 2])>) -> Ar
             o.extend(s.into_iter().filter(|(key, _)| key != "warnings"));
         }
         meshes.push(v);
-        lines.push(format!("stage {n} ({}/{}): {}", teeth[0], teeth[1], a.headline));
+        lines.push(format!(
+            "stage {n} ({}/{}): {}",
+            teeth[0], teeth[1], a.headline
+        ));
     }
     out.summary = json!({
         "meshes": meshes,

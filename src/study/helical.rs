@@ -227,10 +227,7 @@ pub struct LeadDynamics {
 /// d delta / d z_p = -s tan(beta_b) ([`pinion_axial_sign`]; m/m) and each body's axial
 /// bearing from `[dynamics]` (`DynamicsSection::axial_bearings`); None where the case gives
 /// neither axial stiffness (rigid axial bearings: the planar model).
-pub(crate) fn axial_support(
-    case: &Case,
-    pair: &HelicalPair,
-) -> Option<AxialSupport> {
+pub(crate) fn axial_support(case: &Case, pair: &HelicalPair) -> Option<AxialSupport> {
     let bearings = case.dynamics.axial_bearings();
     bearings.iter().any(Option::is_some).then(|| AxialSupport {
         axial_gradient: -pinion_axial_sign(pair.hand_pinion) * pair.base_helix_angle_rad.tan(),

@@ -22,7 +22,9 @@
 
 use super::domain::{body_value_warnings, domain_problems};
 use super::face_load::{face_load, lead_keys};
-use super::helical::{axial_support, contact_ratio_problem, HelicalDynamics, HelicalModel, LeadDynamics};
+use super::helical::{
+    axial_support, contact_ratio_problem, HelicalDynamics, HelicalModel, LeadDynamics,
+};
 use super::model::{pitch_line_velocity_warning, Model, ModelError};
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
 use crate::contact::friction::Friction;

@@ -163,9 +163,11 @@ pub const HELICAL_TRAIN_STUDIES: &str = "`gearwear stiffness`, `gearwear dynamic
 /// `gear.helix_angle_deg` where the stage takes the case's) and its value; None for a
 /// single pair or an all-spur train.
 pub fn helical_train_refusal(case: &Case) -> Option<String> {
-    let (k, spec) = case.stage.iter().enumerate().find(|(_, s)| {
-        s.helix_angle_deg.unwrap_or(case.gear.helix_angle_deg) != 0.0
-    })?;
+    let (k, spec) = case
+        .stage
+        .iter()
+        .enumerate()
+        .find(|(_, s)| s.helix_angle_deg.unwrap_or(case.gear.helix_angle_deg) != 0.0)?;
     let key = match spec.helix_angle_deg {
         Some(v) => format!("`stage.helix_angle_deg` = {v} (stage {})", k + 1),
         None => format!(

@@ -2,6 +2,7 @@
 //! pair, mesh stiffness and wear grid, the assembly of the whole train and its operating
 //! point, built once.
 
+use super::helical::{helix_of, HelicalDynamics};
 use super::model_error::ModelError;
 use crate::config::case::{Case, DynamicsSection, GearSection, SpeedBoundary, TorqueShaft};
 use crate::config::train::StageSpec;
@@ -16,7 +17,6 @@ use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{AxialSupport, MeshPoint, TrainOperatingPoint};
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
-use super::helical::{helix_of, HelicalDynamics};
 use crate::geometry::helical::HelicalPair;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
@@ -363,7 +363,12 @@ fn build_stage(
     )
     .map_err(|e| e.0)?;
     let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
-    let mut warnings: Vec<String> = pair.warnings.iter().chain(mesh.warnings()).cloned().collect();
+    let mut warnings: Vec<String> = pair
+        .warnings
+        .iter()
+        .chain(mesh.warnings())
+        .cloned()
+        .collect();
     warnings.extend(super::domain::axial_key_warnings(&sc));
     Ok(Stage {
         case: sc,

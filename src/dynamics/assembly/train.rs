@@ -3,8 +3,8 @@
 //! load; the motor and load coupled as in the single pair (`single_pair`), which is the
 //! one-stage case with the same bodies, numbering and matrices.
 
-use super::elements::{Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
 use super::elements::AxialBearing;
+use super::elements::{Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
 use crate::config::case::DynamicsSection;
 use crate::dynamics::params::AxialSupport;
 
