@@ -53,7 +53,7 @@ fn refusals(case: &Case) -> Vec<String> {
         r.push(refusal(
             "[[stage]]",
             "a gear train",
-            "helical trains are not built",
+            "a train's helical stages are built as part of the train (`Model::dynamics_from_case`, docs/MODEL.md 4.3), not by the single pair's model",
         ));
     }
     if case.planetary.is_some() {
