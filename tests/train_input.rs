@@ -136,33 +136,26 @@ fn a_sweep_that_changes_the_number_of_stages_is_refused() {
 }
 
 #[test]
-fn a_helical_angle_on_a_train_says_the_stages_are_spur() {
-    // `[gear]` is stage 1 of a train: a helix angle there has no train model yet, and the
-    // message must not send the user to the studies that take a helical pair alone.
+fn a_helical_angle_on_a_train_is_refused_by_the_studies_on_its_wear_loop() {
+    // `[gear]` is stage 1 of a train: a helix angle there makes every stage that does not
+    // give its own helical (docs/MODEL.md 4.3). `gearwear dynamics` and `stiffness` take it
+    // (tests/helical_train.rs); the studies on the train's wear loop refuse it by the key
+    // the stage takes, and must not send the user to the studies of a helical pair alone.
     let dir = tempfile::tempdir().unwrap();
     let file = case_file(
         &dir,
         &format!("[gear]\nhelix_angle_deg = 10\n\n[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
     );
-    for study in ["stiffness", "wear"] {
+    for study in ["wear", "run"] {
         rejected(
             &[study, "--config", &file],
             &[
-                "`gear.helix_angle_deg` = 10",
+                "`gear.helix_angle_deg` = 10 (stage 1's, from `[gear]`)",
                 "gear train",
-                "spur pairs so far",
+                "spur stages only so far",
             ],
         );
     }
-    // `gearwear dynamics` reaches the helical pair's model first, which names the train.
-    rejected(
-        &["dynamics", "--config", &file],
-        &[
-            "`[[stage]]`",
-            "helical pair",
-            "helical trains are not built",
-        ],
-    );
 }
 
 #[test]

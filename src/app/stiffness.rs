@@ -3,7 +3,7 @@
 //! each stage's.
 
 use super::observer::Observer;
-use super::{budget, build_model, build_train_model, publish, Job, JobError, Outcome};
+use super::{budget, build_model, publish, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::report::artifacts::Artifacts;
 use crate::report::face_load::add_face_load_artifacts;
@@ -12,13 +12,13 @@ use crate::report::figure_output::FigureRequest;
 use crate::report::stiffness::stiffness_artifacts;
 use crate::report::stiffness_helical::helical_stiffness_artifacts;
 use crate::report::stiffness_planetary::planetary_stiffness_artifacts;
-use crate::report::stiffness_train::train_stiffness_artifacts;
+use crate::report::stiffness_train::train_stiffness_artifacts_of;
 use crate::store::RunMetadata;
 use crate::study::budget::{Budget, Job as Cost};
 use crate::study::face_load::{face_load, lead_keys, CaseFaceLoad};
 use crate::study::helical::HelicalModel;
 use crate::study::planetary::PlanetaryStudy;
-use crate::study::train_stages::stage_models;
+use crate::study::train_stages::stage_stiffness_models;
 use std::path::PathBuf;
 
 /// See the module docs.
@@ -74,11 +74,12 @@ impl StiffnessJob {
         figures: FigureOutput,
         observer: &dyn Observer,
     ) -> Result<Outcome, JobError> {
-        let model = build_train_model(&self.case, observer)?;
-        let stages = stage_models(&model)?;
+        // Its helical stages on their slice models (docs/MODEL.md 4.3).
+        let model = super::build_dynamics_model(&self.case, observer)?;
+        let stages = stage_stiffness_models(&model)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
-        let artifacts = train_stiffness_artifacts(&model, &stages).with_figure_output(figures);
+        let artifacts = train_stiffness_artifacts_of(&model, &stages).with_figure_output(figures);
         publish::publish(out, artifacts, Some(&meta), observer)
     }
 

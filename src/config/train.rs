@@ -11,7 +11,7 @@
 //! is the single pair of `[gear]`, a one-stage train.
 
 use super::derivable::Derivable;
-use super::gear::GearSection;
+use super::gear::{GearSection, HelixHand};
 use super::lumped::DynamicsSection;
 use serde::{Deserialize, Serialize};
 
@@ -96,6 +96,28 @@ pub struct StageSpec {
     /// every centre on one line).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub centre_line_deg: Option<f64>,
+    /// Helix angle of the stage's pair, deg (absent: `gear.helix_angle_deg`; 0: spur).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub helix_angle_deg: Option<f64>,
+    /// Hand of the stage's pinion (absent: `gear.helix_hand_pinion`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub helix_hand_pinion: Option<HelixHand>,
+    /// Slices across the stage's face (absent: `stiffness.slices`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slices: Option<i64>,
+    /// Axial bearing stiffness of the stage's pinion, N/m (absent:
+    /// `dynamics.bearing_axial_stiffness_pinion_n_per_m`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_stiffness_pinion_n_per_m: Option<f64>,
+    /// Axial bearing stiffness of the stage's gear, N/m (absent: `dynamics`').
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_stiffness_gear_n_per_m: Option<f64>,
+    /// Axial bearing damping of the stage's pinion, N s/m (absent: `dynamics`').
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_damping_pinion_n_s_per_m: Option<f64>,
+    /// Axial bearing damping of the stage's gear, N s/m (absent: `dynamics`').
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_axial_damping_gear_n_s_per_m: Option<f64>,
 }
 
 /// Largest number of stages (each is a mesh: `dynamics::model::MAX_MESHES`).
@@ -130,10 +152,8 @@ impl StageSpec {
             tool_tip_radius_coefficient: self
                 .tool_tip_radius_coefficient
                 .unwrap_or(base.tool_tip_radius_coefficient),
-            // A stage has no helix key: it is the case's (a helical case is refused by
-            // every study of the dynamics, trains included).
-            helix_angle_deg: base.helix_angle_deg,
-            helix_hand_pinion: base.helix_hand_pinion,
+            helix_angle_deg: self.helix_angle_deg.unwrap_or(base.helix_angle_deg),
+            helix_hand_pinion: self.helix_hand_pinion.unwrap_or(base.helix_hand_pinion),
         }
     }
 
@@ -160,12 +180,29 @@ impl StageSpec {
                 .bearing_damping_gear_n_s_per_m
                 .unwrap_or(base.bearing_damping_gear_n_s_per_m),
             mesh_damping_ratio: self.mesh_damping_ratio.unwrap_or(base.mesh_damping_ratio),
+            bearing_axial_stiffness_pinion_n_per_m: self
+                .bearing_axial_stiffness_pinion_n_per_m
+                .or(base.bearing_axial_stiffness_pinion_n_per_m),
+            bearing_axial_stiffness_gear_n_per_m: self
+                .bearing_axial_stiffness_gear_n_per_m
+                .or(base.bearing_axial_stiffness_gear_n_per_m),
+            bearing_axial_damping_pinion_n_s_per_m: self
+                .bearing_axial_damping_pinion_n_s_per_m
+                .or(base.bearing_axial_damping_pinion_n_s_per_m),
+            bearing_axial_damping_gear_n_s_per_m: self
+                .bearing_axial_damping_gear_n_s_per_m
+                .or(base.bearing_axial_damping_gear_n_s_per_m),
             ..base.clone()
         }
     }
 }
 
 impl StageSpec {
+    /// The stage's slice count: `stage.slices`, else `stiffness.slices` (`base`).
+    pub fn slices(&self, base: i64) -> i64 {
+        self.slices.unwrap_or(base)
+    }
+
     /// A message about the stage's single-pair case with each key the stage gives named as
     /// the stage's (`gear.module_mm` -> `stage.module_mm`): the key to change is the one
     /// the user wrote; keys the stage takes from `[gear]` or `[dynamics]` keep their names.
@@ -175,7 +212,7 @@ impl StageSpec {
         };
         let mut out = message.to_string();
         for key in given.keys() {
-            for section in ["gear", "dynamics"] {
+            for section in ["gear", "dynamics", "stiffness"] {
                 out = out.replace(&format!("`{section}.{key}`"), &format!("`stage.{key}`"));
             }
         }

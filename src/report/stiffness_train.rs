@@ -10,18 +10,58 @@
 
 use super::artifacts::Artifacts;
 use super::stiffness::stiffness_artifacts;
+use super::stiffness_helical::helical_stiffness_artifacts;
+use crate::study::train_stages::StageStiffness;
 use crate::study::Model;
 use serde_json::{json, Value};
 
 /// The artifacts of the train `train` from its stages' single-pair models `stages`
-/// (`study::train_stages::stage_models`).
+/// (`study::train_stages::stage_models`, spur stages).
 pub fn train_stiffness_artifacts(train: &Model, stages: &[Model]) -> Artifacts {
+    let parts = stages
+        .iter()
+        .map(|m| {
+            (
+                stiffness_artifacts(m),
+                [m.pair.pinion.teeth, m.pair.gear.teeth],
+            )
+        })
+        .collect();
+    train_artifacts_of(train, parts)
+}
+
+/// As [`train_stiffness_artifacts`] from every stage's stiffness study
+/// (`study::train_stages::stage_stiffness_models`): a helical stage's is the helical
+/// pair's (`report::stiffness_helical`: the slice model, its `helical` block and ISO
+/// 6336-1's helical values).
+pub fn train_stiffness_artifacts_of(train: &Model, stages: &[StageStiffness]) -> Artifacts {
+    let parts = stages
+        .iter()
+        .map(|stage| match stage {
+            StageStiffness::Spur(m) => (
+                stiffness_artifacts(m),
+                [m.pair.pinion.teeth, m.pair.gear.teeth],
+            ),
+            StageStiffness::Helical(h) => {
+                let t = &h.pair().transverse;
+                (
+                    helical_stiffness_artifacts(h),
+                    [t.pinion.teeth, t.gear.teeth],
+                )
+            }
+        })
+        .collect();
+    train_artifacts_of(train, parts)
+}
+
+/// The train's files and summary from each stage's artifacts and teeth (stage order).
+fn train_artifacts_of(train: &Model, stages: Vec<(Artifacts, [usize; 2])>) -> Artifacts {
     let mut out = Artifacts::default();
     let mut meshes = Vec::with_capacity(stages.len());
     let mut lines = Vec::with_capacity(stages.len());
-    for (k, stage) in stages.iter().enumerate() {
+    let count = stages.len();
+    for (k, (a, teeth)) in stages.into_iter().enumerate() {
         let n = k + 1;
-        let a = stiffness_artifacts(stage);
         let rename = |p: &str| p.replace("mesh_stiffness.", &format!("mesh_stiffness_stage{n}."));
         for (path, t) in a.tables {
             out.tables.push((rename(&path), t));
@@ -33,7 +73,7 @@ pub fn train_stiffness_artifacts(train: &Model, stages: &[Model]) -> Artifacts {
         }
         let mut v = json!({
             "stage": n,
-            "teeth": [stage.pair.pinion.teeth, stage.pair.gear.teeth],
+            "teeth": teeth,
         });
         if let (Some(o), Value::Object(s)) = (v.as_object_mut(), a.summary) {
             o.extend(s.into_iter().filter(|(key, _)| key != "warnings"));
@@ -41,12 +81,12 @@ pub fn train_stiffness_artifacts(train: &Model, stages: &[Model]) -> Artifacts {
         meshes.push(v);
         lines.push(format!(
             "stage {n} ({}/{}): {}",
-            stage.pair.pinion.teeth, stage.pair.gear.teeth, a.headline
+            teeth[0], teeth[1], a.headline
         ));
     }
     out.summary = json!({
         "meshes": meshes,
-        "train": {"stages": stages.len()},
+        "train": {"stages": count},
         "warnings": train.warnings,
     });
     out.headline = lines.join("\n");

@@ -8,6 +8,7 @@
 use super::model_error::ModelError;
 use crate::config::case::{Case, GearSection, HelixHand};
 use crate::dynamics::excitation::PairGap;
+use crate::dynamics::params::AxialSupport;
 use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
 use crate::geometry::ProfileGrid;
 use crate::stiffness::face_load::{FaceLoad, LeadGap};
@@ -221,3 +222,32 @@ pub struct LeadDynamics {
     /// The gap across the face it was solved with.
     pub gap: LeadGap,
 }
+
+/// The axial degrees of freedom of a helical case (docs/MODEL.md 11.6): the mesh's
+/// d delta / d z_p = -s tan(beta_b) ([`pinion_axial_sign`]; m/m) and each body's axial
+/// bearing from `[dynamics]` (`DynamicsSection::axial_bearings`); None where the case gives
+/// neither axial stiffness (rigid axial bearings: the planar model).
+pub(crate) fn axial_support(case: &Case, pair: &HelicalPair) -> Option<AxialSupport> {
+    let bearings = case.dynamics.axial_bearings();
+    bearings.iter().any(Option::is_some).then(|| AxialSupport {
+        axial_gradient: -pinion_axial_sign(pair.hand_pinion) * pair.base_helix_angle_rad.tan(),
+        bearings,
+    })
+}
+
+/// The refusal of a helical pair whose total contact ratio epsilon_gamma exceeds the
+/// contact lines the dynamic mesh follows (`MAX_PAIRS`), naming `case`'s keys; None
+/// within (0, `MAX_PAIRS`].
+pub(crate) fn contact_ratio_problem(case: &Case, hp: &HelicalPair) -> Option<String> {
+    use crate::dynamics::model::MAX_PAIRS;
+    let eps = hp.total_contact_ratio;
+    (eps.ceil() as usize > MAX_PAIRS).then(|| format!(
+        "`gear.helix_angle_deg` = {} with `gear.face_width_mm` = {} gives a total contact ratio epsilon_gamma = {eps:.3} (epsilon_alpha {:.3} + epsilon_beta {:.3}): `gearwear dynamics` follows at most {MAX_PAIRS} contact lines, so epsilon_gamma must lie in (0, {MAX_PAIRS}]; reduce the helix angle or the face width",
+        case.gear.helix_angle_deg, case.gear.face_width_mm, hp.transverse_contact_ratio, hp.overlap_ratio
+    ))
+}
+
+/// The default `contact.path` = "extended" on a helical pair: its tip corners are not
+/// modelled (a helical tooth's corner meets the mate along a line across the face, one
+/// slice at a time), so the lines are followed on the nominal path.
+pub const EXTENDED_PATH_WARNING: &str = "`contact.path` = \"extended\": the tip corners of a helical tooth are not modelled, so its contact lines are followed on the nominal path of contact (as `contact.path` = \"nominal\")";

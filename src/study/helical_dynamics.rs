@@ -22,24 +22,23 @@
 
 use super::domain::{body_value_warnings, domain_problems};
 use super::face_load::{face_load, lead_keys};
-use super::helical::{pinion_axial_sign, HelicalDynamics, HelicalModel, LeadDynamics};
+use super::helical::{
+    axial_support, contact_ratio_problem, HelicalDynamics, HelicalModel, LeadDynamics,
+};
 use super::model::{pitch_line_velocity_warning, Model, ModelError};
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
 use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::model::MAX_PAIRS;
-use crate::dynamics::params::{AxialSupport, DynamicParams};
+use crate::dynamics::params::DynamicParams;
 use crate::dynamics::period_search::SteadyStateSettings;
 use crate::geometry::ProfileGrid;
 use crate::stiffness::helical_lead::LineGapTable;
 use crate::stiffness::potential_energy::ElasticPair;
 use crate::wear::RoughnessLaw;
 
-/// The default `contact.path` = "extended" on a helical pair: its tip corners are not
-/// modelled (a helical tooth's corner meets the mate along a line across the face, one
-/// slice at a time), so the lines are followed on the nominal path.
-pub const EXTENDED_PATH_WARNING: &str = "`contact.path` = \"extended\": the tip corners of a helical tooth are not modelled, so its contact lines are followed on the nominal path of contact (as `contact.path` = \"nominal\")";
+pub use super::helical::EXTENDED_PATH_WARNING;
 
 /// A key of a helical case that the planar dynamics cannot take, and why.
 fn refusal(key: &str, value: &str, why: &str) -> String {
@@ -54,7 +53,7 @@ fn refusals(case: &Case) -> Vec<String> {
         r.push(refusal(
             "[[stage]]",
             "a gear train",
-            "helical trains are not built",
+            "a train's helical stages are built as part of the train (`Model::dynamics_from_case`, docs/MODEL.md 4.3), not by the single pair's model",
         ));
     }
     if case.planetary.is_some() {
@@ -121,28 +120,17 @@ fn lead_gaps(
     }))
 }
 
-/// The axial degrees of freedom of a helical case (docs/MODEL.md 11.6): the mesh's
-/// d delta / d z_p = -s tan(beta_b) ([`pinion_axial_sign`]; m/m) and each body's axial
-/// bearing from `[dynamics]` (`DynamicsSection::axial_bearings`); None where the case gives
-/// neither axial stiffness (rigid axial bearings: the planar model).
-fn axial_support(
-    case: &Case,
-    pair: &crate::geometry::helical::HelicalPair,
-) -> Option<AxialSupport> {
-    let bearings = case.dynamics.axial_bearings();
-    bearings.iter().any(Option::is_some).then(|| AxialSupport {
-        axial_gradient: -pinion_axial_sign(pair.hand_pinion) * pair.base_helix_angle_rad.tan(),
-        bearings,
-    })
-}
-
 impl Model {
     /// The model of the studies that take a helical pair through the spur pair's solver
     /// (`gearwear dynamics`, `signals`, `wear`, `sweep`): the planar model
     /// ([`Model::helical_from_case`]) where the case has a helix angle, else
-    /// [`Model::from_case`] itself (so a spur case is built exactly as before).
+    /// [`Model::from_case`] itself (so a spur case is built exactly as before); a gear
+    /// train with its helical stages on their slice models (docs/MODEL.md 4.3).
     pub fn dynamics_from_case(case: &Case) -> Result<Model, ModelError> {
-        if case.gear.helix_angle_deg == 0.0 {
+        if !case.stage.is_empty() {
+            // A train, its helical stages on their slice models (docs/MODEL.md 4.3).
+            Model::spur_or_train(case)
+        } else if case.gear.helix_angle_deg == 0.0 {
             Model::from_case(case)
         } else {
             Model::helical_from_case(case)
@@ -158,12 +146,8 @@ impl Model {
         }
         let hm = HelicalModel::from_case(case)?;
         let hp = hm.pair().clone();
-        let eps = hp.total_contact_ratio;
-        if eps.ceil() as usize > MAX_PAIRS {
-            return Err(ModelError(vec![format!(
-                "`gear.helix_angle_deg` = {} with `gear.face_width_mm` = {} gives a total contact ratio epsilon_gamma = {eps:.3} (epsilon_alpha {:.3} + epsilon_beta {:.3}): `gearwear dynamics` follows at most {MAX_PAIRS} contact lines, so epsilon_gamma must lie in (0, {MAX_PAIRS}]; reduce the helix angle or the face width",
-                case.gear.helix_angle_deg, case.gear.face_width_mm, hp.transverse_contact_ratio, hp.overlap_ratio
-            )]));
+        if let Some(p) = contact_ratio_problem(case, &hp) {
+            return Err(ModelError(vec![p]));
         }
         let transverse = hp.transverse.clone();
         let problems = domain_problems(&without_lead_keys(case), &transverse);

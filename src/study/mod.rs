@@ -26,6 +26,7 @@ pub mod signal_record;
 pub mod sweep;
 pub mod teeth;
 pub mod train;
+pub mod train_helical;
 pub mod train_stages;
 pub mod train_wear;
 pub mod train_wear_check;

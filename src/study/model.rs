@@ -147,15 +147,38 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 /// of freedom yet. Every study built on this constructor (datasets, calibration,
 /// prognostics) refuses it rather than give a spur result; `dynamics`, `signals`, `wear`,
 /// `run` and `sweep` build the planar model (`Model::dynamics_from_case`).
-fn helical_refusal(helix_angle_deg: f64, is_train: bool) -> String {
-    if is_train {
-        return format!(
-            "`gear.helix_angle_deg` = {helix_angle_deg} on a gear train ([[stage]] tables): the stages of a train are spur pairs so far; a helical pair runs alone (without [[stage]]) in `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` (set the angle to 0 for a spur train)"
-        );
-    }
+fn helical_refusal(helix_angle_deg: f64) -> String {
     format!(
         "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run` and the sweeps of dynamics and wear, at one operating point or under a `[load_spectrum]` (`gearwear wear`, `gearwear run` and wear sweeps), with axial motion where the axial bearing keys are given; tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
     )
+}
+
+/// The studies that take a train with helical stages (docs/MODEL.md 4.3).
+pub const HELICAL_TRAIN_STUDIES: &str = "`gearwear stiffness`, `gearwear dynamics`, `gearwear signals` (its steady record) and `gearwear sweep` of dynamics";
+
+/// Why a study on [`Model::from_case`] refuses a gear train with a helical stage: `wear`,
+/// `run`, `dataset`, `calibrate`, `predict`, the wear sweeps and the load spectra of a
+/// train have no wear per face slice (docs/MODEL.md 4.3), so they would give a spur
+/// result. Names the first helical stage's key (`stage.helix_angle_deg`, or
+/// `gear.helix_angle_deg` where the stage takes the case's) and its value; None for a
+/// single pair or an all-spur train.
+pub fn helical_train_refusal(case: &Case) -> Option<String> {
+    let (k, spec) = case
+        .stage
+        .iter()
+        .enumerate()
+        .find(|(_, s)| s.helix_angle_deg.unwrap_or(case.gear.helix_angle_deg) != 0.0)?;
+    let key = match spec.helix_angle_deg {
+        Some(v) => format!("`stage.helix_angle_deg` = {v} (stage {})", k + 1),
+        None => format!(
+            "`gear.helix_angle_deg` = {} (stage {}'s, from `[gear]`)",
+            case.gear.helix_angle_deg,
+            k + 1
+        ),
+    };
+    Some(format!(
+        "{key} is a helical stage of a gear train ([[stage]] tables): `gearwear wear`, `gearwear run`, `gearwear dataset`, `gearwear calibrate`, `gearwear predict`, the wear sweeps and a `[load_spectrum]` take spur stages only so far (a train has no wear per face slice, docs/MODEL.md 4.3), so they would give a spur result; a train with helical stages runs in {HELICAL_TRAIN_STUDIES} (set the stage's helix angle to 0 for a spur stage)"
+    ))
 }
 
 /// Why a planetary case cannot be modelled here: the pair and train model is not the
@@ -170,11 +193,17 @@ impl Model {
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
     /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
-        if case.gear.helix_angle_deg != 0.0 {
-            return Err(ModelError(vec![helical_refusal(
-                case.gear.helix_angle_deg,
-                !case.stage.is_empty(),
-            )]));
+        if let Some(p) = helical_train_refusal(case) {
+            return Err(ModelError(vec![p]));
+        }
+        Self::spur_or_train(case)
+    }
+
+    /// [`Model::from_case`] with a train's helical stages taken (`gearwear dynamics`,
+    /// `signals`, `stiffness`, the dynamics sweeps: `Model::dynamics_from_case`).
+    pub(crate) fn spur_or_train(case: &Case) -> Result<Self, ModelError> {
+        if case.stage.is_empty() && case.gear.helix_angle_deg != 0.0 {
+            return Err(ModelError(vec![helical_refusal(case.gear.helix_angle_deg)]));
         }
         if case.planetary.is_some() {
             return Err(ModelError(vec![planetary_refusal()]));
@@ -268,10 +297,10 @@ impl Model {
         let elastic = ElasticPair::from_case(&case.materials);
         let train = super::train::TrainModel::from_case(case, &elastic)?;
         let first = &train.stages[0];
-        let mut warnings: Vec<String> = axial_key_warnings(case);
+        let mut warnings = Vec::new();
         for (k, s) in train.stages.iter().enumerate() {
-            let stage_warnings = s.pair.warnings.iter().chain(s.mesh.warnings());
-            warnings.extend(stage_warnings.map(|w| format!("stage {}: {w}", k + 1)));
+            let named = s.warnings.iter().map(|w| case.stage[k].name_own_keys(w));
+            warnings.extend(named.map(|w| format!("stage {}: {w}", k + 1)));
         }
         let p = &train.operating.meshes[0];
         let params = DynamicParams {

@@ -2,8 +2,9 @@
 //! pair, mesh stiffness and wear grid, the assembly of the whole train and its operating
 //! point, built once.
 
+use super::helical::{helix_of, HelicalDynamics};
 use super::model_error::ModelError;
-use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
+use crate::config::case::{Case, DynamicsSection, GearSection, SpeedBoundary, TorqueShaft};
 use crate::config::train::StageSpec;
 use crate::contact::friction::Friction;
 use crate::dynamics::assembly::elements::{Drive, Elements};
@@ -13,9 +14,10 @@ use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
-use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
+use crate::dynamics::params::{AxialSupport, MeshPoint, TrainOperatingPoint};
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
+use crate::geometry::helical::HelicalPair;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
@@ -34,8 +36,17 @@ pub struct Stage {
     pub grid: ProfileGrid,
     /// The stage's masses and inertias (with `"derived"` resolved) and bearings.
     pub lumped: DynamicsSection<f64>,
-    /// Where its pairs touch (`contact.path`).
+    /// Where its pairs touch (`contact.path`; a helical stage: its contact lines).
     pub contact: ContactPath,
+    /// A helical stage's pair and slice model (`stage.helix_angle_deg` > 0,
+    /// `study::train_helical`); None: a spur stage. Its `pair` and `mesh` above are then
+    /// the contact lines' (as `Model::helical_from_case` builds them).
+    pub helical: Option<HelicalDynamics>,
+    /// A helical stage's axial bearings and mesh axial gradient (docs/MODEL.md 4.3, 11.6);
+    /// None: rigid axial bearings (and every spur stage).
+    pub axial: Option<AxialSupport>,
+    /// The stage's warnings (its geometry's, its stiffness's, its keys').
+    pub warnings: Vec<String>,
 }
 
 /// A train's model objects (see the module docs).
@@ -60,6 +71,7 @@ pub fn stage_case(case: &Case, spec: &StageSpec, point: Option<&MeshPoint>) -> C
     let mut c = case.clone();
     c.gear = spec.gear_section(&case.gear);
     c.dynamics = spec.dynamics_section(&case.dynamics);
+    c.stiffness.slices = spec.slices(case.stiffness.slices);
     c.stage = Vec::new();
     if let Some(p) = point {
         c.operating.input_speed_hz = p.pinion_speed_rad_s / (2.0 * std::f64::consts::PI);
@@ -76,10 +88,9 @@ impl TrainModel {
         let mut problems = Vec::new();
         let mut pairs = Vec::new();
         for (k, spec) in case.stage.iter().enumerate() {
-            let gear = spec.gear_section(&case.gear);
-            match GearPair::from_case(&gear) {
+            match stage_pair(&spec.gear_section(&case.gear)) {
                 Ok(p) => pairs.push(p),
-                Err(e) => problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
+                Err(e) => problems.extend(e.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
             }
         }
         if !problems.is_empty() {
@@ -89,42 +100,10 @@ impl TrainModel {
         let operating = TrainOperatingPoint::of(&case.operating, &refs);
         let mut stages = Vec::new();
         for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
-            let sc = stage_case(case, spec, Some(&operating.meshes[k]));
-            let torque = format!(
-                "its pinion's torque, {} N m from `operating.load_torque_nm` = {} through the ratios,",
-                crate::format::shown(operating.meshes[k].pinion_torque_nm),
-                crate::format::shown(case.operating.load_torque_nm)
-            );
-            problems.extend(
-                super::domain::domain_problems_naming(&sc, &pair, &torque)
-                    .iter()
-                    .map(|m| at_stage(k, spec.name_own_keys(m))),
-            );
-            let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-            let mesh = match MeshStiffness::with_fillet(
-                &pair,
-                elastic,
-                n_table,
-                FilletSettings::for_pair(&sc.stiffness, &sc.gear),
-            ) {
-                Ok(m) => m,
-                Err(e) => {
-                    problems.extend(e.0.iter().map(|m| at_stage(k, spec.name_own_keys(m))));
-                    continue;
-                }
-            };
-            let d = &sc.dynamics;
-            let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
-            let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
-            let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
-            stages.push(Stage {
-                case: sc,
-                pair,
-                mesh,
-                grid,
-                lumped,
-                contact,
-            });
+            match build_stage(case, spec, pair, &operating.meshes[k], elastic) {
+                Ok(s) => stages.push(s),
+                Err(e) => problems.extend(e.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
+            }
         }
         if !problems.is_empty() {
             return Err(ModelError(problems));
@@ -248,7 +227,8 @@ impl TrainModel {
                     viscosity_cp: case.lubricant.viscosity_cp,
                     gap: gaps[k],
                     external: externals[k],
-                    load_sharing: case.contact.load_sharing,
+                    // A helical stage's own ("stiffness", `study::train_helical`).
+                    load_sharing: s.case.contact.load_sharing,
                     roughness_um: roughness_um[k],
                     effective_modulus_pa,
                     teeth: None,
@@ -320,6 +300,85 @@ fn stage_elements(case: &Case, stages: &[Stage]) -> Vec<StageElements> {
             shaft: spec
                 .shaft_torsional_stiffness_nm_per_rad
                 .map(|k| (k, spec.shaft_torsional_damping_nm_s_per_rad.unwrap_or(0.0))),
+            axial: s.axial,
         })
         .collect()
+}
+
+/// A stage's transverse pair: the spur pair of its `[gear]` keys, or a helical stage's
+/// transverse section (`HelicalPair`, its keys read as the normal section).
+fn stage_pair(gear: &GearSection) -> Result<GearPair, Vec<String>> {
+    if gear.helix_angle_deg == 0.0 {
+        GearPair::from_case(gear).map_err(|e| e.0)
+    } else {
+        HelicalPair::from_case(gear, &helix_of(gear))
+            .map(|h| h.transverse)
+            .map_err(|e| e.0)
+    }
+}
+
+/// One stage of the train of `case`: `spec` on its transverse pair `pair` at its mesh's
+/// operating point `point`; a spur stage by the spur pair's mesh stiffness, a helical one
+/// by its slice model (`study::train_helical`). Problems unnamed by stage.
+fn build_stage(
+    case: &Case,
+    spec: &StageSpec,
+    pair: GearPair,
+    point: &MeshPoint,
+    elastic: &ElasticPair,
+) -> Result<Stage, Vec<String>> {
+    let mut sc = stage_case(case, spec, Some(point));
+    let torque = format!(
+        "its pinion's torque, {} N m from `operating.load_torque_nm` = {} through the ratios,",
+        crate::format::shown(point.pinion_torque_nm),
+        crate::format::shown(case.operating.load_torque_nm)
+    );
+    let problems = super::domain::domain_problems_naming(&sc, &pair, &torque);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let d = &sc.dynamics;
+    let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
+    let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
+    if sc.gear.helix_angle_deg != 0.0 {
+        let h = super::train_helical::helical_stage(&mut sc)?;
+        return Ok(Stage {
+            case: sc,
+            pair: h.line_pair,
+            mesh: h.mesh,
+            grid,
+            lumped,
+            contact: h.contact,
+            helical: Some(h.helical),
+            axial: h.axial,
+            warnings: h.warnings,
+        });
+    }
+    let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
+    let mesh = MeshStiffness::with_fillet(
+        &pair,
+        elastic,
+        n_table,
+        FilletSettings::for_pair(&sc.stiffness, &sc.gear),
+    )
+    .map_err(|e| e.0)?;
+    let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
+    let mut warnings: Vec<String> = pair
+        .warnings
+        .iter()
+        .chain(mesh.warnings())
+        .cloned()
+        .collect();
+    warnings.extend(super::domain::axial_key_warnings(&sc));
+    Ok(Stage {
+        case: sc,
+        pair,
+        mesh,
+        grid,
+        lumped,
+        contact,
+        helical: None,
+        axial: None,
+        warnings,
+    })
 }

@@ -3,8 +3,10 @@
 //! load; the motor and load coupled as in the single pair (`single_pair`), which is the
 //! one-stage case with the same bodies, numbering and matrices.
 
+use super::elements::AxialBearing;
 use super::elements::{Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
 use crate::config::case::DynamicsSection;
+use crate::dynamics::params::AxialSupport;
 
 /// One stage as the assembly needs it.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,6 +25,10 @@ pub struct StageElements {
     /// Torsional stiffness (N m/rad) and damping (N m s/rad) of the shaft to the next
     /// stage's pinion (None on the last stage).
     pub shaft: Option<(f64, f64)>,
+    /// A helical stage's axial bearings and its mesh's d delta / d z_p (docs/MODEL.md
+    /// 11.6, 4.3): each body on an axial bearing carries its own axial coordinate; None:
+    /// rigid axial bearings (a spur stage, or a helical one without axial bearing keys).
+    pub axial: Option<AxialSupport>,
 }
 
 /// Body index of the motor; stage k's (0-based) pinion and gear are 1 + 2k and 2 + 2k;
@@ -67,6 +73,7 @@ impl Elements {
         let mut bearings = Vec::new();
         let mut shafts = Vec::new();
         let mut meshes = Vec::new();
+        let mut axial_bearings = Vec::new();
         let torsion = |ends, k, c| Shaft {
             ends,
             torsional_stiffness_nm_per_rad: k,
@@ -113,8 +120,9 @@ impl Elements {
                 base_radius_m: s.base_radius_m,
                 pressure_angle_rad: s.pressure_angle_rad,
                 centre_line_rad: s.centre_line_rad,
-                axial_gradient: 0.0,
+                axial_gradient: s.axial.map_or(0.0, |a| a.axial_gradient),
             });
+            axial_bearings.extend(stage_axial_bearings(s, [p, g]));
             if let Some((kt, ct)) = s.shaft.filter(|_| k + 1 < n) {
                 shafts.push(torsion([g, pinion_body(k + 1)], kt, ct));
             }
@@ -133,8 +141,25 @@ impl Elements {
             bearings,
             shafts,
             meshes,
-            axial_bearings: Vec::new(),
+            axial_bearings,
             drive,
         }
     }
+}
+
+/// A stage's axial bearings on its pinion and gear (`bodies`): each body on its own
+/// bearing to ground, two gears on one shaft not tied axially (docs/MODEL.md 4.3).
+fn stage_axial_bearings(s: &StageElements, bodies: [usize; 2]) -> Vec<AxialBearing> {
+    let kc = s.axial.map_or([None, None], |a| a.bearings);
+    bodies
+        .into_iter()
+        .zip(kc)
+        .filter_map(|(body, kc)| {
+            kc.map(|(k, c)| AxialBearing {
+                body,
+                stiffness_n_per_m: k,
+                damping_n_s_per_m: c,
+            })
+        })
+        .collect()
 }

@@ -443,7 +443,14 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     match run {
         SweepRun::Dynamics => run_dynamics_from(case, None).map(|(o, _)| o),
         SweepRun::Wear => {
-            let model = Model::dynamics_from_case(case).map_err(CaseError::Model)?;
+            // A train's wear takes spur stages only (`Model::from_case` refuses a
+            // helical stage, naming its key); a single helical pair wears per slice.
+            let build = if case.stage.is_empty() {
+                Model::dynamics_from_case
+            } else {
+                Model::from_case
+            };
+            let model = build(case).map_err(CaseError::Model)?;
             if let Some(train) = &model.train {
                 let results = run_train_wear_case(&model, train)?;
                 return Ok(CaseOutcome {
