@@ -6,11 +6,13 @@
 //! refuses a helical case; `Model::helical_from_case` builds the planar one.
 
 use super::model_error::ModelError;
-use crate::config::case::{Case, GearSection, HelixHand};
+use crate::config::case::{Case, ContactPathModel, GearSection, HelixHand};
+use crate::dynamics::contact_path::ContactPath;
 use crate::dynamics::excitation::PairGap;
+use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::params::AxialSupport;
 use crate::geometry::helical::{Hand, HelicalPair, HelixSpec};
-use crate::geometry::ProfileGrid;
+use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::face_load::{FaceLoad, LeadGap};
 use crate::stiffness::helical::SliceMeshStiffness;
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
@@ -221,6 +223,20 @@ pub struct LeadDynamics {
     pub static_load: FaceLoad,
     /// The gap across the face it was solved with.
     pub gap: LeadGap,
+}
+
+/// Where a helical pair's teeth touch in its planar model (docs/MODEL.md 11.1): the
+/// contact lines of `line_pair` over the transverse path, each L = `lead_m` = b tan(beta_b)
+/// long (one slice, `lead_m` = 0: the transverse pair on its nominal path), between flanks
+/// whose Hertz radii are the contact line's normal section's (`in_normal_section`).
+pub(crate) fn helical_contact(hp: &HelicalPair, line_pair: &GearPair, lead_m: f64) -> ContactPath {
+    let t = &hp.transverse;
+    if lead_m > 0.0 {
+        ContactPath::helical_lines(line_pair, (t.rho_start_m, t.rho_end_m), lead_m)
+    } else {
+        ContactPath::new(line_pair, ContactPathModel::Nominal, MAX_PAIRS)
+    }
+    .in_normal_section(hp.base_helix_angle_rad.cos())
 }
 
 /// The axial degrees of freedom of a helical case (docs/MODEL.md 11.6): the mesh's

@@ -23,14 +23,13 @@
 use super::domain::{body_value_warnings, domain_problems};
 use super::face_load::{face_load, lead_keys};
 use super::helical::{
-    axial_support, contact_ratio_problem, HelicalDynamics, HelicalModel, LeadDynamics,
+    axial_support, contact_ratio_problem, helical_contact, HelicalDynamics, HelicalModel,
+    LeadDynamics,
 };
 use super::model::{pitch_line_velocity_warning, Model, ModelError};
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel, WornGeometry};
 use crate::contact::friction::Friction;
 use crate::contact::hertz::effective_modulus_of;
-use crate::dynamics::contact_path::ContactPath;
-use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::params::DynamicParams;
 use crate::dynamics::period_search::SteadyStateSettings;
 use crate::geometry::ProfileGrid;
@@ -175,13 +174,7 @@ impl Model {
             warnings.push(EXTENDED_PATH_WARNING.into());
             case.contact.path = ContactPathModel::Nominal;
         }
-        let path = (transverse.rho_start_m, transverse.rho_end_m);
-        let mut contact = if lead > 0.0 {
-            ContactPath::helical_lines(&line_pair, path, lead)
-        } else {
-            ContactPath::new(&line_pair, ContactPathModel::Nominal, MAX_PAIRS)
-        }
-        .in_normal_section(hp.base_helix_angle_rad.cos());
+        let mut contact = helical_contact(&hp, &line_pair, lead);
         if let Some(g) = &gaps {
             let table = LineGapTable::new(&hm.slices, &g.static_load.gaps_m);
             contact = contact.with_lead_gaps(table);

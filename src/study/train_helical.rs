@@ -1,16 +1,16 @@
 //! A helical stage of a gear train (docs/MODEL.md 4.3): the helical pair's own slice-method
 //! mesh (`study::helical::HelicalModel`, `SliceMeshStiffness::line_model`, its contact
-//! lines `ContactPath::helical_lines`), the stage's axial bearings and the mesh's axial
+//! lines `study::helical::helical_contact`), the stage's axial bearings and the mesh's axial
 //! gradient (`study::helical::axial_support`, docs/MODEL.md 11.6), built as the single
 //! helical pair builds them (`Model::helical_from_case`), so that a one-stage helical train
 //! is that pair.
 
 use super::helical::{
-    axial_support, contact_ratio_problem, HelicalDynamics, HelicalModel, EXTENDED_PATH_WARNING,
+    axial_support, contact_ratio_problem, helical_contact, HelicalDynamics, HelicalModel,
+    EXTENDED_PATH_WARNING,
 };
 use crate::config::case::{Case, ContactPathModel, LoadSharingModel};
 use crate::dynamics::contact_path::ContactPath;
-use crate::dynamics::model::MAX_PAIRS;
 use crate::dynamics::params::AxialSupport;
 use crate::geometry::GearPair;
 use crate::stiffness::mesh::MeshStiffness;
@@ -57,12 +57,7 @@ pub(crate) fn helical_stage(sc: &mut Case) -> Result<HelicalStageParts, Vec<Stri
         warnings.push(EXTENDED_PATH_WARNING.into());
         sc.contact.path = ContactPathModel::Nominal;
     }
-    let t = &hp.transverse;
-    let contact = if lead > 0.0 {
-        ContactPath::helical_lines(&line_pair, (t.rho_start_m, t.rho_end_m), lead)
-    } else {
-        ContactPath::new(&line_pair, ContactPathModel::Nominal, MAX_PAIRS)
-    };
+    let contact = helical_contact(&hp, &line_pair, lead);
     Ok(HelicalStageParts {
         axial: axial_support(sc, &hp),
         helical: HelicalDynamics {
