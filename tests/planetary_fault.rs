@@ -282,10 +282,6 @@ fn bad_faults_are_refused_naming_key_value_and_range() {
             vec!["`planetary.fault.tooth` = 30", "teeth 0 to 29"],
         ),
         (
-            "kind = \"crack\"\ngear = \"ring\"\ntooth = 2\ncrack_depth_mm = 1",
-            vec!["`planetary.fault.gear` = \"ring\"", "not built", "\"sun\", \"planet\""],
-        ),
-        (
             "kind = \"crack\"\ngear = \"sun\"\ntooth = 2\ncrack_depth_mm = 10",
             vec!["`planetary.fault.crack_depth_mm` = 10", "sun tooth 2", "valid [0, "],
         ),

@@ -414,12 +414,7 @@ impl PlanetarySection {
             let z = match f.gear {
                 FaultyGear::Sun => self.teeth_sun,
                 FaultyGear::Planet => self.teeth_planet,
-                FaultyGear::Ring => {
-                    errs.push(format!(
-                        "`planetary.fault.gear` = \"ring\" (fault {i}) is not built yet (the ring's internal tooth has no cracked or pitted section model): valid \"sun\", \"planet\""
-                    ));
-                    self.teeth_ring
-                }
+                FaultyGear::Ring => self.teeth_ring,
             };
             if f.tooth < 0 || f.tooth >= z {
                 errs.push(format!(

@@ -94,12 +94,8 @@ pub fn planetary_dynamics_artifacts(d: &PlanetaryDynamics, r: &PlanetaryResponse
     });
     if let Some(f) = d.study.meshes.fault() {
         // Only a faulty set states its fault (a healthy set's summary is unchanged).
-        let member = match f.member {
-            crate::stiffness::planetary_mesh::FaultMember::Sun => "sun".to_string(),
-            crate::stiffness::planetary_mesh::FaultMember::Planet(n) => format!("planet {}", n + 1),
-        };
         v["planetary_dynamics"]["fault"] = json!({
-            "member": member,
+            "member": f.member.name(),
             "tooth": f.tooth,
             "period_mesh_periods": r.mesh_periods,
             "period_s": r.mesh_periods as f64 / d.model.mesh_frequency_hz,

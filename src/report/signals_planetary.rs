@@ -146,10 +146,7 @@ fn fault_lines(
         })
         .collect();
     Some(json!({
-        "member": match f.member {
-            crate::stiffness::planetary_mesh::FaultMember::Sun => "sun".to_string(),
-            crate::stiffness::planetary_mesh::FaultMember::Planet(n) => format!("planet {}", n + 1),
-        },
+        "member": f.member.name(),
         "tooth": f.tooth,
         "period_mesh_periods": p,
         "record_carrier_revolutions": rec.revolutions,

@@ -89,29 +89,77 @@ impl RingToothBeam {
         rho2_m: f64,
         rule: &GaussLegendre,
     ) -> ToothCompliance {
+        let b = self.face_width_m;
+        self.compliance_with_section_split(rho2_m, rule, &[], |h, _| {
+            (2.0 * h * b, 2.0 * h * h * h * b / 3.0)
+        })
+    }
+
+    /// Half-thickness h and height Y (m) of the section at the root circle, where the
+    /// tooth is clamped (its thickest section, and where a root crack starts).
+    pub fn root_section(&self) -> (f64, f64) {
+        self.flank_point(self.ring.root_radius_m)
+    }
+
+    /// Half-thickness h and height Y (m) of the flank's tip corner (the tip circle).
+    pub fn tip_section(&self) -> (f64, f64) {
+        self.flank_point(self.ring.tip_radius_m)
+    }
+
+    /// The flank's radius (m) at its own radius of curvature rho2 (m): sqrt(r_b^2 + rho2^2).
+    pub fn radius_at_m(&self, rho2_m: f64) -> f64 {
+        self.ring.base_radius_m.hypot(rho2_m)
+    }
+
+    /// As [`Self::compliance_with_rule`] with the cross-section at each height given by
+    /// `section(h, Y) -> (area m^2, second moment m^4)` (h the flank's half-thickness, Y
+    /// the height, m) instead of the full 2h x b rectangle: a cracked or pitted ring tooth
+    /// (`stiffness::ring_tooth_faults`); the moment arm stays measured from the
+    /// centreline, as for the external tooth (`ToothBeam::compliance_with_section_split`).
+    /// The integral from the contact to the root circle is split at the radii
+    /// `breaks_m` (ascending) where the section jumps, so that each piece is smooth.
+    pub(crate) fn compliance_with_section_split(
+        &self,
+        rho2_m: f64,
+        rule: &GaussLegendre,
+        breaks_m: &[f64],
+        section: impl Fn(f64, f64) -> (f64, f64),
+    ) -> ToothCompliance {
         let rb = self.ring.base_radius_m;
         let r_c = rb.hypot(rho2_m);
         let beta = self.load_angle_rad(rho2_m);
         let (sb, cb) = beta.sin_cos();
         let (h_c, y_c) = self.flank_point(r_c);
-        let (e, g, b) = (
-            self.youngs_modulus_pa,
-            self.shear_modulus_pa,
-            self.face_width_m,
-        );
-        let sum = rule.integrate3(r_c, self.ring.root_radius_m, |r| {
+        let (e, g) = (self.youngs_modulus_pa, self.shear_modulus_pa);
+        let per_dr = |r: f64| {
             let alpha_r = (rb / r).acos();
             let theta = self.ring.half_tooth_angle_rad(r);
             let (h, y) = (r * theta.sin(), r * theta.cos());
             let dy_dr = (theta + alpha_r).cos() / alpha_r.cos();
             let m = cb * (y - y_c) - sb * h_c;
-            let (area, inertia) = (2.0 * h * b, 2.0 * h * h * h * b / 3.0);
+            let (area, inertia) = section(h, y);
             [
                 m * m / (e * inertia) * dy_dr,
                 SHEAR_FACTOR * cb * cb / (g * area) * dy_dr,
                 sb * sb / (e * area) * dy_dr,
             ]
-        });
+        };
+        let root = self.ring.root_radius_m;
+        debug_assert!(breaks_m.windows(2).all(|w| w[0] <= w[1]));
+        let ends = breaks_m
+            .iter()
+            .copied()
+            .filter(|r| *r > r_c && *r < root)
+            .chain(std::iter::once(root));
+        let (mut sum, mut from) = ([0.0; 3], r_c);
+        for to in ends {
+            // (0 + x is x bit for bit: one piece is the healthy tooth's integral as before.)
+            let piece = rule.integrate3(from, to, per_dr);
+            for k in 0..3 {
+                sum[k] += piece[k];
+            }
+            from = to;
+        }
         ToothCompliance {
             bending_m_per_n: sum[0],
             shear_m_per_n: sum[1],
@@ -166,6 +214,16 @@ impl InternalMeshStiffness {
     /// The planet's tooth beam.
     pub fn planet_beam(&self) -> &ToothBeam {
         &self.planet
+    }
+
+    /// The pair's Hertz compliance 1/k_h over the full face width, m/N (paper eq. 11).
+    pub fn hertz_compliance_m_per_n(&self) -> f64 {
+        self.hertz_m_per_n
+    }
+
+    /// The pair's geometry.
+    pub fn pair(&self) -> &InternalPair {
+        &self.pair
     }
 
     /// Single-pair compliance at the planet's radius of curvature rho1 (m):

@@ -11,6 +11,7 @@ pub mod iso6336;
 pub mod mesh;
 pub mod planetary_mesh;
 pub mod potential_energy;
+pub mod ring_tooth_faults;
 pub mod tooth_faults;
 pub mod worn_tooth;
 

@@ -32,6 +32,19 @@ pub enum FaultMember {
     Sun,
     /// Planet n (0-based): its sun and ring meshes meet the tooth.
     Planet(usize),
+    /// The ring: every planet's ring mesh meets the tooth.
+    Ring,
+}
+
+impl FaultMember {
+    /// Its name in the outputs: `sun`, `planet 2` (counted from 1), `ring`.
+    pub fn name(self) -> String {
+        match self {
+            FaultMember::Sun => "sun".to_string(),
+            FaultMember::Planet(n) => format!("planet {}", n + 1),
+            FaultMember::Ring => "ring".to_string(),
+        }
+    }
 }
 
 /// A tooth fault on one member: the compliance it adds to a pair holding the tooth, m/N,
@@ -50,8 +63,8 @@ pub struct MeshFault {
     pub ring_m_per_n: Option<Vec<f64>>,
 }
 
-/// Which tooth of each member a pair holds (module docs): per planet the whole part of
-/// z_s psi_n / 2 pi and R_n, and the teeth of sun and planet.
+/// Which tooth of each member a pair holds (module docs): per planet the whole parts of
+/// z_s psi_n / 2 pi and of -z_r psi_n / 2 pi and R_n, and the teeth of sun, planet, ring.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FaultTeeth {
     /// round(z_s psi_n / 2 pi - gamma_sn) per planet (its whole part, rounding-safe): sun tooth i meets planet n at the pitch point
@@ -62,14 +75,21 @@ pub struct FaultTeeth {
     /// the ring mesh's at c + R_n + (gamma_rn + gamma_rs - gamma_sn), the loaded flanks
     /// half a planet turn apart less the teeth's half angles (`ring_sun_phase`).
     pub ring_to_planet: Vec<i64>,
-    /// Teeth z_s and z_p.
-    pub teeth: [i64; 2],
+    /// round(-z_r psi_n / 2 pi - gamma_rn) per planet (its whole part, rounding-safe):
+    /// ring tooth j passes planet n's ring-mesh pitch point at c = gamma_rs + j - z_r
+    /// psi_n / 2 pi (+ multiples of z_r), the ring turning against the sun relative to the
+    /// carrier (docs/MODEL.md 12.14), so the ring pair of planet n that entered contact at
+    /// the table's cycle M holds ring tooth (M - ring_whole_n) mod z_r.
+    pub ring_whole: Vec<i64>,
+    /// Teeth z_s, z_p and z_r.
+    pub teeth: [i64; 3],
 }
 
 impl FaultTeeth {
     /// The teeth of `set` (module docs).
     pub fn of(set: &PlanetarySet) -> Self {
         let zs = set.teeth_sun() as f64;
+        let zr = set.teeth_ring() as f64;
         let gs = set.sun_planet_phases();
         let gr = set.ring_planet_phases();
         let gamma_rs = set.ring_sun_phase();
@@ -86,7 +106,17 @@ impl FaultTeeth {
                 .zip(&gr)
                 .map(|(s, r)| -(s + g_whole - r - gamma_rs).round() as i64)
                 .collect(),
-            teeth: [set.teeth_sun() as i64, set.teeth_planet() as i64],
+            ring_whole: set
+                .planet_angles_rad
+                .iter()
+                .zip(&gr)
+                .map(|(psi, g)| (-zr * psi / (2.0 * PI) - g).round() as i64)
+                .collect(),
+            teeth: [
+                set.teeth_sun() as i64,
+                set.teeth_planet() as i64,
+                set.teeth_ring() as i64,
+            ],
         }
     }
 }
@@ -168,13 +198,15 @@ impl PlanetaryMeshes {
 
     /// Mesh cycles over which every mesh's stiffness repeats: 1 with every tooth alike,
     /// z_s with a faulty sun tooth (it meets each planet once per sun revolution relative
-    /// to the carrier), z_p with a faulty planet tooth (once per planet revolution).
+    /// to the carrier), z_p with a faulty planet tooth (once per planet revolution), z_r
+    /// with a faulty ring tooth (once per ring revolution relative to the carrier).
     pub fn periods(&self) -> usize {
         match &self.fault {
             None => 1,
             Some((f, t)) => match f.member {
                 FaultMember::Sun => t.teeth[0] as usize,
                 FaultMember::Planet(_) => t.teeth[1] as usize,
+                FaultMember::Ring => t.teeth[2] as usize,
             },
         }
     }
@@ -190,7 +222,10 @@ impl PlanetaryMeshes {
             (FaultMember::Sun, false) => {
                 (entered - t.sun_whole[planet]).rem_euclid(t.teeth[0]) == f.tooth as i64
             }
-            (FaultMember::Sun, true) => false,
+            (FaultMember::Sun, true) | (FaultMember::Ring, false) => false,
+            (FaultMember::Ring, true) => {
+                (entered - t.ring_whole[planet]).rem_euclid(t.teeth[2]) == f.tooth as i64
+            }
             (FaultMember::Planet(n), false) => {
                 n == planet && entered.rem_euclid(t.teeth[1]) == f.tooth as i64
             }

@@ -83,11 +83,41 @@ fn cracked_beam_compliance(
         }
     };
     beam.compliance_with_section(rho_m, rule, |h, y| {
-        let cracked_side = h.min(limit(y).max(h - reach));
-        let t = (h + cracked_side).max(1e-9 * h_root);
-        (t * b, t * t * t * b / 12.0)
+        cracked_section(h, limit(y), reach, h_root, b)
     })
     .total_m_per_n()
+}
+
+/// The cracked section at half-thickness h (m) with the limit line at `limit_m` from the
+/// centreline, the crack's reach q sin(nu) and the root's half-thickness (m), face width
+/// b (m): (area m^2, second moment m^4) of t = h + min(h, max(limit, h - reach)) (module
+/// docs; shared with the ring tooth, `ring_tooth_faults`).
+pub(crate) fn cracked_section(
+    h: f64,
+    limit_m: f64,
+    reach_m: f64,
+    h_root_m: f64,
+    b: f64,
+) -> (f64, f64) {
+    let cracked_side = h.min(limit_m.max(h - reach_m));
+    let t = (h + cracked_side).max(1e-9 * h_root_m);
+    (t * b, t * t * t * b / 12.0)
+}
+
+/// The pitted section at half-thickness h (m), face width b (m): the full 2h x b
+/// rectangle less a pit `depth_m` deep (at most [`Spall::MAX_THICKNESS_SHARE`] of 2h)
+/// over the share `f` of the face, (area m^2, second moment about the shifted centroid
+/// m^4) by the parallel-axis theorem (shared with the ring tooth, `ring_tooth_faults`).
+pub(crate) fn pitted_section(h: f64, b: f64, f: f64, depth_m: f64) -> (f64, f64) {
+    let full = (2.0 * h * b, 2.0 * h * h * h * b / 3.0);
+    // The pit u in [h - d, h] over width f b, u across the thickness from the centreline.
+    let d = depth_m.min(Spall::MAX_THICKNESS_SHARE * 2.0 * h);
+    let pit_area = f * b * d;
+    let area = full.0 - pit_area;
+    let first = -pit_area * (h - 0.5 * d);
+    let second = full.1 - f * b * (h.powi(3) - (h - d).powi(3)) / 3.0;
+    let u_bar = first / area;
+    (area, second - area * u_bar * u_bar)
 }
 
 /// Compliance (m/N) the crack adds to the tooth at contact rho (its own radius of
@@ -170,18 +200,10 @@ pub fn spall_compliance_m_per_n(
     let (y_lo, y_hi) = (y_of(spall.rho_lo_m), y_of(spall.rho_hi_m));
     let edges = [spall.rho_lo_m, spall.rho_hi_m].map(|r| beam.contact_angle_rad(r));
     let pitted = beam.compliance_with_section_split(rho_m, rule, &edges, |h, y| {
-        let full = (2.0 * h * b, 2.0 * h * h * h * b / 3.0);
         if y < y_lo || y > y_hi || f <= 0.0 {
-            return full;
+            return (2.0 * h * b, 2.0 * h * h * h * b / 3.0);
         }
-        // The pit u in [h - d, h] over width f b, u across the thickness from the centreline.
-        let d = spall.depth_m.min(Spall::MAX_THICKNESS_SHARE * 2.0 * h);
-        let pit_area = f * b * d;
-        let area = full.0 - pit_area;
-        let first = -pit_area * (h - 0.5 * d);
-        let second = full.1 - f * b * (h.powi(3) - (h - d).powi(3)) / 3.0;
-        let u_bar = first / area;
-        (area, second - area * u_bar * u_bar)
+        pitted_section(h, b, f, spall.depth_m)
     });
     let mut extra = pitted.total_m_per_n() - beam.compliance(rho_m).total_m_per_n();
     if spall.contains(rho_m) && f < 1.0 {

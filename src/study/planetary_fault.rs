@@ -1,6 +1,6 @@
-//! A planetary set's tooth fault (`[[planetary.fault]]`, docs/MODEL.md 12.13): the
-//! compliance a crack or a spall on one sun or planet tooth adds to the pairs that hold
-//! it, along each mesh's path of contact (`stiffness::planetary_mesh::MeshFault`), and
+//! A planetary set's tooth fault (`[[planetary.fault]]`, docs/MODEL.md 12.13, 12.14): the
+//! compliance a crack or a spall on one sun, planet or ring tooth adds to the pairs that
+//! hold it, along each mesh's path of contact (`stiffness::planetary_mesh::MeshFault`), and
 //! the fault's period checked against the limits before any run.
 //!
 //! The fault is the pair's (`config::teeth`): the same kinds, sizes and defaults, the same
@@ -11,19 +11,25 @@
 //! planet's crack also softens its ring mesh: the planet's tooth beam of that mesh with
 //! the same crack (`stiffness::tooth_faults::crack_compliance_m_per_n`). A spall's gap and
 //! lost contact width (a pair's full-width and partial spalls, `dynamics::tooth_mesh`) are
-//! not taken: the set's meshes carry stiffness only (a stated limit).
+//! not taken: the set's meshes carry stiffness only (a stated limit). A ring tooth's fault
+//! is the same crack or spall on the ring tooth's section (`stiffness::ring_tooth_faults`)
+//! with the pair's checks carried over to it.
 
 use super::model::ModelError;
-use super::teeth::{apply_fault, fault_problem};
+use super::teeth::{apply_fault, fault_problem, lower_mm, upper_mm};
 use crate::config::case::{Fault, FaultTable, Member, ToothFault};
 use crate::config::planetary::{FaultyGear, PlanetaryFault};
 use crate::dynamics::tooth_mesh::ToothFlank;
 use crate::geometry::flank_shape::{ActiveFlank, Side};
 use crate::geometry::planetary::PlanetarySet;
-use crate::stiffness::internal::InternalMeshStiffness;
+use crate::stiffness::internal::{InternalMeshStiffness, RingToothBeam};
 use crate::stiffness::mesh::MeshStiffness;
 use crate::stiffness::planetary_mesh::{FaultMember, MeshFault, FAULT_TABLE_POINTS};
-use crate::stiffness::tooth_faults::{crack_compliance_m_per_n, Crack};
+use crate::stiffness::ring_tooth_faults::{
+    ring_crack_compliance_m_per_n, ring_crack_max_depth_m, ring_spall_compliance_m_per_n,
+    ring_spall_max_depth_m,
+};
+use crate::stiffness::tooth_faults::{crack_compliance_m_per_n, Crack, Spall};
 
 /// Most samples a faulty set's recorded period may hold: its mesh periods (up to
 /// lcm(z_member, z_r) for the ring sensor's record) times the samples per mesh period.
@@ -55,8 +61,11 @@ pub fn mesh_fault(
     sun_mesh: &MeshStiffness,
     ring_mesh: &InternalMeshStiffness,
 ) -> Result<MeshFault, ModelError> {
-    let pair = &set.sun_planet;
     let pf = as_pair_fault(f)?;
+    if f.gear == FaultyGear::Ring {
+        return ring_mesh_fault(i, f, &pf.fault, set, ring_mesh);
+    }
+    let pair = &set.sun_planet;
     let flanks = [Side::Pinion, Side::Gear].map(|s| ActiveFlank::of(pair, s));
     if let Some(p) = fault_problem(i, &pf, pair, sun_mesh, &flanks) {
         let side = pf.gear.name();
@@ -125,8 +134,146 @@ pub fn mesh_fault(
     })
 }
 
+/// The ring's own rho2 (m) of its active flank's tip end, pitch point and root end: the
+/// ring path's start, pitch point and end (the ring's tip meets the planet first).
+fn ring_flank(set: &PlanetarySet) -> [f64; 3] {
+    let rp = &set.ring_planet;
+    [rp.rho_start_m, rp.rho_pitch_m, rp.rho_end_m].map(|r| rp.rho_ring(r))
+}
+
+/// A spall on the ring's flank as its own rho2 (m): the centre `position_m` of roll from
+/// the pitch point towards the ring's tip (smaller rho2), `length_m` long.
+fn ring_spall(set: &PlanetarySet, position_m: f64, length_m: f64, depth_m: f64, w: f64) -> Spall {
+    let centre = ring_flank(set)[1] - position_m;
+    Spall {
+        rho_lo_m: centre - 0.5 * length_m,
+        rho_hi_m: centre + 0.5 * length_m,
+        depth_m,
+        width_fraction: w,
+    }
+}
+
+/// The problem of a ring tooth's fault `f` (index `i`) against the ring's tooth, if any:
+/// a crack deeper than the root's thickness, a spall longer than or off the ring's active
+/// profile or deeper than the tooth holds (the pair's checks, `study::teeth::
+/// fault_problem`, on the ring tooth's section).
+fn ring_fault_problem(
+    i: usize,
+    f: &PlanetaryFault,
+    fault: &Fault,
+    set: &PlanetarySet,
+    beam: &RingToothBeam,
+) -> Option<String> {
+    let mm = 1e3;
+    let who = format!("fault {i}, {}", f.who());
+    match *fault {
+        Fault::Crack {
+            depth_m, angle_rad, ..
+        } => {
+            let q_max = ring_crack_max_depth_m(beam, angle_rad);
+            (depth_m >= q_max).then(|| format!(
+                "`planetary.fault.crack_depth_mm` = {} ({who}) is deeper than the tooth: at {} deg its reach across the ring tooth's root must stay below the root's thickness {:.4} mm, valid [0, {}) mm",
+                f.written("crack_depth_mm"),
+                f.written("crack_angle_deg"),
+                2.0 * beam.root_section().0 * mm,
+                upper_mm(q_max * mm)
+            ))
+        }
+        Fault::Spall {
+            position_m,
+            length_m,
+            depth_m,
+            width_fraction,
+        } => {
+            let [tip, pitch, root] = ring_flank(set);
+            let s = ring_spall(set, position_m, length_m, depth_m, width_fraction);
+            if length_m > root - tip {
+                Some(format!(
+                    "`planetary.fault.spall_length_mm` = {} ({who}) is longer than the ring's active profile: valid (0, {}] mm",
+                    f.written("spall_length_mm"),
+                    upper_mm((root - tip) * mm)
+                ))
+            } else if s.rho_lo_m < tip - 1e-12 || s.rho_hi_m > root + 1e-12 {
+                Some(format!(
+                    "`planetary.fault.spall_position_mm` = {} ({who}) puts the spall off the ring's active profile: with length {} mm its centre must lie within [{}, {}] mm of the pitch point (towards the ring's tip positive)",
+                    f.written("spall_position_mm"),
+                    f.written("spall_length_mm"),
+                    lower_mm((pitch - root + 0.5 * length_m) * mm),
+                    upper_mm((pitch - tip - 0.5 * length_m) * mm)
+                ))
+            } else {
+                let d_max = ring_spall_max_depth_m(beam, &s);
+                (depth_m > d_max).then(|| format!(
+                    "`planetary.fault.spall_depth_um` = {} ({who}) is deeper than the tooth holds: a pit may take at most {:.0} % of the ring tooth's thickness at its edge nearer the tip ({:.4} mm), valid (0, {:.1}] µm",
+                    f.written("spall_depth_um"),
+                    Spall::MAX_THICKNESS_SHARE * 100.0,
+                    d_max / Spall::MAX_THICKNESS_SHARE * mm,
+                    (d_max * 1e7).floor() / 10.0
+                ))
+            }
+        }
+        Fault::BrokenTip { .. } => None,
+    }
+}
+
+/// A ring tooth's fault `f` (index `i`, `fault` its resolved sizes) as the meshes'
+/// [`MeshFault`]: the compliance it adds to the ring tooth (`stiffness::
+/// ring_tooth_faults`) tabulated along the ring path (rho1 of the planet, own rho2 of the
+/// ring = rho1 + N1N2); every planet's ring mesh meets it, no sun mesh.
+fn ring_mesh_fault(
+    i: usize,
+    f: &PlanetaryFault,
+    fault: &Fault,
+    set: &PlanetarySet,
+    ring_mesh: &InternalMeshStiffness,
+) -> Result<MeshFault, ModelError> {
+    let beam = ring_mesh.ring_beam();
+    if let Some(p) = ring_fault_problem(i, f, fault, set, beam) {
+        return Err(ModelError(vec![p]));
+    }
+    let rp = &set.ring_planet;
+    let n = FAULT_TABLE_POINTS - 1;
+    let own = (0..=n).map(|k| {
+        rp.rho_ring(rp.rho_start_m + (rp.rho_end_m - rp.rho_start_m) * k as f64 / n as f64)
+    });
+    let table: Vec<f64> = match *fault {
+        Fault::Crack {
+            depth_m,
+            angle_rad,
+            width_fraction,
+        } => {
+            let crack = Crack {
+                depth_m,
+                angle_rad,
+                width_fraction,
+            };
+            own.map(|rho2| ring_crack_compliance_m_per_n(beam, &crack, rho2))
+                .collect()
+        }
+        Fault::Spall {
+            position_m,
+            length_m,
+            depth_m,
+            width_fraction,
+        } => {
+            let s = ring_spall(set, position_m, length_m, depth_m, width_fraction);
+            let kh = ring_mesh.hertz_compliance_m_per_n();
+            own.map(|rho2| ring_spall_compliance_m_per_n(beam, &s, kh, rho2))
+                .collect()
+        }
+        // Refused with the case (`config::planetary`): no broken tip on a set.
+        Fault::BrokenTip { .. } => vec![0.0; n + 1],
+    };
+    Ok(MeshFault {
+        member: FaultMember::Ring,
+        tooth: f.tooth.max(0) as usize,
+        sun_m_per_n: None,
+        ring_m_per_n: Some(table),
+    })
+}
+
 /// Mesh periods a faulty set's response repeats over (z_s for a sun tooth, z_p for a
-/// planet's; 1 without a fault that changes its tooth), and those of the ring sensor's
+/// planet's, z_r for a ring tooth's; 1 without a fault that changes its tooth), and those of the ring sensor's
 /// record, lcm(that, z_r) (the planets' angles to the sensor repeat once per carrier
 /// revolution relative to the ring, z_r mesh periods), in checked arithmetic; an input
 /// problem naming the keys when either period's samples (`samples_per_period` each)
@@ -156,9 +303,12 @@ pub fn fault_periods(
     match (record, samples) {
         (Some(r), Some(s)) if s <= MAX_FAULT_PERIOD_SAMPLES => Ok((p, r)),
         _ => Err(format!(
-            "`planetary.fault.gear` = \"{}\" with `planetary.teeth_{}` = {p}, `planetary.teeth_ring` = {zr} and `numerics.steps_per_mesh_period` = {samples_per_period}: the fault's response repeats over {p} mesh periods and the ring sensor's record over lcm({p}, {zr}) = {} mesh periods, {} samples, beyond the limit of {MAX_FAULT_PERIOD_SAMPLES}: give fewer steps per mesh period or a member with fewer teeth",
+            "`planetary.fault.gear` = \"{}\" with {}`planetary.teeth_ring` = {zr} and `numerics.steps_per_mesh_period` = {samples_per_period}: the fault's response repeats over {p} mesh periods and the ring sensor's record over lcm({p}, {zr}) = {} mesh periods, {} samples, beyond the limit of {MAX_FAULT_PERIOD_SAMPLES}: give fewer steps per mesh period or a member with fewer teeth",
             f.gear.name(),
-            f.gear.name(),
+            match f.gear {
+                FaultyGear::Ring => String::new(),
+                g => format!("`planetary.teeth_{}` = {p}, ", g.name()),
+            },
             record.map_or("more than 2^64".to_string(), |r| r.to_string()),
             samples.map_or("more than 2^64".to_string(), |s| s.to_string()),
         )),

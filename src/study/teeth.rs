@@ -12,7 +12,7 @@ mod faults;
 mod sides;
 mod worn;
 
-pub(crate) use checks::fault_problem;
+pub(crate) use checks::{fault_problem, lower_mm, upper_mm};
 pub use errors::{FlankTolerancesReport, GearErrors};
 pub(crate) use faults::apply_fault;
 

@@ -241,7 +241,7 @@ pub fn fault_term(case: &crate::config::Case, evals: f64, kept: f64, s_dyn: f64)
         Err(_) => (f64::INFINITY, f64::INFINITY),
     };
     Some(Term {
-        what: "the planetary set's tooth fault (its response over the fault's period, z_s or z_p mesh periods)",
+        what: "the planetary set's tooth fault (its response over the fault's period, z_s, z_p or z_r mesh periods)",
         seconds,
         bytes,
         keys: &[

@@ -12,12 +12,12 @@ use crate::stiffness::tooth_faults::{Crack, Spall};
 
 /// An upper limit shown to 4 decimals, rounded down, so that every value up to the shown
 /// limit is accepted (a limit rounded to nearest could show 4.5000 for 4.49999).
-fn upper_mm(x: f64) -> String {
+pub(crate) fn upper_mm(x: f64) -> String {
     format!("{:.4}", (x * 1e4).floor() / 1e4)
 }
 
 /// A lower limit shown to 4 decimals, rounded up (see [`upper_mm`]).
-fn lower_mm(x: f64) -> String {
+pub(crate) fn lower_mm(x: f64) -> String {
     format!("{:.4}", (x * 1e4).ceil() / 1e4)
 }
 
