@@ -273,6 +273,18 @@ impl Model {
             let stage_warnings = s.pair.warnings.iter().chain(s.mesh.warnings());
             warnings.extend(stage_warnings.map(|w| format!("stage {}: {w}", k + 1)));
         }
+        if train.stages.iter().any(|s| s.teeth.is_some()) {
+            // A faulty stage shares its load as a pair with resolved teeth does.
+            match case.contact.load_sharing {
+                LoadSharingModel::Pedrero => {
+                    return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
+                }
+                LoadSharingModel::Auto if !case.contact.path.is_extended() => {
+                    warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into())
+                }
+                LoadSharingModel::Auto | LoadSharingModel::Stiffness => {}
+            }
+        }
         let p = &train.operating.meshes[0];
         let params = DynamicParams {
             lumped: first.lumped.clone(),

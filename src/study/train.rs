@@ -3,6 +3,7 @@
 //! point, built once.
 
 use super::model_error::ModelError;
+use super::teeth::ToothInputs;
 use crate::config::case::{Case, DynamicsSection, SpeedBoundary, TorqueShaft};
 use crate::config::train::StageSpec;
 use crate::contact::friction::Friction;
@@ -16,9 +17,11 @@ use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{MeshPoint, TrainOperatingPoint};
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
+use crate::dynamics::tooth_mesh::ToothMesh;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
+use crate::wear::WearState;
 use std::borrow::Cow;
 
 /// One stage of a train.
@@ -36,6 +39,9 @@ pub struct Stage {
     pub lumped: DynamicsSection<f64>,
     /// Where its pairs touch (`contact.path`).
     pub contact: ContactPath,
+    /// The stage's tooth-resolved mesh when a `[[fault]]` table names the stage and
+    /// changes its tooth (`fault.stage`, docs/MODEL.md 9.10); None: every tooth alike.
+    pub teeth: Option<ToothMesh>,
 }
 
 /// A train's model objects (see the module docs).
@@ -117,6 +123,13 @@ impl TrainModel {
             let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
             let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
             let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
+            let teeth = match stage_teeth(case, k, &sc, &pair, &mesh, &grid, &operating) {
+                Ok(t) => t,
+                Err(e) => {
+                    problems.extend(e.iter().map(|m| at_stage(k, spec.name_own_keys(m))));
+                    continue;
+                }
+            };
             stages.push(Stage {
                 case: sc,
                 pair,
@@ -124,6 +137,7 @@ impl TrainModel {
                 grid,
                 lumped,
                 contact,
+                teeth,
             });
         }
         if !problems.is_empty() {
@@ -251,7 +265,7 @@ impl TrainModel {
                     load_sharing: case.contact.load_sharing,
                     roughness_um: roughness_um[k],
                     effective_modulus_pa,
-                    teeth: None,
+                    teeth: s.teeth.as_ref(),
                     contact: &s.contact,
                 };
                 let op = MeshOperating {
@@ -303,6 +317,68 @@ impl TrainModel {
     pub fn rotation(&self, b: usize) -> usize {
         self.assembly.index(b, Dof::Rotation).unwrap_or(0)
     }
+}
+
+/// The tooth-resolved mesh of stage `k` (0-based; `sc` its single-pair case) from the
+/// case's `[[fault]]` tables that name it (`fault.stage`), built by the pair's own
+/// machinery (`study::teeth::ToothInputs`: the same checks against the tooth, the same
+/// compliances and gaps): None when no fault names the stage or none changes its tooth
+/// (a crack of zero depth), so that stage stays the healthy one bit for bit. Errors: the
+/// pair's checks of the fault against the stage's tooth.
+fn stage_teeth(
+    case: &Case,
+    k: usize,
+    sc: &Case,
+    pair: &GearPair,
+    mesh: &MeshStiffness,
+    grid: &ProfileGrid,
+    operating: &TrainOperatingPoint,
+) -> Result<Option<ToothMesh>, Vec<String>> {
+    let faults: Vec<_> = case
+        .fault
+        .iter()
+        .filter(|f| f.stage_index() == Some(k))
+        .cloned()
+        .collect();
+    if faults.is_empty() {
+        return Ok(None);
+    }
+    let mut fc = sc.clone();
+    fc.fault = faults;
+    // A train's wear is refused with a fault (`refuse_fault`): the teeth are new, and
+    // only the fault makes them differ.
+    fc.wear.worn_geometry = crate::config::case::WornGeometry::Involute;
+    let p = &operating.meshes[k];
+    let inputs = ToothInputs::from_case(
+        &fc,
+        pair,
+        mesh,
+        grid,
+        [p.pinion_speed_rad_s, p.gear_speed_rad_s],
+        p.static_mesh_force_n,
+    )?;
+    Ok(inputs.map(|t| t.mesh_for(&WearState::new(grid.len()))))
+}
+
+/// A train with a tooth fault (`fault.stage`) is refused by `study` (the command as the
+/// message names it, e.g. "`gearwear wear`"): its wear, the wear-driven studies built on it (`run`, `dataset`,
+/// `calibrate`, `predict`, a wear sweep, a load spectrum) are not built with a fault (a
+/// faulty stage's mesh would need each tooth's own wear, docs/MODEL.md 9.10). Ok for a
+/// single pair or a train whose faults change no tooth.
+pub fn refuse_fault(case: &Case, study: &str) -> Result<(), ModelError> {
+    let Some(f) = (!case.stage.is_empty())
+        .then(|| case.fault.iter().find(|f| f.changes_tooth()))
+        .flatten()
+    else {
+        return Ok(());
+    };
+    Err(ModelError(vec![format!(
+        "`fault.stage` = {} ({} {} tooth {}): {study} on a gear train with a tooth fault is not built yet (the faulty stage's wear would need each tooth's own wear); `gearwear stiffness`, `gearwear dynamics`, `gearwear signals` and `gearwear sweep` of dynamics take the fault; remove the [[fault]] table for {study} on the train",
+        f.stage_index().map_or(0, |s| s + 1),
+        f.kind().name(),
+        f.gear.name(),
+        f.tooth
+    )]))
 }
 
 /// Each stage as the assembly needs it (shafts from the stages' keys; the motor's and

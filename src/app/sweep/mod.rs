@@ -323,6 +323,9 @@ impl Job for SweepJob {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         // What a train cannot run, before the budget; then the budget, in milliseconds.
         self.refuse_train_spectrum()?;
+        if self.run == SweepRun::Wear {
+            crate::study::train::refuse_fault(&self.base, "`gearwear sweep` of wear")?;
+        }
         self.check_budget()?;
         check_values(&self.base, &self.plan)?;
         let continuation = self.continuation_plan()?;
