@@ -95,7 +95,9 @@ impl TrainModel {
         let operating = TrainOperatingPoint::of(&case.operating, &refs);
         let mut stages = Vec::new();
         for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
-            let sc = stage_case(case, spec, Some(&operating.meshes[k]));
+            let mut sc = stage_case(case, spec, Some(&operating.meshes[k]));
+            // The stage's own faults (`fault.stage`): its single-pair case is its pair's.
+            sc.fault.retain(|f| f.stage_index() == Some(k));
             let torque = format!(
                 "its pinion's torque, {} N m from `operating.load_torque_nm` = {} through the ratios,",
                 crate::format::shown(operating.meshes[k].pinion_torque_nm),
@@ -123,7 +125,7 @@ impl TrainModel {
             let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
             let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
             let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
-            let teeth = match stage_teeth(case, k, &sc, &pair, &mesh, &grid, &operating) {
+            let teeth = match stage_teeth(k, &sc, &pair, &mesh, &grid, &operating) {
                 Ok(t) => t,
                 Err(e) => {
                     problems.extend(e.iter().map(|m| at_stage(k, spec.name_own_keys(m))));
@@ -319,14 +321,13 @@ impl TrainModel {
     }
 }
 
-/// The tooth-resolved mesh of stage `k` (0-based; `sc` its single-pair case) from the
-/// case's `[[fault]]` tables that name it (`fault.stage`), built by the pair's own
+/// The tooth-resolved mesh of stage `k` (0-based; `sc` its single-pair case, holding
+/// the `[[fault]]` tables that name the stage, `fault.stage`), built by the pair's own
 /// machinery (`study::teeth::ToothInputs`: the same checks against the tooth, the same
 /// compliances and gaps): None when no fault names the stage or none changes its tooth
 /// (a crack of zero depth), so that stage stays the healthy one bit for bit. Errors: the
 /// pair's checks of the fault against the stage's tooth.
 fn stage_teeth(
-    case: &Case,
     k: usize,
     sc: &Case,
     pair: &GearPair,
@@ -334,17 +335,10 @@ fn stage_teeth(
     grid: &ProfileGrid,
     operating: &TrainOperatingPoint,
 ) -> Result<Option<ToothMesh>, Vec<String>> {
-    let faults: Vec<_> = case
-        .fault
-        .iter()
-        .filter(|f| f.stage_index() == Some(k))
-        .cloned()
-        .collect();
-    if faults.is_empty() {
+    if sc.fault.is_empty() {
         return Ok(None);
     }
     let mut fc = sc.clone();
-    fc.fault = faults;
     // A train's wear is refused with a fault (`refuse_fault`): the teeth are new, and
     // only the fault makes them differ.
     fc.wear.worn_geometry = crate::config::case::WornGeometry::Involute;
