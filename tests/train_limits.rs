@@ -2,109 +2,18 @@
 //! cannot move is the first stage's pair alone, with the second stage's bodies carried
 //! as rigid inertia on its gear.
 
-use gearwear::dynamics::excitation::{ExternalError, PairGap};
+use gearwear::dynamics::excitation::ExternalError;
 use gearwear::dynamics::response::DynamicResponse;
 use gearwear::dynamics::summary::ResponseSummary;
 use gearwear::study::Model;
 use gearwear::wear::WearState;
 
 mod common;
-use common::train::model;
-
-/// Stage 2 as rigid as the case allows: a 31-tooth pinion (so mesh 2 repeats with mesh 1
-/// and the base period is one mesh period) and a 62-tooth gear (ratio 1/2 exactly), module
-/// 20 mm and `width_mm` wide (mesh 2's stiffness about width/20 x mesh 1's, its radius
-/// 10x), bearings and shaft at the top of their ranges.
-fn stiff_second_stage(width_mm: f64) -> String {
-    format!(
-        r#"
-[[stage]]
-shaft_torsional_stiffness_nm_per_rad = 1e10
-
-[[stage]]
-module_mm = 20
-teeth_pinion = 31
-teeth_gear = 62
-face_width_mm = {width_mm}
-hub_bore_radius_pinion_mm = "derived"
-hub_bore_radius_gear_mm = "derived"
-mass_pinion_kg = 2.0
-mass_gear_kg = 5.0
-inertia_pinion_kg_m2 = 4e-4
-inertia_gear_kg_m2 = 6e-3
-bearing_stiffness_pinion_n_per_m = 1e12
-bearing_stiffness_gear_n_per_m = 1e12
-"#
-    )
-}
+use common::train::{model, neglected_compliance, reflected_pair, stiff_second_stage};
 
 fn steady(m: &Model) -> DynamicResponse {
     m.dynamic(&WearState::new(m.grid.len()), &ExternalError::none())
         .unwrap()
-}
-
-/// The first stage alone with the rigid second stage reflected onto its gear's shaft
-/// (ratio rho = 1/2): gear inertia J_g1 + J_p2 + J_g2 rho^2, the brake's coupling and
-/// inertia times rho^2, and the mesh damping ratio that gives the train's mesh-1 damper
-/// c_m (which the train computes from J_g1 alone).
-fn reflected_pair(train: &Model) -> Model {
-    let t = train.train.as_ref().unwrap();
-    let (s1, s2) = (&t.stages[0].lumped, &t.stages[1].lumped);
-    let rho: f64 = 0.5;
-    let d = &train.case.dynamics;
-    let j_gear =
-        s1.inertia_gear_kg_m2 + s2.inertia_pinion_kg_m2 + s2.inertia_gear_kg_m2 * rho * rho;
-    let edits = |zeta: f64| -> Vec<String> {
-        vec![
-            format!("dynamics.inertia_gear_kg_m2={j_gear:e}"),
-            format!(
-                "dynamics.inertia_brake_kg_m2={:e}",
-                d.inertia_brake_kg_m2 * rho * rho
-            ),
-            format!(
-                "dynamics.coupling_stiffness_brake_nm_per_rad={:e}",
-                d.coupling_stiffness_brake_nm_per_rad * rho * rho
-            ),
-            format!(
-                "dynamics.coupling_damping_brake_nm_s_per_rad={:e}",
-                d.coupling_damping_brake_nm_s_per_rad * rho * rho
-            ),
-            format!("dynamics.mesh_damping_ratio={zeta:e}"),
-            "friction.model=none".to_string(),
-            // The train's own contact model.
-            format!(
-                "contact.path={}",
-                serde_json::to_value(train.case.contact.path).unwrap()
-            ),
-        ]
-    };
-    let build = |zeta: f64| {
-        let sets = edits(zeta);
-        let sets: Vec<&str> = sets.iter().map(String::as_str).collect();
-        model("", &sets)
-    };
-    let (gap, ext) = (PairGap::none(), ExternalError::none());
-    let c_train = train.system(&gap, &ext, 0.2).mesh(0).mesh_damping_n_s_per_m;
-    let zeta = d.mesh_damping_ratio;
-    let first = build(zeta);
-    let c_first = first.system(&gap, &ext, 0.2).mesh(0).mesh_damping_n_s_per_m;
-    // c_m is proportional to zeta.
-    build(zeta * c_train / c_first)
-}
-
-/// The compliance the rigid-stage limit neglects, relative to mesh 1's: mesh 2's
-/// torsional compliance seen from the intermediate shaft, 1 / (k_m2 r_p2^2), the shaft's
-/// 1 / k_s, and stage 2's bearings' 1 / (k_b r_p2^2) (each against mesh 1's
-/// 1 / (k_m1 r_g1^2)).
-fn neglected_compliance(train: &Model) -> f64 {
-    let t = train.train.as_ref().unwrap();
-    let (s1, s2) = (&t.stages[0], &t.stages[1]);
-    let r_g1 = s1.pair.gear.base_radius_m;
-    let r_p2 = s2.pair.pinion.base_radius_m;
-    let k1 = s1.mesh.mean_stiffness_n_per_m() * r_g1 * r_g1;
-    let k2 = s2.mesh.mean_stiffness_n_per_m() * r_p2 * r_p2;
-    let k_b = s2.lumped.bearing_stiffness_pinion_n_per_m * r_p2 * r_p2;
-    k1 / k2 + k1 / 1e10 + k1 / k_b
 }
 
 /// The differences of the train's mesh 1 from the reflected pair, relative to the pair's
@@ -151,7 +60,7 @@ fn a_second_stage_that_cannot_move_leaves_the_first_pair_alone() {
             &stiff_second_stage(width),
             &["friction.model=none", "contact.path=nominal"],
         );
-        let pair = reflected_pair(&train);
+        let pair = reflected_pair(&train, &[]);
         let eps = neglected_compliance(&train);
         let diff = difference(&train, &pair);
         println!("face width {width} mm: neglected compliance {eps:.2e}, difference {diff:.2e}");

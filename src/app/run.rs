@@ -45,6 +45,7 @@ impl Job for RunJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         if !self.case.stage.is_empty() {
+            crate::study::train::refuse_fault(&self.case, "`gearwear run`")?;
             return super::run_train::run_of_train(self, figures, observer);
         }
         if self.case.planetary.is_some() {

@@ -25,6 +25,7 @@ pub(crate) fn check_train_prognostics(
     if case.stage.is_empty() {
         return Ok(());
     }
+    crate::study::train::refuse_fault(case, "`gearwear calibrate` and `gearwear predict`")?;
     if future || case.load_spectrum.is_some() {
         return Err(JobError::input(TRAIN_DUTY));
     }

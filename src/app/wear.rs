@@ -54,6 +54,7 @@ impl Job for WearJob {
         if self.case.planetary.is_some() {
             return super::wear_planetary::wear_of_planetary(self, figures, observer);
         }
+        crate::study::train::refuse_fault(&self.case, "`gearwear wear`")?;
         let cost = Cost::Wear {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),

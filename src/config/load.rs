@@ -166,6 +166,14 @@ fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String
         faults,
         case.gear.teeth_pinion,
         case.gear.teeth_gear,
+        &case
+            .stage
+            .iter()
+            .map(|s| {
+                let g = s.gear_section(&case.gear);
+                [g.teeth_pinion, g.teeth_gear]
+            })
+            .collect::<Vec<_>>(),
     ));
     let s = &case.surface;
     if s.roughness_table_wear_um.len() != s.roughness_table_rms_um.len() {
@@ -217,7 +225,8 @@ fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String
 }
 
 /// The sections of a case that describe a single pair's teeth (which a train does not
-/// take yet), as written.
+/// take yet), as written. A `[[fault]]` table names its stage on a train
+/// (`fault.stage`) and is checked with the faults.
 fn single_pair_inputs(case: &Case) -> Vec<&'static str> {
     let mut out = Vec::new();
     if case.teeth != Default::default() {
@@ -225,9 +234,6 @@ fn single_pair_inputs(case: &Case) -> Vec<&'static str> {
     }
     if case.modification != Default::default() {
         out.push("[modification]");
-    }
-    if !case.fault.is_empty() {
-        out.push("[[fault]]");
     }
     out
 }

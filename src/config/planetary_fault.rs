@@ -76,6 +76,7 @@ impl PlanetaryFault {
             kind: self.kind,
             gear: PairMember::Pinion,
             tooth: self.tooth,
+            stage: None,
             crack_depth_mm: self.crack_depth_mm,
             crack_angle_deg: self.crack_angle_deg,
             crack_width_fraction: self.crack_width_fraction,

@@ -450,6 +450,8 @@ pub const KEYS: &[KeySpec] = &[
       "-"),
     k("fault.tooth", "-", Int(0, 999), "0-based index of the faulty tooth (checked against the gear's teeth).",
       "Teeth are numbered 0 to z - 1; z is at most 1000."),
+    k("fault.stage", "-", Int(1, 16), "On a gear train (`[[stage]]` tables; required there): the stage, counted from 1, whose pair holds the faulty tooth (`fault.gear` its pinion or gear, `fault.tooth` among its teeth). `gearwear stiffness`, `dynamics`, `signals` and `sweep` of dynamics take it; `wear`, `run`, `dataset`, `calibrate` and `predict` refuse a train with a fault (docs/MODEL.md 9.10). Refused on a single pair.",
+      "A train has at most 16 stages; checked against the case's stages."),
     k("fault.crack_depth_mm", "mm", Num(Range::closed(0.0, 100.0)), "Crack: depth from the root along its path (required for a crack); its reach across the tooth is checked against the root thickness.",
       "Checked against the tooth with the geometry."),
     k("fault.crack_angle_deg", "deg", Num(Range::above(0.0, 90.0)), "Crack: angle of its path to the tooth centreline (absent: 45, Chen & Shao 2011).",

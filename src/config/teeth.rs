@@ -271,6 +271,10 @@ pub struct FaultTable {
     pub gear: Member,
     /// 0-based tooth index (tooth n meets the mate in mesh cycle n, n + z, ...).
     pub tooth: i64,
+    /// The stage of a gear train whose pair holds the tooth, 1-based (required with
+    /// `[[stage]]` tables, refused without them; docs/MODEL.md 9.10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stage: Option<i64>,
     /// Crack: depth from the root along its path, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub crack_depth_mm: Option<f64>,
@@ -399,6 +403,15 @@ impl ToothFault {
             Fault::Crack { depth_m, .. } => depth_m != 0.0,
             Fault::Spall { .. } | Fault::BrokenTip { .. } => true,
         }
+    }
+
+    /// The stage of a gear train whose pair holds the tooth, 0-based (None on a single
+    /// pair; the config checks make it present and in range on a train).
+    pub fn stage_index(&self) -> Option<usize> {
+        self.table
+            .stage
+            .and_then(|s| usize::try_from(s).ok())
+            .and_then(|s| s.checked_sub(1))
     }
 
     /// The table as the case file gave it (its units, absent keys absent): for tables

@@ -14,10 +14,11 @@ pub(crate) fn teeth_problems(
     faults: &[FaultTable],
     z1: i64,
     z2: i64,
+    stage_teeth: &[[i64; 2]],
 ) -> Vec<String> {
     let mut p = array_length_problems(t, z1, z2);
     p.extend(profile_deviation_problems(m));
-    p.extend(fault_problems(faults, z1, z2));
+    p.extend(fault_problems(faults, [z1, z2], stage_teeth));
     p
 }
 
@@ -122,11 +123,22 @@ fn profile_deviation_problems(m: &ModificationSection) -> Vec<String> {
     p
 }
 
-/// Problems of the `[[fault]]` tables: a tooth index outside its gear (`z1`, `z2`: teeth of
-/// pinion and gear), keys against the kind, two tables for one fault.
-fn fault_problems(faults: &[FaultTable], z1: i64, z2: i64) -> Vec<String> {
+/// Problems of the `[[fault]]` tables: a tooth index outside its gear (`pair`: teeth of
+/// pinion and gear; on a train, `stage_teeth` of each stage, the fault's `stage` key
+/// checked first, `config::train::fault_stage_problem`), keys against the kind, two
+/// tables for one fault.
+fn fault_problems(faults: &[FaultTable], pair: [i64; 2], stage_teeth: &[[i64; 2]]) -> Vec<String> {
     let mut p = Vec::new();
     for (i, f) in faults.iter().enumerate() {
+        if let Some(problem) = super::train::fault_stage_problem(i, f.stage, stage_teeth.len()) {
+            p.push(problem);
+            continue;
+        }
+        let [z1, z2] = f
+            .stage
+            .and_then(|s| stage_teeth.get(usize::try_from(s - 1).ok()?))
+            .copied()
+            .unwrap_or(pair);
         let z = match f.gear {
             Member::Pinion => z1,
             Member::Gear => z2,
@@ -143,7 +155,7 @@ fn fault_problems(faults: &[FaultTable], z1: i64, z2: i64) -> Vec<String> {
         }
         p.extend(key_problems(f, i));
         for (j, g) in faults.iter().enumerate().take(i) {
-            if g.gear == f.gear && g.tooth == f.tooth && g.kind == f.kind {
+            if g.gear == f.gear && g.tooth == f.tooth && g.kind == f.kind && g.stage == f.stage {
                 p.push(format!(
                     "faults {j} and {i} are both a {} on {} tooth {}: give one table per fault",
                     f.kind.name(),

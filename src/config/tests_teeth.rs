@@ -12,6 +12,7 @@ fn fault(kind: FaultKind, tooth: i64) -> FaultTable {
         kind,
         gear: Member::Pinion,
         tooth,
+        stage: None,
         crack_depth_mm: None,
         crack_angle_deg: None,
         crack_width_fraction: None,
@@ -32,7 +33,7 @@ fn wrong_lengths_name_both_lengths_and_indices_the_valid_range() {
     };
     let mut crack = fault(FaultKind::Crack, 19);
     crack.spall_depth_um = Some(3.0);
-    let p = teeth_problems(&t, &ModificationSection::default(), &[crack], 19, 31);
+    let p = teeth_problems(&t, &ModificationSection::default(), &[crack], 19, 31, &[]);
     let all = p.join("\n");
     assert!(
         all.contains("18 values") && all.contains("19 teeth"),

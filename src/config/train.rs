@@ -258,3 +258,21 @@ pub fn stage_problems(stages: &[StageSpec], single_pair_inputs: &[&str]) -> Vec<
     }
     out
 }
+
+/// The problem of the `stage` key of `[[fault]]` table `i` (0-based, as the other fault
+/// messages count) on a case of `stages` `[[stage]]` tables (0: a single pair): required
+/// on a train, in 1..=stages; refused on a single pair (docs/MODEL.md 9.10).
+pub(crate) fn fault_stage_problem(i: usize, stage: Option<i64>, stages: usize) -> Option<String> {
+    match stage {
+        None if stages > 0 => Some(format!(
+            "`fault.stage` is required (fault {i}): the case is a gear train of {stages} [[stage]] tables, and each [[fault]] table names the stage whose pair holds its tooth, 1 to {stages}"
+        )),
+        Some(s) if stages == 0 => Some(format!(
+            "`fault.stage` = {s} (fault {i}) is given on a single pair: the case has no [[stage]] tables, so the fault is on the [gear] pair; remove the key"
+        )),
+        Some(s) if s < 1 || s > stages as i64 => Some(format!(
+            "`fault.stage` = {s} (fault {i}) is out of range: the train has stages 1 to {stages}"
+        )),
+        _ => None,
+    }
+}

@@ -188,6 +188,24 @@ pub fn chain_mesh_counts(teeth: &[[usize; 2]]) -> Option<Vec<u128>> {
         .collect()
 }
 
+/// Base periods of a chain of stages ([`chain_mesh_counts`]) after which every mesh is
+/// at the same phase and the same teeth again, mesh k's teeth repeating every
+/// `repeats[k]` of its mesh periods (1 when its teeth are alike; z of a gear with a
+/// faulty tooth): the smallest m with m N_k a multiple of r_k for every k,
+/// m = lcm_k(r_k / gcd(r_k, N_k)), N_k the mesh periods of mesh k in one base period.
+/// The same number as [`excitation_periods`] of the built train, from the teeth alone
+/// (the run budget's, before the model is built). None if a number overflows.
+pub fn chain_excitation_periods(teeth: &[[usize; 2]], repeats: &[usize]) -> Option<u128> {
+    let counts = chain_mesh_counts(teeth)?;
+    let mut m = 1u128;
+    for (n, r) in counts.iter().zip(repeats) {
+        let r = (*r).max(1) as u128;
+        let need = r / gcd(r, *n);
+        m = (m / gcd(m, need)).checked_mul(need)?;
+    }
+    Some(m)
+}
+
 /// Mesh periods of mesh `m` in `revolutions` (a reduced fraction) of the input.
 pub fn mesh_periods_in(sys: &GearSystem, m: usize, revolutions: (u128, u128)) -> Option<u128> {
     let (a, b) = mesh_frequency_fraction(sys, m)?;

@@ -302,6 +302,18 @@ impl Model {
             let named = s.warnings.iter().map(|w| case.stage[k].name_own_keys(w));
             warnings.extend(named.map(|w| format!("stage {}: {w}", k + 1)));
         }
+        if train.stages.iter().any(|s| s.teeth.is_some()) {
+            // A faulty stage shares its load as a pair with resolved teeth does.
+            match case.contact.load_sharing {
+                LoadSharingModel::Pedrero => {
+                    return Err(ModelError(vec![pedrero_with_resolved_teeth(case)]))
+                }
+                LoadSharingModel::Auto if !case.contact.path.is_extended() => {
+                    warnings.push(AUTO_SHARING_WITH_RESOLVED_TEETH.into())
+                }
+                LoadSharingModel::Auto | LoadSharingModel::Stiffness => {}
+            }
+        }
         let p = &train.operating.meshes[0];
         let params = DynamicParams {
             lumped: first.lumped.clone(),

@@ -4,6 +4,7 @@
 
 use super::helical::{helix_of, HelicalDynamics};
 use super::model_error::ModelError;
+use super::teeth::ToothInputs;
 use crate::config::case::{Case, DynamicsSection, GearSection, SpeedBoundary, TorqueShaft};
 use crate::config::train::StageSpec;
 use crate::contact::friction::Friction;
@@ -17,10 +18,12 @@ use crate::dynamics::model::{GearSystem, MeshOperating, MeshParts};
 use crate::dynamics::params::{AxialSupport, MeshPoint, TrainOperatingPoint};
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::summary::ResponseSummary;
+use crate::dynamics::tooth_mesh::ToothMesh;
 use crate::geometry::helical::HelicalPair;
 use crate::geometry::{GearPair, ProfileGrid};
 use crate::stiffness::mesh::{FilletSettings, MeshStiffness};
 use crate::stiffness::potential_energy::ElasticPair;
+use crate::wear::WearState;
 use std::borrow::Cow;
 
 /// One stage of a train.
@@ -47,6 +50,9 @@ pub struct Stage {
     pub axial: Option<AxialSupport>,
     /// The stage's warnings (its geometry's, its stiffness's, its keys').
     pub warnings: Vec<String>,
+    /// The stage's tooth-resolved mesh when a `[[fault]]` table names the stage and
+    /// changes its tooth (`fault.stage`, docs/MODEL.md 9.10); None: every tooth alike.
+    pub teeth: Option<ToothMesh>,
 }
 
 /// A train's model objects (see the module docs).
@@ -100,7 +106,7 @@ impl TrainModel {
         let operating = TrainOperatingPoint::of(&case.operating, &refs);
         let mut stages = Vec::new();
         for (k, (spec, pair)) in case.stage.iter().zip(pairs).enumerate() {
-            match build_stage(case, spec, pair, &operating.meshes[k], elastic) {
+            match build_stage(case, (k, spec), pair, &operating.meshes[k], elastic) {
                 Ok(s) => stages.push(s),
                 Err(e) => problems.extend(e.iter().map(|m| at_stage(k, spec.name_own_keys(m)))),
             }
@@ -231,7 +237,7 @@ impl TrainModel {
                     load_sharing: s.case.contact.load_sharing,
                     roughness_um: roughness_um[k],
                     effective_modulus_pa,
-                    teeth: None,
+                    teeth: s.teeth.as_ref(),
                     contact: &s.contact,
                 };
                 let op = MeshOperating {
@@ -285,6 +291,58 @@ impl TrainModel {
     }
 }
 
+/// The tooth-resolved mesh of stage `k` (0-based; `sc` its single-pair case, holding
+/// the `[[fault]]` tables that name the stage, `fault.stage`), built by the pair's own
+/// machinery (`study::teeth::ToothInputs`: the same checks against the tooth, the same
+/// compliances and gaps): None when no fault names the stage or none changes its tooth
+/// (a crack of zero depth), so that stage stays the healthy one bit for bit. Errors: the
+/// pair's checks of the fault against the stage's tooth.
+fn stage_teeth(
+    sc: &Case,
+    pair: &GearPair,
+    mesh: &MeshStiffness,
+    grid: &ProfileGrid,
+    p: &MeshPoint,
+) -> Result<Option<ToothMesh>, Vec<String>> {
+    if sc.fault.is_empty() {
+        return Ok(None);
+    }
+    let mut fc = sc.clone();
+    // A train's wear is refused with a fault (`refuse_fault`): the teeth are new, and
+    // only the fault makes them differ.
+    fc.wear.worn_geometry = crate::config::case::WornGeometry::Involute;
+    let inputs = ToothInputs::from_case(
+        &fc,
+        pair,
+        mesh,
+        grid,
+        [p.pinion_speed_rad_s, p.gear_speed_rad_s],
+        p.static_mesh_force_n,
+    )?;
+    Ok(inputs.map(|t| t.mesh_for(&WearState::new(grid.len()))))
+}
+
+/// A train with a tooth fault (`fault.stage`) is refused by `study` (the command as the
+/// message names it, e.g. "`gearwear wear`"): its wear, the wear-driven studies built on it (`run`, `dataset`,
+/// `calibrate`, `predict`, a wear sweep, a load spectrum) are not built with a fault (a
+/// faulty stage's mesh would need each tooth's own wear, docs/MODEL.md 9.10). Ok for a
+/// single pair or a train whose faults change no tooth.
+pub fn refuse_fault(case: &Case, study: &str) -> Result<(), ModelError> {
+    let Some(f) = (!case.stage.is_empty())
+        .then(|| case.fault.iter().find(|f| f.changes_tooth()))
+        .flatten()
+    else {
+        return Ok(());
+    };
+    Err(ModelError(vec![format!(
+        "`fault.stage` = {} ({} {} tooth {}): {study} on a gear train with a tooth fault is not built yet (the faulty stage's wear would need each tooth's own wear); `gearwear stiffness`, `gearwear dynamics`, `gearwear signals` and `gearwear sweep` of dynamics take the fault; remove the [[fault]] table for {study} on the train",
+        f.stage_index().map_or(0, |s| s + 1),
+        f.kind().name(),
+        f.gear.name(),
+        f.tooth
+    )]))
+}
+
 /// Each stage as the assembly needs it (shafts from the stages' keys; the motor's and
 /// load's inertias and couplings from `[dynamics]`).
 fn stage_elements(case: &Case, stages: &[Stage]) -> Vec<StageElements> {
@@ -322,12 +380,14 @@ fn stage_pair(gear: &GearSection) -> Result<GearPair, Vec<String>> {
 /// by its slice model (`study::train_helical`). Problems unnamed by stage.
 fn build_stage(
     case: &Case,
-    spec: &StageSpec,
+    (k, spec): (usize, &StageSpec),
     pair: GearPair,
     point: &MeshPoint,
     elastic: &ElasticPair,
 ) -> Result<Stage, Vec<String>> {
     let mut sc = stage_case(case, spec, Some(point));
+    // The stage's own faults (`fault.stage`): its single-pair case is its pair's.
+    sc.fault.retain(|f| f.stage_index() == Some(k));
     let torque = format!(
         "its pinion's torque, {} N m from `operating.load_torque_nm` = {} through the ratios,",
         crate::format::shown(point.pinion_torque_nm),
@@ -341,6 +401,15 @@ fn build_stage(
     let lumped = d.resolve(&pair.blank_estimates(d.blank_density_kg_per_m3));
     let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
     if sc.gear.helix_angle_deg != 0.0 {
+        if let Some(f) = sc.fault.iter().find(|f| f.changes_tooth()) {
+            return Err(vec![format!(
+                "`fault.stage` = {} names a helical stage ({} {} tooth {}): a tooth fault on a helical stage is not built yet (its slices would each need the fault); give the fault to a spur stage, or `stage.helix_angle_deg` = 0",
+                k + 1,
+                f.kind().name(),
+                f.gear.name(),
+                f.tooth
+            )]);
+        }
         let h = super::train_helical::helical_stage(&mut sc)?;
         return Ok(Stage {
             case: sc,
@@ -352,6 +421,7 @@ fn build_stage(
             helical: Some(h.helical),
             axial: h.axial,
             warnings: h.warnings,
+            teeth: None,
         });
     }
     let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
@@ -363,6 +433,7 @@ fn build_stage(
     )
     .map_err(|e| e.0)?;
     let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
+    let teeth = stage_teeth(&sc, &pair, &mesh, &grid, point)?;
     let mut warnings: Vec<String> = pair
         .warnings
         .iter()
@@ -380,5 +451,6 @@ fn build_stage(
         helical: None,
         axial: None,
         warnings,
+        teeth,
     })
 }

@@ -90,6 +90,8 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
         });
         let setup = if case.planetary.is_some() {
             super::plan_planetary::planetary_setup(req, &case)
+        } else if let Err(e) = crate::study::train::refuse_fault(&case, "`gearwear dataset`") {
+            Err(e.0)
         } else {
             chain_case(&case).and_then(|k| {
                 chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k))

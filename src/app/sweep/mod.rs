@@ -106,7 +106,12 @@ fn row_of(r: &CaseRecord) -> Option<SweepRow> {
 impl SweepJob {
     /// A wear sweep of a gear train under a `[load_spectrum]` is not built (each case would
     /// need the train's duty study): refused before any case runs.
+    /// A wear sweep of a train with a tooth fault (`fault.stage`) is refused too
+    /// (`study::train::refuse_fault`).
     fn refuse_train_spectrum(&self) -> Result<(), JobError> {
+        if self.run == SweepRun::Wear {
+            crate::study::train::refuse_fault(&self.base, "`gearwear sweep` of wear")?;
+        }
         if self.base.stage.is_empty()
             || self.base.load_spectrum.is_none()
             || self.run != SweepRun::Wear

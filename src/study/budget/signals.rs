@@ -165,7 +165,8 @@ pub fn record_harmonics(case: &Case) -> Option<RecordHarmonics> {
 /// The response's period (s) a steady record repeats and the tachometer shaft's speed
 /// (Hz), from the case alone: the single pair's excitation period
 /// ([`super::teeth::excitation_periods_of`] mesh periods); a train's base period
-/// (`dynamics::grid::chain_mesh_counts`) and the sensor stage's shaft. None when a count
+/// (`dynamics::grid::chain_mesh_counts`) times its fault's base periods
+/// ([`super::teeth::excitation_periods_of`]) and the sensor stage's shaft. None when a count
 /// overflows or the teeth are not positive (building the model then names the problem).
 fn record_periods(case: &Case) -> Option<(f64, f64)> {
     let f_in = case.operating.input_speed_hz;
@@ -193,7 +194,9 @@ fn record_periods(case: &Case) -> Option<(f64, f64)> {
         teeth.push([g.teeth_pinion as usize, g.teeth_gear as usize]);
     }
     let counts = crate::dynamics::grid::chain_mesh_counts(&teeth)?;
-    let period = counts[0] as f64 / (f_in * teeth[0][0] as f64);
+    // A faulty stage repeats over several base periods (docs/MODEL.md 9.10).
+    let faults = super::teeth::excitation_periods_of(case) as f64;
+    let period = faults * counts[0] as f64 / (f_in * teeth[0][0] as f64);
     let stage = case.signals.sensor_stage_index().min(teeth.len() - 1);
     let mut pinion = f_in;
     for t in &teeth[..stage] {

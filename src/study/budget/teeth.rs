@@ -29,7 +29,15 @@ fn differ(v: &Option<Vec<f64>>) -> bool {
 /// divides this; per-tooth wear never lengthens it (a tooth's wear follows the
 /// engagements it meets, which repeat with the period), so this bounds the period over
 /// the whole wear study.
+///
+/// A gear train (`[[stage]]`): base periods of the train (`dynamics::grid::base_period`)
+/// its excitation repeats over, each faulty stage's teeth repeating over z of its faulty
+/// gear (`dynamics::grid::chain_excitation_periods`, docs/MODEL.md 9.10); 1 without a
+/// fault; `usize::MAX` (refused by the budget) when a number overflows.
 pub fn excitation_periods_of(case: &Case) -> usize {
+    if !case.stage.is_empty() {
+        return train_excitation_periods(case);
+    }
     let t = &case.teeth;
     let drawn = t.accuracy_grade.is_some();
     let fault_on = |m: Member| case.fault.iter().any(|f| f.gear == m);
@@ -63,6 +71,30 @@ pub fn excitation_periods_of(case: &Case) -> usize {
     )
 }
 
+/// [`excitation_periods_of`] a gear train.
+fn train_excitation_periods(case: &Case) -> usize {
+    let mut teeth = Vec::with_capacity(case.stage.len());
+    let mut repeats = Vec::with_capacity(case.stage.len());
+    for (k, st) in case.stage.iter().enumerate() {
+        let g = st.gear_section(&case.gear);
+        let z = [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize];
+        let faulty = |m: Member| {
+            case.fault
+                .iter()
+                .any(|f| f.stage_index() == Some(k) && f.gear == m && f.changes_tooth())
+        };
+        let r = |m: Member, z: usize| if faulty(m) { z } else { 1 };
+        teeth.push(z);
+        repeats.push(crate::dynamics::tooth_mesh::lcm(
+            r(Member::Pinion, z[0]),
+            r(Member::Gear, z[1]),
+        ));
+    }
+    crate::dynamics::grid::chain_excitation_periods(&teeth, &repeats)
+        .and_then(|p| usize::try_from(p).ok())
+        .unwrap_or(usize::MAX)
+}
+
 /// Mesh periods of run-in the budget allows a tooth-resolved evaluation (the measured
 /// run-in of the paper's case is 8; slow decay at high speed raises it).
 const RUN_IN_PERIODS: f64 = 30.0;
@@ -92,11 +124,41 @@ pub fn budget_term(
     }
     let p = excitation_periods_of(case) as f64;
     let extra = (p - 1.0).max(0.0);
-    let run_in = if p > 1.0 { RUN_IN_PERIODS } else { 0.0 };
+    // A train: P and the run-in counted in its base periods (run-in at most P,
+    // `dynamics::hunting::run_in_periods`), each costing `train_factor` single-pair mesh
+    // periods; its wear (the per-tooth records) is refused with a fault.
+    let train = !case.stage.is_empty();
+    let run_in = match (p > 1.0, train) {
+        (false, _) => 0.0,
+        (true, false) => RUN_IN_PERIODS,
+        (true, true) => RUN_IN_PERIODS.min(p),
+    };
+    let scale = super::evaluation::train_factor(case);
     let p_e = case.numerics.evaluated_mesh_periods as f64;
     let recorded = s_dyn * p.max(p_e);
     let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
     let grid = case.wear.points_per_profile as f64;
+    let records = if train { 0.0 } else { records };
+    if train {
+        return Some(Term {
+            what:
+                "the tooth fault of a train stage (the faulty gear's teeth over the train's period)",
+            seconds: (dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
+                + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP)
+                * scale,
+            bytes: kept
+                * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
+                    - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
+                * scale,
+            keys: &[
+                "fault.stage",
+                "fault.gear",
+                "stage.teeth_pinion",
+                "stage.teeth_gear",
+                "numerics.steps_per_mesh_period",
+            ],
+        });
+    }
     Some(Term {
         what: "the tooth-resolved mesh (every tooth's own excitation over its period)",
         seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
