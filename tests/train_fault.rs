@@ -313,4 +313,58 @@ fn a_stage_fault_is_refused_by_key_where_it_is_wrong_or_not_built() {
         ],
         &["`fault.stage` = 2", "helical stage", "not built yet"],
     );
+    // A wear sweep whose base has a crack of zero size (allowed: it changes no tooth) and
+    // whose varied depth makes a crack: that case is refused, not worn as new teeth.
+    let zero = reducer_with(d.path(), "zero.toml", &crack(1, "gear", 3, 0.0));
+    let out = d.path().join("sweep");
+    let o = common::gearwear(&[
+        "-q",
+        "sweep",
+        "--config",
+        &zero,
+        "--set",
+        "wear.total_cycles=2e4",
+        "--vary",
+        "fault.1.crack_depth_mm=0,1.5",
+        "--run",
+        "wear",
+        "--no-budget",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = common::stderr(&o);
+    assert!(!o.status.success(), "{err}");
+    assert!(
+        err.contains("1 of 2 cases failed")
+            && err.contains("`fault.stage` = 1")
+            && err.contains("the train's wear"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_periods_of_a_stage_fault_are_the_shared_shafts_revolutions_that_bring_its_tooth_back() {
+    // The reducer's base period is one revolution of the shaft the two stages share (31
+    // mesh periods of stage 1, whose gear has 31 teeth, and 23 of stage 2, whose pinion has
+    // 23). A fault on stage 2's gear (z = 47) comes back after m base periods with 23 m a
+    // multiple of 47: m = 47; a fault on stage 1's pinion (z = 19) with 31 m a multiple
+    // of 19: m = 19; on stage 2's pinion (z = 23, one per base period): m = 1; stage 2's
+    // gear with 46 teeth: 23 m a multiple of 46, m = 2. Counted by hand here, against the
+    // solver's count (`dynamics::grid::excitation_periods` of the built system) and the
+    // budget's (`study::budget::excitation_periods_of`, from the case alone).
+    let text = std::fs::read_to_string(REDUCER).unwrap();
+    for (fault, sets, hand) in [
+        (crack(2, "gear", 3, 1.0), vec![], 47),
+        (crack(1, "pinion", 0, 1.0), vec![], 19),
+        (crack(2, "pinion", 5, 1.0), vec![], 1),
+        (crack(2, "gear", 3, 1.0), vec!["stage.2.teeth_gear=46"], 2),
+    ] {
+        let m = model(&format!("{text}{fault}"), &sets);
+        let (gap, ext) = (PairGap::none(), ExternalError::none());
+        let sys = m.system(&gap, &ext, 0.0);
+        let solver = gearwear::dynamics::grid::excitation_periods(&sys);
+        let budget = gearwear::study::budget::excitation_periods_of(&m.case);
+        assert_eq!(solver, Some(hand), "{fault} {sets:?}: solver");
+        assert_eq!(budget, hand, "{fault} {sets:?}: budget");
+    }
 }

@@ -90,6 +90,14 @@ impl StiffnessJob {
         for w in &study.warnings {
             observer.warning(w);
         }
+        if let Some(f) = study.section.active_fault() {
+            // The summary holds the healthy meshes (a planetary stiffness study has no
+            // per-tooth output yet): say so rather than let the fault pass unseen.
+            observer.warning(&format!(
+                "`planetary.fault` on {}: `gearwear stiffness` of a planetary set gives its healthy meshes' stiffness, phases and frequencies; the fault's stiffness reduction enters `gearwear dynamics`, `gearwear signals` and the sweep of dynamics",
+                f.who()
+            ));
+        }
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::new(self.name(), &self.case);
         publish::publish(

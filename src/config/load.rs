@@ -175,6 +175,11 @@ fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String
             })
             .collect::<Vec<_>>(),
     ));
+    problems.extend(super::train::helical_stage_fault_problems(
+        &case.stage,
+        &case.gear,
+        faults,
+    ));
     let s = &case.surface;
     if s.roughness_table_wear_um.len() != s.roughness_table_rms_um.len() {
         problems.push(format!(

@@ -13,6 +13,7 @@
 use super::derivable::Derivable;
 use super::gear::{GearSection, HelixHand};
 use super::lumped::DynamicsSection;
+use super::teeth::{FaultKind, FaultTable};
 use serde::{Deserialize, Serialize};
 
 /// One `[[stage]]` table: every key optional (absent: `[gear]`'s or `[dynamics]`'s).
@@ -275,4 +276,36 @@ pub(crate) fn fault_stage_problem(i: usize, stage: Option<i64>, stages: usize) -
         )),
         _ => None,
     }
+}
+
+/// The `[[fault]]` tables that put a tooth fault on a helical stage (its own
+/// `helix_angle_deg`, or the case's it takes): not built (each face slice would need the
+/// fault; docs/MODEL.md 9.10), refused when the case is read, before any budget. A crack
+/// of zero depth changes no tooth and passes (as everywhere).
+pub(crate) fn helical_stage_fault_problems(
+    stages: &[StageSpec],
+    gear: &GearSection,
+    faults: &[FaultTable],
+) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, f) in faults.iter().enumerate() {
+        let Some(s) = f
+            .stage
+            .and_then(|s| stages.get(usize::try_from(s - 1).ok()?))
+        else {
+            continue;
+        };
+        let helix = s.helix_angle_deg.unwrap_or(gear.helix_angle_deg);
+        let zero_crack = f.kind == FaultKind::Crack && f.crack_depth_mm == Some(0.0);
+        if helix != 0.0 && !zero_crack {
+            out.push(format!(
+                "`fault.stage` = {} (fault {i}, {} {} tooth {}) names a helical stage (helix angle {helix} deg): a tooth fault on a helical stage is not built yet (each face slice would need it); give the fault to a spur stage, or `stage.helix_angle_deg` = 0",
+                f.stage.unwrap_or(0),
+                f.kind.name(),
+                f.gear.name(),
+                f.tooth
+            ));
+        }
+    }
+    out
 }

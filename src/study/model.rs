@@ -188,6 +188,10 @@ fn planetary_refusal() -> String {
     "`[planetary]` is a planetary set: this study is not yet built for it, so it would give the result of the `[gear]` pair instead; only `gearwear stiffness` (its meshes' stiffness, phases, frequencies and the lumped model's natural frequencies), `gearwear dynamics`, `gearwear signals` (a sensor on the fixed ring), `gearwear wear` (every member's wear), `gearwear dataset` (run-to-failure records of the ring sensor), `gearwear run` (those studies with a report) and `gearwear sweep` of dynamics (each mesh's force and each planet's load sharing per case) take a planetary set so far".to_string()
 }
 
+/// The studies built on [`Model::from_case`] that wear a gear train, as a refusal names
+/// them.
+const TRAIN_WEAR_STUDIES: &str = "a study of the train's wear";
+
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
@@ -196,6 +200,10 @@ impl Model {
         if let Some(p) = helical_train_refusal(case) {
             return Err(ModelError(vec![p]));
         }
+        // The studies on this model wear the train: a stage's tooth fault is not built
+        // into its wear (docs/MODEL.md 9.10), whichever study asks (a wear sweep's cases
+        // included, whose base may have a fault of zero size).
+        super::train::refuse_fault(case, TRAIN_WEAR_STUDIES)?;
         Self::spur_or_train(case)
     }
 

@@ -70,7 +70,7 @@ impl PlanetaryStudy {
         }
         if let Some(f) = case.fault.first() {
             return Err(ModelError(vec![format!(
-                "`fault.gear` = \"{}\" with [planetary]: a pair's `[[fault]]` does not apply to a planetary set; give its fault as a `[[planetary.fault]]` table (`gear` = \"sun\" or \"planet\")",
+                "`fault.gear` = \"{}\" with [planetary]: a pair's `[[fault]]` does not apply to a planetary set; give its fault as a `[[planetary.fault]]` table (`gear` = \"sun\", \"planet\" or \"ring\")",
                 f.gear.name()
             )]));
         }

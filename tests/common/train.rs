@@ -31,9 +31,11 @@ bearing_damping_gear_n_s_per_m = 3e5
 centre_line_deg = 90
 "#;
 
+/// The train's model of its dynamics (`Model::dynamics_from_case`: a stage's tooth fault
+/// and helical stages taken; the same as `Model::from_case` otherwise).
 pub fn model(text: &str, sets: &[&str]) -> Model {
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-    Model::from_case(&load_case(text, &sets).unwrap()).unwrap()
+    Model::dynamics_from_case(&load_case(text, &sets).unwrap()).unwrap()
 }
 
 /// M (diagonal), K at the mean mesh stiffnesses and C of the two-stage train, assembled

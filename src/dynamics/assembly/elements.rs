@@ -51,7 +51,8 @@ pub struct Bearing {
 
 /// An axial (thrust) bearing: a body held to ground along its axis by a spring and a
 /// damper (docs/MODEL.md 11.6). A body with one carries an axial coordinate z (m, along
-/// the pinion's angular velocity, the same direction for every body of parallel axes).
+/// its mesh's pinion's angular velocity: a pair's two bodies share the direction; in a
+/// train each stage counts z along its own pinion's, docs/MODEL.md 4.3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AxialBearing {
     /// Index of the body the bearing holds.

@@ -244,15 +244,19 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     // quasi-static evaluation over the excitation period, kept for its table.
     let stiffness_te = if job == Job::Stiffness { 1.0 } else { 0.0 };
     let p = &c.periods;
-    terms.extend(super::teeth::budget_term(
-        case,
-        c.evals,
-        c.work.quasi_modes * c.u_q + stiffness_te,
-        c.work.kept + stiffness_te,
-        c.records,
-        p.s_dyn,
-        p.s,
-    ));
+    if job == Job::Stiffness && !case.stage.is_empty() {
+        terms.extend(super::teeth::train_stiffness_term(case, p.s));
+    } else {
+        terms.extend(super::teeth::budget_term(
+            case,
+            c.evals,
+            c.work.quasi_modes * c.u_q + stiffness_te,
+            c.work.kept + stiffness_te,
+            c.records,
+            p.s_dyn,
+            p.s,
+        ));
+    }
     terms.extend(super::planetary::fault_term(
         case,
         c.evals,

@@ -88,16 +88,38 @@ pub fn train_factor(case: &Case) -> f64 {
     if case.stage.is_empty() {
         return 1.0;
     }
-    let states = 4.0 + 12.0 * case.stage.len() as f64;
-    base_mesh_periods(case) * (states / 16.0).max(1.0)
+    base_mesh_periods(case) * state_factor(case)
+}
+
+/// A train's state over the single pair's 16, at least 1: what a step and a recorded
+/// sample cost more.
+fn state_factor(case: &Case) -> f64 {
+    // Each helical stage with axial bearings adds its two bodies' axial coordinates
+    // (docs/MODEL.md 4.3): 4 states.
+    let axial = case
+        .stage
+        .iter()
+        .filter(|s| {
+            s.gear_section(&case.gear).helix_angle_deg != 0.0
+                && s.dynamics_section(&case.dynamics)
+                    .axial_bearings()
+                    .iter()
+                    .any(Option::is_some)
+        })
+        .count();
+    let states = 4.0 + 12.0 * case.stage.len() as f64 + 4.0 * axial as f64;
+    (states / 16.0).max(1.0)
 }
 
 /// Time factor of a dynamic evaluation of a helical pair with axial degrees of freedom
 /// (docs/MODEL.md 11.6: any `dynamics.bearing_axial_stiffness_*` given), 1 otherwise: its
 /// state leaves the fixed 8-coordinate path for the general one, measured 7.3 ms against
-/// 4.6 ms for a cold steady state (beta 15 deg, 400 slices; 1.6), counted as 2.
+/// 4.6 ms for a cold steady state (beta 15 deg, 400 slices; 1.6), counted as 2. A train
+/// takes the general path whatever its stages, its axial coordinates counted by
+/// [`train_factor`]: 1.
 pub fn axial_factor(case: &Case) -> f64 {
-    let axial = case.gear.helix_angle_deg != 0.0
+    let axial = case.stage.is_empty()
+        && case.gear.helix_angle_deg != 0.0
         && case.dynamics.axial_bearings().iter().any(Option::is_some);
     if axial {
         2.0
@@ -110,6 +132,25 @@ pub fn axial_factor(case: &Case) -> f64 {
 /// (`dynamics::grid::chain_mesh_counts`, each stage's teeth at least 1); infinite when it
 /// cannot be counted (refused).
 pub fn base_mesh_periods(case: &Case) -> f64 {
+    mesh_counts(case).map_or(f64::INFINITY, |c| c.iter().sum())
+}
+
+/// How many more samples a recorded base period of a train holds than a single pair's
+/// mesh period, each sample of a larger state: max_k N_k (`dynamics::grid::train_nodes`
+/// steps the base period at the shortest mesh period over the steps, so its samples follow
+/// the mesh of most periods, not their sum) x states / 16. 1 for a single pair; infinite
+/// when the train's base period cannot be counted.
+pub fn train_record_factor(case: &Case) -> f64 {
+    if case.stage.is_empty() {
+        return 1.0;
+    }
+    let most = mesh_counts(case).map_or(f64::INFINITY, |c| c.iter().fold(0.0, |a, b| a.max(*b)));
+    most * state_factor(case)
+}
+
+/// N_k of each mesh of a train's base period (`dynamics::grid::chain_mesh_counts`), or
+/// None when it overflows.
+fn mesh_counts(case: &Case) -> Option<Vec<f64>> {
     let teeth: Vec<[usize; 2]> = case
         .stage
         .iter()
@@ -118,8 +159,6 @@ pub fn base_mesh_periods(case: &Case) -> f64 {
             [g.teeth_pinion.max(1) as usize, g.teeth_gear.max(1) as usize]
         })
         .collect();
-    match crate::dynamics::grid::chain_mesh_counts(&teeth) {
-        Some(counts) => counts.iter().map(|c| *c as f64).sum::<f64>(),
-        None => f64::INFINITY,
-    }
+    crate::dynamics::grid::chain_mesh_counts(&teeth)
+        .map(|counts| counts.iter().map(|c| *c as f64).collect())
 }

@@ -73,6 +73,15 @@ pub fn excitation_periods_of(case: &Case) -> usize {
 
 /// [`excitation_periods_of`] a gear train.
 fn train_excitation_periods(case: &Case) -> usize {
+    let (teeth, repeats) = stage_teeth_and_repeats(case);
+    crate::dynamics::grid::chain_excitation_periods(&teeth, &repeats)
+        .and_then(|p| usize::try_from(p).ok())
+        .unwrap_or(usize::MAX)
+}
+
+/// Each stage's teeth (pinion, gear; at least 1) and the mesh periods its teeth repeat
+/// over: the lcm of its faulty gears' teeth (`fault.stage`), 1 for a healthy stage.
+fn stage_teeth_and_repeats(case: &Case) -> (Vec<[usize; 2]>, Vec<usize>) {
     let mut teeth = Vec::with_capacity(case.stage.len());
     let mut repeats = Vec::with_capacity(case.stage.len());
     for (k, st) in case.stage.iter().enumerate() {
@@ -90,9 +99,32 @@ fn train_excitation_periods(case: &Case) -> usize {
             r(Member::Gear, z[1]),
         ));
     }
-    crate::dynamics::grid::chain_excitation_periods(&teeth, &repeats)
-        .and_then(|p| usize::try_from(p).ok())
-        .unwrap_or(usize::MAX)
+    (teeth, repeats)
+}
+
+/// `gearwear stiffness` of a train with a tooth fault: each faulty stage's static
+/// transmission error over its own repeat (its pair alone, over the mesh periods its
+/// faulty teeth repeat over) at a single pair's cost, `s` quasi-static steps a mesh
+/// period; None without a fault. (The train's dynamic period does not enter: the
+/// stiffness study solves each stage's pair by itself.)
+pub fn train_stiffness_term(case: &Case, s: f64) -> Option<Term> {
+    let periods: f64 = stage_teeth_and_repeats(case)
+        .1
+        .iter()
+        .filter(|r| **r > 1)
+        .map(|r| *r as f64)
+        .sum();
+    (periods > 0.0).then(|| Term {
+        what: "the static transmission error of each faulty train stage over its teeth",
+        seconds: s * periods * SECONDS_PER_QUASI_STATIC_STEP,
+        bytes: s * periods * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE),
+        keys: &[
+            "fault.stage",
+            "fault.gear",
+            "stage.teeth_pinion",
+            "stage.teeth_gear",
+        ],
+    })
 }
 
 /// Mesh periods of run-in the budget allows a tooth-resolved evaluation (the measured
@@ -149,7 +181,7 @@ pub fn budget_term(
             bytes: kept
                 * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
                     - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
-                * scale,
+                * super::evaluation::train_record_factor(case),
             keys: &[
                 "fault.stage",
                 "fault.gear",
