@@ -114,7 +114,7 @@ pub fn train_stiffness_term(case: &Case, s: f64) -> Option<Term> {
         .filter(|r| **r > 1)
         .map(|r| *r as f64)
         .sum();
-    (periods > 0.0).then(|| Term {
+    (periods > 0.0).then_some(Term {
         what: "the static transmission error of each faulty train stage over its teeth",
         seconds: s * periods * SECONDS_PER_QUASI_STATIC_STEP,
         bytes: s * periods * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE),
