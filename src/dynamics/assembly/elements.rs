@@ -63,6 +63,25 @@ pub struct AxialBearing {
     pub damping_n_s_per_m: f64,
 }
 
+impl AxialBearing {
+    /// The bearings of a pair's two `bodies` (pinion, gear) from their (stiffness N/m,
+    /// damping N s/m), each body its own bearing to ground; a body without one (None) is
+    /// held rigidly, with no axial coordinate.
+    pub(crate) fn of_pair(bodies: [usize; 2], bearings: [Option<(f64, f64)>; 2]) -> Vec<Self> {
+        bodies
+            .into_iter()
+            .zip(bearings)
+            .filter_map(|(body, kc)| {
+                kc.map(|(k, c)| AxialBearing {
+                    body,
+                    stiffness_n_per_m: k,
+                    damping_n_s_per_m: c,
+                })
+            })
+            .collect()
+    }
+}
+
 /// A shaft or coupling between two bodies that turn together: a torsional spring and
 /// damper on the difference of their rotations and, where the shaft carries two gears, a
 /// lateral spring and damper between their centres (0: none).

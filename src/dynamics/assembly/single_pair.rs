@@ -22,17 +22,7 @@ impl Elements {
     pub fn single_pair(params: &DynamicParams, pair: &GearPair) -> Self {
         let l = &params.lumped;
         let axial_bearings = params.axial.map_or_else(Vec::new, |a| {
-            [PINION, GEAR]
-                .into_iter()
-                .zip(a.bearings)
-                .filter_map(|(body, kc)| {
-                    kc.map(|(k, c)| AxialBearing {
-                        body,
-                        stiffness_n_per_m: k,
-                        damping_n_s_per_m: c,
-                    })
-                })
-                .collect()
+            AxialBearing::of_pair([PINION, GEAR], a.bearings)
         });
         let body = |name: &str, kind, mass_kg, inertia_kg_m2, lateral| Body {
             name: name.into(),

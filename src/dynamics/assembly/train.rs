@@ -150,16 +150,5 @@ impl Elements {
 /// A stage's axial bearings on its pinion and gear (`bodies`): each body on its own
 /// bearing to ground, two gears on one shaft not tied axially (docs/MODEL.md 4.3).
 fn stage_axial_bearings(s: &StageElements, bodies: [usize; 2]) -> Vec<AxialBearing> {
-    let kc = s.axial.map_or([None, None], |a| a.bearings);
-    bodies
-        .into_iter()
-        .zip(kc)
-        .filter_map(|(body, kc)| {
-            kc.map(|(k, c)| AxialBearing {
-                body,
-                stiffness_n_per_m: k,
-                damping_n_s_per_m: c,
-            })
-        })
-        .collect()
+    AxialBearing::of_pair(bodies, s.axial.map_or([None, None], |a| a.bearings))
 }
