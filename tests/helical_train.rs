@@ -134,28 +134,7 @@ fn a_two_stage_train_with_a_helical_stage_assembles_the_matrices_written_by_hand
     c[(14, 14)] = 2e5;
     k[(15, 15)] = 7e8;
     c[(15, 15)] = cg;
-    for (a, b, ks, cs) in [
-        (
-            8,
-            9,
-            d.coupling_stiffness_motor_nm_per_rad,
-            d.coupling_damping_motor_nm_s_per_rad,
-        ),
-        (10, 11, 2e5, 5.0),
-        (
-            12,
-            13,
-            d.coupling_stiffness_brake_nm_per_rad,
-            d.coupling_damping_brake_nm_s_per_rad,
-        ),
-    ] {
-        for (mat, v) in [(&mut k, ks), (&mut c, cs)] {
-            mat[(a, a)] += v;
-            mat[(b, b)] += v;
-            mat[(a, b)] -= v;
-            mat[(b, a)] -= v;
-        }
-    }
+    common::train::add_torsional_springs(&mut k, &mut c, &m);
     c[(8, 8)] += m.case.operating.motor_slip_damping_nm_s_per_rad;
     assert_eq!(asm.stiffness(), &k);
     assert_eq!(asm.damping(), &c);

@@ -116,28 +116,7 @@ pub fn two_stage_parts_by_hand(m: &Model) -> HandTrain {
         mass[8 + b] = *j;
     }
     // Torsional springs: motor-pinion 1, gear 1-pinion 2 (the shaft), gear 2-brake.
-    for (a, b, ks, cs) in [
-        (
-            8,
-            9,
-            d.coupling_stiffness_motor_nm_per_rad,
-            d.coupling_damping_motor_nm_s_per_rad,
-        ),
-        (10, 11, 2e5, 5.0),
-        (
-            12,
-            13,
-            d.coupling_stiffness_brake_nm_per_rad,
-            d.coupling_damping_brake_nm_s_per_rad,
-        ),
-    ] {
-        for (mat, v) in [(&mut k, ks), (&mut c, cs)] {
-            mat[(a, a)] += v;
-            mat[(b, b)] += v;
-            mat[(a, b)] -= v;
-            mat[(b, a)] -= v;
-        }
-    }
+    add_torsional_springs(&mut k, &mut c, m);
     let c_fixed = c.clone();
     c[(8, 8)] += m.case.operating.motor_slip_damping_nm_s_per_rad;
     let mut meshes = Vec::new();
@@ -299,4 +278,34 @@ pub fn neglected_compliance(train: &Model) -> f64 {
     let k2 = s2.mesh.mean_stiffness_n_per_m() * r_p2 * r_p2;
     let k_b = s2.lumped.bearing_stiffness_pinion_n_per_m * r_p2 * r_p2;
     k1 / k2 + k1 / 1e10 + k1 / k_b
+}
+
+/// The two-stage train's torsional springs and dampers written into `k` and `c` at the
+/// rotation coordinates 8..=13 (motor, pinion 1, gear 1, pinion 2, gear 2, brake): the
+/// motor coupling, the shaft between the stages (2e5 N m/rad, 5 N m s/rad, TWO_STAGE's),
+/// the brake coupling, each +v on its two diagonals and -v off them.
+pub fn add_torsional_springs(k: &mut DMatrix<f64>, c: &mut DMatrix<f64>, m: &Model) {
+    let d = &m.case.dynamics;
+    for (a, b, ks, cs) in [
+        (
+            8,
+            9,
+            d.coupling_stiffness_motor_nm_per_rad,
+            d.coupling_damping_motor_nm_s_per_rad,
+        ),
+        (10, 11, 2e5, 5.0),
+        (
+            12,
+            13,
+            d.coupling_stiffness_brake_nm_per_rad,
+            d.coupling_damping_brake_nm_s_per_rad,
+        ),
+    ] {
+        for (mat, v) in [(&mut *k, ks), (&mut *c, cs)] {
+            mat[(a, a)] += v;
+            mat[(b, b)] += v;
+            mat[(a, b)] -= v;
+            mat[(b, a)] -= v;
+        }
+    }
 }

@@ -362,6 +362,9 @@ impl TrainMesh<'_> {
                 ms.share[..n].copy_from_slice(&stiffness_shares.unwrap_or_default()[..n])
             }
         }
+        // The normal section's radius over the transverse one (helical lines,
+        // docs/MODEL.md 11.1; exactly 1 on a spur pair, so 1 x R there), read once.
+        let normal = self.parts.contact.normal_radius_factor();
         for i in 0..n {
             // A pair load below zero exists only inside a step whose frozen contact mode
             // is about to switch; the contact and friction see no load then.
@@ -371,9 +374,6 @@ impl TrainMesh<'_> {
             let rho2 = self.parts.pair.rho_gear(rho1);
             let width = self.parts.pair.face_width_m * (1.0 - ms.width_loss[i]);
             let e_star = self.parts.effective_modulus_pa;
-            // The normal section's radius (helical lines; exactly the transverse one, 1 x R,
-            // on a spur pair).
-            let normal = self.parts.contact.normal_radius_factor();
             let radius = match ms.curvature_change[i] {
                 0.0 => effective_radius_m(rho1, rho2),
                 dk => worn_radius(rho1, rho2, dk),
