@@ -88,6 +88,43 @@ fn one_slice_at_a_vanishing_helix_angle_is_the_spur_pair() {
 }
 
 #[test]
+fn many_slices_at_vanishing_helix_angles_are_the_spur_pair() {
+    // The default 100 slices at helix angles whose line L = b tan(beta_b) ranges from far
+    // below the rounding of a position on the path (1e-20 deg: L ~ 3e-24 m) to below the
+    // line table's spacing (1e-9 and 1e-4 deg: L ~ 3e-13 and 3e-8 m): the slices are in
+    // phase, each a spur pair of width b / N, and the potential-energy stiffness is linear
+    // in width, so the line is the spur pair of the whole face. The responses agree as in
+    // the one-slice test above (rounding of N k_slice against k, cos beta_b = 1 - 1e-12
+    // at most, amplified by the steady-state solver): 1e-9 relative allowed.
+    let common = [
+        "contact.path=\"nominal\"",
+        "contact.load_sharing=\"stiffness\"",
+    ];
+    let a = ResponseSummary::of(&steady(&spur(&common)));
+    for beta in ["1e-20", "1e-9", "1e-4"] {
+        let angle = format!("gear.helix_angle_deg={beta}");
+        let mut h = common.to_vec();
+        h.extend([angle.as_str(), "stiffness.slices=100"]);
+        let b = ResponseSummary::of(&steady(&helical(&h)));
+        for (x, y, what) in [
+            (a.mesh_force_mean_n, b.mesh_force_mean_n, "mean force"),
+            (a.mesh_force_max_n, b.mesh_force_max_n, "max force"),
+            (a.dte_max_m, b.dte_max_m, "max DTE"),
+            (
+                a.friction_force_max_n,
+                b.friction_force_max_n,
+                "max friction",
+            ),
+        ] {
+            assert!(
+                (x - y).abs() <= 1e-9 * x.abs(),
+                "{what} at {beta} deg: spur {x}, helical {y}"
+            );
+        }
+    }
+}
+
+#[test]
 fn the_mean_axial_reaction_is_the_tangential_force_times_tan_beta_b() {
     // Statics: over a period of the steady state every acceleration averages to zero, so
     // the pinion's torque balance gives a mean mesh force T_p / r_b1 exactly (no friction:
