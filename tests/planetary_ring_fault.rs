@@ -57,8 +57,9 @@ fn differing(span: usize, per: usize, f: impl Fn(f64) -> f64, g: impl Fn(f64) ->
 }
 
 /// Checks that the samples `changed` (over one period of `span` cycles) form one interval
-/// around `c0` (modulo the span) as long as `eps` cycles, within a sample at each end.
-fn one_dip_around(changed: &[f64], span: f64, c0: f64, eps: f64, per: usize, what: &str) {
+/// around `c0` (modulo the span) as long as `eps` cycles, within a sample at each end;
+/// returns the cycle (in [0, span)) where the interval starts, measured from the samples.
+fn one_dip_around(changed: &[f64], span: f64, c0: f64, eps: f64, per: usize, what: &str) -> f64 {
     assert!(!changed.is_empty(), "{what}: the fault never meets it");
     // Offsets from c0 in (-span / 2, span / 2].
     let mut off: Vec<f64> = changed
@@ -89,6 +90,30 @@ fn one_dip_around(changed: &[f64], span: f64, c0: f64, eps: f64, per: usize, wha
         ((hi - lo) * per as f64).round() as usize + 1,
         "{what}: the dip is not one interval"
     );
+    (c0 + lo).rem_euclid(span)
+}
+
+/// Checks that each planet's dip starts where planet 1's does plus the cycles the faulty
+/// tooth takes to travel from planet 1 to it, `travel(psi_k)`, measured from the samples
+/// (both starts on the same sampling grid: equal to rounding, 1e-9 of a cycle, when the
+/// travel is a whole number of samples, else within one sample).
+fn starts_follow_travel(
+    starts: &[f64],
+    psi: &[f64],
+    span: f64,
+    per: usize,
+    travel: impl Fn(f64) -> f64,
+    what: &str,
+) {
+    for (k, (start, psi_k)) in starts.iter().zip(psi).enumerate() {
+        let d = (start - starts[0] - travel(*psi_k)).rem_euclid(span);
+        let miss = d.min(span - d);
+        assert!(
+            miss <= 1.0 / per as f64 + 1e-9,
+            "{what}: planet {}'s dip starts {miss} cycles off planet 1's plus the tooth's travel",
+            k + 1
+        );
+    }
 }
 
 /// The ring fault's dips for every planet of the set `keys`, ring tooth `tooth`.
@@ -106,6 +131,7 @@ fn ring_dips(keys: &str, tooth: usize) {
     let gamma_rs = set.ring_sun_phase();
     let per = 50;
     assert_eq!(faulty.meshes.periods(), zr);
+    let mut starts = Vec::new();
     for (k, psi) in set.planet_angles_rad.iter().enumerate() {
         let c0 = (gamma_rs + tooth as f64 - zr as f64 * psi / (2.0 * PI)).rem_euclid(zr as f64);
         let changed = differing(
@@ -115,7 +141,7 @@ fn ring_dips(keys: &str, tooth: usize) {
             |c| faulty.meshes.ring_n_per_m(k, c),
         );
         let what = format!("{keys:?}, planet {}", k + 1);
-        one_dip_around(&changed, zr as f64, c0, eps, per, &what);
+        starts.push(one_dip_around(&changed, zr as f64, c0, eps, per, &what));
         for c in &changed {
             assert!(faulty.meshes.ring_n_per_m(k, *c) < healthy.meshes.ring_n_per_m(k, *c));
         }
@@ -128,6 +154,20 @@ fn ring_dips(keys: &str, tooth: usize) {
         )
         .is_empty());
     }
+    // Independent of the numbering's reference gamma_rs: in the carrier frame the ring
+    // turns against the sun's sense, one ring pitch (2 pi / z_r) per mesh cycle, so the
+    // faulty tooth travels from planet 1 (at 0) to planet k (at psi_k in the sun's sense)
+    // through 2 pi - psi_k, z_r (2 pi - psi_k) / 2 pi cycles; its contact with planet k
+    // starts that much after its contact with planet 1 (the same approach on every planet).
+    let travel = |psi: f64| zr as f64 * (2.0 * PI - psi) / (2.0 * PI);
+    starts_follow_travel(
+        &starts,
+        &set.planet_angles_rad,
+        zr as f64,
+        per,
+        travel,
+        keys,
+    );
 }
 
 #[test]
@@ -149,6 +189,7 @@ fn a_sun_tooth_meets_each_unequally_spaced_planet_at_its_own_phase() {
     let per = 200;
     let gammas = healthy.set.sun_planet_phases();
     assert!(gammas[2] > 0.1, "planet 3's phase {} is whole", gammas[2]);
+    let mut starts = Vec::new();
     for (k, psi) in healthy.set.planet_angles_rad.iter().enumerate() {
         let c0 = (tooth as f64 + zs as f64 * psi / (2.0 * PI)).rem_euclid(zs as f64);
         let changed = differing(
@@ -157,15 +198,21 @@ fn a_sun_tooth_meets_each_unequally_spaced_planet_at_its_own_phase() {
             |c| healthy.meshes.sun_n_per_m(k, c),
             |c| faulty.meshes.sun_n_per_m(k, c),
         );
-        one_dip_around(
+        starts.push(one_dip_around(
             &changed,
             zs as f64,
             c0,
             eps,
             per,
             &format!("planet {}", k + 1),
-        );
+        ));
     }
+    // In the carrier frame the sun turns in its own sense, one sun pitch per mesh cycle:
+    // its faulty tooth reaches planet k (at psi_k in that sense) z_s psi_k / 2 pi cycles
+    // after planet 1.
+    let travel = |psi: f64| zs as f64 * psi / (2.0 * PI);
+    let psi = &healthy.set.planet_angles_rad;
+    starts_follow_travel(&starts, psi, zs as f64, per, travel, "sun");
 }
 
 /// The amplitude of the line at `f_hz` of the periodic signal `x`, one period `span_s`
