@@ -293,11 +293,25 @@ fn a_stage_fault_is_refused_by_key_where_it_is_wrong_or_not_built() {
     );
     let ok_tooth = reducer_with(d.path(), "ok_tooth.toml", &crack(2, "gear", 40, 1.0));
     gearwear::config::load_case(&std::fs::read_to_string(&ok_tooth).unwrap(), &[]).unwrap();
-    // The studies built on the train's wear refuse a fault, naming the key and the study.
+    // The studies built on the train's wear beyond one operating point refuse a fault,
+    // naming the key and the study (`wear` and `run` at one point take it,
+    // tests/train_fault_wear.rs).
     let cracked = reducer_with(d.path(), "cracked.toml", &crack(2, "pinion", 0, 1.0));
+    let spectrum = "[load_spectrum]\nbins = [{ torque_nm = 60, input_speed_hz = 30, share = 1 }]\n";
+    let under = reducer_with(
+        d.path(),
+        "under.toml",
+        &format!("{}\n{spectrum}", crack(2, "pinion", 0, 1.0)),
+    );
     for (study, args) in [
-        ("`gearwear wear`", vec!["wear", "--config", &cracked]),
-        ("`gearwear run`", vec!["run", "--config", &cracked]),
+        (
+            "`gearwear wear` under a [load_spectrum]",
+            vec!["wear", "--config", &under],
+        ),
+        (
+            "`gearwear run` under a [load_spectrum]",
+            vec!["run", "--config", &under],
+        ),
     ] {
         rejected(&args, &["`fault.stage` = 2", study, "not built yet"]);
     }

@@ -156,6 +156,17 @@ pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, 
     Ok(m)
 }
 
+/// As [`build_train_model`] for the wear of a gear train at one operating point
+/// (`gearwear wear`, `gearwear run`): a stage's tooth fault taken
+/// (`Model::train_wear_from_case`).
+pub fn build_train_wear_model(case: &Case, observer: &dyn Observer) -> Result<Model, JobError> {
+    let m = Model::train_wear_from_case(case)?;
+    for w in &m.warnings {
+        observer.warning(w);
+    }
+    Ok(m)
+}
+
 /// As [`build_train_model`], with a helical pair's planar model
 /// (`Model::helical_from_case`) where the case has a helix angle: for the studies that
 /// take a helical pair through the same solver (`dynamics`, `signals`, `wear`).

@@ -45,7 +45,11 @@ impl Job for RunJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         if !self.case.stage.is_empty() {
-            crate::study::train::refuse_fault(&self.case, "`gearwear run`")?;
+            if self.case.load_spectrum.is_some() {
+                // Under a spectrum its wear has no per-tooth wear (docs/MODEL.md 9.10).
+                let study = "`gearwear run` under a [load_spectrum]";
+                crate::study::train::refuse_fault(&self.case, study)?;
+            }
             return super::run_train::run_of_train(self, figures, observer);
         }
         if self.case.planetary.is_some() {

@@ -7,7 +7,7 @@
 
 use super::observer::Observer;
 use super::wear_train::{run_train_modes, train_of, train_stops};
-use super::{build_train_model, publish, JobError, Outcome, RunJob};
+use super::{build_train_wear_model, publish, JobError, Outcome, RunJob};
 use crate::dynamics::excitation::ExternalError;
 use crate::report::figure_output::FigureOutput;
 use crate::report::run_train::{train_run_artifacts, TrainRun};
@@ -29,7 +29,7 @@ pub fn run_of_train(
     if job.case.load_spectrum.is_some() {
         return super::duty_train::run_of_train_under_spectrum(job, figures, observer);
     }
-    let model = build_train_model(&job.case, observer)?;
+    let model = build_train_wear_model(&job.case, observer)?;
     let train = train_of(&model)?;
     let stages = stage_models(&model)?;
     let meta = RunMetadata::of_model(name, &model);

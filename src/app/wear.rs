@@ -54,7 +54,11 @@ impl Job for WearJob {
         if self.case.planetary.is_some() {
             return super::wear_planetary::wear_of_planetary(self, figures, observer);
         }
-        crate::study::train::refuse_fault(&self.case, "`gearwear wear`")?;
+        if self.case.load_spectrum.is_some() {
+            // A train's wear under a spectrum has no per-tooth wear (docs/MODEL.md 9.10).
+            let study = "`gearwear wear` under a [load_spectrum]";
+            crate::study::train::refuse_fault(&self.case, study)?;
+        }
         let cost = Cost::Wear {
             dynamic: self.modes.contains(&WearMode::Dynamic),
             quasi_static: self.modes.contains(&WearMode::QuasiStatic),

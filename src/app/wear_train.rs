@@ -9,7 +9,7 @@
 use super::observer::{keep_going, Observer};
 use super::train_checkpoints::{mesh_checkpoint_name, open_logs, starting_runs};
 use super::wear_runs::{mode_tasks, report_update, stops_of, Runs};
-use super::{build_train_model, publish, JobError, Outcome};
+use super::{build_train_wear_model, publish, JobError, Outcome};
 use crate::remedy::Problem;
 use crate::report::figure_output::FigureOutput;
 use crate::report::wear_train::train_wear_artifacts;
@@ -36,7 +36,7 @@ pub fn wear_of_train(
     observer: &dyn Observer,
 ) -> Result<Outcome, JobError> {
     let name = "wear";
-    let model = build_train_model(&job.case, observer)?;
+    let model = build_train_wear_model(&job.case, observer)?;
     let train = train_of(&model)?;
     let meta = RunMetadata::of_model(name, &model);
     let out = (job.out.as_deref(), job.resume, job.replace);

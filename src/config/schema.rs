@@ -450,7 +450,7 @@ pub const KEYS: &[KeySpec] = &[
       "-"),
     k("fault.tooth", "-", Int(0, 999), "0-based index of the faulty tooth (checked against the gear's teeth).",
       "Teeth are numbered 0 to z - 1; z is at most 1000."),
-    k("fault.stage", "-", Int(1, 16), "On a gear train (`[[stage]]` tables; required there): the stage, counted from 1, whose pair holds the faulty tooth (`fault.gear` its pinion or gear, `fault.tooth` among its teeth). `gearwear stiffness`, `dynamics`, `signals` and `sweep` of dynamics take it; `wear`, `run`, `dataset`, `calibrate` and `predict` refuse a train with a fault (docs/MODEL.md 9.10). Refused on a single pair.",
+    k("fault.stage", "-", Int(1, 16), "On a gear train (`[[stage]]` tables; required there): the stage, counted from 1, whose pair holds the faulty tooth (`fault.gear` its pinion or gear, `fault.tooth` among its teeth). `gearwear stiffness`, `dynamics`, `signals`, `sweep` of dynamics, `wear` and `run` take it (the stage worn tooth by tooth); `dataset`, `calibrate`, `predict`, a wear sweep and a `[load_spectrum]` refuse a train with a fault (docs/MODEL.md 9.10). Refused on a single pair.",
       "A train has at most 16 stages; checked against the case's stages."),
     k("fault.crack_depth_mm", "mm", Num(Range::closed(0.0, 100.0)), "Crack: depth from the root along its path (required for a crack); its reach across the tooth is checked against the root thickness.",
       "Checked against the tooth with the geometry."),

@@ -391,6 +391,9 @@ pub fn dynamics_summary(model: &Model, r: &DynamicResponse) -> serde_json::Value
             Value::Array(meshes.into_iter().map(|m| m.0).collect()),
         );
         obj.insert("train".into(), train_json(t, r));
+        if let Some(f) = super::teeth::train_faults_json(t) {
+            obj.insert("faults".into(), f);
+        }
     }
     if let (Some(h), Some(obj)) = (
         super::dynamics_helical::helical_summary(model, r),

@@ -15,8 +15,9 @@ use crate::dynamics::spectrum::Spectrum;
 use crate::dynamics::summary::velocity_y_spectrum;
 use crate::format::shown;
 use crate::geometry::iso1328::{cumulative_pitch_deviation, single_pitch_deviations};
+use crate::geometry::{GearPair, ProfileGrid};
 use crate::io::Table;
-use crate::study::wear_loop::WearRun;
+use crate::study::wear_loop::{UpdateRecord, WearMode, WearRun};
 use crate::study::Model;
 use crate::wear::ToothWear;
 use serde_json::{json, Value};
@@ -91,6 +92,21 @@ pub fn teeth_json(model: &Model) -> Option<Value> {
         "faults": t.faults,
         "load_sharing": "by each pair's compression (per-tooth inputs)",
     }))
+}
+
+/// The `faults` entry of a gear train's summaries: every tooth fault the train's model
+/// holds (a `[[fault]]` table that changes its tooth, on the stage it names), each as its
+/// table (kind, stage, gear, tooth and its sizes in the case file's units); None
+/// without one (a healthy train's summary is unchanged).
+pub fn train_faults_json(train: &crate::study::train::TrainModel) -> Option<Value> {
+    let faults: Vec<Value> = train
+        .stages
+        .iter()
+        .filter_map(|s| s.tooth_inputs.as_ref())
+        .flat_map(|t| t.faults.iter().filter(|f| f.changes_tooth()))
+        .map(|f| json!(f))
+        .collect();
+    (!faults.is_empty()).then(|| json!(faults))
 }
 
 /// A table of `columns` under `names`, in order.
@@ -207,11 +223,20 @@ pub fn tvms_figure(model: &Model) -> Option<(Figure, Table, Table)> {
 /// (deg, each on its own profile: rho / r_b), then a column per profile and flank,
 /// `{flank}_{what}{index}_um` (µm); with the two roll-angle columns for the heat maps.
 pub(crate) fn map_table(model: &Model, map: &ToothWear, what: &str) -> (Table, Vec<f64>, Vec<f64>) {
-    let g = &model.grid;
+    map_table_on(&model.grid, &model.pair, map, what)
+}
+
+/// [`map_table`] on the profile grid `g` of the pair `pair` (a train's stage).
+fn map_table_on(
+    g: &ProfileGrid,
+    pair: &GearPair,
+    map: &ToothWear,
+    what: &str,
+) -> (Table, Vec<f64>, Vec<f64>) {
     let roll =
         |rho: &[f64], rb: f64| -> Vec<f64> { rho.iter().map(|r| (r / rb).to_degrees()).collect() };
-    let roll_p = roll(&g.rho_pinion_m, model.pair.pinion.base_radius_m);
-    let roll_g = roll(&g.rho_gear_m, model.pair.gear.base_radius_m);
+    let roll_p = roll(&g.rho_pinion_m, pair.pinion.base_radius_m);
+    let roll_g = roll(&g.rho_gear_m, pair.gear.base_radius_m);
     let mut table = Table::new()
         .col("rho1_mm", g.rho_pinion_m.iter().map(|r| r * 1e3).collect())
         .col("pinion_roll_deg", roll_p.clone())
@@ -230,9 +255,20 @@ pub(crate) fn map_table(model: &Model, map: &ToothWear, what: &str) -> (Table, V
 /// The per-tooth wear of the last record of `run` (`teeth_wear_MODE.csv`, a column per
 /// tooth) and its heat map, tooth index against the tooth's own roll angle.
 pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)> {
-    let last = run.last()?;
+    tooth_wear_figure_of(&model.grid, &model.pair, run.last()?, run.mode)
+}
+
+/// [`tooth_wear_figure`] of a mesh's last record `last` of a run in `mode`, on the profile
+/// grid `g` of its pair `pair`: a single pair's, or a faulty train stage's
+/// (`report::wear_train`). None when the record has no per-tooth wear.
+pub fn tooth_wear_figure_of(
+    g: &ProfileGrid,
+    pair: &GearPair,
+    last: &UpdateRecord,
+    mode: WearMode,
+) -> Option<(Figure, Table)> {
     let teeth = last.wear.teeth.as_ref()?;
-    let (table, roll_p, roll_g) = map_table(model, teeth, "tooth");
+    let (table, roll_p, roll_g) = map_table_on(g, pair, teeth, "tooth");
     let max = teeth.max_m() * 1e6;
     let rows = |n: usize| (0..n).map(|t| t as f64).collect::<Vec<f64>>();
     let heat = |title: &str, roll: &[f64], profiles: &[Vec<f64>]| {
@@ -246,7 +282,7 @@ pub fn tooth_wear_figure(model: &Model, run: &WearRun) -> Option<(Figure, Table)
         title: format!(
             "Wear of every tooth after {} cycles ({} study)",
             crate::io::format_number(last.wear.cycles),
-            run.mode.label()
+            mode.label()
         ),
         panels: vec![
             heat("pinion", &roll_p, &teeth.pinion_m),

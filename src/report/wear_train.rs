@@ -8,13 +8,21 @@
 //!   profiles exactly as a single pair's `updates_MODE.csv` and `wear_profiles_MODE.csv`
 //!   (its `cycles` being its own pinion's revolutions).
 //!
+//! A stage with a tooth fault (`fault.stage`, docs/MODEL.md 9.10) wears tooth by tooth:
+//! `teeth_wear_MODE_stageK.png` and its data `csv/teeth_wear_MODE_stageK.csv` hold every
+//! tooth's wear at the end of the run, exactly as a single pair's `teeth_wear_MODE.png`
+//! and `csv/teeth_wear_MODE.csv` (`report::teeth`); its `updates_MODE_stageK.csv` and
+//! maxima are over every tooth, its `wear_profiles_MODE_stageK.csv` the mean profiles.
+//!
 //! `summary.json`: a `meshes` list (per mesh: stage, teeth, pinion revolutions per input
-//! revolution, and per mode its final pinion and gear cycles and maximum wear), the
+//! revolution, whether its teeth wear one by one, and per mode its final pinion and gear
+//! cycles and maximum wear), `faults` (the tooth faults modelled, with a fault), the
 //! input cycles and updates per mode, `limiting_mesh` per mode (the mesh with the
 //! deepest wear at the end: the train's wear life is that of its weakest mesh), the
 //! early stops and the warnings.
 
 use super::artifacts::Artifacts;
+use super::teeth::tooth_wear_figure_of;
 use super::wear::{profiles_table, updates_table};
 use crate::format::shown;
 use crate::io::Table;
@@ -90,6 +98,7 @@ fn meshes_json(train: &TrainModel, runs: &[&TrainWearRun]) -> Vec<Value> {
                 "stage": m + 1,
                 "teeth": [z1, z2],
                 "pinion_cycles_per_input_cycle": c[m],
+                "per_tooth_wear": s.tooth_inputs.is_some(),
                 "final": by_mode,
             })
         })
@@ -122,6 +131,13 @@ pub fn train_wear_artifacts(
                 format!("wear_profiles_{mode}_stage{}.csv", m + 1),
                 profiles_table(&s.grid, &rec),
             );
+            let last = rec.last();
+            if let Some((fig, table)) =
+                last.and_then(|r| tooth_wear_figure_of(&s.grid, &s.pair, r, run.mode))
+            {
+                let name = format!("teeth_wear_{mode}_stage{}.png", m + 1);
+                a.figure_with_data(name, fig, table);
+            }
         }
         let last = run.updates.last();
         input.insert(mode.into(), json!(last.map(|u| u.input_cycles)));
@@ -149,6 +165,9 @@ pub fn train_wear_artifacts(
         "stopped": stopped,
         "warnings": model.warnings,
     });
+    if let Some(f) = super::teeth::train_faults_json(train) {
+        a.summary["faults"] = f;
+    }
     a.headline = lines.join("\n");
     a
 }

@@ -188,9 +188,9 @@ fn planetary_refusal() -> String {
     "`[planetary]` is a planetary set: this study is not yet built for it, so it would give the result of the `[gear]` pair instead; only `gearwear stiffness` (its meshes' stiffness, phases, frequencies and the lumped model's natural frequencies), `gearwear dynamics`, `gearwear signals` (a sensor on the fixed ring), `gearwear wear` (every member's wear), `gearwear dataset` (run-to-failure records of the ring sensor), `gearwear run` (those studies with a report) and `gearwear sweep` of dynamics (each mesh's force and each planet's load sharing per case) take a planetary set so far".to_string()
 }
 
-/// The studies built on [`Model::from_case`] that wear a gear train, as a refusal names
-/// them.
-const TRAIN_WEAR_STUDIES: &str = "a study of the train's wear";
+/// The studies built on [`Model::from_case`] that wear a gear train beyond one operating
+/// point, as a refusal names them.
+const TRAIN_WEAR_STUDIES: &str = "this study of the train's wear (a dataset, a calibration, a prediction, a load spectrum or a wear sweep)";
 
 impl Model {
     /// Build the model of a validated case: the geometry (with `"derived"` bores), the
@@ -200,10 +200,26 @@ impl Model {
         if let Some(p) = helical_train_refusal(case) {
             return Err(ModelError(vec![p]));
         }
-        // The studies on this model wear the train: a stage's tooth fault is not built
-        // into its wear (docs/MODEL.md 9.10), whichever study asks (a wear sweep's cases
-        // included, whose base may have a fault of zero size).
+        // The studies on this model wear the train beyond one operating point: a stage's
+        // tooth fault is built into the wear of `gearwear wear` and `gearwear run` only
+        // (`Model::train_wear_from_case`, docs/MODEL.md 9.10), refused whichever other
+        // study asks (a wear sweep's cases included, whose base may have a fault of zero
+        // size).
         super::train::refuse_fault(case, TRAIN_WEAR_STUDIES)?;
+        Self::spur_or_train(case)
+    }
+
+    /// The model of the wear of a gear train at one operating point (`gearwear wear` and
+    /// `gearwear run` without a `[load_spectrum]`): [`Model::from_case`] with a stage's
+    /// tooth fault taken, that stage worn tooth by tooth (`study::train_wear`,
+    /// docs/MODEL.md 9.10). A single pair: [`Model::from_case`] itself.
+    pub fn train_wear_from_case(case: &Case) -> Result<Self, ModelError> {
+        if case.stage.is_empty() {
+            return Self::from_case(case);
+        }
+        if let Some(p) = helical_train_refusal(case) {
+            return Err(ModelError(vec![p]));
+        }
         Self::spur_or_train(case)
     }
 

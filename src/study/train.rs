@@ -50,9 +50,14 @@ pub struct Stage {
     pub axial: Option<AxialSupport>,
     /// The stage's warnings (its geometry's, its stiffness's, its keys').
     pub warnings: Vec<String>,
-    /// The stage's tooth-resolved mesh when a `[[fault]]` table names the stage and
-    /// changes its tooth (`fault.stage`, docs/MODEL.md 9.10); None: every tooth alike.
+    /// The stage's tooth-resolved mesh of new teeth when a `[[fault]]` table names the
+    /// stage and changes its tooth (`fault.stage`, docs/MODEL.md 9.10); None: every
+    /// tooth alike. `tooth_inputs.mesh_for` new teeth.
     pub teeth: Option<ToothMesh>,
+    /// The faulty stage's teeth before wear (`study::teeth`), from which its
+    /// tooth-resolved mesh of any per-tooth wear state is built (its wear study,
+    /// `study::train_wear`); None exactly when `teeth` is.
+    pub tooth_inputs: Option<ToothInputs>,
 }
 
 /// A train's model objects (see the module docs).
@@ -198,18 +203,27 @@ impl TrainModel {
         roughness_um: f64,
     ) -> GearSystem<'a> {
         let rough = vec![roughness_um; self.stages.len()];
+        let teeth = self.new_teeth_meshes();
         self.system_worn(
             case,
             friction,
             effective_modulus_pa,
             gaps,
             externals,
-            &rough,
+            (&rough, &teeth),
         )
     }
 
-    /// As [`TrainModel::system`] with each mesh's own roughness (um, stage order): the
-    /// roughness of its own wear (`wear.RoughnessLaw`), as the wear study of a train has.
+    /// Each stage's tooth-resolved mesh of new teeth (None: a stage whose teeth are
+    /// alike), stage order.
+    pub fn new_teeth_meshes(&self) -> Vec<Option<&ToothMesh>> {
+        self.stages.iter().map(|s| s.teeth.as_ref()).collect()
+    }
+
+    /// As [`TrainModel::system`] with each mesh's own roughness (um, stage order: the
+    /// roughness of its own wear, `wear.RoughnessLaw`) and tooth-resolved mesh (a faulty
+    /// stage's with each tooth's own wear, `ToothInputs::mesh_for`; None for a stage
+    /// whose teeth are alike), as the wear study of a train has.
     #[allow(clippy::too_many_arguments)]
     pub fn system_worn<'a>(
         &'a self,
@@ -218,7 +232,7 @@ impl TrainModel {
         effective_modulus_pa: f64,
         gaps: &[&'a PairGap],
         externals: &[&'a ExternalError],
-        roughness_um: &[f64],
+        (roughness_um, teeth): (&[f64], &[Option<&'a ToothMesh>]),
     ) -> GearSystem<'a> {
         let meshes = self
             .stages
@@ -237,7 +251,7 @@ impl TrainModel {
                     load_sharing: s.case.contact.load_sharing,
                     roughness_um: roughness_um[k],
                     effective_modulus_pa,
-                    teeth: s.teeth.as_ref(),
+                    teeth: teeth[k],
                     contact: &s.contact,
                 };
                 let op = MeshOperating {
@@ -280,6 +294,22 @@ impl TrainModel {
         ResponseSummary::of_mesh(r, m, period_s, pinion_y)
     }
 
+    /// Mesh periods of each mesh in the train's base period (stage order; the single
+    /// pair's 1), from the teeth (`dynamics::grid::chain_mesh_counts`): a tooth-resolved
+    /// stage's response over E base periods spans E times its count of its own mesh
+    /// periods, the period its engagements are counted in (`PathSample::cycle`). 1 for
+    /// a mesh when a count overflows (never for the teeth the schema allows).
+    pub fn mesh_counts(&self) -> Vec<usize> {
+        let teeth: Vec<[usize; 2]> = self
+            .stages
+            .iter()
+            .map(|s| [s.pair.pinion.teeth, s.pair.gear.teeth])
+            .collect();
+        crate::dynamics::grid::chain_mesh_counts(&teeth)
+            .and_then(|c| c.into_iter().map(|n| usize::try_from(n).ok()).collect())
+            .unwrap_or_else(|| vec![1; teeth.len()])
+    }
+
     /// Whether the speed of the input is imposed (so the motor's coordinate is held).
     pub fn input_held(&self) -> bool {
         self.assembly.elements.drive.boundary == SpeedBoundary::MotorSpeedImposed
@@ -291,25 +321,25 @@ impl TrainModel {
     }
 }
 
-/// The tooth-resolved mesh of stage `k` (0-based; `sc` its single-pair case, holding
-/// the `[[fault]]` tables that name the stage, `fault.stage`), built by the pair's own
-/// machinery (`study::teeth::ToothInputs`: the same checks against the tooth, the same
-/// compliances and gaps): None when no fault names the stage or none changes its tooth
-/// (a crack of zero depth), so that stage stays the healthy one bit for bit. Errors: the
-/// pair's checks of the fault against the stage's tooth.
+/// The teeth of stage `k` (0-based; `sc` its single-pair case, holding the `[[fault]]`
+/// tables that name the stage, `fault.stage`) and their tooth-resolved mesh of new teeth,
+/// built by the pair's own machinery (`study::teeth::ToothInputs`: the same checks
+/// against the tooth, the same compliances and gaps): None when no fault names the stage
+/// or none changes its tooth (a crack of zero depth), so that stage stays the healthy one
+/// bit for bit. Every stage of a train takes the involute geometry (wear opens gaps, as
+/// a healthy stage's wear does): `wear.worn_geometry` is not applied to the faulty
+/// stage's flanks. Errors: the pair's checks of the fault against the stage's tooth.
 fn stage_teeth(
     sc: &Case,
     pair: &GearPair,
     mesh: &MeshStiffness,
     grid: &ProfileGrid,
     p: &MeshPoint,
-) -> Result<Option<ToothMesh>, Vec<String>> {
+) -> Result<Option<(ToothInputs, ToothMesh)>, Vec<String>> {
     if sc.fault.is_empty() {
         return Ok(None);
     }
     let mut fc = sc.clone();
-    // A train's wear is refused with a fault (`refuse_fault`): the teeth are new, and
-    // only the fault makes them differ.
     fc.wear.worn_geometry = crate::config::case::WornGeometry::Involute;
     let inputs = ToothInputs::from_case(
         &fc,
@@ -319,14 +349,18 @@ fn stage_teeth(
         [p.pinion_speed_rad_s, p.gear_speed_rad_s],
         p.static_mesh_force_n,
     )?;
-    Ok(inputs.map(|t| t.mesh_for(&WearState::new(grid.len()))))
+    Ok(inputs.map(|t| {
+        let new = t.mesh_for(&WearState::new(grid.len()));
+        (t, new)
+    }))
 }
 
 /// A train with a tooth fault (`fault.stage`) is refused by `study` (the command as the
-/// message names it, e.g. "`gearwear wear`"): its wear, the wear-driven studies built on it (`run`, `dataset`,
-/// `calibrate`, `predict`, a wear sweep, a load spectrum) are not built with a fault (a
-/// faulty stage's mesh would need each tooth's own wear, docs/MODEL.md 9.10). Ok for a
-/// single pair or a train whose faults change no tooth.
+/// message names it, e.g. "`gearwear dataset`"): the faulty stage wears tooth by tooth at
+/// one operating point only (`gearwear wear` and `gearwear run`, `study::train_wear`,
+/// docs/MODEL.md 9.10); the studies built on more than that (`dataset`, `calibrate`,
+/// `predict`, a wear sweep, a load spectrum) are not built with a fault. Ok for a single
+/// pair or a train whose faults change no tooth.
 pub fn refuse_fault(case: &Case, study: &str) -> Result<(), ModelError> {
     let Some(f) = (!case.stage.is_empty())
         .then(|| case.fault.iter().find(|f| f.changes_tooth()))
@@ -335,7 +369,7 @@ pub fn refuse_fault(case: &Case, study: &str) -> Result<(), ModelError> {
         return Ok(());
     };
     Err(ModelError(vec![format!(
-        "`fault.stage` = {} ({} {} tooth {}): {study} on a gear train with a tooth fault is not built yet (the faulty stage's wear would need each tooth's own wear); `gearwear stiffness`, `gearwear dynamics`, `gearwear signals` and `gearwear sweep` of dynamics take the fault; remove the [[fault]] table for {study} on the train",
+        "`fault.stage` = {} ({} {} tooth {}): {study} on a gear train with a tooth fault is not built yet (the faulty stage's per-tooth wear is built at one operating point, in `gearwear wear` and `gearwear run` without a [load_spectrum]); `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear sweep` of dynamics, `gearwear wear` and `gearwear run` take the fault; remove the [[fault]] table for {study} on the train",
         f.stage_index().map_or(0, |s| s + 1),
         f.kind().name(),
         f.gear.name(),
@@ -422,6 +456,7 @@ fn build_stage(
             axial: h.axial,
             warnings: h.warnings,
             teeth: None,
+            tooth_inputs: None,
         });
     }
     let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
@@ -433,7 +468,7 @@ fn build_stage(
     )
     .map_err(|e| e.0)?;
     let contact = ContactPath::new(&pair, case.contact.path, MAX_PAIRS);
-    let teeth = stage_teeth(&sc, &pair, &mesh, &grid, point)?;
+    let (tooth_inputs, teeth) = stage_teeth(&sc, &pair, &mesh, &grid, point)?.unzip();
     let mut warnings: Vec<String> = pair
         .warnings
         .iter()
@@ -452,5 +487,6 @@ fn build_stage(
         axial: None,
         warnings,
         teeth,
+        tooth_inputs,
     })
 }

@@ -18,18 +18,27 @@
 //! than `MAX_CONTACT_LOSS_FRACTION` of its mesh period) stops the whole study, naming
 //! the mesh; so does a response not found. A one-stage train is the single pair's loop,
 //! number for number.
+//!
+//! A stage with a tooth fault (`fault.stage`, docs/MODEL.md 9.10) wears tooth by tooth,
+//! as a single pair with a fault does: its wear state holds every tooth's profile, its
+//! mesh in the train's response is built from them (`ToothInputs::mesh_for`), and the
+//! response runs over the train's excitation period (the base periods after which the
+//! faulty teeth meet again, `dynamics::grid::excitation_periods`), in which each tooth's
+//! increments are taken from the engagements it meets (`wear::per_tooth`). The other
+//! stages wear with every tooth alike, their path over the same period.
 
 use super::model::Model;
 use super::train::TrainModel;
 use super::wear_loop::{
-    fastest_block, mesh_record, solve_by, start_of, MeshWearParts, StopKind, UpdateRecord,
-    WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION,
+    fastest_block, mesh_record, solve_by, start_of, tooth_record, MeshWearParts, StopKind,
+    UpdateRecord, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION,
 };
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::period_search::DynamicsError;
 use crate::dynamics::quasi_static::solve_quasi_static;
 use crate::dynamics::response::DynamicResponse;
 use crate::dynamics::steady::solve_steady_state_from;
+use crate::dynamics::tooth_mesh::ToothMesh;
 use crate::wear::WearState;
 
 /// One update of a train: every mesh's record at one count of input cycles.
@@ -102,7 +111,9 @@ pub enum TrainNext {
 }
 
 /// The response of the train with each mesh worn as `wears` says (stage order), each
-/// mesh's roughness that of its own wear; retried as `wear_loop::solve_by`.
+/// mesh's roughness that of its own wear, a faulty stage's mesh built from its teeth's
+/// own wear (the gap of its mean profiles beside it, as the single pair's); retried as
+/// `wear_loop::solve_by`.
 pub fn solve_train(
     model: &Model,
     train: &TrainModel,
@@ -116,6 +127,12 @@ pub fn solve_train(
         .map(|(w, s)| w.pair_gap(&s.grid))
         .collect();
     let rough: Vec<f64> = wears.iter().map(|w| model.roughness_for(w)).collect();
+    let worn_teeth: Vec<Option<ToothMesh>> = wears
+        .iter()
+        .zip(&train.stages)
+        .map(|(w, s)| s.tooth_inputs.as_ref().map(|t| t.mesh_for(w)))
+        .collect();
+    let teeth: Vec<Option<&ToothMesh>> = worn_teeth.iter().map(Option::as_ref).collect();
     let none = ExternalError::none();
     let gap_refs: Vec<&PairGap> = gaps.iter().collect();
     let ext = vec![&none; wears.len()];
@@ -125,7 +142,7 @@ pub fn solve_train(
         model.effective_modulus_pa,
         &gap_refs,
         &ext,
-        &rough,
+        (&rough, &teeth),
     );
     let steps = model.settings.steps_per_mesh_period;
     solve_by(
@@ -137,7 +154,8 @@ pub fn solve_train(
     )
 }
 
-/// The update of `wears` at `input_cycles` from the response `r`: each mesh's record.
+/// The update of `wears` at `input_cycles` from the response `r`: each mesh's record (a
+/// faulty stage's per tooth, over its mesh periods in the response's excitation period).
 pub(crate) fn update_of(
     model: &Model,
     train: &TrainModel,
@@ -147,6 +165,7 @@ pub(crate) fn update_of(
     r: &DynamicResponse,
 ) -> TrainUpdate {
     let single = train.stages.len() == 1;
+    let counts = train.mesh_counts();
     let meshes = wears
         .into_iter()
         .enumerate()
@@ -164,6 +183,10 @@ pub(crate) fn update_of(
                 train.mesh_summary(r, m)
             };
             let roughness = model.roughness_for(&wear);
+            if s.tooth_inputs.is_some() {
+                let periods = counts[m] * r.excitation_periods.max(1);
+                return tooth_record(&parts, (m, periods), mode, wear, roughness, summary, r);
+            }
             mesh_record(&parts, m, mode, wear, roughness, summary, r)
         })
         .collect();
@@ -174,12 +197,16 @@ pub(crate) fn update_of(
     }
 }
 
-/// Every mesh's new teeth (stage order): where a run starts, at input cycle 0.
+/// Every mesh's new teeth (stage order): where a run starts, at input cycle 0. A faulty
+/// stage's state has a profile per tooth (`WearState::per_tooth`), the others one.
 pub fn new_teeth(train: &TrainModel) -> Vec<WearState> {
     train
         .stages
         .iter()
-        .map(|s| WearState::new(s.grid.len()))
+        .map(|s| match s.tooth_inputs {
+            Some(_) => WearState::per_tooth(s.grid.len(), s.pair.pinion.teeth, s.pair.gear.teeth),
+            None => WearState::new(s.grid.len()),
+        })
         .collect()
 }
 

@@ -7,7 +7,8 @@
 //!   step (`train_wear::next_block`), and every mesh's stored wear must equal the previous
 //!   update's advanced over that block bit for bit (the first update: new teeth at input
 //!   cycle 0). Each record's shape is checked first (one value per grid point of its
-//!   stage, finite and >= 0 rates, the roughness the case's law gives at its wear, the
+//!   stage, a profile per tooth exactly on a stage with a tooth fault, finite and >= 0
+//!   rates, the roughness the case's law gives at its wear, the
 //!   periodic end state with mesh 1's record in the dynamic mode and nowhere else).
 //!   Logs of unequal length (a kill between the appends of one update) are cut to the
 //!   updates every log holds.
@@ -23,7 +24,7 @@ use super::train::TrainModel;
 use super::train_wear::{
     new_teeth, next_block, next_train_update, Block, TrainNext, TrainUpdate, TrainWearRun,
 };
-use super::wear_check::{random_sample, MAX_RECOMPUTED};
+use super::wear_check::{random_sample, tooth_problem_of, MAX_RECOMPUTED};
 use super::wear_loop::{UpdateRecord, WearMode, WearRun};
 
 /// Why a train's mesh logs are not a run this case's model computes (see the module docs).
@@ -78,8 +79,14 @@ pub(crate) fn record_problem(
     if let Some(p) = r.profile_problem(train.stages[m].grid.len()) {
         return Some(p);
     }
-    if r.wear.teeth.is_some() || r.increment_teeth.is_some() {
-        return Some("holds per-tooth wear, but a train's teeth are all alike".into());
+    let s = &train.stages[m];
+    let resolved = s
+        .tooth_inputs
+        .as_ref()
+        .map(|_| [s.pair.pinion.teeth, s.pair.gear.teeth]);
+    let whose = ("the stage", "a tooth fault on it, `fault.stage`");
+    if let Some(p) = tooth_problem_of(resolved, s.grid.len(), r, whose) {
+        return Some(p);
     }
     if r.path_rho1_m.len() != r.path_load_n.len() {
         return Some("path positions and loads differ in length".into());

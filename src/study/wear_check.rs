@@ -295,8 +295,6 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), StoredRunErr
     Ok(())
 }
 
-/// The per-tooth profiles of a record against the model: present exactly when the model
-/// resolves the teeth, one profile per tooth of the grid's length, finite and >= 0.
 /// A record's per-slice wear against the case: present (wear and increment) exactly when
 /// the case is a helical pair that wears per slice (`Model::helical`), and then N profiles
 /// on each flank (`HelicalDynamics::slices`); their lengths and values are
@@ -326,20 +324,35 @@ fn slice_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<St
     None
 }
 
+/// The per-tooth profiles of a record against the model: present exactly when the model
+/// resolves the teeth, one profile per tooth of the grid's length, finite and >= 0.
 fn tooth_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
-    let resolved = model.teeth.is_some();
-    if resolved != r.wear.teeth.is_some() || resolved != r.increment_teeth.is_some() {
-        return Some(if resolved {
-            "holds no per-tooth wear, but the case resolves the teeth (per-tooth inputs)".into()
-        } else {
-            "holds per-tooth wear, but the case's teeth are all alike".into()
-        });
+    let teeth = [model.pair.pinion.teeth, model.pair.gear.teeth];
+    let resolved = model.teeth.is_some().then_some(teeth);
+    let whose = ("the case", "per-tooth inputs");
+    tooth_problem_of(resolved, model.grid.len(), r, whose)
+}
+
+/// The per-tooth profiles of a record of a mesh whose teeth are resolved with `resolved`
+/// = Some([z1, z2]) (None: alike) on a grid of `n` points: present exactly when it
+/// resolves them, one profile per tooth of the grid's length, finite and >= 0. The single
+/// pair's check and a train stage's (`study::train_wear_check`); `whose`: who resolves
+/// the teeth and why, for the message ("the case", "per-tooth inputs").
+pub(crate) fn tooth_problem_of(
+    resolved: Option<[usize; 2]>,
+    n: usize,
+    r: &super::wear_loop::UpdateRecord,
+    (who, why): (&str, &str),
+) -> Option<String> {
+    let has = r.wear.teeth.is_some() || r.increment_teeth.is_some();
+    let Some([z1, z2]) = resolved else {
+        return has.then(|| format!("holds per-tooth wear, but {who}'s teeth are all alike"));
+    };
+    if r.wear.teeth.is_none() || r.increment_teeth.is_none() {
+        return Some(format!(
+            "holds no per-tooth wear, but {who} resolves the teeth ({why})"
+        ));
     }
-    let (n, z1, z2) = (
-        model.grid.len(),
-        model.pair.pinion.teeth,
-        model.pair.gear.teeth,
-    );
     for (what, t) in [("wear", &r.wear.teeth), ("increment", &r.increment_teeth)] {
         let Some(t) = t else { continue };
         for (g, profiles, z) in [("pinion", &t.pinion_m, z1), ("gear", &t.gear_m, z2)] {

@@ -364,44 +364,58 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
         };
     }
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
-    let k = model.case.wear.coefficient_m2_per_n;
+    let parts = MeshWearParts {
+        grid: &model.grid,
+        teeth: [z1, z2],
+        coefficient_m2_per_n: model.case.wear.coefficient_m2_per_n,
+    };
+    let roughness_um = model.roughness_for(&wear);
+    let summary = ResponseSummary::of(r);
     if model.teeth.is_none() {
-        let parts = MeshWearParts {
-            grid: &model.grid,
-            teeth: [z1, z2],
-            coefficient_m2_per_n: k,
-        };
-        let roughness_um = model.roughness_for(&wear);
-        return mesh_record(
-            &parts,
-            0,
-            mode,
-            wear,
-            roughness_um,
-            ResponseSummary::of(r),
-            r,
-        );
+        return mesh_record(&parts, 0, mode, wear, roughness_um, summary, r);
     }
+    let periods = r.excitation_periods;
+    tooth_record(&parts, (0, periods), mode, wear, roughness_um, summary, r)
+}
+
+/// The record of tooth-resolved mesh `m` of a response `r` on its per-tooth wear state
+/// `wear`, its path over `periods` of its own mesh periods (the response's excitation
+/// period; `PathSample::cycle` its engagement modulo them): each tooth's Archard
+/// increments per pinion cycle from the engagements it meets (`wear::per_tooth`), the
+/// mean pair load over the engagements at the grid points, `summary`; the periodic end
+/// state kept with mesh 0's record. The single pair's (m = 0, `periods` = the response's
+/// excitation periods) and a faulty train stage's (docs/MODEL.md 9.10).
+pub(crate) fn tooth_record(
+    parts: &MeshWearParts,
+    (m, periods): (usize, usize),
+    mode: WearMode,
+    wear: WearState,
+    roughness_um: f64,
+    summary: ResponseSummary,
+    r: &DynamicResponse,
+) -> UpdateRecord {
+    let [z1, z2] = parts.teeth;
+    let path = &r.meshes[m].path;
     let inc = per_tooth_wear(
-        &model.grid,
-        &r.meshes[0].path,
-        r.excitation_periods,
+        parts.grid,
+        path,
+        periods,
         z1,
         z2,
-        k,
+        parts.coefficient_m2_per_n,
     );
-    let (path_rho1_m, path_load_n) = mean_load_along_path(model, r);
+    let (path_rho1_m, path_load_n) = mean_load_along_path(parts.grid, path, periods);
     UpdateRecord {
-        roughness_um: model.roughness_for(&wear),
+        roughness_um,
         wear,
-        summary: ResponseSummary::of(r),
+        summary,
         increment_pinion_m: inc.pinion_m,
         increment_gear_m: inc.gear_m,
         increment_teeth: inc.teeth,
         increment_slices: None,
         path_rho1_m,
         path_load_n,
-        end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
+        end_state: (mode == WearMode::Dynamic && m == 0).then(|| r.end_state.to_vec()),
     }
 }
 
@@ -448,15 +462,20 @@ pub(crate) fn mesh_record(
     }
 }
 
-/// The pair load at the grid points, averaged over the engagements of the excitation
-/// period (the path of a tooth-resolved response holds every engagement's samples).
-fn mean_load_along_path(model: &Model, r: &DynamicResponse) -> (Vec<f64>, Vec<f64>) {
-    let periods = r.excitation_periods.max(1);
+/// The pair load at the points of `grid`, averaged over the `periods` engagements of the
+/// excitation period (the `path` of a tooth-resolved mesh holds every engagement's
+/// samples, tagged with their mesh cycle).
+fn mean_load_along_path(
+    grid: &ProfileGrid,
+    path: &[crate::dynamics::response::PathSample],
+    periods: usize,
+) -> (Vec<f64>, Vec<f64>) {
+    let periods = periods.max(1);
     let mut by: Vec<Vec<crate::dynamics::response::PathSample>> = vec![Vec::new(); periods];
-    for s in &r.meshes[0].path {
+    for s in path {
         by[s.cycle.rem_euclid(periods as i64) as usize].push(*s);
     }
-    let rho = model.grid.rho_pinion_m.clone();
+    let rho = grid.rho_pinion_m.clone();
     let load = rho
         .iter()
         .map(|x| {

@@ -7,10 +7,14 @@
 //! [`super::per_cycle_wear`] gives them for the one pass of identical teeth (the gear's
 //! with the factor z1/z2 of eq. 17).
 //!
-//! Over the hunting period H = lcm(z1, z2) mesh cycles, pinion tooth a meets the gear in
+//! Over the hunting period H = lcm(z1, z2, P) mesh cycles, pinion tooth a meets the gear in
 //! cycles n = a, a + z1, ... (H / z1 of them, one per pinion revolution) and gear tooth b
 //! in n = b, b + z2, ... (H / z2, z1/z2 per pinion revolution); cycle n is engagement
-//! n mod P (P divides H). Per pinion cycle (revolution), tooth a wears by the mean of its
+//! n mod P. A single pair's P divides lcm(z1, z2), so H is its hunting period; a stage of
+//! a gear train repeats over the train's period, which may hold more of its mesh periods
+//! than its own hunting period (docs/MODEL.md 9.10), and H then spans that period too, so
+//! that each tooth's engagements are each counted equally often. Per pinion cycle
+//! (revolution), tooth a wears by the mean of its
 //! engagements' pinion increments, tooth b by the mean of its engagements' gear
 //! increments (which carry z1/z2). The means run over the distinct engagements in
 //! ascending order, each of which occurs equally often, so teeth that meet the same
@@ -33,8 +37,9 @@ pub(crate) fn engagements_of(tooth: usize, z: usize, hunting: usize, periods: us
 }
 
 /// Per-cycle wear of every tooth (module docs) from a response's path over `periods`
-/// mesh periods (samples tagged with their engagement in 0..periods), z1 pinion and z2
-/// gear teeth, wear coefficient `k` (m^2/N). The common profiles are the means over teeth.
+/// mesh periods of this mesh (samples tagged with their engagement, their mesh cycle
+/// modulo `periods`), z1 pinion and z2 gear teeth, wear coefficient `k` (m^2/N). The
+/// common profiles are the means over teeth.
 pub fn per_tooth_wear(
     grid: &ProfileGrid,
     path: &[PathSample],
@@ -56,7 +61,8 @@ pub fn per_tooth_wear(
             per_cycle_wear(grid, samples, k, ratio)
         })
         .collect();
-    let hunting = lcm(z1, z2);
+    // lcm(z1, z2) for a single pair (P divides it); with P, a train stage's.
+    let hunting = lcm(lcm(z1, z2), periods);
     let mean = |engagements: &[usize], pick: &dyn Fn(&WearIncrement) -> &Vec<f64>| {
         let n = grid.len();
         let m = engagements.len().max(1) as f64;

@@ -158,7 +158,7 @@ pub fn budget_term(
     let extra = (p - 1.0).max(0.0);
     // A train: P and the run-in counted in its base periods (run-in at most P,
     // `dynamics::hunting::run_in_periods`), each costing `train_factor` single-pair mesh
-    // periods; its wear (the per-tooth records) is refused with a fault.
+    // periods; its wear records hold every tooth of each faulty stage.
     let train = !case.stage.is_empty();
     let run_in = match (p > 1.0, train) {
         (false, _) => 0.0,
@@ -168,10 +168,15 @@ pub fn budget_term(
     let scale = super::evaluation::train_factor(case);
     let p_e = case.numerics.evaluated_mesh_periods as f64;
     let recorded = s_dyn * p.max(p_e);
-    let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
     let grid = case.wear.points_per_profile as f64;
-    let records = if train { 0.0 } else { records };
     if train {
+        let (teeth, repeats) = stage_teeth_and_repeats(case);
+        let faulty_teeth: f64 = teeth
+            .iter()
+            .zip(&repeats)
+            .filter(|(_, r)| **r > 1)
+            .map(|(z, _)| (z[0] + z[1]) as f64)
+            .sum();
         return Some(Term {
             what:
                 "the tooth fault of a train stage (the faulty gear's teeth over the train's period)",
@@ -181,7 +186,8 @@ pub fn budget_term(
             bytes: kept
                 * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
                     - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
-                * super::evaluation::train_record_factor(case),
+                * super::evaluation::train_record_factor(case)
+                + records * faulty_teeth * grid * 2.0 * 8.0,
             keys: &[
                 "fault.stage",
                 "fault.gear",
@@ -191,6 +197,7 @@ pub fn budget_term(
             ],
         });
     }
+    let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
     Some(Term {
         what: "the tooth-resolved mesh (every tooth's own excitation over its period)",
         seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
