@@ -159,6 +159,23 @@ fn a_helical_angle_on_a_train_is_refused_by_the_studies_on_its_wear_loop() {
 }
 
 #[test]
+fn severe_wear_geometry_on_a_train_is_refused_by_its_wear_studies() {
+    // A train's stages wear on the involute geometry (wear opens gaps, docs/MODEL.md 5.1):
+    // `wear.worn_geometry` = "worn" would be ignored, so the wear studies refuse it by key.
+    let dir = tempfile::tempdir().unwrap();
+    let file = case_file(
+        &dir,
+        &format!("[wear]\nworn_geometry = \"worn\"\n\n[[stage]]\nshaft_torsional_stiffness_nm_per_rad = 2e5\n{SECOND}"),
+    );
+    for study in ["wear", "run"] {
+        rejected(
+            &[study, "--config", &file],
+            &["`wear.worn_geometry` = \"worn\"", "gear train", "involute"],
+        );
+    }
+}
+
+#[test]
 fn a_numbered_override_equals_the_same_key_written_in_the_case_file() {
     use gearwear::config::load_case;
     // Second method: the key written in stage 2's table of the file.

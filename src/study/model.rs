@@ -156,6 +156,17 @@ fn helical_refusal(helix_angle_deg: f64) -> String {
 /// The studies that take a train with helical stages (docs/MODEL.md 4.3).
 pub const HELICAL_TRAIN_STUDIES: &str = "`gearwear stiffness`, `gearwear dynamics`, `gearwear signals` (its steady record) and `gearwear sweep` of dynamics";
 
+/// The refusal of severe-wear geometry (`wear.worn_geometry` = "worn", docs/MODEL.md 9.7)
+/// on a gear train's wear: every stage's mesh takes the involute geometry, the wear
+/// opening gaps between the flanks (5.1), so the key would be ignored. None on a single
+/// pair or with the involute geometry.
+fn worn_train_refusal(case: &Case) -> Option<String> {
+    (!case.stage.is_empty() && case.wear.worn_geometry == crate::config::case::WornGeometry::Worn)
+        .then(|| {
+            "`wear.worn_geometry` = \"worn\" on a gear train ([[stage]] tables): the studies of a train's wear (`gearwear wear`, `gearwear run`, `gearwear dataset`, `gearwear calibrate`, `gearwear predict`, a wear sweep, a load spectrum) take the involute geometry of every stage (wear opens gaps between the flanks, docs/MODEL.md 5.1), not the worn tooth's beams and base radii of a single pair; remove the key or give \"involute\"".to_string()
+        })
+}
+
 /// Why a study on [`Model::from_case`] refuses a gear train with a helical stage: `wear`,
 /// `run`, `dataset`, `calibrate`, `predict`, the wear sweeps and the load spectra of a
 /// train have no wear per face slice (docs/MODEL.md 4.3), so they would give a spur
@@ -197,7 +208,7 @@ impl Model {
     /// checks that need it (`study::domain`), the mesh stiffness and the lumped parameters
     /// (with `"derived"` masses and inertias, resolved here once).
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
-        if let Some(p) = helical_train_refusal(case) {
+        if let Some(p) = helical_train_refusal(case).or_else(|| worn_train_refusal(case)) {
             return Err(ModelError(vec![p]));
         }
         // The studies on this model wear the train beyond one operating point: a stage's
@@ -217,7 +228,7 @@ impl Model {
         if case.stage.is_empty() {
             return Self::from_case(case);
         }
-        if let Some(p) = helical_train_refusal(case) {
+        if let Some(p) = helical_train_refusal(case).or_else(|| worn_train_refusal(case)) {
             return Err(ModelError(vec![p]));
         }
         Self::spur_or_train(case)
