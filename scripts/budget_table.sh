@@ -16,21 +16,24 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet --bin gearwear
 bin="$PWD/target/release/gearwear"
+repo="$PWD"
 work="${1:-$(mktemp -d)}"
 mkdir -p "$work"
 cd "$work"
 rows=()
 
-# measure NAME ARGS...: the estimate, then the run.
+# measure NAME ARGS...: the estimate, then the run (into a new folder; with RESUME=1
+# into the folder as it is, after the estimate made for that folder: a resume).
 measure() {
     local name="$1"
     shift
-    local est
-    est=$("$bin" "$@" --out "est_$name" --budget-scale 1e-9 2>&1 | tr '\n' ' ' || true)
+    local est est_out="est_$name"
+    [[ -n "${RESUME:-}" ]] && est_out="out_$name"
+    est=$("$bin" "$@" --out "$est_out" --budget-scale 1e-9 2>&1 | tr '\n' ' ' || true)
     local mem time_est
     mem=$(grep -o 'memory ~[0-9.]* GB' <<<"$est" | head -1 | grep -o '[0-9.]*' || echo "?")
     time_est=$(grep -o 'time ~[0-9.]* [a-z]*' <<<"$est" | head -1 | sed 's/time ~//' || echo "?")
-    rm -rf "out_$name"
+    [[ -z "${RESUME:-}" ]] && rm -rf "out_$name"
     /usr/bin/time -o "time_$name" -f "%M %e %U %S" "$bin" -q --no-budget "$@" --out "out_$name" \
         >/dev/null 2>"err_$name" || echo "$name: exit $? ($(tail -c 300 "err_$name"))" >&2
     local kb secs user sys
@@ -181,6 +184,11 @@ dataset_design ds_24x0.1s 3 "[20, 30]" 4 0.1 25600
 measure dataset_24_records_0.1s_25.6khz dataset --design ds_24x0.1s.toml
 dataset_design ds_4x0.5s_20ch 2 "[30]" 2 0.5 25600 path_20.toml
 measure dataset_4_records_0.5s_20_sensors dataset --design ds_4x0.5s_20ch.toml
+dataset_design ds_40x1s 40 "[30]" 1 1 25600
+measure dataset_40_records_1s_1_realisation dataset --design ds_40x1s.toml
+RESUME=1 measure dataset_40_records_1s_1_realisation dataset --design ds_40x1s.toml
+dataset_design ds_4x4s_20ch 4 "[30]" 1 4 25600 path_20.toml
+measure dataset_4_records_4s_20_sensors dataset --design ds_4x4s_20ch.toml
 dataset_design ds_400x1s 40 "[30]" 10 1 25600
 measure dataset_400_records_1s_10_realisations dataset --design ds_400x1s.toml
 for i in 1 2; do
@@ -204,6 +212,14 @@ for n in (1, 5, 20):
             f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
         f.write("]\n")
 PY
+# Stiffness: a pair, a pair with a cracked tooth, the two-stage example, and that train
+# with a crack on stage 1's pinion (milliseconds: the figures and the process dominate).
+cp "$repo/examples/two_stage_reducer.toml" train.toml
+{ cat train.toml; printf '\n[[fault]]\nkind = "crack"\nstage = 1\ngear = "pinion"\ntooth = 0\ncrack_depth_mm = 1.0\n'; } >train_fault.toml
+measure stiffness_pair stiffness
+measure stiffness_cracked_pair stiffness --set fault.kind=crack --set fault.gear=pinion --set fault.tooth=0 --set fault.crack_depth_mm=1
+measure stiffness_train stiffness --config train.toml
+measure stiffness_cracked_train stiffness --config train_fault.toml
 # Signals: record length x sampling rate (steady records, the generic housing's 2 sensors).
 measure signals_10s_25.6khz signals --set signals.record_length=10
 measure signals_1s_200khz signals --set signals.sampling_rate_hz=200000

@@ -146,6 +146,7 @@ fn a_resume_refuses_a_label_forged_in_any_record() {
         ds,
         SAMPLED,
         11,
+        gearwear::app::budget::DEFAULT.as_ref(),
     )
     .unwrap();
     assert_all_named(&v.problems.join("\n"), ds, forged, "max_wear_pinion_um");

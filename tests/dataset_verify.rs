@@ -8,8 +8,10 @@
 mod common;
 
 use common::{gearwear, ok, stderr};
+use gearwear::app::budget::DEFAULT;
 use gearwear::app::dataset::jobs::verify_folder;
 use gearwear::app::dataset::DesignSource;
+use gearwear::study::budget::Budget;
 use gearwear::study::dataset::verify::{detection_probability, states_to_recompute};
 use serde_json::Value;
 use std::path::Path;
@@ -163,7 +165,7 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
     let design = DesignSource::file(&d.path().join("design.toml")).unwrap();
 
     // The genuine folder verifies: every state recomputed (2 <= the sample), no problem.
-    let v = verify_folder(&design, &ds, 8, 1).unwrap();
+    let v = verify_folder(&design, &ds, 8, 1, DEFAULT.as_ref()).unwrap();
     assert_eq!(v.problems, Vec::<String>::new());
     assert_eq!(v.states_recomputed, vec![0, 1]);
     assert_eq!((v.records_present, v.trajectories_verified), (4, 1));
@@ -172,7 +174,7 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
     for (what, file, forge) in FORGERIES {
         forge(&ds);
         let forged = dataset_files(&ds);
-        let v = verify_folder(&design, &ds, 8, 1).unwrap();
+        let v = verify_folder(&design, &ds, 8, 1, DEFAULT.as_ref()).unwrap();
         assert!(
             v.problems
                 .iter()
@@ -220,7 +222,7 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
         ds.join("signals/0000099.parquet"),
     )
     .unwrap();
-    let v = verify_folder(&design, &ds, 8, 1).unwrap();
+    let v = verify_folder(&design, &ds, 8, 1, DEFAULT.as_ref()).unwrap();
     assert!(
         v.problems
             .iter()
@@ -228,6 +230,17 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
         "{:?}",
         v.problems
     );
+
+    // The check is counted against the run budget before any record is read (issue
+    // 33: it was budgeted nowhere). Its count: the kept trajectory checked (9 updates
+    // from rest, 0.27 s at the built-in case's rates) and both states recomputed, so a
+    // budget of 1 ms cannot hold it, and one of 1e-9 the default (0.6 us) refuses it
+    // naming time, while no budget lets it run. A budget that holds it changes nothing.
+    let tiny = Budget::scaled(1e-9);
+    let e = verify_folder(&design, &ds, 8, 1, Some(&tiny)).unwrap_err();
+    let m = format!("{e:#}");
+    assert!(m.contains("over its budget") && m.contains("time ~"), "{m}");
+    assert!(verify_folder(&design, &ds, 8, 1, None).is_ok());
 }
 
 /// Binomial coefficient, exact in u128 for the small sizes enumerated here.

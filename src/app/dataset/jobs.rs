@@ -19,7 +19,7 @@ use crate::report::figure_output::FigureRequest;
 use crate::report::Artifacts;
 use crate::signals::path_file::parse_transfer_path;
 use crate::signals::transfer::TransferPath;
-use crate::study::budget::{estimate_dataset, Budget};
+use crate::study::budget::{estimate_dataset_resumed, estimate_folder_check, Budget, KeptRecords};
 use crate::study::dataset::plan::Shard;
 use crate::study::dataset::{parse_design, DatasetDesign};
 use std::path::{Path, PathBuf};
@@ -193,8 +193,27 @@ impl Job for DatasetJob {
         };
         let checked = check_dataset(&req)?;
         let threads = rayon::current_num_threads();
+        // A resume checks each trajectory and finished state it finds instead of making
+        // it (counted so).
+        let kept: Vec<bool> = design
+            .conditions
+            .iter()
+            .map(|c| {
+                self.out
+                    .join(super::folder::trajectory_rel(&c.name))
+                    .is_file()
+            })
+            .collect();
+        let key = dataset_key(&design, &req.path_bytes);
+        let kept_states = kept_states(&self.out, &key, &design, self.shard);
         budget::check_estimate(
-            &estimate_dataset(&design, self.shard, threads, checked.record),
+            &estimate_dataset_resumed(
+                &design,
+                self.shard,
+                threads,
+                checked.record,
+                (&kept, kept_states),
+            ),
             self.budget.as_ref(),
         )?;
         // A trajectory longer than a folder keeps (after the run budget, which names the
@@ -222,6 +241,24 @@ impl Job for DatasetJob {
         observer.note(&written(&o, &self.out, "dataset", self.shard.count > 1));
         Ok(outcome(&o, &self.out, "dataset"))
     }
+}
+
+/// Physical states of `shard` of design `d` whose every record `root` holds finished
+/// under `key` (their sidecars; a resume checks them instead of making them).
+fn kept_states(root: &Path, key: &str, d: &DatasetDesign, shard: Shard) -> usize {
+    let plan = crate::study::dataset::plan::plan_of(d);
+    let r = plan.realisations.max(1);
+    let mut per_state = std::collections::BTreeMap::<usize, usize>::new();
+    for s in super::folder::sidecars(root) {
+        let id = s.labels.record_id;
+        if s.dataset_key == key && id < plan.records() {
+            *per_state.entry(id / r).or_default() += 1;
+        }
+    }
+    per_state
+        .iter()
+        .filter(|(p, n)| **n >= r && **p % shard.count.max(1) == shard.index.saturating_sub(1))
+        .count()
 }
 
 /// A design read as a dataset job reads it: the design parsed (its case files read
@@ -351,12 +388,17 @@ fn another_design(problem: super::folder::FolderError) -> JobError {
 }
 
 /// [`verify_dataset`] of the design in `design` (read as a dataset job reads it) for the
-/// folder `root`.
+/// folder `root`, within `budget` (the default: [`budget::DEFAULT`]; None: no check):
+/// its cost counted before any record is read (`study::budget::estimate_folder_check`:
+/// the kept trajectories checked, `sample` states recomputed, every other kept record
+/// read back and analysed; issue 33: it was budgeted nowhere), refused as a job over
+/// budget is.
 pub fn verify_folder(
     design: &DesignSource,
     root: &Path,
     sample: usize,
     seed: u64,
+    budget: Option<&Budget>,
 ) -> Result<Verified, JobError> {
     let (d, path, path_bytes) = load_design(design)?;
     let req = DatasetRequest {
@@ -367,5 +409,24 @@ pub fn verify_folder(
         figures: Default::default(),
         replace: false,
     };
+    if budget.is_some() {
+        let checked = check_dataset(&req)?;
+        let key = dataset_key(&d, &req.path_bytes);
+        let realisations = crate::study::dataset::plan::plan_of(&d).realisations.max(1);
+        let ids: Vec<usize> = super::folder::sidecars(root)
+            .into_iter()
+            .filter(|s| s.dataset_key == key)
+            .map(|s| s.labels.record_id)
+            .collect();
+        let states: std::collections::BTreeSet<usize> =
+            ids.iter().map(|id| id / realisations).collect();
+        let kept = KeptRecords {
+            records: ids.len() as f64,
+            states: states.len() as f64,
+        };
+        let threads = rayon::current_num_threads();
+        let e = estimate_folder_check(&d, kept, sample, threads, checked.record);
+        budget::check_estimate(&e, budget)?;
+    }
     Ok(verify_dataset(&req, root, sample, seed)?)
 }

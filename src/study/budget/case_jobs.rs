@@ -244,6 +244,12 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     // quasi-static evaluation over the excitation period, kept for its table.
     let stiffness_te = if job == Job::Stiffness { 1.0 } else { 0.0 };
     let p = &c.periods;
+    if job == Job::Stiffness {
+        terms.push(super::output::stiffness_output_term(
+            case,
+            super::teeth::faulty_train_stages(case),
+        ));
+    }
     if job == Job::Stiffness && !case.stage.is_empty() {
         terms.extend(super::teeth::train_stiffness_term(case, p.s));
     } else {

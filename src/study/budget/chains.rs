@@ -47,11 +47,17 @@ pub struct ParameterSpan {
 
 /// CPU time of one dynamic evaluation from rest of a run-to-failure job (a dataset's
 /// physical state, the first update of a wear run; the model built), on the built-in case
-/// at its 30 Hz, s: measured 15 ms (9 physical states against 1 of a dataset, 0.13 s more,
-/// 2026-11-29). The steady-state search from rest takes 2-5 shooting periods at 0.2-300 Hz
-/// (`periods_to_converge` of `gearwear dynamics`), not the 30 that
-/// [`super::evaluation::PERIODS_TO_SETTLE_PER_DECADE`] bounds for the other jobs.
-pub const SECONDS_PER_COLD_EVALUATION: f64 = 15e-3;
+/// at its 30 Hz, s: measured 9.2 ms, counted 10 ms (2026-11-30, load 6: 40 physical
+/// states of one 0.25 s record at 25.6 kHz against 1, 0.74 s of CPU more, 19.0 ms a
+/// state, less its record's synthesis, 6.2 ms at the synthesis's measured rates
+/// (`budget::signals::record_synthesis`), and its record, 3.6 ms at the dataset's
+/// measured rates; the record's files stay in it). The steady-state search from rest
+/// takes 2-5 shooting periods at 0.2-300 Hz (`periods_to_converge` of `gearwear
+/// dynamics`), not the 30 that [`super::evaluation::PERIODS_TO_SETTLE_PER_DECADE`] bounds
+/// for the other jobs. (It was 15 ms, measured on 2026-11-29 as a state's whole cost with
+/// its synthesis and record, which the dataset's estimate counts besides: a design of 40
+/// states of short records was estimated at 3.8 times its CPU time, issue 33.)
+pub const SECONDS_PER_COLD_EVALUATION: f64 = 10e-3;
 /// CPU time of one further wear update of a run (warm-started from the previous update's
 /// periodic state, about one shooting period, and the wear increment), built-in case at
 /// 30 Hz, s: measured 4 ms (trajectories of 17 against 7 and 2 updates, 2026-11-29).

@@ -23,6 +23,11 @@ const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 /// measured peak of the smallest runs (issue 33).
 pub const BASE_BYTES: f64 = 20e6;
 
+/// CPU seconds of the process's start-up, counted by every estimate
+/// ([`Estimate::seconds`]): measured 1.5 ms (`gearwear --version`) and 2.1 ms (`gearwear
+/// config --markdown`) with `perf stat` (2026-11-30), counted 2 ms (`super::output`).
+pub const START_UP_SECONDS: f64 = 2e-3;
+
 /// How much a run may use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Budget {
@@ -95,9 +100,9 @@ impl Estimate {
         }
     }
 
-    /// Estimated time, s: the sum of the terms'.
+    /// Estimated time, s: the process's start-up ([`START_UP_SECONDS`]) and the terms'.
     pub fn seconds(&self) -> f64 {
-        self.terms.iter().map(|t| t.seconds).sum()
+        START_UP_SECONDS + self.terms.iter().map(|t| t.seconds).sum::<f64>()
     }
 
     /// Estimated peak memory, bytes: the process's base ([`BASE_BYTES`]) and the terms'.
@@ -110,7 +115,9 @@ impl Estimate {
         let give_up = self.steps_to_give_up * SECONDS_PER_STEP;
         let (secs, bytes) = (self.seconds(), self.memory_bytes());
         let mut over = Vec::new();
-        if bytes > budget.memory_bytes {
+        // An estimate of no terms (a merge of no readable shard) is the process alone:
+        // never over a budget, as before the start-up was counted.
+        if bytes > budget.memory_bytes && !self.terms.is_empty() {
             let t = self.largest(|t| t.bytes);
             over.push(format!(
                 "memory ~{:.3} GB, over the budget of {:.3} GB; most of it: {} ({:.3} GB), driven by {}",
@@ -121,7 +128,7 @@ impl Estimate {
                 keys(t.keys)
             ));
         }
-        if secs > budget.seconds {
+        if secs > budget.seconds && !self.terms.is_empty() {
             let t = self.largest(|t| t.seconds);
             over.push(format!(
                 "time ~{} on one core of the reference machine, over the budget of {}; most of it: {} ({}), driven by {}",

@@ -13,14 +13,20 @@ use crate::study::wear_check::MAX_RECOMPUTED;
 
 /// CPU seconds per record sample of a dataset, besides its channels (tachometer, noise,
 /// files; no figures nor analysis of `signals`), and per sample and channel, of a
-/// physical state's first record: measured 1.25 us a sample with 2 channels (4 records
-/// of 0.25 s and of 8 s at 25.6 kHz, the built-in case: 0.11 s and 1.10 s, 2026-11-29 at
-/// load 5) and 0.38 us more per further channel (4 records of 0.5 s with 20 channels:
-/// 0.49 s, docs/RELIABILITY.md), so 0.5 us and 0.4 us, times [`SLOWER_MACHINE_FACTOR`].
-/// (They were `signals`' 3 us and 4 us: a dataset's record costs less than a `signals`
-/// record, issue 33.)
-const SECONDS_PER_RECORD_SAMPLE: f64 = 0.5e-6 * SLOWER_MACHINE_FACTOR;
-const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.4e-6 * SLOWER_MACHINE_FACTOR;
+/// physical state's first record, its periodic signals' synthesis apart
+/// ([`record_synthesis`], counted with the state): measured 2026-11-30 (the built-in
+/// case at 30 Hz and 25.6 kHz, 4 states of one record, 0.25 s against 8 s with 2
+/// channels: 0.13 and 0.58 s of CPU, 0.57 us a sample; 0.25 s against 4 s with 20
+/// channels: 0.24 and 1.17 s, 2.42 us) 0.36 us a sample and 0.10 us a sample and
+/// channel, so 0.4 us and 0.1 us, times [`SLOWER_MACHINE_FACTOR`]: the first record
+/// costs what a further one does (below) but its synthesis. (They were 0.5 us and 0.4
+/// us, measured when the synthesis was not counted on its own and the channels did not
+/// share the TSA's interpolation weights: with the synthesis counted besides, a design
+/// of 40 states of one 1 s record was estimated at 4.0 times its CPU time and one of 4
+/// records of 4 s with 20 channels at 6.3 times, issue 33. They were `signals`' 3 us
+/// and 4 us before: a dataset's record costs less than a `signals` record.)
+const SECONDS_PER_RECORD_SAMPLE: f64 = 0.4e-6 * SLOWER_MACHINE_FACTOR;
+const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.1e-6 * SLOWER_MACHINE_FACTOR;
 /// The same of each further record of a state (its noise realisations share the state's
 /// rendered clean channels: only noise, analysis and files are made again), and of a
 /// kept record read back and analysed by a resume's or a merge's check: measured
@@ -67,7 +73,12 @@ pub struct RecordSize {
 /// issue 33: the trajectory was a whole `wear` study and each state a `dynamics` run,
 /// both under the slow-speed bounds of any case, 4-6 times the measured CPU); and each of
 /// its records (noise, files) its samples x (a base + its channels) at the rates
-/// measured for datasets. Memory: the costliest single study, or the longest record, on
+/// measured for datasets. A resume does this work or checks what it keeps instead
+/// ([`estimate_dataset_resumed`], `app::dataset::run`): each kept trajectory checked by
+/// the wear law (before issue 33's count of it, counted nowhere); a sample of states
+/// recomputed (counted as made); every other kept record's labels and signal read back
+/// and analysed, a further record's cost (measured 12 ms against 13 ms,
+/// docs/RELIABILITY.md). Memory: the costliest single study, or the longest record, on
 /// each of `threads` threads. Counts are floats (never wrap: the record count of a design
 /// is bounded when it is read).
 pub fn estimate_dataset(
@@ -76,10 +87,34 @@ pub fn estimate_dataset(
     threads: usize,
     record: RecordSize,
 ) -> Estimate {
+    estimate_dataset_resumed(d, shard, threads, record, (&[], 0))
+}
+
+/// [`estimate_dataset`] of a run that finds the trajectories of the conditions
+/// `kept[c]` in its folder (a resume; missing entries: none kept) and `kept_states` of
+/// its shard's physical states with every record finished: each kept trajectory is
+/// checked by the wear law instead of made, the first, the last and a sample of the
+/// kept states (at most `MAX_RECOMPUTED_STATES`) recomputed, and every other kept
+/// state's records read back and checked, at a further record's rate, instead of made
+/// (`app::dataset::run`).
+pub fn estimate_dataset_resumed(
+    d: &DatasetDesign,
+    shard: Shard,
+    threads: usize,
+    record: RecordSize,
+    (kept, kept_states): (&[bool], usize),
+) -> Estimate {
     let plan = plan_of(d);
-    let states = plan.shard_state_count(shard) as f64;
-    let further = states * (plan.realisations as f64 - 1.0).max(0.0);
-    let records_s = states * record_seconds(record, true) + further * record_seconds(record, false);
+    let shard_states = plan.shard_state_count(shard) as f64;
+    let kept_states = (kept_states as f64).min(shard_states);
+    let checked = (kept_states - MAX_RECOMPUTED_STATES as f64).max(0.0);
+    // The states made (or recomputed), and the records of the others checked.
+    let states = shard_states - checked;
+    let realisations = plan.realisations as f64;
+    let further = states * (realisations - 1.0).max(0.0);
+    let records_s = states * record_seconds(record, true)
+        + further * record_seconds(record, false)
+        + checked * realisations * record_seconds(record, false);
     // A record held on each thread: its channels (clean and noisy, in the writer's
     // buffers), measured 98 bytes a sample in all with 2 channels on 2 threads (the peak
     // of 4 records of 8 s against 0.25 s at 25.6 kHz: 37.7 MB against 18.3 MB) and 65 more
@@ -90,8 +125,19 @@ pub fn estimate_dataset(
     let c = design_costs(d, record);
     Estimate::of_terms(vec![
         Term {
-            what: "the conditions' run-to-failure trajectories",
-            seconds: c.trajectories_s,
+            what: "the conditions' run-to-failure trajectories (or their checks on a resume)",
+            seconds: c
+                .trajectory_s
+                .iter()
+                .enumerate()
+                .map(|(i, (made, check))| {
+                    if kept.get(i) == Some(&true) {
+                        *check
+                    } else {
+                        *made
+                    }
+                })
+                .sum(),
             bytes: 0.0,
             keys: &["run_to_failure.max_cycles", "the conditions' wear keys"],
         },
@@ -122,8 +168,10 @@ pub fn estimate_dataset(
 /// physical state (its dynamic evaluation from rest and its record's synthesis) and the
 /// memory of the costliest single study.
 struct DesignCosts {
-    /// CPU seconds of every condition's run-to-failure trajectory.
-    trajectories_s: f64,
+    /// CPU seconds of each condition's run-to-failure trajectory: made, and checked by
+    /// the wear law when kept (a check recomputes up to `MAX_RECOMPUTED` + 1 updates,
+    /// each counted from rest, so it can cost more than a short trajectory made warm).
+    trajectory_s: Vec<(f64, f64)>,
     /// CPU seconds of checking every condition's kept trajectory by the wear law: the
     /// updates `study::wear_check::verify_resumable` recomputes (at most
     /// `MAX_RECOMPUTED`) and the next update after the last, each an evaluation from its
@@ -143,17 +191,18 @@ fn design_costs(d: &DatasetDesign, record: RecordSize) -> DesignCosts {
         [lo, hi]
     };
     let mut c = DesignCosts {
-        trajectories_s: 0.0,
+        trajectory_s: Vec::new(),
         trajectory_checks_s: 0.0,
         state_s: 0.0,
         bytes: 0.0,
     };
     for cond in &d.conditions {
         if let Some((traj_s, one_s, b)) = planetary_costs(&cond.case, d) {
-            c.trajectories_s += traj_s;
             // A set's kept trajectory is checked as its wear checkpoints are: a sample of
             // its updates recomputed, each about one update of the set.
-            c.trajectory_checks_s += (MAX_RECOMPUTED + 1) as f64 * one_s;
+            let check_s = (MAX_RECOMPUTED + 1) as f64 * one_s;
+            c.trajectory_checks_s += check_s;
+            c.trajectory_s.push((traj_s, check_s));
             c.state_s = c.state_s.max(one_s);
             c.bytes = c.bytes.max(b);
             continue;
@@ -167,9 +216,10 @@ fn design_costs(d: &DatasetDesign, record: RecordSize) -> DesignCosts {
                 quasi_static: false,
             },
         );
-        c.trajectories_s += run_to_failure_seconds(&case, w.wear_updates_dynamic);
-        let checked = (MAX_RECOMPUTED + 1) as f64;
-        c.trajectory_checks_s += checked * run_to_failure_seconds(&case, 1.0);
+        let traj_s = run_to_failure_seconds(&case, w.wear_updates_dynamic);
+        let check_s = (MAX_RECOMPUTED + 1) as f64 * run_to_failure_seconds(&case, 1.0);
+        c.trajectory_checks_s += check_s;
+        c.trajectory_s.push((traj_s, check_s));
         c.bytes = c.bytes.max(w.memory_bytes());
         for speed in ends(&d.speeds_hz) {
             for torque in ends(&d.torques_nm) {
@@ -213,9 +263,22 @@ pub fn estimate_dataset_check(
     threads: usize,
     record: RecordSize,
 ) -> Estimate {
+    estimate_folder_check(d, kept, MAX_RECOMPUTED_STATES, threads, record)
+}
+
+/// [`estimate_dataset_check`] with `sample` physical states recomputed (at most those
+/// kept): the cost of `app::dataset::jobs::verify_folder`, whose sample is the caller's.
+/// (Before issue 33's count of it, a folder's check was budgeted nowhere.)
+pub fn estimate_folder_check(
+    d: &DatasetDesign,
+    kept: KeptRecords,
+    sample: usize,
+    threads: usize,
+    record: RecordSize,
+) -> Estimate {
     let plan = plan_of(d);
     let c = design_costs(d, record);
-    let sampled = kept.states.min(MAX_RECOMPUTED_STATES as f64);
+    let sampled = kept.states.min(sample as f64);
     let realisations = plan.realisations as f64;
     let per_state_s = c.state_s
         + record_seconds(record, true)

@@ -11,7 +11,8 @@
 //! - [`helical`]: what a helical pair's wear per slice adds to `wear`;
 //! - [`sweep`]: `sweep` (sampled, not case by case) and `sweep-merge`;
 //! - [`signals`], [`dataset`], [`load_spectrum`]: those commands;
-//! - [`prognostics`]: `calibrate`, `predict` and `predict-merge`.
+//! - [`prognostics`]: `calibrate`, `predict` and `predict-merge`;
+//! - [`output`]: the process's start-up, and the tables and figures of `stiffness`.
 //!
 //! The model imports nothing above `study`: what prognostics knows (the span of the
 //! parameters) is handed down as numbers. The job layer refuses a job over budget before
@@ -31,6 +32,7 @@ pub mod dataset;
 pub mod evaluation;
 pub mod helical;
 pub mod load_spectrum;
+pub mod output;
 pub mod planetary;
 pub mod prognostics;
 pub mod signals;
@@ -44,7 +46,8 @@ pub use case_jobs::{
 };
 pub use cost::{Budget, Estimate, Term};
 pub use dataset::{
-    estimate_dataset, estimate_dataset_check, trajectory_bytes, KeptRecords, RecordSize,
+    estimate_dataset, estimate_dataset_check, estimate_dataset_resumed, estimate_folder_check,
+    trajectory_bytes, KeptRecords, RecordSize,
 };
 pub use evaluation::{
     adaptive_steps_per_period, nominal_wear_per_cycle_m, wear_updates,

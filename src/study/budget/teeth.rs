@@ -102,6 +102,18 @@ fn stage_teeth_and_repeats(case: &Case) -> (Vec<[usize; 2]>, Vec<usize>) {
     (teeth, repeats)
 }
 
+/// Stages of a train whose teeth differ (a fault on one of them): 0 for a single pair.
+pub fn faulty_train_stages(case: &Case) -> usize {
+    if case.stage.is_empty() {
+        return 0;
+    }
+    stage_teeth_and_repeats(case)
+        .1
+        .iter()
+        .filter(|r| **r > 1)
+        .count()
+}
+
 /// `gearwear stiffness` of a train with a tooth fault: each faulty stage's static
 /// transmission error over its own repeat (its pair alone, over the mesh periods its
 /// faulty teeth repeat over) at a single pair's cost, `s` quasi-static steps a mesh
