@@ -67,6 +67,19 @@ pub struct DynamicsSection<P = Derivable> {
     /// Gear axial bearing damping, N s/m (absent: the gear's radial bearing damping).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bearing_axial_damping_gear_n_s_per_m: Option<f64>,
+    /// Pinion tilting bearing stiffness, N m/rad, about each axis normal to the shaft (a
+    /// helical pair only; absent: rigid, no tilting degrees of freedom, docs/MODEL.md 11.8).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_tilt_stiffness_pinion_nm_per_rad: Option<f64>,
+    /// Gear tilting bearing stiffness, N m/rad (as the pinion's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_tilt_stiffness_gear_nm_per_rad: Option<f64>,
+    /// Pinion tilting bearing damping, N m s/rad (absent: none).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_tilt_damping_pinion_nm_s_per_rad: Option<f64>,
+    /// Gear tilting bearing damping, N m s/rad (absent: none).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearing_tilt_damping_gear_nm_s_per_rad: Option<f64>,
 }
 
 /// Masses (kg) and polar inertias (kg m^2) of pinion and gear, as numbers: what the
@@ -133,6 +146,10 @@ impl DynamicsSection {
             bearing_axial_stiffness_gear_n_per_m: self.bearing_axial_stiffness_gear_n_per_m,
             bearing_axial_damping_pinion_n_s_per_m: self.bearing_axial_damping_pinion_n_s_per_m,
             bearing_axial_damping_gear_n_s_per_m: self.bearing_axial_damping_gear_n_s_per_m,
+            bearing_tilt_stiffness_pinion_nm_per_rad: self.bearing_tilt_stiffness_pinion_nm_per_rad,
+            bearing_tilt_stiffness_gear_nm_per_rad: self.bearing_tilt_stiffness_gear_nm_per_rad,
+            bearing_tilt_damping_pinion_nm_s_per_rad: self.bearing_tilt_damping_pinion_nm_s_per_rad,
+            bearing_tilt_damping_gear_nm_s_per_rad: self.bearing_tilt_damping_gear_nm_s_per_rad,
         }
     }
 }
@@ -153,6 +170,54 @@ impl<P> DynamicsSection<P> {
                 (k, c.unwrap_or(self.bearing_damping_gear_n_s_per_m))
             }),
         ]
+    }
+}
+
+impl<P> DynamicsSection<P> {
+    /// The tilting bearings of pinion and gear (docs/MODEL.md 11.8): each body's stiffness
+    /// (N m/rad) and damping (N m s/rad, absent: 0) about each of the two axes normal to
+    /// its shaft where its `bearing_tilt_stiffness_*` key is given; None where the body's
+    /// tilting is held rigidly.
+    pub fn tilt_bearings(&self) -> [Option<(f64, f64)>; 2] {
+        [
+            self.bearing_tilt_stiffness_pinion_nm_per_rad.map(|k| {
+                (
+                    k,
+                    self.bearing_tilt_damping_pinion_nm_s_per_rad.unwrap_or(0.0),
+                )
+            }),
+            self.bearing_tilt_stiffness_gear_nm_per_rad.map(|k| {
+                (
+                    k,
+                    self.bearing_tilt_damping_gear_nm_s_per_rad.unwrap_or(0.0),
+                )
+            }),
+        ]
+    }
+
+    /// The tilting keys the case gives, (key, value), in schema order.
+    pub fn tilt_keys(&self) -> Vec<(&'static str, f64)> {
+        [
+            (
+                "dynamics.bearing_tilt_stiffness_pinion_nm_per_rad",
+                self.bearing_tilt_stiffness_pinion_nm_per_rad,
+            ),
+            (
+                "dynamics.bearing_tilt_stiffness_gear_nm_per_rad",
+                self.bearing_tilt_stiffness_gear_nm_per_rad,
+            ),
+            (
+                "dynamics.bearing_tilt_damping_pinion_nm_s_per_rad",
+                self.bearing_tilt_damping_pinion_nm_s_per_rad,
+            ),
+            (
+                "dynamics.bearing_tilt_damping_gear_nm_s_per_rad",
+                self.bearing_tilt_damping_gear_nm_s_per_rad,
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(k, v)| v.map(|v| (k, v)))
+        .collect()
     }
 }
 
@@ -192,6 +257,10 @@ impl Default for DynamicsSection {
             bearing_axial_stiffness_gear_n_per_m: None,
             bearing_axial_damping_pinion_n_s_per_m: None,
             bearing_axial_damping_gear_n_s_per_m: None,
+            bearing_tilt_stiffness_pinion_nm_per_rad: None,
+            bearing_tilt_stiffness_gear_nm_per_rad: None,
+            bearing_tilt_damping_pinion_nm_s_per_rad: None,
+            bearing_tilt_damping_gear_nm_s_per_rad: None,
         }
     }
 }

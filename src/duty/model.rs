@@ -58,6 +58,10 @@ impl SpectrumModel {
     /// `wear`, `run` and the wear sweeps run. A spur pair or a train is built exactly as
     /// [`SpectrumModel::from_case`] builds it (a helical train keeps that refusal).
     pub fn dynamics_from_case(case: &Case) -> Result<Self, ModelError> {
+        let study = "a `[load_spectrum]`";
+        if let Some(r) = crate::study::helical_tilt::tilt_refusal(case, study) {
+            return Err(ModelError(vec![r]));
+        }
         if case.stage.is_empty() {
             Self::built_by(case, Model::dynamics_from_case)
         } else {

@@ -11,8 +11,10 @@
 //! (`dynamics::model::dof`). The axial coordinates (z of every body on an axial
 //! bearing: a helical pair whose case gives them, docs/MODEL.md 11.6) come as a third
 //! block after these, so the blocks before them keep their numbers (the single pair with
-//! both axial bearings: `[.., phi_b, z_p, z_g]`); tilting coordinates and a carrier's
-//! rotating frame (planetary sets) would add blocks after them.
+//! both axial bearings: `[.., phi_b, z_p, z_g]`). The tilting coordinates (rotations
+//! about the plane's x and y axes of every body on a tilting bearing, docs/MODEL.md 11.8)
+//! come as a fourth block after them (`[.., z_g, tilt_x_p, tilt_y_p, tilt_x_g,
+//! tilt_y_g]`); a carrier's rotating frame (planetary sets) would add a block after them.
 //!
 //! Equations (SI): M q'' + C q' + K q = f_ext + sum over meshes f_mesh(t, q, q'), with M
 //! diagonal (masses on the lateral coordinates, inertias on the rotations), K and C the
@@ -26,6 +28,9 @@ pub mod single_pair;
 mod tests_assembly;
 #[cfg(test)]
 mod tests_axial;
+#[cfg(test)]
+mod tests_tilt;
+mod tilt;
 pub mod train;
 
 use self::elements::Elements;
@@ -44,6 +49,10 @@ pub enum Dof {
     /// Axial displacement z of the body along its axis, m (+ along the pinion's angular
     /// velocity).
     Axial,
+    /// Tilt of the body about the plane's x axis, rad (small angle).
+    TiltX,
+    /// Tilt of the body about the plane's y axis, rad (small angle).
+    TiltY,
 }
 
 /// What is wrong with a set of elements (the case-file validation names the keys).
@@ -100,6 +109,9 @@ pub struct MeshGeometry {
     pub rotation: [usize; 2],
     /// Axial coordinate of pinion and gear, when they have one.
     pub axial: [Option<usize>; 2],
+    /// First tilting coordinate (about x; about y follows it) of pinion and gear, when
+    /// they tilt.
+    pub tilt: [Option<usize>; 2],
 }
 
 /// The assembled train (see the module docs).
@@ -113,6 +125,8 @@ pub struct Assembly {
     rotation: Vec<usize>,
     /// Axial coordinate of each body on an axial bearing.
     axial: Vec<Option<usize>>,
+    /// First tilting coordinate (about x; y follows) of each body on a tilting bearing.
+    tilt: Vec<Option<usize>>,
     n: usize,
     inverse_masses: Vec<f64>,
     stiffness: DMatrix<f64>,
@@ -157,11 +171,20 @@ impl Assembly {
                     })
             })
             .collect();
+        let tilt: Vec<Option<usize>> = (0..elements.bodies.len())
+            .map(|b| {
+                elements.tilt_bearings.iter().any(|t| t.body == b).then(|| {
+                    next += 2;
+                    next - 2
+                })
+            })
+            .collect();
         let n = next;
         let mut asm = Self {
             lateral,
             rotation,
             axial,
+            tilt,
             n,
             inverse_masses: vec![0.0; n],
             stiffness: DMatrix::zeros(n, n),
@@ -179,7 +202,26 @@ impl Assembly {
         asm.meshes = (0..asm.elements.meshes.len())
             .map(|m| asm.mesh_geometry(m))
             .collect();
+        asm.fill_mesh_tilting_springs();
         Ok(asm)
+    }
+
+    /// Each tilting helical mesh's own tilting spring J on the relative tilt
+    /// tau = a_g - a_p about the plane of action's normal (`MeshTilt`): J h h^T in the
+    /// constant stiffness, h = d tau / d q, and its lead gaps' mean moment G on tau: G h in
+    /// the constant forces (docs/MODEL.md 11.8).
+    fn fill_mesh_tilting_springs(&mut self) {
+        for (link, geo) in self.elements.meshes.iter().zip(&self.meshes) {
+            let Some(t) = link.tilt else { continue };
+            let h =
+                tilt::relative_tilt_gradient(geo.line_of_action, self.spin[link.pinion], geo.tilt);
+            for (i, hi) in &h {
+                for (j, hj) in &h {
+                    self.stiffness[(*i, *j)] += t.tilting_stiffness_nm_per_rad * hi * hj;
+                }
+                self.forces[*i] += t.gap_moment_nm * hi;
+            }
+        }
     }
 
     /// Number of coordinates (the state has twice as many entries).
@@ -199,6 +241,8 @@ impl Assembly {
             Dof::Y => self.lateral[body].map(|x| x + 1),
             Dof::Rotation => Some(self.rotation[body]),
             Dof::Axial => self.axial[body],
+            Dof::TiltX => self.tilt[body],
+            Dof::TiltY => self.tilt[body].map(|x| x + 1),
         }
     }
 
@@ -207,7 +251,8 @@ impl Assembly {
         &self.inverse_masses
     }
 
-    /// Constant stiffness (bearings, shafts, couplings), N/m, N m/rad.
+    /// Constant stiffness (bearings, shafts, couplings, and a tilting helical mesh's own
+    /// tilting spring, docs/MODEL.md 11.8), N/m, N m/rad.
     pub fn stiffness(&self) -> &DMatrix<f64> {
         &self.stiffness
     }
@@ -300,6 +345,11 @@ impl Assembly {
                 self.inverse_masses[z] = 1.0 / body.mass_kg;
             }
         }
+        for t in &self.elements.tilt_bearings {
+            let x = self.tilt[t.body].expect("a tilting bearing's body tilts");
+            self.inverse_masses[x] = 1.0 / t.diametral_inertia_kg_m2;
+            self.inverse_masses[x + 1] = 1.0 / t.diametral_inertia_kg_m2;
+        }
     }
 
     /// The drive's boundary: an imposed angle is a coordinate of infinite inertia (zero
@@ -335,6 +385,13 @@ impl Assembly {
             let z = self.axial[a.body].expect("an axial bearing's body has an axial coordinate");
             self.stiffness[(z, z)] += a.stiffness_n_per_m;
             self.damping[(z, z)] += a.damping_n_s_per_m;
+        }
+        for t in &e.tilt_bearings {
+            let x = self.tilt[t.body].expect("a tilting bearing's body tilts");
+            for i in [x, x + 1] {
+                self.stiffness[(i, i)] += t.stiffness_nm_per_rad;
+                self.damping[(i, i)] += t.damping_nm_s_per_rad;
+            }
         }
         for b in &e.bearings {
             let x = self.lateral[b.body].expect("a bearing's body moves laterally");
@@ -385,7 +442,8 @@ impl Assembly {
     /// of rotation (+1 counter-clockwise). For the paper's layout (e1 = +x, s = +1):
     /// d = (sin phi, cos phi), e = (cos phi, -sin phi), as in eq. (1). A helical mesh
     /// whose bodies move axially adds a (z_p - z_g), a = `MeshLink::axial_gradient`
-    /// (docs/MODEL.md 11.6).
+    /// (docs/MODEL.md 11.6); one whose bodies tilt its tilting terms (`tilt`,
+    /// docs/MODEL.md 11.8).
     fn mesh_geometry(&self, m: usize) -> MeshGeometry {
         let link = &self.elements.meshes[m];
         let s = self.spin[link.pinion];
@@ -419,6 +477,8 @@ impl Assembly {
                 }
             }
         }
+        let tilts = [self.tilt[link.pinion], self.tilt[link.gear]];
+        gradient.extend(tilt::tilt_gradient(link, d, s, tilts));
         gradient.sort_by_key(|(i, _)| *i);
         MeshGeometry {
             gradient,
@@ -427,7 +487,16 @@ impl Assembly {
             lateral,
             rotation,
             axial,
+            tilt: tilts,
         }
+    }
+
+    /// d tau / d q of mesh `m` ((coordinate, rad/rad) pairs): tau = a_g - a_p, the
+    /// relative tilt of its gear and pinion about the plane of action's normal n = d x z
+    /// (docs/MODEL.md 11.8); empty where neither body tilts.
+    pub fn relative_tilt_gradient(&self, m: usize) -> Vec<(usize, f64)> {
+        let (link, geo) = (&self.elements.meshes[m], &self.meshes[m]);
+        tilt::relative_tilt_gradient(geo.line_of_action, self.spin[link.pinion], geo.tilt)
     }
 
     /// d delta / d q of mesh `m` as a dense vector.
@@ -476,6 +545,8 @@ impl Assembly {
                     Dof::Y => (format!("y_{b}"), "m"),
                     Dof::Rotation => (format!("phi_{b}"), "rad"),
                     Dof::Axial => (format!("z_{b}"), "m"),
+                    Dof::TiltX => (format!("tilt_x_{b}"), "rad"),
+                    Dof::TiltY => (format!("tilt_y_{b}"), "rad"),
                 }
             })
             .collect()
@@ -489,6 +560,16 @@ impl Assembly {
             }
             if self.axial[b] == Some(coordinate) {
                 return (&body.name, Dof::Axial);
+            }
+            if let Some(x) = self.tilt[b] {
+                if coordinate == x || coordinate == x + 1 {
+                    let dof = if coordinate == x {
+                        Dof::TiltX
+                    } else {
+                        Dof::TiltY
+                    };
+                    return (&body.name, dof);
+                }
             }
             if let Some(x) = self.lateral[b] {
                 if coordinate == x || coordinate == x + 1 {
@@ -508,6 +589,7 @@ fn check_indices(e: &Elements) -> Result<(), AssemblyError> {
         .iter()
         .map(|b| b.body)
         .chain(e.axial_bearings.iter().map(|a| a.body))
+        .chain(e.tilt_bearings.iter().map(|t| t.body))
         .chain(e.shafts.iter().flat_map(|s| s.ends))
         .chain(e.meshes.iter().flat_map(|m| [m.pinion, m.gear]))
         .chain([e.drive.input, e.drive.output]);

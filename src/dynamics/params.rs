@@ -156,6 +156,21 @@ pub struct AxialSupport {
     pub bearings: [Option<(f64, f64)>; 2],
 }
 
+/// The tilting degrees of freedom of a helical pair (docs/MODEL.md 11.8): the mesh's
+/// tilting levers and the tilting bearings that hold pinion and gear.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TiltSupport {
+    /// How the bodies' tilts enter the mesh deflection (levers and the mesh's own tilting
+    /// stiffness).
+    pub mesh: crate::dynamics::assembly::elements::MeshTilt,
+    /// Tilting bearing stiffness (N m/rad) and damping (N m s/rad) of pinion and gear,
+    /// each about both axes normal to the shaft; None: rigid (no tilting coordinates).
+    pub bearings: [Option<(f64, f64)>; 2],
+    /// Diametral moments of inertia of pinion and gear, kg m^2 (each about an axis normal
+    /// to its shaft through its centre).
+    pub diametral_inertia_kg_m2: [f64; 2],
+}
+
 /// Parameters of paper eq. (1), SI: the lumped masses, inertias, bearing and coupling
 /// stiffness and damping of the case (already SI, units in their names), and the
 /// operating point derived from the case and the pair.
@@ -173,6 +188,9 @@ pub struct DynamicParams {
     /// The axial degrees of freedom of a helical pair whose case gives axial bearings
     /// (None: the planar model, and every spur pair).
     pub axial: Option<AxialSupport>,
+    /// The tilting degrees of freedom of a helical pair whose case gives tilting bearings
+    /// (None: no tilting coordinates, and every spur pair).
+    pub tilt: Option<TiltSupport>,
 }
 
 impl DynamicParams {
@@ -187,6 +205,7 @@ impl DynamicParams {
             motor_slip_damping_nm_s_per_rad: o.motor_slip_damping_nm_s_per_rad,
             operating: OperatingPoint::of(o, pair),
             axial: None,
+            tilt: None,
         }
     }
 
@@ -194,6 +213,12 @@ impl DynamicParams {
     pub fn axial_coordinates(&self) -> usize {
         self.axial
             .map_or(0, |a| a.bearings.iter().filter(|b| b.is_some()).count())
+    }
+
+    /// Number of tilting coordinates (two per body on a tilting bearing), 0 to 4.
+    pub fn tilt_coordinates(&self) -> usize {
+        self.tilt
+            .map_or(0, |t| 2 * t.bearings.iter().filter(|b| b.is_some()).count())
     }
 
     /// Equivalent mass of the mesh's torsional mode, kg (docs/PAPER_NOTES.md):

@@ -50,13 +50,22 @@ pub fn helical_summary(model: &Model, r: &DynamicResponse) -> Option<Value> {
             "max_n": extreme(f64::max, f64::NEG_INFINITY),
             "min_n": extreme(f64::min, f64::INFINITY),
         },
-        "model": if model.params.axial.is_some() {
+        "model": if model.params.tilt.is_some() {
+            "tilting: the slice mesh stiffness on the transverse line of action, pinion and gear on tilting bearings (docs/MODEL.md 11.8), axial bearings where given (11.6)"
+        } else if model.params.axial.is_some() {
             "axial: the slice mesh stiffness on the transverse line of action, pinion and gear on axial bearings (docs/MODEL.md 11.6)"
         } else {
             "planar: the slice mesh stiffness on the transverse line of action; the axial force has no degree of freedom (docs/MODEL.md 11.1)"
         },
         "axial_bearings": axial_bearings(model, r, &axial),
     }))
+    .map(|mut v| {
+        // Only with tilting coordinates: the planar and axial summaries stay as they were.
+        if let Some(t) = super::dynamics_tilt::tilt_summary(model, r) {
+            v["tilt"] = t;
+        }
+        v
+    })
 }
 
 /// Extremes (min, max) of a signal.

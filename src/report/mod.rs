@@ -13,6 +13,7 @@ pub mod duty_train;
 pub mod dynamics;
 pub mod dynamics_helical;
 pub mod dynamics_planetary;
+pub mod dynamics_tilt;
 pub mod face_load;
 pub mod figure_output;
 pub mod figures;

@@ -266,6 +266,36 @@ impl SliceMeshStiffness {
         self.slices() as f64 * self.slice.mean_stiffness_n_per_m()
     }
 
+    /// The moments int_A^E k(rho) rho^n drho (n = 0, 1, 2; N, N m, N m^2) of one slice's
+    /// tooth-pair stiffness k (N/m) over the transverse path of contact [A, E], rho the
+    /// distance along the line of action from the pinion's base-circle tangency point N1
+    /// (m): composite Simpson's rule on [`PATH_MOMENT_INTERVALS`] intervals. Each tooth
+    /// pair sweeps the path once per base pitch p_b, so the period mean of any slice sum
+    /// sum_i k(rho_i) f(rho_i) is (1/p_b) int k f drho (its n = 0 moment times N / p_b is
+    /// the mean mesh stiffness); the tilting degrees of freedom take their mean lever and
+    /// tilting stiffness from them (docs/MODEL.md 11.8).
+    pub fn path_moments(&self) -> [f64; 3] {
+        let t = &self.pair.transverse;
+        let (a, e) = (t.rho_start_m, t.rho_end_m);
+        let n = PATH_MOMENT_INTERVALS;
+        let h = (e - a) / n as f64;
+        let mut m = [0.0; 3];
+        for i in 0..=n {
+            let w = match i {
+                0 => 1.0,
+                i if i == n => 1.0,
+                i if i % 2 == 1 => 4.0,
+                _ => 2.0,
+            };
+            let r = a + i as f64 * h;
+            let k = self.slice.pair_stiffness_n_per_m(r);
+            m[0] += w * k;
+            m[1] += w * k * r;
+            m[2] += w * k * r * r;
+        }
+        m.map(|x| x * h / 3.0)
+    }
+
     /// Smallest and largest k_m over `n` uniform phases of a mesh period, N/m.
     pub fn sampled_extrema_n_per_m(&self, n: usize) -> (f64, f64) {
         let period = self.pair.transverse.mesh_angle_rad();
@@ -276,6 +306,11 @@ impl SliceMeshStiffness {
             })
     }
 }
+
+/// Intervals of [`SliceMeshStiffness::path_moments`]' Simpson rule (even): the slice's
+/// stiffness is a spline on the slice table's own spacing, finer than this only for
+/// tables above 4000 points, and its integral then converges as h^4 still.
+pub const PATH_MOMENT_INTERVALS: usize = 4000;
 
 /// Most table points of the contact line's stiffness (a helix angle near 0 would ask for
 /// ever finer ones: its slices' stagger vanishes).

@@ -77,6 +77,9 @@ impl DynamicFaceLoad {
         let y = s.positions_m().to_vec();
         let sig = &r.signals.meshes[0];
         let weights = trapezoid_weights(&r.signals.time_s);
+        // With tilting degrees of freedom, each slice's compression gains the relative
+        // tilt's linear part across the face, (y_j - b/2) tau (docs/MODEL.md 11.8).
+        let tau = super::helical_tilt::relative_tilt_rad(model, r);
         let (mut mean, mut max) = (vec![0.0; n], vec![0.0_f64; n]);
         let mut moment = Vec::with_capacity(weights.len());
         let (mut k, mut f) = (vec![0.0; n], vec![0.0; n]);
@@ -90,8 +93,9 @@ impl DynamicFaceLoad {
             for (_, rho) in lines.take(MAX_PAIRS) {
                 s.add_line_slices(&grid, rho, &mut k);
             }
-            for ((fj, kj), g) in f.iter_mut().zip(&k).zip(&gaps) {
-                *fj = kj * (c - g).max(0.0);
+            let tilt = tau.as_ref().map_or(0.0, |t| t[i]);
+            for (j, ((fj, kj), g)) in f.iter_mut().zip(&k).zip(&gaps).enumerate() {
+                *fj = kj * (c - g + (y[j] - 0.5 * b) * tilt).max(0.0);
             }
             let total: f64 = f.iter().sum();
             let scale = if total > 0.0 {

@@ -159,6 +159,8 @@ impl Model {
         let gaps = lead_gaps(&hm, &mut warnings)?;
         let mut params = DynamicParams::from_case(case, &transverse);
         params.axial = axial_support(case, &hp);
+        let gap_m = gaps.as_ref().map(|g| &g.static_load);
+        params.tilt = super::helical_tilt::tilt_support(case, &hm.slices, &params, gap_m)?;
         warnings.extend(body_value_warnings(
             case,
             &transverse.blank_estimates(case.dynamics.blank_density_kg_per_m3),

@@ -279,6 +279,7 @@ impl Model {
         ));
         warnings.extend(pitch_line_velocity_warning(case, &pair, &params.operating));
         warnings.extend(axial_key_warnings(case));
+        warnings.extend(super::helical_tilt::tilt_key_warnings(case));
         let friction = Friction::from_case(&case.friction);
         let grid = ProfileGrid::new(&pair, case.wear.points_per_profile.max(2) as usize);
         let teeth = ToothInputs::from_case(
@@ -329,6 +330,9 @@ impl Model {
     /// The model of a train case: its stages and assembly, and the first stage in the
     /// single pair's fields.
     fn train_from_case(case: &Case) -> Result<Self, ModelError> {
+        if let Some(r) = super::helical_tilt::tilt_refusal(case, "a gear train (`[[stage]]`)") {
+            return Err(ModelError(vec![r]));
+        }
         let elastic = ElasticPair::from_case(&case.materials);
         let train = super::train::TrainModel::from_case(case, &elastic)?;
         let first = &train.stages[0];
@@ -363,6 +367,7 @@ impl Model {
                 static_mesh_force_n: p.static_mesh_force_n,
             },
             axial: None,
+            tilt: None,
         };
         Ok(Self {
             contact: first.contact.clone(),
@@ -522,7 +527,10 @@ impl Model {
     pub fn state_len(&self) -> usize {
         match &self.train {
             Some(t) => 2 * t.assembly.len(),
-            None => crate::dynamics::model::NSTATE + 2 * self.params.axial_coordinates(),
+            None => {
+                let extra = self.params.axial_coordinates() + self.params.tilt_coordinates();
+                crate::dynamics::model::NSTATE + 2 * extra
+            }
         }
     }
 

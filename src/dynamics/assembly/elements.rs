@@ -82,6 +82,70 @@ impl AxialBearing {
     }
 }
 
+/// A tilting bearing: a body held to ground against rotation about the two axes normal
+/// to its shaft (x and y of the train's plane) by a spring and a damper per axis
+/// (docs/MODEL.md 11.8). A body with one carries two tilting coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TiltBearing {
+    /// Index of the body the bearing holds.
+    pub body: usize,
+    /// Tilting stiffness about each axis, N m/rad.
+    pub stiffness_nm_per_rad: f64,
+    /// Tilting damping about each axis, N m s/rad.
+    pub damping_nm_s_per_rad: f64,
+    /// The body's diametral moment of inertia (about an axis normal to its shaft through
+    /// its centre), kg m^2: the inertia of its tilting coordinates.
+    pub diametral_inertia_kg_m2: f64,
+}
+
+impl TiltBearing {
+    /// The tilting bearings of a pair's two `bodies` (pinion, gear) from their (stiffness
+    /// N m/rad, damping N m s/rad) and diametral inertias (kg m^2); a body without one
+    /// (None) has no tilting coordinates.
+    pub(crate) fn of_pair(
+        bodies: [usize; 2],
+        bearings: [Option<(f64, f64)>; 2],
+        inertia_kg_m2: [f64; 2],
+    ) -> Vec<Self> {
+        (0..2)
+            .filter_map(|i| {
+                bearings[i].map(|(k, c)| TiltBearing {
+                    body: bodies[i],
+                    stiffness_nm_per_rad: k,
+                    damping_nm_s_per_rad: c,
+                    diametral_inertia_kg_m2: inertia_kg_m2[i],
+                })
+            })
+            .collect()
+    }
+}
+
+/// How the tilts of a helical mesh's bodies enter its deflection (docs/MODEL.md 11.8).
+/// With n = d x z the unit normal of the plane of action in the transverse plane (d the
+/// transverse line of action, z the pinion's axis) and each body's small tilt a about n
+/// and b about d (rad), the deflection along the transverse line of action gains
+///   -mu a_p + (mu - s t L) a_g + s t (r_b1 b_p + r_b2 b_g)   (m),
+/// s t the hand's sign s times t = tan(beta_b) (`signed_tan_base_helix`), L the length
+/// N1N2 of the line of action between the base circles' tangency points, and the mesh
+/// adds the tilting spring J (a_g - a_p)^2 / 2 of the spread of its slices about their
+/// centre of stiffness and the constant moment of its lead gaps on a_g - a_p.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshTilt {
+    /// mu = s t rho_bar, m: the slices' mean lever (period mean of sum k_j mu_j over sum
+    /// k_j, mu_j = y_j - b/2 + s t rho_j).
+    pub centre_lever_m: f64,
+    /// s t = s tan(beta_b), s = +1 for a right-hand pinion, -1 for a left-hand one (the
+    /// sign of the axial force on the pinion, `study::helical::pinion_axial_sign`).
+    pub signed_tan_base_helix: f64,
+    /// The period-mean moment of the slices' lead gaps, (K / N) sum_j G_j (y_j - b/2),
+    /// N m: a constant generalised force on the relative tilt (0 without lead gaps).
+    pub gap_moment_nm: f64,
+    /// L = N1N2, m.
+    pub line_of_action_length_m: f64,
+    /// J, N m/rad: the period mean of sum k_j (mu_j - mu)^2.
+    pub tilting_stiffness_nm_per_rad: f64,
+}
+
 /// A shaft or coupling between two bodies that turn together: a torsional spring and
 /// damper on the difference of their rotations and, where the shaft carries two gears, a
 /// lateral spring and damper between their centres (0: none).
@@ -124,6 +188,10 @@ pub struct MeshLink {
     /// for a helical mesh (docs/MODEL.md 11.6), 0 for a spur one. It enters the gradient
     /// only for a body with an axial coordinate (an [`AxialBearing`]).
     pub axial_gradient: f64,
+    /// How the bodies' tilts enter the deflection (a helical mesh whose bodies tilt; None:
+    /// no tilting terms). They enter the gradient only for bodies with a
+    /// [`TiltBearing`].
+    pub tilt: Option<MeshTilt>,
 }
 
 /// Which bodies the power enters and leaves by, and how their speeds are held
@@ -158,6 +226,8 @@ pub struct Elements {
     /// Axial bearings (a helical pair whose case gives them; none otherwise: every body
     /// then has no axial coordinate).
     pub axial_bearings: Vec<AxialBearing>,
+    /// Tilting bearings (a helical pair whose case gives them; none otherwise).
+    pub tilt_bearings: Vec<TiltBearing>,
     /// Where the power enters and leaves, and how the speeds are held.
     pub drive: Drive,
 }

@@ -2,7 +2,9 @@
 //! gear on bearings, the motor and brake coupled to them, one mesh (paper eq. 1); a
 //! helical pair's axial bearings where its case gives them (docs/MODEL.md 11.6).
 
-use super::elements::{AxialBearing, Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft};
+use super::elements::{
+    AxialBearing, Bearing, Body, BodyKind, Drive, Elements, MeshLink, Shaft, TiltBearing,
+};
 use crate::dynamics::params::DynamicParams;
 use crate::geometry::GearPair;
 
@@ -18,7 +20,8 @@ pub const BRAKE: usize = 3;
 impl Elements {
     /// The elements of paper eq. (1) for `pair` with the lumped parameters and operating
     /// point of `params`: the pinion's centre at the origin, the gear's on +x; with
-    /// `params.axial`, the axial bearings and the mesh's axial gradient.
+    /// `params.axial`, the axial bearings and the mesh's axial gradient; with
+    /// `params.tilt`, the tilting bearings and the mesh's tilting terms.
     pub fn single_pair(params: &DynamicParams, pair: &GearPair) -> Self {
         let l = &params.lumped;
         let axial_bearings = params.axial.map_or_else(Vec::new, |a| {
@@ -94,8 +97,12 @@ impl Elements {
                 pressure_angle_rad: pair.operating_pressure_angle_rad,
                 centre_line_rad: 0.0,
                 axial_gradient: params.axial.map_or(0.0, |a| a.axial_gradient),
+                tilt: params.tilt.map(|t| t.mesh),
             }],
             axial_bearings,
+            tilt_bearings: params.tilt.map_or_else(Vec::new, |t| {
+                TiltBearing::of_pair([PINION, GEAR], t.bearings, t.diametral_inertia_kg_m2)
+            }),
             drive: Drive {
                 input: MOTOR,
                 output: BRAKE,

@@ -170,6 +170,7 @@ fn two_stage() -> Elements {
         pressure_angle_rad: 0.4,
         centre_line_rad: psi,
         axial_gradient: 0.0,
+        tilt: None,
     };
     Elements {
         bodies: vec![
@@ -199,6 +200,7 @@ fn two_stage() -> Elements {
             ),
         ],
         axial_bearings: Vec::new(),
+        tilt_bearings: Vec::new(),
         drive: Drive {
             input: 0,
             output: 5,

@@ -130,12 +130,14 @@ fn a_pinion_sliding_against_a_held_gear_has_the_closed_form_frequencies() {
             pressure_angle_rad: 0.35,
             centre_line_rad: 0.0,
             axial_gradient: a,
+            tilt: None,
         }],
         axial_bearings: vec![AxialBearing {
             body: 0,
             stiffness_n_per_m: ka,
             damping_n_s_per_m: 0.0,
         }],
+        tilt_bearings: Vec::new(),
         drive: Drive {
             input: 1,
             output: 0,

@@ -121,6 +121,7 @@ impl Elements {
                 pressure_angle_rad: s.pressure_angle_rad,
                 centre_line_rad: s.centre_line_rad,
                 axial_gradient: s.axial.map_or(0.0, |a| a.axial_gradient),
+                tilt: None,
             });
             axial_bearings.extend(stage_axial_bearings(s, [p, g]));
             if let Some((kt, ct)) = s.shaft.filter(|_| k + 1 < n) {
@@ -142,6 +143,7 @@ impl Elements {
             shafts,
             meshes,
             axial_bearings,
+            tilt_bearings: Vec::new(),
             drive,
         }
     }

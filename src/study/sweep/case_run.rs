@@ -445,6 +445,10 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
         SweepRun::Wear => {
             // A train's wear takes spur stages only (`Model::from_case` refuses a
             // helical stage, naming its key); a single helical pair wears per slice.
+            let study = "a wear sweep";
+            if let Some(r) = crate::study::helical_tilt::tilt_refusal(case, study) {
+                return Err(CaseError::Model(crate::study::ModelError(vec![r])));
+            }
             let build = if case.stage.is_empty() {
                 Model::dynamics_from_case
             } else {
