@@ -95,24 +95,7 @@ impl Elements {
                 l.inertia_pinion_kg_m2,
             ));
             bodies.push(gear(name("gear", k), l.mass_gear_kg, l.inertia_gear_kg_m2));
-            for (body, kb, cb) in [
-                (
-                    p,
-                    l.bearing_stiffness_pinion_n_per_m,
-                    l.bearing_damping_pinion_n_s_per_m,
-                ),
-                (
-                    g,
-                    l.bearing_stiffness_gear_n_per_m,
-                    l.bearing_damping_gear_n_s_per_m,
-                ),
-            ] {
-                bearings.push(Bearing {
-                    body,
-                    stiffness_n_per_m: [kb, kb],
-                    damping_n_s_per_m: [cb, cb],
-                });
-            }
+            bearings.extend(stage_bearings(l, [p, g]));
             meshes.push(MeshLink {
                 pinion: p,
                 gear: g,
@@ -147,6 +130,28 @@ impl Elements {
             drive,
         }
     }
+}
+
+/// A stage's lateral bearings on its pinion and gear (`bodies`), the same stiffness and
+/// damping in x and y (N/m, N s/m).
+fn stage_bearings(l: &DynamicsSection<f64>, bodies: [usize; 2]) -> [Bearing; 2] {
+    let bearing = |body, k, c| Bearing {
+        body,
+        stiffness_n_per_m: [k, k],
+        damping_n_s_per_m: [c, c],
+    };
+    [
+        bearing(
+            bodies[0],
+            l.bearing_stiffness_pinion_n_per_m,
+            l.bearing_damping_pinion_n_s_per_m,
+        ),
+        bearing(
+            bodies[1],
+            l.bearing_stiffness_gear_n_per_m,
+            l.bearing_damping_gear_n_s_per_m,
+        ),
+    ]
 }
 
 /// A stage's axial bearings on its pinion and gear (`bodies`): each body on its own
