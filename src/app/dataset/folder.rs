@@ -198,6 +198,11 @@ pub fn is_file_in(root: &Path, rel: &str) -> bool {
 
 /// Names in the sub-folder `folder` of `root` (not through a link).
 fn names_in(root: &Path, folder: &str) -> Vec<String> {
+    // Reading never creates: `Dir::open_root` makes a missing root, and a job's budget
+    // counts what a folder holds before it may create it.
+    if !root.is_dir() {
+        return Vec::new();
+    }
     Dir::open_root(root)
         .and_then(|d| d.sub(folder, false))
         .and_then(|d| d.names())
