@@ -221,3 +221,22 @@ fn the_tilting_keys_are_refused_where_not_built_and_bad_values_named() {
         );
     }
 }
+
+#[test]
+fn tilt_damping_without_its_stiffness_is_warned_about_not_ignored() {
+    // Without `dynamics.bearing_tilt_stiffness_pinion_nm_per_rad` the pinion's tilting is
+    // held rigidly: a damping given alone has nothing to act on, so the model says so.
+    let m = model_of(&[
+        "gear.helix_angle_deg=15",
+        "contact.path=\"nominal\"",
+        "dynamics.bearing_tilt_damping_pinion_nm_s_per_rad=100",
+    ]);
+    assert!(
+        m.warnings
+            .iter()
+            .any(|w| w
+                .contains("`dynamics.bearing_tilt_damping_pinion_nm_s_per_rad` = 100 is ignored")),
+        "{:?}",
+        m.warnings
+    );
+}

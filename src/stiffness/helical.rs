@@ -332,13 +332,14 @@ impl SliceMeshStiffness {
     /// (1/N of a full line). The line pair at phase phi is the slice model at
     /// phi - L / r_b1 (the time origin shifts). Returned last: the line's extent L, m.
     ///
-    /// A line shorter than the table's finest spacing (L below the path over
-    /// [`MAX_LINE_POINTS`]: a helix angle below about 1e-4 deg on the paper's 20 mm face)
-    /// cannot be resolved: its N slices meet the path within one table step, a whole
-    /// pair's jump that rings in the spline (measured: the paper's pair at 1e-4 deg gave
-    /// a dynamic factor of 1.623 against 1.600 at 0 and 1.598 at 0.01 deg). Such a line is
-    /// taken as its N slices in phase, L = 0: the transverse pair with N times the slice's
-    /// own table, the spur pair of the whole face.
+    /// A line whose slice spacing L / N is below the table's finest spacing (the path over
+    /// [`MAX_LINE_POINTS`]: a helix angle below about 0.03 deg on the paper's 20 mm face
+    /// with 100 slices) cannot be resolved: several of its slices meet the path within one
+    /// table step, down to a whole pair's jump, which rings in the spline (measured on the
+    /// paper's pair with 100 slices: a dynamic factor of 1.623 at 1e-4 deg and 1.6145 at
+    /// 5e-4 deg against 1.600 at 0). Such a line is taken as its N slices in phase, L = 0:
+    /// the transverse pair with N times the slice's own table, the spur pair of the whole
+    /// face (its stagger is then under 1/1000 of the path).
     ///
     /// One slice is its own line: the slice model itself, L = 0 (a jump of a whole pair's
     /// stiffness would ring in the spline; with N >= 2 each step is 1/N of a line).
@@ -354,8 +355,8 @@ impl SliceMeshStiffness {
             step_m: h,
             offsets,
         } = self.line_grid();
-        if lead < h {
-            let n = self.slices() as f64;
+        let n = self.slices() as f64;
+        if lead / n < h {
             let (_, _, values, _) = self.slice.spline();
             let k: Vec<f64> = values.iter().map(|v| n * v).collect();
             let extrema = (20 * k.len()).min(20_000);

@@ -331,6 +331,22 @@ pub fn axial_damping_alone_warnings(case: &Case) -> Vec<String> {
     .collect()
 }
 
+/// Warnings for a helical pair's tilt damping given without that body's tilt stiffness:
+/// the body's tilting is then held rigidly (docs/MODEL.md 11.8), so the damping is unused.
+pub fn tilt_damping_alone_warnings(case: &Case) -> Vec<String> {
+    let d = &case.dynamics;
+    [
+        ("pinion", d.bearing_tilt_damping_pinion_nm_s_per_rad, d.bearing_tilt_stiffness_pinion_nm_per_rad),
+        ("gear", d.bearing_tilt_damping_gear_nm_s_per_rad, d.bearing_tilt_stiffness_gear_nm_per_rad),
+    ]
+    .into_iter()
+    .filter_map(|(body, c, k)| match (c, k) {
+        (Some(c), None) => Some(format!("`dynamics.bearing_tilt_damping_{body}_nm_s_per_rad` = {c} is ignored: without `dynamics.bearing_tilt_stiffness_{body}_nm_per_rad` the {body}'s tilting is held rigidly (docs/MODEL.md 11.8); give the stiffness for an elastic tilting bearing")),
+        _ => None,
+    })
+    .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -116,12 +116,16 @@ fn state_factor(case: &Case) -> f64 {
 /// state leaves the fixed 8-coordinate path for the general one, measured 7.3 ms against
 /// 4.6 ms for a cold steady state (beta 15 deg, 400 slices; 1.6), counted as 2. A train
 /// takes the general path whatever its stages, its axial coordinates counted by
-/// [`train_factor`]: 1.
+/// [`train_factor`]: 1. Tilting coordinates (docs/MODEL.md 11.8: any
+/// `dynamics.bearing_tilt_stiffness_*`) take the general path too, with up to 24 states
+/// against 16: 2 x 24 / 16 = 3 (measured 0.29 s against 0.19 s without them on the
+/// built-in helical pair at 2000 steps per mesh period, 1.5, inside it).
 pub fn axial_factor(case: &Case) -> f64 {
-    let axial = case.stage.is_empty()
-        && case.gear.helix_angle_deg != 0.0
-        && case.dynamics.axial_bearings().iter().any(Option::is_some);
-    if axial {
+    let helical = case.stage.is_empty() && case.gear.helix_angle_deg != 0.0;
+    let given = |b: [Option<(f64, f64)>; 2]| b.iter().any(Option::is_some);
+    if helical && given(case.dynamics.tilt_bearings()) {
+        3.0
+    } else if helical && given(case.dynamics.axial_bearings()) {
         2.0
     } else {
         1.0
