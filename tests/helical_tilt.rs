@@ -240,3 +240,30 @@ fn tilt_damping_without_its_stiffness_is_warned_about_not_ignored() {
         m.warnings
     );
 }
+
+#[test]
+fn on_a_spur_pair_the_tilting_keys_are_ignored_with_a_warning_by_every_study() {
+    // A spur pair has no tilting model: the keys are warned about and ignored whichever
+    // study builds it, a load spectrum's model included (it refused them while `wear`
+    // warned); on a helical pair the same model refuses them.
+    let spectrum = |helix: &str| {
+        let sets: Vec<String> = [
+            format!("gear.helix_angle_deg={helix}"),
+            "contact.path=\"nominal\"".into(),
+            "dynamics.bearing_tilt_stiffness_pinion_nm_per_rad=1e5".into(),
+        ]
+        .into();
+        gearwear::duty::SpectrumModel::dynamics_from_case(&load_case("", &sets).unwrap())
+    };
+    let spur = spectrum("0").expect("a spur pair ignores the tilting keys");
+    let warned = spur.bins[0].warnings.iter().any(|w| {
+        w.contains("`dynamics.bearing_tilt_stiffness_pinion_nm_per_rad` = 100000 is ignored")
+    });
+    assert!(warned, "{:?}", spur.bins[0].warnings);
+    let refusal = spectrum("15")
+        .err()
+        .expect("refused on a helical pair")
+        .0
+        .join(" ");
+    assert!(refusal.contains("does not take them"), "{refusal}");
+}

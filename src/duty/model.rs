@@ -59,7 +59,13 @@ impl SpectrumModel {
     /// [`SpectrumModel::from_case`] builds it (a helical train keeps that refusal).
     pub fn dynamics_from_case(case: &Case) -> Result<Self, ModelError> {
         let study = "a `[load_spectrum]`";
-        if let Some(r) = crate::study::helical_tilt::tilt_refusal(case, study) {
+        // On a spur pair the tilting keys are ignored with a warning, as everywhere (a
+        // train refuses them in its own model).
+        let helical = case.gear.helix_angle_deg != 0.0;
+        if let Some(r) = helical
+            .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
+            .flatten()
+        {
             return Err(ModelError(vec![r]));
         }
         if case.stage.is_empty() {

@@ -446,7 +446,12 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             // A train's wear takes spur stages only (`Model::from_case` refuses a
             // helical stage, naming its key); a single helical pair wears per slice.
             let study = "a wear sweep";
-            if let Some(r) = crate::study::helical_tilt::tilt_refusal(case, study) {
+            // On a spur pair the tilting keys are ignored with a warning, as everywhere.
+            let helical = case.gear.helix_angle_deg != 0.0;
+            if let Some(r) = helical
+                .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
+                .flatten()
+            {
                 return Err(CaseError::Model(crate::study::ModelError(vec![r])));
             }
             let build = if case.stage.is_empty() {
