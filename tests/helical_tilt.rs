@@ -267,3 +267,74 @@ fn on_a_spur_pair_the_tilting_keys_are_ignored_with_a_warning_by_every_study() {
         .join(" ");
     assert!(refusal.contains("does not take them"), "{refusal}");
 }
+
+#[test]
+fn the_mean_relative_tilt_follows_the_mesh_lever_and_tilting_stiffness() {
+    // Statics about the plane of action's normal, derived by hand (docs/MODEL.md 11.8):
+    // the slices' moment is mu F + J tau on the pinion and s t L F - (mu F + J tau) on the
+    // gear, each held by its bearing (k_t a = moment), so with c = 1 / k_t
+    //   tau = F (s t L c_g - mu (c_p + c_g)) / (1 + J (c_p + c_g)).
+    // Unequal bearings, so that mu and J do not cancel (the sum test above cancels them);
+    // mu and J from the summary (checked by time averages in src/study/helical_tilt.rs),
+    // F = T / r_b1 and L = (r_1 + r_2) sin(alpha_t) by hand. The model's mesh terms are
+    // time-invariant and linear in tau, so the period means obey this exactly: 1e-6 as the
+    // test above (the periodic solution's residual on a mean).
+    for (hand, s) in [("right", 1.0), ("left", -1.0)] {
+        let hand_key = format!("gear.helix_hand_pinion=\"{hand}\"");
+        let (kp, kg) = (1e5, 3e5);
+        let m = model_of(&[
+            "gear.helix_angle_deg=15",
+            "friction.model=\"none\"",
+            "dynamics.bearing_tilt_stiffness_pinion_nm_per_rad=1e5",
+            "dynamics.bearing_tilt_stiffness_gear_nm_per_rad=3e5",
+            &hand_key,
+        ]);
+        let tilt = tilt_of(&m, &steady(&m));
+        let c = &m.case;
+        let beta = 15f64.to_radians();
+        let alpha_t = (c.gear.pressure_angle_deg.to_radians().tan() / beta.cos()).atan();
+        let tan_bb = beta.tan() * alpha_t.cos();
+        let (z1, z2) = (c.gear.teeth_pinion as f64, c.gear.teeth_gear as f64);
+        let r1 = 0.5 * c.gear.module_mm * 1e-3 / beta.cos() * z1;
+        let l = (r1 + r1 * z2 / z1) * alpha_t.sin();
+        let f = c.operating.load_torque_nm / (r1 * alpha_t.cos());
+        let mu = num(&tilt, &["mesh_centre_lever_m"]);
+        let j = num(&tilt, &["mesh_tilting_stiffness_nm_per_rad"]);
+        let (cp, cg) = (1.0 / kp, 1.0 / kg);
+        let tau = f * (s * tan_bb * l * cg - mu * (cp + cg)) / (1.0 + j * (cp + cg));
+        let got = num(&tilt, &["relative_tilt_mean_rad"]);
+        assert!(
+            (got - tau).abs() <= 1e-6 * tau.abs(),
+            "{hand}: tau {got:.6e}, by hand {tau:.6e}"
+        );
+    }
+}
+
+#[test]
+fn a_tilt_that_would_unload_a_face_end_is_refused_before_the_run() {
+    // A soft tilting bearing (1e3 N m/rad) on a pair with a long line of action (150 gear
+    // teeth) and a narrow face: the static tilt of the test above gives K_Hbeta well over
+    // 2, half the face unloaded, beyond the linear law; refused naming the keys.
+    let sets: Vec<String> = [
+        "gear.helix_angle_deg=20",
+        "gear.teeth_gear=150",
+        "gear.face_width_mm=10",
+        "gear.hub_bore_radius_gear_mm=\"derived\"",
+        "contact.path=\"nominal\"",
+        "dynamics.bearing_tilt_stiffness_pinion_nm_per_rad=1e3",
+        "dynamics.bearing_tilt_stiffness_gear_nm_per_rad=1e3",
+    ]
+    .map(String::from)
+    .into();
+    let case = load_case("", &sets).expect("valid case");
+    let err = Model::helical_from_case(&case)
+        .err()
+        .expect("refused")
+        .0
+        .join(" ");
+    assert!(
+        err.contains("`dynamics.bearing_tilt_stiffness_pinion_nm_per_rad` = 1000")
+            && err.contains("unload a face end"),
+        "{err}"
+    );
+}

@@ -55,6 +55,34 @@ pub fn mesh_tilt(s: &SliceMeshStiffness, gaps_m: Option<&[f64]>) -> MeshTilt {
     }
 }
 
+/// The tilting keys of `case` as a message names them: "`key` = value, ...".
+fn tilt_keys_named(case: &Case) -> String {
+    let keys: Vec<String> = case
+        .dynamics
+        .tilt_keys()
+        .iter()
+        .map(|(k, v)| format!("`{k}` = {v}"))
+        .collect();
+    keys.join(", ")
+}
+
+/// The static relative tilt tau = a_g - a_p (rad) of an unmodified pair at the mean mesh
+/// force `force_n` (N), friction and the lines' fluctuation left out (docs/MODEL.md 11.8):
+/// the slices' moment about the plane of action's normal is mu F + J tau on the pinion and
+/// s t L F - (mu F + J tau) on the gear (the generalised forces of the slice deflections
+/// c_j, 11.8), each held by its bearing, k_t a = moment (a = 0 where tilting is rigid), so
+///   tau (1 + J (c_p + c_g)) = s t L F c_g - mu F (c_p + c_g),  c = 1 / k_t (0 rigid).
+pub(crate) fn static_relative_tilt_rad(
+    m: &MeshTilt,
+    bearings: [Option<(f64, f64)>; 2],
+    force_n: f64,
+) -> f64 {
+    let [cp, cg] = bearings.map(|b| b.map_or(0.0, |(k, _)| 1.0 / k));
+    let st_l = m.signed_tan_base_helix * m.line_of_action_length_m;
+    (st_l * force_n * cg - m.centre_lever_m * force_n * (cp + cg))
+        / (1.0 + m.tilting_stiffness_nm_per_rad * (cp + cg))
+}
+
 /// Diametral moment of inertia of a body of mass m (kg) and polar inertia J (kg m^2) on a
 /// face of width b (m), kg m^2: J / 2 + m b^2 / 12, a solid cylinder's (the blank's,
 /// docs/MODEL.md 11.8; exact for a solid blank, whose J = m r^2 / 2).
@@ -79,19 +107,25 @@ pub fn tilt_support(
         return Ok(None);
     }
     if let Some(f) = load.filter(|f| f.fewest_loaded_slices() < s.slices()) {
-        let keys: Vec<String> = case
-            .dynamics
-            .tilt_keys()
-            .iter()
-            .map(|(k, v)| format!("`{k}` = {v}"))
-            .collect();
         return Err(ModelError(vec![format!(
             "{} with the lead keys {}: the static face load leaves only {} of the {} slices loaded at some mesh position, and the tilting degrees of freedom take a face whose every slice is loaded (docs/MODEL.md 11.8); reduce the modification or the misalignment, or remove the tilting keys",
-            keys.join(", "),
+            tilt_keys_named(case),
             super::face_load::lead_keys(case).join(", "),
             f.fewest_loaded_slices(),
             s.slices()
         )]));
+    }
+    if load.is_none() {
+        let force = params.operating.static_mesh_force_n;
+        let tau = static_relative_tilt_rad(&mesh_tilt(s, None), bearings, force);
+        let k_mean = s.mean_stiffness_n_per_m();
+        if k_h_beta_of_tilt(s.pair(), s.slices(), k_mean, force, tau).is_none() {
+            return Err(ModelError(vec![format!(
+                "{}: the static mean tilt {tau:.3e} rad between the gears would unload a face end of the {} mm face at the mean mesh force {force:.0} N (K_Hbeta over 2), and the tilting degrees of freedom take a face whose every slice is loaded (their linear law, docs/MODEL.md 11.8); stiffen the tilting bearings or remove the keys",
+                tilt_keys_named(case),
+                1e3 * s.pair().face_width_m
+            )]));
+        }
     }
     let l = &params.lumped;
     let b = s.pair().face_width_m;
