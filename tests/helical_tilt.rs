@@ -225,20 +225,21 @@ fn the_tilting_keys_are_refused_where_not_built_and_bad_values_named() {
 #[test]
 fn tilt_damping_without_its_stiffness_is_warned_about_not_ignored() {
     // Without `dynamics.bearing_tilt_stiffness_pinion_nm_per_rad` the pinion's tilting is
-    // held rigidly: a damping given alone has nothing to act on, so the model says so.
+    // held rigidly: a damping given alone has nothing to act on, so the model says so; the
+    // gear's axial damping without its axial stiffness likewise (one warning per key).
     let m = model_of(&[
         "gear.helix_angle_deg=15",
         "contact.path=\"nominal\"",
         "dynamics.bearing_tilt_damping_pinion_nm_s_per_rad=100",
+        "dynamics.bearing_axial_damping_gear_n_s_per_m=50",
     ]);
-    assert!(
-        m.warnings
-            .iter()
-            .any(|w| w
-                .contains("`dynamics.bearing_tilt_damping_pinion_nm_s_per_rad` = 100 is ignored")),
-        "{:?}",
-        m.warnings
-    );
+    for key in [
+        "`dynamics.bearing_tilt_damping_pinion_nm_s_per_rad` = 100 is ignored: without `dynamics.bearing_tilt_stiffness_pinion_nm_per_rad`",
+        "`dynamics.bearing_axial_damping_gear_n_s_per_m` = 50 is ignored: without `dynamics.bearing_axial_stiffness_gear_n_per_m`",
+    ] {
+        let found = m.warnings.iter().filter(|w| w.contains(key)).count();
+        assert_eq!(found, 1, "{key}: {:?}", m.warnings);
+    }
 }
 
 #[test]

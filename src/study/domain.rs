@@ -315,33 +315,22 @@ pub fn axial_key_warnings(case: &Case) -> Vec<String> {
         .collect()
 }
 
-/// Warnings for a helical pair's axial damping given without that body's axial stiffness:
-/// the body's axial bearing is then rigid (docs/MODEL.md 11.6), so the damping is unused.
-pub fn axial_damping_alone_warnings(case: &Case) -> Vec<String> {
+/// Warnings for a helical pair's axial or tilt damping given without that body's stiffness
+/// of the same kind: the body's axial bearing is then rigid (docs/MODEL.md 11.6), or its
+/// tilting held rigidly (11.8), so the damping is unused.
+pub fn damping_alone_warnings(case: &Case) -> Vec<String> {
     let d = &case.dynamics;
+    let axial = "axial bearing is rigid (docs/MODEL.md 11.6); give the stiffness for an elastic axial bearing";
+    let tilt = "tilting is held rigidly (docs/MODEL.md 11.8); give the stiffness for an elastic tilting bearing";
     [
-        ("pinion", d.bearing_axial_damping_pinion_n_s_per_m, d.bearing_axial_stiffness_pinion_n_per_m),
-        ("gear", d.bearing_axial_damping_gear_n_s_per_m, d.bearing_axial_stiffness_gear_n_per_m),
+        ("axial", "pinion", "n_s_per_m", "n_per_m", d.bearing_axial_damping_pinion_n_s_per_m, d.bearing_axial_stiffness_pinion_n_per_m, axial),
+        ("axial", "gear", "n_s_per_m", "n_per_m", d.bearing_axial_damping_gear_n_s_per_m, d.bearing_axial_stiffness_gear_n_per_m, axial),
+        ("tilt", "pinion", "nm_s_per_rad", "nm_per_rad", d.bearing_tilt_damping_pinion_nm_s_per_rad, d.bearing_tilt_stiffness_pinion_nm_per_rad, tilt),
+        ("tilt", "gear", "nm_s_per_rad", "nm_per_rad", d.bearing_tilt_damping_gear_nm_s_per_rad, d.bearing_tilt_stiffness_gear_nm_per_rad, tilt),
     ]
     .into_iter()
-    .filter_map(|(body, c, k)| match (c, k) {
-        (Some(c), None) => Some(format!("`dynamics.bearing_axial_damping_{body}_n_s_per_m` = {c} is ignored: without `dynamics.bearing_axial_stiffness_{body}_n_per_m` the {body}'s axial bearing is rigid (docs/MODEL.md 11.6); give the stiffness for an elastic axial bearing")),
-        _ => None,
-    })
-    .collect()
-}
-
-/// Warnings for a helical pair's tilt damping given without that body's tilt stiffness:
-/// the body's tilting is then held rigidly (docs/MODEL.md 11.8), so the damping is unused.
-pub fn tilt_damping_alone_warnings(case: &Case) -> Vec<String> {
-    let d = &case.dynamics;
-    [
-        ("pinion", d.bearing_tilt_damping_pinion_nm_s_per_rad, d.bearing_tilt_stiffness_pinion_nm_per_rad),
-        ("gear", d.bearing_tilt_damping_gear_nm_s_per_rad, d.bearing_tilt_stiffness_gear_nm_per_rad),
-    ]
-    .into_iter()
-    .filter_map(|(body, c, k)| match (c, k) {
-        (Some(c), None) => Some(format!("`dynamics.bearing_tilt_damping_{body}_nm_s_per_rad` = {c} is ignored: without `dynamics.bearing_tilt_stiffness_{body}_nm_per_rad` the {body}'s tilting is held rigidly (docs/MODEL.md 11.8); give the stiffness for an elastic tilting bearing")),
+    .filter_map(|(kind, body, c_unit, k_unit, c, k, why)| match (c, k) {
+        (Some(c), None) => Some(format!("`dynamics.bearing_{kind}_damping_{body}_{c_unit}` = {c} is ignored: without `dynamics.bearing_{kind}_stiffness_{body}_{k_unit}` the {body}'s {why}")),
         _ => None,
     })
     .collect()

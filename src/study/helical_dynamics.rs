@@ -155,8 +155,7 @@ impl Model {
         }
         let (line_pair, mesh, lead) = hm.slices.line_model();
         let mut warnings = hm.warnings.clone();
-        warnings.extend(super::domain::axial_damping_alone_warnings(case));
-        warnings.extend(super::domain::tilt_damping_alone_warnings(case));
+        warnings.extend(super::domain::damping_alone_warnings(case));
         let gaps = lead_gaps(&hm, &mut warnings)?;
         let mut params = DynamicParams::from_case(case, &transverse);
         params.axial = axial_support(case, &hp);

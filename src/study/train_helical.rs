@@ -51,7 +51,7 @@ pub(crate) fn helical_stage(sc: &mut Case) -> Result<HelicalStageParts, Vec<Stri
         ]);
     }
     let mut warnings = hm.warnings.clone();
-    warnings.extend(super::domain::axial_damping_alone_warnings(sc));
+    warnings.extend(super::domain::damping_alone_warnings(sc));
     sc.contact.load_sharing = LoadSharingModel::Stiffness;
     if sc.contact.path.is_extended() {
         warnings.push(EXTENDED_PATH_WARNING.into());
