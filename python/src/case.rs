@@ -37,6 +37,37 @@ fn tree(c: &LibCase) -> toml::Table {
     }
 }
 
+/// The sections of `mine` that differ from `paper` beyond what the flat `KEYS` reach
+/// (`section.key`): arrays of tables (`[[stage]]`, `[[fault]]`) and nested tables, each
+/// named as it is spelt in a case file (`[[stage]] x 2`, `[planetary]`), so that
+/// `Case.__repr__` never shows a case as another one.
+fn beyond_flat_keys(mine: &toml::Table, paper: &toml::Table) -> Vec<String> {
+    let rest = |t: &toml::Table, sec: &str| -> Option<toml::Value> {
+        match t.get(sec)?.clone() {
+            toml::Value::Table(mut tab) => {
+                for s in KEYS {
+                    if let Some((a, k)) = s.key.split_once('.') {
+                        if a == sec {
+                            tab.remove(k);
+                        }
+                    }
+                }
+                (!tab.is_empty()).then_some(toml::Value::Table(tab))
+            }
+            other => Some(other),
+        }
+    };
+    let sections: std::collections::BTreeSet<&String> = mine.keys().chain(paper.keys()).collect();
+    sections
+        .into_iter()
+        .filter(|sec| rest(mine, sec) != rest(paper, sec))
+        .map(|sec| match mine.get(sec.as_str()) {
+            Some(toml::Value::Array(a)) => format!("[[{sec}]] x {}", a.len()),
+            _ => format!("[{sec}]"),
+        })
+        .collect()
+}
+
 /// Load through the library; problems become `CaseError`.
 fn load(py: Python<'_>, text: &str, sets: &[String]) -> PyResult<Case> {
     load_case(text, sets)
@@ -207,7 +238,10 @@ impl Case {
         RunMetadata::new("", &self.inner).case_sha256
     }
 
-    /// ``Case.paper().set({...})`` with the keys that differ from the paper's case.
+    /// ``Case.paper().set({...})`` with the keys that differ from the paper's case, when
+    /// those keys rebuild it; a case the flat keys cannot spell (a gear train's
+    /// ``[[stage]]`` tables, tooth faults, a planetary set's nested tables) gets a
+    /// ``<gearwear.Case: ...>`` that names what else differs (``to_toml()`` spells all).
     fn __repr__(&self) -> String {
         let (mine, paper) = (tree(&self.inner), tree(&LibCase::default()));
         let mut diff = Vec::new();
@@ -224,10 +258,20 @@ impl Case {
                 diff.push(format!("{:?}: {v}", s.key));
             }
         }
-        if diff.is_empty() {
-            "gearwear.Case.paper()".into()
-        } else {
-            format!("gearwear.Case.paper().set({{{}}})", diff.join(", "))
+        let beyond = beyond_flat_keys(&mine, &paper);
+        match (diff.is_empty(), beyond.is_empty()) {
+            (true, true) => "gearwear.Case.paper()".into(),
+            (false, true) => format!("gearwear.Case.paper().set({{{}}})", diff.join(", ")),
+            (true, false) => format!(
+                "<gearwear.Case: the paper's case with {}; to_toml() spells every key>",
+                beyond.join(", ")
+            ),
+            (false, false) => format!(
+                "<gearwear.Case: the paper's case with {} and the keys {{{}}}; to_toml() \
+                 spells every key>",
+                beyond.join(", "),
+                diff.join(", ")
+            ),
         }
     }
 

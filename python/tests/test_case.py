@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 import gearwear as gw
+from conftest import REPO
 
 
 def test_paper_case_and_keys():
@@ -138,3 +139,19 @@ def test_not_a_case():
         gw.dynamics({"gear.module_mm": 2})
     with pytest.raises(ValueError, match="mode"):
         gw.wear(gw.Case.paper(), mode="static")
+
+
+def test_repr_never_shows_a_case_as_another():
+    # A two-stage train and a tooth fault live in arrays of tables that the flat keys do
+    # not reach: their repr must not read as the paper's case (it did: "Case.paper()").
+    train = gw.Case.from_toml(REPO / "examples" / "two_stage_reducer.toml")
+    r = repr(train)
+    assert r.startswith("<gearwear.Case:") and "[[stage]] x 2" in r, r
+    assert train != gw.Case.paper()
+    fault = gw.Case.from_toml('[[fault]]\nkind = "crack"\ngear = "pinion"\ntooth = 0\ncrack_depth_mm = 1\n')
+    assert "[[fault]] x 1" in repr(fault), repr(fault)
+    with_key = fault.set("operating.load_torque_nm", 80)
+    assert '"operating.load_torque_nm": 80' in repr(with_key) and "[[fault]]" in repr(with_key)
+    # What the flat keys do spell stays an expression that rebuilds the case.
+    c = gw.Case.paper().set("operating.load_torque_nm", 80)
+    assert eval(repr(c), {"gearwear": gw}) == c
