@@ -4,6 +4,7 @@ pub mod case;
 pub mod derivable;
 mod docs;
 pub mod gear;
+mod key_spec;
 pub mod load;
 pub mod load_spectrum;
 pub mod lumped;

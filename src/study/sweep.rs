@@ -20,6 +20,7 @@ pub mod mesh_row;
 pub mod plan;
 pub mod planetary_row;
 pub mod resonance;
+mod row;
 pub mod table;
 pub mod verify;
 
