@@ -58,16 +58,9 @@ impl SpectrumModel {
     /// `wear`, `run` and the wear sweeps run. A spur pair or a train is built exactly as
     /// [`SpectrumModel::from_case`] builds it (a helical train keeps that refusal).
     pub fn dynamics_from_case(case: &Case) -> Result<Self, ModelError> {
-        let study = "a `[load_spectrum]`";
         // On a spur pair the tilting keys are ignored with a warning, as everywhere (a
         // train refuses them in its own model).
-        let helical = case.gear.helix_angle_deg != 0.0;
-        if let Some(r) = helical
-            .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
-            .flatten()
-        {
-            return Err(ModelError(vec![r]));
-        }
+        crate::study::helical_tilt::refuse_tilt_if_helical(case, "a `[load_spectrum]`")?;
         if case.stage.is_empty() {
             Self::built_by(case, Model::dynamics_from_case)
         } else {

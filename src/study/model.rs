@@ -330,9 +330,7 @@ impl Model {
     /// The model of a train case: its stages and assembly, and the first stage in the
     /// single pair's fields.
     fn train_from_case(case: &Case) -> Result<Self, ModelError> {
-        if let Some(r) = super::helical_tilt::tilt_refusal(case, "a gear train (`[[stage]]`)") {
-            return Err(ModelError(vec![r]));
-        }
+        super::helical_tilt::refuse_tilt(case, "a gear train (`[[stage]]`)")?;
         let elastic = ElasticPair::from_case(&case.materials);
         let train = super::train::TrainModel::from_case(case, &elastic)?;
         let first = &train.stages[0];

@@ -62,9 +62,7 @@ impl PlanetaryStudy {
         if let Some(r) = super::face_load::lead_refusal(case) {
             return Err(ModelError(vec![r]));
         }
-        if let Some(r) = super::helical_tilt::tilt_refusal(case, "a planetary set") {
-            return Err(ModelError(vec![r]));
-        }
+        super::helical_tilt::refuse_tilt(case, "a planetary set")?;
         if case.gear.helix_angle_deg != 0.0 {
             return Err(ModelError(vec![format!(
                 "`gear.helix_angle_deg` = {} with [planetary]: a planetary set's meshes are spur so far (helical sets are not built), so it would give a spur result; set it to 0",

@@ -228,15 +228,9 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
         SweepRun::Wear => {
             // A train's wear takes spur stages only (`Model::from_case` refuses a
             // helical stage, naming its key); a single helical pair wears per slice.
-            let study = "a wear sweep";
             // On a spur pair the tilting keys are ignored with a warning, as everywhere.
-            let helical = case.gear.helix_angle_deg != 0.0;
-            if let Some(r) = helical
-                .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
-                .flatten()
-            {
-                return Err(CaseError::Model(crate::study::ModelError(vec![r])));
-            }
+            crate::study::helical_tilt::refuse_tilt_if_helical(case, "a wear sweep")
+                .map_err(CaseError::Model)?;
             let build = if case.stage.is_empty() {
                 Model::dynamics_from_case
             } else {
