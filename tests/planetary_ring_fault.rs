@@ -353,8 +353,12 @@ fn bad_ring_faults_are_refused_naming_key_value_and_range() {
             vec!["`planetary.fault.spall_depth_um` = 9000", "ring tooth 2", "valid (0, "],
         ),
         (
-            "kind = \"broken_tip\"\ngear = \"ring\"\ntooth = 2\nremoved_height_mm = 0.5",
-            vec!["`planetary.fault.kind` = \"broken_tip\"", "not built"],
+            "kind = \"broken_tip\"\ngear = \"ring\"\ntooth = 2\nremoved_height_mm = 4.6",
+            vec![
+                "`planetary.fault.removed_height_mm` = 4.6",
+                "ring tooth 2",
+                "valid (0, ",
+            ],
         ),
     ] {
         let (_d, out, o) = run("dynamics", &set_with("", fault));

@@ -4,7 +4,6 @@
 
 use super::derivable::Derivable;
 pub use super::planetary_fault::{FaultyGear, PlanetaryFault};
-use super::teeth::FaultKind;
 use serde::{Deserialize, Serialize};
 
 /// A member of the set that can be an input, an output or fixed.
@@ -406,11 +405,6 @@ impl PlanetarySection {
             ));
         }
         for (i, f) in self.fault.iter().enumerate() {
-            if f.kind == FaultKind::BrokenTip {
-                errs.push(format!(
-                    "`planetary.fault.kind` = \"broken_tip\" (fault {i}) is not built on a planetary set yet: valid kinds \"crack\", \"spall\""
-                ));
-            }
             let z = match f.gear {
                 FaultyGear::Sun => self.teeth_sun,
                 FaultyGear::Planet => self.teeth_planet,

@@ -64,7 +64,7 @@ pub struct PlanetaryFault {
     /// Spall: share of the face width it covers (absent: 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spall_width_fraction: Option<f64>,
-    /// Broken tip: radial height removed from the tip, mm (refused on a set so far).
+    /// Broken tip: radial height removed from the tip, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub removed_height_mm: Option<f64>,
 }

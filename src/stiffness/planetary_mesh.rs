@@ -50,7 +50,9 @@ impl FaultMember {
 /// A tooth fault on one member: the compliance it adds to a pair holding the tooth, m/N,
 /// at [`RING_TABLE_POINTS`] equally spaced rho1 along each mesh's path of contact (the
 /// sun's flank for the sun mesh, the planet's for the ring mesh; `None`: that mesh never
-/// meets the tooth), built by `study::planetary_fault`.
+/// meets the tooth), and where on each path such a pair touches at all (a broken tip's
+/// cut; outside it the pair carries nothing, as a pair's broken tip, docs/MODEL.md 9.5),
+/// built by `study::planetary_fault`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshFault {
     /// The member with the faulty tooth.
@@ -61,6 +63,11 @@ pub struct MeshFault {
     pub sun_m_per_n: Option<Vec<f64>>,
     /// Added compliance on the ring mesh's path, m/N.
     pub ring_m_per_n: Option<Vec<f64>>,
+    /// The rho1 interval [lo, hi] of the sun mesh's path (m) where a pair holding the
+    /// tooth touches; None: all of it.
+    pub sun_contact_rho1_m: Option<[f64; 2]>,
+    /// As `sun_contact_rho1_m` on the ring mesh's path (rho1 on the planet's flank), m.
+    pub ring_contact_rho1_m: Option<[f64; 2]>,
 }
 
 /// Which tooth of each member a pair holds (module docs): per planet the whole parts of
@@ -213,7 +220,9 @@ impl PlanetaryMeshes {
 
     /// The fault's compliance (m/N) added to the pair of planet `planet`'s sun
     /// (`ring` false) or ring mesh that entered contact at the table's cycle `entered`,
-    /// at rho1 (m); 0 when the pair does not hold the faulty tooth.
+    /// at rho1 (m); 0 when the pair does not hold the faulty tooth; infinite where the
+    /// faulty tooth does not touch (a broken tip's removed part: the pair's stiffness in
+    /// series, [`in_series`], is then exactly 0).
     fn fault_compliance(&self, planet: usize, ring: bool, entered: i64, rho_m: f64) -> f64 {
         let Some((f, t)) = &self.fault else {
             return 0.0;
@@ -234,19 +243,30 @@ impl PlanetaryMeshes {
                     && (entered + t.ring_to_planet[planet]).rem_euclid(t.teeth[1]) == f.tooth as i64
             }
         };
-        let (table, start, len) = if ring {
+        if !holds {
+            return 0.0;
+        }
+        let (table, contact, start, len) = if ring {
             (
                 &f.ring_m_per_n,
+                f.ring_contact_rho1_m,
                 self.ring_rho_start_m,
                 self.ring_rho_end_m - self.ring_rho_start_m,
             )
         } else {
-            (&f.sun_m_per_n, self.sun_path_m[0], self.sun_path_m[1])
+            (
+                &f.sun_m_per_n,
+                f.sun_contact_rho1_m,
+                self.sun_path_m[0],
+                self.sun_path_m[1],
+            )
         };
-        match table {
-            Some(c) if holds => path_table_at(c, (rho_m - start) / len),
-            _ => 0.0,
+        if contact.is_some_and(|[lo, hi]| rho_m < lo || rho_m > hi) {
+            return f64::INFINITY;
         }
+        table
+            .as_ref()
+            .map_or(0.0, |c| path_table_at(c, (rho_m - start) / len))
     }
 
     /// Number of planets.
@@ -342,15 +362,37 @@ impl PlanetaryMeshes {
     /// The mesh cycles in [0, 1) where some mesh's stiffness jumps (a pair enters or
     /// leaves contact), sorted, those closer than 1e-9 cycles merged: for each planet's
     /// sun (ring) mesh where its table's phase passes 0 (a pair enters at the path's
-    /// start) and frac(epsilon) (a pair leaves at its end), c = frac(event - offset).
+    /// start) and frac(epsilon) (a pair leaves at its end), c = frac(event - offset); with
+    /// a broken tip also where a pair passes its cut ((rho_cut - rho_start) / p_b, every
+    /// mesh period: a pair of the faulty tooth passes it in one of them).
     pub fn jump_cycles(&self) -> Vec<f64> {
         let mut v: Vec<f64> = Vec::new();
-        for (offsets, leave) in [
-            (&self.sun_offset, self.leave_cycles[0]),
-            (&self.ring_offset, self.leave_cycles[1]),
+        let cuts = |contact: Option<[f64; 2]>, start: f64, pitch: f64| -> Vec<f64> {
+            contact.map_or(Vec::new(), |c| {
+                c.iter()
+                    .filter(|r| r.is_finite())
+                    .map(|r| (r - start) / pitch)
+                    .collect()
+            })
+        };
+        let f = self.fault.as_ref().map(|(f, _)| f);
+        let sun_pitch = self.sun.pair().base_pitch_m;
+        let sun_cuts = cuts(
+            f.and_then(|f| f.sun_contact_rho1_m),
+            self.sun_path_m[0],
+            sun_pitch,
+        );
+        let ring_cuts = cuts(
+            f.and_then(|f| f.ring_contact_rho1_m),
+            self.ring_rho_start_m,
+            self.ring_base_pitch_m,
+        );
+        for (offsets, leave, cut) in [
+            (&self.sun_offset, self.leave_cycles[0], &sun_cuts),
+            (&self.ring_offset, self.leave_cycles[1], &ring_cuts),
         ] {
             for off in offsets {
-                for event in [0.0, leave] {
+                for event in [0.0, leave].iter().chain(cut.iter()).copied() {
                     let c = event - off;
                     let c = c - c.floor();
                     v.push(if c > 1.0 - 1e-9 { 0.0 } else { c });

@@ -96,6 +96,22 @@ pub fn mesh_fault(
     let sun = flank
         .compliance_m_per_n
         .unwrap_or_else(|| vec![0.0; own.len()]);
+    // A broken tip: the pair's cut in rho1 (the sun's tip side above it, the planet's
+    // below it), and on the ring mesh the planet's tip side of its own rho, which is the
+    // ring path's rho1 (docs/MODEL.md 12.13).
+    let sun_contact = flank.contact_limit_rho1_m.map(|l| match side {
+        Side::Pinion => [f64::NEG_INFINITY, l],
+        Side::Gear => [l, f64::INFINITY],
+    });
+    let ring_contact = match pf.fault {
+        Fault::BrokenTip { removed_height_m } => {
+            let p = &set.ring_planet.planet;
+            let r_cut = p.tip_radius_m - removed_height_m;
+            let rho_cut = (r_cut.powi(2) - p.base_radius_m.powi(2)).max(0.0).sqrt();
+            Some([f64::NEG_INFINITY, rho_cut])
+        }
+        _ => None,
+    };
     // The ring mesh: a planet's crack on the planet's tooth beam of that mesh (own rho
     // of the planet = the ring path's rho1).
     let ring = match (member, pf.fault) {
@@ -131,6 +147,8 @@ pub fn mesh_fault(
         tooth: f.tooth.max(0) as usize,
         sun_m_per_n: Some(sun),
         ring_m_per_n: ring,
+        sun_contact_rho1_m: sun_contact,
+        ring_contact_rho1_m: ring_contact,
     })
 }
 
@@ -212,7 +230,16 @@ fn ring_fault_problem(
                 ))
             }
         }
-        Fault::BrokenTip { .. } => None,
+        Fault::BrokenTip { removed_height_m } => {
+            // The ring tooth's height: tip (inner) to root (outer) circle.
+            let ring = &set.ring_planet.ring;
+            let height = ring.root_radius_m - ring.tip_radius_m;
+            (removed_height_m > height).then(|| format!(
+                "`planetary.fault.removed_height_mm` = {} ({who}) is more than the ring's tooth: valid (0, {}] mm (tip to root circle)",
+                f.written("removed_height_mm"),
+                upper_mm(height * mm)
+            ))
+        }
     }
 }
 
@@ -261,14 +288,28 @@ fn ring_mesh_fault(
             own.map(|rho2| ring_spall_compliance_m_per_n(beam, &s, kh, rho2))
                 .collect()
         }
-        // Refused with the case (`config::planetary`): no broken tip on a set.
+        // A broken tip adds no compliance; it cuts the contact (below).
         Fault::BrokenTip { .. } => vec![0.0; n + 1],
+    };
+    // A broken ring tip: the ring tooth now begins at r_a + h (its tip is its inner
+    // circle), own rho2 = sqrt((r_a + h)^2 - r_b^2); it touches where rho2 is above that,
+    // rho1 = rho2 - N1N2 on the ring path (docs/MODEL.md 12.14).
+    let contact = match *fault {
+        Fault::BrokenTip { removed_height_m } => {
+            let ring = &set.ring_planet.ring;
+            let r_cut = ring.tip_radius_m + removed_height_m;
+            let rho2 = (r_cut.powi(2) - ring.base_radius_m.powi(2)).max(0.0).sqrt();
+            Some([rho2 - set.ring_planet.loa_length_m, f64::INFINITY])
+        }
+        _ => None,
     };
     Ok(MeshFault {
         member: FaultMember::Ring,
         tooth: f.tooth.max(0) as usize,
         sun_m_per_n: None,
         ring_m_per_n: Some(table),
+        sun_contact_rho1_m: None,
+        ring_contact_rho1_m: contact,
     })
 }
 
