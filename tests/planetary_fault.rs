@@ -354,3 +354,44 @@ fn the_budget_counts_the_faults_period_and_refuses_one_beyond_the_limits() {
         gearwear::study::planetary_fault::fault_periods(&faulty.planetary.unwrap(), 200).unwrap();
     assert_eq!((p, record), (24, 168));
 }
+
+#[test]
+fn dynamics_records_the_faults_period_and_only_the_ring_sensor_needs_lcm_with_the_ring() {
+    use gearwear::study::budget::estimate_signals;
+    // A 331 / 333 / 997 set (331 and 997 prime: lcm = 330 007 mesh periods) with a sun
+    // tooth fault: its dynamics repeats over z_s = 331 periods (66 200 samples at 200
+    // steps, far inside the limit of 5e7) and is built; the ring sensor's record spans
+    // lcm(331, 997) periods, 6.6e7 samples: refused by `signals` alone, naming lcm.
+    let text = |steps: u32| {
+        format!(
+            "[numerics]\nsteps_per_mesh_period = {steps}\n[planetary]\nteeth_sun = 331\nteeth_planet = 333\nteeth_ring = 997\n[[planetary.fault]]\nkind = \"crack\"\ngear = \"sun\"\ntooth = 2\ncrack_depth_mm = 1\n"
+        )
+    };
+    let case = load_case(&text(200), &[]).unwrap();
+    let s = case.planetary.as_ref().unwrap();
+    assert_eq!(
+        gearwear::study::planetary_fault::fault_period(s, 200),
+        Ok(331)
+    );
+    assert!(PlanetaryStudy::from_case(&case).is_ok());
+    let e = gearwear::study::planetary_fault::fault_periods(s, 200).unwrap_err();
+    assert!(e.contains("lcm(331, 997) = 330007"), "{e}");
+    let (_d, out, o) = run("signals", &text(200));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("330007") && !out.exists());
+    // At 50 steps the record is 1.65e7 samples: the signals budget counts them (measured
+    // 39-40 bytes a sample for the revolution, its spectrum and record: at least that).
+    let case = load_case(&text(50), &[]).unwrap();
+    let est = estimate_signals(&case, 2);
+    let ring = est
+        .terms
+        .iter()
+        .find(|t| t.what.contains("ring sensor's record"))
+        .expect("a ring record term");
+    let samples = 331.0 * 997.0 * 50.0;
+    assert!(
+        ring.bytes >= 39.0 * samples && ring.bytes <= 3.0 * 40.0 * samples,
+        "{}",
+        ring.bytes
+    );
+}

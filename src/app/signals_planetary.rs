@@ -26,6 +26,14 @@ pub(super) fn ring_sensor_problem(case: &Case) -> Option<Problem> {
             p.fixed.name()
         )));
     }
+    // A fault's record spans lcm(P, z_r) mesh periods: checked here, where a sensor hears
+    // it (the dynamics alone records P).
+    if let Some(p) = case.planetary.as_ref() {
+        let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
+        if let Err(e) = crate::study::planetary_fault::fault_periods(p, steps) {
+            return Some(Problem::new(e));
+        }
+    }
     let s = &case.signals;
     if s.ramp_end_speed_hz.is_some() || s.torque_fluctuation_rms_nm != 0.0 {
         return Some(Problem::new(
@@ -70,7 +78,8 @@ pub(super) fn ring_signals_artifacts(
 }
 
 impl SignalsJob {
-    /// A planetary case (budget checked by the caller): the ring sensor's steady record.
+    /// A planetary case (its ring sensor's problems and the budget checked by the
+    /// caller): the ring sensor's steady record.
     pub(super) fn run_planetary(
         &self,
         observer: &dyn Observer,
@@ -80,9 +89,6 @@ impl SignalsJob {
                 Arg::TransferPath,
                 "a planetary set's record is the ring sensor's window model (`signals.ring_sensor_angle_deg`, `signals.ring_sensor_half_width_deg`); a housing transfer path is not taken yet".to_string(),
             )));
-        }
-        if let Some(p) = ring_sensor_problem(&self.case) {
-            return Err(JobError::input(p));
         }
         let mut d = PlanetaryDynamics::from_case(&self.case)?;
         for w in &d.study.warnings {

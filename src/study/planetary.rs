@@ -76,7 +76,7 @@ impl PlanetaryStudy {
             )]));
         }
         let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
-        super::planetary_fault::fault_periods(&section, steps).map_err(|e| ModelError(vec![e]))?;
+        super::planetary_fault::fault_period(&section, steps).map_err(|e| ModelError(vec![e]))?;
         let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
         let load = super::domain::planetary_domain_problems(case, &set);
         if !load.is_empty() {

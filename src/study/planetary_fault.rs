@@ -314,11 +314,38 @@ fn ring_mesh_fault(
 }
 
 /// Mesh periods a faulty set's response repeats over (z_s for a sun tooth, z_p for a
-/// planet's, z_r for a ring tooth's; 1 without a fault that changes its tooth), and those of the ring sensor's
-/// record, lcm(that, z_r) (the planets' angles to the sensor repeat once per carrier
-/// revolution relative to the ring, z_r mesh periods), in checked arithmetic; an input
-/// problem naming the keys when either period's samples (`samples_per_period` each)
-/// pass [`MAX_FAULT_PERIOD_SAMPLES`].
+/// planet's, z_r for a ring tooth's; 1 without a fault that changes its tooth): what its
+/// dynamics records (`gearwear dynamics`, a sweep of dynamics); an input problem naming
+/// the keys when its samples (`samples_per_period` each) pass
+/// [`MAX_FAULT_PERIOD_SAMPLES`]. The ring sensor's longer record is checked by
+/// [`fault_periods`] where a sensor hears it.
+pub fn fault_period(
+    section: &crate::config::planetary::PlanetarySection,
+    samples_per_period: u64,
+) -> Result<u64, String> {
+    let Some(f) = section.active_fault() else {
+        return Ok(1);
+    };
+    let z = |v: i64| u64::try_from(v.max(1)).unwrap_or(1);
+    let (key, p) = match f.gear {
+        FaultyGear::Sun => ("planetary.teeth_sun", z(section.teeth_sun)),
+        FaultyGear::Planet => ("planetary.teeth_planet", z(section.teeth_planet)),
+        FaultyGear::Ring => ("planetary.teeth_ring", z(section.teeth_ring)),
+    };
+    match p.checked_mul(samples_per_period.max(1)) {
+        Some(s) if s <= MAX_FAULT_PERIOD_SAMPLES => Ok(p),
+        _ => Err(format!(
+            "`planetary.fault.gear` = \"{}\" with `{key}` = {p} and `numerics.steps_per_mesh_period` = {samples_per_period}: the fault's response repeats over {p} mesh periods, beyond the limit of {MAX_FAULT_PERIOD_SAMPLES} samples: give fewer steps per mesh period or a member with fewer teeth",
+            f.gear.name()
+        )),
+    }
+}
+
+/// The fault's period ([`fault_period`]) and the ring sensor's record, lcm(that, z_r)
+/// mesh periods (the planets' angles to the sensor repeat once per carrier revolution
+/// relative to the ring, z_r mesh periods), in checked arithmetic; an input problem
+/// naming the keys when either period's samples (`samples_per_period` each) pass
+/// [`MAX_FAULT_PERIOD_SAMPLES`] (`gearwear signals` of a set checks it before it runs).
 pub fn fault_periods(
     section: &crate::config::planetary::PlanetarySection,
     samples_per_period: u64,

@@ -327,7 +327,8 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
                 * (p.p_c + p.p_e)
                 * SECONDS_PER_STEP
                 * train_factor(case)
-                * axial_factor(case),
+                * axial_factor(case)
+                * super::planetary::step_factor(case),
             bytes: 0.0,
             keys: if w.dynamic_modes > 0.0 {
                 &[

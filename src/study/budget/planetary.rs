@@ -213,10 +213,54 @@ const SECONDS_PER_STEP_4: f64 = 40e-6;
 /// number, its copies in the mesh-force and motion tables and their CSV text (about 48).
 const BYTES_PER_SAMPLE_VALUE: f64 = 48.0;
 
+/// Time factor of a planetary set's integrator step over the pair's
+/// ([`super::evaluation::SECONDS_PER_STEP`]), 1 for any other case: the set's step is
+/// [`SECONDS_PER_STEP_4`] times its coordinates' share, (N + 3) / 7 (the healthy built-in
+/// set took 0.15 s of CPU for 5 118 steps, 29 us each, against the 0.075 s estimated
+/// from the pair's step before this factor, 2026-11-30). The step count stays the pair's
+/// (the set's own search needs fewer: the healthy set's estimate is then about 6 times
+/// its CPU time, on the safe side).
+pub(crate) fn step_factor(case: &crate::config::Case) -> f64 {
+    case.planetary.as_ref().map_or(1.0, |p| {
+        let planets = p.planets.max(1) as f64;
+        (SECONDS_PER_STEP_4 * (planets + 3.0) / 7.0 / super::evaluation::SECONDS_PER_STEP).max(1.0)
+    })
+}
+
+/// The ring sensor's record of a planetary set in `gearwear signals`
+/// (`study::planetary_signals::ring_sensor_record`): lcm(P, z_r) mesh periods of the
+/// case's steps (P the fault's period, 1 healthy), its revolution, spectrum and record.
+/// Measured 39-40 bytes and 0.09 us of CPU per sample (the sun tooth crack of a
+/// 331 / 333 / 997 set, lcm = 330 007 periods at 50 and 100 steps: 0.65 and 1.28 GB and
+/// 1.4 and 3.0 s above its dynamics, 2026-11-30); counted 48 bytes and 0.1 us times
+/// [`SLOWER_MACHINE_FACTOR`]. A record beyond the limits costs without bound (refused by
+/// the job with its own message when the budget is off). None without a set.
+pub fn ring_record_term(case: &crate::config::Case) -> Option<Term> {
+    let section = case.planetary.as_ref()?;
+    let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
+    let zr = section.teeth_ring.max(1) as f64;
+    let samples = match crate::study::planetary_fault::fault_periods(section, steps) {
+        // Healthy: one carrier revolution relative to the ring, z_r mesh periods.
+        Ok((1, _)) => zr * steps as f64,
+        Ok((_, record)) => record as f64 * steps as f64,
+        Err(_) => f64::INFINITY,
+    };
+    Some(Term {
+        what: "the ring sensor's record (lcm(P, z_r) mesh periods of the set's response)",
+        seconds: samples * 0.1e-6 * SLOWER_MACHINE_FACTOR,
+        bytes: samples * 48.0,
+        keys: &[
+            "planetary.teeth_ring",
+            "planetary.fault.gear",
+            "numerics.steps_per_mesh_period",
+        ],
+    })
+}
+
 /// The run budget's term for a planetary set with a tooth fault (`[[planetary.fault]]`,
 /// docs/MODEL.md 12.13; None without one): each dynamic evaluation integrates its run-in
 /// and at least one pass over the fault's period P mesh periods (`study::planetary_fault::
-/// fault_periods`, in checked arithmetic) beyond the healthy set's search, each period at
+/// fault_period`, in checked arithmetic) beyond the healthy set's search, each period at
 /// `s_dyn` steps, and a kept response records P periods of its 3 (N + 3) coordinates and
 /// 2 N mesh forces. A period beyond the limits costs without bound (the term names the
 /// keys; the model refuses it with its own message when the budget is off).
@@ -226,8 +270,8 @@ pub fn fault_term(case: &crate::config::Case, evals: f64, kept: f64, s_dyn: f64)
     section.active_fault()?;
     let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
     let planets = section.planets.max(1) as f64;
-    let (seconds, bytes) = match crate::study::planetary_fault::fault_periods(section, steps) {
-        Ok((p, _)) => {
+    let (seconds, bytes) = match crate::study::planetary_fault::fault_period(section, steps) {
+        Ok(p) => {
             // The run-in is at most P (`planetary_steady::run_in_periods`) and one pass
             // settles (its map contracts by e^(-sigma P T_m)): 2 P, one pass more of margin.
             let periods = 3.0 * p as f64;

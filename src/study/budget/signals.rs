@@ -61,6 +61,7 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
         0.0
     };
     let mut e = estimate(case, Job::Dynamics);
+    e.terms.extend(super::planetary::ring_record_term(case));
     // A planetary set's ring-sensor record is sampled in time from one carrier
     // revolution (`study::planetary_signals`), with no harmonic synthesis.
     if !is_transient(case) && case.planetary.is_none() {
