@@ -96,13 +96,6 @@ impl Job for SignalsJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         if self.case.planetary.is_some() {
-            // What the ring sensor cannot hear (a turning ring, a transient, a record
-            // beyond the limits) is named before the budget, which cannot count it.
-            if let Some(p) = super::signals_planetary::ring_sensor_problem(&self.case) {
-                return Err(JobError::input(p));
-            }
-            // The set's dynamics estimate with the record added (one channel).
-            budget::check_estimate(&estimate_signals(&self.case, 1), self.budget.as_ref())?;
             return self.run_planetary(observer);
         }
         // The path first: its sensors are the record's channels, which the budget counts.

@@ -78,8 +78,7 @@ pub(super) fn ring_signals_artifacts(
 }
 
 impl SignalsJob {
-    /// A planetary case (its ring sensor's problems and the budget checked by the
-    /// caller): the ring sensor's steady record.
+    /// A planetary case: the ring sensor's steady record.
     pub(super) fn run_planetary(
         &self,
         observer: &dyn Observer,
@@ -90,6 +89,16 @@ impl SignalsJob {
                 "a planetary set's record is the ring sensor's window model (`signals.ring_sensor_angle_deg`, `signals.ring_sensor_half_width_deg`); a housing transfer path is not taken yet".to_string(),
             )));
         }
+        // What the ring sensor cannot hear (a turning ring, a transient, a record beyond
+        // the limits) is named before the budget, which cannot count it; then the set's
+        // dynamics estimate with the record added (one channel).
+        if let Some(p) = ring_sensor_problem(&self.case) {
+            return Err(JobError::input(p));
+        }
+        super::budget::check_estimate(
+            &crate::study::budget::estimate_signals(&self.case, 1),
+            self.budget.as_ref(),
+        )?;
         let mut d = PlanetaryDynamics::from_case(&self.case)?;
         for w in &d.study.warnings {
             observer.warning(w);
