@@ -258,8 +258,10 @@ fn continuation_of(c: Option<&str>) -> PyResult<Option<Continuation>> {
 }
 
 /// A seed given as an int or a whole float in [0, 2^53] (`gearwear::rng`: the message
-/// names `seed`, the value and the range); a bool is not a seed.
-fn seed_of(py: Python<'_>, seed: &Bound<'_, PyAny>) -> PyResult<u64> {
+/// names `seed`, the value and the range); a bool is not a seed; None (absent) is 1.
+fn seed_of(py: Python<'_>, seed: Option<&Bound<'_, PyAny>>) -> PyResult<u64> {
+    // Absent: 1, the command line's default.
+    let Some(seed) = seed else { return Ok(1) };
     let checked = if seed.is_instance_of::<pyo3::types::PyBool>() {
         Err(format!(
             "`seed` = {seed} is a bool, expected a whole number in [0, {}]",
@@ -374,13 +376,13 @@ pub fn sweep_merge<'py>(
 /// The posterior of the wear coefficient given observations (as `gearwear calibrate`).
 /// `observations`: a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[pyo3(signature = (case, observations, *, seed=None, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate<'py>(
     py: Python<'py>,
     case: &Case,
     observations: Bound<'py, PyAny>,
-    seed: Bound<'py, PyAny>,
+    seed: Option<Bound<'py, PyAny>>,
     samples: usize,
     walkers: usize,
     steps: usize,
@@ -396,7 +398,7 @@ pub fn calibrate<'py>(
         case: case.inner.clone(),
         observations: path_or_columns(&observations)?,
         options: CalibrationOptions {
-            seed: seed_of(py, &seed)?,
+            seed: seed_of(py, seed.as_ref())?,
             samples,
             walkers,
             steps,
@@ -430,7 +432,7 @@ fn spectrum_source(s: &Bound<'_, PyAny>) -> PyResult<SpectrumSource> {
 /// Monte Carlo prediction of wear, vibration and remaining life (as `gearwear predict`).
 /// `posterior`: None (the case's prior), a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None, figures=None, figure_size=None))]
+#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=None, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn predict<'py>(
     py: Python<'py>,
@@ -438,7 +440,7 @@ pub fn predict<'py>(
     posterior: Option<Bound<'py, PyAny>>,
     limit_um: f64,
     cycles: f64,
-    seed: Bound<'py, PyAny>,
+    seed: Option<Bound<'py, PyAny>>,
     samples: Option<usize>,
     grid_points: usize,
     forward: &str,
@@ -469,7 +471,7 @@ pub fn predict<'py>(
         options: PredictOptions {
             limit_um,
             cycles,
-            seed: seed_of(py, &seed)?,
+            seed: seed_of(py, seed.as_ref())?,
             samples,
             grid_points,
             forward,
