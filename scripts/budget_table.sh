@@ -12,6 +12,8 @@
 # by length x sampling rate and by sensor count, dataset designs by records x length x
 # rate x channels, predict with a future spectrum of 1-20 bins; about 10 min)
 #        BUDGET_ROWS=datasets scripts/budget_table.sh   (only the dataset designs and a merge)
+#        BUDGET_ROWS=predict scripts/budget_table.sh   (issue 22's predict rows: the prior,
+# a posterior from calibrate, 1e5 samples, 1e4 grid points; about 10 min)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet --bin gearwear
@@ -48,9 +50,8 @@ measure() {
     echo "$name: estimate $mem GB, peak $peak GB (ratio $ratio), time estimate $time_est, took ${secs} s (CPU ${cpu} s)" >&2
 }
 
-# The rows of issue 22: every command at the ends of its ranges.
-issue22_rows() {
 # Observations (wear and vibration) from a true run at the built-in k, for calibrate.
+observations() {
 "$bin" wear -q --mode dynamic --set wear.total_cycles=4e4 --out truth >/dev/null 2>&1
 python3 - <<'EOF'
 import csv
@@ -60,6 +61,43 @@ with open("obs.csv", "w") as f:
     for r in rows[1:]:
         f.write(f"{r['cycles']},{float(r['max_wear_pinion_um']):.4f},0.05,{float(r['velocity_y_pinion_rms_mm_per_s']):.4f}\n")
 EOF
+}
+
+# predict from the prior and from calibrate's posterior (needs out_calibrate_k).
+predict_rows() {
+measure predict_prior predict --limit-um 10 --cycles 1e5
+measure predict_posterior predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5
+measure predict_samples_1e5 predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --samples 100000
+measure predict_grid_1e4 predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --grid-points 10000
+}
+
+# Future load spectra of N bins (torque 40-80 N m, speed 20-50 Hz, equal shares).
+future_spectra() {
+python3 - <<'PY'
+for n in (1, 5, 20):
+    with open(f"future_{n}.toml", "w") as f:
+        f.write("[load_spectrum]\nbins = [\n")
+        for i in range(n):
+            t = 40 + 40 * i / max(n - 1, 1)
+            v = 20 + 30 * ((i * 7) % n) / max(n - 1, 1)
+            f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
+        f.write("]\n")
+PY
+}
+
+# Predict with a future spectrum of 1, 5 and 20 bins (100 prior samples, to 2e4 cycles,
+# the spectrum from 1e4 cycles on, no check runs).
+future_rows() {
+future_spectra
+for n in 1 5 20; do
+    measure "predict_future_${n}_bins" predict --limit-um 10 --cycles 2e4 --samples 100 \
+        --check-runs 0 --future-spectrum "future_$n.toml" --future-from-cycles 1e4
+done
+}
+
+# The rows of issue 22: every command at the ends of its ranges.
+issue22_rows() {
+observations
 
 measure stiffness_default stiffness
 measure stiffness_table_1e5 stiffness --set stiffness.table_points_per_mesh_period=100000
@@ -78,10 +116,7 @@ measure calibrate_k calibrate --observations obs.csv --samples 2000
 measure calibrate_k_grid_1e4 calibrate --observations obs.csv --set calibration.grid_points=10000
 measure calibrate_k_roughness_grid_1000 calibrate --observations obs.csv --set calibration.roughness_scale_min=0.8 --set calibration.roughness_scale_max=1.2 --set calibration.grid_points=1000 --set calibration.surrogate_nodes=3
 measure calibrate_three_mcmc calibrate --observations obs.csv --set calibration.roughness_scale_min=0.8 --set calibration.roughness_scale_max=1.2 --set calibration.load_torque_min_nm=55 --set calibration.load_torque_max_nm=65 --set calibration.surrogate_nodes=2 --walkers 64 --steps 4000
-measure predict_prior predict --limit-um 10 --cycles 1e5
-measure predict_posterior predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5
-measure predict_samples_1e5 predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --samples 100000
-measure predict_grid_1e4 predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --grid-points 10000
+predict_rows
 measure predict_shard predict --posterior out_calibrate_k/posterior_samples.csv --limit-um 10 --cycles 1e5 --samples 100000 --shard 1/2
 measure predict_merge predict-merge out_predict_shard
 measure sweep_merge sweep-merge out_sweep_dynamics_40
@@ -201,17 +236,6 @@ measure dataset_merge_400_records dataset-merge shard_1 shard_2
 # designs (records x length x rate x channels) and a future spectrum's bins.
 issue33_rows() {
 modal_paths
-python3 - <<'PY'
-# Future load spectra of N bins (torque 40-80 N m, speed 20-50 Hz, equal shares).
-for n in (1, 5, 20):
-    with open(f"future_{n}.toml", "w") as f:
-        f.write("[load_spectrum]\nbins = [\n")
-        for i in range(n):
-            t = 40 + 40 * i / max(n - 1, 1)
-            v = 20 + 30 * ((i * 7) % n) / max(n - 1, 1)
-            f.write(f"  {{ torque_nm = {t:.3f}, input_speed_hz = {v:.3f}, share = {1 / n!r} }},\n")
-        f.write("]\n")
-PY
 # Stiffness: a pair, a pair with a cracked tooth, the two-stage example, and that train
 # with a crack on stage 1's pinion (milliseconds: the figures and the process dominate).
 cp "$repo/examples/two_stage_reducer.toml" train.toml
@@ -229,18 +253,21 @@ measure signals_0.5s_1mhz signals --set signals.sampling_rate_hz=1000000 --set s
 measure signals_1_sensor signals --transfer-path path_1.toml
 measure signals_20_sensors signals --transfer-path path_20.toml
 measure signals_100_sensors signals --transfer-path path_100.toml
+# Figures at a requested size (the pixel buffers, counted with the budget).
+measure stiffness_figures_2048x1024 stiffness --figure-size 2048x1024
+measure stiffness_figures_8192x4096 stiffness --figure-size 8192x4096
 dataset_rows
-# Predict with a future spectrum of 1, 5 and 20 bins (100 prior samples, to 2e4 cycles,
-# the spectrum from 1e4 cycles on, no check runs).
-for n in 1 5 20; do
-    measure "predict_future_${n}_bins" predict --limit-um 10 --cycles 2e4 --samples 100 \
-        --check-runs 0 --future-spectrum "future_$n.toml" --future-from-cycles 1e4
-done
+future_rows
 }
 
 case "${BUDGET_ROWS:-all}" in
     issue33) issue33_rows ;;
     datasets) modal_paths; dataset_rows ;;
+    predict)
+        observations
+        measure calibrate_k calibrate --observations obs.csv --samples 2000
+        predict_rows
+        ;;
     *) issue22_rows; issue33_rows ;;
 esac
 

@@ -113,13 +113,15 @@ fn the_estimate_counts_the_runs_and_updates_a_chain_makes() {
             est_runs <= runs + rayon::current_num_threads() as f64,
             "{what}: {est_runs} runs against {runs}"
         );
-        // Updates: never fewer than recorded. At most 4 times: the count keeps Archard's
-        // wear per cycle at the nominal load with the dynamic margin 1.5 for the whole run,
-        // while the deepest point's rate of these runs falls about 4 times after the
-        // first micrometres (running-in; the detail above); measured 1.7-3.5 times.
+        // Updates: never fewer than recorded, and at most 2.5 times: the count follows the
+        // running-in (`study::budget::running_in`: the rate falls as the pinion's root
+        // passes its load to the other pair), measured 1.08-1.97 times (the most where
+        // the count's stop depth, 50 elastic approaches, is deeper than the runs' 35-78
+        // um). Holding the initial rate for the whole run, as the count did before, gave
+        // 1.73-3.49 times (2.58 and 3.49 fail here).
         assert!(est_updates >= updates, "{what}: {updates} > {est_updates}");
         assert!(
-            est_updates <= 4.0 * updates,
+            est_updates <= 2.5 * updates,
             "{what}: {est_updates} against {updates}"
         );
     }

@@ -510,9 +510,10 @@ def calibrate(
     cycles), one column per observed quantity (named as the wear study's ``updates``
     table: ``max_wear_pinion_um``, ``velocity_y_pinion_rms_mm_per_s``, ...), optional
     ``sigma_<name>`` columns (the measurement noise, same unit); NaN where a quantity was
-    not measured (docs/PROGNOSTICS.md). ``seed`` seeds every random draw; ``samples``
-    posterior samples; ``walkers`` and ``steps`` of the ensemble sampler (the first half
-    burn-in); ``check_runs`` true wear runs checked against the surrogate.
+    not measured (docs/PROGNOSTICS.md). ``seed`` (a whole number in [0, 2**53]) seeds
+    every random draw; ``samples`` posterior samples; ``walkers`` and ``steps`` of the
+    ensemble sampler (the first half burn-in); ``check_runs`` true wear runs checked
+    against the surrogate.
     ``figures``, ``figure_size``: as for :func:`stiffness` (the report embeds the SVG
     when only SVG is asked for).
     """

@@ -77,7 +77,7 @@ pub fn load_spectrum<'py>(
         merge_below_share,
         out,
         replace,
-        budget: crate::jobs::budget_of(budget_scale)?,
+        budget: crate::jobs::budget_for(budget_scale, &figures, figure_size)?,
         figures: crate::jobs::figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;

@@ -57,7 +57,7 @@ pub fn stiffness<'py>(
         case: case.inner.clone(),
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
@@ -66,6 +66,19 @@ pub fn stiffness<'py>(
 
 /// The figure options of a job: `figures` ("png", "svg" or "png,svg") and
 /// `figure_size` (width, height) px, checked when the job starts.
+/// [`budget_of`] with the job's PNG figures counted at the size asked for
+/// (`gearwear::app::budget::with_figures`).
+pub(crate) fn budget_for(
+    scale: f64,
+    figures: &Option<String>,
+    size: Option<(i64, i64)>,
+) -> PyResult<Option<Budget>> {
+    Ok(gearwear::app::budget::with_figures(
+        budget_of(scale)?,
+        &figure_request(figures.clone(), size),
+    ))
+}
+
 pub(crate) fn figure_request(figures: Option<String>, size: Option<(i64, i64)>) -> FigureRequest {
     FigureRequest {
         formats: figures,
@@ -124,7 +137,7 @@ pub fn dynamics<'py>(
         samples_of(transmission_error)?,
         out,
         replace,
-        budget_of(budget_scale)?,
+        budget_for(budget_scale, &figures, figure_size)?,
         figure_request(figures, figure_size),
     );
     let (o, w) = run_job(py, job, None)?;
@@ -165,7 +178,7 @@ pub fn wear<'py>(
         out,
         replace,
         resume,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -192,7 +205,7 @@ pub fn run<'py>(
         out,
         replace,
         resume,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -242,6 +255,29 @@ fn continuation_of(c: Option<&str>) -> PyResult<Option<Continuation>> {
             )))
         }
     })
+}
+
+/// A seed given as an int or a whole float in [0, 2^53] (`gearwear::rng`: the message
+/// names `seed`, the value and the range); a bool is not a seed; None (absent) is 1.
+fn seed_of(py: Python<'_>, seed: Option<&Bound<'_, PyAny>>) -> PyResult<u64> {
+    // Absent: 1, the command line's default.
+    let Some(seed) = seed else { return Ok(1) };
+    let checked = if seed.is_instance_of::<pyo3::types::PyBool>() {
+        Err(format!(
+            "`seed` = {seed} is a bool, expected a whole number in [0, {}]",
+            gearwear::rng::MAX_SEED
+        ))
+    } else if let Ok(i) = seed.extract::<i128>() {
+        gearwear::rng::seed_from_i128("seed", i)
+    } else if let Ok(x) = seed.extract::<f64>() {
+        gearwear::rng::seed_from_f64("seed", x)
+    } else {
+        return Err(PyTypeError::new_err(format!(
+            "seed takes a whole number in [0, {}]",
+            gearwear::rng::MAX_SEED
+        )));
+    };
+    checked.map_err(|m| crate::errors::case_error(py, &[m]))
 }
 
 /// A shard given as `"I/N"` or `(I, N)`.
@@ -307,7 +343,7 @@ pub fn sweep<'py>(
         continuation: continuation_of(continuation.as_deref())?,
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -330,7 +366,7 @@ pub fn sweep_merge<'py>(
         inputs,
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;
@@ -340,13 +376,13 @@ pub fn sweep_merge<'py>(
 /// The posterior of the wear coefficient given observations (as `gearwear calibrate`).
 /// `observations`: a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, observations, *, seed=1, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
+#[pyo3(signature = (case, observations, *, seed=None, samples=2000, walkers=32, steps=2000, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate<'py>(
     py: Python<'py>,
     case: &Case,
     observations: Bound<'py, PyAny>,
-    seed: u64,
+    seed: Option<Bound<'py, PyAny>>,
     samples: usize,
     walkers: usize,
     steps: usize,
@@ -362,7 +398,7 @@ pub fn calibrate<'py>(
         case: case.inner.clone(),
         observations: path_or_columns(&observations)?,
         options: CalibrationOptions {
-            seed,
+            seed: seed_of(py, seed.as_ref())?,
             samples,
             walkers,
             steps,
@@ -370,7 +406,7 @@ pub fn calibrate<'py>(
         },
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -396,7 +432,7 @@ fn spectrum_source(s: &Bound<'_, PyAny>) -> PyResult<SpectrumSource> {
 /// Monte Carlo prediction of wear, vibration and remaining life (as `gearwear predict`).
 /// `posterior`: None (the case's prior), a CSV path, or `(columns, arrays)`.
 #[pyfunction]
-#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=1, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None, figures=None, figure_size=None))]
+#[pyo3(signature = (case, posterior=None, *, limit_um, cycles, seed=None, samples=None, grid_points=101, forward="surrogate", shard=None, check_runs=3, out=None, progress=None, budget_scale=1.0, replace=false, future_spectrum=None, future_from_cycles=None, figures=None, figure_size=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn predict<'py>(
     py: Python<'py>,
@@ -404,7 +440,7 @@ pub fn predict<'py>(
     posterior: Option<Bound<'py, PyAny>>,
     limit_um: f64,
     cycles: f64,
-    seed: u64,
+    seed: Option<Bound<'py, PyAny>>,
     samples: Option<usize>,
     grid_points: usize,
     forward: &str,
@@ -435,7 +471,7 @@ pub fn predict<'py>(
         options: PredictOptions {
             limit_um,
             cycles,
-            seed,
+            seed: seed_of(py, seed.as_ref())?,
             samples,
             grid_points,
             forward,
@@ -448,7 +484,7 @@ pub fn predict<'py>(
         shard,
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, progress)?;
@@ -471,7 +507,7 @@ pub fn predict_merge<'py>(
         inputs,
         out,
         replace,
-        budget: budget_of(budget_scale)?,
+        budget: budget_for(budget_scale, &figures, figure_size)?,
         figures: figure_request(figures, figure_size),
     };
     let (o, w) = run_job(py, job, None)?;

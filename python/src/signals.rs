@@ -25,7 +25,7 @@ pub fn signals<'py>(
     figures: Option<String>,
     figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let budget = crate::jobs::budget_of(budget_scale)?;
+    let budget = crate::jobs::budget_for(budget_scale, &figures, figure_size)?;
     let job = SignalsJob {
         case: case.inner.clone(),
         transfer_path: transfer_path.map(TransferPathSource::File),
@@ -92,7 +92,7 @@ pub fn dataset<'py>(
     figures: Option<String>,
     figure_size: Option<(i64, i64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let budget = crate::jobs::budget_of(budget_scale)?;
+    let budget = crate::jobs::budget_for(budget_scale, &figures, figure_size)?;
     let shard = match shard {
         None => Shard::ALL,
         Some((index, count)) if index >= 1 && index <= count => Shard { index, count },
@@ -130,7 +130,7 @@ pub fn dataset_merge<'py>(
     transfer_path: Option<PathBuf>,
     budget_scale: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let budget = crate::jobs::budget_of(budget_scale)?;
+    let budget = crate::jobs::budget_for(budget_scale, &figures, figure_size)?;
     let job = DatasetMergeJob {
         budget,
         inputs,

@@ -232,8 +232,8 @@ pub(crate) struct CalibrateArgs {
     /// Output directory.
     #[arg(long, default_value = "results/calibrate")]
     pub(crate) out: PathBuf,
-    /// Seed of every random draw.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of every random draw: a whole number in [0, 2^53].
+    #[arg(long, default_value_t = 1, value_parser = seed_arg)]
     pub(crate) seed: u64,
     /// Posterior samples to write.
     #[arg(long, default_value_t = 2000)]
@@ -275,8 +275,8 @@ pub(crate) struct PredictArgs {
     /// Output directory.
     #[arg(long, default_value = "results/predict")]
     pub(crate) out: PathBuf,
-    /// Seed of every random draw.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of every random draw: a whole number in [0, 2^53].
+    #[arg(long, default_value_t = 1, value_parser = seed_arg)]
     pub(crate) seed: u64,
     /// Ensemble size (default: every posterior row, or 2000 prior draws); with a posterior
     /// of another size its rows are drawn with replacement.
@@ -376,4 +376,10 @@ pub(crate) struct LoadSpectrumArgs {
     pub(crate) merge_below_share: f64,
     #[command(flatten)]
     pub(crate) figures: FigureArgs,
+}
+
+/// `--seed`: a whole number in [0, 2^53], as an integer or a whole float
+/// (`gearwear::rng::parse_seed` names the flag, the value and the range).
+fn seed_arg(text: &str) -> Result<u64, String> {
+    crate::rng::parse_seed("--seed", text)
 }

@@ -79,9 +79,32 @@ where
     crate::io::console::finish().unwrap_or(code)
 }
 
+/// The figure options of `command`, if it draws figures (counted by its budget).
+fn figure_args(command: &Command) -> Option<&common_args::FigureArgs> {
+    Some(match command {
+        Command::Config(_) => return None,
+        Command::Stiffness(a) => &a.figures,
+        Command::Dynamics(a) => &a.figures,
+        Command::Signals(a) => &a.figures,
+        Command::Dataset(a) => &a.figures,
+        Command::DatasetMerge(a) => &a.figures,
+        Command::Wear(a) => &a.figures,
+        Command::Run(a) => &a.figures,
+        Command::Sweep(a) => &a.figures,
+        Command::SweepMerge(a) => &a.figures,
+        Command::Calibrate(a) => &a.figures,
+        Command::Predict(a) => &a.figures,
+        Command::PredictMerge(a) => &a.figures,
+        Command::LoadSpectrum(a) => &a.figures,
+    })
+}
+
 /// Run the command `cli` names; its exit code.
 fn run(cli: &Cli) -> u8 {
-    let budget = cli.budget();
+    let budget = match figure_args(&cli.command) {
+        Some(f) => crate::app::budget::with_figures(cli.budget(), &f.request()),
+        None => cli.budget(),
+    };
     let result = match &cli.command {
         Command::Config(a) => config_cmd::run(a),
         Command::Stiffness(a) => stiffness_cmd::run(a, budget),

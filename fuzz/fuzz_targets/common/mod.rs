@@ -11,6 +11,7 @@ use gearwear::wear::WearState;
 const FUZZ_BUDGET: Budget = Budget {
     memory_bytes: 256e6,
     seconds: 0.25,
+    figures: gearwear::study::budget::FigureLoad::NONE,
 };
 
 /// Largest quasi-static grid evaluated (2.4 us a step: 50 ms).

@@ -58,6 +58,8 @@ pub(crate) fn trajectory_rel(condition: &str) -> String {
     format!("state/trajectory_{condition}.json")
 }
 
+use crate::study::budget::KeptRecords;
+
 pub(crate) const DATASET_REL: &str = "state/dataset.json";
 
 /// Largest file of a dataset folder read back (a record's signal file, a trajectory):
@@ -232,6 +234,44 @@ pub fn finished(root: &Path, id: usize, key: &str) -> Option<Sidecar> {
     }
     let bytes = read_in(root, &s.labels.file)?;
     (sha256_hex(&bytes) == s.signal_sha256).then_some(s)
+}
+
+/// The sidecar of record `id` in `root` as it reads (at most [`MAX_SIDECAR_BYTES`]), if it
+/// parses and names its own record.
+pub fn sidecar_at(root: &Path, id: usize) -> Option<Sidecar> {
+    let s = parse_sidecar(&read_in(root, &sidecar_rel(id))?)?;
+    (s.labels.record_id == id).then_some(s)
+}
+
+/// Record ids of the sidecars `root` holds, from their names alone (`records/<id>.json`
+/// as [`sidecar_rel`] names them): nothing is read, so a budget can count a folder
+/// before any sidecar is parsed (issue 33). A bound of what a reading finds: a foreign,
+/// unreadable or oversized sidecar is among them.
+pub fn sidecar_ids(root: &Path) -> Vec<usize> {
+    names_in(root, "records")
+        .into_iter()
+        .filter_map(|n| {
+            let id: usize = n.strip_suffix(".json")?.parse().ok()?;
+            (sidecar_rel(id) == format!("records/{n}")).then_some(id)
+        })
+        .collect()
+}
+
+/// The records and physical states of design `d` that `root` holds by the names of its
+/// sidecars ([`sidecar_ids`]; ids beyond the design's records left out): at least what a
+/// check of the folder reads back, counted before any of them is read.
+pub fn kept_by_names(root: &Path, d: &crate::study::dataset::DatasetDesign) -> KeptRecords {
+    let plan = crate::study::dataset::plan::plan_of(d);
+    let r = plan.realisations.max(1);
+    let ids: Vec<usize> = sidecar_ids(root)
+        .into_iter()
+        .filter(|id| *id < plan.records())
+        .collect();
+    let states: std::collections::BTreeSet<usize> = ids.iter().map(|id| id / r).collect();
+    KeptRecords {
+        records: ids.len() as f64,
+        states: states.len() as f64,
+    }
 }
 
 /// Every readable sidecar of `root`, by record id.

@@ -19,7 +19,7 @@ use crate::report::figure_output::FigureRequest;
 use crate::report::Artifacts;
 use crate::signals::path_file::parse_transfer_path;
 use crate::signals::transfer::TransferPath;
-use crate::study::budget::{estimate_dataset_resumed, estimate_folder_check, Budget, KeptRecords};
+use crate::study::budget::{estimate_dataset_resumed, estimate_folder_check, Budget};
 use crate::study::dataset::plan::Shard;
 use crate::study::dataset::{parse_design, DatasetDesign};
 use std::path::{Path, PathBuf};
@@ -205,17 +205,24 @@ impl Job for DatasetJob {
             })
             .collect();
         let key = dataset_key(&design, &req.path_bytes);
-        let kept_states = kept_states(&self.out, &key, &design, self.shard);
-        budget::check_estimate(
-            &estimate_dataset_resumed(
+        let resumed = |kept_states| {
+            estimate_dataset_resumed(
                 &design,
                 self.shard,
                 threads,
                 checked.record,
                 (&kept, kept_states),
-            ),
-            self.budget.as_ref(),
-        )?;
+            )
+        };
+        // First from the sidecars' names alone, before any is read: every named state
+        // taken as finished, the least work the resume can be (issue 33: every sidecar
+        // was read before the budget was checked). Then the states whose sidecars are
+        // this design's (each read once, at most `MAX_SIDECAR_BYTES`, only those the
+        // names count).
+        let named = kept_states_by_names(&self.out, &design, self.shard);
+        budget::check_estimate(&resumed(named), self.budget.as_ref())?;
+        let kept_states = kept_states(&self.out, &key, &design, self.shard);
+        budget::check_estimate(&resumed(kept_states), self.budget.as_ref())?;
         // A trajectory longer than a folder keeps (after the run budget, which names the
         // cost first; without a budget this refuses it).
         let too_long = trajectory_problems(&design);
@@ -244,16 +251,32 @@ impl Job for DatasetJob {
 }
 
 /// Physical states of `shard` of design `d` whose every record `root` holds finished
-/// under `key` (their sidecars; a resume checks them instead of making them).
+/// under `key` (their sidecars; a resume checks them instead of making them). Only the
+/// sidecars [`super::folder::sidecar_ids`] names within the design's records are read.
 fn kept_states(root: &Path, key: &str, d: &DatasetDesign, shard: Shard) -> usize {
     let plan = crate::study::dataset::plan::plan_of(d);
-    let r = plan.realisations.max(1);
+    let ids = super::folder::sidecar_ids(root)
+        .into_iter()
+        .filter(|id| *id < plan.records())
+        .filter(|id| super::folder::sidecar_at(root, *id).is_some_and(|s| s.dataset_key == key));
+    states_of_shard(ids, d, shard)
+}
+
+/// [`kept_states`] by the sidecars' names alone (nothing read): at least as many.
+fn kept_states_by_names(root: &Path, d: &DatasetDesign, shard: Shard) -> usize {
+    let plan = crate::study::dataset::plan::plan_of(d);
+    let ids = super::folder::sidecar_ids(root)
+        .into_iter()
+        .filter(|id| *id < plan.records());
+    states_of_shard(ids, d, shard)
+}
+
+/// Physical states of `shard` of design `d` every record of which is among `ids`.
+fn states_of_shard(ids: impl Iterator<Item = usize>, d: &DatasetDesign, shard: Shard) -> usize {
+    let r = crate::study::dataset::plan::plan_of(d).realisations.max(1);
     let mut per_state = std::collections::BTreeMap::<usize, usize>::new();
-    for s in super::folder::sidecars(root) {
-        let id = s.labels.record_id;
-        if s.dataset_key == key && id < plan.records() {
-            *per_state.entry(id / r).or_default() += 1;
-        }
+    for id in ids {
+        *per_state.entry(id / r).or_default() += 1;
     }
     per_state
         .iter()
@@ -346,7 +369,7 @@ impl Job for DatasetMergeJob {
         // cost checked first (issue 33: a merge of 1e6 records was counted nowhere).
         let threads = rayon::current_num_threads();
         budget::check_estimate(
-            &verify_estimate(&inputs, &shared.0, given, threads),
+            &verify_estimate(&inputs, given, threads),
             self.budget.as_ref(),
         )?;
         check_trajectories(&inputs, &shared.0)?;
@@ -410,20 +433,10 @@ pub fn verify_folder(
         replace: false,
     };
     if budget.is_some() {
+        // Counted from the sidecars' names, before any is read (issue 33: every
+        // sidecar was parsed first): the records a check reads back at most.
         let checked = check_dataset(&req)?;
-        let key = dataset_key(&d, &req.path_bytes);
-        let realisations = crate::study::dataset::plan::plan_of(&d).realisations.max(1);
-        let ids: Vec<usize> = super::folder::sidecars(root)
-            .into_iter()
-            .filter(|s| s.dataset_key == key)
-            .map(|s| s.labels.record_id)
-            .collect();
-        let states: std::collections::BTreeSet<usize> =
-            ids.iter().map(|id| id / realisations).collect();
-        let kept = KeptRecords {
-            records: ids.len() as f64,
-            states: states.len() as f64,
-        };
+        let kept = super::folder::kept_by_names(root, &d);
         let threads = rayon::current_num_threads();
         let e = estimate_folder_check(&d, kept, sample, threads, checked.record);
         budget::check_estimate(&e, budget)?;

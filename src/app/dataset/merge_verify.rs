@@ -17,7 +17,7 @@ use super::state_files::StateJob;
 use super::verify::{os_seed, verify_states};
 use crate::checksum::sha256_hex;
 use crate::signals::transfer::TransferPath;
-use crate::study::budget::{estimate_dataset_check, Estimate, KeptRecords};
+use crate::study::budget::{estimate_dataset_check, Estimate};
 use crate::study::dataset::plan::{plan_of, Shard};
 use crate::study::dataset::verify::{states_to_recompute, MAX_RECOMPUTED_STATES};
 use crate::study::dataset::{design_of_cases, DatasetDesign, Defaults};
@@ -52,19 +52,14 @@ pub(super) fn verify_inputs(
 
 /// The cost of [`verify_inputs`] (`study::budget::estimate_dataset_check`), summed over
 /// the shards in `inputs` before any is verified: each shard's design rebuilt from its
-/// description, its record size checked, the records and states it holds under `key`
-/// counted; the shards are verified one after another, so the memory is the largest
+/// description, its record size checked, the records and states it holds counted by
+/// their sidecars' names (nothing read: a foreign sidecar is counted too); the shards are verified one after another, so the memory is the largest
 /// shard's. A shard whose design cannot be rebuilt adds nothing: its verification
 /// refuses it before any work.
-pub(super) fn verify_estimate(
-    inputs: &[&Path],
-    key: &str,
-    given: GivenPath,
-    threads: usize,
-) -> Estimate {
+pub(super) fn verify_estimate(inputs: &[&Path], given: GivenPath, threads: usize) -> Estimate {
     let mut sum: Option<Estimate> = None;
     for dir in inputs {
-        let Some(e) = shard_estimate(dir, key, given, threads) else {
+        let Some(e) = shard_estimate(dir, given, threads) else {
             continue;
         };
         match &mut sum {
@@ -81,27 +76,14 @@ pub(super) fn verify_estimate(
 }
 
 /// [`verify_estimate`] of one shard, `None` when its design cannot be rebuilt.
-fn shard_estimate(dir: &Path, key: &str, given: GivenPath, threads: usize) -> Option<Estimate> {
+fn shard_estimate(dir: &Path, given: GivenPath, threads: usize) -> Option<Estimate> {
     let body = read_in(dir, DATASET_REL).and_then(|b| serde_json::from_slice::<Value>(&b).ok())?;
     let d = design_of(dir, &body).ok()?;
     let (path, path_bytes) = path_of(dir, &d, &body, given).ok()?;
     let req = whole_request(&d, path, path_bytes);
     let checked = check_dataset(&req).ok()?;
-    let realisations = plan_of(&d).realisations.max(1);
-    let ids: Vec<usize> = sidecars(dir)
-        .into_iter()
-        .filter(|s| s.dataset_key == key)
-        .map(|s| s.labels.record_id)
-        .collect();
-    let states = ids
-        .iter()
-        .map(|id| id / realisations)
-        .collect::<BTreeSet<_>>()
-        .len();
-    let kept = KeptRecords {
-        records: ids.len() as f64,
-        states: states as f64,
-    };
+    // Counted from the sidecars' names, before any is read (issue 33).
+    let kept = super::folder::kept_by_names(dir, &d);
     Some(estimate_dataset_check(&d, kept, threads, checked.record))
 }
 

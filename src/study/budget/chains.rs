@@ -15,18 +15,24 @@
 //!   so each phase has its own first update and blocks cut on its own wear per cycle (the
 //!   doubling's count, before issue 33, missed the finer nodes and the second phase).
 //!
-//! Each phase makes 1 + ceil(cycles / n) updates (n the block cut on the phase's wear per
-//! cycle, `prognostics::updates`), no more than its stop depth allows; every update
-//! evaluates every bin of the duty in force, the first from rest.
+//! Each phase makes one update and one more per block, each block `wear.block_cycles`
+//! cut to the threshold over the largest wear rate at the block's start, which falls as
+//! the pair runs in ([`super::running_in`]: the wear law's rate at the case's own load
+//! sharing, relaxing as the worn gaps pass load to the other pair in double contact),
+//! no more than its stop depth allows; every update evaluates every bin of the duty in
+//! force, the first from rest. (Before, the initial rate was held for the whole run:
+//! 2.4-3.5 times the updates made, issue 33.)
 
 use super::evaluation::{
     dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, DYNAMIC_WEAR_FACTOR,
     SECONDS_PER_TABLE_POINT, SLOWER_MACHINE_FACTOR,
 };
+use super::running_in::{Gaps, RunningIn};
 use super::teeth::excitation_periods_of;
 use crate::config::case::{Case, NumericsSection};
 use crate::config::operating::LoadSpectrumSection;
 use crate::geometry::GearPair;
+use crate::study::wear_loop::block_length;
 
 /// What the estimates need of the parameters' span (a calibration's prior, the span of a
 /// prediction's samples): numbers, built by prognostics (`From<&Prior>`), so that the
@@ -129,31 +135,66 @@ fn stop_depth_m(case: &Case) -> f64 {
     (STOP_DEPTH_IN_APPROACHES * approach).max(MIN_STOP_DEPTH_M)
 }
 
-/// Updates of one wear run to `total` cycles at per-cycle wear `rate` m: the blocks of
-/// `wear.block_cycles` cut to the threshold, and no more updates than the wear depth
-/// `depth_m` left before the run stops allows (a block adds its cycles times the rate at
-/// the deepest point; [`stop_depth_m`] for a run from new teeth).
-fn updates_within(case: &Case, rate: f64, total: f64, depth_m: f64) -> f64 {
-    let w = &case.wear;
-    let threshold = w.threshold_um * 1e-6;
-    let mut block = w.block_cycles;
-    if rate > 0.0 && block * rate > threshold {
-        block = (threshold / rate).floor().max(1.0);
-    }
-    let cap = if rate > 0.0 {
-        (depth_m.max(0.0) / (block * rate)).ceil()
-    } else {
-        f64::INFINITY
-    };
-    1.0 + (total / block).ceil().min(cap)
+/// Most blocks of one phase followed one by one: past them the rest are counted at the
+/// last block's length (rates only fall, so blocks only grow: an upper bound).
+const MAX_FOLLOWED_BLOCKS: usize = 2000;
+
+/// What a run has reached when a phase ends: the deepest wear counted, m, and the
+/// running-in's gaps.
+#[derive(Debug, Clone, Default)]
+struct Worn {
+    depth_m: f64,
+    gaps: Gaps,
 }
 
-/// A duty a run follows for a while: its wear per cycle per unit k (m per m^2/N, with the
-/// dynamic margin), and the seconds of its first update (every bin from rest, each bin's
-/// table) and of each further one (every bin warm).
-#[derive(Debug, Clone, Copy)]
+/// Updates of one phase of `total` cycles at wear coefficient `k` under `running`, from
+/// `from`, and what the run reached: the loop's blocks (`study::wear_loop::block_length`:
+/// `wear.block_cycles` cut to the threshold over the largest rate at the block's start,
+/// [`RunningIn::rate_after`]), one update each after the first, until the cycles are run
+/// or the deepest wear (each block adding its cycles times that rate, a bound) reaches
+/// `stop_m` ([`stop_depth_m`]).
+fn updates_within(
+    case: &Case,
+    running: &RunningIn,
+    (k, total): (f64, f64),
+    from: &Worn,
+    stop_m: f64,
+) -> (f64, Worn) {
+    let w = &case.wear;
+    let threshold = w.threshold_um * 1e-6;
+    let (mut done, mut depth, mut updates) = (0.0, from.depth_m, 1.0);
+    for followed in 0.. {
+        if !(done < total && depth < stop_m) {
+            break;
+        }
+        let rate = k * running.rate_after(&from.gaps, k * done);
+        let n = block_length(rate, w.block_cycles, threshold, total - done);
+        if followed >= MAX_FOLLOWED_BLOCKS || n.is_nan() || n <= 0.0 {
+            updates += ((total - done) / n.max(1.0)).ceil();
+            done = total;
+            break;
+        }
+        done += n;
+        depth += n * rate;
+        updates += 1.0;
+    }
+    let gaps = running.gaps_after(&from.gaps, k * done);
+    (
+        updates,
+        Worn {
+            depth_m: depth.min(stop_m),
+            gaps,
+        },
+    )
+}
+
+/// A duty a run follows for a while: its initial wear per cycle per unit k (m per m^2/N,
+/// with the dynamic margin) and its running-in, and the seconds of its first update
+/// (every bin from rest, each bin's table) and of each further one (every bin warm).
+#[derive(Debug, Clone)]
 struct Duty {
     rate_per_k: f64,
+    running: RunningIn,
     first_s: f64,
     further_s: f64,
     bins: f64,
@@ -180,6 +221,7 @@ impl Duty {
         let table = 2.0 * c.stiffness.table_points_per_mesh_period as f64 * SECONDS_PER_TABLE_POINT;
         let mut d = Duty {
             rate_per_k: 0.0,
+            running: RunningIn::default(),
             first_s: 0.0,
             further_s: 0.0,
             bins: points.len() as f64,
@@ -198,19 +240,27 @@ impl Duty {
             d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale;
             d.further_s += SECONDS_PER_WARM_UPDATE * scale;
         }
+        // The running-in of a single spur pair (`super::running_in`); the initial rate
+        // held otherwise.
+        let spur = train.is_none() && c.gear.helix_angle_deg == 0.0 && c.planetary.is_none();
+        d.running = pair
+            .filter(|_| spur)
+            .and_then(|p| RunningIn::of_bins(&p, &points, DYNAMIC_WEAR_FACTOR))
+            .unwrap_or_else(|| RunningIn::constant(d.rate_per_k));
         d
     }
 
     /// Updates and seconds of `cycles` cycles of this duty at wear coefficient `k`,
-    /// from a wear depth of `depth_m` (m) on.
-    fn phase(&self, case: &Case, k: f64, cycles: f64, depth_m: f64) -> Count {
-        let u = updates_within(case, self.rate_per_k * k, cycles, self.stop_m - depth_m);
-        Count {
+    /// from what the run reached, `from`; and what it reaches.
+    fn phase(&self, case: &Case, k: f64, cycles: f64, from: &Worn) -> (Count, Worn) {
+        let (u, worn) = updates_within(case, &self.running, (k, cycles), from, self.stop_m);
+        let c = Count {
             runs: 0.0,
             updates: u,
             seconds: self.first_s + (u - 1.0).max(0.0) * self.further_s,
             largest_run: u * self.bins,
-        }
+        };
+        (c, worn)
     }
 }
 
@@ -247,7 +297,7 @@ pub struct FutureDutyJob<'a> {
 }
 
 /// The duties of a run of `case`: its own, and the future one with N0.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Duties {
     own: Duty,
     future: Option<(Duty, f64)>,
@@ -268,18 +318,31 @@ impl Duties {
 
     /// One run at `k` to `to` cycles.
     pub fn run(&self, case: &Case, k: f64, to: f64) -> Count {
-        let mut c = match self.future {
-            Some((next, from)) if from < to => {
-                let mut c = self.own.phase(case, k, from, 0.0);
+        let new = Worn {
+            depth_m: 0.0,
+            gaps: self.own.running.new_teeth(),
+        };
+        let mut c = match &self.future {
+            Some((next, from)) if *from < to => {
+                let (mut c, worn) = self.own.phase(case, k, *from, &new);
                 // The record at the switch is made under both duties, kept once; the
-                // second phase goes on from the depth the first reached (at most its
-                // stop depth), so the run's whole depth is bounded by the stop depth.
-                let depth = (self.own.rate_per_k * k * from).min(self.own.stop_m);
-                c.add(next.phase(case, k, to - from, depth));
+                // second phase goes on from the depth and gaps the first reached (the
+                // depth at most its stop depth, so the run's whole depth is bounded by
+                // the stop depth; the gaps of the same positions of the same pair, when
+                // both duties run in).
+                let worn = Worn {
+                    gaps: if next.running.new_teeth().len() == worn.gaps.len() {
+                        worn.gaps
+                    } else {
+                        next.running.new_teeth()
+                    },
+                    ..worn
+                };
+                c.add(next.phase(case, k, to - from, &worn).0);
                 c.updates -= 1.0;
                 c
             }
-            _ => self.own.phase(case, k, to, 0.0),
+            _ => self.own.phase(case, k, to, &new).0,
         };
         c.runs = 1.0;
         c
@@ -320,7 +383,7 @@ pub fn chain_count(
         return total;
     }
     // The first run cut by the threshold ends the chain; its batch is made whole.
-    let own = duties.own;
+    let own = &duties.own;
     let threshold = case.wear.threshold_um * 1e-6;
     let cut = ks
         .iter()

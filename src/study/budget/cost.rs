@@ -35,6 +35,9 @@ pub struct Budget {
     pub memory_bytes: f64,
     /// Time the run may take, s (on one core of the reference machine).
     pub seconds: f64,
+    /// The figures the run draws beyond the default size, counted with every estimate
+    /// checked against this budget ([`super::output::FigureLoad`]).
+    pub figures: FigureLoad,
 }
 
 impl Budget {
@@ -42,6 +45,7 @@ impl Budget {
     pub const DEFAULT: Budget = Budget {
         memory_bytes: 2.0 * GIB,
         seconds: 600.0,
+        figures: FigureLoad::NONE,
     };
 
     /// The default budget times `factor` (> 0).
@@ -49,7 +53,14 @@ impl Budget {
         Budget {
             memory_bytes: Self::DEFAULT.memory_bytes * factor,
             seconds: Self::DEFAULT.seconds * factor,
+            figures: FigureLoad::NONE,
         }
+    }
+
+    /// This budget with the run's figures at a requested size counted in every estimate
+    /// checked against it.
+    pub fn with_figures(self, figures: FigureLoad) -> Budget {
+        Budget { figures, ..self }
     }
 }
 
@@ -112,6 +123,18 @@ impl Estimate {
 
     /// Ok, or why the run is over `budget`, naming the keys that drive its cost.
     pub fn check(&self, budget: &Budget) -> Result<(), OverBudget> {
+        match budget.figures.term() {
+            Some(t) if !self.terms.is_empty() => {
+                let mut with = self.clone();
+                with.terms.push(t);
+                with.check_alone(budget)
+            }
+            _ => self.check_alone(budget),
+        }
+    }
+
+    /// [`Estimate::check`] of these terms alone.
+    fn check_alone(&self, budget: &Budget) -> Result<(), OverBudget> {
         let give_up = self.steps_to_give_up * SECONDS_PER_STEP;
         let (secs, bytes) = (self.seconds(), self.memory_bytes());
         let mut over = Vec::new();
@@ -161,6 +184,79 @@ impl Estimate {
             .iter()
             .max_by(|a, b| f(a).total_cmp(&f(b)))
             .expect("an estimate has terms")
+    }
+}
+
+/// Bytes a pixel of a PNG figure holds while it is drawn and encoded: the RGB raster (3
+/// bytes) and the encoder's filtered rows and output. Measured 2026-11-30 (`gearwear
+/// stiffness`, two figures drawn at once on two threads, the peak RSS less the 15 MB of
+/// the default run over the two figures' pixels): 2.5 at 2048x1024 (13 MB for 5.3e6
+/// pixels), 2.8 at 4096x2048 (60 MB, 2.1e7), 2.9 at 8192x4096 (247 MB, 8.5e7); counted 4.
+pub const BYTES_PER_FIGURE_PIXEL: f64 = 4.0;
+
+/// CPU seconds per pixel of a PNG figure drawn and encoded: measured 7.9e-9 (the same
+/// runs: 0.69 s of CPU at 8192x4096 against 0.02 s at the default size, 8.5e7 pixels
+/// more), counted 1e-8. Not times [`SLOWER_MACHINE_FACTOR`]: the pixels counted are
+/// already a bound (the tallest figure's on each thread, 1.3-1.6 times the pixels of
+/// `stiffness`'s two figures; with the factor, 4.0-4.5 times their CPU time).
+pub const SECONDS_PER_FIGURE_PIXEL: f64 = 1e-8;
+
+/// Default height of the tallest figure counted, px: four stacked panels (40 + 300 x 4,
+/// `report::figure_output::plot_height`); the figures of every command but a few
+/// (below) have at most three (`signals`' TSA, 900 px).
+pub const TALLEST_DEFAULT_FIGURE_PX: f64 = 1240.0;
+
+/// PNG figures of a requested size as the budget counts them (plain numbers, so that the
+/// cost model imports nothing of the report layer): the pixels of the tallest figure a
+/// command draws at that size, and how many figures are drawn at once (the threads:
+/// `report::artifacts::stage_figures` renders them in parallel). At the default size
+/// nothing is added: the measured base and rates hold the default figures.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FigureLoad {
+    /// Pixels of the tallest figure at the requested size.
+    pub pixels_per_figure: f64,
+    /// Figures drawn at once (and counted in time).
+    pub figures_at_once: f64,
+}
+
+impl FigureLoad {
+    /// No figure beyond the default size.
+    pub const NONE: FigureLoad = FigureLoad {
+        pixels_per_figure: 0.0,
+        figures_at_once: 0.0,
+    };
+
+    /// PNG figures whose one-panel size is `(w, h)` px against the default `default_px`
+    /// (w, h), each side at most `max_side_px` (the raster's bound), drawn on `threads`
+    /// threads: the tallest figure ([`TALLEST_DEFAULT_FIGURE_PX`] by default) scaled as
+    /// `report::figure_output::FigureOutput::size_of` scales it, in saturating
+    /// arithmetic (u64 pixels of two u32 sides never wrap).
+    pub fn at_size(
+        (w, h): (u32, u32),
+        default_px: (u32, u32),
+        max_side_px: u32,
+        threads: usize,
+    ) -> FigureLoad {
+        let width = (u64::from(w)).min(u64::from(max_side_px));
+        let tall = TALLEST_DEFAULT_FIGURE_PX * f64::from(h) / f64::from(default_px.1.max(1));
+        let height = (tall.round() as u64).clamp(1, u64::from(max_side_px));
+        FigureLoad {
+            pixels_per_figure: width.saturating_mul(height) as f64,
+            figures_at_once: threads.max(1) as f64,
+        }
+    }
+
+    /// The term of these figures, None when there are none: the figures drawn at once
+    /// hold their rasters together; their time is counted for those figures (a command
+    /// that draws more figures at a large size takes more time than counted:
+    /// docs/RELIABILITY.md).
+    pub fn term(&self) -> Option<Term> {
+        (self.pixels_per_figure > 0.0).then_some(Term {
+            what: "the figures at the requested size",
+            seconds: self.figures_at_once * self.pixels_per_figure * SECONDS_PER_FIGURE_PIXEL,
+            bytes: self.figures_at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL,
+            keys: &["the figure size"],
+        })
     }
 }
 

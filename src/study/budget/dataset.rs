@@ -7,7 +7,7 @@ use super::cost::{Estimate, Term, BASE_BYTES};
 use super::evaluation::SLOWER_MACHINE_FACTOR;
 use super::signals::{record_synthesis, BYTES_PER_SAMPLE_CHANNEL};
 use crate::study::dataset::plan::{plan_of, Shard};
-use crate::study::dataset::verify::MAX_RECOMPUTED_STATES;
+use crate::study::dataset::verify::{recomputed_count, MAX_RECOMPUTED_STATES};
 use crate::study::dataset::DatasetDesign;
 use crate::study::wear_check::MAX_RECOMPUTED;
 
@@ -263,12 +263,18 @@ pub fn estimate_dataset_check(
     threads: usize,
     record: RecordSize,
 ) -> Estimate {
-    estimate_folder_check(d, kept, MAX_RECOMPUTED_STATES, threads, record)
+    // A merge draws its sample among the states the shard holds: each a kept one.
+    let recomputed = recomputed_count(kept.states as usize, MAX_RECOMPUTED_STATES) as f64;
+    folder_check(d, kept, (recomputed, recomputed), threads, record)
 }
 
-/// [`estimate_dataset_check`] with `sample` physical states recomputed (at most those
-/// kept): the cost of `app::dataset::jobs::verify_folder`, whose sample is the caller's.
-/// (Before issue 33's count of it, a folder's check was budgeted nowhere.)
+/// [`estimate_dataset_check`] with a sample of `sample` physical states: the cost of
+/// `app::dataset::jobs::verify_folder`, which draws its sample among all the design's
+/// physical states (`study::dataset::verify::states_to_recompute`: every state of at most
+/// `sample`, else the first, the last and `sample - 2` others, so two with a sample of 0
+/// or 1) and recomputes those of conditions with a trajectory: counted all. (Before
+/// issue 33's count of it, a folder's check was budgeted nowhere; until its review it
+/// counted min(kept, sample) states, none with a sample of 0 where two are recomputed.)
 pub fn estimate_folder_check(
     d: &DatasetDesign,
     kept: KeptRecords,
@@ -276,15 +282,30 @@ pub fn estimate_folder_check(
     threads: usize,
     record: RecordSize,
 ) -> Estimate {
+    let physical = plan_of(d).physical_states();
+    let recomputed = recomputed_count(physical, sample) as f64;
+    // Those beyond the states missing from the folder are kept ones, at least.
+    let missing = (physical as f64 - kept.states).max(0.0);
+    let kept_recomputed = (recomputed - missing).clamp(0.0, kept.states);
+    folder_check(d, kept, (recomputed, kept_recomputed), threads, record)
+}
+
+/// A folder's check with `recomputed` physical states recomputed whole, `kept_recomputed`
+/// of them kept ones (their records not read back again; see [`estimate_dataset_check`]).
+fn folder_check(
+    d: &DatasetDesign,
+    kept: KeptRecords,
+    (recomputed, kept_recomputed): (f64, f64),
+    threads: usize,
+    record: RecordSize,
+) -> Estimate {
     let plan = plan_of(d);
     let c = design_costs(d, record);
-    let sampled = kept.states.min(sample as f64);
     let realisations = plan.realisations as f64;
     let per_state_s = c.state_s
         + record_seconds(record, true)
         + (realisations - 1.0).max(0.0) * record_seconds(record, false);
-    // The records of the sampled states are recomputed, not checked again.
-    let checked = (kept.records - sampled * realisations).max(0.0);
+    let checked = (kept.records - kept_recomputed * realisations).max(0.0);
     let threads = threads.max(1) as f64;
     Estimate::of_terms(vec![
         Term {
@@ -295,7 +316,7 @@ pub fn estimate_folder_check(
         },
         Term {
             what: "a sample of the physical states recomputed",
-            seconds: sampled * per_state_s,
+            seconds: recomputed * per_state_s,
             bytes: threads * (c.bytes - BASE_BYTES),
             keys: &["the conditions' numerics keys"],
         },
@@ -389,4 +410,46 @@ pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
         n * (4.0 * grid + 2.0 * s_dyn * periods + 48.0) + 2.0 * (4.0 + 12.0 * n)
     };
     updates * per_update * TRAJECTORY_BYTES_PER_NUMBER
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::input::InputError;
+
+    #[test]
+    fn a_folder_check_counts_the_states_its_sample_recomputes() {
+        // 4 physical states (4 cycle counts, one speed, one realisation), all kept.
+        let no_file = |p: &str| -> Result<String, InputError> {
+            Err(InputError {
+                path: p.into(),
+                reason: "none".into(),
+            })
+        };
+        let text = "[run_to_failure]\ncycles = [0, 1e3, 2e3, 3e3]\nmax_cycles = 4e3\n";
+        let d = crate::study::dataset::parse_design(text, "d.toml", &no_file).unwrap();
+        let kept = KeptRecords {
+            records: 4.0,
+            states: 4.0,
+        };
+        let record = RecordSize {
+            samples: 25_600.0,
+            channels: 2.0,
+        };
+        let recomputed = |sample: usize| {
+            let e = estimate_folder_check(&d, kept, sample, 1, record);
+            (e.terms[1].seconds, e.terms[2].seconds)
+        };
+        // `verify_folder` recomputes the first and the last state with a sample of 0 or 1
+        // (`states_to_recompute`), as with 2; all 4 with 8: twice the states of 2.
+        let (two, checked_two) = recomputed(2);
+        assert!(two > 0.0);
+        assert_eq!(recomputed(0), (two, checked_two));
+        assert_eq!(recomputed(1), (two, checked_two));
+        let (all, checked_all) = recomputed(8);
+        assert!((all / two - 2.0).abs() < 1e-12, "{all} {two}");
+        // The recomputed states' records are not read back again: 2 of 4 with two
+        // recomputed, none with all four.
+        assert!(checked_two > 0.0 && checked_all == 0.0);
+    }
 }

@@ -35,6 +35,7 @@ pub mod load_spectrum;
 pub mod output;
 pub mod planetary;
 pub mod prognostics;
+pub mod running_in;
 pub mod signals;
 pub mod sweep;
 pub mod teeth;
@@ -44,7 +45,7 @@ pub use case_jobs::{
     estimate, max_checkpoint_bytes, Job, BYTES_PER_SAMPLE, OUTPUT_BYTES_PER_PROFILE_POINT,
     OUTPUT_SECONDS_PER_PROFILE_POINT,
 };
-pub use cost::{Budget, Estimate, Term};
+pub use cost::{Budget, Estimate, FigureLoad, Term};
 pub use dataset::{
     estimate_dataset, estimate_dataset_check, estimate_dataset_resumed, estimate_folder_check,
     trajectory_bytes, KeptRecords, RecordSize,

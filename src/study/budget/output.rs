@@ -25,8 +25,8 @@ use super::evaluation::SLOWER_MACHINE_FACTOR;
 use crate::config::Case;
 
 /// CPU seconds of one PNG figure at the default size: measured 8-10.6 ms (module docs),
-/// counted 10 ms, times [`SLOWER_MACHINE_FACTOR`]. (A larger `--figure-size` costs more:
-/// not counted, docs/RELIABILITY.md.)
+/// counted 10 ms, times [`SLOWER_MACHINE_FACTOR`]. (A larger figure size costs more:
+/// [`FigureLoad`], counted with the budget.)
 const SECONDS_PER_FIGURE: f64 = 10e-3 * SLOWER_MACHINE_FACTOR;
 
 /// CPU seconds of one mesh's stiffness model and tables in `stiffness`: measured 9-10 ms

@@ -16,7 +16,8 @@
 //!   run-to-failure evaluations
 //!   ([`super::chains::run_to_failure_seconds`]), and keeps U records of (4 G + 4
 //!   S_d) numbers (and its bins' records while it runs). Updates follow from Archard's
-//!   law at the nominal load, at the prior's largest torque and roughness factor.
+//!   law at the nominal load, at the prior's largest torque and roughness factor, as the
+//!   pair runs in ([`super::running_in`]).
 //! - **Posterior**: the likelihood reads the surrogate once per observation ([`T_VALUE`]
 //!   each). The exact grid evaluates `grid_points`^d cells on each of up to 8 levels and
 //!   holds [`GRID_BYTES_PER_CELL`] per cell; the ensemble sampler makes walkers (20 +
@@ -31,7 +32,7 @@
 //!   cycle and keep every mesh's record ([`super::train_prognostics`]); a prediction's
 //!   fans are 6 per stage.
 //! - **Prediction**: per sample 6 fan quantities x grid points (16 bytes and one surrogate
-//!   read each), kept for the fans, sorted per grid point; a shard also writes them as
+//!   read each, [`T_FAN_VALUE`]), kept for the fans, sorted per grid point; a shard also writes them as
 //!   JSON ([`JSON_BYTES_PER_VALUE`]). The exact forward model runs one wear study per
 //!   sample (at the largest k of the samples).
 //! - **Merge**: the shards' bytes read, their values held twice (parsed and joined), the
@@ -40,7 +41,7 @@
 pub use super::chains::ParameterSpan;
 use super::chains::{chain_count, Duties, FutureDutyJob};
 use super::cost::{Estimate, Term};
-use super::evaluation::dynamic_steps_per_period;
+use super::evaluation::{dynamic_steps_per_period, SLOWER_MACHINE_FACTOR};
 use crate::config::Case;
 
 /// One reading of the surrogate (a quantity at a cycle count for a parameter set), s:
@@ -52,6 +53,15 @@ pub const T_VALUE: f64 = 1e-6;
 pub const T_FIT_MEMBER: f64 = 1e-6;
 /// Sorting one member's value at one cycle count of a band, s (with its copies).
 pub const T_BAND: f64 = 1e-7;
+/// One value of a prediction's fans (a surrogate read of one sample at one cycle count,
+/// and its share of the fans' sorting and tables) with the wear coefficient the only
+/// free parameter, s: measured 0.19 and 0.16 us of CPU (2026-11-30, load 6-7: 1e5
+/// samples x 6 quantities x 101 points in 12.0 s, and 2000 x 6 x 1e4 in 19.6 s, less
+/// the 0.58 s of the same prediction of 2000 x 6 x 101), counted 0.2 us, times each
+/// further surrogate axis's factor 2 (a multilinear read doubles its corners) and
+/// [`SLOWER_MACHINE_FACTOR`]. (It was [`T_VALUE`] + [`T_BAND`], 1.1 us, from the
+/// calibration's two-axis likelihood: 5.6 and 6.7 times the CPU time of those runs.)
+pub const T_FAN_VALUE: f64 = 0.2e-6 * SLOWER_MACHINE_FACTOR;
 /// Memory of one cell of the exact grid posterior (centre, parameters, log-likelihood,
 /// weights, masses, and the copy of a level), bytes.
 pub const GRID_BYTES_PER_CELL: f64 = 200.0;
@@ -255,9 +265,10 @@ pub(crate) fn estimate_prediction(
     } else {
         surrogate_terms(case, span, j.cycles, j.future)
     };
+    let axes = 2f64.powi(span.free_besides_wear_coefficient.min(8) as i32);
     terms.push(Term {
         what: "the ensemble's fan values",
-        seconds: values * (T_VALUE + T_BAND),
+        seconds: values * T_FAN_VALUE * axes,
         bytes: values * 16.0 * 2.0 + n * 300.0 + j.posterior_rows as f64 * 100.0,
         keys: &["samples", "grid_points"],
     });

@@ -19,14 +19,17 @@ const BYTES_PER_SAMPLE_TRANSIENT: f64 = 3000.0;
 const SECONDS_PER_RECORD_SAMPLE: f64 = 3e-6;
 
 /// What each accelerometer channel adds per record sample (its rendering through the
-/// transfer path, filter, indicators, TSA and files): measured 0.84-0.90 us of CPU time
-/// and 48-54 bytes per sample and channel (a 1 s record at 25.6 kHz through a modal path
-/// of 1 and of 100 sensors, `scripts/budget_table.sh`'s `path_N.toml`: 0.18 s / 23 MB
-/// against 2.32-2.47 s / 145-159 MB, two runs at load 5, 2026-11-29). Time: 0.9 us times
-/// [`SLOWER_MACHINE_FACTOR`]; memory does not depend on the machine: 64 bytes. (It was
-/// 4 us, from a measurement of 3.3 us under another load and an older build: 5.5 times
-/// the CPU time of 100 sensors, issue 33.)
-pub const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.9e-6 * SLOWER_MACHINE_FACTOR;
+/// transfer path, filter, indicators, TSA and files). Measured again 2026-11-30 09:03
+/// (load 5; a 1 s record at 25.6 kHz through a modal path of 1, 20 and 100 sensors,
+/// `scripts/budget_table.sh`'s `path_N.toml`; CPU time, the lowest of four runs each:
+/// 0.15, 0.44 and 0.99 s): 0.60 us a sample and sensor from 1 to 20 sensors, 0.27 us from
+/// 20 to 100 (the cost per sensor falls with the count); counted 0.45 us, times
+/// [`SLOWER_MACHINE_FACTOR`]: 1.5 to 3 times the measured channels' cost at every count
+/// from 1 to 100. Memory does not depend on the machine: measured 50 bytes a sample and
+/// sensor (20 against 100 sensors: 44 against 146 MB), counted 64. (It was 0.9 us, from
+/// runs at load 5-8 that took 1.8-2.5 times as long, so 100 sensors were estimated at
+/// 4.2 times their CPU time; 4 us before that, issue 33.)
+pub const SECONDS_PER_SAMPLE_CHANNEL: f64 = 0.45e-6 * SLOWER_MACHINE_FACTOR;
 pub(crate) const BYTES_PER_SAMPLE_CHANNEL: f64 = 64.0;
 
 /// The sensors a record has without a transfer-path file (the generic housing's two).

@@ -436,6 +436,23 @@ mod tests {
     }
 
     #[test]
+    fn the_design_seed_takes_two_to_the_53_in_either_notation_and_names_its_range() {
+        // Issue 33: 2^53 written as a float was refused by the type, with no range named.
+        let design = |seed: &str| parse_design(&format!("seed = {seed}\n"), "d.toml", &no_file);
+        for ok in ["9.007199254740992e15", "9007199254740992", "0", "7.0"] {
+            let d = design(ok).unwrap();
+            assert_eq!(d.seed as f64, ok.parse::<f64>().unwrap(), "{ok}");
+        }
+        for bad in ["9007199254740993", "9.1e15", "-1", "2.5", "\"7\""] {
+            let e = design(bad).unwrap_err().join("; ");
+            assert!(
+                e.contains("`seed`") && e.contains("[0, 9007199254740992]"),
+                "{bad}: {e}"
+            );
+        }
+    }
+
+    #[test]
     fn a_full_design_parses_and_conditions_merge_into_the_case() {
         let text = r#"
 seed = 3

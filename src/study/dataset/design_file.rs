@@ -13,7 +13,7 @@ pub(crate) struct DesignFile {
     #[serde(default)]
     pub(crate) set: Vec<String>,
     pub(crate) transfer_path: Option<String>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "seed")]
     pub(crate) seed: u64,
     #[serde(default)]
     pub(crate) run_to_failure: RunToFailureFile,
@@ -23,6 +23,26 @@ pub(crate) struct DesignFile {
     pub(crate) records: RecordsFile,
     #[serde(default)]
     pub(crate) condition: Vec<ConditionFile>,
+}
+
+/// The design's `seed`: a whole number in [0, 2^53], written as an integer or a whole
+/// float (`crate::rng::MAX_SEED`); the message names the key, the value and the range.
+fn seed<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Number {
+        Int(i64),
+        Float(f64),
+    }
+    match Number::deserialize(d) {
+        Ok(Number::Int(i)) => crate::rng::seed_from_i128("seed", i as i128),
+        Ok(Number::Float(x)) => crate::rng::seed_from_f64("seed", x),
+        Err(_) => Err(format!(
+            "`seed` is not a number: expected a whole number in [0, {}]",
+            crate::rng::MAX_SEED
+        )),
+    }
+    .map_err(serde::de::Error::custom)
 }
 
 /// `[run_to_failure]` as written: states, cycles, max_cycles, wear_limit_um.

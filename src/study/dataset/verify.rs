@@ -38,12 +38,21 @@ pub fn states_to_recompute(n: usize, k: usize, seed: u64) -> Vec<usize> {
     }
     let mut picked: std::collections::BTreeSet<usize> = [0, n - 1].into_iter().collect();
     let mut z = seed;
-    while picked.len() < k.max(2) {
+    // (At most `n`: a single state with a sample of 0 or 1 is the first and the last;
+    // the draw below would wrap past `n - 2`.)
+    while picked.len() < k.max(2).min(n) {
         z = z.wrapping_add(1);
         // Modulo bias is below n / 2^64 (n is at most 2^53).
         picked.insert(1 + (super::plan::splitmix64(z) % (n as u64 - 2)) as usize);
     }
     picked.into_iter().collect()
+}
+
+/// How many states [`states_to_recompute`] returns for `n` states and a sample of `k`:
+/// all `n` when `n <= k`, else the first and the last and `k - 2` others, so never fewer
+/// than two of them (a sample of 0 or 1 still recomputes the first and the last).
+pub fn recomputed_count(n: usize, k: usize) -> usize {
+    n.min(k.max(2))
 }
 
 /// Probability that [`states_to_recompute`] with `k` of `n` states recomputes at least one
@@ -211,4 +220,25 @@ fn verify_train_trajectory(m2: &Model, limit_m: f64, t: &Trajectory) -> Result<(
         limit_m,
     );
     same_end(t, &again)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_recomputed_count_is_the_length_of_the_drawn_sample() {
+        // Against the sampler itself: every n and k up to 40 and 12, a few seeds.
+        for n in 0..40 {
+            for k in 0..12 {
+                for seed in [0, 1, 99] {
+                    assert_eq!(
+                        recomputed_count(n, k),
+                        states_to_recompute(n, k, seed).len(),
+                        "n {n}, k {k}"
+                    );
+                }
+            }
+        }
+    }
 }
