@@ -41,7 +41,7 @@ pub use super::helical::EXTENDED_PATH_WARNING;
 
 /// A key of a helical case that the planar dynamics cannot take, and why.
 fn refusal(key: &str, value: &str, why: &str) -> String {
-    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`, `gearwear wear` and `gearwear run`: {why}")
+    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`, `gearwear wear`, `gearwear run`, `gearwear dataset`, `gearwear calibrate` and `gearwear predict`: {why}")
 }
 
 /// What a helical case asks that the planar model does not have (see the module docs).
