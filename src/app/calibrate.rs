@@ -6,7 +6,7 @@
 use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::train_prognostics::{check_train_prognostics, stages_of};
-use super::{budget, build_train_model, publish, settings, Job, JobError, Outcome};
+use super::{budget, build_wear_study_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::prognostics::band::Band;
 use crate::prognostics::calibrate::{calibrate, model_band, Calibration, CalibrationSettings};
@@ -135,7 +135,8 @@ impl Job for CalibrateJob {
     fn run(&self, observer: &dyn Observer) -> Result<Outcome, JobError> {
         let figures = self.figures.resolve().map_err(JobError::input)?;
         let (prior, obs, src) = self.inputs()?;
-        let model = build_train_model(&self.case, observer)?;
+        let study = crate::prognostics::forward::PROGNOSTICS;
+        let model = build_wear_study_model(&self.case, study, observer)?;
         let out = publish::open_if(self.out.as_deref(), None, self.name(), self.replace)?;
         let meta = RunMetadata::of_model(self.name(), &model);
         let o = &self.options;

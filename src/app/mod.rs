@@ -156,6 +156,21 @@ pub fn build_train_model(case: &Case, observer: &dyn Observer) -> Result<Model, 
     Ok(m)
 }
 
+/// As [`build_train_model`], a single helical pair on its planar model with its wear per
+/// slice (`Model::wear_study_from_case`, docs/MODEL.md 11.9): for `gearwear calibrate` and
+/// `gearwear predict` (`study` names them in a refusal).
+pub fn build_wear_study_model(
+    case: &Case,
+    study: &str,
+    observer: &dyn Observer,
+) -> Result<Model, JobError> {
+    let m = Model::wear_study_from_case(case, study)?;
+    for w in &m.warnings {
+        observer.warning(w);
+    }
+    Ok(m)
+}
+
 /// As [`build_train_model`] for the wear of a gear train at one operating point
 /// (`gearwear wear`, `gearwear run`): a stage's tooth fault taken
 /// (`Model::train_wear_from_case`).

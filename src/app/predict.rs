@@ -7,7 +7,7 @@ use super::inputs::TableSource;
 use super::observer::{Observer, Task};
 use super::predict_future::FutureInput;
 use super::train_prognostics::{check_train_prognostics, stages_of};
-use super::{budget, build_train_model, publish, settings, Job, JobError, Outcome};
+use super::{budget, build_wear_study_model, publish, settings, Job, JobError, Outcome};
 use crate::config::Case;
 use crate::io::Table;
 use crate::prognostics::band::Band;
@@ -199,7 +199,8 @@ impl Job for PredictJob {
         let shard = self.shard;
         // The budget, now that the samples' source and number are known.
         self.check_budget(&source, &span, n, future.as_ref())?;
-        let model = build_train_model(case, observer)?;
+        let study = crate::prognostics::forward::PROGNOSTICS;
+        let model = build_wear_study_model(case, study, observer)?;
         // Every bin of the future duty within the model's domain (the Hertz pressure the
         // flanks can carry, ...) before the folder is opened: a refusal leaves nothing.
         if let Some(f) = &future {
@@ -570,9 +571,18 @@ fn future_domain(
 ) -> Result<(), JobError> {
     let mut c = case.clone();
     c.load_spectrum = Some(f.spectrum.clone());
+    // A helical pair's bins against its transverse section, its lead keys taken by its
+    // planar model (as `Model::helical_from_case` checks its own operating point).
+    let pair = model
+        .helical
+        .as_ref()
+        .map_or(&model.pair, |h| &h.pair.transverse);
+    if model.helical.is_some() {
+        c = crate::study::helical_dynamics::without_lead_keys(&c);
+    }
     let problems: Vec<crate::remedy::Problem> = (0..f.spectrum.bins.len())
         .flat_map(|i| {
-            crate::study::domain::domain_problems(&c.at_bin(i), &model.pair)
+            crate::study::domain::domain_problems(&c.at_bin(i), pair)
                 .into_iter()
                 .map(move |m| {
                     crate::remedy::Problem::of(

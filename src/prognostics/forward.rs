@@ -39,6 +39,9 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
+/// The studies whose forward runs these are, as a refusal names them.
+pub const PROGNOSTICS: &str = "`gearwear calibrate` and `gearwear predict`";
+
 /// A dynamic wear study's records.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Trajectory {
@@ -231,7 +234,9 @@ pub struct FutureDuty {
 /// Run the dynamic wear study of `case` to `total_cycles`, with the case's block length
 /// or `block_cycles` instead. A solver failure is kept in the trajectory, not returned.
 /// Under a load spectrum the records are the spectrum's (`combined_record`: its wear
-/// per cycle, the monitoring bin's response).
+/// per cycle, the monitoring bin's response). A helical pair wears slice by slice on its
+/// planar model (`Model::wear_study_from_case`, docs/MODEL.md 11.9), as `gearwear wear`
+/// wears it.
 pub fn run_trajectory(
     case: &Case,
     block_cycles: Option<f64>,
@@ -277,7 +282,7 @@ pub fn run_duty_trajectory(
         ));
     }
     if future.is_none() && c.load_spectrum.is_none() {
-        let model = Model::from_case(&c)?;
+        let model = Model::wear_study_from_case(&c, PROGNOSTICS)?;
         let mut records: Vec<UpdateRecord> = Vec::new();
         let result = run_wear(&model, WearRun::new(WearMode::Dynamic), &mut |run| {
             if let Some(r) = run.records.last() {
@@ -290,7 +295,7 @@ pub fn run_duty_trajectory(
     let switch = future.map_or(total_cycles, |f| f.from_cycles.clamp(0.0, total_cycles));
     let mut now = c.clone();
     now.wear.total_cycles = switch;
-    let sm = SpectrumModel::from_case(&now)?;
+    let sm = SpectrumModel::dynamics_from_case(&now)?;
     let mut records = Vec::new();
     let first = SpectrumRun::new(WearMode::Dynamic, sm.shares.clone());
     let (run, failure) = spectrum_records(&sm, first, &mut records);
@@ -302,7 +307,7 @@ pub fn run_duty_trajectory(
     }
     let mut then = c.clone();
     then.load_spectrum = Some(f.spectrum.clone());
-    let sm = SpectrumModel::from_case(&then)?;
+    let sm = SpectrumModel::dynamics_from_case(&then)?;
     let state = run.last().map(|r| r.wear.clone()).unwrap_or_default();
     // The record at the switch holds the new duty's response and wear rate.
     records.pop();
@@ -376,7 +381,7 @@ pub(crate) fn attach(
         Some(s) => case.at_bin(s.monitoring_index()),
         None => case.clone(),
     };
-    let model = Model::from_case(case).map_err(IndicatorError::Model)?;
+    let model = Model::wear_study_from_case(case, PROGNOSTICS).map_err(IndicatorError::Model)?;
     let mut setup = chain_of(case, None, case.signals.max_input_speed_hz(case))
         .map_err(|p| IndicatorError::Chain(p.messages()))?;
     setup.chain.acquisition.noise = NoiseSpec::None;

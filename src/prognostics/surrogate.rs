@@ -129,7 +129,7 @@ fn extend(case: &Case, t: &Trajectory, total: f64) -> Result<Trajectory, ModelEr
     }
     let mut c = case.clone();
     c.wear.total_cycles = total;
-    let model = Model::from_case(&c)?;
+    let model = Model::wear_study_from_case(&c, super::forward::PROGNOSTICS)?;
     let mut records = t.records.clone();
     let run = WearRun {
         records: t.records.clone(),

@@ -59,7 +59,7 @@ pub fn lead_keys(case: &Case) -> Vec<String> {
 pub fn lead_refusal(case: &Case) -> Option<String> {
     let keys = lead_keys(case);
     (!keys.is_empty()).then(|| format!(
-        "{}: taken only by `gearwear stiffness` on a single pair (the face load distribution and K_Hbeta, docs/MODEL.md 11.2) and by `gearwear dynamics`, `gearwear wear`, `gearwear run` and `gearwear sweep` on a helical pair (11.1-11.5): the other studies have no gap across the face yet; remove them for this command",
+        "{}: taken only by `gearwear stiffness` on a single pair (the face load distribution and K_Hbeta, docs/MODEL.md 11.2) and by `gearwear dynamics`, `gearwear wear`, `gearwear run`, `gearwear sweep`, `gearwear dataset`, `gearwear calibrate` and `gearwear predict` on a helical pair (11.1-11.5, 11.9): the other studies have no gap across the face yet; remove them for this command",
         keys.join(", ")
     ))
 }

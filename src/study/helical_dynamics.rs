@@ -41,7 +41,7 @@ pub use super::helical::EXTENDED_PATH_WARNING;
 
 /// A key of a helical case that the planar dynamics cannot take, and why.
 fn refusal(key: &str, value: &str, why: &str) -> String {
-    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`, `gearwear wear` and `gearwear run`: {why}")
+    format!("`{key}` = {value} is not available with a helical pair (`gear.helix_angle_deg` > 0) in `gearwear dynamics`, `gearwear wear`, `gearwear run`, `gearwear dataset`, `gearwear calibrate` and `gearwear predict`: {why}")
 }
 
 /// What a helical case asks that the planar model does not have (see the module docs).
@@ -86,7 +86,7 @@ fn refusals(case: &Case) -> Vec<String> {
 
 /// The case without its lead keys (`study::face_load::lead_keys`): what the checks of the
 /// planar model see.
-fn without_lead_keys(case: &Case) -> Case {
+pub(crate) fn without_lead_keys(case: &Case) -> Case {
     let mut c = case.clone();
     c.modification = c.modification.without_lead_keys();
     c.operating.misalignment_um = None;
@@ -133,6 +133,34 @@ impl Model {
             Model::from_case(case)
         } else {
             Model::helical_from_case(case)
+        }
+    }
+
+    /// The model of the studies that wear a case along a whole trajectory beyond `gearwear
+    /// wear` (`gearwear dataset`, `gearwear calibrate`, `gearwear predict`; `study` names
+    /// the study in a refusal): a single helical pair's planar model with its wear per
+    /// slice ([`Model::helical_from_case`], docs/MODEL.md 11.9), its tilting keys refused
+    /// (naming them, `helical_tilt::tilt_refusal`: the slices' wear would ignore the tilt);
+    /// anything else [`Model::from_case`] itself (a spur pair built exactly as before; a
+    /// helical train keeps that constructor's refusal).
+    pub fn wear_study_from_case(case: &Case, study: &str) -> Result<Model, ModelError> {
+        if !case.stage.is_empty() || case.planetary.is_some() || case.gear.helix_angle_deg == 0.0 {
+            return Model::from_case(case);
+        }
+        if let Some(r) = super::helical_tilt::tilt_refusal(case, study) {
+            return Err(ModelError(vec![r]));
+        }
+        Model::helical_from_case(case)
+    }
+
+    /// [`Model::wear_study_from_case`] of `case` as `self` was built: the helical planar
+    /// model when `self` is one (its case already holds the planar model's choices:
+    /// stiffness load sharing, the nominal path), else [`Model::from_case`]. What a
+    /// study's model becomes at another `wear.total_cycles` or block length.
+    pub fn rebuilt_like(&self, case: &Case) -> Result<Model, ModelError> {
+        match self.helical {
+            Some(_) => Model::helical_from_case(case),
+            None => Model::from_case(case),
         }
     }
 

@@ -144,12 +144,13 @@ fn pedrero_with_resolved_teeth(case: &Case) -> String {
 
 /// Why a helical case cannot be modelled here: the model is planar (rotation and lateral
 /// motion of spur pairs); a helical pair's axial force and tilting moments have no degrees
-/// of freedom yet. Every study built on this constructor (datasets, calibration,
-/// prognostics) refuses it rather than give a spur result; `dynamics`, `signals`, `wear`,
-/// `run` and `sweep` build the planar model (`Model::dynamics_from_case`).
+/// of freedom yet. Every study built on this constructor refuses it rather than give a
+/// spur result; `dynamics`, `signals`, `wear`, `run` and `sweep` build the planar model
+/// (`Model::dynamics_from_case`), datasets and prognostics the same with its wear per
+/// slice (`Model::wear_study_from_case`).
 fn helical_refusal(helix_angle_deg: f64) -> String {
     format!(
-        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run` and the sweeps of dynamics and wear, at one operating point or under a `[load_spectrum]` (`gearwear wear`, `gearwear run` and wear sweeps), with axial motion where the axial bearing keys are given; tilting motion and the other studies are not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and `gearwear sweep` take helical pairs (set the angle to 0 for a spur pair)"
+        "`gear.helix_angle_deg` = {helix_angle_deg} is a helical pair: this study is not yet built for it (helical dynamics has only its planar model, in `gearwear dynamics`, the steady record of `gearwear signals`, the wear per slice of `gearwear wear`, the whole study of `gearwear run`, the sweeps of dynamics and wear, the run-to-failure records of `gearwear dataset` and the forward runs of `gearwear calibrate` and `gearwear predict`, at one operating point or under a `[load_spectrum]` (`gearwear wear`, `gearwear run`, wear sweeps and prognostics), with axial motion where the axial bearing keys are given; tilting motion in the wear studies is not built), so it would give a spur result; `gearwear stiffness`, `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run`, `gearwear sweep`, `gearwear dataset`, `gearwear calibrate` and `gearwear predict` take helical pairs (set the angle to 0 for a spur pair)"
     )
 }
 

@@ -38,6 +38,19 @@ fn chain_case(case: &crate::config::Case) -> Result<crate::config::Case, Vec<Str
         .ok_or_else(|| vec!["the train has no stage".to_owned()])
 }
 
+/// A single helical pair's model built as its states will be (its wear per slice,
+/// `Model::wear_study_from_case`): what it refuses (tilting keys, per-tooth inputs, ...)
+/// is refused with the design, before the folder is opened. Nothing to check otherwise
+/// (a spur pair's and a train's model is built when its trajectory runs, as before).
+fn helical_model_check(case: &Case) -> Result<(), Vec<String>> {
+    if !case.stage.is_empty() || case.gear.helix_angle_deg == 0.0 {
+        return Ok(());
+    }
+    crate::study::Model::wear_study_from_case(case, super::state_files::DATASET)
+        .map(|_| ())
+        .map_err(|e| e.0)
+}
+
 /// The tachometer shaft's speed, Hz, at the input speed `input_hz`, for the chain `s` of
 /// a condition's `case`: the single pair's pinion or gear; a train's sensor stage's
 /// pinion or gear (`signals.sensor_stage`), through the ratios of the stages before it,
@@ -92,6 +105,8 @@ fn setups(req: &DatasetRequest) -> Result<Vec<ChainSetup>, Vec<String>> {
             super::plan_planetary::planetary_setup(req, &case)
         } else if let Err(e) = crate::study::train::refuse_fault(&case, "`gearwear dataset`") {
             Err(e.0)
+        } else if let Err(e) = helical_model_check(&case) {
+            Err(e)
         } else {
             chain_case(&case).and_then(|k| {
                 chain_of(&k, req.path.clone(), k.signals.max_input_speed_hz(&k))

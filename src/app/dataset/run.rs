@@ -170,7 +170,10 @@ fn trajectory(
     // A planetary set's model is its wear model (`study::dataset::planetary`).
     let model = match cond.case.planetary {
         Some(_) => None,
-        None => Some(Model::from_case(&cond.case).map_err(|e| input(e.0))?),
+        None => Some(
+            Model::wear_study_from_case(&cond.case, super::state_files::DATASET)
+                .map_err(|e| input(e.0))?,
+        ),
     };
     let (max, limit) = (d.max_cycles, d.wear_limit_um * 1e-6);
     if let Some(t) = read_in(root, &rel)

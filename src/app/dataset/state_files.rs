@@ -81,10 +81,14 @@ pub(crate) fn state_files(
 }
 
 /// The model of a physical state's condition at its speed and load (one per condition,
-/// speed and load: every state along the trajectory shares it).
+/// speed and load: every state along the trajectory shares it): a helical pair's planar
+/// model with its wear per slice (`Model::wear_study_from_case`, docs/MODEL.md 11.9).
 pub(super) fn state_model(job: &StateJob, ix: StateIndex) -> anyhow::Result<Model> {
-    Model::from_case(&state_case(job, ix)).map_err(|e| anyhow::anyhow!("{e}"))
+    Model::wear_study_from_case(&state_case(job, ix), DATASET).map_err(|e| anyhow::anyhow!("{e}"))
 }
+
+/// The study a dataset's refusals name.
+pub(crate) const DATASET: &str = "`gearwear dataset`";
 
 /// What the records of state `ix` are computed from, with its condition's `model`
 /// ([`state_model`]). Fails when the job holds no trajectory of the condition.

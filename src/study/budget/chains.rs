@@ -24,8 +24,8 @@
 //! 2.4-3.5 times the updates made, issue 33.)
 
 use super::evaluation::{
-    dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, DYNAMIC_WEAR_FACTOR,
-    SECONDS_PER_TABLE_POINT, SLOWER_MACHINE_FACTOR,
+    axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor,
+    DYNAMIC_WEAR_FACTOR, SECONDS_PER_TABLE_POINT, SLOWER_MACHINE_FACTOR,
 };
 use super::running_in::{Gaps, RunningIn};
 use super::teeth::excitation_periods_of;
@@ -96,16 +96,47 @@ pub fn run_to_failure_scale(case: &Case) -> f64 {
     let steps = dynamic_steps_per_period(&case.numerics)
         / dynamic_steps_per_period(&NumericsSection::default());
     let periods = excitation_periods_of(case).max(1) as f64;
-    speed * steps.max(1.0) * periods * train_factor(case)
+    speed * steps.max(1.0) * periods * train_factor(case) * axial_factor(case)
+}
+
+/// Samples of the period a wear update spreads over the slices, on the built-in grid
+/// (`numerics.steps_per_mesh_period` = 200) at 30 Hz, where
+/// [`SECONDS_PER_RUN_SLICE_CONTACT`] was measured; [`run_to_failure_scale`] carries a
+/// finer grid, a tighter tolerance and a slower mesh.
+const SLICE_SAMPLES_AT_30_HZ: f64 = 200.0;
+/// CPU seconds of one slice contact of a helical pair's wear update in a run-to-failure
+/// job (`study::helical_wear`: the update's spread over the face slices beside its
+/// dynamic evaluation, which the rates above count), s: measured 2026-11-30 on the 2-core
+/// machine under load, `examples/helical_pair.toml` (400 slices, two transverse pairs:
+/// 160 000 contacts an update) in a dataset of 2 states to 1e5 cycles (19 further
+/// updates) against 1e3 (one): 1.30 s against 0.25 s of CPU (user and system), 55 ms an
+/// update, 0.35 us a contact with the update's evaluation in it; times
+/// [`SLOWER_MACHINE_FACTOR`]. (The wear study's
+/// `super::helical::SECONDS_PER_SLICE_CONTACT` bounds the general, adaptive sample count
+/// instead.)
+pub const SECONDS_PER_RUN_SLICE_CONTACT: f64 = 0.35e-6 * SLOWER_MACHINE_FACTOR;
+
+/// CPU seconds a helical pair's wear update adds in a run-to-failure job (a dataset's
+/// trajectory, a prognostics run): its slice contacts
+/// (`super::helical::slice_contacts_per_update` at [`SLICE_SAMPLES_AT_30_HZ`]) at
+/// [`SECONDS_PER_RUN_SLICE_CONTACT`], times [`run_to_failure_scale`]; 0 for a spur pair
+/// or a train.
+pub fn helical_update_seconds(case: &Case) -> f64 {
+    super::helical::slice_contacts_per_update(case, SLICE_SAMPLES_AT_30_HZ).map_or(0.0, |c| {
+        c * SECONDS_PER_RUN_SLICE_CONTACT * run_to_failure_scale(case)
+    })
 }
 
 /// CPU seconds of a run of `updates` wear updates of `case` in a run-to-failure job: the
 /// mesh-stiffness table, one evaluation from rest and `updates` - 1 warm ones, at the
-/// rates above times [`run_to_failure_scale`] and [`SLOWER_MACHINE_FACTOR`].
+/// rates above times [`run_to_failure_scale`] and [`SLOWER_MACHINE_FACTOR`], and a
+/// helical pair's slice contacts of every update ([`helical_update_seconds`]; a single
+/// evaluation, e.g. a dataset's physical state, is counted as one update).
 pub fn run_to_failure_seconds(case: &Case, updates: f64) -> f64 {
     let table = 2.0 * case.stiffness.table_points_per_mesh_period as f64 * SECONDS_PER_TABLE_POINT;
     let evals = SECONDS_PER_COLD_EVALUATION + (updates - 1.0).max(0.0) * SECONDS_PER_WARM_UPDATE;
-    table + evals * run_to_failure_scale(case) * SLOWER_MACHINE_FACTOR
+    let helical = updates.max(1.0) * helical_update_seconds(case);
+    table + evals * run_to_failure_scale(case) * SLOWER_MACHINE_FACTOR + helical
 }
 
 /// Mean mesh stiffness per face width of ISO 6336-1 (c'_gamma ~ 20 N/(mm um)), N/m^2:
@@ -237,8 +268,9 @@ impl Duty {
             }
             d.stop_m = d.stop_m.min(stop_depth_m(b));
             let scale = run_to_failure_scale(b) * SLOWER_MACHINE_FACTOR;
-            d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale;
-            d.further_s += SECONDS_PER_WARM_UPDATE * scale;
+            let helical = helical_update_seconds(b);
+            d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale + helical;
+            d.further_s += SECONDS_PER_WARM_UPDATE * scale + helical;
         }
         // The running-in of a single spur pair (`super::running_in`); the initial rate
         // held otherwise.

@@ -87,8 +87,10 @@ fn record_numbers(case: &Case) -> (f64, f64) {
     let s_dyn = dynamic_steps_per_period(&case.numerics);
     let g = case.wear.points_per_profile as f64;
     // A train keeps every mesh's record (`super::train_prognostics`).
+    // A helical pair's records hold its wear and increment maps, 4 N G numbers more
+    // (`super::helical::record_numbers`; 0 for a spur pair).
     let kept = super::train_prognostics::train_record_numbers(case, g, s_dyn)
-        .unwrap_or(4.0 * g + 2.0 * s_dyn + 48.0);
+        .unwrap_or(4.0 * g + 2.0 * s_dyn + 48.0 + super::helical::record_numbers(case));
     (kept, kept + 2.0 * g)
 }
 

@@ -131,14 +131,15 @@ pub struct StateInputs<'a> {
 }
 
 /// Deepest wear of each of the `z` teeth of `member`, um: each tooth's own profile with
-/// a tooth-resolved mesh, else the common profile's (all teeth alike).
+/// a tooth-resolved mesh, else the state's deepest (all teeth alike: the common profile's
+/// of a spur pair, the deepest face slice's of a helical pair, `WearState::max_pinion_m`).
 pub fn tooth_max_um(wear: &WearState, member: Member, z: usize) -> Vec<f64> {
     let um = |p: &[f64]| p.iter().fold(0.0_f64, |m, x| m.max(*x)) * 1e6;
     match (&wear.teeth, member) {
         (Some(t), Member::Pinion) => t.pinion_m.iter().map(|p| um(p)).collect(),
         (Some(t), Member::Gear) => t.gear_m.iter().map(|p| um(p)).collect(),
-        (None, Member::Pinion) => vec![um(&wear.pinion_m); z],
-        (None, Member::Gear) => vec![um(&wear.gear_m); z],
+        (None, Member::Pinion) => vec![wear.max_pinion_m() * 1e6; z],
+        (None, Member::Gear) => vec![wear.max_gear_m() * 1e6; z],
     }
 }
 

@@ -114,14 +114,10 @@ pub fn members_deepest_m(states: &[WearState], planets: usize) -> f64 {
 }
 
 /// The per-cycle wear the loop held after update `r` (every tooth's own with a
-/// tooth-resolved mesh, so that a state between updates advances each tooth).
+/// tooth-resolved mesh, every face slice's own on a helical pair, so that a state between
+/// updates advances each tooth or slice: `UpdateRecord::increment`).
 fn increment(r: &UpdateRecord) -> WearIncrement {
-    WearIncrement {
-        pinion_m: r.increment_pinion_m.clone(),
-        gear_m: r.increment_gear_m.clone(),
-        teeth: r.increment_teeth.clone(),
-        ..Default::default()
-    }
+    r.increment()
 }
 
 /// Marks the early stop of a run at the wear limit (not an error).
@@ -130,14 +126,17 @@ fn increment(r: &UpdateRecord) -> WearIncrement {
 struct LimitReached;
 
 /// The model a condition's trajectory runs: its case with `wear.total_cycles` set to
-/// the design's `max_cycles` (warnings dropped: the dataset reports its own).
+/// the design's `max_cycles`, built as `model` was (a helical pair's planar model with
+/// its wear per slice, `Model::rebuilt_like`; warnings dropped: the dataset reports its
+/// own).
 pub fn trajectory_model(model: &Model, max_cycles: f64) -> anyhow::Result<Model> {
-    let mut m2 = Model::from_case(&{
-        let mut c = model.case.clone();
-        c.wear.total_cycles = max_cycles;
-        c
-    })
-    .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut m2 = model
+        .rebuilt_like(&{
+            let mut c = model.case.clone();
+            c.wear.total_cycles = max_cycles;
+            c
+        })
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
     m2.warnings.clear();
     Ok(m2)
 }
