@@ -51,7 +51,7 @@ pub fn run_of_helical(
     if job.case.load_spectrum.is_some() {
         return run_of_helical_under_spectrum(job, figures, observer);
     }
-    if let Some(r) = crate::study::helical_tilt::tilt_refusal(&job.case, "`gearwear run`") {
+    if let Some(r) = crate::study::helical_teeth::wear_refusals(&job.case, "`gearwear run`") {
         return Err(crate::study::ModelError(vec![r]).into());
     }
     let model = build_dynamics_model(&job.case, observer)?;

@@ -63,7 +63,7 @@ impl SpectrumModel {
         // train refuses them in its own model).
         let helical = case.gear.helix_angle_deg != 0.0;
         if let Some(r) = helical
-            .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
+            .then(|| crate::study::helical_teeth::wear_refusals(case, study))
             .flatten()
         {
             return Err(ModelError(vec![r]));

@@ -58,9 +58,6 @@ fn refusals(case: &Case) -> Vec<String> {
     if case.planetary.is_some() {
         r.push(refusal("[planetary]", "a planetary set", "not built"));
     }
-    if case.teeth != Default::default() {
-        r.push(refusal("[teeth]", "per-tooth errors", slices));
-    }
     if case.modification.without_lead_keys() != Default::default() {
         r.push(refusal(
             "[modification]",
@@ -68,9 +65,7 @@ fn refusals(case: &Case) -> Vec<String> {
             "each slice would need its own profile gap; of `[modification]` only the lead keys (crowning, end relief, helix slope deviation) are taken (docs/MODEL.md 11.1)",
         ));
     }
-    if !case.fault.is_empty() {
-        r.push(refusal("[[fault]]", "a fault", slices));
-    }
+    r.extend(super::helical_teeth::teeth_problems(case));
     if case.wear.worn_geometry == WornGeometry::Worn {
         r.push(refusal("wear.worn_geometry", "\"worn\"", slices));
     }
@@ -176,6 +171,12 @@ impl Model {
             warnings.push(EXTENDED_PATH_WARNING.into());
             case.contact.path = ContactPathModel::Nominal;
         }
+        let grid = ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize);
+        let speeds = [
+            params.operating.pinion_speed_rad_s,
+            params.operating.gear_speed_rad_s,
+        ];
+        let teeth = super::helical_teeth::tooth_inputs(&case, &hm.slices, &grid, speeds)?;
         let mut contact = helical_contact(&hp, &line_pair, lead);
         if let Some(g) = &gaps {
             let table = LineGapTable::new(&hm.slices, &g.static_load.gaps_m);
@@ -183,7 +184,7 @@ impl Model {
         }
         Ok(Model {
             contact,
-            grid: ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize),
+            grid,
             elastic: ElasticPair::from_case(&case.materials),
             friction: Friction::from_case(&case.friction),
             roughness: RoughnessLaw::from_case(&case.surface),
@@ -199,7 +200,7 @@ impl Model {
             pair: line_pair,
             mesh,
             params,
-            teeth: None,
+            teeth,
             case,
             warnings,
             train: None,

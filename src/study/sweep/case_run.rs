@@ -449,7 +449,7 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             // On a spur pair the tilting keys are ignored with a warning, as everywhere.
             let helical = case.gear.helix_angle_deg != 0.0;
             if let Some(r) = helical
-                .then(|| crate::study::helical_tilt::tilt_refusal(case, study))
+                .then(|| crate::study::helical_teeth::wear_refusals(case, study))
                 .flatten()
             {
                 return Err(CaseError::Model(crate::study::ModelError(vec![r])));
