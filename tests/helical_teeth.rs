@@ -135,7 +135,11 @@ fn stiffness_dips(m: &Model, r: &DynamicResponse) -> Vec<(f64, f64)> {
                 .map(|(_, rho)| m.mesh.pair_stiffness_n_per_m(rho))
                 .sum();
             let next = if k + 1 < n { s.time_s[k + 1] } else { total };
-            let prev = if k > 0 { s.time_s[k - 1] } else { s.time_s[n - 1] - total };
+            let prev = if k > 0 {
+                s.time_s[k - 1]
+            } else {
+                s.time_s[n - 1] - total
+            };
             let roll = rb1 * omega * 0.5 * (next - prev);
             (healthy - ms.mesh_stiffness_n_per_m[k], roll)
         })
@@ -283,7 +287,10 @@ fn one_tooth_s_pitch_error_acts_once_a_revolution_while_its_line_crosses_the_pat
     assert!(top > 1e-7, "the proud tooth shows: {top}");
     let on: Vec<usize> = (0..diff.len()).filter(|k| diff[*k] > 1e-6 * top).collect();
     // One contiguous window.
-    assert!(on.windows(2).all(|w| w[1] == w[0] + 1), "one window per revolution");
+    assert!(
+        on.windows(2).all(|w| w[1] == w[0] + 1),
+        "one window per revolution"
+    );
     let t_m = a.mesh_period_s;
     let times = &a.signals.time_s;
     let start = times[on[0]] / t_m;

@@ -82,7 +82,8 @@ impl Job for WearJob {
             );
         }
         let model = if self.case.gear.helix_angle_deg != 0.0 {
-            if let Some(r) = crate::study::helical_teeth::wear_refusals(&self.case, "`gearwear wear`")
+            if let Some(r) =
+                crate::study::helical_teeth::wear_refusals(&self.case, "`gearwear wear`")
             {
                 return Err(crate::study::ModelError(vec![r]).into());
             }

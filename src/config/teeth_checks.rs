@@ -178,11 +178,19 @@ pub(crate) fn face_span_problems(faults: &[FaultTable], gear: &GearSection) -> V
     let mut p = Vec::new();
     let b = gear.face_width_mm;
     for (i, f) in faults.iter().enumerate() {
-        let given = [("face_start_mm", f.face_start_mm), ("face_end_mm", f.face_end_mm)];
+        let given = [
+            ("face_start_mm", f.face_start_mm),
+            ("face_end_mm", f.face_end_mm),
+        ];
         if given.iter().all(|(_, v)| v.is_none()) {
             continue;
         }
-        let which = format!("fault {i}, {} {} tooth {}", f.kind.name(), f.gear.name(), f.tooth);
+        let which = format!(
+            "fault {i}, {} {} tooth {}",
+            f.kind.name(),
+            f.gear.name(),
+            f.tooth
+        );
         if gear.helix_angle_deg == 0.0 || f.stage.is_some() {
             p.push(format!(
                 "`fault.face_start_mm` / `fault.face_end_mm` ({which}) place a fault across the face of a helical single pair (`gear.helix_angle_deg` > 0, no `[[stage]]`); a spur pair's fault spans the face by `fault.crack_width_fraction` or `fault.spall_width_fraction`"

@@ -12,9 +12,12 @@
 //! `operating.misalignment_um`) give each line's slices their gaps across the face
 //! (`stiffness::helical_lead`, `study::face_load_dynamic`).
 //!
+//! Per-tooth errors and faults (`[teeth]`, `[[fault]]`) make the mesh tooth-resolved: each
+//! tooth's contact line on the line pair (`study::helical_teeth`, docs/MODEL.md 11.9).
+//!
 //! Refused (exit 2 naming the key): what needs a profile gap per slice or a second mesh (a
-//! gear train, a planetary set, per-tooth errors, profile modifications, faults, worn
-//! geometry),
+//! gear train, a planetary set, profile modifications, worn geometry; of the per-tooth
+//! inputs what `study::helical_teeth` refuses),
 //! Pedrero's load-sharing law (it is a spur pair's), and a total
 //! contact ratio above [`MAX_PAIRS`] (the mesh follows at most that many contact lines).
 //! The tip corners are not modelled: `contact.path` = "extended" (the default) runs the

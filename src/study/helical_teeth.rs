@@ -79,14 +79,13 @@ pub(crate) fn tooth_inputs(
     ToothInputs::helical(case, slices, grid, shaft_speeds_rad_s).map_err(ModelError)
 }
 
-/// The refusal of a helical case with per-tooth inputs by `study` (a wear study: its teeth
+/// The refusal of a helical case with per-tooth inputs by the wear studies (its teeth
 /// would wear slice by slice and tooth by tooth, not built yet); None for a spur case or
-/// new, identical helical teeth.
-pub fn wear_refusal(case: &Case, study: &str) -> Option<String> {
+/// new, identical helical teeth. One message for every wear study, so `wear` and `run`
+/// refuse a case alike.
+pub fn wear_refusal(case: &Case) -> Option<String> {
     (case.gear.helix_angle_deg != 0.0 && case.stage.is_empty() && has_tooth_inputs(case)).then(|| {
-        format!(
-            "`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): {study} does not take per-tooth inputs on a helical pair yet (its slices would wear tooth by tooth); `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.9)"
-        )
+        "`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): the wear studies (`gearwear wear`, `gearwear run`, a `[load_spectrum]`, a wear sweep) do not take per-tooth inputs on a helical pair yet (its slices would wear tooth by tooth); `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.9)".to_string()
     })
 }
 
@@ -94,5 +93,5 @@ pub fn wear_refusal(case: &Case, study: &str) -> Option<String> {
 /// spectrum, a wear sweep): the tilting keys (`helical_tilt::tilt_refusal`), then the
 /// per-tooth inputs ([`wear_refusal`]); None when it takes the case.
 pub fn wear_refusals(case: &Case, study: &str) -> Option<String> {
-    super::helical_tilt::tilt_refusal(case, study).or_else(|| wear_refusal(case, study))
+    super::helical_tilt::tilt_refusal(case, study).or_else(|| wear_refusal(case))
 }

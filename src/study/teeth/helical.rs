@@ -119,8 +119,11 @@ impl ToothInputs {
                             let mut flank = ToothFlank::perfect(grid.len());
                             apply_fault(&mut flank, x, t, slice, side, own);
                             let (lo, hi) = x.face_span_m(b);
-                            let covers =
-                                s.positions_m().iter().map(|y| (lo..=hi).contains(y)).collect();
+                            let covers = s
+                                .positions_m()
+                                .iter()
+                                .map(|y| (lo..=hi).contains(y))
+                                .collect();
                             SliceFault { flank, covers }
                         })
                         .collect();
@@ -143,7 +146,11 @@ impl ToothInputs {
                     teeth.runout_pinion_phase_deg,
                     shaft_speeds_rad_s[0],
                 ),
-                runout(&errors[1], teeth.runout_gear_phase_deg, shaft_speeds_rad_s[1]),
+                runout(
+                    &errors[1],
+                    teeth.runout_gear_phase_deg,
+                    shaft_speeds_rad_s[1],
+                ),
             ],
             errors,
             faults: case.fault.clone(),
