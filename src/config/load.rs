@@ -175,6 +175,7 @@ fn check_relations(case: &Case, faults: &[FaultTable], problems: &mut Vec<String
             })
             .collect::<Vec<_>>(),
     ));
+    problems.extend(super::teeth_checks::face_span_problems(faults, &case.gear));
     problems.extend(super::train::helical_stage_fault_problems(
         &case.stage,
         &case.gear,

@@ -85,6 +85,8 @@ impl PlanetaryFault {
             spall_depth_um: self.spall_depth_um,
             spall_width_fraction: self.spall_width_fraction,
             removed_height_mm: self.removed_height_mm,
+            face_start_mm: None,
+            face_end_mm: None,
         }
     }
 

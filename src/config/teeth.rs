@@ -301,6 +301,14 @@ pub struct FaultTable {
     /// Broken tip: radial height removed from the tip, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub removed_height_mm: Option<f64>,
+    /// A crack or spall on a helical pair: where its span across the face starts, mm from
+    /// the face end y = 0 (absent: 0; docs/MODEL.md 11.10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub face_start_mm: Option<f64>,
+    /// A crack or spall on a helical pair: where its span across the face ends, mm from
+    /// the face end y = 0 (absent: the face width b).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub face_end_mm: Option<f64>,
 }
 
 impl FaultTable {
@@ -418,6 +426,22 @@ impl ToothFault {
     /// that quote the case file's values.
     pub fn table(&self) -> &FaultTable {
         &self.table
+    }
+
+    /// The span of the face the fault covers on a helical pair, m from the face end y = 0
+    /// (`fault.face_start_mm`, `fault.face_end_mm`; absent: 0 and `face_width_m`, the whole
+    /// face; docs/MODEL.md 11.10).
+    pub fn face_span_m(&self, face_width_m: f64) -> (f64, f64) {
+        (
+            self.table.face_start_mm.map_or(0.0, |x| x * 1e-3),
+            self.table.face_end_mm.map_or(face_width_m, |x| x * 1e-3),
+        )
+    }
+
+    /// Whether the case gives the fault a span across the face (`fault.face_start_mm` or
+    /// `fault.face_end_mm`).
+    pub fn has_face_span(&self) -> bool {
+        self.table.face_start_mm.is_some() || self.table.face_end_mm.is_some()
     }
 
     /// The value of one of its kind's keys as the case file gave it, in the file's unit

@@ -3,6 +3,7 @@
 //! ascending roll angles. Checks that need the geometry are made when the model builds
 //! its tooth inputs (`study::teeth::ToothInputs::from_case`).
 
+use super::case::GearSection;
 use super::teeth::{key_problems, FaultTable, Member, ModificationSection, TeethSection};
 
 /// Problems of the per-tooth inputs that the case alone shows: array lengths against the
@@ -163,6 +164,51 @@ fn fault_problems(faults: &[FaultTable], pair: [i64; 2], stage_teeth: &[[i64; 2]
                     f.tooth
                 ));
             }
+        }
+    }
+    p
+}
+
+/// The problems of the faults' spans across the face (`fault.face_start_mm`,
+/// `fault.face_end_mm`, docs/MODEL.md 11.10): given only on a helical single pair (a spur
+/// pair's fault spans the face by `fault.crack_width_fraction` or
+/// `fault.spall_width_fraction`; a train's stage takes no span yet), each end within
+/// [0, b] mm and the start below the end.
+pub(crate) fn face_span_problems(faults: &[FaultTable], gear: &GearSection) -> Vec<String> {
+    let mut p = Vec::new();
+    let b = gear.face_width_mm;
+    for (i, f) in faults.iter().enumerate() {
+        let given = [
+            ("face_start_mm", f.face_start_mm),
+            ("face_end_mm", f.face_end_mm),
+        ];
+        if given.iter().all(|(_, v)| v.is_none()) {
+            continue;
+        }
+        let which = format!(
+            "fault {i}, {} {} tooth {}",
+            f.kind.name(),
+            f.gear.name(),
+            f.tooth
+        );
+        if gear.helix_angle_deg == 0.0 || f.stage.is_some() {
+            p.push(format!(
+                "`fault.face_start_mm` / `fault.face_end_mm` ({which}) place a fault across the face of a helical single pair (`gear.helix_angle_deg` > 0, no `[[stage]]`); a spur pair's fault spans the face by `fault.crack_width_fraction` or `fault.spall_width_fraction`"
+            ));
+            continue;
+        }
+        for (key, v) in given {
+            if let Some(v) = v.filter(|v| !(0.0..=b).contains(v)) {
+                p.push(format!(
+                    "`fault.{key}` = {v} ({which}) is outside the face: it must lie in [0, {b}] mm (`gear.face_width_mm` = {b})"
+                ));
+            }
+        }
+        let (start, end) = (f.face_start_mm.unwrap_or(0.0), f.face_end_mm.unwrap_or(b));
+        if start >= end {
+            p.push(format!(
+                "`fault.face_start_mm` = {start} must lie below `fault.face_end_mm` = {end} ({which}): the span [start, end] must hold part of the face [0, {b}] mm"
+            ));
         }
     }
     p

@@ -21,6 +21,8 @@ fn fault(kind: FaultKind, tooth: i64) -> FaultTable {
         spall_depth_um: None,
         spall_width_fraction: None,
         removed_height_mm: None,
+        face_start_mm: None,
+        face_end_mm: None,
     }
 }
 

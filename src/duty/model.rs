@@ -60,7 +60,7 @@ impl SpectrumModel {
     pub fn dynamics_from_case(case: &Case) -> Result<Self, ModelError> {
         // On a spur pair the tilting keys are ignored with a warning, as everywhere (a
         // train refuses them in its own model).
-        crate::study::helical_tilt::refuse_tilt_if_helical(case, "a `[load_spectrum]`")?;
+        crate::study::helical_teeth::refuse_for_wear_if_helical(case, "a `[load_spectrum]`")?;
         if case.stage.is_empty() {
             Self::built_by(case, Model::dynamics_from_case)
         } else {

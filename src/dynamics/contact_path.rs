@@ -339,8 +339,28 @@ impl ContactPath {
             gap_slope: dg,
             contact_rho1_m: mid,
             corner: false,
-            width_loss: (1.0 - (hi - lo) / self.line_m).min(1.0 - 1e-9),
+            width_loss: self.line_width_loss(lo, hi),
         }
+    }
+
+    /// The share of the face a helical contact line at trailing end `rho1_m` leaves out of
+    /// its Hertz contact, its part off the path ([`ContactPath::plain_pair`]); 0 for a spur
+    /// pair's (or a one-slice) line. The tooth-resolved mesh of a helical pair
+    /// (docs/MODEL.md 11.10) combines it with a tooth's own.
+    #[inline]
+    pub fn line_width_loss_at(&self, rho1_m: f64) -> f64 {
+        if self.line_m > 0.0 && self.corners.is_none() {
+            let (lo, hi) = self.line_on_path(rho1_m);
+            self.line_width_loss(lo, hi)
+        } else {
+            0.0
+        }
+    }
+
+    /// The share of the line off the path, its part on the path being [lo, hi] (kept below
+    /// 1 - 1e-9 so a line just entering has a finite Hertz width).
+    fn line_width_loss(&self, lo: f64, hi: f64) -> f64 {
+        (1.0 - (hi - lo) / self.line_m).min(1.0 - 1e-9)
     }
 }
 

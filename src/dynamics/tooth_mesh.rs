@@ -238,6 +238,8 @@ impl ToothMesh {
 
     /// As [`ToothMesh::pair`] where `path` says the teeth touch: on the path, or by a
     /// tip corner beyond it (each tooth's own corner: a broken tip's cut is its corner).
+    /// A helical pair's contact line (`ContactPath::helical_lines`) adds the share of the
+    /// face off the path to the width lost.
     pub fn pair_in(
         &self,
         mesh: &MeshStiffness,
@@ -246,7 +248,18 @@ impl ToothMesh {
         rho1_m: f64,
     ) -> PairProps {
         if !path.is_extended() {
-            return self.pair(mesh, cycle, rho1_m);
+            let p = self.pair(mesh, cycle, rho1_m);
+            // A helical contact line's part off the path leaves its share of the face out
+            // of the Hertz contact, beside the tooth's own (docs/MODEL.md 11.10; 0 on a spur
+            // pair, whose loss is then the tooth's bit for bit).
+            let line_loss = path.line_width_loss_at(rho1_m);
+            if line_loss == 0.0 {
+                return p;
+            }
+            return PairProps {
+                width_loss: 1.0 - (1.0 - line_loss) * (1.0 - p.width_loss),
+                ..p
+            };
         }
         let (a, b) = self.teeth_of(cycle);
         let (fp, fg) = (&self.pinion[a], &self.gear[b]);

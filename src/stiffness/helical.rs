@@ -422,6 +422,23 @@ impl SliceMeshStiffness {
         }
     }
 
+    /// The contact line of the model's line pair as [`SliceMeshStiffness::line_model`]
+    /// builds it: [`SliceMeshStiffness::line_grid`], or, where that takes the slices in
+    /// phase (one slice, or a stagger below the table's spacing), the transverse pair with
+    /// every slice at offset 0 and L = 0.
+    pub(crate) fn model_line_grid(&self) -> LineGrid {
+        let g = self.line_grid();
+        if self.slices() > 1 && g.lead / self.slices() as f64 >= g.step_m {
+            return g;
+        }
+        LineGrid {
+            line: self.pair.transverse.clone(),
+            lead: 0.0,
+            offsets: vec![0.0; self.slices()],
+            ..g
+        }
+    }
+
     /// The face slice (index j of `positions_m`) that the line's slice at offset o_i sits
     /// on: the line's trailing end is the face end y = 0 of a right-hand pinion (slice i is
     /// face slice i), y = b of a left-hand one (face slice N - 1 - i).

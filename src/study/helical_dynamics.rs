@@ -12,9 +12,12 @@
 //! `operating.misalignment_um`) give each line's slices their gaps across the face
 //! (`stiffness::helical_lead`, `study::face_load_dynamic`).
 //!
+//! Per-tooth errors and faults (`[teeth]`, `[[fault]]`) make the mesh tooth-resolved: each
+//! tooth's contact line on the line pair (`study::helical_teeth`, docs/MODEL.md 11.10).
+//!
 //! Refused (exit 2 naming the key): what needs a profile gap per slice or a second mesh (a
-//! gear train, a planetary set, per-tooth errors, profile modifications, faults, worn
-//! geometry),
+//! gear train, a planetary set, profile modifications, worn geometry; of the per-tooth
+//! inputs what `study::helical_teeth` refuses),
 //! Pedrero's load-sharing law (it is a spur pair's), and a total
 //! contact ratio above [`MAX_PAIRS`] (the mesh follows at most that many contact lines).
 //! The tip corners are not modelled: `contact.path` = "extended" (the default) runs the
@@ -58,9 +61,6 @@ fn refusals(case: &Case) -> Vec<String> {
     if case.planetary.is_some() {
         r.push(refusal("[planetary]", "a planetary set", "not built"));
     }
-    if case.teeth != Default::default() {
-        r.push(refusal("[teeth]", "per-tooth errors", slices));
-    }
     if case.modification.without_lead_keys() != Default::default() {
         r.push(refusal(
             "[modification]",
@@ -68,9 +68,7 @@ fn refusals(case: &Case) -> Vec<String> {
             "each slice would need its own profile gap; of `[modification]` only the lead keys (crowning, end relief, helix slope deviation) are taken (docs/MODEL.md 11.1)",
         ));
     }
-    if !case.fault.is_empty() {
-        r.push(refusal("[[fault]]", "a fault", slices));
-    }
+    r.extend(super::helical_teeth::teeth_problems(case));
     if case.wear.worn_geometry == WornGeometry::Worn {
         r.push(refusal("wear.worn_geometry", "\"worn\"", slices));
     }
@@ -204,6 +202,12 @@ impl Model {
             warnings.push(EXTENDED_PATH_WARNING.into());
             case.contact.path = ContactPathModel::Nominal;
         }
+        let grid = ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize);
+        let speeds = [
+            params.operating.pinion_speed_rad_s,
+            params.operating.gear_speed_rad_s,
+        ];
+        let teeth = super::helical_teeth::tooth_inputs(&case, &hm.slices, &grid, speeds)?;
         let mut contact = helical_contact(&hp, &line_pair, lead);
         if let Some(g) = &gaps {
             let table = LineGapTable::new(&hm.slices, &g.static_load.gaps_m);
@@ -211,7 +215,7 @@ impl Model {
         }
         Ok(Model {
             contact,
-            grid: ProfileGrid::new(&transverse, case.wear.points_per_profile.max(2) as usize),
+            grid,
             elastic: ElasticPair::from_case(&case.materials),
             friction: Friction::from_case(&case.friction),
             roughness: RoughnessLaw::from_case(&case.surface),
@@ -227,7 +231,7 @@ impl Model {
             pair: line_pair,
             mesh,
             params,
-            teeth: None,
+            teeth,
             case,
             warnings,
             train: None,

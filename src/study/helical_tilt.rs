@@ -145,18 +145,9 @@ pub(crate) fn refuse_tilt(case: &Case, study: &str) -> Result<(), ModelError> {
     tilt_refusal(case, study).map_or(Ok(()), |r| Err(ModelError(vec![r])))
 }
 
-/// As [`refuse_tilt`] on a helical pair; a spur pair's tilting keys are ignored with a
-/// warning ([`tilt_key_warnings`]), as by every study.
-pub(crate) fn refuse_tilt_if_helical(case: &Case, study: &str) -> Result<(), ModelError> {
-    if case.gear.helix_angle_deg == 0.0 {
-        return Ok(());
-    }
-    refuse_tilt(case, study)
-}
-
 /// The refusal of the tilting keys by `study` (a command or a case kind that has no
 /// tilting degrees of freedom yet), naming the keys; None without them.
-fn tilt_refusal(case: &Case, study: &str) -> Option<String> {
+pub(crate) fn tilt_refusal(case: &Case, study: &str) -> Option<String> {
     let keys = case.dynamics.tilt_keys();
     (!keys.is_empty()).then(|| {
         let named: Vec<String> = keys.iter().map(|(k, v)| format!("`{k}` = {v}")).collect();

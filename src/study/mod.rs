@@ -8,6 +8,7 @@ pub mod face_load;
 pub mod face_load_dynamic;
 pub mod helical;
 pub mod helical_dynamics;
+pub mod helical_teeth;
 pub mod helical_tilt;
 pub mod helical_wear;
 pub mod model;

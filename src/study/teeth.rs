@@ -9,6 +9,7 @@
 mod checks;
 mod errors;
 mod faults;
+mod helical;
 mod sides;
 mod worn;
 
@@ -49,6 +50,9 @@ pub struct ToothInputs {
     /// own radii of curvature of the grid points (ascending) of pinion and gear, and the
     /// nominal Hertz half-width, for the worn flanks' stiffness and curvature.
     worn: Option<WornFlanks>,
+    /// A helical pair's teeth as contact lines on its line pair (`teeth::helical`,
+    /// docs/MODEL.md 11.9): new teeth only, no wear added.
+    lines: bool,
 }
 
 impl ToothInputs {
@@ -96,6 +100,7 @@ impl ToothInputs {
             spacing_m: grid.spacing_m,
             worn: (case.wear.worn_geometry == WornGeometry::Worn)
                 .then(|| WornFlanks::of(case, pair, mesh, grid, static_force_n)),
+            lines: false,
         };
         let perfect = |f: &[ToothFlank]| f.iter().all(|t| t == &ToothFlank::perfect(n));
         let trivial = perfect(&me.pinion)
@@ -108,6 +113,17 @@ impl ToothInputs {
     /// The tooth-resolved mesh of a wear state: each tooth's own wear (or the common
     /// profile of a state without per-tooth wear) added to its flank.
     pub fn mesh_for(&self, wear: &WearState) -> ToothMesh {
+        if self.lines {
+            // A helical pair's lines: the wear studies refuse its teeth (docs/MODEL.md 11.9).
+            return ToothMesh::new(
+                self.pinion.clone(),
+                self.gear.clone(),
+                self.runout,
+                self.rho_start_m,
+                self.spacing_m,
+                self.pinion.first().map_or(2, |f| f.removed_m.len()),
+            );
+        }
         let add =
             |side: usize, flanks: &[ToothFlank], common: &[f64], own: Option<&Vec<Vec<f64>>>| {
                 // Teeth worn alike share their worn stiffness and curvature (computed once).

@@ -88,7 +88,7 @@ pub fn resolve(
         .iter()
         .filter(|p| p.case.gear.helix_angle_deg != 0.0 && p.case.planetary.is_none())
         .filter_map(|p| {
-            let first = super::helical::refusal(&p.case)?;
+            let first = super::helical::refusal(&p.case, run)?;
             Some(Problem::new(first).in_context(&format!(
                 "case {} ({}): ",
                 p.id,

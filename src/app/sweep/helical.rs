@@ -7,7 +7,7 @@
 use crate::config::load::case_with;
 use crate::config::Case;
 use crate::study::sweep::helical_row::HELIX_KEY;
-use crate::study::sweep::SweepPlan;
+use crate::study::sweep::{SweepPlan, SweepRun};
 use crate::study::Model;
 
 /// Whether the sweep's table holds a helical pair's columns (module docs). A value that
@@ -35,7 +35,15 @@ pub fn helical_table(base: &Case, plan: &SweepPlan) -> bool {
 /// pair's planar model refuses per-tooth errors, profile modifications, faults, ...). A
 /// helical pair's wear under a `[load_spectrum]` runs (`duty::study::run_sweep_case`,
 /// docs/MODEL.md 11.7).
-pub fn refusal(case: &Case) -> Option<String> {
+///
+/// A wear sweep (`run`) also refuses what the wear studies do not take on a helical pair
+/// (`study::helical_teeth::wear_refusals`: per-tooth inputs, the tilting keys).
+pub fn refusal(case: &Case, run: SweepRun) -> Option<String> {
+    if run == SweepRun::Wear && case.stage.is_empty() {
+        if let Some(r) = crate::study::helical_teeth::wear_refusals(case, "a wear sweep") {
+            return Some(r);
+        }
+    }
     let e = Model::dynamics_from_case(case).err()?;
     e.0.into_iter().next()
 }

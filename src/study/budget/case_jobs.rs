@@ -269,6 +269,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         c.work.kept,
         p.s_dyn,
     ));
+    terms.extend(super::helical::tooth_lines_term(case));
     if matches!(
         job,
         Job::Wear { .. } | Job::Run | Job::SweepCase(SweepRun::Wear)

@@ -10,6 +10,14 @@ use crate::geometry::helical::HelicalPair;
 use crate::study::budget::cost::Term;
 use crate::study::helical::helix_of;
 
+/// One slice of one sample of a tooth's contact line when a helical pair's teeth are built
+/// as lines (`study::teeth::ToothInputs::helical`: its stiffness, the fault compliances
+/// and gaps interpolated, the weighted sums), s: measured 0.3 s for 50 teeth x 198 samples
+/// x 10 000 slices (about 3e-9 s each, half the slices on the path) on the 2-core machine
+/// under load, times the [`super::evaluation::SLOWER_MACHINE_FACTOR`] 2 and a margin of
+/// 2 for slices all on the path, rounded up.
+pub const SECONDS_PER_LINE_SLICE: f64 = 2e-8;
+
 /// One slice contact of an update (its stiffness, Hertz contact, Xu's coefficient, its
 /// sorting and its share of the slice's Archard bookkeeping; the lines' wear gap adds
 /// 1.5 % more), s: measured 4.7e-7 s on the 2-core machine under load (400 slices, 122 515
@@ -98,6 +106,38 @@ pub fn budget_term(
             "numerics.steps_per_mesh_period",
             "wear.total_cycles",
             "wear.threshold_um",
+        ],
+    })
+}
+
+/// The building of a helical pair's teeth as contact lines (docs/MODEL.md 11.10) when the
+/// case gives per-tooth inputs: every tooth of both gears, at each of the line pair's
+/// samples (G (epsilon_alpha + epsilon_beta) / epsilon_alpha + 1 at the wear grid's
+/// spacing, G = `wear.points_per_profile`), each of the N slices (an upper bound: about
+/// epsilon_alpha / (epsilon_alpha + epsilon_beta) of them lie on the path). None for a spur
+/// pair, a train, or new teeth. The tooth-resolved mesh's own cost over the hunting period
+/// is `super::teeth`'s, as for a spur pair.
+pub fn tooth_lines_term(case: &Case) -> Option<Term> {
+    if !crate::study::helical_teeth::has_tooth_inputs(case) {
+        return None;
+    }
+    let (n, _) = slices_and_pairs(case)?;
+    let pair = HelicalPair::from_case(&case.gear, &helix_of(&case.gear)).ok()?;
+    let g = case.wear.points_per_profile.max(2) as f64;
+    let eps_a = pair.transverse_contact_ratio.max(1e-3);
+    let samples = g * (eps_a + pair.overlap_ratio) / eps_a + 2.0;
+    let teeth = (case.gear.teeth_pinion.max(1) + case.gear.teeth_gear.max(1)) as f64;
+    Some(Term {
+        what: "the helical teeth as contact lines (every tooth's slices at every sample)",
+        seconds: teeth * samples * n * SECONDS_PER_LINE_SLICE,
+        // Three tables (removed material, compliance, the healthy flank) per tooth, and
+        // the samples' slices (face slice, rho, k: 24 bytes each).
+        bytes: teeth * samples * 3.0 * 8.0 + samples * n * 24.0,
+        keys: &[
+            "stiffness.slices",
+            "wear.points_per_profile",
+            "gear.teeth_pinion",
+            "gear.teeth_gear",
         ],
     })
 }

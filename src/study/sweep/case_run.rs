@@ -229,7 +229,7 @@ pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
             // A train's wear takes spur stages only (`Model::from_case` refuses a
             // helical stage, naming its key); a single helical pair wears per slice.
             // On a spur pair the tilting keys are ignored with a warning, as everywhere.
-            crate::study::helical_tilt::refuse_tilt_if_helical(case, "a wear sweep")
+            crate::study::helical_teeth::refuse_for_wear_if_helical(case, "a wear sweep")
                 .map_err(CaseError::Model)?;
             let build = if case.stage.is_empty() {
                 Model::dynamics_from_case

@@ -1,0 +1,220 @@
+//! The teeth of a helical pair as contact lines (docs/MODEL.md 11.10): each tooth's flank
+//! on the line pair of the planar model (`SliceMeshStiffness::line_model`), so that the
+//! spur pair's tooth-resolved mesh (`dynamics::tooth_mesh`) runs it unchanged.
+//!
+//! Mesh cycle n's contact line is one spring, its trailing end at rho on the line pair
+//! [A - L, E]; its slices sit at rho + o_i on the transverse path [A, E] (slice i on face
+//! slice j(i), `SliceMeshStiffness::face_slice_of_line_slice`), each of stiffness
+//! k_i = k_slice(rho + o_i). A tooth's line thus enters contact at one face end and leaves
+//! at the other, one slice at a time. Per tooth, at each sample rho of the line pair:
+//! - its errors are the same on every slice of the tooth (a pitch error and a run-out are
+//!   rigid displacements of the whole tooth; the profile slope and form deviations are
+//!   taken alike on every transverse section, no helix deviation per tooth);
+//! - a crack or spall acts on the face slices whose centres y_j lie in its span
+//!   [`fault.face_start_mm`, `fault.face_end_mm`] (`ToothFault::face_span_m`), each such
+//!   slice carrying the fault's compliance c_i(rho + o_i) of a spur slice of width b/N
+//!   (`study::teeth::apply_fault` on the slice's own tooth beams) in series:
+//!   k_f,i = 1 / (1/k_i + c_i);
+//! - the line's stiffness is K_f = sum_i k_f,i (parallel springs, no coupling between
+//!   slices, as in the slice model), given to the tooth-resolved mesh as the compliance
+//!   K_f^-1 - K^-1 in series with the healthy line's K = sum_i k_i (the model's line
+//!   table), exact at the samples;
+//! - the line's gap is the k_f-weighted mean of its slices' gaps (removed material of the
+//!   errors and a spall's pit): exact for a gap the same on every slice (pitch errors,
+//!   run-out), the line's mean where it varies along the profile (the choice of the worn
+//!   slices, docs/MODEL.md 11.3).
+//!
+//! Samples lie at the wear grid's spacing over the line pair's path, interpolated linearly
+//! by the tooth-resolved mesh (as a spur pair's flank tables are).
+
+use super::checks::geometry_problems;
+use super::errors::gear_errors;
+use super::{apply_fault, flanks_of, ToothInputs};
+use crate::config::case::{Case, Member};
+use crate::dynamics::tooth_mesh::{Runout, ToothFlank};
+use crate::geometry::flank_shape::Side;
+use crate::geometry::ProfileGrid;
+use crate::stiffness::helical::SliceMeshStiffness;
+use crate::stiffness::tooth_faults::deg;
+
+/// The slices of the contact line at each sample of the line pair: (face slice j, their
+/// transverse position rho + o_i (m), healthy stiffness k_i (N/m)) of those on the path.
+struct LineSamples {
+    rho_start_m: f64,
+    spacing_m: f64,
+    slices: Vec<Vec<(usize, f64, f64)>>,
+}
+
+impl LineSamples {
+    fn of(s: &SliceMeshStiffness, grid: &ProfileGrid) -> Self {
+        let lines = s.model_line_grid();
+        let t = &s.pair().transverse;
+        let spacing = grid.spacing_m;
+        let points = ((lines.line.path_length_m() / spacing).ceil() as usize + 1).max(2);
+        let slices = (0..points)
+            .map(|p| {
+                let rho = lines.line.rho_start_m + p as f64 * spacing;
+                lines
+                    .offsets
+                    .iter()
+                    .enumerate()
+                    .map(|(i, o)| (s.face_slice_of_line_slice(i), rho + o))
+                    .filter(|(_, r)| (t.rho_start_m..=t.rho_end_m).contains(r))
+                    .map(|(j, r)| (j, r, s.slice().pair_stiffness_n_per_m(r)))
+                    .collect()
+            })
+            .collect();
+        Self {
+            rho_start_m: lines.line.rho_start_m,
+            spacing_m: spacing,
+            slices,
+        }
+    }
+}
+
+/// One fault of a tooth on the slice: its tables on the wear grid (compliance, the pit's
+/// gap in `removed_m`) and which face slices it covers.
+struct SliceFault {
+    flank: ToothFlank,
+    covers: Vec<bool>,
+}
+
+impl ToothInputs {
+    /// The teeth of a helical `case` as contact lines of `s`'s line pair (module docs), or
+    /// None when no tooth differs from the new one. `grid`: the transverse wear grid;
+    /// `shaft_speeds_rad_s`: pinion and gear, for the run-out. Errors: the geometry
+    /// checks of the faults against the slice's teeth.
+    pub(crate) fn helical(
+        case: &Case,
+        s: &SliceMeshStiffness,
+        grid: &ProfileGrid,
+        shaft_speeds_rad_s: [f64; 2],
+    ) -> Result<Option<Self>, Vec<String>> {
+        let t = &s.pair().transverse;
+        let slice = s.slice();
+        let problems = geometry_problems(case, t, slice);
+        if !problems.is_empty() {
+            return Err(problems);
+        }
+        let errors = gear_errors(case, t).map_err(|e| vec![e.to_string()])?;
+        let mut healthy = case.clone();
+        healthy.fault.clear();
+        let samples = LineSamples::of(s, grid);
+        let b = s.pair().face_width_m;
+        let lines = |member: Member, e| -> Vec<ToothFlank> {
+            let side = super::sides::side(member);
+            let own = match side {
+                Side::Pinion => &grid.rho_pinion_m,
+                Side::Gear => &grid.rho_gear_m,
+            };
+            flanks_of(&healthy, t, slice, grid, member, e)
+                .into_iter()
+                .enumerate()
+                .map(|(tooth, f)| {
+                    let faults: Vec<SliceFault> = case
+                        .fault
+                        .iter()
+                        .filter(|x| x.gear == member && x.tooth == tooth && x.changes_tooth())
+                        .map(|x| {
+                            let mut flank = ToothFlank::perfect(grid.len());
+                            apply_fault(&mut flank, x, t, slice, side, own);
+                            let (lo, hi) = x.face_span_m(b);
+                            let covers = s
+                                .positions_m()
+                                .iter()
+                                .map(|y| (lo..=hi).contains(y))
+                                .collect();
+                            SliceFault { flank, covers }
+                        })
+                        .collect();
+                    line_flank(&f, &faults, grid, &samples)
+                })
+                .collect()
+        };
+        let runout = |e: &super::GearErrors, phase_deg: Option<f64>, speed: f64| Runout {
+            eccentricity_m: 0.5 * e.runout_um * 1e-6,
+            phase_rad: deg(phase_deg.unwrap_or(0.0)),
+            shaft_speed_rad_s: speed,
+        };
+        let teeth = &case.teeth;
+        let me = Self {
+            pinion: lines(Member::Pinion, &errors[0]),
+            gear: lines(Member::Gear, &errors[1]),
+            runout: [
+                runout(
+                    &errors[0],
+                    teeth.runout_pinion_phase_deg,
+                    shaft_speeds_rad_s[0],
+                ),
+                runout(
+                    &errors[1],
+                    teeth.runout_gear_phase_deg,
+                    shaft_speeds_rad_s[1],
+                ),
+            ],
+            errors,
+            faults: case.fault.clone(),
+            rho_start_m: samples.rho_start_m,
+            spacing_m: samples.spacing_m,
+            worn: None,
+            lines: true,
+        };
+        let n = samples.slices.len();
+        let perfect = |f: &[ToothFlank]| f.iter().all(|t| t == &ToothFlank::perfect(n));
+        let trivial = perfect(&me.pinion)
+            && perfect(&me.gear)
+            && me.runout.iter().all(|r| r.eccentricity_m == 0.0);
+        Ok((!trivial).then_some(me))
+    }
+}
+
+/// A tooth's flank as its contact line on the line pair (module docs): `f` its errors on
+/// the wear grid, `faults` its faults with the face slices they cover.
+fn line_flank(
+    f: &ToothFlank,
+    faults: &[SliceFault],
+    grid: &ProfileGrid,
+    samples: &LineSamples,
+) -> ToothFlank {
+    let n = samples.slices.len();
+    let flat = f.removed_m.iter().all(|x| *x == 0.0);
+    if faults.is_empty() && flat {
+        return ToothFlank {
+            position_m: f.position_m,
+            ..ToothFlank::perfect(n)
+        };
+    }
+    let mut removed_m = vec![0.0; n];
+    let mut compliance = vec![0.0; n];
+    for (p, line) in samples.slices.iter().enumerate() {
+        let (mut k, mut kf, mut kf_gap) = (0.0, 0.0, 0.0);
+        for &(j, r, ki) in line {
+            let mut gap = if flat {
+                0.0
+            } else {
+                grid.interpolate(&f.removed_m, r)
+            };
+            let mut c = 0.0;
+            for x in faults.iter().filter(|x| x.covers[j]) {
+                if let Some(t) = &x.flank.compliance_m_per_n {
+                    c += grid.interpolate(t, r);
+                }
+                gap += grid.interpolate(&x.flank.removed_m, r);
+            }
+            let kfi = if c == 0.0 { ki } else { 1.0 / (1.0 / ki + c) };
+            k += ki;
+            kf += kfi;
+            kf_gap += kfi * gap;
+        }
+        if kf > 0.0 {
+            removed_m[p] = kf_gap / kf;
+            compliance[p] = 1.0 / kf - 1.0 / k;
+        }
+    }
+    ToothFlank {
+        removed_m,
+        position_m: f.position_m,
+        compliance_m_per_n: compliance.iter().any(|c| *c != 0.0).then_some(compliance),
+        ..Default::default()
+    }
+}
