@@ -21,14 +21,67 @@ fn seed_error(key: &str, shown: &str) -> String {
     format!("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15)")
 }
 
-/// A seed given as a number (a whole float such as 9.007199254740992e15 reads as the
-/// integer it is); Err names `key`, the value and the range [0, 2^53].
+/// A seed given as a float (a TOML or Python float): a whole number below 2^52, where a
+/// float holds every whole number and no other number written rounds onto one. From 2^52
+/// up the floats are whole numbers one or more apart, so a float there may be another
+/// number rounded (the TOML float 9007199254740993.0 reads as 2^53): refused, asking for
+/// the integer. Err names `key`, the value and the range [0, 2^53].
 pub fn seed_from_f64(key: &str, x: f64) -> Result<u64, String> {
-    if x.is_finite() && x.fract() == 0.0 && (0.0..=MAX_SEED as f64).contains(&x) {
+    const EXACT: f64 = (1u64 << 52) as f64;
+    if x.is_finite() && x.fract() == 0.0 && (0.0..EXACT).contains(&x) {
         Ok(x as u64)
+    } else if x.is_finite() && (EXACT..=MAX_SEED as f64).contains(&x) {
+        Err(format!(
+            "{} (a float from 2^52 up may be another number rounded: write it as an integer)",
+            seed_error(key, &format!("{x:?}"))
+        ))
     } else {
         Err(seed_error(key, &format!("{x:?}")))
     }
+}
+
+/// The whole number a decimal text in float notation (`12.0`, `1.5e3`, `9.007199254740993e15`)
+/// is exactly, read digit by digit (no rounding through a float): Some(Ok(n)) for a whole
+/// number, Some(Err(())) for one with a fraction or beyond i128, None for text that is not
+/// such a number.
+fn exact_whole(t: &str) -> Option<Result<i128, ()>> {
+    let (mantissa, exp) = match t.find(['e', 'E']) {
+        Some(i) => (&t[..i], t[i + 1..].parse::<i32>().ok()?),
+        None => (t, 0),
+    };
+    let (neg, digits) = match mantissa.strip_prefix('-') {
+        Some(m) => (true, m),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int, frac) = digits.split_once('.').unwrap_or((digits, ""));
+    if int.is_empty() && frac.is_empty()
+        || !int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit())
+    {
+        return None;
+    }
+    let all: Vec<u8> = int.bytes().chain(frac.bytes()).map(|b| b - b'0').collect();
+    let point = int.len() as i64 + i64::from(exp);
+    let mut n: i128 = 0;
+    for (k, d) in all.iter().enumerate() {
+        if (k as i64) < point {
+            n = match n
+                .checked_mul(10)
+                .and_then(|n| n.checked_add(i128::from(*d)))
+            {
+                Some(n) => n,
+                None => return Some(Err(())),
+            };
+        } else if *d != 0 {
+            return Some(Err(()));
+        }
+    }
+    for _ in all.len() as i64..point.max(0) {
+        n = match n.checked_mul(10) {
+            Some(n) => n,
+            None => return Some(Err(())),
+        };
+    }
+    Some(Ok(if neg { -n } else { n }))
 }
 
 /// A seed given as an integer; Err names `key`, the value and the range [0, 2^53].
@@ -47,9 +100,11 @@ pub fn parse_seed(key: &str, text: &str) -> Result<u64, String> {
     if let Ok(i) = t.parse::<i128>() {
         return seed_from_i128(key, i);
     }
-    match t.parse::<f64>() {
-        Ok(x) => seed_from_f64(key, x),
-        Err(_) => Err(seed_error(key, &format!("{t:?}"))),
+    // Float notation read exactly, digit by digit: 9007199254740993.0 is 2^53 + 1 (out
+    // of range), not the float 2^53 it would round to.
+    match exact_whole(t) {
+        Some(Ok(i)) => seed_from_i128(key, i).map_err(|_| seed_error(key, t)),
+        Some(Err(())) | None => Err(seed_error(key, &format!("{t:?}"))),
     }
 }
 
@@ -84,11 +139,22 @@ mod tests {
         );
         assert_eq!(parse_seed("seed", "0"), Ok(0));
         assert_eq!(parse_seed("seed", "7.0"), Ok(7));
+        assert_eq!(parse_seed("seed", "12.50e1"), Ok(125));
+        assert_eq!(parse_seed("seed", "+1.5E3"), Ok(1500));
         // One past the end (as an integer; 2^53 + 2 is the next float), a negative, a
         // fraction, text and NaN: refused naming the key, the value and the range.
         for bad in [
             "9007199254740993",
             "9.007199254740994e15",
+            // Float notation is read digit by digit, not through a float that would
+            // round them onto 2^53 (review finding).
+            "9007199254740993.0",
+            "9.007199254740993e15",
+            "9007199254740991.5",
+            "1e400",
+            "1.5",
+            ".",
+            "e5",
             "-1",
             "2.5",
             "x",
@@ -102,5 +168,14 @@ mod tests {
             );
         }
         assert!(seed_from_f64("k", f64::INFINITY).is_err());
+        // A float from 2^52 up: refused asking for the integer; below, a whole float is
+        // the integer it is.
+        assert!(seed_from_f64("k", 9_007_199_254_740_992.0)
+            .unwrap_err()
+            .contains("write it as an integer"));
+        assert_eq!(
+            seed_from_f64("k", 4_503_599_627_370_495.0),
+            Ok(4_503_599_627_370_495)
+        );
     }
 }

@@ -343,6 +343,38 @@ fn what_is_not_built_for_a_helical_pair_is_refused_naming_the_key() {
         ],
         &["[teeth]", "helical"],
     );
+    // ... and in a condition's own case, and as the forward model of a prediction: the
+    // wear studies refuse a helical pair's teeth (its slices would have to wear tooth by
+    // tooth; they ran before, review finding).
+    let condition = write(
+        dir.path(),
+        "condition_teeth.toml",
+        &format!(
+            "case = \"{case}\"\nset = [\"signals.record_length=0.12\"]\n\
+             [run_to_failure]\nstates = 2\nmax_cycles = 1e4\nwear_limit_um = 50\n\
+             [[condition]]\nname = \"c\"\n[condition.case.teeth]\naccuracy_grade = 6\nerror_seed = 1\n"
+        ),
+    );
+    rejected(
+        &["dataset", "--design", &condition],
+        &["[teeth]", "gear.helix_angle_deg"],
+    );
+    rejected(
+        &[
+            "predict",
+            "--config",
+            &case,
+            "--set",
+            "teeth.accuracy_grade=6",
+            "--limit-um",
+            "10",
+            "--cycles",
+            "1e5",
+            // Past the budget (which counts a toothed pair's long runs) to the model.
+            "--no-budget",
+        ],
+        &["[teeth]", "`gearwear predict`"],
+    );
 }
 
 /// Observations of the deepest pinion wear at every other update of `gearwear wear` on

@@ -364,6 +364,19 @@ fn bad_face_spans_exit_2_naming_the_key_and_the_range() {
         &with(&["--set", "fault.crack_width_fraction=0.5"]),
         &["fault.crack_width_fraction", "fault.face_start_mm"],
     );
+    // A span that holds no slice centre would change nothing (review finding: it ran as
+    // the healthy pair): refused naming the keys and the slice width.
+    rejected(
+        &with(&[
+            "--set",
+            "stiffness.slices=40",
+            "--set",
+            "fault.face_start_mm=0",
+            "--set",
+            "fault.face_end_mm=0.01",
+        ]),
+        &["fault.face_start_mm", "no slice centre", "stiffness.slices"],
+    );
     // The wear studies do not take helical teeth yet.
     rejected(
         &[

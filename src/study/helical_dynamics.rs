@@ -137,17 +137,17 @@ impl Model {
     /// The model of the studies that wear a case along a whole trajectory beyond `gearwear
     /// wear` (`gearwear dataset`, `gearwear calibrate`, `gearwear predict`; `study` names
     /// the study in a refusal): a single helical pair's planar model with its wear per
-    /// slice ([`Model::helical_from_case`], docs/MODEL.md 11.9), its tilting keys refused
-    /// (naming them, `helical_tilt::tilt_refusal`: the slices' wear would ignore the tilt);
+    /// slice ([`Model::helical_from_case`], docs/MODEL.md 11.9), refusing what the wear
+    /// studies refuse (`helical_teeth::refuse_for_wear`: the tilting keys, whose tilt the
+    /// slices' wear would ignore, and per-tooth inputs, whose slices would have to wear
+    /// tooth by tooth);
     /// anything else [`Model::from_case`] itself (a spur pair built exactly as before; a
     /// helical train keeps that constructor's refusal).
     pub fn wear_study_from_case(case: &Case, study: &str) -> Result<Model, ModelError> {
         if !case.stage.is_empty() || case.planetary.is_some() || case.gear.helix_angle_deg == 0.0 {
             return Model::from_case(case);
         }
-        if let Some(r) = super::helical_tilt::tilt_refusal(case, study) {
-            return Err(ModelError(vec![r]));
-        }
+        super::helical_teeth::refuse_for_wear(case, study)?;
         Model::helical_from_case(case)
     }
 

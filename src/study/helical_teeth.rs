@@ -85,7 +85,7 @@ pub(crate) fn tooth_inputs(
 /// refuse a case alike.
 pub fn wear_refusal(case: &Case) -> Option<String> {
     (case.gear.helix_angle_deg != 0.0 && case.stage.is_empty() && has_tooth_inputs(case)).then(|| {
-        "`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): the wear studies (`gearwear wear`, `gearwear run`, a `[load_spectrum]`, a wear sweep) do not take per-tooth inputs on a helical pair yet (its slices would wear tooth by tooth); `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.10)".to_string()
+        "`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): the wear studies (`gearwear wear`, `gearwear run`, a `[load_spectrum]`, a wear sweep, `gearwear dataset`, `gearwear calibrate`, `gearwear predict`) do not take per-tooth inputs on a helical pair yet (its slices would wear tooth by tooth); `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.10)".to_string()
     })
 }
 

@@ -71,6 +71,10 @@ pub fn mesh_fault(
         let side = pf.gear.name();
         let p = p
             .replace("`fault.", "`planetary.fault.")
+            .replace(
+                &format!("fault {i}, {side} tooth 0"),
+                &format!("planetary fault {}, {}", i + 1, f.who()),
+            )
             .replace(&format!("{side} tooth 0"), &f.who());
         return Err(ModelError(vec![p]));
     }
@@ -96,22 +100,8 @@ pub fn mesh_fault(
     let sun = flank
         .compliance_m_per_n
         .unwrap_or_else(|| vec![0.0; own.len()]);
-    // A broken tip: the pair's cut in rho1 (the sun's tip side above it, the planet's
-    // below it), and on the ring mesh the planet's tip side of its own rho, which is the
-    // ring path's rho1 (docs/MODEL.md 12.13).
-    let sun_contact = flank.contact_limit_rho1_m.map(|l| match side {
-        Side::Pinion => [f64::NEG_INFINITY, l],
-        Side::Gear => [l, f64::INFINITY],
-    });
-    let ring_contact = match pf.fault {
-        Fault::BrokenTip { removed_height_m } => {
-            let p = &set.ring_planet.planet;
-            let r_cut = p.tip_radius_m - removed_height_m;
-            let rho_cut = (r_cut.powi(2) - p.base_radius_m.powi(2)).max(0.0).sqrt();
-            Some([f64::NEG_INFINITY, rho_cut])
-        }
-        _ => None,
-    };
+    let (sun_contact, ring_contact) =
+        broken_tip_contacts(flank.contact_limit_rho1_m, side, member, &pf.fault, set);
     // The ring mesh: a planet's crack on the planet's tooth beam of that mesh (own rho
     // of the planet = the ring path's rho1).
     let ring = match (member, pf.fault) {
@@ -152,6 +142,34 @@ pub fn mesh_fault(
     })
 }
 
+/// Where a broken tip (`fault`) lets the pairs holding its tooth touch, as the
+/// [`MeshFault`]'s rho1 intervals of the sun and ring mesh: the pair's cut on the sun
+/// mesh (`limit`, from `study::teeth::apply_fault`: the sun's tip side above it, the
+/// planet's below it), and for a planet's tooth on its ring mesh too, where the planet's
+/// own rho is the ring path's rho1 (docs/MODEL.md 12.13); None, None for another fault.
+fn broken_tip_contacts(
+    limit: Option<f64>,
+    side: Side,
+    member: FaultMember,
+    fault: &Fault,
+    set: &PlanetarySet,
+) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
+    let sun = limit.map(|l| match side {
+        Side::Pinion => [f64::NEG_INFINITY, l],
+        Side::Gear => [l, f64::INFINITY],
+    });
+    let ring = match (member, fault) {
+        (FaultMember::Planet(_), Fault::BrokenTip { removed_height_m }) => {
+            let p = &set.ring_planet.planet;
+            let r_cut = p.tip_radius_m - removed_height_m;
+            let rho_cut = (r_cut.powi(2) - p.base_radius_m.powi(2)).max(0.0).sqrt();
+            Some([f64::NEG_INFINITY, rho_cut])
+        }
+        _ => None,
+    };
+    (sun, ring)
+}
+
 /// The ring's own rho2 (m) of its active flank's tip end, pitch point and root end: the
 /// ring path's start, pitch point and end (the ring's tip meets the planet first).
 fn ring_flank(set: &PlanetarySet) -> [f64; 3] {
@@ -183,7 +201,8 @@ fn ring_fault_problem(
     beam: &RingToothBeam,
 ) -> Option<String> {
     let mm = 1e3;
-    let who = format!("fault {i}, {}", f.who());
+    // Numbered as the case's checks number it (`config::planetary`: from 1).
+    let who = format!("planetary fault {}, {}", i + 1, f.who());
     match *fault {
         Fault::Crack {
             depth_m, angle_rad, ..

@@ -51,7 +51,7 @@ pub struct ToothInputs {
     /// nominal Hertz half-width, for the worn flanks' stiffness and curvature.
     worn: Option<WornFlanks>,
     /// A helical pair's teeth as contact lines on its line pair (`teeth::helical`,
-    /// docs/MODEL.md 11.9): new teeth only, no wear added.
+    /// docs/MODEL.md 11.10): new teeth only, no wear added.
     lines: bool,
 }
 
@@ -114,7 +114,7 @@ impl ToothInputs {
     /// profile of a state without per-tooth wear) added to its flank.
     pub fn mesh_for(&self, wear: &WearState) -> ToothMesh {
         if self.lines {
-            // A helical pair's lines: the wear studies refuse its teeth (docs/MODEL.md 11.9).
+            // A helical pair's lines: the wear studies refuse its teeth (docs/MODEL.md 11.10).
             return ToothMesh::new(
                 self.pinion.clone(),
                 self.gear.clone(),

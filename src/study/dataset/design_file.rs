@@ -38,7 +38,7 @@ fn seed<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
         Ok(Number::Int(i)) => crate::rng::seed_from_i128("seed", i as i128),
         Ok(Number::Float(x)) => crate::rng::seed_from_f64("seed", x),
         Err(_) => Err(format!(
-            "`seed` is not a number: expected a whole number in [0, {}]",
+            "`seed` is not a number (text, a boolean or a table): expected a whole number in [0, {}]",
             crate::rng::MAX_SEED
         )),
     }

@@ -79,6 +79,40 @@ struct SliceFault {
     covers: Vec<bool>,
 }
 
+/// A fault whose span across the face (`fault.face_start_mm`, `fault.face_end_mm`) holds
+/// no slice centre of `s` would change nothing (each slice carries a fault whose span
+/// holds its centre): refused, naming the keys, the slice width and the nearest centres.
+fn empty_span_problems(case: &Case, s: &SliceMeshStiffness) -> Vec<String> {
+    let b = s.pair().face_width_m;
+    let centres = s.positions_m();
+    let width_mm = b / centres.len().max(1) as f64 * 1e3;
+    case.fault
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.changes_tooth() && f.has_face_span())
+        .filter_map(|(i, f)| {
+            let (lo, hi) = f.face_span_m(b);
+            if centres.iter().any(|y| (lo..=hi).contains(y)) {
+                return None;
+            }
+            let below = centres.iter().rev().find(|y| **y < lo).map(|y| y * 1e3);
+            let above = centres.iter().find(|y| **y > hi).map(|y| y * 1e3);
+            let near = [below, above]
+                .iter()
+                .flatten()
+                .map(|y| format!("{y:.4} mm"))
+                .collect::<Vec<_>>()
+                .join(" and ");
+            Some(format!(
+                "`fault.face_start_mm` = {}, `fault.face_end_mm` = {} (fault {i}) hold no slice centre: the {} slices are {width_mm:.4} mm wide, the nearest centres at {near}, and a slice carries the fault when its centre lies in the span; widen the span or give more slices (`stiffness.slices`)",
+                lo * 1e3,
+                hi * 1e3,
+                centres.len()
+            ))
+        })
+        .collect()
+}
+
 impl ToothInputs {
     /// The teeth of a helical `case` as contact lines of `s`'s line pair (module docs), or
     /// None when no tooth differs from the new one. `grid`: the transverse wear grid;
@@ -92,7 +126,8 @@ impl ToothInputs {
     ) -> Result<Option<Self>, Vec<String>> {
         let t = &s.pair().transverse;
         let slice = s.slice();
-        let problems = geometry_problems(case, t, slice);
+        let mut problems = geometry_problems(case, t, slice);
+        problems.extend(empty_span_problems(case, s));
         if !problems.is_empty() {
             return Err(problems);
         }
