@@ -65,3 +65,13 @@ CASES = {
 @pytest.fixture(params=list(CASES), ids=list(CASES))
 def case(request) -> gw.Case:
     return CASES[request.param]
+
+
+def write_csv(path, columns):
+    """The columns as CSV, every float in its shortest exact form (repr)."""
+    names = list(columns)
+    lines = [",".join(names)]
+    for i in range(len(columns[names[0]])):
+        lines.append(",".join(repr(float(columns[n][i])) for n in names))
+    path.write_text("\n".join(lines) + "\n")
+    return path

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import gearwear as gw
-from conftest import run_cli
+from conftest import run_cli, write_csv
 
 #: A short sampler run: the numbers need not be converged to be compared.
 SAMPLER = {"seed": 3, "samples": 300, "steps": 200, "check_runs": 1}
@@ -30,16 +30,6 @@ def observations():
         "velocity_y_pinion_rms_mm_per_s": run.updates["velocity_y_pinion_rms_mm_per_s"][rows],
         "sigma_max_wear_pinion_um": np.full(len(run.cycles[rows]), 0.2),
     }
-
-
-def write_csv(path, columns):
-    """The columns as CSV, every float in its shortest exact form (repr)."""
-    names = list(columns)
-    lines = [",".join(names)]
-    for i in range(len(columns[names[0]])):
-        lines.append(",".join(repr(float(columns[n][i])) for n in names))
-    path.write_text("\n".join(lines) + "\n")
-    return path
 
 
 def cli_json(out, name="summary.json"):

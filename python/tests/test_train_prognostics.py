@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import gearwear as gw
-from conftest import REPO, run_cli
+from conftest import REPO, run_cli, write_csv
 
 #: The wear coefficient the synthetic observations are made at, m^2/N.
 K0 = 2.5e-16
@@ -60,25 +60,12 @@ def observations(case):
     }
 
 
-def _csv(path, columns):
-    names = list(columns)
-    lines = [",".join(names)]
-    for i in range(len(columns[names[0]])):
-        cells = []
-        for n in names:
-            v = float(columns[n][i])
-            cells.append(str(int(v)) if n == "stage" else repr(v))
-        lines.append(",".join(cells))
-    path.write_text("\n".join(lines) + "\n")
-    return path
-
-
 @pytest.fixture(scope="module")
 def calibrated(cli, tmp_path_factory, case, observations):
     pd = pytest.importorskip("pandas")
     tmp = tmp_path_factory.mktemp("train_cal")
     py = _quiet(gw.calibrate, case, pd.DataFrame(observations), **SAMPLER)
-    obs = _csv(tmp / "obs.csv", observations)
+    obs = write_csv(tmp / "obs.csv", observations)
     args = [f"--{k.replace('_', '-')}={v}" for k, v in SAMPLER.items()]
     out = run_cli(cli, tmp, "calibrate", case, "--observations", str(obs), *args)
     return py, out

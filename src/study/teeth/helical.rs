@@ -79,6 +79,16 @@ struct SliceFault {
     covers: Vec<bool>,
 }
 
+/// Which face slices of `s` carry the fault `f`: those whose centre lies in its span
+/// [`fault.face_start_mm`, `fault.face_end_mm`] (docs/MODEL.md 11.10), one flag a slice.
+fn covered_slices(f: &crate::config::case::ToothFault, s: &SliceMeshStiffness) -> Vec<bool> {
+    let (lo, hi) = f.face_span_m(s.pair().face_width_m);
+    s.positions_m()
+        .iter()
+        .map(|y| (lo..=hi).contains(y))
+        .collect()
+}
+
 /// A fault whose span across the face (`fault.face_start_mm`, `fault.face_end_mm`) holds
 /// no slice centre of `s` would change nothing (each slice carries a fault whose span
 /// holds its centre): refused, naming the keys, the slice width and the nearest centres.
@@ -91,10 +101,10 @@ fn empty_span_problems(case: &Case, s: &SliceMeshStiffness) -> Vec<String> {
         .enumerate()
         .filter(|(_, f)| f.changes_tooth() && f.has_face_span())
         .filter_map(|(i, f)| {
-            let (lo, hi) = f.face_span_m(b);
-            if centres.iter().any(|y| (lo..=hi).contains(y)) {
+            if covered_slices(f, s).contains(&true) {
                 return None;
             }
+            let (lo, hi) = f.face_span_m(b);
             let below = centres.iter().rev().find(|y| **y < lo).map(|y| y * 1e3);
             let above = centres.iter().find(|y| **y > hi).map(|y| y * 1e3);
             let near = [below, above]
@@ -135,7 +145,6 @@ impl ToothInputs {
         let mut healthy = case.clone();
         healthy.fault.clear();
         let samples = LineSamples::of(s, grid);
-        let b = s.pair().face_width_m;
         let lines = |member: Member, e| -> Vec<ToothFlank> {
             let side = super::sides::side(member);
             let own = match side {
@@ -153,12 +162,7 @@ impl ToothInputs {
                         .map(|x| {
                             let mut flank = ToothFlank::perfect(grid.len());
                             apply_fault(&mut flank, x, t, slice, side, own);
-                            let (lo, hi) = x.face_span_m(b);
-                            let covers = s
-                                .positions_m()
-                                .iter()
-                                .map(|y| (lo..=hi).contains(y))
-                                .collect();
+                            let covers = covered_slices(x, s);
                             SliceFault { flank, covers }
                         })
                         .collect();
