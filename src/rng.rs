@@ -15,10 +15,27 @@ pub fn stream(seed: u64, index: u64) -> ChaCha8Rng {
 /// exact as a float, so a seed survives a JSON or Python writer unchanged.
 pub const MAX_SEED: u64 = 1 << 53;
 
-/// The message of a seed outside [0, 2^53] or not a whole number, naming `key` and the
+/// A value that is not a seed (outside [0, 2^53] or not a whole number): the key, the
+/// value as written and, for a float from 2^52 up, why it is refused.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15){}", .why.map(|w| format!(" ({w})")).unwrap_or_default())]
+pub struct SeedError {
+    /// The key (or flag) the value was given for.
+    pub key: String,
+    /// The value as written.
+    pub shown: String,
+    /// Why a float in range is refused, when it is.
+    pub why: Option<&'static str>,
+}
+
+/// The error of a seed outside [0, 2^53] or not a whole number, naming `key` and the
 /// value as written.
-fn seed_error(key: &str, shown: &str) -> String {
-    format!("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15)")
+fn seed_error(key: &str, shown: &str) -> SeedError {
+    SeedError {
+        key: key.to_string(),
+        shown: shown.to_string(),
+        why: None,
+    }
 }
 
 /// A seed given as a float (a TOML or Python float): a whole number below 2^52, where a
@@ -26,15 +43,15 @@ fn seed_error(key: &str, shown: &str) -> String {
 /// up the floats are whole numbers one or more apart, so a float there may be another
 /// number rounded (the TOML float 9007199254740993.0 reads as 2^53): refused, asking for
 /// the integer. Err names `key`, the value and the range [0, 2^53].
-pub fn seed_from_f64(key: &str, x: f64) -> Result<u64, String> {
+pub fn seed_from_f64(key: &str, x: f64) -> Result<u64, SeedError> {
     const EXACT: f64 = (1u64 << 52) as f64;
     if x.is_finite() && x.fract() == 0.0 && (0.0..EXACT).contains(&x) {
         Ok(x as u64)
     } else if x.is_finite() && (EXACT..=MAX_SEED as f64).contains(&x) {
-        Err(format!(
-            "{} (a float from 2^52 up may be another number rounded: write it as an integer)",
-            seed_error(key, &format!("{x:?}"))
-        ))
+        Err(SeedError {
+            why: Some("a float from 2^52 up may be another number rounded: write it as an integer"),
+            ..seed_error(key, &format!("{x:?}"))
+        })
     } else {
         Err(seed_error(key, &format!("{x:?}")))
     }
@@ -85,7 +102,7 @@ fn exact_whole(t: &str) -> Option<Result<i128, ()>> {
 }
 
 /// A seed given as an integer; Err names `key`, the value and the range [0, 2^53].
-pub fn seed_from_i128(key: &str, i: i128) -> Result<u64, String> {
+pub fn seed_from_i128(key: &str, i: i128) -> Result<u64, SeedError> {
     if (0..=MAX_SEED as i128).contains(&i) {
         Ok(i as u64)
     } else {
@@ -95,7 +112,7 @@ pub fn seed_from_i128(key: &str, i: i128) -> Result<u64, String> {
 
 /// A seed written as text: an integer, or a whole number in float notation; Err names
 /// `key`, the text and the range [0, 2^53].
-pub fn parse_seed(key: &str, text: &str) -> Result<u64, String> {
+pub fn parse_seed(key: &str, text: &str) -> Result<u64, SeedError> {
     let t = text.trim();
     if let Ok(i) = t.parse::<i128>() {
         return seed_from_i128(key, i);
@@ -161,7 +178,7 @@ mod tests {
             "NaN",
             "18446744073709551616",
         ] {
-            let e = parse_seed("the key", bad).unwrap_err();
+            let e = parse_seed("the key", bad).unwrap_err().to_string();
             assert!(
                 e.contains("`the key`") && e.contains("[0, 9007199254740992]"),
                 "{e}"
@@ -172,6 +189,7 @@ mod tests {
         // the integer it is.
         assert!(seed_from_f64("k", 9_007_199_254_740_992.0)
             .unwrap_err()
+            .to_string()
             .contains("write it as an integer"));
         assert_eq!(
             seed_from_f64("k", 4_503_599_627_370_495.0),

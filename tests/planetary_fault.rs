@@ -345,7 +345,9 @@ fn the_budget_counts_the_faults_period_and_refuses_one_beyond_the_limits() {
     let mut s = faulty.planetary.clone().unwrap();
     s.teeth_sun = 9999;
     s.teeth_ring = 9998;
-    let e = gearwear::study::planetary_fault::fault_periods(&s, 200).unwrap_err();
+    let e = gearwear::study::planetary_fault::fault_periods(&s, 200)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.contains("`planetary.teeth_sun` = 9999") && e.contains("beyond the limit"),
         "{e}"
@@ -374,7 +376,9 @@ fn dynamics_records_the_faults_period_and_only_the_ring_sensor_needs_lcm_with_th
         Ok(331)
     );
     assert!(PlanetaryStudy::from_case(&case).is_ok());
-    let e = gearwear::study::planetary_fault::fault_periods(s, 200).unwrap_err();
+    let e = gearwear::study::planetary_fault::fault_periods(s, 200)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("lcm(331, 997) = 330007"), "{e}");
     let (_d, out, o) = run("signals", &text(200));
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));

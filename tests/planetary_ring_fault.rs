@@ -397,7 +397,9 @@ fn a_ring_faults_period_is_one_ring_revolution_relative_to_the_carrier() {
     // A ring of 9999 teeth at 6000 samples per mesh period: beyond the record limit.
     let mut s = faulty.planetary.clone().unwrap();
     s.teeth_ring = 9999;
-    let e = gearwear::study::planetary_fault::fault_periods(&s, 6000).unwrap_err();
+    let e = gearwear::study::planetary_fault::fault_periods(&s, 6000)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.contains("`planetary.teeth_ring` = 9999") && e.contains("beyond the limit"),
         "{e}"

@@ -268,9 +268,9 @@ fn seed_of(py: Python<'_>, seed: Option<&Bound<'_, PyAny>>) -> PyResult<u64> {
             gearwear::rng::MAX_SEED
         ))
     } else if let Ok(i) = seed.extract::<i128>() {
-        gearwear::rng::seed_from_i128("seed", i)
+        gearwear::rng::seed_from_i128("seed", i).map_err(|e| e.to_string())
     } else if let Ok(x) = seed.extract::<f64>() {
-        gearwear::rng::seed_from_f64("seed", x)
+        gearwear::rng::seed_from_f64("seed", x).map_err(|e| e.to_string())
     } else {
         return Err(PyTypeError::new_err(format!(
             "seed takes a whole number in [0, {}]",

@@ -31,7 +31,7 @@ pub(super) fn ring_sensor_problem(case: &Case) -> Option<Problem> {
     if let Some(p) = case.planetary.as_ref() {
         let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
         if let Err(e) = crate::study::planetary_fault::fault_periods(p, steps) {
-            return Some(Problem::new(e));
+            return Some(Problem::new(e.to_string()));
         }
     }
     let s = &case.signals;

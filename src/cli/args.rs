@@ -380,6 +380,6 @@ pub(crate) struct LoadSpectrumArgs {
 
 /// `--seed`: a whole number in [0, 2^53], as an integer or a whole float
 /// (`gearwear::rng::parse_seed` names the flag, the value and the range).
-fn seed_arg(text: &str) -> Result<u64, String> {
+fn seed_arg(text: &str) -> Result<u64, crate::rng::SeedError> {
     crate::rng::parse_seed("--seed", text)
 }

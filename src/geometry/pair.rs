@@ -138,8 +138,9 @@ pub struct GearPair {
     pub warnings: Vec<String>,
 }
 
-/// Geometry that cannot mesh.
-#[derive(Debug, Clone, PartialEq)]
+/// Geometry that cannot mesh: every problem found, each naming its key, value and range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", .0.join("; "))]
 pub struct GeometryError(pub Vec<String>);
 
 impl GearPair {

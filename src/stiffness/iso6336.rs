@@ -14,7 +14,6 @@
 //! Internal gears (not needed here) take z_n2 -> infinity: the C3 and C7 terms vanish.
 
 use crate::geometry::GearPair;
-use std::fmt;
 
 /// ISO 6336-1 Table (Method B) coefficients C1..C9 of q', mm um/N.
 pub const Q_COEFFICIENTS: [f64; 9] = [
@@ -76,16 +75,9 @@ pub struct Iso6336Stiffness {
 }
 
 /// Inputs Method B cannot evaluate.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("ISO 6336 Method B: {}", .0.join("; "))]
 pub struct Iso6336Error(pub Vec<String>);
-
-impl fmt::Display for Iso6336Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "ISO 6336 Method B: {}", self.0.join("; "))
-    }
-}
-
-impl std::error::Error for Iso6336Error {}
 
 /// Stiffness per unit face width c (N/(mm um)) times face width b (m), in N/m:
 /// c b_mm = N/um, times 1e6 um/m.

@@ -141,8 +141,7 @@ pub fn face_load(model: &HelicalModel) -> Result<CaseFaceLoad, ModelError> {
     let pair = &model.pair().transverse;
     let (gap, warnings) = lead_gap(case, pair)?;
     let force = OperatingPoint::of(&case.operating, pair).static_mesh_force_n;
-    let load = FaceLoad::solve(&model.slices, &gap, force, FACE_POSITIONS)
-        .map_err(|e| ModelError(vec![e.0]))?;
+    let load = FaceLoad::solve(&model.slices, &gap, force, FACE_POSITIONS)?;
     let n = model.slices.slices();
     if n >= 2 && load.fewest_loaded_slices() < 2 {
         // A linear gap T across the face leaves a triangle of width c = sqrt(2 F b / (k T))

@@ -49,8 +49,7 @@ impl HelicalModel {
     /// comparison. The fillet convention is the spur model's (`study::Model`): the
     /// built-in tooth form's theta_f extrapolation exemption holds for its normal section.
     pub fn from_case(case: &Case) -> Result<Self, ModelError> {
-        let pair = HelicalPair::from_case(&case.gear, &helix_of(&case.gear))
-            .map_err(|e| ModelError(e.0))?;
+        let pair = HelicalPair::from_case(&case.gear, &helix_of(&case.gear))?;
         let elastic = ElasticPair::from_case(&case.materials);
         let fillet = FilletSettings::from_case(&case.stiffness).map(|mut s| {
             s.allow_theta_f_extrapolation = case.gear.same_tooth_form(&GearSection::default());
@@ -58,11 +57,9 @@ impl HelicalModel {
         });
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
         let slices = usize::try_from(case.stiffness.slices).unwrap_or(0);
-        let model = SliceMeshStiffness::new(&pair, &elastic, slices, n_table, fillet)
-            .map_err(|e| ModelError(e.0))?;
+        let model = SliceMeshStiffness::new(&pair, &elastic, slices, n_table, fillet)?;
         let spur_transverse =
-            MeshStiffness::with_fillet(&pair.transverse, &elastic, n_table, fillet)
-                .map_err(|e| ModelError(e.0))?;
+            MeshStiffness::with_fillet(&pair.transverse, &elastic, n_table, fillet)?;
         let mut warnings = pair.transverse.warnings.clone();
         warnings.extend(spur_transverse.warnings().iter().cloned());
         Ok(Self {

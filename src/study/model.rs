@@ -251,7 +251,7 @@ impl Model {
         if !case.stage.is_empty() {
             return Self::train_from_case(case);
         }
-        let pair = GearPair::from_case(&case.gear).map_err(|e| ModelError(e.0))?;
+        let pair = GearPair::from_case(&case.gear)?;
         let mut warnings = pair.warnings.clone();
         if case.contact.load_sharing == LoadSharingModel::Pedrero && pair.contact_ratio >= 2.0 {
             return Err(ModelError(vec![format!(
@@ -270,8 +270,7 @@ impl Model {
             &elastic,
             n_table,
             FilletSettings::for_pair(&case.stiffness, &case.gear),
-        )
-        .map_err(|e| ModelError(e.0))?;
+        )?;
         warnings.extend(mesh.warnings().iter().cloned());
         let params = DynamicParams::from_case(case, &pair);
         warnings.extend(body_value_warnings(

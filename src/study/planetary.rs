@@ -76,16 +76,15 @@ impl PlanetaryStudy {
             )]));
         }
         let steps = case.numerics.steps_per_mesh_period.max(8) as u64;
-        super::planetary_fault::fault_period(&section, steps).map_err(|e| ModelError(vec![e]))?;
-        let set = PlanetarySet::from_case(&section).map_err(|e| ModelError(e.0))?;
+        super::planetary_fault::fault_period(&section, steps)?;
+        let set = PlanetarySet::from_case(&section)?;
         let load = super::domain::planetary_domain_problems(case, &set);
         if !load.is_empty() {
             return Err(ModelError(load));
         }
         let elastic = ElasticPair::from_case(&case.materials);
         let n_table = case.stiffness.table_points_per_mesh_period.max(16) as usize;
-        let sun_mesh = MeshStiffness::with_fillet(&set.sun_planet, &elastic, n_table, None)
-            .map_err(|e| ModelError(e.0))?;
+        let sun_mesh = MeshStiffness::with_fillet(&set.sun_planet, &elastic, n_table, None)?;
         let planet_ring = ElasticPair {
             e_pinion_pa: elastic.e_gear_pa,
             nu_pinion: elastic.nu_gear,

@@ -341,7 +341,7 @@ fn ring_mesh_fault(
 pub fn fault_period(
     section: &crate::config::planetary::PlanetarySection,
     samples_per_period: u64,
-) -> Result<u64, String> {
+) -> Result<u64, ModelError> {
     let Some(f) = section.active_fault() else {
         return Ok(1);
     };
@@ -353,10 +353,10 @@ pub fn fault_period(
     };
     match p.checked_mul(samples_per_period.max(1)) {
         Some(s) if s <= MAX_FAULT_PERIOD_SAMPLES => Ok(p),
-        _ => Err(format!(
+        _ => Err(ModelError(vec![format!(
             "`planetary.fault.gear` = \"{}\" with `{key}` = {p} and `numerics.steps_per_mesh_period` = {samples_per_period}: the fault's response repeats over {p} mesh periods, beyond the limit of {MAX_FAULT_PERIOD_SAMPLES} samples: give fewer steps per mesh period or a member with fewer teeth",
             f.gear.name()
-        )),
+        )])),
     }
 }
 
@@ -368,7 +368,7 @@ pub fn fault_period(
 pub fn fault_periods(
     section: &crate::config::planetary::PlanetarySection,
     samples_per_period: u64,
-) -> Result<(u64, u64), String> {
+) -> Result<(u64, u64), ModelError> {
     let Some(f) = section.active_fault() else {
         return Ok((1, 1));
     };
@@ -389,7 +389,7 @@ pub fn fault_periods(
     let samples = record.and_then(|r| r.checked_mul(samples_per_period.max(1)));
     match (record, samples) {
         (Some(r), Some(s)) if s <= MAX_FAULT_PERIOD_SAMPLES => Ok((p, r)),
-        _ => Err(format!(
+        _ => Err(ModelError(vec![format!(
             "`planetary.fault.gear` = \"{}\" with {}`planetary.teeth_ring` = {zr} and `numerics.steps_per_mesh_period` = {samples_per_period}: the fault's response repeats over {p} mesh periods and the ring sensor's record over lcm({p}, {zr}) = {} mesh periods, {} samples, beyond the limit of {MAX_FAULT_PERIOD_SAMPLES}: give fewer steps per mesh period or a member with fewer teeth",
             f.gear.name(),
             match f.gear {
@@ -398,6 +398,6 @@ pub fn fault_periods(
             },
             record.map_or("more than 2^64".to_string(), |r| r.to_string()),
             samples.map_or("more than 2^64".to_string(), |s| s.to_string()),
-        )),
+        )])),
     }
 }

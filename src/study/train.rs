@@ -129,8 +129,7 @@ impl TrainModel {
             output_torque_nm: t_out,
             slip_damping_nm_s_per_rad: case.operating.motor_slip_damping_nm_s_per_rad,
         };
-        let assembly = Assembly::new(Elements::train(&elements, drive))
-            .map_err(|e| ModelError(vec![e.to_string()]))?;
+        let assembly = Assembly::new(Elements::train(&elements, drive))?;
         let model = Self {
             stages,
             assembly,

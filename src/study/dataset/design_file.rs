@@ -35,8 +35,8 @@ fn seed<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
         Float(f64),
     }
     match Number::deserialize(d) {
-        Ok(Number::Int(i)) => crate::rng::seed_from_i128("seed", i as i128),
-        Ok(Number::Float(x)) => crate::rng::seed_from_f64("seed", x),
+        Ok(Number::Int(i)) => crate::rng::seed_from_i128("seed", i as i128).map_err(|e| e.to_string()),
+        Ok(Number::Float(x)) => crate::rng::seed_from_f64("seed", x).map_err(|e| e.to_string()),
         Err(_) => Err(format!(
             "`seed` is not a number (text, a boolean or a table): expected a whole number in [0, {}]",
             crate::rng::MAX_SEED
