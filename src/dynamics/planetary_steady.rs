@@ -118,7 +118,7 @@ struct Searched {
 
 /// Integrate `sys` to its steady state and record it: one mesh period with every tooth
 /// alike, the fault's period (`PlanetaryMeshes::periods`) with a tooth fault
-/// ([`solve_fault_period`]).
+/// (`solve_fault_period`).
 pub fn solve_planetary_steady_state(
     sys: &mut PlanetaryDynamic,
     s: &PlanetarySettings,

@@ -13,7 +13,7 @@
 //! a helical pair's contact lines with lead gaps across the face carry the dynamic
 //! model's line force instead, sum_l F_l(delta - g_l) = F with
 //! F_l(c) = sum_j k_j (c - G_j)+ (`LineGapTable::force`, docs/MODEL.md 11.1 and 11.3),
-//! solved exactly by [`lead_deflection_for_force`].
+//! solved exactly by `lead_deflection_for_force`.
 
 use super::grid::{excitation_periods, period_nodes_in, train_nodes};
 use super::model::{GearSystem, MeshState, TrainMesh, MAX_PAIRS};

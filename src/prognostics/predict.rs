@@ -53,7 +53,7 @@ fn is_one(n: &usize) -> bool {
     *n == 1
 }
 
-/// The fan quantities of a case of `stages` meshes: [`FAN_QUANTITIES`] (stage 1's),
+/// The fan quantities of a case of `stages` meshes: `FAN_QUANTITIES` (stage 1's),
 /// then each later stage's (`Quantity::OnStage`), stage by stage.
 pub fn fan_quantities(stages: usize) -> Vec<Quantity> {
     let mut v = FAN_QUANTITIES.to_vec();

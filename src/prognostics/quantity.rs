@@ -24,8 +24,8 @@ pub enum Quantity {
     /// A condition indicator of the recorded housing vibration (`super::indicator`: the
     /// index of its name), in the unit of `signals.channel_unit` or dimensionless.
     Indicator(u16),
-    /// A quantity of [`ALL`] on a later stage of a gear train (`[[stage]]`): the stage
-    /// (2..=`config::train::MAX_STAGES`, 1-based) and the quantity's index in [`ALL`]
+    /// A quantity of `ALL` on a later stage of a gear train (`[[stage]]`): the stage
+    /// (2..=`config::train::MAX_STAGES`, 1-based) and the quantity's index in `ALL`
     /// (stage 1's is the quantity itself). Observations name it by the `stage` column
     /// (`super::observations`); tables by the name with a `_stage<N>` suffix.
     OnStage(u8, u8),

@@ -1,6 +1,6 @@
 //! The forward run of a gear train (`[[stage]]`): its dynamic wear loop
 //! (`study::train_wear`, each mesh worn at its own cycle count by one response of the
-//! whole train) kept as a [`Trajectory`] whose `records` are stage 1's and whose
+//! whole train) kept as a `Trajectory` whose `records` are stage 1's and whose
 //! `later_stages` hold every other mesh's, one per update.
 //!
 //! **Cycles.** A train's trajectory counts input cycles (revolutions of stage 1's

@@ -333,7 +333,7 @@ impl SliceMeshStiffness {
     /// phi - L / r_b1 (the time origin shifts). Returned last: the line's extent L, m.
     ///
     /// A line whose slice spacing L / N is below the table's finest spacing (the path over
-    /// [`MAX_LINE_POINTS`]: a helix angle below about 0.03 deg on the paper's 20 mm face
+    /// `MAX_LINE_POINTS`: a helix angle below about 0.03 deg on the paper's 20 mm face
     /// with 100 slices) cannot be resolved: several of its slices meet the path within one
     /// table step, down to a whole pair's jump, which rings in the spline (measured on the
     /// paper's pair with 100 slices: a dynamic factor of 1.623 at 1e-4 deg and 1.6145 at

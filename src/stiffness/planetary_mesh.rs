@@ -48,7 +48,7 @@ impl FaultMember {
 }
 
 /// A tooth fault on one member: the compliance it adds to a pair holding the tooth, m/N,
-/// at [`RING_TABLE_POINTS`] equally spaced rho1 along each mesh's path of contact (the
+/// at `RING_TABLE_POINTS` equally spaced rho1 along each mesh's path of contact (the
 /// sun's flank for the sun mesh, the planet's for the ring mesh; `None`: that mesh never
 /// meets the tooth), and where on each path such a pair touches at all (a broken tip's
 /// cut; outside it the pair carries nothing, as a pair's broken tip, docs/MODEL.md 9.5),

@@ -118,7 +118,7 @@ impl HelicalDynamics {
 
     /// The worn slices as each contact line's gap on the line pair, m (docs/MODEL.md 11.3,
     /// `study::helical_wear`): the stiffness-weighted mean of the line's slices' wear gaps
-    /// along the transverse line of action ([`slice_gap_m`]: the normal depths over
+    /// along the transverse line of action (`slice_gap_m`: the normal depths over
     /// cos(beta_b)),
     ///   e_l(rho) = sum_i k_i g_j(i)(rho + o_i) / sum_i k_i,
     /// at the wear grid's spacing over the positions of the line's trailing end (rho, where

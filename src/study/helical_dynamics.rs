@@ -6,7 +6,7 @@
 //! action (its transverse part F_t = F; the axial part F tan(beta_b) loads the axial
 //! bearings). Where the case gives axial bearings (`dynamics.bearing_axial_stiffness_*`),
 //! pinion and gear carry axial degrees of freedom and the deflection takes their axial
-//! motion (docs/MODEL.md 11.6, [`axial_support`]); otherwise the axial bearings are rigid.
+//! motion (docs/MODEL.md 11.6, `axial_support`); otherwise the axial bearings are rigid.
 //!
 //! The lead keys (`[modification]`'s crowning, end relief and helix slope deviation,
 //! `operating.misalignment_um`) give each line's slices their gaps across the face
@@ -19,7 +19,7 @@
 //! gear train, a planetary set, profile modifications, worn geometry; of the per-tooth
 //! inputs what `study::helical_teeth` refuses),
 //! Pedrero's load-sharing law (it is a spur pair's), and a total
-//! contact ratio above [`MAX_PAIRS`] (the mesh follows at most that many contact lines).
+//! contact ratio above `MAX_PAIRS` (the mesh follows at most that many contact lines).
 //! The tip corners are not modelled: `contact.path` = "extended" (the default) runs the
 //! nominal path with a warning.
 

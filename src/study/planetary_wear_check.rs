@@ -3,7 +3,7 @@
 //! As for a train's logs (`study::train_wear_check`), nothing the files say about the run
 //! is trusted:
 //!
-//! - **Replayed** ([`planetary_run_from_logs`]): each record's shape is checked (one value
+//! - **Replayed** (`planetary_run_from_logs`): each record's shape is checked (one value
 //!   per point of its mesh's grid, finite and >= 0, none of what a planetary mesh's record
 //!   leaves empty: `planetary_wear_loop::mesh_record`); the input cycles and the member
 //!   flank that cut each block are not stored, they are recomputed from the update before
@@ -11,7 +11,7 @@
 //!   wear must equal the previous update's advanced over that block bit for bit (the
 //!   first update: new teeth at input cycle 0). Logs of unequal length (a kill between
 //!   the appends of one update) are cut to the updates every log holds.
-//! - **Recomputed** ([`verify_planetary_resumable`]): the first and last updates and a
+//! - **Recomputed** (`verify_planetary_resumable`): the first and last updates and a
 //!   random sample of the others (at most `wear_check::MAX_RECOMPUTED` in all) are
 //!   computed again from the update before, the whole set's response with every mesh,
 //!   and must equal the stored records bit for bit (compared as JSON, which carries every

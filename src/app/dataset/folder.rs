@@ -244,7 +244,7 @@ pub fn sidecar_at(root: &Path, id: usize) -> Option<Sidecar> {
 }
 
 /// Record ids of the sidecars `root` holds, from their names alone (`records/<id>.json`
-/// as [`sidecar_rel`] names them): nothing is read, so a budget can count a folder
+/// as `sidecar_rel` names them): nothing is read, so a budget can count a folder
 /// before any sidecar is parsed (issue 33). A bound of what a reading finds: a foreign,
 /// unreadable or oversized sidecar is among them.
 pub fn sidecar_ids(root: &Path) -> Vec<usize> {

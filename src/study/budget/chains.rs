@@ -118,7 +118,7 @@ pub const SECONDS_PER_RUN_SLICE_CONTACT: f64 = 0.35e-6 * SLOWER_MACHINE_FACTOR;
 
 /// CPU seconds a helical pair's wear update adds in a run-to-failure job (a dataset's
 /// trajectory, a prognostics run): its slice contacts
-/// (`super::helical::slice_contacts_per_update` at [`SLICE_SAMPLES_AT_30_HZ`]) at
+/// (`super::helical::slice_contacts_per_update` at `SLICE_SAMPLES_AT_30_HZ`) at
 /// [`SECONDS_PER_RUN_SLICE_CONTACT`], times [`run_to_failure_scale`]; 0 for a spur pair
 /// or a train.
 pub fn helical_update_seconds(case: &Case) -> f64 {

@@ -36,7 +36,7 @@ pub struct Budget {
     /// Time the run may take, s (on one core of the reference machine).
     pub seconds: f64,
     /// The figures the run draws beyond the default size, counted with every estimate
-    /// checked against this budget ([`super::output::FigureLoad`]).
+    /// checked against this budget (`super::output::FigureLoad`).
     pub figures: FigureLoad,
 }
 
@@ -196,7 +196,7 @@ pub const BYTES_PER_FIGURE_PIXEL: f64 = 4.0;
 
 /// CPU seconds per pixel of a PNG figure drawn and encoded: measured 7.9e-9 (the same
 /// runs: 0.69 s of CPU at 8192x4096 against 0.02 s at the default size, 8.5e7 pixels
-/// more), counted 1e-8. Not times [`SLOWER_MACHINE_FACTOR`]: the pixels counted are
+/// more), counted 1e-8. Not times `SLOWER_MACHINE_FACTOR`: the pixels counted are
 /// already a bound (the tallest figure's on each thread, 1.3-1.6 times the pixels of
 /// `stiffness`'s two figures; with the factor, 4.0-4.5 times their CPU time).
 pub const SECONDS_PER_FIGURE_PIXEL: f64 = 1e-8;

@@ -65,7 +65,7 @@ impl SweepRun {
     }
 
     /// The run and the number of train meshes (0: a single pair) whose result columns
-    /// are `columns` ([`CaseResults::columns`]), if any.
+    /// are `columns` (`CaseResults::columns`), if any.
     pub fn of_columns(columns: &[String]) -> Option<(Self, usize)> {
         Self::layout_of(columns).map(|(r, n, _)| (r, n))
     }
@@ -89,7 +89,7 @@ impl SweepRun {
     }
 
     /// The run, train meshes and planets (0: none) whose result columns are `columns`
-    /// ([`CaseResults::columns`]), if any.
+    /// (`CaseResults::columns`), if any.
     pub fn shape_of(columns: &[String]) -> Option<(Self, usize, usize)> {
         match planets_of(columns) {
             Some(n) => {
