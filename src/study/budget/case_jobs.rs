@@ -44,9 +44,10 @@
 
 use super::cost::{Estimate, Term};
 use super::evaluation::{
-    axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor, wear_updates,
-    DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP,
-    SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
+    axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, recorded_periods,
+    train_factor, train_record_factor, wear_updates, DYNAMIC_WEAR_FACTOR,
+    PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
+    SECONDS_PER_TABLE_POINT,
 };
 use crate::config::case::Case;
 use crate::config::paper_case::runs_contact_twin;
@@ -352,7 +353,13 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
         terms.push(Term {
             what: "the recorded signals",
             seconds: 0.0,
-            bytes: w.kept * p.s_dyn * p.p_e * BYTES_PER_SAMPLE * train_factor(case),
+            // A train records whole base periods, each of max_k N_k mesh periods' samples
+            // of its larger state (`train_record_factor`), not the sum of its meshes'.
+            bytes: w.kept
+                * p.s_dyn
+                * recorded_periods(case, p.p_e)
+                * BYTES_PER_SAMPLE
+                * train_record_factor(case),
             keys: &[
                 "numerics.evaluated_mesh_periods",
                 "numerics.steps_per_mesh_period",

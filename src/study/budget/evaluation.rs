@@ -152,6 +152,20 @@ pub fn train_record_factor(case: &Case) -> f64 {
     most * state_factor(case)
 }
 
+/// Periods a steady response records for `evaluated_periods` evaluated mesh periods
+/// (`numerics.evaluated_mesh_periods`): those periods for a single pair; for a train,
+/// whole base periods, ceil(P_e / N_1) with N_1 the first mesh's periods in a base period
+/// (`dynamics::period_search::window_repeats`): a base period of 31 mesh periods holds
+/// the default 4. Each recorded base period holds [`train_record_factor`] single-pair
+/// periods' samples.
+pub fn recorded_periods(case: &Case, evaluated_periods: f64) -> f64 {
+    if case.stage.is_empty() {
+        return evaluated_periods;
+    }
+    let first = mesh_counts(case).map_or(1.0, |c| c.first().copied().unwrap_or(1.0).max(1.0));
+    (evaluated_periods / first).ceil().max(1.0)
+}
+
 /// N_k of each mesh of a train's base period (`dynamics::grid::chain_mesh_counts`), or
 /// None when it overflows.
 fn mesh_counts(case: &Case) -> Option<Vec<f64>> {

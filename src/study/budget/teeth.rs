@@ -178,7 +178,9 @@ pub fn budget_term(
         (true, true) => RUN_IN_PERIODS.min(p),
     };
     let scale = super::evaluation::train_factor(case);
-    let p_e = case.numerics.evaluated_mesh_periods as f64;
+    // Periods the response records without the fault: a train's in base periods, as P is.
+    let p_e =
+        super::evaluation::recorded_periods(case, case.numerics.evaluated_mesh_periods as f64);
     let recorded = s_dyn * p.max(p_e);
     let grid = case.wear.points_per_profile as f64;
     if train {
