@@ -180,3 +180,62 @@ fn bad_input_to_a_train_run_is_refused_naming_the_stage_or_key() {
         &["--resume", "does not exist"],
     );
 }
+
+/// The number after `prefix` in `text` (up to the next space).
+fn number_after(text: &str, prefix: &str) -> f64 {
+    let i = text.find(prefix).unwrap_or_else(|| panic!("no `{prefix}`")) + prefix.len();
+    text[i..]
+        .split_whitespace()
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap()
+}
+
+#[test]
+fn a_faulty_stage_is_reported_with_its_fault_and_every_tooths_wear() {
+    let d = tempfile::tempdir().unwrap();
+    let crack = "\n[[fault]]\nstage = 1\ngear = \"pinion\"\ntooth = 3\nkind = \"crack\"\ncrack_depth_mm = 0.8\n";
+    let config = case(d.path(), crack);
+    let run = d.path().join("run");
+    run_ok(&args("run", &config, &run, &[]));
+    let report = std::fs::read_to_string(run.join("report.html")).unwrap();
+    assert!(
+        report.contains("Fault: crack on pinion tooth 3."),
+        "{report}"
+    );
+    for (mode, label) in [("dynamic", "dynamic"), ("quasi_static", "quasi-static")] {
+        assert!(report.contains(&format!(
+            "Stage 1: wear of every tooth at the end of the {label} wear run"
+        )));
+        // The report's numbers against the wear study's own per-tooth table: the
+        // cracked tooth's deepest point, and the deepest of the other pinion teeth.
+        let (names, rows) = read_csv(&run.join(format!("wear/csv/teeth_wear_{mode}_stage1.csv")));
+        let deepest = |keep: &dyn Fn(&str) -> bool| {
+            let mut most = 0.0_f64;
+            for row in &rows {
+                for (n, v) in names.iter().zip(row) {
+                    if n.starts_with("pinion_tooth") && keep(n) {
+                        most = most.max(v.parse::<f64>().unwrap());
+                    }
+                }
+            }
+            most
+        };
+        let own = deepest(&|n| n == "pinion_tooth3_um");
+        let others = deepest(&|n| n != "pinion_tooth3_um");
+        let line = format!("{label}: the deepest wear of pinion tooth 3 is ");
+        let shown_own = number_after(&report, &line);
+        let shown_others = number_after(&report, " other teeth ");
+        // Shown to 4 significant digits: within half a unit of the fourth.
+        assert!((shown_own / own - 1.0).abs() < 1e-3, "{shown_own} vs {own}");
+        if mode == "dynamic" {
+            assert!(
+                (shown_others / others - 1.0).abs() < 1e-3,
+                "{shown_others} vs {others}"
+            );
+        }
+        // The cracked tooth is softer: it carries less of the load and wears less.
+        assert!(own < others, "{mode}: {own} vs {others}");
+    }
+}

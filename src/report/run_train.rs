@@ -113,12 +113,26 @@ pub fn train_run_artifacts_with(
                 }),
         );
         blocks.extend(embed_figures(&mut a, figs));
+        let mut teeth = Vec::new();
+        let st = &train.stages[m];
+        if let (Some(inputs), Some(tm)) = (&st.tooth_inputs, &st.teeth) {
+            teeth = faulty_stage_lines(n, stage, inputs, tm.periods(), &wear);
+            for r in &wear {
+                let path = format!("wear/teeth_wear_{}_stage{n}.png", r.mode.name());
+                let caption = format!(
+                    "Stage {n}: wear of every tooth at the end of the {} wear run (from the wear study).",
+                    r.mode.label()
+                );
+                blocks.extend(embed_existing(&mut a, &path, caption));
+            }
+        }
         stages.push(StageResults {
             n,
             model: stage,
             dynamics: dyn_meshes.get(m).unwrap_or(&Value::Null),
             wear,
             figures: blocks,
+            teeth,
         });
     }
     let spectrum = embed_existing(
@@ -137,6 +151,59 @@ pub fn train_run_artifacts_with(
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     Ok(a)
+}
+
+/// What the report says of a faulty stage `n` (its pair `stage`, its teeth `inputs`, its
+/// excitation of `periods` mesh periods): how its teeth are resolved, each fault, and per
+/// wear run the faulty tooth's deepest wear beside the deepest of its gear's other teeth.
+fn faulty_stage_lines(
+    n: usize,
+    stage: &crate::study::Model,
+    inputs: &crate::study::teeth::ToothInputs,
+    periods: usize,
+    wear: &[WearRun],
+) -> Vec<String> {
+    let (z1, z2) = (stage.pair.pinion.teeth, stage.pair.gear.teeth);
+    let mut lines = vec![format!(
+        "Stage {n}'s teeth are resolved one by one: its mesh cycle c engages pinion tooth c mod {z1} and gear tooth c mod {z2}, the stage's excitation repeats after {periods} of its mesh periods, and each tooth wears from its own contacts (docs/MODEL.md 9.10)."
+    )];
+    let deepest = |p: &[f64]| p.iter().fold(0.0_f64, |a, b| a.max(*b));
+    for f in inputs.faults.iter().filter(|f| f.changes_tooth()) {
+        lines.push(format!(
+            "Fault: {} on {} tooth {}.",
+            f.kind().name(),
+            f.gear.name(),
+            f.tooth
+        ));
+        for r in wear {
+            let Some(teeth) = r.last().and_then(|l| l.wear.teeth.as_ref()) else {
+                continue;
+            };
+            let profiles = match f.gear {
+                crate::config::case::Member::Pinion => &teeth.pinion_m,
+                crate::config::case::Member::Gear => &teeth.gear_m,
+            };
+            let Some(own) = profiles.get(f.tooth).map(|p| deepest(p)) else {
+                continue;
+            };
+            let others = profiles
+                .iter()
+                .enumerate()
+                .filter(|(t, _)| *t != f.tooth)
+                .map(|(_, p)| deepest(p))
+                .fold(0.0_f64, f64::max);
+            lines.push(format!(
+                "{}: the deepest wear of {} tooth {} is {} µm, of the {}'s other teeth {} µm.",
+                r.mode.label(),
+                f.gear.name(),
+                f.tooth,
+                crate::format::shown(own * 1e6),
+                f.gear.name(),
+                crate::format::shown(others * 1e6)
+            ));
+        }
+    }
+    lines
 }
 
 /// The DTE and mesh force of stage `m` (0-based) over [`SHOWN_PERIODS`] of its mesh

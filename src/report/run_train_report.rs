@@ -37,6 +37,8 @@ pub(crate) struct StageResults<'a> {
     /// The stage's mesh worn in each mode, as a single pair's run.
     pub wear: Vec<WearRun>,
     pub figures: Vec<FigureBlock>,
+    /// A faulty stage's lines on its teeth, fault and per-tooth wear (empty otherwise).
+    pub teeth: Vec<String>,
 }
 
 /// The train's overall ratio: the product of its stages' z_gear / z_pinion (input speed
@@ -198,6 +200,7 @@ fn stage_section(s: &StageResults) -> Section {
         at(d, "/mesh_force/dynamic_factor"),
         at(d, "/dte/max_um"),
     ));
+    paragraphs.extend(s.teeth.iter().cloned());
     Section {
         heading: format!(
             "Stage {}: z = {z1}/{z2}, m = {} mm",
