@@ -2,11 +2,11 @@
 //! the record is made from the helical response (a second path: `gearwear dynamics` on
 //! the same case), and a pair whose contact lines keep a constant total length
 //! (epsilon_beta = 1) excites the housing far less than the spur pair, as its mesh force
-//! fluctuates far less. A transient record is refused.
+//! fluctuates far less. Transient records: tests/helical_transient.rs.
 
 mod common;
 
-use common::{ok, rejected};
+use common::ok;
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -100,22 +100,4 @@ fn constant_contact_line_length_quiets_the_mesh_force_and_the_housing() {
             "channel {ch}: TSA RMS ratio {ratio} (force swing ratio {force_ratio})"
         );
     }
-}
-
-#[test]
-fn a_transient_record_of_a_helical_pair_is_refused() {
-    rejected(
-        &[
-            "signals",
-            "--set",
-            "gear.helix_angle_deg=15",
-            "--set",
-            "signals.ramp_end_speed_hz=40",
-        ],
-        &[
-            "gear.helix_angle_deg",
-            "signals.ramp_end_speed_hz",
-            "steady",
-        ],
-    );
 }

@@ -118,17 +118,18 @@ fn studies_on_the_planar_dynamics_refuse_a_helical_case() {
     // steady record (tests/helical_signals.rs), `gearwear sweep` both
     // (tests/helical_sweep.rs), `gearwear run` all of them (tests/helical_run.rs), and
     // `dataset`, `calibrate` and `predict` its wear model (tests/helical_dataset.rs): of
-    // `studies_on_the_dynamic_model` (tests/common) none is left. What is not built stands
-    // in: a transient record (a run-up) of a helical pair, refused naming the keys.
+    // `studies_on_the_dynamic_model` (tests/common) none is left, and `signals` records a
+    // run-up too (tests/helical_transient.rs). What the planar model does not take stands
+    // in: Pedrero's load-sharing law (a spur pair's), refused naming the keys.
     rejected(
         &[
             "signals",
             "--set",
             "gear.helix_angle_deg=12.5",
             "--set",
-            "signals.ramp_end_speed_hz=60",
+            "contact.load_sharing=pedrero",
         ],
-        &["gear.helix_angle_deg", "signals.ramp_end_speed_hz"],
+        &["gear.helix_angle_deg", "contact.load_sharing", "pedrero"],
     );
 }
 

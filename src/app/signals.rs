@@ -47,23 +47,14 @@ pub fn transfer_path_of(
 /// load fluctuation): only the steady record runs on a train so far.
 const TRAIN_TRANSIENT: &str = "this case is a gear train ([[stage]] tables) with a transient record (`signals.ramp_end_speed_hz` or `signals.torque_fluctuation_rms_nm` > 0): on a train, `gearwear signals` records the steady state only; remove those keys, or take a single pair ([gear], without [[stage]])";
 
-/// What the signals study says of a helical pair with a transient record: the planar
-/// helical model runs the steady record only so far.
-const HELICAL_TRANSIENT: &str = "with a transient record (`signals.ramp_end_speed_hz` or `signals.torque_fluctuation_rms_nm` > 0): a helical pair's `gearwear signals` records the steady state only so far; remove those keys, or set `gear.helix_angle_deg` = 0 for a spur pair";
-
-/// Refuse a transient record of a gear train or a helical pair (before the budget check).
+/// Refuse a transient record of a gear train (before the budget check); a helical pair's
+/// runs on its planar model (docs/MODEL.md 11.11).
 fn refuse_train_transient(case: &Case) -> Result<(), JobError> {
     if !crate::study::transient_signals::is_transient(case) {
         return Ok(());
     }
     if !case.stage.is_empty() {
         return Err(JobError::input(Problem::new(TRAIN_TRANSIENT.to_owned())));
-    }
-    if case.gear.helix_angle_deg != 0.0 {
-        return Err(JobError::input(Problem::new(format!(
-            "`gear.helix_angle_deg` = {} {HELICAL_TRANSIENT}",
-            case.gear.helix_angle_deg
-        ))));
     }
     Ok(())
 }

@@ -34,7 +34,7 @@ use std::f64::consts::PI;
 /// housing modes (10 time constants of a 2 % mode at 2 kHz: 40 ms) and the filter.
 pub(crate) const LEAD_S: f64 = 0.1;
 /// Integration past the record's end, s: more than the anti-alias filter's half-length.
-pub(crate) const TAIL_S: f64 = 0.01;
+pub const TAIL_S: f64 = 0.01;
 
 /// Bearing forces of an integration as means over the cells [i w, (i + 1) w) of the
 /// internal grid from t = 0 (step 1; `super::area` for why means, not point values).

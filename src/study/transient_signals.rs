@@ -101,7 +101,7 @@ pub fn drive_of(model: &Model, duration: f64) -> Drive {
 /// tenth. A fifth brings the transient within three times the steady state's error, for
 /// about 30 % more time (0.17 -> 0.22 s for this 0.2 s record with its starting steady
 /// state).
-pub(crate) const TRANSIENT_TOLERANCE_FACTOR: f64 = 0.2;
+pub const TRANSIENT_TOLERANCE_FACTOR: f64 = 0.2;
 
 /// The tightest transient tolerance: the lower end of `numerics.integration_tolerance`'s
 /// range, below which the error estimate's round-off can fail the first step.
@@ -129,11 +129,18 @@ pub fn transient_clean_record(
         input_speed_hz: fastest,
         ..case.load_point()
     });
-    let fast = Model::from_case(&fast_case).map_err(|e| DynamicsError::Setting(e.to_string()))?;
-    let gap = wear.pair_gap(&fast.grid);
+    // The model as `model` was built (a helical pair's planar model on its slices,
+    // docs/MODEL.md 11.11), and the gap of its wear state (a helical pair's per slice).
+    let fast = model
+        .rebuilt_like(&fast_case)
+        .map_err(|e| DynamicsError::Setting(e.to_string()))?;
+    let gap = fast.wear_gap(wear);
     let none = ExternalError::none();
+    // Per-tooth errors and faults as the steady state has them (a run-out under the
+    // drive follows the drive's angle, `TrainMesh::runout_at`).
+    let teeth = fast.tooth_mesh(wear);
     let sys = fast
-        .system(&gap, &none, fast.roughness_for(wear))
+        .system_for(&gap, &none, fast.roughness_for(wear), teeth.as_ref())
         .with_drive(&drive);
     let chain = &setup.chain;
     let rate = chain.acquisition.sampling_rate_hz * OVERSAMPLING as f64;

@@ -58,12 +58,16 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
     // replays the steady state, whose cost is the dynamics estimate's.
     let samples = seconds * s.sampling_rate_hz;
     let transient_seconds = if is_transient(case) {
-        let mesh_periods = fastest_mesh_frequency_hz(case) * seconds;
-        mesh_periods * case.numerics.steps_per_mesh_period as f64 * SECONDS_PER_STEP
+        transient_steps(case) * SECONDS_PER_STEP
     } else {
         0.0
     };
     let mut e = estimate(case, Job::Dynamics);
+    if is_transient(case) {
+        // The transient's model is built again at the fastest speed, a helical pair's
+        // teeth as contact lines with it (`study::transient_signals`).
+        e.terms.extend(super::helical::tooth_lines_term(case));
+    }
     e.terms.extend(super::planetary::ring_record_term(case));
     // A planetary set's ring-sensor record is sampled in time from one carrier
     // revolution (`study::planetary_signals`), with no harmonic synthesis.
@@ -213,6 +217,30 @@ fn record_periods(case: &Case) -> Option<(f64, f64)> {
         pinion
     };
     Some((period, shaft))
+}
+
+/// Accepted integrator steps of a transient record of `case` (a ramp or a load
+/// fluctuation; `study::transient_signals`), bounded above: every mesh period of the
+/// record and its tail (`signals::transient_record::TAIL_S`) at the fastest speed, at the
+/// error control's bound at the transient's tolerance
+/// (`adaptive_steps_per_period`(tol x `TRANSIENT_TOLERANCE_FACTOR`)) or the grid's
+/// `numerics.steps_per_mesh_period`, the larger. The error control, not the grid, sets
+/// the steps of a transient: counting the grid alone (200 a period) put a run-up's
+/// integration at about half of its measured time, for the spur pair as for a helical
+/// one (docs/MODEL.md 11.11; tests/helical_transient.rs counts them).
+pub fn transient_steps(case: &Case) -> f64 {
+    use crate::study::transient_signals::TRANSIENT_TOLERANCE_FACTOR;
+    let s = &case.signals;
+    let seconds = match s.record_length_unit {
+        crate::config::signals::LengthUnit::S => s.record_length,
+        crate::config::signals::LengthUnit::Revolutions => {
+            s.record_length / case.operating.input_speed_hz.max(1e-9)
+        }
+    } + crate::signals::transient_record::TAIL_S;
+    let tol = case.numerics.integration_tolerance * TRANSIENT_TOLERANCE_FACTOR;
+    let per_period = super::evaluation::adaptive_steps_per_period(tol)
+        .max(case.numerics.steps_per_mesh_period as f64);
+    fastest_mesh_frequency_hz(case) * seconds * per_period
 }
 
 /// The mesh frequency at the fastest input speed the case's record sees (a ramp's end or
