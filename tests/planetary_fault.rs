@@ -298,7 +298,8 @@ fn bad_faults_are_refused_naming_key_value_and_range() {
         }
         assert!(!e.contains("panicked") && !out.exists());
     }
-    // A pair's [[fault]] on a set, and the studies that cannot take a fault yet.
+    // A pair's [[fault]] on a set (its wear and run take `[[planetary.fault]]`:
+    // tests/planetary_fault_wear.rs).
     let pair_fault = "[planetary]\n[[fault]]\nkind = \"crack\"\ngear = \"pinion\"\ntooth = 2\ncrack_depth_mm = 1\n";
     let (_d, _, o) = run("dynamics", pair_fault);
     assert_eq!(o.status.code(), Some(2));
@@ -306,18 +307,6 @@ fn bad_faults_are_refused_naming_key_value_and_range() {
         stderr(&o).contains("`fault.gear` = \"pinion\"")
             && stderr(&o).contains("[[planetary.fault]]")
     );
-    let sun = set_with("kind = \"crack\"\ngear = \"sun\"\ntooth = 2\ncrack_depth_mm = 1");
-    for cmd in ["wear", "run"] {
-        let (_d, out, o) = run(cmd, &sun);
-        assert_eq!(o.status.code(), Some(2), "{cmd}: {}", stderr(&o));
-        assert!(
-            stderr(&o).contains("`planetary.fault.gear` = \"sun\"")
-                && stderr(&o).contains("not built"),
-            "{cmd}: {}",
-            stderr(&o)
-        );
-        assert!(!out.exists(), "{cmd} made its folder");
-    }
 }
 
 #[test]

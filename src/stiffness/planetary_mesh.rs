@@ -128,6 +128,39 @@ impl FaultTeeth {
     }
 }
 
+impl FaultTeeth {
+    /// Whether the pair of planet `planet`'s sun (`ring` false) or ring mesh that entered
+    /// contact at the table's cycle `entered` holds tooth `tooth` of `member` (module
+    /// docs: a sun tooth meets every planet's sun mesh, a ring tooth every ring mesh, a
+    /// planet's tooth its own two meshes).
+    pub fn holds(
+        &self,
+        member: FaultMember,
+        tooth: usize,
+        planet: usize,
+        ring: bool,
+        entered: i64,
+    ) -> bool {
+        let tooth = tooth as i64;
+        match (member, ring) {
+            (FaultMember::Sun, false) => {
+                (entered - self.sun_whole[planet]).rem_euclid(self.teeth[0]) == tooth
+            }
+            (FaultMember::Sun, true) | (FaultMember::Ring, false) => false,
+            (FaultMember::Ring, true) => {
+                (entered - self.ring_whole[planet]).rem_euclid(self.teeth[2]) == tooth
+            }
+            (FaultMember::Planet(n), false) => {
+                n == planet && entered.rem_euclid(self.teeth[1]) == tooth
+            }
+            (FaultMember::Planet(n), true) => {
+                n == planet
+                    && (entered + self.ring_to_planet[planet]).rem_euclid(self.teeth[1]) == tooth
+            }
+        }
+    }
+}
+
 /// Every mesh's stiffness over time in the carrier frame (see module docs).
 #[derive(Debug, Clone)]
 pub struct PlanetaryMeshes {
@@ -203,6 +236,27 @@ impl PlanetaryMeshes {
         self.fault.as_ref().map(|(f, _)| f)
     }
 
+    /// Whether pair `k` (counted from the newest, as [`Self::sun_pairs_decided`] and
+    /// [`Self::ring_pairs_decided`] yield them, decided at `cycles`) of planet `planet`'s
+    /// sun (`ring` false) or ring mesh at `cycles` holds tooth `tooth` of `member`; None
+    /// for a set without a tooth fault (its teeth are not told apart).
+    pub fn pair_holds(
+        &self,
+        (planet, ring): (usize, bool),
+        cycles: f64,
+        k: usize,
+        (member, tooth): (FaultMember, usize),
+    ) -> Option<bool> {
+        let (_, t) = self.fault.as_ref()?;
+        let off = if ring {
+            self.ring_offset[planet]
+        } else {
+            self.sun_offset[planet]
+        };
+        let entered = (cycles + off).floor() as i64 - k as i64;
+        Some(t.holds(member, tooth, planet, ring, entered))
+    }
+
     /// Mesh cycles over which every mesh's stiffness repeats: 1 with every tooth alike,
     /// z_s with a faulty sun tooth (it meets each planet once per sun revolution relative
     /// to the carrier), z_p with a faulty planet tooth (once per planet revolution), z_r
@@ -227,23 +281,7 @@ impl PlanetaryMeshes {
         let Some((f, t)) = &self.fault else {
             return 0.0;
         };
-        let holds = match (f.member, ring) {
-            (FaultMember::Sun, false) => {
-                (entered - t.sun_whole[planet]).rem_euclid(t.teeth[0]) == f.tooth as i64
-            }
-            (FaultMember::Sun, true) | (FaultMember::Ring, false) => false,
-            (FaultMember::Ring, true) => {
-                (entered - t.ring_whole[planet]).rem_euclid(t.teeth[2]) == f.tooth as i64
-            }
-            (FaultMember::Planet(n), false) => {
-                n == planet && entered.rem_euclid(t.teeth[1]) == f.tooth as i64
-            }
-            (FaultMember::Planet(n), true) => {
-                n == planet
-                    && (entered + t.ring_to_planet[planet]).rem_euclid(t.teeth[1]) == f.tooth as i64
-            }
-        };
-        if !holds {
+        if !t.holds(f.member, f.tooth, planet, ring, entered) {
             return 0.0;
         }
         let (table, contact, start, len) = if ring {

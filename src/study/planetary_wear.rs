@@ -30,11 +30,13 @@ use super::planetary_dynamics::PlanetaryDynamics;
 use crate::config::case::Case;
 use crate::contact::hertz::{effective_modulus_pa, HertzContact};
 use crate::dynamics::excitation::PairGap;
+use crate::dynamics::planetary_dynamic::MeshStiffnessSource;
 use crate::dynamics::planetary_steady::{
     solve_planetary_steady_state, PlanetaryDynamicsError, PlanetarySettings,
 };
 use crate::dynamics::response::{sorted_by_rho1, PathSample};
 use crate::geometry::ProfileGrid;
+use crate::stiffness::planetary_mesh::FaultMember;
 use crate::wear::{per_cycle_wear, WearIncrement, WearState};
 use std::f64::consts::PI;
 
@@ -86,13 +88,6 @@ impl PlanetaryWearModel {
         if case.wear.worn_geometry != crate::config::case::WornGeometry::Involute {
             return Err(ModelError(vec!["`wear.worn_geometry` = \"worn\" on a planetary set: its meshes take the involute geometry (wear opens gaps) so far; remove the key".into()]));
         }
-        if let Some(f) = case.planetary.as_ref().and_then(|p| p.active_fault()) {
-            return Err(ModelError(vec![format!(
-                "`planetary.fault.gear` = \"{}\" ({}): a planetary set's wear with a tooth fault is not built yet (each member's wear follows its meshes, not one tooth's); `gearwear dynamics`, `signals` and `sweep` of dynamics take the fault; remove the `[[planetary.fault]]` table to wear the set",
-                f.gear.name(),
-                f.who()
-            )]));
-        }
         let dynamics = PlanetaryDynamics::from_case(case)?;
         let set = &dynamics.study.set;
         let n = case.wear.points_per_profile.max(2) as usize;
@@ -139,6 +134,12 @@ impl PlanetaryWearModel {
         })
     }
 
+    /// Mesh periods the set's force history spans: a tooth fault's period P (z_s, z_p or
+    /// z_r, `PlanetaryMeshes::periods`; docs/MODEL.md 12.15), 1 with every tooth alike.
+    pub fn periods(&self) -> usize {
+        self.dynamics.model.source.periods().max(1)
+    }
+
     /// Number of planets N.
     pub fn planets(&self) -> usize {
         self.dynamics.study.set.planets()
@@ -162,8 +163,9 @@ impl PlanetaryWearModel {
     /// The steady force history of the set with every mesh's wear gap `gaps` (module
     /// order): dynamic (`dynamic` true; retried once from scratch with a ten times tighter
     /// integration tolerance, twice the samples and periods, as `wear_loop::solve_by`) or
-    /// quasi-static at `numerics.steps_per_mesh_period` instants of the mesh period (at
-    /// least 8, as the dynamic model samples it: `study::planetary_dynamics`).
+    /// quasi-static at `numerics.steps_per_mesh_period` instants of each mesh period (at
+    /// least 8, as the dynamic model samples it: `study::planetary_dynamics`), over the
+    /// [`Self::periods`] mesh periods the response repeats over.
     pub fn force_history(
         &self,
         dynamic: bool,
@@ -176,7 +178,9 @@ impl PlanetaryWearModel {
         let s = self.dynamics.settings;
         if !dynamic {
             let k = s.samples_per_period;
-            let cycles: Vec<f64> = (0..k).map(|i| i as f64 / k as f64).collect();
+            let cycles: Vec<f64> = (0..k * self.periods())
+                .map(|i| i as f64 / k as f64)
+                .collect();
             let forces_n = cycles
                 .iter()
                 .map(|c| sys.quasi_static_mesh_forces(*c))
@@ -203,12 +207,24 @@ impl PlanetaryWearModel {
     /// sorted by rho1: the pairs' loads, Hertz bands and surface speeds relative to the
     /// carrier. `gap` is the mesh's wear gap on its path.
     pub fn mesh_path(&self, j: usize, h: &ForceHistory, gap: &PairGap) -> Vec<PathSample> {
+        self.path_over(j, (&h.cycles, &h.forces_n), gap, None)
+    }
+
+    /// Mesh `j`'s contacts at the instants `cycles` with the mesh forces `forces` (N), as
+    /// [`Self::mesh_path`]; with `tooth` only the pairs holding that tooth of that
+    /// member (`PlanetaryMeshes::pair_holds`; none on a set without a tooth fault), the
+    /// loads still split over every pair in contact.
+    fn path_over(
+        &self,
+        j: usize,
+        (cycles, forces_n): (&[f64], &[Vec<f64>]),
+        gap: &PairGap,
+        tooth: Option<(FaultMember, usize)>,
+    ) -> Vec<PathSample> {
         let (kind, p) = self.kind_of(j);
         let meshes = match &self.dynamics.model.source {
-            crate::dynamics::planetary_dynamic::MeshStiffnessSource::Tables(m) => m,
-            crate::dynamics::planetary_dynamic::MeshStiffnessSource::Constant(_) => {
-                return Vec::new()
-            }
+            MeshStiffnessSource::Tables(m) => m,
+            MeshStiffnessSource::Constant(_) => return Vec::new(),
         };
         let set = &self.dynamics.study.set;
         let loa = [set.sun_planet.loa_length_m, set.ring_planet.loa_length_m][kind];
@@ -217,12 +233,16 @@ impl PlanetaryWearModel {
             _ => [self.relative_rad_s[1], self.relative_rad_s[2]],
         };
         let mut path = Vec::new();
-        for (c, forces) in h.cycles.iter().zip(&h.forces_n) {
+        for (c, forces) in cycles.iter().zip(forces_n) {
             let pairs: Vec<(f64, f64)> = match kind {
                 0 => meshes.sun_pairs_decided(p, *c, *c).collect(),
                 _ => meshes.ring_pairs_decided(p, *c, *c).collect(),
             };
-            for (rho1, load) in pair_loads(&pairs, forces[j], gap) {
+            for (k, (rho1, load)) in pair_loads(&pairs, forces[j], gap).into_iter().enumerate() {
+                if tooth.is_some_and(|t| meshes.pair_holds((p, kind == 1), *c, k, t) != Some(true))
+                {
+                    continue;
+                }
                 // Sun mesh: rho2 = N1N2 - rho1 (convex); ring mesh: rho2 = rho1 + N1N2
                 // (concave ring), 1/R = 1/rho1 - 1/rho2.
                 let (rho2, radius) = match kind {
@@ -250,16 +270,80 @@ impl PlanetaryWearModel {
     }
 
     /// Mesh `j`'s Archard wear per pinion cycle (relative to the carrier) over the
-    /// history `h` (paper eq. 14-17, `wear::archard`), with its wear gap `gap`.
+    /// history `h` (paper eq. 14-17, `wear::archard`), with its wear gap `gap`: with a
+    /// tooth fault the mean of the history's [`Self::periods`] mesh periods' increments,
+    /// each from its own period's contacts (every position on the path is passed once a
+    /// mesh period, by the teeth of that period; over the fault's period by every tooth
+    /// of the faulty member: docs/MODEL.md 12.15).
     pub fn mesh_increment(&self, j: usize, h: &ForceHistory, gap: &PairGap) -> WearIncrement {
+        let periods = self.periods();
+        let samples = h.cycles.len();
+        if periods == 1 || samples < periods {
+            return self.increment_of(j, &self.mesh_path(j, h, gap));
+        }
+        // The recorded samples are equally spaced from the period's start (the dynamic
+        // response's and the quasi-static history's), a whole number per mesh period.
+        let per = samples / periods;
+        let increments: Vec<WearIncrement> = (0..periods)
+            .map(|k| {
+                let r = k * per..(k + 1) * per;
+                let path = self.path_over(j, (&h.cycles[r.clone()], &h.forces_n[r]), gap, None);
+                self.increment_of(j, &path)
+            })
+            .collect();
+        mean_increment(&increments)
+    }
+
+    /// Tooth `tooth` of the faulty member's wear per pinion cycle on mesh `j` from its
+    /// own contacts over the history `h` of a set with a tooth fault (one passage of
+    /// every mesh that meets it over the fault's period): None without a fault or when
+    /// mesh `j` never meets that member's teeth (docs/MODEL.md 12.15).
+    pub fn tooth_increment(
+        &self,
+        j: usize,
+        h: &ForceHistory,
+        gap: &PairGap,
+        tooth: usize,
+    ) -> Option<WearIncrement> {
+        let MeshStiffnessSource::Tables(m) = &self.dynamics.model.source else {
+            return None;
+        };
+        let member = m.fault()?.member;
+        let path = self.path_over(j, (&h.cycles, &h.forces_n), gap, Some((member, tooth)));
+        (!path.is_empty()).then(|| self.increment_of(j, &path))
+    }
+
+    /// The Archard wear per pinion cycle of mesh `j`'s contacts `path` (paper eq. 14-17,
+    /// the gear's share by z1 / z2).
+    fn increment_of(&self, j: usize, path: &[PathSample]) -> WearIncrement {
         let (kind, _) = self.kind_of(j);
         let [z1, z2] = self.teeth(kind);
         per_cycle_wear(
             &self.grids[kind],
-            &self.mesh_path(j, h, gap),
+            path,
             self.coefficient_m2_per_n,
             z1 as f64 / z2 as f64,
         )
+    }
+}
+
+/// The mean of increments on one grid, point by point (each of its four profiles).
+fn mean_increment(increments: &[WearIncrement]) -> WearIncrement {
+    let n = increments.len().max(1) as f64;
+    let mean = |f: fn(&WearIncrement) -> &Vec<f64>| {
+        let len = increments.first().map_or(0, |i| f(i).len());
+        sum_of(increments.iter().map(f), len)
+            .into_iter()
+            .map(|x| x / n)
+            .collect()
+    };
+    WearIncrement {
+        pinion_m: mean(|i| &i.pinion_m),
+        gear_m: mean(|i| &i.gear_m),
+        sliding_pinion_m: mean(|i| &i.sliding_pinion_m),
+        sliding_gear_m: mean(|i| &i.sliding_gear_m),
+        teeth: None,
+        slices: None,
     }
 }
 
@@ -439,6 +523,46 @@ pub fn member_flanks(
         on(gr, true, rbr, br, zr),
     ));
     out
+}
+
+/// The wear per input-member revolution of tooth `tooth` of the faulty member from its
+/// own contacts over the history `h` (the gaps `gaps`, module order), per flank as
+/// [`member_flanks`] names them: the sun's (its N sun meshes' pinion wear), a planet's
+/// sun-side and ring-side flank, the ring's (its N ring meshes' gear wear), each at its
+/// grid's points (docs/MODEL.md 12.15); None without a tooth fault.
+pub fn tooth_rates(
+    model: &PlanetaryWearModel,
+    h: &ForceHistory,
+    gaps: &[PairGap],
+    tooth: usize,
+) -> Option<Vec<(&'static str, Vec<f64>)>> {
+    let MeshStiffnessSource::Tables(m) = &model.dynamics.model.source else {
+        return None;
+    };
+    let n = model.planets();
+    let [cs, cp] = model.pinion_cycles_per_input;
+    let inc = |j: usize| model.tooth_increment(j, h, &gaps[j], tooth);
+    let summed = |js: std::ops::Range<usize>, pinion: bool, c: f64| -> Option<Vec<f64>> {
+        let incs: Vec<WearIncrement> = js.map(inc).collect::<Option<_>>()?;
+        let len = incs.first().map_or(0, |i| i.pinion_m.len());
+        let side = |i: &WearIncrement| {
+            if pinion {
+                i.pinion_m.clone()
+            } else {
+                i.gear_m.clone()
+            }
+        };
+        let v: Vec<Vec<f64>> = incs.iter().map(side).collect();
+        Some(sum_of(v.iter(), len).into_iter().map(|x| x * c).collect())
+    };
+    match m.fault()?.member {
+        FaultMember::Sun => Some(vec![("sun", summed(0..n, true, cs)?)]),
+        FaultMember::Planet(p) => Some(vec![
+            ("sun_side", summed(p..p + 1, false, cs)?),
+            ("ring_side", summed(n + p..n + p + 1, true, cp)?),
+        ]),
+        FaultMember::Ring => Some(vec![("ring", summed(n..2 * n, false, cp)?)]),
+    }
 }
 
 /// Where a flank lies: its grid's radii of curvature and spacing, its base radius (m),

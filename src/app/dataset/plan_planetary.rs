@@ -38,7 +38,7 @@ fn planetary_case_problems(req: &DatasetRequest, case: &Case) -> Vec<String> {
         p.push(format!("`signals.sensor_stage` = {k}: a gear train's stage; a planetary set has none; remove the key"));
     }
     if !case.fault.is_empty() {
-        p.push(format!("{} `[[fault]]` table(s): a fault of a pair's tooth; a planetary set's dataset records its wear only so far; remove them", case.fault.len()));
+        p.push(format!("{} `[[fault]]` table(s): a fault of a pair's tooth; a planetary set's tooth fault is a `[[planetary.fault]]` table in `[condition.case]`; remove them", case.fault.len()));
     }
     if let Err(e) = PlanetaryWearModel::from_case(case) {
         p.extend(e.0);
@@ -146,6 +146,6 @@ pub(super) fn planetary_description(body: &mut Value, d: &DatasetDesign) {
         "planets": n,
         "members": members,
         "conditions": conditions,
-        "labels": "a planetary set's record: `cycles` and `remaining_cycles` are input cycles (revolutions of the input member, `planetary.input`); `mesh_hz` the set's mesh frequency z_r |f_carrier - f_ring|; `max_wear_pinion_um` the deepest wear of the meshes' driving flanks (the sun's, each planet's ring side), `max_wear_gear_um` of their driven flanks (each planet's sun side, the ring's); each member's deepest wear and tooth contacts in `<name>_<member>` columns (sidecar: `members`), the deepest-worn member in `limiting_member`; the signal is the ring sensor's (`gearwear signals` on the set, force in N) with a carrier tachometer; indicators: RMS, crest factor and kurtosis of the record (no shaft TSA for a set)",
+        "labels": "a planetary set's record: `cycles` and `remaining_cycles` are input cycles (revolutions of the input member, `planetary.input`); `mesh_hz` the set's mesh frequency z_r |f_carrier - f_ring|; `max_wear_pinion_um` the deepest wear of the meshes' driving flanks (the sun's, each planet's ring side), `max_wear_gear_um` of their driven flanks (each planet's sun side, the ring's); each member's deepest wear and tooth contacts in `<name>_<member>` columns (sidecar: `members`), the deepest-worn member in `limiting_member`; the signal is the ring sensor's (`gearwear signals` on the set, force in N) with a carrier tachometer; indicators: RMS, crest factor and kurtosis of the record (no shaft TSA for a set); a condition whose case has `[[planetary.fault]]` tables (a sun, planet or ring tooth's crack, spall or broken tip) is labelled `fault` by their kinds, its wear is the faulty set's (the mean over each member's teeth, docs/MODEL.md 12.15), its signal the faulty set's, and its sidecar holds the tables under `planetary_faults`",
     });
 }

@@ -43,7 +43,7 @@ pub fn estimate_planetary_wear(
     let updates = planetary_wear_updates(model, wear);
     let meshes = 2.0 * model.planets() as f64;
     let points = wear.points_per_profile.max(2) as f64;
-    Estimate::of_terms(vec![Term {
+    let mut terms = vec![Term {
         what: "the planetary set's wear updates (a response of the whole set each)",
         seconds: updates * seconds_per_update(model, modes),
         bytes: modes.len() as f64 * updates * meshes * points * BYTES_PER_MESH_POINT,
@@ -54,7 +54,57 @@ pub fn estimate_planetary_wear(
             "wear.points_per_profile",
             "planetary.planets",
         ],
-    }])
+    }];
+    terms.extend(wear_fault_term(model, modes, updates));
+    Estimate::of_terms(terms)
+}
+
+/// The wear study's term for a set with a tooth fault (docs/MODEL.md 12.15; None
+/// without one): each dynamic update integrates, beyond the healthy set's search, a
+/// run-in and at least one pass over the fault's period P mesh periods, counted 3 P
+/// periods (as [`fault_term`]) of S_d steps (`evaluation::dynamic_steps_per_period`,
+/// from the model's settings) at [`SECONDS_PER_STEP_4`] times the planets' share and
+/// [`SLOWER_MACHINE_FACTOR`]; each quasi-static update P times the healthy one's
+/// equilibria; each mode's response of P periods (its states, [q, q'] of the 3 (N + 3)
+/// coordinates, and 2 N mesh forces per sample) held at once while its meshes wear.
+/// Measured on the built-in set with a sun tooth crack (P = 24, 2026-11-30): a dynamic
+/// update took 1.3 s of CPU more than the healthy one (47 913 steps, 47 mesh periods),
+/// counted here 4.0 s.
+fn wear_fault_term(model: &PlanetaryWearModel, modes: &[WearMode], updates: f64) -> Option<Term> {
+    let p = model.periods();
+    if p <= 1 {
+        return None;
+    }
+    let s = &model.dynamics.settings;
+    let s_dyn = (s.samples_per_period as f64).max(super::evaluation::adaptive_steps_per_period(
+        s.integration_tolerance,
+    ));
+    let planets = model.planets() as f64;
+    let per_step = SECONDS_PER_STEP_4 * (planets + 3.0) / 7.0 * SLOWER_MACHINE_FACTOR;
+    let scale = planets / 4.0 * SLOWER_MACHINE_FACTOR;
+    let per_update: f64 = modes
+        .iter()
+        .map(|m| match m {
+            WearMode::Dynamic => 3.0 * p as f64 * s_dyn * per_step,
+            WearMode::QuasiStatic => (p - 1) as f64 * SECONDS_PER_QUASI_STATIC_UPDATE_4 * scale,
+        })
+        .sum();
+    // The dynamic retry (`PlanetaryWearModel::force_history`) records twice the samples.
+    let values = 6.0 * (planets + 3.0) + 2.0 * planets + 1.0;
+    let samples = 2.0 * p as f64 * s.samples_per_period as f64;
+    Some(Term {
+        what: "the planetary set's tooth fault in its wear (every update's response over the fault's period, z_s, z_p or z_r mesh periods)",
+        seconds: updates * per_update,
+        bytes: modes.len() as f64 * samples * values * BYTES_PER_SAMPLE_VALUE,
+        keys: &[
+            "planetary.fault.gear",
+            "planetary.teeth_sun",
+            "planetary.teeth_planet",
+            "planetary.teeth_ring",
+            "numerics.steps_per_mesh_period",
+            "wear.total_cycles",
+        ],
+    })
 }
 
 /// CPU seconds of one update of the set in every one of `modes`, at the measured rates
@@ -162,7 +212,9 @@ pub fn estimate_planetary_spectrum_wear(
             .map(|p| (models.len() as f64, p as f64))
     });
     let (bins, kept) = counts.unwrap_or((f64::INFINITY, f64::INFINITY));
-    Estimate::of_terms(vec![Term {
+    // A tooth fault's cost at every bin's response (the bins' sets share the fault).
+    let fault = wear_fault_term(first, modes, updates * bins);
+    let mut terms = vec![Term {
         what: "the planetary set's wear updates under the load spectrum (a response of the whole set at every bin each)",
         seconds: updates * bins * per_update,
         bytes: updates * kept * BYTES_PER_MESH_POINT,
@@ -174,7 +226,9 @@ pub fn estimate_planetary_spectrum_wear(
             "wear.points_per_profile",
             "planetary.planets",
         ],
-    }])
+    }];
+    terms.extend(fault);
+    Estimate::of_terms(terms)
 }
 
 /// Largest size a bin's mesh log of a planetary study under a spectrum may have when

@@ -406,13 +406,19 @@ fn conditions(
 }
 
 /// What a condition's case models, as its `fault` label: the kinds of its `[[fault]]`
-/// tables ("crack", "spall", "broken_tip"; several joined by "+", in the order of the
-/// tables), else "tooth_errors" when `[teeth]` gives manufacturing errors, else "none".
+/// tables, then of a planetary set's `[[planetary.fault]]` tables ("crack", "spall",
+/// "broken_tip"; several joined by "+", in the order of the tables), else "tooth_errors" when `[teeth]` gives manufacturing errors, else "none".
 pub fn fault_label(case: &Case) -> String {
     let mut kinds: Vec<&str> = Vec::new();
-    for f in &case.fault {
-        if !kinds.contains(&f.kind().name()) {
-            kinds.push(f.kind().name());
+    let set_faults = case.planetary.iter().flat_map(|p| p.fault.iter());
+    for k in case
+        .fault
+        .iter()
+        .map(|f| f.kind().name())
+        .chain(set_faults.map(|f| f.kind.name()))
+    {
+        if !kinds.contains(&k) {
+            kinds.push(k);
         }
     }
     if !kinds.is_empty() {

@@ -67,7 +67,7 @@ pub(super) fn label_problems(c: &ConditionFile, label: &str, at: &str) -> Vec<St
     if let Some(given) = &c.fault {
         if given != label {
             p.push(format!(
-                "{at}: `fault` = {given:?} is not what the condition's case models ({label:?}): the label is derived from the case's `[[fault]]` tables (\"crack\", \"spall\", \"broken_tip\") and `[teeth]` errors (\"tooth_errors\"), \"none\" without either; give `fault = {label:?}` or leave it out"
+                "{at}: `fault` = {given:?} is not what the condition's case models ({label:?}): the label is derived from the case's `[[fault]]` (or a planetary set's `[[planetary.fault]]`) tables (\"crack\", \"spall\", \"broken_tip\") and `[teeth]` errors (\"tooth_errors\"), \"none\" without either; give `fault = {label:?}` or leave it out"
             ));
         }
     }
@@ -76,7 +76,7 @@ pub(super) fn label_problems(c: &ConditionFile, label: &str, at: &str) -> Vec<St
             p.push(format!("{at}: `severity` = {s} must be a finite number"))
         }
         ("none", Some(s)) if s != 0.0 => p.push(format!(
-            "{at}: `severity` = {s} but the condition's case models no fault: a severity needs a `[[fault]]` table or `[teeth]` errors in `[condition.case]` (or leave it out: 0)"
+            "{at}: `severity` = {s} but the condition's case models no fault: a severity needs a `[[fault]]` table (a set's `[[planetary.fault]]`) or `[teeth]` errors in `[condition.case]` (or leave it out: 0)"
         )),
         ("none", _) => {}
         (_, Some(s)) if s < 0.0 => p.push(format!(

@@ -124,6 +124,12 @@ fn labels_of(
         fault: inp.condition.fault.clone(),
         severity: inp.condition.severity,
         faults: Vec::new(),
+        planetary_faults: inp
+            .condition
+            .case
+            .planetary
+            .as_ref()
+            .map_or_else(Vec::new, |s| s.fault.clone()),
         trajectory_state: index.state,
         cycles: inp.cycles,
         max_wear_pinion_um: pinion * 1e6,

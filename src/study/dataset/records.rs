@@ -36,6 +36,11 @@ pub struct RecordLabels {
     /// gear, tooth, sizes in the units their keys name); absent without a fault.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<crate::config::teeth::FaultTable>,
+    /// A planetary set's `[[planetary.fault]]` tables as the case gives them (member,
+    /// planet, tooth, kind, sizes in the units their keys name; docs/MODEL.md 12.15);
+    /// absent without one.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub planetary_faults: Vec<crate::config::planetary_fault::PlanetaryFault>,
     /// Index of the state along the condition's trajectory.
     pub trajectory_state: usize,
     /// Pinion load cycles of the state.
@@ -180,6 +185,7 @@ fn labels_without_indicators(
         fault: inp.condition.fault.clone(),
         severity: inp.condition.severity,
         faults: case.fault.iter().map(|f| f.table().clone()).collect(),
+        planetary_faults: Vec::new(),
         trajectory_state: index.state,
         cycles: inp.cycles,
         max_wear_pinion_um: wear.max_pinion_um,
