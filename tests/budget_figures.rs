@@ -49,7 +49,8 @@ fn pngs(dir: &Path, into: &mut Vec<u32>) {
 fn written(command: &str, config: Option<&str>, sets: &[&str]) -> Vec<u32> {
     let out = tempfile::tempdir().unwrap();
     let mut c = Command::new(env!("CARGO_BIN_EXE_gearwear"));
-    c.args([command, "-q", "--no-budget", "--out"]).arg(out.path());
+    c.args([command, "-q", "--no-budget", "--out"])
+        .arg(out.path());
     if let Some(f) = config {
         c.arg("--config").arg(examples().join(f));
     }
@@ -57,14 +58,20 @@ fn written(command: &str, config: Option<&str>, sets: &[&str]) -> Vec<u32> {
         c.args(["--set", s]);
     }
     let o = c.output().unwrap();
-    assert!(o.status.success(), "{command} {config:?}: {}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{command} {config:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let mut h = Vec::new();
     pngs(out.path(), &mut h);
     h
 }
 
 fn case(config: Option<&str>, sets: &[&str]) -> gearwear::config::case::Case {
-    let text = config.map_or(String::new(), |f| std::fs::read_to_string(examples().join(f)).unwrap());
+    let text = config.map_or(String::new(), |f| {
+        std::fs::read_to_string(examples().join(f)).unwrap()
+    });
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
     load_case(&text, &sets).unwrap()
 }
@@ -88,12 +95,32 @@ fn check(what: &str, counted: FigureCount, heights: &[u32]) {
 fn all_jobs(config: Option<&str>, with_run: bool) {
     let c = case(config, &[CYCLES]);
     let name = config.unwrap_or("built-in case");
-    check(&format!("stiffness, {name}"), stiffness_figures(&c), &written("stiffness", config, &[]));
-    check(&format!("dynamics, {name}"), dynamics_figures(&c), &written("dynamics", config, &[]));
-    check(&format!("signals, {name}"), signals_figures(&c), &written("signals", config, &[]));
-    check(&format!("wear, {name}"), wear_figures(&c, 2), &written("wear", config, &[CYCLES]));
+    check(
+        &format!("stiffness, {name}"),
+        stiffness_figures(&c),
+        &written("stiffness", config, &[]),
+    );
+    check(
+        &format!("dynamics, {name}"),
+        dynamics_figures(&c),
+        &written("dynamics", config, &[]),
+    );
+    check(
+        &format!("signals, {name}"),
+        signals_figures(&c),
+        &written("signals", config, &[]),
+    );
+    check(
+        &format!("wear, {name}"),
+        wear_figures(&c, 2),
+        &written("wear", config, &[CYCLES]),
+    );
     if with_run {
-        check(&format!("run, {name}"), run_figures(&c), &written("run", config, &[CYCLES]));
+        check(
+            &format!("run, {name}"),
+            run_figures(&c),
+            &written("run", config, &[CYCLES]),
+        );
     }
 }
 
@@ -124,5 +151,9 @@ fn a_tooth_resolved_case() {
 fn a_run_up_record() {
     let sets = ["signals.ramp_end_speed_hz=40", "signals.record_length=0.5"];
     let c = case(None, &sets);
-    check("signals, run-up", signals_figures(&c), &written("signals", None, &sets));
+    check(
+        "signals, run-up",
+        signals_figures(&c),
+        &written("signals", None, &sets),
+    );
 }

@@ -32,7 +32,10 @@ fn contact_loss_depth_um(text: &str, sets: &[&str]) -> f64 {
     let o = c.output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
-    assert!(summary.contains("out of contact"), "{sets:?}: no contact loss");
+    assert!(
+        summary.contains("out of contact"),
+        "{sets:?}: no contact loss"
+    );
     let at = summary.find("maximum pinion wear ").unwrap() + "maximum pinion wear ".len();
     let num: String = summary[at..]
         .chars()
@@ -45,9 +48,18 @@ fn check(what: &str, text: &str, sets: &[&str], most: f64) {
     let owned: Vec<String> = [K].iter().chain(sets).map(|s| s.to_string()).collect();
     let counted = stop_depth_m(&load_case(text, &owned).unwrap()) * 1e6;
     let real = contact_loss_depth_um(text, sets);
-    eprintln!("{what}: stops at {real:.2} um, counted to {counted:.2} um ({:.2})", counted / real);
-    assert!(counted >= real, "{what}: counted to {counted} um, the run went to {real} um");
-    assert!(counted <= most * real, "{what}: counted to {counted} um against {real} um");
+    eprintln!(
+        "{what}: stops at {real:.2} um, counted to {counted:.2} um ({:.2})",
+        counted / real
+    );
+    assert!(
+        counted >= real,
+        "{what}: counted to {counted} um, the run went to {real} um"
+    );
+    assert!(
+        counted <= most * real,
+        "{what}: counted to {counted} um against {real} um"
+    );
 }
 
 #[test]

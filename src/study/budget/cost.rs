@@ -312,8 +312,8 @@ impl FigureLoad {
             one_panel: 0.0,
             taller: self.figures_at_once,
         });
-        let pixels =
-            drawn.one_panel * self.pixels_per_one_panel_figure + drawn.taller * self.pixels_per_figure;
+        let pixels = drawn.one_panel * self.pixels_per_one_panel_figure
+            + drawn.taller * self.pixels_per_figure;
         let at_once = drawn.total().min(self.figures_at_once);
         (self.pixels_per_figure > 0.0 && drawn.total() > 0.0).then_some(Term {
             what: "the figures at the requested size",

@@ -39,8 +39,8 @@
 //! gear train keep their initial rate for the whole run (no running-in counted).
 
 use crate::config::case::Case;
-use crate::dynamics::params::OperatingPoint;
 use crate::contact::load_sharing::pedrero_share_at;
+use crate::dynamics::params::OperatingPoint;
 use crate::geometry::GearPair;
 
 /// How much faster than the settled rate a worn pair may wear, at most up to its initial
