@@ -14,7 +14,8 @@ use crate::study::budget::{estimate, Budget, FigureLoad, Job};
 pub const DEFAULT: Option<Budget> = Some(Budget::DEFAULT);
 
 /// `budget` with the job's PNG figures counted at the size `figures` asks for
-/// (`study::budget::FigureLoad`: the tallest figure's raster on each thread; issue 33: a
+/// (`study::budget::FigureLoad`: the tallest figure's raster on each thread, every figure
+/// the job draws in time, `study::budget::figures`; issue 33: a
 /// figure size of 8192 x 4096 took 0.26 GB against 0.020 GB estimated). Nothing is added
 /// at the default size, for SVG alone, or for options the job refuses when it resolves
 /// them (before any work).
@@ -118,7 +119,7 @@ mod tests {
         let out = FigureOutput::parse("png", Some("8192x4096")).unwrap();
         let (w, h) = out.size_of((PLOT_W, plot_height(2)));
         let threads = rayon::current_num_threads() as f64;
-        let term = load.term().unwrap();
+        let term = load.term(None).unwrap();
         assert!(term.bytes >= threads * 3.0 * f64::from(w) * f64::from(h));
         // ... and at most the raster bound's 8192 x 8192 pixels on each thread at the
         // counted 4 bytes.

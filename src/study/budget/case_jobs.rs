@@ -307,6 +307,26 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         wear_updates_dynamic: c.u_d,
         wear_updates_quasi_static: c.u_q,
         terms,
+        figures_drawn: figures_of(case, job),
+    }
+}
+
+/// The PNG figures `job` draws on `case` ([`super::figures`]); None for a sweep's case
+/// (the sweep's own figures are drawn once, after its cases).
+fn figures_of(case: &Case, job: Job) -> Option<super::cost::FigureCount> {
+    use super::figures as f;
+    match job {
+        Job::Stiffness => Some(f::stiffness_figures(case)),
+        Job::Dynamics => Some(f::dynamics_figures(case)),
+        Job::Wear {
+            dynamic,
+            quasi_static,
+        } => Some(f::wear_figures(
+            case,
+            u32::from(dynamic) + u32::from(quasi_static),
+        )),
+        Job::Run => Some(f::run_figures(case)),
+        Job::SweepCase(_) => None,
     }
 }
 

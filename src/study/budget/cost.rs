@@ -94,6 +94,11 @@ pub struct Estimate {
     pub wear_updates_quasi_static: f64,
     /// The contributions to the cost, each with the keys that drive it.
     pub terms: Vec<Term>,
+    /// PNG figures the job draws (a bound from its case: `super::figures`), each
+    /// counted in time when the budget asks for figures of a larger size
+    /// ([`FigureLoad::term`]); None for a job whose figures are not counted one by one
+    /// (then only those drawn at once are).
+    pub figures_drawn: Option<FigureCount>,
 }
 
 impl Estimate {
@@ -108,6 +113,15 @@ impl Estimate {
             wear_updates_dynamic: 0.0,
             wear_updates_quasi_static: 0.0,
             terms,
+            figures_drawn: None,
+        }
+    }
+
+    /// This estimate with the job's `figures` PNG figures counted (`super::figures`).
+    pub fn drawing(self, figures: FigureCount) -> Estimate {
+        Estimate {
+            figures_drawn: Some(figures),
+            ..self
         }
     }
 
@@ -123,7 +137,7 @@ impl Estimate {
 
     /// Ok, or why the run is over `budget`, naming the keys that drive its cost.
     pub fn check(&self, budget: &Budget) -> Result<(), OverBudget> {
-        match budget.figures.term() {
+        match budget.figures.term(self.figures_drawn) {
             Some(t) if !self.terms.is_empty() => {
                 let mut with = self.clone();
                 with.terms.push(t);
@@ -194,28 +208,66 @@ impl Estimate {
 /// pixels), 2.8 at 4096x2048 (60 MB, 2.1e7), 2.9 at 8192x4096 (247 MB, 8.5e7); counted 4.
 pub const BYTES_PER_FIGURE_PIXEL: f64 = 4.0;
 
-/// CPU seconds per pixel of a PNG figure drawn and encoded: measured 7.9e-9 (the same
-/// runs: 0.69 s of CPU at 8192x4096 against 0.02 s at the default size, 8.5e7 pixels
-/// more), counted 1e-8. Not times `SLOWER_MACHINE_FACTOR`: the pixels counted are
-/// already a bound (the tallest figure's on each thread, 1.3-1.6 times the pixels of
-/// `stiffness`'s two figures; with the factor, 4.0-4.5 times their CPU time).
-pub const SECONDS_PER_FIGURE_PIXEL: f64 = 1e-8;
+/// CPU seconds per pixel of a PNG figure drawn and encoded, measured 2026-11-30 (CPU
+/// time at 8192 x 4096 less that at the default size, over the figures' pixels): 8.3e-9
+/// for `stiffness`'s two figures (0.70 s, 8.5e7 pixels), 1.6e-8 for `signals`' three,
+/// the densest curves (2.78 s, 1.74e8 pixels); counted 1.6e-8, on every figure a job
+/// draws (`super::figures`) at its class's pixels (a taller figure at the tallest's,
+/// 1.16 times `signals`' own pixels). Not times `SLOWER_MACHINE_FACTOR`: the rate is
+/// the densest figures' and the pixels a bound (docs/RELIABILITY.md has the table).
+pub const SECONDS_PER_FIGURE_PIXEL: f64 = 1.6e-8;
 
 /// Default height of the tallest figure counted, px: four stacked panels (40 + 300 x 4,
 /// `report::figure_output::plot_height`); the figures of every command but a few
 /// (below) have at most three (`signals`' TSA, 900 px).
 pub const TALLEST_DEFAULT_FIGURE_PX: f64 = 1240.0;
 
+/// PNG figures a job draws, in two classes (`super::figures`): figures of one panel
+/// (drawn at the requested size) and taller ones (counted at the tallest figure's size).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FigureCount {
+    /// Figures of one panel.
+    pub one_panel: f64,
+    /// Figures of several panels.
+    pub taller: f64,
+}
+
+impl FigureCount {
+    /// Every figure.
+    pub fn total(&self) -> f64 {
+        self.one_panel + self.taller
+    }
+
+    /// These figures and `o`'s.
+    pub fn plus(self, o: FigureCount) -> FigureCount {
+        FigureCount {
+            one_panel: self.one_panel + o.one_panel,
+            taller: self.taller + o.taller,
+        }
+    }
+
+    /// These figures `n` times over.
+    pub fn times(self, n: f64) -> FigureCount {
+        FigureCount {
+            one_panel: self.one_panel * n,
+            taller: self.taller * n,
+        }
+    }
+}
+
 /// PNG figures of a requested size as the budget counts them (plain numbers, so that the
-/// cost model imports nothing of the report layer): the pixels of the tallest figure a
-/// command draws at that size, and how many figures are drawn at once (the threads:
-/// `report::artifacts::stage_figures` renders them in parallel). At the default size
-/// nothing is added: the measured base and rates hold the default figures.
+/// cost model imports nothing of the report layer): the pixels of a one-panel figure and
+/// of the tallest figure a command draws at that size, and how many figures are drawn at
+/// once (the threads: `report::artifacts::stage_figures` renders them in parallel). At
+/// the default size nothing is added: the measured base and rates hold the default
+/// figures.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FigureLoad {
     /// Pixels of the tallest figure at the requested size.
     pub pixels_per_figure: f64,
-    /// Figures drawn at once (and counted in time).
+    /// Pixels of a one-panel figure at the requested size.
+    pub pixels_per_one_panel_figure: f64,
+    /// Figures drawn at once.
     pub figures_at_once: f64,
 }
 
@@ -223,6 +275,7 @@ impl FigureLoad {
     /// No figure beyond the default size.
     pub const NONE: FigureLoad = FigureLoad {
         pixels_per_figure: 0.0,
+        pixels_per_one_panel_figure: 0.0,
         figures_at_once: 0.0,
     };
 
@@ -240,21 +293,32 @@ impl FigureLoad {
         let width = (u64::from(w)).min(u64::from(max_side_px));
         let tall = TALLEST_DEFAULT_FIGURE_PX * f64::from(h) / f64::from(default_px.1.max(1));
         let height = (tall.round() as u64).clamp(1, u64::from(max_side_px));
+        let one = u64::from(h).clamp(1, u64::from(max_side_px));
         FigureLoad {
             pixels_per_figure: width.saturating_mul(height) as f64,
+            pixels_per_one_panel_figure: width.saturating_mul(one) as f64,
             figures_at_once: threads.max(1) as f64,
         }
     }
 
-    /// The term of these figures, None when there are none: the figures drawn at once
-    /// hold their rasters together; their time is counted for those figures (a command
-    /// that draws more figures at a large size takes more time than counted:
-    /// docs/RELIABILITY.md).
-    pub fn term(&self) -> Option<Term> {
-        (self.pixels_per_figure > 0.0).then_some(Term {
+    /// The term of these figures when the job draws `drawn` (None: a job whose figures
+    /// are not counted one by one, counted as the figures drawn at once, all tall), None
+    /// when there are none: the figures drawn at once (at most those drawn) hold the
+    /// tallest figure's raster each, and every figure drawn takes its time at its class's
+    /// pixels (issue 33: `signals` at 8192 x 4096 drew three figures in 2.8 s of CPU
+    /// while the two drawn at once were counted, 1.3 s).
+    pub fn term(&self, drawn: Option<FigureCount>) -> Option<Term> {
+        let drawn = drawn.unwrap_or(FigureCount {
+            one_panel: 0.0,
+            taller: self.figures_at_once,
+        });
+        let pixels = drawn.one_panel * self.pixels_per_one_panel_figure
+            + drawn.taller * self.pixels_per_figure;
+        let at_once = drawn.total().min(self.figures_at_once);
+        (self.pixels_per_figure > 0.0 && drawn.total() > 0.0).then_some(Term {
             what: "the figures at the requested size",
-            seconds: self.figures_at_once * self.pixels_per_figure * SECONDS_PER_FIGURE_PIXEL,
-            bytes: self.figures_at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL,
+            seconds: pixels * SECONDS_PER_FIGURE_PIXEL,
+            bytes: at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL,
             keys: &["the figure size"],
         })
     }

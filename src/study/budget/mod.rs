@@ -30,6 +30,7 @@ pub mod chains;
 pub mod cost;
 pub mod dataset;
 pub mod evaluation;
+pub mod figures;
 pub mod helical;
 pub mod load_spectrum;
 pub mod output;
@@ -45,7 +46,7 @@ pub use case_jobs::{
     estimate, max_checkpoint_bytes, Job, BYTES_PER_SAMPLE, OUTPUT_BYTES_PER_PROFILE_POINT,
     OUTPUT_SECONDS_PER_PROFILE_POINT,
 };
-pub use cost::{Budget, Estimate, FigureLoad, Term};
+pub use cost::{Budget, Estimate, FigureCount, FigureLoad, Term};
 pub use dataset::{
     estimate_dataset, estimate_dataset_check, estimate_dataset_resumed, estimate_folder_check,
     trajectory_bytes, KeptRecords, RecordSize,

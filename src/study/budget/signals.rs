@@ -98,7 +98,7 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
             "numerics.steps_per_mesh_period",
         ],
     });
-    e
+    e.drawing(super::figures::signals_figures(case))
 }
 
 /// Seconds of one term c_m cos(m w) of the anti-alias filter's response at a harmonic

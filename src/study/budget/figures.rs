@@ -1,0 +1,123 @@
+//! The PNG figures a job draws, counted from its case before the run, so that figures of
+//! a requested size (`--figure-size`, Python `figure_size=`) are counted in time one by
+//! one ([`super::cost::FigureLoad::term`]; issue 33: `signals` at 8192 x 4096 spent 2.8 s
+//! of CPU on its three figures while only the two drawn at once were counted, 1.3 s).
+//!
+//! One function per job family, each listing the figures its report code draws (the
+//! functions named in each) in two classes: figures of one panel, drawn at the requested
+//! size, and taller ones (several panels), counted at the tallest figure's size. A figure
+//! drawn only under a condition the case cannot tell before the run (a response with no
+//! velocity, a wear state that is not reached) is counted: the count is a bound.
+//! `tests/budget_figures.rs` counts the image files each job writes for several cases
+//! against it.
+
+use super::cost::FigureCount;
+use super::teeth::excitation_periods_of;
+use crate::config::case::Case;
+
+/// Figures in the two classes: `(one-panel, taller)`.
+const fn count(one_panel: u32, taller: u32) -> FigureCount {
+    FigureCount {
+        one_panel: one_panel as f64,
+        taller: taller as f64,
+    }
+}
+
+/// Whether the case's teeth differ from one another (errors, run-out, faults): the
+/// tooth-resolved figures (`report::teeth`) are drawn.
+fn resolves_teeth(case: &Case) -> bool {
+    !case.fault.is_empty() || excitation_periods_of(case) > 1
+}
+
+fn helical(case: &Case) -> bool {
+    case.gear.helix_angle_deg != 0.0
+}
+
+/// `gearwear stiffness` (`report::stiffness::stiffness_artifacts`): the mesh stiffness
+/// (panels) and the pair load (`report::pair_load`), a helical pair's face load
+/// (`report::face_load`) instead; the tooth pairs' stiffness of a tooth-resolved case
+/// (`report::teeth::add_teeth_artifacts`). A gear train: those of each stage.
+pub fn stiffness_figures(case: &Case) -> FigureCount {
+    let mut c = if helical(case) {
+        count(0, 2)
+    } else {
+        count(1, 1)
+    };
+    if resolves_teeth(case) {
+        c = c.plus(count(0, 1));
+    }
+    c.times(case.stage.len().max(1) as f64)
+}
+
+/// `gearwear dynamics` (`report::dynamics::dynamics_artifacts`): the pinion's velocity
+/// and its spectrum, the DTE, the mesh force, the friction coefficient and force (one
+/// panel each); a helical pair's face load; a tooth-resolved case's tooth-pair
+/// stiffness and sidebands (`report::teeth`). A gear train: a panel per mesh, counted
+/// as taller figures.
+pub fn dynamics_figures(case: &Case) -> FigureCount {
+    let mut c = if case.stage.is_empty() {
+        count(6, 0)
+    } else {
+        count(2, 4)
+    };
+    if helical(case) {
+        c = c.plus(count(0, 1));
+    }
+    if resolves_teeth(case) {
+        c = c.plus(count(0, 2));
+    }
+    c
+}
+
+/// `gearwear signals` (`report::signals`): the spectrum, the time signal and the
+/// time-synchronous average; a run-up's order tracks and Campbell diagram
+/// (`report::runup`).
+pub fn signals_figures(case: &Case) -> FigureCount {
+    let mut c = count(0, 3);
+    if case.signals.ramp_end_speed_hz.is_some() {
+        c = c.plus(count(0, 2));
+    }
+    c
+}
+
+/// `gearwear wear` in `modes` modes (`report::wear::wear_artifacts`): Figs. 11 and 12
+/// (panels) and 13 (one panel), a worn profile per mode (`report::worn_profile`); a
+/// tooth-resolved case's tooth-pair stiffness and tooth wear per mode; a helical pair's
+/// wear map per mode (`report::helical_wear`); under a load spectrum its duty figures
+/// (`report::duty::duty_figures`: the spectrum, the wear by bin and the dynamic factor
+/// per mode, the life; and the load-duration figures of `report::ldd`).
+pub fn wear_figures(case: &Case, modes: u32) -> FigureCount {
+    let mut c = count(1, 2 + modes);
+    if resolves_teeth(case) {
+        c = c.plus(count(0, 1 + modes));
+    }
+    if helical(case) {
+        c = c.plus(count(0, modes));
+    }
+    if case.load_spectrum.is_some() {
+        c = c.plus(count(0, 4 + 2 * modes));
+    }
+    c.times(case.stage.len().max(1) as f64)
+}
+
+/// `gearwear run` (`report::paper::run_figures`): the paper's Figs. 2 and 4-13 and a
+/// worn profile per mode (both modes), a tooth-resolved case's three
+/// (`report::teeth::run_teeth_figures`), and under a load spectrum the duty figures of
+/// `wear`. A helical pair (`report::run_helical`): the figures of `stiffness`,
+/// `dynamics` and `wear` in both modes, each in its folder, and the paper's Figs. 4-10.
+pub fn run_figures(case: &Case) -> FigureCount {
+    if helical(case) {
+        return stiffness_figures(case)
+            .plus(dynamics_figures(case))
+            .plus(count(7, 0))
+            .plus(wear_figures(case, 2));
+    }
+    let mut c = count(8, 5);
+    if resolves_teeth(case) {
+        c = c.plus(count(0, 3));
+    }
+    if case.load_spectrum.is_some() {
+        c = c.plus(count(0, 8));
+    }
+    c.times(case.stage.len().max(1) as f64)
+}
