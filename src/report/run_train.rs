@@ -113,19 +113,7 @@ pub fn train_run_artifacts_with(
                 }),
         );
         blocks.extend(embed_figures(&mut a, figs));
-        let mut teeth = Vec::new();
-        let st = &train.stages[m];
-        if let (Some(inputs), Some(tm)) = (&st.tooth_inputs, &st.teeth) {
-            teeth = faulty_stage_lines(n, stage, inputs, tm.periods(), &wear);
-            for r in &wear {
-                let path = format!("wear/teeth_wear_{}_stage{n}.png", r.mode.name());
-                let caption = format!(
-                    "Stage {n}: wear of every tooth at the end of the {} wear run (from the wear study).",
-                    r.mode.label()
-                );
-                blocks.extend(embed_existing(&mut a, &path, caption));
-            }
-        }
+        let teeth = faulty_stage_parts(&mut a, n, stage, &train.stages[m], &wear, &mut blocks);
         stages.push(StageResults {
             n,
             model: stage,
@@ -151,6 +139,30 @@ pub fn train_run_artifacts_with(
     a.documents
         .push(("report.html".into(), html::render(&report).into_bytes()));
     Ok(a)
+}
+
+/// A faulty stage's lines ([`faulty_stage_lines`]) and its every tooth's wear maps of
+/// each run (written by the wear study) added to `blocks`; nothing for a healthy stage.
+fn faulty_stage_parts(
+    a: &mut Artifacts,
+    n: usize,
+    stage: &crate::study::Model,
+    st: &crate::study::train::Stage,
+    wear: &[WearRun],
+    blocks: &mut Vec<FigureBlock>,
+) -> Vec<String> {
+    let (Some(inputs), Some(tm)) = (&st.tooth_inputs, &st.teeth) else {
+        return Vec::new();
+    };
+    for r in wear {
+        let path = format!("wear/teeth_wear_{}_stage{n}.png", r.mode.name());
+        let caption = format!(
+            "Stage {n}: wear of every tooth at the end of the {} wear run (from the wear study).",
+            r.mode.label()
+        );
+        blocks.extend(embed_existing(a, &path, caption));
+    }
+    faulty_stage_lines(n, stage, inputs, tm.periods(), wear)
 }
 
 /// What the report says of a faulty stage `n` (its pair `stage`, its teeth `inputs`, its

@@ -155,8 +155,8 @@ const MIN_STOP_DEPTH_M: f64 = 100e-6;
 /// stops (`wear_loop::MAX_CONTACT_LOSS_FRACTION`), m, in elastic approaches under the
 /// nominal load: a single spur pair's from its worn profile
 /// ([`super::running_in::contact_loss_approaches`], issue 33: 50 approaches, 280-420 um,
-/// were counted where runs stopped at 35-42 um), otherwise [`STOP_DEPTH_IN_APPROACHES`]
-/// and at least [`MIN_STOP_DEPTH_M`]. The surrogate's runs at the prior's largest k stop
+/// were counted where runs stopped at 35-42 um), otherwise `STOP_DEPTH_IN_APPROACHES`
+/// and at least `MIN_STOP_DEPTH_M`. The surrogate's runs at the prior's largest k stop
 /// there long before their horizon.
 pub fn stop_depth_m(case: &Case) -> f64 {
     let Ok(pair) = GearPair::from_case(&case.gear) else {
