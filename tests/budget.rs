@@ -169,3 +169,35 @@ fn stiffness_counts_the_figures_it_writes() {
         assert_eq!(counted, written, "{what}");
     }
 }
+
+/// A record given in revolutions of the gear's shaft is as long as the seconds those
+/// revolutions take at the gear's speed, f z1 / z2 (here 30 Hz x 19 / 95 = 6 Hz: 20
+/// revolutions are 3.33 s); the budget counted them at the input speed (0.67 s), five
+/// times too short, and admitted a 600-revolution record that went past 2 GiB.
+#[test]
+fn a_record_in_gear_revolutions_is_counted_at_the_gears_speed() {
+    use gearwear::study::budget::estimate_signals;
+    let base = ["gear.teeth_gear=95", "signals.tachometer_shaft=\"gear\""];
+    let with = |extra: &[&str]| {
+        let sets: Vec<String> = base.iter().chain(extra).map(|s| s.to_string()).collect();
+        let e = estimate_signals(&load_case("", &sets).unwrap(), 2);
+        (e.seconds(), e.memory_bytes())
+    };
+    let seconds = 20.0 / (30.0 * 19.0 / 95.0);
+    for extra in [vec![], vec!["signals.torque_fluctuation_rms_nm=2"]] {
+        let mut revs = extra.clone();
+        revs.extend([
+            "signals.record_length_unit=\"revolutions\"",
+            "signals.record_length=20",
+        ]);
+        let secs_set = format!("signals.record_length={seconds}");
+        let mut secs = extra.clone();
+        secs.push(&secs_set);
+        let (a, b) = (with(&revs), with(&secs));
+        // The same record either way: equal to rounding of the duration.
+        assert!(
+            (a.0 / b.0 - 1.0).abs() < 1e-9 && (a.1 / b.1 - 1.0).abs() < 1e-9,
+            "{extra:?}: revolutions {a:?} against seconds {b:?}"
+        );
+    }
+}

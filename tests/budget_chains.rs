@@ -125,9 +125,8 @@ fn the_estimate_counts_the_runs_and_updates_a_chain_makes() {
         );
         // Updates: never fewer than recorded, and at most 2.5 times: the count follows the
         // running-in (`study::budget::running_in`: the rate falls as the pinion's root
-        // passes its load to the other pair) to the stop depth of the worn profile
-        // (`running_in::contact_loss_approaches`), measured 1.02-1.33 times (1.08-1.97
-        // with the stop depth at 50 elastic approaches, deeper than the runs' 35-78 um).
+        // passes its load to the other pair) to the stop depth of 50 elastic approaches
+        // (deeper than the runs' 35-78 um), measured 1.08-1.97 times.
         // Holding the initial rate for the whole run, as the count did before, gave
         // 1.73-3.49 times (2.58 and 3.49 fail here).
         assert!(est_updates >= updates, "{what}: {updates} > {est_updates}");

@@ -1,8 +1,8 @@
 //! The depth at which the run budget stops counting a run's wear updates
-//! (`study::budget::chains::stop_depth_m`: where the teeth lose contact) against the
-//! depth at which real dynamic wear runs stop for that reason (issue 33: the count went
-//! on to 50 elastic approaches, 280-420 um, where runs stopped at 35-42 um). The count
-//! is an upper bound of the updates only if its stop depth is at least the run's.
+//! (`study::budget::chains::stop_depth_m`: 50 elastic approaches, where the teeth are
+//! taken to have lost contact) against the depth at which real dynamic wear runs stop for
+//! that reason, read from each run's own stop record. The count is an upper bound of the
+//! updates only if its stop depth is at least the run's.
 
 use std::process::Command;
 
@@ -44,7 +44,7 @@ fn contact_loss_depth_um(text: &str, sets: &[&str]) -> f64 {
     num.parse().unwrap()
 }
 
-fn check(what: &str, text: &str, sets: &[&str], most: f64) {
+fn check(what: &str, text: &str, sets: &[&str]) {
     let owned: Vec<String> = [K].iter().chain(sets).map(|s| s.to_string()).collect();
     let counted = stop_depth_m(&load_case(text, &owned).unwrap()) * 1e6;
     let real = contact_loss_depth_um(text, sets);
@@ -56,16 +56,13 @@ fn check(what: &str, text: &str, sets: &[&str], most: f64) {
         counted >= real,
         "{what}: counted to {counted} um, the run went to {real} um"
     );
-    assert!(
-        counted <= most * real,
-        "{what}: counted to {counted} um against {real} um"
-    );
 }
 
 #[test]
 fn spur_pairs_are_counted_to_at_least_the_depth_where_they_lose_contact() {
-    // At most 2 times the real depth: the criterion's margin 2.2 over its static picture,
-    // which these runs pass by 1.26-1.83 (`running_in::CONTACT_LOSS_MARGIN`): 1.20-1.75.
+    // Never below: a static criterion on the worn profile counted 1.2-1.8 times these
+    // 30 Hz runs' depths but 0.2-0.5 times at 5-200 Hz (docs/RELIABILITY.md); the 50
+    // approaches are 5-10 times these depths.
     for (what, sets) in [
         ("the paper's pair at 60 N m", vec![]),
         ("at 5 N m", vec!["operating.load_torque_nm=5"]),
@@ -83,17 +80,17 @@ fn spur_pairs_are_counted_to_at_least_the_depth_where_they_lose_contact() {
         ),
         ("a 40 mm face", vec!["gear.face_width_mm=40"]),
     ] {
-        check(what, "", &sets, 2.0);
+        check(what, "", &sets);
     }
 }
 
 #[test]
 fn a_helical_pair_is_counted_to_at_least_the_depth_where_it_loses_contact() {
-    // Counted at 50 elastic approaches (no criterion of its own): 3.05 times measured
-    // (the pair stops at 16.9 approaches, 138 um); at most 3.5.
+    // Counted at 50 elastic approaches: 3.05 times measured (the pair stops at 16.9
+    // approaches, 138 um).
     let text = std::fs::read_to_string(
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/helical_pair.toml"),
     )
     .unwrap();
-    check("examples/helical_pair.toml", &text, &[], 3.5);
+    check("examples/helical_pair.toml", &text, &[]);
 }

@@ -244,3 +244,49 @@ fn wear_and_run_take_a_fault_and_the_budget_counts_it() {
         assert!(o.status.success(), "{cmd}: {}", stderr(&o));
     }
 }
+
+/// A broken sun tip cut deep enough leaves a planet's sun mesh with no tooth pair at some
+/// instant: the quasi-static equilibrium's planet then turns freely (singular), which the
+/// quasi-static wear model cannot run. Refused before any work and before the output
+/// folder opens (exit 2, naming the fault's keys and the way out), by `wear` and `run`;
+/// a shallow cut runs (the check is not a blanket refusal).
+#[test]
+fn a_planet_left_without_a_tooth_pair_is_refused_by_the_quasi_static_wear_model() {
+    let d = tempfile::tempdir().unwrap();
+    let example = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/planetary_set.toml"),
+    )
+    .unwrap();
+    let write = |name: &str, h: f64| {
+        let p = d.path().join(name);
+        std::fs::write(
+            &p,
+            format!("{example}\n[[planetary.fault]]\ngear = \"sun\"\nkind = \"broken_tip\"\ntooth = 0\nremoved_height_mm = {h}\n"),
+        )
+        .unwrap();
+        p.to_str().unwrap().to_owned()
+    };
+    let deep = write("deep.toml", 3.0);
+    for command in [
+        vec!["wear", "--mode", "quasi-static"],
+        vec!["wear"],
+        vec!["run"],
+    ] {
+        let mut a = command.clone();
+        a.extend(["--config", deep.as_str()]);
+        common::rejected(
+            &a,
+            &[
+                "`planetary.fault.removed_height_mm` = 3",
+                "singular",
+                "dynamic wear model",
+            ],
+        );
+    }
+    let shallow = write("shallow.toml", 0.5);
+    let model = PlanetaryWearModel::from_case(
+        &load_case(&std::fs::read_to_string(&shallow).unwrap(), &[]).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(model.quasi_static_problem(), None);
+}

@@ -141,6 +141,11 @@ pub(super) fn run_modes(
     if let (Some(o), true) = (out, resume) {
         super::checkpoints::require_folder(o)?;
     }
+    if modes.contains(&WearMode::QuasiStatic) {
+        if let Some(p) = ps.reference().quasi_static_problem() {
+            return Err(JobError::input(p));
+        }
+    }
     let mut dir = publish::open_if(out, None, command, replace)?;
     let resume_from = dir.as_ref().filter(|_| resume);
     let starts = starting_runs(ps, modes, resume_from, &meta.case_sha256, observer)?;

@@ -104,6 +104,10 @@ pub fn run_of_planetary(
         (None, Some(ps)) => ps.reference(),
         (None, None) => unreachable!("a model or a spectrum"),
     };
+    // Before any study: the run's quasi-static wear comes last.
+    if let Some(p) = model.quasi_static_problem() {
+        return Err(JobError::input(p));
+    }
     for w in &model.dynamics.study.warnings {
         observer.warning(w);
     }

@@ -83,6 +83,11 @@ pub(super) fn run_planetary_modes(
     if let (Some(o), true) = (out, resume) {
         super::checkpoints::require_folder(o)?;
     }
+    if modes.contains(&WearMode::QuasiStatic) {
+        if let Some(p) = model.quasi_static_problem() {
+            return Err(JobError::input(p));
+        }
+    }
     let mut dir = publish::open_if(out, None, command, replace)?;
     let resume_from = dir.as_ref().filter(|_| resume);
     let starts = starting_runs(model, wear, modes, resume_from, &meta.case_sha256, observer)?;

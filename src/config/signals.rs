@@ -222,6 +222,38 @@ impl SignalsSection {
         self.sensor_stage.map_or(0, |k| (k.max(1) - 1) as usize)
     }
 
+    /// Speed of the tachometer's shaft at the operating speed, Hz: the pinion's or the
+    /// gear's of the sensor's stage (a train's: the input speed through the ratios
+    /// z_pinion / z_gear of the stages before it), f z1 / z2 for the gear of one pair.
+    pub fn tachometer_shaft_hz(&self, case: &super::Case) -> f64 {
+        let ratio = |g: &super::gear::GearSection| {
+            g.teeth_pinion.max(1) as f64 / g.teeth_gear.max(1) as f64
+        };
+        let (before, own) = if case.stage.is_empty() {
+            (1.0, ratio(&case.gear))
+        } else {
+            let k = self.sensor_stage_index().min(case.stage.len() - 1);
+            let r = |st: &super::train::StageSpec| ratio(&st.gear_section(&case.gear));
+            (case.stage[..k].iter().map(r).product(), r(&case.stage[k]))
+        };
+        let pinion = case.operating.input_speed_hz * before;
+        match self.tachometer_shaft {
+            Shaft::Pinion => pinion,
+            Shaft::Gear => pinion * own,
+        }
+    }
+
+    /// The record's length in seconds: `record_length` s, or that many revolutions of the
+    /// tachometer's shaft at its operating speed ([`Self::tachometer_shaft_hz`]).
+    pub fn record_seconds(&self, case: &super::Case) -> f64 {
+        match self.record_length_unit {
+            LengthUnit::S => self.record_length,
+            LengthUnit::Revolutions => {
+                self.record_length / self.tachometer_shaft_hz(case).max(1e-9)
+            }
+        }
+    }
+
     /// The highest input speed a record of `case` sees, Hz (a ramp's end or the
     /// operating speed).
     pub fn max_input_speed_hz(&self, case: &super::Case) -> f64 {

@@ -160,6 +160,25 @@ impl PlanetaryWearModel {
         }
     }
 
+    /// Why the quasi-static wear model cannot run the set's new teeth: a tooth fault that
+    /// leaves a planet's mesh with no tooth pair at some instant (a broken tip cut deep)
+    /// frees the planet's rotation, and its equilibrium is singular; the dynamic model,
+    /// with the planet's inertia, runs it. Names the fault's keys; None when it runs.
+    pub fn quasi_static_problem(&self) -> Option<String> {
+        let fault = self.dynamics.study.section.active_fault()?;
+        match self.force_history(false, &[]) {
+            Err(ForceHistoryError::Singular) => Some(format!(
+                "`planetary.fault.kind` = \"{}\" on {}{}: a planet is left with no tooth pair in contact on one of its meshes at some instant, so the set's quasi-static equilibrium is singular (the planet turns freely) and the quasi-static wear model cannot run it: run the dynamic wear model only, or remove less of the tooth",
+                fault.kind.name(),
+                fault.who(),
+                fault
+                    .removed_height_mm
+                    .map_or(String::new(), |h| format!(" with `planetary.fault.removed_height_mm` = {h}")),
+            )),
+            _ => None,
+        }
+    }
+
     /// The steady force history of the set with every mesh's wear gap `gaps` (module
     /// order): dynamic (`dynamic` true; retried once from scratch with a ten times tighter
     /// integration tolerance, twice the samples and periods, as `wear_loop::solve_by`) or

@@ -42,12 +42,10 @@ pub const DEFAULT_CHANNELS: usize = 2;
 /// `channels`: the accelerometers of the transfer path (the sensors it names).
 pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
     let s = &case.signals;
-    let seconds = match s.record_length_unit {
-        crate::config::signals::LengthUnit::S => s.record_length,
-        crate::config::signals::LengthUnit::Revolutions => {
-            s.record_length / case.operating.input_speed_hz.max(1e-9)
-        }
-    };
+    // Revolutions of the tachometer's shaft, as the record counts them (a gear shaft
+    // turns slower than the input: counted at the input speed, a 95-tooth gear's record
+    // was counted 5 times too short).
+    let seconds = s.record_seconds(case);
     let per = if is_transient(case) {
         BYTES_PER_SAMPLE_TRANSIENT
     } else {
@@ -231,12 +229,7 @@ fn record_periods(case: &Case) -> Option<(f64, f64)> {
 pub fn transient_steps(case: &Case) -> f64 {
     use crate::study::transient_signals::TRANSIENT_TOLERANCE_FACTOR;
     let s = &case.signals;
-    let seconds = match s.record_length_unit {
-        crate::config::signals::LengthUnit::S => s.record_length,
-        crate::config::signals::LengthUnit::Revolutions => {
-            s.record_length / case.operating.input_speed_hz.max(1e-9)
-        }
-    } + crate::signals::transient_record::TAIL_S;
+    let seconds = s.record_seconds(case) + crate::signals::transient_record::TAIL_S;
     let tol = case.numerics.integration_tolerance * TRANSIENT_TOLERANCE_FACTOR;
     let per_period = super::evaluation::adaptive_steps_per_period(tol)
         .max(case.numerics.steps_per_mesh_period as f64);

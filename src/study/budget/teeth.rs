@@ -181,7 +181,9 @@ pub fn budget_term(
     // Periods the response records without the fault: a train's in base periods, as P is.
     let p_e =
         super::evaluation::recorded_periods(case, case.numerics.evaluated_mesh_periods as f64);
-    let recorded = s_dyn * p.max(p_e);
+    // Whole excitation periods: a window of P_e just over P records 2 P
+    // (`period_search::window_repeats`), so P ceil(P_e / P), not max(P, P_e).
+    let recorded = s_dyn * p * (p_e / p.max(1.0)).ceil().max(1.0);
     let grid = case.wear.points_per_profile as f64;
     if train {
         let (teeth, repeats) = stage_teeth_and_repeats(case);
