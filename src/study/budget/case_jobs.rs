@@ -28,16 +28,12 @@
 //!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
 //!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log;
 //!   docs/RELIABILITY.md) written at 100 MB/s, plus 2 ms of fsync per update;
-//! - a tooth-resolved case (per-tooth inputs) adds one term ([`super::teeth::budget_term`]):
-//!   its excitation repeats over P mesh periods (up to lcm(z1, z2)), so each dynamic
-//!   evaluation integrates P - 1 more periods and a run-in, each quasi-static one P - 1
-//!   more, a kept response records P periods with its contacts, and each wear record
-//!   holds every tooth's profile;
-//! - memory = 64 MB + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (280 bytes a
-//!   recorded sample, with vector growth, the output tables and their CSV text) + per mode
-//!   U records of (4 G + 4 S_d) numbers at 8 bytes + for `wear` and `run` the outputs of
-//!   every record's profiles, [`OUTPUT_BYTES_PER_PROFILE_POINT`] per grid point (and
-//!   [`OUTPUT_SECONDS_PER_PROFILE_POINT`] of time).
+//! - a tooth-resolved case adds [`super::teeth::budget_term`]: its excitation repeats over
+//!   P mesh periods (up to lcm(z1, z2)), integrated and recorded with its contacts by every
+//!   evaluation, and each wear record holds every tooth's profile;
+//! - memory = the baseline + kept responses x S_d P_e x [`BYTES_PER_SAMPLE`] (a train:
+//!   whole base periods, `recorded_periods`) + U records of (4 G + 4 S_d) doubles a mode +
+//!   the profiles' outputs ([`OUTPUT_BYTES_PER_PROFILE_POINT`] a grid point).
 //!
 //! Under a load spectrum each bin has its model (and table), every update evaluates every
 //! bin, and the block is cut on the spectrum's wear per cycle.
