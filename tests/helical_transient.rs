@@ -12,7 +12,6 @@ use gearwear::dynamics::model::{ContactModes, GearSystem};
 use gearwear::dynamics::period::PeriodObserver;
 use gearwear::signals::record::Record;
 use gearwear::signals::setup::chain_of;
-use gearwear::signals::transfer::TransferPath;
 use gearwear::study::signal_record::periodic_record;
 use gearwear::study::transient_signals::transient_clean_record;
 use gearwear::study::Model;
@@ -49,28 +48,6 @@ fn worst_relative_difference(a: &Record, b: &Record) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// A path that passes the pinion's y bearing force unchanged (1 m/s^2 per N, flat): the
-/// record is the force itself, with no housing resonance of its own.
-fn flat_path() -> TransferPath {
-    use gearwear::signals::frf_table::{Frf, FrfTable};
-    use gearwear::signals::transfer::PathModel;
-    use realfft::num_complex::Complex64;
-    let mut frf: [Frf; 4] = Default::default();
-    frf[1] = Frf {
-        frequency_hz: vec![0.0, 1e6],
-        value: vec![Complex64::new(1.0, 0.0); 2],
-    };
-    TransferPath {
-        sensors: vec!["force".into()],
-        model: PathModel::Table(FrfTable {
-            sensors: vec!["force".into()],
-            frf: vec![frf],
-        }),
-        description: "flat".into(),
-        placement: "the pinion's y bearing force itself".into(),
-    }
-}
-
 #[test]
 fn a_run_up_to_its_own_start_speed_is_the_steady_helical_record() {
     // A helical pair (15 deg, 400 slices), with the axial bearings and a tooth's run-out
@@ -105,7 +82,7 @@ fn a_run_up_to_its_own_start_speed_is_the_steady_helical_record() {
         let c = case(&all);
         let model = Model::dynamics_from_case(&c).unwrap();
         assert!(model.helical.is_some());
-        let setup = chain_of(&c, Some(flat_path()), 30.0).unwrap();
+        let setup = chain_of(&c, Some(common::flat_path()), 30.0).unwrap();
         let wear = model.new_wear_state();
         let r = model.dynamic(&wear, &ExternalError::none()).unwrap();
         let (transient, speeds) = transient_clean_record(&model, &setup, &wear).unwrap();
@@ -138,7 +115,7 @@ fn at_beta_to_zero_one_slice_the_helical_run_up_is_the_spur_run_up() {
     let helical = case(&h);
     let record = |c: &Case| {
         let model = Model::dynamics_from_case(c).unwrap();
-        let setup = chain_of(c, Some(flat_path()), 45.0).unwrap();
+        let setup = chain_of(c, Some(common::flat_path()), 45.0).unwrap();
         let wear = model.new_wear_state();
         (
             model.helical.is_some(),
@@ -197,7 +174,7 @@ fn the_run_ups_mesh_line_follows_z1_times_the_tachometers_shaft_speed() {
         "signals.record_length=2",
     ]);
     let model = Model::dynamics_from_case(&c).unwrap();
-    let setup = chain_of(&c, Some(flat_path()), 40.0).unwrap();
+    let setup = chain_of(&c, Some(common::flat_path()), 40.0).unwrap();
     let wear = model.new_wear_state();
     let (rec, _) = transient_clean_record(&model, &setup, &wear).unwrap();
     let fs = rec.sampling_rate_hz;

@@ -1,6 +1,8 @@
 //! Transient records: holding the speed fixed reproduces the steady state; a run-up's
 //! amplitude peaks where a mesh harmonic crosses the damped mesh pole.
 
+mod common;
+
 use gearwear::config::Case;
 use gearwear::dynamics::excitation::ExternalError;
 use gearwear::signals::setup::chain_of;
@@ -59,28 +61,6 @@ fn constant_speed_transient_matches_steady(path: gearwear::config::case::Contact
     );
 }
 
-/// A path that passes the pinion's y bearing force unchanged (1 m/s^2 per N, flat):
-/// the record is the force itself, with no housing resonance of its own.
-fn flat_path() -> gearwear::signals::transfer::TransferPath {
-    use gearwear::signals::frf_table::{Frf, FrfTable};
-    use gearwear::signals::transfer::{PathModel, TransferPath};
-    use realfft::num_complex::Complex64;
-    let mut frf: [Frf; 4] = Default::default();
-    frf[1] = Frf {
-        frequency_hz: vec![0.0, 1e6],
-        value: vec![Complex64::new(1.0, 0.0); 2],
-    };
-    TransferPath {
-        sensors: vec!["force".into()],
-        model: PathModel::Table(FrfTable {
-            sensors: vec!["force".into()],
-            frf: vec![frf],
-        }),
-        description: "flat".into(),
-        placement: "the pinion's y bearing force itself".into(),
-    }
-}
-
 #[test]
 fn a_run_up_peaks_where_a_mesh_harmonic_crosses_the_damped_mesh_pole() {
     // Both contact models: the modal analysis takes the mean loaded mesh stiffness (with
@@ -113,7 +93,7 @@ fn run_up_peaks_at_the_pole(path: gearwear::config::case::ContactPathModel) {
     case.signals.ramp_end_speed_hz = Some(1.25 * f_star);
     case.signals.record_length = 3.0;
     let model = Model::from_case(&case).unwrap();
-    let setup = chain_of(&case, Some(flat_path()), 1.25 * f_star).unwrap();
+    let setup = chain_of(&case, Some(common::flat_path()), 1.25 * f_star).unwrap();
     let wear = WearState::new(model.grid.len());
     let t0 = std::time::Instant::now();
     let (rec, _) = transient_clean_record(&model, &setup, &wear).unwrap();

@@ -252,3 +252,25 @@ pub fn published(dir: &Path) -> Vec<(String, Vec<u8>)> {
         })
         .collect()
 }
+
+/// A path that passes the pinion's y bearing force unchanged (1 m/s^2 per N, flat): a
+/// record through it is the force itself, with no housing resonance of its own.
+pub fn flat_path() -> gearwear::signals::transfer::TransferPath {
+    use gearwear::signals::frf_table::{Frf, FrfTable};
+    use gearwear::signals::transfer::{PathModel, TransferPath};
+    use realfft::num_complex::Complex64;
+    let mut frf: [Frf; 4] = Default::default();
+    frf[1] = Frf {
+        frequency_hz: vec![0.0, 1e6],
+        value: vec![Complex64::new(1.0, 0.0); 2],
+    };
+    TransferPath {
+        sensors: vec!["force".into()],
+        model: PathModel::Table(FrfTable {
+            sensors: vec!["force".into()],
+            frf: vec![frf],
+        }),
+        description: "flat".into(),
+        placement: "the pinion's y bearing force itself".into(),
+    }
+}
