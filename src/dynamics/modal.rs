@@ -70,3 +70,41 @@ pub fn modes(sys: &GearSystem) -> Modes {
     }
     out
 }
+
+/// Slowest decay rate of the averaged linear model, 1/s: the smallest -Re(lambda) over
+/// its eigenvalues, leaving out the zero ones of a held coordinate or of the motor-slip
+/// drivetrain's free rotation.
+pub fn slowest_decay_rate(sys: &GearSystem) -> f64 {
+    let a = sys.mean_state_matrix();
+    // The single pair's 16 x 16 through the fixed-size solver, as it always has.
+    let eig: Vec<nalgebra::Complex<f64>> = if a.nrows() == 16 {
+        let s = nalgebra::SMatrix::<f64, 16, 16>::from_fn(|i, j| a[(i, j)]);
+        s.complex_eigenvalues().iter().copied().collect()
+    } else {
+        a.complex_eigenvalues().iter().copied().collect()
+    };
+    let scale = eig.iter().fold(0.0_f64, |m, l| m.max(l.norm()));
+    eig.iter()
+        .map(|l| -l.re)
+        .filter(|d| *d > 1e-9 * scale)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Mesh periods of run-in for an excitation of `periods` mesh periods of `mesh_period_s`
+/// (see the module docs), at least 2 and at most `periods` (so 1 when P = 1: `Ord::clamp`
+/// would panic there, its lower bound above its upper).
+pub fn run_in_periods(
+    sys: &GearSystem,
+    mesh_period_s: f64,
+    tolerance: f64,
+    periods: usize,
+) -> usize {
+    let sigma = slowest_decay_rate(sys);
+    if !(sigma.is_finite() && sigma > 0.0) {
+        return periods;
+    }
+    // The orbit of cycle 0 differs from the true one by up to the state scales (1), and
+    // the time-varying stiffness makes the decay somewhat uneven: 20 % margin.
+    let w = 1.2 * (1.0 / tolerance).ln() / (sigma * mesh_period_s);
+    (w.ceil() as usize).max(2).min(periods)
+}

@@ -23,38 +23,11 @@ use super::integrator::{
     IntegratorError, Matrix, OdeSystem, Sdirk, SdirkOptions, StepStats, Trial, Vector,
 };
 use super::model::{ContactFrame, ContactModes, GearSystem, MeshState, ModeSwitch};
+pub use super::observer::PeriodObserver;
 use super::state_scales::state_scales;
+pub use super::step_failure::StepFailure;
 use nalgebra::allocator::Allocator;
 use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
-
-/// Why an integration over a mesh period failed.
-#[derive(Debug, Clone, thiserror::Error)]
-#[error(
-    "the integrator failed at t = {time_s:.6e} s (mesh phase {phase_deg:.3} deg of the \
-     mesh period; DTE {dte_um:.4} µm, mesh force {force_n:.1} N): {reason}; {}",
-    advice(*.intervals, *.tolerance)
-)]
-pub struct StepFailure {
-    /// Time at which the step failed, s.
-    pub time_s: f64,
-    /// The first mesh's phase at the failure, degrees of its mesh period.
-    pub phase_deg: f64,
-    /// The first mesh's dynamic transmission error at the failure, µm.
-    pub dte_um: f64,
-    /// The first mesh's force at the failure, N.
-    pub force_n: f64,
-    /// What failed (the integrator's message).
-    pub reason: String,
-    /// Node intervals of the period grid of the stepper.
-    pub intervals: usize,
-    /// Local error tolerance of the stepper, relative to the state's scales.
-    pub tolerance: f64,
-}
-
-/// Tolerance below which round-off in the error estimate, not the grid, can be what
-/// fails (the `numerics.integration_tolerance` range's note: 1e-8 fails at 0.5 Hz on 20
-/// nodes, 1e-10 at the first step).
-const TIGHT_TOLERANCE: f64 = 1e-7;
 
 /// Factorised iteration matrices a train's stepper keeps for recurring step lengths
 /// ([`SdirkOptions::kept_matrices`]): between two events the error control alternates
@@ -62,47 +35,6 @@ const TIGHT_TOLERANCE: f64 = 1e-7;
 /// train's larger matrix costs several steps' work. The single pair keeps none (its
 /// results stay those of before the option existed).
 const TRAIN_KEPT_MATRICES: usize = 3;
-
-/// What helps after a failed step: more grid nodes (a step never crosses a node, so the
-/// error control restarts from shorter steps at every node, and the floor
-/// [`H_MIN_FLOOR_S`] is at most a fixed fraction of the node spacing). A smaller
-/// tolerance asks for smaller steps still.
-fn advice(intervals: usize, tolerance: f64) -> String {
-    let tight = if tolerance < TIGHT_TOLERANCE {
-        format!(
-            "; with numerics.integration_tolerance = {tolerance:e}, near the floor where round-off reaches the error estimate, a larger value may help too"
-        )
-    } else {
-        String::new()
-    };
-    format!(
-        "raise numerics.steps_per_mesh_period (the period has {intervals} node intervals; more nodes let the error control restart from shorter steps at each of them); a smaller numerics.integration_tolerance asks for smaller steps still and does not help{tight}"
-    )
-}
-
-/// What a caller sees of the solution over a period (states y = [q; dq/dt] as slices).
-pub trait PeriodObserver {
-    /// A point of the solution: the period start and every accepted step's end but the
-    /// period's last. `decide` is a time inside the node interval the point opens (the
-    /// right limit at a mesh event).
-    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]);
-    /// An accepted step from `(t, y0)` to `(t + h, y1)`, taken in contact modes `mode`.
-    fn step(
-        &mut self,
-        sys: &GearSystem,
-        t: f64,
-        h: f64,
-        y0: &[f64],
-        y1: &[f64],
-        mode: ContactModes,
-    );
-}
-
-/// Observes nothing (the periods of the steady-state search).
-impl PeriodObserver for () {
-    fn point(&mut self, _: &GearSystem, _: f64, _: f64, _: &[f64]) {}
-    fn step(&mut self, _: &GearSystem, _: f64, _: f64, _: &[f64], _: &[f64], _: ContactModes) {}
-}
 
 /// Work counters of the period integrations.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -159,6 +91,19 @@ pub trait PeriodIntegrator {
         y: &mut [f64],
         obs: &mut dyn PeriodObserver,
     ) -> Result<(), StepFailure>;
+    /// As [`PeriodIntegrator::integrate`], but only from `t0` to `t0 + until_s`, which
+    /// must be a node of the period ([`PeriodIntegrator::node_at_or_after`]); the point
+    /// at the end is not shown (it opens the rest of the period).
+    fn integrate_part(
+        &mut self,
+        t0: f64,
+        y: &mut [f64],
+        obs: &mut dyn PeriodObserver,
+        until_s: f64,
+    ) -> Result<(), StepFailure>;
+    /// The first node of the period at or after `s` (s from the period start; the
+    /// period itself when `s` is past the last node).
+    fn node_at_or_after(&self, s: f64) -> f64;
     /// The period, s.
     fn period(&self) -> f64;
     /// How the following periods choose their steps.
@@ -359,13 +304,28 @@ where
         (h, target)
     }
 
-    /// Integrates `y` over the period starting at `t0` (a period boundary), showing the
-    /// solution to `obs`.
+    /// [`Self::integrate_vector`] on a slice.
+    fn integrate_slice(
+        &mut self,
+        t0: f64,
+        y: &mut [f64],
+        obs: &mut dyn PeriodObserver,
+        last: usize,
+    ) -> Result<(), StepFailure> {
+        let mut v = Vector::<D>::from_column_slice_generic(self.dim, U1, y);
+        let result = self.integrate_vector(t0, &mut v, obs, last);
+        y.copy_from_slice(v.as_slice());
+        result
+    }
+
+    /// Integrates `y` from `t0` (a period boundary) to node `last` (the period's last
+    /// node: the whole period), showing the solution to `obs`.
     fn integrate_vector(
         &mut self,
         t0: f64,
         y: &mut Vector<D>,
         obs: &mut dyn PeriodObserver,
+        last: usize,
     ) -> Result<(), StepFailure> {
         let sys = self.sys;
         let n = self.nodes.len();
@@ -383,7 +343,7 @@ where
         }
         // Next point of the plan not yet passed (replay).
         let mut next_plan = 0;
-        for k in 1..n {
+        for k in 1..=last {
             let tb = t0 + self.nodes[k];
             let mut t = t0 + self.nodes[k - 1];
             let mut steps_here = 0_usize;
@@ -433,11 +393,11 @@ where
                     obs.point(sys, t, decide, y.as_slice());
                 }
             }
-            if self.set_change[k] && k + 1 < n {
+            if self.set_change[k] && k < last {
                 mode = sys.natural_mode_decided(tb, decide, y.as_slice());
                 self.stepper.invalidate_jacobian();
             }
-            if k + 1 < n {
+            if k < last {
                 obs.point(sys, tb, decide, y.as_slice());
             }
         }
@@ -616,10 +576,23 @@ where
         y: &mut [f64],
         obs: &mut dyn PeriodObserver,
     ) -> Result<(), StepFailure> {
-        let mut v = Vector::<D>::from_column_slice_generic(self.dim, U1, y);
-        let result = self.integrate_vector(t0, &mut v, obs);
-        y.copy_from_slice(v.as_slice());
-        result
+        self.integrate_slice(t0, y, obs, self.nodes.len() - 1)
+    }
+
+    fn integrate_part(
+        &mut self,
+        t0: f64,
+        y: &mut [f64],
+        obs: &mut dyn PeriodObserver,
+        until_s: f64,
+    ) -> Result<(), StepFailure> {
+        let last = self.nodes.partition_point(|t| *t < until_s);
+        self.integrate_slice(t0, y, obs, last.clamp(1, self.nodes.len() - 1))
+    }
+
+    fn node_at_or_after(&self, s: f64) -> f64 {
+        let k = self.nodes.partition_point(|t| *t < s);
+        self.nodes[k.min(self.nodes.len() - 1)]
     }
 
     fn period(&self) -> f64 {

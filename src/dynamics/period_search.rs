@@ -5,9 +5,10 @@
 //! ([`super::steady`]) and the one over a hunting period ([`super::hunting`]) start here.
 
 use super::grid::train_nodes;
+use super::modal::run_in_periods;
 use super::model::{GearSystem, State};
 use super::period::{period_stepper, PeriodIntegrator, PlanMode, StepFailure};
-use super::recorder::Recorder;
+use super::recorder::{Recorder, SplitRecorder};
 use super::response::{DynamicResponse, MeshResponse, PathSample};
 use super::shooting::{scaled_max, Reduction, Shooting};
 use super::state_scales::state_scales;
@@ -130,8 +131,8 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
 
     /// Runs the search to the case's tolerance. With `record`, the last period
     /// integrated is recorded when it is likely to be the last one needed (the first
-    /// from a warm start, or once the search is close) and returned with its start and
-    /// end states.
+    /// from a warm start, or once the search is close; a train's every period, see
+    /// [`Self::splice_at`]) and returned with its start and end states.
     pub fn run(
         &mut self,
         settings: &SteadyStateSettings,
@@ -141,6 +142,11 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         let sys = self.sys;
         let period = self.ps.period();
         let mut shooting = Shooting::new(sys, &self.red, period, &state_scales(sys));
+        let splice_at = if record {
+            self.splice_at(settings)
+        } else {
+            None
+        };
         let mut distance = f64::INFINITY;
         let mut recorded = None;
         // Every period starts at t = 0: the one-period map is the same function in every
@@ -159,16 +165,25 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
             // replay.
             let first = self.periods == 0;
             let close = distance < 1e-2 || (first && warm);
-            match self.ps.plan_mode() {
-                PlanMode::Free if close => self.ps.set_plan_mode(PlanMode::Build),
-                PlanMode::Build => self.ps.set_plan_mode(PlanMode::Replay),
-                _ => {}
-            }
-            let speculative = record && (distance < 100.0 * settings.tolerance || (first && warm));
-            if speculative {
+            self.advance_plan(close);
+            let speculative = record
+                && (distance < 100.0 * settings.tolerance
+                    || (first && warm)
+                    || splice_at.is_some());
+            let mut split = None;
+            if let (true, Some(at)) = (speculative, splice_at) {
+                let mut s = SplitRecorder {
+                    at,
+                    before: Recorder::new(sys, 1),
+                    after: Recorder::new(sys, 1),
+                    state_at: None,
+                };
+                self.ps.integrate(0.0, y.as_mut_slice(), &mut s)?;
+                split = Some(s);
+            } else if speculative {
                 let mut rec = Recorder::new(sys, 1);
                 self.ps.integrate(0.0, y.as_mut_slice(), &mut rec)?;
-                recorded = Some((rec, y0, y.clone()));
+                recorded = Some((rec, y0.clone(), y.clone()));
             } else {
                 self.ps.integrate(0.0, y.as_mut_slice(), &mut ())?;
                 recorded = None;
@@ -177,8 +192,77 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
             let (next, d) = shooting.next(&self.z, &self.red.reduce(y.as_slice()));
             self.z = next;
             distance = d;
+            if let Some(mut s) = split {
+                if distance < settings.tolerance {
+                    s.before.append(&s.after);
+                    recorded = Some((s.before, y0, y));
+                } else if let Some(rec) = self.splice(settings, &s)? {
+                    return Ok(Some((rec, self.start_state(), y)));
+                } else {
+                    recorded = None;
+                }
+            }
         }
         Ok(recorded)
+    }
+
+    /// Moves the step plan on: built once the search is `close`, then replayed.
+    fn advance_plan(&mut self, close: bool) {
+        match self.ps.plan_mode() {
+            PlanMode::Free if close => self.ps.set_plan_mode(PlanMode::Build),
+            PlanMode::Build => self.ps.set_plan_mode(PlanMode::Replay),
+            _ => {}
+        }
+    }
+
+    /// Where a train's recorded period may be spliced (s from its start), or None. A
+    /// train's base period spans many periods of its first mesh (31 on the two-stage
+    /// example), and the map over it contracts so strongly that one period from any
+    /// start of the search ends on the orbit: what the start differs from the orbit by
+    /// has decayed within the first W mesh periods, W = 1.2 ln(1 / tolerance) /
+    /// (sigma T_1) ([`super::modal::run_in_periods`]: sigma the slowest decay rate of
+    /// the averaged model, T_1 the first mesh's period). So the recording of a period
+    /// from the search's start is right after those W mesh periods, and only its first
+    /// W need recording again from the next start ([`Self::splice`]): 1 + W / c_1 base
+    /// periods instead of two (c_1 the first mesh's periods in the base period). Only
+    /// where W is at most half of c_1 (never the single pair, whose base period is one
+    /// mesh period).
+    fn splice_at(&self, settings: &SteadyStateSettings) -> Option<f64> {
+        let c1 = *super::grid::base_period(self.sys)?.1.first()?;
+        if c1 < 4 {
+            return None;
+        }
+        let t1 = self.ps.period() / c1 as f64;
+        let w = run_in_periods(self.sys, t1, settings.tolerance, c1);
+        (2 * w <= c1).then(|| self.ps.node_at_or_after(w as f64 * t1))
+    }
+
+    /// The splice of a period recorded from the previous start (`s`, split at its node
+    /// `s.at`): the first part recorded again from the current start up to `s.at` and
+    /// joined to the rest of `s`. None when the two disagree at `s.at` by the tolerance
+    /// or more (the start's difference had not decayed there): the search goes on.
+    fn splice(
+        &mut self,
+        settings: &SteadyStateSettings,
+        s: &SplitRecorder,
+    ) -> Result<Option<Recorder>, DynamicsError> {
+        let Some(state_at) = &s.state_at else {
+            return Ok(None);
+        };
+        // A plan built in the split period is replayed; a free search stays free (a
+        // plan built on part of a period would leave the rest to one step per node).
+        self.advance_plan(false);
+        let mut y = self.start_state();
+        let mut rec = Recorder::new(self.sys, 1);
+        self.ps
+            .integrate_part(0.0, y.as_mut_slice(), &mut rec, s.at)?;
+        self.periods += 1;
+        let joined = State::from_column_slice(state_at);
+        if self.distance_between(&joined, &y) >= settings.tolerance {
+            return Ok(None);
+        }
+        rec.append(&s.after);
+        Ok(Some(rec))
     }
 
     /// Replay the step plan from now on (built by the search once it was close).

@@ -4,7 +4,7 @@
 //! points would split the force's jumps at the mesh events).
 
 use super::model::{ContactFrame, ContactModes, DecidedSets, GearSystem, MeshState};
-use super::period::PeriodObserver;
+use super::observer::PeriodObserver;
 use super::response::{sorted_by_rho1, PathSample, Signals};
 
 /// Change of the displacements over one period of the periodic orbit: the drift of the
@@ -109,6 +109,21 @@ impl Recorder {
     ) -> (Signals, Vec<Vec<PathSample>>) {
         let sig = self.sig.repeated(period, periods, &drift(y_start, y_end));
         (sig, self.paths.iter().map(|p| sorted_by_rho1(p)).collect())
+    }
+
+    /// Appends `later`, the recording of the stretch of the solution that follows this
+    /// one's (same system and excitation periods): its samples, paths and integrals.
+    pub(crate) fn append(&mut self, later: &Recorder) {
+        self.sig.append(&later.sig);
+        for (p, more) in self.paths.iter_mut().zip(&later.paths) {
+            p.extend_from_slice(more);
+        }
+        for (a, b) in self.force_int.iter_mut().zip(&later.force_int) {
+            *a += b;
+        }
+        for (a, b) in self.dte_int.iter_mut().zip(&later.dte_int) {
+            *a += b;
+        }
     }
 
     /// Evaluates the right-hand side into the work buffers.
@@ -256,4 +271,48 @@ fn push_path(path: &mut Vec<PathSample>, sys: &GearSystem, m: usize, y: &[f64], 
     let omega_p = wp + y[n + rp];
     let omega_g = wg + y[n + rg];
     PathSample::push_contacts(path, ms, mesh.parts.pair.loa_length_m, omega_p, omega_g);
+}
+
+/// A period recorded in two parts split at the node time `at` (s): the points and steps
+/// before it go to `before`, the rest to `after` (no step crosses a node), and the state
+/// of the point at `at` is kept. The splice of the steady-state search
+/// ([`super::period_search`]) replaces `before` by a recording from a better start.
+pub(crate) struct SplitRecorder {
+    /// Where the parts meet, s.
+    pub at: f64,
+    /// The part before `at`.
+    pub before: Recorder,
+    /// The part from `at` on.
+    pub after: Recorder,
+    /// The state at `at`.
+    pub state_at: Option<Vec<f64>>,
+}
+
+impl PeriodObserver for SplitRecorder {
+    fn point(&mut self, sys: &GearSystem, t: f64, decide: f64, y: &[f64]) {
+        if t < self.at {
+            return self.before.point(sys, t, decide, y);
+        }
+        if self.state_at.is_none() {
+            self.state_at = Some(y.to_vec());
+        }
+        self.after.point(sys, t, decide, y);
+    }
+
+    fn step(
+        &mut self,
+        sys: &GearSystem,
+        t: f64,
+        h: f64,
+        y0: &[f64],
+        y1: &[f64],
+        mode: ContactModes,
+    ) {
+        let part = if t < self.at {
+            &mut self.before
+        } else {
+            &mut self.after
+        };
+        part.step(sys, t, h, y0, y1, mode);
+    }
 }

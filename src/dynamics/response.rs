@@ -105,6 +105,12 @@ impl Coordinates {
         self.values.chunks_exact(self.dofs.max(1))
     }
 
+    /// Appends every sample of `other` (of the same `dofs`).
+    pub(crate) fn append(&mut self, other: &Coordinates) {
+        debug_assert_eq!(other.dofs, self.dofs);
+        self.values.extend_from_slice(&other.values);
+    }
+
     /// Coordinate `i` of every sample.
     pub fn column(&self, i: usize) -> Vec<f64> {
         self.iter().map(|s| s[i]).collect()
@@ -166,6 +172,32 @@ impl MeshSignals {
         self.mesh_force_n.push(ms.force_n);
         self.mesh_stiffness_n_per_m.push(ms.stiffness_total_n_per_m);
         self.push_pairs(ms);
+    }
+
+    /// Appends the samples of `later` (the series that follows).
+    fn append(&mut self, later: &MeshSignals) {
+        // Destructured in full: a new signal must be appended here too.
+        let Self {
+            phase_rad,
+            dte_m,
+            mesh_force_n,
+            mesh_stiffness_n_per_m,
+            dte_rate_m_per_s,
+            friction_coefficient,
+            friction_n,
+            pair_load_n,
+        } = later;
+        self.phase_rad.extend_from_slice(phase_rad);
+        self.dte_m.extend_from_slice(dte_m);
+        self.mesh_force_n.extend_from_slice(mesh_force_n);
+        self.mesh_stiffness_n_per_m
+            .extend_from_slice(mesh_stiffness_n_per_m);
+        self.dte_rate_m_per_s.extend_from_slice(dte_rate_m_per_s);
+        for j in 0..2 {
+            self.friction_coefficient[j].extend_from_slice(&friction_coefficient[j]);
+            self.friction_n[j].extend_from_slice(&friction_n[j]);
+            self.pair_load_n[j].extend_from_slice(&pair_load_n[j]);
+        }
     }
 
     /// The series repeated: every sample appended again `times` more times.
@@ -239,6 +271,29 @@ impl Signals {
             acceleration: Coordinates::new(dofs),
             step_acceleration: [Coordinates::new(dofs), Coordinates::new(dofs)],
             meshes: vec![MeshSignals::default(); meshes],
+        }
+    }
+
+    /// Appends the samples of `later` (the stretch of the solution that follows).
+    pub(crate) fn append(&mut self, later: &Signals) {
+        // Destructured in full: a new signal must be appended here too.
+        let Self {
+            time_s,
+            displacement,
+            velocity,
+            acceleration,
+            step_acceleration,
+            meshes,
+        } = later;
+        self.time_s.extend_from_slice(time_s);
+        self.displacement.append(displacement);
+        self.velocity.append(velocity);
+        self.acceleration.append(acceleration);
+        for (out, more) in self.step_acceleration.iter_mut().zip(step_acceleration) {
+            out.append(more);
+        }
+        for (out, more) in self.meshes.iter_mut().zip(meshes) {
+            out.append(more);
         }
     }
 
