@@ -203,3 +203,64 @@ fn tampered_foreign_and_swapped_train_checkpoints_are_refused_saying_why() {
     // Untouched, it resumes (nothing left to compute) to the same results.
     resuming_a_finished_run_changes_nothing(&a, &out);
 }
+
+#[test]
+fn tampered_checkpoints_of_a_train_with_a_faulty_stage_are_refused_saying_why() {
+    // Stage 1's pinion tooth 3 cracked 0.8 mm: each stage-1 record holds a wear profile
+    // and a rate per tooth (`wear.teeth`, `increment_teeth`). Quasi-static (the replay
+    // and the recomputation are those of the dynamic mode, without the periodic state).
+    let d = tempfile::tempdir().unwrap();
+    let config = d.path().join("faulty.toml");
+    let text = std::fs::read_to_string(case(d.path(), 60.0)).unwrap()
+        + "\n[[fault]]\nstage = 1\ngear = \"pinion\"\ntooth = 3\nkind = \"crack\"\ncrack_depth_mm = 0.8\n";
+    std::fs::write(&config, text).unwrap();
+    let out = d.path().join("w");
+    let a = args(config.to_str().unwrap(), "quasi-static", &out, &[]);
+    let o = run(&a);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let s1 = out.join("checkpoint_quasi_static_stage1.jsonl");
+    let original = std::fs::read_to_string(&s1).unwrap();
+    let restore = || std::fs::write(&s1, &original).unwrap();
+    let last = original.lines().count() - 2;
+    // The cracked tooth's own wear at update 2 (its deepest point): not update 1's
+    // advanced over the block, nor the roughness the record states for its wear.
+    tamper(&s1, true, &scale(2, "/wear/teeth/pinion_m/3", 1.5));
+    refused(
+        &a,
+        "cracked tooth's wear x 1.5",
+        &["update 2 (line 4), stage 1", "cannot be resumed"],
+    );
+    restore();
+    // The cracked tooth's rate at the last update, chained to nothing: caught only by
+    // recomputing the train's response with the fault.
+    tamper(
+        &s1,
+        true,
+        &scale(last, "/increment_teeth/pinion_m/3", 1.0 + 1e-9),
+    );
+    refused(
+        &a,
+        "cracked tooth's last rate x (1 + 1e-9)",
+        &[
+            &format!("update {last} (line {}), stage 1", last + 2),
+            "not what this case's model computes",
+        ],
+    );
+    restore();
+    // The cracked tooth's rate swapped with a sound one's at the last update (every
+    // number in it one the model computed, for another tooth).
+    tamper(&s1, true, &move |i, v| {
+        if i == last {
+            let t = v.pointer_mut("/increment_teeth/pinion_m").unwrap();
+            let t = t.as_array_mut().unwrap();
+            t.swap(3, 4);
+        }
+    });
+    refused(
+        &a,
+        "cracked and sound tooth swapped",
+        &[&format!("update {last} (line {}), stage 1", last + 2)],
+    );
+    restore();
+    resuming_a_finished_run_changes_nothing(&a, &out);
+}
