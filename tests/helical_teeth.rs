@@ -9,49 +9,13 @@
 
 mod common;
 
+use common::helical::{close, model, quasi, same_summaries, steady, stiffness_dips};
 use common::rejected;
-use gearwear::config::load_case;
 use gearwear::dynamics::excitation::ExternalError;
 use gearwear::dynamics::response::DynamicResponse;
 use gearwear::dynamics::summary::ResponseSummary;
 use gearwear::stiffness::tooth_faults::{crack_compliance_m_per_n, Crack};
 use gearwear::study::Model;
-
-const NOMINAL: [&str; 2] = [
-    "contact.path=\"nominal\"",
-    "contact.load_sharing=\"stiffness\"",
-];
-
-fn model(sets: &[&str]) -> Model {
-    let mut all: Vec<String> = NOMINAL.iter().map(|s| s.to_string()).collect();
-    all.extend(sets.iter().map(|s| s.to_string()));
-    Model::dynamics_from_case(&load_case("", &all).expect("valid case")).expect("valid model")
-}
-
-fn steady(m: &Model, e: &ExternalError) -> DynamicResponse {
-    m.dynamic(&m.new_wear_state(), e).expect("steady state")
-}
-
-fn quasi(m: &Model) -> DynamicResponse {
-    m.quasi_static(&m.new_wear_state(), &ExternalError::none())
-}
-
-/// Equal to `rel` of the larger magnitude.
-fn close(a: f64, b: f64, rel: f64, what: &str) {
-    assert!(
-        (a - b).abs() <= rel * a.abs().max(b.abs()),
-        "{what}: {a} against {b}"
-    );
-}
-
-fn same_summaries(a: &ResponseSummary, b: &ResponseSummary, rel: f64) {
-    close(a.mesh_force_mean_n, b.mesh_force_mean_n, rel, "mean force");
-    close(a.mesh_force_max_n, b.mesh_force_max_n, rel, "max force");
-    close(a.mesh_force_min_n, b.mesh_force_min_n, rel, "min force");
-    close(a.dte_max_m, b.dte_max_m, rel, "max DTE");
-    close(a.dte_min_m, b.dte_min_m, rel, "min DTE");
-    close(a.dte_mean_m, b.dte_mean_m, rel, "mean DTE");
-}
 
 #[test]
 fn a_pitch_error_common_to_every_tooth_is_the_untoothed_pair_with_that_gap() {
@@ -115,35 +79,6 @@ fn a_crack_across_the_face_at_a_vanishing_helix_angle_is_the_spur_pair_s() {
     // The crack is felt: the healthy pair's peak force is lower by far more than that.
     let healthy = ResponseSummary::of(&steady(&model(&[]), &ExternalError::none()));
     assert!(sa.mesh_force_max_n - healthy.mesh_force_max_n > 1e-3 * sa.mesh_force_max_n);
-}
-
-/// The mesh stiffness the crack removes at each quasi-static sample, N/m: the model's
-/// healthy contact lines at the sample's phase (its line table) less the sample's
-/// stiffness, with each sample's share of pinion roll r_b1 dphi (trapezoid weights, m).
-fn stiffness_dips(m: &Model, r: &DynamicResponse) -> Vec<(f64, f64)> {
-    let s = &r.signals;
-    let ms = &s.meshes[0];
-    let omega = m.params.operating.pinion_speed_rad_s;
-    let rb1 = m.pair.pinion.base_radius_m;
-    let n = s.time_s.len();
-    let total = r.excitation_periods as f64 * r.mesh_period_s;
-    (0..n)
-        .map(|k| {
-            let healthy: f64 = m
-                .pair
-                .pairs_in_contact(ms.phase_rad[k])
-                .map(|(_, rho)| m.mesh.pair_stiffness_n_per_m(rho))
-                .sum();
-            let next = if k + 1 < n { s.time_s[k + 1] } else { total };
-            let prev = if k > 0 {
-                s.time_s[k - 1]
-            } else {
-                s.time_s[n - 1] - total
-            };
-            let roll = rb1 * omega * 0.5 * (next - prev);
-            (healthy - ms.mesh_stiffness_n_per_m[k], roll)
-        })
-        .collect()
 }
 
 #[test]
@@ -343,7 +278,7 @@ fn bad_face_spans_exit_2_naming_the_key_and_the_range() {
         ]),
         &["fault.face_start_mm", "fault.face_end_mm", "12"],
     );
-    // A span on a spur pair; a spur pair's width fraction on a helical one; a broken tip.
+    // A span on a spur pair; a spur pair's width fraction on a helical one.
     rejected(
         &[
             "dynamics",

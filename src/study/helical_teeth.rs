@@ -3,16 +3,16 @@
 //! and the refusal of the wear studies, which do not take such teeth yet.
 //!
 //! Taken by `gearwear dynamics` and `gearwear signals` (and the dynamics sweeps): pitch and
-//! profile errors, run-out, cracks and spalls across a span of the face
-//! (`study::teeth::ToothInputs::helical`). Refused, naming the keys: a broken tip (not
-//! built on a line of slices), the spur pair's `fault.*_width_fraction` (a helical fault's
-//! share of the face is its span), and per-tooth inputs together with the lead keys or the
-//! tilting degrees of freedom (their face loads assume every tooth alike).
+//! profile errors, run-out, cracks, spalls and broken tips across a span of the face
+//! (`study::teeth::ToothInputs::helical`, docs/MODEL.md 11.12 for the tip). Refused, naming
+//! the keys: the spur pair's `fault.*_width_fraction` (a helical fault's share of the face
+//! is its span), and per-tooth inputs together with the lead keys or the tilting degrees of
+//! freedom (their face loads assume every tooth alike).
 
 use super::face_load::lead_keys;
 use super::model_error::ModelError;
 use super::teeth::ToothInputs;
-use crate::config::case::{Case, Fault};
+use crate::config::case::Case;
 use crate::geometry::ProfileGrid;
 use crate::stiffness::helical::SliceMeshStiffness;
 
@@ -27,11 +27,6 @@ pub(crate) fn teeth_problems(case: &Case) -> Vec<String> {
     let mut p = Vec::new();
     for (i, f) in case.fault.iter().enumerate() {
         let which = format!("fault {i}, {} tooth {}", f.gear.name(), f.tooth);
-        if let Fault::BrokenTip { .. } = f.fault {
-            p.push(format!(
-                "`fault.kind` = \"broken_tip\" ({which}) is not built on a helical pair (`gear.helix_angle_deg` > 0) yet: its cut would end each face slice's contact separately; give a crack or a spall, or a spur pair"
-            ));
-        }
         let t = f.table();
         for (key, v) in [
             ("crack_width_fraction", t.crack_width_fraction),

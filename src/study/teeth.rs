@@ -10,6 +10,7 @@ mod checks;
 mod errors;
 mod faults;
 mod helical;
+mod helical_tip;
 mod sides;
 mod worn;
 

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod figures;
+pub mod helical;
 pub mod linear;
 pub mod paper;
 pub mod planetary;

@@ -27,8 +27,9 @@
 //! Samples lie at the wear grid's spacing over the line pair's path, interpolated linearly
 //! by the tooth-resolved mesh (as a spur pair's flank tables are).
 
-use super::checks::geometry_problems;
+use super::checks::{geometry_problems, upper_mm};
 use super::errors::gear_errors;
+use super::helical_tip::{line_limit, max_removed_height_m, TipCut};
 use super::{apply_fault, flanks_of, ToothInputs};
 use crate::config::case::{Case, Member};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank};
@@ -43,6 +44,10 @@ struct LineSamples {
     rho_start_m: f64,
     spacing_m: f64,
     slices: Vec<Vec<(usize, f64, f64)>>,
+    /// The line's slices: (face slice j, offset o_i from the trailing end, m).
+    offsets: Vec<(usize, f64)>,
+    /// The transverse path [A, E], pinion rho1, m.
+    path: (f64, f64),
 }
 
 impl LineSamples {
@@ -68,15 +73,30 @@ impl LineSamples {
             rho_start_m: lines.line.rho_start_m,
             spacing_m: spacing,
             slices,
+            offsets: (lines.offsets.iter().enumerate())
+                .map(|(i, o)| (s.face_slice_of_line_slice(i), *o))
+                .collect(),
+            path: (t.rho_start_m, t.rho_end_m),
         }
     }
 }
 
 /// One fault of a tooth on the slice: its tables on the wear grid (compliance, the pit's
-/// gap in `removed_m`) and which face slices it covers.
+/// gap in `removed_m`), which face slices it covers, and a broken tip's cut
+/// (docs/MODEL.md 11.12).
 struct SliceFault {
     flank: ToothFlank,
     covers: Vec<bool>,
+    cut: Option<TipCut>,
+}
+
+impl SliceFault {
+    /// Whether this fault's broken tip takes face slice `j` at pinion rho1 `r_m` out of
+    /// contact.
+    #[inline]
+    fn cuts(&self, j: usize, r_m: f64) -> bool {
+        self.covers[j] && self.cut.is_some_and(|c| c.cuts(r_m))
+    }
 }
 
 /// Which face slices of `s` carry the fault `f`: those whose centre lies in its span
@@ -145,7 +165,8 @@ impl ToothInputs {
         let mut healthy = case.clone();
         healthy.fault.clear();
         let samples = LineSamples::of(s, grid);
-        let lines = |member: Member, e| -> Vec<ToothFlank> {
+        let mut problems = Vec::new();
+        let mut lines = |member: Member, e| -> Vec<ToothFlank> {
             let side = super::sides::side(member);
             let own = match side {
                 Side::Pinion => &grid.rho_pinion_m,
@@ -163,13 +184,24 @@ impl ToothInputs {
                             let mut flank = ToothFlank::perfect(grid.len());
                             apply_fault(&mut flank, x, t, slice, side, own);
                             let covers = covered_slices(x, s);
-                            SliceFault { flank, covers }
+                            let cut = TipCut::of(&flank, side);
+                            SliceFault { flank, covers, cut }
                         })
                         .collect();
-                    line_flank(&f, &faults, grid, &samples)
+                    line_flank(&f, &faults, grid, &samples, side).unwrap_or_else(|()| {
+                        problems.extend(resumed_contact_problems(case, s, member, tooth));
+                        f
+                    })
                 })
                 .collect()
         };
+        let (pinion, gear) = (
+            lines(Member::Pinion, &errors[0]),
+            lines(Member::Gear, &errors[1]),
+        );
+        if !problems.is_empty() {
+            return Err(problems);
+        }
         let runout = |e: &super::GearErrors, phase_deg: Option<f64>, speed: f64| Runout {
             eccentricity_m: 0.5 * e.runout_um * 1e-6,
             phase_rad: deg(phase_deg.unwrap_or(0.0)),
@@ -177,8 +209,8 @@ impl ToothInputs {
         };
         let teeth = &case.teeth;
         let me = Self {
-            pinion: lines(Member::Pinion, &errors[0]),
-            gear: lines(Member::Gear, &errors[1]),
+            pinion,
+            gear,
             runout: [
                 runout(
                     &errors[0],
@@ -207,27 +239,90 @@ impl ToothInputs {
     }
 }
 
+/// The refusal of a tooth whose broken tips would end its line's contact and start it
+/// again (`helical_tip` module docs): each tip fault of `member`'s `tooth`, naming the key,
+/// its value and the sufficient range of removed heights on this pair and slice count.
+fn resumed_contact_problems(
+    case: &Case,
+    s: &SliceMeshStiffness,
+    member: Member,
+    tooth: usize,
+) -> Vec<String> {
+    let grid = s.model_line_grid();
+    let spacing = grid.lead / s.slices() as f64;
+    let h_max = max_removed_height_m(&s.pair().transverse, super::sides::side(member), spacing);
+    case.fault
+        .iter()
+        .enumerate()
+        .filter(|(_, x)| x.gear == member && x.tooth == tooth)
+        .filter(|(_, x)| matches!(x.fault, crate::config::case::Fault::BrokenTip { .. }))
+        .map(|(i, x)| {
+            format!(
+                "`fault.removed_height_mm` = {} (fault {i}, {} tooth {tooth}) cuts the tip so close to the start of active profile over part of the face that the tooth's contact line would stop touching and touch again; a helical tooth's line ends its contact once (docs/MODEL.md 11.12): valid (0, {}] mm on this pair with {} slices (`stiffness.slices`): the cut kept one slice spacing above the start of the path of contact",
+                x.written("removed_height_mm"),
+                member.name(),
+                upper_mm(h_max * 1e3),
+                s.slices()
+            )
+        })
+        .collect()
+}
+
 /// A tooth's flank as its contact line on the line pair (module docs): `f` its errors on
-/// the wear grid, `faults` its faults with the face slices they cover.
+/// the wear grid, `faults` its faults with the face slices they cover, `side` its gear.
+/// A broken tip's covered slices beyond its cut carry nothing (docs/MODEL.md 11.12): the
+/// line's stiffness and gap are its uncut slices', their share of the line on the path
+/// is its width lost, and past the line's limit (`helical_tip::line_limit`) the tooth
+/// does not touch, its tables held at the last sample before it. Err(()): the line would
+/// stop touching and touch again.
 fn line_flank(
     f: &ToothFlank,
     faults: &[SliceFault],
     grid: &ProfileGrid,
     samples: &LineSamples,
-) -> ToothFlank {
+    side: Side,
+) -> Result<ToothFlank, ()> {
     let n = samples.slices.len();
     let flat = f.removed_m.iter().all(|x| *x == 0.0);
     if faults.is_empty() && flat {
-        return ToothFlank {
+        return Ok(ToothFlank {
             position_m: f.position_m,
             ..ToothFlank::perfect(n)
-        };
+        });
     }
+    let cuts: Vec<(&[bool], TipCut)> = faults
+        .iter()
+        .filter_map(|x| x.cut.map(|c| (x.covers.as_slice(), c)))
+        .collect();
+    let limit = line_limit(
+        &samples.offsets,
+        samples.path,
+        samples.rho_start_m,
+        &cuts,
+        side,
+    )?;
+    let rho_at = |p: usize| samples.rho_start_m + p as f64 * samples.spacing_m;
+    let touches = |p: usize| match (limit, side) {
+        (None, _) => true,
+        (Some(l), Side::Pinion) => rho_at(p) <= l,
+        (Some(l), Side::Gear) => rho_at(p) >= l,
+    };
     let mut removed_m = vec![0.0; n];
     let mut compliance = vec![0.0; n];
-    for (p, line) in samples.slices.iter().enumerate() {
-        let (mut k, mut kf, mut kf_gap) = (0.0, 0.0, 0.0);
+    let mut width_loss = vec![0.0; n];
+    for (p, line) in samples
+        .slices
+        .iter()
+        .enumerate()
+        .filter(|(p, _)| touches(*p))
+    {
+        let (mut k, mut kf, mut kf_gap, mut cut) = (0.0, 0.0, 0.0, 0usize);
         for &(j, r, ki) in line {
+            k += ki;
+            if faults.iter().any(|x| x.cuts(j, r)) {
+                cut += 1;
+                continue;
+            }
             let mut gap = if flat {
                 0.0
             } else {
@@ -241,19 +336,41 @@ fn line_flank(
                 gap += grid.interpolate(&x.flank.removed_m, r);
             }
             let kfi = if c == 0.0 { ki } else { 1.0 / (1.0 / ki + c) };
-            k += ki;
             kf += kfi;
             kf_gap += kfi * gap;
         }
         if kf > 0.0 {
             removed_m[p] = kf_gap / kf;
             compliance[p] = 1.0 / kf - 1.0 / k;
+            width_loss[p] = cut as f64 / line.len() as f64;
         }
     }
-    ToothFlank {
+    // Past the limit the tooth does not touch: its tables hold the last touching sample's,
+    // so that the interpolation up to the limit takes that sample's values.
+    let held = |v: &mut Vec<f64>| {
+        let order: Vec<usize> = match side {
+            Side::Pinion => (0..n).collect(),
+            Side::Gear => (0..n).rev().collect(),
+        };
+        let mut last = None;
+        for p in order {
+            if touches(p) {
+                last = Some(v[p]);
+            } else if let Some(x) = last {
+                v[p] = x;
+            }
+        }
+    };
+    for v in [&mut removed_m, &mut compliance, &mut width_loss] {
+        held(v);
+    }
+    let table = |v: Vec<f64>| v.iter().any(|c| *c != 0.0).then_some(v);
+    Ok(ToothFlank {
         removed_m,
         position_m: f.position_m,
-        compliance_m_per_n: compliance.iter().any(|c| *c != 0.0).then_some(compliance),
+        compliance_m_per_n: table(compliance),
+        width_loss: table(width_loss),
+        contact_limit_rho1_m: limit,
         ..Default::default()
-    }
+    })
 }
