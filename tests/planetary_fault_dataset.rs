@@ -5,7 +5,8 @@
 //!   (solved here from the faulty case: its steady state over the fault's period, heard
 //!   by the case's sensor) and differs from the healthy condition's;
 //! - the labels `fault`, `severity` and the sidecar's `planetary_faults` (member, tooth,
-//!   kind, size) are what the design and the condition's case say;
+//!   kind, size), and the index's fault columns per row, are what the design and the
+//!   condition's case say;
 //! - a `fault` label that contradicts the case, or a severity on a healthy condition, is
 //!   refused (exit 2) naming the key, before the folder exists;
 //! - a forged fault table in a kept sidecar is named on resume (the labels recomputed
@@ -82,6 +83,42 @@ fn a_sun_crack_conditions_records_are_the_faulty_sets_and_labelled_by_its_case()
     assert_eq!(f["tooth"].as_i64(), Some(3));
     assert_eq!(f["kind"], "crack");
     assert_eq!(f["crack_depth_mm"].as_f64(), Some(1.5));
+    // The index's fault columns, row by row, against the design written above (the
+    // healthy condition: none; the sun-crack one: sun tooth 3, a 1.5 mm crack).
+    let (names, rows) = common::read_csv(&out.join("index.csv"));
+    let col = |row: &[String], name: &str| {
+        row[names
+            .iter()
+            .position(|n| n == name)
+            .unwrap_or_else(|| panic!("{name}"))]
+        .clone()
+    };
+    assert_eq!(rows.len(), 2);
+    for row in &rows {
+        let want: [&str; 7] = match col(row, "condition").as_str() {
+            "healthy" => ["", "0", "-1", "", "0", "0", "0"],
+            _ => ["sun", "0", "3", "crack", "1.5", "0", "0"],
+        };
+        for (name, w) in [
+            "fault_member",
+            "fault_planet",
+            "fault_tooth",
+            "fault_kind",
+            "fault_crack_depth_mm",
+            "fault_spall_depth_um",
+            "fault_removed_height_mm",
+        ]
+        .iter()
+        .zip(want)
+        {
+            let got = col(row, name);
+            let same = match (got.parse::<f64>(), w.parse::<f64>()) {
+                (Ok(a), Ok(b)) => a == b,
+                _ => got == w,
+            };
+            assert!(same, "{name}: {got:?}, the design says {w:?}");
+        }
+    }
 
     // The faulty set's ring sensor record, solved here from its case (angle 0,
     // half-width 180 / N deg, 0.05 s at 25.6 kHz, as the example's signals give it).

@@ -17,8 +17,9 @@ use common::{gearwear, stderr};
 use gearwear::config::{load_case, Case};
 use gearwear::dynamics::planetary_dynamic::MeshStiffnessSource;
 use gearwear::study::budget::planetary::estimate_planetary_wear;
+use gearwear::study::planetary_teeth::tooth_rates;
 use gearwear::study::planetary_wear::{
-    member_flanks, new_teeth, tooth_rates, wear_gaps, ForceHistory, MemberFlank, PlanetaryWearModel,
+    member_flanks, new_teeth, wear_gaps, ForceHistory, MemberFlank, PlanetaryWearModel,
 };
 use gearwear::study::planetary_wear_loop::update_of;
 use gearwear::study::wear_loop::WearMode;

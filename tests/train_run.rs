@@ -5,7 +5,9 @@
 //! is refused as the single pair's run refuses it, naming the stage.
 
 mod common;
-use common::{assert_nested_study, gearwear, kill_when, published, read_csv, rejected, stderr};
+use common::{
+    assert_nested_study, gearwear, kill_when, number_after, published, read_csv, rejected, stderr,
+};
 use std::path::{Path, PathBuf};
 
 /// The two-stage reducer (19/31 then 23/47) at 30 Hz and 60 N m on the input shaft,
@@ -179,17 +181,6 @@ fn bad_input_to_a_train_run_is_refused_naming_the_stage_or_key() {
         &["run", "--config", &train, "--resume"],
         &["--resume", "does not exist"],
     );
-}
-
-/// The number after `prefix` in `text` (up to the next space).
-fn number_after(text: &str, prefix: &str) -> f64 {
-    let i = text.find(prefix).unwrap_or_else(|| panic!("no `{prefix}`")) + prefix.len();
-    text[i..]
-        .split_whitespace()
-        .next()
-        .unwrap()
-        .parse()
-        .unwrap()
 }
 
 #[test]

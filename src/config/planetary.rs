@@ -459,7 +459,7 @@ impl PlanetarySection {
     /// The set's tooth fault that changes its tooth, if any (a crack of zero depth is the
     /// healthy set).
     pub fn active_fault(&self) -> Option<&PlanetaryFault> {
-        self.fault.iter().find(|f| f.changes_tooth())
+        super::planetary_fault::active(&self.fault)
     }
 
     /// The planet pin position errors: one value per planet, each finite and within

@@ -116,3 +116,9 @@ impl PlanetaryFault {
         }
     }
 }
+
+/// Of a set's `[[planetary.fault]]` tables, the one the model applies: the first that
+/// changes its tooth (a crack of zero depth is the healthy set).
+pub fn active(faults: &[PlanetaryFault]) -> Option<&PlanetaryFault> {
+    faults.iter().find(|f| f.changes_tooth())
+}

@@ -146,8 +146,9 @@ impl PlanetarySpectrumRecord {
     }
 
     /// The update as one run of the set reads it: bin `observed`'s records with every
-    /// mesh's wear per pinion cycle under the spectrum (so the flanks' rates, and the
-    /// wear between updates, are the spectrum's).
+    /// mesh's wear per pinion cycle under the spectrum, a faulty member's per tooth too
+    /// (so the flanks' rates, the wear between updates and the teeth's, are the
+    /// spectrum's).
     pub fn combined(&self, shares: &[f64], observed: usize) -> PlanetaryUpdate {
         let b = &self.bins[observed.min(self.bins.len() - 1)];
         let meshes = b
@@ -156,9 +157,14 @@ impl PlanetarySpectrumRecord {
             .enumerate()
             .map(|(j, m)| {
                 let inc = self.increment(shares, j);
+                let teeth = self
+                    .bins
+                    .iter()
+                    .map(|b| b.meshes[j].increment_teeth.as_ref());
                 crate::study::wear_loop::UpdateRecord {
                     increment_pinion_m: inc.pinion_m,
                     increment_gear_m: inc.gear_m,
+                    increment_teeth: super::model::mixed_maps(teeth, shares),
                     ..m.clone()
                 }
             })

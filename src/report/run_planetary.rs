@@ -6,7 +6,7 @@
 //! (`report.html`, `run_planetary_report`), the ring sensor's sideband figure it adds
 //! (`ring_sensor_sidebands.png`, its data under `csv/`) and `summary.json`: the set, its
 //! modes, every mesh's force, the planets' load sharing, every member's wear and the
-//! limiting member, the ring sensor's mesh harmonics, each copied from its study's
+//! limiting member, a faulty tooth's wear beside its member's other teeth, the ring sensor's mesh harmonics, each copied from its study's
 //! summary, and where each study's files are. Under a load spectrum (`report::duty_planetary`)
 //! `wear/` holds what `gearwear wear` writes under it, the summary a copy of its
 //! `load_spectrum` and the report a duty-cycle section.
@@ -188,7 +188,7 @@ fn summary(s: &Summaries, runs: &[&PlanetaryWearRun]) -> Value {
     if s.signals.is_some() {
         studies["signals"] = json!("signals/summary.json");
     }
-    json!({
+    let mut out = json!({
         "planetary_run": {
             "geometry": p["geometry"],
             "kinematics": p["kinematics"],
@@ -210,5 +210,9 @@ fn summary(s: &Summaries, runs: &[&PlanetaryWearRun]) -> Value {
             "studies": studies,
         },
         "warnings": s.dynamics["warnings"],
-    })
+    });
+    if !w["faulty_tooth"].is_null() {
+        out["planetary_run"]["faulty_tooth"] = w["faulty_tooth"].clone();
+    }
+    out
 }

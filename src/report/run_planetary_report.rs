@@ -8,6 +8,7 @@
 
 use super::html::{FigureBlock, Report, Section, TableBlock};
 use super::run_train_report::at;
+use super::teeth::own_and_others_line;
 use crate::store::RunMetadata;
 use crate::study::planetary_wear_loop::PlanetaryWearRun;
 use serde_json::Value;
@@ -230,6 +231,7 @@ fn wear_section(s: &Summaries, runs: &[&PlanetaryWearRun], figures: Vec<FigureBl
             at(limit, "/max_wear_um"),
         ));
     }
+    paragraphs.extend(faulty_tooth_lines(w, runs));
     let mut header = vec!["member".to_string(), "teeth".to_string()];
     for r in runs {
         header.push(format!("max wear, {} (µm)", r.mode.label()));
@@ -262,6 +264,47 @@ fn wear_section(s: &Summaries, runs: &[&PlanetaryWearRun], figures: Vec<FigureBl
             highlight_col: None,
         }],
     }
+}
+
+/// A faulty tooth's lines, read from the wear summary `w`'s `faulty_tooth`: the fault,
+/// then per run and flank its deepest wear beside the deepest of its member's other
+/// teeth; none without a fault.
+fn faulty_tooth_lines(w: &Value, runs: &[&PlanetaryWearRun]) -> Vec<String> {
+    let f = &w["faulty_tooth"];
+    if f.is_null() {
+        return Vec::new();
+    }
+    let member = match f["planet"].as_i64() {
+        Some(p) => format!("planet {p}"),
+        None => f["member"].as_str().unwrap_or("?").to_string(),
+    };
+    let tooth = at(f, "/tooth");
+    let mut lines = vec![format!(
+        "Fault: {} on {member} tooth {tooth}. Each of its teeth wears from its own contacts over the fault's period (docs/MODEL.md 12.16):",
+        f["kind"].as_str().unwrap_or("?")
+    )];
+    for r in runs {
+        let Some(flanks) = f["final"][r.mode.name()].as_object() else {
+            continue;
+        };
+        for (flank, v) in flanks {
+            let who = if f["member"].as_str() == Some(flank.as_str()) {
+                format!("{member} tooth {tooth}")
+            } else {
+                format!("{member} tooth {tooth} ({})", flank.replace('_', " "))
+            };
+            lines.push(own_and_others_line(
+                r.mode.label(),
+                &who,
+                &member,
+                (
+                    &at(v, "/tooth_max_wear_um"),
+                    &at(v, "/other_teeth_max_wear_um"),
+                ),
+            ));
+        }
+    }
+    lines
 }
 
 /// What a sensor on the fixed ring hears: each mesh harmonic with its sidebands.

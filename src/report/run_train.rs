@@ -18,11 +18,13 @@ use super::plot::Figure;
 pub use super::run_train_report::TrainRun;
 use super::run_train_report::{overall_ratio, StageResults};
 use super::stiffness_train::train_stiffness_artifacts;
+use super::teeth::own_and_others_line;
 use super::wear::wear_figures;
 use super::wear_train::train_wear_artifacts;
 use crate::io::Table;
 use crate::store::RunMetadata;
 use crate::study::wear_loop::WearRun;
+use crate::wear::tooth_wear::deepest_own_and_others;
 use serde_json::{json, Value};
 
 /// Mesh periods of a stage shown in its force figure.
@@ -179,7 +181,6 @@ fn faulty_stage_lines(
     let mut lines = vec![format!(
         "Stage {n}'s teeth are resolved one by one: its mesh cycle c engages pinion tooth c mod {z1} and gear tooth c mod {z2}, the stage's excitation repeats after {periods} of its mesh periods, and each tooth wears from its own contacts (docs/MODEL.md 9.10)."
     )];
-    let deepest = |p: &[f64]| p.iter().fold(0.0_f64, |a, b| a.max(*b));
     for f in inputs.faults.iter().filter(|f| f.changes_tooth()) {
         lines.push(format!(
             "Fault: {} on {} tooth {}.",
@@ -195,23 +196,15 @@ fn faulty_stage_lines(
                 crate::config::case::Member::Pinion => &teeth.pinion_m,
                 crate::config::case::Member::Gear => &teeth.gear_m,
             };
-            let Some(own) = profiles.get(f.tooth).map(|p| deepest(p)) else {
+            let Some((own, others)) = deepest_own_and_others(profiles, f.tooth) else {
                 continue;
             };
-            let others = profiles
-                .iter()
-                .enumerate()
-                .filter(|(t, _)| *t != f.tooth)
-                .map(|(_, p)| deepest(p))
-                .fold(0.0_f64, f64::max);
-            lines.push(format!(
-                "{}: the deepest wear of {} tooth {} is {} µm, of the {}'s other teeth {} µm.",
+            let um = |x: f64| crate::format::shown(x * 1e6);
+            lines.push(own_and_others_line(
                 r.mode.label(),
+                &format!("{} tooth {}", f.gear.name(), f.tooth),
                 f.gear.name(),
-                f.tooth,
-                crate::format::shown(own * 1e6),
-                f.gear.name(),
-                crate::format::shown(others * 1e6)
+                (&um(own), &um(others)),
             ));
         }
     }

@@ -520,3 +520,15 @@ pub fn teeth_section(
         tables: vec![],
     })
 }
+
+/// The line a report gives a faulty tooth's wear at the end of a wear run (`label`, e.g.
+/// "dynamic"): the deepest wear of `who` (e.g. "pinion tooth 3") beside that of the other
+/// teeth of `member` (e.g. "pinion"), each already shown in µm (`own`, `others`).
+pub(crate) fn own_and_others_line(
+    label: &str,
+    who: &str,
+    member: &str,
+    (own, others): (&str, &str),
+) -> String {
+    format!("{label}: the deepest wear of {who} is {own} µm, of the {member}'s other teeth {others} µm.")
+}

@@ -13,22 +13,30 @@
 //!   every planet's sun-side depth, the ring mesh's rho1 (the planet's, mm) with every
 //!   planet's ring-side depth and the ring's (µm).
 //!
+//! - `teeth_wear_MODE.csv` (a set with a tooth fault): every tooth of the faulty member's
+//!   depth at the end of the run along each of its flanks ([`teeth_table`]).
+//!
 //! Figures (`super::wear_planetary_figures`): `wear_history_MODE.png` and
 //! `wear_profiles_MODE.png`, each with its data under `csv/`.
 //!
 //! `summary.json`: `members` (per member its teeth, tooth contacts per input revolution
 //! and per mode its final largest depth, volume and each flank's), the meshes' pinion
 //! revolutions per input revolution, the input cycles and updates per mode,
-//! `limiting_member` per mode (the member with the deepest wear at the end), the early
-//! stops and the warnings.
+//! `limiting_member` per mode (the member with the deepest wear at the end), with a tooth
+//! fault `faulty_tooth` (the fault's member, planet, tooth and kind, and per mode and flank
+//! the faulty tooth's deepest wear beside the deepest of the member's other teeth), the
+//! early stops and the warnings.
 
 use super::artifacts::Artifacts;
+use super::teeth::own_and_others_line;
 use super::wear_planetary_figures::{flank_stem as stem, max_of};
 use crate::format::shown;
 use crate::io::Table;
+use crate::study::planetary_teeth::FaultyTeeth;
 use crate::study::planetary_wear::{contacts_per_input, MemberFlank, PlanetaryWearModel};
 use crate::study::planetary_wear_check::planetary_mesh_name;
 use crate::study::planetary_wear_loop::PlanetaryWearRun;
+use crate::wear::tooth_wear::deepest_own_and_others;
 use serde_json::{json, Map, Value};
 
 /// `wear_history_MODE.csv` of a run (see the module docs).
@@ -138,6 +146,21 @@ fn members_of(flanks: &[MemberFlank]) -> Vec<(String, f64, f64, Map<String, Valu
     out
 }
 
+/// A run's history, mesh and profile tables and its figures, added to `a`.
+fn add_run_files(model: &PlanetaryWearModel, run: &PlanetaryWearRun, a: &mut Artifacts) {
+    let mode = run.mode.name();
+    a.table(
+        format!("wear_history_{mode}.csv"),
+        history_table(model, run),
+    );
+    a.table(format!("mesh_history_{mode}.csv"), mesh_table(model, run));
+    a.table(
+        format!("wear_profiles_{mode}.csv"),
+        profiles_table(model, run),
+    );
+    super::wear_planetary_figures::add_figures(model, run, a);
+}
+
 /// The summary, tables and headline of a planetary set's wear runs.
 pub fn planetary_wear_artifacts(
     model: &PlanetaryWearModel,
@@ -151,18 +174,15 @@ pub fn planetary_wear_artifacts(
         (Map::new(), Map::new(), Map::new(), Map::new());
     let mut lines = Vec::new();
     let mut finals: Vec<(String, Map<String, Value>)> = Vec::new();
+    let mut faulty = Map::new();
     for run in runs {
         let mode = run.mode.name();
-        a.table(
-            format!("wear_history_{mode}.csv"),
-            history_table(model, run),
-        );
-        a.table(format!("mesh_history_{mode}.csv"), mesh_table(model, run));
-        a.table(
-            format!("wear_profiles_{mode}.csv"),
-            profiles_table(model, run),
-        );
-        super::wear_planetary_figures::add_figures(model, run, &mut a);
+        add_run_files(model, run, &mut a);
+        if let Some(teeth) = run.faulty_teeth(model) {
+            a.table(format!("teeth_wear_{mode}.csv"), teeth_table(model, &teeth));
+            let entry = faulty_tooth_final(&teeth, run.mode.label(), &mut lines);
+            faulty.insert(mode.into(), entry);
+        }
         let Some(last) = run.updates.last() else {
             continue;
         };
@@ -232,6 +252,85 @@ pub fn planetary_wear_artifacts(
         },
         "warnings": model.dynamics.study.warnings,
     });
+    if let Some(f) = faulty_tooth_summary(model, faulty) {
+        a.summary["planetary_wear"]["faulty_tooth"] = f;
+    }
     a.headline = lines.join("\n");
     a
+}
+
+/// `teeth_wear_MODE.csv`: every tooth of the faulty member's depth at the end of a run
+/// (µm) along each of its flanks, against each mesh's rho1 (mm) as `wear_profiles_MODE.csv`
+/// gives them: a column per flank and tooth, `STEM_toothT_um` (`STEM` as the profiles'
+/// flank columns, e.g. `sun`, `planet_2_ring_side`).
+pub fn teeth_table(model: &PlanetaryWearModel, teeth: &FaultyTeeth) -> Table {
+    let [gs, gr] = &model.grids;
+    let mm = |v: &[f64]| v.iter().map(|r| r * 1e3).collect::<Vec<f64>>();
+    let mut t = Table::new()
+        .col("rho_sun_mesh_mm", mm(&gs.rho_pinion_m))
+        .col("rho_ring_mesh_mm", mm(&gr.rho_pinion_m));
+    for (flank, profiles) in &teeth.flanks {
+        let stem = if teeth.member == *flank {
+            teeth.member.clone()
+        } else {
+            format!("{}_{flank}", teeth.member)
+        };
+        for (k, p) in profiles.iter().enumerate() {
+            t = t.col(
+                &format!("{stem}_tooth{k}_um"),
+                p.iter().map(|h| h * 1e6).collect(),
+            );
+        }
+    }
+    t
+}
+
+/// A run's `faulty_tooth.final` entry (per flank the faulty tooth's deepest wear and the
+/// deepest of the member's other teeth, µm), the headline's lines on it added to `lines`
+/// (`label`: the run's mode in words).
+fn faulty_tooth_final(teeth: &FaultyTeeth, label: &str, lines: &mut Vec<String>) -> Value {
+    let mut entry = Map::new();
+    let member = teeth.member.replace('_', " ");
+    for (flank, profiles) in &teeth.flanks {
+        let Some((own, others)) = deepest_own_and_others(profiles, teeth.tooth) else {
+            continue;
+        };
+        entry.insert(
+            (*flank).into(),
+            json!({"tooth_max_wear_um": own * 1e6, "other_teeth_max_wear_um": others * 1e6}),
+        );
+        let who = if teeth.member == *flank {
+            format!("{member} tooth {}", teeth.tooth)
+        } else {
+            format!(
+                "{member} tooth {} ({})",
+                teeth.tooth,
+                flank.replace('_', " ")
+            )
+        };
+        lines.push(own_and_others_line(
+            label,
+            &who,
+            &member,
+            (&shown(own * 1e6), &shown(others * 1e6)),
+        ));
+    }
+    Value::Object(entry)
+}
+
+/// The summary's `faulty_tooth` of a set with a tooth fault (its member, planet, tooth and
+/// kind, `final`: each run's [`faulty_tooth_final`] entry by mode); None without a fault.
+fn faulty_tooth_summary(
+    model: &PlanetaryWearModel,
+    final_by_mode: Map<String, Value>,
+) -> Option<Value> {
+    let f = model.dynamics.study.section.active_fault()?;
+    Some(json!({
+        "member": f.gear.name(),
+        "planet": f.planet,
+        "tooth": f.tooth,
+        "kind": f.kind.name(),
+        "final": final_by_mode,
+        "notes": "the faulty tooth's deepest wear and the deepest of its member's other teeth, each tooth worn by its own contacts over the fault's period and accumulated over the run's blocks (docs/MODEL.md 12.16); teeth_wear_MODE.csv holds every tooth's profile",
+    }))
 }

@@ -141,23 +141,32 @@ impl FaultTeeth {
         ring: bool,
         entered: i64,
     ) -> bool {
-        let tooth = tooth as i64;
-        match (member, ring) {
+        self.tooth_of(member, planet, ring, entered) == Some(tooth)
+    }
+
+    /// The tooth of `member` that the pair of [`Self::holds`] holds (0-based); None when
+    /// that mesh never meets `member`'s teeth.
+    pub fn tooth_of(
+        &self,
+        member: FaultMember,
+        planet: usize,
+        ring: bool,
+        entered: i64,
+    ) -> Option<usize> {
+        let t = match (member, ring) {
             (FaultMember::Sun, false) => {
-                (entered - self.sun_whole[planet]).rem_euclid(self.teeth[0]) == tooth
+                (entered - self.sun_whole[planet]).rem_euclid(self.teeth[0])
             }
-            (FaultMember::Sun, true) | (FaultMember::Ring, false) => false,
             (FaultMember::Ring, true) => {
-                (entered - self.ring_whole[planet]).rem_euclid(self.teeth[2]) == tooth
+                (entered - self.ring_whole[planet]).rem_euclid(self.teeth[2])
             }
-            (FaultMember::Planet(n), false) => {
-                n == planet && entered.rem_euclid(self.teeth[1]) == tooth
+            (FaultMember::Planet(n), false) if n == planet => entered.rem_euclid(self.teeth[1]),
+            (FaultMember::Planet(n), true) if n == planet => {
+                (entered + self.ring_to_planet[planet]).rem_euclid(self.teeth[1])
             }
-            (FaultMember::Planet(n), true) => {
-                n == planet
-                    && (entered + self.ring_to_planet[planet]).rem_euclid(self.teeth[1]) == tooth
-            }
-        }
+            _ => return None,
+        };
+        Some(t as usize)
     }
 }
 
@@ -242,11 +251,24 @@ impl PlanetaryMeshes {
     /// for a set without a tooth fault (its teeth are not told apart).
     pub fn pair_holds(
         &self,
-        (planet, ring): (usize, bool),
+        at: (usize, bool),
         cycles: f64,
         k: usize,
         (member, tooth): (FaultMember, usize),
     ) -> Option<bool> {
+        self.fault.as_ref()?;
+        Some(self.pair_tooth(at, cycles, k, member) == Some(tooth))
+    }
+
+    /// The tooth of `member` that pair `k` of [`Self::pair_holds`] holds; None without a
+    /// tooth fault or when that mesh never meets `member`'s teeth.
+    pub fn pair_tooth(
+        &self,
+        (planet, ring): (usize, bool),
+        cycles: f64,
+        k: usize,
+        member: FaultMember,
+    ) -> Option<usize> {
         let (_, t) = self.fault.as_ref()?;
         let off = if ring {
             self.ring_offset[planet]
@@ -254,7 +276,7 @@ impl PlanetaryMeshes {
             self.sun_offset[planet]
         };
         let entered = (cycles + off).floor() as i64 - k as i64;
-        Some(t.holds(member, tooth, planet, ring, entered))
+        t.tooth_of(member, planet, ring, entered)
     }
 
     /// Mesh cycles over which every mesh's stiffness repeats: 1 with every tooth alike,

@@ -21,6 +21,7 @@ pub mod planetary_dynamics;
 pub mod planetary_fault;
 pub mod planetary_lumped;
 pub mod planetary_signals;
+pub mod planetary_teeth;
 pub mod planetary_wear;
 pub mod planetary_wear_check;
 pub mod planetary_wear_loop;

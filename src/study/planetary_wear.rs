@@ -226,24 +226,27 @@ impl PlanetaryWearModel {
     /// sorted by rho1: the pairs' loads, Hertz bands and surface speeds relative to the
     /// carrier. `gap` is the mesh's wear gap on its path.
     pub fn mesh_path(&self, j: usize, h: &ForceHistory, gap: &PairGap) -> Vec<PathSample> {
-        self.path_over(j, (&h.cycles, &h.forces_n), gap, None)
+        self.paths_over(j, (&h.cycles, &h.forces_n), gap, None)
+            .pop()
+            .unwrap_or_default()
     }
 
     /// Mesh `j`'s contacts at the instants `cycles` with the mesh forces `forces` (N), as
-    /// [`Self::mesh_path`]; with `tooth` only the pairs holding that tooth of that
-    /// member (`PlanetaryMeshes::pair_holds`; none on a set without a tooth fault), the
-    /// loads still split over every pair in contact.
-    fn path_over(
+    /// [`Self::mesh_path`]: one path of every pair, or with `by_tooth` = (member, its
+    /// teeth z) z paths, path t of the pairs holding tooth t of that member
+    /// (`PlanetaryMeshes::pair_tooth`; none on a set without a tooth fault), the loads
+    /// still split over every pair in contact.
+    fn paths_over(
         &self,
         j: usize,
         (cycles, forces_n): (&[f64], &[Vec<f64>]),
         gap: &PairGap,
-        tooth: Option<(FaultMember, usize)>,
-    ) -> Vec<PathSample> {
+        by_tooth: Option<(FaultMember, usize)>,
+    ) -> Vec<Vec<PathSample>> {
         let (kind, p) = self.kind_of(j);
         let meshes = match &self.dynamics.model.source {
             MeshStiffnessSource::Tables(m) => m,
-            MeshStiffnessSource::Constant(_) => return Vec::new(),
+            MeshStiffnessSource::Constant(_) => return vec![Vec::new()],
         };
         let set = &self.dynamics.study.set;
         let loa = [set.sun_planet.loa_length_m, set.ring_planet.loa_length_m][kind];
@@ -251,17 +254,20 @@ impl PlanetaryWearModel {
             0 => [self.relative_rad_s[0], self.relative_rad_s[1]],
             _ => [self.relative_rad_s[1], self.relative_rad_s[2]],
         };
-        let mut path = Vec::new();
+        let mut paths = vec![Vec::new(); by_tooth.map_or(1, |b| b.1)];
         for (c, forces) in cycles.iter().zip(forces_n) {
             let pairs: Vec<(f64, f64)> = match kind {
                 0 => meshes.sun_pairs_decided(p, *c, *c).collect(),
                 _ => meshes.ring_pairs_decided(p, *c, *c).collect(),
             };
             for (k, (rho1, load)) in pair_loads(&pairs, forces[j], gap).into_iter().enumerate() {
-                if tooth.is_some_and(|t| meshes.pair_holds((p, kind == 1), *c, k, t) != Some(true))
-                {
-                    continue;
-                }
+                let bucket = match by_tooth {
+                    None => 0,
+                    Some((member, _)) => match meshes.pair_tooth((p, kind == 1), *c, k, member) {
+                        Some(t) => t,
+                        None => continue,
+                    },
+                };
                 // Sun mesh: rho2 = N1N2 - rho1 (convex); ring mesh: rho2 = rho1 + N1N2
                 // (concave ring), 1/R = 1/rho1 - 1/rho2.
                 let (rho2, radius) = match kind {
@@ -274,7 +280,7 @@ impl PlanetaryWearModel {
                     radius,
                     self.e_star_pa[kind],
                 );
-                path.push(PathSample {
+                paths[bucket].push(PathSample {
                     rho1_m: rho1,
                     load_n: load,
                     pressure_pa: hz.max_pressure_pa,
@@ -285,7 +291,7 @@ impl PlanetaryWearModel {
                 });
             }
         }
-        sorted_by_rho1(&path)
+        paths.iter().map(|p| sorted_by_rho1(p)).collect()
     }
 
     /// Mesh `j`'s Archard wear per pinion cycle (relative to the carrier) over the
@@ -306,7 +312,8 @@ impl PlanetaryWearModel {
         let increments: Vec<WearIncrement> = (0..periods)
             .map(|k| {
                 let r = k * per..(k + 1) * per;
-                let path = self.path_over(j, (&h.cycles[r.clone()], &h.forces_n[r]), gap, None);
+                let h = (&h.cycles[r.clone()], &h.forces_n[r]);
+                let path = self.paths_over(j, h, gap, None).pop().unwrap_or_default();
                 self.increment_of(j, &path)
             })
             .collect();
@@ -324,12 +331,36 @@ impl PlanetaryWearModel {
         gap: &PairGap,
         tooth: usize,
     ) -> Option<WearIncrement> {
+        self.teeth_increments(j, h, gap)?.into_iter().nth(tooth)?
+    }
+
+    /// Every tooth of the faulty member's wear per pinion cycle on mesh `j`, as
+    /// [`Self::tooth_increment`] (one pass over the history, its pairs grouped by the
+    /// tooth they hold): entry t is tooth t's, None for a tooth mesh `j` never loads; None
+    /// without a fault.
+    pub fn teeth_increments(
+        &self,
+        j: usize,
+        h: &ForceHistory,
+        gap: &PairGap,
+    ) -> Option<Vec<Option<WearIncrement>>> {
         let MeshStiffnessSource::Tables(m) = &self.dynamics.model.source else {
             return None;
         };
         let member = m.fault()?.member;
-        let path = self.path_over(j, (&h.cycles, &h.forces_n), gap, Some((member, tooth)));
-        (!path.is_empty()).then(|| self.increment_of(j, &path))
+        let set = &self.dynamics.study.set;
+        let z = match member {
+            FaultMember::Sun => set.teeth_sun(),
+            FaultMember::Planet(_) => set.teeth_planet(),
+            FaultMember::Ring => set.teeth_ring(),
+        };
+        let paths = self.paths_over(j, (&h.cycles, &h.forces_n), gap, Some((member, z)));
+        Some(
+            paths
+                .iter()
+                .map(|p| (!p.is_empty()).then(|| self.increment_of(j, p)))
+                .collect(),
+        )
     }
 
     /// The Archard wear per pinion cycle of mesh `j`'s contacts `path` (paper eq. 14-17,
@@ -542,46 +573,6 @@ pub fn member_flanks(
         on(gr, true, rbr, br, zr),
     ));
     out
-}
-
-/// The wear per input-member revolution of tooth `tooth` of the faulty member from its
-/// own contacts over the history `h` (the gaps `gaps`, module order), per flank as
-/// [`member_flanks`] names them: the sun's (its N sun meshes' pinion wear), a planet's
-/// sun-side and ring-side flank, the ring's (its N ring meshes' gear wear), each at its
-/// grid's points (docs/MODEL.md 12.15); None without a tooth fault.
-pub fn tooth_rates(
-    model: &PlanetaryWearModel,
-    h: &ForceHistory,
-    gaps: &[PairGap],
-    tooth: usize,
-) -> Option<Vec<(&'static str, Vec<f64>)>> {
-    let MeshStiffnessSource::Tables(m) = &model.dynamics.model.source else {
-        return None;
-    };
-    let n = model.planets();
-    let [cs, cp] = model.pinion_cycles_per_input;
-    let inc = |j: usize| model.tooth_increment(j, h, &gaps[j], tooth);
-    let summed = |js: std::ops::Range<usize>, pinion: bool, c: f64| -> Option<Vec<f64>> {
-        let incs: Vec<WearIncrement> = js.map(inc).collect::<Option<_>>()?;
-        let len = incs.first().map_or(0, |i| i.pinion_m.len());
-        let side = |i: &WearIncrement| {
-            if pinion {
-                i.pinion_m.clone()
-            } else {
-                i.gear_m.clone()
-            }
-        };
-        let v: Vec<Vec<f64>> = incs.iter().map(side).collect();
-        Some(sum_of(v.iter(), len).into_iter().map(|x| x * c).collect())
-    };
-    match m.fault()?.member {
-        FaultMember::Sun => Some(vec![("sun", summed(0..n, true, cs)?)]),
-        FaultMember::Planet(p) => Some(vec![
-            ("sun_side", summed(p..p + 1, false, cs)?),
-            ("ring_side", summed(n + p..n + p + 1, true, cp)?),
-        ]),
-        FaultMember::Ring => Some(vec![("ring", summed(n..2 * n, false, cp)?)]),
-    }
 }
 
 /// Where a flank lies: its grid's radii of curvature and spacing, its base radius (m),

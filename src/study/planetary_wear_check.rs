@@ -5,7 +5,8 @@
 //!
 //! - **Replayed** (`planetary_run_from_logs`): each record's shape is checked (one value
 //!   per point of its mesh's grid, finite and >= 0, none of what a planetary mesh's record
-//!   leaves empty: `planetary_wear_loop::mesh_record`); the input cycles and the member
+//!   leaves empty: `planetary_wear_loop::mesh_record`; per-tooth increments exactly on a
+//!   faulty member's meshes: `planetary_teeth::teeth_problem`); the input cycles and the member
 //!   flank that cut each block are not stored, they are recomputed from the update before
 //!   with the loop's own step (`planetary_wear_loop::next_block`), and every mesh's stored
 //!   wear must equal the previous update's advanced over that block bit for bit (the
@@ -18,6 +19,7 @@
 //!   double exactly): a record of another case, an edit with recomputed checksums, or a
 //!   mesh's log copied over another's is refused, naming the update, its line and mesh.
 
+use super::planetary_teeth::teeth_problem;
 use super::planetary_wear::{new_teeth, PlanetaryWearModel};
 use super::planetary_wear_loop::{next_block, update_of, PlanetaryUpdate, PlanetaryWearRun};
 use super::wear_check::{random_sample, MAX_RECOMPUTED};
@@ -40,8 +42,14 @@ pub(crate) fn record_problem(
     if let Some(p) = r.profile_problem(model.grids[model.kind_of(j).0].len()) {
         return Some(p);
     }
-    if r.wear.teeth.is_some() || r.increment_teeth.is_some() {
-        return Some("holds per-tooth wear, but a planetary set's teeth are all alike".into());
+    if r.wear.teeth.is_some() {
+        return Some(
+            "holds per-tooth wear depths, but a planetary set's wear state is each member's mean"
+                .into(),
+        );
+    }
+    if let Some(p) = teeth_problem(model, j, r.increment_teeth.as_ref()) {
+        return Some(p);
     }
     if r.end_state.is_some() {
         return Some(

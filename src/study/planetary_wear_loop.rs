@@ -16,6 +16,7 @@
 //! of contact for more than `wear_loop::MAX_CONTACT_LOSS_FRACTION` of the period, or a
 //! response not found, stops the run (the records so far are kept).
 
+use super::planetary_teeth::{faulty_teeth, teeth_increments, FaultyTeeth};
 use super::planetary_wear::{member_flanks, new_teeth, wear_gaps, MemberFlank, PlanetaryWearModel};
 use super::wear_loop::{
     fastest_block, StopKind, UpdateRecord, WearMode, WearStop, MAX_CONTACT_LOSS_FRACTION,
@@ -67,6 +68,19 @@ impl PlanetaryWearRun {
     }
 }
 
+impl PlanetaryWearRun {
+    /// Every tooth of the faulty member's depth at the run's last update
+    /// (`planetary_teeth::faulty_teeth`); None without a fault.
+    pub fn faulty_teeth(&self, model: &PlanetaryWearModel) -> Option<FaultyTeeth> {
+        let updates: Vec<(f64, &[UpdateRecord])> = self
+            .updates
+            .iter()
+            .map(|u| (u.input_cycles, u.meshes.as_slice()))
+            .collect();
+        faulty_teeth(model, &updates)
+    }
+}
+
 /// The update of `wears` at `input_cycles`: the set's response and every mesh's record;
 /// Err(reason, kind) when the response is not found or a mesh leaves the model's domain.
 pub fn update_of(
@@ -105,7 +119,9 @@ pub fn update_of(
                 StopKind::ModelValidity,
             ));
         }
-        meshes.push(mesh_record(wear, model.mesh_increment(j, &h, &gaps[j]), &f));
+        let mut increment = model.mesh_increment(j, &h, &gaps[j]);
+        increment.teeth = teeth_increments(model, j, &h, &gaps[j]);
+        meshes.push(mesh_record(wear, increment, &f));
     }
     Ok(PlanetaryUpdate {
         input_cycles,
@@ -116,7 +132,8 @@ pub fn update_of(
 
 /// A mesh's record at an update, in the single pair's form (`wear_loop::UpdateRecord`, so
 /// that its checkpoint log is an ordinary one: `store::part_logs`): its wear, its
-/// increment per pinion cycle, and of its response summary the mean, largest and
+/// increment per pinion cycle (with a tooth fault, on the faulty member's meshes, every
+/// tooth's: `planetary_teeth::teeth_increments`), and of its response summary the mean, largest and
 /// smallest force `forces_n` (N, over the period's samples) and their dynamic factor
 /// (largest / mean; 0 for a mesh that carries nothing). The rest is left empty: the set's
 /// model has no friction (roughness 0, no friction figures), no transmission error per
@@ -139,7 +156,7 @@ pub fn mesh_record(wear: WearState, increment: WearIncrement, forces_n: &[f64]) 
         },
         increment_pinion_m: increment.pinion_m,
         increment_gear_m: increment.gear_m,
-        increment_teeth: None,
+        increment_teeth: increment.teeth,
         increment_slices: None,
         path_rho1_m: Vec::new(),
         path_load_n: Vec::new(),

@@ -38,6 +38,22 @@ pub(crate) fn max_of(profiles: &[Vec<f64>]) -> f64 {
     profiles.iter().flatten().fold(0.0_f64, |m, x| m.max(*x))
 }
 
+/// The deepest point of tooth `tooth`'s profile and the deepest of every other tooth's
+/// (`profiles[t]` tooth t's depth along the flank, m): how a faulty tooth's wear is
+/// reported beside its gear's other teeth (a gear train's faulty stage, a planetary
+/// set's faulty member); None when there is no such tooth.
+pub(crate) fn deepest_own_and_others(profiles: &[Vec<f64>], tooth: usize) -> Option<(f64, f64)> {
+    let deepest = |p: &[f64]| p.iter().fold(0.0_f64, |a, b| a.max(*b));
+    let own = deepest(profiles.get(tooth)?);
+    let others = profiles
+        .iter()
+        .enumerate()
+        .filter(|(t, _)| *t != tooth)
+        .map(|(_, p)| deepest(p))
+        .fold(0.0_f64, f64::max);
+    Some((own, others))
+}
+
 /// Mean profile of several teeth.
 pub(crate) fn mean_profile(profiles: &[Vec<f64>]) -> Vec<f64> {
     let n = profiles.first().map_or(0, Vec::len);

@@ -275,3 +275,14 @@ pub fn flat_path() -> gearwear::signals::transfer::TransferPath {
         placement: "the pinion's y bearing force itself".into(),
     }
 }
+
+/// The number after `prefix` in `text` (up to the next space).
+pub fn number_after(text: &str, prefix: &str) -> f64 {
+    let i = text.find(prefix).unwrap_or_else(|| panic!("no `{prefix}`")) + prefix.len();
+    text[i..]
+        .split_whitespace()
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap()
+}

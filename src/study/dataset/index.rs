@@ -66,6 +66,81 @@ pub const LIMITING_MEMBER_COLUMN: (&str, &str, &str) = (
     "the set's member (sun, planet<n>, ring) with the deepest wear at the state: the member that limits the set's life; empty while nothing has worn (new teeth)",
 );
 
+/// (column, unit, meaning) of a planetary set's fault columns (a dataset with a condition
+/// whose case has `[[planetary.fault]]`; after the member columns): the fault the record's
+/// model applies (`config::planetary_fault::active`), read from its case's tables.
+pub const PLANETARY_FAULT_COLUMNS: [(&str, &str, &str); 7] = [
+    ("fault_member", "-", "the member whose tooth has the fault the record's set models (sun, planet, ring); empty without one"),
+    ("fault_planet", "-", "the faulty planet (1-based) of a planet's fault; 0 otherwise"),
+    ("fault_tooth", "-", "the faulty tooth, 0-based (docs/MODEL.md 12.13); -1 without a fault"),
+    ("fault_kind", "-", "the fault's kind (crack, spall, broken_tip); empty without one"),
+    ("fault_crack_depth_mm", "mm", "a crack's depth from the root along its path; 0 for another kind or none"),
+    ("fault_spall_depth_um", "um", "a spall's depth; 0 for another kind or none"),
+    ("fault_removed_height_mm", "mm", "a broken tip's removed height; 0 for another kind or none"),
+];
+
+/// A planetary set's [`PLANETARY_FAULT_COLUMNS`], when any record's case has a fault.
+fn planetary_fault_columns(
+    rows: &[RecordLabels],
+    cols: &mut Vec<Column>,
+    units: &mut Vec<(String, String)>,
+) {
+    use crate::config::planetary_fault::{active, PlanetaryFault};
+    if rows.iter().all(|l| active(&l.planetary_faults).is_none()) {
+        return;
+    }
+    fn of(l: &RecordLabels) -> Option<&PlanetaryFault> {
+        active(&l.planetary_faults)
+    }
+    // A size column holds its own kind's size only (a written key of another kind is
+    // not the model's).
+    let size = |f: &PlanetaryFault, key: &str| {
+        let kind = match key {
+            "crack_depth_mm" => "crack",
+            "spall_depth_um" => "spall",
+            _ => "broken_tip",
+        };
+        let v = f.written(key);
+        if f.kind.name() == kind && v.is_finite() {
+            v
+        } else {
+            0.0
+        }
+    };
+    for (name, unit, _) in PLANETARY_FAULT_COLUMNS {
+        let data = match name {
+            "fault_member" => ColumnData::Text(
+                rows.iter()
+                    .map(|l| of(l).map_or(String::new(), |f| f.gear.name().into()))
+                    .collect(),
+            ),
+            "fault_kind" => ColumnData::Text(
+                rows.iter()
+                    .map(|l| of(l).map_or(String::new(), |f| f.kind.name().into()))
+                    .collect(),
+            ),
+            "fault_planet" => ColumnData::I64(
+                rows.iter()
+                    .map(|l| of(l).and_then(|f| f.planet).unwrap_or(0))
+                    .collect(),
+            ),
+            "fault_tooth" => {
+                ColumnData::I64(rows.iter().map(|l| of(l).map_or(-1, |f| f.tooth)).collect())
+            }
+            _ => {
+                let key = name.trim_start_matches("fault_");
+                ColumnData::F64(
+                    rows.iter()
+                        .map(|l| of(l).map_or(0.0, |f| size(f, key)))
+                        .collect(),
+                )
+            }
+        };
+        units.push((name.to_string(), unit.to_string()));
+        cols.push(Column::new(name, data));
+    }
+}
+
 /// The meaning of a member column `<prefix>_<member>`.
 fn member_column_meaning(name: &str) -> Option<String> {
     MEMBER_COLUMNS.iter().find_map(|(prefix, _, m)| {
@@ -122,6 +197,9 @@ pub fn column_meaning(name: &str) -> String {
     }
     if let Some(m) = member_column_meaning(name) {
         return m;
+    }
+    if let Some((_, _, m)) = PLANETARY_FAULT_COLUMNS.iter().find(|(n, _, _)| *n == name) {
+        return (*m).to_string();
     }
     for shaft in ["pinion", "gear"] {
         for (suffix, m) in &INDICATOR_MEANINGS[3..] {
@@ -391,6 +469,7 @@ pub fn index_columns(
         .collect();
     stage_columns(rows, &mut cols, &mut units);
     member_columns(rows, &mut cols, &mut units);
+    planetary_fault_columns(rows, &mut cols, &mut units);
     // A planetary set's records have no shaft TSA (`super::planetary_records`).
     let shafts: &[(&str, bool)] = match rows.first() {
         Some(l) if !l.members.is_empty() => &[],
