@@ -157,3 +157,13 @@ fn a_run_up_record() {
         &written("signals", None, &sets),
     );
 }
+
+/// The widest figure the cost model counts with (the study layer cannot import the
+/// report's raster bound) is the raster's bound.
+#[test]
+fn the_widest_figure_counted_is_the_rasters_bound() {
+    assert_eq!(
+        gearwear::study::budget::figures::WIDEST_FIGURE_PX,
+        f64::from(gearwear::report::plot::MAX_SIDE_PX)
+    );
+}

@@ -222,14 +222,43 @@ pub const SECONDS_PER_FIGURE_PIXEL: f64 = 1.6e-8;
 /// (below) have at most three (`signals`' TSA, 900 px).
 pub const TALLEST_DEFAULT_FIGURE_PX: f64 = 1240.0;
 
+/// CPU seconds per pixel that a figure's dense data paint (`FigureCount::dense`): the
+/// stems of a spectrum (two long ones a pixel column, `report::plot::draw::thin_bars`) or a
+/// noisy line (at most four points a column) reaching across the plot area, drawn 2 px
+/// wide and sampled every 2 px for the legend's layout. Measured 2026-11-30 (`signals`,
+/// CPU time less that of a record of the same length and rate drawn with its lines and
+/// stems short, over the painted pixels `FigureLoad::term` counts): 2.1e-8 at 4096 x
+/// 2048 and 2.8e-8 at 8192 x 4096 (a 40 s record under -20 dB of noise), 2.9e-8 (0.2 s
+/// at 4 MHz under noise, every figure painted); counted 4e-8. Issue 33: a 40 s record's
+/// figures at 8192 x 4096 took 20 s of CPU against 3.2 s counted by their pixels alone.
+pub const SECONDS_PER_PAINTED_PIXEL: f64 = 4e-8;
+
+/// Bytes per painted pixel (`FigureCount::dense`) of a figure being drawn: the samples
+/// every 2 px along each stem or segment (`report::plot::layout::MARK_STEP_PX`, two i32
+/// each) that the panel's layout keeps. Measured 2026-11-30 (peak RSS over that of the
+/// same record with short stems, over the painted pixels): 2.5-3.5 at 8192 x 4096, 4 at
+/// 4096 x 2048; counted 4, on the figures drawn at once.
+pub const BYTES_PER_PAINTED_PIXEL: f64 = 4.0;
+
 /// PNG figures a job draws, in two classes (`super::figures`): figures of one panel
-/// (drawn at the requested size) and taller ones (counted at the tallest figure's size).
+/// (drawn at the requested size) and taller ones (counted at the tallest figure's size);
+/// and, for figures of dense data (a record's spectrum, time trace and averages), the
+/// pixels their data can paint.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FigureCount {
     /// Figures of one panel.
     pub one_panel: f64,
     /// Figures of several panels.
     pub taller: f64,
+    /// Dense series, each in figures' worth of height (its panel's share of its figure):
+    /// a series of n points paints at most min(n, W) pixel columns of its panel's height
+    /// (a line of n points, n - 1 segments each at most the panel's height; a spectrum's
+    /// stems, thinned to two long ones a column), W the figure's width.
+    pub dense: f64,
+    /// The points of those series, each times its panel's share: with [`Self::dense`],
+    /// the painted pixels are at most min(`dense_points`, `dense` W) times the figure's
+    /// height (the sum of the series' min(n, W) h is at most both).
+    pub dense_points: f64,
 }
 
 impl FigureCount {
@@ -243,6 +272,8 @@ impl FigureCount {
         FigureCount {
             one_panel: self.one_panel + o.one_panel,
             taller: self.taller + o.taller,
+            dense: self.dense + o.dense,
+            dense_points: self.dense_points + o.dense_points,
         }
     }
 
@@ -251,6 +282,8 @@ impl FigureCount {
         FigureCount {
             one_panel: self.one_panel * n,
             taller: self.taller * n,
+            dense: self.dense * n,
+            dense_points: self.dense_points * n,
         }
     }
 }
@@ -269,6 +302,8 @@ pub struct FigureLoad {
     pub pixels_per_one_panel_figure: f64,
     /// Figures drawn at once.
     pub figures_at_once: f64,
+    /// Width of the figures at the requested size, px.
+    pub width_px: f64,
 }
 
 impl FigureLoad {
@@ -277,6 +312,7 @@ impl FigureLoad {
         pixels_per_figure: 0.0,
         pixels_per_one_panel_figure: 0.0,
         figures_at_once: 0.0,
+        width_px: 0.0,
     };
 
     /// PNG figures whose one-panel size is `(w, h)` px against the default `default_px`
@@ -298,6 +334,7 @@ impl FigureLoad {
             pixels_per_figure: width.saturating_mul(height) as f64,
             pixels_per_one_panel_figure: width.saturating_mul(one) as f64,
             figures_at_once: threads.max(1) as f64,
+            width_px: width as f64,
         }
     }
 
@@ -309,17 +346,32 @@ impl FigureLoad {
     /// while the two drawn at once were counted, 1.3 s).
     pub fn term(&self, drawn: Option<FigureCount>) -> Option<Term> {
         let drawn = drawn.unwrap_or(FigureCount {
-            one_panel: 0.0,
             taller: self.figures_at_once,
+            ..FigureCount::default()
         });
         let pixels = drawn.one_panel * self.pixels_per_one_panel_figure
             + drawn.taller * self.pixels_per_figure;
         let at_once = drawn.total().min(self.figures_at_once);
+        // Painted pixels of dense data, at the tallest figure's height (a bound), and
+        // those of the figures drawn at once (at most that many figures' worth).
+        let height = self.pixels_per_figure / self.width_px.max(1.0);
+        let painted = drawn.dense_points.min(drawn.dense * self.width_px) * height;
+        let painted_at_once = painted.min(at_once * self.pixels_per_figure);
         (self.pixels_per_figure > 0.0 && drawn.total() > 0.0).then_some(Term {
-            what: "the figures at the requested size",
-            seconds: pixels * SECONDS_PER_FIGURE_PIXEL,
-            bytes: at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL,
-            keys: &["the figure size"],
+            what:
+                "the figures at the requested size (their pixels and the pixels their data paint)",
+            seconds: pixels * SECONDS_PER_FIGURE_PIXEL + painted * SECONDS_PER_PAINTED_PIXEL,
+            bytes: at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL
+                + painted_at_once * BYTES_PER_PAINTED_PIXEL,
+            keys: if painted > 0.0 {
+                &[
+                    "the figure size",
+                    "signals.record_length",
+                    "signals.sampling_rate_hz",
+                ]
+            } else {
+                &["the figure size"]
+            },
         })
     }
 }

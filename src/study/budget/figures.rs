@@ -15,11 +15,17 @@ use super::cost::FigureCount;
 use super::teeth::excitation_periods_of;
 use crate::config::case::Case;
 
+/// The widest figure a job draws, px: the raster's bound (`report::plot::MAX_SIDE_PX`,
+/// above this layer; `tests/budget_figures.rs` checks that they agree).
+pub const WIDEST_FIGURE_PX: f64 = 8192.0;
+
 /// Figures in the two classes: `(one-panel, taller)`.
 const fn count(one_panel: u32, taller: u32) -> FigureCount {
     FigureCount {
         one_panel: one_panel as f64,
         taller: taller as f64,
+        dense: 0.0,
+        dense_points: 0.0,
     }
 }
 
@@ -78,6 +84,53 @@ pub fn signals_figures(case: &Case) -> FigureCount {
         c = c.plus(count(0, 2));
     }
     c
+}
+
+/// The dense series of a record's figures (`report::signals`), for `channels` sensors:
+/// what their data can paint at a requested size ([`FigureCount::dense`], counted by
+/// [`super::cost::FigureLoad::term`]). Each series in figures' worth of height (its
+/// panel's share) and its points:
+/// - the spectrum (`spectrum_figure`, two panels): the first channel's bins, at most
+///   L f_s / 2 in each panel (L the record's seconds, f_s the sampling rate);
+/// - the time trace (`time_figure`, two panels): each channel's and the tachometer's
+///   first revolution of the tachometer's shaft, f_s / f_t + 1 points;
+/// - the averages (`tsa_figure`, four panels): per shaft (pinion, gear) the TSA, its
+///   residual and difference, a revolution on at most 2 f_s / f points (the power of two
+///   at or above f_s / f, `signals::tsa`).
+///
+/// Speeds are taken at the slowest the record sees (a ramp's start or end): the most
+/// points a revolution. The model's figures (smooth curves of a few thousand points) are
+/// not counted this way: their pixel rate holds them (docs/RELIABILITY.md).
+pub fn record_figures_density(case: &Case, channels: usize) -> FigureCount {
+    use crate::config::signals::Shaft;
+    let s = &case.signals;
+    let fs = s.sampling_rate_hz;
+    let f0 = case.operating.input_speed_hz;
+    let slowest = s.ramp_end_speed_hz.map_or(1.0, |e| (e / f0).min(1.0));
+    let shaft_hz = |shaft: Shaft| {
+        let mut t = s.clone();
+        t.tachometer_shaft = shaft;
+        (t.tachometer_shaft_hz(case) * slowest).max(1e-9)
+    };
+    // A series paints at most a column per point and every column of the figure: its
+    // points are capped at the widest figure, so that the term's min(points, dense W)
+    // is that of each series, not of their sum (a 40 s spectrum's 5e5 bins would
+    // otherwise stand for the narrow traces' columns too).
+    let series = |share: f64, points: f64| FigureCount {
+        dense: share,
+        dense_points: share * points.min(WIDEST_FIGURE_PX),
+        ..FigureCount::default()
+    };
+    let spectrum = series(1.0, s.record_seconds(case) * fs / 2.0);
+    let time = series(
+        (channels as f64 + 1.0) / 2.0,
+        fs / shaft_hz(s.tachometer_shaft) + 1.0,
+    );
+    let tsa = |shaft| series(0.75, 2.0 * fs / shaft_hz(shaft));
+    spectrum
+        .plus(time)
+        .plus(tsa(Shaft::Pinion))
+        .plus(tsa(Shaft::Gear))
 }
 
 /// `gearwear wear` in `modes` modes (`report::wear::wear_artifacts`): Figs. 11 and 12

@@ -96,7 +96,10 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
             "numerics.steps_per_mesh_period",
         ],
     });
-    e.drawing(super::figures::signals_figures(case))
+    e.drawing(
+        super::figures::signals_figures(case)
+            .plus(super::figures::record_figures_density(case, channels)),
+    )
 }
 
 /// Seconds of one term c_m cos(m w) of the anti-alias filter's response at a harmonic
