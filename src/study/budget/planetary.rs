@@ -5,6 +5,7 @@
 use super::cost::{Estimate, Term};
 use super::evaluation::SLOWER_MACHINE_FACTOR;
 use crate::config::case::WearSection;
+use crate::study::planetary_teeth::faulty_member;
 use crate::study::planetary_wear::PlanetaryWearModel;
 use crate::study::planetary_wear_loop::{run_planetary_wear, PlanetaryWearRun};
 use crate::study::wear_loop::{block_length, WearMode};
@@ -92,10 +93,12 @@ fn wear_fault_term(model: &PlanetaryWearModel, modes: &[WearMode], updates: f64)
     // The dynamic retry (`PlanetaryWearModel::force_history`) records twice the samples.
     let values = 6.0 * (planets + 3.0) + 2.0 * planets + 1.0;
     let samples = 2.0 * p as f64 * s.samples_per_period as f64;
+    let modes_n = modes.len() as f64;
     Some(Term {
         what: "the planetary set's tooth fault in its wear (every update's response over the fault's period, z_s, z_p or z_r mesh periods)",
         seconds: updates * per_update,
-        bytes: modes.len() as f64 * samples * values * BYTES_PER_SAMPLE_VALUE,
+        bytes: modes_n * samples * values * BYTES_PER_SAMPLE_VALUE
+            + modes_n * updates * tooth_profile_numbers(model) * 8.0 * 2.0,
         keys: &[
             "planetary.fault.gear",
             "planetary.teeth_sun",
@@ -238,21 +241,43 @@ pub fn max_planetary_spectrum_checkpoint_bytes(
     shares: &[f64],
     wear: &WearSection,
 ) -> u64 {
-    checkpoint_bytes(planetary_spectrum_wear_updates(models, shares, wear), wear)
+    let teeth = models.first().map_or(0.0, tooth_numbers_per_log);
+    checkpoint_bytes(planetary_spectrum_wear_updates(models, shares, wear), wear, teeth)
 }
 
 /// Largest size a mesh's checkpoint log of a planetary wear study may have when read
 /// back, bytes: 16 times (the margin `budget::max_checkpoint_bytes` takes for a pair) the
 /// study's updates ([`planetary_wear_updates`]) of 4 G + 16 numbers each (a mesh's wear
-/// and increment on both flanks over its G grid points, its summary) at 32 bytes a number
-/// in JSON with its checksum, and at least 64 MiB.
+/// and increment on both flanks over its G grid points, its summary), and z G more with a
+/// tooth fault (the faulty member's z teeth's rates, docs/MODEL.md 12.16), at 32 bytes a
+/// number in JSON with its checksum, and at least 64 MiB.
 pub fn max_planetary_checkpoint_bytes(model: &PlanetaryWearModel, wear: &WearSection) -> u64 {
-    checkpoint_bytes(planetary_wear_updates(model, wear), wear)
+    checkpoint_bytes(planetary_wear_updates(model, wear), wear, tooth_numbers_per_log(model))
 }
 
-/// The bound of [`max_planetary_checkpoint_bytes`] for `updates` updates.
-fn checkpoint_bytes(updates: f64, wear: &WearSection) -> u64 {
-    let numbers = 4.0 * wear.points_per_profile.max(2) as f64 + 16.0;
+/// Numbers the faulty member's teeth add to one update (docs/MODEL.md 12.16): each mesh
+/// that meets the member keeps every tooth's rate over the profile grid (z G on each of
+/// those meshes), and the run their depths (z G per flank); 0 without a fault.
+fn tooth_profile_numbers(model: &PlanetaryWearModel) -> f64 {
+    faulty_member(model).map_or(0.0, |(_, _, z, flanks)| {
+        let meshes: usize = flanks.iter().map(|f| f.meshes.len()).sum();
+        let g = model.grids[0].len().max(model.grids[1].len()) as f64;
+        (meshes + flanks.len()) as f64 * z as f64 * g
+    })
+}
+
+/// The faulty member's numbers in one mesh log's record: every tooth's rate over the
+/// profile grid (z G), 0 without a fault.
+fn tooth_numbers_per_log(model: &PlanetaryWearModel) -> f64 {
+    faulty_member(model).map_or(0.0, |(_, _, z, _)| {
+        z as f64 * model.grids[0].len().max(model.grids[1].len()) as f64
+    })
+}
+
+/// The bound of [`max_planetary_checkpoint_bytes`] for `updates` updates, the mesh logs
+/// of a set with a tooth fault holding the faulty member's teeth too.
+fn checkpoint_bytes(updates: f64, wear: &WearSection, tooth_numbers: f64) -> u64 {
+    let numbers = 4.0 * wear.points_per_profile.max(2) as f64 + 16.0 + tooth_numbers;
     let bytes = 16.0 * updates * numbers * 32.0;
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }

@@ -40,7 +40,7 @@
 
 pub use super::chains::ParameterSpan;
 use super::chains::{chain_count, Duties, FutureDutyJob};
-use super::cost::{Estimate, Term};
+use super::cost::{FigureCount, Estimate, Term};
 use super::evaluation::{dynamic_steps_per_period, SLOWER_MACHINE_FACTOR};
 use crate::config::Case;
 
@@ -224,7 +224,11 @@ pub fn estimate_calibration(
             keys: &["samples", "the observations' rows"],
         });
     }
-    Estimate::of_terms(terms)
+    // Its two figures (`posterior.png`, `posterior_band.png`), of several panels.
+    Estimate::of_terms(terms).drawing(FigureCount {
+        taller: 2.0,
+        ..FigureCount::default()
+    })
 }
 
 /// What a prediction computes.
@@ -291,7 +295,12 @@ pub(crate) fn estimate_prediction(
             "the surrogate check's true runs",
         ));
     }
-    Estimate::of_terms(terms)
+    // Its three figures (`fan_wear.png`, `life.png`, `fan_vibration.png`), counted as of
+    // several panels (issue 33: counted as the two drawn at once, one under).
+    Estimate::of_terms(terms).drawing(FigureCount {
+        taller: 3.0,
+        ..FigureCount::default()
+    })
 }
 
 /// The estimated cost of `predict-merge` of shard files of `bytes` in all, for an ensemble
