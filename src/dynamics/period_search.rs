@@ -196,7 +196,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
                 if distance < settings.tolerance {
                     s.before.append(&s.after);
                     recorded = Some((s.before, y0, y));
-                } else if let Some(rec) = self.splice(settings, &s)? {
+                } else if let Some(rec) = self.splice(settings, &s, &y)? {
                     return Ok(Some((rec, self.start_state(), y)));
                 } else {
                     recorded = None;
@@ -238,17 +238,27 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     }
 
     /// The splice of a period recorded from the previous start (`s`, split at its node
-    /// `s.at`): the first part recorded again from the current start up to `s.at` and
-    /// joined to the rest of `s`. None when the two disagree at `s.at` by the tolerance
-    /// or more (the start's difference had not decayed there): the search goes on.
+    /// `s.at`, ending at `end`): the first part recorded again from the current start up
+    /// to `s.at` and joined to the rest of `s`. None, and the search goes on, unless both
+    /// ends of the joined record are on the orbit: the current start within the tolerance
+    /// of `end` (the previous period's end, on the orbit where the map contracts as
+    /// [`Self::splice_at`] requires: so the record is periodic, and its first part, from
+    /// that start, is the orbit's; a quasi-Newton step that left the orbit would put its
+    /// own transient there, which has decayed by `s.at` and the second check would miss),
+    /// and the two parts within the tolerance at `s.at` (the previous start's difference
+    /// had decayed there).
     fn splice(
         &mut self,
         settings: &SteadyStateSettings,
         s: &SplitRecorder,
+        end: &State,
     ) -> Result<Option<Recorder>, DynamicsError> {
         let Some(state_at) = &s.state_at else {
             return Ok(None);
         };
+        if self.distance_between(&self.start_state(), end) >= settings.tolerance {
+            return Ok(None);
+        }
         // A plan built in the split period is replayed; a free search stays free (a
         // plan built on part of a period would leave the rest to one step per node).
         self.advance_plan(false);
