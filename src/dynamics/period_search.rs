@@ -152,7 +152,8 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         // Every period starts at t = 0: the one-period map is the same function in every
         // iteration (the model depends on time through the mesh phase only).
         while distance >= settings.tolerance {
-            if self.periods == settings.max_mesh_periods {
+            // `>=`: a failed splice adds its partial pass to the count.
+            if self.periods >= settings.max_mesh_periods {
                 return Err(DynamicsError::NotPeriodic {
                     periods: self.periods,
                     change: distance,
@@ -196,8 +197,8 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
                 if distance < settings.tolerance {
                     s.before.append(&s.after);
                     recorded = Some((s.before, y0, y));
-                } else if let Some(rec) = self.splice(settings, &s, &y)? {
-                    return Ok(Some((rec, self.start_state(), y)));
+                } else if let Some((rec, end)) = self.splice(settings, s, &y)? {
+                    return Ok(Some((rec, self.start_state(), end)));
                 } else {
                     recorded = None;
                 }
@@ -250,13 +251,14 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     fn splice(
         &mut self,
         settings: &SteadyStateSettings,
-        s: &SplitRecorder,
+        mut s: SplitRecorder,
         end: &State,
-    ) -> Result<Option<Recorder>, DynamicsError> {
-        let Some(state_at) = &s.state_at else {
+    ) -> Result<Option<(Recorder, State)>, DynamicsError> {
+        let Some(state_at) = s.state_at.take() else {
             return Ok(None);
         };
-        if self.distance_between(&self.start_state(), end) >= settings.tolerance {
+        // `!(d < tol)`: a NaN distance is no agreement.
+        if !(self.distance_between(&self.start_state(), end) < settings.tolerance) {
             return Ok(None);
         }
         // A plan built in the split period is replayed; a free search stays free (a
@@ -267,12 +269,22 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         self.ps
             .integrate_part(0.0, y.as_mut_slice(), &mut rec, s.at)?;
         self.periods += 1;
-        let joined = State::from_column_slice(state_at);
-        if self.distance_between(&joined, &y) >= settings.tolerance {
+        let joined = State::from_column_slice(&state_at);
+        if !(self.distance_between(&joined, &y) < settings.tolerance) {
             return Ok(None);
         }
+        // Under motor slip the two trajectories also differ by a rigid rotation, which
+        // never decays (no force depends on it): the later part is carried on by it, so
+        // that the angles run on without a jump at the split, to the end state.
+        let mut end = end.clone();
+        if let Some(shift) = self.red.rigid_offset(&state_at, y.as_slice()) {
+            s.after.shift_displacements(&shift);
+            for (e, d) in end.iter_mut().zip(&shift) {
+                *e += d;
+            }
+        }
         rec.append(&s.after);
-        Ok(Some(rec))
+        Ok(Some((rec, end)))
     }
 
     /// Replay the step plan from now on (built by the search once it was close).

@@ -126,6 +126,12 @@ impl Recorder {
         }
     }
 
+    /// Moves every recorded displacement by `shift` (a rigid rotation: nothing else
+    /// recorded depends on it).
+    pub(crate) fn shift_displacements(&mut self, shift: &[f64]) {
+        self.sig.displacement.shift_each(shift);
+    }
+
     /// Evaluates the right-hand side into the work buffers.
     fn evaluate(&mut self, sys: &GearSystem, frame: ContactFrame, t: f64, y: &[f64]) {
         let w = &mut self.work;

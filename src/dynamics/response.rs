@@ -111,6 +111,15 @@ impl Coordinates {
         self.values.extend_from_slice(&other.values);
     }
 
+    /// Adds `shift` (one value per coordinate) to every sample.
+    pub(crate) fn shift_each(&mut self, shift: &[f64]) {
+        for sample in self.values.chunks_exact_mut(self.dofs.max(1)) {
+            for (v, d) in sample.iter_mut().zip(shift) {
+                *v += d;
+            }
+        }
+    }
+
     /// Coordinate `i` of every sample.
     pub fn column(&self, i: usize) -> Vec<f64> {
         self.iter().map(|s| s[i]).collect()

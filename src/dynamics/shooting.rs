@@ -101,6 +101,15 @@ impl Reduction {
         y
     }
 
+    /// The displacements of the rigid rotation that carries the input's angle of `from`
+    /// to that of `to` (state slices), when the rigid rotation is a free motion (motor
+    /// slip): what two trajectories equal up to it differ by for ever. None otherwise.
+    pub fn rigid_offset(&self, from: &[f64], to: &[f64]) -> Option<Vec<f64>> {
+        let r = self.rigid.as_ref()?;
+        let d = to[self.anchor] - from[self.anchor];
+        Some((0..r.len() / 2).map(|i| r[i] * d).collect())
+    }
+
     /// `scales` restricted to the unknowns.
     pub fn scales(&self, scales: &State) -> DVector<f64> {
         DVector::from_iterator(self.idx.len(), self.idx.iter().map(|i| scales[*i]))

@@ -379,7 +379,12 @@ pub fn trajectory_bytes(case: &crate::config::Case, max_cycles: f64) -> f64 {
         let updates = super::planetary::planetary_wear_updates(&m, &case.wear);
         let grid = case.wear.points_per_profile.max(2) as f64;
         let meshes = 2.0 * m.planets() as f64;
-        return updates * (meshes * (4.0 * grid + 40.0) + 1.0) * TRAJECTORY_BYTES_PER_NUMBER;
+        // With a tooth fault each mesh meeting the faulty member also keeps its z teeth's
+        // rates (z G numbers: docs/MODEL.md 12.16).
+        let teeth = super::planetary::tooth_rate_numbers(&m);
+        return updates
+            * (meshes * (4.0 * grid + 40.0) + teeth + 1.0)
+            * TRAJECTORY_BYTES_PER_NUMBER;
     }
     let updates = estimate(
         &case,

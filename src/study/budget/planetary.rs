@@ -242,7 +242,11 @@ pub fn max_planetary_spectrum_checkpoint_bytes(
     wear: &WearSection,
 ) -> u64 {
     let teeth = models.first().map_or(0.0, tooth_numbers_per_log);
-    checkpoint_bytes(planetary_spectrum_wear_updates(models, shares, wear), wear, teeth)
+    checkpoint_bytes(
+        planetary_spectrum_wear_updates(models, shares, wear),
+        wear,
+        teeth,
+    )
 }
 
 /// Largest size a mesh's checkpoint log of a planetary wear study may have when read
@@ -252,18 +256,35 @@ pub fn max_planetary_spectrum_checkpoint_bytes(
 /// tooth fault (the faulty member's z teeth's rates, docs/MODEL.md 12.16), at 32 bytes a
 /// number in JSON with its checksum, and at least 64 MiB.
 pub fn max_planetary_checkpoint_bytes(model: &PlanetaryWearModel, wear: &WearSection) -> u64 {
-    checkpoint_bytes(planetary_wear_updates(model, wear), wear, tooth_numbers_per_log(model))
+    checkpoint_bytes(
+        planetary_wear_updates(model, wear),
+        wear,
+        tooth_numbers_per_log(model),
+    )
 }
 
 /// Numbers the faulty member's teeth add to one update (docs/MODEL.md 12.16): each mesh
 /// that meets the member keeps every tooth's rate over the profile grid (z G on each of
 /// those meshes), and the run their depths (z G per flank); 0 without a fault.
 fn tooth_profile_numbers(model: &PlanetaryWearModel) -> f64 {
+    tooth_rate_numbers(model)
+        + faulty_member(model).map_or(0.0, |(_, _, z, flanks)| {
+            flanks.len() as f64 * z as f64 * grid_points(model)
+        })
+}
+
+/// Numbers the faulty member's teeth's rates add to one update's records: z G on each
+/// mesh that meets the member (docs/MODEL.md 12.16); 0 without a fault.
+pub(crate) fn tooth_rate_numbers(model: &PlanetaryWearModel) -> f64 {
     faulty_member(model).map_or(0.0, |(_, _, z, flanks)| {
         let meshes: usize = flanks.iter().map(|f| f.meshes.len()).sum();
-        let g = model.grids[0].len().max(model.grids[1].len()) as f64;
-        (meshes + flanks.len()) as f64 * z as f64 * g
+        meshes as f64 * z as f64 * grid_points(model)
     })
+}
+
+/// Points of the set's larger profile grid.
+fn grid_points(model: &PlanetaryWearModel) -> f64 {
+    model.grids[0].len().max(model.grids[1].len()) as f64
 }
 
 /// The faulty member's numbers in one mesh log's record: every tooth's rate over the

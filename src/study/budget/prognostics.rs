@@ -40,7 +40,7 @@
 
 pub use super::chains::ParameterSpan;
 use super::chains::{chain_count, Duties, FutureDutyJob};
-use super::cost::{FigureCount, Estimate, Term};
+use super::cost::{Estimate, FigureCount, Term};
 use super::evaluation::{dynamic_steps_per_period, SLOWER_MACHINE_FACTOR};
 use crate::config::Case;
 
