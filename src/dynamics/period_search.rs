@@ -132,7 +132,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
     /// Runs the search to the case's tolerance. With `record`, the last period
     /// integrated is recorded when it is likely to be the last one needed (the first
     /// from a warm start, or once the search is close; a train's every period, see
-    /// [`Self::splice_at`]) and returned with its start and end states.
+    /// `splice_at`) and returned with its start and end states.
     pub fn run(
         &mut self,
         settings: &SteadyStateSettings,
@@ -257,8 +257,9 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
         let Some(state_at) = s.state_at.take() else {
             return Ok(None);
         };
-        // `!(d < tol)`: a NaN distance is no agreement.
-        if !(self.distance_between(&self.start_state(), end) < settings.tolerance) {
+        // Agreement is `d < tol`: a NaN distance is none.
+        let agree = |d: f64| d < settings.tolerance;
+        if !agree(self.distance_between(&self.start_state(), end)) {
             return Ok(None);
         }
         // A plan built in the split period is replayed; a free search stays free (a
@@ -270,7 +271,7 @@ impl<'s, 'a> MeshPeriodSearch<'s, 'a> {
             .integrate_part(0.0, y.as_mut_slice(), &mut rec, s.at)?;
         self.periods += 1;
         let joined = State::from_column_slice(&state_at);
-        if !(self.distance_between(&joined, &y) < settings.tolerance) {
+        if !agree(self.distance_between(&joined, &y)) {
             return Ok(None);
         }
         // Under motor slip the two trajectories also differ by a rigid rotation, which
