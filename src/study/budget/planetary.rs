@@ -290,9 +290,7 @@ fn grid_points(model: &PlanetaryWearModel) -> f64 {
 /// The faulty member's numbers in one mesh log's record: every tooth's rate over the
 /// profile grid (z G), 0 without a fault.
 fn tooth_numbers_per_log(model: &PlanetaryWearModel) -> f64 {
-    faulty_member(model).map_or(0.0, |(_, _, z, _)| {
-        z as f64 * model.grids[0].len().max(model.grids[1].len()) as f64
-    })
+    faulty_member(model).map_or(0.0, |(_, _, z, _)| z as f64 * grid_points(model))
 }
 
 /// The bound of [`max_planetary_checkpoint_bytes`] for `updates` updates, the mesh logs
