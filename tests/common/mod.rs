@@ -7,6 +7,7 @@ pub mod linear;
 pub mod paper;
 pub mod planetary;
 pub mod resume;
+pub mod rusage;
 pub mod train;
 
 use std::path::Path;

@@ -173,7 +173,7 @@ impl SweepJob {
         let Some(e) = estimate_sweep(
             &self.base,
             &self.plan,
-            Cost::SweepCase(self.run),
+            (Cost::SweepCase(self.run), self.continuation.is_some()),
             cases,
             threads,
         ) else {

@@ -307,8 +307,8 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     }
 }
 
-/// The PNG figures `job` draws on `case` ([`super::figures`]); None for a sweep's case
-/// (the sweep's own figures are drawn once, after its cases).
+/// The PNG figures `job` draws on `case` ([`super::figures`]); none for a sweep's case
+/// (the sweep's own figures are drawn once, after its cases: `super::sweep`).
 fn figures_of(case: &Case, job: Job) -> Option<super::cost::FigureCount> {
     use super::figures as f;
     match job {
@@ -322,7 +322,7 @@ fn figures_of(case: &Case, job: Job) -> Option<super::cost::FigureCount> {
             u32::from(dynamic) + u32::from(quasi_static),
         )),
         Job::Run => Some(f::run_figures(case)),
-        Job::SweepCase(_) => None,
+        Job::SweepCase(_) => Some(super::cost::FigureCount::default()),
     }
 }
 

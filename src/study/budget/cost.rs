@@ -259,12 +259,20 @@ pub struct FigureCount {
     /// the painted pixels are at most min(`dense_points`, `dense` W) times the figure's
     /// height (the sum of the series' min(n, W) h is at most both).
     pub dense_points: f64,
+    /// Figures counted at their own height, not the tallest's (a sweep's, a dataset's).
+    pub sized: f64,
+    /// The sum of their default heights, px: at a requested size they take at most
+    /// min(s `sized_px`, `sized` M) rows of pixels (s the size's scale of heights, M the
+    /// raster's bound: the sum of the capped heights is at most both).
+    pub sized_px: f64,
+    /// The tallest of them at the default size, px (its raster is the largest held).
+    pub sized_max_px: f64,
 }
 
 impl FigureCount {
     /// Every figure.
     pub fn total(&self) -> f64 {
-        self.one_panel + self.taller
+        self.one_panel + self.taller + self.sized
     }
 
     /// These figures and `o`'s.
@@ -274,6 +282,9 @@ impl FigureCount {
             taller: self.taller + o.taller,
             dense: self.dense + o.dense,
             dense_points: self.dense_points + o.dense_points,
+            sized: self.sized + o.sized,
+            sized_px: self.sized_px + o.sized_px,
+            sized_max_px: self.sized_max_px.max(o.sized_max_px),
         }
     }
 
@@ -284,6 +295,9 @@ impl FigureCount {
             taller: self.taller * n,
             dense: self.dense * n,
             dense_points: self.dense_points * n,
+            sized: self.sized * n,
+            sized_px: self.sized_px * n,
+            sized_max_px: self.sized_max_px,
         }
     }
 }
@@ -304,6 +318,10 @@ pub struct FigureLoad {
     pub figures_at_once: f64,
     /// Width of the figures at the requested size, px.
     pub width_px: f64,
+    /// Heights at the requested size per default height (the one-panel figures' ratio).
+    pub height_scale: f64,
+    /// The raster's bound on a side, px.
+    pub max_side_px: f64,
 }
 
 impl FigureLoad {
@@ -313,6 +331,8 @@ impl FigureLoad {
         pixels_per_one_panel_figure: 0.0,
         figures_at_once: 0.0,
         width_px: 0.0,
+        height_scale: 0.0,
+        max_side_px: 0.0,
     };
 
     /// PNG figures whose one-panel size is `(w, h)` px against the default `default_px`
@@ -335,6 +355,8 @@ impl FigureLoad {
             pixels_per_one_panel_figure: width.saturating_mul(one) as f64,
             figures_at_once: threads.max(1) as f64,
             width_px: width as f64,
+            height_scale: f64::from(h) / f64::from(default_px.1.max(1)),
+            max_side_px: f64::from(max_side_px),
         }
     }
 
@@ -349,20 +371,36 @@ impl FigureLoad {
             taller: self.figures_at_once,
             ..FigureCount::default()
         });
+        // Figures of their own height: their capped heights' sum, bounded.
+        let rows = |px: f64, n: f64| (self.height_scale * px).min(n * self.max_side_px);
+        let sized = self.width_px * rows(drawn.sized_px, drawn.sized);
         let pixels = drawn.one_panel * self.pixels_per_one_panel_figure
-            + drawn.taller * self.pixels_per_figure;
+            + drawn.taller * self.pixels_per_figure
+            + sized;
         let at_once = drawn.total().min(self.figures_at_once);
+        // The largest raster held: the tallest figure's, or a figure of its own height's
+        // when it draws only those or one is taller; no more rasters than its pixels.
+        let largest = if drawn.one_panel + drawn.taller > 0.0 {
+            self.pixels_per_figure
+        } else {
+            0.0
+        }
+        .max(if drawn.sized > 0.0 {
+            self.width_px * rows(drawn.sized_max_px, 1.0)
+        } else {
+            0.0
+        });
+        let rasters = (at_once * largest).min(pixels);
         // Painted pixels of dense data, at the tallest figure's height (a bound), and
         // those of the figures drawn at once (at most that many figures' worth).
         let height = self.pixels_per_figure / self.width_px.max(1.0);
         let painted = drawn.dense_points.min(drawn.dense * self.width_px) * height;
-        let painted_at_once = painted.min(at_once * self.pixels_per_figure);
+        let painted_at_once = painted.min(at_once * largest);
         (self.pixels_per_figure > 0.0 && drawn.total() > 0.0).then_some(Term {
             what:
                 "the figures at the requested size (their pixels and the pixels their data paint)",
             seconds: pixels * SECONDS_PER_FIGURE_PIXEL + painted * SECONDS_PER_PAINTED_PIXEL,
-            bytes: at_once * self.pixels_per_figure * BYTES_PER_FIGURE_PIXEL
-                + painted_at_once * BYTES_PER_PAINTED_PIXEL,
+            bytes: rasters * BYTES_PER_FIGURE_PIXEL + painted_at_once * BYTES_PER_PAINTED_PIXEL,
             keys: if painted > 0.0 {
                 &[
                     "the figure size",

@@ -162,6 +162,7 @@ pub fn estimate_dataset_resumed(
             ],
         },
     ])
+    .drawing(super::figures::dataset_figures())
 }
 
 /// What a design's conditions cost, each once: their trajectories, the costliest
@@ -265,7 +266,9 @@ pub fn estimate_dataset_check(
 ) -> Estimate {
     // A merge draws its sample among the states the shard holds: each a kept one.
     let recomputed = recomputed_count(kept.states as usize, MAX_RECOMPUTED_STATES) as f64;
+    // The merged dataset's indicator trends are drawn after it.
     folder_check(d, kept, (recomputed, recomputed), threads, record)
+        .drawing(super::figures::dataset_figures())
 }
 
 /// [`estimate_dataset_check`] with a sample of `sample` physical states: the cost of
@@ -287,7 +290,9 @@ pub fn estimate_folder_check(
     // Those beyond the states missing from the folder are kept ones, at least.
     let missing = (physical as f64 - kept.states).max(0.0);
     let kept_recomputed = (recomputed - missing).clamp(0.0, kept.states);
+    // A folder's check draws no figure.
     folder_check(d, kept, (recomputed, kept_recomputed), threads, record)
+        .drawing(super::cost::FigureCount::default())
 }
 
 /// A folder's check with `recomputed` physical states recomputed whole, `kept_recomputed`

@@ -26,6 +26,9 @@ const fn count(one_panel: u32, taller: u32) -> FigureCount {
         taller: taller as f64,
         dense: 0.0,
         dense_points: 0.0,
+        sized: 0.0,
+        sized_px: 0.0,
+        sized_max_px: 0.0,
     }
 }
 
@@ -173,4 +176,52 @@ pub fn run_figures(case: &Case) -> FigureCount {
         c = c.plus(count(0, 8));
     }
     c.times(case.stage.len().max(1) as f64)
+}
+
+/// Default height of a dataset's indicator-trend figure, px (`indicator_trends.png`,
+/// `app::dataset::index_files`: 900 x 1500, seven panels; `tests/budget_figures.rs`
+/// checks the file against it).
+pub const DATASET_TREND_FIGURE_PX: f64 = 1500.0;
+
+/// Default height of a sweep's figure, px (`report::sweep_figure::SWEEP_FIGURE_PX`, two
+/// panels; `tests/budget_figures.rs` checks the file against it).
+pub const SWEEP_FIGURE_PX: f64 = 640.0;
+
+/// `n` figures of the default height `height_px`, each counted at its own height
+/// ([`FigureCount::sized`]).
+fn of_height(n: f64, height_px: f64) -> FigureCount {
+    FigureCount {
+        sized: n,
+        sized_px: n * height_px,
+        sized_max_px: height_px,
+        ..FigureCount::default()
+    }
+}
+
+/// `gearwear dataset` and `dataset-merge`: the indicator trends, one figure of
+/// [`DATASET_TREND_FIGURE_PX`] (seven panels), drawn once the index is written. (It was
+/// counted as the figures drawn at once, two on two threads; issue 33.)
+pub fn dataset_figures() -> FigureCount {
+    of_height(1.0, DATASET_TREND_FIGURE_PX)
+}
+
+/// A sweep (`app::sweep`, `report::sweep_figure::figures_for`): one figure of two panels
+/// ([`SWEEP_FIGURE_PX`] high) per mesh of `base` (one for a pair) when an axis is the input speed or the
+/// sweep follows branches (`continuation`); none otherwise. A sweep's cases draw nothing.
+/// (It was counted as the figures drawn at once, two on two threads, whether it drew one
+/// or none; issue 33.)
+pub fn sweep_figures(
+    base: &Case,
+    plan: &crate::study::sweep::plan::SweepPlan,
+    continuation: bool,
+) -> FigureCount {
+    let speed = plan
+        .axes
+        .iter()
+        .any(|a| a.key == crate::study::sweep::SPEED_KEY);
+    if speed || continuation {
+        of_height(base.stage.len().max(1) as f64, SWEEP_FIGURE_PX)
+    } else {
+        FigureCount::default()
+    }
 }

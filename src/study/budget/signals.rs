@@ -7,11 +7,31 @@ use super::evaluation::{SECONDS_PER_STEP, SLOWER_MACHINE_FACTOR};
 use crate::config::Case;
 use crate::study::transient_signals::is_transient;
 
-/// Bytes of memory per recorded second and sample rate: the record's channels, their
-/// analysis, and for a transient the internal grid (8 samples a sample, four forces, their
-/// spectra): measured about 1.5 kB per record sample for a transient, 0.2 kB steady.
+/// Bytes of memory per record sample of a steady record: the channels, their analysis
+/// (spectrum, averages, indicators) and files; measured about 0.15-0.2 kB (a 19 s record
+/// at 25.6 kHz: 92 MB), counted 0.4 kB. A transient's record is counted by its internal
+/// grid instead ([`transient_grid_bytes`]); its analysis, after the grid is freed, at this
+/// rate.
 const BYTES_PER_SAMPLE_STEADY: f64 = 400.0;
-const BYTES_PER_SAMPLE_TRANSIENT: f64 = 3000.0;
+
+/// Bytes per cell of a transient's internal grid (`signals::transient_record`, n cells at
+/// D f_s) at the record's peak, the tachometer's stage: the force sampler's four cell
+/// integrals (4 x 8 B), the four forces' half spectra (n / 2 + 1 complex each: 4 x 8 B a
+/// cell), the filter's response on the grid (4 B), the forward and inverse real-FFT
+/// plans of length n (their n / 2-point complex FFTs' twiddles and the real FFTs': about
+/// 24 B), and the tachometer's cells, their spectrum, the inverse transform's output and
+/// its scratch (4 x 8 B); the channels and tachometer samples kept by then are under 3 B
+/// a cell with two sensors (8 B a sample each, counted apart per channel): 127 B. The
+/// allocator keeps what the forces' transforms freed (a force's cells, their means, its
+/// spectrum and scratch: 4 x 8 B) in its heap while they are under its mmap threshold
+/// (glibc raises it to a freed block's size, up to 32 MB: arrays of up to 4e6 cells),
+/// counted again: 160 B. Measured 2026-11-30 (peak RSS of `gearwear signals`, a run-up
+/// from 30 to 60 Hz at 25.6 kHz, 1, 2, 3, 5, 10 and 19 s: 41, 84, 95, 145, 273 and 503
+/// MB): 125 B a cell between 5 and 19 s, 146 B at 2 s (the allocator's), so the count is
+/// 1.15-1.45 times the peak with the process's base. It was 3000 B a record sample (375
+/// a cell), three times the measured peak (issue 33: a 19 s run-up counted 1.52 GB
+/// against 0.50 GB measured, and refused at 8192 x 4096 px where it peaks at 0.71 GB).
+const BYTES_PER_TRANSIENT_CELL: f64 = 160.0;
 
 /// Seconds per record sample of rendering, filtering, indicators and writing, on one
 /// core: measured 2.7 us of user time a sample for a 20 s record at 100 kHz (2e6 samples,
@@ -46,15 +66,17 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
     // turns slower than the input: counted at the input speed, a 95-tooth gear's record
     // was counted 5 times too short).
     let seconds = s.record_seconds(case);
-    let per = if is_transient(case) {
-        BYTES_PER_SAMPLE_TRANSIENT
+    // A transient's record: its internal grid at the record's peak, or its analysis after
+    // the grid is freed, the larger; a steady record: its analysis.
+    let samples = seconds * s.sampling_rate_hz;
+    let record_bytes = if is_transient(case) {
+        transient_grid_bytes(case).max(samples * BYTES_PER_SAMPLE_STEADY)
     } else {
-        BYTES_PER_SAMPLE_STEADY
+        samples * BYTES_PER_SAMPLE_STEADY
     };
     // A transient record integrates every mesh period it spans at the grid's steps per
     // period (bounded above with the fastest speed of the record); a steady record
     // replays the steady state, whose cost is the dynamics estimate's.
-    let samples = seconds * s.sampling_rate_hz;
     let transient_seconds = if is_transient(case) {
         transient_steps(case) * SECONDS_PER_STEP
     } else {
@@ -87,7 +109,7 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
         what: "the record (channels, analysis, a transient's internal grid and integration)",
         seconds: transient_seconds
             + samples * (SECONDS_PER_RECORD_SAMPLE + channels as f64 * SECONDS_PER_SAMPLE_CHANNEL),
-        bytes: samples * (per + channels as f64 * BYTES_PER_SAMPLE_CHANNEL),
+        bytes: record_bytes + samples * channels as f64 * BYTES_PER_SAMPLE_CHANNEL,
         keys: &[
             "signals.record_length",
             "signals.sampling_rate_hz",
@@ -220,35 +242,64 @@ fn record_periods(case: &Case) -> Option<(f64, f64)> {
     Some((period, shaft))
 }
 
+/// Peak bytes of a transient record's internal grid (`signals::transient_record`): its
+/// n cells at D f_s, n = `fast_len`(lead-in + the record and its tail + lead-in's length
+/// of padding), at [`BYTES_PER_TRANSIENT_CELL`]. In f64: a length past 2^50 cells (refused
+/// by the budget long before) is counted at 2 n, the next power of two's bound.
+pub fn transient_grid_bytes(case: &Case) -> f64 {
+    use crate::signals::transient_record::{fast_len, LEAD_S, TAIL_S};
+    let s = &case.signals;
+    let rate = crate::signals::antialias::OVERSAMPLING as f64 * s.sampling_rate_hz;
+    let lead = (LEAD_S * rate).round();
+    let cells = lead + ((s.record_seconds(case) + TAIL_S) * rate).ceil() + (LEAD_S * rate).floor();
+    let n = if cells.is_finite() && cells < 2f64.powi(50) {
+        fast_len(cells as usize) as f64
+    } else {
+        2.0 * cells
+    };
+    n * BYTES_PER_TRANSIENT_CELL
+}
+
 /// Accepted integrator steps of a transient record of `case` (a ramp or a load
-/// fluctuation; `study::transient_signals`), bounded above: every mesh period of the
-/// record and its tail (`signals::transient_record::TAIL_S`) at the fastest speed, at the
-/// error control's bound at the transient's tolerance
-/// (`adaptive_steps_per_period`(tol x `TRANSIENT_TOLERANCE_FACTOR`)) or the grid's
-/// `numerics.steps_per_mesh_period`, the larger. The error control, not the grid, sets
-/// the steps of a transient: counting the grid alone (200 a period) put a run-up's
-/// integration at about half of its measured time, for the spur pair as for a helical
-/// one (docs/MODEL.md 11.11; tests/helical_transient.rs counts them).
+/// fluctuation; `study::transient_signals`), bounded above: every mesh period the record
+/// spans and its tail (`signals::transient_record::TAIL_S`), at the error control's bound
+/// at the transient's tolerance (`adaptive_steps_per_period`(tol x
+/// `TRANSIENT_TOLERANCE_FACTOR`)) or the grid's `numerics.steps_per_mesh_period`, the
+/// larger. The error control, not the grid, sets the steps of a transient: counting the
+/// grid alone (200 a period) put a run-up's integration at about half of its measured
+/// time, for the spur pair as for a helical one (docs/MODEL.md 11.11;
+/// tests/helical_transient.rs counts them). The mesh periods are the drive's: the speed
+/// runs linearly from the start to the end of the ramp (`transient_signals::drive_of`)
+/// and the mesh frequency is proportional to it, so the record spans (f_0 + f_1) / 2 x L
+/// periods (f the mesh frequencies at the ramp's ends, L the record's seconds) and the
+/// tail f_1 x `TAIL_S`. (They were counted at the fastest speed throughout: a run-up
+/// from 30 to 60 Hz 4/3 of its periods, its 19 s record 80 s against 22.5 s of CPU,
+/// issue 33.)
 pub fn transient_steps(case: &Case) -> f64 {
     use crate::study::transient_signals::TRANSIENT_TOLERANCE_FACTOR;
     let s = &case.signals;
-    let seconds = s.record_seconds(case) + crate::signals::transient_record::TAIL_S;
     let tol = case.numerics.integration_tolerance * TRANSIENT_TOLERANCE_FACTOR;
     let per_period = super::evaluation::adaptive_steps_per_period(tol)
         .max(case.numerics.steps_per_mesh_period as f64);
-    fastest_mesh_frequency_hz(case) * seconds * per_period
+    let start = mesh_frequency_hz(case, case.operating.input_speed_hz);
+    let end = s
+        .ramp_end_speed_hz
+        .map_or(start, |f| mesh_frequency_hz(case, f));
+    let periods = 0.5 * (start + end) * s.record_seconds(case)
+        + end * crate::signals::transient_record::TAIL_S;
+    periods * per_period
 }
 
-/// The mesh frequency at the fastest input speed the case's record sees (a ramp's end or
-/// the operating speed), Hz: the `OperatingPoint`'s of the case at that speed; 0 for a
-/// pair the geometry refuses (building the model then names the problem).
-fn fastest_mesh_frequency_hz(case: &Case) -> f64 {
-    let mut fastest = case.clone();
-    fastest.set_load_point(crate::config::case::LoadPoint {
-        input_speed_hz: case.signals.max_input_speed_hz(case),
+/// The mesh frequency of `case` at the input speed `input_speed_hz`, Hz: the
+/// `OperatingPoint`'s of the case at that speed; 0 for a pair the geometry refuses
+/// (building the model then names the problem).
+fn mesh_frequency_hz(case: &Case, input_speed_hz: f64) -> f64 {
+    let mut at = case.clone();
+    at.set_load_point(crate::config::case::LoadPoint {
+        input_speed_hz,
         ..case.load_point()
     });
     crate::geometry::GearPair::from_case(&case.gear).map_or(0.0, |pair| {
-        crate::dynamics::params::OperatingPoint::of(&fastest.operating, &pair).mesh_frequency_hz
+        crate::dynamics::params::OperatingPoint::of(&at.operating, &pair).mesh_frequency_hz
     })
 }

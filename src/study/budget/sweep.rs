@@ -71,11 +71,13 @@ pub(crate) struct SweepEstimate {
 /// cost per case is sampled at a few values of each axis (the others at the base case);
 /// the total is the base cost times, per axis, the mean ratio of its sampled values to the
 /// base (exact when the cost does not depend on a varied key, and when it is a product of
-/// per-axis factors); the worst case puts every axis at its costliest sampled value.
+/// per-axis factors); the worst case puts every axis at its costliest sampled value. The
+/// sweep's figures (`continuation`: it follows branches) are counted with the total, each
+/// as it is drawn (`super::figures::sweep_figures`); a case draws none.
 pub(crate) fn estimate_sweep(
     base: &Case,
     plan: &SweepPlan,
-    job: Job,
+    (job, continuation): (Job, bool),
     cases: usize,
     threads: usize,
 ) -> Option<SweepEstimate> {
@@ -130,7 +132,8 @@ pub(crate) fn estimate_sweep(
         ],
         steps_to_give_up: worst_case.steps_to_give_up,
         ..worst_case.clone()
-    };
+    }
+    .drawing(super::figures::sweep_figures(base, plan, continuation));
     Some(SweepEstimate {
         total,
         worst_case,
