@@ -272,10 +272,14 @@ fn what_the_helical_wear_lacks_is_refused_naming_the_key() {
         a.extend(extra);
         a
     };
-    // Per-tooth inputs (wear per tooth of a helical pair is not built).
+    // A tilting bearing (per-tooth inputs are worn tooth by tooth,
+    // tests/helical_tooth_wear.rs).
     rejected(
-        &with(&["--set", "teeth.accuracy_grade=6"]),
-        &["`[teeth]`", "gear.helix_angle_deg"],
+        &with(&[
+            "--set",
+            "dynamics.bearing_tilt_stiffness_pinion_nm_per_rad=1e7",
+        ]),
+        &["dynamics.bearing_tilt_stiffness_pinion_nm_per_rad"],
     );
     // A helical train.
     rejected(

@@ -51,7 +51,10 @@ pub fn run_of_helical(
     if job.case.load_spectrum.is_some() {
         return run_of_helical_under_spectrum(job, figures, observer);
     }
-    crate::study::helical_teeth::refuse_for_wear(&job.case, "`gearwear run`")?;
+    crate::study::helical_teeth::refuse_for_wear(
+        &job.case,
+        crate::study::helical_teeth::RUN_STUDY,
+    )?;
     let model = build_dynamics_model(&job.case, observer)?;
     let (stiffness, stiffness_warnings) = helical_stiffness_study(&job.case)?;
     // The planar model holds the slice model's and the face load's warnings already.

@@ -82,7 +82,10 @@ impl Job for WearJob {
             );
         }
         let model = if self.case.gear.helix_angle_deg != 0.0 {
-            crate::study::helical_teeth::refuse_for_wear(&self.case, "`gearwear wear`")?;
+            crate::study::helical_teeth::refuse_for_wear(
+                &self.case,
+                crate::study::helical_teeth::WEAR_STUDY,
+            )?;
             let m = super::build_dynamics_model(&self.case, observer)?;
             // On axial bearings: its axial shift with new teeth (docs/MODEL.md 11.6).
             if let Some(w) = crate::study::helical_dynamics::new_teeth_axial_shift_warning(&m) {

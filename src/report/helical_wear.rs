@@ -9,6 +9,13 @@
 //!   and the volume removed (the sum over
 //!   slices of their layers, `helical_wear::slice_volumes_m3`);
 //! - a headline line per mode, rounded for people.
+//!
+//! Where per-tooth inputs wear every tooth's face slices on their own (docs/MODEL.md
+//! 11.13), the map is the mean over each gear's teeth of each face slice, and each run
+//! adds `teeth_wear_MODE.png` and its data `csv/teeth_wear_MODE.csv` (the spur pair's
+//! per-tooth table with the slice axis): rho1 and both roll angles, then a column per
+//! tooth and face slice, `{flank}_tooth{t}_slice{j}_um`; its heat map draws each tooth's
+//! deepest wear across the face at each profile point.
 
 use super::artifacts::Artifacts;
 use super::figures::heat_panel;
@@ -19,7 +26,7 @@ use crate::study::helical::HelicalDynamics;
 use crate::study::helical_wear::slice_volumes_m3;
 use crate::study::wear_loop::WearRun;
 use crate::study::Model;
-use crate::wear::SliceWear;
+use crate::wear::{SliceWear, ToothWear};
 use serde_json::{json, Map, Value};
 
 /// The deepest entry of a per-slice map: (depth m, slice, grid point).
@@ -115,8 +122,16 @@ pub fn add_wear_map_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifact
         let Some(last) = r.last() else {
             continue;
         };
-        let Some(map) = &last.wear.slices else {
-            continue;
+        let mean_map;
+        let map = match (&last.wear.slices, &last.wear.teeth) {
+            (Some(m), _) => m,
+            (None, Some(t)) => {
+                let (table, fig) = tooth_slice_figure(model, h.slices, t, last.wear.cycles, r);
+                a.figure_with_data(format!("teeth_wear_{}.png", r.mode.name()), fig, table);
+                mean_map = slice_means(t, h.slices);
+                &mean_map
+            }
+            (None, None) => continue,
         };
         let title = format!(
             "Wear over the face after {} cycles ({} study)",
@@ -135,4 +150,78 @@ pub fn add_wear_map_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifact
     if !maps.is_empty() {
         a.summary["wear_map"] = Value::Object(maps);
     }
+}
+
+/// Each face slice's mean over a gear's teeth of a per-tooth, per-slice state (profile
+/// t N + j: tooth t's face slice j, docs/MODEL.md 11.13) with `n` face slices.
+fn slice_means(t: &ToothWear, n: usize) -> SliceWear {
+    let means = |profiles: &[Vec<f64>]| -> Vec<Vec<f64>> {
+        let z = (profiles.len() / n.max(1)).max(1);
+        (0..n)
+            .map(|j| {
+                let of_slice: Vec<Vec<f64>> = (0..z)
+                    .filter_map(|tooth| profiles.get(tooth * n + j).cloned())
+                    .collect();
+                crate::wear::tooth_wear::mean_profile(&of_slice)
+            })
+            .collect()
+    };
+    SliceWear {
+        pinion_m: means(&t.pinion_m),
+        gear_m: means(&t.gear_m),
+    }
+}
+
+/// The per-tooth, per-slice wear table of a run's last state `t` at `cycles` (module
+/// docs) and its heat map: each tooth's deepest wear across the face against the roll
+/// angle of its own profile.
+fn tooth_slice_figure(
+    model: &Model,
+    n: usize,
+    t: &ToothWear,
+    cycles: f64,
+    run: &WearRun,
+) -> (Table, Figure) {
+    let none = ToothWear::default();
+    let (mut table, roll_p, roll_g) = super::teeth::map_table(model, &none, "tooth");
+    let deepest = |profiles: &[Vec<f64>]| -> Vec<Vec<f64>> {
+        profiles
+            .chunks(n.max(1))
+            .map(|tooth| {
+                let len = tooth.first().map_or(0, Vec::len);
+                (0..len)
+                    .map(|i| tooth.iter().fold(0.0_f64, |m, p| m.max(p[i])))
+                    .collect()
+            })
+            .collect()
+    };
+    for (name, profiles) in [("pinion", &t.pinion_m), ("gear", &t.gear_m)] {
+        for (k, p) in profiles.iter().enumerate() {
+            table = table.col(
+                &format!("{name}_tooth{}_slice{}_um", k / n.max(1), k % n.max(1)),
+                p.iter().map(|h| h * 1e6).collect(),
+            );
+        }
+    }
+    let max = t.max_m() * 1e6;
+    let heat = |title: &str, roll: &[f64], profiles: &[Vec<f64>]| {
+        let rows: Vec<f64> = (0..profiles.len()).map(|x| x as f64).collect();
+        let mut p = heat_panel(roll, &rows, profiles, max);
+        p.title = title.into();
+        p.x_label = "roll angle of the tooth's own profile (deg)".into();
+        p.y_label = "tooth (deepest wear across the face)".into();
+        p
+    };
+    let fig = Figure {
+        title: format!(
+            "Wear of every tooth after {} cycles ({} study), the deepest of its face slices",
+            crate::io::format_number(cycles),
+            run.mode.label()
+        ),
+        panels: vec![
+            heat("pinion", &roll_p, &deepest(&t.pinion_m)),
+            heat("gear", &roll_g, &deepest(&t.gear_m)),
+        ],
+    };
+    (table, fig)
 }

@@ -425,6 +425,11 @@ pub fn add_sideband_artifacts(
 
 /// Adds each run's per-tooth wear table and heat map to `a`.
 pub fn add_tooth_wear_artifacts(model: &Model, runs: &[&WearRun], a: &mut Artifacts) {
+    if model.helical.is_some() {
+        // A helical pair's per-tooth table carries its face slices
+        // (`report::helical_wear`, docs/MODEL.md 11.13).
+        return;
+    }
     for run in runs {
         if let Some((fig, table)) = tooth_wear_figure(model, run) {
             a.figure_with_data(format!("teeth_wear_{}.png", run.mode.name()), fig, table);

@@ -1,6 +1,7 @@
 //! Per-tooth errors and faults on a helical pair (docs/MODEL.md 11.10): what the planar
 //! model (`study::helical_dynamics`) takes of `[teeth]` and `[[fault]]`, what it refuses,
-//! and the refusal of the wear studies, which do not take such teeth yet.
+//! and the refusal of the wear studies that do not wear such teeth tooth by tooth yet
+//! (`gearwear wear` and `gearwear run` do, docs/MODEL.md 11.13).
 //!
 //! Taken by `gearwear dynamics` and `gearwear signals` (and the dynamics sweeps): pitch and
 //! profile errors, run-out, cracks, spalls and broken tips across a span of the face
@@ -74,13 +75,22 @@ pub(crate) fn tooth_inputs(
     ToothInputs::helical(case, slices, grid, shaft_speeds_rad_s).map_err(ModelError)
 }
 
-/// The refusal of a helical case with per-tooth inputs by the wear studies (its teeth
-/// would wear slice by slice and tooth by tooth, not built yet); None for a spur case or
-/// new, identical helical teeth. One message for every wear study, so `wear` and `run`
-/// refuse a case alike.
-pub fn wear_refusal(case: &Case) -> Option<String> {
-    (case.gear.helix_angle_deg != 0.0 && case.stage.is_empty() && has_tooth_inputs(case)).then(|| {
-        "`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): the wear studies (`gearwear wear`, `gearwear run`, a `[load_spectrum]`, a wear sweep, `gearwear dataset`, `gearwear calibrate`, `gearwear predict`) do not take per-tooth inputs on a helical pair yet (its slices would wear tooth by tooth); `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.10)".to_string()
+/// `gearwear wear` in a refusal, and the study that wears a helical pair's teeth tooth by
+/// tooth and slice by slice at one operating point (docs/MODEL.md 11.13).
+pub const WEAR_STUDY: &str = "`gearwear wear`";
+
+/// `gearwear run` in a refusal; it wears a helical pair's teeth as [`WEAR_STUDY`] does.
+pub const RUN_STUDY: &str = "`gearwear run`";
+
+/// The refusal of a helical case with per-tooth inputs by a wear study `study` that does
+/// not wear its teeth tooth by tooth (a `[load_spectrum]`, a wear sweep, `gearwear
+/// dataset`, `gearwear calibrate`, `gearwear predict`); None for a spur case, new identical
+/// helical teeth, or [`WEAR_STUDY`] and [`RUN_STUDY`], which wear every tooth's face slices
+/// from its own contact history (docs/MODEL.md 11.13).
+pub fn wear_refusal(case: &Case, study: &str) -> Option<String> {
+    let built = study == WEAR_STUDY || study == RUN_STUDY;
+    (case.gear.helix_angle_deg != 0.0 && case.stage.is_empty() && has_tooth_inputs(case) && !built).then(|| {
+        format!("`[teeth]` / `[[fault]]` on a helical pair (`gear.helix_angle_deg` > 0): {study} does not take per-tooth inputs on a helical pair yet (its teeth would wear slice by slice under each of its operating points or cases); `gearwear wear` and `gearwear run` at one operating point wear every tooth slice by slice (docs/MODEL.md 11.13), and `gearwear dynamics` and `gearwear signals` take them (docs/MODEL.md 11.10)")
     })
 }
 
@@ -88,7 +98,7 @@ pub fn wear_refusal(case: &Case) -> Option<String> {
 /// spectrum, a wear sweep): the tilting keys (`helical_tilt::tilt_refusal`), then the
 /// per-tooth inputs ([`wear_refusal`]); None when it takes the case.
 pub fn wear_refusals(case: &Case, study: &str) -> Option<String> {
-    super::helical_tilt::tilt_refusal(case, study).or_else(|| wear_refusal(case))
+    super::helical_tilt::tilt_refusal(case, study).or_else(|| wear_refusal(case, study))
 }
 
 /// [`wear_refusals`] as an error of the model.

@@ -56,7 +56,7 @@ fn lead_gaps_m(h: &HelicalDynamics) -> Vec<f64> {
 /// Pinion and gear speeds (rad/s) at sample `i` of `r`: the nominal ones of `mesh` plus
 /// the response's rotational velocities (dynamic), or the nominal ones (quasi-static: no
 /// velocities recorded).
-fn speeds_at(mesh: &TrainMesh, r: &DynamicResponse, i: usize) -> (f64, f64) {
+pub(crate) fn speeds_at(mesh: &TrainMesh, r: &DynamicResponse, i: usize) -> (f64, f64) {
     let v = &r.signals.velocity;
     if v.len() <= i {
         let [wp, wg] = mesh.operating.speeds_rad_s;
@@ -146,7 +146,7 @@ pub fn slice_paths(
 /// width `w.0` (m), pinion and gear speeds `wp`, `wg` (rad/s): Hertz (paper eq. 15) with
 /// the radii of the contact line's normal section, the transverse ones over
 /// `w.1` = cos(beta_b) (docs/MODEL.md 11.3), Xu's coefficient (eq. 8), the surface speeds.
-fn slice_sample(
+pub(crate) fn slice_sample(
     model: &Model,
     xu: &XuConstants,
     (rho1, load): (f64, f64),

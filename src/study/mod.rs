@@ -10,6 +10,7 @@ pub mod helical;
 pub mod helical_dynamics;
 pub mod helical_teeth;
 pub mod helical_tilt;
+mod helical_tooth_wear;
 pub mod helical_wear;
 pub mod model;
 pub mod model_error;

@@ -492,7 +492,16 @@ impl Model {
     /// slice for a helical pair.
     pub fn new_wear_state(&self) -> WearState {
         if let Some(h) = &self.helical {
-            return WearState::per_slice(self.grid.len(), h.slices);
+            // Per-tooth inputs: every tooth's face slices, tooth t's slice j at t N + j
+            // (docs/MODEL.md 11.13).
+            return match &self.teeth {
+                Some(_) => WearState::per_tooth(
+                    self.grid.len(),
+                    self.pair.pinion.teeth * h.slices,
+                    self.pair.gear.teeth * h.slices,
+                ),
+                None => WearState::per_slice(self.grid.len(), h.slices),
+            };
         }
         match &self.teeth {
             Some(_) => WearState::per_tooth(

@@ -11,12 +11,14 @@ mod errors;
 mod faults;
 mod helical;
 mod helical_tip;
+mod line_wear;
 mod sides;
 mod worn;
 
 pub(crate) use checks::{fault_problem, lower_mm, upper_mm};
 pub use errors::{FlankTolerancesReport, GearErrors};
 pub(crate) use faults::apply_fault;
+pub(crate) use line_wear::LineTeeth;
 
 use crate::config::case::{Case, Member, ReliefShape, ToothFault, WornGeometry};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
@@ -52,8 +54,9 @@ pub struct ToothInputs {
     /// nominal Hertz half-width, for the worn flanks' stiffness and curvature.
     worn: Option<WornFlanks>,
     /// A helical pair's teeth as contact lines on its line pair (`teeth::helical`,
-    /// docs/MODEL.md 11.10): new teeth only, no wear added.
-    lines: bool,
+    /// docs/MODEL.md 11.10), with what their wear per face slice needs
+    /// (docs/MODEL.md 11.13).
+    lines: Option<Box<LineTeeth>>,
 }
 
 impl ToothInputs {
@@ -101,7 +104,7 @@ impl ToothInputs {
             spacing_m: grid.spacing_m,
             worn: (case.wear.worn_geometry == WornGeometry::Worn)
                 .then(|| WornFlanks::of(case, pair, mesh, grid, static_force_n)),
-            lines: false,
+            lines: None,
         };
         let perfect = |f: &[ToothFlank]| f.iter().all(|t| t == &ToothFlank::perfect(n));
         let trivial = perfect(&me.pinion)
@@ -111,14 +114,33 @@ impl ToothInputs {
         Ok((!trivial).then_some(me))
     }
 
+    /// A helical pair's teeth as contact lines, with what their wear per face slice needs
+    /// (docs/MODEL.md 11.13); None for a spur pair's teeth.
+    pub(crate) fn line_teeth(&self) -> Option<&LineTeeth> {
+        self.lines.as_deref()
+    }
+
     /// The tooth-resolved mesh of a wear state: each tooth's own wear (or the common
     /// profile of a state without per-tooth wear) added to its flank.
     pub fn mesh_for(&self, wear: &WearState) -> ToothMesh {
-        if self.lines {
-            // A helical pair's lines: the wear studies refuse its teeth (docs/MODEL.md 11.10).
+        if let Some(l) = &self.lines {
+            // A helical pair's lines: each tooth's own wear per face slice as its line's
+            // gap (docs/MODEL.md 11.13).
+            let add = |flanks: &[ToothFlank], own: Option<&Vec<Vec<f64>>>| -> Vec<ToothFlank> {
+                (flanks.iter().enumerate())
+                    .map(|(t, f)| {
+                        let mut f = f.clone();
+                        if let Some(w) = own {
+                            l.add_wear(&mut f.removed_m, w, t);
+                        }
+                        f
+                    })
+                    .collect()
+            };
+            let teeth = wear.teeth.as_ref();
             return ToothMesh::new(
-                self.pinion.clone(),
-                self.gear.clone(),
+                add(&self.pinion, teeth.map(|t| &t.pinion_m)),
+                add(&self.gear, teeth.map(|t| &t.gear_m)),
                 self.runout,
                 self.rho_start_m,
                 self.spacing_m,

@@ -300,9 +300,19 @@ pub fn verify_resumable(run: &WearRun, model: &Model) -> Result<(), StoredRunErr
 /// on each flank (`HelicalDynamics::slices`); their lengths and values are
 /// `UpdateRecord::profile_problem`'s.
 fn slice_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
-    let n = model.helical.as_ref().map(|h| h.slices);
+    // A helical pair's resolved teeth keep their face slices per tooth
+    // (`tooth_problem`, docs/MODEL.md 11.13), not a common per-slice state.
+    let resolved = model.helical.is_some() && model.teeth.is_some();
+    let n = (model.helical.as_ref())
+        .filter(|_| !resolved)
+        .map(|h| h.slices);
     for (what, s) in [("wear", &r.wear.slices), ("increment", &r.increment_slices)] {
         match (n, s) {
+            (None, Some(_)) if resolved => {
+                return Some(format!(
+                    "holds per-slice {what} common to every tooth, but the case's per-tooth inputs wear each tooth's face slices on their own"
+                ))
+            }
             (None, Some(_)) => {
                 return Some(format!(
                     "holds per-slice {what}, but the case is a spur pair"
@@ -327,7 +337,10 @@ fn slice_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<St
 /// The per-tooth profiles of a record against the model: present exactly when the model
 /// resolves the teeth, one profile per tooth of the grid's length, finite and >= 0.
 fn tooth_problem(model: &Model, r: &super::wear_loop::UpdateRecord) -> Option<String> {
-    let teeth = [model.pair.pinion.teeth, model.pair.gear.teeth];
+    // A helical pair's: every tooth's face slices, tooth t's slice j at t N + j
+    // (docs/MODEL.md 11.13).
+    let n = model.helical.as_ref().map_or(1, |h| h.slices);
+    let teeth = [model.pair.pinion.teeth * n, model.pair.gear.teeth * n];
     let resolved = model.teeth.is_some().then_some(teeth);
     let whose = ("the case", "per-tooth inputs");
     tooth_problem_of(resolved, model.grid.len(), r, whose)

@@ -348,7 +348,28 @@ pub type DynamicSolve<'a> =
 /// eq. 14-17; per tooth when the mesh is tooth-resolved) and the state the next search
 /// starts from.
 pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicResponse) -> UpdateRecord {
-    if let Some(h) = &model.helical {
+    let line_teeth = (model.teeth.as_ref()).and_then(|t| t.line_teeth().map(|l| (t, l)));
+    if let (Some(h), Some((teeth, lt))) = (&model.helical, line_teeth) {
+        if lt.slices > 1 {
+            // A helical pair's teeth worn tooth by tooth and slice by slice
+            // (docs/MODEL.md 11.13); one slice is its own line: the spur pair's
+            // per-tooth record below.
+            let (inc, load) =
+                super::helical_tooth_wear::record_parts(model, h, teeth, lt, r, &wear);
+            return UpdateRecord {
+                roughness_um: model.roughness_for(&wear),
+                wear,
+                summary: ResponseSummary::of(r),
+                increment_pinion_m: inc.pinion_m,
+                increment_gear_m: inc.gear_m,
+                increment_teeth: inc.teeth,
+                increment_slices: None,
+                path_rho1_m: model.grid.rho_pinion_m.clone(),
+                path_load_n: load,
+                end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
+            };
+        }
+    } else if let Some(h) = &model.helical {
         let (inc, load) = super::helical_wear::record_parts(model, h, r, &wear);
         return UpdateRecord {
             roughness_um: model.roughness_for(&wear),

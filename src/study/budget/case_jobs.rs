@@ -282,6 +282,7 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         };
         terms.extend(super::helical::budget_term(
             case,
+            matches!(job, Job::Wear { .. } | Job::Run),
             (
                 w.dynamic_modes * c.u_d + life(true),
                 w.quasi_modes * c.u_q + life(false),
@@ -458,8 +459,8 @@ fn record_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
 /// Most bytes a checkpoint of `mode` can hold for `case`, so that a checkpoint file is
 /// never read beyond what the run could have written: 16 times the estimated number of
 /// updates (the estimate takes the nominal load; a run's actual updates stay well within
-/// that margin) of (4 G + 4 S_d) numbers (a helical pair's wear maps add 4 N G,
-/// `super::helical::record_numbers`) at `CHECKPOINT_BYTES_PER_NUMBER` bytes, and at
+/// that margin) of (4 G + 4 S_d) numbers (a helical pair's wear maps add 4 N G, its
+/// per-tooth maps 2 (z1 + z2) N G, `super::helical::wear_record_numbers`) at `CHECKPOINT_BYTES_PER_NUMBER` bytes, and at
 /// least 64 MiB.
 pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
     let dynamic = mode == WearMode::Dynamic;
@@ -478,7 +479,7 @@ pub fn max_checkpoint_bytes(case: &Case, mode: WearMode) -> u64 {
     let s_dyn = dynamic_steps_per_period(&case.numerics);
     let numbers = 4.0 * case.wear.points_per_profile as f64
         + 4.0 * s_dyn
-        + super::helical::record_numbers(case);
+        + super::helical::wear_record_numbers(case);
     let bytes = 16.0 * updates * numbers * CHECKPOINT_BYTES_PER_NUMBER;
     bytes.clamp(64.0 * 1024.0 * 1024.0, 1e15) as u64
 }

@@ -3,7 +3,8 @@
 //! contacts per tooth pair in the transverse section at every sample of one period, each
 //! with its Hertz contact, Xu's coefficient and its place in the slice's sorted history;
 //! every record holds a wear map and an increment map of N profiles per flank, and the
-//! checkpoints write them.
+//! checkpoints write them. Per-tooth inputs (docs/MODEL.md 11.13) spread every mesh
+//! period of the excitation, and each record holds every tooth's N profiles.
 
 use crate::config::case::Case;
 use crate::geometry::helical::HelicalPair;
@@ -72,15 +73,54 @@ pub fn record_numbers(case: &Case) -> f64 {
     slices_and_pairs(case).map_or(0.0, |(n, _)| checked_count(&[4, n as usize, points]))
 }
 
+/// Whether `gearwear wear` and `gearwear run` wear `case`'s helical teeth tooth by tooth
+/// and slice by slice (docs/MODEL.md 11.13): per-tooth inputs at one operating point (the
+/// other wear studies refuse them).
+fn teeth_resolved(case: &Case) -> bool {
+    crate::study::helical_teeth::has_tooth_inputs(case) && case.load_spectrum.is_none()
+}
+
+/// [`record_numbers`] of `gearwear wear` and `gearwear run`: with per-tooth inputs at one
+/// operating point every tooth's face slices, (z1 + z2) N profiles of G points in the wear
+/// and in the increment (docs/MODEL.md 11.13).
+pub fn wear_record_numbers(case: &Case) -> f64 {
+    let Some((n, _)) = slices_and_pairs(case).filter(|_| teeth_resolved(case)) else {
+        return record_numbers(case);
+    };
+    let points = usize::try_from(case.wear.points_per_profile.max(0)).unwrap_or(usize::MAX);
+    let teeth = [case.gear.teeth_pinion, case.gear.teeth_gear]
+        .iter()
+        .map(|z| usize::try_from((*z).max(1)).unwrap_or(usize::MAX))
+        .try_fold(0_usize, |a, b| a.checked_add(b))
+        .unwrap_or(usize::MAX);
+    checked_count(&[2, teeth, n as usize, points])
+}
+
+/// How many times one period's slice contacts an update of `gearwear wear` or `gearwear
+/// run` spreads: 1 for identical teeth (the last mesh period); with per-tooth inputs the
+/// excitation's P mesh periods (`super::teeth::excitation_periods_of`), each contact
+/// computed twice (the mesh force's share over every line, then each engagement's
+/// slices, `study::helical_tooth_wear`).
+fn contact_passes(case: &Case) -> f64 {
+    if teeth_resolved(case) {
+        2.0 * super::teeth::excitation_periods_of(case) as f64
+    } else {
+        1.0
+    }
+}
+
 /// The helical wear's term: `updates` = (dynamic, quasi-static) updates over every mode,
 /// `records` the records kept, `samples` = (dynamic, quasi-static) samples of a period,
 /// `checkpoint` the bytes per number written and the disk's rate (bytes/s); None for a
 /// spur pair. Under a load spectrum (docs/MODEL.md 11.7) `updates` and `records` count
 /// every bin's (each bin's response spreads its own slice contacts), and the bins of an
 /// update respond together, so B times one bin's contacts are in flight at once (B N
-/// ceil(epsilon_alpha) counted in checked integer arithmetic).
+/// ceil(epsilon_alpha) counted in checked integer arithmetic). `wear_or_run`: the job is
+/// `gearwear wear` or `gearwear run`, which wear per-tooth inputs tooth by tooth
+/// ([`wear_record_numbers`]; a wear sweep refuses them).
 pub fn budget_term(
     case: &Case,
+    wear_or_run: bool,
     updates: (f64, f64),
     records: f64,
     samples: (f64, f64),
@@ -88,14 +128,24 @@ pub fn budget_term(
 ) -> Option<Term> {
     let per_dyn = slice_contacts_per_update(case, samples.0)?;
     let per_quasi = slice_contacts_per_update(case, samples.1)?;
-    let contacts = updates.0 * per_dyn + updates.1 * per_quasi;
+    let passes = if wear_or_run {
+        contact_passes(case)
+    } else {
+        1.0
+    };
+    let contacts = (updates.0 * per_dyn + updates.1 * per_quasi) * passes;
     let in_flight = [(updates.0, per_dyn), (updates.1, per_quasi)]
         .iter()
         .filter(|(u, _)| *u > 0.0)
         .map(|(_, c)| c)
         .sum::<f64>()
         * checked_count(&[bins_of(case)]);
-    let numbers = records * record_numbers(case);
+    let numbers = records
+        * if wear_or_run {
+            wear_record_numbers(case)
+        } else {
+            record_numbers(case)
+        };
     Some(Term {
         what: "the helical pair's wear per slice (contacts, wear maps, their checkpoints)",
         seconds: contacts * SECONDS_PER_SLICE_CONTACT + numbers * checkpoint.0 / checkpoint.1,

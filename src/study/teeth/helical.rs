@@ -30,6 +30,7 @@
 use super::checks::{geometry_problems, upper_mm};
 use super::errors::gear_errors;
 use super::helical_tip::{line_limit, max_removed_height_m, TipCut};
+use super::line_wear::{LineCell, LineTeeth, SliceFault, ToothSlices};
 use super::{apply_fault, flanks_of, ToothInputs};
 use crate::config::case::{Case, Member};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank};
@@ -79,23 +80,46 @@ impl LineSamples {
             path: (t.rho_start_m, t.rho_end_m),
         }
     }
-}
 
-/// One fault of a tooth on the slice: its tables on the wear grid (compliance, the pit's
-/// gap in `removed_m`), which face slices it covers, and a broken tip's cut
-/// (docs/MODEL.md 11.12).
-struct SliceFault {
-    flank: ToothFlank,
-    covers: Vec<bool>,
-    cut: Option<TipCut>,
-}
+    /// What the teeth's wear per face slice needs (`line_wear::LineTeeth`): the slices of
+    /// `s` on the wear grid `grid`, with each tooth's sections (pinion, gear).
+    fn teeth(
+        &self,
+        s: &SliceMeshStiffness,
+        grid: &ProfileGrid,
+        pinion: Vec<ToothSlices>,
+        gear: Vec<ToothSlices>,
+    ) -> LineTeeth {
+        LineTeeth {
+            slices: s.slices(),
+            cos_base_helix: s.pair().base_helix_angle_rad.cos(),
+            grid: grid.clone(),
+            cells: self.cells(),
+            offsets: self.offsets.clone(),
+            path: self.path,
+            pinion,
+            gear,
+        }
+    }
 
-impl SliceFault {
-    /// Whether this fault's broken tip takes face slice `j` at pinion rho1 `r_m` out of
-    /// contact.
-    #[inline]
-    fn cuts(&self, j: usize, r_m: f64) -> bool {
-        self.covers[j] && self.cut.is_some_and(|c| c.cuts(r_m))
+    /// The line's slices at each sample for its wear (`line_wear::LineCell`): those on the
+    /// path, or, where none is, the nearest one at the path's end.
+    fn cells(&self) -> Vec<LineCell> {
+        let (start, end) = self.path;
+        let off_path = |r: f64| (start - r).max(r - end);
+        (self.slices.iter().enumerate())
+            .map(|(p, line)| {
+                if !line.is_empty() {
+                    return LineCell::On(line.clone());
+                }
+                let rho = self.rho_start_m + p as f64 * self.spacing_m;
+                let nearest = (self.offsets.iter())
+                    .min_by(|a, b| off_path(rho + a.1).total_cmp(&off_path(rho + b.1)));
+                nearest.map_or(LineCell::On(Vec::new()), |&(j, o)| {
+                    LineCell::Nearest(j, (rho + o).clamp(start, end))
+                })
+            })
+            .collect()
     }
 }
 
@@ -106,6 +130,31 @@ fn covered_slices(f: &crate::config::case::ToothFault, s: &SliceMeshStiffness) -
     s.positions_m()
         .iter()
         .map(|y| (lo..=hi).contains(y))
+        .collect()
+}
+
+/// The faults of `member`'s tooth `tooth` of `case` on the slices of `s`, each on the wear
+/// grid `grid` with the face slices it covers and a broken tip's cut.
+fn slice_faults(
+    case: &Case,
+    s: &SliceMeshStiffness,
+    grid: &ProfileGrid,
+    (member, tooth): (Member, usize),
+) -> Vec<SliceFault> {
+    let side = super::sides::side(member);
+    let own = match side {
+        Side::Pinion => &grid.rho_pinion_m,
+        Side::Gear => &grid.rho_gear_m,
+    };
+    (case.fault.iter())
+        .filter(|x| x.gear == member && x.tooth == tooth && x.changes_tooth())
+        .map(|x| {
+            let mut flank = ToothFlank::perfect(grid.len());
+            apply_fault(&mut flank, x, &s.pair().transverse, s.slice(), side, own);
+            let covers = covered_slices(x, s);
+            let cut = TipCut::of(&flank, side);
+            SliceFault { flank, covers, cut }
+        })
         .collect()
 }
 
@@ -166,36 +215,32 @@ impl ToothInputs {
         healthy.fault.clear();
         let samples = LineSamples::of(s, grid);
         let mut problems = Vec::new();
-        let mut lines = |member: Member, e| -> Vec<ToothFlank> {
+        let mut lines = |member: Member, e| -> (Vec<ToothFlank>, Vec<ToothSlices>) {
             let side = super::sides::side(member);
-            let own = match side {
-                Side::Pinion => &grid.rho_pinion_m,
-                Side::Gear => &grid.rho_gear_m,
-            };
             flanks_of(&healthy, t, slice, grid, member, e)
                 .into_iter()
                 .enumerate()
                 .map(|(tooth, f)| {
-                    let faults: Vec<SliceFault> = case
-                        .fault
-                        .iter()
-                        .filter(|x| x.gear == member && x.tooth == tooth && x.changes_tooth())
-                        .map(|x| {
-                            let mut flank = ToothFlank::perfect(grid.len());
-                            apply_fault(&mut flank, x, t, slice, side, own);
-                            let covers = covered_slices(x, s);
-                            let cut = TipCut::of(&flank, side);
-                            SliceFault { flank, covers, cut }
-                        })
-                        .collect();
-                    line_flank(&f, &faults, grid, &samples, side).unwrap_or_else(|()| {
-                        problems.extend(resumed_contact_problems(case, s, member, tooth));
-                        f
-                    })
+                    let faults = slice_faults(case, s, grid, (member, tooth));
+                    let flat = f.removed_m.iter().all(|x| *x == 0.0);
+                    let sections = ToothSlices {
+                        removed_m: if flat {
+                            Vec::new()
+                        } else {
+                            f.removed_m.clone()
+                        },
+                        faults,
+                    };
+                    let line =
+                        line_flank(&f, &sections, grid, &samples, side).unwrap_or_else(|()| {
+                            problems.extend(resumed_contact_problems(case, s, member, tooth));
+                            f
+                        });
+                    (line, sections)
                 })
-                .collect()
+                .unzip()
         };
-        let (pinion, gear) = (
+        let ((pinion, pinion_sections), (gear, gear_sections)) = (
             lines(Member::Pinion, &errors[0]),
             lines(Member::Gear, &errors[1]),
         );
@@ -228,7 +273,12 @@ impl ToothInputs {
             rho_start_m: samples.rho_start_m,
             spacing_m: samples.spacing_m,
             worn: None,
-            lines: true,
+            lines: Some(Box::new(samples.teeth(
+                s,
+                grid,
+                pinion_sections,
+                gear_sections,
+            ))),
         };
         let n = samples.slices.len();
         let perfect = |f: &[ToothFlank]| f.iter().all(|t| t == &ToothFlank::perfect(n));
@@ -268,8 +318,9 @@ fn resumed_contact_problems(
         .collect()
 }
 
-/// A tooth's flank as its contact line on the line pair (module docs): `f` its errors on
-/// the wear grid, `faults` its faults with the face slices they cover, `side` its gear.
+/// A tooth's flank as its contact line on the line pair (module docs): `f` its flank on
+/// the wear grid (its position error kept), `sections` its errors and its faults with the
+/// face slices they cover (`line_wear::ToothSlices`), `side` its gear.
 /// A broken tip's covered slices beyond its cut carry nothing (docs/MODEL.md 11.12): the
 /// line's stiffness and gap are its uncut slices', their share of the line on the path
 /// is its width lost, and past the line's limit (`helical_tip::line_limit`) the tooth
@@ -277,14 +328,14 @@ fn resumed_contact_problems(
 /// stop touching and touch again.
 fn line_flank(
     f: &ToothFlank,
-    faults: &[SliceFault],
+    sections: &ToothSlices,
     grid: &ProfileGrid,
     samples: &LineSamples,
     side: Side,
 ) -> Result<ToothFlank, ()> {
     let n = samples.slices.len();
-    let flat = f.removed_m.iter().all(|x| *x == 0.0);
-    if faults.is_empty() && flat {
+    let faults = &sections.faults;
+    if faults.is_empty() && sections.removed_m.is_empty() {
         return Ok(ToothFlank {
             position_m: f.position_m,
             ..ToothFlank::perfect(n)
@@ -319,22 +370,10 @@ fn line_flank(
         let (mut k, mut kf, mut kf_gap, mut cut) = (0.0, 0.0, 0.0, 0usize);
         for &(j, r, ki) in line {
             k += ki;
-            if faults.iter().any(|x| x.cuts(j, r)) {
+            let Some((gap, c)) = sections.at(grid, j, r) else {
                 cut += 1;
                 continue;
-            }
-            let mut gap = if flat {
-                0.0
-            } else {
-                grid.interpolate(&f.removed_m, r)
             };
-            let mut c = 0.0;
-            for x in faults.iter().filter(|x| x.covers[j]) {
-                if let Some(t) = &x.flank.compliance_m_per_n {
-                    c += grid.interpolate(t, r);
-                }
-                gap += grid.interpolate(&x.flank.removed_m, r);
-            }
             let kfi = if c == 0.0 { ki } else { 1.0 / (1.0 / ki + c) };
             kf += kfi;
             kf_gap += kfi * gap;
