@@ -173,34 +173,16 @@ fn stiffness_gives_lin_and_parkers_natural_frequencies_for_a_lumped_set() {
 
 #[test]
 fn studies_on_the_dynamic_model_refuse_a_planetary_case() {
-    let d = tempfile::tempdir().unwrap();
-    let case = write_case(d.path(), SET);
     // `gearwear dynamics`, `gearwear signals`, `gearwear wear`, `gearwear run` and
-    // `gearwear sweep --run dynamics` take a planetary set (tests/planetary_dynamics_cli.rs,
-    // tests/planetary_signals_cli.rs, tests/planetary_wear.rs, tests/planetary_run.rs,
-    // tests/planetary_sweep.rs); every other study on the dynamic model in
+    // `gearwear sweep` (of dynamics and of wear) take a planetary set
+    // (tests/planetary_dynamics_cli.rs, tests/planetary_signals_cli.rs,
+    // tests/planetary_wear.rs, tests/planetary_run.rs, tests/planetary_sweep.rs,
+    // tests/planetary_wear_sweep.rs); every other study on the dynamic model in
     // `studies_on_the_dynamic_model` does.
     let taken = ["dynamics", "signals", "wear", "run", "sweep"];
     for cmd in studies_on_the_dynamic_model() {
         assert!(taken.contains(&cmd[0]), "{cmd:?}: is it refused?");
     }
-    // A wear sweep of a set is not built yet: refused before any case runs.
-    rejected(
-        &[
-            "sweep",
-            "--run",
-            "wear",
-            "--vary",
-            "operating.input_speed_hz=20,30",
-            "--config",
-            &case,
-        ],
-        &[
-            "[planetary]",
-            "not built yet",
-            "a sweep of dynamics takes a set",
-        ],
-    );
 }
 
 #[test]

@@ -87,6 +87,9 @@ pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, 
     if run != SweepRun::Wear || case.load_spectrum.is_none() {
         return crate::study::sweep::run_case(case, run);
     }
+    if case.planetary.is_some() {
+        return planetary_sweep_case(case);
+    }
     let sm = SpectrumModel::dynamics_from_case(case).map_err(CaseError::Model)?;
     let starts = vec![
         SpectrumRun::new(WearMode::Dynamic, sm.shares.clone()),
@@ -110,4 +113,35 @@ pub(crate) fn run_sweep_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, 
     let mut warnings = sm.warnings();
     warnings.extend(sm.axial_shift_warnings());
     Ok(CaseOutcome { results, warnings })
+}
+
+/// A wear sweep's case of a planetary set under its spectrum: the spectrum's loop of the
+/// set (`super::planetary`, as `gearwear wear` runs it) in both modes, each read as one
+/// run of the set at the monitoring bin (`combined_planetary_run`), reduced to the set's
+/// wear row (`study::sweep::planetary_wear_row`; docs/MODEL.md 12.17).
+fn planetary_sweep_case(case: &Case) -> Result<CaseOutcome, CaseError> {
+    use super::planetary::{
+        combined_planetary_run, run_planetary_spectrum_modes, PlanetarySpectrum,
+        PlanetarySpectrumRun,
+    };
+    use crate::study::sweep::planetary_wear_row::{planetary_wear_row, sweep_wear_model};
+    let ps = PlanetarySpectrum::from_case(case).map_err(CaseError::Model)?;
+    sweep_wear_model(ps.reference().clone()).map_err(CaseError::Model)?;
+    let starts = [WearMode::Dynamic, WearMode::QuasiStatic]
+        .map(|m| PlanetarySpectrumRun::new(m, ps.shares.clone()))
+        .to_vec();
+    let runs =
+        run_planetary_spectrum_modes(&ps, starts, &|_, _| Ok(())).map_err(CaseError::Solve)?;
+    for r in &runs {
+        crate::study::sweep::case_run::numerical_stop(r.mode, r.stopped.as_ref())?;
+    }
+    let (d, q) = (
+        combined_planetary_run(&runs[0], ps.monitoring),
+        combined_planetary_run(&runs[1], ps.monitoring),
+    );
+    let row = planetary_wear_row(ps.reference(), &d, &q);
+    Ok(CaseOutcome {
+        results: crate::study::sweep::CaseResults::with_planetary_wear(row),
+        warnings: ps.reference().dynamics.study.warnings.clone(),
+    })
 }

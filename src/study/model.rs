@@ -197,7 +197,7 @@ pub fn helical_train_refusal(case: &Case) -> Option<String> {
 /// set (`gearwear dynamics`, `signals`, `wear` and `run` take it by the planetary
 /// studies before reaching here). Every study on this model refuses it.
 fn planetary_refusal() -> String {
-    "`[planetary]` is a planetary set: this study is not yet built for it, so it would give the result of the `[gear]` pair instead; only `gearwear stiffness` (its meshes' stiffness, phases, frequencies and the lumped model's natural frequencies), `gearwear dynamics`, `gearwear signals` (a sensor on the fixed ring), `gearwear wear` (every member's wear), `gearwear dataset` (run-to-failure records of the ring sensor), `gearwear run` (those studies with a report) and `gearwear sweep` of dynamics (each mesh's force and each planet's load sharing per case) take a planetary set so far".to_string()
+    "`[planetary]` is a planetary set: this study is not yet built for it, so it would give the result of the `[gear]` pair instead; only `gearwear stiffness` (its meshes' stiffness, phases, frequencies and the lumped model's natural frequencies), `gearwear dynamics`, `gearwear signals` (a sensor on the fixed ring), `gearwear wear` (every member's wear), `gearwear dataset` (run-to-failure records of the ring sensor), `gearwear run` (those studies with a report) and `gearwear sweep` of dynamics (each mesh's force and each planet's load sharing per case) and of wear (every member flank's wear per case, at one operating point or under a `[load_spectrum]`) take a planetary set so far".to_string()
 }
 
 /// The studies built on [`Model::from_case`] that wear a gear train beyond one operating

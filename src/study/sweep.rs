@@ -6,7 +6,7 @@
 //! can skip it), [`continuation`] (a one-axis sweep run in order, each point warm-started
 //! from the previous one), [`mesh_row`] (the columns of each mesh of a gear train),
 //! [`helical_row`] (the columns a helical pair adds), [`planetary_row`] (those of each
-//! mesh and planet of a planetary set),
+//! mesh and planet of a planetary set; [`planetary_wear_row`] its wear row),
 //! [`table`] (rows, CSV, merge of shards), [`resonance`] (speeds
 //! where a mesh harmonic meets a damped mesh pole). The sweep itself (cases resolved and checked,
 //! run in parallel or along branches, in memory or to a folder with its case records,
@@ -19,6 +19,7 @@ pub mod helical_row;
 pub mod mesh_row;
 pub mod plan;
 pub mod planetary_row;
+pub mod planetary_wear_row;
 pub mod resonance;
 mod row;
 pub mod table;

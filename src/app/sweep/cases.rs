@@ -107,7 +107,7 @@ pub fn resolve(
         .iter()
         .map(|p| (format!("case {} ({})", p.id, describe(plan, p)), &p.case))
         .collect();
-    super::planetary::check_planetary(base, &named, run)?;
+    super::planetary::check_planetary(base, &named)?;
     let over: Vec<Problem> = planned
         .iter()
         .filter_map(|p| {
@@ -160,11 +160,11 @@ pub fn describe(plan: &SweepPlan, p: &Planned) -> String {
 }
 
 /// The models of the cases still to run build (geometry, settings), or every problem.
-pub fn check_models(plan: &SweepPlan, pending: &[&Planned]) -> Result<(), JobError> {
+pub fn check_models(plan: &SweepPlan, pending: &[&Planned], run: SweepRun) -> Result<(), JobError> {
     let problems: Vec<Problem> = pending
         .par_iter()
         .filter_map(|p| {
-            super::planetary::model_error(&p.case)
+            super::planetary::model_error(&p.case, run)
                 .map(|e| Problem::new(format!("case {} ({}): {e}", p.id, describe(plan, p))))
         })
         .collect();

@@ -410,7 +410,7 @@ impl Job for SweepJob {
                 .collect();
             verify_finished(d, &pairs, self.run)?;
         }
-        check_models(plan, &pending)?;
+        check_models(plan, &pending, self.run)?;
         let stem = self.shard.stem();
         let out = publish::open_if(dir, Some(&stem), self.name(), self.replace)?;
         let cases = out.as_ref().map(|o| o.state_folder("cases")).transpose()?;

@@ -1,14 +1,17 @@
-//! A sweep of planetary sets (`[planetary]`): which runs take one and the checks before
-//! any case runs. A dynamics sweep (`--run dynamics`) takes a set: its row holds each
-//! sun-planet and ring-planet mesh's force and dynamic factor and each planet's load
-//! sharing factor (`study::sweep::planetary_row`), so every case must have the base case's
-//! number of planets (refused otherwise, naming both). A wear sweep and a continuation
-//! are not built for a set yet: refused before any case runs.
+//! A sweep of planetary sets (`[planetary]`): the checks before any case runs. A dynamics
+//! sweep (`--run dynamics`) takes a set: its row holds each sun-planet and ring-planet
+//! mesh's force and dynamic factor and each planet's load sharing factor
+//! (`study::sweep::planetary_row`); a wear sweep (`--run wear`) runs the set's wear study
+//! in both modes and adds every member flank's wear (`study::sweep::planetary_wear_row`).
+//! Every case must have the base case's number of planets (refused otherwise, naming
+//! both). A continuation is not built for a set yet: refused before any case runs.
 
 use super::super::JobError;
 use crate::config::Case;
 use crate::remedy::{Arg, Problem, Words};
 use crate::study::planetary_dynamics::PlanetaryDynamics;
+use crate::study::planetary_wear::PlanetaryWearModel;
+use crate::study::sweep::planetary_wear_row::sweep_wear_model;
 use crate::study::sweep::SweepRun;
 use crate::study::Model;
 
@@ -19,27 +22,13 @@ pub fn planets_of(case: &Case) -> usize {
         .map_or(0, |p| usize::try_from(p.planets).unwrap_or(0))
 }
 
-/// Refuse a planetary sweep other than `--run dynamics`, and a case whose number of
-/// planets is not the base case's (naming both), before any case runs. `cases`: each
-/// planned case with its name in messages (`case ID (KEY=VALUE, ...)`).
-pub fn check_planetary(
-    base: &Case,
-    cases: &[(String, &Case)],
-    run: SweepRun,
-) -> Result<(), JobError> {
+/// Refuse a case whose number of planets is not the base case's (naming both), before
+/// any case runs. `cases`: each planned case with its name in messages
+/// (`case ID (KEY=VALUE, ...)`).
+pub fn check_planetary(base: &Case, cases: &[(String, &Case)]) -> Result<(), JobError> {
     let n = planets_of(base);
     if n == 0 && cases.iter().all(|(_, c)| c.planetary.is_none()) {
         return Ok(());
-    }
-    if run != SweepRun::Dynamics {
-        return Err(Problem::given(
-            Arg::SweepRun,
-            run.name(),
-            Words::new().text(
-                "this case is a planetary set ([planetary]): its wear sweep is not built yet; a sweep of dynamics takes a set (each mesh's force and dynamic factor, each planet's load sharing) and `gearwear wear` wears one set",
-            ),
-        )
-        .into());
     }
     let Some((name, c)) = cases.iter().find(|(_, c)| planets_of(c) != n) else {
         return Ok(());
@@ -65,13 +54,18 @@ pub fn refuse_continuation(base: &Case) -> Result<(), JobError> {
     .into())
 }
 
-/// Why the model of `case` cannot be built (the set's dynamic model for a planetary
-/// case, else the pair's or train's), or `None`.
-pub fn model_error(case: &Case) -> Option<String> {
+/// Why the model of `case` cannot be built for `run` (the set's dynamic model for a
+/// planetary case, its wear model with both modes for a wear sweep; else the pair's or
+/// train's), or `None`.
+pub fn model_error(case: &Case, run: SweepRun) -> Option<String> {
     if case.planetary.is_some() {
-        return PlanetaryDynamics::from_case(case)
-            .err()
-            .map(|e| e.to_string());
+        return match run {
+            SweepRun::Dynamics => PlanetaryDynamics::from_case(case).err(),
+            SweepRun::Wear => PlanetaryWearModel::from_case(case)
+                .and_then(sweep_wear_model)
+                .err(),
+        }
+        .map(|e| e.to_string());
     }
     Model::dynamics_from_case(case).err().map(|e| e.to_string())
 }

@@ -83,11 +83,14 @@ pub fn verify_finished(
         .into_par_iter()
         .filter_map(|i| {
             let (p, rec) = done[i];
-            verify_record(&p.case, run, rec).err().map(|e| {
-                Problem::new(format!("{}: {e}", case_path(dir, p.id).display())).remedy(
-                    Remedy::new("delete it to recompute that case").path(case_path(dir, p.id)),
-                )
-            })
+            // Recomputed as the sweep ran it (a wear case under its spectrum too).
+            verify_record(&p.case, run, rec, &crate::duty::study::run_sweep_case)
+                .err()
+                .map(|e| {
+                    Problem::new(format!("{}: {e}", case_path(dir, p.id).display())).remedy(
+                        Remedy::new("delete it to recompute that case").path(case_path(dir, p.id)),
+                    )
+                })
         })
         .collect();
     if problems.is_empty() {

@@ -209,8 +209,16 @@ struct Counts {
 }
 
 /// Estimate the cost of `job` on `case` (validated). Cheap: the geometry and a few dozen
-/// Hertz contacts, no model.
+/// Hertz contacts, no model (but a planetary set's wear sweep case: its set's model and
+/// first quasi-static response, milliseconds, `planetary::sweep_wear_estimate`).
 pub fn estimate(case: &Case, job: Job) -> Estimate {
+    // A planetary set's wear sweep case runs the set's own wear study (its model is built
+    // here: milliseconds, one quasi-static response for its first wear rate).
+    if job == Job::SweepCase(SweepRun::Wear) {
+        if let Some(e) = super::planetary::sweep_wear_estimate(case) {
+            return e;
+        }
+    }
     let periods = Periods::of(case);
     let bins = case
         .load_spectrum

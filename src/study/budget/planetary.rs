@@ -395,3 +395,28 @@ pub fn fault_term(case: &crate::config::Case, evals: f64, kept: f64, s_dyn: f64)
         ],
     })
 }
+
+/// The cost of a wear sweep's case of a planetary set (`study::sweep::planetary_wear_row`,
+/// docs/MODEL.md 12.17): the set's wear study in both modes, [`estimate_planetary_wear`],
+/// or under its `[load_spectrum]` [`estimate_planetary_spectrum_wear`] over every bin's
+/// set (`Case::at_bin`). None for a case without a set, or whose set (or a bin's) has no
+/// model: the sweep names that problem itself before any case runs.
+pub fn sweep_wear_estimate(case: &crate::config::Case) -> Option<Estimate> {
+    case.planetary.as_ref()?;
+    let modes = [WearMode::Dynamic, WearMode::QuasiStatic];
+    match &case.load_spectrum {
+        None => {
+            let model = PlanetaryWearModel::from_case(case).ok()?;
+            Some(estimate_planetary_wear(&model, &case.wear, &modes))
+        }
+        Some(s) => {
+            let models = (0..s.bins.len())
+                .map(|i| PlanetaryWearModel::from_case(&case.at_bin(i)).ok())
+                .collect::<Option<Vec<_>>>()?;
+            let shares: Vec<f64> = s.bins.iter().map(|b| b.share).collect();
+            Some(estimate_planetary_spectrum_wear(
+                &models, &shares, &case.wear, &modes,
+            ))
+        }
+    }
+}

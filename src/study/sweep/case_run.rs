@@ -6,6 +6,7 @@ use super::mesh_row::{MeshRow, MeshWear, TrainWearEnd, MESH_COLUMNS};
 use super::planetary_row::{
     planetary_columns, run_planetary_dynamics, PlanetaryRow, PlanetaryRunError,
 };
+use super::planetary_wear_row::{planetary_wear_row, run_planetary_wear_modes, PlanetaryWearRow};
 pub use super::row::{DynamicsRow, SweepRun, WearEnd};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
@@ -32,8 +33,9 @@ pub struct CaseResults {
     /// What a helical pair adds (`super::helical_row`); also the empty columns of a spur
     /// case in a table that has them.
     pub helical: Option<HelicalRow>,
-    /// Each mesh's force and each planet's load sharing (a `dynamics` sweep of a
-    /// planetary set, [`super::planetary_row`]).
+    /// Each mesh's force and each planet's load sharing (a sweep of a planetary set,
+    /// [`super::planetary_row`]), and in a `wear` sweep every member flank's wear
+    /// ([`super::planetary_wear_row`]).
     pub planetary: Option<PlanetaryRow>,
 }
 
@@ -59,6 +61,14 @@ impl CaseResults {
         }
     }
 
+    /// A planetary set's wear row ([`super::planetary_wear_row`]).
+    pub fn with_planetary_wear(row: PlanetaryWearRow) -> Self {
+        Self {
+            wear: Some(row.wear),
+            ..Self::with_planetary(row.dynamics, row.set)
+        }
+    }
+
     /// The names of [`CaseResults::values`]: the run's columns, then each mesh's (a
     /// train's), a helical pair's or the set's (a planetary set's).
     pub fn columns(&self) -> Vec<String> {
@@ -67,7 +77,7 @@ impl CaseResults {
             c.extend(helical_columns(self.wear.is_some()));
         }
         if let Some(p) = &self.planetary {
-            c.extend(planetary_columns(p.planets()));
+            c.extend(planetary_columns(p.planets(), p.has_wear()));
         }
         c
     }
@@ -103,21 +113,26 @@ impl CaseResults {
     }
 
     /// From numbers in the column order of `run` with `stages` train meshes and a set of
-    /// `planets` planets (0: none; only a dynamics row of a single set has them); `None`
-    /// when their count is not it.
+    /// `planets` planets (0: none; only a row of a single set has them, with the flanks'
+    /// wear in a wear row); `None` when their count is not it.
     pub fn from_values_of(run: SweepRun, stages: usize, planets: usize, v: &[f64]) -> Option<Self> {
         if planets == 0 {
             return Self::from_values(run, stages, v);
         }
         let own = run.columns().len();
-        if run != SweepRun::Dynamics || stages != 0 || v.len() < own {
+        if stages != 0 || v.len() < own {
             return None;
         }
-        let row = PlanetaryRow::from_values(planets, &v[own..])?;
-        Some(Self::with_planetary(
-            DynamicsRow::from_values(&v[..own]),
-            row,
-        ))
+        let wear = run == SweepRun::Wear;
+        let row = PlanetaryRow::from_values(planets, wear, &v[own..])?;
+        let mut r = Self::with_planetary(DynamicsRow::from_values(&v[..9]), row);
+        if wear {
+            r.wear = Some([
+                WearEnd::from_values(&v[9..13]),
+                WearEnd::from_values(&v[13..17]),
+            ]);
+        }
+        Some(r)
     }
 
     /// From numbers in the column order of `run` with `stages` train meshes (0: a single
@@ -215,12 +230,28 @@ fn planetary_outcome(case: &Case) -> Result<CaseOutcome, CaseError> {
     })
 }
 
+/// A planetary set's wear row ([`super::planetary_wear_row`]): its wear study in both
+/// modes, as `gearwear wear` runs it, with the model's warnings.
+fn planetary_wear_outcome(case: &Case) -> Result<CaseOutcome, CaseError> {
+    let (model, [d, q]) = run_planetary_wear_modes(case).map_err(|e| match e {
+        PlanetaryRunError::Model(m) => CaseError::Model(m),
+        PlanetaryRunError::Solve(s) => CaseError::Solve(s),
+    })?;
+    for r in [&d, &q] {
+        numerical_stop(r.mode, r.stopped.as_ref())?;
+    }
+    Ok(CaseOutcome {
+        results: CaseResults::with_planetary_wear(planetary_wear_row(&model, &d, &q)),
+        warnings: model.dynamics.study.warnings.clone(),
+    })
+}
+
 /// Build the model of `case` and run it.
 pub fn run_case(case: &Case, run: SweepRun) -> Result<CaseOutcome, CaseError> {
     if case.planetary.is_some() {
         return match run {
             SweepRun::Dynamics => planetary_outcome(case),
-            SweepRun::Wear => Err(CaseError::Model(super::planetary_row::wear_refusal())),
+            SweepRun::Wear => planetary_wear_outcome(case),
         };
     }
     match run {

@@ -1,8 +1,9 @@
-//! The columns of a planetary set (`[planetary]`) in a dynamics sweep row: each sun-planet
-//! and ring-planet mesh's mean and largest force and dynamic factor, then each planet's
-//! load sharing factor, after the single pair's columns (which, for a set, are its first
+//! The columns of a planetary set (`[planetary]`) in a sweep row: each sun-planet and
+//! ring-planet mesh's mean and largest force and dynamic factor, then each planet's load
+//! sharing factor, after the single pair's columns (which, for a set, are its first
 //! sun-planet mesh's force columns, the others empty: the set's summary has no DTE or
-//! pinion velocity).
+//! pinion velocity); a wear row then adds every member flank's deepest wear at the end of
+//! each mode's run ([`planetary_wear_columns`], `super::planetary_wear_row`).
 //!
 //! The numbers are those of `gearwear dynamics`' summary.json on the set
 //! (`report::dynamics_planetary`): `meshes[j].mean_force_n`, `meshes[j].max_force_n`,
@@ -30,6 +31,9 @@ pub struct PlanetaryRow {
     pub meshes: Vec<[f64; 3]>,
     /// Each planet's load sharing factor (its sun mesh's mean over the planets' mean).
     pub load_sharing: Vec<f64>,
+    /// A wear row's: every member flank's deepest wear at the end of the dynamic and the
+    /// quasi-static run, µm, in [`flank_stems`] order; empty in a dynamics row.
+    pub wear: Vec<[f64; 2]>,
 }
 
 impl PlanetaryRow {
@@ -38,18 +42,26 @@ impl PlanetaryRow {
         self.load_sharing.len()
     }
 
+    /// Whether the row is a wear row's (it has the flanks' wear columns).
+    pub fn has_wear(&self) -> bool {
+        !self.wear.is_empty()
+    }
+
     /// The numbers in [`planetary_columns`] order.
     pub fn values(&self) -> Vec<f64> {
         let mut v: Vec<f64> = self.meshes.iter().flatten().copied().collect();
         v.extend(&self.load_sharing);
+        v.extend(self.wear.iter().flatten());
         v
     }
 
-    /// From numbers in [`planetary_columns`] order of `planets` planets; `None` when their
-    /// count is not it.
-    pub fn from_values(planets: usize, v: &[f64]) -> Option<Self> {
+    /// From numbers in [`planetary_columns`] order of `planets` planets (with the flanks'
+    /// wear columns when `wear`); `None` when their count is not it.
+    pub fn from_values(planets: usize, wear: bool, v: &[f64]) -> Option<Self> {
         let n = PLANETARY_MESH_COLUMNS.len();
-        if planets == 0 || v.len() != 2 * planets * n + planets {
+        let own = 2 * planets * n + planets;
+        let flanks = if wear { flank_stems(planets).len() } else { 0 };
+        if planets == 0 || v.len() != own + 2 * flanks {
             return None;
         }
         Some(Self {
@@ -57,9 +69,37 @@ impl PlanetaryRow {
                 .chunks_exact(n)
                 .map(|c| [c[0], c[1], c[2]])
                 .collect(),
-            load_sharing: v[2 * planets * n..].to_vec(),
+            load_sharing: v[2 * planets * n..own].to_vec(),
+            wear: v[own..].chunks_exact(2).map(|c| [c[0], c[1]]).collect(),
         })
     }
+}
+
+/// Names of a member flank's wear columns after its [`flank_stems`] prefix: its deepest
+/// wear at the end of the dynamic and of the quasi-static run, µm (as
+/// `members[..].final.MODE.flanks.FLANK.max_wear_um` of `gearwear wear`'s summary.json).
+pub const FLANK_WEAR_COLUMNS: [&str; 2] = ["wear_max_dynamic_um", "wear_max_quasi_static_um"];
+
+/// The member flanks of a set of `planets` planets as column prefixes, in the order of
+/// `study::planetary_wear::member_flanks`: `sun`, then each planet's `planet<N>_sun_side`
+/// and `planet<N>_ring_side`, then `ring`.
+pub fn flank_stems(planets: usize) -> Vec<String> {
+    let mut s = vec!["sun".to_string()];
+    for n in 1..=planets {
+        s.push(format!("planet{n}_sun_side"));
+        s.push(format!("planet{n}_ring_side"));
+    }
+    s.push("ring".into());
+    s
+}
+
+/// The flanks' wear columns of a set of `planets` planets: [`FLANK_WEAR_COLUMNS`] of every
+/// flank of [`flank_stems`].
+pub fn planetary_wear_columns(planets: usize) -> Vec<String> {
+    flank_stems(planets)
+        .iter()
+        .flat_map(|f| FLANK_WEAR_COLUMNS.iter().map(move |c| format!("{f}_{c}")))
+        .collect()
 }
 
 /// The mesh named as `gearwear dynamics`' summary names it: `sun_planet_<n>` and
@@ -73,8 +113,9 @@ fn mesh_prefix(j: usize, planets: usize) -> String {
 }
 
 /// The columns of a set of `planets` planets: every mesh's [`PLANETARY_MESH_COLUMNS`]
-/// (sun-planet 1..N, then ring-planet 1..N), then `planet<N>_load_sharing_factor`.
-pub fn planetary_columns(planets: usize) -> Vec<String> {
+/// (sun-planet 1..N, then ring-planet 1..N), then `planet<N>_load_sharing_factor`, then
+/// (a wear row, `wear`) [`planetary_wear_columns`].
+pub fn planetary_columns(planets: usize, wear: bool) -> Vec<String> {
     let mut c: Vec<String> = (0..2 * planets)
         .flat_map(|j| {
             PLANETARY_MESH_COLUMNS
@@ -83,15 +124,21 @@ pub fn planetary_columns(planets: usize) -> Vec<String> {
         })
         .collect();
     c.extend((1..=planets).map(|n| format!("planet{n}_{LOAD_SHARING_COLUMN}")));
+    if wear {
+        c.extend(planetary_wear_columns(planets));
+    }
     c
 }
 
-/// The number of planets whose columns end `columns` exactly, if any (≥ 1).
-pub fn planets_of(columns: &[String]) -> Option<usize> {
+/// The number of planets whose columns end `columns` exactly, if any (≥ 1), and whether
+/// they are a wear row's.
+pub fn planets_of(columns: &[String]) -> Option<(usize, bool)> {
     let per_planet = 2 * PLANETARY_MESH_COLUMNS.len() + 1;
-    (1..=columns.len() / per_planet).find(|&n| {
-        let own = planetary_columns(n);
-        columns.ends_with(&own)
+    (1..=columns.len() / per_planet).find_map(|n| {
+        [true, false]
+            .into_iter()
+            .find(|w| columns.ends_with(&planetary_columns(n, *w)))
+            .map(|w| (n, w))
     })
 }
 
@@ -123,13 +170,9 @@ pub fn run_planetary_dynamics(
     let row = PlanetaryRow {
         load_sharing: shares(&mean[..planets]),
         meshes,
+        wear: Vec::new(),
     };
     Ok((row, d.study.warnings.clone()))
-}
-
-/// The refusal of a planetary set's wear sweep (`--run wear`): not built yet.
-pub fn wear_refusal() -> ModelError {
-    ModelError(vec!["`[planetary]` in a sweep of wear: a planetary set's wear sweep is not built yet; `gearwear sweep` of dynamics takes a planetary set (each mesh's force and dynamic factor, each planet's load sharing), `gearwear wear` wears one set".into()])
 }
 
 #[cfg(test)]
@@ -138,7 +181,7 @@ mod tests {
 
     #[test]
     fn columns_name_each_mesh_and_planet_and_read_back() {
-        let c = planetary_columns(3);
+        let c = planetary_columns(3, false);
         // 2 N meshes x 3 columns + N planets.
         assert_eq!(c.len(), 2 * 3 * 3 + 3);
         assert_eq!(c[0], "sun_planet1_mesh_force_mean_n");
@@ -147,12 +190,33 @@ mod tests {
         assert_eq!(c[20], "planet3_load_sharing_factor");
         let mut with_pair = vec!["dte_max_um".to_string()];
         with_pair.extend(c.clone());
-        assert_eq!(planets_of(&with_pair), Some(3));
+        assert_eq!(planets_of(&with_pair), Some((3, false)));
         assert_eq!(planets_of(&with_pair[..with_pair.len() - 1]), None);
         let v: Vec<f64> = (0..c.len()).map(|i| i as f64 + 0.5).collect();
-        let row = PlanetaryRow::from_values(3, &v).unwrap();
+        let row = PlanetaryRow::from_values(3, false, &v).unwrap();
         assert_eq!(row.planets(), 3);
         assert_eq!(row.values(), v);
-        assert_eq!(PlanetaryRow::from_values(4, &v), None);
+        assert_eq!(PlanetaryRow::from_values(4, false, &v), None);
+        // A wear row: every member names its flanks, two modes each: the sun, each
+        // planet's two flanks and the ring, (2 N + 2) x 2 columns more.
+        let w = planetary_columns(3, true);
+        assert_eq!(w.len(), c.len() + (2 * 3 + 2) * 2);
+        assert_eq!(w[c.len()], "sun_wear_max_dynamic_um");
+        assert_eq!(w[c.len() + 3], "planet1_sun_side_wear_max_quasi_static_um");
+        assert_eq!(w[c.len() + 4], "planet1_ring_side_wear_max_dynamic_um");
+        assert_eq!(w[w.len() - 1], "ring_wear_max_quasi_static_um");
+        for n in 1..=3 {
+            for f in ["sun_side", "ring_side"] {
+                assert!(w.contains(&format!("planet{n}_{f}_wear_max_dynamic_um")));
+            }
+        }
+        with_pair.truncate(1);
+        with_pair.extend(w.clone());
+        assert_eq!(planets_of(&with_pair), Some((3, true)));
+        let v: Vec<f64> = (0..w.len()).map(|i| i as f64 + 0.25).collect();
+        let row = PlanetaryRow::from_values(3, true, &v).unwrap();
+        assert!(row.has_wear() && row.wear.len() == 8);
+        assert_eq!(row.values(), v);
+        assert_eq!(PlanetaryRow::from_values(3, false, &v), None);
     }
 }

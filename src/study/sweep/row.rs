@@ -92,13 +92,14 @@ impl SweepRun {
     /// (`CaseResults::columns`), if any.
     pub fn shape_of(columns: &[String]) -> Option<(Self, usize, usize)> {
         match planets_of(columns) {
-            Some(n) => {
-                let head = &columns[..columns.len() - planetary_columns(n).len()];
-                (head == SweepRun::Dynamics.columns().as_slice()).then_some((
-                    SweepRun::Dynamics,
-                    0,
-                    n,
-                ))
+            Some((n, wear)) => {
+                let head = &columns[..columns.len() - planetary_columns(n, wear).len()];
+                let run = if wear {
+                    SweepRun::Wear
+                } else {
+                    SweepRun::Dynamics
+                };
+                (head == run.columns().as_slice()).then_some((run, 0, n))
             }
             None => Self::of_columns(columns).map(|(r, s)| (r, s, 0)),
         }

@@ -140,7 +140,10 @@ impl SweepTable {
             ));
         }
         if self.planets > 0 {
-            c.extend(super::planetary_row::planetary_columns(self.planets));
+            c.extend(super::planetary_row::planetary_columns(
+                self.planets,
+                self.run == SweepRun::Wear,
+            ));
         }
         c
     }

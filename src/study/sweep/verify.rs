@@ -3,7 +3,7 @@
 //! run again and must give the recorded results bit for bit. Each costs one case.
 
 use super::case_record::CaseRecord;
-use super::case_run::{run_case, SweepRun};
+use super::case_run::{CaseError, CaseOutcome, SweepRun};
 use crate::config::Case;
 use crate::study::wear_check::{random_sample, StoredRunError};
 
@@ -17,10 +17,20 @@ pub fn cases_to_recompute(n: usize) -> Vec<usize> {
     random_sample(n, MAX_RECOMPUTED_CASES, &[])
 }
 
-/// Run `case` again and require the results `rec` holds, bit for bit (a failed case has
-/// no record, so a failure now is a mismatch too).
-pub fn verify_record(case: &Case, run: SweepRun, rec: &CaseRecord) -> Result<(), StoredRunError> {
-    let again = run_case(case, run).map_err(|e| {
+/// How a sweep runs one case: `super::run_case`, or the job's (`duty::study::run_sweep_case`,
+/// which runs a wear case under its `[load_spectrum]`).
+pub type CaseRunner = dyn Fn(&Case, SweepRun) -> Result<CaseOutcome, CaseError> + Sync;
+
+/// Run `case` again by `runner` (the sweep's own way of running a case) and require the
+/// results `rec` holds, bit for bit (a failed case has no record, so a failure now is a
+/// mismatch too).
+pub fn verify_record(
+    case: &Case,
+    run: SweepRun,
+    rec: &CaseRecord,
+    runner: &CaseRunner,
+) -> Result<(), StoredRunError> {
+    let again = runner(case, run).map_err(|e| {
         StoredRunError::Mismatch(format!("recomputed, the case fails ({e}), but its record holds results: the record is not this case's"))
     })?;
     // A spur case of a table with a helical pair's columns holds them empty.
