@@ -135,8 +135,15 @@ fn a_datasets_and_a_sweeps_figures_are_counted_as_drawn() {
         cpu,
         bytes,
     );
-    // A sweep of another key draws none and counts none.
-    let other =
-        SweepPlan::new(vec![parse_vary("operating.load_torque_nm=50,60").unwrap()]).unwrap();
+    // A sweep of another key draws none (its folder holds no PNG) and counts none.
+    let other_vary = "operating.load_torque_nm=50,60";
+    let other = SweepPlan::new(vec![parse_vary(other_vary).unwrap()]).unwrap();
     assert_eq!(sweep_figures(&base, &other, false).total(), 0.0);
+    let out = d.path().join("other_sweep");
+    let mut a = vec!["sweep", "--vary", other_vary];
+    a.extend(&SWEEP[2..]);
+    a.extend(["-q", "--no-budget", "--out", out.to_str().unwrap()]);
+    common::rusage::run(&a);
+    assert!(out.join("sweep.csv").is_file(), "the sweep ran");
+    assert_eq!(png_heights(&out), Vec::<u32>::new());
 }

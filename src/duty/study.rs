@@ -124,9 +124,18 @@ fn planetary_sweep_case(case: &Case) -> Result<CaseOutcome, CaseError> {
         combined_planetary_run, run_planetary_spectrum_modes, PlanetarySpectrum,
         PlanetarySpectrumRun,
     };
-    use crate::study::sweep::planetary_wear_row::{planetary_wear_row, sweep_wear_model};
+    use crate::study::sweep::planetary_wear_row::planetary_wear_row;
     let ps = PlanetarySpectrum::from_case(case).map_err(CaseError::Model)?;
-    sweep_wear_model(ps.reference().clone()).map_err(CaseError::Model)?;
+    // Every bin's set must have a quasi-static equilibrium (`gearwear wear` runs both
+    // modes at every bin), refused before any bin runs.
+    let problems: Vec<String> = ps
+        .models
+        .iter()
+        .filter_map(|m| m.quasi_static_problem())
+        .collect();
+    if !problems.is_empty() {
+        return Err(CaseError::Model(crate::study::ModelError(problems)));
+    }
     let starts = [WearMode::Dynamic, WearMode::QuasiStatic]
         .map(|m| PlanetarySpectrumRun::new(m, ps.shares.clone()))
         .to_vec();
@@ -140,8 +149,15 @@ fn planetary_sweep_case(case: &Case) -> Result<CaseOutcome, CaseError> {
         combined_planetary_run(&runs[1], ps.monitoring),
     );
     let row = planetary_wear_row(ps.reference(), &d, &q);
+    // Every bin's warnings, each once (as `gearwear wear` under the spectrum prints them).
+    let mut warnings: Vec<String> = Vec::new();
+    for w in ps.models.iter().flat_map(|m| &m.dynamics.study.warnings) {
+        if !warnings.contains(w) {
+            warnings.push(w.clone());
+        }
+    }
     Ok(CaseOutcome {
         results: crate::study::sweep::CaseResults::with_planetary_wear(row),
-        warnings: ps.reference().dynamics.study.warnings.clone(),
+        warnings,
     })
 }

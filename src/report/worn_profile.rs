@@ -35,7 +35,8 @@ pub fn shown_records(run: &WearRun) -> Vec<&UpdateRecord> {
 }
 
 /// The profile of one gear at a record: the shared profile, or with per-tooth wear the
-/// worst tooth's (the one holding the largest depth at that cycle count), so the curve's
+/// worst tooth's (the one holding the largest depth at that cycle count; on a helical
+/// pair the worst slice of a tooth), so the curve's
 /// maximum is the study's maximum wear depth (`updates_MODE.csv`).
 fn profile_m(r: &UpdateRecord, pinion: bool) -> Vec<f64> {
     let shared = if pinion {
@@ -63,7 +64,18 @@ pub fn worn_profile_figure(model: &Model, run: &WearRun) -> Option<WornProfileFi
     let (m, label) = (run.mode.name(), run.mode.label());
     let rho_mm: Vec<f64> = model.grid.rho_pinion_m.iter().map(|x| x * 1e3).collect();
     let per_tooth = first.wear.teeth.is_some();
-    let which = if per_tooth { ", worst tooth" } else { "" };
+    // A helical pair's per-tooth state holds every tooth's face slices (z N profiles a
+    // gear): the worst profile is then one slice of one tooth.
+    let sliced = first
+        .wear
+        .teeth
+        .as_ref()
+        .is_some_and(|t| t.pinion_m.len() > model.pair.pinion.teeth);
+    let which = match (per_tooth, sliced) {
+        (true, true) => ", worst tooth slice",
+        (true, false) => ", worst tooth",
+        _ => "",
+    };
     let mut table = Table::new().col("rho1_mm", rho_mm.clone());
     let mut panels = Vec::new();
     let names = [

@@ -179,12 +179,12 @@ pub fn run_figures(case: &Case) -> FigureCount {
 }
 
 /// Default height of a dataset's indicator-trend figure, px (`indicator_trends.png`,
-/// `app::dataset::index_files`: 900 x 1500, seven panels; `tests/budget_figures.rs`
+/// `app::dataset::index_files`: 900 x 1500, seven panels; `tests/budget_figure_jobs.rs`
 /// checks the file against it).
 pub const DATASET_TREND_FIGURE_PX: f64 = 1500.0;
 
 /// Default height of a sweep's figure, px (`report::sweep_figure::SWEEP_FIGURE_PX`, two
-/// panels; `tests/budget_figures.rs` checks the file against it).
+/// panels; `tests/budget_figure_jobs.rs` checks the file against it).
 pub const SWEEP_FIGURE_PX: f64 = 640.0;
 
 /// `n` figures of the default height `height_px`, each counted at its own height

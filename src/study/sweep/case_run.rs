@@ -8,6 +8,7 @@ use super::planetary_row::{
 };
 use super::planetary_wear_row::{planetary_wear_row, run_planetary_wear_modes, PlanetaryWearRow};
 pub use super::row::{DynamicsRow, SweepRun, WearEnd};
+use super::row::{DYNAMICS_COLUMNS, WEAR_COLUMNS};
 use crate::config::Case;
 use crate::dynamics::excitation::ExternalError;
 use crate::dynamics::summary::ResponseSummary;
@@ -47,6 +48,19 @@ impl CaseResults {
         } else {
             SweepRun::Dynamics
         }
+    }
+
+    /// The pair's columns at the front of a row's numbers `v` (at least the run's own):
+    /// the dynamics row, and for a wear run each mode's wear end (dynamic, quasi-static).
+    fn pair_values(run: SweepRun, v: &[f64]) -> (DynamicsRow, Option<[WearEnd; 2]>) {
+        let (d, w) = (DYNAMICS_COLUMNS.len(), WEAR_COLUMNS.len() / 2);
+        let wear = (run == SweepRun::Wear).then(|| {
+            [
+                WearEnd::from_values(&v[d..d + w]),
+                WearEnd::from_values(&v[d + w..d + 2 * w]),
+            ]
+        });
+        (DynamicsRow::from_values(&v[..d]), wear)
     }
 
     /// A planetary set's dynamics row: the pair's columns `dynamics`, then the set's.
@@ -125,13 +139,9 @@ impl CaseResults {
         }
         let wear = run == SweepRun::Wear;
         let row = PlanetaryRow::from_values(planets, wear, &v[own..])?;
-        let mut r = Self::with_planetary(DynamicsRow::from_values(&v[..9]), row);
-        if wear {
-            r.wear = Some([
-                WearEnd::from_values(&v[9..13]),
-                WearEnd::from_values(&v[13..17]),
-            ]);
-        }
+        let (dynamics, wear_ends) = Self::pair_values(run, v);
+        let mut r = Self::with_planetary(dynamics, row);
+        r.wear = wear_ends;
         Some(r)
     }
 
@@ -155,14 +165,10 @@ impl CaseResults {
             (SweepRun::Wear, 1..) => Some(TrainWearEnd::from_values(stages, &v[meshes_end..])?),
             _ => None,
         };
+        let (dynamics, wear) = Self::pair_values(run, v);
         Some(Self {
-            dynamics: DynamicsRow::from_values(&v[..9]),
-            wear: (run == SweepRun::Wear).then(|| {
-                [
-                    WearEnd::from_values(&v[9..13]),
-                    WearEnd::from_values(&v[13..17]),
-                ]
-            }),
+            dynamics,
+            wear,
             meshes: v[own..meshes_end]
                 .chunks_exact(MESH_COLUMNS.len())
                 .map(MeshRow::from_values)

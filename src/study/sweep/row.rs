@@ -20,7 +20,7 @@ pub enum SweepRun {
 }
 
 /// Result columns of a dynamics row, display units in the names.
-const DYNAMICS_COLUMNS: [&str; 9] = [
+pub(super) const DYNAMICS_COLUMNS: [&str; 9] = [
     "dte_max_um",
     "velocity_y_pinion_rms_mm_per_s",
     "mesh_force_mean_n",
@@ -35,7 +35,7 @@ const DYNAMICS_COLUMNS: [&str; 9] = [
 /// Extra columns of a wear row, per mode: final maximum wear depths, update count, and
 /// the cycles reached (below the case's total when the run stopped at the edge of the
 /// model's domain, [`crate::study::wear_loop::WearStop`]).
-const WEAR_COLUMNS: [&str; 8] = [
+pub(super) const WEAR_COLUMNS: [&str; 8] = [
     "wear_max_pinion_dynamic_um",
     "wear_max_gear_dynamic_um",
     "wear_updates_dynamic",
