@@ -301,3 +301,88 @@ fn the_budget_counts_every_tooth_s_slices() {
     let mode = WearMode::QuasiStatic;
     assert!(max_checkpoint_bytes(&big, mode) > max_checkpoint_bytes(&big_plain, mode));
 }
+
+#[test]
+fn a_broken_tip_s_slices_wear_nothing_where_they_do_not_touch() {
+    // Tooth 3's tip 1 mm lower over the face [0, 10] mm of 20 (8 slices; covered: those
+    // whose centre (j + 1/2) b / N lies in the span, worked here by hand), on the pinion
+    // and, separately, on the gear. A covered slice of the broken tooth does not touch past
+    // the cut: pinion rho1 > rho_cut for the pinion's tip (on the involute,
+    // r^2 = r_b^2 + rho^2 at r = r_a - 1 mm), pinion rho1 < loa - rho_cut,2 for the gear's.
+    // There Archard's depth of its every pass is zero, so its increment must be exactly
+    // zero; its uncovered slices touch there and wear. The increments are the quasi-static
+    // first ones (new teeth). Between the last sample before the cut and the first past it
+    // the pass is joined linearly over one sample's advance along the path (base pitch
+    // over the steps of a mesh period): the check starts two such advances past the cut.
+    let n = 8;
+    for gear in ["pinion", "gear"] {
+        let side = format!("fault.gear=\"{gear}\"");
+        let m = model(&[
+            "gear.helix_angle_deg=15",
+            "stiffness.slices=8",
+            "numerics.steps_per_mesh_period=400",
+            "fault.kind=\"broken_tip\"",
+            &side,
+            "fault.tooth=3",
+            "fault.removed_height_mm=1",
+            "fault.face_start_mm=0",
+            "fault.face_end_mm=10",
+        ]);
+        let h = m.helical.as_ref().unwrap();
+        let t = &h.pair.transverse;
+        let b = h.pair.face_width_m;
+        let covered: Vec<bool> = (0..n)
+            .map(|j| (j as f64 + 0.5) * b / n as f64 <= 10e-3)
+            .collect();
+        assert_eq!(covered.iter().filter(|c| **c).count(), 4);
+        let on_involute = |ra: f64, rb: f64| ((ra - 1e-3).powi(2) - rb * rb).sqrt();
+        let p = &t.pinion;
+        let advance = 2.0 * std::f64::consts::PI * p.base_radius_m / p.teeth as f64 / 400.0;
+        let past: Box<dyn Fn(f64) -> bool> = if gear == "pinion" {
+            let cut = on_involute(p.tip_radius_m, p.base_radius_m);
+            Box::new(move |x| x > cut + 2.0 * advance)
+        } else {
+            let g = &t.gear;
+            let cut = t.loa_length_m - on_involute(g.tip_radius_m, g.base_radius_m);
+            Box::new(move |x| x < cut - 2.0 * advance)
+        };
+        let points: Vec<usize> = (0..m.grid.len())
+            .filter(|i| past(m.grid.rho_pinion_m[*i]))
+            .collect();
+        assert!(
+            points.len() >= 3,
+            "{gear}: {} grid points past the cut",
+            points.len()
+        );
+        let inc = first(&m).increment_teeth.unwrap();
+        let teeth = if gear == "pinion" {
+            &inc.pinion_m
+        } else {
+            &inc.gear_m
+        };
+        let mut worn: f64 = 0.0;
+        for j in 0..n {
+            let w = &teeth[3 * n + j];
+            for &i in &points {
+                if covered[j] {
+                    assert_eq!(w[i], 0.0, "{gear} tooth 3 slice {j} at grid point {i}");
+                } else {
+                    worn = worn.max(w[i]);
+                }
+            }
+        }
+        // The uncovered slices wear there as a healthy tooth's does: the deepest increment
+        // there of tooth 0's last face slice (no fault), of the same order.
+        let healthy = (points.iter())
+            .map(|&i| teeth[n - 1][i])
+            .fold(0.0_f64, f64::max);
+        println!(
+            "{gear}: {} points past the cut; uncovered {worn:.3e}, healthy {healthy:.3e}",
+            points.len()
+        );
+        assert!(
+            healthy > 0.0 && worn > 0.1 * healthy,
+            "{worn:e} {healthy:e}"
+        );
+    }
+}
