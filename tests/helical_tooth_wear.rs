@@ -3,8 +3,10 @@
 //! with one slice the spur pair's per-tooth wear run with the same per-tooth inputs;
 //! every tooth perfect through the tooth-resolved path is the identical teeth's wear per
 //! slice; a pitch error moves its own tooth's wear in proportion to the error but the
-//! mean over the teeth only to second order (as for a spur pair, tests/teeth_wear.rs);
-//! a cut run resumes to the same bytes and a forged per-tooth profile count is refused.
+//! mean over the teeth only to second order (as for a spur pair, tests/teeth_wear.rs), on
+//! the pinion and on the gear; a broken tip's covered slices wear exactly nothing past the
+//! cut radius worked by hand; a cut run resumes to the same bytes and a forged per-tooth
+//! profile count is refused.
 
 mod common;
 
@@ -385,4 +387,43 @@ fn a_broken_tip_s_slices_wear_nothing_where_they_do_not_touch() {
             "{worn:e} {healthy:e}"
         );
     }
+}
+
+#[test]
+fn a_gear_pitch_error_moves_its_gear_tooth_s_wear_but_not_the_mean_to_first_order() {
+    // The pinion test's fact (above) on the gear's side, through the lines' gear teeth
+    // b = n mod z2: a pitch error on gear tooth 5 of 31 moves that tooth's wear per slice
+    // in proportion to the error and the mean over the gear's 31 teeth only to second
+    // order; a gear tooth half the gear away (20) is not moved. Same measure and bounds.
+    let plain = first(&model(&HELIX));
+    let s = plain.increment_slices.as_ref().unwrap();
+    let scale = s.gear_m.iter().flatten().fold(0.0_f64, |a, b| a.max(*b));
+    let n = 12;
+    let change = |e_um: f64| {
+        let mut v = vec!["0".to_string(); 31];
+        v[5] = format!("{e_um}");
+        let pe = format!("teeth.pitch_error_gear_um=[{}]", v.join(","));
+        let mut sets = HELIX.to_vec();
+        sets.push(&pe);
+        let t = first(&model(&sets)).increment_teeth.unwrap();
+        let mean: Vec<Vec<f64>> = (0..n)
+            .map(|j| {
+                (0..s.gear_m[0].len())
+                    .map(|i| (0..31).map(|b| t.gear_m[b * n + j][i]).sum::<f64>() / 31.0)
+                    .collect()
+            })
+            .collect();
+        let mean_dev = worst(&mean, &s.gear_m) / scale;
+        let tooth_dev = worst(&t.gear_m[5 * n..6 * n], &s.gear_m) / scale;
+        let far_dev = worst(&t.gear_m[20 * n..21 * n], &s.gear_m) / scale;
+        (mean_dev, tooth_dev, far_dev)
+    };
+    let (m1, t1, f1) = change(1.0);
+    let (m2, t2, _) = change(2.0);
+    println!(
+        "gear pitch error 1 um: mean {m1:.3e}, tooth 5 {t1:.3e}, tooth 20 {f1:.3e}; 2 um: mean {m2:.3e}, tooth 5 {t2:.3e}"
+    );
+    assert!(t1 > 0.02 && (t2 / t1 - 2.0).abs() < 0.2, "{t1} {t2}");
+    assert!(m1 < 0.05 * t1 && m2 < 0.05 * t2, "{m1} {m2}");
+    assert!(f1 < 1e-9, "{f1}");
 }
