@@ -3,8 +3,10 @@
 //! with one slice the spur pair's per-tooth wear run with the same per-tooth inputs;
 //! every tooth perfect through the tooth-resolved path is the identical teeth's wear per
 //! slice; a pitch error moves its own tooth's wear in proportion to the error but the
-//! mean over the teeth only to second order (as for a spur pair, tests/teeth_wear.rs);
-//! a cut run resumes to the same bytes and a forged per-tooth profile count is refused.
+//! mean over the teeth only to second order (as for a spur pair, tests/teeth_wear.rs), on
+//! the pinion and on the gear; a broken tip's covered slices wear exactly nothing past the
+//! cut radius worked by hand; a cut run resumes to the same bytes and a forged per-tooth
+//! profile count is refused.
 
 mod common;
 
@@ -300,4 +302,128 @@ fn the_budget_counts_every_tooth_s_slices() {
     big_plain.stiffness.slices = 400;
     let mode = WearMode::QuasiStatic;
     assert!(max_checkpoint_bytes(&big, mode) > max_checkpoint_bytes(&big_plain, mode));
+}
+
+#[test]
+fn a_broken_tip_s_slices_wear_nothing_where_they_do_not_touch() {
+    // Tooth 3's tip 1 mm lower over the face [0, 10] mm of 20 (8 slices; covered: those
+    // whose centre (j + 1/2) b / N lies in the span, worked here by hand), on the pinion
+    // and, separately, on the gear. A covered slice of the broken tooth does not touch past
+    // the cut: pinion rho1 > rho_cut for the pinion's tip (on the involute,
+    // r^2 = r_b^2 + rho^2 at r = r_a - 1 mm), pinion rho1 < loa - rho_cut,2 for the gear's.
+    // There Archard's depth of its every pass is zero, so its increment must be exactly
+    // zero; its uncovered slices touch there and wear. The increments are the quasi-static
+    // first ones (new teeth). Between the last sample before the cut and the first past it
+    // the pass is joined linearly over one sample's advance along the path (base pitch
+    // over the steps of a mesh period): the check starts two such advances past the cut.
+    let n = 8;
+    for gear in ["pinion", "gear"] {
+        let side = format!("fault.gear=\"{gear}\"");
+        let m = model(&[
+            "gear.helix_angle_deg=15",
+            "stiffness.slices=8",
+            "numerics.steps_per_mesh_period=400",
+            "fault.kind=\"broken_tip\"",
+            &side,
+            "fault.tooth=3",
+            "fault.removed_height_mm=1",
+            "fault.face_start_mm=0",
+            "fault.face_end_mm=10",
+        ]);
+        let h = m.helical.as_ref().unwrap();
+        let t = &h.pair.transverse;
+        let b = h.pair.face_width_m;
+        let covered: Vec<bool> = (0..n)
+            .map(|j| (j as f64 + 0.5) * b / n as f64 <= 10e-3)
+            .collect();
+        assert_eq!(covered.iter().filter(|c| **c).count(), 4);
+        let on_involute = |ra: f64, rb: f64| ((ra - 1e-3).powi(2) - rb * rb).sqrt();
+        let p = &t.pinion;
+        let advance = 2.0 * std::f64::consts::PI * p.base_radius_m / p.teeth as f64 / 400.0;
+        let past: Box<dyn Fn(f64) -> bool> = if gear == "pinion" {
+            let cut = on_involute(p.tip_radius_m, p.base_radius_m);
+            Box::new(move |x| x > cut + 2.0 * advance)
+        } else {
+            let g = &t.gear;
+            let cut = t.loa_length_m - on_involute(g.tip_radius_m, g.base_radius_m);
+            Box::new(move |x| x < cut - 2.0 * advance)
+        };
+        let points: Vec<usize> = (0..m.grid.len())
+            .filter(|i| past(m.grid.rho_pinion_m[*i]))
+            .collect();
+        assert!(
+            points.len() >= 3,
+            "{gear}: {} grid points past the cut",
+            points.len()
+        );
+        let inc = first(&m).increment_teeth.unwrap();
+        let teeth = if gear == "pinion" {
+            &inc.pinion_m
+        } else {
+            &inc.gear_m
+        };
+        let mut worn: f64 = 0.0;
+        for j in 0..n {
+            let w = &teeth[3 * n + j];
+            for &i in &points {
+                if covered[j] {
+                    assert_eq!(w[i], 0.0, "{gear} tooth 3 slice {j} at grid point {i}");
+                } else {
+                    worn = worn.max(w[i]);
+                }
+            }
+        }
+        // The uncovered slices wear there as a healthy tooth's does: the deepest increment
+        // there of tooth 0's last face slice (no fault), of the same order.
+        let healthy = (points.iter())
+            .map(|&i| teeth[n - 1][i])
+            .fold(0.0_f64, f64::max);
+        println!(
+            "{gear}: {} points past the cut; uncovered {worn:.3e}, healthy {healthy:.3e}",
+            points.len()
+        );
+        assert!(
+            healthy > 0.0 && worn > 0.1 * healthy,
+            "{worn:e} {healthy:e}"
+        );
+    }
+}
+
+#[test]
+fn a_gear_pitch_error_moves_its_gear_tooth_s_wear_but_not_the_mean_to_first_order() {
+    // The pinion test's fact (above) on the gear's side, through the lines' gear teeth
+    // b = n mod z2: a pitch error on gear tooth 5 of 31 moves that tooth's wear per slice
+    // in proportion to the error and the mean over the gear's 31 teeth only to second
+    // order; a gear tooth half the gear away (20) is not moved. Same measure and bounds.
+    let plain = first(&model(&HELIX));
+    let s = plain.increment_slices.as_ref().unwrap();
+    let scale = s.gear_m.iter().flatten().fold(0.0_f64, |a, b| a.max(*b));
+    let n = 12;
+    let change = |e_um: f64| {
+        let mut v = vec!["0".to_string(); 31];
+        v[5] = format!("{e_um}");
+        let pe = format!("teeth.pitch_error_gear_um=[{}]", v.join(","));
+        let mut sets = HELIX.to_vec();
+        sets.push(&pe);
+        let t = first(&model(&sets)).increment_teeth.unwrap();
+        let mean: Vec<Vec<f64>> = (0..n)
+            .map(|j| {
+                (0..s.gear_m[0].len())
+                    .map(|i| (0..31).map(|b| t.gear_m[b * n + j][i]).sum::<f64>() / 31.0)
+                    .collect()
+            })
+            .collect();
+        let mean_dev = worst(&mean, &s.gear_m) / scale;
+        let tooth_dev = worst(&t.gear_m[5 * n..6 * n], &s.gear_m) / scale;
+        let far_dev = worst(&t.gear_m[20 * n..21 * n], &s.gear_m) / scale;
+        (mean_dev, tooth_dev, far_dev)
+    };
+    let (m1, t1, f1) = change(1.0);
+    let (m2, t2, _) = change(2.0);
+    println!(
+        "gear pitch error 1 um: mean {m1:.3e}, tooth 5 {t1:.3e}, tooth 20 {f1:.3e}; 2 um: mean {m2:.3e}, tooth 5 {t2:.3e}"
+    );
+    assert!(t1 > 0.02 && (t2 / t1 - 2.0).abs() < 0.2, "{t1} {t2}");
+    assert!(m1 < 0.05 * t1 && m2 < 0.05 * t2, "{m1} {m2}");
+    assert!(f1 < 1e-9, "{f1}");
 }

@@ -20,8 +20,12 @@
 //!
 //! **Tribology and Archard per slice.** Each slice load gives the Hertz contact over the
 //! slice width b/N in the contact line's normal section, the surface speeds and Xu's
-//! coefficient (`helical_wear::slice_sample`). Engagement e's samples on face slice j,
-//! sorted by rho1, are one pass of that slice through the path; Archard's law with
+//! coefficient (`helical_wear::slice_sample`). A slice on the path that a broken tip cuts
+//! or that is apart (c_i <= 0) is a sample of load 0 (pressure, half-width and friction 0),
+//! as the spur pair's path records a tooth pair in reach that does not touch, and a line
+//! whose slices are all such is kept: a pass wears nothing where its slice does not touch
+//! instead of holding its last loaded sample there. Engagement e's samples on face slice
+//! j, sorted by rho1, are one pass of that slice through the path; Archard's law with
 //! single-point observation (`wear::per_cycle_wear`) gives the pass's depths along the
 //! profile. Per pinion cycle, tooth a's face slice j wears by the mean of its
 //! engagements' passes on slice j (the engagements it meets over the hunting period,
@@ -61,8 +65,10 @@ struct SliceLoads<'a> {
 }
 
 impl SliceLoads<'_> {
-    /// The slices of line `l` that carry load: (face slice j, pinion rho1 m, spring force
-    /// k_f c_i+ N), pushed to `out` in the line's order (module docs).
+    /// The slices of line `l` on the path: (face slice j, pinion rho1 m, spring force
+    /// k_f c_i+ N), pushed to `out` in the line's order (module docs); a slice a broken tip
+    /// cuts or that is apart (c_i <= 0) with force 0, so that its pass records where it
+    /// does not touch.
     fn slices(&self, l: LineAt, out: &mut Vec<(usize, f64, f64)>) {
         let (grid, lt, n) = (&self.model.grid, self.lt, self.lt.slices);
         let [z1, z2] = [self.teeth.pinion.len(), self.teeth.gear.len()];
@@ -84,6 +90,7 @@ impl SliceLoads<'_> {
             let (Some((gp, cp)), Some((gg, cg))) =
                 (lt.pinion[a].at(grid, j, x), lt.gear[b].at(grid, j, x))
             else {
+                out.push((j, x, 0.0));
                 continue;
             };
             let worn = (grid.interpolate(&pa[a * n + j], x) + grid.interpolate(&pb[b * n + j], x))
@@ -96,10 +103,7 @@ impl SliceLoads<'_> {
             } else {
                 1.0 / (1.0 / k + compliance)
             };
-            let f = kf * c.max(0.0);
-            if f > 0.0 {
-                out.push((j, x, f));
-            }
+            out.push((j, x, kf * c.max(0.0)));
         }
     }
 }
@@ -145,6 +149,8 @@ fn lines_by_engagement(loads: &SliceLoads, periods: usize) -> (Vec<Vec<LineAt>>,
             for c in &out {
                 total += c.2;
             }
+            // A line with a slice on the path is its engagement's even where none of its
+            // slices carries load (they record the pass's unloaded stretch).
             if !out.is_empty() {
                 by[l.cycle.rem_euclid(periods as i64) as usize].push(l);
             }
@@ -172,7 +178,7 @@ fn engagement_paths(
     let mut out = Vec::new();
     for l in lines {
         let total = totals[l.sample];
-        if total.is_nan() || total <= 0.0 {
+        if total.is_nan() {
             continue;
         }
         let force = r.signals.meshes[0].mesh_force_n[l.sample];
@@ -180,11 +186,34 @@ fn engagement_paths(
         out.clear();
         loads.slices(*l, &mut out);
         for &(j, x, f) in &out {
-            let load = (x, f * force / total);
-            paths[j].push(slice_sample(model, xu, load, (width, cos_bb), wp, wg));
+            let share = if total > 0.0 { f * force / total } else { 0.0 };
+            paths[j].push(if share > 0.0 {
+                slice_sample(model, xu, (x, share), (width, cos_bb), wp, wg)
+            } else {
+                unloaded(model, x, wp, wg)
+            });
         }
     }
     paths.iter().map(|p| sorted_by_rho1(p)).collect()
+}
+
+/// A slice contact at pinion rho1 `x` (m) that carries nothing: load, Hertz pressure and
+/// half-width, friction 0, the surface speeds of pinion and gear speeds `wp`, `wg` (rad/s),
+/// as the spur pair's path records a tooth pair in reach that does not touch
+/// (`PathSample::push_contacts`); Archard's law (`wear::per_cycle_wear`) wears nothing
+/// there. Xu's coefficient is not evaluated at zero pressure.
+fn unloaded(model: &Model, x: f64, wp: f64, wg: f64) -> PathSample {
+    PathSample {
+        rho1_m: x,
+        load_n: 0.0,
+        pressure_pa: 0.0,
+        half_width_m: 0.0,
+        friction_coefficient: 0.0,
+        friction_n: 0.0,
+        pinion_surface_speed_m_per_s: wp * x,
+        gear_surface_speed_m_per_s: wg * (model.pair.loa_length_m - x),
+        cycle: 0,
+    }
 }
 
 /// The load along the profile (at the grid points, N) of one engagement's slice paths:

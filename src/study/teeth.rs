@@ -18,7 +18,7 @@ mod worn;
 pub(crate) use checks::{fault_problem, lower_mm, upper_mm};
 pub use errors::{FlankTolerancesReport, GearErrors};
 pub(crate) use faults::apply_fault;
-pub(crate) use line_wear::LineTeeth;
+pub(crate) use line_wear::{LineTeeth, ToothSlices};
 
 use crate::config::case::{Case, Member, ReliefShape, ToothFault, WornGeometry};
 use crate::dynamics::tooth_mesh::{Runout, ToothFlank, ToothMesh};
@@ -126,12 +126,15 @@ impl ToothInputs {
         if let Some(l) = &self.lines {
             // A helical pair's lines: each tooth's own wear per face slice as its line's
             // gap (docs/MODEL.md 11.13).
-            let add = |flanks: &[ToothFlank], own: Option<&Vec<Vec<f64>>>| -> Vec<ToothFlank> {
+            let add = |flanks: &[ToothFlank],
+                       sections: &[ToothSlices],
+                       own: Option<&Vec<Vec<f64>>>|
+             -> Vec<ToothFlank> {
                 (flanks.iter().enumerate())
                     .map(|(t, f)| {
                         let mut f = f.clone();
-                        if let Some(w) = own {
-                            l.add_wear(&mut f.removed_m, w, t);
+                        if let (Some(w), Some(s)) = (own, sections.get(t)) {
+                            l.add_wear(&mut f.removed_m, w, t, s);
                         }
                         f
                     })
@@ -139,8 +142,8 @@ impl ToothInputs {
             };
             let teeth = wear.teeth.as_ref();
             return ToothMesh::new(
-                add(&self.pinion, teeth.map(|t| &t.pinion_m)),
-                add(&self.gear, teeth.map(|t| &t.gear_m)),
+                add(&self.pinion, &l.pinion, teeth.map(|t| &t.pinion_m)),
+                add(&self.gear, &l.gear, teeth.map(|t| &t.gear_m)),
                 self.runout,
                 self.rho_start_m,
                 self.spacing_m,

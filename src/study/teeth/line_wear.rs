@@ -11,9 +11,12 @@
 //! the stiffness-weighted mean of its slices' depths along the transverse line of action
 //! (`study::helical::slice_gap_m` for one flank), with the healthy slice stiffnesses k_i:
 //! the weights of the identical teeth's worn line (`HelicalDynamics::wear_gap`), so that
-//! teeth worn alike give the pair that line's gap. Where no slice of the line is on the
-//! path (it is about to enter or has just left), the line takes its nearest slice's depth
-//! at the path's end, as `HelicalDynamics::wear_gap` does.
+//! teeth worn alike give the pair that line's gap. The sum runs over the slices that touch:
+//! a slice the tooth's broken tip cuts is left out, as its errors' line leaves it out
+//! (`helical::line_flank`); where none touches, the line holds its nearest touching
+//! sample's value. Where no slice of the line is on the path (it is about to enter or has
+//! just left), the line takes its nearest slice's depth at the path's end, as
+//! `HelicalDynamics::wear_gap` does.
 
 use super::helical_tip::TipCut;
 use crate::dynamics::tooth_mesh::ToothFlank;
@@ -84,21 +87,20 @@ pub(crate) enum LineCell {
 }
 
 impl LineCell {
-    /// The line's gap from each slice's gap `g(j, rho1)`: the stiffness-weighted mean of
-    /// the slices on the path, or the nearest slice's.
-    pub(crate) fn gap(&self, g: impl Fn(usize, f64) -> f64) -> f64 {
+    /// The line's gap from each slice's gap `g(j, rho1)` (None where the slice does not
+    /// touch): the stiffness-weighted mean of the touching slices on the path, or the
+    /// nearest slice's; None where no slice of the line touches.
+    pub(crate) fn gap(&self, g: impl Fn(usize, f64) -> Option<f64>) -> Option<f64> {
         match self {
             LineCell::On(v) => {
                 let (mut kg, mut k) = (0.0, 0.0);
                 for &(j, x, ki) in v {
-                    kg += ki * g(j, x);
-                    k += ki;
+                    if let Some(gi) = g(j, x) {
+                        kg += ki * gi;
+                        k += ki;
+                    }
                 }
-                if k > 0.0 {
-                    kg / k
-                } else {
-                    0.0
-                }
+                (k > 0.0).then(|| kg / k)
             }
             LineCell::Nearest(j, x) => g(*j, *x),
         }
@@ -130,15 +132,108 @@ pub(crate) struct LineTeeth {
 impl LineTeeth {
     /// Tooth `t`'s worn line (module docs) added to its flank's removed material `removed`
     /// (one value per sample of the line pair); `wear` holds every tooth's face slices'
-    /// profiles, tooth t's at t N .. (t + 1) N.
-    pub(crate) fn add_wear(&self, removed: &mut [f64], wear: &[Vec<f64>], t: usize) {
+    /// profiles, tooth t's at t N .. (t + 1) N, and `sections` is the tooth's before wear:
+    /// a slice its broken tip cuts does not count, as in its errors' line
+    /// (`helical::line_flank`). Where none of the line's slices touches, the line holds its
+    /// nearest touching sample's value (the errors' line holds its own past its limit).
+    pub(crate) fn add_wear(
+        &self,
+        removed: &mut [f64],
+        wear: &[Vec<f64>],
+        t: usize,
+        sections: &ToothSlices,
+    ) {
         let n = self.slices;
         let Some(own) = wear.get(t * n..(t + 1) * n) else {
             return;
         };
         let cos_bb = self.cos_base_helix;
-        for (r, cell) in removed.iter_mut().zip(&self.cells) {
-            *r += cell.gap(|j, x| self.grid.interpolate(&own[j], x) / cos_bb);
+        let touching = |j: usize, x: f64| sections.at(&self.grid, j, x).is_some();
+        let mut line: Vec<Option<f64>> = (self.cells.iter())
+            .map(|cell| {
+                cell.gap(|j, x| touching(j, x).then(|| self.grid.interpolate(&own[j], x) / cos_bb))
+            })
+            .collect();
+        // Held forward past a pinion tooth's cut, backward before a gear tooth's.
+        let mut last = None;
+        for v in line.iter_mut() {
+            match v {
+                Some(x) => last = Some(*x),
+                None => *v = last,
+            }
         }
+        let mut next = None;
+        for v in line.iter_mut().rev() {
+            match v {
+                Some(x) => next = Some(*x),
+                None => *v = next,
+            }
+        }
+        for (r, w) in removed.iter_mut().zip(&line) {
+            *r += w.unwrap_or(0.0);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::flank_shape::Side;
+
+    #[test]
+    fn a_line_s_wear_weights_only_the_slices_its_broken_tip_leaves() {
+        // A line of four face slices at pinion rho1 0.2, 0.4, 0.6, 0.8 (m, a unit grid
+        // [0, 1]), healthy stiffnesses k = 1, 2, 7, 4, each slice worn uniformly by
+        // d = 1, 2, 9, 4 um; the tooth's tip is broken past rho1 = 0.5 over slices 1 and 2,
+        // so slice 2 (0.6) is cut and slices 0, 1, 3 touch. By hand the worn line is
+        // (1 x 1 + 2 x 2 + 4 x 4) / (1 + 2 + 4) = 3 um over cos(beta_b) = 0.5, 6 um (over
+        // all four slices it would be 84 / 14 = 6 um / 0.5 = 12 um). A second sample whose
+        // one slice is cut holds the first's value (as the errors' line holds its own).
+        let grid = ProfileGrid {
+            rho_pinion_m: vec![0.0, 1.0],
+            rho_gear_m: vec![1.0, 0.0],
+            radius_pinion_m: vec![1.0, 1.0],
+            radius_gear_m: vec![1.0, 1.0],
+            spacing_m: 1.0,
+        };
+        let k = [1.0, 2.0, 7.0, 4.0];
+        let d = [1e-6, 2e-6, 9e-6, 4e-6];
+        let x = [0.2, 0.4, 0.6, 0.8];
+        let flank = ToothFlank {
+            contact_limit_rho1_m: Some(0.5),
+            ..ToothFlank::perfect(2)
+        };
+        let fault = SliceFault {
+            cut: TipCut::of(&flank, Side::Pinion),
+            flank: ToothFlank::perfect(2),
+            covers: vec![false, true, true, false],
+        };
+        let sections = ToothSlices {
+            removed_m: Vec::new(),
+            faults: vec![fault],
+        };
+        let line = LineTeeth {
+            slices: 4,
+            cos_base_helix: 0.5,
+            grid: grid.clone(),
+            cells: vec![
+                LineCell::On((0..4).map(|j| (j, x[j], k[j])).collect()),
+                LineCell::On(vec![(2, 0.9, 5.0)]),
+            ],
+            offsets: Vec::new(),
+            path: (0.0, 1.0),
+            pinion: Vec::new(),
+            gear: Vec::new(),
+        };
+        let wear: Vec<Vec<f64>> = d.iter().map(|h| vec![*h, *h]).collect();
+        let mut removed = vec![0.0; 2];
+        line.add_wear(&mut removed, &wear, 0, &sections);
+        let by_hand = (k[0] * d[0] + k[1] * d[1] + k[3] * d[3]) / (k[0] + k[1] + k[3]) / 0.5;
+        // One rounding of a few sums: 1e-15 relative.
+        assert!(
+            (removed[0] - by_hand).abs() < 1e-15 * by_hand,
+            "{removed:?} {by_hand}"
+        );
+        assert_eq!(removed[1], removed[0]);
     }
 }
