@@ -629,3 +629,67 @@ fn a_helical_contact_takes_the_radii_of_its_contact_lines_normal_section() {
     }
     assert!(checked > 1000, "{checked} contacts checked");
 }
+
+/// A face slice that a misalignment lifts off during part of the mesh cycle wears nothing
+/// where it does not touch. At beta = 0 with N = 10 slices every slice of a line sits at
+/// the same place on the path, and a misalignment f_ma in the plane of action opens slice
+/// j by G_j = f_ma j / N (docs/MODEL.md 11.2; the hand solve of tests/helical_wear_lead.rs),
+/// so slice j touches exactly while the deflection exceeds G_j: a slice whose G_j lies
+/// between the smallest and the largest deflection of the cycle (computed here from the
+/// response's DTE) touches part of the time. Its path must record where it is lifted
+/// (samples of no load), and Archard's depth there must be exactly 0: before, a lifted
+/// stretch was left out of the slice's path, and the interpolation along the path held its
+/// last loaded sample's pressure and sliding across it (wear where there is no contact).
+#[test]
+fn a_slice_lifted_off_by_a_misalignment_wears_nothing_where_it_does_not_touch() {
+    let (n, f_ma) = (10usize, 20e-6);
+    let m = helical(&[
+        "gear.helix_angle_deg=0",
+        "stiffness.slices=10",
+        "operating.misalignment_um=20",
+    ]);
+    let hd = m.helical.as_ref().unwrap();
+    let w = m.new_wear_state();
+    let r = solve(&m, WearMode::QuasiStatic, &w, None).unwrap();
+    let dte = &r.signals.meshes[0].dte_m;
+    let (lo, hi) = dte
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(*x), b.max(*x))
+        });
+    let part_time: Vec<usize> = (0..n)
+        .filter(|j| {
+            let g = f_ma * *j as f64 / n as f64;
+            g > lo && g < hi
+        })
+        .collect();
+    assert!(
+        !part_time.is_empty(),
+        "no slice touches part-time: DTE {lo:e}..{hi:e} m"
+    );
+    let paths = slice_paths(&m, hd, &r, &w);
+    let inc = slice_increment(&m, &paths);
+    let s = inc.slices.unwrap();
+    let mut lifted_points = 0;
+    for &j in &part_time {
+        let p = &paths[j];
+        assert!(p.iter().any(|x| x.load_n > 0.0) && p.iter().any(|x| x.load_n == 0.0));
+        for (i, x) in m.grid.rho_pinion_m.iter().enumerate() {
+            // The samples on either side of the grid point along the slice's path.
+            let after = p.iter().position(|q| q.rho1_m >= *x);
+            let Some(a) = after.filter(|a| *a > 0) else {
+                continue;
+            };
+            let (l, r) = (&p[a - 1], &p[a]);
+            if l.load_n == 0.0 && r.load_n == 0.0 {
+                lifted_points += 1;
+                assert_eq!(s.pinion_m[j][i], 0.0, "slice {j}, point {i}: pinion wears");
+                assert_eq!(s.gear_m[j][i], 0.0, "slice {j}, point {i}: gear wears");
+            }
+        }
+    }
+    assert!(
+        lifted_points > 0,
+        "no grid point where a part-time slice is lifted"
+    );
+}

@@ -33,7 +33,7 @@
 //! them), the gear's with z1/z2 (paper eq. 17).
 
 use super::helical::HelicalDynamics;
-use super::helical_wear::{slice_sample, speeds_at};
+use super::helical_wear::{slice_sample, speeds_at, unloaded};
 use super::model::Model;
 use super::teeth::{LineTeeth, ToothInputs};
 use crate::contact::friction::XuConstants;
@@ -195,25 +195,6 @@ fn engagement_paths(
         }
     }
     paths.iter().map(|p| sorted_by_rho1(p)).collect()
-}
-
-/// A slice contact at pinion rho1 `x` (m) that carries nothing: load, Hertz pressure and
-/// half-width, friction 0, the surface speeds of pinion and gear speeds `wp`, `wg` (rad/s),
-/// as the spur pair's path records a tooth pair in reach that does not touch
-/// (`PathSample::push_contacts`); Archard's law (`wear::per_cycle_wear`) wears nothing
-/// there. Xu's coefficient is not evaluated at zero pressure.
-fn unloaded(model: &Model, x: f64, wp: f64, wg: f64) -> PathSample {
-    PathSample {
-        rho1_m: x,
-        load_n: 0.0,
-        pressure_pa: 0.0,
-        half_width_m: 0.0,
-        friction_coefficient: 0.0,
-        friction_n: 0.0,
-        pinion_surface_speed_m_per_s: wp * x,
-        gear_surface_speed_m_per_s: wg * (model.pair.loa_length_m - x),
-        cycle: 0,
-    }
 }
 
 /// The load along the profile (at the grid points, N) of one engagement's slice paths:

@@ -117,10 +117,10 @@ pub fn slice_paths(
                 }
                 let j = s.face_slice_of_line_slice(li);
                 let c = ms.dte_m[i] - lead[j] - slice_gap_m(&model.grid, wear, j, x, cos_bb);
-                let f = s.slice().pair_stiffness_n_per_m(x) * c.max(0.0);
-                if f > 0.0 {
-                    contacts.push((j, x, f));
-                }
+                // Every slice on the path is recorded, a separated one (c <= 0) with no
+                // load ([`unloaded`]): its pass then wears nothing where it does not touch,
+                // rather than holding its last loaded sample to the path's end.
+                contacts.push((j, x, s.slice().pair_stiffness_n_per_m(x) * c.max(0.0)));
             }
         }
         let total: f64 = contacts.iter().map(|c| c.2).sum();
@@ -129,14 +129,11 @@ pub fn slice_paths(
         }
         let (wp, wg) = speeds_at(sys.mesh(0), r, i);
         for &(j, x, f) in &contacts {
-            paths[j].push(slice_sample(
-                model,
-                &xu,
-                (x, f * force / total),
-                (width, cos_bb),
-                wp,
-                wg,
-            ));
+            paths[j].push(if f > 0.0 {
+                slice_sample(model, &xu, (x, f * force / total), (width, cos_bb), wp, wg)
+            } else {
+                unloaded(model, x, wp, wg)
+            });
         }
     }
     paths.iter().map(|p| sorted_by_rho1(p)).collect()
@@ -169,6 +166,25 @@ pub(crate) fn slice_sample(
         friction_n: mu * load * model.friction.direction(kin.sliding_velocity_m_per_s()),
         pinion_surface_speed_m_per_s: wp * rho1,
         gear_surface_speed_m_per_s: wg * (pair.loa_length_m - rho1),
+        cycle: 0,
+    }
+}
+
+/// A slice contact at pinion rho1 `x` (m) that carries nothing: load, Hertz pressure and
+/// half-width, friction 0, the surface speeds of pinion and gear speeds `wp`, `wg` (rad/s),
+/// as the spur pair's path records a tooth pair in reach that does not touch
+/// (`PathSample::push_contacts`); Archard's law (`wear::per_cycle_wear`) wears nothing
+/// there. Xu's coefficient is not evaluated at zero pressure.
+pub(crate) fn unloaded(model: &Model, x: f64, wp: f64, wg: f64) -> PathSample {
+    PathSample {
+        rho1_m: x,
+        load_n: 0.0,
+        pressure_pa: 0.0,
+        half_width_m: 0.0,
+        friction_coefficient: 0.0,
+        friction_n: 0.0,
+        pinion_surface_speed_m_per_s: wp * x,
+        gear_surface_speed_m_per_s: wg * (model.pair.loa_length_m - x),
         cycle: 0,
     }
 }
