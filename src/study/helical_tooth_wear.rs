@@ -33,13 +33,13 @@
 //! them), the gear's with z1/z2 (paper eq. 17).
 
 use super::helical::HelicalDynamics;
-use super::helical_wear::{slice_sample, speeds_at, unloaded};
+use super::helical_wear::{load_along_profile, slice_sample, speeds_at, unloaded};
 use super::model::Model;
 use super::teeth::{LineTeeth, ToothInputs};
 use crate::contact::friction::XuConstants;
 use crate::dynamics::excitation::{ExternalError, PairGap};
 use crate::dynamics::model::MAX_PAIRS;
-use crate::dynamics::response::{interpolate_path, sorted_by_rho1, DynamicResponse, PathSample};
+use crate::dynamics::response::{sorted_by_rho1, DynamicResponse, PathSample};
 use crate::dynamics::tooth_mesh::lcm;
 use crate::wear::per_tooth::engagements_of;
 use crate::wear::tooth_wear::mean_profile;
@@ -195,25 +195,6 @@ fn engagement_paths(
         }
     }
     paths.iter().map(|p| sorted_by_rho1(p)).collect()
-}
-
-/// The load along the profile (at the grid points, N) of one engagement's slice paths:
-/// the sum over the face slices of each one's load where it passes the point.
-fn load_along_profile(model: &Model, paths: &[Vec<PathSample>]) -> Vec<f64> {
-    (model.grid.rho_pinion_m.iter())
-        .map(|x| {
-            let on = |p: &Vec<PathSample>| {
-                let inside = p.first().is_some_and(|a| a.rho1_m <= *x)
-                    && p.last().is_some_and(|b| b.rho1_m >= *x);
-                if inside {
-                    interpolate_path(p, *x).load_n
-                } else {
-                    0.0
-                }
-            };
-            paths.iter().map(on).sum()
-        })
-        .collect()
 }
 
 /// Which teeth of a gear of `z` teeth meet each of the `periods` engagements over the

@@ -223,10 +223,14 @@ pub(crate) fn record_parts(
 ) -> (WearIncrement, Vec<f64>) {
     let paths = slice_paths(model, h, r, wear);
     let inc = slice_increment(model, &paths);
-    let load = model
-        .grid
-        .rho_pinion_m
-        .iter()
+    let load = load_along_profile(model, &paths);
+    (inc, load)
+}
+
+/// The load along the profile (at the grid points, N) of slice paths (one engagement's):
+/// the sum over the face slices of each one's load where it passes the point.
+pub(crate) fn load_along_profile(model: &Model, paths: &[Vec<PathSample>]) -> Vec<f64> {
+    (model.grid.rho_pinion_m.iter())
         .map(|x| {
             let on = |p: &Vec<PathSample>| {
                 let inside = p.first().is_some_and(|a| a.rho1_m <= *x)
@@ -239,8 +243,7 @@ pub(crate) fn record_parts(
             };
             paths.iter().map(on).sum()
         })
-        .collect();
-    (inc, load)
+        .collect()
 }
 
 /// Volume of a layer of depth `depth_m[i]` (m) at the grid points of rho `rho_m[i]` (m) on

@@ -344,6 +344,26 @@ pub fn solve_by(
 pub type DynamicSolve<'a> =
     dyn Fn(Option<&[f64]>, &SteadyStateSettings) -> Result<DynamicResponse, DynamicsError> + 'a;
 
+/// The record of a helical pair's response `r` on `wear` from its slices' increments
+/// (per slice, or per tooth and slice) and load along the profile, `(inc, load)`.
+fn slices_record(
+    (model, mode, wear, r): (&Model, WearMode, WearState, &DynamicResponse),
+    (inc, load): (WearIncrement, Vec<f64>),
+) -> UpdateRecord {
+    UpdateRecord {
+        roughness_um: model.roughness_for(&wear),
+        wear,
+        summary: ResponseSummary::of(r),
+        increment_pinion_m: inc.pinion_m,
+        increment_gear_m: inc.gear_m,
+        increment_teeth: inc.teeth,
+        increment_slices: inc.slices,
+        path_rho1_m: model.grid.rho_pinion_m.clone(),
+        path_load_n: load,
+        end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
+    }
+}
+
 /// The record of a response on `wear`: its summary, the per-cycle wear it gives (paper
 /// eq. 14-17; per tooth when the mesh is tooth-resolved) and the state the next search
 /// starts from.
@@ -354,35 +374,12 @@ pub fn record(model: &Model, mode: WearMode, wear: WearState, r: &DynamicRespons
             // A helical pair's teeth worn tooth by tooth and slice by slice
             // (docs/MODEL.md 11.13); one slice is its own line: the spur pair's
             // per-tooth record below.
-            let (inc, load) =
-                super::helical_tooth_wear::record_parts(model, h, teeth, lt, r, &wear);
-            return UpdateRecord {
-                roughness_um: model.roughness_for(&wear),
-                wear,
-                summary: ResponseSummary::of(r),
-                increment_pinion_m: inc.pinion_m,
-                increment_gear_m: inc.gear_m,
-                increment_teeth: inc.teeth,
-                increment_slices: None,
-                path_rho1_m: model.grid.rho_pinion_m.clone(),
-                path_load_n: load,
-                end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
-            };
+            let parts = super::helical_tooth_wear::record_parts(model, h, teeth, lt, r, &wear);
+            return slices_record((model, mode, wear, r), parts);
         }
     } else if let Some(h) = &model.helical {
-        let (inc, load) = super::helical_wear::record_parts(model, h, r, &wear);
-        return UpdateRecord {
-            roughness_um: model.roughness_for(&wear),
-            wear,
-            summary: ResponseSummary::of(r),
-            increment_pinion_m: inc.pinion_m,
-            increment_gear_m: inc.gear_m,
-            increment_teeth: None,
-            increment_slices: inc.slices,
-            path_rho1_m: model.grid.rho_pinion_m.clone(),
-            path_load_n: load,
-            end_state: (mode == WearMode::Dynamic).then(|| r.end_state.to_vec()),
-        };
+        let parts = super::helical_wear::record_parts(model, h, r, &wear);
+        return slices_record((model, mode, wear, r), parts);
     }
     let (z1, z2) = (model.pair.pinion.teeth, model.pair.gear.teeth);
     let parts = MeshWearParts {

@@ -244,7 +244,7 @@ fn record_periods(case: &Case) -> Option<(f64, f64)> {
 
 /// Peak bytes of a transient record's internal grid (`signals::transient_record`): its
 /// n cells at D f_s, n = `fast_len`(lead-in + the record and its tail + lead-in's length
-/// of padding), at [`BYTES_PER_TRANSIENT_CELL`]. In f64: a length past 2^50 cells (refused
+/// of padding), at `BYTES_PER_TRANSIENT_CELL`. In f64: a length past 2^50 cells (refused
 /// by the budget long before) is counted at 2 n, the next power of two's bound.
 pub fn transient_grid_bytes(case: &Case) -> f64 {
     use crate::signals::transient_record::{fast_len, LEAD_S, TAIL_S};
