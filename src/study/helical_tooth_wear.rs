@@ -38,7 +38,7 @@ use super::model::Model;
 use super::teeth::{LineTeeth, ToothInputs};
 use crate::contact::friction::XuConstants;
 use crate::dynamics::excitation::{ExternalError, PairGap};
-use crate::dynamics::model::MAX_PAIRS;
+use crate::dynamics::model::{TrainMesh, MAX_PAIRS};
 use crate::dynamics::response::{sorted_by_rho1, DynamicResponse, PathSample};
 use crate::dynamics::tooth_mesh::lcm;
 use crate::wear::per_tooth::engagements_of;
@@ -111,13 +111,14 @@ impl SliceLoads<'_> {
 /// The lines in contact over the last excitation period of `r` grouped by engagement
 /// (mesh cycle modulo P), and the sum of every line's slice forces at each sample (0 where
 /// the mesh force is not positive).
-fn lines_by_engagement(loads: &SliceLoads, periods: usize) -> (Vec<Vec<LineAt>>, Vec<f64>) {
+fn lines_by_engagement(
+    loads: &SliceLoads,
+    mesh: &TrainMesh,
+    periods: usize,
+) -> (Vec<Vec<LineAt>>, Vec<f64>) {
     let (model, r) = (loads.model, loads.r);
     let sig = &r.signals;
     let ms = &sig.meshes[0];
-    let (no_gap, no_error) = (PairGap::none(), ExternalError::none());
-    let sys = model.system(&no_gap, &no_error, 0.0);
-    let mesh = sys.mesh(0);
     let angle = model.pair.mesh_angle_rad();
     let t_end = sig.time_s.last().copied().unwrap_or(0.0);
     let window = r.mesh_period_s * r.excitation_periods.max(1) as f64;
@@ -164,6 +165,7 @@ fn lines_by_engagement(loads: &SliceLoads, periods: usize) -> (Vec<Vec<LineAt>>,
 /// (module docs; index j: face slice j).
 fn engagement_paths(
     loads: &SliceLoads,
+    mesh: &TrainMesh,
     lines: &[LineAt],
     totals: &[f64],
     xu: &XuConstants,
@@ -172,8 +174,6 @@ fn engagement_paths(
     let s = &loads.h.slice_model;
     let width = s.pair().face_width_m / n as f64;
     let cos_bb = loads.lt.cos_base_helix;
-    let (no_gap, no_error) = (PairGap::none(), ExternalError::none());
-    let sys = model.system(&no_gap, &no_error, 0.0);
     let mut paths: Vec<Vec<PathSample>> = vec![Vec::new(); n];
     let mut out = Vec::new();
     for l in lines {
@@ -182,7 +182,7 @@ fn engagement_paths(
             continue;
         }
         let force = r.signals.meshes[0].mesh_force_n[l.sample];
-        let (wp, wg) = speeds_at(sys.mesh(0), r, l.sample);
+        let (wp, wg) = speeds_at(mesh, r, l.sample);
         out.clear();
         loads.slices(*l, &mut out);
         for &(j, x, f) in &out {
@@ -238,7 +238,10 @@ pub(crate) fn record_parts(
         r,
     };
     let periods = r.excitation_periods.max(1);
-    let (by, totals) = lines_by_engagement(&loads, periods);
+    // The nominal mesh (no gap, no error) for the phases and surface speeds, built once.
+    let (no_gap, no_error) = (PairGap::none(), ExternalError::none());
+    let sys = model.system(&no_gap, &no_error, 0.0);
+    let (by, totals) = lines_by_engagement(&loads, sys.mesh(0), periods);
     let hunting = lcm(lcm(z1, z2), periods);
     let (meet_p, count_p) = meetings(z1, hunting, periods);
     let (meet_g, count_g) = meetings(z2, hunting, periods);
@@ -249,7 +252,7 @@ pub(crate) fn record_parts(
     let add = |to: &mut Vec<f64>, from: &[f64]| to.iter_mut().zip(from).for_each(|(s, x)| *s += x);
     let xu = XuConstants::new(model.case.lubricant.viscosity_cp, model.roughness_for(wear));
     for (e, lines) in by.iter().enumerate() {
-        let paths = engagement_paths(&loads, lines, &totals, &xu);
+        let paths = engagement_paths(&loads, sys.mesh(0), lines, &totals, &xu);
         add(&mut load, &load_along_profile(model, &paths));
         for (j, p) in paths.iter().enumerate() {
             let inc = per_cycle_wear(&model.grid, p, k, ratio);
