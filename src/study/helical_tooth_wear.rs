@@ -7,13 +7,13 @@
 //! contact line in contact is mesh cycle n's, between pinion tooth a = n mod z1 and gear
 //! tooth b = n mod z2, its engagement e = n mod P (the tooth-resolved mesh's,
 //! `dynamics::tooth_mesh`). Its slice i at pinion rho1 x = rho + o_i on face slice j is a
-//! spring compressed by
+//! spring compressed by (all in m along the transverse line of action)
 //!   c_i = delta + e_run + p_a + p_b - g_a,j(x) - g_b,j(x) - (h_a,j(x) + h_b,j(x)) / cos(beta_b),
 //! e_run the run-out and p_a, p_b the position errors along the line of action (as the
 //! tooth-resolved mesh adds them to its pairs), g the teeth's errors and a spall's pit on
 //! that slice (`ToothSlices::at`), h their own wear depths on face slice j (normal to the
 //! flank); its stiffness is the slice's k(x) with the faults' compliances c_f in series,
-//! k_f = 1 / (1/k + c_f), and a slice a broken tip cuts carries nothing. It carries
+//! k_f = 1 / (1/k + c_f) (N/m; c_f in m/N), and a slice a broken tip cuts carries nothing. It carries
 //! F_i = k_f c_i+, and the mesh force F is shared over every slice of every line in
 //! proportion, F_i F / sum F_i, as the identical teeth's slices are
 //! (`study::helical_wear`): with every tooth alike the two are the same loads.
