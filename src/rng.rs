@@ -15,17 +15,15 @@ pub fn stream(seed: u64, index: u64) -> ChaCha8Rng {
 /// exact as a float, so a seed survives a JSON or Python writer unchanged.
 pub const MAX_SEED: u64 = 1 << 53;
 
-/// A value that is not a seed (outside [0, 2^53] or not a whole number): the key, the
-/// value as written and, for a float from 2^52 up, why it is refused.
+/// A value that is not a seed (outside [0, 2^53] or not a whole number): the key and the
+/// value as written.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15){}", .why.map(|w| format!(" ({w})")).unwrap_or_default())]
+#[error("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15)")]
 pub struct SeedError {
     /// The key (or flag) the value was given for.
     pub key: String,
     /// The value as written.
     pub shown: String,
-    /// Why a float in range is refused, when it is.
-    pub why: Option<&'static str>,
 }
 
 /// The error of a seed outside [0, 2^53] or not a whole number, naming `key` and the
@@ -34,24 +32,17 @@ fn seed_error(key: &str, shown: &str) -> SeedError {
     SeedError {
         key: key.to_string(),
         shown: shown.to_string(),
-        why: None,
     }
 }
 
-/// A seed given as a float (a TOML or Python float): a whole number below 2^52, where a
-/// float holds every whole number and no other number written rounds onto one. From 2^52
-/// up the floats are whole numbers one or more apart, so a float there may be another
-/// number rounded (the TOML float 9007199254740993.0 reads as 2^53): refused, asking for
-/// the integer. Err names `key`, the value and the range [0, 2^53].
+/// A seed given as a float (a TOML or Python float, IEEE 754 binary64): a whole number in
+/// [0, 2^53]. Every whole number up to 2^53 is a float, so the float is the seed it
+/// says; a literal such as the TOML float 9007199254740993.0 already is the float 2^53
+/// when it is read (binary64 is the value, as for the case file's whole-number keys,
+/// `config::parse`). Err names `key`, the value and the range.
 pub fn seed_from_f64(key: &str, x: f64) -> Result<u64, SeedError> {
-    const EXACT: f64 = (1u64 << 52) as f64;
-    if x.is_finite() && x.fract() == 0.0 && (0.0..EXACT).contains(&x) {
+    if x.is_finite() && x.fract() == 0.0 && (0.0..=MAX_SEED as f64).contains(&x) {
         Ok(x as u64)
-    } else if x.is_finite() && (EXACT..=MAX_SEED as f64).contains(&x) {
-        Err(SeedError {
-            why: Some("a float from 2^52 up may be another number rounded: write it as an integer"),
-            ..seed_error(key, &format!("{x:?}"))
-        })
     } else {
         Err(seed_error(key, &format!("{x:?}")))
     }
@@ -185,12 +176,17 @@ mod tests {
             );
         }
         assert!(seed_from_f64("k", f64::INFINITY).is_err());
-        // A float from 2^52 up: refused asking for the integer; below, a whole float is
-        // the integer it is.
-        assert!(seed_from_f64("k", 9_007_199_254_740_992.0)
-            .unwrap_err()
-            .to_string()
-            .contains("write it as an integer"));
+        // A whole float is the integer it is, up to 2^53 inclusive (issue 33: the message
+        // names 9.007199254740992e15 as accepted; a design's float seed was refused);
+        // the next float, 2^53 + 2, and a fraction are out.
+        assert_eq!(seed_from_f64("k", 9.007199254740992e15), Ok(1 << 53));
+        for bad in [9.007199254740994e15, 0.5, -1.0, f64::NAN] {
+            let e = seed_from_f64("k", bad).unwrap_err().to_string();
+            assert!(
+                e.contains("`k`") && e.contains("[0, 9007199254740992]"),
+                "{e}"
+            );
+        }
         assert_eq!(
             seed_from_f64("k", 4_503_599_627_370_495.0),
             Ok(4_503_599_627_370_495)

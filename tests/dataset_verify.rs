@@ -69,6 +69,19 @@ fn sha256_hex(b: &[u8]) -> String {
 /// carries recomputed where the edit touches a signal.
 type Forgery = (&'static str, &'static str, fn(&Path));
 
+/// Sets `labels.<key>` of the sidecar `rel` to `value` (nothing else changed).
+fn edit_label(ds: &Path, rel: &str, key: &str, value: Value) {
+    let p = ds.join(rel);
+    let mut s = read_json(&p);
+    assert!(s["labels"].get(key).is_some(), "{rel} has labels.{key}");
+    assert_ne!(
+        s["labels"][key], value,
+        "{rel}: the forgery changes labels.{key}"
+    );
+    s["labels"][key] = value;
+    write_json(&p, &s);
+}
+
 fn scale_wear(ds: &Path, f: f64) {
     let p = ds.join("state/trajectory_healthy.json");
     let mut t = read_json(&p);
@@ -82,7 +95,7 @@ fn scale_wear(ds: &Path, f: f64) {
     write_json(&p, &t);
 }
 
-const FORGERIES: [Forgery; 8] = [
+const FORGERIES: [Forgery; 13] = [
     ("max wear x3", "records/0000001.json", |ds| {
         let p = ds.join("records/0000001.json");
         let mut s = read_json(&p);
@@ -143,6 +156,40 @@ const FORGERIES: [Forgery; 8] = [
         t["trajectory"]["end_cycles"] = end;
         write_json(&p, &t);
     }),
+    // Issue 33's other label edits: each a field of the record's identity or labels.
+    ("severity", "records/0000001.json", |ds| {
+        edit_label(ds, "records/0000001.json", "severity", 2.0.into())
+    }),
+    ("condition", "records/0000002.json", |ds| {
+        edit_label(ds, "records/0000002.json", "condition", "crack".into())
+    }),
+    ("noise seed", "records/0000003.json", |ds| {
+        let p = ds.join("records/0000003.json");
+        let seed = read_json(&p)["labels"]["noise_seed"].as_u64().unwrap();
+        edit_label(ds, "records/0000003.json", "noise_seed", (seed + 1).into())
+    }),
+    ("input speed", "records/0000000.json", |ds| {
+        edit_label(ds, "records/0000000.json", "input_speed_hz", 31.0.into())
+    }),
+    // Positive wear whose updates are out of order (wear falling with cycles): two
+    // updates' wear swapped.
+    (
+        "a non-monotone trajectory",
+        "state/trajectory_healthy.json",
+        |ds| {
+            let p = ds.join("state/trajectory_healthy.json");
+            let mut t = read_json(&p);
+            let recs = t["trajectory"]["records"].as_array_mut().unwrap();
+            let (a, b) = (recs[1]["wear"].clone(), recs[2]["wear"].clone());
+            let cycles = |w: &Value| w["cycles"].clone();
+            let (ca, cb) = (cycles(&a), cycles(&b));
+            recs[1]["wear"] = b;
+            recs[1]["wear"]["cycles"] = ca;
+            recs[2]["wear"] = a;
+            recs[2]["wear"]["cycles"] = cb;
+            write_json(&p, &t);
+        },
+    ),
     ("failure cycles", "state/trajectory_healthy.json", |ds| {
         let p = ds.join("state/trajectory_healthy.json");
         let mut t = read_json(&p);
@@ -229,6 +276,30 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
             .any(|p| p.contains("0000099.json") && p.contains("beyond")),
         "{:?}",
         v.problems
+    );
+
+    // Planted ids far beyond the design's (500 and 1e18, issue 33), beside 99: a resume
+    // indexes the design's four records only.
+    for id in [500u64, 1_000_000_000_000_000_000] {
+        let mut s = read_json(&ds.join("records/0000001.json"));
+        s["labels"]["record_id"] = id.into();
+        s["labels"]["file"] = format!("signals/{id:07}.parquet").into();
+        write_json(&ds.join(format!("records/{id:07}.json")), &s);
+        std::fs::copy(
+            ds.join("signals/0000001.parquet"),
+            ds.join(format!("signals/{id:07}.parquet")),
+        )
+        .unwrap();
+    }
+    let r = run(d.path());
+    assert!(r.status.success(), "{}", stderr(&r));
+    let (h, rows) = common::read_csv(&ds.join("index.csv"));
+    let id = h.iter().position(|c| c == "record_id").unwrap();
+    let ids: Vec<&str> = rows.iter().map(|r| r[id].as_str()).collect();
+    assert_eq!(
+        ids,
+        ["0", "1", "2", "3"],
+        "only the design's records are indexed"
     );
 
     // The check is counted against the run budget before any record is read (issue

@@ -128,6 +128,16 @@ fn bad_histories_and_options_exit_2_and_write_nothing() {
             "row 3 (line 4): `input_speed_hz`",
         ),
         ("0,-5,30\n1,-5,30\n", "no time under load"),
+        // Issue 33: 1e307 N m and 1e308 Hz were read, giving `inf` in the spectrum and
+        // null shares with exit 0; each column now has its range.
+        (
+            "0,10,30\n1,1e307,30\n2,10,30\n",
+            "row 2 (line 3): `torque_nm` = 1e307 is out of range",
+        ),
+        (
+            "0,10,30\n1,10,1e308\n2,10,30\n",
+            "row 2 (line 3): `input_speed_hz` = 1e308 is out of range",
+        ),
     ] {
         let h = dir.path().join("h.csv");
         std::fs::write(&h, format!("{header}{body}")).unwrap();

@@ -95,6 +95,26 @@ fn bad_signal_chains_exit_2_naming_the_key_and_the_limit() {
             "30000",
         ],
     );
+    // Issue 33: a mode at 5e-324 Hz and accelerances of 1e308 gave empty channels and
+    // null indicators with exit 0; each is now refused naming its entry and range.
+    let tiny = dir.path().join("tiny.toml");
+    std::fs::write(&tiny, "sensors = [\"top\"]\n[[mode]]\nfrequency_hz = 5e-324\ndamping_ratio = 0.03\ngains_per_kg = [[0, 0.1, 0, 0.05]]\n").unwrap();
+    rejected(
+        &["signals", "--transfer-path", tiny.to_str().unwrap()],
+        &["mode 1", "`frequency_hz` = 5e-324", "[0.01, 1e7] Hz"],
+    );
+    let huge = dir.path().join("huge.csv");
+    std::fs::write(&huge, "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n100,top,pinion_y,1e308,0\n200,top,pinion_y,1,1e308\n").unwrap();
+    rejected(
+        &["signals", "--transfer-path", huge.to_str().unwrap()],
+        &[
+            "line 2",
+            "`real_m_per_s2_per_n` = 1e308",
+            "line 3",
+            "`imag_m_per_s2_per_n` = 1e308",
+            "+-1e6",
+        ],
+    );
     // An FRF table with unsorted or negative frequencies.
     let frf = dir.path().join("frf.csv");
     std::fs::write(&frf, "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n100,top,pinion_y,1,0\n50,top,pinion_y,1,0\n-1,top,gear_y,1,0\n").unwrap();

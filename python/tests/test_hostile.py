@@ -217,6 +217,54 @@ def test_values_python_would_coerce_are_refused_by_type(tmp_path, call, name):
     assert not (tmp_path / "d").exists()
 
 
+def _list(n, start, step):
+    return [start + step * i for i in range(n)]
+
+
+@pytest.mark.parametrize(
+    "design, needle",
+    [
+        # 8192 states x 65536 speeds x 65536 loads x 524288 realisations = 2^64 records:
+        # the count wrapped to 0 and the interpreter died on a 256 TiB allocation.
+        (
+            {
+                "run_to_failure": {"states": 8192},
+                "operating": {
+                    "input_speed_hz": _list(65536, 10.0, 1e-3),
+                    "load_torque_nm": _list(65536, 10.0, 1e-3),
+                },
+                "records": {"noise_realisations": 524288},
+            },
+            "2^53",
+        ),
+        # One 10 s record at 10 MHz ran 54 s and aborted at 4 GiB.
+        (
+            {
+                "set": ["signals.sampling_rate_hz=1e7", "signals.record_length=10"],
+                "records": {"disk_budget_gib": 1000},
+            },
+            "budget",
+        ),
+    ],
+    ids=["records_2_64", "record_10_mhz"],
+)
+def test_a_dataset_too_large_is_refused_from_python_before_it_runs(tmp_path, design, needle):
+    """Issue 33: from Python these designs killed the interpreter; each is now an error
+    naming what is too large, raised before the folder exists."""
+    with pytest.raises(gw.CaseError, match=re.escape(needle)):
+        quickly(lambda: gw.dataset(design, tmp_path / "d"), seconds=30.0)
+    assert not (tmp_path / "d").exists()
+
+
+def test_the_largest_seed_is_accepted_as_a_float_too(tmp_path):
+    """Issue 33: 2^53 written as a float was refused though the message names it."""
+    design = {**_TINY_DESIGN, "seed": 9.007199254740992e15}
+    r = gw.dataset(design, tmp_path / "d")
+    assert (tmp_path / "d" / "index.csv").exists(), r
+    with pytest.raises(gw.CaseError, match=re.escape("[0, 9007199254740992]")):
+        gw.dataset({**_TINY_DESIGN, "seed": 9.007199254740994e15}, tmp_path / "e")
+
+
 def test_a_string_future_cycle_count_is_refused():
     with pytest.raises(TypeError, match="future_from_cycles"):
         gw.predict(gw.Case.paper(), None, limit_um=10.0, cycles=4e4, future_from_cycles="2e4")

@@ -130,6 +130,9 @@ impl Job for SignalsJob {
             None => WearState::new(model.grid.len()),
         };
         let rec = record_case(&model, &setup, &new).map_err(|e| JobError::Failed(e.into()))?;
+        rec.record
+            .check_finite("the signals record")
+            .map_err(|e| JobError::Failed(anyhow::Error::msg(e)))?;
         let harmonics = self.case.signals.mesh_harmonics.max(1) as usize;
         // Judged by effect, as the model judges its teeth: zero errors, zero-depth
         // faults and zero reliefs leave the new, perfect teeth.

@@ -137,6 +137,15 @@ impl SpeedUnit {
         }
     }
 
+    /// `hz` (Hz) in this unit.
+    pub(crate) fn from_hz(self, hz: f64) -> f64 {
+        match self {
+            SpeedUnit::Hz => hz,
+            // 1 Hz = 60 rpm.
+            SpeedUnit::Rpm => hz * 60.0,
+        }
+    }
+
     /// The name of an input speed in this unit, as keys and columns spell it.
     pub(crate) fn input_speed_key(self) -> &'static str {
         match self {

@@ -7,6 +7,9 @@
 //! before anything is counted, every problem naming the row (1-based data row and file
 //! line), the column and the valid range:
 //! - a value that is not a finite number (NaN, inf, empty): a gap in the record;
+//! - a value outside its column's range ([`TIME_LIMIT_S`], [`TORQUE_LIMIT_NM`],
+//!   [`SPEED_LIMIT_HZ`]): beyond any drivetrain, and where the sums the load spectrum is
+//!   counted from (durations, torque times time) would overflow to inf;
 //! - time not strictly increasing (a logger restart, a file joined out of order);
 //! - an interval longer than the gap limit (by default [`DEFAULT_GAP_FACTOR`] times the
 //!   median interval): missing data, whose time at level nobody knows.
@@ -16,6 +19,16 @@ use crate::config::operating::SpeedUnit;
 /// A gap: an interval this many times the median interval (a logger at a fixed rate
 /// never exceeds 1; variable-rate logging on change stays within a few).
 pub const DEFAULT_GAP_FACTOR: f64 = 10.0;
+
+/// Largest |time| of a sample, s (about 31 700 years): a record's intervals and
+/// durations stay far from overflow.
+pub const TIME_LIMIT_S: f64 = 1e12;
+/// Largest |torque| of a sample, N m: the top of `operating.load_torque_nm`'s range (a
+/// 10 MW drive at 10 rpm carries about 9.5e6 N m on its slow shaft).
+pub const TORQUE_LIMIT_NM: f64 = 1e7;
+/// Largest |input speed| of a sample, Hz: the top of `operating.input_speed_hz`'s range
+/// (60 000 rpm).
+pub const SPEED_LIMIT_HZ: f64 = 1000.0;
 
 /// Most problems listed before the rest of the file is left unchecked.
 const MAX_PROBLEMS: usize = 20;
@@ -151,6 +164,28 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
             get(c.torque, "torque_nm"),
             get(c.speed, c.speed_unit.input_speed_key()),
         );
+        let speed_limit = c.speed_unit.from_hz(SPEED_LIMIT_HZ);
+        let bounds = [
+            (t, "time_s", TIME_LIMIT_S),
+            (q, "torque_nm", TORQUE_LIMIT_NM),
+            (f, c.speed_unit.input_speed_key(), speed_limit),
+        ];
+        let mut in_range = true;
+        for (x, name, limit) in bounds {
+            if let Some(x) = x.filter(|x| x.abs() > limit) {
+                in_range = false;
+                if problems.len() < MAX_PROBLEMS {
+                    problems.push(format!(
+                        "row {row} (line {}): `{name}` = {} is out of range: expected a number in [-{limit:e}, {limit:e}]",
+                        row + 1,
+                        crate::format::format_number(x)
+                    ));
+                }
+            }
+        }
+        if !in_range {
+            continue;
+        }
         if let (Some(t), Some(q), Some(f)) = (t, q, f) {
             if let Some(prev) = h.time_s.last() {
                 if t <= *prev && problems.len() < MAX_PROBLEMS {
@@ -263,6 +298,21 @@ mod tests {
             e.contains("rows 20 and 21") && e.contains("a gap of 61 s"),
             "{e}"
         );
+        // Issue 33: 1e307 N m and 1e308 Hz gave inf in the spectrum and null shares.
+        let e = err("time_s,torque_nm,input_speed_hz\n0,10,30\n1,1e307,30\n2,10,1e308\n");
+        assert!(
+            e.contains("row 2 (line 3): `torque_nm` = 1e307 is out of range")
+                && e.contains("[-1e7, 1e7]")
+                && e.contains("row 3 (line 4): `input_speed_hz` = 1e308"),
+            "{e}"
+        );
+        let e = err("time_s,torque_nm,input_speed_rpm\n0,10,30\n1,10,70000\n");
+        assert!(
+            e.contains("`input_speed_rpm` = 70000") && e.contains("6e4]"),
+            "{e}"
+        );
+        let e = err("time_s,torque_nm,input_speed_hz\n0,10,30\n1e300,10,30\n");
+        assert!(e.contains("`time_s` = 1e300 is out of range"), "{e}");
         let e = err("time,torque_nm,input_speed_hz\n0,10,30\n");
         assert!(e.contains("`time_s` column"), "{e}");
         let e = err("time_s,torque_nm,input_speed_hz\n0,10,30\n");

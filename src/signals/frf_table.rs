@@ -87,6 +87,13 @@ const HEADER: [&str; 5] = [
     "imag_m_per_s2_per_n",
 ];
 
+/// Largest |real| or |imaginary| part of an accelerance in a table, m/s^2 per N: the
+/// accelerance of an effective mass of 1 microgram, far beyond any structure, as a modal
+/// path's gains are bounded (`path_file`); a bearing force times it stays finite.
+const MAX_ACCELERANCE: f64 = 1e6;
+/// Highest frequency of a table's row, Hz (as a modal path's modes).
+const MAX_FREQUENCY_HZ: f64 = 1e7;
+
 /// Parse an FRF table; `source` names the file in messages. Every problem is returned,
 /// each with its line.
 pub(crate) fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<String>> {
@@ -132,10 +139,38 @@ pub(crate) fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<
                 }
             }
         };
+        // Issue 33: values of 1e308 overflowed to inf in the record (empty channels).
+        let bounded = |x: Option<f64>, what: &str, limit: f64, problems: &mut Vec<String>| {
+            x.filter(|x| {
+                let ok = x.abs() <= limit;
+                if !ok {
+                    problems.push(format!(
+                        "{at}: `{what}` = {} is out of range: expected a number within +-{limit:e}",
+                        crate::format::format_number(*x)
+                    ));
+                }
+                ok
+            })
+        };
         let (f, re, im) = (
-            num(0, HEADER[0], &mut problems),
-            num(3, HEADER[3], &mut problems),
-            num(4, HEADER[4], &mut problems),
+            bounded(
+                num(0, HEADER[0], &mut problems),
+                HEADER[0],
+                MAX_FREQUENCY_HZ,
+                &mut problems,
+            ),
+            bounded(
+                num(3, HEADER[3], &mut problems),
+                HEADER[3],
+                MAX_ACCELERANCE,
+                &mut problems,
+            ),
+            bounded(
+                num(4, HEADER[4], &mut problems),
+                HEADER[4],
+                MAX_ACCELERANCE,
+                &mut problems,
+            ),
         );
         let Some(j) = INPUTS.iter().position(|n| *n == &rec[2]) else {
             problems.push(format!(
@@ -207,6 +242,28 @@ mod tests {
         assert_eq!(t.at(0, 1, 201.0), Complex64::new(0.0, 0.0));
         assert_eq!(t.at(0, 0, 150.0), Complex64::new(0.0, 0.0));
         assert_eq!(t.max_frequency_hz(), 200.0);
+    }
+
+    #[test]
+    fn values_beyond_any_structure_are_refused_with_their_lines() {
+        // Issue 33: accelerances of 1e308 gave inf in the record (empty channels).
+        let text = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n\
+                    100,top,pinion_y,1e308,0\n200,top,pinion_y,1,-2e6\n3e7,top,pinion_y,1,0\n";
+        let e = parse_frf_table(text, "frf.csv").unwrap_err();
+        assert_eq!(e.len(), 3, "{e:?}");
+        assert!(
+            e[0].contains("line 2") && e[0].contains("`real_m_per_s2_per_n` = 1e308"),
+            "{e:?}"
+        );
+        assert!(e[1].contains("line 3") && e[1].contains("+-1e6"), "{e:?}");
+        assert!(
+            e[2].contains("line 4") && e[2].contains("`frequency_hz` = 30000000"),
+            "{e:?}"
+        );
+        // The edges are accepted.
+        let ok = "frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n\
+                  0,top,pinion_y,1e6,-1e6\n1e7,top,pinion_y,-1e6,1e6\n";
+        assert!(parse_frf_table(ok, "frf.csv").is_ok());
     }
 
     #[test]

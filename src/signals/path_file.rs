@@ -13,6 +13,7 @@
 
 use super::frf_table::parse_frf_table;
 use super::transfer::{PathModel, StructuralMode, TransferPath};
+use crate::format::format_number;
 use serde::Deserialize;
 
 #[derive(Debug, Deserialize)]
@@ -30,6 +31,13 @@ struct ModeEntry {
     damping_ratio: f64,
     gains_per_kg: Vec<Vec<f64>>,
 }
+
+/// Lowest natural frequency of a mode of a modal path, Hz: no structure a sensor is
+/// mounted on has a mode slower than this, and its square stays far from underflow.
+const MIN_MODE_HZ: f64 = 0.01;
+/// Lowest modal damping ratio of a modal path (structures: 1e-4 to 0.1): keeps the
+/// resonant accelerance g / (2 zeta) finite.
+const MIN_DAMPING_RATIO: f64 = 1e-6;
 
 /// Parse a transfer path from the text of `name` (`.csv`: FRF table, otherwise modal
 /// TOML). Every problem names the file and the entry.
@@ -62,16 +70,23 @@ pub(crate) fn parse_transfer_path(text: &str, name: &str) -> Result<TransferPath
     let mut modes = Vec::new();
     for (r, m) in f.modes.iter().enumerate() {
         let at = format!("{name}, mode {}", r + 1);
-        if !(m.frequency_hz.is_finite() && m.frequency_hz > 0.0 && m.frequency_hz <= 1e7) {
+        // Issue 33: a mode at 5e-324 Hz squared to 0 and gave 0/0 at the record's zero
+        // frequency (empty channels, null indicators); bounded where every accelerance
+        // is finite (`modal_accelerance`: |H| <= g / (2 zeta) at resonance, at most 5e11
+        // m/s^2/N with the gains' 1e6).
+        if !(m.frequency_hz.is_finite() && (MIN_MODE_HZ..=1e7).contains(&m.frequency_hz)) {
             problems.push(format!(
-                "{at}: `frequency_hz` = {} is invalid: expected a number in (0, 1e7]",
-                m.frequency_hz
+                "{at}: `frequency_hz` = {} is invalid: expected a number in [{MIN_MODE_HZ}, 1e7] Hz",
+                format_number(m.frequency_hz)
             ));
         }
-        if !(m.damping_ratio.is_finite() && m.damping_ratio > 0.0 && m.damping_ratio < 1.0) {
+        if !(m.damping_ratio.is_finite()
+            && m.damping_ratio >= MIN_DAMPING_RATIO
+            && m.damping_ratio < 1.0)
+        {
             problems.push(format!(
-                "{at}: `damping_ratio` = {} is invalid: expected a number in (0, 1)",
-                m.damping_ratio
+                "{at}: `damping_ratio` = {} is invalid: expected a number in [{MIN_DAMPING_RATIO:e}, 1)",
+                format_number(m.damping_ratio)
             ));
         }
         if m.gains_per_kg.len() != f.sensors.len() {
@@ -143,6 +158,36 @@ mod tests {
         let e = parse_transfer_path(bad, "path.toml").unwrap_err();
         assert_eq!(e.len(), 3, "{e:?}");
         assert!(e[0].contains("mode 1") && e[0].contains("`frequency_hz` = -3"));
+    }
+
+    #[test]
+    fn modes_are_bounded_where_every_accelerance_is_finite() {
+        // Issue 33: 5e-324 Hz gave 0/0 at the zero frequency (empty channels).
+        let mode = |f: &str, z: &str| {
+            format!("sensors = [\"top\"]\n[[mode]]\nfrequency_hz = {f}\ndamping_ratio = {z}\ngains_per_kg = [[1e6, -1e6, 1e6, 1e6]]\n")
+        };
+        let e = parse_transfer_path(&mode("5e-324", "0.03"), "p.toml").unwrap_err();
+        assert!(
+            e[0].contains("`frequency_hz` = 5e-324") && e[0].contains("[0.01, 1e7]"),
+            "{e:?}"
+        );
+        let e = parse_transfer_path(&mode("3000", "1e-300"), "p.toml").unwrap_err();
+        assert!(
+            e[0].contains("`damping_ratio`") && e[0].contains("[1e-6, 1)"),
+            "{e:?}"
+        );
+        // At the accepted edges, the accelerance is finite at zero frequency, at the
+        // resonance (the largest, g / (2 zeta)) and far above it.
+        for (f, z) in [("0.01", "1e-6"), ("1e7", "1e-6"), ("0.01", "0.999")] {
+            let p = parse_transfer_path(&mode(f, z), "p.toml").unwrap();
+            let fr: f64 = f.parse().unwrap();
+            for at in [0.0, fr, 1e-3 * fr, 1e3 * fr, 1e7] {
+                for j in 0..4 {
+                    let h = p.accelerance(0, j, at);
+                    assert!(h.re.is_finite() && h.im.is_finite(), "{f} {z} at {at}: {h}");
+                }
+            }
+        }
     }
 
     #[test]

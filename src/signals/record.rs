@@ -84,6 +84,31 @@ impl Record {
         n as f64 / self.sampling_rate_hz
     }
 
+    /// The first sample that is not a finite number, as (channel name, or `tachometer`,
+    /// and sample index), or None: a record holding one is never written (issue 33: its
+    /// channels came out empty and its indicators null, and a dataset dropped it from its
+    /// index with exit 0). Checked after [`Self::round_to_stored`], where a value beyond
+    /// float32's range has become infinite.
+    pub fn non_finite(&self) -> Option<(String, usize)> {
+        let bad = |v: &[f64]| v.iter().position(|x| !x.is_finite());
+        self.channels
+            .iter()
+            .find_map(|(name, v)| bad(v).map(|i| (name.clone(), i)))
+            .or_else(|| bad(&self.tachometer_v).map(|i| ("tachometer".to_string(), i)))
+    }
+
+    /// The error of a record holding a non-finite sample ([`Self::non_finite`]) made for
+    /// `what` (a state, a command), naming the channel and the sample; Ok otherwise.
+    pub fn check_finite(&self, what: &str) -> Result<(), String> {
+        match self.non_finite() {
+            None => Ok(()),
+            Some((channel, i)) => Err(format!(
+                "{what}: the record's channel `{channel}` is not a finite number at sample {i} (t = {} s): the transfer path or the response overflows; check the path's gains and modes",
+                crate::format::shown(self.time_s(i))
+            )),
+        }
+    }
+
     /// Round every sample to float32 (step 6 of the module docs), as the record's files
     /// hold it (`super::files`); a second call changes nothing.
     pub fn round_to_stored(&mut self) {
@@ -276,6 +301,27 @@ mod tests {
         // a = A cos(w t + phase): the in-phase and quadrature parts over one period.
         let (re, im) = (2.0 * a_cos / per as f64, -2.0 * a_sin / per as f64);
         ((re * re + im * im).sqrt(), im.atan2(re))
+    }
+
+    #[test]
+    fn a_record_with_a_sample_beyond_float32_is_named_not_written() {
+        // A value finite as f64 but beyond float32's 3.4e38 becomes infinite when stored.
+        let mut r = Record {
+            sampling_rate_hz: 1000.0,
+            channels: vec![("a".into(), vec![1.0, 2.0]), ("b".into(), vec![0.0, 1e39])],
+            tachometer_v: vec![0.0, 5.0],
+        };
+        assert_eq!(r.non_finite(), None);
+        r.round_to_stored();
+        assert_eq!(r.non_finite(), Some(("b".to_string(), 1)));
+        let e = r.check_finite("state 3, record 7").unwrap_err();
+        assert!(
+            e.contains("state 3, record 7") && e.contains("`b`") && e.contains("sample 1"),
+            "{e}"
+        );
+        r.channels[1].1[1] = 0.0;
+        r.tachometer_v[0] = f64::NAN;
+        assert_eq!(r.non_finite(), Some(("tachometer".to_string(), 0)));
     }
 
     #[test]

@@ -59,6 +59,8 @@ pub(crate) fn state_files(
     let inputs = state_inputs(job, ix, &model)?;
     state_records(&inputs, job.plan, p, ix, &mut |labels, rec| {
         let id = labels.record_id;
+        rec.check_finite(&format!("state {p}, record {id}"))
+            .map_err(anyhow::Error::msg)?;
         let signal = record_parquet(&rec, unit, Some(&serde_json::to_value(&labels)?))?;
         let csv = if d.csv {
             Some(record_table(&rec, unit).to_csv()?)
@@ -186,6 +188,8 @@ fn planetary_state_files(
     let inputs = planetary_inputs(job, ix, &model)?;
     let csv = job.req.design.csv;
     planetary_state_records(&inputs, job.plan, p, ix, &mut |labels, rec| {
+        rec.check_finite(&format!("state {p}, record {}", labels.record_id))
+            .map_err(anyhow::Error::msg)?;
         let signal = planetary_record_parquet(&rec, &serde_json::to_value(&labels)?)?;
         let csv = if csv {
             Some(planetary_record_csv(&rec)?)

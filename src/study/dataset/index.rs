@@ -72,7 +72,7 @@ pub const LIMITING_MEMBER_COLUMN: (&str, &str, &str) = (
 pub const PLANETARY_FAULT_COLUMNS: [(&str, &str, &str); 7] = [
     ("fault_member", "-", "the member whose tooth has the fault the record's set models (sun, planet, ring); empty without one"),
     ("fault_planet", "-", "the faulty planet (1-based) of a planet's fault; 0 otherwise"),
-    ("fault_tooth", "-", "the faulty tooth, 0-based (docs/MODEL.md 12.13); -1 without a fault"),
+    ("fault_tooth", "-", "the faulty tooth, 0-based (docs/MODEL.md 9.5 for a pair, 12.13 for a planetary set's member); -1 without a fault"),
     ("fault_kind", "-", "the fault's kind (crack, spall, broken_tip); empty without one"),
     ("fault_crack_depth_mm", "mm", "a crack's depth from the root along its path; 0 for another kind or none"),
     ("fault_spall_depth_um", "um", "a spall's depth; 0 for another kind or none"),
@@ -141,6 +141,77 @@ fn planetary_fault_columns(
     }
 }
 
+/// (column, unit, meaning) of a pair's or a train's fault columns (a dataset with a
+/// condition whose case has `[[fault]]`; after the label columns): what the record's model
+/// applies, read from its case's tables, so that the free-text `fault` and `severity`
+/// labels are never the only statement of it. A record's sidecar holds every table
+/// (`labels.faults`); the columns give the count and the first table.
+pub const PAIR_FAULT_COLUMNS: [(&str, &str, &str); 8] = [
+    ("fault_count", "-", "the number of `[[fault]]` tables of the record's case (0 without one); the columns after it describe the first, the sidecar's `labels.faults` all of them"),
+    ("fault_gear", "-", "the gear whose tooth has the (first) fault: pinion or gear; empty without one"),
+    ("fault_stage", "-", "the train stage (1-based) of the (first) fault; 0 for a single pair or without one"),
+    ("fault_tooth", "-", "the faulty tooth, 0-based (docs/MODEL.md 9.5 for a pair, 12.13 for a planetary set's member); -1 without a fault"),
+    ("fault_kind", "-", "the fault's kind (crack, spall, broken_tip); empty without one"),
+    ("fault_crack_depth_mm", "mm", "a crack's depth from the root along its path; 0 for another kind or none"),
+    ("fault_spall_depth_um", "um", "a spall's depth; 0 for another kind or none"),
+    ("fault_removed_height_mm", "mm", "a broken tip's removed height; 0 for another kind or none"),
+];
+
+/// A pair's or train's [`PAIR_FAULT_COLUMNS`], when any record's case has a fault.
+fn pair_fault_columns(
+    rows: &[RecordLabels],
+    cols: &mut Vec<Column>,
+    units: &mut Vec<(String, String)>,
+) {
+    use crate::config::teeth::{FaultKind, FaultTable};
+    if rows.iter().all(|l| l.faults.is_empty()) {
+        return;
+    }
+    fn first(l: &RecordLabels) -> Option<&crate::config::teeth::FaultTable> {
+        l.faults.first()
+    }
+    let text = |g: &dyn Fn(&FaultTable) -> String| {
+        ColumnData::Text(
+            rows.iter()
+                .map(|l| first(l).map_or(String::new(), g))
+                .collect(),
+        )
+    };
+    // A size column holds its own kind's size only (a key of another kind is not read).
+    let size = |kind: FaultKind, g: &dyn Fn(&FaultTable) -> Option<f64>| {
+        let value = |f: &FaultTable| {
+            if f.kind == kind {
+                g(f).unwrap_or(0.0)
+            } else {
+                0.0
+            }
+        };
+        ColumnData::F64(rows.iter().map(|l| first(l).map_or(0.0, value)).collect())
+    };
+    for (name, unit, _) in PAIR_FAULT_COLUMNS {
+        let data = match name {
+            "fault_count" => ColumnData::I64(rows.iter().map(|l| l.faults.len() as i64).collect()),
+            "fault_gear" => text(&|f| f.gear.name().into()),
+            "fault_stage" => ColumnData::I64(
+                rows.iter()
+                    .map(|l| first(l).and_then(|f| f.stage).unwrap_or(0))
+                    .collect(),
+            ),
+            "fault_tooth" => ColumnData::I64(
+                rows.iter()
+                    .map(|l| first(l).map_or(-1, |f| f.tooth))
+                    .collect(),
+            ),
+            "fault_kind" => text(&|f| f.kind.name().into()),
+            "fault_crack_depth_mm" => size(FaultKind::Crack, &|f| f.crack_depth_mm),
+            "fault_spall_depth_um" => size(FaultKind::Spall, &|f| f.spall_depth_um),
+            _ => size(FaultKind::BrokenTip, &|f| f.removed_height_mm),
+        };
+        units.push((name.to_string(), unit.to_string()));
+        cols.push(Column::new(name, data));
+    }
+}
+
 /// The meaning of a member column `<prefix>_<member>`.
 fn member_column_meaning(name: &str) -> Option<String> {
     MEMBER_COLUMNS.iter().find_map(|(prefix, _, m)| {
@@ -198,7 +269,12 @@ pub fn column_meaning(name: &str) -> String {
     if let Some(m) = member_column_meaning(name) {
         return m;
     }
-    if let Some((_, _, m)) = PLANETARY_FAULT_COLUMNS.iter().find(|(n, _, _)| *n == name) {
+    // The names both tables share (tooth, kind, sizes) mean the same in both.
+    if let Some((_, _, m)) = PLANETARY_FAULT_COLUMNS
+        .iter()
+        .chain(&PAIR_FAULT_COLUMNS)
+        .find(|(n, _, _)| *n == name)
+    {
         return (*m).to_string();
     }
     for shaft in ["pinion", "gear"] {
@@ -469,6 +545,9 @@ pub fn index_columns(
         .collect();
     stage_columns(rows, &mut cols, &mut units);
     member_columns(rows, &mut cols, &mut units);
+    if rows.iter().all(|l| l.members.is_empty()) {
+        pair_fault_columns(rows, &mut cols, &mut units);
+    }
     planetary_fault_columns(rows, &mut cols, &mut units);
     // A planetary set's records have no shaft TSA (`super::planetary_records`).
     let shafts: &[(&str, bool)] = match rows.first() {
