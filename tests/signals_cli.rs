@@ -129,3 +129,48 @@ fn bad_signal_chains_exit_2_naming_the_key_and_the_limit() {
         ],
     );
 }
+
+#[test]
+fn the_signals_budget_counts_the_transfer_paths_sensors() {
+    // Issue 33: 5000 modal sensors were estimated at 0.08 GB and 0.15 s and aborted after
+    // 66 s at 3.8 GB; 1000 sensors of an FRF table ran 35 s on the same estimate. Each
+    // sensor is a channel of the record: counted, refused before anything runs.
+    let dir = tempfile::tempdir().unwrap();
+    let n = 5000;
+    let sensors: Vec<String> = (0..n).map(|i| format!("\"s{i}\"")).collect();
+    let gains = vec!["[0.0075, 0.025, 0.005, 0.02]"; n].join(", ");
+    let modal = dir.path().join("path.toml");
+    std::fs::write(
+        &modal,
+        format!(
+            "sensors = [{}]\n[[mode]]\nfrequency_hz = 2100.0\ndamping_ratio = 0.02\ngains_per_kg = [{gains}]\n",
+            sensors.join(", ")
+        ),
+    )
+    .unwrap();
+    rejected(
+        &["signals", "--transfer-path", modal.to_str().unwrap()],
+        &["over its budget", "memory", "the transfer path's sensors"],
+    );
+    // 1000 sensors of a table at a tenth of the budget (0.2 GB, 60 s): the one-channel
+    // count (0.08 GB, 0.15 s) fitted it; the record of 1000 channels does not.
+    let mut table =
+        String::from("frequency_hz,sensor,input,real_m_per_s2_per_n,imag_m_per_s2_per_n\n");
+    for i in 0..1000 {
+        for f in [100, 2000, 5000] {
+            table.push_str(&format!("{f},s{i},pinion_y,0.01,0.001\n"));
+        }
+    }
+    let frf = dir.path().join("frf.csv");
+    std::fs::write(&frf, table).unwrap();
+    rejected(
+        &[
+            "signals",
+            "--transfer-path",
+            frf.to_str().unwrap(),
+            "--budget-scale",
+            "0.1",
+        ],
+        &["over its budget", "the transfer path's sensors"],
+    );
+}

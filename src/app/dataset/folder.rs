@@ -423,8 +423,24 @@ pub fn copy_dataset(
             )
         })
     };
-    let (mut n, mut skipped) = (0, Vec::new());
-    for s in sidecars(from).into_iter().filter(|s| s.dataset_key == key) {
+    let cars = sidecars(from);
+    // A sidecar file that does not read as a record's (over its cap, not JSON, under
+    // another record's name): its record is left out and named, not lost unnamed.
+    let mut skipped: Vec<String> = names_in(from, "records")
+        .into_iter()
+        .filter(|n| n.ends_with(".json"))
+        .filter(|n| !cars.iter().any(|s| sidecar_rel(s.labels.record_id) == format!("records/{n}")))
+        .map(|n| {
+            format!(
+                "records/{} of {}: not a readable sidecar (over {} MiB, not a record's labels, or under another record's name): its record is left out (counted missing)",
+                crate::format::clip(&n, crate::format::SHOWN_CHARS),
+                from.display(),
+                MAX_SIDECAR_BYTES >> 20
+            )
+        })
+        .collect();
+    let mut n = 0;
+    for s in cars.into_iter().filter(|s| s.dataset_key == key) {
         let id = s.labels.record_id;
         let signal = read_in(from, &s.labels.file).filter(|b| sha256_hex(b) == s.signal_sha256);
         let car = read_in(from, &sidecar_rel(id));
