@@ -52,12 +52,13 @@ fn every_bin_of_a_spectrum_is_counted() {
     // spectrum and 10 alone, 10 um / 0.5 um + 1 updates each, the first cold.
     let u = one.wear_updates_dynamic;
     let ratio = dyn_s(&e) / dyn_s(&one);
-    let (c, w) = (
-        super::super::steady_states::cold_periods(&ten),
-        super::super::steady_states::warm_periods(&ten),
-    );
-    let want = ((10.0 + 3.0 + 20.0) * c + (10.0 * (u - 1.0) + 20.0 * 20.0) * w)
-        / (2.0 * ((1.0 + 3.0) * c + (u - 1.0) * w));
+    use super::super::steady_states::evaluations_seconds;
+    let want = evaluations_seconds(
+        &ten,
+        10.0 + 3.0 + 20.0,
+        10.0 * (u - 1.0) + 20.0 * 20.0,
+        10.0 * u + 20.0 * 21.0,
+    ) / evaluations_seconds(&Case::default(), 2.0 * (1.0 + 3.0), 2.0 * (u - 1.0), 2.0 * u);
     assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
     // A long spectrum over the budget names the bins.
     let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
