@@ -58,7 +58,12 @@ fn every_bin_of_a_spectrum_is_counted() {
         10.0 + 3.0 + 20.0,
         10.0 * (u - 1.0) + 20.0 * 20.0,
         10.0 * u + 20.0 * 21.0,
-    ) / evaluations_seconds(&Case::default(), 2.0 * (1.0 + 3.0), 2.0 * (u - 1.0), 2.0 * u);
+    ) / evaluations_seconds(
+        &Case::default(),
+        2.0 * (1.0 + 3.0),
+        2.0 * (u - 1.0),
+        2.0 * u,
+    );
     assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
     // A long spectrum over the budget names the bins.
     let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
