@@ -7,14 +7,16 @@
 //! P_max = `numerics.max_mesh_periods`, N = `stiffness.table_points_per_mesh_period`,
 //! G = `wear.points_per_profile`:
 //!
-//! - one dynamic evaluation integrates S_d (P_c + P_e) steps, with S_d = max(S,
+//! - one dynamic evaluation integrates at most S_d (P_c + P_e) steps, with S_d = max(S,
 //!   [`adaptive_steps_per_period`](super::evaluation::adaptive_steps_per_period)) (the
 //!   error control adds steps to the S grid nodes where the dynamics need them; the bound
-//!   is measured, see the constant), P_c the periods until steady. P_c is not known
-//!   before the run: the estimate takes P_c = min(P_max, [`PERIODS_TO_SETTLE_PER_DECADE`]
-//!   x log10(1 / tolerance)) (the built-in case settles in 17-18 periods at 1e-6: 30
-//!   leaves margin), and separately requires that one evaluation that never settles,
-//!   S (P_max + P_e) steps, fits the budget (where such a case ends, with an error);
+//!   is measured, see the constant), P_c = min(P_max, [`PERIODS_TO_SETTLE_PER_DECADE`]
+//!   x log10(1 / tolerance)) the periods until steady (a bound: 30 at 1e-6): the
+//!   estimate's step counts, and one evaluation that never settles, S_d (P_max + P_e)
+//!   steps, must fit the budget (where such a case ends, with an error). Their time is
+//!   counted by [`super::steady_states`]: each wear study's first update, `dynamics` and the wear
+//!   states of `run` a cold search (a few periods), every later update warm (one or two),
+//!   each period at its measured CPU time at the case's speed and numerics;
 //! - a quasi-static evaluation solves 2 S equilibria;
 //! - a wear study makes U = 1 + ceil(C / n) updates (C = `wear.total_cycles`), the block n
 //!   being `wear.block_cycles` cut to `wear.threshold_um` / (largest wear per cycle), at
@@ -22,9 +24,9 @@
 //!   Archard's k p0 s at the nominal load shared by paper eq. (7), Hertz pressure p0 and
 //!   sliding distance s at nominal speeds along the path of contact, times
 //!   [`DYNAMIC_WEAR_FACTOR`] for the dynamic mode;
-//! - time = 2 N t_table + E_d S (P_c + P_e) t_step + E_q S t_qs + checkpoint writing, with
-//!   the rates of the reference machine (2-core AMD EPYC, docs/PERFORMANCE.md):
-//!   t_step = 3 us per integrator step (12.5 ms for 4 200 steps), t_qs = 2.4 us,
+//! - time = 2 N t_table + the dynamic evaluations ([`super::steady_states`]) + E_q S
+//!   t_qs + checkpoint writing, with the rates of the reference machine (2-core AMD EPYC,
+//!   docs/PERFORMANCE.md): t_qs = 2.4 us,
 //!   t_table = 2 us per table point; the checkpoint of each mode gains one record of
 //!   (4 G + 4 S_d) numbers, 32 bytes each, per update (an append-only log;
 //!   docs/RELIABILITY.md) written at 100 MB/s, plus 2 ms of fsync per update;
@@ -40,9 +42,8 @@
 
 use super::cost::{Estimate, Term};
 use super::evaluation::{
-    axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, recorded_periods,
-    train_factor, train_record_factor, wear_updates, DYNAMIC_WEAR_FACTOR,
-    PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
+    dynamic_steps_per_period, nominal_wear_per_cycle_m, recorded_periods, train_record_factor,
+    wear_updates, DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP,
     SECONDS_PER_TABLE_POINT,
 };
 use crate::config::case::Case;
@@ -120,6 +121,9 @@ struct Work {
     dynamic_modes: f64,
     quasi_modes: f64,
     extra_evals: f64,
+    /// Of `extra_evals`, the cold ones (the job's own evaluations and each life run's
+    /// first update); the rest are the life runs' warm updates.
+    extra_cold: f64,
     kept: f64,
     /// Of `extra_evals`, the updates of the life table's runs under a spectrum, and
     /// whether they run the dynamic mode (`run`, or `wear` with it) or the quasi-static.
@@ -159,17 +163,18 @@ impl Work {
         // `run` and `wear` under a spectrum add the life table: a run to the wear limit
         // under the spectrum (every bin) and one at each bin alone, blocks cut by the
         // threshold only. A train's lives are read from its run itself (`duty::train_life`).
-        let life_updates = match (&case.load_spectrum, job) {
+        let (life_runs, life_updates) = match (&case.load_spectrum, job) {
             (Some(s), Job::Run | Job::Wear { .. }) if case.stage.is_empty() => {
                 let per_run = (s.life_wear_limit_um / case.wear.threshold_um).ceil() + 1.0;
-                2.0 * bins * per_run
+                (2.0 * bins, 2.0 * bins * per_run)
             }
-            _ => 0.0,
+            _ => (0.0, 0.0),
         };
         Self {
             dynamic_modes: dynamic_modes * bins,
             quasi_modes: quasi_modes * bins,
             extra_evals: extra_evals + life_updates,
+            extra_cold: extra_evals + life_runs,
             kept,
             life_updates,
             life_dynamic: dynamic_modes > 0.0,
@@ -206,6 +211,10 @@ struct Counts {
     /// Dynamic evaluations, and wear records over every mode.
     evals: f64,
     records: f64,
+    /// Of `evals`, the cold ones (from the static equilibrium) and the warm ones
+    /// ([`super::steady_states`]).
+    cold: f64,
+    warm: f64,
 }
 
 /// Estimate the cost of `job` on `case` (validated). Cheap: the geometry and a few dozen
@@ -232,6 +241,9 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
     );
     let work = Work::of(case, job, bins);
     let evals = work.dynamic_modes * u_d + work.extra_evals;
+    // Each wear study's first update is cold, the others warm; so are a life run's.
+    let cold = work.dynamic_modes + work.extra_cold;
+    let warm = work.dynamic_modes * (u_d - 1.0) + (work.extra_evals - work.extra_cold);
     let modes_updates = [(work.dynamic_modes, u_d), (work.quasi_modes, u_q)];
     let records: f64 = modes_updates.iter().map(|(m, u)| m * u).sum();
     let c = Counts {
@@ -242,6 +254,8 @@ pub fn estimate(case: &Case, job: Job) -> Estimate {
         u_q,
         evals,
         records,
+        cold,
+        warm,
     };
     let mut terms = evaluation_terms(case, job, &c);
     terms.extend(record_terms(case, job, &c));
@@ -299,12 +313,11 @@ fn model_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
     } else {
         terms.extend(super::teeth::budget_term(
             case,
-            c.evals,
-            c.work.quasi_modes * c.u_q + stiffness_te,
+            (c.evals, c.work.quasi_modes * c.u_q + stiffness_te),
             c.work.kept + stiffness_te,
             c.records,
-            p.s_dyn,
-            p.s,
+            (p.s_dyn, p.s),
+            super::steady_states::period_seconds(case),
         ));
     }
     terms.extend(super::planetary::fault_term(
@@ -336,6 +349,7 @@ fn model_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
             ),
             c.records,
             (p.s_dyn, p.s),
+            super::steady_states::samples_per_period(case),
             (CHECKPOINT_BYTES_PER_NUMBER, DISK_BYTES_PER_S),
         ));
     }
@@ -356,13 +370,12 @@ fn evaluation_terms(case: &Case, job: Job, c: &Counts) -> Vec<Term> {
     if c.evals > 0.0 {
         terms.push(Term {
             what: "the dynamic evaluations",
-            seconds: c.evals
-                * p.s_dyn
-                * (p.p_c + p.p_e)
-                * SECONDS_PER_STEP
-                * train_factor(case)
-                * axial_factor(case)
-                * super::planetary::step_factor(case),
+            seconds: super::steady_states::evaluations_seconds(
+                case,
+                c.cold,
+                c.warm,
+                w.dynamic_modes * c.u_d + w.life_updates,
+            ),
             bytes: 0.0,
             keys: if w.dynamic_modes > 0.0 {
                 &[

@@ -86,17 +86,23 @@ const SLOWEST_MESH_PERIOD_S: f64 = 0.25;
 /// the built-in one's; the general estimates ([`super::evaluation::SECONDS_PER_STEP`]) stay the bound for
 /// any case.
 pub fn run_to_failure_scale(case: &Case) -> f64 {
-    let teeth = case.gear.teeth_pinion.max(1) as f64;
-    let t_m = 1.0 / (teeth * case.operating.input_speed_hz);
-    let speed = if t_m.is_finite() {
-        (t_m.clamp(MEASURED_MESH_PERIOD_S, SLOWEST_MESH_PERIOD_S) / MEASURED_MESH_PERIOD_S).cbrt()
-    } else {
-        (SLOWEST_MESH_PERIOD_S / MEASURED_MESH_PERIOD_S).cbrt()
-    };
     let steps = dynamic_steps_per_period(&case.numerics)
         / dynamic_steps_per_period(&NumericsSection::default());
     let periods = excitation_periods_of(case).max(1) as f64;
-    speed * steps.max(1.0) * periods * train_factor(case) * axial_factor(case)
+    speed_scale(case) * steps.max(1.0) * periods * train_factor(case) * axial_factor(case)
+}
+
+/// The speed part of [`run_to_failure_scale`]: (T_m / T_30Hz)^(1/3) for the mesh period
+/// T_m of the case's first pinion, clamped to [T_30Hz, 0.25 s] (also
+/// `super::steady_states`, the wear study's periods).
+pub(crate) fn speed_scale(case: &Case) -> f64 {
+    let teeth = case.gear.teeth_pinion.max(1) as f64;
+    let t_m = 1.0 / (teeth * case.operating.input_speed_hz);
+    if t_m.is_finite() {
+        (t_m.clamp(MEASURED_MESH_PERIOD_S, SLOWEST_MESH_PERIOD_S) / MEASURED_MESH_PERIOD_S).cbrt()
+    } else {
+        (SLOWEST_MESH_PERIOD_S / MEASURED_MESH_PERIOD_S).cbrt()
+    }
 }
 
 /// Samples of the period a wear update spreads over the slices, on the built-in grid

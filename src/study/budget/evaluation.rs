@@ -166,6 +166,12 @@ pub fn recorded_periods(case: &Case, evaluated_periods: f64) -> f64 {
     (evaluated_periods / first).ceil().max(1.0)
 }
 
+/// c_1, the first mesh's periods in a train's base period (1 for a single pair or a
+/// train whose base period cannot be counted).
+pub fn first_mesh_periods(case: &Case) -> f64 {
+    mesh_counts(case).map_or(1.0, |c| c.first().copied().unwrap_or(1.0).max(1.0))
+}
+
 /// N_k of each mesh of a train's base period (`dynamics::grid::chain_mesh_counts`), or
 /// None when it overflows.
 fn mesh_counts(case: &Case) -> Option<Vec<f64>> {

@@ -110,7 +110,10 @@ fn contact_passes(case: &Case) -> f64 {
 }
 
 /// The helical wear's term: `updates` = (dynamic, quasi-static) updates over every mode,
-/// `records` the records kept, `samples` = (dynamic, quasi-static) samples of a period,
+/// `records` the records kept, `samples` = (dynamic, quasi-static) samples of a period
+/// held at once, `dynamic_samples` those a dynamic update spreads at most (its time:
+/// `super::steady_states::samples_per_period`, the steps of a worn period at the case's
+/// speed),
 /// `checkpoint` the bytes per number written and the disk's rate (bytes/s); None for a
 /// spur pair. Under a load spectrum (docs/MODEL.md 11.7) `updates` and `records` count
 /// every bin's (each bin's response spreads its own slice contacts), and the bins of an
@@ -124,16 +127,18 @@ pub fn budget_term(
     updates: (f64, f64),
     records: f64,
     samples: (f64, f64),
+    dynamic_samples: f64,
     checkpoint: (f64, f64),
 ) -> Option<Term> {
     let per_dyn = slice_contacts_per_update(case, samples.0)?;
     let per_quasi = slice_contacts_per_update(case, samples.1)?;
+    let spread_dyn = slice_contacts_per_update(case, dynamic_samples)?;
     let passes = if wear_or_run {
         contact_passes(case)
     } else {
         1.0
     };
-    let contacts = (updates.0 * per_dyn + updates.1 * per_quasi) * passes;
+    let contacts = (updates.0 * spread_dyn + updates.1 * per_quasi) * passes;
     let in_flight = [(updates.0, per_dyn), (updates.1, per_quasi)]
         .iter()
         .filter(|(u, _)| *u > 0.0)

@@ -7,6 +7,7 @@
 //!   from (steps of a dynamic evaluation, wear per cycle, updates of a wear study);
 //! - [`case_jobs`]: `stiffness`, `dynamics`, `wear`, `run` and one case of a sweep (the
 //!   formulas), and the most a wear checkpoint can hold;
+//! - [`steady_states`]: the time of their dynamic evaluations, cold and warm;
 //! - [`teeth`]: what a tooth-resolved case adds to them;
 //! - [`helical`]: what a helical pair's wear per slice adds to `wear`;
 //! - [`sweep`]: `sweep` (sampled, not case by case) and `sweep-merge`;
@@ -38,6 +39,7 @@ pub mod planetary;
 pub mod prognostics;
 pub mod running_in;
 pub mod signals;
+pub mod steady_states;
 pub mod sweep;
 pub mod teeth;
 pub mod train_prognostics;

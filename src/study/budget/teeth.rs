@@ -3,7 +3,7 @@
 //! period adds to a run ([`super::case_jobs::estimate`] adds the term).
 
 use super::cost::Term;
-use super::evaluation::{SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP};
+use super::evaluation::SECONDS_PER_QUASI_STATIC_STEP;
 use crate::config::case::{Case, Member};
 
 /// Bytes of one recorded sample of the response alone (280 bytes, doubled for vector
@@ -139,29 +139,48 @@ pub fn train_stiffness_term(case: &Case, s: f64) -> Option<Term> {
     })
 }
 
-/// Mesh periods of run-in the budget allows a tooth-resolved evaluation (the measured
-/// run-in of the paper's case is 8; slow decay at high speed raises it).
+/// Mesh periods of run-in the budget allows a tooth-resolved evaluation at the default
+/// `numerics.steady_state_tolerance` 1e-6 and 30 Hz (the measured run-in of the paper's
+/// case is 8; slow decay at high speed raises it).
 const RUN_IN_PERIODS: f64 = 30.0;
+/// Mesh frequency of the paper's pair at 30 Hz, where `RUN_IN_PERIODS` was measured, Hz.
+const RUN_IN_MESH_HZ: f64 = 570.0;
+
+/// Periods of run-in of a tooth-resolved evaluation (`dynamics::hunting::run_in_periods`:
+/// W = 1.2 ln(1 / tol) / (sigma T), T the mesh period and sigma the model's slowest decay
+/// rate): `RUN_IN_PERIODS` at 1e-6 and 570 Hz, scaled as W with ln(1 / tol) and with the
+/// mesh frequency (sigma held), never below it, at most P.
+fn run_in_periods(case: &Case, p: f64) -> f64 {
+    let decades = (1.0 / case.numerics.steady_state_tolerance).log10() / 6.0;
+    let mesh_hz = case.operating.input_speed_hz * case.gear.teeth_pinion.max(1) as f64;
+    let speed = if mesh_hz.is_finite() {
+        mesh_hz / RUN_IN_MESH_HZ
+    } else {
+        1.0
+    };
+    (RUN_IN_PERIODS * decades.max(1.0) * speed.max(1.0)).min(p)
+}
 
 /// Bytes of the path samples of a recorded sample (two pairs of 72 bytes, doubled for
 /// growth), on top of the response's [`RESPONSE_BYTES_PER_SAMPLE`].
 const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
 
 /// The run budget's term for a tooth-resolved case (None when every tooth is alike):
-/// every dynamic evaluation integrates P - 1 more mesh periods and a run-in of
-/// `RUN_IN_PERIODS`, each quasi-static one solves P - 1 more periods, a kept response
-/// records P periods instead of `numerics.evaluated_mesh_periods` (with its contacts'
-/// path), and each wear record holds every tooth's profile and increment.
-/// `dyn_evals`, `quasi_evals`: evaluations; `kept`: responses kept at once; `records`:
-/// wear records; `s_dyn`, `s`: steps of a dynamic and a quasi-static mesh period.
+/// every dynamic evaluation, cold or warm, integrates P - 1 more mesh periods and a
+/// run-in ([`run_in_periods`]) at `period_s` CPU seconds a period
+/// (`super::steady_states::period_seconds`), each quasi-static one solves P - 1 more
+/// periods, a kept response records P periods instead of
+/// `numerics.evaluated_mesh_periods` (with its contacts' path), and each wear record
+/// holds every tooth's profile and increment. `(dyn_evals, quasi_evals)`: evaluations;
+/// `kept`: responses kept at once; `records`: wear records; `(s_dyn, s)`: steps of a
+/// dynamic and a quasi-static mesh period.
 pub fn budget_term(
     case: &Case,
-    dyn_evals: f64,
-    quasi_evals: f64,
+    (dyn_evals, quasi_evals): (f64, f64),
     kept: f64,
     records: f64,
-    s_dyn: f64,
-    s: f64,
+    (s_dyn, s): (f64, f64),
+    period_s: f64,
 ) -> Option<Term> {
     if !case.has_per_tooth_inputs() {
         return None;
@@ -170,12 +189,12 @@ pub fn budget_term(
     let extra = (p - 1.0).max(0.0);
     // A train: P and the run-in counted in its base periods (run-in at most P,
     // `dynamics::hunting::run_in_periods`), each costing `train_factor` single-pair mesh
-    // periods; its wear records hold every tooth of each faulty stage.
+    // periods (in `period_s`); its wear records hold every tooth of each faulty stage.
     let train = !case.stage.is_empty();
-    let run_in = match (p > 1.0, train) {
-        (false, _) => 0.0,
-        (true, false) => RUN_IN_PERIODS,
-        (true, true) => RUN_IN_PERIODS.min(p),
+    let run_in = if p > 1.0 {
+        run_in_periods(case, p)
+    } else {
+        0.0
     };
     let scale = super::evaluation::train_factor(case);
     // Periods the response records without the fault: a train's in base periods, as P is.
@@ -196,9 +215,9 @@ pub fn budget_term(
         return Some(Term {
             what:
                 "the tooth fault of a train stage (the faulty gear's teeth over the train's period)",
-            seconds: (dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
-                + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP)
-                * scale,
+            // `period_s` is of a base period already (`train_factor` in it).
+            seconds: dyn_evals * (extra + run_in) * period_s
+                + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP * scale,
             bytes: kept
                 * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)
                     - s_dyn * p_e * RESPONSE_BYTES_PER_SAMPLE)
@@ -216,7 +235,7 @@ pub fn budget_term(
     let teeth = (case.gear.teeth_pinion + case.gear.teeth_gear) as f64;
     Some(Term {
         what: "the tooth-resolved mesh (every tooth's own excitation over its period)",
-        seconds: dyn_evals * s_dyn * (extra + run_in) * SECONDS_PER_STEP
+        seconds: dyn_evals * (extra + run_in) * period_s
             + quasi_evals * s * extra * SECONDS_PER_QUASI_STATIC_STEP,
         bytes: kept
             * (recorded * (RESPONSE_BYTES_PER_SAMPLE + PATH_BYTES_PER_SAMPLE)

@@ -46,12 +46,24 @@ fn every_bin_of_a_spectrum_is_counted() {
             .unwrap()
             .seconds
     };
-    // Run: 1 wear study of U updates plus 3 wear states, twice for the paper's case (its
-    // contact twin); ten bins (no longer the paper's case): 10 U + 3, and the life
-    // runs: 10 bins under the spectrum and 10 alone, 10 um / 0.5 um + 1 updates.
+    // Run: 1 wear study of U updates (the first cold, U - 1 warm) plus 3 wear states
+    // (cold), twice for the paper's case (its contact twin); ten bins (no longer the
+    // paper's case): 10 studies and 3 wear states, and the life runs: 10 bins under the
+    // spectrum and 10 alone, 10 um / 0.5 um + 1 updates each, the first cold.
     let u = one.wear_updates_dynamic;
     let ratio = dyn_s(&e) / dyn_s(&one);
-    let want = (10.0 * u + 3.0 + 20.0 * 21.0) / (2.0 * (u + 3.0));
+    use super::super::steady_states::evaluations_seconds;
+    let want = evaluations_seconds(
+        &ten,
+        10.0 + 3.0 + 20.0,
+        10.0 * (u - 1.0) + 20.0 * 20.0,
+        10.0 * u + 20.0 * 21.0,
+    ) / evaluations_seconds(
+        &Case::default(),
+        2.0 * (1.0 + 3.0),
+        2.0 * (u - 1.0),
+        2.0 * u,
+    );
     assert!((ratio - want).abs() < 1e-12, "{ratio} {want}");
     // A long spectrum over the budget names the bins.
     let many = vec!["{torque_nm = 60, input_speed_hz = 30, share = 0.0001}"; 10_000].join(", ");
