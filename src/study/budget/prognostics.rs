@@ -30,7 +30,7 @@
 //!   run: when wear measurements with a given noise bound how deep those runs wear
 //!   (`prognostics::check::observed_depth_bound_m`), each is counted as a run to that
 //!   depth (one update from rest, one per block of `wear.block_cycles`, two per
-//!   threshold of depth: [`BLOCKS_PER_THRESHOLD_OF_DEPTH`]), never more than at the
+//!   threshold of depth: `BLOCKS_PER_THRESHOLD_OF_DEPTH`), never more than at the
 //!   prior's largest k; otherwise at the prior's largest k (the most updates: the
 //!   surrogate's runs at that k go on to the stop depth). (Issue 33: counted at the
 //!   prior's largest k always, `calibrate` of k from wear measurements was counted at
