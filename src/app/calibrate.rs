@@ -118,6 +118,7 @@ impl CalibrateJob {
                 walkers: o.walkers,
                 steps: o.steps,
                 check_runs: o.check_runs,
+                check_depth_bound_m: crate::prognostics::check::observed_depth_bound_m(&obs),
             },
         );
         budget::check_estimate(&e, self.budget.as_ref())?;

@@ -36,6 +36,44 @@ pub(crate) struct CalibrationCheck {
     pub quantities: Vec<ObservableCheck>,
 }
 
+/// Standard deviations of a measurement's noise above its value that the posterior's
+/// 95 % of k is taken not to exceed at that measurement ([`observed_depth_bound_m`]).
+const DEPTH_SIGMAS: f64 = 3.0;
+
+/// The deepest wear, m, that the true runs of [`check_calibration`] (at the posterior's
+/// 5, 50 and 95 % of k, to the last observation's cycles H) can reach as the wear
+/// measurements with a given noise bound it: the largest (y_i + 3 sigma_i) H / c_i over
+/// the wear series (`max_wear_pinion_um`, `max_wear_gear_um`, any stage) whose `sigma_`
+/// column is given, for the measurements at c_i > 0. Why: a posterior fits the wear it
+/// was given (Gaussian noise of known sigma: a model value 3 sigma above a measurement
+/// costs 4.5 in log-likelihood at that point alone), so the runs at its quantiles wear no
+/// deeper at c_i; and a run's deepest wear is concave in its cycles (its rate falls as
+/// the pair runs in, `study::budget::running_in`), so from c_i to H it grows at most by H
+/// / c_i. None (nothing bounds the posterior before it is computed: the run budget then
+/// counts the runs at the prior's largest k) when no wear series has its noise given:
+/// indicators alone, or a wear series whose noise is inferred (its scale free, a broad
+/// posterior is possible). Not a bound when the observations contradict each other
+/// (another series pulls the posterior away from the wear measured: the fit check
+/// reports it).
+pub(crate) fn observed_depth_bound_m(obs: &Observations) -> Option<f64> {
+    let h = obs.max_cycles();
+    obs.series
+        .iter()
+        .filter(|s| s.quantity.is_wear())
+        .filter_map(|s| {
+            let sigma = s.sigma.as_ref()?;
+            (0..s.values.len())
+                .filter(|&i| s.cycles[i] > 0.0)
+                .map(|i| {
+                    (s.values[i] + DEPTH_SIGMAS * sigma[i]).max(0.0) * (h / s.cycles[i]).max(1.0)
+                })
+                .reduce(f64::max)
+        })
+        .reduce(f64::max)
+        .map(|um| um * 1e-6)
+        .filter(|d| d.is_finite())
+}
+
 /// The parameters at posterior quantile p of k, the others at their medians.
 pub(crate) fn theta_at_k_quantile(cal: &Calibration, p: f64) -> Theta {
     let mut t = cal.prior.params.map(|x| x.lo);
@@ -206,4 +244,39 @@ pub(crate) fn check_prediction(
             })
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::prognostics::observations::Series;
+
+    fn series(quantity: Quantity, sigma: Option<Vec<f64>>) -> Series {
+        Series {
+            quantity,
+            cycles: vec![0.0, 1e4, 2e4],
+            values: vec![0.0, 2.0, 3.0],
+            sigma,
+        }
+    }
+
+    #[test]
+    fn the_wear_measured_with_its_noise_bounds_the_check_runs() {
+        // Wear to 4e4 cycles (the velocity's last reading) measured at 1e4 and 2e4 with
+        // sigma 0.1 um: (2.3 um) x 4 and (3.3 um) x 2, the larger 9.2 um (the reading at
+        // 0 cycles bounds nothing).
+        let mut vib = series(Quantity::VelocityRms, None);
+        vib.cycles[2] = 4e4;
+        let wear = series(Quantity::MaxWearPinion, Some(vec![0.1; 3]));
+        let obs = Observations {
+            series: vec![vib.clone(), wear],
+        };
+        let d = observed_depth_bound_m(&obs).unwrap();
+        assert!((d - 9.2e-6).abs() < 1e-15, "{d}");
+        // Indicators alone, or wear of inferred noise: nothing bounds the posterior.
+        let free = series(Quantity::MaxWearPinion, None);
+        for s in [vec![vib.clone()], vec![vib, free]] {
+            assert_eq!(observed_depth_bound_m(&Observations { series: s }), None);
+        }
+    }
 }

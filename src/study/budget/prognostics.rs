@@ -25,7 +25,16 @@
 //!   [`MCMC_BYTES_PER_POSITION`] (plus 24 bytes per step reserved per walker).
 //! - **Bands and checks**: samples x 101 cycle counts per observed quantity for the
 //!   posterior band; the surrogate check reads every sample at every observation per
-//!   check run, and makes its true runs (at the prior's largest k: the most updates).
+//!   check run, and makes its true runs to the last observation at the posterior's 5,
+//!   50 and 95 % of k (`prognostics::check`). The posterior is not known before the
+//!   run: when wear measurements with a given noise bound how deep those runs wear
+//!   (`prognostics::check::observed_depth_bound_m`), each is counted as a run to that
+//!   depth (one update from rest, one per block of `wear.block_cycles`, two per
+//!   threshold of depth: `BLOCKS_PER_THRESHOLD_OF_DEPTH`), never more than at the
+//!   prior's largest k; otherwise at the prior's largest k (the most updates: the
+//!   surrogate's runs at that k go on to the stop depth). (Issue 33: counted at the
+//!   prior's largest k always, `calibrate` of k from wear measurements was counted at
+//!   6.6 times its CPU time, its check runs at 10.5 s against 0.15 s.)
 //!   The fit check reads every sample at every observation once and solves two band
 //!   edges there ([`T_FIT_MEMBER`] per sample and observation).
 //! - **A gear train** (`[[stage]]`): its runs' updates follow the fastest mesh per input
@@ -123,17 +132,47 @@ fn surrogate_terms(
     }]
 }
 
-/// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them.
+/// Updates of the fastest-wearing point's threshold blocks per threshold of the deepest
+/// wear a run reaches: the loop cuts a block where its fastest point has worn
+/// `wear.threshold_um`, and that point is not always the deepest (the pinion's root runs
+/// in and another point takes over). Measured 2026-11-30 on the paper's pair (dynamic
+/// wear to 4e4 cycles, threshold 0.5 um): at k = 2.5e-16 m^2/N 10 updates to 4.80 um
+/// (one a threshold of depth), at 2.5e-15 42 to 15.8 um and at 2.5e-14 208 to 77.6 um
+/// (where the teeth lose contact): 1.33 and 1.34 updates a threshold of depth with the
+/// 4 of the block cycles, which one a threshold would undercount (37 and 161 counted);
+/// 2 counts 69 and 317.
+const BLOCKS_PER_THRESHOLD_OF_DEPTH: f64 = 2.0;
+
+/// Updates of a wear run to `h` cycles whose deepest wear stays within `depth_m`
+/// (`study::wear_loop::block_length`): one update from rest and one per block, a block
+/// ending after `wear.block_cycles` (at most ceil(h / m) of them) or where its fastest
+/// point has worn the threshold epsilon (at most [`BLOCKS_PER_THRESHOLD_OF_DEPTH`] x
+/// ceil(depth / epsilon)).
+fn updates_to_depth(case: &Case, h: f64, depth_m: f64) -> f64 {
+    let w = &case.wear;
+    let threshold = w.threshold_um * 1e-6;
+    1.0 + (h / w.block_cycles).ceil() + BLOCKS_PER_THRESHOLD_OF_DEPTH * (depth_m / threshold).ceil()
+}
+
+/// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them;
+/// or, when `depth_m` bounds how deep they wear ([`updates_to_depth`]), of that run's
+/// updates if fewer (counted at the duty's rates by [`Duties::run`] at k = 0, every
+/// block `wear.block_cycles` long).
 fn true_runs(
     case: &Case,
     prior: &ParameterSpan,
-    (h, future): (f64, Option<FutureDutyJob>),
+    (h, future, depth_m): (f64, Option<FutureDutyJob>, Option<f64>),
     n: f64,
     what: &'static str,
 ) -> Term {
     let (kept, bin) = record_numbers(case);
-    let c =
-        Duties::of(case, prior, future).run(case, prior.wear_coefficient_max_m2_per_n, h.max(1.0));
+    let duties = Duties::of(case, prior, future);
+    let mut c = duties.run(case, prior.wear_coefficient_max_m2_per_n, h.max(1.0));
+    if let Some(u) = depth_m.map(|d| updates_to_depth(case, h.max(1.0), d)) {
+        if u < c.updates {
+            c = duties.run(case, 0.0, (u - 1.0) * case.wear.block_cycles);
+        }
+    }
     let in_flight = n.min(rayon::current_num_threads() as f64);
     Term {
         what,
@@ -165,6 +204,10 @@ pub struct CalibrationJob {
     pub steps: usize,
     /// True wear runs that check the surrogate (at most 3 are counted).
     pub check_runs: usize,
+    /// The deepest wear the check runs can reach as the wear measurements bound it, m
+    /// (`prognostics::check::observed_depth_bound_m`); None: counted at the prior's
+    /// largest k.
+    pub check_depth_bound_m: Option<f64>,
 }
 
 /// The estimated cost of `calibrate` over the prior's span (see the module docs).
@@ -199,7 +242,12 @@ pub fn estimate_calibration(
     terms.push(Term {
         what: "the posterior bands",
         seconds: band_values * (T_VALUE + T_BAND),
-        bytes: band_values * 16.0 * 2.0 + samples * 100.0,
+        // One quantity's values at a time (`app::calibrate` keeps each band and drops
+        // its values before the next): 16 bytes each (`Option<f64>`), twice for the
+        // band's sorted copies and margin. (It was every quantity's at once: 0.013 GB
+        // of the 0.092 GB counted for `calibrate` of k from two quantities, whose
+        // peak is 0.024 GB, issue 33.)
+        bytes: samples * BAND_POINTS * 16.0 * 2.0 + samples * 100.0,
         keys: &["samples"],
     });
     terms.push(Term {
@@ -213,7 +261,7 @@ pub fn estimate_calibration(
         terms.push(true_runs(
             case,
             prior,
-            (j.max_cycles, None),
+            (j.max_cycles, None, j.check_depth_bound_m),
             checks,
             "the surrogate check's true runs",
         ));
@@ -264,7 +312,7 @@ pub(crate) fn estimate_prediction(
         vec![true_runs(
             case,
             span,
-            (j.cycles, j.future),
+            (j.cycles, j.future, None),
             n,
             "one true wear run per sample",
         )]
@@ -290,7 +338,7 @@ pub(crate) fn estimate_prediction(
         terms.push(true_runs(
             case,
             span,
-            (j.cycles, j.future),
+            (j.cycles, j.future, None),
             j.check_runs.min(3) as f64,
             "the surrogate check's true runs",
         ));
@@ -339,7 +387,41 @@ mod tests {
             walkers: 32,
             steps: 2000,
             check_runs: 3,
+            check_depth_bound_m: None,
         }
+    }
+
+    #[test]
+    fn check_runs_bounded_by_the_wear_measured_are_counted_to_that_depth() {
+        // The built-in case's k alone, observations to 4e4 cycles whose wear bounds the
+        // check runs to 4.95 um: each is a run of 1 + 4 (blocks of 1e4 cycles) + 2 x 10
+        // (thresholds of 0.5 um) = 25 updates, at the rates of a run-to-failure job
+        // (`chains::run_to_failure_seconds`, the prior's torque the case's).
+        let case = Case::default();
+        let prior = Prior::from_case(&case).unwrap();
+        let term = |d: Option<f64>| {
+            let e = estimate_calibration(
+                &case,
+                &prior,
+                &CalibrationJob {
+                    check_depth_bound_m: d,
+                    ..job()
+                },
+            );
+            let t = e.terms.iter().find(|t| t.what.contains("true runs"));
+            t.unwrap().seconds
+        };
+        let bounded = term(Some(4.95e-6));
+        let expected = 3.0 * crate::study::budget::chains::run_to_failure_seconds(&case, 25.0);
+        assert!(
+            (bounded - expected).abs() < 1e-9 * expected,
+            "{bounded} against {expected}"
+        );
+        // Unbounded (indicators alone): at the prior's largest k, to the stop depth;
+        // a depth past it is counted as that.
+        let at_hi = term(None);
+        assert!(at_hi > 10.0 * bounded, "{at_hi}");
+        assert_eq!(term(Some(1.0)), at_hi);
     }
 
     #[test]
