@@ -63,6 +63,28 @@ mod tests_nonlinear;
 pub use rk4::Rk4;
 pub use sdirk::{Sdirk, SdirkOptions, Trial};
 
+/// Runs `$make` with `$dim` bound to the state dimension of size `$n`: `Const<N>` (stack
+/// vectors and matrices, loops of known length) when `$n` is one of the listed sizes,
+/// `Dyn($n)` (heap) otherwise. Each listed size compiles the generic code once more, so
+/// the lists hold the sizes users meet (`dynamics::period`, `dynamics::planetary_steady`);
+/// the arithmetic is the same on both (nalgebra's products run the same loops in the same
+/// order whatever the dimension type), so the results are bit for bit those of `Dyn`.
+macro_rules! with_state_size {
+    ($n:expr, [$($size:literal),*], $dim:ident => $make:expr) => {
+        match $n {
+            $($size => {
+                let $dim = nalgebra::Const::<$size>;
+                $make
+            })*
+            n => {
+                let $dim = nalgebra::Dyn(n);
+                $make
+            }
+        }
+    };
+}
+pub(crate) use with_state_size;
+
 /// A state vector of dimension `D`.
 pub type Vector<D> = OVector<f64, D>;
 /// A square matrix of dimension `D`.

@@ -17,6 +17,7 @@ pub mod params;
 pub mod period;
 pub mod period_search;
 pub mod planetary_dynamic;
+mod planetary_grid;
 pub mod planetary_lumped;
 pub mod planetary_steady;
 pub mod quasi_static;

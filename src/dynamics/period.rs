@@ -20,14 +20,15 @@
 
 use super::integrator::tableau::ESDIRK32;
 use super::integrator::{
-    IntegratorError, Matrix, OdeSystem, Sdirk, SdirkOptions, StepStats, Trial, Vector,
+    with_state_size, IntegratorError, Matrix, OdeSystem, Sdirk, SdirkOptions, StepStats, Trial,
+    Vector,
 };
 use super::model::{ContactFrame, ContactModes, GearSystem, MeshState, ModeSwitch};
 pub use super::observer::PeriodObserver;
 use super::state_scales::state_scales;
 pub use super::step_failure::StepFailure;
 use nalgebra::allocator::Allocator;
-use nalgebra::{Const, DefaultAllocator, Dim, Dyn, U1};
+use nalgebra::{DefaultAllocator, Dim, U1};
 
 /// Factorised iteration matrices a train's stepper keeps for recurring step lengths
 /// ([`SdirkOptions::kept_matrices`]): between two events the error control alternates
@@ -117,18 +118,19 @@ pub trait PeriodIntegrator {
 }
 
 /// The period stepper of `sys` over `nodes` with the relative local error `tolerance`:
-/// on stack vectors for the single pair's 16 states (the paper's case keeps its speed),
-/// on heap vectors of the train's size otherwise.
+/// on stack vectors sized at compile time for the state sizes users meet, on heap
+/// vectors of the system's size otherwise ([`super::integrator::with_state_size`]). The
+/// sizes: the single spur pair (16 states, the paper's), a helical pair with its axial
+/// coordinates (20), a two-stage spur train or a helical pair that also tilts (28), a
+/// two-stage train with axial coordinates on its helical stages (36), a three-stage
+/// spur train (40).
 pub fn period_stepper<'s, 'a>(
     sys: &'s GearSystem<'a>,
     nodes: Vec<f64>,
     tolerance: f64,
 ) -> Result<Box<dyn PeriodIntegrator + 's>, IntegratorError> {
-    let n = sys.states();
-    Ok(if n == 16 {
-        Box::new(PeriodStepper::new(sys, Const::<16>, nodes, tolerance)?)
-    } else {
-        Box::new(PeriodStepper::new(sys, Dyn(n), nodes, tolerance)?)
+    with_state_size!(sys.states(), [16, 20, 28, 36, 40], dim => {
+        Ok(Box::new(PeriodStepper::new(sys, dim, nodes, tolerance)?))
     })
 }
 

@@ -30,7 +30,8 @@ use super::excitation::PairGap;
 use super::integrator::{Matrix, OdeSystem, Vector};
 use super::planetary_lumped::PlanetaryLumped;
 use crate::stiffness::planetary_mesh::PlanetaryMeshes;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DMatrix, DVector, DefaultAllocator, Dim, U1};
 
 /// Indices of a member's three coordinates, as in `planetary_lumped`: carrier 0, ring 3,
 /// sun 6, planet n 9 + 3n.
@@ -442,15 +443,19 @@ impl PlanetaryDynamic {
     }
 }
 
-impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
+impl<D: Dim> OdeSystem<D> for PlanetaryDynamic
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// [q', M^-1 (f - sum (k d + c d') g)], m/s and m/s^2.
-    fn rhs(&mut self, t: f64, y: &Vector<nalgebra::Dyn>) -> Vector<nalgebra::Dyn> {
+    fn rhs(&mut self, t: f64, y: &Vector<D>) -> Vector<D> {
         let n = self.dofs();
         let (q, v) = y.as_slice().split_at(n);
         let cycles = self.mesh_frequency_hz * t;
         // The generalised forces accumulate in the acceleration half of the output (no
         // scratch vector per call).
-        let mut out = DVector::zeros(2 * n);
+        let (dim, _) = y.shape_generic();
+        let mut out = Vector::<D>::zeros_generic(dim, U1);
         out.rows_mut(n, n).copy_from(&self.force_n);
         for e in &self.elements {
             let d = e.compression(q) - self.worn(e, cycles);
@@ -472,13 +477,14 @@ impl OdeSystem<nalgebra::Dyn> for PlanetaryDynamic {
     }
 
     /// [[0, I], [-M^-1 K(t), -M^-1 C]] with the meshes in contact in `y`, 1/s and 1/s^2.
-    fn jacobian(&mut self, t: f64, y: &Vector<nalgebra::Dyn>) -> Option<Matrix<nalgebra::Dyn>> {
+    fn jacobian(&mut self, t: f64, y: &Vector<D>) -> Option<Matrix<D>> {
         let n = self.dofs();
         let q = &y.as_slice()[..n];
         let cycles = self.mesh_frequency_hz * t;
         let k = self.matrix(Some(q), Some(cycles), false);
         let c = self.matrix(Some(q), Some(cycles), true);
-        let mut j = DMatrix::zeros(2 * n, 2 * n);
+        let (dim, _) = y.shape_generic();
+        let mut j = Matrix::<D>::zeros_generic(dim, dim);
         for r in 0..n {
             j[(r, n + r)] = 1.0;
             for col in 0..n {

@@ -1,6 +1,7 @@
 //! The mesh-periodic steady state of a planetary set's dynamic model
 //! (`planetary_dynamic`, docs/MODEL.md 12.5), integrated with the project's ESDIRK3(2)
-//! stepper (`integrator::Sdirk` on a `Dyn` state, the gear model's method) under the same
+//! stepper (`integrator::Sdirk`, the gear model's method; on stack vectors for 3 to 5
+//! planets, `integrator::with_state_size`) under the same
 //! local error control as `period` (step factor 0.9 err^(-1/3), clamped to [0.2, 5]).
 //!
 //! In the carrier frame every mesh's stiffness repeats with the mesh period T_m (the
@@ -24,10 +25,12 @@
 //! of locating every jump by rejected steps.
 
 use super::integrator::tableau::ESDIRK32;
-use super::integrator::{Sdirk, SdirkOptions, Vector};
+use super::integrator::{with_state_size, Sdirk, SdirkOptions, Vector};
 use super::planetary_dynamic::PlanetaryDynamic;
+use super::planetary_grid::{period_grid, Node};
 use super::shooting::{state_matrix_exp, Shooting};
-use nalgebra::{DVector, Dyn};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DVector, DefaultAllocator, Dim, U1};
 
 /// Integration and steady-state settings (from `[numerics]`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -108,8 +111,11 @@ pub enum PlanetaryDynamicsError {
 
 /// The one-period search's outcome: the stepper with its plan, the state on the orbit at
 /// t = 0, the periods integrated, the state's scales and the static deflection.
-struct Searched {
-    run: Run,
+struct Searched<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    run: Run<D>,
     z: DVector<f64>,
     periods: usize,
     scale: DVector<f64>,
@@ -123,8 +129,21 @@ pub fn solve_planetary_steady_state(
     sys: &mut PlanetaryDynamic,
     s: &PlanetarySettings,
 ) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+    // 3, 4 and 5 planets: 3 (N + 3) coordinates, twice as many states.
+    with_state_size!(2 * sys.dofs(), [36, 42, 48], dim => solve_sized(sys, s, dim))
+}
+
+/// [`solve_planetary_steady_state`] with states of dimension `dim`.
+fn solve_sized<D: Dim>(
+    sys: &mut PlanetaryDynamic,
+    s: &PlanetarySettings,
+    dim: D,
+) -> Result<PlanetaryResponse, PlanetaryDynamicsError>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     if sys.source.periods() > 1 {
-        return solve_fault_period(sys, s);
+        return solve_fault_period(sys, s, dim);
     }
     let Searched {
         mut run,
@@ -132,7 +151,7 @@ pub fn solve_planetary_steady_state(
         periods,
         scale,
         q0,
-    } = search(sys, s)?;
+    } = search(sys, s, dim)?;
     let mut y = z;
     let (samples, periodicity) = run.recorded_pass(sys, s, 1, &mut y, &scale)?;
     Ok(response(
@@ -149,10 +168,14 @@ pub fn solve_planetary_steady_state(
 
 /// The mesh-periodic orbit's state at t = 0 by the quasi-Newton shooting of the module
 /// docs, from the static equilibrium at mean stiffness.
-fn search(
+fn search<D: Dim>(
     sys: &mut PlanetaryDynamic,
     s: &PlanetarySettings,
-) -> Result<Searched, PlanetaryDynamicsError> {
+    dim: D,
+) -> Result<Searched<D>, PlanetaryDynamicsError>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     let n = sys.dofs();
     let q0 = sys
         .static_deflection()
@@ -161,16 +184,18 @@ fn search(
     let period = 1.0 / sys.mesh_frequency_hz;
     let v_scale = x_scale * 2.0 * std::f64::consts::PI * sys.mesh_frequency_hz;
     let scale = DVector::from_fn(2 * n, |i, _| if i < n { x_scale } else { v_scale });
-    let mut stepper = Sdirk::with_dimension(Dyn(2 * n), &ESDIRK32, period, newton(&scale))
-        .map_err(|e| fail(0.0, e))?;
+    let mut stepper =
+        Sdirk::with_dimension(dim, &ESDIRK32, period, newton(&scale)).map_err(|e| fail(0.0, e))?;
+    let of = |v: &DVector<f64>| Vector::<D>::from_column_slice_generic(dim, U1, v.as_slice());
     stepper
         .set_error_tolerance(
-            scale.map(|v| v * s.integration_tolerance),
-            DVector::zeros(2 * n),
+            of(&scale.map(|v| v * s.integration_tolerance)),
+            of(&DVector::zeros(2 * n)),
         )
         .map_err(|e| fail(0.0, e))?;
     let h_max = period / s.samples_per_period as f64;
     let mut run = Run {
+        dim,
         stepper,
         h_prop: h_max,
         h_max,
@@ -229,16 +254,19 @@ fn search(
 /// The response of the recorded `samples` (states at each sample's start over `recorded`
 /// mesh periods, then the end state).
 #[allow(clippy::too_many_arguments)]
-fn response(
+fn response<D: Dim>(
     sys: &PlanetaryDynamic,
     s: &PlanetarySettings,
     samples: &[Vec<f64>],
     q0: DVector<f64>,
     periods: usize,
     periodicity: f64,
-    run: &Run,
+    run: &Run<D>,
     recorded: usize,
-) -> PlanetaryResponse {
+) -> PlanetaryResponse
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     let n = sys.dofs();
     let count = s.samples_per_period * recorded;
     let dt = 1.0 / sys.mesh_frequency_hz / s.samples_per_period as f64;
@@ -287,14 +315,18 @@ fn run_in_periods(sys: &PlanetaryDynamic, tolerance: f64, periods: usize) -> usi
 /// steady-state tolerance relative to its scales (the P-period map contracts by
 /// e^(-sigma P T_m): one pass from a settled state is periodic). Every period of a pass
 /// is integrated from its own start time c T_m, so each pair meets its own teeth.
-fn solve_fault_period(
+fn solve_fault_period<D: Dim>(
     sys: &mut PlanetaryDynamic,
     s: &PlanetarySettings,
-) -> Result<PlanetaryResponse, PlanetaryDynamicsError> {
+    dim: D,
+) -> Result<PlanetaryResponse, PlanetaryDynamicsError>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     let p = sys.source.periods();
     let faulty = sys.source.clone();
     sys.source = faulty.without_fault();
-    let searched = search(sys, s);
+    let searched = search(sys, s, dim);
     sys.source = faulty;
     let Searched {
         mut run,
@@ -414,55 +446,6 @@ fn relative_change(a: &DVector<f64>, b: &DVector<f64>, scale: &DVector<f64>) -> 
         .fold(0.0, f64::max)
 }
 
-/// A node of the period's step grid (no step crosses one).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Node {
-    /// Time from the period's start, s.
-    pub t_s: f64,
-    /// One of the equally spaced sample times.
-    pub sample: bool,
-    /// A mesh's stiffness jumps here.
-    pub jump: bool,
-}
-
-/// Nodes closer than this fraction of a sample interval are one: a jump moved onto a
-/// sample time by at most 1e-6 of a sample interval changes the stiffness for that
-/// long only (an error far below the integration tolerance) and avoids slivers of steps.
-const NODE_MERGE: f64 = 1e-6;
-
-/// The step grid of one period `period_s` long: the `samples` + 1 equally spaced sample
-/// times (both ends included) and the stiffness jumps at `jump_cycles` (fractions of the
-/// period), sorted, a jump within [`NODE_MERGE`] of a sample interval from a sample
-/// marked on the sample.
-pub(crate) fn period_grid(jump_cycles: &[f64], period_s: f64, samples: usize) -> Vec<Node> {
-    let dt = period_s / samples as f64;
-    let mut grid: Vec<Node> = (0..=samples)
-        .map(|k| Node {
-            t_s: k as f64 * dt,
-            sample: true,
-            jump: false,
-        })
-        .collect();
-    for c in jump_cycles {
-        let x = c * samples as f64;
-        let k = x.round() as usize;
-        if (x - k as f64).abs() < NODE_MERGE {
-            grid[k].jump = true;
-            if k == samples {
-                grid[0].jump = true;
-            }
-        } else {
-            grid.push(Node {
-                t_s: c * period_s,
-                sample: false,
-                jump: true,
-            });
-        }
-    }
-    grid.sort_by(|a, b| a.t_s.total_cmp(&b.t_s));
-    grid
-}
-
 /// How a period chooses its steps (as the gear pair's `period::PlanMode`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum PlanMode {
@@ -483,8 +466,12 @@ enum PlanMode {
 const PLAN_DISTANCE: f64 = 1e-2;
 
 /// The stepper, its step proposal, the period's step grid and the step plan.
-struct Run {
-    stepper: Sdirk<Dyn>,
+struct Run<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    dim: D,
+    stepper: Sdirk<D>,
     h_prop: f64,
     h_max: f64,
     grid: Vec<Node>,
@@ -495,7 +482,10 @@ struct Run {
     next_plan: usize,
 }
 
-impl Run {
+impl<D: Dim> Run<D>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
     /// One recorded pass of `p` mesh periods from t = 0 and the state `y` (each period
     /// integrated from its own start c T_m, so each pair meets its own teeth): its samples,
     /// the last the state at the pass's end, and its change of state relative to `scale`
@@ -527,9 +517,11 @@ impl Run {
         &mut self,
         sys: &mut PlanetaryDynamic,
         t0: f64,
-        y: &mut Vector<Dyn>,
+        y_out: &mut DVector<f64>,
         mut rec: Option<&mut Vec<Vec<f64>>>,
     ) -> Result<(), PlanetaryDynamicsError> {
+        let mut y = Vector::<D>::from_column_slice_generic(self.dim, U1, y_out.as_slice());
+        let y = &mut y;
         self.h_prop = self.h_max;
         self.stepper.invalidate_jacobian();
         self.next_plan = 0;
@@ -551,6 +543,7 @@ impl Run {
             }
         }
         sys.decide_contact_at(None);
+        y_out.copy_from_slice(y.as_slice());
         Ok(())
     }
 
@@ -576,7 +569,7 @@ impl Run {
         sys: &mut PlanetaryDynamic,
         t0: f64,
         t: &mut f64,
-        y: &mut Vector<Dyn>,
+        y: &mut Vector<D>,
         t_end: f64,
     ) -> Result<(), PlanetaryDynamicsError> {
         let h_min = self.h_max * 1e-9;

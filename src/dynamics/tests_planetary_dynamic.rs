@@ -122,7 +122,7 @@ fn mean_state_matrix_is_the_jacobian_with_every_mesh_compressed() {
 
 #[test]
 fn the_period_grid_keeps_every_sample_and_adds_the_jumps() {
-    use super::planetary_steady::period_grid;
+    use super::planetary_grid::period_grid;
     // By hand, 4 samples over a 2 s period (0, 0.5, 1, 1.5, 2 s): the jump at 0.25
     // cycles falls on the sample at 0.5 s, the one at 0.3 cycles is a node of its own at
     // 0.6 s, the one 1e-9 cycles after 0.5 (4e-9 of a sample interval, below the merge
