@@ -15,15 +15,17 @@ pub fn stream(seed: u64, index: u64) -> ChaCha8Rng {
 /// exact as a float, so a seed survives a JSON or Python writer unchanged.
 pub const MAX_SEED: u64 = 1 << 53;
 
-/// A value that is not a seed (outside [0, 2^53] or not a whole number): the key and the
-/// value as written.
+/// A value that is not a seed (outside [0, 2^53] or not a whole number): the key, the
+/// value as written and, for a float between 2^52 and 2^53, why it is refused.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15)")]
+#[error("`{key}` = {shown} is not a seed: expected a whole number in [0, {MAX_SEED}] (0 to 2^53 inclusive, written as an integer or as a whole float such as 9.007199254740992e15){}", .why.map(|w| format!(" ({w})")).unwrap_or_default())]
 pub struct SeedError {
     /// The key (or flag) the value was given for.
     pub key: String,
     /// The value as written.
     pub shown: String,
+    /// Why a float in range is refused, when it is.
+    pub why: Option<&'static str>,
 }
 
 /// The error of a seed outside [0, 2^53] or not a whole number, naming `key` and the
@@ -32,17 +34,26 @@ fn seed_error(key: &str, shown: &str) -> SeedError {
     SeedError {
         key: key.to_string(),
         shown: shown.to_string(),
+        why: None,
     }
 }
 
-/// A seed given as a float (a TOML or Python float, IEEE 754 binary64): a whole number in
-/// [0, 2^53]. Every whole number up to 2^53 is a float, so the float is the seed it
-/// says; a literal such as the TOML float 9007199254740993.0 already is the float 2^53
-/// when it is read (binary64 is the value, as for the case file's whole-number keys,
-/// `config::parse`). Err names `key`, the value and the range.
+/// A seed given as a float (a TOML or Python float, IEEE 754 binary64): a whole number
+/// below 2^52, where a float holds every whole number and a literal with a fraction stays
+/// one, or 2^53 itself, the range's inclusive end (issue 33: the message names it, and a
+/// design's float of it was refused). Between them the floats are 2 apart, so a literal
+/// such as 4503599627370496.5 or 9007199254740991.0 reads as another whole number than
+/// the one written: refused, asking for the integer. Err names `key`, the value and the
+/// range [0, 2^53].
 pub fn seed_from_f64(key: &str, x: f64) -> Result<u64, SeedError> {
-    if x.is_finite() && x.fract() == 0.0 && (0.0..=MAX_SEED as f64).contains(&x) {
+    const EXACT: f64 = (1u64 << 52) as f64;
+    if x.is_finite() && x.fract() == 0.0 && ((0.0..EXACT).contains(&x) || x == MAX_SEED as f64) {
         Ok(x as u64)
+    } else if x.is_finite() && (EXACT..MAX_SEED as f64).contains(&x) {
+        Err(SeedError {
+            why: Some("a float from 2^52 up may be another number rounded: write it as an integer"),
+            ..seed_error(key, &format!("{x:?}"))
+        })
     } else {
         Err(seed_error(key, &format!("{x:?}")))
     }
@@ -180,6 +191,12 @@ mod tests {
         // names 9.007199254740992e15 as accepted; a design's float seed was refused);
         // the next float, 2^53 + 2, and a fraction are out.
         assert_eq!(seed_from_f64("k", 9.007199254740992e15), Ok(1 << 53));
+        // Between 2^52 and 2^53 a float may be another literal rounded (4503599627370496.5
+        // reads as 2^52): refused, asking for the integer (review finding).
+        for rounded in [4_503_599_627_370_496.0, 9_007_199_254_740_990.0] {
+            let e = seed_from_f64("k", rounded).unwrap_err().to_string();
+            assert!(e.contains("write it as an integer"), "{e}");
+        }
         for bad in [9.007199254740994e15, 0.5, -1.0, f64::NAN] {
             let e = seed_from_f64("k", bad).unwrap_err().to_string();
             assert!(

@@ -40,11 +40,23 @@ fn estimated_seconds(args: &[&str]) -> f64 {
         .find("time ~")
         .unwrap_or_else(|| panic!("{args:?}: {err}"))
         + 6;
-    let secs: String = err[at..]
+    let number: String = err[at..]
         .chars()
         .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
         .collect();
-    secs.parse().unwrap_or_else(|_| panic!("{args:?}: {err}"))
+    let t: f64 = number.parse().unwrap_or_else(|_| panic!("{args:?}: {err}"));
+    // The estimate is shown in s, min or h (`format` of the budget's message).
+    let unit: String = err[at + number.len()..]
+        .trim_start()
+        .chars()
+        .take_while(|c| c.is_alphabetic())
+        .collect();
+    match unit.as_str() {
+        "s" => t,
+        "min" => 60.0 * t,
+        "h" => 3600.0 * t,
+        u => panic!("{args:?}: unit `{u}` in {err}"),
+    }
 }
 
 /// CPU seconds of `gearwear wear --mode dynamic args` without the budget.

@@ -278,9 +278,27 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
         v.problems
     );
 
-    // Planted ids far beyond the design's (500 and 1e18, issue 33), beside 99: a resume
-    // indexes the design's four records only.
-    for id in [500u64, 1_000_000_000_000_000_000] {
+    // The check is counted against the run budget before any record is read (issue
+    // 33: it was budgeted nowhere). Its count: the kept trajectory checked (9 updates
+    // from rest, 0.27 s at the built-in case's rates) and both states recomputed, so a
+    // budget of 1 ms cannot hold it, and one of 1e-9 the default (0.6 us) refuses it
+    // naming time, while no budget lets it run. A budget that holds it changes nothing.
+    let tiny = Budget::scaled(1e-9);
+    let e = verify_folder(&design, &ds, 8, 1, Some(&tiny)).unwrap_err();
+    let m = format!("{e:#}");
+    assert!(m.contains("over its budget") && m.contains("time ~"), "{m}");
+    assert!(verify_folder(&design, &ds, 8, 1, None).is_ok());
+}
+
+#[test]
+fn records_planted_far_beyond_the_designs_ids_are_never_indexed() {
+    // Issue 33: extra records with ids 99, 500 and 1e18 appeared in the index.
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("design.toml"), DESIGN).unwrap();
+    let r = run(d.path());
+    assert!(r.status.success(), "{}", stderr(&r));
+    let ds = d.path().join("ds");
+    for id in [99u64, 500, 1_000_000_000_000_000_000] {
         let mut s = read_json(&ds.join("records/0000001.json"));
         s["labels"]["record_id"] = id.into();
         s["labels"]["file"] = format!("signals/{id:07}.parquet").into();
@@ -301,17 +319,6 @@ fn forged_records_and_trajectories_are_refused_on_resume_and_found_by_verify() {
         ["0", "1", "2", "3"],
         "only the design's records are indexed"
     );
-
-    // The check is counted against the run budget before any record is read (issue
-    // 33: it was budgeted nowhere). Its count: the kept trajectory checked (9 updates
-    // from rest, 0.27 s at the built-in case's rates) and both states recomputed, so a
-    // budget of 1 ms cannot hold it, and one of 1e-9 the default (0.6 us) refuses it
-    // naming time, while no budget lets it run. A budget that holds it changes nothing.
-    let tiny = Budget::scaled(1e-9);
-    let e = verify_folder(&design, &ds, 8, 1, Some(&tiny)).unwrap_err();
-    let m = format!("{e:#}");
-    assert!(m.contains("over its budget") && m.contains("time ~"), "{m}");
-    assert!(verify_folder(&design, &ds, 8, 1, None).is_ok());
 }
 
 /// Binomial coefficient, exact in u128 for the small sizes enumerated here.

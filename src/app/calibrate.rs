@@ -118,7 +118,16 @@ impl CalibrateJob {
                 walkers: o.walkers,
                 steps: o.steps,
                 check_runs: o.check_runs,
-                check_depth_bound_m: crate::prognostics::check::observed_depth_bound_m(&obs),
+                check_depth_bound_m: crate::prognostics::check::observed_depth_bound_m(
+                    &self.case,
+                    &obs,
+                    || {
+                        let pair = crate::geometry::GearPair::from_case(&self.case.gear).ok()?;
+                        Some(crate::study::budget::nominal_member_wear_per_cycle_m(
+                            &self.case, &pair,
+                        ))
+                    },
+                ),
             },
         );
         budget::check_estimate(&e, self.budget.as_ref())?;

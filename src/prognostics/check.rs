@@ -42,36 +42,59 @@ const DEPTH_SIGMAS: f64 = 3.0;
 
 /// The deepest wear, m, that the true runs of [`check_calibration`] (at the posterior's
 /// 5, 50 and 95 % of k, to the last observation's cycles H) can reach as the wear
-/// measurements with a given noise bound it: the largest (y_i + 3 sigma_i) H / c_i over
-/// the wear series (`max_wear_pinion_um`, `max_wear_gear_um`, any stage) whose `sigma_`
-/// column is given, for the measurements at c_i > 0. Why: a posterior fits the wear it
-/// was given (Gaussian noise of known sigma: a model value 3 sigma above a measurement
-/// costs 4.5 in log-likelihood at that point alone), so the runs at its quantiles wear no
-/// deeper at c_i; and a run's deepest wear is concave in its cycles (its rate falls as
-/// the pair runs in, `study::budget::running_in`), so from c_i to H it grows at most by H
-/// / c_i. None (nothing bounds the posterior before it is computed: the run budget then
-/// counts the runs at the prior's largest k) when no wear series has its noise given:
-/// indicators alone, or a wear series whose noise is inferred (its scale free, a broad
-/// posterior is possible). Not a bound when the observations contradict each other
-/// (another series pulls the posterior away from the wear measured: the fit check
-/// reports it).
-pub(crate) fn observed_depth_bound_m(obs: &Observations) -> Option<f64> {
+/// measurements with a given noise bound it. For each member (pinion, gear) the largest
+/// (y_i + 3 sigma_i) H / c_i over its wear series whose `sigma_` column is given, for the
+/// measurements at c_i > 0. Why: a posterior fits the wear it was given (Gaussian noise of
+/// known sigma: a model value 3 sigma above a measurement costs 4.5 in log-likelihood at
+/// that point alone), so the runs at its quantiles wear no deeper at c_i; and a run's
+/// deepest wear is concave in its cycles (its rate falls as the pair runs in,
+/// `study::budget::running_in`), so from c_i to H it grows at most by H / c_i. The wear
+/// loop ends its blocks on the deeper member, so a member not measured is bounded by the
+/// measured one times the ratio of their nominal wear per cycle (`member_rates`:
+/// quasi-static Archard at the nominal load, the pinion's and the gear's, m per pinion
+/// cycle). None (nothing bounds the posterior before it is computed: the run budget then
+/// counts the runs at the prior's largest k) when no wear series has its noise given
+/// (indicators alone, or a wear series whose noise is inferred: its scale free, a broad
+/// posterior is possible), for a gear train or a planetary set (an unmeasured stage or
+/// member may wear deeper), or when a nominal rate is not positive. Not a bound when the
+/// observations contradict each other (another series pulls the posterior away from the
+/// wear measured: the fit check reports it).
+pub(crate) fn observed_depth_bound_m(
+    case: &Case,
+    obs: &Observations,
+    member_rates: impl Fn() -> Option<(f64, f64)>,
+) -> Option<f64> {
+    if !case.stage.is_empty() || case.planetary.is_some() {
+        return None;
+    }
     let h = obs.max_cycles();
-    obs.series
-        .iter()
-        .filter(|s| s.quantity.is_wear())
-        .filter_map(|s| {
-            let sigma = s.sigma.as_ref()?;
-            (0..s.values.len())
-                .filter(|&i| s.cycles[i] > 0.0)
-                .map(|i| {
-                    (s.values[i] + DEPTH_SIGMAS * sigma[i]).max(0.0) * (h / s.cycles[i]).max(1.0)
-                })
-                .reduce(f64::max)
-        })
-        .reduce(f64::max)
-        .map(|um| um * 1e-6)
-        .filter(|d| d.is_finite())
+    let member = |q: Quantity| {
+        obs.series
+            .iter()
+            .filter(|s| s.quantity == q)
+            .filter_map(|s| {
+                let sigma = s.sigma.as_ref()?;
+                (0..s.values.len())
+                    .filter(|&i| s.cycles[i] > 0.0)
+                    .map(|i| {
+                        (s.values[i] + DEPTH_SIGMAS * sigma[i]).max(0.0)
+                            * (h / s.cycles[i]).max(1.0)
+                    })
+                    .reduce(f64::max)
+            })
+            .reduce(f64::max)
+    };
+    let (pinion, gear) = (
+        member(Quantity::MaxWearPinion),
+        member(Quantity::MaxWearGear),
+    );
+    if pinion.is_none() && gear.is_none() {
+        return None;
+    }
+    let (rp, rg) = member_rates().filter(|(p, g)| *p > 0.0 && *g > 0.0)?;
+    let pinion = pinion.or(gear.map(|g| g * rp / rg))?;
+    let gear = gear.unwrap_or(pinion * rg / rp);
+    Some(pinion.max(gear) * 1e-6).filter(|d| d.is_finite())
 }
 
 /// The parameters at posterior quantile p of k, the others at their medians.
@@ -265,18 +288,46 @@ mod tests {
         // Wear to 4e4 cycles (the velocity's last reading) measured at 1e4 and 2e4 with
         // sigma 0.1 um: (2.3 um) x 4 and (3.3 um) x 2, the larger 9.2 um (the reading at
         // 0 cycles bounds nothing).
+        let case = Case::default();
         let mut vib = series(Quantity::VelocityRms, None);
         vib.cycles[2] = 4e4;
         let wear = series(Quantity::MaxWearPinion, Some(vec![0.1; 3]));
         let obs = Observations {
-            series: vec![vib.clone(), wear],
+            series: vec![vib.clone(), wear.clone()],
         };
-        let d = observed_depth_bound_m(&obs).unwrap();
+        // The gear wears half as fast as the pinion per pinion cycle: the pinion's bound.
+        let d = observed_depth_bound_m(&case, &obs, || Some((2.0, 1.0))).unwrap();
         assert!((d - 9.2e-6).abs() < 1e-15, "{d}");
-        // Indicators alone, or wear of inferred noise: nothing bounds the posterior.
+        // The gear wearing 3 times as fast: the unmeasured gear bounds it (review finding:
+        // the pinion's series alone undercounted the runs).
+        let d = observed_depth_bound_m(&case, &obs, || Some((1.0, 3.0))).unwrap();
+        assert!((d - 27.6e-6).abs() < 1e-14, "{d}");
+        // Only the gear measured, the pinion 2 times as fast: 9.2 x 2.
+        let gear_only = Observations {
+            series: vec![
+                vib.clone(),
+                series(Quantity::MaxWearGear, Some(vec![0.1; 3])),
+            ],
+        };
+        let d = observed_depth_bound_m(&case, &gear_only, || Some((2.0, 1.0))).unwrap();
+        assert!((d - 18.4e-6).abs() < 1e-14, "{d}");
+        // Indicators alone, or wear of inferred noise, or no rates: nothing bounds.
         let free = series(Quantity::MaxWearPinion, None);
-        for s in [vec![vib.clone()], vec![vib, free]] {
-            assert_eq!(observed_depth_bound_m(&Observations { series: s }), None);
+        for s in [vec![vib.clone()], vec![vib.clone(), free]] {
+            let o = Observations { series: s };
+            assert_eq!(observed_depth_bound_m(&case, &o, || Some((1.0, 1.0))), None);
         }
+        assert_eq!(observed_depth_bound_m(&case, &obs, || None), None);
+        // A gear train: an unmeasured stage may wear deeper.
+        let train = crate::config::load::load_case(
+            include_str!("../../examples/two_stage_reducer.toml"),
+            &[],
+        )
+        .unwrap();
+        assert!(!train.stage.is_empty());
+        assert_eq!(
+            observed_depth_bound_m(&train, &obs, || Some((1.0, 1.0))),
+            None
+        );
     }
 }

@@ -87,12 +87,67 @@ const HEADER: [&str; 5] = [
     "imag_m_per_s2_per_n",
 ];
 
-/// Largest |real| or |imaginary| part of an accelerance in a table, m/s^2 per N: the
-/// accelerance of an effective mass of 1 microgram, far beyond any structure, as a modal
-/// path's gains are bounded (`path_file`); a bearing force times it stays finite.
-const MAX_ACCELERANCE: f64 = 1e6;
-/// Highest frequency of a table's row, Hz (as a modal path's modes).
-const MAX_FREQUENCY_HZ: f64 = 1e7;
+/// Range of the real and of the imaginary part of an accelerance in a table, m/s^2 per N:
+/// within +-1e6, the accelerance of an effective mass of 1 microgram, far beyond any
+/// structure, as a modal path's gains are bounded (`path_file`); a bearing force times it
+/// stays finite.
+const ACCELERANCE_RANGE: (f64, f64) = (-1e6, 1e6);
+/// Range of a table's row frequencies, Hz (a modal path's modes reach 1e7 Hz too; a
+/// negative one is refused with its own message after this).
+const FREQUENCY_RANGE_HZ: (f64, f64) = (f64::NEG_INFINITY, 1e7);
+
+/// A row's frequency, real and imaginary part, each None (its problem added, naming the
+/// line `at`) where it is not a finite number or out of its range (issue 33: values of
+/// 1e308 overflowed to inf in the record, its channels came out empty).
+fn row_numbers(
+    rec: &csv::StringRecord,
+    at: &str,
+    problems: &mut Vec<String>,
+) -> (Option<f64>, Option<f64>, Option<f64>) {
+    let mut num = |i: usize, range: (f64, f64)| -> Option<f64> {
+        let x = match rec[i].parse::<f64>() {
+            Ok(x) if x.is_finite() => x,
+            _ => {
+                problems.push(format!(
+                    "{at}: `{}` = `{}` is not a finite number",
+                    HEADER[i], &rec[i]
+                ));
+                return None;
+            }
+        };
+        bounded(Some(x), HEADER[i], range, at, problems)
+    };
+    (
+        num(0, FREQUENCY_RANGE_HZ),
+        num(3, ACCELERANCE_RANGE),
+        num(4, ACCELERANCE_RANGE),
+    )
+}
+
+/// `x` if it lies in `range`, else None with the problem (the line `at`, the column
+/// `what`, the value and the range) added to `problems`.
+fn bounded(
+    x: Option<f64>,
+    what: &str,
+    (lo, hi): (f64, f64),
+    at: &str,
+    problems: &mut Vec<String>,
+) -> Option<f64> {
+    let x = x?;
+    if (lo..=hi).contains(&x) {
+        return Some(x);
+    }
+    let range = if lo == f64::NEG_INFINITY {
+        format!("at most {hi:e}")
+    } else {
+        format!("within +-{hi:e}")
+    };
+    problems.push(format!(
+        "{at}: `{what}` = {} is out of range: expected a number {range}",
+        crate::format::format_number(x)
+    ));
+    None
+}
 
 /// Parse an FRF table; `source` names the file in messages. Every problem is returned,
 /// each with its line.
@@ -127,51 +182,7 @@ pub(crate) fn parse_frf_table(text: &str, source: &str) -> Result<FrfTable, Vec<
         };
         let line = rec.position().map_or(0, |p| p.line());
         let at = format!("{source}, line {line}");
-        let num = |i: usize, what: &str, problems: &mut Vec<String>| -> Option<f64> {
-            match rec[i].parse::<f64>() {
-                Ok(x) if x.is_finite() => Some(x),
-                _ => {
-                    problems.push(format!(
-                        "{at}: `{what}` = `{}` is not a finite number",
-                        &rec[i]
-                    ));
-                    None
-                }
-            }
-        };
-        // Issue 33: values of 1e308 overflowed to inf in the record (empty channels).
-        let bounded = |x: Option<f64>, what: &str, limit: f64, problems: &mut Vec<String>| {
-            x.filter(|x| {
-                let ok = x.abs() <= limit;
-                if !ok {
-                    problems.push(format!(
-                        "{at}: `{what}` = {} is out of range: expected a number within +-{limit:e}",
-                        crate::format::format_number(*x)
-                    ));
-                }
-                ok
-            })
-        };
-        let (f, re, im) = (
-            bounded(
-                num(0, HEADER[0], &mut problems),
-                HEADER[0],
-                MAX_FREQUENCY_HZ,
-                &mut problems,
-            ),
-            bounded(
-                num(3, HEADER[3], &mut problems),
-                HEADER[3],
-                MAX_ACCELERANCE,
-                &mut problems,
-            ),
-            bounded(
-                num(4, HEADER[4], &mut problems),
-                HEADER[4],
-                MAX_ACCELERANCE,
-                &mut problems,
-            ),
-        );
+        let (f, re, im) = row_numbers(&rec, &at, &mut problems);
         let Some(j) = INPUTS.iter().position(|n| *n == &rec[2]) else {
             problems.push(format!(
                 "{at}: `input` = `{}` is not a bearing-force input; expected one of {}",

@@ -103,7 +103,7 @@ impl Record {
         match self.non_finite() {
             None => Ok(()),
             Some((channel, i)) => Err(format!(
-                "{what}: the record's channel `{channel}` is not a finite number at sample {i} (t = {} s): the transfer path or the response overflows; check the path's gains and modes",
+                "{what}: the record's channel `{channel}` is not a finite number at sample {i} (t = {} s): the record overflows; check what scales it (a transfer path's gains and modes, the sensitivity and gain of the chain, the load)",
                 crate::format::shown(self.time_s(i))
             )),
         }

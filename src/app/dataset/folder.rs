@@ -401,8 +401,9 @@ pub fn owner_problem(root: &Path, existing: &str, key: &str) -> Result<(), Folde
 
 /// Copy a dataset's record files (signals, CSVs, sidecars) and state files from `from`
 /// into `to` (no-op for the same folder). Returns how many records were copied, and the
-/// records left out (a signal file missing or not the one its sidecar names: counted
-/// missing by the index, named here).
+/// records left out (a signal file missing or not the one its sidecar names, or a file in
+/// `records/` that does not read as a record's sidecar: over its cap, not JSON, under
+/// another record's name; counted missing by the index, named here).
 pub fn copy_dataset(
     from: &Path,
     to: &Path,
@@ -426,10 +427,13 @@ pub fn copy_dataset(
     let cars = sidecars(from);
     // A sidecar file that does not read as a record's (over its cap, not JSON, under
     // another record's name): its record is left out and named, not lost unnamed.
+    let read: std::collections::HashSet<String> = cars
+        .iter()
+        .map(|s| sidecar_rel(s.labels.record_id))
+        .collect();
     let mut skipped: Vec<String> = names_in(from, "records")
         .into_iter()
-        .filter(|n| n.ends_with(".json"))
-        .filter(|n| !cars.iter().any(|s| sidecar_rel(s.labels.record_id) == format!("records/{n}")))
+        .filter(|n| n.ends_with(".json") && !read.contains(&format!("records/{n}")))
         .map(|n| {
             format!(
                 "records/{} of {}: not a readable sidecar (over {} MiB, not a record's labels, or under another record's name): its record is left out (counted missing)",

@@ -96,7 +96,7 @@ pub fn run_to_failure_scale(case: &Case) -> f64 {
 /// T_m of the case's first pinion, clamped to [T_30Hz, 0.25 s] (also
 /// `super::steady_states`, the wear study's periods).
 pub(crate) fn speed_scale(case: &Case) -> f64 {
-    let teeth = case.gear.teeth_pinion.max(1) as f64;
+    let teeth = super::evaluation::input_pinion_teeth(case);
     let t_m = 1.0 / (teeth * case.operating.input_speed_hz);
     if t_m.is_finite() {
         (t_m.clamp(MEASURED_MESH_PERIOD_S, SLOWEST_MESH_PERIOD_S) / MEASURED_MESH_PERIOD_S).cbrt()

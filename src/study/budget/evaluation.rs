@@ -43,9 +43,18 @@ pub fn dynamic_steps_per_period(nm: &NumericsSection) -> f64 {
 }
 
 /// Largest Archard wear per pinion cycle on either profile at the nominal load and speeds,
-/// m (quasi-static): Archard's k p0 s at the nominal load shared by paper eq. (7), Hertz
-/// pressure p0 and sliding distance s at nominal speeds along the path of contact.
+/// m (quasi-static): the larger of [`nominal_member_wear_per_cycle_m`]'s two.
 pub fn nominal_wear_per_cycle_m(case: &Case, pair: &GearPair) -> f64 {
+    let (pinion, gear) = nominal_member_wear_per_cycle_m(case, pair);
+    pinion.max(gear)
+}
+
+/// Largest Archard wear per pinion cycle of the pinion's and of the gear's profile at the
+/// nominal load and speeds, m (quasi-static): Archard's k p0 s at the nominal load shared
+/// by paper eq. (7), Hertz pressure p0 and sliding distance s at nominal speeds along the
+/// path of contact, per contact of the pinion tooth (k p0 s / u_p) and, z_p / z_g contacts
+/// of a gear tooth a pinion cycle, of the gear tooth (z_p / z_g k p0 s / u_g).
+pub fn nominal_member_wear_per_cycle_m(case: &Case, pair: &GearPair) -> (f64, f64) {
     let ratio = pair.pinion.teeth as f64 / pair.gear.teeth as f64;
     let k = case.wear.coefficient_m2_per_n;
     nominal_contacts(case, pair, 64)
@@ -56,13 +65,24 @@ pub fn nominal_wear_per_cycle_m(case: &Case, pair: &GearPair) -> f64 {
                 c.kinematics.gear_velocity_m_per_s,
             );
             if !(up > 0.0 && ug > 0.0) {
-                return 0.0;
+                return (0.0, 0.0);
             }
             let slide = 2.0 * c.hertz.half_width_m * (up - ug).abs();
             let p0 = c.hertz.max_pressure_pa;
-            (k * p0 * slide / up).max(ratio * k * p0 * slide / ug)
+            (k * p0 * slide / up, ratio * k * p0 * slide / ug)
         })
-        .fold(0.0, f64::max)
+        .fold((0.0, 0.0), |(a, b), (p, g)| (a.max(p), b.max(g)))
+}
+
+/// Teeth of the input pinion, the one whose mesh frequency the input speed sets: stage
+/// 1's pinion of a gear train (its `[[stage]]` table may give its own teeth), the pair's
+/// otherwise; at least 1.
+pub(crate) fn input_pinion_teeth(case: &Case) -> f64 {
+    let z = match case.stage.first() {
+        Some(s) => s.gear_section(&case.gear).teeth_pinion,
+        None => case.gear.teeth_pinion,
+    };
+    z.max(1) as f64
 }
 
 /// Updates (records) of a wear study whose largest wear per cycle is `rate_m`: U = 1 +

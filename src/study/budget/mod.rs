@@ -54,9 +54,10 @@ pub use dataset::{
     trajectory_bytes, KeptRecords, RecordSize,
 };
 pub use evaluation::{
-    adaptive_steps_per_period, nominal_wear_per_cycle_m, wear_updates,
-    ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE, DYNAMIC_WEAR_FACTOR, PERIODS_TO_SETTLE_PER_DECADE,
-    SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP, SECONDS_PER_TABLE_POINT,
+    adaptive_steps_per_period, nominal_member_wear_per_cycle_m, nominal_wear_per_cycle_m,
+    wear_updates, ADAPTIVE_STEPS_AT_DEFAULT_TOLERANCE, DYNAMIC_WEAR_FACTOR,
+    PERIODS_TO_SETTLE_PER_DECADE, SECONDS_PER_QUASI_STATIC_STEP, SECONDS_PER_STEP,
+    SECONDS_PER_TABLE_POINT,
 };
 pub use load_spectrum::estimate_history;
 pub use prognostics::{estimate_calibration, estimate_merge, CalibrationJob, ParameterSpan};

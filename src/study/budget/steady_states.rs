@@ -32,6 +32,11 @@
 //! - every wear update adds [`SECONDS_PER_WEAR_UPDATE`] (its worn model, record and
 //!   increments).
 //!
+//! The period counts are the searches' measured counts with a margin, not a worst case:
+//! a lightly damped case (a mesh near a resonance) or a train whose splice fails its
+//! check takes more periods (up to `numerics.max_mesh_periods`, where the search gives
+//! up); the rate's [`SLOWER_MACHINE_FACTOR`] is the margin such a case has.
+//!
 //! Before (issue 29), every evaluation was counted as P_c + P_e = 34 periods of 700 steps
 //! at 3 us: a cold search of 30 periods, the recorded window integrated (one period is
 //! recorded and repeated) and the error control's steps of 0.5 Hz at any speed: the
@@ -141,7 +146,7 @@ fn decades_below_default(case: &Case) -> f64 {
 /// splice, 3 without it.
 fn train_periods(case: &Case) -> f64 {
     let c1 = super::evaluation::first_mesh_periods(case);
-    let mesh_hz = case.operating.input_speed_hz * case.gear.teeth_pinion.max(1) as f64;
+    let mesh_hz = case.operating.input_speed_hz * super::evaluation::input_pinion_teeth(case);
     let speed = (mesh_hz / 570.0).max(1.0);
     let w = TRAIN_RUN_IN_PERIODS * speed * (1.0 + decades_below_default(case) / 6.0);
     if c1 >= 4.0 && 2.0 * w <= c1 {

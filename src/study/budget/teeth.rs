@@ -152,7 +152,7 @@ const RUN_IN_MESH_HZ: f64 = 570.0;
 /// mesh frequency (sigma held), never below it, at most P.
 fn run_in_periods(case: &Case, p: f64) -> f64 {
     let decades = (1.0 / case.numerics.steady_state_tolerance).log10() / 6.0;
-    let mesh_hz = case.operating.input_speed_hz * case.gear.teeth_pinion.max(1) as f64;
+    let mesh_hz = case.operating.input_speed_hz * super::evaluation::input_pinion_teeth(case);
     let speed = if mesh_hz.is_finite() {
         mesh_hz / RUN_IN_MESH_HZ
     } else {
