@@ -427,13 +427,13 @@ pub fn copy_dataset(
     let cars = sidecars(from);
     // A sidecar file that does not read as a record's (over its cap, not JSON, under
     // another record's name): its record is left out and named, not lost unnamed.
-    let read: std::collections::HashSet<String> = cars
+    let readable: std::collections::HashSet<String> = cars
         .iter()
         .map(|s| sidecar_rel(s.labels.record_id))
         .collect();
     let mut skipped: Vec<String> = names_in(from, "records")
         .into_iter()
-        .filter(|n| n.ends_with(".json") && !read.contains(&format!("records/{n}")))
+        .filter(|n| n.ends_with(".json") && !readable.contains(&format!("records/{n}")))
         .map(|n| {
             format!(
                 "records/{} of {}: not a readable sidecar (over {} MiB, not a record's labels, or under another record's name): its record is left out (counted missing)",
