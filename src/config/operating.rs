@@ -138,7 +138,7 @@ impl SpeedUnit {
     }
 
     /// `hz` (Hz) in this unit.
-    pub(crate) fn from_hz(self, hz: f64) -> f64 {
+    pub(crate) fn of_hz(self, hz: f64) -> f64 {
         match self {
             SpeedUnit::Hz => hz,
             // 1 Hz = 60 rpm.

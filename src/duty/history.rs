@@ -164,7 +164,7 @@ pub fn parse_history(bytes: &[u8], gap_factor: f64) -> Result<History, HistoryEr
             get(c.torque, "torque_nm"),
             get(c.speed, c.speed_unit.input_speed_key()),
         );
-        let speed_limit = c.speed_unit.from_hz(SPEED_LIMIT_HZ);
+        let speed_limit = c.speed_unit.of_hz(SPEED_LIMIT_HZ);
         let bounds = [
             (t, "time_s", TIME_LIMIT_S),
             (q, "torque_nm", TORQUE_LIMIT_NM),

@@ -9,11 +9,11 @@
 //! An evaluation integrates whole base periods (a mesh period; a train's common period),
 //! each costing t_p = [`SECONDS_PER_MESH_PERIOD`] x the speed's scale
 //! (`chains::speed_scale`: (T_m / T_30Hz)^(1/3), the error control's steps and their
-//! cost in a longer period) x max(S / [`STEPS_PER_MESH_PERIOD`], (1e-5 / tol_i)^(1/3),
-//! 1) (a finer grid, a tighter `numerics.integration_tolerance`) x `train_factor` and
+//! cost in a longer period) x max(S / [`STEPS_PER_MESH_PERIOD`], (1e-5 / tol_i)^(1/3), 1)
+//! (a finer grid, a tighter `numerics.integration_tolerance`) x `train_factor` and
 //! [`TRAIN_STEP_FACTOR`] for a train x `axial_factor` x the planetary set's step factor
 //! x [`TOOTH_RESOLVED_FACTOR`] for a tooth-resolved mesh. With d = max(0, log10(1e-6 /
-//! tol)) the decades of `numerics.steady_state_tolerance` below its default:
+//! tol)), the decades of `numerics.steady_state_tolerance` below its default:
 //! - *cold* (each wear study's first update: each mode, each bin of a spectrum, each run
 //!   of a life table; `gearwear dynamics`; the wear states of `run`): K_c =
 //!   [`COLD_PERIODS`] + [`PERIODS_PER_DECADE`] d periods of the quasi-Newton search from
