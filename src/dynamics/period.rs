@@ -119,7 +119,7 @@ pub trait PeriodIntegrator {
 
 /// The period stepper of `sys` over `nodes` with the relative local error `tolerance`:
 /// on stack vectors sized at compile time for the state sizes users meet, on heap
-/// vectors of the system's size otherwise ([`super::integrator::with_state_size`]). The
+/// vectors of the system's size otherwise (`integrator::with_state_size`). The
 /// sizes: the single spur pair (16 states, the paper's), a helical pair with its axial
 /// coordinates (20), a two-stage spur train or a helical pair that also tilts (28), a
 /// two-stage train with axial coordinates on its helical stages (36), a three-stage

@@ -167,7 +167,7 @@ const PATH_BYTES_PER_SAMPLE: f64 = 300.0;
 
 /// The run budget's term for a tooth-resolved case (None when every tooth is alike):
 /// every dynamic evaluation, cold or warm, integrates P - 1 more mesh periods and a
-/// run-in ([`run_in_periods`]) at `period_s` CPU seconds a period
+/// run-in (`run_in_periods`) at `period_s` CPU seconds a period
 /// (`super::steady_states::period_seconds`), each quasi-static one solves P - 1 more
 /// periods, a kept response records P periods instead of
 /// `numerics.evaluated_mesh_periods` (with its contacts' path), and each wear record
