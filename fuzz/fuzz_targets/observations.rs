@@ -43,6 +43,7 @@ fuzz_target!(|data: &[u8]| {
             walkers: 32,
             steps: 2000,
             check_runs: 3,
+            check_depth_bound_m: None,
         },
     );
     assert!(e.seconds().is_finite() && e.memory_bytes().is_finite());
