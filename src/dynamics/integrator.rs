@@ -67,8 +67,12 @@ pub use sdirk::{Sdirk, SdirkOptions, Trial};
 /// vectors and matrices, loops of known length) when `$n` is one of the listed sizes,
 /// `Dyn($n)` (heap) otherwise. Each listed size compiles the generic code once more, so
 /// the lists hold the sizes users meet (`dynamics::period`, `dynamics::planetary_steady`);
-/// the arithmetic is the same on both (nalgebra's products run the same loops in the same
-/// order whatever the dimension type), so the results are bit for bit those of `Dyn`.
+/// the results are bit for bit those of `Dyn` because every product the stepper forms on
+/// its `D`-sized vectors is a matrix-vector or vector operation, whose loops nalgebra runs
+/// in the same order whatever the dimension type (tests/stepper_sizes.rs). Not so for
+/// matrix-matrix products: nalgebra hands a `Dyn` f64 product larger than 5 x 5 to
+/// `matrixmultiply`'s blocked kernel and a `Const` one to its own loops, so the one such
+/// product (the Schur complement in `lu.rs`) is kept on `DMatrix` on both paths.
 macro_rules! with_state_size {
     ($n:expr, [$($size:literal),*], $dim:ident => $make:expr) => {
         match $n {
