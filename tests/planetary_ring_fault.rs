@@ -25,7 +25,7 @@ use common::{gearwear, stderr};
 use gearwear::config::load_case;
 use gearwear::study::planetary::PlanetaryStudy;
 use gearwear::study::planetary_dynamics::PlanetaryDynamics;
-use gearwear::study::planetary_signals::{ring_sensor_record, RingSensor};
+use gearwear::study::planetary_signals::{ring_sensor_record, RingSensor, RingSensorError};
 use std::f64::consts::PI;
 
 /// The built-in set (24 / 30 / 84, four planets, sun in, ring fixed) with the extra
@@ -404,4 +404,35 @@ fn a_ring_faults_period_is_one_ring_revolution_relative_to_the_carrier() {
         e.contains("`planetary.teeth_ring` = 9999") && e.contains("beyond the limit"),
         "{e}"
     );
+}
+
+/// A steady state whose force overflowed gives no ring record (nor spectrum): the error
+/// names the first sample of the sensor's period that is not finite, at its time (sample
+/// j of a period of s steps per mesh period lies at j / (s f_m)).
+#[test]
+fn an_overflowed_force_gives_no_ring_record() {
+    let case = load_case(&set_with("", ""), &[]).unwrap();
+    let mut d = PlanetaryDynamics::from_case(&case).unwrap();
+    let mut r = d.solve().unwrap();
+    let sensor = RingSensor {
+        angle_rad: 0.0,
+        half_width_rad: PI / 4.0,
+        record_s: 0.01,
+        sampling_rate_hz: 1e4,
+    };
+    assert!(ring_sensor_record(&d, &r, sensor).is_ok());
+    // Planet 1's ring mesh (the ring meshes follow the N sun meshes) at step 3, when the
+    // window around the sensor at 0 rad holds planet 1 (at 0 rad at t = 0).
+    let planets = 4;
+    r.mesh_forces_n[3][planets] = f64::INFINITY;
+    match ring_sensor_record(&d, &r, sensor) {
+        Err(RingSensorError::NonFinite { sample, time_s }) => {
+            assert_eq!(sample, 3);
+            let zr = 84.0;
+            let f_m = zr * case.operating.input_speed_hz * 24.0 / (24.0 + zr);
+            let s = case.numerics.steps_per_mesh_period as f64;
+            assert!((time_s - 3.0 / (s * f_m)).abs() < 1e-12 * time_s.max(1e-9));
+        }
+        other => panic!("expected a non-finite record, got {other:?}"),
+    }
 }

@@ -15,7 +15,9 @@ use crate::report::artifacts::Artifacts;
 use crate::report::signals_planetary::planetary_signals_artifacts;
 use crate::store::RunMetadata;
 use crate::study::planetary_dynamics::PlanetaryDynamics;
-use crate::study::planetary_signals::{ring_sensor_record, RingSensor, RingSensorRecord};
+use crate::study::planetary_signals::{
+    ring_sensor_record, RingSensor, RingSensorError, RingSensorRecord,
+};
 
 /// Why the ring sensor's record of `case` cannot be made (a turning ring, a ramp or a
 /// torque fluctuation), or `None` when it can.
@@ -70,8 +72,12 @@ pub(super) fn ring_signals_artifacts(
     r: &PlanetaryResponse,
 ) -> Result<(Artifacts, RingSensorRecord), JobError> {
     let sensor = ring_sensor_of(case, d.study.set.planets());
-    let rec = ring_sensor_record(d, r, sensor)
-        .map_err(|e| JobError::Input(vec![Problem::new(e.to_string())]))?;
+    // A turning ring is the case's doing (exit 2); a record that overflowed is a failed
+    // run (exit 1), as a pair's is.
+    let rec = ring_sensor_record(d, r, sensor).map_err(|e| match e {
+        RingSensorError::RingNotFixed(_) => JobError::Input(vec![Problem::new(e.to_string())]),
+        _ => JobError::Failed(anyhow::Error::msg(e.to_string())),
+    })?;
     let harmonics = case.signals.mesh_harmonics.max(1) as usize;
     let a = planetary_signals_artifacts(d, &rec, sensor, harmonics);
     Ok((a, rec))

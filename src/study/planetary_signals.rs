@@ -70,6 +70,16 @@ pub enum RingSensorError {
     /// The transform of the revolution failed (realfft's message).
     #[error("the ring sensor's spectrum: {0}")]
     Spectrum(String),
+    /// A sample of the sensor's revolution (which its spectrum and record are made of) is
+    /// not a finite number (the set's forces overflowed): never written, as a pair's
+    /// record with one is not (`signals::Record::check_finite`).
+    #[error("the ring sensor's signal is not a finite number at sample {sample} of its period (t = {time_s} s): the record overflows; check the set's load and stiffness")]
+    NonFinite {
+        /// Index of the first non-finite sample of the revolution.
+        sample: usize,
+        /// Its time, s.
+        time_s: f64,
+    },
 }
 
 /// The ring sensor's record of the steady state `r` of `d`.
@@ -109,6 +119,13 @@ pub fn ring_sensor_record(
                 .sum()
         })
         .collect();
+    // Every output (spectrum, record) is made from the revolution: checked once here.
+    if let Some(j) = revolution_n.iter().position(|v| !v.is_finite()) {
+        return Err(RingSensorError::NonFinite {
+            sample: j,
+            time_s: j as f64 * period_s / s as f64,
+        });
+    }
     let order_amplitude_n = order_amplitudes(&revolution_n)?;
     let (times_s, values_n) = periodic_record(
         &revolution_n,
