@@ -51,7 +51,7 @@
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, DimName, U1};
 
-use super::lu::{second_order_inverse, StaticLu};
+use super::lu::IterationInverse;
 pub use super::options::SdirkOptions;
 
 mod newton;
@@ -131,11 +131,11 @@ where
     jac: Option<Matrix<D>>,
     /// `(I - h gamma J)^{-1}` for `m_inv_h`, built from an LU factorisation (see
     /// [`super::lu`] for why the inverse rather than triangular solves).
-    m_inv: Matrix<D>,
+    m_inv: IterationInverse<D>,
     m_inv_h: f64,
     /// Earlier `(m_inv_h, m_inv)` of the current Jacobian, newest last (at most
     /// `opts.kept_matrices`).
-    kept: Vec<(f64, Matrix<D>)>,
+    kept: Vec<(f64, IterationInverse<D>)>,
     /// A new Jacobian must be evaluated before the next step.
     refresh: bool,
     /// Hairer's `eta = theta / (1 - theta)` carried between stages and steps.
@@ -192,7 +192,7 @@ where
             err_abs: repeat(opts.abs_tol),
             err_rel: repeat(opts.rel_tol),
             jac: None,
-            m_inv: Matrix::<D>::identity_generic(dim, dim),
+            m_inv: IterationInverse::identity(dim),
             m_inv_h: f64::NAN,
             kept: Vec::new(),
             refresh: true,
@@ -466,7 +466,7 @@ where
         for (i, ki) in k.iter().enumerate().take(self.tab.stages) {
             e += ki * (h * (self.tab.b[i] - bh[i]));
         }
-        let e = &self.m_inv * e;
+        let e = self.m_inv.apply(&e);
         let n = y.len();
         let sum: f64 = (0..n)
             .map(|i| {
@@ -535,19 +535,9 @@ where
             .ok_or(IntegratorError::SingularMatrix { t })?;
         let c = h * self.tab.gamma;
         st.lu_factorizations += 1;
-        let m_inv = match second_order_inverse(jac, c) {
-            Some(inv) => inv,
-            None => {
-                let m = Matrix::<D>::identity_generic(self.dim, self.dim) - jac * c;
-                StaticLu::factor(&m)
-                    .ok_or(IntegratorError::SingularMatrix { t })?
-                    .inverse()
-            }
-        };
-        // A nearly singular matrix can pass the pivot test and still overflow here.
-        if !m_inv.iter().all(|v| v.is_finite()) {
-            return Err(IntegratorError::SingularMatrix { t });
-        }
+        // A nearly singular matrix can pass the pivot test and still overflow: refused
+        // as singular too.
+        let m_inv = IterationInverse::of(jac, c).ok_or(IntegratorError::SingularMatrix { t })?;
         let old = std::mem::replace(&mut self.m_inv, m_inv);
         if self.opts.kept_matrices > 0 && self.m_inv_h.is_finite() {
             if self.kept.len() == self.opts.kept_matrices {

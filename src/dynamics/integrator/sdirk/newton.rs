@@ -43,7 +43,7 @@ where
             let f = sys.rhs(t_i, &y_stage);
             st.rhs_calls += 1;
             st.newton_iterations += 1;
-            let delta = &self.m_inv * ((base + f * hg) - &y_stage);
+            let delta = self.m_inv.apply(&((base + f * hg) - &y_stage));
             // Weighted RMS norm of the correction.
             let norm = (delta.component_mul(inv_scale).norm_squared() / n).sqrt();
             if !norm.is_finite() {
