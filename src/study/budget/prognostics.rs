@@ -46,6 +46,11 @@
 //!   sample (at the largest k of the samples).
 //! - **Merge**: the shards' bytes read, their values held twice (parsed and joined), the
 //!   fans.
+//! - **A prediction's own output**: its model built once, its report and tables, and its
+//!   three PNG figures (none for a shard), at their measured CPU times times
+//!   [`SLOWER_MACHINE_FACTOR`]. True runs whose depth nothing bounds (`predict`'s check
+//!   runs) count their warm updates at the rate measured on such runs (a warm update
+//!   costs more as the flanks wear deeper), not the shallow runs' rate of the chains.
 
 pub use super::chains::ParameterSpan;
 use super::chains::{chain_count, Duties, FutureDutyJob};
