@@ -205,8 +205,8 @@ fn true_runs(
     let mut c = duties.run(case, prior.wear_coefficient_max_m2_per_n, h.max(1.0));
     match depth_m.map(|d| updates_to_depth(case, h.max(1.0), d)) {
         Some(u) if u < c.updates => c = duties.run(case, 0.0, (u - 1.0) * case.wear.block_cycles),
-        Some(_) => {}
-        None => {
+        // Not bounded (or bounded deeper than the run at the largest k goes).
+        _ => {
             let deeper = SECONDS_PER_DEEP_WARM_UPDATE / super::chains::SECONDS_PER_WARM_UPDATE;
             c.seconds += (deeper - 1.0) * c.warm_seconds;
         }
