@@ -293,7 +293,7 @@ const STEADY_TRANSIENT_FIXED_SECONDS: f64 = 0.5 * SLOWER_MACHINE_FACTOR;
 /// per period to the built-in case's (`transient_steps` of one second at each: a finer
 /// grid or tolerance) and the slower mesh's factor (`super::chains::speed_scale`: the
 /// error control's steps per period grow as the mesh slows).
-pub fn steady_speed_transient_seconds(case: &Case) -> f64 {
+pub(crate) fn steady_speed_transient_seconds(case: &Case) -> f64 {
     let periods = mesh_frequency_hz(case, case.operating.input_speed_hz)
         * (case.signals.record_seconds(case) + crate::signals::transient_record::TAIL_S);
     let per_period = |c: &Case| {
