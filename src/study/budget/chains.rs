@@ -296,11 +296,13 @@ impl Duty {
     /// from what the run reached, `from`; and what it reaches.
     fn phase(&self, case: &Case, k: f64, cycles: f64, from: &Worn) -> (Count, Worn) {
         let (u, worn) = updates_within(case, &self.running, (k, cycles), from, self.stop_m);
+        let warm = (u - 1.0).max(0.0) * self.further_s;
         let c = Count {
             runs: 0.0,
             updates: u,
-            seconds: self.first_s + (u - 1.0).max(0.0) * self.further_s,
+            seconds: self.first_s + warm,
             largest_run: u * self.bins,
+            warm_seconds: warm,
         };
         (c, worn)
     }
@@ -318,6 +320,10 @@ pub struct Count {
     pub seconds: f64,
     /// The most bin records one run holds while it runs (its updates x its duty's bins).
     pub largest_run: f64,
+    /// The part of `seconds` that the warm-started updates take (every update but each
+    /// phase's first), s: a caller that knows its runs wear deeper than where
+    /// [`SECONDS_PER_WARM_UPDATE`] was measured scales it.
+    pub warm_seconds: f64,
 }
 
 impl Count {
@@ -325,6 +331,7 @@ impl Count {
         self.runs += o.runs;
         self.updates += o.updates;
         self.seconds += o.seconds;
+        self.warm_seconds += o.warm_seconds;
         self.largest_run = self.largest_run.max(o.largest_run);
     }
 }
@@ -447,7 +454,9 @@ pub fn chain_count(
         } else {
             let before = duties.run(case, k, done);
             total.updates += whole.updates - before.updates;
-            total.seconds += (whole.updates - before.updates) * own.further_s;
+            let warm = (whole.updates - before.updates) * own.further_s;
+            total.seconds += warm;
+            total.warm_seconds += warm;
             total.largest_run = total.largest_run.max(whole.largest_run);
         }
     }

@@ -46,6 +46,11 @@
 //!   sample (at the largest k of the samples).
 //! - **Merge**: the shards' bytes read, their values held twice (parsed and joined), the
 //!   fans.
+//! - **A prediction's own output**: its model built once, its report and tables, and its
+//!   three PNG figures (none for a shard), at their measured CPU times times
+//!   [`SLOWER_MACHINE_FACTOR`]. True runs whose depth nothing bounds (`predict`'s check
+//!   runs) count their warm updates at the rate measured on such runs (a warm update
+//!   costs more as the flanks wear deeper), not the shallow runs' rate of the chains.
 
 pub use super::chains::ParameterSpan;
 use super::chains::{chain_count, Duties, FutureDutyJob};
@@ -71,6 +76,17 @@ pub const T_BAND: f64 = 1e-7;
 /// [`SLOWER_MACHINE_FACTOR`]. (It was [`T_VALUE`] + [`T_BAND`], 1.1 us, from the
 /// calibration's two-axis likelihood: 5.6 and 6.7 times the CPU time of those runs.)
 pub const T_FAN_VALUE: f64 = 0.2e-6 * SLOWER_MACHINE_FACTOR;
+/// CPU time of `predict`'s model (each mesh's stiffness model and table, built once
+/// before the samples) with its report and tables written, s: measured 2026-12-01 (load
+/// 2-3) 15 ms, `predict` of one sample to 1e3 cycles with SVG figures (30 ms) less the
+/// start-up (2 ms) and its reference run of two updates (13 ms); times
+/// [`SLOWER_MACHINE_FACTOR`]. (Issue 33: not counted before, nor the figures below.)
+const SECONDS_PER_PREDICT_MODEL: f64 = 15e-3 * SLOWER_MACHINE_FACTOR;
+/// CPU time of one of `predict`'s three PNG figures at the default size (the fan charts
+/// are of several panels), s: measured 2026-12-01 (load 2-3) 20 ms, the same run with PNG
+/// figures (90 ms) less with SVG ones (30 ms) over three figures; times
+/// [`SLOWER_MACHINE_FACTOR`]. A shard draws none.
+const SECONDS_PER_PREDICT_FIGURE: f64 = 20e-3 * SLOWER_MACHINE_FACTOR;
 /// Memory of one cell of the exact grid posterior (centre, parameters, log-likelihood,
 /// weights, masses, and the copy of a level), bytes.
 pub const GRID_BYTES_PER_CELL: f64 = 200.0;
@@ -86,6 +102,8 @@ const GRID_LEVELS: f64 = 8.0;
 const BAND_POINTS: f64 = 101.0;
 /// Fan quantities of a prediction.
 const FANS: f64 = 6.0;
+/// PNG figures of a whole prediction (`fan_wear.png`, `life.png`, `fan_vibration.png`).
+const PREDICT_FIGURES: f64 = 3.0;
 
 /// Numbers of one update record a reference run keeps (its trajectory's: wear and
 /// increment profiles, 4 G; the load along the path of contact, two vectors of about
@@ -154,10 +172,27 @@ fn updates_to_depth(case: &Case, h: f64, depth_m: f64) -> f64 {
     1.0 + (h / w.block_cycles).ceil() + BLOCKS_PER_THRESHOLD_OF_DEPTH * (depth_m / threshold).ceil()
 }
 
-/// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them;
-/// or, when `depth_m` bounds how deep they wear ([`updates_to_depth`]), of that run's
-/// updates if fewer (counted at the duty's rates by [`Duties::run`] at k = 0, every
-/// block `wear.block_cycles` long).
+/// CPU time of one warm-started update of a true wear run whose depth nothing bounds
+/// (`predict`'s check runs and exact runs, `calibrate`'s from indicators alone), s, on
+/// the built-in case at 30 Hz, before [`super::chains::run_to_failure_scale`] and
+/// [`SLOWER_MACHINE_FACTOR`]. A warm update costs more as the flanks wear deeper (the
+/// worn teeth's impacts take the error control more steps): measured 2026-12-01 on the
+/// 2-core machine at load 1-3 (CPU time, user + system), `predict` from a posterior of
+/// k within +-3 % to 1e5 cycles, its three check runs of 19 updates each (to 8.6 um):
+/// 0.107-0.167 s a run, less its model and first evaluation (15 ms), 5.1-8.4 ms an
+/// update; wear runs of the built-in pair to 4e4 cycles average 9.8 ms an update to 16
+/// um (k = 2.5e-15 m^2/N) and 13.6 ms to 78 um (2.5e-14). Counted 7 ms. The chains'
+/// [`super::chains::SECONDS_PER_WARM_UPDATE`] (4 ms) was measured on runs to 5 um and
+/// stays the rate of runs whose depth the wear measured bounds (`calibrate`'s), and of
+/// the surrogate's reference runs. (Issue 33: at 4 ms the check runs were counted at
+/// 1.14-1.4 times their CPU time, and `predict` from a posterior at 1.11 times on a
+/// loaded machine, 2 % from under.)
+const SECONDS_PER_DEEP_WARM_UPDATE: f64 = 7e-3;
+
+/// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them,
+/// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`]; or, when `depth_m` bounds how
+/// deep they wear ([`updates_to_depth`]), of that run's updates if fewer (counted at the
+/// duty's rates by [`Duties::run`] at k = 0, every block `wear.block_cycles` long).
 fn true_runs(
     case: &Case,
     prior: &ParameterSpan,
@@ -168,9 +203,12 @@ fn true_runs(
     let (kept, bin) = record_numbers(case);
     let duties = Duties::of(case, prior, future);
     let mut c = duties.run(case, prior.wear_coefficient_max_m2_per_n, h.max(1.0));
-    if let Some(u) = depth_m.map(|d| updates_to_depth(case, h.max(1.0), d)) {
-        if u < c.updates {
-            c = duties.run(case, 0.0, (u - 1.0) * case.wear.block_cycles);
+    match depth_m.map(|d| updates_to_depth(case, h.max(1.0), d)) {
+        Some(u) if u < c.updates => c = duties.run(case, 0.0, (u - 1.0) * case.wear.block_cycles),
+        // Not bounded (or bounded deeper than the run at the largest k goes).
+        _ => {
+            let deeper = SECONDS_PER_DEEP_WARM_UPDATE / super::chains::SECONDS_PER_WARM_UPDATE;
+            c.seconds += (deeper - 1.0) * c.warm_seconds;
         }
     }
     let in_flight = n.min(rayon::current_num_threads() as f64);
@@ -334,6 +372,17 @@ pub(crate) fn estimate_prediction(
             keys: &["samples", "grid_points"],
         });
     }
+    terms.push(Term {
+        what: "the model built, the report, tables and figures written",
+        seconds: case.stage.len().max(1) as f64 * SECONDS_PER_PREDICT_MODEL
+            + if j.sharded {
+                0.0
+            } else {
+                PREDICT_FIGURES * SECONDS_PER_PREDICT_FIGURE
+            },
+        bytes: 0.0,
+        keys: &["the case's stages"],
+    });
     if !j.exact && j.check_runs > 0 {
         terms.push(true_runs(
             case,

@@ -77,10 +77,18 @@ pub fn estimate_signals(case: &Case, channels: usize) -> Estimate {
     // A transient record integrates every mesh period it spans at the grid's steps per
     // period (bounded above with the fastest speed of the record); a steady record
     // replays the steady state, whose cost is the dynamics estimate's.
-    let transient_seconds = if is_transient(case) {
-        transient_steps(case) * SECONDS_PER_STEP
-    } else {
-        0.0
+    let transient_seconds = match (is_transient(case), s.ramp_end_speed_hz) {
+        // A spur pair's load fluctuation, at its measured rates; a helical pair's, a
+        // train's and a planetary set's at the error control's bound of steps.
+        (true, None)
+            if case.gear.helix_angle_deg == 0.0
+                && case.stage.is_empty()
+                && case.planetary.is_none() =>
+        {
+            steady_speed_transient_seconds(case)
+        }
+        (true, _) => transient_steps(case) * SECONDS_PER_STEP,
+        (false, _) => 0.0,
     };
     let mut e = estimate(case, Job::Dynamics);
     if is_transient(case) {
@@ -258,6 +266,48 @@ pub fn transient_grid_bytes(case: &Case) -> f64 {
         2.0 * cells
     };
     n * BYTES_PER_TRANSIENT_CELL
+}
+
+/// CPU seconds of a steady-speed transient (a load fluctuation, no ramp) per mesh period
+/// it integrates, on the built-in case at 30 Hz at its transient tolerance, with its
+/// force sampling: measured 2026-12-01 on the 2-core machine at load 2 (user + system of
+/// `gearwear signals`, torque fluctuation of 10 N m at 25.6 kHz, records of 1, 2, 5 and
+/// 10 s: 1.53, 2.48, 6.7 and 9.9 s, 0.93 s a record second beyond a fixed 0.6 s; less the
+/// record's samples as [`SECONDS_PER_RECORD_SAMPLE`] and the channels count them, 0.81 s
+/// over 570 mesh periods), 1.42 ms; counted 1.5 ms times [`SLOWER_MACHINE_FACTOR`]. (It
+/// was the run-up's bound, the error control's steps at the slowest mesh, 1197 a period
+/// at 3 us: 2.1 s a record second, and no fixed part: issue 33, a 2 s record 1.41 and a
+/// 5 s one 3.1 times its CPU time.)
+const SECONDS_PER_STEADY_TRANSIENT_PERIOD: f64 = 1.5e-3 * SLOWER_MACHINE_FACTOR;
+
+/// CPU seconds a steady-speed transient costs whatever its length: the steady state at
+/// the starting speed from rest, the model built again at the fastest speed, the grid's
+/// transforms planned, the signals' figures: measured 2026-12-01 0.2 s (a 0.25 s record,
+/// 0.43 s, less its 0.25 s at 0.93 s a second) to 0.6 s (the intercept of the 1 to 10 s
+/// records, load 2); counted 0.5 s times [`SLOWER_MACHINE_FACTOR`].
+const STEADY_TRANSIENT_FIXED_SECONDS: f64 = 0.5 * SLOWER_MACHINE_FACTOR;
+
+/// CPU seconds of a steady-speed transient of `case` (a load fluctuation at the case's
+/// speed): [`STEADY_TRANSIENT_FIXED_SECONDS`] and every mesh period of the record and its
+/// tail at [`SECONDS_PER_STEADY_TRANSIENT_PERIOD`], times the ratio of the case's steps
+/// per period to the built-in case's (`transient_steps` of one second at each: a finer
+/// grid or tolerance) and the slower mesh's factor (`super::chains::speed_scale`: the
+/// error control's steps per period grow as the mesh slows).
+pub(crate) fn steady_speed_transient_seconds(case: &Case) -> f64 {
+    let periods = mesh_frequency_hz(case, case.operating.input_speed_hz)
+        * (case.signals.record_seconds(case) + crate::signals::transient_record::TAIL_S);
+    let per_period = |c: &Case| {
+        let tol = c.numerics.integration_tolerance
+            * crate::study::transient_signals::TRANSIENT_TOLERANCE_FACTOR;
+        super::evaluation::adaptive_steps_per_period(tol)
+            .max(c.numerics.steps_per_mesh_period as f64)
+    };
+    let steps = per_period(case) / per_period(&Case::default());
+    STEADY_TRANSIENT_FIXED_SECONDS
+        + periods
+            * SECONDS_PER_STEADY_TRANSIENT_PERIOD
+            * steps.max(1.0)
+            * super::chains::speed_scale(case)
 }
 
 /// Accepted integrator steps of a transient record of `case` (a ramp or a load
