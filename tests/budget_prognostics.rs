@@ -22,8 +22,11 @@ use std::process::Command;
 /// (2.56 s of CPU, load 1-7) and 1.7 (4.41 s, load 7: a busy machine's CPU time is up to
 /// twice a quiet one's), `predict` from a posterior 2.1 and 1.07 (1.11 on 2026-12-01,
 /// two tests at once). Since its model, output and figures are counted and its check runs at their
-/// measured rate (2026-12-01), 1.98 at load 4 and 1.61 at load 3.
-const TIME_FACTOR: f64 = 3.0;
+/// measured rate (2026-12-01), 1.98 at load 4 and 1.61 at load 3. The test allows 4: a
+/// quiet machine's CPU time is up to 1.5-2 times shorter than a loaded one's, so a count
+/// at 2 times on a loaded machine stands near 3 on a quiet one (the 3 is judged on
+/// the measured table of docs/RELIABILITY.md).
+const TIME_FACTOR: f64 = 4.0;
 /// Memory does not depend on the machine's load: the target, 3.
 const MEMORY_FACTOR: f64 = 3.0;
 

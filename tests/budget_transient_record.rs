@@ -35,8 +35,10 @@ const RUN_UP_TIME_FACTOR: f64 = 4.0;
 /// of one run varies about 1.5 times with the load of the shared machine (cache and
 /// cores), which the factor 2 is for. (The count before, the run-up's bound of steps and
 /// no fixed part, was 1.41 times a 2 s record's CPU time on the CI machine and 3.1 times
-/// a 5 s one's.)
-const FLUCTUATION_TIME_FACTOR: f64 = 3.0;
+/// a 5 s one's.) The test allows 4: the counts stand 1.5-3 times over depending on the
+/// machine's load, and a quiet run at 3 must not fail it (docs/RELIABILITY.md holds the
+/// measured ratios against the 3).
+const FLUCTUATION_TIME_FACTOR: f64 = 4.0;
 
 /// Runs `gearwear signals` with `sets` measured, and checks the estimate against it:
 /// memory never under and at most [`MEMORY_FACTOR`] x; time never under and at most
