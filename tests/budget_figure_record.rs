@@ -74,10 +74,11 @@ fn a_long_noisy_records_figures_are_counted_within_a_few_times_their_cost() {
     // the painted pixels are counted as if every column of every dense series were
     // painted to the top, at the tallest figure's height (1.2-1.8 x the record figures'
     // own), the stems at the noisiest rate measured (1.4 x; docs/RELIABILITY.md), and
-    // the time doubled for a slower machine; measured 2.9 x on 2026-12-01 (8.59 s
-    // counted, 2.98 s taken; 1.4 x before the doubling).
+    // the time doubled for a slower machine; measured 2.9 x on 2026-12-01 at load ~2
+    // (8.59 s counted, 2.98 s taken; 1.4 x before the doubling). A quiet machine's
+    // shorter CPU time could put it near 4: the time's limit is 6.
     assert!(
-        term.seconds >= cpu && term.seconds <= 5.0 * cpu,
+        term.seconds >= cpu && term.seconds <= 6.0 * cpu,
         "figures took {cpu:.2} s of CPU at 4096 x 2048 beyond the default size; counted {:.2} s",
         term.seconds
     );

@@ -162,7 +162,7 @@ fn observations(dir: &Path, wear: bool, vibration: bool) -> String {
 
 #[test]
 #[cfg(target_os = "linux")]
-fn calibrate_is_counted_within_three_times_what_it_uses() {
+fn calibrate_is_counted_within_a_few_times_what_it_uses() {
     let d = tempfile::tempdir().unwrap();
     // The wear measured (and the velocity): the check runs bounded by the wear.
     let obs = observations(d.path(), true, true);
@@ -200,7 +200,7 @@ fn posterior(dir: &Path, n: usize) -> String {
 
 #[test]
 #[cfg(target_os = "linux")]
-fn predict_is_counted_within_three_times_what_it_uses() {
+fn predict_is_counted_within_a_few_times_what_it_uses() {
     let d = tempfile::tempdir().unwrap();
     let post = posterior(d.path(), 2000);
     check(
@@ -257,8 +257,8 @@ fn predict_with_a_five_bin_future_is_counted_never_under() {
     // run per node of k, each under the case's duty to 1e4 cycles and the five bins after
     // (`study::budget::chains`). A bound: the runs of the largest k are counted to the
     // stop depth (50 elastic approaches at the lightest bin, 280 um, where they stop at
-    // 35-42 um); measured 1.7 times at load 2.5 (2026-12-01) and 3.2-3.3 on a quieter
-    // machine (docs/RELIABILITY.md).
+    // 35-42 um); measured 2.06 times at load 3.5-4 (2026-12-01) and, under the count
+    // before, 3.2 on the quieter machine of 2026-11-30 (docs/RELIABILITY.md).
     let d = tempfile::tempdir().unwrap();
     let future = future_spectrum(d.path());
     check(

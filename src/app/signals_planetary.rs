@@ -76,7 +76,9 @@ pub(super) fn ring_signals_artifacts(
     // run (exit 1), as a pair's is.
     let rec = ring_sensor_record(d, r, sensor).map_err(|e| match e {
         RingSensorError::RingNotFixed(_) => JobError::Input(vec![Problem::new(e.to_string())]),
-        _ => JobError::Failed(anyhow::Error::msg(e.to_string())),
+        RingSensorError::Spectrum(_) | RingSensorError::NonFinite { .. } => {
+            JobError::Failed(anyhow::Error::msg(e.to_string()))
+        }
     })?;
     let harmonics = case.signals.mesh_harmonics.max(1) as usize;
     let a = planetary_signals_artifacts(d, &rec, sensor, harmonics);

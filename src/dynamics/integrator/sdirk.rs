@@ -129,8 +129,9 @@ where
     err_rel: Vector<D>,
     /// The last Jacobian evaluated, if still valid.
     jac: Option<Matrix<D>>,
-    /// `(I - h gamma J)^{-1}` for `m_inv_h`, built from an LU factorisation (see
-    /// [`super::lu`] for why the inverse rather than triangular solves).
+    /// `(I - h gamma J)^{-1}` for `m_inv_h`: an explicit inverse, or a second-order
+    /// system's Schur blocks from 9 coordinates on (see [`super::lu`] for why an inverse
+    /// rather than triangular solves).
     m_inv: IterationInverse<D>,
     m_inv_h: f64,
     /// Earlier `(m_inv_h, m_inv)` of the current Jacobian, newest last (at most

@@ -231,8 +231,9 @@ pub const TALLEST_DEFAULT_FIGURE_PX: f64 = 1240.0;
 /// CPU time less that of a record of the same length and rate drawn with its lines and
 /// stems short, over the painted pixels `FigureLoad::term` counts): 2.1e-8 at 4096 x
 /// 2048 and 2.8e-8 at 8192 x 4096 (a 40 s record under -20 dB of noise), 2.9e-8 (0.2 s
-/// at 4 MHz under noise, every figure painted); counted 4e-8. Issue 33: a 40 s record's
-/// figures at 8192 x 4096 took 20 s of CPU against 3.2 s counted by their pixels alone.
+/// at 4 MHz under noise, every figure painted); counted 4e-8, times
+/// `SLOWER_MACHINE_FACTOR` since 2026-12-01. Issue 33: a 40 s record's figures at
+/// 8192 x 4096 took 20 s of CPU against 3.2 s counted by their pixels alone.
 pub const SECONDS_PER_PAINTED_PIXEL: f64 = 4e-8;
 
 /// Bytes per painted pixel (`FigureCount::dense`) of a figure being drawn: the samples

@@ -193,6 +193,8 @@ const SECONDS_PER_DEEP_WARM_UPDATE: f64 = 7e-3;
 /// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`]; or, when `depth_m` bounds how
 /// deep they wear ([`updates_to_depth`]), of that run's updates if fewer (counted at the
 /// duty's rates by [`Duties::run`] at k = 0, every block `wear.block_cycles` long).
+/// (A helical pair's slice contacts, part of the warm updates' seconds, are scaled with
+/// them: an over-count, not measured on such runs.)
 fn true_runs(
     case: &Case,
     prior: &ParameterSpan,
