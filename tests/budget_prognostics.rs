@@ -76,14 +76,7 @@ fn check(what: &str, args: &[&str], dir: &Path, out: &str, bounded: Option<f64>)
     let out_path = dir.join(out);
     all.extend(["-q", "--no-budget", "--out", out_path.to_str().unwrap()]);
     let used = common::rusage::run(&all);
-    eprintln!(
-        "{what}: counted {:.3} GB, {secs:.2} s; used {:.3} GB, {:.2} s of CPU ({:.2} / {:.2})",
-        bytes / 1e9,
-        used.peak_bytes / 1e9,
-        used.cpu_s,
-        bytes / used.peak_bytes,
-        secs / used.cpu_s
-    );
+    common::rusage::print_counted(what, bytes, secs, &used);
     assert!(
         bytes >= used.peak_bytes,
         "{what}: {bytes:.3e} B counted, {:.3e} B used",

@@ -62,14 +62,7 @@ fn check(sets: &[&str], time_factor: f64) {
     // Two channels: the generic housing's sensors.
     let e = estimate_signals(&case, 2);
     let (bytes, secs) = (e.memory_bytes(), e.seconds());
-    eprintln!(
-        "{sets:?}: counted {:.3} GB, {secs:.2} s; used {:.3} GB, {:.2} s of CPU ({:.2} / {:.2})",
-        bytes / 1e9,
-        used.peak_bytes / 1e9,
-        used.cpu_s,
-        bytes / used.peak_bytes,
-        secs / used.cpu_s
-    );
+    common::rusage::print_counted(&format!("{sets:?}"), bytes, secs, &used);
     assert!(
         bytes >= used.peak_bytes && bytes <= MEMORY_FACTOR * used.peak_bytes,
         "{sets:?}: {:.3e} B counted, {:.3e} B used",

@@ -42,3 +42,18 @@ pub fn run(args: &[&str]) -> Used {
         peak_bytes: u.ru_maxrss as f64 * 1024.0,
     }
 }
+
+/// Prints an estimate (`bytes`, `secs`) beside what a run `used`, with the ratios, so
+/// that a budget test's output can be read against the measured table of
+/// docs/RELIABILITY.md.
+#[allow(dead_code)]
+pub fn print_counted(what: &str, bytes: f64, secs: f64, used: &Used) {
+    eprintln!(
+        "{what}: counted {:.3} GB, {secs:.2} s; used {:.3} GB, {:.2} s of CPU ({:.2} / {:.2})",
+        bytes / 1e9,
+        used.peak_bytes / 1e9,
+        used.cpu_s,
+        bytes / used.peak_bytes,
+        secs / used.cpu_s
+    );
+}
