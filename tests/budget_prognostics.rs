@@ -250,8 +250,9 @@ fn predict_with_a_five_bin_future_is_counted_never_under() {
     // run per node of k, each under the case's duty to 1e4 cycles and the five bins after
     // (`study::budget::chains`). A bound: the runs of the largest k are counted to the
     // stop depth (50 elastic approaches at the lightest bin, 280 um, where they stop at
-    // 35-42 um); measured 2.06 times at load 3.5-4 (2026-12-01) and, under the count
-    // before, 3.2 on the quieter machine of 2026-11-30 (docs/RELIABILITY.md).
+    // 35-42 um), their warm updates dearer with depth (`chains::depth_factor`); measured
+    // 3.1 times on the machine alone (2026-12-01; 2.06 at load 3.5-4 before the depth
+    // was counted, docs/RELIABILITY.md).
     let d = tempfile::tempdir().unwrap();
     let future = future_spectrum(d.path());
     check(

@@ -20,7 +20,9 @@
 //! the pair runs in ([`super::running_in`]: the wear law's rate at the case's own load
 //! sharing, relaxing as the worn gaps pass load to the other pair in double contact),
 //! no more than its stop depth allows; every update evaluates every bin of the duty in
-//! force, the first from rest. (Before, the initial rate was held for the whole run:
+//! force, the first from rest, the warm ones dearer as the flanks wear deeper
+//! ([`depth_factor`]; issue 33: at the rate of new flanks `predict` with a one-bin future
+//! spectrum was counted under its CPU time). (Before, the initial rate was held for the whole run:
 //! 2.4-3.5 times the updates made, issue 33.)
 
 use super::evaluation::{
@@ -156,14 +158,11 @@ const STOP_DEPTH_IN_APPROACHES: f64 = 50.0;
 /// The stop depth of such a pair is taken as at least this, m.
 const MIN_STOP_DEPTH_M: f64 = 100e-6;
 
-/// Largest wear depth a wear run of `case` reaches before the teeth lose contact and it
-/// stops (`wear_loop::MAX_CONTACT_LOSS_FRACTION`), m: `STOP_DEPTH_IN_APPROACHES` elastic
-/// approaches under the nominal load, at least `MIN_STOP_DEPTH_M`. The surrogate's runs at
-/// the prior's largest k stop there long before their horizon. (A static criterion on the
-/// worn profile, tried on 2026-11-30, held at 30 Hz, 1.2-1.8 times the runs' depths, but
-/// not at other speeds: the dynamic runs went to 205 um at 5 Hz and past 420 um at
-/// 60-200 Hz, where it counted 109 um; so the bound stays this one.)
-pub fn stop_depth_m(case: &Case) -> f64 {
+/// Elastic approach of the teeth under the case's nominal load, F / (c'_gamma b) with
+/// c'_gamma = [`ISO_MESH_STIFFNESS_PER_WIDTH`], m: the scale against which wear depth is
+/// deep or shallow (contact lost, a warm update's cost, [`depth_factor`]); infinite for a
+/// case whose pair cannot be built.
+pub fn elastic_approach_m(case: &Case) -> f64 {
     let Ok(pair) = GearPair::from_case(&case.gear) else {
         return f64::INFINITY;
     };
@@ -171,9 +170,48 @@ pub fn stop_depth_m(case: &Case) -> f64 {
         crate::config::case::TorqueShaft::Pinion => pair.pinion.base_radius_m,
         crate::config::case::TorqueShaft::Gear => pair.gear.base_radius_m,
     };
-    let approach =
-        case.operating.load_torque_nm / rb / (ISO_MESH_STIFFNESS_PER_WIDTH * pair.face_width_m);
-    (STOP_DEPTH_IN_APPROACHES * approach).max(MIN_STOP_DEPTH_M)
+    case.operating.load_torque_nm / rb / (ISO_MESH_STIFFNESS_PER_WIDTH * pair.face_width_m)
+}
+
+/// Largest wear depth a wear run of `case` reaches before the teeth lose contact and it
+/// stops (`wear_loop::MAX_CONTACT_LOSS_FRACTION`), m: `STOP_DEPTH_IN_APPROACHES` elastic
+/// approaches under the nominal load ([`elastic_approach_m`]), at least
+/// `MIN_STOP_DEPTH_M`. The surrogate's runs at the prior's largest k stop there long
+/// before their horizon. (A static criterion on the worn profile, tried on 2026-11-30,
+/// held at 30 Hz, 1.2-1.8 times the runs' depths, but not at other speeds: the dynamic
+/// runs went to 205 um at 5 Hz and past 420 um at 60-200 Hz, where it counted 109 um; so
+/// the bound stays this one.)
+pub fn stop_depth_m(case: &Case) -> f64 {
+    (STOP_DEPTH_IN_APPROACHES * elastic_approach_m(case)).max(MIN_STOP_DEPTH_M)
+}
+
+/// Depth, in elastic approaches, past which [`depth_factor`] grows no more (2.2 there).
+const DEPTH_FACTOR_CAP_APPROACHES: f64 = 4.0;
+
+/// How much dearer a warm update is on flanks worn `depth_m` deep than on new ones
+/// (dimensionless): for x = d / a elastic approaches ([`elastic_approach_m`]),
+/// min(1 + x / 2, 1.4 + x / 5), held at its value at 4 a (2.2). The worn teeth's impacts
+/// take the error control more steps. Measured 2026-12-01 as the solver's right-hand side
+/// evaluations of warm-started updates (deterministic, not a timing) on the built-in
+/// pair, against the updates on flanks worn less than 5 um (where
+/// [`SECONDS_PER_WARM_UPDATE`] was measured): at 60 N m and 30 Hz (a = 8.4 um) 1.0-1.05
+/// to 0.65 a, then a step to 1.36-1.40 at 0.7-2 a, 1.55 at 3.4 a, 1.8 at 7.3 a where
+/// contact is lost; at 40 N m and 20 Hz (a = 5.6 um) 1.07 at 1.2 a, 1.36 at 2.9 a, 2.04
+/// at 5.4 a, 2.25 at 7.1 a. The CPU time of an update follows them (1.1-1.2 us an
+/// evaluation). The growth depends on speed: at 100 Hz 2.2-2.9 from 4 a to 48 a (no
+/// contact loss), at 5 Hz 1.5 at 2 a, 3.0 at 5.4 a and 5-6 from 10 a to contact loss at
+/// 12-14 a; there the factor counts deep updates under their work, and the rates' factor
+/// 2 ([`SLOWER_MACHINE_FACTOR`]) and the updates counted past the real stop
+/// ([`stop_depth_m`]) are the margin. The cap is where the runs at 20-30 Hz stand (a
+/// factor that followed 5 Hz would count these runs at 3-4 times their work).
+/// `tests/budget_chains.rs` checks the factor against the solver's count at 20 and 30 Hz.
+pub fn depth_factor(depth_m: f64, approach_m: f64) -> f64 {
+    let x = (depth_m / approach_m).clamp(0.0, DEPTH_FACTOR_CAP_APPROACHES);
+    if x.is_nan() {
+        1.0
+    } else {
+        (1.0 + x / 2.0).min(1.4 + x / 5.0)
+    }
 }
 
 /// Most blocks of one phase followed one by one: past them the rest are counted at the
@@ -193,17 +231,22 @@ struct Worn {
 /// `wear.block_cycles` cut to the threshold over the largest rate at the block's start,
 /// [`RunningIn::rate_after`]), one update each after the first, until the cycles are run
 /// or the deepest wear (each block adding its cycles times that rate, a bound) reaches
-/// `stop_m` ([`stop_depth_m`]).
+/// `stop_m` ([`stop_depth_m`]). Also the warm updates weighted by the cost of the depth
+/// each is made at ([`depth_factor`] over `approach_m`).
 fn updates_within(
     case: &Case,
     running: &RunningIn,
     (k, total): (f64, f64),
     from: &Worn,
-    stop_m: f64,
-) -> (f64, Worn) {
+    (stop_m, approach_m): (f64, f64),
+) -> (Updates, Worn) {
     let w = &case.wear;
     let threshold = w.threshold_um * 1e-6;
-    let (mut done, mut depth, mut updates) = (0.0, from.depth_m, 1.0);
+    let (mut done, mut depth) = (0.0, from.depth_m);
+    let mut u = Updates {
+        count: 1.0,
+        weighted_warm: 0.0,
+    };
     for followed in 0.. {
         if !(done < total && depth < stop_m) {
             break;
@@ -211,22 +254,34 @@ fn updates_within(
         let rate = k * running.rate_after(&from.gaps, k * done);
         let n = block_length(rate, w.block_cycles, threshold, total - done);
         if followed >= MAX_FOLLOWED_BLOCKS || n.is_nan() || n <= 0.0 {
-            updates += ((total - done) / n.max(1.0)).ceil();
+            // The rest at the deepest cost (rates only fall: an upper bound).
+            let rest = ((total - done) / n.max(1.0)).ceil();
+            u.count += rest;
+            u.weighted_warm += rest * depth_factor(f64::INFINITY, approach_m);
             done = total;
             break;
         }
         done += n;
         depth += n * rate;
-        updates += 1.0;
+        u.count += 1.0;
+        u.weighted_warm += depth_factor(depth.min(stop_m), approach_m);
     }
     let gaps = running.gaps_after(&from.gaps, k * done);
     (
-        updates,
+        u,
         Worn {
             depth_m: depth.min(stop_m),
             gaps,
         },
     )
+}
+
+/// The updates of a phase: how many, and the warm ones (all but the first) each weighted
+/// by its [`depth_factor`].
+#[derive(Debug, Clone, Copy)]
+struct Updates {
+    count: f64,
+    weighted_warm: f64,
 }
 
 /// A duty a run follows for a while: its initial wear per cycle per unit k (m per m^2/N,
@@ -243,6 +298,8 @@ struct Duty {
     /// (contact is lost first under the lightest load, whose elastic approach is the
     /// smallest).
     stop_m: f64,
+    /// The smallest of its bins' elastic approaches, m ([`depth_factor`]).
+    approach_m: f64,
 }
 
 impl Duty {
@@ -267,6 +324,7 @@ impl Duty {
             further_s: 0.0,
             bins: points.len() as f64,
             stop_m: f64::INFINITY,
+            approach_m: f64::INFINITY,
         };
         // A train's blocks follow its fastest mesh per input cycle.
         let train = super::train_prognostics::train_wear_per_input_cycle_m(&c);
@@ -277,6 +335,7 @@ impl Duty {
                 d.rate_per_k += share * DYNAMIC_WEAR_FACTOR * nominal_wear_per_cycle_m(b, p);
             }
             d.stop_m = d.stop_m.min(stop_depth_m(b));
+            d.approach_m = d.approach_m.min(elastic_approach_m(b));
             let scale = run_to_failure_scale(b) * SLOWER_MACHINE_FACTOR;
             let helical = helical_update_seconds(b);
             d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale + helical;
@@ -295,14 +354,14 @@ impl Duty {
     /// Updates and seconds of `cycles` cycles of this duty at wear coefficient `k`,
     /// from what the run reached, `from`; and what it reaches.
     fn phase(&self, case: &Case, k: f64, cycles: f64, from: &Worn) -> (Count, Worn) {
-        let (u, worn) = updates_within(case, &self.running, (k, cycles), from, self.stop_m);
-        let warm = (u - 1.0).max(0.0) * self.further_s;
+        let bounds = (self.stop_m, self.approach_m);
+        let (u, worn) = updates_within(case, &self.running, (k, cycles), from, bounds);
         let c = Count {
             runs: 0.0,
-            updates: u,
-            seconds: self.first_s + warm,
-            largest_run: u * self.bins,
-            warm_seconds: warm,
+            updates: u.count,
+            seconds: self.first_s + u.weighted_warm * self.further_s,
+            largest_run: u.count * self.bins,
+            warm_seconds: (u.count - 1.0).max(0.0) * self.further_s,
         };
         (c, worn)
     }
@@ -320,9 +379,10 @@ pub struct Count {
     pub seconds: f64,
     /// The most bin records one run holds while it runs (its updates x its duty's bins).
     pub largest_run: f64,
-    /// The part of `seconds` that the warm-started updates take (every update but each
-    /// phase's first), s: a caller that knows its runs wear deeper than where
-    /// [`SECONDS_PER_WARM_UPDATE`] was measured scales it.
+    /// The warm-started updates (every update but each phase's first) at the rate of
+    /// new flanks, [`SECONDS_PER_WARM_UPDATE`] (`seconds` holds them at the depth each is
+    /// made at, [`depth_factor`]), s: a caller whose updates do more than the chains'
+    /// adds to `seconds` in proportion to it.
     pub warm_seconds: f64,
 }
 
@@ -454,9 +514,8 @@ pub fn chain_count(
         } else {
             let before = duties.run(case, k, done);
             total.updates += whole.updates - before.updates;
-            let warm = (whole.updates - before.updates) * own.further_s;
-            total.seconds += warm;
-            total.warm_seconds += warm;
+            total.seconds += whole.seconds - before.seconds;
+            total.warm_seconds += whole.warm_seconds - before.warm_seconds;
             total.largest_run = total.largest_run.max(whole.largest_run);
         }
     }

@@ -173,24 +173,23 @@ fn updates_to_depth(case: &Case, h: f64, depth_m: f64) -> f64 {
 }
 
 /// CPU time of one warm-started update of a true wear run whose depth nothing bounds
-/// (`predict`'s check runs and exact runs, `calibrate`'s from indicators alone), s, on
-/// the built-in case at 30 Hz, before [`super::chains::run_to_failure_scale`] and
-/// [`SLOWER_MACHINE_FACTOR`]. A warm update costs more as the flanks wear deeper (the
-/// worn teeth's impacts take the error control more steps): measured 2026-12-01 on the
-/// 2-core machine at load 1-3 (CPU time, user + system), `predict` from a posterior of
-/// k within +-3 % to 1e5 cycles, its three check runs of 19 updates each (to 8.6 um):
+/// (`predict`'s check runs and exact runs, `calibrate`'s from indicators alone) on new
+/// flanks, s, on the built-in case at 30 Hz, before [`super::chains::run_to_failure_scale`],
+/// [`SLOWER_MACHINE_FACTOR`] and the depth's own cost
+/// ([`super::chains::depth_factor`], counted by the chains): such an update does more
+/// than a surrogate's (its record's response and increments kept for the outputs), so
+/// the difference to [`super::chains::SECONDS_PER_WARM_UPDATE`] (4 ms) is added to each.
+/// Measured 2026-12-01 on the 2-core machine at load 1-3 (CPU time, user + system),
+/// `predict` from a posterior of k within +-3 % to 1e5 cycles, its three check runs of 19
+/// updates each (to 8.6 um, about one elastic approach, where the depth factor is 1.25):
 /// 0.107-0.167 s a run, less its model and first evaluation (15 ms), 5.1-8.4 ms an
-/// update; wear runs of the built-in pair to 4e4 cycles average 9.8 ms an update to 16
-/// um (k = 2.5e-15 m^2/N) and 13.6 ms to 78 um (2.5e-14). Counted 7 ms. The chains'
-/// [`super::chains::SECONDS_PER_WARM_UPDATE`] (4 ms) was measured on runs to 5 um and
-/// stays the rate of runs whose depth the wear measured bounds (`calibrate`'s), and of
-/// the surrogate's reference runs. (Issue 33: at 4 ms the check runs were counted at
-/// 1.14-1.4 times their CPU time, and `predict` from a posterior at 1.11 times on a
-/// loaded machine, 2 % from under.)
+/// update. Counted 7 ms, 4 of them scaled by the depth. (Issue 33: at 4 ms the check runs
+/// were counted at 1.14-1.4 times their CPU time, and `predict` from a posterior at 1.11
+/// times on a loaded machine, 2 % from under.)
 const SECONDS_PER_DEEP_WARM_UPDATE: f64 = 7e-3;
 
 /// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them,
-/// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`]; or, when `depth_m` bounds how
+/// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`] on new flanks; or, when `depth_m` bounds how
 /// deep they wear ([`updates_to_depth`]), of that run's updates if fewer (counted at the
 /// duty's rates by [`Duties::run`] at k = 0, every block `wear.block_cycles` long).
 /// (A helical pair's slice contacts, part of the warm updates' seconds, are scaled with
@@ -209,8 +208,8 @@ fn true_runs(
         Some(u) if u < c.updates => c = duties.run(case, 0.0, (u - 1.0) * case.wear.block_cycles),
         // Not bounded (or bounded deeper than the run at the largest k goes).
         _ => {
-            let deeper = SECONDS_PER_DEEP_WARM_UPDATE / super::chains::SECONDS_PER_WARM_UPDATE;
-            c.seconds += (deeper - 1.0) * c.warm_seconds;
+            let more = SECONDS_PER_DEEP_WARM_UPDATE / super::chains::SECONDS_PER_WARM_UPDATE;
+            c.seconds += (more - 1.0) * c.warm_seconds;
         }
     }
     let in_flight = n.min(rayon::current_num_threads() as f64);
