@@ -107,6 +107,8 @@ fn row_is_the_wear_study(
             for (flank, v) in m["final"][mode]["flanks"].as_object().unwrap() {
                 let name = format!("{}_wear_max_{mode}_um", stem(member, flank));
                 same(col(&name), num(&v["max_wear_um"]), &name);
+                let name = format!("{}_wear_volume_{mode}_mm3", stem(member, flank));
+                same(col(&name), num(&v["volume_mm3"]), &name);
                 flanks += 1;
             }
         }
@@ -198,6 +200,29 @@ fn every_wear_column_of_a_planetary_row_is_the_wear_summary_of_its_case() {
                 .parse()
                 .unwrap();
             assert!((l - 1.0).abs() <= 1e-12, "planet {n}: share {l}");
+        }
+    }
+    // Archard's law takes the same volume from both flanks of a contact (each loses
+    // k F times their sliding distance, however the depth is spread over each flank), so
+    // the sun loses what the planets' sun-side flanks lose together, and the ring what
+    // their ring-side flanks do. Each volume is summed on its own flank's grid: 1e-4
+    // relative (measured 2.3e-5, the same at both torques: the two grids' integration).
+    for row in &rows {
+        for mode in MODES {
+            let v = |stem: &str| -> f64 {
+                row[col(&format!("{stem}_wear_volume_{mode}_mm3"))]
+                    .parse()
+                    .unwrap()
+            };
+            for (member, side) in [("sun", "sun_side"), ("ring", "ring_side")] {
+                let planets: f64 = (1..=4).map(|n| v(&format!("planet{n}_{side}"))).sum();
+                let own = v(member);
+                assert!(own > 0.0, "{mode} {member}: no volume");
+                assert!(
+                    (own / planets - 1.0).abs() <= 1e-4,
+                    "{mode}: the {member} lost {own} mm^3, the planets' {side} flanks {planets}"
+                );
+            }
         }
     }
     // The larger torque wears the sun more (a sanity check of the rows' order).

@@ -2,8 +2,9 @@
 //! ring-planet mesh's mean and largest force and dynamic factor, then each planet's load
 //! sharing factor, after the single pair's columns (which, for a set, are its first
 //! sun-planet mesh's force columns, the others empty: the set's summary has no DTE or
-//! pinion velocity); a wear row then adds every member flank's deepest wear at the end of
-//! each mode's run ([`planetary_wear_columns`], `super::planetary_wear_row`).
+//! pinion velocity); a wear row then adds every member flank's deepest wear and its wear
+//! volume over all its teeth at the end of each mode's run ([`planetary_wear_columns`],
+//! `super::planetary_wear_row`).
 //!
 //! The numbers are those of `gearwear dynamics`' summary.json on the set
 //! (`report::dynamics_planetary`): `meshes[j].mean_force_n`, `meshes[j].max_force_n`,
@@ -32,8 +33,9 @@ pub struct PlanetaryRow {
     /// Each planet's load sharing factor (its sun mesh's mean over the planets' mean).
     pub load_sharing: Vec<f64>,
     /// A wear row's: every member flank's deepest wear at the end of the dynamic and the
-    /// quasi-static run, µm, in [`flank_stems`] order; empty in a dynamics row.
-    pub wear: Vec<[f64; 2]>,
+    /// quasi-static run, µm, then its wear volume over all its teeth at those ends, mm^3
+    /// ([`FLANK_WEAR_COLUMNS`] order), in [`flank_stems`] order; empty in a dynamics row.
+    pub wear: Vec<[f64; 4]>,
 }
 
 impl PlanetaryRow {
@@ -61,7 +63,8 @@ impl PlanetaryRow {
         let n = PLANETARY_MESH_COLUMNS.len();
         let own = 2 * planets * n + planets;
         let flanks = if wear { flank_stems(planets).len() } else { 0 };
-        if planets == 0 || v.len() != own + 2 * flanks {
+        let per = FLANK_WEAR_COLUMNS.len();
+        if planets == 0 || v.len() != own + per * flanks {
             return None;
         }
         Some(Self {
@@ -70,15 +73,24 @@ impl PlanetaryRow {
                 .map(|c| [c[0], c[1], c[2]])
                 .collect(),
             load_sharing: v[2 * planets * n..own].to_vec(),
-            wear: v[own..].chunks_exact(2).map(|c| [c[0], c[1]]).collect(),
+            wear: v[own..]
+                .chunks_exact(per)
+                .map(|c| [c[0], c[1], c[2], c[3]])
+                .collect(),
         })
     }
 }
 
 /// Names of a member flank's wear columns after its [`flank_stems`] prefix: its deepest
-/// wear at the end of the dynamic and of the quasi-static run, µm (as
-/// `members[..].final.MODE.flanks.FLANK.max_wear_um` of `gearwear wear`'s summary.json).
-pub const FLANK_WEAR_COLUMNS: [&str; 2] = ["wear_max_dynamic_um", "wear_max_quasi_static_um"];
+/// wear at the end of the dynamic and of the quasi-static run, µm, and its wear volume
+/// over all its teeth at those ends, mm^3 (as `members[..].final.MODE.flanks.FLANK`'s
+/// `max_wear_um` and `volume_mm3` of `gearwear wear`'s summary.json).
+pub const FLANK_WEAR_COLUMNS: [&str; 4] = [
+    "wear_max_dynamic_um",
+    "wear_max_quasi_static_um",
+    "wear_volume_dynamic_mm3",
+    "wear_volume_quasi_static_mm3",
+];
 
 /// The member flanks of a set of `planets` planets as column prefixes, in the order of
 /// `study::planetary_wear::member_flanks`: `sun`, then each planet's `planet<N>_sun_side`
@@ -197,14 +209,15 @@ mod tests {
         assert_eq!(row.planets(), 3);
         assert_eq!(row.values(), v);
         assert_eq!(PlanetaryRow::from_values(4, false, &v), None);
-        // A wear row: every member names its flanks, two modes each: the sun, each
-        // planet's two flanks and the ring, (2 N + 2) x 2 columns more.
+        // A wear row: every member names its flanks, depth and volume in two modes
+        // each: the sun, each planet's two flanks and the ring, (2 N + 2) x 4 columns more.
         let w = planetary_columns(3, true);
-        assert_eq!(w.len(), c.len() + (2 * 3 + 2) * 2);
+        assert_eq!(w.len(), c.len() + (2 * 3 + 2) * 4);
         assert_eq!(w[c.len()], "sun_wear_max_dynamic_um");
-        assert_eq!(w[c.len() + 3], "planet1_sun_side_wear_max_quasi_static_um");
-        assert_eq!(w[c.len() + 4], "planet1_ring_side_wear_max_dynamic_um");
-        assert_eq!(w[w.len() - 1], "ring_wear_max_quasi_static_um");
+        assert_eq!(w[c.len() + 3], "sun_wear_volume_quasi_static_mm3");
+        assert_eq!(w[c.len() + 5], "planet1_sun_side_wear_max_quasi_static_um");
+        assert_eq!(w[c.len() + 8], "planet1_ring_side_wear_max_dynamic_um");
+        assert_eq!(w[w.len() - 1], "ring_wear_volume_quasi_static_mm3");
         for n in 1..=3 {
             for f in ["sun_side", "ring_side"] {
                 assert!(w.contains(&format!("planet{n}_{f}_wear_max_dynamic_um")));

@@ -11,8 +11,8 @@
 //!   flank), the updates after the first and the input cycles reached;
 //! - the set's columns (`super::planetary_row`): every mesh's forces and dynamic factor and
 //!   every planet's load sharing of the dynamic run's first update, then every member
-//!   flank's deepest wear at the end of each mode's run, µm (as
-//!   `members[..].final.MODE.flanks` of `gearwear wear`'s summary.json).
+//!   flank's deepest wear, µm, and wear volume over its teeth, mm^3, at the end of each
+//!   mode's run (as `members[..].final.MODE.flanks` of `gearwear wear`'s summary.json).
 
 use super::planetary_row::{PlanetaryRow, PlanetaryRunError};
 use super::row::{DynamicsRow, WearEnd};
@@ -71,21 +71,22 @@ pub fn planetary_wear_row(
         }
         None => (vec![[f64::NAN; 3]; 2 * planets], vec![f64::NAN; planets]),
     };
-    // Every flank's deepest wear at each run's end, µm (NaN without an update).
-    let finals: Vec<Vec<f64>> = [d, q]
+    // Every flank's deepest wear, µm, and wear volume over its teeth, mm^3, at each
+    // run's end (NaN without an update).
+    let finals: Vec<Vec<[f64; 2]>> = [d, q]
         .iter()
         .map(|r| match r.updates.last() {
             Some(u) => u
                 .flanks(model)
                 .iter()
-                .map(|f| deepest(&f.depth_m) * 1e6)
+                .map(|f| [deepest(&f.depth_m) * 1e6, f.volume_m3 * 1e9])
                 .collect(),
-            None => vec![f64::NAN; 2 * planets + 2],
+            None => vec![[f64::NAN; 2]; 2 * planets + 2],
         })
         .collect();
-    let end = |r: &PlanetaryWearRun, f: &[f64]| WearEnd {
-        max_wear_pinion_um: f[0],
-        max_wear_gear_um: f[1],
+    let end = |r: &PlanetaryWearRun, f: &[[f64; 2]]| WearEnd {
+        max_wear_pinion_um: f[0][0],
+        max_wear_gear_um: f[1][0],
         updates: r.updates.len().saturating_sub(1) as f64,
         cycles: r.updates.last().map_or(f64::NAN, |u| u.input_cycles),
     };
@@ -100,7 +101,7 @@ pub fn planetary_wear_row(
             wear: finals[0]
                 .iter()
                 .zip(&finals[1])
-                .map(|(a, b)| [*a, *b])
+                .map(|(a, b)| [a[0], b[0], a[1], b[1]])
                 .collect(),
         },
     }
