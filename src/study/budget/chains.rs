@@ -22,8 +22,8 @@
 //! no more than its stop depth allows; every update evaluates every bin of the duty in
 //! force, the first from rest, the warm ones dearer as the flanks wear deeper
 //! ([`depth_factor`]; issue 33: at the rate of new flanks `predict` with a one-bin future
-//! spectrum was counted under its CPU time). (Before, the initial rate was held for the whole run:
-//! 2.4-3.5 times the updates made, issue 33.)
+//! spectrum was counted under its CPU time). (Before, the initial rate was held for the
+//! whole run: 2.4-3.5 times the updates made, issue 33.)
 
 use super::evaluation::{
     axial_factor, dynamic_steps_per_period, nominal_wear_per_cycle_m, train_factor,
