@@ -159,9 +159,9 @@ const STOP_DEPTH_IN_APPROACHES: f64 = 50.0;
 const MIN_STOP_DEPTH_M: f64 = 100e-6;
 
 /// Elastic approach of the teeth under the case's nominal load, F / (c'_gamma b) with
-/// c'_gamma = [`ISO_MESH_STIFFNESS_PER_WIDTH`], m: the scale against which wear depth is
-/// deep or shallow (contact lost, a warm update's cost, [`depth_factor`]); infinite for a
-/// case whose pair cannot be built.
+/// c'_gamma = `ISO_MESH_STIFFNESS_PER_WIDTH` (2e10 N/m^2), m: the scale against which
+/// wear depth is deep or shallow (contact lost, a warm update's cost, [`depth_factor`]);
+/// infinite for a case whose pair cannot be built.
 pub fn elastic_approach_m(case: &Case) -> f64 {
     let Ok(pair) = GearPair::from_case(&case.gear) else {
         return f64::INFINITY;
