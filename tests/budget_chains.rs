@@ -242,9 +242,10 @@ fn warm_work_by_depth(sets: &[&str]) -> Vec<(f64, f64)> {
 fn a_warm_update_s_cost_follows_the_solver_s_work_as_the_flanks_wear() {
     // The solver's work of each warm update against that of the updates on flanks worn
     // less than 5 um (where the chains' 4 ms was measured), set against the depth factor
-    // the chains count it with: at least 0.9 times the solver's ratio (the rates are
-    // counted twice over, SLOWER_MACHINE_FACTOR; the shallow updates' work varies by
-    // 5 %), at most 3 times it (the target), at every update in full contact.
+    // the chains count it with: at least 0.95 times the solver's ratio (the shallow
+    // updates' work, the base, varies by 5 %), at most 2 times it (the factor's largest
+    // over-count measured is 1.5, at 40 N m near 2 approaches), at every update in full
+    // contact.
     // Two loads and speeds: 60 N m at 30 Hz and 40 N m at 20 Hz, whose worn teeth ring
     // more (the work doubles by 5 approaches); the factor's cap is where these stand (the
     // work grows further at 5 Hz and less at 100 Hz, `chains::depth_factor`). k is raised so each run reaches contact
@@ -266,6 +267,10 @@ fn a_warm_update_s_cost_follows_the_solver_s_work_as_the_flanks_wear() {
             .filter(|(x, _)| x * a < 5e-6)
             .map(|w| w.1)
             .collect();
+        assert!(
+            !shallow.is_empty(),
+            "{sets:?}: no update shallower than 5 um"
+        );
         let base = shallow.iter().sum::<f64>() / shallow.len() as f64;
         let deepest = work.last().unwrap().0;
         assert!(
@@ -275,7 +280,7 @@ fn a_warm_update_s_cost_follows_the_solver_s_work_as_the_flanks_wear() {
         for (x, w) in &work {
             let (solver, counted) = (w / base, depth_factor(x * a, a));
             assert!(
-                counted >= 0.9 * solver && counted <= 3.0 * solver,
+                counted >= 0.95 * solver && counted <= 2.0 * solver,
                 "{sets:?}: at {x:.2} approaches the solver's work is {solver:.2} times the shallow updates', counted {counted:.2}"
             );
         }

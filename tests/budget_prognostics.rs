@@ -27,6 +27,14 @@ use std::process::Command;
 /// at 2 times on a loaded machine stands near 3 on a quiet one (the 3 is judged on
 /// the measured table of docs/RELIABILITY.md).
 const TIME_FACTOR: f64 = 4.0;
+/// `calibrate` with the wear measured: its surrogate's reference runs at the prior's
+/// largest k are counted to the stop depth (50 elastic approaches, where they lose contact
+/// at about 8), and since 2026-12-01 each warm update at the cost of its depth
+/// (`chains::depth_factor`, 2.2 past 4 approaches), so the updates counted past the real
+/// stop cost more: measured 2.7-3.5 times (3.8-4.9 s of CPU). The same run took 2.56 s of
+/// CPU on the quieter machine of 2026-11-30, which would be 5.2 times: the test allows 6
+/// (it guards the lower bound and gross errors; docs/RELIABILITY.md holds the table).
+const CALIBRATE_TIME_FACTOR: f64 = 6.0;
 /// Memory does not depend on the machine's load: the target, 3.
 const MEMORY_FACTOR: f64 = 3.0;
 
@@ -164,7 +172,7 @@ fn calibrate_is_counted_within_a_few_times_what_it_uses() {
         &["calibrate", "--observations", &obs, "--samples", "2000"],
         d.path(),
         "cal",
-        Some(TIME_FACTOR),
+        Some(CALIBRATE_TIME_FACTOR),
     );
     // The velocity alone: nothing bounds the posterior before it is computed; the check
     // runs are counted at the prior's largest k, to the stop depth: a bound only.

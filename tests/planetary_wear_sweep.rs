@@ -5,6 +5,8 @@
 //!   and every mesh's force column the first row of its `mesh_history_dynamic.csv`; the
 //!   same under a `[load_spectrum]`;
 //! - identical, equally spaced planets in phase wear alike in every row;
+//! - Archard's law takes the same volume from both flanks of a contact: the sun's volume
+//!   column is the sum of the planets' sun-side ones, the ring's of their ring-side ones;
 //! - the columns name every member flank;
 //! - an interrupted sweep, resumed, writes the uninterrupted sweep's table byte for byte,
 //!   and a finished record edited (with its checksum recomputed) is refused on resume.

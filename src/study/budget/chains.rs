@@ -195,10 +195,12 @@ const DEPTH_FACTOR_CAP_APPROACHES: f64 = 4.0;
 /// evaluations of warm-started updates (deterministic, not a timing) on the built-in
 /// pair, against the updates on flanks worn less than 5 um (where
 /// [`SECONDS_PER_WARM_UPDATE`] was measured): at 60 N m and 30 Hz (a = 8.4 um) 1.0-1.05
-/// to 0.65 a, then a step to 1.36-1.40 at 0.7-2 a, 1.55 at 3.4 a, 1.8 at 7.3 a where
-/// contact is lost; at 40 N m and 20 Hz (a = 5.6 um) 1.07 at 1.2 a, 1.36 at 2.9 a, 2.04
-/// at 5.4 a, 2.25 at 7.1 a. The CPU time of an update follows them (1.1-1.2 us an
-/// evaluation). The growth depends on speed: at 100 Hz 2.2-2.9 from 4 a to 48 a (no
+/// to 0.65 a, then a step to 1.36 at 0.88 a, 1.32-1.40 at 1.1-2.8 a, 1.51 at 3.4 a, 1.80
+/// at 7.6 a where contact is lost; at 40 N m and 20 Hz (a = 5.6 um) 1.13 at 1.7 a, 1.34
+/// at 2.9 a, 2.02 at 5.4 a, 2.23 at 7.1 a (docs/RELIABILITY.md). An update's CPU time is
+/// about proportional to them (1.1-1.2 us an evaluation on a busy machine; wear runs
+/// timed earlier, 9.8 ms an update on average to 16 um and 13.6 ms to 78 um, stand
+/// within the factor times [`SLOWER_MACHINE_FACTOR`], not within the factor alone). The growth depends on speed: at 100 Hz 2.2-2.9 from 4 a to 48 a (no
 /// contact loss), at 5 Hz 1.5 at 2 a, 3.0 at 5.4 a and 5-6 from 10 a to contact loss at
 /// 12-14 a; there the factor counts deep updates under their work, and the rates' factor
 /// 2 ([`SLOWER_MACHINE_FACTOR`]) and the updates counted past the real stop
@@ -254,10 +256,13 @@ fn updates_within(
         let rate = k * running.rate_after(&from.gaps, k * done);
         let n = block_length(rate, w.block_cycles, threshold, total - done);
         if followed >= MAX_FOLLOWED_BLOCKS || n.is_nan() || n <= 0.0 {
-            // The rest at the deepest cost (rates only fall: an upper bound).
+            // The rest at the cost of the depth the rest reaches at the present rate
+            // (rates only fall: an upper bound of both).
             let rest = ((total - done) / n.max(1.0)).ceil();
+            let reached = depth + (total - done) * rate;
+            depth = if reached.is_nan() { stop_m } else { reached };
             u.count += rest;
-            u.weighted_warm += rest * depth_factor(f64::INFINITY, approach_m);
+            u.weighted_warm += rest * depth_factor(depth.min(stop_m), approach_m);
             done = total;
             break;
         }
@@ -293,6 +298,9 @@ struct Duty {
     running: RunningIn,
     first_s: f64,
     further_s: f64,
+    /// The part of `further_s` that a helical pair's slice contacts take (not dearer with
+    /// depth: [`depth_factor`] was measured on the solver's work), s.
+    further_slices_s: f64,
     bins: f64,
     /// Wear depth at which a run under this duty stops, m: the smallest of its bins'
     /// (contact is lost first under the lightest load, whose elastic approach is the
@@ -322,6 +330,7 @@ impl Duty {
             running: RunningIn::default(),
             first_s: 0.0,
             further_s: 0.0,
+            further_slices_s: 0.0,
             bins: points.len() as f64,
             stop_m: f64::INFINITY,
             approach_m: f64::INFINITY,
@@ -340,6 +349,7 @@ impl Duty {
             let helical = helical_update_seconds(b);
             d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale + helical;
             d.further_s += SECONDS_PER_WARM_UPDATE * scale + helical;
+            d.further_slices_s += helical;
         }
         // The running-in of a single spur pair (`super::running_in`); the initial rate
         // held otherwise.
@@ -359,7 +369,9 @@ impl Duty {
         let c = Count {
             runs: 0.0,
             updates: u.count,
-            seconds: self.first_s + u.weighted_warm * self.further_s,
+            seconds: self.first_s
+                + u.weighted_warm * (self.further_s - self.further_slices_s)
+                + (u.count - 1.0).max(0.0) * self.further_slices_s,
             largest_run: u.count * self.bins,
             warm_seconds: (u.count - 1.0).max(0.0) * self.further_s,
         };

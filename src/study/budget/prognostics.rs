@@ -12,8 +12,8 @@
 //!   by the wear threshold, which is extended to H k_hi / k_j; under a change of duty
 //!   every node of a finer grid, each run in two phases ([`super::chains`], which counts
 //!   them as the surrogate makes them). A run of U updates costs one evaluation from rest
-//!   and U - 1 warm-started ones per bin of its duty, at the measured rates of
-//!   run-to-failure evaluations
+//!   and U - 1 warm-started ones per bin of its duty (dearer as the flanks wear deeper,
+//!   [`super::chains::depth_factor`]), at the measured rates of run-to-failure evaluations
 //!   ([`super::chains::run_to_failure_seconds`]), and keeps U records of (4 G + 4
 //!   S_d) numbers (and its bins' records while it runs). Updates follow from Archard's
 //!   law at the nominal load, at the prior's largest torque and roughness factor, as the
@@ -181,7 +181,8 @@ fn updates_to_depth(case: &Case, h: f64, depth_m: f64) -> f64 {
 /// the difference to [`super::chains::SECONDS_PER_WARM_UPDATE`] (4 ms) is added to each.
 /// Measured 2026-12-01 on the 2-core machine at load 1-3 (CPU time, user + system),
 /// `predict` from a posterior of k within +-3 % to 1e5 cycles, its three check runs of 19
-/// updates each (to 8.6 um, about one elastic approach, where the depth factor is 1.25):
+/// updates each (to 8.6 um, about one elastic approach: the depth factor 1.5 there, 1.25
+/// at half of it):
 /// 0.107-0.167 s a run, less its model and first evaluation (15 ms), 5.1-8.4 ms an
 /// update. Counted 7 ms, 4 of them scaled by the depth. (Issue 33: at 4 ms the check runs
 /// were counted at 1.14-1.4 times their CPU time, and `predict` from a posterior at 1.11
@@ -189,11 +190,12 @@ fn updates_to_depth(case: &Case, h: f64, depth_m: f64) -> f64 {
 const SECONDS_PER_DEEP_WARM_UPDATE: f64 = 7e-3;
 
 /// True wear runs to `h` cycles at the prior's largest k (the most updates), `n` of them,
-/// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`] on new flanks; or, when `depth_m` bounds how
-/// deep they wear ([`updates_to_depth`]), of that run's updates if fewer (counted at the
-/// duty's rates by [`Duties::run`] at k = 0, every block `wear.block_cycles` long).
-/// (A helical pair's slice contacts, part of the warm updates' seconds, are scaled with
-/// them: an over-count, not measured on such runs.)
+/// their warm updates at [`SECONDS_PER_DEEP_WARM_UPDATE`] on new flanks (dearer with
+/// depth); or, when `depth_m` bounds how deep they wear ([`updates_to_depth`]), of that
+/// run's updates if fewer, at the chains' 4 ms on new flanks (counted at the duty's rates
+/// by [`Duties::run`] at k = 0, every block `wear.block_cycles` long: `calibrate`'s check
+/// runs, measured within it). (A helical pair's slice contacts, part of the warm updates'
+/// seconds, are scaled with the extra: an over-count, not measured on such runs.)
 fn true_runs(
     case: &Case,
     prior: &ParameterSpan,
@@ -482,8 +484,8 @@ mod tests {
             .check(&Budget::DEFAULT)
             .unwrap();
         // Observations at 1e11 cycles: refused, naming what drives it. (Each reference run
-        // stops at its stop depth, so since the warm updates are counted at their measured
-        // 4 ms this is about 200 s, under the default budget: checked against 60 s.)
+        // stops at its stop depth, so the count stays a few hundred seconds, under the
+        // default budget: checked against 60 s.)
         let far = CalibrationJob {
             max_cycles: 1e11,
             ..job()
