@@ -11,7 +11,7 @@ use gearwear::study::budget::chains::{chain_count, FutureDutyJob};
 use gearwear::study::budget::chains::{depth_factor, elastic_approach_m, run_to_failure_scale};
 use gearwear::study::budget::evaluation::SLOWER_MACHINE_FACTOR;
 use gearwear::study::budget::ParameterSpan;
-use gearwear::study::wear_loop::{block_length, record, start_of, WearMode};
+use gearwear::study::wear_loop::{advanced_state, record, start_of, WearMode};
 use gearwear::study::Model;
 use gearwear::wear::WearState;
 
@@ -203,29 +203,20 @@ fn the_run_to_failure_scale_follows_the_solver_s_work_across_speeds() {
 }
 
 /// The solver's work (right-hand side evaluations) of each warm-started update of a
-/// dynamic wear run of the built-in pair under `sets`, as `study::wear_loop::run_wear`
-/// makes them, until the teeth first lose contact: (depth / elastic approach, work).
-fn warm_work_by_depth(sets: &[&str]) -> Vec<(f64, f64)> {
+/// dynamic wear run of the built-in pair under `sets`, each state advanced as
+/// `study::wear_loop::run_wear` advances it (`advanced_state`), until the teeth first lose
+/// contact: the elastic approach a, m, and (depth / a, work) of every update.
+fn warm_work_by_depth(sets: &[&str]) -> (f64, Vec<(f64, f64)>) {
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
     let case = load_case("", &sets).unwrap();
     let a = elastic_approach_m(&case);
     let m = Model::from_case(&case).unwrap();
     let none = gearwear::dynamics::excitation::ExternalError::none();
-    let w = &case.wear;
     let state = m.new_wear_state();
     let r = m.dynamic_with(&state, &none, None, &m.settings).unwrap();
     let mut last = record(&m, WearMode::Dynamic, state, &r);
     let mut out = Vec::new();
-    while w.total_cycles - last.wear.cycles > 0.5 {
-        let inc = last.increment();
-        let n = block_length(
-            inc.max_m(),
-            w.block_cycles,
-            w.threshold_um * 1e-6,
-            w.total_cycles - last.wear.cycles,
-        );
-        let mut s = last.wear.clone();
-        s.advance(&inc, n);
+    while let Some(s) = advanced_state(&m, &last) {
         let r = m
             .dynamic_with(&s, &none, start_of(&last).as_deref(), &m.settings)
             .unwrap();
@@ -235,7 +226,7 @@ fn warm_work_by_depth(sets: &[&str]) -> Vec<(f64, f64)> {
         out.push((s.max_pinion_m() / a, r.rhs_evaluations as f64));
         last = record(&m, WearMode::Dynamic, s, &r);
     }
-    out
+    (a, out)
 }
 
 #[test]
@@ -248,8 +239,8 @@ fn a_warm_update_s_cost_follows_the_solver_s_work_as_the_flanks_wear() {
     // contact.
     // Two loads and speeds: 60 N m at 30 Hz and 40 N m at 20 Hz, whose worn teeth ring
     // more (the work doubles by 5 approaches); the factor's cap is where these stand (the
-    // work grows further at 5 Hz and less at 100 Hz, `chains::depth_factor`). k is raised so each run reaches contact
-    // loss within 2e4 cycles (at 7-8 approaches).
+    // work grows further at 5 Hz and less at 100 Hz, `chains::depth_factor`). k is
+    // raised so each run reaches contact loss within 2e4 cycles (at 7-8 approaches).
     for sets in [
         &["wear.coefficient_m2_per_n=2.5e-14", "wear.total_cycles=2e4"][..],
         &[
@@ -259,9 +250,7 @@ fn a_warm_update_s_cost_follows_the_solver_s_work_as_the_flanks_wear() {
             "operating.input_speed_hz=20",
         ][..],
     ] {
-        let work = warm_work_by_depth(sets);
-        let case = load_case("", &sets.iter().map(|s| s.to_string()).collect::<Vec<_>>()).unwrap();
-        let a = elastic_approach_m(&case);
+        let (a, work) = warm_work_by_depth(sets);
         let shallow: Vec<f64> = work
             .iter()
             .filter(|(x, _)| x * a < 5e-6)

@@ -527,7 +527,7 @@ pub enum Next {
 /// advanced by its per-cycle increment (every face slice or tooth by its own) over the
 /// next block, cut to the case's threshold and total ([`block_length`]); None when the
 /// total is reached. Also recomputed to check a stored run's chain (`study::wear_check`).
-pub(crate) fn advanced_state(model: &Model, last: &UpdateRecord) -> Option<WearState> {
+pub fn advanced_state(model: &Model, last: &UpdateRecord) -> Option<WearState> {
     let w = &model.case.wear;
     let threshold_m = w.threshold_um * 1e-6;
     let remaining = w.total_cycles - last.wear.cycles;

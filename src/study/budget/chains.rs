@@ -182,7 +182,12 @@ pub fn elastic_approach_m(case: &Case) -> f64 {
 /// runs went to 205 um at 5 Hz and past 420 um at 60-200 Hz, where it counted 109 um; so
 /// the bound stays this one.)
 pub fn stop_depth_m(case: &Case) -> f64 {
-    (STOP_DEPTH_IN_APPROACHES * elastic_approach_m(case)).max(MIN_STOP_DEPTH_M)
+    stop_depth_at_approach_m(elastic_approach_m(case))
+}
+
+/// [`stop_depth_m`] of a pair whose elastic approach is `approach_m`, m.
+fn stop_depth_at_approach_m(approach_m: f64) -> f64 {
+    (STOP_DEPTH_IN_APPROACHES * approach_m).max(MIN_STOP_DEPTH_M)
 }
 
 /// Depth, in elastic approaches, past which [`depth_factor`] grows no more (2.2 there).
@@ -297,16 +302,14 @@ struct Duty {
     rate_per_k: f64,
     running: RunningIn,
     first_s: f64,
-    further_s: f64,
-    /// The part of `further_s` that a helical pair's slice contacts take (not dearer with
-    /// depth: [`depth_factor`] was measured on the solver's work), s.
+    /// Each further update's dynamic evaluations (dearer with depth, [`depth_factor`]), s.
+    further_solver_s: f64,
+    /// Each further update's helical slice contacts (not dearer with depth: the factor
+    /// was measured on the solver's work), s.
     further_slices_s: f64,
     bins: f64,
-    /// Wear depth at which a run under this duty stops, m: the smallest of its bins'
-    /// (contact is lost first under the lightest load, whose elastic approach is the
-    /// smallest).
-    stop_m: f64,
-    /// The smallest of its bins' elastic approaches, m ([`depth_factor`]).
+    /// The smallest of its bins' elastic approaches, m ([`depth_factor`]); its stop depth
+    /// ([`Duty::stop_m`]) follows from it.
     approach_m: f64,
 }
 
@@ -329,10 +332,9 @@ impl Duty {
             rate_per_k: 0.0,
             running: RunningIn::default(),
             first_s: 0.0,
-            further_s: 0.0,
+            further_solver_s: 0.0,
             further_slices_s: 0.0,
             bins: points.len() as f64,
-            stop_m: f64::INFINITY,
             approach_m: f64::INFINITY,
         };
         // A train's blocks follow its fastest mesh per input cycle.
@@ -343,12 +345,11 @@ impl Duty {
             } else if let Some(p) = &pair {
                 d.rate_per_k += share * DYNAMIC_WEAR_FACTOR * nominal_wear_per_cycle_m(b, p);
             }
-            d.stop_m = d.stop_m.min(stop_depth_m(b));
             d.approach_m = d.approach_m.min(elastic_approach_m(b));
             let scale = run_to_failure_scale(b) * SLOWER_MACHINE_FACTOR;
             let helical = helical_update_seconds(b);
             d.first_s += table + SECONDS_PER_COLD_EVALUATION * scale + helical;
-            d.further_s += SECONDS_PER_WARM_UPDATE * scale + helical;
+            d.further_solver_s += SECONDS_PER_WARM_UPDATE * scale;
             d.further_slices_s += helical;
         }
         // The running-in of a single spur pair (`super::running_in`); the initial rate
@@ -361,19 +362,27 @@ impl Duty {
         d
     }
 
+    /// Wear depth at which a run under this duty stops, m: the smallest of its bins'
+    /// [`stop_depth_m`] (contact is lost first under the lightest load, whose elastic
+    /// approach is the smallest).
+    fn stop_m(&self) -> f64 {
+        stop_depth_at_approach_m(self.approach_m)
+    }
+
     /// Updates and seconds of `cycles` cycles of this duty at wear coefficient `k`,
     /// from what the run reached, `from`; and what it reaches.
     fn phase(&self, case: &Case, k: f64, cycles: f64, from: &Worn) -> (Count, Worn) {
-        let bounds = (self.stop_m, self.approach_m);
+        let bounds = (self.stop_m(), self.approach_m);
         let (u, worn) = updates_within(case, &self.running, (k, cycles), from, bounds);
+        let warm = (u.count - 1.0).max(0.0);
         let c = Count {
             runs: 0.0,
             updates: u.count,
             seconds: self.first_s
-                + u.weighted_warm * (self.further_s - self.further_slices_s)
-                + (u.count - 1.0).max(0.0) * self.further_slices_s,
+                + u.weighted_warm * self.further_solver_s
+                + warm * self.further_slices_s,
             largest_run: u.count * self.bins,
-            warm_seconds: (u.count - 1.0).max(0.0) * self.further_s,
+            warm_seconds: warm * (self.further_solver_s + self.further_slices_s),
         };
         (c, worn)
     }
